@@ -1,0 +1,22 @@
+!> hillstab: stability of the elastic pendulum through the Hill equation
+!> x'' + Q(τ) x = 0 and Floquet theory. This umbrella module re-exports the public API.
+!>
+!>```fortran
+!> use hillstab
+!> type(floquet_t) :: f
+!> f = floquet_from_trace(trace_segmented(hill_model_t(model_elastic, 1.48_wp, 2.47_wp, 0.0_wp), &
+!>                        256, sampling_average), 0.0_wp)
+!> print *, f%trace%value, f%stable
+!>```
+module hillstab
+   use hillstab_kinds
+   use hillstab_error
+   use hillstab_stats
+   use hillstab_coefficient
+   use hillstab_transfer
+   use hillstab_formulas
+   use hillstab_floquet
+   use hillstab_monodromy
+   implicit none
+   public
+end module hillstab

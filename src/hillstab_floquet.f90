@@ -1,0 +1,107 @@
+!> Floquet multipliers, exponents and stability verdicts from the monodromy trace.
+!>
+!> For the undamped equation det M = 1 and the multipliers solve λ² − Sλ + 1 = 0.
+!> With damping ε the trace S₁ belongs to χ = e^{ετ/2} x (eq. (47)); the
+!> multipliers of the swing x are e^{−ε} λ_χ, so x is asymptotically stable iff
+!> |S₁| < 2 cosh ε. The paper's |S₁| ≤ 2 is only sufficient; it is kept in
+!> `stable_paper` beside the correct verdict, never instead of it.
+!>
+!> Multipliers are stored as log-modulus and argument so that they stay finite
+!> however large the trace.
+module hillstab_floquet
+   use hillstab_kinds, only: wp, pi, log_huge
+   use hillstab_transfer, only: trace_t, trace_from_value
+   implicit none
+   private
+   public :: floquet_t, floquet_from_trace, floquet_from_value, multipliers, largest_multiplier_modulus
+
+   !> Floquet data of the swing x over one radial period (2 units of τ).
+   type :: floquet_t
+      type(trace_t) :: trace            !! S (S₁ for χ when ε > 0)
+      real(wp) :: epsilon = 0.0_wp      !! damping ε
+      real(wp) :: log_modulus(2) = 0.0_wp  !! ln|λ| of the multipliers of x, largest first
+      real(wp) :: argument(2) = 0.0_wp     !! arg λ: ±θ when |S| < 2, 0 or π when real
+      real(wp) :: rotation = 0.0_wp     !! θ = arccos(S/2) ∈ [0, π] when |S| ≤ 2, else 0
+      real(wp) :: exponent = 0.0_wp     !! μ = ln|λ_max|/2 per unit τ (of x; −ε/2 when |S|<2)
+      logical :: stable = .false.       !! x stays bounded (decays for ε > 0): |S| < 2 cosh ε
+      logical :: stable_paper = .false. !! the paper's criterion |S| ≤ 2
+   end type floquet_t
+
+contains
+
+   !> Floquet data from the trace of the (χ-)monodromy and the damping ε.
+   pure function floquet_from_trace(tr, epsilon) result(f)
+      type(trace_t), intent(in) :: tr
+      real(wp), intent(in) :: epsilon  !! damping ε ≥ 0
+      type(floquet_t) :: f
+      real(wp) :: s, log_growth, half
+      f%trace = tr
+      f%epsilon = epsilon
+      s = tr%value
+      if (.not. tr%overflow .and. abs(s) <= 2.0_wp) then
+         half = 0.5_wp*s
+         f%rotation = acos(half)
+         f%log_modulus = -epsilon
+         f%argument = [f%rotation, -f%rotation]
+         log_growth = 0.0_wp
+      else
+         ! ln|λ_max| of χ = arccosh(|S|/2) = ln((|S| + √(S² − 4))/2); ≈ ln|S| for huge |S|
+         if (tr%log_abs > 0.5_wp*log_huge) then
+            log_growth = tr%log_abs + log1p_small(-exp(-2.0_wp*tr%log_abs))
+         else
+            log_growth = acosh(0.5_wp*abs(s))
+         end if
+         f%rotation = 0.0_wp
+         f%log_modulus = [log_growth - epsilon, -log_growth - epsilon]
+         if (s > 0.0_wp) then
+            f%argument = 0.0_wp
+         else
+            f%argument = pi
+         end if
+      end if
+      f%exponent = 0.5_wp*f%log_modulus(1)
+      if (epsilon > 0.0_wp) then
+         f%stable = log_growth < epsilon
+      else
+         f%stable = .not. tr%overflow .and. abs(s) < 2.0_wp
+      end if
+      f%stable_paper = .not. tr%overflow .and. abs(s) <= 2.0_wp
+   end function floquet_from_trace
+
+   !> Floquet data from a finite trace value.
+   pure function floquet_from_value(s, epsilon) result(f)
+      real(wp), intent(in) :: s, epsilon
+      type(floquet_t) :: f
+      f = floquet_from_trace(trace_from_value(s), epsilon)
+   end function floquet_from_value
+
+   pure real(wp) function log1p_small(x)
+      real(wp), intent(in) :: x
+      log1p_small = x - 0.5_wp*x*x
+   end function log1p_small
+
+   !> Multipliers of x as complex numbers (moduli clamped to huge when they overflow).
+   pure function multipliers(f) result(lambda)
+      type(floquet_t), intent(in) :: f
+      complex(wp) :: lambda(2)
+      integer :: i
+      do i = 1, 2
+         if (f%rotation == 0.0_wp) then
+            ! real multipliers: argument exactly 0 or π, no sin(π) residue
+            lambda(i) = cmplx(sign(exp(min(f%log_modulus(i), log_huge)), cos(f%argument(i))), 0.0_wp, wp)
+         else
+            lambda(i) = exp(min(f%log_modulus(i), log_huge))*cmplx(cos(f%argument(i)), sin(f%argument(i)), wp)
+         end if
+      end do
+   end function multipliers
+
+   !> max |λ| of x, clamped to huge(1.0_wp) when it overflows.
+   pure real(wp) function largest_multiplier_modulus(f)
+      type(floquet_t), intent(in) :: f
+      if (f%log_modulus(1) >= log_huge) then
+         largest_multiplier_modulus = huge(1.0_wp)
+      else
+         largest_multiplier_modulus = exp(f%log_modulus(1))
+      end if
+   end function largest_multiplier_modulus
+end module hillstab_floquet

@@ -1,0 +1,135 @@
+!> One entry point from a method choice to the monodromy trace of one period.
+!>
+!> Methods: `formula` (the paper's closed 2-piece forms), `segments`
+!> (N-piece piecewise-constant product with endpoint/midpoint/average sampling)
+!> and the exact methods (`auto`, Magnus, Runge–Kutta, GSL) as they are registered
+!> here. All return the trace of the χ equation (47), i.e. S₁ when ε > 0.
+module hillstab_monodromy
+   use hillstab_kinds, only: wp
+   use hillstab_error, only: error_t, set_error, err_invalid_parameter
+   use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, check_model, &
+      segment_coefficients, hill_period, sampling_endpoint, sampling_midpoint, sampling_average
+   use hillstab_transfer, only: scaled_matrix_t, scaled_identity, multiply_transfer, multiply_matrix, &
+      trace_t, trace_of
+   use hillstab_formulas, only: trace_damped_paper, trace_mathieu_two_segment
+   implicit none
+   private
+   public :: method_t, method_auto, method_formula, method_segments, method_magnus4, method_magnus6, &
+      method_rk, method_gsl, method_name, method_from_name
+   public :: monodromy_segmented, trace_segmented, swing_monodromy, monodromy_trace
+
+   integer, parameter :: method_auto = 0     !! cheapest exact method meeting the tolerance
+   integer, parameter :: method_formula = 1  !! the paper's closed forms, eq. (37)/(48)/(A3)
+   integer, parameter :: method_segments = 2 !! N-piece piecewise-constant product
+   integer, parameter :: method_magnus4 = 3  !! fourth-order Magnus integrator
+   integer, parameter :: method_magnus6 = 4  !! sixth-order Magnus integrator
+   integer, parameter :: method_rk = 5       !! hillstab's adaptive Runge–Kutta
+   integer, parameter :: method_gsl = 6      !! GSL odeiv2 rk8pd reference
+
+   !> How to compute the monodromy.
+   type :: method_t
+      integer :: kind = method_auto
+      integer :: n_segments = 2             !! pieces for method_segments
+      integer :: sampling = sampling_endpoint  !! piece values for method_segments
+      real(wp) :: tolerance = 1.0e-10_wp    !! target error on S, scaled by max(1, |S|)
+   end type method_t
+
+contains
+
+   !> Name of a method constant.
+   pure function method_name(kind) result(name)
+      integer, intent(in) :: kind
+      character(len=:), allocatable :: name
+      select case (kind)
+      case (method_auto); name = "auto"
+      case (method_formula); name = "formula"
+      case (method_segments); name = "segments"
+      case (method_magnus4); name = "magnus4"
+      case (method_magnus6); name = "magnus6"
+      case (method_rk); name = "rk"
+      case (method_gsl); name = "gsl"
+      case default; name = "unknown"
+      end select
+   end function method_name
+
+   !> Method constant from its name; −1 when unknown.
+   pure integer function method_from_name(name) result(kind)
+      character(len=*), intent(in) :: name
+      integer :: k
+      kind = -1
+      do k = method_auto, method_gsl
+         if (trim(name) == method_name(k)) kind = k
+      end do
+   end function method_from_name
+
+   !> Monodromy of the χ equation over one period [0, 2] with q replaced by
+   !> `n` constant pieces (exact transfer matrix per piece).
+   pure function monodromy_segmented(model, n, sampling) result(a)
+      type(hill_model_t), intent(in) :: model
+      integer, intent(in) :: n         !! number of pieces
+      integer, intent(in) :: sampling  !! sampling_endpoint | sampling_midpoint | sampling_average
+      type(scaled_matrix_t) :: a
+      real(wp) :: q(n), h
+      integer :: i
+      call segment_coefficients(model, n, sampling, q)
+      h = hill_period/n
+      a = scaled_identity()
+      do i = 1, n
+         call multiply_transfer(a, q(i), h)
+      end do
+   end function monodromy_segmented
+
+   !> Trace of `monodromy_segmented`.
+   pure function trace_segmented(model, n, sampling) result(tr)
+      type(hill_model_t), intent(in) :: model
+      integer, intent(in) :: n, sampling
+      type(trace_t) :: tr
+      tr = trace_of(monodromy_segmented(model, n, sampling))
+   end function trace_segmented
+
+   !> Monodromy of the damped swing x'' + ε x' + Q x = 0 from that of χ:
+   !> M_x = e^{−ε} P M_χ P⁻¹ with P = [[1, 0], [−ε/2, 1]] (x = e^{−ετ/2} χ).
+   pure function swing_monodromy(chi, epsilon) result(x)
+      type(scaled_matrix_t), intent(in) :: chi
+      real(wp), intent(in) :: epsilon
+      type(scaled_matrix_t) :: x
+      real(wp) :: p(2, 2), p_inv(2, 2)
+      p = reshape([1.0_wp, -0.5_wp*epsilon, 0.0_wp, 1.0_wp], [2, 2])
+      p_inv = reshape([1.0_wp, 0.5_wp*epsilon, 0.0_wp, 1.0_wp], [2, 2])
+      x = chi
+      x%m = matmul(x%m, p_inv)
+      call multiply_matrix(x, p)
+      x%log_scale = x%log_scale - epsilon
+   end function swing_monodromy
+
+   !> Trace of the one-period monodromy of the χ equation by the chosen method.
+   subroutine monodromy_trace(model, method, tr, error)
+      type(hill_model_t), intent(in) :: model
+      type(method_t), intent(in) :: method
+      type(trace_t), intent(out) :: tr
+      type(error_t), allocatable, intent(out) :: error
+      call check_model(model, error)
+      if (allocated(error)) return
+      select case (method%kind)
+      case (method_formula)
+         if (model%kind == model_mathieu) then
+            tr = trace_mathieu_two_segment(model%alpha, model%beta - 0.25_wp*model%epsilon**2)
+         else
+            tr = trace_damped_paper(model%alpha, model%beta, model%epsilon)
+         end if
+      case (method_segments)
+         if (method%n_segments < 1) then
+            call set_error(error, err_invalid_parameter, "n_segments must be >= 1")
+            return
+         end if
+         if (all(method%sampling /= [sampling_endpoint, sampling_midpoint, sampling_average])) then
+            call set_error(error, err_invalid_parameter, "unknown sampling")
+            return
+         end if
+         tr = trace_segmented(model, method%n_segments, method%sampling)
+      case default
+         call set_error(error, err_invalid_parameter, "method '"//method_name(method%kind)// &
+            "' is not available in this build")
+      end select
+   end subroutine monodromy_trace
+end module hillstab_monodromy

@@ -1,0 +1,207 @@
+!> Exact transfer matrices of x'' + q x = 0 with constant q, their products,
+!> and overflow-safe (log-scaled) monodromy matrices and traces.
+!>
+!> For constant q over a length h the transfer matrix is
+!> [[C, h S], [−q h S, C]] with z = q h², C = cos √z, S = sin √z / √z
+!> (cosh/sinh for z < 0; power series for |z| small, never 0/0).
+!> Strongly negative q makes entries grow like e^{√|z|}; `scaled_matrix_t`
+!> stores M = e^{log_scale} m with max|m| = 1 so products never overflow.
+!>
+!>```fortran
+!> type(scaled_matrix_t) :: m
+!> m = scaled_identity()
+!> call multiply_transfer(m, q=3.0_wp, h=1.0_wp)
+!> print *, trace_of(m)%value
+!>```
+module hillstab_transfer
+   use hillstab_kinds, only: wp, log_huge
+   implicit none
+   private
+   public :: transfer_matrix, transfer_functions, scaled_matrix_t, scaled_identity, scaled_from_matrix
+   public :: multiply_transfer, multiply_scaled, multiply_matrix, normalize_scaled
+   public :: trace_t, trace_of, trace_from_value, matrix_of, determinant, determinant_of
+
+   !> 2×2 matrix M = exp(log_scale) · m, m normalized so that max |m_ij| = 1.
+   type :: scaled_matrix_t
+      real(wp) :: m(2, 2) = reshape([1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], [2, 2])  !! normalized matrix
+      real(wp) :: log_scale = 0.0_wp  !! natural logarithm of the scale factor
+   end type scaled_matrix_t
+
+   !> A trace that may exceed the range of real(wp).
+   type :: trace_t
+      real(wp) :: value = 0.0_wp      !! S; clamped to ±huge(1.0_wp) when `overflow`
+      real(wp) :: log_abs = -huge(1.0_wp)  !! ln|S| (−huge when S = 0)
+      logical :: overflow = .false.   !! |S| does not fit in real(wp)
+   end type trace_t
+
+   !> Below this |q h²| the series for C and S are used (12 terms reach round-off).
+   real(wp), parameter :: series_limit = 0.5_wp
+   !> Beyond this √|z| the hyperbolic functions are returned scaled by e^{−√|z|}.
+   real(wp), parameter :: scale_limit = 20.0_wp
+
+contains
+
+   !> C = cos √z and S = sin √z/√z (cosh, sinh for z < 0), scaled by e^{−log_scale}:
+   !> log_scale = √(−z) when z < −scale_limit², else 0.
+   elemental subroutine transfer_functions(z, c, s, log_scale)
+      real(wp), intent(in) :: z           !! q h²
+      real(wp), intent(out) :: c          !! (scaled) cos √z
+      real(wp), intent(out) :: s          !! (scaled) sin √z / √z
+      real(wp), intent(out) :: log_scale  !! ln of the scale factor removed
+      real(wp) :: x, term_c, term_s, decay
+      integer :: k
+      log_scale = 0.0_wp
+      if (abs(z) < series_limit) then
+         ! C = Σ (−z)^k/(2k)!, S = Σ (−z)^k/(2k+1)!; |z| < 0.5 needs 10 terms for 1e-17
+         c = 1.0_wp; s = 1.0_wp
+         term_c = 1.0_wp; term_s = 1.0_wp
+         do k = 1, 11
+            term_c = -term_c*z/real((2*k - 1)*(2*k), wp)
+            term_s = -term_s*z/real((2*k)*(2*k + 1), wp)
+            c = c + term_c
+            s = s + term_s
+         end do
+      else if (z > 0.0_wp) then
+         x = sqrt(z)
+         c = cos(x)
+         s = sin(x)/x
+      else
+         x = sqrt(-z)
+         if (x < scale_limit) then
+            c = cosh(x)
+            s = sinh(x)/x
+         else
+            decay = exp(-2.0_wp*x)
+            c = 0.5_wp*(1.0_wp + decay)
+            s = 0.5_wp*(1.0_wp - decay)/x
+            log_scale = x
+         end if
+      end if
+   end subroutine transfer_functions
+
+   !> Exact transfer matrix T(h) of x'' + q x = 0, X = (x, x'), for moderate |q| h²
+   !> (entries of order e^{√|q| h}; use `multiply_transfer` when that may overflow).
+   pure function transfer_matrix(q, h) result(t)
+      real(wp), intent(in) :: q  !! constant coefficient
+      real(wp), intent(in) :: h  !! length of the piece
+      real(wp) :: t(2, 2)
+      real(wp) :: c, s, log_scale, f
+      call transfer_functions(q*h*h, c, s, log_scale)
+      f = exp(min(log_scale, log_huge))
+      t(1, 1) = c*f; t(1, 2) = h*s*f
+      t(2, 1) = -q*h*s*f; t(2, 2) = c*f
+   end function transfer_matrix
+
+   !> The identity as a scaled matrix.
+   pure function scaled_identity() result(a)
+      type(scaled_matrix_t) :: a
+      a%m = reshape([1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], [2, 2])
+      a%log_scale = 0.0_wp
+   end function scaled_identity
+
+   !> Wrap a plain matrix.
+   pure function scaled_from_matrix(m) result(a)
+      real(wp), intent(in) :: m(2, 2)
+      type(scaled_matrix_t) :: a
+      a%m = m
+      a%log_scale = 0.0_wp
+      call normalize_scaled(a)
+   end function scaled_from_matrix
+
+   !> Rescale so that max |m_ij| = 1 (powers of two: exact).
+   pure subroutine normalize_scaled(a)
+      type(scaled_matrix_t), intent(inout) :: a
+      real(wp) :: big
+      integer :: e
+      big = maxval(abs(a%m))
+      if (big == 0.0_wp) return
+      e = exponent(big)
+      a%m = scale(a%m, -e)
+      a%log_scale = a%log_scale + e*log(2.0_wp)
+   end subroutine normalize_scaled
+
+   !> a ← T(q, h) · a: advance by one constant piece.
+   pure subroutine multiply_transfer(a, q, h)
+      type(scaled_matrix_t), intent(inout) :: a
+      real(wp), intent(in) :: q, h
+      real(wp) :: c, s, log_scale, t(2, 2)
+      call transfer_functions(q*h*h, c, s, log_scale)
+      t(1, 1) = c; t(1, 2) = h*s
+      t(2, 1) = -q*h*s; t(2, 2) = c
+      a%m = matmul(t, a%m)
+      a%log_scale = a%log_scale + log_scale
+      call normalize_scaled(a)
+   end subroutine multiply_transfer
+
+   !> a ← m · a for a plain matrix m.
+   pure subroutine multiply_matrix(a, m)
+      type(scaled_matrix_t), intent(inout) :: a
+      real(wp), intent(in) :: m(2, 2)
+      a%m = matmul(m, a%m)
+      call normalize_scaled(a)
+   end subroutine multiply_matrix
+
+   !> Product b · a of scaled matrices.
+   pure function multiply_scaled(b, a) result(c)
+      type(scaled_matrix_t), intent(in) :: b, a
+      type(scaled_matrix_t) :: c
+      c%m = matmul(b%m, a%m)
+      c%log_scale = a%log_scale + b%log_scale
+      call normalize_scaled(c)
+   end function multiply_scaled
+
+   !> Trace of a scaled matrix, flagged (and clamped) if it does not fit.
+   pure function trace_of(a) result(tr)
+      type(scaled_matrix_t), intent(in) :: a
+      type(trace_t) :: tr
+      real(wp) :: t
+      t = a%m(1, 1) + a%m(2, 2)
+      if (t == 0.0_wp) then
+         tr = trace_t(0.0_wp, -huge(1.0_wp), .false.)
+         return
+      end if
+      tr%log_abs = log(abs(t)) + a%log_scale
+      if (tr%log_abs < log_huge) then
+         tr%value = t*exp(a%log_scale)
+         tr%overflow = .false.
+      else
+         tr%value = sign(huge(1.0_wp), t)
+         tr%overflow = .true.
+      end if
+   end function trace_of
+
+   !> A finite trace value as a trace_t.
+   elemental function trace_from_value(s) result(tr)
+      real(wp), intent(in) :: s
+      type(trace_t) :: tr
+      tr%value = s
+      tr%overflow = .false.
+      if (s == 0.0_wp) then
+         tr%log_abs = -huge(1.0_wp)
+      else
+         tr%log_abs = log(abs(s))
+      end if
+   end function trace_from_value
+
+   !> The plain matrix (entries clamped to ±huge if the scale overflows).
+   pure function matrix_of(a) result(m)
+      type(scaled_matrix_t), intent(in) :: a
+      real(wp) :: m(2, 2)
+      m = a%m*exp(min(a%log_scale, log_huge))
+   end function matrix_of
+
+   !> Determinant of a plain 2×2 matrix.
+   pure real(wp) function determinant(m)
+      real(wp), intent(in) :: m(2, 2)
+      determinant = m(1, 1)*m(2, 2) - m(1, 2)*m(2, 1)
+   end function determinant
+
+   !> Determinant of a scaled matrix, returned as (mantissa, ln scale):
+   !> det = d · e^{log_det_scale}.
+   pure subroutine determinant_of(a, d, log_det_scale)
+      type(scaled_matrix_t), intent(in) :: a
+      real(wp), intent(out) :: d, log_det_scale
+      d = determinant(a%m)
+      log_det_scale = 2.0_wp*a%log_scale
+   end subroutine determinant_of
+end module hillstab_transfer

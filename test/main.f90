@@ -1,0 +1,16 @@
+!> Test driver: `fpm test [-- SUITE [TEST]]`. Exits non-zero on any failure.
+program tester
+   use hillstab_testing, only: testsuite_t, run_testsuites
+   use test_coefficient, only: collect_coefficient
+   use test_transfer, only: collect_transfer
+   use test_formulas, only: collect_formulas
+   use test_floquet, only: collect_floquet
+   use test_monodromy, only: collect_monodromy
+   implicit none
+   type(testsuite_t), allocatable :: suites(:)
+   integer :: n_failed
+   suites = [collect_coefficient(), collect_transfer(), collect_formulas(), collect_floquet(), &
+             collect_monodromy()]
+   call run_testsuites(suites, n_failed)
+   if (n_failed > 0) error stop 1
+end program tester

@@ -1,0 +1,82 @@
+!> Tests of the Floquet layer: Vieta relations of the multipliers, exponents,
+!> overflowed traces, and the damped stability criterion |S₁| < 2 cosh ε.
+module test_floquet
+   use hillstab_kinds, only: wp, pi
+   use hillstab_transfer, only: trace_t
+   use hillstab_floquet
+   use hillstab_testing
+   implicit none
+   private
+   public :: collect_floquet
+
+contains
+
+   function collect_floquet() result(suite)
+      type(testsuite_t) :: suite
+      suite = new_testsuite("floquet", [ &
+         new_unittest("vieta_relations", vieta_relations), &
+         new_unittest("exponent_and_rotation", exponent_and_rotation), &
+         new_unittest("overflowed_trace", overflowed_trace), &
+         new_unittest("damped_criterion", damped_criterion)])
+   end function collect_floquet
+
+   !> λ₁ + λ₂ = e^{−ε} S and λ₁ λ₂ = e^{−2ε} for the multipliers of x.
+   subroutine vieta_relations(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: traces(7) = [-1.0e6_wp, -3.0_wp, -1.999_wp, 0.5_wp, 1.0_wp, 2.5_wp, 40.0_wp]
+      real(wp) :: eps(3) = [0.0_wp, 0.3_wp, 2.0_wp]
+      type(floquet_t) :: f
+      complex(wp) :: lam(2)
+      integer :: i, k
+      do k = 1, size(eps)
+         do i = 1, size(traces)
+            f = floquet_from_value(traces(i), eps(k))
+            lam = multipliers(f)
+            call check(ctx, real(lam(1) + lam(2), wp), exp(-eps(k))*traces(i), rel=1.0e-12_wp, abs=1.0e-14_wp)
+            call check(ctx, aimag(lam(1) + lam(2)), 0.0_wp, abs=1.0e-14_wp)
+            call check(ctx, real(lam(1)*lam(2), wp), exp(-2*eps(k)), rel=1.0e-10_wp)
+            call check(ctx, abs(lam(1)) >= abs(lam(2)) - 1.0e-15_wp, "largest first")
+         end do
+      end do
+   end subroutine vieta_relations
+
+   subroutine exponent_and_rotation(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(floquet_t) :: f
+      f = floquet_from_value(2.0_wp*cos(0.3_wp), 0.0_wp)
+      call check(ctx, f%rotation, 0.3_wp, rel=1.0e-13_wp)
+      call check(ctx, f%exponent, 0.0_wp, abs=0.0_wp)
+      call check(ctx, f%stable .and. f%stable_paper, "|S| < 2 stable")
+      f = floquet_from_value(-2.0_wp*cosh(0.8_wp), 0.0_wp)
+      call check(ctx, f%exponent, 0.4_wp, rel=1.0e-13_wp)
+      call check(ctx, f%argument(1), pi, rel=1.0e-15_wp)
+      call check(ctx, .not. f%stable, "S < -2 unstable")
+      call check(ctx, largest_multiplier_modulus(f), exp(0.8_wp), rel=1.0e-13_wp)
+   end subroutine exponent_and_rotation
+
+   subroutine overflowed_trace(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(floquet_t) :: f
+      f = floquet_from_trace(trace_t(huge(1.0_wp), 1500.0_wp, .true.), 0.0_wp)
+      call check(ctx, f%exponent, 750.0_wp, rel=1.0e-14_wp)
+      call check(ctx, f%log_modulus(2), -1500.0_wp, rel=1.0e-14_wp)
+      call check(ctx, largest_multiplier_modulus(f) == huge(1.0_wp), "modulus clamped")
+      call check(ctx, .not. (f%stable .or. f%stable_paper), "overflow is unstable")
+      f = floquet_from_trace(trace_t(huge(1.0_wp), 1500.0_wp, .true.), 2000.0_wp)
+      call check(ctx, f%stable, "damping stronger than growth is stable")
+   end subroutine overflowed_trace
+
+   !> With ε > 0 the verdict is |S₁| < 2 cosh ε; the paper's |S₁| ≤ 2 is kept apart.
+   subroutine damped_criterion(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(floquet_t) :: f
+      f = floquet_from_value(2.5_wp, 1.0_wp)          ! 2 cosh 1 = 3.086
+      call check(ctx, f%stable, "2.5 < 2 cosh 1 stable")
+      call check(ctx, .not. f%stable_paper, "paper says unstable")
+      call check(ctx, f%exponent, 0.5_wp*(acosh(1.25_wp) - 1.0_wp), rel=1.0e-13_wp)
+      f = floquet_from_value(-3.2_wp, 1.0_wp)
+      call check(ctx, .not. f%stable, "3.2 > 2 cosh 1 unstable")
+      f = floquet_from_value(1.0_wp, 0.5_wp)
+      call check(ctx, f%exponent, -0.25_wp, rel=1.0e-15_wp)
+   end subroutine damped_criterion
+end module test_floquet
