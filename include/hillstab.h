@@ -1,0 +1,48 @@
+/* hillstab C interface: stability of the elastic pendulum through the Hill
+ * equation x'' + Q(tau) x = 0, Q = (beta - alpha cos pi tau)/(1 - (alpha/pi^2) cos pi tau).
+ * Link with -lhillstab -lgfortran -lgsl -lgslcblas -llapack -lblas (see hillstab.pc).
+ * Every int-returning function returns 0 on success or an error code (see
+ * hillstab_error_message); outputs are untouched on failure. */
+#ifndef HILLSTAB_H
+#define HILLSTAB_H
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum { HILLSTAB_MODEL_ELASTIC = 1, HILLSTAB_MODEL_MATHIEU = 2 };
+enum {
+  HILLSTAB_METHOD_AUTO = 0, HILLSTAB_METHOD_FORMULA = 1, HILLSTAB_METHOD_SEGMENTS = 2,
+  HILLSTAB_METHOD_MAGNUS4 = 3, HILLSTAB_METHOD_MAGNUS6 = 4, HILLSTAB_METHOD_RK = 5, HILLSTAB_METHOD_GSL = 6
+};
+enum { HILLSTAB_SAMPLING_ENDPOINT = 1, HILLSTAB_SAMPLING_MIDPOINT = 2, HILLSTAB_SAMPLING_AVERAGE = 3 };
+enum {
+  HILLSTAB_ERR_INVALID_PARAMETER = 1, HILLSTAB_ERR_OVERFLOW = 2, HILLSTAB_ERR_INTEGRATION = 3,
+  HILLSTAB_ERR_IO = 4, HILLSTAB_ERR_INPUT = 5, HILLSTAB_ERR_SINGULAR = 6
+};
+
+/* Q(tau) including the damping shift -epsilon^2/4 of eq. (47). */
+int hillstab_q(int model, double alpha, double beta, double epsilon, double tau, double *q);
+
+/* One-period monodromy trace S (S1 of the chi equation when epsilon > 0).
+ * On overflow: *trace = +-DBL_MAX, *overflow = 1, *log_abs_trace = ln|S|. */
+int hillstab_trace(int model, double alpha, double beta, double epsilon, int method, int n_segments,
+                   int sampling, double tolerance, double *trace, double *log_abs_trace, int *overflow);
+
+/* Floquet data of the swing x: log_modulus[2] = ln|lambda| (largest first), exponent = ln|lambda_max|/2
+ * per unit tau, stable = (|S1| < 2 cosh epsilon), stable_paper = (|S1| <= 2). */
+int hillstab_floquet_data(int model, double alpha, double beta, double epsilon, int method, int n_segments,
+                     int sampling, double tolerance, double *trace, double log_modulus[2], double *exponent,
+                     int *stable, int *stable_paper);
+
+/* The paper's closed forms eq. (37) (epsilon = 0) and eq. (48)-(50); +-DBL_MAX on overflow. */
+double hillstab_trace_paper(double alpha, double beta, double epsilon);
+
+/* A NUL-terminated description of a status code. */
+void hillstab_error_message(int status, char *buffer, size_t length);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
