@@ -12,6 +12,7 @@ module hillstab_monodromy
    use hillstab_transfer, only: scaled_matrix_t, scaled_identity, multiply_transfer, multiply_matrix, &
       trace_t, trace_of
    use hillstab_formulas, only: trace_damped_paper, trace_mathieu_two_segment
+   use hillstab_stats, only: work_stats_t
    implicit none
    private
    public :: method_t, method_auto, method_formula, method_segments, method_magnus4, method_magnus6, &
@@ -103,11 +104,13 @@ contains
    end function swing_monodromy
 
    !> Trace of the one-period monodromy of the χ equation by the chosen method.
-   subroutine monodromy_trace(model, method, tr, error)
+   subroutine monodromy_trace(model, method, tr, error, stats)
       type(hill_model_t), intent(in) :: model
       type(method_t), intent(in) :: method
       type(trace_t), intent(out) :: tr
       type(error_t), allocatable, intent(out) :: error
+      type(work_stats_t), intent(out), optional :: stats  !! work done (Q evaluations, steps)
+      type(work_stats_t) :: work
       call check_model(model, error)
       if (allocated(error)) return
       select case (method%kind)
@@ -117,6 +120,7 @@ contains
          else
             tr = trace_damped_paper(model%alpha, model%beta, model%epsilon)
          end if
+         work = work_stats_t(2, 0, 2)
       case (method_segments)
          if (method%n_segments < 1) then
             call set_error(error, err_invalid_parameter, "n_segments must be >= 1")
@@ -127,9 +131,11 @@ contains
             return
          end if
          tr = trace_segmented(model, method%n_segments, method%sampling)
+         work = work_stats_t(method%n_segments, 0, method%n_segments)
       case default
          call set_error(error, err_invalid_parameter, "method '"//method_name(method%kind)// &
             "' is not available in this build")
       end select
+      if (present(stats)) stats = work
    end subroutine monodromy_trace
 end module hillstab_monodromy
