@@ -1,0 +1,265 @@
+!> Speed against error: work-precision data for every monodromy method on a
+!> fixed sample of (α, β), and the cost growth with β.
+!>
+!> Usage: hillstab_bench [--quick] [--out PREFIX]
+!> Writes PREFIX_work_precision.dat and PREFIX_beta_cost.dat (default PREFIX = out/bench)
+!> and prints the tables. Times are wall-clock per chart point, measured side by
+!> side in one run; compare them as ratios.
+program hillstab_bench
+   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+   use hillstab
+   implicit none
+
+   type :: sample_t
+      real(wp) :: alpha, beta
+   end type sample_t
+
+   type(sample_t), allocatable :: samples(:)
+   real(wp), allocatable :: truth(:)
+   character(len=256) :: prefix, arg
+   logical :: quick
+   integer :: i, unit, stat
+   character(len=256) :: msg
+
+   prefix = "out/bench"
+   quick = .false.
+   i = 1
+   do while (i <= command_argument_count())
+      call get_command_argument(i, arg)
+      select case (trim(arg))
+      case ("--quick")
+         quick = .true.
+      case ("--out")
+         i = i + 1
+         call get_command_argument(i, prefix)
+      case ("--help", "-h")
+         write (output_unit, '(a)') "usage: hillstab_bench [--quick] [--out PREFIX]"
+         stop
+      case default
+         write (error_unit, '(a)') "hillstab_bench: unknown argument '"//trim(arg)//"'"
+         stop 2
+      end select
+      i = i + 1
+   end do
+   call execute_command_line("mkdir -p $(dirname "//trim(prefix)//"_x)", exitstat=stat)
+
+   samples = make_samples()
+   allocate (truth(size(samples)))
+   call reference_traces(samples, truth)
+
+   open (newunit=unit, file=trim(prefix)//"_work_precision.dat", status="replace", action="write", &
+         iostat=stat, iomsg=msg)
+   if (stat /= 0) then
+      write (error_unit, '(a)') "hillstab_bench: "//trim(msg)
+      stop 2
+   end if
+   write (unit, '(a)') "# hillstab "//version_string//" work-precision benchmark"
+   write (unit, '(a,i0,a)') "# sample: ", size(samples), " (alpha, beta) points, alpha up to 9.8"
+   write (unit, '(a)') "# error = max over the sample of |S - S_ref| / max(1, |S_ref|)"
+   write (unit, '(a)') "# one gnuplot index (block separated by two blank lines) per method"
+   write (unit, '(a)') "# columns: method setting seconds_per_point max_error mean_error q_evaluations_per_point"
+   write (output_unit, '(a)') ""
+   write (output_unit, '(a)') "Work-precision over the sample (time per point, error scaled by max(1,|S|))"
+   write (output_unit, '(a10,a12,a14,a12,a12,a12)') "method", "setting", "us/point", "max error", &
+      "mean error", "Q evals"
+   call sweep_formula(unit)
+   call sweep_segments(unit, sampling_midpoint, quick)
+   call sweep_segments(unit, sampling_average, quick)
+   call sweep_tolerance(unit, method_magnus4, quick)
+   call sweep_tolerance(unit, method_magnus6, quick)
+   call sweep_tolerance(unit, method_rk, quick)
+   call sweep_tolerance(unit, method_gsl, quick)
+   call sweep_tolerance(unit, method_auto, quick)
+   close (unit)
+   write (output_unit, '(a)') "wrote "//trim(prefix)//"_work_precision.dat"
+
+   call beta_cost(trim(prefix)//"_beta_cost.dat")
+
+contains
+
+   function make_samples() result(s)
+      type(sample_t), allocatable :: s(:)
+      real(wp), parameter :: alphas(6) = [0.5_wp, 2.0_wp, 5.0_wp, 8.0_wp, 9.5_wp, 9.8_wp]
+      real(wp), parameter :: betas(5) = [-2.0_wp, 0.76_wp, 2.47_wp, 6.0_wp, 12.0_wp]
+      integer :: a, b, k
+      allocate (s(size(alphas)*size(betas)))
+      k = 0
+      do a = 1, size(alphas)
+         do b = 1, size(betas)
+            k = k + 1
+            s(k) = sample_t(alphas(a), betas(b))
+         end do
+      end do
+   end function make_samples
+
+   !> Reference traces: Magnus-6 at 1e-14 checked against GSL rk8pd at 1e-13 (two
+   !> independent methods); falls back to Richardson-extrapolated segments.
+   subroutine reference_traces(s, ref)
+      type(sample_t), intent(in) :: s(:)
+      real(wp), intent(out) :: ref(:)
+      type(trace_t) :: a, b
+      type(error_t), allocatable :: err_a, err_b
+      real(wp) :: worst
+      integer :: k
+      worst = 0.0_wp
+      do k = 1, size(s)
+         call monodromy_trace(model_at(s(k)), method_t(method_magnus6, tolerance=1.0e-14_wp), a, err_a)
+         call monodromy_trace(model_at(s(k)), method_t(method_gsl, tolerance=1.0e-13_wp), b, err_b)
+         if (.not. allocated(err_a)) then
+            ref(k) = a%value
+            if (.not. allocated(err_b)) worst = max(worst, abs(a%value - b%value)/max(1.0_wp, abs(a%value)))
+         else if (.not. allocated(err_b)) then
+            ref(k) = b%value
+         else
+            a = trace_segmented(model_at(s(k)), 65536, sampling_average)
+            b = trace_segmented(model_at(s(k)), 131072, sampling_average)
+            ref(k) = (4.0_wp*b%value - a%value)/3.0_wp
+         end if
+      end do
+      write (output_unit, '(a,es9.2)') "reference: Magnus-6 (1e-14) vs GSL rk8pd (1e-13), max scaled difference ", worst
+   end subroutine reference_traces
+
+   pure function model_at(s) result(m)
+      type(sample_t), intent(in) :: s
+      type(hill_model_t) :: m
+      m = hill_model_t(model_elastic, s%alpha, s%beta, 0.0_wp)
+   end function model_at
+
+   !> Time all sample points with one method (repeated until ≥ 0.05 s), errors and work.
+   subroutine measure(method, seconds, max_err, mean_err, evals, ok)
+      type(method_t), intent(in) :: method
+      real(wp), intent(out) :: seconds, max_err, mean_err, evals
+      logical, intent(out) :: ok
+      type(trace_t) :: tr
+      type(error_t), allocatable :: error
+      type(work_stats_t) :: work
+      integer(int64) :: t0, t1, rate, total_evals
+      integer :: k, repeats, r
+      real(wp) :: e
+      ok = .true.
+      max_err = 0.0_wp; mean_err = 0.0_wp; total_evals = 0
+      do k = 1, size(samples)
+         call monodromy_trace(model_at(samples(k)), method, tr, error, work)
+         if (allocated(error)) then
+            ok = .false.
+            return
+         end if
+         e = abs(tr%value - truth(k))/max(1.0_wp, abs(truth(k)))
+         max_err = max(max_err, e)
+         mean_err = mean_err + e/size(samples)
+         total_evals = total_evals + work%n_evaluations
+      end do
+      evals = real(total_evals, wp)/size(samples)
+      repeats = 0
+      call system_clock(t0, rate)
+      do
+         do r = 1, max(1, repeats)
+            do k = 1, size(samples)
+               call monodromy_trace(model_at(samples(k)), method, tr, error)
+            end do
+         end do
+         call system_clock(t1)
+         if (real(t1 - t0, wp)/rate >= 0.05_wp .or. repeats > 100000) exit
+         repeats = max(1, 2*repeats)
+         call system_clock(t0)
+      end do
+      seconds = real(t1 - t0, wp)/rate/(max(1, repeats)*size(samples))
+   end subroutine measure
+
+   subroutine report(unit, name, setting, method)
+      integer, intent(in) :: unit
+      character(len=*), intent(in) :: name
+      real(wp), intent(in) :: setting
+      type(method_t), intent(in) :: method
+      real(wp) :: seconds, max_err, mean_err, evals
+      logical :: ok
+      call measure(method, seconds, max_err, mean_err, evals, ok)
+      if (.not. ok) return
+      write (unit, '(a,1x,es10.3,4(1x,es12.5))') name, setting, seconds, max_err, mean_err, evals
+      write (output_unit, '(a10,es12.2,f14.2,es12.2,es12.2,f12.1)') name, setting, 1.0e6_wp*seconds, max_err, &
+         mean_err, evals
+   end subroutine report
+
+   subroutine sweep_formula(unit)
+      integer, intent(in) :: unit
+      call report(unit, "formula", 2.0_wp, method_t(method_formula))
+      write (unit, '(/)')
+   end subroutine sweep_formula
+
+   subroutine sweep_segments(unit, sampling, quick)
+      integer, intent(in) :: unit, sampling
+      logical, intent(in) :: quick
+      integer :: n
+      n = 4
+      do while (n <= merge(4096, 65536, quick))
+         call report(unit, "seg-"//sampling_name(sampling), real(n, wp), method_t(method_segments, n, sampling))
+         n = 4*n
+      end do
+      write (unit, '(/)')
+   end subroutine sweep_segments
+
+   subroutine sweep_tolerance(unit, kind, quick)
+      integer, intent(in) :: unit, kind
+      logical, intent(in) :: quick
+      integer :: p
+      do p = 3, 12, merge(3, 1, quick)
+         call report(unit, method_name(kind), 10.0_wp**(-p), method_t(kind, tolerance=10.0_wp**(-p)))
+      end do
+      write (unit, '(/)')
+   end subroutine sweep_tolerance
+
+   !> Cost per point of `auto` and GSL at tolerance 1e-10 as β grows (α = 5 and 9.8).
+   subroutine beta_cost(path)
+      character(len=*), intent(in) :: path
+      real(wp), parameter :: betas(8) = [1.0_wp, 10.0_wp, 30.0_wp, 100.0_wp, 300.0_wp, 1000.0_wp, 3000.0_wp, 1.0e4_wp]
+      real(wp), parameter :: alphas(2) = [5.0_wp, 9.8_wp]
+      integer :: u, a, b, m
+      integer, parameter :: kinds(3) = [method_auto, method_magnus6, method_gsl]
+      real(wp) :: seconds(3), evals(3)
+      open (newunit=u, file=path, status="replace", action="write")
+      write (u, '(a)') "# hillstab "//version_string//" cost per point against beta at tolerance 1e-10"
+      write (u, '(a)') "# columns: alpha beta auto_seconds auto_evals magnus6_seconds magnus6_evals gsl_seconds gsl_evals"
+      write (output_unit, '(/,a)') "Cost per point against beta (tolerance 1e-10): microseconds (Q evaluations)"
+      write (output_unit, '(a6,a10,3a22)') "alpha", "beta", "auto", "magnus6", "gsl rk8pd"
+      do a = 1, size(alphas)
+         do b = 1, size(betas)
+            do m = 1, size(kinds)
+               call time_point(hill_model_t(model_elastic, alphas(a), betas(b), 0.0_wp), &
+                  method_t(kinds(m), tolerance=1.0e-10_wp), seconds(m), evals(m))
+            end do
+            write (u, '(2(es12.5,1x),6(es12.5,1x))') alphas(a), betas(b), (seconds(m), evals(m), m=1, 3)
+            write (output_unit, '(f6.2,f10.1,3(f12.1," (",i7,")"))') alphas(a), betas(b), &
+               (1.0e6_wp*seconds(m), nint(evals(m)), m=1, 3)
+         end do
+         write (u, '(/)')
+      end do
+      close (u)
+      write (output_unit, '(a)') "wrote "//path
+   end subroutine beta_cost
+
+   subroutine time_point(model, method, seconds, evals)
+      type(hill_model_t), intent(in) :: model
+      type(method_t), intent(in) :: method
+      real(wp), intent(out) :: seconds, evals
+      type(trace_t) :: tr
+      type(error_t), allocatable :: error
+      type(work_stats_t) :: work
+      integer(int64) :: t0, t1, rate
+      integer :: r, repeats
+      seconds = -1.0_wp; evals = -1.0_wp
+      call monodromy_trace(model, method, tr, error, work)
+      if (allocated(error)) return
+      evals = real(work%n_evaluations, wp)
+      repeats = 1
+      do
+         call system_clock(t0, rate)
+         do r = 1, repeats
+            call monodromy_trace(model, method, tr, error)
+         end do
+         call system_clock(t1)
+         if (real(t1 - t0, wp)/rate >= 0.02_wp .or. repeats > 1000000) exit
+         repeats = 2*repeats
+      end do
+      seconds = real(t1 - t0, wp)/rate/repeats
+   end subroutine time_point
+end program hillstab_bench
