@@ -1,9 +1,26 @@
-# hillstab: `make run` runs the default scene (data + PNG figures),
-# `make test` runs the test suite; both install what is missing first.
+# hillstab
+#   make run            run the default scene (data files + PNG figures in out/)
+#   make test           run the test suite
+# both install what is missing first (scripts/setup.sh). Further targets:
+#   make test-debug     tests again with runtime checks and floating-point traps
+#   make bench          speed-against-error benchmark (out/bench_*.dat, out/bench*.png)
+#   make lib            build libhillstab.a and .mod files with plain gfortran (no fpm)
+#   make install PREFIX=/usr/local   install library, modules, C header, pkg-config and CMake files
+#   make check-install  install into build/_install and link a C and a Fortran program against it
 FPM ?= fpm
+ifeq ($(origin FC),default)
+FC = gfortran
+endif
+PREFIX ?= /usr/local
 DEBUG_FLAGS = -fcheck=all -ffpe-trap=invalid,zero,overflow -g -fbacktrace
+LIB_FLAGS = -O2 -fPIC -fopenmp -fimplicit-none
+LIBS = -lgsl -lgslcblas -llapack -lblas
+FC_VERSION := $(shell $(FC) -dumpversion 2>/dev/null)
+MOD_SUBDIR = hillstab/$(notdir $(FC))-$(FC_VERSION)
+LEGACY_DIR = build/legacy
+VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 
-.PHONY: run test test-debug setup bench clean
+.PHONY: run test test-debug setup bench lib install check-install clean
 
 setup:
 	@bash scripts/setup.sh
@@ -16,6 +33,35 @@ test: setup
 
 test-debug: setup
 	$(FPM) test --profile debug --flag "$(DEBUG_FLAGS)"
+
+bench: setup
+	$(FPM) run --profile release hillstab_bench
+	gnuplot plots/bench.gp
+
+lib: setup
+	@mkdir -p $(LEGACY_DIR)/obj $(LEGACY_DIR)/mod
+	@for f in $$(bash scripts/fortran_order.sh); do \
+	   echo "  FC $$f"; \
+	   $(FC) $(LIB_FLAGS) -J $(LEGACY_DIR)/mod -c $$f -o $(LEGACY_DIR)/obj/$$(basename $$f .f90).o || exit 1; \
+	done
+	@rm -f $(LEGACY_DIR)/libhillstab.a
+	ar rcs $(LEGACY_DIR)/libhillstab.a $(LEGACY_DIR)/obj/*.o
+
+install: lib
+	install -d $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/lib/cmake/hillstab \
+	   $(DESTDIR)$(PREFIX)/include/$(MOD_SUBDIR)
+	install -m 644 $(LEGACY_DIR)/libhillstab.a $(DESTDIR)$(PREFIX)/lib/
+	install -m 644 include/hillstab.h $(DESTDIR)$(PREFIX)/include/
+	install -m 644 $(LEGACY_DIR)/mod/*.mod $(DESTDIR)$(PREFIX)/include/$(MOD_SUBDIR)/
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' -e 's|@MOD_SUBDIR@|$(MOD_SUBDIR)|g' \
+	   config/hillstab.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/hillstab.pc
+	sed -e 's|@MOD_SUBDIR@|$(MOD_SUBDIR)|g' -e 's|@VERSION@|$(VERSION)|g' \
+	   config/hillstab-config.cmake.in > $(DESTDIR)$(PREFIX)/lib/cmake/hillstab/hillstab-config.cmake
+
+check-install:
+	@rm -rf build/_install
+	$(MAKE) --no-print-directory install PREFIX=$(CURDIR)/build/_install
+	bash config/export/check.sh $(CURDIR)/build/_install
 
 clean:
 	rm -rf build out

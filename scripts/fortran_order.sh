@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Print the Fortran sources of src/ in compilation order (modules before their users),
+# for builds without fpm (make lib). Uses the `module`/`use` statements and tsort.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+declare -A file_of
+for f in src/*.f90; do
+   m=$(grep -iE '^\s*module\s+[a-z_0-9]+\s*$' "$f" | head -1 | awk '{print tolower($2)}')
+   [ -n "$m" ] && file_of[$m]=$f
+done
+{
+   for f in src/*.f90; do
+      echo "$f $f"
+      for u in $(grep -iE '^\s*use\s+[a-z_0-9]+' "$f" | grep -viE 'intrinsic' | sed -E 's/^\s*use\s+([A-Za-z_0-9]+).*/\1/' | tr 'A-Z' 'a-z' | sort -u); do
+         dep=${file_of[$u]:-}
+         [ -n "$dep" ] && [ "$dep" != "$f" ] && echo "$dep $f"
+      done
+   done
+} | tsort
