@@ -12,6 +12,8 @@ module hillstab_monodromy
    use hillstab_transfer, only: scaled_matrix_t, scaled_identity, multiply_transfer, multiply_matrix, &
       trace_t, trace_of
    use hillstab_formulas, only: trace_damped_paper, trace_mathieu_two_segment
+   use hillstab_stats, only: work_stats_t
+   use hillstab_gsl, only: trace_gsl
    implicit none
    private
    public :: method_t, method_auto, method_formula, method_segments, method_magnus4, method_magnus6, &
@@ -127,6 +129,11 @@ contains
             return
          end if
          tr = trace_segmented(model, method%n_segments, method%sampling)
+      case (method_gsl)
+         gsl: block
+            type(work_stats_t) :: stats
+            call trace_gsl(model, method%tolerance, tr, stats, error)
+         end block gsl
       case default
          call set_error(error, err_invalid_parameter, "method '"//method_name(method%kind)// &
             "' is not available in this build")
