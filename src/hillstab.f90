@@ -17,6 +17,7 @@ module hillstab
    use hillstab_formulas
    use hillstab_floquet
    use hillstab_monodromy
+   use hillstab_gsl
    implicit none
    public
 end module hillstab

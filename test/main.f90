@@ -7,11 +7,12 @@ program tester
    use test_floquet, only: collect_floquet
    use test_monodromy, only: collect_monodromy
    use test_capi, only: collect_capi
+   use test_gsl, only: collect_gsl
    implicit none
    type(testsuite_t), allocatable :: suites(:)
    integer :: n_failed
    suites = [collect_coefficient(), collect_transfer(), collect_formulas(), collect_floquet(), &
-             collect_monodromy(), collect_capi()]
+             collect_monodromy(), collect_capi(), collect_gsl()]
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

@@ -1,0 +1,486 @@
+!> hillstab's own `bind(C)` bindings to the few GSL routines it uses, and two
+!> references built on them:
+!>
+!> - Mathieu characteristic values a_n(q), b_n(q) (`gsl_sf_mathieu_a_e/_b_e`) and
+!>   the transition curves of the paper's Mathieu form q(τ) = β − ν cos πτ (A1):
+!>   with z = πτ/2 it is y'' + (a − 2q cos 2z) y = 0, a = 4β/π², q = 2ν/π², so the
+!>   curves are β = (π²/4) a_n(2ν/π²) and β = (π²/4) b_n(2ν/π²) (BRIEF §5);
+!> - the one-period monodromy of the χ equation (47) by GSL's odeiv2 driver with
+!>   the Prince–Dormand 8(9) pair `rk8pd`, using the even symmetry of Q: the even
+!>   and odd solutions u, v are integrated on [0, 1] only (BRIEF §4).
+!>
+!> GSL's default error handler aborts the program; every entry point here first
+!> switches it off (`gsl_set_error_handler_off`) and checks status codes, which it
+!> reports through `error_t`. No module variable holds state: the right-hand side
+!> receives the model and its evaluation counter through GSL's `params` pointer, so
+!> the routines may be called from several OpenMP threads at once. (The handler
+!> switch writes one GSL global; every thread writes the same value, null.)
+!>
+!> Accuracy of the monodromy (measured against quadruple-precision references,
+!> test/test_gsl.f90): GSL's control keeps each step's error in every component
+!> below eps·(1 + |y_i|), eps = tolerance·gsl_tolerance_factor. The error in S,
+!> relative to max(1, |S|), came out at 0.1–0.3·κ·eps, where κ compares the size
+!> the solutions reach inside the period with S; κ ≲ 5 over most of the chart but
+!> reaches ~3e3 at α → π², β → 0 (e.g. α = 9.8, β = 0, where S = 2). When κ > 4
+!> the half period is integrated again with eps/κ. Result: error ≤ tolerance for
+!> 1e-12 ≤ tolerance ≤ 1e-4 on a 21×26 grid of both models (worst 0.5–1.2 ×
+!> tolerance), typically 0.01–0.5 × tolerance. Since eps is floored at 1e-15,
+!> the attainable error is ~1e-15 × max(1, κ)·10: 1e-14 relative at most points,
+!> 2e-11 at (9.8, 0).
+!>
+!>```fortran
+!> type(trace_t) :: tr
+!> type(work_stats_t) :: stats
+!> type(error_t), allocatable :: error
+!> call trace_gsl(hill_model_t(model_elastic, 9.8_wp, 2.47_wp, 0.0_wp), 1.0e-12_wp, tr, stats, error)
+!>```
+module hillstab_gsl
+   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_long, c_ptr, c_funptr, &
+      c_null_funptr, c_loc, c_funloc, c_f_pointer, c_associated
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use hillstab_kinds, only: wp, int64, pi2, log_huge
+   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
+   use hillstab_stats, only: work_stats_t, add_work
+   use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
+   use hillstab_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of
+   implicit none
+   private
+   public :: mathieu_a, mathieu_b, mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b, &
+      mathieu_max_order
+   public :: monodromy_gsl, trace_gsl, monodromy_gsl_full_period, gsl_tolerance_factor
+   public :: gsl_odeiv2_step_rk8pd
+
+   !> Curves of the even Mathieu functions ce_n: a_n(q), n ≥ 0.
+   integer, parameter :: mathieu_kind_a = 1
+   !> Curves of the odd Mathieu functions se_n: b_n(q), n ≥ 1.
+   integer, parameter :: mathieu_kind_b = 2
+   !> Largest order accepted. GSL's initial guess switches to n² at order 70 and
+   !> its root search then converges to wrong values at large q (a known upstream
+   !> bug); orders up to 60 keep a margin. (GSL's continued fractions also stop at
+   !> 50 terms, so accuracy degrades for |q| of order 1e3 and beyond; hillstab's
+   !> Mathieu charts need |q| = 2|ν|/π² of order 1.)
+   integer, parameter :: mathieu_max_order = 60
+
+   !> epsabs = epsrel = tolerance·gsl_tolerance_factor in GSL's control
+   !> D_i = epsabs + epsrel |y_i|. Measured: the error in S relative to max(1, |S|)
+   !> is about 0.1–0.3·κ·epsilon, κ the condition of `half_period_monodromy`
+   !> (κ ≲ 5 over most of the chart), so 0.5 keeps it below `tolerance`.
+   real(wp), parameter :: gsl_tolerance_factor = 0.5_wp
+   !> Condition κ (growth of the solutions inside the period relative to S) above
+   !> which the half period is integrated again with the epsilon divided by κ.
+   real(wp), parameter :: gsl_rerun_condition = 4.0_wp
+   !> GSL cannot meet a relative local error below a few ulps: the control's
+   !> epsilon is never set below this.
+   real(wp), parameter :: smallest_gsl_epsilon = 1.0e-15_wp
+   !> Step limit per call of the driver (GSL_EMAXITER beyond).
+   integer(c_long), parameter :: max_steps = 1000000_c_long
+   !> Largest growth (natural log) of a solution allowed within one integration
+   !> chunk before it is renormalized.
+   real(wp), parameter :: chunk_log_growth = 200.0_wp
+
+   integer(c_int), parameter :: gsl_success = 0
+   integer(c_int), parameter :: gsl_ebadfunc = 9
+
+   !> gsl_sf_result: value and GSL's error estimate.
+   type, bind(C) :: gsl_sf_result
+      real(c_double) :: val
+      real(c_double) :: err
+   end type gsl_sf_result
+
+   !> gsl_odeiv2_system.
+   type, bind(C) :: gsl_odeiv2_system
+      type(c_funptr) :: function      !! int f(double t, const double y[], double dydt[], void *params)
+      type(c_funptr) :: jacobian      !! unused by explicit steppers: null
+      integer(c_size_t) :: dimension
+      type(c_ptr) :: params
+   end type gsl_odeiv2_system
+
+   !> The public layout of struct gsl_odeiv2_driver_struct (gsl_odeiv2.h), read for
+   !> its evolve object only.
+   type, bind(C) :: gsl_odeiv2_driver_view
+      type(c_ptr) :: sys, step, control, evolve
+      real(c_double) :: h, hmin, hmax
+      integer(c_long) :: n, nmax   !! unsigned long in C
+   end type gsl_odeiv2_driver_view
+
+   !> The public layout of struct gsl_odeiv2_evolve_struct: `count` counts every
+   !> attempted step (accepted or not), `failed_steps` the rejected ones.
+   type, bind(C) :: gsl_odeiv2_evolve_view
+      integer(c_size_t) :: dimension
+      type(c_ptr) :: y0, yerr, dydt_in, dydt_out
+      real(c_double) :: last_step
+      integer(c_long) :: count, failed_steps
+   end type gsl_odeiv2_evolve_view
+
+   !> What the right-hand side needs: the model, and a counter of its calls.
+   type :: rhs_context_t
+      type(hill_model_t) :: model
+      integer(int64) :: n_evaluations = 0
+      real(wp) :: peak(2) = 0.0_wp  !! largest |u|, |u'| and |v|, |v'| seen by the right-hand side
+   end type rhs_context_t
+
+   !> `const gsl_odeiv2_step_type *gsl_odeiv2_step_rk8pd`, a global of libgsl.
+   !> It must be public: gfortran gives private module variables hidden
+   !> visibility, even with BIND(C), and the linker then allocates a hidden, null
+   !> copy instead of referring to libgsl's (GSL segfaults on it).
+   !> `protected`: nothing in hillstab may assign it.
+   type(c_ptr), bind(C, name="gsl_odeiv2_step_rk8pd"), protected :: gsl_odeiv2_step_rk8pd
+
+   interface
+      function gsl_set_error_handler_off() bind(C, name="gsl_set_error_handler_off") result(previous)
+         import :: c_funptr
+         type(c_funptr) :: previous
+      end function gsl_set_error_handler_off
+
+      function gsl_sf_mathieu_a_e(order, qq, result) bind(C, name="gsl_sf_mathieu_a_e") result(status)
+         import :: c_int, c_double, gsl_sf_result
+         integer(c_int), value :: order
+         real(c_double), value :: qq
+         type(gsl_sf_result), intent(out) :: result
+         integer(c_int) :: status
+      end function gsl_sf_mathieu_a_e
+
+      function gsl_sf_mathieu_b_e(order, qq, result) bind(C, name="gsl_sf_mathieu_b_e") result(status)
+         import :: c_int, c_double, gsl_sf_result
+         integer(c_int), value :: order
+         real(c_double), value :: qq
+         type(gsl_sf_result), intent(out) :: result
+         integer(c_int) :: status
+      end function gsl_sf_mathieu_b_e
+
+      function gsl_odeiv2_driver_alloc_y_new(sys, step_type, hstart, epsabs, epsrel) &
+         bind(C, name="gsl_odeiv2_driver_alloc_y_new") result(driver)
+         import :: c_ptr, c_double, gsl_odeiv2_system
+         type(gsl_odeiv2_system), intent(in) :: sys
+         type(c_ptr), value :: step_type
+         real(c_double), value :: hstart, epsabs, epsrel
+         type(c_ptr) :: driver
+      end function gsl_odeiv2_driver_alloc_y_new
+
+      function gsl_odeiv2_driver_set_nmax(driver, nmax) bind(C, name="gsl_odeiv2_driver_set_nmax") result(status)
+         import :: c_ptr, c_long, c_int
+         type(c_ptr), value :: driver
+         integer(c_long), value :: nmax
+         integer(c_int) :: status
+      end function gsl_odeiv2_driver_set_nmax
+
+      function gsl_odeiv2_driver_apply(driver, t, t1, y) bind(C, name="gsl_odeiv2_driver_apply") result(status)
+         import :: c_ptr, c_double, c_int
+         type(c_ptr), value :: driver
+         real(c_double), intent(inout) :: t
+         real(c_double), value :: t1
+         real(c_double), intent(inout) :: y(*)
+         integer(c_int) :: status
+      end function gsl_odeiv2_driver_apply
+
+      subroutine gsl_odeiv2_driver_free(driver) bind(C, name="gsl_odeiv2_driver_free")
+         import :: c_ptr
+         type(c_ptr), value :: driver
+      end subroutine gsl_odeiv2_driver_free
+   end interface
+
+contains
+
+   !> Characteristic value a_n(q) of the even Mathieu functions (GSL).
+   subroutine mathieu_a(n, q, value, error)
+      integer, intent(in) :: n             !! order, 0 ≤ n ≤ mathieu_max_order
+      real(wp), intent(in) :: q            !! Mathieu parameter (any sign)
+      real(wp), intent(out) :: value       !! a_n(q)
+      type(error_t), allocatable, intent(out) :: error
+      call mathieu_characteristic(mathieu_kind_a, n, q, value, error)
+   end subroutine mathieu_a
+
+   !> Characteristic value b_n(q) of the odd Mathieu functions (GSL).
+   subroutine mathieu_b(n, q, value, error)
+      integer, intent(in) :: n             !! order, 1 ≤ n ≤ mathieu_max_order
+      real(wp), intent(in) :: q            !! Mathieu parameter (any sign)
+      real(wp), intent(out) :: value       !! b_n(q)
+      type(error_t), allocatable, intent(out) :: error
+      call mathieu_characteristic(mathieu_kind_b, n, q, value, error)
+   end subroutine mathieu_b
+
+   !> β on the n-th transition curve of q(τ) = β − ν cos πτ: (π²/4) a_n(2ν/π²)
+   !> (kind a) or (π²/4) b_n(2ν/π²) (kind b). On it the trace is +2 for even n
+   !> (2-periodic solution) and −2 for odd n (antiperiodic).
+   subroutine mathieu_transition_beta(kind, n, nu, beta, error)
+      integer, intent(in) :: kind          !! mathieu_kind_a or mathieu_kind_b
+      integer, intent(in) :: n             !! order of the curve
+      real(wp), intent(in) :: nu           !! ν, the amplitude of the cosine
+      real(wp), intent(out) :: beta        !! β on the curve
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: a
+      call mathieu_characteristic(kind, n, 2.0_wp*nu/pi2, a, error)
+      beta = 0.25_wp*pi2*a
+   end subroutine mathieu_transition_beta
+
+   subroutine mathieu_characteristic(kind, n, q, value, error)
+      integer, intent(in) :: kind, n
+      real(wp), intent(in) :: q
+      real(wp), intent(out) :: value
+      type(error_t), allocatable, intent(out) :: error
+      type(gsl_sf_result) :: result
+      type(c_funptr) :: previous
+      integer(c_int) :: status
+      integer :: lowest
+      character(len=120) :: buf
+      value = 0.0_wp
+      if (kind /= mathieu_kind_a .and. kind /= mathieu_kind_b) then
+         call set_error(error, err_invalid_parameter, "Mathieu kind must be mathieu_kind_a or mathieu_kind_b")
+         return
+      end if
+      lowest = merge(0, 1, kind == mathieu_kind_a)
+      if (n < lowest .or. n > mathieu_max_order) then
+         write (buf, '(a,a,a,i0,a,i0,a,i0)') "Mathieu order of ", trim(kind_letter(kind)), "_n must be in ", &
+            lowest, "..", mathieu_max_order, " (GSL is unreliable beyond), got n = ", n
+         call set_error(error, err_invalid_parameter, trim(buf))
+         return
+      end if
+      if (.not. ieee_is_finite(q)) then
+         call set_error(error, err_invalid_parameter, "Mathieu parameter q must be finite")
+         return
+      end if
+      previous = gsl_set_error_handler_off()
+      result = gsl_sf_result(0.0_c_double, 0.0_c_double)
+      if (kind == mathieu_kind_a) then
+         status = gsl_sf_mathieu_a_e(int(n, c_int), real(q, c_double), result)
+      else
+         status = gsl_sf_mathieu_b_e(int(n, c_int), real(q, c_double), result)
+      end if
+      if (status /= gsl_success .or. .not. (ieee_is_finite(result%val) .and. ieee_is_finite(result%err))) then
+         write (buf, '(a,a,a,i0,a,es12.5,a,i0)') "GSL failed to compute Mathieu ", trim(kind_letter(kind)), "_", &
+            n, "(q) at q = ", q, ", status ", status
+         call set_error(error, err_integration, trim(buf))
+         return
+      end if
+      value = result%val
+   end subroutine mathieu_characteristic
+
+   pure function kind_letter(kind) result(letter)
+      integer, intent(in) :: kind
+      character(len=1) :: letter
+      letter = merge("a", "b", kind == mathieu_kind_a)
+   end function kind_letter
+
+   !> Right-hand side of the χ equation for the 4-vector y = (u, u', v, v') of two
+   !> solutions, in GSL's calling convention. Non-finite values stop the driver.
+   function hill_rhs(t, y, dydt, params) bind(C) result(status)
+      real(c_double), value :: t
+      real(c_double), intent(in) :: y(4)
+      real(c_double), intent(out) :: dydt(4)
+      type(c_ptr), value :: params
+      integer(c_int) :: status
+      type(rhs_context_t), pointer :: context
+      real(wp) :: q
+      call c_f_pointer(params, context)
+      context%n_evaluations = context%n_evaluations + 1
+      context%peak(1) = max(context%peak(1), abs(y(1)), abs(y(2)))
+      context%peak(2) = max(context%peak(2), abs(y(3)), abs(y(4)))
+      q = hill_coefficient(context%model, t)
+      dydt(1) = y(2)
+      dydt(2) = -q*y(1)
+      dydt(3) = y(4)
+      dydt(4) = -q*y(3)
+      status = gsl_success
+      if (.not. all(ieee_is_finite(dydt))) status = gsl_ebadfunc
+   end function hill_rhs
+
+   !> Integrate the two solutions y = (u, u', v, v') of the χ equation from τ = 0,
+   !> y(0) = (1, 0, 0, 1), to `t_end` with GSL's control epsilon `eps`,
+   !> renormalizing each solution between chunks short enough that it cannot
+   !> overflow. On return the solutions are exp(log_scale(j)) times the columns of y.
+   subroutine integrate_pair(model, t_end, eps, y, log_scale, log_peak, stats, error)
+      type(hill_model_t), intent(in) :: model
+      real(wp), intent(in) :: t_end          !! end of the integration, > 0
+      real(wp), intent(in) :: eps            !! epsabs = epsrel of GSL's y-control
+      real(wp), intent(out) :: y(2, 2)       !! (scaled) u, u' and v, v' at t_end
+      real(wp), intent(out) :: log_scale(2)  !! ln of the scale factor of each column
+      real(wp), intent(out) :: log_peak(2)   !! ln of the largest |component| of each solution on the way
+      type(work_stats_t), intent(out) :: stats
+      type(error_t), allocatable, intent(out) :: error
+      type(rhs_context_t), target :: context
+      type(gsl_odeiv2_system), target :: system
+      type(gsl_odeiv2_driver_view), pointer :: driver_view
+      type(gsl_odeiv2_evolve_view), pointer :: evolve_view
+      type(c_ptr) :: driver
+      type(c_funptr) :: previous
+      real(c_double) :: state(4), t
+      real(wp) :: growth_rate, scale
+      integer(c_int) :: status
+      integer :: n_chunks, chunk, j
+      character(len=200) :: buf
+
+      y = reshape([1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], [2, 2])
+      log_scale = 0.0_wp
+      log_peak = 0.0_wp
+      stats = work_stats_t()
+      previous = gsl_set_error_handler_off()
+
+      ! With c² = max(1, max|q|) the energy c²w² + w'² of any solution grows at most
+      ! like exp(2c τ), and q is monotone in cos πτ, so its extremes on [0, 1] are at
+      ! τ = 0 and 1: chunks of length ≤ chunk_log_growth/c keep u, v finite.
+      growth_rate = sqrt(max(1.0_wp, abs(hill_coefficient(model, 0.0_wp)), abs(hill_coefficient(model, 1.0_wp))))
+      n_chunks = max(1, ceiling(growth_rate*t_end/chunk_log_growth))
+
+      context%model = model
+      context%n_evaluations = 0
+      context%peak = 0.0_wp
+      system = gsl_odeiv2_system(c_funloc(hill_rhs), c_null_funptr, 4_c_size_t, c_loc(context))
+      driver = gsl_odeiv2_driver_alloc_y_new(system, gsl_odeiv2_step_rk8pd, &
+                                             real(0.1_wp/growth_rate, c_double), real(eps, c_double), real(eps, c_double))
+      if (.not. c_associated(driver)) then
+         call set_error(error, err_integration, "GSL could not allocate the odeiv2 driver")
+         return
+      end if
+      status = gsl_odeiv2_driver_set_nmax(driver, max_steps)
+
+      state = [1.0_c_double, 0.0_c_double, 0.0_c_double, 1.0_c_double]
+      t = 0.0_c_double
+      do chunk = 1, n_chunks
+         status = gsl_odeiv2_driver_apply(driver, t, real(t_end*chunk/n_chunks, c_double), state)
+         if (status == gsl_success .and. .not. all(ieee_is_finite(state))) status = gsl_ebadfunc
+         if (status /= gsl_success) exit
+         do j = 1, 2
+            if (context%peak(j) > 0.0_wp) log_peak(j) = max(log_peak(j), log(context%peak(j)) + log_scale(j))
+            context%peak(j) = 0.0_wp
+            scale = max(abs(state(2*j - 1)), abs(state(2*j)))
+            if (n_chunks > 1 .and. scale > 0.0_wp) then
+               state(2*j - 1:2*j) = state(2*j - 1:2*j)/scale
+               log_scale(j) = log_scale(j) + log(scale)
+            end if
+         end do
+      end do
+
+      call c_f_pointer(driver, driver_view)
+      call c_f_pointer(driver_view%evolve, evolve_view)
+      stats%n_steps = int(evolve_view%count - evolve_view%failed_steps, int64)
+      stats%n_rejected = int(evolve_view%failed_steps, int64)
+      stats%n_evaluations = context%n_evaluations
+      call gsl_odeiv2_driver_free(driver)
+
+      if (status /= gsl_success) then
+         write (buf, '(a,i0,a,es12.5,a,es12.5,a,es12.5,a,es9.2,a)') "GSL rk8pd failed with status ", status, &
+            " at tau = ", t, " (alpha = ", model%alpha, ", beta = ", model%beta, ", eps = ", eps, ")"
+         call set_error(error, err_integration, trim(buf))
+         return
+      end if
+      y = reshape(real(state, wp), [2, 2])
+   end subroutine integrate_pair
+
+   !> Monodromy from the half period with GSL epsilon `eps`; `log_condition` is
+   !> ln κ, κ = max|u-solution|·max|v-solution| over [0, 1] / max(1, |S|).
+   subroutine half_period_monodromy(model, eps, m, log_condition, stats, error)
+      type(hill_model_t), intent(in) :: model
+      real(wp), intent(in) :: eps
+      type(scaled_matrix_t), intent(out) :: m
+      real(wp), intent(out) :: log_condition
+      type(work_stats_t), intent(out) :: stats
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: y(2, 2), log_scale(2), log_peak(2), log_entry(2, 2), top
+      real(wp) :: u, du, v, dv
+      type(trace_t) :: tr
+      log_condition = 0.0_wp
+      call integrate_pair(model, 1.0_wp, eps, y, log_scale, log_peak, stats, error)
+      if (allocated(error)) return
+      u = y(1, 1); du = y(2, 1); v = y(1, 2); dv = y(2, 2)
+      ! the diagonal carries the scales of u·v, the corners those of v·v and u·u
+      m%m(1, 1) = u*dv + du*v
+      m%m(2, 2) = m%m(1, 1)
+      m%m(1, 2) = 2.0_wp*v*dv
+      m%m(2, 1) = 2.0_wp*u*du
+      log_entry(1, 1) = log_scale(1) + log_scale(2)
+      log_entry(2, 2) = log_entry(1, 1)
+      log_entry(1, 2) = 2.0_wp*log_scale(2)
+      log_entry(2, 1) = 2.0_wp*log_scale(1)
+      top = maxval(log_entry)
+      m%m = m%m*exp(max(log_entry - top, -log_huge))
+      m%log_scale = top
+      call normalize_scaled(m)
+      tr = trace_of(m)
+      log_condition = sum(log_peak) - max(0.0_wp, tr%log_abs)
+   end subroutine half_period_monodromy
+
+   !> One-period monodromy of the χ equation from the half period: with u, v the
+   !> even and odd solutions at τ = 1 (u v' − u' v = 1),
+   !> M = [[u v' + u' v, 2 v v'], [2 u u', u v' + u' v]], S = 2 (u v' + u' v).
+   !>
+   !> `tolerance` is the target error on S relative to max(1, |S|). GSL's control
+   !> epsilon is first tolerance·gsl_tolerance_factor; if the solutions grow inside
+   !> the period far beyond S (condition κ > gsl_rerun_condition) the integration
+   !> is repeated with the epsilon divided by κ, and `stats` counts both passes.
+   subroutine monodromy_gsl(model, tolerance, m, stats, error)
+      type(hill_model_t), intent(in) :: model
+      real(wp), intent(in) :: tolerance         !! target error on S, scaled by max(1, |S|)
+      type(scaled_matrix_t), intent(out) :: m   !! monodromy over [0, 2]
+      type(work_stats_t), intent(out) :: stats  !! rk8pd steps, rejections, Q evaluations
+      type(error_t), allocatable, intent(out) :: error
+      type(work_stats_t) :: second
+      real(wp) :: log_condition
+      stats = work_stats_t()
+      call check_model(model, error)
+      if (allocated(error)) return
+      call check_tolerance(tolerance, error)
+      if (allocated(error)) return
+      call half_period_monodromy(model, gsl_epsilon(tolerance, 0.0_wp), m, log_condition, stats, error)
+      if (allocated(error)) return
+      if (log_condition > log(gsl_rerun_condition) .and. gsl_epsilon(tolerance, 0.0_wp) > smallest_gsl_epsilon) then
+         call half_period_monodromy(model, gsl_epsilon(tolerance, log_condition), m, log_condition, second, error)
+         call add_work(stats, second)
+      end if
+   end subroutine monodromy_gsl
+
+   !> Trace S of `monodromy_gsl`.
+   subroutine trace_gsl(model, tolerance, tr, stats, error)
+      type(hill_model_t), intent(in) :: model
+      real(wp), intent(in) :: tolerance         !! target error on S, scaled by max(1, |S|)
+      type(trace_t), intent(out) :: tr          !! S
+      type(work_stats_t), intent(out) :: stats  !! rk8pd steps, rejections, Q evaluations
+      type(error_t), allocatable, intent(out) :: error
+      type(scaled_matrix_t) :: m
+      call monodromy_gsl(model, tolerance, m, stats, error)
+      if (allocated(error)) return
+      tr = trace_of(m)
+   end subroutine trace_gsl
+
+   !> Monodromy by direct rk8pd integration over the whole period [0, 2], without
+   !> the symmetry (GSL epsilon tolerance·gsl_tolerance_factor, no rerun): a check
+   !> of `monodromy_gsl`, at twice the work.
+   subroutine monodromy_gsl_full_period(model, tolerance, m, stats, error)
+      type(hill_model_t), intent(in) :: model
+      real(wp), intent(in) :: tolerance         !! sets GSL's control epsilon
+      type(scaled_matrix_t), intent(out) :: m   !! monodromy over [0, 2]
+      type(work_stats_t), intent(out) :: stats  !! rk8pd steps, rejections, Q evaluations
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: y(2, 2), log_scale(2), log_peak(2), top
+      stats = work_stats_t()
+      call check_model(model, error)
+      if (allocated(error)) return
+      call check_tolerance(tolerance, error)
+      if (allocated(error)) return
+      call integrate_pair(model, 2.0_wp, gsl_epsilon(tolerance, 0.0_wp), y, log_scale, log_peak, stats, error)
+      if (allocated(error)) return
+      top = maxval(log_scale)
+      m%m(:, 1) = y(:, 1)*exp(max(log_scale(1) - top, -log_huge))
+      m%m(:, 2) = y(:, 2)*exp(max(log_scale(2) - top, -log_huge))
+      m%log_scale = top
+      call normalize_scaled(m)
+   end subroutine monodromy_gsl_full_period
+
+   !> GSL control epsilon for a target tolerance and a condition ln κ, floored.
+   pure real(wp) function gsl_epsilon(tolerance, log_condition) result(eps)
+      real(wp), intent(in) :: tolerance, log_condition
+      eps = max(smallest_gsl_epsilon, tolerance*gsl_tolerance_factor*exp(-min(log_condition, 100.0_wp)))
+   end function gsl_epsilon
+
+   subroutine check_tolerance(tolerance, error)
+      real(wp), intent(in) :: tolerance
+      type(error_t), allocatable, intent(out) :: error
+      character(len=80) :: buf
+      ! ieee_is_finite first: an ordered comparison with NaN raises 'invalid'
+      if (.not. ieee_is_finite(tolerance)) then
+         call set_error(error, err_invalid_parameter, "GSL monodromy tolerance must be finite")
+      else if (.not. (tolerance > 0.0_wp .and. tolerance < 1.0_wp)) then
+         write (buf, '(a,es12.5)') "GSL monodromy tolerance must be in (0, 1), got ", tolerance
+         call set_error(error, err_invalid_parameter, trim(buf))
+      end if
+   end subroutine check_tolerance
+end module hillstab_gsl
