@@ -17,6 +17,8 @@ module hillstab
    use hillstab_formulas
    use hillstab_floquet
    use hillstab_monodromy
+   use hillstab_rk
+   use hillstab_monodromy_rk
    implicit none
    public
 end module hillstab

@@ -12,6 +12,7 @@ module hillstab_monodromy
    use hillstab_transfer, only: scaled_matrix_t, scaled_identity, multiply_transfer, multiply_matrix, &
       trace_t, trace_of
    use hillstab_formulas, only: trace_damped_paper, trace_mathieu_two_segment
+   use hillstab_monodromy_rk, only: trace_rk
    implicit none
    private
    public :: method_t, method_auto, method_formula, method_segments, method_magnus4, method_magnus6, &
@@ -127,6 +128,8 @@ contains
             return
          end if
          tr = trace_segmented(model, method%n_segments, method%sampling)
+      case (method_rk)
+         call trace_rk(model, method%tolerance, tr, error)
       case default
          call set_error(error, err_invalid_parameter, "method '"//method_name(method%kind)// &
             "' is not available in this build")
