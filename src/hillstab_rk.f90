@@ -317,7 +317,8 @@ contains
    end function rk_method_order
 
    !> The continuous extension of `step` at time t (t in [t_old, t]; mild
-   !> extrapolation is allowed but not accurate). Hairer's CONTD5/CONTD8 form:
+   !> extrapolation is allowed but not accurate). `step` must come from rk_integrate
+   !> (its arrays are allocated there). Hairer's CONTD5/CONTD8 form:
    !> y = d0 + s(d1 + s'(d2 + s(d3 + s'(d4 + s(d5 + s'(d6 + s d7)))))), s = (t − t_old)/h, s' = 1 − s.
    pure function rk_dense_value(step, t) result(y)
       type(rk_step_t), intent(in) :: step  !! an accepted step with its dense coefficients
@@ -350,7 +351,9 @@ contains
       real(wp), intent(in) :: t_end            !! end of the interval (t_end < t integrates backwards)
       real(wp), intent(inout) :: y(:)          !! initial state in, final state out
       type(rk_options_t), intent(in) :: options  !! method, tolerances, step control
-      type(work_stats_t), intent(out), optional :: stats  !! accepted/rejected steps, f-evaluations
+      type(work_stats_t), intent(out), optional :: stats  !! accepted steps, rejected steps (including
+                                                          !! those of the first step, which Hairer's
+                                                          !! codes do not count), f-evaluations
       type(error_t), allocatable, intent(out) :: error    !! allocated on failure
       real(wp), intent(in), optional :: t_out(:)  !! output times, monotone from t towards t_end
       real(wp), intent(out), optional :: y_out(:, :)  !! (size(y), size(t_out)) dense output there
@@ -739,7 +742,7 @@ contains
                        + p8_b10*k(:, 10) + p8_b11*k(:, 11) + p8_b12*k(:, 12)
             y_new = y0 + hh*k(:, 13)
             if (with_error) then
-               ! Hairer's combined estimate: err5²/sqrt(err5² + 0.01·err3²), eq. (II.10.?) of dop853.f
+               ! Hairer's combined estimate err5²/sqrt(err5² + 0.01·err3²) (dop853.f, ERROR ESTIMATION)
                sk = options%atol + options%rtol*max(abs(y0), abs(y_new))
                err3 = sum(((k(:, 13) - p8_bhh1*k(:, 1) - p8_bhh2*k(:, 9) - p8_bhh3*k(:, 12))/sk)**2)
                err5 = sum(((p8_er1*k(:, 1) + p8_er6*k(:, 6) + p8_er7*k(:, 7) + p8_er8*k(:, 8) &
