@@ -18,6 +18,8 @@ module hillstab
    use hillstab_floquet
    use hillstab_monodromy
    use hillstab_gsl
+   use hillstab_rk
+   use hillstab_monodromy_rk
    implicit none
    public
 end module hillstab

@@ -14,6 +14,7 @@ module hillstab_monodromy
    use hillstab_formulas, only: trace_damped_paper, trace_mathieu_two_segment
    use hillstab_stats, only: work_stats_t
    use hillstab_gsl, only: trace_gsl
+   use hillstab_monodromy_rk, only: trace_rk
    implicit none
    private
    public :: method_t, method_auto, method_formula, method_segments, method_magnus4, method_magnus6, &
@@ -135,6 +136,8 @@ contains
          work = work_stats_t(method%n_segments, 0, method%n_segments)
       case (method_gsl)
          call trace_gsl(model, method%tolerance, tr, work, error)
+      case (method_rk)
+         call trace_rk(model, method%tolerance, tr, error, work)
       case default
          call set_error(error, err_invalid_parameter, "method '"//method_name(method%kind)// &
             "' is not available in this build")

@@ -1,0 +1,822 @@
+!> Adaptive embedded Runge–Kutta integrators for first-order systems y' = f(t, y):
+!> Dormand–Prince 5(4) (DOPRI5) and Dormand–Prince 8(5,3) (DOP853), with Hairer's
+!> error norm, PI step-size control, initial step guess and continuous (dense) output,
+!> plus a fixed-step mode without error control for convergence studies.
+!>
+!> The step control, error norms and dense output follow E. Hairer, S. P. Nørsett,
+!> G. Wanner, *Solving Ordinary Differential Equations I*, 2nd ed., Springer 1993,
+!> §II.4–II.6 and §IV.2, as implemented in Hairer's codes dopri5.f and dop853.f
+!> (versions of 1996, www.unige.ch/~hairer/software.html). The Butcher coefficients are
+!> copied from those codes (Dormand & Prince 1980 for DOPRI5 with Shampine's 1986 dense
+!> output; Prince & Dormand 1981 / Hairer et al. for DOP853 and its 7th-order extension).
+!>
+!> The right-hand side is any procedure with the `rk_rhs` interface; parameters are
+!> carried by internal procedures of the caller (the module has no state, so
+!> independent integrations may run in parallel threads).
+!>
+!>```fortran
+!> type(rk_options_t) :: options
+!> type(error_t), allocatable :: error
+!> real(wp) :: t, y(2), t_out(3), y_out(2, 3)
+!> t = 0.0_wp; y = [1.0_wp, 0.0_wp]; t_out = [0.5_wp, 1.0_wp, 2.0_wp]
+!> options = rk_options_t(method=rk_dop853, rtol=1.0e-10_wp, atol=1.0e-10_wp)
+!> call rk_integrate(oscillator, t, 2.0_wp, y, options, error=error, t_out=t_out, y_out=y_out)
+!>contains
+!> subroutine oscillator(t, y, dydt)
+!>    real(wp), intent(in) :: t, y(:)
+!>    real(wp), intent(out) :: dydt(:)
+!>    dydt = [y(2), -y(1)]
+!> end subroutine oscillator
+!>```
+module hillstab_rk
+   use hillstab_kinds, only: wp, int64
+   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
+   use hillstab_stats, only: work_stats_t
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   implicit none
+   private
+   public :: rk_rhs, rk_observer, rk_options_t, rk_step_t, rk_integrate, rk_dense_value
+   public :: rk_dopri5, rk_dop853, rk_method_name, rk_method_order
+
+   !> Dormand–Prince 5(4), 7 stages (FSAL: 6 evaluations per step), 4th-order dense output.
+   integer, parameter :: rk_dopri5 = 1
+   !> Dormand–Prince 8(5,3), 12 stages (12 evaluations per accepted step), 7th-order dense
+   !> output at 3 more evaluations per step.
+   integer, parameter :: rk_dop853 = 2
+
+   abstract interface
+      !> Right-hand side dydt = f(t, y) of the system.
+      subroutine rk_rhs(t, y, dydt)
+         import :: wp
+         real(wp), intent(in) :: t        !! independent variable
+         real(wp), intent(in) :: y(:)     !! state
+         real(wp), intent(out) :: dydt(:) !! derivative, same size as y
+      end subroutine rk_rhs
+   end interface
+
+   !> Options of `rk_integrate`. Zero (or negative) values of the step-control
+   !> parameters select the defaults of Hairer's codes for the chosen method.
+   type :: rk_options_t
+      integer :: method = rk_dop853       !! rk_dopri5 or rk_dop853
+      real(wp) :: rtol = 1.0e-10_wp       !! relative tolerance (≥ 0)
+      real(wp) :: atol = 1.0e-10_wp       !! absolute tolerance (> 0)
+      real(wp) :: h_initial = 0.0_wp      !! first step; 0 → Hairer's initial guess (hinit)
+      real(wp) :: h_max = 0.0_wp          !! largest |h|; 0 → |t_end − t|
+      integer :: max_steps = 100000       !! attempted steps (accepted + rejected) before failing
+      integer :: fixed_steps = 0          !! > 0: this many equal steps, no error control
+      real(wp) :: safety = 0.9_wp         !! safety factor of the step prediction
+      real(wp) :: beta = -1.0_wp          !! PI (Lund) stabilisation; < 0 → 0.04 (DOPRI5), 0 (DOP853)
+      real(wp) :: fac_min = 0.0_wp        !! smallest h_new/h; 0 → 0.2 (DOPRI5), 0.333 (DOP853)
+      real(wp) :: fac_max = 0.0_wp        !! largest h_new/h; 0 → 10 (DOPRI5), 6 (DOP853)
+      logical :: dense_output = .false.   !! DOP853: build the 7th-order interpolant every step
+                                          !! (3 more evaluations); implied by `t_out`
+   end type rk_options_t
+
+   !> One accepted step as handed to an observer: the interval [t_old, t], the state at
+   !> t and the coefficients of the continuous extension on that interval. The
+   !> interpolant is of order `dense_order`: 4 (DOPRI5), 7 (DOP853 with dense output),
+   !> or 3 (DOP853 without: the cubic Hermite interpolant from the end values and slopes).
+   type :: rk_step_t
+      integer :: method = rk_dop853
+      integer(int64) :: index = 0        !! number of this accepted step (0: the initial point)
+      real(wp) :: t_old = 0.0_wp         !! start of the step
+      real(wp) :: t = 0.0_wp             !! end of the step
+      real(wp) :: h = 0.0_wp             !! t − t_old
+      integer :: dense_order = 0         !! order of the continuous extension (0: none yet)
+      real(wp), allocatable :: y(:)      !! state at t
+      real(wp), allocatable :: dense(:, :)  !! (n, 0:7) interpolation coefficients
+   end type rk_step_t
+
+   abstract interface
+      !> Called after the initial point and after every accepted step; set `stop` to
+      !> end the integration there (rk_integrate then returns t = step%t, no error).
+      subroutine rk_observer(step, stop)
+         import :: rk_step_t
+         type(rk_step_t), intent(in) :: step  !! the step just accepted
+         logical, intent(inout) :: stop       !! set .true. to stop after this step
+      end subroutine rk_observer
+   end interface
+
+   ! ---------------------------------------------------------------------------------
+   ! DOPRI5: Dormand & Prince (1980), coefficients as in Hairer's dopri5.f (CDOPRI);
+   ! e = b − b̂ of the embedded 4th-order formula; d = Shampine's (1986) dense output.
+   ! ---------------------------------------------------------------------------------
+   real(wp), parameter :: p5_c2 = 0.2_wp, p5_c3 = 0.3_wp, p5_c4 = 0.8_wp, p5_c5 = 8.0_wp/9.0_wp
+   real(wp), parameter :: p5_a21 = 0.2_wp
+   real(wp), parameter :: p5_a31 = 3.0_wp/40.0_wp, p5_a32 = 9.0_wp/40.0_wp
+   real(wp), parameter :: p5_a41 = 44.0_wp/45.0_wp, p5_a42 = -56.0_wp/15.0_wp, p5_a43 = 32.0_wp/9.0_wp
+   real(wp), parameter :: p5_a51 = 19372.0_wp/6561.0_wp, p5_a52 = -25360.0_wp/2187.0_wp, &
+      p5_a53 = 64448.0_wp/6561.0_wp, p5_a54 = -212.0_wp/729.0_wp
+   real(wp), parameter :: p5_a61 = 9017.0_wp/3168.0_wp, p5_a62 = -355.0_wp/33.0_wp, &
+      p5_a63 = 46732.0_wp/5247.0_wp, p5_a64 = 49.0_wp/176.0_wp, p5_a65 = -5103.0_wp/18656.0_wp
+   real(wp), parameter :: p5_a71 = 35.0_wp/384.0_wp, p5_a73 = 500.0_wp/1113.0_wp, &
+      p5_a74 = 125.0_wp/192.0_wp, p5_a75 = -2187.0_wp/6784.0_wp, p5_a76 = 11.0_wp/84.0_wp
+   real(wp), parameter :: p5_e1 = 71.0_wp/57600.0_wp, p5_e3 = -71.0_wp/16695.0_wp, &
+      p5_e4 = 71.0_wp/1920.0_wp, p5_e5 = -17253.0_wp/339200.0_wp, p5_e6 = 22.0_wp/525.0_wp, &
+      p5_e7 = -1.0_wp/40.0_wp
+   real(wp), parameter :: p5_d1 = -12715105075.0_wp/11282082432.0_wp, &
+      p5_d3 = 87487479700.0_wp/32700410799.0_wp, p5_d4 = -10690763975.0_wp/1880347072.0_wp, &
+      p5_d5 = 701980252875.0_wp/199316789632.0_wp, p5_d6 = -1453857185.0_wp/822651844.0_wp, &
+      p5_d7 = 69997945.0_wp/29380423.0_wp
+
+   ! ---------------------------------------------------------------------------------
+   ! DOP853: coefficients as in Hairer's dop853.f (DP86CO, version of 25 April 1996).
+   ! Stages 1–12 make the step, stage 13 is f at the new point (FSAL), stages 14–16
+   ! serve only the 7th-order dense output. bhh: 3rd-order embedded weights; er: b − b̂₅.
+   ! ---------------------------------------------------------------------------------
+   real(wp), parameter :: p8_c2 = 0.526001519587677318785587544488e-01_wp
+   real(wp), parameter :: p8_c3 = 0.789002279381515978178381316732e-01_wp
+   real(wp), parameter :: p8_c4 = 0.118350341907227396726757197510e+00_wp
+   real(wp), parameter :: p8_c5 = 0.281649658092772603273242802490e+00_wp
+   real(wp), parameter :: p8_c6 = 0.333333333333333333333333333333e+00_wp
+   real(wp), parameter :: p8_c7 = 0.25e+00_wp
+   real(wp), parameter :: p8_c8 = 0.307692307692307692307692307692e+00_wp
+   real(wp), parameter :: p8_c9 = 0.651282051282051282051282051282e+00_wp
+   real(wp), parameter :: p8_c10 = 0.6e+00_wp
+   real(wp), parameter :: p8_c11 = 0.857142857142857142857142857142e+00_wp
+   real(wp), parameter :: p8_c14 = 0.1e+00_wp
+   real(wp), parameter :: p8_c15 = 0.2e+00_wp
+   real(wp), parameter :: p8_c16 = 0.777777777777777777777777777778e+00_wp
+
+   real(wp), parameter :: p8_b1 = 5.42937341165687622380535766363e-2_wp
+   real(wp), parameter :: p8_b6 = 4.45031289275240888144113950566e0_wp
+   real(wp), parameter :: p8_b7 = 1.89151789931450038304281599044e0_wp
+   real(wp), parameter :: p8_b8 = -5.8012039600105847814672114227e0_wp
+   real(wp), parameter :: p8_b9 = 3.1116436695781989440891606237e-1_wp
+   real(wp), parameter :: p8_b10 = -1.52160949662516078556178806805e-1_wp
+   real(wp), parameter :: p8_b11 = 2.01365400804030348374776537501e-1_wp
+   real(wp), parameter :: p8_b12 = 4.47106157277725905176885569043e-2_wp
+
+   real(wp), parameter :: p8_bhh1 = 0.244094488188976377952755905512e+00_wp
+   real(wp), parameter :: p8_bhh2 = 0.733846688281611857341361741547e+00_wp
+   real(wp), parameter :: p8_bhh3 = 0.220588235294117647058823529412e-01_wp
+
+   real(wp), parameter :: p8_er1 = 0.1312004499419488073250102996e-01_wp
+   real(wp), parameter :: p8_er6 = -0.1225156446376204440720569753e+01_wp
+   real(wp), parameter :: p8_er7 = -0.4957589496572501915214079952e+00_wp
+   real(wp), parameter :: p8_er8 = 0.1664377182454986536961530415e+01_wp
+   real(wp), parameter :: p8_er9 = -0.3503288487499736816886487290e+00_wp
+   real(wp), parameter :: p8_er10 = 0.3341791187130174790297318841e+00_wp
+   real(wp), parameter :: p8_er11 = 0.8192320648511571246570742613e-01_wp
+   real(wp), parameter :: p8_er12 = -0.2235530786388629525884427845e-01_wp
+
+   real(wp), parameter :: p8_a21 = 5.26001519587677318785587544488e-2_wp
+   real(wp), parameter :: p8_a31 = 1.97250569845378994544595329183e-2_wp
+   real(wp), parameter :: p8_a32 = 5.91751709536136983633785987549e-2_wp
+   real(wp), parameter :: p8_a41 = 2.95875854768068491816892993775e-2_wp
+   real(wp), parameter :: p8_a43 = 8.87627564304205475450678981324e-2_wp
+   real(wp), parameter :: p8_a51 = 2.41365134159266685502369798665e-1_wp
+   real(wp), parameter :: p8_a53 = -8.84549479328286085344864962717e-1_wp
+   real(wp), parameter :: p8_a54 = 9.24834003261792003115737966543e-1_wp
+   real(wp), parameter :: p8_a61 = 3.7037037037037037037037037037e-2_wp
+   real(wp), parameter :: p8_a64 = 1.70828608729473871279604482173e-1_wp
+   real(wp), parameter :: p8_a65 = 1.25467687566822425016691814123e-1_wp
+   real(wp), parameter :: p8_a71 = 3.7109375e-2_wp
+   real(wp), parameter :: p8_a74 = 1.70252211019544039314978060272e-1_wp
+   real(wp), parameter :: p8_a75 = 6.02165389804559606850219397283e-2_wp
+   real(wp), parameter :: p8_a76 = -1.7578125e-2_wp
+   real(wp), parameter :: p8_a81 = 3.70920001185047927108779319836e-2_wp
+   real(wp), parameter :: p8_a84 = 1.70383925712239993810214054705e-1_wp
+   real(wp), parameter :: p8_a85 = 1.07262030446373284651809199168e-1_wp
+   real(wp), parameter :: p8_a86 = -1.53194377486244017527936158236e-2_wp
+   real(wp), parameter :: p8_a87 = 8.27378916381402288758473766002e-3_wp
+   real(wp), parameter :: p8_a91 = 6.24110958716075717114429577812e-1_wp
+   real(wp), parameter :: p8_a94 = -3.36089262944694129406857109825e0_wp
+   real(wp), parameter :: p8_a95 = -8.68219346841726006818189891453e-1_wp
+   real(wp), parameter :: p8_a96 = 2.75920996994467083049415600797e1_wp
+   real(wp), parameter :: p8_a97 = 2.01540675504778934086186788979e1_wp
+   real(wp), parameter :: p8_a98 = -4.34898841810699588477366255144e1_wp
+   real(wp), parameter :: p8_a101 = 4.77662536438264365890433908527e-1_wp
+   real(wp), parameter :: p8_a104 = -2.48811461997166764192642586468e0_wp
+   real(wp), parameter :: p8_a105 = -5.90290826836842996371446475743e-1_wp
+   real(wp), parameter :: p8_a106 = 2.12300514481811942347288949897e1_wp
+   real(wp), parameter :: p8_a107 = 1.52792336328824235832596922938e1_wp
+   real(wp), parameter :: p8_a108 = -3.32882109689848629194453265587e1_wp
+   real(wp), parameter :: p8_a109 = -2.03312017085086261358222928593e-2_wp
+   real(wp), parameter :: p8_a111 = -9.3714243008598732571704021658e-1_wp
+   real(wp), parameter :: p8_a114 = 5.18637242884406370830023853209e0_wp
+   real(wp), parameter :: p8_a115 = 1.09143734899672957818500254654e0_wp
+   real(wp), parameter :: p8_a116 = -8.14978701074692612513997267357e0_wp
+   real(wp), parameter :: p8_a117 = -1.85200656599969598641566180701e1_wp
+   real(wp), parameter :: p8_a118 = 2.27394870993505042818970056734e1_wp
+   real(wp), parameter :: p8_a119 = 2.49360555267965238987089396762e0_wp
+   real(wp), parameter :: p8_a1110 = -3.0467644718982195003823669022e0_wp
+   real(wp), parameter :: p8_a121 = 2.27331014751653820792359768449e0_wp
+   real(wp), parameter :: p8_a124 = -1.05344954667372501984066689879e1_wp
+   real(wp), parameter :: p8_a125 = -2.00087205822486249909675718444e0_wp
+   real(wp), parameter :: p8_a126 = -1.79589318631187989172765950534e1_wp
+   real(wp), parameter :: p8_a127 = 2.79488845294199600508499808837e1_wp
+   real(wp), parameter :: p8_a128 = -2.85899827713502369474065508674e0_wp
+   real(wp), parameter :: p8_a129 = -8.87285693353062954433549289258e0_wp
+   real(wp), parameter :: p8_a1210 = 1.23605671757943030647266201528e1_wp
+   real(wp), parameter :: p8_a1211 = 6.43392746015763530355970484046e-1_wp
+   real(wp), parameter :: p8_a141 = 5.61675022830479523392909219681e-2_wp
+   real(wp), parameter :: p8_a147 = 2.53500210216624811088794765333e-1_wp
+   real(wp), parameter :: p8_a148 = -2.46239037470802489917441475441e-1_wp
+   real(wp), parameter :: p8_a149 = -1.24191423263816360469010140626e-1_wp
+   real(wp), parameter :: p8_a1410 = 1.5329179827876569731206322685e-1_wp
+   real(wp), parameter :: p8_a1411 = 8.20105229563468988491666602057e-3_wp
+   real(wp), parameter :: p8_a1412 = 7.56789766054569976138603589584e-3_wp
+   real(wp), parameter :: p8_a1413 = -8.298e-3_wp
+   real(wp), parameter :: p8_a151 = 3.18346481635021405060768473261e-2_wp
+   real(wp), parameter :: p8_a156 = 2.83009096723667755288322961402e-2_wp
+   real(wp), parameter :: p8_a157 = 5.35419883074385676223797384372e-2_wp
+   real(wp), parameter :: p8_a158 = -5.49237485713909884646569340306e-2_wp
+   real(wp), parameter :: p8_a1511 = -1.08347328697249322858509316994e-4_wp
+   real(wp), parameter :: p8_a1512 = 3.82571090835658412954920192323e-4_wp
+   real(wp), parameter :: p8_a1513 = -3.40465008687404560802977114492e-4_wp
+   real(wp), parameter :: p8_a1514 = 1.41312443674632500278074618366e-1_wp
+   real(wp), parameter :: p8_a161 = -4.28896301583791923408573538692e-1_wp
+   real(wp), parameter :: p8_a166 = -4.69762141536116384314449447206e0_wp
+   real(wp), parameter :: p8_a167 = 7.68342119606259904184240953878e0_wp
+   real(wp), parameter :: p8_a168 = 4.06898981839711007970213554331e0_wp
+   real(wp), parameter :: p8_a169 = 3.56727187455281109270669543021e-1_wp
+   real(wp), parameter :: p8_a1613 = -1.39902416515901462129418009734e-3_wp
+   real(wp), parameter :: p8_a1614 = 2.9475147891527723389556272149e0_wp
+   real(wp), parameter :: p8_a1615 = -9.15095847217987001081870187138e0_wp
+
+   real(wp), parameter :: p8_d41 = -0.84289382761090128651353491142e+01_wp
+   real(wp), parameter :: p8_d46 = 0.56671495351937776962531783590e+00_wp
+   real(wp), parameter :: p8_d47 = -0.30689499459498916912797304727e+01_wp
+   real(wp), parameter :: p8_d48 = 0.23846676565120698287728149680e+01_wp
+   real(wp), parameter :: p8_d49 = 0.21170345824450282767155149946e+01_wp
+   real(wp), parameter :: p8_d410 = -0.87139158377797299206789907490e+00_wp
+   real(wp), parameter :: p8_d411 = 0.22404374302607882758541771650e+01_wp
+   real(wp), parameter :: p8_d412 = 0.63157877876946881815570249290e+00_wp
+   real(wp), parameter :: p8_d413 = -0.88990336451333310820698117400e-01_wp
+   real(wp), parameter :: p8_d414 = 0.18148505520854727256656404962e+02_wp
+   real(wp), parameter :: p8_d415 = -0.91946323924783554000451984436e+01_wp
+   real(wp), parameter :: p8_d416 = -0.44360363875948939664310572000e+01_wp
+   real(wp), parameter :: p8_d51 = 0.10427508642579134603413151009e+02_wp
+   real(wp), parameter :: p8_d56 = 0.24228349177525818288430175319e+03_wp
+   real(wp), parameter :: p8_d57 = 0.16520045171727028198505394887e+03_wp
+   real(wp), parameter :: p8_d58 = -0.37454675472269020279518312152e+03_wp
+   real(wp), parameter :: p8_d59 = -0.22113666853125306036270938578e+02_wp
+   real(wp), parameter :: p8_d510 = 0.77334326684722638389603898808e+01_wp
+   real(wp), parameter :: p8_d511 = -0.30674084731089398182061213626e+02_wp
+   real(wp), parameter :: p8_d512 = -0.93321305264302278729567221706e+01_wp
+   real(wp), parameter :: p8_d513 = 0.15697238121770843886131091075e+02_wp
+   real(wp), parameter :: p8_d514 = -0.31139403219565177677282850411e+02_wp
+   real(wp), parameter :: p8_d515 = -0.93529243588444783865713862664e+01_wp
+   real(wp), parameter :: p8_d516 = 0.35816841486394083752465898540e+02_wp
+   real(wp), parameter :: p8_d61 = 0.19985053242002433820987653617e+02_wp
+   real(wp), parameter :: p8_d66 = -0.38703730874935176555105901742e+03_wp
+   real(wp), parameter :: p8_d67 = -0.18917813819516756882830838328e+03_wp
+   real(wp), parameter :: p8_d68 = 0.52780815920542364900561016686e+03_wp
+   real(wp), parameter :: p8_d69 = -0.11573902539959630126141871134e+02_wp
+   real(wp), parameter :: p8_d610 = 0.68812326946963000169666922661e+01_wp
+   real(wp), parameter :: p8_d611 = -0.10006050966910838403183860980e+01_wp
+   real(wp), parameter :: p8_d612 = 0.77771377980534432092869265740e+00_wp
+   real(wp), parameter :: p8_d613 = -0.27782057523535084065932004339e+01_wp
+   real(wp), parameter :: p8_d614 = -0.60196695231264120758267380846e+02_wp
+   real(wp), parameter :: p8_d615 = 0.84320405506677161018159903784e+02_wp
+   real(wp), parameter :: p8_d616 = 0.11992291136182789328035130030e+02_wp
+   real(wp), parameter :: p8_d71 = -0.25693933462703749003312586129e+02_wp
+   real(wp), parameter :: p8_d76 = -0.15418974869023643374053993627e+03_wp
+   real(wp), parameter :: p8_d77 = -0.23152937917604549567536039109e+03_wp
+   real(wp), parameter :: p8_d78 = 0.35763911791061412378285349910e+03_wp
+   real(wp), parameter :: p8_d79 = 0.93405324183624310003907691704e+02_wp
+   real(wp), parameter :: p8_d710 = -0.37458323136451633156875139351e+02_wp
+   real(wp), parameter :: p8_d711 = 0.10409964950896230045147246184e+03_wp
+   real(wp), parameter :: p8_d712 = 0.29840293426660503123344363579e+02_wp
+   real(wp), parameter :: p8_d713 = -0.43533456590011143754432175058e+02_wp
+   real(wp), parameter :: p8_d714 = 0.96324553959188282948394950600e+02_wp
+   real(wp), parameter :: p8_d715 = -0.39177261675615439165231486172e+02_wp
+   real(wp), parameter :: p8_d716 = -0.14972683625798562581422125276e+03_wp
+
+   !> Unit round-off used in the step-size underflow test (Hairer's UROUND).
+   real(wp), parameter :: unit_roundoff = epsilon(1.0_wp)
+
+   !> Step-control parameters resolved from the options and the method defaults.
+   type :: controller_t
+      real(wp) :: safety, beta, fac_min, fac_max, exponent, h_max
+      real(wp) :: fac_old = 1.0e-4_wp   !! previous accepted error (Hairer's FACOLD)
+   end type controller_t
+
+contains
+
+   !> Name of a method constant.
+   pure function rk_method_name(method) result(name)
+      integer, intent(in) :: method
+      character(len=:), allocatable :: name
+      select case (method)
+      case (rk_dopri5); name = "dopri5"
+      case (rk_dop853); name = "dop853"
+      case default; name = "unknown"
+      end select
+   end function rk_method_name
+
+   !> Classical order of the propagating formula (5 or 8; 0 if unknown).
+   pure integer function rk_method_order(method) result(order)
+      integer, intent(in) :: method
+      select case (method)
+      case (rk_dopri5); order = 5
+      case (rk_dop853); order = 8
+      case default; order = 0
+      end select
+   end function rk_method_order
+
+   !> The continuous extension of `step` at time t (t in [t_old, t]; mild
+   !> extrapolation is allowed but not accurate). `step` must come from rk_integrate
+   !> (its arrays are allocated there). Hairer's CONTD5/CONTD8 form:
+   !> y = d0 + s(d1 + s'(d2 + s(d3 + s'(d4 + s(d5 + s'(d6 + s d7)))))), s = (t − t_old)/h, s' = 1 − s.
+   pure function rk_dense_value(step, t) result(y)
+      type(rk_step_t), intent(in) :: step  !! an accepted step with its dense coefficients
+      real(wp), intent(in) :: t            !! where to evaluate
+      real(wp) :: y(size(step%y))
+      real(wp) :: s, s1
+      if (t == step%t .or. step%h == 0.0_wp) then
+         y = step%y
+         return
+      end if
+      s = (t - step%t_old)/step%h
+      s1 = 1.0_wp - s
+      associate (d => step%dense)
+         y = d(:, 0) + s*(d(:, 1) + s1*(d(:, 2) + s*(d(:, 3) + s1*(d(:, 4) &
+             + s*(d(:, 5) + s1*(d(:, 6) + s*d(:, 7)))))))
+      end associate
+   end function rk_dense_value
+
+   !> Integrate y' = f(t, y) from t to t_end.
+   !>
+   !> Adaptive mode (default): local error per step kept below rtol·|y| + atol in
+   !> Hairer's norm; fixed-step mode (`options%fixed_steps` = N > 0): N equal steps,
+   !> no error control. On return t is where the integration ended (t_end unless an
+   !> observer stopped it or it failed) and y the state there. On failure `error` is
+   !> allocated (code err_integration or err_invalid_parameter) and t, y hold the last
+   !> accepted point, never a non-finite value.
+   subroutine rk_integrate(f, t, t_end, y, options, stats, error, t_out, y_out, observer, h_next)
+      procedure(rk_rhs) :: f                   !! right-hand side
+      real(wp), intent(inout) :: t             !! start in, end reached out
+      real(wp), intent(in) :: t_end            !! end of the interval (t_end < t integrates backwards)
+      real(wp), intent(inout) :: y(:)          !! initial state in, final state out
+      type(rk_options_t), intent(in) :: options  !! method, tolerances, step control
+      type(work_stats_t), intent(out), optional :: stats  !! accepted steps, rejected steps (including
+                                                          !! those of the first step, which Hairer's
+                                                          !! codes do not count), f-evaluations
+      type(error_t), allocatable, intent(out) :: error    !! allocated on failure
+      real(wp), intent(in), optional :: t_out(:)  !! output times, monotone from t towards t_end
+      real(wp), intent(out), optional :: y_out(:, :)  !! (size(y), size(t_out)) dense output there
+      procedure(rk_observer), optional :: observer  !! called after every accepted step
+      real(wp), intent(out), optional :: h_next  !! predicted next step (to resume an integration)
+
+      type(work_stats_t) :: work
+      type(controller_t) :: control
+      type(rk_step_t) :: step
+      real(wp), allocatable :: k(:, :), y_new(:), y_stage(:)
+      real(wp) :: h, h_new, direction, err, fac11, fac, span
+      integer :: n, n_stages, next_out, attempts
+      logical :: finite, last, rejected_before, stop, want_dense
+      character(len=160) :: message
+
+      n = size(y)
+      work = work_stats_t()
+      if (present(h_next)) h_next = 0.0_wp
+      call check_arguments(error)
+      if (allocated(error)) then
+         if (present(stats)) stats = work
+         return
+      end if
+
+      want_dense = present(t_out) .or. options%dense_output
+      n_stages = merge(7, 16, options%method == rk_dopri5)
+      allocate (k(n, n_stages), y_new(n), y_stage(n))
+      allocate (step%y(n), step%dense(n, 0:7))
+      step%method = options%method
+      step%dense = 0.0_wp
+      step%t_old = t; step%t = t; step%h = 0.0_wp; step%y = y
+      direction = sign(1.0_wp, t_end - t)
+      span = abs(t_end - t)
+      next_out = 1
+      if (present(t_out)) call fill_outputs()
+      if (t == t_end) then
+         call finish()
+         return
+      end if
+
+      call evaluate(t, y, k(:, 1))
+      if (.not. finite) then
+         call fail_non_finite(t, "initial state")
+         return
+      end if
+
+      stop = .false.
+      if (present(observer)) call observer(step, stop)
+      if (stop) then
+         call finish()
+         return
+      end if
+
+      if (options%fixed_steps > 0) then
+         call integrate_fixed()
+      else
+         call integrate_adaptive()
+      end if
+      if (.not. allocated(error)) call finish()
+
+   contains
+
+      subroutine check_arguments(error)
+         type(error_t), allocatable, intent(out) :: error
+         if (options%method /= rk_dopri5 .and. options%method /= rk_dop853) then
+            call set_error(error, err_invalid_parameter, "rk_integrate: unknown method")
+         else if (n < 1) then
+            call set_error(error, err_invalid_parameter, "rk_integrate: empty state vector")
+         else if (.not. (ieee_is_finite(t) .and. ieee_is_finite(t_end))) then
+            call set_error(error, err_invalid_parameter, "rk_integrate: t and t_end must be finite")
+         else if (.not. all(ieee_is_finite(y))) then
+            call set_error(error, err_invalid_parameter, "rk_integrate: non-finite initial state")
+         else if (.not. all(ieee_is_finite([options%rtol, options%atol, options%h_initial, options%h_max, &
+                                            options%safety, options%beta, options%fac_min, options%fac_max]))) then
+            call set_error(error, err_invalid_parameter, "rk_integrate: non-finite option")
+         else if (options%fixed_steps < 0) then
+            call set_error(error, err_invalid_parameter, "rk_integrate: fixed_steps must be >= 0")
+         else if (options%fixed_steps == 0 .and. (options%rtol < 0.0_wp .or. options%atol <= 0.0_wp)) then
+            call set_error(error, err_invalid_parameter, "rk_integrate: need rtol >= 0 and atol > 0")
+         else if (options%max_steps < 1) then
+            call set_error(error, err_invalid_parameter, "rk_integrate: max_steps must be >= 1")
+         else if (options%safety <= 1.0e-4_wp .or. options%safety >= 1.0_wp) then
+            call set_error(error, err_invalid_parameter, "rk_integrate: safety must lie in (1e-4, 1)")
+         else if (options%beta > 0.2_wp) then
+            call set_error(error, err_invalid_parameter, "rk_integrate: beta must be <= 0.2")
+         else if (options%h_max < 0.0_wp) then
+            call set_error(error, err_invalid_parameter, "rk_integrate: h_max must be >= 0")
+         else if (options%fac_min > 1.0_wp .or. (options%fac_max > 0.0_wp .and. options%fac_max < 1.0_wp)) then
+            call set_error(error, err_invalid_parameter, "rk_integrate: need fac_min <= 1 <= fac_max")
+         else if (present(t_out) .neqv. present(y_out)) then
+            call set_error(error, err_invalid_parameter, "rk_integrate: t_out and y_out go together")
+         else if (present(t_out)) then
+            if (size(y_out, 1) /= n .or. size(y_out, 2) /= size(t_out)) then
+               call set_error(error, err_invalid_parameter, "rk_integrate: y_out must be (size(y), size(t_out))")
+            else if (.not. all(ieee_is_finite(t_out))) then
+               call set_error(error, err_invalid_parameter, "rk_integrate: non-finite output time")
+            else if (.not. outputs_ordered()) then
+               call set_error(error, err_invalid_parameter, &
+                  "rk_integrate: t_out must be monotone from t towards t_end and lie in between")
+            end if
+         end if
+      end subroutine check_arguments
+
+      logical function outputs_ordered()
+         real(wp) :: dir, previous
+         integer :: j
+         dir = sign(1.0_wp, t_end - t)
+         previous = t
+         outputs_ordered = .true.
+         do j = 1, size(t_out)
+            if ((t_out(j) - previous)*dir < 0.0_wp .or. (t_out(j) - t_end)*dir > 0.0_wp) then
+               outputs_ordered = .false.
+               return
+            end if
+            previous = t_out(j)
+         end do
+      end function outputs_ordered
+
+      !> dydt = f(t, y), counted, with a finiteness check.
+      subroutine evaluate(tau, state, dydt)
+         real(wp), intent(in) :: tau, state(:)
+         real(wp), intent(out) :: dydt(:)
+         call f(tau, state, dydt)
+         work%n_evaluations = work%n_evaluations + 1
+         finite = all(ieee_is_finite(dydt))
+      end subroutine evaluate
+
+      subroutine fail_non_finite(tau, where)
+         real(wp), intent(in) :: tau
+         character(len=*), intent(in) :: where
+         write (message, '(a,es24.16,a)') "rk_integrate: non-finite derivative at t = ", tau, " ("//where//")"
+         call set_error(error, err_integration, trim(message))
+         call finish()
+      end subroutine fail_non_finite
+
+      !> Fill the outputs up to the current step (dense output on [t_old, t]).
+      subroutine fill_outputs()
+         do while (next_out <= size(t_out))
+            if ((t_out(next_out) - step%t)*direction > 0.0_wp) exit
+            if (t_out(next_out) == step%t) then
+               y_out(:, next_out) = step%y
+            else
+               y_out(:, next_out) = rk_dense_value(step, t_out(next_out))
+            end if
+            next_out = next_out + 1
+         end do
+      end subroutine fill_outputs
+
+      subroutine finish()
+         t = step%t
+         y = step%y
+         if (present(stats)) stats = work
+      end subroutine finish
+
+      !> Record an accepted step from step%t to t_new with state y_new; k(:, 1) is
+      !> f at the old point and `f_new` at the new point.
+      subroutine accept(t_new, f_new)
+         real(wp), intent(in) :: t_new
+         real(wp), intent(in) :: f_new(:)
+         real(wp) :: h_step
+         h_step = t_new - step%t
+         ! cubic Hermite part shared by both methods (Hairer's CONT(1..4))
+         step%dense(:, 0) = step%y
+         step%dense(:, 1) = y_new - step%y
+         step%dense(:, 2) = h_step*k(:, 1) - step%dense(:, 1)
+         step%dense(:, 3) = step%dense(:, 1) - h_step*f_new - step%dense(:, 2)
+         step%dense_order = 3
+         step%t_old = step%t
+         step%t = t_new
+         step%h = h_step
+         step%y = y_new
+         step%index = step%index + 1
+         work%n_steps = work%n_steps + 1
+      end subroutine accept
+
+      !> Hairer's HINIT: h such that h^order · max(‖f0‖, ‖f'‖) ≈ 0.01, using one Euler step.
+      real(wp) function initial_step(order) result(h_guess)
+         integer, intent(in) :: order
+         real(wp) :: sk(n), dnf, dny, der2, der12, h0, h1
+         sk = options%atol + options%rtol*abs(y)
+         dnf = sum((k(:, 1)/sk)**2)
+         dny = sum((y/sk)**2)
+         if (dnf <= 1.0e-10_wp .or. dny <= 1.0e-10_wp) then
+            h0 = 1.0e-6_wp
+         else
+            h0 = sqrt(dny/dnf)*0.01_wp
+         end if
+         h0 = min(h0, control%h_max)
+         y_stage = y + direction*h0*k(:, 1)
+         call evaluate(t + direction*h0, y_stage, k(:, 2))
+         if (.not. finite) then
+            h_guess = 1.0e-6_wp*span   ! the first real step will meet the problem and report it
+            return
+         end if
+         der2 = sqrt(sum(((k(:, 2) - k(:, 1))/sk)**2))/h0
+         der12 = max(der2, sqrt(dnf))
+         if (der12 <= 1.0e-15_wp) then
+            h1 = max(1.0e-6_wp, h0*1.0e-3_wp)
+         else
+            h1 = (0.01_wp/der12)**(1.0_wp/order)
+         end if
+         h_guess = min(100.0_wp*h0, h1, control%h_max)
+      end function initial_step
+
+      subroutine integrate_fixed()
+         integer :: i
+         h = (t_end - t)/options%fixed_steps
+         do i = 1, options%fixed_steps
+            call attempt(step%t, h, with_error=.false.)
+            if (.not. finite) then
+               call fail_non_finite(step%t, "fixed step")
+               return
+            end if
+            if (i == options%fixed_steps) then
+               call complete_step(t_end)
+            else
+               call complete_step(t + i*h)
+            end if
+            if (allocated(error)) return
+            if (stop) return
+         end do
+         if (present(h_next)) h_next = h
+      end subroutine integrate_fixed
+
+      subroutine integrate_adaptive()
+         integer :: order
+         order = rk_method_order(options%method)
+         control%safety = options%safety
+         if (options%method == rk_dopri5) then
+            control%beta = merge(options%beta, 0.04_wp, options%beta >= 0.0_wp)
+            control%fac_min = merge(options%fac_min, 0.2_wp, options%fac_min > 0.0_wp)
+            control%fac_max = merge(options%fac_max, 10.0_wp, options%fac_max > 0.0_wp)
+            control%exponent = 0.2_wp - 0.75_wp*control%beta
+         else
+            control%beta = merge(options%beta, 0.0_wp, options%beta >= 0.0_wp)
+            control%fac_min = merge(options%fac_min, 0.333_wp, options%fac_min > 0.0_wp)
+            control%fac_max = merge(options%fac_max, 6.0_wp, options%fac_max > 0.0_wp)
+            control%exponent = 0.125_wp - 0.2_wp*control%beta
+         end if
+         control%h_max = merge(options%h_max, span, options%h_max > 0.0_wp)
+         control%fac_old = 1.0e-4_wp
+
+         if (options%h_initial /= 0.0_wp) then
+            h = min(abs(options%h_initial), control%h_max)
+         else
+            h = initial_step(order)
+         end if
+         h = direction*h
+         rejected_before = .false.
+         last = .false.
+         attempts = 0
+         do
+            if (attempts >= options%max_steps) then
+               write (message, '(a,i0,a,es24.16)') "rk_integrate: more than max_steps = ", options%max_steps, &
+                  " steps needed; stopped at t = ", step%t
+               call set_error(error, err_integration, trim(message))
+               call finish()
+               return
+            end if
+            if (0.1_wp*abs(h) <= abs(step%t)*unit_roundoff .or. abs(h) < tiny(1.0_wp)) then
+               write (message, '(a,es10.3,a,es24.16)') "rk_integrate: step size underflow, h = ", h, &
+                  " at t = ", step%t
+               call set_error(error, err_integration, trim(message))
+               call finish()
+               return
+            end if
+            if ((step%t + 1.01_wp*h - t_end)*direction > 0.0_wp) then
+               h = t_end - step%t
+               last = .true.
+            end if
+            attempts = attempts + 1
+
+            call attempt(step%t, h, with_error=.true., err=err)
+            if (.not. finite) then
+               call fail_non_finite(step%t, "trial step")
+               return
+            end if
+
+            fac11 = err**control%exponent
+            ! Lund stabilisation (PI control): divide by the previous error to the power beta
+            fac = fac11/control%fac_old**control%beta
+            fac = max(1.0_wp/control%fac_max, min(1.0_wp/control%fac_min, fac/control%safety))
+            h_new = h/fac
+            if (err <= 1.0_wp) then
+               control%fac_old = max(err, 1.0e-4_wp)
+               if (last) then
+                  call complete_step(t_end)
+               else
+                  call complete_step(step%t + h)
+               end if
+               if (allocated(error)) return
+               if (last .or. stop) exit
+               if (abs(h_new) > control%h_max) h_new = direction*control%h_max
+               if (rejected_before) h_new = direction*min(abs(h_new), abs(h))
+               rejected_before = .false.
+            else
+               h_new = h/min(1.0_wp/control%fac_min, fac11/control%safety)
+               rejected_before = .true.
+               last = .false.
+               work%n_rejected = work%n_rejected + 1
+            end if
+            h = h_new
+         end do
+         if (present(h_next)) h_next = direction*min(abs(h_new), control%h_max)
+      end subroutine integrate_adaptive
+
+      !> Compute the stages of one step of size hh from (tau, step%y) into k and y_new;
+      !> with_error: also the scaled error norm `err` (Hairer's). Sets `finite`.
+      subroutine attempt(tau, hh, with_error, err)
+         real(wp), intent(in) :: tau, hh
+         logical, intent(in) :: with_error
+         real(wp), intent(out), optional :: err
+         if (options%method == rk_dopri5) then
+            call dopri5_stages(tau, hh, with_error, err)
+         else
+            call dop853_stages(tau, hh, with_error, err)
+         end if
+      end subroutine attempt
+
+      subroutine dopri5_stages(tau, hh, with_error, err)
+         real(wp), intent(in) :: tau, hh
+         logical, intent(in) :: with_error
+         real(wp), intent(out), optional :: err
+         real(wp) :: sk(n)
+         associate (y0 => step%y)
+            y_stage = y0 + hh*p5_a21*k(:, 1)
+            call evaluate(tau + p5_c2*hh, y_stage, k(:, 2)); if (.not. finite) return
+            y_stage = y0 + hh*(p5_a31*k(:, 1) + p5_a32*k(:, 2))
+            call evaluate(tau + p5_c3*hh, y_stage, k(:, 3)); if (.not. finite) return
+            y_stage = y0 + hh*(p5_a41*k(:, 1) + p5_a42*k(:, 2) + p5_a43*k(:, 3))
+            call evaluate(tau + p5_c4*hh, y_stage, k(:, 4)); if (.not. finite) return
+            y_stage = y0 + hh*(p5_a51*k(:, 1) + p5_a52*k(:, 2) + p5_a53*k(:, 3) + p5_a54*k(:, 4))
+            call evaluate(tau + p5_c5*hh, y_stage, k(:, 5)); if (.not. finite) return
+            y_stage = y0 + hh*(p5_a61*k(:, 1) + p5_a62*k(:, 2) + p5_a63*k(:, 3) + p5_a64*k(:, 4) &
+                               + p5_a65*k(:, 5))
+            call evaluate(tau + hh, y_stage, k(:, 6)); if (.not. finite) return
+            y_new = y0 + hh*(p5_a71*k(:, 1) + p5_a73*k(:, 3) + p5_a74*k(:, 4) + p5_a75*k(:, 5) &
+                             + p5_a76*k(:, 6))
+            ! stage 7 is f at the new point: first stage of the next step (FSAL)
+            call evaluate(tau + hh, y_new, k(:, 7)); if (.not. finite) return
+            if (with_error) then
+               sk = options%atol + options%rtol*max(abs(y0), abs(y_new))
+               y_stage = hh*(p5_e1*k(:, 1) + p5_e3*k(:, 3) + p5_e4*k(:, 4) + p5_e5*k(:, 5) &
+                             + p5_e6*k(:, 6) + p5_e7*k(:, 7))
+               err = sqrt(sum((y_stage/sk)**2)/n)
+            end if
+         end associate
+      end subroutine dopri5_stages
+
+      subroutine dop853_stages(tau, hh, with_error, err)
+         real(wp), intent(in) :: tau, hh
+         logical, intent(in) :: with_error
+         real(wp), intent(out), optional :: err
+         real(wp) :: sk(n), err5, err3, deno
+         associate (y0 => step%y)
+            y_stage = y0 + hh*p8_a21*k(:, 1)
+            call evaluate(tau + p8_c2*hh, y_stage, k(:, 2)); if (.not. finite) return
+            y_stage = y0 + hh*(p8_a31*k(:, 1) + p8_a32*k(:, 2))
+            call evaluate(tau + p8_c3*hh, y_stage, k(:, 3)); if (.not. finite) return
+            y_stage = y0 + hh*(p8_a41*k(:, 1) + p8_a43*k(:, 3))
+            call evaluate(tau + p8_c4*hh, y_stage, k(:, 4)); if (.not. finite) return
+            y_stage = y0 + hh*(p8_a51*k(:, 1) + p8_a53*k(:, 3) + p8_a54*k(:, 4))
+            call evaluate(tau + p8_c5*hh, y_stage, k(:, 5)); if (.not. finite) return
+            y_stage = y0 + hh*(p8_a61*k(:, 1) + p8_a64*k(:, 4) + p8_a65*k(:, 5))
+            call evaluate(tau + p8_c6*hh, y_stage, k(:, 6)); if (.not. finite) return
+            y_stage = y0 + hh*(p8_a71*k(:, 1) + p8_a74*k(:, 4) + p8_a75*k(:, 5) + p8_a76*k(:, 6))
+            call evaluate(tau + p8_c7*hh, y_stage, k(:, 7)); if (.not. finite) return
+            y_stage = y0 + hh*(p8_a81*k(:, 1) + p8_a84*k(:, 4) + p8_a85*k(:, 5) + p8_a86*k(:, 6) &
+                               + p8_a87*k(:, 7))
+            call evaluate(tau + p8_c8*hh, y_stage, k(:, 8)); if (.not. finite) return
+            y_stage = y0 + hh*(p8_a91*k(:, 1) + p8_a94*k(:, 4) + p8_a95*k(:, 5) + p8_a96*k(:, 6) &
+                               + p8_a97*k(:, 7) + p8_a98*k(:, 8))
+            call evaluate(tau + p8_c9*hh, y_stage, k(:, 9)); if (.not. finite) return
+            y_stage = y0 + hh*(p8_a101*k(:, 1) + p8_a104*k(:, 4) + p8_a105*k(:, 5) + p8_a106*k(:, 6) &
+                               + p8_a107*k(:, 7) + p8_a108*k(:, 8) + p8_a109*k(:, 9))
+            call evaluate(tau + p8_c10*hh, y_stage, k(:, 10)); if (.not. finite) return
+            y_stage = y0 + hh*(p8_a111*k(:, 1) + p8_a114*k(:, 4) + p8_a115*k(:, 5) + p8_a116*k(:, 6) &
+                               + p8_a117*k(:, 7) + p8_a118*k(:, 8) + p8_a119*k(:, 9) + p8_a1110*k(:, 10))
+            call evaluate(tau + p8_c11*hh, y_stage, k(:, 11)); if (.not. finite) return
+            y_stage = y0 + hh*(p8_a121*k(:, 1) + p8_a124*k(:, 4) + p8_a125*k(:, 5) + p8_a126*k(:, 6) &
+                               + p8_a127*k(:, 7) + p8_a128*k(:, 8) + p8_a129*k(:, 9) + p8_a1210*k(:, 10) &
+                               + p8_a1211*k(:, 11))
+            call evaluate(tau + hh, y_stage, k(:, 12)); if (.not. finite) return
+            ! the 8th-order solution; k(:, 13) is kept for the increment b·k
+            k(:, 13) = p8_b1*k(:, 1) + p8_b6*k(:, 6) + p8_b7*k(:, 7) + p8_b8*k(:, 8) + p8_b9*k(:, 9) &
+                       + p8_b10*k(:, 10) + p8_b11*k(:, 11) + p8_b12*k(:, 12)
+            y_new = y0 + hh*k(:, 13)
+            if (with_error) then
+               ! Hairer's combined estimate err5²/sqrt(err5² + 0.01·err3²) (dop853.f, ERROR ESTIMATION)
+               sk = options%atol + options%rtol*max(abs(y0), abs(y_new))
+               err3 = sum(((k(:, 13) - p8_bhh1*k(:, 1) - p8_bhh2*k(:, 9) - p8_bhh3*k(:, 12))/sk)**2)
+               err5 = sum(((p8_er1*k(:, 1) + p8_er6*k(:, 6) + p8_er7*k(:, 7) + p8_er8*k(:, 8) &
+                            + p8_er9*k(:, 9) + p8_er10*k(:, 10) + p8_er11*k(:, 11) + p8_er12*k(:, 12))/sk)**2)
+               deno = err5 + 0.01_wp*err3
+               if (deno <= 0.0_wp) deno = 1.0_wp
+               err = abs(hh)*err5*sqrt(1.0_wp/(n*deno))
+            end if
+         end associate
+      end subroutine dop853_stages
+
+      !> After a successful attempt: evaluate f at the new point (DOP853; DOPRI5 has it),
+      !> build the dense output, record the step, serve outputs and the observer, and
+      !> move f(new) into k(:, 1) for the next step.
+      subroutine complete_step(t_new)
+         real(wp), intent(in) :: t_new
+         real(wp) :: hh
+         hh = t_new - step%t
+         if (options%method == rk_dopri5) then
+            ! Shampine's 4th-order interpolant: the Hermite part plus h·Σ d_i k_i
+            step%dense(:, 4) = hh*(p5_d1*k(:, 1) + p5_d3*k(:, 3) + p5_d4*k(:, 4) + p5_d5*k(:, 5) &
+                                   + p5_d6*k(:, 6) + p5_d7*k(:, 7))
+            call accept(t_new, k(:, 7))
+            step%dense_order = 4
+            k(:, 1) = k(:, 7)
+         else
+            call evaluate(t_new, y_new, k(:, 13))
+            if (.not. finite) then
+               call fail_non_finite(t_new, "end of accepted step")
+               return
+            end if
+            if (want_dense) then
+               call dop853_dense(hh)
+               if (.not. finite) then
+                  call fail_non_finite(step%t, "dense output stage")
+                  return
+               end if
+            end if
+            call accept(t_new, k(:, 13))
+            if (want_dense) step%dense_order = 7
+            k(:, 1) = k(:, 13)
+         end if
+         if (present(t_out)) call fill_outputs()
+         if (present(observer)) call observer(step, stop)
+      end subroutine complete_step
+
+      !> DOP853's 7th-order continuous extension: three more stages (14–16) and the
+      !> coefficients d4..d7 of CONTD8, stored in step%dense(:, 4:7). Uses the stages of
+      !> the step from step%t with size hh; k(:, 13) holds f at the new point.
+      subroutine dop853_dense(hh)
+         real(wp), intent(in) :: hh
+         associate (y0 => step%y, d => step%dense)
+            d(:, 4) = p8_d41*k(:, 1) + p8_d46*k(:, 6) + p8_d47*k(:, 7) + p8_d48*k(:, 8) + p8_d49*k(:, 9) &
+                      + p8_d410*k(:, 10) + p8_d411*k(:, 11) + p8_d412*k(:, 12)
+            d(:, 5) = p8_d51*k(:, 1) + p8_d56*k(:, 6) + p8_d57*k(:, 7) + p8_d58*k(:, 8) + p8_d59*k(:, 9) &
+                      + p8_d510*k(:, 10) + p8_d511*k(:, 11) + p8_d512*k(:, 12)
+            d(:, 6) = p8_d61*k(:, 1) + p8_d66*k(:, 6) + p8_d67*k(:, 7) + p8_d68*k(:, 8) + p8_d69*k(:, 9) &
+                      + p8_d610*k(:, 10) + p8_d611*k(:, 11) + p8_d612*k(:, 12)
+            d(:, 7) = p8_d71*k(:, 1) + p8_d76*k(:, 6) + p8_d77*k(:, 7) + p8_d78*k(:, 8) + p8_d79*k(:, 9) &
+                      + p8_d710*k(:, 10) + p8_d711*k(:, 11) + p8_d712*k(:, 12)
+            y_stage = y0 + hh*(p8_a141*k(:, 1) + p8_a147*k(:, 7) + p8_a148*k(:, 8) + p8_a149*k(:, 9) &
+                               + p8_a1410*k(:, 10) + p8_a1411*k(:, 11) + p8_a1412*k(:, 12) + p8_a1413*k(:, 13))
+            call evaluate(step%t + p8_c14*hh, y_stage, k(:, 14)); if (.not. finite) return
+            y_stage = y0 + hh*(p8_a151*k(:, 1) + p8_a156*k(:, 6) + p8_a157*k(:, 7) + p8_a158*k(:, 8) &
+                               + p8_a1511*k(:, 11) + p8_a1512*k(:, 12) + p8_a1513*k(:, 13) + p8_a1514*k(:, 14))
+            call evaluate(step%t + p8_c15*hh, y_stage, k(:, 15)); if (.not. finite) return
+            y_stage = y0 + hh*(p8_a161*k(:, 1) + p8_a166*k(:, 6) + p8_a167*k(:, 7) + p8_a168*k(:, 8) &
+                               + p8_a169*k(:, 9) + p8_a1613*k(:, 13) + p8_a1614*k(:, 14) + p8_a1615*k(:, 15))
+            call evaluate(step%t + p8_c16*hh, y_stage, k(:, 16)); if (.not. finite) return
+            d(:, 4) = hh*(d(:, 4) + p8_d413*k(:, 13) + p8_d414*k(:, 14) + p8_d415*k(:, 15) + p8_d416*k(:, 16))
+            d(:, 5) = hh*(d(:, 5) + p8_d513*k(:, 13) + p8_d514*k(:, 14) + p8_d515*k(:, 15) + p8_d516*k(:, 16))
+            d(:, 6) = hh*(d(:, 6) + p8_d613*k(:, 13) + p8_d614*k(:, 14) + p8_d615*k(:, 15) + p8_d616*k(:, 16))
+            d(:, 7) = hh*(d(:, 7) + p8_d713*k(:, 13) + p8_d714*k(:, 14) + p8_d715*k(:, 15) + p8_d716*k(:, 16))
+         end associate
+      end subroutine dop853_dense
+   end subroutine rk_integrate
+end module hillstab_rk

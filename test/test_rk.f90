@@ -1,0 +1,610 @@
+!> Tests of the Runge–Kutta integrators (hillstab_rk) and of the half-period RK
+!> monodromy (hillstab_monodromy_rk), each against an independent reference:
+!> closed-form solutions (harmonic oscillator, constant Hill coefficient, Meissner),
+!> Hairer's published DOPRI5 run on the Arenstorf orbit, a full-period integration,
+!> the converged segmented product, and the RK4 test reference.
+module test_rk
+   use hillstab_kinds, only: wp, pi, pi2
+   use hillstab_error, only: error_t, err_integration, err_invalid_parameter
+   use hillstab_stats, only: work_stats_t
+   use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, hill_coefficient, &
+      sampling_average
+   use hillstab_transfer, only: scaled_matrix_t, trace_t, matrix_of, determinant
+   use hillstab_monodromy, only: trace_segmented, monodromy_trace, method_t, method_rk
+   use hillstab_rk
+   use hillstab_monodromy_rk
+   use test_reference, only: rk4_monodromy, value_of
+   use hillstab_testing
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_positive_inf
+   implicit none
+   private
+   public :: collect_rk
+
+   !> Arenstorf orbit (Hairer, Nørsett & Wanner I, §II.0).
+   real(wp), parameter :: arenstorf_mu = 0.012277471_wp
+   real(wp), parameter :: arenstorf_period = 17.0652165601579625588917206249_wp
+   real(wp), parameter :: arenstorf_start(4) = [0.994_wp, 0.0_wp, 0.0_wp, -2.00158510637908252240537862224_wp]
+
+contains
+
+   function collect_rk() result(suite)
+      type(testsuite_t) :: suite
+      suite = new_testsuite("rk", [ &
+         new_unittest("order_oscillator", order_oscillator), &
+         new_unittest("order_constant_hill", order_constant_hill), &
+         new_unittest("order_meissner", order_meissner), &
+         new_unittest("arenstorf_dopri5_hairer", arenstorf_dopri5_hairer), &
+         new_unittest("arenstorf_dop853", arenstorf_dop853), &
+         new_unittest("dense_output", dense_output), &
+         new_unittest("dense_order", dense_order), &
+         new_unittest("backward_and_observer", backward_and_observer), &
+         new_unittest("error_paths", error_paths), &
+         new_unittest("half_equals_full_period", half_equals_full_period), &
+         new_unittest("trace_vs_references", trace_vs_references), &
+         new_unittest("unit_determinant", unit_determinant), &
+         new_unittest("hard_cases", hard_cases), &
+         new_unittest("dispatch_and_work", dispatch_and_work)])
+   end function collect_rk
+
+   ! ----------------------------------------------------------------------------------
+   ! helpers
+   ! ----------------------------------------------------------------------------------
+
+   subroutine oscillator(t, y, dydt)
+      real(wp), intent(in) :: t, y(:)
+      real(wp), intent(out) :: dydt(:)
+      dydt(1) = y(2)
+      dydt(2) = -y(1)
+   end subroutine oscillator
+
+   subroutine three_body(t, y, dydt)
+      real(wp), intent(in) :: t, y(:)
+      real(wp), intent(out) :: dydt(:)
+      real(wp) :: d1, d2, mu1
+      mu1 = 1.0_wp - arenstorf_mu
+      d1 = ((y(1) + arenstorf_mu)**2 + y(2)**2)**1.5_wp
+      d2 = ((y(1) - mu1)**2 + y(2)**2)**1.5_wp
+      dydt(1) = y(3)
+      dydt(2) = y(4)
+      dydt(3) = y(1) + 2.0_wp*y(4) - mu1*(y(1) + arenstorf_mu)/d1 - arenstorf_mu*(y(1) - mu1)/d2
+      dydt(4) = y(2) - 2.0_wp*y(3) - mu1*y(2)/d1 - arenstorf_mu*y(2)/d2
+   end subroutine three_body
+
+   !> Error at t = 10 of the harmonic oscillator in fixed-step mode.
+   real(wp) function oscillator_error(method, n_steps) result(err)
+      integer, intent(in) :: method, n_steps
+      real(wp) :: t, y(2)
+      type(error_t), allocatable :: error
+      t = 0.0_wp
+      y = [1.0_wp, 0.0_wp]
+      call rk_integrate(oscillator, t, 10.0_wp, y, rk_options_t(method=method, fixed_steps=n_steps), error=error)
+      err = norm2(y - [cos(10.0_wp), -sin(10.0_wp)])
+      if (allocated(error)) err = huge(1.0_wp)
+   end function oscillator_error
+
+   !> S = 2(u v' + u' v) of x'' + q(τ) x = 0 from the even/odd solutions on [0, 1]
+   !> integrated in fixed-step mode (the half-period identity, independent of monodromy_rk).
+   real(wp) function fixed_step_trace(model, method, n_steps) result(s)
+      type(hill_model_t), intent(in) :: model
+      integer, intent(in) :: method, n_steps
+      real(wp) :: t, y(4)
+      type(error_t), allocatable :: error
+      t = 0.0_wp
+      y = [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]
+      call rk_integrate(pair, t, 1.0_wp, y, rk_options_t(method=method, fixed_steps=n_steps), error=error)
+      s = 2.0_wp*(y(1)*y(4) + y(2)*y(3))
+      if (allocated(error)) s = huge(1.0_wp)
+   contains
+      subroutine pair(tau, state, dydt)
+         real(wp), intent(in) :: tau, state(:)
+         real(wp), intent(out) :: dydt(:)
+         real(wp) :: q
+         q = hill_coefficient(model, tau)
+         dydt = [state(2), -q*state(1), state(4), -q*state(3)]
+      end subroutine pair
+   end function fixed_step_trace
+
+   !> Observed order log2(e(N)/e(2N)) compared with `expected`.
+   subroutine check_order(ctx, e1, e2, expected, label)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), intent(in) :: e1, e2
+      real(wp), intent(in) :: expected
+      character(len=*), intent(in) :: label
+      real(wp) :: order
+      order = log(e1/e2)/log(2.0_wp)
+      write (*, '(4x,a,a,f6.2)') label, ": observed order ", order
+      call check(ctx, order, expected, abs=0.3_wp, message=label)
+   end subroutine check_order
+
+   ! ----------------------------------------------------------------------------------
+   ! integrator
+   ! ----------------------------------------------------------------------------------
+
+   !> Fixed-step convergence on x'' = −x (closed form cos, −sin) at t = 10.
+   subroutine order_oscillator(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      call check_order(ctx, oscillator_error(rk_dop853, 20), oscillator_error(rk_dop853, 40), 8.0_wp, &
+         "dop853 oscillator N=20,40")
+      call check_order(ctx, oscillator_error(rk_dopri5, 80), oscillator_error(rk_dopri5, 160), 5.0_wp, &
+         "dopri5 oscillator N=80,160")
+   end subroutine order_oscillator
+
+   !> Fixed-step convergence on the α = 0 Hill equation: S = 2 cos(2√β). For constant q the
+   !> trace error is an amplitude part (∝ cos 2√β) plus a phase part (∝ sin 2√β); the
+   !> leading (h^p) term of DOPRI5 is an amplitude error and that of DOP853 a phase error,
+   !> so β is chosen where the matching factor is near 1 (β = 10: cos ≈ 1; β = 30: sin ≈ 1).
+   subroutine order_constant_hill(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(hill_model_t) :: model
+      real(wp) :: exact
+      model = hill_model_t(model_elastic, 0.0_wp, 30.0_wp, 0.0_wp)
+      exact = 2.0_wp*cos(2.0_wp*sqrt(30.0_wp))
+      call check_order(ctx, abs(fixed_step_trace(model, rk_dop853, 8) - exact), &
+         abs(fixed_step_trace(model, rk_dop853, 16) - exact), 8.0_wp, "dop853 alpha=0 beta=30 N=8,16")
+      call check(ctx, fixed_step_trace(model, rk_dop853, 200), exact, abs=1.0e-13_wp, message="dop853 N=200")
+      model = hill_model_t(model_elastic, 0.0_wp, 10.0_wp, 0.0_wp)
+      exact = 2.0_wp*cos(2.0_wp*sqrt(10.0_wp))
+      call check_order(ctx, abs(fixed_step_trace(model, rk_dopri5, 32) - exact), &
+         abs(fixed_step_trace(model, rk_dopri5, 64) - exact), 5.0_wp, "dopri5 alpha=0 beta=10 N=32,64")
+      ! β < 0: S = 2 cosh(2√|β|)
+      model = hill_model_t(model_elastic, 0.0_wp, -10.0_wp, 0.0_wp)
+      exact = 2.0_wp*cosh(2.0_wp*sqrt(10.0_wp))
+      call check(ctx, fixed_step_trace(model, rk_dop853, 200), exact, rel=1.0e-13_wp, message="beta < 0")
+   end subroutine order_constant_hill
+
+   !> Meissner: y'' + r s(t) y = 0, s = +1 on [0, 1), −1 on [1, 2), trace 2 cos√r cosh√r.
+   !> The step grid is aligned with the jump: the integration restarts at t = 1, with
+   !> n steps on the first piece and 2n on the second. (With equal steps the leading
+   !> DOPRI5 error, z⁶/3600 per step, scales the two pieces by −Nθ⁶/3600 and +Nθ⁶/3600
+   !> and cancels exactly in the trace, which then converges at order 6.)
+   subroutine order_meissner(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: r, exact, s, t, y(4), e(2)
+      type(error_t), allocatable :: error
+      type(work_stats_t) :: stats
+      integer :: method, k, n
+      do method = rk_dopri5, rk_dop853
+         ! r chosen so that the asymptotic regime starts early (for DOPRI5 sin √r ≈ 0 damps
+         ! its h⁶ phase term, which at r = 20 still competes with h⁵ at n = 64)
+         r = merge(9.0_wp, 20.0_wp, method == rk_dopri5)
+         exact = 2.0_wp*cos(sqrt(r))*cosh(sqrt(r))
+         do k = 1, 2
+            n = merge(32, 8, method == rk_dopri5)*k
+            e(k) = abs(meissner_trace(rk_options_t(method=method, fixed_steps=n), .true.) - exact)
+         end do
+         call check_order(ctx, e(1), e(2), real(rk_method_order(method), wp), &
+            "meissner "//rk_method_name(method))
+      end do
+      ! adaptive, in one call straight through the jump: rejections locate it
+      s = meissner_trace(rk_options_t(method=rk_dop853, rtol=1.0e-12_wp, atol=1.0e-12_wp), .false.)
+      write (*, '(4x,a,es10.2,a,i0,a,i0)') "meissner adaptive through the jump: error ", abs(s - exact), &
+         ", evaluations ", stats%n_evaluations, ", rejected ", stats%n_rejected
+      call check(ctx, s, exact, rel=1.0e-9_wp, message="adaptive dop853 across the jump")
+      call check(ctx, stats%n_rejected > 0, "the jump causes rejections")
+   contains
+      real(wp) function meissner_trace(options, restart) result(trace)
+         type(rk_options_t), intent(in) :: options
+         logical, intent(in) :: restart
+         t = 0.0_wp
+         y = [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]
+         if (restart) then
+            call rk_integrate(meissner_first, t, 1.0_wp, y, options, stats, error)
+            call check(ctx, .not. allocated(error), "first half")
+            call rk_integrate(meissner_second, t, 2.0_wp, y, rk_options_t(method=options%method, &
+                              fixed_steps=2*options%fixed_steps), stats, error)
+         else
+            call rk_integrate(meissner, t, 2.0_wp, y, options, stats, error)
+         end if
+         call check(ctx, .not. allocated(error), "meissner integration")
+         trace = y(1) + y(4)
+      end function meissner_trace
+      subroutine meissner(tau, state, dydt)
+         real(wp), intent(in) :: tau, state(:)
+         real(wp), intent(out) :: dydt(:)
+         real(wp) :: q
+         q = merge(r, -r, tau < 1.0_wp)
+         dydt = [state(2), -q*state(1), state(4), -q*state(3)]
+      end subroutine meissner
+      !> The first piece, s = +1 including its right end t = 1 (the limit from the left).
+      subroutine meissner_first(tau, state, dydt)
+         real(wp), intent(in) :: tau, state(:)
+         real(wp), intent(out) :: dydt(:)
+         dydt = [state(2), -r*state(1), state(4), -r*state(3)]
+      end subroutine meissner_first
+      !> The second piece, with s = −1 including its left end t = 1.
+      subroutine meissner_second(tau, state, dydt)
+         real(wp), intent(in) :: tau, state(:)
+         real(wp), intent(out) :: dydt(:)
+         dydt = [state(2), r*state(1), state(4), r*state(3)]
+      end subroutine meissner_second
+   end subroutine order_meissner
+
+   !> DOPRI5 at rtol = atol = 1e-7 reproduces Hairer's dr_dopri5 run (published output:
+   !> Y(XEND) = (0.9940021016, 0.8911185692e-5), fcn = 1442, accpt = 216, rejct = 22, where
+   !> Hairer does not count the 2 rejections of the very first step).
+   subroutine arenstorf_dopri5_hairer(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: t, y(4), t_out(1), y_out(4, 1)
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      t = 0.0_wp
+      y = arenstorf_start
+      t_out = [2.0_wp]
+      call rk_integrate(three_body, t, arenstorf_period, y, rk_options_t(method=rk_dopri5, rtol=1.0e-7_wp, &
+                        atol=1.0e-7_wp), stats, error, t_out=t_out, y_out=y_out)
+      call check(ctx, .not. allocated(error), "integration succeeds")
+      write (*, '(4x,a,i0,a,i0,a,i0,a)') "arenstorf dopri5 tol 1e-7: f-evals ", stats%n_evaluations, &
+         ", accepted ", stats%n_steps, ", rejected ", stats%n_rejected, " (Hairer: 1442, 216, 22+2)"
+      call check(ctx, t, arenstorf_period, rel=0.0_wp, message="reaches the end")
+      call check(ctx, y(1), 0.9940021016_wp, abs=2.0e-10_wp, message="Hairer's y1(T)")
+      call check(ctx, y(2), 0.8911185692e-5_wp, abs=2.0e-10_wp, message="Hairer's y2(T)")
+      ! Hairer's dense output at x = 2: (-0.5798781411, 0.6090775251)
+      call check(ctx, y_out(1, 1), -0.5798781411_wp, abs=2.0e-10_wp, message="Hairer's y1(2)")
+      call check(ctx, y_out(2, 1), 0.6090775251_wp, abs=2.0e-10_wp, message="Hairer's y2(2)")
+      call check(ctx, real(stats%n_evaluations, wp), 1442.0_wp, abs=12.0_wp, message="f-evaluations")
+      call check(ctx, real(stats%n_steps, wp), 216.0_wp, abs=2.0_wp, message="accepted steps")
+   end subroutine arenstorf_dopri5_hairer
+
+   !> One period of the Arenstorf orbit with DOP853 at rtol = atol = 1e-10 returns to the
+   !> start. The position error is a small multiple of the tolerance; the velocity error
+   !> is ~150× the position error, because the orbit ends next to the moon where the
+   !> acceleration is ~300 and any phase error δt shows up as 300 δt in the velocity.
+   subroutine arenstorf_dop853(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: t, y(4), err_tight, err_loose
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      integer :: k
+      real(wp) :: tol(2) = [1.0e-10_wp, 1.0e-12_wp], err(2)
+      do k = 1, 2
+         t = 0.0_wp
+         y = arenstorf_start
+         call rk_integrate(three_body, t, arenstorf_period, y, rk_options_t(method=rk_dop853, rtol=tol(k), &
+                           atol=tol(k)), stats, error)
+         call check(ctx, .not. allocated(error), "integration succeeds")
+         err(k) = norm2(y(1:2) - arenstorf_start(1:2))
+         write (*, '(4x,a,es8.1,a,es10.3,a,es10.3,a,i0,a,i0,a,i0)') "arenstorf dop853 tol ", tol(k), &
+            ": position error ", err(k), ", velocity error ", norm2(y(3:4) - arenstorf_start(3:4)), &
+            ", f-evals ", stats%n_evaluations, ", accepted ", stats%n_steps, ", rejected ", stats%n_rejected
+         call check(ctx, err(k) < 100.0_wp*tol(k), "position error within 100 tol")
+         call check(ctx, norm2(y(3:4) - arenstorf_start(3:4)) < 1.0e5_wp*tol(k), "velocity error within 1e5 tol")
+      end do
+      err_loose = err(1); err_tight = err(2)
+      call check(ctx, err_tight < err_loose/10.0_wp, "error decreases with the tolerance")
+   end subroutine arenstorf_dop853
+
+   !> Dense output between steps against the closed form, with few large steps.
+   subroutine dense_output(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer, parameter :: n_out = 201
+      real(wp) :: t, y(2), t_out(n_out), y_out(2, n_out), worst
+      real(wp) :: tol(2) = [1.0e-6_wp, 1.0e-10_wp]
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      integer :: method, j, k
+      do k = 1, n_out
+         t_out(k) = 10.0_wp*(k - 1)/(n_out - 1)
+      end do
+      do method = rk_dopri5, rk_dop853
+         do j = 1, 2
+            t = 0.0_wp
+            y = [1.0_wp, 0.0_wp]
+            call rk_integrate(oscillator, t, 10.0_wp, y, rk_options_t(method=method, rtol=tol(j), atol=tol(j)), &
+                              stats, error, t_out=t_out, y_out=y_out)
+            call check(ctx, .not. allocated(error), "integration succeeds")
+            worst = maxval(abs(y_out(1, :) - cos(t_out))) + maxval(abs(y_out(2, :) + sin(t_out)))
+            write (*, '(4x,a,a,es8.1,a,es10.3,a,i0,a)') rk_method_name(method), " dense output tol ", tol(j), &
+               ": max error ", worst, " (", stats%n_steps, " steps)"
+            call check(ctx, worst < 20.0_wp*tol(j), "dense output within 20 tol")
+            call check(ctx, y_out(1, n_out) == y(1) .and. y_out(2, n_out) == y(2), "last output = final state")
+            call check(ctx, y_out(1, 1) == 1.0_wp .and. y_out(2, 1) == 0.0_wp, "first output = initial state")
+         end do
+      end do
+   end subroutine dense_output
+
+   !> Order of the continuous extensions: error at step midpoints in fixed-step mode,
+   !> through the observer's interpolant (7 for DOP853 with dense output, 3 for its
+   !> Hermite fallback, 4 for DOPRI5; the midpoint error converges at the interpolant
+   !> order + 1 or at the method order, whichever is lower).
+   subroutine dense_order(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: worst
+      call check_order(ctx, midpoint_error(rk_dop853, .true., 10), midpoint_error(rk_dop853, .true., 20), 8.0_wp, &
+         "dop853 dense midpoints")
+      call check_order(ctx, midpoint_error(rk_dop853, .false., 40), midpoint_error(rk_dop853, .false., 80), &
+         4.0_wp, "dop853 hermite midpoints")
+      call check_order(ctx, midpoint_error(rk_dopri5, .true., 40), midpoint_error(rk_dopri5, .true., 80), 5.0_wp, &
+         "dopri5 dense midpoints")
+   contains
+      real(wp) function midpoint_error(method, dense, n_steps) result(err)
+         integer, intent(in) :: method, n_steps
+         logical, intent(in) :: dense
+         real(wp) :: t, y(2)
+         type(error_t), allocatable :: error
+         worst = 0.0_wp
+         t = 0.0_wp
+         y = [1.0_wp, 0.0_wp]
+         call rk_integrate(oscillator, t, 10.0_wp, y, rk_options_t(method=method, fixed_steps=n_steps, &
+                           dense_output=dense), error=error, observer=at_midpoint)
+         call check(ctx, .not. allocated(error), "integration succeeds")
+         err = worst
+      end function midpoint_error
+      subroutine at_midpoint(step, stop)
+         type(rk_step_t), intent(in) :: step
+         logical, intent(inout) :: stop
+         real(wp) :: tm, ym(2)
+         if (step%index == 0) return
+         tm = step%t_old + 0.5_wp*step%h
+         ym = rk_dense_value(step, tm)
+         worst = max(worst, abs(ym(1) - cos(tm)) + abs(ym(2) + sin(tm)))
+      end subroutine at_midpoint
+   end subroutine dense_order
+
+   !> Backward integration returns to the start; the observer sees every step and
+   !> can stop the integration early.
+   subroutine backward_and_observer(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: t, y(2), t_out(3), y_out(2, 3)
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      integer :: seen
+      t = 5.0_wp
+      y = [cos(5.0_wp), -sin(5.0_wp)]
+      t_out = [4.0_wp, 2.5_wp, 0.0_wp]
+      call rk_integrate(oscillator, t, 0.0_wp, y, rk_options_t(rtol=1.0e-12_wp, atol=1.0e-12_wp), stats, error, &
+                        t_out=t_out, y_out=y_out)
+      call check(ctx, .not. allocated(error), "backward integration succeeds")
+      call check(ctx, t, 0.0_wp, abs=0.0_wp, message="reaches t_end")
+      call check(ctx, y(1), 1.0_wp, abs=1.0e-10_wp, message="backward y1")
+      call check(ctx, y(2), 0.0_wp, abs=1.0e-10_wp, message="backward y2")
+      call check(ctx, y_out(1, 2), cos(2.5_wp), abs=1.0e-10_wp, message="backward dense output")
+      seen = 0
+      t = 0.0_wp
+      y = [1.0_wp, 0.0_wp]
+      call rk_integrate(oscillator, t, 10.0_wp, y, rk_options_t(rtol=1.0e-8_wp, atol=1.0e-8_wp), stats, error, &
+                        observer=stop_after_three)
+      call check(ctx, .not. allocated(error), "stopping is not an error")
+      call check(ctx, seen == 4 .and. stats%n_steps == 3, "observer called at start and after 3 steps")
+      call check(ctx, t > 0.0_wp .and. t < 10.0_wp, "stopped inside the interval")
+      call check(ctx, y(1), cos(t), abs=1.0e-7_wp, message="state at the stop")
+      ! t_out rejected when out of order
+      call rk_integrate(oscillator, t, 10.0_wp, y, rk_options_t(), stats, error, t_out=[9.0_wp, 8.0_wp], &
+                        y_out=y_out(:, 1:2))
+      call check(ctx, allocated(error), "unordered t_out rejected")
+   contains
+      subroutine stop_after_three(step, stop)
+         type(rk_step_t), intent(in) :: step
+         logical, intent(inout) :: stop
+         seen = seen + 1
+         stop = step%index >= 3
+      end subroutine stop_after_three
+   end subroutine backward_and_observer
+
+   !> Failures are reported through error_t and leave a finite state behind.
+   subroutine error_paths(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: t, y(4)
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      ! too many steps
+      t = 0.0_wp
+      y = arenstorf_start
+      call rk_integrate(three_body, t, arenstorf_period, y, rk_options_t(rtol=1.0e-10_wp, atol=1.0e-10_wp, &
+                        max_steps=20), stats, error)
+      call check(ctx, allocated(error), "max_steps: error")
+      if (allocated(error)) then
+         call check(ctx, error%code == err_integration .and. index(error%message, "max_steps") > 0, &
+            "max_steps: code and message")
+      end if
+      call check(ctx, all(ieee_is_finite(y)) .and. t > 0.0_wp .and. t < arenstorf_period, "max_steps: state kept")
+      ! non-finite derivative
+      t = 0.0_wp
+      y(1:2) = [1.0_wp, 0.0_wp]
+      call rk_integrate(infinite_after_half, t, 1.0_wp, y(1:2), rk_options_t(), stats, error)
+      call check(ctx, allocated(error), "non-finite: error")
+      if (allocated(error)) then
+         call check(ctx, error%code == err_integration .and. index(error%message, "non-finite") > 0, &
+            "non-finite: code and message")
+      end if
+      call check(ctx, all(ieee_is_finite(y(1:2))) .and. t <= 0.5_wp, "non-finite: last good state kept")
+      ! the same in fixed-step mode
+      t = 0.0_wp
+      y(1:2) = [1.0_wp, 0.0_wp]
+      call rk_integrate(infinite_after_half, t, 1.0_wp, y(1:2), rk_options_t(method=rk_dopri5, fixed_steps=10), &
+                        stats, error)
+      call check(ctx, allocated(error) .and. all(ieee_is_finite(y(1:2))), "non-finite fixed-step: error")
+      ! step-size underflow: y' = y², y(0) = 1 blows up at t = 1
+      t = 0.0_wp
+      y(1:1) = [1.0_wp]
+      call rk_integrate(blow_up, t, 2.0_wp, y(1:1), rk_options_t(rtol=1.0e-8_wp, atol=1.0e-8_wp), stats, error)
+      call check(ctx, allocated(error), "blow-up: error")
+      if (allocated(error)) then
+         write (*, '(4x,a)') "blow-up: "//error%message
+         call check(ctx, error%code == err_integration .and. index(error%message, "underflow") > 0, &
+            "blow-up: step size underflow")
+      end if
+      call check(ctx, ieee_is_finite(y(1)) .and. abs(t - 1.0_wp) < 1.0e-6_wp, "blow-up: stopped at t = 1")
+      ! invalid options
+      t = 0.0_wp
+      y(1:2) = [1.0_wp, 0.0_wp]
+      call rk_integrate(oscillator, t, 1.0_wp, y(1:2), rk_options_t(atol=0.0_wp), stats, error)
+      call check(ctx, allocated(error), "atol = 0 rejected")
+      if (allocated(error)) call check(ctx, error%code == err_invalid_parameter, "atol = 0: code")
+      call rk_integrate(oscillator, t, 1.0_wp, y(1:2), rk_options_t(method=7), stats, error)
+      call check(ctx, allocated(error), "unknown method rejected")
+   contains
+      subroutine infinite_after_half(tau, state, dydt)
+         real(wp), intent(in) :: tau, state(:)
+         real(wp), intent(out) :: dydt(:)
+         dydt = [state(2), -state(1)]
+         if (tau > 0.5_wp) dydt(2) = ieee_value(1.0_wp, ieee_positive_inf)
+      end subroutine infinite_after_half
+      subroutine blow_up(tau, state, dydt)
+         real(wp), intent(in) :: tau, state(:)
+         real(wp), intent(out) :: dydt(:)
+         dydt = state**2
+      end subroutine blow_up
+   end subroutine error_paths
+
+   ! ----------------------------------------------------------------------------------
+   ! Hill monodromy
+   ! ----------------------------------------------------------------------------------
+
+   !> The half-period identity M = [[uv'+u'v, 2vv'], [2uu', uv'+u'v]] against a direct
+   !> integration of the fundamental matrix over the full period [0, 2].
+   subroutine half_equals_full_period(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: alphas(3) = [1.48_wp, 5.0_wp, 9.0_wp], betas(3) = [2.47_wp, -3.0_wp, 12.0_wp]
+      real(wp) :: half(2, 2), full(2, 2), t, y(4)
+      type(hill_model_t) :: model
+      type(scaled_matrix_t) :: m
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      integer :: i, k
+      do i = 1, size(alphas)
+         do k = model_elastic, model_mathieu
+            model = hill_model_t(k, alphas(i), betas(i), 0.0_wp)
+            call monodromy_rk(model, 1.0e-12_wp, m, stats, error)
+            call check(ctx, .not. allocated(error), "monodromy_rk succeeds")
+            half = matrix_of(m)
+            t = 0.0_wp
+            y = [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]
+            call rk_integrate(columns, t, 2.0_wp, y, rk_options_t(rtol=1.0e-13_wp, atol=1.0e-13_wp), error=error)
+            call check(ctx, .not. allocated(error), "full-period integration succeeds")
+            full = reshape(y, [2, 2])
+            call check(ctx, maxval(abs(half - full)) < 1.0e-10_wp*max(1.0_wp, maxval(abs(full))), &
+               "half-period M = full-period M")
+         end do
+      end do
+   contains
+      subroutine columns(tau, state, dydt)
+         real(wp), intent(in) :: tau, state(:)
+         real(wp), intent(out) :: dydt(:)
+         real(wp) :: q
+         q = hill_coefficient(model, tau)
+         dydt = [state(2), -q*state(1), state(4), -q*state(3)]
+      end subroutine columns
+   end subroutine half_equals_full_period
+
+   !> S by trace_rk against the segmented product with exact averages, Richardson-
+   !> extrapolated from N = 2^15 and 2^16 pieces (second order), and the RK4 reference.
+   subroutine trace_vs_references(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: alphas(4) = [0.5_wp, 3.7_wp, 7.88_wp, 9.8_wp], betas(3) = [0.76_wp, 2.47_wp, 3.95_wp]
+      real(wp) :: coarse, fine, reference, m4(2, 2), scale_s
+      type(hill_model_t) :: model
+      type(trace_t) :: tr
+      type(error_t), allocatable :: error
+      integer :: i, j, method
+      character(len=64) :: label
+      do i = 1, size(alphas)
+         do j = 1, size(betas)
+            model = hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp)
+            coarse = value_of(trace_segmented(model, 2**15, sampling_average))
+            fine = value_of(trace_segmented(model, 2**16, sampling_average))
+            reference = (4.0_wp*fine - coarse)/3.0_wp
+            scale_s = max(1.0_wp, abs(reference))
+            write (label, '(a,f5.2,a,f5.2)') "alpha=", alphas(i), " beta=", betas(j)
+            do method = rk_dopri5, rk_dop853
+               call trace_rk(model, 1.0e-10_wp, tr, error, method=method)
+               call check(ctx, .not. allocated(error), "trace_rk succeeds")
+               ! the reference itself is good to ~1e-12 relative (difference to a 1e-15 run)
+               call check(ctx, tr%value, reference, abs=1.0e-10_wp*scale_s, &
+                  message=trim(label)//" vs segmented "//rk_method_name(method))
+            end do
+            if (alphas(i) < 9.0_wp) then
+               m4 = rk4_monodromy(model, 0.0_wp, 4000)
+               call check(ctx, tr%value, m4(1, 1) + m4(2, 2), abs=1.0e-8_wp*scale_s, message=trim(label)//" vs rk4")
+            end if
+         end do
+      end do
+   end subroutine trace_vs_references
+
+   !> det M = (u v' − u' v)² = 1.
+   subroutine unit_determinant(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: alphas(4) = [0.0_wp, 4.0_wp, 8.0_wp, 9.8_wp], betas(4) = [-2.0_wp, 2.47_wp, 6.0_wp, 12.0_wp]
+      type(scaled_matrix_t) :: m
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      real(wp) :: plain(2, 2)
+      integer :: i, j
+      do i = 1, size(alphas)
+         do j = 1, size(betas)
+            call monodromy_rk(hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp), 1.0e-12_wp, m, stats, error)
+            call check(ctx, .not. allocated(error), "monodromy_rk succeeds")
+            plain = matrix_of(m)
+            ! the determinant of a matrix with entries ~E is known to ~E² · 1e-16
+            call check(ctx, determinant(plain), 1.0_wp, abs=1.0e-12_wp*max(1.0_wp, maxval(abs(plain))**2*1.0e-3_wp))
+         end do
+      end do
+   end subroutine unit_determinant
+
+   !> α = 9.8 with β = −50, 400 and −400: finite, consistent with the segmented product;
+   !> a coefficient so negative that S overflows is rescaled, not NaN.
+   subroutine hard_cases(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: betas(3) = [-50.0_wp, 400.0_wp, -400.0_wp], coarse, fine, reference
+      type(hill_model_t) :: model
+      type(trace_t) :: tr, segmented
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      integer :: j
+      do j = 1, size(betas)
+         model = hill_model_t(model_elastic, 9.8_wp, betas(j), 0.0_wp)
+         call trace_rk(model, 1.0e-10_wp, tr, error, stats)
+         call check(ctx, .not. allocated(error), "trace_rk succeeds")
+         call check(ctx, ieee_is_finite(tr%value) .and. ieee_is_finite(tr%log_abs) .and. .not. tr%overflow, "finite")
+         coarse = value_of(trace_segmented(model, 2**15, sampling_average))
+         fine = value_of(trace_segmented(model, 2**16, sampling_average))
+         reference = (4.0_wp*fine - coarse)/3.0_wp
+         write (*, '(4x,a,f7.1,a,es22.14,a,es9.2,a,i0)') "alpha=9.8 beta=", betas(j), ": S = ", tr%value, &
+            ", rel. diff to segmented ", abs(tr%value - reference)/max(1.0_wp, abs(reference)), &
+            ", Q evaluations ", stats%n_evaluations
+         call check(ctx, tr%value, reference, abs=1.0e-9_wp*max(1.0_wp, abs(reference)), message="vs segmented")
+      end do
+      ! S ~ e^2000: the pairs are rescaled on the way and the trace is flagged as overflowing
+      model = hill_model_t(model_elastic, 9.86_wp, -1.0e5_wp, 0.0_wp)
+      call trace_rk(model, 1.0e-8_wp, tr, error, stats)
+      call check(ctx, .not. allocated(error), "extreme case succeeds")
+      segmented = trace_segmented(model, 2**16, sampling_average)
+      write (*, '(4x,a,es12.5,a,es12.5,a,i0)') "alpha=9.86 beta=-1e5: ln S = ", tr%log_abs, " (segmented ", &
+         segmented%log_abs, "), Q evaluations ", stats%n_evaluations
+      call check(ctx, tr%overflow .and. ieee_is_finite(tr%log_abs), "overflow flagged, log finite")
+      call check(ctx, tr%log_abs, segmented%log_abs, rel=1.0e-6_wp, message="ln S vs segmented")
+   end subroutine hard_cases
+
+   !> monodromy_trace dispatches method_rk; evaluation counts at tolerance 1e-10.
+   subroutine dispatch_and_work(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: points(2, 5)
+      type(hill_model_t) :: model
+      type(trace_t) :: tr, direct
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      integer :: i
+      points = reshape([1.48_wp, 2.47_wp, 3.7_wp, 2.47_wp, 7.88_wp, 3.95_wp, 9.8_wp, 2.47_wp, 9.8_wp, pi2/4], [2, 5])
+      do i = 1, size(points, 2)
+         model = hill_model_t(model_elastic, points(1, i), points(2, i), 0.0_wp)
+         call monodromy_trace(model, method_t(method_rk, tolerance=1.0e-10_wp), tr, error)
+         call check(ctx, .not. allocated(error), "method_rk available")
+         call trace_rk(model, 1.0e-10_wp, direct, error, stats)
+         call check(ctx, tr%value == direct%value, "dispatcher = trace_rk")
+         call check(ctx, stats%n_evaluations > 0 .and. stats%n_steps > 0, "work counted")
+         write (*, '(4x,a,f5.2,a,f5.2,a,es20.12,a,i0,a,i0,a,i0)') "alpha=", points(1, i), " beta=", points(2, i), &
+            ": S = ", tr%value, ", Q evaluations ", stats%n_evaluations, ", steps ", stats%n_steps, &
+            ", rejected ", stats%n_rejected
+      end do
+      ! damping: the χ equation carries −ε²/4
+      model = hill_model_t(model_mathieu, 1.0_wp, 2.0_wp, 0.6_wp)
+      call trace_rk(model, 1.0e-10_wp, tr, error)
+      direct = trace_segmented(model, 2**15, sampling_average)
+      call check(ctx, tr%value, direct%value, abs=1.0e-8_wp, message="damped mathieu vs segmented")
+      call trace_rk(hill_model_t(model_elastic, 10.0_wp, 1.0_wp, 0.0_wp), 1.0e-10_wp, tr, error)
+      call check(ctx, allocated(error), "alpha > pi**2 rejected")
+      call trace_rk(model, 0.0_wp, tr, error)
+      call check(ctx, allocated(error), "tolerance 0 rejected")
+      call trace_rk(model, 1.0e-10_wp, tr, error, method=9)
+      call check(ctx, allocated(error), "unknown method rejected")
+   end subroutine dispatch_and_work
+end module test_rk
