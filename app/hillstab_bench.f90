@@ -15,6 +15,7 @@ program hillstab_bench
    end type sample_t
 
    type(sample_t), allocatable :: samples(:)
+   character(len=:), allocatable :: block_names
    real(wp), allocatable :: truth(:)
    character(len=256) :: prefix, arg
    logical :: quick
@@ -62,6 +63,7 @@ program hillstab_bench
    write (output_unit, '(a)') "Work-precision over the sample (time per point, error scaled by max(1,|S|))"
    write (output_unit, '(a10,a12,a14,a12,a12,a12)') "method", "setting", "us/point", "max error", &
       "mean error", "Q evals"
+   block_names = ""
    call sweep_formula(unit)
    call sweep_segments(unit, sampling_midpoint, quick)
    call sweep_segments(unit, sampling_average, quick)
@@ -72,6 +74,9 @@ program hillstab_bench
    call sweep_tolerance(unit, method_auto, quick)
    close (unit)
    write (output_unit, '(a)') "wrote "//trim(prefix)//"_work_precision.dat"
+   open (newunit=unit, file=trim(prefix)//"_methods.gp", status="replace", action="write")
+   write (unit, '(a)') 'names = "'//trim(adjustl(block_names))//'"'
+   close (unit)
 
    call beta_cost(trim(prefix)//"_beta_cost.dat")
 
@@ -166,15 +171,18 @@ contains
       seconds = real(t1 - t0, wp)/rate/(max(1, repeats)*size(samples))
    end subroutine measure
 
-   subroutine report(unit, name, setting, method)
+   subroutine report(unit, name, setting, method, written)
       integer, intent(in) :: unit
       character(len=*), intent(in) :: name
       real(wp), intent(in) :: setting
       type(method_t), intent(in) :: method
+      logical, intent(inout) :: written  !! a line of this block was written
       real(wp) :: seconds, max_err, mean_err, evals
       logical :: ok
       call measure(method, seconds, max_err, mean_err, evals, ok)
       if (.not. ok) return
+      if (.not. written) block_names = block_names//" "//name
+      written = .true.
       write (unit, '(a,1x,es10.3,4(1x,es12.5))') name, setting, seconds, max_err, mean_err, evals
       write (output_unit, '(a10,es12.2,f14.2,es12.2,es12.2,f12.1)') name, setting, 1.0e6_wp*seconds, max_err, &
          mean_err, evals
@@ -182,30 +190,37 @@ contains
 
    subroutine sweep_formula(unit)
       integer, intent(in) :: unit
-      call report(unit, "formula", 2.0_wp, method_t(method_formula))
-      write (unit, '(/)')
+      logical :: written
+      written = .false.
+      call report(unit, "formula", 2.0_wp, method_t(method_formula), written)
+      if (written) write (unit, '(/)')
    end subroutine sweep_formula
 
    subroutine sweep_segments(unit, sampling, quick)
       integer, intent(in) :: unit, sampling
       logical, intent(in) :: quick
       integer :: n
+      logical :: written
+      written = .false.
       n = 4
       do while (n <= merge(4096, 65536, quick))
-         call report(unit, "seg-"//sampling_name(sampling), real(n, wp), method_t(method_segments, n, sampling))
+         call report(unit, "seg-"//sampling_name(sampling), real(n, wp), method_t(method_segments, n, sampling), &
+            written)
          n = 4*n
       end do
-      write (unit, '(/)')
+      if (written) write (unit, '(/)')
    end subroutine sweep_segments
 
    subroutine sweep_tolerance(unit, kind, quick)
       integer, intent(in) :: unit, kind
       logical, intent(in) :: quick
       integer :: p
+      logical :: written
+      written = .false.
       do p = 3, 12, merge(3, 1, quick)
-         call report(unit, method_name(kind), 10.0_wp**(-p), method_t(kind, tolerance=10.0_wp**(-p)))
+         call report(unit, method_name(kind), 10.0_wp**(-p), method_t(kind, tolerance=10.0_wp**(-p)), written)
       end do
-      write (unit, '(/)')
+      if (written) write (unit, '(/)')
    end subroutine sweep_tolerance
 
    !> Cost per point of `auto` and GSL at tolerance 1e-10 as β grows (α = 5 and 9.8).
