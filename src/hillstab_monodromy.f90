@@ -12,6 +12,8 @@ module hillstab_monodromy
    use hillstab_transfer, only: scaled_matrix_t, scaled_identity, multiply_transfer, multiply_matrix, &
       trace_t, trace_of
    use hillstab_formulas, only: trace_damped_paper, trace_mathieu_two_segment
+   use hillstab_magnus, only: trace_magnus
+   use hillstab_stats, only: work_stats_t
    implicit none
    private
    public :: method_t, method_auto, method_formula, method_segments, method_magnus4, method_magnus6, &
@@ -108,6 +110,7 @@ contains
       type(method_t), intent(in) :: method
       type(trace_t), intent(out) :: tr
       type(error_t), allocatable, intent(out) :: error
+      type(work_stats_t) :: stats
       call check_model(model, error)
       if (allocated(error)) return
       select case (method%kind)
@@ -127,6 +130,10 @@ contains
             return
          end if
          tr = trace_segmented(model, method%n_segments, method%sampling)
+      case (method_magnus4)
+         call trace_magnus(model, 4, method%tolerance, tr, stats, error)
+      case (method_magnus6)
+         call trace_magnus(model, 6, method%tolerance, tr, stats, error)
       case default
          call set_error(error, err_invalid_parameter, "method '"//method_name(method%kind)// &
             "' is not available in this build")
