@@ -24,7 +24,7 @@
 !> the march; if it exceeds the tolerance every step is subdivided and the check
 !> repeated. An embedded 4(6) pair was not used: its estimate is the O(h⁵) error of
 !> the order-4 member, so the step count would grow like tolerance^{−1/4} instead of
-!> tolerance^{−1/6} (about 10× more steps than needed at 1e-10).
+!> tolerance^{−1/6}.
 !>
 !>```fortran
 !> type(trace_t) :: tr
