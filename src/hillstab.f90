@@ -16,6 +16,7 @@ module hillstab
    use hillstab_transfer
    use hillstab_formulas
    use hillstab_floquet
+   use hillstab_magnus
    use hillstab_monodromy
    use hillstab_gsl
    use hillstab_rk

@@ -15,6 +15,7 @@ module hillstab_monodromy
    use hillstab_stats, only: work_stats_t
    use hillstab_gsl, only: trace_gsl
    use hillstab_monodromy_rk, only: trace_rk
+   use hillstab_magnus, only: trace_magnus
    implicit none
    private
    public :: method_t, method_auto, method_formula, method_segments, method_magnus4, method_magnus6, &
@@ -113,6 +114,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(work_stats_t), intent(out), optional :: stats  !! work done (Q evaluations, steps)
       type(work_stats_t) :: work
+      type(work_stats_t) :: stats
       call check_model(model, error)
       if (allocated(error)) return
       select case (method%kind)
@@ -138,6 +140,10 @@ contains
          call trace_gsl(model, method%tolerance, tr, work, error)
       case (method_rk)
          call trace_rk(model, method%tolerance, tr, error, work)
+      case (method_magnus4)
+         call trace_magnus(model, 4, method%tolerance, tr, work, error)
+      case (method_magnus6)
+         call trace_magnus(model, 6, method%tolerance, tr, work, error)
       case default
          call set_error(error, err_invalid_parameter, "method '"//method_name(method%kind)// &
             "' is not available in this build")
