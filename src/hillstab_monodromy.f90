@@ -114,7 +114,6 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(work_stats_t), intent(out), optional :: stats  !! work done (Q evaluations, steps)
       type(work_stats_t) :: work
-      type(work_stats_t) :: stats
       call check_model(model, error)
       if (allocated(error)) return
       select case (method%kind)
