@@ -17,6 +17,7 @@ module hillstab
    use hillstab_formulas
    use hillstab_floquet
    use hillstab_magnus
+   use hillstab_auto
    use hillstab_monodromy
    use hillstab_gsl
    use hillstab_rk

@@ -16,6 +16,7 @@ module hillstab_monodromy
    use hillstab_gsl, only: trace_gsl
    use hillstab_monodromy_rk, only: trace_rk
    use hillstab_magnus, only: trace_magnus
+   use hillstab_auto, only: trace_auto
    implicit none
    private
    public :: method_t, method_auto, method_formula, method_segments, method_magnus4, method_magnus6, &
@@ -139,6 +140,8 @@ contains
          call trace_gsl(model, method%tolerance, tr, work, error)
       case (method_rk)
          call trace_rk(model, method%tolerance, tr, error, work)
+      case (method_auto)
+         call trace_auto(model, method%tolerance, tr, work, error)
       case (method_magnus4)
          call trace_magnus(model, 4, method%tolerance, tr, work, error)
       case (method_magnus6)
