@@ -17,6 +17,9 @@ module hillstab
    use hillstab_formulas
    use hillstab_floquet
    use hillstab_monodromy
+   use hillstab_scene
+   use hillstab_output
+   use hillstab_tasks
    implicit none
    public
 end module hillstab
