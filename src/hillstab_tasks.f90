@@ -134,10 +134,9 @@ contains
       else
          model_text = "model: mathieu, q(tau) = beta - alpha cos(pi tau), eq. (A1), alpha playing nu"
       end if
-      lines = [character(len=max(len(groups), 200)) :: &
-         "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau", &
-         "scene file: "//scene%source//" (the two namelist lines below repeat this run)", &
-         groups(1), groups(2), model_text]
+      lines = stacked(["hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau"], &
+                      stacked(["scene file: "//scene%source//" (the two namelist lines below repeat this run)"], &
+                              stacked(groups, [model_text])))
    end function common_header
 
    !> Header lines describing the chart/points columns.
@@ -162,7 +161,7 @@ contains
       if (outside) then
          n = n + 1; extra(n) = "note: this file leaves the physical domain (rows with physical = 0)"
       end if
-      lines = [character(len=max(200, len(common_header(scene)))) :: common_header(scene), extra(:n)]
+      lines = stacked(common_header(scene), extra(:n))
    end function chart_header
 
    function method_description(scene) result(text)
@@ -176,6 +175,15 @@ contains
          text = text//", tolerance "//real_text(scene%method%tolerance)
       end if
    end function method_description
+
+   !> The lines of a followed by those of b, at the longer of their lengths.
+   pure function stacked(a, b) result(c)
+      character(len=*), intent(in) :: a(:), b(:)
+      character(len=:), allocatable :: c(:)
+      allocate (character(len=max(len(a), len(b))) :: c(size(a) + size(b)))
+      c(:size(a)) = a
+      c(size(a) + 1:) = b
+   end function stacked
 
    !> The chart task.
    subroutine run_chart(scene, quiet, error)
@@ -320,7 +328,7 @@ contains
       type(output_file_t) :: file
       type(hill_model_t) :: model
       real(wp), allocatable :: pieces(:, :), row(:)
-      character(len=:), allocatable :: columns, lines(:)
+      character(len=:), allocatable :: columns, lines(:), q_line, segments_line, columns_line
       real(wp) :: tau, h
       integer :: i, k, n_alpha, n_pieces, piece
 
@@ -335,13 +343,12 @@ contains
          columns = columns//" Q("//real_text(scene%coefficient%alphas(k))//") Qseg("// &
             real_text(scene%coefficient%alphas(k))//")"
       end do
-      lines = common_header(scene)
-      lines = [character(len=max(200, len(lines))) :: lines, &
-         "Q: the coefficient at beta = "//real_text(scene%coefficient%beta)// &
-         " (minus epsilon^2/4 when epsilon > 0: the chi equation (47))", &
-         "Qseg: Q replaced by "//integer_text(n_pieces)//" constant pieces on [0, 2), sampling "// &
-         sampling_name(scene%method%sampling)//" (2 pieces, endpoint: eq. (28) of the paper)", &
-         "columns Q(a) and Qseg(a) belong to alpha = a"]
+      q_line = "Q: the coefficient at beta = "//real_text(scene%coefficient%beta)// &
+               " (minus epsilon^2/4 when epsilon > 0: the chi equation (47))"
+      segments_line = "Qseg: Q replaced by "//integer_text(n_pieces)//" constant pieces on [0, 2), sampling "// &
+                      sampling_name(scene%method%sampling)//" (2 pieces, endpoint: eq. (28) of the paper)"
+      columns_line = "columns Q(a) and Qseg(a) belong to alpha = a"
+      lines = stacked(common_header(scene), stacked([q_line], stacked([segments_line], [columns_line])))
 
       call open_scene_output(scene, file, error)
       if (allocated(error)) return

@@ -6,11 +6,13 @@ program tester
    use test_formulas, only: collect_formulas
    use test_floquet, only: collect_floquet
    use test_monodromy, only: collect_monodromy
+   use test_scene, only: collect_scene
+   use test_tasks, only: collect_tasks
    implicit none
    type(testsuite_t), allocatable :: suites(:)
    integer :: n_failed
    suites = [collect_coefficient(), collect_transfer(), collect_formulas(), collect_floquet(), &
-             collect_monodromy()]
+             collect_monodromy(), collect_scene(), collect_tasks()]
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester
