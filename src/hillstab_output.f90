@@ -153,19 +153,20 @@ contains
       logical, intent(in) :: damped     !! write the stable_paper column
       logical, intent(in) :: physical   !! (α, β) inside the physical domain
       character(len=chart_line_length) :: line
-      real(wp) :: s, lambda_max, log10_abs_s
+      real(wp) :: s, lambda_max, log10_abs_s, mu
       logical :: overflow
       s = f%trace%value
       overflow = f%trace%overflow .or. abs(s) > clamp_magnitude
       if (overflow) s = sign(clamp_magnitude, s)
       lambda_max = min(largest_multiplier_modulus(f), clamp_magnitude)
       log10_abs_s = max(f%trace%log_abs/log(10.0_wp), log10_floor)
+      mu = f%exponent + 0.0_wp  ! no "-0.0" in the file
       if (damped) then
          write (line, '(2(es24.16e3,1x),es24.16e3,i2,3(1x,es17.9e3),3i2)') alpha, beta, s, flag(f%stable), &
-            lambda_max, f%exponent, log10_abs_s, flag(overflow), flag(physical), flag(f%stable_paper)
+            lambda_max, mu, log10_abs_s, flag(overflow), flag(physical), flag(f%stable_paper)
       else
          write (line, '(2(es24.16e3,1x),es24.16e3,i2,3(1x,es17.9e3),2i2)') alpha, beta, s, flag(f%stable), &
-            lambda_max, f%exponent, log10_abs_s, flag(overflow), flag(physical)
+            lambda_max, mu, log10_abs_s, flag(overflow), flag(physical)
       end if
    end function chart_line
 

@@ -347,7 +347,7 @@ contains
                " (minus epsilon^2/4 when epsilon > 0: the chi equation (47))"
       segments_line = "Qseg: Q replaced by "//integer_text(n_pieces)//" constant pieces on [0, 2), sampling "// &
                       sampling_name(scene%method%sampling)//" (2 pieces, endpoint: eq. (28) of the paper)"
-      columns_line = "columns Q(a) and Qseg(a) belong to alpha = a"
+      columns_line = "Q(a), Qseg(a): the two columns of alpha = a"
       lines = stacked(common_header(scene), stacked([q_line], stacked([segments_line], [columns_line])))
 
       call open_scene_output(scene, file, error)
@@ -391,6 +391,7 @@ contains
       integer(int64) :: now
       real(wp) :: elapsed, since_last, rate, left, interval
       character(len=160) :: text
+      character(len=12) :: left_text
       if (.not. progress%enabled) return
       call system_clock(now)
       elapsed = real(now - progress%start, wp)/progress%ticks
@@ -400,8 +401,10 @@ contains
       if (progress%shown .and. since_last < interval .and. done < progress%total) return
       rate = real(done, wp)/elapsed
       left = real(progress%total - done, wp)/max(rate, tiny(1.0_wp))
-      write (text, '(a,f5.1,a,i0,a,i0,a,es9.2,a,f0.1,a)') "hillstab: ", 100.0_wp*done/progress%total, "% (", &
-         done, " of ", progress%total, " points, ", rate, " points/s, ", left, " s left)"
+      write (left_text, '(f12.1)') left
+      write (text, '(a,f5.1,a,i0,a,i0,a,i0,a)') "hillstab: ", 100.0_wp*done/progress%total, "% (", &
+         done, " of ", progress%total, " points, ", nint(rate, int64), " points/s, "
+      text = trim(text)//" "//trim(adjustl(left_text))//" s left)"
       if (progress%terminal) then
          write (error_unit, '(a)', advance="no") achar(13)//trim(text)//"   "
       else
