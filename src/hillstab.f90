@@ -22,6 +22,9 @@ module hillstab
    use hillstab_gsl
    use hillstab_rk
    use hillstab_monodromy_rk
+   use hillstab_scene
+   use hillstab_output
+   use hillstab_tasks
    implicit none
    public
 end module hillstab

@@ -10,11 +10,14 @@ program tester
    use test_gsl, only: collect_gsl
    use test_rk, only: collect_rk
    use test_magnus, only: collect_magnus
+   use test_scene, only: collect_scene
+   use test_tasks, only: collect_tasks
    implicit none
    type(testsuite_t), allocatable :: suites(:)
    integer :: n_failed
    suites = [collect_coefficient(), collect_transfer(), collect_formulas(), collect_floquet(), &
-             collect_monodromy(), collect_capi(), collect_gsl(), collect_rk(), collect_magnus()]
+             collect_monodromy(), collect_capi(), collect_gsl(), collect_rk(), collect_magnus(), &
+             collect_scene(), collect_tasks()]
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

@@ -1,0 +1,93 @@
+!> The hillstab command line: `hillstab [--quiet] SCENE.nml...`, `--help`, `--version`.
+!>
+!> Runs each scene in turn. Output goes to files named in the scenes; progress
+!> and errors go to stderr; stdout carries only --help and --version.
+!> Exit status: 0 on success, 2 for bad input (scene, points file, output path,
+!> command line), 1 when a computation fails.
+program hillstab_cli
+   use hillstab_kinds, only: version_string
+   use hillstab_error, only: error_t, err_input, err_io, err_invalid_parameter
+   use hillstab_tasks, only: run_scene_file
+   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+   use, intrinsic :: ieee_arithmetic, only: ieee_set_flag, ieee_all
+   implicit none
+   type(error_t), allocatable :: error
+   character(len=:), allocatable :: argument, written
+   character(len=:), allocatable :: scenes(:)
+   logical :: quiet
+   integer :: i, n_scenes
+
+   quiet = .false.
+   n_scenes = 0
+   allocate (character(len=4096) :: scenes(command_argument_count()))
+   do i = 1, command_argument_count()
+      argument = command_argument(i)
+      select case (argument)
+      case ("-h", "--help")
+         call print_help()
+         stop
+      case ("-V", "--version")
+         write (output_unit, '(a)') "hillstab "//version_string
+         stop
+      case ("-q", "--quiet")
+         quiet = .true.
+      case default
+         if (len(argument) > 1 .and. argument(1:1) == "-") then
+            call quit("hillstab: unknown option '"//argument//"' (see hillstab --help)", 2)
+         end if
+         n_scenes = n_scenes + 1
+         scenes(n_scenes) = argument
+      end select
+   end do
+   if (n_scenes == 0) call quit("usage: hillstab [--quiet] SCENE.nml... (see hillstab --help)", 2)
+
+   do i = 1, n_scenes
+      call run_scene_file(trim(scenes(i)), quiet, error, written)
+      if (allocated(error)) then
+         select case (error%code)
+         case (err_input, err_io, err_invalid_parameter)
+            call quit("hillstab: "//error%message, 2)
+         case default
+            call quit("hillstab: "//error%message, 1)
+         end select
+      end if
+      if (.not. quiet) write (error_unit, '(a)') "hillstab: wrote "//written
+   end do
+
+contains
+
+   function command_argument(i) result(text)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: text
+      integer :: length
+      call get_command_argument(i, length=length)
+      allocate (character(len=length) :: text)
+      call get_command_argument(i, text)
+   end function command_argument
+
+   !> One message on stderr, then exit with `status` (silently: no STOP banner,
+   !> no floating-point summary).
+   subroutine quit(message, status)
+      character(len=*), intent(in) :: message
+      integer, intent(in) :: status
+      write (error_unit, '(a)') message
+      call ieee_set_flag(ieee_all, .false.)
+      stop status, quiet=.true.
+   end subroutine quit
+
+   subroutine print_help()
+      write (output_unit, '(a)') &
+         "usage: hillstab [--quiet] SCENE.nml...", &
+         "", &
+         "Stability charts of the elastic pendulum (Hill equation x'' + Q(tau) x = 0).", &
+         "Each SCENE is a namelist file (&scene plus &chart, &points or &coefficient);", &
+         "results go to <output>_<task>.dat, gnuplot-ready. An output file can be given", &
+         "as SCENE to repeat its run. The README has the full namelist reference.", &
+         "", &
+         "  -q, --quiet    no progress or messages on stderr (errors still)", &
+         "  -h, --help     this text", &
+         "  -V, --version  the version", &
+         "", &
+         "Exit status: 0 success, 2 bad input, 1 a computation failed."
+   end subroutine print_help
+end program hillstab_cli

@@ -1,0 +1,22 @@
+# out/damped.png: damped swing (eqs. 46-48), ε = 1. Left: the correct verdict
+# |S₁| < 2 cosh ε (multipliers of x inside the unit circle); right: the paper's
+# |S₁| ≤ 2, only sufficient. Needs out/damped_chart.dat (columns 4 and 10).
+set encoding utf8
+set terminal pngcairo size 1500,650 font "Sans,11"
+set output 'out/damped.png'
+pi2 = pi**2
+set palette defined (0 "#f3efe6", 1 "#23406e")
+set cbrange [0:1]
+unset colorbox
+set xrange [0:9.8]
+set yrange [-2:12]
+set xlabel "α = aπ²/ρ"
+set ylabel "β = gπ²/(ρω²)"
+set arrow 1 from 0,0 to 9.8,0 nohead dt 2 lw 1.2 lc "#888888" front
+set arrow 2 from 0,pi2 to 9.8,pi2 nohead dt 2 lw 1.2 lc "#888888" front
+set multiplot layout 1,2 title "Damped swing, ε = κπ/ω = 1 (exact S₁; dark = asymptotically stable)" font ",13"
+set title "correct: |S₁| < 2 cosh ε"
+plot 'out/damped_chart.dat' using 1:2:4 with image notitle
+set title "the paper: |S₁| ≤ 2, only sufficient: part of the stable region shown unstable"
+plot 'out/damped_chart.dat' using 1:2:10 with image notitle
+unset multiplot

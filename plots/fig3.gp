@@ -1,0 +1,32 @@
+# out/fig3.png: the paper's Fig. 3 redrawn: its eq. (37) chart (filled, dark =
+# stable) with the exact boundary |S| = 2 drawn over it, and the Fig. 4 points.
+# Needs out/default_paper_chart.dat, out/default_exact_chart.dat, out/fig4_points.dat.
+set encoding utf8
+set terminal pngcairo size 900,720 font "Sans,11"
+set output 'out/fig3.png'
+pi2 = pi**2
+
+# the exact boundary: contour log10|S| = log10 2 of the exact chart
+set contour base
+set cntrparam levels discrete log10(2.0)
+unset surface
+set view map
+set table $boundary
+splot 'out/default_exact_chart.dat' using 1:2:7 with lines notitle
+unset table
+unset contour
+
+set palette defined (0 "#f3efe6", 1 "#23406e")
+set cbrange [0:1]
+unset colorbox
+set xrange [0:9.8]
+set yrange [-2:12]
+set xlabel "α = aπ²/ρ"
+set ylabel "β = gπ²/(ρω²)"
+set key bottom right box opaque samplen 2 font ",10"
+set arrow 1 from 0,pi2/4 to 9.8,pi2/4 nohead dt 3 lw 1.2 lc "#c05020" front
+set title "Fig. 3: the paper's eq. (37) chart (dark = stable) and the exact boundary |S| = 2"
+plot 'out/default_paper_chart.dat' using 1:2:4 with image notitle, \
+     $boundary using 1:2 with lines lw 2 lc "#e08000" title "exact |S| = 2", \
+     'out/fig4_points.dat' using 1:2 with points pt 7 ps 1.3 lc "black" title "Fig. 4 points", \
+     'data/points/fig4.dat' using 1:2:3 with labels offset 1.4,0.6 font ",10" tc "black" notitle

@@ -1,0 +1,40 @@
+# Appendix A figures for the Mathieu equation q(τ) = β − ν cos πτ (eq. A1):
+#   out/figA1.png  the paper's 2-piece trace (A3) alone (Fig. A1),
+#   out/figA3.png  (A3) with the exact Strutt diagram boundary over it (Fig. A3),
+#   out/figA4.png  4 averaged pieces, the paper's (A18), with the exact boundary (Fig. A4).
+# Needs out/figA_formula_chart.dat, out/figA_segments4_chart.dat, out/figA_exact_chart.dat.
+set encoding utf8
+pi2 = pi**2
+
+set contour base
+set cntrparam levels discrete log10(2.0)
+unset surface
+set view map
+set table $strutt
+splot 'out/figA_exact_chart.dat' using 1:2:7 with lines notitle
+unset table
+unset contour
+
+set terminal pngcairo size 800,680 font "Sans,11"
+set palette defined (0 "#f3efe6", 1 "#23406e")
+set cbrange [0:1]
+unset colorbox
+set xrange [0:10]
+set yrange [-2:12]
+set xlabel "ν  (q = β − ν cos πτ)"
+set ylabel "β"
+set key bottom right box opaque samplen 2 font ",10"
+
+set output 'out/figA1.png'
+set title "Fig. A1: Mathieu, 2-piece trace (A3)  (dark = stable)"
+plot 'out/figA_formula_chart.dat' using 1:2:4 with image notitle
+
+set output 'out/figA3.png'
+set title "Fig. A3: (A3), 2 pieces, against the exact Strutt diagram"
+plot 'out/figA_formula_chart.dat' using 1:2:4 with image notitle, \
+     $strutt using 1:2 with lines lw 2 lc "#e08000" title "exact |S| = 2"
+
+set output 'out/figA4.png'
+set title "Fig. A4: 4 averaged pieces (A18) against the exact Strutt diagram"
+plot 'out/figA_segments4_chart.dat' using 1:2:4 with image notitle, \
+     $strutt using 1:2 with lines lw 2 lc "#e08000" title "exact |S| = 2"

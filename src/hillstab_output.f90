@@ -1,0 +1,194 @@
+!> Gnuplot-ready output files: a `#` header, one `# columns:` line, numeric columns.
+!>
+!> Files appear complete or not at all: rows go to `<path>.part<pid>`, which is
+!> renamed onto `<path>` only by `commit_output`; `discard_output` deletes it.
+!> An existing file at `<path>` is never opened, so a failed run leaves it untouched.
+!> This module formats numbers and moves files; it knows nothing of integrators.
+!>
+!>```fortran
+!> type(output_file_t) :: file
+!> type(error_t), allocatable :: error
+!> call open_output(file, "out/run_chart.dat", error)
+!> call write_header(file, ["hillstab 0.1.0"], "alpha beta S", error)
+!> call write_text(file, "1.0 2.0 3.0", error)
+!> call commit_output(file, error)
+!>```
+module hillstab_output
+   use hillstab_kinds, only: wp
+   use hillstab_error, only: error_t, set_error, err_io
+   use hillstab_floquet, only: floquet_t, largest_multiplier_modulus
+   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+   implicit none
+   private
+   public :: output_file_t, open_output, commit_output, discard_output, write_header, write_text
+   public :: chart_columns, chart_line, chart_line_length, clamp_magnitude, log10_floor, real_columns
+   public :: remove_file
+
+   !> Magnitudes beyond this are written as ±clamp_magnitude with the overflow flag set.
+   real(wp), parameter :: clamp_magnitude = 1.0e300_wp
+   !> log10|S| is written as at least this (only S = 0 exactly reaches it).
+   real(wp), parameter :: log10_floor = -300.0_wp
+   !> Characters in one chart line (see `chart_line`).
+   integer, parameter :: chart_line_length = 160
+
+   !> An output file being written under a temporary name.
+   type :: output_file_t
+      integer :: unit = -1                           !! Fortran unit of the temporary file
+      character(len=:), allocatable :: path          !! final name
+      character(len=:), allocatable :: temp_path     !! name while being written
+   end type output_file_t
+
+   interface
+      function c_rename(old, new) bind(C, name="rename") result(status)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: old(*), new(*)
+         integer(c_int) :: status
+      end function c_rename
+      function c_remove(path) bind(C, name="remove") result(status)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int) :: status
+      end function c_remove
+      function c_getpid() bind(C, name="getpid") result(pid)
+         import :: c_int
+         integer(c_int) :: pid
+      end function c_getpid
+   end interface
+
+contains
+
+   !> Open `<path>.part<pid>` for writing; fails (err_io) when the place is not writable.
+   subroutine open_output(file, path, error)
+      type(output_file_t), intent(out) :: file
+      character(len=*), intent(in) :: path  !! final file name
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ios
+      character(len=512) :: msg
+      character(len=24) :: pid
+      write (pid, '(i0)') c_getpid()
+      file%path = path
+      file%temp_path = path//".part"//trim(pid)
+      open (newunit=file%unit, file=file%temp_path, status="replace", action="write", form="formatted", &
+            iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         file%unit = -1
+         call set_error(error, err_io, "cannot write '"//path//"': "//trim(msg))
+      end if
+   end subroutine open_output
+
+   !> Close the temporary file and rename it onto the final name.
+   subroutine commit_output(file, error)
+      type(output_file_t), intent(inout) :: file
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ios
+      character(len=512) :: msg
+      close (file%unit, iostat=ios, iomsg=msg)
+      file%unit = -1
+      if (ios /= 0) then
+         call remove_file(file%temp_path)
+         call set_error(error, err_io, "cannot finish '"//file%path//"': "//trim(msg))
+         return
+      end if
+      if (c_rename(c_string(file%temp_path), c_string(file%path)) /= 0) then
+         call remove_file(file%temp_path)
+         call set_error(error, err_io, "cannot rename '"//file%temp_path//"' to '"//file%path//"'")
+      end if
+   end subroutine commit_output
+
+   !> Close and delete the temporary file; the final name is left as it was.
+   subroutine discard_output(file)
+      type(output_file_t), intent(inout) :: file
+      integer :: ios
+      if (file%unit /= -1) close (file%unit, status="delete", iostat=ios)
+      file%unit = -1
+      if (allocated(file%temp_path)) call remove_file(file%temp_path)
+   end subroutine discard_output
+
+   !> Delete a file if it exists (no error if it does not).
+   subroutine remove_file(path)
+      character(len=*), intent(in) :: path
+      integer(c_int) :: status
+      status = c_remove(c_string(path))
+   end subroutine remove_file
+
+   !> Write the header: each of `lines` after "# ", then "# columns: <columns>".
+   subroutine write_header(file, lines, columns, error)
+      type(output_file_t), intent(inout) :: file
+      character(len=*), intent(in) :: lines(:)  !! header text, one entry a line
+      character(len=*), intent(in) :: columns   !! blank-separated column names
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k
+      do k = 1, size(lines)
+         call write_text(file, "# "//trim(lines(k)), error)
+         if (allocated(error)) return
+      end do
+      call write_text(file, "# columns: "//columns, error)
+   end subroutine write_header
+
+   !> Write one line of text.
+   subroutine write_text(file, line, error)
+      type(output_file_t), intent(inout) :: file
+      character(len=*), intent(in) :: line
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ios
+      character(len=512) :: msg
+      write (file%unit, '(a)', iostat=ios, iomsg=msg) line
+      if (ios /= 0) call set_error(error, err_io, "cannot write '"//file%path//"': "//trim(msg))
+   end subroutine write_text
+
+   !> Column names of chart and points files; `stable_paper` only with damping.
+   pure function chart_columns(damped) result(names)
+      logical, intent(in) :: damped  !! ε > 0
+      character(len=:), allocatable :: names
+      names = "alpha beta S stable lambda_max mu log10_abs_S overflow physical"
+      if (damped) names = names//" stable_paper"
+   end function chart_columns
+
+   !> One chart row: alpha beta S stable lambda_max mu log10_abs_S overflow physical [stable_paper].
+   !> |S| > 1e300 is written as ±1e300 with overflow = 1 (log10_abs_S stays exact);
+   !> lambda_max is clamped the same way; flags are 1 or 0.
+   pure function chart_line(alpha, beta, f, damped, physical) result(line)
+      real(wp), intent(in) :: alpha, beta
+      type(floquet_t), intent(in) :: f  !! Floquet data of the point
+      logical, intent(in) :: damped     !! write the stable_paper column
+      logical, intent(in) :: physical   !! (α, β) inside the physical domain
+      character(len=chart_line_length) :: line
+      real(wp) :: s, lambda_max, log10_abs_s, mu
+      logical :: overflow
+      s = f%trace%value
+      overflow = f%trace%overflow .or. abs(s) > clamp_magnitude
+      if (overflow) s = sign(clamp_magnitude, s)
+      lambda_max = min(largest_multiplier_modulus(f), clamp_magnitude)
+      log10_abs_s = max(f%trace%log_abs/log(10.0_wp), log10_floor)
+      mu = f%exponent + 0.0_wp  ! no "-0.0" in the file
+      if (damped) then
+         write (line, '(2(es24.16e3,1x),es24.16e3,i2,3(1x,es17.9e3),3i2)') alpha, beta, s, flag(f%stable), &
+            lambda_max, mu, log10_abs_s, flag(overflow), flag(physical), flag(f%stable_paper)
+      else
+         write (line, '(2(es24.16e3,1x),es24.16e3,i2,3(1x,es17.9e3),2i2)') alpha, beta, s, flag(f%stable), &
+            lambda_max, mu, log10_abs_s, flag(overflow), flag(physical)
+      end if
+   end function chart_line
+
+   !> Reals written in full precision, separated by one blank.
+   pure function real_columns(values) result(line)
+      real(wp), intent(in) :: values(:)
+      character(len=25*size(values)) :: line
+      write (line, '(*(es24.16e3,:,1x))') values
+   end function real_columns
+
+   elemental integer function flag(condition)
+      logical, intent(in) :: condition
+      flag = merge(1, 0, condition)
+   end function flag
+
+   pure function c_string(text) result(c)
+      character(len=*), intent(in) :: text
+      character(kind=c_char) :: c(len(text) + 1)
+      integer :: i
+      do i = 1, len(text)
+         c(i) = text(i:i)
+      end do
+      c(len(text) + 1) = c_null_char
+   end function c_string
+end module hillstab_output

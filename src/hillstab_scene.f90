@@ -1,0 +1,912 @@
+!> Scenes: one namelist file describes one run (task, model, method, grid, output).
+!> This module reads and validates it into a `scene_t`; it computes nothing and
+!> writes nothing. Every error names the file, the namelist group and the variable.
+!>
+!>```fortran
+!> type(scene_t) :: scene
+!> type(error_t), allocatable :: error
+!> call read_scene("data/scenes/default_exact.nml", scene, error)
+!> if (.not. allocated(error)) print '(a)', scene_namelist(scene)
+!>```
+!>
+!> Groups: `&scene` (always), then the group of the task: `&chart`, `&points` or
+!> `&coefficient`. Group order in the file does not matter and other groups are
+!> ignored, so one file may hold several. Reading tolerates `#` lines before a group,
+!> which lets a run be repeated from the header of its own output file.
+module hillstab_scene
+   use hillstab_kinds, only: wp, pi2
+   use hillstab_error, only: error_t, set_error, err_input
+   use hillstab_coefficient, only: model_elastic, model_mathieu, model_name, sampling_endpoint, &
+      sampling_average, sampling_name
+   use hillstab_monodromy, only: method_t, method_auto, method_name, method_from_name
+   use, intrinsic :: iso_fortran_env, only: iostat_end
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_usual, ieee_support_halting, &
+      ieee_get_halting_mode, ieee_set_halting_mode, ieee_set_flag
+   implicit none
+   private
+   public :: scene_t, chart_grid_t, coefficient_plan_t, read_scene, scene_namelist, default_scene
+   public :: task_chart, task_points, task_coefficient, task_boundaries, task_series, task_name
+   public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas
+
+   integer, parameter :: task_chart = 1        !! stability chart over an (α, β) grid
+   integer, parameter :: task_points = 2       !! the chart's columns at listed (α, β) points
+   integer, parameter :: task_coefficient = 3  !! Q(τ) and its segmented version (the paper's Fig. 2)
+   integer, parameter :: task_boundaries = 4   !! transition curves (reserved for its own issue)
+   integer, parameter :: task_series = 5       !! time series (reserved for its own issue)
+
+   !> Largest number of α values in `&coefficient alphas`.
+   integer, parameter :: max_coefficient_alphas = 64
+   !> Length of the character variables read from a namelist (paths included).
+   integer, parameter :: text_len = 4096
+   !> Marks the unused tail of the `alphas` list (a value no one types).
+   real(wp), parameter :: unset_alpha = -huge(1.0_wp)
+
+   !> The (α, β) grid of a chart: n values from min to max inclusive (n = 1: min only).
+   type :: chart_grid_t
+      real(wp) :: alpha_min = 0.0_wp    !! first α
+      real(wp) :: alpha_max = 9.8_wp    !! last α (elastic model: < π²)
+      integer :: n_alpha = 200          !! number of α values
+      real(wp) :: beta_min = -2.0_wp    !! first β
+      real(wp) :: beta_max = 12.0_wp    !! last β
+      integer :: n_beta = 200           !! number of β values
+   end type chart_grid_t
+
+   !> What the coefficient task tabulates: Q(τ) at one β for a list of α.
+   type :: coefficient_plan_t
+      real(wp), allocatable :: alphas(:)  !! α of each curve
+      real(wp) :: beta = 6.0_wp           !! β of every curve (the paper's Fig. 2 uses 6)
+      real(wp) :: tau_min = 0.0_wp        !! first τ
+      real(wp) :: tau_max = 2.0_wp        !! last τ (one period is 2)
+      integer :: n_tau = 801              !! number of τ values
+   end type coefficient_plan_t
+
+   !> One validated run description.
+   type :: scene_t
+      character(len=:), allocatable :: source       !! path of the scene file
+      integer :: task = task_chart                  !! task_* constant
+      integer :: model = model_elastic              !! model_elastic or model_mathieu
+      type(method_t) :: method                      !! method, n_segments, sampling, tolerance
+      real(wp) :: epsilon = 0.0_wp                  !! damping ε of eq. (46)
+      character(len=:), allocatable :: output       !! prefix: files are <output>_<task>.dat
+      type(chart_grid_t) :: chart                   !! task_chart
+      character(len=:), allocatable :: points_file  !! task_points: the file of α β lines
+      real(wp), allocatable :: points(:, :)         !! task_points: (2, n) α, β in file order
+      type(coefficient_plan_t) :: coefficient       !! task_coefficient
+   end type scene_t
+
+   !> One `name = value(s)` item of a namelist group, cut out of the file text.
+   type :: item_t
+      character(len=:), allocatable :: name  !! variable name, lower case, without subscript
+      character(len=:), allocatable :: text  !! the whole item as written
+   end type item_t
+
+   abstract interface
+      !> A read that must run with floating-point halting switched off.
+      subroutine guarded_read()
+      end subroutine guarded_read
+   end interface
+
+contains
+
+   !> Name of a task constant.
+   pure function task_name(task) result(name)
+      integer, intent(in) :: task
+      character(len=:), allocatable :: name
+      select case (task)
+      case (task_chart); name = "chart"
+      case (task_points); name = "points"
+      case (task_coefficient); name = "coefficient"
+      case (task_boundaries); name = "boundaries"
+      case (task_series); name = "series"
+      case default; name = "unknown"
+      end select
+   end function task_name
+
+   !> The i-th of n equally spaced values from lo to hi (n = 1: lo).
+   pure real(wp) function grid_value(lo, hi, n, i)
+      real(wp), intent(in) :: lo, hi
+      integer, intent(in) :: n, i
+      if (n <= 1) then
+         grid_value = lo
+      else if (i == n) then
+         grid_value = hi  ! exact end point, no round-off
+      else
+         grid_value = lo + (hi - lo)*real(i - 1, wp)/real(n - 1, wp)
+      end if
+   end function grid_value
+
+   !> A scene with every default filled in; `output` defaults to the scene file's
+   !> base name without extension (files land in the current directory).
+   function default_scene(path) result(scene)
+      character(len=*), intent(in) :: path  !! scene file path
+      type(scene_t) :: scene
+      integer :: slash, dot
+      scene%source = path
+      scene%method = method_t(kind=method_auto, n_segments=2, sampling=sampling_endpoint, tolerance=1.0e-10_wp)
+      slash = index(path, "/", back=.true.)
+      dot = index(path(slash + 1:), ".", back=.true.)
+      if (dot > 1) then
+         scene%output = path(slash + 1:slash + dot - 1)
+      else
+         scene%output = path(slash + 1:)
+      end if
+      if (len(scene%output) == 0) scene%output = "hillstab"
+      scene%points_file = ""
+      scene%coefficient%alphas = [4.0_wp, 6.0_wp, 7.5_wp, 8.0_wp, 9.0_wp, 9.7_wp]
+   end function default_scene
+
+   !> Read and validate the scene in `path`: `&scene`, then the group of its task.
+   subroutine read_scene(path, scene, error)
+      character(len=*), intent(in) :: path       !! scene file
+      type(scene_t), intent(out) :: scene        !! the validated scene
+      type(error_t), allocatable, intent(out) :: error
+      integer :: unit, ios
+      character(len=512) :: msg
+      scene = default_scene(path)
+      open (newunit=unit, file=path, status="old", action="read", form="formatted", iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         call set_error(error, err_input, path//": cannot open the scene file: "//trim(msg))
+         return
+      end if
+      call read_scene_group(unit, scene, error)
+      if (.not. allocated(error)) then
+         select case (scene%task)
+         case (task_chart)
+            call read_chart_group(unit, scene, error)
+         case (task_points)
+            call read_points_group(unit, scene, error)
+         case (task_coefficient)
+            call read_coefficient_group(unit, scene, error)
+         end select
+      end if
+      close (unit)
+   end subroutine read_scene
+
+   !> `&scene`: task, model, method and its settings, damping, output prefix.
+   subroutine read_scene_group(unit, this, error)
+      integer, intent(in) :: unit
+      type(scene_t), intent(inout) :: this
+      type(error_t), allocatable, intent(out) :: error
+      character(len=text_len) :: task, model, method, sampling, output
+      integer :: n_segments
+      real(wp) :: tolerance, epsilon
+      namelist /scene/ task, model, method, n_segments, sampling, tolerance, epsilon, output
+      character(len=*), parameter :: group = "scene"
+      character(len=*), parameter :: names(8) = [character(len=10) :: "task", "model", "method", &
+         "n_segments", "sampling", "tolerance", "epsilon", "output"]
+      character(len=*), parameter :: kinds(8) = [character(len=16) :: "a quoted name", "a quoted name", &
+         "a quoted name", "an integer", "a quoted name", "a real number", "a real number", "a quoted path"]
+      integer :: ios, k
+      character(len=512) :: msg
+      character(len=:), allocatable :: bad
+
+      task = task_name(this%task); model = model_name(this%model); method = method_name(this%method%kind)
+      n_segments = this%method%n_segments; sampling = sampling_name(this%method%sampling)
+      tolerance = this%method%tolerance; epsilon = this%epsilon; output = this%output
+      call without_fpe_halting(read_it)
+      call check_read(this%source, group, names, kinds, ios, msg, bad, error)
+      if (allocated(error)) return
+
+      this%task = -1
+      do k = task_chart, task_series
+         if (lower(trim(task)) == task_name(k)) this%task = k
+      end do
+      if (this%task < 0) then
+         call fail(error, this%source, group, "task", "unknown task '"//trim(task)// &
+            "' (expected chart, points or coefficient)")
+      else if (this%task == task_boundaries .or. this%task == task_series) then
+         call fail(error, this%source, group, "task", "task '"//trim(task)//"' is not available in this build")
+      end if
+      if (allocated(error)) return
+
+      select case (lower(trim(model)))
+      case ("elastic"); this%model = model_elastic
+      case ("mathieu"); this%model = model_mathieu
+      case default
+         call fail(error, this%source, group, "model", "unknown model '"//trim(model)//"' (expected elastic or mathieu)")
+         return
+      end select
+
+      this%method%kind = method_from_name(lower(trim(method)))
+      if (this%method%kind < 0) then
+         call fail(error, this%source, group, "method", "unknown method '"//trim(method)// &
+            "' (expected auto, formula, segments, magnus4, magnus6, rk or gsl)")
+         return
+      end if
+
+      this%method%sampling = -1
+      do k = sampling_endpoint, sampling_average
+         if (lower(trim(sampling)) == sampling_name(k)) this%method%sampling = k
+      end do
+      if (this%method%sampling < 0) then
+         call fail(error, this%source, group, "sampling", "unknown sampling '"//trim(sampling)// &
+            "' (expected endpoint, midpoint or average)")
+         return
+      end if
+
+      call require_positive_count(this%source, group, "n_segments", n_segments, 1, error)
+      if (allocated(error)) return
+      this%method%n_segments = n_segments
+
+      call require_finite(this%source, group, "tolerance", tolerance, error)
+      if (allocated(error)) return
+      if (.not. tolerance > 0.0_wp) then
+         call fail(error, this%source, group, "tolerance", "must be > 0, got "//real_text(tolerance))
+         return
+      end if
+      this%method%tolerance = tolerance
+
+      call require_finite(this%source, group, "epsilon", epsilon, error)
+      if (allocated(error)) return
+      if (epsilon < 0.0_wp) then
+         call fail(error, this%source, group, "epsilon", "damping must be >= 0, got "//real_text(epsilon))
+         return
+      end if
+      this%epsilon = epsilon
+
+      if (len_trim(output) == 0) then
+         call fail(error, this%source, group, "output", "the output prefix is empty")
+         return
+      end if
+      this%output = trim(output)
+   contains
+      subroutine read_it()
+         rewind (unit)
+         read (unit, nml=scene, iostat=ios, iomsg=msg)
+         if (ios > 0) then
+            call find_bad_item(unit, group, try_item, bad)
+            if (.not. allocated(bad)) bad = ""
+         end if
+      end subroutine read_it
+      subroutine try_item(text, stat)
+         character(len=*), intent(in) :: text
+         integer, intent(out) :: stat
+         character(len=512) :: ignored
+         read (text, nml=scene, iostat=stat, iomsg=ignored)
+      end subroutine try_item
+   end subroutine read_scene_group
+
+   !> `&chart`: the (α, β) grid.
+   subroutine read_chart_group(unit, scene, error)
+      integer, intent(in) :: unit
+      type(scene_t), intent(inout) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: alpha_min, alpha_max, beta_min, beta_max
+      integer :: n_alpha, n_beta
+      namelist /chart/ alpha_min, alpha_max, n_alpha, beta_min, beta_max, n_beta
+      character(len=*), parameter :: group = "chart"
+      character(len=*), parameter :: names(6) = [character(len=9) :: "alpha_min", "alpha_max", "n_alpha", &
+         "beta_min", "beta_max", "n_beta"]
+      character(len=*), parameter :: kinds(6) = [character(len=13) :: "a real number", "a real number", &
+         "an integer", "a real number", "a real number", "an integer"]
+      integer :: ios
+      character(len=512) :: msg
+      character(len=:), allocatable :: bad
+
+      alpha_min = scene%chart%alpha_min; alpha_max = scene%chart%alpha_max; n_alpha = scene%chart%n_alpha
+      beta_min = scene%chart%beta_min; beta_max = scene%chart%beta_max; n_beta = scene%chart%n_beta
+      call without_fpe_halting(read_it)
+      call check_read(scene%source, group, names, kinds, ios, msg, bad, error)
+      if (allocated(error)) return
+
+      call check_range(scene%source, group, "alpha", alpha_min, alpha_max, n_alpha, error)
+      if (allocated(error)) return
+      call check_alpha_domain(scene, group, "alpha_min", alpha_min, error)
+      if (allocated(error)) return
+      call check_alpha_domain(scene, group, "alpha_max", alpha_max, error)
+      if (allocated(error)) return
+      call check_range(scene%source, group, "beta", beta_min, beta_max, n_beta, error)
+      if (allocated(error)) return
+      scene%chart = chart_grid_t(alpha_min, alpha_max, n_alpha, beta_min, beta_max, n_beta)
+   contains
+      subroutine read_it()
+         rewind (unit)
+         read (unit, nml=chart, iostat=ios, iomsg=msg)
+         if (ios > 0) then
+            call find_bad_item(unit, group, try_item, bad)
+            if (.not. allocated(bad)) bad = ""
+         end if
+      end subroutine read_it
+      subroutine try_item(text, stat)
+         character(len=*), intent(in) :: text
+         integer, intent(out) :: stat
+         character(len=512) :: ignored
+         read (text, nml=chart, iostat=stat, iomsg=ignored)
+      end subroutine try_item
+   end subroutine read_chart_group
+
+   !> `&points`: the file of (α, β) points, read here.
+   subroutine read_points_group(unit, scene, error)
+      integer, intent(in) :: unit
+      type(scene_t), intent(inout) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      character(len=text_len) :: file
+      namelist /points/ file
+      character(len=*), parameter :: group = "points"
+      character(len=*), parameter :: names(1) = [character(len=4) :: "file"]
+      character(len=*), parameter :: kinds(1) = [character(len=13) :: "a quoted path"]
+      integer :: ios
+      character(len=512) :: msg
+      character(len=:), allocatable :: bad
+
+      file = scene%points_file
+      call without_fpe_halting(read_it)
+      call check_read(scene%source, group, names, kinds, ios, msg, bad, error)
+      if (allocated(error)) return
+      if (len_trim(file) == 0) then
+         call fail(error, scene%source, group, "file", "no points file given")
+         return
+      end if
+      scene%points_file = trim(file)
+      call read_points_file(scene, error)
+   contains
+      subroutine read_it()
+         rewind (unit)
+         read (unit, nml=points, iostat=ios, iomsg=msg)
+         if (ios > 0) then
+            call find_bad_item(unit, group, try_item, bad)
+            if (.not. allocated(bad)) bad = ""
+         end if
+      end subroutine read_it
+      subroutine try_item(text, stat)
+         character(len=*), intent(in) :: text
+         integer, intent(out) :: stat
+         character(len=512) :: ignored
+         read (text, nml=points, iostat=stat, iomsg=ignored)
+      end subroutine try_item
+   end subroutine read_points_group
+
+   !> `&coefficient`: α list, β, τ range.
+   subroutine read_coefficient_group(unit, scene, error)
+      integer, intent(in) :: unit
+      type(scene_t), intent(inout) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: alphas(max_coefficient_alphas), beta, tau_min, tau_max
+      integer :: n_tau
+      namelist /coefficient/ alphas, beta, n_tau, tau_min, tau_max
+      character(len=*), parameter :: group = "coefficient"
+      character(len=*), parameter :: names(5) = [character(len=7) :: "alphas", "beta", "n_tau", "tau_min", "tau_max"]
+      character(len=*), parameter :: kinds(5) = [character(len=24) :: "a list of real numbers", "a real number", &
+         "an integer", "a real number", "a real number"]
+      integer :: ios, n, k
+      character(len=512) :: msg
+      character(len=:), allocatable :: bad
+
+      ! a namelist read overwrites only the elements given: start from an empty list
+      alphas = unset_alpha
+      beta = scene%coefficient%beta; n_tau = scene%coefficient%n_tau
+      tau_min = scene%coefficient%tau_min; tau_max = scene%coefficient%tau_max
+      call without_fpe_halting(read_it)
+      call check_read(scene%source, group, names, kinds, ios, msg, bad, error)
+      if (allocated(error)) return
+
+      do k = 1, max_coefficient_alphas
+         call require_finite_or_unset(k, error)
+         if (allocated(error)) return
+      end do
+      n = 0
+      do k = max_coefficient_alphas, 1, -1
+         if (alphas(k) /= unset_alpha) then
+            n = k
+            exit
+         end if
+      end do
+      if (n == 0) then
+         n = size(scene%coefficient%alphas)
+         alphas(:n) = scene%coefficient%alphas
+      else if (any(alphas(:n) == unset_alpha)) then
+         call fail(error, scene%source, group, "alphas", "the list has gaps")
+         return
+      end if
+      do k = 1, n
+         call check_alpha_domain(scene, group, "alphas", alphas(k), error)
+         if (allocated(error)) return
+      end do
+      call require_finite(scene%source, group, "beta", beta, error)
+      if (allocated(error)) return
+      call check_range(scene%source, group, "tau", tau_min, tau_max, n_tau, error)
+      if (allocated(error)) return
+      scene%coefficient = coefficient_plan_t(alphas(:n), beta, tau_min, tau_max, n_tau)
+   contains
+      subroutine require_finite_or_unset(k, error)
+         integer, intent(in) :: k
+         type(error_t), allocatable, intent(out) :: error
+         character(len=16) :: index_text
+         if (.not. ieee_is_finite(alphas(k))) then
+            write (index_text, '(i0)') k
+            call fail(error, scene%source, group, "alphas", "value "//trim(index_text)//" is not a finite number")
+         end if
+      end subroutine require_finite_or_unset
+      subroutine read_it()
+         rewind (unit)
+         read (unit, nml=coefficient, iostat=ios, iomsg=msg)
+         if (ios > 0) then
+            call find_bad_item(unit, group, try_item, bad)
+            if (.not. allocated(bad)) bad = ""
+         end if
+      end subroutine read_it
+      subroutine try_item(text, stat)
+         character(len=*), intent(in) :: text
+         integer, intent(out) :: stat
+         character(len=512) :: ignored
+         read (text, nml=coefficient, iostat=stat, iomsg=ignored)
+      end subroutine try_item
+   end subroutine read_coefficient_group
+
+   !> Read the points file: one `alpha beta` pair per line, `#` starts a comment,
+   !> blank lines are skipped, further columns are ignored.
+   subroutine read_points_file(scene, error)
+      type(scene_t), intent(inout) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: group = "points"
+      integer :: unit, ios, line_number, n, hash
+      character(len=512) :: msg
+      character(len=:), allocatable :: line, where
+      real(wp) :: pair(2)
+      real(wp), allocatable :: found(:, :)
+
+      open (newunit=unit, file=scene%points_file, status="old", action="read", iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         call fail(error, scene%source, group, "file", "cannot open '"//scene%points_file//"': "//trim(msg))
+         return
+      end if
+      allocate (found(2, 16))
+      n = 0
+      line_number = 0
+      do
+         call read_text_line(unit, line, ios)
+         if (ios /= 0) exit
+         line_number = line_number + 1
+         hash = index(line, "#")
+         if (hash > 0) line = line(:hash - 1)
+         if (len_trim(line) == 0) cycle
+         where = "'"//scene%points_file//"' line "//integer_text(line_number)
+         call without_fpe_halting(read_pair)
+         if (ios /= 0) then
+            call fail(error, scene%source, group, "file", where//": expected two numbers 'alpha beta', got '"// &
+               trim(line)//"'")
+            exit
+         end if
+         if (.not. (ieee_is_finite(pair(1)) .and. ieee_is_finite(pair(2)))) then
+            call fail(error, scene%source, group, "file", where//": alpha and beta must be finite numbers")
+            exit
+         end if
+         call check_alpha_domain(scene, group, "file", pair(1), error, where)
+         if (allocated(error)) exit
+         if (n == size(found, 2)) found = reshape(found, [2, 2*n], pad=[0.0_wp])
+         n = n + 1
+         found(:, n) = pair
+      end do
+      close (unit)
+      if (allocated(error)) return
+      if (n == 0) then
+         call fail(error, scene%source, group, "file", "'"//scene%points_file//"' holds no points")
+         return
+      end if
+      scene%points = found(:, :n)
+   contains
+      subroutine read_pair()
+         read (line, *, iostat=ios) pair
+      end subroutine read_pair
+   end subroutine read_points_file
+
+   !> Run `action` with halting on overflow/invalid/divide-by-zero switched off,
+   !> then clear those flags: reading `1e400` or `nan` must give a message, not a
+   !> trap, even in a build compiled with -ffpe-trap.
+   subroutine without_fpe_halting(action)
+      procedure(guarded_read) :: action
+      logical :: halting(size(ieee_usual)), can_halt
+      integer :: k
+      can_halt = .true.
+      do k = 1, size(ieee_usual)
+         can_halt = can_halt .and. ieee_support_halting(ieee_usual(k))
+      end do
+      if (can_halt) then
+         call ieee_get_halting_mode(ieee_usual, halting)
+         call ieee_set_halting_mode(ieee_usual, .false.)
+      end if
+      call action()
+      call ieee_set_flag(ieee_usual, .false.)
+      if (can_halt) call ieee_set_halting_mode(ieee_usual, halting)
+   end subroutine without_fpe_halting
+
+   !> Turn the status of a namelist read into an error naming file, group and variable.
+   subroutine check_read(path, group, names, kinds, ios, msg, bad, error)
+      character(len=*), intent(in) :: path, group
+      character(len=*), intent(in) :: names(:)  !! variables of the group
+      character(len=*), intent(in) :: kinds(:)  !! what each variable holds, for the message
+      integer, intent(in) :: ios                !! iostat of the group read
+      character(len=*), intent(in) :: msg       !! iomsg of the group read
+      character(len=:), allocatable, intent(in) :: bad  !! the first item that fails alone, if any
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, eq
+      character(len=:), allocatable :: name
+      if (ios == 0) return
+      if (ios == iostat_end) then
+         call set_error(error, err_input, path//": &"//group//": the group is missing (no '&"//group// &
+            " ... /' in the file)")
+         return
+      end if
+      if (allocated(bad)) then
+         if (len(bad) > 0) then
+            eq = index(bad, "=")
+            name = item_name(bad)
+            do k = 1, size(names)
+               if (name == trim(names(k))) then
+                  call fail(error, path, group, name, "cannot read "//trim(adjustl(bad(eq + 1:)))// &
+                     " as "//trim(kinds(k)))
+                  return
+               end if
+            end do
+            call fail(error, path, group, name, "unknown variable (the group has: "//joined(names)//")")
+            return
+         end if
+      end if
+      call set_error(error, err_input, path//": &"//group//": "//trim(msg))
+   end subroutine check_read
+
+   !> Find the first item of `&group` in the file that does not read on its own.
+   subroutine find_bad_item(unit, group, try_item, bad)
+      integer, intent(in) :: unit
+      character(len=*), intent(in) :: group
+      interface
+         subroutine try_item(text, stat)
+            character(len=*), intent(in) :: text
+            integer, intent(out) :: stat
+         end subroutine try_item
+      end interface
+      character(len=:), allocatable, intent(out) :: bad
+      type(item_t), allocatable :: items(:)
+      integer :: k, stat
+      call group_items(unit, group, items)
+      do k = 1, size(items)
+         call try_item("&"//group//" "//items(k)%text//" /", stat)
+         if (stat /= 0) then
+            bad = items(k)%text
+            return
+         end if
+      end do
+   end subroutine find_bad_item
+
+   !> The items of the first `&group ... /` in the file, cut at each `name =`
+   !> (outside quotes; `!` comments removed).
+   subroutine group_items(unit, group, items)
+      integer, intent(in) :: unit
+      character(len=*), intent(in) :: group
+      type(item_t), allocatable, intent(out) :: items(:)
+      character(len=:), allocatable :: text, line, body
+      integer :: ios, i, start, j, k, n, last
+      integer, allocatable :: starts(:)
+      logical :: after_separator
+      character :: quote
+      allocate (items(0))
+      text = ""
+      rewind (unit)
+      do
+         call read_text_line(unit, line, ios)
+         if (ios /= 0) exit
+         text = text//strip_comment(line)//" "
+      end do
+      ! locate '&group' at the start of a line or after a blank ('# &group' in output headers)
+      start = 0
+      do i = 1, len(text) - len(group) - 1
+         if (text(i:i) /= "&") cycle
+         if (i > 1) then
+            if (text(i - 1:i - 1) /= " ") cycle
+         end if
+         if (lower(text(i + 1:i + len(group))) /= lower(group)) cycle
+         if (index(" /,", text(i + len(group) + 1:i + len(group) + 1)) == 0) cycle
+         start = i + len(group) + 1
+         exit
+      end do
+      if (start == 0) return
+      ! the body runs to the first '/' outside quotes
+      quote = " "
+      body = text(start:)
+      do i = 1, len(body)
+         call track_quote(body(i:i), quote)
+         if (quote == " " .and. body(i:i) == "/") then
+            body = body(:i - 1)
+            exit
+         end if
+      end do
+      ! item starts: an identifier (optionally subscripted) after a blank or comma, then '='
+      allocate (starts(0))
+      quote = " "
+      i = 1
+      do while (i <= len(body))
+         call track_quote(body(i:i), quote)
+         if (quote == " " .and. is_letter(body(i:i))) then
+            if (i == 1) then
+               after_separator = .true.
+            else
+               after_separator = index(" ,", body(i - 1:i - 1)) > 0
+            end if
+            j = i
+            do while (j < len(body))
+               if (.not. is_name_char(body(j + 1:j + 1))) exit
+               j = j + 1
+            end do
+            if (after_separator) then
+               k = j + 1
+               if (k <= len(body)) then
+                  if (body(k:k) == "(") k = k + max(index(body(k:), ")"), 1)
+               end if
+               do while (k <= len(body))
+                  if (body(k:k) /= " ") exit
+                  k = k + 1
+               end do
+               if (k <= len(body)) then
+                  if (body(k:k) == "=") starts = [starts, i]
+               end if
+            end if
+            i = j
+         end if
+         i = i + 1
+      end do
+      n = size(starts)
+      deallocate (items)
+      allocate (items(n))
+      do k = 1, n
+         if (k < n) then
+            last = starts(k + 1) - 1
+         else
+            last = len(body)
+         end if
+         items(k)%text = trim(adjustl(body(starts(k):last)))
+         if (items(k)%text(len(items(k)%text):) == ",") items(k)%text = items(k)%text(:len(items(k)%text) - 1)
+         items(k)%name = item_name(items(k)%text)
+      end do
+   end subroutine group_items
+
+   !> Keep track of whether position i is inside a quoted string.
+   pure subroutine track_quote(c, quote)
+      character, intent(in) :: c
+      character, intent(inout) :: quote  !! the open quote character, or blank outside strings
+      if (quote == " ") then
+         if (c == "'" .or. c == '"') quote = c
+      else if (c == quote) then
+         quote = " "  ! a doubled quote closes and reopens: same state after two characters
+      end if
+   end subroutine track_quote
+
+   !> A line without its `!` comment (outside quotes).
+   pure function strip_comment(line) result(code)
+      character(len=*), intent(in) :: line
+      character(len=:), allocatable :: code
+      character :: quote
+      integer :: i
+      quote = " "
+      code = line
+      do i = 1, len(line)
+         call track_quote(line(i:i), quote)
+         if (quote == " " .and. line(i:i) == "!") then
+            code = line(:i - 1)
+            return
+         end if
+      end do
+   end function strip_comment
+
+   elemental logical function is_letter(c)
+      character, intent(in) :: c
+      is_letter = (c >= "a" .and. c <= "z") .or. (c >= "A" .and. c <= "Z")
+   end function is_letter
+
+   elemental logical function is_name_char(c)
+      character, intent(in) :: c
+      is_name_char = is_letter(c) .or. (c >= "0" .and. c <= "9") .or. c == "_"
+   end function is_name_char
+
+   !> Lower-case copy of a string.
+   pure function lower(text) result(low)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: low
+      integer :: i
+      low = text
+      do i = 1, len(text)
+         if (text(i:i) >= "A" .and. text(i:i) <= "Z") low(i:i) = achar(iachar(text(i:i)) + 32)
+      end do
+   end function lower
+
+   !> The variable name of an item `name(sub) = value`, lower case.
+   pure function item_name(item) result(name)
+      character(len=*), intent(in) :: item
+      character(len=:), allocatable :: name
+      integer :: j
+      j = 1
+      do while (j < len(item))
+         if (.not. is_name_char(item(j + 1:j + 1))) exit
+         j = j + 1
+      end do
+      name = trim(lower(item(:j)))
+   end function item_name
+
+   !> Names joined by ", ".
+   pure function joined(names) result(text)
+      character(len=*), intent(in) :: names(:)
+      character(len=:), allocatable :: text
+      integer :: k
+      text = trim(names(1))
+      do k = 2, size(names)
+         text = text//", "//trim(names(k))
+      end do
+   end function joined
+
+   !> The error for a bad value: "file: &group: variable: message".
+   pure subroutine fail(error, path, group, variable, message)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: path, group, variable, message
+      call set_error(error, err_input, path//": &"//group//": "//variable//": "//message)
+   end subroutine fail
+
+   subroutine require_finite(path, group, variable, x, error)
+      character(len=*), intent(in) :: path, group, variable
+      real(wp), intent(in) :: x
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. ieee_is_finite(x)) call fail(error, path, group, variable, "not a finite number")
+   end subroutine require_finite
+
+   subroutine require_positive_count(path, group, variable, n, smallest, error)
+      character(len=*), intent(in) :: path, group, variable
+      integer, intent(in) :: n, smallest
+      type(error_t), allocatable, intent(out) :: error
+      if (n < smallest) call fail(error, path, group, variable, "must be >= "//integer_text(smallest)// &
+         ", got "//integer_text(n))
+   end subroutine require_positive_count
+
+   !> Check `<name>_min`, `<name>_max` (finite, min <= max) and `n_<name>` (>= 1).
+   subroutine check_range(path, group, name, lo, hi, n, error)
+      character(len=*), intent(in) :: path, group, name
+      real(wp), intent(in) :: lo, hi
+      integer, intent(in) :: n
+      type(error_t), allocatable, intent(out) :: error
+      call require_finite(path, group, name//"_min", lo, error)
+      if (allocated(error)) return
+      call require_finite(path, group, name//"_max", hi, error)
+      if (allocated(error)) return
+      if (lo > hi) then
+         call fail(error, path, group, name//"_min", name//"_min = "//real_text(lo)//" is greater than "// &
+            name//"_max = "//real_text(hi))
+         return
+      end if
+      call require_positive_count(path, group, "n_"//name, n, 1, error)
+   end subroutine check_range
+
+   !> The elastic model needs 0 <= α < π² (a < ρ); the Mathieu model takes any finite ν.
+   subroutine check_alpha_domain(scene, group, variable, alpha, error, where)
+      type(scene_t), intent(in) :: scene
+      character(len=*), intent(in) :: group, variable
+      real(wp), intent(in) :: alpha  !! a finite value
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), intent(in), optional :: where  !! position in a data file
+      character(len=:), allocatable :: prefix
+      prefix = ""
+      if (present(where)) prefix = where//": "
+      if (scene%model /= model_elastic) return
+      if (alpha < 0.0_wp .or. alpha >= pi2) then
+         call fail(error, scene%source, group, variable, prefix//"the elastic model needs 0 <= alpha < pi**2 = "// &
+            real_text(pi2)//" (amplitude a < rho), got alpha = "//real_text(alpha))
+      end if
+   end subroutine check_alpha_domain
+
+   !> Decimal text of an integer.
+   pure function integer_text(n) result(text)
+      integer, intent(in) :: n
+      character(len=:), allocatable :: text
+      character(len=24) :: buffer
+      write (buffer, '(i0)') n
+      text = trim(buffer)
+   end function integer_text
+
+   !> Shortest decimal text that reads back to exactly x (plain notation for
+   !> 1e-4 <= |x| < 1e15, else mantissa and exponent), e.g. 9.8, 0.0, 1.0e-10.
+   function real_text(x) result(text)
+      real(wp), intent(in) :: x  !! a finite value
+      character(len=:), allocatable :: text
+      character(len=40) :: buffer, fmt
+      character(len=:), allocatable :: digits, sign_text
+      integer :: d, e_at, exponent10, ios
+      real(wp) :: back
+      if (x == 0.0_wp) then
+         text = "0.0"
+         return
+      end if
+      do d = 1, 17
+         write (fmt, '(a,i0,a)') "(es40.", d - 1, "e3)"
+         write (buffer, fmt) x
+         read (buffer, *, iostat=ios) back
+         if (ios == 0 .and. back == x) exit
+      end do
+      buffer = adjustl(buffer)
+      sign_text = ""
+      if (buffer(1:1) == "-") then
+         sign_text = "-"
+         buffer = buffer(2:)
+      end if
+      e_at = index(buffer, "E")
+      read (buffer(e_at + 1:), *) exponent10
+      digits = buffer(1:1)//buffer(3:e_at - 1)  ! mantissa digits without the point
+      if (exponent10 >= -4 .and. exponent10 < 15) then
+         if (exponent10 >= 0) then
+            if (len(digits) <= exponent10 + 1) digits = digits//repeat("0", exponent10 + 2 - len(digits))
+            text = sign_text//digits(:exponent10 + 1)//"."//digits(exponent10 + 2:)
+         else
+            text = sign_text//"0."//repeat("0", -exponent10 - 1)//digits
+         end if
+      else
+         if (len(digits) == 1) digits = digits//"0"
+         text = sign_text//digits(1:1)//"."//digits(2:)//"e"//integer_text(exponent10)
+      end if
+   end function real_text
+
+   !> A string as a namelist character constant (quotes doubled).
+   pure function quoted(text) result(q)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: q
+      integer :: i
+      q = "'"
+      do i = 1, len(text)
+         if (text(i:i) == "'") then
+            q = q//"''"
+         else
+            q = q//text(i:i)
+         end if
+      end do
+      q = q//"'"
+   end function quoted
+
+   !> The effective scene as namelist groups, one group a line, every variable
+   !> with its value (defaults filled in): `&scene` and the group of the task.
+   !> Reading these lines back as a scene reproduces the run.
+   function scene_namelist(scene) result(lines)
+      type(scene_t), intent(in) :: scene
+      character(len=:), allocatable :: lines(:)
+      character(len=:), allocatable :: first, second
+      integer :: k
+      first = "&scene task = "//quoted(task_name(scene%task))//", model = "//quoted(model_name(scene%model))// &
+         ", method = "//quoted(method_name(scene%method%kind))// &
+         ", n_segments = "//integer_text(scene%method%n_segments)// &
+         ", sampling = "//quoted(sampling_name(scene%method%sampling))// &
+         ", tolerance = "//real_text(scene%method%tolerance)//", epsilon = "//real_text(scene%epsilon)// &
+         ", output = "//quoted(scene%output)//" /"
+      select case (scene%task)
+      case (task_chart)
+         second = "&chart alpha_min = "//real_text(scene%chart%alpha_min)// &
+            ", alpha_max = "//real_text(scene%chart%alpha_max)//", n_alpha = "//integer_text(scene%chart%n_alpha)// &
+            ", beta_min = "//real_text(scene%chart%beta_min)//", beta_max = "//real_text(scene%chart%beta_max)// &
+            ", n_beta = "//integer_text(scene%chart%n_beta)//" /"
+      case (task_points)
+         second = "&points file = "//quoted(scene%points_file)//" /"
+      case (task_coefficient)
+         second = "&coefficient alphas = "//real_text(scene%coefficient%alphas(1))
+         do k = 2, size(scene%coefficient%alphas)
+            second = second//", "//real_text(scene%coefficient%alphas(k))
+         end do
+         second = second//", beta = "//real_text(scene%coefficient%beta)// &
+            ", n_tau = "//integer_text(scene%coefficient%n_tau)// &
+            ", tau_min = "//real_text(scene%coefficient%tau_min)// &
+            ", tau_max = "//real_text(scene%coefficient%tau_max)//" /"
+      case default
+         second = ""
+      end select
+      allocate (character(len=max(len(first), len(second))) :: lines(2))
+      lines(1) = first
+      lines(2) = second
+   end function scene_namelist
+
+   !> Read one whole line of any length from a formatted unit.
+   subroutine read_text_line(unit, line, ios)
+      integer, intent(in) :: unit
+      character(len=:), allocatable, intent(out) :: line
+      integer, intent(out) :: ios  !! 0, or iostat_end at the end of the file
+      character(len=1024) :: chunk
+      integer :: got
+      line = ""
+      do
+         read (unit, '(a)', advance="no", iostat=ios, size=got) chunk
+         line = line//chunk(:got)
+         if (ios /= 0) exit
+      end do
+      if (is_iostat_eor(ios)) ios = 0
+   end subroutine read_text_line
+end module hillstab_scene

@@ -1,0 +1,403 @@
+!> Tests of scene reading: defaults, group order, the namelist written back into
+!> output headers, exact real-to-text round trips, and every kind of bad input
+!> (each must give an error naming the file, the group and the variable).
+!> Also exports the small file helpers and the bad-input table that the tasks
+!> suite reuses to check that no output file is created or touched.
+module test_scene
+   use hillstab_kinds, only: wp, pi2
+   use hillstab_error, only: error_t, err_input
+   use hillstab_coefficient, only: model_elastic, model_mathieu, sampling_endpoint, sampling_average
+   use hillstab_monodromy, only: method_auto, method_segments
+   use hillstab_scene
+   use hillstab_testing
+   use, intrinsic :: iso_c_binding, only: c_int
+   implicit none
+   private
+   public :: collect_scene
+   public :: scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text
+   public :: padded, bad_case_t, bad_cases, bad_case_text, write_bad_points_files, delete_bad_points_files
+
+   !> One bad scene: its text (`@OUT@` stands for the output prefix, `@DIR@` for the
+   !> scratch prefix of the points files), the group and variable the message must name.
+   type :: bad_case_t
+      character(len=200) :: text
+      character(len=16) :: group
+      character(len=16) :: variable
+   end type bad_case_t
+
+   interface
+      function c_getpid() bind(C, name="getpid") result(pid)
+         import :: c_int
+         integer(c_int) :: pid
+      end function c_getpid
+   end interface
+
+contains
+
+   function collect_scene() result(suite)
+      type(testsuite_t) :: suite
+      suite = new_testsuite("scene", [ &
+         new_unittest("defaults", defaults), &
+         new_unittest("group_order_and_comments", group_order_and_comments), &
+         new_unittest("coefficient_list", coefficient_list), &
+         new_unittest("points_file", points_file), &
+         new_unittest("real_text_round_trip", real_text_round_trip), &
+         new_unittest("namelist_round_trip", namelist_round_trip), &
+         new_unittest("bad_input_messages", bad_input_messages), &
+         new_unittest("missing_scene_file", missing_scene_file)])
+   end function collect_scene
+
+   !> A unique scratch path prefix under build/ for this process and test.
+   function scratch_prefix(name) result(prefix)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: prefix
+      character(len=16) :: pid
+      write (pid, '(i0)') c_getpid()
+      prefix = "build/hillstab_test_"//trim(pid)//"_"//name
+   end function scratch_prefix
+
+   subroutine write_file(path, lines)
+      character(len=*), intent(in) :: path
+      character(len=*), intent(in) :: lines(:)
+      integer :: unit, k
+      open (newunit=unit, file=path, status="replace", action="write")
+      do k = 1, size(lines)
+         write (unit, '(a)') trim(lines(k))
+      end do
+      close (unit)
+   end subroutine write_file
+
+   !> All lines of a text file (empty array when it does not exist).
+   function read_lines(path) result(lines)
+      character(len=*), intent(in) :: path
+      character(len=1024), allocatable :: lines(:)
+      character(len=:), allocatable :: line
+      integer :: unit, ios
+      allocate (lines(0))
+      open (newunit=unit, file=path, status="old", action="read", iostat=ios)
+      if (ios /= 0) return
+      do
+         call read_text_line(unit, line, ios)
+         if (ios /= 0) exit
+         lines = [character(len=1024) :: lines, line]
+      end do
+      close (unit)
+   end function read_lines
+
+   logical function file_exists(path)
+      character(len=*), intent(in) :: path
+      inquire (file=path, exist=file_exists)
+   end function file_exists
+
+   subroutine delete_file(path)
+      character(len=*), intent(in) :: path
+      integer :: unit, ios
+      open (newunit=unit, file=path, status="old", iostat=ios)
+      if (ios == 0) close (unit, status="delete")
+   end subroutine delete_file
+
+   !> A line padded to a fixed length, so that array constructors of lines built
+   !> from variables have elements of equal length.
+   pure function padded(text) result(line)
+      character(len=*), intent(in) :: text
+      character(len=240) :: line
+      line = text
+   end function padded
+
+   logical function contains_text(text, part)
+      character(len=*), intent(in) :: text, part
+      contains_text = index(text, part) > 0
+   end function contains_text
+
+   !> Write `lines` to a scratch scene file and read it.
+   subroutine read_text_scene(name, lines, scene, error, path)
+      character(len=*), intent(in) :: name
+      character(len=*), intent(in) :: lines(:)
+      type(scene_t), intent(out) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable, intent(out) :: path
+      path = scratch_prefix(name)//".nml"
+      call write_file(path, lines)
+      call read_scene(path, scene, error)
+      call delete_file(path)
+   end subroutine read_text_scene
+
+   subroutine defaults(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(scene_t) :: scene
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: path
+      call read_text_scene("defaults", ["&scene /", "&chart /"], scene, error, path)
+      call check(ctx, .not. allocated(error), "defaults read")
+      if (allocated(error)) return
+      call check(ctx, scene%task == task_chart, "task chart")
+      call check(ctx, scene%model == model_elastic, "model elastic")
+      call check(ctx, scene%method%kind == method_auto, "method auto")
+      call check(ctx, scene%method%n_segments == 2, "n_segments 2")
+      call check(ctx, scene%method%sampling == sampling_endpoint, "sampling endpoint")
+      call check(ctx, scene%method%tolerance, 1.0e-10_wp)
+      call check(ctx, scene%epsilon, 0.0_wp)
+      ! output defaults to the scene file name without directory and extension
+      call check(ctx, scene%output == path(len("build/") + 1:len(path) - len(".nml")), "default output "//scene%output)
+      call check(ctx, scene%chart%alpha_min, 0.0_wp)
+      call check(ctx, scene%chart%alpha_max, 9.8_wp)
+      call check(ctx, scene%chart%beta_min, -2.0_wp)
+      call check(ctx, scene%chart%beta_max, 12.0_wp)
+      call check(ctx, scene%chart%n_alpha == 200 .and. scene%chart%n_beta == 200, "200 x 200")
+   end subroutine defaults
+
+   subroutine group_order_and_comments(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(scene_t) :: scene
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: path
+      call read_text_scene("order", [ &
+         padded("! a comment line"), &
+         padded("&chart n_alpha = 3, n_beta = 4,  ! trailing comment"), &
+         padded("   alpha_max = 9.7 /"), &
+         padded("&other x = 1 /"), &
+         padded("&scene task = 'chart', model = 'Mathieu',"), &
+         padded("  method = 'segments', n_segments = 64, sampling = 'average',"), &
+         padded("  epsilon = 0.5, output = 'build/x!y' /")], scene, error, path)
+      call check(ctx, .not. allocated(error), "scene read")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      call check(ctx, scene%model == model_mathieu, "model name is case-insensitive")
+      call check(ctx, scene%method%kind == method_segments .and. scene%method%n_segments == 64, "segments 64")
+      call check(ctx, scene%method%sampling == sampling_average, "average")
+      call check(ctx, scene%epsilon, 0.5_wp)
+      call check(ctx, scene%output == "build/x!y", "'!' inside a string is not a comment")
+      call check(ctx, scene%chart%n_alpha == 3 .and. scene%chart%n_beta == 4, "chart counts")
+      call check(ctx, scene%chart%alpha_max, 9.7_wp)
+      call check(ctx, scene%chart%beta_max, 12.0_wp)
+      call check(ctx, grid_value(0.0_wp, 9.7_wp, 3, 2), 4.85_wp)
+      call check(ctx, grid_value(0.0_wp, 9.7_wp, 3, 3), 9.7_wp, abs=0.0_wp, rel=0.0_wp)
+   end subroutine group_order_and_comments
+
+   subroutine coefficient_list(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(scene_t) :: scene
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: path
+      call read_text_scene("coef", [ padded("&scene task = 'coefficient' /"), &
+         padded("&coefficient alphas = 4, 9.7, beta = 2.5, n_tau = 5 /")], scene, error, path)
+      call check(ctx, .not. allocated(error), "coefficient read")
+      if (allocated(error)) return
+      ! two values given: exactly two, not the rest of the default list
+      call check(ctx, size(scene%coefficient%alphas) == 2, "two alphas")
+      call check(ctx, scene%coefficient%alphas(2), 9.7_wp)
+      call check(ctx, scene%coefficient%beta, 2.5_wp)
+      call check(ctx, scene%coefficient%n_tau == 5, "n_tau")
+      call read_text_scene("coef2", [ padded("&scene task = 'coefficient' /"), padded("&coefficient /")], &
+                           scene, error, path)
+      call check(ctx, .not. allocated(error), "default coefficient read")
+      if (allocated(error)) return
+      call check(ctx, size(scene%coefficient%alphas) == 6, "the paper's six alphas by default")
+      call check(ctx, scene%coefficient%alphas(6), 9.7_wp)
+   end subroutine coefficient_list
+
+   subroutine points_file(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(scene_t) :: scene
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: path, points
+      points = scratch_prefix("pts")//".dat"
+      call write_file(points, [character(len=40) :: "# alpha beta", "1.48 2.47  # (a)", "", &
+         "  3.70, 2.47", "5.0 0.76 extra columns ignored"])
+      call read_text_scene("points", [ padded("&scene task = 'points' /"), &
+         padded("&points file = '"//points//"' /")], scene, error, path)
+      call delete_file(points)
+      call check(ctx, .not. allocated(error), "points read")
+      if (allocated(error)) return
+      call check(ctx, size(scene%points, 2) == 3, "three points")
+      call check(ctx, scene%points(1, 2), 3.70_wp)
+      call check(ctx, scene%points(2, 3), 0.76_wp)
+   end subroutine points_file
+
+   subroutine real_text_round_trip(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: values(10), back
+      character(len=:), allocatable :: text
+      integer :: k
+      values = [9.8_wp, 1.0e-10_wp, -2.0_wp, pi2, 1.0_wp/3.0_wp, 1.0e300_wp, -4.9e-324_wp, 0.1_wp, 123456.789_wp, &
+                2.0_wp**60]
+      do k = 1, size(values)
+         text = real_text(values(k))
+         read (text, *) back
+         call check(ctx, back, values(k), rel=0.0_wp, abs=0.0_wp, message="round trip of "//text)
+      end do
+      call check(ctx, real_text(9.8_wp) == "9.8", "9.8 -> "//real_text(9.8_wp))
+      call check(ctx, real_text(0.0_wp) == "0.0", "0.0")
+      call check(ctx, real_text(12.0_wp) == "12.0", "12.0 -> "//real_text(12.0_wp))
+      call check(ctx, real_text(1.0e-10_wp) == "1.0e-10", "1e-10 -> "//real_text(1.0e-10_wp))
+      call check(ctx, real_text(-0.25_wp) == "-0.25", "-0.25 -> "//real_text(-0.25_wp))
+   end subroutine real_text_round_trip
+
+   !> The namelist lines of `scene_namelist`, read back as a scene, give the same scene.
+   subroutine namelist_round_trip(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(scene_t) :: first, second
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: path, lines(:), header(:)
+      call read_text_scene("nml1", [ &
+         padded("&scene task='coefficient', model='elastic', method='segments', n_segments=7, sampling='midpoint',"), &
+         padded("  tolerance=3e-9, epsilon=0.3, output='build/it''s' /"), &
+         padded("&coefficient alphas = 0.1, 9.8696, beta = -1.5, n_tau = 11, tau_min = -1, tau_max = 4.25 /")], &
+         first, error, path)
+      call check(ctx, .not. allocated(error), "first read")
+      if (allocated(error)) return
+      lines = scene_namelist(first)
+      ! as in an output header: '#' comment lines around the namelist lines
+      allocate (character(len=len(lines) + 2) :: header(4))
+      header(1) = "# hillstab header"
+      header(2) = "# "//lines(1)
+      header(3) = "# "//lines(2)
+      header(4) = "# columns: tau"
+      call read_text_scene("nml2", header, second, error, path)
+      call check(ctx, .not. allocated(error), "second read")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      call check(ctx, second%task == first%task .and. second%model == first%model, "task, model")
+      call check(ctx, second%method%kind == first%method%kind .and. second%method%n_segments == 7 .and. &
+                 second%method%sampling == first%method%sampling, "method")
+      call check(ctx, second%method%tolerance, first%method%tolerance, rel=0.0_wp, abs=0.0_wp)
+      call check(ctx, second%epsilon, first%epsilon, rel=0.0_wp, abs=0.0_wp)
+      call check(ctx, second%output == "build/it's", "quote in output: "//second%output)
+      call check(ctx, size(second%coefficient%alphas) == 2, "alphas")
+      call check(ctx, second%coefficient%alphas(2), 9.8696_wp, rel=0.0_wp, abs=0.0_wp)
+      call check(ctx, second%coefficient%beta, -1.5_wp, rel=0.0_wp, abs=0.0_wp)
+      call check(ctx, second%coefficient%tau_max, 4.25_wp, rel=0.0_wp, abs=0.0_wp)
+      call check(ctx, second%coefficient%n_tau == 11, "n_tau")
+   end subroutine namelist_round_trip
+
+   !> Bad scenes: the tasks suite runs the same table to check that no file is touched.
+   function bad_cases() result(cases)
+      type(bad_case_t), allocatable :: cases(:)
+      character(len=*), parameter :: s = "&scene output='@OUT@', method='segments' "
+      character(len=*), parameter :: sp = "&scene output='@OUT@', method='segments', task='points' / "
+      cases = [ &
+         bad_case_t(s//"foo=3 / &chart /", "scene", "foo"), &
+         bad_case_t(s//"/ &chart n_alpha='abc' /", "chart", "n_alpha"), &
+         bad_case_t(s//"/ &chart n_beta=1.5 /", "chart", "n_beta"), &
+         bad_case_t(s//"/ &chart alpha_min=x1 /", "chart", "alpha_min"), &
+         bad_case_t(s//"epsilon='high' / &chart /", "scene", "epsilon"), &
+         bad_case_t(s//"/", "chart", "missing"), &
+         bad_case_t("&chart / ! no &scene group, @OUT@", "scene", "missing"), &
+         bad_case_t(sp, "points", "missing"), &
+         bad_case_t(s//"task='coefficient' / &chart /", "coefficient", "missing"), &
+         bad_case_t(s//"task='chrt' / &chart /", "scene", "task"), &
+         bad_case_t(s//"task='boundaries' / &chart /", "scene", "task"), &
+         bad_case_t(s//"model='spring' / &chart /", "scene", "model"), &
+         bad_case_t("&scene output='@OUT@', method='euler' / &chart /", "scene", "method"), &
+         bad_case_t(s//"sampling='left' / &chart /", "scene", "sampling"), &
+         bad_case_t(s//"/ &chart alpha_max=9.8696044010893586 /", "chart", "alpha_max"), &
+         bad_case_t(s//"/ &chart alpha_max=12 /", "chart", "alpha_max"), &
+         bad_case_t(s//"/ &chart alpha_min=-0.5 /", "chart", "alpha_min"), &
+         bad_case_t(s//"task='coefficient' / &coefficient alphas=4, 10 /", "coefficient", "alphas"), &
+         bad_case_t(s//"/ &chart n_alpha=0 /", "chart", "n_alpha"), &
+         bad_case_t(s//"/ &chart n_beta=-3 /", "chart", "n_beta"), &
+         bad_case_t(s//"n_segments=0 / &chart /", "scene", "n_segments"), &
+         bad_case_t(s//"task='coefficient' / &coefficient n_tau=0 /", "coefficient", "n_tau"), &
+         bad_case_t(s//"/ &chart alpha_min=5, alpha_max=3 /", "chart", "alpha_min"), &
+         bad_case_t(s//"/ &chart beta_min=1, beta_max=0.5 /", "chart", "beta_min"), &
+         bad_case_t(s//"task='coefficient' / &coefficient tau_min=2, tau_max=0 /", "coefficient", "tau_min"), &
+         bad_case_t(s//"tolerance=-1e-8 / &chart /", "scene", "tolerance"), &
+         bad_case_t(s//"tolerance=0 / &chart /", "scene", "tolerance"), &
+         bad_case_t(s//"epsilon=-0.5 / &chart /", "scene", "epsilon"), &
+         bad_case_t(s//"/ &chart beta_max=nan /", "chart", "beta_max"), &
+         bad_case_t(s//"/ &chart alpha_min=inf /", "chart", "alpha_min"), &
+         bad_case_t(s//"/ &chart beta_min=-1e400 /", "chart", "beta_min"), &
+         bad_case_t(s//"epsilon=nan / &chart /", "scene", "epsilon"), &
+         bad_case_t(s//"tolerance=inf / &chart /", "scene", "tolerance"), &
+         bad_case_t(s//"task='coefficient' / &coefficient alphas=4, nan /", "coefficient", "alphas"), &
+         bad_case_t(s//"task='coefficient' / &coefficient beta=nan /", "coefficient", "beta"), &
+         bad_case_t("&scene output='', method='segments' / &chart /", "scene", "output"), &
+         bad_case_t(sp//"&points file='@DIR@_none.dat' /", "points", "file"), &
+         bad_case_t(sp//"&points /", "points", "file"), &
+         bad_case_t(sp//"&points file='@DIR@_badline.dat' /", "points", "file"), &
+         bad_case_t(sp//"&points file='@DIR@_nan.dat' /", "points", "file"), &
+         bad_case_t(sp//"&points file='@DIR@_domain.dat' /", "points", "file"), &
+         bad_case_t(sp//"&points file='@DIR@_empty.dat' /", "points", "file")]
+   end function bad_cases
+
+   !> Write the points files the bad cases refer to (`<dir>_badline.dat`, ...).
+   subroutine write_bad_points_files(dir)
+      character(len=*), intent(in) :: dir
+      call write_file(dir//"_badline.dat", [character(len=20) :: "1.0 2.0", "3.0", "4.0 5.0"])
+      call write_file(dir//"_nan.dat", [character(len=20) :: "1.0 nan"])
+      call write_file(dir//"_domain.dat", [character(len=20) :: "1.0 2.0", "9.9 2.0"])
+      call write_file(dir//"_empty.dat", [character(len=20) :: "# nothing here", ""])
+   end subroutine write_bad_points_files
+
+   subroutine delete_bad_points_files(dir)
+      character(len=*), intent(in) :: dir
+      call delete_file(dir//"_badline.dat")
+      call delete_file(dir//"_nan.dat")
+      call delete_file(dir//"_domain.dat")
+      call delete_file(dir//"_empty.dat")
+   end subroutine delete_bad_points_files
+
+   !> Replace every `key` in `text` by `value`.
+   function substituted(text, key, value) result(out)
+      character(len=*), intent(in) :: text, key, value
+      character(len=:), allocatable :: out
+      integer :: at
+      out = trim(text)
+      do
+         at = index(out, key)
+         if (at == 0) exit
+         out = out(:at - 1)//value//out(at + len(key):)
+      end do
+   end function substituted
+
+   !> The scene text of a bad case with the placeholders filled in.
+   function bad_case_text(case, output, dir) result(text)
+      type(bad_case_t), intent(in) :: case
+      character(len=*), intent(in) :: output, dir
+      character(len=:), allocatable :: text
+      text = substituted(substituted(case%text, "@OUT@", output), "@DIR@", dir)
+   end function bad_case_text
+
+   subroutine bad_input_messages(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(bad_case_t), allocatable :: cases(:)
+      type(scene_t) :: scene
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: path, dir, text
+      integer :: k
+      dir = scratch_prefix("badpts")
+      call write_bad_points_files(dir)
+      cases = bad_cases()
+      do k = 1, size(cases)
+         text = bad_case_text(cases(k), "build/unused", dir)
+         call read_text_scene("bad", [text], scene, error, path)
+         call check(ctx, allocated(error), "no error for: "//text)
+         if (.not. allocated(error)) cycle
+         call check(ctx, error%code == err_input, "input error code: "//text)
+         call check(ctx, contains_text(error%message, path//": "), "names the file: "//error%message)
+         call check(ctx, contains_text(error%message, "&"//trim(cases(k)%group)//":"), &
+                    "names the group "//trim(cases(k)%group)//": "//error%message)
+         call check(ctx, contains_text(error%message, trim(cases(k)%variable)), &
+                    "names "//trim(cases(k)%variable)//": "//error%message)
+      end do
+      call delete_bad_points_files(dir)
+      ! the Mathieu model takes any finite nu: alpha_max = 12 is fine there
+      call read_text_scene("mathieu", [ padded("&scene model='mathieu' /"), &
+                                       padded("&chart alpha_max = 12 /")], scene, error, path)
+      call check(ctx, .not. allocated(error), "mathieu accepts alpha >= pi**2")
+   end subroutine bad_input_messages
+
+   subroutine missing_scene_file(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(scene_t) :: scene
+      type(error_t), allocatable :: error
+      call read_scene("build/no_such_scene.nml", scene, error)
+      call check(ctx, allocated(error), "missing scene file is an error")
+      if (.not. allocated(error)) return
+      call check(ctx, contains_text(error%message, "build/no_such_scene.nml"), "names the file: "//error%message)
+   end subroutine missing_scene_file
+end module test_scene

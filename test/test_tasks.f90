@@ -1,0 +1,436 @@
+!> Tests of the task runners through `run_scene_file`, reading the files back:
+!> layout (header, one `# columns:` line, numeric columns, α blocks), values
+!> against closed forms written here independently (Q ≡ β at α = 0, the
+!> paper's eq. (37) in its own notation, eq. (25) for the coefficient), the
+!> damped verdicts, overflow clamping, repeating a run from its output, and that
+!> bad input or an unwritable path leaves no file behind and touches none.
+module test_tasks
+   use hillstab_kinds, only: wp, pi, pi2
+   use hillstab_error, only: error_t, err_input, err_io
+   use hillstab_tasks, only: run_scene_file
+   use hillstab_testing
+   use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text, &
+      bad_case_t, bad_cases, bad_case_text, write_bad_points_files, delete_bad_points_files
+   use, intrinsic :: iso_c_binding, only: c_int
+   implicit none
+   private
+   public :: collect_tasks
+
+   interface
+      function c_getpid() bind(C, name="getpid") result(pid)
+         import :: c_int
+         integer(c_int) :: pid
+      end function c_getpid
+   end interface
+
+contains
+
+   function collect_tasks() result(suite)
+      type(testsuite_t) :: suite
+      suite = new_testsuite("tasks", [ &
+         new_unittest("chart_layout", chart_layout), &
+         new_unittest("chart_constant_coefficient", chart_constant_coefficient), &
+         new_unittest("points_paper_formula", points_paper_formula), &
+         new_unittest("coefficient_columns", coefficient_columns), &
+         new_unittest("damped_verdicts", damped_verdicts), &
+         new_unittest("overflow_clamped", overflow_clamped), &
+         new_unittest("repeat_from_output", repeat_from_output), &
+         new_unittest("bad_input_touches_nothing", bad_input_touches_nothing), &
+         new_unittest("unwritable_output", unwritable_output)])
+   end function collect_tasks
+
+   !> Write a scene file, run it quietly, delete the scene file.
+   subroutine run_text_scene(name, lines, error, written)
+      character(len=*), intent(in) :: name
+      character(len=*), intent(in) :: lines(:)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable, intent(out) :: written
+      character(len=:), allocatable :: path
+      path = scratch_prefix(name)//".nml"
+      call write_file(path, lines)
+      call run_scene_file(path, .true., error, written)
+      call delete_file(path)
+   end subroutine run_text_scene
+
+   !> The numeric rows of a file: each must hold exactly `n_columns` numbers.
+   subroutine data_rows(lines, n_columns, rows, n_blank, all_numeric)
+      character(len=*), intent(in) :: lines(:)
+      integer, intent(in) :: n_columns
+      real(wp), allocatable, intent(out) :: rows(:, :)
+      integer, intent(out) :: n_blank       !! blank lines between rows
+      logical, intent(out) :: all_numeric   !! every data line has exactly n_columns numbers
+      real(wp) :: values(n_columns + 1)
+      integer :: k, n, ios
+      allocate (rows(n_columns, size(lines)))
+      n = 0
+      n_blank = 0
+      all_numeric = .true.
+      do k = 1, size(lines)
+         if (lines(k)(1:1) == "#") cycle
+         if (len_trim(lines(k)) == 0) then
+            n_blank = n_blank + 1
+            cycle
+         end if
+         read (lines(k), *, iostat=ios) values(:n_columns)
+         if (ios /= 0) all_numeric = .false.
+         read (lines(k), *, iostat=ios) values
+         if (ios == 0) all_numeric = .false.  ! one column too many
+         n = n + 1
+         rows(:, n) = values(:n_columns)
+      end do
+      rows = rows(:, :n)
+   end subroutine data_rows
+
+   !> The one `# columns:` line; empty when there is not exactly one.
+   function columns_line(lines) result(columns)
+      character(len=*), intent(in) :: lines(:)
+      character(len=:), allocatable :: columns
+      integer :: k, n
+      columns = ""
+      n = 0
+      do k = 1, size(lines)
+         if (index(lines(k), "# columns: ") == 1) then
+            n = n + 1
+            columns = trim(lines(k)(len("# columns: ") + 1:))
+         end if
+      end do
+      if (n /= 1) columns = ""
+   end function columns_line
+
+   subroutine chart_layout(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out
+      character(len=1024), allocatable :: lines(:)
+      real(wp), allocatable :: rows(:, :)
+      integer :: n_blank, k, first_data
+      logical :: numeric
+      real(wp), parameter :: block_alphas(3) = [1.0_wp, 5.0_wp, 9.0_wp]
+      out = scratch_prefix("layout")
+      call run_text_scene("layout", [ &
+         padded("&scene method = 'segments', n_segments = 16, sampling = 'midpoint', output = '"//out//"' /"), &
+         padded("&chart alpha_min = 1, alpha_max = 9, n_alpha = 3, beta_min = -1, beta_max = 11, n_beta = 4 /")], &
+         error, written)
+      call check(ctx, .not. allocated(error), "chart runs")
+      if (allocated(error)) return
+      call check(ctx, written == out//"_chart.dat", "file name <output>_chart.dat")
+      lines = read_lines(written)
+      call check(ctx, index(lines(1), "# hillstab 0.1.0") == 1, "version first: "//trim(lines(1)))
+      call check(ctx, columns_line(lines) == "alpha beta S stable lambda_max mu log10_abs_S overflow physical", &
+                 "exactly one columns line")
+      call check(ctx, any(index(lines, "# &scene task = 'chart'") == 1), "effective &scene in the header")
+      call check(ctx, any(index(lines, "# &chart alpha_min = 1.0, alpha_max = 9.0, n_alpha = 3") == 1), &
+                 "effective &chart in the header")
+      call check(ctx, any(index(lines, "leaves the physical domain") > 0), "outside-domain note")
+      first_data = findloc(lines(:)(1:1) == "#", .false., dim=1)
+      call check(ctx, all(lines(:first_data - 1)(1:1) == "#"), "header before data")
+      call data_rows(lines, 9, rows, n_blank, numeric)
+      call check(ctx, numeric, "every data line holds exactly 9 numbers")
+      call check(ctx, size(rows, 2) == 12, "3 x 4 rows")
+      call check(ctx, n_blank == 2, "one blank line between the 3 alpha blocks")
+      if (size(rows, 2) /= 12) return
+      ! blocks: alpha constant inside, beta running min..max
+      do k = 1, 12
+         call check(ctx, rows(1, k), block_alphas((k - 1)/4 + 1), message="alpha of the block")
+         call check(ctx, rows(2, k), -1.0_wp + 4.0_wp*mod(k - 1, 4), rel=1.0e-15_wp, message="beta")
+         call check(ctx, rows(4, k) == 0.0_wp .or. rows(4, k) == 1.0_wp, "stable flag 0/1")
+         call check(ctx, (rows(4, k) == 1.0_wp) .eqv. (abs(rows(3, k)) < 2.0_wp), "stable iff |S| < 2")
+         call check(ctx, rows(9, k) == merge(1.0_wp, 0.0_wp, rows(2, k) > 0.0_wp .and. rows(2, k) < pi2), &
+                    "physical flag")
+      end do
+      call delete_file(written)
+   end subroutine chart_layout
+
+   !> α = 0: Q ≡ β, S = 2 cos 2√β (2 cosh 2√−β for β < 0), |λ| and μ follow.
+   subroutine chart_constant_coefficient(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out
+      character(len=1024), allocatable :: lines(:)
+      real(wp), allocatable :: rows(:, :)
+      real(wp) :: beta, s, lambda
+      integer :: n_blank, k
+      logical :: numeric
+      out = scratch_prefix("alpha0")
+      call run_text_scene("alpha0", [ &
+         padded("&scene method = 'segments', n_segments = 4, output = '"//out//"' /"), &
+         padded("&chart alpha_min = 0, alpha_max = 0, n_alpha = 1, beta_min = -3, beta_max = 9, n_beta = 7 /")], &
+         error, written)
+      call check(ctx, .not. allocated(error), "chart runs")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call data_rows(lines, 9, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 7 .and. n_blank == 0, "7 rows, one block")
+      do k = 1, size(rows, 2)
+         beta = -3.0_wp + 2.0_wp*(k - 1)
+         if (beta >= 0.0_wp) then
+            s = 2.0_wp*cos(2.0_wp*sqrt(beta))
+         else
+            s = 2.0_wp*cosh(2.0_wp*sqrt(-beta))
+         end if
+         call check(ctx, rows(3, k), s, rel=1.0e-13_wp, abs=1.0e-13_wp, message="S at alpha = 0")
+         lambda = 1.0_wp
+         if (abs(s) > 2.0_wp) lambda = 0.5_wp*(abs(s) + sqrt(s*s - 4.0_wp))
+         call check(ctx, rows(5, k), lambda, rel=1.0e-8_wp, message="lambda_max")
+         call check(ctx, rows(6, k), 0.5_wp*log(lambda), abs=1.0e-9_wp, message="mu")
+         call check(ctx, rows(7, k), log10(abs(s)), rel=1.0e-8_wp, abs=1.0e-9_wp, message="log10_abs_S")
+         call check(ctx, rows(8, k) == 0.0_wp, "no overflow")
+      end do
+      call delete_file(written)
+   end subroutine chart_constant_coefficient
+
+   !> method = 'formula' through the points task, against eq. (37) in the paper's
+   !> own notation (valid for β > α), points kept in file order.
+   subroutine points_paper_formula(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out, points
+      character(len=1024), allocatable :: lines(:)
+      real(wp), allocatable :: rows(:, :)
+      real(wp) :: alphas(4) = [1.48_wp, 0.5_wp, 2.0_wp, 1.0_wp], betas(4) = [2.47_wp, 6.0_wp, 9.0_wp, 1.29_wp]
+      real(wp) :: b1, b2, s
+      integer :: n_blank, k
+      logical :: numeric
+      out = scratch_prefix("pts")
+      points = out//"_in.dat"
+      call write_file(points, [character(len=40) :: "# alpha beta", "1.48 2.47 # (a)", "0.5 6.0", "", &
+                                "2.0 9.0", "1.0 1.29"])
+      call run_text_scene("pts", [ padded("&scene task = 'points', method = 'formula', output = '"// &
+                                  out//"' /"), padded("&points file = '"//points//"' /")], error, written)
+      call delete_file(points)
+      call check(ctx, .not. allocated(error), "points run")
+      if (allocated(error)) return
+      call check(ctx, written == out//"_points.dat", "file name <output>_points.dat")
+      lines = read_lines(written)
+      call check(ctx, columns_line(lines) == "alpha beta S stable lambda_max mu log10_abs_S overflow physical", &
+                 "same columns as the chart")
+      call data_rows(lines, 9, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 4, "one row per point")
+      if (size(rows, 2) /= 4) return
+      do k = 1, 4
+         call check(ctx, rows(1, k), alphas(k), message="alpha in input order")
+         call check(ctx, rows(2, k), betas(k), message="beta in input order")
+         b1 = sqrt((betas(k) + alphas(k))/(1.0_wp + alphas(k)/pi2))
+         b2 = sqrt((betas(k) - alphas(k))/(1.0_wp - alphas(k)/pi2))
+         s = 2.0_wp*cos(b1)*cos(b2) - 2.0_wp*(betas(k) - alphas(k)**2/pi2) &
+             /sqrt((betas(k)**2 - alphas(k)**2)*(1.0_wp - alphas(k)**2/pi2**2))*sin(b1)*sin(b2)
+         call check(ctx, rows(3, k), s, rel=1.0e-12_wp, abs=1.0e-13_wp, message="eq. (37)")
+      end do
+      ! (1.48, 2.47) is unstable (Fig. 4a), (1.0, 1.29) stable by the paper's chart
+      call check(ctx, rows(4, 1) == 0.0_wp, "point (a) unstable")
+      call delete_file(written)
+   end subroutine points_paper_formula
+
+   !> Q(τ) of eq. (25) and its 2-piece endpoint version (eq. (28)); Mathieu with
+   !> 4 averaged pieces gives β ∓ 2ν/π (the paper's (A18)).
+   subroutine coefficient_columns(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out
+      character(len=1024), allocatable :: lines(:)
+      real(wp), allocatable :: rows(:, :)
+      real(wp) :: tau, q, alpha, alphas(2) = [4.0_wp, 9.7_wp], beta
+      integer :: n_blank, k, j
+      logical :: numeric
+      out = scratch_prefix("coef")
+      beta = 6.0_wp
+      call run_text_scene("coef", [ padded("&scene task = 'coefficient', output = '"//out//"' /"), &
+                                   padded("&coefficient alphas = 4, 9.7, beta = 6, n_tau = 9 /")], error, written)
+      call check(ctx, .not. allocated(error), "coefficient run")
+      if (allocated(error)) return
+      call check(ctx, written == out//"_coefficient.dat", "file name <output>_coefficient.dat")
+      lines = read_lines(written)
+      call check(ctx, columns_line(lines) == "tau Q(4.0) Qseg(4.0) Q(9.7) Qseg(9.7)", "columns: "//columns_line(lines))
+      call data_rows(lines, 5, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 9, "9 rows of 5 numbers")
+      if (size(rows, 2) /= 9) return
+      do k = 1, 9
+         tau = 0.25_wp*(k - 1)
+         call check(ctx, rows(1, k), tau, message="tau")
+         do j = 1, 2
+            alpha = alphas(j)
+            q = (beta - alpha*cos(pi*tau))/(1.0_wp - alpha/pi2*cos(pi*tau))
+            call check(ctx, rows(2*j, k), q, rel=1.0e-12_wp, abs=1.0e-12_wp, message="Q of eq. (25)")
+            if (tau < 1.0_wp .or. tau >= 2.0_wp) then
+               q = (beta - alpha)/(1.0_wp - alpha/pi2)
+            else
+               q = (beta + alpha)/(1.0_wp + alpha/pi2)
+            end if
+            call check(ctx, rows(2*j + 1, k), q, rel=1.0e-12_wp, message="Qseg of eq. (28)")
+         end do
+      end do
+      call delete_file(written)
+
+      call run_text_scene("coef", [ padded("&scene task = 'coefficient', model = 'mathieu', "// &
+                                   "n_segments = 4, sampling = 'average', output = '"//out//"' /"), &
+                                   padded("&coefficient alphas = 3, beta = 1, n_tau = 9, tau_max = 1.75 /")], error, written)
+      call check(ctx, .not. allocated(error), "mathieu coefficient run")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call data_rows(lines, 3, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 9, "9 rows of 3 numbers")
+      if (size(rows, 2) /= 9) return
+      do k = 1, 9
+         tau = 1.75_wp*(k - 1)/8
+         call check(ctx, rows(2, k), 1.0_wp - 3.0_wp*cos(pi*tau), rel=1.0e-12_wp, abs=1.0e-14_wp, message="q of (A1)")
+         q = 1.0_wp - 6.0_wp/pi*merge(1.0_wp, -1.0_wp, tau < 0.5_wp .or. tau >= 1.5_wp)
+         call check(ctx, rows(3, k), q, rel=1.0e-12_wp, message="beta -+ 2 nu/pi")
+      end do
+      call delete_file(written)
+   end subroutine coefficient_columns
+
+   !> ε = 1: stable iff |S1| < 2 cosh 1, stable_paper iff |S1| <= 2; at α = 0,
+   !> S1 = 2 cosh(2√(ε²/4 − β)) for β < ε²/4, so β ∈ (−0.93, 0.25) separates them.
+   subroutine damped_verdicts(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out
+      character(len=1024), allocatable :: lines(:)
+      real(wp), allocatable :: rows(:, :)
+      integer :: n_blank, k, n_differ
+      logical :: numeric
+      out = scratch_prefix("damped")
+      call run_text_scene("damped", [ &
+         padded("&scene method = 'segments', n_segments = 8, epsilon = 1, output = '"//out//"' /"), &
+         padded("&chart alpha_min = 0, alpha_max = 6, n_alpha = 3, beta_min = -1, beta_max = 1, n_beta = 11 /")], &
+         error, written)
+      call check(ctx, .not. allocated(error), "damped chart runs")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call check(ctx, columns_line(lines) == &
+                 "alpha beta S stable lambda_max mu log10_abs_S overflow physical stable_paper", "10 columns")
+      call data_rows(lines, 10, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 33, "33 rows of 10 numbers")
+      n_differ = 0
+      do k = 1, size(rows, 2)
+         call check(ctx, (rows(4, k) == 1.0_wp) .eqv. (abs(rows(3, k)) < 2.0_wp*cosh(1.0_wp)), "correct verdict")
+         call check(ctx, (rows(10, k) == 1.0_wp) .eqv. (abs(rows(3, k)) <= 2.0_wp), "paper's verdict")
+         call check(ctx, (rows(4, k) == 1.0_wp) .eqv. (rows(5, k) < 1.0_wp), "stable iff lambda_max < 1")
+         if (rows(4, k) /= rows(10, k)) n_differ = n_differ + 1
+      end do
+      call check(ctx, n_differ >= 1, "the two verdicts differ somewhere")
+      call check(ctx, rows(4, 7) == 1.0_wp .and. rows(10, 7) == 0.0_wp, "alpha = 0, beta = 0.2: stable, not by the paper")
+      ! α = 0, β = 0.2: S1 = 2 cosh(2√0.05)
+      call check(ctx, rows(3, 7), 2.0_wp*cosh(2.0_wp*sqrt(0.05_wp)), rel=1.0e-12_wp, message="S1 at alpha = 0")
+      call delete_file(written)
+   end subroutine damped_verdicts
+
+   !> Mathieu formula at β = −1e6: S1 = 2 cosh 2000 overflows; written as 1e300
+   !> with overflow = 1 and log10|S| = 2000/ln 10; no Inf/NaN text anywhere.
+   subroutine overflow_clamped(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out
+      character(len=1024), allocatable :: lines(:)
+      real(wp), allocatable :: rows(:, :)
+      integer :: n_blank, k
+      logical :: numeric
+      out = scratch_prefix("overflow")
+      call run_text_scene("overflow", [ &
+         padded("&scene model = 'mathieu', method = 'formula', output = '"//out//"' /"), &
+         padded("&chart alpha_min = 0, alpha_max = 0, n_alpha = 1, beta_min = -1e6, beta_max = 1, n_beta = 2 /")], &
+         error, written)
+      call check(ctx, .not. allocated(error), "chart runs")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call data_rows(lines, 9, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 2, "2 rows")
+      if (size(rows, 2) /= 2) return
+      call check(ctx, rows(3, 1), 1.0e300_wp, rel=1.0e-15_wp, message="S clamped")
+      call check(ctx, rows(8, 1) == 1.0_wp .and. rows(8, 2) == 0.0_wp, "overflow flags")
+      call check(ctx, rows(7, 1), 2000.0_wp/log(10.0_wp), rel=1.0e-9_wp, message="log10|S| exact")
+      call check(ctx, rows(5, 1), 1.0e300_wp, rel=1.0e-9_wp, message="lambda_max clamped")
+      call check(ctx, rows(6, 1), 1000.0_wp, rel=1.0e-9_wp, message="mu = ln(lambda)/2")
+      call check(ctx, rows(4, 1) == 0.0_wp, "unstable")
+      do k = 1, size(lines)
+         call check(ctx, index(lines(k), "Inf") == 0 .and. index(lines(k), "NaN") == 0 .and. &
+                    index(lines(k), "Infinity") == 0, "no Inf/NaN text")
+      end do
+      call delete_file(written)
+   end subroutine overflow_clamped
+
+   !> Running an output file as the scene repeats the run: same file, line for line
+   !> (except the line naming the scene file).
+   subroutine repeat_from_output(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out, again
+      character(len=1024), allocatable :: first(:), second(:)
+      integer :: k
+      out = scratch_prefix("repeat")
+      call run_text_scene("repeat", [ &
+         padded("&scene method = 'segments', n_segments = 32, sampling = 'average', epsilon = 0.25,"), &
+         padded("  output = '"//out//"' /"), &
+         padded("&chart alpha_min = 0.3, alpha_max = 9.7, n_alpha = 2, beta_min = 0.1, beta_max = 9.3, n_beta = 3 /")], &
+         error, written)
+      call check(ctx, .not. allocated(error), "first run")
+      if (allocated(error)) return
+      first = read_lines(written)
+      call run_scene_file(written, .true., error, again)
+      call check(ctx, .not. allocated(error), "second run from the output file")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      call check(ctx, again == written, "same output name")
+      second = read_lines(again)
+      call check(ctx, size(first) == size(second), "same number of lines")
+      if (size(first) /= size(second)) return
+      do k = 1, size(first)
+         if (index(first(k), "# scene file:") == 1) cycle
+         call check(ctx, first(k) == second(k), "line "//trim(first(k)))
+      end do
+      call check(ctx, .not. any(index(first, "leaves the physical domain") > 0), "inside the physical domain")
+      call delete_file(written)
+   end subroutine repeat_from_output
+
+   !> Every bad scene of the scene suite: an error, no output file created, an
+   !> existing output file unchanged, no temporary file left.
+   subroutine bad_input_touches_nothing(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(bad_case_t), allocatable :: cases(:)
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out, dir, text
+      character(len=1024), allocatable :: kept(:)
+      character(len=*), parameter :: tasks(3) = [character(len=11) :: "chart", "points", "coefficient"]
+      character(len=16) :: pid
+      integer :: k, t
+      write (pid, '(i0)') c_getpid()
+      out = scratch_prefix("keep")
+      dir = scratch_prefix("keeppts")
+      call write_bad_points_files(dir)
+      cases = bad_cases()
+      do k = 1, size(cases)
+         text = bad_case_text(cases(k), out, dir)
+         ! an existing chart file must survive; the other tasks' files must not appear
+         call write_file(out//"_chart.dat", ["sentinel"])
+         call run_text_scene("badrun", [text], error, written)
+         call check(ctx, allocated(error), "error for "//text)
+         kept = read_lines(out//"_chart.dat")
+         call check(ctx, size(kept) == 1, "existing file untouched: "//text)
+         if (size(kept) == 1) call check(ctx, kept(1) == "sentinel", "existing file untouched: "//text)
+         do t = 1, 3
+            call check(ctx, .not. file_exists(out//"_"//trim(tasks(t))//".dat.part"//trim(pid)), "no temporary file")
+            if (t > 1) call check(ctx, .not. file_exists(out//"_"//trim(tasks(t))//".dat"), "no file created: "//text)
+         end do
+      end do
+      call delete_file(out//"_chart.dat")
+      call delete_bad_points_files(dir)
+   end subroutine bad_input_touches_nothing
+
+   subroutine unwritable_output(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written
+      call run_text_scene("unwritable", [ &
+         padded("&scene method = 'segments', output = 'build/hillstab_no_such_dir/run' /"), &
+         padded("&chart n_alpha = 2, n_beta = 2 /")], error, written)
+      call check(ctx, allocated(error), "unwritable output is an error")
+      if (.not. allocated(error)) return
+      call check(ctx, error%code == err_io, "i/o error code")
+      call check(ctx, contains_text(error%message, scratch_prefix("unwritable")//".nml: &scene: output:"), &
+                 "names file, group, variable: "//error%message)
+      call check(ctx, contains_text(error%message, "build/hillstab_no_such_dir/run_chart.dat"), "names the path")
+      call check(ctx, .not. file_exists("build/hillstab_no_such_dir"), "no directory created")
+   end subroutine unwritable_output
+end module test_tasks
