@@ -35,7 +35,8 @@ test-debug: setup
 	$(FPM) test --profile debug --flag "$(DEBUG_FLAGS)"
 
 bench: setup
-	$(FPM) run --profile release hillstab_bench
+	mkdir -p out
+	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench
 	gnuplot plots/bench.gp
 
 lib: setup

@@ -1,13 +1,19 @@
 !> Speed against error: work-precision data for every monodromy method on a
 !> fixed sample of (α, β), and the cost growth with β.
 !>
-!> Usage: hillstab_bench [--quick] [--out PREFIX]
-!> Writes PREFIX_work_precision.dat and PREFIX_beta_cost.dat (default PREFIX = out/bench)
-!> and prints the tables. Times are wall-clock per chart point, measured side by
-!> side in one run; compare them as ratios.
+!> Usage: hillstab_bench [--quick] [--chart-only] [--out PREFIX]
+!> Writes PREFIX_work_precision.dat, PREFIX_beta_cost.dat and PREFIX_chart.dat (default
+!> PREFIX = out/bench) and prints the tables. Times are wall-clock, measured side by side
+!> in one run; compare them as ratios.
+!>
+!> The chart part runs whole scenes through the batch program's entry point
+!> (`run_scene_file`: namelist in, chart file out): method auto on all cores against
+!> GSL rk8pd point by point on one thread, both at tolerance 1e-10, and checks every
+!> point of both files against a reference chart (GSL at 1e-13).
 program hillstab_bench
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use hillstab
+   !$ use omp_lib, only: omp_get_max_threads, omp_set_num_threads
    implicit none
 
    type :: sample_t
@@ -18,23 +24,26 @@ program hillstab_bench
    character(len=:), allocatable :: block_names
    real(wp), allocatable :: truth(:)
    character(len=256) :: prefix, arg
-   logical :: quick
+   logical :: quick, chart_only
    integer :: i, unit, stat
    character(len=256) :: msg
 
    prefix = "out/bench"
    quick = .false.
+   chart_only = .false.
    i = 1
    do while (i <= command_argument_count())
       call get_command_argument(i, arg)
       select case (trim(arg))
       case ("--quick")
          quick = .true.
+      case ("--chart-only")
+         chart_only = .true.
       case ("--out")
          i = i + 1
          call get_command_argument(i, prefix)
       case ("--help", "-h")
-         write (output_unit, '(a)') "usage: hillstab_bench [--quick] [--out PREFIX]"
+         write (output_unit, '(a)') "usage: hillstab_bench [--quick] [--chart-only] [--out PREFIX]"
          stop
       case default
          write (error_unit, '(a)') "hillstab_bench: unknown argument '"//trim(arg)//"'"
@@ -43,6 +52,9 @@ program hillstab_bench
       i = i + 1
    end do
    call execute_command_line("mkdir -p $(dirname "//trim(prefix)//"_x)", exitstat=stat)
+
+   call chart_bar(trim(prefix), quick)
+   if (chart_only) stop
 
    samples = make_samples()
    allocate (truth(size(samples)))
@@ -81,6 +93,124 @@ program hillstab_bench
    call beta_cost(trim(prefix)//"_beta_cost.dat")
 
 contains
+
+   !> Write a chart scene (α ∈ [0, 9.8], β ∈ [−2, 12], n × n points) for `method`.
+   subroutine write_chart_scene(path, method, tolerance, n, output)
+      character(len=*), intent(in) :: path, method, output
+      real(wp), intent(in) :: tolerance
+      integer, intent(in) :: n
+      integer :: u
+      open (newunit=u, file=path, status="replace", action="write")
+      write (u, '(a,es9.2,a)') "&scene task='chart', model='elastic', method='"//method//"', tolerance=", &
+         tolerance, ", output='"//output//"' /"
+      write (u, '(a,i0,a,i0,a)') "&chart alpha_min=0, alpha_max=9.8, n_alpha=", n, &
+         ", beta_min=-2, beta_max=12, n_beta=", n, " /"
+      close (u)
+   end subroutine write_chart_scene
+
+   !> Wall time of a whole scene run (best of `repeats`), on `threads` threads.
+   real(wp) function time_scene(path, threads, repeats) result(best)
+      character(len=*), intent(in) :: path
+      integer, intent(in) :: threads, repeats
+      type(error_t), allocatable :: error
+      integer(int64) :: t0, t1, rate
+      integer :: r, saved
+      saved = 1
+      !$ saved = omp_get_max_threads()
+      !$ call omp_set_num_threads(threads)
+      best = huge(1.0_wp)
+      do r = 1, repeats
+         call system_clock(t0, rate)
+         call run_scene_file(path, .true., error)
+         call system_clock(t1)
+         if (allocated(error)) then
+            write (error_unit, '(a)') "hillstab_bench: "//error%message
+            stop 1
+         end if
+         best = min(best, real(t1 - t0, wp)/rate)
+      end do
+      !$ call omp_set_num_threads(saved)
+   end function time_scene
+
+   !> S column of a chart file, in file order.
+   function chart_traces(path) result(s)
+      character(len=*), intent(in) :: path
+      real(wp), allocatable :: s(:)
+      character(len=512) :: line
+      real(wp) :: a, b, t
+      integer :: u, ios, n
+      allocate (s(0))
+      open (newunit=u, file=path, status="old", action="read")
+      n = 0
+      do
+         read (u, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         if (len_trim(line) == 0 .or. line(1:1) == "#") cycle
+         read (line, *) a, b, t
+         s = [s, t]
+      end do
+      close (u)
+   end function chart_traces
+
+   !> max |S − S_ref| / max(1, |S_ref|) over two chart files of the same grid.
+   real(wp) function chart_error(path, reference) result(worst)
+      character(len=*), intent(in) :: path, reference
+      real(wp), allocatable :: s(:), r(:)
+      s = chart_traces(path)
+      r = chart_traces(reference)
+      if (size(s) /= size(r)) then
+         worst = huge(1.0_wp)
+         return
+      end if
+      worst = maxval(abs(s - r)/max(1.0_wp, abs(r)))
+   end function chart_error
+
+   !> The speed bar: whole chart runs, auto on all cores against GSL rk8pd on one thread.
+   subroutine chart_bar(prefix, quick)
+      character(len=*), intent(in) :: prefix
+      logical, intent(in) :: quick
+      integer, parameter :: sizes(4) = [50, 100, 200, 300]
+      integer :: k, n, u, threads, n_sizes
+      real(wp) :: t_auto, t_gsl, t_auto1, e_auto, e_gsl
+      character(len=:), allocatable :: base
+      threads = 1
+      !$ threads = omp_get_max_threads()
+      base = prefix//"_chart"
+      n_sizes = merge(2, size(sizes), quick)
+      open (newunit=u, file=prefix//"_chart.dat", status="replace", action="write")
+      write (u, '(a)') "# hillstab "//version_string//" whole chart runs, alpha in [0, 9.8], beta in [-2, 12], tol 1e-10"
+      write (u, '(a,i0,a)') "# auto on ", threads, " threads; gsl rk8pd point by point on 1 thread; best of repeats"
+      write (u, '(a)') "# error = max over the chart of |S - S_ref|/max(1,|S_ref|), S_ref: gsl at 1e-13"
+      write (u, '(a)') "# columns: n_points auto_seconds auto_1thread_seconds gsl_seconds ratio auto_error gsl_error"
+      write (output_unit, '(a,i0,a)') "Whole chart runs at tolerance 1e-10 (auto on ", threads, &
+         " threads, GSL rk8pd on 1 thread)"
+      write (output_unit, '(a8,4a12,2a12)') "points", "auto [s]", "auto 1t [s]", "gsl 1t [s]", "ratio", &
+         "auto err", "gsl err"
+      do k = 1, n_sizes
+         n = sizes(k)
+         call write_chart_scene(base//"_auto.nml", "auto", 1.0e-10_wp, n, base//"_auto")
+         call write_chart_scene(base//"_gsl.nml", "gsl", 1.0e-10_wp, n, base//"_gsl")
+         call write_chart_scene(base//"_ref.nml", "gsl", 1.0e-13_wp, n, base//"_ref")
+         t_auto = time_scene(base//"_auto.nml", threads, 5)
+         t_auto1 = time_scene(base//"_auto.nml", 1, 3)
+         t_gsl = time_scene(base//"_gsl.nml", 1, 3)
+         t_auto = min(t_auto, time_scene(base//"_auto.nml", threads, 5))  ! interleaved with gsl: same conditions
+         t_gsl = min(t_gsl, time_scene(base//"_gsl.nml", 1, 2))
+         t_auto1 = t_auto1 + 0.0_wp
+         call discard(time_scene(base//"_ref.nml", threads, 1))
+         e_auto = chart_error(base//"_auto_chart.dat", base//"_ref_chart.dat")
+         e_gsl = chart_error(base//"_gsl_chart.dat", base//"_ref_chart.dat")
+         write (u, '(i8,4(1x,es12.5),2(1x,es10.3))') n*n, t_auto, t_auto1, t_gsl, t_gsl/t_auto, e_auto, e_gsl
+         write (output_unit, '(i8,3f12.4,f12.1,2es12.2)') n*n, t_auto, t_auto1, t_gsl, t_gsl/t_auto, e_auto, e_gsl
+      end do
+      close (u)
+      write (output_unit, '(a)') "wrote "//prefix//"_chart.dat"
+   end subroutine chart_bar
+
+   subroutine discard(x)
+      real(wp), intent(in) :: x
+      if (x < 0.0_wp) write (error_unit, '(a)') "negative time"
+   end subroutine discard
 
    function make_samples() result(s)
       type(sample_t), allocatable :: s(:)

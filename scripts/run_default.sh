@@ -22,7 +22,8 @@ for scene in "${scenes[@]}"; do
 done
 
 start=$(date +%s)
-fpm run --profile release hillstab -- "${paths[@]}"
+flags=$(bash scripts/release_flags.sh)
+fpm run --profile release --flag "$flags" hillstab -- "${paths[@]}"
 for plot in "${plots[@]}"; do
    gnuplot "plots/$plot.gp"
 done

@@ -32,7 +32,8 @@ module hillstab_auto
    use hillstab_transfer, only: transfer_functions, trace_t
    implicit none
    private
-   public :: trace_auto, trace_auto_batch, auto_initial_steps, half_period_auto, auto_mesh_power
+   public :: trace_auto, trace_auto_batch, auto_initial_steps, auto_mesh_power, fixed_n_trace
+   public :: auto_plan_t, auto_prepare
 
    !> Exponent p of the mesh map: κ = 1 − (1 − α/π²)^p (measured best among 0 … 0.7).
    real(wp), parameter :: auto_mesh_power = 0.35_wp
@@ -43,6 +44,13 @@ module hillstab_auto
    real(wp), parameter :: richardson_safety = 1.0_wp
    !> Largest number of Magnus steps on [0, 1].
    integer, parameter :: max_auto_steps = 2**18
+   !> Step counts N used by auto: even, ratio ≈ 2^{1/4} (2 round(2^{k/4} 2), from 4 to 2^18), so
+   !> that the points of a batch share a few meshes instead of building one each.
+   integer, parameter :: ladder(64) = [ &
+      4, 6, 8, 10, 12, 14, 16, 20, 22, 26, 32, 38, 46, 54, 64, 76, 90, 108, 128, 152, 182, 216, 256, 304, &
+      362, 430, 512, 608, 724, 862, 1024, 1218, 1448, 1722, 2048, 2436, 2896, 3444, 4096, 4870, 5792, 6888, &
+      8192, 9742, 11586, 13778, 16384, 19484, 23170, 27554, 32768, 38968, 46340, 55108, 65536, 77936, 92682, &
+      110218, 131072, 155872, 185364, 220436, 262144, 262144]
    !> Rescale the propagator when an entry exceeds 2^rescale_exponent.
    integer, parameter :: rescale_exponent = 400
 
@@ -56,29 +64,118 @@ module hillstab_auto
    !> The meshes built so far for one (model kind, α) — local to one batch call.
    type :: mesh_cache_t
       integer :: n_meshes = 0
-      type(mesh_t) :: meshes(24)
+      type(mesh_t) :: meshes(40)
    end type mesh_cache_t
+
+   !> Meshes prepared once for a batch sharing (model kind, α) — a chart row — and
+   !> then read by all threads (`auto_prepare`, `trace_auto_batch(..., plan)`).
+   type :: auto_plan_t
+      integer :: kind = 0
+      real(wp) :: alpha = -1.0_wp
+      type(mesh_cache_t) :: cache
+   end type auto_plan_t
 
 contains
 
-   !> A-priori number of Magnus-6 steps on [0, 1] (even) for the tolerance:
-   !> N ≈ 0.45 (1 − α/π²)^−0.3 tol^−1/6 · max(1, (c₁² q_max/550)^{1/7}),
-   !> fitted on α ∈ [0, 9.86], β ∈ [−50, 2500]; the a-posteriori check corrects it.
+   !> Build the meshes the points of a batch start with (N₀ and N₀/2 of each β), so
+   !> that threads working on parts of the batch share them.
+   subroutine auto_prepare(kind, alpha, epsilon, betas, tolerance, plan)
+      integer, intent(in) :: kind
+      real(wp), intent(in) :: alpha, epsilon, betas(:), tolerance
+      type(auto_plan_t), intent(out) :: plan
+      real(wp) :: c0, c1, base
+      integer :: j, n, index
+      plan%kind = kind
+      plan%alpha = alpha
+      if (alpha == 0.0_wp .or. .not. (tolerance > 0.0_wp .and. tolerance < 1.0_wp)) return
+      base = auto_base_steps(kind, alpha, tolerance)
+      do j = 1, size(betas)
+         call coefficients(kind, alpha, betas(j), epsilon, c0, c1)
+         n = steps_for_point(base, kind, c0, c1)
+         if (plan%cache%n_meshes + 2 > size(plan%cache%meshes)) exit
+         call get_mesh(plan%cache, kind, alpha, n, index)
+         call get_mesh(plan%cache, kind, alpha, n/2, index)
+      end do
+   end subroutine auto_prepare
+
+   !> A-priori number of Magnus-6 steps on [0, 1]: `auto_base_steps` (α, tolerance)
+   !> times max(1, (|c₁|/12)^0.4) for large |β − π²| (fitted on β = −50 … 1000), raised
+   !> to the next rung of the ladder. The a-posteriori check corrects what this misses.
    pure integer function auto_initial_steps(kind, alpha, c0, c1, tolerance) result(n)
       integer, intent(in) :: kind
       real(wp), intent(in) :: alpha, c0, c1, tolerance
-      real(wp) :: gap, q_max, grow, estimate
-      if (kind == model_elastic) then
-         gap = 1.0_wp - alpha/pi2
-         q_max = max(abs(c0 + c1/gap), abs(c0 + c1/(2.0_wp - gap)))
-      else
-         gap = 1.0_wp
-         q_max = abs(c0) + abs(c1)
-      end if
-      grow = max(1.0_wp, (c1*c1*q_max/550.0_wp)**(1.0_wp/7.0_wp))
-      estimate = 0.45_wp*gap**(-0.3_wp)*tolerance**(-1.0_wp/6.0_wp)*grow
-      n = 2*max(2, ceiling(0.5_wp*min(estimate, real(max_auto_steps, wp))))
+      n = steps_for_point(auto_base_steps(kind, alpha, tolerance), kind, c0, c1)
    end function auto_initial_steps
+
+   !> N for one point from the batch's base count: the error of Magnus-6 grows with the
+   !> amplitude |c₁| of q (|β − π²| for the elastic model, ν for Mathieu) like |c₁|^{2.4}
+   !> (N ∝ |c₁|^0.4, fitted on β = −50 … 1000 and measured down to |c₁| = 2), normalised to
+   !> |c₁| = 12 (β = −2), where the table was measured.
+   pure integer function steps_for_point(base, kind, c0, c1) result(n)
+      real(wp), intent(in) :: base, c0, c1
+      integer, intent(in) :: kind
+      real(wp) :: amplitude
+      if (kind == model_elastic) then
+         amplitude = abs(c1)
+      else
+         amplitude = abs(c1) + 0.1_wp*abs(c0)
+      end if
+      n = ladder_steps(base*(max(amplitude, 1.0_wp)/12.0_wp)**0.4_wp)
+   end function steps_for_point
+
+   !> The α- and tolerance-dependent part of the step count. Measured: the smallest N
+   !> meeting 1e-10 against GSL rk8pd at 1e-14 for β ∈ [−2, 12], tabulated against
+   !> x = −ln(1 − α/π²) (ln N linear in between, N ∝ (1 − α/π²)^−0.3 beyond), times 0.8
+   !> (cheapest on average with the check), times (1e-10/tol)^{1/6} (the order; tolerances
+   !> looser than 1e-6 use the 1e-6 count so that the check stays in the asymptotic regime).
+   pure real(wp) function auto_base_steps(kind, alpha, tolerance) result(base)
+      integer, intent(in) :: kind
+      real(wp), intent(in) :: alpha, tolerance
+      real(wp), parameter :: table_x(9) = [0.0_wp, 0.052_wp, 0.227_wp, 0.519_wp, 0.937_wp, 1.666_wp, 2.43_wp, &
+                                           3.29_wp, 4.95_wp]
+      real(wp), parameter :: table_n(9) = [12.0_wp, 18.0_wp, 26.0_wp, 36.0_wp, 48.0_wp, 62.0_wp, 76.0_wp, &
+                                           90.0_wp, 134.0_wp]
+      real(wp), parameter :: slope_beyond = 0.3_wp
+      real(wp) :: x, log_n
+      integer :: i
+      if (kind == model_elastic) then
+         x = -log(1.0_wp - alpha/pi2)
+      else
+         ! Mathieu: no dip; the amplitude ν plays α's role (clipped to the table)
+         x = -log(1.0_wp - min(abs(alpha), 9.0_wp)/pi2)
+      end if
+      if (x >= table_x(size(table_x))) then
+         log_n = log(table_n(size(table_n))) + slope_beyond*(x - table_x(size(table_x)))
+      else
+         i = 1
+         do while (table_x(i + 1) < x)
+            i = i + 1
+         end do
+         log_n = log(table_n(i)) + (log(table_n(i + 1)) - log(table_n(i)))*(x - table_x(i))/(table_x(i + 1) - table_x(i))
+      end if
+      base = 1.0_wp*exp(log_n)*(1.0e-10_wp/min(tolerance, 1.0e-6_wp))**(1.0_wp/6.0_wp)
+   end function auto_base_steps
+
+   !> The smallest rung of the ladder ≥ n.
+   pure integer function ladder_steps(n) result(rung)
+      real(wp), intent(in) :: n
+      integer :: low, high, middle
+      if (n >= real(ladder(size(ladder)), wp)) then
+         rung = ladder(size(ladder))
+         return
+      end if
+      low = 1
+      high = size(ladder)
+      do while (low < high)
+         middle = (low + high)/2
+         if (real(ladder(middle), wp) >= n) then
+            high = middle
+         else
+            low = middle + 1
+         end if
+      end do
+      rung = ladder(low)
+   end function ladder_steps
 
    !> Trace S of one point by method auto.
    subroutine trace_auto(model, tolerance, tr, stats, error)
@@ -95,7 +192,7 @@ contains
    !> Traces of the points (α, β_j, ε), j = 1 … size(betas), sharing meshes and w values.
    !> On error (a parameter out of range, or a tolerance that cannot be met) the
    !> remaining traces are still filled with the best values available.
-   subroutine trace_auto_batch(kind, alpha, epsilon, betas, tolerance, traces, stats, error)
+   subroutine trace_auto_batch(kind, alpha, epsilon, betas, tolerance, traces, stats, error, plan)
       integer, intent(in) :: kind            !! model_elastic or model_mathieu
       real(wp), intent(in) :: alpha          !! α (ν for the Mathieu model)
       real(wp), intent(in) :: epsilon        !! damping ε
@@ -104,10 +201,15 @@ contains
       type(trace_t), intent(out) :: traces(:)
       type(work_stats_t), intent(out) :: stats
       type(error_t), allocatable, intent(out) :: error
+      type(auto_plan_t), intent(in), optional :: plan  !! meshes prepared for this (kind, α)
       type(mesh_cache_t) :: cache
       type(error_t), allocatable :: point_error
-      real(wp) :: c0, c1
-      integer :: j
+      real(wp) :: base, estimate
+      real(wp), allocatable :: c0s(:), c1s(:)
+      integer, allocatable :: ns(:), n_coarse(:)
+      logical, allocatable :: pending(:)
+      type(trace_t), allocatable :: fine(:), coarse(:)
+      integer :: j, m, pass
       character(len=120) :: buffer
       stats = work_stats_t()
       if (.not. (tolerance > 0.0_wp .and. tolerance < 1.0_wp)) then
@@ -121,20 +223,80 @@ contains
             return
          end if
       end do
-      do j = 1, size(betas)
-         call coefficients(kind, alpha, betas(j), epsilon, c0, c1)
-         if (alpha == 0.0_wp) then
-            traces(j) = constant_trace(c0 + c1*shape_at_zero_amplitude(kind))
-            stats%n_steps = stats%n_steps + 1
-            stats%n_evaluations = stats%n_evaluations + 1
-         else
-            call converge_point(kind, alpha, c0, c1, tolerance, cache, traces(j), stats, point_error)
-            if (allocated(point_error) .and. .not. allocated(error)) then
-               write (buffer, '(a,es10.3,a)') " (at beta = ", betas(j), ")"
-               call set_error(error, point_error%code, point_error%message//trim(buffer))
-            end if
-         end if
+      if (present(plan)) then
+         if (plan%kind == kind .and. plan%alpha == alpha) cache = plan%cache
+      end if
+      base = auto_base_steps(kind, alpha, tolerance)
+      m = size(betas)
+      allocate (c0s(m), c1s(m), ns(m))
+      do j = 1, m
+         call coefficients(kind, alpha, betas(j), epsilon, c0s(j), c1s(j))
       end do
+      if (alpha == 0.0_wp) then
+         do j = 1, m
+            traces(j) = constant_trace(c0s(j) + c1s(j)*shape_at_zero_amplitude(kind))
+         end do
+         stats%n_steps = stats%n_steps + m
+         stats%n_evaluations = stats%n_evaluations + m
+         return
+      end if
+      do j = 1, m
+         ns(j) = steps_for_point(base, kind, c0s(j), c1s(j))
+      end do
+      ! first pass: S_N and S_{N/2} of all points sharing N together, in lanes
+      allocate (fine(m), coarse(m), n_coarse(m), pending(m))
+      call traces_in_lanes(ns, fine)
+      n_coarse = ns/2
+      call traces_in_lanes(n_coarse, coarse)
+      ! Richardson check; the points that miss the tolerance get a finer N chosen from
+      ! their estimate and the order, again computed in lanes, until all pass
+      pending = .true.
+      do pass = 1, 12
+         do j = 1, m
+            if (.not. pending(j)) cycle
+            estimate = richardson_safety*trace_difference(fine(j), coarse(j))/ &
+                       ((real(ns(j), wp)/n_coarse(j))**6 - 1.0_wp)
+            if (estimate <= tolerance) then
+               pending(j) = .false.
+            else if (ns(j) >= max_auto_steps .or. pass == 12) then
+               pending(j) = .false.
+               write (buffer, '(a,es9.2,a,es9.2,a,es10.3,a)') "auto: estimated error ", estimate, &
+                  " in S exceeds the tolerance ", tolerance, " (at beta = ", betas(j), ")"
+               if (.not. allocated(error)) call set_error(error, err_integration, trim(buffer))
+            else
+               coarse(j) = fine(j)
+               n_coarse(j) = ns(j)
+               ns(j) = ladder_steps(1.2_wp*ns(j)*min(2.0_wp, max(1.15_wp, (estimate/tolerance)**(1.0_wp/6.0_wp))))
+            end if
+         end do
+         if (.not. any(pending)) exit
+         call traces_in_lanes(ns, fine, pending)
+      end do
+      traces = fine
+   contains
+      !> S on meshes of n(j) steps for the selected points, grouped by n and propagated in lanes.
+      subroutine traces_in_lanes(n, result, selected)
+         integer, intent(in) :: n(:)
+         type(trace_t), intent(inout) :: result(:)
+         logical, intent(in), optional :: selected(:)
+         logical :: todo(size(n))
+         integer, allocatable :: group(:)
+         type(trace_t), allocatable :: lane_results(:)
+         integer :: i, k, index
+         todo = .true.
+         if (present(selected)) todo = selected
+         do i = 1, size(n)
+            if (.not. todo(i)) cycle
+            group = pack([(k, k=1, size(n))], n == n(i) .and. todo)
+            todo(group) = .false.
+            allocate (lane_results(size(group)))
+            call get_mesh(cache, kind, alpha, n(i), index)
+            call lane_traces(cache%meshes(index), c0s(group), c1s(group), lane_results)
+            result(group) = lane_results
+            deallocate (lane_results)
+            call count_steps(stats, size(group)*n(i))
+         end do
+      end subroutine traces_in_lanes
    end subroutine trace_auto_batch
 
    !> q = c0 + c1 w(τ) for the model; see the module header.
@@ -180,36 +342,50 @@ contains
       end if
    end function constant_trace
 
-   !> Magnus-6 with N and N/2 steps, doubling N until the Richardson estimate meets the tolerance.
-   subroutine converge_point(kind, alpha, c0, c1, tolerance, cache, tr, stats, error)
+   !> Magnus-6 with N and N/2 steps; while the Richardson estimate of the error of S_N
+   !> misses the tolerance, a finer N' is chosen from the estimate and the order
+   !> (N' = 1.2 N (estimate/tol)^{1/6}) and checked against the previous result.
+   subroutine converge_point(kind, alpha, c0, c1, tolerance, base, cache, tr, stats, error, start)
       integer, intent(in) :: kind
       real(wp), intent(in) :: alpha, c0, c1, tolerance
+      real(wp), intent(in) :: base  !! auto_base_steps(kind, alpha, tolerance)
+      type(trace_t), intent(in), optional :: start(2)  !! S_N and S_{N/2} computed already (in lanes)
       type(mesh_cache_t), intent(inout) :: cache
       type(trace_t), intent(out) :: tr
       type(work_stats_t), intent(inout) :: stats
       type(error_t), allocatable, intent(out) :: error
       type(trace_t) :: fine, coarse
-      integer :: n, i_fine, i_coarse
+      integer :: n, n_coarse, i_fine, i_coarse, pass
       real(wp) :: estimate
       character(len=120) :: buffer
-      n = auto_initial_steps(kind, alpha, c0, c1, tolerance)
-      call get_mesh(cache, kind, alpha, n/2, i_coarse)
-      coarse = half_period_trace(cache%meshes(i_coarse), c0, c1)
-      call count_steps(stats, n/2)
-      do
-         call get_mesh(cache, kind, alpha, n, i_fine)
-         fine = half_period_trace(cache%meshes(i_fine), c0, c1)
-         call count_steps(stats, n)
-         estimate = richardson_safety*trace_difference(fine, coarse)/63.0_wp
+      n = steps_for_point(base, kind, c0, c1)
+      n_coarse = n/2
+      if (present(start)) then
+         coarse = start(2)
+      else
+         call get_mesh(cache, kind, alpha, n_coarse, i_coarse)
+         coarse = half_period_trace(cache%meshes(i_coarse), c0, c1)
+         call count_steps(stats, n_coarse)
+      end if
+      do pass = 1, 12
+         if (pass == 1 .and. present(start)) then
+            fine = start(1)
+         else
+            call get_mesh(cache, kind, alpha, n, i_fine)
+            fine = half_period_trace(cache%meshes(i_fine), c0, c1)
+            call count_steps(stats, n)
+         end if
+         estimate = richardson_safety*trace_difference(fine, coarse)/((real(n, wp)/n_coarse)**6 - 1.0_wp)
          if (estimate <= tolerance) exit
-         if (2*n > max_auto_steps) then
+         if (n >= max_auto_steps) then
             write (buffer, '(a,es9.2,a,es9.2)') "auto: estimated error ", estimate, " in S exceeds the tolerance ", &
                tolerance
             call set_error(error, err_integration, trim(buffer))
             exit
          end if
          coarse = fine
-         n = 2*n
+         n_coarse = n
+         n = ladder_steps(1.2_wp*n*min(2.0_wp, max(1.15_wp, (estimate/tolerance)**(1.0_wp/6.0_wp))))
       end do
       tr = fine
    end subroutine converge_point
@@ -336,13 +512,107 @@ contains
       end do
    end subroutine half_period_auto
 
-   !> S = 2(u v' + u' v) from Φ(1) = [[u, v], [u', v']] (BRIEF §4).
-   pure function half_period_trace(mesh, c0, c1) result(tr)
+   !> cos √z for |z| ≤ 0.5: Taylor polynomial of degree 10 (truncation below 5e-26).
+   elemental real(wp) function cos_series(z) result(c)
+      real(wp), intent(in) :: z
+      c = 1.0_wp + z*(-1.0_wp/2 + z*(1.0_wp/24 + z*(-1.0_wp/720 + z*(1.0_wp/40320 + z*(-1.0_wp/3628800 &
+          + z*(1.0_wp/479001600.0_wp + z*(-1.0_wp/87178291200.0_wp + z*(1.0_wp/20922789888000.0_wp &
+          + z*(-1.0_wp/6402373705728000.0_wp + z*(1.0_wp/2432902008176640000.0_wp))))))))))
+   end function cos_series
+
+   !> sin √z / √z for |z| ≤ 0.5: Taylor polynomial of degree 10 (truncation below 3e-27).
+   elemental real(wp) function sin_series(z) result(s)
+      real(wp), intent(in) :: z
+      s = 1.0_wp + z*(-1.0_wp/6 + z*(1.0_wp/120 + z*(-1.0_wp/5040 + z*(1.0_wp/362880 + z*(-1.0_wp/39916800 &
+          + z*(1.0_wp/6227020800.0_wp + z*(-1.0_wp/1307674368000.0_wp + z*(1.0_wp/355687428096000.0_wp &
+          + z*(-1.0_wp/121645100408832000.0_wp + z*(1.0_wp/51090942171709440000.0_wp))))))))))
+   end function sin_series
+
+   !> Traces of several points on one mesh, propagated together: the points are the
+   !> lanes of structure-of-arrays loops that the compiler vectorises (same mesh, same
+   !> control flow; a step where some lane leaves the polynomial range of the
+   !> exponential is done lane by lane).
+   pure subroutine lane_traces(mesh, c0, c1, traces)
       type(mesh_t), intent(in) :: mesh
-      real(wp), intent(in) :: c0, c1
+      real(wp), intent(in) :: c0(:), c1(:)
+      type(trace_t), intent(out) :: traces(size(c0))
+      real(wp), parameter :: c_d2 = -sqrt15/3.0_wp, c_d3 = -10.0_wp/3.0_wp, c_60 = 1.0_wp/30.0_wp
+      real(wp), parameter :: c_240 = 1.0_wp/240.0_wp, c_120 = 1.0_wp/120.0_wp, c_12 = 1.0_wp/12.0_wp
+      real(wp), dimension(size(c0)) :: p11, p12, p21, p22, log_scale, ga, gb, gc, z
+      real(wp) :: h, w1, w2, w3, q1, q2, q3, d2, d3, x3, y1, y2, y3, c, s, ls, e11, e12, e21, e22, a, b, big
+      real(wp) :: phi(2, 2)
+      integer :: i, l, shift
+      p11 = 1.0_wp; p12 = 0.0_wp; p21 = 0.0_wp; p22 = 1.0_wp
+      log_scale = 0.0_wp
+      do i = 1, mesh%n_steps
+         h = mesh%h(i)
+         w1 = mesh%w(1, i); w2 = mesh%w(2, i); w3 = mesh%w(3, i)
+         ! generators of all lanes (magnus6_sl2 written out)
+         do l = 1, size(c0)
+            q1 = c0(l) + c1(l)*w1
+            q2 = c0(l) + c1(l)*w2
+            q3 = c0(l) + c1(l)*w3
+            d2 = c_d2*h*(q3 - q1)
+            d3 = c_d3*h*((q3 - q2) + (q1 - q2))
+            x3 = 20.0_wp*h*q2 - d3
+            y1 = -c_60*h*d3
+            y2 = c_60*h*h*d2
+            y3 = d2 + c_60*h*h*q2*d2
+            ga(l) = c_240*(-20.0_wp*h*y3 - x3*y2)
+            gb(l) = h + c_120*(h*d2*y2 + 20.0_wp*h*y1)
+            gc(l) = -h*q2 + c_12*d3 + c_120*(x3*y1 - h*d2*y3)
+            z(l) = -(ga(l)*ga(l) + gb(l)*gc(l))
+         end do
+         if (maxval(abs(z)) <= 0.5_wp) then
+            do l = 1, size(c0)
+               c = cos_series(z(l))
+               s = sin_series(z(l))
+               e11 = c + s*ga(l); e12 = s*gb(l)
+               e21 = s*gc(l); e22 = c - s*ga(l)
+               a = p11(l); b = p21(l)
+               p11(l) = e11*a + e12*b
+               p21(l) = e21*a + e22*b
+               a = p12(l); b = p22(l)
+               p12(l) = e11*a + e12*b
+               p22(l) = e21*a + e22*b
+            end do
+         else
+            do l = 1, size(c0)
+               call exp_functions(z(l), c, s, ls)
+               e11 = c + s*ga(l); e12 = s*gb(l)
+               e21 = s*gc(l); e22 = c - s*ga(l)
+               a = p11(l); b = p21(l)
+               p11(l) = e11*a + e12*b
+               p21(l) = e21*a + e22*b
+               a = p12(l); b = p22(l)
+               p12(l) = e11*a + e12*b
+               p22(l) = e21*a + e22*b
+               log_scale(l) = log_scale(l) + ls
+            end do
+         end if
+         if (iand(i, 7) == 0 .or. i == mesh%n_steps) then
+            do l = 1, size(c0)
+               big = max(abs(p11(l)), abs(p12(l)), abs(p21(l)), abs(p22(l)))
+               if (big > 2.0_wp**rescale_exponent .or. big < 2.0_wp**(-rescale_exponent)) then
+                  shift = exponent(big)
+                  p11(l) = scale(p11(l), -shift); p12(l) = scale(p12(l), -shift)
+                  p21(l) = scale(p21(l), -shift); p22(l) = scale(p22(l), -shift)
+                  log_scale(l) = log_scale(l) + shift*log(2.0_wp)
+               end if
+            end do
+         end if
+      end do
+      do l = 1, size(c0)
+         phi(1, 1) = p11(l); phi(2, 1) = p21(l); phi(1, 2) = p12(l); phi(2, 2) = p22(l)
+         traces(l) = trace_from_half_period(phi, log_scale(l))
+      end do
+   end subroutine lane_traces
+
+   !> S = 2(u v' + u' v) and its log magnitude from Φ(1) = e^{log_scale} phi.
+   pure function trace_from_half_period(phi, log_scale) result(tr)
+      real(wp), intent(in) :: phi(2, 2), log_scale
       type(trace_t) :: tr
-      real(wp) :: phi(2, 2), log_scale, t
-      call half_period_auto(mesh, c0, c1, phi, log_scale)
+      real(wp) :: t
       t = 2.0_wp*(phi(1, 1)*phi(2, 2) + phi(2, 1)*phi(1, 2))
       tr%overflow = .false.
       if (t == 0.0_wp) then
@@ -357,6 +627,16 @@ contains
       else
          tr%value = t*exp(2.0_wp*log_scale)
       end if
+   end function trace_from_half_period
+
+   !> S = 2(u v' + u' v) from Φ(1) = [[u, v], [u', v']] (BRIEF §4).
+   pure function half_period_trace(mesh, c0, c1) result(tr)
+      type(mesh_t), intent(in) :: mesh
+      real(wp), intent(in) :: c0, c1
+      type(trace_t) :: tr
+      real(wp) :: phi(2, 2), log_scale
+      call half_period_auto(mesh, c0, c1, phi, log_scale)
+      tr = trace_from_half_period(phi, log_scale)
    end function half_period_trace
 
    !> Sixth-order Gauss–Legendre Magnus generator Ω = [[a, b], [c, −a]] for
@@ -387,19 +667,39 @@ contains
       gc = -h*q2 + c_12*d3 + c_120*(x3*y1 - x1*y3)
    end subroutine magnus6_sl2
 
-   !> C = cos √z, S = sin √z/√z: a degree-7 polynomial for |z| ≤ 0.1 (truncation
-   !> below 1e-21), otherwise the overflow-safe `transfer_functions`.
+   !> C = cos √z, S = sin √z/√z: Taylor polynomials of degree 5 for |z| ≤ 0.01 and 7 for
+   !> |z| ≤ 0.1 (truncation below 3e-21 relative), otherwise the overflow-safe
+   !> `transfer_functions`. Magnus steps are short against the local oscillation, so the
+   !> polynomials serve almost every step.
    pure subroutine exp_functions(z, c, s, log_scale)
       real(wp), intent(in) :: z
       real(wp), intent(out) :: c, s, log_scale
-      if (abs(z) <= 0.1_wp) then
+      log_scale = 0.0_wp
+      if (abs(z) <= 0.01_wp) then
+         c = 1.0_wp + z*(-1.0_wp/2 + z*(1.0_wp/24 + z*(-1.0_wp/720 + z*(1.0_wp/40320 + z*(-1.0_wp/3628800)))))
+         s = 1.0_wp + z*(-1.0_wp/6 + z*(1.0_wp/120 + z*(-1.0_wp/5040 + z*(1.0_wp/362880 + z*(-1.0_wp/39916800)))))
+      else if (abs(z) <= 0.1_wp) then
          c = 1.0_wp + z*(-1.0_wp/2 + z*(1.0_wp/24 + z*(-1.0_wp/720 + z*(1.0_wp/40320 + z*(-1.0_wp/3628800 &
              + z*(1.0_wp/479001600 + z*(-1.0_wp/87178291200.0_wp)))))))
          s = 1.0_wp + z*(-1.0_wp/6 + z*(1.0_wp/120 + z*(-1.0_wp/5040 + z*(1.0_wp/362880 + z*(-1.0_wp/39916800 &
              + z*(1.0_wp/6227020800.0_wp + z*(-1.0_wp/1307674368000.0_wp)))))))
-         log_scale = 0.0_wp
       else
          call transfer_functions(z, c, s, log_scale)
       end if
    end subroutine exp_functions
+
+   !> S by Magnus-6 on the auto mesh with exactly n steps on [0, 1] (no error control;
+   !> for calibration, tests and benchmarks). Undamped β (ε = 0).
+   function fixed_n_trace(kind, alpha, beta, n) result(s)
+      integer, intent(in) :: kind, n
+      real(wp), intent(in) :: alpha, beta
+      real(wp) :: s
+      type(mesh_t) :: mesh
+      type(trace_t) :: tr
+      real(wp) :: c0, c1
+      call coefficients(kind, alpha, beta, 0.0_wp, c0, c1)
+      call build_mesh(kind, alpha, n, mesh)
+      tr = half_period_trace(mesh, c0, c1)
+      s = tr%value
+   end function fixed_n_trace
 end module hillstab_auto

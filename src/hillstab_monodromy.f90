@@ -12,16 +12,17 @@ module hillstab_monodromy
    use hillstab_transfer, only: scaled_matrix_t, scaled_identity, multiply_transfer, multiply_matrix, &
       trace_t, trace_of
    use hillstab_formulas, only: trace_damped_paper, trace_mathieu_two_segment
-   use hillstab_stats, only: work_stats_t
+   use hillstab_stats, only: work_stats_t, add_work
    use hillstab_gsl, only: trace_gsl
    use hillstab_monodromy_rk, only: trace_rk
    use hillstab_magnus, only: trace_magnus
-   use hillstab_auto, only: trace_auto
+   use hillstab_auto, only: trace_auto, trace_auto_batch, auto_plan_t, auto_prepare
    implicit none
    private
    public :: method_t, method_auto, method_formula, method_segments, method_magnus4, method_magnus6, &
       method_rk, method_gsl, method_name, method_from_name
-   public :: monodromy_segmented, trace_segmented, swing_monodromy, monodromy_trace
+   public :: monodromy_segmented, trace_segmented, swing_monodromy, monodromy_trace, monodromy_trace_batch
+   public :: batch_plan_t, prepare_batch
 
    integer, parameter :: method_auto = 0     !! cheapest exact method meeting the tolerance
    integer, parameter :: method_formula = 1  !! the paper's closed forms, eq. (37)/(48)/(A3)
@@ -39,7 +40,23 @@ module hillstab_monodromy
       real(wp) :: tolerance = 1.0e-10_wp    !! target error on S, scaled by max(1, |S|)
    end type method_t
 
+   !> Work shared by the batches of one chart row (the meshes of method auto).
+   type :: batch_plan_t
+      type(auto_plan_t) :: auto
+   end type batch_plan_t
+
 contains
+
+   !> Prepare what batches of the points (model%kind, model%alpha, β_j, model%epsilon)
+   !> can share; pass the plan to `monodromy_trace_batch`.
+   subroutine prepare_batch(model, betas, method, plan)
+      type(hill_model_t), intent(in) :: model
+      real(wp), intent(in) :: betas(:)
+      type(method_t), intent(in) :: method
+      type(batch_plan_t), intent(out) :: plan
+      if (method%kind == method_auto) call auto_prepare(model%kind, model%alpha, model%epsilon, betas, &
+                                                       method%tolerance, plan%auto)
+   end subroutine prepare_batch
 
    !> Name of a method constant.
    pure function method_name(kind) result(name)
@@ -152,4 +169,58 @@ contains
       end select
       if (present(stats)) stats = work
    end subroutine monodromy_trace
+
+   !> Traces of the points (α, β_j) of one model kind, α and ε, e.g. a chart row. Method
+   !> auto shares its meshes and coefficient values across the batch (much faster than
+   !> point by point); the other methods go point by point. `failed(j)` marks points that
+   !> could not be computed; `error` describes the first of them.
+   subroutine monodromy_trace_batch(model, betas, method, traces, failed, error, stats, plan)
+      type(hill_model_t), intent(in) :: model  !! kind, alpha and epsilon of the batch (beta ignored)
+      real(wp), intent(in) :: betas(:)
+      type(method_t), intent(in) :: method
+      type(trace_t), intent(out) :: traces(size(betas))
+      logical, intent(out) :: failed(size(betas))
+      type(error_t), allocatable, intent(out) :: error
+      type(work_stats_t), intent(out), optional :: stats
+      type(batch_plan_t), intent(in), optional :: plan  !! from `prepare_batch` for this row
+      type(work_stats_t) :: work, part
+      type(error_t), allocatable :: point_error
+      type(hill_model_t) :: point
+      integer :: j
+      failed = .false.
+      work = work_stats_t()
+      if (method%kind == method_auto) then
+         if (present(plan)) then
+            call trace_auto_batch(model%kind, model%alpha, model%epsilon, betas, method%tolerance, traces, work, &
+               error, plan%auto)
+         else
+            call trace_auto_batch(model%kind, model%alpha, model%epsilon, betas, method%tolerance, traces, work, error)
+         end if
+         ! a batch error (a point out of range or a tolerance not met) is located point by point
+         if (allocated(error)) then
+            deallocate (error)
+            do j = 1, size(betas)
+               point = model
+               point%beta = betas(j)
+               call monodromy_trace(point, method, traces(j), point_error)
+               if (allocated(point_error)) then
+                  failed(j) = .true.
+                  if (.not. allocated(error)) call move_alloc(point_error, error)
+               end if
+            end do
+         end if
+      else
+         do j = 1, size(betas)
+            point = model
+            point%beta = betas(j)
+            call monodromy_trace(point, method, traces(j), point_error, part)
+            call add_work(work, part)
+            if (allocated(point_error)) then
+               failed(j) = .true.
+               if (.not. allocated(error)) call move_alloc(point_error, error)
+            end if
+         end do
+      end if
+      if (present(stats)) stats = work
+   end subroutine monodromy_trace_batch
 end module hillstab_monodromy

@@ -17,6 +17,7 @@ module hillstab_output
    use hillstab_kinds, only: wp
    use hillstab_error, only: error_t, set_error, err_io
    use hillstab_floquet, only: floquet_t, largest_multiplier_modulus
+   use hillstab_format, only: put_es
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
    implicit none
    private
@@ -155,19 +156,32 @@ contains
       character(len=chart_line_length) :: line
       real(wp) :: s, lambda_max, log10_abs_s, mu
       logical :: overflow
+      integer :: pos
       s = f%trace%value
       overflow = f%trace%overflow .or. abs(s) > clamp_magnitude
       if (overflow) s = sign(clamp_magnitude, s)
       lambda_max = min(largest_multiplier_modulus(f), clamp_magnitude)
       log10_abs_s = max(f%trace%log_abs/log(10.0_wp), log10_floor)
       mu = f%exponent + 0.0_wp  ! no "-0.0" in the file
-      if (damped) then
-         write (line, '(2(es24.16e3,1x),es24.16e3,i2,3(1x,es17.9e3),3i2)') alpha, beta, s, flag(f%stable), &
-            lambda_max, mu, log10_abs_s, flag(overflow), flag(physical), flag(f%stable_paper)
-      else
-         write (line, '(2(es24.16e3,1x),es24.16e3,i2,3(1x,es17.9e3),2i2)') alpha, beta, s, flag(f%stable), &
-            lambda_max, mu, log10_abs_s, flag(overflow), flag(physical)
-      end if
+      ! hand formatting (hillstab_format): Fortran's formatted write would cost more than
+      ! computing the point with method auto
+      pos = 0
+      call put_es(line, pos, alpha, 16)
+      call put_blank(line, pos)
+      call put_es(line, pos, beta, 16)
+      call put_blank(line, pos)
+      call put_es(line, pos, s, 16)
+      call put_flag(line, pos, f%stable)
+      call put_blank(line, pos)
+      call put_es(line, pos, lambda_max, 10)
+      call put_blank(line, pos)
+      call put_es(line, pos, mu, 10)
+      call put_blank(line, pos)
+      call put_es(line, pos, log10_abs_s, 10)
+      call put_flag(line, pos, overflow)
+      call put_flag(line, pos, physical)
+      if (damped) call put_flag(line, pos, f%stable_paper)
+      line(pos + 1:) = ""
    end function chart_line
 
    !> Reals written in full precision, separated by one blank.
@@ -176,6 +190,24 @@ contains
       character(len=25*size(values)) :: line
       write (line, '(*(es24.16e3,:,1x))') values
    end function real_columns
+
+   !> Append one blank.
+   pure subroutine put_blank(line, pos)
+      character(len=*), intent(inout) :: line
+      integer, intent(inout) :: pos
+      line(pos + 1:pos + 1) = " "
+      pos = pos + 1
+   end subroutine put_blank
+
+   !> Append " 1" or " 0".
+   pure subroutine put_flag(line, pos, condition)
+      character(len=*), intent(inout) :: line
+      integer, intent(inout) :: pos
+      logical, intent(in) :: condition
+      line(pos + 1:pos + 2) = " 0"
+      if (condition) line(pos + 2:pos + 2) = "1"
+      pos = pos + 2
+   end subroutine put_flag
 
    elemental integer function flag(condition)
       logical, intent(in) :: condition

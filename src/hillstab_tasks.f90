@@ -21,13 +21,15 @@ module hillstab_tasks
       segment_coefficients, hill_period, in_physical_domain, sampling_name
    use hillstab_transfer, only: trace_t
    use hillstab_floquet, only: floquet_t, floquet_from_trace
-   use hillstab_monodromy, only: monodromy_trace, method_name, method_segments
+   use hillstab_monodromy, only: monodromy_trace, monodromy_trace_batch, method_name, method_segments, &
+      batch_plan_t, prepare_batch
    use hillstab_scene, only: scene_t, read_scene, scene_namelist, task_chart, task_points, task_coefficient, &
       task_name, grid_value, real_text, integer_text
    use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, &
       write_text, chart_columns, chart_line, chart_line_length, real_columns
    use, intrinsic :: iso_fortran_env, only: error_unit
    use, intrinsic :: iso_c_binding, only: c_int
+   !$ use omp_lib, only: omp_get_max_threads
    implicit none
    private
    public :: run_scene_file, run_scene, output_path
@@ -185,6 +187,32 @@ contains
       c(size(a) + 1:) = b
    end function stacked
 
+   !> Write `lines` (trimmed) as one block, preceded by a blank line if `separate`.
+   subroutine write_block(file, lines, separate, error)
+      type(output_file_t), intent(inout) :: file
+      character(len=*), intent(in) :: lines(:)
+      logical, intent(in) :: separate
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: block
+      integer :: j, pos, n
+      allocate (character(len=size(lines)*(len(lines) + 1) + 1) :: block)
+      pos = 0
+      if (separate) then
+         block(1:1) = new_line("a")
+         pos = 1
+      end if
+      do j = 1, size(lines)
+         n = len_trim(lines(j))
+         block(pos + 1:pos + n) = lines(j)(1:n)
+         pos = pos + n
+         if (j < size(lines)) then
+            block(pos + 1:pos + 1) = new_line("a")
+            pos = pos + 1
+         end if
+      end do
+      call write_text(file, block(1:pos), error)
+   end subroutine write_block
+
    !> The chart task.
    subroutine run_chart(scene, quiet, error)
       type(scene_t), intent(in) :: scene
@@ -198,7 +226,13 @@ contains
       logical, allocatable :: failed(:)
       logical :: damped, outside
       real(wp) :: alpha, beta
-      integer :: i, j, n_alpha, n_beta
+      real(wp), allocatable :: all_betas(:)
+      type(batch_plan_t) :: plan
+      logical :: stopped
+      character(len=chart_line_length), allocatable :: block_lines(:, :, :)
+      logical, allocatable :: block_failed(:, :, :)
+      integer :: group, n_groups, g
+      integer :: i, j, n_alpha, n_beta, c, chunk, n_chunks, first, last
 
       n_alpha = scene%chart%n_alpha
       n_beta = scene%chart%n_beta
@@ -215,6 +249,7 @@ contains
          call discard_output(file)
          return
       end if
+      all_betas = [(grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j), j=1, n_beta)]
       outside = .not. (in_physical_domain(scene%chart%alpha_min, scene%chart%beta_min) .and. &
                        in_physical_domain(scene%chart%alpha_max, scene%chart%beta_max))
       call write_header(file, chart_header(scene, outside), chart_columns(damped), error)
@@ -223,47 +258,119 @@ contains
          return
       end if
 
-      allocate (lines(n_beta), failed(n_beta))
       call progress_begin(progress, int(n_alpha, int64)*n_beta, quiet)
-      do i = 1, n_alpha
-         alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i)
-         failed = .false.
-         !$omp parallel do schedule(dynamic) default(shared) private(j, beta, f, cause)
-         do j = 1, n_beta
-            beta = grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j)
-            call evaluate_point(scene, alpha, beta, f, cause)
-            if (allocated(cause)) then
-               failed(j) = .true.
+      stopped = .false.
+      if (n_alpha >= 4*max_threads()) then
+         ! groups of rows computed in parallel (mesh preparation, integration and
+         ! formatting on every core) into one of two buffers, while one thread writes the
+         ! previous group from the other buffer; a group holds a few rows per thread, so
+         ! memory stays bounded however large the chart
+         group = 4*max_threads()
+         n_groups = (n_alpha + group - 1)/group
+         allocate (block_lines(n_beta, group, 0:1), block_failed(n_beta, group, 0:1))
+         !$omp parallel default(shared) private(g, i, alpha)
+         do g = 1, n_groups + 1
+            if (stopped) exit   ! the same value in every thread: read after a barrier
+            if (g > 1) then
+               !$omp single
+               do i = (g - 2)*group + 1, min(n_alpha, (g - 1)*group)
+                  alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i)
+                  call finish_row(i, alpha, block_lines(:, i - (g - 2)*group, mod(g - 1, 2)), &
+                     block_failed(:, i - (g - 2)*group, mod(g - 1, 2)))
+                  if (stopped) exit
+               end do
+               !$omp end single nowait
+            end if
+            if (g <= n_groups) then
+               !$omp do schedule(dynamic)
+               do i = (g - 1)*group + 1, min(n_alpha, g*group)
+                  alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i)
+                  call compute_row(scene, alpha, all_betas, damped, block_lines(:, i - (g - 1)*group, mod(g, 2)), &
+                     block_failed(:, i - (g - 1)*group, mod(g, 2)))
+               end do
+               !$omp end do
             else
-               lines(j) = chart_line(alpha, beta, f, damped, in_physical_domain(alpha, beta))
+               !$omp barrier
             end if
          end do
-         !$omp end parallel do
-         if (any(failed)) then
-            ! repeat the first failure serially, so the message does not depend on thread timing
-            j = findloc(failed, .true., dim=1)
-            beta = grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j)
-            call evaluate_point(scene, alpha, beta, f, cause)
-            if (.not. allocated(cause)) call set_error(cause, err_input, "fails in parallel only")
-            call point_error(scene, alpha, beta, cause, error)
-            exit
-         end if
-         ! blocks of constant alpha, separated by one blank line (gnuplot pm3d/image)
-         if (i > 1) call write_text(file, "", error)
-         do j = 1, n_beta
-            if (allocated(error)) exit
-            call write_text(file, trim(lines(j)), error)
+         !$omp end parallel
+      else
+         ! few rows: the points of each row in parallel chunks sharing the prepared meshes
+         allocate (lines(n_beta), failed(n_beta))
+         chunk = max(16, n_beta/(8*max_threads()))
+         n_chunks = (n_beta + chunk - 1)/chunk
+         do i = 1, n_alpha
+            alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i)
+            call prepare_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), all_betas, scene%method, plan)
+            !$omp parallel do schedule(dynamic) default(shared) private(c, first, last)
+            do c = 1, n_chunks
+               first = (c - 1)*chunk + 1
+               last = min(n_beta, c*chunk)
+               call compute_row(scene, alpha, all_betas(first:last), damped, lines(first:last), failed(first:last), plan)
+            end do
+            !$omp end parallel do
+            call finish_row(i, alpha, lines, failed)
+            if (stopped) exit
          end do
-         if (allocated(error)) exit
-         call progress_update(progress, int(i, int64)*n_beta)
-      end do
+      end if
       call progress_end(progress)
       if (allocated(error)) then
          call discard_output(file)
          return
       end if
       call commit_output(file, error)
+   contains
+      !> Write a computed row (in order), or turn its first failure into the error.
+      subroutine finish_row(i, alpha, lines, failed)
+         integer, intent(in) :: i
+         real(wp), intent(in) :: alpha
+         character(len=*), intent(in) :: lines(:)
+         logical, intent(in) :: failed(:)
+         type(error_t), allocatable :: cause
+         type(floquet_t) :: f
+         integer :: j
+         if (any(failed)) then
+            ! repeat the first failure serially, so the message does not depend on thread timing
+            j = findloc(failed, .true., dim=1)
+            call evaluate_point(scene, alpha, all_betas(j), f, cause)
+            if (.not. allocated(cause)) call set_error(cause, err_input, "fails in parallel only")
+            call point_error(scene, alpha, all_betas(j), cause, error)
+            stopped = .true.
+            return
+         end if
+         ! blocks of constant alpha, separated by one blank line (gnuplot pm3d/image),
+         ! written as one record per block: one write statement per line costs more
+         ! than a point of method auto
+         call write_block(file, lines, i > 1, error)
+         if (allocated(error)) then
+            stopped = .true.
+            return
+         end if
+         call progress_update(progress, int(i, int64)*n_beta)
+      end subroutine finish_row
    end subroutine run_chart
+
+   !> Lines (and failure flags) of the chart points (α, β_j) of one row or part of a row.
+   subroutine compute_row(scene, alpha, betas, damped, lines, failed, plan)
+      type(scene_t), intent(in) :: scene
+      real(wp), intent(in) :: alpha, betas(:)
+      logical, intent(in) :: damped
+      character(len=*), intent(out) :: lines(:)
+      logical, intent(out) :: failed(:)
+      type(batch_plan_t), intent(in), optional :: plan  !! prepared for the whole row
+      type(trace_t) :: traces(size(betas))
+      type(error_t), allocatable :: cause
+      type(floquet_t) :: f
+      type(hill_model_t) :: row
+      integer :: j
+      row = hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon)
+      call monodromy_trace_batch(row, betas, scene%method, traces, failed, cause, plan=plan)
+      do j = 1, size(betas)
+         if (failed(j)) cycle
+         f = floquet_from_trace(traces(j), scene%epsilon)
+         lines(j) = chart_line(alpha, betas(j), f, damped, in_physical_domain(alpha, betas(j)))
+      end do
+   end subroutine compute_row
 
    !> The points task.
    subroutine run_points(scene, quiet, error)
@@ -419,4 +526,10 @@ contains
       type(progress_t), intent(in) :: progress
       if (progress%shown .and. progress%terminal) write (error_unit, '(a)') ""
    end subroutine progress_end
+
+   !> Number of OpenMP threads a parallel region will use (1 without OpenMP).
+   integer function max_threads()
+      max_threads = 1
+      !$ max_threads = omp_get_max_threads()
+   end function max_threads
 end module hillstab_tasks

@@ -1,0 +1,152 @@
+!> Fast text for reals in scientific notation, for large gnuplot-ready files.
+!>
+!> Fortran's formatted `write` costs about half a microsecond per number, which
+!> is more than method auto needs to compute a chart point; this module writes
+!> the same `d.ddd…e±xxx` text with integer arithmetic, ten times faster. With
+!> `digits` ≤ 16 significant digits the text is the correctly rounded decimal
+!> except, rarely, in the last digit (the scaling by a power of ten rounds once).
+!>
+!>```fortran
+!> print '(a)', format_es(-1266.8019686641_wp, 12)   ! -1.26680196866e+003
+!>```
+module hillstab_format
+   use hillstab_kinds, only: wp, int64
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+   implicit none
+   private
+   public :: format_es, es_width, put_es
+
+   !> Exact powers of ten 1e0 … 1e22.
+   real(wp), parameter :: powers(0:22) = [1.0e0_wp, 1.0e1_wp, 1.0e2_wp, 1.0e3_wp, 1.0e4_wp, 1.0e5_wp, &
+      1.0e6_wp, 1.0e7_wp, 1.0e8_wp, 1.0e9_wp, 1.0e10_wp, 1.0e11_wp, 1.0e12_wp, 1.0e13_wp, 1.0e14_wp, &
+      1.0e15_wp, 1.0e16_wp, 1.0e17_wp, 1.0e18_wp, 1.0e19_wp, 1.0e20_wp, 1.0e21_wp, 1.0e22_wp]
+   integer(int64), parameter :: ten = 10_int64
+   !> "00", "01", … "99": digits are produced two at a time.
+   character(len=200), parameter :: digit_pairs = &
+      "0001020304050607080910111213141516171819202122232425262728293031323334353637383940414243444546474849"// &
+      "5051525354555657585960616263646566676869707172737475767778798081828384858687888990919293949596979899"
+   !> Exact integer powers of ten 10^0 … 10^18.
+   integer(int64), parameter :: int_powers(0:18) = [1_int64, 10_int64, 100_int64, 1000_int64, &
+      10000_int64, 100000_int64, 1000000_int64, 10000000_int64, 100000000_int64, 1000000000_int64, &
+      10000000000_int64, 100000000000_int64, 1000000000000_int64, 10000000000000_int64, &
+      100000000000000_int64, 1000000000000000_int64, 10000000000000000_int64, 100000000000000000_int64, &
+      1000000000000000000_int64]
+
+contains
+
+   !> Width of `format_es(x, digits)`: sign, digits, point, "e±xxx".
+   pure integer function es_width(digits)
+      integer, intent(in) :: digits
+      es_width = digits + 7
+   end function es_width
+
+   !> x multiplied by 10^p, in at most three exact-power steps (no intermediate overflow for
+   !> the ranges used here).
+   pure real(wp) function times_power_of_ten(x, p) result(y)
+      real(wp), intent(in) :: x
+      integer, intent(in) :: p
+      integer :: rest, step
+      y = x
+      rest = p
+      do while (rest /= 0)
+         step = max(-22, min(22, rest))
+         if (step > 0) then
+            y = y*powers(step)
+         else
+            y = y/powers(-step)
+         end if
+         rest = rest - step
+      end do
+   end function times_power_of_ten
+
+   !> x in scientific notation with `digits` (1 … 17) significant digits and a
+   !> three-digit exponent, right-aligned in es_width(digits) characters.
+   !> Non-finite values give "nan", "inf" or "-inf" (callers keep them out of files).
+   pure function format_es(x, digits) result(text)
+      real(wp), intent(in) :: x
+      integer, intent(in) :: digits
+      character(len=digits + 7) :: text
+      integer :: pos
+      pos = 0
+      call put_es(text, pos, x, digits)
+   end function format_es
+
+   !> Write format_es(x, digits) into buffer(pos + 1 : pos + digits + 7) and advance pos
+   !> (no allocation: this runs once per number of a chart file).
+   pure subroutine put_es(buffer, pos, x, digits)
+      character(len=*), intent(inout) :: buffer
+      integer, intent(inout) :: pos
+      real(wp), intent(in) :: x
+      integer, intent(in) :: digits
+      integer(int64) :: mantissa
+      integer :: e, i, k, p, abs_e, last
+      real(wp) :: ax
+      last = pos + digits + 7
+      buffer(pos + 1:last) = repeat(" ", digits + 7)
+      pos = last
+      if (.not. ieee_is_finite(x)) then
+         if (ieee_is_nan(x)) then
+            buffer(last - 2:last) = "nan"
+         else if (x > 0.0_wp) then
+            buffer(last - 2:last) = "inf"
+         else
+            buffer(last - 3:last) = "-inf"
+         end if
+         return
+      end if
+      ax = abs(x)
+      if (ax == 0.0_wp) then
+         mantissa = 0
+         e = 0
+      else
+         ! decimal exponent from the binary one (may be off by one; corrected below)
+         e = floor((exponent(ax) - 1)*0.30102999566398120_wp)
+         mantissa = nint(times_power_of_ten(ax, digits - 1 - e), int64)
+         do while (mantissa >= int_powers(digits))
+            e = e + 1
+            mantissa = nint(times_power_of_ten(ax, digits - 1 - e), int64)
+         end do
+         do while (mantissa < int_powers(digits - 1))
+            e = e - 1
+            mantissa = nint(times_power_of_ten(ax, digits - 1 - e), int64)
+            if (mantissa >= int_powers(digits)) then   ! rounding carried: 9.99…5 → 10.0
+               mantissa = mantissa/ten
+               e = e + 1
+            end if
+         end do
+      end if
+      ! layout: [-]d.ddd…e±xxx, filled from the right
+      p = last
+      abs_e = abs(e)
+      do i = 1, 3
+         buffer(p:p) = achar(iachar("0") + mod(abs_e, 10))
+         abs_e = abs_e/10
+         p = p - 1
+      end do
+      if (e < 0) then
+         buffer(p:p) = "-"
+      else
+         buffer(p:p) = "+"
+      end if
+      buffer(p - 1:p - 1) = "e"
+      p = p - 2
+      do i = 1, (digits - 1)/2
+         k = 2*int(mod(mantissa, 100_int64))
+         buffer(p - 1:p) = digit_pairs(k + 1:k + 2)
+         mantissa = mantissa/100_int64
+         p = p - 2
+      end do
+      if (mod(digits - 1, 2) == 1) then
+         buffer(p:p) = achar(iachar("0") + int(mod(mantissa, ten)))
+         mantissa = mantissa/ten
+         p = p - 1
+      end if
+      if (digits > 1) then
+         buffer(p:p) = "."
+         p = p - 1
+      end if
+      buffer(p:p) = achar(iachar("0") + int(mantissa))
+      p = p - 1
+      if (x < 0.0_wp) buffer(p:p) = "-"
+   end subroutine put_es
+end module hillstab_format
