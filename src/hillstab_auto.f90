@@ -456,23 +456,77 @@ contains
       integer, intent(in) :: kind, n
       real(wp), intent(in) :: alpha
       type(mesh_t), intent(out) :: mesh
-      real(wp) :: kappa, t0, t1, h
-      integer :: i
+      real(wp), parameter :: nodes(3) = [0.5_wp - gauss3_offset, 0.5_wp, 0.5_wp + gauss3_offset]
+      real(wp) :: kappa, k, sa, sb, t0, t1, h, cs, sn, cr, sr, x, y, r, sin0, cos0, sin1, cos1, b, sb_k, cb_k, half_sin
+      integer :: i, j
       kappa = 0.0_wp
       if (kind == model_elastic) kappa = 1.0_wp - (1.0_wp - alpha/pi2)**auto_mesh_power
+      k = alpha/pi2
       mesh%n_steps = n
       allocate (mesh%h(n), mesh%w(3, n))
+      ! the map tan(πτ/2) = √((1 − κ)/(1 + κ)) tan(πψ/2) as a point (X, Y) = (√(1+κ) cos, √(1−κ) sin)(πψ/2)
+      ! turning by π/(2n) per step (exact cos/sin every 32 steps against drift); then
+      ! sin(πτ/2) = Y/R, cos(πτ/2) = X/R at the mesh points and, at the Gauss nodes
+      ! τ = t0 + c h, the angle-sum formula with the small angle πch/2 (Taylor)
+      sa = sqrt(1.0_wp - kappa)
+      sb = sqrt(1.0_wp + kappa)
+      cr = cos(0.5_wp*pi/n)
+      sr = sin(0.5_wp*pi/n)
+      cs = 1.0_wp; sn = 0.0_wp
       t0 = 0.0_wp
+      sin0 = 0.0_wp; cos0 = 1.0_wp
       do i = 1, n
-         t1 = mapped_time(real(i, wp)/n, kappa)
-         if (i == n) t1 = 1.0_wp
+         if (iand(i, 31) == 0) then
+            cs = cos(0.5_wp*pi*real(i, wp)/n)
+            sn = sin(0.5_wp*pi*real(i, wp)/n)
+         else
+            x = cs*cr - sn*sr
+            sn = sn*cr + cs*sr
+            cs = x
+         end if
+         x = sb*cs
+         y = sa*sn
+         r = sqrt(x*x + y*y)
+         if (i == n) then
+            t1 = 1.0_wp
+            sin1 = 1.0_wp; cos1 = 0.0_wp
+         else
+            t1 = 2.0_wp/pi*atan2(y, x)
+            sin1 = y/r; cos1 = x/r
+         end if
          h = t1 - t0
          mesh%h(i) = h
-         mesh%w(:, i) = shape_function(kind, alpha, [t0 + (0.5_wp - gauss3_offset)*h, t0 + 0.5_wp*h, &
-                                                      t0 + (0.5_wp + gauss3_offset)*h])
+         do j = 1, 3
+            b = 0.5_wp*pi*nodes(j)*h
+            call small_angle(b, sb_k, cb_k)
+            half_sin = sin0*cb_k + cos0*sb_k        ! sin(πτ/2) at the node
+            if (kind == model_mathieu) then
+               mesh%w(j, i) = 1.0_wp - 2.0_wp*half_sin*half_sin   ! cos πτ
+            else
+               mesh%w(j, i) = 1.0_wp/((1.0_wp - k) + 2.0_wp*k*half_sin*half_sin)
+            end if
+         end do
          t0 = t1
+         sin0 = sin1; cos0 = cos1
       end do
    end subroutine build_mesh
+
+   !> sin b and cos b for 0 ≤ b ≤ π/4 (Taylor to b^17/b^16 below 0.3, else the intrinsics).
+   elemental subroutine small_angle(b, sin_b, cos_b)
+      real(wp), intent(in) :: b
+      real(wp), intent(out) :: sin_b, cos_b
+      real(wp) :: z
+      if (b > 0.3_wp) then
+         sin_b = sin(b)
+         cos_b = cos(b)
+         return
+      end if
+      z = b*b
+      sin_b = b*(1.0_wp + z*(-1.0_wp/6 + z*(1.0_wp/120 + z*(-1.0_wp/5040 + z*(1.0_wp/362880 &
+              + z*(-1.0_wp/39916800 + z*(1.0_wp/6227020800.0_wp + z*(-1.0_wp/1307674368000.0_wp))))))))
+      cos_b = 1.0_wp + z*(-1.0_wp/2 + z*(1.0_wp/24 + z*(-1.0_wp/720 + z*(1.0_wp/40320 &
+              + z*(-1.0_wp/3628800 + z*(1.0_wp/479001600.0_wp + z*(-1.0_wp/87178291200.0_wp)))))))
+   end subroutine small_angle
 
    !> Φ(1) of the half period by Magnus-6 on `mesh` for q = c0 + c1 w, returned
    !> with a log scale: Φ = e^{log_scale} phi.
