@@ -67,7 +67,7 @@ program hillstab_bench
       stop 2
    end if
    write (unit, '(a)') "# hillstab "//version_string//" work-precision benchmark"
-   write (unit, '(a,i0,a)') "# sample: ", size(samples), " (alpha, beta) points, alpha up to 9.8"
+   write (unit, '(a,i0,a)') "# sample: ", size(samples), " (alpha, beta) points: alpha in {0.5,2,5,8,9.5,9.8} x 24 beta in [-2,12]"
    write (unit, '(a)') "# error = max over the sample of |S - S_ref| / max(1, |S_ref|)"
    write (unit, '(a)') "# one gnuplot index (block separated by two blank lines) per method"
    write (unit, '(a)') "# columns: method setting seconds_per_point max_error mean_error q_evaluations_per_point"
@@ -84,6 +84,7 @@ program hillstab_bench
    call sweep_tolerance(unit, method_rk, quick)
    call sweep_tolerance(unit, method_gsl, quick)
    call sweep_tolerance(unit, method_auto, quick)
+   call sweep_rows(unit, quick)
    close (unit)
    write (output_unit, '(a)') "wrote "//trim(prefix)//"_work_precision.dat"
    open (newunit=unit, file=trim(prefix)//"_methods.gp", status="replace", action="write")
@@ -215,14 +216,15 @@ contains
    function make_samples() result(s)
       type(sample_t), allocatable :: s(:)
       real(wp), parameter :: alphas(6) = [0.5_wp, 2.0_wp, 5.0_wp, 8.0_wp, 9.5_wp, 9.8_wp]
-      real(wp), parameter :: betas(5) = [-2.0_wp, 0.76_wp, 2.47_wp, 6.0_wp, 12.0_wp]
+      integer, parameter :: n_beta = 24
       integer :: a, b, k
-      allocate (s(size(alphas)*size(betas)))
+      ! rows of constant alpha (β from −2 to 12), so that chart-style batches can be timed too
+      allocate (s(size(alphas)*n_beta))
       k = 0
       do a = 1, size(alphas)
-         do b = 1, size(betas)
+         do b = 1, n_beta
             k = k + 1
-            s(k) = sample_t(alphas(a), betas(b))
+            s(k) = sample_t(alphas(a), -2.0_wp + 14.0_wp*(b - 1)/(n_beta - 1))
          end do
       end do
    end function make_samples
@@ -352,6 +354,62 @@ contains
       end do
       if (written) write (unit, '(/)')
    end subroutine sweep_tolerance
+
+   !> Method auto the way charts use it: the sample's rows of constant α as batches.
+   subroutine sweep_rows(unit, quick)
+      integer, intent(in) :: unit
+      logical, intent(in) :: quick
+      integer :: p, k, first, last, repeats, r
+      real(wp) :: tol, max_err, mean_err, seconds, e
+      type(trace_t), allocatable :: traces(:)
+      logical, allocatable :: failed(:)
+      type(error_t), allocatable :: error
+      type(work_stats_t) :: work
+      integer(int64) :: t0, t1, rate, evals
+      logical :: written
+      written = .false.
+      allocate (traces(size(samples)), failed(size(samples)))
+      do p = 3, 12, merge(3, 1, quick)
+         tol = 10.0_wp**(-p)
+         evals = 0
+         repeats = 0
+         call system_clock(t0, rate)
+         do
+            do r = 1, max(1, repeats)
+               first = 1
+               do while (first <= size(samples))
+                  last = first
+                  do while (last < size(samples))
+                     if (samples(last + 1)%alpha /= samples(first)%alpha) exit
+                     last = last + 1
+                  end do
+                  call monodromy_trace_batch(model_at(samples(first)), samples(first:last)%beta, &
+                     method_t(method_auto, tolerance=tol), traces(first:last), failed(first:last), error, work)
+                  if (repeats == 0) evals = evals + work%n_evaluations
+                  first = last + 1
+               end do
+            end do
+            call system_clock(t1)
+            if (real(t1 - t0, wp)/rate >= 0.05_wp .or. repeats > 100000) exit
+            repeats = max(1, 2*repeats)
+            call system_clock(t0)
+         end do
+         seconds = real(t1 - t0, wp)/rate/(max(1, repeats)*size(samples))
+         max_err = 0.0_wp; mean_err = 0.0_wp
+         do k = 1, size(samples)
+            e = abs(traces(k)%value - truth(k))/max(1.0_wp, abs(truth(k)))
+            max_err = max(max_err, e)
+            mean_err = mean_err + e/size(samples)
+         end do
+         if (.not. written) block_names = block_names//" auto-rows"
+         written = .true.
+         write (unit, '(a,1x,es10.3,4(1x,es12.5))') "auto-rows", tol, seconds, max_err, mean_err, &
+            real(evals, wp)/size(samples)
+         write (output_unit, '(a10,es12.2,f14.2,es12.2,es12.2,f12.1)') "auto-rows", tol, 1.0e6_wp*seconds, max_err, &
+            mean_err, real(evals, wp)/size(samples)
+      end do
+      if (written) write (unit, '(/)')
+   end subroutine sweep_rows
 
    !> Cost per point of `auto` and GSL at tolerance 1e-10 as β grows (α = 5 and 9.8).
    subroutine beta_cost(path)
