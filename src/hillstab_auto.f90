@@ -26,7 +26,8 @@
 !>```
 module hillstab_auto
    use hillstab_kinds, only: wp, pi, pi2, log_huge
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
+   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_stats, only: work_stats_t
    use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, check_model
    use hillstab_transfer, only: transfer_functions, trace_t
@@ -87,7 +88,11 @@ contains
       integer :: j, n, index
       plan%kind = kind
       plan%alpha = alpha
+      ! unchecked input: leave the plan empty (the batch reports the error)
+      if (.not. (ieee_is_finite(alpha) .and. ieee_is_finite(epsilon) .and. ieee_is_finite(tolerance))) return
+      if (.not. all(ieee_is_finite(betas))) return
       if (alpha == 0.0_wp .or. .not. (tolerance > 0.0_wp .and. tolerance < 1.0_wp)) return
+      if (kind == model_elastic .and. .not. (alpha > 0.0_wp .and. alpha < pi2)) return
       base = auto_base_steps(kind, alpha, tolerance)
       do j = 1, size(betas)
          call coefficients(kind, alpha, betas(j), epsilon, c0, c1)
@@ -192,7 +197,7 @@ contains
    !> Traces of the points (α, β_j, ε), j = 1 … size(betas), sharing meshes and w values.
    !> On error (a parameter out of range, or a tolerance that cannot be met) the
    !> remaining traces are still filled with the best values available.
-   subroutine trace_auto_batch(kind, alpha, epsilon, betas, tolerance, traces, stats, error, plan)
+   subroutine trace_auto_batch(kind, alpha, epsilon, betas, tolerance, traces, stats, error, plan, reached)
       integer, intent(in) :: kind            !! model_elastic or model_mathieu
       real(wp), intent(in) :: alpha          !! α (ν for the Mathieu model)
       real(wp), intent(in) :: epsilon        !! damping ε
@@ -202,6 +207,7 @@ contains
       type(work_stats_t), intent(out) :: stats
       type(error_t), allocatable, intent(out) :: error
       type(auto_plan_t), intent(in), optional :: plan  !! meshes prepared for this (kind, α)
+      logical, intent(out), optional :: reached(:)     !! the tolerance was met at point j
       type(mesh_cache_t) :: cache
       type(error_t), allocatable :: point_error
       real(wp) :: base, estimate
@@ -209,9 +215,16 @@ contains
       integer, allocatable :: ns(:), n_coarse(:)
       logical, allocatable :: pending(:)
       type(trace_t), allocatable :: fine(:), coarse(:)
+      real(wp), allocatable :: floors(:), coarse_floors(:)
+      real(wp) :: noise
       integer :: j, m, pass
       character(len=120) :: buffer
       stats = work_stats_t()
+      if (present(reached)) reached = .false.
+      if (.not. ieee_is_finite(tolerance)) then
+         call set_error(error, err_invalid_parameter, "auto: tolerance must be finite")
+         return
+      end if
       if (.not. (tolerance > 0.0_wp .and. tolerance < 1.0_wp)) then
          call set_error(error, err_invalid_parameter, "auto: tolerance must lie in (0, 1)")
          return
@@ -244,44 +257,59 @@ contains
          ns(j) = steps_for_point(base, kind, c0s(j), c1s(j))
       end do
       ! first pass: S_N and S_{N/2} of all points sharing N together, in lanes
-      allocate (fine(m), coarse(m), n_coarse(m), pending(m))
-      call traces_in_lanes(ns, fine)
+      allocate (fine(m), coarse(m), n_coarse(m), pending(m), floors(m), coarse_floors(m))
+      call traces_in_lanes(ns, fine, floors)
       n_coarse = ns/2
-      call traces_in_lanes(n_coarse, coarse)
+      call traces_in_lanes(n_coarse, coarse, coarse_floors)
       ! Richardson check; the points that miss the tolerance get a finer N chosen from
-      ! their estimate and the order, again computed in lanes, until all pass
+      ! their estimate and the order, again computed in lanes, until all pass. Where the
+      ! round-off level of S exceeds the tolerance no N can meet it: the best value is
+      ! returned with err_accuracy (the difference there is noise, not truncation).
       pending = .true.
+      if (present(reached)) reached = .true.
       do pass = 1, 12
          do j = 1, m
             if (.not. pending(j)) cycle
             estimate = richardson_safety*trace_difference(fine(j), coarse(j))/ &
                        ((real(ns(j), wp)/n_coarse(j))**6 - 1.0_wp)
-            if (estimate <= tolerance) then
+            noise = max(floors(j), coarse_floors(j))
+            if (estimate <= tolerance .and. noise <= tolerance) then
                pending(j) = .false.
+            else if (estimate <= max(tolerance, 2.0_wp*noise)) then
+               ! the difference is at the round-off level: more steps cannot help
+               pending(j) = .false.
+               if (present(reached)) reached(j) = .false.
+               write (buffer, '(a,es9.2,a,es9.2,a,es10.3,a)') "auto: the tolerance ", tolerance, &
+                  " is below the round-off level ", noise, " of S (at beta = ", betas(j), "); best value returned"
+               if (.not. allocated(error)) call set_error(error, err_accuracy, trim(buffer))
             else if (ns(j) >= max_auto_steps .or. pass == 12) then
                pending(j) = .false.
+               if (present(reached)) reached(j) = .false.
                write (buffer, '(a,es9.2,a,es9.2,a,es10.3,a)') "auto: estimated error ", estimate, &
                   " in S exceeds the tolerance ", tolerance, " (at beta = ", betas(j), ")"
                if (.not. allocated(error)) call set_error(error, err_integration, trim(buffer))
             else
                coarse(j) = fine(j)
+               coarse_floors(j) = floors(j)
                n_coarse(j) = ns(j)
                ns(j) = ladder_steps(1.2_wp*ns(j)*min(2.0_wp, max(1.15_wp, (estimate/tolerance)**(1.0_wp/6.0_wp))))
             end if
          end do
          if (.not. any(pending)) exit
-         call traces_in_lanes(ns, fine, pending)
+         call traces_in_lanes(ns, fine, floors, pending)
       end do
       traces = fine
    contains
       !> S on meshes of n(j) steps for the selected points, grouped by n and propagated in lanes.
-      subroutine traces_in_lanes(n, result, selected)
+      subroutine traces_in_lanes(n, result, floors, selected)
          integer, intent(in) :: n(:)
          type(trace_t), intent(inout) :: result(:)
+         real(wp), intent(inout) :: floors(:)
          logical, intent(in), optional :: selected(:)
          logical :: todo(size(n))
          integer, allocatable :: group(:)
          type(trace_t), allocatable :: lane_results(:)
+         real(wp), allocatable :: lane_floors(:)
          integer :: i, k, index
          todo = .true.
          if (present(selected)) todo = selected
@@ -289,11 +317,12 @@ contains
             if (.not. todo(i)) cycle
             group = pack([(k, k=1, size(n))], n == n(i) .and. todo)
             todo(group) = .false.
-            allocate (lane_results(size(group)))
+            allocate (lane_results(size(group)), lane_floors(size(group)))
             call get_mesh(cache, kind, alpha, n(i), index)
-            call lane_traces(cache%meshes(index), c0s(group), c1s(group), lane_results)
+            call lane_traces(cache%meshes(index), c0s(group), c1s(group), lane_results, lane_floors)
             result(group) = lane_results
-            deallocate (lane_results)
+            floors(group) = lane_floors
+            deallocate (lane_results, lane_floors)
             call count_steps(stats, size(group)*n(i))
          end do
       end subroutine traces_in_lanes
@@ -342,53 +371,6 @@ contains
       end if
    end function constant_trace
 
-   !> Magnus-6 with N and N/2 steps; while the Richardson estimate of the error of S_N
-   !> misses the tolerance, a finer N' is chosen from the estimate and the order
-   !> (N' = 1.2 N (estimate/tol)^{1/6}) and checked against the previous result.
-   subroutine converge_point(kind, alpha, c0, c1, tolerance, base, cache, tr, stats, error, start)
-      integer, intent(in) :: kind
-      real(wp), intent(in) :: alpha, c0, c1, tolerance
-      real(wp), intent(in) :: base  !! auto_base_steps(kind, alpha, tolerance)
-      type(trace_t), intent(in), optional :: start(2)  !! S_N and S_{N/2} computed already (in lanes)
-      type(mesh_cache_t), intent(inout) :: cache
-      type(trace_t), intent(out) :: tr
-      type(work_stats_t), intent(inout) :: stats
-      type(error_t), allocatable, intent(out) :: error
-      type(trace_t) :: fine, coarse
-      integer :: n, n_coarse, i_fine, i_coarse, pass
-      real(wp) :: estimate
-      character(len=120) :: buffer
-      n = steps_for_point(base, kind, c0, c1)
-      n_coarse = n/2
-      if (present(start)) then
-         coarse = start(2)
-      else
-         call get_mesh(cache, kind, alpha, n_coarse, i_coarse)
-         coarse = half_period_trace(cache%meshes(i_coarse), c0, c1)
-         call count_steps(stats, n_coarse)
-      end if
-      do pass = 1, 12
-         if (pass == 1 .and. present(start)) then
-            fine = start(1)
-         else
-            call get_mesh(cache, kind, alpha, n, i_fine)
-            fine = half_period_trace(cache%meshes(i_fine), c0, c1)
-            call count_steps(stats, n)
-         end if
-         estimate = richardson_safety*trace_difference(fine, coarse)/((real(n, wp)/n_coarse)**6 - 1.0_wp)
-         if (estimate <= tolerance) exit
-         if (n >= max_auto_steps) then
-            write (buffer, '(a,es9.2,a,es9.2)') "auto: estimated error ", estimate, " in S exceeds the tolerance ", &
-               tolerance
-            call set_error(error, err_integration, trim(buffer))
-            exit
-         end if
-         coarse = fine
-         n_coarse = n
-         n = ladder_steps(1.2_wp*n*min(2.0_wp, max(1.15_wp, (estimate/tolerance)**(1.0_wp/6.0_wp))))
-      end do
-      tr = fine
-   end subroutine converge_point
 
    !> Count n Magnus-6 steps: three values of q each.
    pure subroutine count_steps(stats, n)
@@ -586,18 +568,20 @@ contains
    !> lanes of structure-of-arrays loops that the compiler vectorises (same mesh, same
    !> control flow; a step where some lane leaves the polynomial range of the
    !> exponential is done lane by lane).
-   pure subroutine lane_traces(mesh, c0, c1, traces)
+   pure subroutine lane_traces(mesh, c0, c1, traces, floors)
       type(mesh_t), intent(in) :: mesh
       real(wp), intent(in) :: c0(:), c1(:)
       type(trace_t), intent(out) :: traces(size(c0))
+      real(wp), intent(out) :: floors(size(c0))  !! round-off level of each S, relative to max(1, |S|)
       real(wp), parameter :: c_d2 = -sqrt15/3.0_wp, c_d3 = -10.0_wp/3.0_wp, c_60 = 1.0_wp/30.0_wp
       real(wp), parameter :: c_240 = 1.0_wp/240.0_wp, c_120 = 1.0_wp/120.0_wp, c_12 = 1.0_wp/12.0_wp
-      real(wp), dimension(size(c0)) :: p11, p12, p21, p22, log_scale, ga, gb, gc, z
+      real(wp), dimension(size(c0)) :: p11, p12, p21, p22, log_scale, ga, gb, gc, z, log_peak
       real(wp) :: h, w1, w2, w3, q1, q2, q3, d2, d3, x3, y1, y2, y3, c, s, ls, e11, e12, e21, e22, a, b, big
       real(wp) :: phi(2, 2)
       integer :: i, l, shift
       p11 = 1.0_wp; p12 = 0.0_wp; p21 = 0.0_wp; p22 = 1.0_wp
       log_scale = 0.0_wp
+      log_peak = 0.0_wp
       do i = 1, mesh%n_steps
          h = mesh%h(i)
          w1 = mesh%w(1, i); w2 = mesh%w(2, i); w3 = mesh%w(3, i)
@@ -647,6 +631,10 @@ contains
          if (iand(i, 7) == 0 .or. i == mesh%n_steps) then
             do l = 1, size(c0)
                big = max(abs(p11(l)), abs(p12(l)), abs(p21(l)), abs(p22(l)))
+               ! conditioning of the propagator, invariant under rescaling x' against x:
+               ! min over diagonal D of ‖D Φ D⁻¹‖²_F = a² + d² + 2|b c|
+               log_peak(l) = max(log_peak(l), log(p11(l)**2 + p22(l)**2 + 2.0_wp*abs(p12(l)*p21(l))) &
+                                 + 2.0_wp*log_scale(l))
                if (big > 2.0_wp**rescale_exponent .or. big < 2.0_wp**(-rescale_exponent)) then
                   shift = exponent(big)
                   p11(l) = scale(p11(l), -shift); p12(l) = scale(p12(l), -shift)
@@ -659,8 +647,24 @@ contains
       do l = 1, size(c0)
          phi(1, 1) = p11(l); phi(2, 1) = p21(l); phi(1, 2) = p12(l); phi(2, 2) = p22(l)
          traces(l) = trace_from_half_period(phi, log_scale(l))
+         floors(l) = roundoff_floor(traces(l), log_peak(l), mesh%n_steps)
       end do
    end subroutine lane_traces
+
+   !> Round-off level of S relative to max(1, |S|). Each step rounds the propagator by
+   !> about ε relative to its size; where the propagator is far from a rotation (the dip
+   !> of Q at α → π², β ≪ 0) those errors are amplified by its condition κ (scaled, so
+   !> that x' against x units do not count), and S carries an absolute error of about
+   !> ε √N κ_max however small S is (S = 2 at β = 0 with κ ≫ 1).
+   pure real(wp) function roundoff_floor(tr, log_peak, n_steps) result(floor)
+      type(trace_t), intent(in) :: tr
+      real(wp), intent(in) :: log_peak  !! ln of the largest scaled condition of the propagator along the path
+      integer, intent(in) :: n_steps
+      real(wp), parameter :: safety = 0.1_wp  ! calibrated: β = 0, α = 9.8 … 9.86 (S = 2 exactly)
+      real(wp) :: log_floor
+      log_floor = log(safety*epsilon(1.0_wp)*sqrt(real(n_steps, wp))) + log_peak - max(0.0_wp, tr%log_abs)
+      floor = exp(min(log_floor, log_huge))
+   end function roundoff_floor
 
    !> S = 2(u v' + u' v) and its log magnitude from Φ(1) = e^{log_scale} phi.
    pure function trace_from_half_period(phi, log_scale) result(tr)

@@ -10,7 +10,7 @@ module hillstab_error
    implicit none
    private
    public :: error_t, set_error, error_code_name
-   public :: err_invalid_parameter, err_overflow, err_integration, err_io, err_input, err_singular
+   public :: err_invalid_parameter, err_overflow, err_integration, err_io, err_input, err_singular, err_accuracy
 
    !> A parameter is outside the domain where the quantity is defined.
    integer, parameter :: err_invalid_parameter = 1
@@ -24,6 +24,9 @@ module hillstab_error
    integer, parameter :: err_input = 5
    !> A linear-algebra problem is singular or did not converge.
    integer, parameter :: err_singular = 6
+   !> The requested accuracy is below what double precision allows for this problem;
+   !> the best value is returned with this error.
+   integer, parameter :: err_accuracy = 7
 
    !> Error descriptor: a code from the `err_*` constants and a readable message.
    type :: error_t
@@ -54,6 +57,7 @@ contains
       case (err_io); name = "i/o error"
       case (err_input); name = "invalid input"
       case (err_singular); name = "singular problem"
+      case (err_accuracy); name = "accuracy not reached"
       case default; name = "error"
       end select
    end function error_code_name

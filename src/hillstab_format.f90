@@ -2,9 +2,12 @@
 !>
 !> Fortran's formatted `write` costs about half a microsecond per number, which
 !> is more than method auto needs to compute a chart point; this module writes
-!> the same `d.ddd…e±xxx` text with integer arithmetic, ten times faster. With
-!> `digits` ≤ 16 significant digits the text is the correctly rounded decimal
-!> except, rarely, in the last digit (the scaling by a power of ten rounds once).
+!> the same `d.ddd…e±xxx` text with integer arithmetic, ten times faster. The
+!> mantissa comes from one multiplication by an exact power of ten (|decimal
+!> exponent shift| ≤ 22, i.e. |x| between about 1e-7 and 1e38 at 16 digits) and
+!> is then within one unit of the correctly rounded last digit (often one off);
+!> outside that range, where several roundings would pile up, the text comes from
+!> Fortran's own `es` edit descriptor, correctly rounded.
 !>
 !>```fortran
 !> print '(a)', format_es(-1266.8019686641_wp, 12)   ! -1.26680196866e+003
@@ -101,6 +104,10 @@ contains
       else
          ! decimal exponent from the binary one (may be off by one; corrected below)
          e = floor((exponent(ax) - 1)*0.30102999566398120_wp)
+         if (abs(digits - 1 - e) > 21) then
+            call put_es_fortran(buffer, last, x, digits)
+            return
+         end if
          mantissa = nint(times_power_of_ten(ax, digits - 1 - e), int64)
          do while (mantissa >= int_powers(digits))
             e = e + 1
@@ -149,4 +156,26 @@ contains
       p = p - 1
       if (x < 0.0_wp) buffer(p:p) = "-"
    end subroutine put_es
+
+   !> format_es through Fortran's `es` descriptor (correctly rounded; slower), into
+   !> buffer(last − digits − 6 : last).
+   pure subroutine put_es_fortran(buffer, last, x, digits)
+      character(len=*), intent(inout) :: buffer
+      integer, intent(in) :: last, digits
+      real(wp), intent(in) :: x
+      character(len=40) :: fmt, text
+      integer :: i, width
+      width = digits + 7
+      write (fmt, '(a,i0,a,i0,a)') "(es", width + 1, ".", digits - 1, "e3)"
+      write (text(1:width + 1), fmt) x
+      i = index(text(1:width + 1), "E")
+      if (i > 0) text(i:i) = "e"
+      if (digits == 1) then
+         ! "d.e±xxx" → "de±xxx": drop the point Fortran writes after a lone digit
+         i = index(text(1:width + 1), ".")
+         text(2:i) = text(1:i - 1)
+         text(1:1) = " "
+      end if
+      buffer(last - width + 1:last) = text(2:width + 1)
+   end subroutine put_es_fortran
 end module hillstab_format

@@ -6,7 +6,7 @@
 !> here. All return the trace of the χ equation (47), i.e. S₁ when ε > 0.
 module hillstab_monodromy
    use hillstab_kinds, only: wp
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter
+   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
    use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, check_model, &
       segment_coefficients, hill_period, sampling_endpoint, sampling_midpoint, sampling_average
    use hillstab_transfer, only: scaled_matrix_t, scaled_identity, multiply_transfer, multiply_matrix, &
@@ -174,7 +174,7 @@ contains
    !> auto shares its meshes and coefficient values across the batch (much faster than
    !> point by point); the other methods go point by point. `failed(j)` marks points that
    !> could not be computed; `error` describes the first of them.
-   subroutine monodromy_trace_batch(model, betas, method, traces, failed, error, stats, plan)
+   subroutine monodromy_trace_batch(model, betas, method, traces, failed, error, stats, plan, inaccurate)
       type(hill_model_t), intent(in) :: model  !! kind, alpha and epsilon of the batch (beta ignored)
       real(wp), intent(in) :: betas(:)
       type(method_t), intent(in) :: method
@@ -183,20 +183,33 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(work_stats_t), intent(out), optional :: stats
       type(batch_plan_t), intent(in), optional :: plan  !! from `prepare_batch` for this row
+      !> computed, but the tolerance is below the round-off level there (err_accuracy): the
+      !> trace is the best double precision allows; not counted in `failed`
+      logical, intent(out), optional :: inaccurate(size(betas))
       type(work_stats_t) :: work, part
+      logical :: reached(size(betas))
       type(error_t), allocatable :: point_error
       type(hill_model_t) :: point
       integer :: j
       failed = .false.
+      if (present(inaccurate)) inaccurate = .false.
       work = work_stats_t()
       if (method%kind == method_auto) then
          if (present(plan)) then
             call trace_auto_batch(model%kind, model%alpha, model%epsilon, betas, method%tolerance, traces, work, &
-               error, plan%auto)
+               error, plan%auto, reached)
          else
-            call trace_auto_batch(model%kind, model%alpha, model%epsilon, betas, method%tolerance, traces, work, error)
+            call trace_auto_batch(model%kind, model%alpha, model%epsilon, betas, method%tolerance, traces, work, &
+               error, reached=reached)
          end if
-         ! a batch error (a point out of range or a tolerance not met) is located point by point
+         if (allocated(error)) then
+            if (error%code == err_accuracy) then
+               if (present(inaccurate)) inaccurate = .not. reached
+               if (present(stats)) stats = work
+               return
+            end if
+         end if
+         ! any other batch error (a point out of range, a tolerance not met) is located point by point
          if (allocated(error)) then
             deallocate (error)
             do j = 1, size(betas)
@@ -204,6 +217,10 @@ contains
                point%beta = betas(j)
                call monodromy_trace(point, method, traces(j), point_error)
                if (allocated(point_error)) then
+                  if (point_error%code == err_accuracy) then
+                     if (present(inaccurate)) inaccurate(j) = .true.
+                     cycle
+                  end if
                   failed(j) = .true.
                   if (.not. allocated(error)) call move_alloc(point_error, error)
                end if
@@ -216,6 +233,10 @@ contains
             call monodromy_trace(point, method, traces(j), point_error, part)
             call add_work(work, part)
             if (allocated(point_error)) then
+               if (point_error%code == err_accuracy) then
+                  if (present(inaccurate)) inaccurate(j) = .true.
+                  cycle
+               end if
                failed(j) = .true.
                if (.not. allocated(error)) call move_alloc(point_error, error)
             end if

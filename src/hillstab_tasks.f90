@@ -16,7 +16,7 @@
 !>```
 module hillstab_tasks
    use hillstab_kinds, only: wp, int64, pi2, version_string
-   use hillstab_error, only: error_t, set_error, err_input, err_io
+   use hillstab_error, only: error_t, set_error, err_input, err_io, err_accuracy
    use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, hill_coefficient, &
       segment_coefficients, hill_period, in_physical_domain, sampling_name
    use hillstab_transfer, only: trace_t
@@ -95,14 +95,21 @@ contains
    end function output_path
 
    !> Floquet data of one point.
-   subroutine evaluate_point(scene, alpha, beta, f, error)
+   subroutine evaluate_point(scene, alpha, beta, f, error, inaccurate)
       type(scene_t), intent(in) :: scene
       real(wp), intent(in) :: alpha, beta
       type(floquet_t), intent(out) :: f
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(out), optional :: inaccurate  !! computed, but only to the round-off level
       type(trace_t) :: tr
+      if (present(inaccurate)) inaccurate = .false.
       call monodromy_trace(hill_model_t(scene%model, alpha, beta, scene%epsilon), scene%method, tr, error)
-      if (.not. allocated(error)) f = floquet_from_trace(tr, scene%epsilon)
+      if (allocated(error)) then
+         if (error%code /= err_accuracy) return
+         deallocate (error)
+         if (present(inaccurate)) inaccurate = .true.
+      end if
+      f = floquet_from_trace(tr, scene%epsilon)
    end subroutine evaluate_point
 
    !> The error of a failed point, naming the scene, the method and the point.
@@ -230,7 +237,9 @@ contains
       type(batch_plan_t) :: plan
       logical :: stopped
       character(len=chart_line_length), allocatable :: block_lines(:, :, :)
-      logical, allocatable :: block_failed(:, :, :)
+      logical, allocatable :: block_failed(:, :, :), block_inaccurate(:, :, :), inaccurate(:)
+      integer(int64) :: n_inaccurate
+      real(wp) :: first_inaccurate(2)
       integer :: group, n_groups, g
       integer :: i, j, n_alpha, n_beta, c, chunk, n_chunks, first, last
 
@@ -260,6 +269,7 @@ contains
 
       call progress_begin(progress, int(n_alpha, int64)*n_beta, quiet)
       stopped = .false.
+      n_inaccurate = 0
       if (n_alpha >= 4*max_threads()) then
          ! groups of rows computed in parallel (mesh preparation, integration and
          ! formatting on every core) into one of two buffers, while one thread writes the
@@ -267,7 +277,8 @@ contains
          ! memory stays bounded however large the chart
          group = 4*max_threads()
          n_groups = (n_alpha + group - 1)/group
-         allocate (block_lines(n_beta, group, 0:1), block_failed(n_beta, group, 0:1))
+         allocate (block_lines(n_beta, group, 0:1), block_failed(n_beta, group, 0:1), &
+                   block_inaccurate(n_beta, group, 0:1))
          !$omp parallel default(shared) private(g, i, alpha)
          do g = 1, n_groups + 1
             if (stopped) exit   ! the same value in every thread: read after a barrier
@@ -276,7 +287,7 @@ contains
                do i = (g - 2)*group + 1, min(n_alpha, (g - 1)*group)
                   alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i)
                   call finish_row(i, alpha, block_lines(:, i - (g - 2)*group, mod(g - 1, 2)), &
-                     block_failed(:, i - (g - 2)*group, mod(g - 1, 2)))
+                     block_failed(:, i - (g - 2)*group, mod(g - 1, 2)), block_inaccurate(:, i - (g - 2)*group, mod(g - 1, 2)))
                   if (stopped) exit
                end do
                !$omp end single nowait
@@ -286,7 +297,7 @@ contains
                do i = (g - 1)*group + 1, min(n_alpha, g*group)
                   alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i)
                   call compute_row(scene, alpha, all_betas, damped, block_lines(:, i - (g - 1)*group, mod(g, 2)), &
-                     block_failed(:, i - (g - 1)*group, mod(g, 2)))
+                     block_failed(:, i - (g - 1)*group, mod(g, 2)), block_inaccurate(:, i - (g - 1)*group, mod(g, 2)))
                end do
                !$omp end do
             else
@@ -296,7 +307,7 @@ contains
          !$omp end parallel
       else
          ! few rows: the points of each row in parallel chunks sharing the prepared meshes
-         allocate (lines(n_beta), failed(n_beta))
+         allocate (lines(n_beta), failed(n_beta), inaccurate(n_beta))
          chunk = max(16, n_beta/(8*max_threads()))
          n_chunks = (n_beta + chunk - 1)/chunk
          do i = 1, n_alpha
@@ -306,10 +317,11 @@ contains
             do c = 1, n_chunks
                first = (c - 1)*chunk + 1
                last = min(n_beta, c*chunk)
-               call compute_row(scene, alpha, all_betas(first:last), damped, lines(first:last), failed(first:last), plan)
+               call compute_row(scene, alpha, all_betas(first:last), damped, lines(first:last), failed(first:last), &
+                  inaccurate(first:last), plan)
             end do
             !$omp end parallel do
-            call finish_row(i, alpha, lines, failed)
+            call finish_row(i, alpha, lines, failed, inaccurate)
             if (stopped) exit
          end do
       end if
@@ -319,13 +331,14 @@ contains
          return
       end if
       call commit_output(file, error)
+      if (.not. allocated(error)) call warn_inaccurate(scene, n_inaccurate, first_inaccurate)
    contains
       !> Write a computed row (in order), or turn its first failure into the error.
-      subroutine finish_row(i, alpha, lines, failed)
+      subroutine finish_row(i, alpha, lines, failed, inaccurate)
          integer, intent(in) :: i
          real(wp), intent(in) :: alpha
          character(len=*), intent(in) :: lines(:)
-         logical, intent(in) :: failed(:)
+         logical, intent(in) :: failed(:), inaccurate(:)
          type(error_t), allocatable :: cause
          type(floquet_t) :: f
          integer :: j
@@ -346,17 +359,22 @@ contains
             stopped = .true.
             return
          end if
+         if (any(inaccurate)) then
+            if (n_inaccurate == 0) first_inaccurate = [alpha, all_betas(findloc(inaccurate, .true., dim=1))]
+            n_inaccurate = n_inaccurate + count(inaccurate)
+         end if
          call progress_update(progress, int(i, int64)*n_beta)
       end subroutine finish_row
    end subroutine run_chart
 
    !> Lines (and failure flags) of the chart points (α, β_j) of one row or part of a row.
-   subroutine compute_row(scene, alpha, betas, damped, lines, failed, plan)
+   subroutine compute_row(scene, alpha, betas, damped, lines, failed, inaccurate, plan)
       type(scene_t), intent(in) :: scene
       real(wp), intent(in) :: alpha, betas(:)
       logical, intent(in) :: damped
       character(len=*), intent(out) :: lines(:)
       logical, intent(out) :: failed(:)
+      logical, intent(out) :: inaccurate(:)  !! computed only to the round-off level (err_accuracy)
       type(batch_plan_t), intent(in), optional :: plan  !! prepared for the whole row
       type(trace_t) :: traces(size(betas))
       type(error_t), allocatable :: cause
@@ -364,7 +382,7 @@ contains
       type(hill_model_t) :: row
       integer :: j
       row = hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon)
-      call monodromy_trace_batch(row, betas, scene%method, traces, failed, cause, plan=plan)
+      call monodromy_trace_batch(row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate)
       do j = 1, size(betas)
          if (failed(j)) cycle
          f = floquet_from_trace(traces(j), scene%epsilon)
@@ -382,7 +400,7 @@ contains
       type(floquet_t) :: f
       type(error_t), allocatable :: cause
       character(len=chart_line_length), allocatable :: lines(:)
-      logical, allocatable :: failed(:)
+      logical, allocatable :: failed(:), inaccurate(:)
       logical :: damped
       integer :: k, n
 
@@ -390,12 +408,13 @@ contains
       damped = scene%epsilon > 0.0_wp
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
-      allocate (lines(n), failed(n))
+      allocate (lines(n), failed(n), inaccurate(n))
       failed = .false.
+      inaccurate = .false.
       call progress_begin(progress, int(n, int64), quiet)
       !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause)
       do k = 1, n
-         call evaluate_point(scene, scene%points(1, k), scene%points(2, k), f, cause)
+         call evaluate_point(scene, scene%points(1, k), scene%points(2, k), f, cause, inaccurate(k))
          if (allocated(cause)) then
             failed(k) = .true.
          else
@@ -425,6 +444,10 @@ contains
          return
       end if
       call commit_output(file, error)
+      if (.not. allocated(error) .and. any(inaccurate)) then
+         k = findloc(inaccurate, .true., dim=1)
+         call warn_inaccurate(scene, int(count(inaccurate), int64), scene%points(:, k))
+      end if
    end subroutine run_points
 
    !> The coefficient task: columns tau, then for each α: Q(τ) and its N-piece
@@ -526,6 +549,21 @@ contains
       type(progress_t), intent(in) :: progress
       if (progress%shown .and. progress%terminal) write (error_unit, '(a)') ""
    end subroutine progress_end
+
+   !> Say on stderr (even when quiet: it qualifies the results) how many points could only
+   !> be computed to the round-off level of double precision, not to the tolerance.
+   subroutine warn_inaccurate(scene, n, first)
+      type(scene_t), intent(in) :: scene
+      integer(int64), intent(in) :: n
+      real(wp), intent(in) :: first(2)  !! alpha, beta of the first such point
+      character(len=32) :: count_text
+      if (n == 0) return
+      write (count_text, '(i0)') n
+      write (error_unit, '(a)') "hillstab: warning: "//scene%source//": "//trim(count_text)// &
+         " point(s) reached only the round-off level of double precision, not the tolerance "// &
+         real_text(scene%method%tolerance)//" (first at alpha = "//real_text(first(1))//", beta = "// &
+         real_text(first(2))//"); their S is the best available"
+   end subroutine warn_inaccurate
 
    !> Number of OpenMP threads a parallel region will use (1 without OpenMP).
    integer function max_threads()
