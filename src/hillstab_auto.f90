@@ -575,13 +575,14 @@ contains
       real(wp), intent(out) :: floors(size(c0))  !! round-off level of each S, relative to max(1, |S|)
       real(wp), parameter :: c_d2 = -sqrt15/3.0_wp, c_d3 = -10.0_wp/3.0_wp, c_60 = 1.0_wp/30.0_wp
       real(wp), parameter :: c_240 = 1.0_wp/240.0_wp, c_120 = 1.0_wp/120.0_wp, c_12 = 1.0_wp/12.0_wp
-      real(wp), dimension(size(c0)) :: p11, p12, p21, p22, log_scale, ga, gb, gc, z, log_peak
+      real(wp), dimension(size(c0)) :: p11, p12, p21, p22, log_scale, ga, gb, gc, z, log_peak, peak
       real(wp) :: h, w1, w2, w3, q1, q2, q3, d2, d3, x3, y1, y2, y3, c, s, ls, e11, e12, e21, e22, a, b, big
       real(wp) :: phi(2, 2)
       integer :: i, l, shift
       p11 = 1.0_wp; p12 = 0.0_wp; p21 = 0.0_wp; p22 = 1.0_wp
       log_scale = 0.0_wp
       log_peak = 0.0_wp
+      peak = 2.0_wp
       do i = 1, mesh%n_steps
          h = mesh%h(i)
          w1 = mesh%w(1, i); w2 = mesh%w(2, i); w3 = mesh%w(3, i)
@@ -632,10 +633,12 @@ contains
             do l = 1, size(c0)
                big = max(abs(p11(l)), abs(p12(l)), abs(p21(l)), abs(p22(l)))
                ! conditioning of the propagator, invariant under rescaling x' against x:
-               ! min over diagonal D of ‖D Φ D⁻¹‖²_F = a² + d² + 2|b c|
-               log_peak(l) = max(log_peak(l), log(p11(l)**2 + p22(l)**2 + 2.0_wp*abs(p12(l)*p21(l))) &
-                                 + 2.0_wp*log_scale(l))
+               ! min over diagonal D of ‖D Φ D⁻¹‖²_F = a² + d² + 2|b c| (kept at the current
+               ! scale; folded into log_peak only when the scale changes, to keep log out of the loop)
+               peak(l) = max(peak(l), p11(l)**2 + p22(l)**2 + 2.0_wp*abs(p12(l)*p21(l)))
                if (big > 2.0_wp**rescale_exponent .or. big < 2.0_wp**(-rescale_exponent)) then
+                  log_peak(l) = max(log_peak(l), log(peak(l)) + 2.0_wp*log_scale(l))
+                  peak(l) = 0.0_wp
                   shift = exponent(big)
                   p11(l) = scale(p11(l), -shift); p12(l) = scale(p12(l), -shift)
                   p21(l) = scale(p21(l), -shift); p22(l) = scale(p22(l), -shift)
@@ -647,6 +650,7 @@ contains
       do l = 1, size(c0)
          phi(1, 1) = p11(l); phi(2, 1) = p21(l); phi(1, 2) = p12(l); phi(2, 2) = p22(l)
          traces(l) = trace_from_half_period(phi, log_scale(l))
+         if (peak(l) > 0.0_wp) log_peak(l) = max(log_peak(l), log(peak(l)) + 2.0_wp*log_scale(l))
          floors(l) = roundoff_floor(traces(l), log_peak(l), mesh%n_steps)
       end do
    end subroutine lane_traces
