@@ -82,7 +82,7 @@ contains
       real(wp), intent(in) :: x
       integer, intent(in) :: digits
       integer(int64) :: mantissa
-      integer :: e, i, k, p, abs_e, last
+      integer :: e, i, k, p, abs_e, last, biased
       real(wp) :: ax
       last = pos + digits + 7
       buffer(pos + 1:last) = repeat(" ", digits + 7)
@@ -102,8 +102,12 @@ contains
          mantissa = 0
          e = 0
       else
-         ! decimal exponent from the binary one (may be off by one; corrected below)
-         e = floor((exponent(ax) - 1)*0.30102999566398120_wp)
+         ! decimal exponent from the binary one, read from the bits (exponent() is a
+         ! library call; subnormals have biased exponent 0 and fall back to it); may be
+         ! off by one, corrected below
+         biased = int(ishft(transfer(ax, 0_int64), -52))
+         if (biased == 0) biased = exponent(ax) + 1022
+         e = floor((biased - 1023)*0.30102999566398120_wp)
          if (abs(digits - 1 - e) > 21) then
             call put_es_fortran(buffer, last, x, digits)
             return
