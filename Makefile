@@ -7,7 +7,7 @@
 #   make lib            build libhillstab.a and .mod files with plain gfortran (no fpm)
 #   make install PREFIX=/usr/local   install library, modules, C header, pkg-config and CMake files
 #   make check-install  install into build/_install and link a C and a Fortran program against it
-FPM ?= fpm
+FPM ?= bash scripts/fpm.sh
 ifeq ($(origin FC),default)
 FC = gfortran
 endif

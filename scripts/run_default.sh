@@ -12,7 +12,6 @@ scenes=(default_exact default_paper fig4_points fig2_coefficient
         figA_mathieu_formula figA_mathieu_segments4 figA_mathieu_exact damped)
 plots=(default fig2 fig3 figA damped)
 
-command -v fpm >/dev/null 2>&1 || { echo "run_default: fpm not found (run scripts/setup.sh)" >&2; exit 1; }
 command -v gnuplot >/dev/null 2>&1 || { echo "run_default: gnuplot not found (run scripts/setup.sh)" >&2; exit 1; }
 
 mkdir -p out
@@ -23,7 +22,7 @@ done
 
 start=$(date +%s)
 flags=$(bash scripts/release_flags.sh)
-fpm run --profile release --flag "$flags" hillstab -- "${paths[@]}"
+bash scripts/fpm.sh run --profile release --flag "$flags" hillstab -- "${paths[@]}"
 for plot in "${plots[@]}"; do
    gnuplot "plots/$plot.gp"
 done

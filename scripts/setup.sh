@@ -10,19 +10,25 @@ command -v gnuplot >/dev/null 2>&1 || missing+=(gnuplot-nox)
 ls /usr/lib/*/liblapack.so >/dev/null 2>&1 || missing+=(liblapack-dev)
 ls /usr/lib/*/libblas.so >/dev/null 2>&1 || missing+=(libblas-dev)
 command -v make >/dev/null 2>&1 || missing+=(make)
+command -v cc >/dev/null 2>&1 || missing+=(gcc)
+command -v pkg-config >/dev/null 2>&1 || missing+=(pkg-config)
 
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 if [ ${#missing[@]} -gt 0 ]; then
    echo "setup: installing ${missing[*]}" >&2
-   SUDO=""
-   if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
    export DEBIAN_FRONTEND=noninteractive
    $SUDO apt-get update -qq
    $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-if ! command -v fpm >/dev/null 2>&1; then
+if ! bash "$(dirname "$0")/fpm.sh" --version >/dev/null 2>&1; then
    echo "setup: installing fpm" >&2
-   python3 -m pip install --quiet fpm
+   command -v python3 >/dev/null 2>&1 || { $SUDO apt-get update -qq; $SUDO apt-get install -y -qq python3-pip >/dev/null; }
+   python3 -m pip --version >/dev/null 2>&1 || { $SUDO apt-get update -qq; $SUDO apt-get install -y -qq python3-pip >/dev/null; }
+   # a Debian system Python refuses plain pip installs (PEP 668): fall back to --user/--break-system-packages
+   python3 -m pip install --quiet fpm 2>/dev/null \
+      || python3 -m pip install --quiet --user --break-system-packages fpm
    hash -r
 fi
-command -v fpm >/dev/null 2>&1 || { echo "setup: fpm not on PATH after install" >&2; exit 1; }
+bash "$(dirname "$0")/fpm.sh" --version >/dev/null 2>&1 || { echo "setup: fpm not found after install" >&2; exit 1; }
