@@ -575,7 +575,7 @@ contains
       real(wp), intent(out) :: floors(size(c0))  !! round-off level of each S, relative to max(1, |S|)
       real(wp), parameter :: c_d2 = -sqrt15/3.0_wp, c_d3 = -10.0_wp/3.0_wp, c_60 = 1.0_wp/30.0_wp
       real(wp), parameter :: c_240 = 1.0_wp/240.0_wp, c_120 = 1.0_wp/120.0_wp, c_12 = 1.0_wp/12.0_wp
-      real(wp), dimension(size(c0)) :: p11, p12, p21, p22, log_scale, ga, gb, gc, z, log_peak, peak
+      real(wp), dimension(size(c0)) :: p11, p12, p21, p22, log_scale, ga, gb, gc, z, log_peak, peak, cs, sn
       real(wp) :: h, w1, w2, w3, q1, q2, q3, d2, d3, x3, y1, y2, y3, c, s, ls, e11, e12, e21, e22, a, b, big
       real(wp) :: phi(2, 2)
       integer :: i, l, shift
@@ -604,31 +604,25 @@ contains
          end do
          if (maxval(abs(z)) <= 0.5_wp) then
             do l = 1, size(c0)
-               c = cos_series(z(l))
-               s = sin_series(z(l))
-               e11 = c + s*ga(l); e12 = s*gb(l)
-               e21 = s*gc(l); e22 = c - s*ga(l)
-               a = p11(l); b = p21(l)
-               p11(l) = e11*a + e12*b
-               p21(l) = e21*a + e22*b
-               a = p12(l); b = p22(l)
-               p12(l) = e11*a + e12*b
-               p22(l) = e21*a + e22*b
+               cs(l) = cos_series(z(l))
+               sn(l) = sin_series(z(l))
             end do
          else
             do l = 1, size(c0)
-               call exp_functions(z(l), c, s, ls)
-               e11 = c + s*ga(l); e12 = s*gb(l)
-               e21 = s*gc(l); e22 = c - s*ga(l)
-               a = p11(l); b = p21(l)
-               p11(l) = e11*a + e12*b
-               p21(l) = e21*a + e22*b
-               a = p12(l); b = p22(l)
-               p12(l) = e11*a + e12*b
-               p22(l) = e21*a + e22*b
+               call exp_functions(z(l), cs(l), sn(l), ls)
                log_scale(l) = log_scale(l) + ls
             end do
          end if
+         do l = 1, size(c0)
+            e11 = cs(l) + sn(l)*ga(l); e12 = sn(l)*gb(l)
+            e21 = sn(l)*gc(l); e22 = cs(l) - sn(l)*ga(l)
+            a = p11(l); b = p21(l)
+            p11(l) = e11*a + e12*b
+            p21(l) = e21*a + e22*b
+            a = p12(l); b = p22(l)
+            p12(l) = e11*a + e12*b
+            p22(l) = e21*a + e22*b
+         end do
          if (iand(i, 7) == 0 .or. i == mesh%n_steps) then
             do l = 1, size(c0)
                big = max(abs(p11(l)), abs(p12(l)), abs(p21(l)), abs(p22(l)))

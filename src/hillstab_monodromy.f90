@@ -210,38 +210,26 @@ contains
             end if
          end if
          ! any other batch error (a point out of range, a tolerance not met) is located point by point
-         if (allocated(error)) then
-            deallocate (error)
-            do j = 1, size(betas)
-               point = model
-               point%beta = betas(j)
-               call monodromy_trace(point, method, traces(j), point_error)
-               if (allocated(point_error)) then
-                  if (point_error%code == err_accuracy) then
-                     if (present(inaccurate)) inaccurate(j) = .true.
-                     cycle
-                  end if
-                  failed(j) = .true.
-                  if (.not. allocated(error)) call move_alloc(point_error, error)
-               end if
-            end do
+         if (.not. allocated(error)) then
+            if (present(stats)) stats = work
+            return
          end if
-      else
-         do j = 1, size(betas)
-            point = model
-            point%beta = betas(j)
-            call monodromy_trace(point, method, traces(j), point_error, part)
-            call add_work(work, part)
-            if (allocated(point_error)) then
-               if (point_error%code == err_accuracy) then
-                  if (present(inaccurate)) inaccurate(j) = .true.
-                  cycle
-               end if
-               failed(j) = .true.
-               if (.not. allocated(error)) call move_alloc(point_error, error)
-            end if
-         end do
+         deallocate (error)
       end if
+      do j = 1, size(betas)
+         point = model
+         point%beta = betas(j)
+         call monodromy_trace(point, method, traces(j), point_error, part)
+         call add_work(work, part)
+         if (allocated(point_error)) then
+            if (point_error%code == err_accuracy) then
+               if (present(inaccurate)) inaccurate(j) = .true.
+               cycle
+            end if
+            failed(j) = .true.
+            if (.not. allocated(error)) call move_alloc(point_error, error)
+         end if
+      end do
       if (present(stats)) stats = work
    end subroutine monodromy_trace_batch
 end module hillstab_monodromy
