@@ -307,23 +307,33 @@ contains
          real(wp), intent(inout) :: floors(:)
          logical, intent(in), optional :: selected(:)
          logical :: todo(size(n))
-         integer, allocatable :: group(:)
-         type(trace_t), allocatable :: lane_results(:)
-         real(wp), allocatable :: lane_floors(:)
-         integer :: i, k, index
+         integer :: order(size(n)), group_c(size(n))
+         real(wp) :: lane_c0(size(n)), lane_c1(size(n)), lane_floors(size(n))
+         type(trace_t) :: lane_results(size(n))
+         integer :: i, k, index, m_group
          todo = .true.
          if (present(selected)) todo = selected
+         ! gather each group of equal n into contiguous lanes (no allocation: this runs
+         ! once per pass of every batch)
          do i = 1, size(n)
             if (.not. todo(i)) cycle
-            group = pack([(k, k=1, size(n))], n == n(i) .and. todo)
-            todo(group) = .false.
-            allocate (lane_results(size(group)), lane_floors(size(group)))
+            m_group = 0
+            do k = i, size(n)
+               if (todo(k) .and. n(k) == n(i)) then
+                  m_group = m_group + 1
+                  order(m_group) = k
+                  todo(k) = .false.
+               end if
+            end do
+            group_c(1:m_group) = order(1:m_group)
+            lane_c0(1:m_group) = c0s(group_c(1:m_group))
+            lane_c1(1:m_group) = c1s(group_c(1:m_group))
             call get_mesh(cache, kind, alpha, n(i), index)
-            call lane_traces(cache%meshes(index), c0s(group), c1s(group), lane_results, lane_floors)
-            result(group) = lane_results
-            floors(group) = lane_floors
-            deallocate (lane_results, lane_floors)
-            call count_steps(stats, size(group)*n(i))
+            call lane_traces(cache%meshes(index), lane_c0(1:m_group), lane_c1(1:m_group), lane_results(1:m_group), &
+               lane_floors(1:m_group))
+            result(group_c(1:m_group)) = lane_results(1:m_group)
+            floors(group_c(1:m_group)) = lane_floors(1:m_group)
+            call count_steps(stats, m_group*n(i))
          end do
       end subroutine traces_in_lanes
    end subroutine trace_auto_batch
@@ -576,6 +586,7 @@ contains
       real(wp), parameter :: c_d2 = -sqrt15/3.0_wp, c_d3 = -10.0_wp/3.0_wp, c_60 = 1.0_wp/30.0_wp
       real(wp), parameter :: c_240 = 1.0_wp/240.0_wp, c_120 = 1.0_wp/120.0_wp, c_12 = 1.0_wp/12.0_wp
       real(wp), dimension(size(c0)) :: p11, p12, p21, p22, log_scale, ga, gb, gc, z, log_peak, peak, cs, sn
+      real(wp) :: z_max
       real(wp) :: h, w1, w2, w3, q1, q2, q3, d2, d3, x3, y1, y2, y3, c, s, ls, e11, e12, e21, e22, a, b, big
       real(wp) :: phi(2, 2)
       integer :: i, l, shift
@@ -602,7 +613,17 @@ contains
             gc(l) = -h*q2 + c_12*d3 + c_120*(x3*y1 - h*d2*y3)
             z(l) = -(ga(l)*ga(l) + gb(l)*gc(l))
          end do
-         if (maxval(abs(z)) <= 0.5_wp) then
+         z_max = maxval(abs(z))
+         if (z_max <= 0.02_wp) then
+            ! the usual case (steps short against the local oscillation): degree 5 is enough
+            ! (truncation below 1.3e-19)
+            do l = 1, size(c0)
+               cs(l) = 1.0_wp + z(l)*(-1.0_wp/2 + z(l)*(1.0_wp/24 + z(l)*(-1.0_wp/720 + z(l)*(1.0_wp/40320 &
+                       + z(l)*(-1.0_wp/3628800)))))
+               sn(l) = 1.0_wp + z(l)*(-1.0_wp/6 + z(l)*(1.0_wp/120 + z(l)*(-1.0_wp/5040 + z(l)*(1.0_wp/362880 &
+                       + z(l)*(-1.0_wp/39916800)))))
+            end do
+         else if (z_max <= 0.5_wp) then
             do l = 1, size(c0)
                cs(l) = cos_series(z(l))
                sn(l) = sin_series(z(l))

@@ -148,11 +148,14 @@ contains
    !> One chart row: alpha beta S stable lambda_max mu log10_abs_S overflow physical [stable_paper].
    !> |S| > 1e300 is written as ±1e300 with overflow = 1 (log10_abs_S stays exact);
    !> lambda_max is clamped the same way; flags are 1 or 0.
-   pure function chart_line(alpha, beta, f, damped, physical) result(line)
+   pure function chart_line(alpha, beta, f, damped, physical, alpha_text, beta_text) result(line)
       real(wp), intent(in) :: alpha, beta
       type(floquet_t), intent(in) :: f  !! Floquet data of the point
       logical, intent(in) :: damped     !! write the stable_paper column
       logical, intent(in) :: physical   !! (α, β) inside the physical domain
+      !> format_es(alpha, 16), format_es(beta, 16) when already at hand (a chart formats
+      !> each grid value once, not once per point)
+      character(len=23), intent(in), optional :: alpha_text, beta_text
       character(len=chart_line_length) :: line
       real(wp) :: s, lambda_max, log10_abs_s, mu
       logical :: overflow
@@ -166,9 +169,19 @@ contains
       ! hand formatting (hillstab_format): Fortran's formatted write would cost more than
       ! computing the point with method auto
       pos = 0
-      call put_es(line, pos, alpha, 16)
+      if (present(alpha_text)) then
+         line(1:23) = alpha_text
+         pos = 23
+      else
+         call put_es(line, pos, alpha, 16)
+      end if
       call put_blank(line, pos)
-      call put_es(line, pos, beta, 16)
+      if (present(beta_text)) then
+         line(pos + 1:pos + 23) = beta_text
+         pos = pos + 23
+      else
+         call put_es(line, pos, beta, 16)
+      end if
       call put_blank(line, pos)
       call put_es(line, pos, s, 16)
       call put_flag(line, pos, f%stable)

@@ -25,6 +25,7 @@ module hillstab_tasks
       batch_plan_t, prepare_batch
    use hillstab_scene, only: scene_t, read_scene, scene_namelist, task_chart, task_points, task_coefficient, &
       task_name, grid_value, real_text, integer_text
+   use hillstab_format, only: format_es
    use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, &
       write_text, chart_columns, chart_line, chart_line_length, real_columns
    use, intrinsic :: iso_fortran_env, only: error_unit
@@ -234,6 +235,7 @@ contains
       logical :: damped, outside
       real(wp) :: alpha, beta
       real(wp), allocatable :: all_betas(:)
+      character(len=23), allocatable :: beta_texts(:)
       type(batch_plan_t) :: plan
       logical :: stopped
       character(len=chart_line_length), allocatable :: block_lines(:, :, :)
@@ -259,6 +261,10 @@ contains
          return
       end if
       all_betas = [(grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j), j=1, n_beta)]
+      allocate (beta_texts(n_beta))
+      do j = 1, n_beta
+         beta_texts(j) = format_es(all_betas(j), 16)
+      end do
       outside = .not. (in_physical_domain(scene%chart%alpha_min, scene%chart%beta_min) .and. &
                        in_physical_domain(scene%chart%alpha_max, scene%chart%beta_max))
       call write_header(file, chart_header(scene, outside), chart_columns(damped), error)
@@ -275,7 +281,7 @@ contains
          ! formatting on every core) into one of two buffers, while one thread writes the
          ! previous group from the other buffer; a group holds a few rows per thread, so
          ! memory stays bounded however large the chart
-         group = 4*max_threads()
+         group = 8*max_threads()
          n_groups = (n_alpha + group - 1)/group
          allocate (block_lines(n_beta, group, 0:1), block_failed(n_beta, group, 0:1), &
                    block_inaccurate(n_beta, group, 0:1))
@@ -297,7 +303,8 @@ contains
                do i = (g - 1)*group + 1, min(n_alpha, g*group)
                   alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i)
                   call compute_row(scene, alpha, all_betas, damped, block_lines(:, i - (g - 1)*group, mod(g, 2)), &
-                     block_failed(:, i - (g - 1)*group, mod(g, 2)), block_inaccurate(:, i - (g - 1)*group, mod(g, 2)))
+                     block_failed(:, i - (g - 1)*group, mod(g, 2)), block_inaccurate(:, i - (g - 1)*group, mod(g, 2)), &
+                     beta_texts=beta_texts)
                end do
                !$omp end do
             else
@@ -318,7 +325,7 @@ contains
                first = (c - 1)*chunk + 1
                last = min(n_beta, c*chunk)
                call compute_row(scene, alpha, all_betas(first:last), damped, lines(first:last), failed(first:last), &
-                  inaccurate(first:last), plan)
+                  inaccurate(first:last), plan, beta_texts(first:last))
             end do
             !$omp end parallel do
             call finish_row(i, alpha, lines, failed, inaccurate)
@@ -368,7 +375,7 @@ contains
    end subroutine run_chart
 
    !> Lines (and failure flags) of the chart points (α, β_j) of one row or part of a row.
-   subroutine compute_row(scene, alpha, betas, damped, lines, failed, inaccurate, plan)
+   subroutine compute_row(scene, alpha, betas, damped, lines, failed, inaccurate, plan, beta_texts)
       type(scene_t), intent(in) :: scene
       real(wp), intent(in) :: alpha, betas(:)
       logical, intent(in) :: damped
@@ -376,17 +383,25 @@ contains
       logical, intent(out) :: failed(:)
       logical, intent(out) :: inaccurate(:)  !! computed only to the round-off level (err_accuracy)
       type(batch_plan_t), intent(in), optional :: plan  !! prepared for the whole row
+      character(len=23), intent(in), optional :: beta_texts(:)  !! format_es(betas, 16), made once per chart
       type(trace_t) :: traces(size(betas))
+      character(len=23) :: alpha_text
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
       type(hill_model_t) :: row
       integer :: j
       row = hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon)
       call monodromy_trace_batch(row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate)
+      alpha_text = format_es(alpha, 16)
       do j = 1, size(betas)
          if (failed(j)) cycle
          f = floquet_from_trace(traces(j), scene%epsilon)
-         lines(j) = chart_line(alpha, betas(j), f, damped, in_physical_domain(alpha, betas(j)))
+         if (present(beta_texts)) then
+            lines(j) = chart_line(alpha, betas(j), f, damped, in_physical_domain(alpha, betas(j)), alpha_text, &
+                                  beta_texts(j))
+         else
+            lines(j) = chart_line(alpha, betas(j), f, damped, in_physical_domain(alpha, betas(j)), alpha_text)
+         end if
       end do
    end subroutine compute_row
 
