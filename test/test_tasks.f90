@@ -34,6 +34,7 @@ contains
          new_unittest("coefficient_columns", coefficient_columns), &
          new_unittest("damped_verdicts", damped_verdicts), &
          new_unittest("overflow_clamped", overflow_clamped), &
+         new_unittest("roundoff_limited_points_written", roundoff_limited_points_written), &
          new_unittest("repeat_from_output", repeat_from_output), &
          new_unittest("bad_input_touches_nothing", bad_input_touches_nothing), &
          new_unittest("unwritable_output", unwritable_output)])
@@ -317,6 +318,34 @@ contains
 
    !> Mathieu formula at β = −1e6: S1 = 2 cosh 2000 overflows; written as 1e300
    !> with overflow = 1 and log10|S| = 2000/ln 10; no Inf/NaN text anywhere.
+   !> A chart whose tolerance lies below the round-off level at some points (β = 0,
+   !> α → π², tolerance 1e-12, where S = 2 exactly) still runs and writes those points,
+   !> with S as good as double precision allows (the warning goes to stderr).
+   subroutine roundoff_limited_points_written(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out
+      character(len=1024), allocatable :: lines(:)
+      real(wp), allocatable :: rows(:, :)
+      integer :: n_blank
+      logical :: numeric
+      out = scratch_prefix("roundoff")
+      call run_text_scene("roundoff", [ &
+         padded("&scene method = 'auto', tolerance = 1e-12, output = '"//out//"' /"), &
+         padded("&chart alpha_min = 9.85, alpha_max = 9.86, n_alpha = 2, beta_min = 0, beta_max = 1, n_beta = 2 /")], &
+         error, written)
+      call check(ctx, .not. allocated(error), "chart runs")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call data_rows(lines, 9, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 4, "4 rows")
+      if (size(rows, 2) /= 4) return
+      ! β = 0 rows: S = 2 exactly (x = r(τ) is 2-periodic); round-off level ~1e-10 here
+      call check(ctx, rows(3, 1), 2.0_wp, abs=1.0e-8_wp, message="S at alpha 9.85, beta 0")
+      call check(ctx, rows(3, 3), 2.0_wp, abs=1.0e-8_wp, message="S at alpha 9.86, beta 0")
+      call delete_file(written)
+   end subroutine roundoff_limited_points_written
+
    subroutine overflow_clamped(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(error_t), allocatable :: error
