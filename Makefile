@@ -15,7 +15,7 @@ PREFIX ?= /usr/local
 DEBUG_FLAGS = -fcheck=all -ffpe-trap=invalid,zero,overflow -g -fbacktrace
 LIB_FLAGS = -O2 -fPIC -fopenmp -fimplicit-none
 LIBS = -lgsl -lgslcblas -llapack -lblas
-FC_VERSION := $(shell $(FC) -dumpversion 2>/dev/null)
+FC_VERSION = $(shell $(FC) -dumpversion 2>/dev/null)
 MOD_SUBDIR = hillstab/$(notdir $(FC))-$(FC_VERSION)
 LEGACY_DIR = build/legacy
 VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
