@@ -30,7 +30,7 @@ module hillstab_auto
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_stats, only: work_stats_t
    use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, check_model
-   use hillstab_transfer, only: transfer_functions, trace_t
+   use hillstab_transfer, only: transfer_functions, trace_t, trace_from_scaled
    implicit none
    private
    public :: trace_auto, trace_auto_batch, auto_initial_steps, auto_mesh_power, fixed_n_trace
@@ -365,20 +365,7 @@ contains
       type(trace_t) :: tr
       real(wp) :: c, s, log_scale
       call transfer_functions(4.0_wp*q, c, s, log_scale)   ! z = q h², h = 2
-      tr%value = 2.0_wp*c
-      tr%overflow = .false.
-      if (c == 0.0_wp) then
-         tr%log_abs = -huge(1.0_wp)
-         tr%value = 0.0_wp
-         return
-      end if
-      tr%log_abs = log(abs(2.0_wp*c)) + log_scale
-      if (tr%log_abs >= log_huge) then
-         tr%overflow = .true.
-         tr%value = sign(huge(1.0_wp), c)
-      else
-         tr%value = 2.0_wp*c*exp(log_scale)
-      end if
+      tr = trace_from_scaled(2.0_wp*c, log_scale)
    end function constant_trace
 
 
@@ -520,43 +507,6 @@ contains
               + z*(-1.0_wp/3628800 + z*(1.0_wp/479001600.0_wp + z*(-1.0_wp/87178291200.0_wp)))))))
    end subroutine small_angle
 
-   !> Φ(1) of the half period by Magnus-6 on `mesh` for q = c0 + c1 w, returned
-   !> with a log scale: Φ = e^{log_scale} phi.
-   pure subroutine half_period_auto(mesh, c0, c1, phi, log_scale)
-      type(mesh_t), intent(in) :: mesh
-      real(wp), intent(in) :: c0, c1
-      real(wp), intent(out) :: phi(2, 2), log_scale
-      real(wp) :: q1, q2, q3, h, ga, gb, gc, z, c, s, ls, e11, e12, e21, e22, p11, p21, big
-      integer :: i, shift
-      phi = reshape([1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], [2, 2])
-      log_scale = 0.0_wp
-      do i = 1, mesh%n_steps
-         h = mesh%h(i)
-         q1 = c0 + c1*mesh%w(1, i)
-         q2 = c0 + c1*mesh%w(2, i)
-         q3 = c0 + c1*mesh%w(3, i)
-         call magnus6_sl2(q1, q2, q3, h, ga, gb, gc)
-         z = -(ga*ga + gb*gc)
-         call exp_functions(z, c, s, ls)
-         e11 = c + s*ga; e12 = s*gb
-         e21 = s*gc; e22 = c - s*ga
-         p11 = phi(1, 1); p21 = phi(2, 1)
-         phi(1, 1) = e11*p11 + e12*p21
-         phi(2, 1) = e21*p11 + e22*p21
-         p11 = phi(1, 2); p21 = phi(2, 2)
-         phi(1, 2) = e11*p11 + e12*p21
-         phi(2, 2) = e21*p11 + e22*p21
-         log_scale = log_scale + ls
-         if (ls > 0.0_wp .or. iand(i, 7) == 0) then
-            big = maxval(abs(phi))
-            if (big > 2.0_wp**rescale_exponent .or. big < 2.0_wp**(-rescale_exponent)) then
-               shift = exponent(big)
-               phi = scale(phi, -shift)
-               log_scale = log_scale + shift*log(2.0_wp)
-            end if
-         end if
-      end do
-   end subroutine half_period_auto
 
    !> cos √z for |z| ≤ 0.5: Taylor polynomial of degree 10 (truncation below 5e-26).
    elemental real(wp) function cos_series(z) result(c)
@@ -587,8 +537,7 @@ contains
       real(wp), parameter :: c_240 = 1.0_wp/240.0_wp, c_120 = 1.0_wp/120.0_wp, c_12 = 1.0_wp/12.0_wp
       real(wp), dimension(size(c0)) :: p11, p12, p21, p22, log_scale, ga, gb, gc, z, log_peak, peak, cs, sn
       real(wp) :: z_max
-      real(wp) :: h, w1, w2, w3, q1, q2, q3, d2, d3, x3, y1, y2, y3, c, s, ls, e11, e12, e21, e22, a, b, big
-      real(wp) :: phi(2, 2)
+      real(wp) :: h, w1, w2, w3, q1, q2, q3, d2, d3, x3, y1, y2, y3, ls, e11, e12, e21, e22, a, b, big
       integer :: i, l, shift
       p11 = 1.0_wp; p12 = 0.0_wp; p21 = 0.0_wp; p22 = 1.0_wp
       log_scale = 0.0_wp
@@ -597,7 +546,9 @@ contains
       do i = 1, mesh%n_steps
          h = mesh%h(i)
          w1 = mesh%w(1, i); w2 = mesh%w(2, i); w3 = mesh%w(3, i)
-         ! generators of all lanes (magnus6_sl2 written out)
+         ! sixth-order Gauss–Legendre Magnus generators Ω = [[ga, gb], [gc, −ga]] of all lanes:
+         ! `magnus6_generator` of hillstab_magnus (Blanes, Casas, Oteo, Ros, Phys. Rep. 470 (2009) §5)
+         ! written out in components (α₂, α₃ have only a lower-left entry) so that the loop vectorises
          do l = 1, size(c0)
             q1 = c0(l) + c1(l)*w1
             q2 = c0(l) + c1(l)*w2
@@ -663,8 +614,8 @@ contains
          end if
       end do
       do l = 1, size(c0)
-         phi(1, 1) = p11(l); phi(2, 1) = p21(l); phi(1, 2) = p12(l); phi(2, 2) = p22(l)
-         traces(l) = trace_from_half_period(phi, log_scale(l))
+         ! S = 2(u v' + u' v) from Φ(1) = [[u, v], [u', v']] (BRIEF §4)
+         traces(l) = trace_from_scaled(2.0_wp*(p11(l)*p22(l) + p21(l)*p12(l)), 2.0_wp*log_scale(l))
          if (peak(l) > 0.0_wp) log_peak(l) = max(log_peak(l), log(peak(l)) + 2.0_wp*log_scale(l))
          floors(l) = roundoff_floor(traces(l), log_peak(l), mesh%n_steps)
       end do
@@ -685,64 +636,8 @@ contains
       floor = exp(min(log_floor, log_huge))
    end function roundoff_floor
 
-   !> S = 2(u v' + u' v) and its log magnitude from Φ(1) = e^{log_scale} phi.
-   pure function trace_from_half_period(phi, log_scale) result(tr)
-      real(wp), intent(in) :: phi(2, 2), log_scale
-      type(trace_t) :: tr
-      real(wp) :: t
-      t = 2.0_wp*(phi(1, 1)*phi(2, 2) + phi(2, 1)*phi(1, 2))
-      tr%overflow = .false.
-      if (t == 0.0_wp) then
-         tr%value = 0.0_wp
-         tr%log_abs = -huge(1.0_wp)
-         return
-      end if
-      tr%log_abs = log(abs(t)) + 2.0_wp*log_scale
-      if (tr%log_abs >= log_huge) then
-         tr%overflow = .true.
-         tr%value = sign(huge(1.0_wp), t)
-      else
-         tr%value = t*exp(2.0_wp*log_scale)
-      end if
-   end function trace_from_half_period
 
-   !> S = 2(u v' + u' v) from Φ(1) = [[u, v], [u', v']] (BRIEF §4).
-   pure function half_period_trace(mesh, c0, c1) result(tr)
-      type(mesh_t), intent(in) :: mesh
-      real(wp), intent(in) :: c0, c1
-      type(trace_t) :: tr
-      real(wp) :: phi(2, 2), log_scale
-      call half_period_auto(mesh, c0, c1, phi, log_scale)
-      tr = trace_from_half_period(phi, log_scale)
-   end function half_period_trace
 
-   !> Sixth-order Gauss–Legendre Magnus generator Ω = [[a, b], [c, −a]] for
-   !> A = [[0, 1], [−q, 0]] from q at the three Gauss nodes (Blanes, Casas, Oteo,
-   !> Ros, Phys. Rep. 470 (2009) §5; same formula as `magnus6_generator` of
-   !> hillstab_magnus, written out in components: α₂, α₃ have only a lower-left entry).
-   pure subroutine magnus6_sl2(q1, q2, q3, h, ga, gb, gc)
-      real(wp), intent(in) :: q1, q2, q3, h
-      real(wp), intent(out) :: ga, gb, gc
-      real(wp), parameter :: c_d2 = -sqrt15/3.0_wp, c_d3 = -10.0_wp/3.0_wp, c_60 = 1.0_wp/30.0_wp
-      real(wp), parameter :: c_240 = 1.0_wp/240.0_wp, c_120 = 1.0_wp/120.0_wp, c_12 = 1.0_wp/12.0_wp
-      real(wp) :: d2, d3, x1, x2, x3, y1, y2, y3, hh
-      hh = h*h
-      ! α1 = [0, h, −h q2], α2 = [0, 0, d2], α3 = [0, 0, d3]
-      d2 = c_d2*h*(q3 - q1)
-      d3 = c_d3*h*((q3 - q2) + (q1 - q2))
-      ! X = −20 α1 − α3 + C1, C1 = [α1, α2] = [h d2, 0, 0]
-      x1 = h*d2
-      x2 = -20.0_wp*h
-      x3 = 20.0_wp*h*q2 - d3
-      ! Y = α2 + C2, C2 = −[α1, 2 α3 + C1]/60 = −[2 h d3, −2 h² d2, −2 h² q2 d2]/60
-      y1 = -c_60*h*d3
-      y2 = c_60*hh*d2
-      y3 = d2 + c_60*hh*q2*d2
-      ! Ω = α1 + α3/12 + [X, Y]/240, [x, y] = (x2 y3 − x3 y2, 2(x1 y2 − x2 y1), 2(x3 y1 − x1 y3))
-      ga = c_240*(x2*y3 - x3*y2)
-      gb = h + c_120*(x1*y2 - x2*y1)
-      gc = -h*q2 + c_12*d3 + c_120*(x3*y1 - x1*y3)
-   end subroutine magnus6_sl2
 
    !> C = cos √z, S = sin √z/√z: Taylor polynomials of degree 5 for |z| ≤ 0.01 and 7 for
    !> |z| ≤ 0.1 (truncation below 3e-21 relative), otherwise the overflow-safe
@@ -772,11 +667,11 @@ contains
       real(wp), intent(in) :: alpha, beta
       real(wp) :: s
       type(mesh_t) :: mesh
-      type(trace_t) :: tr
-      real(wp) :: c0, c1
+      type(trace_t) :: tr(1)
+      real(wp) :: c0, c1, floor(1)
       call coefficients(kind, alpha, beta, 0.0_wp, c0, c1)
       call build_mesh(kind, alpha, n, mesh)
-      tr = half_period_trace(mesh, c0, c1)
-      s = tr%value
+      call lane_traces(mesh, [c0], [c1], tr, floor)
+      s = tr(1)%value
    end function fixed_n_trace
 end module hillstab_auto

@@ -10,8 +10,8 @@
 !> but it stays real and finite where the paper's radicands turn negative
 !> (β < α, β + α < 0) and at β = ±α where the paper's form is 0/0.
 module hillstab_formulas
-   use hillstab_kinds, only: wp, pi2, log_huge
-   use hillstab_transfer, only: transfer_functions, trace_t
+   use hillstab_kinds, only: wp, pi2
+   use hillstab_transfer, only: transfer_functions, trace_t, trace_from_scaled
    implicit none
    private
    public :: trace_two_segment_paper, trace_damped_paper, trace_mathieu_two_segment, trace_two_piece
@@ -27,17 +27,7 @@ contains
       call transfer_functions(q1, c1, s1, l1)
       call transfer_functions(q2, c2, s2, l2)
       t = 2.0_wp*c1*c2 - (q1 + q2)*s1*s2
-      if (t == 0.0_wp) then
-         tr = trace_t(0.0_wp, -huge(1.0_wp), .false.)
-         return
-      end if
-      tr%log_abs = log(abs(t)) + l1 + l2
-      tr%overflow = tr%log_abs >= log_huge
-      if (tr%overflow) then
-         tr%value = sign(huge(1.0_wp), t)
-      else
-         tr%value = t*exp(l1 + l2)
-      end if
+      tr = trace_from_scaled(t, l1 + l2)
    end function trace_two_piece
 
    !> The paper's eq. (37): 2-segment trace of the undamped elastic Hill equation.

@@ -42,7 +42,7 @@ module hillstab_gsl
    use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
    use hillstab_stats, only: work_stats_t, add_work
    use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
-   use hillstab_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of
+   use hillstab_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
    implicit none
    private
    public :: mathieu_a, mathieu_b, mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b, &
@@ -375,26 +375,12 @@ contains
       real(wp), intent(out) :: log_condition
       type(work_stats_t), intent(out) :: stats
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: y(2, 2), log_scale(2), log_peak(2), log_entry(2, 2), top
-      real(wp) :: u, du, v, dv
+      real(wp) :: y(2, 2), log_scale(2), log_peak(2)
       type(trace_t) :: tr
       log_condition = 0.0_wp
       call integrate_pair(model, 1.0_wp, eps, y, log_scale, log_peak, stats, error)
       if (allocated(error)) return
-      u = y(1, 1); du = y(2, 1); v = y(1, 2); dv = y(2, 2)
-      ! the diagonal carries the scales of u·v, the corners those of v·v and u·u
-      m%m(1, 1) = u*dv + du*v
-      m%m(2, 2) = m%m(1, 1)
-      m%m(1, 2) = 2.0_wp*v*dv
-      m%m(2, 1) = 2.0_wp*u*du
-      log_entry(1, 1) = log_scale(1) + log_scale(2)
-      log_entry(2, 2) = log_entry(1, 1)
-      log_entry(1, 2) = 2.0_wp*log_scale(2)
-      log_entry(2, 1) = 2.0_wp*log_scale(1)
-      top = maxval(log_entry)
-      m%m = m%m*exp(max(log_entry - top, -log_huge))
-      m%log_scale = top
-      call normalize_scaled(m)
+      m = monodromy_from_half_period(y, log_scale(1), log_scale(2))
       tr = trace_of(m)
       log_condition = sum(log_peak) - max(0.0_wp, tr%log_abs)
    end subroutine half_period_monodromy

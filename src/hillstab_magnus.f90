@@ -39,7 +39,7 @@ module hillstab_magnus
    use hillstab_stats, only: work_stats_t
    use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
    use hillstab_transfer, only: scaled_matrix_t, scaled_identity, transfer_functions, multiply_matrix, &
-      normalize_scaled, trace_t, trace_of
+      normalize_scaled, trace_t, trace_of, monodromy_from_half_period
    implicit none
    private
    public :: monodromy_magnus, trace_magnus, monodromy_magnus_uniform, half_period_magnus_uniform
@@ -221,22 +221,6 @@ contains
       end do
    end function uniform_product
 
-   !> Full-period monodromy from the half-period propagator Φ(1) = [[u, v], [u', v']]
-   !> of an even coefficient: M = [[u v' + u' v, 2 v v'], [2 u u', u v' + u' v]]
-   !> (BRIEF §4). The log scale doubles because M is quadratic in Φ.
-   pure function monodromy_from_half_period(phi) result(m)
-      type(scaled_matrix_t), intent(in) :: phi
-      type(scaled_matrix_t) :: m
-      real(wp) :: u, du, v, dv
-      u = phi%m(1, 1); du = phi%m(2, 1)
-      v = phi%m(1, 2); dv = phi%m(2, 2)
-      m%m(1, 1) = u*dv + du*v
-      m%m(2, 2) = m%m(1, 1)
-      m%m(1, 2) = 2.0_wp*v*dv
-      m%m(2, 1) = 2.0_wp*u*du
-      m%log_scale = 2.0_wp*phi%log_scale
-      call normalize_scaled(m)
-   end function monodromy_from_half_period
 
    !> |S_a − S_b| / max(1, |S_a|) for two scaled matrices, without forming values
    !> that could overflow.

@@ -23,7 +23,7 @@ module hillstab_monodromy_rk
    use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
    use hillstab_stats, only: work_stats_t, add_work
    use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
-   use hillstab_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of
+   use hillstab_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
    use hillstab_rk, only: rk_options_t, rk_step_t, rk_integrate, rk_dopri5, rk_dop853
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
@@ -65,7 +65,7 @@ contains
       integer, intent(in), optional :: method  !! rk_dop853 (default) or rk_dopri5
       type(rk_options_t) :: options
       type(work_stats_t) :: part
-      real(wp) :: t, y(4), h_next, log_u, log_v, log_common, a, b, c
+      real(wp) :: t, y(4), h_next, log_u, log_v
       integer :: e
       character(len=80) :: buffer
 
@@ -113,17 +113,7 @@ contains
          options%h_initial = abs(h_next)
       end do
 
-      ! entries of M carry the scales e^{log_u + log_v}, e^{2 log_v}, e^{2 log_u}
-      a = y(1)*y(4) + y(2)*y(3)
-      b = 2.0_wp*y(3)*y(4)
-      c = 2.0_wp*y(1)*y(2)
-      log_common = 2.0_wp*max(log_u, log_v)
-      m%m(1, 1) = a*exp(log_u + log_v - log_common)
-      m%m(2, 2) = m%m(1, 1)
-      m%m(1, 2) = b*exp(2.0_wp*log_v - log_common)
-      m%m(2, 1) = c*exp(2.0_wp*log_u - log_common)
-      m%log_scale = log_common
-      call normalize_scaled(m)
+      m = monodromy_from_half_period(reshape(y, [2, 2]), log_u, log_v)
       if (.not. (all(ieee_is_finite(m%m)) .and. ieee_is_finite(m%log_scale))) then
          call set_error(error, err_integration, "monodromy_rk: non-finite monodromy")
          m = scaled_matrix_t()

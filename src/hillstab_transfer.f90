@@ -19,7 +19,15 @@ module hillstab_transfer
    private
    public :: transfer_matrix, transfer_functions, scaled_matrix_t, scaled_identity, scaled_from_matrix
    public :: multiply_transfer, multiply_scaled, multiply_matrix, normalize_scaled
-   public :: trace_t, trace_of, trace_from_value, matrix_of, determinant, determinant_of
+   public :: trace_t, trace_of, trace_from_value, trace_from_scaled, matrix_of, determinant, determinant_of
+   public :: monodromy_from_half_period
+
+   !> Full-period monodromy of an even coefficient from the half-period propagator
+   !> Φ(1) = [[u, v], [u', v']] (BRIEF §4): M = [[u v' + u' v, 2 v v'], [2 u u', u v' + u' v]].
+   interface monodromy_from_half_period
+      module procedure monodromy_from_half_period_scaled
+      module procedure monodromy_from_half_period_columns
+   end interface monodromy_from_half_period
 
    !> 2×2 matrix M = exp(log_scale) · m, m normalized so that max |m_ij| = 1.
    type :: scaled_matrix_t
@@ -154,21 +162,56 @@ contains
    pure function trace_of(a) result(tr)
       type(scaled_matrix_t), intent(in) :: a
       type(trace_t) :: tr
-      real(wp) :: t
-      t = a%m(1, 1) + a%m(2, 2)
+      tr = trace_from_scaled(a%m(1, 1) + a%m(2, 2), a%log_scale)
+   end function trace_of
+
+   !> The trace t·e^{log_scale}: its value, ln|·| and the overflow flag (value clamped to
+   !> ±huge when it does not fit).
+   elemental function trace_from_scaled(t, log_scale) result(tr)
+      real(wp), intent(in) :: t          !! mantissa
+      real(wp), intent(in) :: log_scale  !! natural logarithm of the scale factor
+      type(trace_t) :: tr
       if (t == 0.0_wp) then
          tr = trace_t(0.0_wp, -huge(1.0_wp), .false.)
          return
       end if
-      tr%log_abs = log(abs(t)) + a%log_scale
+      tr%log_abs = log(abs(t)) + log_scale
       if (tr%log_abs < log_huge) then
-         tr%value = t*exp(a%log_scale)
+         tr%value = t*exp(log_scale)
          tr%overflow = .false.
       else
          tr%value = sign(huge(1.0_wp), t)
          tr%overflow = .true.
       end if
-   end function trace_of
+   end function trace_from_scaled
+
+   !> monodromy_from_half_period for Φ(1) held as one scaled matrix. The scale doubles:
+   !> M is quadratic in Φ.
+   pure function monodromy_from_half_period_scaled(phi) result(m)
+      type(scaled_matrix_t), intent(in) :: phi
+      type(scaled_matrix_t) :: m
+      m = monodromy_from_half_period_columns(phi%m, phi%log_scale, phi%log_scale)
+   end function monodromy_from_half_period_scaled
+
+   !> monodromy_from_half_period for Φ(1) = [[u, v], [u', v']] whose columns carry their own
+   !> scales (u, u' times e^{log_u}; v, v' times e^{log_v}), as integrators that rescale
+   !> each solution separately produce them.
+   pure function monodromy_from_half_period_columns(phi, log_u, log_v) result(m)
+      real(wp), intent(in) :: phi(2, 2)
+      real(wp), intent(in) :: log_u, log_v
+      type(scaled_matrix_t) :: m
+      real(wp) :: u, du, v, dv, top
+      u = phi(1, 1); du = phi(2, 1)
+      v = phi(1, 2); dv = phi(2, 2)
+      ! the diagonal carries e^{log_u + log_v}, the corners e^{2 log_v} and e^{2 log_u}
+      top = 2.0_wp*max(log_u, log_v)
+      m%m(1, 1) = (u*dv + du*v)*exp(log_u + log_v - top)
+      m%m(2, 2) = m%m(1, 1)
+      m%m(1, 2) = 2.0_wp*v*dv*exp(2.0_wp*log_v - top)
+      m%m(2, 1) = 2.0_wp*u*du*exp(2.0_wp*log_u - top)
+      m%log_scale = top
+      call normalize_scaled(m)
+   end function monodromy_from_half_period_columns
 
    !> A finite trace value as a trace_t.
    elemental function trace_from_value(s) result(tr)
