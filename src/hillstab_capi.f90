@@ -15,8 +15,8 @@ module hillstab_capi
    use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
    use hillstab_transfer, only: trace_t
    use hillstab_formulas, only: trace_damped_paper
-   use hillstab_legacy, only: hseval
-   use hillstab_monodromy, only: method_t
+   use hillstab_floquet, only: floquet_t, floquet_from_trace
+   use hillstab_monodromy, only: method_t, monodromy_trace
    implicit none
    private
    public :: hillstab_c_coefficient, hillstab_c_trace, hillstab_c_floquet, hillstab_c_trace_paper, &
@@ -61,7 +61,7 @@ contains
       integer(c_int) :: status
       real(c_double) :: log_modulus(2), floquet_exponent
       integer(c_int) :: stable, stable_paper
-      call hseval(hill_model_t(int(model), real(alpha, wp), real(beta, wp), real(epsilon, wp)), &
+      call evaluate(hill_model_t(int(model), real(alpha, wp), real(beta, wp), real(epsilon, wp)), &
          make_method(method, n_segments, sampling, tolerance), trace, log_abs_trace, overflow, &
          log_modulus, floquet_exponent, stable, stable_paper, status)
    end function hillstab_c_trace
@@ -78,24 +78,50 @@ contains
       integer(c_int) :: status
       real(c_double) :: log_abs_trace
       integer(c_int) :: overflow
-      call hseval(hill_model_t(int(model), real(alpha, wp), real(beta, wp), real(epsilon, wp)), &
+      call evaluate(hill_model_t(int(model), real(alpha, wp), real(beta, wp), real(epsilon, wp)), &
          make_method(method, n_segments, sampling, tolerance), trace, log_abs_trace, overflow, &
          log_moduli, floquet_exponent, stable, stable_paper, status)
    end function hillstab_c_floquet
+
+   !> Everything the C functions return: trace S, ln|S|, overflow flag, ln|λ| of both
+   !> multipliers (largest first), exponent μ, verdicts (|S₁| < 2 cosh ε; |S₁| ≤ 2);
+   !> status 0 or an error code, outputs untouched on error.
+   subroutine evaluate(model, method, s, logs, iovf, rlogm, mu, istab, ipaper, info)
+      type(hill_model_t), intent(in) :: model
+      type(method_t), intent(in) :: method
+      real(wp), intent(inout) :: s, logs, rlogm(2), mu
+      integer(c_int), intent(inout) :: iovf, istab, ipaper
+      integer(c_int), intent(out) :: info
+      type(trace_t) :: tr
+      type(floquet_t) :: f
+      type(error_t), allocatable :: error
+      call monodromy_trace(model, method, tr, error)
+      if (allocated(error)) then
+         info = int(error%code, c_int)
+         return
+      end if
+      f = floquet_from_trace(tr, model%epsilon)
+      s = tr%value
+      logs = tr%log_abs
+      iovf = 0
+      if (tr%overflow) iovf = 1
+      rlogm = f%log_modulus
+      mu = f%exponent
+      istab = 0
+      if (f%stable) istab = 1
+      ipaper = 0
+      if (f%stable_paper) ipaper = 1
+      info = 0
+   end subroutine evaluate
 
    !> The paper's closed form eq. (37)/(48) (ε = 0 gives eq. (37)); ±DBL_MAX on overflow.
    function hillstab_c_trace_paper(alpha, beta, epsilon) result(s) bind(C, name="hillstab_trace_paper")
       real(c_double), value, intent(in) :: alpha, beta, epsilon
       real(c_double) :: s
-      s = paper_value(real(alpha, wp), real(beta, wp), real(epsilon, wp))
-   end function hillstab_c_trace_paper
-
-   pure real(wp) function paper_value(alpha, beta, epsilon)
-      real(wp), intent(in) :: alpha, beta, epsilon
       type(trace_t) :: tr
-      tr = trace_damped_paper(alpha, beta, epsilon)
-      paper_value = tr%value
-   end function paper_value
+      tr = trace_damped_paper(real(alpha, wp), real(beta, wp), real(epsilon, wp))
+      s = tr%value
+   end function hillstab_c_trace_paper
 
    !> Copy a NUL-terminated description of `status` into `buffer` (at most `length` bytes).
    subroutine hillstab_c_error_message(status, buffer, length) bind(C, name="hillstab_error_message")

@@ -8,7 +8,6 @@
 !>       CALL HSTRACE(1, 3.7D0, 2.47D0, 0.0D0, 2, 256, 3, 1.0D-10, S, INFO)
 !>```
 module hillstab_legacy
-   use, intrinsic :: iso_c_binding, only: c_int
    use hillstab_kinds, only: wp
    use hillstab_error, only: error_t
    use hillstab_coefficient, only: hill_model_t
@@ -17,7 +16,7 @@ module hillstab_legacy
    use hillstab_monodromy, only: method_t, monodromy_trace
    implicit none
    private
-   public :: hstrace, hsfloq, hseval
+   public :: hstrace, hsfloq
 
 contains
 
@@ -65,36 +64,4 @@ contains
       if (f%stable) istab = 1
       info = 0
    end subroutine hsfloq
-
-   !> Everything at once, for wrappers (the C API): trace S, ln|S|, overflow flag IOVF,
-   !> ln|λ| of both multipliers RLOGM (largest first), exponent MU, verdicts ISTAB
-   !> (|S₁| < 2 cosh ε) and IPAPER (|S₁| ≤ 2); INFO = 0 or an error code, outputs
-   !> untouched on error.
-   subroutine hseval(model, method, s, logs, iovf, rlogm, mu, istab, ipaper, info)
-      type(hill_model_t), intent(in) :: model
-      type(method_t), intent(in) :: method
-      real(wp), intent(inout) :: s, logs, rlogm(2), mu
-      integer(c_int), intent(inout) :: iovf, istab, ipaper
-      integer(c_int), intent(out) :: info
-      type(trace_t) :: tr
-      type(floquet_t) :: f
-      type(error_t), allocatable :: error
-      call monodromy_trace(model, method, tr, error)
-      if (allocated(error)) then
-         info = int(error%code, c_int)
-         return
-      end if
-      f = floquet_from_trace(tr, model%epsilon)
-      s = tr%value
-      logs = tr%log_abs
-      iovf = 0
-      if (tr%overflow) iovf = 1
-      rlogm = f%log_modulus
-      mu = f%exponent
-      istab = 0
-      if (f%stable) istab = 1
-      ipaper = 0
-      if (f%stable_paper) ipaper = 1
-      info = 0
-   end subroutine hseval
 end module hillstab_legacy
