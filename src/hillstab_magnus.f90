@@ -43,7 +43,7 @@ module hillstab_magnus
    implicit none
    private
    public :: monodromy_magnus, trace_magnus, monodromy_magnus_uniform, half_period_magnus_uniform
-   public :: monodromy_from_half_period, magnus4_generator, magnus6_generator, sl2_commutator, sl2_matrix
+   public :: magnus4_generator, magnus6_generator, sl2_commutator, sl2_matrix
    public :: multiply_exp_sl2, magnus_step, relative_trace_difference
 
    !> Nodes of 2-point Gauss–Legendre on [0, 1]: 1/2 ∓ √3/6.

@@ -8,7 +8,7 @@ module test_magnus
    use hillstab_error, only: error_t, err_integration, err_invalid_parameter
    use hillstab_stats, only: work_stats_t
    use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu
-   use hillstab_transfer, only: scaled_matrix_t, trace_t, trace_of, determinant_of
+   use hillstab_transfer, only: scaled_matrix_t, trace_t, trace_of, determinant_of, monodromy_from_half_period
    use hillstab_magnus
    use hillstab_monodromy, only: monodromy_trace, method_t, method_magnus4, method_magnus6
    use test_reference, only: rk4_monodromy, value_of
