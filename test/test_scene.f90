@@ -16,6 +16,7 @@ module test_scene
    public :: collect_scene
    public :: scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text
    public :: padded, bad_case_t, bad_cases, bad_case_text, write_bad_points_files, delete_bad_points_files
+   public :: c_getpid
 
    !> One bad scene: its text (`@OUT@` stands for the output prefix, `@DIR@` for the
    !> scratch prefix of the points files), the group and variable the message must name.

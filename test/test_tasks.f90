@@ -10,18 +10,10 @@ module test_tasks
    use hillstab_tasks, only: run_scene_file
    use hillstab_testing
    use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text, &
-      bad_case_t, bad_cases, bad_case_text, write_bad_points_files, delete_bad_points_files
-   use, intrinsic :: iso_c_binding, only: c_int
+      bad_case_t, bad_cases, bad_case_text, write_bad_points_files, delete_bad_points_files, c_getpid
    implicit none
    private
    public :: collect_tasks
-
-   interface
-      function c_getpid() bind(C, name="getpid") result(pid)
-         import :: c_int
-         integer(c_int) :: pid
-      end function c_getpid
-   end interface
 
 contains
 
