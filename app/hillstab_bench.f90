@@ -20,8 +20,20 @@ program hillstab_bench
       real(wp) :: alpha, beta
    end type sample_t
 
+   abstract interface
+      !> Work to be timed.
+      subroutine timed_work()
+      end subroutine timed_work
+   end interface
+
    type(sample_t), allocatable :: samples(:)
    character(len=:), allocatable :: block_names
+   ! what the timed_* procedures run (internal procedures cannot nest, so the work to
+   ! time is described here before each seconds_per_call)
+   type(method_t) :: timed_method
+   type(hill_model_t) :: timed_model
+   type(trace_t), allocatable :: timed_traces(:)
+   integer(int64) :: timed_evaluations
    real(wp), allocatable :: truth(:)
    character(len=256) :: prefix, arg
    logical :: quick, chart_only
@@ -270,41 +282,109 @@ contains
       type(method_t), intent(in) :: method
       real(wp), intent(out) :: seconds, max_err, mean_err, evals
       logical, intent(out) :: ok
-      type(trace_t) :: tr
+      type(trace_t) :: traces(size(samples))
       type(error_t), allocatable :: error
       type(work_stats_t) :: work
-      integer(int64) :: t0, t1, rate, total_evals
-      integer :: k, repeats, r
-      real(wp) :: e
+      integer(int64) :: total_evals
+      integer :: k
       ok = .true.
-      max_err = 0.0_wp; mean_err = 0.0_wp; total_evals = 0
+      total_evals = 0
       do k = 1, size(samples)
-         call monodromy_trace(model_at(samples(k)), method, tr, error, work)
+         call monodromy_trace(model_at(samples(k)), method, traces(k), error, work)
          if (allocated(error)) then
             ok = .false.
             return
          end if
-         e = abs(tr%value - truth(k))/max(1.0_wp, abs(truth(k)))
-         max_err = max(max_err, e)
-         mean_err = mean_err + e/size(samples)
          total_evals = total_evals + work%n_evaluations
       end do
       evals = real(total_evals, wp)/size(samples)
-      repeats = 0
-      call system_clock(t0, rate)
+      call sample_errors(traces, max_err, mean_err)
+      timed_method = method
+      seconds = seconds_per_call(timed_all_points, 0.05_wp)/size(samples)
+   end subroutine measure
+
+   !> Timed work: every sample point by `timed_method`, point by point.
+   subroutine timed_all_points()
+      type(trace_t) :: tr
+      type(error_t), allocatable :: error
+      integer :: k
+      do k = 1, size(samples)
+         call monodromy_trace(model_at(samples(k)), timed_method, tr, error)
+      end do
+   end subroutine timed_all_points
+
+   !> Timed work: the sample's rows of constant α, each as one batch, by `timed_method`;
+   !> fills `timed_traces` and counts Q evaluations in `timed_evaluations`.
+   subroutine timed_all_rows()
+      logical :: failed(size(samples))
+      type(error_t), allocatable :: error
+      type(work_stats_t) :: work
+      integer :: first, last
+      timed_evaluations = 0
+      first = 1
+      do while (first <= size(samples))
+         last = first
+         do while (last < size(samples))
+            if (samples(last + 1)%alpha /= samples(first)%alpha) exit
+            last = last + 1
+         end do
+         call monodromy_trace_batch(model_at(samples(first)), samples(first:last)%beta, timed_method, &
+            timed_traces(first:last), failed(first:last), error, work)
+         timed_evaluations = timed_evaluations + work%n_evaluations
+         first = last + 1
+      end do
+   end subroutine timed_all_rows
+
+   !> Timed work: `timed_model` by `timed_method`.
+   subroutine timed_one_point()
+      type(trace_t) :: tr
+      type(error_t), allocatable :: error
+      call monodromy_trace(timed_model, timed_method, tr, error)
+   end subroutine timed_one_point
+
+   !> max and mean of |S − S_ref|/max(1, |S_ref|) over the sample.
+   subroutine sample_errors(traces, max_err, mean_err)
+      type(trace_t), intent(in) :: traces(:)
+      real(wp), intent(out) :: max_err, mean_err
+      real(wp) :: e(size(traces))
+      e = abs(traces%value - truth)/max(1.0_wp, abs(truth))
+      max_err = maxval(e)
+      mean_err = sum(e)/size(e)
+   end subroutine sample_errors
+
+   !> Wall time of one call of `run`, repeated (doubling) until the repeats take at
+   !> least `min_seconds`.
+   real(wp) function seconds_per_call(run, min_seconds) result(seconds)
+      procedure(timed_work) :: run
+      real(wp), intent(in) :: min_seconds
+      integer(int64) :: t0, t1, rate
+      integer :: r, repeats
+      repeats = 1
       do
-         do r = 1, max(1, repeats)
-            do k = 1, size(samples)
-               call monodromy_trace(model_at(samples(k)), method, tr, error)
-            end do
+         call system_clock(t0, rate)
+         do r = 1, repeats
+            call run()
          end do
          call system_clock(t1)
-         if (real(t1 - t0, wp)/rate >= 0.05_wp .or. repeats > 100000) exit
-         repeats = max(1, 2*repeats)
-         call system_clock(t0)
+         if (real(t1 - t0, wp)/rate >= min_seconds .or. repeats > 1000000) exit
+         repeats = 2*repeats
       end do
-      seconds = real(t1 - t0, wp)/rate/(max(1, repeats)*size(samples))
-   end subroutine measure
+      seconds = real(t1 - t0, wp)/rate/repeats
+   end function seconds_per_call
+
+   !> One line of the work-precision table (file and screen); the first line of a block
+   !> adds the block's name for the plot.
+   subroutine write_result(unit, name, setting, seconds, max_err, mean_err, evals, written)
+      integer, intent(in) :: unit
+      character(len=*), intent(in) :: name
+      real(wp), intent(in) :: setting, seconds, max_err, mean_err, evals
+      logical, intent(inout) :: written  !! a line of this block was written
+      if (.not. written) block_names = block_names//" "//name
+      written = .true.
+      write (unit, '(a,1x,es10.3,4(1x,es12.5))') name, setting, seconds, max_err, mean_err, evals
+      write (output_unit, '(a10,es12.2,f14.2,es12.2,es12.2,f12.1)') name, setting, 1.0e6_wp*seconds, max_err, &
+         mean_err, evals
+   end subroutine write_result
 
    subroutine report(unit, name, setting, method, written)
       integer, intent(in) :: unit
@@ -315,12 +395,7 @@ contains
       real(wp) :: seconds, max_err, mean_err, evals
       logical :: ok
       call measure(method, seconds, max_err, mean_err, evals, ok)
-      if (.not. ok) return
-      if (.not. written) block_names = block_names//" "//name
-      written = .true.
-      write (unit, '(a,1x,es10.3,4(1x,es12.5))') name, setting, seconds, max_err, mean_err, evals
-      write (output_unit, '(a10,es12.2,f14.2,es12.2,es12.2,f12.1)') name, setting, 1.0e6_wp*seconds, max_err, &
-         mean_err, evals
+      if (ok) call write_result(unit, name, setting, seconds, max_err, mean_err, evals, written)
    end subroutine report
 
    subroutine sweep_formula(unit)
@@ -362,54 +437,20 @@ contains
    subroutine sweep_rows(unit, quick)
       integer, intent(in) :: unit
       logical, intent(in) :: quick
-      integer :: p, k, first, last, repeats, r
-      real(wp) :: tol, max_err, mean_err, seconds, e
-      type(trace_t), allocatable :: traces(:)
-      logical, allocatable :: failed(:)
-      type(error_t), allocatable :: error
-      type(work_stats_t) :: work
-      integer(int64) :: t0, t1, rate, evals
+      integer :: p
+      real(wp) :: tol, max_err, mean_err, seconds, evals
       logical :: written
       written = .false.
-      allocate (traces(size(samples)), failed(size(samples)))
+      if (allocated(timed_traces)) deallocate (timed_traces)
+      allocate (timed_traces(size(samples)))
       do p = 3, 12, merge(3, 1, quick)
          tol = 10.0_wp**(-p)
-         evals = 0
-         repeats = 0
-         call system_clock(t0, rate)
-         do
-            do r = 1, max(1, repeats)
-               first = 1
-               do while (first <= size(samples))
-                  last = first
-                  do while (last < size(samples))
-                     if (samples(last + 1)%alpha /= samples(first)%alpha) exit
-                     last = last + 1
-                  end do
-                  call monodromy_trace_batch(model_at(samples(first)), samples(first:last)%beta, &
-                     method_t(method_auto, tolerance=tol), traces(first:last), failed(first:last), error, work)
-                  if (repeats == 0) evals = evals + work%n_evaluations
-                  first = last + 1
-               end do
-            end do
-            call system_clock(t1)
-            if (real(t1 - t0, wp)/rate >= 0.05_wp .or. repeats > 100000) exit
-            repeats = max(1, 2*repeats)
-            call system_clock(t0)
-         end do
-         seconds = real(t1 - t0, wp)/rate/(max(1, repeats)*size(samples))
-         max_err = 0.0_wp; mean_err = 0.0_wp
-         do k = 1, size(samples)
-            e = abs(traces(k)%value - truth(k))/max(1.0_wp, abs(truth(k)))
-            max_err = max(max_err, e)
-            mean_err = mean_err + e/size(samples)
-         end do
-         if (.not. written) block_names = block_names//" auto-rows"
-         written = .true.
-         write (unit, '(a,1x,es10.3,4(1x,es12.5))') "auto-rows", tol, seconds, max_err, mean_err, &
-            real(evals, wp)/size(samples)
-         write (output_unit, '(a10,es12.2,f14.2,es12.2,es12.2,f12.1)') "auto-rows", tol, 1.0e6_wp*seconds, max_err, &
-            mean_err, real(evals, wp)/size(samples)
+         timed_method = method_t(method_auto, tolerance=tol)
+         call timed_all_rows()
+         evals = real(timed_evaluations, wp)/size(samples)
+         seconds = seconds_per_call(timed_all_rows, 0.05_wp)/size(samples)
+         call sample_errors(timed_traces, max_err, mean_err)
+         call write_result(unit, "auto-rows", tol, seconds, max_err, mean_err, evals, written)
       end do
       if (written) write (unit, '(/)')
    end subroutine sweep_rows
@@ -450,22 +491,12 @@ contains
       type(trace_t) :: tr
       type(error_t), allocatable :: error
       type(work_stats_t) :: work
-      integer(int64) :: t0, t1, rate
-      integer :: r, repeats
       seconds = -1.0_wp; evals = -1.0_wp
       call monodromy_trace(model, method, tr, error, work)
       if (allocated(error)) return
       evals = real(work%n_evaluations, wp)
-      repeats = 1
-      do
-         call system_clock(t0, rate)
-         do r = 1, repeats
-            call monodromy_trace(model, method, tr, error)
-         end do
-         call system_clock(t1)
-         if (real(t1 - t0, wp)/rate >= 0.02_wp .or. repeats > 1000000) exit
-         repeats = 2*repeats
-      end do
-      seconds = real(t1 - t0, wp)/rate/repeats
+      timed_model = model
+      timed_method = method
+      seconds = seconds_per_call(timed_one_point, 0.02_wp)
    end subroutine time_point
 end program hillstab_bench
