@@ -11,6 +11,7 @@
 module hillstab
    use hillstab_kinds
    use hillstab_error
+   use hillstab_status
    use hillstab_stats
    use hillstab_coefficient
    use hillstab_transfer
