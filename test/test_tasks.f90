@@ -109,7 +109,8 @@ contains
       call check(ctx, written == out//"_chart.dat", "file name <output>_chart.dat")
       lines = read_lines(written)
       call check(ctx, index(lines(1), "# hillstab 0.1.0") == 1, "version first: "//trim(lines(1)))
-      call check(ctx, columns_line(lines) == "alpha beta S stable lambda_max mu log10_abs_S overflow physical", &
+      call check(ctx, columns_line(lines) == &
+                 "alpha beta S stable lambda_max mu log10_abs_S overflow physical error_estimate status", &
                  "exactly one columns line")
       call check(ctx, any(index(lines, "# &scene task = 'chart'") == 1), "effective &scene in the header")
       call check(ctx, any(index(lines, "# &chart alpha_min = 1.0, alpha_max = 9.0, n_alpha = 3") == 1), &
@@ -117,8 +118,8 @@ contains
       call check(ctx, any(index(lines, "leaves the physical domain") > 0), "outside-domain note")
       first_data = findloc(lines(:)(1:1) == "#", .false., dim=1)
       call check(ctx, all(lines(:first_data - 1)(1:1) == "#"), "header before data")
-      call data_rows(lines, 9, rows, n_blank, numeric)
-      call check(ctx, numeric, "every data line holds exactly 9 numbers")
+      call data_rows(lines, 11, rows, n_blank, numeric)
+      call check(ctx, numeric, "every data line holds exactly 11 numbers")
       call check(ctx, size(rows, 2) == 12, "3 x 4 rows")
       call check(ctx, n_blank == 2, "one blank line between the 3 alpha blocks")
       if (size(rows, 2) /= 12) return
@@ -130,6 +131,9 @@ contains
          call check(ctx, (rows(4, k) == 1.0_wp) .eqv. (abs(rows(3, k)) < 2.0_wp), "stable iff |S| < 2")
          call check(ctx, rows(9, k) == merge(1.0_wp, 0.0_wp, rows(2, k) > 0.0_wp .and. rows(2, k) < pi2), &
                     "physical flag")
+         ! segments gives no error estimate (it approximates Q, not the solution)
+         call check(ctx, rows(10, k) == -1.0_wp, "error_estimate -1: not estimated")
+         call check(ctx, rows(11, k) == 0.0_wp, "status 0")
       end do
       call delete_file(written)
    end subroutine chart_layout
@@ -152,7 +156,7 @@ contains
       call check(ctx, .not. allocated(error), "chart runs")
       if (allocated(error)) return
       lines = read_lines(written)
-      call data_rows(lines, 9, rows, n_blank, numeric)
+      call data_rows(lines, 11, rows, n_blank, numeric)
       call check(ctx, numeric .and. size(rows, 2) == 7 .and. n_blank == 0, "7 rows, one block")
       do k = 1, size(rows, 2)
          beta = -3.0_wp + 2.0_wp*(k - 1)
@@ -195,9 +199,10 @@ contains
       if (allocated(error)) return
       call check(ctx, written == out//"_points.dat", "file name <output>_points.dat")
       lines = read_lines(written)
-      call check(ctx, columns_line(lines) == "alpha beta S stable lambda_max mu log10_abs_S overflow physical", &
+      call check(ctx, columns_line(lines) == &
+                 "alpha beta S stable lambda_max mu log10_abs_S overflow physical error_estimate status", &
                  "same columns as the chart")
-      call data_rows(lines, 9, rows, n_blank, numeric)
+      call data_rows(lines, 11, rows, n_blank, numeric)
       call check(ctx, numeric .and. size(rows, 2) == 4, "one row per point")
       if (size(rows, 2) /= 4) return
       do k = 1, 4
@@ -291,9 +296,10 @@ contains
       if (allocated(error)) return
       lines = read_lines(written)
       call check(ctx, columns_line(lines) == &
-                 "alpha beta S stable lambda_max mu log10_abs_S overflow physical stable_paper", "10 columns")
-      call data_rows(lines, 10, rows, n_blank, numeric)
-      call check(ctx, numeric .and. size(rows, 2) == 33, "33 rows of 10 numbers")
+                 "alpha beta S stable lambda_max mu log10_abs_S overflow physical stable_paper error_estimate status", &
+                 "12 columns")
+      call data_rows(lines, 12, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 33, "33 rows of 12 numbers")
       n_differ = 0
       do k = 1, size(rows, 2)
          call check(ctx, (rows(4, k) == 1.0_wp) .eqv. (abs(rows(3, k)) < 2.0_wp*cosh(1.0_wp)), "correct verdict")
@@ -329,12 +335,21 @@ contains
       call check(ctx, .not. allocated(error), "chart runs")
       if (allocated(error)) return
       lines = read_lines(written)
-      call data_rows(lines, 9, rows, n_blank, numeric)
+      call data_rows(lines, 11, rows, n_blank, numeric)
       call check(ctx, numeric .and. size(rows, 2) == 4, "4 rows")
       if (size(rows, 2) /= 4) return
       ! β = 0 rows: S = 2 exactly (x = r(τ) is 2-periodic); round-off level ~1e-10 here
       call check(ctx, rows(3, 1), 2.0_wp, abs=1.0e-8_wp, message="S at alpha 9.85, beta 0")
       call check(ctx, rows(3, 3), 2.0_wp, abs=1.0e-8_wp, message="S at alpha 9.86, beta 0")
+      ! their status says round-off limited, with an error estimate above the tolerance that
+      ! does bound the error; the β = 1 rows meet the tolerance
+      call check(ctx, rows(11, 1) == 1.0_wp .and. rows(11, 3) == 1.0_wp, "status 1 at beta = 0")
+      call check(ctx, rows(10, 1) > 1.0e-12_wp .and. rows(10, 3) > 1.0e-12_wp, "estimate above the tolerance")
+      call check(ctx, abs(rows(3, 1) - 2.0_wp) <= 0.5_wp*rows(10, 1), "error within the estimate, alpha 9.85")
+      call check(ctx, abs(rows(3, 3) - 2.0_wp) <= 0.5_wp*rows(10, 3), "error within the estimate, alpha 9.86")
+      call check(ctx, rows(11, 2) == 0.0_wp .and. rows(11, 4) == 0.0_wp, "status 0 at beta = 1")
+      call check(ctx, rows(10, 2) <= 1.0e-12_wp .and. rows(10, 2) >= 0.0_wp .and. rows(10, 4) <= 1.0e-12_wp &
+                 .and. rows(10, 4) >= 0.0_wp, "estimate within the tolerance at beta = 1")
       call delete_file(written)
    end subroutine roundoff_limited_points_written
 
@@ -354,7 +369,7 @@ contains
       call check(ctx, .not. allocated(error), "chart runs")
       if (allocated(error)) return
       lines = read_lines(written)
-      call data_rows(lines, 9, rows, n_blank, numeric)
+      call data_rows(lines, 11, rows, n_blank, numeric)
       call check(ctx, numeric .and. size(rows, 2) == 2, "2 rows")
       if (size(rows, 2) /= 2) return
       call check(ctx, rows(3, 1), 1.0e300_wp, rel=1.0e-15_wp, message="S clamped")
