@@ -7,6 +7,7 @@
 !> - (4)  equilibrium length ρ = r0 + m g/k = r0 + g/ω²;
 !> - (15) radial motion r(t) = ρ − a cos ωt (so a < ρ: the mass never reaches the pivot);
 !> - (24) α = a π²/ρ, β = g π²/(ρ ω²), π τ = ω t; (23), (25) the Hill equation in τ;
+!> - (21) the Mathieu limit's ν = a r0 π²/ρ² = α (1 − β/π²);
 !> - (46) ε = κ π/ω.
 !>
 !> Back from (α, β, ε) one length or acceleration scale and ω are needed: with r0
@@ -31,7 +32,7 @@ module hillstab_units
    implicit none
    private
    public :: physical_t, standard_gravity
-   public :: equilibrium_length, physical_alpha, physical_beta, physical_epsilon, check_physical
+   public :: equilibrium_length, physical_alpha, physical_beta, physical_epsilon, physical_nu, check_physical
    public :: physical_from_dimensionless, rate_per_second, tau_from_time, time_from_tau
 
    !> Standard gravity (m/s²), the default of g.
@@ -68,13 +69,22 @@ contains
       physical_beta = pi2*sag/(p%r0 + sag)
    end function physical_beta
 
+   !> ν = a r0 π²/ρ², the amplitude of the Mathieu limit (21) q(τ) = β − ν cos πτ;
+   !> equal to α (1 − β/π²).
+   elemental real(wp) function physical_nu(p)
+      type(physical_t), intent(in) :: p  !! the pendulum (ω > 0, ρ > 0)
+      real(wp) :: rho
+      rho = equilibrium_length(p)
+      physical_nu = p%a*p%r0*pi2/(rho*rho)
+   end function physical_nu
+
    !> ε = κ π/ω, eq. (46).
    elemental real(wp) function physical_epsilon(p)
       type(physical_t), intent(in) :: p  !! the pendulum (ω > 0)
       physical_epsilon = p%kappa*pi/p%omega
    end function physical_epsilon
 
-   !> Check that a pendulum has a meaning: every value finite, ω > 0, r0 ≥ 0, g ≥ 0,
+   !> Check that a pendulum has a meaning: every value finite, ω > 0, r0 > 0, g ≥ 0,
    !> ρ > 0, 0 ≤ a < ρ (eq. (15): the mass stays away from the pivot), κ ≥ 0.
    !> On failure `variable` names the offending component (r0, g, omega, a or kappa).
    pure subroutine check_physical(p, error, variable)
@@ -91,8 +101,8 @@ contains
          variable = "omega"; message = "the radial angular frequency must be > 0"
       else if (.not. ieee_is_finite(p%r0)) then
          variable = "r0"; message = "not a finite number"
-      else if (p%r0 < 0.0_wp) then
-         variable = "r0"; message = "the natural length must be >= 0"
+      else if (.not. p%r0 > 0.0_wp) then
+         variable = "r0"; message = "the natural length must be > 0"
       else if (.not. ieee_is_finite(p%g)) then
          variable = "g"; message = "not a finite number"
       else if (p%g < 0.0_wp) then
