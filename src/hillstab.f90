@@ -24,6 +24,7 @@ module hillstab
    use hillstab_gsl
    use hillstab_rk
    use hillstab_monodromy_rk
+   use hillstab_pendulum
    use hillstab_scene
    use hillstab_output
    use hillstab_tasks

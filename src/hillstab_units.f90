@@ -10,9 +10,9 @@
 !> - (21) the Mathieu limit's ν = a r0 π²/ρ² = α (1 − β/π²);
 !> - (46) ε = κ π/ω.
 !>
-!> Back from (α, β, ε) one length or acceleration scale and ω are needed: with r0
-!> given, ρ = r0 π²/(π² − β) (as in the initial condition (38)); with g given,
-!> ρ = g π²/(β ω²). Then a = α ρ/π², and r0 or g follows from (4), κ = ε ω/π.
+!> Back from (α, β, ε) two of r0, g and ω are needed (`physical_from_dimensionless`):
+!> with r0, ρ = r0 π²/(π² − β) (as in the initial condition (38)); with g and ω,
+!> ρ = g π²/(β ω²). Then a = α ρ/π², the third of r0, g, ω from (4) and (24), κ = ε ω/π.
 !>
 !> Time: τ = ω t/π, so a Floquet exponent μ per unit τ (the growth of the swing x
 !> is ∝ e^{μτ}) is μ ω/π per second, and one radial period 2π/ω is 2 units of τ.
@@ -124,56 +124,81 @@ contains
       if (len(variable) > 0) call set_error(error, err_invalid_parameter, message)
    end subroutine check_physical
 
-   !> The pendulum with the dimensionless parameters (α, β, ε), given ω and one of
-   !> r0 or g (exactly one): the inverse of `physical_alpha`, `physical_beta`,
-   !> `physical_epsilon`. With r0: ρ = r0 π²/(π² − β), needs β < π²; with g:
-   !> ρ = g π²/(β ω²), needs β > 0. Needs 0 ≤ α < π², ε ≥ 0, ω > 0.
-   pure subroutine physical_from_dimensionless(alpha, beta, epsilon, omega, p, error, r0, g)
+   !> The pendulum with the dimensionless parameters (α, β, ε), given two of r0, g and ω
+   !> (exactly two): the inverse of `physical_alpha`, `physical_beta`, `physical_epsilon`.
+   !> - ω and r0: ρ = r0 π²/(π² − β) (as in (38)), g = β ρ ω²/π²; needs β < π²;
+   !> - ω and g: ρ = g π²/(β ω²), r0 = ρ − g/ω² (4); needs β > 0;
+   !> - r0 and g: ρ = r0 π²/(π² − β), ω² = g π²/(ρ β); needs 0 < β < π².
+   !> Then a = α ρ/π² and κ = ε ω/π. Needs 0 ≤ α < π², ε ≥ 0, ω > 0, r0 > 0, g ≥ 0 (g > 0
+   !> when ω is not given), all finite.
+   pure subroutine physical_from_dimensionless(alpha, beta, epsilon, p, error, r0, g, omega)
       real(wp), intent(in) :: alpha    !! α of eq. (24)
       real(wp), intent(in) :: beta     !! β of eq. (24)
       real(wp), intent(in) :: epsilon  !! ε of eq. (46)
-      real(wp), intent(in) :: omega    !! ω (rad/s)
       type(physical_t), intent(out) :: p
       type(error_t), allocatable, intent(out) :: error
-      real(wp), intent(in), optional :: r0  !! natural length (m), ≥ 0
-      real(wp), intent(in), optional :: g   !! gravity (m/s²), ≥ 0
+      real(wp), intent(in), optional :: r0     !! natural length (m)
+      real(wp), intent(in), optional :: g      !! gravity (m/s²)
+      real(wp), intent(in), optional :: omega  !! radial angular frequency ω = √(k/m) (rad/s)
       real(wp) :: rho
-      if (present(r0) .eqv. present(g)) then
-         call set_error(error, err_invalid_parameter, "give exactly one of r0 and g")
-         return
-      end if
-      if (.not. (omega > 0.0_wp .and. ieee_is_finite(omega))) then
-         call set_error(error, err_invalid_parameter, "omega must be finite and > 0")
+      if (count([present(r0), present(g), present(omega)]) /= 2) then
+         call set_error(error, err_invalid_parameter, "give exactly two of r0, g and omega")
          return
       end if
       if (.not. (alpha >= 0.0_wp .and. alpha < pi2)) then
          call set_error(error, err_invalid_parameter, "alpha must satisfy 0 <= alpha < pi**2")
          return
       end if
-      if (.not. (epsilon >= 0.0_wp .and. ieee_is_finite(epsilon))) then
-         call set_error(error, err_invalid_parameter, "epsilon must be finite and >= 0")
+      if (.not. (epsilon >= 0.0_wp .and. ieee_is_finite(epsilon) .and. ieee_is_finite(beta))) then
+         call set_error(error, err_invalid_parameter, "epsilon must be finite and >= 0, beta finite")
          return
       end if
-      p%omega = omega
-      p%kappa = epsilon*omega/pi
+      if (present(omega)) then
+         if (.not. (omega > 0.0_wp .and. ieee_is_finite(omega))) then
+            call set_error(error, err_invalid_parameter, "omega must be finite and > 0")
+            return
+         end if
+      end if
       if (present(r0)) then
-         if (.not. (beta < pi2 .and. r0 >= 0.0_wp .and. ieee_is_finite(beta) .and. ieee_is_finite(r0))) then
-            call set_error(error, err_invalid_parameter, "with r0 given, beta < pi**2 and r0 >= 0 are needed")
+         if (.not. (r0 > 0.0_wp .and. ieee_is_finite(r0))) then
+            call set_error(error, err_invalid_parameter, "r0 must be finite and > 0")
+            return
+         end if
+         if (.not. beta < pi2) then
+            call set_error(error, err_invalid_parameter, "with r0 given, beta < pi**2 is needed (r0 > 0)")
             return
          end if
          rho = r0*pi2/(pi2 - beta)
          p%r0 = r0
-         p%g = beta*rho*omega*omega/pi2
-      else
-         if (.not. (beta > 0.0_wp .and. g >= 0.0_wp .and. ieee_is_finite(beta) .and. ieee_is_finite(g))) then
-            call set_error(error, err_invalid_parameter, "with g given, beta > 0 and g >= 0 are needed")
+      end if
+      if (present(g)) then
+         if (.not. (g >= 0.0_wp .and. ieee_is_finite(g))) then
+            call set_error(error, err_invalid_parameter, "g must be finite and >= 0")
             return
          end if
-         rho = g*pi2/(beta*omega*omega)
+         if (.not. beta > 0.0_wp) then
+            call set_error(error, err_invalid_parameter, "with g given, beta > 0 is needed")
+            return
+         end if
          p%g = g
-         p%r0 = rho - g/(omega*omega)
+      end if
+      if (present(omega)) then
+         p%omega = omega
+         if (present(r0)) then
+            p%g = beta*rho*omega*omega/pi2
+         else
+            rho = g*pi2/(beta*omega*omega)
+            p%r0 = rho - g/(omega*omega)
+         end if
+      else
+         if (.not. g > 0.0_wp) then
+            call set_error(error, err_invalid_parameter, "with r0 and g given, g > 0 is needed")
+            return
+         end if
+         p%omega = sqrt(g*pi2/(rho*beta))
       end if
       p%a = alpha*rho/pi2
+      p%kappa = epsilon*p%omega/pi
    end subroutine physical_from_dimensionless
 
    !> A rate per unit τ (a Floquet exponent μ) in 1/s: μ ω/π, since τ = ω t/π (24).

@@ -7,6 +7,7 @@ module test_units
    use hillstab_error, only: error_t
    use hillstab_coefficient, only: hill_model_t, model_elastic, hill_coefficient
    use hillstab_units
+   use hillstab_pendulum, only: pendulum_t, pendulum_from_chart
    use hillstab_testing
    implicit none
    private
@@ -55,33 +56,59 @@ contains
       type(physical_t) :: p, back
       type(error_t), allocatable :: error
       p = physical_t(r0=0.45_wp, g=9.81_wp, omega=7.0_wp, a=0.5_wp, kappa=0.3_wp)
-      call physical_from_dimensionless(physical_alpha(p), physical_beta(p), physical_epsilon(p), p%omega, back, &
-                                       error, r0=p%r0)
+      call physical_from_dimensionless(physical_alpha(p), physical_beta(p), physical_epsilon(p), back, &
+                                       error, r0=p%r0, omega=p%omega)
       call check(ctx, .not. allocated(error), "r0 route")
       call check(ctx, back%g, p%g, rel=1.0e-14_wp)
       call check(ctx, back%a, p%a, rel=1.0e-14_wp)
       call check(ctx, back%kappa, p%kappa, rel=1.0e-14_wp)
-      call physical_from_dimensionless(physical_alpha(p), physical_beta(p), physical_epsilon(p), p%omega, back, &
-                                       error, g=p%g)
+      call physical_from_dimensionless(physical_alpha(p), physical_beta(p), physical_epsilon(p), back, &
+                                       error, g=p%g, omega=p%omega)
       call check(ctx, .not. allocated(error), "g route")
       call check(ctx, back%r0, p%r0, rel=1.0e-13_wp)
       call check(ctx, back%a, p%a, rel=1.0e-14_wp)
+      call physical_from_dimensionless(physical_alpha(p), physical_beta(p), physical_epsilon(p), back, &
+                                       error, r0=p%r0, g=p%g)
+      call check(ctx, .not. allocated(error), "r0, g route")
+      call check(ctx, back%omega, p%omega, rel=1.0e-14_wp)
+      call check(ctx, back%a, p%a, rel=1.0e-14_wp)
+      call check(ctx, back%kappa, p%kappa, rel=1.0e-14_wp)
+      call same_as_pendulum_module(ctx, 1.48_wp, 2.47_wp, 0.3_wp, 0.1_wp, 9.81_wp)
+      call same_as_pendulum_module(ctx, 9.5_wp, 0.2_wp, 0.0_wp, 2.0_wp, 1.62_wp)
       ! the paper's Fig. 4 (a): alpha = 1.48, beta = 2.47 with r0 = 1 m, omega = 10 rad/s
-      call physical_from_dimensionless(1.48_wp, 2.47_wp, 0.0_wp, 10.0_wp, back, error, r0=1.0_wp)
+      call physical_from_dimensionless(1.48_wp, 2.47_wp, 0.0_wp, back, error, r0=1.0_wp, omega=10.0_wp)
       call check(ctx, .not. allocated(error), "Fig. 4 (a)")
       call check(ctx, equilibrium_length(back), pi2/(pi2 - 2.47_wp), rel=1.0e-14_wp)  ! eq. (38)
       call check(ctx, physical_alpha(back), 1.48_wp, rel=1.0e-14_wp)
       call check(ctx, physical_beta(back), 2.47_wp, rel=1.0e-14_wp)
-      ! exactly one of r0 and g
-      call physical_from_dimensionless(1.0_wp, 2.0_wp, 0.0_wp, 1.0_wp, back, error)
-      call check(ctx, allocated(error), "neither r0 nor g")
-      call physical_from_dimensionless(1.0_wp, 2.0_wp, 0.0_wp, 1.0_wp, back, error, r0=1.0_wp, g=9.8_wp)
-      call check(ctx, allocated(error), "both r0 and g")
-      call physical_from_dimensionless(1.0_wp, pi2, 0.0_wp, 1.0_wp, back, error, r0=1.0_wp)
+      ! exactly two of r0, g and omega
+      call physical_from_dimensionless(1.0_wp, 2.0_wp, 0.0_wp, back, error, omega=1.0_wp)
+      call check(ctx, allocated(error), "omega alone")
+      call physical_from_dimensionless(1.0_wp, 2.0_wp, 0.0_wp, back, error, r0=1.0_wp, g=9.8_wp, omega=1.0_wp)
+      call check(ctx, allocated(error), "all three")
+      call physical_from_dimensionless(1.0_wp, pi2, 0.0_wp, back, error, r0=1.0_wp, omega=1.0_wp)
       call check(ctx, allocated(error), "beta = pi**2 has no finite rho for r0 > 0")
-      call physical_from_dimensionless(1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp, back, error, g=9.8_wp)
+      call physical_from_dimensionless(1.0_wp, 0.0_wp, 0.0_wp, back, error, g=9.8_wp, omega=1.0_wp)
       call check(ctx, allocated(error), "beta = 0 has no finite rho for g > 0")
    end subroutine round_trips
+
+   !> The r0, g route against hillstab_pendulum's own conversion (written separately).
+   subroutine same_as_pendulum_module(ctx, alpha, beta, epsilon, r0, g)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), intent(in) :: alpha, beta, epsilon, r0, g
+      type(pendulum_t) :: q
+      type(physical_t) :: p
+      type(error_t), allocatable :: error
+      call pendulum_from_chart(alpha, beta, epsilon, r0, g, q, error)
+      call check(ctx, .not. allocated(error), "pendulum_from_chart")
+      call physical_from_dimensionless(alpha, beta, epsilon, p, error, r0=r0, g=g)
+      call check(ctx, .not. allocated(error), "physical_from_dimensionless")
+      if (allocated(error)) return
+      call check(ctx, p%omega, q%omega, rel=1.0e-14_wp, message="omega")
+      call check(ctx, p%a, q%a, rel=1.0e-14_wp, message="a")
+      call check(ctx, p%kappa, q%kappa, rel=1.0e-14_wp, abs=0.0_wp, message="kappa")
+      call check(ctx, equilibrium_length(p), q%rho, rel=1.0e-14_wp, message="rho")
+   end subroutine same_as_pendulum_module
 
    !> r0 = 0: β = π² exactly (isotropic oscillator); g = 0: β = 0; a = 0: α = 0.
    subroutine special_values(ctx)
