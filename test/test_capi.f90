@@ -11,6 +11,7 @@ module test_capi
    use hillstab_coefficient, only: check_model
    use hillstab_monodromy, only: method_auto
    use hillstab_legacy, only: hstrace, hsfloq, hserrm
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    !$ use omp_lib, only: omp_get_thread_num, omp_get_num_threads
    use hillstab_testing
    implicit none
@@ -28,7 +29,8 @@ contains
          new_unittest("c_last_error_per_thread", c_last_error_per_thread), &
          new_unittest("legacy_wrappers", legacy_wrappers), &
          new_unittest("legacy_messages", legacy_messages), &
-         new_unittest("legacy_roundoff_limited", legacy_roundoff_limited)])
+         new_unittest("legacy_roundoff_limited", legacy_roundoff_limited), &
+         new_unittest("legacy_invalid_arguments", legacy_invalid_arguments)])
    end function collect_capi
 
    subroutine c_trace_matches_library(ctx)
@@ -176,6 +178,34 @@ contains
       call check(ctx, s, 2.0_wp, abs=1.0e-8_wp)
       call check(ctx, mu, 0.0_wp, abs=1.0e-4_wp)
    end subroutine legacy_roundoff_limited
+
+   !> Every invalid argument the README lists gives INFO = 1 and a message naming it.
+   subroutine legacy_invalid_arguments(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: s, nan
+      integer :: info
+      character(len=200) :: msg
+      nan = ieee_value(0.0_wp, ieee_quiet_nan)
+      call hstrace(3, 3.7_wp, 2.47_wp, 0.0_wp, method_auto, 2, 1, 1.0e-10_wp, s, info)
+      call hserrm(msg)
+      call check(ctx, info == 1 .and. index(msg, "model") > 0, "MODEL = 3: "//trim(msg))
+      call hstrace(1, 3.7_wp, 2.47_wp, -1.0_wp, method_auto, 2, 1, 1.0e-10_wp, s, info)
+      call hserrm(msg)
+      call check(ctx, info == 1 .and. index(msg, "epsilon") > 0, "EPS < 0: "//trim(msg))
+      call hstrace(1, 3.7_wp, 2.47_wp, 0.0_wp, method_segments, 0, 1, 1.0e-10_wp, s, info)
+      call hserrm(msg)
+      call check(ctx, info == 1, "NSEG = 0: "//trim(msg))
+      call hstrace(1, 3.7_wp, 2.47_wp, 0.0_wp, method_segments, 8, 4, 1.0e-10_wp, s, info)
+      call hserrm(msg)
+      call check(ctx, info == 1 .and. index(msg, "sampling") > 0, "ISAMP = 4: "//trim(msg))
+      call hstrace(1, 3.7_wp, 2.47_wp, 0.0_wp, method_auto, 2, 1, 0.0_wp, s, info)
+      call hserrm(msg)
+      call check(ctx, info == 1, "TOL = 0: "//trim(msg))
+      call hstrace(1, 3.7_wp, nan, 0.0_wp, method_auto, 2, 1, 1.0e-10_wp, s, info)
+      call hserrm(msg)
+      call check(ctx, info == 1 .and. index(msg, "finite") > 0, "BETA = NaN: "//trim(msg))
+      call check(ctx, s == 0.0_wp, "S = 0 on error")
+   end subroutine legacy_invalid_arguments
 
    subroutine legacy_wrappers(ctx)
       type(test_context_t), intent(inout) :: ctx
