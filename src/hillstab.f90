@@ -21,8 +21,10 @@ module hillstab
    use hillstab_auto
    use hillstab_monodromy
    use hillstab_gsl
+   use hillstab_hill_method
    use hillstab_rk
    use hillstab_monodromy_rk
+   use hillstab_pendulum
    use hillstab_scene
    use hillstab_output
    use hillstab_tasks
