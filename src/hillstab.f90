@@ -22,6 +22,7 @@ module hillstab
    use hillstab_auto
    use hillstab_monodromy
    use hillstab_gsl
+   use hillstab_hill_method
    use hillstab_rk
    use hillstab_monodromy_rk
    use hillstab_pendulum
