@@ -14,6 +14,7 @@ module hillstab
    use hillstab_status
    use hillstab_stats
    use hillstab_coefficient
+   use hillstab_units
    use hillstab_transfer
    use hillstab_formulas
    use hillstab_floquet

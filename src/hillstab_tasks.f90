@@ -17,7 +17,7 @@
 !> call run_scene_file("data/scenes/default_exact.nml", quiet=.false., error=error)
 !>```
 module hillstab_tasks
-   use hillstab_kinds, only: wp, int64, pi2, version_string
+   use hillstab_kinds, only: wp, int64, pi, pi2, version_string
    use hillstab_error, only: error_t, set_error, err_input, err_io, err_accuracy, err_invalid_parameter, &
       err_points_failed
    use hillstab_status, only: status_ok, status_roundoff, status_failed
@@ -25,6 +25,7 @@ module hillstab_tasks
       segment_coefficients, hill_period, in_physical_domain, sampling_name
    use hillstab_transfer, only: trace_t
    use hillstab_floquet, only: floquet_t, floquet_from_trace
+   use hillstab_units, only: equilibrium_length
    use hillstab_monodromy, only: monodromy_trace, monodromy_trace_batch, method_name, method_segments, &
       batch_plan_t, prepare_batch
    use hillstab_scene, only: scene_t, read_scene, scene_namelist, task_chart, task_points, task_coefficient, &
@@ -168,24 +169,48 @@ contains
    function common_header(scene) result(lines)
       type(scene_t), intent(in) :: scene
       character(len=:), allocatable :: lines(:)
-      character(len=:), allocatable :: groups(:), model_text
+      character(len=:), allocatable :: groups(:), model_text, common(:)
       groups = scene_namelist(scene)
       if (scene%model == model_elastic) then
          model_text = "model: elastic, Q(tau) = (beta - alpha cos(pi tau))/(1 - (alpha/pi^2) cos(pi tau)), eq. (25)"
       else
          model_text = "model: mathieu, q(tau) = beta - alpha cos(pi tau), eq. (A1), alpha playing nu"
       end if
-      lines = stacked(["hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau"], &
-                      stacked(["scene file: "//scene%source//" (the two namelist lines below repeat this run)"], &
-                              stacked(groups, [model_text])))
+      common = stacked(["hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau"], &
+                       stacked(["scene file: "//scene%source//" (the namelist lines below repeat this run)"], &
+                               stacked(groups, [model_text])))
+      if (scene%physical) then
+         lines = stacked(common, physical_header(scene))
+      else
+         lines = common
+      end if
    end function common_header
+
+   !> Header lines of a scene given in physical units: the conversions used.
+   function physical_header(scene) result(lines)
+      type(scene_t), intent(in) :: scene
+      character(len=:), allocatable :: lines(:)
+      character(len=200) :: text(3)
+      text(1) = "physical units (SI): rho = r0 + g/omega^2 (eq. (4)), tau = omega t/pi, alpha = a pi^2/rho, "// &
+                "beta = g pi^2/(rho omega^2) (eq. (24)), epsilon = kappa pi/omega (eq. (46))"
+      text(2) = "omega = "//real_text(scene%pendulum%omega)//" rad/s: one radial period 2 pi/omega = "// &
+                real_text(2.0_wp*pi/scene%pendulum%omega)//" s is 2 units of tau; epsilon = "//real_text(scene%epsilon)
+      if (size(scene%amplitudes) > 0) then
+         text(3) = "rho = "//real_text(equilibrium_length(scene%pendulum))//" m; each row is one amplitude a of "// &
+                   "&physical: a = alpha rho/pi^2"
+         if (scene%model == model_mathieu) text(3) = trim(text(3))//" (here alpha is nu = a r0 pi^2/rho^2 of eq. (21))"
+         lines = text(:3)
+      else
+         lines = text(:2)
+      end if
+   end function physical_header
 
    !> Header lines describing the chart/points columns.
    function chart_header(scene, outside) result(lines)
       type(scene_t), intent(in) :: scene
       logical, intent(in) :: outside  !! some point lies outside the physical domain
       character(len=:), allocatable :: lines(:)
-      character(len=200) :: extra(12)
+      character(len=200) :: extra(13)
       integer :: n
       n = 0
       n = n + 1; extra(n) = "method: "//method_description(scene)
@@ -198,12 +223,17 @@ contains
          n = n + 1; extra(n) = "stable: 1 when |S| < 2"
       end if
       n = n + 1; extra(n) = "lambda_max: largest |multiplier| of x per period; mu: Floquet exponent ln(lambda_max)/2"
-      n = n + 1; extra(n) = "physical: 1 inside the physical domain 0 <= alpha < pi^2, 0 < beta < pi^2"
+      if (scene%physical) then
+         n = n + 1; extra(n) = "mu_per_s: the Floquet exponent per second, mu omega/pi (tau = omega t/pi)"
+      end if
+      if (scene%model == model_elastic) then
+         n = n + 1; extra(n) = "physical: 1 inside the physical domain 0 <= alpha < pi^2, 0 <= beta < pi^2"
+      end if
       n = n + 1; extra(n) = "error_estimate: the method's estimate of |error of S|/max(1, |S|) (-1: the method gives none)"
       n = n + 1; extra(n) = "status: 0 ok; 1 round-off limited (best value, error_estimate at the round-off level); 2 failed"
       n = n + 1; extra(n) = "status 2 rows: S = 0, mu = 0, stable = overflow = stable_paper = -1, lambda_max = -1, "// &
          "log10_abs_S = -999, error_estimate = -1 (placeholders, not values)"
-      if (outside) then
+      if (outside .and. scene%model == model_elastic) then
          n = n + 1; extra(n) = "note: this file leaves the physical domain (rows with physical = 0)"
       end if
       lines = stacked(common_header(scene), extra(:n))
@@ -305,7 +335,8 @@ contains
       end do
       outside = .not. (in_physical_domain(scene%chart%alpha_min, scene%chart%beta_min) .and. &
                        in_physical_domain(scene%chart%alpha_max, scene%chart%beta_max))
-      call write_header(file, chart_header(scene, outside), chart_columns(damped), error)
+      call write_header(file, chart_header(scene, outside), &
+         chart_columns(damped, scene%model == model_elastic, scene%physical), error)
       if (allocated(error)) then
          call discard_output(file)
          return
@@ -420,8 +451,14 @@ contains
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
       type(hill_model_t) :: row
+      real(wp), allocatable :: per_second
+      logical :: elastic
       logical :: failed(size(betas)), inaccurate(size(betas))
       integer :: j
+      ! ω/π turns a rate per unit τ into a rate per second; left unallocated (an absent
+      ! optional argument of chart_line: no mu_per_s column) when the scene does not know ω
+      if (scene%physical) per_second = scene%pendulum%omega/pi
+      elastic = scene%model == model_elastic
       row = hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon)
       call monodromy_trace_batch(row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate)
       alpha_text = format_es(alpha, 16)
@@ -431,20 +468,20 @@ contains
          if (failed(j)) then
             if (present(beta_texts)) then
                lines(j) = failed_chart_line(alpha, betas(j), damped, in_physical_domain(alpha, betas(j)), &
-                                            status_failed, alpha_text, beta_texts(j))
+                                            status_failed, alpha_text, beta_texts(j), elastic, per_second)
             else
                lines(j) = failed_chart_line(alpha, betas(j), damped, in_physical_domain(alpha, betas(j)), &
-                                            status_failed, alpha_text)
+                                            status_failed, alpha_text, elastic=elastic, per_second=per_second)
             end if
             cycle
          end if
          f = floquet_from_trace(traces(j), scene%epsilon)
          if (present(beta_texts)) then
             lines(j) = chart_line(alpha, betas(j), f, damped, in_physical_domain(alpha, betas(j)), statuses(j), &
-                                  alpha_text, beta_texts(j))
+                                  alpha_text, beta_texts(j), elastic=elastic, per_second=per_second)
          else
             lines(j) = chart_line(alpha, betas(j), f, damped, in_physical_domain(alpha, betas(j)), statuses(j), &
-                                  alpha_text)
+                                  alpha_text, elastic=elastic, per_second=per_second)
          end if
       end do
    end subroutine compute_row
@@ -462,7 +499,11 @@ contains
       integer, allocatable :: statuses(:)
       logical :: damped
       integer :: k, n
+      real(wp), allocatable :: per_second
 
+      ! ω/π turns a rate per unit τ into a rate per second; left unallocated (an absent
+      ! optional argument of chart_line: no mu_per_s column) when the scene does not know ω
+      if (scene%physical) per_second = scene%pendulum%omega/pi
       n = size(scene%points, 2)
       damped = scene%epsilon > 0.0_wp
       call open_scene_output(scene, file, error)
@@ -475,17 +516,19 @@ contains
          call evaluate_point(scene, scene%points(1, k), scene%points(2, k), f, cause, statuses(k))
          if (statuses(k) == status_failed) then
             lines(k) = failed_chart_line(scene%points(1, k), scene%points(2, k), damped, &
-                                         in_physical_domain(scene%points(1, k), scene%points(2, k)), status_failed)
+                                         in_physical_domain(scene%points(1, k), scene%points(2, k)), status_failed, &
+                                         elastic=scene%model == model_elastic, per_second=per_second)
          else
             lines(k) = chart_line(scene%points(1, k), scene%points(2, k), f, damped, &
-                                  in_physical_domain(scene%points(1, k), scene%points(2, k)), statuses(k))
+                                  in_physical_domain(scene%points(1, k), scene%points(2, k)), statuses(k), &
+                                  elastic=scene%model == model_elastic, per_second=per_second)
          end if
       end do
       !$omp end parallel do
       call progress_update(progress, int(n, int64))
       call progress_end(progress)
       call write_header(file, chart_header(scene, .not. all(in_physical_domain(scene%points(1, :), &
-         scene%points(2, :)))), chart_columns(damped), error)
+         scene%points(2, :)))), chart_columns(damped, scene%model == model_elastic, scene%physical), error)
       do k = 1, n
          if (allocated(error)) exit
          call write_text(file, trim(lines(k)), error)

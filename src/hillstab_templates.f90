@@ -17,6 +17,7 @@ module hillstab_templates
    use hillstab_error, only: error_t, set_error, err_input
    use hillstab_coefficient, only: model_name, sampling_name
    use hillstab_monodromy, only: method_name
+   use hillstab_units, only: physical_t
    use hillstab_scene, only: scene_t, default_scene, real_text, integer_text, task_chart, task_points, &
       task_coefficient
    implicit none
@@ -50,15 +51,16 @@ contains
       case ("chart")
          scene%task = task_chart
          text = header(task, "a stability chart over an (alpha, beta) grid: S, stability, multipliers, exponent") &
-                //scene_group(scene, task)//nl//chart_group(scene)
+                //scene_group(scene, task)//nl//chart_group(scene)//nl//nl//physical_group("")
       case ("points")
          scene%task = task_points
          text = header(task, "the chart's columns at (alpha, beta) points listed in a file") &
-                //scene_group(scene, task)//nl//points_group()
+                //scene_group(scene, task)//nl//points_group()//nl//nl//physical_group("&points file")
       case ("coefficient")
          scene%task = task_coefficient
          text = header(task, "Q(tau) and its segmented version, one pair of columns per alpha (the paper's Fig. 2)") &
-                //scene_group(scene, task)//nl//coefficient_group(scene)
+                //scene_group(scene, task)//nl//coefficient_group(scene)//nl//nl// &
+                physical_group("&coefficient alphas and beta")
       case default
          call set_error(error, err_input, "no template for task '"//task//"' (tasks: "// &
             joined(template_task_names(), ", ")//")")
@@ -159,6 +161,39 @@ contains
               "ignored; relative to the current directory")// &
          "/"
    end function points_group
+
+   !> `item` commented out: its first column becomes `!`.
+   function commented_item(assignment, comment) result(text)
+      character(len=*), intent(in) :: assignment, comment
+      character(len=:), allocatable :: text
+      text = item(assignment, comment)
+      text(1:1) = "!"
+   end function commented_item
+
+   !> The optional `&physical` group, commented out (a scene gives either it or the
+   !> dimensionless values). `replaces`: the variables of the task that `r0` with `a`
+   !> replace ("" when the task takes no amplitudes).
+   function physical_group(replaces) result(text)
+      character(len=*), intent(in) :: replaces
+      character(len=:), allocatable :: text
+      type(physical_t) :: p
+      logical :: amplitudes
+      amplitudes = len(replaces) > 0
+      text = "! Optional, instead of the dimensionless values: the pendulum in SI units (remove the '!'s"// &
+         nl//"! to use it; then no &scene epsilon"
+      if (amplitudes) text = text//", and r0 with a replace "//replaces
+      text = text//")."//nl//"! &physical"//nl// &
+         commented_item("omega = 10.0", "required: radial angular frequency sqrt(k/m), rad/s; > 0")// &
+         commented_item("g = "//real_text(p%g), "gravity, m/s^2; >= 0")// &
+         commented_item("kappa = "//real_text(p%kappa), "damping rate of eqs. (40)-(42), 1/s: gives epsilon = "// &
+                   "kappa pi/omega")
+      if (amplitudes) then
+         text = text// &
+            commented_item("r0 = 0.3", "natural length of the spring, m; > 0 (with a)")// &
+            commented_item("a = 0.05, 0.1, 0.2", "bounce amplitudes, m, up to 64; 0 <= a < rho = r0 + g/omega^2")
+      end if
+      text = text//"! /"
+   end function physical_group
 
    !> `&coefficient`.
    function coefficient_group(scene) result(text)

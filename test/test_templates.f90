@@ -18,6 +18,7 @@ contains
       suite = new_testsuite("templates", [ &
          new_unittest("templates_read_back_as_defaults", templates_read_back_as_defaults), &
          new_unittest("templates_name_every_variable", templates_name_every_variable), &
+         new_unittest("physical_variant_reads", physical_variant_reads), &
          new_unittest("every_task_has_a_template", every_task_has_a_template), &
          new_unittest("unknown_task", unknown_task)])
    end function collect_templates
@@ -112,6 +113,48 @@ contains
          call delete_file(path//".points")
       end do
    end subroutine templates_name_every_variable
+
+   !> Following the template's own instructions for `&physical` (uncomment it, drop
+   !> `&scene epsilon` and what `r0` with `a` replace) gives a valid physical scene.
+   subroutine physical_variant_reads(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: names(:), path, text, line, out
+      character(len=*), parameter :: dropped(4) = [character(len=12) :: "epsilon =", "file =", "alphas =", "beta ="]
+      type(scene_t) :: scene
+      type(error_t), allocatable :: error
+      logical :: inside
+      integer :: k, from, at, j
+      names = template_task_names()
+      do k = 1, size(names)
+         call scene_template(trim(names(k)), text, error)
+         if (allocated(error)) cycle
+         out = ""
+         inside = .false.
+         from = 1
+         do while (from <= len(text))
+            at = index(text(from:), new_line("a"))
+            if (at == 0) at = len(text) - from + 2
+            line = text(from:from + at - 2)
+            from = from + at
+            if (line == "! &physical") inside = .true.
+            if (inside) line = line(3:)
+            if (line == "/" .and. inside) inside = .false.
+            do j = 1, size(dropped)
+               if (index(adjustl(line), trim(dropped(j))) == 1) line = ""
+            end do
+            out = out//line//new_line("a")
+         end do
+         path = scratch_prefix("template_physical_"//trim(names(k)))//".nml"
+         call write_file(path, [out])
+         call read_scene(path, scene, error)
+         if (allocated(error)) then
+            call check(ctx, .false., trim(names(k))//" with &physical: "//error%message)
+         else
+            call check(ctx, scene%physical, trim(names(k))//": the scene is physical")
+         end if
+         call delete_file(path)
+      end do
+   end subroutine physical_variant_reads
 
    !> A task that the scene reader accepts (anything but "not available in this build")
    !> has a template.
