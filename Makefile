@@ -7,6 +7,8 @@
 #   make lib            build libhillstab.a and .mod files with plain gfortran (no fpm)
 #   make install PREFIX=/usr/local   install library, modules, C header, pkg-config and CMake files
 #   make check-install  install into build/_install and link a C and a Fortran program against it
+#   make mpi            build hillstab and hillstab_mpi with CMake (installs Open MPI: scripts/setup_mpi.sh)
+#   make test-mpi       hillstab_mpi against hillstab at np = 1, 2, 3, bad input, failing points
 FPM ?= bash scripts/fpm.sh
 ifeq ($(origin FC),default)
 FC = gfortran
@@ -20,7 +22,7 @@ MOD_SUBDIR = hillstab/$(notdir $(FC))-$(FC_VERSION)
 LEGACY_DIR = build/legacy
 VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 
-.PHONY: run test test-debug setup bench lib install check-install clean
+.PHONY: run test test-debug setup bench lib install check-install clean mpi test-mpi
 
 setup:
 	@bash scripts/setup.sh
@@ -63,6 +65,14 @@ check-install:
 	@rm -rf build/_install
 	$(MAKE) --no-print-directory install PREFIX=$(CURDIR)/build/_install
 	bash config/export/check.sh $(CURDIR)/build/_install
+
+mpi:
+	bash scripts/setup_mpi.sh
+	cmake -S . -B build/cmake_mpi -DHILLSTAB_MPI=ON -DCMAKE_BUILD_TYPE=Release
+	cmake --build build/cmake_mpi -j 2
+
+test-mpi:
+	bash scripts/test_mpi.sh
 
 clean:
 	rm -rf build out

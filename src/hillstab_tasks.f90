@@ -34,6 +34,9 @@ module hillstab_tasks
    implicit none
    private
    public :: run_scene_file, run_scene, output_path
+   ! the pieces a distributed driver (hillstab_batch, the MPI program) shares with the serial tasks
+   public :: chart_row, compute_points, chart_header, open_scene_output, point_failure, warn_inaccurate
+   public :: progress_t, progress_begin, progress_update, progress_end
 
    !> Progress on stderr for runs longer than about a second.
    type :: progress_t
@@ -236,14 +239,13 @@ contains
       real(wp) :: alpha, beta
       real(wp), allocatable :: all_betas(:)
       character(len=23), allocatable :: beta_texts(:)
-      type(batch_plan_t) :: plan
       logical :: stopped
       character(len=chart_line_length), allocatable :: block_lines(:, :, :)
       logical, allocatable :: block_failed(:, :, :), block_inaccurate(:, :, :), inaccurate(:)
       integer(int64) :: n_inaccurate
       real(wp) :: first_inaccurate(2)
       integer :: group, n_groups, g
-      integer :: i, j, n_alpha, n_beta, c, chunk, n_chunks, first, last
+      integer :: i, j, n_alpha, n_beta
 
       n_alpha = scene%chart%n_alpha
       n_beta = scene%chart%n_beta
@@ -276,7 +278,7 @@ contains
       call progress_begin(progress, int(n_alpha, int64)*n_beta, quiet)
       stopped = .false.
       n_inaccurate = 0
-      if (n_alpha >= 4*max_threads()) then
+      if (rows_in_parallel(scene)) then
          ! groups of rows computed in parallel (mesh preparation, integration and
          ! formatting on every core) into one of two buffers, while one thread writes the
          ! previous group from the other buffer; a group holds a few rows per thread, so
@@ -315,19 +317,9 @@ contains
       else
          ! few rows: the points of each row in parallel chunks sharing the prepared meshes
          allocate (lines(n_beta), failed(n_beta), inaccurate(n_beta))
-         chunk = max(16, n_beta/(8*max_threads()))
-         n_chunks = (n_beta + chunk - 1)/chunk
          do i = 1, n_alpha
             alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i)
-            call prepare_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), all_betas, scene%method, plan)
-            !$omp parallel do schedule(dynamic) default(shared) private(c, first, last)
-            do c = 1, n_chunks
-               first = (c - 1)*chunk + 1
-               last = min(n_beta, c*chunk)
-               call compute_row(scene, alpha, all_betas(first:last), damped, lines(first:last), failed(first:last), &
-                  inaccurate(first:last), plan, beta_texts(first:last))
-            end do
-            !$omp end parallel do
+            call compute_row_in_chunks(scene, alpha, all_betas, damped, lines, failed, inaccurate, beta_texts)
             call finish_row(i, alpha, lines, failed, inaccurate)
             if (stopped) exit
          end do
@@ -405,6 +397,103 @@ contains
       end do
    end subroutine compute_row
 
+   !> A chart computes whole rows in parallel when it has enough of them, else the
+   !> chunks of each row in parallel.
+   logical function rows_in_parallel(scene)
+      type(scene_t), intent(in) :: scene
+      rows_in_parallel = scene%chart%n_alpha >= 4*max_threads()
+   end function rows_in_parallel
+
+   !> `compute_row` on a whole row, split into chunks computed in parallel that share
+   !> the meshes prepared for the row.
+   subroutine compute_row_in_chunks(scene, alpha, betas, damped, lines, failed, inaccurate, beta_texts)
+      type(scene_t), intent(in) :: scene
+      real(wp), intent(in) :: alpha, betas(:)
+      logical, intent(in) :: damped
+      character(len=*), intent(out) :: lines(:)
+      logical, intent(out) :: failed(:), inaccurate(:)
+      character(len=23), intent(in) :: beta_texts(:)
+      type(batch_plan_t) :: plan
+      integer :: c, chunk, n_chunks, first, last, n
+      n = size(betas)
+      chunk = max(16, n/(8*max_threads()))
+      n_chunks = (n + chunk - 1)/chunk
+      call prepare_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), betas, scene%method, plan)
+      !$omp parallel do schedule(dynamic) default(shared) private(c, first, last)
+      do c = 1, n_chunks
+         first = (c - 1)*chunk + 1
+         last = min(n, c*chunk)
+         call compute_row(scene, alpha, betas(first:last), damped, lines(first:last), failed(first:last), &
+            inaccurate(first:last), plan, beta_texts(first:last))
+      end do
+      !$omp end parallel do
+   end subroutine compute_row_in_chunks
+
+   !> Lines of row `i` of a chart scene (α = the i-th grid value, all β), computed exactly as
+   !> the chart task computes them, so that a driver computing rows elsewhere writes the
+   !> same file. `failed`: no value (the chart fails); `inaccurate`: round-off limited.
+   subroutine chart_row(scene, i, lines, failed, inaccurate)
+      type(scene_t), intent(in) :: scene  !! a chart scene
+      integer, intent(in) :: i            !! row index, 1 … n_alpha
+      character(len=*), intent(out) :: lines(:)  !! n_beta lines of `chart_line_length` characters
+      logical, intent(out) :: failed(:), inaccurate(:)  !! per point of the row
+      real(wp), allocatable :: betas(:)
+      character(len=23), allocatable :: beta_texts(:)
+      real(wp) :: alpha
+      integer :: j, n_beta
+      n_beta = scene%chart%n_beta
+      betas = [(grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j), j=1, n_beta)]
+      allocate (beta_texts(n_beta))
+      do j = 1, n_beta
+         beta_texts(j) = format_es(betas(j), 16)
+      end do
+      alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, scene%chart%n_alpha, i)
+      if (rows_in_parallel(scene)) then
+         call compute_row(scene, alpha, betas, scene%epsilon > 0.0_wp, lines, failed, inaccurate, &
+            beta_texts=beta_texts)
+      else
+         call compute_row_in_chunks(scene, alpha, betas, scene%epsilon > 0.0_wp, lines, failed, inaccurate, &
+            beta_texts)
+      end if
+   end subroutine chart_row
+
+   !> Lines of the points `first` … `last` of a points scene (in parallel).
+   subroutine compute_points(scene, first, last, lines, failed, inaccurate)
+      type(scene_t), intent(in) :: scene  !! a points scene
+      integer, intent(in) :: first, last  !! range of point indices
+      character(len=*), intent(out) :: lines(first:)  !! one `chart_line` per point
+      logical, intent(out) :: failed(first:), inaccurate(first:)  !! no value; round-off limited
+      type(floquet_t) :: f
+      type(error_t), allocatable :: cause
+      integer :: k
+      failed = .false.
+      inaccurate = .false.
+      !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause)
+      do k = first, last
+         call evaluate_point(scene, scene%points(1, k), scene%points(2, k), f, cause, inaccurate(k))
+         if (allocated(cause)) then
+            failed(k) = .true.
+         else
+            lines(k) = chart_line(scene%points(1, k), scene%points(2, k), f, scene%epsilon > 0.0_wp, &
+                                  in_physical_domain(scene%points(1, k), scene%points(2, k)))
+         end if
+      end do
+      !$omp end parallel do
+   end subroutine compute_points
+
+   !> The error of the failed point (α, β), computed again serially so that the message
+   !> does not depend on thread or rank timing.
+   subroutine point_failure(scene, alpha, beta, error)
+      type(scene_t), intent(in) :: scene
+      real(wp), intent(in) :: alpha, beta
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: cause
+      type(floquet_t) :: f
+      call evaluate_point(scene, alpha, beta, f, cause)
+      if (.not. allocated(cause)) call set_error(cause, err_input, "fails in parallel only")
+      call point_error(scene, alpha, beta, cause, error)
+   end subroutine point_failure
+
    !> The points task.
    subroutine run_points(scene, quiet, error)
       type(scene_t), intent(in) :: scene
@@ -427,17 +516,7 @@ contains
       failed = .false.
       inaccurate = .false.
       call progress_begin(progress, int(n, int64), quiet)
-      !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause)
-      do k = 1, n
-         call evaluate_point(scene, scene%points(1, k), scene%points(2, k), f, cause, inaccurate(k))
-         if (allocated(cause)) then
-            failed(k) = .true.
-         else
-            lines(k) = chart_line(scene%points(1, k), scene%points(2, k), f, damped, &
-                                  in_physical_domain(scene%points(1, k), scene%points(2, k)))
-         end if
-      end do
-      !$omp end parallel do
+      call compute_points(scene, 1, n, lines, failed, inaccurate)
       call progress_update(progress, int(n, int64))
       call progress_end(progress)
       if (any(failed)) then
