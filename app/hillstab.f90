@@ -3,10 +3,12 @@
 !> Runs each scene in turn. Output goes to files named in the scenes; progress
 !> and errors go to stderr; stdout carries only --help and --version.
 !> Exit status: 0 on success, 2 for bad input (scene, points file, output path,
-!> command line), 1 when a computation fails.
+!> command line), 1 when a computation fails, 3 (exit_points_failed) when a file was
+!> written but some of its points failed (status 2 in their rows).
 program hillstab_cli
    use hillstab_kinds, only: version_string
-   use hillstab_error, only: error_t, err_input, err_io, err_invalid_parameter
+   use hillstab_error, only: error_t, err_input, err_io, err_invalid_parameter, err_points_failed
+   use hillstab_status, only: exit_points_failed
    use hillstab_tasks, only: run_scene_file
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use, intrinsic :: ieee_arithmetic, only: ieee_set_flag, ieee_all
@@ -16,6 +18,7 @@ program hillstab_cli
    character(len=:), allocatable :: scenes(:)
    logical :: quiet
    integer :: i, n_scenes
+   logical :: points_failed
 
    quiet = .false.
    n_scenes = 0
@@ -41,10 +44,15 @@ program hillstab_cli
    end do
    if (n_scenes == 0) call quit("usage: hillstab [--quiet] SCENE.nml... (see hillstab --help)", 2)
 
+   points_failed = .false.
    do i = 1, n_scenes
       call run_scene_file(trim(scenes(i)), quiet, error, written)
       if (allocated(error)) then
          select case (error%code)
+         case (err_points_failed)
+            ! the file is written; the message says where (also with --quiet: it qualifies the file)
+            write (error_unit, '(a)') "hillstab: "//error%message
+            points_failed = .true.
          case (err_input, err_io, err_invalid_parameter)
             call quit("hillstab: "//error%message, 2)
          case default
@@ -53,6 +61,10 @@ program hillstab_cli
       end if
       if (.not. quiet) write (error_unit, '(a)') "hillstab: wrote "//written
    end do
+   if (points_failed) then
+      call ieee_set_flag(ieee_all, .false.)
+      stop exit_points_failed, quiet=.true.
+   end if
 
 contains
 
@@ -88,6 +100,7 @@ contains
          "  -h, --help     this text", &
          "  -V, --version  the version", &
          "", &
-         "Exit status: 0 success, 2 bad input, 1 a computation failed."
+         "Exit status: 0 success, 2 bad input, 1 a computation failed, 3 files written but", &
+         "some points failed (status 2 in their rows)."
    end subroutine print_help
 end program hillstab_cli

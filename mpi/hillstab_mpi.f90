@@ -7,11 +7,12 @@
 !> the same file as a single-process `hillstab` run (identical data lines), through the
 !> atomic writers of hillstab_output: the file appears whole or not at all. Other tasks
 !> run on rank 0. Options, messages and exit statuses are those of `hillstab`; every rank
-!> exits with the status of the run (0 success, 2 bad input, 1 a computation failed).
+!> exits with the status of the run (0 success, 2 bad input, 3 written with failed
+!> points, 1 a computation failed).
 program hillstab_mpi
    use mpi_f08
    use hillstab_kinds, only: wp, int64, version_string
-   use hillstab_error, only: error_t, set_error, err_input
+   use hillstab_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_scene, only: scene_t, read_scene
    use hillstab_tasks, only: run_scene, output_path
    use hillstab_batch, only: batch_t, batch_result_t, batch_distributable, batch_plan, batch_compute, &
@@ -36,6 +37,7 @@ program hillstab_mpi
    end type manager_t
 
    integer :: rank, n_ranks, i, n_scenes
+   logical :: points_failed
    character(len=:), allocatable :: argument, written
    character(len=4096), allocatable :: scenes(:)
    logical :: quiet, help, version
@@ -79,16 +81,23 @@ program hillstab_mpi
    if (n_scenes == 0) &
       call quit(on_manager("usage: mpirun -np N hillstab_mpi [--quiet] SCENE.nml... (see hillstab_mpi --help)"), 2)
 
+   points_failed = .false.
    do i = 1, n_scenes
       call run_scene_everywhere(trim(scenes(i)), error, written)
       if (allocated(error)) then
          ! after `agree`, only the rank that found the error holds its message
          if (len(error%message) > 0) error%message = "hillstab_mpi: "//error%message
-         call quit(error%message, exit_status(error))
+         if (error%code == err_points_failed) then
+            ! the file is written; the message says where (also with --quiet: it qualifies the file)
+            if (len(error%message) > 0) write (error_unit, '(a)') error%message
+            points_failed = .true.
+         else
+            call quit(error%message, exit_status(error))
+         end if
       end if
       if (.not. quiet .and. rank == manager) write (error_unit, '(a)') "hillstab_mpi: wrote "//written
    end do
-   call quit("", 0)
+   call quit("", merge(exit_status(error_t(err_points_failed, "")), 0, points_failed))
 
 contains
 
@@ -102,6 +111,7 @@ contains
       type(scene_t) :: scene
       type(batch_t) :: batch
       real(wp) :: busy
+      logical :: written_ok
       ! every rank reads the scene (and its points file); the worst outcome wins, so a
       ! file one rank cannot read stops all of them
       call read_scene(path, scene, error)
@@ -130,30 +140,28 @@ contains
          call work(batch, busy)
       end if
       call agree(error)
-      call report_balance(busy, .not. allocated(error))
+      written_ok = .true.
+      if (allocated(error)) written_ok = error%code == err_points_failed
+      call report_balance(busy, written_ok)
    end subroutine run_scene_everywhere
 
-   !> Make the outcome collective: if any rank has an error, all have one, with the
-   !> exit status of the most severe (2 before 1) and the message of the lowest rank
-   !> holding it; that rank prints it, the others exit silently with the same status.
+   !> Make the outcome collective: if any rank has an error, all have one, the most
+   !> severe (bad input, then a failed computation, then failed points in a written
+   !> file), with the message of the lowest rank holding it; the others get the same
+   !> code and an empty message, so that one rank prints it.
    subroutine agree(error)
       type(error_t), allocatable, intent(inout) :: error
+      integer, parameter :: severity_of_status(0:3) = [0, 2, 3, 1]  ! exit status -> severity
+      integer, parameter :: code_of_severity(3) = [err_points_failed, 0, err_input]
       integer :: mine(2), worst(2)
       mine = [0, n_ranks]
-      if (allocated(error)) mine = [exit_status(error), rank]
-      ! the highest status, and among the ranks with it the lowest rank number
+      if (allocated(error)) mine = [severity_of_status(exit_status(error)), rank]
+      ! the highest severity, and among the ranks with it the lowest rank number
       call MPI_Allreduce(mine(1), worst(1), 1, MPI_INTEGER, MPI_MAX, MPI_COMM_WORLD)
       if (mine(1) /= worst(1)) mine(2) = n_ranks
       call MPI_Allreduce(mine(2), worst(2), 1, MPI_INTEGER, MPI_MIN, MPI_COMM_WORLD)
       if (worst(1) == 0) return
-      if (rank /= worst(2)) then
-         ! status 2 ↔ an input error, 1 ↔ a computation error (exit_status maps them back)
-         if (worst(1) == 2) then
-            call set_error(error, err_input, "")
-         else
-            call set_error(error, 0, "")
-         end if
-      end if
+      if (rank /= worst(2)) call set_error(error, code_of_severity(worst(1)), "")
    end subroutine agree
 
    !> Rank 0: hand out units, compute some, write all in order. Returns the first error
@@ -342,6 +350,7 @@ contains
          "  -h, --help     this text", &
          "  -V, --version  the version", &
          "", &
-         "Exit status (every rank): 0 success, 2 bad input, 1 a computation failed."
+         "Exit status (every rank): 0 success, 2 bad input, 3 the file was written but some", &
+         "points failed (status 2 in the file), 1 a computation failed."
    end subroutine print_help
 end program hillstab_mpi

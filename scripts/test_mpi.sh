@@ -4,8 +4,8 @@
 #  - np = 1, 2, 3 write the same file as hillstab (charts with many and few rows, damped,
 #    a points list, a non-distributed task);
 #  - bad input (unknown variable, unwritable output) gives exit 2 on every rank, no hang,
-#    no file; a failing point gives exit 1 on every rank with hillstab's message, and the
-#    file already there is left untouched;
+#    no file; a failing point is written as hillstab writes it (status 2, placeholders),
+#    with hillstab's message and exit 3 on every rank;
 #  - options: --version, --help, an unknown option.
 # Prints one line per check and a closing `N passed, M failed`; exits 1 on a failure.
 set -uo pipefail
@@ -86,21 +86,31 @@ check "unwritable_output_exit2_every_rank" 'all_ranks "$work/st" 3 2'
 rank_statuses 2 "$work/st" "$work/missing.nml"
 check "missing_scene_exit2_every_rank" 'all_ranks "$work/st" 2 2'
 
-# a failing point (GSL rk8pd at beta = -1e6): exit 1 everywhere, hillstab's message, old file kept
+# a failing point (GSL rk8pd at beta = -1e6): as hillstab, the file is written with the point's
+# status and placeholders, every rank exits 3, the message is hillstab's
 awk 'BEGIN { for (k = 0; k < 40; k++) print 1 + k / 10, (k == 23 ? -1e6 : 2.0) }' >"$work/fail.dat"
 printf '%s\n' "&scene task='points', method='gsl', output='$work/fail' /" "&points file='$work/fail.dat' /" \
    >"$work/fail.nml"
-echo "previous result" >"$work/fail_points.dat"
 "$serial" -q "$work/fail.nml" 2>"$work/fail.serial_message"
 serial_rc=$?
+mv "$work/fail_points.dat" "$work/fail.serial"
 for np in 1 2 3; do
-   rank_statuses "$np" "$work/st" "$work/fail.nml"
-   check "failing_point_np${np}_exit1_every_rank" '[ $serial_rc -eq 1 ] && all_ranks "$work/st" $np 1'
+   rm -f "$work/fail_points.dat"
+   rank_statuses "$np" "$work/st" -q "$work/fail.nml"
+   check "failing_point_np${np}_exit3_every_rank" '[ $serial_rc -eq 3 ] && all_ranks "$work/st" $np 3'
    check "failing_point_np${np}_message" \
       '[ "$(cat "$work"/st/stderr.*)" = "$(sed "s/^hillstab:/hillstab_mpi:/" "$work/fail.serial_message")" ]'
-   check "failing_point_np${np}_old_file_kept" \
-      '[ "$(cat "$work/fail_points.dat")" = "previous result" ] && [ -z "$(ls "$work" | grep part)" ]'
+   check "failing_point_np${np}_same_file" 'cmp -s "$work/fail_points.dat" "$work/fail.serial"'
 done
+# a chart whose first point fails: status and file as hillstab's
+printf '%s\n' "&scene task='chart', method='gsl', output='$work/fail' /" \
+   "&chart alpha_min=3, alpha_max=3, n_alpha=2, beta_min=-1e6, beta_max=2, n_beta=3 /" >"$work/fail_chart.nml"
+"$serial" -q "$work/fail_chart.nml" 2>/dev/null
+serial_rc=$?
+mv "$work/fail_chart.dat" "$work/fail_chart.serial"
+rank_statuses 3 "$work/st" -q "$work/fail_chart.nml"
+check "failing_chart_np3_as_serial" 'all_ranks "$work/st" 3 $serial_rc && cmp -s "$work/fail_chart.dat" "$work/fail_chart.serial"'
+check "no_temporary_files" '[ -z "$(ls "$work" | grep part)" ]'
 
 # options
 check "version" '[ "$(run_mpi 2 "$mpi" --version)" = "$("$serial" --version | sed s/hillstab/hillstab_mpi/)" ]'

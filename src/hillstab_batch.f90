@@ -7,7 +7,9 @@
 !> consecutive points. A unit's result is its text (the lines as the serial task writes
 !> them, with the blank line that separates α blocks) and a status per point
 !> (hillstab_status). Only `batch_open` / `batch_write` / `batch_commit` touch the file,
-!> through hillstab_output, so the file appears whole or not at all.
+!> through hillstab_output, so the file appears whole or not at all. As in the serial
+!> tasks, a failed point is written with its status and placeholders, and `batch_commit`
+!> returns err_points_failed (exit status 3) naming the first.
 !>
 !>```fortran
 !> type(batch_t) :: batch
@@ -24,19 +26,20 @@
 !> if (allocated(error)) then
 !>    call batch_discard(batch)
 !> else
-!>    call batch_commit(batch, error)
+!>    call batch_commit(batch, error)   ! err_points_failed: written, with failed points
 !> end if
 !>```
 module hillstab_batch
    use hillstab_kinds, only: wp, int64
-   use hillstab_error, only: error_t, err_input, err_io, err_invalid_parameter
-   use hillstab_status, only: status_ok, status_roundoff, status_failed
+   use hillstab_error, only: error_t, err_input, err_io, err_invalid_parameter, err_points_failed
+   use hillstab_status, only: status_roundoff, status_failed, exit_points_failed
    use hillstab_coefficient, only: in_physical_domain
    use hillstab_scene, only: scene_t, task_chart, task_points, grid_value
+   use hillstab_coefficient, only: model_elastic
    use hillstab_output, only: output_file_t, write_header, write_text, commit_output, discard_output, &
       chart_columns, chart_line_length
-   use hillstab_tasks, only: chart_row, compute_points, chart_header, open_scene_output, point_failure, &
-      warn_inaccurate, progress_t, progress_begin, progress_update, progress_end
+   use hillstab_tasks, only: chart_row, compute_points, chart_header, open_scene_output, check_method_runs, &
+      warn_inaccurate, failed_points_error, progress_t, progress_begin, progress_update, progress_end
    implicit none
    private
    public :: batch_t, batch_result_t, batch_distributable, batch_plan, batch_unit_range, batch_compute, &
@@ -53,6 +56,8 @@ module hillstab_batch
       integer(int64) :: done = 0             !! points written so far
       integer(int64) :: n_inaccurate = 0     !! round-off limited points written so far
       real(wp) :: first_inaccurate(2) = 0.0_wp  !! (α, β) of the first of them
+      integer(int64) :: n_failed = 0         !! failed points written so far
+      real(wp) :: first_failed(2) = 0.0_wp   !! (α, β) of the first of them
    end type batch_t
 
    !> The computed text of one unit.
@@ -125,33 +130,30 @@ contains
       integer, intent(in) :: unit  !! 1 … batch%n_units
       type(batch_result_t), intent(out) :: result
       character(len=chart_line_length), allocatable :: lines(:)
-      logical, allocatable :: failed(:), inaccurate(:)
       integer(int64) :: first, last
       call batch_unit_range(batch, unit, first, last)
-      allocate (lines(first:last), failed(first:last), inaccurate(first:last))
+      allocate (lines(first:last), result%status(first:last))
       select case (batch%scene%task)
       case (task_chart)
-         call chart_row(batch%scene, unit, lines, failed, inaccurate)
+         call chart_row(batch%scene, unit, lines, result%status)
       case (task_points)
-         call compute_points(batch%scene, int(first), int(last), lines, failed, inaccurate)
+         call compute_points(batch%scene, int(first), int(last), lines, result%status)
       end select
       result%unit = unit
-      result%status = merge(status_failed, merge(status_roundoff, status_ok, inaccurate), failed)
       ! a chart's rows are blocks of constant α separated by one blank line
-      result%text = joined(lines, failed, batch%scene%task == task_chart .and. unit > 1)
+      result%text = joined(lines, batch%scene%task == task_chart .and. unit > 1)
    end subroutine batch_compute
 
-   !> Lines (trimmed) joined by new lines, with a leading new line if `separate`;
-   !> failed lines are left out (a unit with a failed point is never written).
-   pure function joined(lines, failed, separate) result(text)
+   !> Lines (trimmed) joined by new lines, with a leading new line if `separate`.
+   pure function joined(lines, separate) result(text)
       character(len=*), intent(in) :: lines(:)
-      logical, intent(in) :: failed(:), separate
+      logical, intent(in) :: separate
       character(len=:), allocatable :: text
       integer :: j, n, pos, total
       logical :: started
       total = 1
       do j = 1, size(lines)
-         if (.not. failed(j)) total = total + len_trim(lines(j)) + 1
+         total = total + len_trim(lines(j)) + 1
       end do
       allocate (character(len=total) :: text)
       pos = 0
@@ -161,7 +163,6 @@ contains
       end if
       started = .false.
       do j = 1, size(lines)
-         if (failed(j)) cycle
          if (started) then
             text(pos + 1:pos + 1) = new_line("a")
             pos = pos + 1
@@ -187,38 +188,38 @@ contains
       call open_scene_output(s, batch%file, error)
       if (allocated(error)) return
       if (s%task == task_chart) then
+         call check_method_runs(s, error)
+         if (allocated(error)) then
+            call discard_output(batch%file)
+            return
+         end if
          outside = .not. (in_physical_domain(s%chart%alpha_min, s%chart%beta_min) .and. &
                           in_physical_domain(s%chart%alpha_max, s%chart%beta_max))
       else
          outside = .not. all(in_physical_domain(s%points(1, :), s%points(2, :)))
       end if
-      call write_header(batch%file, chart_header(s, outside), chart_columns(damped), error)
+      call write_header(batch%file, chart_header(s, outside), chart_columns(damped, s%model == model_elastic, &
+         s%physical), error)
       if (allocated(error)) then
          call discard_output(batch%file)
          return
       end if
       batch%done = 0
       batch%n_inaccurate = 0
+      batch%n_failed = 0
       call progress_begin(batch%progress, batch%n_points, quiet)
    end subroutine batch_open
 
-   !> Append a unit's text to the file; units must come in order 1, 2, …. A unit with a
-   !> failed point is not written: `error` names the first such point (computed again
-   !> here, so the message is that of a serial run) and the file must be discarded.
+   !> Append a unit's text to the file and count its round-off limited and failed
+   !> points; units must come in order 1, 2, …. An error (the file cannot be written)
+   !> means the file must be discarded.
    subroutine batch_write(batch, result, error)
       type(batch_t), intent(inout) :: batch
       type(batch_result_t), intent(in) :: result
       type(error_t), allocatable, intent(out) :: error
       integer(int64) :: first, last
-      real(wp) :: point(2)
       integer :: j
       call batch_unit_range(batch, result%unit, first, last)
-      if (any(result%status == status_failed)) then
-         j = findloc(result%status, status_failed, dim=1)
-         point = point_of(batch, first + j - 1)
-         call point_failure(batch%scene, point(1), point(2), error)
-         return
-      end if
       call write_text(batch%file, result%text, error)
       if (allocated(error)) return
       if (any(result%status == status_roundoff)) then
@@ -226,17 +227,26 @@ contains
          if (batch%n_inaccurate == 0) batch%first_inaccurate = point_of(batch, first + j - 1)
          batch%n_inaccurate = batch%n_inaccurate + count(result%status == status_roundoff)
       end if
+      if (any(result%status == status_failed)) then
+         j = findloc(result%status, status_failed, dim=1)
+         if (batch%n_failed == 0) batch%first_failed = point_of(batch, first + j - 1)
+         batch%n_failed = batch%n_failed + count(result%status == status_failed)
+      end if
       batch%done = last
       call progress_update(batch%progress, batch%done)
    end subroutine batch_write
 
    !> Finish the file (rename it onto its name) and warn about round-off limited points.
+   !> With failed points the file is written and `error` is err_points_failed, naming the
+   !> first (computed again here, so the message is that of a serial run).
    subroutine batch_commit(batch, error)
       type(batch_t), intent(inout) :: batch
       type(error_t), allocatable, intent(out) :: error
       call progress_end(batch%progress)
       call commit_output(batch%file, error)
-      if (.not. allocated(error)) call warn_inaccurate(batch%scene, batch%n_inaccurate, batch%first_inaccurate)
+      if (allocated(error)) return
+      call warn_inaccurate(batch%scene, batch%n_inaccurate, batch%first_inaccurate)
+      call failed_points_error(batch%scene, batch%n_failed, batch%n_points, batch%first_failed, error)
    end subroutine batch_commit
 
    !> Abandon the file: the temporary file is deleted, the final name left as it was.
@@ -271,12 +281,15 @@ contains
    end subroutine run_batch
 
    !> The exit status of a run that ended with `error`: 2 for bad input (scene, points
-   !> file, output path), 1 when a computation failed.
+   !> file, output path), 3 when the file was written but some points failed
+   !> (err_points_failed), 1 when a computation failed otherwise.
    pure integer function exit_status(error)
       type(error_t), intent(in) :: error
       select case (error%code)
       case (err_input, err_io, err_invalid_parameter)
          exit_status = 2
+      case (err_points_failed)
+         exit_status = exit_points_failed
       case default
          exit_status = 1
       end select

@@ -2,10 +2,10 @@
 !> serial task's (same data lines, same header apart from the output name) for charts
 !> with few and many rows and for points lists, also when the units are computed in
 !> reverse order and written in order; the units cover every point once; a failing
-!> point fails the run with the serial message and leaves no file; exit statuses.
+!> point is written with its status and reported with the serial message; exit statuses.
 module test_batch
    use hillstab_kinds, only: wp, int64
-   use hillstab_error, only: error_t, err_input, err_io, err_integration, err_invalid_parameter
+   use hillstab_error, only: error_t, err_input, err_io, err_integration, err_invalid_parameter, err_points_failed
    use hillstab_scene, only: scene_t, read_scene
    use hillstab_tasks, only: run_scene, output_path
    use hillstab_batch, only: batch_t, batch_result_t, batch_plan, batch_unit_range, batch_compute, batch_open, &
@@ -194,13 +194,16 @@ contains
       end do
    end subroutine units_cover_points
 
-   !> A point where the method fails (GSL rk8pd at beta = -1e6) fails the run with the
-   !> serial message; no file is left.
+   !> A point where the method fails (GSL rk8pd at beta = -1e6) is written with its status
+   !> and placeholders as in the serial run (same data lines), and the run reports
+   !> err_points_failed with the serial message.
    subroutine failing_point(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(scene_t) :: scene, serial
       type(error_t), allocatable :: error, serial_error
       character(len=:), allocatable :: points
+      character(len=1024), allocatable :: a(:), b(:)
+      integer :: na, nb
       points = scratch_prefix("batch_fail")//".dat"
       call write_file(points, [character(len=20) :: "1.0 2.0", "2.0 3.0", "3.0 -1e6", "4.0 2.0"])
       call scene_from("batch_fail", [padded("&scene task='points', method='gsl', output='"// &
@@ -209,16 +212,34 @@ contains
       serial%output = scene%output//"_serial"
       call run_scene(serial, .true., serial_error)
       call run_batch(scene, .true., error)
-      call check(ctx, allocated(error) .and. allocated(serial_error), "both runs fail")
+      call check(ctx, allocated(error) .and. allocated(serial_error), "both runs report the failure")
       if (allocated(error) .and. allocated(serial_error)) then
-         call check(ctx, error%code == err_integration .and. error%code == serial_error%code, "integration error")
+         call check(ctx, error%code == err_points_failed .and. error%code == serial_error%code, "err_points_failed")
          call check(ctx, contains_text(error%message, "beta = -1000000.0"), "names the point")
-         call check(ctx, error%message == serial_error%message, "the serial message")
-         call check(ctx, exit_status(error) == 1, "exit status 1")
+         call check(ctx, error%message == replace_text(serial_error%message, "_serial", ""), "the serial message")
+         call check(ctx, exit_status(error) == 3, "exit status 3")
       end if
-      call check(ctx, .not. file_exists(output_path(scene)), "no file")
+      call data_lines(output_path(serial), a, na)
+      call data_lines(output_path(scene), b, nb)
+      call check(ctx, size(a) == 4 .and. size(b) == 4, "all points written")
+      if (size(a) == size(b)) call check(ctx, all(a == b), "identical data lines")
+      call delete_file(output_path(serial))
+      call delete_file(output_path(scene))
       call delete_file(points)
    end subroutine failing_point
+
+   !> `text` with every `part` replaced by `by`.
+   pure function replace_text(text, part, by) result(out)
+      character(len=*), intent(in) :: text, part, by
+      character(len=:), allocatable :: out
+      integer :: k
+      out = text
+      k = index(out, part)
+      do while (k > 0)
+         out = out(:k - 1)//by//out(k + len(part):)
+         k = index(out, part)
+      end do
+   end function replace_text
 
    subroutine exit_statuses(ctx)
       type(test_context_t), intent(inout) :: ctx
@@ -226,5 +247,6 @@ contains
       call check(ctx, exit_status(error_t(err_io, "x")) == 2, "unwritable: 2")
       call check(ctx, exit_status(error_t(err_invalid_parameter, "x")) == 2, "invalid parameter: 2")
       call check(ctx, exit_status(error_t(err_integration, "x")) == 1, "computation: 1")
+      call check(ctx, exit_status(error_t(err_points_failed, "x")) == 3, "points failed: 3")
    end subroutine exit_statuses
 end module test_batch
