@@ -30,6 +30,9 @@ module hillstab_output
    real(wp), parameter :: clamp_magnitude = 1.0e300_wp
    !> log10|S| is written as at least this (only S = 0 exactly reaches it).
    real(wp), parameter :: log10_floor = -300.0_wp
+   !> The `stable` column of a marginal point (|S| within its error bound of the threshold):
+   !> neither 1 nor 0, half-way in a [0, 1] colour scale.
+   character(len=*), parameter :: marginal_text = " 0.5"
    !> log10_abs_S of a failed point: below `log10_floor`, so never a value.
    real(wp), parameter :: failed_log10_abs_s = -999.0_wp
    !> Characters in one chart line (see `chart_line`).
@@ -195,7 +198,11 @@ contains
       ! computing the point with method auto
       call put_point(line, pos, alpha, beta, alpha_text, beta_text)
       call put_es(line, pos, s, 16)
-      call put_flag(line, pos, f%stable)
+      if (f%marginal) then
+         call put_text(line, pos, marginal_text)
+      else
+         call put_flag(line, pos, f%stable)
+      end if
       call put_blank(line, pos)
       call put_es(line, pos, lambda_max, 10)
       call put_blank(line, pos)

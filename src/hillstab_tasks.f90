@@ -124,7 +124,7 @@ contains
          deallocate (error)
          if (present(status)) status = status_roundoff
       end if
-      f = floquet_from_trace(tr, scene%epsilon)
+      f = floquet_from_trace(tr, scene%epsilon, scene%method%tolerance)
    end subroutine evaluate_point
 
    !> Count the failed points of a task and name the first: err_points_failed, after the
@@ -213,7 +213,7 @@ contains
       type(scene_t), intent(in) :: scene
       logical, intent(in) :: outside  !! some point lies outside the physical domain
       character(len=:), allocatable :: lines(:)
-      character(len=200) :: extra(13)
+      character(len=200) :: extra(14)
       integer :: n
       n = 0
       n = n + 1; extra(n) = "method: "//method_description(scene)
@@ -225,6 +225,8 @@ contains
       else
          n = n + 1; extra(n) = "stable: 1 when |S| < 2"
       end if
+      n = n + 1; extra(n) = "stable = 0.5: marginal, |S| is within its error bound max(error_estimate, tolerance) "// &
+         "max(1, |S|) of the threshold, the value cannot decide"
       n = n + 1; extra(n) = "lambda_max: largest |multiplier| of x per period; mu: Floquet exponent ln(lambda_max)/2"
       if (scene%physical) then
          n = n + 1; extra(n) = "mu_per_s: the Floquet exponent per second, mu omega/pi (tau = omega t/pi)"
@@ -457,7 +459,7 @@ contains
             end if
             cycle
          end if
-         f = floquet_from_trace(traces(j), scene%epsilon)
+         f = floquet_from_trace(traces(j), scene%epsilon, scene%method%tolerance)
          if (present(beta_texts)) then
             lines(j) = chart_line(alpha, betas(j), f, damped, in_physical_domain(alpha, betas(j)), statuses(j), &
                                   alpha_text, beta_texts(j), elastic=elastic, per_second=per_second)

@@ -351,6 +351,9 @@ contains
       call check(ctx, abs(rows(3, 1) - 2.0_wp) <= 0.5_wp*rows(10, 1), "error within the estimate, alpha 9.85")
       call check(ctx, abs(rows(3, 3) - 2.0_wp) <= 0.5_wp*rows(10, 3), "error within the estimate, alpha 9.86")
       call check(ctx, rows(11, 2) == 0.0_wp .and. rows(11, 4) == 0.0_wp, "status 0 at beta = 1")
+      ! the verdict at beta = 0 (exact S = 2) is marginal, not flipped by the round-off in S
+      call check(ctx, rows(4, 1) == 0.5_wp .and. rows(4, 3) == 0.5_wp, "marginal (stable = 0.5) at beta = 0")
+      call check(ctx, rows(4, 2) == 0.0_wp .and. rows(4, 4) == 0.0_wp, "unstable at beta = 1")
       call check(ctx, rows(10, 2) <= 1.0e-12_wp .and. rows(10, 2) >= 0.0_wp .and. rows(10, 4) <= 1.0e-12_wp &
                  .and. rows(10, 4) >= 0.0_wp, "estimate within the tolerance at beta = 1")
       call delete_file(written)

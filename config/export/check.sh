@@ -76,7 +76,15 @@ fi
 
 "$prefix/bin/hillstab" --version | grep -q "^hillstab " || die "bin/hillstab --version"
 "$prefix/bin/hillstab" --help >/dev/null || die "bin/hillstab --help"
-say "bin/hillstab runs"
+tasks=$("$prefix/bin/hillstab" --help | sed -n 's/^Tasks: //p' | tr -d ',')
+[ -n "$tasks" ] || die "bin/hillstab --help lists no tasks"
+echo "3.7 2.47" > "$work/points.dat"
+for task in $tasks; do
+   "$prefix/bin/hillstab" --template "$task" > "$work/template_$task.nml" || die "hillstab --template $task"
+   (cd "$work" && "$prefix/bin/hillstab" --quiet "template_$task.nml") || die "the template of task $task does not run"
+   ls "$work"/template_"$task"_*.dat >/dev/null 2>&1 || die "the template of task $task wrote no file"
+done
+say "bin/hillstab runs the template of every task ($tasks)"
 
 for f in "$libdir/libhillstab.so" "$prefix/bin/hillstab"; do
    flags=$(readelf -lW "$f" | awk '$1 == "GNU_STACK" {print $7}')
