@@ -11,6 +11,8 @@
 #   make check-install  install into temporary prefixes (make and CMake routes) and build and run
 #                       consumers against each: C, Fortran and fixed-form FORTRAN 77 through
 #                       pkg-config, C and Fortran through CMake find_package
+#   make mpi            build hillstab and hillstab_mpi with CMake (installs Open MPI: scripts/setup_mpi.sh)
+#   make test-mpi       hillstab_mpi against hillstab at np = 1, 2, 3, bad input, failing points
 FPM ?= bash scripts/fpm.sh
 ifeq ($(origin FC),default)
 FC = gfortran
@@ -29,7 +31,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug setup bench lib install check-install clean
+.PHONY: run test test-debug setup bench lib install check-install clean mpi test-mpi
 
 setup:
 	@bash scripts/setup.sh
@@ -90,6 +92,14 @@ check-install:
 	      >/dev/null && cmake --build build/cmake_check -j 2 >/dev/null && cmake --install build/cmake_check >/dev/null \
 	   && bash config/export/check.sh $(CURDIR)/build/_install_cmake cmake; \
 	else echo "check-install: cmake not found, CMake route not checked"; fi
+
+mpi:
+	bash scripts/setup_mpi.sh
+	cmake -S . -B build/cmake_mpi -DHILLSTAB_MPI=ON -DCMAKE_BUILD_TYPE=Release
+	cmake --build build/cmake_mpi -j 2
+
+test-mpi:
+	bash scripts/test_mpi.sh
 
 clean:
 	rm -rf build out

@@ -40,6 +40,9 @@ module hillstab_tasks
    implicit none
    private
    public :: run_scene_file, run_scene, output_path
+   ! the pieces a distributed driver (hillstab_batch, the MPI program) shares with the serial tasks
+   public :: chart_row, compute_points, chart_header, open_scene_output, check_method_runs, warn_inaccurate, &
+      failed_points_error, progress_t, progress_begin, progress_update, progress_end
 
    !> Progress on stderr for runs longer than about a second.
    type :: progress_t
@@ -298,22 +301,18 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(output_file_t) :: file
       type(progress_t) :: progress
-      type(floquet_t) :: f
-      type(error_t), allocatable :: cause
       character(len=chart_line_length), allocatable :: lines(:)
-      logical, allocatable :: failed(:)
       logical :: damped, outside
-      real(wp) :: alpha, beta
+      real(wp) :: alpha
       real(wp), allocatable :: all_betas(:)
       character(len=23), allocatable :: beta_texts(:)
-      type(batch_plan_t) :: plan
       logical :: stopped
       character(len=chart_line_length), allocatable :: block_lines(:, :, :)
       integer, allocatable :: block_status(:, :, :), statuses(:)
       integer(int64) :: n_inaccurate, n_failed
       real(wp) :: first_inaccurate(2), first_failed(2)
       integer :: group, n_groups, g
-      integer :: i, j, n_alpha, n_beta, c, chunk, n_chunks, first, last
+      integer :: i, j, n_alpha, n_beta
 
       n_alpha = scene%chart%n_alpha
       n_beta = scene%chart%n_beta
@@ -321,17 +320,10 @@ contains
       ! an unwritable output path fails before any computing
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
-      ! a method that cannot run at all (bad parameters) fails at the first point; a point
-      ! where the computation fails is written with its status
-      alpha = scene%chart%alpha_min
-      beta = scene%chart%beta_min
-      call evaluate_point(scene, alpha, beta, f, cause)
-      if (allocated(cause)) then
-         if (cause%code == err_invalid_parameter) then
-            call point_error(scene, alpha, beta, cause, error)
-            call discard_output(file)
-            return
-         end if
+      call check_method_runs(scene, error)
+      if (allocated(error)) then
+         call discard_output(file)
+         return
       end if
       all_betas = [(grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j), j=1, n_beta)]
       allocate (beta_texts(n_beta))
@@ -351,7 +343,7 @@ contains
       stopped = .false.
       n_inaccurate = 0
       n_failed = 0
-      if (n_alpha >= 4*max_threads()) then
+      if (rows_in_parallel(scene)) then
          ! groups of rows computed in parallel (mesh preparation, integration and
          ! formatting on every core) into one of two buffers, while one thread writes the
          ! previous group from the other buffer; a group holds a few rows per thread, so
@@ -388,19 +380,9 @@ contains
       else
          ! few rows: the points of each row in parallel chunks sharing the prepared meshes
          allocate (lines(n_beta), statuses(n_beta))
-         chunk = max(16, n_beta/(8*max_threads()))
-         n_chunks = (n_beta + chunk - 1)/chunk
          do i = 1, n_alpha
             alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i)
-            call prepare_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), all_betas, scene%method, plan)
-            !$omp parallel do schedule(dynamic) default(shared) private(c, first, last)
-            do c = 1, n_chunks
-               first = (c - 1)*chunk + 1
-               last = min(n_beta, c*chunk)
-               call compute_row(scene, alpha, all_betas(first:last), damped, lines(first:last), statuses(first:last), &
-                  plan, beta_texts(first:last))
-            end do
-            !$omp end parallel do
+            call compute_row_in_chunks(scene, alpha, all_betas, damped, lines, statuses, beta_texts)
             call finish_row(i, alpha, lines, statuses)
             if (stopped) exit
          end do
@@ -491,33 +473,82 @@ contains
       end do
    end subroutine compute_row
 
-   !> The points task.
-   subroutine run_points(scene, quiet, error)
+   !> A chart computes whole rows in parallel when it has enough of them, else the
+   !> chunks of each row in parallel.
+   logical function rows_in_parallel(scene)
       type(scene_t), intent(in) :: scene
-      logical, intent(in) :: quiet
-      type(error_t), allocatable, intent(out) :: error
-      type(output_file_t) :: file
-      type(progress_t) :: progress
+      rows_in_parallel = scene%chart%n_alpha >= 4*max_threads()
+   end function rows_in_parallel
+
+   !> `compute_row` on a whole row, split into chunks computed in parallel that share
+   !> the meshes prepared for the row.
+   subroutine compute_row_in_chunks(scene, alpha, betas, damped, lines, statuses, beta_texts)
+      type(scene_t), intent(in) :: scene
+      real(wp), intent(in) :: alpha, betas(:)
+      logical, intent(in) :: damped
+      character(len=*), intent(out) :: lines(:)
+      integer, intent(out) :: statuses(:)
+      character(len=23), intent(in) :: beta_texts(:)
+      type(batch_plan_t) :: plan
+      integer :: c, chunk, n_chunks, first, last, n
+      n = size(betas)
+      chunk = max(16, n/(8*max_threads()))
+      n_chunks = (n + chunk - 1)/chunk
+      call prepare_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), betas, scene%method, plan)
+      !$omp parallel do schedule(dynamic) default(shared) private(c, first, last)
+      do c = 1, n_chunks
+         first = (c - 1)*chunk + 1
+         last = min(n, c*chunk)
+         call compute_row(scene, alpha, betas(first:last), damped, lines(first:last), statuses(first:last), &
+            plan, beta_texts(first:last))
+      end do
+      !$omp end parallel do
+   end subroutine compute_row_in_chunks
+
+   !> Lines of row `i` of a chart scene (α = the i-th grid value, all β), computed exactly as
+   !> the chart task computes them, so that a driver computing rows elsewhere writes the
+   !> same file.
+   subroutine chart_row(scene, i, lines, statuses)
+      type(scene_t), intent(in) :: scene  !! a chart scene
+      integer, intent(in) :: i            !! row index, 1 … n_alpha
+      character(len=*), intent(out) :: lines(:)  !! n_beta lines of `chart_line_length` characters
+      integer, intent(out) :: statuses(:)  !! per point: status_ok, status_roundoff or status_failed
+      real(wp), allocatable :: betas(:)
+      character(len=23), allocatable :: beta_texts(:)
+      real(wp) :: alpha
+      integer :: j, n_beta
+      n_beta = scene%chart%n_beta
+      betas = [(grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j), j=1, n_beta)]
+      allocate (beta_texts(n_beta))
+      do j = 1, n_beta
+         beta_texts(j) = format_es(betas(j), 16)
+      end do
+      alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, scene%chart%n_alpha, i)
+      if (rows_in_parallel(scene)) then
+         call compute_row(scene, alpha, betas, scene%epsilon > 0.0_wp, lines, statuses, beta_texts=beta_texts)
+      else
+         call compute_row_in_chunks(scene, alpha, betas, scene%epsilon > 0.0_wp, lines, statuses, beta_texts)
+      end if
+   end subroutine chart_row
+
+   !> Lines of the points `first` … `last` of a points scene (in parallel); a failed point
+   !> gets its placeholder line.
+   subroutine compute_points(scene, first, last, lines, statuses)
+      type(scene_t), intent(in) :: scene  !! a points scene
+      integer, intent(in) :: first, last  !! range of point indices
+      character(len=*), intent(out) :: lines(first:)  !! one chart line per point
+      integer, intent(out) :: statuses(first:)  !! per point: status_ok, status_roundoff or status_failed
       type(floquet_t) :: f
       type(error_t), allocatable :: cause
-      character(len=chart_line_length), allocatable :: lines(:)
-      integer, allocatable :: statuses(:)
-      logical :: damped
-      integer :: k, n
       real(wp), allocatable :: per_second
-
+      logical :: damped
+      integer :: k
       ! ω/π turns a rate per unit τ into a rate per second; left unallocated (an absent
       ! optional argument of chart_line: no mu_per_s column) when the scene does not know ω
       if (scene%physical) per_second = scene%pendulum%omega/pi
-      n = size(scene%points, 2)
       damped = scene%epsilon > 0.0_wp
-      call open_scene_output(scene, file, error)
-      if (allocated(error)) return
-      allocate (lines(n), statuses(n))
-      statuses = status_ok
-      call progress_begin(progress, int(n, int64), quiet)
       !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause)
-      do k = 1, n
+      do k = first, last
          call evaluate_point(scene, scene%points(1, k), scene%points(2, k), f, cause, statuses(k))
          if (statuses(k) == status_failed) then
             lines(k) = failed_chart_line(scene%points(1, k), scene%points(2, k), damped, &
@@ -530,6 +561,45 @@ contains
          end if
       end do
       !$omp end parallel do
+   end subroutine compute_points
+
+   !> A chart whose method cannot run at all (bad parameters) fails at its first point,
+   !> before anything is written; a point where the computation fails is written with
+   !> its status instead.
+   subroutine check_method_runs(scene, error)
+      type(scene_t), intent(in) :: scene  !! a chart scene
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: cause
+      type(floquet_t) :: f
+      real(wp) :: alpha, beta
+      alpha = scene%chart%alpha_min
+      beta = scene%chart%beta_min
+      call evaluate_point(scene, alpha, beta, f, cause)
+      if (allocated(cause)) then
+         if (cause%code == err_invalid_parameter) call point_error(scene, alpha, beta, cause, error)
+      end if
+   end subroutine check_method_runs
+
+   !> The points task.
+   subroutine run_points(scene, quiet, error)
+      type(scene_t), intent(in) :: scene
+      logical, intent(in) :: quiet
+      type(error_t), allocatable, intent(out) :: error
+      type(output_file_t) :: file
+      type(progress_t) :: progress
+      character(len=chart_line_length), allocatable :: lines(:)
+      integer, allocatable :: statuses(:)
+      logical :: damped
+      integer :: k, n
+
+      n = size(scene%points, 2)
+      damped = scene%epsilon > 0.0_wp
+      call open_scene_output(scene, file, error)
+      if (allocated(error)) return
+      allocate (lines(n), statuses(n))
+      statuses = status_ok
+      call progress_begin(progress, int(n, int64), quiet)
+      call compute_points(scene, 1, n, lines, statuses)
       call progress_update(progress, int(n, int64))
       call progress_end(progress)
       call write_header(file, chart_header(scene, .not. all(in_physical_domain(scene%points(1, :), &
