@@ -1,16 +1,20 @@
-!> The hillstab command line: `hillstab [--quiet] SCENE.nml...`, `--help`, `--version`.
+!> The hillstab command line: `hillstab [--quiet] SCENE.nml...`, `--template TASK`, `--help`,
+!> `--version`.
 !>
 !> Runs each scene in turn. Output goes to files named in the scenes; progress
-!> and errors go to stderr; stdout carries only --help and --version.
+!> and errors go to stderr; stdout carries only --template, --help and --version.
 !> Exit status: 0 on success, 2 for bad input (scene, points file, output path,
 !> command line) or an output file that cannot be written completely, 1 when a
-!> computation fails, 128 + N after signal N (SIGINT, SIGTERM, SIGHUP), the
-!> unfinished output file removed.
+!> computation fails, 3 (exit_points_failed) when a file was written but some of its
+!> points failed (status 2 in their rows), 128 + N after signal N (SIGINT, SIGTERM,
+!> SIGHUP), the unfinished output file removed.
 program hillstab_cli
    use hillstab_kinds, only: version_string
-   use hillstab_error, only: error_t, err_input, err_io, err_invalid_parameter
+   use hillstab_error, only: error_t, err_input, err_io, err_invalid_parameter, err_points_failed
+   use hillstab_status, only: exit_points_failed
    use hillstab_tasks, only: run_scene_file
    use hillstab_signals, only: install_signal_cleanup
+   use hillstab_templates, only: template_task_names, scene_template
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use, intrinsic :: ieee_arithmetic, only: ieee_set_flag, ieee_all
    implicit none
@@ -19,6 +23,7 @@ program hillstab_cli
    character(len=:), allocatable :: scenes(:)
    logical :: quiet
    integer :: i, n_scenes
+   logical :: points_failed
    integer, parameter :: max_path = 4096
    character(len=*), parameter :: max_path_text = "4096"
 
@@ -35,6 +40,9 @@ program hillstab_cli
       case ("-V", "--version")
          write (output_unit, '(a)') "hillstab "//version_string
          call quit("", 0)
+      case ("-t", "--template")
+         call print_template(i + 1)
+         call quit("", 0)
       case ("-q", "--quiet")
          quiet = .true.
       case default
@@ -42,7 +50,7 @@ program hillstab_cli
             call quit("hillstab: unknown option '"//argument//"' (see hillstab --help)", 2)
          end if
          if (len(argument) > max_path) then
-            call quit("hillstab: scene path longer than "//trim(adjustl(max_path_text))//" characters", 2)
+            call quit("hillstab: scene path longer than "//max_path_text//" characters", 2)
          end if
          n_scenes = n_scenes + 1
          scenes(n_scenes) = argument
@@ -50,10 +58,15 @@ program hillstab_cli
    end do
    if (n_scenes == 0) call quit("usage: hillstab [--quiet] SCENE.nml... (see hillstab --help)", 2)
 
+   points_failed = .false.
    do i = 1, n_scenes
       call run_scene_file(trim(scenes(i)), quiet, error, written)
       if (allocated(error)) then
          select case (error%code)
+         case (err_points_failed)
+            ! the file is written; the message says where (also with --quiet: it qualifies the file)
+            write (error_unit, '(a)') "hillstab: "//error%message
+            points_failed = .true.
          case (err_input, err_io, err_invalid_parameter)
             call quit("hillstab: "//error%message, 2)
          case default
@@ -62,6 +75,7 @@ program hillstab_cli
       end if
       if (.not. quiet) write (error_unit, '(a)') "hillstab: wrote "//written
    end do
+   if (points_failed) call quit("", exit_points_failed)
    call quit("", 0)
 
 contains
@@ -81,6 +95,7 @@ contains
       character(len=*), intent(in) :: message
       integer, intent(in) :: status
       if (len(message) > 0) write (error_unit, '(a)') message
+      ! free what the program allocated, so that memory checkers see no leak
       if (allocated(scenes)) deallocate (scenes)
       if (allocated(argument)) deallocate (argument)
       if (allocated(written)) deallocate (written)
@@ -89,21 +104,54 @@ contains
       stop status, quiet=.true.
    end subroutine quit
 
+   !> The commented scene of the task named by argument `k` on stdout; exit 2 when
+   !> it is missing or unknown.
+   subroutine print_template(k)
+      integer, intent(in) :: k
+      character(len=:), allocatable :: text
+      type(error_t), allocatable :: template_error
+      if (k > command_argument_count()) then
+         call quit("hillstab: --template needs a task: "//task_list()//" (see hillstab --help)", 2)
+      end if
+      call scene_template(command_argument(k), text, template_error)
+      if (allocated(template_error)) call quit("hillstab: "//template_error%message, 2)
+      write (output_unit, '(a)') text
+   end subroutine print_template
+
+   !> The tasks that have a template, comma-separated.
+   function task_list() result(text)
+      character(len=:), allocatable :: text
+      character(len=:), allocatable :: names(:)
+      integer :: k
+      names = template_task_names()
+      text = trim(names(1))
+      do k = 2, size(names)
+         text = text//", "//trim(names(k))
+      end do
+   end function task_list
+
    subroutine print_help()
       write (output_unit, '(a)') &
          "usage: hillstab [--quiet] SCENE.nml...", &
+         "       hillstab --template TASK > SCENE.nml", &
          "", &
          "Stability charts of the elastic pendulum (Hill equation x'' + Q(tau) x = 0).", &
-         "Each SCENE is a namelist file (&scene plus &chart, &points or &coefficient);", &
+         "Each SCENE is a namelist file (&scene plus the group of its task);", &
          "results go to <output>_<task>.dat, gnuplot-ready. An output file can be given", &
-         "as SCENE to repeat its run. The README has the full namelist reference.", &
+         "as SCENE to repeat its run.", &
          "", &
-         "  -q, --quiet    no progress or messages on stderr (errors still)", &
-         "  -h, --help     this text", &
-         "  -V, --version  the version", &
+         "Tasks: "//task_list(), &
+         "  (hillstab --template TASK prints a complete scene for TASK, every variable", &
+         "  at its default with a comment)", &
+         "", &
+         "  -q, --quiet          no progress or messages on stderr (errors still)", &
+         "  -t, --template TASK  a commented scene for TASK on stdout", &
+         "  -h, --help           this text", &
+         "  -V, --version        the version", &
          "", &
          "Exit status: 0 success, 2 bad input or an output file that cannot be written,", &
-         "1 a computation failed, 128 + N killed by signal N (SIGINT, SIGTERM, SIGHUP:", &
-         "the unfinished output file is removed)."
+         "1 a computation failed, 3 files written but some points failed (status 2 in", &
+         "their rows), 128 + N killed by signal N (SIGINT, SIGTERM, SIGHUP: the unfinished", &
+         "output file is removed)."
    end subroutine print_help
 end program hillstab_cli

@@ -14,6 +14,7 @@ module hillstab
    use hillstab_status
    use hillstab_stats
    use hillstab_coefficient
+   use hillstab_units
    use hillstab_transfer
    use hillstab_formulas
    use hillstab_floquet
@@ -21,8 +22,10 @@ module hillstab
    use hillstab_auto
    use hillstab_monodromy
    use hillstab_gsl
+   use hillstab_hill_method
    use hillstab_rk
    use hillstab_monodromy_rk
+   use hillstab_pendulum
    use hillstab_scene
    use hillstab_output
    use hillstab_tasks

@@ -41,6 +41,8 @@ module hillstab_auto
    !> Gauss–Legendre 3-point offsets on [0, 1]: 1/2 ∓ √15/10.
    real(wp), parameter :: gauss3_offset = 0.38729833462074168851792653997823996_wp
    real(wp), parameter :: sqrt15 = 3.87298334620741688517926539978239961_wp
+   !> Error estimate (relative to max(1, |S|)) of the exact constant-coefficient trace at α = 0.
+   real(wp), parameter :: exact_transfer_error = 4.0_wp*epsilon(1.0_wp)
    !> Safety factor on the Richardson estimate.
    real(wp), parameter :: richardson_safety = 1.0_wp
    !> Largest number of Magnus steps on [0, 1].
@@ -215,7 +217,7 @@ contains
       integer, allocatable :: ns(:), n_coarse(:)
       logical, allocatable :: pending(:)
       type(trace_t), allocatable :: fine(:), coarse(:)
-      real(wp), allocatable :: floors(:), coarse_floors(:)
+      real(wp), allocatable :: floors(:), coarse_floors(:), estimates(:)
       real(wp) :: noise
       integer :: j, m, pass
       character(len=120) :: buffer
@@ -248,6 +250,8 @@ contains
       if (alpha == 0.0_wp) then
          do j = 1, m
             traces(j) = constant_trace(c0s(j) + c1s(j)*shape_at_zero_amplitude(kind))
+            ! one exact transfer matrix: only the rounding of its few operations
+            traces(j)%error_estimate = exact_transfer_error
          end do
          stats%n_steps = stats%n_steps + m
          stats%n_evaluations = stats%n_evaluations + m
@@ -257,7 +261,7 @@ contains
          ns(j) = steps_for_point(base, kind, c0s(j), c1s(j))
       end do
       ! first pass: S_N and S_{N/2} of all points sharing N together, in lanes
-      allocate (fine(m), coarse(m), n_coarse(m), pending(m), floors(m), coarse_floors(m))
+      allocate (fine(m), coarse(m), n_coarse(m), pending(m), floors(m), coarse_floors(m), estimates(m))
       call traces_in_lanes(ns, fine, floors)
       n_coarse = ns/2
       call traces_in_lanes(n_coarse, coarse, coarse_floors)
@@ -273,6 +277,7 @@ contains
             estimate = richardson_safety*trace_difference(fine(j), coarse(j))/ &
                        ((real(ns(j), wp)/n_coarse(j))**6 - 1.0_wp)
             noise = max(floors(j), coarse_floors(j))
+            estimates(j) = max(estimate, noise)
             if (estimate <= tolerance .and. noise <= tolerance) then
                pending(j) = .false.
             else if (estimate <= max(tolerance, 2.0_wp*noise)) then
@@ -299,6 +304,7 @@ contains
          call traces_in_lanes(ns, fine, floors, pending)
       end do
       traces = fine
+      traces%error_estimate = estimates
    contains
       !> S on meshes of n(j) steps for the selected points, grouped by n and propagated in lanes.
       subroutine traces_in_lanes(n, result, floors, selected)

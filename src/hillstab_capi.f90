@@ -1,7 +1,9 @@
 !> C-callable entry points (`bind(C)`, `value` scalars, names prefixed `hillstab_`).
 !> The matching declarations are in include/hillstab.h. Every function returns a
 !> status: 0 on success, otherwise one of the hillstab_error codes; outputs are
-!> left untouched on failure. `hillstab_error_message` turns a status into text.
+!> left untouched on failure. `hillstab_error_message` turns a status into the name of
+!> its code; `hillstab_last_error` gives the full message of the calling thread's most
+!> recent failed call (the same text as `error_t%message` in Fortran).
 !>
 !>```c
 !> double s, log_abs; int overflow;
@@ -17,10 +19,11 @@ module hillstab_capi
    use hillstab_formulas, only: trace_damped_paper
    use hillstab_floquet, only: floquet_t, floquet_from_trace
    use hillstab_monodromy, only: method_t, monodromy_trace
+   use hillstab_outcome, only: record_outcome, get_last_error
    implicit none
    private
    public :: hillstab_c_coefficient, hillstab_c_trace, hillstab_c_floquet, hillstab_c_trace_paper, &
-      hillstab_c_error_message
+      hillstab_c_error_message, hillstab_c_last_error
 
 contains
 
@@ -42,6 +45,7 @@ contains
       type(error_t), allocatable :: error
       m = hill_model_t(int(model), real(alpha, wp), real(beta, wp), real(epsilon, wp))
       call check_model(m, error)
+      call record_outcome(error)
       if (allocated(error)) then
          status = int(error%code, c_int)
          return
@@ -96,6 +100,7 @@ contains
       type(floquet_t) :: f
       type(error_t), allocatable :: error
       call monodromy_trace(model, method, tr, error)
+      call record_outcome(error)
       if (allocated(error)) then
          info = int(error%code, c_int)
          return
@@ -129,17 +134,39 @@ contains
       integer(c_size_t), value, intent(in) :: length
       character(kind=c_char), intent(out) :: buffer(length)
       character(len=:), allocatable :: text
-      integer :: i, n
-      if (length < 1) return
       if (status == 0) then
          text = "success"
       else
          text = error_code_name(int(status))
       end if
-      n = min(len(text), int(length) - 1)
+      call copy_c_string(text, buffer, length)
+   end subroutine hillstab_c_error_message
+
+   !> Copy the message of the calling thread's most recent status-returning call
+   !> (empty when it succeeded) into `buffer`, NUL-terminated and cut to `length` bytes
+   !> (`length` = 0: nothing is written); return that call's status.
+   function hillstab_c_last_error(buffer, length) result(status) bind(C, name="hillstab_last_error")
+      integer(c_size_t), value, intent(in) :: length    !! size of `buffer` in bytes
+      character(kind=c_char), intent(out) :: buffer(length)  !! receives the message
+      integer(c_int) :: status
+      character(len=:), allocatable :: text
+      integer :: code
+      call get_last_error(code, text)
+      call copy_c_string(text, buffer, length)
+      status = int(code, c_int)
+   end function hillstab_c_last_error
+
+   !> `text` into a C buffer of `length` bytes, cut to length − 1 and NUL-terminated.
+   subroutine copy_c_string(text, buffer, length)
+      character(len=*), intent(in) :: text
+      integer(c_size_t), intent(in) :: length
+      character(kind=c_char), intent(inout) :: buffer(length)
+      integer :: i, n
+      if (length < 1) return
+      n = int(min(int(len(text), c_size_t), length - 1))
       do i = 1, n
          buffer(i) = text(i:i)
       end do
       buffer(n + 1) = c_null_char
-   end subroutine hillstab_c_error_message
+   end subroutine copy_c_string
 end module hillstab_capi

@@ -99,10 +99,11 @@ contains
       end select
    end subroutine check_model
 
-   !> True when (α, β) describes a real spring pendulum: 0 ≤ α < π², 0 < β < π² (r0 > 0).
+   !> True when (α, β) describes a real spring pendulum: 0 ≤ α < π² (0 ≤ a < ρ),
+   !> 0 ≤ β < π² (g ≥ 0, r0 > 0; β = 0 is the pendulum without gravity).
    elemental logical function in_physical_domain(alpha, beta)
       real(wp), intent(in) :: alpha, beta
-      in_physical_domain = alpha >= 0.0_wp .and. alpha < pi2 .and. beta > 0.0_wp .and. beta < pi2
+      in_physical_domain = alpha >= 0.0_wp .and. alpha < pi2 .and. beta >= 0.0_wp .and. beta < pi2
    end function in_physical_domain
 
    !> Damping shift −ε²/4 of eq. (47).

@@ -10,7 +10,8 @@ module hillstab_error
    implicit none
    private
    public :: error_t, set_error, error_code_name
-   public :: err_invalid_parameter, err_overflow, err_integration, err_io, err_input, err_singular, err_accuracy
+   public :: err_invalid_parameter, err_overflow, err_integration, err_io, err_input, err_singular, err_accuracy, &
+      err_points_failed
 
    !> A parameter is outside the domain where the quantity is defined.
    integer, parameter :: err_invalid_parameter = 1
@@ -27,6 +28,9 @@ module hillstab_error
    !> The requested accuracy is below what double precision allows for this problem;
    !> the best value is returned with this error.
    integer, parameter :: err_accuracy = 7
+   !> A task wrote its file, but some of its points could not be computed (they carry
+   !> status_failed of hillstab_status); the message counts them and names the first.
+   integer, parameter :: err_points_failed = 8
 
    !> Error descriptor: a code from the `err_*` constants and a readable message.
    type :: error_t
@@ -58,6 +62,7 @@ contains
       case (err_input); name = "invalid input"
       case (err_singular); name = "singular problem"
       case (err_accuracy); name = "accuracy not reached"
+      case (err_points_failed); name = "some points failed"
       case default; name = "error"
       end select
    end function error_code_name

@@ -445,7 +445,10 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp), intent(out), optional :: error_estimate
       type(scaled_matrix_t) :: m
-      call monodromy_magnus(model, order, tolerance, m, stats, error, error_estimate)
+      real(wp) :: estimate
+      call monodromy_magnus(model, order, tolerance, m, stats, error, estimate)
       tr = trace_of(m)
+      tr%error_estimate = estimate
+      if (present(error_estimate)) error_estimate = estimate
    end subroutine trace_magnus
 end module hillstab_magnus

@@ -24,7 +24,7 @@ module hillstab_monodromy_rk
    use hillstab_stats, only: work_stats_t, add_work
    use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
    use hillstab_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
-   use hillstab_rk, only: rk_options_t, rk_step_t, rk_integrate, rk_dopri5, rk_dop853
+   use hillstab_rk, only: rk_system_t, rk_options_t, rk_step_t, rk_integrate, rk_dopri5, rk_dop853
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -41,6 +41,15 @@ module hillstab_monodromy_rk
    real(wp), parameter :: tolerance_floor = 1.0e-15_wp
    !> A solution pair is rescaled when its largest component passes 2^200.
    integer, parameter :: rescale_exponent = 200
+
+   !> The even and odd solutions (u, u', v, v') of χ'' + q(τ) χ = 0 as one RK system; the
+   !> observer stops the integration before either pair can overflow.
+   type, extends(rk_system_t) :: even_odd_pair_t
+      type(hill_model_t) :: model
+   contains
+      procedure :: rhs => even_odd_rhs
+      procedure :: observe => watch_growth
+   end type even_odd_pair_t
 
 contains
 
@@ -64,6 +73,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer, intent(in), optional :: method  !! rk_dop853 (default) or rk_dopri5
       type(rk_options_t) :: options
+      type(even_odd_pair_t) :: pair
       type(work_stats_t) :: part
       real(wp) :: t, y(4), h_next, log_u, log_v
       integer :: e
@@ -88,6 +98,7 @@ contains
       options%rtol = rk_tolerances(tolerance, options%method)
       options%atol = options%rtol
       options%max_steps = 1000000
+      pair%model = model
 
       ! y = (u, u', v, v') with the even and odd initial values
       y = [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]
@@ -95,8 +106,7 @@ contains
       log_u = 0.0_wp
       log_v = 0.0_wp
       do
-         call rk_integrate(even_odd_pair, t, 1.0_wp, y, options, part, error, &
-                           observer=watch_growth, h_next=h_next)
+         call rk_integrate(pair, t, 1.0_wp, y, options, part, error, h_next=h_next)
          call add_work(stats, part)
          if (allocated(error)) then
             error%message = "monodromy_rk: "//error%message
@@ -118,30 +128,6 @@ contains
          call set_error(error, err_integration, "monodromy_rk: non-finite monodromy")
          m = scaled_matrix_t()
       end if
-
-   contains
-
-      !> χ'' = −q χ for both solutions: one evaluation of q per call.
-      subroutine even_odd_pair(tau, state, dydt)
-         real(wp), intent(in) :: tau, state(:)
-         real(wp), intent(out) :: dydt(:)
-         real(wp) :: q
-         q = hill_coefficient(model, tau)
-         dydt(1) = state(2)
-         dydt(2) = -q*state(1)
-         dydt(3) = state(4)
-         dydt(4) = -q*state(3)
-      end subroutine even_odd_pair
-
-      !> Stop before the solutions can overflow, so they can be rescaled.
-      subroutine watch_growth(step, stop)
-         type(rk_step_t), intent(in) :: step
-         logical, intent(inout) :: stop
-         if (step%t < 1.0_wp) then
-            stop = exponent(maxval(abs(step%y(1:2)))) > rescale_exponent &
-                   .or. exponent(maxval(abs(step%y(3:4)))) > rescale_exponent
-         end if
-      end subroutine watch_growth
    end subroutine monodromy_rk
 
    !> Trace S of the one-period monodromy of the χ equation by `monodromy_rk`.
@@ -162,4 +148,28 @@ contains
       end if
       tr = trace_of(m)
    end subroutine trace_rk
+
+   !> χ'' = −q χ for both solutions: one evaluation of q per call.
+   subroutine even_odd_rhs(self, t, y, dydt)
+      class(even_odd_pair_t), intent(inout) :: self
+      real(wp), intent(in) :: t, y(:)
+      real(wp), intent(out) :: dydt(:)
+      real(wp) :: q
+      q = hill_coefficient(self%model, t)
+      dydt(1) = y(2)
+      dydt(2) = -q*y(1)
+      dydt(3) = y(4)
+      dydt(4) = -q*y(3)
+   end subroutine even_odd_rhs
+
+   !> Stop before the solutions can overflow, so they can be rescaled.
+   subroutine watch_growth(self, step, stop)
+      class(even_odd_pair_t), intent(inout) :: self
+      type(rk_step_t), intent(in) :: step
+      logical, intent(inout) :: stop
+      if (step%t < 1.0_wp) then
+         stop = exponent(maxval(abs(step%y(1:2)))) > rescale_exponent &
+                .or. exponent(maxval(abs(step%y(3:4)))) > rescale_exponent
+      end if
+   end subroutine watch_growth
 end module hillstab_monodromy_rk

@@ -10,23 +10,35 @@
 !> copied from those codes (Dormand & Prince 1980 for DOPRI5 with Shampine's 1986 dense
 !> output; Prince & Dormand 1981 / Hairer et al. for DOP853 and its 7th-order extension).
 !>
-!> The right-hand side is any procedure with the `rk_rhs` interface; parameters are
-!> carried by internal procedures of the caller (the module has no state, so
-!> independent integrations may run in parallel threads).
+!> The system is an extension of the abstract type `rk_system_t`: its components carry
+!> the parameters, its deferred binding `rhs` computes f, and its binding `observe`
+!> (a no-op unless overridden) sees the initial point and every accepted step with its
+!> continuous extension (`rk_dense_value`) and may stop the integration. No procedure
+!> is passed as an argument, so callers need no internal procedures (gfortran would
+!> build trampolines for those and the program would need an executable stack). The
+!> module has no state: independent integrations may run in parallel threads.
 !>
 !>```fortran
+!> type, extends(rk_system_t) :: oscillator_t
+!>    real(wp) :: omega = 1.0_wp
+!> contains
+!>    procedure :: rhs => oscillator_rhs
+!> end type oscillator_t
+!> ...
+!> type(oscillator_t) :: oscillator
 !> type(rk_options_t) :: options
 !> type(error_t), allocatable :: error
 !> real(wp) :: t, y(2), t_out(3), y_out(2, 3)
 !> t = 0.0_wp; y = [1.0_wp, 0.0_wp]; t_out = [0.5_wp, 1.0_wp, 2.0_wp]
 !> options = rk_options_t(method=rk_dop853, rtol=1.0e-10_wp, atol=1.0e-10_wp)
 !> call rk_integrate(oscillator, t, 2.0_wp, y, options, error=error, t_out=t_out, y_out=y_out)
-!>contains
-!> subroutine oscillator(t, y, dydt)
+!> ...
+!> subroutine oscillator_rhs(self, t, y, dydt)
+!>    class(oscillator_t), intent(inout) :: self
 !>    real(wp), intent(in) :: t, y(:)
 !>    real(wp), intent(out) :: dydt(:)
-!>    dydt = [y(2), -y(1)]
-!> end subroutine oscillator
+!>    dydt = [y(2), -self%omega**2*y(1)]
+!> end subroutine oscillator_rhs
 !>```
 module hillstab_rk
    use hillstab_kinds, only: wp, int64
@@ -35,7 +47,7 @@ module hillstab_rk
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
-   public :: rk_rhs, rk_observer, rk_options_t, rk_step_t, rk_integrate, rk_dense_value
+   public :: rk_system_t, rk_rhs, rk_observe, rk_options_t, rk_step_t, rk_integrate, rk_dense_value
    public :: rk_dopri5, rk_dop853, rk_method_name, rk_method_order
 
    !> Dormand–Prince 5(4), 7 stages (FSAL: 6 evaluations per step), 4th-order dense output.
@@ -44,15 +56,6 @@ module hillstab_rk
    !> output at 3 more evaluations per step.
    integer, parameter :: rk_dop853 = 2
 
-   abstract interface
-      !> Right-hand side dydt = f(t, y) of the system.
-      subroutine rk_rhs(t, y, dydt)
-         import :: wp
-         real(wp), intent(in) :: t        !! independent variable
-         real(wp), intent(in) :: y(:)     !! state
-         real(wp), intent(out) :: dydt(:) !! derivative, same size as y
-      end subroutine rk_rhs
-   end interface
 
    !> Options of `rk_integrate`. Zero (or negative) values of the step-control
    !> parameters select the defaults of Hairer's codes for the chosen method.
@@ -60,6 +63,9 @@ module hillstab_rk
       integer :: method = rk_dop853       !! rk_dopri5 or rk_dop853
       real(wp) :: rtol = 1.0e-10_wp       !! relative tolerance (≥ 0)
       real(wp) :: atol = 1.0e-10_wp       !! absolute tolerance (> 0)
+      real(wp), allocatable :: atol_components(:)  !! per-component absolute tolerances (all > 0,
+                                          !! size of the state); when allocated they replace
+                                          !! `atol` (Hairer's ITOL = 1)
       real(wp) :: h_initial = 0.0_wp      !! first step; 0 → Hairer's initial guess (hinit)
       real(wp) :: h_max = 0.0_wp          !! largest |h|; 0 → |t_end − t|
       integer :: max_steps = 100000       !! attempted steps (accepted + rejected) before failing
@@ -87,14 +93,25 @@ module hillstab_rk
       real(wp), allocatable :: dense(:, :)  !! (n, 0:7) interpolation coefficients
    end type rk_step_t
 
+   !> A system y' = f(t, y) with its data. Extend it, put the parameters in components,
+   !> implement `rhs`; override `observe` to watch (or stop) the integration.
+   type, abstract :: rk_system_t
+   contains
+      !> f(t, y)
+      procedure(rk_rhs), deferred :: rhs
+      !> Called after the initial point and after every accepted step (default: nothing)
+      procedure :: observe => rk_observe
+   end type rk_system_t
+
    abstract interface
-      !> Called after the initial point and after every accepted step; set `stop` to
-      !> end the integration there (rk_integrate then returns t = step%t, no error).
-      subroutine rk_observer(step, stop)
-         import :: rk_step_t
-         type(rk_step_t), intent(in) :: step  !! the step just accepted
-         logical, intent(inout) :: stop       !! set .true. to stop after this step
-      end subroutine rk_observer
+      !> Right-hand side dydt = f(t, y) of the system.
+      subroutine rk_rhs(self, t, y, dydt)
+         import :: rk_system_t, wp
+         class(rk_system_t), intent(inout) :: self  !! the system and its data
+         real(wp), intent(in) :: t        !! independent variable
+         real(wp), intent(in) :: y(:)     !! state
+         real(wp), intent(out) :: dydt(:) !! derivative, same size as y
+      end subroutine rk_rhs
    end interface
 
    ! ---------------------------------------------------------------------------------
@@ -295,6 +312,15 @@ module hillstab_rk
 
 contains
 
+   !> Default observer: does nothing. Overrides are called after the initial point and
+   !> after every accepted step; setting `stop` ends the integration there
+   !> (rk_integrate then returns t = step%t, no error).
+   subroutine rk_observe(self, step, stop)
+      class(rk_system_t), intent(inout) :: self  !! the system and its data
+      type(rk_step_t), intent(in) :: step       !! the step just accepted (index 0: initial point)
+      logical, intent(inout) :: stop            !! set .true. to stop after this step
+   end subroutine rk_observe
+
    !> Name of a method constant.
    pure function rk_method_name(method) result(name)
       integer, intent(in) :: method
@@ -345,8 +371,8 @@ contains
    !> observer stopped it or it failed) and y the state there. On failure `error` is
    !> allocated (code err_integration or err_invalid_parameter) and t, y hold the last
    !> accepted point, never a non-finite value.
-   subroutine rk_integrate(f, t, t_end, y, options, stats, error, t_out, y_out, observer, h_next)
-      procedure(rk_rhs) :: f                   !! right-hand side
+   subroutine rk_integrate(system, t, t_end, y, options, stats, error, t_out, y_out, h_next)
+      class(rk_system_t), intent(inout) :: system  !! right-hand side, its data and its observer
       real(wp), intent(inout) :: t             !! start in, end reached out
       real(wp), intent(in) :: t_end            !! end of the interval (t_end < t integrates backwards)
       real(wp), intent(inout) :: y(:)          !! initial state in, final state out
@@ -357,13 +383,12 @@ contains
       type(error_t), allocatable, intent(out) :: error    !! allocated on failure
       real(wp), intent(in), optional :: t_out(:)  !! output times, monotone from t towards t_end
       real(wp), intent(out), optional :: y_out(:, :)  !! (size(y), size(t_out)) dense output there
-      procedure(rk_observer), optional :: observer  !! called after every accepted step
       real(wp), intent(out), optional :: h_next  !! predicted next step (to resume an integration)
 
       type(work_stats_t) :: work
       type(controller_t) :: control
       type(rk_step_t) :: step
-      real(wp), allocatable :: k(:, :), y_new(:), y_stage(:)
+      real(wp), allocatable :: k(:, :), y_new(:), y_stage(:), atol(:)
       real(wp) :: h, h_new, direction, err, fac11, fac, span
       integer :: n, n_stages, next_out, attempts
       logical :: finite, last, rejected_before, stop, want_dense
@@ -378,6 +403,11 @@ contains
          return
       end if
 
+      if (allocated(options%atol_components)) then
+         atol = options%atol_components
+      else
+         allocate (atol(n), source=options%atol)
+      end if
       want_dense = present(t_out) .or. options%dense_output
       n_stages = merge(7, 16, options%method == rk_dopri5)
       allocate (k(n, n_stages), y_new(n), y_stage(n))
@@ -401,7 +431,7 @@ contains
       end if
 
       stop = .false.
-      if (present(observer)) call observer(step, stop)
+      call system%observe(step, stop)
       if (stop) then
          call finish()
          return
@@ -433,6 +463,9 @@ contains
             call set_error(error, err_invalid_parameter, "rk_integrate: fixed_steps must be >= 0")
          else if (options%fixed_steps == 0 .and. (options%rtol < 0.0_wp .or. options%atol <= 0.0_wp)) then
             call set_error(error, err_invalid_parameter, "rk_integrate: need rtol >= 0 and atol > 0")
+         else if (.not. atol_components_valid()) then
+            call set_error(error, err_invalid_parameter, &
+               "rk_integrate: atol_components must have the size of y, be finite and > 0")
          else if (options%max_steps < 1) then
             call set_error(error, err_invalid_parameter, "rk_integrate: max_steps must be >= 1")
          else if (options%safety <= 1.0e-4_wp .or. options%safety >= 1.0_wp) then
@@ -457,6 +490,13 @@ contains
          end if
       end subroutine check_arguments
 
+      logical function atol_components_valid() result(valid)
+         valid = .true.
+         if (.not. allocated(options%atol_components)) return
+         valid = size(options%atol_components) == n
+         if (valid) valid = all(ieee_is_finite(options%atol_components)) .and. all(options%atol_components > 0.0_wp)
+      end function atol_components_valid
+
       logical function outputs_ordered()
          real(wp) :: dir, previous
          integer :: j
@@ -476,7 +516,7 @@ contains
       subroutine evaluate(tau, state, dydt)
          real(wp), intent(in) :: tau, state(:)
          real(wp), intent(out) :: dydt(:)
-         call f(tau, state, dydt)
+         call system%rhs(tau, state, dydt)
          work%n_evaluations = work%n_evaluations + 1
          finite = all(ieee_is_finite(dydt))
       end subroutine evaluate
@@ -533,7 +573,7 @@ contains
       real(wp) function initial_step(order) result(h_guess)
          integer, intent(in) :: order
          real(wp) :: sk(n), dnf, dny, der2, der12, h0, h1
-         sk = options%atol + options%rtol*abs(y)
+         sk = atol + options%rtol*abs(y)
          dnf = sum((k(:, 1)/sk)**2)
          dny = sum((y/sk)**2)
          if (dnf <= 1.0e-10_wp .or. dny <= 1.0e-10_wp) then
@@ -695,7 +735,7 @@ contains
             ! stage 7 is f at the new point: first stage of the next step (FSAL)
             call evaluate(tau + hh, y_new, k(:, 7)); if (.not. finite) return
             if (with_error) then
-               sk = options%atol + options%rtol*max(abs(y0), abs(y_new))
+               sk = atol + options%rtol*max(abs(y0), abs(y_new))
                y_stage = hh*(p5_e1*k(:, 1) + p5_e3*k(:, 3) + p5_e4*k(:, 4) + p5_e5*k(:, 5) &
                              + p5_e6*k(:, 6) + p5_e7*k(:, 7))
                err = sqrt(sum((y_stage/sk)**2)/n)
@@ -743,7 +783,7 @@ contains
             y_new = y0 + hh*k(:, 13)
             if (with_error) then
                ! Hairer's combined estimate err5²/sqrt(err5² + 0.01·err3²) (dop853.f, ERROR ESTIMATION)
-               sk = options%atol + options%rtol*max(abs(y0), abs(y_new))
+               sk = atol + options%rtol*max(abs(y0), abs(y_new))
                err3 = sum(((k(:, 13) - p8_bhh1*k(:, 1) - p8_bhh2*k(:, 9) - p8_bhh3*k(:, 12))/sk)**2)
                err5 = sum(((p8_er1*k(:, 1) + p8_er6*k(:, 6) + p8_er7*k(:, 7) + p8_er8*k(:, 8) &
                             + p8_er9*k(:, 9) + p8_er10*k(:, 10) + p8_er11*k(:, 11) + p8_er12*k(:, 12))/sk)**2)
@@ -786,7 +826,7 @@ contains
             k(:, 1) = k(:, 13)
          end if
          if (present(t_out)) call fill_outputs()
-         if (present(observer)) call observer(step, stop)
+         call system%observe(step, stop)
       end subroutine complete_step
 
       !> DOP853's 7th-order continuous extension: three more stages (14–16) and the

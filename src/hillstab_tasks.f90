@@ -8,32 +8,41 @@
 !>
 !> Each task computes only what its file holds. Errors come back in `error` with
 !> the scene file, group and variable named; no output file is created or touched
-!> unless the whole task succeeds.
+!> unless the task completes. A point that cannot be computed does not stop a chart
+!> or points task: its row carries status_failed (hillstab_status) and placeholders,
+!> the file is written, and `error` comes back with err_points_failed.
 !>
 !>```fortran
 !> type(error_t), allocatable :: error
 !> call run_scene_file("data/scenes/default_exact.nml", quiet=.false., error=error)
 !>```
 module hillstab_tasks
-   use hillstab_kinds, only: wp, int64, pi2, version_string
-   use hillstab_error, only: error_t, set_error, err_input, err_io, err_accuracy
+   use hillstab_kinds, only: wp, int64, pi, pi2, version_string
+   use hillstab_error, only: error_t, set_error, err_input, err_io, err_accuracy, err_invalid_parameter, &
+      err_points_failed
+   use hillstab_status, only: status_ok, status_roundoff, status_failed
    use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, hill_coefficient, &
       segment_coefficients, hill_period, in_physical_domain, sampling_name
    use hillstab_transfer, only: trace_t
    use hillstab_floquet, only: floquet_t, floquet_from_trace
+   use hillstab_units, only: equilibrium_length
    use hillstab_monodromy, only: monodromy_trace, monodromy_trace_batch, method_name, method_segments, &
       batch_plan_t, prepare_batch
    use hillstab_scene, only: scene_t, read_scene, scene_namelist, task_chart, task_points, task_coefficient, &
-      task_name, grid_value, real_text, integer_text
+      task_name, grid_value, real_text, integer_text, task_boundaries
+   use hillstab_task_boundaries, only: run_boundaries
    use hillstab_format, only: format_es
    use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, &
-      write_text, chart_columns, chart_line, chart_line_length, real_columns
+      write_text, chart_columns, chart_line, failed_chart_line, chart_line_length, real_columns
    use, intrinsic :: iso_fortran_env, only: error_unit
    use, intrinsic :: iso_c_binding, only: c_int
    !$ use omp_lib, only: omp_get_max_threads
    implicit none
    private
    public :: run_scene_file, run_scene, output_path
+   ! the pieces a distributed driver (hillstab_batch, the MPI program) shares with the serial tasks
+   public :: chart_row, compute_points, chart_header, open_scene_output, check_method_runs, warn_inaccurate, &
+      failed_points_error, progress_t, progress_begin, progress_update, progress_end
 
    !> Progress on stderr for runs longer than about a second.
    type :: progress_t
@@ -66,7 +75,9 @@ contains
       call read_scene(path, scene, error)
       if (allocated(error)) return
       call run_scene(scene, quiet, error)
-      if (allocated(error)) return
+      if (allocated(error)) then
+         if (error%code /= err_points_failed) return
+      end if
       if (present(written)) written = output_path(scene)
    end subroutine run_scene_file
 
@@ -82,6 +93,8 @@ contains
          call run_points(scene, quiet, error)
       case (task_coefficient)
          call run_coefficient(scene, error)
+      case (task_boundaries)
+         call run_boundaries(scene, quiet, error)
       case default
          call set_error(error, err_input, scene%source//": &scene: task: task '"//task_name(scene%task)// &
             "' is not available in this build")
@@ -95,23 +108,48 @@ contains
       path = scene%output//"_"//task_name(scene%task)//".dat"
    end function output_path
 
-   !> Floquet data of one point.
-   subroutine evaluate_point(scene, alpha, beta, f, error, inaccurate)
+   !> Floquet data of one point; `error` only when the point failed.
+   subroutine evaluate_point(scene, alpha, beta, f, error, status)
       type(scene_t), intent(in) :: scene
       real(wp), intent(in) :: alpha, beta
       type(floquet_t), intent(out) :: f
       type(error_t), allocatable, intent(out) :: error
-      logical, intent(out), optional :: inaccurate  !! computed, but only to the round-off level
+      !> status_ok, status_roundoff (computed, but only to the round-off level) or status_failed
+      integer, intent(out), optional :: status
       type(trace_t) :: tr
-      if (present(inaccurate)) inaccurate = .false.
+      if (present(status)) status = status_ok
       call monodromy_trace(hill_model_t(scene%model, alpha, beta, scene%epsilon), scene%method, tr, error)
       if (allocated(error)) then
-         if (error%code /= err_accuracy) return
+         if (error%code /= err_accuracy) then
+            if (present(status)) status = status_failed
+            return
+         end if
          deallocate (error)
-         if (present(inaccurate)) inaccurate = .true.
+         if (present(status)) status = status_roundoff
       end if
-      f = floquet_from_trace(tr, scene%epsilon)
+      f = floquet_from_trace(tr, scene%epsilon, scene%method%tolerance)
    end subroutine evaluate_point
+
+   !> Count the failed points of a task and name the first: err_points_failed, after the
+   !> file has been written. The first failure is computed again serially, so the message
+   !> does not depend on thread timing.
+   subroutine failed_points_error(scene, n_failed, n_total, first, error)
+      type(scene_t), intent(in) :: scene
+      integer(int64), intent(in) :: n_failed, n_total
+      real(wp), intent(in) :: first(2)  !! alpha, beta of the first failed point
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: cause
+      type(floquet_t) :: f
+      character(len=64) :: counts
+      if (n_failed == 0) return
+      call evaluate_point(scene, first(1), first(2), f, cause)
+      if (.not. allocated(cause)) call set_error(cause, err_input, "fails in parallel only")
+      write (counts, '(i0,a,i0)') n_failed, " of ", n_total
+      call set_error(error, err_points_failed, scene%source//": &scene: method: '"// &
+         method_name(scene%method%kind)//"' failed at "//trim(counts)//" point(s), written with status "// &
+         integer_text(status_failed)//" and placeholders to "//output_path(scene)//"; first at alpha = "// &
+         real_text(first(1))//", beta = "//real_text(first(2))//": "//cause%message)
+   end subroutine failed_points_error
 
    !> The error of a failed point, naming the scene, the method and the point.
    subroutine point_error(scene, alpha, beta, cause, error)
@@ -137,24 +175,48 @@ contains
    function common_header(scene) result(lines)
       type(scene_t), intent(in) :: scene
       character(len=:), allocatable :: lines(:)
-      character(len=:), allocatable :: groups(:), model_text
+      character(len=:), allocatable :: groups(:), model_text, common(:)
       groups = scene_namelist(scene)
       if (scene%model == model_elastic) then
          model_text = "model: elastic, Q(tau) = (beta - alpha cos(pi tau))/(1 - (alpha/pi^2) cos(pi tau)), eq. (25)"
       else
          model_text = "model: mathieu, q(tau) = beta - alpha cos(pi tau), eq. (A1), alpha playing nu"
       end if
-      lines = stacked(["hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau"], &
-                      stacked(["scene file: "//scene%source//" (the two namelist lines below repeat this run)"], &
-                              stacked(groups, [model_text])))
+      common = stacked(["hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau"], &
+                       stacked(["scene file: "//scene%source//" (the namelist lines below repeat this run)"], &
+                               stacked(groups, [model_text])))
+      if (scene%physical) then
+         lines = stacked(common, physical_header(scene))
+      else
+         lines = common
+      end if
    end function common_header
+
+   !> Header lines of a scene given in physical units: the conversions used.
+   function physical_header(scene) result(lines)
+      type(scene_t), intent(in) :: scene
+      character(len=:), allocatable :: lines(:)
+      character(len=200) :: text(3)
+      text(1) = "physical units (SI): rho = r0 + g/omega^2 (eq. (4)), tau = omega t/pi, alpha = a pi^2/rho, "// &
+                "beta = g pi^2/(rho omega^2) (eq. (24)), epsilon = kappa pi/omega (eq. (46))"
+      text(2) = "omega = "//real_text(scene%pendulum%omega)//" rad/s: one radial period 2 pi/omega = "// &
+                real_text(2.0_wp*pi/scene%pendulum%omega)//" s is 2 units of tau; epsilon = "//real_text(scene%epsilon)
+      if (size(scene%amplitudes) > 0) then
+         text(3) = "rho = "//real_text(equilibrium_length(scene%pendulum))//" m; each row is one amplitude a of "// &
+                   "&physical: a = alpha rho/pi^2"
+         if (scene%model == model_mathieu) text(3) = trim(text(3))//" (here alpha is nu = a r0 pi^2/rho^2 of eq. (21))"
+         lines = text(:3)
+      else
+         lines = text(:2)
+      end if
+   end function physical_header
 
    !> Header lines describing the chart/points columns.
    function chart_header(scene, outside) result(lines)
       type(scene_t), intent(in) :: scene
       logical, intent(in) :: outside  !! some point lies outside the physical domain
       character(len=:), allocatable :: lines(:)
-      character(len=200) :: extra(9)
+      character(len=200) :: extra(14)
       integer :: n
       n = 0
       n = n + 1; extra(n) = "method: "//method_description(scene)
@@ -166,9 +228,20 @@ contains
       else
          n = n + 1; extra(n) = "stable: 1 when |S| < 2"
       end if
+      n = n + 1; extra(n) = "stable = 0.5: marginal, |S| is within its error bound max(error_estimate, tolerance) "// &
+         "max(1, |S|) of the threshold, the value cannot decide"
       n = n + 1; extra(n) = "lambda_max: largest |multiplier| of x per period; mu: Floquet exponent ln(lambda_max)/2"
-      n = n + 1; extra(n) = "physical: 1 inside the physical domain 0 <= alpha < pi^2, 0 < beta < pi^2"
-      if (outside) then
+      if (scene%physical) then
+         n = n + 1; extra(n) = "mu_per_s: the Floquet exponent per second, mu omega/pi (tau = omega t/pi)"
+      end if
+      if (scene%model == model_elastic) then
+         n = n + 1; extra(n) = "physical: 1 inside the physical domain 0 <= alpha < pi^2, 0 <= beta < pi^2"
+      end if
+      n = n + 1; extra(n) = "error_estimate: the method's estimate of |error of S|/max(1, |S|) (-1: the method gives none)"
+      n = n + 1; extra(n) = "status: 0 ok; 1 round-off limited (best value, error_estimate at the round-off level); 2 failed"
+      n = n + 1; extra(n) = "status 2 rows: S = 0, mu = 0, stable = overflow = stable_paper = -1, lambda_max = -1, "// &
+         "log10_abs_S = -999, error_estimate = -1 (placeholders, not values)"
+      if (outside .and. scene%model == model_elastic) then
          n = n + 1; extra(n) = "note: this file leaves the physical domain (rows with physical = 0)"
       end if
       lines = stacked(common_header(scene), extra(:n))
@@ -228,22 +301,18 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(output_file_t) :: file
       type(progress_t) :: progress
-      type(floquet_t) :: f
-      type(error_t), allocatable :: cause
       character(len=chart_line_length), allocatable :: lines(:)
-      logical, allocatable :: failed(:)
       logical :: damped, outside
-      real(wp) :: alpha, beta
+      real(wp) :: alpha
       real(wp), allocatable :: all_betas(:)
       character(len=23), allocatable :: beta_texts(:)
-      type(batch_plan_t) :: plan
       logical :: stopped, stop_now
       character(len=chart_line_length), allocatable :: block_lines(:, :, :)
-      logical, allocatable :: block_failed(:, :, :), block_inaccurate(:, :, :), inaccurate(:)
-      integer(int64) :: n_inaccurate
-      real(wp) :: first_inaccurate(2)
+      integer, allocatable :: block_status(:, :, :), statuses(:)
+      integer(int64) :: n_inaccurate, n_failed
+      real(wp) :: first_inaccurate(2), first_failed(2)
       integer :: group, n_groups, g
-      integer :: i, j, n_alpha, n_beta, c, chunk, n_chunks, first, last
+      integer :: i, j, n_alpha, n_beta
 
       n_alpha = scene%chart%n_alpha
       n_beta = scene%chart%n_beta
@@ -251,12 +320,8 @@ contains
       ! an unwritable output path fails before any computing
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
-      ! a method that cannot run fails at the first point
-      alpha = scene%chart%alpha_min
-      beta = scene%chart%beta_min
-      call evaluate_point(scene, alpha, beta, f, cause)
-      if (allocated(cause)) then
-         call point_error(scene, alpha, beta, cause, error)
+      call check_method_runs(scene, error)
+      if (allocated(error)) then
          call discard_output(file)
          return
       end if
@@ -267,7 +332,8 @@ contains
       end do
       outside = .not. (in_physical_domain(scene%chart%alpha_min, scene%chart%beta_min) .and. &
                        in_physical_domain(scene%chart%alpha_max, scene%chart%beta_max))
-      call write_header(file, chart_header(scene, outside), chart_columns(damped), error)
+      call write_header(file, chart_header(scene, outside), &
+         chart_columns(damped, scene%model == model_elastic, scene%physical), error)
       if (allocated(error)) then
          call discard_output(file)
          return
@@ -276,15 +342,15 @@ contains
       call progress_begin(progress, int(n_alpha, int64)*n_beta, quiet)
       stopped = .false.
       n_inaccurate = 0
-      if (n_alpha >= 4*max_threads()) then
+      n_failed = 0
+      if (rows_in_parallel(scene)) then
          ! groups of rows computed in parallel (mesh preparation, integration and
          ! formatting on every core) into one of two buffers, while one thread writes the
          ! previous group from the other buffer; a group holds a few rows per thread, so
          ! memory stays bounded however large the chart
          group = 8*max_threads()
          n_groups = (n_alpha + group - 1)/group
-         allocate (block_lines(n_beta, group, 0:1), block_failed(n_beta, group, 0:1), &
-                   block_inaccurate(n_beta, group, 0:1))
+         allocate (block_lines(n_beta, group, 0:1), block_status(n_beta, group, 0:1))
          !$omp parallel default(shared) private(g, i, alpha, stop_now)
          do g = 1, n_groups + 1
             ! every thread takes the same decision: stopped is read between two barriers
@@ -298,7 +364,7 @@ contains
                do i = (g - 2)*group + 1, min(n_alpha, (g - 1)*group)
                   alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i)
                   call finish_row(i, alpha, block_lines(:, i - (g - 2)*group, mod(g - 1, 2)), &
-                     block_failed(:, i - (g - 2)*group, mod(g - 1, 2)), block_inaccurate(:, i - (g - 2)*group, mod(g - 1, 2)))
+                     block_status(:, i - (g - 2)*group, mod(g - 1, 2)))
                   if (stopped) exit
                end do
                !$omp end single nowait
@@ -308,8 +374,7 @@ contains
                do i = (g - 1)*group + 1, min(n_alpha, g*group)
                   alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i)
                   call compute_row(scene, alpha, all_betas, damped, block_lines(:, i - (g - 1)*group, mod(g, 2)), &
-                     block_failed(:, i - (g - 1)*group, mod(g, 2)), block_inaccurate(:, i - (g - 1)*group, mod(g, 2)), &
-                     beta_texts=beta_texts)
+                     block_status(:, i - (g - 1)*group, mod(g, 2)), beta_texts=beta_texts)
                end do
                !$omp end do
             else
@@ -319,21 +384,11 @@ contains
          !$omp end parallel
       else
          ! few rows: the points of each row in parallel chunks sharing the prepared meshes
-         allocate (lines(n_beta), failed(n_beta), inaccurate(n_beta))
-         chunk = max(16, n_beta/(8*max_threads()))
-         n_chunks = (n_beta + chunk - 1)/chunk
+         allocate (lines(n_beta), statuses(n_beta))
          do i = 1, n_alpha
             alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i)
-            call prepare_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), all_betas, scene%method, plan)
-            !$omp parallel do schedule(dynamic) default(shared) private(c, first, last)
-            do c = 1, n_chunks
-               first = (c - 1)*chunk + 1
-               last = min(n_beta, c*chunk)
-               call compute_row(scene, alpha, all_betas(first:last), damped, lines(first:last), failed(first:last), &
-                  inaccurate(first:last), plan, beta_texts(first:last))
-            end do
-            !$omp end parallel do
-            call finish_row(i, alpha, lines, failed, inaccurate)
+            call compute_row_in_chunks(scene, alpha, all_betas, damped, lines, statuses, beta_texts)
+            call finish_row(i, alpha, lines, statuses)
             if (stopped) exit
          end do
       end if
@@ -343,26 +398,16 @@ contains
          return
       end if
       call commit_output(file, error)
-      if (.not. allocated(error)) call warn_inaccurate(scene, n_inaccurate, first_inaccurate)
+      if (allocated(error)) return
+      call warn_inaccurate(scene, n_inaccurate, first_inaccurate)
+      call failed_points_error(scene, n_failed, int(n_alpha, int64)*n_beta, first_failed, error)
    contains
-      !> Write a computed row (in order), or turn its first failure into the error.
-      subroutine finish_row(i, alpha, lines, failed, inaccurate)
+      !> Write a computed row (in order) and count its round-off limited and failed points.
+      subroutine finish_row(i, alpha, lines, statuses)
          integer, intent(in) :: i
          real(wp), intent(in) :: alpha
          character(len=*), intent(in) :: lines(:)
-         logical, intent(in) :: failed(:), inaccurate(:)
-         type(error_t), allocatable :: cause
-         type(floquet_t) :: f
-         integer :: j
-         if (any(failed)) then
-            ! repeat the first failure serially, so the message does not depend on thread timing
-            j = findloc(failed, .true., dim=1)
-            call evaluate_point(scene, alpha, all_betas(j), f, cause)
-            if (.not. allocated(cause)) call set_error(cause, err_input, "fails in parallel only")
-            call point_error(scene, alpha, all_betas(j), cause, error)
-            stopped = .true.
-            return
-         end if
+         integer, intent(in) :: statuses(:)
          ! blocks of constant alpha, separated by one blank line (gnuplot pm3d/image),
          ! written as one record per block: one write statement per line costs more
          ! than a point of method auto
@@ -371,22 +416,26 @@ contains
             stopped = .true.
             return
          end if
-         if (any(inaccurate)) then
-            if (n_inaccurate == 0) first_inaccurate = [alpha, all_betas(findloc(inaccurate, .true., dim=1))]
-            n_inaccurate = n_inaccurate + count(inaccurate)
+         if (any(statuses == status_roundoff)) then
+            if (n_inaccurate == 0) first_inaccurate = [alpha, all_betas(findloc(statuses, status_roundoff, dim=1))]
+            n_inaccurate = n_inaccurate + count(statuses == status_roundoff)
+         end if
+         if (any(statuses == status_failed)) then
+            if (n_failed == 0) first_failed = [alpha, all_betas(findloc(statuses, status_failed, dim=1))]
+            n_failed = n_failed + count(statuses == status_failed)
          end if
          call progress_update(progress, int(i, int64)*n_beta)
       end subroutine finish_row
    end subroutine run_chart
 
-   !> Lines (and failure flags) of the chart points (α, β_j) of one row or part of a row.
-   subroutine compute_row(scene, alpha, betas, damped, lines, failed, inaccurate, plan, beta_texts)
+   !> Lines (and statuses) of the chart points (α, β_j) of one row or part of a row.
+   subroutine compute_row(scene, alpha, betas, damped, lines, statuses, plan, beta_texts)
       type(scene_t), intent(in) :: scene
       real(wp), intent(in) :: alpha, betas(:)
       logical, intent(in) :: damped
       character(len=*), intent(out) :: lines(:)
-      logical, intent(out) :: failed(:)
-      logical, intent(out) :: inaccurate(:)  !! computed only to the round-off level (err_accuracy)
+      !> status_ok, status_roundoff (computed only to the round-off level) or status_failed
+      integer, intent(out) :: statuses(:)
       type(batch_plan_t), intent(in), optional :: plan  !! prepared for the whole row
       character(len=23), intent(in), optional :: beta_texts(:)  !! format_es(betas, 16), made once per chart
       type(trace_t) :: traces(size(betas))
@@ -394,21 +443,147 @@ contains
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
       type(hill_model_t) :: row
+      real(wp), allocatable :: per_second
+      logical :: elastic
+      logical :: failed(size(betas)), inaccurate(size(betas))
       integer :: j
+      ! ω/π turns a rate per unit τ into a rate per second; left unallocated (an absent
+      ! optional argument of chart_line: no mu_per_s column) when the scene does not know ω
+      if (scene%physical) per_second = scene%pendulum%omega/pi
+      elastic = scene%model == model_elastic
       row = hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon)
       call monodromy_trace_batch(row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate)
       alpha_text = format_es(alpha, 16)
+      statuses = merge(status_roundoff, status_ok, inaccurate)
+      where (failed) statuses = status_failed
       do j = 1, size(betas)
-         if (failed(j)) cycle
-         f = floquet_from_trace(traces(j), scene%epsilon)
+         if (failed(j)) then
+            if (present(beta_texts)) then
+               lines(j) = failed_chart_line(alpha, betas(j), damped, in_physical_domain(alpha, betas(j)), &
+                                            status_failed, alpha_text, beta_texts(j), elastic, per_second)
+            else
+               lines(j) = failed_chart_line(alpha, betas(j), damped, in_physical_domain(alpha, betas(j)), &
+                                            status_failed, alpha_text, elastic=elastic, per_second=per_second)
+            end if
+            cycle
+         end if
+         f = floquet_from_trace(traces(j), scene%epsilon, scene%method%tolerance)
          if (present(beta_texts)) then
-            lines(j) = chart_line(alpha, betas(j), f, damped, in_physical_domain(alpha, betas(j)), alpha_text, &
-                                  beta_texts(j))
+            lines(j) = chart_line(alpha, betas(j), f, damped, in_physical_domain(alpha, betas(j)), statuses(j), &
+                                  alpha_text, beta_texts(j), elastic=elastic, per_second=per_second)
          else
-            lines(j) = chart_line(alpha, betas(j), f, damped, in_physical_domain(alpha, betas(j)), alpha_text)
+            lines(j) = chart_line(alpha, betas(j), f, damped, in_physical_domain(alpha, betas(j)), statuses(j), &
+                                  alpha_text, elastic=elastic, per_second=per_second)
          end if
       end do
    end subroutine compute_row
+
+   !> A chart computes whole rows in parallel when it has enough of them, else the
+   !> chunks of each row in parallel.
+   logical function rows_in_parallel(scene)
+      type(scene_t), intent(in) :: scene
+      rows_in_parallel = scene%chart%n_alpha >= 4*max_threads()
+   end function rows_in_parallel
+
+   !> `compute_row` on a whole row, split into chunks computed in parallel that share
+   !> the meshes prepared for the row.
+   subroutine compute_row_in_chunks(scene, alpha, betas, damped, lines, statuses, beta_texts)
+      type(scene_t), intent(in) :: scene
+      real(wp), intent(in) :: alpha, betas(:)
+      logical, intent(in) :: damped
+      character(len=*), intent(out) :: lines(:)
+      integer, intent(out) :: statuses(:)
+      character(len=23), intent(in) :: beta_texts(:)
+      type(batch_plan_t) :: plan
+      integer :: c, chunk, n_chunks, first, last, n
+      n = size(betas)
+      chunk = max(16, n/(8*max_threads()))
+      n_chunks = (n + chunk - 1)/chunk
+      call prepare_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), betas, scene%method, plan)
+      !$omp parallel do schedule(dynamic) default(shared) private(c, first, last)
+      do c = 1, n_chunks
+         first = (c - 1)*chunk + 1
+         last = min(n, c*chunk)
+         call compute_row(scene, alpha, betas(first:last), damped, lines(first:last), statuses(first:last), &
+            plan, beta_texts(first:last))
+      end do
+      !$omp end parallel do
+   end subroutine compute_row_in_chunks
+
+   !> Lines of row `i` of a chart scene (α = the i-th grid value, all β), computed exactly as
+   !> the chart task computes them, so that a driver computing rows elsewhere writes the
+   !> same file.
+   subroutine chart_row(scene, i, lines, statuses)
+      type(scene_t), intent(in) :: scene  !! a chart scene
+      integer, intent(in) :: i            !! row index, 1 … n_alpha
+      character(len=*), intent(out) :: lines(:)  !! n_beta lines of `chart_line_length` characters
+      integer, intent(out) :: statuses(:)  !! per point: status_ok, status_roundoff or status_failed
+      real(wp), allocatable :: betas(:)
+      character(len=23), allocatable :: beta_texts(:)
+      real(wp) :: alpha
+      integer :: j, n_beta
+      n_beta = scene%chart%n_beta
+      betas = [(grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j), j=1, n_beta)]
+      allocate (beta_texts(n_beta))
+      do j = 1, n_beta
+         beta_texts(j) = format_es(betas(j), 16)
+      end do
+      alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, scene%chart%n_alpha, i)
+      if (rows_in_parallel(scene)) then
+         call compute_row(scene, alpha, betas, scene%epsilon > 0.0_wp, lines, statuses, beta_texts=beta_texts)
+      else
+         call compute_row_in_chunks(scene, alpha, betas, scene%epsilon > 0.0_wp, lines, statuses, beta_texts)
+      end if
+   end subroutine chart_row
+
+   !> Lines of the points `first` … `last` of a points scene (in parallel); a failed point
+   !> gets its placeholder line.
+   subroutine compute_points(scene, first, last, lines, statuses)
+      type(scene_t), intent(in) :: scene  !! a points scene
+      integer, intent(in) :: first, last  !! range of point indices
+      character(len=*), intent(out) :: lines(first:)  !! one chart line per point
+      integer, intent(out) :: statuses(first:)  !! per point: status_ok, status_roundoff or status_failed
+      type(floquet_t) :: f
+      type(error_t), allocatable :: cause
+      real(wp), allocatable :: per_second
+      logical :: damped
+      integer :: k
+      ! ω/π turns a rate per unit τ into a rate per second; left unallocated (an absent
+      ! optional argument of chart_line: no mu_per_s column) when the scene does not know ω
+      if (scene%physical) per_second = scene%pendulum%omega/pi
+      damped = scene%epsilon > 0.0_wp
+      !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause)
+      do k = first, last
+         call evaluate_point(scene, scene%points(1, k), scene%points(2, k), f, cause, statuses(k))
+         if (statuses(k) == status_failed) then
+            lines(k) = failed_chart_line(scene%points(1, k), scene%points(2, k), damped, &
+                                         in_physical_domain(scene%points(1, k), scene%points(2, k)), status_failed, &
+                                         elastic=scene%model == model_elastic, per_second=per_second)
+         else
+            lines(k) = chart_line(scene%points(1, k), scene%points(2, k), f, damped, &
+                                  in_physical_domain(scene%points(1, k), scene%points(2, k)), statuses(k), &
+                                  elastic=scene%model == model_elastic, per_second=per_second)
+         end if
+      end do
+      !$omp end parallel do
+   end subroutine compute_points
+
+   !> A chart whose method cannot run at all (bad parameters) fails at its first point,
+   !> before anything is written; a point where the computation fails is written with
+   !> its status instead.
+   subroutine check_method_runs(scene, error)
+      type(scene_t), intent(in) :: scene  !! a chart scene
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: cause
+      type(floquet_t) :: f
+      real(wp) :: alpha, beta
+      alpha = scene%chart%alpha_min
+      beta = scene%chart%beta_min
+      call evaluate_point(scene, alpha, beta, f, cause)
+      if (allocated(cause)) then
+         if (cause%code == err_invalid_parameter) call point_error(scene, alpha, beta, cause, error)
+      end if
+   end subroutine check_method_runs
 
    !> The points task.
    subroutine run_points(scene, quiet, error)
@@ -417,10 +592,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(output_file_t) :: file
       type(progress_t) :: progress
-      type(floquet_t) :: f
-      type(error_t), allocatable :: cause
       character(len=chart_line_length), allocatable :: lines(:)
-      logical, allocatable :: failed(:), inaccurate(:)
+      integer, allocatable :: statuses(:)
       logical :: damped
       integer :: k, n
 
@@ -428,33 +601,14 @@ contains
       damped = scene%epsilon > 0.0_wp
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
-      allocate (lines(n), failed(n), inaccurate(n))
-      failed = .false.
-      inaccurate = .false.
+      allocate (lines(n), statuses(n))
+      statuses = status_ok
       call progress_begin(progress, int(n, int64), quiet)
-      !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause)
-      do k = 1, n
-         call evaluate_point(scene, scene%points(1, k), scene%points(2, k), f, cause, inaccurate(k))
-         if (allocated(cause)) then
-            failed(k) = .true.
-         else
-            lines(k) = chart_line(scene%points(1, k), scene%points(2, k), f, damped, &
-                                  in_physical_domain(scene%points(1, k), scene%points(2, k)))
-         end if
-      end do
-      !$omp end parallel do
+      call compute_points(scene, 1, n, lines, statuses)
       call progress_update(progress, int(n, int64))
       call progress_end(progress)
-      if (any(failed)) then
-         k = findloc(failed, .true., dim=1)
-         call evaluate_point(scene, scene%points(1, k), scene%points(2, k), f, cause)
-         if (.not. allocated(cause)) call set_error(cause, err_input, "fails in parallel only")
-         call point_error(scene, scene%points(1, k), scene%points(2, k), cause, error)
-         call discard_output(file)
-         return
-      end if
       call write_header(file, chart_header(scene, .not. all(in_physical_domain(scene%points(1, :), &
-         scene%points(2, :)))), chart_columns(damped), error)
+         scene%points(2, :)))), chart_columns(damped, scene%model == model_elastic, scene%physical), error)
       do k = 1, n
          if (allocated(error)) exit
          call write_text(file, trim(lines(k)), error)
@@ -464,9 +618,15 @@ contains
          return
       end if
       call commit_output(file, error)
-      if (.not. allocated(error) .and. any(inaccurate)) then
-         k = findloc(inaccurate, .true., dim=1)
-         call warn_inaccurate(scene, int(count(inaccurate), int64), scene%points(:, k))
+      if (allocated(error)) return
+      if (any(statuses == status_roundoff)) then
+         k = findloc(statuses, status_roundoff, dim=1)
+         call warn_inaccurate(scene, int(count(statuses == status_roundoff), int64), scene%points(:, k))
+      end if
+      if (any(statuses == status_failed)) then
+         k = findloc(statuses, status_failed, dim=1)
+         call failed_points_error(scene, int(count(statuses == status_failed), int64), int(n, int64), &
+                                  scene%points(:, k), error)
       end if
    end subroutine run_points
 

@@ -40,6 +40,9 @@ module hillstab_transfer
       real(wp) :: value = 0.0_wp      !! S; clamped to ±huge(1.0_wp) when `overflow`
       real(wp) :: log_abs = -huge(1.0_wp)  !! ln|S| (−huge when S = 0)
       logical :: overflow = .false.   !! |S| does not fit in real(wp)
+      !> estimated error of S relative to max(1, |S|) (the scale of the methods' tolerance),
+      !> as the method measured it; negative when the method gives no estimate
+      real(wp) :: error_estimate = -1.0_wp
    end type trace_t
 
    !> Below this |q h²| the series for C and S are used (12 terms reach round-off).

@@ -25,6 +25,61 @@ module test_rk
    real(wp), parameter :: arenstorf_period = 17.0652165601579625588917206249_wp
    real(wp), parameter :: arenstorf_start(4) = [0.994_wp, 0.0_wp, 0.0_wp, -2.00158510637908252240537862224_wp]
 
+   !> x'' = −x as (x, x').
+   type, extends(rk_system_t) :: oscillator_t
+   contains
+      procedure :: rhs => oscillator
+   end type oscillator_t
+
+   !> The oscillator with an observer that records the largest dense-output error at
+   !> the midpoint of every step.
+   type, extends(oscillator_t) :: midpoint_oscillator_t
+      real(wp) :: worst = 0.0_wp
+   contains
+      procedure :: observe => at_midpoint
+   end type midpoint_oscillator_t
+
+   !> The oscillator with an observer that counts its calls and stops after 3 steps.
+   type, extends(oscillator_t) :: stopping_oscillator_t
+      integer :: seen = 0
+   contains
+      procedure :: observe => stop_after_three
+   end type stopping_oscillator_t
+
+   !> The oscillator whose derivative turns infinite for t > 1/2.
+   type, extends(rk_system_t) :: infinite_after_half_t
+   contains
+      procedure :: rhs => infinite_after_half
+   end type infinite_after_half_t
+
+   !> y' = y², which blows up at t = 1 from y(0) = 1.
+   type, extends(rk_system_t) :: blow_up_t
+   contains
+      procedure :: rhs => blow_up
+   end type blow_up_t
+
+   !> The restricted three-body problem of the Arenstorf orbit.
+   type, extends(rk_system_t) :: three_body_t
+   contains
+      procedure :: rhs => three_body
+   end type three_body_t
+
+   !> Two solutions (u, u', v, v') of x'' + q(τ) x = 0.
+   type, extends(rk_system_t) :: hill_pair_t
+      type(hill_model_t) :: model
+   contains
+      procedure :: rhs => hill_pair
+   end type hill_pair_t
+
+   !> Two solutions of y'' + r s(t) y = 0, s = +1 on [0, 1), −1 on [1, 2) (piece = 0),
+   !> or s = +1 throughout (piece = 1), or s = −1 throughout (piece = 2).
+   type, extends(rk_system_t) :: meissner_t
+      real(wp) :: r = 1.0_wp
+      integer :: piece = 0
+   contains
+      procedure :: rhs => meissner
+   end type meissner_t
+
 contains
 
    function collect_rk() result(suite)
@@ -39,6 +94,7 @@ contains
          new_unittest("dense_order", dense_order), &
          new_unittest("backward_and_observer", backward_and_observer), &
          new_unittest("error_paths", error_paths), &
+         new_unittest("tiny_state_relative", tiny_state_relative), &
          new_unittest("half_equals_full_period", half_equals_full_period), &
          new_unittest("trace_vs_references", trace_vs_references), &
          new_unittest("unit_determinant", unit_determinant), &
@@ -50,14 +106,50 @@ contains
    ! helpers
    ! ----------------------------------------------------------------------------------
 
-   subroutine oscillator(t, y, dydt)
+   subroutine oscillator(self, t, y, dydt)
+      class(oscillator_t), intent(inout) :: self
       real(wp), intent(in) :: t, y(:)
       real(wp), intent(out) :: dydt(:)
       dydt(1) = y(2)
       dydt(2) = -y(1)
    end subroutine oscillator
 
-   subroutine three_body(t, y, dydt)
+   subroutine at_midpoint(self, step, stop)
+      class(midpoint_oscillator_t), intent(inout) :: self
+      type(rk_step_t), intent(in) :: step
+      logical, intent(inout) :: stop
+      real(wp) :: tm, ym(2)
+      if (step%index == 0) return
+      tm = step%t_old + 0.5_wp*step%h
+      ym = rk_dense_value(step, tm)
+      self%worst = max(self%worst, abs(ym(1) - cos(tm)) + abs(ym(2) + sin(tm)))
+   end subroutine at_midpoint
+
+   subroutine stop_after_three(self, step, stop)
+      class(stopping_oscillator_t), intent(inout) :: self
+      type(rk_step_t), intent(in) :: step
+      logical, intent(inout) :: stop
+      self%seen = self%seen + 1
+      stop = step%index >= 3
+   end subroutine stop_after_three
+
+   subroutine infinite_after_half(self, t, y, dydt)
+      class(infinite_after_half_t), intent(inout) :: self
+      real(wp), intent(in) :: t, y(:)
+      real(wp), intent(out) :: dydt(:)
+      dydt = [y(2), -y(1)]
+      if (t > 0.5_wp) dydt(2) = ieee_value(1.0_wp, ieee_positive_inf)
+   end subroutine infinite_after_half
+
+   subroutine blow_up(self, t, y, dydt)
+      class(blow_up_t), intent(inout) :: self
+      real(wp), intent(in) :: t, y(:)
+      real(wp), intent(out) :: dydt(:)
+      dydt = y**2
+   end subroutine blow_up
+
+   subroutine three_body(self, t, y, dydt)
+      class(three_body_t), intent(inout) :: self
       real(wp), intent(in) :: t, y(:)
       real(wp), intent(out) :: dydt(:)
       real(wp) :: d1, d2, mu1
@@ -70,14 +162,37 @@ contains
       dydt(4) = y(2) - 2.0_wp*y(3) - mu1*y(2)/d1 - arenstorf_mu*y(2)/d2
    end subroutine three_body
 
+   subroutine hill_pair(self, t, y, dydt)
+      class(hill_pair_t), intent(inout) :: self
+      real(wp), intent(in) :: t, y(:)
+      real(wp), intent(out) :: dydt(:)
+      real(wp) :: q
+      q = hill_coefficient(self%model, t)
+      dydt = [y(2), -q*y(1), y(4), -q*y(3)]
+   end subroutine hill_pair
+
+   subroutine meissner(self, t, y, dydt)
+      class(meissner_t), intent(inout) :: self
+      real(wp), intent(in) :: t, y(:)
+      real(wp), intent(out) :: dydt(:)
+      real(wp) :: q
+      select case (self%piece)
+      case (1); q = self%r
+      case (2); q = -self%r
+      case default; q = merge(self%r, -self%r, t < 1.0_wp)
+      end select
+      dydt = [y(2), -q*y(1), y(4), -q*y(3)]
+   end subroutine meissner
+
    !> Error at t = 10 of the harmonic oscillator in fixed-step mode.
    real(wp) function oscillator_error(method, n_steps) result(err)
       integer, intent(in) :: method, n_steps
       real(wp) :: t, y(2)
       type(error_t), allocatable :: error
+      type(oscillator_t) :: osc
       t = 0.0_wp
       y = [1.0_wp, 0.0_wp]
-      call rk_integrate(oscillator, t, 10.0_wp, y, rk_options_t(method=method, fixed_steps=n_steps), error=error)
+      call rk_integrate(osc, t, 10.0_wp, y, rk_options_t(method=method, fixed_steps=n_steps), error=error)
       err = norm2(y - [cos(10.0_wp), -sin(10.0_wp)])
       if (allocated(error)) err = huge(1.0_wp)
    end function oscillator_error
@@ -89,19 +204,14 @@ contains
       integer, intent(in) :: method, n_steps
       real(wp) :: t, y(4)
       type(error_t), allocatable :: error
+      type(hill_pair_t) :: pair
       t = 0.0_wp
       y = [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]
-      call rk_integrate(pair, t, 1.0_wp, y, rk_options_t(method=method, fixed_steps=n_steps), error=error)
+      pair = hill_pair_t(model)
+      call rk_integrate(pair, t, 1.0_wp, y, rk_options_t(method=method, fixed_steps=n_steps), &
+                        error=error)
       s = 2.0_wp*(y(1)*y(4) + y(2)*y(3))
       if (allocated(error)) s = huge(1.0_wp)
-   contains
-      subroutine pair(tau, state, dydt)
-         real(wp), intent(in) :: tau, state(:)
-         real(wp), intent(out) :: dydt(:)
-         real(wp) :: q
-         q = hill_coefficient(model, tau)
-         dydt = [state(2), -q*state(1), state(4), -q*state(3)]
-      end subroutine pair
    end function fixed_step_trace
 
    !> Observed order log2(e(N)/e(2N)) compared with `expected`.
@@ -185,38 +295,23 @@ contains
       real(wp) function meissner_trace(options, restart) result(trace)
          type(rk_options_t), intent(in) :: options
          logical, intent(in) :: restart
+         type(meissner_t) :: piecewise
          t = 0.0_wp
          y = [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]
          if (restart) then
-            call rk_integrate(meissner_first, t, 1.0_wp, y, options, stats, error)
+            piecewise = meissner_t(r=r, piece=1)
+            call rk_integrate(piecewise, t, 1.0_wp, y, options, stats, error)
             call check(ctx, .not. allocated(error), "first half")
-            call rk_integrate(meissner_second, t, 2.0_wp, y, rk_options_t(method=options%method, &
+            piecewise = meissner_t(r=r, piece=2)
+            call rk_integrate(piecewise, t, 2.0_wp, y, rk_options_t(method=options%method, &
                               fixed_steps=2*options%fixed_steps), stats, error)
          else
-            call rk_integrate(meissner, t, 2.0_wp, y, options, stats, error)
+            piecewise = meissner_t(r=r)
+            call rk_integrate(piecewise, t, 2.0_wp, y, options, stats, error)
          end if
          call check(ctx, .not. allocated(error), "meissner integration")
          trace = y(1) + y(4)
       end function meissner_trace
-      subroutine meissner(tau, state, dydt)
-         real(wp), intent(in) :: tau, state(:)
-         real(wp), intent(out) :: dydt(:)
-         real(wp) :: q
-         q = merge(r, -r, tau < 1.0_wp)
-         dydt = [state(2), -q*state(1), state(4), -q*state(3)]
-      end subroutine meissner
-      !> The first piece, s = +1 including its right end t = 1 (the limit from the left).
-      subroutine meissner_first(tau, state, dydt)
-         real(wp), intent(in) :: tau, state(:)
-         real(wp), intent(out) :: dydt(:)
-         dydt = [state(2), -r*state(1), state(4), -r*state(3)]
-      end subroutine meissner_first
-      !> The second piece, with s = −1 including its left end t = 1.
-      subroutine meissner_second(tau, state, dydt)
-         real(wp), intent(in) :: tau, state(:)
-         real(wp), intent(out) :: dydt(:)
-         dydt = [state(2), r*state(1), state(4), r*state(3)]
-      end subroutine meissner_second
    end subroutine order_meissner
 
    !> DOPRI5 at rtol = atol = 1e-7 reproduces Hairer's dr_dopri5 run (published output:
@@ -227,10 +322,11 @@ contains
       real(wp) :: t, y(4), t_out(1), y_out(4, 1)
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
+      type(three_body_t) :: body
       t = 0.0_wp
       y = arenstorf_start
       t_out = [2.0_wp]
-      call rk_integrate(three_body, t, arenstorf_period, y, rk_options_t(method=rk_dopri5, rtol=1.0e-7_wp, &
+      call rk_integrate(body, t, arenstorf_period, y, rk_options_t(method=rk_dopri5, rtol=1.0e-7_wp, &
                         atol=1.0e-7_wp), stats, error, t_out=t_out, y_out=y_out)
       call check(ctx, .not. allocated(error), "integration succeeds")
       write (*, '(4x,a,i0,a,i0,a,i0,a)') "arenstorf dopri5 tol 1e-7: f-evals ", stats%n_evaluations, &
@@ -256,10 +352,11 @@ contains
       type(error_t), allocatable :: error
       integer :: k
       real(wp) :: tol(2) = [1.0e-10_wp, 1.0e-12_wp], err(2)
+      type(three_body_t) :: body
       do k = 1, 2
          t = 0.0_wp
          y = arenstorf_start
-         call rk_integrate(three_body, t, arenstorf_period, y, rk_options_t(method=rk_dop853, rtol=tol(k), &
+         call rk_integrate(body, t, arenstorf_period, y, rk_options_t(method=rk_dop853, rtol=tol(k), &
                            atol=tol(k)), stats, error)
          call check(ctx, .not. allocated(error), "integration succeeds")
          err(k) = norm2(y(1:2) - arenstorf_start(1:2))
@@ -282,6 +379,7 @@ contains
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
       integer :: method, j, k
+      type(oscillator_t) :: osc
       do k = 1, n_out
          t_out(k) = 10.0_wp*(k - 1)/(n_out - 1)
       end do
@@ -289,7 +387,7 @@ contains
          do j = 1, 2
             t = 0.0_wp
             y = [1.0_wp, 0.0_wp]
-            call rk_integrate(oscillator, t, 10.0_wp, y, rk_options_t(method=method, rtol=tol(j), atol=tol(j)), &
+            call rk_integrate(osc, t, 10.0_wp, y, rk_options_t(method=method, rtol=tol(j), atol=tol(j)), &
                               stats, error, t_out=t_out, y_out=y_out)
             call check(ctx, .not. allocated(error), "integration succeeds")
             worst = maxval(abs(y_out(1, :) - cos(t_out))) + maxval(abs(y_out(2, :) + sin(t_out)))
@@ -308,7 +406,6 @@ contains
    !> order + 1 or at the method order, whichever is lower).
    subroutine dense_order(ctx)
       type(test_context_t), intent(inout) :: ctx
-      real(wp) :: worst
       call check_order(ctx, midpoint_error(rk_dop853, .true., 10), midpoint_error(rk_dop853, .true., 20), 8.0_wp, &
          "dop853 dense midpoints")
       call check_order(ctx, midpoint_error(rk_dop853, .false., 40), midpoint_error(rk_dop853, .false., 80), &
@@ -321,23 +418,14 @@ contains
          logical, intent(in) :: dense
          real(wp) :: t, y(2)
          type(error_t), allocatable :: error
-         worst = 0.0_wp
+         type(midpoint_oscillator_t) :: system
          t = 0.0_wp
          y = [1.0_wp, 0.0_wp]
-         call rk_integrate(oscillator, t, 10.0_wp, y, rk_options_t(method=method, fixed_steps=n_steps, &
-                           dense_output=dense), error=error, observer=at_midpoint)
+         call rk_integrate(system, t, 10.0_wp, y, rk_options_t(method=method, fixed_steps=n_steps, &
+                           dense_output=dense), error=error)
          call check(ctx, .not. allocated(error), "integration succeeds")
-         err = worst
+         err = system%worst
       end function midpoint_error
-      subroutine at_midpoint(step, stop)
-         type(rk_step_t), intent(in) :: step
-         logical, intent(inout) :: stop
-         real(wp) :: tm, ym(2)
-         if (step%index == 0) return
-         tm = step%t_old + 0.5_wp*step%h
-         ym = rk_dense_value(step, tm)
-         worst = max(worst, abs(ym(1) - cos(tm)) + abs(ym(2) + sin(tm)))
-      end subroutine at_midpoint
    end subroutine dense_order
 
    !> Backward integration returns to the start; the observer sees every step and
@@ -347,37 +435,29 @@ contains
       real(wp) :: t, y(2), t_out(3), y_out(2, 3)
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
-      integer :: seen
+      type(stopping_oscillator_t) :: stopping
+      type(oscillator_t) :: osc
       t = 5.0_wp
       y = [cos(5.0_wp), -sin(5.0_wp)]
       t_out = [4.0_wp, 2.5_wp, 0.0_wp]
-      call rk_integrate(oscillator, t, 0.0_wp, y, rk_options_t(rtol=1.0e-12_wp, atol=1.0e-12_wp), stats, error, &
+      call rk_integrate(osc, t, 0.0_wp, y, rk_options_t(rtol=1.0e-12_wp, atol=1.0e-12_wp), stats, error, &
                         t_out=t_out, y_out=y_out)
       call check(ctx, .not. allocated(error), "backward integration succeeds")
       call check(ctx, t, 0.0_wp, abs=0.0_wp, message="reaches t_end")
       call check(ctx, y(1), 1.0_wp, abs=1.0e-10_wp, message="backward y1")
       call check(ctx, y(2), 0.0_wp, abs=1.0e-10_wp, message="backward y2")
       call check(ctx, y_out(1, 2), cos(2.5_wp), abs=1.0e-10_wp, message="backward dense output")
-      seen = 0
       t = 0.0_wp
       y = [1.0_wp, 0.0_wp]
-      call rk_integrate(oscillator, t, 10.0_wp, y, rk_options_t(rtol=1.0e-8_wp, atol=1.0e-8_wp), stats, error, &
-                        observer=stop_after_three)
+      call rk_integrate(stopping, t, 10.0_wp, y, rk_options_t(rtol=1.0e-8_wp, atol=1.0e-8_wp), stats, error)
       call check(ctx, .not. allocated(error), "stopping is not an error")
-      call check(ctx, seen == 4 .and. stats%n_steps == 3, "observer called at start and after 3 steps")
+      call check(ctx, stopping%seen == 4 .and. stats%n_steps == 3, "observer called at start and after 3 steps")
       call check(ctx, t > 0.0_wp .and. t < 10.0_wp, "stopped inside the interval")
       call check(ctx, y(1), cos(t), abs=1.0e-7_wp, message="state at the stop")
       ! t_out rejected when out of order
-      call rk_integrate(oscillator, t, 10.0_wp, y, rk_options_t(), stats, error, t_out=[9.0_wp, 8.0_wp], &
+      call rk_integrate(osc, t, 10.0_wp, y, rk_options_t(), stats, error, t_out=[9.0_wp, 8.0_wp], &
                         y_out=y_out(:, 1:2))
       call check(ctx, allocated(error), "unordered t_out rejected")
-   contains
-      subroutine stop_after_three(step, stop)
-         type(rk_step_t), intent(in) :: step
-         logical, intent(inout) :: stop
-         seen = seen + 1
-         stop = step%index >= 3
-      end subroutine stop_after_three
    end subroutine backward_and_observer
 
    !> Failures are reported through error_t and leave a finite state behind.
@@ -387,9 +467,13 @@ contains
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
       ! too many steps
+      type(blow_up_t) :: explosive
+      type(infinite_after_half_t) :: infinite
+      type(oscillator_t) :: osc
+      type(three_body_t) :: body
       t = 0.0_wp
       y = arenstorf_start
-      call rk_integrate(three_body, t, arenstorf_period, y, rk_options_t(rtol=1.0e-10_wp, atol=1.0e-10_wp, &
+      call rk_integrate(body, t, arenstorf_period, y, rk_options_t(rtol=1.0e-10_wp, atol=1.0e-10_wp, &
                         max_steps=20), stats, error)
       call check(ctx, allocated(error), "max_steps: error")
       if (allocated(error)) then
@@ -400,7 +484,7 @@ contains
       ! non-finite derivative
       t = 0.0_wp
       y(1:2) = [1.0_wp, 0.0_wp]
-      call rk_integrate(infinite_after_half, t, 1.0_wp, y(1:2), rk_options_t(), stats, error)
+      call rk_integrate(infinite, t, 1.0_wp, y(1:2), rk_options_t(), stats, error)
       call check(ctx, allocated(error), "non-finite: error")
       if (allocated(error)) then
          call check(ctx, error%code == err_integration .and. index(error%message, "non-finite") > 0, &
@@ -410,13 +494,13 @@ contains
       ! the same in fixed-step mode
       t = 0.0_wp
       y(1:2) = [1.0_wp, 0.0_wp]
-      call rk_integrate(infinite_after_half, t, 1.0_wp, y(1:2), rk_options_t(method=rk_dopri5, fixed_steps=10), &
+      call rk_integrate(infinite, t, 1.0_wp, y(1:2), rk_options_t(method=rk_dopri5, fixed_steps=10), &
                         stats, error)
       call check(ctx, allocated(error) .and. all(ieee_is_finite(y(1:2))), "non-finite fixed-step: error")
       ! step-size underflow: y' = y², y(0) = 1 blows up at t = 1
       t = 0.0_wp
       y(1:1) = [1.0_wp]
-      call rk_integrate(blow_up, t, 2.0_wp, y(1:1), rk_options_t(rtol=1.0e-8_wp, atol=1.0e-8_wp), stats, error)
+      call rk_integrate(explosive, t, 2.0_wp, y(1:1), rk_options_t(rtol=1.0e-8_wp, atol=1.0e-8_wp), stats, error)
       call check(ctx, allocated(error), "blow-up: error")
       if (allocated(error)) then
          write (*, '(4x,a)') "blow-up: "//error%message
@@ -427,24 +511,49 @@ contains
       ! invalid options
       t = 0.0_wp
       y(1:2) = [1.0_wp, 0.0_wp]
-      call rk_integrate(oscillator, t, 1.0_wp, y(1:2), rk_options_t(atol=0.0_wp), stats, error)
+      call rk_integrate(osc, t, 1.0_wp, y(1:2), rk_options_t(atol=0.0_wp), stats, error)
       call check(ctx, allocated(error), "atol = 0 rejected")
       if (allocated(error)) call check(ctx, error%code == err_invalid_parameter, "atol = 0: code")
-      call rk_integrate(oscillator, t, 1.0_wp, y(1:2), rk_options_t(method=7), stats, error)
+      call rk_integrate(osc, t, 1.0_wp, y(1:2), rk_options_t(method=7), stats, error)
       call check(ctx, allocated(error), "unknown method rejected")
-   contains
-      subroutine infinite_after_half(tau, state, dydt)
-         real(wp), intent(in) :: tau, state(:)
-         real(wp), intent(out) :: dydt(:)
-         dydt = [state(2), -state(1)]
-         if (tau > 0.5_wp) dydt(2) = ieee_value(1.0_wp, ieee_positive_inf)
-      end subroutine infinite_after_half
-      subroutine blow_up(tau, state, dydt)
-         real(wp), intent(in) :: tau, state(:)
-         real(wp), intent(out) :: dydt(:)
-         dydt = state**2
-      end subroutine blow_up
    end subroutine error_paths
+
+   !> A state of size 1e-20 keeps its relative accuracy when the per-component absolute
+   !> tolerances are scaled with it; a fixed atol = 1e-10 drowns it (the closed form
+   !> 1e-20 (cos t, −sin t) is the reference).
+   subroutine tiny_state_relative(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), parameter :: amplitude = 1.0e-20_wp
+      real(wp) :: t, y(2), exact(2), rel_scaled, rel_fixed
+      type(oscillator_t) :: osc
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      type(rk_options_t) :: options
+      exact = amplitude*[cos(20.0_wp), -sin(20.0_wp)]
+      options = rk_options_t(rtol=1.0e-10_wp, atol=1.0e-10_wp)
+      options%atol_components = [1.0e-10_wp*amplitude, 1.0e-10_wp*amplitude]
+      t = 0.0_wp
+      y = [amplitude, 0.0_wp]
+      call rk_integrate(osc, t, 20.0_wp, y, options, stats, error)
+      call check(ctx, .not. allocated(error), "scaled atol: integration succeeds")
+      rel_scaled = norm2(y - exact)/amplitude
+      t = 0.0_wp
+      y = [amplitude, 0.0_wp]
+      call rk_integrate(osc, t, 20.0_wp, y, rk_options_t(rtol=1.0e-10_wp, atol=1.0e-10_wp), error=error)
+      call check(ctx, .not. allocated(error), "fixed atol: integration succeeds")
+      rel_fixed = norm2(y - exact)/amplitude
+      write (*, '(4x,a,es10.3,a,es10.3)') "x ~ 1e-20: relative error with scaled atol ", rel_scaled, &
+         ", with atol = 1e-10 ", rel_fixed
+      call check(ctx, rel_scaled < 1.0e-8_wp, "scaled atol keeps relative accuracy")
+      call check(ctx, rel_fixed > 1.0e-3_wp, "a fixed atol drowns the tiny state (the trap this option avoids)")
+      ! invalid component tolerances
+      options%atol_components = [1.0e-10_wp, 0.0_wp]
+      call rk_integrate(osc, t, 21.0_wp, y, options, stats, error)
+      call check(ctx, allocated(error), "atol_components = 0 rejected")
+      options%atol_components = [1.0e-10_wp]
+      call rk_integrate(osc, t, 21.0_wp, y, options, stats, error)
+      call check(ctx, allocated(error), "atol_components of the wrong size rejected")
+   end subroutine tiny_state_relative
 
    ! ----------------------------------------------------------------------------------
    ! Hill monodromy
@@ -461,6 +570,7 @@ contains
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
       integer :: i, k
+      type(hill_pair_t) :: pair
       do i = 1, size(alphas)
          do k = model_elastic, model_mathieu
             model = hill_model_t(k, alphas(i), betas(i), 0.0_wp)
@@ -469,21 +579,14 @@ contains
             half = matrix_of(m)
             t = 0.0_wp
             y = [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]
-            call rk_integrate(columns, t, 2.0_wp, y, rk_options_t(rtol=1.0e-13_wp, atol=1.0e-13_wp), error=error)
+            pair = hill_pair_t(model)
+            call rk_integrate(pair, t, 2.0_wp, y, rk_options_t(rtol=1.0e-13_wp, atol=1.0e-13_wp), error=error)
             call check(ctx, .not. allocated(error), "full-period integration succeeds")
             full = reshape(y, [2, 2])
             call check(ctx, maxval(abs(half - full)) < 1.0e-10_wp*max(1.0_wp, maxval(abs(full))), &
                "half-period M = full-period M")
          end do
       end do
-   contains
-      subroutine columns(tau, state, dydt)
-         real(wp), intent(in) :: tau, state(:)
-         real(wp), intent(out) :: dydt(:)
-         real(wp) :: q
-         q = hill_coefficient(model, tau)
-         dydt = [state(2), -q*state(1), state(4), -q*state(3)]
-      end subroutine columns
    end subroutine half_equals_full_period
 
    !> S by trace_rk against the segmented product with exact averages, Richardson-

@@ -6,7 +6,7 @@
 !> bad input or an unwritable path leaves no file behind and touches none.
 module test_tasks
    use hillstab_kinds, only: wp, pi, pi2
-   use hillstab_error, only: error_t, err_input, err_io
+   use hillstab_error, only: error_t, err_input, err_io, err_points_failed
    use hillstab_tasks, only: run_scene_file
    use hillstab_testing
    use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text, &
@@ -27,7 +27,10 @@ contains
          new_unittest("damped_verdicts", damped_verdicts), &
          new_unittest("overflow_clamped", overflow_clamped), &
          new_unittest("roundoff_limited_points_written", roundoff_limited_points_written), &
+         new_unittest("failed_points_written", failed_points_written), &
          new_unittest("repeat_from_output", repeat_from_output), &
+         new_unittest("physical_units", physical_units), &
+         new_unittest("domain_notes", domain_notes), &
          new_unittest("bad_input_touches_nothing", bad_input_touches_nothing), &
          new_unittest("unwritable_output", unwritable_output)])
    end function collect_tasks
@@ -109,7 +112,8 @@ contains
       call check(ctx, written == out//"_chart.dat", "file name <output>_chart.dat")
       lines = read_lines(written)
       call check(ctx, index(lines(1), "# hillstab 0.1.0") == 1, "version first: "//trim(lines(1)))
-      call check(ctx, columns_line(lines) == "alpha beta S stable lambda_max mu log10_abs_S overflow physical", &
+      call check(ctx, columns_line(lines) == &
+                 "alpha beta S stable lambda_max mu log10_abs_S overflow physical error_estimate status", &
                  "exactly one columns line")
       call check(ctx, any(index(lines, "# &scene task = 'chart'") == 1), "effective &scene in the header")
       call check(ctx, any(index(lines, "# &chart alpha_min = 1.0, alpha_max = 9.0, n_alpha = 3") == 1), &
@@ -117,8 +121,8 @@ contains
       call check(ctx, any(index(lines, "leaves the physical domain") > 0), "outside-domain note")
       first_data = findloc(lines(:)(1:1) == "#", .false., dim=1)
       call check(ctx, all(lines(:first_data - 1)(1:1) == "#"), "header before data")
-      call data_rows(lines, 9, rows, n_blank, numeric)
-      call check(ctx, numeric, "every data line holds exactly 9 numbers")
+      call data_rows(lines, 11, rows, n_blank, numeric)
+      call check(ctx, numeric, "every data line holds exactly 11 numbers")
       call check(ctx, size(rows, 2) == 12, "3 x 4 rows")
       call check(ctx, n_blank == 2, "one blank line between the 3 alpha blocks")
       if (size(rows, 2) /= 12) return
@@ -130,6 +134,9 @@ contains
          call check(ctx, (rows(4, k) == 1.0_wp) .eqv. (abs(rows(3, k)) < 2.0_wp), "stable iff |S| < 2")
          call check(ctx, rows(9, k) == merge(1.0_wp, 0.0_wp, rows(2, k) > 0.0_wp .and. rows(2, k) < pi2), &
                     "physical flag")
+         ! segments gives no error estimate (it approximates Q, not the solution)
+         call check(ctx, rows(10, k) == -1.0_wp, "error_estimate -1: not estimated")
+         call check(ctx, rows(11, k) == 0.0_wp, "status 0")
       end do
       call delete_file(written)
    end subroutine chart_layout
@@ -152,7 +159,7 @@ contains
       call check(ctx, .not. allocated(error), "chart runs")
       if (allocated(error)) return
       lines = read_lines(written)
-      call data_rows(lines, 9, rows, n_blank, numeric)
+      call data_rows(lines, 11, rows, n_blank, numeric)
       call check(ctx, numeric .and. size(rows, 2) == 7 .and. n_blank == 0, "7 rows, one block")
       do k = 1, size(rows, 2)
          beta = -3.0_wp + 2.0_wp*(k - 1)
@@ -195,9 +202,10 @@ contains
       if (allocated(error)) return
       call check(ctx, written == out//"_points.dat", "file name <output>_points.dat")
       lines = read_lines(written)
-      call check(ctx, columns_line(lines) == "alpha beta S stable lambda_max mu log10_abs_S overflow physical", &
+      call check(ctx, columns_line(lines) == &
+                 "alpha beta S stable lambda_max mu log10_abs_S overflow physical error_estimate status", &
                  "same columns as the chart")
-      call data_rows(lines, 9, rows, n_blank, numeric)
+      call data_rows(lines, 11, rows, n_blank, numeric)
       call check(ctx, numeric .and. size(rows, 2) == 4, "one row per point")
       if (size(rows, 2) /= 4) return
       do k = 1, 4
@@ -291,9 +299,10 @@ contains
       if (allocated(error)) return
       lines = read_lines(written)
       call check(ctx, columns_line(lines) == &
-                 "alpha beta S stable lambda_max mu log10_abs_S overflow physical stable_paper", "10 columns")
-      call data_rows(lines, 10, rows, n_blank, numeric)
-      call check(ctx, numeric .and. size(rows, 2) == 33, "33 rows of 10 numbers")
+                 "alpha beta S stable lambda_max mu log10_abs_S overflow physical stable_paper error_estimate status", &
+                 "12 columns")
+      call data_rows(lines, 12, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 33, "33 rows of 12 numbers")
       n_differ = 0
       do k = 1, size(rows, 2)
          call check(ctx, (rows(4, k) == 1.0_wp) .eqv. (abs(rows(3, k)) < 2.0_wp*cosh(1.0_wp)), "correct verdict")
@@ -329,14 +338,90 @@ contains
       call check(ctx, .not. allocated(error), "chart runs")
       if (allocated(error)) return
       lines = read_lines(written)
-      call data_rows(lines, 9, rows, n_blank, numeric)
+      call data_rows(lines, 11, rows, n_blank, numeric)
       call check(ctx, numeric .and. size(rows, 2) == 4, "4 rows")
       if (size(rows, 2) /= 4) return
       ! β = 0 rows: S = 2 exactly (x = r(τ) is 2-periodic); round-off level ~1e-10 here
       call check(ctx, rows(3, 1), 2.0_wp, abs=1.0e-8_wp, message="S at alpha 9.85, beta 0")
       call check(ctx, rows(3, 3), 2.0_wp, abs=1.0e-8_wp, message="S at alpha 9.86, beta 0")
+      ! their status says round-off limited, with an error estimate above the tolerance that
+      ! does bound the error; the β = 1 rows meet the tolerance
+      call check(ctx, rows(11, 1) == 1.0_wp .and. rows(11, 3) == 1.0_wp, "status 1 at beta = 0")
+      call check(ctx, rows(10, 1) > 1.0e-12_wp .and. rows(10, 3) > 1.0e-12_wp, "estimate above the tolerance")
+      call check(ctx, abs(rows(3, 1) - 2.0_wp) <= 0.5_wp*rows(10, 1), "error within the estimate, alpha 9.85")
+      call check(ctx, abs(rows(3, 3) - 2.0_wp) <= 0.5_wp*rows(10, 3), "error within the estimate, alpha 9.86")
+      call check(ctx, rows(11, 2) == 0.0_wp .and. rows(11, 4) == 0.0_wp, "status 0 at beta = 1")
+      ! the verdict at beta = 0 (exact S = 2) is marginal, not flipped by the round-off in S
+      call check(ctx, rows(4, 1) == 0.5_wp .and. rows(4, 3) == 0.5_wp, "marginal (stable = 0.5) at beta = 0")
+      call check(ctx, rows(4, 2) == 0.0_wp .and. rows(4, 4) == 0.0_wp, "unstable at beta = 1")
+      call check(ctx, rows(10, 2) <= 1.0e-12_wp .and. rows(10, 2) >= 0.0_wp .and. rows(10, 4) <= 1.0e-12_wp &
+                 .and. rows(10, 4) >= 0.0_wp, "estimate within the tolerance at beta = 1")
       call delete_file(written)
    end subroutine roundoff_limited_points_written
+
+   !> A point no method run can compute (β = 1e13: auto's step limit is reached far from
+   !> the tolerance) does not stop the run: points and chart files are written, the failed
+   !> rows carry status 2 and placeholders outside every column's range, the other rows
+   !> are computed as usual, and the run reports err_points_failed naming the point.
+   subroutine failed_points_written(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out, points
+      character(len=1024), allocatable :: lines(:)
+      real(wp), allocatable :: rows(:, :)
+      integer :: n_blank, k
+      logical :: numeric
+      out = scratch_prefix("failedpts")
+      points = out//"_in.dat"
+      call write_file(points, [character(len=40) :: "5.0 2.47", "9.8 1e13", "0.0 2.0"])
+      call run_text_scene("failedpts", [padded("&scene task = 'points', method = 'auto', output = '"// &
+                                         out//"' /"), padded("&points file = '"//points//"' /")], error, written)
+      call delete_file(points)
+      call check(ctx, allocated(error), "the run reports the failure")
+      if (.not. allocated(error)) return
+      call check(ctx, error%code == err_points_failed, "err_points_failed")
+      call check(ctx, contains_text(error%message, "1 of 3 point"), "counts the failed points: "//error%message)
+      call check(ctx, contains_text(error%message, "beta = 10000000000000.0"), "names the point: "//error%message)
+      call check(ctx, file_exists(out//"_points.dat"), "the file is written")
+      lines = read_lines(out//"_points.dat")
+      call data_rows(lines, 11, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 3, "3 rows of 11 numbers")
+      if (size(rows, 2) /= 3) return
+      call check(ctx, rows(11, 1) == 0.0_wp .and. rows(11, 3) == 0.0_wp, "status 0 elsewhere")
+      call check(ctx, rows(3, 3), 2.0_wp*cos(2.0_wp*sqrt(2.0_wp)), rel=1.0e-12_wp, message="S at alpha = 0")
+      call check(ctx, rows(10, 1) >= 0.0_wp .and. rows(10, 1) <= 1.0e-10_wp, "estimate within the tolerance")
+      call check(ctx, rows(11, 2) == 2.0_wp, "status 2 at the failed point")
+      call check(ctx, rows(1, 2) == 9.8_wp .and. rows(2, 2) == 1.0e13_wp, "alpha, beta of the failed point")
+      call check(ctx, rows(3, 2) == 0.0_wp .and. rows(6, 2) == 0.0_wp, "S, mu placeholders 0")
+      call check(ctx, rows(4, 2) == -1.0_wp .and. rows(8, 2) == -1.0_wp, "flags -1")
+      call check(ctx, rows(5, 2) == -1.0_wp, "lambda_max -1")
+      call check(ctx, rows(7, 2) == -999.0_wp, "log10_abs_S -999")
+      call check(ctx, rows(9, 2) == 0.0_wp, "physical as for any point (beta > pi^2)")
+      call check(ctx, rows(10, 2) == -1.0_wp, "error_estimate -1")
+      do k = 1, size(lines)
+         call check(ctx, index(lines(k), "Inf") == 0 .and. index(lines(k), "NaN") == 0 .and. &
+                    index(lines(k), "nan") == 0 .and. index(lines(k), "inf") == 0, "no Inf/NaN text")
+      end do
+      call delete_file(out//"_points.dat")
+
+      ! the chart path (rows in parallel, lines formatted on every thread), damped: 12 columns
+      call run_text_scene("failedchart", [ &
+         padded("&scene method = 'auto', epsilon = 0.5, output = '"//out//"' /"), &
+         padded("&chart alpha_min = 9, alpha_max = 9.8, n_alpha = 2, beta_min = 1, beta_max = 1e13, n_beta = 2 /")], &
+         error, written)
+      call check(ctx, allocated(error), "the chart reports the failure")
+      if (.not. allocated(error)) return
+      call check(ctx, error%code == err_points_failed, "err_points_failed (chart)")
+      call check(ctx, contains_text(error%message, "2 of 4 point"), "counts the failed points: "//error%message)
+      lines = read_lines(out//"_chart.dat")
+      call data_rows(lines, 12, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 4 .and. n_blank == 1, "4 rows of 12 numbers in 2 blocks")
+      if (size(rows, 2) /= 4) return
+      call check(ctx, all(rows(12, [1, 3]) == 0.0_wp) .and. all(rows(12, [2, 4]) == 2.0_wp), "statuses 0, 2")
+      call check(ctx, all(rows(10, [2, 4]) == -1.0_wp), "stable_paper -1 at failed points")
+      call check(ctx, all(rows(10, [1, 3]) >= 0.0_wp), "stable_paper a flag elsewhere")
+      call delete_file(written)
+   end subroutine failed_points_written
 
    subroutine overflow_clamped(ctx)
       type(test_context_t), intent(inout) :: ctx
@@ -354,8 +439,9 @@ contains
       call check(ctx, .not. allocated(error), "chart runs")
       if (allocated(error)) return
       lines = read_lines(written)
-      call data_rows(lines, 9, rows, n_blank, numeric)
-      call check(ctx, numeric .and. size(rows, 2) == 2, "2 rows")
+      ! the Mathieu model's files have no physical column
+      call data_rows(lines, 10, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 2, "2 rows of 10 numbers")
       if (size(rows, 2) /= 2) return
       call check(ctx, rows(3, 1), 1.0e300_wp, rel=1.0e-15_wp, message="S clamped")
       call check(ctx, rows(8, 1) == 1.0_wp .and. rows(8, 2) == 0.0_wp, "overflow flags")
@@ -404,6 +490,114 @@ contains
       call check(ctx, .not. any(index(first, "leaves the physical domain") > 0), "inside the physical domain")
       call delete_file(written)
    end subroutine repeat_from_output
+
+   !> A points run in physical units: α and β from eqs. (4), (24) computed here, the
+   !> mu_per_s column = μ ω/π, the same file again from the output file, and the Mathieu
+   !> model given ν = α (1 − β/π²) of eq. (21).
+   subroutine physical_units(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out, again
+      character(len=1024), allocatable :: first(:), second(:)
+      real(wp), allocatable :: rows(:, :)
+      real(wp), parameter :: omega = 10.0_wp, g = 9.81_wp, r0 = 0.3_wp, amplitudes(3) = [0.05_wp, 0.2_wp, 0.3_wp]
+      real(wp) :: rho, beta
+      integer :: n_blank, k
+      logical :: numeric
+      out = scratch_prefix("physical")
+      call run_text_scene("physical", [ &
+         padded("&scene task = 'points', method = 'magnus6', tolerance = 1e-9, output = '"//out//"' /"), &
+         padded("&physical omega = 10, g = 9.81, r0 = 0.3, a = 0.05, 0.2, 0.3 /")], error, written)
+      call check(ctx, .not. allocated(error), "physical points run")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      first = read_lines(written)
+      call check(ctx, columns_line(first) == "alpha beta S stable lambda_max mu log10_abs_S overflow physical mu_per_s "// &
+                 "error_estimate status", &
+                 "columns: "//columns_line(first))
+      call data_rows(first, 12, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 3, "three rows of 12 numbers")
+      if (size(rows, 2) /= 3) return
+      rho = r0 + g/omega**2
+      beta = g*pi2/(rho*omega**2)
+      do k = 1, 3
+         call check(ctx, rows(1, k), amplitudes(k)*pi2/rho, rel=1.0e-14_wp, message="alpha = a pi^2/rho")
+         call check(ctx, rows(2, k), beta, rel=1.0e-14_wp, message="beta = g pi^2/(rho omega^2)")
+         call check(ctx, rows(10, k), rows(6, k)*omega/pi, rel=1.0e-9_wp, abs=1.0e-300_wp, message="mu_per_s")
+      end do
+      call check(ctx, rows(10, 3) > 0.0_wp, "a = 0.3 m grows")
+      call run_scene_file(written, .true., error, again)
+      call check(ctx, .not. allocated(error), "second run from the output file")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      second = read_lines(again)
+      call check(ctx, size(first) == size(second), "same number of lines")
+      if (size(first) /= size(second)) return
+      do k = 1, size(first)
+         if (index(first(k), "# scene file:") == 1) cycle
+         call check(ctx, first(k) == second(k), "line "//trim(first(k)))
+      end do
+      call delete_file(written)
+      ! Mathieu: the first column is nu, no physical column
+      call run_text_scene("physical_m", [ &
+         padded("&scene task = 'points', model = 'mathieu', method = 'magnus6', output = '"//out//"' /"), &
+         padded("&physical omega = 10, g = 9.81, r0 = 0.3, a = 0.05, 0.2, 0.3, kappa = 0.5 /")], error, written)
+      call check(ctx, .not. allocated(error), "physical Mathieu points run")
+      if (allocated(error)) return
+      first = read_lines(written)
+      call check(ctx, columns_line(first) == "alpha beta S stable lambda_max mu log10_abs_S overflow stable_paper "// &
+                 "mu_per_s error_estimate status", "Mathieu columns: "//columns_line(first))
+      call data_rows(first, 12, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 3, "three rows of 12 numbers")
+      if (size(rows, 2) /= 3) return
+      do k = 1, 3
+         call check(ctx, rows(1, k), amplitudes(k)*pi2/rho*(1.0_wp - beta/pi2), rel=1.0e-14_wp, message="nu")
+      end do
+      call check(ctx, any(index(first, "# &physical omega = 10.0, g = 9.81, kappa = 0.5, r0 = 0.3, a = 0.05, 0.2, "// &
+                 "0.3 /") == 1), "effective &physical in the header")
+      call check(ctx, .not. any(index(first, "epsilon = 0.") > 0 .and. index(first, "# &scene") == 1), &
+                 "no epsilon in &scene when kappa gives it")
+      call delete_file(written)
+   end subroutine physical_units
+
+   !> The physical-domain note only where it means something: not for the Mathieu model,
+   !> not for a chart starting at beta = 0 (no gravity); yes above beta = pi**2.
+   subroutine domain_notes(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out
+      character(len=1024), allocatable :: lines(:)
+      out = scratch_prefix("notes")
+      call run_text_scene("notes1", [ &
+         padded("&scene model = 'mathieu', method = 'formula', output = '"//out//"' /"), &
+         padded("&chart alpha_min = 0, alpha_max = 12, n_alpha = 2, beta_min = -2, beta_max = 12, n_beta = 2 /")], &
+         error, written)
+      call check(ctx, .not. allocated(error), "Mathieu chart")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call check(ctx, .not. any(index(lines, "physical") > 0), "no physical column or note for Mathieu")
+      call run_text_scene("notes2", [ &
+         padded("&scene method = 'formula', output = '"//out//"' /"), &
+         padded("&chart alpha_min = 0, alpha_max = 9, n_alpha = 2, beta_min = 0, beta_max = 9, n_beta = 2 /")], &
+         error, written)
+      call check(ctx, .not. allocated(error), "chart from beta = 0")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call check(ctx, .not. any(index(lines, "leaves the physical domain") > 0), "beta = 0 is physical (g = 0)")
+      call run_text_scene("notes3", [ &
+         padded("&scene method = 'formula', output = '"//out//"' /"), &
+         padded("&chart alpha_min = 0, alpha_max = 9, n_alpha = 2, beta_min = 0, beta_max = 10, n_beta = 2 /")], &
+         error, written)
+      call check(ctx, .not. allocated(error), "chart to beta = 10")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call check(ctx, any(index(lines, "leaves the physical domain") > 0), "beta > pi**2 leaves it")
+      call delete_file(written)
+   end subroutine domain_notes
 
    !> Every bad scene of the scene suite: an error, no output file created, an
    !> existing output file unchanged, no temporary file left.
