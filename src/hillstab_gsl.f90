@@ -41,7 +41,7 @@ module hillstab_gsl
    use hillstab_kinds, only: wp, int64, pi2, log_huge
    use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use hillstab_refine, only: refinement_t, start_refinement, refine, refine_more, refine_met, refine_roundoff, &
-      roundoff_level, propagator_condition, trace_distance
+      roundoff_level, propagator_condition, trace_distance, first_step_factor, next_local_tolerance
    use hillstab_stats, only: work_stats_t, add_work
    use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
    use hillstab_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
@@ -476,7 +476,11 @@ contains
       call refine(ladder, tr, .false., roundoff_level(log_peak, tr%log_abs, int(part%n_steps)))
       estimate = -1.0_wp
       do run = 2, max_ladder_runs
-         eps = max(0.1_wp*eps, smallest_gsl_epsilon)
+         ! the first step down also divides by the condition κ of the first pass: where the
+         ! solutions grow far beyond S inside the period (α → π², β → 0) the first pass's
+         ! error is κ times its epsilon and two loose passes can agree on a wrong value
+         eps = next_local_tolerance(eps, merge(first_step_factor(log_peak, tr%log_abs), 10.0_wp, run == 2), &
+                                    smallest_gsl_epsilon)
          call half_period_monodromy(model, eps, trial, log_condition, part, run_error, log_peak)
          call add_work(stats, part)
          if (allocated(run_error)) then

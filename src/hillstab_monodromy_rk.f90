@@ -22,7 +22,7 @@ module hillstab_monodromy_rk
    use hillstab_kinds, only: wp
    use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use hillstab_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
-      roundoff_level, propagator_condition
+      roundoff_level, propagator_condition, first_step_factor, next_local_tolerance
    use hillstab_stats, only: work_stats_t, add_work
    use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
    use hillstab_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
@@ -187,7 +187,9 @@ contains
          call refine(ladder, tr, at_floor=local <= 1.001_wp*tolerance_floor .or. run == max_ladder_runs, &
                      noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps)))
          if (ladder%verdict /= refine_more) exit
-         local = max(0.1_wp*local, tolerance_floor)
+         ! the first step down also divides by the propagator's condition (`first_step_factor`)
+         local = next_local_tolerance(local, merge(first_step_factor(log_peak, tr%log_abs), 10.0_wp, run == 1), &
+                                      tolerance_floor)
       end do
       if (present(stats)) stats = work
       if (allocated(error)) then

@@ -24,7 +24,8 @@ module hillstab_refine
    use hillstab_transfer, only: trace_t
    implicit none
    private
-   public :: refinement_t, start_refinement, refine, trace_distance, roundoff_level, propagator_condition
+   public :: refinement_t, start_refinement, refine, trace_distance, roundoff_level, propagator_condition, first_step_factor, &
+      next_local_tolerance
    public :: refine_more, refine_met, refine_roundoff
 
    !> Safety factor of `roundoff_level`, as method auto's (calibrated there on β = 0,
@@ -123,4 +124,21 @@ contains
          d = abs(a%value - b%value)/max(1.0_wp, abs(a%value))
       end if
    end function trace_distance
+
+   !> Factor between the first two local tolerances of a ladder: 10, or the scaled
+   !> condition κ/2 of the propagator (`propagator_condition`, 2 for a rotation) relative
+   !> to max(1, |S|) when larger, at most 1e4.
+   elemental real(wp) function first_step_factor(log_peak, log_abs_s) result(factor)
+      real(wp), intent(in) :: log_peak, log_abs_s
+      factor = max(10.0_wp, min(1.0e4_wp, 0.5_wp*exp(min(log_peak - max(0.0_wp, log_abs_s), 30.0_wp))))
+   end function first_step_factor
+
+   !> The next local tolerance of a ladder: `local/factor`, not below `floor`; the floor is
+   !> reached from 10·floor, so that the last difference (the error estimate there) comes
+   !> from a tenfold step and not from a long jump.
+   elemental real(wp) function next_local_tolerance(local, factor, floor) result(next)
+      real(wp), intent(in) :: local, factor, floor
+      next = max(local/factor, floor)
+      if (next < 10.0_wp*floor .and. local > 10.001_wp*floor) next = 10.0_wp*floor
+   end function next_local_tolerance
 end module hillstab_refine
