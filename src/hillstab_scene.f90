@@ -1,4 +1,4 @@
-!> Scenes: one namelist file describes one run (task, model, method, grid, output).
+!> A scene is one namelist file describing one run (task, model, method, grid, output).
 !> This module reads and validates it into a `scene_t`; it computes nothing and
 !> writes nothing. Every error names the file, the namelist group and the variable.
 !>
@@ -100,7 +100,7 @@ contains
 
    !> Name of a task constant.
    pure function task_name(task) result(name)
-      integer, intent(in) :: task
+      integer, intent(in) :: task  !! one of the task_* constants
       character(len=:), allocatable :: name
       select case (task)
       case (task_chart); name = "chart"
@@ -114,8 +114,8 @@ contains
 
    !> The i-th of n equally spaced values from lo to hi (n = 1: lo).
    pure real(wp) function grid_value(lo, hi, n, i)
-      real(wp), intent(in) :: lo, hi
-      integer, intent(in) :: n, i
+      real(wp), intent(in) :: lo, hi  !! first and last value
+      integer, intent(in) :: n, i  !! number of values; index 1 ... n
       if (n <= 1) then
          grid_value = lo
       else if (i == n) then
@@ -150,7 +150,7 @@ contains
    subroutine read_scene(path, scene, error)
       character(len=*), intent(in) :: path       !! scene file
       type(scene_t), intent(out) :: scene        !! the validated scene
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable; unallocated on success
       integer :: unit, ios
       character(len=512) :: msg
       scene = default_scene(path)
@@ -1029,7 +1029,7 @@ contains
 
    !> Decimal text of an integer.
    pure function integer_text(n) result(text)
-      integer, intent(in) :: n
+      integer, intent(in) :: n  !! the integer
       character(len=:), allocatable :: text
       character(len=24) :: buffer
       write (buffer, '(i0)') n
@@ -1097,7 +1097,7 @@ contains
    !> with its value (defaults filled in): `&scene`, the group of the task and, when the
    !> scene has one, `&physical`. Reading these lines back as a scene reproduces the run.
    function scene_namelist(scene) result(lines)
-      type(scene_t), intent(in) :: scene
+      type(scene_t), intent(in) :: scene  !! the scene
       character(len=:), allocatable :: lines(:)
       character(len=:), allocatable :: first, second, third
       integer :: k
@@ -1157,8 +1157,8 @@ contains
 
    !> Read one whole line of any length from a formatted unit.
    subroutine read_text_line(unit, line, ios)
-      integer, intent(in) :: unit
-      character(len=:), allocatable, intent(out) :: line
+      integer, intent(in) :: unit  !! an open formatted unit
+      character(len=:), allocatable, intent(out) :: line  !! the line, without its end
       integer, intent(out) :: ios  !! 0, or iostat_end at the end of the file
       character(len=1024) :: chunk
       integer :: got
