@@ -34,7 +34,7 @@ module hillstab_scene
    integer, parameter :: task_chart = 1        !! stability chart over an (α, β) grid
    integer, parameter :: task_points = 2       !! the chart's columns at listed (α, β) points
    integer, parameter :: task_coefficient = 3  !! Q(τ) and its segmented version (the paper's Fig. 2)
-   integer, parameter :: task_boundaries = 4   !! transition curves (reserved for its own issue)
+   integer, parameter :: task_boundaries = 4   !! transition curves over the α grid of `&chart`
    integer, parameter :: task_series = 5       !! time series (reserved for its own issue)
 
    !> Largest number of α values in `&coefficient alphas`.
@@ -165,7 +165,7 @@ contains
       end if
       if (.not. allocated(error)) then
          select case (scene%task)
-         case (task_chart)
+         case (task_chart, task_boundaries)
             call read_chart_group(unit, scene, error)
          case (task_points)
             call read_points_group(unit, scene, error)
@@ -207,8 +207,8 @@ contains
       end do
       if (this%task < 0) then
          call fail(error, this%source, group, "task", "unknown task '"//trim(task)// &
-            "' (expected chart, points or coefficient)")
-      else if (this%task == task_boundaries .or. this%task == task_series) then
+            "' (expected chart, points, coefficient or boundaries)")
+      else if (this%task == task_series) then
          call fail(error, this%source, group, "task", "task '"//trim(task)//"' is not available in this build")
       end if
       if (allocated(error)) return
@@ -257,6 +257,10 @@ contains
          return
       end if
       this%epsilon = epsilon
+      if (this%task == task_boundaries .and. epsilon > 0.0_wp) then
+         call fail(error, this%source, group, "epsilon", "task 'boundaries' draws the undamped curves: epsilon must be 0")
+         return
+      end if
 
       if (len_trim(output) == 0) then
          call fail(error, this%source, group, "output", "the output prefix is empty")
@@ -1110,7 +1114,7 @@ contains
       if (.not. scene%physical) first = first//", epsilon = "//real_text(scene%epsilon)
       first = first//", output = "//quoted(scene%output)//" /"
       select case (scene%task)
-      case (task_chart)
+      case (task_chart, task_boundaries)
          second = "&chart alpha_min = "//real_text(scene%chart%alpha_min)// &
             ", alpha_max = "//real_text(scene%chart%alpha_max)//", n_alpha = "//integer_text(scene%chart%n_alpha)// &
             ", beta_min = "//real_text(scene%chart%beta_min)//", beta_max = "//real_text(scene%chart%beta_max)// &
