@@ -8,6 +8,8 @@
 #                       with plain gfortran (no fpm)
 #   make install PREFIX=/usr/local   install libraries, modules, C header, pkg-config and CMake
 #                       files and the program (the same files as the CMake install)
+#   make doc            API reference with FORD into build/doc (installs FORD through pip if missing)
+#   make doc-check      fail on an undocumented public entity or argument (scripts/doc_check.py)
 #   make check-install  install into temporary prefixes (make and CMake routes) and build and run
 #                       consumers against each: C, Fortran and fixed-form FORTRAN 77 through
 #                       pkg-config, C and Fortran through CMake find_package
@@ -31,7 +33,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug setup bench lib install check-install clean mpi test-mpi
+.PHONY: run test test-debug setup bench lib install check-install doc doc-check clean mpi test-mpi
 
 setup:
 	@bash scripts/setup.sh
@@ -100,6 +102,12 @@ mpi:
 
 test-mpi:
 	bash scripts/test_mpi.sh
+
+doc:
+	@bash scripts/doc.sh
+
+doc-check:
+	@python3 scripts/doc_check.py
 
 clean:
 	rm -rf build out

@@ -1,5 +1,5 @@
-!> hillstab: stability of the elastic pendulum through the Hill equation
-!> x'' + Q(τ) x = 0 and Floquet theory. This umbrella module re-exports the public API.
+!> The umbrella module of hillstab, the stability of the elastic pendulum through the Hill
+!> equation x'' + Q(τ) x = 0 and Floquet theory: it re-exports the public API.
 !>
 !>```fortran
 !> use hillstab

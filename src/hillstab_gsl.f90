@@ -186,7 +186,7 @@ contains
       integer, intent(in) :: n             !! order, 0 ≤ n ≤ mathieu_max_order
       real(wp), intent(in) :: q            !! Mathieu parameter (any sign)
       real(wp), intent(out) :: value       !! a_n(q)
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! GSL failure; unallocated on success
       call mathieu_characteristic(mathieu_kind_a, n, q, value, error)
    end subroutine mathieu_a
 
@@ -195,7 +195,7 @@ contains
       integer, intent(in) :: n             !! order, 1 ≤ n ≤ mathieu_max_order
       real(wp), intent(in) :: q            !! Mathieu parameter (any sign)
       real(wp), intent(out) :: value       !! b_n(q)
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! GSL failure; unallocated on success
       call mathieu_characteristic(mathieu_kind_b, n, q, value, error)
    end subroutine mathieu_b
 
@@ -207,7 +207,7 @@ contains
       integer, intent(in) :: n             !! order of the curve
       real(wp), intent(in) :: nu           !! ν, the amplitude of the cosine
       real(wp), intent(out) :: beta        !! β on the curve
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! GSL failure or bad kind; unallocated on success
       real(wp) :: a
       call mathieu_characteristic(kind, n, 2.0_wp*nu/pi2, a, error)
       beta = 0.25_wp*pi2*a
@@ -394,11 +394,11 @@ contains
    !> the period far beyond S (condition κ > gsl_rerun_condition) the integration
    !> is repeated with the epsilon divided by κ, and `stats` counts both passes.
    subroutine monodromy_gsl(model, tolerance, m, stats, error)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
       real(wp), intent(in) :: tolerance         !! target error on S, scaled by max(1, |S|)
       type(scaled_matrix_t), intent(out) :: m   !! monodromy over [0, 2]
       type(work_stats_t), intent(out) :: stats  !! rk8pd steps, rejections, Q evaluations
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! GSL failure; unallocated on success
       type(work_stats_t) :: second
       real(wp) :: log_condition
       stats = work_stats_t()
@@ -416,11 +416,11 @@ contains
 
    !> Trace S of `monodromy_gsl`.
    subroutine trace_gsl(model, tolerance, tr, stats, error)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
       real(wp), intent(in) :: tolerance         !! target error on S, scaled by max(1, |S|)
       type(trace_t), intent(out) :: tr          !! S
       type(work_stats_t), intent(out) :: stats  !! rk8pd steps, rejections, Q evaluations
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! GSL failure; unallocated on success
       type(scaled_matrix_t) :: m
       call monodromy_gsl(model, tolerance, m, stats, error)
       if (allocated(error)) return
@@ -431,11 +431,11 @@ contains
    !> the symmetry (GSL epsilon tolerance·gsl_tolerance_factor, no rerun): a check
    !> of `monodromy_gsl`, at twice the work.
    subroutine monodromy_gsl_full_period(model, tolerance, m, stats, error)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
       real(wp), intent(in) :: tolerance         !! sets GSL's control epsilon
       type(scaled_matrix_t), intent(out) :: m   !! monodromy over [0, 2]
       type(work_stats_t), intent(out) :: stats  !! rk8pd steps, rejections, Q evaluations
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! GSL failure; unallocated on success
       real(wp) :: y(2, 2), log_scale(2), log_peak(2), top
       stats = work_stats_t()
       call check_model(model, error)

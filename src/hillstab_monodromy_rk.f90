@@ -70,7 +70,7 @@ contains
       real(wp), intent(in) :: tolerance        !! target error on S, scaled by max(1, |S|)
       type(scaled_matrix_t), intent(out) :: m  !! M = e^{log_scale} m
       type(work_stats_t), intent(out) :: stats !! steps, rejections, Q evaluations
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! integration failure; unallocated on success
       integer, intent(in), optional :: method  !! rk_dop853 (default) or rk_dopri5
       type(rk_options_t) :: options
       type(even_odd_pair_t) :: pair
@@ -135,7 +135,7 @@ contains
       type(hill_model_t), intent(in) :: model  !! the Hill equation
       real(wp), intent(in) :: tolerance        !! target error on S, scaled by max(1, |S|)
       type(trace_t), intent(out) :: tr         !! S, flagged if it overflows
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! integration failure; unallocated on success
       type(work_stats_t), intent(out), optional :: stats  !! steps, rejections, Q evaluations
       integer, intent(in), optional :: method  !! rk_dop853 (default) or rk_dopri5
       type(scaled_matrix_t) :: m

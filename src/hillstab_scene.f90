@@ -1,4 +1,4 @@
-!> Scenes: one namelist file describes one run (task, model, method, grid, output).
+!> A scene is one namelist file describing one run (task, model, method, grid, output).
 !> This module reads and validates it into a `scene_t`; it computes nothing and
 !> writes nothing. Every error names the file, the namelist group and the variable.
 !>
@@ -34,7 +34,7 @@ module hillstab_scene
    integer, parameter :: task_chart = 1        !! stability chart over an (α, β) grid
    integer, parameter :: task_points = 2       !! the chart's columns at listed (α, β) points
    integer, parameter :: task_coefficient = 3  !! Q(τ) and its segmented version (the paper's Fig. 2)
-   integer, parameter :: task_boundaries = 4   !! transition curves (reserved for its own issue)
+   integer, parameter :: task_boundaries = 4   !! transition curves over the α grid of `&chart`
    integer, parameter :: task_series = 5       !! time series (reserved for its own issue)
 
    !> Largest number of α values in `&coefficient alphas`.
@@ -100,7 +100,7 @@ contains
 
    !> Name of a task constant.
    pure function task_name(task) result(name)
-      integer, intent(in) :: task
+      integer, intent(in) :: task  !! one of the task_* constants
       character(len=:), allocatable :: name
       select case (task)
       case (task_chart); name = "chart"
@@ -114,8 +114,8 @@ contains
 
    !> The i-th of n equally spaced values from lo to hi (n = 1: lo).
    pure real(wp) function grid_value(lo, hi, n, i)
-      real(wp), intent(in) :: lo, hi
-      integer, intent(in) :: n, i
+      real(wp), intent(in) :: lo, hi  !! first and last value
+      integer, intent(in) :: n, i  !! number of values; index 1 ... n
       if (n <= 1) then
          grid_value = lo
       else if (i == n) then
@@ -150,7 +150,7 @@ contains
    subroutine read_scene(path, scene, error)
       character(len=*), intent(in) :: path       !! scene file
       type(scene_t), intent(out) :: scene        !! the validated scene
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable; unallocated on success
       integer :: unit, ios
       character(len=512) :: msg
       scene = default_scene(path)
@@ -165,7 +165,7 @@ contains
       end if
       if (.not. allocated(error)) then
          select case (scene%task)
-         case (task_chart)
+         case (task_chart, task_boundaries)
             call read_chart_group(unit, scene, error)
          case (task_points)
             call read_points_group(unit, scene, error)
@@ -207,8 +207,8 @@ contains
       end do
       if (this%task < 0) then
          call fail(error, this%source, group, "task", "unknown task '"//trim(task)// &
-            "' (expected chart, points or coefficient)")
-      else if (this%task == task_boundaries .or. this%task == task_series) then
+            "' (expected chart, points, coefficient or boundaries)")
+      else if (this%task == task_series) then
          call fail(error, this%source, group, "task", "task '"//trim(task)//"' is not available in this build")
       end if
       if (allocated(error)) return
@@ -257,6 +257,10 @@ contains
          return
       end if
       this%epsilon = epsilon
+      if (this%task == task_boundaries .and. epsilon > 0.0_wp) then
+         call fail(error, this%source, group, "epsilon", "task 'boundaries' draws the undamped curves: epsilon must be 0")
+         return
+      end if
 
       if (len_trim(output) == 0) then
          call fail(error, this%source, group, "output", "the output prefix is empty")
@@ -1029,7 +1033,7 @@ contains
 
    !> Decimal text of an integer.
    pure function integer_text(n) result(text)
-      integer, intent(in) :: n
+      integer, intent(in) :: n  !! the integer
       character(len=:), allocatable :: text
       character(len=24) :: buffer
       write (buffer, '(i0)') n
@@ -1097,7 +1101,7 @@ contains
    !> with its value (defaults filled in): `&scene`, the group of the task and, when the
    !> scene has one, `&physical`. Reading these lines back as a scene reproduces the run.
    function scene_namelist(scene) result(lines)
-      type(scene_t), intent(in) :: scene
+      type(scene_t), intent(in) :: scene  !! the scene
       character(len=:), allocatable :: lines(:)
       character(len=:), allocatable :: first, second, third
       integer :: k
@@ -1110,7 +1114,7 @@ contains
       if (.not. scene%physical) first = first//", epsilon = "//real_text(scene%epsilon)
       first = first//", output = "//quoted(scene%output)//" /"
       select case (scene%task)
-      case (task_chart)
+      case (task_chart, task_boundaries)
          second = "&chart alpha_min = "//real_text(scene%chart%alpha_min)// &
             ", alpha_max = "//real_text(scene%chart%alpha_max)//", n_alpha = "//integer_text(scene%chart%n_alpha)// &
             ", beta_min = "//real_text(scene%chart%beta_min)//", beta_max = "//real_text(scene%chart%beta_max)// &
@@ -1157,8 +1161,8 @@ contains
 
    !> Read one whole line of any length from a formatted unit.
    subroutine read_text_line(unit, line, ios)
-      integer, intent(in) :: unit
-      character(len=:), allocatable, intent(out) :: line
+      integer, intent(in) :: unit  !! an open formatted unit
+      character(len=:), allocatable, intent(out) :: line  !! the line, without its end
       integer, intent(out) :: ios  !! 0, or iostat_end at the end of the file
       character(len=1024) :: chunk
       integer :: got

@@ -19,7 +19,7 @@ module hillstab_templates
    use hillstab_monodromy, only: method_name
    use hillstab_units, only: physical_t
    use hillstab_scene, only: scene_t, default_scene, real_text, integer_text, task_chart, task_points, &
-      task_coefficient
+      task_coefficient, task_boundaries
    implicit none
    private
    public :: template_task_names, scene_template
@@ -36,7 +36,7 @@ contains
    !> The tasks that have a template, in the order `--help` lists them.
    function template_task_names() result(names)
       character(len=:), allocatable :: names(:)  !! task names, blank-padded to a common length
-      names = [character(len=11) :: "chart", "points", "coefficient"]
+      names = [character(len=11) :: "chart", "points", "coefficient", "boundaries"]
    end function template_task_names
 
    !> The complete commented scene of `task` (lines separated by new_line('a'), no final
@@ -61,6 +61,11 @@ contains
          text = header(task, "Q(tau) and its segmented version, one pair of columns per alpha (the paper's Fig. 2)") &
                 //scene_group(scene, task)//nl//coefficient_group(scene)//nl//nl// &
                 physical_group("&coefficient alphas and beta")
+      case ("boundaries")
+         scene%task = task_boundaries
+         text = header(task, "transition curves S = +-2 over the alpha grid of &chart, within its beta window "// &
+                "(exact methods: Hill's method; formula, segments: roots by Brent from n_beta samples)") &
+                //scene_group(scene, task)//nl//chart_group(scene)//nl//nl//physical_group("")
       case default
          call set_error(error, err_input, "no template for task '"//task//"' (tasks: "// &
             joined(template_task_names(), ", ")//")")
