@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 
 scenes_dir=${HILLSTAB_SCENES:-data/scenes}
 scenes=(default_exact default_paper fig4_points fig2_coefficient
-        figA_mathieu_formula figA_mathieu_segments4 figA_mathieu_exact damped)
+        figA_mathieu_formula figA_mathieu_segments4 figA_mathieu_exact damped spring_physical)
 plots=(default fig2 fig3 figA damped)
 
 command -v gnuplot >/dev/null 2>&1 || { echo "run_default: gnuplot not found (run scripts/setup.sh)" >&2; exit 1; }

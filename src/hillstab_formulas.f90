@@ -42,7 +42,7 @@ contains
    !> The paper's eqs. (48)–(50): S₁ for the damped χ equation (47):
    !> B₁² = ((β − ε²/4) + α(1 − ε²/4π²))/(1 + α/π²), B₂² = ((β − ε²/4) − α(1 − ε²/4π²))/(1 − α/π²).
    pure function trace_damped_paper(alpha, beta, epsilon) result(tr)
-      real(wp), intent(in) :: alpha, beta
+      real(wp), intent(in) :: alpha, beta  !! the chart point (alpha, beta)
       real(wp), intent(in) :: epsilon  !! damping ε = κπ/ω
       type(trace_t) :: tr
       real(wp) :: shifted, amp, b1_sq, b2_sq
@@ -55,7 +55,7 @@ contains
 
    !> The paper's eq. (A3)/(A9): Mathieu q = β − ν on [0,1), β + ν on [1,2).
    pure function trace_mathieu_two_segment(nu, beta) result(tr)
-      real(wp), intent(in) :: nu, beta
+      real(wp), intent(in) :: nu, beta  !! Mathieu amplitude nu and mean beta
       type(trace_t) :: tr
       tr = trace_two_piece(beta - nu, beta + nu)
    end function trace_mathieu_two_segment

@@ -200,7 +200,7 @@ contains
       integer, intent(in) :: n             !! order, 0 ≤ n ≤ mathieu_max_order
       real(wp), intent(in) :: q            !! Mathieu parameter (any sign)
       real(wp), intent(out) :: value       !! a_n(q)
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! GSL failure; unallocated on success
       call mathieu_characteristic(mathieu_kind_a, n, q, value, error)
    end subroutine mathieu_a
 
@@ -209,7 +209,7 @@ contains
       integer, intent(in) :: n             !! order, 1 ≤ n ≤ mathieu_max_order
       real(wp), intent(in) :: q            !! Mathieu parameter (any sign)
       real(wp), intent(out) :: value       !! b_n(q)
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! GSL failure; unallocated on success
       call mathieu_characteristic(mathieu_kind_b, n, q, value, error)
    end subroutine mathieu_b
 
@@ -221,7 +221,7 @@ contains
       integer, intent(in) :: n             !! order of the curve
       real(wp), intent(in) :: nu           !! ν, the amplitude of the cosine
       real(wp), intent(out) :: beta        !! β on the curve
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! GSL failure or bad kind; unallocated on success
       real(wp) :: a
       call mathieu_characteristic(kind, n, 2.0_wp*nu/pi2, a, error)
       beta = 0.25_wp*pi2*a
@@ -428,17 +428,18 @@ contains
    !>
    !> `tolerance` is the target error on S relative to max(1, |S|), with a global error
    !> control (hillstab_refine): the half period is integrated with GSL's control epsilon
-   !> tolerance·gsl_tolerance_factor, then ten times smaller each time, until two successive
-   !> traces agree to the tolerance; the finer monodromy is returned and their difference is
-   !> the error estimate. When the epsilon reaches its floor, GSL's control cannot meet it
-   !> (GSL_FAILURE: rounding noise), or the traces differ by rounding noise only, the
-   !> finest monodromy comes back with err_accuracy (round-off limited) and its estimate.
-   !> `stats` counts every pass.
+   !> tolerance·gsl_tolerance_factor, then smaller (first by the condition of the
+   !> propagator, then tenfold) until two successive traces agree to the tolerance; the
+   !> finer monodromy is returned and their difference is the error estimate. When the
+   !> epsilon reaches its floor, GSL's control cannot meet it (GSL_FAILURE: rounding
+   !> noise), or the traces differ by rounding noise only, the finest monodromy comes back
+   !> with err_accuracy (round-off limited) and its estimate. `stats` counts every pass.
    subroutine monodromy_gsl(model, tolerance, m, stats, error, error_estimate)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
       real(wp), intent(in) :: tolerance         !! target error on S, scaled by max(1, |S|)
       type(scaled_matrix_t), intent(out) :: m   !! monodromy over [0, 2]
       type(work_stats_t), intent(out) :: stats  !! rk8pd steps, rejections, Q evaluations
+      !> GSL failure; err_accuracy when round-off limited (`m` then holds the best value)
       type(error_t), allocatable, intent(out) :: error
       real(wp), intent(out), optional :: error_estimate  !! estimated |ΔS|/max(1, |S|)
       type(work_stats_t) :: part
@@ -526,10 +527,11 @@ contains
    !> Trace S of `monodromy_gsl`, with its error estimate; on err_accuracy (round-off
    !> limited) the best value is still returned.
    subroutine trace_gsl(model, tolerance, tr, stats, error)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
       real(wp), intent(in) :: tolerance         !! target error on S, scaled by max(1, |S|)
       type(trace_t), intent(out) :: tr          !! S and its error estimate
       type(work_stats_t), intent(out) :: stats  !! rk8pd steps, rejections, Q evaluations
+      !> GSL failure; err_accuracy when round-off limited (`tr` then holds the best value)
       type(error_t), allocatable, intent(out) :: error
       type(scaled_matrix_t) :: m
       real(wp) :: estimate
@@ -545,11 +547,11 @@ contains
    !> the symmetry (GSL epsilon tolerance·gsl_tolerance_factor, no rerun): a check
    !> of `monodromy_gsl`, at twice the work.
    subroutine monodromy_gsl_full_period(model, tolerance, m, stats, error)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
       real(wp), intent(in) :: tolerance         !! sets GSL's control epsilon
       type(scaled_matrix_t), intent(out) :: m   !! monodromy over [0, 2]
       type(work_stats_t), intent(out) :: stats  !! rk8pd steps, rejections, Q evaluations
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! GSL failure; unallocated on success
       real(wp) :: y(2, 2), log_scale(2), log_peak(2), top
       stats = work_stats_t()
       call check_model(model, error)

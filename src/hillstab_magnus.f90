@@ -85,7 +85,7 @@ contains
    !> with H = diag(1, −1), E = [[0, 1], [0, 0]], F = [[0, 0], [1, 0]],
    !> [H, E] = 2E, [H, F] = −2F, [E, F] = H.
    pure function sl2_commutator(x, y) result(z)
-      real(wp), intent(in) :: x(3), y(3)
+      real(wp), intent(in) :: x(3), y(3)  !! generators [a, b, c]
       real(wp) :: z(3)
       z(1) = x(2)*y(3) - x(3)*y(2)
       z(2) = 2.0_wp*(x(1)*y(2) - x(2)*y(1))
@@ -94,7 +94,7 @@ contains
 
    !> The 2×2 matrix [[a, b], [c, −a]] of a generator g = [a, b, c].
    pure function sl2_matrix(g) result(m)
-      real(wp), intent(in) :: g(3)
+      real(wp), intent(in) :: g(3)  !! generator [a, b, c]
       real(wp) :: m(2, 2)
       m = reshape([g(1), g(3), g(2), -g(1)], [2, 2])
    end function sl2_matrix
@@ -139,7 +139,7 @@ contains
    !> a few thousand (β = −1e6, α → π²) errs by ~1e-10 in ln|S|, more than a tolerance of
    !> 1e-10 allows and invisible to a Richardson check.
    pure subroutine multiply_exp_sl2(a, g, compensation)
-      type(scaled_matrix_t), intent(inout) :: a
+      type(scaled_matrix_t), intent(inout) :: a  !! the propagator, advanced
       real(wp), intent(in) :: g(3)  !! generator [a, b, c]
       real(wp), intent(inout), optional :: compensation  !! Kahan carry of a%log_scale
       real(wp) :: c, s, log_scale, e(2, 2), before, increment, total
@@ -194,7 +194,7 @@ contains
 
    !> a ← (one Magnus step over [t, t + h]) a; adds the Q evaluations to `n_evaluations`.
    pure subroutine magnus_step(model, order, t, h, a, n_evaluations, compensation)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
       integer, intent(in) :: order                    !! 4 or 6
       real(wp), intent(in) :: t, h                    !! step start and length
       type(scaled_matrix_t), intent(inout) :: a       !! propagator so far
@@ -209,7 +209,7 @@ contains
 
    !> Propagator Φ(1) over [0, 1] with `n_steps` equal Magnus steps.
    pure function half_period_magnus_uniform(model, order, n_steps) result(phi)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
       integer, intent(in) :: order    !! 4 or 6
       integer, intent(in) :: n_steps  !! number of equal steps on [0, 1]
       type(scaled_matrix_t) :: phi
@@ -219,7 +219,7 @@ contains
    !> Monodromy over the full period [0, 2] with `n_steps` equal Magnus steps (no use of
    !> the symmetry of q: a fixed-mesh reference for order tests and benchmarks).
    pure function monodromy_magnus_uniform(model, order, n_steps) result(m)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
       integer, intent(in) :: order    !! 4 or 6
       integer, intent(in) :: n_steps  !! number of equal steps on [0, 2]
       type(scaled_matrix_t) :: m
@@ -246,7 +246,7 @@ contains
    !> |S_a − S_b| / max(1, |S_a|) for two scaled matrices, without forming values
    !> that could overflow.
    pure real(wp) function relative_trace_difference(a, b) result(r)
-      type(scaled_matrix_t), intent(in) :: a, b
+      type(scaled_matrix_t), intent(in) :: a, b  !! the two matrices
       real(wp) :: top, ta, tb, floor_scale
       top = max(a%log_scale, b%log_scale)
       ta = (a%m(1, 1) + a%m(2, 2))*exp(max(a%log_scale - top, -log_huge))
@@ -411,11 +411,12 @@ contains
    !> tolerance cannot be met (round-off, or more than 2^17 steps on [0, 1]) the best
    !> monodromy is returned together with an `err_integration` error.
    subroutine monodromy_magnus(model, order, tolerance, m, stats, error, error_estimate)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
       integer, intent(in) :: order                  !! 4 or 6
       real(wp), intent(in) :: tolerance             !! target |ΔS|/max(1, |S|)
       type(scaled_matrix_t), intent(out) :: m       !! monodromy over [0, 2]
       type(work_stats_t), intent(out) :: stats      !! steps of all passes and Q evaluations
+      !> err_integration when the tolerance is not met (best value returned)
       type(error_t), allocatable, intent(out) :: error
       real(wp), intent(out), optional :: error_estimate  !! estimated |ΔS|/max(1, |S|)
       real(wp), allocatable :: mesh(:)
@@ -481,13 +482,14 @@ contains
 
    !> Trace of `monodromy_magnus`.
    subroutine trace_magnus(model, order, tolerance, tr, stats, error, error_estimate)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
       integer, intent(in) :: order                  !! 4 or 6
       real(wp), intent(in) :: tolerance             !! target |ΔS|/max(1, |S|)
-      type(trace_t), intent(out) :: tr
-      type(work_stats_t), intent(out) :: stats
+      type(trace_t), intent(out) :: tr  !! the trace S
+      type(work_stats_t), intent(out) :: stats  !! work done: steps, rejected steps, Q evaluations
+      !> err_integration when the tolerance is not met (best value returned)
       type(error_t), allocatable, intent(out) :: error
-      real(wp), intent(out), optional :: error_estimate
+      real(wp), intent(out), optional :: error_estimate  !! the Richardson estimate of |dS|/max(1, |S|)
       type(scaled_matrix_t) :: m
       real(wp) :: estimate
       call monodromy_magnus(model, order, tolerance, m, stats, error, estimate)

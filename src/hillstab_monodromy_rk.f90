@@ -80,7 +80,7 @@ contains
       real(wp), intent(in) :: tolerance        !! target error on S, scaled by max(1, |S|)
       type(scaled_matrix_t), intent(out) :: m  !! M = e^{log_scale} m
       type(work_stats_t), intent(out) :: stats !! steps, rejections, Q evaluations
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! integration failure; unallocated on success
       integer, intent(in), optional :: method  !! rk_dop853 (default) or rk_dopri5
       !> rtol = atol of the pair (floored at 1e-15), instead of the calibrated
       !> `rk_tolerances(tolerance, method)`
@@ -164,6 +164,7 @@ contains
       type(hill_model_t), intent(in) :: model  !! the Hill equation
       real(wp), intent(in) :: tolerance        !! target error on S, scaled by max(1, |S|)
       type(trace_t), intent(out) :: tr         !! S, flagged if it overflows; its error estimate
+      !> integration failure; err_accuracy when round-off limited (`tr` then holds the best value)
       type(error_t), allocatable, intent(out) :: error
       type(work_stats_t), intent(out), optional :: stats  !! steps, rejections, Q evaluations of all runs
       integer, intent(in), optional :: method  !! rk_dop853 (default) or rk_dopri5

@@ -55,7 +55,7 @@ contains
 
    !> Start a ladder for the target `tolerance`.
    pure subroutine start_refinement(ladder, tolerance)
-      type(refinement_t), intent(out) :: ladder
+      type(refinement_t), intent(out) :: ladder  !! the ladder, reset
       real(wp), intent(in) :: tolerance  !! target |ΔS|/max(1, |S|)
       ladder%tolerance = tolerance
    end subroutine start_refinement
@@ -66,10 +66,10 @@ contains
    !> `tr%error_estimate` (never below `noise`). A round-off level above the tolerance
    !> ends the ladder as round-off limited as soon as two values agree to that level.
    pure subroutine refine(ladder, tr, at_floor, noise)
-      type(refinement_t), intent(inout) :: ladder
-      type(trace_t), intent(inout) :: tr
-      logical, intent(in) :: at_floor
-      real(wp), intent(in) :: noise
+      type(refinement_t), intent(inout) :: ladder  !! the ladder, advanced
+      type(trace_t), intent(inout) :: tr  !! S at the new local tolerance; gets its error estimate when the ladder ends
+      logical, intent(in) :: at_floor     !! no tighter local tolerance is possible
+      real(wp), intent(in) :: noise       !! round-off level of S (`roundoff_level`)
       real(wp) :: d
       ladder%n_values = ladder%n_values + 1
       if (ladder%n_values == 1) then
@@ -94,7 +94,10 @@ contains
    !> Scaled condition of a half-period propagator Φ = [[u, v], [u', v']]: the minimum over
    !> diagonal D of ‖D Φ D⁻¹‖²_F, u² + v'² + 2|v u'| (independent of the units of χ' against χ).
    elemental real(wp) function propagator_condition(u, du, v, dv) result(c)
-      real(wp), intent(in) :: u, du, v, dv
+      real(wp), intent(in) :: u   !! even solution u
+      real(wp), intent(in) :: du  !! its derivative u'
+      real(wp), intent(in) :: v   !! odd solution v
+      real(wp), intent(in) :: dv  !! its derivative v'
       c = u*u + dv*dv + 2.0_wp*abs(v*du)
    end function propagator_condition
 
@@ -116,7 +119,8 @@ contains
    !> |S_a − S_b|/max(1, |S_a|), through ln|S| when S is large or overflows; huge when the
    !> signs of large traces differ.
    elemental real(wp) function trace_distance(a, b) result(d)
-      type(trace_t), intent(in) :: a, b
+      type(trace_t), intent(in) :: a  !! the trace whose scale max(1, |S_a|) is used
+      type(trace_t), intent(in) :: b  !! the other trace
       if (a%overflow .or. b%overflow .or. a%log_abs > 300.0_wp) then
          d = abs(a%log_abs - b%log_abs)
          if (sign(1.0_wp, a%value) /= sign(1.0_wp, b%value)) d = huge(1.0_wp)
@@ -129,7 +133,8 @@ contains
    !> condition κ/2 of the propagator (`propagator_condition`, 2 for a rotation) relative
    !> to max(1, |S|) when larger, at most 1e4.
    elemental real(wp) function first_step_factor(log_peak, log_abs_s) result(factor)
-      real(wp), intent(in) :: log_peak, log_abs_s
+      real(wp), intent(in) :: log_peak   !! ln of the largest `propagator_condition` of the first pass
+      real(wp), intent(in) :: log_abs_s  !! ln|S| of the first pass
       factor = max(10.0_wp, min(1.0e4_wp, 0.5_wp*exp(min(log_peak - max(0.0_wp, log_abs_s), 30.0_wp))))
    end function first_step_factor
 
@@ -137,7 +142,9 @@ contains
    !> reached from 10·floor, so that the last difference (the error estimate there) comes
    !> from a tenfold step and not from a long jump.
    elemental real(wp) function next_local_tolerance(local, factor, floor) result(next)
-      real(wp), intent(in) :: local, factor, floor
+      real(wp), intent(in) :: local   !! the current local tolerance
+      real(wp), intent(in) :: factor  !! the step down, > 1
+      real(wp), intent(in) :: floor   !! the smallest local tolerance the integrator can use
       next = max(local/factor, floor)
       if (next < 10.0_wp*floor .and. local > 10.001_wp*floor) next = 10.0_wp*floor
    end function next_local_tolerance
