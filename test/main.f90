@@ -15,6 +15,8 @@ program tester
    use test_format, only: collect_format
    use test_auto, only: collect_auto
    use test_batch, only: collect_batch
+   use test_lyapunov, only: collect_lyapunov
+   use test_poincare, only: collect_poincare
    use test_units, only: collect_units
    use test_pendulum, only: collect_pendulum
    use test_hill_method, only: collect_hill_method
@@ -27,7 +29,8 @@ program tester
              collect_monodromy(), collect_capi(), collect_gsl(), collect_rk(), collect_magnus(), &
              collect_scene(), collect_tasks(), collect_format(), collect_auto(), &
              collect_units(), collect_pendulum(), collect_hill_method(), collect_templates(), &
-             collect_batch(), collect_task_boundaries()]
+             collect_batch(), collect_task_boundaries(), &
+             collect_lyapunov(), collect_poincare()]
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester
