@@ -4,23 +4,36 @@
 # both install what is missing first (scripts/setup.sh). Further targets:
 #   make test-debug     tests again with runtime checks and floating-point traps
 #   make bench          speed-against-error benchmark (out/bench_*.dat, out/bench*.png)
-#   make lib            build libhillstab.a and .mod files with plain gfortran (no fpm)
-#   make install PREFIX=/usr/local   install library, modules, C header, pkg-config and CMake files
-#   make check-install  install into build/_install and link a C and a Fortran program against it
+#   make lib            build libhillstab.a, libhillstab.so, .mod files and the hillstab program
+#                       with plain gfortran (no fpm)
+#   make install PREFIX=/usr/local   install libraries, modules, C header, pkg-config and CMake
+#                       files and the program (the same files as the CMake install)
+#   make doc            API reference with FORD into build/doc (installs FORD through pip if missing)
+#   make doc-check      fail on an undocumented public entity or argument (scripts/doc_check.py)
+#   make check-install  install into temporary prefixes (make and CMake routes) and build and run
+#                       consumers against each: C, Fortran and fixed-form FORTRAN 77 through
+#                       pkg-config, C and Fortran through CMake find_package
+#   make mpi            build hillstab and hillstab_mpi with CMake (installs Open MPI: scripts/setup_mpi.sh)
+#   make test-mpi       hillstab_mpi against hillstab at np = 1, 2, 3, bad input, failing points
 FPM ?= bash scripts/fpm.sh
 ifeq ($(origin FC),default)
 FC = gfortran
 endif
 PREFIX ?= /usr/local
+# an executable stack in the installed library or program: report (until the last trampolines
+# are gone) or fail
+export HILLSTAB_STACK_CHECK ?= report
 DEBUG_FLAGS = -fcheck=all -ffpe-trap=invalid,zero,overflow -g -fbacktrace
 LIB_FLAGS = -O2 -fPIC -fopenmp -fimplicit-none
 LIBS = -lgsl -lgslcblas -llapack -lblas
-FC_VERSION = $(shell $(FC) -dumpversion 2>/dev/null)
+FC_VERSION = $(shell $(FC) -dumpfullversion 2>/dev/null)
 MOD_SUBDIR = hillstab/$(notdir $(FC))-$(FC_VERSION)
 LEGACY_DIR = build/legacy
 VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
+SOVERSION = $(firstword $(subst ., ,$(VERSION)))
+SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug setup bench lib install check-install clean
+.PHONY: run test test-debug setup bench lib install check-install doc doc-check clean mpi test-mpi
 
 setup:
 	@bash scripts/setup.sh
@@ -40,29 +53,64 @@ bench: setup
 	gnuplot plots/bench.gp
 
 lib: setup
-	@mkdir -p $(LEGACY_DIR)/obj $(LEGACY_DIR)/mod
-	@for f in $$(bash scripts/fortran_order.sh); do \
+	@rm -rf $(LEGACY_DIR)/obj $(LEGACY_DIR)/mod; mkdir -p $(LEGACY_DIR)/obj $(LEGACY_DIR)/mod
+	@sources=$$(bash scripts/fortran_order.sh) || exit 1; for f in $$sources; do \
 	   echo "  FC $$f"; \
 	   $(FC) $(LIB_FLAGS) -J $(LEGACY_DIR)/mod -c $$f -o $(LEGACY_DIR)/obj/$$(basename $$f .f90).o || exit 1; \
 	done
-	@rm -f $(LEGACY_DIR)/libhillstab.a
+	@rm -f $(LEGACY_DIR)/libhillstab.a $(LEGACY_DIR)/libhillstab.so*
 	ar rcs $(LEGACY_DIR)/libhillstab.a $(LEGACY_DIR)/obj/*.o
+	@# shared library: its dependencies recorded (DT_NEEDED), so -lhillstab alone links
+	$(FC) -shared -fopenmp -Wl,-soname,libhillstab.so.$(SOVERSION) -o $(LEGACY_DIR)/$(SHARED_LIB) \
+	   $(LEGACY_DIR)/obj/*.o $(LIBS) -lm
+	ln -sf $(SHARED_LIB) $(LEGACY_DIR)/libhillstab.so.$(SOVERSION)
+	ln -sf libhillstab.so.$(SOVERSION) $(LEGACY_DIR)/libhillstab.so
+	@# the program links the static library: it runs without LD_LIBRARY_PATH
+	$(FC) $(LIB_FLAGS) -I $(LEGACY_DIR)/mod app/hillstab.f90 -o $(LEGACY_DIR)/hillstab \
+	   $(LEGACY_DIR)/libhillstab.a $(LIBS) -lm
 
 install: lib
 	install -d $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/lib/cmake/hillstab \
-	   $(DESTDIR)$(PREFIX)/include/$(MOD_SUBDIR)
+	   $(DESTDIR)$(PREFIX)/include/$(MOD_SUBDIR) $(DESTDIR)$(PREFIX)/bin
 	install -m 644 $(LEGACY_DIR)/libhillstab.a $(DESTDIR)$(PREFIX)/lib/
+	install -m 755 $(LEGACY_DIR)/$(SHARED_LIB) $(DESTDIR)$(PREFIX)/lib/
+	ln -sf $(SHARED_LIB) $(DESTDIR)$(PREFIX)/lib/libhillstab.so.$(SOVERSION)
+	ln -sf libhillstab.so.$(SOVERSION) $(DESTDIR)$(PREFIX)/lib/libhillstab.so
+	install -m 755 $(LEGACY_DIR)/hillstab $(DESTDIR)$(PREFIX)/bin/
 	install -m 644 include/hillstab.h $(DESTDIR)$(PREFIX)/include/
 	install -m 644 $(LEGACY_DIR)/mod/*.mod $(DESTDIR)$(PREFIX)/include/$(MOD_SUBDIR)/
-	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' -e 's|@MOD_SUBDIR@|$(MOD_SUBDIR)|g' \
-	   config/hillstab.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/hillstab.pc
-	sed -e 's|@MOD_SUBDIR@|$(MOD_SUBDIR)|g' -e 's|@VERSION@|$(VERSION)|g' \
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR_REL@|lib|g' -e 's|@VERSION@|$(VERSION)|g' \
+	   -e 's|@MOD_SUBDIR@|$(MOD_SUBDIR)|g' config/hillstab.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/hillstab.pc
+	sed -e 's|@MOD_SUBDIR@|$(MOD_SUBDIR)|g' -e 's|@VERSION@|$(VERSION)|g' -e 's|@SHARED_LIB@|$(SHARED_LIB)|g' \
+	   -e 's|@SONAME@|libhillstab.so.$(SOVERSION)|g' \
 	   config/hillstab-config.cmake.in > $(DESTDIR)$(PREFIX)/lib/cmake/hillstab/hillstab-config.cmake
+	sed -e 's|@VERSION@|$(VERSION)|g' config/hillstab-config-version.cmake.in \
+	   > $(DESTDIR)$(PREFIX)/lib/cmake/hillstab/hillstab-config-version.cmake
 
 check-install:
-	@rm -rf build/_install
+	@rm -rf build/_install build/_install_cmake build/cmake_check
 	$(MAKE) --no-print-directory install PREFIX=$(CURDIR)/build/_install
-	bash config/export/check.sh $(CURDIR)/build/_install
+	bash config/export/check.sh $(CURDIR)/build/_install make
+	@if command -v cmake >/dev/null 2>&1; then \
+	   cmake -S . -B build/cmake_check -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=$(CURDIR)/build/_install_cmake \
+	      >/dev/null && cmake --build build/cmake_check -j 2 >/dev/null && cmake --install build/cmake_check >/dev/null \
+	   && bash config/export/check.sh $(CURDIR)/build/_install_cmake cmake \
+	   && bash config/export/same_files.sh build/_install build/_install_cmake; \
+	else echo "check-install: cmake not found, CMake route not checked"; fi
+
+mpi:
+	bash scripts/setup_mpi.sh
+	cmake -S . -B build/cmake_mpi -DHILLSTAB_MPI=ON -DCMAKE_BUILD_TYPE=Release
+	cmake --build build/cmake_mpi -j 2
+
+test-mpi:
+	bash scripts/test_mpi.sh
+
+doc:
+	@bash scripts/doc.sh
+
+doc-check:
+	@python3 scripts/doc_check.py
 
 clean:
 	rm -rf build out

@@ -1,7 +1,8 @@
-!> The hillstab command line: `hillstab [--quiet] SCENE.nml...`, `--help`, `--version`.
+!> The hillstab command line: `hillstab [--quiet] SCENE.nml...`, `--template TASK`, `--help`,
+!> `--version`.
 !>
 !> Runs each scene in turn. Output goes to files named in the scenes; progress
-!> and errors go to stderr; stdout carries only --help and --version.
+!> and errors go to stderr; stdout carries only --template, --help and --version.
 !> Exit status: 0 on success, 2 for bad input (scene, points file, output path,
 !> command line), 1 when a computation fails, 3 (exit_points_failed) when a file was
 !> written but some of its points failed (status 2 in their rows).
@@ -10,6 +11,7 @@ program hillstab_cli
    use hillstab_error, only: error_t, err_input, err_io, err_invalid_parameter, err_points_failed
    use hillstab_status, only: exit_points_failed
    use hillstab_tasks, only: run_scene_file
+   use hillstab_templates, only: template_task_names, scene_template
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use, intrinsic :: ieee_arithmetic, only: ieee_set_flag, ieee_all
    implicit none
@@ -31,6 +33,9 @@ program hillstab_cli
          stop
       case ("-V", "--version")
          write (output_unit, '(a)') "hillstab "//version_string
+         stop
+      case ("-t", "--template")
+         call print_template(i + 1)
          stop
       case ("-q", "--quiet")
          quiet = .true.
@@ -87,18 +92,50 @@ contains
       stop status, quiet=.true.
    end subroutine quit
 
+   !> The commented scene of the task named by argument `k` on stdout; exit 2 when
+   !> it is missing or unknown.
+   subroutine print_template(k)
+      integer, intent(in) :: k
+      character(len=:), allocatable :: text
+      type(error_t), allocatable :: template_error
+      if (k > command_argument_count()) then
+         call quit("hillstab: --template needs a task: "//task_list()//" (see hillstab --help)", 2)
+      end if
+      call scene_template(command_argument(k), text, template_error)
+      if (allocated(template_error)) call quit("hillstab: "//template_error%message, 2)
+      write (output_unit, '(a)') text
+   end subroutine print_template
+
+   !> The tasks that have a template, comma-separated.
+   function task_list() result(text)
+      character(len=:), allocatable :: text
+      character(len=:), allocatable :: names(:)
+      integer :: k
+      names = template_task_names()
+      text = trim(names(1))
+      do k = 2, size(names)
+         text = text//", "//trim(names(k))
+      end do
+   end function task_list
+
    subroutine print_help()
       write (output_unit, '(a)') &
          "usage: hillstab [--quiet] SCENE.nml...", &
+         "       hillstab --template TASK > SCENE.nml", &
          "", &
          "Stability charts of the elastic pendulum (Hill equation x'' + Q(tau) x = 0).", &
-         "Each SCENE is a namelist file (&scene plus &chart, &points or &coefficient);", &
+         "Each SCENE is a namelist file (&scene plus the group of its task);", &
          "results go to <output>_<task>.dat, gnuplot-ready. An output file can be given", &
-         "as SCENE to repeat its run. The README has the full namelist reference.", &
+         "as SCENE to repeat its run.", &
          "", &
-         "  -q, --quiet    no progress or messages on stderr (errors still)", &
-         "  -h, --help     this text", &
-         "  -V, --version  the version", &
+         "Tasks: "//task_list(), &
+         "  (hillstab --template TASK prints a complete scene for TASK, every variable", &
+         "  at its default with a comment)", &
+         "", &
+         "  -q, --quiet          no progress or messages on stderr (errors still)", &
+         "  -t, --template TASK  a commented scene for TASK on stdout", &
+         "  -h, --help           this text", &
+         "  -V, --version        the version", &
          "", &
          "Exit status: 0 success, 2 bad input, 1 a computation failed, 3 files written but", &
          "some points failed (status 2 in their rows)."

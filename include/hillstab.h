@@ -1,8 +1,11 @@
 /* hillstab C interface: stability of the elastic pendulum through the Hill
  * equation x'' + Q(tau) x = 0, Q = (beta - alpha cos pi tau)/(1 - (alpha/pi^2) cos pi tau).
- * Link with -lhillstab -lgfortran -lgsl -lgslcblas -llapack -lblas (see hillstab.pc).
+ * Link with the shared library: -lhillstab (`pkg-config --libs hillstab`); with the
+ * static one: -lhillstab -lgsl -lgslcblas -llapack -lblas -lgfortran -lgomp -lm
+ * (`pkg-config --libs --static hillstab`).
  * Every int-returning function returns 0 on success or an error code (see
- * hillstab_error_message); outputs are untouched on failure. */
+ * hillstab_error_message); outputs are untouched on failure, and
+ * hillstab_last_error gives the full message of the failure. */
 #ifndef HILLSTAB_H
 #define HILLSTAB_H
 #include <stddef.h>
@@ -19,7 +22,7 @@ enum {
 enum { HILLSTAB_SAMPLING_ENDPOINT = 1, HILLSTAB_SAMPLING_MIDPOINT = 2, HILLSTAB_SAMPLING_AVERAGE = 3 };
 enum {
   HILLSTAB_ERR_INVALID_PARAMETER = 1, HILLSTAB_ERR_OVERFLOW = 2, HILLSTAB_ERR_INTEGRATION = 3,
-  HILLSTAB_ERR_IO = 4, HILLSTAB_ERR_INPUT = 5, HILLSTAB_ERR_SINGULAR = 6
+  HILLSTAB_ERR_IO = 4, HILLSTAB_ERR_INPUT = 5, HILLSTAB_ERR_SINGULAR = 6, HILLSTAB_ERR_ACCURACY = 7
 };
 
 /* Q(tau) including the damping shift -epsilon^2/4 of eq. (47). */
@@ -39,8 +42,14 @@ int hillstab_floquet_data(int model, double alpha, double beta, double epsilon, 
 /* The paper's closed forms eq. (37) (epsilon = 0) and eq. (48)-(50); +-DBL_MAX on overflow. */
 double hillstab_trace_paper(double alpha, double beta, double epsilon);
 
-/* A NUL-terminated description of a status code. */
+/* A NUL-terminated description of a status code (the name of the code, e.g. "invalid parameter"). */
 void hillstab_error_message(int status, char *buffer, size_t length);
+
+/* The full message of the most recent status-returning hillstab call made by the calling
+ * thread (e.g. "elastic model needs 0 <= alpha < pi**2 = 9.8696044010893586, got alpha = ..."),
+ * NUL-terminated and cut to length bytes; "" when that call succeeded. Returns that call's status.
+ * Each thread has its own record, so calls from several threads do not mix. */
+int hillstab_last_error(char *buffer, size_t length);
 
 #ifdef __cplusplus
 }

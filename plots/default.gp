@@ -13,7 +13,7 @@ set xrange [0:9.8]
 set yrange [-2:12]
 set xlabel "α = aπ²/ρ   (bounce amplitude a, equilibrium length ρ)"
 set ylabel "β = gπ²/(ρω²)"
-set key bottom right box opaque samplen 2 font ",10"
+set key at graph 0.01, graph 0.83 left top Left reverse box opaque samplen 2 font ",10"
 # physical domain 0 < β < π²; β = π²/4 is the 4/3 pendulum (parametric resonance)
 set arrow 1 from 0,0 to 9.8,0 nohead dt 2 lw 1.2 lc "#888888" front
 set arrow 2 from 0,pi2 to 9.8,pi2 nohead dt 2 lw 1.2 lc "#888888" front
@@ -25,15 +25,23 @@ set label 3 "β = 0" at 0.15,0.4 front boxed font ",9" tc "#555555"
 
 set multiplot layout 1,2 title "Elastic pendulum: stability of a small swing about the vertical bounce  (dark = stable)" font ",13"
 
+# point labels up and to the right, except (a), which would sit under the β = π²/4 box
+label_dy(name) = name eq "(a)" ? -0.45 : 0.35
 set title "exact monodromy (method auto)"
 plot 'out/default_exact_chart.dat' using 1:2:4 with image notitle, \
-     'out/fig4_points.dat' using 1:2:($4 > 0.5 ? 0x1a9850 : 0xd73027) with points pt 7 ps 1.4 lc rgb variable \
-        title "Fig. 4 points: green stable, red unstable (exact)", \
-     'data/points/fig4.dat' using 1:2:3 with labels offset 1.4,0.6 font ",10" tc "black" notitle
+     'out/fig4_points.dat' using 1:2:($4 > 0.5 ? 0x1a9850 : 0xd73027) with points pt 7 ps 1.4 lc rgb variable notitle, \
+     'data/points/fig4.dat' using ($1 + 0.12):($2 + label_dy(strcol(3))):3 with labels left boxed font ",10" tc "black" notitle, \
+     keyentry with boxes fs solid 1.0 border lc "#555555" fc "#23406e" title "stable chart region", \
+     keyentry with boxes fs solid 1.0 border lc "#555555" fc "#f3efe6" title "unstable chart region", \
+     keyentry with points pt 7 ps 1.4 lc "#1a9850" title "Fig. 4 point, stable (exact)", \
+     keyentry with points pt 7 ps 1.4 lc "#d73027" title "Fig. 4 point, unstable (exact)"
 
 set title "the paper's eq. (37): Q in two constant pieces"
 plot 'out/default_paper_chart.dat' using 1:2:4 with image notitle, \
-     'out/fig4_points.dat' using 1:2:($4 > 0.5 ? 0x1a9850 : 0xd73027) with points pt 7 ps 1.4 lc rgb variable \
-        title "Fig. 4 points (colour from the exact chart)", \
-     'data/points/fig4.dat' using 1:2:3 with labels offset 1.4,0.6 font ",10" tc "black" notitle
+     'out/fig4_points.dat' using 1:2:($4 > 0.5 ? 0x1a9850 : 0xd73027) with points pt 7 ps 1.4 lc rgb variable notitle, \
+     'data/points/fig4.dat' using ($1 + 0.12):($2 + label_dy(strcol(3))):3 with labels left boxed font ",10" tc "black" notitle, \
+     keyentry with boxes fs solid 1.0 border lc "#555555" fc "#23406e" title "stable by eq. (37)", \
+     keyentry with boxes fs solid 1.0 border lc "#555555" fc "#f3efe6" title "unstable by eq. (37)", \
+     keyentry with points pt 7 ps 1.4 lc "#1a9850" title "Fig. 4 point, stable (exact)", \
+     keyentry with points pt 7 ps 1.4 lc "#d73027" title "Fig. 4 point, unstable (exact)"
 unset multiplot

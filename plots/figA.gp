@@ -23,18 +23,21 @@ set xrange [0:10]
 set yrange [-2:12]
 set xlabel "ν  (q = β − ν cos πτ)"
 set ylabel "β"
-set key bottom right box opaque samplen 2 font ",10"
+set key at graph 0.02, graph 0.97 left top Left reverse box opaque samplen 2 font ",10"
+# colour key of the chart (the image itself has no legend entry)
+key_stable = 'keyentry with boxes fs solid 1.0 border lc "#555555" fc "#23406e" title "stable"'
+key_unstable = 'keyentry with boxes fs solid 1.0 border lc "#555555" fc "#f3efe6" title "unstable"'
 
 set output 'out/figA1.png'
 set title "Fig. A1: Mathieu, 2-piece trace (A3)  (dark = stable)"
-plot 'out/figA_formula_chart.dat' using 1:2:4 with image notitle
+plot 'out/figA_formula_chart.dat' using 1:2:4 with image notitle, @key_stable, @key_unstable
 
 set output 'out/figA3.png'
 set title "Fig. A3: (A3), 2 pieces, against the exact Strutt diagram"
-plot 'out/figA_formula_chart.dat' using 1:2:4 with image notitle, \
+plot 'out/figA_formula_chart.dat' using 1:2:4 with image notitle, @key_stable, @key_unstable, \
      $strutt using 1:2 with lines lw 2 lc "#e08000" title "exact |S| = 2"
 
 set output 'out/figA4.png'
 set title "Fig. A4: 4 averaged pieces (A18) against the exact Strutt diagram"
-plot 'out/figA_segments4_chart.dat' using 1:2:4 with image notitle, \
+plot 'out/figA_segments4_chart.dat' using 1:2:4 with image notitle, @key_stable, @key_unstable, \
      $strutt using 1:2 with lines lw 2 lc "#e08000" title "exact |S| = 2"

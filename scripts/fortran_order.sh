@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 declare -A file_of
 for f in src/*.f90; do
-   m=$(grep -iE '^\s*module\s+[a-z_0-9]+\s*$' "$f" | head -1 | awk '{print tolower($2)}')
+   m=$(grep -iE '^\s*module\s+[a-z_0-9]+\s*$' "$f" | head -1 | awk '{print tolower($2)}' || true)
    [ -n "$m" ] && file_of[$m]=$f
 done
 {

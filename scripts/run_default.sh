@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 
 scenes_dir=${HILLSTAB_SCENES:-data/scenes}
 scenes=(default_exact default_paper fig4_points fig2_coefficient
-        figA_mathieu_formula figA_mathieu_segments4 figA_mathieu_exact damped
+        figA_mathieu_formula figA_mathieu_segments4 figA_mathieu_exact damped spring_physical
         fig4a fig4b fig4c fig4d fig4e fig4f fig4g fig4h)
 plots=(default fig2 fig3 figA damped fig4)
 

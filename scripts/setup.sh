@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Install what hillstab needs on a Debian machine, skipping what is present:
-# gfortran, LAPACK/BLAS, GSL and gnuplot through apt-get; fpm through pip.
+# gfortran, LAPACK/BLAS, GSL, gnuplot, pkg-config and CMake through apt-get; fpm through pip.
 set -euo pipefail
 
 missing=()
@@ -12,6 +12,8 @@ ls /usr/lib/*/libblas.so >/dev/null 2>&1 || missing+=(libblas-dev)
 command -v make >/dev/null 2>&1 || missing+=(make)
 command -v cc >/dev/null 2>&1 || missing+=(gcc)
 command -v pkg-config >/dev/null 2>&1 || missing+=(pkg-config)
+command -v cmake >/dev/null 2>&1 || missing+=(cmake)        # make check-install: the CMake route
+command -v readelf >/dev/null 2>&1 || missing+=(binutils)   # make check-install: stack flags
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi

@@ -1,5 +1,5 @@
-!> hillstab: stability of the elastic pendulum through the Hill equation
-!> x'' + Q(τ) x = 0 and Floquet theory. This umbrella module re-exports the public API.
+!> The umbrella module of hillstab, the stability of the elastic pendulum through the Hill
+!> equation x'' + Q(τ) x = 0 and Floquet theory: it re-exports the public API.
 !>
 !>```fortran
 !> use hillstab
@@ -14,6 +14,7 @@ module hillstab
    use hillstab_status
    use hillstab_stats
    use hillstab_coefficient
+   use hillstab_units
    use hillstab_transfer
    use hillstab_formulas
    use hillstab_floquet
@@ -21,6 +22,7 @@ module hillstab
    use hillstab_auto
    use hillstab_monodromy
    use hillstab_gsl
+   use hillstab_hill_method
    use hillstab_rk
    use hillstab_monodromy_rk
    use hillstab_pendulum

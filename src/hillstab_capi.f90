@@ -1,7 +1,9 @@
 !> C-callable entry points (`bind(C)`, `value` scalars, names prefixed `hillstab_`).
 !> The matching declarations are in include/hillstab.h. Every function returns a
 !> status: 0 on success, otherwise one of the hillstab_error codes; outputs are
-!> left untouched on failure. `hillstab_error_message` turns a status into text.
+!> left untouched on failure. `hillstab_error_message` turns a status into the name of
+!> its code; `hillstab_last_error` gives the full message of the calling thread's most
+!> recent failed call (the same text as `error_t%message` in Fortran).
 !>
 !>```c
 !> double s, log_abs; int overflow;
@@ -17,10 +19,11 @@ module hillstab_capi
    use hillstab_formulas, only: trace_damped_paper
    use hillstab_floquet, only: floquet_t, floquet_from_trace
    use hillstab_monodromy, only: method_t, monodromy_trace
+   use hillstab_outcome, only: record_outcome, get_last_error
    implicit none
    private
    public :: hillstab_c_coefficient, hillstab_c_trace, hillstab_c_floquet, hillstab_c_trace_paper, &
-      hillstab_c_error_message
+      hillstab_c_error_message, hillstab_c_last_error
 
 contains
 
@@ -34,14 +37,15 @@ contains
    !> Q(τ) of the model (elastic = 1, mathieu = 2), including the damping shift −ε²/4.
    function hillstab_c_coefficient(model, alpha, beta, epsilon, tau, q) result(status) &
       bind(C, name="hillstab_q")
-      integer(c_int), value, intent(in) :: model
-      real(c_double), value, intent(in) :: alpha, beta, epsilon, tau
-      real(c_double), intent(out) :: q
+      integer(c_int), value, intent(in) :: model  !! HILLSTAB_MODEL_ELASTIC (1) or HILLSTAB_MODEL_MATHIEU (2)
+      real(c_double), value, intent(in) :: alpha, beta, epsilon, tau  !! alpha, beta, damping epsilon >= 0, and tau
+      real(c_double), intent(out) :: q  !! Q(tau) - epsilon**2/4
       integer(c_int) :: status
       type(hill_model_t) :: m
       type(error_t), allocatable :: error
       m = hill_model_t(int(model), real(alpha, wp), real(beta, wp), real(epsilon, wp))
       call check_model(m, error)
+      call record_outcome(error)
       if (allocated(error)) then
          status = int(error%code, c_int)
          return
@@ -54,10 +58,12 @@ contains
    !> When |S| overflows, `trace` is ±DBL_MAX, `overflow` = 1 and `log_abs_trace` = ln|S|.
    function hillstab_c_trace(model, alpha, beta, epsilon, method, n_segments, sampling, tolerance, &
                              trace, log_abs_trace, overflow) result(status) bind(C, name="hillstab_trace")
+      !> HILLSTAB_MODEL_*, HILLSTAB_METHOD_*; pieces and HILLSTAB_SAMPLING_* (segments)
       integer(c_int), value, intent(in) :: model, method, n_segments, sampling
+      !> alpha, beta, damping epsilon >= 0; target error on S (exact methods)
       real(c_double), value, intent(in) :: alpha, beta, epsilon, tolerance
-      real(c_double), intent(out) :: trace, log_abs_trace
-      integer(c_int), intent(out) :: overflow
+      real(c_double), intent(out) :: trace, log_abs_trace  !! S (+-DBL_MAX on overflow) and ln|S|
+      integer(c_int), intent(out) :: overflow  !! 1 when |S| overflowed, else 0
       integer(c_int) :: status
       real(c_double) :: log_modulus(2), floquet_exponent
       integer(c_int) :: stable, stable_paper
@@ -71,9 +77,13 @@ contains
    function hillstab_c_floquet(model, alpha, beta, epsilon, method, n_segments, sampling, tolerance, &
                                trace, log_moduli, floquet_exponent, stable, stable_paper) result(status) &
       bind(C, name="hillstab_floquet_data")
+      !> HILLSTAB_MODEL_*, HILLSTAB_METHOD_*; pieces and HILLSTAB_SAMPLING_* (segments)
       integer(c_int), value, intent(in) :: model, method, n_segments, sampling
+      !> alpha, beta, damping epsilon >= 0; target error on S (exact methods)
       real(c_double), value, intent(in) :: alpha, beta, epsilon, tolerance
+      !> S; ln|lambda| of x's multipliers, largest first; mu per unit tau
       real(c_double), intent(out) :: trace, log_moduli(2), floquet_exponent
+      !> 1 when |S1| < 2 cosh epsilon; 1 when |S1| <= 2 (the paper's test)
       integer(c_int), intent(out) :: stable, stable_paper
       integer(c_int) :: status
       real(c_double) :: log_abs_trace
@@ -96,6 +106,7 @@ contains
       type(floquet_t) :: f
       type(error_t), allocatable :: error
       call monodromy_trace(model, method, tr, error)
+      call record_outcome(error)
       if (allocated(error)) then
          info = int(error%code, c_int)
          return
@@ -116,7 +127,7 @@ contains
 
    !> The paper's closed form eq. (37)/(48) (ε = 0 gives eq. (37)); ±DBL_MAX on overflow.
    function hillstab_c_trace_paper(alpha, beta, epsilon) result(s) bind(C, name="hillstab_trace_paper")
-      real(c_double), value, intent(in) :: alpha, beta, epsilon
+      real(c_double), value, intent(in) :: alpha, beta, epsilon  !! alpha, beta and damping epsilon (0: eq. (37))
       real(c_double) :: s
       type(trace_t) :: tr
       tr = trace_damped_paper(real(alpha, wp), real(beta, wp), real(epsilon, wp))
@@ -125,21 +136,43 @@ contains
 
    !> Copy a NUL-terminated description of `status` into `buffer` (at most `length` bytes).
    subroutine hillstab_c_error_message(status, buffer, length) bind(C, name="hillstab_error_message")
-      integer(c_int), value, intent(in) :: status
-      integer(c_size_t), value, intent(in) :: length
-      character(kind=c_char), intent(out) :: buffer(length)
+      integer(c_int), value, intent(in) :: status  !! a status returned by a hillstab function
+      integer(c_size_t), value, intent(in) :: length  !! size of buffer in bytes
+      character(kind=c_char), intent(out) :: buffer(length)  !! receives the NUL-terminated name of the status
       character(len=:), allocatable :: text
-      integer :: i, n
-      if (length < 1) return
       if (status == 0) then
          text = "success"
       else
          text = error_code_name(int(status))
       end if
-      n = min(len(text), int(length) - 1)
+      call copy_c_string(text, buffer, length)
+   end subroutine hillstab_c_error_message
+
+   !> Copy the message of the calling thread's most recent status-returning call
+   !> (empty when it succeeded) into `buffer`, NUL-terminated and cut to `length` bytes
+   !> (`length` = 0: nothing is written); return that call's status.
+   function hillstab_c_last_error(buffer, length) result(status) bind(C, name="hillstab_last_error")
+      integer(c_size_t), value, intent(in) :: length    !! size of `buffer` in bytes
+      character(kind=c_char), intent(out) :: buffer(length)  !! receives the message
+      integer(c_int) :: status
+      character(len=:), allocatable :: text
+      integer :: code
+      call get_last_error(code, text)
+      call copy_c_string(text, buffer, length)
+      status = int(code, c_int)
+   end function hillstab_c_last_error
+
+   !> `text` into a C buffer of `length` bytes, cut to length − 1 and NUL-terminated.
+   subroutine copy_c_string(text, buffer, length)
+      character(len=*), intent(in) :: text
+      integer(c_size_t), intent(in) :: length
+      character(kind=c_char), intent(inout) :: buffer(length)
+      integer :: i, n
+      if (length < 1) return
+      n = int(min(int(len(text), c_size_t), length - 1))
       do i = 1, n
          buffer(i) = text(i:i)
       end do
       buffer(n + 1) = c_null_char
-   end subroutine hillstab_c_error_message
+   end subroutine copy_c_string
 end module hillstab_capi

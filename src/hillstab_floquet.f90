@@ -25,16 +25,25 @@ module hillstab_floquet
       real(wp) :: exponent = 0.0_wp     !! μ = ln|λ_max|/2 per unit τ (of x; −ε/2 when |S|<2)
       logical :: stable = .false.       !! x stays bounded (decays for ε > 0): |S| < 2 cosh ε
       logical :: stable_paper = .false. !! the paper's criterion |S| ≤ 2
+      !> |S| lies within the trace's error bound of the stability threshold 2 cosh ε, so the
+      !> computed value cannot decide the verdict (`stable` is then the verdict of the value
+      !> alone). Set only when the trace carries an error estimate (see `floquet_from_trace`).
+      logical :: marginal = .false.
    end type floquet_t
 
 contains
 
    !> Floquet data from the trace of the (χ-)monodromy and the damping ε.
-   pure function floquet_from_trace(tr, epsilon) result(f)
-      type(trace_t), intent(in) :: tr
+   !> `marginal` is set when the trace has an error estimate e ≥ 0 (exact methods) and
+   !> ||S| − 2 cosh ε| ≤ max(e, tolerance) max(1, |S|): the error bound of S, on the scale of
+   !> `tolerance`, reaches across the stability threshold.
+   pure function floquet_from_trace(tr, epsilon, tolerance) result(f)
+      type(trace_t), intent(in) :: tr  !! trace of the (chi-)monodromy, with ln|S| and its error estimate
       real(wp), intent(in) :: epsilon  !! damping ε ≥ 0
+      !> the tolerance S was computed to (relative to max(1, |S|)); default 0: the estimate alone
+      real(wp), intent(in), optional :: tolerance
       type(floquet_t) :: f
-      real(wp) :: s, log_growth, half
+      real(wp) :: s, log_growth, half, bound
       f%trace = tr
       f%epsilon = epsilon
       s = tr%value
@@ -66,11 +75,16 @@ contains
          f%stable = .not. tr%overflow .and. abs(s) < 2.0_wp
       end if
       f%stable_paper = .not. tr%overflow .and. abs(s) <= 2.0_wp
+      if (tr%error_estimate >= 0.0_wp .and. .not. tr%overflow .and. epsilon < log_huge) then
+         bound = tr%error_estimate
+         if (present(tolerance)) bound = max(bound, tolerance)
+         f%marginal = abs(abs(s) - 2.0_wp*cosh(epsilon)) <= bound*max(1.0_wp, abs(s))
+      end if
    end function floquet_from_trace
 
    !> Floquet data from a finite trace value.
    pure function floquet_from_value(s, epsilon) result(f)
-      real(wp), intent(in) :: s, epsilon
+      real(wp), intent(in) :: s, epsilon  !! a finite trace S; damping epsilon >= 0
       type(floquet_t) :: f
       f = floquet_from_trace(trace_from_value(s), epsilon)
    end function floquet_from_value
@@ -82,7 +96,7 @@ contains
 
    !> Multipliers of x as complex numbers (moduli clamped to huge when they overflow).
    pure function multipliers(f) result(lambda)
-      type(floquet_t), intent(in) :: f
+      type(floquet_t), intent(in) :: f  !! Floquet data of the swing
       complex(wp) :: lambda(2)
       integer :: i
       do i = 1, 2
@@ -97,7 +111,7 @@ contains
 
    !> max |λ| of x, clamped to huge(1.0_wp) when it overflows.
    pure real(wp) function largest_multiplier_modulus(f)
-      type(floquet_t), intent(in) :: f
+      type(floquet_t), intent(in) :: f  !! Floquet data of the swing
       if (f%log_modulus(1) >= log_huge) then
          largest_multiplier_modulus = huge(1.0_wp)
       else

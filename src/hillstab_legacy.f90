@@ -1,67 +1,58 @@
-!> Old-style entry points for FORTRAN 77-era callers: implicit-interface-friendly
-!> external subroutines with plain DOUBLE PRECISION/INTEGER arguments and an
-!> INFO code (0 = success), thin wrappers over the modern API.
+!> Explicit interfaces of the old-style entry points HSTRACE, HSFLOQ and HSERRM for
+!> modern callers (`use hillstab_legacy`). The routines themselves are external
+!> procedures (src/hillstab_legacy_external.f90, link symbols `hstrace_`,
+!> `hsfloq_`, `hserrm_`), so FORTRAN 77 code calls them with no `USE`, through an
+!> implicit interface, the way it calls LAPACK:
 !>
 !>```fortran
 !>       DOUBLE PRECISION S
 !>       INTEGER INFO
 !>       CALL HSTRACE(1, 3.7D0, 2.47D0, 0.0D0, 2, 256, 3, 1.0D-10, S, INFO)
 !>```
+!>
+!> Every argument and code is documented in the README (*Old-style entry points*).
 module hillstab_legacy
    use hillstab_kinds, only: wp
-   use hillstab_error, only: error_t
-   use hillstab_coefficient, only: hill_model_t
-   use hillstab_transfer, only: trace_t
-   use hillstab_floquet, only: floquet_t, floquet_from_trace
-   use hillstab_monodromy, only: method_t, monodromy_trace
    implicit none
    private
-   public :: hstrace, hsfloq
+   public :: hstrace, hsfloq, hserrm
 
-contains
+   interface
+      !> Trace S of the one-period monodromy (S₁ of the χ equation (47) when EPS > 0).
+      subroutine hstrace(model, alpha, beta, eps, method, nseg, isamp, tol, s, info)
+         import :: wp
+         integer, intent(in) :: model   !! 1 elastic (eq. 25), 2 Mathieu
+         real(wp), intent(in) :: alpha  !! α (elastic: 0 ≤ α < π²); ν for Mathieu
+         real(wp), intent(in) :: beta   !! β
+         real(wp), intent(in) :: eps    !! damping ε ≥ 0 of eq. (46)
+         integer, intent(in) :: method  !! 0 auto, 1 formula, 2 segments, 3 magnus4, 4 magnus6, 5 rk, 6 gsl
+         integer, intent(in) :: nseg    !! pieces per period (METHOD = 2), ≥ 1
+         integer, intent(in) :: isamp   !! sampling of the pieces (METHOD = 2): 1 endpoint, 2 midpoint, 3 average
+         real(wp), intent(in) :: tol    !! target error on S scaled by max(1, |S|) (exact methods), > 0
+         real(wp), intent(out) :: s     !! the trace (±HUGE with INFO = 2; best value with INFO = 7)
+         integer, intent(out) :: info   !! 0 success, 2 overflow, 7 round-off limited, else an error code
+      end subroutine hstrace
 
-   !> S (S₁ with damping) for MODEL (1 elastic, 2 mathieu), METHOD (0 auto … 6 gsl),
-   !> NSEG pieces with sampling ISAMP (1 endpoint, 2 midpoint, 3 average), tolerance TOL.
-   !> INFO = 0 on success, 2 if S overflowed (S = ±huge), else an error code.
-   subroutine hstrace(model, alpha, beta, eps, method, nseg, isamp, tol, s, info)
-      integer, intent(in) :: model, method, nseg, isamp
-      real(wp), intent(in) :: alpha, beta, eps, tol
-      real(wp), intent(out) :: s
-      integer, intent(out) :: info
-      type(trace_t) :: tr
-      type(error_t), allocatable :: error
-      s = 0.0_wp
-      call monodromy_trace(hill_model_t(model, alpha, beta, eps), method_t(method, nseg, isamp, tol), tr, error)
-      if (allocated(error)) then
-         info = error%code
-         return
-      end if
-      s = tr%value
-      info = 0
-      if (tr%overflow) info = 2
-   end subroutine hstrace
+      !> As HSTRACE, plus the Floquet exponent and the stability verdict of the swing x.
+      subroutine hsfloq(model, alpha, beta, eps, method, nseg, isamp, tol, s, mu, istab, info)
+         import :: wp
+         integer, intent(in) :: model   !! 1 elastic (eq. 25), 2 Mathieu
+         real(wp), intent(in) :: alpha  !! α (elastic: 0 ≤ α < π²); ν for Mathieu
+         real(wp), intent(in) :: beta   !! β
+         real(wp), intent(in) :: eps    !! damping ε ≥ 0 of eq. (46)
+         integer, intent(in) :: method  !! 0 auto, 1 formula, 2 segments, 3 magnus4, 4 magnus6, 5 rk, 6 gsl
+         integer, intent(in) :: nseg    !! pieces per period (METHOD = 2), ≥ 1
+         integer, intent(in) :: isamp   !! sampling of the pieces (METHOD = 2): 1 endpoint, 2 midpoint, 3 average
+         real(wp), intent(in) :: tol    !! target error on S scaled by max(1, |S|) (exact methods), > 0
+         real(wp), intent(out) :: s     !! the trace, as in HSTRACE
+         real(wp), intent(out) :: mu    !! Floquet exponent μ = ln|λ_max|/2 of x per unit τ
+         integer, intent(out) :: istab  !! 1 when x is stable (|S| < 2 cosh ε), else 0
+         integer, intent(out) :: info   !! 0 success, 7 round-off limited, else an error code
+      end subroutine hsfloq
 
-   !> As HSTRACE, plus the Floquet exponent MU of the swing and ISTAB = 1 when stable
-   !> (|S₁| < 2 cosh ε), else 0.
-   subroutine hsfloq(model, alpha, beta, eps, method, nseg, isamp, tol, s, mu, istab, info)
-      integer, intent(in) :: model, method, nseg, isamp
-      real(wp), intent(in) :: alpha, beta, eps, tol
-      real(wp), intent(out) :: s, mu
-      integer, intent(out) :: istab, info
-      type(trace_t) :: tr
-      type(floquet_t) :: f
-      type(error_t), allocatable :: error
-      s = 0.0_wp; mu = 0.0_wp; istab = 0
-      call monodromy_trace(hill_model_t(model, alpha, beta, eps), method_t(method, nseg, isamp, tol), tr, error)
-      if (allocated(error)) then
-         info = error%code
-         return
-      end if
-      f = floquet_from_trace(tr, eps)
-      s = f%trace%value
-      mu = f%exponent
-      istab = 0
-      if (f%stable) istab = 1
-      info = 0
-   end subroutine hsfloq
+      !> Message of the most recent HSTRACE or HSFLOQ call in this thread (blank after success).
+      subroutine hserrm(msg)
+         character(len=*), intent(out) :: msg  !! receives the message, cut or blank-padded to its length
+      end subroutine hserrm
+   end interface
 end module hillstab_legacy

@@ -30,10 +30,13 @@ module hillstab_output
    real(wp), parameter :: clamp_magnitude = 1.0e300_wp
    !> log10|S| is written as at least this (only S = 0 exactly reaches it).
    real(wp), parameter :: log10_floor = -300.0_wp
+   !> The `stable` column of a marginal point (|S| within its error bound of the threshold):
+   !> neither 1 nor 0, half-way in a [0, 1] colour scale.
+   character(len=*), parameter :: marginal_text = " 0.5"
    !> log10_abs_S of a failed point: below `log10_floor`, so never a value.
    real(wp), parameter :: failed_log10_abs_s = -999.0_wp
    !> Characters in one chart line (see `chart_line`).
-   integer, parameter :: chart_line_length = 160
+   integer, parameter :: chart_line_length = 200
 
    !> An output file being written under a temporary name.
    type :: output_file_t
@@ -63,9 +66,9 @@ contains
 
    !> Open `<path>.part<pid>` for writing; fails (err_io) when the place is not writable.
    subroutine open_output(file, path, error)
-      type(output_file_t), intent(out) :: file
+      type(output_file_t), intent(out) :: file  !! the open temporary file
       character(len=*), intent(in) :: path  !! final file name
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! err_io when the place is not writable
       integer :: ios
       character(len=512) :: msg
       character(len=24) :: pid
@@ -82,8 +85,8 @@ contains
 
    !> Close the temporary file and rename it onto the final name.
    subroutine commit_output(file, error)
-      type(output_file_t), intent(inout) :: file
-      type(error_t), allocatable, intent(out) :: error
+      type(output_file_t), intent(inout) :: file  !! the file written
+      type(error_t), allocatable, intent(out) :: error  !! err_io when closing or renaming fails
       integer :: ios
       character(len=512) :: msg
       close (file%unit, iostat=ios, iomsg=msg)
@@ -101,7 +104,7 @@ contains
 
    !> Close and delete the temporary file; the final name is left as it was.
    subroutine discard_output(file)
-      type(output_file_t), intent(inout) :: file
+      type(output_file_t), intent(inout) :: file  !! the file to abandon
       integer :: ios
       if (file%unit /= -1) close (file%unit, status="delete", iostat=ios)
       file%unit = -1
@@ -110,17 +113,17 @@ contains
 
    !> Delete a file if it exists (no error if it does not).
    subroutine remove_file(path)
-      character(len=*), intent(in) :: path
+      character(len=*), intent(in) :: path  !! the file
       integer(c_int) :: status
       status = c_remove(c_string(path))
    end subroutine remove_file
 
    !> Write the header: each of `lines` after "# ", then "# columns: <columns>".
    subroutine write_header(file, lines, columns, error)
-      type(output_file_t), intent(inout) :: file
+      type(output_file_t), intent(inout) :: file  !! the open output file
       character(len=*), intent(in) :: lines(:)  !! header text, one entry a line
       character(len=*), intent(in) :: columns   !! blank-separated column names
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! err_io when writing fails
       integer :: k
       do k = 1, size(lines)
          call write_text(file, "# "//trim(lines(k)), error)
@@ -131,31 +134,44 @@ contains
 
    !> Write one line of text.
    subroutine write_text(file, line, error)
-      type(output_file_t), intent(inout) :: file
-      character(len=*), intent(in) :: line
-      type(error_t), allocatable, intent(out) :: error
+      type(output_file_t), intent(inout) :: file  !! the open output file
+      character(len=*), intent(in) :: line  !! the line, without its new line
+      type(error_t), allocatable, intent(out) :: error  !! err_io when writing fails
       integer :: ios
       character(len=512) :: msg
       write (file%unit, '(a)', iostat=ios, iomsg=msg) line
       if (ios /= 0) call set_error(error, err_io, "cannot write '"//file%path//"': "//trim(msg))
    end subroutine write_text
 
-   !> Column names of chart and points files; `stable_paper` only with damping.
-   pure function chart_columns(damped) result(names)
+   !> Column names of chart and points files; `physical` only for the elastic model,
+   !> `stable_paper` only with damping, `mu_per_s` only when ω is known.
+   pure function chart_columns(damped, elastic, per_second) result(names)
       logical, intent(in) :: damped  !! ε > 0
+      logical, intent(in), optional :: elastic     !! the elastic model (default): the `physical` column
+      logical, intent(in), optional :: per_second  !! the scene knows ω: the `mu_per_s` column
       character(len=:), allocatable :: names
-      names = "alpha beta S stable lambda_max mu log10_abs_S overflow physical"
+      names = "alpha beta S stable lambda_max mu log10_abs_S overflow"
+      if (optional_true(elastic, .true.)) names = names//" physical"
       if (damped) names = names//" stable_paper"
+      if (optional_true(per_second, .false.)) names = names//" mu_per_s"
       names = names//" error_estimate status"
    end function chart_columns
 
-   !> One chart row: alpha beta S stable lambda_max mu log10_abs_S overflow physical [stable_paper]
-   !> error_estimate status. |S| > 1e300 is written as ±1e300 with overflow = 1 (log10_abs_S
+   pure logical function optional_true(flag, default)
+      logical, intent(in), optional :: flag
+      logical, intent(in) :: default
+      optional_true = default
+      if (present(flag)) optional_true = flag
+   end function optional_true
+
+   !> One chart row: alpha beta S stable lambda_max mu log10_abs_S overflow [physical] [stable_paper]
+   !> [mu_per_s] error_estimate status, as named by `chart_columns`. |S| > 1e300 is written as ±1e300 with overflow = 1 (log10_abs_S
    !> stays exact); lambda_max is clamped the same way; flags are 1 or 0; error_estimate is
    !> the method's estimate of |ΔS|/max(1, |S|) (−1 when the method gives none); status is
    !> a code of hillstab_status (status_ok or status_roundoff here, see `failed_chart_line`).
-   pure function chart_line(alpha, beta, f, damped, physical, status, alpha_text, beta_text) result(line)
-      real(wp), intent(in) :: alpha, beta
+   pure function chart_line(alpha, beta, f, damped, physical, status, alpha_text, beta_text, elastic, per_second) &
+      result(line)
+      real(wp), intent(in) :: alpha, beta  !! the grid point
       type(floquet_t), intent(in) :: f  !! Floquet data of the point
       logical, intent(in) :: damped     !! write the stable_paper column
       logical, intent(in) :: physical   !! (α, β) inside the physical domain
@@ -163,6 +179,9 @@ contains
       !> format_es(alpha, 16), format_es(beta, 16) when already at hand (a chart formats
       !> each grid value once, not once per point)
       character(len=23), intent(in), optional :: alpha_text, beta_text
+      logical, intent(in), optional :: elastic  !! write the `physical` column (default: yes)
+      !> ω/π (1/s per unit τ) when the scene knows ω: write the `mu_per_s` column μ ω/π
+      real(wp), intent(in), optional :: per_second
       character(len=chart_line_length) :: line
       real(wp) :: s, lambda_max, log10_abs_s, mu, estimate
       logical :: overflow
@@ -179,7 +198,11 @@ contains
       ! computing the point with method auto
       call put_point(line, pos, alpha, beta, alpha_text, beta_text)
       call put_es(line, pos, s, 16)
-      call put_flag(line, pos, f%stable)
+      if (f%marginal) then
+         call put_text(line, pos, marginal_text)
+      else
+         call put_flag(line, pos, f%stable)
+      end if
       call put_blank(line, pos)
       call put_es(line, pos, lambda_max, 10)
       call put_blank(line, pos)
@@ -187,8 +210,12 @@ contains
       call put_blank(line, pos)
       call put_es(line, pos, log10_abs_s, 10)
       call put_flag(line, pos, overflow)
-      call put_flag(line, pos, physical)
+      if (optional_true(elastic, .true.)) call put_flag(line, pos, physical)
       if (damped) call put_flag(line, pos, f%stable_paper)
+      if (present(per_second)) then
+         call put_blank(line, pos)
+         call put_es(line, pos, mu*per_second + 0.0_wp, 10)
+      end if
       call put_blank(line, pos)
       call put_es(line, pos, min(estimate, clamp_magnitude), 3)
       call put_status(line, pos, status)
@@ -198,13 +225,16 @@ contains
    !> The chart row of a point where no value could be computed: alpha beta, then
    !> placeholders outside the range of every column that has one (stable, overflow and
    !> stable_paper −1, lambda_max −1, log10_abs_S −999, error_estimate −1), S = 0 and
-   !> mu = 0, physical as for any point, and status = `status` (status_failed).
-   pure function failed_chart_line(alpha, beta, damped, physical, status, alpha_text, beta_text) result(line)
-      real(wp), intent(in) :: alpha, beta
+   !> mu = 0 (and mu_per_s = 0), physical as for any point, and status = `status` (status_failed).
+   pure function failed_chart_line(alpha, beta, damped, physical, status, alpha_text, beta_text, elastic, &
+                                   per_second) result(line)
+      real(wp), intent(in) :: alpha, beta  !! the grid point
       logical, intent(in) :: damped     !! write the stable_paper column
       logical, intent(in) :: physical   !! (α, β) inside the physical domain
       integer, intent(in) :: status     !! per-point status code (status_failed)
       character(len=23), intent(in), optional :: alpha_text, beta_text  !! as for `chart_line`
+      logical, intent(in), optional :: elastic      !! as for `chart_line`
+      real(wp), intent(in), optional :: per_second  !! as for `chart_line`
       character(len=chart_line_length) :: line
       integer :: pos
       call put_point(line, pos, alpha, beta, alpha_text, beta_text)
@@ -216,8 +246,12 @@ contains
       call put_blank(line, pos)
       call put_es(line, pos, failed_log10_abs_s, 10)
       call put_text(line, pos, " -1")
-      call put_flag(line, pos, physical)
+      if (optional_true(elastic, .true.)) call put_flag(line, pos, physical)
       if (damped) call put_text(line, pos, " -1")
+      if (present(per_second)) then
+         call put_blank(line, pos)
+         call put_es(line, pos, 0.0_wp, 10)
+      end if
       call put_blank(line, pos)
       call put_es(line, pos, -1.0_wp, 3)
       call put_status(line, pos, status)
@@ -249,7 +283,7 @@ contains
 
    !> Reals written in full precision, separated by one blank.
    pure function real_columns(values) result(line)
-      real(wp), intent(in) :: values(:)
+      real(wp), intent(in) :: values(:)  !! the values, finite
       character(len=25*size(values)) :: line
       write (line, '(*(es24.16e3,:,1x))') values
    end function real_columns

@@ -1,4 +1,4 @@
-!> Scenes: one namelist file describes one run (task, model, method, grid, output).
+!> A scene is one namelist file describing one run (task, model, method, grid, output).
 !> This module reads and validates it into a `scene_t`; it computes nothing and
 !> writes nothing. Every error names the file, the namelist group and the variable.
 !>
@@ -10,7 +10,8 @@
 !>```
 !>
 !> Groups: `&scene` (always), then the group of the task: `&chart`, `&points`,
-!> `&coefficient` or `&series`. Group order in the file does not matter and other groups are
+!> `&coefficient` or `&series`; optionally `&physical` (the pendulum in SI units, in place of the
+!> dimensionless ε and, for points and coefficient, of α and β). Group order in the file does not matter and other groups are
 !> ignored, so one file may hold several. Reading tolerates `#` lines before a group,
 !> which lets a run be repeated from the header of its own output file.
 module hillstab_scene
@@ -19,19 +20,22 @@ module hillstab_scene
    use hillstab_coefficient, only: model_elastic, model_mathieu, model_name, sampling_endpoint, &
       sampling_average, sampling_name
    use hillstab_monodromy, only: method_t, method_auto, method_name, method_from_name
+   use hillstab_units, only: physical_t, physical_alpha, physical_beta, physical_epsilon, physical_nu, &
+      check_physical, equilibrium_length
    use, intrinsic :: iso_fortran_env, only: iostat_end
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_usual, ieee_support_halting, &
       ieee_get_halting_mode, ieee_set_halting_mode, ieee_set_flag
    implicit none
    private
-   public :: scene_t, chart_grid_t, coefficient_plan_t, series_plan_t, max_series_lines, read_scene, scene_namelist, default_scene
+   public :: scene_t, chart_grid_t, coefficient_plan_t, series_plan_t, max_series_lines, read_scene, &
+      scene_namelist, default_scene
    public :: task_chart, task_points, task_coefficient, task_boundaries, task_series, task_name
    public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas
 
    integer, parameter :: task_chart = 1        !! stability chart over an (α, β) grid
    integer, parameter :: task_points = 2       !! the chart's columns at listed (α, β) points
    integer, parameter :: task_coefficient = 3  !! Q(τ) and its segmented version (the paper's Fig. 2)
-   integer, parameter :: task_boundaries = 4   !! transition curves (reserved for its own issue)
+   integer, parameter :: task_boundaries = 4   !! transition curves over the α grid of `&chart`
    integer, parameter :: task_series = 5       !! time series of the nonlinear pendulum
 
    !> Largest number of α values in `&coefficient alphas`.
@@ -90,6 +94,13 @@ module hillstab_scene
       real(wp), allocatable :: points(:, :)         !! task_points: (2, n) α, β in file order
       type(coefficient_plan_t) :: coefficient       !! task_coefficient
       type(series_plan_t) :: series                 !! task_series
+      !> The scene has a `&physical` group: ε comes from κ and ω, and the outputs add
+      !> rates per second (ω is known)
+      logical :: physical = .false.
+      type(physical_t) :: pendulum                  !! `&physical` r0, g, omega, kappa (a: `amplitudes`)
+      !> `&physical a` (m): the points (task points) or the curves (task coefficient) at
+      !> these amplitudes and the given r0; empty when α and β come from the task's group
+      real(wp), allocatable :: amplitudes(:)
    end type scene_t
 
    !> One `name = value(s)` item of a namelist group, cut out of the file text.
@@ -108,7 +119,7 @@ contains
 
    !> Name of a task constant.
    pure function task_name(task) result(name)
-      integer, intent(in) :: task
+      integer, intent(in) :: task  !! one of the task_* constants
       character(len=:), allocatable :: name
       select case (task)
       case (task_chart); name = "chart"
@@ -122,8 +133,8 @@ contains
 
    !> The i-th of n equally spaced values from lo to hi (n = 1: lo).
    pure real(wp) function grid_value(lo, hi, n, i)
-      real(wp), intent(in) :: lo, hi
-      integer, intent(in) :: n, i
+      real(wp), intent(in) :: lo, hi  !! first and last value
+      integer, intent(in) :: n, i  !! number of values; index 1 ... n
       if (n <= 1) then
          grid_value = lo
       else if (i == n) then
@@ -151,13 +162,14 @@ contains
       if (len(scene%output) == 0) scene%output = "hillstab"
       scene%points_file = ""
       scene%coefficient%alphas = [4.0_wp, 6.0_wp, 7.5_wp, 8.0_wp, 9.0_wp, 9.7_wp]
+      allocate (scene%amplitudes(0))
    end function default_scene
 
    !> Read and validate the scene in `path`: `&scene`, then the group of its task.
    subroutine read_scene(path, scene, error)
       character(len=*), intent(in) :: path       !! scene file
       type(scene_t), intent(out) :: scene        !! the validated scene
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable; unallocated on success
       integer :: unit, ios
       character(len=512) :: msg
       scene = default_scene(path)
@@ -168,8 +180,11 @@ contains
       end if
       call read_scene_group(unit, scene, error)
       if (.not. allocated(error)) then
+         if (group_present(unit, "physical")) call read_physical_group(unit, scene, error)
+      end if
+      if (.not. allocated(error)) then
          select case (scene%task)
-         case (task_chart)
+         case (task_chart, task_boundaries)
             call read_chart_group(unit, scene, error)
          case (task_points)
             call read_points_group(unit, scene, error)
@@ -204,7 +219,7 @@ contains
       n_segments = this%method%n_segments; sampling = sampling_name(this%method%sampling)
       tolerance = this%method%tolerance; epsilon = this%epsilon; output = this%output
       call without_fpe_halting(read_it)
-      call check_read(this%source, group, names, kinds, ios, msg, bad, error)
+      call check_read(unit, this%source, group, names, kinds, ios, msg, bad, error)
       if (allocated(error)) return
 
       this%task = -1
@@ -213,9 +228,7 @@ contains
       end do
       if (this%task < 0) then
          call fail(error, this%source, group, "task", "unknown task '"//trim(task)// &
-            "' (expected chart, points, coefficient or series)")
-      else if (this%task == task_boundaries) then
-         call fail(error, this%source, group, "task", "task '"//trim(task)//"' is not available in this build")
+            "' (expected chart, points, coefficient, boundaries or series)")
       end if
       if (allocated(error)) return
 
@@ -263,6 +276,10 @@ contains
          return
       end if
       this%epsilon = epsilon
+      if (this%task == task_boundaries .and. epsilon > 0.0_wp) then
+         call fail(error, this%source, group, "epsilon", "task 'boundaries' draws the undamped curves: epsilon must be 0")
+         return
+      end if
 
       if (len_trim(output) == 0) then
          call fail(error, this%source, group, "output", "the output prefix is empty")
@@ -286,6 +303,115 @@ contains
       end subroutine try_item
    end subroutine read_scene_group
 
+   !> `&physical`: the pendulum in SI units (eqs. (4), (15), (24), (46)). Gives ε (from κ)
+   !> and ω (rates per second); with `a` and `r0`, also the α and β of a points or
+   !> coefficient task. Mixing it with the dimensionless values is an error naming both.
+   subroutine read_physical_group(unit, scene, error)
+      integer, intent(in) :: unit
+      type(scene_t), intent(inout) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: r0, g, omega, a(max_coefficient_alphas), kappa
+      namelist /physical/ r0, g, omega, a, kappa
+      character(len=*), parameter :: group = "physical"
+      character(len=*), parameter :: names(5) = [character(len=5) :: "r0", "g", "omega", "a", "kappa"]
+      character(len=*), parameter :: kinds(5) = [character(len=22) :: "a real number", "a real number", &
+         "a real number", "a list of real numbers", "a real number"]
+      integer :: ios, n, k
+      character(len=512) :: msg
+      character(len=:), allocatable :: bad, variable
+      logical :: given_a, given_r0
+      type(physical_t) :: p
+      type(error_t), allocatable :: cause
+
+      r0 = scene%pendulum%r0; g = scene%pendulum%g; omega = scene%pendulum%omega; kappa = scene%pendulum%kappa
+      a = unset_alpha
+      call without_fpe_halting(read_it)
+      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
+      if (allocated(error)) return
+
+      if (.not. group_sets(unit, group, "omega")) then
+         call fail(error, scene%source, group, "omega", "the radial angular frequency omega = sqrt(k/m) (rad/s) "// &
+            "is required")
+         return
+      end if
+      if (group_sets(unit, "scene", "epsilon")) then
+         call fail(error, scene%source, group, "kappa", "give the damping either as &scene epsilon "// &
+            "(dimensionless) or as &physical kappa (1/s), not both")
+         return
+      end if
+      n = 0
+      do k = 1, max_coefficient_alphas
+         if (a(k) /= unset_alpha) n = k
+      end do
+      if (any(a(:n) == unset_alpha)) then
+         call fail(error, scene%source, group, "a", "the list has gaps")
+         return
+      end if
+      given_a = n > 0
+      given_r0 = group_sets(unit, group, "r0")
+      if (given_a .neqv. given_r0) then
+         call fail(error, scene%source, group, merge("r0", "a ", given_a), &
+            "a (amplitudes, m) and r0 (natural length, m) go together")
+         return
+      end if
+      p = physical_t(r0=r0, g=g, omega=omega, a=0.0_wp, kappa=kappa)
+      do k = 1, max(n, 1)
+         if (n > 0) p%a = a(k)
+         call check_physical(p, cause, variable)
+         if (allocated(cause)) then
+            call fail(error, scene%source, group, variable, cause%message//"; got r0 = "//real_text(p%r0)// &
+               ", g = "//real_text(p%g)//", omega = "//real_text(p%omega)//", a = "//real_text(p%a)// &
+               ", kappa = "//real_text(p%kappa))
+            return
+         end if
+      end do
+      if (given_a .and. scene%task == task_chart) then
+         call fail(error, scene%source, group, "a", "a chart runs over the grid of &chart (alpha, beta); "// &
+            "amplitudes a with r0 make the points of task 'points' or the curves of task 'coefficient'")
+         return
+      end if
+      scene%physical = .true.
+      scene%pendulum = p
+      scene%pendulum%a = 0.0_wp
+      scene%amplitudes = a(:n)
+      scene%epsilon = physical_epsilon(p)
+   contains
+      subroutine read_it()
+         rewind (unit)
+         read (unit, nml=physical, iostat=ios, iomsg=msg)
+         if (ios > 0) then
+            call find_bad_item(unit, group, try_item, bad)
+            if (.not. allocated(bad)) bad = ""
+         end if
+      end subroutine read_it
+      subroutine try_item(text, stat)
+         character(len=*), intent(in) :: text
+         integer, intent(out) :: stat
+         character(len=512) :: ignored
+         read (text, nml=physical, iostat=stat, iomsg=ignored)
+      end subroutine try_item
+   end subroutine read_physical_group
+
+   !> α (elastic model) or ν of eq. (21) (Mathieu model) and β of the pendulum at each
+   !> amplitude of `&physical a`: a (2, n) array like the points of a points file.
+   pure function physical_points(scene) result(points)
+      type(scene_t), intent(in) :: scene
+      real(wp), allocatable :: points(:, :)
+      type(physical_t) :: p
+      integer :: k
+      allocate (points(2, size(scene%amplitudes)))
+      p = scene%pendulum
+      do k = 1, size(scene%amplitudes)
+         p%a = scene%amplitudes(k)
+         if (scene%model == model_mathieu) then
+            points(1, k) = physical_nu(p)
+         else
+            points(1, k) = physical_alpha(p)
+         end if
+         points(2, k) = physical_beta(p)
+      end do
+   end function physical_points
+
    !> `&chart`: the (α, β) grid.
    subroutine read_chart_group(unit, scene, error)
       integer, intent(in) :: unit
@@ -306,7 +432,7 @@ contains
       alpha_min = scene%chart%alpha_min; alpha_max = scene%chart%alpha_max; n_alpha = scene%chart%n_alpha
       beta_min = scene%chart%beta_min; beta_max = scene%chart%beta_max; n_beta = scene%chart%n_beta
       call without_fpe_halting(read_it)
-      call check_read(scene%source, group, names, kinds, ios, msg, bad, error)
+      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
       if (allocated(error)) return
 
       call check_range(scene%source, group, "alpha", alpha_min, alpha_max, n_alpha, error)
@@ -349,9 +475,19 @@ contains
       character(len=512) :: msg
       character(len=:), allocatable :: bad
 
+      if (size(scene%amplitudes) > 0) then
+         ! the points are the pendulum's amplitudes: &points is optional and may not name a file
+         if (group_sets(unit, group, "file")) then
+            call fail(error, scene%source, group, "file", "the points come either from &points file (alpha, beta) "// &
+               "or from &physical a and r0, not both")
+            return
+         end if
+         scene%points = physical_points(scene)
+         return
+      end if
       file = scene%points_file
       call without_fpe_halting(read_it)
-      call check_read(scene%source, group, names, kinds, ios, msg, bad, error)
+      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
       if (allocated(error)) return
       if (len_trim(file) == 0) then
          call fail(error, scene%source, group, "file", "no points file given")
@@ -396,9 +532,29 @@ contains
       alphas = unset_alpha
       beta = scene%coefficient%beta; n_tau = scene%coefficient%n_tau
       tau_min = scene%coefficient%tau_min; tau_max = scene%coefficient%tau_max
+      if (size(scene%amplitudes) > 0) then
+         ! the curves are the pendulum's amplitudes: &coefficient is optional and gives only tau
+         do k = 1, 2
+            if (group_sets(unit, group, trim(names(k)))) then
+               call fail(error, scene%source, group, trim(names(k)), "alpha and beta come either from "// &
+                  "&coefficient alphas, beta or from &physical a and r0, not both")
+               return
+            end if
+         end do
+         if (.not. group_present(unit, group)) then
+            scene%coefficient = coefficient_plan_t(physical_points_alphas(), physical_points_beta(), tau_min, tau_max, &
+                                                   n_tau)
+            return
+         end if
+      end if
       call without_fpe_halting(read_it)
-      call check_read(scene%source, group, names, kinds, ios, msg, bad, error)
+      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
       if (allocated(error)) return
+      if (size(scene%amplitudes) > 0) then
+         n = size(scene%amplitudes)
+         alphas(:n) = physical_points_alphas()
+         beta = physical_points_beta()
+      end if
 
       do k = 1, max_coefficient_alphas
          call require_finite_or_unset(k, error)
@@ -428,6 +584,17 @@ contains
       if (allocated(error)) return
       scene%coefficient = coefficient_plan_t(alphas(:n), beta, tau_min, tau_max, n_tau)
    contains
+      function physical_points_alphas() result(values)
+         real(wp), allocatable :: values(:)
+         real(wp), allocatable :: points(:, :)
+         points = physical_points(scene)
+         values = points(1, :)
+      end function physical_points_alphas
+      real(wp) function physical_points_beta()
+         real(wp), allocatable :: points(:, :)
+         points = physical_points(scene)
+         physical_points_beta = points(2, 1)
+      end function physical_points_beta
       subroutine require_finite_or_unset(k, error)
          integer, intent(in) :: k
          type(error_t), allocatable, intent(out) :: error
@@ -476,14 +643,17 @@ contains
          samples_per_period = plan%samples_per_period; r0 = plan%r0; g = plan%g; vx0 = plan%vx0; vz0 = plan%vz0
       end associate
       call without_fpe_halting(read_it)
-      call check_read(scene%source, group, names, kinds, ios, msg, bad, error)
+      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
       if (allocated(error)) return
       values = [alpha, beta, phi0, r0, g, vx0, vz0]
       do k = 1, 7
          call require_finite(scene%source, group, trim(names(merge(k, k + 2, k <= 3))), values(k), error)
          if (allocated(error)) return
       end do
-      if (scene%model /= model_elastic) then
+      if (scene%physical) then
+         call fail(error, scene%source, "physical", "r0", "the series task takes r0 and g in &series and the "// &
+            "damping as &scene epsilon; leave out &physical")
+      else if (scene%model /= model_elastic) then
          call fail(error, scene%source, "scene", "model", "the series task simulates the elastic pendulum: "// &
             "model must be 'elastic'")
       else if (alpha < 0.0_wp .or. alpha >= pi2) then
@@ -608,7 +778,8 @@ contains
    end subroutine without_fpe_halting
 
    !> Turn the status of a namelist read into an error naming file, group and variable.
-   subroutine check_read(path, group, names, kinds, ios, msg, bad, error)
+   subroutine check_read(unit, path, group, names, kinds, ios, msg, bad, error)
+      integer, intent(in) :: unit               !! the scene file
       character(len=*), intent(in) :: path, group
       character(len=*), intent(in) :: names(:)  !! variables of the group
       character(len=*), intent(in) :: kinds(:)  !! what each variable holds, for the message
@@ -617,8 +788,23 @@ contains
       character(len=:), allocatable, intent(in) :: bad  !! the first item that fails alone, if any
       type(error_t), allocatable, intent(out) :: error
       integer :: k, eq
-      character(len=:), allocatable :: name
+      character(len=:), allocatable :: name, body, next
+      logical :: found, closed
       if (ios == 0) return
+      call locate_group(unit, group, found, body, closed, next)
+      ! a closed group on the file's last line without a newline: gfortran has read every
+      ! value up to the '/' and then meets the end of the file
+      if (ios == iostat_end .and. found .and. closed) return
+      if (found .and. .not. closed) then
+         if (len(next) > 0) then
+            call set_error(error, err_input, path//": &"//group//": the group is not closed: no '/' before '&"// &
+               next//"'")
+         else
+            call set_error(error, err_input, path//": &"//group//": the group is not closed: no '/' before the end "// &
+               "of the file")
+         end if
+         return
+      end if
       if (ios == iostat_end) then
          call set_error(error, err_input, path//": &"//group//": the group is missing (no '&"//group// &
             " ... /' in the file)")
@@ -665,18 +851,24 @@ contains
       end do
    end subroutine find_bad_item
 
-   !> The items of the first `&group ... /` in the file, cut at each `name =`
-   !> (outside quotes; `!` comments removed).
-   subroutine group_items(unit, group, items)
+   !> Find the first `&group` of the file (at the start of a line or after a blank, so
+   !> `# &group` in output headers counts; `!` comments removed) and its body up to the
+   !> closing `/` outside quotes. A group is not closed when another `&name` comes
+   !> before its `/` (`next` is then that name) or when the file ends first (`next` = "").
+   subroutine locate_group(unit, group, found, body, closed, next)
       integer, intent(in) :: unit
       character(len=*), intent(in) :: group
-      type(item_t), allocatable, intent(out) :: items(:)
-      character(len=:), allocatable :: text, line, body
-      integer :: ios, i, start, j, k, n, last
-      integer, allocatable :: starts(:)
-      logical :: after_separator
+      logical, intent(out) :: found    !! the file has `&group`
+      character(len=:), allocatable, intent(out) :: body  !! text between the name and the `/`
+      logical, intent(out) :: closed   !! a `/` ends the group
+      character(len=:), allocatable, intent(out) :: next  !! the group met before any `/`
+      character(len=:), allocatable :: text, line
+      integer :: ios, i, j, start
       character :: quote
-      allocate (items(0))
+      found = .false.
+      closed = .false.
+      body = ""
+      next = ""
       text = ""
       rewind (unit)
       do
@@ -684,7 +876,6 @@ contains
          if (ios /= 0) exit
          text = text//strip_comment(line)//" "
       end do
-      ! locate '&group' at the start of a line or after a blank ('# &group' in output headers)
       start = 0
       do i = 1, len(text) - len(group) - 1
          if (text(i:i) /= "&") cycle
@@ -697,16 +888,69 @@ contains
          exit
       end do
       if (start == 0) return
-      ! the body runs to the first '/' outside quotes
+      found = .true.
       quote = " "
       body = text(start:)
       do i = 1, len(body)
          call track_quote(body(i:i), quote)
-         if (quote == " " .and. body(i:i) == "/") then
+         if (quote /= " ") cycle
+         if (body(i:i) == "/") then
             body = body(:i - 1)
-            exit
+            closed = .true.
+            return
+         end if
+         if (body(i:i) == "&" .and. i > 1 .and. i < len(body)) then
+            if (body(i - 1:i - 1) == " " .and. is_letter(body(i + 1:i + 1))) then
+               j = i + 1
+               do while (j < len(body))
+                  if (.not. is_name_char(body(j + 1:j + 1))) exit
+                  j = j + 1
+               end do
+               next = lower(body(i + 1:j))
+               closed = next == "end"  ! '&end' closes a group in old-style namelists
+               body = body(:i - 1)
+               return
+            end if
          end if
       end do
+   end subroutine locate_group
+
+   !> Whether the file has a `&group`.
+   logical function group_present(unit, group)
+      integer, intent(in) :: unit
+      character(len=*), intent(in) :: group
+      character(len=:), allocatable :: body, next
+      logical :: closed
+      call locate_group(unit, group, group_present, body, closed, next)
+   end function group_present
+
+   !> Whether the first `&group` of the file gives a value to `variable`.
+   logical function group_sets(unit, group, variable)
+      integer, intent(in) :: unit
+      character(len=*), intent(in) :: group, variable
+      type(item_t), allocatable :: items(:)
+      integer :: k
+      call group_items(unit, group, items)
+      group_sets = .false.
+      do k = 1, size(items)
+         if (items(k)%name == variable) group_sets = .true.
+      end do
+   end function group_sets
+
+   !> The items of the first `&group ... /` in the file, cut at each `name =`
+   !> (outside quotes; `!` comments removed).
+   subroutine group_items(unit, group, items)
+      integer, intent(in) :: unit
+      character(len=*), intent(in) :: group
+      type(item_t), allocatable, intent(out) :: items(:)
+      character(len=:), allocatable :: body, next
+      integer :: i, j, k, n, last
+      integer, allocatable :: starts(:)
+      logical :: after_separator, found, closed
+      character :: quote
+      allocate (items(0))
+      call locate_group(unit, group, found, body, closed, next)
+      if (.not. found) return
       ! item starts: an identifier (optionally subscripted) after a blank or comma, then '='
       allocate (starts(0))
       quote = " "
@@ -888,7 +1132,7 @@ contains
 
    !> Decimal text of an integer.
    pure function integer_text(n) result(text)
-      integer, intent(in) :: n
+      integer, intent(in) :: n  !! the integer
       character(len=:), allocatable :: text
       character(len=24) :: buffer
       write (buffer, '(i0)') n
@@ -953,27 +1197,33 @@ contains
    end function quoted
 
    !> The effective scene as namelist groups, one group a line, every variable
-   !> with its value (defaults filled in): `&scene` and the group of the task.
-   !> Reading these lines back as a scene reproduces the run.
+   !> with its value (defaults filled in): `&scene`, the group of the task and, when the
+   !> scene has one, `&physical`. Reading these lines back as a scene reproduces the run.
    function scene_namelist(scene) result(lines)
-      type(scene_t), intent(in) :: scene
+      type(scene_t), intent(in) :: scene  !! the scene
       character(len=:), allocatable :: lines(:)
-      character(len=:), allocatable :: first, second
+      character(len=:), allocatable :: first, second, third
       integer :: k
       first = "&scene task = "//quoted(task_name(scene%task))//", model = "//quoted(model_name(scene%model))// &
          ", method = "//quoted(method_name(scene%method%kind))// &
          ", n_segments = "//integer_text(scene%method%n_segments)// &
          ", sampling = "//quoted(sampling_name(scene%method%sampling))// &
-         ", tolerance = "//real_text(scene%method%tolerance)//", epsilon = "//real_text(scene%epsilon)// &
-         ", output = "//quoted(scene%output)//" /"
+         ", tolerance = "//real_text(scene%method%tolerance)
+      ! with &physical the damping is kappa; epsilon in &scene would be an error
+      if (.not. scene%physical) first = first//", epsilon = "//real_text(scene%epsilon)
+      first = first//", output = "//quoted(scene%output)//" /"
       select case (scene%task)
-      case (task_chart)
+      case (task_chart, task_boundaries)
          second = "&chart alpha_min = "//real_text(scene%chart%alpha_min)// &
             ", alpha_max = "//real_text(scene%chart%alpha_max)//", n_alpha = "//integer_text(scene%chart%n_alpha)// &
             ", beta_min = "//real_text(scene%chart%beta_min)//", beta_max = "//real_text(scene%chart%beta_max)// &
             ", n_beta = "//integer_text(scene%chart%n_beta)//" /"
       case (task_points)
-         second = "&points file = "//quoted(scene%points_file)//" /"
+         if (size(scene%amplitudes) > 0) then
+            second = "&points /"
+         else
+            second = "&points file = "//quoted(scene%points_file)//" /"
+         end if
       case (task_series)
          associate (plan => scene%series)
             second = "&series alpha = "//real_text(plan%alpha)//", beta = "//real_text(plan%beta)// &
@@ -982,26 +1232,43 @@ contains
                ", g = "//real_text(plan%g)//", vx0 = "//real_text(plan%vx0)//", vz0 = "//real_text(plan%vz0)//" /"
          end associate
       case (task_coefficient)
-         second = "&coefficient alphas = "//real_text(scene%coefficient%alphas(1))
-         do k = 2, size(scene%coefficient%alphas)
-            second = second//", "//real_text(scene%coefficient%alphas(k))
-         end do
-         second = second//", beta = "//real_text(scene%coefficient%beta)// &
-            ", n_tau = "//integer_text(scene%coefficient%n_tau)// &
+         second = "&coefficient "
+         if (size(scene%amplitudes) == 0) then
+            second = second//"alphas = "//real_text(scene%coefficient%alphas(1))
+            do k = 2, size(scene%coefficient%alphas)
+               second = second//", "//real_text(scene%coefficient%alphas(k))
+            end do
+            second = second//", beta = "//real_text(scene%coefficient%beta)//", "
+         end if
+         second = second//"n_tau = "//integer_text(scene%coefficient%n_tau)// &
             ", tau_min = "//real_text(scene%coefficient%tau_min)// &
             ", tau_max = "//real_text(scene%coefficient%tau_max)//" /"
       case default
          second = ""
       end select
-      allocate (character(len=max(len(first), len(second))) :: lines(2))
+      if (scene%physical) then
+         third = "&physical omega = "//real_text(scene%pendulum%omega)//", g = "//real_text(scene%pendulum%g)// &
+            ", kappa = "//real_text(scene%pendulum%kappa)
+         if (size(scene%amplitudes) > 0) then
+            third = third//", r0 = "//real_text(scene%pendulum%r0)//", a = "//real_text(scene%amplitudes(1))
+            do k = 2, size(scene%amplitudes)
+               third = third//", "//real_text(scene%amplitudes(k))
+            end do
+         end if
+         third = third//" /"
+         allocate (character(len=max(len(first), len(second), len(third))) :: lines(3))
+         lines(3) = third
+      else
+         allocate (character(len=max(len(first), len(second))) :: lines(2))
+      end if
       lines(1) = first
       lines(2) = second
    end function scene_namelist
 
    !> Read one whole line of any length from a formatted unit.
    subroutine read_text_line(unit, line, ios)
-      integer, intent(in) :: unit
-      character(len=:), allocatable, intent(out) :: line
+      integer, intent(in) :: unit  !! an open formatted unit
+      character(len=:), allocatable, intent(out) :: line  !! the line, without its end
       integer, intent(out) :: ios  !! 0, or iostat_end at the end of the file
       character(len=1024) :: chunk
       integer :: got
@@ -1012,5 +1279,7 @@ contains
          if (ios /= 0) exit
       end do
       if (is_iostat_eor(ios)) ios = 0
+      ! a last line without its newline is still a line; the next read meets the end
+      if (is_iostat_end(ios) .and. len(line) > 0) ios = 0
    end subroutine read_text_line
 end module hillstab_scene

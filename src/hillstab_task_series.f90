@@ -233,7 +233,7 @@ contains
       groups = scene_namelist(scene)
       n = 0
       n = n + 1; extra(n) = "hillstab "//version_string//": the nonlinear elastic pendulum (task series)"
-      n = n + 1; extra(n) = "scene file: "//scene%source//" (the two namelist lines below repeat this run)"
+      n = n + 1; extra(n) = "scene file: "//scene%source//" (the namelist lines below repeat this run)"
       associate (p => s%pendulum)
          n = n + 1; extra(n) = "model: x'' = -omega^2 (1 - r0/r) x - kappa x', z'' = -omega^2 (1 - r0/r) z + g - kappa z'"// &
             " (x horizontal, z downward from the pivot, r = sqrt(x^2 + z^2), phi = atan2(x, z))"

@@ -17,7 +17,7 @@
 !> call run_scene_file("data/scenes/default_exact.nml", quiet=.false., error=error)
 !>```
 module hillstab_tasks
-   use hillstab_kinds, only: wp, int64, pi2, version_string
+   use hillstab_kinds, only: wp, int64, pi, pi2, version_string
    use hillstab_error, only: error_t, set_error, err_input, err_io, err_accuracy, err_invalid_parameter, &
       err_points_failed
    use hillstab_status, only: status_ok, status_roundoff, status_failed
@@ -25,11 +25,13 @@ module hillstab_tasks
       segment_coefficients, hill_period, in_physical_domain, sampling_name
    use hillstab_transfer, only: trace_t
    use hillstab_floquet, only: floquet_t, floquet_from_trace
+   use hillstab_units, only: equilibrium_length
    use hillstab_monodromy, only: monodromy_trace, monodromy_trace_batch, method_name, method_segments, &
       batch_plan_t, prepare_batch
    use hillstab_task_series, only: run_series
    use hillstab_scene, only: scene_t, read_scene, scene_namelist, task_chart, task_points, task_coefficient, &
-      task_series, task_name, grid_value, real_text, integer_text
+      task_series, task_name, grid_value, real_text, integer_text, task_boundaries
+   use hillstab_task_boundaries, only: run_boundaries
    use hillstab_format, only: format_es
    use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, &
       write_text, chart_columns, chart_line, failed_chart_line, chart_line_length, real_columns
@@ -39,6 +41,9 @@ module hillstab_tasks
    implicit none
    private
    public :: run_scene_file, run_scene, output_path
+   ! the pieces a distributed driver (hillstab_batch, the MPI program) shares with the serial tasks
+   public :: chart_row, compute_points, chart_header, open_scene_output, check_method_runs, warn_inaccurate, &
+      failed_points_error, progress_t, progress_begin, progress_update, progress_end
 
    !> Progress on stderr for runs longer than about a second.
    type :: progress_t
@@ -65,7 +70,7 @@ contains
    subroutine run_scene_file(path, quiet, error, written)
       character(len=*), intent(in) :: path  !! scene file (a previous output file also works)
       logical, intent(in) :: quiet          !! no progress on stderr
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! what failed (err_points_failed: written with failed points)
       character(len=:), allocatable, intent(out), optional :: written  !! the file written
       type(scene_t) :: scene
       call read_scene(path, scene, error)
@@ -79,9 +84,9 @@ contains
 
    !> Run a validated scene.
    subroutine run_scene(scene, quiet, error)
-      type(scene_t), intent(in) :: scene
+      type(scene_t), intent(in) :: scene  !! a validated scene
       logical, intent(in) :: quiet  !! no progress on stderr
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! what failed (err_points_failed: written with failed points)
       select case (scene%task)
       case (task_chart)
          call run_chart(scene, quiet, error)
@@ -89,6 +94,8 @@ contains
          call run_points(scene, quiet, error)
       case (task_coefficient)
          call run_coefficient(scene, error)
+      case (task_boundaries)
+         call run_boundaries(scene, quiet, error)
       case (task_series)
          call run_series(scene, error)
       case default
@@ -99,7 +106,7 @@ contains
 
    !> `<output>_<task>.dat`.
    pure function output_path(scene) result(path)
-      type(scene_t), intent(in) :: scene
+      type(scene_t), intent(in) :: scene  !! the scene
       character(len=:), allocatable :: path
       path = scene%output//"_"//task_name(scene%task)//".dat"
    end function output_path
@@ -123,17 +130,17 @@ contains
          deallocate (error)
          if (present(status)) status = status_roundoff
       end if
-      f = floquet_from_trace(tr, scene%epsilon)
+      f = floquet_from_trace(tr, scene%epsilon, scene%method%tolerance)
    end subroutine evaluate_point
 
    !> Count the failed points of a task and name the first: err_points_failed, after the
    !> file has been written. The first failure is computed again serially, so the message
    !> does not depend on thread timing.
    subroutine failed_points_error(scene, n_failed, n_total, first, error)
-      type(scene_t), intent(in) :: scene
-      integer(int64), intent(in) :: n_failed, n_total
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      integer(int64), intent(in) :: n_failed, n_total  !! failed points; all points
       real(wp), intent(in) :: first(2)  !! alpha, beta of the first failed point
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! err_points_failed naming the count and the first point
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
       character(len=64) :: counts
@@ -159,9 +166,9 @@ contains
 
    !> Open the output file, reporting failure against `&scene output`.
    subroutine open_scene_output(scene, file, error)
-      type(scene_t), intent(in) :: scene
-      type(output_file_t), intent(out) :: file
-      type(error_t), allocatable, intent(out) :: error
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      type(output_file_t), intent(out) :: file  !! the open temporary output file
+      type(error_t), allocatable, intent(out) :: error  !! err_io naming &scene output
       type(error_t), allocatable :: cause
       call open_output(file, output_path(scene), cause)
       if (allocated(cause)) call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
@@ -171,24 +178,48 @@ contains
    function common_header(scene) result(lines)
       type(scene_t), intent(in) :: scene
       character(len=:), allocatable :: lines(:)
-      character(len=:), allocatable :: groups(:), model_text
+      character(len=:), allocatable :: groups(:), model_text, common(:)
       groups = scene_namelist(scene)
       if (scene%model == model_elastic) then
          model_text = "model: elastic, Q(tau) = (beta - alpha cos(pi tau))/(1 - (alpha/pi^2) cos(pi tau)), eq. (25)"
       else
          model_text = "model: mathieu, q(tau) = beta - alpha cos(pi tau), eq. (A1), alpha playing nu"
       end if
-      lines = stacked(["hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau"], &
-                      stacked(["scene file: "//scene%source//" (the two namelist lines below repeat this run)"], &
-                              stacked(groups, [model_text])))
+      common = stacked(["hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau"], &
+                       stacked(["scene file: "//scene%source//" (the namelist lines below repeat this run)"], &
+                               stacked(groups, [model_text])))
+      if (scene%physical) then
+         lines = stacked(common, physical_header(scene))
+      else
+         lines = common
+      end if
    end function common_header
+
+   !> Header lines of a scene given in physical units: the conversions used.
+   function physical_header(scene) result(lines)
+      type(scene_t), intent(in) :: scene
+      character(len=:), allocatable :: lines(:)
+      character(len=200) :: text(3)
+      text(1) = "physical units (SI): rho = r0 + g/omega^2 (eq. (4)), tau = omega t/pi, alpha = a pi^2/rho, "// &
+                "beta = g pi^2/(rho omega^2) (eq. (24)), epsilon = kappa pi/omega (eq. (46))"
+      text(2) = "omega = "//real_text(scene%pendulum%omega)//" rad/s: one radial period 2 pi/omega = "// &
+                real_text(2.0_wp*pi/scene%pendulum%omega)//" s is 2 units of tau; epsilon = "//real_text(scene%epsilon)
+      if (size(scene%amplitudes) > 0) then
+         text(3) = "rho = "//real_text(equilibrium_length(scene%pendulum))//" m; each row is one amplitude a of "// &
+                   "&physical: a = alpha rho/pi^2"
+         if (scene%model == model_mathieu) text(3) = trim(text(3))//" (here alpha is nu = a r0 pi^2/rho^2 of eq. (21))"
+         lines = text(:3)
+      else
+         lines = text(:2)
+      end if
+   end function physical_header
 
    !> Header lines describing the chart/points columns.
    function chart_header(scene, outside) result(lines)
-      type(scene_t), intent(in) :: scene
+      type(scene_t), intent(in) :: scene  !! a validated scene
       logical, intent(in) :: outside  !! some point lies outside the physical domain
       character(len=:), allocatable :: lines(:)
-      character(len=200) :: extra(12)
+      character(len=200) :: extra(14)
       integer :: n
       n = 0
       n = n + 1; extra(n) = "method: "//method_description(scene)
@@ -200,13 +231,20 @@ contains
       else
          n = n + 1; extra(n) = "stable: 1 when |S| < 2"
       end if
+      n = n + 1; extra(n) = "stable = 0.5: marginal, |S| is within its error bound max(error_estimate, tolerance) "// &
+         "max(1, |S|) of the threshold, the value cannot decide"
       n = n + 1; extra(n) = "lambda_max: largest |multiplier| of x per period; mu: Floquet exponent ln(lambda_max)/2"
-      n = n + 1; extra(n) = "physical: 1 inside the physical domain 0 <= alpha < pi^2, 0 < beta < pi^2"
+      if (scene%physical) then
+         n = n + 1; extra(n) = "mu_per_s: the Floquet exponent per second, mu omega/pi (tau = omega t/pi)"
+      end if
+      if (scene%model == model_elastic) then
+         n = n + 1; extra(n) = "physical: 1 inside the physical domain 0 <= alpha < pi^2, 0 <= beta < pi^2"
+      end if
       n = n + 1; extra(n) = "error_estimate: the method's estimate of |error of S|/max(1, |S|) (-1: the method gives none)"
       n = n + 1; extra(n) = "status: 0 ok; 1 round-off limited (best value, error_estimate at the round-off level); 2 failed"
       n = n + 1; extra(n) = "status 2 rows: S = 0, mu = 0, stable = overflow = stable_paper = -1, lambda_max = -1, "// &
          "log10_abs_S = -999, error_estimate = -1 (placeholders, not values)"
-      if (outside) then
+      if (outside .and. scene%model == model_elastic) then
          n = n + 1; extra(n) = "note: this file leaves the physical domain (rows with physical = 0)"
       end if
       lines = stacked(common_header(scene), extra(:n))
@@ -266,22 +304,18 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(output_file_t) :: file
       type(progress_t) :: progress
-      type(floquet_t) :: f
-      type(error_t), allocatable :: cause
       character(len=chart_line_length), allocatable :: lines(:)
-      logical, allocatable :: failed(:)
       logical :: damped, outside
-      real(wp) :: alpha, beta
+      real(wp) :: alpha
       real(wp), allocatable :: all_betas(:)
       character(len=23), allocatable :: beta_texts(:)
-      type(batch_plan_t) :: plan
       logical :: stopped
       character(len=chart_line_length), allocatable :: block_lines(:, :, :)
       integer, allocatable :: block_status(:, :, :), statuses(:)
       integer(int64) :: n_inaccurate, n_failed
       real(wp) :: first_inaccurate(2), first_failed(2)
       integer :: group, n_groups, g
-      integer :: i, j, n_alpha, n_beta, c, chunk, n_chunks, first, last
+      integer :: i, j, n_alpha, n_beta
 
       n_alpha = scene%chart%n_alpha
       n_beta = scene%chart%n_beta
@@ -289,17 +323,10 @@ contains
       ! an unwritable output path fails before any computing
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
-      ! a method that cannot run at all (bad parameters) fails at the first point; a point
-      ! where the computation fails is written with its status
-      alpha = scene%chart%alpha_min
-      beta = scene%chart%beta_min
-      call evaluate_point(scene, alpha, beta, f, cause)
-      if (allocated(cause)) then
-         if (cause%code == err_invalid_parameter) then
-            call point_error(scene, alpha, beta, cause, error)
-            call discard_output(file)
-            return
-         end if
+      call check_method_runs(scene, error)
+      if (allocated(error)) then
+         call discard_output(file)
+         return
       end if
       all_betas = [(grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j), j=1, n_beta)]
       allocate (beta_texts(n_beta))
@@ -308,7 +335,8 @@ contains
       end do
       outside = .not. (in_physical_domain(scene%chart%alpha_min, scene%chart%beta_min) .and. &
                        in_physical_domain(scene%chart%alpha_max, scene%chart%beta_max))
-      call write_header(file, chart_header(scene, outside), chart_columns(damped), error)
+      call write_header(file, chart_header(scene, outside), &
+         chart_columns(damped, scene%model == model_elastic, scene%physical), error)
       if (allocated(error)) then
          call discard_output(file)
          return
@@ -318,7 +346,7 @@ contains
       stopped = .false.
       n_inaccurate = 0
       n_failed = 0
-      if (n_alpha >= 4*max_threads()) then
+      if (rows_in_parallel(scene)) then
          ! groups of rows computed in parallel (mesh preparation, integration and
          ! formatting on every core) into one of two buffers, while one thread writes the
          ! previous group from the other buffer; a group holds a few rows per thread, so
@@ -355,19 +383,9 @@ contains
       else
          ! few rows: the points of each row in parallel chunks sharing the prepared meshes
          allocate (lines(n_beta), statuses(n_beta))
-         chunk = max(16, n_beta/(8*max_threads()))
-         n_chunks = (n_beta + chunk - 1)/chunk
          do i = 1, n_alpha
             alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i)
-            call prepare_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), all_betas, scene%method, plan)
-            !$omp parallel do schedule(dynamic) default(shared) private(c, first, last)
-            do c = 1, n_chunks
-               first = (c - 1)*chunk + 1
-               last = min(n_beta, c*chunk)
-               call compute_row(scene, alpha, all_betas(first:last), damped, lines(first:last), statuses(first:last), &
-                  plan, beta_texts(first:last))
-            end do
-            !$omp end parallel do
+            call compute_row_in_chunks(scene, alpha, all_betas, damped, lines, statuses, beta_texts)
             call finish_row(i, alpha, lines, statuses)
             if (stopped) exit
          end do
@@ -423,8 +441,14 @@ contains
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
       type(hill_model_t) :: row
+      real(wp), allocatable :: per_second
+      logical :: elastic
       logical :: failed(size(betas)), inaccurate(size(betas))
       integer :: j
+      ! ω/π turns a rate per unit τ into a rate per second; left unallocated (an absent
+      ! optional argument of chart_line: no mu_per_s column) when the scene does not know ω
+      if (scene%physical) per_second = scene%pendulum%omega/pi
+      elastic = scene%model == model_elastic
       row = hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon)
       call monodromy_trace_batch(row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate)
       alpha_text = format_es(alpha, 16)
@@ -434,23 +458,130 @@ contains
          if (failed(j)) then
             if (present(beta_texts)) then
                lines(j) = failed_chart_line(alpha, betas(j), damped, in_physical_domain(alpha, betas(j)), &
-                                            status_failed, alpha_text, beta_texts(j))
+                                            status_failed, alpha_text, beta_texts(j), elastic, per_second)
             else
                lines(j) = failed_chart_line(alpha, betas(j), damped, in_physical_domain(alpha, betas(j)), &
-                                            status_failed, alpha_text)
+                                            status_failed, alpha_text, elastic=elastic, per_second=per_second)
             end if
             cycle
          end if
-         f = floquet_from_trace(traces(j), scene%epsilon)
+         f = floquet_from_trace(traces(j), scene%epsilon, scene%method%tolerance)
          if (present(beta_texts)) then
             lines(j) = chart_line(alpha, betas(j), f, damped, in_physical_domain(alpha, betas(j)), statuses(j), &
-                                  alpha_text, beta_texts(j))
+                                  alpha_text, beta_texts(j), elastic=elastic, per_second=per_second)
          else
             lines(j) = chart_line(alpha, betas(j), f, damped, in_physical_domain(alpha, betas(j)), statuses(j), &
-                                  alpha_text)
+                                  alpha_text, elastic=elastic, per_second=per_second)
          end if
       end do
    end subroutine compute_row
+
+   !> A chart computes whole rows in parallel when it has enough of them, else the
+   !> chunks of each row in parallel.
+   logical function rows_in_parallel(scene)
+      type(scene_t), intent(in) :: scene
+      rows_in_parallel = scene%chart%n_alpha >= 4*max_threads()
+   end function rows_in_parallel
+
+   !> `compute_row` on a whole row, split into chunks computed in parallel that share
+   !> the meshes prepared for the row.
+   subroutine compute_row_in_chunks(scene, alpha, betas, damped, lines, statuses, beta_texts)
+      type(scene_t), intent(in) :: scene
+      real(wp), intent(in) :: alpha, betas(:)
+      logical, intent(in) :: damped
+      character(len=*), intent(out) :: lines(:)
+      integer, intent(out) :: statuses(:)
+      character(len=23), intent(in) :: beta_texts(:)
+      type(batch_plan_t) :: plan
+      integer :: c, chunk, n_chunks, first, last, n
+      n = size(betas)
+      chunk = max(16, n/(8*max_threads()))
+      n_chunks = (n + chunk - 1)/chunk
+      call prepare_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), betas, scene%method, plan)
+      !$omp parallel do schedule(dynamic) default(shared) private(c, first, last)
+      do c = 1, n_chunks
+         first = (c - 1)*chunk + 1
+         last = min(n, c*chunk)
+         call compute_row(scene, alpha, betas(first:last), damped, lines(first:last), statuses(first:last), &
+            plan, beta_texts(first:last))
+      end do
+      !$omp end parallel do
+   end subroutine compute_row_in_chunks
+
+   !> Lines of row `i` of a chart scene (α = the i-th grid value, all β), computed exactly as
+   !> the chart task computes them, so that a driver computing rows elsewhere writes the
+   !> same file.
+   subroutine chart_row(scene, i, lines, statuses)
+      type(scene_t), intent(in) :: scene  !! a chart scene
+      integer, intent(in) :: i            !! row index, 1 … n_alpha
+      character(len=*), intent(out) :: lines(:)  !! n_beta lines of `chart_line_length` characters
+      integer, intent(out) :: statuses(:)  !! per point: status_ok, status_roundoff or status_failed
+      real(wp), allocatable :: betas(:)
+      character(len=23), allocatable :: beta_texts(:)
+      real(wp) :: alpha
+      integer :: j, n_beta
+      n_beta = scene%chart%n_beta
+      betas = [(grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j), j=1, n_beta)]
+      allocate (beta_texts(n_beta))
+      do j = 1, n_beta
+         beta_texts(j) = format_es(betas(j), 16)
+      end do
+      alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, scene%chart%n_alpha, i)
+      if (rows_in_parallel(scene)) then
+         call compute_row(scene, alpha, betas, scene%epsilon > 0.0_wp, lines, statuses, beta_texts=beta_texts)
+      else
+         call compute_row_in_chunks(scene, alpha, betas, scene%epsilon > 0.0_wp, lines, statuses, beta_texts)
+      end if
+   end subroutine chart_row
+
+   !> Lines of the points `first` … `last` of a points scene (in parallel); a failed point
+   !> gets its placeholder line.
+   subroutine compute_points(scene, first, last, lines, statuses)
+      type(scene_t), intent(in) :: scene  !! a points scene
+      integer, intent(in) :: first, last  !! range of point indices
+      character(len=*), intent(out) :: lines(first:)  !! one chart line per point
+      integer, intent(out) :: statuses(first:)  !! per point: status_ok, status_roundoff or status_failed
+      type(floquet_t) :: f
+      type(error_t), allocatable :: cause
+      real(wp), allocatable :: per_second
+      logical :: damped
+      integer :: k
+      ! ω/π turns a rate per unit τ into a rate per second; left unallocated (an absent
+      ! optional argument of chart_line: no mu_per_s column) when the scene does not know ω
+      if (scene%physical) per_second = scene%pendulum%omega/pi
+      damped = scene%epsilon > 0.0_wp
+      !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause)
+      do k = first, last
+         call evaluate_point(scene, scene%points(1, k), scene%points(2, k), f, cause, statuses(k))
+         if (statuses(k) == status_failed) then
+            lines(k) = failed_chart_line(scene%points(1, k), scene%points(2, k), damped, &
+                                         in_physical_domain(scene%points(1, k), scene%points(2, k)), status_failed, &
+                                         elastic=scene%model == model_elastic, per_second=per_second)
+         else
+            lines(k) = chart_line(scene%points(1, k), scene%points(2, k), f, damped, &
+                                  in_physical_domain(scene%points(1, k), scene%points(2, k)), statuses(k), &
+                                  elastic=scene%model == model_elastic, per_second=per_second)
+         end if
+      end do
+      !$omp end parallel do
+   end subroutine compute_points
+
+   !> A chart whose method cannot run at all (bad parameters) fails at its first point,
+   !> before anything is written; a point where the computation fails is written with
+   !> its status instead.
+   subroutine check_method_runs(scene, error)
+      type(scene_t), intent(in) :: scene  !! a chart scene
+      type(error_t), allocatable, intent(out) :: error  !! why the method cannot run; unallocated when it can
+      type(error_t), allocatable :: cause
+      type(floquet_t) :: f
+      real(wp) :: alpha, beta
+      alpha = scene%chart%alpha_min
+      beta = scene%chart%beta_min
+      call evaluate_point(scene, alpha, beta, f, cause)
+      if (allocated(cause)) then
+         if (cause%code == err_invalid_parameter) call point_error(scene, alpha, beta, cause, error)
+      end if
+   end subroutine check_method_runs
 
    !> The points task.
    subroutine run_points(scene, quiet, error)
@@ -459,8 +590,6 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(output_file_t) :: file
       type(progress_t) :: progress
-      type(floquet_t) :: f
-      type(error_t), allocatable :: cause
       character(len=chart_line_length), allocatable :: lines(:)
       integer, allocatable :: statuses(:)
       logical :: damped
@@ -473,22 +602,11 @@ contains
       allocate (lines(n), statuses(n))
       statuses = status_ok
       call progress_begin(progress, int(n, int64), quiet)
-      !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause)
-      do k = 1, n
-         call evaluate_point(scene, scene%points(1, k), scene%points(2, k), f, cause, statuses(k))
-         if (statuses(k) == status_failed) then
-            lines(k) = failed_chart_line(scene%points(1, k), scene%points(2, k), damped, &
-                                         in_physical_domain(scene%points(1, k), scene%points(2, k)), status_failed)
-         else
-            lines(k) = chart_line(scene%points(1, k), scene%points(2, k), f, damped, &
-                                  in_physical_domain(scene%points(1, k), scene%points(2, k)), statuses(k))
-         end if
-      end do
-      !$omp end parallel do
+      call compute_points(scene, 1, n, lines, statuses)
       call progress_update(progress, int(n, int64))
       call progress_end(progress)
       call write_header(file, chart_header(scene, .not. all(in_physical_domain(scene%points(1, :), &
-         scene%points(2, :)))), chart_columns(damped), error)
+         scene%points(2, :)))), chart_columns(damped, scene%model == model_elastic, scene%physical), error)
       do k = 1, n
          if (allocated(error)) exit
          call write_text(file, trim(lines(k)), error)
@@ -562,10 +680,11 @@ contains
       call commit_output(file, error)
    end subroutine run_coefficient
 
+   !> Start reporting the progress of a run of `total` points (nothing when quiet).
    subroutine progress_begin(progress, total, quiet)
-      type(progress_t), intent(out) :: progress
-      integer(int64), intent(in) :: total
-      logical, intent(in) :: quiet
+      type(progress_t), intent(out) :: progress  !! the progress state
+      integer(int64), intent(in) :: total  !! points to compute
+      logical, intent(in) :: quiet  !! no progress on stderr
       progress%enabled = .not. quiet
       progress%total = total
       call system_clock(progress%start, progress%ticks)
@@ -576,8 +695,8 @@ contains
    !> Report `done` of `total` points: percentage, rate and time left, once the run
    !> has taken a second; redrawn in place on a terminal, a line every 5 s otherwise.
    subroutine progress_update(progress, done)
-      type(progress_t), intent(inout) :: progress
-      integer(int64), intent(in) :: done
+      type(progress_t), intent(inout) :: progress  !! the progress state
+      integer(int64), intent(in) :: done  !! points computed so far
       integer(int64) :: now
       real(wp) :: elapsed, since_last, rate, left, interval
       character(len=160) :: text
@@ -605,16 +724,17 @@ contains
       progress%last = now
    end subroutine progress_update
 
+   !> End the progress display (a final new line on a terminal).
    subroutine progress_end(progress)
-      type(progress_t), intent(in) :: progress
+      type(progress_t), intent(in) :: progress  !! the progress state
       if (progress%shown .and. progress%terminal) write (error_unit, '(a)') ""
    end subroutine progress_end
 
    !> Say on stderr (even when quiet: it qualifies the results) how many points could only
    !> be computed to the round-off level of double precision, not to the tolerance.
    subroutine warn_inaccurate(scene, n, first)
-      type(scene_t), intent(in) :: scene
-      integer(int64), intent(in) :: n
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      integer(int64), intent(in) :: n  !! number of round-off limited points
       real(wp), intent(in) :: first(2)  !! alpha, beta of the first such point
       character(len=32) :: count_text
       if (n == 0) return

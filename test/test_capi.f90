@@ -7,7 +7,12 @@ module test_capi
    use hillstab_monodromy, only: trace_segmented, method_segments, method_formula
    use hillstab_formulas, only: trace_two_segment_paper
    use hillstab_capi
-   use hillstab_legacy, only: hstrace, hsfloq
+   use hillstab_error, only: error_t, err_invalid_parameter, err_accuracy
+   use hillstab_coefficient, only: check_model
+   use hillstab_monodromy, only: method_auto
+   use hillstab_legacy, only: hstrace, hsfloq, hserrm
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   !$ use omp_lib, only: omp_get_thread_num, omp_get_num_threads
    use hillstab_testing
    implicit none
    private
@@ -20,7 +25,12 @@ contains
       suite = new_testsuite("capi", [ &
          new_unittest("c_trace_matches_library", c_trace_matches_library), &
          new_unittest("c_errors", c_errors), &
-         new_unittest("legacy_wrappers", legacy_wrappers)])
+         new_unittest("c_last_error", c_last_error), &
+         new_unittest("c_last_error_per_thread", c_last_error_per_thread), &
+         new_unittest("legacy_wrappers", legacy_wrappers), &
+         new_unittest("legacy_messages", legacy_messages), &
+         new_unittest("legacy_roundoff_limited", legacy_roundoff_limited), &
+         new_unittest("legacy_invalid_arguments", legacy_invalid_arguments)])
    end function collect_capi
 
    subroutine c_trace_matches_library(ctx)
@@ -59,6 +69,143 @@ contains
       call hillstab_c_error_message(status, buffer, size(buffer, kind=c_size_t))
       call check(ctx, any(buffer == c_null_char) .and. buffer(1) /= c_null_char, "message is a C string")
    end subroutine c_errors
+
+   !> The C text of a buffer up to its NUL.
+   function c_text(buffer) result(text)
+      character(kind=c_char), intent(in) :: buffer(:)
+      character(len=:), allocatable :: text
+      integer :: i
+      text = ""
+      do i = 1, size(buffer)
+         if (buffer(i) == c_null_char) exit
+         text = text//buffer(i)
+      end do
+   end function c_text
+
+   !> The message the Fortran API gives for α = 10.
+   function fortran_message() result(text)
+      character(len=:), allocatable :: text
+      type(error_t), allocatable :: error
+      call check_model(hill_model_t(model_elastic, 10.0_wp, 2.47_wp, 0.0_wp), error)
+      text = error%message
+   end function fortran_message
+
+   subroutine c_last_error(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(c_double) :: s, log_abs
+      integer(c_int) :: overflow, status, code
+      character(kind=c_char) :: buffer(256), short(8)
+      character(len=:), allocatable :: expected
+      expected = fortran_message()
+      status = hillstab_c_trace(1_c_int, 10.0_c_double, 2.47_c_double, 0.0_c_double, int(method_formula, c_int), &
+         2_c_int, 1_c_int, 1.0e-10_c_double, s, log_abs, overflow)
+      code = hillstab_c_last_error(buffer, size(buffer, kind=c_size_t))
+      call check(ctx, code == status .and. status == err_invalid_parameter, "the failed call's status")
+      call check(ctx, c_text(buffer) == expected, "same text as the Fortran message: '"//c_text(buffer)//"'")
+      call check(ctx, index(c_text(buffer), "9.8696") > 0, "the message names the limit")
+      code = hillstab_c_last_error(short, size(short, kind=c_size_t))
+      call check(ctx, code == status .and. c_text(short) == expected(1:7), "cut to the buffer: "//c_text(short))
+      status = hillstab_c_coefficient(1_c_int, 4.0_c_double, 6.0_c_double, 0.0_c_double, 1.0_c_double, s)
+      code = hillstab_c_last_error(buffer, size(buffer, kind=c_size_t))
+      call check(ctx, code == 0 .and. c_text(buffer) == "", "a successful call clears the record")
+      status = hillstab_c_coefficient(1_c_int, 4.0_c_double, 6.0_c_double, -1.0_c_double, 1.0_c_double, s)
+      code = hillstab_c_last_error(buffer, size(buffer, kind=c_size_t))
+      call check(ctx, code == err_invalid_parameter .and. index(c_text(buffer), "epsilon") > 0, &
+         "hillstab_q records its failure too: "//c_text(buffer))
+   end subroutine c_last_error
+
+   !> One thread fails, the other succeeds; each then reads its own outcome.
+   subroutine c_last_error_per_thread(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer(c_int) :: codes(0:1), n_threads
+      character(len=256) :: texts(0:1)
+      codes = -1
+      texts = "unset"
+      n_threads = 1
+      !$omp parallel num_threads(2) default(none) shared(codes, texts, n_threads)
+      block
+         real(c_double) :: s, log_abs
+         integer(c_int) :: overflow, status
+         character(kind=c_char) :: buffer(256)
+         integer :: me
+         me = 0
+         !$ me = omp_get_thread_num()
+         !$ if (me == 0) n_threads = omp_get_num_threads()
+         status = hillstab_c_trace(1_c_int, merge(10.0_c_double, 3.7_c_double, me == 0), 2.47_c_double, &
+            0.0_c_double, int(method_formula, c_int), 2_c_int, 1_c_int, 1.0e-10_c_double, s, log_abs, overflow)
+         !$omp barrier
+         if (me <= 1) then
+            codes(me) = hillstab_c_last_error(buffer, size(buffer, kind=c_size_t))
+            texts(me) = c_text(buffer)
+         end if
+      end block
+      !$omp end parallel
+      call check(ctx, codes(0) == err_invalid_parameter .and. trim(texts(0)) == fortran_message(), &
+         "the failing thread reads its own failure")
+      if (n_threads >= 2) then
+         call check(ctx, codes(1) == 0 .and. texts(1) == "", "the other thread reads its own success")
+      end if
+   end subroutine c_last_error_per_thread
+
+   subroutine legacy_messages(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: s, mu
+      integer :: info, istab
+      character(len=200) :: msg
+      call hstrace(1, 10.0_wp, 2.47_wp, 0.0_wp, method_formula, 2, 1, 1.0e-10_wp, s, info)
+      call hserrm(msg)
+      call check(ctx, info == err_invalid_parameter .and. trim(msg) == fortran_message(), &
+         "HSERRM gives the Fortran message: '"//trim(msg)//"'")
+      call hsfloq(1, 3.7_wp, 2.47_wp, 0.0_wp, method_formula, 2, 1, 1.0e-10_wp, s, mu, istab, info)
+      call hserrm(msg)
+      call check(ctx, info == 0 .and. msg == "", "blank after a successful call")
+      call hsfloq(1, 3.7_wp, 2.47_wp, 0.0_wp, 9, 2, 1, 1.0e-10_wp, s, mu, istab, info)
+      call hserrm(msg)
+      call check(ctx, info == err_invalid_parameter .and. index(msg, "method") > 0, "unknown method: "//trim(msg))
+   end subroutine legacy_messages
+
+   !> β = 0 near α = π² has S = 2 exactly, but double precision cannot reach 1e-14 there:
+   !> INFO = 7 with the best value, not S = 0.
+   subroutine legacy_roundoff_limited(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: s, mu
+      integer :: info, istab
+      call hstrace(1, 9.86_wp, 0.0_wp, 0.0_wp, method_auto, 2, 1, 1.0e-14_wp, s, info)
+      call check(ctx, info == err_accuracy, "INFO = 7")
+      call check(ctx, s, 2.0_wp, abs=1.0e-8_wp)
+      call hsfloq(1, 9.86_wp, 0.0_wp, 0.0_wp, method_auto, 2, 1, 1.0e-14_wp, s, mu, istab, info)
+      call check(ctx, info == err_accuracy, "INFO = 7")
+      call check(ctx, s, 2.0_wp, abs=1.0e-8_wp)
+      call check(ctx, mu, 0.0_wp, abs=1.0e-4_wp)
+   end subroutine legacy_roundoff_limited
+
+   !> Every invalid argument the README lists gives INFO = 1 and a message naming it.
+   subroutine legacy_invalid_arguments(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: s, nan
+      integer :: info
+      character(len=200) :: msg
+      nan = ieee_value(0.0_wp, ieee_quiet_nan)
+      call hstrace(3, 3.7_wp, 2.47_wp, 0.0_wp, method_auto, 2, 1, 1.0e-10_wp, s, info)
+      call hserrm(msg)
+      call check(ctx, info == 1 .and. index(msg, "model") > 0, "MODEL = 3: "//trim(msg))
+      call hstrace(1, 3.7_wp, 2.47_wp, -1.0_wp, method_auto, 2, 1, 1.0e-10_wp, s, info)
+      call hserrm(msg)
+      call check(ctx, info == 1 .and. index(msg, "epsilon") > 0, "EPS < 0: "//trim(msg))
+      call hstrace(1, 3.7_wp, 2.47_wp, 0.0_wp, method_segments, 0, 1, 1.0e-10_wp, s, info)
+      call hserrm(msg)
+      call check(ctx, info == 1, "NSEG = 0: "//trim(msg))
+      call hstrace(1, 3.7_wp, 2.47_wp, 0.0_wp, method_segments, 8, 4, 1.0e-10_wp, s, info)
+      call hserrm(msg)
+      call check(ctx, info == 1 .and. index(msg, "sampling") > 0, "ISAMP = 4: "//trim(msg))
+      call hstrace(1, 3.7_wp, 2.47_wp, 0.0_wp, method_auto, 2, 1, 0.0_wp, s, info)
+      call hserrm(msg)
+      call check(ctx, info == 1, "TOL = 0: "//trim(msg))
+      call hstrace(1, 3.7_wp, nan, 0.0_wp, method_auto, 2, 1, 1.0e-10_wp, s, info)
+      call hserrm(msg)
+      call check(ctx, info == 1 .and. index(msg, "finite") > 0, "BETA = NaN: "//trim(msg))
+      call check(ctx, s == 0.0_wp, "S = 0 on error")
+   end subroutine legacy_invalid_arguments
 
    subroutine legacy_wrappers(ctx)
       type(test_context_t), intent(inout) :: ctx

@@ -17,7 +17,8 @@ contains
          new_unittest("vieta_relations", vieta_relations), &
          new_unittest("exponent_and_rotation", exponent_and_rotation), &
          new_unittest("overflowed_trace", overflowed_trace), &
-         new_unittest("damped_criterion", damped_criterion)])
+         new_unittest("damped_criterion", damped_criterion), &
+         new_unittest("marginal_verdicts", marginal_verdicts)])
    end function collect_floquet
 
    !> λ₁ + λ₂ = e^{−ε} S and λ₁ λ₂ = e^{−2ε} for the multipliers of x.
@@ -79,4 +80,33 @@ contains
       f = floquet_from_value(1.0_wp, 0.5_wp)
       call check(ctx, f%exponent, -0.25_wp, rel=1.0e-15_wp)
    end subroutine damped_criterion
+   !> Marginal: |S| within max(estimate, tolerance) max(1, |S|) of 2 cosh ε; never without an
+   !> estimate (formula, segments) or on overflow.
+   subroutine marginal_verdicts(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(floquet_t) :: f
+      ! alpha = 9.86, beta = 0 at tolerance 1e-12: S = 2.0000000004 with an estimate 1e-9
+      f = floquet_from_trace(trace_t(2.0000000004_wp, log(2.0000000004_wp), .false., 1.0e-9_wp), 0.0_wp, 1.0e-12_wp)
+      call check(ctx, f%marginal .and. .not. f%stable, "S = 2 + 4e-10, estimate 1e-9: marginal")
+      f = floquet_from_trace(trace_t(-1.9999999996_wp, log(1.9999999996_wp), .false., 1.0e-9_wp), 0.0_wp)
+      call check(ctx, f%marginal .and. f%stable, "S = -2 + 4e-10: marginal")
+      f = floquet_from_trace(trace_t(2.0000001_wp, log(2.0000001_wp), .false., 1.0e-9_wp), 0.0_wp, 1.0e-12_wp)
+      call check(ctx, .not. f%marginal .and. .not. f%stable, "S = 2 + 1e-7: decided")
+      ! the tolerance widens the bound when the estimate is smaller
+      f = floquet_from_trace(trace_t(1.9999999999995_wp, log(1.9999999999995_wp), .false., 1.0e-14_wp), 0.0_wp, &
+                             1.0e-12_wp)
+      call check(ctx, f%marginal, "within the tolerance of 2")
+      f = floquet_from_trace(trace_t(1.9999999999995_wp, log(1.9999999999995_wp), .false., 1.0e-14_wp), 0.0_wp)
+      call check(ctx, .not. f%marginal, "beyond the estimate alone")
+      f = floquet_from_trace(trace_t(2.0000000004_wp, log(2.0000000004_wp), .false., -1.0_wp), 0.0_wp, 1.0e-8_wp)
+      call check(ctx, .not. f%marginal, "no estimate: never marginal")
+      ! damped: the threshold is 2 cosh(epsilon)
+      f = floquet_from_trace(trace_t(2.0_wp*cosh(0.5_wp) + 1.0e-11_wp, log(2.0_wp*cosh(0.5_wp)), .false., 1.0e-10_wp), &
+                             0.5_wp)
+      call check(ctx, f%marginal, "damped threshold 2 cosh(eps)")
+      f = floquet_from_trace(trace_t(2.0_wp + 1.0e-11_wp, log(2.0_wp), .false., 1.0e-10_wp), 0.5_wp)
+      call check(ctx, .not. f%marginal .and. f%stable, "damped: |S1| = 2 is well inside")
+      f = floquet_from_trace(trace_t(huge(1.0_wp), 1500.0_wp, .true., 1.0e-10_wp), 0.0_wp)
+      call check(ctx, .not. f%marginal, "overflow: not marginal")
+   end subroutine marginal_verdicts
 end module test_floquet

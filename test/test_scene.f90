@@ -291,7 +291,7 @@ contains
          bad_case_t(sp, "points", "missing"), &
          bad_case_t(s//"task='coefficient' / &chart /", "coefficient", "missing"), &
          bad_case_t(s//"task='chrt' / &chart /", "scene", "task"), &
-         bad_case_t(s//"task='boundaries' / &chart /", "scene", "task"), &
+         bad_case_t(s//"task='boundaries', epsilon=0.5 / &chart /", "scene", "epsilon"), &
          bad_case_t(s//"model='spring' / &chart /", "scene", "model"), &
          bad_case_t("&scene output='@OUT@', method='euler' / &chart /", "scene", "method"), &
          bad_case_t(s//"sampling='left' / &chart /", "scene", "sampling"), &
@@ -322,7 +322,21 @@ contains
          bad_case_t(sp//"&points file='@DIR@_badline.dat' /", "points", "file"), &
          bad_case_t(sp//"&points file='@DIR@_nan.dat' /", "points", "file"), &
          bad_case_t(sp//"&points file='@DIR@_domain.dat' /", "points", "file"), &
-         bad_case_t(sp//"&points file='@DIR@_empty.dat' /", "points", "file")]
+         bad_case_t(sp//"&points file='@DIR@_empty.dat' /", "points", "file"), &
+         bad_case_t(s//"epsilon=1 / &chart / &physical omega=3, kappa=1 /", "physical", "epsilon"), &
+         bad_case_t(sp//"&points file='@DIR@_none.dat' / &physical omega=3, r0=1, a=0.5 /", "points", "file"), &
+         bad_case_t(sp//"&physical omega=3, r0=1, a=5 /", "physical", "a"), &
+         bad_case_t(sp//"&physical r0=1, a=0.5 /", "physical", "omega"), &
+         bad_case_t(sp//"&physical omega=3, a=0.5 /", "physical", "r0"), &
+         bad_case_t(sp//"&physical omega=3, r0=0, a=0.5 /", "physical", "r0"), &
+         bad_case_t(sp//"&physical omega=3, r0=1, a=0.5, kappa=-1 /", "physical", "kappa"), &
+         bad_case_t(s//"/ &chart / &physical omega=3, r0=1, a=0.5 /", "physical", "a"), &
+         bad_case_t(s//"/ &chart / &physical omega=-3 /", "physical", "omega"), &
+         bad_case_t(s//"/ &chart / &physical omega=3, k=2 /", "physical", "k"), &
+         bad_case_t(s//"task='coefficient' / &coefficient beta=2 / &physical omega=3, r0=1, a=0.5 /", &
+                    "coefficient", "beta"), &
+         bad_case_t(s//"&chart n_alpha=3 /", "scene", "not closed: no '/' before '&chart'"), &
+         bad_case_t(s//"/ &chart n_alpha=3 ", "chart", "not closed: no '/' before the end")]
    end function bad_cases
 
    !> Write the points files the bad cases refer to (`<dir>_badline.dat`, ...).

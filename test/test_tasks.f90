@@ -29,6 +29,8 @@ contains
          new_unittest("roundoff_limited_points_written", roundoff_limited_points_written), &
          new_unittest("failed_points_written", failed_points_written), &
          new_unittest("repeat_from_output", repeat_from_output), &
+         new_unittest("physical_units", physical_units), &
+         new_unittest("domain_notes", domain_notes), &
          new_unittest("bad_input_touches_nothing", bad_input_touches_nothing), &
          new_unittest("unwritable_output", unwritable_output)])
    end function collect_tasks
@@ -349,6 +351,9 @@ contains
       call check(ctx, abs(rows(3, 1) - 2.0_wp) <= 0.5_wp*rows(10, 1), "error within the estimate, alpha 9.85")
       call check(ctx, abs(rows(3, 3) - 2.0_wp) <= 0.5_wp*rows(10, 3), "error within the estimate, alpha 9.86")
       call check(ctx, rows(11, 2) == 0.0_wp .and. rows(11, 4) == 0.0_wp, "status 0 at beta = 1")
+      ! the verdict at beta = 0 (exact S = 2) is marginal, not flipped by the round-off in S
+      call check(ctx, rows(4, 1) == 0.5_wp .and. rows(4, 3) == 0.5_wp, "marginal (stable = 0.5) at beta = 0")
+      call check(ctx, rows(4, 2) == 0.0_wp .and. rows(4, 4) == 0.0_wp, "unstable at beta = 1")
       call check(ctx, rows(10, 2) <= 1.0e-12_wp .and. rows(10, 2) >= 0.0_wp .and. rows(10, 4) <= 1.0e-12_wp &
                  .and. rows(10, 4) >= 0.0_wp, "estimate within the tolerance at beta = 1")
       call delete_file(written)
@@ -434,8 +439,9 @@ contains
       call check(ctx, .not. allocated(error), "chart runs")
       if (allocated(error)) return
       lines = read_lines(written)
-      call data_rows(lines, 11, rows, n_blank, numeric)
-      call check(ctx, numeric .and. size(rows, 2) == 2, "2 rows")
+      ! the Mathieu model's files have no physical column
+      call data_rows(lines, 10, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 2, "2 rows of 10 numbers")
       if (size(rows, 2) /= 2) return
       call check(ctx, rows(3, 1), 1.0e300_wp, rel=1.0e-15_wp, message="S clamped")
       call check(ctx, rows(8, 1) == 1.0_wp .and. rows(8, 2) == 0.0_wp, "overflow flags")
@@ -484,6 +490,114 @@ contains
       call check(ctx, .not. any(index(first, "leaves the physical domain") > 0), "inside the physical domain")
       call delete_file(written)
    end subroutine repeat_from_output
+
+   !> A points run in physical units: α and β from eqs. (4), (24) computed here, the
+   !> mu_per_s column = μ ω/π, the same file again from the output file, and the Mathieu
+   !> model given ν = α (1 − β/π²) of eq. (21).
+   subroutine physical_units(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out, again
+      character(len=1024), allocatable :: first(:), second(:)
+      real(wp), allocatable :: rows(:, :)
+      real(wp), parameter :: omega = 10.0_wp, g = 9.81_wp, r0 = 0.3_wp, amplitudes(3) = [0.05_wp, 0.2_wp, 0.3_wp]
+      real(wp) :: rho, beta
+      integer :: n_blank, k
+      logical :: numeric
+      out = scratch_prefix("physical")
+      call run_text_scene("physical", [ &
+         padded("&scene task = 'points', method = 'magnus6', tolerance = 1e-9, output = '"//out//"' /"), &
+         padded("&physical omega = 10, g = 9.81, r0 = 0.3, a = 0.05, 0.2, 0.3 /")], error, written)
+      call check(ctx, .not. allocated(error), "physical points run")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      first = read_lines(written)
+      call check(ctx, columns_line(first) == "alpha beta S stable lambda_max mu log10_abs_S overflow physical mu_per_s "// &
+                 "error_estimate status", &
+                 "columns: "//columns_line(first))
+      call data_rows(first, 12, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 3, "three rows of 12 numbers")
+      if (size(rows, 2) /= 3) return
+      rho = r0 + g/omega**2
+      beta = g*pi2/(rho*omega**2)
+      do k = 1, 3
+         call check(ctx, rows(1, k), amplitudes(k)*pi2/rho, rel=1.0e-14_wp, message="alpha = a pi^2/rho")
+         call check(ctx, rows(2, k), beta, rel=1.0e-14_wp, message="beta = g pi^2/(rho omega^2)")
+         call check(ctx, rows(10, k), rows(6, k)*omega/pi, rel=1.0e-9_wp, abs=1.0e-300_wp, message="mu_per_s")
+      end do
+      call check(ctx, rows(10, 3) > 0.0_wp, "a = 0.3 m grows")
+      call run_scene_file(written, .true., error, again)
+      call check(ctx, .not. allocated(error), "second run from the output file")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      second = read_lines(again)
+      call check(ctx, size(first) == size(second), "same number of lines")
+      if (size(first) /= size(second)) return
+      do k = 1, size(first)
+         if (index(first(k), "# scene file:") == 1) cycle
+         call check(ctx, first(k) == second(k), "line "//trim(first(k)))
+      end do
+      call delete_file(written)
+      ! Mathieu: the first column is nu, no physical column
+      call run_text_scene("physical_m", [ &
+         padded("&scene task = 'points', model = 'mathieu', method = 'magnus6', output = '"//out//"' /"), &
+         padded("&physical omega = 10, g = 9.81, r0 = 0.3, a = 0.05, 0.2, 0.3, kappa = 0.5 /")], error, written)
+      call check(ctx, .not. allocated(error), "physical Mathieu points run")
+      if (allocated(error)) return
+      first = read_lines(written)
+      call check(ctx, columns_line(first) == "alpha beta S stable lambda_max mu log10_abs_S overflow stable_paper "// &
+                 "mu_per_s error_estimate status", "Mathieu columns: "//columns_line(first))
+      call data_rows(first, 12, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 3, "three rows of 12 numbers")
+      if (size(rows, 2) /= 3) return
+      do k = 1, 3
+         call check(ctx, rows(1, k), amplitudes(k)*pi2/rho*(1.0_wp - beta/pi2), rel=1.0e-14_wp, message="nu")
+      end do
+      call check(ctx, any(index(first, "# &physical omega = 10.0, g = 9.81, kappa = 0.5, r0 = 0.3, a = 0.05, 0.2, "// &
+                 "0.3 /") == 1), "effective &physical in the header")
+      call check(ctx, .not. any(index(first, "epsilon = 0.") > 0 .and. index(first, "# &scene") == 1), &
+                 "no epsilon in &scene when kappa gives it")
+      call delete_file(written)
+   end subroutine physical_units
+
+   !> The physical-domain note only where it means something: not for the Mathieu model,
+   !> not for a chart starting at beta = 0 (no gravity); yes above beta = pi**2.
+   subroutine domain_notes(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out
+      character(len=1024), allocatable :: lines(:)
+      out = scratch_prefix("notes")
+      call run_text_scene("notes1", [ &
+         padded("&scene model = 'mathieu', method = 'formula', output = '"//out//"' /"), &
+         padded("&chart alpha_min = 0, alpha_max = 12, n_alpha = 2, beta_min = -2, beta_max = 12, n_beta = 2 /")], &
+         error, written)
+      call check(ctx, .not. allocated(error), "Mathieu chart")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call check(ctx, .not. any(index(lines, "physical") > 0), "no physical column or note for Mathieu")
+      call run_text_scene("notes2", [ &
+         padded("&scene method = 'formula', output = '"//out//"' /"), &
+         padded("&chart alpha_min = 0, alpha_max = 9, n_alpha = 2, beta_min = 0, beta_max = 9, n_beta = 2 /")], &
+         error, written)
+      call check(ctx, .not. allocated(error), "chart from beta = 0")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call check(ctx, .not. any(index(lines, "leaves the physical domain") > 0), "beta = 0 is physical (g = 0)")
+      call run_text_scene("notes3", [ &
+         padded("&scene method = 'formula', output = '"//out//"' /"), &
+         padded("&chart alpha_min = 0, alpha_max = 9, n_alpha = 2, beta_min = 0, beta_max = 10, n_beta = 2 /")], &
+         error, written)
+      call check(ctx, .not. allocated(error), "chart to beta = 10")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call check(ctx, any(index(lines, "leaves the physical domain") > 0), "beta > pi**2 leaves it")
+      call delete_file(written)
+   end subroutine domain_notes
 
    !> Every bad scene of the scene suite: an error, no output file created, an
    !> existing output file unchanged, no temporary file left.

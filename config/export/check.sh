@@ -1,22 +1,97 @@
 #!/usr/bin/env bash
-# Compile and run a C and a Fortran program against an installed hillstab (argument: prefix),
-# using only its pkg-config file.
+# Consumers of an installed hillstab (argument 1: the install prefix; 2: the route that
+# installed it, for messages). Checks that the prefix holds every installed file, then
+# builds and runs the examples of example/ against it:
+#   pkg-config: C (shared library, `--libs` without --static, and static), modern Fortran,
+#               fixed-form FORTRAN 77 compiled with -std=legacy and no USE (implicit interfaces);
+#   CMake find_package(hillstab): C, Fortran and FORTRAN 77, shared and static targets;
+#   the installed program: --version and --help.
+# Also checks that linking prints no executable-stack warning and that the shared library
+# and the program have a non-executable stack (GNU_STACK RW); HILLSTAB_STACK_CHECK=report
+# only reports an executable stack instead of failing.
 set -euo pipefail
 prefix=$1
-export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
+route=${2:-install}
+stack_check=${HILLSTAB_STACK_CHECK:-fail}
 here=$(cd "$(dirname "$0")" && pwd)
+examples=$(cd "$here/../../example" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-cc $(pkg-config --cflags hillstab) "$here/trace.c" -o "$work/trace_c" \
-   $(pkg-config --libs --static hillstab)
-"$work/trace_c"
-gfortran $(pkg-config --cflags hillstab) "$here/trace.f90" -o "$work/trace_f" \
-   $(pkg-config --libs --static hillstab)
-"$work/trace_f"
-echo "check-install: the installed library links from C and Fortran"
+say() { echo "check-install ($route): $*"; }
+die() { echo "check-install ($route): FAILED: $*" >&2; exit 1; }
+
+pc=$(find "$prefix" -name hillstab.pc -path '*/pkgconfig/*' | head -1)
+[ -n "$pc" ] || die "no hillstab.pc under $prefix"
+libdir=$(cd "$(dirname "$pc")/.." && pwd)
+for f in "$libdir/libhillstab.a" "$libdir/libhillstab.so" "$prefix/include/hillstab.h" \
+         "$libdir/cmake/hillstab/hillstab-config.cmake" "$prefix/bin/hillstab"; do
+   [ -e "$f" ] || die "missing $f"
+done
+ls "$prefix"/include/hillstab/*/hillstab.mod "$prefix"/include/hillstab/*/hillstab_legacy.mod >/dev/null \
+   || die "missing .mod files under $prefix/include/hillstab/"
+say "installed: static and shared library, .mod files, hillstab.h, hillstab.pc, CMake config, bin/hillstab"
+
+needed=$(readelf -dW "$libdir/libhillstab.so" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p' | tr '\n' ' ')
+for dep in libgsl libgfortran libgomp; do
+   case " $needed" in *" $dep"*) ;; *) die "libhillstab.so does not record $dep (NEEDED: $needed)";; esac
+done
+
+export PKG_CONFIG_PATH="$libdir/pkgconfig"
+export LD_LIBRARY_PATH="$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+cflags=$(pkg-config --cflags hillstab)
+libs=$(pkg-config --libs hillstab)
+# with both libraries in libdir, -lhillstab picks the shared one: ask for the archive
+static_libs="-Wl,-Bstatic -lhillstab -Wl,-Bdynamic $(pkg-config --libs --static hillstab | sed 's/-lhillstab//')"
+# build: compiler, source, output, link flags...; fails on an executable-stack warning
+build() {
+   local compiler=$1 source=$2 out=$3
+   shift 3
+   "$compiler" $cflags "$source" -o "$work/$out" "$@" 2> "$work/$out.log" || { cat "$work/$out.log" >&2; die "cannot build $out"; }
+   if grep -q "executable stack" "$work/$out.log"; then
+      [ "$stack_check" = fail ] && { cat "$work/$out.log" >&2; die "$out: linking warns about an executable stack"; }
+      say "REPORT: linking $out warns about an executable stack"
+   fi
+}
+build cc "$examples/c/trace.c" trace_c $libs
+build cc "$examples/c/trace.c" trace_c_static $static_libs
+build gfortran "$examples/fortran/trace.f90" trace_f $libs
+build gfortran "$examples/f77/trace.f" trace_f77 -std=legacy $libs
+build gfortran "$examples/f77/trace.f" trace_f77_static -std=legacy $static_libs
+for p in trace_c trace_c_static trace_f trace_f77 trace_f77_static; do
+   "$work/$p" > "$work/$p.out" || { cat "$work/$p.out"; die "$p failed"; }
+done
+cat "$work/trace_c.out" "$work/trace_f.out" "$work/trace_f77.out"
+say "pkg-config: C, Fortran and fixed-form FORTRAN 77 link (shared: '$libs'; static too) and run"
+
 if command -v cmake >/dev/null 2>&1; then
-   cmake -S "$here" -B "$work/cmake" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
-   cmake --build "$work/cmake" >/dev/null
-   "$work/cmake/trace_c" && "$work/cmake/trace_f"
-   echo "check-install: find_package(hillstab) works from CMake"
+   cmake -S "$here" -B "$work/cmake" -DCMAKE_PREFIX_PATH="$prefix" >"$work/cmake.log" 2>&1 \
+      && cmake --build "$work/cmake" >>"$work/cmake.log" 2>&1 || { cat "$work/cmake.log" >&2; die "CMake consumer"; }
+   for p in trace_c trace_c_static trace_f trace_f77; do
+      "$work/cmake/$p" >/dev/null || die "CMake-built $p failed"
+   done
+   say "CMake find_package(hillstab): C, Fortran, FORTRAN 77 (shared and static targets) link and run"
+else
+   say "cmake not found: find_package not checked"
 fi
+
+"$prefix/bin/hillstab" --version | grep -q "^hillstab " || die "bin/hillstab --version"
+"$prefix/bin/hillstab" --help >/dev/null || die "bin/hillstab --help"
+tasks=$("$prefix/bin/hillstab" --help | sed -n 's/^Tasks: //p' | tr -d ',')
+[ -n "$tasks" ] || die "bin/hillstab --help lists no tasks"
+echo "3.7 2.47" > "$work/points.dat"
+for task in $tasks; do
+   "$prefix/bin/hillstab" --template "$task" > "$work/template_$task.nml" || die "hillstab --template $task"
+   (cd "$work" && "$prefix/bin/hillstab" --quiet "template_$task.nml") || die "the template of task $task does not run"
+   ls "$work"/template_"$task"_*.dat >/dev/null 2>&1 || die "the template of task $task wrote no file"
+done
+say "bin/hillstab runs the template of every task ($tasks)"
+
+for f in "$libdir/libhillstab.so" "$prefix/bin/hillstab"; do
+   flags=$(readelf -lW "$f" | awk '$1 == "GNU_STACK" {print $7}')
+   if [ "$flags" != "RW" ]; then
+      [ "$stack_check" = fail ] && die "$f has an executable stack (GNU_STACK $flags)"
+      say "REPORT: $f has an executable stack (GNU_STACK $flags); HILLSTAB_STACK_CHECK=report, not failing"
+   else
+      say "$(basename "$f"): non-executable stack (GNU_STACK RW)"
+   fi
+done

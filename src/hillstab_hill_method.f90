@@ -1,0 +1,547 @@
+!> Transition curves by Hill's method: for fixed α, β is a boundary of the stability
+!> chart (S = +2 or S = −2) exactly when it is an eigenvalue of the periodic
+!> (Fourier modes e^{inπτ}, S = +2) or antiperiodic (e^{i(n+½)πτ}, S = −2) problem
+!>
+!>     L x = −(1 − k cos πτ) x'' + α cos πτ x = β x,   k = α/π²   (elastic, eq. (25))
+!>     L x = −x'' + ν cos πτ x = β x                              (Mathieu, eq. (A1); k = 0, α ↔ ν)
+!>
+!> Q is even, so each problem splits into cosine-type (even) and sine-type (odd)
+!> solutions: four independent blocks. Their eigenvalues in each block, in
+!> ascending order, are the curves a₀, a₂, a₄, … (periodic even), b₂, b₄, …
+!> (periodic odd), a₁, a₃, … (antiperiodic even), b₁, b₃, … (antiperiodic odd) in
+!> the Mathieu naming; the instability tongue of order n ≥ 1 lies between a_n and
+!> b_n, and has zero width (coexistence of two periodic solutions) when they agree.
+!>
+!> ## Formulation (chosen by measurement, see the README)
+!> In the Fourier basis L is tridiagonal but not symmetric. Writing x = p z with
+!> p = 1 − k cos πτ > 0 turns L x = β x into the symmetric-definite pencil
+!>
+!>     A z = β P z,   A = P D P + α C P (pentadiagonal),   P = I − k C (tridiagonal, positive definite),
+!>
+!> D = diag(κ²) the matrix of −d², C that of cos πτ: A is symmetric because
+!> ⟨φ, −p(pz)''⟩ = ⟨(pφ)', (pz)'⟩. Truncation is then a Rayleigh–Ritz method,
+!> so the computed eigenvalues are upper bounds that decrease monotonically as
+!> modes are added. LAPACK's `dsbgv` (banded symmetric-definite) solves it in
+!> O(n²) operations and O(n) memory, but the direct pencil loses accuracy as
+!> ‖A‖‖P⁻¹‖ ~ n²π²/(1 − k); the code therefore solves the inverted pencil
+!>
+!>     P z = μ (A − σP) z,   β = σ + 1/μ,   σ = −|α| − 1 < every eigenvalue,
+!>
+!> in which A − σP is positive definite and the wanted small β are the largest,
+!> best-conditioned μ. Measured (README, "Transition curves"): at α = 9.86 with
+!> 1000+ modes the inverted pencil agrees with |S| = 2 by method auto to ~1e-12,
+!> while the nonsymmetric tridiagonal through `dgeev` and the direct pencil lose
+!> several digits and cost more (`dgeev` is O(n³)). Both alternatives are kept
+!> (`formulation_*`) for that measurement and for the tests.
+!>
+!> ## Truncation
+!> Eigenfunctions are analytic in the strip |Im πτ| < arccosh(1/k), so their
+!> Fourier coefficients decay like r^n, r = k/(1 + √(1 − k²)), and the Ritz values
+!> like r^{2n}: slowly as α → π² (r → 1). The number of modes starts from that
+!> estimate and grows by half until every eigenvalue below the top of the β window
+!> changes by less than the tolerance between two truncations.
+!>
+!>```fortran
+!> type(hill_boundary_t), allocatable :: curves(:)
+!> type(error_t), allocatable :: error
+!> call hill_boundaries(model_elastic, 5.0_wp, -2.0_wp, 40.0_wp, 1.0e-11_wp, curves, error)
+!> print *, curves%beta
+!>```
+module hillstab_hill_method
+   use hillstab_kinds, only: wp, pi, pi2
+   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_singular, err_accuracy
+   use hillstab_coefficient, only: model_elastic, model_mathieu
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   implicit none
+   private
+   public :: hill_boundary_t, hill_boundaries, hill_block_eigenvalues, hill_block_name
+   public :: block_periodic_even, block_periodic_odd, block_antiperiodic_even, block_antiperiodic_odd
+   public :: formulation_inverted_pencil, formulation_pencil, formulation_nonsymmetric
+   public :: hill_initial_modes, hill_max_modes, block_order, coexistence_threshold
+
+   !> Periodic, cosine-type: curves a₀, a₂, a₄, … (S = +2).
+   integer, parameter :: block_periodic_even = 1
+   !> Periodic, sine-type: curves b₂, b₄, … (S = +2).
+   integer, parameter :: block_periodic_odd = 2
+   !> Antiperiodic, cosine-type: curves a₁, a₃, … (S = −2).
+   integer, parameter :: block_antiperiodic_even = 3
+   !> Antiperiodic, sine-type: curves b₁, b₃, … (S = −2).
+   integer, parameter :: block_antiperiodic_odd = 4
+
+   !> P z = μ (A − σP) z by `dsbgv` (the default).
+   integer, parameter :: formulation_inverted_pencil = 1
+   !> A z = β P z by `dsbgv`.
+   integer, parameter :: formulation_pencil = 2
+   !> The nonsymmetric tridiagonal L by `dgeev`.
+   integer, parameter :: formulation_nonsymmetric = 3
+
+   !> Largest truncation (modes per block) tried before giving up.
+   integer, parameter :: hill_max_modes = 40000
+   !> Two curves of one order closer than this times tolerance·max(1, |β|) count as one
+   !> (zero-width tongue, coexistence).
+   real(wp), parameter :: coexistence_threshold = 100.0_wp
+
+   !> One point of a transition curve at the α of the call.
+   type :: hill_boundary_t
+      real(wp) :: beta = 0.0_wp        !! β on the curve
+      integer :: trace_sign = 2        !! +2 (periodic) or −2 (antiperiodic): S on the curve
+      integer :: order = 0             !! n of a_n / b_n
+      integer :: parity = 1            !! +1 even (a_n, cosine-type), −1 odd (b_n, sine-type)
+      integer :: modes = 0             !! modes of the block's truncation
+      real(wp) :: change = 0.0_wp      !! change between the last two truncations (error bound estimate)
+      logical :: coexistent = .false.  !! the other curve of this order coincides (zero-width tongue)
+   end type hill_boundary_t
+
+   interface
+      subroutine dsbgv(jobz, uplo, n, ka, kb, ab, ldab, bb, ldbb, w, z, ldz, work, info)
+         import :: wp
+         character, intent(in) :: jobz, uplo
+         integer, intent(in) :: n, ka, kb, ldab, ldbb, ldz
+         real(wp), intent(inout) :: ab(ldab, *), bb(ldbb, *)
+         real(wp), intent(out) :: w(*), z(ldz, *), work(*)
+         integer, intent(out) :: info
+      end subroutine dsbgv
+      subroutine dgeev(jobvl, jobvr, n, a, lda, wr, wi, vl, ldvl, vr, ldvr, work, lwork, info)
+         import :: wp
+         character, intent(in) :: jobvl, jobvr
+         integer, intent(in) :: n, lda, ldvl, ldvr, lwork
+         real(wp), intent(inout) :: a(lda, *)
+         real(wp), intent(out) :: wr(*), wi(*), vl(ldvl, *), vr(ldvr, *), work(*)
+         integer, intent(out) :: info
+      end subroutine dgeev
+   end interface
+
+contains
+
+   !> Short name of a block.
+   pure function hill_block_name(block) result(name)
+      integer, intent(in) :: block  !! one of the four even/odd, periodic/antiperiodic blocks
+      character(len=:), allocatable :: name
+      select case (block)
+      case (block_periodic_even); name = "periodic even (a_2m)"
+      case (block_periodic_odd); name = "periodic odd (b_2m)"
+      case (block_antiperiodic_even); name = "antiperiodic even (a_2m+1)"
+      case (block_antiperiodic_odd); name = "antiperiodic odd (b_2m+1)"
+      case default; name = "unknown"
+      end select
+   end function hill_block_name
+
+   !> Order n of the j-th eigenvalue (j = 1, 2, …) of a block.
+   elemental integer function block_order(block, j)
+      integer, intent(in) :: block, j  !! the block; index of the eigenvalue, ascending from 1
+      select case (block)
+      case (block_periodic_even); block_order = 2*(j - 1)
+      case (block_periodic_odd); block_order = 2*j
+      case default; block_order = 2*j - 1
+      end select
+   end function block_order
+
+   !> Number of modes to start from: enough for the eigenfunctions up to β_top and
+   !> for the geometric decay r^{2n} of the Ritz error to reach the tolerance.
+   pure integer function hill_initial_modes(kind, alpha, beta_top, tolerance) result(n)
+      integer, intent(in) :: kind  !! model kind (model_elastic or model_mathieu)
+      !> alpha; highest beta wanted; target error relative to max(1, |beta|)
+      real(wp), intent(in) :: alpha, beta_top, tolerance
+      real(wp) :: k, r, oscillation
+      oscillation = sqrt(max(beta_top, 0.0_wp) + abs(alpha))/pi
+      if (kind == model_elastic .and. alpha > 0.0_wp) then
+         k = alpha/pi2
+         r = k/(1.0_wp + sqrt((1.0_wp - k)*(1.0_wp + k)))
+         n = 8 + nint(oscillation) + ceiling(log(max(tolerance, 1.0e-16_wp))/(2.0_wp*log(r)))
+      else
+         n = 16 + 2*nint(oscillation)
+      end if
+      n = min(max(n, 12), hill_max_modes)
+   end function hill_initial_modes
+
+   !> (j + s)² for the Fourier index j of a block: κ_j = (j + s)π.
+   pure real(wp) function mode_t(block, j)
+      integer, intent(in) :: block, j
+      if (block == block_periodic_even .or. block == block_periodic_odd) then
+         mode_t = real(j, wp)**2
+      else
+         mode_t = (real(j, wp) + 0.5_wp)**2
+      end if
+   end function mode_t
+
+   !> α − kπ²t: the weight of cos πτ on mode t (elastic α(1 − t), exact at t = 1; Mathieu ν).
+   pure real(wp) function coupling(kind, alpha, t)
+      integer, intent(in) :: kind
+      real(wp), intent(in) :: alpha, t
+      if (kind == model_elastic) then
+         coupling = alpha*(1.0_wp - t)
+      else
+         coupling = alpha
+      end if
+   end function coupling
+
+   !> Entry (i, j) of A = P D P + α C P in the exponential basis e^{iκ_jτ}.
+   pure real(wp) function a_entry(kind, alpha, k, block, i, j) result(a)
+      integer, intent(in) :: kind, block, i, j
+      real(wp), intent(in) :: alpha, k
+      integer :: lo
+      lo = min(i, j)
+      select case (abs(i - j))
+      case (0)
+         a = pi2*mode_t(block, i) - 0.25_wp*k*(coupling(kind, alpha, mode_t(block, i - 1)) + &
+                                              coupling(kind, alpha, mode_t(block, i + 1)))
+      case (1)
+         a = 0.5_wp*(coupling(kind, alpha, mode_t(block, lo)) + coupling(kind, alpha, mode_t(block, lo + 1)) - alpha)
+      case (2)
+         a = -0.25_wp*k*coupling(kind, alpha, mode_t(block, lo + 1))
+      case default
+         a = 0.0_wp
+      end select
+   end function a_entry
+
+   !> Entry (i, j) of P = I − k C.
+   pure real(wp) function p_entry(k, i, j) result(p)
+      real(wp), intent(in) :: k
+      integer, intent(in) :: i, j
+      select case (abs(i - j))
+      case (0); p = 1.0_wp
+      case (1); p = -0.5_wp*k
+      case default; p = 0.0_wp
+      end select
+   end function p_entry
+
+   !> Entry (i, j) of the nonsymmetric L = D + C·diag(coupling)/… : L_ij = κ_i² δ_ij + ½(α − kκ_j²) for |i − j| = 1.
+   pure real(wp) function l_entry(kind, alpha, block, i, j) result(l)
+      integer, intent(in) :: kind, block, i, j
+      real(wp), intent(in) :: alpha
+      select case (abs(i - j))
+      case (0); l = pi2*mode_t(block, i)
+      case (1); l = 0.5_wp*coupling(kind, alpha, mode_t(block, j))
+      case default; l = 0.0_wp
+      end select
+   end function l_entry
+
+   !> Fourier index of basis function r (1-based) of a block and of its mirror, and the sign.
+   pure subroutine basis_index(block, r, i, mirror, sign)
+      integer, intent(in) :: block, r
+      integer, intent(out) :: i, mirror
+      real(wp), intent(out) :: sign
+      select case (block)
+      case (block_periodic_even)
+         i = r - 1; mirror = -i; sign = 1.0_wp
+      case (block_periodic_odd)
+         i = r; mirror = -i; sign = -1.0_wp
+      case (block_antiperiodic_even)
+         i = r - 1; mirror = -1 - i; sign = 1.0_wp
+      case default
+         i = r - 1; mirror = -1 - i; sign = -1.0_wp
+      end select
+   end subroutine basis_index
+
+   !> ⟨φ_r, M φ_s⟩ for the orthonormal symmetric basis φ_r = (e_i + sign e_mirror)/√2
+   !> (φ = e_0 for the periodic even constant), M given by `which`.
+   pure real(wp) function folded(which, kind, alpha, k, block, r, s) result(value)
+      integer, intent(in) :: which, kind, block, r, s
+      real(wp), intent(in) :: alpha, k
+      integer :: i, ip, j, jp
+      real(wp) :: si, sj, wi, wj
+      call basis_index(block, r, i, ip, si)
+      call basis_index(block, s, j, jp, sj)
+      if (i == ip) then
+         wi = 1.0_wp
+      else
+         wi = sqrt(0.5_wp)
+      end if
+      if (j == jp) then
+         wj = 1.0_wp
+      else
+         wj = sqrt(0.5_wp)
+      end if
+      value = element(i, j)
+      if (jp /= j) value = value + sj*element(i, jp)
+      if (ip /= i) then
+         value = value + si*element(ip, j)
+         if (jp /= j) value = value + si*sj*element(ip, jp)
+      end if
+      value = value*wi*wj
+   contains
+      pure real(wp) function element(a, b)
+         integer, intent(in) :: a, b
+         select case (which)
+         case (1); element = a_entry(kind, alpha, k, block, a, b)
+         case (2); element = p_entry(k, a, b)
+         case default; element = l_entry(kind, alpha, block, a, b)
+         end select
+      end function element
+   end function folded
+
+   !> All n eigenvalues, ascending, of the n-mode truncation of one block.
+   subroutine hill_block_eigenvalues(kind, alpha, block, n, values, error, formulation)
+      integer, intent(in) :: kind          !! model_elastic or model_mathieu
+      real(wp), intent(in) :: alpha        !! α (elastic, 0 ≤ α < π²) or ν (Mathieu)
+      integer, intent(in) :: block         !! block_* constant
+      integer, intent(in) :: n             !! number of modes
+      real(wp), allocatable, intent(out) :: values(:)  !! β, ascending
+      type(error_t), allocatable, intent(out) :: error  !! LAPACK failure; unallocated on success
+      integer, intent(in), optional :: formulation  !! formulation_* (default inverted pencil)
+      real(wp), allocatable :: ab(:, :), bb(:, :), w(:), work(:), h(:, :), wr(:), wi(:)
+      real(wp) :: k, sigma, z(1, 1)
+      integer :: form, r, d, info, lwork
+      character(len=160) :: buf
+      form = formulation_inverted_pencil
+      if (present(formulation)) form = formulation
+      allocate (values(0))
+      call check_parameters(kind, alpha, error)
+      if (allocated(error)) return
+      if (block < block_periodic_even .or. block > block_antiperiodic_odd .or. n < 1) then
+         call set_error(error, err_invalid_parameter, "Hill's method: unknown block or no modes")
+         return
+      end if
+      k = 0.0_wp
+      if (kind == model_elastic) k = alpha/pi2
+      sigma = -abs(alpha) - 1.0_wp
+      select case (form)
+      case (formulation_inverted_pencil, formulation_pencil)
+         ! upper band storage: ab(3 + r - s, s) = M(r, s) for s - 2 <= r <= s
+         allocate (ab(3, n), bb(3, n), w(n), work(3*n))
+         ab = 0.0_wp; bb = 0.0_wp
+         do r = 1, n
+            do d = 0, min(2, r - 1)
+               if (form == formulation_inverted_pencil) then
+                  ab(3 - d, r) = folded(2, kind, alpha, k, block, r - d, r)
+                  bb(3 - d, r) = folded(1, kind, alpha, k, block, r - d, r) - sigma*folded(2, kind, alpha, k, block, r - d, r)
+               else
+                  ab(3 - d, r) = folded(1, kind, alpha, k, block, r - d, r)
+                  bb(3 - d, r) = folded(2, kind, alpha, k, block, r - d, r)
+               end if
+            end do
+         end do
+         call dsbgv("N", "U", n, 2, 2, ab, 3, bb, 3, w, z, 1, work, info)
+         if (info /= 0) then
+            write (buf, '(a,i0,a,i0,a)') "Hill's method: LAPACK dsbgv failed (info = ", info, ", ", n, " modes)"
+            call set_error(error, err_singular, trim(buf))
+            return
+         end if
+         if (form == formulation_inverted_pencil) then
+            if (any(.not. (w > 0.0_wp))) then
+               call set_error(error, err_singular, "Hill's method: non-positive eigenvalue of the inverted pencil")
+               return
+            end if
+            values = sigma + 1.0_wp/w(n:1:-1)
+         else
+            values = w
+         end if
+      case default
+         allocate (h(n, n), wr(n), wi(n))
+         h = 0.0_wp
+         do r = 1, n
+            do d = max(1, r - 1), min(n, r + 1)
+               h(r, d) = folded(3, kind, alpha, k, block, r, d)
+            end do
+         end do
+         lwork = -1
+         allocate (work(1))
+         call dgeev("N", "N", n, h, n, wr, wi, z, 1, z, 1, work, lwork, info)
+         lwork = max(4*n, int(work(1)))
+         deallocate (work)
+         allocate (work(lwork))
+         call dgeev("N", "N", n, h, n, wr, wi, z, 1, z, 1, work, lwork, info)
+         if (info /= 0) then
+            write (buf, '(a,i0,a,i0,a)') "Hill's method: LAPACK dgeev failed (info = ", info, ", ", n, " modes)"
+            call set_error(error, err_singular, trim(buf))
+            return
+         end if
+         values = wr
+         call sort_ascending(values)
+      end select
+      if (.not. all(ieee_is_finite(values))) then
+         call set_error(error, err_singular, "Hill's method: non-finite eigenvalue")
+      end if
+   end subroutine hill_block_eigenvalues
+
+   subroutine check_parameters(kind, alpha, error)
+      integer, intent(in) :: kind
+      real(wp), intent(in) :: alpha
+      type(error_t), allocatable, intent(out) :: error
+      character(len=64) :: buf
+      if (.not. ieee_is_finite(alpha)) then
+         call set_error(error, err_invalid_parameter, "Hill's method: alpha must be finite")
+      else if (kind == model_elastic) then
+         if (alpha < 0.0_wp .or. .not. alpha < pi2) then
+            write (buf, '(es23.16)') alpha
+            call set_error(error, err_invalid_parameter, &
+               "Hill's method: the elastic model needs 0 <= alpha < pi**2, got alpha = "//trim(adjustl(buf)))
+         end if
+      else if (kind /= model_mathieu) then
+         call set_error(error, err_invalid_parameter, "Hill's method: unknown model kind")
+      end if
+   end subroutine check_parameters
+
+   !> Insertion sort (the arrays are short and nearly sorted).
+   pure subroutine sort_ascending(x)
+      real(wp), intent(inout) :: x(:)
+      integer :: i, j
+      real(wp) :: t
+      do i = 2, size(x)
+         t = x(i)
+         j = i - 1
+         do while (j >= 1)
+            if (x(j) <= t) exit
+            x(j + 1) = x(j)
+            j = j - 1
+         end do
+         x(j + 1) = t
+      end do
+   end subroutine sort_ascending
+
+   !> Every transition curve crossing β_min ≤ β ≤ β_max at this α, converged in
+   !> the truncation to `tolerance`·max(1, |β|), ordered by β; with the coexistence
+   !> of the two curves of each order decided (even when the partner lies outside).
+   subroutine hill_boundaries(kind, alpha, beta_min, beta_max, tolerance, curves, error, modes, formulation)
+      integer, intent(in) :: kind          !! model_elastic or model_mathieu
+      real(wp), intent(in) :: alpha        !! α (ν for the Mathieu model)
+      real(wp), intent(in) :: beta_min, beta_max  !! the β window
+      real(wp), intent(in) :: tolerance    !! convergence target on β, relative to max(1, |β|)
+      !> the transition curves crossing [beta_min, beta_max], by beta
+      type(hill_boundary_t), allocatable, intent(out) :: curves(:)
+      type(error_t), allocatable, intent(out) :: error  !! failure to converge or LAPACK failure; unallocated on success
+      integer, intent(out), optional :: modes(4)  !! final truncation of each block
+      integer, intent(in), optional :: formulation  !! formulation_* (default inverted pencil)
+      real(wp), allocatable :: values(:, :)   ! (j, block): converged eigenvalues at most up to the top
+      real(wp), allocatable :: changes(:, :)
+      integer :: counts(4), used(4), block, j, m, n_out, jp, other
+      type(hill_boundary_t), allocatable :: all(:)
+      real(wp), allocatable :: block_values(:), block_changes(:)
+      real(wp) :: top, partner
+      logical :: found
+      allocate (curves(0))
+      if (.not. (ieee_is_finite(beta_min) .and. ieee_is_finite(beta_max) .and. ieee_is_finite(tolerance))) then
+         call set_error(error, err_invalid_parameter, "Hill's method: beta window and tolerance must be finite")
+         return
+      end if
+      if (beta_min > beta_max .or. .not. tolerance > 0.0_wp) then
+         call set_error(error, err_invalid_parameter, "Hill's method: need beta_min <= beta_max and tolerance > 0")
+         return
+      end if
+      call check_parameters(kind, alpha, error)
+      if (allocated(error)) return
+      ! one order above the window too, so that every tongue reaching into it has both edges
+      top = beta_max + 1.0_wp + 0.25_wp*abs(beta_max)
+      counts = 0
+      allocate (values(0, 4), changes(0, 4))
+      do block = block_periodic_even, block_antiperiodic_odd
+         call converged_block(kind, alpha, block, top, tolerance, block_values, block_changes, used(block), error, &
+                              formulation)
+         if (allocated(error)) return
+         counts(block) = size(block_values)
+         if (counts(block) > size(values, 1)) call grow(values, changes, counts(block))
+         values(:counts(block), block) = block_values
+         changes(:counts(block), block) = block_changes
+      end do
+      if (present(modes)) modes = used
+      allocate (all(sum(counts)))
+      n_out = 0
+      do block = block_periodic_even, block_antiperiodic_odd
+         do j = 1, counts(block)
+            if (values(j, block) < beta_min .or. values(j, block) > beta_max) cycle
+            n_out = n_out + 1
+            all(n_out)%beta = values(j, block)
+            all(n_out)%trace_sign = merge(2, -2, block <= block_periodic_odd)
+            all(n_out)%order = block_order(block, j)
+            all(n_out)%parity = merge(1, -1, block == block_periodic_even .or. block == block_antiperiodic_even)
+            all(n_out)%modes = used(block)
+            all(n_out)%change = changes(j, block)
+            ! the partner of the same order in the other block of this kind
+            all(n_out)%coexistent = .false.
+            if (all(n_out)%order > 0) then
+               other = partner_block(block)
+               found = .false.
+               do jp = 1, counts(other)
+                  if (block_order(other, jp) == all(n_out)%order) then
+                     partner = values(jp, other)
+                     found = .true.
+                  end if
+               end do
+               if (found) all(n_out)%coexistent = abs(partner - all(n_out)%beta) <= &
+                  coexistence_threshold*tolerance*max(1.0_wp, abs(all(n_out)%beta))
+            end if
+         end do
+      end do
+      ! ascending β
+      curves = all(:n_out)
+      do j = 2, n_out
+         m = j
+         do while (m > 1)
+            if (curves(m - 1)%beta <= curves(m)%beta) exit
+            call swap(curves(m - 1), curves(m))
+            m = m - 1
+         end do
+      end do
+   contains
+      subroutine grow(v, c, rows)
+         real(wp), allocatable, intent(inout) :: v(:, :), c(:, :)
+         integer, intent(in) :: rows
+         real(wp), allocatable :: t(:, :), u(:, :)
+         allocate (t(rows, 4), u(rows, 4))
+         t = 0.0_wp; u = 0.0_wp
+         t(:size(v, 1), :) = v
+         u(:size(c, 1), :) = c
+         call move_alloc(t, v)
+         call move_alloc(u, c)
+      end subroutine grow
+      subroutine swap(a, b)
+         type(hill_boundary_t), intent(inout) :: a, b
+         type(hill_boundary_t) :: t
+         t = a; a = b; b = t
+      end subroutine swap
+   end subroutine hill_boundaries
+
+   pure integer function partner_block(block)
+      integer, intent(in) :: block
+      select case (block)
+      case (block_periodic_even); partner_block = block_periodic_odd
+      case (block_periodic_odd); partner_block = block_periodic_even
+      case (block_antiperiodic_even); partner_block = block_antiperiodic_odd
+      case default; partner_block = block_antiperiodic_even
+      end select
+   end function partner_block
+
+   !> The eigenvalues ≤ top of one block, converged: the truncation grows by half
+   !> until every one of them changes by at most tolerance·max(1, |β|) (Ritz values
+   !> only decrease as modes are added, and the count below top only grows).
+   subroutine converged_block(kind, alpha, block, top, tolerance, values, changes, used, error, formulation)
+      integer, intent(in) :: kind, block
+      real(wp), intent(in) :: alpha, top, tolerance
+      real(wp), allocatable, intent(out) :: values(:), changes(:)
+      integer, intent(out) :: used
+      type(error_t), allocatable, intent(out) :: error
+      integer, intent(in), optional :: formulation
+      real(wp), allocatable :: coarse(:), fine(:)
+      integer :: n, n_fine, m, j
+      logical :: done
+      character(len=200) :: buf
+      allocate (values(0), changes(0))
+      n = hill_initial_modes(kind, alpha, top, tolerance)
+      call hill_block_eigenvalues(kind, alpha, block, n, coarse, error, formulation)
+      if (allocated(error)) return
+      do
+         n_fine = min(n + max(8, n/2), hill_max_modes)
+         call hill_block_eigenvalues(kind, alpha, block, n_fine, fine, error, formulation)
+         if (allocated(error)) return
+         m = count(fine <= top)
+         done = m < size(fine) .and. m < size(coarse)   ! a value above top exists in both
+         if (done) then
+            do j = 1, m
+               if (abs(coarse(j) - fine(j)) > tolerance*max(1.0_wp, abs(fine(j)))) done = .false.
+            end do
+         end if
+         if (done) exit
+         if (n_fine >= hill_max_modes) then
+            write (buf, '(a,i0,a,es10.3,a,a)') "Hill's method: not converged with ", n_fine, &
+               " modes at alpha = ", alpha, " in block ", hill_block_name(block)
+            call set_error(error, err_accuracy, trim(buf))
+            return
+         end if
+         n = n_fine
+         call move_alloc(fine, coarse)
+      end do
+      used = n_fine
+      values = fine(:m)
+      changes = abs(coarse(:m) - fine(:m))
+   end subroutine converged_block
+end module hillstab_hill_method

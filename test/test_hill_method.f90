@@ -1,0 +1,319 @@
+!> Tests of Hill's method for the transition curves: α = 0 closed form β = (nπ/2)²,
+!> published Mathieu characteristic values and GSL's, the exact boundaries β = 0 and
+!> β = π² of the elastic model, S = ±2 by method auto on every computed boundary,
+!> β = π²/4 inside the first tongue, monotone (Ritz) convergence in the truncation,
+!> agreement of the three formulations, and bad input.
+module test_hill_method
+   use hillstab_kinds, only: wp, pi, pi2
+   use hillstab_error, only: error_t, err_invalid_parameter
+   use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu
+   use hillstab_transfer, only: trace_t
+   use hillstab_monodromy, only: method_t, method_auto, monodromy_trace
+   use hillstab_gsl, only: mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b
+   use hillstab_hill_method
+   use hillstab_testing
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   implicit none
+   private
+   public :: collect_hill_method
+
+contains
+
+   function collect_hill_method() result(suite)
+      type(testsuite_t) :: suite
+      suite = new_testsuite("hill_method", [ &
+         new_unittest("alpha_zero_closed_form", alpha_zero_closed_form), &
+         new_unittest("mathieu_published", mathieu_published), &
+         new_unittest("mathieu_against_gsl", mathieu_against_gsl), &
+         new_unittest("exact_boundaries_zero_and_pi2", exact_boundaries_zero_and_pi2), &
+         new_unittest("trace_on_boundaries", trace_on_boundaries), &
+         new_unittest("quarter_pi2_in_first_tongue", quarter_pi2_in_first_tongue), &
+         new_unittest("tongues_open_and_closed", tongues_open_and_closed), &
+         new_unittest("ritz_convergence", ritz_convergence), &
+         new_unittest("formulations_agree", formulations_agree), &
+         new_unittest("bad_input", bad_input)])
+   end function collect_hill_method
+
+   !> α = 0: Q ≡ β, S = 2 cos 2√β: boundaries exactly β = (nπ/2)², S = +2 for even n,
+   !> −2 for odd n, each order twice (a_n = b_n), in both models.
+   subroutine alpha_zero_closed_form(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(hill_boundary_t), allocatable :: c(:)
+      type(error_t), allocatable :: error
+      integer :: i, kind, n
+      do kind = model_elastic, model_mathieu
+         call hill_boundaries(kind, 0.0_wp, -2.0_wp, 100.0_wp, 1.0e-12_wp, c, error)
+         call check(ctx, .not. allocated(error), "no error")
+         if (allocated(error)) return
+         ! n = 0 once, n = 1 … 6 twice: (6π/2)² = 88.8 < 100 < (7π/2)²
+         call check(ctx, size(c) == 13, "13 boundaries in [-2, 100]")
+         do i = 1, size(c)
+            n = c(i)%order
+            call check(ctx, c(i)%beta, (n*pi/2)**2, rel=1.0e-13_wp, abs=1.0e-13_wp, message="(n pi/2)^2")
+            call check(ctx, c(i)%trace_sign == merge(2, -2, mod(n, 2) == 0), "kind follows the parity of n")
+            call check(ctx, c(i)%coexistent .eqv. n > 0, "alpha = 0: every tongue has zero width")
+         end do
+      end do
+   end subroutine alpha_zero_closed_form
+
+   !> The Mathieu model's curves are β = (π²/4) a_n(q), (π²/4) b_n(q) with q = 2ν/π²:
+   !> published values (BRIEF §5) at q = 1, 10, 25.
+   subroutine mathieu_published(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      call expect(1.0_wp, 0, 1, -0.455138604107_wp)
+      call expect(1.0_wp, 1, -1, -0.110248816992_wp)
+      call expect(1.0_wp, 1, 1, 1.859108072514_wp)
+      call expect(1.0_wp, 2, -1, 3.917024772998_wp)
+      call expect(10.0_wp, 0, 1, -13.936979956659_wp)
+      call expect(10.0_wp, 1, -1, -13.936552479250_wp)
+      call expect(25.0_wp, 0, 1, -40.256779546567_wp)
+      call expect(25.0_wp, 1, 1, -21.314899690666_wp)
+   contains
+      subroutine expect(q, order, parity, a)
+         real(wp), intent(in) :: q, a
+         integer, intent(in) :: order, parity
+         type(hill_boundary_t), allocatable :: c(:)
+         type(error_t), allocatable :: error
+         integer :: i, hits
+         character(len=40) :: label
+         write (label, '(a,i0,a,f5.1)') merge("a", "b", parity == 1), order, " at q = ", q
+         call hill_boundaries(model_mathieu, q*pi2/2, -0.25_wp*pi2*(2*q + 2), 0.25_wp*pi2*(order + 1)**2 + 1, &
+                              1.0e-13_wp, c, error)
+         call check(ctx, .not. allocated(error), trim(label)//": no error")
+         if (allocated(error)) return
+         hits = 0
+         do i = 1, size(c)
+            if (c(i)%order /= order .or. c(i)%parity /= parity) cycle
+            hits = hits + 1
+            call check(ctx, 4*c(i)%beta/pi2, a, abs=1.0e-11_wp, message=trim(label))
+         end do
+         call check(ctx, hits == 1, trim(label)//": found once")
+      end subroutine expect
+   end subroutine mathieu_published
+
+   !> Hill's method on the Mathieu operator against GSL's a_n, b_n, orders 0 … 12.
+   subroutine mathieu_against_gsl(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), parameter :: nus(5) = [-8.0_wp, 0.3_wp, 2.0_wp, 7.0_wp, 20.0_wp]
+      type(hill_boundary_t), allocatable :: c(:)
+      type(error_t), allocatable :: error
+      real(wp) :: beta_gsl
+      integer :: i, f, n_checked
+      do f = 1, size(nus)
+         call hill_boundaries(model_mathieu, nus(f), -30.0_wp, 0.25_wp*pi2*12.5_wp**2, 1.0e-12_wp, c, error)
+         call check(ctx, .not. allocated(error), "no error")
+         if (allocated(error)) return
+         n_checked = 0
+         do i = 1, size(c)
+            if (c(i)%order > 12) cycle
+            call mathieu_transition_beta(merge(mathieu_kind_a, mathieu_kind_b, c(i)%parity == 1), c(i)%order, &
+                                         nus(f), beta_gsl, error)
+            call check(ctx, .not. allocated(error), "GSL computes it")
+            call check(ctx, c(i)%beta, beta_gsl, rel=1.0e-11_wp, abs=1.0e-10_wp, message="Hill against GSL")
+            n_checked = n_checked + 1
+         end do
+         call check(ctx, n_checked == 25, "a_0 … a_12 and b_1 … b_12 all found")
+      end do
+   end subroutine mathieu_against_gsl
+
+   !> Elastic model: β = 0 is a periodic boundary for every α (x = 1 − (α/π²) cos πτ
+   !> solves the equation), and β = π² is a periodic boundary of both parities
+   !> (x = cos πτ and sin πτ: Q ≡ π²), so that tongue has zero width.
+   subroutine exact_boundaries_zero_and_pi2(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), parameter :: alphas(6) = [0.5_wp, 2.0_wp, 5.0_wp, 8.0_wp, 9.5_wp, 9.8_wp]
+      type(hill_boundary_t), allocatable :: c(:)
+      type(error_t), allocatable :: error
+      integer :: f, i, n_zero, n_pi2
+      do f = 1, size(alphas)
+         call hill_boundaries(model_elastic, alphas(f), -1.0_wp, 12.0_wp, 1.0e-12_wp, c, error)
+         call check(ctx, .not. allocated(error), "no error")
+         if (allocated(error)) return
+         n_zero = 0; n_pi2 = 0
+         do i = 1, size(c)
+            if (c(i)%order == 0) then
+               n_zero = n_zero + 1
+               call check(ctx, c(i)%beta, 0.0_wp, abs=1.0e-11_wp, message="a_0 = 0")
+            else if (c(i)%order == 2) then
+               n_pi2 = n_pi2 + 1
+               call check(ctx, c(i)%beta, pi2, rel=1.0e-11_wp, message="a_2 = b_2 = pi^2")
+               call check(ctx, c(i)%coexistent, "beta = pi^2: coexistence")
+            end if
+         end do
+         call check(ctx, n_zero == 1 .and. n_pi2 == 2, "one a_0 and both curves of order 2")
+      end do
+   end subroutine exact_boundaries_zero_and_pi2
+
+   !> Every boundary in β ∈ [−2, 40] has S = ±2 by method auto (an independent
+   !> integration): |S ∓ 2| within the trace error plus |S'| times the β accuracy,
+   !> S' from a centred difference of auto.
+   subroutine trace_on_boundaries(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), parameter :: alphas(5) = [0.7_wp, 3.0_wp, 6.5_wp, 9.0_wp, 9.7_wp]
+      type(hill_boundary_t), allocatable :: c(:)
+      type(error_t), allocatable :: error
+      real(wp) :: s, s_plus, s_minus, h, slope
+      integer :: f, i
+      do f = 1, size(alphas)
+         call hill_boundaries(model_elastic, alphas(f), -2.0_wp, 40.0_wp, 1.0e-12_wp, c, error)
+         call check(ctx, .not. allocated(error), "no error")
+         if (allocated(error)) return
+         call check(ctx, size(c) >= 9, "at least nine curves below beta = 40")
+         do i = 1, size(c)
+            s = trace(alphas(f), c(i)%beta)
+            h = 1.0e-5_wp*max(1.0_wp, abs(c(i)%beta))
+            s_plus = trace(alphas(f), c(i)%beta + h)
+            s_minus = trace(alphas(f), c(i)%beta - h)
+            slope = (s_plus - s_minus)/(2*h)
+            call check(ctx, s, real(c(i)%trace_sign, wp), abs=2.0e-11_wp + abs(slope)*1.0e-10_wp*max(1.0_wp, &
+                       abs(c(i)%beta)), message="S = +-2 on the boundary")
+         end do
+      end do
+   contains
+      real(wp) function trace(alpha, beta)
+         real(wp), intent(in) :: alpha, beta
+         type(trace_t) :: tr
+         type(error_t), allocatable :: err
+         call monodromy_trace(hill_model_t(model_elastic, alpha, beta, 0.0_wp), &
+                              method_t(method_auto, tolerance=1.0e-12_wp), tr, err)
+         trace = tr%value
+      end function trace
+   end subroutine trace_on_boundaries
+
+   !> β = π²/4 lies strictly inside the first antiperiodic tongue, between b_1 and
+   !> a_1, for every 0 < α < π² (BRIEF §5), and the tongue edges have S = −2.
+   subroutine quarter_pi2_in_first_tongue(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(hill_boundary_t), allocatable :: c(:)
+      type(error_t), allocatable :: error
+      real(wp) :: alpha, lo, hi
+      integer :: f, i
+      do f = 1, 12
+         alpha = 9.85_wp*f/12
+         call hill_boundaries(model_elastic, alpha, -1.0_wp, 12.0_wp, 1.0e-11_wp, c, error)
+         call check(ctx, .not. allocated(error), "no error")
+         if (allocated(error)) return
+         lo = huge(1.0_wp); hi = -huge(1.0_wp)
+         do i = 1, size(c)
+            if (c(i)%order /= 1) cycle
+            call check(ctx, c(i)%trace_sign == -2, "order 1 is antiperiodic")
+            lo = min(lo, c(i)%beta); hi = max(hi, c(i)%beta)
+         end do
+         call check(ctx, lo < 0.25_wp*pi2 .and. 0.25_wp*pi2 < hi, "pi^2/4 inside the first tongue")
+      end do
+   end subroutine quarter_pi2_in_first_tongue
+
+   !> Open and closed tongues at α = 5, against S by auto inside: the antiperiodic
+   !> tongues (orders 1, 3) are open (S < −2 at their middle), the periodic ones
+   !> (orders 2, 4) have zero width (S ≤ 2 just beside the double boundary).
+   subroutine tongues_open_and_closed(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(hill_boundary_t), allocatable :: c(:)
+      type(error_t), allocatable :: error
+      type(trace_t) :: tr
+      real(wp) :: betas(2)
+      integer :: order, i, m
+      call hill_boundaries(model_elastic, 5.0_wp, -2.0_wp, 40.0_wp, 1.0e-12_wp, c, error)
+      call check(ctx, .not. allocated(error), "no error")
+      if (allocated(error)) return
+      do order = 1, 4
+         m = 0
+         do i = 1, size(c)
+            if (c(i)%order /= order) cycle
+            m = m + 1
+            betas(m) = c(i)%beta
+            call check(ctx, c(i)%coexistent .eqv. mod(order, 2) == 0, "coexistence flag")
+         end do
+         call check(ctx, m == 2, "two curves per order")
+         if (mod(order, 2) == 1) then
+            call monodromy_trace(hill_model_t(model_elastic, 5.0_wp, sum(betas)/2, 0.0_wp), &
+                                 method_t(method_auto, tolerance=1.0e-12_wp), tr, error)
+            call check(ctx, tr%value < -2.0_wp, "open antiperiodic tongue: S < -2 inside")
+         else
+            do i = -1, 1, 2
+               call monodromy_trace(hill_model_t(model_elastic, 5.0_wp, betas(1) + i*1.0e-4_wp, 0.0_wp), &
+                                    method_t(method_auto, tolerance=1.0e-12_wp), tr, error)
+               call check(ctx, tr%value <= 2.0_wp .and. tr%value > 1.99_wp, "closed periodic tongue: S <= 2 beside")
+            end do
+         end if
+      end do
+   end subroutine tongues_open_and_closed
+
+   !> Ritz values only decrease as modes are added, and converge geometrically:
+   !> at α = 9.5 the first five eigenvalues of each block with n modes, against n = 400.
+   subroutine ritz_convergence(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), allocatable :: ref(:), v(:), previous(:)
+      type(error_t), allocatable :: error
+      real(wp) :: err_now, err_before
+      integer :: block, n, j
+      do block = block_periodic_even, block_antiperiodic_odd
+         call hill_block_eigenvalues(model_elastic, 9.5_wp, block, 400, ref, error)
+         call check(ctx, .not. allocated(error), "no error")
+         if (allocated(error)) return
+         err_before = huge(1.0_wp)
+         if (allocated(previous)) deallocate (previous)
+         do n = 20, 140, 40
+            call hill_block_eigenvalues(model_elastic, 9.5_wp, block, n, v, error)
+            err_now = maxval(abs(v(:5) - ref(:5)))
+            do j = 1, 5
+               call check(ctx, v(j) >= ref(j) - 1.0e-11_wp*max(1.0_wp, abs(ref(j))), "upper bound (Ritz)")
+            end do
+            if (allocated(previous)) then
+               do j = 1, 5
+                  call check(ctx, v(j) <= previous(j) + 1.0e-11_wp*max(1.0_wp, abs(v(j))), "monotone in n")
+               end do
+            end if
+            ! geometric: r = 0.73 at alpha = 9.5, r^(2*40) = 1e-11; stop at round-off
+            if (err_before < 1.0e-6_wp) then
+               call check(ctx, err_now < max(1.0e-3_wp*err_before, 1.0e-11_wp), "geometric convergence")
+            end if
+            err_before = err_now
+            previous = v
+         end do
+         call check(ctx, err_now < 1.0e-11_wp, "converged with 140 modes")
+      end do
+   end subroutine ritz_convergence
+
+   !> The inverted pencil, the direct pencil and the nonsymmetric tridiagonal give
+   !> the same eigenvalues at moderate α and size (where all three are accurate).
+   subroutine formulations_agree(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), allocatable :: a(:), b(:), c(:)
+      type(error_t), allocatable :: error
+      integer :: block, kind
+      do kind = model_elastic, model_mathieu
+         do block = block_periodic_even, block_antiperiodic_odd
+            call hill_block_eigenvalues(kind, 6.0_wp, block, 60, a, error, formulation_inverted_pencil)
+            call hill_block_eigenvalues(kind, 6.0_wp, block, 60, b, error, formulation_pencil)
+            call hill_block_eigenvalues(kind, 6.0_wp, block, 60, c, error, formulation_nonsymmetric)
+            call check(ctx, .not. allocated(error), "no error")
+            call check(ctx, maxval(abs(a(:8) - b(:8))) < 1.0e-9_wp, "pencil and inverted pencil")
+            call check(ctx, maxval(abs(a(:8) - c(:8))) < 1.0e-9_wp, "nonsymmetric and inverted pencil")
+         end do
+      end do
+   end subroutine formulations_agree
+
+   !> Bad input comes back as err_invalid_parameter, never a stop or a NaN.
+   subroutine bad_input(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(hill_boundary_t), allocatable :: c(:)
+      type(error_t), allocatable :: error
+      real(wp), allocatable :: v(:)
+      real(wp) :: nan
+      nan = ieee_value(1.0_wp, ieee_quiet_nan)
+      call hill_boundaries(model_elastic, pi2, 0.0_wp, 10.0_wp, 1.0e-10_wp, c, error)
+      call check(ctx, allocated(error), "alpha = pi^2 refused")
+      if (allocated(error)) call check(ctx, error%code == err_invalid_parameter, "code")
+      call hill_boundaries(model_elastic, -0.1_wp, 0.0_wp, 10.0_wp, 1.0e-10_wp, c, error)
+      call check(ctx, allocated(error), "alpha < 0 refused")
+      call hill_boundaries(model_mathieu, nan, 0.0_wp, 10.0_wp, 1.0e-10_wp, c, error)
+      call check(ctx, allocated(error), "NaN refused")
+      call hill_boundaries(model_elastic, 1.0_wp, 10.0_wp, 0.0_wp, 1.0e-10_wp, c, error)
+      call check(ctx, allocated(error), "beta_min > beta_max refused")
+      call hill_boundaries(model_elastic, 1.0_wp, 0.0_wp, 10.0_wp, 0.0_wp, c, error)
+      call check(ctx, allocated(error), "tolerance 0 refused")
+      call hill_block_eigenvalues(model_elastic, 1.0_wp, 7, 10, v, error)
+      call check(ctx, allocated(error), "unknown block refused")
+   end subroutine bad_input
+end module test_hill_method
