@@ -84,6 +84,8 @@ install: lib
 	sed -e 's|@MOD_SUBDIR@|$(MOD_SUBDIR)|g' -e 's|@VERSION@|$(VERSION)|g' -e 's|@SHARED_LIB@|$(SHARED_LIB)|g' \
 	   -e 's|@SONAME@|libhillstab.so.$(SOVERSION)|g' \
 	   config/hillstab-config.cmake.in > $(DESTDIR)$(PREFIX)/lib/cmake/hillstab/hillstab-config.cmake
+	sed -e 's|@VERSION@|$(VERSION)|g' config/hillstab-config-version.cmake.in \
+	   > $(DESTDIR)$(PREFIX)/lib/cmake/hillstab/hillstab-config-version.cmake
 
 check-install:
 	@rm -rf build/_install build/_install_cmake build/cmake_check
@@ -92,7 +94,8 @@ check-install:
 	@if command -v cmake >/dev/null 2>&1; then \
 	   cmake -S . -B build/cmake_check -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=$(CURDIR)/build/_install_cmake \
 	      >/dev/null && cmake --build build/cmake_check -j 2 >/dev/null && cmake --install build/cmake_check >/dev/null \
-	   && bash config/export/check.sh $(CURDIR)/build/_install_cmake cmake; \
+	   && bash config/export/check.sh $(CURDIR)/build/_install_cmake cmake \
+	   && bash config/export/same_files.sh build/_install build/_install_cmake; \
 	else echo "check-install: cmake not found, CMake route not checked"; fi
 
 mpi:

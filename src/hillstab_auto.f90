@@ -29,7 +29,7 @@ module hillstab_auto
    use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_stats, only: work_stats_t
-   use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, check_model
+   use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, check_model, one_minus_alpha_over_pi2
    use hillstab_transfer, only: transfer_functions, trace_t, trace_from_scaled
    implicit none
    private
@@ -434,7 +434,7 @@ contains
       else
          k = alpha/pi2
          s = sin(0.5_wp*pi*tau)
-         w = 1.0_wp/((1.0_wp - k) + 2.0_wp*k*s*s)   ! 1/(1 − k cos πτ), accurate as k → 1
+         w = 1.0_wp/(one_minus_alpha_over_pi2(alpha) + 2.0_wp*k*s*s)   ! 1/(1 − k cos πτ), accurate as k → 1
       end if
    end function shape_function
 
@@ -445,10 +445,12 @@ contains
       type(mesh_t), intent(out) :: mesh
       real(wp), parameter :: nodes(3) = [0.5_wp - gauss3_offset, 0.5_wp, 0.5_wp + gauss3_offset]
       real(wp) :: kappa, k, sa, sb, t0, t1, h, cs, sn, cr, sr, x, y, r, sin0, cos0, sin1, cos1, b, sb_k, cb_k, half_sin
+      real(wp) :: one_minus_k
       integer :: i, j
       kappa = 0.0_wp
       if (kind == model_elastic) kappa = 1.0_wp - (1.0_wp - alpha/pi2)**auto_mesh_power
       k = alpha/pi2
+      one_minus_k = one_minus_alpha_over_pi2(alpha)
       mesh%n_steps = n
       allocate (mesh%h(n), mesh%w(3, n))
       ! the map tan(πτ/2) = √((1 − κ)/(1 + κ)) tan(πψ/2) as a point (X, Y) = (√(1+κ) cos, √(1−κ) sin)(πψ/2)
@@ -490,7 +492,7 @@ contains
             if (kind == model_mathieu) then
                mesh%w(j, i) = 1.0_wp - 2.0_wp*half_sin*half_sin   ! cos πτ
             else
-               mesh%w(j, i) = 1.0_wp/((1.0_wp - k) + 2.0_wp*k*half_sin*half_sin)
+               mesh%w(j, i) = 1.0_wp/(one_minus_k + 2.0_wp*k*half_sin*half_sin)
             end if
          end do
          t0 = t1

@@ -11,7 +11,7 @@
 !> print *, hill_coefficient(model, 0.5_wp)
 !>```
 module hillstab_coefficient
-   use hillstab_kinds, only: wp, pi, pi2
+   use hillstab_kinds, only: wp, pi, pi2, pi2_lo
    use hillstab_error, only: error_t, set_error, err_invalid_parameter
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
@@ -19,7 +19,7 @@ module hillstab_coefficient
    public :: hill_model_t, model_elastic, model_mathieu, model_name
    public :: hill_coefficient, check_model, segment_average, segment_coefficients
    public :: sampling_endpoint, sampling_midpoint, sampling_average, sampling_name
-   public :: damping_shift, hill_period, in_physical_domain
+   public :: damping_shift, hill_period, in_physical_domain, one_minus_alpha_over_pi2
 
    !> Q(τ) of eq. (25), the exact linearisation about the vertical bounce.
    integer, parameter :: model_elastic = 1
@@ -113,12 +113,20 @@ contains
       damping_shift = -0.25_wp*epsilon*epsilon
    end function damping_shift
 
-   !> 1 − k cos θ written as (1 − k) + 2k sin²(θ/2), accurate as k → 1 near θ = 0.
-   elemental real(wp) function one_minus_k_cos(k, theta)
-      real(wp), intent(in) :: k, theta
+   !> 1 − α/π² computed as (π² − α)/π² with π² split in two doubles: relative error of a
+   !> few ulps for every 0 ≤ α < π² (1 − k from k = α/π² loses 1 − k's relative accuracy
+   !> as α → π², about 2e-12 at α = 9.869).
+   elemental real(wp) function one_minus_alpha_over_pi2(alpha) result(one_minus_k)
+      real(wp), intent(in) :: alpha  !! α, 0 ≤ α < π²
+      one_minus_k = ((pi2 - alpha) + pi2_lo)/pi2
+   end function one_minus_alpha_over_pi2
+
+   !> 1 − (α/π²) cos θ written as (1 − α/π²) + 2(α/π²) sin²(θ/2), accurate as α → π² near θ = 0.
+   elemental real(wp) function one_minus_k_cos(alpha, theta)
+      real(wp), intent(in) :: alpha, theta
       real(wp) :: s
       s = sin(0.5_wp*theta)
-      one_minus_k_cos = (1.0_wp - k) + 2.0_wp*k*s*s
+      one_minus_k_cos = one_minus_alpha_over_pi2(alpha) + 2.0_wp*(alpha/pi2)*s*s
    end function one_minus_k_cos
 
    !> The coefficient q(τ) of the (damping-shifted) Hill equation, eq. (25)/(A1) and (47).
@@ -130,7 +138,7 @@ contains
          q = model%beta - model%alpha*cos(pi*tau)
       case default
          ! π² + (β − π²)/(1 − (α/π²) cos πτ), the second form of eq. (25)
-         q = pi2 + (model%beta - pi2)/one_minus_k_cos(model%alpha/pi2, pi*tau)
+         q = pi2 + (model%beta - pi2)/one_minus_k_cos(model%alpha, pi*tau)
       end select
       q = q + damping_shift(model%epsilon)
    end function hill_coefficient

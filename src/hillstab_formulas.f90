@@ -11,6 +11,7 @@
 !> (β < α, β + α < 0) and at β = ±α where the paper's form is 0/0.
 module hillstab_formulas
    use hillstab_kinds, only: wp, pi2
+   use hillstab_coefficient, only: one_minus_alpha_over_pi2
    use hillstab_transfer, only: transfer_functions, trace_t, trace_from_scaled
    implicit none
    private
@@ -48,7 +49,7 @@ contains
       shifted = beta - 0.25_wp*epsilon**2
       amp = alpha*(1.0_wp - 0.25_wp*epsilon**2/pi2)
       b1_sq = (shifted + amp)/(1.0_wp + alpha/pi2)   ! Q(1) − ε²/4, eq. (49)
-      b2_sq = (shifted - amp)/(1.0_wp - alpha/pi2)   ! Q(0) − ε²/4, eq. (50)
+      b2_sq = (shifted - amp)/one_minus_alpha_over_pi2(alpha)   ! Q(0) − ε²/4, eq. (50)
       tr = trace_two_piece(b2_sq, b1_sq)
    end function trace_damped_paper
 
