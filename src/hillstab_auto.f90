@@ -200,7 +200,7 @@ contains
    !> Traces of the points (α, β_j, ε), j = 1 … size(betas), sharing meshes and w values.
    !> On error (a parameter out of range, or a tolerance that cannot be met) the
    !> remaining traces are still filled with the best values available.
-   subroutine trace_auto_batch(kind, alpha, epsilon, betas, tolerance, traces, stats, error, plan, reached)
+   subroutine trace_auto_batch(kind, alpha, epsilon, betas, tolerance, traces, stats, error, plan, reached, roundoff)
       integer, intent(in) :: kind            !! model_elastic or model_mathieu
       real(wp), intent(in) :: alpha          !! α (ν for the Mathieu model)
       real(wp), intent(in) :: epsilon        !! damping ε
@@ -212,6 +212,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(auto_plan_t), intent(in), optional :: plan  !! meshes prepared for this (kind, α)
       logical, intent(out), optional :: reached(:)     !! the tolerance was met at point j
+      !> point j is round-off limited: its trace is the best value, not a failure
+      logical, intent(out), optional :: roundoff(:)
       type(mesh_cache_t) :: cache
       type(error_t), allocatable :: point_error
       real(wp) :: base, estimate
@@ -219,12 +221,13 @@ contains
       integer, allocatable :: ns(:), n_coarse(:)
       logical, allocatable :: pending(:)
       type(trace_t), allocatable :: fine(:), coarse(:)
-      real(wp), allocatable :: floors(:), coarse_floors(:), estimates(:)
+      real(wp), allocatable :: floors(:), coarse_floors(:), estimates(:), previous(:)
       real(wp) :: noise
       integer :: j, m, pass
       character(len=120) :: buffer
       stats = work_stats_t()
       if (present(reached)) reached = .false.
+      if (present(roundoff)) roundoff = .false.
       if (.not. ieee_is_finite(tolerance)) then
          call set_error(error, err_invalid_parameter, "auto: tolerance must be finite")
          return
@@ -263,7 +266,8 @@ contains
          ns(j) = steps_for_point(base, kind, c0s(j), c1s(j))
       end do
       ! first pass: S_N and S_{N/2} of all points sharing N together, in lanes
-      allocate (fine(m), coarse(m), n_coarse(m), pending(m), floors(m), coarse_floors(m), estimates(m))
+      allocate (fine(m), coarse(m), n_coarse(m), pending(m), floors(m), coarse_floors(m), estimates(m), previous(m))
+      previous = huge(1.0_wp)
       call traces_in_lanes(ns, fine, floors)
       n_coarse = ns/2
       call traces_in_lanes(n_coarse, coarse, coarse_floors)
@@ -282,10 +286,28 @@ contains
             estimates(j) = max(estimate, noise)
             if (estimate <= tolerance .and. noise <= tolerance) then
                pending(j) = .false.
+            else if (estimate <= max(tolerance, 2.0_wp*noise) .and. estimate < previous(j)/16.0_wp .and. &
+                     ns(j) < max_auto_steps .and. pass < 12) then
+               ! round-off limited, but the difference still falls like truncation (2⁶ per
+               ! doubling; at least 16 here): refine on, so that the value returned is the
+               ! best double precision allows, not the first one whose difference reached
+               ! the round-off level
+               previous(j) = estimate
+               coarse(j) = fine(j)
+               coarse_floors(j) = floors(j)
+               n_coarse(j) = ns(j)
+               ns(j) = ladder_steps(2.0_wp*ns(j))
             else if (estimate <= max(tolerance, 2.0_wp*noise)) then
-               ! the difference is at the round-off level: more steps cannot help
+               ! the difference is at the round-off level: more steps cannot help. After a
+               ! refinement that did not reduce the difference like truncation, the coarser
+               ! value is kept (the extra steps added rounding noise only)
+               if (previous(j) < huge(1.0_wp)) then
+                  fine(j) = coarse(j)
+                  floors(j) = coarse_floors(j)
+               end if
                pending(j) = .false.
                if (present(reached)) reached(j) = .false.
+               if (present(roundoff)) roundoff(j) = .true.
                write (buffer, '(a,es9.2,a,es9.2,a,es10.3,a)') "auto: the tolerance ", tolerance, &
                   " is below the round-off level ", noise, " of S (at beta = ", betas(j), "); best value returned"
                if (.not. allocated(error)) call set_error(error, err_accuracy, trim(buffer))

@@ -188,7 +188,7 @@ contains
       !> trace is the best double precision allows; not counted in `failed`
       logical, intent(out), optional :: inaccurate(size(betas))
       type(work_stats_t) :: work, part
-      logical :: reached(size(betas))
+      logical :: reached(size(betas)), roundoff(size(betas))
       type(error_t), allocatable :: point_error
       type(hill_model_t) :: point
       integer :: j
@@ -198,14 +198,16 @@ contains
       if (method%kind == method_auto) then
          if (present(plan)) then
             call trace_auto_batch(model%kind, model%alpha, model%epsilon, betas, method%tolerance, traces, work, &
-               error, plan%auto, reached)
+               error, plan%auto, reached, roundoff)
          else
             call trace_auto_batch(model%kind, model%alpha, model%epsilon, betas, method%tolerance, traces, work, &
-               error, reached=reached)
+               error, reached=reached, roundoff=roundoff)
          end if
          if (allocated(error)) then
-            if (error%code == err_accuracy) then
-               if (present(inaccurate)) inaccurate = .not. reached
+            ! only round-off limited points: their traces are the best values; a point that
+            ! failed as well is located below, point by point
+            if (error%code == err_accuracy .and. all(reached .or. roundoff)) then
+               if (present(inaccurate)) inaccurate = roundoff
                if (present(stats)) stats = work
                return
             end if
