@@ -106,10 +106,10 @@ mpi:
 test-mpi:
 	bash scripts/test_mpi.sh
 
-doc:
+doc: setup
 	@bash scripts/doc.sh
 
-doc-check:
+doc-check: setup
 	@python3 scripts/doc_check.py
 
 clean:
