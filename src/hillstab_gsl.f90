@@ -51,6 +51,9 @@ module hillstab_gsl
       mathieu_max_order
    public :: monodromy_gsl, trace_gsl, monodromy_gsl_full_period, gsl_tolerance_factor
    public :: gsl_odeiv2_step_rk8pd
+   ! the odeiv2 driver, for other systems integrated by rk8pd (hillstab_gsl_lyapunov)
+   public :: gsl_odeiv2_system, gsl_odeiv2_driver_alloc_scaled_new, gsl_odeiv2_driver_set_nmax, &
+      gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_set_error_handler_off
 
    !> Curves of the even Mathieu functions ce_n: a_n(q), n ≥ 0.
    integer, parameter :: mathieu_kind_a = 1
@@ -164,6 +167,18 @@ module hillstab_gsl
          real(c_double), value :: hstart, epsabs, epsrel
          type(c_ptr) :: driver
       end function gsl_odeiv2_driver_alloc_y_new
+
+      !> Driver with GSL's scaled control: the error of component i is kept below
+      !> epsabs·scale_abs(i) + epsrel·(a_y |y_i| + a_dydt h |y_i'|) (the array is copied).
+      function gsl_odeiv2_driver_alloc_scaled_new(sys, step_type, hstart, epsabs, epsrel, a_y, a_dydt, scale_abs) &
+         bind(C, name="gsl_odeiv2_driver_alloc_scaled_new") result(driver)
+         import :: c_ptr, c_double, gsl_odeiv2_system
+         type(gsl_odeiv2_system), intent(in) :: sys
+         type(c_ptr), value :: step_type
+         real(c_double), value :: hstart, epsabs, epsrel, a_y, a_dydt
+         real(c_double), intent(in) :: scale_abs(*)
+         type(c_ptr) :: driver
+      end function gsl_odeiv2_driver_alloc_scaled_new
 
       function gsl_odeiv2_driver_set_nmax(driver, nmax) bind(C, name="gsl_odeiv2_driver_set_nmax") result(status)
          import :: c_ptr, c_long, c_int

@@ -82,6 +82,7 @@ contains
       real(wp), intent(in) :: y0(4)            !! initial state (x, z, x', z')
       integer, intent(in) :: periods           !! number of radial periods N ≥ 1
       real(wp), intent(in) :: rtol             !! relative tolerance of the integration
+      !> the exponent, its spread over the second half, the largest angle, the energy drift
       type(lyapunov_t), intent(out) :: result
       type(error_t), allocatable, intent(out) :: error  !! invalid arguments; integration failure
       integer, intent(in), optional :: method  !! rk_dop853 (default) or rk_dopri5

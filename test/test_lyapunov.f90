@@ -16,6 +16,7 @@ module test_lyapunov
    use hillstab_rk, only: rk_dopri5
    use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state
    use hillstab_lyapunov
+   use hillstab_gsl_lyapunov, only: lyapunov_largest_gsl
    use hillstab_testing
    implicit none
    private
@@ -32,6 +33,7 @@ contains
          new_unittest("running_estimate_consistent", running_estimate_consistent), &
          new_unittest("integrator_independent", integrator_independent), &
          new_unittest("damped_bounce", damped_bounce), &
+         new_unittest("gsl_rk8pd_agrees", gsl_rk8pd_agrees), &
          new_unittest("bad_arguments", bad_arguments)])
    end function collect_lyapunov
 
@@ -187,6 +189,28 @@ contains
       call check(ctx, .not. allocated(error), "integrated")
       call check(ctx, result%exponent, -0.4_wp, abs=0.01_wp, rel=0.0_wp)
    end subroutine damped_bounce
+
+   !> GSL rk8pd driving the same equations: the same exponent on the regular case (c)
+   !> and the chart's growth in the linear phase of case (g).
+   subroutine gsl_rk8pd_agrees(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(lyapunov_t) :: a, b
+      type(error_t), allocatable :: error
+      type(pendulum_t) :: p
+      p = make(2.57_wp, 1.29_wp, 0.0_wp)
+      call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 300, 1.0e-11_wp, a, error)
+      call lyapunov_largest_gsl(p, pendulum_initial_state(p, 0.017_wp), 300, 1.0e-11_wp, b, error)
+      call check(ctx, .not. allocated(error), "integrated")
+      call check(ctx, b%exponent, a%exponent, abs=1.0e-6_wp, rel=0.0_wp)
+      call check(ctx, b%energy_drift < 1.0e-8_wp, "energy kept")
+      write (*, '(4x,a,es10.3,a,es10.3)') "case (c), 300 periods: dop853 - rk8pd ", a%exponent - b%exponent, &
+         ", dop853 ", a%exponent
+      p = make(7.48_wp, 2.47_wp, 0.0_wp)
+      call lyapunov_largest_gsl(p, pendulum_initial_state(p, 1.0e-12_wp), 8, 1.0e-12_wp, b, error)
+      call check(ctx, .not. allocated(error), "integrated")
+      call check(ctx, maxval(abs(b%log_growth(5:8) - chart_log_lambda(7.48_wp, 2.47_wp, 0.0_wp))) < 1.0e-7_wp, &
+         "linear phase: ln lambda_max")
+   end subroutine gsl_rk8pd_agrees
 
    subroutine bad_arguments(ctx)
       type(test_context_t), intent(inout) :: ctx
