@@ -10,6 +10,8 @@
 #                       with plain gfortran (no fpm)
 #   make install PREFIX=/usr/local   install libraries, modules, C header, pkg-config and CMake
 #                       files and the program (the same files as the CMake install)
+#   make doc            API reference with FORD into build/doc (installs FORD through pip if missing)
+#   make doc-check      fail on an undocumented public entity or argument (scripts/doc_check.py)
 #   make check-install  install into temporary prefixes (make and CMake routes) and build and run
 #                       consumers against each: C, Fortran and fixed-form FORTRAN 77 through
 #                       pkg-config, C and Fortran through CMake find_package
@@ -33,7 +35,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug setup bench area lib install check-install clean mpi test-mpi
+.PHONY: run test test-debug setup bench area lib install check-install doc doc-check clean mpi test-mpi
 
 setup:
 	@bash scripts/setup.sh
@@ -90,6 +92,8 @@ install: lib
 	sed -e 's|@MOD_SUBDIR@|$(MOD_SUBDIR)|g' -e 's|@VERSION@|$(VERSION)|g' -e 's|@SHARED_LIB@|$(SHARED_LIB)|g' \
 	   -e 's|@SONAME@|libhillstab.so.$(SOVERSION)|g' \
 	   config/hillstab-config.cmake.in > $(DESTDIR)$(PREFIX)/lib/cmake/hillstab/hillstab-config.cmake
+	sed -e 's|@VERSION@|$(VERSION)|g' config/hillstab-config-version.cmake.in \
+	   > $(DESTDIR)$(PREFIX)/lib/cmake/hillstab/hillstab-config-version.cmake
 
 check-install:
 	@rm -rf build/_install build/_install_cmake build/cmake_check
@@ -98,7 +102,8 @@ check-install:
 	@if command -v cmake >/dev/null 2>&1; then \
 	   cmake -S . -B build/cmake_check -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=$(CURDIR)/build/_install_cmake \
 	      >/dev/null && cmake --build build/cmake_check -j 2 >/dev/null && cmake --install build/cmake_check >/dev/null \
-	   && bash config/export/check.sh $(CURDIR)/build/_install_cmake cmake; \
+	   && bash config/export/check.sh $(CURDIR)/build/_install_cmake cmake \
+	   && bash config/export/same_files.sh build/_install build/_install_cmake; \
 	else echo "check-install: cmake not found, CMake route not checked"; fi
 
 mpi:
@@ -108,6 +113,12 @@ mpi:
 
 test-mpi:
 	bash scripts/test_mpi.sh
+
+doc: setup
+	@bash scripts/doc.sh
+
+doc-check: setup
+	@python3 scripts/doc_check.py
 
 clean:
 	rm -rf build out

@@ -120,7 +120,7 @@ contains
 
    !> Short name of a block.
    pure function hill_block_name(block) result(name)
-      integer, intent(in) :: block
+      integer, intent(in) :: block  !! one of the four even/odd, periodic/antiperiodic blocks
       character(len=:), allocatable :: name
       select case (block)
       case (block_periodic_even); name = "periodic even (a_2m)"
@@ -133,7 +133,7 @@ contains
 
    !> Order n of the j-th eigenvalue (j = 1, 2, …) of a block.
    elemental integer function block_order(block, j)
-      integer, intent(in) :: block, j
+      integer, intent(in) :: block, j  !! the block; index of the eigenvalue, ascending from 1
       select case (block)
       case (block_periodic_even); block_order = 2*(j - 1)
       case (block_periodic_odd); block_order = 2*j
@@ -144,7 +144,8 @@ contains
    !> Number of modes to start from: enough for the eigenfunctions up to β_top and
    !> for the geometric decay r^{2n} of the Ritz error to reach the tolerance.
    pure integer function hill_initial_modes(kind, alpha, beta_top, tolerance) result(n)
-      integer, intent(in) :: kind
+      integer, intent(in) :: kind  !! model kind (model_elastic or model_mathieu)
+      !> alpha; highest beta wanted; target error relative to max(1, |beta|)
       real(wp), intent(in) :: alpha, beta_top, tolerance
       real(wp) :: k, r, oscillation
       oscillation = sqrt(max(beta_top, 0.0_wp) + abs(alpha))/pi
@@ -281,7 +282,7 @@ contains
       integer, intent(in) :: block         !! block_* constant
       integer, intent(in) :: n             !! number of modes
       real(wp), allocatable, intent(out) :: values(:)  !! β, ascending
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! LAPACK failure; unallocated on success
       integer, intent(in), optional :: formulation  !! formulation_* (default inverted pencil)
       real(wp), allocatable :: ab(:, :), bb(:, :), w(:), work(:), h(:, :), wr(:), wi(:)
       real(wp) :: k, sigma, z(1, 1)
@@ -401,8 +402,9 @@ contains
       real(wp), intent(in) :: alpha        !! α (ν for the Mathieu model)
       real(wp), intent(in) :: beta_min, beta_max  !! the β window
       real(wp), intent(in) :: tolerance    !! convergence target on β, relative to max(1, |β|)
+      !> the transition curves crossing [beta_min, beta_max], by beta
       type(hill_boundary_t), allocatable, intent(out) :: curves(:)
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! failure to converge or LAPACK failure; unallocated on success
       integer, intent(out), optional :: modes(4)  !! final truncation of each block
       integer, intent(in), optional :: formulation  !! formulation_* (default inverted pencil)
       real(wp), allocatable :: values(:, :)   ! (j, block): converged eigenvalues at most up to the top
