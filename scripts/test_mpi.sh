@@ -86,10 +86,10 @@ check "unwritable_output_exit2_every_rank" 'all_ranks "$work/st" 3 2'
 rank_statuses 2 "$work/st" "$work/missing.nml"
 check "missing_scene_exit2_every_rank" 'all_ranks "$work/st" 2 2'
 
-# a failing point (GSL rk8pd at beta = -1e6): as hillstab, the file is written with the point's
-# status and placeholders, every rank exits 3, the message is hillstab's
-awk 'BEGIN { for (k = 0; k < 40; k++) print 1 + k / 10, (k == 23 ? -1e6 : 2.0) }' >"$work/fail.dat"
-printf '%s\n' "&scene task='points', method='gsl', output='$work/fail' /" "&points file='$work/fail.dat' /" \
+# a failing point (method auto at beta = 1e13 stops at its step limit): as hillstab, the file is
+# written with the point's status and placeholders, every rank exits 3, the message is hillstab's
+awk 'BEGIN { for (k = 0; k < 40; k++) print 1 + k / 10, (k == 23 ? 1e13 : 2.0) }' >"$work/fail.dat"
+printf '%s\n' "&scene task='points', method='auto', output='$work/fail' /" "&points file='$work/fail.dat' /" \
    >"$work/fail.nml"
 "$serial" -q "$work/fail.nml" 2>"$work/fail.serial_message"
 serial_rc=$?
@@ -103,8 +103,8 @@ for np in 1 2 3; do
    check "failing_point_np${np}_same_file" 'cmp -s "$work/fail_points.dat" "$work/fail.serial"'
 done
 # a chart whose first point fails: status and file as hillstab's
-printf '%s\n' "&scene task='chart', method='gsl', output='$work/fail' /" \
-   "&chart alpha_min=3, alpha_max=3, n_alpha=2, beta_min=-1e6, beta_max=2, n_beta=3 /" >"$work/fail_chart.nml"
+printf '%s\n' "&scene task='chart', output='$work/fail' /" \
+   "&chart alpha_min=3, alpha_max=3, n_alpha=2, beta_min=2, beta_max=1e13, n_beta=3 /" >"$work/fail_chart.nml"
 "$serial" -q "$work/fail_chart.nml" 2>/dev/null
 serial_rc=$?
 mv "$work/fail_chart.dat" "$work/fail_chart.serial"

@@ -72,7 +72,7 @@ contains
 
    !> Whether a scene's task can be cut into units (chart and points).
    pure logical function batch_distributable(scene)
-      type(scene_t), intent(in) :: scene
+      type(scene_t), intent(in) :: scene  !! a validated scene
       batch_distributable = scene%task == task_chart .or. scene%task == task_points
    end function batch_distributable
 
@@ -82,7 +82,7 @@ contains
    subroutine batch_plan(scene, n_workers, batch)
       type(scene_t), intent(in) :: scene  !! a chart or points scene
       integer, intent(in) :: n_workers    !! processes that will compute units (≥ 1)
-      type(batch_t), intent(out) :: batch
+      type(batch_t), intent(out) :: batch  !! the units and the output file state
       integer :: n
       batch%scene = scene
       select case (scene%task)
@@ -101,9 +101,9 @@ contains
    !> The points of `unit`, as indices first … last in the scene's order (a chart's
    !> points numbered row by row).
    pure subroutine batch_unit_range(batch, unit, first, last)
-      type(batch_t), intent(in) :: batch
-      integer, intent(in) :: unit
-      integer(int64), intent(out) :: first, last
+      type(batch_t), intent(in) :: batch  !! the planned work
+      integer, intent(in) :: unit  !! 1 ... batch%n_units
+      integer(int64), intent(out) :: first, last  !! first and last point index of the unit
       first = int(unit - 1, int64)*batch%unit_size + 1
       last = min(batch%n_points, int(unit, int64)*batch%unit_size)
    end subroutine batch_unit_range
@@ -126,9 +126,9 @@ contains
 
    !> Compute one unit. Pure computation: no file is touched, so any process can do it.
    subroutine batch_compute(batch, unit, result)
-      type(batch_t), intent(in) :: batch
+      type(batch_t), intent(in) :: batch  !! the planned work
       integer, intent(in) :: unit  !! 1 … batch%n_units
-      type(batch_result_t), intent(out) :: result
+      type(batch_result_t), intent(out) :: result  !! the unit's lines and point statuses
       character(len=chart_line_length), allocatable :: lines(:)
       integer(int64) :: first, last
       call batch_unit_range(batch, unit, first, last)
@@ -178,9 +178,9 @@ contains
    !> Open the output file of the scene and write its header (an unwritable path fails
    !> here, before anything is computed).
    subroutine batch_open(batch, quiet, error)
-      type(batch_t), intent(inout) :: batch
+      type(batch_t), intent(inout) :: batch  !! the planned work; its output file is opened
       logical, intent(in) :: quiet  !! no progress on stderr
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! failure description; unallocated on success
       logical :: outside, damped
       type(scene_t) :: s
       s = batch%scene
@@ -214,9 +214,9 @@ contains
    !> points; units must come in order 1, 2, …. An error (the file cannot be written)
    !> means the file must be discarded.
    subroutine batch_write(batch, result, error)
-      type(batch_t), intent(inout) :: batch
-      type(batch_result_t), intent(in) :: result
-      type(error_t), allocatable, intent(out) :: error
+      type(batch_t), intent(inout) :: batch  !! the planned work with its open output file
+      type(batch_result_t), intent(in) :: result  !! the next unit's result, in unit order
+      type(error_t), allocatable, intent(out) :: error  !! the file cannot be written; unallocated on success
       integer(int64) :: first, last
       integer :: j
       call batch_unit_range(batch, result%unit, first, last)
@@ -240,7 +240,8 @@ contains
    !> With failed points the file is written and `error` is err_points_failed, naming the
    !> first (computed again here, so the message is that of a serial run).
    subroutine batch_commit(batch, error)
-      type(batch_t), intent(inout) :: batch
+      type(batch_t), intent(inout) :: batch  !! the planned work with every unit written
+      !> err_points_failed naming the first failed point, or a rename failure
       type(error_t), allocatable, intent(out) :: error
       call progress_end(batch%progress)
       call commit_output(batch%file, error)
@@ -251,7 +252,7 @@ contains
 
    !> Abandon the file: the temporary file is deleted, the final name left as it was.
    subroutine batch_discard(batch)
-      type(batch_t), intent(inout) :: batch
+      type(batch_t), intent(inout) :: batch  !! the planned work whose file is abandoned
       call progress_end(batch%progress)
       call discard_output(batch%file)
    end subroutine batch_discard
@@ -259,9 +260,9 @@ contains
    !> Run a chart or points scene unit by unit in this process: the reference order of
    !> work of a distributed run, and what such a run does with one process.
    subroutine run_batch(scene, quiet, error)
-      type(scene_t), intent(in) :: scene
-      logical, intent(in) :: quiet
-      type(error_t), allocatable, intent(out) :: error
+      type(scene_t), intent(in) :: scene  !! a validated chart or points scene
+      logical, intent(in) :: quiet  !! no progress on stderr
+      type(error_t), allocatable, intent(out) :: error  !! what failed (err_points_failed: written with failed points)
       type(batch_t) :: batch
       type(batch_result_t) :: result
       integer :: unit
@@ -284,7 +285,7 @@ contains
    !> file, output path), 3 when the file was written but some points failed
    !> (err_points_failed), 1 when a computation failed otherwise.
    pure integer function exit_status(error)
-      type(error_t), intent(in) :: error
+      type(error_t), intent(in) :: error  !! the error a run ended with
       select case (error%code)
       case (err_input, err_io, err_invalid_parameter)
          exit_status = 2

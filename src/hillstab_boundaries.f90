@@ -91,8 +91,8 @@ contains
       real(wp), intent(in) :: alpha, beta   !! the boundary point
       integer, intent(in) :: trace_sign     !! +2 or −2
       real(wp), intent(in) :: tolerance     !! the tolerance the boundary was computed to
-      type(boundary_check_t), intent(out) :: check
-      type(error_t), allocatable, intent(out) :: error
+      type(boundary_check_t), intent(out) :: check  !! S by auto at the point and its distance from trace_sign
+      type(error_t), allocatable, intent(out) :: error  !! auto failed at the point; unallocated on success
       real(wp) :: residual, allowance, h, s_plus, s_minus
       call auto_trace(kind, alpha, beta, tolerance, check%trace, check%roundoff, error)
       if (allocated(error)) return
@@ -197,11 +197,11 @@ contains
       integer, intent(in) :: kind            !! model_elastic or model_mathieu
       real(wp), intent(in) :: alpha          !! α (ν)
       type(method_t), intent(in) :: method   !! method_formula or method_segments
-      real(wp), intent(in) :: beta_min, beta_max
+      real(wp), intent(in) :: beta_min, beta_max  !! the beta window searched
       integer, intent(in) :: n_samples       !! sampling points of the bracket search over the window
       real(wp), intent(in) :: tolerance      !! root accuracy, relative to max(1, |β|)
-      type(approximate_root_t), allocatable, intent(out) :: roots(:)
-      type(error_t), allocatable, intent(out) :: error
+      type(approximate_root_t), allocatable, intent(out) :: roots(:)  !! the roots with their orders, ascending in beta
+      type(error_t), allocatable, intent(out) :: error  !! the method failed at a sample; unallocated on success
       real(wp) :: low, step, b0, b1, root, residual, targets(2)
       real(wp), allocatable :: f(:, :)
       integer :: n, i, t, count_kind(2), m
@@ -262,10 +262,10 @@ contains
    !> GSL's β for the Mathieu curve (order, parity) at ν, when GSL is trusted there
    !> (order ≤ mathieu_max_order, |q| = 2|ν|/π² ≤ gsl_witness_max_q); `available` false otherwise.
    subroutine mathieu_witness(order, parity, nu, beta, available)
-      integer, intent(in) :: order, parity
-      real(wp), intent(in) :: nu
-      real(wp), intent(out) :: beta
-      logical, intent(out) :: available
+      integer, intent(in) :: order, parity  !! order n of the curve; parity: 1 even (a_n), 2 odd (b_n)
+      real(wp), intent(in) :: nu  !! Mathieu amplitude nu
+      real(wp), intent(out) :: beta  !! GSL's beta on the curve (0 when not available)
+      logical, intent(out) :: available  !! GSL is trusted at this order and q
       type(error_t), allocatable :: error
       beta = 0.0_wp
       available = order <= mathieu_max_order .and. 2.0_wp*abs(nu)/pi2 <= gsl_witness_max_q .and. &
@@ -282,12 +282,12 @@ contains
    !> |S| = 2 in [lo, hi]: between consecutive roots (and the ends) the verdict is
    !> that of S_method at the midpoint.
    subroutine unstable_intervals_from_roots(kind, alpha, method, lo, hi, roots, intervals, error)
-      integer, intent(in) :: kind
-      real(wp), intent(in) :: alpha, lo, hi
-      type(method_t), intent(in) :: method
+      integer, intent(in) :: kind  !! model_elastic or model_mathieu
+      real(wp), intent(in) :: alpha, lo, hi  !! alpha (nu); the beta window [lo, hi]
+      type(method_t), intent(in) :: method  !! the method whose verdicts are used
       real(wp), intent(in) :: roots(:)   !! ascending, inside [lo, hi]
       real(wp), allocatable, intent(out) :: intervals(:, :)  !! (2, m): [start, end] of each unstable interval
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! the method failed at a midpoint; unallocated on success
       real(wp), allocatable :: cuts(:)
       real(wp) :: s
       integer :: i
@@ -303,13 +303,13 @@ contains
 
    !> Total length of a union of disjoint intervals (2, m).
    pure real(wp) function interval_length(intervals)
-      real(wp), intent(in) :: intervals(:, :)
+      real(wp), intent(in) :: intervals(:, :)  !! (2, m): [start, end] of each interval
       interval_length = sum(intervals(2, :) - intervals(1, :))
    end function interval_length
 
    !> Length of the symmetric difference of two unions of disjoint sorted intervals.
    pure real(wp) function symmetric_difference_length(a, b) result(length)
-      real(wp), intent(in) :: a(:, :), b(:, :)
+      real(wp), intent(in) :: a(:, :), b(:, :)  !! (2, m) unions of disjoint intervals, sorted
       integer :: i, j
       real(wp) :: overlap
       overlap = 0.0_wp

@@ -119,9 +119,9 @@ contains
    !> Open `<path>.part<pid>` for writing; fails (err_io) when the place is not writable
    !> or `path` is a directory.
    subroutine open_output(file, path, error)
-      type(output_file_t), intent(out) :: file
+      type(output_file_t), intent(out) :: file  !! the open temporary file
       character(len=*), intent(in) :: path  !! final file name
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! err_io when the place is not writable
       character(len=24) :: pid
       write (pid, '(i0)') c_getpid()
       file%path = path
@@ -142,8 +142,8 @@ contains
    !> Flush the temporary file to the disk, close it and rename it onto the final name;
    !> after any failure (now or in an earlier write) the temporary file is deleted.
    subroutine commit_output(file, error)
-      type(output_file_t), intent(inout) :: file
-      type(error_t), allocatable, intent(out) :: error
+      type(output_file_t), intent(inout) :: file  !! the file written
+      type(error_t), allocatable, intent(out) :: error  !! err_io when a write, the flush, close or rename failed
       character(len=:), allocatable :: cause
       if (.not. c_associated(file%stream)) then
          call set_error(error, err_io, "cannot finish '"//file%path//"': the file is not open")
@@ -179,7 +179,7 @@ contains
 
    !> Close and delete the temporary file; the final name is left as it was.
    subroutine discard_output(file)
-      type(output_file_t), intent(inout) :: file
+      type(output_file_t), intent(inout) :: file  !! the file to abandon
       integer(c_int) :: status
       if (c_associated(file%stream)) status = c_fclose(file%stream)
       file%stream = c_null_ptr
@@ -189,14 +189,14 @@ contains
 
    !> Delete a file if it exists (no error if it does not).
    subroutine remove_file(path)
-      character(len=*), intent(in) :: path
+      character(len=*), intent(in) :: path  !! the file
       integer(c_int) :: status
       status = c_remove(c_string(path))
    end subroutine remove_file
 
    !> Whether `path` names an existing directory.
    logical function is_directory(path)
-      character(len=*), intent(in) :: path
+      character(len=*), intent(in) :: path  !! any path
       if (len(path) == 0) then
          is_directory = .false.
          return
@@ -206,10 +206,10 @@ contains
 
    !> Write the header: each of `lines` after "# ", then "# columns: <columns>".
    subroutine write_header(file, lines, columns, error)
-      type(output_file_t), intent(inout) :: file
+      type(output_file_t), intent(inout) :: file  !! the open output file
       character(len=*), intent(in) :: lines(:)  !! header text, one entry a line
       character(len=*), intent(in) :: columns   !! blank-separated column names
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! err_io when writing fails
       integer :: k
       do k = 1, size(lines)
          call write_text(file, "# "//trim(lines(k)), error)
@@ -222,9 +222,9 @@ contains
    !> incomplete: this and every later write report the failure, and commit_output
    !> deletes the file.
    subroutine write_text(file, line, error)
-      type(output_file_t), intent(inout) :: file
-      character(len=*), intent(in) :: line
-      type(error_t), allocatable, intent(out) :: error
+      type(output_file_t), intent(inout) :: file  !! the open output file
+      character(len=*), intent(in) :: line  !! the line, without its new line
+      type(error_t), allocatable, intent(out) :: error  !! err_io when writing fails
       integer(c_size_t) :: written
       if (.not. allocated(file%failure)) then
          if (.not. c_associated(file%stream)) then
@@ -271,7 +271,7 @@ contains
    !> a code of hillstab_status (status_ok or status_roundoff here, see `failed_chart_line`).
    pure function chart_line(alpha, beta, f, damped, physical, status, alpha_text, beta_text, elastic, per_second) &
       result(line)
-      real(wp), intent(in) :: alpha, beta
+      real(wp), intent(in) :: alpha, beta  !! the grid point
       type(floquet_t), intent(in) :: f  !! Floquet data of the point
       logical, intent(in) :: damped     !! write the stable_paper column
       logical, intent(in) :: physical   !! (α, β) inside the physical domain
@@ -328,7 +328,7 @@ contains
    !> mu = 0 (and mu_per_s = 0), physical as for any point, and status = `status` (status_failed).
    pure function failed_chart_line(alpha, beta, damped, physical, status, alpha_text, beta_text, elastic, &
                                    per_second) result(line)
-      real(wp), intent(in) :: alpha, beta
+      real(wp), intent(in) :: alpha, beta  !! the grid point
       logical, intent(in) :: damped     !! write the stable_paper column
       logical, intent(in) :: physical   !! (α, β) inside the physical domain
       integer, intent(in) :: status     !! per-point status code (status_failed)
@@ -383,7 +383,7 @@ contains
 
    !> Reals written in full precision, separated by one blank.
    pure function real_columns(values) result(line)
-      real(wp), intent(in) :: values(:)
+      real(wp), intent(in) :: values(:)  !! the values, finite
       character(len=25*size(values)) :: line
       write (line, '(*(es24.16e3,:,1x))') values
    end function real_columns

@@ -29,17 +29,17 @@ module hillstab_task_boundaries
 
    !> One row of the file: one curve at one α.
    type :: boundary_row_t
-      real(wp) :: alpha = 0.0_wp, beta = 0.0_wp
+      real(wp) :: alpha = 0.0_wp, beta = 0.0_wp  !! the boundary point
       integer :: trace_sign = 2          !! +2 / −2
       integer :: order = 0               !! n of a_n, b_n
       integer :: branch = 1              !! exact: 1 even (a_n), 2 odd (b_n); approximate: 1 lower, 2 upper edge
-      logical :: coexistent = .false.
-      integer :: status = status_ok
+      logical :: coexistent = .false.  !! both curves of this order coincide here (coexistence)
+      integer :: status = status_ok  !! a status_* code of hillstab_status
       real(wp) :: check = 0.0_wp         !! exact: S by auto at the point; approximate: S_method
       real(wp) :: beta_error = 0.0_wp    !! error estimate of beta
       integer :: modes = 0               !! exact: modes of the truncation; approximate: pieces
       real(wp) :: beta_gsl = 0.0_wp      !! mathieu: GSL's value (beta when unavailable)
-      logical :: gsl_ok = .false.
+      logical :: gsl_ok = .false.  !! mathieu: beta_gsl is GSL's value
    end type boundary_row_t
 
    !> The rows of one α.
@@ -66,10 +66,10 @@ contains
 
    !> All boundaries at one α, by Hill's method (checked by auto) or by root finding.
    subroutine compute_boundary_rows(scene, alpha, rows, error)
-      type(scene_t), intent(in) :: scene
-      real(wp), intent(in) :: alpha
-      type(boundary_row_t), allocatable, intent(out) :: rows(:)
-      type(error_t), allocatable, intent(out) :: error
+      type(scene_t), intent(in) :: scene  !! a validated boundaries scene
+      real(wp), intent(in) :: alpha  !! the alpha of the rows
+      type(boundary_row_t), allocatable, intent(out) :: rows(:)  !! one row per curve crossing the beta window
+      type(error_t), allocatable, intent(out) :: error  !! what failed at this alpha; unallocated on success
       type(hill_boundary_t), allocatable :: curves(:)
       type(approximate_root_t), allocatable :: roots(:)
       type(boundary_check_t) :: check
@@ -140,9 +140,9 @@ contains
 
    !> The boundaries task.
    subroutine run_boundaries(scene, quiet, error)
-      type(scene_t), intent(in) :: scene
+      type(scene_t), intent(in) :: scene  !! a validated boundaries scene
       logical, intent(in) :: quiet  !! accepted for symmetry with the other tasks: nothing is printed
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! what failed; unallocated on success
       type(output_file_t) :: file
       type(alpha_rows_t), allocatable :: per_alpha(:)
       integer, allocatable :: keys(:, :)

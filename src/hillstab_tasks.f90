@@ -28,8 +28,9 @@ module hillstab_tasks
    use hillstab_units, only: equilibrium_length
    use hillstab_monodromy, only: monodromy_trace, monodromy_trace_batch, method_name, method_segments, &
       batch_plan_t, prepare_batch
+   use hillstab_task_series, only: run_series
    use hillstab_scene, only: scene_t, read_scene, scene_namelist, task_chart, task_points, task_coefficient, &
-      task_name, grid_value, real_text, integer_text, task_boundaries
+      task_series, task_name, grid_value, real_text, integer_text, task_boundaries
    use hillstab_task_boundaries, only: run_boundaries
    use hillstab_format, only: format_es
    use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, &
@@ -69,7 +70,7 @@ contains
    subroutine run_scene_file(path, quiet, error, written)
       character(len=*), intent(in) :: path  !! scene file (a previous output file also works)
       logical, intent(in) :: quiet          !! no progress on stderr
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! what failed (err_points_failed: written with failed points)
       character(len=:), allocatable, intent(out), optional :: written  !! the file written
       type(scene_t) :: scene
       call read_scene(path, scene, error)
@@ -83,9 +84,9 @@ contains
 
    !> Run a validated scene.
    subroutine run_scene(scene, quiet, error)
-      type(scene_t), intent(in) :: scene
+      type(scene_t), intent(in) :: scene  !! a validated scene
       logical, intent(in) :: quiet  !! no progress on stderr
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! what failed (err_points_failed: written with failed points)
       select case (scene%task)
       case (task_chart)
          call run_chart(scene, quiet, error)
@@ -95,6 +96,8 @@ contains
          call run_coefficient(scene, error)
       case (task_boundaries)
          call run_boundaries(scene, quiet, error)
+      case (task_series)
+         call run_series(scene, error)
       case default
          call set_error(error, err_input, scene%source//": &scene: task: task '"//task_name(scene%task)// &
             "' is not available in this build")
@@ -103,7 +106,7 @@ contains
 
    !> `<output>_<task>.dat`.
    pure function output_path(scene) result(path)
-      type(scene_t), intent(in) :: scene
+      type(scene_t), intent(in) :: scene  !! the scene
       character(len=:), allocatable :: path
       path = scene%output//"_"//task_name(scene%task)//".dat"
    end function output_path
@@ -134,10 +137,10 @@ contains
    !> file has been written. The first failure is computed again serially, so the message
    !> does not depend on thread timing.
    subroutine failed_points_error(scene, n_failed, n_total, first, error)
-      type(scene_t), intent(in) :: scene
-      integer(int64), intent(in) :: n_failed, n_total
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      integer(int64), intent(in) :: n_failed, n_total  !! failed points; all points
       real(wp), intent(in) :: first(2)  !! alpha, beta of the first failed point
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! err_points_failed naming the count and the first point
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
       character(len=64) :: counts
@@ -163,9 +166,9 @@ contains
 
    !> Open the output file, reporting failure against `&scene output`.
    subroutine open_scene_output(scene, file, error)
-      type(scene_t), intent(in) :: scene
-      type(output_file_t), intent(out) :: file
-      type(error_t), allocatable, intent(out) :: error
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      type(output_file_t), intent(out) :: file  !! the open temporary output file
+      type(error_t), allocatable, intent(out) :: error  !! err_io naming &scene output
       type(error_t), allocatable :: cause
       call open_output(file, output_path(scene), cause)
       if (allocated(cause)) call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
@@ -213,7 +216,7 @@ contains
 
    !> Header lines describing the chart/points columns.
    function chart_header(scene, outside) result(lines)
-      type(scene_t), intent(in) :: scene
+      type(scene_t), intent(in) :: scene  !! a validated scene
       logical, intent(in) :: outside  !! some point lies outside the physical domain
       character(len=:), allocatable :: lines(:)
       character(len=200) :: extra(14)
@@ -573,7 +576,7 @@ contains
    !> its status instead.
    subroutine check_method_runs(scene, error)
       type(scene_t), intent(in) :: scene  !! a chart scene
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! why the method cannot run; unallocated when it can
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
       real(wp) :: alpha, beta
@@ -682,10 +685,11 @@ contains
       call commit_output(file, error)
    end subroutine run_coefficient
 
+   !> Start reporting the progress of a run of `total` points (nothing when quiet).
    subroutine progress_begin(progress, total, quiet)
-      type(progress_t), intent(out) :: progress
-      integer(int64), intent(in) :: total
-      logical, intent(in) :: quiet
+      type(progress_t), intent(out) :: progress  !! the progress state
+      integer(int64), intent(in) :: total  !! points to compute
+      logical, intent(in) :: quiet  !! no progress on stderr
       progress%enabled = .not. quiet
       progress%total = total
       call system_clock(progress%start, progress%ticks)
@@ -696,8 +700,8 @@ contains
    !> Report `done` of `total` points: percentage, rate and time left, once the run
    !> has taken a second; redrawn in place on a terminal, a line every 5 s otherwise.
    subroutine progress_update(progress, done)
-      type(progress_t), intent(inout) :: progress
-      integer(int64), intent(in) :: done
+      type(progress_t), intent(inout) :: progress  !! the progress state
+      integer(int64), intent(in) :: done  !! points computed so far
       integer(int64) :: now
       real(wp) :: elapsed, since_last, rate, left, interval
       character(len=160) :: text
@@ -725,16 +729,17 @@ contains
       progress%last = now
    end subroutine progress_update
 
+   !> End the progress display (a final new line on a terminal).
    subroutine progress_end(progress)
-      type(progress_t), intent(in) :: progress
+      type(progress_t), intent(in) :: progress  !! the progress state
       if (progress%shown .and. progress%terminal) write (error_unit, '(a)') ""
    end subroutine progress_end
 
    !> Say on stderr (even when quiet: it qualifies the results) how many points could only
    !> be computed to the round-off level of double precision, not to the tolerance.
    subroutine warn_inaccurate(scene, n, first)
-      type(scene_t), intent(in) :: scene
-      integer(int64), intent(in) :: n
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      integer(int64), intent(in) :: n  !! number of round-off limited points
       real(wp), intent(in) :: first(2)  !! alpha, beta of the first such point
       character(len=32) :: count_text
       if (n == 0) return
