@@ -2,6 +2,7 @@
 # `make run`: build hillstab, run the scenes of data/scenes (the default chart
 # pair first), draw the figures with gnuplot, and say where the files are.
 #   out/default.png  the exact chart beside the paper's eq. (37) chart
+#   out/fig4.png     the nonlinear pendulum of the paper's Fig. 4, cases (a)-(h)
 #   out/fig2.png, out/fig3.png, out/figA1.png, out/figA3.png, out/figA4.png, out/damped.png
 # HILLSTAB_SCENES=DIR runs the scenes of DIR instead (same names expected).
 set -euo pipefail
@@ -9,8 +10,9 @@ cd "$(dirname "$0")/.."
 
 scenes_dir=${HILLSTAB_SCENES:-data/scenes}
 scenes=(default_exact default_paper fig4_points fig2_coefficient
-        figA_mathieu_formula figA_mathieu_segments4 figA_mathieu_exact damped spring_physical)
-plots=(default fig2 fig3 figA damped)
+        figA_mathieu_formula figA_mathieu_segments4 figA_mathieu_exact damped spring_physical
+        fig4a fig4b fig4c fig4d fig4e fig4f fig4g fig4h)
+plots=(default fig2 fig3 figA damped fig4)
 
 command -v gnuplot >/dev/null 2>&1 || { echo "run_default: gnuplot not found (run scripts/setup.sh)" >&2; exit 1; }
 

@@ -26,9 +26,11 @@ module hillstab
    use hillstab_rk
    use hillstab_monodromy_rk
    use hillstab_pendulum
+   use hillstab_pendulum_analysis
    use hillstab_scene
    use hillstab_output
    use hillstab_tasks
+   use hillstab_task_series
    implicit none
    public
 end module hillstab

@@ -19,6 +19,8 @@ program tester
    use test_poincare, only: collect_poincare
    use test_units, only: collect_units
    use test_pendulum, only: collect_pendulum
+   use test_pendulum_analysis, only: collect_pendulum_analysis
+   use test_task_series, only: collect_task_series
    use test_hill_method, only: collect_hill_method
    use test_task_boundaries, only: collect_task_boundaries
    use test_templates, only: collect_templates
@@ -30,7 +32,7 @@ program tester
              collect_scene(), collect_tasks(), collect_format(), collect_auto(), &
              collect_units(), collect_pendulum(), collect_hill_method(), collect_templates(), &
              collect_batch(), collect_task_boundaries(), &
-             collect_lyapunov(), collect_poincare()]
+             collect_lyapunov(), collect_poincare(), collect_pendulum_analysis(), collect_task_series()]
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester
