@@ -3,7 +3,9 @@
 #   make test           run the test suite
 # both install what is missing first (scripts/setup.sh). Further targets:
 #   make test-debug     tests again with runtime checks and floating-point traps
-#   make bench          speed-against-error benchmark (out/bench_*.dat, out/bench*.png)
+#   make bench          speed-against-error benchmark (out/bench_*.dat, out/bench*.png) and the
+#                       transition-curve benchmark (out/bench_boundaries.dat)
+#   make area           where the approximate charts are wrong: misclassified area (out/area*.dat, out/area.png)
 #   make lib            build libhillstab.a, libhillstab.so, .mod files and the hillstab program
 #                       with plain gfortran (no fpm)
 #   make install PREFIX=/usr/local   install libraries, modules, C header, pkg-config and CMake
@@ -33,7 +35,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug setup bench lib install check-install doc doc-check clean mpi test-mpi
+.PHONY: run test test-debug setup bench area lib install check-install doc doc-check clean mpi test-mpi
 
 setup:
 	@bash scripts/setup.sh
@@ -51,6 +53,12 @@ bench: setup
 	mkdir -p out
 	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench
 	gnuplot plots/bench.gp
+	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_boundaries
+
+area: setup
+	mkdir -p out
+	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_area
+	gnuplot plots/area.gp
 
 lib: setup
 	@rm -rf $(LEGACY_DIR)/obj $(LEGACY_DIR)/mod; mkdir -p $(LEGACY_DIR)/obj $(LEGACY_DIR)/mod
@@ -106,10 +114,10 @@ mpi:
 test-mpi:
 	bash scripts/test_mpi.sh
 
-doc:
+doc: setup
 	@bash scripts/doc.sh
 
-doc-check:
+doc-check: setup
 	@python3 scripts/doc_check.py
 
 clean:

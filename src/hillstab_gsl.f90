@@ -84,7 +84,7 @@ module hillstab_gsl
    real(wp), parameter :: chunk_log_growth = 200.0_wp
 
    integer(c_int), parameter :: gsl_success = 0
-   !> GSL_FAILURE: the step control cannot meet its epsilon even at the smallest step
+   !> Status GSL_FAILURE, returned when the step control cannot meet its epsilon even at the smallest step
    !> (rounding noise in the step's error estimate exceeds it).
    integer(c_int), parameter :: gsl_failure = -1
    !> `monodromy_gsl`: at most this many values of S per point.
@@ -101,8 +101,8 @@ module hillstab_gsl
    type, bind(C) :: gsl_odeiv2_system
       type(c_funptr) :: function      !! int f(double t, const double y[], double dydt[], void *params)
       type(c_funptr) :: jacobian      !! unused by explicit steppers: null
-      integer(c_size_t) :: dimension
-      type(c_ptr) :: params
+      integer(c_size_t) :: dimension  !! number of equations
+      type(c_ptr) :: params  !! context handed to the right-hand side
    end type gsl_odeiv2_system
 
    !> The public layout of struct gsl_odeiv2_driver_struct (gsl_odeiv2.h), read for
@@ -138,6 +138,7 @@ module hillstab_gsl
    type(c_ptr), bind(C, name="gsl_odeiv2_step_rk8pd"), protected :: gsl_odeiv2_step_rk8pd
 
    interface
+      !> Turn GSL's abort-on-error handler off (errors come back as status codes); returns the previous handler.
       function gsl_set_error_handler_off() bind(C, name="gsl_set_error_handler_off") result(previous)
          import :: c_funptr
          type(c_funptr) :: previous
@@ -173,32 +174,36 @@ module hillstab_gsl
       function gsl_odeiv2_driver_alloc_scaled_new(sys, step_type, hstart, epsabs, epsrel, a_y, a_dydt, scale_abs) &
          bind(C, name="gsl_odeiv2_driver_alloc_scaled_new") result(driver)
          import :: c_ptr, c_double, gsl_odeiv2_system
-         type(gsl_odeiv2_system), intent(in) :: sys
-         type(c_ptr), value :: step_type
+         type(gsl_odeiv2_system), intent(in) :: sys  !! the system (function, dimension, params)
+         type(c_ptr), value :: step_type  !! the stepper, e.g. gsl_odeiv2_step_rk8pd
+         !> first step; absolute and relative tolerance; weights of y and h y'
          real(c_double), value :: hstart, epsabs, epsrel, a_y, a_dydt
-         real(c_double), intent(in) :: scale_abs(*)
+         real(c_double), intent(in) :: scale_abs(*)  !! per-component scale of epsabs
          type(c_ptr) :: driver
       end function gsl_odeiv2_driver_alloc_scaled_new
 
+      !> Limit the number of steps of one gsl_odeiv2_driver_apply call.
       function gsl_odeiv2_driver_set_nmax(driver, nmax) bind(C, name="gsl_odeiv2_driver_set_nmax") result(status)
          import :: c_ptr, c_long, c_int
-         type(c_ptr), value :: driver
-         integer(c_long), value :: nmax
+         type(c_ptr), value :: driver  !! the driver
+         integer(c_long), value :: nmax  !! largest number of steps per apply (0: no limit)
          integer(c_int) :: status
       end function gsl_odeiv2_driver_set_nmax
 
+      !> Integrate from t to t1 (GSL_SUCCESS = 0, else a GSL error code).
       function gsl_odeiv2_driver_apply(driver, t, t1, y) bind(C, name="gsl_odeiv2_driver_apply") result(status)
          import :: c_ptr, c_double, c_int
-         type(c_ptr), value :: driver
-         real(c_double), intent(inout) :: t
-         real(c_double), value :: t1
-         real(c_double), intent(inout) :: y(*)
+         type(c_ptr), value :: driver  !! the driver
+         real(c_double), intent(inout) :: t  !! time, advanced to t1
+         real(c_double), value :: t1  !! end time
+         real(c_double), intent(inout) :: y(*)  !! state at t, advanced
          integer(c_int) :: status
       end function gsl_odeiv2_driver_apply
 
+      !> Free a driver.
       subroutine gsl_odeiv2_driver_free(driver) bind(C, name="gsl_odeiv2_driver_free")
          import :: c_ptr
-         type(c_ptr), value :: driver
+         type(c_ptr), value :: driver  !! the driver
       end subroutine gsl_odeiv2_driver_free
 
       function gsl_odeiv2_driver_reset(driver) bind(C, name="gsl_odeiv2_driver_reset") result(status)

@@ -93,10 +93,29 @@ contains
    function header(task, purpose) result(text)
       character(len=*), intent(in) :: task, purpose
       character(len=:), allocatable :: text
-      text = "! hillstab scene, task '"//task//"': "//purpose//"."//nl// &
+      text = wrapped("! ", "hillstab scene, task '"//task//"': "//purpose//".")// &
              "! Run: hillstab FILE.nml. Every variable is shown at its default; delete what you do not change."//nl// &
              "! '!' starts a comment; names and keyword values are case-insensitive; group order does not matter."//nl
    end function header
+
+   !> `words` after `lead`, wrapped at word boundaries into lines of at most `line_width`
+   !> characters, each continuation starting with `lead`; every line ends with a new line.
+   function wrapped(lead, words) result(text)
+      character(len=*), intent(in) :: lead, words
+      character(len=:), allocatable :: text
+      character(len=:), allocatable :: rest
+      integer :: cut, room
+      text = ""
+      rest = words
+      room = line_width - len(lead)
+      do while (len(rest) > room)
+         cut = index(rest(:room + 1), " ", back=.true.)
+         if (cut <= 1) cut = room + 1
+         text = text//lead//rest(:cut - 1)//nl
+         rest = trim(adjustl(rest(cut:)))
+      end do
+      text = text//lead//rest//nl
+   end function wrapped
 
    !> `name = value` followed by its comment at a fixed column, the comment wrapped at
    !> word boundaries onto continuation comment lines so that no line passes `line_width`.

@@ -23,6 +23,7 @@ program tester
    use test_task_series, only: collect_task_series
    use test_hill_method, only: collect_hill_method
    use test_task_boundaries, only: collect_task_boundaries
+   use test_boundaries, only: collect_boundaries
    use test_templates, only: collect_templates
    implicit none
    type(testsuite_t), allocatable :: suites(:)
@@ -31,7 +32,7 @@ program tester
              collect_monodromy(), collect_capi(), collect_gsl(), collect_rk(), collect_magnus(), &
              collect_scene(), collect_tasks(), collect_format(), collect_auto(), &
              collect_units(), collect_pendulum(), collect_hill_method(), collect_templates(), &
-             collect_batch(), collect_task_boundaries(), &
+             collect_batch(), collect_boundaries(), collect_task_boundaries(), &
              collect_lyapunov(), collect_poincare(), collect_pendulum_analysis(), collect_task_series()]
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
