@@ -3,14 +3,20 @@
 #   make test           run the test suite
 # both install what is missing first (scripts/setup.sh). Further targets:
 #   make test-debug     tests again with runtime checks and floating-point traps
-#   make bench          speed-against-error benchmark (out/bench_*.dat, out/bench*.png)
+#   make bench          speed-against-error benchmark (out/bench_*.dat, out/bench*.png) and the
+#                       transition-curve benchmark (out/bench_boundaries.dat)
+#   make area           where the approximate charts are wrong: misclassified area (out/area*.dat, out/area.png)
 #   make lib            build libhillstab.a, libhillstab.so, .mod files and the hillstab program
 #                       with plain gfortran (no fpm)
 #   make install PREFIX=/usr/local   install libraries, modules, C header, pkg-config and CMake
 #                       files and the program (the same files as the CMake install)
+#   make doc            API reference with FORD into build/doc (installs FORD through pip if missing)
+#   make doc-check      fail on an undocumented public entity or argument (scripts/doc_check.py)
 #   make check-install  install into temporary prefixes (make and CMake routes) and build and run
 #                       consumers against each: C, Fortran and fixed-form FORTRAN 77 through
 #                       pkg-config, C and Fortran through CMake find_package
+#   make mpi            build hillstab and hillstab_mpi with CMake (installs Open MPI: scripts/setup_mpi.sh)
+#   make test-mpi       hillstab_mpi against hillstab at np = 1, 2, 3, bad input, failing points
 FPM ?= bash scripts/fpm.sh
 ifeq ($(origin FC),default)
 FC = gfortran
@@ -29,7 +35,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug setup bench lib install check-install clean
+.PHONY: run test test-debug setup bench area lib install check-install doc doc-check clean mpi test-mpi
 
 setup:
 	@bash scripts/setup.sh
@@ -47,6 +53,12 @@ bench: setup
 	mkdir -p out
 	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench
 	gnuplot plots/bench.gp
+	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_boundaries
+
+area: setup
+	mkdir -p out
+	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_area
+	gnuplot plots/area.gp
 
 lib: setup
 	@rm -rf $(LEGACY_DIR)/obj $(LEGACY_DIR)/mod; mkdir -p $(LEGACY_DIR)/obj $(LEGACY_DIR)/mod
@@ -80,6 +92,8 @@ install: lib
 	sed -e 's|@MOD_SUBDIR@|$(MOD_SUBDIR)|g' -e 's|@VERSION@|$(VERSION)|g' -e 's|@SHARED_LIB@|$(SHARED_LIB)|g' \
 	   -e 's|@SONAME@|libhillstab.so.$(SOVERSION)|g' \
 	   config/hillstab-config.cmake.in > $(DESTDIR)$(PREFIX)/lib/cmake/hillstab/hillstab-config.cmake
+	sed -e 's|@VERSION@|$(VERSION)|g' config/hillstab-config-version.cmake.in \
+	   > $(DESTDIR)$(PREFIX)/lib/cmake/hillstab/hillstab-config-version.cmake
 
 check-install:
 	@rm -rf build/_install build/_install_cmake build/cmake_check
@@ -88,8 +102,23 @@ check-install:
 	@if command -v cmake >/dev/null 2>&1; then \
 	   cmake -S . -B build/cmake_check -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=$(CURDIR)/build/_install_cmake \
 	      >/dev/null && cmake --build build/cmake_check -j 2 >/dev/null && cmake --install build/cmake_check >/dev/null \
-	   && bash config/export/check.sh $(CURDIR)/build/_install_cmake cmake; \
+	   && bash config/export/check.sh $(CURDIR)/build/_install_cmake cmake \
+	   && bash config/export/same_files.sh build/_install build/_install_cmake; \
 	else echo "check-install: cmake not found, CMake route not checked"; fi
+
+mpi:
+	bash scripts/setup_mpi.sh
+	cmake -S . -B build/cmake_mpi -DHILLSTAB_MPI=ON -DCMAKE_BUILD_TYPE=Release
+	cmake --build build/cmake_mpi -j 2
+
+test-mpi:
+	bash scripts/test_mpi.sh
+
+doc: setup
+	@bash scripts/doc.sh
+
+doc-check: setup
+	@python3 scripts/doc_check.py
 
 clean:
 	rm -rf build out

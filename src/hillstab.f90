@@ -1,5 +1,5 @@
-!> hillstab: stability of the elastic pendulum through the Hill equation
-!> x'' + Q(τ) x = 0 and Floquet theory. This umbrella module re-exports the public API.
+!> The umbrella module of hillstab, the stability of the elastic pendulum through the Hill
+!> equation x'' + Q(τ) x = 0 and Floquet theory: it re-exports the public API.
 !>
 !>```fortran
 !> use hillstab
@@ -25,10 +25,13 @@ module hillstab
    use hillstab_hill_method
    use hillstab_rk
    use hillstab_monodromy_rk
+   use hillstab_refine
    use hillstab_pendulum
+   use hillstab_pendulum_analysis
    use hillstab_scene
    use hillstab_output
    use hillstab_tasks
+   use hillstab_task_series
    implicit none
    public
 end module hillstab

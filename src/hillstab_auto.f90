@@ -29,7 +29,7 @@ module hillstab_auto
    use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_stats, only: work_stats_t
-   use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, check_model
+   use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, check_model, one_minus_alpha_over_pi2
    use hillstab_transfer, only: transfer_functions, trace_t, trace_from_scaled
    implicit none
    private
@@ -73,9 +73,9 @@ module hillstab_auto
    !> Meshes prepared once for a batch sharing (model kind, α) — a chart row — and
    !> then read by all threads (`auto_prepare`, `trace_auto_batch(..., plan)`).
    type :: auto_plan_t
-      integer :: kind = 0
-      real(wp) :: alpha = -1.0_wp
-      type(mesh_cache_t) :: cache
+      integer :: kind = 0  !! model kind the meshes were built for (0: none yet)
+      real(wp) :: alpha = -1.0_wp  !! alpha the meshes were built for (-1: none yet)
+      type(mesh_cache_t) :: cache  !! the meshes, by number of steps
    end type auto_plan_t
 
 contains
@@ -83,9 +83,10 @@ contains
    !> Build the meshes the points of a batch start with (N₀ and N₀/2 of each β), so
    !> that threads working on parts of the batch share them.
    subroutine auto_prepare(kind, alpha, epsilon, betas, tolerance, plan)
-      integer, intent(in) :: kind
+      integer, intent(in) :: kind  !! model kind (model_elastic or model_mathieu)
+      !> alpha and epsilon of the batch, its betas, the target error on S
       real(wp), intent(in) :: alpha, epsilon, betas(:), tolerance
-      type(auto_plan_t), intent(out) :: plan
+      type(auto_plan_t), intent(out) :: plan  !! the meshes, to pass to trace_auto_batch
       real(wp) :: c0, c1, base
       integer :: j, n, index
       plan%kind = kind
@@ -109,8 +110,8 @@ contains
    !> times max(1, (|c₁|/12)^0.4) for large |β − π²| (fitted on β = −50 … 1000), raised
    !> to the next rung of the ladder. The a-posteriori check corrects what this misses.
    pure integer function auto_initial_steps(kind, alpha, c0, c1, tolerance) result(n)
-      integer, intent(in) :: kind
-      real(wp), intent(in) :: alpha, c0, c1, tolerance
+      integer, intent(in) :: kind  !! model kind (model_elastic or model_mathieu)
+      real(wp), intent(in) :: alpha, c0, c1, tolerance  !! alpha; Q's expansion c0, c1 at the point; the target error on S
       n = steps_for_point(auto_base_steps(kind, alpha, tolerance), kind, c0, c1)
    end function auto_initial_steps
 
@@ -186,11 +187,11 @@ contains
 
    !> Trace S of one point by method auto.
    subroutine trace_auto(model, tolerance, tr, stats, error)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
       real(wp), intent(in) :: tolerance   !! target |ΔS|/max(1, |S|)
-      type(trace_t), intent(out) :: tr
-      type(work_stats_t), intent(out) :: stats
-      type(error_t), allocatable, intent(out) :: error
+      type(trace_t), intent(out) :: tr  !! the trace S, or the best value with err_accuracy
+      type(work_stats_t), intent(out) :: stats  !! work done: steps, rejected steps, Q evaluations
+      type(error_t), allocatable, intent(out) :: error  !! failure description; unallocated on success
       type(trace_t) :: traces(1)
       call trace_auto_batch(model%kind, model%alpha, model%epsilon, [model%beta], tolerance, traces, stats, error)
       tr = traces(1)
@@ -199,17 +200,20 @@ contains
    !> Traces of the points (α, β_j, ε), j = 1 … size(betas), sharing meshes and w values.
    !> On error (a parameter out of range, or a tolerance that cannot be met) the
    !> remaining traces are still filled with the best values available.
-   subroutine trace_auto_batch(kind, alpha, epsilon, betas, tolerance, traces, stats, error, plan, reached)
+   subroutine trace_auto_batch(kind, alpha, epsilon, betas, tolerance, traces, stats, error, plan, reached, roundoff)
       integer, intent(in) :: kind            !! model_elastic or model_mathieu
       real(wp), intent(in) :: alpha          !! α (ν for the Mathieu model)
       real(wp), intent(in) :: epsilon        !! damping ε
       real(wp), intent(in) :: betas(:)       !! β values
       real(wp), intent(in) :: tolerance      !! target |ΔS|/max(1, |S|)
-      type(trace_t), intent(out) :: traces(:)
-      type(work_stats_t), intent(out) :: stats
+      type(trace_t), intent(out) :: traces(:)  !! S of each beta (best values where the tolerance is not met)
+      type(work_stats_t), intent(out) :: stats  !! work done over the batch
+      !> the first failure (err_accuracy: round-off limited); unallocated on success
       type(error_t), allocatable, intent(out) :: error
       type(auto_plan_t), intent(in), optional :: plan  !! meshes prepared for this (kind, α)
       logical, intent(out), optional :: reached(:)     !! the tolerance was met at point j
+      !> point j is round-off limited: its trace is the best value, not a failure
+      logical, intent(out), optional :: roundoff(:)
       type(mesh_cache_t) :: cache
       type(error_t), allocatable :: point_error
       real(wp) :: base, estimate
@@ -217,12 +221,13 @@ contains
       integer, allocatable :: ns(:), n_coarse(:)
       logical, allocatable :: pending(:)
       type(trace_t), allocatable :: fine(:), coarse(:)
-      real(wp), allocatable :: floors(:), coarse_floors(:), estimates(:)
+      real(wp), allocatable :: floors(:), coarse_floors(:), estimates(:), previous(:)
       real(wp) :: noise
       integer :: j, m, pass
       character(len=120) :: buffer
       stats = work_stats_t()
       if (present(reached)) reached = .false.
+      if (present(roundoff)) roundoff = .false.
       if (.not. ieee_is_finite(tolerance)) then
          call set_error(error, err_invalid_parameter, "auto: tolerance must be finite")
          return
@@ -261,7 +266,8 @@ contains
          ns(j) = steps_for_point(base, kind, c0s(j), c1s(j))
       end do
       ! first pass: S_N and S_{N/2} of all points sharing N together, in lanes
-      allocate (fine(m), coarse(m), n_coarse(m), pending(m), floors(m), coarse_floors(m), estimates(m))
+      allocate (fine(m), coarse(m), n_coarse(m), pending(m), floors(m), coarse_floors(m), estimates(m), previous(m))
+      previous = huge(1.0_wp)
       call traces_in_lanes(ns, fine, floors)
       n_coarse = ns/2
       call traces_in_lanes(n_coarse, coarse, coarse_floors)
@@ -280,10 +286,28 @@ contains
             estimates(j) = max(estimate, noise)
             if (estimate <= tolerance .and. noise <= tolerance) then
                pending(j) = .false.
+            else if (estimate <= max(tolerance, 2.0_wp*noise) .and. estimate < previous(j)/16.0_wp .and. &
+                     ns(j) < max_auto_steps .and. pass < 12) then
+               ! round-off limited, but the difference still falls like truncation (2⁶ per
+               ! doubling; at least 16 here): refine on, so that the value returned is the
+               ! best double precision allows, not the first one whose difference reached
+               ! the round-off level
+               previous(j) = estimate
+               coarse(j) = fine(j)
+               coarse_floors(j) = floors(j)
+               n_coarse(j) = ns(j)
+               ns(j) = ladder_steps(2.0_wp*ns(j))
             else if (estimate <= max(tolerance, 2.0_wp*noise)) then
-               ! the difference is at the round-off level: more steps cannot help
+               ! the difference is at the round-off level: more steps cannot help. After a
+               ! refinement that did not reduce the difference like truncation, the coarser
+               ! value is kept (the extra steps added rounding noise only)
+               if (previous(j) < huge(1.0_wp)) then
+                  fine(j) = coarse(j)
+                  floors(j) = coarse_floors(j)
+               end if
                pending(j) = .false.
                if (present(reached)) reached(j) = .false.
+               if (present(roundoff)) roundoff(j) = .true.
                write (buffer, '(a,es9.2,a,es9.2,a,es10.3,a)') "auto: the tolerance ", tolerance, &
                   " is below the round-off level ", noise, " of S (at beta = ", betas(j), "); best value returned"
                if (.not. allocated(error)) call set_error(error, err_accuracy, trim(buffer))
@@ -432,7 +456,7 @@ contains
       else
          k = alpha/pi2
          s = sin(0.5_wp*pi*tau)
-         w = 1.0_wp/((1.0_wp - k) + 2.0_wp*k*s*s)   ! 1/(1 − k cos πτ), accurate as k → 1
+         w = 1.0_wp/(one_minus_alpha_over_pi2(alpha) + 2.0_wp*k*s*s)   ! 1/(1 − k cos πτ), accurate as k → 1
       end if
    end function shape_function
 
@@ -443,10 +467,12 @@ contains
       type(mesh_t), intent(out) :: mesh
       real(wp), parameter :: nodes(3) = [0.5_wp - gauss3_offset, 0.5_wp, 0.5_wp + gauss3_offset]
       real(wp) :: kappa, k, sa, sb, t0, t1, h, cs, sn, cr, sr, x, y, r, sin0, cos0, sin1, cos1, b, sb_k, cb_k, half_sin
+      real(wp) :: one_minus_k
       integer :: i, j
       kappa = 0.0_wp
       if (kind == model_elastic) kappa = 1.0_wp - (1.0_wp - alpha/pi2)**auto_mesh_power
       k = alpha/pi2
+      one_minus_k = one_minus_alpha_over_pi2(alpha)
       mesh%n_steps = n
       allocate (mesh%h(n), mesh%w(3, n))
       ! the map tan(πτ/2) = √((1 − κ)/(1 + κ)) tan(πψ/2) as a point (X, Y) = (√(1+κ) cos, √(1−κ) sin)(πψ/2)
@@ -488,7 +514,7 @@ contains
             if (kind == model_mathieu) then
                mesh%w(j, i) = 1.0_wp - 2.0_wp*half_sin*half_sin   ! cos πτ
             else
-               mesh%w(j, i) = 1.0_wp/((1.0_wp - k) + 2.0_wp*k*half_sin*half_sin)
+               mesh%w(j, i) = 1.0_wp/(one_minus_k + 2.0_wp*k*half_sin*half_sin)
             end if
          end do
          t0 = t1
@@ -669,8 +695,8 @@ contains
    !> S by Magnus-6 on the auto mesh with exactly n steps on [0, 1] (no error control;
    !> for calibration, tests and benchmarks). Undamped β (ε = 0).
    function fixed_n_trace(kind, alpha, beta, n) result(s)
-      integer, intent(in) :: kind, n
-      real(wp), intent(in) :: alpha, beta
+      integer, intent(in) :: kind, n  !! model kind; number of Magnus-6 steps on [0, 1]
+      real(wp), intent(in) :: alpha, beta  !! the point (alpha, beta)
       real(wp) :: s
       type(mesh_t) :: mesh
       type(trace_t) :: tr(1)

@@ -37,9 +37,9 @@ contains
    !> Q(τ) of the model (elastic = 1, mathieu = 2), including the damping shift −ε²/4.
    function hillstab_c_coefficient(model, alpha, beta, epsilon, tau, q) result(status) &
       bind(C, name="hillstab_q")
-      integer(c_int), value, intent(in) :: model
-      real(c_double), value, intent(in) :: alpha, beta, epsilon, tau
-      real(c_double), intent(out) :: q
+      integer(c_int), value, intent(in) :: model  !! HILLSTAB_MODEL_ELASTIC (1) or HILLSTAB_MODEL_MATHIEU (2)
+      real(c_double), value, intent(in) :: alpha, beta, epsilon, tau  !! alpha, beta, damping epsilon >= 0, and tau
+      real(c_double), intent(out) :: q  !! Q(tau) - epsilon**2/4
       integer(c_int) :: status
       type(hill_model_t) :: m
       type(error_t), allocatable :: error
@@ -58,10 +58,12 @@ contains
    !> When |S| overflows, `trace` is ±DBL_MAX, `overflow` = 1 and `log_abs_trace` = ln|S|.
    function hillstab_c_trace(model, alpha, beta, epsilon, method, n_segments, sampling, tolerance, &
                              trace, log_abs_trace, overflow) result(status) bind(C, name="hillstab_trace")
+      !> HILLSTAB_MODEL_*, HILLSTAB_METHOD_*; pieces and HILLSTAB_SAMPLING_* (segments)
       integer(c_int), value, intent(in) :: model, method, n_segments, sampling
+      !> alpha, beta, damping epsilon >= 0; target error on S (exact methods)
       real(c_double), value, intent(in) :: alpha, beta, epsilon, tolerance
-      real(c_double), intent(out) :: trace, log_abs_trace
-      integer(c_int), intent(out) :: overflow
+      real(c_double), intent(out) :: trace, log_abs_trace  !! S (+-DBL_MAX on overflow) and ln|S|
+      integer(c_int), intent(out) :: overflow  !! 1 when |S| overflowed, else 0
       integer(c_int) :: status
       real(c_double) :: log_modulus(2), floquet_exponent
       integer(c_int) :: stable, stable_paper
@@ -75,9 +77,13 @@ contains
    function hillstab_c_floquet(model, alpha, beta, epsilon, method, n_segments, sampling, tolerance, &
                                trace, log_moduli, floquet_exponent, stable, stable_paper) result(status) &
       bind(C, name="hillstab_floquet_data")
+      !> HILLSTAB_MODEL_*, HILLSTAB_METHOD_*; pieces and HILLSTAB_SAMPLING_* (segments)
       integer(c_int), value, intent(in) :: model, method, n_segments, sampling
+      !> alpha, beta, damping epsilon >= 0; target error on S (exact methods)
       real(c_double), value, intent(in) :: alpha, beta, epsilon, tolerance
+      !> S; ln|lambda| of x's multipliers, largest first; mu per unit tau
       real(c_double), intent(out) :: trace, log_moduli(2), floquet_exponent
+      !> 1 when |S1| < 2 cosh epsilon; 1 when |S1| <= 2 (the paper's test)
       integer(c_int), intent(out) :: stable, stable_paper
       integer(c_int) :: status
       real(c_double) :: log_abs_trace
@@ -121,7 +127,7 @@ contains
 
    !> The paper's closed form eq. (37)/(48) (ε = 0 gives eq. (37)); ±DBL_MAX on overflow.
    function hillstab_c_trace_paper(alpha, beta, epsilon) result(s) bind(C, name="hillstab_trace_paper")
-      real(c_double), value, intent(in) :: alpha, beta, epsilon
+      real(c_double), value, intent(in) :: alpha, beta, epsilon  !! alpha, beta and damping epsilon (0: eq. (37))
       real(c_double) :: s
       type(trace_t) :: tr
       tr = trace_damped_paper(real(alpha, wp), real(beta, wp), real(epsilon, wp))
@@ -130,9 +136,9 @@ contains
 
    !> Copy a NUL-terminated description of `status` into `buffer` (at most `length` bytes).
    subroutine hillstab_c_error_message(status, buffer, length) bind(C, name="hillstab_error_message")
-      integer(c_int), value, intent(in) :: status
-      integer(c_size_t), value, intent(in) :: length
-      character(kind=c_char), intent(out) :: buffer(length)
+      integer(c_int), value, intent(in) :: status  !! a status returned by a hillstab function
+      integer(c_size_t), value, intent(in) :: length  !! size of buffer in bytes
+      character(kind=c_char), intent(out) :: buffer(length)  !! receives the NUL-terminated name of the status
       character(len=:), allocatable :: text
       if (status == 0) then
          text = "success"

@@ -11,7 +11,7 @@
 !> print *, hill_coefficient(model, 0.5_wp)
 !>```
 module hillstab_coefficient
-   use hillstab_kinds, only: wp, pi, pi2
+   use hillstab_kinds, only: wp, pi, pi2, pi2_lo
    use hillstab_error, only: error_t, set_error, err_invalid_parameter
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
@@ -19,7 +19,7 @@ module hillstab_coefficient
    public :: hill_model_t, model_elastic, model_mathieu, model_name
    public :: hill_coefficient, check_model, segment_average, segment_coefficients
    public :: sampling_endpoint, sampling_midpoint, sampling_average, sampling_name
-   public :: damping_shift, hill_period, in_physical_domain
+   public :: damping_shift, hill_period, in_physical_domain, one_minus_alpha_over_pi2
 
    !> Q(τ) of eq. (25), the exact linearisation about the vertical bounce.
    integer, parameter :: model_elastic = 1
@@ -48,7 +48,7 @@ contains
 
    !> Name of a model constant.
    pure function model_name(kind) result(name)
-      integer, intent(in) :: kind
+      integer, intent(in) :: kind  !! model_elastic or model_mathieu
       character(len=:), allocatable :: name
       select case (kind)
       case (model_elastic); name = "elastic"
@@ -59,7 +59,7 @@ contains
 
    !> Name of a sampling constant.
    pure function sampling_name(sampling) result(name)
-      integer, intent(in) :: sampling
+      integer, intent(in) :: sampling  !! sampling_endpoint, sampling_midpoint or sampling_average
       character(len=:), allocatable :: name
       select case (sampling)
       case (sampling_endpoint); name = "endpoint"
@@ -72,7 +72,8 @@ contains
    !> Validate the parameters: finite values, ε ≥ 0, and for the elastic model
    !> 0 ≤ α < π² (a < ρ: the mass never reaches the pivot).
    subroutine check_model(model, error)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! the parameters to check
+      !> err_invalid_parameter naming the value and the limit; unallocated when valid
       type(error_t), allocatable, intent(out) :: error
       character(len=64) :: buf
       if (.not. (ieee_is_finite(model%alpha) .and. ieee_is_finite(model%beta) &
@@ -102,34 +103,42 @@ contains
    !> True when (α, β) describes a real spring pendulum: 0 ≤ α < π² (0 ≤ a < ρ),
    !> 0 ≤ β < π² (g ≥ 0, r0 > 0; β = 0 is the pendulum without gravity).
    elemental logical function in_physical_domain(alpha, beta)
-      real(wp), intent(in) :: alpha, beta
+      real(wp), intent(in) :: alpha, beta  !! the chart point (alpha, beta)
       in_physical_domain = alpha >= 0.0_wp .and. alpha < pi2 .and. beta >= 0.0_wp .and. beta < pi2
    end function in_physical_domain
 
    !> Damping shift −ε²/4 of eq. (47).
    elemental real(wp) function damping_shift(epsilon)
-      real(wp), intent(in) :: epsilon
+      real(wp), intent(in) :: epsilon  !! damping epsilon of eq. (46)
       damping_shift = -0.25_wp*epsilon*epsilon
    end function damping_shift
 
-   !> 1 − k cos θ written as (1 − k) + 2k sin²(θ/2), accurate as k → 1 near θ = 0.
-   elemental real(wp) function one_minus_k_cos(k, theta)
-      real(wp), intent(in) :: k, theta
+   !> 1 − α/π² computed as (π² − α)/π² with π² split in two doubles: relative error of a
+   !> few ulps for every 0 ≤ α < π² (1 − k from k = α/π² loses 1 − k's relative accuracy
+   !> as α → π², about 2e-12 at α = 9.869).
+   elemental real(wp) function one_minus_alpha_over_pi2(alpha) result(one_minus_k)
+      real(wp), intent(in) :: alpha  !! α, 0 ≤ α < π²
+      one_minus_k = ((pi2 - alpha) + pi2_lo)/pi2
+   end function one_minus_alpha_over_pi2
+
+   !> 1 − (α/π²) cos θ written as (1 − α/π²) + 2(α/π²) sin²(θ/2), accurate as α → π² near θ = 0.
+   elemental real(wp) function one_minus_k_cos(alpha, theta)
+      real(wp), intent(in) :: alpha, theta
       real(wp) :: s
       s = sin(0.5_wp*theta)
-      one_minus_k_cos = (1.0_wp - k) + 2.0_wp*k*s*s
+      one_minus_k_cos = one_minus_alpha_over_pi2(alpha) + 2.0_wp*(alpha/pi2)*s*s
    end function one_minus_k_cos
 
    !> The coefficient q(τ) of the (damping-shifted) Hill equation, eq. (25)/(A1) and (47).
    elemental real(wp) function hill_coefficient(model, tau) result(q)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
       real(wp), intent(in) :: tau  !! dimensionless time, πτ = ωt
       select case (model%kind)
       case (model_mathieu)
          q = model%beta - model%alpha*cos(pi*tau)
       case default
          ! π² + (β − π²)/(1 − (α/π²) cos πτ), the second form of eq. (25)
-         q = pi2 + (model%beta - pi2)/one_minus_k_cos(model%alpha/pi2, pi*tau)
+         q = pi2 + (model%beta - pi2)/one_minus_k_cos(model%alpha, pi*tau)
       end select
       q = q + damping_shift(model%epsilon)
    end function hill_coefficient
@@ -153,7 +162,7 @@ contains
 
    !> Exact mean of q over [tau_a, tau_b] (closed form; BRIEF §3).
    pure real(wp) function segment_average(model, tau_a, tau_b) result(q)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
       real(wp), intent(in) :: tau_a, tau_b  !! segment ends, tau_a < tau_b
       real(wp) :: k, width
       width = tau_b - tau_a
@@ -171,7 +180,7 @@ contains
    !> Values of the piecewise-constant approximation of q with `n` equal pieces
    !> over one period [0, 2]: at each piece's start, midpoint, or its exact mean.
    pure subroutine segment_coefficients(model, n, sampling, q)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
       integer, intent(in) :: n          !! number of pieces, n ≥ 1
       integer, intent(in) :: sampling   !! sampling_endpoint, sampling_midpoint or sampling_average
       real(wp), intent(out) :: q(n)     !! piece values, in order of τ

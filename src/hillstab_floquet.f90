@@ -38,7 +38,7 @@ contains
    !> ||S| − 2 cosh ε| ≤ max(e, tolerance) max(1, |S|): the error bound of S, on the scale of
    !> `tolerance`, reaches across the stability threshold.
    pure function floquet_from_trace(tr, epsilon, tolerance) result(f)
-      type(trace_t), intent(in) :: tr
+      type(trace_t), intent(in) :: tr  !! trace of the (chi-)monodromy, with ln|S| and its error estimate
       real(wp), intent(in) :: epsilon  !! damping ε ≥ 0
       !> the tolerance S was computed to (relative to max(1, |S|)); default 0: the estimate alone
       real(wp), intent(in), optional :: tolerance
@@ -84,7 +84,7 @@ contains
 
    !> Floquet data from a finite trace value.
    pure function floquet_from_value(s, epsilon) result(f)
-      real(wp), intent(in) :: s, epsilon
+      real(wp), intent(in) :: s, epsilon  !! a finite trace S; damping epsilon >= 0
       type(floquet_t) :: f
       f = floquet_from_trace(trace_from_value(s), epsilon)
    end function floquet_from_value
@@ -96,7 +96,7 @@ contains
 
    !> Multipliers of x as complex numbers (moduli clamped to huge when they overflow).
    pure function multipliers(f) result(lambda)
-      type(floquet_t), intent(in) :: f
+      type(floquet_t), intent(in) :: f  !! Floquet data of the swing
       complex(wp) :: lambda(2)
       integer :: i
       do i = 1, 2
@@ -111,7 +111,7 @@ contains
 
    !> max |λ| of x, clamped to huge(1.0_wp) when it overflows.
    pure real(wp) function largest_multiplier_modulus(f)
-      type(floquet_t), intent(in) :: f
+      type(floquet_t), intent(in) :: f  !! Floquet data of the swing
       if (f%log_modulus(1) >= log_huge) then
          largest_multiplier_modulus = huge(1.0_wp)
       else

@@ -39,7 +39,7 @@ contains
 
    !> Width of `format_es(x, digits)`: sign, digits, point, "e±xxx".
    pure integer function es_width(digits)
-      integer, intent(in) :: digits
+      integer, intent(in) :: digits  !! significant digits, 1 ... 17
       es_width = digits + 7
    end function es_width
 
@@ -66,8 +66,8 @@ contains
    !> three-digit exponent, right-aligned in es_width(digits) characters.
    !> Non-finite values give "nan", "inf" or "-inf" (callers keep them out of files).
    pure function format_es(x, digits) result(text)
-      real(wp), intent(in) :: x
-      integer, intent(in) :: digits
+      real(wp), intent(in) :: x  !! the value
+      integer, intent(in) :: digits  !! significant digits, 1 ... 17
       character(len=digits + 7) :: text
       integer :: pos
       pos = 0
@@ -77,10 +77,10 @@ contains
    !> Write format_es(x, digits) into buffer(pos + 1 : pos + digits + 7) and advance pos
    !> (no allocation: this runs once per number of a chart file).
    pure subroutine put_es(buffer, pos, x, digits)
-      character(len=*), intent(inout) :: buffer
-      integer, intent(inout) :: pos
-      real(wp), intent(in) :: x
-      integer, intent(in) :: digits
+      character(len=*), intent(inout) :: buffer  !! the line being built
+      integer, intent(inout) :: pos  !! last position written; advanced past the number
+      real(wp), intent(in) :: x  !! the value, finite
+      integer, intent(in) :: digits  !! significant digits, 1 ... 17
       integer(int64) :: mantissa
       integer :: e, i, k, p, abs_e, last, biased
       real(wp) :: ax

@@ -11,6 +11,7 @@
 !> (β < α, β + α < 0) and at β = ±α where the paper's form is 0/0.
 module hillstab_formulas
    use hillstab_kinds, only: wp, pi2
+   use hillstab_coefficient, only: one_minus_alpha_over_pi2
    use hillstab_transfer, only: transfer_functions, trace_t, trace_from_scaled
    implicit none
    private
@@ -41,20 +42,20 @@ contains
    !> The paper's eqs. (48)–(50): S₁ for the damped χ equation (47):
    !> B₁² = ((β − ε²/4) + α(1 − ε²/4π²))/(1 + α/π²), B₂² = ((β − ε²/4) − α(1 − ε²/4π²))/(1 − α/π²).
    pure function trace_damped_paper(alpha, beta, epsilon) result(tr)
-      real(wp), intent(in) :: alpha, beta
+      real(wp), intent(in) :: alpha, beta  !! the chart point (alpha, beta)
       real(wp), intent(in) :: epsilon  !! damping ε = κπ/ω
       type(trace_t) :: tr
       real(wp) :: shifted, amp, b1_sq, b2_sq
       shifted = beta - 0.25_wp*epsilon**2
       amp = alpha*(1.0_wp - 0.25_wp*epsilon**2/pi2)
       b1_sq = (shifted + amp)/(1.0_wp + alpha/pi2)   ! Q(1) − ε²/4, eq. (49)
-      b2_sq = (shifted - amp)/(1.0_wp - alpha/pi2)   ! Q(0) − ε²/4, eq. (50)
+      b2_sq = (shifted - amp)/one_minus_alpha_over_pi2(alpha)   ! Q(0) − ε²/4, eq. (50)
       tr = trace_two_piece(b2_sq, b1_sq)
    end function trace_damped_paper
 
    !> The paper's eq. (A3)/(A9): Mathieu q = β − ν on [0,1), β + ν on [1,2).
    pure function trace_mathieu_two_segment(nu, beta) result(tr)
-      real(wp), intent(in) :: nu, beta
+      real(wp), intent(in) :: nu, beta  !! Mathieu amplitude nu and mean beta
       type(trace_t) :: tr
       tr = trace_two_piece(beta - nu, beta + nu)
    end function trace_mathieu_two_segment

@@ -39,7 +39,9 @@ module hillstab_gsl
       c_null_funptr, c_loc, c_funloc, c_f_pointer, c_associated
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_kinds, only: wp, int64, pi2, log_huge
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
+   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
+   use hillstab_refine, only: refinement_t, start_refinement, refine, refine_more, refine_met, refine_roundoff, &
+      roundoff_level, propagator_condition, trace_distance, first_step_factor, next_local_tolerance
    use hillstab_stats, only: work_stats_t, add_work
    use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
    use hillstab_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
@@ -49,6 +51,9 @@ module hillstab_gsl
       mathieu_max_order
    public :: monodromy_gsl, trace_gsl, monodromy_gsl_full_period, gsl_tolerance_factor
    public :: gsl_odeiv2_step_rk8pd
+   ! the odeiv2 driver, for other systems integrated by rk8pd (hillstab_gsl_lyapunov)
+   public :: gsl_odeiv2_system, gsl_odeiv2_driver_alloc_scaled_new, gsl_odeiv2_driver_set_nmax, &
+      gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_set_error_handler_off
 
    !> Curves of the even Mathieu functions ce_n: a_n(q), n ≥ 0.
    integer, parameter :: mathieu_kind_a = 1
@@ -79,6 +84,11 @@ module hillstab_gsl
    real(wp), parameter :: chunk_log_growth = 200.0_wp
 
    integer(c_int), parameter :: gsl_success = 0
+   !> Status GSL_FAILURE, returned when the step control cannot meet its epsilon even at the smallest step
+   !> (rounding noise in the step's error estimate exceeds it).
+   integer(c_int), parameter :: gsl_failure = -1
+   !> `monodromy_gsl`: at most this many values of S per point.
+   integer, parameter :: max_ladder_runs = 8
    integer(c_int), parameter :: gsl_ebadfunc = 9
 
    !> gsl_sf_result: value and GSL's error estimate.
@@ -91,8 +101,8 @@ module hillstab_gsl
    type, bind(C) :: gsl_odeiv2_system
       type(c_funptr) :: function      !! int f(double t, const double y[], double dydt[], void *params)
       type(c_funptr) :: jacobian      !! unused by explicit steppers: null
-      integer(c_size_t) :: dimension
-      type(c_ptr) :: params
+      integer(c_size_t) :: dimension  !! number of equations
+      type(c_ptr) :: params  !! context handed to the right-hand side
    end type gsl_odeiv2_system
 
    !> The public layout of struct gsl_odeiv2_driver_struct (gsl_odeiv2.h), read for
@@ -117,6 +127,7 @@ module hillstab_gsl
       type(hill_model_t) :: model
       integer(int64) :: n_evaluations = 0
       real(wp) :: peak(2) = 0.0_wp  !! largest |u|, |u'| and |v|, |v'| seen by the right-hand side
+      real(wp) :: terms(3) = 0.0_wp !! largest u², v'², |v u'| (the scaled condition, within a chunk)
    end type rhs_context_t
 
    !> `const gsl_odeiv2_step_type *gsl_odeiv2_step_rk8pd`, a global of libgsl.
@@ -127,6 +138,7 @@ module hillstab_gsl
    type(c_ptr), bind(C, name="gsl_odeiv2_step_rk8pd"), protected :: gsl_odeiv2_step_rk8pd
 
    interface
+      !> Turn GSL's abort-on-error handler off (errors come back as status codes); returns the previous handler.
       function gsl_set_error_handler_off() bind(C, name="gsl_set_error_handler_off") result(previous)
          import :: c_funptr
          type(c_funptr) :: previous
@@ -157,26 +169,48 @@ module hillstab_gsl
          type(c_ptr) :: driver
       end function gsl_odeiv2_driver_alloc_y_new
 
+      !> Driver with GSL's scaled control: the error of component i is kept below
+      !> epsabs·scale_abs(i) + epsrel·(a_y |y_i| + a_dydt h |y_i'|) (the array is copied).
+      function gsl_odeiv2_driver_alloc_scaled_new(sys, step_type, hstart, epsabs, epsrel, a_y, a_dydt, scale_abs) &
+         bind(C, name="gsl_odeiv2_driver_alloc_scaled_new") result(driver)
+         import :: c_ptr, c_double, gsl_odeiv2_system
+         type(gsl_odeiv2_system), intent(in) :: sys  !! the system (function, dimension, params)
+         type(c_ptr), value :: step_type  !! the stepper, e.g. gsl_odeiv2_step_rk8pd
+         !> first step; absolute and relative tolerance; weights of y and h y'
+         real(c_double), value :: hstart, epsabs, epsrel, a_y, a_dydt
+         real(c_double), intent(in) :: scale_abs(*)  !! per-component scale of epsabs
+         type(c_ptr) :: driver
+      end function gsl_odeiv2_driver_alloc_scaled_new
+
+      !> Limit the number of steps of one gsl_odeiv2_driver_apply call.
       function gsl_odeiv2_driver_set_nmax(driver, nmax) bind(C, name="gsl_odeiv2_driver_set_nmax") result(status)
          import :: c_ptr, c_long, c_int
-         type(c_ptr), value :: driver
-         integer(c_long), value :: nmax
+         type(c_ptr), value :: driver  !! the driver
+         integer(c_long), value :: nmax  !! largest number of steps per apply (0: no limit)
          integer(c_int) :: status
       end function gsl_odeiv2_driver_set_nmax
 
+      !> Integrate from t to t1 (GSL_SUCCESS = 0, else a GSL error code).
       function gsl_odeiv2_driver_apply(driver, t, t1, y) bind(C, name="gsl_odeiv2_driver_apply") result(status)
          import :: c_ptr, c_double, c_int
-         type(c_ptr), value :: driver
-         real(c_double), intent(inout) :: t
-         real(c_double), value :: t1
-         real(c_double), intent(inout) :: y(*)
+         type(c_ptr), value :: driver  !! the driver
+         real(c_double), intent(inout) :: t  !! time, advanced to t1
+         real(c_double), value :: t1  !! end time
+         real(c_double), intent(inout) :: y(*)  !! state at t, advanced
          integer(c_int) :: status
       end function gsl_odeiv2_driver_apply
 
+      !> Free a driver.
       subroutine gsl_odeiv2_driver_free(driver) bind(C, name="gsl_odeiv2_driver_free")
          import :: c_ptr
-         type(c_ptr), value :: driver
+         type(c_ptr), value :: driver  !! the driver
       end subroutine gsl_odeiv2_driver_free
+
+      function gsl_odeiv2_driver_reset(driver) bind(C, name="gsl_odeiv2_driver_reset") result(status)
+         import :: c_ptr, c_int
+         type(c_ptr), value :: driver
+         integer(c_int) :: status
+      end function gsl_odeiv2_driver_reset
    end interface
 
 contains
@@ -186,7 +220,7 @@ contains
       integer, intent(in) :: n             !! order, 0 ≤ n ≤ mathieu_max_order
       real(wp), intent(in) :: q            !! Mathieu parameter (any sign)
       real(wp), intent(out) :: value       !! a_n(q)
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! GSL failure; unallocated on success
       call mathieu_characteristic(mathieu_kind_a, n, q, value, error)
    end subroutine mathieu_a
 
@@ -195,7 +229,7 @@ contains
       integer, intent(in) :: n             !! order, 1 ≤ n ≤ mathieu_max_order
       real(wp), intent(in) :: q            !! Mathieu parameter (any sign)
       real(wp), intent(out) :: value       !! b_n(q)
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! GSL failure; unallocated on success
       call mathieu_characteristic(mathieu_kind_b, n, q, value, error)
    end subroutine mathieu_b
 
@@ -207,7 +241,7 @@ contains
       integer, intent(in) :: n             !! order of the curve
       real(wp), intent(in) :: nu           !! ν, the amplitude of the cosine
       real(wp), intent(out) :: beta        !! β on the curve
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! GSL failure or bad kind; unallocated on success
       real(wp) :: a
       call mathieu_characteristic(kind, n, 2.0_wp*nu/pi2, a, error)
       beta = 0.25_wp*pi2*a
@@ -275,6 +309,7 @@ contains
       context%n_evaluations = context%n_evaluations + 1
       context%peak(1) = max(context%peak(1), abs(y(1)), abs(y(2)))
       context%peak(2) = max(context%peak(2), abs(y(3)), abs(y(4)))
+      context%terms = max(context%terms, [y(1)*y(1), y(4)*y(4), abs(y(3)*y(2))])
       q = hill_coefficient(context%model, t)
       dydt(1) = y(2)
       dydt(2) = -q*y(1)
@@ -288,7 +323,7 @@ contains
    !> y(0) = (1, 0, 0, 1), to `t_end` with GSL's control epsilon `eps`,
    !> renormalizing each solution between chunks short enough that it cannot
    !> overflow. On return the solutions are exp(log_scale(j)) times the columns of y.
-   subroutine integrate_pair(model, t_end, eps, y, log_scale, log_peak, stats, error)
+   subroutine integrate_pair(model, t_end, eps, y, log_scale, log_peak, stats, error, log_condition_peak)
       type(hill_model_t), intent(in) :: model
       real(wp), intent(in) :: t_end          !! end of the integration, > 0
       real(wp), intent(in) :: eps            !! epsabs = epsrel of GSL's y-control
@@ -296,7 +331,10 @@ contains
       real(wp), intent(out) :: log_scale(2)  !! ln of the scale factor of each column
       real(wp), intent(out) :: log_peak(2)   !! ln of the largest |component| of each solution on the way
       type(work_stats_t), intent(out) :: stats
+      !> err_accuracy when GSL's control cannot meet `eps` (GSL_FAILURE), err_integration otherwise
       type(error_t), allocatable, intent(out) :: error
+      !> ln of the largest scaled condition u² + v'² + 2|v u'| along the way
+      real(wp), intent(out), optional :: log_condition_peak
       type(rhs_context_t), target :: context
       type(gsl_odeiv2_system), target :: system
       type(gsl_odeiv2_driver_view), pointer :: driver_view
@@ -304,7 +342,7 @@ contains
       type(c_ptr) :: driver
       type(c_funptr) :: previous
       real(c_double) :: state(4), t
-      real(wp) :: growth_rate, scale
+      real(wp) :: growth_rate, scale, condition_peak
       integer(c_int) :: status
       integer :: n_chunks, chunk, j
       character(len=200) :: buf
@@ -335,10 +373,15 @@ contains
 
       state = [1.0_c_double, 0.0_c_double, 0.0_c_double, 1.0_c_double]
       t = 0.0_c_double
+      condition_peak = 0.0_wp
       do chunk = 1, n_chunks
+         context%terms = 0.0_wp
          status = gsl_odeiv2_driver_apply(driver, t, real(t_end*chunk/n_chunks, c_double), state)
          if (status == gsl_success .and. .not. all(ieee_is_finite(state))) status = gsl_ebadfunc
          if (status /= gsl_success) exit
+         condition_peak = max(condition_peak, log(max(context%terms(1), tiny(1.0_wp))) + 2.0_wp*log_scale(1), &
+                              log(max(context%terms(2), tiny(1.0_wp))) + 2.0_wp*log_scale(2), &
+                              log(max(context%terms(3), tiny(1.0_wp))) + log_scale(1) + log_scale(2))
          do j = 1, 2
             if (context%peak(j) > 0.0_wp) log_peak(j) = max(log_peak(j), log(context%peak(j)) + log_scale(j))
             context%peak(j) = 0.0_wp
@@ -348,7 +391,14 @@ contains
                log_scale(j) = log_scale(j) + log(scale)
             end if
          end do
+         ! without a reset of the driver's evolution and stepper objects the next
+         ! driver_apply after a renormalization fails at once with GSL_FAILURE (the step
+         ! size collapses to 1e-17: the objects' state from before no longer matches y).
+         ! This was rk8pd's status -1 at |beta| >= 1e4 and beta << 0 near alpha -> pi^2.
+         if (n_chunks > 1) status = gsl_odeiv2_driver_reset(driver)
+         if (status /= gsl_success) exit
       end do
+      if (present(log_condition_peak)) log_condition_peak = condition_peak
 
       call c_f_pointer(driver, driver_view)
       call c_f_pointer(driver_view%evolve, evolve_view)
@@ -360,82 +410,168 @@ contains
       if (status /= gsl_success) then
          write (buf, '(a,i0,a,es12.5,a,es12.5,a,es12.5,a,es9.2,a)') "GSL rk8pd failed with status ", status, &
             " at tau = ", t, " (alpha = ", model%alpha, ", beta = ", model%beta, ", eps = ", eps, ")"
-         call set_error(error, err_integration, trim(buf))
+         if (status == gsl_failure) then
+            call set_error(error, err_accuracy, trim(buf))
+         else
+            call set_error(error, err_integration, trim(buf))
+         end if
          return
       end if
       y = reshape(real(state, wp), [2, 2])
    end subroutine integrate_pair
 
    !> Monodromy from the half period with GSL epsilon `eps`; `log_condition` is
-   !> ln κ, κ = max|u-solution|·max|v-solution| over [0, 1] / max(1, |S|).
-   subroutine half_period_monodromy(model, eps, m, log_condition, stats, error)
+   !> ln κ, κ = max|u-solution|·max|v-solution| over [0, 1] / max(1, |S|); `log_peak` the
+   !> ln of the largest scaled condition of the propagator (`propagator_condition`).
+   subroutine half_period_monodromy(model, eps, m, log_condition, stats, error, log_peak)
       type(hill_model_t), intent(in) :: model
       real(wp), intent(in) :: eps
       type(scaled_matrix_t), intent(out) :: m
       real(wp), intent(out) :: log_condition
       type(work_stats_t), intent(out) :: stats
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: y(2, 2), log_scale(2), log_peak(2)
+      real(wp), intent(out), optional :: log_peak
+      real(wp) :: y(2, 2), log_scale(2), log_peaks(2), condition_peak
       type(trace_t) :: tr
       log_condition = 0.0_wp
-      call integrate_pair(model, 1.0_wp, eps, y, log_scale, log_peak, stats, error)
+      call integrate_pair(model, 1.0_wp, eps, y, log_scale, log_peaks, stats, error, condition_peak)
+      if (present(log_peak)) log_peak = condition_peak
       if (allocated(error)) return
       m = monodromy_from_half_period(y, log_scale(1), log_scale(2))
       tr = trace_of(m)
-      log_condition = sum(log_peak) - max(0.0_wp, tr%log_abs)
+      log_condition = sum(log_peaks) - max(0.0_wp, tr%log_abs)
    end subroutine half_period_monodromy
 
    !> One-period monodromy of the χ equation from the half period: with u, v the
    !> even and odd solutions at τ = 1 (u v' − u' v = 1),
    !> M = [[u v' + u' v, 2 v v'], [2 u u', u v' + u' v]], S = 2 (u v' + u' v).
    !>
-   !> `tolerance` is the target error on S relative to max(1, |S|). GSL's control
-   !> epsilon is first tolerance·gsl_tolerance_factor; if the solutions grow inside
-   !> the period far beyond S (condition κ > gsl_rerun_condition) the integration
-   !> is repeated with the epsilon divided by κ, and `stats` counts both passes.
-   subroutine monodromy_gsl(model, tolerance, m, stats, error)
-      type(hill_model_t), intent(in) :: model
+   !> `tolerance` is the target error on S relative to max(1, |S|), with a global error
+   !> control (hillstab_refine): the half period is integrated with GSL's control epsilon
+   !> tolerance·gsl_tolerance_factor, then smaller (first by the condition of the
+   !> propagator, then tenfold) until two successive traces agree to the tolerance; the
+   !> finer monodromy is returned and their difference is the error estimate. When the
+   !> epsilon reaches its floor, GSL's control cannot meet it (GSL_FAILURE: rounding
+   !> noise), or the traces differ by rounding noise only, the finest monodromy comes back
+   !> with err_accuracy (round-off limited) and its estimate. `stats` counts every pass.
+   subroutine monodromy_gsl(model, tolerance, m, stats, error, error_estimate)
+      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
       real(wp), intent(in) :: tolerance         !! target error on S, scaled by max(1, |S|)
       type(scaled_matrix_t), intent(out) :: m   !! monodromy over [0, 2]
       type(work_stats_t), intent(out) :: stats  !! rk8pd steps, rejections, Q evaluations
+      !> GSL failure; err_accuracy when round-off limited (`m` then holds the best value)
       type(error_t), allocatable, intent(out) :: error
-      type(work_stats_t) :: second
-      real(wp) :: log_condition
+      real(wp), intent(out), optional :: error_estimate  !! estimated |ΔS|/max(1, |S|)
+      type(work_stats_t) :: part
+      type(scaled_matrix_t) :: trial, best
+      type(refinement_t) :: ladder
+      type(trace_t) :: tr
+      type(error_t), allocatable :: run_error
+      real(wp) :: log_condition, eps, log_peak, estimate, noise
+      integer :: run, loosening
+      character(len=200) :: buffer
       stats = work_stats_t()
+      if (present(error_estimate)) error_estimate = -1.0_wp
       call check_model(model, error)
       if (allocated(error)) return
       call check_tolerance(tolerance, error)
       if (allocated(error)) return
-      call half_period_monodromy(model, gsl_epsilon(tolerance, 0.0_wp), m, log_condition, stats, error)
-      if (allocated(error)) return
-      if (log_condition > log(gsl_rerun_condition) .and. gsl_epsilon(tolerance, 0.0_wp) > smallest_gsl_epsilon) then
-         call half_period_monodromy(model, gsl_epsilon(tolerance, log_condition), m, log_condition, second, error)
-         call add_work(stats, second)
+      call start_refinement(ladder, tolerance)
+      eps = max(gsl_epsilon(tolerance, 0.0_wp), 10.0_wp*smallest_gsl_epsilon)
+      ! the first pass: loosen the epsilon while GSL's control cannot meet it at all
+      do loosening = 1, 6
+         call half_period_monodromy(model, eps, best, log_condition, part, run_error, log_peak)
+         call add_work(stats, part)
+         if (.not. allocated(run_error)) exit
+         if (run_error%code /= err_accuracy .or. eps > 1.0e-6_wp) then
+            call move_alloc(run_error, error)
+            return
+         end if
+         eps = 100.0_wp*eps
+      end do
+      if (allocated(run_error)) then
+         call move_alloc(run_error, error)
+         return
+      end if
+      tr = trace_of(best)
+      call refine(ladder, tr, .false., roundoff_level(log_peak, tr%log_abs, int(part%n_steps)))
+      estimate = -1.0_wp
+      do run = 2, max_ladder_runs
+         ! the first step down also divides by the condition κ of the first pass: where the
+         ! solutions grow far beyond S inside the period (α → π², β → 0) the first pass's
+         ! error is κ times its epsilon and two loose passes can agree on a wrong value
+         eps = next_local_tolerance(eps, merge(first_step_factor(log_peak, tr%log_abs), 10.0_wp, run == 2), &
+                                    smallest_gsl_epsilon)
+         call half_period_monodromy(model, eps, trial, log_condition, part, run_error, log_peak)
+         call add_work(stats, part)
+         if (allocated(run_error)) then
+            if (run_error%code /= err_accuracy) then
+               call move_alloc(run_error, error)
+               return
+            end if
+            ! GSL cannot reach this epsilon: the previous pass is the best available
+            if (ladder%n_values >= 2) then
+               estimate = ladder%difference
+            else
+               ! only one value so far: compare it with a pass ten times looser
+               call half_period_monodromy(model, 100.0_wp*eps, trial, log_condition, part, run_error, log_peak)
+               call add_work(stats, part)
+               if (allocated(run_error)) then
+                  call move_alloc(run_error, error)
+                  return
+               end if
+               estimate = trace_distance(trace_of(best), trace_of(trial))
+            end if
+            tr = trace_of(best)
+            estimate = max(estimate, roundoff_level(log_peak, tr%log_abs, int(part%n_steps)))
+            exit
+         end if
+         tr = trace_of(trial)
+         noise = roundoff_level(log_peak, tr%log_abs, int(part%n_steps))
+         call refine(ladder, tr, eps <= 1.001_wp*smallest_gsl_epsilon .or. run == max_ladder_runs, noise)
+         best = trial
+         if (ladder%verdict /= refine_more) then
+            estimate = tr%error_estimate
+            exit
+         end if
+      end do
+      m = best
+      if (present(error_estimate)) error_estimate = estimate
+      if (estimate > tolerance .or. ladder%verdict == refine_roundoff) then
+         write (buffer, '(a,es9.2,a,es9.2,a)') "gsl: the tolerance ", tolerance, &
+            " is below what rk8pd reaches here (estimated error ", estimate, "); best value returned"
+         call set_error(error, err_accuracy, trim(buffer))
       end if
    end subroutine monodromy_gsl
 
-   !> Trace S of `monodromy_gsl`.
+   !> Trace S of `monodromy_gsl`, with its error estimate; on err_accuracy (round-off
+   !> limited) the best value is still returned.
    subroutine trace_gsl(model, tolerance, tr, stats, error)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
       real(wp), intent(in) :: tolerance         !! target error on S, scaled by max(1, |S|)
-      type(trace_t), intent(out) :: tr          !! S
+      type(trace_t), intent(out) :: tr          !! S and its error estimate
       type(work_stats_t), intent(out) :: stats  !! rk8pd steps, rejections, Q evaluations
+      !> GSL failure; err_accuracy when round-off limited (`tr` then holds the best value)
       type(error_t), allocatable, intent(out) :: error
       type(scaled_matrix_t) :: m
-      call monodromy_gsl(model, tolerance, m, stats, error)
-      if (allocated(error)) return
+      real(wp) :: estimate
+      call monodromy_gsl(model, tolerance, m, stats, error, estimate)
+      if (allocated(error)) then
+         if (error%code /= err_accuracy) return
+      end if
       tr = trace_of(m)
+      tr%error_estimate = estimate
    end subroutine trace_gsl
 
    !> Monodromy by direct rk8pd integration over the whole period [0, 2], without
    !> the symmetry (GSL epsilon tolerance·gsl_tolerance_factor, no rerun): a check
    !> of `monodromy_gsl`, at twice the work.
    subroutine monodromy_gsl_full_period(model, tolerance, m, stats, error)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
       real(wp), intent(in) :: tolerance         !! sets GSL's control epsilon
       type(scaled_matrix_t), intent(out) :: m   !! monodromy over [0, 2]
       type(work_stats_t), intent(out) :: stats  !! rk8pd steps, rejections, Q evaluations
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! GSL failure; unallocated on success
       real(wp) :: y(2, 2), log_scale(2), log_peak(2), top
       stats = work_stats_t()
       call check_model(model, error)

@@ -35,7 +35,8 @@
 !>```
 module hillstab_magnus
    use hillstab_kinds, only: wp, int64, log_huge
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
+   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
+   use hillstab_refine, only: roundoff_level, propagator_condition
    use hillstab_stats, only: work_stats_t
    use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
    use hillstab_transfer, only: scaled_matrix_t, scaled_identity, transfer_functions, multiply_matrix, &
@@ -73,8 +74,10 @@ module hillstab_magnus
    real(wp), parameter :: richardson_safety = 2.0_wp
    !> Refinement passes after the first one before giving up.
    integer, parameter :: max_refinements = 6
-   !> Cap on steps over [0, 1] (a tolerance near round-off cannot be met).
-   integer, parameter :: max_steps = 2**17
+   !> Cap on steps over [0, 1]. A tolerance below the round-off level is recognised by
+   !> `roundoff_level` before this; the cap only bounds the work (magnus4 needs about
+   !> 2^18 steps at α = 9.869, β = −1e6, tolerance 1e-10).
+   integer, parameter :: max_steps = 2**20
 
 contains
 
@@ -82,7 +85,7 @@ contains
    !> with H = diag(1, −1), E = [[0, 1], [0, 0]], F = [[0, 0], [1, 0]],
    !> [H, E] = 2E, [H, F] = −2F, [E, F] = H.
    pure function sl2_commutator(x, y) result(z)
-      real(wp), intent(in) :: x(3), y(3)
+      real(wp), intent(in) :: x(3), y(3)  !! generators [a, b, c]
       real(wp) :: z(3)
       z(1) = x(2)*y(3) - x(3)*y(2)
       z(2) = 2.0_wp*(x(1)*y(2) - x(2)*y(1))
@@ -91,7 +94,7 @@ contains
 
    !> The 2×2 matrix [[a, b], [c, −a]] of a generator g = [a, b, c].
    pure function sl2_matrix(g) result(m)
-      real(wp), intent(in) :: g(3)
+      real(wp), intent(in) :: g(3)  !! generator [a, b, c]
       real(wp) :: m(2, 2)
       m = reshape([g(1), g(3), g(2), -g(1)], [2, 2])
    end function sl2_matrix
@@ -129,15 +132,32 @@ contains
 
    !> a ← exp(Ω) a with exp(Ω) = C I + S Ω, z = −(a² + b c); overflow-safe through
    !> the log scale returned by `transfer_functions`.
-   pure subroutine multiply_exp_sl2(a, g)
-      type(scaled_matrix_t), intent(inout) :: a
+   !>
+   !> With `compensation`, the step's increment of a%log_scale is added by compensated
+   !> (Kahan) summation, the running rounding error kept in `compensation` (subtract it
+   !> from a%log_scale at the end). Plain summation of ~1e5 increments onto a log scale of
+   !> a few thousand (β = −1e6, α → π²) errs by ~1e-10 in ln|S|, more than a tolerance of
+   !> 1e-10 allows and invisible to a Richardson check.
+   pure subroutine multiply_exp_sl2(a, g, compensation)
+      type(scaled_matrix_t), intent(inout) :: a  !! the propagator, advanced
       real(wp), intent(in) :: g(3)  !! generator [a, b, c]
-      real(wp) :: c, s, log_scale, e(2, 2)
+      real(wp), intent(inout), optional :: compensation  !! Kahan carry of a%log_scale
+      real(wp) :: c, s, log_scale, e(2, 2), before, increment, total
       call transfer_functions(-(g(1)*g(1) + g(2)*g(3)), c, s, log_scale)
       e(1, 1) = c + s*g(1); e(1, 2) = s*g(2)
       e(2, 1) = s*g(3); e(2, 2) = c - s*g(1)
-      a%log_scale = a%log_scale + log_scale
-      call multiply_matrix(a, e)
+      if (present(compensation)) then
+         before = a%log_scale
+         a%log_scale = log_scale
+         call multiply_matrix(a, e)
+         increment = a%log_scale - compensation
+         total = before + increment
+         compensation = (total - before) - increment
+         a%log_scale = total
+      else
+         a%log_scale = a%log_scale + log_scale
+         call multiply_matrix(a, e)
+      end if
    end subroutine multiply_exp_sl2
 
    !> q at the Gauss nodes of [t, t + h] for a method of the given order (2 or 3 nodes).
@@ -173,22 +193,23 @@ contains
    end function step_generator
 
    !> a ← (one Magnus step over [t, t + h]) a; adds the Q evaluations to `n_evaluations`.
-   pure subroutine magnus_step(model, order, t, h, a, n_evaluations)
-      type(hill_model_t), intent(in) :: model
+   pure subroutine magnus_step(model, order, t, h, a, n_evaluations, compensation)
+      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
       integer, intent(in) :: order                    !! 4 or 6
       real(wp), intent(in) :: t, h                    !! step start and length
       type(scaled_matrix_t), intent(inout) :: a       !! propagator so far
       integer(int64), intent(inout) :: n_evaluations  !! Q evaluation counter
+      real(wp), intent(inout), optional :: compensation  !! see `multiply_exp_sl2`
       real(wp) :: q(3)
       integer :: n_nodes
       call gauss_samples(model, order, t, h, q, n_nodes)
       n_evaluations = n_evaluations + n_nodes
-      call multiply_exp_sl2(a, step_generator(order, q, h))
+      call multiply_exp_sl2(a, step_generator(order, q, h), compensation)
    end subroutine magnus_step
 
    !> Propagator Φ(1) over [0, 1] with `n_steps` equal Magnus steps.
    pure function half_period_magnus_uniform(model, order, n_steps) result(phi)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
       integer, intent(in) :: order    !! 4 or 6
       integer, intent(in) :: n_steps  !! number of equal steps on [0, 1]
       type(scaled_matrix_t) :: phi
@@ -198,7 +219,7 @@ contains
    !> Monodromy over the full period [0, 2] with `n_steps` equal Magnus steps (no use of
    !> the symmetry of q: a fixed-mesh reference for order tests and benchmarks).
    pure function monodromy_magnus_uniform(model, order, n_steps) result(m)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
       integer, intent(in) :: order    !! 4 or 6
       integer, intent(in) :: n_steps  !! number of equal steps on [0, 2]
       type(scaled_matrix_t) :: m
@@ -225,7 +246,7 @@ contains
    !> |S_a − S_b| / max(1, |S_a|) for two scaled matrices, without forming values
    !> that could overflow.
    pure real(wp) function relative_trace_difference(a, b) result(r)
-      type(scaled_matrix_t), intent(in) :: a, b
+      type(scaled_matrix_t), intent(in) :: a, b  !! the two matrices
       real(wp) :: top, ta, tb, floor_scale
       top = max(a%log_scale, b%log_scale)
       ta = (a%m(1, 1) + a%m(2, 2))*exp(max(a%log_scale - top, -log_huge))
@@ -276,7 +297,7 @@ contains
    !> March over [0, 1] with steps h ≈ θ/λ(τ) (equidistributing the monitor λ of
    !> `local_scale`), rejecting a step when λ h > reject_factor θ. Returns the mesh
    !> (n_mesh + 1 points) and the propagator Φ(1).
-   subroutine adaptive_march(model, order, theta, mesh, n_mesh, phi, stats)
+   subroutine adaptive_march(model, order, theta, mesh, n_mesh, phi, stats, log_peak)
       type(hill_model_t), intent(in) :: model
       integer, intent(in) :: order
       real(wp), intent(in) :: theta
@@ -284,13 +305,17 @@ contains
       integer, intent(out) :: n_mesh
       type(scaled_matrix_t), intent(out) :: phi
       type(work_stats_t), intent(inout) :: stats
-      real(wp) :: t, h, q(3), lambda, slope_before, h_next
+      !> ln of the largest scaled condition of Φ along the march (`propagator_condition`)
+      real(wp), intent(out) :: log_peak
+      real(wp) :: t, h, q(3), lambda, slope_before, h_next, carry
       real(wp), allocatable :: grown(:)
       integer :: n_nodes
       allocate (mesh(0:255))
       mesh(0) = 0.0_wp
       n_mesh = 0
       phi = scaled_identity()
+      carry = 0.0_wp
+      log_peak = log(2.0_wp)
       t = 0.0_wp
       ! first guess from the size of q at the start (the dip of Q sits at τ = 0)
       h = min(max_step, theta/sqrt(abs(hill_coefficient(model, 0.0_wp)) + 1.0e-300_wp))
@@ -306,7 +331,9 @@ contains
             h = max(0.1_wp*h, min(0.5_wp*h, 0.9_wp*theta/lambda))
             cycle
          end if
-         call multiply_exp_sl2(phi, step_generator(order, q, h))
+         call multiply_exp_sl2(phi, step_generator(order, q, h), carry)
+         log_peak = max(log_peak, 2.0_wp*phi%log_scale + &
+                        log(propagator_condition(phi%m(1, 1), phi%m(2, 1), phi%m(1, 2), phi%m(2, 2))))
          stats%n_steps = stats%n_steps + 1
          slope_before = sample_slope(order, q, h)
          t = t + h
@@ -326,6 +353,7 @@ contains
          h = min(max_step, max_growth*h, h_next)
       end do
       mesh(n_mesh) = 1.0_wp
+      phi%log_scale = phi%log_scale - carry
    end subroutine adaptive_march
 
    !> Φ(1) on a given mesh of [0, 1], each interval split into `split` equal steps.
@@ -335,15 +363,17 @@ contains
       real(wp), intent(in) :: mesh(0:n_mesh)
       type(scaled_matrix_t), intent(out) :: phi
       type(work_stats_t), intent(inout) :: stats
-      real(wp) :: h
+      real(wp) :: h, carry
       integer :: i, j
       phi = scaled_identity()
+      carry = 0.0_wp
       do i = 1, n_mesh
          h = (mesh(i) - mesh(i - 1))/split
          do j = 0, split - 1
-            call magnus_step(model, order, mesh(i - 1) + j*h, h, phi, stats%n_evaluations)
+            call magnus_step(model, order, mesh(i - 1) + j*h, h, phi, stats%n_evaluations, carry)
          end do
       end do
+      phi%log_scale = phi%log_scale - carry
       stats%n_steps = stats%n_steps + int(n_mesh, int64)*split
    end subroutine mesh_product
 
@@ -355,16 +385,19 @@ contains
       type(scaled_matrix_t), intent(out) :: phi
       type(work_stats_t), intent(inout) :: stats
       integer :: i
+      real(wp) :: carry
       phi = scaled_identity()
+      carry = 0.0_wp
       do i = 2, n_mesh, 2
-         call magnus_step(model, order, mesh(i - 2), mesh(i) - mesh(i - 2), phi, stats%n_evaluations)
+         call magnus_step(model, order, mesh(i - 2), mesh(i) - mesh(i - 2), phi, stats%n_evaluations, carry)
          stats%n_steps = stats%n_steps + 1
       end do
       if (mod(n_mesh, 2) == 1) then
          call magnus_step(model, order, mesh(n_mesh - 1), mesh(n_mesh) - mesh(n_mesh - 1), phi, &
-            stats%n_evaluations)
+            stats%n_evaluations, carry)
          stats%n_steps = stats%n_steps + 1
       end if
+      phi%log_scale = phi%log_scale - carry
    end subroutine coarse_product
 
    !> One-period monodromy of the χ equation by an adaptive Magnus method.
@@ -378,16 +411,18 @@ contains
    !> tolerance cannot be met (round-off, or more than 2^17 steps on [0, 1]) the best
    !> monodromy is returned together with an `err_integration` error.
    subroutine monodromy_magnus(model, order, tolerance, m, stats, error, error_estimate)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
       integer, intent(in) :: order                  !! 4 or 6
       real(wp), intent(in) :: tolerance             !! target |ΔS|/max(1, |S|)
       type(scaled_matrix_t), intent(out) :: m       !! monodromy over [0, 2]
       type(work_stats_t), intent(out) :: stats      !! steps of all passes and Q evaluations
+      !> err_integration when the tolerance is not met (best value returned)
       type(error_t), allocatable, intent(out) :: error
       real(wp), intent(out), optional :: error_estimate  !! estimated |ΔS|/max(1, |S|)
       real(wp), allocatable :: mesh(:)
       type(scaled_matrix_t) :: phi, phi_check, m_check
-      real(wp) :: theta, estimate, ratio
+      real(wp) :: theta, estimate, ratio, log_peak, noise
+      type(trace_t) :: tr
       integer :: n_mesh, split, pass, factor
       character(len=100) :: buffer
       stats = work_stats_t()
@@ -409,15 +444,19 @@ contains
       else
          theta = min(max_theta, theta_constant_6*tolerance**(1.0_wp/6))
       end if
-      call adaptive_march(model, order, theta, mesh, n_mesh, phi, stats)
+      call adaptive_march(model, order, theta, mesh, n_mesh, phi, stats, log_peak)
       m = monodromy_from_half_period(phi)
       call coarse_product(model, order, mesh, n_mesh, phi_check, stats)
       m_check = monodromy_from_half_period(phi_check)
       ratio = 2.0_wp**order
       estimate = richardson_safety*relative_trace_difference(m, m_check)/(ratio - 1.0_wp)
       split = 1
+      tr = trace_of(m)
+      noise = roundoff_level(log_peak, tr%log_abs, n_mesh)
       do pass = 1, max_refinements
-         if (estimate <= tolerance) exit
+         if (estimate <= tolerance .and. noise <= tolerance) exit
+         ! the difference is at the round-off level: more steps cannot help
+         if (estimate <= max(tolerance, 2.0_wp*noise)) exit
          ! subdivide every step by `factor` so that the error drops by factor^p below the tolerance
          factor = max(2, ceiling(1.2_wp*(estimate/tolerance)**(1.0_wp/order)))
          if (real(factor, wp)*split*n_mesh > real(max_steps, wp)) exit
@@ -426,9 +465,15 @@ contains
          call mesh_product(model, order, mesh, n_mesh, split, phi, stats)
          m = monodromy_from_half_period(phi)
          estimate = richardson_safety*relative_trace_difference(m, m_check)/(real(factor, wp)**order - 1.0_wp)
+         tr = trace_of(m)
+         noise = roundoff_level(log_peak, tr%log_abs, split*n_mesh)
       end do
-      if (present(error_estimate)) error_estimate = estimate
-      if (estimate > tolerance) then
+      if (present(error_estimate)) error_estimate = max(estimate, noise)
+      if (noise > tolerance .and. estimate <= max(tolerance, 2.0_wp*noise)) then
+         write (buffer, '(a,es9.2,a,es9.2)') "Magnus: the tolerance ", tolerance, &
+            " is below the round-off level of S here, ", noise
+         call set_error(error, err_accuracy, trim(buffer))
+      else if (estimate > tolerance) then
          write (buffer, '(a,es9.2,a,es9.2)') "Magnus: estimated error ", estimate, &
             " in S exceeds the tolerance ", tolerance
          call set_error(error, err_integration, trim(buffer))
@@ -437,13 +482,14 @@ contains
 
    !> Trace of `monodromy_magnus`.
    subroutine trace_magnus(model, order, tolerance, tr, stats, error, error_estimate)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
       integer, intent(in) :: order                  !! 4 or 6
       real(wp), intent(in) :: tolerance             !! target |ΔS|/max(1, |S|)
-      type(trace_t), intent(out) :: tr
-      type(work_stats_t), intent(out) :: stats
+      type(trace_t), intent(out) :: tr  !! the trace S
+      type(work_stats_t), intent(out) :: stats  !! work done: steps, rejected steps, Q evaluations
+      !> err_integration when the tolerance is not met (best value returned)
       type(error_t), allocatable, intent(out) :: error
-      real(wp), intent(out), optional :: error_estimate
+      real(wp), intent(out), optional :: error_estimate  !! the Richardson estimate of |dS|/max(1, |S|)
       type(scaled_matrix_t) :: m
       real(wp) :: estimate
       call monodromy_magnus(model, order, tolerance, m, stats, error, estimate)

@@ -34,7 +34,7 @@ module hillstab_monodromy
 
    !> How to compute the monodromy.
    type :: method_t
-      integer :: kind = method_auto
+      integer :: kind = method_auto  !! one of the method_* constants
       integer :: n_segments = 2             !! pieces for method_segments
       integer :: sampling = sampling_endpoint  !! piece values for method_segments
       real(wp) :: tolerance = 1.0e-10_wp    !! target error on S, scaled by max(1, |S|)
@@ -42,7 +42,7 @@ module hillstab_monodromy
 
    !> Work shared by the batches of one chart row (the meshes of method auto).
    type :: batch_plan_t
-      type(auto_plan_t) :: auto
+      type(auto_plan_t) :: auto  !! meshes of method auto
    end type batch_plan_t
 
 contains
@@ -50,17 +50,17 @@ contains
    !> Prepare what batches of the points (model%kind, model%alpha, β_j, model%epsilon)
    !> can share; pass the plan to `monodromy_trace_batch`.
    subroutine prepare_batch(model, betas, method, plan)
-      type(hill_model_t), intent(in) :: model
-      real(wp), intent(in) :: betas(:)
-      type(method_t), intent(in) :: method
-      type(batch_plan_t), intent(out) :: plan
+      type(hill_model_t), intent(in) :: model  !! kind, alpha and epsilon of the batch (beta ignored)
+      real(wp), intent(in) :: betas(:)  !! the betas of the batch
+      type(method_t), intent(in) :: method  !! how the traces will be computed
+      type(batch_plan_t), intent(out) :: plan  !! what the batches can share
       if (method%kind == method_auto) call auto_prepare(model%kind, model%alpha, model%epsilon, betas, &
                                                        method%tolerance, plan%auto)
    end subroutine prepare_batch
 
    !> Name of a method constant.
    pure function method_name(kind) result(name)
-      integer, intent(in) :: kind
+      integer, intent(in) :: kind  !! one of the method_* constants
       character(len=:), allocatable :: name
       select case (kind)
       case (method_auto); name = "auto"
@@ -76,7 +76,7 @@ contains
 
    !> Method constant from its name; −1 when unknown.
    pure integer function method_from_name(name) result(kind)
-      character(len=*), intent(in) :: name
+      character(len=*), intent(in) :: name  !! a method name, lower case
       integer :: k
       kind = -1
       do k = method_auto, method_gsl
@@ -87,7 +87,7 @@ contains
    !> Monodromy of the χ equation over one period [0, 2] with q replaced by
    !> `n` constant pieces (exact transfer matrix per piece).
    pure function monodromy_segmented(model, n, sampling) result(a)
-      type(hill_model_t), intent(in) :: model
+      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
       integer, intent(in) :: n         !! number of pieces
       integer, intent(in) :: sampling  !! sampling_endpoint | sampling_midpoint | sampling_average
       type(scaled_matrix_t) :: a
@@ -103,8 +103,8 @@ contains
 
    !> Trace of `monodromy_segmented`.
    pure function trace_segmented(model, n, sampling) result(tr)
-      type(hill_model_t), intent(in) :: model
-      integer, intent(in) :: n, sampling
+      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
+      integer, intent(in) :: n, sampling  !! number of pieces; sampling_* constant
       type(trace_t) :: tr
       tr = trace_of(monodromy_segmented(model, n, sampling))
    end function trace_segmented
@@ -112,8 +112,8 @@ contains
    !> Monodromy of the damped swing x'' + ε x' + Q x = 0 from that of χ:
    !> M_x = e^{−ε} P M_χ P⁻¹ with P = [[1, 0], [−ε/2, 1]] (x = e^{−ετ/2} χ).
    pure function swing_monodromy(chi, epsilon) result(x)
-      type(scaled_matrix_t), intent(in) :: chi
-      real(wp), intent(in) :: epsilon
+      type(scaled_matrix_t), intent(in) :: chi  !! monodromy of the chi equation (47)
+      real(wp), intent(in) :: epsilon  !! damping epsilon >= 0
       type(scaled_matrix_t) :: x
       real(wp) :: p(2, 2), p_inv(2, 2)
       p = reshape([1.0_wp, -0.5_wp*epsilon, 0.0_wp, 1.0_wp], [2, 2])
@@ -126,9 +126,10 @@ contains
 
    !> Trace of the one-period monodromy of the χ equation by the chosen method.
    subroutine monodromy_trace(model, method, tr, error, stats)
-      type(hill_model_t), intent(in) :: model
-      type(method_t), intent(in) :: method
-      type(trace_t), intent(out) :: tr
+      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
+      type(method_t), intent(in) :: method  !! method and its settings
+      type(trace_t), intent(out) :: tr  !! the trace S (S1 of the chi equation when epsilon > 0)
+      !> what failed (err_accuracy: tr is the best value); unallocated on success
       type(error_t), allocatable, intent(out) :: error
       type(work_stats_t), intent(out), optional :: stats  !! work done (Q evaluations, steps)
       type(work_stats_t) :: work
@@ -176,18 +177,18 @@ contains
    !> could not be computed; `error` describes the first of them.
    subroutine monodromy_trace_batch(model, betas, method, traces, failed, error, stats, plan, inaccurate)
       type(hill_model_t), intent(in) :: model  !! kind, alpha and epsilon of the batch (beta ignored)
-      real(wp), intent(in) :: betas(:)
-      type(method_t), intent(in) :: method
-      type(trace_t), intent(out) :: traces(size(betas))
-      logical, intent(out) :: failed(size(betas))
-      type(error_t), allocatable, intent(out) :: error
-      type(work_stats_t), intent(out), optional :: stats
+      real(wp), intent(in) :: betas(:)  !! the betas of the batch
+      type(method_t), intent(in) :: method  !! method and its settings
+      type(trace_t), intent(out) :: traces(size(betas))  !! S of each beta
+      logical, intent(out) :: failed(size(betas))  !! true where no value could be computed
+      type(error_t), allocatable, intent(out) :: error  !! the first failure; unallocated when none failed
+      type(work_stats_t), intent(out), optional :: stats  !! work done over the batch
       type(batch_plan_t), intent(in), optional :: plan  !! from `prepare_batch` for this row
       !> computed, but the tolerance is below the round-off level there (err_accuracy): the
       !> trace is the best double precision allows; not counted in `failed`
       logical, intent(out), optional :: inaccurate(size(betas))
       type(work_stats_t) :: work, part
-      logical :: reached(size(betas))
+      logical :: reached(size(betas)), roundoff(size(betas))
       type(error_t), allocatable :: point_error
       type(hill_model_t) :: point
       integer :: j
@@ -197,14 +198,16 @@ contains
       if (method%kind == method_auto) then
          if (present(plan)) then
             call trace_auto_batch(model%kind, model%alpha, model%epsilon, betas, method%tolerance, traces, work, &
-               error, plan%auto, reached)
+               error, plan%auto, reached, roundoff)
          else
             call trace_auto_batch(model%kind, model%alpha, model%epsilon, betas, method%tolerance, traces, work, &
-               error, reached=reached)
+               error, reached=reached, roundoff=roundoff)
          end if
          if (allocated(error)) then
-            if (error%code == err_accuracy) then
-               if (present(inaccurate)) inaccurate = .not. reached
+            ! only round-off limited points: their traces are the best values; a point that
+            ! failed as well is located below, point by point
+            if (error%code == err_accuracy .and. all(reached .or. roundoff)) then
+               if (present(inaccurate)) inaccurate = roundoff
                if (present(stats)) stats = work
                return
             end if

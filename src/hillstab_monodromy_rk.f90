@@ -20,7 +20,9 @@
 !>```
 module hillstab_monodromy_rk
    use hillstab_kinds, only: wp
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
+   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
+   use hillstab_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
+      roundoff_level, propagator_condition, first_step_factor, next_local_tolerance
    use hillstab_stats, only: work_stats_t, add_work
    use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
    use hillstab_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
@@ -39,6 +41,12 @@ module hillstab_monodromy_rk
    real(wp), parameter :: dopri5_tolerance_factor = 0.02_wp
    !> Local tolerances are not taken below this (round-off floor of the pairs).
    real(wp), parameter :: tolerance_floor = 1.0e-15_wp
+   !> `trace_rk`: the first local tolerance of its ladder is tolerance × this factor (twice
+   !> the calibrated `dop853_tolerance_factor`, so that the first difference usually meets
+   !> the tolerance), each further one ten times smaller.
+   real(wp), parameter :: ladder_start_factor = 2.0_wp
+   !> `trace_rk`: at most this many values of S per point.
+   integer, parameter :: max_ladder_runs = 8
    !> A solution pair is rescaled when its largest component passes 2^200.
    integer, parameter :: rescale_exponent = 200
 
@@ -46,6 +54,8 @@ module hillstab_monodromy_rk
    !> observer stops the integration before either pair can overflow.
    type, extends(rk_system_t) :: even_odd_pair_t
       type(hill_model_t) :: model
+      !> largest u², v'², |v u'| of the current (unrescaled) stretch, for the condition
+      real(wp) :: peak_terms(3) = 0.0_wp
    contains
       procedure :: rhs => even_odd_rhs
       procedure :: observe => watch_growth
@@ -65,17 +75,23 @@ contains
    end function rk_tolerances
 
    !> One-period monodromy M of the χ equation from the even/odd solutions on [0, 1].
-   subroutine monodromy_rk(model, tolerance, m, stats, error, method)
+   subroutine monodromy_rk(model, tolerance, m, stats, error, method, local_tolerance, log_peak)
       type(hill_model_t), intent(in) :: model  !! the Hill equation
       real(wp), intent(in) :: tolerance        !! target error on S, scaled by max(1, |S|)
       type(scaled_matrix_t), intent(out) :: m  !! M = e^{log_scale} m
       type(work_stats_t), intent(out) :: stats !! steps, rejections, Q evaluations
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! integration failure; unallocated on success
       integer, intent(in), optional :: method  !! rk_dop853 (default) or rk_dopri5
+      !> rtol = atol of the pair (floored at 1e-15), instead of the calibrated
+      !> `rk_tolerances(tolerance, method)`
+      real(wp), intent(in), optional :: local_tolerance
+      !> ln of the largest scaled condition of the half-period propagator along the way
+      !> (`propagator_condition`), for the round-off level of S
+      real(wp), intent(out), optional :: log_peak
       type(rk_options_t) :: options
       type(even_odd_pair_t) :: pair
       type(work_stats_t) :: part
-      real(wp) :: t, y(4), h_next, log_u, log_v
+      real(wp) :: t, y(4), h_next, log_u, log_v, peak
       integer :: e
       character(len=80) :: buffer
 
@@ -96,6 +112,7 @@ contains
          return
       end if
       options%rtol = rk_tolerances(tolerance, options%method)
+      if (present(local_tolerance)) options%rtol = max(local_tolerance, tolerance_floor)
       options%atol = options%rtol
       options%max_steps = 1000000
       pair%model = model
@@ -105,13 +122,19 @@ contains
       t = 0.0_wp
       log_u = 0.0_wp
       log_v = 0.0_wp
+      peak = 0.0_wp
       do
+         pair%peak_terms = 0.0_wp
          call rk_integrate(pair, t, 1.0_wp, y, options, part, error, h_next=h_next)
          call add_work(stats, part)
          if (allocated(error)) then
             error%message = "monodromy_rk: "//error%message
             return
          end if
+         ! fold this stretch's peak in, with the scales of its pairs (as logarithms)
+         peak = max(peak, log_or_floor(pair%peak_terms(1)) + 2.0_wp*log_u, &
+                    log_or_floor(pair%peak_terms(2)) + 2.0_wp*log_v, &
+                    log_or_floor(pair%peak_terms(3)) + log_u + log_v)
          if (t == 1.0_wp) exit
          ! stopped by watch_growth: rescale each pair by a power of two and resume
          e = exponent(maxval(abs(y(1:2))))
@@ -123,6 +146,7 @@ contains
          options%h_initial = abs(h_next)
       end do
 
+      if (present(log_peak)) log_peak = max(peak, log(propagator_condition(1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp)))
       m = monodromy_from_half_period(reshape(y, [2, 2]), log_u, log_v)
       if (.not. (all(ieee_is_finite(m%m)) .and. ieee_is_finite(m%log_scale))) then
          call set_error(error, err_integration, "monodromy_rk: non-finite monodromy")
@@ -130,23 +154,54 @@ contains
       end if
    end subroutine monodromy_rk
 
-   !> Trace S of the one-period monodromy of the χ equation by `monodromy_rk`.
+   !> Trace S of the one-period monodromy of the χ equation by `monodromy_rk`, with a
+   !> global error control (hillstab_refine): S at local tolerances ℓ, ℓ/10, … (ℓ =
+   !> 2·rk_tolerances(tolerance)) until two successive values agree to `tolerance`; the
+   !> finer one is returned with their difference as `tr%error_estimate`. When the local
+   !> tolerance reaches its floor, or the values differ only by rounding noise, the finest
+   !> value comes back with err_accuracy (round-off limited) and its estimate.
    subroutine trace_rk(model, tolerance, tr, error, stats, method)
       type(hill_model_t), intent(in) :: model  !! the Hill equation
       real(wp), intent(in) :: tolerance        !! target error on S, scaled by max(1, |S|)
-      type(trace_t), intent(out) :: tr         !! S, flagged if it overflows
+      type(trace_t), intent(out) :: tr         !! S, flagged if it overflows; its error estimate
+      !> integration failure; err_accuracy when round-off limited (`tr` then holds the best value)
       type(error_t), allocatable, intent(out) :: error
-      type(work_stats_t), intent(out), optional :: stats  !! steps, rejections, Q evaluations
+      type(work_stats_t), intent(out), optional :: stats  !! steps, rejections, Q evaluations of all runs
       integer, intent(in), optional :: method  !! rk_dop853 (default) or rk_dopri5
       type(scaled_matrix_t) :: m
-      type(work_stats_t) :: work
-      call monodromy_rk(model, tolerance, m, work, error, method)
+      type(work_stats_t) :: work, part
+      type(refinement_t) :: ladder
+      real(wp) :: local, log_peak
+      integer :: run, kind
+      character(len=160) :: buffer
+      kind = rk_dop853
+      if (present(method)) kind = method
+      work = work_stats_t()
+      tr = trace_t()
+      call start_refinement(ladder, tolerance)
+      local = max(ladder_start_factor*rk_tolerances(tolerance, kind), 10.0_wp*tolerance_floor)
+      do run = 1, max_ladder_runs
+         call monodromy_rk(model, tolerance, m, part, error, method, local_tolerance=local, log_peak=log_peak)
+         call add_work(work, part)
+         if (allocated(error)) exit
+         tr = trace_of(m)
+         call refine(ladder, tr, at_floor=local <= 1.001_wp*tolerance_floor .or. run == max_ladder_runs, &
+                     noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps)))
+         if (ladder%verdict /= refine_more) exit
+         ! the first step down also divides by the propagator's condition (`first_step_factor`)
+         local = next_local_tolerance(local, merge(first_step_factor(log_peak, tr%log_abs), 10.0_wp, run == 1), &
+                                      tolerance_floor)
+      end do
       if (present(stats)) stats = work
       if (allocated(error)) then
          tr = trace_t()
          return
       end if
-      tr = trace_of(m)
+      if (ladder%verdict == refine_roundoff) then
+         write (buffer, '(a,es9.2,a,es9.2,a)') "rk: the tolerance ", tolerance, &
+            " is below what DOP853 reaches here (estimated error ", tr%error_estimate, "); best value returned"
+         call set_error(error, err_accuracy, trim(buffer))
+      end if
    end subroutine trace_rk
 
    !> χ'' = −q χ for both solutions: one evaluation of q per call.
@@ -162,11 +217,19 @@ contains
       dydt(4) = -q*y(3)
    end subroutine even_odd_rhs
 
-   !> Stop before the solutions can overflow, so they can be rescaled.
+   !> ln x, or a very negative number for x = 0.
+   pure real(wp) function log_or_floor(x)
+      real(wp), intent(in) :: x
+      log_or_floor = -huge(1.0_wp)
+      if (x > 0.0_wp) log_or_floor = log(x)
+   end function log_or_floor
+
+   !> Record the condition terms; stop before the solutions can overflow, so they can be rescaled.
    subroutine watch_growth(self, step, stop)
       class(even_odd_pair_t), intent(inout) :: self
       type(rk_step_t), intent(in) :: step
       logical, intent(inout) :: stop
+      self%peak_terms = max(self%peak_terms, [step%y(1)**2, step%y(4)**2, abs(step%y(3)*step%y(2))])
       if (step%t < 1.0_wp) then
          stop = exponent(maxval(abs(step%y(1:2)))) > rescale_exponent &
                 .or. exponent(maxval(abs(step%y(3:4)))) > rescale_exponent

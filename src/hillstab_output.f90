@@ -69,10 +69,10 @@ contains
    !> With `binary`, the file is a byte stream: text lines (`write_text`, `write_header`)
    !> and then raw records (`write_records`).
    subroutine open_output(file, path, error, binary)
-      type(output_file_t), intent(out) :: file
+      type(output_file_t), intent(out) :: file  !! the open temporary file
       character(len=*), intent(in) :: path  !! final file name
-      type(error_t), allocatable, intent(out) :: error
-      logical, intent(in), optional :: binary
+      type(error_t), allocatable, intent(out) :: error  !! err_io when the place is not writable
+      logical, intent(in), optional :: binary  !! a byte stream (default: a text file)
       integer :: ios
       character(len=512) :: msg
       character(len=24) :: pid
@@ -95,8 +95,8 @@ contains
 
    !> Close the temporary file and rename it onto the final name.
    subroutine commit_output(file, error)
-      type(output_file_t), intent(inout) :: file
-      type(error_t), allocatable, intent(out) :: error
+      type(output_file_t), intent(inout) :: file  !! the file written
+      type(error_t), allocatable, intent(out) :: error  !! err_io when closing or renaming fails
       integer :: ios
       character(len=512) :: msg
       close (file%unit, iostat=ios, iomsg=msg)
@@ -114,7 +114,7 @@ contains
 
    !> Close and delete the temporary file; the final name is left as it was.
    subroutine discard_output(file)
-      type(output_file_t), intent(inout) :: file
+      type(output_file_t), intent(inout) :: file  !! the file to abandon
       integer :: ios
       if (file%unit /= -1) close (file%unit, status="delete", iostat=ios)
       file%unit = -1
@@ -123,7 +123,7 @@ contains
 
    !> Delete a file if it exists (no error if it does not).
    subroutine remove_file(path)
-      character(len=*), intent(in) :: path
+      character(len=*), intent(in) :: path  !! the file
       integer(c_int) :: status
       status = c_remove(c_string(path))
    end subroutine remove_file
@@ -134,10 +134,10 @@ contains
    !> (`read_csv(path, comment='#', sep=r'\s+')`). Binary files (`records` given): the header
    !> also says where the data start and how gnuplot and numpy read them.
    subroutine write_header(file, lines, columns, error, names_line, records)
-      type(output_file_t), intent(inout) :: file
+      type(output_file_t), intent(inout) :: file  !! the open output file
       character(len=*), intent(in) :: lines(:)  !! header text, one entry a line
       character(len=*), intent(in) :: columns   !! blank-separated column names
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! err_io when writing fails
       logical, intent(in), optional :: names_line  !! text: a line of column names after the header
       !> binary: (records per block, blocks), e.g. (n_beta, n_alpha) of a chart
       integer, intent(in), optional :: records(2)
@@ -217,9 +217,9 @@ contains
 
    !> Write one line of text.
    subroutine write_text(file, line, error)
-      type(output_file_t), intent(inout) :: file
-      character(len=*), intent(in) :: line
-      type(error_t), allocatable, intent(out) :: error
+      type(output_file_t), intent(inout) :: file  !! the open output file
+      character(len=*), intent(in) :: line  !! the line, without its new line
+      type(error_t), allocatable, intent(out) :: error  !! err_io when writing fails
       integer :: ios
       character(len=512) :: msg
       if (file%binary) then
@@ -233,9 +233,9 @@ contains
    !> Write records of reals as raw float64 (binary files only), column-major: one
    !> record per column of `values`.
    subroutine write_records(file, values, error)
-      type(output_file_t), intent(inout) :: file
+      type(output_file_t), intent(inout) :: file  !! the open binary file
       real(wp), intent(in) :: values(:, :)  !! (columns, records)
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! err_io when writing fails
       integer :: ios
       character(len=512) :: msg
       write (file%unit, iostat=ios, iomsg=msg) values
@@ -267,10 +267,10 @@ contains
    !> The columns named in `text` (blank- or comma-separated, case-insensitive), in the
    !> order given, each one of `available`; `bad` names the first that is not ("" when all are).
    pure subroutine find_chart_columns(text, available, ids, bad)
-      character(len=*), intent(in) :: text
+      character(len=*), intent(in) :: text  !! the names, as in `&scene columns`
       integer, intent(in) :: available(:)  !! indices offered (`default_chart_columns`)
-      integer, allocatable, intent(out) :: ids(:)
-      character(len=:), allocatable, intent(out) :: bad
+      integer, allocatable, intent(out) :: ids(:)  !! indices of the names found, in order
+      character(len=:), allocatable, intent(out) :: bad  !! the first unknown or repeated name, or ""
       character(len=14) :: names(n_chart_columns)
       character(len=:), allocatable :: word
       integer :: i, j, k, found
@@ -304,7 +304,7 @@ contains
 
    !> Column names joined by blanks.
    pure function chart_columns_text(ids) result(text)
-      integer, intent(in) :: ids(:)
+      integer, intent(in) :: ids(:)  !! indices into `chart_column_names`
       character(len=:), allocatable :: text
       character(len=14) :: names(n_chart_columns)
       integer :: k
@@ -330,7 +330,7 @@ contains
    !> lambda_max clamped to ±1e300, flags 1 or 0, stable 0.5 when marginal, mu_per_s = μ ω/π
    !> (0 without `per_second`), error_estimate −1 when the method gives none.
    pure function chart_values(alpha, beta, f, physical, status, per_second) result(v)
-      real(wp), intent(in) :: alpha, beta
+      real(wp), intent(in) :: alpha, beta  !! the grid point
       type(floquet_t), intent(in) :: f  !! Floquet data of the point
       logical, intent(in) :: physical   !! (α, β) inside the physical domain
       integer, intent(in) :: status     !! per-point status code (hillstab_status)
@@ -365,7 +365,7 @@ contains
    !> stable_paper −1, lambda_max −1, log10_abs_S −999, error_estimate −1), S = mu =
    !> mu_per_s = 0, physical as for any point, and status = `status` (status_failed).
    pure function failed_chart_values(alpha, beta, physical, status) result(v)
-      real(wp), intent(in) :: alpha, beta
+      real(wp), intent(in) :: alpha, beta  !! the grid point
       logical, intent(in) :: physical   !! (α, β) inside the physical domain
       integer, intent(in) :: status     !! per-point status code (status_failed)
       real(wp) :: v(n_chart_columns)
@@ -377,8 +377,8 @@ contains
    !> alpha, beta, S with 17 significant digits, lambda_max, mu, log10_abs_S, mu_per_s with 11,
    !> error_estimate with 4, flags and status as integers (stable 0.5 when marginal).
    pure function chart_text(ids, v, alpha_text, beta_text) result(line)
-      integer, intent(in) :: ids(:)
-      real(wp), intent(in) :: v(n_chart_columns)
+      integer, intent(in) :: ids(:)  !! the columns to write (indices into `chart_column_names`)
+      real(wp), intent(in) :: v(n_chart_columns)  !! every column's value (`chart_values`)
       !> format_es(alpha, 16), format_es(beta, 16) when already at hand (a chart formats
       !> each grid value once, not once per point)
       character(len=23), intent(in), optional :: alpha_text, beta_text
@@ -423,7 +423,7 @@ contains
 
    !> Reals written in full precision, separated by one blank.
    pure function real_columns(values) result(line)
-      real(wp), intent(in) :: values(:)
+      real(wp), intent(in) :: values(:)  !! the values, finite
       character(len=25*size(values)) :: line
       write (line, '(*(es24.16e3,:,1x))') values
    end function real_columns

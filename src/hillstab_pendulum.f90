@@ -253,6 +253,8 @@ contains
    !> in the order (x, z, x', z'). With ε = 0 its eigenvalues are those of the radial block
    !> (a harmonic oscillator over one period: {1, 1}) and the two of the swing block, whose
    !> sum is the chart's S (BRIEF §2). The swing block couples to nothing along the bounce.
+   !> With ε > 0 the radial pair has modulus e^{−ε} (κT/2 = ε), and the swing block is
+   !> taken along the decaying radial motion, which is not the periodic orbit of eq. (47).
    subroutine pendulum_bounce_monodromy(p, rtol, m, stats, error)
       type(pendulum_t), intent(in) :: p       !! the pendulum
       real(wp), intent(in) :: rtol            !! relative tolerance of the integration (> 0)

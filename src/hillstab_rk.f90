@@ -74,7 +74,7 @@ module hillstab_rk
       real(wp) :: beta = -1.0_wp          !! PI (Lund) stabilisation; < 0 → 0.04 (DOPRI5), 0 (DOP853)
       real(wp) :: fac_min = 0.0_wp        !! smallest h_new/h; 0 → 0.2 (DOPRI5), 0.333 (DOP853)
       real(wp) :: fac_max = 0.0_wp        !! largest h_new/h; 0 → 10 (DOPRI5), 6 (DOP853)
-      logical :: dense_output = .false.   !! DOP853: build the 7th-order interpolant every step
+      logical :: dense_output = .false.   !! build DOP853's 7th-order interpolant every step
                                           !! (3 more evaluations); implied by `t_out`
    end type rk_options_t
 
@@ -83,7 +83,7 @@ module hillstab_rk
    !> interpolant is of order `dense_order`: 4 (DOPRI5), 7 (DOP853 with dense output),
    !> or 3 (DOP853 without: the cubic Hermite interpolant from the end values and slopes).
    type :: rk_step_t
-      integer :: method = rk_dop853
+      integer :: method = rk_dop853  !! the pair that made the step (rk_dopri5 or rk_dop853)
       integer(int64) :: index = 0        !! number of this accepted step (0: the initial point)
       real(wp) :: t_old = 0.0_wp         !! start of the step
       real(wp) :: t = 0.0_wp             !! end of the step
@@ -323,7 +323,7 @@ contains
 
    !> Name of a method constant.
    pure function rk_method_name(method) result(name)
-      integer, intent(in) :: method
+      integer, intent(in) :: method  !! rk_dopri5 or rk_dop853
       character(len=:), allocatable :: name
       select case (method)
       case (rk_dopri5); name = "dopri5"
@@ -334,7 +334,7 @@ contains
 
    !> Classical order of the propagating formula (5 or 8; 0 if unknown).
    pure integer function rk_method_order(method) result(order)
-      integer, intent(in) :: method
+      integer, intent(in) :: method  !! rk_dopri5 or rk_dop853
       select case (method)
       case (rk_dopri5); order = 5
       case (rk_dop853); order = 8

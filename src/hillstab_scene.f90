@@ -1,4 +1,4 @@
-!> Scenes: one namelist file describes one run (task, model, method, grid, output).
+!> A scene is one namelist file describing one run (task, model, method, grid, output).
 !> This module reads and validates it into a `scene_t`; it computes nothing and
 !> writes nothing. Every error names the file, the namelist group and the variable.
 !>
@@ -9,13 +9,13 @@
 !> if (.not. allocated(error)) print '(a)', scene_namelist(scene)
 !>```
 !>
-!> Groups: `&scene` (always), then the group of the task: `&chart`, `&points` or
-!> `&coefficient`; optionally `&physical` (the pendulum in SI units, in place of the
+!> Groups: `&scene` (always), then the group of the task: `&chart`, `&points`,
+!> `&coefficient` or `&series`; optionally `&physical` (the pendulum in SI units, in place of the
 !> dimensionless ε and, for points and coefficient, of α and β). Group order in the file does not matter and other groups are
 !> ignored, so one file may hold several. Reading tolerates `#` lines before a group,
 !> which lets a run be repeated from the header of its own output file.
 module hillstab_scene
-   use hillstab_kinds, only: wp, pi2
+   use hillstab_kinds, only: wp, int64, pi2
    use hillstab_error, only: error_t, set_error, err_input
    use hillstab_coefficient, only: model_elastic, model_mathieu, model_name, sampling_endpoint, &
       sampling_average, sampling_name
@@ -28,15 +28,16 @@ module hillstab_scene
       ieee_get_halting_mode, ieee_set_halting_mode, ieee_set_flag
    implicit none
    private
-   public :: scene_t, chart_grid_t, coefficient_plan_t, read_scene, scene_namelist, default_scene
+   public :: scene_t, chart_grid_t, coefficient_plan_t, series_plan_t, max_series_lines, read_scene, &
+      scene_namelist, default_scene
    public :: task_chart, task_points, task_coefficient, task_boundaries, task_series, task_name
    public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas
 
    integer, parameter :: task_chart = 1        !! stability chart over an (α, β) grid
    integer, parameter :: task_points = 2       !! the chart's columns at listed (α, β) points
    integer, parameter :: task_coefficient = 3  !! Q(τ) and its segmented version (the paper's Fig. 2)
-   integer, parameter :: task_boundaries = 4   !! transition curves (reserved for its own issue)
-   integer, parameter :: task_series = 5       !! time series (reserved for its own issue)
+   integer, parameter :: task_boundaries = 4   !! transition curves over the α grid of `&chart`
+   integer, parameter :: task_series = 5       !! time series of the nonlinear pendulum
 
    !> Largest number of α values in `&coefficient alphas`.
    integer, parameter :: max_coefficient_alphas = 64
@@ -64,6 +65,23 @@ module hillstab_scene
       integer :: n_tau = 801              !! number of τ values
    end type coefficient_plan_t
 
+   !> What the series task simulates (`&series`): the nonlinear pendulum at (α, β) from
+   !> eq. (38), sampled `samples_per_period` times per radial period.
+   type :: series_plan_t
+      real(wp) :: alpha = 1.48_wp            !! α, in [0, π²)
+      real(wp) :: beta = 2.47_wp             !! β, in (0, π²)
+      real(wp) :: phi0 = 0.017_wp            !! initial angle [rad]
+      integer :: periods = 50                !! radial periods to simulate
+      integer :: samples_per_period = 100    !! output rows per radial period
+      real(wp) :: r0 = 0.1_wp                !! natural length [m]
+      real(wp) :: g = 9.81_wp                !! gravity [m/s²]
+      real(wp) :: vx0 = 0.0_wp               !! initial horizontal velocity [m/s]
+      real(wp) :: vz0 = 0.0_wp               !! initial downward velocity [m/s]
+   end type series_plan_t
+
+   !> A series scene writing more data lines than this is refused.
+   integer(int64), parameter :: max_series_lines = 100000000_int64
+
    !> One validated run description.
    type :: scene_t
       character(len=:), allocatable :: source       !! path of the scene file
@@ -80,6 +98,7 @@ module hillstab_scene
       character(len=:), allocatable :: points_file  !! task_points: the file of α β lines
       real(wp), allocatable :: points(:, :)         !! task_points: (2, n) α, β in file order
       type(coefficient_plan_t) :: coefficient       !! task_coefficient
+      type(series_plan_t) :: series                 !! task_series
       !> The scene has a `&physical` group: ε comes from κ and ω, and the outputs add
       !> rates per second (ω is known)
       logical :: physical = .false.
@@ -105,7 +124,7 @@ contains
 
    !> Name of a task constant.
    pure function task_name(task) result(name)
-      integer, intent(in) :: task
+      integer, intent(in) :: task  !! one of the task_* constants
       character(len=:), allocatable :: name
       select case (task)
       case (task_chart); name = "chart"
@@ -119,8 +138,8 @@ contains
 
    !> The i-th of n equally spaced values from lo to hi (n = 1: lo).
    pure real(wp) function grid_value(lo, hi, n, i)
-      real(wp), intent(in) :: lo, hi
-      integer, intent(in) :: n, i
+      real(wp), intent(in) :: lo, hi  !! first and last value
+      integer, intent(in) :: n, i  !! number of values; index 1 ... n
       if (n <= 1) then
          grid_value = lo
       else if (i == n) then
@@ -156,7 +175,7 @@ contains
    subroutine read_scene(path, scene, error)
       character(len=*), intent(in) :: path       !! scene file
       type(scene_t), intent(out) :: scene        !! the validated scene
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable; unallocated on success
       integer :: unit, ios
       character(len=512) :: msg
       scene = default_scene(path)
@@ -171,12 +190,14 @@ contains
       end if
       if (.not. allocated(error)) then
          select case (scene%task)
-         case (task_chart)
+         case (task_chart, task_boundaries)
             call read_chart_group(unit, scene, error)
          case (task_points)
             call read_points_group(unit, scene, error)
          case (task_coefficient)
             call read_coefficient_group(unit, scene, error)
+         case (task_series)
+            call read_series_group(unit, scene, error)
          end select
       end if
       if (.not. allocated(error)) call check_columns(scene, error)
@@ -190,7 +211,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer, allocatable :: available(:), ids(:)
       character(len=:), allocatable :: bad
-      if (len_trim(scene%columns) == 0) return
+      if (len_trim(scene%columns) == 0 .or. (scene%task /= task_chart .and. scene%task /= task_points)) return
       available = default_chart_columns(scene%epsilon > 0.0_wp, scene%model == model_elastic, scene%physical)
       call find_chart_columns(scene%columns, available, ids, bad)
       if (len(bad) > 0) then
@@ -236,9 +257,7 @@ contains
       end do
       if (this%task < 0) then
          call fail(error, this%source, group, "task", "unknown task '"//trim(task)// &
-            "' (expected chart, points or coefficient)")
-      else if (this%task == task_boundaries .or. this%task == task_series) then
-         call fail(error, this%source, group, "task", "task '"//trim(task)//"' is not available in this build")
+            "' (expected chart, points, coefficient, boundaries or series)")
       end if
       if (allocated(error)) return
 
@@ -286,6 +305,10 @@ contains
          return
       end if
       this%epsilon = epsilon
+      if (this%task == task_boundaries .and. epsilon > 0.0_wp) then
+         call fail(error, this%source, group, "epsilon", "task 'boundaries' draws the undamped curves: epsilon must be 0")
+         return
+      end if
 
       if (len_trim(output) == 0) then
          call fail(error, this%source, group, "output", "the output prefix is empty")
@@ -302,7 +325,7 @@ contains
       end select
       this%columns = trim(adjustl(columns))
       this%names_line = names_line
-      if (this%task == task_coefficient .and. (this%binary .or. len(this%columns) > 0)) then
+      if (this%task /= task_chart .and. this%task /= task_points .and. (this%binary .or. len(this%columns) > 0)) then
          call fail(error, this%source, group, merge("format ", "columns", this%binary), &
             "columns and format = 'binary' apply to tasks chart and points")
          return
@@ -644,6 +667,86 @@ contains
          read (text, nml=coefficient, iostat=stat, iomsg=ignored)
       end subroutine try_item
    end subroutine read_coefficient_group
+
+   !> `&series`: the pendulum, its start and the sampling (contract names of the task).
+   subroutine read_series_group(unit, scene, error)
+      integer, intent(in) :: unit
+      type(scene_t), intent(inout) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: alpha, beta, phi0, r0, g, vx0, vz0
+      integer :: periods, samples_per_period
+      namelist /series/ alpha, beta, phi0, periods, samples_per_period, r0, g, vx0, vz0
+      character(len=*), parameter :: group = "series"
+      character(len=*), parameter :: names(9) = [character(len=18) :: "alpha", "beta", "phi0", "periods", &
+         "samples_per_period", "r0", "g", "vx0", "vz0"]
+      character(len=*), parameter :: kinds(9) = [character(len=13) :: "a real number", "a real number", &
+         "a real number", "an integer", "an integer", "a real number", "a real number", "a real number", &
+         "a real number"]
+      real(wp) :: values(7)
+      integer :: ios, k
+      character(len=512) :: msg
+      character(len=:), allocatable :: bad
+      associate (plan => scene%series)
+         alpha = plan%alpha; beta = plan%beta; phi0 = plan%phi0; periods = plan%periods
+         samples_per_period = plan%samples_per_period; r0 = plan%r0; g = plan%g; vx0 = plan%vx0; vz0 = plan%vz0
+      end associate
+      call without_fpe_halting(read_it)
+      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
+      if (allocated(error)) return
+      values = [alpha, beta, phi0, r0, g, vx0, vz0]
+      do k = 1, 7
+         call require_finite(scene%source, group, trim(names(merge(k, k + 2, k <= 3))), values(k), error)
+         if (allocated(error)) return
+      end do
+      if (scene%physical) then
+         call fail(error, scene%source, "physical", "r0", "the series task takes r0 and g in &series and the "// &
+            "damping as &scene epsilon; leave out &physical")
+      else if (scene%model /= model_elastic) then
+         call fail(error, scene%source, "scene", "model", "the series task simulates the elastic pendulum: "// &
+            "model must be 'elastic'")
+      else if (alpha < 0.0_wp .or. alpha >= pi2) then
+         call fail(error, scene%source, group, "alpha", "must lie in [0, pi**2 = "//real_text(pi2)// &
+            ") (amplitude a < rho), got "//real_text(alpha))
+      else if (beta <= 0.0_wp .or. beta >= pi2) then
+         call fail(error, scene%source, group, "beta", "must lie in (0, pi**2 = "//real_text(pi2)// &
+            "), the physical domain (r0 > 0), got "//real_text(beta))
+      else if (periods < 1) then
+         call fail(error, scene%source, group, "periods", "must be >= 1, got "//integer_text(periods))
+      else if (samples_per_period < 1) then
+         call fail(error, scene%source, group, "samples_per_period", "must be >= 1, got "// &
+            integer_text(samples_per_period))
+      else if (.not. r0 > 0.0_wp) then
+         call fail(error, scene%source, group, "r0", "the natural length must be > 0, got "//real_text(r0))
+      else if (.not. g > 0.0_wp) then
+         call fail(error, scene%source, group, "g", "gravity must be > 0, got "//real_text(g))
+      else if (int(periods, int64)*samples_per_period + 1 > max_series_lines) then
+         call fail(error, scene%source, group, "periods", "periods * samples_per_period + 1 = "// &
+            trim(int64_text(int(periods, int64)*samples_per_period + 1))// &
+            " data lines exceed the limit of 1e8; lower periods or samples_per_period")
+      end if
+      if (allocated(error)) return
+      scene%series = series_plan_t(alpha, beta, phi0, periods, samples_per_period, r0, g, vx0, vz0)
+   contains
+      function int64_text(n) result(text)
+         integer(int64), intent(in) :: n
+         character(len=24) :: text
+         write (text, '(i0)') n
+      end function int64_text
+      subroutine read_it()
+         rewind (unit)
+         read (unit, nml=series, iostat=ios, iomsg=msg)
+         if (ios > 0) then
+            call find_bad_item(unit, group, try_item, bad)
+            if (.not. allocated(bad)) bad = ""
+         end if
+      end subroutine read_it
+      subroutine try_item(text, stat)
+         character(len=*), intent(in) :: text
+         integer, intent(out) :: stat
+         character(len=512) :: ignored
+         read (text, nml=series, iostat=stat, iomsg=ignored)
+      end subroutine try_item
+   end subroutine read_series_group
 
    !> Read the points file: one `alpha beta` pair per line, `#` starts a comment,
    !> blank lines are skipped, further columns are ignored.
@@ -1080,7 +1183,7 @@ contains
 
    !> Decimal text of an integer.
    pure function integer_text(n) result(text)
-      integer, intent(in) :: n
+      integer, intent(in) :: n  !! the integer
       character(len=:), allocatable :: text
       character(len=24) :: buffer
       write (buffer, '(i0)') n
@@ -1148,7 +1251,7 @@ contains
    !> with its value (defaults filled in): `&scene`, the group of the task and, when the
    !> scene has one, `&physical`. Reading these lines back as a scene reproduces the run.
    function scene_namelist(scene) result(lines)
-      type(scene_t), intent(in) :: scene
+      type(scene_t), intent(in) :: scene  !! the scene
       character(len=:), allocatable :: lines(:)
       character(len=:), allocatable :: first, second, third
       integer :: k
@@ -1167,7 +1270,7 @@ contains
       end if
       first = first//" /"
       select case (scene%task)
-      case (task_chart)
+      case (task_chart, task_boundaries)
          second = "&chart alpha_min = "//real_text(scene%chart%alpha_min)// &
             ", alpha_max = "//real_text(scene%chart%alpha_max)//", n_alpha = "//integer_text(scene%chart%n_alpha)// &
             ", beta_min = "//real_text(scene%chart%beta_min)//", beta_max = "//real_text(scene%chart%beta_max)// &
@@ -1178,6 +1281,13 @@ contains
          else
             second = "&points file = "//quoted(scene%points_file)//" /"
          end if
+      case (task_series)
+         associate (plan => scene%series)
+            second = "&series alpha = "//real_text(plan%alpha)//", beta = "//real_text(plan%beta)// &
+               ", phi0 = "//real_text(plan%phi0)//", periods = "//integer_text(plan%periods)// &
+               ", samples_per_period = "//integer_text(plan%samples_per_period)//", r0 = "//real_text(plan%r0)// &
+               ", g = "//real_text(plan%g)//", vx0 = "//real_text(plan%vx0)//", vz0 = "//real_text(plan%vz0)//" /"
+         end associate
       case (task_coefficient)
          second = "&coefficient "
          if (size(scene%amplitudes) == 0) then
@@ -1214,8 +1324,8 @@ contains
 
    !> Read one whole line of any length from a formatted unit.
    subroutine read_text_line(unit, line, ios)
-      integer, intent(in) :: unit
-      character(len=:), allocatable, intent(out) :: line
+      integer, intent(in) :: unit  !! an open formatted unit
+      character(len=:), allocatable, intent(out) :: line  !! the line, without its end
       integer, intent(out) :: ios  !! 0, or iostat_end at the end of the file
       character(len=1024) :: chunk
       integer :: got

@@ -17,8 +17,8 @@ contains
 
    !> total ← total + part.
    pure subroutine add_work(total, part)
-      type(work_stats_t), intent(inout) :: total
-      type(work_stats_t), intent(in) :: part
+      type(work_stats_t), intent(inout) :: total  !! the sum so far
+      type(work_stats_t), intent(in) :: part  !! the work to add
       total%n_steps = total%n_steps + part%n_steps
       total%n_rejected = total%n_rejected + part%n_rejected
       total%n_evaluations = total%n_evaluations + part%n_evaluations

@@ -28,8 +28,10 @@ module hillstab_tasks
    use hillstab_units, only: equilibrium_length
    use hillstab_monodromy, only: monodromy_trace, monodromy_trace_batch, method_name, method_segments, &
       batch_plan_t, prepare_batch
+   use hillstab_task_series, only: run_series
    use hillstab_scene, only: scene_t, read_scene, scene_namelist, task_chart, task_points, task_coefficient, &
-      task_name, grid_value, real_text, integer_text
+      task_series, task_name, grid_value, real_text, integer_text, task_boundaries
+   use hillstab_task_boundaries, only: run_boundaries
    use hillstab_format, only: format_es
    use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, &
       write_text, write_records, chart_line_length, real_columns, n_chart_columns, chart_values, failed_chart_values, &
@@ -40,6 +42,9 @@ module hillstab_tasks
    implicit none
    private
    public :: run_scene_file, run_scene, output_path
+   ! the pieces a distributed driver (hillstab_batch, the MPI program) shares with the serial tasks
+   public :: scene_columns, chart_row, compute_points, chart_header, open_scene_output, check_method_runs, warn_inaccurate, &
+      failed_points_error, progress_t, progress_begin, progress_update, progress_end
 
    !> Progress on stderr for runs longer than about a second.
    type :: progress_t
@@ -66,7 +71,7 @@ contains
    subroutine run_scene_file(path, quiet, error, written)
       character(len=*), intent(in) :: path  !! scene file (a previous output file also works)
       logical, intent(in) :: quiet          !! no progress on stderr
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! what failed (err_points_failed: written with failed points)
       character(len=:), allocatable, intent(out), optional :: written  !! the file written
       type(scene_t) :: scene
       call read_scene(path, scene, error)
@@ -80,9 +85,9 @@ contains
 
    !> Run a validated scene.
    subroutine run_scene(scene, quiet, error)
-      type(scene_t), intent(in) :: scene
+      type(scene_t), intent(in) :: scene  !! a validated scene
       logical, intent(in) :: quiet  !! no progress on stderr
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! what failed (err_points_failed: written with failed points)
       select case (scene%task)
       case (task_chart)
          call run_chart(scene, quiet, error)
@@ -90,6 +95,10 @@ contains
          call run_points(scene, quiet, error)
       case (task_coefficient)
          call run_coefficient(scene, error)
+      case (task_boundaries)
+         call run_boundaries(scene, quiet, error)
+      case (task_series)
+         call run_series(scene, error)
       case default
          call set_error(error, err_input, scene%source//": &scene: task: task '"//task_name(scene%task)// &
             "' is not available in this build")
@@ -98,7 +107,7 @@ contains
 
    !> `<output>_<task>.dat` (`.bin` for format = 'binary').
    pure function output_path(scene) result(path)
-      type(scene_t), intent(in) :: scene
+      type(scene_t), intent(in) :: scene  !! the scene
       character(len=:), allocatable :: path
       if (scene%binary) then
          path = scene%output//"_"//task_name(scene%task)//".bin"
@@ -133,10 +142,10 @@ contains
    !> file has been written. The first failure is computed again serially, so the message
    !> does not depend on thread timing.
    subroutine failed_points_error(scene, n_failed, n_total, first, error)
-      type(scene_t), intent(in) :: scene
-      integer(int64), intent(in) :: n_failed, n_total
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      integer(int64), intent(in) :: n_failed, n_total  !! failed points; all points
       real(wp), intent(in) :: first(2)  !! alpha, beta of the first failed point
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! err_points_failed naming the count and the first point
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
       character(len=64) :: counts
@@ -162,9 +171,9 @@ contains
 
    !> Open the output file, reporting failure against `&scene output`.
    subroutine open_scene_output(scene, file, error)
-      type(scene_t), intent(in) :: scene
-      type(output_file_t), intent(out) :: file
-      type(error_t), allocatable, intent(out) :: error
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      type(output_file_t), intent(out) :: file  !! the open temporary output file
+      type(error_t), allocatable, intent(out) :: error  !! err_io naming &scene output
       type(error_t), allocatable :: cause
       call open_output(file, output_path(scene), cause, binary=scene%binary)
       if (allocated(cause)) call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
@@ -194,9 +203,9 @@ contains
    !> The columns a chart or points file of this scene holds: `&scene columns` when given,
    !> else all the task offers (`default_chart_columns`).
    subroutine scene_columns(scene, ids, error)
-      type(scene_t), intent(in) :: scene
-      integer, allocatable, intent(out) :: ids(:)
-      type(error_t), allocatable, intent(out) :: error
+      type(scene_t), intent(in) :: scene  !! a chart or points scene
+      integer, allocatable, intent(out) :: ids(:)  !! indices into hillstab_output's chart_column_names, in file order
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming &scene columns when a name is not offered
       integer, allocatable :: available(:)
       character(len=:), allocatable :: bad
       available = default_chart_columns(scene%epsilon > 0.0_wp, scene%model == model_elastic, scene%physical)
@@ -234,7 +243,7 @@ contains
 
    !> Header lines describing the chart/points columns.
    function chart_header(scene, outside) result(lines)
-      type(scene_t), intent(in) :: scene
+      type(scene_t), intent(in) :: scene  !! a validated scene
       logical, intent(in) :: outside  !! some point lies outside the physical domain
       character(len=:), allocatable :: lines(:)
       character(len=200) :: extra(14)
@@ -322,15 +331,11 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(output_file_t) :: file
       type(progress_t) :: progress
-      type(floquet_t) :: f
-      type(error_t), allocatable :: cause
       character(len=chart_line_length), allocatable :: lines(:)
-      logical, allocatable :: failed(:)
       logical :: damped, outside
-      real(wp) :: alpha, beta
+      real(wp) :: alpha
       real(wp), allocatable :: all_betas(:)
       character(len=23), allocatable :: beta_texts(:)
-      type(batch_plan_t) :: plan
       logical :: stopped
       character(len=chart_line_length), allocatable :: block_lines(:, :, :)
       integer, allocatable :: block_status(:, :, :), statuses(:), ids(:)
@@ -338,7 +343,7 @@ contains
       integer(int64) :: n_inaccurate, n_failed
       real(wp) :: first_inaccurate(2), first_failed(2)
       integer :: group, n_groups, g
-      integer :: i, j, n_alpha, n_beta, c, chunk, n_chunks, first, last
+      integer :: i, j, n_alpha, n_beta
 
       n_alpha = scene%chart%n_alpha
       n_beta = scene%chart%n_beta
@@ -348,17 +353,10 @@ contains
       ! an unwritable output path fails before any computing
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
-      ! a method that cannot run at all (bad parameters) fails at the first point; a point
-      ! where the computation fails is written with its status
-      alpha = scene%chart%alpha_min
-      beta = scene%chart%beta_min
-      call evaluate_point(scene, alpha, beta, f, cause)
-      if (allocated(cause)) then
-         if (cause%code == err_invalid_parameter) then
-            call point_error(scene, alpha, beta, cause, error)
-            call discard_output(file)
-            return
-         end if
+      call check_method_runs(scene, error)
+      if (allocated(error)) then
+         call discard_output(file)
+         return
       end if
       all_betas = [(grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j), j=1, n_beta)]
       allocate (beta_texts(n_beta))
@@ -378,7 +376,7 @@ contains
       stopped = .false.
       n_inaccurate = 0
       n_failed = 0
-      if (n_alpha >= 4*max_threads()) then
+      if (rows_in_parallel(scene)) then
          ! groups of rows computed in parallel (mesh preparation, integration and
          ! formatting on every core) into one of two buffers, while one thread writes the
          ! previous group from the other buffer; a group holds a few rows per thread, so
@@ -417,19 +415,9 @@ contains
       else
          ! few rows: the points of each row in parallel chunks sharing the prepared meshes
          allocate (lines(n_beta), statuses(n_beta), values(size(ids), n_beta))
-         chunk = max(16, n_beta/(8*max_threads()))
-         n_chunks = (n_beta + chunk - 1)/chunk
          do i = 1, n_alpha
             alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i)
-            call prepare_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), all_betas, scene%method, plan)
-            !$omp parallel do schedule(dynamic) default(shared) private(c, first, last)
-            do c = 1, n_chunks
-               first = (c - 1)*chunk + 1
-               last = min(n_beta, c*chunk)
-               call compute_row(scene, ids, alpha, all_betas(first:last), lines(first:last), values(:, first:last), &
-                  statuses(first:last), plan, beta_texts(first:last))
-            end do
-            !$omp end parallel do
+            call compute_row_in_chunks(scene, ids, alpha, all_betas, lines, values, statuses, beta_texts)
             call finish_row(i, alpha, lines, values, statuses)
             if (stopped) exit
          end do
@@ -521,6 +509,124 @@ contains
       end do
    end subroutine compute_row
 
+   !> A chart computes whole rows in parallel when it has enough of them, else the
+   !> chunks of each row in parallel.
+   logical function rows_in_parallel(scene)
+      type(scene_t), intent(in) :: scene
+      rows_in_parallel = scene%chart%n_alpha >= 4*max_threads()
+   end function rows_in_parallel
+
+   !> `compute_row` on a whole row, split into chunks computed in parallel that share
+   !> the meshes prepared for the row.
+   subroutine compute_row_in_chunks(scene, ids, alpha, betas, lines, values, statuses, beta_texts)
+      type(scene_t), intent(in) :: scene
+      integer, intent(in) :: ids(:)  !! the columns
+      real(wp), intent(in) :: alpha, betas(:)
+      character(len=*), intent(inout) :: lines(:)  !! text format: one line a point
+      real(wp), intent(inout) :: values(:, :)      !! binary format: (columns, points)
+      integer, intent(out) :: statuses(:)
+      character(len=23), intent(in) :: beta_texts(:)
+      type(batch_plan_t) :: plan
+      integer :: c, chunk, n_chunks, first, last, n
+      n = size(betas)
+      chunk = max(16, n/(8*max_threads()))
+      n_chunks = (n + chunk - 1)/chunk
+      call prepare_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), betas, scene%method, plan)
+      !$omp parallel do schedule(dynamic) default(shared) private(c, first, last)
+      do c = 1, n_chunks
+         first = (c - 1)*chunk + 1
+         last = min(n, c*chunk)
+         call compute_row(scene, ids, alpha, betas(first:last), lines(first:last), values(:, first:last), &
+            statuses(first:last), plan, beta_texts(first:last))
+      end do
+      !$omp end parallel do
+   end subroutine compute_row_in_chunks
+
+   !> Text lines of row `i` of a chart scene (α = the i-th grid value, all β) with the
+   !> scene's columns, computed exactly as the chart task computes them, so that a driver
+   !> computing rows elsewhere writes the same file (format = 'text').
+   subroutine chart_row(scene, i, lines, statuses)
+      type(scene_t), intent(in) :: scene  !! a chart scene
+      integer, intent(in) :: i            !! row index, 1 … n_alpha
+      character(len=*), intent(out) :: lines(:)  !! n_beta lines of `chart_line_length` characters
+      integer, intent(out) :: statuses(:)  !! per point: status_ok, status_roundoff or status_failed
+      real(wp), allocatable :: betas(:), values(:, :)
+      character(len=23), allocatable :: beta_texts(:)
+      integer, allocatable :: ids(:)
+      type(error_t), allocatable :: error
+      real(wp) :: alpha
+      integer :: j, n_beta
+      call scene_columns(scene, ids, error)  ! checked when the scene was read
+      if (allocated(error)) ids = default_chart_columns(scene%epsilon > 0.0_wp, scene%model == model_elastic, &
+                                                        scene%physical)
+      n_beta = scene%chart%n_beta
+      betas = [(grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j), j=1, n_beta)]
+      allocate (beta_texts(n_beta), values(size(ids), n_beta))
+      do j = 1, n_beta
+         beta_texts(j) = format_es(betas(j), 16)
+      end do
+      alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, scene%chart%n_alpha, i)
+      if (rows_in_parallel(scene)) then
+         call compute_row(scene, ids, alpha, betas, lines, values, statuses, beta_texts=beta_texts)
+      else
+         call compute_row_in_chunks(scene, ids, alpha, betas, lines, values, statuses, beta_texts)
+      end if
+   end subroutine chart_row
+
+   !> Text lines (with the scene's columns) or records `values` of the points `first` …
+   !> `last` of a points scene (in parallel); a failed point gets its placeholders.
+   subroutine compute_points(scene, first, last, lines, statuses, values)
+      type(scene_t), intent(in) :: scene  !! a points scene
+      integer, intent(in) :: first, last  !! range of point indices
+      character(len=*), intent(out) :: lines(first:)  !! one chart line per point
+      integer, intent(out) :: statuses(first:)  !! per point: status_ok, status_roundoff or status_failed
+      !> the same points as records (columns, points), for format = 'binary'
+      real(wp), intent(out), optional :: values(:, first:)
+      type(floquet_t) :: f
+      type(error_t), allocatable :: cause
+      real(wp) :: per_second, v(n_chart_columns)
+      integer, allocatable :: ids(:)
+      integer :: k
+      call scene_columns(scene, ids, cause)  ! checked when the scene was read
+      if (allocated(cause)) ids = default_chart_columns(scene%epsilon > 0.0_wp, scene%model == model_elastic, &
+                                                        scene%physical)
+      ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
+      ! when the scene knows ω)
+      per_second = 0.0_wp
+      if (scene%physical) per_second = scene%pendulum%omega/pi
+      !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause, v)
+      do k = first, last
+         call evaluate_point(scene, scene%points(1, k), scene%points(2, k), f, cause, statuses(k))
+         if (statuses(k) == status_failed) then
+            v = failed_chart_values(scene%points(1, k), scene%points(2, k), &
+                                    in_physical_domain(scene%points(1, k), scene%points(2, k)), status_failed)
+         else
+            v = chart_values(scene%points(1, k), scene%points(2, k), f, &
+                             in_physical_domain(scene%points(1, k), scene%points(2, k)), statuses(k), per_second)
+         end if
+         if (present(values)) values(:, k) = v(ids)
+         lines(k) = chart_text(ids, v)
+      end do
+      !$omp end parallel do
+   end subroutine compute_points
+
+   !> A chart whose method cannot run at all (bad parameters) fails at its first point,
+   !> before anything is written; a point where the computation fails is written with
+   !> its status instead.
+   subroutine check_method_runs(scene, error)
+      type(scene_t), intent(in) :: scene  !! a chart scene
+      type(error_t), allocatable, intent(out) :: error  !! why the method cannot run; unallocated when it can
+      type(error_t), allocatable :: cause
+      type(floquet_t) :: f
+      real(wp) :: alpha, beta
+      alpha = scene%chart%alpha_min
+      beta = scene%chart%beta_min
+      call evaluate_point(scene, alpha, beta, f, cause)
+      if (allocated(cause)) then
+         if (cause%code == err_invalid_parameter) call point_error(scene, alpha, beta, cause, error)
+      end if
+   end subroutine check_method_runs
+
    !> The points task.
    subroutine run_points(scene, quiet, error)
       type(scene_t), intent(in) :: scene
@@ -528,20 +634,13 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(output_file_t) :: file
       type(progress_t) :: progress
-      type(floquet_t) :: f
-      type(error_t), allocatable :: cause
       character(len=chart_line_length), allocatable :: lines(:)
       integer, allocatable :: statuses(:)
       logical :: damped
       integer :: k, n
       integer, allocatable :: ids(:)
       real(wp), allocatable :: values(:, :)
-      real(wp) :: per_second, v(n_chart_columns)
 
-      ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
-      ! when the scene knows ω)
-      per_second = 0.0_wp
-      if (scene%physical) per_second = scene%pendulum%omega/pi
       n = size(scene%points, 2)
       damped = scene%epsilon > 0.0_wp
       call scene_columns(scene, ids, error)
@@ -551,20 +650,7 @@ contains
       allocate (lines(n), statuses(n), values(size(ids), n))
       statuses = status_ok
       call progress_begin(progress, int(n, int64), quiet)
-      !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause, v)
-      do k = 1, n
-         call evaluate_point(scene, scene%points(1, k), scene%points(2, k), f, cause, statuses(k))
-         if (statuses(k) == status_failed) then
-            v = failed_chart_values(scene%points(1, k), scene%points(2, k), &
-                                    in_physical_domain(scene%points(1, k), scene%points(2, k)), status_failed)
-         else
-            v = chart_values(scene%points(1, k), scene%points(2, k), f, &
-                             in_physical_domain(scene%points(1, k), scene%points(2, k)), statuses(k), per_second)
-         end if
-         values(:, k) = v(ids)
-         if (.not. scene%binary) lines(k) = chart_text(ids, v)
-      end do
-      !$omp end parallel do
+      call compute_points(scene, 1, n, lines, statuses, values)
       call progress_update(progress, int(n, int64))
       call progress_end(progress)
       call write_header(file, chart_header(scene, .not. all(in_physical_domain(scene%points(1, :), &
@@ -643,10 +729,11 @@ contains
       call commit_output(file, error)
    end subroutine run_coefficient
 
+   !> Start reporting the progress of a run of `total` points (nothing when quiet).
    subroutine progress_begin(progress, total, quiet)
-      type(progress_t), intent(out) :: progress
-      integer(int64), intent(in) :: total
-      logical, intent(in) :: quiet
+      type(progress_t), intent(out) :: progress  !! the progress state
+      integer(int64), intent(in) :: total  !! points to compute
+      logical, intent(in) :: quiet  !! no progress on stderr
       progress%enabled = .not. quiet
       progress%total = total
       call system_clock(progress%start, progress%ticks)
@@ -657,8 +744,8 @@ contains
    !> Report `done` of `total` points: percentage, rate and time left, once the run
    !> has taken a second; redrawn in place on a terminal, a line every 5 s otherwise.
    subroutine progress_update(progress, done)
-      type(progress_t), intent(inout) :: progress
-      integer(int64), intent(in) :: done
+      type(progress_t), intent(inout) :: progress  !! the progress state
+      integer(int64), intent(in) :: done  !! points computed so far
       integer(int64) :: now
       real(wp) :: elapsed, since_last, rate, left, interval
       character(len=160) :: text
@@ -686,16 +773,17 @@ contains
       progress%last = now
    end subroutine progress_update
 
+   !> End the progress display (a final new line on a terminal).
    subroutine progress_end(progress)
-      type(progress_t), intent(in) :: progress
+      type(progress_t), intent(in) :: progress  !! the progress state
       if (progress%shown .and. progress%terminal) write (error_unit, '(a)') ""
    end subroutine progress_end
 
    !> Say on stderr (even when quiet: it qualifies the results) how many points could only
    !> be computed to the round-off level of double precision, not to the tolerance.
    subroutine warn_inaccurate(scene, n, first)
-      type(scene_t), intent(in) :: scene
-      integer(int64), intent(in) :: n
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      integer(int64), intent(in) :: n  !! number of round-off limited points
       real(wp), intent(in) :: first(2)  !! alpha, beta of the first such point
       character(len=32) :: count_text
       if (n == 0) return

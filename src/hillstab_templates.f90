@@ -19,7 +19,7 @@ module hillstab_templates
    use hillstab_monodromy, only: method_name
    use hillstab_units, only: physical_t
    use hillstab_scene, only: scene_t, default_scene, real_text, integer_text, task_chart, task_points, &
-      task_coefficient
+      task_coefficient, task_boundaries, task_series
    implicit none
    private
    public :: template_task_names, scene_template
@@ -36,7 +36,7 @@ contains
    !> The tasks that have a template, in the order `--help` lists them.
    function template_task_names() result(names)
       character(len=:), allocatable :: names(:)  !! task names, blank-padded to a common length
-      names = [character(len=11) :: "chart", "points", "coefficient"]
+      names = [character(len=11) :: "chart", "points", "coefficient", "boundaries", "series"]
    end function template_task_names
 
    !> The complete commented scene of `task` (lines separated by new_line('a'), no final
@@ -61,6 +61,16 @@ contains
          text = header(task, "Q(tau) and its segmented version, one pair of columns per alpha (the paper's Fig. 2)") &
                 //scene_group(scene, task)//nl//coefficient_group(scene)//nl//nl// &
                 physical_group("&coefficient alphas and beta")
+      case ("boundaries")
+         scene%task = task_boundaries
+         text = header(task, "transition curves S = +-2 over the alpha grid of &chart, within its beta window "// &
+                "(exact methods: Hill's method; formula, segments: roots by Brent from n_beta samples)") &
+                //scene_group(scene, task)//nl//chart_group(scene)//nl//nl//physical_group("")
+      case ("series")
+         scene%task = task_series
+         text = header(task, "the nonlinear elastic pendulum from eq. (38), sampled from the dense output at "// &
+                "t = j T/samples_per_period (tolerance: the integrator's relative tolerance; method: the core "// &
+                "computing lambda_max)")//scene_group(scene, task)//nl//series_group(scene)
       case default
          call set_error(error, err_input, "no template for task '"//task//"' (tasks: "// &
             joined(template_task_names(), ", ")//")")
@@ -83,10 +93,29 @@ contains
    function header(task, purpose) result(text)
       character(len=*), intent(in) :: task, purpose
       character(len=:), allocatable :: text
-      text = "! hillstab scene, task '"//task//"': "//purpose//"."//nl// &
+      text = wrapped("! ", "hillstab scene, task '"//task//"': "//purpose//".")// &
              "! Run: hillstab FILE.nml. Every variable is shown at its default; delete what you do not change."//nl// &
              "! '!' starts a comment; names and keyword values are case-insensitive; group order does not matter."//nl
    end function header
+
+   !> `words` after `lead`, wrapped at word boundaries into lines of at most `line_width`
+   !> characters, each continuation starting with `lead`; every line ends with a new line.
+   function wrapped(lead, words) result(text)
+      character(len=*), intent(in) :: lead, words
+      character(len=:), allocatable :: text
+      character(len=:), allocatable :: rest
+      integer :: cut, room
+      text = ""
+      rest = words
+      room = line_width - len(lead)
+      do while (len(rest) > room)
+         cut = index(rest(:room + 1), " ", back=.true.)
+         if (cut <= 1) cut = room + 1
+         text = text//lead//rest(:cut - 1)//nl
+         rest = trim(adjustl(rest(cut:)))
+      end do
+      text = text//lead//rest//nl
+   end function wrapped
 
    !> `name = value` followed by its comment at a fixed column, the comment wrapped at
    !> word boundaries onto continuation comment lines so that no line passes `line_width`.
@@ -160,6 +189,26 @@ contains
          item("n_beta = "//integer_text(scene%chart%n_beta), "number of beta values, >= 1")// &
          "/"
    end function chart_group
+
+   !> `&series`.
+   function series_group(scene) result(text)
+      type(scene_t), intent(in) :: scene
+      character(len=:), allocatable :: text
+      associate (plan => scene%series)
+         text = "&series"//nl// &
+            item("alpha = "//real_text(plan%alpha), "alpha = a pi^2/rho, 0 <= alpha < pi^2")// &
+            item("beta = "//real_text(plan%beta), "beta = g pi^2/(rho omega^2), 0 < beta < pi^2 (physical domain)")// &
+            item("phi0 = "//real_text(plan%phi0), "initial angle from the downward vertical, rad (0: pure bounce)")// &
+            item("periods = "//integer_text(plan%periods), "radial periods T = 2 pi/omega to simulate, >= 1")// &
+            item("samples_per_period = "//integer_text(plan%samples_per_period), &
+                 "output rows per radial period, >= 1; periods*samples_per_period + 1 <= 1e8")// &
+            item("r0 = "//real_text(plan%r0), "natural length of the spring, m; > 0")// &
+            item("g = "//real_text(plan%g), "gravity, m/s^2; > 0")// &
+            item("vx0 = "//real_text(plan%vx0), "initial horizontal velocity, m/s")// &
+            item("vz0 = "//real_text(plan%vz0), "initial downward velocity, m/s")// &
+            "/"
+      end associate
+   end function series_group
 
    !> `&points` (the file name is an example: the file must exist).
    function points_group() result(text)

@@ -112,7 +112,7 @@ contains
 
    !> Wrap a plain matrix.
    pure function scaled_from_matrix(m) result(a)
-      real(wp), intent(in) :: m(2, 2)
+      real(wp), intent(in) :: m(2, 2)  !! a 2x2 matrix
       type(scaled_matrix_t) :: a
       a%m = m
       a%log_scale = 0.0_wp
@@ -121,7 +121,7 @@ contains
 
    !> Rescale so that max |m_ij| = 1 (powers of two: exact).
    pure subroutine normalize_scaled(a)
-      type(scaled_matrix_t), intent(inout) :: a
+      type(scaled_matrix_t), intent(inout) :: a  !! the matrix, rescaled
       real(wp) :: big
       integer :: e
       big = maxval(abs(a%m))
@@ -133,8 +133,8 @@ contains
 
    !> a ← T(q, h) · a: advance by one constant piece.
    pure subroutine multiply_transfer(a, q, h)
-      type(scaled_matrix_t), intent(inout) :: a
-      real(wp), intent(in) :: q, h
+      type(scaled_matrix_t), intent(inout) :: a  !! the product so far, advanced
+      real(wp), intent(in) :: q, h  !! constant coefficient of the piece; its length in tau
       real(wp) :: c, s, log_scale, t(2, 2)
       call transfer_functions(q*h*h, c, s, log_scale)
       t(1, 1) = c; t(1, 2) = h*s
@@ -146,15 +146,15 @@ contains
 
    !> a ← m · a for a plain matrix m.
    pure subroutine multiply_matrix(a, m)
-      type(scaled_matrix_t), intent(inout) :: a
-      real(wp), intent(in) :: m(2, 2)
+      type(scaled_matrix_t), intent(inout) :: a  !! the product so far, multiplied
+      real(wp), intent(in) :: m(2, 2)  !! the left factor, a plain 2x2 matrix
       a%m = matmul(m, a%m)
       call normalize_scaled(a)
    end subroutine multiply_matrix
 
    !> Product b · a of scaled matrices.
    pure function multiply_scaled(b, a) result(c)
-      type(scaled_matrix_t), intent(in) :: b, a
+      type(scaled_matrix_t), intent(in) :: b, a  !! left and right factor
       type(scaled_matrix_t) :: c
       c%m = matmul(b%m, a%m)
       c%log_scale = a%log_scale + b%log_scale
@@ -163,7 +163,7 @@ contains
 
    !> Trace of a scaled matrix, flagged (and clamped) if it does not fit.
    pure function trace_of(a) result(tr)
-      type(scaled_matrix_t), intent(in) :: a
+      type(scaled_matrix_t), intent(in) :: a  !! the matrix
       type(trace_t) :: tr
       tr = trace_from_scaled(a%m(1, 1) + a%m(2, 2), a%log_scale)
    end function trace_of
@@ -191,7 +191,7 @@ contains
    !> monodromy_from_half_period for Φ(1) held as one scaled matrix. The scale doubles:
    !> M is quadratic in Φ.
    pure function monodromy_from_half_period_scaled(phi) result(m)
-      type(scaled_matrix_t), intent(in) :: phi
+      type(scaled_matrix_t), intent(in) :: phi  !! the propagator over [0, 1]
       type(scaled_matrix_t) :: m
       m = monodromy_from_half_period_columns(phi%m, phi%log_scale, phi%log_scale)
    end function monodromy_from_half_period_scaled
@@ -200,8 +200,8 @@ contains
    !> scales (u, u' times e^{log_u}; v, v' times e^{log_v}), as integrators that rescale
    !> each solution separately produce them.
    pure function monodromy_from_half_period_columns(phi, log_u, log_v) result(m)
-      real(wp), intent(in) :: phi(2, 2)
-      real(wp), intent(in) :: log_u, log_v
+      real(wp), intent(in) :: phi(2, 2)  !! [[u, v], [u', v']] at tau = 1, each column scaled
+      real(wp), intent(in) :: log_u, log_v  !! ln of the scales of the u and v columns
       type(scaled_matrix_t) :: m
       real(wp) :: u, du, v, dv, top
       u = phi(1, 1); du = phi(2, 1)
@@ -218,7 +218,7 @@ contains
 
    !> A finite trace value as a trace_t.
    elemental function trace_from_value(s) result(tr)
-      real(wp), intent(in) :: s
+      real(wp), intent(in) :: s  !! a finite trace
       type(trace_t) :: tr
       tr%value = s
       tr%overflow = .false.
@@ -231,22 +231,22 @@ contains
 
    !> The plain matrix (entries clamped to ±huge if the scale overflows).
    pure function matrix_of(a) result(m)
-      type(scaled_matrix_t), intent(in) :: a
+      type(scaled_matrix_t), intent(in) :: a  !! the matrix
       real(wp) :: m(2, 2)
       m = a%m*exp(min(a%log_scale, log_huge))
    end function matrix_of
 
    !> Determinant of a plain 2×2 matrix.
    pure real(wp) function determinant(m)
-      real(wp), intent(in) :: m(2, 2)
+      real(wp), intent(in) :: m(2, 2)  !! a 2x2 matrix
       determinant = m(1, 1)*m(2, 2) - m(1, 2)*m(2, 1)
    end function determinant
 
    !> Determinant of a scaled matrix, returned as (mantissa, ln scale):
    !> det = d · e^{log_det_scale}.
    pure subroutine determinant_of(a, d, log_det_scale)
-      type(scaled_matrix_t), intent(in) :: a
-      real(wp), intent(out) :: d, log_det_scale
+      type(scaled_matrix_t), intent(in) :: a  !! the matrix
+      real(wp), intent(out) :: d, log_det_scale  !! mantissa and ln scale of the determinant
       d = determinant(a%m)
       log_det_scale = 2.0_wp*a%log_scale
    end subroutine determinant_of

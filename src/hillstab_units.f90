@@ -88,7 +88,8 @@ contains
    !> ρ > 0, 0 ≤ a < ρ (eq. (15): the mass stays away from the pivot), κ ≥ 0.
    !> On failure `variable` names the offending component (r0, g, omega, a or kappa).
    pure subroutine check_physical(p, error, variable)
-      type(physical_t), intent(in) :: p
+      type(physical_t), intent(in) :: p  !! the pendulum (r0, g, omega, a, kappa)
+      !> err_invalid_parameter saying what is wrong; unallocated when valid
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable, intent(out) :: variable  !! the bad component, "" when none
       character(len=:), allocatable :: message
@@ -135,8 +136,8 @@ contains
       real(wp), intent(in) :: alpha    !! α of eq. (24)
       real(wp), intent(in) :: beta     !! β of eq. (24)
       real(wp), intent(in) :: epsilon  !! ε of eq. (46)
-      type(physical_t), intent(out) :: p
-      type(error_t), allocatable, intent(out) :: error
+      type(physical_t), intent(out) :: p  !! the pendulum
+      type(error_t), allocatable, intent(out) :: error  !! err_invalid_parameter when no pendulum has these values
       real(wp), intent(in), optional :: r0     !! natural length (m)
       real(wp), intent(in), optional :: g      !! gravity (m/s²)
       real(wp), intent(in), optional :: omega  !! radial angular frequency ω = √(k/m) (rad/s)

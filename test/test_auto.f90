@@ -46,7 +46,8 @@ contains
          new_unittest("overflow_finite", overflow_finite), &
          new_unittest("bad_input", bad_input), &
          new_unittest("fixed_n_order", fixed_n_order), &
-         new_unittest("nan_inputs_no_trap", nan_inputs_no_trap)])
+         new_unittest("nan_inputs_no_trap", nan_inputs_no_trap), &
+         new_unittest("roundoff_best_value", roundoff_best_value)])
    end function collect_auto
 
    !> Error of S relative to max(1, |S_ref|); through ln|S| when either value overflowed
@@ -558,4 +559,20 @@ contains
             "errors above the reference's own")
       end do
    end subroutine fixed_n_order
+
+   !> α = 9.869, β = 0 (S = 2 exactly) is round-off limited at tolerance 1e-10: the value
+   !> returned is the best double precision allows (measured 2e-8 off; the first value
+   !> whose Richardson difference reached the round-off level was 3.9e-7 off), with
+   !> err_accuracy and an error estimate that covers the error.
+   subroutine roundoff_best_value(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(trace_t) :: tr
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      call trace_auto(hill_model_t(model_elastic, 9.869_wp, 0.0_wp, 0.0_wp), 1.0e-10_wp, tr, stats, error)
+      call check(ctx, allocated(error), "round-off limited")
+      if (allocated(error)) call check(ctx, error%code == err_accuracy, "err_accuracy")
+      call check(ctx, tr%value, 2.0_wp, abs=1.0e-7_wp, message="S = 2 to the round-off level")
+      call check(ctx, abs(tr%value - 2.0_wp)/2.0_wp <= tr%error_estimate, "error within the estimate")
+   end subroutine roundoff_best_value
 end module test_auto

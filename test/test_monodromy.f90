@@ -1,10 +1,12 @@
 !> Tests of the segmented monodromy against an independent fine-step RK4
 !> integration: unit determinant, second-order convergence of midpoint and
 !> average sampling, the 4/3 pendulum resonance, the damped criterion, and
-!> finite results in the hard cases.
+!> finite results in the hard cases; every exact method against the stored
+!> high-precision reference at the hard points (data/reference/hard_set.dat, made by
+!> data/reference/make_reference.py: Taylor series at 50 digits in mpmath, no shared code).
 module test_monodromy
    use hillstab_kinds, only: wp, pi2
-   use hillstab_error, only: error_t
+   use hillstab_error, only: error_t, err_accuracy
    use hillstab_coefficient
    use hillstab_transfer
    use hillstab_floquet
@@ -15,6 +17,25 @@ module test_monodromy
    implicit none
    private
    public :: collect_monodromy
+
+   !> The stored reference table, relative to the repository root (where fpm test runs).
+   character(len=*), parameter :: hard_set_file = "data/reference/hard_set.dat"
+   !> Tolerance of the hard-set tests (the default of a scene).
+   real(wp), parameter :: hard_set_tolerance = 1.0e-10_wp
+   !> A round-off limited point passes when its error is at most this factor times the
+   !> error estimate the method reports with it (the estimate of the round-off level is an
+   !> order of magnitude, not a bound).
+   real(wp), parameter :: roundoff_factor = 4.0_wp
+
+   !> One point of the reference table.
+   type :: reference_point_t
+      integer :: model = model_elastic
+      real(wp) :: alpha = 0.0_wp, beta = 0.0_wp
+      real(wp) :: sign = 1.0_wp      !! sign of S
+      real(wp) :: log_abs = 0.0_wp   !! ln|S|
+      real(wp) :: value = 0.0_wp     !! S (0 when |S| > 1e300)
+      real(wp) :: ref_error = 0.0_wp !! the reference's own error bound, relative to max(1, |S|)
+   end type reference_point_t
 
 contains
 
@@ -27,7 +48,12 @@ contains
          new_unittest("resonance_four_thirds", resonance_four_thirds), &
          new_unittest("damped_stable_beyond_paper", damped_stable_beyond_paper), &
          new_unittest("hard_cases_finite", hard_cases_finite), &
-         new_unittest("method_dispatch", method_dispatch)])
+         new_unittest("method_dispatch", method_dispatch), &
+         new_unittest("hard_set_auto", hard_set_auto), &
+         new_unittest("hard_set_magnus4", hard_set_magnus4), &
+         new_unittest("hard_set_magnus6", hard_set_magnus6), &
+         new_unittest("hard_set_rk", hard_set_rk), &
+         new_unittest("hard_set_gsl", hard_set_gsl)])
    end function collect_monodromy
 
    subroutine unit_determinant(ctx)
@@ -173,4 +199,145 @@ contains
       call check(ctx, allocated(error), "alpha > pi**2 rejected")
       call check(ctx, method_from_name("magnus6") == method_magnus6 .and. method_from_name("x") == -1, "names")
    end subroutine method_dispatch
+
+   !> Read the reference table; `ok` false when it cannot be read.
+   subroutine read_hard_set(points, ok)
+      type(reference_point_t), allocatable, intent(out) :: points(:)
+      logical, intent(out) :: ok
+      type(reference_point_t) :: p, buffer(200)
+      character(len=400) :: line
+      integer :: unit, ios, n
+      open (newunit=unit, file=hard_set_file, status="old", action="read", iostat=ios)
+      ok = ios == 0
+      if (.not. ok) return
+      n = 0
+      do
+         read (unit, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         if (line(1:1) == "#" .or. len_trim(line) == 0) cycle
+         line = line(1:index(line//"#", "#") - 1)
+         read (line, *, iostat=ios) p%model, p%alpha, p%beta, p%sign, p%log_abs, p%value, p%ref_error
+         if (ios /= 0) then
+            ok = .false.
+            exit
+         end if
+         if (p%model == 0) then
+            p%model = model_elastic
+         else
+            p%model = model_mathieu
+         end if
+         n = n + 1
+         buffer(n) = p
+      end do
+      close (unit)
+      points = buffer(:n)
+      ok = ok .and. n >= 30
+   end subroutine read_hard_set
+
+   !> |S − S_ref|/max(1, |S_ref|), through ln|S| where S is large (or overflows).
+   pure real(wp) function reference_error(tr, ref) result(e)
+      type(trace_t), intent(in) :: tr
+      type(reference_point_t), intent(in) :: ref
+      if (ref%log_abs > log(1.0e6_wp)) then
+         if (sign(1.0_wp, tr%value) /= ref%sign) then
+            e = 2.0_wp
+         else
+            e = abs(expm1_small(tr%log_abs - ref%log_abs))
+         end if
+      else
+         e = abs(tr%value - ref%value)/max(1.0_wp, abs(ref%value))
+      end if
+   end function reference_error
+
+   !> e^x − 1, accurate for small x.
+   pure real(wp) function expm1_small(x) result(y)
+      real(wp), intent(in) :: x
+      if (abs(x) < 1.0e-5_wp) then
+         y = x*(1.0_wp + 0.5_wp*x)
+      else
+         y = exp(min(x, 700.0_wp)) - 1.0_wp
+      end if
+   end function expm1_small
+
+   !> Every point of the hard set with method `kind` at `hard_set_tolerance`: no point fails;
+   !> status ok: error ≤ tolerance and error_estimate ≤ tolerance; status round-off
+   !> limited: error ≤ roundoff_factor × error_estimate.
+   subroutine check_hard_set(ctx, kind)
+      type(test_context_t), intent(inout) :: ctx
+      integer, intent(in) :: kind
+      type(reference_point_t), allocatable :: points(:)
+      type(trace_t) :: tr
+      type(error_t), allocatable :: error
+      real(wp) :: err, worst_ok, worst_roundoff, worst_estimate
+      integer :: k, n_roundoff
+      logical :: ok
+      character(len=200) :: where
+      call read_hard_set(points, ok)
+      call check(ctx, ok, "reference table "//hard_set_file//" read")
+      if (.not. ok) return
+      worst_ok = 0.0_wp
+      worst_roundoff = 0.0_wp
+      worst_estimate = 0.0_wp
+      n_roundoff = 0
+      do k = 1, size(points)
+         call monodromy_trace(hill_model_t(points(k)%model, points(k)%alpha, points(k)%beta, 0.0_wp), &
+                              method_t(kind, tolerance=hard_set_tolerance), tr, error)
+         err = reference_error(tr, points(k))
+         write (where, '(a,i0,a,es10.3,a,es11.3,a)') "model ", points(k)%model, " alpha ", points(k)%alpha, &
+            " beta ", points(k)%beta, ": "
+         if (allocated(error)) then
+            if (error%code /= err_accuracy) then
+               call check(ctx, .false., trim(where)//" fails: "//error%message)
+               cycle
+            end if
+            n_roundoff = n_roundoff + 1
+            worst_roundoff = max(worst_roundoff, err/tr%error_estimate)
+            worst_estimate = max(worst_estimate, tr%error_estimate)
+            call check(ctx, err <= roundoff_factor*tr%error_estimate, trim(where)//" round-off limited, error "// &
+                       real_text(err)//" above "//real_text(roundoff_factor)//" x its estimate "// &
+                       real_text(tr%error_estimate))
+         else
+            worst_ok = max(worst_ok, err)
+            call check(ctx, err <= hard_set_tolerance, trim(where)//" error "//real_text(err)//" > tolerance")
+            call check(ctx, tr%error_estimate >= 0.0_wp .and. tr%error_estimate <= hard_set_tolerance, &
+                       trim(where)//" error estimate "//real_text(tr%error_estimate)//" outside [0, tolerance]")
+         end if
+      end do
+      print '(4x,a,es9.2,a,i0,a,i0,a,es9.2,a,es9.2)', "tol 1e-10: worst error/tol (status 0) ", &
+         worst_ok/hard_set_tolerance, "; round-off limited ", n_roundoff, " of ", size(points), &
+         ", worst error/estimate ", worst_roundoff, ", largest estimate ", worst_estimate
+   end subroutine check_hard_set
+
+   pure function real_text(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: text
+      character(len=16) :: buffer
+      write (buffer, '(es10.3)') x
+      text = trim(adjustl(buffer))
+   end function real_text
+
+   subroutine hard_set_auto(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      call check_hard_set(ctx, method_auto)
+   end subroutine hard_set_auto
+
+   subroutine hard_set_magnus4(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      call check_hard_set(ctx, method_magnus4)
+   end subroutine hard_set_magnus4
+
+   subroutine hard_set_magnus6(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      call check_hard_set(ctx, method_magnus6)
+   end subroutine hard_set_magnus6
+
+   subroutine hard_set_rk(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      call check_hard_set(ctx, method_rk)
+   end subroutine hard_set_rk
+
+   subroutine hard_set_gsl(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      call check_hard_set(ctx, method_gsl)
+   end subroutine hard_set_gsl
 end module test_monodromy

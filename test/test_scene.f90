@@ -291,7 +291,7 @@ contains
          bad_case_t(sp, "points", "missing"), &
          bad_case_t(s//"task='coefficient' / &chart /", "coefficient", "missing"), &
          bad_case_t(s//"task='chrt' / &chart /", "scene", "task"), &
-         bad_case_t(s//"task='boundaries' / &chart /", "scene", "task"), &
+         bad_case_t(s//"task='boundaries', epsilon=0.5 / &chart /", "scene", "epsilon"), &
          bad_case_t(s//"model='spring' / &chart /", "scene", "model"), &
          bad_case_t("&scene output='@OUT@', method='euler' / &chart /", "scene", "method"), &
          bad_case_t(s//"sampling='left' / &chart /", "scene", "sampling"), &

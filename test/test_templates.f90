@@ -128,6 +128,8 @@ contains
       do k = 1, size(names)
          call scene_template(trim(names(k)), text, error)
          if (allocated(error)) cycle
+         ! a task whose template offers no &physical variant (series takes r0, g itself)
+         if (index(text, "! &physical") == 0) cycle
          out = ""
          inside = .false.
          from = 1

@@ -10,7 +10,7 @@
 # and the program have a non-executable stack (GNU_STACK RW); HILLSTAB_STACK_CHECK=report
 # only reports an executable stack instead of failing.
 set -euo pipefail
-prefix=$1
+prefix=$(cd "$1" && pwd)
 route=${2:-install}
 stack_check=${HILLSTAB_STACK_CHECK:-fail}
 here=$(cd "$(dirname "$0")" && pwd)
@@ -40,8 +40,8 @@ export PKG_CONFIG_PATH="$libdir/pkgconfig"
 export LD_LIBRARY_PATH="$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 cflags=$(pkg-config --cflags hillstab)
 libs=$(pkg-config --libs hillstab)
-# with both libraries in libdir, -lhillstab picks the shared one: ask for the archive
-static_libs="-Wl,-Bstatic -lhillstab -Wl,-Bdynamic $(pkg-config --libs --static hillstab | sed 's/-lhillstab//')"
+# with both libraries in libdir, -lhillstab picks the shared one: name the archive
+static_libs="$(pkg-config --variable=libdir hillstab)/libhillstab.a $(pkg-config --libs --static hillstab | sed 's/-L[^ ]*//; s/-lhillstab//')"
 # build: compiler, source, output, link flags...; fails on an executable-stack warning
 build() {
    local compiler=$1 source=$2 out=$3
@@ -59,6 +59,12 @@ build gfortran "$examples/f77/trace.f" trace_f77 -std=legacy $libs
 build gfortran "$examples/f77/trace.f" trace_f77_static -std=legacy $static_libs
 for p in trace_c trace_c_static trace_f trace_f77 trace_f77_static; do
    "$work/$p" > "$work/$p.out" || { cat "$work/$p.out"; die "$p failed"; }
+done
+for p in trace_c trace_f trace_f77; do
+   readelf -dW "$work/$p" | grep -q 'NEEDED.*libhillstab\.so' || die "$p does not use the shared library"
+done
+for p in trace_c_static trace_f77_static; do
+   readelf -dW "$work/$p" | grep -q 'NEEDED.*libhillstab' && die "$p depends on the shared library"
 done
 cat "$work/trace_c.out" "$work/trace_f.out" "$work/trace_f77.out"
 say "pkg-config: C, Fortran and fixed-form FORTRAN 77 link (shared: '$libs'; static too) and run"

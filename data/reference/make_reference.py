@@ -1,0 +1,206 @@
+#!/usr/bin/env python3
+"""High-precision reference traces S of x'' + Q(tau) x = 0 at hillstab's hard points.
+
+Independent of hillstab's code: Taylor-series integration in mpmath (40+ digits)
+of the even and odd solutions u, v on [0, 1] (Q is even and 2-periodic, so
+S = 2 (u v' + u' v) at tau = 1, BRIEF section 4), with the Taylor coefficients of
+Q from the series of cos(pi tau) and a series division, and each step's length
+chosen so that the series tail is below the working precision (and at most a
+fraction of the distance to the nearest complex pole of Q, 1 - k cos(pi tau) = 0).
+
+Every point is computed twice, with (order, tail, digits) = (50, 1e-30, 40) and
+(64, 1e-38, 50); the table keeps the second and, as `ref_error`, the difference of
+the two relative to max(1, |S|): the reference's own error bound. The Wronskian
+u v' - u' v = 1 is checked too.
+
+Points: the hard set alpha in {9.8, 9.85, 9.869} x beta in {-1e4, -1e3, 0, 1e3,
+1e4, 1e5}; points where earlier versions failed or missed their tolerance; the
+Mathieu model q(tau) = beta - nu cos(pi tau) at q = 2 nu/pi^2 = 20 on its a0 and
+b1 transition curves, beta = (pi^2/4) a0(20), (pi^2/4) b1(20) (S = +2 and -2 up to
+the rounding of beta to a double; the reference is computed at that double).
+
+Run from the repository root (installs mpmath and gmpy2 from PyPI if missing):
+    bash data/reference/make_reference.sh
+writes data/reference/hard_set.dat. Takes a few minutes on 2 cores.
+"""
+import sys
+import multiprocessing as mproc
+
+import mpmath as mp
+
+ELASTIC, MATHIEU = 0, 1
+
+
+def mathieu_values(q, n_terms=80):
+    """a0(q) and b1(q) of y'' + (a - 2q cos 2z) y = 0 from the tridiagonal
+    eigenproblems of the Fourier coefficients (truncated at n_terms)."""
+    # ce_{2n}: basis cos(2nz), n >= 0, with the sqrt(2) symmetrisation of the first row
+    a = mp.zeros(n_terms, n_terms)
+    for n in range(n_terms):
+        a[n, n] = (2 * n) ** 2
+        if n + 1 < n_terms:
+            off = q * (mp.sqrt(2) if n == 0 else 1)
+            a[n, n + 1] = off
+            a[n + 1, n] = off
+    # se_{2n+1}: basis sin((2n+1)z), first diagonal entry 1 - q
+    b = mp.zeros(n_terms, n_terms)
+    for n in range(n_terms):
+        b[n, n] = (2 * n + 1) ** 2 - (q if n == 0 else 0)
+        if n + 1 < n_terms:
+            b[n, n + 1] = q
+            b[n + 1, n] = q
+    ea = mp.eigsy(a, eigvals_only=True)
+    eb = mp.eigsy(b, eigvals_only=True)
+    return min(ea), min(eb)
+
+
+def trace(model, alpha, beta, order, tail, dps):
+    """S, the Wronskian defect and the number of steps at (model, alpha, beta)."""
+    with mp.workdps(dps):
+        pi = mp.pi
+        alpha = mp.mpf(alpha)
+        beta = mp.mpf(beta)
+        k = alpha / pi**2
+        # Taylor coefficients of cos(pi h) and sin(pi h)
+        pc = [mp.mpf(0)] * (order + 1)
+        ps = [mp.mpf(0)] * (order + 1)
+        term = mp.mpf(1)
+        for j in range(order + 1):
+            if j > 0:
+                term = term * pi / j
+            if j % 4 == 0:
+                pc[j] = term
+            elif j % 4 == 1:
+                ps[j] = term
+            elif j % 4 == 2:
+                pc[j] = -term
+            else:
+                ps[j] = -term
+        if model == ELASTIC:
+            # poles of Q at cos(pi tau) = 1/k: tau = +-i acosh(1/k)/pi (+ even integers)
+            t_pole = mp.acosh(1 / k) / pi if k > 0 else mp.inf
+        else:
+            t_pole = mp.inf
+
+        def q_series(tau0):
+            c0, s0 = mp.cos(pi * tau0), mp.sin(pi * tau0)
+            cs = [c0 * pc[j] - s0 * ps[j] for j in range(order + 1)]
+            if model == MATHIEU:
+                qs = [-alpha * c for c in cs]
+                qs[0] += beta
+                return qs
+            d = [-k * c for c in cs]
+            d[0] += 1
+            r = [mp.mpf(0)] * (order + 1)
+            r[0] = 1 / d[0]
+            for n in range(1, order + 1):
+                acc = mp.mpf(0)
+                for j in range(1, n + 1):
+                    acc += d[j] * r[n - j]
+                r[n] = -acc * r[0]
+            qs = [(beta - pi**2) * x for x in r]
+            qs[0] += pi**2
+            return qs
+
+        def taylor(qs, x0, x1):
+            x = [mp.mpf(0)] * (order + 1)
+            x[0], x[1] = x0, x1
+            for n in range(order - 1):
+                acc = mp.mpf(0)
+                for j in range(n + 1):
+                    acc += qs[j] * x[n - j]
+                x[n + 2] = -acc / ((n + 1) * (n + 2))
+            return x
+
+        tau = mp.mpf(0)
+        u, du, v, dv = mp.mpf(1), mp.mpf(0), mp.mpf(0), mp.mpf(1)
+        h = mp.mpf("0.001")
+        steps = 0
+        while tau < 1:
+            qs = q_series(tau)
+            xu = taylor(qs, u, du)
+            xv = taylor(qs, v, dv)
+            rho = mp.sqrt(tau**2 + t_pole**2) if t_pole != mp.inf else mp.inf
+            h = min(h * 2, 1 - tau)
+            if rho != mp.inf:
+                h = min(h, rho / 3)
+            while True:
+                ok = True
+                for xs in (xu, xv):
+                    size = max(abs(xs[0]), abs(xs[1]) * h)
+                    last = max(abs(xs[order - 1]) * h ** (order - 1), abs(xs[order]) * h**order)
+                    if last > tail * size:
+                        ok = False
+                if ok:
+                    break
+                h = h / 2
+            u_new = sum(xu[n] * h**n for n in range(order + 1))
+            du_new = sum(n * xu[n] * h ** (n - 1) for n in range(1, order + 1))
+            v_new = sum(xv[n] * h**n for n in range(order + 1))
+            dv_new = sum(n * xv[n] * h ** (n - 1) for n in range(1, order + 1))
+            u, du, v, dv = u_new, du_new, v_new, dv_new
+            tau = tau + h if tau + h < 1 else mp.mpf(1)
+            steps += 1
+        s = 2 * (u * dv + du * v)
+        wronskian_defect = abs(u * dv - du * v - 1)
+        return s, wronskian_defect, steps
+
+
+def point_line(point):
+    model, alpha, beta, label = point
+    s1, w1, n1 = trace(model, alpha, beta, 50, mp.mpf("1e-30"), 40)
+    s2, w2, n2 = trace(model, alpha, beta, 64, mp.mpf("1e-38"), 50)
+    with mp.workdps(50):
+        scale = max(mp.mpf(1), abs(s2))
+        ref_error = abs(s1 - s2) / scale
+        log_abs = mp.log(abs(s2)) if s2 != 0 else mp.mpf(-700)
+        sign = 1 if s2 >= 0 else -1
+        s_text = mp.nstr(s2, 25, min_fixed=-3, max_fixed=1) if abs(s2) < mp.mpf("1e300") else "0"
+        line = "%d %s %s %d %s %s %s %s %d  # %s" % (
+            model, repr(alpha), repr(beta), sign, mp.nstr(log_abs, 25, min_fixed=-3, max_fixed=1),
+            s_text.replace("e", "e") if s_text != "0" else "0.0",
+            mp.nstr(max(ref_error, mp.mpf("1e-40")), 3), mp.nstr(max(w2, mp.mpf("1e-45")) / scale, 3), n2, label)
+    print(line, file=sys.stderr, flush=True)
+    return line
+
+
+def points():
+    pts = []
+    for alpha in (9.8, 9.85, 9.869):
+        for beta in (-1e4, -1e3, 0.0, 1e3, 1e4, 1e5):
+            pts.append((ELASTIC, alpha, beta, "hard set"))
+    for alpha, beta, label in [
+            (9.869, 0.3, "gsl failed"), (9.865, -9.865, "gsl failed"), (9.86, -1e6, "magnus4 failed"),
+            (9.869, -1e6, "magnus4 failed"), (0.0, 1e5, "gsl failed, alpha = 0"),
+            (0.0, -1e5, "gsl failed, alpha = 0"), (9.0, -1e4, "gsl failed"), (9.0, 0.0, "rk missed"),
+            (9.5, 0.0, "rk missed"), (9.869, 2.47, "near pi^2"), (5.0, 1e5, "large beta"),
+            (5.0, -1e4, "large negative beta")]:
+        pts.append((ELASTIC, alpha, beta, label))
+    with mp.workdps(50):
+        q = mp.mpf(20)
+        a0, b1 = mathieu_values(q)
+        nu = float(q * mp.pi**2 / 2)
+        pts.append((MATHIEU, nu, float(mp.pi**2 / 4 * a0), "mathieu q = 20 on a0 (S = +2)"))
+        pts.append((MATHIEU, nu, float(mp.pi**2 / 4 * b1), "mathieu q = 20 on b1 (S = -2)"))
+    return pts
+
+
+def main():
+    out = sys.argv[1] if len(sys.argv) > 1 else "data/reference/hard_set.dat"
+    pts = points()
+    with mproc.Pool(2) as pool:
+        lines = pool.map(point_line, pts, chunksize=1)
+    with open(out, "w") as f:
+        f.write("# Reference traces S of x'' + Q(tau) x = 0 at hillstab's hard points, made by\n")
+        f.write("# data/reference/make_reference.py (mpmath %s, Taylor series, 50 digits).\n" % mp.__version__)
+        f.write("# model: 0 elastic Q of eq. (25), 1 mathieu q = beta - alpha cos(pi tau); alpha, beta: the exact\n")
+        f.write("# doubles used; sign, ln_abs_S: sign and natural log of |S|; S: S itself (0.0 when |S| > 1e300);\n")
+        f.write("# ref_error: |S(order 50, 40 digits) - S(order 64, 50 digits)|/max(1, |S|);\n")
+        f.write("# wronskian: |u v' - u' v - 1|/max(1, |S|); steps: Taylor steps on [0, 1]\n")
+        f.write("# columns: model alpha beta sign ln_abs_S S ref_error wronskian steps\n")
+        for line in lines:
+            f.write(line + "\n")
+
+
+if __name__ == "__main__":
+    main()

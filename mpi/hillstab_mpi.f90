@@ -1,0 +1,356 @@
+!> `mpirun -np N hillstab_mpi [--quiet] SCENE.nml...`: hillstab spread over MPI ranks.
+!>
+!> The points of chart and points scenes are computed on all ranks with dynamic load
+!> balancing: rank 0 hands out units (hillstab_batch: a chart row, a run of points) on
+!> demand, keeps two units queued at every other rank so that no rank waits for the
+!> next, computes units itself between requests, and writes the results in order into
+!> the same file as a single-process `hillstab` run (identical data lines), through the
+!> atomic writers of hillstab_output: the file appears whole or not at all. Other tasks
+!> run on rank 0. Options, messages and exit statuses are those of `hillstab`; every rank
+!> exits with the status of the run (0 success, 2 bad input, 3 written with failed
+!> points, 1 a computation failed).
+program hillstab_mpi
+   use mpi_f08
+   use hillstab_kinds, only: wp, int64, version_string
+   use hillstab_error, only: error_t, set_error, err_input, err_points_failed
+   use hillstab_scene, only: scene_t, read_scene
+   use hillstab_tasks, only: run_scene, output_path
+   use hillstab_batch, only: batch_t, batch_result_t, batch_distributable, batch_plan, batch_compute, &
+      batch_open, batch_write, batch_commit, batch_discard, exit_status
+   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+   use, intrinsic :: ieee_arithmetic, only: ieee_set_flag, ieee_all
+   implicit none
+
+   integer, parameter :: manager = 0
+   integer, parameter :: tag_assign = 1, tag_result = 2, tag_text = 3, tag_status = 4
+   !> units queued at a worker: it starts the next while its last result travels
+   integer, parameter :: queue_depth = 2
+
+   !> Rank 0's bookkeeping while it hands out units.
+   type :: manager_t
+      type(batch_result_t), allocatable :: done(:)  !! computed units not yet written
+      integer, allocatable :: queued(:)            !! units queued at each worker 1 …
+      integer :: next_unit = 1                     !! next unit to hand out
+      integer :: next_write = 1                    !! next unit to write
+      logical :: stopping = .false.                !! an error: start nothing new
+      real(wp) :: busy = 0.0_wp                    !! rank 0's computing time [s]
+   end type manager_t
+
+   integer :: rank, n_ranks, i, n_scenes
+   logical :: points_failed
+   character(len=:), allocatable :: argument, written
+   character(len=4096), allocatable :: scenes(:)
+   logical :: quiet, help, version
+   type(error_t), allocatable :: error
+
+   call MPI_Init()
+   call MPI_Comm_rank(MPI_COMM_WORLD, rank)
+   call MPI_Comm_size(MPI_COMM_WORLD, n_ranks)
+
+   quiet = .false.
+   help = .false.
+   version = .false.
+   n_scenes = 0
+   allocate (scenes(command_argument_count()))
+   do i = 1, command_argument_count()
+      argument = command_argument(i)
+      select case (argument)
+      case ("-h", "--help")
+         help = .true.
+         exit
+      case ("-V", "--version")
+         version = .true.
+         exit
+      case ("-q", "--quiet")
+         quiet = .true.
+      case default
+         if (len(argument) > 1 .and. argument(1:1) == "-") &
+            call quit(on_manager("hillstab_mpi: unknown option '"//argument//"' (see hillstab_mpi --help)"), 2)
+         n_scenes = n_scenes + 1
+         scenes(n_scenes) = argument
+      end select
+   end do
+   if (help) then
+      if (rank == manager) call print_help()
+      call quit("", 0)
+   end if
+   if (version) then
+      if (rank == manager) write (output_unit, '(a)') "hillstab_mpi "//version_string
+      call quit("", 0)
+   end if
+   if (n_scenes == 0) &
+      call quit(on_manager("usage: mpirun -np N hillstab_mpi [--quiet] SCENE.nml... (see hillstab_mpi --help)"), 2)
+
+   points_failed = .false.
+   do i = 1, n_scenes
+      call run_scene_everywhere(trim(scenes(i)), error, written)
+      if (allocated(error)) then
+         ! after `agree`, only the rank that found the error holds its message
+         if (len(error%message) > 0) error%message = "hillstab_mpi: "//error%message
+         if (error%code == err_points_failed) then
+            ! the file is written; the message says where (also with --quiet: it qualifies the file)
+            if (len(error%message) > 0) write (error_unit, '(a)') error%message
+            points_failed = .true.
+         else
+            call quit(error%message, exit_status(error))
+         end if
+      end if
+      if (.not. quiet .and. rank == manager) write (error_unit, '(a)') "hillstab_mpi: wrote "//written
+   end do
+   call quit("", merge(exit_status(error_t(err_points_failed, "")), 0, points_failed))
+
+contains
+
+   !> Read and run one scene on all ranks. On return every rank holds the same outcome:
+   !> `error` allocated on all ranks or on none (with the message on the rank that
+   !> knows it, a generic one elsewhere).
+   subroutine run_scene_everywhere(path, error, written)
+      character(len=*), intent(in) :: path
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable, intent(out) :: written
+      type(scene_t) :: scene
+      type(batch_t) :: batch
+      real(wp) :: busy
+      logical :: written_ok
+      ! every rank reads the scene (and its points file); the worst outcome wins, so a
+      ! file one rank cannot read stops all of them
+      call read_scene(path, scene, error)
+      call agree(error)
+      if (allocated(error)) return
+      written = output_path(scene)
+      if (.not. batch_distributable(scene)) then
+         if (rank == manager) call run_scene(scene, quiet, error)
+         call agree(error)
+         return
+      end if
+      call batch_plan(scene, n_ranks, batch)
+      if (rank == manager) then
+         call batch_open(batch, quiet, error)
+         call agree(error)
+         if (allocated(error)) return
+         call manage(batch, error, busy)
+         if (allocated(error)) then
+            call batch_discard(batch)
+         else
+            call batch_commit(batch, error)
+         end if
+      else
+         call agree(error)
+         if (allocated(error)) return
+         call work(batch, busy)
+      end if
+      call agree(error)
+      written_ok = .true.
+      if (allocated(error)) written_ok = error%code == err_points_failed
+      call report_balance(busy, written_ok)
+   end subroutine run_scene_everywhere
+
+   !> Make the outcome collective: if any rank has an error, all have one, the most
+   !> severe (bad input, then a failed computation, then failed points in a written
+   !> file), with the message of the lowest rank holding it; the others get the same
+   !> code and an empty message, so that one rank prints it.
+   subroutine agree(error)
+      type(error_t), allocatable, intent(inout) :: error
+      integer, parameter :: severity_of_status(0:3) = [0, 2, 3, 1]  ! exit status -> severity
+      integer, parameter :: code_of_severity(3) = [err_points_failed, 0, err_input]
+      integer :: mine(2), worst(2)
+      mine = [0, n_ranks]
+      if (allocated(error)) mine = [severity_of_status(exit_status(error)), rank]
+      ! the highest severity, and among the ranks with it the lowest rank number
+      call MPI_Allreduce(mine(1), worst(1), 1, MPI_INTEGER, MPI_MAX, MPI_COMM_WORLD)
+      if (mine(1) /= worst(1)) mine(2) = n_ranks
+      call MPI_Allreduce(mine(2), worst(2), 1, MPI_INTEGER, MPI_MIN, MPI_COMM_WORLD)
+      if (worst(1) == 0) return
+      if (rank /= worst(2)) call set_error(error, code_of_severity(worst(1)), "")
+   end subroutine agree
+
+   !> Rank 0: hand out units, compute some, write all in order. Returns the first error
+   !> (a failed point, a write failure); after one, no new unit is started and the
+   !> queued ones are drained.
+   subroutine manage(batch, error, busy)
+      type(batch_t), intent(inout) :: batch
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), intent(out) :: busy  !! seconds rank 0 spent computing units
+      type(manager_t) :: m
+      integer :: w, d
+      logical :: computes, arrived
+      type(MPI_Status) :: probe
+
+      allocate (m%done(batch%n_units), m%queued(n_ranks - 1))
+      m%queued = 0
+      ! with many ranks, rank 0 only manages: answering at once keeps the others busy
+      computes = n_ranks <= 8
+      do d = 1, queue_depth
+         do w = 1, n_ranks - 1
+            call assign(m, batch, w)
+         end do
+      end do
+      do w = 1, n_ranks - 1
+         if (m%queued(w) == 0) call MPI_Send(0, 1, MPI_INTEGER, w, tag_assign, MPI_COMM_WORLD)
+      end do
+      do
+         ! serve every result that has arrived
+         do
+            call MPI_Iprobe(MPI_ANY_SOURCE, tag_result, MPI_COMM_WORLD, arrived, probe)
+            if (.not. arrived) exit
+            call receive_result(m, batch, probe%MPI_SOURCE, error)
+         end do
+         if (.not. m%stopping .and. m%next_unit <= batch%n_units .and. (computes .or. n_ranks == 1)) then
+            m%next_unit = m%next_unit + 1
+            call compute_timed(batch, m%next_unit - 1, m%done(m%next_unit - 1), m%busy)
+            call write_ready(m, batch, error)
+         else if (any(m%queued > 0)) then
+            call MPI_Probe(MPI_ANY_SOURCE, tag_result, MPI_COMM_WORLD, probe)
+            call receive_result(m, batch, probe%MPI_SOURCE, error)
+         else
+            exit
+         end if
+      end do
+      busy = m%busy
+   end subroutine manage
+
+   !> Queue the next unit at worker `w` (nothing once all are out or the run stops).
+   subroutine assign(m, batch, w)
+      type(manager_t), intent(inout) :: m
+      type(batch_t), intent(in) :: batch
+      integer, intent(in) :: w
+      if (m%stopping .or. m%next_unit > batch%n_units) return
+      call MPI_Send(m%next_unit, 1, MPI_INTEGER, w, tag_assign, MPI_COMM_WORLD)
+      m%next_unit = m%next_unit + 1
+      m%queued(w) = m%queued(w) + 1
+   end subroutine assign
+
+   !> Receive a result from `source`, give it its next unit (or tell it to stop), and
+   !> write what is ready.
+   subroutine receive_result(m, batch, source, error)
+      type(manager_t), intent(inout) :: m
+      type(batch_t), intent(inout) :: batch
+      integer, intent(in) :: source
+      type(error_t), allocatable, intent(inout) :: error
+      integer :: head(3)
+      type(batch_result_t) :: result
+      call MPI_Recv(head, 3, MPI_INTEGER, source, tag_result, MPI_COMM_WORLD, MPI_STATUS_IGNORE)
+      result%unit = head(1)
+      allocate (character(len=head(2)) :: result%text)
+      allocate (result%status(head(3)))
+      call MPI_Recv(result%text, head(2), MPI_CHARACTER, source, tag_text, MPI_COMM_WORLD, MPI_STATUS_IGNORE)
+      call MPI_Recv(result%status, head(3), MPI_INTEGER, source, tag_status, MPI_COMM_WORLD, MPI_STATUS_IGNORE)
+      m%queued(source) = m%queued(source) - 1
+      call assign(m, batch, source)
+      ! a worker with nothing queued and nothing more to get is told to stop
+      if (m%queued(source) == 0) call MPI_Send(0, 1, MPI_INTEGER, source, tag_assign, MPI_COMM_WORLD)
+      m%done(result%unit) = result
+      call write_ready(m, batch, error)
+   end subroutine receive_result
+
+   !> Write the results that are next in order; the first error stops the run.
+   subroutine write_ready(m, batch, error)
+      type(manager_t), intent(inout) :: m
+      type(batch_t), intent(inout) :: batch
+      type(error_t), allocatable, intent(inout) :: error
+      do while (m%next_write <= batch%n_units)
+         if (.not. allocated(m%done(m%next_write)%status)) exit
+         if (.not. m%stopping) then
+            call batch_write(batch, m%done(m%next_write), error)
+            if (allocated(error)) m%stopping = .true.
+         end if
+         deallocate (m%done(m%next_write)%text, m%done(m%next_write)%status)
+         m%next_write = m%next_write + 1
+      end do
+   end subroutine write_ready
+
+   !> Ranks 1 …: compute the units rank 0 assigns until told to stop (unit 0).
+   subroutine work(batch, busy)
+      type(batch_t), intent(in) :: batch
+      real(wp), intent(out) :: busy  !! seconds spent computing units
+      type(batch_result_t) :: result
+      integer :: unit
+      busy = 0.0_wp
+      do
+         call MPI_Recv(unit, 1, MPI_INTEGER, manager, tag_assign, MPI_COMM_WORLD, MPI_STATUS_IGNORE)
+         if (unit == 0) exit
+         call compute_timed(batch, unit, result, busy)
+         call MPI_Send([result%unit, len(result%text), size(result%status)], 3, MPI_INTEGER, manager, &
+            tag_result, MPI_COMM_WORLD)
+         call MPI_Send(result%text, len(result%text), MPI_CHARACTER, manager, tag_text, MPI_COMM_WORLD)
+         call MPI_Send(result%status, size(result%status), MPI_INTEGER, manager, tag_status, MPI_COMM_WORLD)
+      end do
+   end subroutine work
+
+   subroutine compute_timed(batch, unit, result, busy)
+      type(batch_t), intent(in) :: batch
+      integer, intent(in) :: unit
+      type(batch_result_t), intent(out) :: result
+      real(wp), intent(inout) :: busy  !! seconds spent computing so far
+      real(wp) :: start
+      start = MPI_Wtime()
+      call batch_compute(batch, unit, result)
+      busy = busy + (MPI_Wtime() - start)
+   end subroutine compute_timed
+
+   !> Collective: rank 0 says (unless quiet, after a successful run) how evenly the
+   !> computing was spread: the busiest rank's computing time over the mean of the ranks
+   !> that computed.
+   subroutine report_balance(busy, succeeded)
+      real(wp), intent(in) :: busy       !! this rank's computing time [s]
+      logical, intent(in) :: succeeded   !! the same on every rank
+      real(wp) :: all_busy(n_ranks), mean
+      integer :: n_computing
+      character(len=200) :: text
+      call MPI_Gather(busy, 1, MPI_DOUBLE_PRECISION, all_busy, 1, MPI_DOUBLE_PRECISION, manager, MPI_COMM_WORLD)
+      if (rank /= manager .or. quiet .or. .not. succeeded .or. n_ranks == 1) return
+      n_computing = count(all_busy > 0.0_wp)
+      if (n_computing == 0) return
+      mean = sum(all_busy)/n_computing
+      write (text, '(a,i0,a,i0,a,es9.3,a,es9.3,a,f6.3)') "hillstab_mpi: ", n_computing, " of ", n_ranks, &
+         " ranks computed; computing time per rank: mean ", mean, " s, busiest ", maxval(all_busy), &
+         " s; balance (busiest/mean) ", maxval(all_busy)/max(mean, tiny(1.0_wp))
+      write (error_unit, '(a)') trim(text)
+   end subroutine report_balance
+
+   function command_argument(i) result(text)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: text
+      integer :: length
+      call get_command_argument(i, length=length)
+      allocate (character(len=length) :: text)
+      call get_command_argument(i, text)
+   end function command_argument
+
+   !> `message` on rank 0, nothing elsewhere (for messages every rank would print alike).
+   function on_manager(message) result(text)
+      character(len=*), intent(in) :: message
+      character(len=:), allocatable :: text
+      text = ""
+      if (rank == manager) text = message
+   end function on_manager
+
+   !> Finish MPI and exit with `status`, printing `message` on stderr unless it is empty.
+   subroutine quit(message, status)
+      character(len=*), intent(in) :: message
+      integer, intent(in) :: status
+      if (len(message) > 0) write (error_unit, '(a)') message
+      call MPI_Finalize()
+      call ieee_set_flag(ieee_all, .false.)
+      stop status, quiet=.true.
+   end subroutine quit
+
+   subroutine print_help()
+      write (output_unit, '(a)') &
+         "usage: mpirun -np N hillstab_mpi [--quiet] SCENE.nml...", &
+         "", &
+         "hillstab spread over MPI ranks: the points of chart and points scenes are computed", &
+         "on all ranks (dynamic load balancing), rank 0 writes the same file as a", &
+         "single-process hillstab run; other tasks run on rank 0.", &
+         "Each SCENE is a namelist file (&scene plus &chart, &points or &coefficient);", &
+         "results go to <output>_<task>.dat, gnuplot-ready. The README has the full", &
+         "namelist reference and 'Running on a cluster'.", &
+         "", &
+         "  -q, --quiet    no progress or messages on stderr (errors still)", &
+         "  -h, --help     this text", &
+         "  -V, --version  the version", &
+         "", &
+         "Exit status (every rank): 0 success, 2 bad input, 3 the file was written but some", &
+         "points failed (status 2 in the file), 1 a computation failed."
+   end subroutine print_help
+end program hillstab_mpi

@@ -1,0 +1,286 @@
+#!/usr/bin/env python3
+"""Check that every public entity of the library is documented for FORD.
+
+FORD's own `warn` option flags every local variable too, so it cannot tell a missing
+doc comment on the API from an undocumented loop index. This checker reads the
+sources under src/ and reports, with file and line:
+  - a module without a `!>` header;
+  - a public procedure, derived type, parameter, variable or interface without a
+    `!>` comment before it (or `!!` after it);
+  - an argument of a public procedure (module procedure, interface body, external
+    procedure) without a `!>` line before its declaration or `!!` on it;
+  - a component or type-bound procedure of a public derived type without one.
+A public generic interface makes its specific procedures public. Exit status 1 when
+anything is missing. Usage: scripts/doc_check.py [FILE.f90...] (default: src/*.f90).
+"""
+import glob
+import re
+import sys
+
+IDENT = r"[a-z_][a-z0-9_]*"
+PROC_START = re.compile(
+    r"^(?:(?:pure|elemental|impure|recursive|module|non_recursive)\s+)*"
+    r"(?:(?:integer|real|logical|complex|character|double\s+precision|type|class)\s*(?:\([^)]*\))?\s*(?:\([^)]*\))?\s+)?"
+    r"(?:(?:pure|elemental|impure|recursive)\s+)*"
+    r"(subroutine|function)\s+(" + IDENT + r")\s*(\(([^)]*)\))?",
+    re.I)
+END_PROC = re.compile(r"^end\s*(subroutine|function)\b", re.I)
+END_ANY_PROC = re.compile(r"^end\s*(subroutine|function)?\s*(" + IDENT + r")?\s*$", re.I)
+
+
+class Statement:
+    """A logical line: continuation lines joined, comments split off."""
+
+    def __init__(self, first, code, trailing_doc, docs_before):
+        self.line = first            # 1-based line number of the first physical line
+        self.code = code             # code without comments, lower case
+        self.trailing_doc = trailing_doc  # a `!!` comment on one of its lines
+        self.docs_before = docs_before    # `!>` lines immediately before it
+
+
+def split_comment(line):
+    """Code and comment of one physical line (quotes respected)."""
+    quote = None
+    for i, ch in enumerate(line):
+        if quote:
+            if ch == quote:
+                quote = None
+        elif ch in "'\"":
+            quote = ch
+        elif ch == "!":
+            return line[:i], line[i:]
+    return line, ""
+
+
+def statements(lines):
+    result = []
+    pending_docs = False
+    i = 0
+    while i < len(lines):
+        code, comment = split_comment(lines[i])
+        stripped = code.strip()
+        if not stripped:
+            if comment.strip().startswith("!>"):
+                pending_docs = True
+            elif comment.strip().startswith("!!") and result:
+                result[-1].trailing_doc = True  # `!!` on the line after a statement
+            elif comment.strip() and not comment.strip().startswith("!$"):
+                pass  # a plain comment between a `!>` block and its entity keeps the doc
+            elif not comment.strip():
+                pending_docs = False if not lines[i].strip() else pending_docs
+            i += 1
+            continue
+        first = i + 1
+        parts = [stripped]
+        trailing = comment.strip().startswith("!!")
+        while parts[-1].endswith("&") and i + 1 < len(lines):
+            parts[-1] = parts[-1][:-1]
+            i += 1
+            code, comment = split_comment(lines[i])
+            parts.append(code.strip().lstrip("&"))
+            trailing = trailing or comment.strip().startswith("!!")
+        for piece in " ".join(parts).split(";"):
+            if piece.strip():
+                result.append(Statement(first, piece.strip().lower(), trailing, pending_docs))
+        pending_docs = False
+        i += 1
+    return result
+
+
+def declared_names(code):
+    """Names declared by a type declaration statement `... :: a, b = 1, c(2)`."""
+    if "::" not in code:
+        return []
+    rest = code.split("::", 1)[1]
+    depth, current, names = 0, "", []
+    for ch in rest:
+        if ch in "([":
+            depth += 1
+        elif ch in ")]":
+            depth -= 1
+        if ch == "," and depth == 0:
+            names.append(current)
+            current = ""
+        else:
+            current += ch
+    names.append(current)
+    out = []
+    for n in names:
+        m = re.match(r"\s*(" + IDENT + ")", n)
+        if m:
+            out.append(m.group(1))
+    return out
+
+
+def documented(st):
+    return st.docs_before or st.trailing_doc
+
+
+class Checker:
+    def __init__(self):
+        self.problems = []
+
+    def report(self, path, line, what):
+        self.problems.append(f"{path}:{line}: {what}")
+
+    def check_file(self, path):
+        with open(path, encoding="utf-8") as f:
+            sts = statements(f.read().splitlines())
+        module = None
+        for k, st in enumerate(sts):
+            m = re.match(r"^module\s+(" + IDENT + r")\s*$", st.code)
+            if m:
+                module = m.group(1)
+                if not st.docs_before:
+                    self.report(path, st.line, f"module {module} has no !> header")
+                self.check_module(path, sts[k:], module)
+                return
+        # no module: external procedures, all public
+        self.check_procedures(path, sts, None, top_level=True)
+
+    def check_module(self, path, sts, module):
+        public, default_public = set(), False
+        for st in sts:
+            if re.match(r"^public\s*$", st.code):
+                default_public = True
+            m = re.match(r"^public\s*(::)?\s*(.*)$", st.code)
+            if m and m.group(2):
+                public.update(n.strip() for n in m.group(2).split(",") if n.strip())
+        if default_public:
+            return  # an umbrella module re-exporting other modules
+        # attribute form: `integer, public :: x`
+        in_contains = False
+        depth_type = None
+        in_interface = None
+        generic_specifics = set()
+        for idx, st in enumerate(sts):
+            c = st.code
+            if c == "contains":
+                in_contains = True
+                break
+            if re.match(r"^(abstract\s+)?interface\b", c):
+                m = re.match(r"^interface\s+(" + IDENT + r")", c)
+                in_interface = m.group(1) if m else "(abstract)"
+                if m and in_interface in public and not documented(st):
+                    self.report(path, st.line, f"public interface {in_interface} has no doc comment")
+                continue
+            if re.match(r"^end\s*interface", c):
+                in_interface = None
+                continue
+            if in_interface:
+                m = re.match(r"^module\s+procedure\s+(.*)$", c)
+                if m and in_interface in public:
+                    generic_specifics.update(n.strip() for n in m.group(1).split(","))
+                continue
+            m = re.match(r"^type\s*(,[^:]*)?(::)?\s*(" + IDENT + r")\s*$", c)
+            if m and not c.startswith("type("):
+                depth_type = m.group(3)
+                if depth_type in public and not documented(st):
+                    self.report(path, st.line, f"public type {depth_type} has no doc comment")
+                continue
+            if re.match(r"^end\s*type", c):
+                depth_type = None
+                continue
+            if depth_type:
+                if depth_type in public and ("::" in c or c.startswith("procedure")) \
+                        and not c.startswith(("private", "contains", "sequence")) and not documented(st):
+                    names = declared_names(c) if "::" in c else [c]
+                    self.report(path, st.line, f"component {', '.join(names)} of public type {depth_type} "
+                                               "has no doc comment")
+                continue
+            if "::" in c and not c.startswith(("public", "private", "use ", "use,", "namelist", "procedure")):
+                attrs = c.split("::", 1)[0]
+                names = declared_names(c)
+                exposed = [n for n in names if n in public or ", public" in attrs or ",public" in attrs]
+                if exposed and not documented(st):
+                    self.report(path, st.line, f"public entity {', '.join(exposed)} has no doc comment")
+        self.check_interface_bodies(path, sts, public)
+        self.check_procedures(path, sts, public | generic_specifics, top_level=False)
+
+    def check_interface_bodies(self, path, sts, public):
+        """Procedures declared in interface blocks: the legacy interfaces and abstract ones."""
+        in_interface = False
+        interface_name = None
+        for idx, st in enumerate(sts):
+            c = st.code
+            if c == "contains":
+                return
+            if re.match(r"^(abstract\s+)?interface\b", c):
+                in_interface = True
+                m = re.match(r"^interface\s+(" + IDENT + r")", c)
+                interface_name = m.group(1) if m else None
+                continue
+            if re.match(r"^end\s*interface", c):
+                in_interface = False
+                continue
+            if in_interface:
+                m = PROC_START.match(c)
+                if m and (m.group(2) in public or interface_name in public):
+                    self.check_one_procedure(path, sts, idx, m)
+
+    def check_procedures(self, path, sts, public, top_level):
+        in_contains = top_level
+        depth = 0
+        for idx, st in enumerate(sts):
+            c = st.code
+            if c == "contains":
+                in_contains = True
+                continue
+            if not in_contains:
+                continue
+            m = PROC_START.match(c)
+            if m and not c.startswith("end"):
+                depth += 1
+                if depth == 1 and (public is None or m.group(2) in public):
+                    self.check_one_procedure(path, sts, idx, m)
+                continue
+            if END_PROC.match(c):
+                depth -= 1
+
+    def check_one_procedure(self, path, sts, idx, match):
+        kind, name = match.group(1).lower(), match.group(2)
+        st = sts[idx]
+        if not st.docs_before:
+            self.report(path, st.line, f"public {kind} {name} has no !> doc comment")
+        args = [a.strip() for a in (match.group(4) or "").split(",") if a.strip() and a.strip() != "*"]
+        if not args:
+            return
+        pending = set(args)
+        depth = 0
+        for st2 in sts[idx + 1:]:
+            c = st2.code
+            if PROC_START.match(c) and not c.startswith("end"):
+                depth += 1
+                continue
+            if END_PROC.match(c) or re.match(r"^end\s*$", c):
+                if depth == 0:
+                    break
+                depth -= 1
+                continue
+            if depth or "::" not in c:
+                continue
+            for n in declared_names(c):
+                if n in pending:
+                    pending.discard(n)
+                    if not documented(st2):
+                        self.report(path, st2.line, f"argument {n} of public {kind} {name} has no doc comment")
+        for n in sorted(pending):
+            self.report(path, st.line, f"argument {n} of public {kind} {name}: declaration not found")
+
+
+def main(argv):
+    files = argv[1:] or sorted(glob.glob("src/*.f90"))
+    checker = Checker()
+    for path in files:
+        checker.check_file(path)
+    for p in checker.problems:
+        print(p)
+    if checker.problems:
+        print(f"doc-check: {len(checker.problems)} undocumented public entities or arguments", file=sys.stderr)
+        return 1
+    print(f"doc-check: every public entity and argument of {len(files)} files is documented")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

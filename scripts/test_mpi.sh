@@ -1,0 +1,122 @@
+#!/usr/bin/env bash
+# Tests of hillstab_mpi (run by `make test-mpi` and CI): builds hillstab and hillstab_mpi
+# with CMake (-DHILLSTAB_MPI=ON), then checks against the single-process program:
+#  - np = 1, 2, 3 write the same file as hillstab (charts with many and few rows, damped,
+#    a points list, a non-distributed task);
+#  - bad input (unknown variable, unwritable output) gives exit 2 on every rank, no hang,
+#    no file; a failing point is written as hillstab writes it (status 2, placeholders),
+#    with hillstab's message and exit 3 on every rank;
+#  - options: --version, --help, an unknown option.
+# Prints one line per check and a closing `N passed, M failed`; exits 1 on a failure.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup_mpi.sh
+build=build/cmake_mpi
+cmake -S . -B "$build" -DHILLSTAB_MPI=ON -DCMAKE_BUILD_TYPE=Release >"$build.log" 2>&1 \
+   && cmake --build "$build" -j 2 >>"$build.log" 2>&1 \
+   || { cat "$build.log"; echo "test_mpi: build failed"; exit 1; }
+serial=$PWD/$build/hillstab
+mpi=$PWD/$build/hillstab_mpi
+# root in containers and CI; more ranks than cores on small machines
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_rmaps_base_oversubscribe=1
+export OMP_NUM_THREADS=1
+run_mpi() { timeout 300 mpirun --oversubscribe -np "$@"; }
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+pass() { echo "  PASS mpi/$1"; passed=$((passed + 1)); }
+fail() { echo "  FAIL mpi/$1"; failed=$((failed + 1)); }
+check() { if eval "$2"; then pass "$1"; else fail "$1"; fi; }
+
+# every rank's exit status, one file per rank
+rank_statuses() {
+   local np=$1 dir=$2
+   shift 2
+   rm -rf "$dir"
+   mkdir -p "$dir"
+   run_mpi "$np" sh -c '"$0" "$@" 2>>"'"$dir"'/stderr.$OMPI_COMM_WORLD_RANK"; echo $? > "'"$dir"'/rc.$OMPI_COMM_WORLD_RANK"' \
+      "$mpi" "$@" >/dev/null 2>&1
+   echo $? >"$dir/mpirun_rc"
+}
+all_ranks() { # all_ranks DIR NP STATUS: every rank exited with STATUS
+   local k
+   for ((k = 0; k < $2; k++)); do
+      [ -f "$1/rc.$k" ] && [ "$(cat "$1/rc.$k")" = "$3" ] || return 1
+   done
+}
+
+echo "# suite mpi"
+printf '%s\n' "&scene task='chart', output='$work/many' /" \
+   "&chart alpha_min=0, alpha_max=9.8, n_alpha=37, beta_min=-2, beta_max=12, n_beta=53 /" >"$work/many.nml"
+printf '%s\n' "&scene task='chart', epsilon=0.3, output='$work/few' /" \
+   "&chart alpha_min=4, alpha_max=9.7, n_alpha=3, beta_min=-2, beta_max=12, n_beta=401 /" >"$work/few.nml"
+awk 'BEGIN { for (k = 0; k < 97; k++) printf "%.4f %.4f\n", 9.8 * k / 97, 12 - 14 * ((7 * k) % 31) / 31 }' \
+   >"$work/points.dat"
+printf '%s\n' "&scene task='points', method='magnus6', output='$work/pts' /" \
+   "&points file='$work/points.dat' /" >"$work/pts.nml"
+printf '%s\n' "&scene task='coefficient', output='$work/coef' /" "&coefficient /" >"$work/coef.nml"
+for name in many:chart few:chart pts:points coef:coefficient; do
+   scene=${name%%:*}
+   task=${name##*:}
+   file="$work/${scene}_${task}.dat"
+   "$serial" -q "$work/$scene.nml" && mv "$file" "$work/$scene.serial"
+   for np in 1 2 3; do
+      rm -f "$file"
+      run_mpi "$np" "$mpi" -q "$work/$scene.nml"
+      rc=$?
+      check "${scene}_np${np}_same_file" '[ $rc -eq 0 ] && cmp -s "$file" "$work/$scene.serial"'
+   done
+done
+# the data lines alone are identical too (the header is, since the scene file is the same)
+check "data_lines" 'cmp -s <(grep -v "^#" "$work/many_chart.dat") <(grep -v "^#" "$work/many.serial") && [ $(grep -vc "^#" "$work/many.serial") -eq $((37 * 53 + 36)) ]'
+
+# bad input: every rank exits 2, nothing written
+printf '%s\n' "&scene task='chart', output='$work/bad' /" "&chart n_alpah=3 /" >"$work/bad.nml"
+for np in 1 3; do
+   rank_statuses "$np" "$work/st" "$work/bad.nml"
+   check "bad_scene_np${np}_exit2_every_rank" 'all_ranks "$work/st" $np 2 && [ ! -e "$work/bad_chart.dat" ]'
+   check "bad_scene_np${np}_one_message" '[ $(cat "$work"/st/stderr.* | grep -c "n_alpah") -eq 1 ]'
+done
+printf '%s\n' "&scene task='chart', output='$work/no/such/dir/x' /" "&chart n_alpha=3, n_beta=3 /" >"$work/nodir.nml"
+rank_statuses 3 "$work/st" "$work/nodir.nml"
+check "unwritable_output_exit2_every_rank" 'all_ranks "$work/st" 3 2'
+rank_statuses 2 "$work/st" "$work/missing.nml"
+check "missing_scene_exit2_every_rank" 'all_ranks "$work/st" 2 2'
+
+# a failing point (method auto at beta = 1e13 stops at its step limit): as hillstab, the file is
+# written with the point's status and placeholders, every rank exits 3, the message is hillstab's
+awk 'BEGIN { for (k = 0; k < 40; k++) print 1 + k / 10, (k == 23 ? 1e13 : 2.0) }' >"$work/fail.dat"
+printf '%s\n' "&scene task='points', method='auto', output='$work/fail' /" "&points file='$work/fail.dat' /" \
+   >"$work/fail.nml"
+"$serial" -q "$work/fail.nml" 2>"$work/fail.serial_message"
+serial_rc=$?
+mv "$work/fail_points.dat" "$work/fail.serial"
+for np in 1 2 3; do
+   rm -f "$work/fail_points.dat"
+   rank_statuses "$np" "$work/st" -q "$work/fail.nml"
+   check "failing_point_np${np}_exit3_every_rank" '[ $serial_rc -eq 3 ] && all_ranks "$work/st" $np 3'
+   check "failing_point_np${np}_message" \
+      '[ "$(cat "$work"/st/stderr.*)" = "$(sed "s/^hillstab:/hillstab_mpi:/" "$work/fail.serial_message")" ]'
+   check "failing_point_np${np}_same_file" 'cmp -s "$work/fail_points.dat" "$work/fail.serial"'
+done
+# a chart whose first point fails: status and file as hillstab's
+printf '%s\n' "&scene task='chart', output='$work/fail' /" \
+   "&chart alpha_min=3, alpha_max=3, n_alpha=2, beta_min=2, beta_max=1e13, n_beta=3 /" >"$work/fail_chart.nml"
+"$serial" -q "$work/fail_chart.nml" 2>/dev/null
+serial_rc=$?
+mv "$work/fail_chart.dat" "$work/fail_chart.serial"
+rank_statuses 3 "$work/st" -q "$work/fail_chart.nml"
+check "failing_chart_np3_as_serial" 'all_ranks "$work/st" 3 $serial_rc && cmp -s "$work/fail_chart.dat" "$work/fail_chart.serial"'
+check "no_temporary_files" '[ -z "$(ls "$work" | grep part)" ]'
+
+# options
+check "version" '[ "$(run_mpi 2 "$mpi" --version)" = "$("$serial" --version | sed s/hillstab/hillstab_mpi/)" ]'
+check "help" 'run_mpi 2 "$mpi" --help | grep -q "usage: mpirun"'
+rank_statuses 2 "$work/st" --frobnicate
+check "unknown_option_exit2_every_rank" 'all_ranks "$work/st" 2 2'
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

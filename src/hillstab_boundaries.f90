@@ -1,0 +1,323 @@
+!> Transition curves beyond the eigenvalues: the independent check of a boundary by
+!> method auto, the boundaries of the approximate methods (the paper's eq. (37),
+!> N-piece segmentation) by a bracketing root finder, the GSL witness for the
+!> Mathieu model, and the unstable β intervals of both (for the misclassified area).
+!> Numerics only: no files, no namelists.
+!>
+!> - `verify_boundary`: S(α, β) by method auto at the boundary. It passes when
+!>   |S ∓ 2| ≤ 2·tolerance·max(1, |S|) (the trace error auto guarantees), or when the
+!>   β error this residual implies, (|S ∓ 2| − that allowance)/|dS/dβ|, is at most
+!>   `beta_accuracy_factor`·tolerance·max(1, |β|); dS/dβ by a centred difference of auto.
+!> - `approximate_boundaries`: the roots of S_method(β) = ±2 for the closed-form or
+!>   segmented methods: S sampled on `n_samples` points from below every boundary
+!>   (β ≥ −|α| on any curve) to the top of the window, each sign change of S ∓ 2
+!>   refined by Brent's method to tolerance·max(1, |β|). The order of a root is its
+!>   rank among the roots of its kind counted from below (a₀ | b₁ a₁ | b₂ a₂ …), so
+!>   a tongue narrower than the sampling step is missed and shifts the orders above it.
+!>
+!>```fortran
+!> type(boundary_check_t) :: check
+!> type(error_t), allocatable :: error
+!> call verify_boundary(model_elastic, 5.0_wp, 0.8766005119978297_wp, -2, 1.0e-11_wp, check, error)
+!> print *, check%passed, check%trace
+!>```
+module hillstab_boundaries
+   use hillstab_kinds, only: wp, pi2
+   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
+   use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu
+   use hillstab_transfer, only: trace_t
+   use hillstab_monodromy, only: method_t, method_auto, monodromy_trace
+   use hillstab_gsl, only: mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b, mathieu_max_order
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   implicit none
+   private
+   public :: boundary_check_t, verify_boundary, approximate_root_t, approximate_boundaries
+   public :: mathieu_witness, gsl_witness_max_q, beta_accuracy_factor, unstable_intervals_from_roots
+   public :: interval_length, symmetric_difference_length
+
+   !> A boundary passes the check when the β error implied by the trace residual is at
+   !> most this times tolerance·max(1, |β|) (tolerance 1e-11 → 1e-9 at |β| ≤ 1).
+   real(wp), parameter :: beta_accuracy_factor = 100.0_wp
+   !> Trace allowance (times 1e-8·max(1, |S|)) when auto is limited by round-off there.
+   real(wp), parameter :: roundoff_trace_allowance = 1.0e-8_wp
+   !> GSL's Mathieu values are used as a witness only for |q| up to this (its continued
+   !> fractions stop at a fixed length and lose accuracy for larger |q|).
+   real(wp), parameter :: gsl_witness_max_q = 100.0_wp
+
+   !> Result of the independent check of one boundary.
+   type :: boundary_check_t
+      logical :: passed = .false.      !! |S| = 2 to the accuracy (see the module doc)
+      logical :: roundoff = .false.    !! auto could give S only to the round-off level there
+      real(wp) :: trace = 0.0_wp       !! S by method auto at the boundary
+      real(wp) :: slope = 0.0_wp       !! dS/dβ (0 when not needed)
+      real(wp) :: beta_error = 0.0_wp  !! β error implied by the residual (0 when within the trace allowance)
+   end type boundary_check_t
+
+   !> One root of S_method(β) = ±2.
+   type :: approximate_root_t
+      real(wp) :: beta = 0.0_wp      !! β of the root
+      integer :: trace_sign = 2      !! +2 or −2
+      integer :: order = 0           !! n: rank among the roots of its kind (a₀ | b₁ a₁ | …)
+      integer :: edge = 1            !! 1 lower, 2 upper edge of the tongue of this order (0 for n = 0)
+      real(wp) :: residual = 0.0_wp  !! S_method(β) ∓ 2 at the root
+   end type approximate_root_t
+
+contains
+
+   !> S by method auto; `limited` when only the round-off level could be reached.
+   subroutine auto_trace(kind, alpha, beta, tolerance, s, limited, error)
+      integer, intent(in) :: kind
+      real(wp), intent(in) :: alpha, beta, tolerance
+      real(wp), intent(out) :: s
+      logical, intent(inout) :: limited
+      type(error_t), allocatable, intent(out) :: error
+      type(trace_t) :: tr
+      call monodromy_trace(hill_model_t(kind, alpha, beta, 0.0_wp), method_t(method_auto, tolerance=tolerance), &
+                           tr, error)
+      s = tr%value
+      if (allocated(error)) then
+         if (error%code /= err_accuracy) return
+         deallocate (error)
+         limited = .true.
+      end if
+      if (tr%overflow .or. .not. ieee_is_finite(s)) then
+         call set_error(error, err_invalid_parameter, "boundary check: S overflows at a boundary")
+      end if
+   end subroutine auto_trace
+
+   !> Check a boundary independently: S(α, β) = trace_sign by method auto.
+   subroutine verify_boundary(kind, alpha, beta, trace_sign, tolerance, check, error)
+      integer, intent(in) :: kind           !! model_elastic or model_mathieu
+      real(wp), intent(in) :: alpha, beta   !! the boundary point
+      integer, intent(in) :: trace_sign     !! +2 or −2
+      real(wp), intent(in) :: tolerance     !! the tolerance the boundary was computed to
+      type(boundary_check_t), intent(out) :: check  !! S by auto at the point and its distance from trace_sign
+      type(error_t), allocatable, intent(out) :: error  !! auto failed at the point; unallocated on success
+      real(wp) :: residual, allowance, h, s_plus, s_minus
+      call auto_trace(kind, alpha, beta, tolerance, check%trace, check%roundoff, error)
+      if (allocated(error)) return
+      residual = abs(check%trace - trace_sign)
+      allowance = 2.0_wp*tolerance*max(1.0_wp, abs(check%trace))
+      if (check%roundoff) allowance = max(allowance, roundoff_trace_allowance*max(1.0_wp, abs(check%trace)))
+      if (residual <= allowance) then
+         check%passed = .true.
+         return
+      end if
+      h = 1.0e-5_wp*max(1.0_wp, abs(beta))
+      call auto_trace(kind, alpha, beta + h, tolerance, s_plus, check%roundoff, error)
+      if (allocated(error)) return
+      call auto_trace(kind, alpha, beta - h, tolerance, s_minus, check%roundoff, error)
+      if (allocated(error)) return
+      check%slope = (s_plus - s_minus)/(2.0_wp*h)
+      if (check%slope == 0.0_wp) then
+         check%beta_error = huge(1.0_wp)
+      else
+         check%beta_error = (residual - allowance)/abs(check%slope)
+      end if
+      check%passed = check%beta_error <= beta_accuracy_factor*tolerance*max(1.0_wp, abs(beta))
+   end subroutine verify_boundary
+
+   !> S_method(α, β) − target, finite (an overflowing S keeps its sign, clamped).
+   subroutine shifted_trace(kind, alpha, beta, method, target, value, error)
+      integer, intent(in) :: kind
+      real(wp), intent(in) :: alpha, beta
+      type(method_t), intent(in) :: method
+      real(wp), intent(in) :: target
+      real(wp), intent(out) :: value
+      type(error_t), allocatable, intent(out) :: error
+      type(trace_t) :: tr
+      call monodromy_trace(hill_model_t(kind, alpha, beta, 0.0_wp), method, tr, error)
+      if (allocated(error)) then
+         if (error%code /= err_accuracy) return
+         deallocate (error)
+      end if
+      value = sign(min(abs(tr%value), 1.0e300_wp), tr%value) - target
+   end subroutine shifted_trace
+
+   !> Brent's method for S_method(β) = target on [a, b] with a sign change.
+   subroutine brent_root(kind, alpha, method, target, a_in, b_in, fa_in, fb_in, xtol, root, residual, error)
+      integer, intent(in) :: kind
+      real(wp), intent(in) :: alpha, target, a_in, b_in, fa_in, fb_in, xtol
+      type(method_t), intent(in) :: method
+      real(wp), intent(out) :: root, residual
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: a, b, c, d, e, fa, fb, fc, p, q, r, s, tol1, xm
+      integer :: iteration
+      a = a_in; b = b_in; fa = fa_in; fb = fb_in
+      c = b; fc = fb; d = b - a; e = d
+      do iteration = 1, 200
+         if ((fb > 0.0_wp .and. fc > 0.0_wp) .or. (fb < 0.0_wp .and. fc < 0.0_wp)) then
+            c = a; fc = fa; d = b - a; e = d
+         end if
+         if (abs(fc) < abs(fb)) then
+            a = b; b = c; c = a
+            fa = fb; fb = fc; fc = fa
+         end if
+         tol1 = 2.0_wp*epsilon(1.0_wp)*abs(b) + 0.5_wp*xtol
+         xm = 0.5_wp*(c - b)
+         if (abs(xm) <= tol1 .or. fb == 0.0_wp) exit
+         if (abs(e) >= tol1 .and. abs(fa) > abs(fb)) then
+            s = fb/fa
+            if (a == c) then
+               p = 2.0_wp*xm*s
+               q = 1.0_wp - s
+            else
+               q = fa/fc
+               r = fb/fc
+               p = s*(2.0_wp*xm*q*(q - r) - (b - a)*(r - 1.0_wp))
+               q = (q - 1.0_wp)*(r - 1.0_wp)*(s - 1.0_wp)
+            end if
+            if (p > 0.0_wp) q = -q
+            p = abs(p)
+            if (2.0_wp*p < min(3.0_wp*xm*q - abs(tol1*q), abs(e*q))) then
+               e = d
+               d = p/q
+            else
+               d = xm; e = d
+            end if
+         else
+            d = xm; e = d
+         end if
+         a = b; fa = fb
+         if (abs(d) > tol1) then
+            b = b + d
+         else
+            b = b + sign(tol1, xm)
+         end if
+         call shifted_trace(kind, alpha, b, method, target, fb, error)
+         if (allocated(error)) return
+      end do
+      root = b
+      residual = fb
+   end subroutine brent_root
+
+   !> The roots of S_method(β) = ±2 in [beta_min, beta_max] for an approximate method
+   !> (formula or segments), with their orders, ascending in β.
+   subroutine approximate_boundaries(kind, alpha, method, beta_min, beta_max, n_samples, tolerance, roots, error)
+      integer, intent(in) :: kind            !! model_elastic or model_mathieu
+      real(wp), intent(in) :: alpha          !! α (ν)
+      type(method_t), intent(in) :: method   !! method_formula or method_segments
+      real(wp), intent(in) :: beta_min, beta_max  !! the beta window searched
+      integer, intent(in) :: n_samples       !! sampling points of the bracket search over the window
+      real(wp), intent(in) :: tolerance      !! root accuracy, relative to max(1, |β|)
+      type(approximate_root_t), allocatable, intent(out) :: roots(:)  !! the roots with their orders, ascending in beta
+      type(error_t), allocatable, intent(out) :: error  !! the method failed at a sample; unallocated on success
+      real(wp) :: low, step, b0, b1, root, residual, targets(2)
+      real(wp), allocatable :: f(:, :)
+      integer :: n, i, t, count_kind(2), m
+      type(approximate_root_t), allocatable :: found(:)
+      allocate (roots(0), found(0))
+      if (n_samples < 2) then
+         call set_error(error, err_invalid_parameter, "approximate boundaries: need at least 2 samples")
+         return
+      end if
+      ! every curve of a weighted Hill equation lies at β ≥ −|α|; start below it
+      low = min(beta_min, -abs(alpha) - 1.0_wp)
+      step = (beta_max - beta_min)/real(n_samples - 1, wp)
+      if (step <= 0.0_wp) step = 1.0_wp
+      n = n_samples + ceiling((beta_min - low)/step)
+      targets = [2.0_wp, -2.0_wp]
+      allocate (f(0:n - 1, 2))
+      do i = 0, n - 1
+         do t = 1, 2
+            call shifted_trace(kind, alpha, sample(i), method, targets(t), f(i, t), error)
+            if (allocated(error)) return
+         end do
+      end do
+      count_kind = 0
+      do i = 0, n - 2
+         b0 = sample(i); b1 = sample(i + 1)
+         do t = 1, 2
+            if (f(i, t) == 0.0_wp) then
+               root = b0; residual = 0.0_wp
+            else if (f(i, t)*f(i + 1, t) < 0.0_wp) then
+               call brent_root(kind, alpha, method, targets(t), b0, b1, f(i, t), f(i + 1, t), &
+                               tolerance*max(1.0_wp, abs(b0), abs(b1)), root, residual, error)
+               if (allocated(error)) return
+            else
+               cycle
+            end if
+            count_kind(t) = count_kind(t) + 1
+            m = count_kind(t)
+            if (root < beta_min .or. root > beta_max) cycle
+            if (t == 1) then   ! a0 | b2 a2 | b4 a4 ...: ranks 1 | 2 3 | 4 5
+               found = [found, approximate_root_t(root, 2, 2*(m/2), merge(0, 1 + mod(m, 2), m == 1), residual)]
+            else               ! b1 a1 | b3 a3 ...: ranks 1 2 | 3 4
+               found = [found, approximate_root_t(root, -2, 2*((m - 1)/2) + 1, 2 - mod(m, 2), residual)]
+            end if
+         end do
+      end do
+      roots = found
+   contains
+      pure real(wp) function sample(j)
+         integer, intent(in) :: j
+         if (j == n - 1) then
+            sample = beta_max
+         else
+            sample = beta_max - step*real(n - 1 - j, wp)
+         end if
+      end function sample
+   end subroutine approximate_boundaries
+
+   !> GSL's β for the Mathieu curve (order, parity) at ν, when GSL is trusted there
+   !> (order ≤ mathieu_max_order, |q| = 2|ν|/π² ≤ gsl_witness_max_q); `available` false otherwise.
+   subroutine mathieu_witness(order, parity, nu, beta, available)
+      integer, intent(in) :: order, parity  !! order n of the curve; parity: 1 even (a_n), 2 odd (b_n)
+      real(wp), intent(in) :: nu  !! Mathieu amplitude nu
+      real(wp), intent(out) :: beta  !! GSL's beta on the curve (0 when not available)
+      logical, intent(out) :: available  !! GSL is trusted at this order and q
+      type(error_t), allocatable :: error
+      beta = 0.0_wp
+      available = order <= mathieu_max_order .and. 2.0_wp*abs(nu)/pi2 <= gsl_witness_max_q .and. &
+                  (parity == 1 .or. order >= 1)
+      if (.not. available) return
+      call mathieu_transition_beta(merge(mathieu_kind_a, mathieu_kind_b, parity == 1), order, nu, beta, error)
+      if (allocated(error)) then
+         available = .false.
+         beta = 0.0_wp
+      end if
+   end subroutine mathieu_witness
+
+   !> The unstable β intervals inside [lo, hi] for a method, from its sorted roots of
+   !> |S| = 2 in [lo, hi]: between consecutive roots (and the ends) the verdict is
+   !> that of S_method at the midpoint.
+   subroutine unstable_intervals_from_roots(kind, alpha, method, lo, hi, roots, intervals, error)
+      integer, intent(in) :: kind  !! model_elastic or model_mathieu
+      real(wp), intent(in) :: alpha, lo, hi  !! alpha (nu); the beta window [lo, hi]
+      type(method_t), intent(in) :: method  !! the method whose verdicts are used
+      real(wp), intent(in) :: roots(:)   !! ascending, inside [lo, hi]
+      real(wp), allocatable, intent(out) :: intervals(:, :)  !! (2, m): [start, end] of each unstable interval
+      type(error_t), allocatable, intent(out) :: error  !! the method failed at a midpoint; unallocated on success
+      real(wp), allocatable :: cuts(:)
+      real(wp) :: s
+      integer :: i
+      allocate (intervals(2, 0))
+      cuts = [lo, roots, hi]
+      do i = 1, size(cuts) - 1
+         if (cuts(i + 1) <= cuts(i)) cycle
+         call shifted_trace(kind, alpha, 0.5_wp*(cuts(i) + cuts(i + 1)), method, 0.0_wp, s, error)
+         if (allocated(error)) return
+         if (abs(s) > 2.0_wp) intervals = reshape([intervals, cuts(i), cuts(i + 1)], [2, size(intervals, 2) + 1])
+      end do
+   end subroutine unstable_intervals_from_roots
+
+   !> Total length of a union of disjoint intervals (2, m).
+   pure real(wp) function interval_length(intervals)
+      real(wp), intent(in) :: intervals(:, :)  !! (2, m): [start, end] of each interval
+      interval_length = sum(intervals(2, :) - intervals(1, :))
+   end function interval_length
+
+   !> Length of the symmetric difference of two unions of disjoint sorted intervals.
+   pure real(wp) function symmetric_difference_length(a, b) result(length)
+      real(wp), intent(in) :: a(:, :), b(:, :)  !! (2, m) unions of disjoint intervals, sorted
+      integer :: i, j
+      real(wp) :: overlap
+      overlap = 0.0_wp
+      do i = 1, size(a, 2)
+         do j = 1, size(b, 2)
+            overlap = overlap + max(0.0_wp, min(a(2, i), b(2, j)) - max(a(1, i), b(1, j)))
+         end do
+      end do
+      length = interval_length(a) + interval_length(b) - 2.0_wp*overlap
+   end function symmetric_difference_length
+end module hillstab_boundaries

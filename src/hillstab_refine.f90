@@ -1,0 +1,151 @@
+!> Global error control for integrators with a local tolerance (`rk`, `gsl`): a local
+!> tolerance does not bound the error of S, so S is computed on a ladder of local
+!> tolerances ℓ, ℓ/10, ℓ/100, … and the difference of two successive values is the
+!> error estimate of the coarser one (an upper estimate of the finer one's error, about
+!> ten times too large when the error is proportional to the local tolerance).
+!>
+!> The ladder stops when that difference meets the tolerance (status ok, the finer value
+!> is returned), or as round-off limited when the local tolerance has reached the
+!> integrator's floor, or when a tenfold tighter local tolerance no longer halves the
+!> difference (the values differ by rounding noise, not by truncation): then the finest
+!> value is returned with the last difference as its error estimate.
+!>
+!>```fortran
+!> type(refinement_t) :: ladder
+!> call start_refinement(ladder, tolerance)
+!> do
+!>    ! ... compute tr at the next local tolerance ...
+!>    call refine(ladder, tr, at_floor)
+!>    if (ladder%verdict /= refine_more) exit
+!> end do
+!>```
+module hillstab_refine
+   use hillstab_kinds, only: wp, log_huge
+   use hillstab_transfer, only: trace_t
+   implicit none
+   private
+   public :: refinement_t, start_refinement, refine, trace_distance, roundoff_level, propagator_condition, first_step_factor, &
+      next_local_tolerance
+   public :: refine_more, refine_met, refine_roundoff
+
+   !> Safety factor of `roundoff_level`, as method auto's (calibrated there on β = 0,
+   !> α = 9.8 … 9.86, where S = 2 exactly).
+   real(wp), parameter :: roundoff_safety = 0.1_wp
+
+   !> Compute S again at a tighter local tolerance.
+   integer, parameter :: refine_more = 0
+   !> The last two values agree to the tolerance: the last one is returned.
+   integer, parameter :: refine_met = 1
+   !> The tolerance lies below what the integrator can reach at this point.
+   integer, parameter :: refine_roundoff = 2
+   !> A difference above this fraction of the previous one (after a tenfold tighter local
+   !> tolerance) is taken as rounding noise.
+   real(wp), parameter :: noise_ratio = 0.5_wp
+
+   !> State of one ladder of local tolerances.
+   type :: refinement_t
+      real(wp) :: tolerance = 0.0_wp     !! target |ΔS|/max(1, |S|)
+      integer :: verdict = refine_more   !! refine_more | refine_met | refine_roundoff
+      integer :: n_values = 0            !! values of S seen so far
+      type(trace_t) :: previous          !! the last value seen
+      real(wp) :: difference = huge(1.0_wp)  !! |S_last − S_before|/max(1, |S_last|)
+   end type refinement_t
+
+contains
+
+   !> Start a ladder for the target `tolerance`.
+   pure subroutine start_refinement(ladder, tolerance)
+      type(refinement_t), intent(out) :: ladder  !! the ladder, reset
+      real(wp), intent(in) :: tolerance  !! target |ΔS|/max(1, |S|)
+      ladder%tolerance = tolerance
+   end subroutine start_refinement
+
+   !> Take the value `tr` computed at the next (tighter) local tolerance; `at_floor` says
+   !> that no tighter one is possible; `noise` is the round-off level of S there
+   !> (`roundoff_level`). Sets `ladder%verdict` and, when the ladder ends,
+   !> `tr%error_estimate` (never below `noise`). A round-off level above the tolerance
+   !> ends the ladder as round-off limited as soon as two values agree to that level.
+   pure subroutine refine(ladder, tr, at_floor, noise)
+      type(refinement_t), intent(inout) :: ladder  !! the ladder, advanced
+      type(trace_t), intent(inout) :: tr  !! S at the new local tolerance; gets its error estimate when the ladder ends
+      logical, intent(in) :: at_floor     !! no tighter local tolerance is possible
+      real(wp), intent(in) :: noise       !! round-off level of S (`roundoff_level`)
+      real(wp) :: d
+      ladder%n_values = ladder%n_values + 1
+      if (ladder%n_values == 1) then
+         ladder%previous = tr
+         ladder%verdict = refine_more
+         return
+      end if
+      d = trace_distance(tr, ladder%previous)
+      if (d <= ladder%tolerance .and. noise <= ladder%tolerance) then
+         ladder%verdict = refine_met
+      else if (d <= max(ladder%tolerance, noise) .or. at_floor .or. &
+               (ladder%n_values >= 3 .and. d > noise_ratio*ladder%difference)) then
+         ladder%verdict = refine_roundoff
+      else
+         ladder%verdict = refine_more
+      end if
+      ladder%difference = d
+      ladder%previous = tr
+      if (ladder%verdict /= refine_more) tr%error_estimate = max(d, noise)
+   end subroutine refine
+
+   !> Scaled condition of a half-period propagator Φ = [[u, v], [u', v']]: the minimum over
+   !> diagonal D of ‖D Φ D⁻¹‖²_F, u² + v'² + 2|v u'| (independent of the units of χ' against χ).
+   elemental real(wp) function propagator_condition(u, du, v, dv) result(c)
+      real(wp), intent(in) :: u   !! even solution u
+      real(wp), intent(in) :: du  !! its derivative u'
+      real(wp), intent(in) :: v   !! odd solution v
+      real(wp), intent(in) :: dv  !! its derivative v'
+      c = u*u + dv*dv + 2.0_wp*abs(v*du)
+   end function propagator_condition
+
+   !> Round-off level of S relative to max(1, |S|) for a propagation of `n_steps` steps whose
+   !> propagator reached the scaled condition e^{log_peak}: ε √N e^{log_peak}/max(1, |S|)
+   !> times a safety factor (method auto's model). Every rounding of the propagator, and the
+   !> rounding of Q itself, is amplified by that condition; no integrator in double precision
+   !> gets S more accurately (e.g. β = 0 with α → π², Mathieu q = 20 on its transition curves).
+   elemental real(wp) function roundoff_level(log_peak, log_abs_s, n_steps) result(level)
+      real(wp), intent(in) :: log_peak   !! ln of the largest `propagator_condition` along the path
+      real(wp), intent(in) :: log_abs_s  !! ln|S|
+      integer, intent(in) :: n_steps     !! steps of the propagation
+      real(wp) :: log_level
+      log_level = log(roundoff_safety*epsilon(1.0_wp)*sqrt(real(max(n_steps, 1), wp))) + log_peak &
+                  - max(0.0_wp, log_abs_s)
+      level = exp(min(log_level, log_huge))
+   end function roundoff_level
+
+   !> |S_a − S_b|/max(1, |S_a|), through ln|S| when S is large or overflows; huge when the
+   !> signs of large traces differ.
+   elemental real(wp) function trace_distance(a, b) result(d)
+      type(trace_t), intent(in) :: a  !! the trace whose scale max(1, |S_a|) is used
+      type(trace_t), intent(in) :: b  !! the other trace
+      if (a%overflow .or. b%overflow .or. a%log_abs > 300.0_wp) then
+         d = abs(a%log_abs - b%log_abs)
+         if (sign(1.0_wp, a%value) /= sign(1.0_wp, b%value)) d = huge(1.0_wp)
+      else
+         d = abs(a%value - b%value)/max(1.0_wp, abs(a%value))
+      end if
+   end function trace_distance
+
+   !> Factor between the first two local tolerances of a ladder: 10, or the scaled
+   !> condition κ/2 of the propagator (`propagator_condition`, 2 for a rotation) relative
+   !> to max(1, |S|) when larger, at most 1e4.
+   elemental real(wp) function first_step_factor(log_peak, log_abs_s) result(factor)
+      real(wp), intent(in) :: log_peak   !! ln of the largest `propagator_condition` of the first pass
+      real(wp), intent(in) :: log_abs_s  !! ln|S| of the first pass
+      factor = max(10.0_wp, min(1.0e4_wp, 0.5_wp*exp(min(log_peak - max(0.0_wp, log_abs_s), 30.0_wp))))
+   end function first_step_factor
+
+   !> The next local tolerance of a ladder: `local/factor`, not below `floor`; the floor is
+   !> reached from 10·floor, so that the last difference (the error estimate there) comes
+   !> from a tenfold step and not from a long jump.
+   elemental real(wp) function next_local_tolerance(local, factor, floor) result(next)
+      real(wp), intent(in) :: local   !! the current local tolerance
+      real(wp), intent(in) :: factor  !! the step down, > 1
+      real(wp), intent(in) :: floor   !! the smallest local tolerance the integrator can use
+      next = max(local/factor, floor)
+      if (next < 10.0_wp*floor .and. local > 10.001_wp*floor) next = 10.0_wp*floor
+   end function next_local_tolerance
+end module hillstab_refine

@@ -1,0 +1,341 @@
+!> Task `boundaries`: the transition curves (S = ±2) over the α grid of `&chart`,
+!> inside its β window, written as one gnuplot block per curve.
+!>
+!> - method auto or any exact method: Hill's method (hillstab_hill_method), every
+!>   boundary checked independently by method auto (hillstab_boundaries); a boundary
+!>   that fails the check is written with status_failed and the run reports it
+!>   (err_points_failed, exit status 3), it is never written as ok;
+!> - method formula or segments: the roots of S_method(β) = ±2 by Brent's method on a
+!>   bracket sampled at n_beta points of the window (`n_beta` is used only here);
+!> - model mathieu: GSL's a_n, b_n as a witness column beside Hill's values.
+!>
+!> The α values run in parallel (OpenMP, dynamic schedule: the truncation grows
+!> towards α → π²); the file is written once all are done, curve by curve.
+module hillstab_task_boundaries
+   use hillstab_kinds, only: wp, version_string
+   use hillstab_error, only: error_t, set_error, err_io, err_points_failed
+   use hillstab_status, only: status_ok, status_roundoff, status_failed
+   use hillstab_coefficient, only: model_elastic, in_physical_domain, sampling_name
+   use hillstab_monodromy, only: method_name, method_formula, method_segments
+   use hillstab_hill_method, only: hill_boundary_t, hill_boundaries, coexistence_threshold
+   use hillstab_boundaries, only: boundary_check_t, verify_boundary, approximate_root_t, approximate_boundaries, &
+      mathieu_witness, beta_accuracy_factor, gsl_witness_max_q
+   use hillstab_scene, only: scene_t, scene_namelist, grid_value, real_text, integer_text, task_name
+   use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, write_text
+   use hillstab_format, only: format_es
+   implicit none
+   private
+   public :: run_boundaries, boundary_columns, boundary_row_t, compute_boundary_rows
+
+   !> One row of the file: one curve at one α.
+   type :: boundary_row_t
+      real(wp) :: alpha = 0.0_wp, beta = 0.0_wp  !! the boundary point
+      integer :: trace_sign = 2          !! +2 / −2
+      integer :: order = 0               !! n of a_n, b_n
+      integer :: branch = 1              !! exact: 1 even (a_n), 2 odd (b_n); approximate: 1 lower, 2 upper edge
+      logical :: coexistent = .false.  !! both curves of this order coincide here (coexistence)
+      integer :: status = status_ok  !! a status_* code of hillstab_status
+      real(wp) :: check = 0.0_wp         !! exact: S by auto at the point; approximate: S_method
+      real(wp) :: beta_error = 0.0_wp    !! error estimate of beta
+      integer :: modes = 0               !! exact: modes of the truncation; approximate: pieces
+      real(wp) :: beta_gsl = 0.0_wp      !! mathieu: GSL's value (beta when unavailable)
+      logical :: gsl_ok = .false.  !! mathieu: beta_gsl is GSL's value
+   end type boundary_row_t
+
+   !> The rows of one α.
+   type :: alpha_rows_t
+      type(boundary_row_t), allocatable :: rows(:)
+      logical :: failed = .false.                 !! Hill's method itself failed at this α
+      character(len=:), allocatable :: message    !! why
+   end type alpha_rows_t
+
+contains
+
+   logical function exact_method(scene)
+      type(scene_t), intent(in) :: scene
+      exact_method = scene%method%kind /= method_formula .and. scene%method%kind /= method_segments
+   end function exact_method
+
+   !> Column names of the boundaries file.
+   function boundary_columns(mathieu) result(names)
+      logical, intent(in) :: mathieu  !! add the GSL witness columns
+      character(len=:), allocatable :: names
+      names = "alpha beta kind order branch curve coexist status check beta_error modes"
+      if (mathieu) names = names//" beta_gsl gsl_ok"
+   end function boundary_columns
+
+   !> All boundaries at one α, by Hill's method (checked by auto) or by root finding.
+   subroutine compute_boundary_rows(scene, alpha, rows, error)
+      type(scene_t), intent(in) :: scene  !! a validated boundaries scene
+      real(wp), intent(in) :: alpha  !! the alpha of the rows
+      type(boundary_row_t), allocatable, intent(out) :: rows(:)  !! one row per curve crossing the beta window
+      type(error_t), allocatable, intent(out) :: error  !! what failed at this alpha; unallocated on success
+      type(hill_boundary_t), allocatable :: curves(:)
+      type(approximate_root_t), allocatable :: roots(:)
+      type(boundary_check_t) :: check
+      type(error_t), allocatable :: cause
+      integer :: i, j
+      if (exact_method(scene)) then
+         call hill_boundaries(scene%model, alpha, scene%chart%beta_min, scene%chart%beta_max, &
+                              scene%method%tolerance, curves, error)
+         if (allocated(error)) then
+            allocate (rows(0))
+            return
+         end if
+         allocate (rows(size(curves)))
+         do i = 1, size(curves)
+            rows(i)%alpha = alpha
+            rows(i)%beta = curves(i)%beta
+            rows(i)%trace_sign = curves(i)%trace_sign
+            rows(i)%order = curves(i)%order
+            rows(i)%branch = merge(1, 2, curves(i)%parity == 1)
+            rows(i)%coexistent = curves(i)%coexistent
+            rows(i)%modes = curves(i)%modes
+            call verify_boundary(scene%model, alpha, curves(i)%beta, curves(i)%trace_sign, scene%method%tolerance, &
+                                 check, cause)
+            rows(i)%check = check%trace
+            rows(i)%beta_error = max(curves(i)%change, check%beta_error)
+            if (allocated(cause)) then
+               rows(i)%status = status_failed
+               deallocate (cause)
+            else if (.not. check%passed) then
+               rows(i)%status = status_failed
+            else if (check%roundoff) then
+               rows(i)%status = status_roundoff
+            end if
+            if (scene%model /= model_elastic) then
+               call mathieu_witness(curves(i)%order, curves(i)%parity, alpha, rows(i)%beta_gsl, rows(i)%gsl_ok)
+               if (.not. rows(i)%gsl_ok) rows(i)%beta_gsl = rows(i)%beta
+            end if
+         end do
+      else
+         call approximate_boundaries(scene%model, alpha, scene%method, scene%chart%beta_min, scene%chart%beta_max, &
+                                     max(scene%chart%n_beta, 2), scene%method%tolerance, roots, error)
+         if (allocated(error)) then
+            allocate (rows(0))
+            return
+         end if
+         allocate (rows(size(roots)))
+         do i = 1, size(roots)
+            rows(i)%alpha = alpha
+            rows(i)%beta = roots(i)%beta
+            rows(i)%trace_sign = roots(i)%trace_sign
+            rows(i)%order = roots(i)%order
+            rows(i)%branch = max(roots(i)%edge, 1)
+            rows(i)%check = roots(i)%residual + roots(i)%trace_sign
+            rows(i)%beta_error = scene%method%tolerance*max(1.0_wp, abs(roots(i)%beta))
+            rows(i)%modes = merge(2, scene%method%n_segments, scene%method%kind == method_formula)
+            if (scene%model /= model_elastic) rows(i)%beta_gsl = rows(i)%beta
+         end do
+         ! coexistence: both edges of an order found and equal to the accuracy
+         do i = 1, size(rows)
+            do j = 1, size(rows)
+               if (i == j .or. rows(i)%order /= rows(j)%order .or. rows(i)%order == 0) cycle
+               if (abs(rows(i)%beta - rows(j)%beta) <= coexistence_threshold*scene%method%tolerance* &
+                   max(1.0_wp, abs(rows(i)%beta))) rows(i)%coexistent = .true.
+            end do
+         end do
+      end if
+   end subroutine compute_boundary_rows
+
+   !> The boundaries task.
+   subroutine run_boundaries(scene, quiet, error)
+      type(scene_t), intent(in) :: scene  !! a validated boundaries scene
+      logical, intent(in) :: quiet  !! accepted for symmetry with the other tasks: nothing is printed
+      type(error_t), allocatable, intent(out) :: error  !! what failed; unallocated on success
+      type(output_file_t) :: file
+      type(alpha_rows_t), allocatable :: per_alpha(:)
+      integer, allocatable :: keys(:, :)
+      integer :: i, j, c, n_alpha, n_failed_rows, n_failed_alpha, last_i, first_failed
+      logical :: mathieu, found, any_written
+      character(len=:), allocatable :: line, first_message
+      type(error_t), allocatable :: cause
+      real(wp) :: first_failure(2)
+      call open_output(file, scene%output//"_"//task_name(scene%task)//".dat", cause)
+      if (allocated(cause)) then
+         call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
+         return
+      end if
+      mathieu = scene%model /= model_elastic
+      n_alpha = scene%chart%n_alpha
+      allocate (per_alpha(n_alpha))
+      !$omp parallel do schedule(dynamic) default(shared) private(i, cause)
+      do i = 1, n_alpha
+         call compute_boundary_rows(scene, grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i), &
+                                    per_alpha(i)%rows, cause)
+         if (allocated(cause)) then
+            per_alpha(i)%failed = .true.
+            per_alpha(i)%message = cause%message
+         end if
+      end do
+      !$omp end parallel do
+
+      ! the curves present anywhere, ordered by order, then branch
+      allocate (keys(3, 0))
+      do i = 1, n_alpha
+         do j = 1, size(per_alpha(i)%rows)
+            associate (r => per_alpha(i)%rows(j))
+               found = .false.
+               do c = 1, size(keys, 2)
+                  if (all(keys(:, c) == [r%order, r%branch, r%trace_sign])) found = .true.
+               end do
+               if (.not. found) keys = reshape([keys, r%order, r%branch, r%trace_sign], [3, size(keys, 2) + 1])
+            end associate
+         end do
+      end do
+      call sort_keys(keys)
+
+      call write_header(file, header(scene, size(keys, 2)), boundary_columns(mathieu), error)
+      if (allocated(error)) then
+         call discard_output(file)
+         return
+      end if
+      n_failed_rows = 0
+      first_failed = 0
+      do c = 1, size(keys, 2)
+         ! blocks separated by two blank lines (gnuplot `index`); a gap in α inside a curve by one
+         if (c > 1) then
+            call write_text(file, new_line("a"), error)
+            if (allocated(error)) exit
+         end if
+         last_i = -1
+         any_written = .false.
+         do i = 1, n_alpha
+            do j = 1, size(per_alpha(i)%rows)
+               associate (r => per_alpha(i)%rows(j))
+                  if (.not. all([r%order, r%branch, r%trace_sign] == keys(:, c))) cycle
+                  if (any_written .and. last_i /= i - 1) call write_text(file, "", error)
+                  line = row_text(r, c - 1, mathieu)
+                  call write_text(file, line, error)
+                  if (r%status == status_failed) then
+                     n_failed_rows = n_failed_rows + 1
+                     if (first_failed == 0) then
+                        first_failed = 1
+                        first_failure = [r%alpha, r%beta]
+                     end if
+                  end if
+                  last_i = i
+                  any_written = .true.
+               end associate
+            end do
+            if (allocated(error)) exit
+         end do
+         if (allocated(error)) exit
+      end do
+      if (allocated(error)) then
+         call discard_output(file)
+         return
+      end if
+      call commit_output(file, error)
+      if (allocated(error)) return
+      n_failed_alpha = count(per_alpha%failed)
+      if (n_failed_alpha > 0 .or. n_failed_rows > 0) then
+         first_message = ""
+         do i = 1, n_alpha
+            if (per_alpha(i)%failed) then
+               first_message = "; Hill's method failed at alpha = "// &
+                  real_text(grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i))//": "// &
+                  per_alpha(i)%message
+               exit
+            end if
+         end do
+         if (first_failed > 0) first_message = first_message//"; first boundary failing the check by auto at alpha = "// &
+            real_text(first_failure(1))//", beta = "//real_text(first_failure(2))
+         call set_error(error, err_points_failed, scene%source//": &scene: method: '"// &
+            method_name(scene%method%kind)//"': "//integer_text(n_failed_rows)// &
+            " boundary point(s) failed the check (status "//integer_text(status_failed)//" in "// &
+            scene%output//"_boundaries.dat) and "//integer_text(n_failed_alpha)//" alpha value(s) have no boundaries"// &
+            first_message)
+      end if
+   end subroutine run_boundaries
+
+   !> Sort curve keys (order, branch, kind) by order, then branch.
+   pure subroutine sort_keys(keys)
+      integer, intent(inout) :: keys(:, :)
+      integer :: i, j, t(3)
+      do i = 2, size(keys, 2)
+         t = keys(:, i)
+         j = i - 1
+         do while (j >= 1)
+            if (keys(1, j)*3 + keys(2, j) <= t(1)*3 + t(2)) exit
+            keys(:, j + 1) = keys(:, j)
+            j = j - 1
+         end do
+         keys(:, j + 1) = t
+      end do
+   end subroutine sort_keys
+
+   !> One data line.
+   function row_text(r, curve, mathieu) result(line)
+      type(boundary_row_t), intent(in) :: r
+      integer, intent(in) :: curve
+      logical, intent(in) :: mathieu
+      character(len=:), allocatable :: line
+      character(len=64) :: ints
+      write (ints, '(i3,1x,i4,1x,i2,1x,i4,1x,i1,1x,i1)') r%trace_sign, r%order, r%branch, curve, &
+         merge(1, 0, r%coexistent), r%status
+      line = format_es(r%alpha, 16)//" "//format_es(r%beta, 16)//" "//trim(adjustl(ints))//" "// &
+             format_es(r%check, 16)//" "//format_es(r%beta_error, 3)//" "//integer_text(r%modes)
+      if (mathieu) line = line//" "//format_es(r%beta_gsl, 16)//" "//merge("1", "0", r%gsl_ok)
+   end function row_text
+
+   !> Header: version, scene (repeatable), model, method, columns explained.
+   function header(scene, n_curves) result(lines)
+      type(scene_t), intent(in) :: scene
+      integer, intent(in) :: n_curves
+      character(len=:), allocatable :: lines(:)
+      character(len=:), allocatable :: groups(:)
+      character(len=240) :: text(16)
+      integer :: n, k, width
+      groups = scene_namelist(scene)
+      n = 0
+      n = n + 1; text(n) = "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau; transition curves S = +-2"
+      n = n + 1; text(n) = "scene file: "//scene%source//" (the namelist lines below repeat this run)"
+      if (scene%model == model_elastic) then
+         n = n + 1; text(n) = "model: elastic, Q(tau) = (beta - alpha cos(pi tau))/(1 - (alpha/pi^2) cos(pi tau)), eq. (25)"
+      else
+         n = n + 1; text(n) = "model: mathieu, q(tau) = beta - alpha cos(pi tau), eq. (A1), alpha playing nu"
+      end if
+      if (exact_method(scene)) then
+         n = n + 1; text(n) = "method: Hill's method (eigenvalues of the banded symmetric-definite pencil, LAPACK "// &
+            "dsbgv), converged in the truncation to tolerance "//real_text(scene%method%tolerance)//"*max(1,|beta|)"
+         n = n + 1; text(n) = "each boundary checked by method auto: S = +-2 within 2*tolerance*max(1,|S|), or implied "// &
+            "beta error <= "//real_text(beta_accuracy_factor)//"*tolerance*max(1,|beta|)"
+      else
+         n = n + 1; text(n) = "method: "//method_name(scene%method%kind)//merge(" (the paper's eq. (37))", &
+            "                       ", scene%method%kind == method_formula)
+         if (scene%method%kind == method_segments) text(n) = trim(text(n))//", "// &
+            integer_text(scene%method%n_segments)//" pieces, sampling "//sampling_name(scene%method%sampling)
+         n = n + 1; text(n) = "roots of S_method = +-2 by Brent's method to tolerance*max(1,|beta|), brackets from "// &
+            integer_text(scene%chart%n_beta)//" samples over the beta window (n_beta); tongues narrower than a sample "// &
+            "step can be missed"
+      end if
+      n = n + 1; text(n) = "one block per curve (gnuplot index = curve), blocks separated by two blank lines; "// &
+         integer_text(n_curves)//" curves"
+      n = n + 1; text(n) = "kind: S on the curve (+2 periodic, -2 antiperiodic); order: n of a_n/b_n; branch: exact 1 = a_n "// &
+         "(even), 2 = b_n (odd), approximate 1 = lower, 2 = upper edge"
+      n = n + 1; text(n) = "coexist: 1 when both curves of this order coincide (zero-width tongue, within "// &
+         real_text(coexistence_threshold)//"*tolerance*max(1,|beta|))"
+      n = n + 1; text(n) = "status: 0 ok, 1 check by auto limited by round-off, 2 failed the check; check: S by auto "// &
+         "at the point (approximate: S_method)"
+      n = n + 1; text(n) = "beta_error: estimated error of beta; modes: Fourier modes of the truncation (approximate: pieces)"
+      if (scene%model /= model_elastic) then
+         n = n + 1; text(n) = "beta_gsl: (pi^2/4) a_n or b_n(2 nu/pi^2) by GSL, gsl_ok = 1 when GSL is trusted "// &
+            "(order <= 60, |q| <= "//real_text(gsl_witness_max_q)//"), else beta_gsl = beta"
+      end if
+      if (.not. (in_physical_domain(scene%chart%alpha_min, scene%chart%beta_min) .and. &
+                 in_physical_domain(scene%chart%alpha_max, scene%chart%beta_max))) then
+         n = n + 1; text(n) = "note: the window leaves the physical domain 0 <= alpha < pi^2, 0 < beta < pi^2"
+      end if
+      width = max(len(groups), maxval(len_trim(text(:n))))
+      allocate (character(len=width) :: lines(n + size(groups)))
+      lines(1) = text(1)
+      lines(2) = text(2)
+      do k = 1, size(groups)
+         lines(2 + k) = groups(k)
+      end do
+      do k = 3, n
+         lines(size(groups) + k) = text(k)
+      end do
+   end function header
+end module hillstab_task_boundaries

@@ -1,0 +1,306 @@
+!> The series task: the nonlinear (optionally damped) elastic pendulum at (α, β) from
+!> eq. (38), integrated by DOP853 and sampled from its 7th-order dense output at exactly
+!> t = j T / samples_per_period, written as `<output>_series.dat` with columns
+!> `t r phi x z E vx vz`. The header carries the effective scene (a repeatable run) and a
+!> summary: max |φ|, energy drift, integrator work, λ_max of the linearised swing from
+!> the core, and the predicted and observed onset of the swing.
+!>
+!> The run integrates twice, identically: the first pass measures the summary, which
+!> belongs in the header, the second writes the samples (rows go straight to the file,
+!> so memory does not grow with the length of the run).
+!>
+!>```fortran
+!> type(scene_t) :: scene
+!> type(error_t), allocatable :: error
+!> call read_scene("data/scenes/fig4a.nml", scene, error)
+!> if (.not. allocated(error)) call run_series(scene, error)
+!>```
+module hillstab_task_series
+   use hillstab_kinds, only: wp, int64, version_string
+   use hillstab_error, only: error_t, set_error, err_input, err_accuracy, err_invalid_parameter
+   use hillstab_status, only: status_ok, status_roundoff, status_failed, status_name
+   use hillstab_stats, only: work_stats_t
+   use hillstab_coefficient, only: hill_model_t, model_elastic
+   use hillstab_transfer, only: trace_t
+   use hillstab_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
+   use hillstab_monodromy, only: monodromy_trace, method_name
+   use hillstab_rk, only: rk_step_t, rk_dense_value
+   use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_angle, &
+      pendulum_energy, pendulum_radius, px, pz, pvx, pvz
+   use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat
+   use hillstab_scene, only: scene_t, scene_namelist, task_name, real_text, integer_text
+   use hillstab_format, only: put_es
+   use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, write_text
+   implicit none
+   private
+   public :: run_series, series_summary_t, series_summary, series_columns
+
+   !> Column names of a series file.
+   character(len=*), parameter :: series_columns = "t r phi x z E vx vz"
+   !> Significant digits of every number in a series row.
+   integer, parameter :: row_digits = 16
+
+   !> What the header reports about a run.
+   type :: series_summary_t
+      type(pendulum_t) :: pendulum               !! parameters and derived quantities
+      real(wp) :: max_abs_phi = 0.0_wp           !! largest |φ| [rad]
+      real(wp) :: time_of_max_phi = 0.0_wp       !! where [s]
+      real(wp) :: energy_drift = 0.0_wp          !! max |E − E(0)| / energy scale
+      real(wp) :: energy_start = 0.0_wp          !! E(0) [J/kg]
+      real(wp) :: energy_scale = 0.0_wp          !! ½|v|² + ½ω²(r − r0)² + g|z| at t = 0 [J/kg]
+      real(wp) :: energy_end = 0.0_wp            !! E at the end [J/kg]
+      integer(int64) :: energy_increases = 0     !! steps over which E rose beyond round-off
+      type(work_stats_t) :: work                 !! steps, rejections, f-evaluations (one pass)
+      real(wp) :: trace = 0.0_wp                 !! S of the core at (α, β, ε)
+      real(wp) :: lambda_max = -1.0_wp           !! largest multiplier modulus of x per radial period
+      logical :: stable = .false.                !! the chart's verdict
+      integer :: status = status_failed          !! of the core's λ_max (hillstab_status)
+      real(wp) :: onset_predicted = -1.0_wp      !! n* [periods]; −1: no onset expected
+      real(wp) :: onset_observed = -1.0_wp       !! first |φ| > φ_sat [periods]; −1: not within the run
+   end type series_summary_t
+
+   !> The watching pendulum that also writes the samples.
+   type, extends(pendulum_watch_t) :: series_writer_t
+      type(output_file_t) :: file                !! the open output file
+      integer(int64) :: next = 0                 !! index j of the next sample
+      integer(int64) :: n_samples = 0            !! last index (periods × samples_per_period)
+      integer :: samples_per_period = 1
+      type(error_t), allocatable :: error        !! a write failure (the integration then stops)
+   contains
+      procedure :: observe => write_samples
+   end type series_writer_t
+
+contains
+
+   !> Run the series task of a validated scene: `<output>_series.dat`, or an error and no file.
+   subroutine run_series(scene, error)
+      type(scene_t), intent(in) :: scene  !! task = series
+      type(error_t), allocatable, intent(out) :: error  !! what failed; unallocated on success
+      type(series_summary_t) :: summary
+      type(series_writer_t) :: writer
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: cause
+      real(wp) :: y(4)
+      character(len=:), allocatable :: path
+
+      call series_summary(scene, summary, error)
+      if (allocated(error)) return
+
+      path = scene%output//"_"//task_name(scene%task)//".dat"
+      call open_output(writer%file, path, cause)
+      if (allocated(cause)) then
+         call set_error(error, cause%code, scene%source//": &scene: output: "//cause%message)
+         return
+      end if
+      call write_header(writer%file, series_header(scene, summary), series_columns, error)
+      if (allocated(error)) then
+         call discard_output(writer%file)
+         return
+      end if
+      writer%pendulum = summary%pendulum
+      writer%n_samples = int(scene%series%periods, int64)*scene%series%samples_per_period
+      writer%samples_per_period = scene%series%samples_per_period
+      y = initial_state(scene, summary%pendulum)
+      call pendulum_integrate(writer, y, sample_time(writer%pendulum, writer%n_samples, writer%samples_per_period), &
+                              scene%method%tolerance, stats, error)
+      if (.not. allocated(error) .and. allocated(writer%error)) call move_alloc(writer%error, error)
+      if (.not. allocated(error) .and. writer%next <= writer%n_samples) then
+         call set_error(error, err_input, "series: the integration ended before the last sample")
+      end if
+      if (allocated(error)) then
+         call discard_output(writer%file)
+         error%message = scene%source//": "//error%message
+         return
+      end if
+      call commit_output(writer%file, error)
+   end subroutine run_series
+
+   !> The first pass: integrate without writing and measure what the header reports.
+   subroutine series_summary(scene, summary, error)
+      type(scene_t), intent(in) :: scene           !! task = series
+      type(series_summary_t), intent(out) :: summary  !! what the header reports: energy drift, angles, onset, work
+      type(error_t), allocatable, intent(out) :: error  !! integration failure; unallocated on success
+      type(pendulum_watch_t) :: watch
+      type(trace_t) :: tr
+      type(floquet_t) :: f
+      type(error_t), allocatable :: cause
+      real(wp) :: y(4), t_end
+      associate (plan => scene%series)
+         call pendulum_from_chart(plan%alpha, plan%beta, scene%epsilon, plan%r0, plan%g, summary%pendulum, cause)
+         if (allocated(cause)) then
+            call set_error(error, err_input, scene%source//": &series: "//cause%message)
+            return
+         end if
+         ! λ_max of the linearised swing from the core (the chart's method and tolerance)
+         call monodromy_trace(hill_model_t(model_elastic, plan%alpha, plan%beta, scene%epsilon), scene%method, &
+                              tr, cause)
+         summary%status = status_ok
+         if (allocated(cause)) then
+            summary%status = merge(status_roundoff, status_failed, cause%code == err_accuracy)
+            deallocate (cause)
+         end if
+         if (summary%status /= status_failed) then
+            f = floquet_from_trace(tr, scene%epsilon)
+            summary%trace = tr%value
+            summary%lambda_max = largest_multiplier_modulus(f)
+            summary%stable = f%stable
+            summary%onset_predicted = onset_periods(plan%phi0, default_phi_sat, summary%lambda_max)
+         end if
+
+         watch%pendulum = summary%pendulum
+         y = initial_state(scene, summary%pendulum)
+         t_end = sample_time(summary%pendulum, int(plan%periods, int64)*plan%samples_per_period, &
+                             plan%samples_per_period)
+         call pendulum_integrate(watch, y, t_end, scene%method%tolerance, summary%work, cause)
+         if (allocated(cause)) then
+            call set_error(error, cause%code, scene%source//": series: "//cause%message)
+            return
+         end if
+         summary%max_abs_phi = watch%max_abs_phi
+         summary%time_of_max_phi = watch%time_of_max_phi
+         summary%energy_start = watch%energy_start
+         summary%energy_scale = watch%energy_scale
+         summary%energy_end = watch%energy_last
+         summary%energy_drift = watch%max_energy_error/watch%energy_scale
+         summary%energy_increases = watch%energy_increases
+         if (watch%onset_time >= 0.0_wp) summary%onset_observed = watch%onset_time/summary%pendulum%period
+      end associate
+   end subroutine series_summary
+
+   !> Initial state of the scene (eq. (38) plus the optional velocities).
+   pure function initial_state(scene, p) result(y)
+      type(scene_t), intent(in) :: scene
+      type(pendulum_t), intent(in) :: p
+      real(wp) :: y(4)
+      y = pendulum_initial_state(p, scene%series%phi0, scene%series%vx0, scene%series%vz0)
+   end function initial_state
+
+   !> t_j = j T / samples_per_period, computed afresh for every j (no accumulated round-off).
+   pure real(wp) function sample_time(p, j, samples_per_period) result(t)
+      type(pendulum_t), intent(in) :: p
+      integer(int64), intent(in) :: j
+      integer, intent(in) :: samples_per_period
+      t = real(j, wp)*p%period/real(samples_per_period, wp)
+   end function sample_time
+
+   !> Observer of the writing pass: the watch's bookkeeping, then every sample time in
+   !> (t_old, t] from the dense output (the initial point at index 0).
+   subroutine write_samples(self, step, stop)
+      class(series_writer_t), intent(inout) :: self
+      type(rk_step_t), intent(in) :: step
+      logical, intent(inout) :: stop
+      real(wp) :: ts, y(4)
+      character(len=8*(row_digits + 8)) :: line
+      integer :: pos, k
+      real(wp) :: values(8)
+      call self%pendulum_watch_t%observe(step, stop)
+      do while (self%next <= self%n_samples)
+         ts = sample_time(self%pendulum, self%next, self%samples_per_period)
+         ! the last step ends exactly on the last sample time (the same expression)
+         if (ts > step%t) exit
+         if (ts == step%t) then
+            y = step%y
+         else
+            y = rk_dense_value(step, ts)
+         end if
+         values = [ts, pendulum_radius(y), pendulum_angle(y), y(px), y(pz), pendulum_energy(self%pendulum, y), &
+                   y(pvx), y(pvz)]
+         pos = 0
+         do k = 1, size(values)
+            if (k > 1) then
+               line(pos + 1:pos + 1) = " "
+               pos = pos + 1
+            end if
+            call put_es(line, pos, values(k), row_digits)
+         end do
+         call write_text(self%file, trim(adjustl(line(1:pos))), self%error)
+         if (allocated(self%error)) then
+            stop = .true.
+            return
+         end if
+         self%next = self%next + 1
+      end do
+   end subroutine write_samples
+
+   !> Header: version, scene (repeatable), the pendulum, the method, the summary, the columns.
+   function series_header(scene, s) result(lines)
+      type(scene_t), intent(in) :: scene
+      type(series_summary_t), intent(in) :: s
+      character(len=:), allocatable :: lines(:)
+      character(len=:), allocatable :: groups(:)
+      character(len=400) :: extra(24)
+      integer :: n, k
+      groups = scene_namelist(scene)
+      n = 0
+      n = n + 1; extra(n) = "hillstab "//version_string//": the nonlinear elastic pendulum (task series)"
+      n = n + 1; extra(n) = "scene file: "//scene%source//" (the namelist lines below repeat this run)"
+      associate (p => s%pendulum)
+         n = n + 1; extra(n) = "model: x'' = -omega^2 (1 - r0/r) x - kappa x', z'' = -omega^2 (1 - r0/r) z + g - kappa z'"// &
+            " (x horizontal, z downward from the pivot, r = sqrt(x^2 + z^2), phi = atan2(x, z))"
+         n = n + 1; extra(n) = "pendulum: rho = "//real_text(p%rho)//" m, omega = "//real_text(p%omega)// &
+            " 1/s, a = "//real_text(p%a)//" m, T = "//real_text(p%period)//" s, kappa = epsilon omega/pi = "// &
+            real_text(p%kappa)//" 1/s"
+         n = n + 1; extra(n) = "start (eq. (38)): r(0) = rho - a = "//real_text(p%rho - p%a)//" m, phi(0) = phi0,"// &
+            " velocities vx0, vz0"
+      end associate
+      n = n + 1; extra(n) = "integrator: DOP853, relative tolerance "//real_text(scene%method%tolerance)// &
+         "; absolute tolerances rtol*rho on z, rtol*(initial swing) on x (relative accuracy in a tiny swing)"
+      n = n + 1; extra(n) = "samples: 7th-order dense output at t = j T / samples_per_period, j = 0 .. periods "// &
+         "samples_per_period (the step size is not forced onto them)"
+      n = n + 1; extra(n) = "summary: max |phi| = "//fmt(s%max_abs_phi)//" rad at t = "//fmt(s%time_of_max_phi)// &
+         " s (16 dense points per step)"
+      n = n + 1; extra(n) = "summary: energy E(0) = "//fmt(s%energy_start)//" J/kg, E(end) = "//fmt(s%energy_end)// &
+         " J/kg, drift max|E - E(0)|/E_scale = "//fmt(s%energy_drift)//" over the step ends, E_scale = "// &
+         fmt(s%energy_scale)//" J/kg (1/2 |v|^2 + 1/2 omega^2 (r - r0)^2 + g |z| at t = 0)"
+      if (scene%epsilon > 0.0_wp) then
+         n = n + 1; extra(n) = "summary: damped: steps over which E rose beyond round-off: "// &
+            trim(int64_text(s%energy_increases))//" (0: E decreases monotonically)"
+      end if
+      n = n + 1; extra(n) = "summary: accepted steps "//trim(int64_text(int(s%work%n_steps, int64)))// &
+         ", rejected "//trim(int64_text(int(s%work%n_rejected, int64)))//", f-evaluations "// &
+         trim(int64_text(int(s%work%n_evaluations, int64)))//" (one pass)"
+      if (s%status == status_failed) then
+         n = n + 1; extra(n) = "summary: lambda_max: status 2 (failed): the core could not compute S here"
+      else
+         n = n + 1; extra(n) = "summary: core ("//method_name(scene%method%kind)//"): S = "//fmt(s%trace)// &
+            ", lambda_max = "//fmt(s%lambda_max)//" per radial period (largest |multiplier| of the linearised"// &
+            " swing), chart verdict "//merge("stable  ", "unstable", s%stable)//", status "// &
+            integer_text(s%status)//" ("//status_name(s%status)//")"
+      end if
+      n = n + 1; extra(n) = "summary: onset (|phi| > "//real_text(default_phi_sat)//"): predicted n* = "// &
+         "ln(0.1/|phi0|)/ln(lambda_max) = "//periods_text(s%onset_predicted, "never (no growth or phi0 = 0)")// &
+         ", observed "//periods_text(s%onset_observed, "not within the run")
+      n = n + 1; extra(n) = "units: t [s], r [m], phi [rad], x, z [m], E [J/kg], vx, vz [m/s]"
+      allocate (character(len=max(len(groups), maxval(len_trim(extra(:n))))) :: lines(n + size(groups)))
+      lines(1:2) = extra(1:2)
+      lines(3:2 + size(groups)) = groups
+      do k = 3, n
+         lines(k + size(groups)) = extra(k)
+      end do
+   contains
+      function fmt(x) result(text)
+         real(wp), intent(in) :: x
+         character(len=:), allocatable :: text
+         character(len=32) :: buffer
+         integer :: pos
+         pos = 0
+         call put_es(buffer, pos, x, 10)
+         text = trim(adjustl(buffer(1:pos)))
+      end function fmt
+      function int64_text(i) result(text)
+         integer(int64), intent(in) :: i
+         character(len=24) :: text
+         write (text, '(i0)') i
+      end function int64_text
+      function periods_text(n_periods, none) result(text)
+         real(wp), intent(in) :: n_periods
+         character(len=*), intent(in) :: none
+         character(len=:), allocatable :: text
+         if (n_periods < 0.0_wp) then
+            text = none
+         else
+            text = fmt(n_periods)//" periods (t = "//fmt(n_periods*s%pendulum%period)//" s)"
+         end if
+      end function periods_text
+   end function series_header
+end module hillstab_task_series

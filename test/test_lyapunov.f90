@@ -1,0 +1,229 @@
+!> Tests of the largest Lyapunov exponent (hillstab_lyapunov) against independent
+!> references: while the swing is tiny (φ0 = 1e-12) the tangent vector grows per radial
+!> period by the chart's largest Floquet multiplier λ_max, computed by the core (method
+!> auto on the Hill equation); on the paper's regular cases (c) and (d) the estimate
+!> decays like ln n / n; on case (g) it settles at a clearly positive value; the
+!> running estimate and spread are consistent; the exponent does not depend on the
+!> integrator (DOP853 against DOPRI5) or the tolerance beyond its error indication;
+!> bad arguments are refused.
+module test_lyapunov
+   use hillstab_kinds, only: wp
+   use hillstab_error, only: error_t, err_invalid_parameter
+   use hillstab_coefficient, only: hill_model_t, model_elastic
+   use hillstab_transfer, only: trace_t
+   use hillstab_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
+   use hillstab_monodromy, only: monodromy_trace, method_t, method_auto
+   use hillstab_rk, only: rk_dopri5
+   use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state
+   use hillstab_lyapunov
+   use hillstab_gsl_lyapunov, only: lyapunov_largest_gsl
+   use hillstab_testing
+   implicit none
+   private
+   public :: collect_lyapunov
+
+contains
+
+   function collect_lyapunov() result(suite)
+      type(testsuite_t) :: suite
+      suite = new_testsuite("lyapunov", [ &
+         new_unittest("linear_phase_grows_like_floquet", linear_phase_grows_like_floquet), &
+         new_unittest("regular_cases_decay", regular_cases_decay), &
+         new_unittest("chaotic_case_positive", chaotic_case_positive), &
+         new_unittest("running_estimate_consistent", running_estimate_consistent), &
+         new_unittest("integrator_independent", integrator_independent), &
+         new_unittest("damped_bounce", damped_bounce), &
+         new_unittest("gsl_rk8pd_agrees", gsl_rk8pd_agrees), &
+         new_unittest("bad_arguments", bad_arguments)])
+   end function collect_lyapunov
+
+   function make(alpha, beta, epsilon) result(p)
+      real(wp), intent(in) :: alpha, beta, epsilon
+      type(pendulum_t) :: p
+      type(error_t), allocatable :: error
+      call pendulum_from_chart(alpha, beta, epsilon, 0.1_wp, 9.81_wp, p, error)
+      if (allocated(error)) error stop "test_lyapunov: bad pendulum"
+   end function make
+
+   !> ln λ_max of the chart at (α, β, ε) by the core.
+   real(wp) function chart_log_lambda(alpha, beta, epsilon)
+      real(wp), intent(in) :: alpha, beta, epsilon
+      type(trace_t) :: tr
+      type(floquet_t) :: f
+      type(error_t), allocatable :: error
+      call monodromy_trace(hill_model_t(model_elastic, alpha, beta, epsilon), method_t(method_auto, tolerance=1.0e-13_wp), &
+         tr, error)
+      if (allocated(error)) error stop "test_lyapunov: core failed"
+      f = floquet_from_trace(tr, epsilon)
+      chart_log_lambda = log(largest_multiplier_modulus(f))
+   end function chart_log_lambda
+
+   !> φ0 = 1e-12: once the tangent vector has turned into the growing Floquet direction
+   !> its growth per radial period is the chart's ln λ_max, period after period, until
+   !> the swing reaches a few percent. Cases (b), (g) and (e) of the paper and a point
+   !> in the first tongue (λ_max = 1.27: the other multiplier fades slowly, so later
+   !> periods). Undamped only: with damping the radial motion decays too, and the orbit
+   !> is no longer the bounce whose swing the chart describes.
+   subroutine linear_phase_grows_like_floquet(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), parameter :: points(3, 4) = reshape([3.70_wp, 2.47_wp, 0.0_wp, 7.48_wp, 2.47_wp, 0.0_wp, &
+         7.88_wp, 3.95_wp, 0.0_wp, 1.0_wp, 2.4674_wp, 0.0_wp], [3, 4])
+      integer, parameter :: from(4) = [10, 5, 5, 45], to(4) = [16, 8, 8, 55]
+      type(lyapunov_t) :: result
+      type(error_t), allocatable :: error
+      real(wp) :: reference, worst
+      character(len=60) :: label
+      integer :: k
+      do k = 1, size(points, 2)
+         write (label, '(a,3f6.2)') "alpha, beta, epsilon", points(:, k)
+         call lyapunov_largest(make(points(1, k), points(2, k), points(3, k)), &
+            pendulum_initial_state(make(points(1, k), points(2, k), points(3, k)), 1.0e-12_wp), to(k), 1.0e-12_wp, &
+            result, error)
+         call check(ctx, .not. allocated(error), "integrated: "//trim(label))
+         if (allocated(error)) cycle
+         reference = chart_log_lambda(points(1, k), points(2, k), points(3, k))
+         worst = maxval(abs(result%log_growth(from(k):to(k)) - reference))
+         call check(ctx, worst <= 1.0e-7_wp*max(1.0_wp, abs(reference)), "growth per period = ln lambda_max: "// &
+            trim(label))
+         call check(ctx, reference > 0.2_wp, "a growing case: "//trim(label))
+         write (*, '(4x,a,a,f12.8,a,es9.2)') trim(label), ": ln lambda_max ", reference, ", worst difference ", worst
+      end do
+   end subroutine linear_phase_grows_like_floquet
+
+   !> Cases (c) and (d) (stable, φ0 = 0.017): λ_n n / ln n stays bounded (between 0.05
+   !> and 2 from n = 100 to 2000: λ_n → 0 like ln n / n) and λ_2000 is well below λ_200.
+   subroutine regular_cases_decay(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), parameter :: cases(2, 2) = reshape([2.57_wp, 1.29_wp, 5.0_wp, 0.76_wp], [2, 2])
+      type(lyapunov_t) :: result
+      type(error_t), allocatable :: error
+      real(wp) :: ratio(4)
+      integer, parameter :: at(4) = [100, 300, 1000, 2000]
+      integer :: k
+      do k = 1, 2
+         call lyapunov_largest(make(cases(1, k), cases(2, k), 0.0_wp), &
+            pendulum_initial_state(make(cases(1, k), cases(2, k), 0.0_wp), 0.017_wp), 2000, 1.0e-10_wp, result, error)
+         call check(ctx, .not. allocated(error), "integrated")
+         if (allocated(error)) cycle
+         ratio = result%running(at)*at/log(real(at, wp))
+         call check(ctx, all(ratio > 0.05_wp .and. ratio < 2.0_wp), "lambda_n n / ln n bounded")
+         call check(ctx, result%running(2000) < 0.25_wp*result%running(200), "lambda_2000 < lambda_200/4")
+         call check(ctx, result%max_abs_phi < 0.05_wp, "the swing stays small")
+         write (*, '(4x,a,2f5.2,a,4f7.3,a,es10.3)') "case", cases(:, k), ": lambda_n n/ln n at n = 100, 300, 1000, 2000:", &
+            ratio, "; lambda_2000 = ", result%exponent
+      end do
+   end subroutine regular_cases_decay
+
+   !> Case (g) (7.48, 2.47), φ0 = 0.017: λ ≈ 0.3 per radial period, well above the
+   !> ln n / n of a regular orbit and above its own spread.
+   subroutine chaotic_case_positive(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(lyapunov_t) :: result
+      type(error_t), allocatable :: error
+      call lyapunov_largest(make(7.48_wp, 2.47_wp, 0.0_wp), pendulum_initial_state(make(7.48_wp, 2.47_wp, 0.0_wp), &
+         0.017_wp), 1000, 1.0e-10_wp, result, error)
+      call check(ctx, .not. allocated(error), "integrated")
+      if (allocated(error)) return
+      call check(ctx, result%exponent > 0.15_wp, "clearly positive")
+      call check(ctx, result%exponent > 20.0_wp*log(1000.0_wp)/1000.0_wp, "far above ln n / n")
+      call check(ctx, result%spread < 0.5_wp*result%exponent, "spread below half the value")
+      call check(ctx, result%max_abs_phi > 1.0_wp, "large swings")
+      write (*, '(4x,a,f8.4,a,f8.4,a,f7.3)') "case (g): lambda = ", result%exponent, ", spread ", result%spread, &
+         ", max |phi| ", result%max_abs_phi
+   end subroutine chaotic_case_positive
+
+   !> The running estimate is the mean of the growths; the spread is its range over
+   !> the second half; energy is kept.
+   subroutine running_estimate_consistent(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(lyapunov_t) :: result
+      type(error_t), allocatable :: error
+      integer :: n
+      call lyapunov_largest(make(3.70_wp, 2.47_wp, 0.0_wp), pendulum_initial_state(make(3.70_wp, 2.47_wp, 0.0_wp), &
+         0.017_wp), 101, 1.0e-10_wp, result, error)
+      call check(ctx, .not. allocated(error) .and. result%periods == 101, "integrated")
+      if (allocated(error)) return
+      do n = 1, 101, 25
+         call check(ctx, result%running(n), sum(result%log_growth(:n))/n, abs=1.0e-14_wp, rel=1.0e-12_wp)
+      end do
+      call check(ctx, result%spread, maxval(result%running(51:)) - minval(result%running(51:)), abs=0.0_wp, &
+         rel=1.0e-15_wp)
+      call check(ctx, result%exponent == result%running(101), "exponent = last running value")
+      call check(ctx, result%energy_drift < 1.0e-8_wp, "energy kept")
+   end subroutine running_estimate_consistent
+
+   !> DOP853 and DOPRI5, tolerances 1e-9 and 1e-11: on a regular case the exponents
+   !> agree closely; on the chaotic case (g) the orbits part after some periods (that is
+   !> chaos) but the exponents agree within their error indications.
+   subroutine integrator_independent(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(lyapunov_t) :: a, b
+      type(error_t), allocatable :: error
+      type(pendulum_t) :: p
+      p = make(2.57_wp, 1.29_wp, 0.0_wp)
+      call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 200, 1.0e-11_wp, a, error)
+      call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 200, 1.0e-9_wp, b, error, method=rk_dopri5)
+      call check(ctx, .not. allocated(error), "integrated")
+      call check(ctx, a%exponent, b%exponent, abs=1.0e-5_wp, rel=0.0_wp)
+      p = make(7.48_wp, 2.47_wp, 0.0_wp)
+      call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 600, 1.0e-11_wp, a, error)
+      call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 600, 1.0e-9_wp, b, error, method=rk_dopri5)
+      call check(ctx, .not. allocated(error), "integrated")
+      call check(ctx, abs(a%exponent - b%exponent) <= 2.0_wp*(a%spread + b%spread), "chaotic: within the spreads")
+      write (*, '(4x,a,2f8.4,a,2f8.4)') "case (g): dop853 1e-11 / dopri5 1e-9: ", a%exponent, b%exponent, &
+         ", spreads ", a%spread, b%spread
+   end subroutine integrator_independent
+
+   !> With damping and a stable chart point, the swing and the radial motion decay: the
+   !> exponent tends to −ε per radial period (the damped radial oscillator's multipliers
+   !> have modulus e^{−κT/2} = e^{−ε}, and so do those of the small damped swing about
+   !> r = ρ). The growth of single periods oscillates (the tangent vector turns within the
+   !> decaying modes); its mean over 400 periods is −ε to within 0.01.
+   subroutine damped_bounce(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(lyapunov_t) :: result
+      type(error_t), allocatable :: error
+      type(pendulum_t) :: p
+      p = make(2.57_wp, 1.29_wp, 0.4_wp)
+      call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 400, 1.0e-11_wp, result, error)
+      call check(ctx, .not. allocated(error), "integrated")
+      call check(ctx, result%exponent, -0.4_wp, abs=0.01_wp, rel=0.0_wp)
+   end subroutine damped_bounce
+
+   !> GSL rk8pd driving the same equations: the same exponent on the regular case (c)
+   !> and the chart's growth in the linear phase of case (g).
+   subroutine gsl_rk8pd_agrees(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(lyapunov_t) :: a, b
+      type(error_t), allocatable :: error
+      type(pendulum_t) :: p
+      p = make(2.57_wp, 1.29_wp, 0.0_wp)
+      call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 300, 1.0e-11_wp, a, error)
+      call lyapunov_largest_gsl(p, pendulum_initial_state(p, 0.017_wp), 300, 1.0e-11_wp, b, error)
+      call check(ctx, .not. allocated(error), "integrated")
+      call check(ctx, b%exponent, a%exponent, abs=1.0e-6_wp, rel=0.0_wp)
+      call check(ctx, b%energy_drift < 1.0e-8_wp, "energy kept")
+      write (*, '(4x,a,es10.3,a,es10.3)') "case (c), 300 periods: dop853 - rk8pd ", a%exponent - b%exponent, &
+         ", dop853 ", a%exponent
+      p = make(7.48_wp, 2.47_wp, 0.0_wp)
+      call lyapunov_largest_gsl(p, pendulum_initial_state(p, 1.0e-12_wp), 8, 1.0e-12_wp, b, error)
+      call check(ctx, .not. allocated(error), "integrated")
+      call check(ctx, maxval(abs(b%log_growth(5:8) - chart_log_lambda(7.48_wp, 2.47_wp, 0.0_wp))) < 1.0e-7_wp, &
+         "linear phase: ln lambda_max")
+   end subroutine gsl_rk8pd_agrees
+
+   subroutine bad_arguments(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(lyapunov_t) :: result
+      type(error_t), allocatable :: error
+      type(pendulum_t) :: p
+      p = make(2.57_wp, 1.29_wp, 0.0_wp)
+      call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 0, 1.0e-10_wp, result, error)
+      call check(ctx, allocated(error), "periods = 0")
+      call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 5, 0.0_wp, result, error)
+      call check(ctx, allocated(error), "rtol = 0")
+      call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 5, 1.0e-10_wp, result, error, method=7)
+      call check(ctx, allocated(error), "unknown method")
+      if (allocated(error)) call check(ctx, error%code == err_invalid_parameter, "invalid parameter")
+   end subroutine bad_arguments
+end module test_lyapunov

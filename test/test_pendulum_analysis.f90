@@ -1,0 +1,160 @@
+!> Tests of hillstab_pendulum_analysis: the multipliers of the 4×4 variational monodromy
+!> along the bounce (dgeev) against the core's S (GSL rk8pd on the Hill equation) at
+!> stable and unstable points up to α = 9.5; the onset law (observed onsets against a
+!> run at a 1000× tighter tolerance, and their spacing against ln(φ ratio)/ln λ_max);
+!> and that φ0 = 0 never starts.
+module test_pendulum_analysis
+   use hillstab_kinds, only: wp, pi2
+   use hillstab_error, only: error_t
+   use hillstab_stats, only: work_stats_t
+   use hillstab_coefficient, only: hill_model_t, model_elastic
+   use hillstab_transfer, only: trace_t
+   use hillstab_floquet, only: floquet_from_trace, largest_multiplier_modulus
+   use hillstab_monodromy, only: monodromy_trace, method_t, method_gsl
+   use hillstab_pendulum
+   use hillstab_pendulum_analysis
+   use hillstab_testing
+   implicit none
+   private
+   public :: collect_pendulum_analysis
+
+contains
+
+   function collect_pendulum_analysis() result(suite)
+      type(testsuite_t) :: suite
+      suite = new_testsuite("pendulum_analysis", [ &
+         new_unittest("multipliers_vs_core", multipliers_vs_core), &
+         new_unittest("onset_periods_formula", onset_periods_formula), &
+         new_unittest("onset_accurate_at_1e-20", onset_accurate), &
+         new_unittest("onset_law_spacing", onset_law_spacing), &
+         new_unittest("zero_angle_never_starts", zero_angle_never_starts)])
+   end function collect_pendulum_analysis
+
+   function make(alpha, beta, epsilon) result(p)
+      real(wp), intent(in) :: alpha, beta, epsilon
+      type(pendulum_t) :: p
+      type(error_t), allocatable :: error
+      call pendulum_from_chart(alpha, beta, epsilon, 0.1_wp, 9.81_wp, p, error)
+      if (allocated(error)) error stop "test_pendulum_analysis: valid parameters rejected"
+   end function make
+
+   !> λ_max of the Hill equation at (α, β, ε) from the core (GSL rk8pd, 1e-13).
+   real(wp) function core_lambda(alpha, beta, epsilon) result(lambda)
+      real(wp), intent(in) :: alpha, beta, epsilon
+      type(trace_t) :: tr
+      type(error_t), allocatable :: error
+      call monodromy_trace(hill_model_t(model_elastic, alpha, beta, epsilon), method_t(method_gsl, &
+                           tolerance=1.0e-13_wp), tr, error)
+      lambda = largest_multiplier_modulus(floquet_from_trace(tr, epsilon))
+   end function core_lambda
+
+   !> First time |φ| > 0.1 [radial periods] from phi0 within `periods` periods (−1: never).
+   real(wp) function observed_onset(alpha, beta, phi0, rtol, periods) result(n)
+      real(wp), intent(in) :: alpha, beta, phi0, rtol
+      integer, intent(in) :: periods
+      type(pendulum_watch_t) :: watch
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      real(wp) :: y(4)
+      watch%pendulum = make(alpha, beta, 0.0_wp)
+      watch%stop_at_onset = .true.
+      y = pendulum_initial_state(watch%pendulum, phi0)
+      call pendulum_integrate(watch, y, periods*watch%pendulum%period, rtol, stats, error)
+      n = -2.0_wp
+      if (allocated(error)) return
+      n = -1.0_wp
+      if (watch%onset_time >= 0.0_wp) n = watch%onset_time/watch%pendulum%period
+   end function observed_onset
+
+   !> Multipliers of the 4×4 monodromy: the radial pair is {1, 1}, the swing pair has
+   !> product 1 and sum S of the core (to 1e-8 relative), at 6+ points, stable and
+   !> unstable, including α = 9.5.
+   subroutine multipliers_vs_core(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: points(2, 8)
+      type(bounce_multipliers_t) :: mult
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      type(trace_t) :: core
+      integer :: i
+      character(len=64) :: label
+      points = reshape([1.48_wp, 2.47_wp, 3.7_wp, 2.47_wp, 2.57_wp, 1.29_wp, 5.0_wp, 0.76_wp, &
+                        7.88_wp, 3.95_wp, 7.48_wp, 2.47_wp, 9.5_wp, 2.47_wp, 9.5_wp, 6.0_wp], [2, 8])
+      do i = 1, size(points, 2)
+         write (label, '(a,f5.2,a,f5.2)') "alpha=", points(1, i), " beta=", points(2, i)
+         call bounce_multipliers(make(points(1, i), points(2, i), 0.0_wp), 1.0e-13_wp, mult, stats, error)
+         call check(ctx, .not. allocated(error), trim(label)//": multipliers computed")
+         if (allocated(error)) cycle
+         call monodromy_trace(hill_model_t(model_elastic, points(1, i), points(2, i), 0.0_wp), &
+                              method_t(method_gsl, tolerance=1.0e-13_wp), core, error)
+         write (*, '(4x,a,a,es22.14,a,es22.14,a,2es10.2)') trim(label), ": lambda1 + lambda2 = ", mult%swing_sum, &
+            ", core S = ", core%value, ", |radial - 1| = ", abs(mult%radial - 1.0_wp)
+         call check(ctx, mult%swing_sum, core%value, abs=1.0e-8_wp*max(1.0_wp, abs(core%value)), &
+            message=trim(label)//": swing multipliers sum to S")
+         call check(ctx, maxval(abs(mult%radial - 1.0_wp)) < 1.0e-8_wp, trim(label)//": radial multipliers {1, 1}")
+         call check(ctx, abs(mult%swing(1)*mult%swing(2) - 1.0_wp) < 1.0e-8_wp, trim(label)//": det of the swing = 1")
+      end do
+      ! damped: the radial pair decays by e^(-eps) per period (κT/2 = ε); the swing block
+      ! is then taken along the decaying bounce, which is not the chart's periodic orbit
+      call bounce_multipliers(make(3.7_wp, 2.47_wp, 0.3_wp), 1.0e-13_wp, mult, stats, error)
+      call check(ctx, .not. allocated(error), "damped multipliers computed")
+      call check(ctx, maxval(abs(mult%radial)), exp(-0.3_wp), rel=1.0e-8_wp, message="damped radial |lambda| = e^-eps")
+   end subroutine multipliers_vs_core
+
+   subroutine onset_periods_formula(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      call check(ctx, onset_periods(1.0e-20_wp, 0.1_wp, 10.0_wp), 19.0_wp, rel=1.0e-14_wp, message="1e-20 -> 19")
+      call check(ctx, onset_periods(-1.0e-5_wp, 0.1_wp, exp(1.0_wp)), log(1.0e4_wp), rel=1.0e-14_wp, &
+         message="negative phi0")
+      call check(ctx, onset_periods(0.0_wp, 0.1_wp, 10.0_wp), -1.0_wp, abs=0.0_wp, message="phi0 = 0: never")
+      call check(ctx, onset_periods(1.0e-3_wp, 0.1_wp, 1.0_wp), -1.0_wp, abs=0.0_wp, message="stable: never")
+      call check(ctx, onset_periods(0.2_wp, 0.1_wp, 3.0_wp), 0.0_wp, abs=0.0_wp, message="already above")
+   end subroutine onset_periods_formula
+
+   !> The observed onset at φ0 = 1e-20 (the linear phase spans 18+ periods) at tolerance
+   !> 1e-10 agrees with a run at 1e-13 to far better than 1 % (cases (e), (g), (b)).
+   subroutine onset_accurate(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: cases(2, 3), loose, tight
+      integer :: i
+      cases = reshape([7.88_wp, 3.95_wp, 7.48_wp, 2.47_wp, 3.7_wp, 2.47_wp], [2, 3])
+      do i = 1, 3
+         loose = observed_onset(cases(1, i), cases(2, i), 1.0e-20_wp, 1.0e-10_wp, 200)
+         tight = observed_onset(cases(1, i), cases(2, i), 1.0e-20_wp, 1.0e-13_wp, 200)
+         write (*, '(4x,a,f5.2,a,f5.2,a,f12.8,a,f12.8,a,es9.2)') "alpha=", cases(1, i), " beta=", cases(2, i), &
+            ": onset from 1e-20 at ", loose, " periods (tol 1e-10), ", tight, " (tol 1e-13), rel. diff ", &
+            abs(loose - tight)/tight
+         call check(ctx, tight > 10.0_wp, "onset reached after the linear phase")
+         call check(ctx, loose, tight, rel=1.0e-4_wp, message="onset accurate to 1e-4")
+      end do
+   end subroutine onset_accurate
+
+   !> In the linear phase the swing from φ0/10^10 is the swing from φ0 scaled by 10^-10,
+   !> so the onset comes ln(1e10)/ln λ_max periods later, to within one radial period: the
+   !> threshold is crossed near a peak of |φ|, and in the parametric resonance the peaks
+   !> come once per radial period. λ_max from the core.
+   subroutine onset_law_spacing(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: cases(2, 3), lambda, spacing, predicted
+      integer :: i
+      cases = reshape([7.88_wp, 3.95_wp, 7.48_wp, 2.47_wp, 3.7_wp, 2.47_wp], [2, 3])
+      do i = 1, 3
+         lambda = core_lambda(cases(1, i), cases(2, i), 0.0_wp)
+         spacing = observed_onset(cases(1, i), cases(2, i), 1.0e-20_wp, 1.0e-10_wp, 200) &
+                   - observed_onset(cases(1, i), cases(2, i), 1.0e-10_wp, 1.0e-10_wp, 200)
+         predicted = log(1.0e10_wp)/log(lambda)
+         write (*, '(4x,a,f5.2,a,f5.2,a,f10.5,a,f10.5,a)') "alpha=", cases(1, i), " beta=", cases(2, i), &
+            ": onset(1e-20) - onset(1e-10) = ", spacing, " periods, ln(1e10)/ln(lambda_max) = ", predicted, &
+            " periods"
+         call check(ctx, spacing, predicted, abs=1.0_wp, message="onset spacing follows the law")
+      end do
+   end subroutine onset_law_spacing
+
+   !> φ0 = 0: the bounce is an exact solution, x stays 0 and the swing never starts.
+   subroutine zero_angle_never_starts(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      call check(ctx, observed_onset(7.88_wp, 3.95_wp, 0.0_wp, 1.0e-10_wp, 100), -1.0_wp, abs=0.0_wp, &
+         message="no onset from phi0 = 0 in 100 periods")
+   end subroutine zero_angle_never_starts
+
+end module test_pendulum_analysis

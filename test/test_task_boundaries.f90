@@ -1,0 +1,278 @@
+!> Tests of the `boundaries` task through `run_scene_file`, reading the file back:
+!> layout (header, `# columns:`, one block per curve separated by two blank lines),
+!> values at α = 0 against β = (nπ/2)², the accuracy bar (a boundary at a grid α
+!> within 1e-9 of the β found by bisection on S with method auto at tolerance 1e-13,
+!> or of the exact β = 0 and π²), repeating a run from its output, the approximate
+!> curves of eq. (37) (S_formula = ±2 at every root), and the Mathieu model's GSL column.
+module test_task_boundaries
+   use hillstab_kinds, only: wp, pi, pi2
+   use hillstab_error, only: error_t
+   use hillstab_coefficient, only: hill_model_t, model_elastic
+   use hillstab_transfer, only: trace_t
+   use hillstab_monodromy, only: method_t, method_auto, monodromy_trace
+   use hillstab_formulas, only: trace_two_segment_paper
+   use hillstab_tasks, only: run_scene_file
+   use hillstab_testing
+   use test_scene, only: scratch_prefix, write_file, read_lines, delete_file
+   implicit none
+   private
+   public :: collect_task_boundaries
+
+contains
+
+   function collect_task_boundaries() result(suite)
+      type(testsuite_t) :: suite
+      suite = new_testsuite("task_boundaries", [ &
+         new_unittest("layout_and_alpha_zero", layout_and_alpha_zero), &
+         new_unittest("accuracy_on_grid", accuracy_on_grid), &
+         new_unittest("repeat_from_output", repeat_from_output), &
+         new_unittest("paper_formula_curves", paper_formula_curves), &
+         new_unittest("mathieu_gsl_column", mathieu_gsl_column)])
+   end function collect_task_boundaries
+
+   !> Two scene lines as one array (built here: typed array constructors with
+   !> deferred-length concatenations corrupt the heap in gfortran 12).
+   function two_lines(first, second) result(lines)
+      character(len=*), intent(in) :: first, second
+      character(len=240) :: lines(2)
+      lines(1) = first
+      lines(2) = second
+   end function two_lines
+
+   !> Run a scene given as lines; return the data rows (n_columns each) and the file lines.
+   subroutine run_rows(name, scene_lines, n_columns, rows, lines, error)
+      character(len=*), intent(in) :: name
+      character(len=*), intent(in) :: scene_lines(:)
+      integer, intent(in) :: n_columns
+      real(wp), allocatable, intent(out) :: rows(:, :)
+      character(len=1024), allocatable, intent(out) :: lines(:)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: path, written
+      integer :: k, n, ios
+      path = scratch_prefix(name)//".nml"
+      call write_file(path, scene_lines)
+      call run_scene_file(path, .true., error, written)
+      call delete_file(path)
+      allocate (rows(n_columns, 0))
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call delete_file(written)
+      deallocate (rows)
+      allocate (rows(n_columns, size(lines)))
+      n = 0
+      do k = 1, size(lines)
+         if (lines(k)(1:1) == "#" .or. len_trim(lines(k)) == 0) cycle
+         n = n + 1
+         read (lines(k), *, iostat=ios) rows(:, n)
+         if (ios /= 0) rows(:, n) = -999.0_wp
+      end do
+      rows = rows(:, :n)
+   end subroutine run_rows
+
+   subroutine layout_and_alpha_zero(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), allocatable :: rows(:, :)
+      character(len=1024), allocatable :: lines(:)
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out
+      integer :: k, n_columns_lines, n_double_blank, curve, j
+      out = scratch_prefix("bnd_layout")
+      call run_rows("bnd_layout", two_lines("&scene task='boundaries', tolerance=1e-11, output='"//out//"' /", &
+         "&chart alpha_min=0, alpha_max=6, n_alpha=4, beta_min=-2, beta_max=30 /"), 11, rows, lines, error)
+      call check(ctx, .not. allocated(error), "runs")
+      if (allocated(error)) return
+      n_columns_lines = 0
+      n_double_blank = 0
+      do k = 1, size(lines)
+         if (lines(k)(1:11) == "# columns: ") then
+            n_columns_lines = n_columns_lines + 1
+            call check(ctx, trim(lines(k)) == "# columns: alpha beta kind order branch curve coexist status "// &
+                       "check beta_error modes", "column names")
+         end if
+         if (k > 1) then
+            if (len_trim(lines(k)) == 0 .and. len_trim(lines(k - 1)) == 0) n_double_blank = n_double_blank + 1
+         end if
+      end do
+      call check(ctx, n_columns_lines == 1, "one columns line")
+      call check(ctx, all(rows(8, :) == 0.0_wp .or. rows(8, :) == 1.0_wp), "status ok or round-off limited")
+      call check(ctx, all(abs(rows(9, :) - rows(3, :)) < 1.0e-8_wp), "S = kind by auto at every point")
+      ! below 30: a0, b1 a1, b2 a2, b3 a3: 7 curves, so 6 double blank lines between blocks
+      call check(ctx, n_double_blank == 6, "blocks separated by two blank lines")
+      do k = 1, size(rows, 2)
+         if (rows(1, k) == 0.0_wp) then
+            call check(ctx, rows(2, k), (rows(4, k)*pi/2)**2, rel=1.0e-12_wp, abs=1.0e-12_wp, message="(n pi/2)^2")
+            call check(ctx, rows(7, k) == merge(0.0_wp, 1.0_wp, rows(4, k) == 0.0_wp), "alpha = 0: coexistence")
+         end if
+         ! rows of one block share kind, order and branch
+         curve = nint(rows(6, k))
+         do j = 1, k - 1
+            if (nint(rows(6, j)) == curve) then
+               call check(ctx, all(rows(3:5, j) == rows(3:5, k)), "one curve per block")
+               exit
+            end if
+         end do
+         ! periodic tongues of the elastic model have zero width, antiperiodic ones (alpha > 0) do not
+         if (rows(1, k) > 0.0_wp .and. rows(4, k) > 0.0_wp) then
+            call check(ctx, (rows(7, k) == 1.0_wp) .eqv. (rows(3, k) == 2.0_wp), "coexistence flag")
+         end if
+      end do
+      ! blocks in file order are curves 0, 1, 2, ...
+      call check(ctx, all(rows(6, 2:) >= rows(6, :size(rows, 2) - 1)), "curves in order")
+   end subroutine layout_and_alpha_zero
+
+   !> The bar: at a grid α, every boundary within 1e-9 of the true β (tolerance 1e-11).
+   !> References: bisection on S by auto (tolerance 1e-13) for the crossing curves,
+   !> the exact β = 0 (order 0) and β = π² (order 2, both curves).
+   subroutine accuracy_on_grid(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), allocatable :: rows(:, :)
+      character(len=1024), allocatable :: lines(:)
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out
+      real(wp) :: reference
+      integer :: k, n_bisected
+      out = scratch_prefix("bnd_accuracy")
+      call run_rows("bnd_accuracy", two_lines("&scene task='boundaries', tolerance=1e-11, output='"//out//"' /", &
+         "&chart alpha_min=2.5, alpha_max=9.5, n_alpha=3, beta_min=-2, beta_max=25 /"), 11, rows, lines, error)
+      call check(ctx, .not. allocated(error), "runs")
+      if (allocated(error)) return
+      n_bisected = 0
+      do k = 1, size(rows, 2)
+         if (rows(4, k) == 0.0_wp) then
+            reference = 0.0_wp
+         else if (rows(4, k) == 2.0_wp) then
+            reference = pi2
+         else if (rows(3, k) == -2.0_wp) then
+            reference = bisect(rows(1, k), rows(2, k))
+            n_bisected = n_bisected + 1
+         else
+            cycle
+         end if
+         call check(ctx, rows(2, k), reference, abs=1.0e-9_wp, message="boundary within 1e-9")
+      end do
+      call check(ctx, n_bisected >= 12, "the antiperiodic curves of orders 1 and 3 at three alphas")
+   contains
+      !> S(β) + 2 changes sign across the curve: bisection from a bracket of ±1e-6.
+      real(wp) function bisect(alpha, beta)
+         real(wp), intent(in) :: alpha, beta
+         real(wp) :: lo, hi, mid, f_lo, f_mid
+         integer :: it
+         lo = beta - 1.0e-6_wp; hi = beta + 1.0e-6_wp
+         f_lo = s(alpha, lo) + 2.0_wp
+         do it = 1, 60
+            mid = 0.5_wp*(lo + hi)
+            f_mid = s(alpha, mid) + 2.0_wp
+            if (sign(1.0_wp, f_mid) == sign(1.0_wp, f_lo)) then
+               lo = mid; f_lo = f_mid
+            else
+               hi = mid
+            end if
+            if (hi - lo < 1.0e-13_wp) exit
+         end do
+         bisect = 0.5_wp*(lo + hi)
+      end function bisect
+      real(wp) function s(alpha, beta)
+         real(wp), intent(in) :: alpha, beta
+         type(trace_t) :: tr
+         type(error_t), allocatable :: err
+         call monodromy_trace(hill_model_t(model_elastic, alpha, beta, 0.0_wp), &
+                              method_t(method_auto, tolerance=1.0e-13_wp), tr, err)
+         s = tr%value
+      end function s
+   end subroutine accuracy_on_grid
+
+   !> The output file read back as a scene repeats the run exactly.
+   subroutine repeat_from_output(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), allocatable :: first(:, :), second(:, :)
+      character(len=1024), allocatable :: lines(:)
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out, written
+      integer :: k
+      out = scratch_prefix("bnd_repeat")
+      call run_rows("bnd_repeat", two_lines("&scene task='boundaries', method='segments', n_segments=8, "// &
+         "sampling='midpoint', output='"//out//"' /", &
+         "&chart alpha_min=1, alpha_max=8, n_alpha=3, beta_min=-2, beta_max=12, n_beta=150 /"), &
+         11, first, lines, error)
+      call check(ctx, .not. allocated(error), "first run")
+      if (allocated(error)) return
+      call write_file(out//"_copy.dat", lines)
+      call run_scene_file(out//"_copy.dat", .true., error, written)
+      call check(ctx, .not. allocated(error), "second run from the output file")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call delete_file(out//"_copy.dat")
+      call delete_file(written)
+      allocate (second(11, 0))
+      do k = 1, size(lines)
+         if (lines(k)(1:1) == "#" .or. len_trim(lines(k)) == 0) cycle
+         second = reshape([second, values(lines(k))], [11, size(second, 2) + 1])
+      end do
+      call check(ctx, size(second, 2) == size(first, 2) .and. size(first, 2) > 6, "same number of rows")
+      if (size(second, 2) == size(first, 2)) call check(ctx, all(second == first), "same rows")
+   contains
+      function values(line) result(v)
+         character(len=*), intent(in) :: line
+         real(wp) :: v(11)
+         read (line, *) v
+      end function values
+   end subroutine repeat_from_output
+
+   !> method formula: every root has S by eq. (37) = ±2 (evaluated here independently)
+   !> and at α = 0 they are (nπ/2)².
+   subroutine paper_formula_curves(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), allocatable :: rows(:, :)
+      character(len=1024), allocatable :: lines(:)
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out
+      real(wp) :: s, ds
+      integer :: k
+      out = scratch_prefix("bnd_formula")
+      call run_rows("bnd_formula", two_lines("&scene task='boundaries', method='formula', tolerance=1e-12, "// &
+         "output='"//out//"' /", &
+         "&chart alpha_min=0, alpha_max=8, n_alpha=5, beta_min=-2, beta_max=12, n_beta=400 /"), &
+         11, rows, lines, error)
+      call check(ctx, .not. allocated(error), "runs")
+      if (allocated(error)) return
+      ! alpha = 0: only beta = 0 crosses; the double roots (n pi/2)^2, n >= 1, only touch +-2
+      call check(ctx, size(rows, 2) >= 10, "roots found")
+      do k = 1, size(rows, 2)
+         s = paper(rows(1, k), rows(2, k))
+         ds = (paper(rows(1, k), rows(2, k) + 1.0e-7_wp) - paper(rows(1, k), rows(2, k) - 1.0e-7_wp))/2.0e-7_wp
+         call check(ctx, s, rows(3, k), abs=1.0e-9_wp + abs(ds)*1.0e-11_wp*max(1.0_wp, abs(rows(2, k))), &
+                    message="eq. (37) = +-2 at the root")
+         if (rows(1, k) == 0.0_wp) call check(ctx, rows(2, k), (rows(4, k)*pi/2)**2, abs=1.0e-10_wp, &
+                                              message="alpha = 0")
+      end do
+   contains
+      real(wp) function paper(alpha, beta)
+         real(wp), intent(in) :: alpha, beta
+         type(trace_t) :: tr
+         tr = trace_two_segment_paper(alpha, beta)
+         paper = tr%value
+      end function paper
+   end subroutine paper_formula_curves
+
+   !> Mathieu model: GSL's column agrees with Hill's β where GSL is trusted.
+   subroutine mathieu_gsl_column(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), allocatable :: rows(:, :)
+      character(len=1024), allocatable :: lines(:)
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out
+      integer :: k
+      out = scratch_prefix("bnd_mathieu")
+      call run_rows("bnd_mathieu", two_lines("&scene task='boundaries', model='mathieu', tolerance=1e-11, "// &
+         "output='"//out//"' /", &
+         "&chart alpha_min=0, alpha_max=12, n_alpha=4, beta_min=-10, beta_max=40 /"), 13, rows, lines, error)
+      call check(ctx, .not. allocated(error), "runs")
+      if (allocated(error)) return
+      call check(ctx, any(lines == "# columns: alpha beta kind order branch curve coexist status "// &
+                          "check beta_error modes beta_gsl gsl_ok"), "GSL columns")
+      call check(ctx, all(rows(13, :) == 1.0_wp), "GSL trusted everywhere here")
+      do k = 1, size(rows, 2)
+         call check(ctx, rows(12, k), rows(2, k), rel=1.0e-10_wp, abs=1.0e-10_wp, message="GSL = Hill")
+      end do
+   end subroutine mathieu_gsl_column
+end module test_task_boundaries
