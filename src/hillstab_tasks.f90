@@ -29,8 +29,10 @@ module hillstab_tasks
    use hillstab_monodromy, only: monodromy_trace, monodromy_trace_batch, method_name, method_segments, &
       batch_plan_t, prepare_batch
    use hillstab_task_series, only: run_series
+   use hillstab_task_lyapunov, only: run_lyapunov
+   use hillstab_task_poincare, only: run_poincare
    use hillstab_scene, only: scene_t, read_scene, scene_namelist, task_chart, task_points, task_coefficient, &
-      task_series, task_name, grid_value, real_text, integer_text, task_boundaries
+      task_series, task_name, grid_value, real_text, integer_text, task_boundaries, task_lyapunov, task_poincare
    use hillstab_task_boundaries, only: run_boundaries
    use hillstab_format, only: format_es
    use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, &
@@ -99,6 +101,10 @@ contains
          call run_boundaries(scene, quiet, error)
       case (task_series)
          call run_series(scene, error)
+      case (task_lyapunov)
+         call run_lyapunov(scene, quiet, error)
+      case (task_poincare)
+         call run_poincare(scene, quiet, error)
       case default
          call set_error(error, err_input, scene%source//": &scene: task: task '"//task_name(scene%task)// &
             "' is not available in this build")
