@@ -20,6 +20,7 @@ module hillstab_scene
    use hillstab_coefficient, only: model_elastic, model_mathieu, model_name, sampling_endpoint, &
       sampling_average, sampling_name
    use hillstab_monodromy, only: method_t, method_auto, method_name, method_from_name
+   use hillstab_output, only: default_chart_columns, find_chart_columns, chart_columns_text
    use hillstab_units, only: physical_t, physical_alpha, physical_beta, physical_epsilon, physical_nu, &
       check_physical, equilibrium_length
    use, intrinsic :: iso_fortran_env, only: iostat_end
@@ -106,7 +107,11 @@ module hillstab_scene
       integer :: model = model_elastic              !! model_elastic or model_mathieu
       type(method_t) :: method                      !! method, n_segments, sampling, tolerance
       real(wp) :: epsilon = 0.0_wp                  !! damping ε of eq. (46)
-      character(len=:), allocatable :: output       !! prefix: files are <output>_<task>.dat
+      character(len=:), allocatable :: output       !! prefix: files are <output>_<task>.dat (.bin)
+      !> chart and points: the columns to write, blank-separated ("" = all the task offers)
+      character(len=:), allocatable :: columns
+      logical :: binary = .false.      !! chart and points: float64 records after a text header
+      logical :: names_line = .false.  !! text: a line of column names after the `#` header
       type(chart_grid_t) :: chart                   !! task_chart
       character(len=:), allocatable :: points_file  !! task_points: the file of α β lines
       real(wp), allocatable :: points(:, :)         !! task_points: (2, n) α, β in file order
@@ -191,6 +196,7 @@ contains
       end if
       if (len(scene%output) == 0) scene%output = "hillstab"
       scene%points_file = ""
+      scene%columns = ""
       scene%coefficient%alphas = [4.0_wp, 6.0_wp, 7.5_wp, 8.0_wp, 9.0_wp, 9.7_wp]
       scene%poincare%phi0s = [0.05_wp, 0.2_wp, 0.4_wp, 0.6_wp, 0.8_wp]
       allocate (scene%amplitudes(0))
@@ -240,23 +246,45 @@ contains
             if (.not. allocated(error)) call read_poincare_group(unit, scene, error)
          end select
       end if
+      if (.not. allocated(error)) call check_columns(scene, error)
       close (unit)
    end subroutine read_scene
+
+   !> `&scene columns`: each name one of the columns this scene's file offers (which depend
+   !> on the model, the damping and `&physical`), none twice, at least one.
+   subroutine check_columns(scene, error)
+      type(scene_t), intent(in) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: available(:), ids(:)
+      character(len=:), allocatable :: bad
+      if (len_trim(scene%columns) == 0 .or. (scene%task /= task_chart .and. scene%task /= task_points)) return
+      available = default_chart_columns(scene%epsilon > 0.0_wp, scene%model == model_elastic, scene%physical)
+      call find_chart_columns(scene%columns, available, ids, bad)
+      if (len(bad) > 0) then
+         call fail(error, scene%source, "scene", "columns", "'"//bad//"' is not a column of this file or is "// &
+            "named twice (available: "//chart_columns_text(available)//")")
+      else if (size(ids) == 0) then
+         call fail(error, scene%source, "scene", "columns", "no column named")
+      end if
+   end subroutine check_columns
 
    !> `&scene`: task, model, method and its settings, damping, output prefix.
    subroutine read_scene_group(unit, this, error)
       integer, intent(in) :: unit
       type(scene_t), intent(inout) :: this
       type(error_t), allocatable, intent(out) :: error
-      character(len=text_len) :: task, model, method, sampling, output
+      character(len=text_len) :: task, model, method, sampling, output, columns, format
       integer :: n_segments
       real(wp) :: tolerance, epsilon
-      namelist /scene/ task, model, method, n_segments, sampling, tolerance, epsilon, output
+      logical :: names_line
+      namelist /scene/ task, model, method, n_segments, sampling, tolerance, epsilon, output, columns, format, &
+         names_line
       character(len=*), parameter :: group = "scene"
-      character(len=*), parameter :: names(8) = [character(len=10) :: "task", "model", "method", &
-         "n_segments", "sampling", "tolerance", "epsilon", "output"]
-      character(len=*), parameter :: kinds(8) = [character(len=16) :: "a quoted name", "a quoted name", &
-         "a quoted name", "an integer", "a quoted name", "a real number", "a real number", "a quoted path"]
+      character(len=*), parameter :: names(11) = [character(len=10) :: "task", "model", "method", &
+         "n_segments", "sampling", "tolerance", "epsilon", "output", "columns", "format", "names_line"]
+      character(len=*), parameter :: kinds(11) = [character(len=17) :: "a quoted name", "a quoted name", &
+         "a quoted name", "an integer", "a quoted name", "a real number", "a real number", "a quoted path", &
+         "quoted names", "a quoted name", ".true. or .false."]
       integer :: ios, k
       character(len=512) :: msg
       character(len=:), allocatable :: bad
@@ -264,6 +292,7 @@ contains
       task = task_name(this%task); model = model_name(this%model); method = method_name(this%method%kind)
       n_segments = this%method%n_segments; sampling = sampling_name(this%method%sampling)
       tolerance = this%method%tolerance; epsilon = this%epsilon; output = this%output
+      columns = this%columns; format = merge("binary", "text  ", this%binary); names_line = this%names_line
       call without_fpe_halting(read_it)
       call check_read(unit, this%source, group, names, kinds, ios, msg, bad, error)
       if (allocated(error)) return
@@ -332,6 +361,25 @@ contains
          return
       end if
       this%output = trim(output)
+
+      select case (lower(trim(format)))
+      case ("text"); this%binary = .false.
+      case ("binary"); this%binary = .true.
+      case default
+         call fail(error, this%source, group, "format", "unknown format '"//trim(format)//"' (expected text or binary)")
+         return
+      end select
+      this%columns = trim(adjustl(columns))
+      this%names_line = names_line
+      if (this%task /= task_chart .and. this%task /= task_points .and. (this%binary .or. len(this%columns) > 0)) then
+         call fail(error, this%source, group, merge("format ", "columns", this%binary), &
+            "columns and format = 'binary' apply to tasks chart and points")
+         return
+      end if
+      if (this%binary .and. this%names_line) then
+         call fail(error, this%source, group, "names_line", "a line of column names is for format = 'text' only")
+         return
+      end if
    contains
       subroutine read_it()
          rewind (unit)
@@ -920,6 +968,9 @@ contains
       do
          call read_text_line(unit, line, ios)
          if (ios /= 0) exit
+         ! in an output file the scene ends where the columns are named: the data that
+         ! follow (raw bytes in a binary file) are no scene text
+         if (index(line, "# columns:") == 1) exit
          text = text//strip_comment(line)//" "
       end do
       start = 0
@@ -1257,7 +1308,13 @@ contains
          ", tolerance = "//real_text(scene%method%tolerance)
       ! with &physical the damping is kappa; epsilon in &scene would be an error
       if (.not. scene%physical) first = first//", epsilon = "//real_text(scene%epsilon)
-      first = first//", output = "//quoted(scene%output)//" /"
+      first = first//", output = "//quoted(scene%output)
+      if (scene%task == task_chart .or. scene%task == task_points) then
+         first = first//", columns = "//quoted(scene%columns)//", format = "// &
+            quoted(trim(merge("binary", "text  ", scene%binary)))
+         if (scene%names_line) first = first//", names_line = .true."
+      end if
+      first = first//" /"
       select case (scene%task)
       case (task_chart, task_boundaries)
          second = "&chart alpha_min = "//real_text(scene%chart%alpha_min)// &
