@@ -84,7 +84,7 @@ module hillstab_gsl
    real(wp), parameter :: chunk_log_growth = 200.0_wp
 
    integer(c_int), parameter :: gsl_success = 0
-   !> GSL_FAILURE: the step control cannot meet its epsilon even at the smallest step
+   !> Status GSL_FAILURE, returned when the step control cannot meet its epsilon even at the smallest step
    !> (rounding noise in the step's error estimate exceeds it).
    integer(c_int), parameter :: gsl_failure = -1
    !> `monodromy_gsl`: at most this many values of S per point.

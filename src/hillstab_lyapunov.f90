@@ -154,7 +154,7 @@ contains
       result%energy_drift = abs(pendulum_energy(p, y(1:4)) - e0)/max(scale0, tiny(1.0_wp))
    end subroutine lyapunov_largest
 
-   !> Observer: the largest |φ| at the accepted steps.
+   !> The observer keeps the largest |φ| at the accepted steps.
    subroutine watch_angle(self, step, stop)
       class(watched_tangent_t), intent(inout) :: self
       type(rk_step_t), intent(in) :: step

@@ -91,7 +91,7 @@ contains
       section%energy_drift = abs(pendulum_energy(p, y) - e0)/merge(abs(e0), 1.0_wp, e0 /= 0.0_wp)
    end subroutine poincare_section
 
-   !> Observer: a crossing of x from negative to non-negative with z > 0 inside the step
+   !> The observer. A crossing of x from negative to non-negative with z > 0 inside the step
    !> is refined on the dense output and recorded.
    subroutine record_crossings(self, step, stop)
       class(section_system_t), intent(inout) :: self
