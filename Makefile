@@ -3,7 +3,8 @@
 #   make test           run the test suite
 # both install what is missing first (scripts/setup.sh). Further targets:
 #   make test-debug     tests again with runtime checks and floating-point traps
-#   make bench          speed-against-error benchmark (out/bench_*.dat, out/bench*.png)
+#   make bench          speed-against-error benchmarks (out/bench_*.dat, out/bench*.png; the pendulum
+#                       integrators: out/bench_series.dat, out/bench_series.png)
 #   make lib            build libhillstab.a, libhillstab.so, .mod files and the hillstab program
 #                       with plain gfortran (no fpm)
 #   make install PREFIX=/usr/local   install libraries, modules, C header, pkg-config and CMake
@@ -51,6 +52,8 @@ bench: setup
 	mkdir -p out
 	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench
 	gnuplot plots/bench.gp
+	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_series
+	gnuplot plots/bench_series.gp
 
 lib: setup
 	@rm -rf $(LEGACY_DIR)/obj $(LEGACY_DIR)/mod; mkdir -p $(LEGACY_DIR)/obj $(LEGACY_DIR)/mod
