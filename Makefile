@@ -3,8 +3,10 @@
 #   make test           run the test suite
 # both install what is missing first (scripts/setup.sh). Further targets:
 #   make test-debug     tests again with runtime checks and floating-point traps
-#   make bench          speed-against-error benchmarks (out/bench_*.dat, out/bench*.png; the pendulum
-#                       integrators: out/bench_series.dat, out/bench_series.png)
+#   make bench          speed-against-error benchmarks (out/bench_*.dat, out/bench*.png), the
+#                       transition-curve benchmark (out/bench_boundaries.dat) and the pendulum
+#                       integrators (out/bench_series.dat, out/bench_series.png)
+#   make area           where the approximate charts are wrong: misclassified area (out/area*.dat, out/area.png)
 #   make lib            build libhillstab.a, libhillstab.so, .mod files and the hillstab program
 #                       with plain gfortran (no fpm)
 #   make install PREFIX=/usr/local   install libraries, modules, C header, pkg-config and CMake
@@ -34,7 +36,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug setup bench lib install check-install doc doc-check clean mpi test-mpi
+.PHONY: run test test-debug setup bench area lib install check-install doc doc-check clean mpi test-mpi
 
 setup:
 	@bash scripts/setup.sh
@@ -54,6 +56,12 @@ bench: setup
 	gnuplot plots/bench.gp
 	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_series
 	gnuplot plots/bench_series.gp
+	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_boundaries
+
+area: setup
+	mkdir -p out
+	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_area
+	gnuplot plots/area.gp
 
 lib: setup
 	@rm -rf $(LEGACY_DIR)/obj $(LEGACY_DIR)/mod; mkdir -p $(LEGACY_DIR)/obj $(LEGACY_DIR)/mod
@@ -109,10 +117,10 @@ mpi:
 test-mpi:
 	bash scripts/test_mpi.sh
 
-doc:
+doc: setup
 	@bash scripts/doc.sh
 
-doc-check:
+doc-check: setup
 	@python3 scripts/doc_check.py
 
 clean:

@@ -25,6 +25,7 @@ module hillstab
    use hillstab_hill_method
    use hillstab_rk
    use hillstab_monodromy_rk
+   use hillstab_refine
    use hillstab_pendulum
    use hillstab_pendulum_analysis
    use hillstab_scene

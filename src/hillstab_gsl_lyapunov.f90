@@ -46,8 +46,8 @@ contains
       real(wp), intent(in) :: y0(4)            !! initial state (x, z, x', z')
       integer, intent(in) :: periods           !! number of radial periods N ≥ 1
       real(wp), intent(in) :: rtol             !! relative tolerance (> 0)
-      type(lyapunov_t), intent(out) :: result
-      type(error_t), allocatable, intent(out) :: error
+      type(lyapunov_t), intent(out) :: result  !! the exponent, its spread, the largest angle, the energy drift
+      type(error_t), allocatable, intent(out) :: error  !! invalid arguments; integration failure
       type(context_t), target :: context
       type(gsl_odeiv2_system), target :: system
       type(c_ptr) :: driver

@@ -82,6 +82,7 @@ contains
       real(wp), intent(in) :: y0(4)            !! initial state (x, z, x', z')
       integer, intent(in) :: periods           !! number of radial periods N ≥ 1
       real(wp), intent(in) :: rtol             !! relative tolerance of the integration
+      !> the exponent, its spread over the second half, the largest angle, the energy drift
       type(lyapunov_t), intent(out) :: result
       type(error_t), allocatable, intent(out) :: error  !! invalid arguments; integration failure
       integer, intent(in), optional :: method  !! rk_dop853 (default) or rk_dopri5
@@ -153,7 +154,7 @@ contains
       result%energy_drift = abs(pendulum_energy(p, y(1:4)) - e0)/max(scale0, tiny(1.0_wp))
    end subroutine lyapunov_largest
 
-   !> Observer: the largest |φ| at the accepted steps.
+   !> The observer keeps the largest |φ| at the accepted steps.
    subroutine watch_angle(self, step, stop)
       class(watched_tangent_t), intent(inout) :: self
       type(rk_step_t), intent(in) :: step

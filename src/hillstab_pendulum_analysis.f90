@@ -85,7 +85,7 @@ contains
       real(wp), intent(in) :: rtol                   !! relative tolerance of the integration
       type(bounce_multipliers_t), intent(out) :: result  !! monodromy and multipliers
       type(work_stats_t), intent(out) :: stats       !! work of the integration
-      type(error_t), allocatable, intent(out) :: error  !! integration or dgeev failure
+      type(error_t), allocatable, intent(out) :: error  !! integration or LAPACK failure; unallocated on success
       real(wp) :: a(4, 4), wr(4), wi(4), vl(1, 1), vr(4, 4), work(64), v(4, 2), weight(4), scale(4)
       integer :: info, j, n_swing, n_radial
       call pendulum_bounce_monodromy(p, rtol, result%monodromy, stats, error)
@@ -168,7 +168,7 @@ contains
       real(wp), intent(in) :: t_end            !! end time [s]
       real(wp), intent(in) :: rtol             !! relative tolerance (> 0)
       type(work_stats_t), intent(out) :: stats  !! steps, rejections, f-evaluations
-      type(error_t), allocatable, intent(out) :: error  !! allocated when the integration fails
+      type(error_t), allocatable, intent(out) :: error  !! invalid arguments; integration failure
       real(wp), intent(out), optional :: t_reached  !! where the integration ended [s]
       type(rk_options_t) :: options
       real(wp) :: t

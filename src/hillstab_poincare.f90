@@ -61,7 +61,7 @@ contains
       real(wp), intent(in) :: y0(4)       !! initial state (x, z, x', z')
       real(wp), intent(in) :: t_end       !! end time [s], > 0
       real(wp), intent(in) :: rtol        !! relative tolerance (> 0)
-      type(section_t), intent(out) :: section
+      type(section_t), intent(out) :: section  !! the crossings (t, r, r'), the energy drift and the work done
       type(error_t), allocatable, intent(out) :: error  !! invalid arguments; integration failure
       type(section_system_t) :: system
       type(rk_options_t) :: options
@@ -91,7 +91,7 @@ contains
       section%energy_drift = abs(pendulum_energy(p, y) - e0)/merge(abs(e0), 1.0_wp, e0 /= 0.0_wp)
    end subroutine poincare_section
 
-   !> Observer: a crossing of x from negative to non-negative with z > 0 inside the step
+   !> The observer. A crossing of x from negative to non-negative with z > 0 inside the step
    !> is refined on the dense output and recorded.
    subroutine record_crossings(self, step, stop)
       class(section_system_t), intent(inout) :: self
@@ -168,7 +168,7 @@ contains
       real(wp), intent(in) :: phi0       !! angle from the downward vertical [rad]
       real(wp), intent(in) :: energy     !! energy per unit mass [J/kg]
       real(wp), intent(out) :: y(4)      !! (x, z, 0, 0)
-      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable, intent(out) :: error  !! no radius r > 0 has this energy at phi0; unallocated on success
       real(wp) :: c, shift, discriminant, r
       c = cos(phi0)
       ! u = r − r0: u² − 2 (g c/ω²) u − 2 (E + g c r0)/ω² = 0

@@ -75,7 +75,7 @@ contains
    !> Run the series task of a validated scene: `<output>_series.dat`, or an error and no file.
    subroutine run_series(scene, error)
       type(scene_t), intent(in) :: scene  !! task = series
-      type(error_t), allocatable, intent(out) :: error  !! bad input, failed integration or i/o; no file then
+      type(error_t), allocatable, intent(out) :: error  !! what failed; unallocated on success
       type(series_summary_t) :: summary
       type(series_writer_t) :: writer
       type(work_stats_t) :: stats
@@ -118,8 +118,8 @@ contains
    !> The first pass: integrate without writing and measure what the header reports.
    subroutine series_summary(scene, summary, error)
       type(scene_t), intent(in) :: scene           !! task = series
-      type(series_summary_t), intent(out) :: summary  !! what the header reports
-      type(error_t), allocatable, intent(out) :: error  !! invalid pendulum or failed integration
+      type(series_summary_t), intent(out) :: summary  !! what the header reports: energy drift, angles, onset, work
+      type(error_t), allocatable, intent(out) :: error  !! integration failure; unallocated on success
       type(pendulum_watch_t) :: watch
       type(trace_t) :: tr
       type(floquet_t) :: f

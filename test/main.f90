@@ -14,15 +14,19 @@ program tester
    use test_tasks, only: collect_tasks
    use test_format, only: collect_format
    use test_auto, only: collect_auto
+   use test_output, only: collect_output
    use test_batch, only: collect_batch
    use test_lyapunov, only: collect_lyapunov
    use test_poincare, only: collect_poincare
+   use test_task_lyapunov, only: collect_task_lyapunov
+   use test_task_poincare, only: collect_task_poincare
    use test_units, only: collect_units
    use test_pendulum, only: collect_pendulum
    use test_pendulum_analysis, only: collect_pendulum_analysis
    use test_task_series, only: collect_task_series
    use test_hill_method, only: collect_hill_method
    use test_task_boundaries, only: collect_task_boundaries
+   use test_boundaries, only: collect_boundaries
    use test_templates, only: collect_templates
    implicit none
    type(testsuite_t), allocatable :: suites(:)
@@ -31,8 +35,9 @@ program tester
              collect_monodromy(), collect_capi(), collect_gsl(), collect_rk(), collect_magnus(), &
              collect_scene(), collect_tasks(), collect_format(), collect_auto(), &
              collect_units(), collect_pendulum(), collect_hill_method(), collect_templates(), &
-             collect_batch(), collect_task_boundaries(), &
-             collect_lyapunov(), collect_poincare(), collect_pendulum_analysis(), collect_task_series()]
+             collect_batch(), collect_boundaries(), collect_task_boundaries(), &
+             collect_lyapunov(), collect_poincare(), collect_task_lyapunov(), collect_task_poincare(), &
+             collect_pendulum_analysis(), collect_task_series(), collect_output()]
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

@@ -1,0 +1,79 @@
+!> Every exact method against the stored high-precision reference at the hard points
+!> (data/reference/hard_set.dat, made by data/reference/make_reference.py), at
+!> tolerances 1e-8, 1e-10 and 1e-12. Prints a Markdown table: per method and tolerance,
+!> the worst error/tolerance over the points with status ok, the number of round-off
+!> limited points and the worst error/estimate among them, failed points, and the time
+!> per point (one thread; shared machine, so only ratios within one run mean much).
+!> Run from the repository root: `fpm run --profile release --example hard_set_errors`;
+!> with any argument it also lists every point with status ok whose error exceeds the tolerance.
+program hard_set_errors
+   use hillstab
+   implicit none
+   integer, parameter :: n_max = 200
+   real(wp), parameter :: tolerances(3) = [1.0e-8_wp, 1.0e-10_wp, 1.0e-12_wp]
+   integer :: methods(5)
+   integer :: model(n_max), n, unit, ios, m, k, i, n_roundoff, n_failed, kind
+   real(wp) :: alpha(n_max), beta(n_max), sgn(n_max), log_abs(n_max), value(n_max), ref_error
+   real(wp) :: err, worst_ok, worst_roundoff, largest_estimate
+   integer(int64) :: t0, t1, rate
+   character(len=400) :: line
+   type(trace_t) :: tr
+   type(error_t), allocatable :: error
+   logical :: verbose
+   verbose = command_argument_count() > 0
+   methods = [method_auto, method_magnus4, method_magnus6, method_rk, method_gsl]
+   open (newunit=unit, file="data/reference/hard_set.dat", status="old", action="read", iostat=ios)
+   if (ios /= 0) error stop "run from the repository root: data/reference/hard_set.dat not found"
+   n = 0
+   do
+      read (unit, '(a)', iostat=ios) line
+      if (ios /= 0) exit
+      if (line(1:1) == "#" .or. len_trim(line) == 0) cycle
+      line = line(1:index(line//"#", "#") - 1)
+      n = n + 1
+      read (line, *) kind, alpha(n), beta(n), sgn(n), log_abs(n), value(n), ref_error
+      model(n) = merge(model_elastic, model_mathieu, kind == 0)
+   end do
+   close (unit)
+   write (*, '(a,i0,a)') "Hard set: ", n, " points"
+   write (*, '(a)') "| method | tolerance | worst error/tolerance, status 0 | round-off limited | "// &
+      "worst error/estimate there | largest estimate | failed | ms/point |"
+   write (*, '(a)') "|---|---|---|---|---|---|---|---|"
+   do m = 1, size(methods)
+      do k = 1, size(tolerances)
+         worst_ok = 0.0_wp
+         worst_roundoff = 0.0_wp
+         largest_estimate = 0.0_wp
+         n_roundoff = 0
+         n_failed = 0
+         call system_clock(t0, rate)
+         do i = 1, n
+            call monodromy_trace(hill_model_t(model(i), alpha(i), beta(i), 0.0_wp), &
+                                 method_t(methods(m), tolerance=tolerances(k)), tr, error)
+            if (log_abs(i) > log(1.0e6_wp)) then
+               err = abs(exp(min(tr%log_abs - log_abs(i), 700.0_wp)) - 1.0_wp)
+               if (sign(1.0_wp, tr%value) /= sgn(i)) err = 2.0_wp
+            else
+               err = abs(tr%value - value(i))/max(1.0_wp, abs(value(i)))
+            end if
+            if (allocated(error)) then
+               if (error%code == err_accuracy) then
+                  n_roundoff = n_roundoff + 1
+                  worst_roundoff = max(worst_roundoff, err/tr%error_estimate)
+                  largest_estimate = max(largest_estimate, tr%error_estimate)
+               else
+                  n_failed = n_failed + 1
+               end if
+            else
+               worst_ok = max(worst_ok, err/tolerances(k))
+               if (err > tolerances(k) .and. verbose) print '(a,1x,a,es8.1,f7.3,es11.3,a,es10.2,a,es10.2)', "MISS", &
+                  method_name(methods(m)), tolerances(k), alpha(i), beta(i), " err", err, " est", tr%error_estimate
+            end if
+         end do
+         call system_clock(t1)
+         write (*, '("| ",a," | ",es7.0," | ",f6.3," | ",i0," | ",f6.3," | ",es8.1," | ",i0," | ",f8.3," |")') &
+            method_name(methods(m)), tolerances(k), worst_ok, n_roundoff, worst_roundoff, largest_estimate, n_failed, &
+            1.0e3_wp*real(t1 - t0, wp)/rate/n
+      end do
+   end do
+end program hard_set_errors
