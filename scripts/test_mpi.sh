@@ -2,7 +2,7 @@
 # Tests of hillstab_mpi (run by `make test-mpi` and CI): builds hillstab and hillstab_mpi
 # with CMake (-DHILLSTAB_MPI=ON), then checks against the single-process program:
 #  - np = 1, 2, 3 write the same file as hillstab (charts with many and few rows, damped,
-#    a points list, a non-distributed task);
+#    a points list, a Lyapunov map, a non-distributed task);
 #  - bad input (unknown variable, unwritable output) gives exit 2 on every rank, no hang,
 #    no file; a failing point is written as hillstab writes it (status 2, placeholders),
 #    with hillstab's message and exit 3 on every rank;
@@ -58,7 +58,9 @@ awk 'BEGIN { for (k = 0; k < 97; k++) printf "%.4f %.4f\n", 9.8 * k / 97, 12 - 1
 printf '%s\n' "&scene task='points', method='magnus6', output='$work/pts' /" \
    "&points file='$work/points.dat' /" >"$work/pts.nml"
 printf '%s\n' "&scene task='coefficient', output='$work/coef' /" "&coefficient /" >"$work/coef.nml"
-for name in many:chart few:chart pts:points coef:coefficient; do
+printf '%s\n' "&scene task='lyapunov', output='$work/lyap' /" "&series phi0=0.017, periods=40 /" \
+   "&chart alpha_min=0.5, alpha_max=9.5, n_alpha=7, beta_min=0.5, beta_max=9.5, n_beta=9 /" >"$work/lyap.nml"
+for name in many:chart few:chart pts:points coef:coefficient lyap:lyapunov; do
    scene=${name%%:*}
    task=${name##*:}
    file="$work/${scene}_${task}.dat"

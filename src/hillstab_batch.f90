@@ -31,14 +31,16 @@
 !>```
 module hillstab_batch
    use hillstab_kinds, only: wp, int64
-   use hillstab_error, only: error_t, err_input, err_io, err_invalid_parameter, err_points_failed
+   use hillstab_error, only: error_t, set_error, err_input, err_io, err_invalid_parameter, err_points_failed
    use hillstab_status, only: status_roundoff, status_failed, exit_points_failed
    use hillstab_coefficient, only: in_physical_domain
-   use hillstab_scene, only: scene_t, task_chart, task_points, grid_value
+   use hillstab_scene, only: scene_t, task_chart, task_points, task_lyapunov, grid_value
+   use hillstab_task_lyapunov, only: lyapunov_lines, lyapunov_header, lyapunov_columns, lyapunov_point_count, &
+      lyapunov_point, lyapunov_failure_error
    use hillstab_coefficient, only: model_elastic
    use hillstab_output, only: output_file_t, write_header, write_text, commit_output, discard_output, &
-      chart_columns, chart_line_length
-   use hillstab_tasks, only: chart_row, compute_points, chart_header, open_scene_output, check_method_runs, &
+      chart_columns_text, chart_line_length
+   use hillstab_tasks, only: scene_columns, chart_row, compute_points, chart_header, open_scene_output, check_method_runs, &
       warn_inaccurate, failed_points_error, progress_t, progress_begin, progress_update, progress_end
    implicit none
    private
@@ -73,7 +75,7 @@ contains
    !> Whether a scene's task can be cut into units (chart and points).
    pure logical function batch_distributable(scene)
       type(scene_t), intent(in) :: scene  !! a validated scene
-      batch_distributable = scene%task == task_chart .or. scene%task == task_points
+      batch_distributable = scene%task == task_chart .or. scene%task == task_points .or. scene%task == task_lyapunov
    end function batch_distributable
 
    !> Cut the work of `scene` into units for `n_workers` computing processes: a chart
@@ -95,6 +97,11 @@ contains
          batch%n_points = n
          batch%unit_size = max(1, min(64, n/(16*max(1, n_workers))))
          batch%n_units = (n + batch%unit_size - 1)/batch%unit_size
+      case (task_lyapunov)
+         ! a point is hundreds of radial periods (~10 ms to 1 s): small units balance well
+         batch%n_points = lyapunov_point_count(scene)
+         batch%unit_size = int(max(1_int64, min(16_int64, batch%n_points/(32*max(1, n_workers)))))
+         batch%n_units = int((batch%n_points + batch%unit_size - 1)/batch%unit_size)
       end select
    end subroutine batch_plan
 
@@ -114,7 +121,10 @@ contains
       integer(int64), intent(in) :: k
       real(wp) :: point(2)
       integer :: i, j
-      if (batch%scene%task == task_chart) then
+      logical :: new_block
+      if (batch%scene%task == task_lyapunov) then
+         call lyapunov_point(batch%scene, k, point(1), point(2), new_block)
+      else if (batch%scene%task == task_chart) then
          i = int((k - 1)/batch%scene%chart%n_beta) + 1
          j = int(k - int(i - 1, int64)*batch%scene%chart%n_beta)
          point = [grid_value(batch%scene%chart%alpha_min, batch%scene%chart%alpha_max, batch%scene%chart%n_alpha, i), &
@@ -132,7 +142,14 @@ contains
       character(len=chart_line_length), allocatable :: lines(:)
       integer(int64) :: first, last
       call batch_unit_range(batch, unit, first, last)
-      allocate (lines(first:last), result%status(first:last))
+      allocate (result%status(first:last))
+      result%unit = unit
+      if (batch%scene%task == task_lyapunov) then
+         ! the task's own lines and blank lines between α blocks
+         call lyapunov_lines(batch%scene, first, last, result%text, result%status)
+         return
+      end if
+      allocate (lines(first:last))
       select case (batch%scene%task)
       case (task_chart)
          call chart_row(batch%scene, unit, lines, result%status)
@@ -183,10 +200,27 @@ contains
       type(error_t), allocatable, intent(out) :: error  !! failure description; unallocated on success
       logical :: outside, damped
       type(scene_t) :: s
+      integer, allocatable :: ids(:)
       s = batch%scene
       damped = s%epsilon > 0.0_wp
+      if (s%binary) then
+         call set_error(error, err_input, s%source//": &scene: format: 'binary' is written by the hillstab "// &
+            "program, not by the unit-by-unit driver: use format = 'text'")
+         return
+      end if
+      call scene_columns(s, ids, error)
+      if (allocated(error)) return
       call open_scene_output(s, batch%file, error)
       if (allocated(error)) return
+      if (s%task == task_lyapunov) then
+         call write_header(batch%file, lyapunov_header(s), lyapunov_columns(), error)
+         if (allocated(error)) then
+            call discard_output(batch%file)
+            return
+         end if
+         call begin()
+         return
+      end if
       if (s%task == task_chart) then
          call check_method_runs(s, error)
          if (allocated(error)) then
@@ -198,16 +232,20 @@ contains
       else
          outside = .not. all(in_physical_domain(s%points(1, :), s%points(2, :)))
       end if
-      call write_header(batch%file, chart_header(s, outside), chart_columns(damped, s%model == model_elastic, &
-         s%physical), error)
+      call write_header(batch%file, chart_header(s, outside), chart_columns_text(ids), error, &
+                        names_line=s%names_line)
       if (allocated(error)) then
          call discard_output(batch%file)
          return
       end if
-      batch%done = 0
-      batch%n_inaccurate = 0
-      batch%n_failed = 0
-      call progress_begin(batch%progress, batch%n_points, quiet)
+      call begin()
+   contains
+      subroutine begin()
+         batch%done = 0
+         batch%n_inaccurate = 0
+         batch%n_failed = 0
+         call progress_begin(batch%progress, batch%n_points, quiet)
+      end subroutine begin
    end subroutine batch_open
 
    !> Append a unit's text to the file and count its round-off limited and failed
@@ -246,6 +284,10 @@ contains
       call progress_end(batch%progress)
       call commit_output(batch%file, error)
       if (allocated(error)) return
+      if (batch%scene%task == task_lyapunov) then
+         call lyapunov_failure_error(batch%scene, batch%n_failed, batch%first_failed, error)
+         return
+      end if
       call warn_inaccurate(batch%scene, batch%n_inaccurate, batch%first_inaccurate)
       call failed_points_error(batch%scene, batch%n_failed, batch%n_points, batch%first_failed, error)
    end subroutine batch_commit

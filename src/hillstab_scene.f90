@@ -20,6 +20,7 @@ module hillstab_scene
    use hillstab_coefficient, only: model_elastic, model_mathieu, model_name, sampling_endpoint, &
       sampling_average, sampling_name
    use hillstab_monodromy, only: method_t, method_auto, method_name, method_from_name
+   use hillstab_output, only: default_chart_columns, find_chart_columns, chart_columns_text
    use hillstab_units, only: physical_t, physical_alpha, physical_beta, physical_epsilon, physical_nu, &
       check_physical, equilibrium_length
    use, intrinsic :: iso_fortran_env, only: iostat_end
@@ -30,6 +31,7 @@ module hillstab_scene
    public :: scene_t, chart_grid_t, coefficient_plan_t, series_plan_t, max_series_lines, read_scene, &
       scene_namelist, default_scene
    public :: task_chart, task_points, task_coefficient, task_boundaries, task_series, task_name
+   public :: task_lyapunov, task_poincare, poincare_plan_t, max_poincare_orbits
    public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas
 
    integer, parameter :: task_chart = 1        !! stability chart over an (α, β) grid
@@ -37,6 +39,8 @@ module hillstab_scene
    integer, parameter :: task_coefficient = 3  !! Q(τ) and its segmented version (the paper's Fig. 2)
    integer, parameter :: task_boundaries = 4   !! transition curves over the α grid of `&chart`
    integer, parameter :: task_series = 5       !! time series of the nonlinear pendulum
+   integer, parameter :: task_lyapunov = 6     !! largest Lyapunov exponent over `&chart` or `&points`
+   integer, parameter :: task_poincare = 7     !! Poincaré sections of orbits from a list of φ0
 
    !> Largest number of α values in `&coefficient alphas`.
    integer, parameter :: max_coefficient_alphas = 64
@@ -78,6 +82,21 @@ module hillstab_scene
       real(wp) :: vz0 = 0.0_wp               !! initial downward velocity [m/s]
    end type series_plan_t
 
+   !> The default grid of the lyapunov task: the physical domain 0 ≤ α < π², 0 < β < π²
+   !> (the pendulum exists only there), 100 × 100.
+   type(chart_grid_t), parameter :: lyapunov_default_grid = chart_grid_t(0.0_wp, 9.8_wp, 100, 0.1_wp, 9.8_wp, 100)
+
+   !> Largest number of orbits (φ0 values) of a Poincaré section.
+   integer, parameter :: max_poincare_orbits = 64
+
+   !> The orbits of the poincare task (`&poincare`), each started at rest at one φ0.
+   type :: poincare_plan_t
+      real(wp), allocatable :: phi0s(:)   !! initial angles [rad], |φ0| < π
+      !> .true.: every orbit has the energy of the `&series` start (the radius at rest is
+      !> chosen for it); .false.: each starts at r = ρ − a as eq. (38)
+      logical :: same_energy = .true.
+   end type poincare_plan_t
+
    !> A series scene writing more data lines than this is refused.
    integer(int64), parameter :: max_series_lines = 100000000_int64
 
@@ -88,12 +107,20 @@ module hillstab_scene
       integer :: model = model_elastic              !! model_elastic or model_mathieu
       type(method_t) :: method                      !! method, n_segments, sampling, tolerance
       real(wp) :: epsilon = 0.0_wp                  !! damping ε of eq. (46)
-      character(len=:), allocatable :: output       !! prefix: files are <output>_<task>.dat
+      character(len=:), allocatable :: output       !! prefix: files are <output>_<task>.dat (.bin)
+      !> chart and points: the columns to write, blank-separated ("" = all the task offers)
+      character(len=:), allocatable :: columns
+      logical :: binary = .false.      !! chart and points: float64 records after a text header
+      logical :: names_line = .false.  !! text: a line of column names after the `#` header
       type(chart_grid_t) :: chart                   !! task_chart
       character(len=:), allocatable :: points_file  !! task_points: the file of α β lines
       real(wp), allocatable :: points(:, :)         !! task_points: (2, n) α, β in file order
       type(coefficient_plan_t) :: coefficient       !! task_coefficient
-      type(series_plan_t) :: series                 !! task_series
+      type(series_plan_t) :: series                 !! task_series (and lyapunov, poincare: the pendulum)
+      !> task_lyapunov: .true. over the points of `&points` (`&lyapunov over = 'points'`),
+      !> .false. over the grid of `&chart`
+      logical :: lyapunov_points = .false.
+      type(poincare_plan_t) :: poincare             !! task_poincare
       !> The scene has a `&physical` group: ε comes from κ and ω, and the outputs add
       !> rates per second (ω is known)
       logical :: physical = .false.
@@ -127,6 +154,8 @@ contains
       case (task_coefficient); name = "coefficient"
       case (task_boundaries); name = "boundaries"
       case (task_series); name = "series"
+      case (task_lyapunov); name = "lyapunov"
+      case (task_poincare); name = "poincare"
       case default; name = "unknown"
       end select
    end function task_name
@@ -146,11 +175,17 @@ contains
 
    !> A scene with every default filled in; `output` defaults to the scene file's
    !> base name without extension (files land in the current directory).
-   function default_scene(path) result(scene)
+   function default_scene(path, task) result(scene)
       character(len=*), intent(in) :: path  !! scene file path
+      !> the task, when its defaults differ (lyapunov: the grid covers the physical domain)
+      integer, intent(in), optional :: task
       type(scene_t) :: scene
       integer :: slash, dot
       scene%source = path
+      if (present(task)) then
+         scene%task = task
+         if (task == task_lyapunov) scene%chart = lyapunov_default_grid
+      end if
       scene%method = method_t(kind=method_auto, n_segments=2, sampling=sampling_endpoint, tolerance=1.0e-10_wp)
       slash = index(path, "/", back=.true.)
       dot = index(path(slash + 1:), ".", back=.true.)
@@ -161,7 +196,9 @@ contains
       end if
       if (len(scene%output) == 0) scene%output = "hillstab"
       scene%points_file = ""
+      scene%columns = ""
       scene%coefficient%alphas = [4.0_wp, 6.0_wp, 7.5_wp, 8.0_wp, 9.0_wp, 9.7_wp]
+      scene%poincare%phi0s = [0.05_wp, 0.2_wp, 0.4_wp, 0.6_wp, 0.8_wp]
       allocate (scene%amplitudes(0))
    end function default_scene
 
@@ -192,25 +229,62 @@ contains
             call read_coefficient_group(unit, scene, error)
          case (task_series)
             call read_series_group(unit, scene, error)
+         case (task_lyapunov)
+            scene%chart = lyapunov_default_grid
+            call read_series_group(unit, scene, error)
+            if (.not. allocated(error)) call read_lyapunov_group(unit, scene, error)
+            if (.not. allocated(error)) then
+               if (scene%lyapunov_points) then
+                  call read_points_group(unit, scene, error)
+               else
+                  call read_chart_group(unit, scene, error)
+               end if
+            end if
+            if (.not. allocated(error)) call check_lyapunov_domain(scene, error)
+         case (task_poincare)
+            call read_series_group(unit, scene, error)
+            if (.not. allocated(error)) call read_poincare_group(unit, scene, error)
          end select
       end if
+      if (.not. allocated(error)) call check_columns(scene, error)
       close (unit)
    end subroutine read_scene
+
+   !> `&scene columns`: each name one of the columns this scene's file offers (which depend
+   !> on the model, the damping and `&physical`), none twice, at least one.
+   subroutine check_columns(scene, error)
+      type(scene_t), intent(in) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: available(:), ids(:)
+      character(len=:), allocatable :: bad
+      if (len_trim(scene%columns) == 0 .or. (scene%task /= task_chart .and. scene%task /= task_points)) return
+      available = default_chart_columns(scene%epsilon > 0.0_wp, scene%model == model_elastic, scene%physical)
+      call find_chart_columns(scene%columns, available, ids, bad)
+      if (len(bad) > 0) then
+         call fail(error, scene%source, "scene", "columns", "'"//bad//"' is not a column of this file or is "// &
+            "named twice (available: "//chart_columns_text(available)//")")
+      else if (size(ids) == 0) then
+         call fail(error, scene%source, "scene", "columns", "no column named")
+      end if
+   end subroutine check_columns
 
    !> `&scene`: task, model, method and its settings, damping, output prefix.
    subroutine read_scene_group(unit, this, error)
       integer, intent(in) :: unit
       type(scene_t), intent(inout) :: this
       type(error_t), allocatable, intent(out) :: error
-      character(len=text_len) :: task, model, method, sampling, output
+      character(len=text_len) :: task, model, method, sampling, output, columns, format
       integer :: n_segments
       real(wp) :: tolerance, epsilon
-      namelist /scene/ task, model, method, n_segments, sampling, tolerance, epsilon, output
+      logical :: names_line
+      namelist /scene/ task, model, method, n_segments, sampling, tolerance, epsilon, output, columns, format, &
+         names_line
       character(len=*), parameter :: group = "scene"
-      character(len=*), parameter :: names(8) = [character(len=10) :: "task", "model", "method", &
-         "n_segments", "sampling", "tolerance", "epsilon", "output"]
-      character(len=*), parameter :: kinds(8) = [character(len=16) :: "a quoted name", "a quoted name", &
-         "a quoted name", "an integer", "a quoted name", "a real number", "a real number", "a quoted path"]
+      character(len=*), parameter :: names(11) = [character(len=10) :: "task", "model", "method", &
+         "n_segments", "sampling", "tolerance", "epsilon", "output", "columns", "format", "names_line"]
+      character(len=*), parameter :: kinds(11) = [character(len=17) :: "a quoted name", "a quoted name", &
+         "a quoted name", "an integer", "a quoted name", "a real number", "a real number", "a quoted path", &
+         "quoted names", "a quoted name", ".true. or .false."]
       integer :: ios, k
       character(len=512) :: msg
       character(len=:), allocatable :: bad
@@ -218,17 +292,18 @@ contains
       task = task_name(this%task); model = model_name(this%model); method = method_name(this%method%kind)
       n_segments = this%method%n_segments; sampling = sampling_name(this%method%sampling)
       tolerance = this%method%tolerance; epsilon = this%epsilon; output = this%output
+      columns = this%columns; format = merge("binary", "text  ", this%binary); names_line = this%names_line
       call without_fpe_halting(read_it)
       call check_read(unit, this%source, group, names, kinds, ios, msg, bad, error)
       if (allocated(error)) return
 
       this%task = -1
-      do k = task_chart, task_series
+      do k = task_chart, task_poincare
          if (lower(trim(task)) == task_name(k)) this%task = k
       end do
       if (this%task < 0) then
          call fail(error, this%source, group, "task", "unknown task '"//trim(task)// &
-            "' (expected chart, points, coefficient, boundaries or series)")
+            "' (expected chart, points, coefficient, boundaries, series, lyapunov or poincare)")
       end if
       if (allocated(error)) return
 
@@ -286,6 +361,25 @@ contains
          return
       end if
       this%output = trim(output)
+
+      select case (lower(trim(format)))
+      case ("text"); this%binary = .false.
+      case ("binary"); this%binary = .true.
+      case default
+         call fail(error, this%source, group, "format", "unknown format '"//trim(format)//"' (expected text or binary)")
+         return
+      end select
+      this%columns = trim(adjustl(columns))
+      this%names_line = names_line
+      if (this%task /= task_chart .and. this%task /= task_points .and. (this%binary .or. len(this%columns) > 0)) then
+         call fail(error, this%source, group, merge("format ", "columns", this%binary), &
+            "columns and format = 'binary' apply to tasks chart and points")
+         return
+      end if
+      if (this%binary .and. this%names_line) then
+         call fail(error, this%source, group, "names_line", "a line of column names is for format = 'text' only")
+         return
+      end if
    contains
       subroutine read_it()
          rewind (unit)
@@ -874,6 +968,9 @@ contains
       do
          call read_text_line(unit, line, ios)
          if (ios /= 0) exit
+         ! in an output file the scene ends where the columns are named: the data that
+         ! follow (raw bytes in a binary file) are no scene text
+         if (index(line, "# columns:") == 1) exit
          text = text//strip_comment(line)//" "
       end do
       start = 0
@@ -1211,7 +1308,13 @@ contains
          ", tolerance = "//real_text(scene%method%tolerance)
       ! with &physical the damping is kappa; epsilon in &scene would be an error
       if (.not. scene%physical) first = first//", epsilon = "//real_text(scene%epsilon)
-      first = first//", output = "//quoted(scene%output)//" /"
+      first = first//", output = "//quoted(scene%output)
+      if (scene%task == task_chart .or. scene%task == task_points) then
+         first = first//", columns = "//quoted(scene%columns)//", format = "// &
+            quoted(trim(merge("binary", "text  ", scene%binary)))
+         if (scene%names_line) first = first//", names_line = .true."
+      end if
+      first = first//" /"
       select case (scene%task)
       case (task_chart, task_boundaries)
          second = "&chart alpha_min = "//real_text(scene%chart%alpha_min)// &
@@ -1225,12 +1328,10 @@ contains
             second = "&points file = "//quoted(scene%points_file)//" /"
          end if
       case (task_series)
-         associate (plan => scene%series)
-            second = "&series alpha = "//real_text(plan%alpha)//", beta = "//real_text(plan%beta)// &
-               ", phi0 = "//real_text(plan%phi0)//", periods = "//integer_text(plan%periods)// &
-               ", samples_per_period = "//integer_text(plan%samples_per_period)//", r0 = "//real_text(plan%r0)// &
-               ", g = "//real_text(plan%g)//", vx0 = "//real_text(plan%vx0)//", vz0 = "//real_text(plan%vz0)//" /"
-         end associate
+         second = series_text(scene%series)
+      case (task_lyapunov, task_poincare)
+         lines = chaos_namelist(scene, first)
+         return
       case (task_coefficient)
          second = "&coefficient "
          if (size(scene%amplitudes) == 0) then
@@ -1264,6 +1365,182 @@ contains
       lines(1) = first
       lines(2) = second
    end function scene_namelist
+
+   !> The `&series` line of the effective scene.
+   function series_text(plan) result(text)
+      type(series_plan_t), intent(in) :: plan
+      character(len=:), allocatable :: text
+      text = "&series alpha = "//real_text(plan%alpha)//", beta = "//real_text(plan%beta)// &
+         ", phi0 = "//real_text(plan%phi0)//", periods = "//integer_text(plan%periods)// &
+         ", samples_per_period = "//integer_text(plan%samples_per_period)//", r0 = "//real_text(plan%r0)// &
+         ", g = "//real_text(plan%g)//", vx0 = "//real_text(plan%vx0)//", vz0 = "//real_text(plan%vz0)//" /"
+   end function series_text
+
+   !> The namelist lines of a lyapunov scene (&scene, &series, &lyapunov, &chart or
+   !> &points) or a poincare scene (&scene, &series, &poincare).
+   function chaos_namelist(scene, first) result(lines)
+      type(scene_t), intent(in) :: scene
+      character(len=*), intent(in) :: first  !! the &scene line
+      character(len=:), allocatable :: lines(:)
+      character(len=:), allocatable :: series, third, fourth
+      integer :: k
+      series = series_text(scene%series)
+      if (scene%task == task_lyapunov) then
+         if (scene%lyapunov_points) then
+            third = "&lyapunov over = 'points' /"
+            fourth = "&points file = "//quoted(scene%points_file)//" /"
+         else
+            third = "&lyapunov over = 'chart' /"
+            fourth = "&chart alpha_min = "//real_text(scene%chart%alpha_min)// &
+               ", alpha_max = "//real_text(scene%chart%alpha_max)//", n_alpha = "//integer_text(scene%chart%n_alpha)// &
+               ", beta_min = "//real_text(scene%chart%beta_min)//", beta_max = "//real_text(scene%chart%beta_max)// &
+               ", n_beta = "//integer_text(scene%chart%n_beta)//" /"
+         end if
+      else
+         third = "&poincare phi0s = "//real_text(scene%poincare%phi0s(1))
+         do k = 2, size(scene%poincare%phi0s)
+            third = third//", "//real_text(scene%poincare%phi0s(k))
+         end do
+         third = third//", same_energy = "//merge(".true. ", ".false.", scene%poincare%same_energy)
+         third = trim(third)//" /"
+         fourth = ""
+      end if
+      if (len(fourth) > 0) then
+         allocate (character(len=max(len(first), len(series), len(third), len(fourth))) :: lines(4))
+         lines(4) = fourth
+      else
+         allocate (character(len=max(len(first), len(series), len(third))) :: lines(3))
+      end if
+      lines(1) = first
+      lines(2) = series
+      lines(3) = third
+   end function chaos_namelist
+
+   !> `&lyapunov`: over the grid of `&chart` (default) or the points of `&points`.
+   subroutine read_lyapunov_group(unit, scene, error)
+      integer, intent(in) :: unit
+      type(scene_t), intent(inout) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      character(len=text_len) :: over
+      namelist /lyapunov/ over
+      character(len=*), parameter :: group = "lyapunov"
+      character(len=*), parameter :: names(1) = [character(len=4) :: "over"]
+      character(len=*), parameter :: kinds(1) = [character(len=13) :: "a quoted name"]
+      integer :: ios
+      character(len=512) :: msg
+      character(len=:), allocatable :: bad
+      over = merge("points", "chart ", scene%lyapunov_points)
+      if (.not. group_present(unit, group)) return
+      call without_fpe_halting(read_it)
+      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
+      if (allocated(error)) return
+      select case (lower(trim(over)))
+      case ("chart"); scene%lyapunov_points = .false.
+      case ("points"); scene%lyapunov_points = .true.
+      case default
+         call fail(error, scene%source, group, "over", "unknown value '"//trim(over)//"' (expected chart or points)")
+      end select
+   contains
+      subroutine read_it()
+         rewind (unit)
+         read (unit, nml=lyapunov, iostat=ios, iomsg=msg)
+         if (ios > 0) then
+            call find_bad_item(unit, group, try_item, bad)
+            if (.not. allocated(bad)) bad = ""
+         end if
+      end subroutine read_it
+      subroutine try_item(text, stat)
+         character(len=*), intent(in) :: text
+         integer, intent(out) :: stat
+         character(len=512) :: ignored
+         read (text, nml=lyapunov, iostat=stat, iomsg=ignored)
+      end subroutine try_item
+   end subroutine read_lyapunov_group
+
+   !> The lyapunov task integrates the pendulum: every point must lie in the physical
+   !> domain 0 <= alpha < pi^2, 0 < beta < pi^2.
+   subroutine check_lyapunov_domain(scene, error)
+      type(scene_t), intent(in) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: why = " (the lyapunov task simulates the pendulum: 0 < beta < pi**2 = "
+      integer :: k
+      if (scene%lyapunov_points) then
+         do k = 1, size(scene%points, 2)
+            if (scene%points(2, k) <= 0.0_wp .or. scene%points(2, k) >= pi2) then
+               call fail(error, scene%source, "points", "file", "point "//integer_text(k)//" of "// &
+                  scene%points_file//" has beta = "//real_text(scene%points(2, k))//" outside the physical domain"// &
+                  why//real_text(pi2)//")")
+               return
+            end if
+         end do
+      else if (scene%chart%beta_min <= 0.0_wp) then
+         call fail(error, scene%source, "chart", "beta_min", "must be > 0"//why//real_text(pi2)//"), got "// &
+            real_text(scene%chart%beta_min))
+      else if (scene%chart%beta_max >= pi2) then
+         call fail(error, scene%source, "chart", "beta_max", "must be < pi**2"//why//real_text(pi2)//"), got "// &
+            real_text(scene%chart%beta_max))
+      end if
+   end subroutine check_lyapunov_domain
+
+   !> `&poincare`: the initial angles of the orbits and whether they share one energy.
+   subroutine read_poincare_group(unit, scene, error)
+      integer, intent(in) :: unit
+      type(scene_t), intent(inout) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: phi0s(max_poincare_orbits)
+      logical :: same_energy
+      namelist /poincare/ phi0s, same_energy
+      character(len=*), parameter :: group = "poincare"
+      character(len=*), parameter :: names(2) = [character(len=11) :: "phi0s", "same_energy"]
+      character(len=*), parameter :: kinds(2) = [character(len=22) :: "a list of real numbers", "a logical"]
+      real(wp), parameter :: unset = -huge(1.0_wp)
+      integer :: ios, n, k
+      character(len=512) :: msg
+      character(len=:), allocatable :: bad
+      phi0s = unset
+      same_energy = scene%poincare%same_energy
+      ios = 0
+      ! the group is optional; a list it gives replaces the default list whole
+      if (.not. group_sets(unit, group, "phi0s")) phi0s(:size(scene%poincare%phi0s)) = scene%poincare%phi0s
+      if (group_present(unit, group)) call without_fpe_halting(read_it)
+      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
+      if (allocated(error)) return
+      n = count(phi0s /= unset)
+      if (n == 0) then
+         call fail(error, scene%source, group, "phi0s", "no initial angle given")
+         return
+      end if
+      if (any(phi0s(n + 1:) /= unset)) then
+         call fail(error, scene%source, group, "phi0s", "the list has gaps")
+         return
+      end if
+      do k = 1, n
+         call require_finite(scene%source, group, "phi0s", phi0s(k), error)
+         if (allocated(error)) return
+         if (abs(phi0s(k)) >= 3.141592653589793_wp) then
+            call fail(error, scene%source, group, "phi0s", "each angle must lie in (-pi, pi), got "// &
+               real_text(phi0s(k)))
+            return
+         end if
+      end do
+      scene%poincare%phi0s = phi0s(:n)
+      scene%poincare%same_energy = same_energy
+   contains
+      subroutine read_it()
+         rewind (unit)
+         read (unit, nml=poincare, iostat=ios, iomsg=msg)
+         if (ios > 0) then
+            call find_bad_item(unit, group, try_item, bad)
+            if (.not. allocated(bad)) bad = ""
+         end if
+      end subroutine read_it
+      subroutine try_item(text, stat)
+         character(len=*), intent(in) :: text
+         integer, intent(out) :: stat
+         character(len=512) :: ignored
+         read (text, nml=poincare, iostat=stat, iomsg=ignored)
+      end subroutine try_item
+   end subroutine read_poincare_group
 
    !> Read one whole line of any length from a formatted unit.
    subroutine read_text_line(unit, line, ios)

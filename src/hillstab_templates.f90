@@ -19,7 +19,7 @@ module hillstab_templates
    use hillstab_monodromy, only: method_name
    use hillstab_units, only: physical_t
    use hillstab_scene, only: scene_t, default_scene, real_text, integer_text, task_chart, task_points, &
-      task_coefficient, task_boundaries, task_series
+      task_coefficient, task_boundaries, task_series, task_lyapunov, task_poincare
    implicit none
    private
    public :: template_task_names, scene_template
@@ -36,7 +36,7 @@ contains
    !> The tasks that have a template, in the order `--help` lists them.
    function template_task_names() result(names)
       character(len=:), allocatable :: names(:)  !! task names, blank-padded to a common length
-      names = [character(len=11) :: "chart", "points", "coefficient", "boundaries", "series"]
+      names = [character(len=11) :: "chart", "points", "coefficient", "boundaries", "series", "lyapunov", "poincare"]
    end function template_task_names
 
    !> The complete commented scene of `task` (lines separated by new_line('a'), no final
@@ -71,6 +71,19 @@ contains
          text = header(task, "the nonlinear elastic pendulum from eq. (38), sampled from the dense output at "// &
                 "t = j T/samples_per_period (tolerance: the integrator's relative tolerance; method: the core "// &
                 "computing lambda_max)")//scene_group(scene, task)//nl//series_group(scene)
+      case ("lyapunov")
+         scene = default_scene(task//".nml", task_lyapunov)
+         text = header(task, "the largest Lyapunov exponent of the nonlinear pendulum (per radial period) over "// &
+                "the grid of &chart or the points of &points, beside the chart's linear verdict (tolerance: the "// &
+                "integrator's relative tolerance; method: the core computing lambda_max)") &
+                //scene_group(scene, task)//nl//series_group(scene)//nl//lyapunov_group()//nl//chart_group(scene)// &
+                nl//"! with over = 'points': the points of a file instead of the grid"//nl//"! &points"//nl// &
+                commented_item("file = 'points.dat'", "one 'alpha beta' pair per line, 0 < beta < pi^2")//"! /"
+      case ("poincare")
+         scene%task = task_poincare
+         text = header(task, "Poincare sections (phi = 0, phi' > 0: r, r') of orbits started at rest at each "// &
+                "angle of &poincare phi0s, at the (alpha, beta, r0, g) of &series, over &series periods") &
+                //scene_group(scene, task)//nl//series_group(scene)//nl//poincare_group(scene)
       case default
          call set_error(error, err_input, "no template for task '"//task//"' (tasks: "// &
             joined(template_task_names(), ", ")//")")
@@ -164,8 +177,16 @@ contains
          item("epsilon = "//real_text(scene%epsilon), "damping eps = kappa pi/omega of eqs. (46)-(47); >= 0")// &
          item("! output = 'run1'", &
               "prefix: files are <output>_<task>.dat, relative to the current directory; "// &
-              "default: the scene file's name without directory and extension")// &
-         "/"//nl
+              "default: the scene file's name without directory and extension")
+      if (task == "chart" .or. task == "points") then
+         text = text// &
+            item("columns = ''", "columns to write, e.g. 'alpha beta stable mu'; '' = all (see the # columns: line)")// &
+            item("format = 'text'", "text | binary (float64 records after the # header, <output>_<task>.bin; "// &
+                 "the header gives the gnuplot and numpy commands)")// &
+            item("names_line = .false.", "text: .true. adds an uncommented line of column names after the "// &
+                 "# header, for gnuplot using 'alpha':'mu'")
+      end if
+      text = text//"/"//nl
    end function scene_group
 
    !> `&chart`.
@@ -201,6 +222,32 @@ contains
             "/"
       end associate
    end function series_group
+
+   !> `&lyapunov`.
+   function lyapunov_group() result(text)
+      character(len=:), allocatable :: text
+      text = "&lyapunov"//nl// &
+         item("over = 'chart'", "chart: the grid of &chart (0 < beta < pi^2) | points: the points of &points")// &
+         "/"
+   end function lyapunov_group
+
+   !> `&poincare`.
+   function poincare_group(scene) result(text)
+      type(scene_t), intent(in) :: scene
+      character(len=:), allocatable :: text
+      integer :: k
+      character(len=:), allocatable :: values
+      values = real_text(scene%poincare%phi0s(1))
+      do k = 2, size(scene%poincare%phi0s)
+         values = values//", "//real_text(scene%poincare%phi0s(k))
+      end do
+      text = "&poincare"//nl// &
+         item("phi0s = "//values, "initial angles of the orbits, rad, |phi0| < pi, up to 64 (one block each)")// &
+         item("same_energy = "//merge(".true. ", ".false.", scene%poincare%same_energy), &
+              ".true.: every orbit starts at rest with the energy of the &series start (one section plane) | "// &
+              ".false.: each at r = rho - a, eq. (38)")// &
+         "/"
+   end function poincare_group
 
    !> `&points` (the file name is an example: the file must exist).
    function points_group() result(text)

@@ -17,6 +17,8 @@ program tester
    use test_batch, only: collect_batch
    use test_lyapunov, only: collect_lyapunov
    use test_poincare, only: collect_poincare
+   use test_task_lyapunov, only: collect_task_lyapunov
+   use test_task_poincare, only: collect_task_poincare
    use test_units, only: collect_units
    use test_pendulum, only: collect_pendulum
    use test_pendulum_analysis, only: collect_pendulum_analysis
@@ -33,7 +35,8 @@ program tester
              collect_scene(), collect_tasks(), collect_format(), collect_auto(), &
              collect_units(), collect_pendulum(), collect_hill_method(), collect_templates(), &
              collect_batch(), collect_boundaries(), collect_task_boundaries(), &
-             collect_lyapunov(), collect_poincare(), collect_pendulum_analysis(), collect_task_series()]
+             collect_lyapunov(), collect_poincare(), collect_task_lyapunov(), collect_task_poincare(), &
+             collect_pendulum_analysis(), collect_task_series()]
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

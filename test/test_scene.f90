@@ -336,7 +336,18 @@ contains
          bad_case_t(s//"task='coefficient' / &coefficient beta=2 / &physical omega=3, r0=1, a=0.5 /", &
                     "coefficient", "beta"), &
          bad_case_t(s//"&chart n_alpha=3 /", "scene", "not closed: no '/' before '&chart'"), &
-         bad_case_t(s//"/ &chart n_alpha=3 ", "chart", "not closed: no '/' before the end")]
+         bad_case_t(s//"/ &chart n_alpha=3 ", "chart", "not closed: no '/' before the end"), &
+         bad_case_t(s//"columns='alpha foo' / &chart /", "scene", "columns: 'foo'"), &
+         bad_case_t(s//"columns='alpha alpha' / &chart /", "scene", "columns: 'alpha'"), &
+         bad_case_t(s//"columns='stable_paper' / &chart /", "scene", "columns: 'stable_paper'"), &
+         bad_case_t(s//"columns='mu_per_s' / &chart /", "scene", "columns: 'mu_per_s'"), &
+         bad_case_t(s//"model='mathieu', columns='physical' / &chart /", "scene", "columns: 'physical'"), &
+         bad_case_t(s//"columns=', ' / &chart /", "scene", "columns"), &
+         bad_case_t(s//"format='hdf5' / &chart /", "scene", "format"), &
+         bad_case_t(s//"format='binary', names_line=.true. / &chart /", "scene", "names_line"), &
+         bad_case_t(s//"names_line=3 / &chart /", "scene", "names_line"), &
+         bad_case_t(s//"task='coefficient', format='binary' / &coefficient /", "scene", "format"), &
+         bad_case_t(s//"task='coefficient', columns='tau' / &coefficient /", "scene", "columns")]
    end function bad_cases
 
    !> Write the points files the bad cases refer to (`<dir>_badline.dat`, ...).

@@ -70,8 +70,7 @@ contains
             cycle
          end if
          call check(ctx, task_name(scene%task) == trim(names(k)), trim(names(k))//": the template's task")
-         defaults = default_scene(path)
-         defaults%task = scene%task
+         defaults = default_scene(path, scene%task)
          defaults%points_file = scene%points_file
          got = scene_namelist(scene)
          expected = scene_namelist(defaults)
