@@ -219,10 +219,10 @@ contains
       targets = [2.0_wp, -2.0_wp]
       allocate (f(0:n - 1, 2))
       do i = 0, n - 1
-         do t = 1, 2
-            call shifted_trace(kind, alpha, sample(i), method, targets(t), f(i, t), error)
-            if (allocated(error)) return
-         end do
+         call shifted_trace(kind, alpha, sample(i), method, 0.0_wp, f(i, 1), error)
+         if (allocated(error)) return
+         f(i, 2) = f(i, 1) - targets(2)
+         f(i, 1) = f(i, 1) - targets(1)
       end do
       count_kind = 0
       do i = 0, n - 2

@@ -13,7 +13,7 @@
 !> towards α → π²); the file is written once all are done, curve by curve.
 module hillstab_task_boundaries
    use hillstab_kinds, only: wp, version_string
-   use hillstab_error, only: error_t, set_error, err_io, err_points_failed
+   use hillstab_error, only: error_t, set_error, err_io, err_input, err_points_failed
    use hillstab_status, only: status_ok, status_roundoff, status_failed
    use hillstab_coefficient, only: model_elastic, in_physical_domain, sampling_name
    use hillstab_monodromy, only: method_name, method_formula, method_segments
@@ -151,6 +151,11 @@ contains
       character(len=:), allocatable :: line, first_message
       type(error_t), allocatable :: cause
       real(wp) :: first_failure(2)
+      if (scene%epsilon > 0.0_wp) then   ! damping from &physical kappa
+         call set_error(error, err_input, scene%source//": &physical: kappa: task 'boundaries' draws the "// &
+            "undamped curves: kappa must be 0")
+         return
+      end if
       call open_output(file, scene%output//"_"//task_name(scene%task)//".dat", cause)
       if (allocated(cause)) then
          call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
