@@ -90,7 +90,7 @@ contains
 
    !> Stop watching the file of `slot` (0 is ignored).
    subroutine forget_temp_file(slot)
-      integer, intent(in) :: slot  !! from watch_temp_file
+      integer, intent(in) :: slot  !! the slot returned by watch_temp_file
       if (slot < 1 .or. slot > n_slots) return
       watched(1, slot) = c_null_char
    end subroutine forget_temp_file
