@@ -3,6 +3,7 @@
 #   make test           run the test suite
 # both install what is missing first (scripts/setup.sh). Further targets:
 #   make test-debug     tests again with runtime checks and floating-point traps
+#   make bench-output   size and run time of a 1000 x 1000 chart per output layout (out/bench_output.dat)
 #   make bench          speed-against-error benchmark (out/bench_*.dat, out/bench*.png) and the
 #                       transition-curve benchmark (out/bench_boundaries.dat)
 #   make area           where the approximate charts are wrong: misclassified area (out/area*.dat, out/area.png)
@@ -35,7 +36,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug setup bench area lib install check-install doc doc-check clean mpi test-mpi
+.PHONY: run test test-debug setup bench bench-output area lib install check-install doc doc-check clean mpi test-mpi
 
 setup:
 	@bash scripts/setup.sh
@@ -48,6 +49,9 @@ test: setup
 
 test-debug: setup
 	$(FPM) test --profile debug --flag "$(DEBUG_FLAGS)"
+
+bench-output: setup
+	bash scripts/bench_output.sh
 
 bench: setup
 	mkdir -p out
