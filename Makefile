@@ -1,6 +1,6 @@
 # hillstab
 #   make run            run the default scene (data files + PNG figures in out/)
-#   make test           run the test suite
+#   make test           check that the public API is documented, then run the test suite
 # both install what is missing first (scripts/setup.sh). Further targets:
 #   make test-debug     tests again with runtime checks and floating-point traps
 #   make bench-output   size and run time of a 1000 x 1000 chart per output layout (out/bench_output.dat)
@@ -45,6 +45,7 @@ run: setup
 	@bash scripts/run_default.sh
 
 test: setup
+	@python3 scripts/doc_check.py
 	$(FPM) test
 
 test-debug: setup

@@ -1,8 +1,14 @@
 !> Gnuplot-ready output files: a `#` header, one `# columns:` line, numeric columns.
 !>
 !> Files appear complete or not at all: rows go to `<path>.part<pid>`, which is
-!> renamed onto `<path>` only by `commit_output`; `discard_output` deletes it.
+!> renamed onto `<path>` only by `commit_output`, and only when every write, the
+!> flush to the disk and the close succeeded; otherwise the temporary file is deleted,
+!> `<path>` keeps what it had and the error names the path and the cause (a full file
+!> system, a file-size limit). `discard_output` deletes the temporary file.
 !> An existing file at `<path>` is never opened, so a failed run leaves it untouched.
+!> Writes go through C stdio so that every failure is seen with its errno (gfortran's
+!> buffered formatted writes can lose ENOSPC). While written, the temporary file is
+!> registered with hillstab_signals for removal on an interrupt.
 !> This module formats numbers and moves files; it knows nothing of integrators.
 !>
 !>```fortran
@@ -14,18 +20,20 @@
 !> call commit_output(file, error)
 !>```
 module hillstab_output
-   use hillstab_kinds, only: wp
+   use hillstab_kinds, only: wp, int64
    use hillstab_error, only: error_t, set_error, err_io
    use hillstab_floquet, only: floquet_t, largest_multiplier_modulus
    use hillstab_format, only: put_es
-   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+   use hillstab_signals, only: watch_temp_file, forget_temp_file
+   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, c_associated, &
+      c_size_t, c_f_pointer, c_loc
    implicit none
    private
    public :: output_file_t, open_output, commit_output, discard_output, write_header, write_text
    public :: n_chart_columns, chart_column_names, chart_values, failed_chart_values, chart_text
    public :: chart_columns_text, default_chart_columns, find_chart_columns, write_records
    public :: chart_line_length, clamp_magnitude, log10_floor, real_columns, failed_log10_abs_s
-   public :: remove_file
+   public :: remove_file, is_directory
 
    !> Magnitudes beyond this are written as ±clamp_magnitude with the overflow flag set.
    real(wp), parameter :: clamp_magnitude = 1.0e300_wp
@@ -40,9 +48,12 @@ module hillstab_output
 
    !> An output file being written under a temporary name.
    type :: output_file_t
-      integer :: unit = -1                           !! Fortran unit of the temporary file
+      type(c_ptr) :: stream = c_null_ptr             !! C stream of the temporary file
       character(len=:), allocatable :: path          !! final name
       character(len=:), allocatable :: temp_path     !! name while being written
+      character(len=:), allocatable :: failure       !! first write failure (the file is then incomplete)
+      integer(int64) :: bytes = 0                    !! bytes written so far
+      integer :: slot = 0                            !! hillstab_signals handle
       logical :: binary = .false.                    !! stream file: text header, then raw records
    end type output_file_t
 
@@ -61,64 +72,130 @@ module hillstab_output
          import :: c_int
          integer(c_int) :: pid
       end function c_getpid
+      function c_fopen(path, mode) bind(C, name="fopen") result(stream)
+         import :: c_char, c_ptr
+         character(kind=c_char), intent(in) :: path(*), mode(*)
+         type(c_ptr) :: stream
+      end function c_fopen
+      function c_fwrite(buffer, size, count, stream) bind(C, name="fwrite") result(written)
+         import :: c_char, c_size_t, c_ptr
+         character(kind=c_char), intent(in) :: buffer(*)
+         integer(c_size_t), value :: size, count
+         type(c_ptr), value :: stream
+         integer(c_size_t) :: written
+      end function c_fwrite
+      function c_fwrite_raw(buffer, size, count, stream) bind(C, name="fwrite") result(written)
+         import :: c_ptr, c_size_t
+         type(c_ptr), value :: buffer
+         integer(c_size_t), value :: size, count
+         type(c_ptr), value :: stream
+         integer(c_size_t) :: written
+      end function c_fwrite_raw
+      function c_fflush(stream) bind(C, name="fflush") result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: stream
+         integer(c_int) :: status
+      end function c_fflush
+      function c_fclose(stream) bind(C, name="fclose") result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: stream
+         integer(c_int) :: status
+      end function c_fclose
+      function c_fileno(stream) bind(C, name="fileno") result(fd)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: stream
+         integer(c_int) :: fd
+      end function c_fileno
+      function c_fsync(fd) bind(C, name="fsync") result(status)
+         import :: c_int
+         integer(c_int), value :: fd
+         integer(c_int) :: status
+      end function c_fsync
+      function c_errno_location() bind(C, name="__errno_location") result(where)
+         import :: c_ptr
+         type(c_ptr) :: where
+      end function c_errno_location
+      function c_strerror(code) bind(C, name="strerror") result(text)
+         import :: c_int, c_ptr
+         integer(c_int), value :: code
+         type(c_ptr) :: text
+      end function c_strerror
    end interface
 
 contains
 
-   !> Open `<path>.part<pid>` for writing; fails (err_io) when the place is not writable.
-   !> With `binary`, the file is a byte stream: text lines (`write_text`, `write_header`)
-   !> and then raw records (`write_records`).
+   !> Open `<path>.part<pid>` for writing; fails (err_io) when the place is not writable
+   !> or `path` is a directory. With `binary`, the file is a byte stream: text lines
+   !> (`write_text`, `write_header`) and then raw records (`write_records`).
    subroutine open_output(file, path, error, binary)
       type(output_file_t), intent(out) :: file  !! the open temporary file
       character(len=*), intent(in) :: path  !! final file name
       type(error_t), allocatable, intent(out) :: error  !! err_io when the place is not writable
       logical, intent(in), optional :: binary  !! a byte stream (default: a text file)
-      integer :: ios
-      character(len=512) :: msg
       character(len=24) :: pid
       write (pid, '(i0)') c_getpid()
       file%path = path
       file%temp_path = path//".part"//trim(pid)
       if (present(binary)) file%binary = binary
-      if (file%binary) then
-         open (newunit=file%unit, file=file%temp_path, status="replace", action="write", form="unformatted", &
-               access="stream", iostat=ios, iomsg=msg)
-      else
-         open (newunit=file%unit, file=file%temp_path, status="replace", action="write", form="formatted", &
-               iostat=ios, iomsg=msg)
-      end if
-      if (ios /= 0) then
-         file%unit = -1
-         call set_error(error, err_io, "cannot write '"//path//"': "//trim(msg))
-      end if
-   end subroutine open_output
-
-   !> Close the temporary file and rename it onto the final name.
-   subroutine commit_output(file, error)
-      type(output_file_t), intent(inout) :: file  !! the file written
-      type(error_t), allocatable, intent(out) :: error  !! err_io when closing or renaming fails
-      integer :: ios
-      character(len=512) :: msg
-      close (file%unit, iostat=ios, iomsg=msg)
-      file%unit = -1
-      if (ios /= 0) then
-         call remove_file(file%temp_path)
-         call set_error(error, err_io, "cannot finish '"//file%path//"': "//trim(msg))
+      if (is_directory(path)) then
+         call set_error(error, err_io, "cannot write '"//path//"': it is a directory")
          return
       end if
-      if (c_rename(c_string(file%temp_path), c_string(file%path)) /= 0) then
-         call remove_file(file%temp_path)
-         call set_error(error, err_io, "cannot rename '"//file%temp_path//"' to '"//file%path//"'")
+      call set_errno(0)
+      file%stream = c_fopen(c_string(file%temp_path), c_string("w"))
+      if (.not. c_associated(file%stream)) then
+         call set_error(error, err_io, "cannot write '"//path//"': "//errno_text())
+         return
       end if
+      call watch_temp_file(file%temp_path, file%slot)
+   end subroutine open_output
+
+   !> Flush the temporary file to the disk, close it and rename it onto the final name;
+   !> after any failure (now or in an earlier write) the temporary file is deleted.
+   subroutine commit_output(file, error)
+      type(output_file_t), intent(inout) :: file  !! the file written
+      type(error_t), allocatable, intent(out) :: error  !! err_io when a write, the flush, close or rename failed
+      character(len=:), allocatable :: cause
+      if (.not. c_associated(file%stream)) then
+         call set_error(error, err_io, "cannot finish '"//file%path//"': the file is not open")
+         return
+      end if
+      if (allocated(file%failure)) cause = file%failure
+      call set_errno(0)
+      if (c_fflush(file%stream) /= 0) then
+         if (.not. allocated(cause)) cause = errno_text()
+      else if (c_fsync(c_fileno(file%stream)) /= 0) then
+         if (.not. allocated(cause)) cause = errno_text()
+      end if
+      call set_errno(0)
+      if (c_fclose(file%stream) /= 0) then
+         if (.not. allocated(cause)) cause = errno_text()
+      end if
+      file%stream = c_null_ptr
+      if (allocated(cause)) then
+         call remove_file(file%temp_path)
+         call forget_temp_file(file%slot)
+         call set_error(error, err_io, "cannot write '"//file%path//"': "//cause// &
+            " (the file is left as it was)")
+         return
+      end if
+      call set_errno(0)
+      if (c_rename(c_string(file%temp_path), c_string(file%path)) /= 0) then
+         cause = errno_text()
+         call remove_file(file%temp_path)
+         call set_error(error, err_io, "cannot rename '"//file%temp_path//"' to '"//file%path//"': "//cause)
+      end if
+      call forget_temp_file(file%slot)
    end subroutine commit_output
 
    !> Close and delete the temporary file; the final name is left as it was.
    subroutine discard_output(file)
       type(output_file_t), intent(inout) :: file  !! the file to abandon
-      integer :: ios
-      if (file%unit /= -1) close (file%unit, status="delete", iostat=ios)
-      file%unit = -1
+      integer(c_int) :: status
+      if (c_associated(file%stream)) status = c_fclose(file%stream)
+      file%stream = c_null_ptr
       if (allocated(file%temp_path)) call remove_file(file%temp_path)
+      call forget_temp_file(file%slot)
    end subroutine discard_output
 
    !> Delete a file if it exists (no error if it does not).
@@ -127,6 +204,16 @@ contains
       integer(c_int) :: status
       status = c_remove(c_string(path))
    end subroutine remove_file
+
+   !> Whether `path` names an existing directory.
+   logical function is_directory(path)
+      character(len=*), intent(in) :: path  !! any path
+      if (len(path) == 0) then
+         is_directory = .false.
+         return
+      end if
+      inquire (file=path//"/.", exist=is_directory)
+   end function is_directory
 
    !> Write the header: each of `lines` after "# ", then "# columns: <columns>".
    !> Text files with `names_line`: then one uncommented line of the column names, which
@@ -215,19 +302,29 @@ contains
       text = trim(buffer)
    end function integer_text
 
-   !> Write one line of text.
+   !> Write one line of text (a newline is added). After a failed write the file is
+   !> incomplete: this and every later write report the failure, and commit_output
+   !> deletes the file.
    subroutine write_text(file, line, error)
       type(output_file_t), intent(inout) :: file  !! the open output file
       character(len=*), intent(in) :: line  !! the line, without its new line
       type(error_t), allocatable, intent(out) :: error  !! err_io when writing fails
-      integer :: ios
-      character(len=512) :: msg
-      if (file%binary) then
-         write (file%unit, iostat=ios, iomsg=msg) line//new_line("a")
-      else
-         write (file%unit, '(a)', iostat=ios, iomsg=msg) line
+      integer(c_size_t) :: written
+      if (.not. allocated(file%failure)) then
+         if (.not. c_associated(file%stream)) then
+            file%failure = "the file is not open"
+         else
+            call set_errno(0)
+            written = c_fwrite(line//new_line("a"), 1_c_size_t, int(len(line) + 1, c_size_t), file%stream)
+            if (written /= int(len(line) + 1, c_size_t)) then
+               file%failure = errno_text()
+            else
+               file%bytes = file%bytes + len(line) + 1
+            end if
+         end if
       end if
-      if (ios /= 0) call set_error(error, err_io, "cannot write '"//file%path//"': "//trim(msg))
+      if (allocated(file%failure)) call set_error(error, err_io, "cannot write '"//file%path//"': "// &
+         file%failure//" (the file is left as it was)")
    end subroutine write_text
 
    !> Write records of reals as raw float64 (binary files only), column-major: one
@@ -236,10 +333,25 @@ contains
       type(output_file_t), intent(inout) :: file  !! the open binary file
       real(wp), intent(in) :: values(:, :)  !! (columns, records)
       type(error_t), allocatable, intent(out) :: error  !! err_io when writing fails
-      integer :: ios
-      character(len=512) :: msg
-      write (file%unit, iostat=ios, iomsg=msg) values
-      if (ios /= 0) call set_error(error, err_io, "cannot write '"//file%path//"': "//trim(msg))
+      real(wp), allocatable, target :: copy(:, :)
+      integer(c_size_t) :: n, written
+      if (.not. allocated(file%failure)) then
+         if (.not. c_associated(file%stream)) then
+            file%failure = "the file is not open"
+         else if (size(values) > 0) then
+            copy = values  ! contiguous
+            n = int(size(copy), c_size_t)
+            call set_errno(0)
+            written = c_fwrite_raw(c_loc(copy), int(storage_size(copy)/8, c_size_t), n, file%stream)
+            if (written /= n) then
+               file%failure = errno_text()
+            else
+               file%bytes = file%bytes + int(n, int64)*(storage_size(copy)/8)
+            end if
+         end if
+      end if
+      if (allocated(file%failure)) call set_error(error, err_io, "cannot write '"//file%path//"': "// &
+         file%failure//" (the file is left as it was)")
    end subroutine write_records
 
    !> Every column a chart or points file can hold, in file order (`default_chart_columns`
@@ -449,6 +561,34 @@ contains
       logical, intent(in) :: condition
       flag = merge(1, 0, condition)
    end function flag
+
+   !> The message of the current errno ("unknown cause" when errno is 0).
+   function errno_text() result(text)
+      character(len=:), allocatable :: text
+      integer(c_int), pointer :: code
+      character(kind=c_char), pointer :: chars(:)
+      integer :: n
+      call c_f_pointer(c_errno_location(), code)
+      if (code == 0) then
+         text = "unknown cause"
+         return
+      end if
+      call c_f_pointer(c_strerror(code), chars, [1024])
+      n = 0
+      do while (n < 1024)
+         if (chars(n + 1) == c_null_char) exit
+         n = n + 1
+      end do
+      allocate (character(len=n) :: text)
+      text = transfer(chars(:n), text)
+   end function errno_text
+
+   subroutine set_errno(value)
+      integer, intent(in) :: value
+      integer(c_int), pointer :: code
+      call c_f_pointer(c_errno_location(), code)
+      code = int(value, c_int)
+   end subroutine set_errno
 
    pure function c_string(text) result(c)
       character(len=*), intent(in) :: text

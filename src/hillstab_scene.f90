@@ -117,7 +117,7 @@ module hillstab_scene
       real(wp), allocatable :: points(:, :)         !! task_points: (2, n) α, β in file order
       type(coefficient_plan_t) :: coefficient       !! task_coefficient
       type(series_plan_t) :: series                 !! task_series (and lyapunov, poincare: the pendulum)
-      !> task_lyapunov: .true. over the points of `&points` (`&lyapunov over = 'points'`),
+      !> For task_lyapunov, .true. over the points of `&points` (`&lyapunov over = 'points'`),
       !> .false. over the grid of `&chart`
       logical :: lyapunov_points = .false.
       type(poincare_plan_t) :: poincare             !! task_poincare

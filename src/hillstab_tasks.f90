@@ -342,7 +342,7 @@ contains
       real(wp) :: alpha
       real(wp), allocatable :: all_betas(:)
       character(len=23), allocatable :: beta_texts(:)
-      logical :: stopped
+      logical :: stopped, stop_now
       character(len=chart_line_length), allocatable :: block_lines(:, :, :)
       integer, allocatable :: block_status(:, :, :), statuses(:), ids(:)
       real(wp), allocatable :: block_values(:, :, :, :), values(:, :)
@@ -391,9 +391,14 @@ contains
          n_groups = (n_alpha + group - 1)/group
          allocate (block_lines(n_beta, group, 0:1), block_status(n_beta, group, 0:1), &
                    block_values(size(ids), n_beta, group, 0:1))
-         !$omp parallel default(shared) private(g, i, alpha)
+         !$omp parallel default(shared) private(g, i, alpha, stop_now)
          do g = 1, n_groups + 1
-            if (stopped) exit   ! the same value in every thread: read after a barrier
+            ! every thread takes the same decision: stopped is read between two barriers
+            ! (it is written only inside the single below)
+            !$omp barrier
+            stop_now = stopped
+            !$omp barrier
+            if (stop_now) exit
             if (g > 1) then
                !$omp single
                do i = (g - 2)*group + 1, min(n_alpha, (g - 1)*group)
