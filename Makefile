@@ -4,8 +4,9 @@
 # both install what is missing first (scripts/setup.sh). Further targets:
 #   make test-debug     tests again with runtime checks and floating-point traps
 #   make bench-output   size and run time of a 1000 x 1000 chart per output layout (out/bench_output.dat)
-#   make bench          speed-against-error benchmark (out/bench_*.dat, out/bench*.png) and the
-#                       transition-curve benchmark (out/bench_boundaries.dat)
+#   make bench          speed-against-error benchmarks (out/bench_*.dat, out/bench*.png), the
+#                       transition-curve benchmark (out/bench_boundaries.dat) and the pendulum
+#                       integrators (out/bench_series.dat, out/bench_series.png)
 #   make area           where the approximate charts are wrong: misclassified area (out/area*.dat, out/area.png)
 #   make lib            build libhillstab.a, libhillstab.so, .mod files and the hillstab program
 #                       with plain gfortran (no fpm)
@@ -58,6 +59,8 @@ bench: setup
 	mkdir -p out
 	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench
 	gnuplot plots/bench.gp
+	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_series
+	gnuplot plots/bench_series.gp
 	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_boundaries
 
 area: setup
