@@ -231,7 +231,7 @@ contains
       scene%points_file = ""
       scene%columns = ""
       scene%coefficient%alphas = [4.0_wp, 6.0_wp, 7.5_wp, 8.0_wp, 9.0_wp, 9.7_wp]
-      scene%poincare%phi0s = [0.05_wp, 0.2_wp, 0.4_wp, 0.6_wp, 0.8_wp]
+      scene%poincare%phi0s = [0.05_wp, 0.1_wp, 0.15_wp, 0.2_wp, 0.3_wp]  ! below 0.35 rad: states at rest at the default &series energy exist
       allocate (scene%amplitudes(0))
    end function default_scene
 
