@@ -525,7 +525,8 @@ contains
          end if
          tr = trace_of(trial)
          noise = roundoff_level(log_peak, tr%log_abs, int(part%n_steps))
-         call refine(ladder, tr, eps <= 1.001_wp*smallest_gsl_epsilon .or. run == max_ladder_runs, noise)
+         call refine(ladder, tr, eps <= 1.001_wp*smallest_gsl_epsilon .or. run == max_ladder_runs, noise, &
+                     near_floor=eps <= 1.0e3_wp*smallest_gsl_epsilon)
          best = trial
          if (ladder%verdict /= refine_more) then
             estimate = tr%error_estimate
