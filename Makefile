@@ -3,6 +3,7 @@
 #   make test           check that the public API is documented, then run the test suite
 # both install what is missing first (scripts/setup.sh). Further targets:
 #   make test-debug     tests again with runtime checks and floating-point traps
+#   make bench-output   size and run time of a 1000 x 1000 chart per output layout (out/bench_output.dat)
 #   make bench          speed-against-error benchmarks (out/bench_*.dat, out/bench*.png), the
 #                       transition-curve benchmark (out/bench_boundaries.dat) and the pendulum
 #                       integrators (out/bench_series.dat, out/bench_series.png)
@@ -36,7 +37,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug setup bench area lib install check-install doc doc-check clean mpi test-mpi
+.PHONY: run test test-debug setup bench bench-output area lib install check-install doc doc-check clean mpi test-mpi
 
 setup:
 	@bash scripts/setup.sh
@@ -50,6 +51,9 @@ test: setup
 
 test-debug: setup
 	$(FPM) test --profile debug --flag "$(DEBUG_FLAGS)"
+
+bench-output: setup
+	bash scripts/bench_output.sh
 
 bench: setup
 	mkdir -p out

@@ -134,7 +134,7 @@ contains
       integer :: k, n_bisected
       out = scratch_prefix("bnd_accuracy")
       call run_rows("bnd_accuracy", two_lines("&scene task='boundaries', tolerance=1e-11, output='"//out//"' /", &
-         "&chart alpha_min=2.5, alpha_max=9.5, n_alpha=3, beta_min=-2, beta_max=25 /"), 11, rows, lines, error)
+         "&chart alpha_min=2.5, alpha_max=9.8, n_alpha=4, beta_min=-2, beta_max=25 /"), 11, rows, lines, error)
       call check(ctx, .not. allocated(error), "runs")
       if (allocated(error)) return
       n_bisected = 0
@@ -151,7 +151,7 @@ contains
          end if
          call check(ctx, rows(2, k), reference, abs=1.0e-9_wp, message="boundary within 1e-9")
       end do
-      call check(ctx, n_bisected >= 12, "the antiperiodic curves of orders 1 and 3 at three alphas")
+      call check(ctx, n_bisected >= 16, "the antiperiodic curves of orders 1 and 3 at four alphas")
    contains
       !> S(β) + 2 changes sign across the curve: bisection from a bracket of ±1e-6.
       real(wp) function bisect(alpha, beta)
