@@ -3,6 +3,8 @@
 #   make test           check that the public API is documented, then run the test suite
 # both install what is missing first (scripts/setup.sh). Further targets:
 #   make test-debug     tests again with runtime checks and floating-point traps
+#   make fuzz           300 mutated scenes on the normal and the trap build (scripts/fuzz.py)
+#   make check-memory   valgrind memcheck on small scenes of every task
 #   make bench-output   size and run time of a 1000 x 1000 chart per output layout (out/bench_output.dat)
 #   make bench          speed-against-error benchmarks (out/bench_*.dat, out/bench*.png), the
 #                       transition-curve benchmark (out/bench_boundaries.dat) and the pendulum
@@ -37,7 +39,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug setup bench bench-output area lib install check-install doc doc-check clean mpi test-mpi
+.PHONY: run test test-debug setup bench bench-output area lib install check-install doc doc-check clean mpi test-mpi fuzz check-memory
 
 setup:
 	@bash scripts/setup.sh
@@ -51,6 +53,23 @@ test: setup
 
 test-debug: setup
 	$(FPM) test --profile debug --flag "$(DEBUG_FLAGS)"
+
+# 300 seeded mutations of the shipped scenes, on the normal and on the trap build
+# (scripts/fuzz.py: whole NaN-free files or one message line, no temp file, in time)
+FUZZ_COUNT ?= 300
+FUZZ_SEED ?= 7
+fuzz: setup
+	$(FPM) build >/dev/null
+	python3 scripts/fuzz.py --count $(FUZZ_COUNT) --seed $(FUZZ_SEED) \
+	   --hillstab "$$($(FPM) run --runner echo hillstab 2>/dev/null | tail -1)"
+	$(FPM) build --profile debug --flag "$(DEBUG_FLAGS)" >/dev/null
+	python3 scripts/fuzz.py --count $(FUZZ_COUNT) --seed $(FUZZ_SEED) \
+	   --hillstab "$$($(FPM) run --profile debug --flag "$(DEBUG_FLAGS)" --runner echo hillstab 2>/dev/null | tail -1)"
+
+# valgrind memcheck on small scenes of every task (scripts/check_memory.sh)
+check-memory: setup
+	$(FPM) build >/dev/null
+	bash scripts/check_memory.sh "$$($(FPM) run --runner echo hillstab 2>/dev/null | tail -1)"
 
 bench-output: setup
 	bash scripts/bench_output.sh

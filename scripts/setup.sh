@@ -14,6 +14,8 @@ command -v cc >/dev/null 2>&1 || missing+=(gcc)
 command -v pkg-config >/dev/null 2>&1 || missing+=(pkg-config)
 command -v cmake >/dev/null 2>&1 || missing+=(cmake)        # make check-install: the CMake route
 command -v readelf >/dev/null 2>&1 || missing+=(binutils)   # make check-install: stack flags
+command -v valgrind >/dev/null 2>&1 || missing+=(valgrind)  # make check-memory
+command -v python3 >/dev/null 2>&1 || missing+=(python3)    # make fuzz
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi

@@ -54,6 +54,12 @@ module hillstab_scene
    !> Smallest `tolerance` accepted (methods reach the round-off level of double precision
    !> near 1e-16 relative to max(1, |S|); below this the answer could only be round-off limited).
    real(wp), parameter, public :: min_tolerance = 1.0e-15_wp
+   !> Largest |α|, |β|, |τ| accepted (grid spacings, Q and the methods' scalings stay finite).
+   real(wp), parameter, public :: max_magnitude = 1.0e15_wp
+   !> Largest |α|, |β| of task boundaries.
+   real(wp), parameter, public :: max_boundaries_magnitude = 1.0e6_wp
+   !> Largest damping ε.
+   real(wp), parameter, public :: max_epsilon = 100.0_wp
    !> Largest number of points in a points file.
    integer, parameter, public :: max_points = 1000000
    !> Largest number of α values in `&coefficient alphas`.
@@ -259,6 +265,7 @@ contains
          select case (scene%task)
          case (task_chart, task_boundaries)
             call read_chart_group(unit, scene, error)
+            if (.not. allocated(error) .and. scene%task == task_boundaries) call check_boundaries_cost(scene, error)
          case (task_points)
             call read_points_group(unit, scene, error)
          case (task_coefficient)
@@ -450,8 +457,9 @@ contains
 
       call require_finite(this%source, group, "epsilon", epsilon, error)
       if (allocated(error)) return
-      if (epsilon < 0.0_wp) then
-         call fail(error, this%source, group, "epsilon", "damping must be >= 0, got "//real_text(epsilon))
+      if (epsilon < 0.0_wp .or. epsilon > max_epsilon) then
+         call fail(error, this%source, group, "epsilon", "damping must be >= 0 and <= "//real_text(max_epsilon)// &
+            " (exp(epsilon) must stay far from overflow), got "//real_text(epsilon))
          return
       end if
       this%epsilon = epsilon
@@ -742,6 +750,12 @@ contains
       end do
       call require_finite(scene%source, group, "beta", beta, error)
       if (allocated(error)) return
+      call require_bounded(scene%source, group, "beta", beta, error)
+      if (allocated(error)) return
+      do k = 1, n
+         call require_bounded(scene%source, group, "alphas", alphas(k), error)
+         if (allocated(error)) return
+      end do
       call check_range(scene%source, group, "tau", tau_min, tau_max, n_tau, error)
       if (allocated(error)) return
       scene%coefficient = coefficient_plan_t(alphas(:n), beta, tau_min, tau_max, n_tau)
@@ -816,6 +830,9 @@ contains
       else if (beta <= 0.0_wp .or. beta >= pi2) then
          call fail(error, scene%source, group, "beta", "must lie in (0, pi**2 = "//real_text(pi2)// &
             "), the physical domain (r0 > 0), got "//real_text(beta))
+      else if (beta < 1.0e-8_wp) then
+         call fail(error, scene%source, group, "beta", "must be >= 1.0e-8 (smaller values make the "// &
+            "pendulum's time scales overflow), got "//real_text(beta))
       else if (periods < 1) then
          call fail(error, scene%source, group, "periods", "must be >= 1, got "//integer_text(periods))
       else if (samples_per_period < 1) then
@@ -825,6 +842,14 @@ contains
          call fail(error, scene%source, group, "r0", "the natural length must be > 0, got "//real_text(r0))
       else if (.not. g > 0.0_wp) then
          call fail(error, scene%source, group, "g", "gravity must be > 0, got "//real_text(g))
+      else if (phi0 /= 0.0_wp .and. (abs(phi0) < 1.0e-300_wp .or. abs(phi0) > 1.0e3_wp)) then
+         call fail(error, scene%source, group, "phi0", "must be 0 or lie in [1e-300, 1e3] in magnitude, got "// &
+            real_text(phi0))
+      else if (r0 < 1.0e-50_wp .or. r0 > 1.0e50_wp .or. g < 1.0e-50_wp .or. g > 1.0e50_wp) then
+         call fail(error, scene%source, group, merge("r0", "g ", r0 < 1.0e-50_wp .or. r0 > 1.0e50_wp), &
+            "must lie in [1e-50, 1e50]")
+      else if (max(abs(vx0), abs(vz0)) > 1.0e50_wp) then
+         call fail(error, scene%source, group, merge("vx0", "vz0", abs(vx0) > 1.0e50_wp), "must lie in [-1e50, 1e50]")
       else if (int(periods, int64)*samples_per_period + 1 > max_series_lines) then
          call fail(error, scene%source, group, "periods", "periods * samples_per_period + 1 = "// &
             trim(int64_text(int(periods, int64)*samples_per_period + 1))// &
@@ -891,6 +916,11 @@ contains
          if (.not. (ieee_is_finite(pair(1)) .and. ieee_is_finite(pair(2)))) then
             call fail(error, scene%source, group, "file", where//": alpha and beta must be finite numbers, got '"// &
                shortened(trim(line))//"'")
+            exit
+         end if
+         if (max(abs(pair(1)), abs(pair(2))) > max_magnitude) then
+            call fail(error, scene%source, group, "file", where//": alpha and beta must lie in ["// &
+               real_text(-max_magnitude)//", "//real_text(max_magnitude)//"], got '"//shortened(trim(line))//"'")
             exit
          end if
          call check_alpha_domain(scene, group, "file", pair(1), error, where)
@@ -1479,6 +1509,32 @@ contains
       call set_error(error, err_input, path//": &"//group//": "//variable//": "//message)
    end subroutine fail
 
+   !> |x| <= max_magnitude: beyond, grid spacings and the coefficient overflow.
+   subroutine require_bounded(path, group, variable, x, error)
+      character(len=*), intent(in) :: path, group, variable
+      real(wp), intent(in) :: x
+      type(error_t), allocatable, intent(out) :: error
+      if (abs(x) > max_magnitude) call fail(error, path, group, variable, "must lie in ["// &
+         real_text(-max_magnitude)//", "//real_text(max_magnitude)//"], got "//real_text(x))
+   end subroutine require_bounded
+
+   !> The boundaries task (Hill's method, its matrix growing with sqrt|alpha|) is bounded
+   !> to |alpha|, |beta| <= max_boundaries_magnitude.
+   subroutine check_boundaries_cost(scene, error)
+      type(scene_t), intent(in) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: why = " for task boundaries (the cost of Hill's method grows with the magnitude)"
+      if (max(abs(scene%chart%alpha_min), abs(scene%chart%alpha_max)) > max_boundaries_magnitude) then
+         call fail(error, scene%source, "chart", merge("alpha_max", "alpha_min", &
+            abs(scene%chart%alpha_max) >= abs(scene%chart%alpha_min)), "|alpha| must be <= "// &
+            real_text(max_boundaries_magnitude)//why)
+      else if (max(abs(scene%chart%beta_min), abs(scene%chart%beta_max)) > max_boundaries_magnitude) then
+         call fail(error, scene%source, "chart", merge("beta_max", "beta_min", &
+            abs(scene%chart%beta_max) >= abs(scene%chart%beta_min)), "|beta| must be <= "// &
+            real_text(max_boundaries_magnitude)//why)
+      end if
+   end subroutine check_boundaries_cost
+
    subroutine require_finite(path, group, variable, x, error)
       character(len=*), intent(in) :: path, group, variable
       real(wp), intent(in) :: x
@@ -1503,6 +1559,10 @@ contains
       call require_finite(path, group, name//"_min", lo, error)
       if (allocated(error)) return
       call require_finite(path, group, name//"_max", hi, error)
+      if (allocated(error)) return
+      call require_bounded(path, group, name//"_min", lo, error)
+      if (allocated(error)) return
+      call require_bounded(path, group, name//"_max", hi, error)
       if (allocated(error)) return
       if (lo > hi) then
          call fail(error, path, group, name//"_min", name//"_min = "//real_text(lo)//" is greater than "// &
@@ -1550,16 +1610,24 @@ contains
       character(len=:), allocatable :: digits, sign_text
       integer :: d, e_at, exponent10, ios
       real(wp) :: back
+      type(fpe_state_t) :: fpe
       if (x == 0.0_wp) then
          text = "0.0"
          return
       end if
+      if (.not. ieee_is_finite(x)) then
+         text = "not a finite number"
+         return
+      end if
+      ! a rounded candidate may overflow when read back (1.8e308): no trap, just a miss
+      call halting_off(fpe)
       do d = 1, 17
          write (fmt, '(a,i0,a)') "(es40.", d - 1, "e3)"
          write (buffer, fmt) x
          read (buffer, *, iostat=ios) back
          if (ios == 0 .and. back == x) exit
       end do
+      call halting_restore(fpe)
       buffer = adjustl(buffer)
       sign_text = ""
       if (buffer(1:1) == "-") then

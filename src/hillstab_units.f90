@@ -114,6 +114,14 @@ contains
          variable = "kappa"; message = "not a finite number"
       else if (p%kappa < 0.0_wp) then
          variable = "kappa"; message = "the damping rate must be >= 0"
+      else if (p%omega < 1.0e-50_wp .or. p%omega > 1.0e50_wp) then
+         variable = "omega"; message = "must lie in [1e-50, 1e50] (rad/s): beyond, the model's scalings overflow"
+      else if (p%r0 > 1.0e50_wp) then
+         variable = "r0"; message = "must be <= 1e50 (m)"
+      else if (p%g > 1.0e50_wp) then
+         variable = "g"; message = "must be <= 1e50 (m/s^2)"
+      else if (p%kappa > 1.0e50_wp) then
+         variable = "kappa"; message = "must be <= 1e50 (1/s)"
       else
          rho = equilibrium_length(p)
          if (.not. (rho > 0.0_wp .and. ieee_is_finite(rho))) then

@@ -354,6 +354,12 @@ contains
          bad_case_t(s//"n_segments = 2147483647 / &chart /", "scene", "n_segments: must be <= 100000"), &
          bad_case_t(s//"tolerance = 1e-300 / &chart /", "scene", "tolerance: must be >= 1.0e-15"), &
          bad_case_t(s//"tolerance = 1 / &chart /", "scene", "tolerance: must be >= 1.0e-15"), &
+         bad_case_t(s//"/ &chart beta_max = 1e308 /", "chart", "beta_max: must lie in [-1.0e15, 1.0e15]"), &
+         bad_case_t(s//"model='mathieu' / &chart alpha_max = 1e20 /", "chart", "alpha_max: must lie in"), &
+         bad_case_t(s//"epsilon = 1e200 / &chart /", "scene", "epsilon: damping must be >= 0 and <= 100"), &
+         bad_case_t(s//"task='coefficient' / &coefficient beta = 1e308 /", "coefficient", "beta: must lie in"), &
+         bad_case_t(s//"task='boundaries', model='mathieu' / &chart alpha_max = 1e8 /", "chart", &
+                    "alpha_max: |alpha| must be <= 1000000.0"), &
          bad_case_t(s//"/ &chart n_alpha = , /", "chart", "n_alpha: no value"), &
          bad_case_t("&scene task 'chart' / &chart /", "scene", "task: cannot read"), &
          bad_case_t(s//"task='coefficient' / &coefficient alphas="//repeat("1,", 65)//"1 /", &

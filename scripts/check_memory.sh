@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# valgrind memcheck on small scenes of every task: no invalid access, no use of
+# uninitialised values, no definite leak (--error-exitcode makes any of them fail).
+# usage: scripts/check_memory.sh BUILD/app/hillstab
+set -euo pipefail
+hillstab=$(readlink -f "$1")
+root=$(cd "$(dirname "$0")/.." && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cp -r "$root/data" "$work/data"
+cd "$work"
+cat > chart.nml <<'NML'
+&scene task='chart', method='auto', output='m_auto' /
+&chart alpha_min=0, alpha_max=9.5, n_alpha=3, beta_min=-2, beta_max=12, n_beta=5 /
+NML
+cat > chart_segments.nml <<'NML'
+&scene task='chart', method='segments', n_segments=4, epsilon=0.2, output='m_seg' /
+&chart n_alpha=3, n_beta=4 /
+NML
+cat > points.nml <<'NML'
+&scene task='points', method='magnus6', output='m_points' /
+&points file='data/points/fig4.dat' /
+NML
+cat > coefficient.nml <<'NML'
+&scene task='coefficient', output='m_coef' /
+&coefficient n_tau=21 /
+NML
+cat > series.nml <<'NML'
+&scene task='series', output='m_series' /
+&series alpha=1.48, beta=2.47, phi0=0.017, periods=2, samples_per_period=10, r0=0.1, g=9.81 /
+NML
+cat > boundaries.nml <<'NML'
+&scene task='boundaries', model='mathieu', output='m_bound' /
+&chart alpha_min=0, alpha_max=10, n_alpha=3, beta_min=-5, beta_max=20 /
+NML
+cat > bad.nml <<'NML'
+&scene task='chart', output='m_bad' /
+&chart beta_max = -, /
+NML
+status=0
+for scene in chart chart_segments points coefficient series boundaries bad; do
+   log="$work/$scene.valgrind"
+   set +e
+   OMP_NUM_THREADS=2 valgrind --quiet --error-exitcode=99 --leak-check=full --show-leak-kinds=definite \
+      --errors-for-leak-kinds=definite --log-file="$log" "$hillstab" --quiet "$scene.nml"
+   code=$?
+   set -e
+   if [ "$code" -eq 99 ] || [ -s "$log" ]; then
+      echo "check-memory: $scene: valgrind reports errors:" >&2
+      sed 's/^/   /' "$log" >&2
+      status=1
+   elif [ "$scene" = bad ] && [ "$code" -ne 2 ]; then
+      echo "check-memory: bad scene exited $code, expected 2" >&2
+      status=1
+   elif [ "$scene" != bad ] && [ "$code" -ne 0 ]; then
+      echo "check-memory: $scene exited $code" >&2
+      status=1
+   else
+      echo "check-memory: $scene: clean (exit $code)"
+   fi
+done
+exit $status
