@@ -33,8 +33,9 @@ contains
    !> written with status 2 and the crossings found before, and the run reports
    !> err_points_failed after writing the file.
    subroutine run_poincare(scene, quiet, error)
-      type(scene_t), intent(in) :: scene
+      type(scene_t), intent(in) :: scene  !! a validated poincare scene
       logical, intent(in) :: quiet  !! unused: the task is short
+      !> err_input (an angle without a state of the common energy), err_io, err_points_failed
       type(error_t), allocatable, intent(out) :: error
       type(pendulum_t) :: p
       type(section_t), allocatable :: sections(:)
