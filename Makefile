@@ -1,10 +1,12 @@
 # hillstab
 #   make run            run the default scene (data files + PNG figures in out/)
-#   make test           run the test suite
+#   make test           check that the public API is documented, then run the test suite
 # both install what is missing first (scripts/setup.sh). Further targets:
 #   make test-debug     tests again with runtime checks and floating-point traps
-#   make bench          speed-against-error benchmark (out/bench_*.dat, out/bench*.png) and the
-#                       transition-curve benchmark (out/bench_boundaries.dat)
+#   make bench-output   size and run time of a 1000 x 1000 chart per output layout (out/bench_output.dat)
+#   make bench          speed-against-error benchmarks (out/bench_*.dat, out/bench*.png), the
+#                       transition-curve benchmark (out/bench_boundaries.dat) and the pendulum
+#                       integrators (out/bench_series.dat, out/bench_series.png)
 #   make area           where the approximate charts are wrong: misclassified area (out/area*.dat, out/area.png)
 #   make lib            build libhillstab.a, libhillstab.so, .mod files and the hillstab program
 #                       with plain gfortran (no fpm)
@@ -36,7 +38,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug setup bench area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov
+.PHONY: run test test-debug setup bench bench-output area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov
 
 setup:
 	@bash scripts/setup.sh
@@ -45,15 +47,21 @@ run: setup
 	@bash scripts/run_default.sh
 
 test: setup
+	@python3 scripts/doc_check.py
 	$(FPM) test
 
 test-debug: setup
 	$(FPM) test --profile debug --flag "$(DEBUG_FLAGS)"
 
+bench-output: setup
+	bash scripts/bench_output.sh
+
 bench: setup
 	mkdir -p out
 	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench
 	gnuplot plots/bench.gp
+	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_series
+	gnuplot plots/bench_series.gp
 	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_boundaries
 
 area: setup

@@ -4,13 +4,16 @@
 !> Runs each scene in turn. Output goes to files named in the scenes; progress
 !> and errors go to stderr; stdout carries only --template, --help and --version.
 !> Exit status: 0 on success, 2 for bad input (scene, points file, output path,
-!> command line), 1 when a computation fails, 3 (exit_points_failed) when a file was
-!> written but some of its points failed (status 2 in their rows).
+!> command line) or an output file that cannot be written completely, 1 when a
+!> computation fails, 3 (exit_points_failed) when a file was written but some of its
+!> points failed (status 2 in their rows), 128 + N after signal N (SIGINT, SIGTERM,
+!> SIGHUP), the unfinished output file removed.
 program hillstab_cli
    use hillstab_kinds, only: version_string
    use hillstab_error, only: error_t, err_input, err_io, err_invalid_parameter, err_points_failed
    use hillstab_status, only: exit_points_failed
    use hillstab_tasks, only: run_scene_file
+   use hillstab_signals, only: install_signal_cleanup
    use hillstab_templates, only: template_task_names, scene_template
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use, intrinsic :: ieee_arithmetic, only: ieee_set_flag, ieee_all
@@ -21,27 +24,33 @@ program hillstab_cli
    logical :: quiet
    integer :: i, n_scenes
    logical :: points_failed
+   integer, parameter :: max_path = 4096
+   character(len=*), parameter :: max_path_text = "4096"
 
+   call install_signal_cleanup()
    quiet = .false.
    n_scenes = 0
-   allocate (character(len=4096) :: scenes(command_argument_count()))
+   allocate (character(len=max_path) :: scenes(command_argument_count()))
    do i = 1, command_argument_count()
       argument = command_argument(i)
       select case (argument)
       case ("-h", "--help")
          call print_help()
-         stop
+         call quit("", 0)
       case ("-V", "--version")
          write (output_unit, '(a)') "hillstab "//version_string
-         stop
+         call quit("", 0)
       case ("-t", "--template")
          call print_template(i + 1)
-         stop
+         call quit("", 0)
       case ("-q", "--quiet")
          quiet = .true.
       case default
          if (len(argument) > 1 .and. argument(1:1) == "-") then
             call quit("hillstab: unknown option '"//argument//"' (see hillstab --help)", 2)
+         end if
+         if (len(argument) > max_path) then
+            call quit("hillstab: scene path longer than "//max_path_text//" characters", 2)
          end if
          n_scenes = n_scenes + 1
          scenes(n_scenes) = argument
@@ -66,10 +75,8 @@ program hillstab_cli
       end if
       if (.not. quiet) write (error_unit, '(a)') "hillstab: wrote "//written
    end do
-   if (points_failed) then
-      call ieee_set_flag(ieee_all, .false.)
-      stop exit_points_failed, quiet=.true.
-   end if
+   if (points_failed) call quit("", exit_points_failed)
+   call quit("", 0)
 
 contains
 
@@ -87,7 +94,12 @@ contains
    subroutine quit(message, status)
       character(len=*), intent(in) :: message
       integer, intent(in) :: status
-      write (error_unit, '(a)') message
+      if (len(message) > 0) write (error_unit, '(a)') message
+      ! free what the program allocated, so that memory checkers see no leak
+      if (allocated(scenes)) deallocate (scenes)
+      if (allocated(argument)) deallocate (argument)
+      if (allocated(written)) deallocate (written)
+      if (allocated(error)) deallocate (error)
       call ieee_set_flag(ieee_all, .false.)
       stop status, quiet=.true.
    end subroutine quit
@@ -137,7 +149,9 @@ contains
          "  -h, --help           this text", &
          "  -V, --version        the version", &
          "", &
-         "Exit status: 0 success, 2 bad input, 1 a computation failed, 3 files written but", &
-         "some points failed (status 2 in their rows)."
+         "Exit status: 0 success, 2 bad input or an output file that cannot be written,", &
+         "1 a computation failed, 3 files written but some points failed (status 2 in", &
+         "their rows), 128 + N killed by signal N (SIGINT, SIGTERM, SIGHUP: the unfinished", &
+         "output file is removed)."
    end subroutine print_help
 end program hillstab_cli

@@ -6,7 +6,9 @@ set terminal pngcairo size 1500,650 font "Sans,11"
 set output 'out/area.png'
 pi2 = pi**2
 set multiplot layout 1,2 title "Misclassified regions of the approximate charts over 0 ≤ α < π², 0 < β < π²" font ",13"
-set palette defined (0 "#f3efe6", 1 "#9fb4d6", 2 "#d7301f", 3 "#fdae61")
+# classes of out/area_map.dat: 0 both stable, 1 both unstable, 2 exact stable but eq. (37) unstable,
+# 3 exact unstable but eq. (37) stable
+set palette defined (0 "#9fb4d6", 1 "#f3efe6", 2 "#d7301f", 3 "#fdae61")
 set cbrange [0:3]
 unset colorbox
 set xrange [0:pi2]
@@ -16,10 +18,10 @@ set ylabel "β"
 set key at graph 0.98, graph 0.98 right top box opaque samplen 2 font ",10"
 set title "eq. (37) against the exact chart"
 plot 'out/area_map.dat' using 1:2:3 with image notitle, \
-     keyentry with boxes fs solid 1.0 lc "#555555" fc "#f3efe6" title "unstable (both)", \
      keyentry with boxes fs solid 1.0 lc "#555555" fc "#9fb4d6" title "stable (both)", \
-     keyentry with boxes fs solid 1.0 lc "#555555" fc "#d7301f" title "eq. (37) says stable, exact unstable", \
-     keyentry with boxes fs solid 1.0 lc "#555555" fc "#fdae61" title "eq. (37) says unstable, exact stable"
+     keyentry with boxes fs solid 1.0 lc "#555555" fc "#f3efe6" title "unstable (both)", \
+     keyentry with boxes fs solid 1.0 lc "#555555" fc "#d7301f" title "eq. (37) unstable, exact stable", \
+     keyentry with boxes fs solid 1.0 lc "#555555" fc "#fdae61" title "eq. (37) stable, exact unstable"
 set title "misclassified length in β at each α"
 set logscale y
 set yrange [1e-6:10]

@@ -12,7 +12,7 @@ set cntrparam levels discrete log10(2.0)
 unset surface
 set view map
 set table $boundary
-splot 'out/default_exact_chart.dat' using 1:2:7 with lines notitle
+splot 'out/default_exact_chart.dat' using 'alpha':'beta':'log10_abs_S' with lines notitle
 unset table
 unset contour
 
@@ -27,9 +27,9 @@ set key at graph 0.02, graph 0.80 left top Left reverse box opaque samplen 2 fon
 set style textbox opaque fc "white" noborder margins 1,1
 set arrow 1 from 0,pi2/4 to 9.8,pi2/4 nohead dt 3 lw 1.2 lc "#c05020" front
 set title "Fig. 3: the paper's eq. (37) chart (dark = stable) and the exact boundary |S| = 2"
-plot 'out/default_paper_chart.dat' using 1:2:4 with image notitle, \
+plot 'out/default_paper_chart.dat' using 'alpha':'beta':'stable' with image notitle, \
      keyentry with boxes fs solid 1.0 border lc "#555555" fc "#23406e" title "stable by eq. (37)", \
      keyentry with boxes fs solid 1.0 border lc "#555555" fc "#f3efe6" title "unstable by eq. (37)", \
      $boundary using 1:2 with lines lw 2 lc "#e08000" title "exact |S| = 2", \
-     'out/fig4_points.dat' using 1:2 with points pt 7 ps 1.3 lc "black" title "Fig. 4 points", \
+     'out/fig4_points.dat' using 'alpha':'beta' with points pt 7 ps 1.3 lc "black" title "Fig. 4 points", \
      'data/points/fig4.dat' using 1:2:3 with labels offset 1.4,0.6 boxed font ",10" tc "black" notitle

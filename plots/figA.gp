@@ -11,7 +11,7 @@ set cntrparam levels discrete log10(2.0)
 unset surface
 set view map
 set table $strutt
-splot 'out/figA_exact_chart.dat' using 1:2:7 with lines notitle
+splot 'out/figA_exact_chart.dat' using 'alpha':'beta':'log10_abs_S' with lines notitle
 unset table
 unset contour
 
@@ -30,14 +30,14 @@ key_unstable = 'keyentry with boxes fs solid 1.0 border lc "#555555" fc "#f3efe6
 
 set output 'out/figA1.png'
 set title "Fig. A1: Mathieu, 2-piece trace (A3)  (dark = stable)"
-plot 'out/figA_formula_chart.dat' using 1:2:4 with image notitle, @key_stable, @key_unstable
+plot 'out/figA_formula_chart.dat' using 'alpha':'beta':'stable' with image notitle, @key_stable, @key_unstable
 
 set output 'out/figA3.png'
 set title "Fig. A3: (A3), 2 pieces, against the exact Strutt diagram"
-plot 'out/figA_formula_chart.dat' using 1:2:4 with image notitle, @key_stable, @key_unstable, \
+plot 'out/figA_formula_chart.dat' using 'alpha':'beta':'stable' with image notitle, @key_stable, @key_unstable, \
      $strutt using 1:2 with lines lw 2 lc "#e08000" title "exact |S| = 2"
 
 set output 'out/figA4.png'
 set title "Fig. A4: 4 averaged pieces (A18) against the exact Strutt diagram"
-plot 'out/figA_segments4_chart.dat' using 1:2:4 with image notitle, @key_stable, @key_unstable, \
+plot 'out/figA_segments4_chart.dat' using 'alpha':'beta':'stable' with image notitle, @key_stable, @key_unstable, \
      $strutt using 1:2 with lines lw 2 lc "#e08000" title "exact |S| = 2"

@@ -131,7 +131,7 @@ class Checker:
             m = re.match(r"^module\s+(" + IDENT + r")\s*$", st.code)
             if m:
                 module = m.group(1)
-                if not st.docs_before:
+                if not documented(st):
                     self.report(path, st.line, f"module {module} has no !> header")
                 self.check_module(path, sts[k:], module)
                 return
@@ -240,7 +240,7 @@ class Checker:
     def check_one_procedure(self, path, sts, idx, match):
         kind, name = match.group(1).lower(), match.group(2)
         st = sts[idx]
-        if not st.docs_before:
+        if not documented(st):
             self.report(path, st.line, f"public {kind} {name} has no !> doc comment")
         args = [a.strip() for a in (match.group(4) or "").split(",") if a.strip() and a.strip() != "*"]
         if not args:

@@ -31,7 +31,7 @@
 !>```
 module hillstab_batch
    use hillstab_kinds, only: wp, int64
-   use hillstab_error, only: error_t, err_input, err_io, err_invalid_parameter, err_points_failed
+   use hillstab_error, only: error_t, set_error, err_input, err_io, err_invalid_parameter, err_points_failed
    use hillstab_status, only: status_roundoff, status_failed, exit_points_failed
    use hillstab_coefficient, only: in_physical_domain
    use hillstab_scene, only: scene_t, task_chart, task_points, task_lyapunov, grid_value
@@ -39,8 +39,8 @@ module hillstab_batch
       lyapunov_point, lyapunov_failure_error
    use hillstab_coefficient, only: model_elastic
    use hillstab_output, only: output_file_t, write_header, write_text, commit_output, discard_output, &
-      chart_columns, chart_line_length
-   use hillstab_tasks, only: chart_row, compute_points, chart_header, open_scene_output, check_method_runs, &
+      chart_columns_text, chart_line_length
+   use hillstab_tasks, only: scene_columns, chart_row, compute_points, chart_header, open_scene_output, check_method_runs, &
       warn_inaccurate, failed_points_error, progress_t, progress_begin, progress_update, progress_end
    implicit none
    private
@@ -200,8 +200,16 @@ contains
       type(error_t), allocatable, intent(out) :: error  !! failure description; unallocated on success
       logical :: outside, damped
       type(scene_t) :: s
+      integer, allocatable :: ids(:)
       s = batch%scene
       damped = s%epsilon > 0.0_wp
+      if (s%binary) then
+         call set_error(error, err_input, s%source//": &scene: format: 'binary' is written by the hillstab "// &
+            "program, not by the unit-by-unit driver: use format = 'text'")
+         return
+      end if
+      call scene_columns(s, ids, error)
+      if (allocated(error)) return
       call open_scene_output(s, batch%file, error)
       if (allocated(error)) return
       if (s%task == task_lyapunov) then
@@ -224,8 +232,8 @@ contains
       else
          outside = .not. all(in_physical_domain(s%points(1, :), s%points(2, :)))
       end if
-      call write_header(batch%file, chart_header(s, outside), chart_columns(damped, s%model == model_elastic, &
-         s%physical), error)
+      call write_header(batch%file, chart_header(s, outside), chart_columns_text(ids), error, &
+                        names_line=s%names_line)
       if (allocated(error)) then
          call discard_output(batch%file)
          return

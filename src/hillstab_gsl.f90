@@ -16,17 +16,16 @@
 !> the routines may be called from several OpenMP threads at once. (The handler
 !> switch writes one GSL global; every thread writes the same value, null.)
 !>
-!> Accuracy of the monodromy (measured against quadruple-precision references,
-!> test/test_gsl.f90): GSL's control keeps each step's error in every component
-!> below eps·(1 + |y_i|), eps = tolerance·gsl_tolerance_factor. The error in S,
-!> relative to max(1, |S|), came out at 0.1–0.3·κ·eps, where κ compares the size
-!> the solutions reach inside the period with S; κ ≲ 5 over most of the chart but
-!> reaches ~3e3 at α → π², β → 0 (e.g. α = 9.8, β = 0, where S = 2). When κ > 4
-!> the half period is integrated again with eps/κ. Result: error ≤ tolerance for
-!> 1e-12 ≤ tolerance ≤ 1e-4 on a 21×26 grid of both models (worst 0.5–1.2 ×
-!> tolerance), typically 0.01–0.5 × tolerance. Since eps is floored at 1e-15,
-!> the attainable error is ~1e-15 × max(1, κ)·10: 1e-14 relative at most points,
-!> 2e-11 at (9.8, 0).
+!> Accuracy of the monodromy: GSL's control keeps each step's error in every
+!> component below eps·(1 + |y_i|). The error in S, relative to max(1, |S|), came out
+!> at 0.1–0.3·κ·eps, where κ compares the size the solutions reach inside the period
+!> with S; κ ≲ 5 over most of the chart but reaches ~3e3 at α → π², β → 0 (e.g.
+!> α = 9.8, β = 0, where S = 2). A local epsilon therefore does not bound the error of
+!> S: `monodromy_gsl` integrates with eps = tolerance·gsl_tolerance_factor, then eps
+!> divided by max(10, κ/2), then by 10, until two successive traces agree to the
+!> tolerance (hillstab_refine), and reports round-off limited (err_accuracy) where eps
+!> reaches its floor 1e-15 or GSL's control cannot meet it (GSL_FAILURE). Measured
+!> against the 50-digit reference of data/reference/ (README, *Accuracy*).
 !>
 !>```fortran
 !> type(trace_t) :: tr
@@ -40,7 +39,7 @@ module hillstab_gsl
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_kinds, only: wp, int64, pi2, log_huge
    use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
-   use hillstab_refine, only: refinement_t, start_refinement, refine, refine_more, refine_met, refine_roundoff, &
+   use hillstab_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
       roundoff_level, propagator_condition, trace_distance, first_step_factor, next_local_tolerance
    use hillstab_stats, only: work_stats_t, add_work
    use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
@@ -67,13 +66,11 @@ module hillstab_gsl
    integer, parameter :: mathieu_max_order = 60
 
    !> epsabs = epsrel = tolerance·gsl_tolerance_factor in GSL's control
-   !> D_i = epsabs + epsrel |y_i|. Measured: the error in S relative to max(1, |S|)
+   !> D_i = epsabs + epsrel |y_i| for the first pass of `monodromy_gsl` (the only one of
+   !> `monodromy_gsl_full_period`). Measured: the error in S relative to max(1, |S|)
    !> is about 0.1–0.3·κ·epsilon, κ the condition of `half_period_monodromy`
-   !> (κ ≲ 5 over most of the chart), so 0.5 keeps it below `tolerance`.
+   !> (κ ≲ 5 over most of the chart), so the second pass usually confirms the first.
    real(wp), parameter :: gsl_tolerance_factor = 0.5_wp
-   !> Condition κ (growth of the solutions inside the period relative to S) above
-   !> which the half period is integrated again with the epsilon divided by κ.
-   real(wp), parameter :: gsl_rerun_condition = 4.0_wp
    !> GSL cannot meet a relative local error below a few ulps: the control's
    !> epsilon is never set below this.
    real(wp), parameter :: smallest_gsl_epsilon = 1.0e-15_wp
@@ -528,7 +525,8 @@ contains
          end if
          tr = trace_of(trial)
          noise = roundoff_level(log_peak, tr%log_abs, int(part%n_steps))
-         call refine(ladder, tr, eps <= 1.001_wp*smallest_gsl_epsilon .or. run == max_ladder_runs, noise)
+         call refine(ladder, tr, eps <= 1.001_wp*smallest_gsl_epsilon .or. run == max_ladder_runs, noise, &
+                     near_floor=eps <= 1.0e3_wp*smallest_gsl_epsilon)
          best = trial
          if (ladder%verdict /= refine_more) then
             estimate = tr%error_estimate

@@ -494,7 +494,8 @@ contains
       real(wp) :: estimate
       call monodromy_magnus(model, order, tolerance, m, stats, error, estimate)
       tr = trace_of(m)
-      tr%error_estimate = estimate
+      ! no estimate when the method stopped before measuring one (bad input)
+      if (estimate < huge(1.0_wp)) tr%error_estimate = estimate
       if (present(error_estimate)) error_estimate = estimate
    end subroutine trace_magnus
 end module hillstab_magnus

@@ -186,7 +186,8 @@ contains
          if (allocated(error)) exit
          tr = trace_of(m)
          call refine(ladder, tr, at_floor=local <= 1.001_wp*tolerance_floor .or. run == max_ladder_runs, &
-                     noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps)))
+                     noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps)), &
+                     near_floor=local <= 1.0e3_wp*tolerance_floor)
          if (ladder%verdict /= refine_more) exit
          ! the first step down also divides by the propagator's condition (`first_step_factor`)
          local = next_local_tolerance(local, merge(first_step_factor(log_peak, tr%log_abs), 10.0_wp, run == 1), &

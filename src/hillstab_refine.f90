@@ -65,12 +65,19 @@ contains
    !> (`roundoff_level`). Sets `ladder%verdict` and, when the ladder ends,
    !> `tr%error_estimate` (never below `noise`). A round-off level above the tolerance
    !> ends the ladder as round-off limited as soon as two values agree to that level.
-   pure subroutine refine(ladder, tr, at_floor, noise)
+   pure subroutine refine(ladder, tr, at_floor, noise, near_floor)
       type(refinement_t), intent(inout) :: ladder  !! the ladder, advanced
       type(trace_t), intent(inout) :: tr  !! S at the new local tolerance; gets its error estimate when the ladder ends
       logical, intent(in) :: at_floor     !! no tighter local tolerance is possible
       real(wp), intent(in) :: noise       !! round-off level of S (`roundoff_level`)
+      !> the local tolerance is within a few decades of its floor, where differences that
+      !> stop halving are rounding noise (default true); far above it they are only a
+      !> slow, pre-asymptotic convergence (seen with GSL at tolerance 1e-4, β = −1e5)
+      logical, intent(in), optional :: near_floor
       real(wp) :: d
+      logical :: stagnation_is_noise
+      stagnation_is_noise = .true.
+      if (present(near_floor)) stagnation_is_noise = near_floor
       ladder%n_values = ladder%n_values + 1
       if (ladder%n_values == 1) then
          ladder%previous = tr
@@ -81,7 +88,7 @@ contains
       if (d <= ladder%tolerance .and. noise <= ladder%tolerance) then
          ladder%verdict = refine_met
       else if (d <= max(ladder%tolerance, noise) .or. at_floor .or. &
-               (ladder%n_values >= 3 .and. d > noise_ratio*ladder%difference)) then
+               (stagnation_is_noise .and. ladder%n_values >= 3 .and. d > noise_ratio*ladder%difference)) then
          ladder%verdict = refine_roundoff
       else
          ladder%verdict = refine_more

@@ -518,7 +518,9 @@ contains
          real(wp), intent(out) :: dydt(:)
          call system%rhs(tau, state, dydt)
          work%n_evaluations = work%n_evaluations + 1
-         finite = all(ieee_is_finite(dydt))
+         ! |f| <= huge is false for NaN and ±Inf: one compare per component (the
+         ! ieee_is_finite loop cost an eighth of a DOP853 step on a 4-component system)
+         finite = all(abs(dydt) <= huge(1.0_wp))
       end subroutine evaluate
 
       subroutine fail_non_finite(tau, where)
@@ -672,9 +674,14 @@ contains
                return
             end if
 
-            fac11 = err**control%exponent
+            if (control%exponent == 0.125_wp) then
+               fac11 = sqrt(sqrt(sqrt(err)))  ! DOP853's err^(1/8) without a pow call
+            else
+               fac11 = err**control%exponent
+            end if
             ! Lund stabilisation (PI control): divide by the previous error to the power beta
-            fac = fac11/control%fac_old**control%beta
+            fac = fac11
+            if (control%beta /= 0.0_wp) fac = fac11/control%fac_old**control%beta
             fac = max(1.0_wp/control%fac_max, min(1.0_wp/control%fac_min, fac/control%safety))
             h_new = h/fac
             if (err <= 1.0_wp) then
@@ -717,81 +724,20 @@ contains
          real(wp), intent(in) :: tau, hh
          logical, intent(in) :: with_error
          real(wp), intent(out), optional :: err
-         real(wp) :: sk(n)
-         associate (y0 => step%y)
-            y_stage = y0 + hh*p5_a21*k(:, 1)
-            call evaluate(tau + p5_c2*hh, y_stage, k(:, 2)); if (.not. finite) return
-            y_stage = y0 + hh*(p5_a31*k(:, 1) + p5_a32*k(:, 2))
-            call evaluate(tau + p5_c3*hh, y_stage, k(:, 3)); if (.not. finite) return
-            y_stage = y0 + hh*(p5_a41*k(:, 1) + p5_a42*k(:, 2) + p5_a43*k(:, 3))
-            call evaluate(tau + p5_c4*hh, y_stage, k(:, 4)); if (.not. finite) return
-            y_stage = y0 + hh*(p5_a51*k(:, 1) + p5_a52*k(:, 2) + p5_a53*k(:, 3) + p5_a54*k(:, 4))
-            call evaluate(tau + p5_c5*hh, y_stage, k(:, 5)); if (.not. finite) return
-            y_stage = y0 + hh*(p5_a61*k(:, 1) + p5_a62*k(:, 2) + p5_a63*k(:, 3) + p5_a64*k(:, 4) &
-                               + p5_a65*k(:, 5))
-            call evaluate(tau + hh, y_stage, k(:, 6)); if (.not. finite) return
-            y_new = y0 + hh*(p5_a71*k(:, 1) + p5_a73*k(:, 3) + p5_a74*k(:, 4) + p5_a75*k(:, 5) &
-                             + p5_a76*k(:, 6))
-            ! stage 7 is f at the new point: first stage of the next step (FSAL)
-            call evaluate(tau + hh, y_new, k(:, 7)); if (.not. finite) return
-            if (with_error) then
-               sk = atol + options%rtol*max(abs(y0), abs(y_new))
-               y_stage = hh*(p5_e1*k(:, 1) + p5_e3*k(:, 3) + p5_e4*k(:, 4) + p5_e5*k(:, 5) &
-                             + p5_e6*k(:, 6) + p5_e7*k(:, 7))
-               err = sqrt(sum((y_stage/sk)**2)/n)
-            end if
-         end associate
+         real(wp) :: e
+         call dopri5_kernel(system, n, tau, hh, step%y, k, y_stage, y_new, atol, options%rtol, with_error, e, &
+                            finite, work%n_evaluations)
+         if (present(err)) err = e
       end subroutine dopri5_stages
 
       subroutine dop853_stages(tau, hh, with_error, err)
          real(wp), intent(in) :: tau, hh
          logical, intent(in) :: with_error
          real(wp), intent(out), optional :: err
-         real(wp) :: sk(n), err5, err3, deno
-         associate (y0 => step%y)
-            y_stage = y0 + hh*p8_a21*k(:, 1)
-            call evaluate(tau + p8_c2*hh, y_stage, k(:, 2)); if (.not. finite) return
-            y_stage = y0 + hh*(p8_a31*k(:, 1) + p8_a32*k(:, 2))
-            call evaluate(tau + p8_c3*hh, y_stage, k(:, 3)); if (.not. finite) return
-            y_stage = y0 + hh*(p8_a41*k(:, 1) + p8_a43*k(:, 3))
-            call evaluate(tau + p8_c4*hh, y_stage, k(:, 4)); if (.not. finite) return
-            y_stage = y0 + hh*(p8_a51*k(:, 1) + p8_a53*k(:, 3) + p8_a54*k(:, 4))
-            call evaluate(tau + p8_c5*hh, y_stage, k(:, 5)); if (.not. finite) return
-            y_stage = y0 + hh*(p8_a61*k(:, 1) + p8_a64*k(:, 4) + p8_a65*k(:, 5))
-            call evaluate(tau + p8_c6*hh, y_stage, k(:, 6)); if (.not. finite) return
-            y_stage = y0 + hh*(p8_a71*k(:, 1) + p8_a74*k(:, 4) + p8_a75*k(:, 5) + p8_a76*k(:, 6))
-            call evaluate(tau + p8_c7*hh, y_stage, k(:, 7)); if (.not. finite) return
-            y_stage = y0 + hh*(p8_a81*k(:, 1) + p8_a84*k(:, 4) + p8_a85*k(:, 5) + p8_a86*k(:, 6) &
-                               + p8_a87*k(:, 7))
-            call evaluate(tau + p8_c8*hh, y_stage, k(:, 8)); if (.not. finite) return
-            y_stage = y0 + hh*(p8_a91*k(:, 1) + p8_a94*k(:, 4) + p8_a95*k(:, 5) + p8_a96*k(:, 6) &
-                               + p8_a97*k(:, 7) + p8_a98*k(:, 8))
-            call evaluate(tau + p8_c9*hh, y_stage, k(:, 9)); if (.not. finite) return
-            y_stage = y0 + hh*(p8_a101*k(:, 1) + p8_a104*k(:, 4) + p8_a105*k(:, 5) + p8_a106*k(:, 6) &
-                               + p8_a107*k(:, 7) + p8_a108*k(:, 8) + p8_a109*k(:, 9))
-            call evaluate(tau + p8_c10*hh, y_stage, k(:, 10)); if (.not. finite) return
-            y_stage = y0 + hh*(p8_a111*k(:, 1) + p8_a114*k(:, 4) + p8_a115*k(:, 5) + p8_a116*k(:, 6) &
-                               + p8_a117*k(:, 7) + p8_a118*k(:, 8) + p8_a119*k(:, 9) + p8_a1110*k(:, 10))
-            call evaluate(tau + p8_c11*hh, y_stage, k(:, 11)); if (.not. finite) return
-            y_stage = y0 + hh*(p8_a121*k(:, 1) + p8_a124*k(:, 4) + p8_a125*k(:, 5) + p8_a126*k(:, 6) &
-                               + p8_a127*k(:, 7) + p8_a128*k(:, 8) + p8_a129*k(:, 9) + p8_a1210*k(:, 10) &
-                               + p8_a1211*k(:, 11))
-            call evaluate(tau + hh, y_stage, k(:, 12)); if (.not. finite) return
-            ! the 8th-order solution; k(:, 13) is kept for the increment b·k
-            k(:, 13) = p8_b1*k(:, 1) + p8_b6*k(:, 6) + p8_b7*k(:, 7) + p8_b8*k(:, 8) + p8_b9*k(:, 9) &
-                       + p8_b10*k(:, 10) + p8_b11*k(:, 11) + p8_b12*k(:, 12)
-            y_new = y0 + hh*k(:, 13)
-            if (with_error) then
-               ! Hairer's combined estimate err5²/sqrt(err5² + 0.01·err3²) (dop853.f, ERROR ESTIMATION)
-               sk = atol + options%rtol*max(abs(y0), abs(y_new))
-               err3 = sum(((k(:, 13) - p8_bhh1*k(:, 1) - p8_bhh2*k(:, 9) - p8_bhh3*k(:, 12))/sk)**2)
-               err5 = sum(((p8_er1*k(:, 1) + p8_er6*k(:, 6) + p8_er7*k(:, 7) + p8_er8*k(:, 8) &
-                            + p8_er9*k(:, 9) + p8_er10*k(:, 10) + p8_er11*k(:, 11) + p8_er12*k(:, 12))/sk)**2)
-               deno = err5 + 0.01_wp*err3
-               if (deno <= 0.0_wp) deno = 1.0_wp
-               err = abs(hh)*err5*sqrt(1.0_wp/(n*deno))
-            end if
-         end associate
+         real(wp) :: e
+         call dop853_kernel(system, n, tau, hh, step%y, k, y_stage, y_new, atol, options%rtol, with_error, e, &
+                            finite, work%n_evaluations)
+         if (present(err)) err = e
       end subroutine dop853_stages
 
       !> After a successful attempt: evaluate f at the new point (DOP853; DOPRI5 has it),
@@ -843,13 +789,13 @@ contains
                       + p8_d610*k(:, 10) + p8_d611*k(:, 11) + p8_d612*k(:, 12)
             d(:, 7) = p8_d71*k(:, 1) + p8_d76*k(:, 6) + p8_d77*k(:, 7) + p8_d78*k(:, 8) + p8_d79*k(:, 9) &
                       + p8_d710*k(:, 10) + p8_d711*k(:, 11) + p8_d712*k(:, 12)
-            y_stage = y0 + hh*(p8_a141*k(:, 1) + p8_a147*k(:, 7) + p8_a148*k(:, 8) + p8_a149*k(:, 9) &
+            y_stage(:) = y0 + hh*(p8_a141*k(:, 1) + p8_a147*k(:, 7) + p8_a148*k(:, 8) + p8_a149*k(:, 9) &
                                + p8_a1410*k(:, 10) + p8_a1411*k(:, 11) + p8_a1412*k(:, 12) + p8_a1413*k(:, 13))
             call evaluate(step%t + p8_c14*hh, y_stage, k(:, 14)); if (.not. finite) return
-            y_stage = y0 + hh*(p8_a151*k(:, 1) + p8_a156*k(:, 6) + p8_a157*k(:, 7) + p8_a158*k(:, 8) &
+            y_stage(:) = y0 + hh*(p8_a151*k(:, 1) + p8_a156*k(:, 6) + p8_a157*k(:, 7) + p8_a158*k(:, 8) &
                                + p8_a1511*k(:, 11) + p8_a1512*k(:, 12) + p8_a1513*k(:, 13) + p8_a1514*k(:, 14))
             call evaluate(step%t + p8_c15*hh, y_stage, k(:, 15)); if (.not. finite) return
-            y_stage = y0 + hh*(p8_a161*k(:, 1) + p8_a166*k(:, 6) + p8_a167*k(:, 7) + p8_a168*k(:, 8) &
+            y_stage(:) = y0 + hh*(p8_a161*k(:, 1) + p8_a166*k(:, 6) + p8_a167*k(:, 7) + p8_a168*k(:, 8) &
                                + p8_a169*k(:, 9) + p8_a1613*k(:, 13) + p8_a1614*k(:, 14) + p8_a1615*k(:, 15))
             call evaluate(step%t + p8_c16*hh, y_stage, k(:, 16)); if (.not. finite) return
             d(:, 4) = hh*(d(:, 4) + p8_d413*k(:, 13) + p8_d414*k(:, 14) + p8_d415*k(:, 15) + p8_d416*k(:, 16))
@@ -859,4 +805,121 @@ contains
          end associate
       end subroutine dop853_dense
    end subroutine rk_integrate
+
+   !> One trial step of size hh from (tau, y0): the stages into k, the new state into y_new
+   !> and, with `with_error`, Hairer's scaled error norm. Module level with explicit-shape
+   !> arrays (no host association, no descriptors) because this is the integrator's inner
+   !> loop; `finite` is false as soon as a derivative is not finite (nothing more is done).
+   subroutine dopri5_kernel(system, n, tau, hh, y0, k, y_stage, y_new, atol, rtol, with_error, err, finite, n_evaluations)
+      class(rk_system_t), intent(inout) :: system
+      integer, intent(in) :: n
+      real(wp), intent(in) :: tau, hh, y0(n), atol(n), rtol
+      real(wp), intent(inout) :: k(n, *)
+      real(wp), intent(out) :: y_stage(n), y_new(n)
+      logical, intent(in) :: with_error
+      real(wp), intent(out) :: err
+      logical, intent(out) :: finite
+      integer(int64), intent(inout) :: n_evaluations
+      real(wp) :: sk(n)
+      err = 0.0_wp
+      y_stage(:) = y0 + hh*p5_a21*k(:, 1)
+      call system%rhs(tau + p5_c2*hh, y_stage, k(:, 2)); if (nonfinite(2)) return
+      y_stage(:) = y0 + hh*(p5_a31*k(:, 1) + p5_a32*k(:, 2))
+      call system%rhs(tau + p5_c3*hh, y_stage, k(:, 3)); if (nonfinite(3)) return
+      y_stage(:) = y0 + hh*(p5_a41*k(:, 1) + p5_a42*k(:, 2) + p5_a43*k(:, 3))
+      call system%rhs(tau + p5_c4*hh, y_stage, k(:, 4)); if (nonfinite(4)) return
+      y_stage(:) = y0 + hh*(p5_a51*k(:, 1) + p5_a52*k(:, 2) + p5_a53*k(:, 3) + p5_a54*k(:, 4))
+      call system%rhs(tau + p5_c5*hh, y_stage, k(:, 5)); if (nonfinite(5)) return
+      y_stage(:) = y0 + hh*(p5_a61*k(:, 1) + p5_a62*k(:, 2) + p5_a63*k(:, 3) + p5_a64*k(:, 4) &
+                         + p5_a65*k(:, 5))
+      call system%rhs(tau + hh, y_stage, k(:, 6)); if (nonfinite(6)) return
+      y_new(:) = y0 + hh*(p5_a71*k(:, 1) + p5_a73*k(:, 3) + p5_a74*k(:, 4) + p5_a75*k(:, 5) &
+                       + p5_a76*k(:, 6))
+      ! stage 7 is f at the new point: first stage of the next step (FSAL)
+      call system%rhs(tau + hh, y_new, k(:, 7)); if (nonfinite(7)) return
+      if (with_error) then
+         sk(:) = atol + rtol*max(abs(y0), abs(y_new))
+         y_stage(:) = hh*(p5_e1*k(:, 1) + p5_e3*k(:, 3) + p5_e4*k(:, 4) + p5_e5*k(:, 5) &
+                       + p5_e6*k(:, 6) + p5_e7*k(:, 7))
+         err = sqrt(sum((y_stage/sk)**2)/n)
+      end if
+   contains
+      !> Count the evaluation of stage j and say whether it failed (|f| <= huge is false
+      !> for NaN and ±Inf: one compare per component).
+      logical function nonfinite(j)
+         integer, intent(in) :: j
+         n_evaluations = n_evaluations + 1
+         finite = all(abs(k(1:n, j)) <= huge(1.0_wp))
+         nonfinite = .not. finite
+      end function nonfinite
+   end subroutine dopri5_kernel
+
+   !> One trial step of size hh from (tau, y0): the stages into k, the new state into y_new
+   !> and, with `with_error`, Hairer's scaled error norm. Module level with explicit-shape
+   !> arrays (no host association, no descriptors) because this is the integrator's inner
+   !> loop; `finite` is false as soon as a derivative is not finite (nothing more is done).
+   subroutine dop853_kernel(system, n, tau, hh, y0, k, y_stage, y_new, atol, rtol, with_error, err, finite, n_evaluations)
+      class(rk_system_t), intent(inout) :: system
+      integer, intent(in) :: n
+      real(wp), intent(in) :: tau, hh, y0(n), atol(n), rtol
+      real(wp), intent(inout) :: k(n, *)
+      real(wp), intent(out) :: y_stage(n), y_new(n)
+      logical, intent(in) :: with_error
+      real(wp), intent(out) :: err
+      logical, intent(out) :: finite
+      integer(int64), intent(inout) :: n_evaluations
+      real(wp) :: sk(n), err5, err3, deno
+      err = 0.0_wp
+      y_stage(:) = y0 + hh*p8_a21*k(:, 1)
+      call system%rhs(tau + p8_c2*hh, y_stage, k(:, 2)); if (nonfinite(2)) return
+      y_stage(:) = y0 + hh*(p8_a31*k(:, 1) + p8_a32*k(:, 2))
+      call system%rhs(tau + p8_c3*hh, y_stage, k(:, 3)); if (nonfinite(3)) return
+      y_stage(:) = y0 + hh*(p8_a41*k(:, 1) + p8_a43*k(:, 3))
+      call system%rhs(tau + p8_c4*hh, y_stage, k(:, 4)); if (nonfinite(4)) return
+      y_stage(:) = y0 + hh*(p8_a51*k(:, 1) + p8_a53*k(:, 3) + p8_a54*k(:, 4))
+      call system%rhs(tau + p8_c5*hh, y_stage, k(:, 5)); if (nonfinite(5)) return
+      y_stage(:) = y0 + hh*(p8_a61*k(:, 1) + p8_a64*k(:, 4) + p8_a65*k(:, 5))
+      call system%rhs(tau + p8_c6*hh, y_stage, k(:, 6)); if (nonfinite(6)) return
+      y_stage(:) = y0 + hh*(p8_a71*k(:, 1) + p8_a74*k(:, 4) + p8_a75*k(:, 5) + p8_a76*k(:, 6))
+      call system%rhs(tau + p8_c7*hh, y_stage, k(:, 7)); if (nonfinite(7)) return
+      y_stage(:) = y0 + hh*(p8_a81*k(:, 1) + p8_a84*k(:, 4) + p8_a85*k(:, 5) + p8_a86*k(:, 6) &
+                         + p8_a87*k(:, 7))
+      call system%rhs(tau + p8_c8*hh, y_stage, k(:, 8)); if (nonfinite(8)) return
+      y_stage(:) = y0 + hh*(p8_a91*k(:, 1) + p8_a94*k(:, 4) + p8_a95*k(:, 5) + p8_a96*k(:, 6) &
+                         + p8_a97*k(:, 7) + p8_a98*k(:, 8))
+      call system%rhs(tau + p8_c9*hh, y_stage, k(:, 9)); if (nonfinite(9)) return
+      y_stage(:) = y0 + hh*(p8_a101*k(:, 1) + p8_a104*k(:, 4) + p8_a105*k(:, 5) + p8_a106*k(:, 6) &
+                         + p8_a107*k(:, 7) + p8_a108*k(:, 8) + p8_a109*k(:, 9))
+      call system%rhs(tau + p8_c10*hh, y_stage, k(:, 10)); if (nonfinite(10)) return
+      y_stage(:) = y0 + hh*(p8_a111*k(:, 1) + p8_a114*k(:, 4) + p8_a115*k(:, 5) + p8_a116*k(:, 6) &
+                         + p8_a117*k(:, 7) + p8_a118*k(:, 8) + p8_a119*k(:, 9) + p8_a1110*k(:, 10))
+      call system%rhs(tau + p8_c11*hh, y_stage, k(:, 11)); if (nonfinite(11)) return
+      y_stage(:) = y0 + hh*(p8_a121*k(:, 1) + p8_a124*k(:, 4) + p8_a125*k(:, 5) + p8_a126*k(:, 6) &
+                         + p8_a127*k(:, 7) + p8_a128*k(:, 8) + p8_a129*k(:, 9) + p8_a1210*k(:, 10) &
+                         + p8_a1211*k(:, 11))
+      call system%rhs(tau + hh, y_stage, k(:, 12)); if (nonfinite(12)) return
+      ! the 8th-order solution; k(:, 13) is kept for the increment b·k
+      k(:, 13) = p8_b1*k(:, 1) + p8_b6*k(:, 6) + p8_b7*k(:, 7) + p8_b8*k(:, 8) + p8_b9*k(:, 9) &
+                 + p8_b10*k(:, 10) + p8_b11*k(:, 11) + p8_b12*k(:, 12)
+      y_new(:) = y0 + hh*k(:, 13)
+      if (with_error) then
+         ! Hairer's combined estimate err5²/sqrt(err5² + 0.01·err3²) (dop853.f, ERROR ESTIMATION)
+         sk(:) = atol + rtol*max(abs(y0), abs(y_new))
+         err3 = sum(((k(:, 13) - p8_bhh1*k(:, 1) - p8_bhh2*k(:, 9) - p8_bhh3*k(:, 12))/sk)**2)
+         err5 = sum(((p8_er1*k(:, 1) + p8_er6*k(:, 6) + p8_er7*k(:, 7) + p8_er8*k(:, 8) &
+                      + p8_er9*k(:, 9) + p8_er10*k(:, 10) + p8_er11*k(:, 11) + p8_er12*k(:, 12))/sk)**2)
+         deno = err5 + 0.01_wp*err3
+         if (deno <= 0.0_wp) deno = 1.0_wp
+         err = abs(hh)*err5*sqrt(1.0_wp/(n*deno))
+      end if
+   contains
+      !> Count the evaluation of stage j and say whether it failed (|f| <= huge is false
+      !> for NaN and ±Inf: one compare per component).
+      logical function nonfinite(j)
+         integer, intent(in) :: j
+         n_evaluations = n_evaluations + 1
+         finite = all(abs(k(1:n, j)) <= huge(1.0_wp))
+         nonfinite = .not. finite
+      end function nonfinite
+   end subroutine dop853_kernel
 end module hillstab_rk

@@ -13,7 +13,7 @@
 !> towards α → π²); the file is written once all are done, curve by curve.
 module hillstab_task_boundaries
    use hillstab_kinds, only: wp, version_string
-   use hillstab_error, only: error_t, set_error, err_io, err_points_failed
+   use hillstab_error, only: error_t, set_error, err_io, err_input, err_points_failed
    use hillstab_status, only: status_ok, status_roundoff, status_failed
    use hillstab_coefficient, only: model_elastic, in_physical_domain, sampling_name
    use hillstab_monodromy, only: method_name, method_formula, method_segments
@@ -39,8 +39,11 @@ module hillstab_task_boundaries
       real(wp) :: beta_error = 0.0_wp    !! error estimate of beta
       integer :: modes = 0               !! exact: modes of the truncation; approximate: pieces
       real(wp) :: beta_gsl = 0.0_wp      !! mathieu: GSL's value (beta when unavailable)
-      logical :: gsl_ok = .false.  !! mathieu: beta_gsl is GSL's value
+      integer :: gsl_ok = 0              !! 1 GSL agrees, 0 GSL not used here, 2 GSL disagrees with Hill
    end type boundary_row_t
+
+   !> GSL's value counts as agreeing with Hill's when within this times max(1, |β|).
+   real(wp), parameter :: gsl_agreement = 1.0e-8_wp
 
    !> The rows of one α.
    type :: alpha_rows_t
@@ -75,6 +78,7 @@ contains
       type(boundary_check_t) :: check
       type(error_t), allocatable :: cause
       integer :: i, j
+      logical :: available
       if (exact_method(scene)) then
          call hill_boundaries(scene%model, alpha, scene%chart%beta_min, scene%chart%beta_max, &
                               scene%method%tolerance, curves, error)
@@ -104,8 +108,15 @@ contains
                rows(i)%status = status_roundoff
             end if
             if (scene%model /= model_elastic) then
-               call mathieu_witness(curves(i)%order, curves(i)%parity, alpha, rows(i)%beta_gsl, rows(i)%gsl_ok)
-               if (.not. rows(i)%gsl_ok) rows(i)%beta_gsl = rows(i)%beta
+               call mathieu_witness(curves(i)%order, curves(i)%parity, alpha, rows(i)%beta_gsl, available)
+               if (.not. available) then
+                  rows(i)%gsl_ok = 0
+                  rows(i)%beta_gsl = rows(i)%beta
+               else if (abs(rows(i)%beta_gsl - rows(i)%beta) <= gsl_agreement*max(1.0_wp, abs(rows(i)%beta))) then
+                  rows(i)%gsl_ok = 1
+               else
+                  rows(i)%gsl_ok = 2   ! GSL computed a value that disagrees with Hill's method: flagged
+               end if
             end if
          end do
       else
@@ -151,6 +162,11 @@ contains
       character(len=:), allocatable :: line, first_message
       type(error_t), allocatable :: cause
       real(wp) :: first_failure(2)
+      if (scene%epsilon > 0.0_wp) then   ! damping from &physical kappa
+         call set_error(error, err_input, scene%source//": &physical: kappa: task 'boundaries' draws the "// &
+            "undamped curves: kappa must be 0")
+         return
+      end if
       call open_output(file, scene%output//"_"//task_name(scene%task)//".dat", cause)
       if (allocated(cause)) then
          call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
@@ -276,7 +292,7 @@ contains
          merge(1, 0, r%coexistent), r%status
       line = format_es(r%alpha, 16)//" "//format_es(r%beta, 16)//" "//trim(adjustl(ints))//" "// &
              format_es(r%check, 16)//" "//format_es(r%beta_error, 3)//" "//integer_text(r%modes)
-      if (mathieu) line = line//" "//format_es(r%beta_gsl, 16)//" "//merge("1", "0", r%gsl_ok)
+      if (mathieu) line = line//" "//format_es(r%beta_gsl, 16)//" "//integer_text(r%gsl_ok)
    end function row_text
 
    !> Header: version, scene (repeatable), model, method, columns explained.
@@ -320,8 +336,9 @@ contains
          "at the point (approximate: S_method)"
       n = n + 1; text(n) = "beta_error: estimated error of beta; modes: Fourier modes of the truncation (approximate: pieces)"
       if (scene%model /= model_elastic) then
-         n = n + 1; text(n) = "beta_gsl: (pi^2/4) a_n or b_n(2 nu/pi^2) by GSL, gsl_ok = 1 when GSL is trusted "// &
-            "(order <= 60, |q| <= "//real_text(gsl_witness_max_q)//"), else beta_gsl = beta"
+         n = n + 1; text(n) = "beta_gsl: (pi^2/4) a_n or b_n(2 nu/pi^2) by GSL; gsl_ok: 1 agrees with Hill's method within "// &
+            real_text(gsl_agreement)//"*max(1,|beta|), 2 disagrees (a GSL failure), 0 not used (order > 60 or |q| > "// &
+            real_text(gsl_witness_max_q)//"; beta_gsl = beta)"
       end if
       if (.not. (in_physical_domain(scene%chart%alpha_min, scene%chart%beta_min) .and. &
                  in_physical_domain(scene%chart%alpha_max, scene%chart%beta_max))) then

@@ -36,7 +36,8 @@ module hillstab_tasks
    use hillstab_task_boundaries, only: run_boundaries
    use hillstab_format, only: format_es
    use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, &
-      write_text, chart_columns, chart_line, failed_chart_line, chart_line_length, real_columns
+      write_text, write_records, chart_line_length, real_columns, n_chart_columns, chart_values, failed_chart_values, &
+      chart_text, chart_columns_text, default_chart_columns, find_chart_columns
    use, intrinsic :: iso_fortran_env, only: error_unit
    use, intrinsic :: iso_c_binding, only: c_int
    !$ use omp_lib, only: omp_get_max_threads
@@ -44,7 +45,7 @@ module hillstab_tasks
    private
    public :: run_scene_file, run_scene, output_path
    ! the pieces a distributed driver (hillstab_batch, the MPI program) shares with the serial tasks
-   public :: chart_row, compute_points, chart_header, open_scene_output, check_method_runs, warn_inaccurate, &
+   public :: scene_columns, chart_row, compute_points, chart_header, open_scene_output, check_method_runs, warn_inaccurate, &
       failed_points_error, progress_t, progress_begin, progress_update, progress_end
 
    !> Progress on stderr for runs longer than about a second.
@@ -110,11 +111,15 @@ contains
       end select
    end subroutine run_scene
 
-   !> `<output>_<task>.dat`.
+   !> `<output>_<task>.dat` (`.bin` for format = 'binary').
    pure function output_path(scene) result(path)
       type(scene_t), intent(in) :: scene  !! the scene
       character(len=:), allocatable :: path
-      path = scene%output//"_"//task_name(scene%task)//".dat"
+      if (scene%binary) then
+         path = scene%output//"_"//task_name(scene%task)//".bin"
+      else
+         path = scene%output//"_"//task_name(scene%task)//".dat"
+      end if
    end function output_path
 
    !> Floquet data of one point; `error` only when the point failed.
@@ -176,7 +181,7 @@ contains
       type(output_file_t), intent(out) :: file  !! the open temporary output file
       type(error_t), allocatable, intent(out) :: error  !! err_io naming &scene output
       type(error_t), allocatable :: cause
-      call open_output(file, output_path(scene), cause)
+      call open_output(file, output_path(scene), cause, binary=scene%binary)
       if (allocated(cause)) call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
    end subroutine open_scene_output
 
@@ -200,6 +205,28 @@ contains
          lines = common
       end if
    end function common_header
+
+   !> The columns a chart or points file of this scene holds: `&scene columns` when given,
+   !> else all the task offers (`default_chart_columns`).
+   subroutine scene_columns(scene, ids, error)
+      type(scene_t), intent(in) :: scene  !! a chart or points scene
+      integer, allocatable, intent(out) :: ids(:)  !! indices into hillstab_output's chart_column_names, in file order
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming &scene columns when a name is not offered
+      integer, allocatable :: available(:)
+      character(len=:), allocatable :: bad
+      available = default_chart_columns(scene%epsilon > 0.0_wp, scene%model == model_elastic, scene%physical)
+      if (len_trim(scene%columns) == 0) then
+         ids = available
+         return
+      end if
+      call find_chart_columns(scene%columns, available, ids, bad)
+      if (len(bad) > 0) then
+         call set_error(error, err_input, scene%source//": &scene: columns: '"//bad//"' is not a column of this "// &
+            "file or is named twice (available: "//chart_columns_text(available)//")")
+      else if (size(ids) == 0) then
+         call set_error(error, err_input, scene%source//": &scene: columns: no column named")
+      end if
+   end subroutine scene_columns
 
    !> Header lines of a scene given in physical units: the conversions used.
    function physical_header(scene) result(lines)
@@ -315,9 +342,10 @@ contains
       real(wp) :: alpha
       real(wp), allocatable :: all_betas(:)
       character(len=23), allocatable :: beta_texts(:)
-      logical :: stopped
+      logical :: stopped, stop_now
       character(len=chart_line_length), allocatable :: block_lines(:, :, :)
-      integer, allocatable :: block_status(:, :, :), statuses(:)
+      integer, allocatable :: block_status(:, :, :), statuses(:), ids(:)
+      real(wp), allocatable :: block_values(:, :, :, :), values(:, :)
       integer(int64) :: n_inaccurate, n_failed
       real(wp) :: first_inaccurate(2), first_failed(2)
       integer :: group, n_groups, g
@@ -326,6 +354,8 @@ contains
       n_alpha = scene%chart%n_alpha
       n_beta = scene%chart%n_beta
       damped = scene%epsilon > 0.0_wp
+      call scene_columns(scene, ids, error)
+      if (allocated(error)) return
       ! an unwritable output path fails before any computing
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
@@ -341,8 +371,8 @@ contains
       end do
       outside = .not. (in_physical_domain(scene%chart%alpha_min, scene%chart%beta_min) .and. &
                        in_physical_domain(scene%chart%alpha_max, scene%chart%beta_max))
-      call write_header(file, chart_header(scene, outside), &
-         chart_columns(damped, scene%model == model_elastic, scene%physical), error)
+      call write_header(file, chart_header(scene, outside), chart_columns_text(ids), error, &
+                        names_line=scene%names_line, records=[n_beta, n_alpha])
       if (allocated(error)) then
          call discard_output(file)
          return
@@ -359,16 +389,22 @@ contains
          ! memory stays bounded however large the chart
          group = 8*max_threads()
          n_groups = (n_alpha + group - 1)/group
-         allocate (block_lines(n_beta, group, 0:1), block_status(n_beta, group, 0:1))
-         !$omp parallel default(shared) private(g, i, alpha)
+         allocate (block_lines(n_beta, group, 0:1), block_status(n_beta, group, 0:1), &
+                   block_values(size(ids), n_beta, group, 0:1))
+         !$omp parallel default(shared) private(g, i, alpha, stop_now)
          do g = 1, n_groups + 1
-            if (stopped) exit   ! the same value in every thread: read after a barrier
+            ! every thread takes the same decision: stopped is read between two barriers
+            ! (it is written only inside the single below)
+            !$omp barrier
+            stop_now = stopped
+            !$omp barrier
+            if (stop_now) exit
             if (g > 1) then
                !$omp single
                do i = (g - 2)*group + 1, min(n_alpha, (g - 1)*group)
                   alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i)
                   call finish_row(i, alpha, block_lines(:, i - (g - 2)*group, mod(g - 1, 2)), &
-                     block_status(:, i - (g - 2)*group, mod(g - 1, 2)))
+                     block_values(:, :, i - (g - 2)*group, mod(g - 1, 2)), block_status(:, i - (g - 2)*group, mod(g - 1, 2)))
                   if (stopped) exit
                end do
                !$omp end single nowait
@@ -377,8 +413,9 @@ contains
                !$omp do schedule(dynamic)
                do i = (g - 1)*group + 1, min(n_alpha, g*group)
                   alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i)
-                  call compute_row(scene, alpha, all_betas, damped, block_lines(:, i - (g - 1)*group, mod(g, 2)), &
-                     block_status(:, i - (g - 1)*group, mod(g, 2)), beta_texts=beta_texts)
+                  call compute_row(scene, ids, alpha, all_betas, block_lines(:, i - (g - 1)*group, mod(g, 2)), &
+                     block_values(:, :, i - (g - 1)*group, mod(g, 2)), block_status(:, i - (g - 1)*group, mod(g, 2)), &
+                     beta_texts=beta_texts)
                end do
                !$omp end do
             else
@@ -388,11 +425,11 @@ contains
          !$omp end parallel
       else
          ! few rows: the points of each row in parallel chunks sharing the prepared meshes
-         allocate (lines(n_beta), statuses(n_beta))
+         allocate (lines(n_beta), statuses(n_beta), values(size(ids), n_beta))
          do i = 1, n_alpha
             alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i)
-            call compute_row_in_chunks(scene, alpha, all_betas, damped, lines, statuses, beta_texts)
-            call finish_row(i, alpha, lines, statuses)
+            call compute_row_in_chunks(scene, ids, alpha, all_betas, lines, values, statuses, beta_texts)
+            call finish_row(i, alpha, lines, values, statuses)
             if (stopped) exit
          end do
       end if
@@ -407,15 +444,20 @@ contains
       call failed_points_error(scene, n_failed, int(n_alpha, int64)*n_beta, first_failed, error)
    contains
       !> Write a computed row (in order) and count its round-off limited and failed points.
-      subroutine finish_row(i, alpha, lines, statuses)
+      subroutine finish_row(i, alpha, lines, values, statuses)
          integer, intent(in) :: i
          real(wp), intent(in) :: alpha
-         character(len=*), intent(in) :: lines(:)
+         character(len=*), intent(in) :: lines(:)  !! text: the row's lines
+         real(wp), intent(in) :: values(:, :)      !! binary: the row's records
          integer, intent(in) :: statuses(:)
-         ! blocks of constant alpha, separated by one blank line (gnuplot pm3d/image),
-         ! written as one record per block: one write statement per line costs more
-         ! than a point of method auto
-         call write_block(file, lines, i > 1, error)
+         if (scene%binary) then
+            call write_records(file, values, error)
+         else
+            ! blocks of constant alpha, separated by one blank line (gnuplot pm3d/image),
+            ! written as one record per block: one write statement per line costs more
+            ! than a point of method auto
+            call write_block(file, lines, i > 1, error)
+         end if
          if (allocated(error)) then
             stopped = .true.
             return
@@ -432,12 +474,14 @@ contains
       end subroutine finish_row
    end subroutine run_chart
 
-   !> Lines (and statuses) of the chart points (α, β_j) of one row or part of a row.
-   subroutine compute_row(scene, alpha, betas, damped, lines, statuses, plan, beta_texts)
+   !> Text lines or binary records (and statuses) of the chart points (α, β_j) of one row
+   !> or part of a row, with the columns `ids`.
+   subroutine compute_row(scene, ids, alpha, betas, lines, values, statuses, plan, beta_texts)
       type(scene_t), intent(in) :: scene
+      integer, intent(in) :: ids(:)  !! the columns (hillstab_output's chart_column_names)
       real(wp), intent(in) :: alpha, betas(:)
-      logical, intent(in) :: damped
-      character(len=*), intent(out) :: lines(:)
+      character(len=*), intent(inout) :: lines(:)  !! text format: one line a point
+      real(wp), intent(inout) :: values(:, :)      !! binary format: (columns, points)
       !> status_ok, status_roundoff (computed only to the round-off level) or status_failed
       integer, intent(out) :: statuses(:)
       type(batch_plan_t), intent(in), optional :: plan  !! prepared for the whole row
@@ -447,14 +491,13 @@ contains
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
       type(hill_model_t) :: row
-      real(wp), allocatable :: per_second
-      logical :: elastic
+      real(wp) :: v(n_chart_columns), per_second
       logical :: failed(size(betas)), inaccurate(size(betas))
       integer :: j
-      ! ω/π turns a rate per unit τ into a rate per second; left unallocated (an absent
-      ! optional argument of chart_line: no mu_per_s column) when the scene does not know ω
+      ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
+      ! when the scene knows ω)
+      per_second = 0.0_wp
       if (scene%physical) per_second = scene%pendulum%omega/pi
-      elastic = scene%model == model_elastic
       row = hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon)
       call monodromy_trace_batch(row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate)
       alpha_text = format_es(alpha, 16)
@@ -462,22 +505,17 @@ contains
       where (failed) statuses = status_failed
       do j = 1, size(betas)
          if (failed(j)) then
-            if (present(beta_texts)) then
-               lines(j) = failed_chart_line(alpha, betas(j), damped, in_physical_domain(alpha, betas(j)), &
-                                            status_failed, alpha_text, beta_texts(j), elastic, per_second)
-            else
-               lines(j) = failed_chart_line(alpha, betas(j), damped, in_physical_domain(alpha, betas(j)), &
-                                            status_failed, alpha_text, elastic=elastic, per_second=per_second)
-            end if
-            cycle
-         end if
-         f = floquet_from_trace(traces(j), scene%epsilon, scene%method%tolerance)
-         if (present(beta_texts)) then
-            lines(j) = chart_line(alpha, betas(j), f, damped, in_physical_domain(alpha, betas(j)), statuses(j), &
-                                  alpha_text, beta_texts(j), elastic=elastic, per_second=per_second)
+            v = failed_chart_values(alpha, betas(j), in_physical_domain(alpha, betas(j)), status_failed)
          else
-            lines(j) = chart_line(alpha, betas(j), f, damped, in_physical_domain(alpha, betas(j)), statuses(j), &
-                                  alpha_text, elastic=elastic, per_second=per_second)
+            f = floquet_from_trace(traces(j), scene%epsilon, scene%method%tolerance)
+            v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second)
+         end if
+         if (scene%binary) then
+            values(:, j) = v(ids)
+         else if (present(beta_texts)) then
+            lines(j) = chart_text(ids, v, alpha_text, beta_texts(j))
+         else
+            lines(j) = chart_text(ids, v, alpha_text)
          end if
       end do
    end subroutine compute_row
@@ -491,11 +529,12 @@ contains
 
    !> `compute_row` on a whole row, split into chunks computed in parallel that share
    !> the meshes prepared for the row.
-   subroutine compute_row_in_chunks(scene, alpha, betas, damped, lines, statuses, beta_texts)
+   subroutine compute_row_in_chunks(scene, ids, alpha, betas, lines, values, statuses, beta_texts)
       type(scene_t), intent(in) :: scene
+      integer, intent(in) :: ids(:)  !! the columns
       real(wp), intent(in) :: alpha, betas(:)
-      logical, intent(in) :: damped
-      character(len=*), intent(out) :: lines(:)
+      character(len=*), intent(inout) :: lines(:)  !! text format: one line a point
+      real(wp), intent(inout) :: values(:, :)      !! binary format: (columns, points)
       integer, intent(out) :: statuses(:)
       character(len=23), intent(in) :: beta_texts(:)
       type(batch_plan_t) :: plan
@@ -508,66 +547,76 @@ contains
       do c = 1, n_chunks
          first = (c - 1)*chunk + 1
          last = min(n, c*chunk)
-         call compute_row(scene, alpha, betas(first:last), damped, lines(first:last), statuses(first:last), &
-            plan, beta_texts(first:last))
+         call compute_row(scene, ids, alpha, betas(first:last), lines(first:last), values(:, first:last), &
+            statuses(first:last), plan, beta_texts(first:last))
       end do
       !$omp end parallel do
    end subroutine compute_row_in_chunks
 
-   !> Lines of row `i` of a chart scene (α = the i-th grid value, all β), computed exactly as
-   !> the chart task computes them, so that a driver computing rows elsewhere writes the
-   !> same file.
+   !> Text lines of row `i` of a chart scene (α = the i-th grid value, all β) with the
+   !> scene's columns, computed exactly as the chart task computes them, so that a driver
+   !> computing rows elsewhere writes the same file (format = 'text').
    subroutine chart_row(scene, i, lines, statuses)
       type(scene_t), intent(in) :: scene  !! a chart scene
       integer, intent(in) :: i            !! row index, 1 … n_alpha
       character(len=*), intent(out) :: lines(:)  !! n_beta lines of `chart_line_length` characters
       integer, intent(out) :: statuses(:)  !! per point: status_ok, status_roundoff or status_failed
-      real(wp), allocatable :: betas(:)
+      real(wp), allocatable :: betas(:), values(:, :)
       character(len=23), allocatable :: beta_texts(:)
+      integer, allocatable :: ids(:)
+      type(error_t), allocatable :: error
       real(wp) :: alpha
       integer :: j, n_beta
+      call scene_columns(scene, ids, error)  ! checked when the scene was read
+      if (allocated(error)) ids = default_chart_columns(scene%epsilon > 0.0_wp, scene%model == model_elastic, &
+                                                        scene%physical)
       n_beta = scene%chart%n_beta
       betas = [(grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j), j=1, n_beta)]
-      allocate (beta_texts(n_beta))
+      allocate (beta_texts(n_beta), values(size(ids), n_beta))
       do j = 1, n_beta
          beta_texts(j) = format_es(betas(j), 16)
       end do
       alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, scene%chart%n_alpha, i)
       if (rows_in_parallel(scene)) then
-         call compute_row(scene, alpha, betas, scene%epsilon > 0.0_wp, lines, statuses, beta_texts=beta_texts)
+         call compute_row(scene, ids, alpha, betas, lines, values, statuses, beta_texts=beta_texts)
       else
-         call compute_row_in_chunks(scene, alpha, betas, scene%epsilon > 0.0_wp, lines, statuses, beta_texts)
+         call compute_row_in_chunks(scene, ids, alpha, betas, lines, values, statuses, beta_texts)
       end if
    end subroutine chart_row
 
-   !> Lines of the points `first` … `last` of a points scene (in parallel); a failed point
-   !> gets its placeholder line.
-   subroutine compute_points(scene, first, last, lines, statuses)
+   !> Text lines (with the scene's columns) or records `values` of the points `first` …
+   !> `last` of a points scene (in parallel); a failed point gets its placeholders.
+   subroutine compute_points(scene, first, last, lines, statuses, values)
       type(scene_t), intent(in) :: scene  !! a points scene
       integer, intent(in) :: first, last  !! range of point indices
       character(len=*), intent(out) :: lines(first:)  !! one chart line per point
       integer, intent(out) :: statuses(first:)  !! per point: status_ok, status_roundoff or status_failed
+      !> the same points as records (columns, points), for format = 'binary'
+      real(wp), intent(out), optional :: values(:, first:)
       type(floquet_t) :: f
       type(error_t), allocatable :: cause
-      real(wp), allocatable :: per_second
-      logical :: damped
+      real(wp) :: per_second, v(n_chart_columns)
+      integer, allocatable :: ids(:)
       integer :: k
-      ! ω/π turns a rate per unit τ into a rate per second; left unallocated (an absent
-      ! optional argument of chart_line: no mu_per_s column) when the scene does not know ω
+      call scene_columns(scene, ids, cause)  ! checked when the scene was read
+      if (allocated(cause)) ids = default_chart_columns(scene%epsilon > 0.0_wp, scene%model == model_elastic, &
+                                                        scene%physical)
+      ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
+      ! when the scene knows ω)
+      per_second = 0.0_wp
       if (scene%physical) per_second = scene%pendulum%omega/pi
-      damped = scene%epsilon > 0.0_wp
-      !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause)
+      !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause, v)
       do k = first, last
          call evaluate_point(scene, scene%points(1, k), scene%points(2, k), f, cause, statuses(k))
          if (statuses(k) == status_failed) then
-            lines(k) = failed_chart_line(scene%points(1, k), scene%points(2, k), damped, &
-                                         in_physical_domain(scene%points(1, k), scene%points(2, k)), status_failed, &
-                                         elastic=scene%model == model_elastic, per_second=per_second)
+            v = failed_chart_values(scene%points(1, k), scene%points(2, k), &
+                                    in_physical_domain(scene%points(1, k), scene%points(2, k)), status_failed)
          else
-            lines(k) = chart_line(scene%points(1, k), scene%points(2, k), f, damped, &
-                                  in_physical_domain(scene%points(1, k), scene%points(2, k)), statuses(k), &
-                                  elastic=scene%model == model_elastic, per_second=per_second)
+            v = chart_values(scene%points(1, k), scene%points(2, k), f, &
+                             in_physical_domain(scene%points(1, k), scene%points(2, k)), statuses(k), per_second)
          end if
+         if (present(values)) values(:, k) = v(ids)
+         lines(k) = chart_text(ids, v)
       end do
       !$omp end parallel do
    end subroutine compute_points
@@ -600,21 +649,26 @@ contains
       integer, allocatable :: statuses(:)
       logical :: damped
       integer :: k, n
+      integer, allocatable :: ids(:)
+      real(wp), allocatable :: values(:, :)
 
       n = size(scene%points, 2)
       damped = scene%epsilon > 0.0_wp
+      call scene_columns(scene, ids, error)
+      if (allocated(error)) return
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
-      allocate (lines(n), statuses(n))
+      allocate (lines(n), statuses(n), values(size(ids), n))
       statuses = status_ok
       call progress_begin(progress, int(n, int64), quiet)
-      call compute_points(scene, 1, n, lines, statuses)
+      call compute_points(scene, 1, n, lines, statuses, values)
       call progress_update(progress, int(n, int64))
       call progress_end(progress)
       call write_header(file, chart_header(scene, .not. all(in_physical_domain(scene%points(1, :), &
-         scene%points(2, :)))), chart_columns(damped, scene%model == model_elastic, scene%physical), error)
+         scene%points(2, :)))), chart_columns_text(ids), error, names_line=scene%names_line, records=[n, 1])
+      if (scene%binary .and. .not. allocated(error)) call write_records(file, values, error)
       do k = 1, n
-         if (allocated(error)) exit
+         if (allocated(error) .or. scene%binary) exit
          call write_text(file, trim(lines(k)), error)
       end do
       if (allocated(error)) then

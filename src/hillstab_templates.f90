@@ -177,8 +177,16 @@ contains
          item("epsilon = "//real_text(scene%epsilon), "damping eps = kappa pi/omega of eqs. (46)-(47); >= 0")// &
          item("! output = 'run1'", &
               "prefix: files are <output>_<task>.dat, relative to the current directory; "// &
-              "default: the scene file's name without directory and extension")// &
-         "/"//nl
+              "default: the scene file's name without directory and extension")
+      if (task == "chart" .or. task == "points") then
+         text = text// &
+            item("columns = ''", "columns to write, e.g. 'alpha beta stable mu'; '' = all (see the # columns: line)")// &
+            item("format = 'text'", "text | binary (float64 records after the # header, <output>_<task>.bin; "// &
+                 "the header gives the gnuplot and numpy commands)")// &
+            item("names_line = .false.", "text: .true. adds an uncommented line of column names after the "// &
+                 "# header, for gnuplot using 'alpha':'mu'")
+      end if
+      text = text//"/"//nl
    end function scene_group
 
    !> `&chart`.

@@ -14,6 +14,7 @@ program tester
    use test_tasks, only: collect_tasks
    use test_format, only: collect_format
    use test_auto, only: collect_auto
+   use test_output, only: collect_output
    use test_batch, only: collect_batch
    use test_lyapunov, only: collect_lyapunov
    use test_poincare, only: collect_poincare
@@ -36,7 +37,7 @@ program tester
              collect_units(), collect_pendulum(), collect_hill_method(), collect_templates(), &
              collect_batch(), collect_boundaries(), collect_task_boundaries(), &
              collect_lyapunov(), collect_poincare(), collect_task_lyapunov(), collect_task_poincare(), &
-             collect_pendulum_analysis(), collect_task_series()]
+             collect_pendulum_analysis(), collect_task_series(), collect_output()]
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

@@ -6,7 +6,7 @@
 !> curves of eq. (37) (S_formula = ±2 at every root), and the Mathieu model's GSL column.
 module test_task_boundaries
    use hillstab_kinds, only: wp, pi, pi2
-   use hillstab_error, only: error_t
+   use hillstab_error, only: error_t, err_input
    use hillstab_coefficient, only: hill_model_t, model_elastic
    use hillstab_transfer, only: trace_t
    use hillstab_monodromy, only: method_t, method_auto, monodromy_trace
@@ -27,7 +27,8 @@ contains
          new_unittest("accuracy_on_grid", accuracy_on_grid), &
          new_unittest("repeat_from_output", repeat_from_output), &
          new_unittest("paper_formula_curves", paper_formula_curves), &
-         new_unittest("mathieu_gsl_column", mathieu_gsl_column)])
+         new_unittest("mathieu_gsl_column", mathieu_gsl_column), &
+         new_unittest("damping_refused", damping_refused)])
    end function collect_task_boundaries
 
    !> Two scene lines as one array (built here: typed array constructors with
@@ -133,7 +134,7 @@ contains
       integer :: k, n_bisected
       out = scratch_prefix("bnd_accuracy")
       call run_rows("bnd_accuracy", two_lines("&scene task='boundaries', tolerance=1e-11, output='"//out//"' /", &
-         "&chart alpha_min=2.5, alpha_max=9.5, n_alpha=3, beta_min=-2, beta_max=25 /"), 11, rows, lines, error)
+         "&chart alpha_min=2.5, alpha_max=9.8, n_alpha=4, beta_min=-2, beta_max=25 /"), 11, rows, lines, error)
       call check(ctx, .not. allocated(error), "runs")
       if (allocated(error)) return
       n_bisected = 0
@@ -150,7 +151,7 @@ contains
          end if
          call check(ctx, rows(2, k), reference, abs=1.0e-9_wp, message="boundary within 1e-9")
       end do
-      call check(ctx, n_bisected >= 12, "the antiperiodic curves of orders 1 and 3 at three alphas")
+      call check(ctx, n_bisected >= 16, "the antiperiodic curves of orders 1 and 3 at four alphas")
    contains
       !> S(β) + 2 changes sign across the curve: bisection from a bracket of ±1e-6.
       real(wp) function bisect(alpha, beta)
@@ -275,4 +276,23 @@ contains
          call check(ctx, rows(12, k), rows(2, k), rel=1.0e-10_wp, abs=1.0e-10_wp, message="GSL = Hill")
       end do
    end subroutine mathieu_gsl_column
+   !> The curves are those of the undamped equation: damping from &physical kappa is
+   !> refused as bad input naming the group and variable, and no file is written.
+   subroutine damping_refused(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), allocatable :: rows(:, :)
+      character(len=1024), allocatable :: lines(:)
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out
+      logical :: exists
+      out = scratch_prefix("bnd_damped")
+      call run_rows("bnd_damped", two_lines("&scene task='boundaries', output='"//out//"' / "// &
+         "&physical omega=3, kappa=1 /", "&chart n_alpha=2 /"), 11, rows, lines, error)
+      call check(ctx, allocated(error), "refused")
+      if (.not. allocated(error)) return
+      call check(ctx, error%code == err_input, "input error")
+      call check(ctx, index(error%message, "&physical: kappa") > 0, "names &physical kappa: "//error%message)
+      inquire (file=out//"_boundaries.dat", exist=exists)
+      call check(ctx, .not. exists, "no file written")
+   end subroutine damping_refused
 end module test_task_boundaries

@@ -31,6 +31,7 @@ contains
          new_unittest("repeat_from_output", repeat_from_output), &
          new_unittest("physical_units", physical_units), &
          new_unittest("domain_notes", domain_notes), &
+         new_unittest("chosen_columns_and_binary", chosen_columns_and_binary), &
          new_unittest("bad_input_touches_nothing", bad_input_touches_nothing), &
          new_unittest("unwritable_output", unwritable_output)])
    end function collect_tasks
@@ -563,6 +564,112 @@ contains
                  "no epsilon in &scene when kappa gives it")
       call delete_file(written)
    end subroutine physical_units
+
+   !> `columns` picks and orders columns with the same text as the full file; `names_line`
+   !> adds one uncommented line of names; `format = 'binary'` writes the same values as
+   !> float64 records after a text header whose skip count is right; a binary file given
+   !> back as a scene repeats the run byte for byte after the header.
+   subroutine chosen_columns_and_binary(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: full_path, picked_path, binary_path, again, out, text
+      character(len=1024), allocatable :: full(:), picked(:)
+      real(wp), allocatable :: full_rows(:, :), picked_rows(:, :), records(:, :), records_again(:, :)
+      character(len=*), parameter :: chart = &
+         "&chart alpha_min = 1, alpha_max = 9.86, n_alpha = 3, beta_min = 0, beta_max = 11, n_beta = 4 /"
+      integer :: n_blank, k, c, header_bytes, first_data
+      logical :: numeric
+      out = scratch_prefix("columns")
+      call run_text_scene("columns1", [padded("&scene method = 'auto', output = '"//out//"_full' /"), &
+                                       padded(chart)], error, full_path)
+      call check(ctx, .not. allocated(error), "full chart")
+      if (allocated(error)) return
+      call run_text_scene("columns2", [padded("&scene method = 'auto', output = '"//out//"_picked',"), &
+                                       padded("  columns = 'mu Alpha, stable beta', names_line = .true. /"), &
+                                       padded(chart)], error, picked_path)
+      call check(ctx, .not. allocated(error), "chart with chosen columns")
+      if (allocated(error)) return
+      full = read_lines(full_path)
+      picked = read_lines(picked_path)
+      call check(ctx, columns_line(picked) == "mu alpha stable beta", "columns line: "//columns_line(picked))
+      first_data = findloc(picked(:)(1:1) == "#", .false., dim=1)
+      call check(ctx, picked(first_data) == "mu alpha stable beta", "names line after the header: "// &
+                 trim(picked(first_data)))
+      call data_rows(full, 11, full_rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(full_rows, 2) == 12, "full: 12 rows of 11")
+      call data_rows(picked(first_data + 1:), 4, picked_rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(picked_rows, 2) == 12 .and. n_blank == 2, "picked: 12 rows of 4, 3 blocks")
+      if (size(full_rows, 2) /= 12 .or. size(picked_rows, 2) /= 12) return
+      call check(ctx, all(picked_rows(1, :) == full_rows(6, :)) .and. all(picked_rows(2, :) == full_rows(1, :)) .and. &
+                 all(picked_rows(3, :) == full_rows(4, :)) .and. all(picked_rows(4, :) == full_rows(2, :)), &
+                 "the same values in the chosen order")
+      ! beta = 0 is S = 2 exactly: marginal at least at alpha = 9.86
+      call check(ctx, picked_rows(3, 9) == 0.5_wp, "marginal point at alpha = 9.86, beta = 0")
+
+      call run_text_scene("columns3", [padded("&scene method = 'auto', output = '"//out//"_bin', format = 'binary' /"), &
+                                       padded(chart)], error, binary_path)
+      call check(ctx, .not. allocated(error), "binary chart")
+      if (allocated(error)) return
+      call check(ctx, binary_path == out//"_bin_chart.bin", "binary file name")
+      call read_binary(binary_path, 11, records, header_bytes, text)
+      call check(ctx, index(text, "skip="//integer_text_of(header_bytes)//" ") > 0, &
+                 "the header states its own length: "//integer_text_of(header_bytes))
+      call check(ctx, size(records, 2) == 12, "12 records of 11")
+      if (size(records, 2) /= 12) return
+      ! the text holds 16 significant digits of alpha, beta, S, 10 of lambda_max, mu, log10_abs_S,
+      ! 3 of error_estimate; the binary file the full values
+      do k = 1, 12
+         do c = 1, 3
+            call check(ctx, records(c, k), full_rows(c, k), rel=1.0e-15_wp, abs=1.0e-300_wp, message="alpha beta S")
+         end do
+         do c = 5, 7
+            call check(ctx, records(c, k), full_rows(c, k), rel=1.0e-9_wp, abs=1.0e-300_wp, &
+                       message="lambda_max mu log10_abs_S")
+         end do
+         call check(ctx, records(10, k), full_rows(10, k), rel=1.0e-2_wp, message="error_estimate")
+         call check(ctx, all(records([4, 8, 9, 11], k) == full_rows([4, 8, 9, 11], k)), "flags and status")
+      end do
+      call run_scene_file(binary_path, .true., error, again)
+      call check(ctx, .not. allocated(error), "second run from the binary file")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      call read_binary(again, 11, records_again, header_bytes, text)
+      call check(ctx, size(records_again, 2) == 12, "same size again")
+      if (size(records_again, 2) == 12) call check(ctx, all(records_again == records), "same records again")
+      call delete_file(full_path)
+      call delete_file(picked_path)
+      call delete_file(binary_path)
+   contains
+      !> Records of a binary output file: the header ends after the `# columns:` line.
+      subroutine read_binary(path, n_columns, records, header_bytes, header)
+         character(len=*), intent(in) :: path
+         integer, intent(in) :: n_columns
+         real(wp), allocatable, intent(out) :: records(:, :)
+         integer, intent(out) :: header_bytes
+         character(len=:), allocatable, intent(out) :: header
+         integer :: unit, size_bytes, at
+         character(len=:), allocatable :: bytes
+         open (newunit=unit, file=path, access="stream", form="unformatted", status="old", action="read")
+         inquire (unit=unit, size=size_bytes)
+         allocate (character(len=size_bytes) :: bytes)
+         read (unit) bytes
+         at = index(bytes, new_line("a")//"# columns:")
+         header_bytes = at + index(bytes(at + 1:), new_line("a"))
+         header = bytes(:header_bytes)
+         allocate (records(n_columns, (size_bytes - header_bytes)/(8*n_columns)))
+         read (unit, pos=header_bytes + 1) records
+         close (unit)
+      end subroutine read_binary
+      pure function integer_text_of(n) result(t)
+         integer, intent(in) :: n
+         character(len=:), allocatable :: t
+         character(len=16) :: b
+         write (b, '(i0)') n
+         t = trim(b)
+      end function integer_text_of
+   end subroutine chosen_columns_and_binary
 
    !> The physical-domain note only where it means something: not for the Mathieu model,
    !> not for a chart starting at beta = 0 (no gravity); yes above beta = pi**2.

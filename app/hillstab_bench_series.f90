@@ -1,0 +1,215 @@
+!> Speed against error for the nonlinear pendulum of the paper's Fig. 4 (e) (α = 7.88,
+!> β = 3.95, φ0 = 0.017, r0 = 0.1 m, g = 9.81 m/s²) by hillstab's DOP853 and DOPRI5 and by
+!> GSL's rk8pd, several tolerances each. All three integrate the same right-hand side
+!> (`pendulum_rhs`) with the same absolute tolerances (`pendulum_atol`).
+!>
+!> The motion of (e) is chaotic: two converged integrations (DOP853 and rk8pd at 1e-15)
+!> part by a factor of about 10 every 2.5 radial periods and disagree at O(1) after 100.
+!> So the state is compared with the reference after 10 periods (where the two references
+!> agree to ~3e-13), and the 100-period run is judged by its energy error
+!> |E(100 T) − E(0)|/E_scale, which chaos does not amplify.
+!>
+!> Usage: hillstab_bench_series [--quick] [--periods N] [--out PREFIX]
+!> Writes PREFIX_series.dat (default PREFIX = out/bench): method, tolerance, then for the
+!> state run and the energy run the seconds per run, the error and the f-evaluations;
+!> prints the tables and the time ratios to GSL at equal error. Times are wall-clock,
+!> measured side by side in one run; compare them as ratios.
+program hillstab_bench_series
+   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
+   use hillstab_kinds, only: wp
+   use hillstab_error, only: error_t
+   use hillstab_stats, only: work_stats_t
+   use hillstab_rk, only: rk_options_t, rk_integrate, rk_dop853, rk_dopri5, rk_method_name
+   use hillstab_pendulum, only: pendulum_t, pendulum_system_t, pendulum_from_chart, pendulum_initial_state, &
+      pendulum_atol, pendulum_energy, pendulum_energy_scale
+   use hillstab_gsl_pendulum, only: pendulum_gsl
+   implicit none
+
+   integer :: n_periods = 10          !! the state run
+   integer, parameter :: energy_periods = 100
+   integer, parameter :: method_gsl = 3
+   character(len=*), parameter :: names(3) = [character(len=6) :: "dopri5", "dop853", "rk8pd"]
+   real(wp), allocatable :: tolerances(:)
+   type(pendulum_system_t) :: system
+   type(error_t), allocatable :: error
+   real(wp) :: y0(4), reference(4), check_state(4), t_end
+   real(wp), allocatable :: table_err(:, :, :), table_time(:, :, :)
+   integer(int64), allocatable :: table_evals(:, :, :)
+   integer :: measure
+   character(len=256) :: prefix, arg
+   logical :: quick
+   integer :: i, j, m, unit, ios
+   type(work_stats_t) :: stats
+
+   prefix = "out/bench"
+   quick = .false.
+   i = 1
+   do while (i <= command_argument_count())
+      call get_command_argument(i, arg)
+      select case (trim(arg))
+      case ("--quick"); quick = .true.
+      case ("--periods")
+         i = i + 1
+         call get_command_argument(i, arg)
+         read (arg, *) n_periods
+      case ("--out")
+         i = i + 1
+         call get_command_argument(i, prefix)
+      case default
+         write (error_unit, '(a)') "usage: hillstab_bench_series [--quick] [--periods N] [--out PREFIX]"
+         error stop 2
+      end select
+      i = i + 1
+   end do
+   if (quick) then
+      tolerances = [1.0e-6_wp, 1.0e-9_wp, 1.0e-12_wp]
+   else
+      tolerances = [1.0e-5_wp, 1.0e-6_wp, 1.0e-7_wp, 1.0e-8_wp, 1.0e-9_wp, 1.0e-10_wp, 1.0e-11_wp, 1.0e-12_wp, &
+                    1.0e-13_wp]
+   end if
+
+   call pendulum_from_chart(7.88_wp, 3.95_wp, 0.0_wp, 0.1_wp, 9.81_wp, system%pendulum, error)
+   if (allocated(error)) error stop "bench_series: invalid pendulum"
+   y0 = pendulum_initial_state(system%pendulum, 0.017_wp)
+   t_end = n_periods*system%pendulum%period
+
+   ! reference: DOP853 at 1e-15; its distance to GSL rk8pd at 1e-15 says how good it is
+   reference = y0
+   call run_dop(rk_dop853, 1.0e-15_wp, reference, stats)
+   check_state = y0
+   call pendulum_gsl(system%pendulum, check_state, t_end, 1.0e-15_wp, stats, error)
+   if (allocated(error)) error stop "bench_series: GSL reference failed"
+   write (output_unit, '(a,i0,a)') "# Fig. 4 (e), phi0 = 0.017: reference state after ", n_periods, " radial periods"
+   write (output_unit, '(a,es10.3)') "# reference DOP853 1e-15 vs GSL rk8pd 1e-15: scaled difference ", &
+      scaled_error(check_state)
+
+   allocate (table_err(size(tolerances), 3, 2), table_time(size(tolerances), 3, 2), &
+             table_evals(size(tolerances), 3, 2))
+   do measure = 1, 2
+      if (measure == 1) then
+         write (output_unit, '(a,i0,a)') "# state after ", n_periods, " periods: method tolerance seconds error f-evals"
+      else
+         t_end = energy_periods*system%pendulum%period
+         write (output_unit, '(a,i0,a)') "# energy after ", energy_periods, &
+            " periods: method tolerance seconds error f-evals"
+      end if
+      do j = 1, size(tolerances)
+         call time_interleaved(tolerances(j), measure, j)
+      end do
+      do m = 1, 3
+         do j = 1, size(tolerances)
+            write (output_unit, '(a8,es11.2,es12.4,es12.4,i12)') names(m), tolerances(j), table_time(j, m, measure), &
+               table_err(j, m, measure), table_evals(j, m, measure)
+         end do
+      end do
+      ! time of each hillstab integrator divided by GSL's at the same error (GSL's log-time
+      ! interpolated in log-error); > 1 means slower than GSL
+      write (output_unit, '(a)') "# time ratio to GSL rk8pd at equal error (< 1: faster than GSL; -1: outside)"
+      do m = 1, 2
+         do j = 1, size(tolerances)
+            write (output_unit, '(a8,a,es10.3,a,f7.3)') names(m), " error ", table_err(j, m, measure), ": ratio ", &
+               ratio_to_gsl(measure, table_err(j, m, measure), table_time(j, m, measure))
+         end do
+      end do
+   end do
+
+   open (newunit=unit, file=trim(prefix)//"_series.dat", status="replace", action="write", iostat=ios)
+   if (ios /= 0) error stop "bench_series: cannot write the data file"
+   write (unit, '(a,i0,a,i0,a)') "# hillstab_bench_series: Fig. 4 (e); state error after ", n_periods, &
+      " radial periods = max(|dx|, |dz|)/rho, max(|dvx|, |dvz|)/(rho omega) against DOP853 at 1e-15; "// &
+      "energy error after ", energy_periods, " periods = |E - E(0)|/E_scale"
+   write (unit, '(a)') "# one block per method (dopri5, dop853, rk8pd), blocks separated by two blank lines"
+   write (unit, '(a)') "# columns: method tolerance seconds_state error_state evaluations_state "// &
+      "seconds_energy error_energy evaluations_energy"
+   do m = 1, 3
+      do j = 1, size(tolerances)
+         write (unit, '(a,1x,es11.3,6(1x,es12.5))') trim(names(m)), tolerances(j), &
+            (table_time(j, m, measure), table_err(j, m, measure), real(table_evals(j, m, measure), wp), measure = 1, 2)
+      end do
+      write (unit, '(a)') ""
+      write (unit, '(a)') ""
+   end do
+   close (unit)
+
+contains
+
+   subroutine run_dop(method, tolerance, y, work)
+      integer, intent(in) :: method
+      real(wp), intent(in) :: tolerance
+      real(wp), intent(inout) :: y(4)
+      type(work_stats_t), intent(out) :: work
+      type(rk_options_t) :: options
+      real(wp) :: t
+      options = rk_options_t(method=method, rtol=tolerance, atol=tolerance, max_steps=huge(1))
+      options%atol_components = pendulum_atol(system%pendulum, y, tolerance)
+      t = 0.0_wp
+      call rk_integrate(system, t, t_end, y, options, work, error)
+      if (allocated(error)) error stop "bench_series: DOP integration failed"
+   end subroutine run_dop
+
+   !> max(|Δx|, |Δz|)/ρ and max(|Δx'|, |Δz'|)/(ρω) against the reference, the larger.
+   real(wp) function scaled_error(y) result(e)
+      real(wp), intent(in) :: y(4)
+      associate (p => system%pendulum)
+         e = max(maxval(abs(y(1:2) - reference(1:2)))/p%rho, maxval(abs(y(3:4) - reference(3:4)))/(p%rho*p%omega))
+      end associate
+   end function scaled_error
+
+   !> Time the three integrators at one tolerance, interleaved (one run of each per round,
+   !> so all see the same load), and keep each one's fastest run: the time of a run that
+   !> other processes did not interrupt. At least 5 rounds, then until 0.5 s or 300 rounds.
+   subroutine time_interleaved(tolerance, measure, j)
+      real(wp), intent(in) :: tolerance
+      integer, intent(in) :: measure, j
+      integer(int64) :: t0, t1, rate, start
+      integer :: rounds, method
+      real(wp) :: y(4)
+      type(work_stats_t) :: work
+      table_time(j, :, measure) = huge(1.0_wp)
+      rounds = 0
+      call system_clock(start, rate)
+      do
+         do method = 1, 3
+            y = y0
+            call system_clock(t0)
+            if (method == method_gsl) then
+               call pendulum_gsl(system%pendulum, y, t_end, tolerance, work, error)
+               if (allocated(error)) error stop "bench_series: GSL failed"
+            else
+               call run_dop(merge(rk_dopri5, rk_dop853, method == 1), tolerance, y, work)
+            end if
+            call system_clock(t1)
+            table_time(j, method, measure) = min(table_time(j, method, measure), real(t1 - t0, wp)/rate)
+            table_evals(j, method, measure) = work%n_evaluations
+            if (measure == 1) then
+               table_err(j, method, measure) = scaled_error(y)
+            else
+               table_err(j, method, measure) = abs(pendulum_energy(system%pendulum, y) &
+                  - pendulum_energy(system%pendulum, y0))/pendulum_energy_scale(system%pendulum, y0)
+            end if
+         end do
+         rounds = rounds + 1
+         if (quick .and. rounds >= 2) exit
+         if (rounds >= 5 .and. (real(t1 - start, wp)/rate > 0.5_wp .or. rounds >= 300)) exit
+      end do
+   end subroutine time_interleaved
+
+   !> This integrator's time over GSL's time at the same error.
+   real(wp) function ratio_to_gsl(measure, e, t) result(r)
+      integer, intent(in) :: measure
+      real(wp), intent(in) :: e, t
+      real(wp) :: le(size(tolerances)), lt(size(tolerances)), w, gsl_time
+      integer :: k
+      le = log(table_err(:, method_gsl, measure))
+      lt = log(table_time(:, method_gsl, measure))
+      r = -1.0_wp
+      do k = 1, size(tolerances) - 1
+         if ((log(e) - le(k))*(log(e) - le(k + 1)) <= 0.0_wp .and. le(k) /= le(k + 1)) then
+            w = (log(e) - le(k))/(le(k + 1) - le(k))
+            gsl_time = exp(lt(k) + w*(lt(k + 1) - lt(k)))
+            r = t/gsl_time
+            return
+         end if
+      end do
+   end function ratio_to_gsl
+end program hillstab_bench_series

@@ -1,0 +1,21 @@
+# out/bench_series.png from out/bench_series.dat (make bench): the nonlinear pendulum of
+# Fig. 4 (e) by hillstab's DOP853 and DOPRI5 and GSL's rk8pd. Left: error of the state
+# after 10 radial periods against time per run; right: energy error after 100 periods
+# (the motion is chaotic, so the state after 100 periods cannot be converged).
+set terminal pngcairo size 1200,520 enhanced font ",11"
+set output "out/bench_series.png"
+set multiplot layout 1,2 title "nonlinear pendulum, Fig. 4 (e): speed against error (one curve per integrator, tolerances 1e-5 ... 1e-13)"
+set logscale xy
+set format x "10^{%L}"
+set format y "10^{%L}"
+set grid
+set key bottom left font ",10"
+file = "out/bench_series.dat"
+names = "DOPRI5 DOP853 GSL-rk8pd"
+array colours[3] = ["#56b4e9", "#d55e00", "#000000"]
+set xlabel "time per run [s]"
+set ylabel "state error after 10 periods (scaled by rho, rho omega)"
+plot for [i=0:2] file index i using 3:4 with linespoints pt 7 ps 0.7 lc rgb colours[i+1] lw 1.5 title word(names, i+1)
+set ylabel "|E(100 T) - E(0)| / E_{scale}"
+plot for [i=0:2] file index i using 6:7 with linespoints pt 7 ps 0.7 lc rgb colours[i+1] lw 1.5 title word(names, i+1)
+unset multiplot

@@ -1,0 +1,99 @@
+!> The nonlinear pendulum integrated by GSL's odeiv2 driver with the Prince–Dormand 8(9)
+!> pair rk8pd: the same equations (`pendulum_rhs`) and the same tolerances as hillstab's
+!> DOP853 runs (GSL's scaled control: absolute part per component as `pendulum_atol`,
+!> relative part rtol·|y|). A second method for tests and the speed benchmark.
+!>
+!> The right-hand side receives the pendulum and its evaluation counter through GSL's
+!> `params` pointer (no module state, no internal procedure).
+!>
+!>```fortran
+!> real(wp) :: y(4)
+!> y = pendulum_initial_state(p, 0.017_wp)
+!> call pendulum_gsl(p, y, 100*p%period, 1.0e-10_wp, stats, error)
+!>```
+module hillstab_gsl_pendulum
+   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_long, c_ptr, c_funptr, c_null_funptr, &
+      c_loc, c_funloc, c_f_pointer, c_associated
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use hillstab_kinds, only: wp, int64
+   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
+   use hillstab_stats, only: work_stats_t
+   use hillstab_gsl, only: gsl_odeiv2_system, gsl_odeiv2_step_rk8pd, gsl_odeiv2_driver_alloc_scaled_new, &
+      gsl_odeiv2_driver_set_nmax, gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_set_error_handler_off
+   use hillstab_pendulum, only: pendulum_t, pendulum_rhs, pendulum_atol
+   implicit none
+   private
+   public :: pendulum_gsl
+
+   integer(c_int), parameter :: gsl_success = 0
+   integer(c_int), parameter :: gsl_ebadfunc = 9
+
+   !> What the right-hand side needs.
+   type :: context_t
+      type(pendulum_t) :: pendulum
+      integer(int64) :: n_evaluations = 0
+   end type context_t
+
+contains
+
+   !> Integrate the pendulum from t = 0 to t_end with GSL rk8pd at relative tolerance rtol
+   !> (absolute tolerances of `pendulum_atol`). On return y is the state at t_end.
+   subroutine pendulum_gsl(p, y, t_end, rtol, stats, error)
+      type(pendulum_t), intent(in) :: p          !! the pendulum
+      real(wp), intent(inout) :: y(4)            !! initial state in, final state out
+      real(wp), intent(in) :: t_end              !! end time [s], > 0
+      real(wp), intent(in) :: rtol               !! relative tolerance (> 0)
+      type(work_stats_t), intent(out) :: stats   !! f-evaluations (steps are not counted)
+      type(error_t), allocatable, intent(out) :: error  !! allocated when GSL fails (y unchanged)
+      type(context_t), target :: context
+      type(gsl_odeiv2_system), target :: system
+      type(c_ptr) :: driver
+      type(c_funptr) :: previous
+      real(c_double) :: state(4), t, scale_abs(4)
+      integer(c_int) :: status
+      character(len=160) :: text
+      stats = work_stats_t()
+      if (.not. (ieee_is_finite(rtol) .and. rtol > 0.0_wp .and. ieee_is_finite(t_end) .and. t_end > 0.0_wp) &
+          .or. .not. all(ieee_is_finite(y))) then
+         call set_error(error, err_invalid_parameter, "pendulum_gsl: need rtol > 0, t_end > 0, a finite state")
+         return
+      end if
+      previous = gsl_set_error_handler_off()
+      context%pendulum = p
+      system = gsl_odeiv2_system(c_funloc(gsl_rhs), c_null_funptr, 4_c_size_t, c_loc(context))
+      scale_abs = pendulum_atol(p, y, rtol)/rtol
+      driver = gsl_odeiv2_driver_alloc_scaled_new(system, gsl_odeiv2_step_rk8pd, real(1.0e-3_wp*p%period, c_double), &
+         real(rtol, c_double), real(rtol, c_double), 1.0_c_double, 0.0_c_double, scale_abs)
+      if (.not. c_associated(driver)) then
+         call set_error(error, err_integration, "pendulum_gsl: GSL could not allocate the odeiv2 driver")
+         return
+      end if
+      status = gsl_odeiv2_driver_set_nmax(driver, 100000000_c_long)
+      state = y
+      t = 0.0_c_double
+      status = gsl_odeiv2_driver_apply(driver, t, real(t_end, c_double), state)
+      if (status == gsl_success .and. .not. all(ieee_is_finite(state))) status = gsl_ebadfunc
+      call gsl_odeiv2_driver_free(driver)
+      stats%n_evaluations = context%n_evaluations
+      if (status /= gsl_success) then
+         write (text, '(a,i0,a,es12.5)') "pendulum_gsl: GSL rk8pd failed with status ", status, " at t = ", t
+         call set_error(error, err_integration, trim(text))
+         return
+      end if
+      y = state
+   end subroutine pendulum_gsl
+
+   function gsl_rhs(t, y, dydt, params) bind(C) result(status)
+      real(c_double), value :: t
+      real(c_double), intent(in) :: y(4)
+      real(c_double), intent(out) :: dydt(4)
+      type(c_ptr), value :: params
+      integer(c_int) :: status
+      type(context_t), pointer :: context
+      call c_f_pointer(params, context)
+      context%n_evaluations = context%n_evaluations + 1
+      call pendulum_rhs(context%pendulum, y, dydt)
+      status = gsl_success
+      if (.not. all(ieee_is_finite(dydt))) status = gsl_ebadfunc
+   end function gsl_rhs
+end module hillstab_gsl_pendulum

@@ -1,0 +1,108 @@
+!> Temporary files that must not outlive an interrupted run.
+!>
+!> The output writer registers each temporary file while it is being written
+!> (`watch_temp_file`) and forgets it once renamed or deleted (`forget_temp_file`).
+!> A program that calls `install_signal_cleanup` (the hillstab command line does;
+!> library code never installs handlers in its caller's process) then removes the
+!> registered files on SIGINT, SIGTERM and SIGHUP and exits with status 128 + signal.
+!> SIGXFSZ (a file-size limit) is ignored instead, so the write that crosses the
+!> limit fails with EFBIG and the writer reports it and deletes its temporary file.
+!>
+!> The handler touches only a fixed character buffer and calls `unlink` and `_exit`,
+!> both async-signal-safe.
+!>
+!>```fortran
+!> call install_signal_cleanup()
+!>```
+module hillstab_signals
+   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_funptr, c_funloc, c_intptr_t
+   implicit none
+   private
+   public :: install_signal_cleanup, watch_temp_file, forget_temp_file, max_watched_path
+   public :: signal_hangup, signal_interrupt, signal_terminate, signal_file_size
+
+   integer, parameter :: signal_hangup = 1      !! SIGHUP (Linux)
+   integer, parameter :: signal_interrupt = 2   !! SIGINT
+   integer, parameter :: signal_terminate = 15  !! SIGTERM
+   integer, parameter :: signal_file_size = 25  !! SIGXFSZ (Linux)
+   !> Longest path that can be watched (longer paths are not removed on a signal).
+   integer, parameter :: max_watched_path = 4096
+   !> Number of temporary files watched at the same time.
+   integer, parameter :: n_slots = 8
+
+   !> Watched paths, NUL-terminated; a slot is free when its first character is NUL.
+   character(kind=c_char), volatile, save :: watched(max_watched_path + 1, n_slots) = c_null_char
+
+   interface
+      function c_signal(signum, handler) bind(C, name="signal") result(previous)
+         import :: c_int, c_funptr
+         integer(c_int), value :: signum
+         type(c_funptr), value :: handler
+         type(c_funptr) :: previous
+      end function c_signal
+      function c_unlink(path) bind(C, name="unlink") result(status)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int) :: status
+      end function c_unlink
+      subroutine c_exit_now(status) bind(C, name="_exit")
+         import :: c_int
+         integer(c_int), value :: status
+      end subroutine c_exit_now
+   end interface
+
+contains
+
+   !> Remove watched temporary files on SIGINT, SIGTERM, SIGHUP (then exit 128 + signal);
+   !> ignore SIGXFSZ so that exceeding a file-size limit is a write error the writer handles.
+   subroutine install_signal_cleanup()
+      type(c_funptr) :: previous
+      type(c_funptr) :: ignore
+      ignore = transfer(1_c_intptr_t, ignore)  ! SIG_IGN
+      previous = c_signal(int(signal_hangup, c_int), c_funloc(on_signal))
+      previous = c_signal(int(signal_interrupt, c_int), c_funloc(on_signal))
+      previous = c_signal(int(signal_terminate, c_int), c_funloc(on_signal))
+      previous = c_signal(int(signal_file_size, c_int), ignore)
+   end subroutine install_signal_cleanup
+
+   !> Register `path` for removal on a signal; `slot` (0: none free or path too long)
+   !> is given back to `forget_temp_file`.
+   subroutine watch_temp_file(path, slot)
+      character(len=*), intent(in) :: path  !! the temporary file
+      integer, intent(out) :: slot          !! handle for forget_temp_file
+      integer :: k, i
+      slot = 0
+      if (len(path) == 0 .or. len(path) > max_watched_path) return
+      do k = 1, n_slots
+         if (watched(1, k) == c_null_char) then
+            slot = k
+            exit
+         end if
+      end do
+      if (slot == 0) return
+      ! the first character last: the handler sees either a free slot or a whole path
+      do i = 2, len(path)
+         watched(i, slot) = path(i:i)
+      end do
+      watched(len(path) + 1, slot) = c_null_char
+      watched(1, slot) = path(1:1)
+   end subroutine watch_temp_file
+
+   !> Stop watching the file of `slot` (0 is ignored).
+   subroutine forget_temp_file(slot)
+      integer, intent(in) :: slot  !! the slot returned by watch_temp_file
+      if (slot < 1 .or. slot > n_slots) return
+      watched(1, slot) = c_null_char
+   end subroutine forget_temp_file
+
+   !> Signal handler: unlink every watched file, exit 128 + signal.
+   subroutine on_signal(signum) bind(C)
+      integer(c_int), value :: signum
+      integer :: k
+      integer(c_int) :: status
+      do k = 1, n_slots
+         if (watched(1, k) /= c_null_char) status = c_unlink(watched(:, k))
+      end do
+      call c_exit_now(128_c_int + signum)
+   end subroutine on_signal
+end module hillstab_signals
