@@ -3,6 +3,7 @@
 # pair first), draw the figures with gnuplot, and say where the files are.
 #   out/default.png  the exact chart beside the paper's eq. (37) chart
 #   out/fig4.png     the nonlinear pendulum of the paper's Fig. 4, cases (a)-(h)
+#   out/onset.png    the onset law of the swing (out/onset_law.dat)
 #   out/fig2.png, out/fig3.png, out/figA1.png, out/figA3.png, out/figA4.png, out/damped.png,
 #   out/boundaries.png, out/fig3_boundaries.png, out/strutt.png (transition curves)
 # HILLSTAB_SCENES=DIR runs the scenes of DIR instead (same names expected).
@@ -27,6 +28,9 @@ done
 start=$(date +%s)
 flags=$(bash scripts/release_flags.sh)
 bash scripts/fpm.sh run --profile release --flag "$flags" hillstab -- "${paths[@]}"
+# the onset law of the swing (a library example writing out/onset_law.dat)
+bash scripts/fpm.sh run --profile release --flag "$flags" --example onset_law
+plots+=(onset)
 for plot in "${plots[@]}"; do
    gnuplot "plots/$plot.gp"
 done
@@ -35,5 +39,5 @@ seconds=$(( $(date +%s) - start ))
 echo
 echo "hillstab: scenes run and figures drawn in ${seconds} s"
 echo "  default figure (exact chart beside the paper's): out/default.png"
-echo "  other figures: $(cd out && ls fig*.png damped.png boundaries.png strutt.png | sed 's|^|out/|' | tr '\n' ' ')"
+echo "  other figures: $(cd out && ls fig*.png damped.png boundaries.png strutt.png onset.png | sed 's|^|out/|' | tr '\n' ' ')"
 echo "  data (gnuplot-ready, header = scene to repeat the run): out/*.dat"

@@ -42,10 +42,20 @@ module hillstab_scene
    integer, parameter :: task_lyapunov = 6     !! largest Lyapunov exponent over `&chart` or `&points`
    integer, parameter :: task_poincare = 7     !! Poincaré sections of orbits from a list of φ0
 
+   !> Longest line of a scene or points file.
+   integer, parameter, public :: max_line_length = 65536
+   !> Bytes of a scene file read: its groups must lie within them (an output file given
+   !> as scene has them in its header).
+   integer(int64), parameter, public :: max_scene_bytes = 1048576
+   !> Largest number of points in a points file.
+   integer, parameter, public :: max_points = 1000000
    !> Largest number of α values in `&coefficient alphas`.
    integer, parameter :: max_coefficient_alphas = 64
    !> Length of the character variables read from a namelist (paths included).
    integer, parameter :: text_len = 4096
+   !> Length of the character variables a namelist is read into (longer than text_len,
+   !> so that a longer value is refused with a message instead of cut with a warning).
+   integer, parameter :: read_len = 65536
    !> Marks the unused tail of the `alphas` list (a value no one types).
    real(wp), parameter :: unset_alpha = -huge(1.0_wp)
 
@@ -136,11 +146,34 @@ module hillstab_scene
       character(len=:), allocatable :: text  !! the whole item as written
    end type item_t
 
-   abstract interface
-      !> A read that must run with floating-point halting switched off.
-      subroutine guarded_read()
-      end subroutine guarded_read
-   end interface
+   !> Floating-point halting modes saved while a read runs with halting off.
+   type :: fpe_state_t
+      logical :: can_halt = .false.                 !! halting can be controlled here
+      logical :: halting(size(ieee_usual)) = .false. !! the modes to restore
+   end type fpe_state_t
+
+   !> State of one namelist group read. Each group routine reads its own namelist (the
+   !> namelist is local to it) in this pattern, which passes no procedure around:
+   !>
+   !>```fortran
+   !> call begin_group_read(unit, reader)
+   !> read (unit, nml=chart, iostat=ios, iomsg=msg)
+   !> do while (next_item(reader, unit, group, ios))
+   !>    read (reader%record, nml=chart, iostat=reader%stat, iomsg=reader%message)
+   !> end do
+   !> call end_group_read(reader, bad)
+   !>```
+   !>
+   !> When the group read fails, each item is tried alone to find the first bad one.
+   type :: group_read_t
+      type(fpe_state_t) :: fpe                     !! halting modes to restore
+      type(item_t), allocatable :: items(:)        !! the items of the group (after a failed read)
+      integer :: k = 0                             !! the item being tried
+      integer :: stat = 0                          !! iostat of the item read
+      character(len=:), allocatable :: record      !! `&group item /` for the item read
+      character(len=512) :: message = ""           !! iomsg of the item read (unused)
+      character(len=:), allocatable :: bad         !! the first item that fails alone
+   end type group_read_t
 
 contains
 
@@ -198,7 +231,7 @@ contains
       scene%points_file = ""
       scene%columns = ""
       scene%coefficient%alphas = [4.0_wp, 6.0_wp, 7.5_wp, 8.0_wp, 9.0_wp, 9.7_wp]
-      scene%poincare%phi0s = [0.05_wp, 0.2_wp, 0.4_wp, 0.6_wp, 0.8_wp]
+      scene%poincare%phi0s = [0.05_wp, 0.1_wp, 0.15_wp, 0.2_wp, 0.3_wp]  ! below 0.35 rad: states at rest at the default &series energy exist
       allocate (scene%amplitudes(0))
    end function default_scene
 
@@ -208,13 +241,9 @@ contains
       type(scene_t), intent(out) :: scene        !! the validated scene
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable; unallocated on success
       integer :: unit, ios
-      character(len=512) :: msg
       scene = default_scene(path)
-      open (newunit=unit, file=path, status="old", action="read", form="formatted", iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-         call set_error(error, err_input, path//": cannot open the scene file: "//trim(msg))
-         return
-      end if
+      call open_scene_copy(path, unit, error)
+      if (allocated(error)) return
       call read_scene_group(unit, scene, error)
       if (.not. allocated(error)) then
          if (group_present(unit, "physical")) call read_physical_group(unit, scene, error)
@@ -250,6 +279,62 @@ contains
       close (unit)
    end subroutine read_scene
 
+   !> Copy the scene file (at most its first max_scene_bytes, lines of at most
+   !> max_line_length characters, a final newline added when missing) to a scratch file
+   !> open on `unit`: the namelist reads then never run endlessly (`hillstab /dev/zero`)
+   !> and an output file given as scene is read only as far as its header.
+   subroutine open_scene_copy(path, unit, error)
+      character(len=*), intent(in) :: path  !! the scene file
+      integer, intent(out) :: unit          !! the copy, rewound
+      type(error_t), allocatable, intent(out) :: error
+      integer :: source, ios, line_number
+      integer(int64) :: bytes
+      character(len=512) :: msg
+      character(len=:), allocatable :: line
+      logical :: too_long, is_dir
+      inquire (file=path//"/.", exist=is_dir)
+      if (is_dir) then
+         call set_error(error, err_input, path//": cannot read the scene file: it is a directory")
+         return
+      end if
+      open (newunit=source, file=path, status="old", action="read", form="formatted", iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         call set_error(error, err_input, path//": cannot open the scene file: "//trim(msg))
+         return
+      end if
+      open (newunit=unit, status="scratch", action="readwrite", form="formatted", iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         close (source)
+         call set_error(error, err_input, path//": cannot make a scratch copy of the scene file: "//trim(msg))
+         return
+      end if
+      bytes = 0
+      line_number = 0
+      do
+         call read_text_line(source, line, ios, max_line_length, too_long)
+         if (too_long) then
+            call set_error(error, err_input, path//": line "//integer_text(line_number + 1)//" is longer than "// &
+               integer_text(max_line_length)//" characters (not a scene file?)")
+            exit
+         end if
+         if (ios /= 0 .and. len(line) == 0) exit
+         line_number = line_number + 1
+         bytes = bytes + len(line) + 1
+         if (bytes > max_scene_bytes) exit  ! the groups must lie in the first max_scene_bytes
+         write (unit, '(a)', iostat=ios, iomsg=msg) line
+         if (ios /= 0) then
+            call set_error(error, err_input, path//": cannot make a scratch copy of the scene file: "//trim(msg))
+            exit
+         end if
+      end do
+      close (source)
+      if (allocated(error)) then
+         close (unit)
+         return
+      end if
+      rewind (unit)
+   end subroutine open_scene_copy
+
    !> `&scene columns`: each name one of the columns this scene's file offers (which depend
    !> on the model, the damping and `&physical`), none twice, at least one.
    subroutine check_columns(scene, error)
@@ -273,7 +358,7 @@ contains
       integer, intent(in) :: unit
       type(scene_t), intent(inout) :: this
       type(error_t), allocatable, intent(out) :: error
-      character(len=text_len) :: task, model, method, sampling, output, columns, format
+      character(len=read_len) :: task, model, method, sampling, output, columns, format
       integer :: n_segments
       real(wp) :: tolerance, epsilon
       logical :: names_line
@@ -288,12 +373,18 @@ contains
       integer :: ios, k
       character(len=512) :: msg
       character(len=:), allocatable :: bad
+      type(group_read_t) :: reader
 
       task = task_name(this%task); model = model_name(this%model); method = method_name(this%method%kind)
       n_segments = this%method%n_segments; sampling = sampling_name(this%method%sampling)
       tolerance = this%method%tolerance; epsilon = this%epsilon; output = this%output
       columns = this%columns; format = merge("binary", "text  ", this%binary); names_line = this%names_line
-      call without_fpe_halting(read_it)
+      call begin_group_read(unit, reader)
+      read (unit, nml=scene, iostat=ios, iomsg=msg)
+      do while (next_item(reader, unit, group, ios))
+         read (reader%record, nml=scene, iostat=reader%stat, iomsg=reader%message)
+      end do
+      call end_group_read(reader, bad)
       call check_read(unit, this%source, group, names, kinds, ios, msg, bad, error)
       if (allocated(error)) return
 
@@ -380,21 +471,6 @@ contains
          call fail(error, this%source, group, "names_line", "a line of column names is for format = 'text' only")
          return
       end if
-   contains
-      subroutine read_it()
-         rewind (unit)
-         read (unit, nml=scene, iostat=ios, iomsg=msg)
-         if (ios > 0) then
-            call find_bad_item(unit, group, try_item, bad)
-            if (.not. allocated(bad)) bad = ""
-         end if
-      end subroutine read_it
-      subroutine try_item(text, stat)
-         character(len=*), intent(in) :: text
-         integer, intent(out) :: stat
-         character(len=512) :: ignored
-         read (text, nml=scene, iostat=stat, iomsg=ignored)
-      end subroutine try_item
    end subroutine read_scene_group
 
    !> `&physical`: the pendulum in SI units (eqs. (4), (15), (24), (46)). Gives ε (from κ)
@@ -408,18 +484,24 @@ contains
       namelist /physical/ r0, g, omega, a, kappa
       character(len=*), parameter :: group = "physical"
       character(len=*), parameter :: names(5) = [character(len=5) :: "r0", "g", "omega", "a", "kappa"]
-      character(len=*), parameter :: kinds(5) = [character(len=22) :: "a real number", "a real number", &
-         "a real number", "a list of real numbers", "a real number"]
+      character(len=*), parameter :: kinds(5) = [character(len=33) :: "a real number", "a real number", &
+         "a real number", "a list of at most 64 real numbers", "a real number"]
       integer :: ios, n, k
       character(len=512) :: msg
       character(len=:), allocatable :: bad, variable
+      type(group_read_t) :: reader
       logical :: given_a, given_r0
       type(physical_t) :: p
       type(error_t), allocatable :: cause
 
       r0 = scene%pendulum%r0; g = scene%pendulum%g; omega = scene%pendulum%omega; kappa = scene%pendulum%kappa
       a = unset_alpha
-      call without_fpe_halting(read_it)
+      call begin_group_read(unit, reader)
+      read (unit, nml=physical, iostat=ios, iomsg=msg)
+      do while (next_item(reader, unit, group, ios))
+         read (reader%record, nml=physical, iostat=reader%stat, iomsg=reader%message)
+      end do
+      call end_group_read(reader, bad)
       call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
       if (allocated(error)) return
 
@@ -469,21 +551,6 @@ contains
       scene%pendulum%a = 0.0_wp
       scene%amplitudes = a(:n)
       scene%epsilon = physical_epsilon(p)
-   contains
-      subroutine read_it()
-         rewind (unit)
-         read (unit, nml=physical, iostat=ios, iomsg=msg)
-         if (ios > 0) then
-            call find_bad_item(unit, group, try_item, bad)
-            if (.not. allocated(bad)) bad = ""
-         end if
-      end subroutine read_it
-      subroutine try_item(text, stat)
-         character(len=*), intent(in) :: text
-         integer, intent(out) :: stat
-         character(len=512) :: ignored
-         read (text, nml=physical, iostat=stat, iomsg=ignored)
-      end subroutine try_item
    end subroutine read_physical_group
 
    !> α (elastic model) or ν of eq. (21) (Mathieu model) and β of the pendulum at each
@@ -522,10 +589,16 @@ contains
       integer :: ios
       character(len=512) :: msg
       character(len=:), allocatable :: bad
+      type(group_read_t) :: reader
 
       alpha_min = scene%chart%alpha_min; alpha_max = scene%chart%alpha_max; n_alpha = scene%chart%n_alpha
       beta_min = scene%chart%beta_min; beta_max = scene%chart%beta_max; n_beta = scene%chart%n_beta
-      call without_fpe_halting(read_it)
+      call begin_group_read(unit, reader)
+      read (unit, nml=chart, iostat=ios, iomsg=msg)
+      do while (next_item(reader, unit, group, ios))
+         read (reader%record, nml=chart, iostat=reader%stat, iomsg=reader%message)
+      end do
+      call end_group_read(reader, bad)
       call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
       if (allocated(error)) return
 
@@ -538,21 +611,6 @@ contains
       call check_range(scene%source, group, "beta", beta_min, beta_max, n_beta, error)
       if (allocated(error)) return
       scene%chart = chart_grid_t(alpha_min, alpha_max, n_alpha, beta_min, beta_max, n_beta)
-   contains
-      subroutine read_it()
-         rewind (unit)
-         read (unit, nml=chart, iostat=ios, iomsg=msg)
-         if (ios > 0) then
-            call find_bad_item(unit, group, try_item, bad)
-            if (.not. allocated(bad)) bad = ""
-         end if
-      end subroutine read_it
-      subroutine try_item(text, stat)
-         character(len=*), intent(in) :: text
-         integer, intent(out) :: stat
-         character(len=512) :: ignored
-         read (text, nml=chart, iostat=stat, iomsg=ignored)
-      end subroutine try_item
    end subroutine read_chart_group
 
    !> `&points`: the file of (α, β) points, read here.
@@ -560,7 +618,7 @@ contains
       integer, intent(in) :: unit
       type(scene_t), intent(inout) :: scene
       type(error_t), allocatable, intent(out) :: error
-      character(len=text_len) :: file
+      character(len=read_len) :: file
       namelist /points/ file
       character(len=*), parameter :: group = "points"
       character(len=*), parameter :: names(1) = [character(len=4) :: "file"]
@@ -568,6 +626,7 @@ contains
       integer :: ios
       character(len=512) :: msg
       character(len=:), allocatable :: bad
+      type(group_read_t) :: reader
 
       if (size(scene%amplitudes) > 0) then
          ! the points are the pendulum's amplitudes: &points is optional and may not name a file
@@ -580,7 +639,12 @@ contains
          return
       end if
       file = scene%points_file
-      call without_fpe_halting(read_it)
+      call begin_group_read(unit, reader)
+      read (unit, nml=points, iostat=ios, iomsg=msg)
+      do while (next_item(reader, unit, group, ios))
+         read (reader%record, nml=points, iostat=reader%stat, iomsg=reader%message)
+      end do
+      call end_group_read(reader, bad)
       call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
       if (allocated(error)) return
       if (len_trim(file) == 0) then
@@ -589,21 +653,6 @@ contains
       end if
       scene%points_file = trim(file)
       call read_points_file(scene, error)
-   contains
-      subroutine read_it()
-         rewind (unit)
-         read (unit, nml=points, iostat=ios, iomsg=msg)
-         if (ios > 0) then
-            call find_bad_item(unit, group, try_item, bad)
-            if (.not. allocated(bad)) bad = ""
-         end if
-      end subroutine read_it
-      subroutine try_item(text, stat)
-         character(len=*), intent(in) :: text
-         integer, intent(out) :: stat
-         character(len=512) :: ignored
-         read (text, nml=points, iostat=stat, iomsg=ignored)
-      end subroutine try_item
    end subroutine read_points_group
 
    !> `&coefficient`: α list, β, τ range.
@@ -616,11 +665,12 @@ contains
       namelist /coefficient/ alphas, beta, n_tau, tau_min, tau_max
       character(len=*), parameter :: group = "coefficient"
       character(len=*), parameter :: names(5) = [character(len=7) :: "alphas", "beta", "n_tau", "tau_min", "tau_max"]
-      character(len=*), parameter :: kinds(5) = [character(len=24) :: "a list of real numbers", "a real number", &
+      character(len=*), parameter :: kinds(5) = [character(len=33) :: "a list of at most 64 real numbers", "a real number", &
          "an integer", "a real number", "a real number"]
       integer :: ios, n, k
       character(len=512) :: msg
       character(len=:), allocatable :: bad
+      type(group_read_t) :: reader
 
       ! a namelist read overwrites only the elements given: start from an empty list
       alphas = unset_alpha
@@ -641,7 +691,12 @@ contains
             return
          end if
       end if
-      call without_fpe_halting(read_it)
+      call begin_group_read(unit, reader)
+      read (unit, nml=coefficient, iostat=ios, iomsg=msg)
+      do while (next_item(reader, unit, group, ios))
+         read (reader%record, nml=coefficient, iostat=reader%stat, iomsg=reader%message)
+      end do
+      call end_group_read(reader, bad)
       call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
       if (allocated(error)) return
       if (size(scene%amplitudes) > 0) then
@@ -698,20 +753,6 @@ contains
             call fail(error, scene%source, group, "alphas", "value "//trim(index_text)//" is not a finite number")
          end if
       end subroutine require_finite_or_unset
-      subroutine read_it()
-         rewind (unit)
-         read (unit, nml=coefficient, iostat=ios, iomsg=msg)
-         if (ios > 0) then
-            call find_bad_item(unit, group, try_item, bad)
-            if (.not. allocated(bad)) bad = ""
-         end if
-      end subroutine read_it
-      subroutine try_item(text, stat)
-         character(len=*), intent(in) :: text
-         integer, intent(out) :: stat
-         character(len=512) :: ignored
-         read (text, nml=coefficient, iostat=stat, iomsg=ignored)
-      end subroutine try_item
    end subroutine read_coefficient_group
 
    !> `&series`: the pendulum, its start and the sampling (contract names of the task).
@@ -732,11 +773,17 @@ contains
       integer :: ios, k
       character(len=512) :: msg
       character(len=:), allocatable :: bad
+      type(group_read_t) :: reader
       associate (plan => scene%series)
          alpha = plan%alpha; beta = plan%beta; phi0 = plan%phi0; periods = plan%periods
          samples_per_period = plan%samples_per_period; r0 = plan%r0; g = plan%g; vx0 = plan%vx0; vz0 = plan%vz0
       end associate
-      call without_fpe_halting(read_it)
+      call begin_group_read(unit, reader)
+      read (unit, nml=series, iostat=ios, iomsg=msg)
+      do while (next_item(reader, unit, group, ios))
+         read (reader%record, nml=series, iostat=reader%stat, iomsg=reader%message)
+      end do
+      call end_group_read(reader, bad)
       call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
       if (allocated(error)) return
       values = [alpha, beta, phi0, r0, g, vx0, vz0]
@@ -778,24 +825,13 @@ contains
          character(len=24) :: text
          write (text, '(i0)') n
       end function int64_text
-      subroutine read_it()
-         rewind (unit)
-         read (unit, nml=series, iostat=ios, iomsg=msg)
-         if (ios > 0) then
-            call find_bad_item(unit, group, try_item, bad)
-            if (.not. allocated(bad)) bad = ""
-         end if
-      end subroutine read_it
-      subroutine try_item(text, stat)
-         character(len=*), intent(in) :: text
-         integer, intent(out) :: stat
-         character(len=512) :: ignored
-         read (text, nml=series, iostat=stat, iomsg=ignored)
-      end subroutine try_item
    end subroutine read_series_group
 
    !> Read the points file: one `alpha beta` pair per line, `#` starts a comment,
-   !> blank lines are skipped, further columns are ignored.
+   !> blank lines are skipped, further columns are ignored. A line is parsed as text:
+   !> its first two blank-separated fields must be plain numbers (no list-directed
+   !> shortcuts such as `/`, `,`, `3*`); at most max_points points, lines of at most
+   !> max_line_length characters.
    subroutine read_points_file(scene, error)
       type(scene_t), intent(inout) :: scene
       type(error_t), allocatable, intent(out) :: error
@@ -805,7 +841,13 @@ contains
       character(len=:), allocatable :: line, where
       real(wp) :: pair(2)
       real(wp), allocatable :: found(:, :)
+      logical :: too_long, is_dir
 
+      inquire (file=scene%points_file//"/.", exist=is_dir)
+      if (is_dir) then
+         call fail(error, scene%source, group, "file", "'"//scene%points_file//"' is a directory, not a points file")
+         return
+      end if
       open (newunit=unit, file=scene%points_file, status="old", action="read", iostat=ios, iomsg=msg)
       if (ios /= 0) then
          call fail(error, scene%source, group, "file", "cannot open '"//scene%points_file//"': "//trim(msg))
@@ -815,25 +857,36 @@ contains
       n = 0
       line_number = 0
       do
-         call read_text_line(unit, line, ios)
-         if (ios /= 0) exit
+         call read_text_line(unit, line, ios, max_line_length, too_long)
+         if (ios /= 0 .and. .not. too_long) exit
          line_number = line_number + 1
+         where = "'"//scene%points_file//"' line "//integer_text(line_number)
+         if (too_long) then
+            call fail(error, scene%source, group, "file", where//": longer than "// &
+               integer_text(max_line_length)//" characters")
+            exit
+         end if
          hash = index(line, "#")
          if (hash > 0) line = line(:hash - 1)
          if (len_trim(line) == 0) cycle
-         where = "'"//scene%points_file//"' line "//integer_text(line_number)
-         call without_fpe_halting(read_pair)
+         call parse_pair(line, pair, ios)
          if (ios /= 0) then
-            call fail(error, scene%source, group, "file", where//": expected two numbers 'alpha beta', got '"// &
-               trim(line)//"'")
+            call fail(error, scene%source, group, "file", where//": expected two numbers 'alpha beta' "// &
+               "(then optional further columns), got '"//shortened(trim(line))//"'")
             exit
          end if
          if (.not. (ieee_is_finite(pair(1)) .and. ieee_is_finite(pair(2)))) then
-            call fail(error, scene%source, group, "file", where//": alpha and beta must be finite numbers")
+            call fail(error, scene%source, group, "file", where//": alpha and beta must be finite numbers, got '"// &
+               shortened(trim(line))//"'")
             exit
          end if
          call check_alpha_domain(scene, group, "file", pair(1), error, where)
          if (allocated(error)) exit
+         if (n == max_points) then
+            call fail(error, scene%source, group, "file", where//": more than "//integer_text(max_points)// &
+               " points (split the file, or use task chart for a grid)")
+            exit
+         end if
          if (n == size(found, 2)) found = reshape(found, [2, 2*n], pad=[0.0_wp])
          n = n + 1
          found(:, n) = pair
@@ -845,31 +898,179 @@ contains
          return
       end if
       scene%points = found(:, :n)
-   contains
-      subroutine read_pair()
-         read (line, *, iostat=ios) pair
-      end subroutine read_pair
    end subroutine read_points_file
 
-   !> Run `action` with halting on overflow/invalid/divide-by-zero switched off,
-   !> then clear those flags: reading `1e400` or `nan` must give a message, not a
-   !> trap, even in a build compiled with -ffpe-trap.
-   subroutine without_fpe_halting(action)
-      procedure(guarded_read) :: action
-      logical :: halting(size(ieee_usual)), can_halt
-      integer :: k
-      can_halt = .true.
-      do k = 1, size(ieee_usual)
-         can_halt = can_halt .and. ieee_support_halting(ieee_usual(k))
+   !> The first two fields of `line` (separated by blanks or one comma) as numbers; `ios` /= 0
+   !> unless both are plain decimal numbers ([sign] digits [. digits] [exponent], or nan/inf).
+   subroutine parse_pair(line, pair, ios)
+      character(len=*), intent(in) :: line
+      real(wp), intent(out) :: pair(2)
+      integer, intent(out) :: ios
+      integer :: k, first, last
+      type(fpe_state_t) :: fpe
+      pair = 0.0_wp
+      last = 0
+      do k = 1, 2
+         first = last + 1
+         do while (first <= len(line))
+            if (.not. is_blank(line(first:first))) exit
+            first = first + 1
+         end do
+         if (k == 2 .and. first <= len(line)) then
+            ! one comma may separate the two numbers
+            if (line(first:first) == ",") then
+               first = first + 1
+               do while (first <= len(line))
+                  if (.not. is_blank(line(first:first))) exit
+                  first = first + 1
+               end do
+            end if
+         end if
+         last = first
+         do while (last <= len(line))
+            if (is_blank(line(last:last)) .or. line(last:last) == ",") exit
+            last = last + 1
+         end do
+         last = last - 1
+         if (first > len(line) .or. .not. is_number(line(first:last))) then
+            ios = 1
+            return
+         end if
+         call halting_off(fpe)
+         read (line(first:last), *, iostat=ios) pair(k)
+         call halting_restore(fpe)
+         if (ios /= 0) return
       end do
-      if (can_halt) then
-         call ieee_get_halting_mode(ieee_usual, halting)
+   end subroutine parse_pair
+
+   elemental logical function is_blank(c)
+      character, intent(in) :: c
+      is_blank = c == " " .or. c == achar(9) .or. c == achar(13)
+   end function is_blank
+
+   !> Whether `text` is one plain number: [sign] digits [. [digits]] or . digits, then an
+   !> optional exponent [eEdD] [sign] digits; or [sign] nan / inf / infinity.
+   pure logical function is_number(text)
+      character(len=*), intent(in) :: text
+      integer :: i, n_digits
+      character(len=:), allocatable :: low
+      is_number = .false.
+      if (len(text) == 0) return
+      i = 1
+      if (index("+-", text(1:1)) > 0) i = 2
+      low = lower(text(i:))
+      if (low == "nan" .or. low == "inf" .or. low == "infinity") then
+         is_number = .true.
+         return
+      end if
+      n_digits = 0
+      do while (i <= len(text))
+         if (.not. is_digit(text(i:i))) exit
+         i = i + 1; n_digits = n_digits + 1
+      end do
+      if (i <= len(text)) then
+         if (text(i:i) == ".") then
+            i = i + 1
+            do while (i <= len(text))
+               if (.not. is_digit(text(i:i))) exit
+               i = i + 1; n_digits = n_digits + 1
+            end do
+         end if
+      end if
+      if (n_digits == 0) return
+      if (i <= len(text)) then
+         if (index("eEdD", text(i:i)) == 0) return
+         i = i + 1
+         if (i <= len(text)) then
+            if (index("+-", text(i:i)) > 0) i = i + 1
+         end if
+         n_digits = 0
+         do while (i <= len(text))
+            if (.not. is_digit(text(i:i))) exit
+            i = i + 1; n_digits = n_digits + 1
+         end do
+         if (n_digits == 0) return
+      end if
+      is_number = i > len(text)
+   end function is_number
+
+   elemental logical function is_digit(c)
+      character, intent(in) :: c
+      is_digit = c >= "0" .and. c <= "9"
+   end function is_digit
+
+   !> At most 80 characters of `text` for a message (then "...").
+   pure function shortened(text) result(short)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: short
+      if (len(text) <= 80) then
+         short = text
+      else
+         short = text(:77)//"..."
+      end if
+   end function shortened
+
+   !> Switch halting on overflow/invalid/divide-by-zero off (reading `1e400` or `nan`
+   !> must give a message, not a trap, even in a build compiled with -ffpe-trap).
+   subroutine halting_off(state)
+      type(fpe_state_t), intent(out) :: state  !! the modes to restore
+      integer :: k
+      state%can_halt = .true.
+      do k = 1, size(ieee_usual)
+         state%can_halt = state%can_halt .and. ieee_support_halting(ieee_usual(k))
+      end do
+      if (state%can_halt) then
+         call ieee_get_halting_mode(ieee_usual, state%halting)
          call ieee_set_halting_mode(ieee_usual, .false.)
       end if
-      call action()
+   end subroutine halting_off
+
+   !> Clear the flags raised meanwhile and restore the halting modes.
+   subroutine halting_restore(state)
+      type(fpe_state_t), intent(in) :: state  !! from halting_off
       call ieee_set_flag(ieee_usual, .false.)
-      if (can_halt) call ieee_set_halting_mode(ieee_usual, halting)
-   end subroutine without_fpe_halting
+      if (state%can_halt) call ieee_set_halting_mode(ieee_usual, state%halting)
+   end subroutine halting_restore
+
+   !> Start a group read: halting off, the file rewound.
+   subroutine begin_group_read(unit, reader)
+      integer, intent(in) :: unit                  !! the scene file
+      type(group_read_t), intent(out) :: reader
+      call halting_off(reader%fpe)
+      rewind (unit)
+   end subroutine begin_group_read
+
+   !> After a failed group read (`ios` > 0): set `reader%record` to the next item alone
+   !> and return true, until an item fails alone (`reader%stat` /= 0) or none is left.
+   logical function next_item(reader, unit, group, ios)
+      type(group_read_t), intent(inout) :: reader
+      integer, intent(in) :: unit                  !! the scene file
+      character(len=*), intent(in) :: group        !! group name
+      integer, intent(in) :: ios                   !! iostat of the group read
+      next_item = .false.
+      if (ios <= 0) return
+      if (.not. allocated(reader%items)) then
+         call group_items(unit, group, reader%items)
+         reader%bad = ""
+      else if (reader%stat /= 0) then
+         reader%bad = reader%items(reader%k)%text
+         return
+      end if
+      reader%k = reader%k + 1
+      if (reader%k > size(reader%items)) return
+      reader%record = "&"//group//" "//reader%items(reader%k)%text//" /"
+      reader%stat = 0
+      next_item = .true.
+   end function next_item
+
+   !> End a group read: halting restored; `bad` is the first item that fails alone
+   !> ("" when none does, unallocated when the group read succeeded).
+   subroutine end_group_read(reader, bad)
+      type(group_read_t), intent(inout) :: reader
+      character(len=:), allocatable, intent(out) :: bad
+      call halting_restore(reader%fpe)
+      if (allocated(reader%bad)) bad = reader%bad
+   end subroutine end_group_read
 
    !> Turn the status of a namelist read into an error naming file, group and variable.
    subroutine check_read(unit, path, group, names, kinds, ios, msg, bad, error)
@@ -884,18 +1085,21 @@ contains
       integer :: k, eq
       character(len=:), allocatable :: name, body, next
       logical :: found, closed
-      if (ios == 0) return
+      if (ios == 0) then
+         call check_item_values(unit, path, group, error)
+         return
+      end if
       call locate_group(unit, group, found, body, closed, next)
       ! a closed group on the file's last line without a newline: gfortran has read every
       ! value up to the '/' and then meets the end of the file
       if (ios == iostat_end .and. found .and. closed) return
       if (found .and. .not. closed) then
          if (len(next) > 0) then
-            call set_error(error, err_input, path//": &"//group//": the group is not closed: no '/' before '&"// &
-               next//"'")
+            call fail(error, path, group, open_item_name(body), "the group is not closed: no '/' before '&"// &
+               next//"'"//open_quote_note(body))
          else
-            call set_error(error, err_input, path//": &"//group//": the group is not closed: no '/' before the end "// &
-               "of the file")
+            call fail(error, path, group, open_item_name(body), "the group is not closed: no '/' before the end "// &
+               "of the file"//open_quote_note(body))
          end if
          return
       end if
@@ -919,31 +1123,116 @@ contains
             return
          end if
       end if
-      call set_error(error, err_input, path//": &"//group//": "//trim(msg))
+      ! no single item fails alone: name the variable the run-time message names, else the
+      ! group's first item
+      name = ""
+      do k = 1, size(names)
+         if (index(" "//lower(msg)//" ", " "//trim(names(k))//" ") > 0) then
+            name = trim(names(k))
+            exit
+         end if
+      end do
+      if (len(name) == 0 .and. allocated(bad)) then
+         if (len(bad) > 0) name = item_name(bad)
+      end if
+      if (len(name) == 0) then
+         name = first_word(body)
+         if (len(name) == 0) name = "(syntax)"
+      end if
+      call fail(error, path, group, name, "cannot read the group here: "//trim(msg))
    end subroutine check_read
 
-   !> Find the first item of `&group` in the file that does not read on its own.
-   subroutine find_bad_item(unit, group, try_item, bad)
+   !> The name of the item in which a group body leaves a string open (else its last item,
+   !> else "(syntax)").
+   function open_item_name(body) result(name)
+      character(len=*), intent(in) :: body
+      character(len=:), allocatable :: name
+      character :: quote
+      integer :: i, opened, eq, j
+      quote = " "
+      opened = 0
+      do i = 1, len(body)
+         if (quote == " " .and. (body(i:i) == "'" .or. body(i:i) == '"')) opened = i
+         call track_quote(body(i:i), quote)
+      end do
+      if (quote == " ") opened = len(body) + 1
+      ! the last '=' before the open quote (or the end), and the name before it
+      eq = index(body(:opened - 1), "=", back=.true.)
+      name = "(syntax)"
+      if (eq <= 1) return
+      j = eq - 1
+      do while (j >= 1)
+         if (body(j:j) /= " ") exit
+         j = j - 1
+      end do
+      i = j
+      do while (i > 1)
+         if (.not. is_name_char(body(i - 1:i - 1))) exit
+         i = i - 1
+      end do
+      if (j >= i .and. j >= 1) name = lower(body(i:j))
+   end function open_item_name
+
+   !> ", a string is not terminated" when the body leaves a quote open, else "".
+   function open_quote_note(body) result(note)
+      character(len=*), intent(in) :: body
+      character(len=:), allocatable :: note
+      character :: quote
+      integer :: i
+      quote = " "
+      do i = 1, len(body)
+         call track_quote(body(i:i), quote)
+      end do
+      note = ""
+      if (quote /= " ") note = " (a string is not terminated)"
+   end function open_quote_note
+
+   !> The first name in a group body (letters, digits, underscores), lower case.
+   pure function first_word(body) result(word)
+      character(len=*), intent(in) :: body
+      character(len=:), allocatable :: word
+      integer :: i, j
+      word = ""
+      do i = 1, len(body)
+         if (is_letter(body(i:i))) exit
+      end do
+      if (i > len(body)) return
+      j = i
+      do while (j < len(body))
+         if (.not. is_name_char(body(j + 1:j + 1))) exit
+         j = j + 1
+      end do
+      word = lower(body(i:j))
+   end function first_word
+
+   !> After a group read that succeeded: refuse an item without a value (`beta_max = -,`
+   !> reads as "keep the default") and a value longer than the strings read (4096 characters).
+   subroutine check_item_values(unit, path, group, error)
       integer, intent(in) :: unit
-      character(len=*), intent(in) :: group
-      interface
-         subroutine try_item(text, stat)
-            character(len=*), intent(in) :: text
-            integer, intent(out) :: stat
-         end subroutine try_item
-      end interface
-      character(len=:), allocatable, intent(out) :: bad
+      character(len=*), intent(in) :: path, group
+      type(error_t), allocatable, intent(out) :: error
       type(item_t), allocatable :: items(:)
-      integer :: k, stat
+      character(len=:), allocatable :: value
+      integer :: k, eq
       call group_items(unit, group, items)
       do k = 1, size(items)
-         call try_item("&"//group//" "//items(k)%text//" /", stat)
-         if (stat /= 0) then
-            bad = items(k)%text
+         eq = index(items(k)%text, "=")
+         value = trim(adjustl(items(k)%text(eq + 1:)))
+         do while (len(value) > 0)
+            if (value(len(value):) /= ",") exit
+            value = trim(value(:len(value) - 1))
+         end do
+         if (value == "" .or. value == "+" .or. value == "-") then
+            call fail(error, path, group, items(k)%name, "no value after '=' (got '"// &
+               trim(adjustl(items(k)%text(eq + 1:)))//"')")
+            return
+         end if
+         if (len(value) > text_len + 2) then
+            call fail(error, path, group, items(k)%name, "value longer than "//integer_text(text_len)//" characters")
             return
          end if
       end do
-   end subroutine find_bad_item
+   end subroutine check_item_values
 
    !> Find the first `&group` of the file (at the start of a line or after a blank, so
    !> `# &group` in output headers counts; `!` comments removed) and its body up to the
@@ -1421,7 +1710,7 @@ contains
       integer, intent(in) :: unit
       type(scene_t), intent(inout) :: scene
       type(error_t), allocatable, intent(out) :: error
-      character(len=text_len) :: over
+      character(len=read_len) :: over
       namelist /lyapunov/ over
       character(len=*), parameter :: group = "lyapunov"
       character(len=*), parameter :: names(1) = [character(len=4) :: "over"]
@@ -1429,9 +1718,15 @@ contains
       integer :: ios
       character(len=512) :: msg
       character(len=:), allocatable :: bad
+      type(group_read_t) :: reader
       over = merge("points", "chart ", scene%lyapunov_points)
       if (.not. group_present(unit, group)) return
-      call without_fpe_halting(read_it)
+      call begin_group_read(unit, reader)
+      read (unit, nml=lyapunov, iostat=ios, iomsg=msg)
+      do while (next_item(reader, unit, group, ios))
+         read (reader%record, nml=lyapunov, iostat=reader%stat, iomsg=reader%message)
+      end do
+      call end_group_read(reader, bad)
       call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
       if (allocated(error)) return
       select case (lower(trim(over)))
@@ -1440,21 +1735,6 @@ contains
       case default
          call fail(error, scene%source, group, "over", "unknown value '"//trim(over)//"' (expected chart or points)")
       end select
-   contains
-      subroutine read_it()
-         rewind (unit)
-         read (unit, nml=lyapunov, iostat=ios, iomsg=msg)
-         if (ios > 0) then
-            call find_bad_item(unit, group, try_item, bad)
-            if (.not. allocated(bad)) bad = ""
-         end if
-      end subroutine read_it
-      subroutine try_item(text, stat)
-         character(len=*), intent(in) :: text
-         integer, intent(out) :: stat
-         character(len=512) :: ignored
-         read (text, nml=lyapunov, iostat=stat, iomsg=ignored)
-      end subroutine try_item
    end subroutine read_lyapunov_group
 
    !> The lyapunov task integrates the pendulum: every point must lie in the physical
@@ -1492,17 +1772,25 @@ contains
       namelist /poincare/ phi0s, same_energy
       character(len=*), parameter :: group = "poincare"
       character(len=*), parameter :: names(2) = [character(len=11) :: "phi0s", "same_energy"]
-      character(len=*), parameter :: kinds(2) = [character(len=22) :: "a list of real numbers", "a logical"]
+      character(len=*), parameter :: kinds(2) = [character(len=33) :: "a list of at most 64 real numbers", "a logical"]
       real(wp), parameter :: unset = -huge(1.0_wp)
       integer :: ios, n, k
       character(len=512) :: msg
       character(len=:), allocatable :: bad
+      type(group_read_t) :: reader
       phi0s = unset
       same_energy = scene%poincare%same_energy
       ios = 0
       ! the group is optional; a list it gives replaces the default list whole
       if (.not. group_sets(unit, group, "phi0s")) phi0s(:size(scene%poincare%phi0s)) = scene%poincare%phi0s
-      if (group_present(unit, group)) call without_fpe_halting(read_it)
+      if (group_present(unit, group)) then
+         call begin_group_read(unit, reader)
+         read (unit, nml=poincare, iostat=ios, iomsg=msg)
+         do while (next_item(reader, unit, group, ios))
+            read (reader%record, nml=poincare, iostat=reader%stat, iomsg=reader%message)
+         end do
+         call end_group_read(reader, bad)
+      end if
       call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
       if (allocated(error)) return
       n = count(phi0s /= unset)
@@ -1525,38 +1813,32 @@ contains
       end do
       scene%poincare%phi0s = phi0s(:n)
       scene%poincare%same_energy = same_energy
-   contains
-      subroutine read_it()
-         rewind (unit)
-         read (unit, nml=poincare, iostat=ios, iomsg=msg)
-         if (ios > 0) then
-            call find_bad_item(unit, group, try_item, bad)
-            if (.not. allocated(bad)) bad = ""
-         end if
-      end subroutine read_it
-      subroutine try_item(text, stat)
-         character(len=*), intent(in) :: text
-         integer, intent(out) :: stat
-         character(len=512) :: ignored
-         read (text, nml=poincare, iostat=stat, iomsg=ignored)
-      end subroutine try_item
    end subroutine read_poincare_group
 
-   !> Read one whole line of any length from a formatted unit.
-   subroutine read_text_line(unit, line, ios)
-      integer, intent(in) :: unit  !! an open formatted unit
-      character(len=:), allocatable, intent(out) :: line  !! the line, without its end
+   !> Read one whole line from a formatted unit; with `max_length`, stop after that many
+   !> characters (`too_long` true, `ios` /= 0, the rest of the line unread).
+   subroutine read_text_line(unit, line, ios, max_length, too_long)
+      integer, intent(in) :: unit  !! a formatted unit open for reading
+      character(len=:), allocatable, intent(out) :: line  !! the line, without its newline
       integer, intent(out) :: ios  !! 0, or iostat_end at the end of the file
+      integer, intent(in), optional :: max_length  !! longest line accepted
+      logical, intent(out), optional :: too_long   !! the line is longer than max_length
       character(len=1024) :: chunk
       integer :: got
       line = ""
+      if (present(too_long)) too_long = .false.
       do
          read (unit, '(a)', advance="no", iostat=ios, size=got) chunk
          line = line//chunk(:got)
+         if (present(max_length)) then
+            if (len(line) > max_length) then
+               if (present(too_long)) too_long = .true.
+               ios = 1
+               return
+            end if
+         end if
          if (ios /= 0) exit
       end do
       if (is_iostat_eor(ios)) ios = 0
-      ! a last line without its newline is still a line; the next read meets the end
-      if (is_iostat_end(ios) .and. len(line) > 0) ios = 0
    end subroutine read_text_line
 end module hillstab_scene

@@ -250,8 +250,11 @@ contains
       n = n + 1; extra(n) = "summary: max |phi| = "//fmt(s%max_abs_phi)//" rad at t = "//fmt(s%time_of_max_phi)// &
          " s (16 dense points per step)"
       n = n + 1; extra(n) = "summary: energy E(0) = "//fmt(s%energy_start)//" J/kg, E(end) = "//fmt(s%energy_end)// &
-         " J/kg, drift max|E - E(0)|/E_scale = "//fmt(s%energy_drift)//" over the step ends, E_scale = "// &
-         fmt(s%energy_scale)//" J/kg (1/2 |v|^2 + 1/2 omega^2 (r - r0)^2 + g |z| at t = 0)"
+         " J/kg, "//merge("change", "drift ", scene%epsilon > 0.0_wp)//" max|E - E(0)|/E_scale = "// &
+         fmt(s%energy_drift)//" over the step ends"//merge(" (damped: the dissipated energy, not an error)", &
+         "                                              ", scene%epsilon > 0.0_wp)
+      n = n + 1; extra(n) = "summary: E_scale = "//fmt(s%energy_scale)// &
+         " J/kg (1/2 |v|^2 + 1/2 omega^2 (r - r0)^2 + g |z| at t = 0; E itself may be near 0)"
       if (scene%epsilon > 0.0_wp) then
          n = n + 1; extra(n) = "summary: damped: steps over which E rose beyond round-off: "// &
             trim(int64_text(s%energy_increases))//" (0: E decreases monotonically)"

@@ -12,6 +12,7 @@ module test_pendulum
    use hillstab_monodromy, only: monodromy_trace, method_t, method_gsl
    use hillstab_rk, only: rk_options_t, rk_integrate, rk_dop853, rk_step_t
    use hillstab_pendulum
+   use hillstab_gsl_pendulum, only: pendulum_gsl
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
@@ -38,7 +39,8 @@ contains
          new_unittest("energy_conserved", energy_conserved), &
          new_unittest("damped_energy_decreases", damped_energy_decreases), &
          new_unittest("jacobian_differences", jacobian_differences), &
-         new_unittest("swing_block_trace", swing_block_trace)])
+         new_unittest("swing_block_trace", swing_block_trace), &
+         new_unittest("dop853_vs_gsl_rk8pd", dop853_vs_gsl_rk8pd)])
    end function collect_pendulum
 
    subroutine record_energy(self, step, stop)
@@ -252,4 +254,35 @@ contains
             "blocks decouple")
       end do
    end subroutine swing_block_trace
+
+   !> A second method: GSL rk8pd on the same equations agrees with DOP853 after 5 radial
+   !> periods of Fig. 4 (e) (chaotic later on: see the speed benchmark) and of (c).
+   subroutine dop853_vs_gsl_rk8pd(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(pendulum_system_t) :: system
+      type(rk_options_t) :: options
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      real(wp) :: t, y(4), y_gsl(4), points(2, 2), difference
+      integer :: i
+      points = reshape([7.88_wp, 3.95_wp, 2.57_wp, 1.29_wp], [2, 2])
+      do i = 1, 2
+         system%pendulum = make(points(1, i), points(2, i), 0.0_wp)
+         associate (p => system%pendulum)
+            y = pendulum_initial_state(p, 0.017_wp)
+            y_gsl = y
+            options = rk_options_t(method=rk_dop853, rtol=1.0e-12_wp)
+            options%atol_components = pendulum_atol(p, y, 1.0e-12_wp)
+            t = 0.0_wp
+            call rk_integrate(system, t, 5*p%period, y, options, stats, error)
+            call check(ctx, .not. allocated(error), "DOP853 succeeds")
+            call pendulum_gsl(p, y_gsl, 5*p%period, 1.0e-12_wp, stats, error)
+            call check(ctx, .not. allocated(error), "GSL rk8pd succeeds")
+            difference = max(maxval(abs(y(1:2) - y_gsl(1:2)))/p%rho, maxval(abs(y(3:4) - y_gsl(3:4)))/(p%rho*p%omega))
+            write (*, '(4x,a,f5.2,a,f5.2,a,es10.3)') "alpha=", p%alpha, " beta=", p%beta, &
+               ": DOP853 vs GSL rk8pd after 5 periods, scaled difference ", difference
+            call check(ctx, difference < 1.0e-9_wp, "DOP853 = GSL rk8pd")
+         end associate
+      end do
+   end subroutine dop853_vs_gsl_rk8pd
 end module test_pendulum

@@ -21,9 +21,9 @@ module test_scene
    !> One bad scene: its text (`@OUT@` stands for the output prefix, `@DIR@` for the
    !> scratch prefix of the points files), the group and variable the message must name.
    type :: bad_case_t
-      character(len=200) :: text
+      character(len=400) :: text
       character(len=16) :: group
-      character(len=16) :: variable
+      character(len=40) :: variable
    end type bad_case_t
 
    interface
@@ -45,7 +45,8 @@ contains
          new_unittest("real_text_round_trip", real_text_round_trip), &
          new_unittest("namelist_round_trip", namelist_round_trip), &
          new_unittest("bad_input_messages", bad_input_messages), &
-         new_unittest("missing_scene_file", missing_scene_file)])
+         new_unittest("missing_scene_file", missing_scene_file), &
+         new_unittest("hostile_scene_files", hostile_scene_files)])
    end function collect_scene
 
    !> A unique scratch path prefix under build/ for this process and test.
@@ -347,7 +348,21 @@ contains
          bad_case_t(s//"format='binary', names_line=.true. / &chart /", "scene", "names_line"), &
          bad_case_t(s//"names_line=3 / &chart /", "scene", "names_line"), &
          bad_case_t(s//"task='coefficient', format='binary' / &coefficient /", "scene", "format"), &
-         bad_case_t(s//"task='coefficient', columns='tau' / &coefficient /", "scene", "columns")]
+         bad_case_t(s//"task='coefficient', columns='tau' / &coefficient /", "scene", "columns"), &
+         bad_case_t(s//"/ &chart beta_max = -, /", "chart", "beta_max: no value"), &
+         bad_case_t(s//"/ &chart n_alpha = , /", "chart", "n_alpha: no value"), &
+         bad_case_t("&scene task 'chart' / &chart /", "scene", "task: cannot read"), &
+         bad_case_t(s//"task='coefficient' / &coefficient alphas="//repeat("1,", 65)//"1 /", &
+                    "coefficient", "alphas: cannot read"), &
+         bad_case_t(s//"task='coefficient' / &coefficient alphas="//repeat("1,", 65)//"1 /", &
+                    "coefficient", "at most 64"), &
+         bad_case_t(s//"output='abc / &chart /", "scene", "output: the group is not closed"), &
+         bad_case_t(sp//"&points file='@DIR@_dir' /", "points", "file: '"), &
+         bad_case_t(sp//"&points file='@DIR@_dir' /", "points", "is a directory"), &
+         bad_case_t(sp//"&points file='@DIR@_slash.dat' /", "points", "line 2: expected two numbers"), &
+         bad_case_t(sp//"&points file='@DIR@_comma.dat' /", "points", "line 2: expected two numbers"), &
+         bad_case_t(sp//"&points file='@DIR@_repeat.dat' /", "points", "line 3: expected two numbers"), &
+         bad_case_t(sp//"&points file='@DIR@_first.dat' /", "points", "line 1: expected two numbers")]
    end function bad_cases
 
    !> Write the points files the bad cases refer to (`<dir>_badline.dat`, ...).
@@ -357,6 +372,12 @@ contains
       call write_file(dir//"_nan.dat", [character(len=20) :: "1.0 nan"])
       call write_file(dir//"_domain.dat", [character(len=20) :: "1.0 2.0", "9.9 2.0"])
       call write_file(dir//"_empty.dat", [character(len=20) :: "# nothing here", ""])
+      ! list-directed shortcuts that are not two numbers
+      call write_file(dir//"_slash.dat", [character(len=20) :: "1 2", "5 /"])
+      call write_file(dir//"_comma.dat", [character(len=20) :: "1 2", ",7"])
+      call write_file(dir//"_repeat.dat", [character(len=20) :: "1 2", "# c", "3*"])
+      call write_file(dir//"_first.dat", [character(len=20) :: "/", "1 2"])
+      call execute_command_line("mkdir -p "//dir//"_dir")
    end subroutine write_bad_points_files
 
    subroutine delete_bad_points_files(dir)
@@ -365,6 +386,11 @@ contains
       call delete_file(dir//"_nan.dat")
       call delete_file(dir//"_domain.dat")
       call delete_file(dir//"_empty.dat")
+      call delete_file(dir//"_slash.dat")
+      call delete_file(dir//"_comma.dat")
+      call delete_file(dir//"_repeat.dat")
+      call delete_file(dir//"_first.dat")
+      call execute_command_line("rmdir "//dir//"_dir")
    end subroutine delete_bad_points_files
 
    !> Replace every `key` in `text` by `value`.
@@ -426,4 +452,58 @@ contains
       if (.not. allocated(error)) return
       call check(ctx, contains_text(error%message, "build/no_such_scene.nml"), "names the file: "//error%message)
    end subroutine missing_scene_file
+   !> Scene files a careless or hostile user may give: an endless line (as /dev/zero),
+   !> no final newline, a string longer than the strings read, a points file with extra
+   !> columns; a points file with a long line.
+   subroutine hostile_scene_files(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(scene_t) :: scene
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: path, points
+      integer :: unit
+      path = scratch_prefix("hostile")//".nml"
+      ! one line longer than max_line_length
+      open (newunit=unit, file=path, status="replace", action="write", access="stream")
+      write (unit) "&scene output='x' / "//repeat(" ", max_line_length)//new_line("a")
+      close (unit)
+      call read_scene(path, scene, error)
+      call check(ctx, allocated(error), "a line longer than the limit is refused")
+      if (allocated(error)) call check(ctx, contains_text(error%message, path//": line 1 is longer than"), &
+                                       "names file and line: "//error%message)
+      ! no final newline
+      open (newunit=unit, file=path, status="replace", action="write", access="stream")
+      write (unit) "&scene method='formula' /"//new_line("a")//"&chart n_alpha = 3 /"
+      close (unit)
+      call read_scene(path, scene, error)
+      call check(ctx, .not. allocated(error), "no final newline is accepted")
+      if (.not. allocated(error)) call check(ctx, scene%chart%n_alpha == 3, "the last line is read")
+      ! a string longer than 4096 characters
+      call write_file(path, ["&scene output='"//repeat("o", 5000)//"' /", "&chart /"//repeat(" ", 5010)])
+      call read_scene(path, scene, error)
+      call check(ctx, allocated(error), "a 5000-character output is refused")
+      if (allocated(error)) call check(ctx, contains_text(error%message, ": &scene: output: value longer than 4096"), &
+                                       "names the limit: "//error%message)
+      ! extra columns in a points file are ignored; a very long points line is refused
+      points = scratch_prefix("hostile")//"_pts.dat"
+      call write_file(points, [character(len=40) :: "1.5 2.5 0 1 note", "  2 3", "1e-1	4.0"])
+      call write_file(path, [padded("&scene task='points', method='formula' /"), padded("&points file='"//points//"' /")])
+      call read_scene(path, scene, error)
+      call check(ctx, .not. allocated(error), "extra columns accepted")
+      if (.not. allocated(error)) then
+         call check(ctx, size(scene%points, 2) == 3, "three points")
+         if (size(scene%points, 2) == 3) then
+            call check(ctx, scene%points(1, 1) == 1.5_wp .and. scene%points(2, 1) == 2.5_wp, "first point")
+            call check(ctx, scene%points(1, 3) == 0.1_wp .and. scene%points(2, 3) == 4.0_wp, "tab separated")
+         end if
+      end if
+      open (newunit=unit, file=points, status="replace", action="write", access="stream")
+      write (unit) "1 2"//new_line("a")//repeat("3", max_line_length + 10)//new_line("a")
+      close (unit)
+      call read_scene(path, scene, error)
+      call check(ctx, allocated(error), "a long points line is refused")
+      if (allocated(error)) call check(ctx, contains_text(error%message, "line 2: longer than"), &
+                                       "names the line: "//error%message)
+      call delete_file(points)
+      call delete_file(path)
+   end subroutine hostile_scene_files
 end module test_scene
