@@ -47,6 +47,13 @@ module hillstab_scene
    !> Bytes of a scene file read: its groups must lie within them (an output file given
    !> as scene has them in its header).
    integer(int64), parameter, public :: max_scene_bytes = 1048576
+   !> Largest `n_alpha`, `n_beta`, `n_tau` (and every other `n_` count of a range).
+   integer, parameter, public :: max_grid_count = 100000000
+   !> Largest `n_segments`: bounds the work and memory of one point.
+   integer, parameter, public :: max_segments = 100000
+   !> Smallest `tolerance` accepted (methods reach the round-off level of double precision
+   !> near 1e-16 relative to max(1, |S|); below this the answer could only be round-off limited).
+   real(wp), parameter, public :: min_tolerance = 1.0e-15_wp
    !> Largest number of points in a points file.
    integer, parameter, public :: max_points = 1000000
    !> Largest number of α values in `&coefficient alphas`.
@@ -425,12 +432,18 @@ contains
 
       call require_positive_count(this%source, group, "n_segments", n_segments, 1, error)
       if (allocated(error)) return
+      if (n_segments > max_segments) then
+         call fail(error, this%source, group, "n_segments", "must be <= "//integer_text(max_segments)// &
+            " (the work of one point), got "//integer_text(n_segments))
+         return
+      end if
       this%method%n_segments = n_segments
 
       call require_finite(this%source, group, "tolerance", tolerance, error)
       if (allocated(error)) return
-      if (.not. tolerance > 0.0_wp) then
-         call fail(error, this%source, group, "tolerance", "must be > 0, got "//real_text(tolerance))
+      if (.not. (tolerance >= min_tolerance .and. tolerance < 1.0_wp)) then
+         call fail(error, this%source, group, "tolerance", "must be >= "//real_text(min_tolerance)// &
+            " (the smallest error double precision can be asked for) and < 1, got "//real_text(tolerance))
          return
       end if
       this%method%tolerance = tolerance
@@ -1497,6 +1510,9 @@ contains
          return
       end if
       call require_positive_count(path, group, "n_"//name, n, 1, error)
+      if (allocated(error)) return
+      if (n > max_grid_count) call fail(error, path, group, "n_"//name, "must be <= "// &
+         integer_text(max_grid_count)//", got "//integer_text(n))
    end subroutine check_range
 
    !> The elastic model needs 0 <= α < π² (a < ρ); the Mathieu model takes any finite ν.

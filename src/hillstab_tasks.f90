@@ -38,6 +38,7 @@ module hillstab_tasks
    use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, &
       write_text, write_records, chart_line_length, real_columns, n_chart_columns, chart_values, failed_chart_values, &
       chart_text, chart_columns_text, default_chart_columns, find_chart_columns
+   use hillstab_limits, only: check_output_room
    use, intrinsic :: iso_fortran_env, only: error_unit
    use, intrinsic :: iso_c_binding, only: c_int
    !$ use omp_lib, only: omp_get_max_threads
@@ -90,6 +91,9 @@ contains
       type(scene_t), intent(in) :: scene  !! a validated scene
       logical, intent(in) :: quiet  !! no progress on stderr
       type(error_t), allocatable, intent(out) :: error  !! what failed (err_points_failed: written with failed points)
+      ! an output that cannot fit where it goes is refused before any work
+      call check_output_room(scene, output_path(scene), error)
+      if (allocated(error)) return
       select case (scene%task)
       case (task_chart)
          call run_chart(scene, quiet, error)

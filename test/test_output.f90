@@ -24,7 +24,8 @@ contains
          new_unittest("chart_writer_file_limit", chart_writer_file_limit), &
          new_unittest("points_writer_file_limit", points_writer_file_limit), &
          new_unittest("coefficient_writer_file_limit", coefficient_writer_file_limit), &
-         new_unittest("directory_output_refused", directory_output_refused)])
+         new_unittest("directory_output_refused", directory_output_refused), &
+         new_unittest("output_larger_than_free_space", output_larger_than_free_space)])
    end function collect_output
 
    subroutine commit_writes_all(ctx)
@@ -148,4 +149,24 @@ contains
       call execute_command_line("rmdir "//out//"_chart.dat", exitstat=stat)
       call delete_file(scene)
    end subroutine directory_output_refused
+   !> A chart whose file cannot fit on the file system is refused before any work,
+   !> naming n_alpha and n_beta (10^16 points: no disk holds 10^18 bytes).
+   subroutine output_larger_than_free_space(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out, scene
+      out = scratch_prefix("huge")
+      scene = out//".nml"
+      call write_file(scene, [padded("&scene method = 'formula', output = '"//out//"' /"), &
+                              padded("&chart n_alpha = 100000000, n_beta = 100000000 /")])
+      call run_scene_file(scene, .true., error)
+      call check(ctx, allocated(error), "a chart larger than the free space is refused")
+      if (allocated(error)) then
+         call check(ctx, contains_text(error%message, scene//": &chart: n_alpha, n_beta: "), "names the variables: "// &
+                    error%message)
+         call check(ctx, contains_text(error%message, "free"), "says why: "//error%message)
+      end if
+      call check(ctx, .not. file_exists(out//"_chart.dat"), "no file")
+      call delete_file(scene)
+   end subroutine output_larger_than_free_space
 end module test_output

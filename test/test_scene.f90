@@ -350,6 +350,10 @@ contains
          bad_case_t(s//"task='coefficient', format='binary' / &coefficient /", "scene", "format"), &
          bad_case_t(s//"task='coefficient', columns='tau' / &coefficient /", "scene", "columns"), &
          bad_case_t(s//"/ &chart beta_max = -, /", "chart", "beta_max: no value"), &
+         bad_case_t(s//"/ &chart n_alpha = 2147483647 /", "chart", "n_alpha: must be <= 100000000"), &
+         bad_case_t(s//"n_segments = 2147483647 / &chart /", "scene", "n_segments: must be <= 100000"), &
+         bad_case_t(s//"tolerance = 1e-300 / &chart /", "scene", "tolerance: must be >= 1.0e-15"), &
+         bad_case_t(s//"tolerance = 1 / &chart /", "scene", "tolerance: must be >= 1.0e-15"), &
          bad_case_t(s//"/ &chart n_alpha = , /", "chart", "n_alpha: no value"), &
          bad_case_t("&scene task 'chart' / &chart /", "scene", "task: cannot read"), &
          bad_case_t(s//"task='coefficient' / &coefficient alphas="//repeat("1,", 65)//"1 /", &
