@@ -566,7 +566,7 @@ contains
          step%t_old = step%t
          step%t = t_new
          step%h = h_step
-         step%y(:) = y_new
+         step%y = y_new
          step%index = step%index + 1
          work%n_steps = work%n_steps + 1
       end subroutine accept
@@ -904,10 +904,10 @@ contains
       y_new(:) = y0 + hh*k(:, 13)
       if (with_error) then
          ! Hairer's combined estimate err5²/sqrt(err5² + 0.01·err3²) (dop853.f, ERROR ESTIMATION)
-         sk(:) = 1.0_wp/(atol + rtol*max(abs(y0), abs(y_new)))  ! reciprocal weights: one division
-         err3 = sum(((k(:, 13) - p8_bhh1*k(:, 1) - p8_bhh2*k(:, 9) - p8_bhh3*k(:, 12))*sk)**2)
+         sk(:) = atol + rtol*max(abs(y0), abs(y_new))
+         err3 = sum(((k(:, 13) - p8_bhh1*k(:, 1) - p8_bhh2*k(:, 9) - p8_bhh3*k(:, 12))/sk)**2)
          err5 = sum(((p8_er1*k(:, 1) + p8_er6*k(:, 6) + p8_er7*k(:, 7) + p8_er8*k(:, 8) &
-                      + p8_er9*k(:, 9) + p8_er10*k(:, 10) + p8_er11*k(:, 11) + p8_er12*k(:, 12))*sk)**2)
+                      + p8_er9*k(:, 9) + p8_er10*k(:, 10) + p8_er11*k(:, 11) + p8_er12*k(:, 12))/sk)**2)
          deno = err5 + 0.01_wp*err3
          if (deno <= 0.0_wp) deno = 1.0_wp
          err = abs(hh)*err5*sqrt(1.0_wp/(n*deno))
