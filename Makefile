@@ -21,6 +21,7 @@
 #                       pkg-config, C and Fortran through CMake find_package
 #   make mpi            build hillstab and hillstab_mpi with CMake (installs Open MPI: scripts/setup_mpi.sh)
 #   make test-mpi       hillstab_mpi against hillstab at np = 1, 2, 3, bad input, failing points
+#   make bench-lyapunov Lyapunov map 100 x 100 x 300 periods, hillstab against GSL rk8pd (~10 CPU minutes)
 FPM ?= bash scripts/fpm.sh
 ifeq ($(origin FC),default)
 FC = gfortran
@@ -39,7 +40,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug setup bench bench-output area lib install check-install doc doc-check clean mpi test-mpi fuzz check-memory
+.PHONY: run test test-debug setup bench bench-output area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov fuzz check-memory
 
 setup:
 	@bash scripts/setup.sh
@@ -140,6 +141,10 @@ mpi:
 
 test-mpi:
 	bash scripts/test_mpi.sh
+
+bench-lyapunov: setup
+	mkdir -p out
+	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_lyapunov
 
 doc: setup
 	@bash scripts/doc.sh

@@ -20,11 +20,8 @@ program hillstab_bench
       real(wp) :: alpha, beta
    end type sample_t
 
-   abstract interface
-      !> Work to be timed.
-      subroutine timed_work()
-      end subroutine timed_work
-   end interface
+   !> What `seconds_per_call` times.
+   integer, parameter :: timed_points = 1, timed_rows = 2, timed_point = 3
 
    type(sample_t), allocatable :: samples(:)
    character(len=:), allocatable :: block_names
@@ -300,7 +297,7 @@ contains
       evals = real(total_evals, wp)/size(samples)
       call sample_errors(traces, max_err, mean_err)
       timed_method = method
-      seconds = seconds_per_call(timed_all_points, 0.05_wp)/size(samples)
+      seconds = seconds_per_call(timed_points, 0.05_wp)/size(samples)
    end subroutine measure
 
    !> Timed work: every sample point by `timed_method`, point by point.
@@ -354,8 +351,11 @@ contains
 
    !> Wall time of one call of `run`, repeated (doubling) until the repeats take at
    !> least `min_seconds`.
+   !> `run` selects the work (1 all points, 2 all rows, 3 one point): a selector rather than
+   !> a procedure argument, since an internal procedure passed as an argument makes
+   !> gfortran build a trampoline and mark the program as needing an executable stack.
    real(wp) function seconds_per_call(run, min_seconds) result(seconds)
-      procedure(timed_work) :: run
+      integer, intent(in) :: run
       real(wp), intent(in) :: min_seconds
       integer(int64) :: t0, t1, rate
       integer :: r, repeats
@@ -363,7 +363,11 @@ contains
       do
          call system_clock(t0, rate)
          do r = 1, repeats
-            call run()
+            select case (run)
+            case (timed_points); call timed_all_points()
+            case (timed_rows); call timed_all_rows()
+            case default; call timed_one_point()
+            end select
          end do
          call system_clock(t1)
          if (real(t1 - t0, wp)/rate >= min_seconds .or. repeats > 1000000) exit
@@ -448,7 +452,7 @@ contains
          timed_method = method_t(method_auto, tolerance=tol)
          call timed_all_rows()
          evals = real(timed_evaluations, wp)/size(samples)
-         seconds = seconds_per_call(timed_all_rows, 0.05_wp)/size(samples)
+         seconds = seconds_per_call(timed_rows, 0.05_wp)/size(samples)
          call sample_errors(timed_traces, max_err, mean_err)
          call write_result(unit, "auto-rows", tol, seconds, max_err, mean_err, evals, written)
       end do
@@ -497,6 +501,6 @@ contains
       evals = real(work%n_evaluations, wp)
       timed_model = model
       timed_method = method
-      seconds = seconds_per_call(timed_one_point, 0.02_wp)
+      seconds = seconds_per_call(timed_point, 0.02_wp)
    end subroutine time_point
 end program hillstab_bench

@@ -33,7 +33,7 @@ program hillstab_mpi
       integer :: next_unit = 1                     !! next unit to hand out
       integer :: next_write = 1                    !! next unit to write
       logical :: stopping = .false.                !! an error: start nothing new
-      real(wp) :: busy = 0.0_wp                    !! rank 0's computing time [s]
+      real(wp) :: busy(2) = 0.0_wp                 !! rank 0's computing time [s]: CPU, wall
    end type manager_t
 
    integer :: rank, n_ranks, i, n_scenes
@@ -110,7 +110,7 @@ contains
       character(len=:), allocatable, intent(out) :: written
       type(scene_t) :: scene
       type(batch_t) :: batch
-      real(wp) :: busy
+      real(wp) :: busy(2)
       logical :: written_ok
       ! every rank reads the scene (and its points file); the worst outcome wins, so a
       ! file one rank cannot read stops all of them
@@ -170,7 +170,7 @@ contains
    subroutine manage(batch, error, busy)
       type(batch_t), intent(inout) :: batch
       type(error_t), allocatable, intent(out) :: error
-      real(wp), intent(out) :: busy  !! seconds rank 0 spent computing units
+      real(wp), intent(out) :: busy(2)  !! seconds rank 0 spent computing units: CPU, wall
       type(manager_t) :: m
       integer :: w, d
       logical :: computes, arrived
@@ -262,7 +262,7 @@ contains
    !> Ranks 1 …: compute the units rank 0 assigns until told to stop (unit 0).
    subroutine work(batch, busy)
       type(batch_t), intent(in) :: batch
-      real(wp), intent(out) :: busy  !! seconds spent computing units
+      real(wp), intent(out) :: busy(2)  !! seconds spent computing units: CPU, wall
       type(batch_result_t) :: result
       integer :: unit
       busy = 0.0_wp
@@ -281,30 +281,35 @@ contains
       type(batch_t), intent(in) :: batch
       integer, intent(in) :: unit
       type(batch_result_t), intent(out) :: result
-      real(wp), intent(inout) :: busy  !! seconds spent computing so far
-      real(wp) :: start
-      start = MPI_Wtime()
+      real(wp), intent(inout) :: busy(2)  !! seconds spent computing so far: CPU, wall
+      real(wp) :: start(2), finish(2)
+      call cpu_time(start(1))
+      start(2) = MPI_Wtime()
       call batch_compute(batch, unit, result)
-      busy = busy + (MPI_Wtime() - start)
+      call cpu_time(finish(1))
+      finish(2) = MPI_Wtime()
+      busy = busy + (finish - start)
    end subroutine compute_timed
 
    !> Collective: rank 0 says (unless quiet, after a successful run) how evenly the
    !> computing was spread: the busiest rank's computing time over the mean of the ranks
-   !> that computed.
+   !> that computed, in CPU time (the work, whatever else runs on the machine) and in wall
+   !> time.
    subroutine report_balance(busy, succeeded)
-      real(wp), intent(in) :: busy       !! this rank's computing time [s]
+      real(wp), intent(in) :: busy(2)    !! this rank's computing time [s]: CPU, wall
       logical, intent(in) :: succeeded   !! the same on every rank
-      real(wp) :: all_busy(n_ranks), mean
+      real(wp) :: all_busy(2, n_ranks), mean(2)
       integer :: n_computing
-      character(len=200) :: text
-      call MPI_Gather(busy, 1, MPI_DOUBLE_PRECISION, all_busy, 1, MPI_DOUBLE_PRECISION, manager, MPI_COMM_WORLD)
+      character(len=240) :: text
+      call MPI_Gather(busy, 2, MPI_DOUBLE_PRECISION, all_busy, 2, MPI_DOUBLE_PRECISION, manager, MPI_COMM_WORLD)
       if (rank /= manager .or. quiet .or. .not. succeeded .or. n_ranks == 1) return
-      n_computing = count(all_busy > 0.0_wp)
+      n_computing = count(all_busy(2, :) > 0.0_wp)
       if (n_computing == 0) return
-      mean = sum(all_busy)/n_computing
-      write (text, '(a,i0,a,i0,a,es9.3,a,es9.3,a,f6.3)') "hillstab_mpi: ", n_computing, " of ", n_ranks, &
-         " ranks computed; computing time per rank: mean ", mean, " s, busiest ", maxval(all_busy), &
-         " s; balance (busiest/mean) ", maxval(all_busy)/max(mean, tiny(1.0_wp))
+      mean = sum(all_busy, dim=2)/n_computing
+      write (text, '(a,i0,a,i0,a,es9.3,a,f6.3,a,es9.3,a,f6.3,a)') "hillstab_mpi: ", n_computing, " of ", n_ranks, &
+         " ranks computed; per rank: CPU mean ", mean(1), " s, busiest/mean ", &
+         maxval(all_busy(1, :))/max(mean(1), tiny(1.0_wp)), "; wall mean ", mean(2), " s, busiest/mean ", &
+         maxval(all_busy(2, :))/max(mean(2), tiny(1.0_wp)), " (load balance)"
       write (error_unit, '(a)') trim(text)
    end subroutine report_balance
 

@@ -116,7 +116,8 @@ check "no_temporary_files" '[ -z "$(ls "$work" | grep part)" ]'
 
 # options
 check "version" '[ "$(run_mpi 2 "$mpi" --version)" = "$("$serial" --version | sed s/hillstab/hillstab_mpi/)" ]'
-check "help" 'run_mpi 2 "$mpi" --help | grep -q "usage: mpirun"'
+help_text=$(run_mpi 2 "$mpi" --help)
+check "help" '[[ "$help_text" == *"usage: mpirun"* ]]'
 rank_statuses 2 "$work/st" --frobnicate
 check "unknown_option_exit2_every_rank" 'all_ranks "$work/st" 2 2'
 

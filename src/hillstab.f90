@@ -28,6 +28,9 @@ module hillstab
    use hillstab_refine
    use hillstab_pendulum
    use hillstab_pendulum_analysis
+   use hillstab_lyapunov
+   use hillstab_gsl_lyapunov
+   use hillstab_poincare
    use hillstab_scene
    use hillstab_output
    use hillstab_tasks

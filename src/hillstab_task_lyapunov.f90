@@ -45,7 +45,7 @@ contains
 
    !> Number of points of the scene (grid or list).
    pure integer(int64) function lyapunov_point_count(scene) result(n)
-      type(scene_t), intent(in) :: scene  !! a validated lyapunov scene
+      type(scene_t), intent(in) :: scene  !! a lyapunov scene
       if (scene%lyapunov_points) then
          n = size(scene%points, 2)
       else
@@ -56,10 +56,11 @@ contains
    !> (α, β) of point k (a grid numbered row by row, α outer), and whether it starts a new
    !> α block after the first (a blank line goes before it).
    pure subroutine lyapunov_point(scene, k, alpha, beta, new_block)
-      type(scene_t), intent(in) :: scene  !! a validated lyapunov scene
-      integer(int64), intent(in) :: k  !! point index, 1 ... lyapunov_point_count(scene)
-      real(wp), intent(out) :: alpha, beta  !! the point
-      logical, intent(out) :: new_block  !! a blank line goes before this point
+      type(scene_t), intent(in) :: scene  !! a lyapunov scene
+      integer(int64), intent(in) :: k     !! point index, 1 … lyapunov_point_count(scene)
+      real(wp), intent(out) :: alpha      !! α of the point
+      real(wp), intent(out) :: beta       !! β of the point
+      logical, intent(out) :: new_block   !! a blank line goes before it
       integer :: i, j
       if (scene%lyapunov_points) then
          alpha = scene%points(1, k)
@@ -76,7 +77,7 @@ contains
 
    !> Header lines: version, the effective scene, what the columns mean.
    function lyapunov_header(scene) result(lines)
-      type(scene_t), intent(in) :: scene  !! a validated lyapunov scene
+      type(scene_t), intent(in) :: scene  !! a lyapunov scene
       character(len=:), allocatable :: lines(:)
       character(len=:), allocatable :: groups(:)
       character(len=240) :: text(16)
@@ -197,7 +198,7 @@ contains
    !> Lines and statuses of the points first … last (in parallel), and the text the file
    !> holds for them: the lines joined, a blank line before each new α block.
    subroutine lyapunov_lines(scene, first, last, text, statuses)
-      type(scene_t), intent(in) :: scene  !! a validated lyapunov scene
+      type(scene_t), intent(in) :: scene  !! a lyapunov scene
       integer(int64), intent(in) :: first, last  !! range of point indices
       character(len=:), allocatable, intent(out) :: text  !! without the final new line
       integer, intent(out) :: statuses(first:last)       !! per point
@@ -233,10 +234,10 @@ contains
 
    !> err_points_failed naming the first failed point, after the file has been written.
    subroutine lyapunov_failure_error(scene, n_failed, first, error)
-      type(scene_t), intent(in) :: scene  !! a validated lyapunov scene
-      integer(int64), intent(in) :: n_failed  !! number of failed points
+      type(scene_t), intent(in) :: scene  !! a lyapunov scene
+      integer(int64), intent(in) :: n_failed  !! failed points written
       real(wp), intent(in) :: first(2)  !! α, β of the first failed point
-      type(error_t), allocatable, intent(out) :: error  !! err_points_failed naming the count and the first point
+      type(error_t), allocatable, intent(out) :: error  !! err_points_failed when n_failed > 0
       character(len=64) :: counts
       if (n_failed == 0) return
       write (counts, '(i0,a,i0)') n_failed, " of ", lyapunov_point_count(scene)
@@ -256,7 +257,8 @@ contains
    subroutine run_lyapunov(scene, quiet, error)
       type(scene_t), intent(in) :: scene  !! a validated lyapunov scene
       logical, intent(in) :: quiet  !! no progress on stderr
-      type(error_t), allocatable, intent(out) :: error  !! what failed (err_points_failed: written with failed points)
+      !> err_io (unwritable output), err_points_failed (written, some points failed)
+      type(error_t), allocatable, intent(out) :: error
       type(output_file_t) :: file
       type(error_t), allocatable :: cause
       character(len=:), allocatable :: text

@@ -35,7 +35,8 @@ contains
    subroutine run_poincare(scene, quiet, error)
       type(scene_t), intent(in) :: scene  !! a validated poincare scene
       logical, intent(in) :: quiet  !! unused: the task is short
-      type(error_t), allocatable, intent(out) :: error  !! bad phi0s (err_input) or err_points_failed after writing
+      !> err_input (an angle without a state of the common energy), err_io, err_points_failed
+      type(error_t), allocatable, intent(out) :: error
       type(pendulum_t) :: p
       type(section_t), allocatable :: sections(:)
       type(error_t), allocatable :: cause

@@ -563,6 +563,25 @@ contains
       call check(ctx, .not. any(index(first, "epsilon = 0.") > 0 .and. index(first, "# &scene") == 1), &
                  "no epsilon in &scene when kappa gives it")
       call delete_file(written)
+      ! a chart with &physical omega, kappa: where the swing is stable its amplitude decays as
+      ! e^{-kappa t/2} (x = e^{-eps tau/2} chi, |chi| bounded), so mu_per_s = -kappa/2 exactly
+      call run_text_scene("physical_c", [ &
+         padded("&scene method = 'formula', output = '"//out//"' /"), &
+         padded("&chart alpha_min = 0, alpha_max = 9, n_alpha = 3, beta_min = 1, beta_max = 12, n_beta = 5 /"), &
+         padded("&physical omega = 5, kappa = 0.5 /")], error, written)
+      call check(ctx, .not. allocated(error), "physical chart run")
+      if (allocated(error)) return
+      first = read_lines(written)
+      call check(ctx, columns_line(first) == "alpha beta S stable lambda_max mu log10_abs_S overflow physical "// &
+                 "stable_paper mu_per_s error_estimate status", "chart columns: "//columns_line(first))
+      call data_rows(first, 13, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 15, "15 rows of 13 numbers")
+      call check(ctx, count(rows(4, :) == 1.0_wp) >= 3, "some stable points")
+      do k = 1, size(rows, 2)
+         if (rows(4, k) == 1.0_wp) call check(ctx, rows(11, k), -0.25_wp, rel=1.0e-9_wp, message="decay -kappa/2")
+         if (rows(4, k) == 0.0_wp) call check(ctx, rows(11, k) > -0.25_wp, "unstable: slower decay or growth")
+      end do
+      call delete_file(written)
    end subroutine physical_units
 
    !> `columns` picks and orders columns with the same text as the full file; `names_line`
