@@ -61,7 +61,7 @@ FUZZ_COUNT ?= 300
 FUZZ_SEED ?= 7
 fuzz: setup
 	$(FPM) build >/dev/null
-	python3 scripts/fuzz.py --count $(FUZZ_COUNT) --seed $(FUZZ_SEED) \
+	python3 scripts/fuzz.py --count $(FUZZ_COUNT) --seed $(FUZZ_SEED) --signals \
 	   --hillstab "$$($(FPM) run --runner echo hillstab 2>/dev/null | tail -1)"
 	$(FPM) build --profile debug --flag "$(DEBUG_FLAGS)" >/dev/null
 	python3 scripts/fuzz.py --count $(FUZZ_COUNT) --seed $(FUZZ_SEED) \

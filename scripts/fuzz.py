@@ -13,7 +13,10 @@ in a scratch directory holding a copy of data/ and a sentinel output file, and m
   - finish within the time limit;
   - leave no temporary file (*.part<pid>) and the sentinel untouched.
 
-usage: scripts/fuzz.py --hillstab BUILD/app/hillstab [--count 300] [--seed 7] [--timeout 30]
+With --signals, a chart is first interrupted by SIGINT, SIGTERM and SIGHUP: each must
+exit 128 + signal, remove its temporary file and keep the old output.
+
+usage: scripts/fuzz.py --hillstab BUILD/app/hillstab [--count 300] [--seed 7] [--timeout 30] [--signals]
 Exit status 0 when every scene passes; the failures are listed with the scene text saved
 under the report directory (default build/fuzz_failures).
 """
@@ -190,12 +193,56 @@ def run_one(hillstab, text, work, timeout):
     return problems, status, elapsed
 
 
+def check_signals(hillstab, work):
+    """SIGINT, SIGTERM, SIGHUP during a chart: exit 128 + signal, no temporary file, the
+    old output kept. Returns a list of problems."""
+    import signal
+    problems = []
+    scene = os.path.join(work, "signal.nml")
+    with open(scene, "w") as f:
+        f.write("&scene method='magnus6', tolerance=1e-12, output='out/signal' /\n"
+                "&chart n_alpha=2000, n_beta=2000 /\n")
+    old = os.path.join(work, "out", "signal_chart.dat")
+    for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+        with open(old, "w") as f:
+            f.write("old\n")
+        proc = subprocess.Popen([hillstab, "--quiet", "signal.nml"], cwd=work, stdin=subprocess.DEVNULL,
+                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        # wait until the temporary file exists (the chart has started writing)
+        deadline = time.monotonic() + 20
+        while time.monotonic() < deadline and not glob.glob(old + ".part*") and proc.poll() is None:
+            time.sleep(0.05)
+        time.sleep(0.3)
+        if proc.poll() is not None:
+            problems.append("signal %d: the chart ended before the signal (status %d)" % (sig, proc.returncode))
+            continue
+        proc.send_signal(sig)
+        try:
+            status = proc.wait(timeout=20)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            problems.append("signal %d: still running 20 s later" % sig)
+            continue
+        if status != 128 + sig:
+            problems.append("signal %d: exit status %d, expected %d" % (sig, status, 128 + sig))
+        if glob.glob(old + ".part*"):
+            problems.append("signal %d: temporary file left" % sig)
+        with open(old) as f:
+            if f.read() != "old\n":
+                problems.append("signal %d: the old output was changed" % sig)
+    os.remove(old)
+    os.remove(scene)
+    return problems
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--hillstab", required=True, help="the hillstab executable")
     parser.add_argument("--count", type=int, default=300, help="number of mutated scenes")
     parser.add_argument("--seed", type=int, default=7, help="random seed (same seed, same scenes)")
     parser.add_argument("--timeout", type=float, default=30.0, help="seconds allowed per scene")
+    parser.add_argument("--signals", action="store_true",
+                        help="also interrupt a chart with SIGINT, SIGTERM, SIGHUP")
     parser.add_argument("--report", default=os.path.join(ROOT, "build", "fuzz_failures"),
                         help="directory for the scenes that fail")
     args = parser.parse_args()
@@ -219,6 +266,12 @@ def main():
     counts = {}
     slowest = 0.0
     try:
+        if args.signals:
+            problems = check_signals(hillstab, work)
+            for p in problems:
+                print("FAIL signals: " + p)
+            failures += 1 if problems else 0
+            print("fuzz: signals %s" % ("failed" if problems else "ok (exit 128 + signal, no temporary file, old file kept)"))
         for k in range(args.count):
             name, base = texts[k % len(texts)]
             text = mutate(base, rng)
