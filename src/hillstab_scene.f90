@@ -19,7 +19,8 @@ module hillstab_scene
    use hillstab_error, only: error_t, set_error, err_input
    use hillstab_coefficient, only: model_elastic, model_mathieu, model_name, sampling_endpoint, &
       sampling_average, sampling_name
-   use hillstab_monodromy, only: method_t, method_auto, method_name, method_from_name
+   use hillstab_monodromy, only: method_t, method_auto, method_name, method_from_name, method_magnus4, &
+      method_magnus6, method_rk, method_gsl
    use hillstab_output, only: default_chart_columns, find_chart_columns, chart_columns_text
    use hillstab_units, only: physical_t, physical_alpha, physical_beta, physical_epsilon, physical_nu, &
       check_physical, equilibrium_length
@@ -56,6 +57,8 @@ module hillstab_scene
    real(wp), parameter, public :: min_tolerance = 1.0e-15_wp
    !> Largest |α|, |β|, |τ| accepted (grid spacings, Q and the methods' scalings stay finite).
    real(wp), parameter, public :: max_magnitude = 1.0e15_wp
+   !> Largest |α| + |β| for the integrating methods (magnus4, magnus6, rk, gsl).
+   real(wp), parameter, public :: max_integrated_magnitude = 1.0e8_wp
    !> Largest |α|, |β| of task boundaries.
    real(wp), parameter, public :: max_boundaries_magnitude = 1.0e6_wp
    !> Largest damping ε.
@@ -290,6 +293,7 @@ contains
          end select
       end if
       if (.not. allocated(error)) call check_columns(scene, error)
+      if (.not. allocated(error)) call check_integration_cost(scene, error)
       close (unit)
    end subroutine read_scene
 
@@ -1517,6 +1521,41 @@ contains
       if (abs(x) > max_magnitude) call fail(error, path, group, variable, "must lie in ["// &
          real_text(-max_magnitude)//", "//real_text(max_magnitude)//"], got "//real_text(x))
    end subroutine require_bounded
+
+   !> The integrating methods (magnus4, magnus6, rk, gsl) take steps in proportion to
+   !> sqrt(|alpha| + |beta|): beyond max_integrated_magnitude one point would take seconds
+   !> to minutes, so such scenes are refused (auto stops at its own step limit; formula and
+   !> segments cost the same at any magnitude).
+   subroutine check_integration_cost(scene, error)
+      type(scene_t), intent(in) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: why
+      integer :: k
+      select case (scene%method%kind)
+      case (method_magnus4, method_magnus6, method_rk, method_gsl)
+      case default
+         return
+      end select
+      why = " for method '"//method_name(scene%method%kind)//"', whose steps grow with sqrt(|alpha| + |beta|)"// &
+            " (method auto or segments take any magnitude)"
+      select case (scene%task)
+      case (task_chart)
+         if (max(abs(scene%chart%alpha_min), abs(scene%chart%alpha_max)) + &
+             max(abs(scene%chart%beta_min), abs(scene%chart%beta_max)) > max_integrated_magnitude) then
+            call fail(error, scene%source, "chart", "alpha_max", "|alpha| + |beta| must be <= "// &
+               real_text(max_integrated_magnitude)//why)
+         end if
+      case (task_points)
+         if (.not. allocated(scene%points)) return
+         do k = 1, size(scene%points, 2)
+            if (abs(scene%points(1, k)) + abs(scene%points(2, k)) > max_integrated_magnitude) then
+               call fail(error, scene%source, "points", "file", "point "//integer_text(k)// &
+                  ": |alpha| + |beta| must be <= "//real_text(max_integrated_magnitude)//why)
+               return
+            end if
+         end do
+      end select
+   end subroutine check_integration_cost
 
    !> The boundaries task (Hill's method, its matrix growing with sqrt|alpha|) is bounded
    !> to |alpha|, |beta| <= max_boundaries_magnitude.

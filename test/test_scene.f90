@@ -355,6 +355,8 @@ contains
          bad_case_t(s//"tolerance = 1e-300 / &chart /", "scene", "tolerance: must be >= 1.0e-15"), &
          bad_case_t(s//"tolerance = 1 / &chart /", "scene", "tolerance: must be >= 1.0e-15"), &
          bad_case_t(s//"/ &chart beta_max = 1e308 /", "chart", "beta_max: must lie in [-1.0e15, 1.0e15]"), &
+         bad_case_t("&scene model='mathieu', method='rk' / &chart alpha_max = 1e14 /", "chart", &
+                    "|alpha| + |beta| must be <= 100000000.0"), &
          bad_case_t(s//"model='mathieu' / &chart alpha_max = 1e20 /", "chart", "alpha_max: must lie in"), &
          bad_case_t(s//"epsilon = 1e200 / &chart /", "scene", "epsilon: damping must be >= 0 and <= 100"), &
          bad_case_t(s//"task='coefficient' / &coefficient beta = 1e308 /", "coefficient", "beta: must lie in"), &
