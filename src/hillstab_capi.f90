@@ -13,7 +13,8 @@
 module hillstab_capi
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_null_char
    use hillstab_kinds, only: wp
-   use hillstab_error, only: error_t, error_code_name
+   use hillstab_error, only: error_t, error_code_name, set_error, err_invalid_parameter, err_overflow
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
    use hillstab_transfer, only: trace_t
    use hillstab_formulas, only: trace_damped_paper
@@ -47,6 +48,12 @@ contains
       call check_model(m, error)
       call record_outcome(error)
       if (allocated(error)) then
+         status = int(error%code, c_int)
+         return
+      end if
+      if (.not. ieee_is_finite(tau)) then
+         call set_error(error, err_invalid_parameter, "tau must be finite")
+         call record_outcome(error)
          status = int(error%code, c_int)
          return
       end if
@@ -123,6 +130,13 @@ contains
       ipaper = 0
       if (f%stable_paper) ipaper = 1
       info = 0
+      ! never a silent NaN or Inf (S is +-DBL_MAX with the overflow flag; the logarithms are finite)
+      if (.not. (ieee_is_finite(logs) .and. all(ieee_is_finite(rlogm)) .and. ieee_is_finite(mu) .and. &
+                 .not. ieee_is_nan(s))) then
+         call set_error(error, err_overflow, "the result is not finite")
+         call record_outcome(error)
+         info = int(error%code, c_int)
+      end if
    end subroutine evaluate
 
    !> The paper's closed form eq. (37)/(48) (ε = 0 gives eq. (37)); ±DBL_MAX on overflow.

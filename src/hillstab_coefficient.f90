@@ -86,6 +86,11 @@ contains
          call set_error(error, err_invalid_parameter, "epsilon must be >= 0, got "//trim(adjustl(buf)))
          return
       end if
+      ! beyond these magnitudes Q, the grid spacings and the methods' scalings overflow
+      if (max(abs(model%alpha), abs(model%beta)) > 1.0e15_wp .or. model%epsilon > 100.0_wp) then
+         call set_error(error, err_invalid_parameter, "|alpha|, |beta| must be <= 1e15 and epsilon <= 100")
+         return
+      end if
       select case (model%kind)
       case (model_elastic)
          if (model%alpha < 0.0_wp .or. .not. (model%alpha < pi2)) then

@@ -47,7 +47,7 @@ module hillstab_legacy
          real(wp), intent(out) :: s     !! the trace, as in HSTRACE
          real(wp), intent(out) :: mu    !! Floquet exponent μ = ln|λ_max|/2 of x per unit τ
          integer, intent(out) :: istab  !! 1 when x is stable (|S| < 2 cosh ε), else 0
-         integer, intent(out) :: info   !! 0 success, 7 round-off limited, else an error code
+         integer, intent(out) :: info   !! 0 success, 2 overflow (as HSTRACE), 7 round-off limited, else an error code
       end subroutine hsfloq
 
       !> Message of the most recent HSTRACE or HSFLOQ call in this thread (blank after success).

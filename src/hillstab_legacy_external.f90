@@ -68,7 +68,7 @@ subroutine hsfloq(model, alpha, beta, eps, method, nseg, isamp, tol, s, mu, ista
    real(wp), intent(out) :: s     !! the trace, as in HSTRACE
    real(wp), intent(out) :: mu    !! Floquet exponent μ = ln|λ_max|/2 of x per unit τ
    integer, intent(out) :: istab  !! 1 when x is stable (|S| < 2 cosh ε), else 0
-   integer, intent(out) :: info   !! 0 success, 7 round-off limited, else an error code
+   integer, intent(out) :: info   !! 0 success, 2 overflow (as HSTRACE), 7 round-off limited, else an error code
    type(trace_t) :: tr
    type(floquet_t) :: f
    type(error_t), allocatable :: error
@@ -84,6 +84,7 @@ subroutine hsfloq(model, alpha, beta, eps, method, nseg, isamp, tol, s, mu, ista
    s = f%trace%value
    mu = f%exponent
    if (f%stable) istab = 1
+   if (info == 0 .and. tr%overflow) info = 2  ! as HSTRACE: S is +-HUGE
 end subroutine hsfloq
 
 !> MSG receives the message of the most recent HSTRACE or HSFLOQ call in this thread

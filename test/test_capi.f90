@@ -30,7 +30,8 @@ contains
          new_unittest("legacy_wrappers", legacy_wrappers), &
          new_unittest("legacy_messages", legacy_messages), &
          new_unittest("legacy_roundoff_limited", legacy_roundoff_limited), &
-         new_unittest("legacy_invalid_arguments", legacy_invalid_arguments)])
+         new_unittest("legacy_invalid_arguments", legacy_invalid_arguments), &
+         new_unittest("extreme_inputs_status", extreme_inputs_status)])
    end function collect_capi
 
    subroutine c_trace_matches_library(ctx)
@@ -222,4 +223,31 @@ contains
       call hstrace(1, -1.0_wp, 2.47_wp, 0.0_wp, method_formula, 2, 1, 1.0e-10_wp, s, info)
       call check(ctx, info /= 0, "alpha < 0 rejected")
    end subroutine legacy_wrappers
+   !> Extreme inputs: a status, never a silent NaN or Inf; HSFLOQ reports overflow as HSTRACE.
+   subroutine extreme_inputs_status(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(c_double) :: s, log_abs, q, mu_c, log_moduli(2)
+      integer(c_int) :: overflow, status, stable, stable_paper
+      real(wp) :: sl, mu
+      integer :: istab, info, info_trace
+      status = hillstab_c_coefficient(1_c_int, 1.0_c_double, 2.0_c_double, 0.0_c_double, &
+         ieee_value(1.0_c_double, ieee_quiet_nan), q)
+      call check(ctx, status == err_invalid_parameter, "hillstab_q: tau = NaN is an invalid parameter")
+      status = hillstab_c_trace(2_c_int, 1.0_c_double, 1.0e308_c_double, 0.0_c_double, int(method_formula, c_int), &
+         2_c_int, 1_c_int, 1.0e-10_c_double, s, log_abs, overflow)
+      call check(ctx, status == err_invalid_parameter, "beta = 1e308: invalid parameter")
+      status = hillstab_c_floquet(1_c_int, 1.0_c_double, 2.0_c_double, 1.0e200_c_double, int(method_formula, c_int), &
+         2_c_int, 1_c_int, 1.0e-10_c_double, s, log_moduli, mu_c, stable, stable_paper)
+      call check(ctx, status == err_invalid_parameter, "epsilon = 1e200: invalid parameter")
+      ! a huge trace: the formula at beta = -1e6 overflows; HSTRACE and HSFLOQ both say INFO = 2
+      call hstrace(2, 0.0_wp, -1.0e6_wp, 0.0_wp, method_formula, 2, 1, 1.0e-10_wp, sl, info_trace)
+      call hsfloq(2, 0.0_wp, -1.0e6_wp, 0.0_wp, method_formula, 2, 1, 1.0e-10_wp, sl, mu, istab, info)
+      call check(ctx, info == info_trace, "HSFLOQ and HSTRACE agree on INFO")
+      call check(ctx, info_trace == 0 .or. info_trace == 2, "HSTRACE: success or overflow")
+      status = hillstab_c_trace(2_c_int, 0.0_c_double, -1.0e6_c_double, 0.0_c_double, int(method_formula, c_int), &
+         2_c_int, 1_c_int, 1.0e-10_c_double, s, log_abs, overflow)
+      call check(ctx, status == 0, "C: a huge trace is no error")
+      call check(ctx, overflow == 1 .eqv. info_trace == 2, "C overflow flag as HSTRACE")
+      call check(ctx, log_abs > 1000.0_c_double .and. log_abs < huge(1.0_c_double), "ln|S| finite and large")
+   end subroutine extreme_inputs_status
 end module test_capi
