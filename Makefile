@@ -27,9 +27,9 @@ ifeq ($(origin FC),default)
 FC = gfortran
 endif
 PREFIX ?= /usr/local
-# an executable stack in the installed library or program: report (until the last trampolines
-# are gone) or fail
-export HILLSTAB_STACK_CHECK ?= report
+# check-install fails on an executable stack (GNU_STACK RWE) in the installed library or
+# program, or on a link that warns about one (HILLSTAB_STACK_CHECK=report only reports)
+export HILLSTAB_STACK_CHECK ?= fail
 DEBUG_FLAGS = -fcheck=all -ffpe-trap=invalid,zero,overflow -g -fbacktrace
 LIB_FLAGS = -O2 -fPIC -fopenmp -fimplicit-none
 LIBS = -lgsl -lgslcblas -llapack -lblas
