@@ -5,7 +5,7 @@
 !> state at a given energy has that energy and is the bounce start at φ0 = 0; the root
 !> refinement finds the zero of a step's interpolant to rounding.
 module test_poincare
-   use hillstab_kinds, only: wp
+   use hillstab_kinds, only: wp, pi
    use hillstab_error, only: error_t
    use hillstab_rk, only: rk_options_t, rk_integrate, rk_step_t, rk_dop853
    use hillstab_pendulum
@@ -93,9 +93,10 @@ contains
       type(pendulum_t) :: p
       type(section_t) :: section
       type(error_t), allocatable :: error
-      real(wp) :: y0(4), e, room, drift
+      real(wp) :: y0(4), e, room, drift, swing
       integer :: j
       p = make(7.48_wp, 2.47_wp)
+      swing = 2.0_wp*pi/sqrt(p%g/p%rho)
       y0 = pendulum_initial_state(p, 0.3_wp)
       e = pendulum_energy(p, y0)
       call poincare_section(p, y0, 200*p%period, 1.0e-10_wp, section, error)
@@ -109,6 +110,9 @@ contains
       end do
       call check(ctx, room > 0.0_wp, "inside the energy's region")
       call check(ctx, all(section%points(1, 2:section%n) > section%points(1, :section%n - 1)), "times increase")
+      ! measured: successive crossings 0.76 to 1.44 swing periods apart
+      call check(ctx, minval(section%points(1, 2:section%n) - section%points(1, :section%n - 1)) > &
+         0.5_wp*swing, "at most one crossing per swing")
       ! the section's drift is relative to |E(0)|, which is small where the terms of E
       ! nearly cancel; over the sum of their magnitudes it measures the integration
       drift = section%energy_drift*abs(e)/pendulum_energy_scale(p, y0)
