@@ -660,35 +660,32 @@ contains
    !> not for a chart starting at beta = 0 (no gravity); yes above beta = pi**2.
    subroutine domain_notes(ctx)
       type(test_context_t), intent(inout) :: ctx
-      type(error_t), allocatable :: error
-      character(len=:), allocatable :: written, out
-      character(len=1024), allocatable :: lines(:)
+      character(len=:), allocatable :: out
       out = scratch_prefix("notes")
-      call run_text_scene("notes1", [ &
-         padded("&scene model = 'mathieu', method = 'formula', output = '"//out//"' /"), &
-         padded("&chart alpha_min = 0, alpha_max = 12, n_alpha = 2, beta_min = -2, beta_max = 12, n_beta = 2 /")], &
-         error, written)
-      call check(ctx, .not. allocated(error), "Mathieu chart")
-      if (allocated(error)) return
-      lines = read_lines(written)
-      call check(ctx, .not. any(index(lines, "physical") > 0), "no physical column or note for Mathieu")
-      call run_text_scene("notes2", [ &
-         padded("&scene method = 'formula', output = '"//out//"' /"), &
-         padded("&chart alpha_min = 0, alpha_max = 9, n_alpha = 2, beta_min = 0, beta_max = 9, n_beta = 2 /")], &
-         error, written)
-      call check(ctx, .not. allocated(error), "chart from beta = 0")
-      if (allocated(error)) return
-      lines = read_lines(written)
-      call check(ctx, .not. any(index(lines, "leaves the physical domain") > 0), "beta = 0 is physical (g = 0)")
-      call run_text_scene("notes3", [ &
-         padded("&scene method = 'formula', output = '"//out//"' /"), &
-         padded("&chart alpha_min = 0, alpha_max = 9, n_alpha = 2, beta_min = 0, beta_max = 10, n_beta = 2 /")], &
-         error, written)
-      call check(ctx, .not. allocated(error), "chart to beta = 10")
-      if (allocated(error)) return
-      lines = read_lines(written)
-      call check(ctx, any(index(lines, "leaves the physical domain") > 0), "beta > pi**2 leaves it")
-      call delete_file(written)
+      call check_note("notes1", "&scene model = 'mathieu', method = 'formula', output = '"//out//"' /", &
+         "&chart alpha_min = 0, alpha_max = 12, n_alpha = 2, beta_min = -2, beta_max = 12, n_beta = 2 /", &
+         "physical", .false., "Mathieu chart", "no physical column or note for Mathieu")
+      call check_note("notes2", "&scene method = 'formula', output = '"//out//"' /", &
+         "&chart alpha_min = 0, alpha_max = 9, n_alpha = 2, beta_min = 0, beta_max = 9, n_beta = 2 /", &
+         "leaves the physical domain", .false., "chart from beta = 0", "beta = 0 is physical (g = 0)")
+      call check_note("notes3", "&scene method = 'formula', output = '"//out//"' /", &
+         "&chart alpha_min = 0, alpha_max = 9, n_alpha = 2, beta_min = 0, beta_max = 10, n_beta = 2 /", &
+         "leaves the physical domain", .true., "chart to beta = 10", "beta > pi**2 leaves it")
+   contains
+      !> Run the scene (two lines); the file mentions `text` exactly when `expected`.
+      subroutine check_note(name, scene_line, chart_line, text, expected, run_label, label)
+         character(len=*), intent(in) :: name, scene_line, chart_line, text, run_label, label
+         logical, intent(in) :: expected
+         type(error_t), allocatable :: error
+         character(len=:), allocatable :: written
+         character(len=1024), allocatable :: lines(:)
+         call run_text_scene(name, [padded(scene_line), padded(chart_line)], error, written)
+         call check(ctx, .not. allocated(error), run_label)
+         if (allocated(error)) return
+         lines = read_lines(written)
+         call check(ctx, any(index(lines, text) > 0) .eqv. expected, label)
+         call delete_file(written)
+      end subroutine check_note
    end subroutine domain_notes
 
    !> Every bad scene of the scene suite: an error, no output file created, an
