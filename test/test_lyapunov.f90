@@ -164,7 +164,8 @@ contains
       call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 200, 1.0e-11_wp, a, error)
       call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 200, 1.0e-9_wp, b, error, method=rk_dopri5)
       call check(ctx, .not. allocated(error), "integrated")
-      call check(ctx, a%exponent, b%exponent, abs=1.0e-5_wp, rel=0.0_wp)
+      ! measured difference 9.1e-9 (exponent 9.2e-3)
+      call check(ctx, a%exponent, b%exponent, abs=1.0e-7_wp, rel=0.0_wp)
       p = make(7.48_wp, 2.47_wp, 0.0_wp)
       call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 600, 1.0e-11_wp, a, error)
       call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 600, 1.0e-9_wp, b, error, method=rk_dopri5)
@@ -178,7 +179,7 @@ contains
    !> exponent tends to −ε per radial period (the damped radial oscillator's multipliers
    !> have modulus e^{−κT/2} = e^{−ε}, and so do those of the small damped swing about
    !> r = ρ). The growth of single periods oscillates (the tangent vector turns within the
-   !> decaying modes); its mean over 400 periods is −ε to within 0.01.
+   !> decaying modes); its mean over 400 periods is −ε to within 1e-3 (measured 1.4e-4).
    subroutine damped_bounce(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(lyapunov_t) :: result
@@ -187,7 +188,7 @@ contains
       p = make(2.57_wp, 1.29_wp, 0.4_wp)
       call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 400, 1.0e-11_wp, result, error)
       call check(ctx, .not. allocated(error), "integrated")
-      call check(ctx, result%exponent, -0.4_wp, abs=0.01_wp, rel=0.0_wp)
+      call check(ctx, result%exponent, -0.4_wp, abs=1.0e-3_wp, rel=0.0_wp)
    end subroutine damped_bounce
 
    !> GSL rk8pd driving the same equations: the same exponent on the regular case (c)
@@ -201,7 +202,8 @@ contains
       call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 300, 1.0e-11_wp, a, error)
       call lyapunov_largest_gsl(p, pendulum_initial_state(p, 0.017_wp), 300, 1.0e-11_wp, b, error)
       call check(ctx, .not. allocated(error), "integrated")
-      call check(ctx, b%exponent, a%exponent, abs=1.0e-6_wp, rel=0.0_wp)
+      ! measured difference 3e-11 (exponent 6.8e-3)
+      call check(ctx, b%exponent, a%exponent, abs=1.0e-9_wp, rel=0.0_wp)
       call check(ctx, b%energy_drift < 1.0e-8_wp, "energy kept")
       write (*, '(4x,a,es10.3,a,es10.3)') "case (c), 300 periods: dop853 - rk8pd ", a%exponent - b%exponent, &
          ", dop853 ", a%exponent
