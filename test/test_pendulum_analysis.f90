@@ -14,6 +14,7 @@ module test_pendulum_analysis
    use hillstab_pendulum
    use hillstab_pendulum_analysis
    use hillstab_testing
+   use hillstab_test_pendulum, only: pendulum_at
    implicit none
    private
    public :: collect_pendulum_analysis
@@ -29,14 +30,6 @@ contains
          new_unittest("onset_law_spacing", onset_law_spacing), &
          new_unittest("zero_angle_never_starts", zero_angle_never_starts)])
    end function collect_pendulum_analysis
-
-   function make(alpha, beta, epsilon) result(p)
-      real(wp), intent(in) :: alpha, beta, epsilon
-      type(pendulum_t) :: p
-      type(error_t), allocatable :: error
-      call pendulum_from_chart(alpha, beta, epsilon, 0.1_wp, 9.81_wp, p, error)
-      if (allocated(error)) error stop "test_pendulum_analysis: valid parameters rejected"
-   end function make
 
    !> λ_max of the Hill equation at (α, β, ε) from the core (GSL rk8pd, 1e-13).
    real(wp) function core_lambda(alpha, beta, epsilon) result(lambda)
@@ -56,7 +49,7 @@ contains
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
       real(wp) :: y(4)
-      watch%pendulum = make(alpha, beta, 0.0_wp)
+      watch%pendulum = pendulum_at(alpha, beta, 0.0_wp)
       watch%stop_at_onset = .true.
       y = pendulum_initial_state(watch%pendulum, phi0)
       call pendulum_integrate(watch, y, periods*watch%pendulum%period, rtol, stats, error)
@@ -82,7 +75,7 @@ contains
                         7.88_wp, 3.95_wp, 7.48_wp, 2.47_wp, 9.5_wp, 2.47_wp, 9.5_wp, 6.0_wp], [2, 8])
       do i = 1, size(points, 2)
          write (label, '(a,f5.2,a,f5.2)') "alpha=", points(1, i), " beta=", points(2, i)
-         call bounce_multipliers(make(points(1, i), points(2, i), 0.0_wp), 1.0e-13_wp, mult, stats, error)
+         call bounce_multipliers(pendulum_at(points(1, i), points(2, i), 0.0_wp), 1.0e-13_wp, mult, stats, error)
          call check(ctx, .not. allocated(error), trim(label)//": multipliers computed")
          if (allocated(error)) cycle
          call monodromy_trace(hill_model_t(model_elastic, points(1, i), points(2, i), 0.0_wp), &
@@ -96,7 +89,7 @@ contains
       end do
       ! damped: the radial pair decays by e^(-eps) per period (κT/2 = ε); the swing block
       ! is then taken along the decaying bounce, which is not the chart's periodic orbit
-      call bounce_multipliers(make(3.7_wp, 2.47_wp, 0.3_wp), 1.0e-13_wp, mult, stats, error)
+      call bounce_multipliers(pendulum_at(3.7_wp, 2.47_wp, 0.3_wp), 1.0e-13_wp, mult, stats, error)
       call check(ctx, .not. allocated(error), "damped multipliers computed")
       call check(ctx, maxval(abs(mult%radial)), exp(-0.3_wp), rel=1.0e-8_wp, message="damped radial |lambda| = e^-eps")
    end subroutine multipliers_vs_core

@@ -6,8 +6,9 @@
 module test_task_series
    use hillstab_kinds, only: wp, pi, pi2
    use hillstab_error, only: error_t, err_input
-   use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_bounce
+   use hillstab_pendulum, only: pendulum_t, pendulum_bounce
    use hillstab_testing
+   use hillstab_test_pendulum, only: pendulum_at
    use hillstab_test_files, only: run_text_scene, check_rerun
    use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -85,13 +86,6 @@ contains
       rows = rows(:, :n)
    end function rows_of
 
-   function make(alpha, beta) result(p)
-      real(wp), intent(in) :: alpha, beta
-      type(pendulum_t) :: p
-      type(error_t), allocatable :: error
-      call pendulum_from_chart(alpha, beta, 0.0_wp, 0.1_wp, 9.81_wp, p, error)
-   end function make
-
    !> One `# columns:` line `t r phi x z E vx vz`; periods × samples + 1 rows at exactly
    !> t_j = j T/samples (T from ρ, ω written independently here); r = √(x² + z²),
    !> φ = atan2(x, z); the header summary is there.
@@ -154,7 +148,7 @@ contains
       call check(ctx, any(index(lines, "predicted n* = ln(0.1/|phi0|)/ln(lambda_max) = never") > 0), &
          "no onset predicted")
       call check(ctx, any(index(lines, "observed not within the run") > 0), "no onset observed")
-      p = make(7.88_wp, 3.95_wp)
+      p = pendulum_at(7.88_wp, 3.95_wp)
       worst = 0.0_wp
       do j = 1, size(rows, 2)
          exact = pendulum_bounce(p, rows(1, j))
@@ -233,7 +227,7 @@ contains
                            ", tolerance = 1e-10", lines, error)
       call check_finite("alpha = 9.8")
       if (allocated(rows)) then
-         p = make(9.8_wp, 2.47_wp)
+         p = pendulum_at(9.8_wp, 2.47_wp)
          call check(ctx, minval(rows(2, :)) > 0.0_wp, "alpha = 9.8: r > 0")
          write (*, '(4x,a,es10.3,a,es10.3)') "alpha = 9.8: min r/rho = ", minval(rows(2, :))/p%rho, &
             ", max |phi| on samples ", maxval(abs(rows(3, :)))
