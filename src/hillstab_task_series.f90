@@ -7,7 +7,8 @@
 !>
 !> The run integrates twice, identically: the first pass measures the summary, which
 !> belongs in the header, the second writes the samples (rows go straight to the file,
-!> so memory does not grow with the length of the run).
+!> so memory does not grow with the length of the run). Only the first pass watches
+!> (max |φ| on 16 dense points per step, energy, onset); the second only samples.
 !>
 !>```fortran
 !> type(scene_t) :: scene
@@ -25,8 +26,8 @@ module hillstab_task_series
    use hillstab_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
    use hillstab_monodromy, only: monodromy_trace, method_name
    use hillstab_rk, only: rk_step_t, rk_dense_value
-   use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_angle, &
-      pendulum_energy, pendulum_radius, px, pz, pvx, pvz
+   use hillstab_pendulum, only: pendulum_t, pendulum_system_t, pendulum_from_chart, pendulum_initial_state, &
+      pendulum_angle, pendulum_energy, pendulum_radius, px, pz, pvx, pvz
    use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat
    use hillstab_scene, only: scene_t, scene_namelist, task_name, real_text, integer_text
    use hillstab_format, only: put_es
@@ -59,8 +60,8 @@ module hillstab_task_series
       real(wp) :: onset_observed = -1.0_wp       !! first |φ| > φ_sat [periods]; −1: not within the run
    end type series_summary_t
 
-   !> The watching pendulum that also writes the samples.
-   type, extends(pendulum_watch_t) :: series_writer_t
+   !> The pendulum of the writing pass: writes the samples (the first pass has watched).
+   type, extends(pendulum_system_t) :: series_writer_t
       type(output_file_t) :: file                !! the open output file
       integer(int64) :: next = 0                 !! index j of the next sample
       integer(int64) :: n_samples = 0            !! last index (periods × samples_per_period)
@@ -183,8 +184,8 @@ contains
       t = real(j, wp)*p%period/real(samples_per_period, wp)
    end function sample_time
 
-   !> Observer of the writing pass: the watch's bookkeeping, then every sample time in
-   !> (t_old, t] from the dense output (the initial point at index 0).
+   !> Observer of the writing pass: every sample time in (t_old, t] from the dense output
+   !> (the initial point at index 0).
    subroutine write_samples(self, step, stop)
       class(series_writer_t), intent(inout) :: self
       type(rk_step_t), intent(in) :: step
@@ -193,7 +194,6 @@ contains
       character(len=8*(row_digits + 8)) :: line
       integer :: pos, k
       real(wp) :: values(8)
-      call self%pendulum_watch_t%observe(step, stop)
       do while (self%next <= self%n_samples)
          ts = sample_time(self%pendulum, self%next, self%samples_per_period)
          ! the last step ends exactly on the last sample time (the same expression)
