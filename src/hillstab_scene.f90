@@ -33,7 +33,7 @@ module hillstab_scene
       scene_namelist, default_scene
    public :: task_chart, task_points, task_coefficient, task_boundaries, task_series, task_name
    public :: task_lyapunov, task_poincare, poincare_plan_t, max_poincare_orbits
-   public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas
+   public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas, output_path
 
    integer, parameter :: task_chart = 1        !! stability chart over an (α, β) grid
    integer, parameter :: task_points = 2       !! the chart's columns at listed (α, β) points
@@ -208,6 +208,17 @@ contains
       case default; name = "unknown"
       end select
    end function task_name
+
+   !> The file a scene's task writes: `<output>_<task>.dat` (`.bin` for format = 'binary').
+   pure function output_path(scene) result(path)
+      type(scene_t), intent(in) :: scene  !! the scene
+      character(len=:), allocatable :: path
+      if (scene%binary) then
+         path = scene%output//"_"//task_name(scene%task)//".bin"
+      else
+         path = scene%output//"_"//task_name(scene%task)//".dat"
+      end if
+   end function output_path
 
    !> The i-th of n equally spaced values from lo to hi (n = 1: lo).
    pure real(wp) function grid_value(lo, hi, n, i)

@@ -21,7 +21,7 @@ module hillstab_task_lyapunov
    use hillstab_monodromy, only: monodromy_trace, method_name
    use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state
    use hillstab_lyapunov, only: lyapunov_t, lyapunov_largest
-   use hillstab_scene, only: scene_t, scene_namelist, grid_value, real_text, integer_text, task_name
+   use hillstab_scene, only: scene_t, scene_namelist, grid_value, real_text, integer_text, output_path
    use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, write_text
    use hillstab_format, only: put_es
    use, intrinsic :: iso_fortran_env, only: error_unit
@@ -242,15 +242,9 @@ contains
       if (n_failed == 0) return
       write (counts, '(i0,a,i0)') n_failed, " of ", lyapunov_point_count(scene)
       call set_error(error, err_points_failed, scene%source//": &series: the pendulum could not be integrated at "// &
-         trim(counts)//" point(s), written with status 2 and placeholders to "//output_path_of(scene)// &
+         trim(counts)//" point(s), written with status 2 and placeholders to "//output_path(scene)// &
          "; first at alpha = "//real_text(first(1))//", beta = "//real_text(first(2)))
    end subroutine lyapunov_failure_error
-
-   pure function output_path_of(scene) result(path)
-      type(scene_t), intent(in) :: scene
-      character(len=:), allocatable :: path
-      path = scene%output//"_"//task_name(scene%task)//".dat"
-   end function output_path_of
 
    !> The lyapunov task, in this process: units of `lyapunov_unit_size` points computed
    !> in parallel and written in order.
@@ -268,7 +262,7 @@ contains
       logical :: new_block
       integer(int64) :: clock_start, clock_now, ticks
       n = lyapunov_point_count(scene)
-      call open_output(file, output_path_of(scene), cause)
+      call open_output(file, output_path(scene), cause)
       if (allocated(cause)) then
          call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
          return

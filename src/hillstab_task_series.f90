@@ -29,7 +29,7 @@ module hillstab_task_series
    use hillstab_pendulum, only: pendulum_t, pendulum_system_t, pendulum_from_chart, pendulum_initial_state, &
       pendulum_angle, pendulum_energy, pendulum_radius, px, pz, pvx, pvz
    use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat
-   use hillstab_scene, only: scene_t, scene_namelist, task_name, real_text, integer_text
+   use hillstab_scene, only: scene_t, scene_namelist, output_path, real_text, integer_text
    use hillstab_format, only: put_es
    use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, write_text
    implicit none
@@ -82,13 +82,11 @@ contains
       type(work_stats_t) :: stats
       type(error_t), allocatable :: cause
       real(wp) :: y(4)
-      character(len=:), allocatable :: path
 
       call series_summary(scene, summary, error)
       if (allocated(error)) return
 
-      path = scene%output//"_"//task_name(scene%task)//".dat"
-      call open_output(writer%file, path, cause)
+      call open_output(writer%file, output_path(scene), cause)
       if (allocated(cause)) then
          call set_error(error, cause%code, scene%source//": &scene: output: "//cause%message)
          return

@@ -32,7 +32,8 @@ module hillstab_tasks
    use hillstab_task_lyapunov, only: run_lyapunov
    use hillstab_task_poincare, only: run_poincare
    use hillstab_scene, only: scene_t, read_scene, scene_namelist, task_chart, task_points, task_coefficient, &
-      task_series, task_name, grid_value, real_text, integer_text, task_boundaries, task_lyapunov, task_poincare
+      task_series, task_name, grid_value, real_text, integer_text, task_boundaries, task_lyapunov, task_poincare, &
+      output_path
    use hillstab_task_boundaries, only: run_boundaries
    use hillstab_format, only: format_es
    use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, &
@@ -114,17 +115,6 @@ contains
             "' is not available in this build")
       end select
    end subroutine run_scene
-
-   !> `<output>_<task>.dat` (`.bin` for format = 'binary').
-   pure function output_path(scene) result(path)
-      type(scene_t), intent(in) :: scene  !! the scene
-      character(len=:), allocatable :: path
-      if (scene%binary) then
-         path = scene%output//"_"//task_name(scene%task)//".bin"
-      else
-         path = scene%output//"_"//task_name(scene%task)//".dat"
-      end if
-   end function output_path
 
    !> Floquet data of one point; `error` only when the point failed.
    subroutine evaluate_point(scene, alpha, beta, f, error, status)
