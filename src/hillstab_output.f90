@@ -29,7 +29,7 @@ module hillstab_output
       c_size_t, c_f_pointer, c_loc
    implicit none
    private
-   public :: output_file_t, open_output, commit_output, discard_output, write_header, write_text
+   public :: output_file_t, open_output, commit_output, discard_output, finish_output, write_header, write_text
    public :: n_chart_columns, chart_column_names, chart_values, failed_chart_values, chart_text
    public :: chart_columns_text, default_chart_columns, find_chart_columns, write_records
    public :: chart_line_length, clamp_magnitude, log10_floor, real_columns, failed_log10_abs_s
@@ -187,6 +187,19 @@ contains
       end if
       call forget_temp_file(file%slot)
    end subroutine commit_output
+
+   !> End the writing of a file: commit it when `error` is unallocated (a failure to
+   !> commit comes back in `error`), else discard it and keep `error`.
+   subroutine finish_output(file, error)
+      type(output_file_t), intent(inout) :: file  !! the file written
+      !> in: the first failure while writing, if any; out: that one, or the commit's
+      type(error_t), allocatable, intent(inout) :: error
+      if (allocated(error)) then
+         call discard_output(file)
+      else
+         call commit_output(file, error)
+      end if
+   end subroutine finish_output
 
    !> Close and delete the temporary file; the final name is left as it was.
    subroutine discard_output(file)

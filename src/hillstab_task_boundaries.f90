@@ -21,7 +21,7 @@ module hillstab_task_boundaries
    use hillstab_boundaries, only: boundary_check_t, verify_boundary, approximate_root_t, approximate_boundaries, &
       mathieu_witness, beta_accuracy_factor, gsl_witness_max_q
    use hillstab_scene, only: scene_t, scene_namelist, grid_value, real_text, integer_text, output_path
-   use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, write_text
+   use hillstab_output, only: output_file_t, open_output, finish_output, discard_output, write_header, write_text
    use hillstab_format, only: format_es
    implicit none
    private
@@ -238,11 +238,7 @@ contains
          end do
          if (allocated(error)) exit
       end do
-      if (allocated(error)) then
-         call discard_output(file)
-         return
-      end if
-      call commit_output(file, error)
+      call finish_output(file, error)
       if (allocated(error)) return
       n_failed_alpha = count(per_alpha%failed)
       if (n_failed_alpha > 0 .or. n_failed_rows > 0) then

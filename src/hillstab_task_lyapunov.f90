@@ -22,7 +22,7 @@ module hillstab_task_lyapunov
    use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state
    use hillstab_lyapunov, only: lyapunov_t, lyapunov_largest
    use hillstab_scene, only: scene_t, scene_namelist, grid_value, real_text, integer_text, output_path
-   use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, write_text
+   use hillstab_output, only: output_file_t, open_output, finish_output, write_header, write_text
    use hillstab_format, only: put_es
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
@@ -294,11 +294,7 @@ contains
          end if
          first = last + 1
       end do
-      if (allocated(error)) then
-         call discard_output(file)
-         return
-      end if
-      call commit_output(file, error)
+      call finish_output(file, error)
       if (allocated(error)) return
       call lyapunov_failure_error(scene, n_failed, first_failed, error)
    end subroutine run_lyapunov

@@ -14,7 +14,7 @@ module hillstab_task_poincare
    use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_energy
    use hillstab_poincare, only: section_t, poincare_section, pendulum_state_at_energy
    use hillstab_scene, only: scene_t, scene_namelist, real_text, integer_text, output_path
-   use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, write_text
+   use hillstab_output, only: output_file_t, open_output, finish_output, write_header, write_text
    use hillstab_format, only: put_es
    implicit none
    private
@@ -100,11 +100,7 @@ contains
             call write_text(file, trim(lines(j)), error)
          end do
       end do
-      if (allocated(error)) then
-         call discard_output(file)
-         return
-      end if
-      call commit_output(file, error)
+      call finish_output(file, error)
       if (allocated(error)) return
       if (any(statuses == status_failed)) then
          first_failed = findloc(statuses, status_failed, dim=1)

@@ -31,7 +31,7 @@ module hillstab_task_series
    use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat
    use hillstab_scene, only: scene_t, scene_namelist, output_path, real_text, integer_text
    use hillstab_format, only: put_es
-   use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, write_text
+   use hillstab_output, only: output_file_t, open_output, finish_output, discard_output, write_header, write_text
    implicit none
    private
    public :: run_series, series_summary_t, series_summary, series_columns
@@ -106,12 +106,8 @@ contains
       if (.not. allocated(error) .and. writer%next <= writer%n_samples) then
          call set_error(error, err_input, "series: the integration ended before the last sample")
       end if
-      if (allocated(error)) then
-         call discard_output(writer%file)
-         error%message = scene%source//": "//error%message
-         return
-      end if
-      call commit_output(writer%file, error)
+      if (allocated(error)) error%message = scene%source//": "//error%message
+      call finish_output(writer%file, error)
    end subroutine run_series
 
    !> The first pass: integrate without writing and measure what the header reports.

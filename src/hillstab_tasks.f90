@@ -36,7 +36,7 @@ module hillstab_tasks
       output_path
    use hillstab_task_boundaries, only: run_boundaries
    use hillstab_format, only: format_es
-   use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, &
+   use hillstab_output, only: output_file_t, open_output, finish_output, discard_output, write_header, &
       write_text, write_records, chart_line_length, real_columns, n_chart_columns, chart_values, failed_chart_values, &
       chart_text, chart_columns_text, default_chart_columns, find_chart_columns
    use hillstab_limits, only: check_output_room
@@ -428,11 +428,7 @@ contains
          end do
       end if
       call progress_end(progress)
-      if (allocated(error)) then
-         call discard_output(file)
-         return
-      end if
-      call commit_output(file, error)
+      call finish_output(file, error)
       if (allocated(error)) return
       call warn_inaccurate(scene, n_inaccurate, first_inaccurate)
       call failed_points_error(scene, n_failed, int(n_alpha, int64)*n_beta, first_failed, error)
@@ -665,11 +661,7 @@ contains
          if (allocated(error) .or. scene%binary) exit
          call write_text(file, trim(lines(k)), error)
       end do
-      if (allocated(error)) then
-         call discard_output(file)
-         return
-      end if
-      call commit_output(file, error)
+      call finish_output(file, error)
       if (allocated(error)) return
       if (any(statuses == status_roundoff)) then
          k = findloc(statuses, status_roundoff, dim=1)
@@ -727,11 +719,7 @@ contains
          end do
          call write_text(file, real_columns(row), error)
       end do
-      if (allocated(error)) then
-         call discard_output(file)
-         return
-      end if
-      call commit_output(file, error)
+      call finish_output(file, error)
    end subroutine run_coefficient
 
    !> Start reporting the progress of a run of `total` points (nothing when quiet).
