@@ -14,6 +14,7 @@ module hillstab_fault_injection
    use hillstab_error, only: error_t, err_io
    use hillstab_tasks, only: run_scene_file
    use hillstab_testing, only: test_context_t, check
+   use test_scene, only: write_file, c_getpid
    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_funptr, c_intptr_t, c_null_funptr
    implicit none
    private
@@ -92,10 +93,7 @@ contains
       type(error_t), allocatable :: error
       character(len=64) :: line
       integer :: unit, ios
-      logical :: exists
-      open (newunit=unit, file=output, status="replace", action="write")
-      write (unit, '(a)') "sentinel"
-      close (unit)
+      call write_file(output, ["sentinel"])
       call limit_file_size(bytes)
       call run_scene_file(scene, .true., error)
       call lift_file_size_limit()
@@ -121,12 +119,6 @@ contains
    logical function any_temp_file(output)
       character(len=*), intent(in) :: output
       character(len=16) :: pid
-      interface
-         function c_getpid() bind(C, name="getpid") result(id)
-            import :: c_int
-            integer(c_int) :: id
-         end function c_getpid
-      end interface
       write (pid, '(i0)') c_getpid()
       inquire (file=output//".part"//trim(pid), exist=any_temp_file)
    end function any_temp_file

@@ -48,17 +48,9 @@ contains
       character(len=1024), allocatable, intent(out) :: lines(:)
       integer, intent(out) :: n_header
       character(len=1024), allocatable :: all(:)
-      integer :: k
       all = read_lines(path)
-      n_header = 0
-      allocate (lines(0))
-      do k = 1, size(all)
-         if (all(k)(1:1) == "#") then
-            n_header = n_header + 1
-         else
-            lines = [character(len=1024) :: lines, all(k)]
-         end if
-      end do
+      n_header = count(all(:)(1:1) == "#")
+      lines = pack(all, all(:)(1:1) /= "#")
    end subroutine data_lines
 
    !> Run `scene` serially and through run_batch; compare the two files.

@@ -36,6 +36,8 @@ contains
       call hill_boundaries(model_elastic, 5.0_wp, -2.0_wp, 40.0_wp, 1.0e-11_wp, c, error)
       call check(ctx, .not. allocated(error), "Hill's method runs")
       if (allocated(error)) return
+      ! 9 boundaries, 4 of them coexistent
+      call check(ctx, size(c) >= 6 .and. count(.not. c%coexistent) >= 3, "boundaries to check")
       do i = 1, size(c)
          call verify_boundary(model_elastic, 5.0_wp, c(i)%beta, c(i)%trace_sign, 1.0e-11_wp, chk, error)
          call check(ctx, .not. allocated(error) .and. chk%passed, "true boundary passes")
@@ -116,6 +118,8 @@ contains
       logical :: available
       integer :: i
       call hill_boundaries(model_mathieu, 30.0_wp, -30.0_wp, 120.0_wp, 1.0e-12_wp, c, error)
+      ! 13 boundaries
+      call check(ctx, .not. allocated(error) .and. size(c) >= 10, "Hill's method runs")
       do i = 1, size(c)
          call mathieu_witness(c(i)%order, c(i)%parity, 30.0_wp, beta, available)
          call check(ctx, available, "GSL available at low order and q = 6")

@@ -8,11 +8,12 @@ module test_task_lyapunov
    use hillstab_kinds, only: wp, pi2
    use hillstab_error, only: error_t, err_input
    use hillstab_scene, only: scene_t, read_scene
-   use hillstab_tasks, only: run_scene_file, run_scene, output_path
+   use hillstab_tasks, only: run_scene_file, output_path
    use hillstab_batch, only: run_batch
    use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state
    use hillstab_lyapunov, only: lyapunov_t, lyapunov_largest
    use hillstab_testing
+   use hillstab_test_files, only: run_text_scene
    use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text
    implicit none
    private
@@ -57,17 +58,6 @@ contains
       rows = rows(:, :n)
    end subroutine rows_of
 
-   subroutine run_text(name, lines, error, written)
-      character(len=*), intent(in) :: name, lines(:)
-      type(error_t), allocatable, intent(out) :: error
-      character(len=:), allocatable, intent(out) :: written
-      character(len=:), allocatable :: path
-      path = scratch_prefix(name)//".nml"
-      call write_file(path, lines)
-      call run_scene_file(path, .true., error, written)
-      call delete_file(path)
-   end subroutine run_text
-
    !> A 3 × 2 grid at 60 periods: 6 lines in 3 blocks; each exponent, spread, max |φ|
    !> and energy drift equal lyapunov_largest's; λ_max and stable equal the points task's.
    subroutine grid_layout_and_values(ctx)
@@ -79,7 +69,7 @@ contains
       type(pendulum_t) :: p
       type(lyapunov_t) :: reference
       character(len=60) :: points(6)
-      call run_text("lyap_grid", [padded("&scene task='lyapunov', tolerance=1e-10, output='"// &
+      call run_text_scene("lyap_grid", [padded("&scene task='lyapunov', tolerance=1e-10, output='"// &
          scratch_prefix("lyap_grid")//"' /"), padded("&series phi0=0.017, periods=60, r0=0.2, g=9.81 /"), &
          padded("&chart alpha_min=2.57, alpha_max=7.48, n_alpha=3, beta_min=1.29, beta_max=2.47, n_beta=2 /")], &
          error, written)
@@ -103,7 +93,7 @@ contains
       end do
       ! the linear columns against the core's points task at the same points
       call write_file(scratch_prefix("lyap_core")//".dat", points)
-      call run_text("lyap_core", [padded("&scene task='points', output='"//scratch_prefix("lyap_core")//"' /"), &
+      call run_text_scene("lyap_core", [padded("&scene task='points', output='"//scratch_prefix("lyap_core")//"' /"), &
          padded("&points file='"//scratch_prefix("lyap_core")//".dat' /")], error, chart_written)
       call check(ctx, .not. allocated(error), "core runs")
       if (.not. allocated(error)) then
@@ -127,12 +117,12 @@ contains
       character(len=:), allocatable :: grid, list, columns
       real(wp), allocatable :: a(:, :), b(:, :)
       integer :: na, nb
-      call run_text("lyap_g", [padded("&scene task='lyapunov', output='"//scratch_prefix("lyap_g")//"' /"), &
+      call run_text_scene("lyap_g", [padded("&scene task='lyapunov', output='"//scratch_prefix("lyap_g")//"' /"), &
          padded("&series periods=30 /"), &
          padded("&chart alpha_min=3.7, alpha_max=7.48, n_alpha=2, beta_min=2.47, beta_max=2.47, n_beta=1 /")], &
          error, grid)
       call write_file(scratch_prefix("lyap_p")//".dat", [character(len=20) :: "3.7 2.47", "7.48 2.47"])
-      call run_text("lyap_p", [padded("&scene task='lyapunov', output='"//scratch_prefix("lyap_p")//"' /"), &
+      call run_text_scene("lyap_p", [padded("&scene task='lyapunov', output='"//scratch_prefix("lyap_p")//"' /"), &
          padded("&series periods=30 /"), padded("&lyapunov over='points' /"), &
          padded("&points file='"//scratch_prefix("lyap_p")//".dat' /")], error, list)
       call check(ctx, .not. allocated(error), "runs")
@@ -155,7 +145,7 @@ contains
       character(len=:), allocatable :: written, again
       character(len=1024), allocatable :: a(:), b(:), c(:)
       character(len=:), allocatable :: copy
-      call run_text("lyap_rep", [padded("&scene task='lyapunov', output='"//scratch_prefix("lyap_rep")//"' /"), &
+      call run_text_scene("lyap_rep", [padded("&scene task='lyapunov', output='"//scratch_prefix("lyap_rep")//"' /"), &
          padded("&series periods=20 /"), &
          padded("&chart alpha_min=1, alpha_max=9, n_alpha=4, beta_min=0.5, beta_max=9, n_beta=3 /")], error, written)
       call check(ctx, .not. allocated(error), "runs")
@@ -185,17 +175,17 @@ contains
       type(test_context_t), intent(inout) :: ctx
       type(error_t), allocatable :: error
       character(len=:), allocatable :: written
-      call run_text("lyap_bad", [padded("&scene task='lyapunov', output='"//scratch_prefix("lyap_bad")//"' /"), &
+      call run_text_scene("lyap_bad", [padded("&scene task='lyapunov', output='"//scratch_prefix("lyap_bad")//"' /"), &
          padded("&series periods=20 /"), padded("&chart beta_min=0, beta_max=5 /")], error, written)
       call check(ctx, allocated(error), "beta_min = 0 refused")
       if (allocated(error)) call check(ctx, error%code == err_input .and. contains_text(error%message, "&chart") .and. &
          contains_text(error%message, "beta_min"), "names &chart beta_min: "//error%message)
-      call run_text("lyap_bad", [padded("&scene task='lyapunov', output='"//scratch_prefix("lyap_bad")//"' /"), &
+      call run_text_scene("lyap_bad", [padded("&scene task='lyapunov', output='"//scratch_prefix("lyap_bad")//"' /"), &
          padded("&series periods=20 /"), padded("&lyapunov over='grid' /"), padded("&chart /")], error, written)
       call check(ctx, allocated(error), "over = 'grid' refused")
       if (allocated(error)) call check(ctx, contains_text(error%message, "&lyapunov") .and. &
          contains_text(error%message, "over"), "names &lyapunov over: "//error%message)
-      call run_text("lyap_bad", [padded("&scene task='lyapunov', output='"//scratch_prefix("lyap_bad")//"' /"), &
+      call run_text_scene("lyap_bad", [padded("&scene task='lyapunov', output='"//scratch_prefix("lyap_bad")//"' /"), &
          padded("&series periods=0 /"), padded("&chart beta_min=1 /")], error, written)
       call check(ctx, allocated(error), "periods = 0 refused")
       if (allocated(error)) call check(ctx, contains_text(error%message, "periods"), "names periods")

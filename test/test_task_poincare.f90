@@ -6,11 +6,11 @@
 module test_task_poincare
    use hillstab_kinds, only: wp
    use hillstab_error, only: error_t, err_input
-   use hillstab_tasks, only: run_scene_file
    use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_energy
    use hillstab_poincare, only: section_t, poincare_section, pendulum_state_at_energy
    use hillstab_testing
-   use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text
+   use hillstab_test_files, only: run_text_scene
+   use test_scene, only: padded, scratch_prefix, read_lines, file_exists, delete_file, contains_text
    implicit none
    private
    public :: collect_task_poincare
@@ -24,17 +24,6 @@ contains
          new_unittest("bad_input", bad_input)])
    end function collect_task_poincare
 
-   subroutine run_text(name, lines, error, written)
-      character(len=*), intent(in) :: name, lines(:)
-      type(error_t), allocatable, intent(out) :: error
-      character(len=:), allocatable, intent(out) :: written
-      character(len=:), allocatable :: path
-      path = scratch_prefix(name)//".nml"
-      call write_file(path, lines)
-      call run_scene_file(path, .true., error, written)
-      call delete_file(path)
-   end subroutine run_text
-
    subroutine orbits_of_one_energy(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(error_t), allocatable :: error
@@ -45,7 +34,7 @@ contains
       real(wp) :: row(6), e, room, last_t, y0(4)
       integer :: k, ios, n_rows(3), orbit, n_double_blank
       logical :: ordered
-      call run_text("poinc", [padded("&scene task='poincare', tolerance=1e-10, output='"//scratch_prefix("poinc")// &
+      call run_text_scene("poinc", [padded("&scene task='poincare', tolerance=1e-10, output='"//scratch_prefix("poinc")// &
          "' /"), padded("&series alpha=7.48, beta=2.47, phi0=0.017, periods=60 /"), &
          padded("&poincare phi0s=0.02, 0.4, 0.8 /")], error, written)
       call check(ctx, .not. allocated(error), "runs")
@@ -91,13 +80,13 @@ contains
       type(test_context_t), intent(inout) :: ctx
       type(error_t), allocatable :: error
       character(len=:), allocatable :: written
-      call run_text("poinc_bad", [padded("&scene task='poincare', output='"//scratch_prefix("poinc_bad")//"' /"), &
+      call run_text_scene("poinc_bad", [padded("&scene task='poincare', output='"//scratch_prefix("poinc_bad")//"' /"), &
          padded("&series alpha=7.48, beta=2.47 /"), padded("&poincare phi0s=0.1, 4.0 /")], error, written)
       call check(ctx, allocated(error), "phi0 = 4 refused")
       if (allocated(error)) call check(ctx, error%code == err_input .and. contains_text(error%message, "&poincare") &
          .and. contains_text(error%message, "phi0s"), "names &poincare phi0s: "//error%message)
       ! at phi0 = 3 (nearly upside down) no state at rest has the energy of a start near the bottom
-      call run_text("poinc_bad", [padded("&scene task='poincare', output='"//scratch_prefix("poinc_bad")//"' /"), &
+      call run_text_scene("poinc_bad", [padded("&scene task='poincare', output='"//scratch_prefix("poinc_bad")//"' /"), &
          padded("&series alpha=0.5, beta=2.47, phi0=0.01 /"), padded("&poincare phi0s=3.0 /")], error, written)
       call check(ctx, allocated(error), "unreachable energy refused")
       if (allocated(error)) call check(ctx, error%code == err_input .and. contains_text(error%message, "phi0s"), &

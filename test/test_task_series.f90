@@ -6,9 +6,10 @@
 module test_task_series
    use hillstab_kinds, only: wp, pi, pi2
    use hillstab_error, only: error_t, err_input
-   use hillstab_tasks, only: run_scene_file
-   use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_bounce
+   use hillstab_pendulum, only: pendulum_t, pendulum_bounce
    use hillstab_testing
+   use hillstab_test_pendulum, only: pendulum_at
+   use hillstab_test_files, only: run_text_scene, check_rerun
    use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
@@ -32,13 +33,9 @@ contains
       character(len=*), intent(in) :: name, group_series, scene_extra
       character(len=1024), allocatable, intent(out) :: lines(:)
       type(error_t), allocatable, intent(out) :: error
-      character(len=:), allocatable :: path, out, written
-      out = scratch_prefix(name)
-      path = out//".nml"
-      call write_file(path, [padded("&scene task = 'series', output = '"//out//"' "//scene_extra//" /"), &
-                             padded(group_series)])
-      call run_scene_file(path, .true., error, written)
-      call delete_file(path)
+      character(len=:), allocatable :: written
+      call run_text_scene(name, [padded("&scene task = 'series', output = '"//scratch_prefix(name)//"' "// &
+                                        scene_extra//" /"), padded(group_series)], error, written)
       if (allocated(error)) return
       call read_series_file(written, lines)
       call delete_file(written)
@@ -88,13 +85,6 @@ contains
       end do
       rows = rows(:, :n)
    end function rows_of
-
-   function make(alpha, beta) result(p)
-      real(wp), intent(in) :: alpha, beta
-      type(pendulum_t) :: p
-      type(error_t), allocatable :: error
-      call pendulum_from_chart(alpha, beta, 0.0_wp, 0.1_wp, 9.81_wp, p, error)
-   end function make
 
    !> One `# columns:` line `t r phi x z E vx vz`; periods × samples + 1 rows at exactly
    !> t_j = j T/samples (T from ρ, ω written independently here); r = √(x² + z²),
@@ -158,7 +148,7 @@ contains
       call check(ctx, any(index(lines, "predicted n* = ln(0.1/|phi0|)/ln(lambda_max) = never") > 0), &
          "no onset predicted")
       call check(ctx, any(index(lines, "observed not within the run") > 0), "no onset observed")
-      p = make(7.88_wp, 3.95_wp)
+      p = pendulum_at(7.88_wp, 3.95_wp)
       worst = 0.0_wp
       do j = 1, size(rows, 2)
          exact = pendulum_bounce(p, rows(1, j))
@@ -171,28 +161,18 @@ contains
    subroutine repeat_from_output(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(error_t), allocatable :: error
-      character(len=:), allocatable :: path, out, written, again
-      character(len=1024), allocatable :: first(:), second(:)
-      integer :: k
-      out = scratch_prefix("series_repeat")
-      path = out//".nml"
-      call write_file(path, [padded("&scene task = 'series', output = '"//out//"', epsilon = 0.2 /"), &
-         padded("&series alpha = 5.0, beta = 0.76, phi0 = -0.3, periods = 3, samples_per_period = 7, vx0 = 0.05 /")])
-      call run_scene_file(path, .true., error, written)
-      call delete_file(path)
+      character(len=:), allocatable :: written, again
+      character(len=1024), allocatable :: first(:)
+      logical :: ok
+      call run_text_scene("series_repeat", [padded("&scene task = 'series', output = '"// &
+         scratch_prefix("series_repeat")//"', epsilon = 0.2 /"), &
+         padded("&series alpha = 5.0, beta = 0.76, phi0 = -0.3, periods = 3, samples_per_period = 7, vx0 = 0.05 /")], &
+         error, written)
       call check(ctx, .not. allocated(error), "first run")
       if (allocated(error)) return
       first = read_lines(written)
-      call run_scene_file(written, .true., error, again)
-      call check(ctx, .not. allocated(error), "second run from the output file")
-      if (allocated(error)) return
-      second = read_lines(again)
-      call check(ctx, size(first) == size(second), "same number of lines")
-      if (size(first) /= size(second)) return
-      do k = 1, size(first)
-         if (index(first(k), "# scene file:") == 1) cycle
-         call check(ctx, first(k) == second(k), "line "//trim(first(k)))
-      end do
+      call check_rerun(ctx, written, first, again, ok)
+      if (.not. ok) return
       call check(ctx, any(index(first, "E decreases monotonically") > 0), "damped summary")
       call delete_file(written)
    end subroutine repeat_from_output
@@ -213,8 +193,8 @@ contains
       out = scratch_prefix("series_bad")
       path = out//".nml"
       do k = 1, size(groups)
-         call write_file(path, [padded("&scene task = 'series', output = '"//out//"' /"), padded(groups(k))])
-         call run_scene_file(path, .true., error, written)
+         call run_text_scene("series_bad", [padded("&scene task = 'series', output = '"//out//"' /"), padded(groups(k))], &
+                             error, written)
          call check(ctx, allocated(error), "error for "//trim(groups(k)))
          if (allocated(error)) then
             call check(ctx, error%code == err_input, "input error code for "//trim(groups(k)))
@@ -224,16 +204,14 @@ contains
          call check(ctx, .not. file_exists(out//"_series.dat"), "no file for "//trim(groups(k)))
       end do
       ! the limit names its size
-      call write_file(path, [padded("&scene task = 'series', output = '"//out//"' /"), padded(groups(10))])
-      call run_scene_file(path, .true., error, written)
+      call run_text_scene("series_bad", [padded("&scene task = 'series', output = '"//out//"' /"), padded(groups(10))], &
+                          error, written)
       if (allocated(error)) call check(ctx, contains_text(error%message, "limit of 1e8"), "line limit message")
       ! the model must be the elastic pendulum
-      call write_file(path, [padded("&scene task = 'series', model = 'mathieu', output = '"//out//"' /"), &
-         padded("&series /")])
-      call run_scene_file(path, .true., error, written)
+      call run_text_scene("series_bad", [padded("&scene task = 'series', model = 'mathieu', output = '"//out//"' /"), &
+         padded("&series /")], error, written)
       call check(ctx, allocated(error), "mathieu model refused")
       if (allocated(error)) call check(ctx, contains_text(error%message, "&scene: model:"), error%message)
-      call delete_file(path)
    end subroutine bad_input
 
    !> α = 9.8 (r_min = 0.7 % of ρ), ε = 3, φ0 = 1e-300, φ0 = π/2, 10⁴ periods: finite rows,
@@ -249,7 +227,7 @@ contains
                            ", tolerance = 1e-10", lines, error)
       call check_finite("alpha = 9.8")
       if (allocated(rows)) then
-         p = make(9.8_wp, 2.47_wp)
+         p = pendulum_at(9.8_wp, 2.47_wp)
          call check(ctx, minval(rows(2, :)) > 0.0_wp, "alpha = 9.8: r > 0")
          write (*, '(4x,a,es10.3,a,es10.3)') "alpha = 9.8: min r/rho = ", minval(rows(2, :))/p%rho, &
             ", max |phi| on samples ", maxval(abs(rows(3, :)))

@@ -9,6 +9,7 @@ module test_tasks
    use hillstab_error, only: error_t, err_input, err_io, err_points_failed
    use hillstab_tasks, only: run_scene_file
    use hillstab_testing
+   use hillstab_test_files, only: run_text_scene, check_rerun
    use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text, &
       bad_case_t, bad_cases, bad_case_text, write_bad_points_files, delete_bad_points_files, c_getpid
    implicit none
@@ -35,19 +36,6 @@ contains
          new_unittest("bad_input_touches_nothing", bad_input_touches_nothing), &
          new_unittest("unwritable_output", unwritable_output)])
    end function collect_tasks
-
-   !> Write a scene file, run it quietly, delete the scene file.
-   subroutine run_text_scene(name, lines, error, written)
-      character(len=*), intent(in) :: name
-      character(len=*), intent(in) :: lines(:)
-      type(error_t), allocatable, intent(out) :: error
-      character(len=:), allocatable, intent(out) :: written
-      character(len=:), allocatable :: path
-      path = scratch_prefix(name)//".nml"
-      call write_file(path, lines)
-      call run_scene_file(path, .true., error, written)
-      call delete_file(path)
-   end subroutine run_text_scene
 
    !> The numeric rows of a file: each must hold exactly `n_columns` numbers.
    subroutine data_rows(lines, n_columns, rows, n_blank, all_numeric)
@@ -463,8 +451,8 @@ contains
       type(test_context_t), intent(inout) :: ctx
       type(error_t), allocatable :: error
       character(len=:), allocatable :: written, out, again
-      character(len=1024), allocatable :: first(:), second(:)
-      integer :: k
+      character(len=1024), allocatable :: first(:)
+      logical :: ok
       out = scratch_prefix("repeat")
       call run_text_scene("repeat", [ &
          padded("&scene method = 'segments', n_segments = 32, sampling = 'average', epsilon = 0.25,"), &
@@ -474,20 +462,9 @@ contains
       call check(ctx, .not. allocated(error), "first run")
       if (allocated(error)) return
       first = read_lines(written)
-      call run_scene_file(written, .true., error, again)
-      call check(ctx, .not. allocated(error), "second run from the output file")
-      if (allocated(error)) then
-         call check(ctx, .false., error%message)
-         return
-      end if
+      call check_rerun(ctx, written, first, again, ok)
+      if (.not. ok) return
       call check(ctx, again == written, "same output name")
-      second = read_lines(again)
-      call check(ctx, size(first) == size(second), "same number of lines")
-      if (size(first) /= size(second)) return
-      do k = 1, size(first)
-         if (index(first(k), "# scene file:") == 1) cycle
-         call check(ctx, first(k) == second(k), "line "//trim(first(k)))
-      end do
       call check(ctx, .not. any(index(first, "leaves the physical domain") > 0), "inside the physical domain")
       call delete_file(written)
    end subroutine repeat_from_output
@@ -499,12 +476,12 @@ contains
       type(test_context_t), intent(inout) :: ctx
       type(error_t), allocatable :: error
       character(len=:), allocatable :: written, out, again
-      character(len=1024), allocatable :: first(:), second(:)
+      character(len=1024), allocatable :: first(:)
       real(wp), allocatable :: rows(:, :)
       real(wp), parameter :: omega = 10.0_wp, g = 9.81_wp, r0 = 0.3_wp, amplitudes(3) = [0.05_wp, 0.2_wp, 0.3_wp]
       real(wp) :: rho, beta
       integer :: n_blank, k
-      logical :: numeric
+      logical :: numeric, ok
       out = scratch_prefix("physical")
       call run_text_scene("physical", [ &
          padded("&scene task = 'points', method = 'magnus6', tolerance = 1e-9, output = '"//out//"' /"), &
@@ -529,19 +506,8 @@ contains
          call check(ctx, rows(10, k), rows(6, k)*omega/pi, rel=1.0e-9_wp, abs=1.0e-300_wp, message="mu_per_s")
       end do
       call check(ctx, rows(10, 3) > 0.0_wp, "a = 0.3 m grows")
-      call run_scene_file(written, .true., error, again)
-      call check(ctx, .not. allocated(error), "second run from the output file")
-      if (allocated(error)) then
-         call check(ctx, .false., error%message)
-         return
-      end if
-      second = read_lines(again)
-      call check(ctx, size(first) == size(second), "same number of lines")
-      if (size(first) /= size(second)) return
-      do k = 1, size(first)
-         if (index(first(k), "# scene file:") == 1) cycle
-         call check(ctx, first(k) == second(k), "line "//trim(first(k)))
-      end do
+      call check_rerun(ctx, written, first, again, ok)
+      if (.not. ok) return
       call delete_file(written)
       ! Mathieu: the first column is nu, no physical column
       call run_text_scene("physical_m", [ &
@@ -694,35 +660,32 @@ contains
    !> not for a chart starting at beta = 0 (no gravity); yes above beta = pi**2.
    subroutine domain_notes(ctx)
       type(test_context_t), intent(inout) :: ctx
-      type(error_t), allocatable :: error
-      character(len=:), allocatable :: written, out
-      character(len=1024), allocatable :: lines(:)
+      character(len=:), allocatable :: out
       out = scratch_prefix("notes")
-      call run_text_scene("notes1", [ &
-         padded("&scene model = 'mathieu', method = 'formula', output = '"//out//"' /"), &
-         padded("&chart alpha_min = 0, alpha_max = 12, n_alpha = 2, beta_min = -2, beta_max = 12, n_beta = 2 /")], &
-         error, written)
-      call check(ctx, .not. allocated(error), "Mathieu chart")
-      if (allocated(error)) return
-      lines = read_lines(written)
-      call check(ctx, .not. any(index(lines, "physical") > 0), "no physical column or note for Mathieu")
-      call run_text_scene("notes2", [ &
-         padded("&scene method = 'formula', output = '"//out//"' /"), &
-         padded("&chart alpha_min = 0, alpha_max = 9, n_alpha = 2, beta_min = 0, beta_max = 9, n_beta = 2 /")], &
-         error, written)
-      call check(ctx, .not. allocated(error), "chart from beta = 0")
-      if (allocated(error)) return
-      lines = read_lines(written)
-      call check(ctx, .not. any(index(lines, "leaves the physical domain") > 0), "beta = 0 is physical (g = 0)")
-      call run_text_scene("notes3", [ &
-         padded("&scene method = 'formula', output = '"//out//"' /"), &
-         padded("&chart alpha_min = 0, alpha_max = 9, n_alpha = 2, beta_min = 0, beta_max = 10, n_beta = 2 /")], &
-         error, written)
-      call check(ctx, .not. allocated(error), "chart to beta = 10")
-      if (allocated(error)) return
-      lines = read_lines(written)
-      call check(ctx, any(index(lines, "leaves the physical domain") > 0), "beta > pi**2 leaves it")
-      call delete_file(written)
+      call check_note("notes1", "&scene model = 'mathieu', method = 'formula', output = '"//out//"' /", &
+         "&chart alpha_min = 0, alpha_max = 12, n_alpha = 2, beta_min = -2, beta_max = 12, n_beta = 2 /", &
+         "physical", .false., "Mathieu chart", "no physical column or note for Mathieu")
+      call check_note("notes2", "&scene method = 'formula', output = '"//out//"' /", &
+         "&chart alpha_min = 0, alpha_max = 9, n_alpha = 2, beta_min = 0, beta_max = 9, n_beta = 2 /", &
+         "leaves the physical domain", .false., "chart from beta = 0", "beta = 0 is physical (g = 0)")
+      call check_note("notes3", "&scene method = 'formula', output = '"//out//"' /", &
+         "&chart alpha_min = 0, alpha_max = 9, n_alpha = 2, beta_min = 0, beta_max = 10, n_beta = 2 /", &
+         "leaves the physical domain", .true., "chart to beta = 10", "beta > pi**2 leaves it")
+   contains
+      !> Run the scene (two lines); the file mentions `text` exactly when `expected`.
+      subroutine check_note(name, scene_line, chart_line, text, expected, run_label, label)
+         character(len=*), intent(in) :: name, scene_line, chart_line, text, run_label, label
+         logical, intent(in) :: expected
+         type(error_t), allocatable :: error
+         character(len=:), allocatable :: written
+         character(len=1024), allocatable :: lines(:)
+         call run_text_scene(name, [padded(scene_line), padded(chart_line)], error, written)
+         call check(ctx, .not. allocated(error), run_label)
+         if (allocated(error)) return
+         lines = read_lines(written)
+         call check(ctx, any(index(lines, text) > 0) .eqv. expected, label)
+         call delete_file(written)
+      end subroutine check_note
    end subroutine domain_notes
 
    !> Every bad scene of the scene suite: an error, no output file created, an
