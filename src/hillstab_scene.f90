@@ -22,6 +22,7 @@ module hillstab_scene
    use hillstab_monodromy, only: method_t, method_auto, method_name, method_from_name, method_magnus4, &
       method_magnus6, method_rk, method_gsl
    use hillstab_output, only: default_chart_columns, find_chart_columns, chart_columns_text
+   use hillstab_format, only: integer_text, lower => lower_case
    use hillstab_units, only: physical_t, physical_alpha, physical_beta, physical_epsilon, physical_nu, &
       check_physical, equilibrium_length
    use, intrinsic :: iso_fortran_env, only: iostat_end
@@ -789,10 +790,8 @@ contains
       subroutine require_finite_or_unset(k, error)
          integer, intent(in) :: k
          type(error_t), allocatable, intent(out) :: error
-         character(len=16) :: index_text
          if (.not. ieee_is_finite(alphas(k))) then
-            write (index_text, '(i0)') k
-            call fail(error, scene%source, group, "alphas", "value "//trim(index_text)//" is not a finite number")
+            call fail(error, scene%source, group, "alphas", "value "//integer_text(k)//" is not a finite number")
          end if
       end subroutine require_finite_or_unset
    end subroutine read_coefficient_group
@@ -867,17 +866,11 @@ contains
          call fail(error, scene%source, group, merge("vx0", "vz0", abs(vx0) > 1.0e50_wp), "must lie in [-1e50, 1e50]")
       else if (int(periods, int64)*samples_per_period + 1 > max_series_lines) then
          call fail(error, scene%source, group, "periods", "periods * samples_per_period + 1 = "// &
-            trim(int64_text(int(periods, int64)*samples_per_period + 1))// &
+            integer_text(int(periods, int64)*samples_per_period + 1)// &
             " data lines exceed the limit of 1e8; lower periods or samples_per_period")
       end if
       if (allocated(error)) return
       scene%series = series_plan_t(alpha, beta, phi0, periods, samples_per_period, r0, g, vx0, vz0)
-   contains
-      function int64_text(n) result(text)
-         integer(int64), intent(in) :: n
-         character(len=24) :: text
-         write (text, '(i0)') n
-      end function int64_text
    end subroutine read_series_group
 
    !> Read the points file: one `alpha beta` pair per line, `#` starts a comment,
@@ -1482,17 +1475,6 @@ contains
       is_name_char = is_letter(c) .or. (c >= "0" .and. c <= "9") .or. c == "_"
    end function is_name_char
 
-   !> Lower-case copy of a string.
-   pure function lower(text) result(low)
-      character(len=*), intent(in) :: text
-      character(len=len(text)) :: low
-      integer :: i
-      low = text
-      do i = 1, len(text)
-         if (text(i:i) >= "A" .and. text(i:i) <= "Z") low(i:i) = achar(iachar(text(i:i)) + 32)
-      end do
-   end function lower
-
    !> The variable name of an item `name(sub) = value`, lower case.
    pure function item_name(item) result(name)
       character(len=*), intent(in) :: item
@@ -1641,15 +1623,6 @@ contains
             real_text(pi2)//" (amplitude a < rho), got alpha = "//real_text(alpha))
       end if
    end subroutine check_alpha_domain
-
-   !> Decimal text of an integer.
-   pure function integer_text(n) result(text)
-      integer, intent(in) :: n  !! the integer
-      character(len=:), allocatable :: text
-      character(len=24) :: buffer
-      write (buffer, '(i0)') n
-      text = trim(buffer)
-   end function integer_text
 
    !> Shortest decimal text that reads back to exactly x (plain notation for
    !> 1e-4 <= |x| < 1e15, else mantissa and exponent), e.g. 9.8, 0.0, 1.0e-10.

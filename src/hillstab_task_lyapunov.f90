@@ -173,7 +173,7 @@ contains
       call put_es(line, pos, result%max_abs_phi, 6)
       call blank()
       call put_es(line, pos, result%energy_drift, 3)
-      line(pos + 1:) = " "//trim(integer_text(result%periods))//" "//achar(iachar("0") + status)
+      line(pos + 1:) = " "//integer_text(result%periods)//" "//achar(iachar("0") + status)
    contains
       subroutine blank()
          line(pos + 1:pos + 1) = " "
@@ -192,7 +192,7 @@ contains
       line(pos + 1:pos + 1) = " "
       pos = pos + 1
       call put_es(line, pos, beta, 16)
-      line(pos + 1:) = " 0 -1 -1 -1 0 -1 -1 "//trim(integer_text(periods))//" "//achar(iachar("0") + status_failed)
+      line(pos + 1:) = " 0 -1 -1 -1 0 -1 -1 "//integer_text(periods)//" "//achar(iachar("0") + status_failed)
    end function failed_line
 
    !> Lines and statuses of the points first … last (in parallel), and the text the file
@@ -238,11 +238,10 @@ contains
       integer(int64), intent(in) :: n_failed  !! failed points written
       real(wp), intent(in) :: first(2)  !! α, β of the first failed point
       type(error_t), allocatable, intent(out) :: error  !! err_points_failed when n_failed > 0
-      character(len=64) :: counts
       if (n_failed == 0) return
-      write (counts, '(i0,a,i0)') n_failed, " of ", lyapunov_point_count(scene)
       call set_error(error, err_points_failed, scene%source//": &series: the pendulum could not be integrated at "// &
-         trim(counts)//" point(s), written with status 2 and placeholders to "//output_path(scene)// &
+         integer_text(n_failed)//" of "//integer_text(lyapunov_point_count(scene))//" point(s), written with "// &
+         "status 2 and placeholders to "//output_path(scene)// &
          "; first at alpha = "//real_text(first(1))//", beta = "//real_text(first(2)))
    end subroutine lyapunov_failure_error
 

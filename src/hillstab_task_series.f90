@@ -251,11 +251,11 @@ contains
          " J/kg (1/2 |v|^2 + 1/2 omega^2 (r - r0)^2 + g |z| at t = 0; E itself may be near 0)"
       if (scene%epsilon > 0.0_wp) then
          n = n + 1; extra(n) = "summary: damped: steps over which E rose beyond round-off: "// &
-            trim(int64_text(s%energy_increases))//" (0: E decreases monotonically)"
+            integer_text(s%energy_increases)//" (0: E decreases monotonically)"
       end if
-      n = n + 1; extra(n) = "summary: accepted steps "//trim(int64_text(int(s%work%n_steps, int64)))// &
-         ", rejected "//trim(int64_text(int(s%work%n_rejected, int64)))//", f-evaluations "// &
-         trim(int64_text(int(s%work%n_evaluations, int64)))//" (one pass)"
+      n = n + 1; extra(n) = "summary: accepted steps "//integer_text(s%work%n_steps)// &
+         ", rejected "//integer_text(s%work%n_rejected)//", f-evaluations "// &
+         integer_text(s%work%n_evaluations)//" (one pass)"
       if (s%status == status_failed) then
          n = n + 1; extra(n) = "summary: lambda_max: status 2 (failed): the core could not compute S here"
       else
@@ -284,11 +284,6 @@ contains
          call put_es(buffer, pos, x, 10)
          text = trim(adjustl(buffer(1:pos)))
       end function fmt
-      function int64_text(i) result(text)
-         integer(int64), intent(in) :: i
-         character(len=24) :: text
-         write (text, '(i0)') i
-      end function int64_text
       function periods_text(n_periods, none) result(text)
          real(wp), intent(in) :: n_periods
          character(len=*), intent(in) :: none

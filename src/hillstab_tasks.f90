@@ -148,14 +148,13 @@ contains
       type(error_t), allocatable, intent(out) :: error  !! err_points_failed naming the count and the first point
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
-      character(len=64) :: counts
       if (n_failed == 0) return
       call evaluate_point(scene, first(1), first(2), f, cause)
       if (.not. allocated(cause)) call set_error(cause, err_input, "fails in parallel only")
-      write (counts, '(i0,a,i0)') n_failed, " of ", n_total
       call set_error(error, err_points_failed, scene%source//": &scene: method: '"// &
-         method_name(scene%method%kind)//"' failed at "//trim(counts)//" point(s), written with status "// &
-         integer_text(status_failed)//" and placeholders to "//output_path(scene)//"; first at alpha = "// &
+         method_name(scene%method%kind)//"' failed at "//integer_text(n_failed)//" of "//integer_text(n_total)// &
+         " point(s), written with status "//integer_text(status_failed)//" and placeholders to "//output_path(scene)// &
+         "; first at alpha = "// &
          real_text(first(1))//", beta = "//real_text(first(2))//": "//cause%message)
    end subroutine failed_points_error
 
@@ -778,10 +777,8 @@ contains
       type(scene_t), intent(in) :: scene  !! a validated scene
       integer(int64), intent(in) :: n  !! number of round-off limited points
       real(wp), intent(in) :: first(2)  !! alpha, beta of the first such point
-      character(len=32) :: count_text
       if (n == 0) return
-      write (count_text, '(i0)') n
-      write (error_unit, '(a)') "hillstab: warning: "//scene%source//": "//trim(count_text)// &
+      write (error_unit, '(a)') "hillstab: warning: "//scene%source//": "//integer_text(n)// &
          " point(s) reached only the round-off level of double precision, not the tolerance "// &
          real_text(scene%method%tolerance)//" (first at alpha = "//real_text(first(1))//", beta = "// &
          real_text(first(2))//"); their S is the best available"
