@@ -34,7 +34,7 @@ module hillstab_scene
       scene_namelist, default_scene
    public :: task_chart, task_points, task_coefficient, task_boundaries, task_series, task_name
    public :: task_lyapunov, task_poincare, poincare_plan_t, max_poincare_orbits
-   public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas, output_path
+   public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas, output_path, scene_columns
 
    integer, parameter :: task_chart = 1        !! stability chart over an (α, β) grid
    integer, parameter :: task_points = 2       !! the chart's columns at listed (α, β) points
@@ -370,10 +370,24 @@ contains
    subroutine check_columns(scene, error)
       type(scene_t), intent(in) :: scene
       type(error_t), allocatable, intent(out) :: error
-      integer, allocatable :: available(:), ids(:)
+      integer, allocatable :: ids(:)
+      if (scene%task /= task_chart .and. scene%task /= task_points) return
+      call scene_columns(scene, ids, error)
+   end subroutine check_columns
+
+   !> The columns a chart or points file of this scene holds: `&scene columns` when given,
+   !> else all the task offers (`default_chart_columns`).
+   subroutine scene_columns(scene, ids, error)
+      type(scene_t), intent(in) :: scene  !! a chart or points scene
+      integer, allocatable, intent(out) :: ids(:)  !! indices into hillstab_output's chart_column_names, in file order
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming &scene columns when a name is not offered
+      integer, allocatable :: available(:)
       character(len=:), allocatable :: bad
-      if (len_trim(scene%columns) == 0 .or. (scene%task /= task_chart .and. scene%task /= task_points)) return
       available = default_chart_columns(scene%epsilon > 0.0_wp, scene%model == model_elastic, scene%physical)
+      if (len_trim(scene%columns) == 0) then
+         ids = available
+         return
+      end if
       call find_chart_columns(scene%columns, available, ids, bad)
       if (len(bad) > 0) then
          call fail(error, scene%source, "scene", "columns", "'"//bad//"' is not a column of this file or is "// &
@@ -381,7 +395,7 @@ contains
       else if (size(ids) == 0) then
          call fail(error, scene%source, "scene", "columns", "no column named")
       end if
-   end subroutine check_columns
+   end subroutine scene_columns
 
    !> `&scene`: task, model, method and its settings, damping, output prefix.
    subroutine read_scene_group(unit, this, error)

@@ -33,12 +33,12 @@ module hillstab_tasks
    use hillstab_task_poincare, only: run_poincare
    use hillstab_scene, only: scene_t, read_scene, scene_namelist, task_chart, task_points, task_coefficient, &
       task_series, task_name, grid_value, real_text, integer_text, task_boundaries, task_lyapunov, task_poincare, &
-      output_path
+      output_path, scene_columns
    use hillstab_task_boundaries, only: run_boundaries
    use hillstab_format, only: format_es
    use hillstab_output, only: output_file_t, open_output, finish_output, discard_output, write_header, &
       write_text, write_records, chart_line_length, real_columns, n_chart_columns, chart_values, failed_chart_values, &
-      chart_text, chart_columns_text, default_chart_columns, find_chart_columns
+      chart_text, chart_columns_text, default_chart_columns
    use hillstab_limits, only: check_output_room
    use, intrinsic :: iso_fortran_env, only: error_unit
    use, intrinsic :: iso_c_binding, only: c_int
@@ -198,28 +198,6 @@ contains
          lines = common
       end if
    end function common_header
-
-   !> The columns a chart or points file of this scene holds: `&scene columns` when given,
-   !> else all the task offers (`default_chart_columns`).
-   subroutine scene_columns(scene, ids, error)
-      type(scene_t), intent(in) :: scene  !! a chart or points scene
-      integer, allocatable, intent(out) :: ids(:)  !! indices into hillstab_output's chart_column_names, in file order
-      type(error_t), allocatable, intent(out) :: error  !! err_input naming &scene columns when a name is not offered
-      integer, allocatable :: available(:)
-      character(len=:), allocatable :: bad
-      available = default_chart_columns(scene%epsilon > 0.0_wp, scene%model == model_elastic, scene%physical)
-      if (len_trim(scene%columns) == 0) then
-         ids = available
-         return
-      end if
-      call find_chart_columns(scene%columns, available, ids, bad)
-      if (len(bad) > 0) then
-         call set_error(error, err_input, scene%source//": &scene: columns: '"//bad//"' is not a column of this "// &
-            "file or is named twice (available: "//chart_columns_text(available)//")")
-      else if (size(ids) == 0) then
-         call set_error(error, err_input, scene%source//": &scene: columns: no column named")
-      end if
-   end subroutine scene_columns
 
    !> Header lines of a scene given in physical units: the conversions used.
    function physical_header(scene) result(lines)
