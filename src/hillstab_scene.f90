@@ -35,6 +35,7 @@ module hillstab_scene
    public :: task_chart, task_points, task_coefficient, task_boundaries, task_series, task_name
    public :: task_lyapunov, task_poincare, poincare_plan_t, max_poincare_orbits
    public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas, output_path, scene_columns
+   public :: scene_header
 
    integer, parameter :: task_chart = 1        !! stability chart over an (α, β) grid
    integer, parameter :: task_points = 2       !! the chart's columns at listed (α, β) points
@@ -1775,6 +1776,24 @@ contains
       lines(1) = first
       lines(2) = second
    end function scene_namelist
+
+   !> The lines an output file's header holds: `title`, the scene file, the effective scene
+   !> (`scene_namelist`: given back as a scene, the file repeats its run), then `extra`.
+   function scene_header(scene, title, extra) result(lines)
+      type(scene_t), intent(in) :: scene  !! the scene of the run
+      character(len=*), intent(in) :: title  !! the first line: the program, its version, what the file holds
+      character(len=*), intent(in) :: extra(:)  !! the lines after the namelist groups
+      character(len=:), allocatable :: lines(:)
+      character(len=:), allocatable :: groups(:), source_line
+      groups = scene_namelist(scene)
+      source_line = "scene file: "//scene%source//" (the namelist lines below repeat this run)"
+      allocate (character(len=max(len(title), len(source_line), len(groups), len(extra))) :: &
+         lines(2 + size(groups) + size(extra)))
+      lines(1) = title
+      lines(2) = source_line
+      lines(3:2 + size(groups)) = groups
+      lines(3 + size(groups):) = extra
+   end function scene_header
 
    !> The `&series` line of the effective scene.
    function series_text(plan) result(text)

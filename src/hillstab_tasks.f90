@@ -31,7 +31,7 @@ module hillstab_tasks
    use hillstab_task_series, only: run_series
    use hillstab_task_lyapunov, only: run_lyapunov
    use hillstab_task_poincare, only: run_poincare
-   use hillstab_scene, only: scene_t, read_scene, scene_namelist, task_chart, task_points, task_coefficient, &
+   use hillstab_scene, only: scene_t, read_scene, scene_header, task_chart, task_points, task_coefficient, &
       task_series, task_name, grid_value, real_text, integer_text, task_boundaries, task_lyapunov, task_poincare, &
       output_path, scene_columns
    use hillstab_task_boundaries, only: run_boundaries
@@ -182,16 +182,13 @@ contains
    function common_header(scene) result(lines)
       type(scene_t), intent(in) :: scene
       character(len=:), allocatable :: lines(:)
-      character(len=:), allocatable :: groups(:), model_text, common(:)
-      groups = scene_namelist(scene)
+      character(len=:), allocatable :: model_text, common(:)
       if (scene%model == model_elastic) then
          model_text = "model: elastic, Q(tau) = (beta - alpha cos(pi tau))/(1 - (alpha/pi^2) cos(pi tau)), eq. (25)"
       else
          model_text = "model: mathieu, q(tau) = beta - alpha cos(pi tau), eq. (A1), alpha playing nu"
       end if
-      common = stacked(["hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau"], &
-                       stacked(["scene file: "//scene%source//" (the namelist lines below repeat this run)"], &
-                               stacked(groups, [model_text])))
+      common = scene_header(scene, "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau", [model_text])
       if (scene%physical) then
          lines = stacked(common, physical_header(scene))
       else
