@@ -250,7 +250,7 @@ contains
          do k = 1, len_trim(columns)
             if (columns(k:k) == " ") n_columns = n_columns + 1
          end do
-         layout = [character(len=400) :: &
+         layout = [character(len=400 + len(file%path)) :: &
             "format: binary: after the first "//mark//" bytes (this header) come "// &
             integer_text(records(1))//" x "//integer_text(records(2))//" records of "//integer_text(n_columns)// &
             " float64 (native byte order, little-endian on x86-64 and ARM), the columns below, point by point "// &
