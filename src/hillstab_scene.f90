@@ -269,7 +269,7 @@ contains
       character(len=*), intent(in) :: path       !! scene file
       type(scene_t), intent(out) :: scene        !! the validated scene
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable; unallocated on success
-      integer :: unit, ios
+      integer :: unit
       scene = default_scene(path)
       call open_scene_copy(path, unit, error)
       if (allocated(error)) return
