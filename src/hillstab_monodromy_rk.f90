@@ -92,7 +92,7 @@ contains
       type(even_odd_pair_t) :: pair
       type(work_stats_t) :: part
       real(wp) :: t, y(4), h_next, log_u, log_v, peak
-      integer :: e
+      integer :: e, e_u, e_v
       character(len=80) :: buffer
 
       stats = work_stats_t()
@@ -122,6 +122,8 @@ contains
       t = 0.0_wp
       log_u = 0.0_wp
       log_v = 0.0_wp
+      e_u = 0
+      e_v = 0
       peak = 0.0_wp
       do
          pair%peak_terms = 0.0_wp
@@ -137,12 +139,16 @@ contains
                     log_or_floor(pair%peak_terms(3)) + log_u + log_v)
          if (t == 1.0_wp) exit
          ! stopped by watch_growth: rescale each pair by a power of two and resume
+         ! (the exponents are counted as integers: a logarithm added at each rescaling
+         ! would round each time)
          e = exponent(maxval(abs(y(1:2))))
          y(1:2) = scale(y(1:2), -e)
-         log_u = log_u + e*log(2.0_wp)
+         e_u = e_u + e
+         log_u = e_u*log(2.0_wp)
          e = exponent(maxval(abs(y(3:4))))
          y(3:4) = scale(y(3:4), -e)
-         log_v = log_v + e*log(2.0_wp)
+         e_v = e_v + e
+         log_v = e_v*log(2.0_wp)
          options%h_initial = abs(h_next)
       end do
 
