@@ -42,7 +42,7 @@ module hillstab_gsl
    use hillstab_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
       roundoff_level, propagator_condition, trace_distance, first_step_factor, next_local_tolerance
    use hillstab_stats, only: work_stats_t, add_work
-   use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
+   use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
    use hillstab_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
    implicit none
    private
@@ -359,11 +359,14 @@ contains
       real(wp) :: growth_rate, magnitude, condition_peak
       integer(c_int) :: status
       integer :: n_chunks, chunk, j, e, exponents(2)
+      integer(int64) :: n_accepted, n_rejected
       character(len=200) :: buf
 
       y = reshape([1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], [2, 2])
       log_scale = 0.0_wp
       exponents = 0
+      n_accepted = 0
+      n_rejected = 0
       log_peak = 0.0_wp
       stats = work_stats_t()
       previous = gsl_set_error_handler_off()
@@ -423,8 +426,9 @@ contains
       end do
       if (present(log_condition_peak)) log_condition_peak = condition_peak
 
-      stats%n_steps = int(evolve_view%count - evolve_view%failed_steps, int64)
-      stats%n_rejected = int(evolve_view%failed_steps, int64)
+      ! (counted here: the evolve object's counters restart at each driver reset)
+      stats%n_steps = n_accepted
+      stats%n_rejected = n_rejected
       stats%n_evaluations = context%n_evaluations
       call gsl_odeiv2_driver_free(driver)
 
@@ -452,7 +456,7 @@ contains
       subroutine advance_to(t_goal)
          real(wp), intent(in) :: t_goal  !! the time the solution is to reach
          real(c_double) :: t_start, target
-         integer(c_long) :: n
+         integer(c_long) :: n, failed_before
          ! GSL's t runs ahead of the solution's time by `lag`
          target = real(t_goal + context%lag, c_double)
          n = 0
@@ -464,11 +468,14 @@ contains
             end if
             if (t + driver_view%h < target) driver_view%h = (t + driver_view%h) - t
             t_start = t
+            failed_before = evolve_view%failed_steps
             status = gsl_odeiv2_evolve_apply(driver_view%evolve, driver_view%control, driver_view%step, &
                                              driver_view%sys, t, target, driver_view%h, state)
+            n_rejected = n_rejected + (evolve_view%failed_steps - failed_before)
             if (status /= gsl_success) return
             context%lag = context%lag + ((t - t_start) - evolve_view%last_step)
             n = n + 1
+            n_accepted = n_accepted + 1
          end do
       end subroutine advance_to
    end subroutine integrate_pair
@@ -547,7 +554,7 @@ contains
          return
       end if
       tr = trace_of(best)
-      call refine(ladder, tr, .false., roundoff_level(log_peak, tr%log_abs, int(part%n_steps)))
+      call refine(ladder, tr, .false., roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase_bound(model)))
       estimate = -1.0_wp
       do run = 2, max_ladder_runs
          ! the first step down also divides by the condition κ of the first pass: where the
@@ -576,11 +583,11 @@ contains
                estimate = trace_distance(trace_of(best), trace_of(trial))
             end if
             tr = trace_of(best)
-            estimate = max(estimate, roundoff_level(log_peak, tr%log_abs, int(part%n_steps)))
+            estimate = max(estimate, roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase_bound(model)))
             exit
          end if
          tr = trace_of(trial)
-         noise = roundoff_level(log_peak, tr%log_abs, int(part%n_steps))
+         noise = roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase_bound(model))
          call refine(ladder, tr, eps <= 1.001_wp*smallest_gsl_epsilon .or. run == max_ladder_runs, noise, &
                      near_floor=eps <= 1.0e3_wp*smallest_gsl_epsilon)
          best = trial

@@ -38,7 +38,7 @@ module hillstab_magnus
    use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use hillstab_refine, only: roundoff_level, propagator_condition
    use hillstab_stats, only: work_stats_t
-   use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
+   use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
    use hillstab_transfer, only: scaled_matrix_t, scaled_identity, transfer_functions, transfer_increment, multiply_matrix, &
       normalize_scaled, trace_t, trace_of, monodromy_from_half_period
    implicit none
@@ -477,7 +477,8 @@ contains
       real(wp), intent(out), optional :: error_estimate  !! estimated |ΔS|/max(1, |S|)
       real(wp), allocatable :: mesh(:)
       type(scaled_matrix_t) :: phi, phi_check, m_check
-      real(wp) :: theta, estimate, ratio, log_peak, noise
+      real(wp) :: theta, estimate, ratio, log_peak, noise, previous
+      logical :: stagnated
       type(trace_t) :: tr
       integer :: n_mesh, split, pass, factor
       character(len=100) :: buffer
@@ -508,11 +509,12 @@ contains
       estimate = richardson_safety*relative_trace_difference(m, m_check)/(ratio - 1.0_wp)
       split = 1
       tr = trace_of(m)
-      noise = roundoff_level(log_peak, tr%log_abs, n_mesh)
+      noise = roundoff_level(log_peak, tr%log_abs, n_mesh, phase_bound(model))
+      stagnated = .false.
       do pass = 1, max_refinements
          if (estimate <= tolerance .and. noise <= tolerance) exit
          ! the difference is at the round-off level: more steps cannot help
-         if (estimate <= max(tolerance, 2.0_wp*noise)) exit
+         if (estimate <= max(tolerance, 2.0_wp*noise) .or. stagnated) exit
          ! subdivide every step by `factor` so that the error drops by factor^p below the tolerance
          factor = max(2, ceiling(1.2_wp*(estimate/tolerance)**(1.0_wp/order)))
          if (real(factor, wp)*split*n_mesh > real(max_steps, wp)) exit
@@ -520,12 +522,17 @@ contains
          split = split*factor
          call mesh_product(model, order, mesh, n_mesh, split, phi, stats)
          m = monodromy_from_half_period(phi)
+         previous = estimate
          estimate = richardson_safety*relative_trace_difference(m, m_check)/(real(factor, wp)**order - 1.0_wp)
          tr = trace_of(m)
-         noise = roundoff_level(log_peak, tr%log_abs, split*n_mesh)
+         noise = roundoff_level(log_peak, tr%log_abs, split*n_mesh, phase_bound(model))
+         ! truncation falls by factor^p (at least 16); a difference that no longer falls
+         ! by a quarter of that, within a few times the round-off level, is rounding noise
+         stagnated = estimate > previous*4.0_wp/real(factor, wp)**order .and. estimate <= 10.0_wp*noise
       end do
       if (present(error_estimate)) error_estimate = max(estimate, noise)
-      if (noise > tolerance .and. estimate <= max(tolerance, 2.0_wp*noise)) then
+      if ((estimate > tolerance .or. noise > tolerance) .and. &
+          (estimate <= max(tolerance, 2.0_wp*noise) .or. stagnated)) then
          write (buffer, '(a,es9.2,a,es9.2)') "Magnus: the tolerance ", tolerance, &
             " is below the round-off level of S here, ", noise
          call set_error(error, err_accuracy, trim(buffer))

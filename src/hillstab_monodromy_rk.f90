@@ -24,7 +24,7 @@ module hillstab_monodromy_rk
    use hillstab_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
       roundoff_level, propagator_condition, first_step_factor, next_local_tolerance
    use hillstab_stats, only: work_stats_t, add_work
-   use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
+   use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
    use hillstab_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
    use hillstab_rk, only: rk_system_t, rk_options_t, rk_step_t, rk_integrate, rk_dopri5, rk_dop853
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -192,7 +192,7 @@ contains
          if (allocated(error)) exit
          tr = trace_of(m)
          call refine(ladder, tr, at_floor=local <= 1.001_wp*tolerance_floor .or. run == max_ladder_runs, &
-                     noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps)), &
+                     noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase_bound(model)), &
                      near_floor=local <= 1.0e3_wp*tolerance_floor)
          if (ladder%verdict /= refine_more) exit
          ! the first step down also divides by the propagator's condition (`first_step_factor`)
