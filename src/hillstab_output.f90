@@ -23,13 +23,13 @@ module hillstab_output
    use hillstab_kinds, only: wp, int64
    use hillstab_error, only: error_t, set_error, err_io
    use hillstab_floquet, only: floquet_t, largest_multiplier_modulus
-   use hillstab_format, only: put_es
+   use hillstab_format, only: put_es, integer_text, lower_case
    use hillstab_signals, only: watch_temp_file, forget_temp_file
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, c_associated, &
       c_size_t, c_f_pointer, c_loc
    implicit none
    private
-   public :: output_file_t, open_output, commit_output, discard_output, write_header, write_text
+   public :: output_file_t, open_output, commit_output, discard_output, finish_output, write_header, write_text
    public :: n_chart_columns, chart_column_names, chart_values, failed_chart_values, chart_text
    public :: chart_columns_text, default_chart_columns, find_chart_columns, write_records
    public :: chart_line_length, clamp_magnitude, log10_floor, real_columns, failed_log10_abs_s
@@ -188,6 +188,19 @@ contains
       call forget_temp_file(file%slot)
    end subroutine commit_output
 
+   !> End the writing of a file: commit it when `error` is unallocated (a failure to
+   !> commit comes back in `error`), else discard it and keep `error`.
+   subroutine finish_output(file, error)
+      type(output_file_t), intent(inout) :: file  !! the file written
+      !> in: the first failure while writing, if any; out: that one, or the commit's
+      type(error_t), allocatable, intent(inout) :: error
+      if (allocated(error)) then
+         call discard_output(file)
+      else
+         call commit_output(file, error)
+      end if
+   end subroutine finish_output
+
    !> Close and delete the temporary file; the final name is left as it was.
    subroutine discard_output(file)
       type(output_file_t), intent(inout) :: file  !! the file to abandon
@@ -294,14 +307,6 @@ contains
       end function replaced
    end subroutine write_header
 
-   pure function integer_text(n) result(text)
-      integer, intent(in) :: n
-      character(len=:), allocatable :: text
-      character(len=24) :: buffer
-      write (buffer, '(i0)') n
-      text = trim(buffer)
-   end function integer_text
-
    !> Write one line of text (a newline is added). After a failed write the file is
    !> incomplete: this and every later write report the failure, and commit_output
    !> deletes the file.
@@ -400,10 +405,10 @@ contains
             if (index(" ,", text(j + 1:j + 1)) > 0) exit
             j = j + 1
          end do
-         word = lower_text(text(i:j))
+         word = lower_case(text(i:j))
          found = 0
          do k = 1, size(available)
-            if (lower_text(trim(names(available(k)))) == word) found = available(k)
+            if (lower_case(trim(names(available(k)))) == word) found = available(k)
          end do
          if (found == 0 .or. any(ids == found)) then
             bad = text(i:j)
@@ -427,16 +432,6 @@ contains
          text = text//trim(names(ids(k)))
       end do
    end function chart_columns_text
-
-   pure function lower_text(text) result(low)
-      character(len=*), intent(in) :: text
-      character(len=len(text)) :: low
-      integer :: i
-      low = text
-      do i = 1, len(text)
-         if (text(i:i) >= "A" .and. text(i:i) <= "Z") low(i:i) = achar(iachar(text(i:i)) + 32)
-      end do
-   end function lower_text
 
    !> The value of every column (`chart_column_names` order) at one computed point: S and
    !> lambda_max clamped to ±1e300, flags 1 or 0, stable 0.5 when marginal, mu_per_s = μ ω/π

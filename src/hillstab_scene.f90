@@ -22,6 +22,7 @@ module hillstab_scene
    use hillstab_monodromy, only: method_t, method_auto, method_name, method_from_name, method_magnus4, &
       method_magnus6, method_rk, method_gsl
    use hillstab_output, only: default_chart_columns, find_chart_columns, chart_columns_text
+   use hillstab_format, only: integer_text, lower => lower_case
    use hillstab_units, only: physical_t, physical_alpha, physical_beta, physical_epsilon, physical_nu, &
       check_physical, equilibrium_length
    use, intrinsic :: iso_fortran_env, only: iostat_end
@@ -33,7 +34,7 @@ module hillstab_scene
       scene_namelist, default_scene
    public :: task_chart, task_points, task_coefficient, task_boundaries, task_series, task_name
    public :: task_lyapunov, task_poincare, poincare_plan_t, max_poincare_orbits
-   public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas
+   public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas, output_path, scene_columns
 
    integer, parameter :: task_chart = 1        !! stability chart over an (α, β) grid
    integer, parameter :: task_points = 2       !! the chart's columns at listed (α, β) points
@@ -209,6 +210,17 @@ contains
       end select
    end function task_name
 
+   !> The file a scene's task writes: `<output>_<task>.dat` (`.bin` for format = 'binary').
+   pure function output_path(scene) result(path)
+      type(scene_t), intent(in) :: scene  !! the scene
+      character(len=:), allocatable :: path
+      if (scene%binary) then
+         path = scene%output//"_"//task_name(scene%task)//".bin"
+      else
+         path = scene%output//"_"//task_name(scene%task)//".dat"
+      end if
+   end function output_path
+
    !> The i-th of n equally spaced values from lo to hi (n = 1: lo).
    pure real(wp) function grid_value(lo, hi, n, i)
       real(wp), intent(in) :: lo, hi  !! first and last value
@@ -358,10 +370,24 @@ contains
    subroutine check_columns(scene, error)
       type(scene_t), intent(in) :: scene
       type(error_t), allocatable, intent(out) :: error
-      integer, allocatable :: available(:), ids(:)
+      integer, allocatable :: ids(:)
+      if (scene%task /= task_chart .and. scene%task /= task_points) return
+      call scene_columns(scene, ids, error)
+   end subroutine check_columns
+
+   !> The columns a chart or points file of this scene holds: `&scene columns` when given,
+   !> else all the task offers (`default_chart_columns`).
+   subroutine scene_columns(scene, ids, error)
+      type(scene_t), intent(in) :: scene  !! a chart or points scene
+      integer, allocatable, intent(out) :: ids(:)  !! indices into hillstab_output's chart_column_names, in file order
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming &scene columns when a name is not offered
+      integer, allocatable :: available(:)
       character(len=:), allocatable :: bad
-      if (len_trim(scene%columns) == 0 .or. (scene%task /= task_chart .and. scene%task /= task_points)) return
       available = default_chart_columns(scene%epsilon > 0.0_wp, scene%model == model_elastic, scene%physical)
+      if (len_trim(scene%columns) == 0) then
+         ids = available
+         return
+      end if
       call find_chart_columns(scene%columns, available, ids, bad)
       if (len(bad) > 0) then
          call fail(error, scene%source, "scene", "columns", "'"//bad//"' is not a column of this file or is "// &
@@ -369,7 +395,7 @@ contains
       else if (size(ids) == 0) then
          call fail(error, scene%source, "scene", "columns", "no column named")
       end if
-   end subroutine check_columns
+   end subroutine scene_columns
 
    !> `&scene`: task, model, method and its settings, damping, output prefix.
    subroutine read_scene_group(unit, this, error)
@@ -778,10 +804,8 @@ contains
       subroutine require_finite_or_unset(k, error)
          integer, intent(in) :: k
          type(error_t), allocatable, intent(out) :: error
-         character(len=16) :: index_text
          if (.not. ieee_is_finite(alphas(k))) then
-            write (index_text, '(i0)') k
-            call fail(error, scene%source, group, "alphas", "value "//trim(index_text)//" is not a finite number")
+            call fail(error, scene%source, group, "alphas", "value "//integer_text(k)//" is not a finite number")
          end if
       end subroutine require_finite_or_unset
    end subroutine read_coefficient_group
@@ -856,17 +880,11 @@ contains
          call fail(error, scene%source, group, merge("vx0", "vz0", abs(vx0) > 1.0e50_wp), "must lie in [-1e50, 1e50]")
       else if (int(periods, int64)*samples_per_period + 1 > max_series_lines) then
          call fail(error, scene%source, group, "periods", "periods * samples_per_period + 1 = "// &
-            trim(int64_text(int(periods, int64)*samples_per_period + 1))// &
+            integer_text(int(periods, int64)*samples_per_period + 1)// &
             " data lines exceed the limit of 1e8; lower periods or samples_per_period")
       end if
       if (allocated(error)) return
       scene%series = series_plan_t(alpha, beta, phi0, periods, samples_per_period, r0, g, vx0, vz0)
-   contains
-      function int64_text(n) result(text)
-         integer(int64), intent(in) :: n
-         character(len=24) :: text
-         write (text, '(i0)') n
-      end function int64_text
    end subroutine read_series_group
 
    !> Read the points file: one `alpha beta` pair per line, `#` starts a comment,
@@ -1471,17 +1489,6 @@ contains
       is_name_char = is_letter(c) .or. (c >= "0" .and. c <= "9") .or. c == "_"
    end function is_name_char
 
-   !> Lower-case copy of a string.
-   pure function lower(text) result(low)
-      character(len=*), intent(in) :: text
-      character(len=len(text)) :: low
-      integer :: i
-      low = text
-      do i = 1, len(text)
-         if (text(i:i) >= "A" .and. text(i:i) <= "Z") low(i:i) = achar(iachar(text(i:i)) + 32)
-      end do
-   end function lower
-
    !> The variable name of an item `name(sub) = value`, lower case.
    pure function item_name(item) result(name)
       character(len=*), intent(in) :: item
@@ -1630,15 +1637,6 @@ contains
             real_text(pi2)//" (amplitude a < rho), got alpha = "//real_text(alpha))
       end if
    end subroutine check_alpha_domain
-
-   !> Decimal text of an integer.
-   pure function integer_text(n) result(text)
-      integer, intent(in) :: n  !! the integer
-      character(len=:), allocatable :: text
-      character(len=24) :: buffer
-      write (buffer, '(i0)') n
-      text = trim(buffer)
-   end function integer_text
 
    !> Shortest decimal text that reads back to exactly x (plain notation for
    !> 1e-4 <= |x| < 1e15, else mantissa and exponent), e.g. 9.8, 0.0, 1.0e-10.

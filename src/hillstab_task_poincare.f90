@@ -13,8 +13,8 @@ module hillstab_task_poincare
    use hillstab_status, only: status_ok, status_failed
    use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_energy
    use hillstab_poincare, only: section_t, poincare_section, pendulum_state_at_energy
-   use hillstab_scene, only: scene_t, scene_namelist, real_text, integer_text, task_name
-   use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, write_text
+   use hillstab_scene, only: scene_t, scene_namelist, real_text, integer_text, output_path
+   use hillstab_output, only: output_file_t, open_output, finish_output, write_header, write_text
    use hillstab_format, only: put_es
    implicit none
    private
@@ -71,7 +71,7 @@ contains
          end if
       end do
 
-      call open_output(file, output_path_of(scene), cause)
+      call open_output(file, output_path(scene), cause)
       if (allocated(cause)) then
          call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
          return
@@ -100,11 +100,7 @@ contains
             call write_text(file, trim(lines(j)), error)
          end do
       end do
-      if (allocated(error)) then
-         call discard_output(file)
-         return
-      end if
-      call commit_output(file, error)
+      call finish_output(file, error)
       if (allocated(error)) return
       if (any(statuses == status_failed)) then
          first_failed = findloc(statuses, status_failed, dim=1)
@@ -114,7 +110,7 @@ contains
          if (allocated(cause)) failure = cause%message
          call set_error(error, err_points_failed, scene%source//": &poincare: "//integer_text(count(statuses == &
             status_failed))//" of "//integer_text(n)//" orbit(s) could not be integrated to the end, written with "// &
-            "status 2 and their crossings so far to "//output_path_of(scene)//"; first at phi0 = "// &
+            "status 2 and their crossings so far to "//output_path(scene)//"; first at phi0 = "// &
             real_text(scene%poincare%phi0s(first_failed))//": "//failure)
       end if
    contains
@@ -176,10 +172,4 @@ contains
          end do
       end function block_lines
    end subroutine run_poincare
-
-   pure function output_path_of(scene) result(path)
-      type(scene_t), intent(in) :: scene
-      character(len=:), allocatable :: path
-      path = scene%output//"_"//task_name(scene%task)//".dat"
-   end function output_path_of
 end module hillstab_task_poincare

@@ -73,17 +73,29 @@ contains
    function read_lines(path) result(lines)
       character(len=*), intent(in) :: path
       character(len=1024), allocatable :: lines(:)
+      character(len=1024), allocatable :: grown(:)
       character(len=:), allocatable :: line
-      integer :: unit, ios
+      integer :: unit, ios, n
       allocate (lines(0))
       open (newunit=unit, file=path, status="old", action="read", iostat=ios)
       if (ios /= 0) return
+      ! Capacity doubles, so reading n lines copies O(n) lines, not O(n**2).
+      deallocate (lines)
+      allocate (lines(64))
+      n = 0
       do
          call read_text_line(unit, line, ios)
          if (ios /= 0) exit
-         lines = [character(len=1024) :: lines, line]
+         if (n == size(lines)) then
+            allocate (grown(2*size(lines)))
+            grown(1:n) = lines(1:n)
+            call move_alloc(grown, lines)
+         end if
+         n = n + 1
+         lines(n) = line
       end do
       close (unit)
+      lines = lines(1:n)
    end function read_lines
 
    logical function file_exists(path)
