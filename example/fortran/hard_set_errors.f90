@@ -19,11 +19,28 @@ program hard_set_errors
    character(len=400) :: line
    type(trace_t) :: tr
    type(error_t), allocatable :: error
-   logical :: verbose
-   verbose = command_argument_count() > 0
+   logical :: verbose, list_all
+   character(len=400) :: file, arg
+   character(len=20) :: only = ""
+   verbose = .false.
+   list_all = .false.
+   file = "data/reference/hard_set.dat"
+   do i = 1, command_argument_count()
+      call get_command_argument(i, arg)
+      if (arg(1:2) == "m=") then
+         only = arg(3:)
+      else if (arg == "all") then
+         list_all = .true.
+         verbose = .true.
+      else if (index(arg, ".dat") > 0) then
+         file = arg
+      else
+         verbose = .true.
+      end if
+   end do
    methods = [method_auto, method_magnus4, method_magnus6, method_rk, method_gsl]
-   open (newunit=unit, file="data/reference/hard_set.dat", status="old", action="read", iostat=ios)
-   if (ios /= 0) error stop "run from the repository root: data/reference/hard_set.dat not found"
+   open (newunit=unit, file=trim(file), status="old", action="read", iostat=ios)
+   if (ios /= 0) error stop "run from the repository root: reference file not found"
    n = 0
    do
       read (unit, '(a)', iostat=ios) line
@@ -40,6 +57,7 @@ program hard_set_errors
       "worst error/estimate there | largest estimate | failed | ms/point |"
    write (*, '(a)') "|---|---|---|---|---|---|---|---|"
    do m = 1, size(methods)
+      if (len_trim(only) > 0 .and. method_name(methods(m)) /= only) cycle
       do k = 1, size(tolerances)
          worst_ok = 0.0_wp
          worst_roundoff = 0.0_wp
@@ -56,6 +74,9 @@ program hard_set_errors
             else
                err = abs(tr%value - value(i))/max(1.0_wp, abs(value(i)))
             end if
+            if (list_all) print '(a8,es8.1,f8.3,es11.3,a,es10.2,a,es10.2,a,i0)', method_name(methods(m)), &
+               tolerances(k), alpha(i), beta(i), " err", err, " est", tr%error_estimate, " status ", &
+               merge(0, merge(1, 2, error_code(error) == err_accuracy), .not. allocated(error))
             if (allocated(error)) then
                if (error%code == err_accuracy) then
                   n_roundoff = n_roundoff + 1
@@ -76,4 +97,10 @@ program hard_set_errors
             1.0e3_wp*real(t1 - t0, wp)/rate/n
       end do
    end do
+contains
+   integer function error_code(e)
+      type(error_t), allocatable, intent(in) :: e
+      error_code = 0
+      if (allocated(e)) error_code = e%code
+   end function error_code
 end program hard_set_errors
