@@ -63,6 +63,9 @@ module hillstab_scene
    real(wp), parameter, public :: max_integrated_magnitude = 1.0e8_wp
    !> Largest |α|, |β| of task boundaries.
    real(wp), parameter, public :: max_boundaries_magnitude = 1.0e6_wp
+   !> Smallest β of the tasks that simulate the pendulum (series, lyapunov, poincare):
+   !> below it ω = √(g π²/(ρ β)) and the time scales overflow.
+   real(wp), parameter, public :: min_pendulum_beta = 1.0e-8_wp
    !> Largest damping ε.
    real(wp), parameter, public :: max_epsilon = 100.0_wp
    !> Largest number of points in a points file.
@@ -859,7 +862,7 @@ contains
       else if (beta <= 0.0_wp .or. beta >= pi2) then
          call fail(error, scene%source, group, "beta", "must lie in (0, pi**2 = "//real_text(pi2)// &
             "), the physical domain (r0 > 0), got "//real_text(beta))
-      else if (beta < 1.0e-8_wp) then
+      else if (beta < min_pendulum_beta) then
          call fail(error, scene%source, group, "beta", "must be >= 1.0e-8 (smaller values make the "// &
             "pendulum's time scales overflow), got "//real_text(beta))
       else if (periods < 1) then
@@ -1892,10 +1895,19 @@ contains
                   why//real_text(pi2)//")")
                return
             end if
+            if (scene%points(2, k) < min_pendulum_beta) then
+               call fail(error, scene%source, "points", "file", "point "//integer_text(k)//" of "// &
+                  scene%points_file//" has beta = "//real_text(scene%points(2, k))//", below "// &
+                  real_text(min_pendulum_beta)//" (smaller values make the pendulum's time scales overflow)")
+               return
+            end if
          end do
       else if (scene%chart%beta_min <= 0.0_wp) then
          call fail(error, scene%source, "chart", "beta_min", "must be > 0"//why//real_text(pi2)//"), got "// &
             real_text(scene%chart%beta_min))
+      else if (scene%chart%beta_min < min_pendulum_beta) then
+         call fail(error, scene%source, "chart", "beta_min", "must be >= "//real_text(min_pendulum_beta)// &
+            " (smaller values make the pendulum's time scales overflow), got "//real_text(scene%chart%beta_min))
       else if (scene%chart%beta_max >= pi2) then
          call fail(error, scene%source, "chart", "beta_max", "must be < pi**2"//why//real_text(pi2)//"), got "// &
             real_text(scene%chart%beta_max))
