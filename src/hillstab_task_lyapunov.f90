@@ -23,7 +23,7 @@ module hillstab_task_lyapunov
    use hillstab_lyapunov, only: lyapunov_t, lyapunov_largest
    use hillstab_scene, only: scene_t, scene_header, grid_value, real_text, integer_text, output_path
    use hillstab_output, only: output_file_t, open_output, finish_output, write_header, write_text
-   use hillstab_format, only: put_es
+   use hillstab_format, only: put_es, put_integer
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
@@ -165,7 +165,10 @@ contains
       call put_es(line, pos, result%max_abs_phi, 6)
       call blank()
       call put_es(line, pos, result%energy_drift, 3)
-      line(pos + 1:) = " "//integer_text(result%periods)//" "//achar(iachar("0") + status)
+      ! put_integer, not integer_text: this runs in the parallel loop (see put_integer)
+      call blank()
+      call put_integer(line, pos, result%periods)
+      line(pos + 1:) = " "//achar(iachar("0") + status)
    contains
       subroutine blank()
          line(pos + 1:pos + 1) = " "
@@ -178,13 +181,17 @@ contains
       real(wp), intent(in) :: alpha, beta
       integer, intent(in) :: periods  !! periods integrated before the failure
       character(len=lyapunov_line_length) :: line
+      character(len=*), parameter :: placeholders = " 0 -1 -1 -1 0 -1 -1 "
       integer :: pos
       pos = 0
       call put_es(line, pos, alpha, 16)
       line(pos + 1:pos + 1) = " "
       pos = pos + 1
       call put_es(line, pos, beta, 16)
-      line(pos + 1:) = " 0 -1 -1 -1 0 -1 -1 "//integer_text(periods)//" "//achar(iachar("0") + status_failed)
+      line(pos + 1:pos + len(placeholders)) = placeholders
+      pos = pos + len(placeholders)
+      call put_integer(line, pos, periods)  ! not integer_text: runs in the parallel loop
+      line(pos + 1:) = " "//achar(iachar("0") + status_failed)
    end function failed_line
 
    !> Lines and statuses of the points first … last (in parallel), and the text the file
