@@ -33,7 +33,7 @@ module hillstab_output
    public :: n_chart_columns, chart_column_names, chart_values, failed_chart_values, chart_text
    public :: chart_columns_text, default_chart_columns, find_chart_columns, write_records
    public :: chart_line_length, clamp_magnitude, log10_floor, real_columns, failed_log10_abs_s
-   public :: remove_file, is_directory
+   public :: remove_file, is_directory, joined_lines
 
    !> Magnitudes beyond this are written as ±clamp_magnitude with the overflow flag set.
    real(wp), parameter :: clamp_magnitude = 1.0e300_wp
@@ -250,7 +250,7 @@ contains
          do k = 1, len_trim(columns)
             if (columns(k:k) == " ") n_columns = n_columns + 1
          end do
-         layout = [character(len=400) :: &
+         layout = [character(len=400 + len(file%path)) :: &
             "format: binary: after the first "//mark//" bytes (this header) come "// &
             integer_text(records(1))//" x "//integer_text(records(2))//" records of "//integer_text(n_columns)// &
             " float64 (native byte order, little-endian on x86-64 and ARM), the columns below, point by point "// &
@@ -331,6 +331,35 @@ contains
       if (allocated(file%failure)) call set_error(error, err_io, "cannot write '"//file%path//"': "// &
          file%failure//" (the file is left as it was)")
    end subroutine write_text
+
+   !> `lines` (each trimmed) joined by new lines, after a leading new line if `separate`,
+   !> without a final one: a block of rows written by one `write_text` (one write per line
+   !> would cost more than a chart point of method auto).
+   pure function joined_lines(lines, separate) result(text)
+      character(len=*), intent(in) :: lines(:)  !! the rows
+      logical, intent(in) :: separate  !! start with a new line (a blank line before the block)
+      character(len=:), allocatable :: text
+      integer :: j, n, pos, total
+      total = merge(1, 0, separate) + max(size(lines) - 1, 0)
+      do j = 1, size(lines)
+         total = total + len_trim(lines(j))
+      end do
+      allocate (character(len=total) :: text)
+      pos = 0
+      if (separate) then
+         text(1:1) = new_line("a")
+         pos = 1
+      end if
+      do j = 1, size(lines)
+         if (j > 1) then
+            text(pos + 1:pos + 1) = new_line("a")
+            pos = pos + 1
+         end if
+         n = len_trim(lines(j))
+         text(pos + 1:pos + n) = lines(j)(1:n)
+         pos = pos + n
+      end do
+   end function joined_lines
 
    !> Write records of reals as raw float64 (binary files only), column-major: one
    !> record per column of `values`.

@@ -35,6 +35,7 @@ module hillstab_scene
    public :: task_chart, task_points, task_coefficient, task_boundaries, task_series, task_name
    public :: task_lyapunov, task_poincare, poincare_plan_t, max_poincare_orbits
    public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas, output_path, scene_columns
+   public :: scene_header
 
    integer, parameter :: task_chart = 1        !! stability chart over an (α, β) grid
    integer, parameter :: task_points = 2       !! the chart's columns at listed (α, β) points
@@ -62,6 +63,9 @@ module hillstab_scene
    real(wp), parameter, public :: max_integrated_magnitude = 1.0e8_wp
    !> Largest |α|, |β| of task boundaries.
    real(wp), parameter, public :: max_boundaries_magnitude = 1.0e6_wp
+   !> Smallest β of the tasks that simulate the pendulum (series, lyapunov, poincare):
+   !> below it ω = √(g π²/(ρ β)) and the time scales overflow.
+   real(wp), parameter, public :: min_pendulum_beta = 1.0e-8_wp
    !> Largest damping ε.
    real(wp), parameter, public :: max_epsilon = 100.0_wp
    !> Largest number of points in a points file.
@@ -268,7 +272,7 @@ contains
       character(len=*), intent(in) :: path       !! scene file
       type(scene_t), intent(out) :: scene        !! the validated scene
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable; unallocated on success
-      integer :: unit, ios
+      integer :: unit
       scene = default_scene(path)
       call open_scene_copy(path, unit, error)
       if (allocated(error)) return
@@ -858,7 +862,7 @@ contains
       else if (beta <= 0.0_wp .or. beta >= pi2) then
          call fail(error, scene%source, group, "beta", "must lie in (0, pi**2 = "//real_text(pi2)// &
             "), the physical domain (r0 > 0), got "//real_text(beta))
-      else if (beta < 1.0e-8_wp) then
+      else if (beta < min_pendulum_beta) then
          call fail(error, scene%source, group, "beta", "must be >= 1.0e-8 (smaller values make the "// &
             "pendulum's time scales overflow), got "//real_text(beta))
       else if (periods < 1) then
@@ -1776,6 +1780,24 @@ contains
       lines(2) = second
    end function scene_namelist
 
+   !> The lines an output file's header holds: `title`, the scene file, the effective scene
+   !> (`scene_namelist`: given back as a scene, the file repeats its run), then `extra`.
+   function scene_header(scene, title, extra) result(lines)
+      type(scene_t), intent(in) :: scene  !! the scene of the run
+      character(len=*), intent(in) :: title  !! the first line: the program, its version, what the file holds
+      character(len=*), intent(in) :: extra(:)  !! the lines after the namelist groups
+      character(len=:), allocatable :: lines(:)
+      character(len=:), allocatable :: groups(:), source_line
+      groups = scene_namelist(scene)
+      source_line = "scene file: "//scene%source//" (the namelist lines below repeat this run)"
+      allocate (character(len=max(len(title), len(source_line), len(groups), len(extra))) :: &
+         lines(2 + size(groups) + size(extra)))
+      lines(1) = title
+      lines(2) = source_line
+      lines(3:2 + size(groups)) = groups
+      lines(3 + size(groups):) = extra
+   end function scene_header
+
    !> The `&series` line of the effective scene.
    function series_text(plan) result(text)
       type(series_plan_t), intent(in) :: plan
@@ -1873,10 +1895,19 @@ contains
                   why//real_text(pi2)//")")
                return
             end if
+            if (scene%points(2, k) < min_pendulum_beta) then
+               call fail(error, scene%source, "points", "file", "point "//integer_text(k)//" of "// &
+                  scene%points_file//" has beta = "//real_text(scene%points(2, k))//", below "// &
+                  real_text(min_pendulum_beta)//" (smaller values make the pendulum's time scales overflow)")
+               return
+            end if
          end do
       else if (scene%chart%beta_min <= 0.0_wp) then
          call fail(error, scene%source, "chart", "beta_min", "must be > 0"//why//real_text(pi2)//"), got "// &
             real_text(scene%chart%beta_min))
+      else if (scene%chart%beta_min < min_pendulum_beta) then
+         call fail(error, scene%source, "chart", "beta_min", "must be >= "//real_text(min_pendulum_beta)// &
+            " (smaller values make the pendulum's time scales overflow), got "//real_text(scene%chart%beta_min))
       else if (scene%chart%beta_max >= pi2) then
          call fail(error, scene%source, "chart", "beta_max", "must be < pi**2"//why//real_text(pi2)//"), got "// &
             real_text(scene%chart%beta_max))

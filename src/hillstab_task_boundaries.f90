@@ -20,7 +20,7 @@ module hillstab_task_boundaries
    use hillstab_hill_method, only: hill_boundary_t, hill_boundaries, coexistence_threshold
    use hillstab_boundaries, only: boundary_check_t, verify_boundary, approximate_root_t, approximate_boundaries, &
       mathieu_witness, beta_accuracy_factor, gsl_witness_max_q
-   use hillstab_scene, only: scene_t, scene_namelist, grid_value, real_text, integer_text, output_path
+   use hillstab_scene, only: scene_t, scene_header, grid_value, real_text, integer_text, output_path
    use hillstab_output, only: output_file_t, open_output, finish_output, discard_output, write_header, write_text
    use hillstab_format, only: format_es
    implicit none
@@ -296,13 +296,9 @@ contains
       type(scene_t), intent(in) :: scene
       integer, intent(in) :: n_curves
       character(len=:), allocatable :: lines(:)
-      character(len=:), allocatable :: groups(:)
       character(len=240) :: text(16)
-      integer :: n, k, width
-      groups = scene_namelist(scene)
+      integer :: n
       n = 0
-      n = n + 1; text(n) = "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau; transition curves S = +-2"
-      n = n + 1; text(n) = "scene file: "//scene%source//" (the namelist lines below repeat this run)"
       if (scene%model == model_elastic) then
          n = n + 1; text(n) = "model: elastic, Q(tau) = (beta - alpha cos(pi tau))/(1 - (alpha/pi^2) cos(pi tau)), eq. (25)"
       else
@@ -340,15 +336,7 @@ contains
                  in_physical_domain(scene%chart%alpha_max, scene%chart%beta_max))) then
          n = n + 1; text(n) = "note: the window leaves the physical domain 0 <= alpha < pi^2, 0 < beta < pi^2"
       end if
-      width = max(len(groups), maxval(len_trim(text(:n))))
-      allocate (character(len=width) :: lines(n + size(groups)))
-      lines(1) = text(1)
-      lines(2) = text(2)
-      do k = 1, size(groups)
-         lines(2 + k) = groups(k)
-      end do
-      do k = 3, n
-         lines(size(groups) + k) = text(k)
-      end do
+      lines = scene_header(scene, "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau; transition "// &
+                           "curves S = +-2", text(:n))
    end function header
 end module hillstab_task_boundaries

@@ -13,7 +13,7 @@ module hillstab_task_poincare
    use hillstab_status, only: status_ok, status_failed
    use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_energy
    use hillstab_poincare, only: section_t, poincare_section, pendulum_state_at_energy
-   use hillstab_scene, only: scene_t, scene_namelist, real_text, integer_text, output_path
+   use hillstab_scene, only: scene_t, scene_header, real_text, integer_text, output_path
    use hillstab_output, only: output_file_t, open_output, finish_output, write_header, write_text
    use hillstab_format, only: put_es
    implicit none
@@ -116,10 +116,8 @@ contains
    contains
       function header() result(text)
          character(len=:), allocatable :: text(:)
-         character(len=:), allocatable :: groups(:)
          character(len=240) :: extra(5 + n)
          integer :: m, i
-         groups = scene_namelist(scene)
          m = 0
          m = m + 1; extra(m) = "Poincare section: crossings of phi = 0 with phi' > 0 (x = 0, x' > 0, z > 0), located "// &
             "on DOP853's dense output (Newton), tolerance "//real_text(scene%method%tolerance)
@@ -141,11 +139,8 @@ contains
                ", status ", integer_text(statuses(i))
             m = m + 1; extra(m) = summary
          end do
-         allocate (character(len=max(len(groups), 240)) :: text(2 + size(groups) + m))
-         text(1) = "hillstab "//version_string//": Poincare sections of the nonlinear elastic pendulum"
-         text(2) = "scene file: "//scene%source//" (the namelist lines below repeat this run)"
-         text(3:2 + size(groups)) = groups
-         text(3 + size(groups):) = extra(:m)
+         text = scene_header(scene, "hillstab "//version_string//": Poincare sections of the nonlinear elastic pendulum", &
+                             extra(:m))
       end function header
 
       function block_lines(k) result(text)

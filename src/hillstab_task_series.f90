@@ -29,7 +29,7 @@ module hillstab_task_series
    use hillstab_pendulum, only: pendulum_t, pendulum_system_t, pendulum_from_chart, pendulum_initial_state, &
       pendulum_angle, pendulum_energy, pendulum_radius, px, pz, pvx, pvz
    use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat
-   use hillstab_scene, only: scene_t, scene_namelist, output_path, real_text, integer_text
+   use hillstab_scene, only: scene_t, scene_header, output_path, real_text, integer_text
    use hillstab_format, only: put_es
    use hillstab_output, only: output_file_t, open_output, finish_output, discard_output, write_header, write_text
    implicit none
@@ -221,13 +221,9 @@ contains
       type(scene_t), intent(in) :: scene
       type(series_summary_t), intent(in) :: s
       character(len=:), allocatable :: lines(:)
-      character(len=:), allocatable :: groups(:)
       character(len=400) :: extra(24)
-      integer :: n, k
-      groups = scene_namelist(scene)
+      integer :: n
       n = 0
-      n = n + 1; extra(n) = "hillstab "//version_string//": the nonlinear elastic pendulum (task series)"
-      n = n + 1; extra(n) = "scene file: "//scene%source//" (the namelist lines below repeat this run)"
       associate (p => s%pendulum)
          n = n + 1; extra(n) = "model: x'' = -omega^2 (1 - r0/r) x - kappa x', z'' = -omega^2 (1 - r0/r) z + g - kappa z'"// &
             " (x horizontal, z downward from the pivot, r = sqrt(x^2 + z^2), phi = atan2(x, z))"
@@ -268,12 +264,7 @@ contains
          "ln(0.1/|phi0|)/ln(lambda_max) = "//periods_text(s%onset_predicted, "never (no growth or phi0 = 0)")// &
          ", observed "//periods_text(s%onset_observed, "not within the run")
       n = n + 1; extra(n) = "units: t [s], r [m], phi [rad], x, z [m], E [J/kg], vx, vz [m/s]"
-      allocate (character(len=max(len(groups), maxval(len_trim(extra(:n))))) :: lines(n + size(groups)))
-      lines(1:2) = extra(1:2)
-      lines(3:2 + size(groups)) = groups
-      do k = 3, n
-         lines(k + size(groups)) = extra(k)
-      end do
+      lines = scene_header(scene, "hillstab "//version_string//": the nonlinear elastic pendulum (task series)", extra(:n))
    contains
       function fmt(x) result(text)
          real(wp), intent(in) :: x

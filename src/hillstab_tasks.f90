@@ -31,14 +31,14 @@ module hillstab_tasks
    use hillstab_task_series, only: run_series
    use hillstab_task_lyapunov, only: run_lyapunov
    use hillstab_task_poincare, only: run_poincare
-   use hillstab_scene, only: scene_t, read_scene, scene_namelist, task_chart, task_points, task_coefficient, &
+   use hillstab_scene, only: scene_t, read_scene, scene_header, task_chart, task_points, task_coefficient, &
       task_series, task_name, grid_value, real_text, integer_text, task_boundaries, task_lyapunov, task_poincare, &
       output_path, scene_columns
    use hillstab_task_boundaries, only: run_boundaries
    use hillstab_format, only: format_es
    use hillstab_output, only: output_file_t, open_output, finish_output, discard_output, write_header, &
       write_text, write_records, chart_line_length, real_columns, n_chart_columns, chart_values, failed_chart_values, &
-      chart_text, chart_columns_text, default_chart_columns
+      chart_text, chart_columns_text, default_chart_columns, joined_lines
    use hillstab_limits, only: check_output_room
    use, intrinsic :: iso_fortran_env, only: error_unit
    use, intrinsic :: iso_c_binding, only: c_int
@@ -182,16 +182,13 @@ contains
    function common_header(scene) result(lines)
       type(scene_t), intent(in) :: scene
       character(len=:), allocatable :: lines(:)
-      character(len=:), allocatable :: groups(:), model_text, common(:)
-      groups = scene_namelist(scene)
+      character(len=:), allocatable :: model_text, common(:)
       if (scene%model == model_elastic) then
          model_text = "model: elastic, Q(tau) = (beta - alpha cos(pi tau))/(1 - (alpha/pi^2) cos(pi tau)), eq. (25)"
       else
          model_text = "model: mathieu, q(tau) = beta - alpha cos(pi tau), eq. (A1), alpha playing nu"
       end if
-      common = stacked(["hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau"], &
-                       stacked(["scene file: "//scene%source//" (the namelist lines below repeat this run)"], &
-                               stacked(groups, [model_text])))
+      common = scene_header(scene, "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau", [model_text])
       if (scene%physical) then
          lines = stacked(common, physical_header(scene))
       else
@@ -275,32 +272,6 @@ contains
       c(size(a) + 1:) = b
    end function stacked
 
-   !> Write `lines` (trimmed) as one block, preceded by a blank line if `separate`.
-   subroutine write_block(file, lines, separate, error)
-      type(output_file_t), intent(inout) :: file
-      character(len=*), intent(in) :: lines(:)
-      logical, intent(in) :: separate
-      type(error_t), allocatable, intent(out) :: error
-      character(len=:), allocatable :: block
-      integer :: j, pos, n
-      allocate (character(len=size(lines)*(len(lines) + 1) + 1) :: block)
-      pos = 0
-      if (separate) then
-         block(1:1) = new_line("a")
-         pos = 1
-      end if
-      do j = 1, size(lines)
-         n = len_trim(lines(j))
-         block(pos + 1:pos + n) = lines(j)(1:n)
-         pos = pos + n
-         if (j < size(lines)) then
-            block(pos + 1:pos + 1) = new_line("a")
-            pos = pos + 1
-         end if
-      end do
-      call write_text(file, block(1:pos), error)
-   end subroutine write_block
-
    !> The chart task.
    subroutine run_chart(scene, quiet, error)
       type(scene_t), intent(in) :: scene
@@ -309,7 +280,7 @@ contains
       type(output_file_t) :: file
       type(progress_t) :: progress
       character(len=chart_line_length), allocatable :: lines(:)
-      logical :: damped, outside
+      logical :: outside
       real(wp) :: alpha
       real(wp), allocatable :: all_betas(:)
       character(len=23), allocatable :: beta_texts(:)
@@ -324,7 +295,6 @@ contains
 
       n_alpha = scene%chart%n_alpha
       n_beta = scene%chart%n_beta
-      damped = scene%epsilon > 0.0_wp
       call scene_columns(scene, ids, error)
       if (allocated(error)) return
       ! an unwritable output path fails before any computing
@@ -420,10 +390,8 @@ contains
          if (scene%binary) then
             call write_records(file, values, error)
          else
-            ! blocks of constant alpha, separated by one blank line (gnuplot pm3d/image),
-            ! written as one record per block: one write statement per line costs more
-            ! than a point of method auto
-            call write_block(file, lines, i > 1, error)
+            ! blocks of constant alpha, separated by one blank line (gnuplot pm3d/image)
+            call write_text(file, joined_lines(lines, i > 1), error)
          end if
          if (allocated(error)) then
             stopped = .true.
@@ -614,13 +582,11 @@ contains
       type(progress_t) :: progress
       character(len=chart_line_length), allocatable :: lines(:)
       integer, allocatable :: statuses(:)
-      logical :: damped
       integer :: k, n
       integer, allocatable :: ids(:)
       real(wp), allocatable :: values(:, :)
 
       n = size(scene%points, 2)
-      damped = scene%epsilon > 0.0_wp
       call scene_columns(scene, ids, error)
       if (allocated(error)) return
       call open_scene_output(scene, file, error)

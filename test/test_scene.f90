@@ -386,7 +386,11 @@ contains
          bad_case_t(sp//"&points file='@DIR@_slash.dat' /", "points", "line 2: expected two numbers"), &
          bad_case_t(sp//"&points file='@DIR@_comma.dat' /", "points", "line 2: expected two numbers"), &
          bad_case_t(sp//"&points file='@DIR@_repeat.dat' /", "points", "line 3: expected two numbers"), &
-         bad_case_t(sp//"&points file='@DIR@_first.dat' /", "points", "line 1: expected two numbers")]
+         bad_case_t(sp//"&points file='@DIR@_first.dat' /", "points", "line 1: expected two numbers"), &
+         bad_case_t(s//"task='lyapunov' / &series periods=2 / &chart beta_min=1e-320 /", "chart", &
+                    "beta_min: must be >= 1.0e-8"), &
+         bad_case_t(s//"task='lyapunov' / &series periods=2 / &lyapunov over='points' / "// &
+                    "&points file='@DIR@_tinybeta.dat' /", "points", "beta = 1.0e-9, below 1.0e-8")]
    end function bad_cases
 
    !> Write the points files the bad cases refer to (`<dir>_badline.dat`, ...).
@@ -395,6 +399,7 @@ contains
       call write_file(dir//"_badline.dat", [character(len=20) :: "1.0 2.0", "3.0", "4.0 5.0"])
       call write_file(dir//"_nan.dat", [character(len=20) :: "1.0 nan"])
       call write_file(dir//"_domain.dat", [character(len=20) :: "1.0 2.0", "9.9 2.0"])
+      call write_file(dir//"_tinybeta.dat", [character(len=20) :: "1.0 2.0", "1.0 1e-9"])
       call write_file(dir//"_empty.dat", [character(len=20) :: "# nothing here", ""])
       ! list-directed shortcuts that are not two numbers
       call write_file(dir//"_slash.dat", [character(len=20) :: "1 2", "5 /"])
@@ -409,6 +414,7 @@ contains
       call delete_file(dir//"_badline.dat")
       call delete_file(dir//"_nan.dat")
       call delete_file(dir//"_domain.dat")
+      call delete_file(dir//"_tinybeta.dat")
       call delete_file(dir//"_empty.dat")
       call delete_file(dir//"_slash.dat")
       call delete_file(dir//"_comma.dat")
