@@ -454,9 +454,9 @@ contains
       else
          correction = (fine%value - coarse%value)/(ratio - 1.0_wp)
          value = fine%value + correction
-         relative = correction/fine%value
-         if (abs(relative) <= 1.0e-6_wp) then
+         if (abs(correction) <= 1.0e-6_wp*abs(fine%value) .and. fine%value /= 0.0_wp) then
             ! ln|S| moves by ln(1 + δ) = δ − δ²/2 + O(δ³): no logarithm per point
+            relative = correction/fine%value
             tr%value = value
             tr%log_abs = fine%log_abs + relative*(1.0_wp - 0.5_wp*relative)
          else
