@@ -39,7 +39,7 @@ module hillstab_batch
       lyapunov_point, lyapunov_failure_error
    use hillstab_coefficient, only: model_elastic
    use hillstab_output, only: output_file_t, write_header, write_text, commit_output, discard_output, &
-      chart_columns_text, chart_line_length
+      chart_columns_text, chart_line_length, joined_lines
    use hillstab_tasks, only: scene_columns, chart_row, compute_points, chart_header, open_scene_output, check_method_runs, &
       warn_inaccurate, failed_points_error, progress_t, progress_begin, progress_update, progress_end
    implicit none
@@ -156,41 +156,9 @@ contains
       case (task_points)
          call compute_points(batch%scene, int(first), int(last), lines, result%status)
       end select
-      result%unit = unit
       ! a chart's rows are blocks of constant α separated by one blank line
-      result%text = joined(lines, batch%scene%task == task_chart .and. unit > 1)
+      result%text = joined_lines(lines, batch%scene%task == task_chart .and. unit > 1)
    end subroutine batch_compute
-
-   !> Lines (trimmed) joined by new lines, with a leading new line if `separate`.
-   pure function joined(lines, separate) result(text)
-      character(len=*), intent(in) :: lines(:)
-      logical, intent(in) :: separate
-      character(len=:), allocatable :: text
-      integer :: j, n, pos, total
-      logical :: started
-      total = 1
-      do j = 1, size(lines)
-         total = total + len_trim(lines(j)) + 1
-      end do
-      allocate (character(len=total) :: text)
-      pos = 0
-      if (separate) then
-         text(1:1) = new_line("a")
-         pos = 1
-      end if
-      started = .false.
-      do j = 1, size(lines)
-         if (started) then
-            text(pos + 1:pos + 1) = new_line("a")
-            pos = pos + 1
-         end if
-         n = len_trim(lines(j))
-         text(pos + 1:pos + n) = lines(j)(1:n)
-         pos = pos + n
-         started = .true.
-      end do
-      text = text(1:pos)
-   end function joined
 
    !> Open the output file of the scene and write its header (an unwritable path fails
    !> here, before anything is computed).
@@ -198,11 +166,10 @@ contains
       type(batch_t), intent(inout) :: batch  !! the planned work; its output file is opened
       logical, intent(in) :: quiet  !! no progress on stderr
       type(error_t), allocatable, intent(out) :: error  !! failure description; unallocated on success
-      logical :: outside, damped
+      logical :: outside
       type(scene_t) :: s
       integer, allocatable :: ids(:)
       s = batch%scene
-      damped = s%epsilon > 0.0_wp
       if (s%binary) then
          call set_error(error, err_input, s%source//": &scene: format: 'binary' is written by the hillstab "// &
             "program, not by the unit-by-unit driver: use format = 'text'")

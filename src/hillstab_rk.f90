@@ -690,6 +690,12 @@ contains
             if ((step%t + 1.01_wp*h - t_end)*direction > 0.0_wp) then
                h = t_end - step%t
                last = .true.
+            else
+               ! make t + h exact, so that the solution is advanced by exactly the time that
+               ! t moves: otherwise each step's rounding of t is a jump of the coefficient
+               ! (a phase error √q·ulp(t) per step, a random walk of 1e-12 in S over the
+               ! ~1e4 steps of β = 1e5)
+               h = (step%t + h) - step%t
             end if
             attempts = attempts + 1
 

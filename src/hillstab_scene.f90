@@ -22,6 +22,7 @@ module hillstab_scene
    use hillstab_monodromy, only: method_t, method_auto, method_name, method_from_name, method_magnus4, &
       method_magnus6, method_rk, method_gsl
    use hillstab_output, only: default_chart_columns, find_chart_columns, chart_columns_text
+   use hillstab_format, only: integer_text, lower => lower_case
    use hillstab_units, only: physical_t, physical_alpha, physical_beta, physical_epsilon, physical_nu, &
       check_physical, equilibrium_length
    use, intrinsic :: iso_fortran_env, only: iostat_end
@@ -33,7 +34,8 @@ module hillstab_scene
       scene_namelist, default_scene
    public :: task_chart, task_points, task_coefficient, task_boundaries, task_series, task_name
    public :: task_lyapunov, task_poincare, poincare_plan_t, max_poincare_orbits
-   public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas
+   public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas, output_path, scene_columns
+   public :: scene_header
 
    integer, parameter :: task_chart = 1        !! stability chart over an (α, β) grid
    integer, parameter :: task_points = 2       !! the chart's columns at listed (α, β) points
@@ -61,6 +63,9 @@ module hillstab_scene
    real(wp), parameter, public :: max_integrated_magnitude = 1.0e8_wp
    !> Largest |α|, |β| of task boundaries.
    real(wp), parameter, public :: max_boundaries_magnitude = 1.0e6_wp
+   !> Smallest β of the tasks that simulate the pendulum (series, lyapunov, poincare):
+   !> below it ω = √(g π²/(ρ β)) and the time scales overflow.
+   real(wp), parameter, public :: min_pendulum_beta = 1.0e-8_wp
    !> Largest damping ε.
    real(wp), parameter, public :: max_epsilon = 100.0_wp
    !> Largest number of points in a points file.
@@ -209,6 +214,17 @@ contains
       end select
    end function task_name
 
+   !> The file a scene's task writes: `<output>_<task>.dat` (`.bin` for format = 'binary').
+   pure function output_path(scene) result(path)
+      type(scene_t), intent(in) :: scene  !! the scene
+      character(len=:), allocatable :: path
+      if (scene%binary) then
+         path = scene%output//"_"//task_name(scene%task)//".bin"
+      else
+         path = scene%output//"_"//task_name(scene%task)//".dat"
+      end if
+   end function output_path
+
    !> The i-th of n equally spaced values from lo to hi (n = 1: lo).
    pure real(wp) function grid_value(lo, hi, n, i)
       real(wp), intent(in) :: lo, hi  !! first and last value
@@ -256,7 +272,7 @@ contains
       character(len=*), intent(in) :: path       !! scene file
       type(scene_t), intent(out) :: scene        !! the validated scene
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable; unallocated on success
-      integer :: unit, ios
+      integer :: unit
       scene = default_scene(path)
       call open_scene_copy(path, unit, error)
       if (allocated(error)) return
@@ -358,10 +374,24 @@ contains
    subroutine check_columns(scene, error)
       type(scene_t), intent(in) :: scene
       type(error_t), allocatable, intent(out) :: error
-      integer, allocatable :: available(:), ids(:)
+      integer, allocatable :: ids(:)
+      if (scene%task /= task_chart .and. scene%task /= task_points) return
+      call scene_columns(scene, ids, error)
+   end subroutine check_columns
+
+   !> The columns a chart or points file of this scene holds: `&scene columns` when given,
+   !> else all the task offers (`default_chart_columns`).
+   subroutine scene_columns(scene, ids, error)
+      type(scene_t), intent(in) :: scene  !! a chart or points scene
+      integer, allocatable, intent(out) :: ids(:)  !! indices into hillstab_output's chart_column_names, in file order
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming &scene columns when a name is not offered
+      integer, allocatable :: available(:)
       character(len=:), allocatable :: bad
-      if (len_trim(scene%columns) == 0 .or. (scene%task /= task_chart .and. scene%task /= task_points)) return
       available = default_chart_columns(scene%epsilon > 0.0_wp, scene%model == model_elastic, scene%physical)
+      if (len_trim(scene%columns) == 0) then
+         ids = available
+         return
+      end if
       call find_chart_columns(scene%columns, available, ids, bad)
       if (len(bad) > 0) then
          call fail(error, scene%source, "scene", "columns", "'"//bad//"' is not a column of this file or is "// &
@@ -369,7 +399,7 @@ contains
       else if (size(ids) == 0) then
          call fail(error, scene%source, "scene", "columns", "no column named")
       end if
-   end subroutine check_columns
+   end subroutine scene_columns
 
    !> `&scene`: task, model, method and its settings, damping, output prefix.
    subroutine read_scene_group(unit, this, error)
@@ -778,10 +808,8 @@ contains
       subroutine require_finite_or_unset(k, error)
          integer, intent(in) :: k
          type(error_t), allocatable, intent(out) :: error
-         character(len=16) :: index_text
          if (.not. ieee_is_finite(alphas(k))) then
-            write (index_text, '(i0)') k
-            call fail(error, scene%source, group, "alphas", "value "//trim(index_text)//" is not a finite number")
+            call fail(error, scene%source, group, "alphas", "value "//integer_text(k)//" is not a finite number")
          end if
       end subroutine require_finite_or_unset
    end subroutine read_coefficient_group
@@ -834,7 +862,7 @@ contains
       else if (beta <= 0.0_wp .or. beta >= pi2) then
          call fail(error, scene%source, group, "beta", "must lie in (0, pi**2 = "//real_text(pi2)// &
             "), the physical domain (r0 > 0), got "//real_text(beta))
-      else if (beta < 1.0e-8_wp) then
+      else if (beta < min_pendulum_beta) then
          call fail(error, scene%source, group, "beta", "must be >= 1.0e-8 (smaller values make the "// &
             "pendulum's time scales overflow), got "//real_text(beta))
       else if (periods < 1) then
@@ -856,17 +884,11 @@ contains
          call fail(error, scene%source, group, merge("vx0", "vz0", abs(vx0) > 1.0e50_wp), "must lie in [-1e50, 1e50]")
       else if (int(periods, int64)*samples_per_period + 1 > max_series_lines) then
          call fail(error, scene%source, group, "periods", "periods * samples_per_period + 1 = "// &
-            trim(int64_text(int(periods, int64)*samples_per_period + 1))// &
+            integer_text(int(periods, int64)*samples_per_period + 1)// &
             " data lines exceed the limit of 1e8; lower periods or samples_per_period")
       end if
       if (allocated(error)) return
       scene%series = series_plan_t(alpha, beta, phi0, periods, samples_per_period, r0, g, vx0, vz0)
-   contains
-      function int64_text(n) result(text)
-         integer(int64), intent(in) :: n
-         character(len=24) :: text
-         write (text, '(i0)') n
-      end function int64_text
    end subroutine read_series_group
 
    !> Read the points file: one `alpha beta` pair per line, `#` starts a comment,
@@ -1471,17 +1493,6 @@ contains
       is_name_char = is_letter(c) .or. (c >= "0" .and. c <= "9") .or. c == "_"
    end function is_name_char
 
-   !> Lower-case copy of a string.
-   pure function lower(text) result(low)
-      character(len=*), intent(in) :: text
-      character(len=len(text)) :: low
-      integer :: i
-      low = text
-      do i = 1, len(text)
-         if (text(i:i) >= "A" .and. text(i:i) <= "Z") low(i:i) = achar(iachar(text(i:i)) + 32)
-      end do
-   end function lower
-
    !> The variable name of an item `name(sub) = value`, lower case.
    pure function item_name(item) result(name)
       character(len=*), intent(in) :: item
@@ -1631,15 +1642,6 @@ contains
       end if
    end subroutine check_alpha_domain
 
-   !> Decimal text of an integer.
-   pure function integer_text(n) result(text)
-      integer, intent(in) :: n  !! the integer
-      character(len=:), allocatable :: text
-      character(len=24) :: buffer
-      write (buffer, '(i0)') n
-      text = trim(buffer)
-   end function integer_text
-
    !> Shortest decimal text that reads back to exactly x (plain notation for
    !> 1e-4 <= |x| < 1e15, else mantissa and exponent), e.g. 9.8, 0.0, 1.0e-10.
    function real_text(x) result(text)
@@ -1778,6 +1780,24 @@ contains
       lines(2) = second
    end function scene_namelist
 
+   !> The lines an output file's header holds: `title`, the scene file, the effective scene
+   !> (`scene_namelist`: given back as a scene, the file repeats its run), then `extra`.
+   function scene_header(scene, title, extra) result(lines)
+      type(scene_t), intent(in) :: scene  !! the scene of the run
+      character(len=*), intent(in) :: title  !! the first line: the program, its version, what the file holds
+      character(len=*), intent(in) :: extra(:)  !! the lines after the namelist groups
+      character(len=:), allocatable :: lines(:)
+      character(len=:), allocatable :: groups(:), source_line
+      groups = scene_namelist(scene)
+      source_line = "scene file: "//scene%source//" (the namelist lines below repeat this run)"
+      allocate (character(len=max(len(title), len(source_line), len(groups), len(extra))) :: &
+         lines(2 + size(groups) + size(extra)))
+      lines(1) = title
+      lines(2) = source_line
+      lines(3:2 + size(groups)) = groups
+      lines(3 + size(groups):) = extra
+   end function scene_header
+
    !> The `&series` line of the effective scene.
    function series_text(plan) result(text)
       type(series_plan_t), intent(in) :: plan
@@ -1875,10 +1895,19 @@ contains
                   why//real_text(pi2)//")")
                return
             end if
+            if (scene%points(2, k) < min_pendulum_beta) then
+               call fail(error, scene%source, "points", "file", "point "//integer_text(k)//" of "// &
+                  scene%points_file//" has beta = "//real_text(scene%points(2, k))//", below "// &
+                  real_text(min_pendulum_beta)//" (smaller values make the pendulum's time scales overflow)")
+               return
+            end if
          end do
       else if (scene%chart%beta_min <= 0.0_wp) then
          call fail(error, scene%source, "chart", "beta_min", "must be > 0"//why//real_text(pi2)//"), got "// &
             real_text(scene%chart%beta_min))
+      else if (scene%chart%beta_min < min_pendulum_beta) then
+         call fail(error, scene%source, "chart", "beta_min", "must be >= "//real_text(min_pendulum_beta)// &
+            " (smaller values make the pendulum's time scales overflow), got "//real_text(scene%chart%beta_min))
       else if (scene%chart%beta_max >= pi2) then
          call fail(error, scene%source, "chart", "beta_max", "must be < pi**2"//why//real_text(pi2)//"), got "// &
             real_text(scene%chart%beta_max))

@@ -243,7 +243,7 @@ contains
       call hstrace(2, 0.0_wp, -1.0e6_wp, 0.0_wp, method_formula, 2, 1, 1.0e-10_wp, sl, info_trace)
       call hsfloq(2, 0.0_wp, -1.0e6_wp, 0.0_wp, method_formula, 2, 1, 1.0e-10_wp, sl, mu, istab, info)
       call check(ctx, info == info_trace, "HSFLOQ and HSTRACE agree on INFO")
-      call check(ctx, info_trace == 0 .or. info_trace == 2, "HSTRACE: success or overflow")
+      call check(ctx, info_trace == 2, "HSTRACE: overflow")
       status = hillstab_c_trace(2_c_int, 0.0_c_double, -1.0e6_c_double, 0.0_c_double, int(method_formula, c_int), &
          2_c_int, 1_c_int, 1.0e-10_c_double, s, log_abs, overflow)
       call check(ctx, status == 0, "C: a huge trace is no error")
