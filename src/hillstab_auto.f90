@@ -8,8 +8,10 @@
 !>   packs steps into the dip of Q at τ = 0 whose width shrinks like √(1 − α/π²).
 !>   The step count comes from a calibrated a-priori model; the error is then
 !>   measured, not assumed: the same mesh with steps merged in pairs gives the
-!>   Richardson estimate |S_N − S_{N/2}|/(2⁶ − 1), and the mesh is doubled until
-!>   that estimate (times a safety factor) meets the tolerance.
+!>   Richardson estimate |S_N − S_{N/2}|/(2⁶ − 1), and the mesh is refined until
+!>   that estimate (times a safety factor) meets the tolerance; the value returned is
+!>   then the extrapolated S_N + (S_N − S_{N/2})/(2⁶ − 1), whose error lies below the
+!>   estimate even where the error ratio falls somewhat short of 2⁶.
 !>
 !> Speed comes from the structure of Q: for fixed α, q(τ) = c₀ + c₁ w(τ) with w
 !> independent of β (elastic: w = 1/(1 − (α/π²) cos πτ), c₁ = β − π²,
@@ -30,7 +32,7 @@ module hillstab_auto
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_stats, only: work_stats_t
    use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, check_model, one_minus_alpha_over_pi2, &
-      shape_root_mean
+      shape_root_mean, coefficient_phase
    use hillstab_transfer, only: transfer_functions, trace_t, trace_from_scaled
    use hillstab_refine, only: roundoff_level
    implicit none
@@ -62,7 +64,6 @@ module hillstab_auto
    !> One mesh of the half period with the shape function w at its Gauss nodes.
    type :: mesh_t
       integer :: n_steps = 0
-      real(wp) :: shape_root = 1.0_wp    !! ∫₀¹ √|w| dτ (`shape_root_mean`), for the phase bound
       real(wp), allocatable :: h(:)      !! step lengths
       real(wp), allocatable :: w(:, :)   !! w at the three Gauss nodes of each step
    end type mesh_t
@@ -220,7 +221,7 @@ contains
       type(mesh_cache_t) :: cache
       type(error_t), allocatable :: point_error
       real(wp) :: base, estimate, q
-      real(wp), allocatable :: c0s(:), c1s(:)
+      real(wp), allocatable :: c0s(:), c1s(:), phases(:)
       integer, allocatable :: ns(:), n_coarse(:)
       logical, allocatable :: pending(:), converged(:)
       type(trace_t), allocatable :: fine(:), coarse(:)
@@ -279,6 +280,8 @@ contains
       do j = 1, m
          ns(j) = steps_for_point(base, kind, c0s(j), c1s(j))
       end do
+      ! the phase bound of each point, for its round-off level (hillstab_refine)
+      phases = coefficient_phase(c0s, c1s, shape_root_mean(kind, alpha))
       ! first pass: S_N and S_{N/2} of all points sharing N together, in lanes
       allocate (fine(m), coarse(m), n_coarse(m), pending(m), floors(m), coarse_floors(m), estimates(m), previous(m), &
                 converged(m))
@@ -367,7 +370,7 @@ contains
          logical, intent(in), optional :: selected(:)
          logical :: todo(size(n))
          integer :: order(size(n)), group_c(size(n))
-         real(wp) :: lane_c0(size(n)), lane_c1(size(n)), lane_floors(size(n))
+         real(wp) :: lane_c0(size(n)), lane_c1(size(n)), lane_floors(size(n)), lane_phases(size(n))
          type(trace_t) :: lane_results(size(n))
          integer :: i, k, index, m_group
          todo = .true.
@@ -387,9 +390,10 @@ contains
             group_c(1:m_group) = order(1:m_group)
             lane_c0(1:m_group) = c0s(group_c(1:m_group))
             lane_c1(1:m_group) = c1s(group_c(1:m_group))
+            lane_phases(1:m_group) = phases(group_c(1:m_group))
             call get_mesh(cache, kind, alpha, n(i), index)
-            call lane_traces(cache%meshes(index), lane_c0(1:m_group), lane_c1(1:m_group), lane_results(1:m_group), &
-               lane_floors(1:m_group))
+            call lane_traces(cache%meshes(index), lane_c0(1:m_group), lane_c1(1:m_group), lane_phases(1:m_group), &
+               lane_results(1:m_group), lane_floors(1:m_group))
             result(group_c(1:m_group)) = lane_results(1:m_group)
             floors(group_c(1:m_group)) = lane_floors(1:m_group)
             call count_steps(stats, m_group*n(i))
@@ -443,15 +447,23 @@ contains
       type(trace_t), intent(in) :: fine, coarse
       real(wp), intent(in) :: ratio
       type(trace_t) :: tr
-      real(wp) :: value, log_abs
+      real(wp) :: value, log_abs, correction, relative
       tr = fine
       if (fine%overflow .or. coarse%overflow .or. fine%log_abs > 300.0_wp) then
          if (sign(1.0_wp, fine%value) /= sign(1.0_wp, coarse%value)) return
          log_abs = fine%log_abs + (fine%log_abs - coarse%log_abs)/(ratio - 1.0_wp)
          tr = trace_from_scaled(sign(1.0_wp, fine%value), log_abs)
       else
-         value = fine%value + (fine%value - coarse%value)/(ratio - 1.0_wp)
-         tr = trace_from_scaled(value, 0.0_wp)
+         correction = (fine%value - coarse%value)/(ratio - 1.0_wp)
+         value = fine%value + correction
+         if (abs(correction) <= 1.0e-6_wp*abs(fine%value) .and. fine%value /= 0.0_wp) then
+            ! ln|S| moves by ln(1 + δ) = δ − δ²/2 + O(δ³): no logarithm per point
+            relative = correction/fine%value
+            tr%value = value
+            tr%log_abs = fine%log_abs + relative*(1.0_wp - 0.5_wp*relative)
+         else
+            tr = trace_from_scaled(value, 0.0_wp)
+         end if
       end if
    end function extrapolated
 
@@ -522,7 +534,6 @@ contains
       k = alpha/pi2
       one_minus_k = one_minus_alpha_over_pi2(alpha)
       mesh%n_steps = n
-      mesh%shape_root = shape_root_mean(kind, alpha)
       allocate (mesh%h(n), mesh%w(3, n))
       ! the map tan(πτ/2) = √((1 − κ)/(1 + κ)) tan(πψ/2) as a point (X, Y) = (√(1+κ) cos, √(1−κ) sin)(πψ/2)
       ! turning by π/(2n) per step (exact cos/sin every 32 steps against drift); then
@@ -609,9 +620,10 @@ contains
    !> lanes of structure-of-arrays loops that the compiler vectorises (same mesh, same
    !> control flow; a step where some lane leaves the polynomial range of the
    !> exponential is done lane by lane).
-   pure subroutine lane_traces(mesh, c0, c1, traces, floors)
+   pure subroutine lane_traces(mesh, c0, c1, phases, traces, floors)
       type(mesh_t), intent(in) :: mesh
       real(wp), intent(in) :: c0(:), c1(:)
+      real(wp), intent(in) :: phases(:)  !! phase bound of each lane (`coefficient_phase`)
       type(trace_t), intent(out) :: traces(size(c0))
       real(wp), intent(out) :: floors(size(c0))  !! round-off level of each S, relative to max(1, |S|)
       real(wp), parameter :: c_d2 = -sqrt15/3.0_wp, c_d3 = -10.0_wp/3.0_wp, c_60 = 1.0_wp/30.0_wp
@@ -698,9 +710,7 @@ contains
          ! S = 2(u v' + u' v) from Φ(1) = [[u, v], [u', v']] (BRIEF §4)
          traces(l) = trace_from_scaled(2.0_wp*(p11(l)*p22(l) + p21(l)*p12(l)), 2.0_wp*log_scale(l))
          if (peak(l) > 0.0_wp) log_peak(l) = max(log_peak(l), log(peak(l)) + 2.0_wp*log_scale(l))
-         ! (the phase bound of `phase_bound`, from this lane's c0 and c1)
-         floors(l) = roundoff_level(log_peak(l), traces(l)%log_abs, mesh%n_steps, &
-                                    2.0_wp*(sqrt(abs(c0(l))) + sqrt(abs(c1(l)))*mesh%shape_root))
+         floors(l) = roundoff_level(log_peak(l), traces(l)%log_abs, mesh%n_steps, phases(l))
       end do
    end subroutine lane_traces
 
@@ -736,7 +746,7 @@ contains
       real(wp) :: c0, c1, floor(1)
       call coefficients(kind, alpha, beta, 0.0_wp, c0, c1)
       call build_mesh(kind, alpha, n, mesh)
-      call lane_traces(mesh, [c0], [c1], tr, floor)
+      call lane_traces(mesh, [c0], [c1], [coefficient_phase(c0, c1, shape_root_mean(kind, alpha))], tr, floor)
       s = tr(1)%value
    end function fixed_n_trace
 end module hillstab_auto

@@ -20,7 +20,7 @@ module hillstab_coefficient
    public :: hill_coefficient, check_model, segment_average, segment_coefficients
    public :: sampling_endpoint, sampling_midpoint, sampling_average, sampling_name
    public :: damping_shift, hill_period, in_physical_domain, one_minus_alpha_over_pi2
-   public :: phase_bound, shape_root_mean
+   public :: phase_bound, shape_root_mean, coefficient_phase
 
    !> Q(τ) of eq. (25), the exact linearisation about the vertical bounce.
    integer, parameter :: model_elastic = 1
@@ -151,8 +151,16 @@ contains
          c0 = pi2 + damping_shift(model%epsilon)
          c1 = model%beta - pi2
       end if
-      phase = 2.0_wp*(sqrt(abs(c0)) + sqrt(abs(c1))*shape_root_mean(model%kind, model%alpha))
+      phase = coefficient_phase(c0, c1, shape_root_mean(model%kind, model%alpha))
    end function phase_bound
+
+   !> `phase_bound` from q = c₀ + c₁ w and ∫₀¹ √|w| dτ: 2 (√|c₀| + √|c₁| shape_root).
+   elemental real(wp) function coefficient_phase(c0, c1, shape_root) result(phase)
+      real(wp), intent(in) :: c0          !! constant part of q
+      real(wp), intent(in) :: c1          !! factor of the shape function w
+      real(wp), intent(in) :: shape_root  !! ∫₀¹ √|w| dτ (`shape_root_mean`)
+      phase = 2.0_wp*(sqrt(abs(c0)) + sqrt(abs(c1))*shape_root)
+   end function coefficient_phase
 
    !> ∫₀¹ √|w(τ)| dτ of the shape function of q = c₀ + c₁ w: elastic w = 1/(1 − k cos πτ),
    !> k = α/π², whose integral is the complete elliptic integral

@@ -24,8 +24,11 @@
 !> S: `monodromy_gsl` integrates with eps = tolerance·gsl_tolerance_factor, then eps
 !> divided by max(10, κ/2), then by 10, until two successive traces agree to the
 !> tolerance (hillstab_refine), and reports round-off limited (err_accuracy) where eps
-!> reaches its floor 1e-15 or GSL's control cannot meet it (GSL_FAILURE). Measured
-!> against the 50-digit reference of data/reference/ (README, *Accuracy*).
+!> reaches its floor 1e-15 or GSL's control cannot meet it (GSL_FAILURE). The driver's
+!> loop is run here (`integrate_pair`) so that every step is exact in time (GSL advances
+!> t by a rounded t + h; over the 1e4 steps at |β| ~ 1e5 that cost up to 3e-12 in S),
+!> and the solutions are rescaled by powers of two. Measured against the 50-digit
+!> references of data/reference/ (README, *Accuracy*).
 !>
 !>```fortran
 !> type(trace_t) :: tr

@@ -134,10 +134,8 @@ contains
       real(wp), intent(in) :: log_abs_s  !! ln|S|
       integer, intent(in) :: n_steps     !! steps of the propagation
       real(wp), intent(in) :: phase      !! bound of the phase or growth over the period (`phase_bound`)
-      real(wp) :: log_level
-      log_level = log(roundoff_safety*epsilon(1.0_wp)*sqrt(real(max(n_steps, 1), wp))) + log_peak &
-                  - max(0.0_wp, log_abs_s)
-      level = exp(min(log_level, log_huge)) + 2.0_wp*epsilon(1.0_wp)*phase
+      level = roundoff_safety*epsilon(1.0_wp)*sqrt(real(max(n_steps, 1), wp)) &
+              *exp(min(log_peak - max(0.0_wp, log_abs_s), log_huge)) + 2.0_wp*epsilon(1.0_wp)*phase
    end function roundoff_level
 
    !> |S_a − S_b|/max(1, |S_a|), through ln|S| when S is large or overflows; huge when the

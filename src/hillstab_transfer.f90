@@ -171,16 +171,33 @@ contains
    end subroutine normalize_scaled
 
    !> a ← T(q, h) · a: advance by one constant piece.
-   pure subroutine multiply_transfer(a, q, h)
+   !>
+   !> With `compensation`, the piece's increment of a%log_scale (its own scale and the
+   !> power of two of the normalization) is added by compensated (Kahan) summation, the
+   !> running rounding error kept in `compensation` (subtract it from a%log_scale at the
+   !> end): plain summation of the ~ln|S|/ln 2 increments of ln 2 errs systematically,
+   !> by 5e-10 in ln|S| at β = −1e6, α = 9.86 and 9e-12 at α = 0, β = −1e5.
+   pure subroutine multiply_transfer(a, q, h, compensation)
       type(scaled_matrix_t), intent(inout) :: a  !! the product so far, advanced
       real(wp), intent(in) :: q, h  !! constant coefficient of the piece; its length in tau
-      real(wp) :: c, s, log_scale, t(2, 2)
+      real(wp), intent(inout), optional :: compensation  !! Kahan carry of a%log_scale
+      real(wp) :: c, s, log_scale, t(2, 2), before, increment, total
       call transfer_functions(q*h*h, c, s, log_scale)
       t(1, 1) = c; t(1, 2) = h*s
       t(2, 1) = -q*h*s; t(2, 2) = c
       a%m = matmul(t, a%m)
-      a%log_scale = a%log_scale + log_scale
-      call normalize_scaled(a)
+      if (present(compensation)) then
+         before = a%log_scale
+         a%log_scale = log_scale
+         call normalize_scaled(a)
+         increment = a%log_scale - compensation
+         total = before + increment
+         compensation = (total - before) - increment
+         a%log_scale = total
+      else
+         a%log_scale = a%log_scale + log_scale
+         call normalize_scaled(a)
+      end if
    end subroutine multiply_transfer
 
    !> a ← m · a for a plain matrix m.
