@@ -15,7 +15,7 @@
 !> ignored, so one file may hold several. Reading tolerates `#` lines before a group,
 !> which lets a run be repeated from the header of its own output file.
 module hillstab_scene
-   use hillstab_kinds, only: wp, int64, pi2
+   use hillstab_kinds, only: wp, int64, pi, pi2
    use hillstab_error, only: error_t, set_error, err_input
    use hillstab_coefficient, only: model_elastic, model_mathieu, model_name, sampling_endpoint, &
       sampling_average, sampling_name
@@ -1717,10 +1717,7 @@ contains
       first = first//" /"
       select case (scene%task)
       case (task_chart, task_boundaries)
-         second = "&chart alpha_min = "//real_text(scene%chart%alpha_min)// &
-            ", alpha_max = "//real_text(scene%chart%alpha_max)//", n_alpha = "//integer_text(scene%chart%n_alpha)// &
-            ", beta_min = "//real_text(scene%chart%beta_min)//", beta_max = "//real_text(scene%chart%beta_max)// &
-            ", n_beta = "//integer_text(scene%chart%n_beta)//" /"
+         second = chart_text(scene%chart)
       case (task_points)
          if (size(scene%amplitudes) > 0) then
             second = "&points /"
@@ -1784,6 +1781,15 @@ contains
       lines(3 + size(groups):) = extra
    end function scene_header
 
+   !> The `&chart` line of the effective scene.
+   function chart_text(grid) result(text)
+      type(chart_grid_t), intent(in) :: grid
+      character(len=:), allocatable :: text
+      text = "&chart alpha_min = "//real_text(grid%alpha_min)//", alpha_max = "//real_text(grid%alpha_max)// &
+         ", n_alpha = "//integer_text(grid%n_alpha)//", beta_min = "//real_text(grid%beta_min)// &
+         ", beta_max = "//real_text(grid%beta_max)//", n_beta = "//integer_text(grid%n_beta)//" /"
+   end function chart_text
+
    !> The `&series` line of the effective scene.
    function series_text(plan) result(text)
       type(series_plan_t), intent(in) :: plan
@@ -1809,10 +1815,7 @@ contains
             fourth = "&points file = "//quoted(scene%points_file)//" /"
          else
             third = "&lyapunov over = 'chart' /"
-            fourth = "&chart alpha_min = "//real_text(scene%chart%alpha_min)// &
-               ", alpha_max = "//real_text(scene%chart%alpha_max)//", n_alpha = "//integer_text(scene%chart%n_alpha)// &
-               ", beta_min = "//real_text(scene%chart%beta_min)//", beta_max = "//real_text(scene%chart%beta_max)// &
-               ", n_beta = "//integer_text(scene%chart%n_beta)//" /"
+            fourth = chart_text(scene%chart)
          end if
       else
          third = "&poincare phi0s = "//real_text(scene%poincare%phi0s(1))
@@ -1935,7 +1938,7 @@ contains
       do k = 1, n
          call require_finite(scene%source, group, "phi0s", phi0s(k), error)
          if (allocated(error)) return
-         if (abs(phi0s(k)) >= 3.141592653589793_wp) then
+         if (abs(phi0s(k)) >= pi) then
             call fail(error, scene%source, group, "phi0s", "each angle must lie in (-pi, pi), got "// &
                real_text(phi0s(k)))
             return
