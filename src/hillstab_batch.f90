@@ -40,7 +40,8 @@ module hillstab_batch
    use hillstab_coefficient, only: model_elastic
    use hillstab_output, only: output_file_t, write_header, write_text, commit_output, discard_output, &
       chart_columns_text, chart_line_length, joined_lines
-   use hillstab_tasks, only: scene_columns, chart_row, compute_points, chart_header, open_scene_output, check_method_runs, &
+   use hillstab_tasks, only: scene_columns, chart_betas, chart_row, compute_points, chart_header, open_scene_output, &
+      check_method_runs, &
       warn_inaccurate, failed_points_error, progress_t, progress_begin, progress_update, progress_end
    implicit none
    private
@@ -60,6 +61,10 @@ module hillstab_batch
       real(wp) :: first_inaccurate(2) = 0.0_wp  !! (α, β) of the first of them
       integer(int64) :: n_failed = 0         !! failed points written so far
       real(wp) :: first_failed(2) = 0.0_wp   !! (α, β) of the first of them
+      !> a chart: what every row shares, made once by `batch_plan` (`chart_betas`, `scene_columns`)
+      real(wp), allocatable :: betas(:)
+      character(len=23), allocatable :: beta_texts(:)  !! a chart: format_es(betas, 16)
+      integer, allocatable :: ids(:)         !! a chart: the columns written
    end type batch_t
 
    !> The computed text of one unit.
@@ -86,12 +91,17 @@ contains
       integer, intent(in) :: n_workers    !! processes that will compute units (≥ 1)
       type(batch_t), intent(out) :: batch  !! the units and the output file state
       integer :: n
+      type(error_t), allocatable :: error
       batch%scene = scene
       select case (scene%task)
       case (task_chart)
          batch%unit_size = scene%chart%n_beta
          batch%n_units = scene%chart%n_alpha
          batch%n_points = int(scene%chart%n_alpha, int64)*scene%chart%n_beta
+         call chart_betas(scene, batch%betas, batch%beta_texts)
+         call scene_columns(scene, batch%ids, error)
+         ! a bad &scene columns is reported by batch_open; chart_row then falls back on its own
+         if (allocated(error) .and. allocated(batch%ids)) deallocate (batch%ids)
       case (task_points)
          n = size(scene%points, 2)
          batch%n_points = n
@@ -152,7 +162,11 @@ contains
       allocate (lines(first:last))
       select case (batch%scene%task)
       case (task_chart)
-         call chart_row(batch%scene, unit, lines, result%status)
+         if (allocated(batch%ids)) then
+            call chart_row(batch%scene, unit, lines, result%status, batch%betas, batch%beta_texts, batch%ids)
+         else
+            call chart_row(batch%scene, unit, lines, result%status, batch%betas, batch%beta_texts)
+         end if
       case (task_points)
          call compute_points(batch%scene, int(first), int(last), lines, result%status)
       end select

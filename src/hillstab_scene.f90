@@ -15,7 +15,7 @@
 !> ignored, so one file may hold several. Reading tolerates `#` lines before a group,
 !> which lets a run be repeated from the header of its own output file.
 module hillstab_scene
-   use hillstab_kinds, only: wp, int64, pi2
+   use hillstab_kinds, only: wp, int64, pi, pi2
    use hillstab_error, only: error_t, set_error, err_input
    use hillstab_coefficient, only: model_elastic, model_mathieu, model_name, sampling_endpoint, &
       sampling_average, sampling_name
@@ -178,16 +178,18 @@ module hillstab_scene
    !>
    !>```fortran
    !> call begin_group_read(unit, reader)
-   !> read (unit, nml=chart, iostat=ios, iomsg=msg)
-   !> do while (next_item(reader, unit, group, ios))
+   !> read (unit, nml=chart, iostat=reader%ios, iomsg=reader%msg)
+   !> do while (next_item(reader, unit, group))
    !>    read (reader%record, nml=chart, iostat=reader%stat, iomsg=reader%message)
    !> end do
-   !> call end_group_read(reader, bad)
+   !> call end_group_read(reader, unit, scene%source, group, names, kinds, error)
    !>```
    !>
    !> When the group read fails, each item is tried alone to find the first bad one.
    type :: group_read_t
       type(fpe_state_t) :: fpe                     !! halting modes to restore
+      integer :: ios = 0                           !! iostat of the group read
+      character(len=512) :: msg = ""               !! iomsg of the group read
       type(item_t), allocatable :: items(:)        !! the items of the group (after a failed read)
       integer :: k = 0                             !! the item being tried
       integer :: stat = 0                          !! iostat of the item read
@@ -418,9 +420,7 @@ contains
       character(len=*), parameter :: kinds(11) = [character(len=17) :: "a quoted name", "a quoted name", &
          "a quoted name", "an integer", "a quoted name", "a real number", "a real number", "a quoted path", &
          "quoted names", "a quoted name", ".true. or .false."]
-      integer :: ios, k
-      character(len=512) :: msg
-      character(len=:), allocatable :: bad
+      integer :: k
       type(group_read_t) :: reader
 
       task = task_name(this%task); model = model_name(this%model); method = method_name(this%method%kind)
@@ -428,12 +428,11 @@ contains
       tolerance = this%method%tolerance; epsilon = this%epsilon; output = this%output
       columns = this%columns; format = merge("binary", "text  ", this%binary); names_line = this%names_line
       call begin_group_read(unit, reader)
-      read (unit, nml=scene, iostat=ios, iomsg=msg)
-      do while (next_item(reader, unit, group, ios))
+      read (unit, nml=scene, iostat=reader%ios, iomsg=reader%msg)
+      do while (next_item(reader, unit, group))
          read (reader%record, nml=scene, iostat=reader%stat, iomsg=reader%message)
       end do
-      call end_group_read(reader, bad)
-      call check_read(unit, this%source, group, names, kinds, ios, msg, bad, error)
+      call end_group_read(reader, unit, this%source, group, names, kinds, error)
       if (allocated(error)) return
 
       this%task = -1
@@ -541,9 +540,8 @@ contains
       character(len=*), parameter :: names(5) = [character(len=5) :: "r0", "g", "omega", "a", "kappa"]
       character(len=*), parameter :: kinds(5) = [character(len=33) :: "a real number", "a real number", &
          "a real number", "a list of at most 64 real numbers", "a real number"]
-      integer :: ios, n, k
-      character(len=512) :: msg
-      character(len=:), allocatable :: bad, variable
+      integer :: n, k
+      character(len=:), allocatable :: variable
       type(group_read_t) :: reader
       logical :: given_a, given_r0
       type(physical_t) :: p
@@ -552,12 +550,11 @@ contains
       r0 = scene%pendulum%r0; g = scene%pendulum%g; omega = scene%pendulum%omega; kappa = scene%pendulum%kappa
       a = unset_alpha
       call begin_group_read(unit, reader)
-      read (unit, nml=physical, iostat=ios, iomsg=msg)
-      do while (next_item(reader, unit, group, ios))
+      read (unit, nml=physical, iostat=reader%ios, iomsg=reader%msg)
+      do while (next_item(reader, unit, group))
          read (reader%record, nml=physical, iostat=reader%stat, iomsg=reader%message)
       end do
-      call end_group_read(reader, bad)
-      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
+      call end_group_read(reader, unit, scene%source, group, names, kinds, error)
       if (allocated(error)) return
 
       if (.not. group_sets(unit, group, "omega")) then
@@ -641,20 +638,16 @@ contains
          "beta_min", "beta_max", "n_beta"]
       character(len=*), parameter :: kinds(6) = [character(len=13) :: "a real number", "a real number", &
          "an integer", "a real number", "a real number", "an integer"]
-      integer :: ios
-      character(len=512) :: msg
-      character(len=:), allocatable :: bad
       type(group_read_t) :: reader
 
       alpha_min = scene%chart%alpha_min; alpha_max = scene%chart%alpha_max; n_alpha = scene%chart%n_alpha
       beta_min = scene%chart%beta_min; beta_max = scene%chart%beta_max; n_beta = scene%chart%n_beta
       call begin_group_read(unit, reader)
-      read (unit, nml=chart, iostat=ios, iomsg=msg)
-      do while (next_item(reader, unit, group, ios))
+      read (unit, nml=chart, iostat=reader%ios, iomsg=reader%msg)
+      do while (next_item(reader, unit, group))
          read (reader%record, nml=chart, iostat=reader%stat, iomsg=reader%message)
       end do
-      call end_group_read(reader, bad)
-      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
+      call end_group_read(reader, unit, scene%source, group, names, kinds, error)
       if (allocated(error)) return
 
       call check_range(scene%source, group, "alpha", alpha_min, alpha_max, n_alpha, error)
@@ -678,9 +671,6 @@ contains
       character(len=*), parameter :: group = "points"
       character(len=*), parameter :: names(1) = [character(len=4) :: "file"]
       character(len=*), parameter :: kinds(1) = [character(len=13) :: "a quoted path"]
-      integer :: ios
-      character(len=512) :: msg
-      character(len=:), allocatable :: bad
       type(group_read_t) :: reader
 
       if (size(scene%amplitudes) > 0) then
@@ -695,12 +685,11 @@ contains
       end if
       file = scene%points_file
       call begin_group_read(unit, reader)
-      read (unit, nml=points, iostat=ios, iomsg=msg)
-      do while (next_item(reader, unit, group, ios))
+      read (unit, nml=points, iostat=reader%ios, iomsg=reader%msg)
+      do while (next_item(reader, unit, group))
          read (reader%record, nml=points, iostat=reader%stat, iomsg=reader%message)
       end do
-      call end_group_read(reader, bad)
-      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
+      call end_group_read(reader, unit, scene%source, group, names, kinds, error)
       if (allocated(error)) return
       if (len_trim(file) == 0) then
          call fail(error, scene%source, group, "file", "no points file given")
@@ -722,9 +711,7 @@ contains
       character(len=*), parameter :: names(5) = [character(len=7) :: "alphas", "beta", "n_tau", "tau_min", "tau_max"]
       character(len=*), parameter :: kinds(5) = [character(len=33) :: "a list of at most 64 real numbers", "a real number", &
          "an integer", "a real number", "a real number"]
-      integer :: ios, n, k
-      character(len=512) :: msg
-      character(len=:), allocatable :: bad
+      integer :: n, k
       type(group_read_t) :: reader
 
       ! a namelist read overwrites only the elements given: start from an empty list
@@ -747,12 +734,11 @@ contains
          end if
       end if
       call begin_group_read(unit, reader)
-      read (unit, nml=coefficient, iostat=ios, iomsg=msg)
-      do while (next_item(reader, unit, group, ios))
+      read (unit, nml=coefficient, iostat=reader%ios, iomsg=reader%msg)
+      do while (next_item(reader, unit, group))
          read (reader%record, nml=coefficient, iostat=reader%stat, iomsg=reader%message)
       end do
-      call end_group_read(reader, bad)
-      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
+      call end_group_read(reader, unit, scene%source, group, names, kinds, error)
       if (allocated(error)) return
       if (size(scene%amplitudes) > 0) then
          n = size(scene%amplitudes)
@@ -829,21 +815,18 @@ contains
          "a real number", "an integer", "an integer", "a real number", "a real number", "a real number", &
          "a real number"]
       real(wp) :: values(7)
-      integer :: ios, k
-      character(len=512) :: msg
-      character(len=:), allocatable :: bad
+      integer :: k
       type(group_read_t) :: reader
       associate (plan => scene%series)
          alpha = plan%alpha; beta = plan%beta; phi0 = plan%phi0; periods = plan%periods
          samples_per_period = plan%samples_per_period; r0 = plan%r0; g = plan%g; vx0 = plan%vx0; vz0 = plan%vz0
       end associate
       call begin_group_read(unit, reader)
-      read (unit, nml=series, iostat=ios, iomsg=msg)
-      do while (next_item(reader, unit, group, ios))
+      read (unit, nml=series, iostat=reader%ios, iomsg=reader%msg)
+      do while (next_item(reader, unit, group))
          read (reader%record, nml=series, iostat=reader%stat, iomsg=reader%message)
       end do
-      call end_group_read(reader, bad)
-      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
+      call end_group_read(reader, unit, scene%source, group, names, kinds, error)
       if (allocated(error)) return
       values = [alpha, beta, phi0, r0, g, vx0, vz0]
       do k = 1, 7
@@ -1109,15 +1092,14 @@ contains
       rewind (unit)
    end subroutine begin_group_read
 
-   !> After a failed group read (`ios` > 0): set `reader%record` to the next item alone
-   !> and return true, until an item fails alone (`reader%stat` /= 0) or none is left.
-   logical function next_item(reader, unit, group, ios)
+   !> After a failed group read (`reader%ios` > 0): set `reader%record` to the next item
+   !> alone and return true, until an item fails alone (`reader%stat` /= 0) or none is left.
+   logical function next_item(reader, unit, group)
       type(group_read_t), intent(inout) :: reader
       integer, intent(in) :: unit                  !! the scene file
       character(len=*), intent(in) :: group        !! group name
-      integer, intent(in) :: ios                   !! iostat of the group read
       next_item = .false.
-      if (ios <= 0) return
+      if (reader%ios <= 0) return
       if (.not. allocated(reader%items)) then
          call group_items(unit, group, reader%items)
          reader%bad = ""
@@ -1132,13 +1114,17 @@ contains
       next_item = .true.
    end function next_item
 
-   !> End a group read: halting restored; `bad` is the first item that fails alone
-   !> ("" when none does, unallocated when the group read succeeded).
-   subroutine end_group_read(reader, bad)
+   !> End a group read: halting restored, then its outcome checked (`check_read`, with the
+   !> first item that fails alone: "" when none does, none when the group read succeeded).
+   subroutine end_group_read(reader, unit, path, group, names, kinds, error)
       type(group_read_t), intent(inout) :: reader
-      character(len=:), allocatable, intent(out) :: bad
+      integer, intent(in) :: unit               !! the scene file
+      character(len=*), intent(in) :: path, group
+      character(len=*), intent(in) :: names(:)  !! variables of the group
+      character(len=*), intent(in) :: kinds(:)  !! what each variable holds, for the message
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
       call halting_restore(reader%fpe)
-      if (allocated(reader%bad)) bad = reader%bad
+      call check_read(unit, path, group, names, kinds, reader%ios, reader%msg, reader%bad, error)
    end subroutine end_group_read
 
    !> Turn the status of a namelist read into an error naming file, group and variable.
@@ -1731,10 +1717,7 @@ contains
       first = first//" /"
       select case (scene%task)
       case (task_chart, task_boundaries)
-         second = "&chart alpha_min = "//real_text(scene%chart%alpha_min)// &
-            ", alpha_max = "//real_text(scene%chart%alpha_max)//", n_alpha = "//integer_text(scene%chart%n_alpha)// &
-            ", beta_min = "//real_text(scene%chart%beta_min)//", beta_max = "//real_text(scene%chart%beta_max)// &
-            ", n_beta = "//integer_text(scene%chart%n_beta)//" /"
+         second = chart_text(scene%chart)
       case (task_points)
          if (size(scene%amplitudes) > 0) then
             second = "&points /"
@@ -1798,6 +1781,15 @@ contains
       lines(3 + size(groups):) = extra
    end function scene_header
 
+   !> The `&chart` line of the effective scene.
+   function chart_text(grid) result(text)
+      type(chart_grid_t), intent(in) :: grid
+      character(len=:), allocatable :: text
+      text = "&chart alpha_min = "//real_text(grid%alpha_min)//", alpha_max = "//real_text(grid%alpha_max)// &
+         ", n_alpha = "//integer_text(grid%n_alpha)//", beta_min = "//real_text(grid%beta_min)// &
+         ", beta_max = "//real_text(grid%beta_max)//", n_beta = "//integer_text(grid%n_beta)//" /"
+   end function chart_text
+
    !> The `&series` line of the effective scene.
    function series_text(plan) result(text)
       type(series_plan_t), intent(in) :: plan
@@ -1823,10 +1815,7 @@ contains
             fourth = "&points file = "//quoted(scene%points_file)//" /"
          else
             third = "&lyapunov over = 'chart' /"
-            fourth = "&chart alpha_min = "//real_text(scene%chart%alpha_min)// &
-               ", alpha_max = "//real_text(scene%chart%alpha_max)//", n_alpha = "//integer_text(scene%chart%n_alpha)// &
-               ", beta_min = "//real_text(scene%chart%beta_min)//", beta_max = "//real_text(scene%chart%beta_max)// &
-               ", n_beta = "//integer_text(scene%chart%n_beta)//" /"
+            fourth = chart_text(scene%chart)
          end if
       else
          third = "&poincare phi0s = "//real_text(scene%poincare%phi0s(1))
@@ -1858,19 +1847,15 @@ contains
       character(len=*), parameter :: group = "lyapunov"
       character(len=*), parameter :: names(1) = [character(len=4) :: "over"]
       character(len=*), parameter :: kinds(1) = [character(len=13) :: "a quoted name"]
-      integer :: ios
-      character(len=512) :: msg
-      character(len=:), allocatable :: bad
       type(group_read_t) :: reader
       over = merge("points", "chart ", scene%lyapunov_points)
       if (.not. group_present(unit, group)) return
       call begin_group_read(unit, reader)
-      read (unit, nml=lyapunov, iostat=ios, iomsg=msg)
-      do while (next_item(reader, unit, group, ios))
+      read (unit, nml=lyapunov, iostat=reader%ios, iomsg=reader%msg)
+      do while (next_item(reader, unit, group))
          read (reader%record, nml=lyapunov, iostat=reader%stat, iomsg=reader%message)
       end do
-      call end_group_read(reader, bad)
-      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
+      call end_group_read(reader, unit, scene%source, group, names, kinds, error)
       if (allocated(error)) return
       select case (lower(trim(over)))
       case ("chart"); scene%lyapunov_points = .false.
@@ -1926,25 +1911,21 @@ contains
       character(len=*), parameter :: names(2) = [character(len=11) :: "phi0s", "same_energy"]
       character(len=*), parameter :: kinds(2) = [character(len=33) :: "a list of at most 64 real numbers", "a logical"]
       real(wp), parameter :: unset = -huge(1.0_wp)
-      integer :: ios, n, k
-      character(len=512) :: msg
-      character(len=:), allocatable :: bad
+      integer :: n, k
       type(group_read_t) :: reader
       phi0s = unset
       same_energy = scene%poincare%same_energy
-      ios = 0
       ! the group is optional; a list it gives replaces the default list whole
       if (.not. group_sets(unit, group, "phi0s")) phi0s(:size(scene%poincare%phi0s)) = scene%poincare%phi0s
       if (group_present(unit, group)) then
          call begin_group_read(unit, reader)
-         read (unit, nml=poincare, iostat=ios, iomsg=msg)
-         do while (next_item(reader, unit, group, ios))
+         read (unit, nml=poincare, iostat=reader%ios, iomsg=reader%msg)
+         do while (next_item(reader, unit, group))
             read (reader%record, nml=poincare, iostat=reader%stat, iomsg=reader%message)
          end do
-         call end_group_read(reader, bad)
+         call end_group_read(reader, unit, scene%source, group, names, kinds, error)
+         if (allocated(error)) return
       end if
-      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
-      if (allocated(error)) return
       n = count(phi0s /= unset)
       if (n == 0) then
          call fail(error, scene%source, group, "phi0s", "no initial angle given")
@@ -1957,7 +1938,7 @@ contains
       do k = 1, n
          call require_finite(scene%source, group, "phi0s", phi0s(k), error)
          if (allocated(error)) return
-         if (abs(phi0s(k)) >= 3.141592653589793_wp) then
+         if (abs(phi0s(k)) >= pi) then
             call fail(error, scene%source, group, "phi0s", "each angle must lie in (-pi, pi), got "// &
                real_text(phi0s(k)))
             return

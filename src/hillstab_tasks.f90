@@ -47,7 +47,8 @@ module hillstab_tasks
    private
    public :: run_scene_file, run_scene, output_path
    ! the pieces a distributed driver (hillstab_batch, the MPI program) shares with the serial tasks
-   public :: scene_columns, chart_row, compute_points, chart_header, open_scene_output, check_method_runs, warn_inaccurate, &
+   public :: scene_columns, chart_betas, chart_row, compute_points, chart_header, open_scene_output, check_method_runs, &
+      warn_inaccurate, &
       failed_points_error, progress_t, progress_begin, progress_update, progress_end
 
    !> Progress on stderr for runs longer than about a second.
@@ -291,7 +292,7 @@ contains
       integer(int64) :: n_inaccurate, n_failed
       real(wp) :: first_inaccurate(2), first_failed(2)
       integer :: group, n_groups, g
-      integer :: i, j, n_alpha, n_beta
+      integer :: i, n_alpha, n_beta
 
       n_alpha = scene%chart%n_alpha
       n_beta = scene%chart%n_beta
@@ -305,11 +306,7 @@ contains
          call discard_output(file)
          return
       end if
-      all_betas = [(grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j), j=1, n_beta)]
-      allocate (beta_texts(n_beta))
-      do j = 1, n_beta
-         beta_texts(j) = format_es(all_betas(j), 16)
-      end do
+      call chart_betas(scene, all_betas, beta_texts)
       outside = .not. (in_physical_domain(scene%chart%alpha_min, scene%chart%beta_min) .and. &
                        in_physical_domain(scene%chart%alpha_max, scene%chart%beta_max))
       call write_header(file, chart_header(scene, outside), chart_columns_text(ids), error, &
@@ -488,35 +485,64 @@ contains
       !$omp end parallel do
    end subroutine compute_row_in_chunks
 
+   !> The β values of a chart's rows and their text, made once per chart.
+   subroutine chart_betas(scene, betas, beta_texts)
+      type(scene_t), intent(in) :: scene  !! a chart scene
+      real(wp), allocatable, intent(out) :: betas(:)  !! the n_beta grid values of &chart
+      character(len=23), allocatable, intent(out) :: beta_texts(:)  !! format_es(betas, 16)
+      integer :: j, n_beta
+      n_beta = scene%chart%n_beta
+      betas = [(grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j), j=1, n_beta)]
+      allocate (beta_texts(n_beta))
+      do j = 1, n_beta
+         beta_texts(j) = format_es(betas(j), 16)
+      end do
+   end subroutine chart_betas
+
    !> Text lines of row `i` of a chart scene (α = the i-th grid value, all β) with the
    !> scene's columns, computed exactly as the chart task computes them, so that a driver
    !> computing rows elsewhere writes the same file (format = 'text').
-   subroutine chart_row(scene, i, lines, statuses)
+   subroutine chart_row(scene, i, lines, statuses, betas, beta_texts, ids)
       type(scene_t), intent(in) :: scene  !! a chart scene
       integer, intent(in) :: i            !! row index, 1 … n_alpha
       character(len=*), intent(out) :: lines(:)  !! n_beta lines of `chart_line_length` characters
       integer, intent(out) :: statuses(:)  !! per point: status_ok, status_roundoff or status_failed
-      real(wp), allocatable :: betas(:), values(:, :)
-      character(len=23), allocatable :: beta_texts(:)
-      integer, allocatable :: ids(:)
+      !> `chart_betas` of the scene, made once for all rows (made here when absent)
+      real(wp), intent(in), optional :: betas(:)
+      character(len=23), intent(in), optional :: beta_texts(:)  !! `chart_betas` of the scene (with `betas`)
+      integer, intent(in), optional :: ids(:)  !! `scene_columns` of the scene (made here when absent)
+      real(wp), allocatable :: own_betas(:)
+      character(len=23), allocatable :: own_texts(:)
+      integer, allocatable :: own_ids(:)
       type(error_t), allocatable :: error
-      real(wp) :: alpha
-      integer :: j, n_beta
-      call scene_columns(scene, ids, error)  ! checked when the scene was read
-      if (allocated(error)) ids = default_chart_columns(scene%epsilon > 0.0_wp, scene%model == model_elastic, &
-                                                        scene%physical)
-      n_beta = scene%chart%n_beta
-      betas = [(grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j), j=1, n_beta)]
-      allocate (beta_texts(n_beta), values(size(ids), n_beta))
-      do j = 1, n_beta
-         beta_texts(j) = format_es(betas(j), 16)
-      end do
-      alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, scene%chart%n_alpha, i)
-      if (rows_in_parallel(scene)) then
-         call compute_row(scene, ids, alpha, betas, lines, values, statuses, beta_texts=beta_texts)
+      if (present(ids)) then
+         own_ids = ids
       else
-         call compute_row_in_chunks(scene, ids, alpha, betas, lines, values, statuses, beta_texts)
+         call scene_columns(scene, own_ids, error)  ! checked when the scene was read
+         if (allocated(error)) own_ids = default_chart_columns(scene%epsilon > 0.0_wp, &
+                                                               scene%model == model_elastic, scene%physical)
       end if
+      if (present(betas) .and. present(beta_texts)) then
+         call row(betas, beta_texts, own_ids)
+      else
+         call chart_betas(scene, own_betas, own_texts)
+         call row(own_betas, own_texts, own_ids)
+      end if
+   contains
+      subroutine row(betas, beta_texts, ids)
+         real(wp), intent(in) :: betas(:)
+         character(len=23), intent(in) :: beta_texts(:)
+         integer, intent(in) :: ids(:)
+         real(wp) :: alpha
+         real(wp), allocatable :: values(:, :)  ! records: unused by text lines, sized for compute_row
+         allocate (values(size(ids), size(betas)))
+         alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, scene%chart%n_alpha, i)
+         if (rows_in_parallel(scene)) then
+            call compute_row(scene, ids, alpha, betas, lines, values, statuses, beta_texts=beta_texts)
+         else
+            call compute_row_in_chunks(scene, ids, alpha, betas, lines, values, statuses, beta_texts)
+         end if
+      end subroutine row
    end subroutine chart_row
 
    !> Text lines (with the scene's columns) or records `values` of the points `first` …
