@@ -458,7 +458,7 @@ contains
       !> added up to errors of 1e-12 to 3e-12 in S, above a tolerance of 1e-12.
       subroutine advance_to(t_goal)
          real(wp), intent(in) :: t_goal  !! the time the solution is to reach
-         real(c_double) :: t_start, target
+         real(c_double) :: t_start, target, h_exact
          integer(c_long) :: n, failed_before
          ! GSL's t runs ahead of the solution's time by `lag`
          target = real(t_goal + context%lag, c_double)
@@ -469,7 +469,11 @@ contains
                status = gsl_emaxiter
                return
             end if
-            if (t + driver_view%h < target) driver_view%h = (t + driver_view%h) - t
+            if (t + driver_view%h < target) then
+               ! (a step below half an ulp of t would round to 0: left to GSL, which fails on it)
+               h_exact = (t + driver_view%h) - t
+               if (h_exact > 0.0_c_double) driver_view%h = h_exact
+            end if
             t_start = t
             failed_before = evolve_view%failed_steps
             status = gsl_odeiv2_evolve_apply(driver_view%evolve, driver_view%control, driver_view%step, &

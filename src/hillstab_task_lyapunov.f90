@@ -13,7 +13,7 @@
 !> on several ranks with `lyapunov_lines` and writes the same file.
 module hillstab_task_lyapunov
    use hillstab_kinds, only: wp, int64, version_string
-   use hillstab_error, only: error_t, set_error, err_io, err_accuracy, err_points_failed
+   use hillstab_error, only: error_t, set_error, err_accuracy, err_points_failed
    use hillstab_status, only: status_ok, status_roundoff, status_failed
    use hillstab_coefficient, only: hill_model_t, model_elastic
    use hillstab_transfer, only: trace_t
@@ -252,7 +252,6 @@ contains
       !> err_io (unwritable output), err_points_failed (written, some points failed)
       type(error_t), allocatable, intent(out) :: error
       type(output_file_t) :: file
-      type(error_t), allocatable :: cause
       character(len=:), allocatable :: text
       integer, allocatable :: statuses(:)
       integer(int64) :: n, first, last, n_failed, j
@@ -260,11 +259,8 @@ contains
       logical :: new_block
       integer(int64) :: clock_start, clock_now, ticks
       n = lyapunov_point_count(scene)
-      call open_output(file, output_path(scene), cause)
-      if (allocated(cause)) then
-         call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
-         return
-      end if
+      call open_output(file, output_path(scene), error, context=scene%source//": &scene: output: ")
+      if (allocated(error)) return
       call write_header(file, lyapunov_header(scene), lyapunov_columns(), error)
       n_failed = 0
       call system_clock(clock_start, ticks)
