@@ -1,19 +1,22 @@
 !> Speed against error for the nonlinear pendulum of the paper's Fig. 4 (e) (α = 7.88,
 !> β = 3.95, φ0 = 0.017, r0 = 0.1 m, g = 9.81 m/s²) by hillstab's DOP853 and DOPRI5 and by
-!> GSL's rk8pd, several tolerances each. All three integrate the same right-hand side
+!> GSL's rk8pd, several tolerances each. All three integrate the same equations
 !> (`pendulum_rhs`) with the same absolute tolerances (`pendulum_atol`).
 !>
 !> The motion of (e) is chaotic: two converged integrations (DOP853 and rk8pd at 1e-15)
 !> part by a factor of about 10 every 2.5 radial periods and disagree at O(1) after 100.
 !> So the state is compared with the reference after 10 periods (where the two references
-!> agree to ~3e-13), and the 100-period run is judged by its energy error
+!> agree to ~2e-13), and the 100-period run is judged by its energy error
 !> |E(100 T) − E(0)|/E_scale, which chaos does not amplify.
 !>
 !> Usage: hillstab_bench_series [--quick] [--periods N] [--out PREFIX]
 !> Writes PREFIX_series.dat (default PREFIX = out/bench): method, tolerance, then for the
 !> state run and the energy run the seconds per run, the error and the f-evaluations;
-!> prints the tables and the time ratios to GSL at equal error. Times are wall-clock,
-!> measured side by side in one run; compare them as ratios.
+!> prints the tables (with the time per f-evaluation) and, for each hillstab run, its time
+!> and its f-evaluations over GSL's at equal error. GSL also runs at two looser tolerances
+!> so that its curve covers the errors of hillstab's loosest runs. Times are wall-clock,
+!> the fastest of interleaved repeated runs, measured side by side in one run; compare
+!> them as ratios.
 program hillstab_bench_series
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
    use hillstab_kinds, only: wp
@@ -28,6 +31,9 @@ program hillstab_bench_series
    integer :: n_periods = 10          !! the state run
    integer, parameter :: energy_periods = 100
    integer, parameter :: method_gsl = 3
+   !> GSL also runs at these looser tolerances (alone), so that its curve reaches the
+   !> errors of hillstab's loosest runs and every one of those has a GSL time to compare with
+   real(wp), parameter :: gsl_looser(2) = [1.0e-3_wp, 1.0e-4_wp]
    character(len=*), parameter :: names(3) = [character(len=6) :: "dopri5", "dop853", "rk8pd"]
    real(wp), allocatable :: tolerances(:)
    type(pendulum_system_t) :: system
@@ -35,6 +41,8 @@ program hillstab_bench_series
    real(wp) :: y0(4), reference(4), check_state(4), t_end
    real(wp), allocatable :: table_err(:, :, :), table_time(:, :, :)
    integer(int64), allocatable :: table_evals(:, :, :)
+   ! GSL's whole curve: the looser tolerances, then those of the table
+   real(wp), allocatable :: gsl_err(:, :), gsl_time(:, :), gsl_evals(:, :)
    integer :: measure
    character(len=256) :: prefix, arg
    logical :: quick
@@ -85,6 +93,8 @@ program hillstab_bench_series
 
    allocate (table_err(size(tolerances), 3, 2), table_time(size(tolerances), 3, 2), &
              table_evals(size(tolerances), 3, 2))
+   allocate (gsl_err(size(gsl_looser) + size(tolerances), 2), gsl_time(size(gsl_looser) + size(tolerances), 2), &
+             gsl_evals(size(gsl_looser) + size(tolerances), 2))
    do measure = 1, 2
       if (measure == 1) then
          write (output_unit, '(a,i0,a)') "# state after ", n_periods, " periods: method tolerance seconds error f-evals"
@@ -96,19 +106,39 @@ program hillstab_bench_series
       do j = 1, size(tolerances)
          call time_interleaved(tolerances(j), measure, j)
       end do
+      do j = 1, size(gsl_looser)
+         call time_gsl_alone(gsl_looser(j), measure, j)
+      end do
+      gsl_err(size(gsl_looser) + 1:, measure) = table_err(:, method_gsl, measure)
+      gsl_time(size(gsl_looser) + 1:, measure) = table_time(:, method_gsl, measure)
+      gsl_evals(size(gsl_looser) + 1:, measure) = real(table_evals(:, method_gsl, measure), wp)
+      write (output_unit, '(a)') "# (ns/eval: time per f-evaluation)"
       do m = 1, 3
+         if (m == method_gsl) then
+            do j = 1, size(gsl_looser)
+               write (output_unit, '(a8,es11.2,es12.4,es12.4,i12,f9.1,a)') names(m), gsl_looser(j), &
+                  gsl_time(j, measure), gsl_err(j, measure), nint(gsl_evals(j, measure), int64), &
+                  1.0e9_wp*gsl_time(j, measure)/gsl_evals(j, measure), " ns/eval"
+            end do
+         end if
          do j = 1, size(tolerances)
-            write (output_unit, '(a8,es11.2,es12.4,es12.4,i12)') names(m), tolerances(j), table_time(j, m, measure), &
-               table_err(j, m, measure), table_evals(j, m, measure)
+            write (output_unit, '(a8,es11.2,es12.4,es12.4,i12,f9.1,a)') names(m), tolerances(j), &
+               table_time(j, m, measure), table_err(j, m, measure), table_evals(j, m, measure), &
+               1.0e9_wp*table_time(j, m, measure)/real(table_evals(j, m, measure), wp), " ns/eval"
          end do
       end do
-      ! time of each hillstab integrator divided by GSL's at the same error (GSL's log-time
-      ! interpolated in log-error); > 1 means slower than GSL
-      write (output_unit, '(a)') "# time ratio to GSL rk8pd at equal error (< 1: faster than GSL; -1: outside)"
+      ! time and f-evaluations of each hillstab integrator divided by GSL's at the same
+      ! error (GSL's log-time and log-evaluations interpolated in log-error); > 1 means
+      ! slower (more evaluations) than GSL
+      write (output_unit, '(a)') "# time and f-evaluation ratios to GSL rk8pd at equal error "// &
+         "(< 1: faster, fewer; -1: outside GSL's range)"
       do m = 1, 2
          do j = 1, size(tolerances)
-            write (output_unit, '(a8,a,es10.3,a,f7.3)') names(m), " error ", table_err(j, m, measure), ": ratio ", &
-               ratio_to_gsl(measure, table_err(j, m, measure), table_time(j, m, measure))
+            write (output_unit, '(a8,es11.2,a,es10.3,a,f7.3,a,f7.3)') names(m), tolerances(j), " error ", &
+               table_err(j, m, measure), ": time ratio ", &
+               ratio_to_gsl(measure, table_err(j, m, measure), table_time(j, m, measure), gsl_time(:, measure)), &
+               "  f-evaluation ratio ", ratio_to_gsl(measure, table_err(j, m, measure), &
+               real(table_evals(j, m, measure), wp), gsl_evals(:, measure))
          end do
       end do
    end do
@@ -122,6 +152,12 @@ program hillstab_bench_series
    write (unit, '(a)') "# columns: method tolerance seconds_state error_state evaluations_state "// &
       "seconds_energy error_energy evaluations_energy"
    do m = 1, 3
+      if (m == method_gsl) then
+         do j = 1, size(gsl_looser)
+            write (unit, '(a,1x,es11.3,6(1x,es12.5))') trim(names(m)), gsl_looser(j), &
+               (gsl_time(j, measure), gsl_err(j, measure), gsl_evals(j, measure), measure = 1, 2)
+         end do
+      end if
       do j = 1, size(tolerances)
          write (unit, '(a,1x,es11.3,6(1x,es12.5))') trim(names(m)), tolerances(j), &
             (table_time(j, m, measure), table_err(j, m, measure), real(table_evals(j, m, measure), wp), measure = 1, 2)
@@ -194,20 +230,53 @@ contains
       end do
    end subroutine time_interleaved
 
-   !> This integrator's time over GSL's time at the same error.
-   real(wp) function ratio_to_gsl(measure, e, t) result(r)
+   !> Time the GSL run alone at a tolerance looser than the table's (fastest of at least
+   !> 5 runs, then until 0.5 s or 300 runs), into row j of GSL's curve.
+   subroutine time_gsl_alone(tolerance, measure, j)
+      real(wp), intent(in) :: tolerance
+      integer, intent(in) :: measure, j
+      integer(int64) :: t0, t1, rate, start
+      integer :: rounds
+      real(wp) :: y(4)
+      type(work_stats_t) :: work
+      gsl_time(j, measure) = huge(1.0_wp)
+      rounds = 0
+      call system_clock(start, rate)
+      do
+         y = y0
+         call system_clock(t0)
+         call pendulum_gsl(system%pendulum, y, t_end, tolerance, work, error)
+         if (allocated(error)) error stop "bench_series: GSL failed"
+         call system_clock(t1)
+         gsl_time(j, measure) = min(gsl_time(j, measure), real(t1 - t0, wp)/rate)
+         gsl_evals(j, measure) = real(work%n_evaluations, wp)
+         if (measure == 1) then
+            gsl_err(j, measure) = scaled_error(y)
+         else
+            gsl_err(j, measure) = abs(pendulum_energy(system%pendulum, y) - pendulum_energy(system%pendulum, y0)) &
+                                  /pendulum_energy_scale(system%pendulum, y0)
+         end if
+         rounds = rounds + 1
+         if (quick .and. rounds >= 2) exit
+         if (rounds >= 5 .and. (real(t1 - start, wp)/rate > 0.5_wp .or. rounds >= 300)) exit
+      end do
+   end subroutine time_gsl_alone
+
+   !> This integrator's cost (time or f-evaluations) over GSL's at the same error: GSL's
+   !> log-cost interpolated in log-error between neighbouring points of its curve.
+   real(wp) function ratio_to_gsl(measure, e, cost, gsl_cost) result(r)
       integer, intent(in) :: measure
-      real(wp), intent(in) :: e, t
-      real(wp) :: le(size(tolerances)), lt(size(tolerances)), w, gsl_time
+      real(wp), intent(in) :: e, cost
+      real(wp), intent(in) :: gsl_cost(:)  !! GSL's cost along its curve (gsl_err)
+      real(wp) :: le(size(gsl_cost)), lc(size(gsl_cost)), w
       integer :: k
-      le = log(table_err(:, method_gsl, measure))
-      lt = log(table_time(:, method_gsl, measure))
+      le = log(gsl_err(:, measure))
+      lc = log(gsl_cost)
       r = -1.0_wp
-      do k = 1, size(tolerances) - 1
+      do k = 1, size(gsl_cost) - 1
          if ((log(e) - le(k))*(log(e) - le(k + 1)) <= 0.0_wp .and. le(k) /= le(k + 1)) then
             w = (log(e) - le(k))/(le(k + 1) - le(k))
-            gsl_time = exp(lt(k) + w*(lt(k + 1) - lt(k)))
-            r = t/gsl_time
+            r = cost/exp(lc(k) + w*(lc(k + 1) - lc(k)))
             return
          end if
       end do

@@ -4,7 +4,7 @@
 # (the motion is chaotic, so the state after 100 periods cannot be converged).
 set terminal pngcairo size 1200,520 enhanced font ",11"
 set output "out/bench_series.png"
-set multiplot layout 1,2 title "nonlinear pendulum, Fig. 4 (e): speed against error (one curve per integrator, tolerances 1e-5 ... 1e-13)"
+set multiplot layout 1,2 title "nonlinear pendulum, Fig. 4 (e): speed against error (tolerances 1e-5 ... 1e-13; rk8pd also 1e-3, 1e-4)"
 set logscale xy
 set format x "10^{%L}"
 set format y "10^{%L}"

@@ -39,8 +39,9 @@ module hillstab_batch
       lyapunov_point, lyapunov_failure_error
    use hillstab_coefficient, only: model_elastic
    use hillstab_output, only: output_file_t, write_header, write_text, commit_output, discard_output, &
-      chart_columns_text, chart_line_length
-   use hillstab_tasks, only: scene_columns, chart_row, compute_points, chart_header, open_scene_output, check_method_runs, &
+      chart_columns_text, chart_line_length, joined_lines
+   use hillstab_tasks, only: scene_columns, chart_betas, chart_row, compute_points, chart_header, open_scene_output, &
+      check_method_runs, &
       warn_inaccurate, failed_points_error, progress_t, progress_begin, progress_update, progress_end
    implicit none
    private
@@ -60,6 +61,10 @@ module hillstab_batch
       real(wp) :: first_inaccurate(2) = 0.0_wp  !! (α, β) of the first of them
       integer(int64) :: n_failed = 0         !! failed points written so far
       real(wp) :: first_failed(2) = 0.0_wp   !! (α, β) of the first of them
+      !> a chart: what every row shares, made once by `batch_plan` (`chart_betas`, `scene_columns`)
+      real(wp), allocatable :: betas(:)
+      character(len=23), allocatable :: beta_texts(:)  !! a chart: format_es(betas, 16)
+      integer, allocatable :: ids(:)         !! a chart: the columns written
    end type batch_t
 
    !> The computed text of one unit.
@@ -86,12 +91,17 @@ contains
       integer, intent(in) :: n_workers    !! processes that will compute units (≥ 1)
       type(batch_t), intent(out) :: batch  !! the units and the output file state
       integer :: n
+      type(error_t), allocatable :: error
       batch%scene = scene
       select case (scene%task)
       case (task_chart)
          batch%unit_size = scene%chart%n_beta
          batch%n_units = scene%chart%n_alpha
          batch%n_points = int(scene%chart%n_alpha, int64)*scene%chart%n_beta
+         call chart_betas(scene, batch%betas, batch%beta_texts)
+         call scene_columns(scene, batch%ids, error)
+         ! a bad &scene columns is reported by batch_open; chart_row then falls back on its own
+         if (allocated(error) .and. allocated(batch%ids)) deallocate (batch%ids)
       case (task_points)
          n = size(scene%points, 2)
          batch%n_points = n
@@ -152,45 +162,17 @@ contains
       allocate (lines(first:last))
       select case (batch%scene%task)
       case (task_chart)
-         call chart_row(batch%scene, unit, lines, result%status)
+         if (allocated(batch%ids)) then
+            call chart_row(batch%scene, unit, lines, result%status, batch%betas, batch%beta_texts, batch%ids)
+         else
+            call chart_row(batch%scene, unit, lines, result%status, batch%betas, batch%beta_texts)
+         end if
       case (task_points)
          call compute_points(batch%scene, int(first), int(last), lines, result%status)
       end select
-      result%unit = unit
       ! a chart's rows are blocks of constant α separated by one blank line
-      result%text = joined(lines, batch%scene%task == task_chart .and. unit > 1)
+      result%text = joined_lines(lines, batch%scene%task == task_chart .and. unit > 1)
    end subroutine batch_compute
-
-   !> Lines (trimmed) joined by new lines, with a leading new line if `separate`.
-   pure function joined(lines, separate) result(text)
-      character(len=*), intent(in) :: lines(:)
-      logical, intent(in) :: separate
-      character(len=:), allocatable :: text
-      integer :: j, n, pos, total
-      logical :: started
-      total = 1
-      do j = 1, size(lines)
-         total = total + len_trim(lines(j)) + 1
-      end do
-      allocate (character(len=total) :: text)
-      pos = 0
-      if (separate) then
-         text(1:1) = new_line("a")
-         pos = 1
-      end if
-      started = .false.
-      do j = 1, size(lines)
-         if (started) then
-            text(pos + 1:pos + 1) = new_line("a")
-            pos = pos + 1
-         end if
-         n = len_trim(lines(j))
-         text(pos + 1:pos + n) = lines(j)(1:n)
-         pos = pos + n
-         started = .true.
-      end do
-      text = text(1:pos)
-   end function joined
 
    !> Open the output file of the scene and write its header (an unwritable path fails
    !> here, before anything is computed).
@@ -198,11 +180,10 @@ contains
       type(batch_t), intent(inout) :: batch  !! the planned work; its output file is opened
       logical, intent(in) :: quiet  !! no progress on stderr
       type(error_t), allocatable, intent(out) :: error  !! failure description; unallocated on success
-      logical :: outside, damped
+      logical :: outside
       type(scene_t) :: s
       integer, allocatable :: ids(:)
       s = batch%scene
-      damped = s%epsilon > 0.0_wp
       if (s%binary) then
          call set_error(error, err_input, s%source//": &scene: format: 'binary' is written by the hillstab "// &
             "program, not by the unit-by-unit driver: use format = 'text'")

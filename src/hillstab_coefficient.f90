@@ -20,6 +20,7 @@ module hillstab_coefficient
    public :: hill_coefficient, check_model, segment_average, segment_coefficients
    public :: sampling_endpoint, sampling_midpoint, sampling_average, sampling_name
    public :: damping_shift, hill_period, in_physical_domain, one_minus_alpha_over_pi2
+   public :: phase_bound, shape_root_mean, coefficient_phase
 
    !> Q(τ) of eq. (25), the exact linearisation about the vertical bounce.
    integer, parameter :: model_elastic = 1
@@ -133,6 +134,56 @@ contains
       s = sin(0.5_wp*theta)
       one_minus_k_cos = one_minus_alpha_over_pi2(alpha) + 2.0_wp*(alpha/pi2)*s*s
    end function one_minus_k_cos
+
+   !> An upper bound of the phase (where q > 0) or growth exponent (where q < 0) that the
+   !> solutions accumulate over one period, Φ = ∫₀² √|q(τ)| dτ, from q = c₀ + c₁ w(τ)
+   !> and √|c₀ + c₁ w| ≤ √|c₀| + √|c₁| √|w|: Φ ≤ 2 (√|c₀| + √|c₁| `shape_root_mean`).
+   !> It sets the part of the round-off level of S that no integrator can remove: Q is
+   !> computed from rounded constants (1 − α/π², α/π², β − π², π²), a systematic relative
+   !> error of a few ε that moves the phase by about ε Φ (hillstab_refine `roundoff_level`).
+   elemental real(wp) function phase_bound(model) result(phase)
+      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
+      real(wp) :: c0, c1
+      if (model%kind == model_mathieu) then
+         c0 = model%beta + damping_shift(model%epsilon)
+         c1 = model%alpha
+      else
+         c0 = pi2 + damping_shift(model%epsilon)
+         c1 = model%beta - pi2
+      end if
+      phase = coefficient_phase(c0, c1, shape_root_mean(model%kind, model%alpha))
+   end function phase_bound
+
+   !> `phase_bound` from q = c₀ + c₁ w and ∫₀¹ √|w| dτ: 2 (√|c₀| + √|c₁| shape_root).
+   elemental real(wp) function coefficient_phase(c0, c1, shape_root) result(phase)
+      real(wp), intent(in) :: c0          !! constant part of q
+      real(wp), intent(in) :: c1          !! factor of the shape function w
+      real(wp), intent(in) :: shape_root  !! ∫₀¹ √|w| dτ (`shape_root_mean`)
+      phase = 2.0_wp*(sqrt(abs(c0)) + sqrt(abs(c1))*shape_root)
+   end function coefficient_phase
+
+   !> ∫₀¹ √|w(τ)| dτ of the shape function of q = c₀ + c₁ w: elastic w = 1/(1 − k cos πτ),
+   !> k = α/π², whose integral is the complete elliptic integral
+   !> 1/(√(1 + k) AGM(1, √((1 − k)/(1 + k)))) (1 at α = 0, growing like ln(1/(1 − k)) as
+   !> α → π²); Mathieu w = cos πτ, bounded by 1.
+   elemental real(wp) function shape_root_mean(kind, alpha) result(mean)
+      integer, intent(in) :: kind    !! model_elastic or model_mathieu
+      real(wp), intent(in) :: alpha  !! α (ν for the Mathieu model)
+      real(wp) :: a, b, a_next, k
+      integer :: i
+      mean = 1.0_wp
+      if (kind == model_mathieu) return
+      k = alpha/pi2
+      a = 1.0_wp
+      b = sqrt(one_minus_alpha_over_pi2(alpha)/(1.0_wp + k))
+      do i = 1, 40
+         if (a - b <= 4.0_wp*epsilon(1.0_wp)*a) exit
+         a_next = 0.5_wp*(a + b)
+         b = sqrt(a*b)
+         a = a_next
+      end do
+      mean = 1.0_wp/(sqrt(1.0_wp + k)*a)
+   end function shape_root_mean
 
    !> The coefficient q(τ) of the (damping-shifted) Hill equation, eq. (25)/(A1) and (47).
    elemental real(wp) function hill_coefficient(model, tau) result(q)

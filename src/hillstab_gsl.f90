@@ -24,8 +24,11 @@
 !> S: `monodromy_gsl` integrates with eps = tolerance·gsl_tolerance_factor, then eps
 !> divided by max(10, κ/2), then by 10, until two successive traces agree to the
 !> tolerance (hillstab_refine), and reports round-off limited (err_accuracy) where eps
-!> reaches its floor 1e-15 or GSL's control cannot meet it (GSL_FAILURE). Measured
-!> against the 50-digit reference of data/reference/ (README, *Accuracy*).
+!> reaches its floor 1e-15 or GSL's control cannot meet it (GSL_FAILURE). The driver's
+!> loop is run here (`integrate_pair`) so that every step is exact in time (GSL advances
+!> t by a rounded t + h; over the 1e4 steps at |β| ~ 1e5 that cost up to 3e-12 in S),
+!> and the solutions are rescaled by powers of two. Measured against the 50-digit
+!> references of data/reference/ (README, *Accuracy*).
 !>
 !>```fortran
 !> type(trace_t) :: tr
@@ -42,7 +45,7 @@ module hillstab_gsl
    use hillstab_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
       roundoff_level, propagator_condition, trace_distance, first_step_factor, next_local_tolerance
    use hillstab_stats, only: work_stats_t, add_work
-   use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
+   use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
    use hillstab_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
    implicit none
    private
@@ -87,6 +90,8 @@ module hillstab_gsl
    !> `monodromy_gsl`: at most this many values of S per point.
    integer, parameter :: max_ladder_runs = 8
    integer(c_int), parameter :: gsl_ebadfunc = 9
+   !> Status GSL_EMAXITER: more than `max_steps` steps in one stretch.
+   integer(c_int), parameter :: gsl_emaxiter = 11
 
    !> gsl_sf_result: value and GSL's error estimate.
    type, bind(C) :: gsl_sf_result
@@ -123,6 +128,9 @@ module hillstab_gsl
    type :: rhs_context_t
       type(hill_model_t) :: model
       integer(int64) :: n_evaluations = 0
+      !> GSL's t minus the time the solution has been advanced by (Σ h of the accepted
+      !> steps): q is evaluated at t − lag (see `integrate_pair`)
+      real(wp) :: lag = 0.0_wp
       real(wp) :: peak(2) = 0.0_wp  !! largest |u|, |u'| and |v|, |v'| seen by the right-hand side
       real(wp) :: terms(3) = 0.0_wp !! largest u², v'², |v u'| (the scaled condition, within a chunk)
    end type rhs_context_t
@@ -178,6 +186,18 @@ module hillstab_gsl
          real(c_double), intent(in) :: scale_abs(*)  !! per-component scale of epsabs
          type(c_ptr) :: driver
       end function gsl_odeiv2_driver_alloc_scaled_new
+
+      !> One step of the evolution (with GSL's internal retries on rejection).
+      function gsl_odeiv2_evolve_apply(evolve, control, step, system, t, t1, h, y) &
+         bind(C, name="gsl_odeiv2_evolve_apply") result(status)
+         import :: c_ptr, c_double, c_int
+         type(c_ptr), value :: evolve, control, step, system
+         real(c_double), intent(inout) :: t
+         real(c_double), value :: t1
+         real(c_double), intent(inout) :: h
+         real(c_double), intent(inout) :: y(*)
+         integer(c_int) :: status
+      end function gsl_odeiv2_evolve_apply
 
       !> Limit the number of steps of one gsl_odeiv2_driver_apply call.
       function gsl_odeiv2_driver_set_nmax(driver, nmax) bind(C, name="gsl_odeiv2_driver_set_nmax") result(status)
@@ -307,7 +327,7 @@ contains
       context%peak(1) = max(context%peak(1), abs(y(1)), abs(y(2)))
       context%peak(2) = max(context%peak(2), abs(y(3)), abs(y(4)))
       context%terms = max(context%terms, [y(1)*y(1), y(4)*y(4), abs(y(3)*y(2))])
-      q = hill_coefficient(context%model, t)
+      q = hill_coefficient(context%model, t - context%lag)
       dydt(1) = y(2)
       dydt(2) = -q*y(1)
       dydt(3) = y(4)
@@ -339,13 +359,17 @@ contains
       type(c_ptr) :: driver
       type(c_funptr) :: previous
       real(c_double) :: state(4), t
-      real(wp) :: growth_rate, scale, condition_peak
+      real(wp) :: growth_rate, magnitude, condition_peak
       integer(c_int) :: status
-      integer :: n_chunks, chunk, j
+      integer :: n_chunks, chunk, j, e, exponents(2)
+      integer(int64) :: n_accepted, n_rejected
       character(len=200) :: buf
 
       y = reshape([1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], [2, 2])
       log_scale = 0.0_wp
+      exponents = 0
+      n_accepted = 0
+      n_rejected = 0
       log_peak = 0.0_wp
       stats = work_stats_t()
       previous = gsl_set_error_handler_off()
@@ -368,12 +392,15 @@ contains
       end if
       status = gsl_odeiv2_driver_set_nmax(driver, max_steps)
 
+      call c_f_pointer(driver, driver_view)
+      call c_f_pointer(driver_view%evolve, evolve_view)
       state = [1.0_c_double, 0.0_c_double, 0.0_c_double, 1.0_c_double]
       t = 0.0_c_double
+      context%lag = 0.0_wp
       condition_peak = 0.0_wp
       do chunk = 1, n_chunks
          context%terms = 0.0_wp
-         status = gsl_odeiv2_driver_apply(driver, t, real(t_end*chunk/n_chunks, c_double), state)
+         call advance_to(t_end*chunk/n_chunks)
          if (status == gsl_success .and. .not. all(ieee_is_finite(state))) status = gsl_ebadfunc
          if (status /= gsl_success) exit
          condition_peak = max(condition_peak, log(max(context%terms(1), tiny(1.0_wp))) + 2.0_wp*log_scale(1), &
@@ -382,10 +409,15 @@ contains
          do j = 1, 2
             if (context%peak(j) > 0.0_wp) log_peak(j) = max(log_peak(j), log(context%peak(j)) + log_scale(j))
             context%peak(j) = 0.0_wp
-            scale = max(abs(state(2*j - 1)), abs(state(2*j)))
-            if (n_chunks > 1 .and. scale > 0.0_wp) then
-               state(2*j - 1:2*j) = state(2*j - 1:2*j)/scale
-               log_scale(j) = log_scale(j) + log(scale)
+            magnitude = max(abs(state(2*j - 1)), abs(state(2*j)))
+            if (n_chunks > 1 .and. magnitude > 0.0_wp) then
+               ! by a power of two (exact), the exponents counted as integers: a logarithm
+               ! added per chunk rounds each time, and at β = −1e6 (ln|S| ≈ 5000, ~25
+               ! chunks) those roundings put S off by 5e-12
+               e = exponent(magnitude)
+               state(2*j - 1:2*j) = scale(state(2*j - 1:2*j), -e)
+               exponents(j) = exponents(j) + e
+               log_scale(j) = exponents(j)*log(2.0_wp)
             end if
          end do
          ! without a reset of the driver's evolution and stepper objects the next
@@ -397,10 +429,9 @@ contains
       end do
       if (present(log_condition_peak)) log_condition_peak = condition_peak
 
-      call c_f_pointer(driver, driver_view)
-      call c_f_pointer(driver_view%evolve, evolve_view)
-      stats%n_steps = int(evolve_view%count - evolve_view%failed_steps, int64)
-      stats%n_rejected = int(evolve_view%failed_steps, int64)
+      ! (counted here: the evolve object's counters restart at each driver reset)
+      stats%n_steps = n_accepted
+      stats%n_rejected = n_rejected
       stats%n_evaluations = context%n_evaluations
       call gsl_odeiv2_driver_free(driver)
 
@@ -415,6 +446,45 @@ contains
          return
       end if
       y = reshape(real(state, wp), [2, 2])
+
+   contains
+
+      !> gsl_odeiv2_driver_apply's loop, with one change: each step h is made exact
+      !> (t + h representable, h = (t + h) − t) before the step, and where GSL's retries
+      !> after a rejection still leave t + h rounded, the difference is kept in
+      !> context%lag and q is evaluated at t − lag. GSL advances the solution by h but
+      !> t by fl(t + h); each rounding is a jump of the coefficient by up to ulp(t)/2,
+      !> a phase error of √|q|·ulp(t)/2, and over the ~1e4 steps at |β| ~ 1e5 these
+      !> added up to errors of 1e-12 to 3e-12 in S, above a tolerance of 1e-12.
+      subroutine advance_to(t_goal)
+         real(wp), intent(in) :: t_goal  !! the time the solution is to reach
+         real(c_double) :: t_start, target, h_exact
+         integer(c_long) :: n, failed_before
+         ! GSL's t runs ahead of the solution's time by `lag`
+         target = real(t_goal + context%lag, c_double)
+         n = 0
+         status = gsl_success
+         do while (t < target)
+            if (n >= max_steps) then
+               status = gsl_emaxiter
+               return
+            end if
+            if (t + driver_view%h < target) then
+               ! (a step below half an ulp of t would round to 0: left to GSL, which fails on it)
+               h_exact = (t + driver_view%h) - t
+               if (h_exact > 0.0_c_double) driver_view%h = h_exact
+            end if
+            t_start = t
+            failed_before = evolve_view%failed_steps
+            status = gsl_odeiv2_evolve_apply(driver_view%evolve, driver_view%control, driver_view%step, &
+                                             driver_view%sys, t, target, driver_view%h, state)
+            n_rejected = n_rejected + (evolve_view%failed_steps - failed_before)
+            if (status /= gsl_success) return
+            context%lag = context%lag + ((t - t_start) - evolve_view%last_step)
+            n = n + 1
+            n_accepted = n_accepted + 1
+         end do
+      end subroutine advance_to
    end subroutine integrate_pair
 
    !> Monodromy from the half period with GSL epsilon `eps`; `log_condition` is
@@ -491,7 +561,7 @@ contains
          return
       end if
       tr = trace_of(best)
-      call refine(ladder, tr, .false., roundoff_level(log_peak, tr%log_abs, int(part%n_steps)))
+      call refine(ladder, tr, .false., roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase_bound(model)))
       estimate = -1.0_wp
       do run = 2, max_ladder_runs
          ! the first step down also divides by the condition κ of the first pass: where the
@@ -520,11 +590,11 @@ contains
                estimate = trace_distance(trace_of(best), trace_of(trial))
             end if
             tr = trace_of(best)
-            estimate = max(estimate, roundoff_level(log_peak, tr%log_abs, int(part%n_steps)))
+            estimate = max(estimate, roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase_bound(model)))
             exit
          end if
          tr = trace_of(trial)
-         noise = roundoff_level(log_peak, tr%log_abs, int(part%n_steps))
+         noise = roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase_bound(model))
          call refine(ladder, tr, eps <= 1.001_wp*smallest_gsl_epsilon .or. run == max_ladder_runs, noise, &
                      near_floor=eps <= 1.0e3_wp*smallest_gsl_epsilon)
          best = trial

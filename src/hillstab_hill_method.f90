@@ -56,6 +56,7 @@ module hillstab_hill_method
    use hillstab_kinds, only: wp, pi, pi2
    use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_singular, err_accuracy
    use hillstab_coefficient, only: model_elastic, model_mathieu
+   use hillstab_lapack, only: dsbgv, dgeev
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -96,25 +97,6 @@ module hillstab_hill_method
       real(wp) :: change = 0.0_wp      !! change between the last two truncations (error bound estimate)
       logical :: coexistent = .false.  !! the other curve of this order coincides (zero-width tongue)
    end type hill_boundary_t
-
-   interface
-      subroutine dsbgv(jobz, uplo, n, ka, kb, ab, ldab, bb, ldbb, w, z, ldz, work, info)
-         import :: wp
-         character, intent(in) :: jobz, uplo
-         integer, intent(in) :: n, ka, kb, ldab, ldbb, ldz
-         real(wp), intent(inout) :: ab(ldab, *), bb(ldbb, *)
-         real(wp), intent(out) :: w(*), z(ldz, *), work(*)
-         integer, intent(out) :: info
-      end subroutine dsbgv
-      subroutine dgeev(jobvl, jobvr, n, a, lda, wr, wi, vl, ldvl, vr, ldvr, work, lwork, info)
-         import :: wp
-         character, intent(in) :: jobvl, jobvr
-         integer, intent(in) :: n, lda, ldvl, ldvr, lwork
-         real(wp), intent(inout) :: a(lda, *)
-         real(wp), intent(out) :: wr(*), wi(*), vl(ldvl, *), vr(ldvr, *), work(*)
-         integer, intent(out) :: info
-      end subroutine dgeev
-   end interface
 
 contains
 

@@ -10,6 +10,7 @@ module hillstab_limits
    use hillstab_kinds, only: wp, int64
    use hillstab_error, only: error_t, set_error, err_input
    use hillstab_scene, only: scene_t, task_chart, task_points, task_coefficient, task_lyapunov
+   use hillstab_format, only: integer_text
    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_char, c_null_char
    implicit none
    private
@@ -96,24 +97,16 @@ contains
       if (.not. known .or. need <= free) return
       select case (scene%task)
       case (task_chart, task_lyapunov)
-         where = "&chart: n_alpha, n_beta: "//int_text(int(scene%chart%n_alpha, int64))//" x "// &
-                 int_text(int(scene%chart%n_beta, int64))//" points"
+         where = "&chart: n_alpha, n_beta: "//integer_text(scene%chart%n_alpha)//" x "// &
+                 integer_text(scene%chart%n_beta)//" points"
       case (task_points)
-         where = "&points: file: "//int_text(int(size(scene%points, 2), int64))//" points"
+         where = "&points: file: "//integer_text(size(scene%points, 2))//" points"
       case default
-         where = "&coefficient: n_tau: "//int_text(int(scene%coefficient%n_tau, int64))//" rows"
+         where = "&coefficient: n_tau: "//integer_text(scene%coefficient%n_tau)//" rows"
       end select
       call set_error(error, err_input, scene%source//": "//where//" would write about "//size_text(need)// &
          " to '"//path//"', more than the "//size_text(free)//" free there")
    end subroutine check_output_room
-
-   pure function int_text(n) result(text)
-      integer(int64), intent(in) :: n
-      character(len=:), allocatable :: text
-      character(len=24) :: buffer
-      write (buffer, '(i0)') n
-      text = trim(buffer)
-   end function int_text
 
    !> Bytes as "12 MB" style text (decimal units).
    pure function size_text(bytes) result(text)

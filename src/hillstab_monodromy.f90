@@ -91,14 +91,17 @@ contains
       integer, intent(in) :: n         !! number of pieces
       integer, intent(in) :: sampling  !! sampling_endpoint | sampling_midpoint | sampling_average
       type(scaled_matrix_t) :: a
-      real(wp) :: q(n), h
+      real(wp) :: q(n), h, carry
       integer :: i
       call segment_coefficients(model, n, sampling, q)
       h = hill_period/n
       a = scaled_identity()
+      carry = 0.0_wp
       do i = 1, n
-         call multiply_transfer(a, q(i), h)
+         ! the log scale summed with compensation (see `multiply_transfer`)
+         call multiply_transfer(a, q(i), h, carry)
       end do
+      a%log_scale = a%log_scale - carry
    end function monodromy_segmented
 
    !> Trace of `monodromy_segmented`.

@@ -24,7 +24,7 @@ module hillstab_monodromy_rk
    use hillstab_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
       roundoff_level, propagator_condition, first_step_factor, next_local_tolerance
    use hillstab_stats, only: work_stats_t, add_work
-   use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
+   use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
    use hillstab_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
    use hillstab_rk, only: rk_system_t, rk_options_t, rk_step_t, rk_integrate, rk_dopri5, rk_dop853
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -92,7 +92,7 @@ contains
       type(even_odd_pair_t) :: pair
       type(work_stats_t) :: part
       real(wp) :: t, y(4), h_next, log_u, log_v, peak
-      integer :: e
+      integer :: e, e_u, e_v
       character(len=80) :: buffer
 
       stats = work_stats_t()
@@ -122,6 +122,8 @@ contains
       t = 0.0_wp
       log_u = 0.0_wp
       log_v = 0.0_wp
+      e_u = 0
+      e_v = 0
       peak = 0.0_wp
       do
          pair%peak_terms = 0.0_wp
@@ -137,12 +139,16 @@ contains
                     log_or_floor(pair%peak_terms(3)) + log_u + log_v)
          if (t == 1.0_wp) exit
          ! stopped by watch_growth: rescale each pair by a power of two and resume
+         ! (the exponents are counted as integers: a logarithm added at each rescaling
+         ! would round each time)
          e = exponent(maxval(abs(y(1:2))))
          y(1:2) = scale(y(1:2), -e)
-         log_u = log_u + e*log(2.0_wp)
+         e_u = e_u + e
+         log_u = e_u*log(2.0_wp)
          e = exponent(maxval(abs(y(3:4))))
          y(3:4) = scale(y(3:4), -e)
-         log_v = log_v + e*log(2.0_wp)
+         e_v = e_v + e
+         log_v = e_v*log(2.0_wp)
          options%h_initial = abs(h_next)
       end do
 
@@ -186,7 +192,7 @@ contains
          if (allocated(error)) exit
          tr = trace_of(m)
          call refine(ladder, tr, at_floor=local <= 1.001_wp*tolerance_floor .or. run == max_ladder_runs, &
-                     noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps)), &
+                     noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase_bound(model)), &
                      near_floor=local <= 1.0e3_wp*tolerance_floor)
          if (ladder%verdict /= refine_more) exit
          ! the first step down also divides by the propagator's condition (`first_step_factor`)

@@ -23,17 +23,17 @@ module hillstab_output
    use hillstab_kinds, only: wp, int64
    use hillstab_error, only: error_t, set_error, err_io
    use hillstab_floquet, only: floquet_t, largest_multiplier_modulus
-   use hillstab_format, only: put_es
+   use hillstab_format, only: put_es, integer_text, lower_case
    use hillstab_signals, only: watch_temp_file, forget_temp_file
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, c_associated, &
       c_size_t, c_f_pointer, c_loc
    implicit none
    private
-   public :: output_file_t, open_output, commit_output, discard_output, write_header, write_text
+   public :: output_file_t, open_output, commit_output, discard_output, finish_output, write_header, write_text
    public :: n_chart_columns, chart_column_names, chart_values, failed_chart_values, chart_text
    public :: chart_columns_text, default_chart_columns, find_chart_columns, write_records
    public :: chart_line_length, clamp_magnitude, log10_floor, real_columns, failed_log10_abs_s
-   public :: remove_file, is_directory
+   public :: remove_file, is_directory, joined_lines
 
    !> Magnitudes beyond this are written as ±clamp_magnitude with the overflow flag set.
    real(wp), parameter :: clamp_magnitude = 1.0e300_wp
@@ -127,24 +127,29 @@ contains
    !> Open `<path>.part<pid>` for writing; fails (err_io) when the place is not writable
    !> or `path` is a directory. With `binary`, the file is a byte stream: text lines
    !> (`write_text`, `write_header`) and then raw records (`write_records`).
-   subroutine open_output(file, path, error, binary)
+   subroutine open_output(file, path, error, binary, context)
       type(output_file_t), intent(out) :: file  !! the open temporary file
       character(len=*), intent(in) :: path  !! final file name
       type(error_t), allocatable, intent(out) :: error  !! err_io when the place is not writable
       logical, intent(in), optional :: binary  !! a byte stream (default: a text file)
+      !> put before the error message: what named the path (a task: "<scene>: &scene: output: ")
+      character(len=*), intent(in), optional :: context
       character(len=24) :: pid
+      character(len=:), allocatable :: prefix
+      prefix = ""
+      if (present(context)) prefix = context
       write (pid, '(i0)') c_getpid()
       file%path = path
       file%temp_path = path//".part"//trim(pid)
       if (present(binary)) file%binary = binary
       if (is_directory(path)) then
-         call set_error(error, err_io, "cannot write '"//path//"': it is a directory")
+         call set_error(error, err_io, prefix//"cannot write '"//path//"': it is a directory")
          return
       end if
       call set_errno(0)
       file%stream = c_fopen(c_string(file%temp_path), c_string("w"))
       if (.not. c_associated(file%stream)) then
-         call set_error(error, err_io, "cannot write '"//path//"': "//errno_text())
+         call set_error(error, err_io, prefix//"cannot write '"//path//"': "//errno_text())
          return
       end if
       call watch_temp_file(file%temp_path, file%slot)
@@ -187,6 +192,19 @@ contains
       end if
       call forget_temp_file(file%slot)
    end subroutine commit_output
+
+   !> End the writing of a file: commit it when `error` is unallocated (a failure to
+   !> commit comes back in `error`), else discard it and keep `error`.
+   subroutine finish_output(file, error)
+      type(output_file_t), intent(inout) :: file  !! the file written
+      !> in: the first failure while writing, if any; out: that one, or the commit's
+      type(error_t), allocatable, intent(inout) :: error
+      if (allocated(error)) then
+         call discard_output(file)
+      else
+         call commit_output(file, error)
+      end if
+   end subroutine finish_output
 
    !> Close and delete the temporary file; the final name is left as it was.
    subroutine discard_output(file)
@@ -237,7 +255,7 @@ contains
          do k = 1, len_trim(columns)
             if (columns(k:k) == " ") n_columns = n_columns + 1
          end do
-         layout = [character(len=400) :: &
+         layout = [character(len=400 + len(file%path)) :: &
             "format: binary: after the first "//mark//" bytes (this header) come "// &
             integer_text(records(1))//" x "//integer_text(records(2))//" records of "//integer_text(n_columns)// &
             " float64 (native byte order, little-endian on x86-64 and ARM), the columns below, point by point "// &
@@ -294,14 +312,6 @@ contains
       end function replaced
    end subroutine write_header
 
-   pure function integer_text(n) result(text)
-      integer, intent(in) :: n
-      character(len=:), allocatable :: text
-      character(len=24) :: buffer
-      write (buffer, '(i0)') n
-      text = trim(buffer)
-   end function integer_text
-
    !> Write one line of text (a newline is added). After a failed write the file is
    !> incomplete: this and every later write report the failure, and commit_output
    !> deletes the file.
@@ -326,6 +336,35 @@ contains
       if (allocated(file%failure)) call set_error(error, err_io, "cannot write '"//file%path//"': "// &
          file%failure//" (the file is left as it was)")
    end subroutine write_text
+
+   !> `lines` (each trimmed) joined by new lines, after a leading new line if `separate`,
+   !> without a final one: a block of rows written by one `write_text` (one write per line
+   !> would cost more than a chart point of method auto).
+   pure function joined_lines(lines, separate) result(text)
+      character(len=*), intent(in) :: lines(:)  !! the rows
+      logical, intent(in) :: separate  !! start with a new line (a blank line before the block)
+      character(len=:), allocatable :: text
+      integer :: j, n, pos, total
+      total = merge(1, 0, separate) + max(size(lines) - 1, 0)
+      do j = 1, size(lines)
+         total = total + len_trim(lines(j))
+      end do
+      allocate (character(len=total) :: text)
+      pos = 0
+      if (separate) then
+         text(1:1) = new_line("a")
+         pos = 1
+      end if
+      do j = 1, size(lines)
+         if (j > 1) then
+            text(pos + 1:pos + 1) = new_line("a")
+            pos = pos + 1
+         end if
+         n = len_trim(lines(j))
+         text(pos + 1:pos + n) = lines(j)(1:n)
+         pos = pos + n
+      end do
+   end function joined_lines
 
    !> Write records of reals as raw float64 (binary files only), column-major: one
    !> record per column of `values`.
@@ -400,10 +439,10 @@ contains
             if (index(" ,", text(j + 1:j + 1)) > 0) exit
             j = j + 1
          end do
-         word = lower_text(text(i:j))
+         word = lower_case(text(i:j))
          found = 0
          do k = 1, size(available)
-            if (lower_text(trim(names(available(k)))) == word) found = available(k)
+            if (lower_case(trim(names(available(k)))) == word) found = available(k)
          end do
          if (found == 0 .or. any(ids == found)) then
             bad = text(i:j)
@@ -427,16 +466,6 @@ contains
          text = text//trim(names(ids(k)))
       end do
    end function chart_columns_text
-
-   pure function lower_text(text) result(low)
-      character(len=*), intent(in) :: text
-      character(len=len(text)) :: low
-      integer :: i
-      low = text
-      do i = 1, len(text)
-         if (text(i:i) >= "A" .and. text(i:i) <= "Z") low(i:i) = achar(iachar(text(i:i)) + 32)
-      end do
-   end function lower_text
 
    !> The value of every column (`chart_column_names` order) at one computed point: S and
    !> lambda_max clamped to ±1e300, flags 1 or 0, stable 0.5 when marginal, mu_per_s = μ ω/π

@@ -24,6 +24,7 @@ module hillstab_pendulum_analysis
    use hillstab_rk, only: rk_options_t, rk_step_t, rk_integrate, rk_dense_value, rk_dop853
    use hillstab_pendulum, only: pendulum_t, pendulum_system_t, pendulum_bounce_monodromy, pendulum_angle, &
       pendulum_energy, pendulum_energy_scale, pendulum_atol, px, pvx
+   use hillstab_lapack, only: dgeev
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -62,18 +63,6 @@ module hillstab_pendulum_analysis
    contains
       procedure :: observe => watch_observe
    end type pendulum_watch_t
-
-   interface
-      !> LAPACK: eigenvalues and right eigenvectors of a general real matrix.
-      subroutine dgeev(jobvl, jobvr, n, a, lda, wr, wi, vl, ldvl, vr, ldvr, work, lwork, info)
-         import :: wp
-         character, intent(in) :: jobvl, jobvr
-         integer, intent(in) :: n, lda, ldvl, ldvr, lwork
-         real(wp), intent(inout) :: a(lda, *)
-         real(wp), intent(out) :: wr(*), wi(*), vl(ldvl, *), vr(ldvr, *), work(*)
-         integer, intent(out) :: info
-      end subroutine dgeev
-   end interface
 
 contains
 

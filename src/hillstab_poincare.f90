@@ -29,7 +29,8 @@ module hillstab_poincare
    use hillstab_error, only: error_t, set_error, err_invalid_parameter
    use hillstab_stats, only: work_stats_t
    use hillstab_rk, only: rk_step_t, rk_options_t, rk_integrate, rk_dense_value, rk_dop853
-   use hillstab_pendulum, only: pendulum_t, pendulum_system_t, pendulum_atol, pendulum_energy, px, pz, pvx, pvz
+   use hillstab_pendulum, only: pendulum_t, pendulum_system_t, pendulum_atol, pendulum_energy, pendulum_energy_scale, &
+      px, pz, pvx, pvz
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -39,7 +40,9 @@ module hillstab_poincare
    type :: section_t
       integer :: n = 0                        !! number of crossings
       real(wp), allocatable :: points(:, :)   !! (3, n): t [s], r [m], r' [m/s] at each crossing
-      real(wp) :: energy_drift = 0.0_wp       !! |E(t_end) − E(0)| / |E(0)| (1 when E(0) = 0: absolute)
+      !> |E(t_end) − E(0)| over the sum of the energy terms' magnitudes at t = 0
+      !> (`pendulum_energy_scale`, as in hillstab_lyapunov and task series)
+      real(wp) :: energy_drift = 0.0_wp
       type(work_stats_t) :: stats             !! steps, rejections, f-evaluations
    end type section_t
 
@@ -88,7 +91,7 @@ contains
          error%message = "poincare_section: "//error%message
          return
       end if
-      section%energy_drift = abs(pendulum_energy(p, y) - e0)/merge(abs(e0), 1.0_wp, e0 /= 0.0_wp)
+      section%energy_drift = abs(pendulum_energy(p, y) - e0)/max(pendulum_energy_scale(p, y0), tiny(1.0_wp))
    end subroutine poincare_section
 
    !> The observer. A crossing of x from negative to non-negative with z > 0 inside the step

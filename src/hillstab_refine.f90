@@ -28,7 +28,7 @@ module hillstab_refine
       next_local_tolerance
    public :: refine_more, refine_met, refine_roundoff
 
-   !> Safety factor of `roundoff_level`, as method auto's (calibrated there on β = 0,
+   !> Safety factor of `roundoff_level` (calibrated with method auto on β = 0,
    !> α = 9.8 … 9.86, where S = 2 exactly).
    real(wp), parameter :: roundoff_safety = 0.1_wp
 
@@ -108,19 +108,34 @@ contains
       c = u*u + dv*dv + 2.0_wp*abs(v*du)
    end function propagator_condition
 
-   !> Round-off level of S relative to max(1, |S|) for a propagation of `n_steps` steps whose
-   !> propagator reached the scaled condition e^{log_peak}: ε √N e^{log_peak}/max(1, |S|)
-   !> times a safety factor (method auto's model). Every rounding of the propagator, and the
-   !> rounding of Q itself, is amplified by that condition; no integrator in double precision
-   !> gets S more accurately (e.g. β = 0 with α → π², Mathieu q = 20 on its transition curves).
-   elemental real(wp) function roundoff_level(log_peak, log_abs_s, n_steps) result(level)
+   !> Round-off level of S relative to max(1, |S|), the one model of every exact method
+   !> (auto, Magnus, rk, gsl), for a propagation of `n_steps` steps whose propagator reached
+   !> the scaled condition κ = e^{log_peak}, over a period that accumulates the phase (or
+   !> growth exponent) Φ ≤ `phase` (hillstab_coefficient `phase_bound`):
+   !>
+   !>   0.1 ε √N κ/max(1, |S|) + 2 ε Φ.
+   !>
+   !> The first term: every rounding of the propagator, and the rounding of Q itself, is
+   !> amplified by its condition; no integrator in double precision gets S more accurately
+   !> (β = 0 with α → π², Mathieu q = 20 on its transition curves). Its safety factor 0.1
+   !> was calibrated on β = 0, α = 9.8 … 9.86, where S = 2 exactly. It assumes that the
+   !> roundings of successive steps are independent: the integrators make them so (exact
+   !> step times, compensated Magnus products), where a systematic error per step would
+   !> grow like ε N instead.
+   !>
+   !> The second term: Q is computed from rounded constants, a systematic relative error of
+   !> about 2ε that every method sees alike; it moves the phase by ε Φ, and S by up to
+   !> 2 ε Φ relative to max(1, |S|) (S = 2 cos Φ for an oscillation; ln|S| ≈ Φ for growth,
+   !> which a double also stores only to ε Φ). With |β| = 3e5 at α = 9.86 that is 1.1e-12
+   !> (rk and gsl both settle 4e-13 to 6e-13 away from the reference there); at β = −1e6,
+   !> α → π², 2.6e-12.
+   elemental real(wp) function roundoff_level(log_peak, log_abs_s, n_steps, phase) result(level)
       real(wp), intent(in) :: log_peak   !! ln of the largest `propagator_condition` along the path
       real(wp), intent(in) :: log_abs_s  !! ln|S|
       integer, intent(in) :: n_steps     !! steps of the propagation
-      real(wp) :: log_level
-      log_level = log(roundoff_safety*epsilon(1.0_wp)*sqrt(real(max(n_steps, 1), wp))) + log_peak &
-                  - max(0.0_wp, log_abs_s)
-      level = exp(min(log_level, log_huge))
+      real(wp), intent(in) :: phase      !! bound of the phase or growth over the period (`phase_bound`)
+      level = roundoff_safety*epsilon(1.0_wp)*sqrt(real(max(n_steps, 1), wp)) &
+              *exp(min(log_peak - max(0.0_wp, log_abs_s), log_huge)) + 2.0_wp*epsilon(1.0_wp)*phase
    end function roundoff_level
 
    !> |S_a − S_b|/max(1, |S_a|), through ln|S| when S is large or overflows; huge when the

@@ -15,13 +15,14 @@
 !> ignored, so one file may hold several. Reading tolerates `#` lines before a group,
 !> which lets a run be repeated from the header of its own output file.
 module hillstab_scene
-   use hillstab_kinds, only: wp, int64, pi2
+   use hillstab_kinds, only: wp, int64, pi, pi2
    use hillstab_error, only: error_t, set_error, err_input
    use hillstab_coefficient, only: model_elastic, model_mathieu, model_name, sampling_endpoint, &
       sampling_average, sampling_name
    use hillstab_monodromy, only: method_t, method_auto, method_name, method_from_name, method_magnus4, &
       method_magnus6, method_rk, method_gsl
    use hillstab_output, only: default_chart_columns, find_chart_columns, chart_columns_text
+   use hillstab_format, only: integer_text, lower => lower_case
    use hillstab_units, only: physical_t, physical_alpha, physical_beta, physical_epsilon, physical_nu, &
       check_physical, equilibrium_length
    use, intrinsic :: iso_fortran_env, only: iostat_end
@@ -33,7 +34,8 @@ module hillstab_scene
       scene_namelist, default_scene
    public :: task_chart, task_points, task_coefficient, task_boundaries, task_series, task_name
    public :: task_lyapunov, task_poincare, poincare_plan_t, max_poincare_orbits
-   public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas
+   public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas, output_path, scene_columns
+   public :: scene_header
 
    integer, parameter :: task_chart = 1        !! stability chart over an (α, β) grid
    integer, parameter :: task_points = 2       !! the chart's columns at listed (α, β) points
@@ -61,6 +63,9 @@ module hillstab_scene
    real(wp), parameter, public :: max_integrated_magnitude = 1.0e8_wp
    !> Largest |α|, |β| of task boundaries.
    real(wp), parameter, public :: max_boundaries_magnitude = 1.0e6_wp
+   !> Smallest β of the tasks that simulate the pendulum (series, lyapunov, poincare):
+   !> below it ω = √(g π²/(ρ β)) and the time scales overflow.
+   real(wp), parameter, public :: min_pendulum_beta = 1.0e-8_wp
    !> Largest damping ε.
    real(wp), parameter, public :: max_epsilon = 100.0_wp
    !> Largest number of points in a points file.
@@ -173,16 +178,18 @@ module hillstab_scene
    !>
    !>```fortran
    !> call begin_group_read(unit, reader)
-   !> read (unit, nml=chart, iostat=ios, iomsg=msg)
-   !> do while (next_item(reader, unit, group, ios))
+   !> read (unit, nml=chart, iostat=reader%ios, iomsg=reader%msg)
+   !> do while (next_item(reader, unit, group))
    !>    read (reader%record, nml=chart, iostat=reader%stat, iomsg=reader%message)
    !> end do
-   !> call end_group_read(reader, bad)
+   !> call end_group_read(reader, unit, scene%source, group, names, kinds, error)
    !>```
    !>
    !> When the group read fails, each item is tried alone to find the first bad one.
    type :: group_read_t
       type(fpe_state_t) :: fpe                     !! halting modes to restore
+      integer :: ios = 0                           !! iostat of the group read
+      character(len=512) :: msg = ""               !! iomsg of the group read
       type(item_t), allocatable :: items(:)        !! the items of the group (after a failed read)
       integer :: k = 0                             !! the item being tried
       integer :: stat = 0                          !! iostat of the item read
@@ -208,6 +215,17 @@ contains
       case default; name = "unknown"
       end select
    end function task_name
+
+   !> The file a scene's task writes: `<output>_<task>.dat` (`.bin` for format = 'binary').
+   pure function output_path(scene) result(path)
+      type(scene_t), intent(in) :: scene  !! the scene
+      character(len=:), allocatable :: path
+      if (scene%binary) then
+         path = scene%output//"_"//task_name(scene%task)//".bin"
+      else
+         path = scene%output//"_"//task_name(scene%task)//".dat"
+      end if
+   end function output_path
 
    !> The i-th of n equally spaced values from lo to hi (n = 1: lo).
    pure real(wp) function grid_value(lo, hi, n, i)
@@ -256,7 +274,7 @@ contains
       character(len=*), intent(in) :: path       !! scene file
       type(scene_t), intent(out) :: scene        !! the validated scene
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable; unallocated on success
-      integer :: unit, ios
+      integer :: unit
       scene = default_scene(path)
       call open_scene_copy(path, unit, error)
       if (allocated(error)) return
@@ -358,10 +376,24 @@ contains
    subroutine check_columns(scene, error)
       type(scene_t), intent(in) :: scene
       type(error_t), allocatable, intent(out) :: error
-      integer, allocatable :: available(:), ids(:)
+      integer, allocatable :: ids(:)
+      if (scene%task /= task_chart .and. scene%task /= task_points) return
+      call scene_columns(scene, ids, error)
+   end subroutine check_columns
+
+   !> The columns a chart or points file of this scene holds: `&scene columns` when given,
+   !> else all the task offers (`default_chart_columns`).
+   subroutine scene_columns(scene, ids, error)
+      type(scene_t), intent(in) :: scene  !! a chart or points scene
+      integer, allocatable, intent(out) :: ids(:)  !! indices into hillstab_output's chart_column_names, in file order
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming &scene columns when a name is not offered
+      integer, allocatable :: available(:)
       character(len=:), allocatable :: bad
-      if (len_trim(scene%columns) == 0 .or. (scene%task /= task_chart .and. scene%task /= task_points)) return
       available = default_chart_columns(scene%epsilon > 0.0_wp, scene%model == model_elastic, scene%physical)
+      if (len_trim(scene%columns) == 0) then
+         ids = available
+         return
+      end if
       call find_chart_columns(scene%columns, available, ids, bad)
       if (len(bad) > 0) then
          call fail(error, scene%source, "scene", "columns", "'"//bad//"' is not a column of this file or is "// &
@@ -369,7 +401,7 @@ contains
       else if (size(ids) == 0) then
          call fail(error, scene%source, "scene", "columns", "no column named")
       end if
-   end subroutine check_columns
+   end subroutine scene_columns
 
    !> `&scene`: task, model, method and its settings, damping, output prefix.
    subroutine read_scene_group(unit, this, error)
@@ -388,9 +420,7 @@ contains
       character(len=*), parameter :: kinds(11) = [character(len=17) :: "a quoted name", "a quoted name", &
          "a quoted name", "an integer", "a quoted name", "a real number", "a real number", "a quoted path", &
          "quoted names", "a quoted name", ".true. or .false."]
-      integer :: ios, k
-      character(len=512) :: msg
-      character(len=:), allocatable :: bad
+      integer :: k
       type(group_read_t) :: reader
 
       task = task_name(this%task); model = model_name(this%model); method = method_name(this%method%kind)
@@ -398,12 +428,11 @@ contains
       tolerance = this%method%tolerance; epsilon = this%epsilon; output = this%output
       columns = this%columns; format = merge("binary", "text  ", this%binary); names_line = this%names_line
       call begin_group_read(unit, reader)
-      read (unit, nml=scene, iostat=ios, iomsg=msg)
-      do while (next_item(reader, unit, group, ios))
+      read (unit, nml=scene, iostat=reader%ios, iomsg=reader%msg)
+      do while (next_item(reader, unit, group))
          read (reader%record, nml=scene, iostat=reader%stat, iomsg=reader%message)
       end do
-      call end_group_read(reader, bad)
-      call check_read(unit, this%source, group, names, kinds, ios, msg, bad, error)
+      call end_group_read(reader, unit, this%source, group, names, kinds, error)
       if (allocated(error)) return
 
       this%task = -1
@@ -511,9 +540,8 @@ contains
       character(len=*), parameter :: names(5) = [character(len=5) :: "r0", "g", "omega", "a", "kappa"]
       character(len=*), parameter :: kinds(5) = [character(len=33) :: "a real number", "a real number", &
          "a real number", "a list of at most 64 real numbers", "a real number"]
-      integer :: ios, n, k
-      character(len=512) :: msg
-      character(len=:), allocatable :: bad, variable
+      integer :: n, k
+      character(len=:), allocatable :: variable
       type(group_read_t) :: reader
       logical :: given_a, given_r0
       type(physical_t) :: p
@@ -522,12 +550,11 @@ contains
       r0 = scene%pendulum%r0; g = scene%pendulum%g; omega = scene%pendulum%omega; kappa = scene%pendulum%kappa
       a = unset_alpha
       call begin_group_read(unit, reader)
-      read (unit, nml=physical, iostat=ios, iomsg=msg)
-      do while (next_item(reader, unit, group, ios))
+      read (unit, nml=physical, iostat=reader%ios, iomsg=reader%msg)
+      do while (next_item(reader, unit, group))
          read (reader%record, nml=physical, iostat=reader%stat, iomsg=reader%message)
       end do
-      call end_group_read(reader, bad)
-      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
+      call end_group_read(reader, unit, scene%source, group, names, kinds, error)
       if (allocated(error)) return
 
       if (.not. group_sets(unit, group, "omega")) then
@@ -611,20 +638,16 @@ contains
          "beta_min", "beta_max", "n_beta"]
       character(len=*), parameter :: kinds(6) = [character(len=13) :: "a real number", "a real number", &
          "an integer", "a real number", "a real number", "an integer"]
-      integer :: ios
-      character(len=512) :: msg
-      character(len=:), allocatable :: bad
       type(group_read_t) :: reader
 
       alpha_min = scene%chart%alpha_min; alpha_max = scene%chart%alpha_max; n_alpha = scene%chart%n_alpha
       beta_min = scene%chart%beta_min; beta_max = scene%chart%beta_max; n_beta = scene%chart%n_beta
       call begin_group_read(unit, reader)
-      read (unit, nml=chart, iostat=ios, iomsg=msg)
-      do while (next_item(reader, unit, group, ios))
+      read (unit, nml=chart, iostat=reader%ios, iomsg=reader%msg)
+      do while (next_item(reader, unit, group))
          read (reader%record, nml=chart, iostat=reader%stat, iomsg=reader%message)
       end do
-      call end_group_read(reader, bad)
-      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
+      call end_group_read(reader, unit, scene%source, group, names, kinds, error)
       if (allocated(error)) return
 
       call check_range(scene%source, group, "alpha", alpha_min, alpha_max, n_alpha, error)
@@ -648,9 +671,6 @@ contains
       character(len=*), parameter :: group = "points"
       character(len=*), parameter :: names(1) = [character(len=4) :: "file"]
       character(len=*), parameter :: kinds(1) = [character(len=13) :: "a quoted path"]
-      integer :: ios
-      character(len=512) :: msg
-      character(len=:), allocatable :: bad
       type(group_read_t) :: reader
 
       if (size(scene%amplitudes) > 0) then
@@ -665,12 +685,11 @@ contains
       end if
       file = scene%points_file
       call begin_group_read(unit, reader)
-      read (unit, nml=points, iostat=ios, iomsg=msg)
-      do while (next_item(reader, unit, group, ios))
+      read (unit, nml=points, iostat=reader%ios, iomsg=reader%msg)
+      do while (next_item(reader, unit, group))
          read (reader%record, nml=points, iostat=reader%stat, iomsg=reader%message)
       end do
-      call end_group_read(reader, bad)
-      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
+      call end_group_read(reader, unit, scene%source, group, names, kinds, error)
       if (allocated(error)) return
       if (len_trim(file) == 0) then
          call fail(error, scene%source, group, "file", "no points file given")
@@ -692,9 +711,7 @@ contains
       character(len=*), parameter :: names(5) = [character(len=7) :: "alphas", "beta", "n_tau", "tau_min", "tau_max"]
       character(len=*), parameter :: kinds(5) = [character(len=33) :: "a list of at most 64 real numbers", "a real number", &
          "an integer", "a real number", "a real number"]
-      integer :: ios, n, k
-      character(len=512) :: msg
-      character(len=:), allocatable :: bad
+      integer :: n, k
       type(group_read_t) :: reader
 
       ! a namelist read overwrites only the elements given: start from an empty list
@@ -717,12 +734,11 @@ contains
          end if
       end if
       call begin_group_read(unit, reader)
-      read (unit, nml=coefficient, iostat=ios, iomsg=msg)
-      do while (next_item(reader, unit, group, ios))
+      read (unit, nml=coefficient, iostat=reader%ios, iomsg=reader%msg)
+      do while (next_item(reader, unit, group))
          read (reader%record, nml=coefficient, iostat=reader%stat, iomsg=reader%message)
       end do
-      call end_group_read(reader, bad)
-      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
+      call end_group_read(reader, unit, scene%source, group, names, kinds, error)
       if (allocated(error)) return
       if (size(scene%amplitudes) > 0) then
          n = size(scene%amplitudes)
@@ -778,10 +794,8 @@ contains
       subroutine require_finite_or_unset(k, error)
          integer, intent(in) :: k
          type(error_t), allocatable, intent(out) :: error
-         character(len=16) :: index_text
          if (.not. ieee_is_finite(alphas(k))) then
-            write (index_text, '(i0)') k
-            call fail(error, scene%source, group, "alphas", "value "//trim(index_text)//" is not a finite number")
+            call fail(error, scene%source, group, "alphas", "value "//integer_text(k)//" is not a finite number")
          end if
       end subroutine require_finite_or_unset
    end subroutine read_coefficient_group
@@ -801,21 +815,18 @@ contains
          "a real number", "an integer", "an integer", "a real number", "a real number", "a real number", &
          "a real number"]
       real(wp) :: values(7)
-      integer :: ios, k
-      character(len=512) :: msg
-      character(len=:), allocatable :: bad
+      integer :: k
       type(group_read_t) :: reader
       associate (plan => scene%series)
          alpha = plan%alpha; beta = plan%beta; phi0 = plan%phi0; periods = plan%periods
          samples_per_period = plan%samples_per_period; r0 = plan%r0; g = plan%g; vx0 = plan%vx0; vz0 = plan%vz0
       end associate
       call begin_group_read(unit, reader)
-      read (unit, nml=series, iostat=ios, iomsg=msg)
-      do while (next_item(reader, unit, group, ios))
+      read (unit, nml=series, iostat=reader%ios, iomsg=reader%msg)
+      do while (next_item(reader, unit, group))
          read (reader%record, nml=series, iostat=reader%stat, iomsg=reader%message)
       end do
-      call end_group_read(reader, bad)
-      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
+      call end_group_read(reader, unit, scene%source, group, names, kinds, error)
       if (allocated(error)) return
       values = [alpha, beta, phi0, r0, g, vx0, vz0]
       do k = 1, 7
@@ -834,7 +845,7 @@ contains
       else if (beta <= 0.0_wp .or. beta >= pi2) then
          call fail(error, scene%source, group, "beta", "must lie in (0, pi**2 = "//real_text(pi2)// &
             "), the physical domain (r0 > 0), got "//real_text(beta))
-      else if (beta < 1.0e-8_wp) then
+      else if (beta < min_pendulum_beta) then
          call fail(error, scene%source, group, "beta", "must be >= 1.0e-8 (smaller values make the "// &
             "pendulum's time scales overflow), got "//real_text(beta))
       else if (periods < 1) then
@@ -856,17 +867,11 @@ contains
          call fail(error, scene%source, group, merge("vx0", "vz0", abs(vx0) > 1.0e50_wp), "must lie in [-1e50, 1e50]")
       else if (int(periods, int64)*samples_per_period + 1 > max_series_lines) then
          call fail(error, scene%source, group, "periods", "periods * samples_per_period + 1 = "// &
-            trim(int64_text(int(periods, int64)*samples_per_period + 1))// &
+            integer_text(int(periods, int64)*samples_per_period + 1)// &
             " data lines exceed the limit of 1e8; lower periods or samples_per_period")
       end if
       if (allocated(error)) return
       scene%series = series_plan_t(alpha, beta, phi0, periods, samples_per_period, r0, g, vx0, vz0)
-   contains
-      function int64_text(n) result(text)
-         integer(int64), intent(in) :: n
-         character(len=24) :: text
-         write (text, '(i0)') n
-      end function int64_text
    end subroutine read_series_group
 
    !> Read the points file: one `alpha beta` pair per line, `#` starts a comment,
@@ -1087,15 +1092,14 @@ contains
       rewind (unit)
    end subroutine begin_group_read
 
-   !> After a failed group read (`ios` > 0): set `reader%record` to the next item alone
-   !> and return true, until an item fails alone (`reader%stat` /= 0) or none is left.
-   logical function next_item(reader, unit, group, ios)
+   !> After a failed group read (`reader%ios` > 0): set `reader%record` to the next item
+   !> alone and return true, until an item fails alone (`reader%stat` /= 0) or none is left.
+   logical function next_item(reader, unit, group)
       type(group_read_t), intent(inout) :: reader
       integer, intent(in) :: unit                  !! the scene file
       character(len=*), intent(in) :: group        !! group name
-      integer, intent(in) :: ios                   !! iostat of the group read
       next_item = .false.
-      if (ios <= 0) return
+      if (reader%ios <= 0) return
       if (.not. allocated(reader%items)) then
          call group_items(unit, group, reader%items)
          reader%bad = ""
@@ -1110,13 +1114,17 @@ contains
       next_item = .true.
    end function next_item
 
-   !> End a group read: halting restored; `bad` is the first item that fails alone
-   !> ("" when none does, unallocated when the group read succeeded).
-   subroutine end_group_read(reader, bad)
+   !> End a group read: halting restored, then its outcome checked (`check_read`, with the
+   !> first item that fails alone: "" when none does, none when the group read succeeded).
+   subroutine end_group_read(reader, unit, path, group, names, kinds, error)
       type(group_read_t), intent(inout) :: reader
-      character(len=:), allocatable, intent(out) :: bad
+      integer, intent(in) :: unit               !! the scene file
+      character(len=*), intent(in) :: path, group
+      character(len=*), intent(in) :: names(:)  !! variables of the group
+      character(len=*), intent(in) :: kinds(:)  !! what each variable holds, for the message
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
       call halting_restore(reader%fpe)
-      if (allocated(reader%bad)) bad = reader%bad
+      call check_read(unit, path, group, names, kinds, reader%ios, reader%msg, reader%bad, error)
    end subroutine end_group_read
 
    !> Turn the status of a namelist read into an error naming file, group and variable.
@@ -1471,17 +1479,6 @@ contains
       is_name_char = is_letter(c) .or. (c >= "0" .and. c <= "9") .or. c == "_"
    end function is_name_char
 
-   !> Lower-case copy of a string.
-   pure function lower(text) result(low)
-      character(len=*), intent(in) :: text
-      character(len=len(text)) :: low
-      integer :: i
-      low = text
-      do i = 1, len(text)
-         if (text(i:i) >= "A" .and. text(i:i) <= "Z") low(i:i) = achar(iachar(text(i:i)) + 32)
-      end do
-   end function lower
-
    !> The variable name of an item `name(sub) = value`, lower case.
    pure function item_name(item) result(name)
       character(len=*), intent(in) :: item
@@ -1631,15 +1628,6 @@ contains
       end if
    end subroutine check_alpha_domain
 
-   !> Decimal text of an integer.
-   pure function integer_text(n) result(text)
-      integer, intent(in) :: n  !! the integer
-      character(len=:), allocatable :: text
-      character(len=24) :: buffer
-      write (buffer, '(i0)') n
-      text = trim(buffer)
-   end function integer_text
-
    !> Shortest decimal text that reads back to exactly x (plain notation for
    !> 1e-4 <= |x| < 1e15, else mantissa and exponent), e.g. 9.8, 0.0, 1.0e-10.
    function real_text(x) result(text)
@@ -1729,10 +1717,7 @@ contains
       first = first//" /"
       select case (scene%task)
       case (task_chart, task_boundaries)
-         second = "&chart alpha_min = "//real_text(scene%chart%alpha_min)// &
-            ", alpha_max = "//real_text(scene%chart%alpha_max)//", n_alpha = "//integer_text(scene%chart%n_alpha)// &
-            ", beta_min = "//real_text(scene%chart%beta_min)//", beta_max = "//real_text(scene%chart%beta_max)// &
-            ", n_beta = "//integer_text(scene%chart%n_beta)//" /"
+         second = chart_text(scene%chart)
       case (task_points)
          if (size(scene%amplitudes) > 0) then
             second = "&points /"
@@ -1778,6 +1763,33 @@ contains
       lines(2) = second
    end function scene_namelist
 
+   !> The lines an output file's header holds: `title`, the scene file, the effective scene
+   !> (`scene_namelist`: given back as a scene, the file repeats its run), then `extra`.
+   function scene_header(scene, title, extra) result(lines)
+      type(scene_t), intent(in) :: scene  !! the scene of the run
+      character(len=*), intent(in) :: title  !! the first line: the program, its version, what the file holds
+      character(len=*), intent(in) :: extra(:)  !! the lines after the namelist groups
+      character(len=:), allocatable :: lines(:)
+      character(len=:), allocatable :: groups(:), source_line
+      groups = scene_namelist(scene)
+      source_line = "scene file: "//scene%source//" (the namelist lines below repeat this run)"
+      allocate (character(len=max(len(title), len(source_line), len(groups), len(extra))) :: &
+         lines(2 + size(groups) + size(extra)))
+      lines(1) = title
+      lines(2) = source_line
+      lines(3:2 + size(groups)) = groups
+      lines(3 + size(groups):) = extra
+   end function scene_header
+
+   !> The `&chart` line of the effective scene.
+   function chart_text(grid) result(text)
+      type(chart_grid_t), intent(in) :: grid
+      character(len=:), allocatable :: text
+      text = "&chart alpha_min = "//real_text(grid%alpha_min)//", alpha_max = "//real_text(grid%alpha_max)// &
+         ", n_alpha = "//integer_text(grid%n_alpha)//", beta_min = "//real_text(grid%beta_min)// &
+         ", beta_max = "//real_text(grid%beta_max)//", n_beta = "//integer_text(grid%n_beta)//" /"
+   end function chart_text
+
    !> The `&series` line of the effective scene.
    function series_text(plan) result(text)
       type(series_plan_t), intent(in) :: plan
@@ -1803,10 +1815,7 @@ contains
             fourth = "&points file = "//quoted(scene%points_file)//" /"
          else
             third = "&lyapunov over = 'chart' /"
-            fourth = "&chart alpha_min = "//real_text(scene%chart%alpha_min)// &
-               ", alpha_max = "//real_text(scene%chart%alpha_max)//", n_alpha = "//integer_text(scene%chart%n_alpha)// &
-               ", beta_min = "//real_text(scene%chart%beta_min)//", beta_max = "//real_text(scene%chart%beta_max)// &
-               ", n_beta = "//integer_text(scene%chart%n_beta)//" /"
+            fourth = chart_text(scene%chart)
          end if
       else
          third = "&poincare phi0s = "//real_text(scene%poincare%phi0s(1))
@@ -1838,19 +1847,15 @@ contains
       character(len=*), parameter :: group = "lyapunov"
       character(len=*), parameter :: names(1) = [character(len=4) :: "over"]
       character(len=*), parameter :: kinds(1) = [character(len=13) :: "a quoted name"]
-      integer :: ios
-      character(len=512) :: msg
-      character(len=:), allocatable :: bad
       type(group_read_t) :: reader
       over = merge("points", "chart ", scene%lyapunov_points)
       if (.not. group_present(unit, group)) return
       call begin_group_read(unit, reader)
-      read (unit, nml=lyapunov, iostat=ios, iomsg=msg)
-      do while (next_item(reader, unit, group, ios))
+      read (unit, nml=lyapunov, iostat=reader%ios, iomsg=reader%msg)
+      do while (next_item(reader, unit, group))
          read (reader%record, nml=lyapunov, iostat=reader%stat, iomsg=reader%message)
       end do
-      call end_group_read(reader, bad)
-      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
+      call end_group_read(reader, unit, scene%source, group, names, kinds, error)
       if (allocated(error)) return
       select case (lower(trim(over)))
       case ("chart"); scene%lyapunov_points = .false.
@@ -1875,10 +1880,19 @@ contains
                   why//real_text(pi2)//")")
                return
             end if
+            if (scene%points(2, k) < min_pendulum_beta) then
+               call fail(error, scene%source, "points", "file", "point "//integer_text(k)//" of "// &
+                  scene%points_file//" has beta = "//real_text(scene%points(2, k))//", below "// &
+                  real_text(min_pendulum_beta)//" (smaller values make the pendulum's time scales overflow)")
+               return
+            end if
          end do
       else if (scene%chart%beta_min <= 0.0_wp) then
          call fail(error, scene%source, "chart", "beta_min", "must be > 0"//why//real_text(pi2)//"), got "// &
             real_text(scene%chart%beta_min))
+      else if (scene%chart%beta_min < min_pendulum_beta) then
+         call fail(error, scene%source, "chart", "beta_min", "must be >= "//real_text(min_pendulum_beta)// &
+            " (smaller values make the pendulum's time scales overflow), got "//real_text(scene%chart%beta_min))
       else if (scene%chart%beta_max >= pi2) then
          call fail(error, scene%source, "chart", "beta_max", "must be < pi**2"//why//real_text(pi2)//"), got "// &
             real_text(scene%chart%beta_max))
@@ -1897,25 +1911,21 @@ contains
       character(len=*), parameter :: names(2) = [character(len=11) :: "phi0s", "same_energy"]
       character(len=*), parameter :: kinds(2) = [character(len=33) :: "a list of at most 64 real numbers", "a logical"]
       real(wp), parameter :: unset = -huge(1.0_wp)
-      integer :: ios, n, k
-      character(len=512) :: msg
-      character(len=:), allocatable :: bad
+      integer :: n, k
       type(group_read_t) :: reader
       phi0s = unset
       same_energy = scene%poincare%same_energy
-      ios = 0
       ! the group is optional; a list it gives replaces the default list whole
       if (.not. group_sets(unit, group, "phi0s")) phi0s(:size(scene%poincare%phi0s)) = scene%poincare%phi0s
       if (group_present(unit, group)) then
          call begin_group_read(unit, reader)
-         read (unit, nml=poincare, iostat=ios, iomsg=msg)
-         do while (next_item(reader, unit, group, ios))
+         read (unit, nml=poincare, iostat=reader%ios, iomsg=reader%msg)
+         do while (next_item(reader, unit, group))
             read (reader%record, nml=poincare, iostat=reader%stat, iomsg=reader%message)
          end do
-         call end_group_read(reader, bad)
+         call end_group_read(reader, unit, scene%source, group, names, kinds, error)
+         if (allocated(error)) return
       end if
-      call check_read(unit, scene%source, group, names, kinds, ios, msg, bad, error)
-      if (allocated(error)) return
       n = count(phi0s /= unset)
       if (n == 0) then
          call fail(error, scene%source, group, "phi0s", "no initial angle given")
@@ -1928,7 +1938,7 @@ contains
       do k = 1, n
          call require_finite(scene%source, group, "phi0s", phi0s(k), error)
          if (allocated(error)) return
-         if (abs(phi0s(k)) >= 3.141592653589793_wp) then
+         if (abs(phi0s(k)) >= pi) then
             call fail(error, scene%source, group, "phi0s", "each angle must lie in (-pi, pi), got "// &
                real_text(phi0s(k)))
             return

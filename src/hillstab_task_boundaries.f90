@@ -13,15 +13,15 @@
 !> towards α → π²); the file is written once all are done, curve by curve.
 module hillstab_task_boundaries
    use hillstab_kinds, only: wp, version_string
-   use hillstab_error, only: error_t, set_error, err_io, err_input, err_points_failed
+   use hillstab_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_status, only: status_ok, status_roundoff, status_failed
    use hillstab_coefficient, only: model_elastic, in_physical_domain, sampling_name
    use hillstab_monodromy, only: method_name, method_formula, method_segments
    use hillstab_hill_method, only: hill_boundary_t, hill_boundaries, coexistence_threshold
    use hillstab_boundaries, only: boundary_check_t, verify_boundary, approximate_root_t, approximate_boundaries, &
       mathieu_witness, beta_accuracy_factor, gsl_witness_max_q
-   use hillstab_scene, only: scene_t, scene_namelist, grid_value, real_text, integer_text, task_name
-   use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, write_text
+   use hillstab_scene, only: scene_t, scene_header, grid_value, real_text, integer_text, output_path
+   use hillstab_output, only: output_file_t, open_output, finish_output, discard_output, write_header, write_text
    use hillstab_format, only: format_es
    implicit none
    private
@@ -167,11 +167,8 @@ contains
             "undamped curves: kappa must be 0")
          return
       end if
-      call open_output(file, scene%output//"_"//task_name(scene%task)//".dat", cause)
-      if (allocated(cause)) then
-         call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
-         return
-      end if
+      call open_output(file, output_path(scene), error, context=scene%source//": &scene: output: ")
+      if (allocated(error)) return
       mathieu = scene%model /= model_elastic
       n_alpha = scene%chart%n_alpha
       allocate (per_alpha(n_alpha))
@@ -238,11 +235,7 @@ contains
          end do
          if (allocated(error)) exit
       end do
-      if (allocated(error)) then
-         call discard_output(file)
-         return
-      end if
-      call commit_output(file, error)
+      call finish_output(file, error)
       if (allocated(error)) return
       n_failed_alpha = count(per_alpha%failed)
       if (n_failed_alpha > 0 .or. n_failed_rows > 0) then
@@ -260,7 +253,7 @@ contains
          call set_error(error, err_points_failed, scene%source//": &scene: method: '"// &
             method_name(scene%method%kind)//"': "//integer_text(n_failed_rows)// &
             " boundary point(s) failed the check (status "//integer_text(status_failed)//" in "// &
-            scene%output//"_boundaries.dat) and "//integer_text(n_failed_alpha)//" alpha value(s) have no boundaries"// &
+            output_path(scene)//") and "//integer_text(n_failed_alpha)//" alpha value(s) have no boundaries"// &
             first_message)
       end if
    end subroutine run_boundaries
@@ -300,13 +293,9 @@ contains
       type(scene_t), intent(in) :: scene
       integer, intent(in) :: n_curves
       character(len=:), allocatable :: lines(:)
-      character(len=:), allocatable :: groups(:)
       character(len=240) :: text(16)
-      integer :: n, k, width
-      groups = scene_namelist(scene)
+      integer :: n
       n = 0
-      n = n + 1; text(n) = "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau; transition curves S = +-2"
-      n = n + 1; text(n) = "scene file: "//scene%source//" (the namelist lines below repeat this run)"
       if (scene%model == model_elastic) then
          n = n + 1; text(n) = "model: elastic, Q(tau) = (beta - alpha cos(pi tau))/(1 - (alpha/pi^2) cos(pi tau)), eq. (25)"
       else
@@ -344,15 +333,7 @@ contains
                  in_physical_domain(scene%chart%alpha_max, scene%chart%beta_max))) then
          n = n + 1; text(n) = "note: the window leaves the physical domain 0 <= alpha < pi^2, 0 < beta < pi^2"
       end if
-      width = max(len(groups), maxval(len_trim(text(:n))))
-      allocate (character(len=width) :: lines(n + size(groups)))
-      lines(1) = text(1)
-      lines(2) = text(2)
-      do k = 1, size(groups)
-         lines(2 + k) = groups(k)
-      end do
-      do k = 3, n
-         lines(size(groups) + k) = text(k)
-      end do
+      lines = scene_header(scene, "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau; transition "// &
+                           "curves S = +-2", text(:n))
    end function header
 end module hillstab_task_boundaries

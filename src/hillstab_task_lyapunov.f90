@@ -13,7 +13,7 @@
 !> on several ranks with `lyapunov_lines` and writes the same file.
 module hillstab_task_lyapunov
    use hillstab_kinds, only: wp, int64, version_string
-   use hillstab_error, only: error_t, set_error, err_io, err_accuracy, err_points_failed
+   use hillstab_error, only: error_t, set_error, err_accuracy, err_points_failed
    use hillstab_status, only: status_ok, status_roundoff, status_failed
    use hillstab_coefficient, only: hill_model_t, model_elastic
    use hillstab_transfer, only: trace_t
@@ -21,9 +21,9 @@ module hillstab_task_lyapunov
    use hillstab_monodromy, only: monodromy_trace, method_name
    use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state
    use hillstab_lyapunov, only: lyapunov_t, lyapunov_largest
-   use hillstab_scene, only: scene_t, scene_namelist, grid_value, real_text, integer_text, task_name
-   use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, write_text
-   use hillstab_format, only: put_es
+   use hillstab_scene, only: scene_t, scene_header, grid_value, real_text, integer_text, output_path
+   use hillstab_output, only: output_file_t, open_output, finish_output, write_header, write_text
+   use hillstab_format, only: put_es, put_integer
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
@@ -79,13 +79,9 @@ contains
    function lyapunov_header(scene) result(lines)
       type(scene_t), intent(in) :: scene  !! a lyapunov scene
       character(len=:), allocatable :: lines(:)
-      character(len=:), allocatable :: groups(:)
       character(len=240) :: text(16)
-      integer :: n, k
-      groups = scene_namelist(scene)
+      integer :: n
       n = 0
-      n = n + 1; text(n) = "hillstab "//version_string//": largest Lyapunov exponent of the nonlinear elastic pendulum"
-      n = n + 1; text(n) = "scene file: "//scene%source//" (the namelist lines below repeat this run)"
       n = n + 1; text(n) = "each point: the pendulum at (alpha, beta) with r0, g of &series, started at phi0 (eq. (38)), "// &
          integer_text(scene%series%periods)//" radial periods by DOP853 at tolerance "// &
          real_text(scene%method%tolerance)
@@ -105,12 +101,8 @@ contains
          n = n + 1; text(n) = "damping epsilon = "//real_text(scene%epsilon)//": stable is |S1| < 2 cosh(epsilon), "// &
             "lambda_max includes exp(-epsilon)"
       end if
-      allocate (character(len=max(len(groups), 240)) :: lines(n + size(groups)))
-      lines(1:2) = text(1:2)
-      do k = 1, size(groups)
-         lines(2 + k) = groups(k)
-      end do
-      lines(3 + size(groups):) = text(3:n)
+      lines = scene_header(scene, "hillstab "//version_string//": largest Lyapunov exponent of the nonlinear "// &
+                           "elastic pendulum", text(:n))
    end function lyapunov_header
 
    !> The line of one point and its status.
@@ -173,7 +165,10 @@ contains
       call put_es(line, pos, result%max_abs_phi, 6)
       call blank()
       call put_es(line, pos, result%energy_drift, 3)
-      line(pos + 1:) = " "//trim(integer_text(result%periods))//" "//achar(iachar("0") + status)
+      ! put_integer, not integer_text: this runs in the parallel loop (see put_integer)
+      call blank()
+      call put_integer(line, pos, result%periods)
+      line(pos + 1:) = " "//achar(iachar("0") + status)
    contains
       subroutine blank()
          line(pos + 1:pos + 1) = " "
@@ -186,13 +181,17 @@ contains
       real(wp), intent(in) :: alpha, beta
       integer, intent(in) :: periods  !! periods integrated before the failure
       character(len=lyapunov_line_length) :: line
+      character(len=*), parameter :: placeholders = " 0 -1 -1 -1 0 -1 -1 "
       integer :: pos
       pos = 0
       call put_es(line, pos, alpha, 16)
       line(pos + 1:pos + 1) = " "
       pos = pos + 1
       call put_es(line, pos, beta, 16)
-      line(pos + 1:) = " 0 -1 -1 -1 0 -1 -1 "//trim(integer_text(periods))//" "//achar(iachar("0") + status_failed)
+      line(pos + 1:pos + len(placeholders)) = placeholders
+      pos = pos + len(placeholders)
+      call put_integer(line, pos, periods)  ! not integer_text: runs in the parallel loop
+      line(pos + 1:) = " "//achar(iachar("0") + status_failed)
    end function failed_line
 
    !> Lines and statuses of the points first … last (in parallel), and the text the file
@@ -238,19 +237,12 @@ contains
       integer(int64), intent(in) :: n_failed  !! failed points written
       real(wp), intent(in) :: first(2)  !! α, β of the first failed point
       type(error_t), allocatable, intent(out) :: error  !! err_points_failed when n_failed > 0
-      character(len=64) :: counts
       if (n_failed == 0) return
-      write (counts, '(i0,a,i0)') n_failed, " of ", lyapunov_point_count(scene)
       call set_error(error, err_points_failed, scene%source//": &series: the pendulum could not be integrated at "// &
-         trim(counts)//" point(s), written with status 2 and placeholders to "//output_path_of(scene)// &
+         integer_text(n_failed)//" of "//integer_text(lyapunov_point_count(scene))//" point(s), written with "// &
+         "status 2 and placeholders to "//output_path(scene)// &
          "; first at alpha = "//real_text(first(1))//", beta = "//real_text(first(2)))
    end subroutine lyapunov_failure_error
-
-   pure function output_path_of(scene) result(path)
-      type(scene_t), intent(in) :: scene
-      character(len=:), allocatable :: path
-      path = scene%output//"_"//task_name(scene%task)//".dat"
-   end function output_path_of
 
    !> The lyapunov task, in this process: units of `lyapunov_unit_size` points computed
    !> in parallel and written in order.
@@ -260,7 +252,6 @@ contains
       !> err_io (unwritable output), err_points_failed (written, some points failed)
       type(error_t), allocatable, intent(out) :: error
       type(output_file_t) :: file
-      type(error_t), allocatable :: cause
       character(len=:), allocatable :: text
       integer, allocatable :: statuses(:)
       integer(int64) :: n, first, last, n_failed, j
@@ -268,11 +259,8 @@ contains
       logical :: new_block
       integer(int64) :: clock_start, clock_now, ticks
       n = lyapunov_point_count(scene)
-      call open_output(file, output_path_of(scene), cause)
-      if (allocated(cause)) then
-         call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
-         return
-      end if
+      call open_output(file, output_path(scene), error, context=scene%source//": &scene: output: ")
+      if (allocated(error)) return
       call write_header(file, lyapunov_header(scene), lyapunov_columns(), error)
       n_failed = 0
       call system_clock(clock_start, ticks)
@@ -300,11 +288,7 @@ contains
          end if
          first = last + 1
       end do
-      if (allocated(error)) then
-         call discard_output(file)
-         return
-      end if
-      call commit_output(file, error)
+      call finish_output(file, error)
       if (allocated(error)) return
       call lyapunov_failure_error(scene, n_failed, first_failed, error)
    end subroutine run_lyapunov

@@ -9,12 +9,12 @@
 !> gnuplot `index`), one line per crossing of φ = 0 with φ' > 0.
 module hillstab_task_poincare
    use hillstab_kinds, only: wp, version_string
-   use hillstab_error, only: error_t, set_error, err_io, err_input, err_points_failed
+   use hillstab_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_status, only: status_ok, status_failed
    use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_energy
    use hillstab_poincare, only: section_t, poincare_section, pendulum_state_at_energy
-   use hillstab_scene, only: scene_t, scene_namelist, real_text, integer_text, task_name
-   use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, write_text
+   use hillstab_scene, only: scene_t, scene_header, real_text, integer_text, output_path
+   use hillstab_output, only: output_file_t, open_output, finish_output, write_header, write_text
    use hillstab_format, only: put_es
    implicit none
    private
@@ -71,11 +71,8 @@ contains
          end if
       end do
 
-      call open_output(file, output_path_of(scene), cause)
-      if (allocated(cause)) then
-         call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
-         return
-      end if
+      call open_output(file, output_path(scene), error, context=scene%source//": &scene: output: ")
+      if (allocated(error)) return
       !$omp parallel do schedule(dynamic) default(shared) private(k, cause)
       do k = 1, n
          call poincare_section(p, starts(:, k), scene%series%periods*p%period, scene%method%tolerance, sections(k), &
@@ -100,11 +97,7 @@ contains
             call write_text(file, trim(lines(j)), error)
          end do
       end do
-      if (allocated(error)) then
-         call discard_output(file)
-         return
-      end if
-      call commit_output(file, error)
+      call finish_output(file, error)
       if (allocated(error)) return
       if (any(statuses == status_failed)) then
          first_failed = findloc(statuses, status_failed, dim=1)
@@ -114,16 +107,14 @@ contains
          if (allocated(cause)) failure = cause%message
          call set_error(error, err_points_failed, scene%source//": &poincare: "//integer_text(count(statuses == &
             status_failed))//" of "//integer_text(n)//" orbit(s) could not be integrated to the end, written with "// &
-            "status 2 and their crossings so far to "//output_path_of(scene)//"; first at phi0 = "// &
+            "status 2 and their crossings so far to "//output_path(scene)//"; first at phi0 = "// &
             real_text(scene%poincare%phi0s(first_failed))//": "//failure)
       end if
    contains
       function header() result(text)
          character(len=:), allocatable :: text(:)
-         character(len=:), allocatable :: groups(:)
          character(len=240) :: extra(5 + n)
          integer :: m, i
-         groups = scene_namelist(scene)
          m = 0
          m = m + 1; extra(m) = "Poincare section: crossings of phi = 0 with phi' > 0 (x = 0, x' > 0, z > 0), located "// &
             "on DOP853's dense output (Newton), tolerance "//real_text(scene%method%tolerance)
@@ -145,11 +136,8 @@ contains
                ", status ", integer_text(statuses(i))
             m = m + 1; extra(m) = summary
          end do
-         allocate (character(len=max(len(groups), 240)) :: text(2 + size(groups) + m))
-         text(1) = "hillstab "//version_string//": Poincare sections of the nonlinear elastic pendulum"
-         text(2) = "scene file: "//scene%source//" (the namelist lines below repeat this run)"
-         text(3:2 + size(groups)) = groups
-         text(3 + size(groups):) = extra(:m)
+         text = scene_header(scene, "hillstab "//version_string//": Poincare sections of the nonlinear elastic pendulum", &
+                             extra(:m))
       end function header
 
       function block_lines(k) result(text)
@@ -176,10 +164,4 @@ contains
          end do
       end function block_lines
    end subroutine run_poincare
-
-   pure function output_path_of(scene) result(path)
-      type(scene_t), intent(in) :: scene
-      character(len=:), allocatable :: path
-      path = scene%output//"_"//task_name(scene%task)//".dat"
-   end function output_path_of
 end module hillstab_task_poincare

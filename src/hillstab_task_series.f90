@@ -7,7 +7,8 @@
 !>
 !> The run integrates twice, identically: the first pass measures the summary, which
 !> belongs in the header, the second writes the samples (rows go straight to the file,
-!> so memory does not grow with the length of the run).
+!> so memory does not grow with the length of the run). Only the first pass watches
+!> (max |φ| on 16 dense points per step, energy, onset); the second only samples.
 !>
 !>```fortran
 !> type(scene_t) :: scene
@@ -25,12 +26,12 @@ module hillstab_task_series
    use hillstab_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
    use hillstab_monodromy, only: monodromy_trace, method_name
    use hillstab_rk, only: rk_step_t, rk_dense_value
-   use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_angle, &
-      pendulum_energy, pendulum_radius, px, pz, pvx, pvz
+   use hillstab_pendulum, only: pendulum_t, pendulum_system_t, pendulum_from_chart, pendulum_initial_state, &
+      pendulum_angle, pendulum_energy, pendulum_radius, px, pz, pvx, pvz
    use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat
-   use hillstab_scene, only: scene_t, scene_namelist, task_name, real_text, integer_text
+   use hillstab_scene, only: scene_t, scene_header, output_path, real_text, integer_text
    use hillstab_format, only: put_es
-   use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, write_text
+   use hillstab_output, only: output_file_t, open_output, finish_output, discard_output, write_header, write_text
    implicit none
    private
    public :: run_series, series_summary_t, series_summary, series_columns
@@ -59,8 +60,8 @@ module hillstab_task_series
       real(wp) :: onset_observed = -1.0_wp       !! first |φ| > φ_sat [periods]; −1: not within the run
    end type series_summary_t
 
-   !> The watching pendulum that also writes the samples.
-   type, extends(pendulum_watch_t) :: series_writer_t
+   !> The pendulum of the writing pass: writes the samples (the first pass has watched).
+   type, extends(pendulum_system_t) :: series_writer_t
       type(output_file_t) :: file                !! the open output file
       integer(int64) :: next = 0                 !! index j of the next sample
       integer(int64) :: n_samples = 0            !! last index (periods × samples_per_period)
@@ -79,19 +80,13 @@ contains
       type(series_summary_t) :: summary
       type(series_writer_t) :: writer
       type(work_stats_t) :: stats
-      type(error_t), allocatable :: cause
       real(wp) :: y(4)
-      character(len=:), allocatable :: path
 
       call series_summary(scene, summary, error)
       if (allocated(error)) return
 
-      path = scene%output//"_"//task_name(scene%task)//".dat"
-      call open_output(writer%file, path, cause)
-      if (allocated(cause)) then
-         call set_error(error, cause%code, scene%source//": &scene: output: "//cause%message)
-         return
-      end if
+      call open_output(writer%file, output_path(scene), error, context=scene%source//": &scene: output: ")
+      if (allocated(error)) return
       call write_header(writer%file, series_header(scene, summary), series_columns, error)
       if (allocated(error)) then
          call discard_output(writer%file)
@@ -107,12 +102,8 @@ contains
       if (.not. allocated(error) .and. writer%next <= writer%n_samples) then
          call set_error(error, err_input, "series: the integration ended before the last sample")
       end if
-      if (allocated(error)) then
-         call discard_output(writer%file)
-         error%message = scene%source//": "//error%message
-         return
-      end if
-      call commit_output(writer%file, error)
+      if (allocated(error)) error%message = scene%source//": "//error%message
+      call finish_output(writer%file, error)
    end subroutine run_series
 
    !> The first pass: integrate without writing and measure what the header reports.
@@ -183,8 +174,8 @@ contains
       t = real(j, wp)*p%period/real(samples_per_period, wp)
    end function sample_time
 
-   !> Observer of the writing pass: the watch's bookkeeping, then every sample time in
-   !> (t_old, t] from the dense output (the initial point at index 0).
+   !> Observer of the writing pass: every sample time in (t_old, t] from the dense output
+   !> (the initial point at index 0).
    subroutine write_samples(self, step, stop)
       class(series_writer_t), intent(inout) :: self
       type(rk_step_t), intent(in) :: step
@@ -193,7 +184,6 @@ contains
       character(len=8*(row_digits + 8)) :: line
       integer :: pos, k
       real(wp) :: values(8)
-      call self%pendulum_watch_t%observe(step, stop)
       do while (self%next <= self%n_samples)
          ts = sample_time(self%pendulum, self%next, self%samples_per_period)
          ! the last step ends exactly on the last sample time (the same expression)
@@ -227,13 +217,9 @@ contains
       type(scene_t), intent(in) :: scene
       type(series_summary_t), intent(in) :: s
       character(len=:), allocatable :: lines(:)
-      character(len=:), allocatable :: groups(:)
       character(len=400) :: extra(24)
-      integer :: n, k
-      groups = scene_namelist(scene)
+      integer :: n
       n = 0
-      n = n + 1; extra(n) = "hillstab "//version_string//": the nonlinear elastic pendulum (task series)"
-      n = n + 1; extra(n) = "scene file: "//scene%source//" (the namelist lines below repeat this run)"
       associate (p => s%pendulum)
          n = n + 1; extra(n) = "model: x'' = -omega^2 (1 - r0/r) x - kappa x', z'' = -omega^2 (1 - r0/r) z + g - kappa z'"// &
             " (x horizontal, z downward from the pivot, r = sqrt(x^2 + z^2), phi = atan2(x, z))"
@@ -257,11 +243,11 @@ contains
          " J/kg (1/2 |v|^2 + 1/2 omega^2 (r - r0)^2 + g |z| at t = 0; E itself may be near 0)"
       if (scene%epsilon > 0.0_wp) then
          n = n + 1; extra(n) = "summary: damped: steps over which E rose beyond round-off: "// &
-            trim(int64_text(s%energy_increases))//" (0: E decreases monotonically)"
+            integer_text(s%energy_increases)//" (0: E decreases monotonically)"
       end if
-      n = n + 1; extra(n) = "summary: accepted steps "//trim(int64_text(int(s%work%n_steps, int64)))// &
-         ", rejected "//trim(int64_text(int(s%work%n_rejected, int64)))//", f-evaluations "// &
-         trim(int64_text(int(s%work%n_evaluations, int64)))//" (one pass)"
+      n = n + 1; extra(n) = "summary: accepted steps "//integer_text(s%work%n_steps)// &
+         ", rejected "//integer_text(s%work%n_rejected)//", f-evaluations "// &
+         integer_text(s%work%n_evaluations)//" (one pass)"
       if (s%status == status_failed) then
          n = n + 1; extra(n) = "summary: lambda_max: status 2 (failed): the core could not compute S here"
       else
@@ -274,12 +260,7 @@ contains
          "ln(0.1/|phi0|)/ln(lambda_max) = "//periods_text(s%onset_predicted, "never (no growth or phi0 = 0)")// &
          ", observed "//periods_text(s%onset_observed, "not within the run")
       n = n + 1; extra(n) = "units: t [s], r [m], phi [rad], x, z [m], E [J/kg], vx, vz [m/s]"
-      allocate (character(len=max(len(groups), maxval(len_trim(extra(:n))))) :: lines(n + size(groups)))
-      lines(1:2) = extra(1:2)
-      lines(3:2 + size(groups)) = groups
-      do k = 3, n
-         lines(k + size(groups)) = extra(k)
-      end do
+      lines = scene_header(scene, "hillstab "//version_string//": the nonlinear elastic pendulum (task series)", extra(:n))
    contains
       function fmt(x) result(text)
          real(wp), intent(in) :: x
@@ -290,11 +271,6 @@ contains
          call put_es(buffer, pos, x, 10)
          text = trim(adjustl(buffer(1:pos)))
       end function fmt
-      function int64_text(i) result(text)
-         integer(int64), intent(in) :: i
-         character(len=24) :: text
-         write (text, '(i0)') i
-      end function int64_text
       function periods_text(n_periods, none) result(text)
          real(wp), intent(in) :: n_periods
          character(len=*), intent(in) :: none

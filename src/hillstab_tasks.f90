@@ -18,7 +18,7 @@
 !>```
 module hillstab_tasks
    use hillstab_kinds, only: wp, int64, pi, pi2, version_string
-   use hillstab_error, only: error_t, set_error, err_input, err_io, err_accuracy, err_invalid_parameter, &
+   use hillstab_error, only: error_t, set_error, err_input, err_accuracy, err_invalid_parameter, &
       err_points_failed
    use hillstab_status, only: status_ok, status_roundoff, status_failed
    use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, hill_coefficient, &
@@ -31,13 +31,14 @@ module hillstab_tasks
    use hillstab_task_series, only: run_series
    use hillstab_task_lyapunov, only: run_lyapunov
    use hillstab_task_poincare, only: run_poincare
-   use hillstab_scene, only: scene_t, read_scene, scene_namelist, task_chart, task_points, task_coefficient, &
-      task_series, task_name, grid_value, real_text, integer_text, task_boundaries, task_lyapunov, task_poincare
+   use hillstab_scene, only: scene_t, read_scene, scene_header, task_chart, task_points, task_coefficient, &
+      task_series, task_name, grid_value, real_text, integer_text, task_boundaries, task_lyapunov, task_poincare, &
+      output_path, scene_columns
    use hillstab_task_boundaries, only: run_boundaries
    use hillstab_format, only: format_es
-   use hillstab_output, only: output_file_t, open_output, commit_output, discard_output, write_header, &
+   use hillstab_output, only: output_file_t, open_output, finish_output, discard_output, write_header, &
       write_text, write_records, chart_line_length, real_columns, n_chart_columns, chart_values, failed_chart_values, &
-      chart_text, chart_columns_text, default_chart_columns, find_chart_columns
+      chart_text, chart_columns_text, default_chart_columns, joined_lines
    use hillstab_limits, only: check_output_room
    use, intrinsic :: iso_fortran_env, only: error_unit
    use, intrinsic :: iso_c_binding, only: c_int
@@ -46,7 +47,8 @@ module hillstab_tasks
    private
    public :: run_scene_file, run_scene, output_path
    ! the pieces a distributed driver (hillstab_batch, the MPI program) shares with the serial tasks
-   public :: scene_columns, chart_row, compute_points, chart_header, open_scene_output, check_method_runs, warn_inaccurate, &
+   public :: scene_columns, chart_betas, chart_row, compute_points, chart_header, open_scene_output, check_method_runs, &
+      warn_inaccurate, &
       failed_points_error, progress_t, progress_begin, progress_update, progress_end
 
    !> Progress on stderr for runs longer than about a second.
@@ -115,17 +117,6 @@ contains
       end select
    end subroutine run_scene
 
-   !> `<output>_<task>.dat` (`.bin` for format = 'binary').
-   pure function output_path(scene) result(path)
-      type(scene_t), intent(in) :: scene  !! the scene
-      character(len=:), allocatable :: path
-      if (scene%binary) then
-         path = scene%output//"_"//task_name(scene%task)//".bin"
-      else
-         path = scene%output//"_"//task_name(scene%task)//".dat"
-      end if
-   end function output_path
-
    !> Floquet data of one point; `error` only when the point failed.
    subroutine evaluate_point(scene, alpha, beta, f, error, status)
       type(scene_t), intent(in) :: scene
@@ -158,14 +149,13 @@ contains
       type(error_t), allocatable, intent(out) :: error  !! err_points_failed naming the count and the first point
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
-      character(len=64) :: counts
       if (n_failed == 0) return
       call evaluate_point(scene, first(1), first(2), f, cause)
       if (.not. allocated(cause)) call set_error(cause, err_input, "fails in parallel only")
-      write (counts, '(i0,a,i0)') n_failed, " of ", n_total
       call set_error(error, err_points_failed, scene%source//": &scene: method: '"// &
-         method_name(scene%method%kind)//"' failed at "//trim(counts)//" point(s), written with status "// &
-         integer_text(status_failed)//" and placeholders to "//output_path(scene)//"; first at alpha = "// &
+         method_name(scene%method%kind)//"' failed at "//integer_text(n_failed)//" of "//integer_text(n_total)// &
+         " point(s), written with status "//integer_text(status_failed)//" and placeholders to "//output_path(scene)// &
+         "; first at alpha = "// &
          real_text(first(1))//", beta = "//real_text(first(2))//": "//cause%message)
    end subroutine failed_points_error
 
@@ -184,53 +174,26 @@ contains
       type(scene_t), intent(in) :: scene  !! a validated scene
       type(output_file_t), intent(out) :: file  !! the open temporary output file
       type(error_t), allocatable, intent(out) :: error  !! err_io naming &scene output
-      type(error_t), allocatable :: cause
-      call open_output(file, output_path(scene), cause, binary=scene%binary)
-      if (allocated(cause)) call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
+      call open_output(file, output_path(scene), error, binary=scene%binary, context=scene%source//": &scene: output: ")
    end subroutine open_scene_output
 
    !> Header lines common to every task: version, source, the effective scene, the model.
    function common_header(scene) result(lines)
       type(scene_t), intent(in) :: scene
       character(len=:), allocatable :: lines(:)
-      character(len=:), allocatable :: groups(:), model_text, common(:)
-      groups = scene_namelist(scene)
+      character(len=:), allocatable :: model_text, common(:)
       if (scene%model == model_elastic) then
          model_text = "model: elastic, Q(tau) = (beta - alpha cos(pi tau))/(1 - (alpha/pi^2) cos(pi tau)), eq. (25)"
       else
          model_text = "model: mathieu, q(tau) = beta - alpha cos(pi tau), eq. (A1), alpha playing nu"
       end if
-      common = stacked(["hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau"], &
-                       stacked(["scene file: "//scene%source//" (the namelist lines below repeat this run)"], &
-                               stacked(groups, [model_text])))
+      common = scene_header(scene, "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau", [model_text])
       if (scene%physical) then
          lines = stacked(common, physical_header(scene))
       else
          lines = common
       end if
    end function common_header
-
-   !> The columns a chart or points file of this scene holds: `&scene columns` when given,
-   !> else all the task offers (`default_chart_columns`).
-   subroutine scene_columns(scene, ids, error)
-      type(scene_t), intent(in) :: scene  !! a chart or points scene
-      integer, allocatable, intent(out) :: ids(:)  !! indices into hillstab_output's chart_column_names, in file order
-      type(error_t), allocatable, intent(out) :: error  !! err_input naming &scene columns when a name is not offered
-      integer, allocatable :: available(:)
-      character(len=:), allocatable :: bad
-      available = default_chart_columns(scene%epsilon > 0.0_wp, scene%model == model_elastic, scene%physical)
-      if (len_trim(scene%columns) == 0) then
-         ids = available
-         return
-      end if
-      call find_chart_columns(scene%columns, available, ids, bad)
-      if (len(bad) > 0) then
-         call set_error(error, err_input, scene%source//": &scene: columns: '"//bad//"' is not a column of this "// &
-            "file or is named twice (available: "//chart_columns_text(available)//")")
-      else if (size(ids) == 0) then
-         call set_error(error, err_input, scene%source//": &scene: columns: no column named")
-      end if
-   end subroutine scene_columns
 
    !> Header lines of a scene given in physical units: the conversions used.
    function physical_header(scene) result(lines)
@@ -308,32 +271,6 @@ contains
       c(size(a) + 1:) = b
    end function stacked
 
-   !> Write `lines` (trimmed) as one block, preceded by a blank line if `separate`.
-   subroutine write_block(file, lines, separate, error)
-      type(output_file_t), intent(inout) :: file
-      character(len=*), intent(in) :: lines(:)
-      logical, intent(in) :: separate
-      type(error_t), allocatable, intent(out) :: error
-      character(len=:), allocatable :: block
-      integer :: j, pos, n
-      allocate (character(len=size(lines)*(len(lines) + 1) + 1) :: block)
-      pos = 0
-      if (separate) then
-         block(1:1) = new_line("a")
-         pos = 1
-      end if
-      do j = 1, size(lines)
-         n = len_trim(lines(j))
-         block(pos + 1:pos + n) = lines(j)(1:n)
-         pos = pos + n
-         if (j < size(lines)) then
-            block(pos + 1:pos + 1) = new_line("a")
-            pos = pos + 1
-         end if
-      end do
-      call write_text(file, block(1:pos), error)
-   end subroutine write_block
-
    !> The chart task.
    subroutine run_chart(scene, quiet, error)
       type(scene_t), intent(in) :: scene
@@ -342,7 +279,7 @@ contains
       type(output_file_t) :: file
       type(progress_t) :: progress
       character(len=chart_line_length), allocatable :: lines(:)
-      logical :: damped, outside
+      logical :: outside
       real(wp) :: alpha
       real(wp), allocatable :: all_betas(:)
       character(len=23), allocatable :: beta_texts(:)
@@ -353,11 +290,10 @@ contains
       integer(int64) :: n_inaccurate, n_failed
       real(wp) :: first_inaccurate(2), first_failed(2)
       integer :: group, n_groups, g
-      integer :: i, j, n_alpha, n_beta
+      integer :: i, n_alpha, n_beta
 
       n_alpha = scene%chart%n_alpha
       n_beta = scene%chart%n_beta
-      damped = scene%epsilon > 0.0_wp
       call scene_columns(scene, ids, error)
       if (allocated(error)) return
       ! an unwritable output path fails before any computing
@@ -368,11 +304,7 @@ contains
          call discard_output(file)
          return
       end if
-      all_betas = [(grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j), j=1, n_beta)]
-      allocate (beta_texts(n_beta))
-      do j = 1, n_beta
-         beta_texts(j) = format_es(all_betas(j), 16)
-      end do
+      call chart_betas(scene, all_betas, beta_texts)
       outside = .not. (in_physical_domain(scene%chart%alpha_min, scene%chart%beta_min) .and. &
                        in_physical_domain(scene%chart%alpha_max, scene%chart%beta_max))
       call write_header(file, chart_header(scene, outside), chart_columns_text(ids), error, &
@@ -438,11 +370,7 @@ contains
          end do
       end if
       call progress_end(progress)
-      if (allocated(error)) then
-         call discard_output(file)
-         return
-      end if
-      call commit_output(file, error)
+      call finish_output(file, error)
       if (allocated(error)) return
       call warn_inaccurate(scene, n_inaccurate, first_inaccurate)
       call failed_points_error(scene, n_failed, int(n_alpha, int64)*n_beta, first_failed, error)
@@ -457,10 +385,8 @@ contains
          if (scene%binary) then
             call write_records(file, values, error)
          else
-            ! blocks of constant alpha, separated by one blank line (gnuplot pm3d/image),
-            ! written as one record per block: one write statement per line costs more
-            ! than a point of method auto
-            call write_block(file, lines, i > 1, error)
+            ! blocks of constant alpha, separated by one blank line (gnuplot pm3d/image)
+            call write_text(file, joined_lines(lines, i > 1), error)
          end if
          if (allocated(error)) then
             stopped = .true.
@@ -557,35 +483,64 @@ contains
       !$omp end parallel do
    end subroutine compute_row_in_chunks
 
+   !> The β values of a chart's rows and their text, made once per chart.
+   subroutine chart_betas(scene, betas, beta_texts)
+      type(scene_t), intent(in) :: scene  !! a chart scene
+      real(wp), allocatable, intent(out) :: betas(:)  !! the n_beta grid values of &chart
+      character(len=23), allocatable, intent(out) :: beta_texts(:)  !! format_es(betas, 16)
+      integer :: j, n_beta
+      n_beta = scene%chart%n_beta
+      betas = [(grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j), j=1, n_beta)]
+      allocate (beta_texts(n_beta))
+      do j = 1, n_beta
+         beta_texts(j) = format_es(betas(j), 16)
+      end do
+   end subroutine chart_betas
+
    !> Text lines of row `i` of a chart scene (α = the i-th grid value, all β) with the
    !> scene's columns, computed exactly as the chart task computes them, so that a driver
    !> computing rows elsewhere writes the same file (format = 'text').
-   subroutine chart_row(scene, i, lines, statuses)
+   subroutine chart_row(scene, i, lines, statuses, betas, beta_texts, ids)
       type(scene_t), intent(in) :: scene  !! a chart scene
       integer, intent(in) :: i            !! row index, 1 … n_alpha
       character(len=*), intent(out) :: lines(:)  !! n_beta lines of `chart_line_length` characters
       integer, intent(out) :: statuses(:)  !! per point: status_ok, status_roundoff or status_failed
-      real(wp), allocatable :: betas(:), values(:, :)
-      character(len=23), allocatable :: beta_texts(:)
-      integer, allocatable :: ids(:)
+      !> `chart_betas` of the scene, made once for all rows (made here when absent)
+      real(wp), intent(in), optional :: betas(:)
+      character(len=23), intent(in), optional :: beta_texts(:)  !! `chart_betas` of the scene (with `betas`)
+      integer, intent(in), optional :: ids(:)  !! `scene_columns` of the scene (made here when absent)
+      real(wp), allocatable :: own_betas(:)
+      character(len=23), allocatable :: own_texts(:)
+      integer, allocatable :: own_ids(:)
       type(error_t), allocatable :: error
-      real(wp) :: alpha
-      integer :: j, n_beta
-      call scene_columns(scene, ids, error)  ! checked when the scene was read
-      if (allocated(error)) ids = default_chart_columns(scene%epsilon > 0.0_wp, scene%model == model_elastic, &
-                                                        scene%physical)
-      n_beta = scene%chart%n_beta
-      betas = [(grid_value(scene%chart%beta_min, scene%chart%beta_max, n_beta, j), j=1, n_beta)]
-      allocate (beta_texts(n_beta), values(size(ids), n_beta))
-      do j = 1, n_beta
-         beta_texts(j) = format_es(betas(j), 16)
-      end do
-      alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, scene%chart%n_alpha, i)
-      if (rows_in_parallel(scene)) then
-         call compute_row(scene, ids, alpha, betas, lines, values, statuses, beta_texts=beta_texts)
+      if (present(ids)) then
+         own_ids = ids
       else
-         call compute_row_in_chunks(scene, ids, alpha, betas, lines, values, statuses, beta_texts)
+         call scene_columns(scene, own_ids, error)  ! checked when the scene was read
+         if (allocated(error)) own_ids = default_chart_columns(scene%epsilon > 0.0_wp, &
+                                                               scene%model == model_elastic, scene%physical)
       end if
+      if (present(betas) .and. present(beta_texts)) then
+         call row(betas, beta_texts, own_ids)
+      else
+         call chart_betas(scene, own_betas, own_texts)
+         call row(own_betas, own_texts, own_ids)
+      end if
+   contains
+      subroutine row(betas, beta_texts, ids)
+         real(wp), intent(in) :: betas(:)
+         character(len=23), intent(in) :: beta_texts(:)
+         integer, intent(in) :: ids(:)
+         real(wp) :: alpha
+         real(wp), allocatable :: values(:, :)  ! records: unused by text lines, sized for compute_row
+         allocate (values(size(ids), size(betas)))
+         alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, scene%chart%n_alpha, i)
+         if (rows_in_parallel(scene)) then
+            call compute_row(scene, ids, alpha, betas, lines, values, statuses, beta_texts=beta_texts)
+         else
+            call compute_row_in_chunks(scene, ids, alpha, betas, lines, values, statuses, beta_texts)
+         end if
+      end subroutine row
    end subroutine chart_row
 
    !> Text lines (with the scene's columns) or records `values` of the points `first` …
@@ -651,13 +606,11 @@ contains
       type(progress_t) :: progress
       character(len=chart_line_length), allocatable :: lines(:)
       integer, allocatable :: statuses(:)
-      logical :: damped
       integer :: k, n
       integer, allocatable :: ids(:)
       real(wp), allocatable :: values(:, :)
 
       n = size(scene%points, 2)
-      damped = scene%epsilon > 0.0_wp
       call scene_columns(scene, ids, error)
       if (allocated(error)) return
       call open_scene_output(scene, file, error)
@@ -675,11 +628,7 @@ contains
          if (allocated(error) .or. scene%binary) exit
          call write_text(file, trim(lines(k)), error)
       end do
-      if (allocated(error)) then
-         call discard_output(file)
-         return
-      end if
-      call commit_output(file, error)
+      call finish_output(file, error)
       if (allocated(error)) return
       if (any(statuses == status_roundoff)) then
          k = findloc(statuses, status_roundoff, dim=1)
@@ -737,11 +686,7 @@ contains
          end do
          call write_text(file, real_columns(row), error)
       end do
-      if (allocated(error)) then
-         call discard_output(file)
-         return
-      end if
-      call commit_output(file, error)
+      call finish_output(file, error)
    end subroutine run_coefficient
 
    !> Start reporting the progress of a run of `total` points (nothing when quiet).
@@ -800,10 +745,8 @@ contains
       type(scene_t), intent(in) :: scene  !! a validated scene
       integer(int64), intent(in) :: n  !! number of round-off limited points
       real(wp), intent(in) :: first(2)  !! alpha, beta of the first such point
-      character(len=32) :: count_text
       if (n == 0) return
-      write (count_text, '(i0)') n
-      write (error_unit, '(a)') "hillstab: warning: "//scene%source//": "//trim(count_text)// &
+      write (error_unit, '(a)') "hillstab: warning: "//scene%source//": "//integer_text(n)// &
          " point(s) reached only the round-off level of double precision, not the tolerance "// &
          real_text(scene%method%tolerance)//" (first at alpha = "//real_text(first(1))//", beta = "// &
          real_text(first(2))//"); their S is the best available"

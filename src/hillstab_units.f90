@@ -135,11 +135,13 @@ contains
 
    !> The pendulum with the dimensionless parameters (α, β, ε), given two of r0, g and ω
    !> (exactly two): the inverse of `physical_alpha`, `physical_beta`, `physical_epsilon`.
-   !> - ω and r0: ρ = r0 π²/(π² − β) (as in (38)), g = β ρ ω²/π²; needs β < π²;
-   !> - ω and g: ρ = g π²/(β ω²), r0 = ρ − g/ω² (4); needs β > 0;
-   !> - r0 and g: ρ = r0 π²/(π² − β), ω² = g π²/(ρ β); needs 0 < β < π².
-   !> Then a = α ρ/π² and κ = ε ω/π. Needs 0 ≤ α < π², ε ≥ 0, ω > 0, r0 > 0, g ≥ 0 (g > 0
-   !> when ω is not given), all finite.
+   !> - ω and r0: ρ = r0 π²/(π² − β) (as in (38)), g = β ρ ω²/π²; needs 0 ≤ β < π²;
+   !> - ω and g: ρ = g π²/(β ω²), r0 = ρ − g/ω² (4); needs 0 < β < π², g > 0;
+   !> - r0 and g: ρ = r0 π²/(π² − β), ω² = g π²/(ρ β); needs 0 < β < π², g > 0.
+   !> Then a = α ρ/π² and κ = ε ω/π. Needs 0 ≤ α < π², ε ≥ 0, ω > 0, r0 > 0, g ≥ 0, all
+   !> finite; and, as `check_physical` bounds a pendulum, ω and r0 in [1e-50, 1e50], g = 0 or
+   !> in [1e-50, 1e50], ε ≤ 1e50 and, with g given, β ≥ 1e-100: within these no value
+   !> below overflows or divides by zero.
    pure subroutine physical_from_dimensionless(alpha, beta, epsilon, p, error, r0, g, omega)
       real(wp), intent(in) :: alpha    !! α of eq. (24)
       real(wp), intent(in) :: beta     !! β of eq. (24)
@@ -149,6 +151,7 @@ contains
       real(wp), intent(in), optional :: r0     !! natural length (m)
       real(wp), intent(in), optional :: g      !! gravity (m/s²)
       real(wp), intent(in), optional :: omega  !! radial angular frequency ω = √(k/m) (rad/s)
+      real(wp), parameter :: smallest = 1.0e-50_wp, largest = 1.0e50_wp  ! the bounds of check_physical
       real(wp) :: rho
       if (count([present(r0), present(g), present(omega)]) /= 2) then
          call set_error(error, err_invalid_parameter, "give exactly two of r0, g and omega")
@@ -162,15 +165,31 @@ contains
          call set_error(error, err_invalid_parameter, "epsilon must be finite and >= 0, beta finite")
          return
       end if
+      if (epsilon > largest) then
+         call set_error(error, err_invalid_parameter, "epsilon must be <= 1e50")
+         return
+      end if
+      if (beta < 0.0_wp) then
+         call set_error(error, err_invalid_parameter, "beta must be >= 0 (g >= 0)")
+         return
+      end if
       if (present(omega)) then
          if (.not. (omega > 0.0_wp .and. ieee_is_finite(omega))) then
             call set_error(error, err_invalid_parameter, "omega must be finite and > 0")
+            return
+         end if
+         if (omega < smallest .or. omega > largest) then
+            call set_error(error, err_invalid_parameter, "omega must lie in [1e-50, 1e50] (rad/s)")
             return
          end if
       end if
       if (present(r0)) then
          if (.not. (r0 > 0.0_wp .and. ieee_is_finite(r0))) then
             call set_error(error, err_invalid_parameter, "r0 must be finite and > 0")
+            return
+         end if
+         if (r0 < smallest .or. r0 > largest) then
+            call set_error(error, err_invalid_parameter, "r0 must lie in [1e-50, 1e50] (m)")
             return
          end if
          if (.not. beta < pi2) then
@@ -185,8 +204,17 @@ contains
             call set_error(error, err_invalid_parameter, "g must be finite and >= 0")
             return
          end if
+         if (g > largest .or. (g > 0.0_wp .and. g < smallest)) then
+            call set_error(error, err_invalid_parameter, "g must be 0 or lie in [1e-50, 1e50] (m/s^2)")
+            return
+         end if
          if (.not. beta > 0.0_wp) then
             call set_error(error, err_invalid_parameter, "with g given, beta > 0 is needed")
+            return
+         end if
+         if (beta < 1.0e-100_wp) then
+            call set_error(error, err_invalid_parameter, "with g given, beta >= 1e-100 is needed (smaller values "// &
+               "overflow rho or omega)")
             return
          end if
          p%g = g
@@ -196,8 +224,18 @@ contains
          if (present(r0)) then
             p%g = beta*rho*omega*omega/pi2
          else
+            if (.not. (g > 0.0_wp .and. beta < pi2)) then
+               call set_error(error, err_invalid_parameter, "with omega and g given, g > 0 and beta < pi**2 are "// &
+                  "needed (r0 = rho - g/omega**2 > 0)")
+               return
+            end if
             rho = g*pi2/(beta*omega*omega)
             p%r0 = rho - g/(omega*omega)
+            if (.not. p%r0 > 0.0_wp) then
+               call set_error(error, err_invalid_parameter, "beta is too close to pi**2: r0 = rho - g/omega**2 "// &
+                  "cancels to <= 0")
+               return
+            end if
          end if
       else
          if (.not. g > 0.0_wp) then

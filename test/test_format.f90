@@ -4,7 +4,7 @@
 !> agreement with the `es` edit descriptor, and non-finite values.
 module test_format
    use hillstab_kinds, only: wp, int64
-   use hillstab_format, only: format_es, es_width, put_es
+   use hillstab_format, only: format_es, es_width, put_es, put_integer
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, ieee_negative_inf
    implicit none
@@ -22,7 +22,8 @@ contains
          new_unittest("layout", layout), &
          new_unittest("agrees_with_es_descriptor", agrees_with_es_descriptor), &
          new_unittest("put_es_buffer", put_es_buffer), &
-         new_unittest("non_finite", non_finite)])
+         new_unittest("non_finite", non_finite), &
+         new_unittest("put_integer_as_i0", put_integer_as_i0)])
    end function collect_format
 
    !> The test values: ±1, 0, powers of ten 1e-300 … 1e300, the subnormal 1e-308, huge,
@@ -334,4 +335,20 @@ contains
          call check(ctx, format_es(minus_inf, d) == repeat(" ", w - 4)//"-inf", "-inf")
       end do
    end subroutine non_finite
+
+   !> put_integer writes what the `i0` edit descriptor writes, after what the buffer holds.
+   subroutine put_integer_as_i0(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer, parameter :: values(9) = [0, 7, -7, 10, 99, -100, 123456789, huge(1), -huge(1)]
+      character(len=40) :: buffer, expected
+      integer :: k, pos
+      do k = 1, size(values)
+         buffer = "x"
+         pos = 1
+         call put_integer(buffer, pos, values(k))
+         write (expected, '(a,i0)') "x", values(k)
+         call check(ctx, buffer == expected .and. pos == len_trim(expected), &
+                    "put_integer: '"//buffer(:pos)//"', expected '"//trim(expected)//"'")
+      end do
+   end subroutine put_integer_as_i0
 end module test_format

@@ -73,17 +73,29 @@ contains
    function read_lines(path) result(lines)
       character(len=*), intent(in) :: path
       character(len=1024), allocatable :: lines(:)
+      character(len=1024), allocatable :: grown(:)
       character(len=:), allocatable :: line
-      integer :: unit, ios
+      integer :: unit, ios, n
       allocate (lines(0))
       open (newunit=unit, file=path, status="old", action="read", iostat=ios)
       if (ios /= 0) return
+      ! Capacity doubles, so reading n lines copies O(n) lines, not O(n**2).
+      deallocate (lines)
+      allocate (lines(64))
+      n = 0
       do
          call read_text_line(unit, line, ios)
          if (ios /= 0) exit
-         lines = [character(len=1024) :: lines, line]
+         if (n == size(lines)) then
+            allocate (grown(2*size(lines)))
+            grown(1:n) = lines(1:n)
+            call move_alloc(grown, lines)
+         end if
+         n = n + 1
+         lines(n) = line
       end do
       close (unit)
+      lines = lines(1:n)
    end function read_lines
 
    logical function file_exists(path)
@@ -374,7 +386,11 @@ contains
          bad_case_t(sp//"&points file='@DIR@_slash.dat' /", "points", "line 2: expected two numbers"), &
          bad_case_t(sp//"&points file='@DIR@_comma.dat' /", "points", "line 2: expected two numbers"), &
          bad_case_t(sp//"&points file='@DIR@_repeat.dat' /", "points", "line 3: expected two numbers"), &
-         bad_case_t(sp//"&points file='@DIR@_first.dat' /", "points", "line 1: expected two numbers")]
+         bad_case_t(sp//"&points file='@DIR@_first.dat' /", "points", "line 1: expected two numbers"), &
+         bad_case_t(s//"task='lyapunov' / &series periods=2 / &chart beta_min=1e-320 /", "chart", &
+                    "beta_min: must be >= 1.0e-8"), &
+         bad_case_t(s//"task='lyapunov' / &series periods=2 / &lyapunov over='points' / "// &
+                    "&points file='@DIR@_tinybeta.dat' /", "points", "beta = 1.0e-9, below 1.0e-8")]
    end function bad_cases
 
    !> Write the points files the bad cases refer to (`<dir>_badline.dat`, ...).
@@ -383,6 +399,7 @@ contains
       call write_file(dir//"_badline.dat", [character(len=20) :: "1.0 2.0", "3.0", "4.0 5.0"])
       call write_file(dir//"_nan.dat", [character(len=20) :: "1.0 nan"])
       call write_file(dir//"_domain.dat", [character(len=20) :: "1.0 2.0", "9.9 2.0"])
+      call write_file(dir//"_tinybeta.dat", [character(len=20) :: "1.0 2.0", "1.0 1e-9"])
       call write_file(dir//"_empty.dat", [character(len=20) :: "# nothing here", ""])
       ! list-directed shortcuts that are not two numbers
       call write_file(dir//"_slash.dat", [character(len=20) :: "1 2", "5 /"])
@@ -397,6 +414,7 @@ contains
       call delete_file(dir//"_badline.dat")
       call delete_file(dir//"_nan.dat")
       call delete_file(dir//"_domain.dat")
+      call delete_file(dir//"_tinybeta.dat")
       call delete_file(dir//"_empty.dat")
       call delete_file(dir//"_slash.dat")
       call delete_file(dir//"_comma.dat")

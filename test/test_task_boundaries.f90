@@ -13,6 +13,7 @@ module test_task_boundaries
    use hillstab_formulas, only: trace_two_segment_paper
    use hillstab_tasks, only: run_scene_file
    use hillstab_testing
+   use hillstab_test_files, only: run_text_scene
    use test_scene, only: scratch_prefix, write_file, read_lines, delete_file
    implicit none
    private
@@ -48,12 +49,9 @@ contains
       real(wp), allocatable, intent(out) :: rows(:, :)
       character(len=1024), allocatable, intent(out) :: lines(:)
       type(error_t), allocatable, intent(out) :: error
-      character(len=:), allocatable :: path, written
+      character(len=:), allocatable :: written
       integer :: k, n, ios
-      path = scratch_prefix(name)//".nml"
-      call write_file(path, scene_lines)
-      call run_scene_file(path, .true., error, written)
-      call delete_file(path)
+      call run_text_scene(name, scene_lines, error, written)
       allocate (rows(n_columns, 0))
       if (allocated(error)) return
       lines = read_lines(written)

@@ -9,6 +9,7 @@ module test_units
    use hillstab_units
    use hillstab_pendulum, only: pendulum_t, pendulum_from_chart
    use hillstab_testing
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
    public :: collect_units
@@ -22,7 +23,8 @@ contains
          new_unittest("round_trips", round_trips), &
          new_unittest("special_values", special_values), &
          new_unittest("rates_and_times", rates_and_times), &
-         new_unittest("bad_pendulums", bad_pendulums)])
+         new_unittest("bad_pendulums", bad_pendulums), &
+         new_unittest("inverse_bounds", inverse_bounds)])
    end function collect_units
 
    !> (ω/π)² Q(ωt/π) = (g − a ω² cos ωt)/(ρ − a cos ωt) − κ²/4: eq. (20) with the damping
@@ -161,4 +163,36 @@ contains
       call check_physical(physical_t(r0=1.0_wp, g=9.8_wp, omega=1.0_wp, a=10.79_wp), error, variable)
       call check(ctx, .not. allocated(error) .and. variable == "", "a just below rho")
    end subroutine bad_pendulums
+
+   !> physical_from_dimensionless refuses what has no pendulum (it returned r0 <= 0, g < 0,
+   !> or an infinite omega or kappa without an error) and stays finite at the edges it accepts.
+   subroutine inverse_bounds(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(physical_t) :: p
+      type(error_t), allocatable :: error
+      call physical_from_dimensionless(1.0_wp, 1.5_wp*pi2, 0.0_wp, p, error, g=9.8_wp, omega=2.0_wp)
+      call check(ctx, allocated(error), "omega, g: beta > pi**2 gives r0 < 0")
+      call physical_from_dimensionless(1.0_wp, 2.0_wp, 0.0_wp, p, error, g=0.0_wp, omega=1.0_wp)
+      call check(ctx, allocated(error), "omega, g: g = 0 gives r0 = 0")
+      call physical_from_dimensionless(1.0_wp, -1.0_wp, 0.0_wp, p, error, r0=1.0_wp, omega=1.0_wp)
+      call check(ctx, allocated(error), "r0, omega: beta < 0 gives g < 0")
+      call physical_from_dimensionless(1.0_wp, 1.0e-200_wp, 0.0_wp, p, error, r0=1.0_wp, g=9.8_wp)
+      call check(ctx, allocated(error), "r0, g: beta = 1e-200 overflows omega")
+      call physical_from_dimensionless(1.0_wp, 2.0_wp, 1.0e300_wp, p, error, r0=1.0_wp, omega=1.0e10_wp)
+      call check(ctx, allocated(error), "epsilon = 1e300 overflows kappa")
+      call physical_from_dimensionless(1.0_wp, 2.0_wp, 0.0_wp, p, error, r0=1.0e-60_wp, omega=1.0_wp)
+      call check(ctx, allocated(error), "r0 below 1e-50")
+      ! the edges accepted: every component finite, and back to (alpha, beta, epsilon)
+      call physical_from_dimensionless(1.0_wp, 1.0e-100_wp, 1.0e50_wp, p, error, r0=1.0e-50_wp, g=1.0e50_wp)
+      call check(ctx, .not. allocated(error), "r0, g at the edges")
+      call check(ctx, all(ieee_is_finite([p%r0, p%g, p%omega, p%a, p%kappa])), "finite at the edges")
+      call check(ctx, physical_beta(p), 1.0e-100_wp, rel=1.0e-13_wp)
+      call check(ctx, physical_epsilon(p), 1.0e50_wp, rel=1.0e-14_wp)
+      call physical_from_dimensionless(9.8_wp, 1.0e-100_wp, 0.0_wp, p, error, g=1.0e-50_wp, omega=1.0e-50_wp)
+      call check(ctx, .not. allocated(error), "omega, g at the edges")
+      call check(ctx, all(ieee_is_finite([p%r0, p%g, p%omega, p%a, p%kappa])), "finite at the edges (omega, g)")
+      call check(ctx, physical_alpha(p), 9.8_wp, rel=1.0e-13_wp)
+      call physical_from_dimensionless(0.0_wp, 0.0_wp, 0.0_wp, p, error, r0=1.0_wp, omega=2.0_wp)
+      call check(ctx, .not. allocated(error) .and. p%g == 0.0_wp, "r0, omega: beta = 0 is g = 0")
+   end subroutine inverse_bounds
 end module test_units

@@ -21,7 +21,10 @@ the rounding of beta to a double; the reference is computed at that double).
 
 Run from the repository root (installs mpmath and gmpy2 from PyPI if missing):
     bash data/reference/make_reference.sh
-writes data/reference/hard_set.dat. Takes a few minutes on 2 cores.
+writes data/reference/hard_set.dat. Takes a few minutes on 2 cores. With --check
+(`python3 data/reference/make_reference.py --check`) it writes
+data/reference/check_set.dat instead: points of the same kind that no method was
+tuned on (see `check_points`).
 """
 import sys
 import multiprocessing as mproc
@@ -185,13 +188,37 @@ def points():
     return pts
 
 
+def check_points():
+    """A second set of the same kind at other points, for checking that what was tuned on the
+    hard set holds elsewhere: larger |beta| (more oscillations or more growth), alpha = 9.7 and
+    9.86, and the Mathieu model at q = 10 and q = 30 on its a0 and b1 curves."""
+    pts = []
+    for alpha in (0.0, 5.0, 9.7, 9.86):
+        for beta in (-3e4, 3e4, 3e5):
+            pts.append((ELASTIC, alpha, beta, "check set"))
+    for alpha, beta in [(9.7, 0.0), (9.86, 0.0), (9.7, 2.47), (9.86, 2.47), (9.7, -3e5), (9.86, 1e3),
+                        (9.7, -1e6), (9.3, 1e5)]:
+        pts.append((ELASTIC, alpha, beta, "check set"))
+    with mp.workdps(50):
+        for qv in (10, 30):
+            q = mp.mpf(qv)
+            a0, b1 = mathieu_values(q)
+            nu = float(q * mp.pi**2 / 2)
+            pts.append((MATHIEU, nu, float(mp.pi**2 / 4 * a0), "mathieu q = %d on a0 (S = +2)" % qv))
+            pts.append((MATHIEU, nu, float(mp.pi**2 / 4 * b1), "mathieu q = %d on b1 (S = -2)" % qv))
+    return pts
+
+
 def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else "data/reference/hard_set.dat"
-    pts = points()
+    args = [a for a in sys.argv[1:] if a != "--check"]
+    check = "--check" in sys.argv[1:]
+    out = args[0] if args else ("data/reference/check_set.dat" if check else "data/reference/hard_set.dat")
+    pts = check_points() if check else points()
     with mproc.Pool(2) as pool:
         lines = pool.map(point_line, pts, chunksize=1)
     with open(out, "w") as f:
-        f.write("# Reference traces S of x'' + Q(tau) x = 0 at hillstab's hard points, made by\n")
+        f.write("# Reference traces S of x'' + Q(tau) x = 0 at hillstab's %s points, made by\n"
+                % ("check" if check else "hard"))
         f.write("# data/reference/make_reference.py (mpmath %s, Taylor series, 50 digits).\n" % mp.__version__)
         f.write("# model: 0 elastic Q of eq. (25), 1 mathieu q = beta - alpha cos(pi tau); alpha, beta: the exact\n")
         f.write("# doubles used; sign, ln_abs_S: sign and natural log of |S|; S: S itself (0.0 when |S| > 1e300);\n")

@@ -4,13 +4,16 @@
 !> the worst error/tolerance over the points with status ok, the number of round-off
 !> limited points and the worst error/estimate among them, failed points, and the time
 !> per point (one thread; shared machine, so only ratios within one run mean much).
-!> Run from the repository root: `fpm run --profile release --example hard_set_errors`;
-!> with any argument it also lists every point with status ok whose error exceeds the tolerance.
+!> Run from the repository root: `fpm run --profile release --example hard_set_errors`.
+!> Arguments (any order): a reference file (`data/reference/check_set.dat`: the check set;
+!> default the hard set), `loose` (tolerances 1e-4, 1e-6, 1e-8), `m=NAME` (one method),
+!> `all` (list every point with its error, estimate and status); any other argument lists
+!> every point with status ok whose error exceeds the tolerance.
 program hard_set_errors
    use hillstab
    implicit none
    integer, parameter :: n_max = 200
-   real(wp), parameter :: tolerances(3) = [1.0e-8_wp, 1.0e-10_wp, 1.0e-12_wp]
+   real(wp) :: tolerances(3) = [1.0e-8_wp, 1.0e-10_wp, 1.0e-12_wp]
    integer :: methods(5)
    integer :: model(n_max), n, unit, ios, m, k, i, n_roundoff, n_failed, kind
    real(wp) :: alpha(n_max), beta(n_max), sgn(n_max), log_abs(n_max), value(n_max), ref_error
@@ -19,11 +22,30 @@ program hard_set_errors
    character(len=400) :: line
    type(trace_t) :: tr
    type(error_t), allocatable :: error
-   logical :: verbose
-   verbose = command_argument_count() > 0
+   logical :: verbose, list_all
+   character(len=400) :: file, arg
+   character(len=20) :: only = ""
+   verbose = .false.
+   list_all = .false.
+   file = "data/reference/hard_set.dat"
+   do i = 1, command_argument_count()
+      call get_command_argument(i, arg)
+      if (arg == "loose") then
+         tolerances = [1.0e-4_wp, 1.0e-6_wp, 1.0e-8_wp]
+      else if (arg(1:2) == "m=") then
+         only = arg(3:)
+      else if (arg == "all") then
+         list_all = .true.
+         verbose = .true.
+      else if (index(arg, ".dat") > 0) then
+         file = arg
+      else
+         verbose = .true.
+      end if
+   end do
    methods = [method_auto, method_magnus4, method_magnus6, method_rk, method_gsl]
-   open (newunit=unit, file="data/reference/hard_set.dat", status="old", action="read", iostat=ios)
-   if (ios /= 0) error stop "run from the repository root: data/reference/hard_set.dat not found"
+   open (newunit=unit, file=trim(file), status="old", action="read", iostat=ios)
+   if (ios /= 0) error stop "run from the repository root: reference file not found"
    n = 0
    do
       read (unit, '(a)', iostat=ios) line
@@ -35,11 +57,12 @@ program hard_set_errors
       model(n) = merge(model_elastic, model_mathieu, kind == 0)
    end do
    close (unit)
-   write (*, '(a,i0,a)') "Hard set: ", n, " points"
+   write (*, '(a,i0,a)') trim(file)//": ", n, " points"
    write (*, '(a)') "| method | tolerance | worst error/tolerance, status 0 | round-off limited | "// &
       "worst error/estimate there | largest estimate | failed | ms/point |"
    write (*, '(a)') "|---|---|---|---|---|---|---|---|"
    do m = 1, size(methods)
+      if (len_trim(only) > 0 .and. method_name(methods(m)) /= only) cycle
       do k = 1, size(tolerances)
          worst_ok = 0.0_wp
          worst_roundoff = 0.0_wp
@@ -56,6 +79,9 @@ program hard_set_errors
             else
                err = abs(tr%value - value(i))/max(1.0_wp, abs(value(i)))
             end if
+            if (list_all) print '(a8,es8.1,f8.3,es11.3,a,es10.2,a,es10.2,a,i0)', method_name(methods(m)), &
+               tolerances(k), alpha(i), beta(i), " err", err, " est", tr%error_estimate, " status ", &
+               merge(0, merge(1, 2, error_code(error) == err_accuracy), .not. allocated(error))
             if (allocated(error)) then
                if (error%code == err_accuracy) then
                   n_roundoff = n_roundoff + 1
@@ -76,4 +102,10 @@ program hard_set_errors
             1.0e3_wp*real(t1 - t0, wp)/rate/n
       end do
    end do
+contains
+   integer function error_code(e)
+      type(error_t), allocatable, intent(in) :: e
+      error_code = 0
+      if (allocated(e)) error_code = e%code
+   end function error_code
 end program hard_set_errors

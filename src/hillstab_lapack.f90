@@ -1,0 +1,48 @@
+!> Explicit interfaces to the LAPACK routines hillstab calls (the build compiles with
+!> `-Werror=implicit-interface`, so every external routine is declared once, here).
+module hillstab_lapack
+   use hillstab_kinds, only: wp
+   implicit none
+   private
+   public :: dsbgv, dgeev
+
+   interface
+      !> Generalised symmetric-definite banded eigenproblem A z = λ B z.
+      subroutine dsbgv(jobz, uplo, n, ka, kb, ab, ldab, bb, ldbb, w, z, ldz, work, info)
+         import :: wp
+         character, intent(in) :: jobz  !! 'N' eigenvalues only, 'V' also eigenvectors
+         character, intent(in) :: uplo  !! 'U' or 'L': which triangle the bands hold
+         integer, intent(in) :: n       !! order of the matrices
+         integer, intent(in) :: ka      !! super-diagonals of A
+         integer, intent(in) :: kb      !! super-diagonals of B
+         integer, intent(in) :: ldab    !! leading dimension of ab
+         integer, intent(in) :: ldbb    !! leading dimension of bb
+         integer, intent(in) :: ldz     !! leading dimension of z
+         real(wp), intent(inout) :: ab(ldab, *)  !! A in band storage (overwritten)
+         real(wp), intent(inout) :: bb(ldbb, *)  !! B in band storage (overwritten by its split Cholesky factor)
+         real(wp), intent(out) :: w(*)           !! eigenvalues, ascending
+         real(wp), intent(out) :: z(ldz, *)      !! eigenvectors if jobz = 'V'
+         real(wp), intent(out) :: work(*)        !! workspace, 3n
+         integer, intent(out) :: info            !! 0 on success
+      end subroutine dsbgv
+
+      !> Eigenvalues and, optionally, left and right eigenvectors of a general real matrix.
+      subroutine dgeev(jobvl, jobvr, n, a, lda, wr, wi, vl, ldvl, vr, ldvr, work, lwork, info)
+         import :: wp
+         character, intent(in) :: jobvl  !! 'N' or 'V': left eigenvectors
+         character, intent(in) :: jobvr  !! 'N' or 'V': right eigenvectors
+         integer, intent(in) :: n        !! order of a
+         integer, intent(in) :: lda      !! leading dimension of a
+         integer, intent(in) :: ldvl     !! leading dimension of vl
+         integer, intent(in) :: ldvr     !! leading dimension of vr
+         integer, intent(in) :: lwork    !! size of work
+         real(wp), intent(inout) :: a(lda, *)   !! the matrix (overwritten)
+         real(wp), intent(out) :: wr(*)         !! real parts of the eigenvalues
+         real(wp), intent(out) :: wi(*)         !! imaginary parts of the eigenvalues
+         real(wp), intent(out) :: vl(ldvl, *)   !! left eigenvectors if jobvl = 'V'
+         real(wp), intent(out) :: vr(ldvr, *)   !! right eigenvectors if jobvr = 'V'
+         real(wp), intent(out) :: work(*)       !! workspace
+         integer, intent(out) :: info           !! 0 on success
+      end subroutine dgeev
+   end interface
+end module hillstab_lapack
