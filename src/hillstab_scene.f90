@@ -21,7 +21,7 @@ module hillstab_scene
       sampling_average, sampling_name
    use hillstab_monodromy, only: method_t, method_auto, method_name, method_from_name, method_magnus4, &
       method_magnus6, method_rk, method_gsl
-   use hillstab_output, only: default_chart_columns, find_chart_columns, chart_columns_text
+   use hillstab_output, only: default_chart_columns, find_chart_columns, chart_columns_text, is_directory
    use hillstab_format, only: integer_text, lower => lower_case
    use hillstab_units, only: physical_t, physical_alpha, physical_beta, physical_epsilon, physical_nu, &
       check_physical, equilibrium_length
@@ -327,9 +327,8 @@ contains
       integer(int64) :: bytes
       character(len=512) :: msg
       character(len=:), allocatable :: line
-      logical :: too_long, is_dir
-      inquire (file=path//"/.", exist=is_dir)
-      if (is_dir) then
+      logical :: too_long
+      if (is_directory(path)) then
          call set_error(error, err_input, path//": cannot read the scene file: it is a directory")
          return
       end if
@@ -888,10 +887,9 @@ contains
       character(len=:), allocatable :: line, where
       real(wp) :: pair(2)
       real(wp), allocatable :: found(:, :)
-      logical :: too_long, is_dir
+      logical :: too_long
 
-      inquire (file=scene%points_file//"/.", exist=is_dir)
-      if (is_dir) then
+      if (is_directory(scene%points_file)) then
          call fail(error, scene%source, group, "file", "'"//scene%points_file//"' is a directory, not a points file")
          return
       end if
