@@ -35,7 +35,7 @@ module hillstab_scene
    public :: task_chart, task_points, task_coefficient, task_boundaries, task_series, task_name
    public :: task_lyapunov, task_poincare, poincare_plan_t, max_poincare_orbits
    public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas, output_path, scene_columns
-   public :: scene_header
+   public :: scene_header, grid_point
 
    integer, parameter :: task_chart = 1        !! stability chart over an (α, β) grid
    integer, parameter :: task_points = 2       !! the chart's columns at listed (α, β) points
@@ -239,6 +239,18 @@ contains
          grid_value = lo + (hi - lo)*real(i - 1, wp)/real(n - 1, wp)
       end if
    end function grid_value
+
+   !> (α, β) of point k of a grid, the points numbered row by row (α outer, β inner).
+   pure function grid_point(grid, k) result(point)
+      type(chart_grid_t), intent(in) :: grid  !! the grid
+      integer(int64), intent(in) :: k  !! point index, 1 … n_alpha n_beta
+      real(wp) :: point(2)
+      integer :: i, j
+      i = int((k - 1)/grid%n_beta) + 1
+      j = int(k - int(i - 1, int64)*grid%n_beta)
+      point = [grid_value(grid%alpha_min, grid%alpha_max, grid%n_alpha, i), &
+               grid_value(grid%beta_min, grid%beta_max, grid%n_beta, j)]
+   end function grid_point
 
    !> A scene with every default filled in; `output` defaults to the scene file's
    !> base name without extension (files land in the current directory).
