@@ -10,9 +10,10 @@
 !> SIGHUP), the unfinished output file removed.
 program hillstab_cli
    use hillstab_kinds, only: version_string
-   use hillstab_error, only: error_t, err_input, err_io, err_invalid_parameter, err_points_failed
+   use hillstab_error, only: error_t, err_points_failed
    use hillstab_status, only: exit_points_failed
    use hillstab_tasks, only: run_scene_file
+   use hillstab_batch, only: exit_status
    use hillstab_signals, only: install_signal_cleanup
    use hillstab_templates, only: template_task_names, scene_template
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
@@ -62,16 +63,10 @@ program hillstab_cli
    do i = 1, n_scenes
       call run_scene_file(trim(scenes(i)), quiet, error, written)
       if (allocated(error)) then
-         select case (error%code)
-         case (err_points_failed)
-            ! the file is written; the message says where (also with --quiet: it qualifies the file)
-            write (error_unit, '(a)') "hillstab: "//error%message
-            points_failed = .true.
-         case (err_input, err_io, err_invalid_parameter)
-            call quit("hillstab: "//error%message, 2)
-         case default
-            call quit("hillstab: "//error%message, 1)
-         end select
+         if (error%code /= err_points_failed) call quit("hillstab: "//error%message, exit_status(error))
+         ! the file is written; the message says where (also with --quiet: it qualifies the file)
+         write (error_unit, '(a)') "hillstab: "//error%message
+         points_failed = .true.
       end if
       if (.not. quiet) write (error_unit, '(a)') "hillstab: wrote "//written
    end do

@@ -39,8 +39,15 @@ int hillstab_floquet_data(int model, double alpha, double beta, double epsilon, 
                      int sampling, double tolerance, double *trace, double log_modulus[2], double *exponent,
                      int *stable, int *stable_paper);
 
-/* The paper's closed forms eq. (37) (epsilon = 0) and eq. (48)-(50); +-DBL_MAX on overflow. */
+/* The paper's closed forms eq. (37) (epsilon = 0) and eq. (48)-(50); +-DBL_MAX on overflow.
+ * No error channel: bad parameters give a meaningless value silently (kept for compatibility). */
 double hillstab_trace_paper(double alpha, double beta, double epsilon);
+
+/* The same closed forms with a status (as hillstab_trace with HILLSTAB_METHOD_FORMULA on the
+ * elastic model): parameters checked; on overflow *trace = +-DBL_MAX, *overflow = 1,
+ * *log_abs_trace = ln|S|. */
+int hillstab_trace_paper_checked(double alpha, double beta, double epsilon, double *trace,
+                                 double *log_abs_trace, int *overflow);
 
 /* A NUL-terminated description of a status code (the name of the code, e.g. "invalid parameter"). */
 void hillstab_error_message(int status, char *buffer, size_t length);

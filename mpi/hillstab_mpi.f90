@@ -15,6 +15,7 @@ program hillstab_mpi
    use hillstab_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_scene, only: scene_t, read_scene
    use hillstab_tasks, only: run_scene, output_path
+   use hillstab_status, only: exit_points_failed
    use hillstab_batch, only: batch_t, batch_result_t, batch_distributable, batch_plan, batch_compute, &
       batch_open, batch_write, batch_commit, batch_discard, exit_status
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
@@ -97,7 +98,7 @@ program hillstab_mpi
       end if
       if (.not. quiet .and. rank == manager) write (error_unit, '(a)') "hillstab_mpi: wrote "//written
    end do
-   call quit("", merge(exit_status(error_t(err_points_failed, "")), 0, points_failed))
+   call quit("", merge(exit_points_failed, 0, points_failed))
 
 contains
 

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Install what hillstab needs on a Debian machine, skipping what is present:
 # gfortran, LAPACK/BLAS, GSL, gnuplot, pkg-config and CMake through apt-get; fpm through pip.
+# Arguments: further Debian packages to install with them (scripts/setup_mpi.sh passes
+# the missing Open MPI ones).
 set -euo pipefail
 
-missing=()
+missing=("$@")
 command -v gfortran >/dev/null 2>&1 || missing+=(gfortran)
 command -v gnuplot >/dev/null 2>&1 || missing+=(gnuplot-nox)
 [ -e /usr/include/gsl/gsl_sf_mathieu.h ] || missing+=(libgsl-dev)

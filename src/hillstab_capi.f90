@@ -15,16 +15,16 @@ module hillstab_capi
    use hillstab_kinds, only: wp
    use hillstab_error, only: error_t, error_code_name, set_error, err_invalid_parameter, err_overflow
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
-   use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model
+   use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model, model_elastic
    use hillstab_transfer, only: trace_t
    use hillstab_formulas, only: trace_damped_paper
    use hillstab_floquet, only: floquet_t, floquet_from_trace
-   use hillstab_monodromy, only: method_t, monodromy_trace
+   use hillstab_monodromy, only: method_t, monodromy_trace, method_formula
    use hillstab_outcome, only: record_outcome, get_last_error
    implicit none
    private
    public :: hillstab_c_coefficient, hillstab_c_trace, hillstab_c_floquet, hillstab_c_trace_paper, &
-      hillstab_c_error_message, hillstab_c_last_error
+      hillstab_c_trace_paper_checked, hillstab_c_error_message, hillstab_c_last_error
 
 contains
 
@@ -140,6 +140,9 @@ contains
    end subroutine evaluate
 
    !> The paper's closed form eq. (37)/(48) (ε = 0 gives eq. (37)); ±DBL_MAX on overflow.
+   !> No error channel: parameters outside the model's domain or non-finite give a
+   !> meaningless or non-finite value without a word (kept for compatibility; use
+   !> `hillstab_trace_paper_checked`).
    function hillstab_c_trace_paper(alpha, beta, epsilon) result(s) bind(C, name="hillstab_trace_paper")
       real(c_double), value, intent(in) :: alpha, beta, epsilon  !! alpha, beta and damping epsilon (0: eq. (37))
       real(c_double) :: s
@@ -147,6 +150,24 @@ contains
       tr = trace_damped_paper(real(alpha, wp), real(beta, wp), real(epsilon, wp))
       s = tr%value
    end function hillstab_c_trace_paper
+
+   !> The paper's closed form eq. (37)/(48) with a status, like `hillstab_trace` with
+   !> HILLSTAB_METHOD_FORMULA on the elastic model: parameters are checked (0 ≤ α < π²,
+   !> finite β, 0 ≤ ε), an overflowing S comes back as ±DBL_MAX with `overflow` = 1 and
+   !> ln|S| in `log_abs_trace`; outputs untouched on failure.
+   function hillstab_c_trace_paper_checked(alpha, beta, epsilon, trace, log_abs_trace, overflow) result(status) &
+      bind(C, name="hillstab_trace_paper_checked")
+      real(c_double), value, intent(in) :: alpha, beta, epsilon  !! alpha, beta and damping epsilon (0: eq. (37))
+      real(c_double), intent(out) :: trace          !! S (+-DBL_MAX on overflow)
+      real(c_double), intent(out) :: log_abs_trace  !! ln|S|
+      integer(c_int), intent(out) :: overflow       !! 1 when |S| overflowed, else 0
+      integer(c_int) :: status
+      real(c_double) :: log_modulus(2), floquet_exponent
+      integer(c_int) :: stable, stable_paper
+      call evaluate(hill_model_t(model_elastic, real(alpha, wp), real(beta, wp), real(epsilon, wp)), &
+         method_t(method_formula), trace, log_abs_trace, overflow, log_modulus, floquet_exponent, stable, &
+         stable_paper, status)
+   end function hillstab_c_trace_paper_checked
 
    !> Copy a NUL-terminated description of `status` into `buffer` (at most `length` bytes).
    subroutine hillstab_c_error_message(status, buffer, length) bind(C, name="hillstab_error_message")

@@ -13,11 +13,7 @@
 !> 6 singular problem) and S = 0. HSERRM gives the message.
 subroutine hstrace(model, alpha, beta, eps, method, nseg, isamp, tol, s, info)
    use hillstab_kinds, only: wp
-   use hillstab_error, only: error_t, err_accuracy
-   use hillstab_coefficient, only: hill_model_t
-   use hillstab_transfer, only: trace_t
-   use hillstab_monodromy, only: method_t, monodromy_trace
-   use hillstab_outcome, only: record_outcome
+   use hillstab_legacy, only: hsfloq
    implicit none
    integer, intent(in) :: model   !! 1 elastic (eq. 25), 2 Mathieu
    real(wp), intent(in) :: alpha  !! α (elastic: 0 ≤ α < π²); ν for Mathieu
@@ -29,25 +25,16 @@ subroutine hstrace(model, alpha, beta, eps, method, nseg, isamp, tol, s, info)
    real(wp), intent(in) :: tol    !! target error on S scaled by max(1, |S|) (exact methods), > 0
    real(wp), intent(out) :: s     !! the trace (±HUGE with INFO = 2; best value with INFO = 7)
    integer, intent(out) :: info   !! 0 success, 2 overflow, 7 round-off limited, else an error code
-   type(trace_t) :: tr
-   type(error_t), allocatable :: error
-   s = 0.0_wp
-   call monodromy_trace(hill_model_t(model, alpha, beta, eps), method_t(method, nseg, isamp, tol), tr, error)
-   call record_outcome(error)
-   if (allocated(error)) then
-      info = error%code
-      if (error%code == err_accuracy) s = tr%value
-      return
-   end if
-   s = tr%value
-   info = 0
-   if (tr%overflow) info = 2
+   real(wp) :: mu
+   integer :: istab
+   ! HSFLOQ computes the same S and INFO; the Floquet data it adds are not returned
+   call hsfloq(model, alpha, beta, eps, method, nseg, isamp, tol, s, mu, istab, info)
 end subroutine hstrace
 
 !> As HSTRACE, plus the Floquet exponent MU of the swing x per unit τ and ISTAB = 1
-!> when x is stable (|S₁| < 2 cosh ε), else 0. An overflowing trace is not an error
-!> here (MU stays finite): INFO = 0 success, 7 round-off limited (best values
-!> returned), otherwise an error code with S = MU = 0, ISTAB = 0.
+!> when x is stable (|S₁| < 2 cosh ε), else 0. INFO as HSTRACE: 0 success, 2 S
+!> overflowed (S = ±HUGE, MU stays finite), 7 round-off limited (best values returned),
+!> otherwise an error code with S = MU = 0, ISTAB = 0.
 subroutine hsfloq(model, alpha, beta, eps, method, nseg, isamp, tol, s, mu, istab, info)
    use hillstab_kinds, only: wp
    use hillstab_error, only: error_t, err_accuracy
@@ -84,7 +71,7 @@ subroutine hsfloq(model, alpha, beta, eps, method, nseg, isamp, tol, s, mu, ista
    s = f%trace%value
    mu = f%exponent
    if (f%stable) istab = 1
-   if (info == 0 .and. tr%overflow) info = 2  ! as HSTRACE: S is +-HUGE
+   if (info == 0 .and. tr%overflow) info = 2  ! S is +-HUGE
 end subroutine hsfloq
 
 !> MSG receives the message of the most recent HSTRACE or HSFLOQ call in this thread

@@ -127,24 +127,29 @@ contains
    !> Open `<path>.part<pid>` for writing; fails (err_io) when the place is not writable
    !> or `path` is a directory. With `binary`, the file is a byte stream: text lines
    !> (`write_text`, `write_header`) and then raw records (`write_records`).
-   subroutine open_output(file, path, error, binary)
+   subroutine open_output(file, path, error, binary, context)
       type(output_file_t), intent(out) :: file  !! the open temporary file
       character(len=*), intent(in) :: path  !! final file name
       type(error_t), allocatable, intent(out) :: error  !! err_io when the place is not writable
       logical, intent(in), optional :: binary  !! a byte stream (default: a text file)
+      !> put before the error message: what named the path (a task: "<scene>: &scene: output: ")
+      character(len=*), intent(in), optional :: context
       character(len=24) :: pid
+      character(len=:), allocatable :: prefix
+      prefix = ""
+      if (present(context)) prefix = context
       write (pid, '(i0)') c_getpid()
       file%path = path
       file%temp_path = path//".part"//trim(pid)
       if (present(binary)) file%binary = binary
       if (is_directory(path)) then
-         call set_error(error, err_io, "cannot write '"//path//"': it is a directory")
+         call set_error(error, err_io, prefix//"cannot write '"//path//"': it is a directory")
          return
       end if
       call set_errno(0)
       file%stream = c_fopen(c_string(file%temp_path), c_string("w"))
       if (.not. c_associated(file%stream)) then
-         call set_error(error, err_io, "cannot write '"//path//"': "//errno_text())
+         call set_error(error, err_io, prefix//"cannot write '"//path//"': "//errno_text())
          return
       end if
       call watch_temp_file(file%temp_path, file%slot)

@@ -13,7 +13,7 @@
 !> towards α → π²); the file is written once all are done, curve by curve.
 module hillstab_task_boundaries
    use hillstab_kinds, only: wp, version_string
-   use hillstab_error, only: error_t, set_error, err_io, err_input, err_points_failed
+   use hillstab_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_status, only: status_ok, status_roundoff, status_failed
    use hillstab_coefficient, only: model_elastic, in_physical_domain, sampling_name
    use hillstab_monodromy, only: method_name, method_formula, method_segments
@@ -167,11 +167,8 @@ contains
             "undamped curves: kappa must be 0")
          return
       end if
-      call open_output(file, output_path(scene), cause)
-      if (allocated(cause)) then
-         call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
-         return
-      end if
+      call open_output(file, output_path(scene), error, context=scene%source//": &scene: output: ")
+      if (allocated(error)) return
       mathieu = scene%model /= model_elastic
       n_alpha = scene%chart%n_alpha
       allocate (per_alpha(n_alpha))

@@ -13,7 +13,7 @@
 !> on several ranks with `lyapunov_lines` and writes the same file.
 module hillstab_task_lyapunov
    use hillstab_kinds, only: wp, int64, version_string
-   use hillstab_error, only: error_t, set_error, err_io, err_accuracy, err_points_failed
+   use hillstab_error, only: error_t, set_error, err_accuracy, err_points_failed
    use hillstab_status, only: status_ok, status_roundoff, status_failed
    use hillstab_coefficient, only: hill_model_t, model_elastic
    use hillstab_transfer, only: trace_t
@@ -21,7 +21,7 @@ module hillstab_task_lyapunov
    use hillstab_monodromy, only: monodromy_trace, method_name
    use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state
    use hillstab_lyapunov, only: lyapunov_t, lyapunov_largest
-   use hillstab_scene, only: scene_t, scene_header, grid_value, real_text, integer_text, output_path
+   use hillstab_scene, only: scene_t, scene_header, grid_point, real_text, integer_text, output_path
    use hillstab_output, only: output_file_t, open_output, finish_output, write_header, write_text
    use hillstab_format, only: put_es, put_integer
    use, intrinsic :: iso_fortran_env, only: error_unit
@@ -61,17 +61,17 @@ contains
       real(wp), intent(out) :: alpha      !! α of the point
       real(wp), intent(out) :: beta       !! β of the point
       logical, intent(out) :: new_block   !! a blank line goes before it
-      integer :: i, j
+      real(wp) :: point(2)
       if (scene%lyapunov_points) then
          alpha = scene%points(1, k)
          beta = scene%points(2, k)
          new_block = .false.
       else
-         i = int((k - 1)/scene%chart%n_beta) + 1
-         j = int(k - int(i - 1, int64)*scene%chart%n_beta)
-         alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, scene%chart%n_alpha, i)
-         beta = grid_value(scene%chart%beta_min, scene%chart%beta_max, scene%chart%n_beta, j)
-         new_block = j == 1 .and. i > 1
+         point = grid_point(scene%chart, k)
+         alpha = point(1)
+         beta = point(2)
+         ! the first β of a row after the first row
+         new_block = mod(k - 1, int(scene%chart%n_beta, int64)) == 0 .and. k > scene%chart%n_beta
       end if
    end subroutine lyapunov_point
 
@@ -252,7 +252,6 @@ contains
       !> err_io (unwritable output), err_points_failed (written, some points failed)
       type(error_t), allocatable, intent(out) :: error
       type(output_file_t) :: file
-      type(error_t), allocatable :: cause
       character(len=:), allocatable :: text
       integer, allocatable :: statuses(:)
       integer(int64) :: n, first, last, n_failed, j
@@ -260,11 +259,8 @@ contains
       logical :: new_block
       integer(int64) :: clock_start, clock_now, ticks
       n = lyapunov_point_count(scene)
-      call open_output(file, output_path(scene), cause)
-      if (allocated(cause)) then
-         call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
-         return
-      end if
+      call open_output(file, output_path(scene), error, context=scene%source//": &scene: output: ")
+      if (allocated(error)) return
       call write_header(file, lyapunov_header(scene), lyapunov_columns(), error)
       n_failed = 0
       call system_clock(clock_start, ticks)

@@ -9,7 +9,7 @@
 !> gnuplot `index`), one line per crossing of φ = 0 with φ' > 0.
 module hillstab_task_poincare
    use hillstab_kinds, only: wp, version_string
-   use hillstab_error, only: error_t, set_error, err_io, err_input, err_points_failed
+   use hillstab_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_status, only: status_ok, status_failed
    use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_energy
    use hillstab_poincare, only: section_t, poincare_section, pendulum_state_at_energy
@@ -71,11 +71,8 @@ contains
          end if
       end do
 
-      call open_output(file, output_path(scene), cause)
-      if (allocated(cause)) then
-         call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
-         return
-      end if
+      call open_output(file, output_path(scene), error, context=scene%source//": &scene: output: ")
+      if (allocated(error)) return
       !$omp parallel do schedule(dynamic) default(shared) private(k, cause)
       do k = 1, n
          call poincare_section(p, starts(:, k), scene%series%periods*p%period, scene%method%tolerance, sections(k), &

@@ -80,17 +80,13 @@ contains
       type(series_summary_t) :: summary
       type(series_writer_t) :: writer
       type(work_stats_t) :: stats
-      type(error_t), allocatable :: cause
       real(wp) :: y(4)
 
       call series_summary(scene, summary, error)
       if (allocated(error)) return
 
-      call open_output(writer%file, output_path(scene), cause)
-      if (allocated(cause)) then
-         call set_error(error, cause%code, scene%source//": &scene: output: "//cause%message)
-         return
-      end if
+      call open_output(writer%file, output_path(scene), error, context=scene%source//": &scene: output: ")
+      if (allocated(error)) return
       call write_header(writer%file, series_header(scene, summary), series_columns, error)
       if (allocated(error)) then
          call discard_output(writer%file)

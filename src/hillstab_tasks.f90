@@ -18,7 +18,7 @@
 !>```
 module hillstab_tasks
    use hillstab_kinds, only: wp, int64, pi, pi2, version_string
-   use hillstab_error, only: error_t, set_error, err_input, err_io, err_accuracy, err_invalid_parameter, &
+   use hillstab_error, only: error_t, set_error, err_input, err_accuracy, err_invalid_parameter, &
       err_points_failed
    use hillstab_status, only: status_ok, status_roundoff, status_failed
    use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, hill_coefficient, &
@@ -174,9 +174,7 @@ contains
       type(scene_t), intent(in) :: scene  !! a validated scene
       type(output_file_t), intent(out) :: file  !! the open temporary output file
       type(error_t), allocatable, intent(out) :: error  !! err_io naming &scene output
-      type(error_t), allocatable :: cause
-      call open_output(file, output_path(scene), cause, binary=scene%binary)
-      if (allocated(cause)) call set_error(error, err_io, scene%source//": &scene: output: "//cause%message)
+      call open_output(file, output_path(scene), error, binary=scene%binary, context=scene%source//": &scene: output: ")
    end subroutine open_scene_output
 
    !> Header lines common to every task: version, source, the effective scene, the model.

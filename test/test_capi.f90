@@ -5,7 +5,7 @@ module test_capi
    use hillstab_coefficient, only: hill_model_t, model_elastic, sampling_average
    use hillstab_transfer, only: trace_t
    use hillstab_monodromy, only: trace_segmented, method_segments, method_formula
-   use hillstab_formulas, only: trace_two_segment_paper
+   use hillstab_formulas, only: trace_two_segment_paper, trace_damped_paper
    use hillstab_capi
    use hillstab_error, only: error_t, err_invalid_parameter, err_accuracy
    use hillstab_coefficient, only: check_model
@@ -31,7 +31,8 @@ contains
          new_unittest("legacy_messages", legacy_messages), &
          new_unittest("legacy_roundoff_limited", legacy_roundoff_limited), &
          new_unittest("legacy_invalid_arguments", legacy_invalid_arguments), &
-         new_unittest("extreme_inputs_status", extreme_inputs_status)])
+         new_unittest("extreme_inputs_status", extreme_inputs_status), &
+         new_unittest("trace_paper_checked", trace_paper_checked)])
    end function collect_capi
 
    subroutine c_trace_matches_library(ctx)
@@ -250,4 +251,39 @@ contains
       call check(ctx, overflow == 1 .eqv. info_trace == 2, "C overflow flag as HSTRACE")
       call check(ctx, log_abs > 1000.0_c_double .and. log_abs < huge(1.0_c_double), "ln|S| finite and large")
    end subroutine extreme_inputs_status
+
+   !> hillstab_trace_paper_checked: the closed form's value with a status, where
+   !> hillstab_trace_paper can only return a number.
+   subroutine trace_paper_checked(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(c_double) :: s, log_abs
+      integer(c_int) :: overflow, status
+      type(trace_t) :: tr
+      tr = trace_two_segment_paper(1.48_wp, 2.47_wp)
+      status = hillstab_c_trace_paper_checked(1.48_c_double, 2.47_c_double, 0.0_c_double, s, log_abs, overflow)
+      call check(ctx, status == 0 .and. overflow == 0, "eq. (37): status 0, no overflow")
+      call check(ctx, real(s, wp), tr%value, rel=1.0e-15_wp)
+      call check(ctx, real(log_abs, wp), log(abs(tr%value)), rel=1.0e-14_wp)
+      call check(ctx, real(s, wp), real(hillstab_c_trace_paper(1.48_c_double, 2.47_c_double, 0.0_c_double), wp), &
+         rel=1.0e-15_wp)
+      tr = trace_damped_paper(3.7_wp, 2.47_wp, 0.3_wp)
+      status = hillstab_c_trace_paper_checked(3.7_c_double, 2.47_c_double, 0.3_c_double, s, log_abs, overflow)
+      call check(ctx, status == 0, "eq. (48): status 0")
+      call check(ctx, real(s, wp), tr%value, rel=1.0e-15_wp)
+      ! outside the model: the unchecked function still returns a number; the checked one refuses
+      s = -7.0_c_double
+      status = hillstab_c_trace_paper_checked(10.0_c_double, 2.47_c_double, 0.0_c_double, s, log_abs, overflow)
+      call check(ctx, status == err_invalid_parameter, "alpha > pi**2: invalid parameter")
+      call check(ctx, s == -7.0_c_double, "output untouched on error")
+      status = hillstab_c_trace_paper_checked(ieee_value(1.0_c_double, ieee_quiet_nan), 2.47_c_double, &
+         0.0_c_double, s, log_abs, overflow)
+      call check(ctx, status == err_invalid_parameter, "alpha = NaN: invalid parameter")
+      status = hillstab_c_trace_paper_checked(1.0_c_double, 2.47_c_double, -1.0_c_double, s, log_abs, overflow)
+      call check(ctx, status == err_invalid_parameter, "epsilon < 0: invalid parameter")
+      ! alpha = 0, beta = -1e6: both pieces are Q = -1e6, S = 2 cosh(2*1000), ln S = 2000 + ln(1 + e^-4000)
+      status = hillstab_c_trace_paper_checked(0.0_c_double, -1.0e6_c_double, 0.0_c_double, s, log_abs, overflow)
+      call check(ctx, status == 0 .and. overflow == 1, "S = 2 cosh 2000: status 0, overflow flag")
+      call check(ctx, s == huge(1.0_c_double), "S written as DBL_MAX")
+      call check(ctx, real(log_abs, wp), 2000.0_wp, rel=1.0e-13_wp)
+   end subroutine trace_paper_checked
 end module test_capi

@@ -10,9 +10,10 @@ int main(void) {
   char message[64];
   status = hillstab_trace(HILLSTAB_MODEL_ELASTIC, 3.70, 2.47, 0.0, HILLSTAB_METHOD_SEGMENTS, 4096,
                           HILLSTAB_SAMPLING_AVERAGE, 1e-10, &s, &log_abs, &overflow);
-  paper = hillstab_trace_paper(3.70, 2.47, 0.0);
+  if (hillstab_trace_paper_checked(3.70, 2.47, 0.0, &paper, &log_abs, &overflow) != 0) return 1;
   printf("C: S(eq. 37) = %.6f, S(4096 pieces) = %.6f, status %d\n", paper, s, status);
   if (status != 0 || fabs(s + 2.9343) > 1e-3 || fabs(paper + 3.6282) > 1e-3) return 1;
+  if (hillstab_trace_paper(3.70, 2.47, 0.0) != paper) return 1;
   status = hillstab_trace(HILLSTAB_MODEL_ELASTIC, 10.0, 2.47, 0.0, HILLSTAB_METHOD_FORMULA, 2, 1, 1e-10,
                           &s, &log_abs, &overflow);
   hillstab_error_message(status, message, sizeof message);
