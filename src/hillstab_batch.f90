@@ -34,7 +34,7 @@ module hillstab_batch
    use hillstab_error, only: error_t, set_error, err_input, err_io, err_invalid_parameter, err_points_failed
    use hillstab_status, only: status_roundoff, status_failed, exit_points_failed
    use hillstab_coefficient, only: in_physical_domain
-   use hillstab_scene, only: scene_t, task_chart, task_points, task_lyapunov, grid_value
+   use hillstab_scene, only: scene_t, task_chart, task_points, task_lyapunov, grid_point
    use hillstab_task_lyapunov, only: lyapunov_lines, lyapunov_header, lyapunov_columns, lyapunov_point_count, &
       lyapunov_point, lyapunov_failure_error
    use hillstab_coefficient, only: model_elastic
@@ -130,15 +130,11 @@ contains
       type(batch_t), intent(in) :: batch
       integer(int64), intent(in) :: k
       real(wp) :: point(2)
-      integer :: i, j
       logical :: new_block
       if (batch%scene%task == task_lyapunov) then
          call lyapunov_point(batch%scene, k, point(1), point(2), new_block)
       else if (batch%scene%task == task_chart) then
-         i = int((k - 1)/batch%scene%chart%n_beta) + 1
-         j = int(k - int(i - 1, int64)*batch%scene%chart%n_beta)
-         point = [grid_value(batch%scene%chart%alpha_min, batch%scene%chart%alpha_max, batch%scene%chart%n_alpha, i), &
-                  grid_value(batch%scene%chart%beta_min, batch%scene%chart%beta_max, batch%scene%chart%n_beta, j)]
+         point = grid_point(batch%scene%chart, k)
       else
          point = batch%scene%points(:, k)
       end if

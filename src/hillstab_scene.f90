@@ -21,7 +21,7 @@ module hillstab_scene
       sampling_average, sampling_name
    use hillstab_monodromy, only: method_t, method_auto, method_name, method_from_name, method_magnus4, &
       method_magnus6, method_rk, method_gsl
-   use hillstab_output, only: default_chart_columns, find_chart_columns, chart_columns_text
+   use hillstab_output, only: default_chart_columns, find_chart_columns, chart_columns_text, is_directory
    use hillstab_format, only: integer_text, lower => lower_case
    use hillstab_units, only: physical_t, physical_alpha, physical_beta, physical_epsilon, physical_nu, &
       check_physical, equilibrium_length
@@ -35,7 +35,7 @@ module hillstab_scene
    public :: task_chart, task_points, task_coefficient, task_boundaries, task_series, task_name
    public :: task_lyapunov, task_poincare, poincare_plan_t, max_poincare_orbits
    public :: grid_value, real_text, integer_text, read_text_line, max_coefficient_alphas, output_path, scene_columns
-   public :: scene_header
+   public :: scene_header, grid_point
 
    integer, parameter :: task_chart = 1        !! stability chart over an (α, β) grid
    integer, parameter :: task_points = 2       !! the chart's columns at listed (α, β) points
@@ -240,6 +240,18 @@ contains
       end if
    end function grid_value
 
+   !> (α, β) of point k of a grid, the points numbered row by row (α outer, β inner).
+   pure function grid_point(grid, k) result(point)
+      type(chart_grid_t), intent(in) :: grid  !! the grid
+      integer(int64), intent(in) :: k  !! point index, 1 … n_alpha n_beta
+      real(wp) :: point(2)
+      integer :: i, j
+      i = int((k - 1)/grid%n_beta) + 1
+      j = int(k - int(i - 1, int64)*grid%n_beta)
+      point = [grid_value(grid%alpha_min, grid%alpha_max, grid%n_alpha, i), &
+               grid_value(grid%beta_min, grid%beta_max, grid%n_beta, j)]
+   end function grid_point
+
    !> A scene with every default filled in; `output` defaults to the scene file's
    !> base name without extension (files land in the current directory).
    function default_scene(path, task) result(scene)
@@ -327,9 +339,8 @@ contains
       integer(int64) :: bytes
       character(len=512) :: msg
       character(len=:), allocatable :: line
-      logical :: too_long, is_dir
-      inquire (file=path//"/.", exist=is_dir)
-      if (is_dir) then
+      logical :: too_long
+      if (is_directory(path)) then
          call set_error(error, err_input, path//": cannot read the scene file: it is a directory")
          return
       end if
@@ -888,10 +899,9 @@ contains
       character(len=:), allocatable :: line, where
       real(wp) :: pair(2)
       real(wp), allocatable :: found(:, :)
-      logical :: too_long, is_dir
+      logical :: too_long
 
-      inquire (file=scene%points_file//"/.", exist=is_dir)
-      if (is_dir) then
+      if (is_directory(scene%points_file)) then
          call fail(error, scene%source, group, "file", "'"//scene%points_file//"' is a directory, not a points file")
          return
       end if

@@ -21,7 +21,7 @@ module hillstab_task_lyapunov
    use hillstab_monodromy, only: monodromy_trace, method_name
    use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state
    use hillstab_lyapunov, only: lyapunov_t, lyapunov_largest
-   use hillstab_scene, only: scene_t, scene_header, grid_value, real_text, integer_text, output_path
+   use hillstab_scene, only: scene_t, scene_header, grid_point, real_text, integer_text, output_path
    use hillstab_output, only: output_file_t, open_output, finish_output, write_header, write_text
    use hillstab_format, only: put_es, put_integer
    use, intrinsic :: iso_fortran_env, only: error_unit
@@ -61,17 +61,17 @@ contains
       real(wp), intent(out) :: alpha      !! α of the point
       real(wp), intent(out) :: beta       !! β of the point
       logical, intent(out) :: new_block   !! a blank line goes before it
-      integer :: i, j
+      real(wp) :: point(2)
       if (scene%lyapunov_points) then
          alpha = scene%points(1, k)
          beta = scene%points(2, k)
          new_block = .false.
       else
-         i = int((k - 1)/scene%chart%n_beta) + 1
-         j = int(k - int(i - 1, int64)*scene%chart%n_beta)
-         alpha = grid_value(scene%chart%alpha_min, scene%chart%alpha_max, scene%chart%n_alpha, i)
-         beta = grid_value(scene%chart%beta_min, scene%chart%beta_max, scene%chart%n_beta, j)
-         new_block = j == 1 .and. i > 1
+         point = grid_point(scene%chart, k)
+         alpha = point(1)
+         beta = point(2)
+         ! the first β of a row after the first row
+         new_block = mod(k - 1, int(scene%chart%n_beta, int64)) == 0 .and. k > scene%chart%n_beta
       end if
    end subroutine lyapunov_point
 
