@@ -6,9 +6,10 @@
 #               fixed-form FORTRAN 77 compiled with -std=legacy and no USE (implicit interfaces);
 #   CMake find_package(hillstab): C, Fortran and FORTRAN 77, shared and static targets;
 #   the installed program: --version and --help.
-# Also checks that linking prints no executable-stack warning and that the shared library
-# and the program have a non-executable stack (GNU_STACK RW); HILLSTAB_STACK_CHECK=report
-# only reports an executable stack instead of failing.
+# Also checks that linking prints no executable-stack warning and that the installed
+# libraries and program and the consumers have a non-executable stack (GNU_STACK RW, by
+# scripts/check_stack.sh); HILLSTAB_STACK_CHECK=report only reports an executable stack
+# instead of failing.
 set -euo pipefail
 prefix=$(cd "$1" && pwd)
 route=${2:-install}
@@ -102,12 +103,11 @@ for task in $tasks; do
 done
 say "bin/hillstab runs the template of every task ($tasks)${long:+; still running after 10 s, stopped:$long}"
 
-for f in "$libdir/libhillstab.so" "$prefix/bin/hillstab"; do
-   flags=$(readelf -lW "$f" | awk '$1 == "GNU_STACK" {print $7}')
-   if [ "$flags" != "RW" ]; then
-      [ "$stack_check" = fail ] && die "$f has an executable stack (GNU_STACK $flags)"
-      say "REPORT: $f has an executable stack (GNU_STACK $flags); HILLSTAB_STACK_CHECK=report, not failing"
-   else
-      say "$(basename "$f"): non-executable stack (GNU_STACK RW)"
+# every linked file installed (libraries, program) and every consumer built above
+for dir in "$prefix" "$work"; do
+   if ! bash "$here/../../scripts/check_stack.sh" "$dir"; then
+      [ "$stack_check" = fail ] && die "executable stack under $dir (above)"
+      say "REPORT: executable stack under $dir (above); HILLSTAB_STACK_CHECK=report, not failing"
    fi
 done
+say "installed library and program, and the consumers: non-executable stack (GNU_STACK RW)"
