@@ -1,5 +1,5 @@
 /* Links against an installed hillstab through its C header: eq. (37) and a
- * segmented trace at the paper's case (b), and an error status. */
+ * segmented trace at the paper's case (b), an error status and an overflow. */
 #include <stdio.h>
 #include <math.h>
 #include "hillstab.h"
@@ -18,5 +18,10 @@ int main(void) {
                           &s, &log_abs, &overflow);
   hillstab_error_message(status, message, sizeof message);
   printf("C: alpha = 10 -> status %d (%s)\n", status, message);
-  return status == HILLSTAB_ERR_INVALID_PARAMETER ? 0 : 1;
+  if (status != HILLSTAB_ERR_INVALID_PARAMETER) return 1;
+  /* alpha = 0, beta = -1e6: S = 2 cosh 2000 overflows; the checked closed form says so and
+   * gives ln S, where hillstab_trace_paper returns DBL_MAX alone */
+  status = hillstab_trace_paper_checked(0.0, -1.0e6, 0.0, &paper, &log_abs, &overflow);
+  printf("C: eq. (37) at beta = -1e6 -> status %d, overflow %d, ln S = %.6f\n", status, overflow, log_abs);
+  return status == 0 && overflow == 1 && fabs(log_abs - 2000.0) < 1e-9 ? 0 : 1;
 }
