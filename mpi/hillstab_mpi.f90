@@ -40,7 +40,9 @@ program hillstab_mpi
    integer :: rank, n_ranks, i, n_scenes
    logical :: points_failed
    character(len=:), allocatable :: argument, written
-   character(len=4096), allocatable :: scenes(:)
+   integer, parameter :: max_path = 4096
+   character(len=*), parameter :: max_path_text = "4096"
+   character(len=max_path), allocatable :: scenes(:)
    logical :: quiet, help, version
    type(error_t), allocatable :: error
 
@@ -67,6 +69,9 @@ program hillstab_mpi
       case default
          if (len(argument) > 1 .and. argument(1:1) == "-") &
             call quit(on_manager("hillstab_mpi: unknown option '"//argument//"' (see hillstab_mpi --help)"), 2)
+         ! as hillstab: a longer path would be cut and another file read
+         if (len(argument) > max_path) &
+            call quit(on_manager("hillstab_mpi: scene path longer than "//max_path_text//" characters"), 2)
          n_scenes = n_scenes + 1
          scenes(n_scenes) = argument
       end select
