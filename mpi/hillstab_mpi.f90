@@ -1,7 +1,7 @@
 !> `mpirun -np N hillstab_mpi [--quiet] SCENE.nml...`: hillstab spread over MPI ranks.
 !>
-!> The points of chart and points scenes are computed on all ranks with dynamic load
-!> balancing: rank 0 hands out units (hillstab_batch: a chart row, a run of points) on
+!> The points of chart, points and lyapunov scenes are computed on all ranks with dynamic
+!> load balancing: rank 0 hands out units (hillstab_batch: a chart row, a run of points) on
 !> demand, keeps two units queued at every other rank so that no rank waits for the
 !> next, computes units itself between requests, and writes the results in order into
 !> the same file as a single-process `hillstab` run (identical data lines), through the
@@ -11,7 +11,7 @@
 !> points, 1 a computation failed).
 program hillstab_mpi
    use mpi_f08
-   use hillstab_kinds, only: wp, int64, version_string
+   use hillstab_kinds, only: wp, version_string
    use hillstab_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_scene, only: scene_t, read_scene
    use hillstab_tasks, only: run_scene, output_path
@@ -345,10 +345,10 @@ contains
       write (output_unit, '(a)') &
          "usage: mpirun -np N hillstab_mpi [--quiet] SCENE.nml...", &
          "", &
-         "hillstab spread over MPI ranks: the points of chart and points scenes are computed", &
-         "on all ranks (dynamic load balancing), rank 0 writes the same file as a", &
-         "single-process hillstab run; other tasks run on rank 0.", &
-         "Each SCENE is a namelist file (&scene plus &chart, &points or &coefficient);", &
+         "hillstab spread over MPI ranks: the points of chart, points and lyapunov scenes", &
+         "are computed on all ranks (dynamic load balancing), rank 0 writes the same file", &
+         "as a single-process hillstab run; other tasks run on rank 0.", &
+         "Each SCENE is a namelist file (&scene plus the group of its task);", &
          "results go to <output>_<task>.dat, gnuplot-ready. The README has the full", &
          "namelist reference and 'Running on a cluster'.", &
          "", &

@@ -46,14 +46,10 @@ contains
       type(error_t), allocatable :: error
       m = hill_model_t(int(model), real(alpha, wp), real(beta, wp), real(epsilon, wp))
       call check_model(m, error)
+      if (.not. allocated(error) .and. .not. ieee_is_finite(tau)) &
+         call set_error(error, err_invalid_parameter, "tau must be finite")
       call record_outcome(error)
       if (allocated(error)) then
-         status = int(error%code, c_int)
-         return
-      end if
-      if (.not. ieee_is_finite(tau)) then
-         call set_error(error, err_invalid_parameter, "tau must be finite")
-         call record_outcome(error)
          status = int(error%code, c_int)
          return
       end if

@@ -55,7 +55,7 @@ module hillstab_gsl
    public :: gsl_odeiv2_step_rk8pd
    ! the odeiv2 driver, for other systems integrated by rk8pd (hillstab_gsl_lyapunov)
    public :: gsl_odeiv2_system, gsl_odeiv2_driver_alloc_scaled_new, gsl_odeiv2_driver_set_nmax, &
-      gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_set_error_handler_off
+      gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_set_error_handler_off, gsl_rk8pd_scaled_driver
 
    !> Curves of the even Mathieu functions ce_n: a_n(q), n ≥ 0.
    integer, parameter :: mathieu_kind_a = 1
@@ -660,6 +660,27 @@ contains
       real(wp), intent(in) :: tolerance, log_condition
       eps = max(smallest_gsl_epsilon, tolerance*gsl_tolerance_factor*exp(-min(log_condition, 100.0_wp)))
    end function gsl_epsilon
+
+   !> A GSL odeiv2 driver with the rk8pd stepper and GSL's scaled error control set up
+   !> like hillstab's: the error of component i is kept below rtol·(scale_abs(i) + |y_i|)
+   !> (absolute part rtol·scale_abs(i), relative part rtol·|y_i|), with GSL's error
+   !> handler switched off so that failures come back as status codes. The driver keeps
+   !> the address of `system`, which must outlive it. A null pointer when GSL cannot
+   !> allocate it; free it with `gsl_odeiv2_driver_free`.
+   function gsl_rk8pd_scaled_driver(system, h_start, rtol, scale_abs, step_limit) result(driver)
+      type(gsl_odeiv2_system), intent(in), target :: system  !! the system (kept by the driver)
+      real(wp), intent(in) :: h_start              !! first trial step
+      real(wp), intent(in) :: rtol                 !! relative tolerance (> 0)
+      real(c_double), intent(in) :: scale_abs(:)   !! absolute tolerances over rtol, per component
+      integer(c_long), intent(in) :: step_limit    !! most steps per gsl_odeiv2_driver_apply call
+      type(c_ptr) :: driver                        !! the driver, or a null pointer
+      type(c_funptr) :: previous
+      integer(c_int) :: status
+      previous = gsl_set_error_handler_off()
+      driver = gsl_odeiv2_driver_alloc_scaled_new(system, gsl_odeiv2_step_rk8pd, real(h_start, c_double), &
+         real(rtol, c_double), real(rtol, c_double), 1.0_c_double, 0.0_c_double, scale_abs)
+      if (c_associated(driver)) status = gsl_odeiv2_driver_set_nmax(driver, step_limit)
+   end function gsl_rk8pd_scaled_driver
 
    subroutine check_tolerance(tolerance, error)
       real(wp), intent(in) :: tolerance

@@ -13,13 +13,13 @@
 !> call lyapunov_largest_gsl(p, pendulum_initial_state(p, 0.017_wp), 300, 1.0e-10_wp, result, error)
 !>```
 module hillstab_gsl_lyapunov
-   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_long, c_ptr, c_funptr, c_null_funptr, &
+   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_long, c_ptr, c_null_funptr, &
       c_loc, c_funloc, c_f_pointer, c_associated
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_kinds, only: wp, int64
    use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
-   use hillstab_gsl, only: gsl_odeiv2_system, gsl_odeiv2_step_rk8pd, gsl_odeiv2_driver_alloc_scaled_new, &
-      gsl_odeiv2_driver_set_nmax, gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_set_error_handler_off
+   use hillstab_gsl, only: gsl_odeiv2_system, gsl_rk8pd_scaled_driver, gsl_odeiv2_driver_apply, &
+      gsl_odeiv2_driver_free
    use hillstab_pendulum, only: pendulum_t, pendulum_rhs, pendulum_jacobian, pendulum_atol, pendulum_angle, &
       pendulum_energy, pendulum_energy_scale
    use hillstab_lyapunov, only: lyapunov_t, tangent_norm
@@ -51,8 +51,7 @@ contains
       type(context_t), target :: context
       type(gsl_odeiv2_system), target :: system
       type(c_ptr) :: driver
-      type(c_funptr) :: previous
-      real(c_double) :: state(8), t, scale_abs(8)
+      real(c_double) :: state(8), t
       real(wp) :: norm, sum_log
       integer(c_int) :: status
       integer :: n, half
@@ -63,17 +62,14 @@ contains
             "finite initial state")
          return
       end if
-      previous = gsl_set_error_handler_off()
       context%pendulum = p
       system = gsl_odeiv2_system(c_funloc(tangent_rhs), c_null_funptr, 8_c_size_t, c_loc(context))
-      scale_abs = [pendulum_atol(p, y0, rtol), rtol*[1.0_wp, 1.0_wp, p%omega, p%omega]]/rtol
-      driver = gsl_odeiv2_driver_alloc_scaled_new(system, gsl_odeiv2_step_rk8pd, real(1.0e-3_wp*p%period, c_double), &
-         real(rtol, c_double), real(rtol, c_double), 1.0_c_double, 0.0_c_double, scale_abs)
+      driver = gsl_rk8pd_scaled_driver(system, 1.0e-3_wp*p%period, rtol, &
+         [pendulum_atol(p, y0, rtol), rtol*[1.0_wp, 1.0_wp, p%omega, p%omega]]/rtol, 10000000_c_long)
       if (.not. c_associated(driver)) then
          call set_error(error, err_integration, "GSL could not allocate the odeiv2 driver")
          return
       end if
-      status = gsl_odeiv2_driver_set_nmax(driver, 10000000_c_long)
       allocate (result%running(periods), result%log_growth(periods))
       state(1:4) = y0
       state(5:8) = 0.5_wp*[1.0_wp, 1.0_wp, p%omega, p%omega]

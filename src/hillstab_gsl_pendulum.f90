@@ -12,14 +12,14 @@
 !> call pendulum_gsl(p, y, 100*p%period, 1.0e-10_wp, stats, error)
 !>```
 module hillstab_gsl_pendulum
-   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_long, c_ptr, c_funptr, c_null_funptr, &
+   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_long, c_ptr, c_null_funptr, &
       c_loc, c_funloc, c_f_pointer, c_associated
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_kinds, only: wp, int64
    use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
    use hillstab_stats, only: work_stats_t
-   use hillstab_gsl, only: gsl_odeiv2_system, gsl_odeiv2_step_rk8pd, gsl_odeiv2_driver_alloc_scaled_new, &
-      gsl_odeiv2_driver_set_nmax, gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_set_error_handler_off
+   use hillstab_gsl, only: gsl_odeiv2_system, gsl_rk8pd_scaled_driver, gsl_odeiv2_driver_apply, &
+      gsl_odeiv2_driver_free
    use hillstab_pendulum, only: pendulum_t, pendulum_rhs, pendulum_atol
    implicit none
    private
@@ -48,8 +48,7 @@ contains
       type(context_t), target :: context
       type(gsl_odeiv2_system), target :: system
       type(c_ptr) :: driver
-      type(c_funptr) :: previous
-      real(c_double) :: state(4), t, scale_abs(4)
+      real(c_double) :: state(4), t
       integer(c_int) :: status
       character(len=160) :: text
       stats = work_stats_t()
@@ -58,17 +57,14 @@ contains
          call set_error(error, err_invalid_parameter, "pendulum_gsl: need rtol > 0, t_end > 0, a finite state")
          return
       end if
-      previous = gsl_set_error_handler_off()
       context%pendulum = p
       system = gsl_odeiv2_system(c_funloc(gsl_rhs), c_null_funptr, 4_c_size_t, c_loc(context))
-      scale_abs = pendulum_atol(p, y, rtol)/rtol
-      driver = gsl_odeiv2_driver_alloc_scaled_new(system, gsl_odeiv2_step_rk8pd, real(1.0e-3_wp*p%period, c_double), &
-         real(rtol, c_double), real(rtol, c_double), 1.0_c_double, 0.0_c_double, scale_abs)
+      driver = gsl_rk8pd_scaled_driver(system, 1.0e-3_wp*p%period, rtol, pendulum_atol(p, y, rtol)/rtol, &
+                                       100000000_c_long)
       if (.not. c_associated(driver)) then
          call set_error(error, err_integration, "pendulum_gsl: GSL could not allocate the odeiv2 driver")
          return
       end if
-      status = gsl_odeiv2_driver_set_nmax(driver, 100000000_c_long)
       state = y
       t = 0.0_c_double
       status = gsl_odeiv2_driver_apply(driver, t, real(t_end, c_double), state)

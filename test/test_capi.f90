@@ -11,7 +11,7 @@ module test_capi
    use hillstab_coefficient, only: check_model
    use hillstab_monodromy, only: method_auto
    use hillstab_legacy, only: hstrace, hsfloq, hserrm
-   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
    !$ use omp_lib, only: omp_get_thread_num, omp_get_num_threads
    use hillstab_testing
    implicit none
@@ -271,6 +271,8 @@ contains
       call check(ctx, status == 0, "eq. (48): status 0")
       call check(ctx, real(s, wp), tr%value, rel=1.0e-15_wp)
       ! outside the model: the unchecked function still returns a number; the checked one refuses
+      call check(ctx, ieee_is_finite(hillstab_c_trace_paper(10.0_c_double, 2.47_c_double, 0.0_c_double)), &
+         "alpha > pi**2: hillstab_trace_paper gives a finite number, nothing says it is meaningless")
       s = -7.0_c_double
       status = hillstab_c_trace_paper_checked(10.0_c_double, 2.47_c_double, 0.0_c_double, s, log_abs, overflow)
       call check(ctx, status == err_invalid_parameter, "alpha > pi**2: invalid parameter")
@@ -284,6 +286,8 @@ contains
       status = hillstab_c_trace_paper_checked(0.0_c_double, -1.0e6_c_double, 0.0_c_double, s, log_abs, overflow)
       call check(ctx, status == 0 .and. overflow == 1, "S = 2 cosh 2000: status 0, overflow flag")
       call check(ctx, s == huge(1.0_c_double), "S written as DBL_MAX")
+      call check(ctx, hillstab_c_trace_paper(0.0_c_double, -1.0e6_c_double, 0.0_c_double) == s, &
+         "hillstab_trace_paper gives the same DBL_MAX, with nothing to tell it from a value")
       call check(ctx, real(log_abs, wp), 2000.0_wp, rel=1.0e-13_wp)
    end subroutine trace_paper_checked
 end module test_capi
