@@ -99,7 +99,9 @@ contains
 
    !> Physical pendulum from the chart's parameters, validated: 0 ≤ α < π² and
    !> 0 < β < π² (the physical domain: a < ρ, r0 > 0), ε ≥ 0, r0 > 0, g > 0, all finite.
-   !> On error `p` holds the given values only and `error` names the parameter.
+   !> ρ, ω and κ must come out within [1e-50, 1e50] (checked on their logarithms before
+   !> they are computed, so nothing overflows). On error `p` holds the given values only
+   !> and `error` names the parameter.
    pure subroutine pendulum_from_chart(alpha, beta, epsilon, r0, g, p, error)
       real(wp), intent(in) :: alpha    !! α = a π²/ρ, in [0, π²)
       real(wp), intent(in) :: beta     !! β = g π²/(ρ ω²), in (0, π²)
@@ -108,6 +110,8 @@ contains
       real(wp), intent(in) :: g        !! gravity [m/s²], > 0
       type(pendulum_t), intent(out) :: p  !! parameters and derived quantities
       type(error_t), allocatable, intent(out) :: error  !! allocated (err_invalid_parameter) if invalid
+      real(wp), parameter :: log_bound = 115.129254649702_wp  ! ln 1e50
+      real(wp) :: log_rho, log_omega, log_kappa
       p%alpha = alpha; p%beta = beta; p%epsilon = epsilon; p%r0 = r0; p%g = g
       if (.not. all(ieee_is_finite([alpha, beta, epsilon, r0, g]))) then
          call set_error(error, err_invalid_parameter, "pendulum: non-finite parameter")
@@ -125,6 +129,18 @@ contains
          call set_error(error, err_invalid_parameter, "pendulum: g must be > 0")
       end if
       if (allocated(error)) return
+      ! ρ and ω from their logarithms first: with β → 0, β → π², or extreme r0 and g they
+      ! would overflow or underflow (a trapping build stops there); keeping ρ, ω and κ
+      ! within [1e-50, 1e50] keeps ω²ρ² and every other product of the model finite
+      log_rho = log(r0) + log(pi2) - log(pi2 - beta)
+      log_omega = 0.5_wp*(log(g) + log(pi2) - log_rho - log(beta))
+      log_kappa = -huge(1.0_wp)   ! (Fortran does not short-circuit: no log(0) inside the test)
+      if (epsilon > 0.0_wp) log_kappa = log(epsilon) + log_omega - log(pi)
+      if (abs(log_rho) > log_bound .or. abs(log_omega) > log_bound .or. log_kappa > log_bound) then
+         call set_error(error, err_invalid_parameter, "pendulum: derived parameters out of range (rho, omega "// &
+            "and kappa must lie within [1e-50, 1e50]; beta near 0 or pi**2, or extreme r0, g, epsilon)")
+         return
+      end if
       p%rho = r0*pi2/(pi2 - beta)
       p%omega = sqrt(g*pi2/(p%rho*beta))
       p%a = alpha*p%rho/pi2

@@ -35,6 +35,7 @@ contains
       suite = new_testsuite("pendulum", [ &
          new_unittest("parameters", parameters), &
          new_unittest("invalid_parameters", invalid_parameters), &
+         new_unittest("extreme_parameters", extreme_parameters), &
          new_unittest("energy_closed_form", energy_closed_form), &
          new_unittest("exact_bounce", exact_bounce), &
          new_unittest("energy_conserved", energy_conserved), &
@@ -94,6 +95,31 @@ contains
       call check(ctx, allocated(error), "g < 0 rejected")
       if (allocated(error)) call check(ctx, index(error%message, "g must") > 0, "message names g")
    end subroutine invalid_parameters
+
+   !> Parameters inside the domain whose derived scales would overflow are refused before
+   !> anything is computed (a trapping build would stop otherwise); the scene reader's
+   !> smallest beta still gives a pendulum.
+   subroutine extreme_parameters(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(pendulum_t) :: p
+      type(error_t), allocatable :: error
+      real(wp) :: rho
+      call pendulum_from_chart(1.0_wp, 1.0e-300_wp, 0.0_wp, 0.1_wp, 9.81_wp, p, error)
+      call check(ctx, allocated(error), "beta = 1e-300 (omega ~ 3e151) refused")
+      if (allocated(error)) call check(ctx, index(error%message, "out of range") > 0, "message says out of range")
+      call pendulum_from_chart(1.0_wp, 1.0e-320_wp, 0.0_wp, 0.1_wp, 9.81_wp, p, error)
+      call check(ctx, allocated(error), "beta = 1e-320 (omega**2 overflows) refused")
+      call pendulum_from_chart(1.0_wp, 2.0_wp, 0.0_wp, 1.0e308_wp, 9.81_wp, p, error)
+      call check(ctx, allocated(error), "r0 = 1e308 (rho overflows) refused")
+      call pendulum_from_chart(1.0_wp, 2.0_wp, 0.0_wp, 1.0e-300_wp, 9.81_wp, p, error)
+      call check(ctx, allocated(error), "r0 = 1e-300 refused")
+      call pendulum_from_chart(1.0_wp, 2.0_wp, 1.0e300_wp, 0.1_wp, 9.81_wp, p, error)
+      call check(ctx, allocated(error), "epsilon = 1e300 (kappa ~ 1e301) refused")
+      call pendulum_from_chart(1.0_wp, 1.0e-8_wp, 0.0_wp, 0.1_wp, 9.81_wp, p, error)
+      call check(ctx, .not. allocated(error), "beta = 1e-8 accepted")
+      rho = 0.1_wp*pi2/(pi2 - 1.0e-8_wp)
+      call check(ctx, p%omega, sqrt(9.81_wp*pi2/(rho*1.0e-8_wp)), rel=1.0e-15_wp)
+   end subroutine extreme_parameters
 
    !> E(0) at φ0 = 0 equals (C1): ½ ω² r0² (β² + α² − 2βπ²)/(π² − β)² per unit mass.
    subroutine energy_closed_form(ctx)
