@@ -40,7 +40,7 @@ module hillstab_magnus
    use hillstab_stats, only: work_stats_t
    use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
    use hillstab_transfer, only: scaled_matrix_t, scaled_identity, transfer_functions, transfer_increment, multiply_matrix, &
-      normalize_scaled, trace_t, trace_of, monodromy_from_half_period
+      add_compensated, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
    implicit none
    private
    public :: monodromy_magnus, trace_magnus, monodromy_magnus_uniform, half_period_magnus_uniform
@@ -153,7 +153,7 @@ contains
       real(wp), intent(in) :: g(3)  !! generator [a, b, c]
       real(wp), intent(inout), optional :: compensation  !! Kahan carry of a%log_scale
       real(wp), intent(inout), optional :: low(2, 2)  !! low part of the propagator (a%m + low), same scale
-      real(wp) :: c, s, log_scale, e(2, 2), before, increment, total, d(2, 2), sum(2, 2), part(2, 2)
+      real(wp) :: c, s, log_scale, e(2, 2), before, d(2, 2), sum(2, 2), part(2, 2)
       integer :: k
       if (present(low) .and. present(compensation)) then
          call transfer_increment(-(g(1)*g(1) + g(2)*g(3)), c, s, log_scale)
@@ -174,11 +174,7 @@ contains
          k = exponent(maxval(abs(a%m)))
          a%m = scale(a%m, -k)
          low = scale(low, -k)
-         before = a%log_scale
-         increment = (log_scale + k*log(2.0_wp)) - compensation
-         total = before + increment
-         compensation = (total - before) - increment
-         a%log_scale = total
+         call add_compensated(a%log_scale, log_scale + k*log(2.0_wp), compensation)
          return
       end if
       call transfer_functions(-(g(1)*g(1) + g(2)*g(3)), c, s, log_scale)
@@ -188,10 +184,8 @@ contains
          before = a%log_scale
          a%log_scale = log_scale
          call multiply_matrix(a, e)
-         increment = a%log_scale - compensation
-         total = before + increment
-         compensation = (total - before) - increment
-         a%log_scale = total
+         call add_compensated(before, a%log_scale, compensation)
+         a%log_scale = before
       else
          a%log_scale = a%log_scale + log_scale
          call multiply_matrix(a, e)

@@ -18,7 +18,7 @@ module hillstab_transfer
    implicit none
    private
    public :: transfer_matrix, transfer_functions, transfer_increment, scaled_matrix_t, scaled_identity, scaled_from_matrix
-   public :: multiply_transfer, multiply_scaled, multiply_matrix, normalize_scaled
+   public :: multiply_transfer, multiply_scaled, multiply_matrix, normalize_scaled, add_compensated
    public :: trace_t, trace_of, trace_from_value, trace_from_scaled, matrix_of, determinant, determinant_of
    public :: monodromy_from_half_period
 
@@ -170,6 +170,19 @@ contains
       a%log_scale = a%log_scale + e*log(2.0_wp)
    end subroutine normalize_scaled
 
+   !> sum ← sum + term by compensated (Kahan) summation: `compensation` carries the rounding
+   !> error of the running sum (start it at 0; the exact sum is about sum − compensation).
+   elemental subroutine add_compensated(sum, term, compensation)
+      real(wp), intent(inout) :: sum           !! the running sum
+      real(wp), intent(in) :: term             !! the term added
+      real(wp), intent(inout) :: compensation  !! the carried rounding error
+      real(wp) :: increment, total
+      increment = term - compensation
+      total = sum + increment
+      compensation = (total - sum) - increment
+      sum = total
+   end subroutine add_compensated
+
    !> a ← T(q, h) · a: advance by one constant piece.
    !>
    !> With `compensation`, the piece's increment of a%log_scale (its own scale and the
@@ -181,7 +194,7 @@ contains
       type(scaled_matrix_t), intent(inout) :: a  !! the product so far, advanced
       real(wp), intent(in) :: q, h  !! constant coefficient of the piece; its length in tau
       real(wp), intent(inout), optional :: compensation  !! Kahan carry of a%log_scale
-      real(wp) :: c, s, log_scale, t(2, 2), before, increment, total
+      real(wp) :: c, s, log_scale, t(2, 2), before
       call transfer_functions(q*h*h, c, s, log_scale)
       t(1, 1) = c; t(1, 2) = h*s
       t(2, 1) = -q*h*s; t(2, 2) = c
@@ -190,10 +203,8 @@ contains
          before = a%log_scale
          a%log_scale = log_scale
          call normalize_scaled(a)
-         increment = a%log_scale - compensation
-         total = before + increment
-         compensation = (total - before) - increment
-         a%log_scale = total
+         call add_compensated(before, a%log_scale, compensation)
+         a%log_scale = before
       else
          a%log_scale = a%log_scale + log_scale
          call normalize_scaled(a)
