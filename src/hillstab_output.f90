@@ -339,13 +339,16 @@ contains
 
    !> `lines` (each trimmed) joined by new lines, after a leading new line if `separate`,
    !> without a final one: a block of rows written by one `write_text` (one write per line
-   !> would cost more than a chart point of method auto).
-   pure function joined_lines(lines, separate) result(text)
+   !> would cost more than a chart point of method auto). With `breaks`, one more new line
+   !> (a blank line: a new gnuplot block) before each line j where breaks(j).
+   pure function joined_lines(lines, separate, breaks) result(text)
       character(len=*), intent(in) :: lines(:)  !! the rows
       logical, intent(in) :: separate  !! start with a new line (a blank line before the block)
+      logical, intent(in), optional :: breaks(:)  !! a blank line before line j (size of lines)
       character(len=:), allocatable :: text
       integer :: j, n, pos, total
       total = merge(1, 0, separate) + max(size(lines) - 1, 0)
+      if (present(breaks)) total = total + count(breaks)
       do j = 1, size(lines)
          total = total + len_trim(lines(j))
       end do
@@ -359,6 +362,12 @@ contains
          if (j > 1) then
             text(pos + 1:pos + 1) = new_line("a")
             pos = pos + 1
+         end if
+         if (present(breaks)) then
+            if (breaks(j)) then
+               text(pos + 1:pos + 1) = new_line("a")
+               pos = pos + 1
+            end if
          end if
          n = len_trim(lines(j))
          text(pos + 1:pos + n) = lines(j)(1:n)

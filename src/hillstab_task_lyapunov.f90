@@ -22,7 +22,7 @@ module hillstab_task_lyapunov
    use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state
    use hillstab_lyapunov, only: lyapunov_t, lyapunov_largest
    use hillstab_scene, only: scene_t, scene_header, grid_point, real_text, integer_text, output_path
-   use hillstab_output, only: output_file_t, open_output, finish_output, write_header, write_text
+   use hillstab_output, only: output_file_t, open_output, finish_output, write_header, write_text, joined_lines
    use hillstab_format, only: put_es, put_integer
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
@@ -205,7 +205,6 @@ contains
       logical, allocatable :: new_block(:)
       real(wp) :: alpha, beta
       integer(int64) :: k
-      integer :: pos, n
       allocate (lines(first:last), new_block(first:last))
       !$omp parallel do schedule(dynamic) default(shared) private(k, alpha, beta)
       do k = first, last
@@ -213,22 +212,7 @@ contains
          call lyapunov_point_line(scene, alpha, beta, lines(k), statuses(k))
       end do
       !$omp end parallel do
-      allocate (character(len=(last - first + 1)*(lyapunov_line_length + 2)) :: text)
-      pos = 0
-      do k = first, last
-         if (k > first) then
-            text(pos + 1:pos + 1) = new_line("a")
-            pos = pos + 1
-         end if
-         if (new_block(k)) then
-            text(pos + 1:pos + 1) = new_line("a")
-            pos = pos + 1
-         end if
-         n = len_trim(lines(k))
-         text(pos + 1:pos + n) = lines(k)(1:n)
-         pos = pos + n
-      end do
-      text = text(1:pos)
+      text = joined_lines(lines, .false., new_block)
    end subroutine lyapunov_lines
 
    !> err_points_failed naming the first failed point, after the file has been written.
