@@ -534,7 +534,7 @@ contains
       type(refinement_t) :: ladder
       type(trace_t) :: tr
       type(error_t), allocatable :: run_error
-      real(wp) :: log_condition, eps, log_peak, estimate, noise
+      real(wp) :: log_condition, eps, log_peak, estimate, noise, phase
       integer :: run, loosening
       character(len=200) :: buffer
       stats = work_stats_t()
@@ -561,7 +561,8 @@ contains
          return
       end if
       tr = trace_of(best)
-      call refine(ladder, tr, .false., roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase_bound(model)))
+      phase = phase_bound(model)
+      call refine(ladder, tr, .false., roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase))
       estimate = -1.0_wp
       do run = 2, max_ladder_runs
          ! the first step down also divides by the condition κ of the first pass: where the
@@ -590,11 +591,11 @@ contains
                estimate = trace_distance(trace_of(best), trace_of(trial))
             end if
             tr = trace_of(best)
-            estimate = max(estimate, roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase_bound(model)))
+            estimate = max(estimate, roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase))
             exit
          end if
          tr = trace_of(trial)
-         noise = roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase_bound(model))
+         noise = roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase)
          call refine(ladder, tr, eps <= 1.001_wp*smallest_gsl_epsilon .or. run == max_ladder_runs, noise, &
                      near_floor=eps <= 1.0e3_wp*smallest_gsl_epsilon)
          best = trial

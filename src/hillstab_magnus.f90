@@ -471,7 +471,7 @@ contains
       real(wp), intent(out), optional :: error_estimate  !! estimated |ΔS|/max(1, |S|)
       real(wp), allocatable :: mesh(:)
       type(scaled_matrix_t) :: phi, phi_check, m_check
-      real(wp) :: theta, estimate, ratio, log_peak, noise, previous
+      real(wp) :: theta, estimate, ratio, log_peak, noise, previous, phase
       logical :: stagnated
       type(trace_t) :: tr
       integer :: n_mesh, split, pass, factor
@@ -503,7 +503,8 @@ contains
       estimate = richardson_safety*relative_trace_difference(m, m_check)/(ratio - 1.0_wp)
       split = 1
       tr = trace_of(m)
-      noise = roundoff_level(log_peak, tr%log_abs, n_mesh, phase_bound(model))
+      phase = phase_bound(model)
+      noise = roundoff_level(log_peak, tr%log_abs, n_mesh, phase)
       stagnated = .false.
       do pass = 1, max_refinements
          if (estimate <= tolerance .and. noise <= tolerance) exit
@@ -519,7 +520,7 @@ contains
          previous = estimate
          estimate = richardson_safety*relative_trace_difference(m, m_check)/(real(factor, wp)**order - 1.0_wp)
          tr = trace_of(m)
-         noise = roundoff_level(log_peak, tr%log_abs, split*n_mesh, phase_bound(model))
+         noise = roundoff_level(log_peak, tr%log_abs, split*n_mesh, phase)
          ! truncation falls by factor^p (at least 16); a difference that no longer falls
          ! by a quarter of that, within a few times the round-off level, is rounding noise
          stagnated = estimate > previous*4.0_wp/real(factor, wp)**order .and. estimate <= 10.0_wp*noise

@@ -177,7 +177,7 @@ contains
       type(scaled_matrix_t) :: m
       type(work_stats_t) :: work, part
       type(refinement_t) :: ladder
-      real(wp) :: local, log_peak
+      real(wp) :: local, log_peak, phase
       integer :: run, kind
       character(len=160) :: buffer
       kind = rk_dop853
@@ -186,13 +186,14 @@ contains
       tr = trace_t()
       call start_refinement(ladder, tolerance)
       local = max(ladder_start_factor*rk_tolerances(tolerance, kind), 10.0_wp*tolerance_floor)
+      phase = phase_bound(model)
       do run = 1, max_ladder_runs
          call monodromy_rk(model, tolerance, m, part, error, method, local_tolerance=local, log_peak=log_peak)
          call add_work(work, part)
          if (allocated(error)) exit
          tr = trace_of(m)
          call refine(ladder, tr, at_floor=local <= 1.001_wp*tolerance_floor .or. run == max_ladder_runs, &
-                     noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase_bound(model)), &
+                     noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase), &
                      near_floor=local <= 1.0e3_wp*tolerance_floor)
          if (ladder%verdict /= refine_more) exit
          ! the first step down also divides by the propagator's condition (`first_step_factor`)
