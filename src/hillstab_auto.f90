@@ -265,13 +265,7 @@ contains
             ! up to ε·2√|q| relative to max(1, |S|) (1e-13 at q = 3e5)
             traces(j)%error_estimate = exact_transfer_error*(1.0_wp + sqrt(abs(q)))
             if (present(reached)) reached(j) = traces(j)%error_estimate <= tolerance
-            if (traces(j)%error_estimate > tolerance) then
-               if (present(roundoff)) roundoff(j) = .true.
-               write (buffer, '(a,es9.2,a,es9.2,a,es10.3,a)') "auto: the tolerance ", tolerance, &
-                  " is below the round-off level ", traces(j)%error_estimate, " of S (at beta = ", betas(j), &
-                  "); best value returned"
-               if (.not. allocated(error)) call set_error(error, err_accuracy, trim(buffer))
-            end if
+            if (traces(j)%error_estimate > tolerance) call roundoff_limited(j, traces(j)%error_estimate)
          end do
          stats%n_steps = stats%n_steps + m
          stats%n_evaluations = stats%n_evaluations + m
@@ -327,10 +321,7 @@ contains
                end if
                pending(j) = .false.
                if (present(reached)) reached(j) = .false.
-               if (present(roundoff)) roundoff(j) = .true.
-               write (buffer, '(a,es9.2,a,es9.2,a,es10.3,a)') "auto: the tolerance ", tolerance, &
-                  " is below the round-off level ", noise, " of S (at beta = ", betas(j), "); best value returned"
-               if (.not. allocated(error)) call set_error(error, err_accuracy, trim(buffer))
+               call roundoff_limited(j, noise)
             else if (ns(j) >= max_auto_steps .or. pass == 12) then
                pending(j) = .false.
                if (present(reached)) reached(j) = .false.
@@ -362,6 +353,17 @@ contains
       end do
       traces%error_estimate = estimates
    contains
+      !> Point j is round-off limited at `level`: flagged, and the first such point (unless
+      !> an error is already recorded) named in an err_accuracy error.
+      subroutine roundoff_limited(j, level)
+         integer, intent(in) :: j
+         real(wp), intent(in) :: level
+         if (present(roundoff)) roundoff(j) = .true.
+         write (buffer, '(a,es9.2,a,es9.2,a,es10.3,a)') "auto: the tolerance ", tolerance, &
+            " is below the round-off level ", level, " of S (at beta = ", betas(j), "); best value returned"
+         if (.not. allocated(error)) call set_error(error, err_accuracy, trim(buffer))
+      end subroutine roundoff_limited
+
       !> S on meshes of n(j) steps for the selected points, grouped by n and propagated in lanes.
       subroutine traces_in_lanes(n, result, floors, selected)
          integer, intent(in) :: n(:)
