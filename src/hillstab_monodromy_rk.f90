@@ -186,11 +186,11 @@ contains
       tr = trace_t()
       call start_refinement(ladder, tolerance)
       local = max(ladder_start_factor*rk_tolerances(tolerance, kind), 10.0_wp*tolerance_floor)
-      phase = phase_bound(model)
       do run = 1, max_ladder_runs
          call monodromy_rk(model, tolerance, m, part, error, method, local_tolerance=local, log_peak=log_peak)
          call add_work(work, part)
          if (allocated(error)) exit
+         if (run == 1) phase = phase_bound(model)   ! (the model is known valid from here)
          tr = trace_of(m)
          call refine(ladder, tr, at_floor=local <= 1.001_wp*tolerance_floor .or. run == max_ladder_runs, &
                      noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase), &
