@@ -158,11 +158,8 @@ contains
       allocate (lines(first:last))
       select case (batch%scene%task)
       case (task_chart)
-         if (allocated(batch%ids)) then
-            call chart_row(batch%scene, unit, lines, result%status, batch%betas, batch%beta_texts, batch%ids)
-         else
-            call chart_row(batch%scene, unit, lines, result%status, batch%betas, batch%beta_texts)
-         end if
+         ! (batch%ids unallocated is an absent optional argument: chart_row then makes its own)
+         call chart_row(batch%scene, unit, lines, result%status, batch%betas, batch%beta_texts, batch%ids)
       case (task_points)
          call compute_points(batch%scene, int(first), int(last), lines, result%status)
       end select
