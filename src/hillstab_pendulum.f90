@@ -44,6 +44,7 @@
 module hillstab_pendulum
    use hillstab_kinds, only: wp, pi, pi2
    use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
+   use hillstab_units, only: largest_scale
    use hillstab_stats, only: work_stats_t
    use hillstab_rk, only: rk_system_t, rk_options_t, rk_integrate, rk_dop853
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -99,7 +100,7 @@ contains
 
    !> Physical pendulum from the chart's parameters, validated: 0 ≤ α < π² and
    !> 0 < β < π² (the physical domain: a < ρ, r0 > 0), ε ≥ 0, r0 > 0, g > 0, all finite.
-   !> ρ, ω and κ must come out within [1e-50, 1e50] (checked on their logarithms before
+   !> ρ, ω and κ must come out within [1e-50, 1e50] (hillstab_units' scale bounds; checked on their logarithms before
    !> they are computed, so nothing overflows). On error `p` holds the given values only
    !> and `error` names the parameter.
    pure subroutine pendulum_from_chart(alpha, beta, epsilon, r0, g, p, error)
@@ -110,7 +111,7 @@ contains
       real(wp), intent(in) :: g        !! gravity [m/s²], > 0
       type(pendulum_t), intent(out) :: p  !! parameters and derived quantities
       type(error_t), allocatable, intent(out) :: error  !! allocated (err_invalid_parameter) if invalid
-      real(wp), parameter :: log_bound = 115.129254649702_wp  ! ln 1e50
+      real(wp), parameter :: log_bound = log(largest_scale)  ! symmetric: smallest_scale = 1/largest_scale
       real(wp) :: log_rho, log_omega, log_kappa
       p%alpha = alpha; p%beta = beta; p%epsilon = epsilon; p%r0 = r0; p%g = g
       if (.not. all(ieee_is_finite([alpha, beta, epsilon, r0, g]))) then

@@ -31,12 +31,15 @@ module hillstab_units
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
-   public :: physical_t, standard_gravity
+   public :: physical_t, standard_gravity, smallest_scale, largest_scale
    public :: equilibrium_length, physical_alpha, physical_beta, physical_epsilon, physical_nu, check_physical
    public :: physical_from_dimensionless, rate_per_second, tau_from_time, time_from_tau
 
    !> Standard gravity (m/s²), the default of g.
    real(wp), parameter :: standard_gravity = 9.80665_wp
+   !> Bounds of a pendulum's scales (ω, r0, g, κ in SI units; also ρ in hillstab_pendulum):
+   !> within them no product of the model overflows or underflows to zero.
+   real(wp), parameter :: smallest_scale = 1.0e-50_wp, largest_scale = 1.0e50_wp
 
    !> A pendulum in SI units.
    type :: physical_t
@@ -114,13 +117,13 @@ contains
          variable = "kappa"; message = "not a finite number"
       else if (p%kappa < 0.0_wp) then
          variable = "kappa"; message = "the damping rate must be >= 0"
-      else if (p%omega < 1.0e-50_wp .or. p%omega > 1.0e50_wp) then
+      else if (p%omega < smallest_scale .or. p%omega > largest_scale) then
          variable = "omega"; message = "must lie in [1e-50, 1e50] (rad/s): beyond, the model's scalings overflow"
-      else if (p%r0 > 1.0e50_wp) then
+      else if (p%r0 > largest_scale) then
          variable = "r0"; message = "must be <= 1e50 (m)"
-      else if (p%g > 1.0e50_wp) then
+      else if (p%g > largest_scale) then
          variable = "g"; message = "must be <= 1e50 (m/s^2)"
-      else if (p%kappa > 1.0e50_wp) then
+      else if (p%kappa > largest_scale) then
          variable = "kappa"; message = "must be <= 1e50 (1/s)"
       else
          rho = equilibrium_length(p)
@@ -151,7 +154,7 @@ contains
       real(wp), intent(in), optional :: r0     !! natural length (m)
       real(wp), intent(in), optional :: g      !! gravity (m/s²)
       real(wp), intent(in), optional :: omega  !! radial angular frequency ω = √(k/m) (rad/s)
-      real(wp), parameter :: smallest = 1.0e-50_wp, largest = 1.0e50_wp  ! the bounds of check_physical
+      real(wp), parameter :: smallest = smallest_scale, largest = largest_scale
       real(wp) :: rho
       if (count([present(r0), present(g), present(omega)]) /= 2) then
          call set_error(error, err_invalid_parameter, "give exactly two of r0, g and omega")
