@@ -59,19 +59,10 @@ contains
       real(wp), intent(out) :: c          !! (scaled) cos √z
       real(wp), intent(out) :: s          !! (scaled) sin √z / √z
       real(wp), intent(out) :: log_scale  !! ln of the scale factor removed
-      real(wp) :: x, term_c, term_s, decay
-      integer :: k
+      real(wp) :: x, decay
       log_scale = 0.0_wp
       if (abs(z) < series_limit) then
-         ! C = Σ (−z)^k/(2k)!, S = Σ (−z)^k/(2k+1)!; |z| < 0.5 needs 10 terms for 1e-17
-         c = 1.0_wp; s = 1.0_wp
-         term_c = 1.0_wp; term_s = 1.0_wp
-         do k = 1, 11
-            term_c = -term_c*z/real((2*k - 1)*(2*k), wp)
-            term_s = -term_s*z/real((2*k)*(2*k + 1), wp)
-            c = c + term_c
-            s = s + term_s
-         end do
+         call cos_sinc_series(z, 1.0_wp, c, s)
       else if (z > 0.0_wp) then
          x = sqrt(z)
          c = cos(x)
@@ -90,6 +81,25 @@ contains
       end if
    end subroutine transfer_functions
 
+   !> The series C = Σ (−z)^k/(2k)!, S = Σ (−z)^k/(2k+1)! for |z| < series_limit (11
+   !> terms: 1e-17 at |z| < 0.5), C's sum started at `c_start` (1 for C, 0 for C − 1).
+   elemental subroutine cos_sinc_series(z, c_start, c, s)
+      real(wp), intent(in) :: z        !! q h²
+      real(wp), intent(in) :: c_start  !! the k = 0 term of C's sum (1), or 0 for C − 1
+      real(wp), intent(out) :: c       !! C, or C − 1
+      real(wp), intent(out) :: s       !! sin √z / √z
+      real(wp) :: term_c, term_s
+      integer :: k
+      c = c_start; s = 1.0_wp
+      term_c = 1.0_wp; term_s = 1.0_wp
+      do k = 1, 11
+         term_c = -term_c*z/real((2*k - 1)*(2*k), wp)
+         term_s = -term_s*z/real((2*k)*(2*k + 1), wp)
+         c = c + term_c
+         s = s + term_s
+      end do
+   end subroutine cos_sinc_series
+
    !> As `transfer_functions`, but with C − 1 in place of C, accurate when C is close to 1
    !> (short steps): the step matrix C I + S Ω is then applied as I + ((C − 1) I + S Ω),
    !> whose increment carries rounding errors relative to the increment, not to the
@@ -99,18 +109,10 @@ contains
       real(wp), intent(out) :: c_minus_1  !! cos √z − 1 (cosh for z < 0), or the scaled C minus 1
       real(wp), intent(out) :: s          !! (scaled) sin √z / √z
       real(wp), intent(out) :: log_scale  !! ln of the scale factor removed (as `transfer_functions`)
-      real(wp) :: x, term_c, term_s, half
-      integer :: k
+      real(wp) :: x, half
       log_scale = 0.0_wp
       if (abs(z) < series_limit) then
-         c_minus_1 = 0.0_wp; s = 1.0_wp
-         term_c = 1.0_wp; term_s = 1.0_wp
-         do k = 1, 11
-            term_c = -term_c*z/real((2*k - 1)*(2*k), wp)
-            term_s = -term_s*z/real((2*k)*(2*k + 1), wp)
-            c_minus_1 = c_minus_1 + term_c
-            s = s + term_s
-         end do
+         call cos_sinc_series(z, 0.0_wp, c_minus_1, s)
       else if (z > 0.0_wp) then
          x = sqrt(z)
          half = sin(0.5_wp*x)
