@@ -17,24 +17,50 @@
 !> so that its curve covers the errors of hillstab's loosest runs. Times are wall-clock,
 !> the fastest of interleaved repeated runs, measured side by side in one run; compare
 !> them as ratios.
+!> The pendulum watched along its integration: the largest |E − E(0)|/E_scale at the
+!> ends of the accepted steps (the benchmark's energy-drift measure).
+module bench_series_watch
+   use hillstab_kinds, only: wp
+   use hillstab_rk, only: rk_step_t
+   use hillstab_pendulum, only: pendulum_system_t, pendulum_energy
+   implicit none
+   private
+   public :: watched_pendulum_t
+   type, extends(pendulum_system_t) :: watched_pendulum_t
+      real(wp) :: energy0 = 0.0_wp, energy_scale = 1.0_wp, drift = 0.0_wp
+   contains
+      procedure :: observe => watch_energy
+   end type watched_pendulum_t
+contains
+   subroutine watch_energy(self, step, stop)
+      class(watched_pendulum_t), intent(inout) :: self
+      type(rk_step_t), intent(in) :: step
+      logical, intent(inout) :: stop
+      self%drift = max(self%drift, abs(pendulum_energy(self%pendulum, step%y) - self%energy0)/self%energy_scale)
+   end subroutine watch_energy
+end module bench_series_watch
+
 program hillstab_bench_series
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
    use hillstab_kinds, only: wp
    use hillstab_error, only: error_t
    use hillstab_stats, only: work_stats_t
-   use hillstab_rk, only: rk_options_t, rk_integrate, rk_dop853, rk_dopri5, rk_method_name
+   use hillstab_rk, only: rk_options_t, rk_integrate, rk_dop853, rk_dopri5, rk_pd87
    use hillstab_pendulum, only: pendulum_t, pendulum_system_t, pendulum_from_chart, pendulum_initial_state, &
       pendulum_atol, pendulum_energy, pendulum_energy_scale
    use hillstab_gsl_pendulum, only: pendulum_gsl
+   use bench_series_watch, only: watched_pendulum_t
    implicit none
 
    integer :: n_periods = 10          !! the state run
    integer, parameter :: energy_periods = 100
-   integer, parameter :: method_gsl = 3
+   integer, parameter :: method_gsl = 4
+   !> hillstab's integrators, in the order of `names`
+   integer, parameter :: hillstab_methods(3) = [rk_dopri5, rk_dop853, rk_pd87]
    !> GSL also runs at these looser tolerances (alone), so that its curve reaches the
    !> errors of hillstab's loosest runs and every one of those has a GSL time to compare with
    real(wp), parameter :: gsl_looser(2) = [1.0e-3_wp, 1.0e-4_wp]
-   character(len=*), parameter :: names(3) = [character(len=6) :: "dopri5", "dop853", "rk8pd"]
+   character(len=*), parameter :: names(4) = [character(len=6) :: "dopri5", "dop853", "pd87", "rk8pd"]
    real(wp), allocatable :: tolerances(:)
    type(pendulum_system_t) :: system
    type(error_t), allocatable :: error
@@ -91,16 +117,19 @@ program hillstab_bench_series
    write (output_unit, '(a,es10.3)') "# reference DOP853 1e-15 vs GSL rk8pd 1e-15: scaled difference ", &
       scaled_error(check_state)
 
-   allocate (table_err(size(tolerances), 3, 2), table_time(size(tolerances), 3, 2), &
-             table_evals(size(tolerances), 3, 2))
-   allocate (gsl_err(size(gsl_looser) + size(tolerances), 2), gsl_time(size(gsl_looser) + size(tolerances), 2), &
-             gsl_evals(size(gsl_looser) + size(tolerances), 2))
-   do measure = 1, 2
+   allocate (table_err(size(tolerances), 4, 3), table_time(size(tolerances), 4, 3), &
+             table_evals(size(tolerances), 4, 3))
+   allocate (gsl_err(size(gsl_looser) + size(tolerances), 3), gsl_time(size(gsl_looser) + size(tolerances), 3), &
+             gsl_evals(size(gsl_looser) + size(tolerances), 3))
+   do measure = 1, 3
       if (measure == 1) then
          write (output_unit, '(a,i0,a)') "# state after ", n_periods, " periods: method tolerance seconds error f-evals"
-      else
+      else if (measure == 2) then
          t_end = energy_periods*system%pendulum%period
          write (output_unit, '(a,i0,a)') "# energy after ", energy_periods, &
+            " periods: method tolerance seconds error f-evals"
+      else
+         write (output_unit, '(a,i0,a)') "# largest energy error at step ends over ", energy_periods, &
             " periods: method tolerance seconds error f-evals"
       end if
       do j = 1, size(tolerances)
@@ -113,7 +142,7 @@ program hillstab_bench_series
       gsl_time(size(gsl_looser) + 1:, measure) = table_time(:, method_gsl, measure)
       gsl_evals(size(gsl_looser) + 1:, measure) = real(table_evals(:, method_gsl, measure), wp)
       write (output_unit, '(a)') "# (ns/eval: time per f-evaluation)"
-      do m = 1, 3
+      do m = 1, 4
          if (m == method_gsl) then
             do j = 1, size(gsl_looser)
                write (output_unit, '(a8,es11.2,es12.4,es12.4,i12,f9.1,a)') names(m), gsl_looser(j), &
@@ -132,7 +161,7 @@ program hillstab_bench_series
       ! slower (more evaluations) than GSL
       write (output_unit, '(a)') "# time and f-evaluation ratios to GSL rk8pd at equal error "// &
          "(< 1: faster, fewer; -1: outside GSL's range)"
-      do m = 1, 2
+      do m = 1, 3
          do j = 1, size(tolerances)
             write (output_unit, '(a8,es11.2,a,es10.3,a,f7.3,a,f7.3)') names(m), tolerances(j), " error ", &
                table_err(j, m, measure), ": time ratio ", &
@@ -151,16 +180,16 @@ program hillstab_bench_series
    write (unit, '(a)') "# one block per method (dopri5, dop853, rk8pd), blocks separated by two blank lines"
    write (unit, '(a)') "# columns: method tolerance seconds_state error_state evaluations_state "// &
       "seconds_energy error_energy evaluations_energy"
-   do m = 1, 3
+   do m = 1, 4
       if (m == method_gsl) then
          do j = 1, size(gsl_looser)
-            write (unit, '(a,1x,es11.3,6(1x,es12.5))') trim(names(m)), gsl_looser(j), &
-               (gsl_time(j, measure), gsl_err(j, measure), gsl_evals(j, measure), measure = 1, 2)
+            write (unit, '(a,1x,es11.3,9(1x,es12.5))') trim(names(m)), gsl_looser(j), &
+               (gsl_time(j, measure), gsl_err(j, measure), gsl_evals(j, measure), measure = 1, 3)
          end do
       end if
       do j = 1, size(tolerances)
-         write (unit, '(a,1x,es11.3,6(1x,es12.5))') trim(names(m)), tolerances(j), &
-            (table_time(j, m, measure), table_err(j, m, measure), real(table_evals(j, m, measure), wp), measure = 1, 2)
+         write (unit, '(a,1x,es11.3,9(1x,es12.5))') trim(names(m)), tolerances(j), &
+            (table_time(j, m, measure), table_err(j, m, measure), real(table_evals(j, m, measure), wp), measure = 1, 3)
       end do
       write (unit, '(a)') ""
       write (unit, '(a)') ""
@@ -178,6 +207,18 @@ contains
       real(wp) :: t
       options = rk_options_t(method=method, rtol=tolerance, atol=tolerance, max_steps=huge(1))
       options%atol_components = pendulum_atol(system%pendulum, y, tolerance)
+      block
+         character(len=32) :: v
+         integer :: st
+         call get_environment_variable("HS_BETA", v, status=st)
+         if (st == 0) read (v, *) options%beta
+         call get_environment_variable("HS_FACMIN", v, status=st)
+         if (st == 0) read (v, *) options%fac_min
+         call get_environment_variable("HS_FACMAX", v, status=st)
+         if (st == 0) read (v, *) options%fac_max
+         call get_environment_variable("HS_SAFETY", v, status=st)
+         if (st == 0) read (v, *) options%safety
+      end block
       t = 0.0_wp
       call rk_integrate(system, t, t_end, y, options, work, error)
       if (allocated(error)) error stop "bench_series: DOP integration failed"
@@ -205,14 +246,14 @@ contains
       rounds = 0
       call system_clock(start, rate)
       do
-         do method = 1, 3
+         do method = 1, 4
             y = y0
             call system_clock(t0)
             if (method == method_gsl) then
                call pendulum_gsl(system%pendulum, y, t_end, tolerance, work, error)
                if (allocated(error)) error stop "bench_series: GSL failed"
             else
-               call run_dop(merge(rk_dopri5, rk_dop853, method == 1), tolerance, y, work)
+               call run_dop(hillstab_methods(method), tolerance, y, work)
             end if
             call system_clock(t1)
             table_time(j, method, measure) = min(table_time(j, method, measure), real(t1 - t0, wp)/rate)
@@ -228,7 +269,44 @@ contains
          if (quick .and. rounds >= 2) exit
          if (rounds >= 5 .and. (real(t1 - start, wp)/rate > 0.5_wp .or. rounds >= 300)) exit
       end do
+      if (measure == 3) then
+         do method = 1, 4
+            table_err(j, method, measure) = watched_drift(method, tolerance)
+         end do
+      end if
    end subroutine time_interleaved
+
+   !> The largest energy error at the ends of the steps of one (untimed) run.
+   real(wp) function watched_drift(method, tolerance) result(drift)
+      integer, intent(in) :: method
+      real(wp), intent(in) :: tolerance
+      type(watched_pendulum_t) :: watched
+      type(rk_options_t) :: options
+      type(work_stats_t) :: work
+      real(wp) :: y(4), t
+      y = y0
+      if (method == method_gsl) then
+         call pendulum_gsl(system%pendulum, y, t_end, tolerance, work, error, energy_drift=drift)
+         if (allocated(error)) error stop "bench_series: GSL failed"
+         return
+      end if
+      watched%pendulum = system%pendulum
+      watched%energy0 = pendulum_energy(system%pendulum, y0)
+      watched%energy_scale = pendulum_energy_scale(system%pendulum, y0)
+      options = rk_options_t(method=hillstab_methods(method), rtol=tolerance, atol=tolerance, &
+                             max_steps=huge(1))
+      options%atol_components = pendulum_atol(system%pendulum, y, tolerance)
+      block
+         character(len=32) :: v
+         integer :: st
+         call get_environment_variable("HS_BETA", v, status=st)
+         if (st == 0) read (v, *) options%beta
+      end block
+      t = 0.0_wp
+      call rk_integrate(watched, t, t_end, y, options, work, error)
+      if (allocated(error)) error stop "bench_series: DOP integration failed"
+      drift = watched%drift
+   end function watched_drift
 
    !> Time the GSL run alone at a tolerance looser than the table's (fastest of at least
    !> 5 runs, then until 0.5 s or 300 runs), into row j of GSL's curve.
@@ -260,6 +338,7 @@ contains
          if (quick .and. rounds >= 2) exit
          if (rounds >= 5 .and. (real(t1 - start, wp)/rate > 0.5_wp .or. rounds >= 300)) exit
       end do
+      if (measure == 3) gsl_err(j, measure) = watched_drift(method_gsl, tolerance)
    end subroutine time_gsl_alone
 
    !> This integrator's cost (time or f-evaluations) over GSL's at the same error: GSL's

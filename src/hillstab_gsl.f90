@@ -55,7 +55,8 @@ module hillstab_gsl
    public :: gsl_odeiv2_step_rk8pd
    ! the odeiv2 driver, for other systems integrated by rk8pd (hillstab_gsl_lyapunov)
    public :: gsl_odeiv2_system, gsl_odeiv2_driver_alloc_scaled_new, gsl_odeiv2_driver_set_nmax, &
-      gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_set_error_handler_off, gsl_rk8pd_scaled_driver
+      gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_set_error_handler_off, gsl_rk8pd_scaled_driver, &
+      gsl_odeiv2_driver_view, gsl_odeiv2_evolve_apply
 
    !> Curves of the even Mathieu functions ce_n: a_n(q), n ≥ 0.
    integer, parameter :: mathieu_kind_a = 1
@@ -110,8 +111,13 @@ module hillstab_gsl
    !> The public layout of struct gsl_odeiv2_driver_struct (gsl_odeiv2.h), read for
    !> its evolve object only.
    type, bind(C) :: gsl_odeiv2_driver_view
-      type(c_ptr) :: sys, step, control, evolve
-      real(c_double) :: h, hmin, hmax
+      type(c_ptr) :: sys      !! the gsl_odeiv2_system
+      type(c_ptr) :: step     !! the stepper
+      type(c_ptr) :: control  !! the step-size control
+      type(c_ptr) :: evolve   !! the evolve object
+      real(c_double) :: h     !! the next step proposed
+      real(c_double) :: hmin  !! smallest step allowed
+      real(c_double) :: hmax  !! largest step allowed
       integer(c_long) :: n, nmax   !! unsigned long in C
    end type gsl_odeiv2_driver_view
 
@@ -191,11 +197,14 @@ module hillstab_gsl
       function gsl_odeiv2_evolve_apply(evolve, control, step, system, t, t1, h, y) &
          bind(C, name="gsl_odeiv2_evolve_apply") result(status)
          import :: c_ptr, c_double, c_int
-         type(c_ptr), value :: evolve, control, step, system
-         real(c_double), intent(inout) :: t
-         real(c_double), value :: t1
-         real(c_double), intent(inout) :: h
-         real(c_double), intent(inout) :: y(*)
+         type(c_ptr), value :: evolve   !! the evolve object (its step counters)
+         type(c_ptr), value :: control  !! the step-size control
+         type(c_ptr), value :: step     !! the stepper
+         type(c_ptr), value :: system   !! the gsl_odeiv2_system
+         real(c_double), intent(inout) :: t  !! time, advanced by the accepted step
+         real(c_double), value :: t1         !! do not step past t1
+         real(c_double), intent(inout) :: h  !! proposed step in, next proposal out
+         real(c_double), intent(inout) :: y(*)  !! state at t, advanced
          integer(c_int) :: status
       end function gsl_odeiv2_evolve_apply
 

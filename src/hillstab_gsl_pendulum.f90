@@ -19,8 +19,8 @@ module hillstab_gsl_pendulum
    use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
    use hillstab_stats, only: work_stats_t
    use hillstab_gsl, only: gsl_odeiv2_system, gsl_rk8pd_scaled_driver, gsl_odeiv2_driver_apply, &
-      gsl_odeiv2_driver_free
-   use hillstab_pendulum, only: pendulum_t, pendulum_rhs, pendulum_atol
+      gsl_odeiv2_driver_free, gsl_odeiv2_driver_view, gsl_odeiv2_evolve_apply
+   use hillstab_pendulum, only: pendulum_t, pendulum_rhs, pendulum_atol, pendulum_energy, pendulum_energy_scale
    implicit none
    private
    public :: pendulum_gsl
@@ -38,14 +38,19 @@ contains
 
    !> Integrate the pendulum from t = 0 to t_end with GSL rk8pd at relative tolerance rtol
    !> (absolute tolerances of `pendulum_atol`). On return y is the state at t_end.
-   subroutine pendulum_gsl(p, y, t_end, rtol, stats, error)
+   !> With `energy_drift`, the steps are taken one by one (GSL's evolve loop, the steps of
+   !> its driver) and the largest |E − E(0)|/E_scale at their ends is returned.
+   subroutine pendulum_gsl(p, y, t_end, rtol, stats, error, energy_drift)
       type(pendulum_t), intent(in) :: p          !! the pendulum
       real(wp), intent(inout) :: y(4)            !! initial state in, final state out
       real(wp), intent(in) :: t_end              !! end time [s], > 0
       real(wp), intent(in) :: rtol               !! relative tolerance (> 0)
       type(work_stats_t), intent(out) :: stats   !! f-evaluations (steps are not counted)
       type(error_t), allocatable, intent(out) :: error  !! allocated when GSL fails (y unchanged)
+      real(wp), intent(out), optional :: energy_drift  !! max |E − E(0)|/E_scale over the step ends
       type(context_t), target :: context
+      type(gsl_odeiv2_driver_view), pointer :: view
+      real(wp) :: energy0, energy_scale
       type(gsl_odeiv2_system), target :: system
       type(c_ptr) :: driver
       real(c_double) :: state(4), t
@@ -67,7 +72,21 @@ contains
       end if
       state = y
       t = 0.0_c_double
-      status = gsl_odeiv2_driver_apply(driver, t, real(t_end, c_double), state)
+      if (present(energy_drift)) then
+         ! driver_apply's loop (no step limit, no h_max, h_min = 0 here), watched per step
+         call c_f_pointer(driver, view)
+         energy0 = pendulum_energy(p, y)
+         energy_scale = pendulum_energy_scale(p, y)
+         energy_drift = 0.0_wp
+         status = gsl_success
+         do while (t < t_end .and. status == gsl_success)
+            status = gsl_odeiv2_evolve_apply(view%evolve, view%control, view%step, view%sys, t, &
+                                             real(t_end, c_double), view%h, state)
+            energy_drift = max(energy_drift, abs(pendulum_energy(p, state) - energy0)/energy_scale)
+         end do
+      else
+         status = gsl_odeiv2_driver_apply(driver, t, real(t_end, c_double), state)
+      end if
       if (status == gsl_success .and. .not. all(ieee_is_finite(state))) status = gsl_ebadfunc
       call gsl_odeiv2_driver_free(driver)
       stats%n_evaluations = context%n_evaluations

@@ -1,5 +1,6 @@
 !> Adaptive embedded Runge–Kutta integrators for first-order systems y' = f(t, y):
-!> Dormand–Prince 5(4) (DOPRI5) and Dormand–Prince 8(5,3) (DOP853), with Hairer's
+!> Dormand–Prince 5(4) (DOPRI5), Dormand–Prince 8(5,3) (DOP853) and Prince–Dormand 8(7)
+!> (PD87, the pair of GSL's rk8pd, without continuous extension), with Hairer's
 !> error norm, PI step-size control, initial step guess and continuous (dense) output,
 !> plus a fixed-step mode without error control for convergence studies.
 !>
@@ -48,13 +49,17 @@ module hillstab_rk
    implicit none
    private
    public :: rk_system_t, rk_rhs, rk_observe, rk_options_t, rk_step_t, rk_integrate, rk_dense_value
-   public :: rk_dopri5, rk_dop853, rk_method_name, rk_method_order
+   public :: rk_dopri5, rk_dop853, rk_pd87, rk_method_name, rk_method_order
 
    !> Dormand–Prince 5(4), 7 stages (FSAL: 6 evaluations per step), 4th-order dense output.
    integer, parameter :: rk_dopri5 = 1
    !> Dormand–Prince 8(5,3), 12 stages (12 evaluations per accepted step), 7th-order dense
    !> output at 3 more evaluations per step.
    integer, parameter :: rk_dop853 = 2
+   !> Prince–Dormand 8(7) (RK8(7)13M, the pair of GSL's rk8pd), 13 stages (13 evaluations
+   !> per accepted step with f at the new point); no continuous extension of its own:
+   !> observers get the cubic Hermite interpolant, `t_out` and `dense_output` are refused.
+   integer, parameter :: rk_pd87 = 3
 
 
    !> Options of `rk_integrate`. Zero (or negative) values of the step-control
@@ -301,6 +306,61 @@ module hillstab_rk
    real(wp), parameter :: p8_d715 = -0.39177261675615439165231486172e+02_wp
    real(wp), parameter :: p8_d716 = -0.14972683625798562581422125276e+03_wp
 
+   ! ---------------------------------------------------------------------------------
+   ! PD8(7): Prince & Dormand, "High order embedded Runge–Kutta formulae", J. Comput.
+   ! Appl. Math. 7 (1981) 67–75, RK8(7)13M, with the paper's rational coefficients (the
+   ! pair of GSL's rk8pd). The 8th-order formula propagates (local extrapolation); the
+   ! error is its difference to the 7th-order one, pd_e = b̂ − b.
+   ! ---------------------------------------------------------------------------------
+   real(wp), parameter :: pd_c2 = 1.0_wp/18.0_wp, pd_c3 = 1.0_wp/12.0_wp, pd_c4 = 1.0_wp/8.0_wp, &
+      pd_c5 = 5.0_wp/16.0_wp, pd_c6 = 3.0_wp/8.0_wp, pd_c7 = 59.0_wp/400.0_wp, pd_c8 = 93.0_wp/200.0_wp, &
+      pd_c9 = 5490023248.0_wp/9719169821.0_wp, pd_c10 = 13.0_wp/20.0_wp, &
+      pd_c11 = 1201146811.0_wp/1299019798.0_wp
+   real(wp), parameter :: pd_a21 = 1.0_wp/18.0_wp
+   real(wp), parameter :: pd_a31 = 1.0_wp/48.0_wp, pd_a32 = 1.0_wp/16.0_wp
+   real(wp), parameter :: pd_a41 = 1.0_wp/32.0_wp, pd_a43 = 3.0_wp/32.0_wp
+   real(wp), parameter :: pd_a51 = 5.0_wp/16.0_wp, pd_a53 = -75.0_wp/64.0_wp, pd_a54 = 75.0_wp/64.0_wp
+   real(wp), parameter :: pd_a61 = 3.0_wp/80.0_wp, pd_a64 = 3.0_wp/16.0_wp, pd_a65 = 3.0_wp/20.0_wp
+   real(wp), parameter :: pd_a71 = 29443841.0_wp/614563906.0_wp, pd_a74 = 77736538.0_wp/692538347.0_wp, &
+      pd_a75 = -28693883.0_wp/1125000000.0_wp, pd_a76 = 23124283.0_wp/1800000000.0_wp
+   real(wp), parameter :: pd_a81 = 16016141.0_wp/946692911.0_wp, pd_a84 = 61564180.0_wp/158732637.0_wp, &
+      pd_a85 = 22789713.0_wp/633445777.0_wp, pd_a86 = 545815736.0_wp/2771057229.0_wp, &
+      pd_a87 = -180193667.0_wp/1043307555.0_wp
+   real(wp), parameter :: pd_a91 = 39632708.0_wp/573591083.0_wp, pd_a94 = -433636366.0_wp/683701615.0_wp, &
+      pd_a95 = -421739975.0_wp/2616292301.0_wp, pd_a96 = 100302831.0_wp/723423059.0_wp, &
+      pd_a97 = 790204164.0_wp/839813087.0_wp, pd_a98 = 800635310.0_wp/3783071287.0_wp
+   real(wp), parameter :: pd_a101 = 246121993.0_wp/1340847787.0_wp, &
+      pd_a104 = -37695042795.0_wp/15268766246.0_wp, pd_a105 = -309121744.0_wp/1061227803.0_wp, &
+      pd_a106 = -12992083.0_wp/490766935.0_wp, pd_a107 = 6005943493.0_wp/2108947869.0_wp, &
+      pd_a108 = 393006217.0_wp/1396673457.0_wp, pd_a109 = 123872331.0_wp/1001029789.0_wp
+   real(wp), parameter :: pd_a111 = -1028468189.0_wp/846180014.0_wp, pd_a114 = 8478235783.0_wp/508512852.0_wp, &
+      pd_a115 = 1311729495.0_wp/1432422823.0_wp, pd_a116 = -10304129995.0_wp/1701304382.0_wp, &
+      pd_a117 = -48777925059.0_wp/3047939560.0_wp, pd_a118 = 15336726248.0_wp/1032824649.0_wp, &
+      pd_a119 = -45442868181.0_wp/3398467696.0_wp, pd_a1110 = 3065993473.0_wp/597172653.0_wp
+   real(wp), parameter :: pd_a121 = 185892177.0_wp/718116043.0_wp, pd_a124 = -3185094517.0_wp/667107341.0_wp, &
+      pd_a125 = -477755414.0_wp/1098053517.0_wp, pd_a126 = -703635378.0_wp/230739211.0_wp, &
+      pd_a127 = 5731566787.0_wp/1027545527.0_wp, pd_a128 = 5232866602.0_wp/850066563.0_wp, &
+      pd_a129 = -4093664535.0_wp/808688257.0_wp, pd_a1210 = 3962137247.0_wp/1805957418.0_wp, &
+      pd_a1211 = 65686358.0_wp/487910083.0_wp
+   real(wp), parameter :: pd_a131 = 403863854.0_wp/491063109.0_wp, pd_a134 = -5068492393.0_wp/434740067.0_wp, &
+      pd_a135 = -411421997.0_wp/543043805.0_wp, pd_a136 = 652783627.0_wp/914296604.0_wp, &
+      pd_a137 = 11173962825.0_wp/925320556.0_wp, pd_a138 = -13158990841.0_wp/6184727034.0_wp, &
+      pd_a139 = 3936647629.0_wp/1978049680.0_wp, pd_a1310 = -160528059.0_wp/685178525.0_wp, &
+      pd_a1311 = 248638103.0_wp/1413531060.0_wp
+   ! weights of the 8th-order formula
+   real(wp), parameter :: pd_b1 = 14005451.0_wp/335480064.0_wp, pd_b6 = -59238493.0_wp/1068277825.0_wp, &
+      pd_b7 = 181606767.0_wp/758867731.0_wp, pd_b8 = 561292985.0_wp/797845732.0_wp, &
+      pd_b9 = -1041891430.0_wp/1371343529.0_wp, pd_b10 = 760417239.0_wp/1151165299.0_wp, &
+      pd_b11 = 118820643.0_wp/751138087.0_wp, pd_b12 = -528747749.0_wp/2220607170.0_wp, pd_b13 = 1.0_wp/4.0_wp
+   ! weights of the 7th-order formula, and the error weights b̂ − b
+   real(wp), parameter :: pd_bh1 = 13451932.0_wp/455176623.0_wp, pd_bh6 = -808719846.0_wp/976000145.0_wp, &
+      pd_bh7 = 1757004468.0_wp/5645159321.0_wp, pd_bh8 = 656045339.0_wp/265891186.0_wp, &
+      pd_bh9 = -3867574721.0_wp/1518517206.0_wp, pd_bh10 = 465885868.0_wp/322736535.0_wp, &
+      pd_bh11 = 53011238.0_wp/667516719.0_wp, pd_bh12 = 2.0_wp/45.0_wp
+   real(wp), parameter :: pd_e1 = pd_bh1 - pd_b1, pd_e6 = pd_bh6 - pd_b6, pd_e7 = pd_bh7 - pd_b7, &
+      pd_e8 = pd_bh8 - pd_b8, pd_e9 = pd_bh9 - pd_b9, pd_e10 = pd_bh10 - pd_b10, pd_e11 = pd_bh11 - pd_b11, &
+      pd_e12 = pd_bh12 - pd_b12, pd_e13 = -pd_b13
+
    !> A view of one stage vector (a column of the stage array, or the trial state).
    type :: stage_view_t
       real(wp), pointer, contiguous :: v(:) => null()
@@ -341,16 +401,17 @@ contains
       select case (method)
       case (rk_dopri5); name = "dopri5"
       case (rk_dop853); name = "dop853"
+      case (rk_pd87); name = "pd87"
       case default; name = "unknown"
       end select
    end function rk_method_name
 
    !> Classical order of the propagating formula (5 or 8; 0 if unknown).
    pure integer function rk_method_order(method) result(order)
-      integer, intent(in) :: method  !! rk_dopri5 or rk_dop853
+      integer, intent(in) :: method  !! rk_dopri5, rk_dop853 or rk_pd87
       select case (method)
       case (rk_dopri5); order = 5
-      case (rk_dop853); order = 8
+      case (rk_dop853, rk_pd87); order = 8
       case default; order = 0
       end select
    end function rk_method_order
@@ -468,8 +529,11 @@ contains
 
       subroutine check_arguments(error)
          type(error_t), allocatable, intent(out) :: error
-         if (options%method /= rk_dopri5 .and. options%method /= rk_dop853) then
+         if (options%method /= rk_dopri5 .and. options%method /= rk_dop853 .and. options%method /= rk_pd87) then
             call set_error(error, err_invalid_parameter, "rk_integrate: unknown method")
+         else if (options%method == rk_pd87 .and. (present(t_out) .or. options%dense_output)) then
+            call set_error(error, err_invalid_parameter, "rk_integrate: pd87 has no continuous extension "// &
+               "of its order; use dop853 for t_out or dense_output")
          else if (n < 1) then
             call set_error(error, err_invalid_parameter, "rk_integrate: empty state vector")
          else if (.not. (ieee_is_finite(t) .and. ieee_is_finite(t_end))) then
@@ -744,11 +808,14 @@ contains
          real(wp), intent(in) :: tau, hh
          logical, intent(in) :: with_error
          real(wp), intent(out), optional :: err
-         if (options%method == rk_dopri5) then
+         select case (options%method)
+         case (rk_dopri5)
             call dopri5_stages(tau, hh, with_error, err)
-         else
+         case (rk_pd87)
+            call pd87_stages(tau, hh, with_error, err)
+         case default
             call dop853_stages(tau, hh, with_error, err)
-         end if
+         end select
       end subroutine attempt
 
       subroutine dopri5_stages(tau, hh, with_error, err)
@@ -761,6 +828,16 @@ contains
          if (present(err)) err = e
       end subroutine dopri5_stages
 
+      subroutine pd87_stages(tau, hh, with_error, err)
+         real(wp), intent(in) :: tau, hh
+         logical, intent(in) :: with_error
+         real(wp), intent(out), optional :: err
+         real(wp) :: e
+         call pd87_kernel(system, n, tau, hh, step%y, k, y_stage, y_new, views, atol, options%rtol, with_error, e, &
+                          finite, work%n_evaluations)
+         if (present(err)) err = e
+      end subroutine pd87_stages
+
       subroutine dop853_stages(tau, hh, with_error, err)
          real(wp), intent(in) :: tau, hh
          logical, intent(in) :: with_error
@@ -771,7 +848,7 @@ contains
          if (present(err)) err = e
       end subroutine dop853_stages
 
-      !> After a successful attempt: evaluate f at the new point (DOP853; DOPRI5 has it),
+      !> After a successful attempt: evaluate f at the new point (DOP853, PD87; DOPRI5 has it),
       !> build the dense output, record the step (which moves f(new) into k(:, 1) for
       !> the next step), serve outputs and the observer.
       subroutine complete_step(t_new)
@@ -788,6 +865,13 @@ contains
             end do
             call accept(t_new, 7)
             step%dense_order = 4
+         else if (options%method == rk_pd87) then
+            call evaluate(t_new, views%y_new%v, views%f(14)%v)
+            if (.not. finite) then
+               call fail_non_finite(t_new, "end of accepted step")
+               return
+            end if
+            call accept(t_new, 14)
          else
             call evaluate(t_new, views%y_new%v, views%f(13)%v)
             if (.not. finite) then
@@ -1031,6 +1115,120 @@ contains
          err = abs(hh)*err5*sqrt(1.0_wp/(n*deno))
       end if
    end subroutine dop853_kernel
+
+   !> One trial step of PD8(7) of size hh from (tau, y0): the 13 stages into k, the
+   !> 8th-order state into y_new and, with `with_error`, Hairer's norm of its difference to
+   !> the 7th-order one. Stage 13 does not use stage 12 (a(13, 12) = 0), so the two
+   !> evaluations at tau + hh can overlap. Same conventions as `dop853_kernel`.
+   subroutine pd87_kernel(system, n, tau, hh, y0, k, y_stage, y_new, views, atol, rtol, with_error, err, finite, &
+                          n_evaluations)
+      class(rk_system_t), intent(inout) :: system
+      integer, intent(in) :: n
+      real(wp), intent(in) :: tau, hh, y0(n), atol(n), rtol
+      real(wp), intent(inout), target :: k(n, *)
+      real(wp), intent(out), target :: y_stage(n), y_new(n)
+      type(stage_views_t), intent(in) :: views  !! the same y_stage, y_new and columns of k
+      logical, intent(in) :: with_error
+      real(wp), intent(out) :: err
+      logical, intent(out) :: finite
+      integer(int64), intent(inout) :: n_evaluations
+      real(wp) :: e
+      integer :: i
+      err = 0.0_wp
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(pd_a21*k(i, 1))
+      end do
+      call system%rhs(tau + pd_c2*hh, views%y_stage%v, views%f(2)%v)
+      if (stage_failed(n, k(:, 2), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(pd_a31*k(i, 1) + pd_a32*k(i, 2))
+      end do
+      call system%rhs(tau + pd_c3*hh, views%y_stage%v, views%f(3)%v)
+      if (stage_failed(n, k(:, 3), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(pd_a41*k(i, 1) + pd_a43*k(i, 3))
+      end do
+      call system%rhs(tau + pd_c4*hh, views%y_stage%v, views%f(4)%v)
+      if (stage_failed(n, k(:, 4), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(pd_a51*k(i, 1) + pd_a53*k(i, 3) + pd_a54*k(i, 4))
+      end do
+      call system%rhs(tau + pd_c5*hh, views%y_stage%v, views%f(5)%v)
+      if (stage_failed(n, k(:, 5), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(pd_a61*k(i, 1) + pd_a64*k(i, 4) + pd_a65*k(i, 5))
+      end do
+      call system%rhs(tau + pd_c6*hh, views%y_stage%v, views%f(6)%v)
+      if (stage_failed(n, k(:, 6), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(pd_a71*k(i, 1) + pd_a74*k(i, 4) + pd_a75*k(i, 5) + pd_a76*k(i, 6))
+      end do
+      call system%rhs(tau + pd_c7*hh, views%y_stage%v, views%f(7)%v)
+      if (stage_failed(n, k(:, 7), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(pd_a81*k(i, 1) + pd_a84*k(i, 4) + pd_a85*k(i, 5) + pd_a86*k(i, 6) &
+            + pd_a87*k(i, 7))
+      end do
+      call system%rhs(tau + pd_c8*hh, views%y_stage%v, views%f(8)%v)
+      if (stage_failed(n, k(:, 8), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(pd_a91*k(i, 1) + pd_a94*k(i, 4) + pd_a95*k(i, 5) + pd_a96*k(i, 6) &
+            + pd_a97*k(i, 7) + pd_a98*k(i, 8))
+      end do
+      call system%rhs(tau + pd_c9*hh, views%y_stage%v, views%f(9)%v)
+      if (stage_failed(n, k(:, 9), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(pd_a101*k(i, 1) + pd_a104*k(i, 4) + pd_a105*k(i, 5) + pd_a106*k(i, 6) &
+            + pd_a107*k(i, 7) + pd_a108*k(i, 8) + pd_a109*k(i, 9))
+      end do
+      call system%rhs(tau + pd_c10*hh, views%y_stage%v, views%f(10)%v)
+      if (stage_failed(n, k(:, 10), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(pd_a111*k(i, 1) + pd_a114*k(i, 4) + pd_a115*k(i, 5) + pd_a116*k(i, 6) &
+            + pd_a117*k(i, 7) + pd_a118*k(i, 8) + pd_a119*k(i, 9) + pd_a1110*k(i, 10))
+      end do
+      call system%rhs(tau + pd_c11*hh, views%y_stage%v, views%f(11)%v)
+      if (stage_failed(n, k(:, 11), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(pd_a121*k(i, 1) + pd_a124*k(i, 4) + pd_a125*k(i, 5) + pd_a126*k(i, 6) &
+            + pd_a127*k(i, 7) + pd_a128*k(i, 8) + pd_a129*k(i, 9) + pd_a1210*k(i, 10) + pd_a1211*k(i, 11))
+      end do
+      call system%rhs(tau + hh, views%y_stage%v, views%f(12)%v)
+      if (stage_failed(n, k(:, 12), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(pd_a131*k(i, 1) + pd_a134*k(i, 4) + pd_a135*k(i, 5) + pd_a136*k(i, 6) &
+            + pd_a137*k(i, 7) + pd_a138*k(i, 8) + pd_a139*k(i, 9) + pd_a1310*k(i, 10) + pd_a1311*k(i, 11))
+      end do
+      call system%rhs(tau + hh, views%y_stage%v, views%f(13)%v)
+      if (stage_failed(n, k(:, 13), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_new(i) = y0(i) + hh*(pd_b1*k(i, 1) + pd_b6*k(i, 6) + pd_b7*k(i, 7) + pd_b8*k(i, 8) + pd_b9*k(i, 9) &
+            + pd_b10*k(i, 10) + pd_b11*k(i, 11) + pd_b12*k(i, 12) + pd_b13*k(i, 13))
+      end do
+      if (with_error) then
+         !GCC$ novector
+         do i = 1, n
+            e = hh*(pd_e1*k(i, 1) + pd_e6*k(i, 6) + pd_e7*k(i, 7) + pd_e8*k(i, 8) + pd_e9*k(i, 9) &
+               + pd_e10*k(i, 10) + pd_e11*k(i, 11) + pd_e12*k(i, 12) + pd_e13*k(i, 13))/(atol(i) &
+               + rtol*max(abs(y0(i)), abs(y_new(i))))
+            err = err + e**2
+         end do
+         err = sqrt(err/n)
+      end if
+   end subroutine pd87_kernel
 
    !> Count one evaluation of f and say whether it failed: `finite` is false when a
    !> component is NaN or ±Inf (|f_i| <= huge is false for those: one compare per component).
