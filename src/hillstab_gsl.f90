@@ -6,7 +6,7 @@
 !>   with z = πτ/2 it is y'' + (a − 2q cos 2z) y = 0, a = 4β/π², q = 2ν/π², so the
 !>   curves are β = (π²/4) a_n(2ν/π²) and β = (π²/4) b_n(2ν/π²) (BRIEF §5);
 !> - the one-period monodromy of the χ equation (47) by GSL's odeiv2 driver with
-!>   the Prince–Dormand 8(9) pair `rk8pd`, using the even symmetry of Q: the even
+!>   the Prince–Dormand 8(7) pair `rk8pd`, using the even symmetry of Q: the even
 !>   and odd solutions u, v are integrated on [0, 1] only (BRIEF §4).
 !>
 !> GSL's default error handler aborts the program; every entry point here first

@@ -1,5 +1,5 @@
 !> The largest Lyapunov exponent of the nonlinear pendulum with GSL's odeiv2 driver and
-!> the Prince–Dormand 8(9) pair rk8pd driving the same equations as
+!> the Prince–Dormand 8(7) pair rk8pd driving the same equations as
 !> `hillstab_lyapunov` (state and one tangent vector, `pendulum_rhs` and
 !> `pendulum_jacobian`), with the same renormalisation every radial period and the same
 !> tolerances (GSL's scaled control: absolute part per component as

@@ -1,4 +1,4 @@
-!> The nonlinear pendulum integrated by GSL's odeiv2 driver with the Prince–Dormand 8(9)
+!> The nonlinear pendulum integrated by GSL's odeiv2 driver with the Prince–Dormand 8(7)
 !> pair rk8pd: the same equations (`pendulum_rhs`) and the same tolerances as hillstab's
 !> DOP853 runs (GSL's scaled control: absolute part per component as `pendulum_atol`,
 !> relative part rtol·|y|). A second method for tests and the speed benchmark.
