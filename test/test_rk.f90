@@ -2,9 +2,13 @@
 !> monodromy (hillstab_monodromy_rk), each against an independent reference:
 !> closed-form solutions (harmonic oscillator, constant Hill coefficient, Meissner),
 !> Hairer's published DOPRI5 run on the Arenstorf orbit, a full-period integration,
-!> the converged segmented product, and the RK4 test reference; Verner's 9(8) pair also
-!> against its order conditions, a limit cycle in closed form and DOP853 on the pendulum.
+!> the converged segmented product, and the RK4 test reference; PD8(7) against single
+!> steps of GSL's rk8pd (the same tableau), its order, and against DOP853 on the pendulum;
+!> Verner's 9(8) pair against its order conditions, a limit cycle in closed form and
+!> DOP853 on the pendulum.
 module test_rk
+   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_ptr, c_null_ptr, c_null_funptr, &
+      c_loc, c_funloc, c_f_pointer, c_associated, c_funptr
    use hillstab_kinds, only: wp, pi, pi2
    use hillstab_error, only: error_t, err_integration, err_invalid_parameter
    use hillstab_stats, only: work_stats_t
@@ -14,9 +18,11 @@ module test_rk
    use hillstab_monodromy, only: trace_segmented, monodromy_trace, method_t, method_rk
    use hillstab_rk
    use hillstab_monodromy_rk
-   use hillstab_pendulum, only: pendulum_system_t, pendulum_initial_state, pendulum_atol
-   use hillstab_test_pendulum, only: pendulum_at
    use test_reference, only: rk4_monodromy, value_of
+   use hillstab_gsl, only: gsl_odeiv2_system, gsl_odeiv2_step_rk8pd, gsl_set_error_handler_off
+   use hillstab_pendulum, only: pendulum_system_t, pendulum_initial_state, pendulum_atol, &
+      pendulum_energy, pendulum_energy_scale
+   use hillstab_test_pendulum, only: pendulum_at
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_positive_inf
    implicit none
@@ -90,6 +96,58 @@ module test_rk
       procedure :: rhs => meissner
    end type meissner_t
 
+   !> y' = y² cos t: from y(0) = 1/2, y = 1/(2 − sin t) (nonlinear and time-dependent).
+   type, extends(rk_system_t) :: riccati_t
+   contains
+      procedure :: rhs => riccati
+   end type riccati_t
+
+   !> The pendulum with an observer that records the largest |E − E(0)| over the accepted steps.
+   type, extends(pendulum_system_t) :: energy_watch_t
+      real(wp) :: e0 = 0.0_wp
+      real(wp) :: worst = 0.0_wp
+   contains
+      procedure :: observe => watch_energy
+   end type energy_watch_t
+
+   !> Any rk_system_t seen by GSL: handed to `gsl_system_rhs` through the params pointer.
+   type :: gsl_context_t
+      class(rk_system_t), pointer :: system => null()
+      integer :: n = 0
+   end type gsl_context_t
+
+   interface
+      !> gsl_odeiv2_step_alloc: a stepper of the given type for dim equations.
+      function gsl_odeiv2_step_alloc(step_type, dim) bind(C, name="gsl_odeiv2_step_alloc") result(step)
+         import :: c_ptr, c_size_t
+         type(c_ptr), value :: step_type     !! e.g. gsl_odeiv2_step_rk8pd
+         integer(c_size_t), value :: dim     !! number of equations
+         type(c_ptr) :: step
+      end function gsl_odeiv2_step_alloc
+
+      !> gsl_odeiv2_step_apply: one step of size h from (t, y); y is advanced, yerr gets
+      !> the stepper's error estimate. Null dydt_in: f(t, y) is evaluated by the stepper.
+      function gsl_odeiv2_step_apply(step, t, h, y, yerr, dydt_in, dydt_out, sys) &
+         bind(C, name="gsl_odeiv2_step_apply") result(status)
+         import :: c_ptr, c_double, c_int, gsl_odeiv2_system
+         type(c_ptr), value :: step              !! the stepper
+         real(c_double), value :: t              !! start of the step
+         real(c_double), value :: h              !! step size
+         real(c_double), intent(inout) :: y(*)   !! state at t in, at t + h out
+         real(c_double), intent(out) :: yerr(*)  !! estimated local error of each component
+         type(c_ptr), value :: dydt_in           !! f(t, y) if known, or null
+         type(c_ptr), value :: dydt_out          !! f(t + h, y(t + h)) out, or null
+         type(gsl_odeiv2_system), intent(in) :: sys  !! the system
+         integer(c_int) :: status
+      end function gsl_odeiv2_step_apply
+
+      !> gsl_odeiv2_step_free.
+      subroutine gsl_odeiv2_step_free(step) bind(C, name="gsl_odeiv2_step_free")
+         import :: c_ptr
+         type(c_ptr), value :: step  !! the stepper
+      end subroutine gsl_odeiv2_step_free
+   end interface
+
 contains
 
    function collect_rk() result(suite)
@@ -110,6 +168,11 @@ contains
          new_unittest("unit_determinant", unit_determinant), &
          new_unittest("hard_cases", hard_cases), &
          new_unittest("dispatch_and_work", dispatch_and_work), &
+         new_unittest("pd87_step_equals_gsl", pd87_step_equals_gsl), &
+         new_unittest("pd87_order", pd87_order), &
+         new_unittest("pd87_pendulum", pd87_pendulum), &
+         new_unittest("pd87_refusals", pd87_refusals), &
+         new_unittest("pd87_work", pd87_work), &
          new_unittest("vern98_tableau", vern98_tableau), &
          new_unittest("vern98_order", vern98_order), &
          new_unittest("vern98_pendulum", vern98_pendulum)])
@@ -236,6 +299,35 @@ contains
       s = 2.0_wp*(y(1)*y(4) + y(2)*y(3))
       if (allocated(error)) s = huge(1.0_wp)
    end function fixed_step_trace
+
+   subroutine riccati(self, t, y, dydt)
+      class(riccati_t), intent(inout) :: self
+      real(wp), intent(in) :: t, y(:)
+      real(wp), intent(out) :: dydt(:)
+      dydt(1) = y(1)**2*cos(t)
+   end subroutine riccati
+
+   subroutine watch_energy(self, step, stop)
+      class(energy_watch_t), intent(inout) :: self
+      type(rk_step_t), intent(in) :: step
+      logical, intent(inout) :: stop
+      if (step%index == 0) self%e0 = pendulum_energy(self%pendulum, step%y)
+      self%worst = max(self%worst, abs(pendulum_energy(self%pendulum, step%y) - self%e0))
+   end subroutine watch_energy
+
+   !> GSL's right-hand side for any rk_system_t: the system comes through `params`.
+   function gsl_system_rhs(t, y, dydt, params) bind(C) result(status)
+      real(c_double), value :: t
+      type(c_ptr), value :: y, dydt, params
+      integer(c_int) :: status
+      type(gsl_context_t), pointer :: context
+      real(c_double), pointer :: state(:), derivative(:)
+      call c_f_pointer(params, context)
+      call c_f_pointer(y, state, [context%n])
+      call c_f_pointer(dydt, derivative, [context%n])
+      call context%system%rhs(t, state, derivative)
+      status = 0_c_int
+   end function gsl_system_rhs
 
    !> Observed order log2(e(N)/e(2N)) compared with `expected`.
    subroutine check_order(ctx, e1, e2, expected, label)
@@ -733,6 +825,242 @@ contains
       call trace_rk(model, 1.0e-10_wp, tr, error, method=9)
       call check(ctx, allocated(error), "unknown method rejected")
    end subroutine dispatch_and_work
+
+   ! ----------------------------------------------------------------------------------
+   ! Prince–Dormand 8(7)
+   ! ----------------------------------------------------------------------------------
+
+   !> One fixed step of PD8(7) equals one step of GSL's rk8pd (the same tableau, with the
+   !> stage sums in the same order) from the same state with the same h, on the pendulum,
+   !> the Arenstorf problem and a time-dependent Hill pair (which sees the nodes c_i).
+   !> hillstab's error norm equals the RMS of GSL's yerr: with rtol = 0 and atol just above
+   !> it the first step is accepted, just below it rejected.
+   subroutine pd87_step_equals_gsl(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(pendulum_system_t), target :: pendulum
+      type(three_body_t), target :: body
+      type(hill_pair_t), target :: pair
+      type(c_funptr) :: previous
+      previous = gsl_set_error_handler_off()
+      pendulum%pendulum = pendulum_at(7.88_wp, 3.95_wp)
+      call compare(pendulum, 0.0_wp, pendulum%pendulum%period/8, pendulum_initial_state(pendulum%pendulum, 0.3_wp), &
+         "pendulum (e) phi0=0.3")
+      call compare(body, 0.0_wp, 0.01_wp, arenstorf_start, "arenstorf")
+      pair%model = hill_model_t(model_elastic, 7.88_wp, 3.95_wp, 0.0_wp)
+      call compare(pair, 0.3_wp, 0.2_wp, [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], "hill pair alpha=7.88 beta=3.95")
+   contains
+      subroutine compare(system, t0, h, y0, label)
+         class(rk_system_t), intent(inout), target :: system
+         real(wp), intent(in) :: t0, h, y0(:)
+         character(len=*), intent(in) :: label
+         type(gsl_context_t), target :: context
+         type(gsl_odeiv2_system) :: gsl_system
+         type(c_ptr) :: stepper
+         type(work_stats_t) :: stats
+         type(error_t), allocatable :: error
+         type(rk_options_t) :: options
+         real(wp) :: t, t_end, hh, y(size(y0)), y_gsl(size(y0)), y_err(size(y0)), rel, ulps, rms
+         integer(c_int) :: status
+         integer :: n, i
+         n = size(y0)
+         t_end = t0 + h
+         hh = t_end - t0   ! the step rk_integrate takes
+         t = t0
+         y = y0
+         call rk_integrate(system, t, t_end, y, rk_options_t(method=rk_pd87, fixed_steps=1), stats, error)
+         call check(ctx, .not. allocated(error), label//": hillstab step")
+         call check(ctx, stats%n_evaluations == 14, label//": 13 stages + f at the new point")
+         context%system => system
+         context%n = n
+         gsl_system = gsl_odeiv2_system(c_funloc(gsl_system_rhs), c_null_funptr, int(n, c_size_t), c_loc(context))
+         stepper = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, int(n, c_size_t))
+         call check(ctx, c_associated(stepper), label//": GSL stepper allocated")
+         if (.not. c_associated(stepper)) return
+         y_gsl = y0
+         status = gsl_odeiv2_step_apply(stepper, t0, hh, y_gsl, y_err, c_null_ptr, c_null_ptr, gsl_system)
+         call gsl_odeiv2_step_free(stepper)
+         call check(ctx, status == 0, label//": GSL step")
+         rel = 0.0_wp
+         ulps = 0.0_wp
+         do i = 1, n
+            rel = max(rel, abs(y(i) - y_gsl(i))/max(abs(y0(i)), abs(y_gsl(i))))
+            ulps = max(ulps, abs(y(i) - y_gsl(i))/spacing(max(abs(y0(i)), abs(y_gsl(i)))))
+         end do
+         rms = sqrt(sum(y_err**2)/n)
+         write (*, '(4x,a,a,es9.2,a,es8.1,a,es9.2)') label, ": |pd87 - gsl rk8pd| relative ", rel, &
+            " (", ulps, " ulps), rms of GSL's yerr ", rms
+         call check(ctx, rel <= 1.0e-14_wp, label//": one step equals GSL's rk8pd")
+         ! the error estimate: accepted at atol = rms(yerr)·(1 + 1e-6), rejected at (1 − 1e-6).
+         ! Measured: the decision flips within 1e-11 (pendulum), 1e-13 (Arenstorf) and 1e-9
+         ! (Hill pair, whose yerr of 6e-8 is GSL's difference of two sums ~1: cancellation)
+         do i = 1, 2
+            options = rk_options_t(method=rk_pd87, rtol=0.0_wp, h_initial=hh, max_steps=2)
+            options%atol_components = spread(rms*merge(1.0_wp + 1.0e-6_wp, 1.0_wp - 1.0e-6_wp, i == 1), 1, n)
+            t = t0
+            y = y0
+            call rk_integrate(system, t, t_end, y, options, stats, error)
+            if (i == 1) then
+               call check(ctx, .not. allocated(error) .and. stats%n_rejected == 0 .and. stats%n_steps == 1, &
+                  label//": accepted with atol just above GSL's rms yerr")
+            else
+               call check(ctx, stats%n_rejected >= 1, label//": rejected with atol just below GSL's rms yerr")
+            end if
+         end do
+      end subroutine compare
+   end subroutine pd87_step_equals_gsl
+
+   !> Fixed-step convergence at order 8 on y' = y² cos t, y(0) = 1/2, y = 1/(2 − sin t) on
+   !> [0, 20] (nonlinear and time-dependent, so the nodes c_i matter). PD8(7) was built for a
+   !> small principal error, so the h⁹ term still shows at these steps: measured orders 8.35
+   !> (N = 80, 160) and 8.25 (N = 120, 240), errors 9.1e-11 … 1.0e-14, falling towards 8;
+   !> the bounds [7.7, 8.7] leave that margin. (The oscillator is no test of order 8 here:
+   !> on linear problems b·A⁸·1 · 9! = 0.9987, so the h⁹ term is 1.3e-3 of its Taylor size
+   !> and the h¹⁰ term dominates until round-off: 8.9 at N = 20, 40.)
+   subroutine pd87_order(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: order
+      integer :: n
+      do n = 80, 120, 40
+         order = log(riccati_error(n)/riccati_error(2*n))/log(2.0_wp)
+         write (*, '(4x,a,i0,a,i0,a,f6.2,a,es9.2)') "pd87 y'=y^2 cos t N=", n, ",", 2*n, ": observed order ", &
+            order, ", error ", riccati_error(2*n)
+         call check(ctx, order >= 7.7_wp .and. order <= 8.7_wp, "pd87 order 8")
+      end do
+   contains
+      real(wp) function riccati_error(n_steps) result(err)
+         integer, intent(in) :: n_steps
+         type(riccati_t) :: problem
+         type(error_t), allocatable :: error
+         real(wp) :: t, y(1)
+         t = 0.0_wp
+         y = 0.5_wp
+         call rk_integrate(problem, t, 20.0_wp, y, rk_options_t(method=rk_pd87, fixed_steps=n_steps), error=error)
+         call check(ctx, .not. allocated(error), "riccati integration")
+         err = abs(y(1) - 1.0_wp/(2.0_wp - sin(20.0_wp)))
+      end function riccati_error
+   end subroutine pd87_order
+
+   !> The pendulum of Fig. 4 (e) (α = 7.88, β = 3.95, φ0 = 0.017; the swing grows to 0.65 rad)
+   !> over 10 radial periods by PD8(7) at rtol = 1e-10 and 1e-12 against DOP853 at 1e-14, the
+   !> error in units of (ρ, ρ, ρω, ρω). Measured: 1.9e-9 and 1.4e-11 (14–19 rtol; DOP853 at the
+   !> same rtol: 2.8e-9 and 2.4e-11); the reference is good to ~6e-13 (PD8(7) at 1e-14 differs
+   !> by that), so the bound 50 rtol holds with a margin of about 3. The energy drift of PD8(7)
+   !> at 1e-12 over 50 periods, relative to the energy scale: measured 3.0e-12, bound 1e-10.
+   subroutine pd87_pendulum(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(energy_watch_t) :: system
+      type(rk_options_t) :: options
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      real(wp) :: t, y0(4), reference(4), y(4), scale(4), err, drift
+      real(wp) :: rtols(2) = [1.0e-10_wp, 1.0e-12_wp]
+      integer :: k
+      system%pendulum = pendulum_at(7.88_wp, 3.95_wp)
+      associate (p => system%pendulum)
+         y0 = pendulum_initial_state(p, 0.017_wp)
+         scale = [p%rho, p%rho, p%rho*p%omega, p%rho*p%omega]
+         options = rk_options_t(method=rk_dop853, rtol=1.0e-14_wp, max_steps=10**6)
+         options%atol_components = pendulum_atol(p, y0, 1.0e-14_wp)
+         t = 0.0_wp
+         reference = y0
+         call rk_integrate(system, t, 10*p%period, reference, options, stats, error)
+         call check(ctx, .not. allocated(error), "dop853 reference")
+         do k = 1, 2
+            options = rk_options_t(method=rk_pd87, rtol=rtols(k), max_steps=10**6)
+            options%atol_components = pendulum_atol(p, y0, rtols(k))
+            t = 0.0_wp
+            y = y0
+            call rk_integrate(system, t, 10*p%period, y, options, stats, error)
+            call check(ctx, .not. allocated(error), "pd87 integration")
+            err = maxval(abs(y - reference)/scale)
+            write (*, '(4x,a,es8.1,a,es10.3,a,f8.4,a,i0,a,i0,a,i0)') "pendulum (e) 10 periods pd87 rtol ", rtols(k), &
+               ": error/(rho, rho omega) ", err, ", phi ", atan2(y(1), y(2)), ", f-evals ", stats%n_evaluations, &
+               ", accepted ", stats%n_steps, ", rejected ", stats%n_rejected
+            call check(ctx, err < 50.0_wp*rtols(k), "pd87 vs dop853 at 1e-14 within 50 rtol")
+         end do
+         options = rk_options_t(method=rk_pd87, rtol=1.0e-12_wp, max_steps=10**6)
+         options%atol_components = pendulum_atol(p, y0, 1.0e-12_wp)
+         t = 0.0_wp
+         y = y0
+         system%worst = 0.0_wp
+         call rk_integrate(system, t, 50*p%period, y, options, stats, error)
+         call check(ctx, .not. allocated(error), "pd87 50 periods")
+         drift = system%worst/pendulum_energy_scale(p, y0)
+         write (*, '(4x,a,es10.3,a,i0)') "pendulum (e) pd87 rtol 1e-12: max energy drift over 50 periods ", drift, &
+            ", steps ", stats%n_steps
+         call check(ctx, drift < 1.0e-10_wp, "energy drift < 1e-10")
+      end associate
+   end subroutine pd87_pendulum
+
+   !> PD8(7) has no continuous extension: t_out and dense_output are refused (state
+   !> untouched); observers get the cubic Hermite interpolant (order 3: the midpoint error
+   !> converges at order 4). Name and order.
+   subroutine pd87_refusals(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(oscillator_t) :: osc
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      real(wp) :: t, y(2), y_out(2, 1)
+      integer :: k
+      do k = 1, 2
+         t = 0.0_wp
+         y = [1.0_wp, 0.0_wp]
+         if (k == 1) then
+            call rk_integrate(osc, t, 1.0_wp, y, rk_options_t(method=rk_pd87), stats, error, t_out=[0.5_wp], &
+                              y_out=y_out)
+         else
+            call rk_integrate(osc, t, 1.0_wp, y, rk_options_t(method=rk_pd87, dense_output=.true.), stats, error)
+         end if
+         call check(ctx, allocated(error), "pd87 refuses "//merge("t_out       ", "dense_output", k == 1))
+         if (allocated(error)) call check(ctx, error%code == err_invalid_parameter, "refusal code")
+         call check(ctx, t == 0.0_wp .and. y(1) == 1.0_wp .and. y(2) == 0.0_wp, "state unchanged")
+         call check(ctx, stats%n_evaluations == 0, "nothing evaluated")
+      end do
+      call check(ctx, rk_method_name(rk_pd87) == "pd87", "name")
+      call check(ctx, rk_method_order(rk_pd87) == 8, "order")
+      call check_order(ctx, hermite_midpoint_error(40), hermite_midpoint_error(80), 4.0_wp, "pd87 hermite midpoints")
+   contains
+      real(wp) function hermite_midpoint_error(n_steps) result(err)
+         integer, intent(in) :: n_steps
+         type(midpoint_oscillator_t) :: system
+         t = 0.0_wp
+         y = [1.0_wp, 0.0_wp]
+         call rk_integrate(system, t, 10.0_wp, y, rk_options_t(method=rk_pd87, fixed_steps=n_steps), error=error)
+         call check(ctx, .not. allocated(error), "integration succeeds")
+         err = system%worst
+      end function hermite_midpoint_error
+   end subroutine pd87_refusals
+
+   !> Evaluation counts: 13 per accepted step (12 stages after k1, then f at the new point),
+   !> 12 per rejected one, plus f(y0) and, without h_initial, the one evaluation of the
+   !> initial step guess. Exactly, on the Arenstorf orbit (which has rejections), which
+   !> also returns to its start.
+   subroutine pd87_work(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(three_body_t) :: body
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      real(wp) :: t, y(4)
+      integer :: k
+      do k = 1, 2
+         t = 0.0_wp
+         y = arenstorf_start
+         call rk_integrate(body, t, arenstorf_period, y, rk_options_t(method=rk_pd87, rtol=1.0e-10_wp, &
+                           atol=1.0e-10_wp, h_initial=merge(0.0_wp, 1.0e-3_wp, k == 1)), stats, error)
+         call check(ctx, .not. allocated(error), "integration succeeds")
+         write (*, '(4x,a,a,a,es10.3,a,i0,a,i0,a,i0)') "arenstorf pd87 tol 1e-10", merge(" (hinit)  ", " h0 = 1e-3", &
+            k == 1), ": position error ", norm2(y(1:2) - arenstorf_start(1:2)), ", f-evals ", stats%n_evaluations, &
+            ", accepted ", stats%n_steps, ", rejected ", stats%n_rejected
+         call check(ctx, norm2(y(1:2) - arenstorf_start(1:2)) < 100.0_wp*1.0e-10_wp, "position error within 100 tol")
+         call check(ctx, stats%n_rejected > 0, "there are rejections")
+         call check(ctx, stats%n_evaluations == 13*stats%n_steps + 12*stats%n_rejected + merge(2, 1, k == 1), &
+            "evaluations = 13 accepted + 12 rejected + initial")
+      end do
+      t = 0.0_wp
+      y = arenstorf_start
+      call rk_integrate(body, t, 1.0_wp, y, rk_options_t(method=rk_pd87, fixed_steps=50), stats, error)
+      call check(ctx, stats%n_evaluations == 1 + 13*50 .and. stats%n_steps == 50, "fixed steps: 1 + 13 per step")
+   end subroutine pd87_work
 
    ! ----------------------------------------------------------------------------------
    ! Verner's 9(8) pair
