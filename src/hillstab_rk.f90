@@ -100,7 +100,8 @@ module hillstab_rk
    !> One accepted step as handed to an observer: the interval [t_old, t], the state at
    !> t and the coefficients of the continuous extension on that interval. The
    !> interpolant is of order `dense_order`: 4 (DOPRI5), 7 (DOP853 with dense output),
-   !> or 3 (DOP853 without: the cubic Hermite interpolant from the end values and slopes).
+   !> or 3 (DOP853 without, PD87, VERN98: the cubic Hermite interpolant from the end
+   !> values and slopes).
    type :: rk_step_t
       integer :: method = rk_dop853  !! the pair that made the step (rk_dopri5, rk_dop853, ...)
       integer(int64) :: index = 0        !! number of this accepted step (0: the initial point)
@@ -530,7 +531,7 @@ contains
 
    !> Name of a method constant.
    pure function rk_method_name(method) result(name)
-      integer, intent(in) :: method  !! rk_dopri5 or rk_dop853
+      integer, intent(in) :: method  !! rk_dopri5, rk_dop853, rk_pd87 or rk_vern98
       character(len=:), allocatable :: name
       select case (method)
       case (rk_dopri5); name = "dopri5"
