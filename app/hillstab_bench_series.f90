@@ -22,10 +22,10 @@ contains
 end module bench_series_watch
 
 !> Speed against error for the nonlinear pendulum of the paper's Fig. 4 (e) (α = 7.88,
-!> β = 3.95, φ0 = 0.017, r0 = 0.1 m, g = 9.81 m/s²) by hillstab's DOPRI5, DOP853 and PD87
-!> (the Prince–Dormand 8(7) pair of GSL's rk8pd, in hillstab's integrator) and by GSL's
-!> rk8pd, several tolerances each. All four integrate the same equations (`pendulum_rhs`)
-!> with the same absolute tolerances (`pendulum_atol`).
+!> β = 3.95, φ0 = 0.017, r0 = 0.1 m, g = 9.81 m/s²) by hillstab's DOPRI5, DOP853, PD87
+!> (the Prince–Dormand 8(7) pair of GSL's rk8pd, in hillstab's integrator) and VERN98
+!> (Verner's 9(8) pair) and by GSL's rk8pd, several tolerances each. All five integrate the
+!> same equations (`pendulum_rhs`) with the same absolute tolerances (`pendulum_atol`).
 !>
 !> The motion of (e) is chaotic: two converged integrations (DOP853 and rk8pd at 1e-15)
 !> part by a factor of about 10 every 2.5 radial periods and disagree at O(1) after 100.
@@ -50,7 +50,7 @@ program hillstab_bench_series
    use hillstab_kinds, only: wp
    use hillstab_error, only: error_t
    use hillstab_stats, only: work_stats_t
-   use hillstab_rk, only: rk_options_t, rk_integrate, rk_dop853, rk_dopri5, rk_pd87
+   use hillstab_rk, only: rk_options_t, rk_integrate, rk_dop853, rk_dopri5, rk_pd87, rk_vern98
    use hillstab_pendulum, only: pendulum_t, pendulum_system_t, pendulum_from_chart, pendulum_initial_state, &
       pendulum_atol, pendulum_energy, pendulum_energy_scale
    use hillstab_gsl_pendulum, only: pendulum_gsl
@@ -59,13 +59,13 @@ program hillstab_bench_series
 
    integer :: n_periods = 10          !! the state run
    integer, parameter :: energy_periods = 100
-   integer, parameter :: method_gsl = 4
+   integer, parameter :: method_gsl = 5
    !> hillstab's integrators, in the order of `names`
-   integer, parameter :: hillstab_methods(3) = [rk_dopri5, rk_dop853, rk_pd87]
+   integer, parameter :: hillstab_methods(4) = [rk_dopri5, rk_dop853, rk_pd87, rk_vern98]
    !> GSL also runs at these looser tolerances (alone), so that its curve reaches the
    !> errors of hillstab's loosest runs and every one of those has a GSL time to compare with
    real(wp), parameter :: gsl_looser(2) = [1.0e-3_wp, 1.0e-4_wp]
-   character(len=*), parameter :: names(4) = [character(len=6) :: "dopri5", "dop853", "pd87", "rk8pd"]
+   character(len=*), parameter :: names(5) = [character(len=6) :: "dopri5", "dop853", "pd87", "vern98", "rk8pd"]
    real(wp), allocatable :: tolerances(:)
    type(pendulum_system_t) :: system
    type(error_t), allocatable :: error
@@ -122,8 +122,8 @@ program hillstab_bench_series
    write (output_unit, '(a,es10.3)') "# reference DOP853 1e-15 vs GSL rk8pd 1e-15: scaled difference ", &
       scaled_error(check_state)
 
-   allocate (table_err(size(tolerances), 4, 3), table_time(size(tolerances), 4, 3), &
-             table_evals(size(tolerances), 4, 3))
+   allocate (table_err(size(tolerances), method_gsl, 3), table_time(size(tolerances), method_gsl, 3), &
+             table_evals(size(tolerances), method_gsl, 3))
    allocate (gsl_err(size(gsl_looser) + size(tolerances), 3), gsl_time(size(gsl_looser) + size(tolerances), 3), &
              gsl_evals(size(gsl_looser) + size(tolerances), 3))
    do measure = 1, 3
@@ -152,7 +152,7 @@ program hillstab_bench_series
          gsl_time(:, 3) = gsl_time(:, 2)
          gsl_evals(:, 3) = gsl_evals(:, 2)
          do j = 1, size(tolerances)
-            do m = 1, 4
+            do m = 1, method_gsl
                table_err(j, m, 3) = watched_drift(m, tolerances(j))
             end do
          end do
@@ -164,7 +164,7 @@ program hillstab_bench_series
       gsl_time(size(gsl_looser) + 1:, measure) = table_time(:, method_gsl, measure)
       gsl_evals(size(gsl_looser) + 1:, measure) = real(table_evals(:, method_gsl, measure), wp)
       write (output_unit, '(a)') "# (ns/eval: time per f-evaluation)"
-      do m = 1, 4
+      do m = 1, method_gsl
          if (m == method_gsl) then
             do j = 1, size(gsl_looser)
                write (output_unit, '(a8,es11.2,es12.4,es12.4,i12,f9.1,a)') names(m), gsl_looser(j), &
@@ -183,7 +183,7 @@ program hillstab_bench_series
       ! slower (more evaluations) than GSL
       write (output_unit, '(a)') "# time and f-evaluation ratios to GSL rk8pd at equal error "// &
          "(< 1: faster, fewer; -1: outside GSL's range)"
-      do m = 1, 3
+      do m = 1, size(hillstab_methods)
          do j = 1, size(tolerances)
             write (output_unit, '(a8,es11.2,a,es10.3,a,f7.3,a,f7.3)') names(m), tolerances(j), " error ", &
                table_err(j, m, measure), ": time ratio ", &
@@ -200,10 +200,11 @@ program hillstab_bench_series
       " radial periods = max(|dx|, |dz|)/rho, max(|dvx|, |dvz|)/(rho omega) against DOP853 at 1e-15; "// &
       "energy error after ", energy_periods, " periods = |E - E(0)|/E_scale; drift = largest |E - E(0)|/E_scale "// &
       "at the step ends over those periods (same runs)"
-   write (unit, '(a)') "# one block per method (dopri5, dop853, pd87, rk8pd), blocks separated by two blank lines"
+   write (unit, '(a)') "# one block per method (dopri5, dop853, pd87, vern98, rk8pd), blocks separated by two "// &
+      "blank lines"
    write (unit, '(a)') "# columns: method tolerance seconds_state error_state evaluations_state "// &
       "seconds_energy error_energy evaluations_energy seconds_drift error_drift evaluations_drift"
-   do m = 1, 4
+   do m = 1, method_gsl
       if (m == method_gsl) then
          do j = 1, size(gsl_looser)
             write (unit, '(a,1x,es11.3,9(1x,es12.5))') trim(names(m)), gsl_looser(j), &
@@ -243,7 +244,7 @@ contains
       end associate
    end function scaled_error
 
-   !> Time the three integrators at one tolerance, interleaved (one run of each per round,
+   !> Time the five integrators at one tolerance, interleaved (one run of each per round,
    !> so all see the same load), and keep each one's fastest run: the time of a run that
    !> other processes did not interrupt. At least 5 rounds, then until 1.5 s or 300 rounds.
    subroutine time_interleaved(tolerance, measure, j)
@@ -257,7 +258,7 @@ contains
       rounds = 0
       call system_clock(start, rate)
       do
-         do method = 1, 4
+         do method = 1, method_gsl
             y = y0
             call system_clock(t0)
             if (method == method_gsl) then

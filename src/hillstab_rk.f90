@@ -1,7 +1,8 @@
 !> Adaptive embedded Runge–Kutta integrators for first-order systems y' = f(t, y):
-!> Dormand–Prince 5(4) (DOPRI5), Dormand–Prince 8(5,3) (DOP853) and Prince–Dormand 8(7)
-!> (PD87, the pair of GSL's rk8pd, without continuous extension), with Hairer's
-!> error norm, PI step-size control, initial step guess and continuous (dense) output,
+!> Dormand–Prince 5(4) (DOPRI5), Dormand–Prince 8(5,3) (DOP853), Prince–Dormand 8(7)
+!> (PD87, the pair of GSL's rk8pd) and Verner's most efficient 9(8) pair (VERN98), the last
+!> two without continuous extension of their own, with Hairer's error norm, PI step-size
+!> control, initial step guess and continuous (dense) output,
 !> plus a fixed-step mode without error control for convergence studies.
 !>
 !> The step control, error norms and dense output follow E. Hairer, S. P. Nørsett,
@@ -10,6 +11,14 @@
 !> (versions of 1996, www.unige.ch/~hairer/software.html). The Butcher coefficients are
 !> copied from those codes (Dormand & Prince 1980 for DOPRI5 with Shampine's 1986 dense
 !> output; Prince & Dormand 1981 / Hairer et al. for DOP853 and its 7th-order extension).
+!> VERN98 is the 16-stage 9(8) pair "RKV98.IIa Efficient" of J. H. Verner, "Numerically
+!> optimal Runge–Kutta pairs with interpolants", Numer. Algorithms 53 (2010) 383–396, from
+!> Verner's coefficient file RKV98.IIa.Efficient.000000349.081209.FLOAT6040OnWeb
+!> (www.sfu.ca/~jverner); the 40-digit values were read as reproduced in
+!> github.com/jacobwilliams/rklib (src/rklib_variable_steps.f90, rkv98e) and agree to 3e-40
+!> with github.com/vlovero/PyODEPack (pyodepack/include/verner98e.h); in 60-digit
+!> arithmetic they satisfy all 486 order conditions of order ≤ 9 (the 8th-order weights
+!> those of order ≤ 8) to 1e-39.
 !>
 !> The system is an extension of the abstract type `rk_system_t`: its components carry
 !> the parameters, its deferred binding `rhs` computes f, and its binding `observe`
@@ -49,7 +58,7 @@ module hillstab_rk
    implicit none
    private
    public :: rk_system_t, rk_rhs, rk_observe, rk_options_t, rk_step_t, rk_integrate, rk_dense_value
-   public :: rk_dopri5, rk_dop853, rk_pd87, rk_method_name, rk_method_order
+   public :: rk_dopri5, rk_dop853, rk_pd87, rk_vern98, rk_method_name, rk_method_order, rk_vern98_tableau
 
    !> Dormand–Prince 5(4), 7 stages (FSAL: 6 evaluations per step), 4th-order dense output.
    integer, parameter :: rk_dopri5 = 1
@@ -60,12 +69,17 @@ module hillstab_rk
    !> per accepted step with f at the new point); no continuous extension of its own:
    !> observers get the cubic Hermite interpolant, `t_out` and `dense_output` are refused.
    integer, parameter :: rk_pd87 = 3
+   !> Verner's most efficient 9(8) pair (RKV98.IIa, 2010), 16 stages (16 evaluations per
+   !> accepted step with f at the new point: not FSAL, stage 16 serves only the error
+   !> estimate); no continuous extension: as for rk_pd87, observers get the cubic Hermite
+   !> interpolant, `t_out` and `dense_output` are refused.
+   integer, parameter :: rk_vern98 = 4
 
 
    !> Options of `rk_integrate`. Zero (or negative) values of the step-control
    !> parameters select the defaults of Hairer's codes for the chosen method.
    type :: rk_options_t
-      integer :: method = rk_dop853       !! rk_dopri5 or rk_dop853
+      integer :: method = rk_dop853       !! rk_dopri5, rk_dop853, rk_pd87 or rk_vern98
       real(wp) :: rtol = 1.0e-10_wp       !! relative tolerance (≥ 0)
       real(wp) :: atol = 1.0e-10_wp       !! absolute tolerance (> 0)
       real(wp), allocatable :: atol_components(:)  !! per-component absolute tolerances (all > 0,
@@ -76,9 +90,9 @@ module hillstab_rk
       integer :: max_steps = 100000       !! attempted steps (accepted + rejected) before failing
       integer :: fixed_steps = 0          !! > 0: this many equal steps, no error control
       real(wp) :: safety = 0.9_wp         !! safety factor of the step prediction
-      real(wp) :: beta = -1.0_wp          !! PI (Lund) stabilisation; < 0 → 0.04 (DOPRI5), 0 (DOP853)
-      real(wp) :: fac_min = 0.0_wp        !! smallest h_new/h; 0 → 0.2 (DOPRI5), 0.333 (DOP853)
-      real(wp) :: fac_max = 0.0_wp        !! largest h_new/h; 0 → 10 (DOPRI5), 6 (DOP853)
+      real(wp) :: beta = -1.0_wp          !! PI (Lund) stabilisation; < 0 → 0.04 (DOPRI5), 0 (others)
+      real(wp) :: fac_min = 0.0_wp        !! smallest h_new/h; 0 → 0.2 (DOPRI5), 0.333 (others)
+      real(wp) :: fac_max = 0.0_wp        !! largest h_new/h; 0 → 10 (DOPRI5), 6 (others)
       logical :: dense_output = .false.   !! build DOP853's 7th-order interpolant every step
                                           !! (3 more evaluations); implied by `t_out`
    end type rk_options_t
@@ -86,9 +100,10 @@ module hillstab_rk
    !> One accepted step as handed to an observer: the interval [t_old, t], the state at
    !> t and the coefficients of the continuous extension on that interval. The
    !> interpolant is of order `dense_order`: 4 (DOPRI5), 7 (DOP853 with dense output),
-   !> or 3 (DOP853 without: the cubic Hermite interpolant from the end values and slopes).
+   !> or 3 (DOP853 without, PD87, VERN98: the cubic Hermite interpolant from the end
+   !> values and slopes).
    type :: rk_step_t
-      integer :: method = rk_dop853  !! the pair that made the step (rk_dopri5 or rk_dop853)
+      integer :: method = rk_dop853  !! the pair that made the step (rk_dopri5, rk_dop853, ...)
       integer(int64) :: index = 0        !! number of this accepted step (0: the initial point)
       real(wp) :: t_old = 0.0_wp         !! start of the step
       real(wp) :: t = 0.0_wp             !! end of the step
@@ -361,6 +376,126 @@ module hillstab_rk
       pd_e8 = pd_bh8 - pd_b8, pd_e9 = pd_bh9 - pd_b9, pd_e10 = pd_bh10 - pd_b10, pd_e11 = pd_bh11 - pd_b11, &
       pd_e12 = pd_bh12 - pd_b12, pd_e13 = -pd_b13
 
+   ! ---------------------------------------------------------------------------------
+   ! VERN98: Verner (2010), RKV98.IIa Efficient, 16 stages (digits: see the header).
+   ! Stages 15 and 16 are at c = 1; the 9th-order formula propagates (local
+   ! extrapolation) and does not use stage 16, which only the 8th-order formula uses
+   ! (a(16, 14) = a(16, 15) = 0). The error weights are v9_e = b̂ − b.
+   ! ---------------------------------------------------------------------------------
+   ! nodes
+   real(wp), parameter :: v9_c2 = 0.3462e-1_wp
+   real(wp), parameter :: v9_c3 = 0.9702435063878044594828361677100617517633e-1_wp
+   real(wp), parameter :: v9_c4 = 0.1455365259581706689224254251565092627645_wp
+   real(wp), parameter :: v9_c5 = 0.561_wp
+   real(wp), parameter :: v9_c6 = 0.2290079115904850126662751771814700052182_wp
+   real(wp), parameter :: v9_c7 = 0.5449920884095149873337248228185299947818_wp
+   real(wp), parameter :: v9_c8 = 0.645_wp
+   real(wp), parameter :: v9_c9 = 0.4837500000000000000000000000000000000000_wp
+   real(wp), parameter :: v9_c10 = 0.6757e-1_wp
+   real(wp), parameter :: v9_c11 = 0.2500_wp
+   real(wp), parameter :: v9_c12 = 0.6590650618730998549405331618649220295334_wp
+   real(wp), parameter :: v9_c13 = 0.8206_wp
+   real(wp), parameter :: v9_c14 = 0.9012_wp
+   ! coupling coefficients a(i, j), row by row (the zero ones omitted)
+   real(wp), parameter :: v9_a21 = 0.3462e-1_wp
+   real(wp), parameter :: v9_a31 = -0.389335438857287327017042687229284478532e-1_wp
+   real(wp), parameter :: v9_a32 = 0.1359578945245091786499878854939346230295_wp
+   real(wp), parameter :: v9_a41 = 0.3638413148954266723060635628912731569111e-1_wp
+   real(wp), parameter :: v9_a43 = 0.1091523944686280016918190688673819470733_wp
+   real(wp), parameter :: v9_a51 = 2.025763914393969636805657604282571047511_wp
+   real(wp), parameter :: v9_a53 = -7.638023836496292020387602153091964592952_wp
+   real(wp), parameter :: v9_a54 = 6.173259922102322383581944548809393545442_wp
+   real(wp), parameter :: v9_a61 = 0.5112275589406060872792270881648288397197e-1_wp
+   real(wp), parameter :: v9_a64 = 0.1770823794555021537929910813839068684087_wp
+   real(wp), parameter :: v9_a65 = 0.80277624092225014536138698108025283759e-3_wp
+   real(wp), parameter :: v9_a71 = 0.1316006357975216279279871693164256985334_wp
+   real(wp), parameter :: v9_a74 = -0.2957276252669636417685183174672273730699_wp
+   real(wp), parameter :: v9_a75 = 0.878137803564295237421124704053886667082e-1_wp
+   real(wp), parameter :: v9_a76 = 0.6213052975225274774321435005639430026100_wp
+   real(wp), parameter :: v9_a81 = 0.7166666666666666666666666666666666666667e-1_wp
+   real(wp), parameter :: v9_a86 = 0.3305533578915319409260346730051472207728_wp
+   real(wp), parameter :: v9_a87 = 0.2427799754418013924072986603281861125606_wp
+   real(wp), parameter :: v9_a91 = 0.7180664062500000000000000000000000000000e-1_wp
+   real(wp), parameter :: v9_a96 = 0.3294380283228177160744825466257672816401_wp
+   real(wp), parameter :: v9_a97 = 0.1165190029271822839255174533742327183599_wp
+   real(wp), parameter :: v9_a98 = -0.3401367187500000000000000000000000000000e-1_wp
+   real(wp), parameter :: v9_a101 = 0.4836757646340646986611287718844085773549e-1_wp
+   real(wp), parameter :: v9_a106 = 0.3928989925676163974333190042057047002852e-1_wp
+   real(wp), parameter :: v9_a107 = 0.1054740945890344608263649267140088017604_wp
+   real(wp), parameter :: v9_a108 = -0.2143865284648312665982642293830533996214e-1_wp
+   real(wp), parameter :: v9_a109 = -0.1041229174627194437759832813847147895623_wp
+   real(wp), parameter :: v9_a111 = -0.2664561487201478635337289243849737340534e-1_wp
+   real(wp), parameter :: v9_a116 = 0.3333333333333333333333333333333333333333e-1_wp
+   real(wp), parameter :: v9_a117 = -0.1631072244872467239162704487554706387141_wp
+   real(wp), parameter :: v9_a118 = 0.3396081684127761199487954930015522928244e-1_wp
+   real(wp), parameter :: v9_a119 = 0.1572319413814626097110769806810024118077_wp
+   real(wp), parameter :: v9_a1110 = 0.2152267478031879552303534778794770376960_wp
+   real(wp), parameter :: v9_a121 = 0.3689009248708622334786359863227633989718e-1_wp
+   real(wp), parameter :: v9_a126 = -0.1465181576725542928653609891758501156785_wp
+   real(wp), parameter :: v9_a127 = 0.2242577768172024345345469822625833796001_wp
+   real(wp), parameter :: v9_a128 = 0.2294405717066072637090897902753790803034e-1_wp
+   real(wp), parameter :: v9_a129 = -0.35850052905728761357394424889330334334e-2_wp
+   real(wp), parameter :: v9_a1210 = 0.8669223316444385506869203619044453906053e-1_wp
+   real(wp), parameter :: v9_a1211 = 0.4383840651968337846196219974168630120572_wp
+   real(wp), parameter :: v9_a131 = -0.4866012215113340846662212357570395295088_wp
+   real(wp), parameter :: v9_a136 = -6.304602650282852990657772792012007122988_wp
+   real(wp), parameter :: v9_a137 = -0.281245618289472564778284183790118418111_wp
+   real(wp), parameter :: v9_a138 = -2.679019236219849057687906597489223155566_wp
+   real(wp), parameter :: v9_a139 = 0.518815663924157511565311164615012522024_wp
+   real(wp), parameter :: v9_a1310 = 1.365353187603341710683633635235238678626_wp
+   real(wp), parameter :: v9_a1311 = 5.885091088503946585721274891680604830712_wp
+   real(wp), parameter :: v9_a1312 = 2.802808786272062889819965117517532194812_wp
+   real(wp), parameter :: v9_a141 = 0.4185367457753471441471025246471931649633_wp
+   real(wp), parameter :: v9_a146 = 6.724547581906459363100870806514855026676_wp
+   real(wp), parameter :: v9_a147 = -0.425444280164611790606983409697113064616_wp
+   real(wp), parameter :: v9_a148 = 3.343279153001265577811816947557982637749_wp
+   real(wp), parameter :: v9_a149 = 0.617081663117537759528421117507709784737_wp
+   real(wp), parameter :: v9_a1410 = -0.929966123939932833937749523988800852013_wp
+   real(wp), parameter :: v9_a1411 = -6.099948804751010722472962837945508844846_wp
+   real(wp), parameter :: v9_a1412 = -3.002206187889399044804158084895173690015_wp
+   real(wp), parameter :: v9_a1413 = 0.2553202529443445472336424602988558373637_wp
+   real(wp), parameter :: v9_a151 = -0.779374086122884664644623040843840506343_wp
+   real(wp), parameter :: v9_a156 = -13.93734253810777678786523664804936051203_wp
+   real(wp), parameter :: v9_a157 = 1.252048853379357320949735183924200895136_wp
+   real(wp), parameter :: v9_a158 = -14.69150040801686878191527989293072091588_wp
+   real(wp), parameter :: v9_a159 = -0.494705058533141685655191992136962873577_wp
+   real(wp), parameter :: v9_a1510 = 2.242974909146236657906984549543692874755_wp
+   real(wp), parameter :: v9_a1511 = 13.36789380382864375813864978592679139881_wp
+   real(wp), parameter :: v9_a1512 = 14.39665048665068644512236935340272139005_wp
+   real(wp), parameter :: v9_a1513 = -0.7975813331776800379127866056663258667437_wp
+   real(wp), parameter :: v9_a1514 = 0.4409353709534277758753793068298041158235_wp
+   real(wp), parameter :: v9_a161 = 2.058051337466886442151242368989994043993_wp
+   real(wp), parameter :: v9_a166 = 22.35793772796803295519317565842520212899_wp
+   real(wp), parameter :: v9_a167 = 0.90949810997556332745009198137971890783_wp
+   real(wp), parameter :: v9_a168 = 35.89110098240264104710550686568482456493_wp
+   real(wp), parameter :: v9_a169 = -3.442515027624453437985000403608480262211_wp
+   real(wp), parameter :: v9_a1610 = -4.865481358036368826566013387928704014496_wp
+   real(wp), parameter :: v9_a1611 = -18.90980381354342625688427480879773032857_wp
+   real(wp), parameter :: v9_a1612 = -34.26354448030451782929251177395134170515_wp
+   real(wp), parameter :: v9_a1613 = 1.264756521695642578827783499806516664686_wp
+   ! weights of the 9th-order formula
+   real(wp), parameter :: v9_b1 = 0.1461197685842315252051541915018784713459e-1_wp
+   real(wp), parameter :: v9_b8 = -0.3915211862331339089410228267288242030810_wp
+   real(wp), parameter :: v9_b9 = 0.2310932500289506415909675644868993669908_wp
+   real(wp), parameter :: v9_b10 = 0.1274766769992852382560589467488989175618_wp
+   real(wp), parameter :: v9_b11 = 0.2246434176204157731566981937082069688984_wp
+   real(wp), parameter :: v9_b12 = 0.5684352689748512932705226972873692126743_wp
+   real(wp), parameter :: v9_b13 = 0.5825871557215827200814768021863420902155e-1_wp
+   real(wp), parameter :: v9_b14 = 0.1364317403482215641609022744494239843327_wp
+   real(wp), parameter :: v9_b15 = 0.3057013983082797397721005067920369646664e-1_wp
+   ! weights of the embedded 8th-order formula
+   real(wp), parameter :: v9_bh1 = 0.1996996514886773085518508418098868756464e-1_wp
+   real(wp), parameter :: v9_bh8 = 2.191499304949330054530747099310837524864_wp
+   real(wp), parameter :: v9_bh9 = 0.8857071848208438030833722031786358862953e-1_wp
+   real(wp), parameter :: v9_bh10 = 0.1140560234865965622484956605091432032674_wp
+   real(wp), parameter :: v9_bh11 = 0.2533163805345107065564577734569651977347_wp
+   real(wp), parameter :: v9_bh12 = -2.056564386240941011158999594595981300493_wp
+   real(wp), parameter :: v9_bh13 = 0.3408096799013119935160094894224543812830_wp
+   real(wp), parameter :: v9_bh16 = 0.4834231373823958314376726739772871714902e-1_wp
+   real(wp), parameter :: v9_e1 = v9_bh1 - v9_b1, v9_e8 = v9_bh8 - v9_b8, v9_e9 = v9_bh9 - v9_b9, &
+      v9_e10 = v9_bh10 - v9_b10, v9_e11 = v9_bh11 - v9_b11, v9_e12 = v9_bh12 - v9_b12, &
+      v9_e13 = v9_bh13 - v9_b13, v9_e14 = -v9_b14, v9_e15 = -v9_b15, v9_e16 = v9_bh16
+
    !> A view of one stage vector (a column of the stage array, or the trial state).
    type :: stage_view_t
       real(wp), pointer, contiguous :: v(:) => null()
@@ -371,7 +506,7 @@ module hillstab_rk
    !> where an array section (k(:, j)) would build a fresh one on every evaluation.
    type :: stage_views_t
       type(stage_view_t) :: y_stage, y_new
-      type(stage_view_t) :: f(16)
+      type(stage_view_t) :: f(17)
    end type stage_views_t
 
    !> Unit round-off used in the step-size underflow test (Hairer's UROUND).
@@ -396,25 +531,65 @@ contains
 
    !> Name of a method constant.
    pure function rk_method_name(method) result(name)
-      integer, intent(in) :: method  !! rk_dopri5 or rk_dop853
+      integer, intent(in) :: method  !! rk_dopri5, rk_dop853, rk_pd87 or rk_vern98
       character(len=:), allocatable :: name
       select case (method)
       case (rk_dopri5); name = "dopri5"
       case (rk_dop853); name = "dop853"
       case (rk_pd87); name = "pd87"
+      case (rk_vern98); name = "vern98"
       case default; name = "unknown"
       end select
    end function rk_method_name
 
-   !> Classical order of the propagating formula (5 or 8; 0 if unknown).
+   !> Classical order of the propagating formula (5, 8 or 9; 0 if unknown).
    pure integer function rk_method_order(method) result(order)
-      integer, intent(in) :: method  !! rk_dopri5, rk_dop853 or rk_pd87
+      integer, intent(in) :: method  !! rk_dopri5, rk_dop853, rk_pd87 or rk_vern98
       select case (method)
       case (rk_dopri5); order = 5
       case (rk_dop853, rk_pd87); order = 8
+      case (rk_vern98); order = 9
       case default; order = 0
       end select
    end function rk_method_order
+
+   !> The Butcher tableau of rk_vern98 (Verner's RKV98.IIa Efficient) as the integrator
+   !> uses it, for checks of its order conditions: nodes c, coupling coefficients a (strictly
+   !> lower triangular), weights b of the 9th-order and b_embedded of the 8th-order formula.
+   pure subroutine rk_vern98_tableau(c, a, b, b_embedded)
+      real(wp), intent(out) :: c(16)           !! nodes
+      real(wp), intent(out) :: a(16, 16)       !! a(i, j), zero for j >= i
+      real(wp), intent(out) :: b(16)           !! weights of the propagating 9th-order formula
+      real(wp), intent(out) :: b_embedded(16)  !! weights of the 8th-order formula
+      c = 0.0_wp
+      a = 0.0_wp
+      b = 0.0_wp
+      b_embedded = 0.0_wp
+      c(2:14) = [v9_c2, v9_c3, v9_c4, v9_c5, v9_c6, v9_c7, v9_c8, v9_c9, v9_c10, v9_c11, v9_c12, v9_c13, &
+                  v9_c14]
+      c(15:16) = 1.0_wp
+      a(2, [1]) = [v9_a21]
+      a(3, [1, 2]) = [v9_a31, v9_a32]
+      a(4, [1, 3]) = [v9_a41, v9_a43]
+      a(5, [1, 3, 4]) = [v9_a51, v9_a53, v9_a54]
+      a(6, [1, 4, 5]) = [v9_a61, v9_a64, v9_a65]
+      a(7, [1, 4, 5, 6]) = [v9_a71, v9_a74, v9_a75, v9_a76]
+      a(8, [1, 6, 7]) = [v9_a81, v9_a86, v9_a87]
+      a(9, [1, 6, 7, 8]) = [v9_a91, v9_a96, v9_a97, v9_a98]
+      a(10, [1, 6, 7, 8, 9]) = [v9_a101, v9_a106, v9_a107, v9_a108, v9_a109]
+      a(11, [1, 6, 7, 8, 9, 10]) = [v9_a111, v9_a116, v9_a117, v9_a118, v9_a119, v9_a1110]
+      a(12, [1, 6, 7, 8, 9, 10, 11]) = [v9_a121, v9_a126, v9_a127, v9_a128, v9_a129, v9_a1210, v9_a1211]
+      a(13, [1, 6, 7, 8, 9, 10, 11, 12]) = [v9_a131, v9_a136, v9_a137, v9_a138, v9_a139, v9_a1310, v9_a1311, v9_a1312]
+      a(14, [1, 6, 7, 8, 9, 10, 11, 12, 13]) = [v9_a141, v9_a146, v9_a147, v9_a148, v9_a149, v9_a1410, &
+         v9_a1411, v9_a1412, v9_a1413]
+      a(15, [1, 6, 7, 8, 9, 10, 11, 12, 13, 14]) = [v9_a151, v9_a156, v9_a157, v9_a158, v9_a159, v9_a1510, &
+         v9_a1511, v9_a1512, v9_a1513, v9_a1514]
+      a(16, [1, 6, 7, 8, 9, 10, 11, 12, 13]) = [v9_a161, v9_a166, v9_a167, v9_a168, v9_a169, v9_a1610, &
+         v9_a1611, v9_a1612, v9_a1613]
+      b([1, 8, 9, 10, 11, 12, 13, 14, 15]) = [v9_b1, v9_b8, v9_b9, v9_b10, v9_b11, v9_b12, v9_b13, v9_b14, v9_b15]
+      b_embedded([1, 8, 9, 10, 11, 12, 13, 16]) = [v9_bh1, v9_bh8, v9_bh9, v9_bh10, v9_bh11, v9_bh12, v9_bh13, &
+                                                   v9_bh16]
+   end subroutine rk_vern98_tableau
 
    !> The continuous extension of `step` at time t (t in [t_old, t]; mild
    !> extrapolation is allowed but not accurate). `step` must come from rk_integrate
@@ -485,7 +660,11 @@ contains
          allocate (atol(n), source=options%atol)
       end if
       want_dense = present(t_out) .or. options%dense_output
-      n_stages = merge(7, 16, options%method == rk_dopri5)
+      select case (options%method)
+      case (rk_dopri5); n_stages = 7
+      case (rk_vern98); n_stages = 17   ! 16 stages and f at the new point
+      case default; n_stages = 16
+      end select
       allocate (k(n, n_stages), y_new(n), y_stage(n))
       views%y_stage%v => y_stage
       views%y_new%v => y_new
@@ -529,11 +708,13 @@ contains
 
       subroutine check_arguments(error)
          type(error_t), allocatable, intent(out) :: error
-         if (options%method /= rk_dopri5 .and. options%method /= rk_dop853 .and. options%method /= rk_pd87) then
+         if (options%method /= rk_dopri5 .and. options%method /= rk_dop853 .and. options%method /= rk_pd87 &
+             .and. options%method /= rk_vern98) then
             call set_error(error, err_invalid_parameter, "rk_integrate: unknown method")
-         else if (options%method == rk_pd87 .and. (present(t_out) .or. options%dense_output)) then
-            call set_error(error, err_invalid_parameter, "rk_integrate: pd87 has no continuous extension "// &
-               "of its order; use dop853 for t_out or dense_output")
+         else if ((options%method == rk_pd87 .or. options%method == rk_vern98) &
+                  .and. (present(t_out) .or. options%dense_output)) then
+            call set_error(error, err_invalid_parameter, "rk_integrate: "//rk_method_name(options%method)// &
+               " has no continuous extension of its order; use dop853 for t_out or dense_output")
          else if (n < 1) then
             call set_error(error, err_invalid_parameter, "rk_integrate: empty state vector")
          else if (.not. (ieee_is_finite(t) .and. ieee_is_finite(t_end))) then
@@ -722,7 +903,12 @@ contains
             control%beta = merge(options%beta, 0.0_wp, options%beta >= 0.0_wp)
             control%fac_min = merge(options%fac_min, 0.333_wp, options%fac_min > 0.0_wp)
             control%fac_max = merge(options%fac_max, 6.0_wp, options%fac_max > 0.0_wp)
-            control%exponent = 0.125_wp - 0.2_wp*control%beta
+            if (options%method == rk_vern98) then
+               ! the error estimate is of order 8 (local error ~ h^9): h ∝ err^(-1/9)
+               control%exponent = 1.0_wp/9.0_wp - 0.2_wp*control%beta
+            else
+               control%exponent = 0.125_wp - 0.2_wp*control%beta
+            end if
          end if
          control%h_max = merge(options%h_max, span, options%h_max > 0.0_wp)
          control%fac_old = 1.0e-4_wp
@@ -813,6 +999,8 @@ contains
             call dopri5_stages(tau, hh, with_error, err)
          case (rk_pd87)
             call pd87_stages(tau, hh, with_error, err)
+         case (rk_vern98)
+            call vern98_stages(tau, hh, with_error, err)
          case default
             call dop853_stages(tau, hh, with_error, err)
          end select
@@ -838,6 +1026,16 @@ contains
          if (present(err)) err = e
       end subroutine pd87_stages
 
+      subroutine vern98_stages(tau, hh, with_error, err)
+         real(wp), intent(in) :: tau, hh
+         logical, intent(in) :: with_error
+         real(wp), intent(out), optional :: err
+         real(wp) :: e
+         call vern98_kernel(system, n, tau, hh, step%y, k, y_stage, y_new, views, atol, options%rtol, with_error, e, &
+                            finite, work%n_evaluations)
+         if (present(err)) err = e
+      end subroutine vern98_stages
+
       subroutine dop853_stages(tau, hh, with_error, err)
          real(wp), intent(in) :: tau, hh
          logical, intent(in) :: with_error
@@ -848,7 +1046,7 @@ contains
          if (present(err)) err = e
       end subroutine dop853_stages
 
-      !> After a successful attempt: evaluate f at the new point (DOP853, PD87; DOPRI5 has it),
+      !> After a successful attempt: evaluate f at the new point (DOP853, PD87, VERN98; DOPRI5 has it),
       !> build the dense output, record the step (which moves f(new) into k(:, 1) for
       !> the next step), serve outputs and the observer.
       subroutine complete_step(t_new)
@@ -872,6 +1070,13 @@ contains
                return
             end if
             call accept(t_new, 14)
+         else if (options%method == rk_vern98) then
+            call evaluate(t_new, views%y_new%v, views%f(17)%v)
+            if (.not. finite) then
+               call fail_non_finite(t_new, "end of accepted step")
+               return
+            end if
+            call accept(t_new, 17)
          else
             call evaluate(t_new, views%y_new%v, views%f(13)%v)
             if (.not. finite) then
@@ -1229,6 +1434,142 @@ contains
          err = sqrt(err/n)
       end if
    end subroutine pd87_kernel
+
+   !> One trial step of Verner's 9(8) pair of size hh from (tau, y0): the 16 stages into k,
+   !> the 9th-order state into y_new and, with `with_error`, Hairer's norm of its difference
+   !> to the 8th-order one. Stage 16 serves only the error estimate (skipped without
+   !> `with_error`, in fixed-step mode). Same conventions as `dop853_kernel`.
+   subroutine vern98_kernel(system, n, tau, hh, y0, k, y_stage, y_new, views, atol, rtol, with_error, err, finite, &
+                            n_evaluations)
+      class(rk_system_t), intent(inout) :: system
+      integer, intent(in) :: n
+      real(wp), intent(in) :: tau, hh, y0(n), atol(n), rtol
+      real(wp), intent(inout), target :: k(n, *)
+      real(wp), intent(out), target :: y_stage(n), y_new(n)
+      type(stage_views_t), intent(in) :: views  !! the same y_stage, y_new and columns of k
+      logical, intent(in) :: with_error
+      real(wp), intent(out) :: err
+      logical, intent(out) :: finite
+      integer(int64), intent(inout) :: n_evaluations
+      real(wp) :: e
+      integer :: i
+      err = 0.0_wp
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(v9_a21*k(i, 1))
+      end do
+      call system%rhs(tau + v9_c2*hh, views%y_stage%v, views%f(2)%v)
+      if (stage_failed(n, k(:, 2), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(v9_a31*k(i, 1) + v9_a32*k(i, 2))
+      end do
+      call system%rhs(tau + v9_c3*hh, views%y_stage%v, views%f(3)%v)
+      if (stage_failed(n, k(:, 3), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(v9_a41*k(i, 1) + v9_a43*k(i, 3))
+      end do
+      call system%rhs(tau + v9_c4*hh, views%y_stage%v, views%f(4)%v)
+      if (stage_failed(n, k(:, 4), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(v9_a51*k(i, 1) + v9_a53*k(i, 3) + v9_a54*k(i, 4))
+      end do
+      call system%rhs(tau + v9_c5*hh, views%y_stage%v, views%f(5)%v)
+      if (stage_failed(n, k(:, 5), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(v9_a61*k(i, 1) + v9_a64*k(i, 4) + v9_a65*k(i, 5))
+      end do
+      call system%rhs(tau + v9_c6*hh, views%y_stage%v, views%f(6)%v)
+      if (stage_failed(n, k(:, 6), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(v9_a71*k(i, 1) + v9_a74*k(i, 4) + v9_a75*k(i, 5) + v9_a76*k(i, 6))
+      end do
+      call system%rhs(tau + v9_c7*hh, views%y_stage%v, views%f(7)%v)
+      if (stage_failed(n, k(:, 7), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(v9_a81*k(i, 1) + v9_a86*k(i, 6) + v9_a87*k(i, 7))
+      end do
+      call system%rhs(tau + v9_c8*hh, views%y_stage%v, views%f(8)%v)
+      if (stage_failed(n, k(:, 8), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(v9_a91*k(i, 1) + v9_a96*k(i, 6) + v9_a97*k(i, 7) + v9_a98*k(i, 8))
+      end do
+      call system%rhs(tau + v9_c9*hh, views%y_stage%v, views%f(9)%v)
+      if (stage_failed(n, k(:, 9), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(v9_a101*k(i, 1) + v9_a106*k(i, 6) + v9_a107*k(i, 7) + v9_a108*k(i, 8) &
+            + v9_a109*k(i, 9))
+      end do
+      call system%rhs(tau + v9_c10*hh, views%y_stage%v, views%f(10)%v)
+      if (stage_failed(n, k(:, 10), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(v9_a111*k(i, 1) + v9_a116*k(i, 6) + v9_a117*k(i, 7) + v9_a118*k(i, 8) &
+            + v9_a119*k(i, 9) + v9_a1110*k(i, 10))
+      end do
+      call system%rhs(tau + v9_c11*hh, views%y_stage%v, views%f(11)%v)
+      if (stage_failed(n, k(:, 11), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(v9_a121*k(i, 1) + v9_a126*k(i, 6) + v9_a127*k(i, 7) + v9_a128*k(i, 8) &
+            + v9_a129*k(i, 9) + v9_a1210*k(i, 10) + v9_a1211*k(i, 11))
+      end do
+      call system%rhs(tau + v9_c12*hh, views%y_stage%v, views%f(12)%v)
+      if (stage_failed(n, k(:, 12), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(v9_a131*k(i, 1) + v9_a136*k(i, 6) + v9_a137*k(i, 7) + v9_a138*k(i, 8) &
+            + v9_a139*k(i, 9) + v9_a1310*k(i, 10) + v9_a1311*k(i, 11) + v9_a1312*k(i, 12))
+      end do
+      call system%rhs(tau + v9_c13*hh, views%y_stage%v, views%f(13)%v)
+      if (stage_failed(n, k(:, 13), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(v9_a141*k(i, 1) + v9_a146*k(i, 6) + v9_a147*k(i, 7) + v9_a148*k(i, 8) &
+            + v9_a149*k(i, 9) + v9_a1410*k(i, 10) + v9_a1411*k(i, 11) + v9_a1412*k(i, 12) &
+            + v9_a1413*k(i, 13))
+      end do
+      call system%rhs(tau + v9_c14*hh, views%y_stage%v, views%f(14)%v)
+      if (stage_failed(n, k(:, 14), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(v9_a151*k(i, 1) + v9_a156*k(i, 6) + v9_a157*k(i, 7) + v9_a158*k(i, 8) &
+            + v9_a159*k(i, 9) + v9_a1510*k(i, 10) + v9_a1511*k(i, 11) + v9_a1512*k(i, 12) &
+            + v9_a1513*k(i, 13) + v9_a1514*k(i, 14))
+      end do
+      call system%rhs(tau + hh, views%y_stage%v, views%f(15)%v)
+      if (stage_failed(n, k(:, 15), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         y_new(i) = y0(i) + hh*(v9_b1*k(i, 1) + v9_b8*k(i, 8) + v9_b9*k(i, 9) + v9_b10*k(i, 10) &
+            + v9_b11*k(i, 11) + v9_b12*k(i, 12) + v9_b13*k(i, 13) + v9_b14*k(i, 14) + v9_b15*k(i, 15))
+      end do
+      if (.not. with_error) return
+      ! stage 16 serves only the 8th-order formula
+      !GCC$ novector
+      do i = 1, n
+         y_stage(i) = y0(i) + hh*(v9_a161*k(i, 1) + v9_a166*k(i, 6) + v9_a167*k(i, 7) + v9_a168*k(i, 8) &
+            + v9_a169*k(i, 9) + v9_a1610*k(i, 10) + v9_a1611*k(i, 11) + v9_a1612*k(i, 12) &
+            + v9_a1613*k(i, 13))
+      end do
+      call system%rhs(tau + hh, views%y_stage%v, views%f(16)%v)
+      if (stage_failed(n, k(:, 16), finite, n_evaluations)) return
+      !GCC$ novector
+      do i = 1, n
+         e = hh*(v9_e1*k(i, 1) + v9_e8*k(i, 8) + v9_e9*k(i, 9) + v9_e10*k(i, 10) + v9_e11*k(i, 11) &
+            + v9_e12*k(i, 12) + v9_e13*k(i, 13) + v9_e14*k(i, 14) + v9_e15*k(i, 15) + v9_e16*k(i, 16)) &
+            /(atol(i) + rtol*max(abs(y0(i)), abs(y_new(i))))
+         err = err + e**2
+      end do
+      err = sqrt(err/n)
+   end subroutine vern98_kernel
 
    !> Count one evaluation of f and say whether it failed: `finite` is false when a
    !> component is NaN or ±Inf (|f_i| <= huge is false for those: one compare per component).

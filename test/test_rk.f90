@@ -3,7 +3,9 @@
 !> closed-form solutions (harmonic oscillator, constant Hill coefficient, Meissner),
 !> Hairer's published DOPRI5 run on the Arenstorf orbit, a full-period integration,
 !> the converged segmented product, and the RK4 test reference; PD8(7) against single
-!> steps of GSL's rk8pd (the same tableau), its order, and against DOP853 on the pendulum.
+!> steps of GSL's rk8pd (the same tableau), its order, and against DOP853 on the pendulum;
+!> Verner's 9(8) pair against its order conditions, a limit cycle in closed form and
+!> DOP853 on the pendulum.
 module test_rk
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_ptr, c_null_ptr, c_null_funptr, &
       c_loc, c_funloc, c_f_pointer, c_associated, c_funptr
@@ -70,6 +72,13 @@ module test_rk
    contains
       procedure :: rhs => three_body
    end type three_body_t
+
+   !> y' = J y + (1 − |y|²) y in the plane (J: rotation by π/2): from radius r0 the
+   !> solution spirals onto the unit circle, r(t) = (1 + (r0⁻² − 1) e^(−2t))^(−1/2), angle t.
+   type, extends(rk_system_t) :: limit_cycle_t
+   contains
+      procedure :: rhs => limit_cycle
+   end type limit_cycle_t
 
    !> Two solutions (u, u', v, v') of x'' + q(τ) x = 0.
    type, extends(rk_system_t) :: hill_pair_t
@@ -163,7 +172,10 @@ contains
          new_unittest("pd87_order", pd87_order), &
          new_unittest("pd87_pendulum", pd87_pendulum), &
          new_unittest("pd87_refusals", pd87_refusals), &
-         new_unittest("pd87_work", pd87_work)])
+         new_unittest("pd87_work", pd87_work), &
+         new_unittest("vern98_tableau", vern98_tableau), &
+         new_unittest("vern98_order", vern98_order), &
+         new_unittest("vern98_pendulum", vern98_pendulum)])
    end function collect_rk
 
    ! ----------------------------------------------------------------------------------
@@ -225,6 +237,16 @@ contains
       dydt(3) = y(1) + 2.0_wp*y(4) - mu1*(y(1) + arenstorf_mu)/d1 - arenstorf_mu*(y(1) - mu1)/d2
       dydt(4) = y(2) - 2.0_wp*y(3) - mu1*y(2)/d1 - arenstorf_mu*y(2)/d2
    end subroutine three_body
+
+   subroutine limit_cycle(self, t, y, dydt)
+      class(limit_cycle_t), intent(inout) :: self
+      real(wp), intent(in) :: t, y(:)
+      real(wp), intent(out) :: dydt(:)
+      real(wp) :: s
+      s = 1.0_wp - y(1)**2 - y(2)**2
+      dydt(1) = -y(2) + s*y(1)
+      dydt(2) = y(1) + s*y(2)
+   end subroutine limit_cycle
 
    subroutine hill_pair(self, t, y, dydt)
       class(hill_pair_t), intent(inout) :: self
@@ -1039,4 +1061,140 @@ contains
       call rk_integrate(body, t, 1.0_wp, y, rk_options_t(method=rk_pd87, fixed_steps=50), stats, error)
       call check(ctx, stats%n_evaluations == 1 + 13*50 .and. stats%n_steps == 50, "fixed steps: 1 + 13 per step")
    end subroutine pd87_work
+
+   ! ----------------------------------------------------------------------------------
+   ! Verner's 9(8) pair
+   ! ----------------------------------------------------------------------------------
+
+   !> The tableau of rk_vern98 as the integrator holds it, against its defining
+   !> conditions: row sums Σ_j a_ij = c_i (every stage), quadrature Σ b_i c_i^(q−1) = 1/q
+   !> for q = 1…9 (9th-order weights) and q = 1…8 (8th-order weights), which must fail at
+   !> q = 9 (a genuinely lower-order embedded formula). Residuals are compared with the
+   !> rounding of the double-precision coefficients (a few ulp of Σ|terms|); a wrong or
+   !> truncated digit anywhere in a row or weight shows up far above that.
+   subroutine vern98_tableau(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: c(16), a(16, 16), b(16), bh(16), residual, worst_row, worst_b, worst_bh
+      integer :: i, q
+      character(len=40) :: label
+      call rk_vern98_tableau(c, a, b, bh)
+      call check(ctx, rk_method_order(rk_vern98) == 9 .and. rk_method_name(rk_vern98) == "vern98", &
+         "vern98: name and order")
+      call check(ctx, all([(all(a(i, i:) == 0.0_wp), i = 1, 16)]), "explicit: a(i, j) = 0 for j >= i")
+      worst_row = 0.0_wp
+      do i = 2, 16
+         residual = abs(sum(a(i, :)) - c(i))
+         worst_row = max(worst_row, residual)
+         write (label, '(a,i0)') "row sum = c, stage ", i
+         call check(ctx, residual <= 4.0_wp*epsilon(1.0_wp)*sum(abs(a(i, :))), trim(label))
+      end do
+      worst_b = 0.0_wp
+      worst_bh = 0.0_wp
+      do q = 1, 9
+         residual = abs(sum(b*c**(q - 1)) - 1.0_wp/q)
+         worst_b = max(worst_b, residual)
+         write (label, '(a,i0)') "9th-order quadrature q = ", q
+         call check(ctx, residual <= 4.0_wp*epsilon(1.0_wp)*sum(abs(b*c**(q - 1))), trim(label))
+         residual = abs(sum(bh*c**(q - 1)) - 1.0_wp/q)
+         if (q <= 8) then
+            worst_bh = max(worst_bh, residual)
+            write (label, '(a,i0)') "8th-order quadrature q = ", q
+            call check(ctx, residual <= 4.0_wp*epsilon(1.0_wp)*sum(abs(bh*c**(q - 1))), trim(label))
+         else
+            write (*, '(4x,a,es10.2)') "vern98 8th-order weights at q = 9: residual ", residual
+            call check(ctx, residual > 1.0e-7_wp, "8th-order weights are not 9th-order")
+         end if
+      end do
+      write (*, '(4x,a,es10.2,a,es10.2,a,es10.2)') "vern98 largest residuals: row sums ", worst_row, &
+         ", quadrature b ", worst_b, ", quadrature b^ ", worst_bh
+   end subroutine vern98_tableau
+
+   !> Observed order of rk_vern98 with fixed steps on a smooth nonlinear problem with a
+   !> closed-form solution: the planar limit cycle y' = J y + (1 − |y|²) y from r0 = 2 to
+   !> t = 2 (errors 1e-8 … 3e-14, above round-off). Error ratio 2^9 when halving h; the
+   !> observed order approaches 9 from above (9.4, 9.2, 9.1 from N = 8 on). Also the
+   !> work of a fixed step: 15 evaluations (stage 16 only serves the error estimate).
+   subroutine vern98_order(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: e(3)
+      type(work_stats_t) :: stats
+      integer :: k
+      do k = 1, 3
+         e(k) = cycle_error(16*2**(k - 1))
+      end do
+      write (*, '(4x,a,3es10.2)') "vern98 limit cycle, N = 16, 32, 64: errors ", e
+      call check_order(ctx, e(1), e(2), 9.0_wp, "vern98 limit cycle N=16,32")
+      call check_order(ctx, e(2), e(3), 9.0_wp, "vern98 limit cycle N=32,64")
+      call check(ctx, stats%n_evaluations == 1 + 15*64, "fixed steps: 15 evaluations per step")
+   contains
+      real(wp) function cycle_error(n_steps) result(err)
+         integer, intent(in) :: n_steps
+         real(wp), parameter :: r0 = 2.0_wp, t_end = 2.0_wp
+         real(wp) :: t, y(2), r
+         type(error_t), allocatable :: error
+         type(limit_cycle_t) :: spiral
+         y = [r0, 0.0_wp]
+         t = 0.0_wp
+         call rk_integrate(spiral, t, t_end, y, rk_options_t(method=rk_vern98, fixed_steps=n_steps), stats, error)
+         r = 1.0_wp/sqrt(1.0_wp + (1.0_wp/r0**2 - 1.0_wp)*exp(-2.0_wp*t_end))
+         err = norm2(y - r*[cos(t_end), sin(t_end)])
+         if (allocated(error)) err = huge(1.0_wp)
+      end function cycle_error
+   end subroutine vern98_order
+
+   !> The nonlinear pendulum of Fig. 4 (e) (α = 7.88, β = 3.95, φ0 = 0.017) over 10 radial
+   !> periods by rk_vern98 at rtol 1e-10 and 1e-12 (atol from pendulum_atol) against DOP853
+   !> at 1e-14; the state error scaled by ρ and ρω. Also: the evaluation count of a pair
+   !> that is not FSAL (16 per accepted step, 15 per rejected one, 2 to start), and the
+   !> refusal of dense output, which the pair does not have.
+   subroutine vern98_pendulum(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(pendulum_system_t) :: system
+      real(wp) :: y0(4), reference(4), y(4), t, t_end, errors(2), y_out(4, 1)
+      real(wp), parameter :: tolerances(2) = [1.0e-10_wp, 1.0e-12_wp], bounds(2) = [5.0e-9_wp, 1.0e-10_wp]
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      type(rk_options_t) :: options
+      integer :: k
+      system%pendulum = pendulum_at(7.88_wp, 3.95_wp, 0.0_wp)
+      y0 = pendulum_initial_state(system%pendulum, 0.017_wp)
+      t_end = 10*system%pendulum%period
+      reference = y0
+      call run(rk_dop853, 1.0e-14_wp, reference)
+      do k = 1, 2
+         y = y0
+         call run(rk_vern98, tolerances(k), y)
+         call check(ctx, .not. allocated(error), "vern98 pendulum integration succeeds")
+         associate (p => system%pendulum)
+            errors(k) = max(maxval(abs(y(1:2) - reference(1:2)))/p%rho, &
+                            maxval(abs(y(3:4) - reference(3:4)))/(p%rho*p%omega))
+         end associate
+         write (*, '(4x,a,es8.1,a,es10.3,a,i0,a,i0,a,i0)') "vern98 pendulum (e), 10 periods, rtol ", tolerances(k), &
+            ": scaled error vs dop853 1e-14 ", errors(k), ", f-evals ", stats%n_evaluations, ", accepted ", &
+            stats%n_steps, ", rejected ", stats%n_rejected
+         call check(ctx, errors(k) < bounds(k), "vern98 pendulum error within bound")
+         call check(ctx, stats%n_evaluations == 2 + 16*stats%n_steps + 15*stats%n_rejected, &
+            "vern98 evaluations: 2 + 16 per accepted + 15 per rejected step")
+      end do
+      call check(ctx, errors(2) < errors(1)/10.0_wp, "error decreases with the tolerance")
+      ! no continuous extension of its own: t_out and dense_output are refused
+      y = y0
+      t = 0.0_wp
+      call rk_integrate(system, t, t_end, y, rk_options_t(method=rk_vern98), stats, error, t_out=[t_end], &
+                        y_out=y_out)
+      call check(ctx, allocated(error), "vern98 t_out refused")
+      if (allocated(error)) call check(ctx, error%code == err_invalid_parameter, "vern98 t_out: code")
+      call rk_integrate(system, t, t_end, y, rk_options_t(method=rk_vern98, dense_output=.true.), stats, error)
+      call check(ctx, allocated(error), "vern98 dense_output refused")
+   contains
+      subroutine run(method, tolerance, state)
+         integer, intent(in) :: method
+         real(wp), intent(in) :: tolerance
+         real(wp), intent(inout) :: state(4)
+         options = rk_options_t(method=method, rtol=tolerance, atol=tolerance, max_steps=10**6)
+         options%atol_components = pendulum_atol(system%pendulum, state, tolerance)
+         t = 0.0_wp
+         call rk_integrate(system, t, t_end, state, options, stats, error)
+      end subroutine run
+   end subroutine vern98_pendulum
 end module test_rk
