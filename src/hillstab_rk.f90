@@ -58,6 +58,7 @@ module hillstab_rk
    implicit none
    private
    public :: rk_system_t, rk_rhs, rk_observe, rk_options_t, rk_step_t, rk_integrate, rk_dense_value
+   public :: rk_beta_limit
    public :: rk_dopri5, rk_dop853, rk_pd87, rk_vern98, rk_method_name, rk_method_order, rk_vern98_tableau
 
    !> Dormand–Prince 5(4), 7 stages (FSAL: 6 evaluations per step), 4th-order dense output.
@@ -90,7 +91,9 @@ module hillstab_rk
       integer :: max_steps = 100000       !! attempted steps (accepted + rejected) before failing
       integer :: fixed_steps = 0          !! > 0: this many equal steps, no error control
       real(wp) :: safety = 0.9_wp         !! safety factor of the step prediction
-      real(wp) :: beta = -1.0_wp          !! PI (Lund) stabilisation; < 0 → 0.04 (DOPRI5), 0 (others)
+      real(wp) :: beta = -1.0_wp          !! PI (Lund) stabilisation; < 0 → 0.04 (DOPRI5), 0 (others);
+                                          !! must lie below `rk_beta_limit` (0.114 DOPRI5,
+                                          !! 0.104 DOP853/PD87, 0.093 VERN98)
       real(wp) :: fac_min = 0.0_wp        !! smallest h_new/h; 0 → 0.2 (DOPRI5), 0.333 (others)
       real(wp) :: fac_max = 0.0_wp        !! largest h_new/h; 0 → 10 (DOPRI5), 6 (others)
       logical :: dense_output = .false.   !! build DOP853's 7th-order interpolant every step
@@ -591,6 +594,22 @@ contains
                                                    v9_bh16]
    end subroutine rk_vern98_tableau
 
+   !> Largest admissible PI parameter β of a method (exclusive). The controller divides h
+   !> by err^(k − cβ)/err_old^β (k = 1/8 and c = 0.2 for the 8th-order pairs, 1/9 for
+   !> VERN98, 1/5 and c = 0.75 for DOPRI5); with err = err_old = e in a steady state the
+   !> step stays put where e^(k − (1 + c)β) = safety, which keeps e below 1 only while
+   !> k − (1 + c)β > 0. At and above that β the fixed point moves to e > 1 (every step
+   !> rejected) or, through the rejections, to e → 0: the steps collapse. Hairer's codes
+   !> accept any β ≤ 0.2.
+   pure real(wp) function rk_beta_limit(method) result(limit)
+      integer, intent(in) :: method  !! a method constant
+      select case (method)
+      case (rk_dopri5); limit = 0.2_wp/1.75_wp
+      case (rk_vern98); limit = (1.0_wp/9.0_wp)/1.2_wp
+      case default; limit = 0.125_wp/1.2_wp
+      end select
+   end function rk_beta_limit
+
    !> The continuous extension of `step` at time t (t in [t_old, t]; mild
    !> extrapolation is allowed but not accurate). `step` must come from rk_integrate
    !> (its arrays are allocated there). Hairer's CONTD5/CONTD8 form:
@@ -735,8 +754,11 @@ contains
             call set_error(error, err_invalid_parameter, "rk_integrate: max_steps must be >= 1")
          else if (options%safety <= 1.0e-4_wp .or. options%safety >= 1.0_wp) then
             call set_error(error, err_invalid_parameter, "rk_integrate: safety must lie in (1e-4, 1)")
-         else if (options%beta > 0.2_wp) then
-            call set_error(error, err_invalid_parameter, "rk_integrate: beta must be <= 0.2")
+         else if (options%beta >= rk_beta_limit(options%method)) then
+            write (message, '(a,es10.3,a,f6.4,a)') "rk_integrate: beta = ", options%beta, " must be < ", &
+               rk_beta_limit(options%method), " for "//rk_method_name(options%method)// &
+               " (above it the step control drives the error towards zero and the steps collapse)"
+            call set_error(error, err_invalid_parameter, trim(message))
          else if (options%h_max < 0.0_wp) then
             call set_error(error, err_invalid_parameter, "rk_integrate: h_max must be >= 0")
          else if (options%fac_min > 1.0_wp .or. (options%fac_max > 0.0_wp .and. options%fac_max < 1.0_wp)) then
