@@ -1,12 +1,13 @@
 # out/bench_series.png from out/bench_series.dat (make bench): the nonlinear pendulum of
 # Fig. 4 (e) by hillstab's DOPRI5, DOP853, PD87 (the Prince-Dormand 8(7) pair of GSL's
 # rk8pd, in hillstab's integrator) and VERN98 (Verner's 9(8) pair) and by GSL's rk8pd.
-# Left: error of the state after 10 radial periods against time per run (the motion is chaotic, so the state after 100
-# periods cannot be converged); middle: energy error after 100 periods; right: the largest
-# energy error at the step ends over those 100 periods (same runs, same times).
-set terminal pngcairo size 1650,520 enhanced font ",11"
+# Columns: error of the state after 10 radial periods (the motion is chaotic, so the state
+# after 100 periods cannot be converged); energy error after 100 periods; the largest
+# energy error at the step ends over those 100 periods (same runs). Top row against the
+# time per run, bottom row against the f-evaluations per run.
+set terminal pngcairo size 1650,1000 enhanced font ",11"
 set output "out/bench_series.png"
-set multiplot layout 1,3 title "nonlinear pendulum, Fig. 4 (e): speed against error (tolerances 1e-5 ... 1e-13; rk8pd also 1e-3, 1e-4)"
+set multiplot layout 2,3 title "nonlinear pendulum, Fig. 4 (e): speed against error (tolerances 1e-5 ... 1e-13; rk8pd also 1e-3, 1e-4)"
 set logscale xy
 set format x "10^{%L}"
 set format y "10^{%L}"
@@ -15,11 +16,17 @@ set key bottom left font ",10"
 file = "out/bench_series.dat"
 names = "DOPRI5 DOP853 PD87 VERN98 GSL-rk8pd"
 array colours[5] = ["#56b4e9", "#d55e00", "#009e73", "#cc79a7", "#000000"]
-set xlabel "time per run [s]"
-set ylabel "state error after 10 periods (scaled by rho, rho omega)"
-plot for [i=0:4] file index i using 3:4 with linespoints pt 7 ps 0.7 lc rgb colours[i+1] lw 1.5 title word(names, i+1)
-set ylabel "|E(100 T) - E(0)| / E_{scale}"
-plot for [i=0:4] file index i using 6:7 with linespoints pt 7 ps 0.7 lc rgb colours[i+1] lw 1.5 title word(names, i+1)
-set ylabel "max over the steps of |E - E(0)| / E_{scale}, 100 periods"
-plot for [i=0:4] file index i using 9:10 with linespoints pt 7 ps 0.7 lc rgb colours[i+1] lw 1.5 title word(names, i+1)
+array ylabels[3] = ["state error after 10 periods (scaled by rho, rho omega)", \
+                    "|E(100 T) - E(0)| / E_{scale}", \
+                    "max over the steps of |E - E(0)| / E_{scale}, 100 periods"]
+# row 1: error against time (columns 3, 6, 9); row 2: against f-evaluations (5, 8, 11)
+do for [row=1:2] {
+   set xlabel (row == 1 ? "time per run [s]" : "f-evaluations per run")
+   do for [m=1:3] {
+      set ylabel ylabels[m]
+      x = (row == 1 ? 3*m : 3*m + 2)
+      plot for [i=0:4] file index i using x:(column(3*m + 1)) with linespoints pt 7 ps 0.7 \
+         lc rgb colours[i+1] lw 1.5 title word(names, i+1)
+   }
+}
 unset multiplot
