@@ -327,8 +327,10 @@ module hillstab_rk
    ! ---------------------------------------------------------------------------------
    ! PD8(7): Prince & Dormand, "High order embedded Runge–Kutta formulae", J. Comput.
    ! Appl. Math. 7 (1981) 67–75, RK8(7)13M, with the paper's rational coefficients (the
-   ! pair of GSL's rk8pd). The 8th-order formula propagates (local extrapolation); the
-   ! error is its difference to the 7th-order one, pd_e = b̂ − b.
+   ! pair of GSL's rk8pd; the fractions read as reproduced in GSL's ode-initval2/rk8pd.c,
+   ! and a step is bit-identical to GSL's, test rk/pd87_step_equals_gsl). The 8th-order
+   ! formula propagates (local extrapolation); the error is its difference to the
+   ! 7th-order one, pd_e = b̂ − b.
    ! ---------------------------------------------------------------------------------
    real(wp), parameter :: pd_c2 = 1.0_wp/18.0_wp, pd_c3 = 1.0_wp/12.0_wp, pd_c4 = 1.0_wp/8.0_wp, &
       pd_c5 = 5.0_wp/16.0_wp, pd_c6 = 3.0_wp/8.0_wp, pd_c7 = 59.0_wp/400.0_wp, pd_c8 = 93.0_wp/200.0_wp, &
