@@ -102,6 +102,35 @@ module test_rk
       procedure :: rhs => riccati
    end type riccati_t
 
+   !> y' = t y²: from y(0) = y0, y = 1/(1/y0 − t²/2). f(−t, y) = −f(t, y), so integrating
+   !> backwards from 0 to −T is the forward integration from 0 to T mirrored, bit for bit (every
+   !> product with a negated t or h is the exact negation), while a stage at a wrong time
+   !> (t + c|h| instead of t + c h) breaks the mirror.
+   type, extends(rk_system_t) :: odd_in_time_t
+   contains
+      procedure :: rhs => odd_in_time
+   end type odd_in_time_t
+
+   !> The oscillator whose derivative is +Inf at its evaluation number `fail_at`.
+   type, extends(oscillator_t) :: failing_at_t
+      integer :: calls = 0
+      integer :: fail_at = 0
+   contains
+      procedure :: rhs => fail_at_count
+   end type failing_at_t
+
+   !> The oscillator with an observer that checks what each accepted step hands over
+   !> (pair, cubic Hermite interpolant with zero higher coefficients, contiguous steps)
+   !> and stops after 3 steps.
+   type, extends(oscillator_t) :: hermite_watch_t
+      integer :: method = 0
+      integer :: seen = 0
+      logical :: consistent = .true.
+      real(wp) :: t_previous = 0.0_wp
+   contains
+      procedure :: observe => watch_hermite
+   end type hermite_watch_t
+
    !> The pendulum with an observer that records the largest |E − E(0)| over the accepted steps.
    type, extends(pendulum_system_t) :: energy_watch_t
       real(wp) :: e0 = 0.0_wp
@@ -175,7 +204,11 @@ contains
          new_unittest("pd87_work", pd87_work), &
          new_unittest("vern98_tableau", vern98_tableau), &
          new_unittest("vern98_order", vern98_order), &
-         new_unittest("vern98_pendulum", vern98_pendulum)])
+         new_unittest("vern98_pendulum", vern98_pendulum), &
+         new_unittest("backward_mirror", backward_mirror), &
+         new_unittest("new_pairs_observer", new_pairs_observer), &
+         new_unittest("new_pairs_non_finite", new_pairs_non_finite), &
+         new_unittest("new_pairs_max_steps", new_pairs_max_steps)])
    end function collect_rk
 
    ! ----------------------------------------------------------------------------------
@@ -306,6 +339,37 @@ contains
       real(wp), intent(out) :: dydt(:)
       dydt(1) = y(1)**2*cos(t)
    end subroutine riccati
+
+   subroutine odd_in_time(self, t, y, dydt)
+      class(odd_in_time_t), intent(inout) :: self
+      real(wp), intent(in) :: t, y(:)
+      real(wp), intent(out) :: dydt(:)
+      dydt(1) = t*y(1)**2
+   end subroutine odd_in_time
+
+   subroutine fail_at_count(self, t, y, dydt)
+      class(failing_at_t), intent(inout) :: self
+      real(wp), intent(in) :: t, y(:)
+      real(wp), intent(out) :: dydt(:)
+      self%calls = self%calls + 1
+      dydt(1) = y(2)
+      dydt(2) = -y(1)
+      if (self%calls == self%fail_at) dydt(2) = ieee_value(1.0_wp, ieee_positive_inf)
+   end subroutine fail_at_count
+
+   subroutine watch_hermite(self, step, stop)
+      class(hermite_watch_t), intent(inout) :: self
+      type(rk_step_t), intent(in) :: step
+      logical, intent(inout) :: stop
+      self%seen = self%seen + 1
+      self%consistent = self%consistent .and. step%method == self%method .and. step%index == self%seen - 1
+      if (step%index > 0) then
+         self%consistent = self%consistent .and. step%dense_order == 3 .and. all(step%dense(:, 4:7) == 0.0_wp) &
+            .and. step%t_old == self%t_previous .and. step%h == step%t - step%t_old
+      end if
+      self%t_previous = step%t
+      stop = step%index >= 3
+   end subroutine watch_hermite
 
    subroutine watch_energy(self, step, stop)
       class(energy_watch_t), intent(inout) :: self
@@ -1229,4 +1293,183 @@ contains
          call rk_integrate(system, t, t_end, state, options, stats, error)
       end subroutine run
    end subroutine vern98_pendulum
+
+   ! ----------------------------------------------------------------------------------
+   ! the plumbing of the four pairs: direction, observer, failures, step limit
+   ! ----------------------------------------------------------------------------------
+
+   !> Backward integration of every pair, adaptive and fixed-step, on y' = t y² (time-
+   !> dependent, odd in t): from y(0) = 0.1 to t = −3 it must equal the forward run to
+   !> t = 3 bit for bit (state, steps, rejections, evaluations, h_next mirrored), and the
+   !> forward run must meet the closed form 1/(10 − t²/2).
+   subroutine backward_mirror(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer, parameter :: methods(4) = [rk_dopri5, rk_dop853, rk_pd87, rk_vern98]
+      real(wp), parameter :: y0 = 0.1_wp, t_span = 3.0_wp
+      ! errors at t = 3 (y = 0.18), measured: adaptive at 1e-10 1.9e-10 (DOPRI5), 1.5e-11,
+      ! 4.4e-11, 5.2e-12; 20 fixed steps 5.6e-10 (DOPRI5), 1.3e-14, 5.8e-15, 6e-17
+      real(wp), parameter :: bounds(4, 2) = reshape([5.0e-10_wp, 5.0e-11_wp, 1.0e-10_wp, 2.0e-11_wp, &
+                                                     2.0e-9_wp, 5.0e-14_wp, 2.0e-14_wp, 1.0e-15_wp], [4, 2])
+      type(odd_in_time_t) :: problem
+      type(work_stats_t) :: stats(2)
+      type(error_t), allocatable :: error
+      real(wp) :: t(2), y(1, 2), h_next(2), exact
+      integer :: m, mode, direction
+      character(len=40) :: label
+      exact = 1.0_wp/(1.0_wp/y0 - 0.5_wp*t_span**2)
+      do m = 1, size(methods)
+         do mode = 1, 2
+            write (label, '(a,a)') rk_method_name(methods(m)), merge(" adaptive", " fixed   ", mode == 1)
+            do direction = 1, 2
+               t(direction) = 0.0_wp
+               y(:, direction) = y0
+               call rk_integrate(problem, t(direction), merge(t_span, -t_span, direction == 1), y(:, direction), &
+                                 rk_options_t(method=methods(m), rtol=1.0e-10_wp, atol=1.0e-10_wp, &
+                                              fixed_steps=merge(0, 20, mode == 1)), stats(direction), error, &
+                                 h_next=h_next(direction))
+               call check(ctx, .not. allocated(error), trim(label)//": integration succeeds")
+            end do
+            write (*, '(4x,a,a,es10.3,a,i0,a,i0)') trim(label), ": y' = t y^2, error at t = 3 ", &
+               abs(y(1, 1) - exact), ", steps ", stats(1)%n_steps, ", rejected ", stats(1)%n_rejected
+            call check(ctx, t(1) == t_span .and. t(2) == -t_span, trim(label)//": both reach t_end")
+            call check(ctx, y(1, 2) == y(1, 1), trim(label)//": backward = forward mirrored, bit for bit")
+            call check(ctx, stats(2)%n_steps == stats(1)%n_steps .and. stats(2)%n_rejected == stats(1)%n_rejected &
+               .and. stats(2)%n_evaluations == stats(1)%n_evaluations, trim(label)//": the same work")
+            call check(ctx, h_next(1) > 0.0_wp .and. h_next(2) == -h_next(1), trim(label)//": h_next mirrored")
+            call check(ctx, y(1, 1), exact, abs=bounds(m, mode), message=trim(label)//": closed form")
+         end do
+      end do
+   end subroutine backward_mirror
+
+   !> The observer with PD8(7) and VERN98, adaptive and fixed-step: each accepted step comes
+   !> with its pair, the cubic Hermite interpolant (dense_order 3, coefficients 4–7 zero),
+   !> contiguous intervals; stopping after 3 steps ends the integration there, no error, the
+   !> state at the stop on the closed form (cos t, −sin t) and the work of exactly 3 steps.
+   !> VERN98's Hermite interpolant converges at order 4 at the step midpoints.
+   subroutine new_pairs_observer(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer, parameter :: methods(2) = [rk_pd87, rk_vern98], per_step(2) = [13, 16], per_fixed(2) = [13, 15]
+      type(hermite_watch_t) :: watch
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      real(wp) :: t, y(2)
+      integer :: m, mode
+      character(len=40) :: label
+      do m = 1, size(methods)
+         do mode = 1, 2
+            write (label, '(a,a)') rk_method_name(methods(m)), merge(" adaptive", " fixed   ", mode == 1)
+            watch = hermite_watch_t(method=methods(m))
+            t = 0.0_wp
+            y = [1.0_wp, 0.0_wp]
+            call rk_integrate(watch, t, 10.0_wp, y, rk_options_t(method=methods(m), rtol=1.0e-10_wp, &
+                              atol=1.0e-10_wp, h_initial=0.1_wp, fixed_steps=merge(0, 40, mode == 1)), stats, error)
+            call check(ctx, .not. allocated(error), trim(label)//": stopping is not an error")
+            call check(ctx, watch%consistent, trim(label)//": pair, Hermite interpolant, contiguous steps")
+            call check(ctx, watch%seen == 4 .and. stats%n_steps == 3, trim(label)//": stopped after 3 steps")
+            call check(ctx, t == watch%t_previous .and. t > 0.0_wp .and. t < 10.0_wp, trim(label)//": t at the stop")
+            call check(ctx, y(1), cos(t), abs=1.0e-9_wp, message=trim(label)//": x at the stop")
+            call check(ctx, y(2), -sin(t), abs=1.0e-9_wp, message=trim(label)//": x' at the stop")
+            if (mode == 1) then
+               call check(ctx, stats%n_evaluations == 1 + per_step(m)*3 + (per_step(m) - 1)*stats%n_rejected, &
+                  trim(label)//": evaluations of 3 steps")
+            else
+               call check(ctx, t == 3*(10.0_wp/40) .and. stats%n_evaluations == 1 + per_fixed(m)*3, &
+                  trim(label)//": 3 fixed steps and their evaluations")
+            end if
+         end do
+      end do
+      call check_order(ctx, hermite_midpoint_error(40), hermite_midpoint_error(80), 4.0_wp, &
+         "vern98 hermite midpoints")
+   contains
+      real(wp) function hermite_midpoint_error(n_steps) result(err)
+         integer, intent(in) :: n_steps
+         type(midpoint_oscillator_t) :: system
+         t = 0.0_wp
+         y = [1.0_wp, 0.0_wp]
+         call rk_integrate(system, t, 10.0_wp, y, rk_options_t(method=rk_vern98, fixed_steps=n_steps), error=error)
+         call check(ctx, .not. allocated(error), "vern98 integration succeeds")
+         err = system%worst
+      end function hermite_midpoint_error
+   end subroutine new_pairs_observer
+
+   !> A non-finite derivative at any evaluation of PD8(7) and VERN98 (adaptive and
+   !> fixed-step) is caught at that evaluation: the integration stops with err_integration
+   !> and a message naming where, no further evaluation, t and y at the last accepted point.
+   !> Every evaluation of the first step is tried (f(y0), each stage, f at the new point),
+   !> then one stage of the second step.
+   subroutine new_pairs_non_finite(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer, parameter :: methods(2) = [rk_pd87, rk_vern98]
+      ! evaluations of the first step, h_initial given: f(y0), the stages, f at the new
+      ! point (VERN98's fixed steps skip stage 16)
+      integer, parameter :: first_step(2, 2) = reshape([14, 17, 14, 16], [2, 2])
+      type(failing_at_t) :: system
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      real(wp) :: t, y(2)
+      integer :: m, mode, j, n_first
+      logical :: caught, where_named, state_kept
+      character(len=40) :: label, where
+      do m = 1, size(methods)
+         do mode = 1, 2
+            write (label, '(a,a)') rk_method_name(methods(m)), merge(" adaptive", " fixed   ", mode == 1)
+            n_first = first_step(m, mode)
+            caught = .true.
+            where_named = .true.
+            state_kept = .true.
+            do j = 1, n_first + 5
+               system = failing_at_t(fail_at=j)
+               t = 0.0_wp
+               y = [1.0_wp, 0.0_wp]
+               call rk_integrate(system, t, 1.0_wp, y, rk_options_t(method=methods(m), rtol=1.0e-10_wp, &
+                                 atol=1.0e-10_wp, h_initial=0.1_wp, fixed_steps=merge(0, 10, mode == 1)), stats, error)
+               if (j == 1) then
+                  where = "initial state"
+               else if (j == n_first) then
+                  where = "end of accepted step"
+               else
+                  where = merge("trial step", "fixed step", mode == 1)
+               end if
+               caught = caught .and. allocated(error) .and. system%calls == j .and. stats%n_evaluations == j
+               if (.not. allocated(error)) cycle
+               where_named = where_named .and. error%code == err_integration .and. &
+                  index(error%message, "non-finite") > 0 .and. index(error%message, trim(where)) > 0
+               if (j <= n_first) then
+                  state_kept = state_kept .and. t == 0.0_wp .and. all(y == [1.0_wp, 0.0_wp]) .and. stats%n_steps == 0
+               else
+                  state_kept = state_kept .and. t > 0.0_wp .and. stats%n_steps == 1 .and. &
+                     abs(y(1) - cos(t)) < 1.0e-9_wp
+               end if
+            end do
+            call check(ctx, caught, trim(label)//": caught at the failing evaluation, none after")
+            call check(ctx, where_named, trim(label)//": err_integration naming where")
+            call check(ctx, state_kept, trim(label)//": t and y at the last accepted point")
+         end do
+      end do
+   end subroutine new_pairs_non_finite
+
+   !> max_steps with PD8(7) and VERN98: the Arenstorf orbit at 1e-10 with 20 attempts
+   !> stops with err_integration after exactly 20 attempted steps, inside the interval,
+   !> at a finite state.
+   subroutine new_pairs_max_steps(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer, parameter :: methods(2) = [rk_pd87, rk_vern98]
+      type(three_body_t) :: body
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      real(wp) :: t, y(4)
+      integer :: m
+      do m = 1, size(methods)
+         t = 0.0_wp
+         y = arenstorf_start
+         call rk_integrate(body, t, arenstorf_period, y, rk_options_t(method=methods(m), rtol=1.0e-10_wp, &
+                           atol=1.0e-10_wp, max_steps=20), stats, error)
+         call check(ctx, allocated(error), rk_method_name(methods(m))//" max_steps: error")
+         if (allocated(error)) call check(ctx, error%code == err_integration .and. &
+            index(error%message, "max_steps") > 0, rk_method_name(methods(m))//" max_steps: code and message")
+         call check(ctx, stats%n_steps + stats%n_rejected == 20, rk_method_name(methods(m))//" max_steps: 20 attempts")
+         call check(ctx, all(ieee_is_finite(y)) .and. t > 0.0_wp .and. t < arenstorf_period, &
+            rk_method_name(methods(m))//" max_steps: state kept")
+      end do
+   end subroutine new_pairs_max_steps
 end module test_rk
