@@ -927,7 +927,8 @@ contains
    ! ----------------------------------------------------------------------------------
 
    !> One fixed step of PD8(7) equals one step of GSL's rk8pd (the same tableau, with the
-   !> stage sums in the same order) from the same state with the same h, on the pendulum,
+   !> stage sums in the same order; bit for bit without FMA contraction) from the same state
+   !> with the same h, on the pendulum,
    !> the Arenstorf problem and a time-dependent Hill pair (which sees the nodes c_i).
    !> hillstab's error norm equals the RMS of GSL's yerr: with rtol = 0 and atol just above
    !> it the first step is accepted, just below it rejected.
@@ -985,7 +986,10 @@ contains
          rms = sqrt(sum(y_err**2)/n)
          write (*, '(4x,a,a,es9.2,a,es8.1,a,es9.2)') label, ": |pd87 - gsl rk8pd| relative ", rel, &
             " (", ulps, " ulps), rms of GSL's yerr ", rms
-         call check(ctx, rel <= 1.0e-14_wp, label//": one step equals GSL's rk8pd")
+         ! bit for bit where a*b + c is not contracted into fused multiply-adds (the default
+         ! and debug builds: measured 0 ulps); with FMA contraction (the release build with
+         ! -march=native) the stage sums round differently: measured up to 8 ulps (Arenstorf)
+         call check(ctx, ulps <= 16.0_wp, label//": one step equals GSL's rk8pd (to FMA rounding)")
          ! the error estimate: accepted at atol = rms(yerr)·(1 + 1e-6), rejected at (1 − 1e-6).
          ! Measured: the decision flips within 1e-11 (pendulum), 1e-13 (Arenstorf) and 1e-9
          ! (Hill pair, whose yerr of 6e-8 is GSL's difference of two sums ~1: cancellation)
@@ -1240,14 +1244,15 @@ contains
 
    !> The nonlinear pendulum of Fig. 4 (e) (α = 7.88, β = 3.95, φ0 = 0.017) over 10 radial
    !> periods by rk_vern98 at rtol 1e-10 and 1e-12 (atol from pendulum_atol) against DOP853
-   !> at 1e-14; the state error scaled by ρ and ρω. Also: the evaluation count of a pair
+   !> at 1e-14; the state error scaled by ρ and ρω, within 50 rtol as for PD8(7) (measured
+   !> 1.1e-9 and 1.8e-11). Also: the evaluation count of a pair
    !> that is not FSAL (16 per accepted step, 15 per rejected one, 2 to start), and the
    !> refusal of dense output, which the pair does not have.
    subroutine vern98_pendulum(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(pendulum_system_t) :: system
       real(wp) :: y0(4), reference(4), y(4), t, t_end, errors(2), y_out(4, 1)
-      real(wp), parameter :: tolerances(2) = [1.0e-10_wp, 1.0e-12_wp], bounds(2) = [5.0e-9_wp, 1.0e-10_wp]
+      real(wp), parameter :: tolerances(2) = [1.0e-10_wp, 1.0e-12_wp], bounds(2) = [5.0e-9_wp, 5.0e-11_wp]
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
       type(rk_options_t) :: options
