@@ -97,7 +97,8 @@ module hillstab_rk
       real(wp) :: fac_min = 0.0_wp        !! smallest h_new/h; 0 → 0.2 (DOPRI5), 0.333 (others)
       real(wp) :: fac_max = 0.0_wp        !! largest h_new/h; 0 → 10 (DOPRI5), 6 (others)
       logical :: dense_output = .false.   !! build DOP853's 7th-order interpolant every step
-                                          !! (3 more evaluations); implied by `t_out`
+                                          !! (3 more evaluations); implied by `t_out`;
+                                          !! refused by rk_pd87 and rk_vern98
    end type rk_options_t
 
    !> One accepted step as handed to an observer: the interval [t_old, t], the state at
@@ -106,7 +107,7 @@ module hillstab_rk
    !> or 3 (DOP853 without, PD87, VERN98: the cubic Hermite interpolant from the end
    !> values and slopes).
    type :: rk_step_t
-      integer :: method = rk_dop853  !! the pair that made the step (rk_dopri5, rk_dop853, ...)
+      integer :: method = rk_dop853  !! the pair that made the step (rk_dopri5, rk_dop853, rk_pd87, rk_vern98)
       integer(int64) :: index = 0        !! number of this accepted step (0: the initial point)
       real(wp) :: t_old = 0.0_wp         !! start of the step
       real(wp) :: t = 0.0_wp             !! end of the step
@@ -845,7 +846,7 @@ contains
          real(wp) :: h_step, d1, d2
          integer :: i
          h_step = t_new - step%t
-         ! cubic Hermite part shared by both methods (Hairer's CONT(1..4))
+         ! cubic Hermite part shared by all four pairs (Hairer's CONT(1..4))
          !GCC$ novector
          do i = 1, n
             d1 = y_new(i) - step%y(i)
