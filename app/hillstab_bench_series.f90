@@ -114,7 +114,7 @@ program hillstab_bench_series
 
    ! reference: DOP853 at 1e-15; its distance to GSL rk8pd at 1e-15 says how good it is
    reference = y0
-   call run_dop(rk_dop853, 1.0e-15_wp, reference, stats)
+   call run_dop(system, rk_dop853, 1.0e-15_wp, reference, stats)
    check_state = y0
    call pendulum_gsl(system%pendulum, check_state, t_end, 1.0e-15_wp, stats, error)
    if (allocated(error)) error stop "bench_series: GSL reference failed"
@@ -222,7 +222,10 @@ program hillstab_bench_series
 
 contains
 
-   subroutine run_dop(method, tolerance, y, work)
+   !> One run of hillstab's integrator `method` at `tolerance` from t = 0 to t_end: the
+   !> benchmark's pendulum, or one that watches its steps (`watched_drift`).
+   subroutine run_dop(integrated, method, tolerance, y, work)
+      class(pendulum_system_t), intent(inout) :: integrated
       integer, intent(in) :: method
       real(wp), intent(in) :: tolerance
       real(wp), intent(inout) :: y(4)
@@ -230,10 +233,10 @@ contains
       type(rk_options_t) :: options
       real(wp) :: t
       options = rk_options_t(method=method, rtol=tolerance, atol=tolerance, max_steps=huge(1))
-      options%atol_components = pendulum_atol(system%pendulum, y, tolerance)
+      options%atol_components = pendulum_atol(integrated%pendulum, y, tolerance)
       t = 0.0_wp
-      call rk_integrate(system, t, t_end, y, options, work, error)
-      if (allocated(error)) error stop "bench_series: DOP integration failed"
+      call rk_integrate(integrated, t, t_end, y, options, work, error)
+      if (allocated(error)) error stop "bench_series: hillstab integration failed"
    end subroutine run_dop
 
    !> max(|Δx|, |Δz|)/ρ and max(|Δx'|, |Δz'|)/(ρω) against the reference, the larger.
@@ -265,7 +268,7 @@ contains
                call pendulum_gsl(system%pendulum, y, t_end, tolerance, work, error)
                if (allocated(error)) error stop "bench_series: GSL failed"
             else
-               call run_dop(hillstab_methods(method), tolerance, y, work)
+               call run_dop(system, hillstab_methods(method), tolerance, y, work)
             end if
             call system_clock(t1)
             table_time(j, method, measure) = min(table_time(j, method, measure), real(t1 - t0, wp)/rate)
@@ -288,9 +291,8 @@ contains
       integer, intent(in) :: method
       real(wp), intent(in) :: tolerance
       type(watched_pendulum_t) :: watched
-      type(rk_options_t) :: options
       type(work_stats_t) :: work
-      real(wp) :: y(4), t
+      real(wp) :: y(4)
       y = y0
       if (method == method_gsl) then
          call pendulum_gsl(system%pendulum, y, t_end, tolerance, work, error, energy_drift=drift)
@@ -300,12 +302,7 @@ contains
       watched%pendulum = system%pendulum
       watched%energy0 = pendulum_energy(system%pendulum, y0)
       watched%energy_scale = pendulum_energy_scale(system%pendulum, y0)
-      options = rk_options_t(method=hillstab_methods(method), rtol=tolerance, atol=tolerance, &
-                             max_steps=huge(1))
-      options%atol_components = pendulum_atol(system%pendulum, y, tolerance)
-      t = 0.0_wp
-      call rk_integrate(watched, t, t_end, y, options, work, error)
-      if (allocated(error)) error stop "bench_series: DOP integration failed"
+      call run_dop(watched, hillstab_methods(method), tolerance, y, work)
       drift = watched%drift
    end function watched_drift
 
