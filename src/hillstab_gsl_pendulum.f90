@@ -73,7 +73,8 @@ contains
       state = y
       t = 0.0_c_double
       if (present(energy_drift)) then
-         ! driver_apply's loop (no step limit, no h_max, h_min = 0 here), watched per step
+         ! driver_apply's loop, watched per step; of its checks, h_max (none here) and h_min
+         ! (0 here) cannot act, but its step limit (10^8 steps) is not applied
          call c_f_pointer(driver, view)
          energy0 = pendulum_energy(p, y)
          energy_scale = pendulum_energy_scale(p, y)
