@@ -27,6 +27,9 @@ module hillstab_gsl_pendulum
 
    integer(c_int), parameter :: gsl_success = 0
    integer(c_int), parameter :: gsl_ebadfunc = 9
+   integer(c_int), parameter :: gsl_emaxiter = 11
+   !> Steps allowed per integration (GSL's driver limit, applied by the watched loop too)
+   integer(c_long), parameter :: step_limit = 100000000_c_long
 
    !> What the right-hand side needs.
    type :: context_t
@@ -51,6 +54,7 @@ contains
       type(context_t), target :: context
       type(gsl_odeiv2_driver_view), pointer :: view
       real(wp) :: energy0, energy_scale
+      integer(c_long) :: steps
       type(gsl_odeiv2_system), target :: system
       type(c_ptr) :: driver
       real(c_double) :: state(4), t
@@ -65,7 +69,7 @@ contains
       context%pendulum = p
       system = gsl_odeiv2_system(c_funloc(gsl_rhs), c_null_funptr, 4_c_size_t, c_loc(context))
       driver = gsl_rk8pd_scaled_driver(system, 1.0e-3_wp*p%period, rtol, pendulum_atol(p, y, rtol)/rtol, &
-                                       100000000_c_long)
+                                       step_limit)
       if (.not. c_associated(driver)) then
          call set_error(error, err_integration, "pendulum_gsl: GSL could not allocate the odeiv2 driver")
          return
@@ -73,17 +77,21 @@ contains
       state = y
       t = 0.0_c_double
       if (present(energy_drift)) then
-         ! driver_apply's loop, watched per step; of its checks, h_max (none here) and h_min
-         ! (0 here) cannot act, but its step limit (10^8 steps) is not applied
+         ! driver_apply's loop, watched per step, with its step limit (its other checks, h_max
+         ! (none here) and h_min (0 here), cannot act)
          call c_f_pointer(driver, view)
          energy0 = pendulum_energy(p, y)
          energy_scale = pendulum_energy_scale(p, y)
          energy_drift = 0.0_wp
          status = gsl_success
+         steps = 0
          do while (t < t_end .and. status == gsl_success)
             status = gsl_odeiv2_evolve_apply(view%evolve, view%control, view%step, view%sys, t, &
                                              real(t_end, c_double), view%h, state)
+            if (status /= gsl_success) exit
             energy_drift = max(energy_drift, abs(pendulum_energy(p, state) - energy0)/energy_scale)
+            steps = steps + 1
+            if (steps == step_limit) status = gsl_emaxiter
          end do
       else
          status = gsl_odeiv2_driver_apply(driver, t, real(t_end, c_double), state)
