@@ -1,26 +1,3 @@
-!> The pendulum watched along its integration: the largest |E − E(0)|/E_scale at the
-!> ends of the accepted steps (the benchmark's energy-drift measure).
-module bench_series_watch
-   use hillstab_kinds, only: wp
-   use hillstab_rk, only: rk_step_t
-   use hillstab_pendulum, only: pendulum_system_t, pendulum_energy
-   implicit none
-   private
-   public :: watched_pendulum_t
-   type, extends(pendulum_system_t) :: watched_pendulum_t
-      real(wp) :: energy0 = 0.0_wp, energy_scale = 1.0_wp, drift = 0.0_wp
-   contains
-      procedure :: observe => watch_energy
-   end type watched_pendulum_t
-contains
-   subroutine watch_energy(self, step, stop)
-      class(watched_pendulum_t), intent(inout) :: self
-      type(rk_step_t), intent(in) :: step
-      logical, intent(inout) :: stop
-      self%drift = max(self%drift, abs(pendulum_energy(self%pendulum, step%y) - self%energy0)/self%energy_scale)
-   end subroutine watch_energy
-end module bench_series_watch
-
 !> Speed against error for the nonlinear pendulum of the paper's Fig. 4 (e) (α = 7.88,
 !> β = 3.95, φ0 = 0.017, r0 = 0.1 m, g = 9.81 m/s²) by hillstab's DOPRI5, DOP853, PD87
 !> (the Prince–Dormand 8(7) pair of GSL's rk8pd, in hillstab's integrator) and VERN98
@@ -54,7 +31,7 @@ program hillstab_bench_series
    use hillstab_pendulum, only: pendulum_t, pendulum_system_t, pendulum_from_chart, pendulum_initial_state, &
       pendulum_atol, pendulum_energy, pendulum_energy_scale
    use hillstab_gsl_pendulum, only: pendulum_gsl
-   use bench_series_watch, only: watched_pendulum_t
+   use hillstab_pendulum_analysis, only: pendulum_watch_t
    implicit none
 
    integer :: n_periods = 10          !! the state run
@@ -290,7 +267,7 @@ contains
    real(wp) function watched_drift(method, tolerance) result(drift)
       integer, intent(in) :: method
       real(wp), intent(in) :: tolerance
-      type(watched_pendulum_t) :: watched
+      type(pendulum_watch_t) :: watched  ! its observer keeps the largest |E − E(0)| at the step ends
       type(work_stats_t) :: work
       real(wp) :: y(4)
       y = y0
@@ -300,10 +277,8 @@ contains
          return
       end if
       watched%pendulum = system%pendulum
-      watched%energy0 = pendulum_energy(system%pendulum, y0)
-      watched%energy_scale = pendulum_energy_scale(system%pendulum, y0)
       call run_dop(watched, hillstab_methods(method), tolerance, y, work)
-      drift = watched%drift
+      drift = watched%max_energy_error/watched%energy_scale
    end function watched_drift
 
    !> Time the GSL run alone at a tolerance looser than the table's (fastest of at least
