@@ -608,8 +608,8 @@ contains
       integer, intent(in) :: method  !! a method constant
       select case (method)
       case (rk_dopri5); limit = 0.2_wp/1.75_wp
-      case (rk_vern98); limit = (1.0_wp/9.0_wp)/1.2_wp
-      case default; limit = 0.125_wp/1.2_wp
+      case (rk_dop853, rk_pd87, rk_vern98); limit = (1.0_wp/rk_method_order(method))/1.2_wp
+      case default; limit = 0.0_wp
       end select
    end function rk_beta_limit
 
@@ -910,7 +910,7 @@ contains
                call complete_step(t + i*h)
             end if
             if (allocated(error)) return
-            if (stop) return
+            if (stop) exit
          end do
          if (present(h_next)) h_next = h
       end subroutine integrate_fixed
@@ -928,12 +928,9 @@ contains
             control%beta = merge(options%beta, 0.0_wp, options%beta >= 0.0_wp)
             control%fac_min = merge(options%fac_min, 0.333_wp, options%fac_min > 0.0_wp)
             control%fac_max = merge(options%fac_max, 6.0_wp, options%fac_max > 0.0_wp)
-            if (options%method == rk_vern98) then
-               ! the error estimate is of order 8 (local error ~ h^9): h ∝ err^(-1/9)
-               control%exponent = 1.0_wp/9.0_wp - 0.2_wp*control%beta
-            else
-               control%exponent = 0.125_wp - 0.2_wp*control%beta
-            end if
+            ! the error estimate is of order p − 1 (local error ~ h^p, p the propagating order:
+            ! 8, or 9 for VERN98): h ∝ err^(-1/p)
+            control%exponent = 1.0_wp/order - 0.2_wp*control%beta
          end if
          control%h_max = merge(options%h_max, span, options%h_max > 0.0_wp)
          control%fac_old = 1.0e-4_wp

@@ -1340,7 +1340,7 @@ contains
       type(hermite_watch_t) :: watch
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
-      real(wp) :: t, y(2)
+      real(wp) :: t, y(2), h_next
       integer :: m, mode
       character(len=40) :: label
       do m = 1, size(methods)
@@ -1350,13 +1350,16 @@ contains
             t = 0.0_wp
             y = [1.0_wp, 0.0_wp]
             call rk_integrate(watch, t, 10.0_wp, y, rk_options_t(method=methods(m), rtol=1.0e-10_wp, &
-                              atol=1.0e-10_wp, h_initial=0.1_wp, fixed_steps=merge(0, 40, mode == 1)), stats, error)
+                              atol=1.0e-10_wp, h_initial=0.1_wp, fixed_steps=merge(0, 40, mode == 1)), stats, error, &
+                              h_next=h_next)
             call check(ctx, .not. allocated(error), trim(label)//": stopping is not an error")
             call check(ctx, watch%consistent, trim(label)//": pair, Hermite interpolant, contiguous steps")
             call check(ctx, watch%seen == 4 .and. stats%n_steps == 3, trim(label)//": stopped after 3 steps")
             call check(ctx, t == watch%t_previous .and. t > 0.0_wp .and. t < 10.0_wp, trim(label)//": t at the stop")
             call check(ctx, y(1), cos(t), abs=1.0e-9_wp, message=trim(label)//": x at the stop")
             call check(ctx, y(2), -sin(t), abs=1.0e-9_wp, message=trim(label)//": x' at the stop")
+            ! a stopped run can be resumed: h_next is the next step (the fixed step, in fixed mode)
+            call check(ctx, merge(h_next > 0.0_wp, h_next == 10.0_wp/40, mode == 1), trim(label)//": h_next at the stop")
             if (mode == 1) then
                call check(ctx, stats%n_evaluations == 1 + per_step(m)*3 + (per_step(m) - 1)*stats%n_rejected, &
                   trim(label)//": evaluations of 3 steps")
