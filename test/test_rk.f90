@@ -563,32 +563,35 @@ contains
       end do
    end subroutine dense_output
 
+   !> Largest error (|Δx| + |Δx'|) of the observer's interpolant at the step midpoints of
+   !> `n_steps` fixed steps of the oscillator over [0, 10] (with or without dense output).
+   real(wp) function midpoint_error(ctx, method, dense, n_steps) result(err)
+      type(test_context_t), intent(inout) :: ctx
+      integer, intent(in) :: method, n_steps
+      logical, intent(in) :: dense
+      real(wp) :: t, y(2)
+      type(error_t), allocatable :: error
+      type(midpoint_oscillator_t) :: system
+      t = 0.0_wp
+      y = [1.0_wp, 0.0_wp]
+      call rk_integrate(system, t, 10.0_wp, y, rk_options_t(method=method, fixed_steps=n_steps, &
+                        dense_output=dense), error=error)
+      call check(ctx, .not. allocated(error), rk_method_name(method)//" midpoint run succeeds")
+      err = system%worst
+   end function midpoint_error
+
    !> Order of the continuous extensions: error at step midpoints in fixed-step mode,
    !> through the observer's interpolant (7 for DOP853 with dense output, 3 for its
    !> Hermite fallback, 4 for DOPRI5; the midpoint error converges at the interpolant
    !> order + 1 or at the method order, whichever is lower).
    subroutine dense_order(ctx)
       type(test_context_t), intent(inout) :: ctx
-      call check_order(ctx, midpoint_error(rk_dop853, .true., 10), midpoint_error(rk_dop853, .true., 20), 8.0_wp, &
-         "dop853 dense midpoints")
-      call check_order(ctx, midpoint_error(rk_dop853, .false., 40), midpoint_error(rk_dop853, .false., 80), &
+      call check_order(ctx, midpoint_error(ctx, rk_dop853, .true., 10), midpoint_error(ctx, rk_dop853, .true., 20), &
+         8.0_wp, "dop853 dense midpoints")
+      call check_order(ctx, midpoint_error(ctx, rk_dop853, .false., 40), midpoint_error(ctx, rk_dop853, .false., 80), &
          4.0_wp, "dop853 hermite midpoints")
-      call check_order(ctx, midpoint_error(rk_dopri5, .true., 40), midpoint_error(rk_dopri5, .true., 80), 5.0_wp, &
-         "dopri5 dense midpoints")
-   contains
-      real(wp) function midpoint_error(method, dense, n_steps) result(err)
-         integer, intent(in) :: method, n_steps
-         logical, intent(in) :: dense
-         real(wp) :: t, y(2)
-         type(error_t), allocatable :: error
-         type(midpoint_oscillator_t) :: system
-         t = 0.0_wp
-         y = [1.0_wp, 0.0_wp]
-         call rk_integrate(system, t, 10.0_wp, y, rk_options_t(method=method, fixed_steps=n_steps, &
-                           dense_output=dense), error=error)
-         call check(ctx, .not. allocated(error), "integration succeeds")
-         err = system%worst
-      end function midpoint_error
+      call check_order(ctx, midpoint_error(ctx, rk_dopri5, .true., 40), midpoint_error(ctx, rk_dopri5, .true., 80), &
+         5.0_wp, "dopri5 dense midpoints")
    end subroutine dense_order
 
    !> Backward integration returns to the start; the observer sees every step and
@@ -1101,17 +1104,8 @@ contains
       end do
       call check(ctx, rk_method_name(rk_pd87) == "pd87", "name")
       call check(ctx, rk_method_order(rk_pd87) == 8, "order")
-      call check_order(ctx, hermite_midpoint_error(40), hermite_midpoint_error(80), 4.0_wp, "pd87 hermite midpoints")
-   contains
-      real(wp) function hermite_midpoint_error(n_steps) result(err)
-         integer, intent(in) :: n_steps
-         type(midpoint_oscillator_t) :: system
-         t = 0.0_wp
-         y = [1.0_wp, 0.0_wp]
-         call rk_integrate(system, t, 10.0_wp, y, rk_options_t(method=rk_pd87, fixed_steps=n_steps), error=error)
-         call check(ctx, .not. allocated(error), "integration succeeds")
-         err = system%worst
-      end function hermite_midpoint_error
+      call check_order(ctx, midpoint_error(ctx, rk_pd87, .false., 40), midpoint_error(ctx, rk_pd87, .false., 80), &
+         4.0_wp, "pd87 hermite midpoints")
    end subroutine pd87_refusals
 
    !> Evaluation counts: 13 per accepted step (12 stages after k1, then f at the new point),
@@ -1359,7 +1353,8 @@ contains
             call check(ctx, y(1), cos(t), abs=1.0e-9_wp, message=trim(label)//": x at the stop")
             call check(ctx, y(2), -sin(t), abs=1.0e-9_wp, message=trim(label)//": x' at the stop")
             ! a stopped run can be resumed: h_next is the next step (the fixed step, in fixed mode)
-            call check(ctx, merge(h_next > 0.0_wp, h_next == 10.0_wp/40, mode == 1), trim(label)//": h_next at the stop")
+            call check(ctx, merge(h_next > 0.0_wp, h_next == 10.0_wp/40, mode == 1), &
+               trim(label)//": h_next at the stop")
             if (mode == 1) then
                call check(ctx, stats%n_evaluations == 1 + per_step(m)*3 + (per_step(m) - 1)*stats%n_rejected, &
                   trim(label)//": evaluations of 3 steps")
@@ -1369,18 +1364,8 @@ contains
             end if
          end do
       end do
-      call check_order(ctx, hermite_midpoint_error(40), hermite_midpoint_error(80), 4.0_wp, &
-         "vern98 hermite midpoints")
-   contains
-      real(wp) function hermite_midpoint_error(n_steps) result(err)
-         integer, intent(in) :: n_steps
-         type(midpoint_oscillator_t) :: system
-         t = 0.0_wp
-         y = [1.0_wp, 0.0_wp]
-         call rk_integrate(system, t, 10.0_wp, y, rk_options_t(method=rk_vern98, fixed_steps=n_steps), error=error)
-         call check(ctx, .not. allocated(error), "vern98 integration succeeds")
-         err = system%worst
-      end function hermite_midpoint_error
+      call check_order(ctx, midpoint_error(ctx, rk_vern98, .false., 40), midpoint_error(ctx, rk_vern98, .false., 80), &
+         4.0_wp, "vern98 hermite midpoints")
    end subroutine new_pairs_observer
 
    !> A non-finite derivative at any evaluation of PD8(7) and VERN98 (adaptive and
