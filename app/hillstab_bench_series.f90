@@ -224,6 +224,19 @@ contains
       end associate
    end function scaled_error
 
+   !> The error of a run ending in y: the scaled state error (measure 1) or the energy
+   !> error at the end, |E(y) − E(y0)|/E_scale (measure 2).
+   real(wp) function run_error(measure, y) result(e)
+      integer, intent(in) :: measure
+      real(wp), intent(in) :: y(4)
+      if (measure == 1) then
+         e = scaled_error(y)
+      else
+         e = abs(pendulum_energy(system%pendulum, y) - pendulum_energy(system%pendulum, y0)) &
+             /pendulum_energy_scale(system%pendulum, y0)
+      end if
+   end function run_error
+
    !> Time the five integrators at one tolerance, interleaved (one run of each per round,
    !> so all see the same load), and keep each one's fastest run: the time of a run that
    !> other processes did not interrupt. At least 5 rounds, then until 1.5 s or 300 rounds.
@@ -250,12 +263,7 @@ contains
             call system_clock(t1)
             table_time(j, method, measure) = min(table_time(j, method, measure), real(t1 - t0, wp)/rate)
             table_evals(j, method, measure) = work%n_evaluations
-            if (measure == 1) then
-               table_err(j, method, measure) = scaled_error(y)
-            else
-               table_err(j, method, measure) = abs(pendulum_energy(system%pendulum, y) &
-                  - pendulum_energy(system%pendulum, y0))/pendulum_energy_scale(system%pendulum, y0)
-            end if
+            table_err(j, method, measure) = run_error(measure, y)
          end do
          rounds = rounds + 1
          if (quick .and. rounds >= 2) exit
@@ -301,12 +309,7 @@ contains
          call system_clock(t1)
          gsl_time(j, measure) = min(gsl_time(j, measure), real(t1 - t0, wp)/rate)
          gsl_evals(j, measure) = real(work%n_evaluations, wp)
-         if (measure == 1) then
-            gsl_err(j, measure) = scaled_error(y)
-         else
-            gsl_err(j, measure) = abs(pendulum_energy(system%pendulum, y) - pendulum_energy(system%pendulum, y0)) &
-                                  /pendulum_energy_scale(system%pendulum, y0)
-         end if
+         gsl_err(j, measure) = run_error(measure, y)
          rounds = rounds + 1
          if (quick .and. rounds >= 2) exit
          if (rounds >= 5 .and. (real(t1 - start, wp)/rate > 1.5_wp .or. rounds >= 300)) exit
