@@ -57,6 +57,8 @@ module hillstab_gsl
    public :: gsl_odeiv2_system, gsl_odeiv2_driver_alloc_scaled_new, gsl_odeiv2_driver_set_nmax, &
       gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_set_error_handler_off, gsl_rk8pd_scaled_driver, &
       gsl_odeiv2_driver_view, gsl_odeiv2_evolve_apply
+   ! the status codes the drivers of hillstab_gsl_pendulum and hillstab_gsl_lyapunov read and set
+   public :: gsl_success, gsl_ebadfunc, gsl_emaxiter
 
    !> Curves of the even Mathieu functions ce_n: a_n(q), n ≥ 0.
    integer, parameter :: mathieu_kind_a = 1
@@ -84,14 +86,18 @@ module hillstab_gsl
    !> chunk before it is renormalized.
    real(wp), parameter :: chunk_log_growth = 200.0_wp
 
+   !> Status GSL_SUCCESS.
    integer(c_int), parameter :: gsl_success = 0
    !> Status GSL_FAILURE, returned when the step control cannot meet its epsilon even at the smallest step
    !> (rounding noise in the step's error estimate exceeds it).
    integer(c_int), parameter :: gsl_failure = -1
    !> `monodromy_gsl`: at most this many values of S per point.
    integer, parameter :: max_ladder_runs = 8
+   !> Status GSL_EBADFUNC: the right-hand side returned a non-finite value (set by the
+   !> right-hand sides here, read by GSL as a failed evaluation).
    integer(c_int), parameter :: gsl_ebadfunc = 9
-   !> Status GSL_EMAXITER: more than `max_steps` steps in one stretch.
+   !> Status GSL_EMAXITER: more steps than the driver's limit (here: more than `max_steps`
+   !> steps in one stretch).
    integer(c_int), parameter :: gsl_emaxiter = 11
 
    !> gsl_sf_result: value and GSL's error estimate.
@@ -108,8 +114,8 @@ module hillstab_gsl
       type(c_ptr) :: params  !! context handed to the right-hand side
    end type gsl_odeiv2_system
 
-   !> The public layout of struct gsl_odeiv2_driver_struct (gsl_odeiv2.h), read for
-   !> its evolve object only.
+   !> The public layout of struct gsl_odeiv2_driver_struct (gsl_odeiv2.h): its stepper,
+   !> control and evolve objects and its step, for loops that run GSL's evolve themselves.
    type, bind(C) :: gsl_odeiv2_driver_view
       type(c_ptr) :: sys      !! the gsl_odeiv2_system
       type(c_ptr) :: step     !! the stepper

@@ -19,16 +19,13 @@ module hillstab_gsl_lyapunov
    use hillstab_kinds, only: wp, int64
    use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
    use hillstab_gsl, only: gsl_odeiv2_system, gsl_rk8pd_scaled_driver, gsl_odeiv2_driver_apply, &
-      gsl_odeiv2_driver_free
+      gsl_odeiv2_driver_free, gsl_success, gsl_ebadfunc
    use hillstab_pendulum, only: pendulum_t, pendulum_rhs, pendulum_jacobian, pendulum_atol, pendulum_angle, &
       pendulum_energy, pendulum_energy_scale
    use hillstab_lyapunov, only: lyapunov_t, tangent_norm
    implicit none
    private
    public :: lyapunov_largest_gsl
-
-   integer(c_int), parameter :: gsl_success = 0
-   integer(c_int), parameter :: gsl_ebadfunc = 9
 
    !> What the right-hand side needs: the pendulum and a counter of its calls.
    type :: context_t

@@ -19,15 +19,13 @@ module hillstab_gsl_pendulum
    use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
    use hillstab_stats, only: work_stats_t
    use hillstab_gsl, only: gsl_odeiv2_system, gsl_rk8pd_scaled_driver, gsl_odeiv2_driver_apply, &
-      gsl_odeiv2_driver_free, gsl_odeiv2_driver_view, gsl_odeiv2_evolve_apply
+      gsl_odeiv2_driver_free, gsl_odeiv2_driver_view, gsl_odeiv2_evolve_apply, gsl_success, gsl_ebadfunc, &
+      gsl_emaxiter
    use hillstab_pendulum, only: pendulum_t, pendulum_rhs, pendulum_atol, pendulum_energy, pendulum_energy_scale
    implicit none
    private
    public :: pendulum_gsl
 
-   integer(c_int), parameter :: gsl_success = 0
-   integer(c_int), parameter :: gsl_ebadfunc = 9
-   integer(c_int), parameter :: gsl_emaxiter = 11
    !> Steps allowed per integration (GSL's driver limit, applied by the watched loop too)
    integer(c_long), parameter :: step_limit = 100000000_c_long
 
