@@ -1074,7 +1074,7 @@ contains
       subroutine complete_step(t_new)
          real(wp), intent(in) :: t_new
          real(wp) :: hh
-         integer :: i
+         integer :: i, j_new
          hh = t_new - step%t
          if (options%method == rk_dopri5) then
             ! Shampine's 4th-order interpolant: the Hermite part plus h·Σ d_i k_i
@@ -1085,34 +1085,26 @@ contains
             end do
             call accept(t_new, 7)
             step%dense_order = 4
-         else if (options%method == rk_pd87) then
-            call evaluate(t_new, views%y_new%v, views%f(14)%v)
-            if (.not. finite) then
-               call fail_non_finite(t_new, "end of accepted step")
-               return
-            end if
-            call accept(t_new, 14)
-         else if (options%method == rk_vern98) then
-            call evaluate(t_new, views%y_new%v, views%f(17)%v)
-            if (.not. finite) then
-               call fail_non_finite(t_new, "end of accepted step")
-               return
-            end if
-            call accept(t_new, 17)
          else
-            call evaluate(t_new, views%y_new%v, views%f(13)%v)
+            ! f at the new point, in the column after the stages (DOP853 13, PD87 14, VERN98 17)
+            select case (options%method)
+            case (rk_pd87); j_new = 14
+            case (rk_vern98); j_new = 17
+            case default; j_new = 13
+            end select
+            call evaluate(t_new, views%y_new%v, views%f(j_new)%v)
             if (.not. finite) then
                call fail_non_finite(t_new, "end of accepted step")
                return
             end if
-            if (want_dense) then
+            if (want_dense) then  ! DOP853 only: the others refuse dense output
                call dop853_dense(hh)
                if (.not. finite) then
                   call fail_non_finite(step%t, "dense output stage")
                   return
                end if
             end if
-            call accept(t_new, 13)
+            call accept(t_new, j_new)
             if (want_dense) step%dense_order = 7
          end if
          if (present(t_out)) call fill_outputs()
