@@ -705,8 +705,10 @@ contains
                            beta=beta), stats, error)
          if (accepted) then
             call check(ctx, .not. allocated(error), trim(label)//": accepted")
-            ! the oscillator's closed form (cos t, −sin t) at t = 10, within 100·tol
-            call check(ctx, y(1), cos(10.0_wp), abs=1.0e-7_wp, message=trim(label)//": x(10)")
+            ! the oscillator's closed form (cos t, −sin t) at t = 10 within 10·tol (measured
+            ! 1.1e-13, 2.0e-14, 4.3e-13 for dop853, vern98, dopri5: so close to the limit the
+            ! controller settles at errors far below 1 and over-resolves)
+            call check(ctx, y(1), cos(10.0_wp), abs=1.0e-8_wp, message=trim(label)//": x(10)")
          else
             call check(ctx, allocated(error), trim(label)//": refused")
             if (allocated(error)) call check(ctx, error%code == err_invalid_parameter .and. &
