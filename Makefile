@@ -5,6 +5,8 @@
 #   make test-debug     tests again with runtime checks and floating-point traps
 #   make fuzz           300 mutated scenes on the normal and the trap build (scripts/fuzz.py)
 #   make check-memory   valgrind memcheck on small scenes of every task
+#   make check-scenes   every scene of data/scenes against the stored checksums of its data lines
+#                       (scripts/check_scenes.sh; --update after a change that means to alter them)
 #   make bench-output   size and run time of a 1000 x 1000 chart per output layout (out/bench_output.dat)
 #   make bench          speed-against-error benchmarks (out/bench_*.dat, out/bench*.png), the
 #                       transition-curve benchmark (out/bench_boundaries.dat) and the pendulum
@@ -40,7 +42,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug setup bench bench-output area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov fuzz check-memory
+.PHONY: run test test-debug setup bench bench-output area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov fuzz check-memory check-scenes
 
 setup:
 	@bash scripts/setup.sh
@@ -71,6 +73,9 @@ fuzz: setup
 check-memory: setup
 	$(FPM) build >/dev/null
 	bash scripts/check_memory.sh "$$($(FPM) run --runner echo hillstab 2>/dev/null | tail -1)"
+
+check-scenes: setup
+	bash scripts/check_scenes.sh
 
 bench-output: setup
 	bash scripts/bench_output.sh
