@@ -97,7 +97,8 @@ lib: setup
 	@rm -rf $(LEGACY_DIR)/obj $(LEGACY_DIR)/mod; mkdir -p $(LEGACY_DIR)/obj $(LEGACY_DIR)/mod
 	@sources=$$(bash scripts/fortran_order.sh) || exit 1; for f in $$sources; do \
 	   echo "  FC $$f"; \
-	   $(FC) $(LIB_FLAGS) -J $(LEGACY_DIR)/mod -c $$f -o $(LEGACY_DIR)/obj/$$(basename $$f .f90).o || exit 1; \
+	   obj=$$(echo "$${f#src/}" | sed 's|/|_|g; s|\.f90$$|.o|'); \
+	   $(FC) $(LIB_FLAGS) -J $(LEGACY_DIR)/mod -c $$f -o $(LEGACY_DIR)/obj/$$obj || exit 1; \
 	done
 	@rm -f $(LEGACY_DIR)/libhillstab.a $(LEGACY_DIR)/libhillstab.so*
 	ar rcs $(LEGACY_DIR)/libhillstab.a $(LEGACY_DIR)/obj/*.o

@@ -11,7 +11,7 @@ sources under src/ and reports, with file and line:
     procedure) without a `!>` line before its declaration or `!!` on it;
   - a component or type-bound procedure of a public derived type without one.
 A public generic interface makes its specific procedures public. Exit status 1 when
-anything is missing. Usage: scripts/doc_check.py [FILE.f90...] (default: src/*.f90).
+anything is missing. Usage: scripts/doc_check.py [FILE.f90...] (default: every .f90 file under src/).
 """
 import glob
 import re
@@ -269,7 +269,7 @@ class Checker:
 
 
 def main(argv):
-    files = argv[1:] or sorted(glob.glob("src/*.f90"))
+    files = argv[1:] or sorted(glob.glob("src/**/*.f90", recursive=True))
     checker = Checker()
     for path in files:
         checker.check_file(path)
