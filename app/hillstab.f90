@@ -9,13 +9,13 @@
 !> points failed (status 2 in their rows), 128 + N after signal N (SIGINT, SIGTERM,
 !> SIGHUP), the unfinished output file removed.
 program hillstab_cli
-   use hillstab_kinds, only: version_string
-   use hillstab_error, only: error_t, err_points_failed
-   use hillstab_status, only: exit_points_failed
-   use hillstab_tasks, only: run_scene_file
-   use hillstab_batch, only: exit_status
-   use hillstab_signals, only: install_signal_cleanup
-   use hillstab_templates, only: template_task_names, scene_template
+   use hillstab_core_kinds, only: version_string
+   use hillstab_core_error, only: error_t, err_points_failed
+   use hillstab_core_status, only: exit_points_failed
+   use hillstab_batch_tasks, only: run_scene_file
+   use hillstab_batch_units, only: exit_status
+   use hillstab_batch_signals, only: install_signal_cleanup
+   use hillstab_batch_templates, only: template_task_names, scene_template
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use, intrinsic :: ieee_arithmetic, only: ieee_set_flag, ieee_all
    implicit none

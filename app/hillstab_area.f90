@@ -16,14 +16,14 @@
 !>
 !> Writes out/area_table.dat, out/area_length.dat, out/area_map.dat, out/area_small_alpha.dat.
 program hillstab_area
-   use hillstab_kinds, only: wp, pi2
-   use hillstab_error, only: error_t
-   use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, sampling_endpoint, sampling_midpoint
-   use hillstab_transfer, only: trace_t
-   use hillstab_monodromy, only: method_t, method_auto, method_formula, method_segments, monodromy_trace, &
+   use hillstab_core_kinds, only: wp, pi2
+   use hillstab_core_error, only: error_t
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu, sampling_endpoint, sampling_midpoint
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_integrate_monodromy, only: method_t, method_auto, method_formula, method_segments, monodromy_trace, &
       monodromy_trace_batch
-   use hillstab_hill_method, only: hill_boundary_t, hill_boundaries
-   use hillstab_boundaries, only: approximate_root_t, approximate_boundaries, unstable_intervals_from_roots, &
+   use hillstab_curves_hill_method, only: hill_boundary_t, hill_boundaries
+   use hillstab_curves_boundaries, only: approximate_root_t, approximate_boundaries, unstable_intervals_from_roots, &
       symmetric_difference_length
    implicit none
    integer, parameter :: n_methods = 9

@@ -12,13 +12,13 @@
 !>    boundaries by bisection on S with method auto (S sampled every 0.1 in β as a
 !>    chart row, each sign change of S ∓ 2 bisected to 1e-9).
 program hillstab_bench_boundaries
-   use hillstab_kinds, only: wp, int64, pi2
-   use hillstab_error, only: error_t
-   use hillstab_coefficient, only: hill_model_t, model_elastic
-   use hillstab_transfer, only: trace_t
-   use hillstab_monodromy, only: method_t, method_auto, monodromy_trace, monodromy_trace_batch
-   use hillstab_hill_method
-   use hillstab_boundaries, only: boundary_check_t, verify_boundary
+   use hillstab_core_kinds, only: wp, int64, pi2
+   use hillstab_core_error, only: error_t
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_integrate_monodromy, only: method_t, method_auto, monodromy_trace, monodromy_trace_batch
+   use hillstab_curves_hill_method
+   use hillstab_curves_boundaries, only: boundary_check_t, verify_boundary
    implicit none
    real(wp), parameter :: tolerance = 1.0e-11_wp
    integer :: unit

@@ -16,15 +16,15 @@
 !> Prints a table on stdout; writes out/bench_lyapunov.dat (per point: α β, both
 !> exponents, both times, both f-evaluation counts) for the cost map.
 program hillstab_bench_lyapunov
-   use hillstab_kinds, only: wp, int64
-   use hillstab_error, only: error_t
-   use hillstab_rk, only: rk_options_t, rk_integrate, rk_dop853
-   use hillstab_stats, only: work_stats_t
-   use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_system_t, &
+   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_error, only: error_t
+   use hillstab_integrate_rk, only: rk_options_t, rk_integrate, rk_dop853
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_system_t, &
       pendulum_atol
-   use hillstab_lyapunov, only: lyapunov_t, lyapunov_largest
-   use hillstab_gsl_lyapunov, only: lyapunov_largest_gsl
-   use hillstab_format, only: put_es
+   use hillstab_pendulum_lyapunov, only: lyapunov_t, lyapunov_largest
+   use hillstab_pendulum_gsl_lyapunov, only: lyapunov_largest_gsl
+   use hillstab_core_text, only: put_es
    implicit none
    integer, parameter :: n_grid = 100, periods = 300
    real(wp), parameter :: alpha_min = 0.05_wp, alpha_max = 9.8_wp, beta_min = 0.1_wp, beta_max = 9.75_wp

@@ -24,13 +24,13 @@
 !> them as ratios.
 program hillstab_bench_series
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
-   use hillstab_kinds, only: wp
-   use hillstab_error, only: error_t
-   use hillstab_stats, only: work_stats_t
-   use hillstab_rk, only: rk_options_t, rk_integrate, rk_dop853, rk_dopri5, rk_pd87, rk_vern98
-   use hillstab_pendulum, only: pendulum_t, pendulum_system_t, pendulum_from_chart, pendulum_initial_state, &
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_integrate_rk, only: rk_options_t, rk_integrate, rk_dop853, rk_dopri5, rk_pd87, rk_vern98
+   use hillstab_pendulum_equations, only: pendulum_t, pendulum_system_t, pendulum_from_chart, pendulum_initial_state, &
       pendulum_atol, pendulum_energy, pendulum_energy_scale
-   use hillstab_gsl_pendulum, only: pendulum_gsl
+   use hillstab_pendulum_gsl, only: pendulum_gsl
    use hillstab_pendulum_analysis, only: pendulum_watch_t
    implicit none
 

@@ -1,22 +1,22 @@
 !> `mpirun -np N hillstab_mpi [--quiet] SCENE.nml...`: hillstab spread over MPI ranks.
 !>
 !> The points of chart, points and lyapunov scenes are computed on all ranks with dynamic
-!> load balancing: rank 0 hands out units (hillstab_batch: a chart row, a run of points) on
+!> load balancing: rank 0 hands out units (hillstab_batch_units: a chart row, a run of points) on
 !> demand, keeps two units queued at every other rank so that no rank waits for the
 !> next, computes units itself between requests, and writes the results in order into
 !> the same file as a single-process `hillstab` run (identical data lines), through the
-!> atomic writers of hillstab_output: the file appears whole or not at all. Other tasks
+!> atomic writers of hillstab_batch_output: the file appears whole or not at all. Other tasks
 !> run on rank 0. Options, messages and exit statuses are those of `hillstab`; every rank
 !> exits with the status of the run (0 success, 2 bad input, 3 written with failed
 !> points, 1 a computation failed).
 program hillstab_mpi
    use mpi_f08
-   use hillstab_kinds, only: wp, version_string
-   use hillstab_error, only: error_t, set_error, err_input, err_points_failed
-   use hillstab_scene, only: scene_t, read_scene
-   use hillstab_tasks, only: run_scene, output_path
-   use hillstab_status, only: exit_points_failed
-   use hillstab_batch, only: batch_t, batch_result_t, batch_distributable, batch_plan, batch_compute, &
+   use hillstab_core_kinds, only: wp, version_string
+   use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
+   use hillstab_batch_scene, only: scene_t, read_scene
+   use hillstab_batch_tasks, only: run_scene, output_path
+   use hillstab_core_status, only: exit_points_failed
+   use hillstab_batch_units, only: batch_t, batch_result_t, batch_distributable, batch_plan, batch_compute, &
       batch_open, batch_write, batch_commit, batch_discard, exit_status
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use, intrinsic :: ieee_arithmetic, only: ieee_set_flag, ieee_all

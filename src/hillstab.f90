@@ -9,32 +9,32 @@
 !> print *, f%trace%value, f%stable
 !>```
 module hillstab
-   use hillstab_kinds
-   use hillstab_error
-   use hillstab_status
-   use hillstab_stats
-   use hillstab_coefficient
-   use hillstab_units
-   use hillstab_transfer
-   use hillstab_formulas
-   use hillstab_floquet
-   use hillstab_magnus
-   use hillstab_auto
-   use hillstab_monodromy
-   use hillstab_gsl
-   use hillstab_hill_method
-   use hillstab_rk
-   use hillstab_monodromy_rk
-   use hillstab_refine
-   use hillstab_pendulum
+   use hillstab_core_kinds
+   use hillstab_core_error
+   use hillstab_core_status
+   use hillstab_core_stats
+   use hillstab_hill_coefficient
+   use hillstab_hill_units
+   use hillstab_hill_transfer
+   use hillstab_hill_formulas
+   use hillstab_hill_floquet
+   use hillstab_integrate_magnus
+   use hillstab_integrate_auto
+   use hillstab_integrate_monodromy
+   use hillstab_integrate_gsl
+   use hillstab_curves_hill_method
+   use hillstab_integrate_rk
+   use hillstab_integrate_monodromy_rk
+   use hillstab_integrate_refine
+   use hillstab_pendulum_equations
    use hillstab_pendulum_analysis
-   use hillstab_lyapunov
-   use hillstab_gsl_lyapunov
-   use hillstab_poincare
-   use hillstab_scene
-   use hillstab_output
-   use hillstab_tasks
-   use hillstab_task_series
+   use hillstab_pendulum_lyapunov
+   use hillstab_pendulum_gsl_lyapunov
+   use hillstab_pendulum_poincare
+   use hillstab_batch_scene
+   use hillstab_batch_output
+   use hillstab_batch_tasks
+   use hillstab_batch_task_series
    implicit none
    public
 end module hillstab

@@ -10,9 +10,9 @@
 !> call lift_file_size_limit()
 !>```
 module hillstab_fault_injection
-   use hillstab_kinds, only: int64
-   use hillstab_error, only: error_t, err_io
-   use hillstab_tasks, only: run_scene_file
+   use hillstab_core_kinds, only: int64
+   use hillstab_core_error, only: error_t, err_io
+   use hillstab_batch_tasks, only: run_scene_file
    use hillstab_testing, only: test_context_t, check
    use test_scene, only: write_file, c_getpid
    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_funptr, c_intptr_t, c_null_funptr

@@ -1,8 +1,8 @@
 !> Test helpers shared by the task suites: run a scene given as lines, and run a
 !> result file again as a scene and compare what it writes.
 module hillstab_test_files
-   use hillstab_error, only: error_t
-   use hillstab_tasks, only: run_scene_file
+   use hillstab_core_error, only: error_t
+   use hillstab_batch_tasks, only: run_scene_file
    use hillstab_testing, only: test_context_t, check
    use test_scene, only: scratch_prefix, write_file, read_lines, delete_file
    implicit none

@@ -1,8 +1,8 @@
 !> The test suites' pendulum: given chart parameters, r0 = 0.1 m and g = 9.81 m/s².
 module hillstab_test_pendulum
-   use hillstab_kinds, only: wp
-   use hillstab_error, only: error_t
-   use hillstab_pendulum, only: pendulum_t, pendulum_from_chart
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t
+   use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart
    implicit none
    private
    public :: pendulum_at

@@ -5,7 +5,7 @@
 !> A test is a subroutine taking a `test_context_t`; every failed check is
 !> recorded with its message and the test fails if any check failed.
 module hillstab_testing
-   use hillstab_kinds, only: wp
+   use hillstab_core_kinds, only: wp
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private

@@ -1,19 +1,19 @@
-!> Tests of method auto (hillstab_auto) against independent references: GSL rk8pd
+!> Tests of method auto (hillstab_integrate_auto) against independent references: GSL rk8pd
 !> at a tight tolerance over a coarse chart and at the hard points near α → π², the
 !> batch path against the point path, error and work against the tolerance, the
 !> α = 0 closed form, damping, the Mathieu transition curves (S = ±2), overflow at a
 !> huge negative Q, bad input, and the sixth order of the fixed-N Magnus mesh.
 module test_auto
-   use hillstab_kinds, only: wp, pi2
-   use hillstab_error, only: error_t, err_invalid_parameter, err_accuracy
-   use hillstab_stats, only: work_stats_t
-   use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu
-   use hillstab_transfer, only: trace_t
-   use hillstab_auto, only: trace_auto, trace_auto_batch, auto_plan_t, auto_prepare, fixed_n_trace
-   use hillstab_monodromy, only: method_t, method_auto, monodromy_trace, monodromy_trace_batch, &
+   use hillstab_core_kinds, only: wp, pi2
+   use hillstab_core_error, only: error_t, err_invalid_parameter, err_accuracy
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_integrate_auto, only: trace_auto, trace_auto_batch, auto_plan_t, auto_prepare, fixed_n_trace
+   use hillstab_integrate_monodromy, only: method_t, method_auto, monodromy_trace, monodromy_trace_batch, &
       batch_plan_t, prepare_batch
-   use hillstab_gsl, only: trace_gsl, mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b
-   use hillstab_monodromy_rk, only: trace_rk
+   use hillstab_integrate_gsl, only: trace_gsl, mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b
+   use hillstab_integrate_monodromy_rk, only: trace_rk
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
    implicit none
@@ -502,7 +502,7 @@ contains
    !> trace_auto are reported (or ignored by the plan), not turned into a floating-point
    !> trap: with -ffpe-trap=invalid (the debug build) an ordered comparison with NaN
    !> aborts, so the checks must test ieee_is_nan/ieee_is_finite first (as
-   !> check_model and hillstab_gsl do). Last in the suite: where it fails, it aborts.
+   !> check_model and hillstab_integrate_gsl do). Last in the suite: where it fails, it aborts.
    subroutine nan_inputs_no_trap(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(trace_t) :: tr, traces(3)

@@ -4,11 +4,11 @@
 !> reverse order and written in order; the units cover every point once; a failing
 !> point is written with its status and reported with the serial message; exit statuses.
 module test_batch
-   use hillstab_kinds, only: wp, int64
-   use hillstab_error, only: error_t, err_input, err_io, err_integration, err_invalid_parameter, err_points_failed
-   use hillstab_scene, only: scene_t, read_scene
-   use hillstab_tasks, only: run_scene, output_path
-   use hillstab_batch, only: batch_t, batch_result_t, batch_plan, batch_unit_range, batch_compute, batch_open, &
+   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_error, only: error_t, err_input, err_io, err_integration, err_invalid_parameter, err_points_failed
+   use hillstab_batch_scene, only: scene_t, read_scene
+   use hillstab_batch_tasks, only: run_scene, output_path
+   use hillstab_batch_units, only: batch_t, batch_result_t, batch_plan, batch_unit_range, batch_compute, batch_open, &
       batch_write, batch_commit, batch_discard, run_batch, exit_status
    use hillstab_testing
    use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text

@@ -1,15 +1,15 @@
-!> Tests of hillstab_boundaries: the check by auto accepts true boundaries and rejects
+!> Tests of hillstab_curves_boundaries: the check by auto accepts true boundaries and rejects
 !> a boundary moved by 1e-6; approximate curves of N-piece midpoint segmentation
 !> converge to Hill's at second order; the unstable intervals of eq. (37) at α = 0
 !> are empty (S = 2 cos 2√β); interval arithmetic against hand-made sets; the GSL
 !> witness agrees with Hill's method and refuses high orders and large q.
 module test_boundaries
-   use hillstab_kinds, only: wp, pi2
-   use hillstab_error, only: error_t
-   use hillstab_coefficient, only: model_elastic, model_mathieu, sampling_midpoint
-   use hillstab_monodromy, only: method_t, method_formula, method_segments
-   use hillstab_hill_method, only: hill_boundary_t, hill_boundaries
-   use hillstab_boundaries
+   use hillstab_core_kinds, only: wp, pi2
+   use hillstab_core_error, only: error_t
+   use hillstab_hill_coefficient, only: model_elastic, model_mathieu, sampling_midpoint
+   use hillstab_integrate_monodromy, only: method_t, method_formula, method_segments
+   use hillstab_curves_hill_method, only: hill_boundary_t, hill_boundaries
+   use hillstab_curves_boundaries
    use hillstab_testing
    implicit none
    private

@@ -1,16 +1,16 @@
 !> Tests of the C and legacy entry points against the modern API.
 module test_capi
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_null_char
-   use hillstab_kinds, only: wp, pi2
-   use hillstab_coefficient, only: hill_model_t, model_elastic, sampling_average
-   use hillstab_transfer, only: trace_t
-   use hillstab_monodromy, only: trace_segmented, method_segments, method_formula
-   use hillstab_formulas, only: trace_two_segment_paper, trace_damped_paper
-   use hillstab_capi
-   use hillstab_error, only: error_t, err_invalid_parameter, err_accuracy
-   use hillstab_coefficient, only: check_model
-   use hillstab_monodromy, only: method_auto
-   use hillstab_legacy, only: hstrace, hsfloq, hserrm
+   use hillstab_core_kinds, only: wp, pi2
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, sampling_average
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_integrate_monodromy, only: trace_segmented, method_segments, method_formula
+   use hillstab_hill_formulas, only: trace_two_segment_paper, trace_damped_paper
+   use hillstab_interop_capi
+   use hillstab_core_error, only: error_t, err_invalid_parameter, err_accuracy
+   use hillstab_hill_coefficient, only: check_model
+   use hillstab_integrate_monodromy, only: method_auto
+   use hillstab_interop_legacy, only: hstrace, hsfloq, hserrm
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
    !$ use omp_lib, only: omp_get_thread_num, omp_get_num_threads
    use hillstab_testing

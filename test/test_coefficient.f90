@@ -1,10 +1,10 @@
 !> Tests of the Hill coefficient: the two forms of eq. (25), eq. (28), the
 !> closed-form segment averages (against quadrature) and parameter validation.
 module test_coefficient
-   use hillstab_kinds, only: wp, pi, pi2
+   use hillstab_core_kinds, only: wp, pi, pi2
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-   use hillstab_error, only: error_t
-   use hillstab_coefficient
+   use hillstab_core_error, only: error_t
+   use hillstab_hill_coefficient
    use hillstab_testing
    implicit none
    private

@@ -1,9 +1,9 @@
 !> Tests of the Floquet layer: Vieta relations of the multipliers, exponents,
 !> overflowed traces, and the damped stability criterion |S₁| < 2 cosh ε.
 module test_floquet
-   use hillstab_kinds, only: wp, pi
-   use hillstab_transfer, only: trace_t
-   use hillstab_floquet
+   use hillstab_core_kinds, only: wp, pi
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_floquet
    use hillstab_testing
    implicit none
    private

@@ -1,10 +1,10 @@
-!> Tests of hillstab_format (format_es, put_es) against Fortran's own formatted I/O:
+!> Tests of hillstab_core_text (format_es, put_es) against Fortran's own formatted I/O:
 !> numbers read back by a list-directed read, exact text for powers of ten and for
 !> roundings that carry into the exponent, the layout (width, digits, exponent),
 !> agreement with the `es` edit descriptor, and non-finite values.
 module test_format
-   use hillstab_kinds, only: wp, int64
-   use hillstab_format, only: format_es, es_width, put_es, put_integer
+   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_text, only: format_es, es_width, put_es, put_integer
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, ieee_negative_inf
    implicit none

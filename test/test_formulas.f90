@@ -2,11 +2,11 @@
 !> agreement with the 2-piece matrix product (eq. (28)) on a grid with negative
 !> radicands, the damped eqs. (48)–(50) and the Mathieu eq. (A3).
 module test_formulas
-   use hillstab_kinds, only: wp, pi, pi2
-   use hillstab_coefficient
-   use hillstab_transfer, only: trace_t
-   use hillstab_formulas
-   use hillstab_monodromy, only: trace_segmented
+   use hillstab_core_kinds, only: wp, pi, pi2
+   use hillstab_hill_coefficient
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_formulas
+   use hillstab_integrate_monodromy, only: trace_segmented
    use hillstab_testing
    use test_reference, only: value_of
    implicit none

@@ -5,13 +5,13 @@
 !> segmentation, the error-versus-tolerance contract, bad input, and
 !> thread safety under OpenMP.
 module test_gsl
-   use hillstab_kinds, only: wp, pi2
-   use hillstab_error, only: error_t, err_invalid_parameter
-   use hillstab_stats, only: work_stats_t
-   use hillstab_coefficient
-   use hillstab_transfer, only: trace_t, scaled_matrix_t, matrix_of
-   use hillstab_monodromy, only: trace_segmented, method_t, method_gsl, monodromy_trace
-   use hillstab_gsl
+   use hillstab_core_kinds, only: wp, pi2
+   use hillstab_core_error, only: error_t, err_invalid_parameter
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_hill_coefficient
+   use hillstab_hill_transfer, only: trace_t, scaled_matrix_t, matrix_of
+   use hillstab_integrate_monodromy, only: trace_segmented, method_t, method_gsl, monodromy_trace
+   use hillstab_integrate_gsl
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_quiet_nan
    implicit none

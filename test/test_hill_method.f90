@@ -4,13 +4,13 @@
 !> β = π²/4 inside the first tongue, monotone (Ritz) convergence in the truncation,
 !> agreement of the three formulations, and bad input.
 module test_hill_method
-   use hillstab_kinds, only: wp, pi, pi2
-   use hillstab_error, only: error_t, err_invalid_parameter
-   use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu
-   use hillstab_transfer, only: trace_t
-   use hillstab_monodromy, only: method_t, method_auto, monodromy_trace
-   use hillstab_gsl, only: mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b
-   use hillstab_hill_method
+   use hillstab_core_kinds, only: wp, pi, pi2
+   use hillstab_core_error, only: error_t, err_invalid_parameter
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_integrate_monodromy, only: method_t, method_auto, monodromy_trace
+   use hillstab_integrate_gsl, only: mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b
+   use hillstab_curves_hill_method
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    implicit none

@@ -1,4 +1,4 @@
-!> Tests of the largest Lyapunov exponent (hillstab_lyapunov) against independent
+!> Tests of the largest Lyapunov exponent (hillstab_pendulum_lyapunov) against independent
 !> references: while the swing is tiny (φ0 = 1e-12) the tangent vector grows per radial
 !> period by the chart's largest Floquet multiplier λ_max, computed by the core (method
 !> auto on the Hill equation); on the paper's regular cases (c) and (d) the estimate
@@ -7,16 +7,16 @@
 !> integrator (DOP853 against DOPRI5) or the tolerance beyond its error indication;
 !> bad arguments are refused.
 module test_lyapunov
-   use hillstab_kinds, only: wp
-   use hillstab_error, only: error_t, err_invalid_parameter
-   use hillstab_coefficient, only: hill_model_t, model_elastic
-   use hillstab_transfer, only: trace_t
-   use hillstab_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
-   use hillstab_monodromy, only: monodromy_trace, method_t, method_auto
-   use hillstab_rk, only: rk_dopri5
-   use hillstab_pendulum, only: pendulum_t, pendulum_initial_state
-   use hillstab_lyapunov
-   use hillstab_gsl_lyapunov, only: lyapunov_largest_gsl
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t, err_invalid_parameter
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
+   use hillstab_integrate_monodromy, only: monodromy_trace, method_t, method_auto
+   use hillstab_integrate_rk, only: rk_dopri5
+   use hillstab_pendulum_equations, only: pendulum_t, pendulum_initial_state
+   use hillstab_pendulum_lyapunov
+   use hillstab_pendulum_gsl_lyapunov, only: lyapunov_largest_gsl
    use hillstab_testing
    use hillstab_test_pendulum, only: pendulum_at
    implicit none

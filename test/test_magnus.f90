@@ -4,13 +4,13 @@
 !> half-period identity, det M = 1, and the adaptive tolerance over the (α, β) grid
 !> (including α → π²) against a fine uniform Magnus-6 with Richardson extrapolation.
 module test_magnus
-   use hillstab_kinds, only: wp, int64, pi2
-   use hillstab_error, only: error_t, err_integration, err_invalid_parameter, err_accuracy
-   use hillstab_stats, only: work_stats_t
-   use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu
-   use hillstab_transfer, only: scaled_matrix_t, trace_t, trace_of, determinant_of, monodromy_from_half_period
-   use hillstab_magnus
-   use hillstab_monodromy, only: monodromy_trace, method_t, method_magnus4, method_magnus6
+   use hillstab_core_kinds, only: wp, int64, pi2
+   use hillstab_core_error, only: error_t, err_integration, err_invalid_parameter, err_accuracy
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu
+   use hillstab_hill_transfer, only: scaled_matrix_t, trace_t, trace_of, determinant_of, monodromy_from_half_period
+   use hillstab_integrate_magnus
+   use hillstab_integrate_monodromy, only: monodromy_trace, method_t, method_magnus4, method_magnus6
    use test_reference, only: rk4_monodromy, value_of
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -122,7 +122,7 @@ contains
    end subroutine sixth_order_formulas_agree
 
    real(wp) function hill_coefficient_at(model, tau) result(q)
-      use hillstab_coefficient, only: hill_coefficient
+      use hillstab_hill_coefficient, only: hill_coefficient
       type(hill_model_t), intent(in) :: model
       real(wp), intent(in) :: tau
       q = hill_coefficient(model, tau)

@@ -6,12 +6,12 @@
 !> other points of the same kind (data/reference/hard_set.dat and check_set.dat, made by
 !> data/reference/make_reference.py: Taylor series at 50 digits in mpmath, no shared code).
 module test_monodromy
-   use hillstab_kinds, only: wp, pi2
-   use hillstab_error, only: error_t, err_accuracy
-   use hillstab_coefficient
-   use hillstab_transfer
-   use hillstab_floquet
-   use hillstab_monodromy
+   use hillstab_core_kinds, only: wp, pi2
+   use hillstab_core_error, only: error_t, err_accuracy
+   use hillstab_hill_coefficient
+   use hillstab_hill_transfer
+   use hillstab_hill_floquet
+   use hillstab_integrate_monodromy
    use test_reference, only: rk4_monodromy, value_of
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite

@@ -1,12 +1,12 @@
-!> Tests of the atomic output writer (hillstab_output): under a file-size limit every
+!> Tests of the atomic output writer (hillstab_batch_output): under a file-size limit every
 !> task's writer fails with the path and the cause and leaves the old file and no
 !> temporary file; a directory in the place of the output file is refused before any
 !> work; a committed file holds exactly what was written (every line compared).
 module test_output
-   use hillstab_kinds, only: int64
-   use hillstab_error, only: error_t, err_io
-   use hillstab_output, only: output_file_t, open_output, write_text, commit_output, discard_output
-   use hillstab_tasks, only: run_scene_file
+   use hillstab_core_kinds, only: int64
+   use hillstab_core_error, only: error_t, err_io
+   use hillstab_batch_output, only: output_file_t, open_output, write_text, commit_output, discard_output
+   use hillstab_batch_tasks, only: run_scene_file
    use hillstab_testing
    use hillstab_fault_injection, only: check_writer_under_limit, limit_file_size, lift_file_size_limit
    use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text

@@ -1,18 +1,18 @@
-!> Tests of the nonlinear pendulum model (hillstab_pendulum) against independent
+!> Tests of the nonlinear pendulum model (hillstab_pendulum_equations) against independent
 !> references: the defining relations of ρ, ω, a; the closed-form energy (C1); the exact
 !> bounce solution; energy conservation; monotone energy loss with damping; the Jacobian
 !> against central differences; and the swing block of the 4×4 variational monodromy
 !> along the bounce against the core's trace S (GSL rk8pd on the Hill equation).
 module test_pendulum
-   use hillstab_kinds, only: wp, pi, pi2
-   use hillstab_error, only: error_t
-   use hillstab_stats, only: work_stats_t
-   use hillstab_coefficient, only: hill_model_t, model_elastic
-   use hillstab_transfer, only: trace_t
-   use hillstab_monodromy, only: monodromy_trace, method_t, method_gsl
-   use hillstab_rk, only: rk_options_t, rk_integrate, rk_dop853, rk_step_t
-   use hillstab_pendulum
-   use hillstab_gsl_pendulum, only: pendulum_gsl
+   use hillstab_core_kinds, only: wp, pi, pi2
+   use hillstab_core_error, only: error_t
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_integrate_monodromy, only: monodromy_trace, method_t, method_gsl
+   use hillstab_integrate_rk, only: rk_options_t, rk_integrate, rk_dop853, rk_step_t
+   use hillstab_pendulum_equations
+   use hillstab_pendulum_gsl, only: pendulum_gsl
    use hillstab_testing
    use hillstab_test_pendulum, only: pendulum_at
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite

@@ -4,14 +4,14 @@
 !> run at a 1000× tighter tolerance, and their spacing against ln(φ ratio)/ln λ_max);
 !> and that φ0 = 0 never starts.
 module test_pendulum_analysis
-   use hillstab_kinds, only: wp, pi2
-   use hillstab_error, only: error_t
-   use hillstab_stats, only: work_stats_t
-   use hillstab_coefficient, only: hill_model_t, model_elastic
-   use hillstab_transfer, only: trace_t
-   use hillstab_floquet, only: floquet_from_trace, largest_multiplier_modulus
-   use hillstab_monodromy, only: monodromy_trace, method_t, method_gsl
-   use hillstab_pendulum
+   use hillstab_core_kinds, only: wp, pi2
+   use hillstab_core_error, only: error_t
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_floquet, only: floquet_from_trace, largest_multiplier_modulus
+   use hillstab_integrate_monodromy, only: monodromy_trace, method_t, method_gsl
+   use hillstab_pendulum_equations
    use hillstab_pendulum_analysis
    use hillstab_testing
    use hillstab_test_pendulum, only: pendulum_at

@@ -1,15 +1,15 @@
-!> Tests of the Poincaré section (hillstab_poincare): every recorded crossing is checked
+!> Tests of the Poincaré section (hillstab_pendulum_poincare): every recorded crossing is checked
 !> by a separate tight integration from the start straight to the crossing time (x
 !> vanishes there, r and r' agree); the crossings lie in the part of the (r, r') plane
 !> that the energy allows and cross with φ' > 0; crossings come once per swing; the
 !> state at a given energy has that energy and is the bounce start at φ0 = 0; the root
 !> refinement finds the zero of a step's interpolant to rounding.
 module test_poincare
-   use hillstab_kinds, only: wp, pi
-   use hillstab_error, only: error_t
-   use hillstab_rk, only: rk_options_t, rk_integrate, rk_step_t, rk_dop853
-   use hillstab_pendulum
-   use hillstab_poincare
+   use hillstab_core_kinds, only: wp, pi
+   use hillstab_core_error, only: error_t
+   use hillstab_integrate_rk, only: rk_options_t, rk_integrate, rk_step_t, rk_dop853
+   use hillstab_pendulum_equations
+   use hillstab_pendulum_poincare
    use hillstab_testing
    use hillstab_test_pendulum, only: pendulum_at
    implicit none
@@ -159,7 +159,7 @@ contains
    end subroutine refinement_to_rounding
 
    function rk_dense_value_of(step, t) result(y)
-      use hillstab_rk, only: rk_dense_value
+      use hillstab_integrate_rk, only: rk_dense_value
       type(rk_step_t), intent(in) :: step
       real(wp), intent(in) :: t
       real(wp) :: y(4)

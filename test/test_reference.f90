@@ -2,9 +2,9 @@
 !> classical fixed-step Runge–Kutta 4 on the 2×2 matrix equation. It shares no
 !> code with the library's transfer matrices, so it is an independent check.
 module test_reference
-   use hillstab_kinds, only: wp
-   use hillstab_coefficient, only: hill_model_t, hill_coefficient
-   use hillstab_transfer, only: trace_t
+   use hillstab_core_kinds, only: wp
+   use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient
+   use hillstab_hill_transfer, only: trace_t
    implicit none
    private
    public :: rk4_monodromy, value_of

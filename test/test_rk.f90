@@ -1,5 +1,5 @@
-!> Tests of the Runge–Kutta integrators (hillstab_rk) and of the half-period RK
-!> monodromy (hillstab_monodromy_rk), each against an independent reference:
+!> Tests of the Runge–Kutta integrators (hillstab_integrate_rk) and of the half-period RK
+!> monodromy (hillstab_integrate_monodromy_rk), each against an independent reference:
 !> closed-form solutions (harmonic oscillator, constant Hill coefficient, Meissner),
 !> Hairer's published DOPRI5 run on the Arenstorf orbit, a full-period integration,
 !> the converged segmented product, and the RK4 test reference; PD8(7) against single
@@ -9,18 +9,18 @@
 module test_rk
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_ptr, c_null_ptr, c_null_funptr, &
       c_loc, c_funloc, c_f_pointer, c_associated, c_funptr
-   use hillstab_kinds, only: wp, pi, pi2
-   use hillstab_error, only: error_t, err_integration, err_invalid_parameter
-   use hillstab_stats, only: work_stats_t
-   use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, hill_coefficient, &
+   use hillstab_core_kinds, only: wp, pi, pi2
+   use hillstab_core_error, only: error_t, err_integration, err_invalid_parameter
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu, hill_coefficient, &
       sampling_average
-   use hillstab_transfer, only: scaled_matrix_t, trace_t, matrix_of, determinant
-   use hillstab_monodromy, only: trace_segmented, monodromy_trace, method_t, method_rk
-   use hillstab_rk
-   use hillstab_monodromy_rk
+   use hillstab_hill_transfer, only: scaled_matrix_t, trace_t, matrix_of, determinant
+   use hillstab_integrate_monodromy, only: trace_segmented, monodromy_trace, method_t, method_rk
+   use hillstab_integrate_rk
+   use hillstab_integrate_monodromy_rk
    use test_reference, only: rk4_monodromy, value_of
-   use hillstab_gsl, only: gsl_odeiv2_system, gsl_odeiv2_step_rk8pd, gsl_set_error_handler_off
-   use hillstab_pendulum, only: pendulum_system_t, pendulum_initial_state, pendulum_atol
+   use hillstab_integrate_gsl, only: gsl_odeiv2_system, gsl_odeiv2_step_rk8pd, gsl_set_error_handler_off
+   use hillstab_pendulum_equations, only: pendulum_system_t, pendulum_initial_state, pendulum_atol
    use hillstab_test_pendulum, only: pendulum_at
    use hillstab_pendulum_analysis, only: pendulum_watch_t
    use hillstab_testing

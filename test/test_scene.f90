@@ -4,11 +4,11 @@
 !> Also exports the small file helpers and the bad-input table that the tasks
 !> suite reuses to check that no output file is created or touched.
 module test_scene
-   use hillstab_kinds, only: wp, pi2
-   use hillstab_error, only: error_t, err_input
-   use hillstab_coefficient, only: model_elastic, model_mathieu, sampling_endpoint, sampling_average
-   use hillstab_monodromy, only: method_auto, method_segments
-   use hillstab_scene
+   use hillstab_core_kinds, only: wp, pi2
+   use hillstab_core_error, only: error_t, err_input
+   use hillstab_hill_coefficient, only: model_elastic, model_mathieu, sampling_endpoint, sampling_average
+   use hillstab_integrate_monodromy, only: method_auto, method_segments
+   use hillstab_batch_scene
    use hillstab_testing
    use, intrinsic :: iso_c_binding, only: c_int
    implicit none

@@ -5,13 +5,13 @@
 !> or of the exact β = 0 and π²), repeating a run from its output, the approximate
 !> curves of eq. (37) (S_formula = ±2 at every root), and the Mathieu model's GSL column.
 module test_task_boundaries
-   use hillstab_kinds, only: wp, pi, pi2
-   use hillstab_error, only: error_t, err_input
-   use hillstab_coefficient, only: hill_model_t, model_elastic
-   use hillstab_transfer, only: trace_t
-   use hillstab_monodromy, only: method_t, method_auto, monodromy_trace
-   use hillstab_formulas, only: trace_two_segment_paper
-   use hillstab_tasks, only: run_scene_file
+   use hillstab_core_kinds, only: wp, pi, pi2
+   use hillstab_core_error, only: error_t, err_input
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_integrate_monodromy, only: method_t, method_auto, monodromy_trace
+   use hillstab_hill_formulas, only: trace_two_segment_paper
+   use hillstab_batch_tasks, only: run_scene_file
    use hillstab_testing
    use hillstab_test_files, only: run_text_scene
    use test_scene, only: scratch_prefix, write_file, read_lines, delete_file

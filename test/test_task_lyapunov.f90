@@ -1,17 +1,17 @@
-!> Tests of the lyapunov task (hillstab_task_lyapunov) through `run_scene_file`, reading
+!> Tests of the lyapunov task (hillstab_batch_task_lyapunov) through `run_scene_file`, reading
 !> the file back: layout (header with the effective scene, one `# columns:` line, α
 !> blocks), each value against the library called directly (lyapunov_largest) and the
 !> linear columns against the points task of the core at the same points; the same
 !> values over `&points`; repeating the run from its output; the distributed driver
-!> (hillstab_batch) writing the same file; bad input naming file, group and variable.
+!> (hillstab_batch_units) writing the same file; bad input naming file, group and variable.
 module test_task_lyapunov
-   use hillstab_kinds, only: wp, pi2
-   use hillstab_error, only: error_t, err_input
-   use hillstab_scene, only: scene_t, read_scene
-   use hillstab_tasks, only: run_scene_file, output_path
-   use hillstab_batch, only: run_batch
-   use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state
-   use hillstab_lyapunov, only: lyapunov_t, lyapunov_largest
+   use hillstab_core_kinds, only: wp, pi2
+   use hillstab_core_error, only: error_t, err_input
+   use hillstab_batch_scene, only: scene_t, read_scene
+   use hillstab_batch_tasks, only: run_scene_file, output_path
+   use hillstab_batch_units, only: run_batch
+   use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart, pendulum_initial_state
+   use hillstab_pendulum_lyapunov, only: lyapunov_t, lyapunov_largest
    use hillstab_testing
    use hillstab_test_files, only: run_text_scene
    use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text

@@ -1,13 +1,13 @@
-!> Tests of the poincare task (hillstab_task_poincare) through `run_scene_file`: one
+!> Tests of the poincare task (hillstab_batch_task_poincare) through `run_scene_file`: one
 !> block per orbit (gnuplot index), crossings in time order; with same_energy every
 !> crossing lies inside the region of the (r, r') plane that the common energy allows
 !> (an independent check from E = ½(x'² + r'²) + ½ω²(r − r0)² − g r at x = 0); the
 !> first orbit's crossings equal the library's section; bad input names the variable.
 module test_task_poincare
-   use hillstab_kinds, only: wp
-   use hillstab_error, only: error_t, err_input
-   use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_energy
-   use hillstab_poincare, only: section_t, poincare_section, pendulum_state_at_energy
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t, err_input
+   use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_energy
+   use hillstab_pendulum_poincare, only: section_t, poincare_section, pendulum_state_at_energy
    use hillstab_testing
    use hillstab_test_files, only: run_text_scene
    use test_scene, only: padded, scratch_prefix, read_lines, file_exists, delete_file, contains_text

@@ -4,9 +4,9 @@
 !> from its own output, bad input (exit-2 class errors naming file, group and variable,
 !> no file), the 1e8-line limit, and the hard cases (finite, documented behaviour).
 module test_task_series
-   use hillstab_kinds, only: wp, pi, pi2
-   use hillstab_error, only: error_t, err_input
-   use hillstab_pendulum, only: pendulum_t, pendulum_bounce
+   use hillstab_core_kinds, only: wp, pi, pi2
+   use hillstab_core_error, only: error_t, err_input
+   use hillstab_pendulum_equations, only: pendulum_t, pendulum_bounce
    use hillstab_testing
    use hillstab_test_pendulum, only: pendulum_at
    use hillstab_test_files, only: run_text_scene, check_rerun

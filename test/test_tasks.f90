@@ -5,9 +5,9 @@
 !> damped verdicts, overflow clamping, repeating a run from its output, and that
 !> bad input or an unwritable path leaves no file behind and touches none.
 module test_tasks
-   use hillstab_kinds, only: wp, pi, pi2
-   use hillstab_error, only: error_t, err_input, err_io, err_points_failed
-   use hillstab_tasks, only: run_scene_file
+   use hillstab_core_kinds, only: wp, pi, pi2
+   use hillstab_core_error, only: error_t, err_input, err_io, err_points_failed
+   use hillstab_batch_tasks, only: run_scene_file
    use hillstab_testing
    use hillstab_test_files, only: run_text_scene, check_rerun
    use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text, &

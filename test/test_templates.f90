@@ -2,9 +2,9 @@
 !> scene whose values are the defaults, names every variable of its task's effective
 !> scene, and every task the scene reader accepts has one.
 module test_templates
-   use hillstab_error, only: error_t, err_input
-   use hillstab_scene, only: scene_t, read_scene, default_scene, scene_namelist, task_name
-   use hillstab_templates, only: template_task_names, scene_template
+   use hillstab_core_error, only: error_t, err_input
+   use hillstab_batch_scene, only: scene_t, read_scene, default_scene, scene_namelist, task_name
+   use hillstab_batch_templates, only: template_task_names, scene_template
    use test_scene, only: scratch_prefix, write_file, delete_file
    use hillstab_testing
    implicit none
@@ -104,7 +104,7 @@ contains
                start = index(lines(line)(:at - 1), " ", back=.true.) + 1
                variable = lines(line)(start:at - 1)
                call check(ctx, index(text, " "//variable//" = ") > 0, trim(names(k))//": the template "// &
-                  "names '"//variable//"' (add it in src/hillstab_templates.f90)")
+                  "names '"//variable//"' (add it in src/hillstab/batch/templates.f90)")
                from = at + 3
             end do
          end do
@@ -175,7 +175,7 @@ contains
          if (allocated(error)) then
             if (index(error%message, "not available") > 0) cycle
          end if
-         call check(ctx, any(names == name), "task '"//name//"' has a template (add one in src/hillstab_templates.f90)")
+         call check(ctx, any(names == name), "task '"//name//"' has a template (add one in src/hillstab/batch/templates.f90)")
       end do
       call delete_file(path)
    end subroutine every_task_has_a_template

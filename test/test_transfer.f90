@@ -1,7 +1,7 @@
 !> Tests of the exact constant-coefficient transfer matrices and scaled products.
 module test_transfer
-   use hillstab_kinds, only: wp
-   use hillstab_transfer
+   use hillstab_core_kinds, only: wp
+   use hillstab_hill_transfer
    use hillstab_testing
    use test_reference, only: value_of
    implicit none

@@ -3,11 +3,11 @@
 !> rescaled to τ; round trips through both inverse routes; the special values r0 = 0
 !> (β = π²) and g = 0 (β = 0); and bad pendulums naming the bad component.
 module test_units
-   use hillstab_kinds, only: wp, pi, pi2
-   use hillstab_error, only: error_t
-   use hillstab_coefficient, only: hill_model_t, model_elastic, hill_coefficient
-   use hillstab_units
-   use hillstab_pendulum, only: pendulum_t, pendulum_from_chart
+   use hillstab_core_kinds, only: wp, pi, pi2
+   use hillstab_core_error, only: error_t
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, hill_coefficient
+   use hillstab_hill_units
+   use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
@@ -94,7 +94,7 @@ contains
       call check(ctx, allocated(error), "beta = 0 has no finite rho for g > 0")
    end subroutine round_trips
 
-   !> The r0, g route against hillstab_pendulum's own conversion (written separately).
+   !> The r0, g route against hillstab_pendulum_equations's own conversion (written separately).
    subroutine same_as_pendulum_module(ctx, alpha, beta, epsilon, r0, g)
       type(test_context_t), intent(inout) :: ctx
       real(wp), intent(in) :: alpha, beta, epsilon, r0, g

@@ -28,7 +28,7 @@ for f in "$libdir/libhillstab.a" "$libdir/libhillstab.so" "$prefix/include/hills
          "$libdir/cmake/hillstab/hillstab-config.cmake" "$prefix/bin/hillstab"; do
    [ -e "$f" ] || die "missing $f"
 done
-ls "$prefix"/include/hillstab/*/hillstab.mod "$prefix"/include/hillstab/*/hillstab_legacy.mod >/dev/null \
+ls "$prefix"/include/hillstab/*/hillstab.mod "$prefix"/include/hillstab/*/hillstab_interop_legacy.mod >/dev/null \
    || die "missing .mod files under $prefix/include/hillstab/"
 say "installed: static and shared library, .mod files, hillstab.h, hillstab.pc, CMake config, bin/hillstab"
 

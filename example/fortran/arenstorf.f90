@@ -4,8 +4,8 @@
 !> rtol = atol = 1e-7 with dense output, fcn = 1442, step = 240, accpt = 216, rejct = 22
 !> (its fcn counts 2 for the initial guess and 6 per attempted step).
 module arenstorf_system
-   use hillstab_kinds, only: wp
-   use hillstab_rk, only: rk_system_t
+   use hillstab_core_kinds, only: wp
+   use hillstab_integrate_rk, only: rk_system_t
    implicit none
    private
    public :: three_body_t
@@ -37,10 +37,10 @@ contains
 end module arenstorf_system
 
 program arenstorf
-   use hillstab_kinds, only: wp
-   use hillstab_error, only: error_t
-   use hillstab_stats, only: work_stats_t
-   use hillstab_rk, only: rk_options_t, rk_integrate, rk_dopri5, rk_dop853, rk_method_name
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_integrate_rk, only: rk_options_t, rk_integrate, rk_dopri5, rk_dop853, rk_method_name
    use arenstorf_system, only: three_body_t
    implicit none
    real(wp), parameter :: period = 17.0652165601579625588917206249_wp

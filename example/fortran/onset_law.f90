@@ -8,17 +8,17 @@
 !> gnuplot plots/onset.gp. The file is written atomically, with a `# columns:` line and
 !> a per-row status (0 ok, 2 failed: the integration did not complete).
 program onset_law
-   use hillstab_kinds, only: wp
-   use hillstab_error, only: error_t
-   use hillstab_status, only: status_ok, status_failed
-   use hillstab_stats, only: work_stats_t
-   use hillstab_coefficient, only: hill_model_t, model_elastic
-   use hillstab_transfer, only: trace_t
-   use hillstab_floquet, only: floquet_from_trace, largest_multiplier_modulus
-   use hillstab_monodromy, only: monodromy_trace, method_t, method_gsl
-   use hillstab_pendulum, only: pendulum_from_chart, pendulum_initial_state
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t
+   use hillstab_core_status, only: status_ok, status_failed
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_floquet, only: floquet_from_trace, largest_multiplier_modulus
+   use hillstab_integrate_monodromy, only: monodromy_trace, method_t, method_gsl
+   use hillstab_pendulum_equations, only: pendulum_from_chart, pendulum_initial_state
    use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat
-   use hillstab_output, only: output_file_t, open_output, write_header, write_text, commit_output, discard_output
+   use hillstab_batch_output, only: output_file_t, open_output, write_header, write_text, commit_output, discard_output
    implicit none
    character(len=*), parameter :: labels(3) = ["b", "e", "g"]
    real(wp), parameter :: cases(2, 3) = reshape([3.70_wp, 2.47_wp, 7.88_wp, 3.95_wp, 7.48_wp, 2.47_wp], [2, 3])

@@ -6,11 +6,11 @@
 !>```fortran
 !> call check_output_room(scene, output_path, error)
 !>```
-module hillstab_limits
-   use hillstab_kinds, only: wp, int64
-   use hillstab_error, only: error_t, set_error, err_input
-   use hillstab_scene, only: scene_t, task_chart, task_points, task_coefficient, task_lyapunov
-   use hillstab_format, only: integer_text
+module hillstab_batch_limits
+   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_error, only: error_t, set_error, err_input
+   use hillstab_batch_scene, only: scene_t, task_chart, task_points, task_coefficient, task_lyapunov
+   use hillstab_core_text, only: integer_text
    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_char, c_null_char
    implicit none
    private
@@ -125,4 +125,4 @@ contains
       write (buffer, '(f0.1)') x
       text = trim(buffer)//" "//trim(units(k))
    end function size_text
-end module hillstab_limits
+end module hillstab_batch_limits

@@ -8,7 +8,7 @@
 !> An existing file at `<path>` is never opened, so a failed run leaves it untouched.
 !> Writes go through C stdio so that every failure is seen with its errno (gfortran's
 !> buffered formatted writes can lose ENOSPC). While written, the temporary file is
-!> registered with hillstab_signals for removal on an interrupt.
+!> registered with hillstab_batch_signals for removal on an interrupt.
 !> This module formats numbers and moves files; it knows nothing of integrators.
 !>
 !>```fortran
@@ -19,12 +19,12 @@
 !> call write_text(file, "1.0 2.0 3.0", error)
 !> call commit_output(file, error)
 !>```
-module hillstab_output
-   use hillstab_kinds, only: wp, int64
-   use hillstab_error, only: error_t, set_error, err_io
-   use hillstab_floquet, only: floquet_t, largest_multiplier_modulus
-   use hillstab_format, only: put_es, integer_text, lower_case
-   use hillstab_signals, only: watch_temp_file, forget_temp_file
+module hillstab_batch_output
+   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_error, only: error_t, set_error, err_io
+   use hillstab_hill_floquet, only: floquet_t, largest_multiplier_modulus
+   use hillstab_core_text, only: put_es, integer_text, lower_case
+   use hillstab_batch_signals, only: watch_temp_file, forget_temp_file
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, c_associated, &
       c_size_t, c_f_pointer, c_loc
    implicit none
@@ -53,7 +53,7 @@ module hillstab_output
       character(len=:), allocatable :: temp_path     !! name while being written
       character(len=:), allocatable :: failure       !! first write failure (the file is then incomplete)
       integer(int64) :: bytes = 0                    !! bytes written so far
-      integer :: slot = 0                            !! hillstab_signals handle
+      integer :: slot = 0                            !! hillstab_batch_signals handle
       logical :: binary = .false.                    !! stream file: text header, then raw records
    end type output_file_t
 
@@ -483,7 +483,7 @@ contains
       real(wp), intent(in) :: alpha, beta  !! the grid point
       type(floquet_t), intent(in) :: f  !! Floquet data of the point
       logical, intent(in) :: physical   !! (α, β) inside the physical domain
-      integer, intent(in) :: status     !! per-point status code (hillstab_status)
+      integer, intent(in) :: status     !! per-point status code (hillstab_core_status)
       real(wp), intent(in), optional :: per_second  !! ω/π
       real(wp) :: v(n_chart_columns)
       real(wp) :: s, estimate
@@ -534,7 +534,7 @@ contains
       character(len=23), intent(in), optional :: alpha_text, beta_text
       character(len=chart_line_length) :: line
       integer :: k, pos
-      ! hand formatting (hillstab_format): Fortran's formatted write would cost more than
+      ! hand formatting (hillstab_core_text): Fortran's formatted write would cost more than
       ! computing the point with method auto
       pos = 0
       do k = 1, size(ids)
@@ -637,4 +637,4 @@ contains
       end do
       c(len(text) + 1) = c_null_char
    end function c_string
-end module hillstab_output
+end module hillstab_batch_output

@@ -14,16 +14,16 @@
 !> dimensionless ε and, for points and coefficient, of α and β). Group order in the file does not matter and other groups are
 !> ignored, so one file may hold several. Reading tolerates `#` lines before a group,
 !> which lets a run be repeated from the header of its own output file.
-module hillstab_scene
-   use hillstab_kinds, only: wp, int64, pi, pi2
-   use hillstab_error, only: error_t, set_error, err_input
-   use hillstab_coefficient, only: model_elastic, model_mathieu, model_name, sampling_endpoint, &
+module hillstab_batch_scene
+   use hillstab_core_kinds, only: wp, int64, pi, pi2
+   use hillstab_core_error, only: error_t, set_error, err_input
+   use hillstab_hill_coefficient, only: model_elastic, model_mathieu, model_name, sampling_endpoint, &
       sampling_average, sampling_name
-   use hillstab_monodromy, only: method_t, method_auto, method_name, method_from_name, method_magnus4, &
+   use hillstab_integrate_monodromy, only: method_t, method_auto, method_name, method_from_name, method_magnus4, &
       method_magnus6, method_rk, method_gsl
-   use hillstab_output, only: default_chart_columns, find_chart_columns, chart_columns_text, is_directory
-   use hillstab_format, only: integer_text, lower => lower_case
-   use hillstab_units, only: physical_t, physical_alpha, physical_beta, physical_epsilon, physical_nu, &
+   use hillstab_batch_output, only: default_chart_columns, find_chart_columns, chart_columns_text, is_directory
+   use hillstab_core_text, only: integer_text, lower => lower_case
+   use hillstab_hill_units, only: physical_t, physical_alpha, physical_beta, physical_epsilon, physical_nu, &
       check_physical, equilibrium_length
    use, intrinsic :: iso_fortran_env, only: iostat_end
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_usual, ieee_support_halting, &
@@ -396,7 +396,7 @@ contains
    !> else all the task offers (`default_chart_columns`).
    subroutine scene_columns(scene, ids, error)
       type(scene_t), intent(in) :: scene  !! a chart or points scene
-      integer, allocatable, intent(out) :: ids(:)  !! indices into hillstab_output's chart_column_names, in file order
+      integer, allocatable, intent(out) :: ids(:)  !! indices into hillstab_batch_output's chart_column_names, in file order
       type(error_t), allocatable, intent(out) :: error  !! err_input naming &scene columns when a name is not offered
       integer, allocatable :: available(:)
       character(len=:), allocatable :: bad
@@ -1984,4 +1984,4 @@ contains
       end do
       if (is_iostat_eor(ios)) ios = 0
    end subroutine read_text_line
-end module hillstab_scene
+end module hillstab_batch_scene

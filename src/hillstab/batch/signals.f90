@@ -14,7 +14,7 @@
 !>```fortran
 !> call install_signal_cleanup()
 !>```
-module hillstab_signals
+module hillstab_batch_signals
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_funptr, c_funloc, c_intptr_t
    implicit none
    private
@@ -105,4 +105,4 @@ contains
       end do
       call c_exit_now(128_c_int + signum)
    end subroutine on_signal
-end module hillstab_signals
+end module hillstab_batch_signals

@@ -1,8 +1,8 @@
 !> Task `boundaries`: the transition curves (S = ±2) over the α grid of `&chart`,
 !> inside its β window, written as one gnuplot block per curve.
 !>
-!> - method auto or any exact method: Hill's method (hillstab_hill_method), every
-!>   boundary checked independently by method auto (hillstab_boundaries); a boundary
+!> - method auto or any exact method: Hill's method (hillstab_curves_hill_method), every
+!>   boundary checked independently by method auto (hillstab_curves_boundaries); a boundary
 !>   that fails the check is written with status_failed and the run reports it
 !>   (err_points_failed, exit status 3), it is never written as ok;
 !> - method formula or segments: the roots of S_method(β) = ±2 by Brent's method on a
@@ -11,18 +11,18 @@
 !>
 !> The α values run in parallel (OpenMP, dynamic schedule: the truncation grows
 !> towards α → π²); the file is written once all are done, curve by curve.
-module hillstab_task_boundaries
-   use hillstab_kinds, only: wp, version_string
-   use hillstab_error, only: error_t, set_error, err_input, err_points_failed
-   use hillstab_status, only: status_ok, status_roundoff, status_failed
-   use hillstab_coefficient, only: model_elastic, in_physical_domain, sampling_name
-   use hillstab_monodromy, only: method_name, method_formula, method_segments
-   use hillstab_hill_method, only: hill_boundary_t, hill_boundaries, coexistence_threshold
-   use hillstab_boundaries, only: boundary_check_t, verify_boundary, approximate_root_t, approximate_boundaries, &
+module hillstab_batch_task_boundaries
+   use hillstab_core_kinds, only: wp, version_string
+   use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
+   use hillstab_core_status, only: status_ok, status_roundoff, status_failed
+   use hillstab_hill_coefficient, only: model_elastic, in_physical_domain, sampling_name
+   use hillstab_integrate_monodromy, only: method_name, method_formula, method_segments
+   use hillstab_curves_hill_method, only: hill_boundary_t, hill_boundaries, coexistence_threshold
+   use hillstab_curves_boundaries, only: boundary_check_t, verify_boundary, approximate_root_t, approximate_boundaries, &
       mathieu_witness, beta_accuracy_factor, gsl_witness_max_q
-   use hillstab_scene, only: scene_t, scene_header, grid_value, real_text, integer_text, output_path
-   use hillstab_output, only: output_file_t, open_output, finish_output, discard_output, write_header, write_text
-   use hillstab_format, only: format_es
+   use hillstab_batch_scene, only: scene_t, scene_header, grid_value, real_text, integer_text, output_path
+   use hillstab_batch_output, only: output_file_t, open_output, finish_output, discard_output, write_header, write_text
+   use hillstab_core_text, only: format_es
    implicit none
    private
    public :: run_boundaries, boundary_columns, boundary_row_t, compute_boundary_rows
@@ -34,7 +34,7 @@ module hillstab_task_boundaries
       integer :: order = 0               !! n of a_n, b_n
       integer :: branch = 1              !! exact: 1 even (a_n), 2 odd (b_n); approximate: 1 lower, 2 upper edge
       logical :: coexistent = .false.  !! both curves of this order coincide here (coexistence)
-      integer :: status = status_ok  !! a status_* code of hillstab_status
+      integer :: status = status_ok  !! a status_* code of hillstab_core_status
       real(wp) :: check = 0.0_wp         !! exact: S by auto at the point; approximate: S_method
       real(wp) :: beta_error = 0.0_wp    !! error estimate of beta
       integer :: modes = 0               !! exact: modes of the truncation; approximate: pieces
@@ -336,4 +336,4 @@ contains
       lines = scene_header(scene, "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau; transition "// &
                            "curves S = +-2", text(:n))
    end function header
-end module hillstab_task_boundaries
+end module hillstab_batch_task_boundaries

@@ -1,5 +1,5 @@
 !> Task `lyapunov`: the largest Lyapunov exponent of the nonlinear pendulum
-!> (hillstab_lyapunov) over the (α, β) grid of `&chart` or at the points of `&points`
+!> (hillstab_pendulum_lyapunov) over the (α, β) grid of `&chart` or at the points of `&points`
 !> (`&lyapunov over`), each point started as `&series` says (φ0, velocities, r0, g) and
 !> integrated for `&series periods` radial periods at the `&scene tolerance`. Beside the
 !> exponent: its error indication, the chart's linear verdict at the point (the core's
@@ -9,21 +9,21 @@
 !>
 !> Points are independent: the serial task computes them in parallel (OpenMP, dynamic
 !> schedule: chaotic and near-π² points cost more) in units of consecutive points and
-!> writes the units in order; the MPI program (hillstab_batch) computes the same units
+!> writes the units in order; the MPI program (hillstab_batch_units) computes the same units
 !> on several ranks with `lyapunov_lines` and writes the same file.
-module hillstab_task_lyapunov
-   use hillstab_kinds, only: wp, int64, version_string
-   use hillstab_error, only: error_t, set_error, err_accuracy, err_points_failed
-   use hillstab_status, only: status_ok, status_roundoff, status_failed
-   use hillstab_coefficient, only: hill_model_t, model_elastic
-   use hillstab_transfer, only: trace_t
-   use hillstab_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
-   use hillstab_monodromy, only: monodromy_trace, method_name
-   use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state
-   use hillstab_lyapunov, only: lyapunov_t, lyapunov_largest
-   use hillstab_scene, only: scene_t, scene_header, grid_point, real_text, integer_text, output_path
-   use hillstab_output, only: output_file_t, open_output, finish_output, write_header, write_text, joined_lines
-   use hillstab_format, only: put_es, put_integer
+module hillstab_batch_task_lyapunov
+   use hillstab_core_kinds, only: wp, int64, version_string
+   use hillstab_core_error, only: error_t, set_error, err_accuracy, err_points_failed
+   use hillstab_core_status, only: status_ok, status_roundoff, status_failed
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
+   use hillstab_integrate_monodromy, only: monodromy_trace, method_name
+   use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart, pendulum_initial_state
+   use hillstab_pendulum_lyapunov, only: lyapunov_t, lyapunov_largest
+   use hillstab_batch_scene, only: scene_t, scene_header, grid_point, real_text, integer_text, output_path
+   use hillstab_batch_output, only: output_file_t, open_output, finish_output, write_header, write_text, joined_lines
+   use hillstab_core_text, only: put_es, put_integer
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
@@ -276,4 +276,4 @@ contains
       if (allocated(error)) return
       call lyapunov_failure_error(scene, n_failed, first_failed, error)
    end subroutine run_lyapunov
-end module hillstab_task_lyapunov
+end module hillstab_batch_task_lyapunov

@@ -1,4 +1,4 @@
-!> Task `poincare`: Poincaré sections (hillstab_poincare) of several orbits of the
+!> Task `poincare`: Poincaré sections (hillstab_pendulum_poincare) of several orbits of the
 !> nonlinear pendulum at the (α, β, r0, g) of `&series`, one orbit per angle of
 !> `&poincare phi0s`, over `&series periods` radial periods at the `&scene tolerance`.
 !> With `same_energy` (the default) every orbit starts at rest at its φ0 with the energy
@@ -7,15 +7,15 @@
 !>
 !> `<output>_poincare.dat`: one block per orbit (blocks separated by two blank lines:
 !> gnuplot `index`), one line per crossing of φ = 0 with φ' > 0.
-module hillstab_task_poincare
-   use hillstab_kinds, only: wp, version_string
-   use hillstab_error, only: error_t, set_error, err_input, err_points_failed
-   use hillstab_status, only: status_ok, status_failed
-   use hillstab_pendulum, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_energy
-   use hillstab_poincare, only: section_t, poincare_section, pendulum_state_at_energy
-   use hillstab_scene, only: scene_t, scene_header, real_text, integer_text, output_path
-   use hillstab_output, only: output_file_t, open_output, finish_output, write_header, write_text
-   use hillstab_format, only: put_es
+module hillstab_batch_task_poincare
+   use hillstab_core_kinds, only: wp, version_string
+   use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
+   use hillstab_core_status, only: status_ok, status_failed
+   use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_energy
+   use hillstab_pendulum_poincare, only: section_t, poincare_section, pendulum_state_at_energy
+   use hillstab_batch_scene, only: scene_t, scene_header, real_text, integer_text, output_path
+   use hillstab_batch_output, only: output_file_t, open_output, finish_output, write_header, write_text
+   use hillstab_core_text, only: put_es
    implicit none
    private
    public :: run_poincare, poincare_columns
@@ -164,4 +164,4 @@ contains
          end do
       end function block_lines
    end subroutine run_poincare
-end module hillstab_task_poincare
+end module hillstab_batch_task_poincare

@@ -16,22 +16,22 @@
 !> call read_scene("data/scenes/fig4a.nml", scene, error)
 !> if (.not. allocated(error)) call run_series(scene, error)
 !>```
-module hillstab_task_series
-   use hillstab_kinds, only: wp, int64, version_string
-   use hillstab_error, only: error_t, set_error, err_input, err_accuracy, err_invalid_parameter
-   use hillstab_status, only: status_ok, status_roundoff, status_failed, status_name
-   use hillstab_stats, only: work_stats_t
-   use hillstab_coefficient, only: hill_model_t, model_elastic
-   use hillstab_transfer, only: trace_t
-   use hillstab_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
-   use hillstab_monodromy, only: monodromy_trace, method_name
-   use hillstab_rk, only: rk_step_t, rk_dense_value
-   use hillstab_pendulum, only: pendulum_t, pendulum_system_t, pendulum_from_chart, pendulum_initial_state, &
+module hillstab_batch_task_series
+   use hillstab_core_kinds, only: wp, int64, version_string
+   use hillstab_core_error, only: error_t, set_error, err_input, err_accuracy, err_invalid_parameter
+   use hillstab_core_status, only: status_ok, status_roundoff, status_failed, status_name
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
+   use hillstab_integrate_monodromy, only: monodromy_trace, method_name
+   use hillstab_integrate_rk, only: rk_step_t, rk_dense_value
+   use hillstab_pendulum_equations, only: pendulum_t, pendulum_system_t, pendulum_from_chart, pendulum_initial_state, &
       pendulum_angle, pendulum_energy, pendulum_radius, px, pz, pvx, pvz
    use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat
-   use hillstab_scene, only: scene_t, scene_header, output_path, real_text, integer_text
-   use hillstab_format, only: put_es
-   use hillstab_output, only: output_file_t, open_output, finish_output, discard_output, write_header, write_text
+   use hillstab_batch_scene, only: scene_t, scene_header, output_path, real_text, integer_text
+   use hillstab_core_text, only: put_es
+   use hillstab_batch_output, only: output_file_t, open_output, finish_output, discard_output, write_header, write_text
    implicit none
    private
    public :: run_series, series_summary_t, series_summary, series_columns
@@ -55,7 +55,7 @@ module hillstab_task_series
       real(wp) :: trace = 0.0_wp                 !! S of the core at (α, β, ε)
       real(wp) :: lambda_max = -1.0_wp           !! largest multiplier modulus of x per radial period
       logical :: stable = .false.                !! the chart's verdict
-      integer :: status = status_failed          !! of the core's λ_max (hillstab_status)
+      integer :: status = status_failed          !! of the core's λ_max (hillstab_core_status)
       real(wp) :: onset_predicted = -1.0_wp      !! n* [periods]; −1: no onset expected
       real(wp) :: onset_observed = -1.0_wp       !! first |φ| > φ_sat [periods]; −1: not within the run
    end type series_summary_t
@@ -282,4 +282,4 @@ contains
          end if
       end function periods_text
    end function series_header
-end module hillstab_task_series
+end module hillstab_batch_task_series

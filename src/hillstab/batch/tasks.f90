@@ -9,44 +9,44 @@
 !> Each task computes only what its file holds. Errors come back in `error` with
 !> the scene file, group and variable named; no output file is created or touched
 !> unless the task completes. A point that cannot be computed does not stop a chart
-!> or points task: its row carries status_failed (hillstab_status) and placeholders,
+!> or points task: its row carries status_failed (hillstab_core_status) and placeholders,
 !> the file is written, and `error` comes back with err_points_failed.
 !>
 !>```fortran
 !> type(error_t), allocatable :: error
 !> call run_scene_file("data/scenes/default_exact.nml", quiet=.false., error=error)
 !>```
-module hillstab_tasks
-   use hillstab_kinds, only: wp, int64, pi, pi2, version_string
-   use hillstab_error, only: error_t, set_error, err_input, err_accuracy, err_invalid_parameter, &
+module hillstab_batch_tasks
+   use hillstab_core_kinds, only: wp, int64, pi, pi2, version_string
+   use hillstab_core_error, only: error_t, set_error, err_input, err_accuracy, err_invalid_parameter, &
       err_points_failed
-   use hillstab_status, only: status_ok, status_roundoff, status_failed
-   use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, hill_coefficient, &
+   use hillstab_core_status, only: status_ok, status_roundoff, status_failed
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu, hill_coefficient, &
       segment_coefficients, hill_period, in_physical_domain, sampling_name
-   use hillstab_transfer, only: trace_t
-   use hillstab_floquet, only: floquet_t, floquet_from_trace
-   use hillstab_units, only: equilibrium_length
-   use hillstab_monodromy, only: monodromy_trace, monodromy_trace_batch, method_name, method_segments, &
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace
+   use hillstab_hill_units, only: equilibrium_length
+   use hillstab_integrate_monodromy, only: monodromy_trace, monodromy_trace_batch, method_name, method_segments, &
       batch_plan_t, prepare_batch
-   use hillstab_task_series, only: run_series
-   use hillstab_task_lyapunov, only: run_lyapunov
-   use hillstab_task_poincare, only: run_poincare
-   use hillstab_scene, only: scene_t, read_scene, scene_header, task_chart, task_points, task_coefficient, &
+   use hillstab_batch_task_series, only: run_series
+   use hillstab_batch_task_lyapunov, only: run_lyapunov
+   use hillstab_batch_task_poincare, only: run_poincare
+   use hillstab_batch_scene, only: scene_t, read_scene, scene_header, task_chart, task_points, task_coefficient, &
       task_series, task_name, grid_value, real_text, integer_text, task_boundaries, task_lyapunov, task_poincare, &
       output_path, scene_columns
-   use hillstab_task_boundaries, only: run_boundaries
-   use hillstab_format, only: format_es
-   use hillstab_output, only: output_file_t, open_output, finish_output, discard_output, write_header, &
+   use hillstab_batch_task_boundaries, only: run_boundaries
+   use hillstab_core_text, only: format_es
+   use hillstab_batch_output, only: output_file_t, open_output, finish_output, discard_output, write_header, &
       write_text, write_records, chart_line_length, real_columns, n_chart_columns, chart_values, failed_chart_values, &
       chart_text, chart_columns_text, default_chart_columns, joined_lines
-   use hillstab_limits, only: check_output_room
+   use hillstab_batch_limits, only: check_output_room
    use, intrinsic :: iso_fortran_env, only: error_unit
    use, intrinsic :: iso_c_binding, only: c_int
    !$ use omp_lib, only: omp_get_max_threads
    implicit none
    private
    public :: run_scene_file, run_scene, output_path
-   ! the pieces a distributed driver (hillstab_batch, the MPI program) shares with the serial tasks
+   ! the pieces a distributed driver (hillstab_batch_units, the MPI program) shares with the serial tasks
    public :: scene_columns, chart_betas, chart_row, compute_points, chart_header, open_scene_output, check_method_runs, &
       warn_inaccurate, &
       failed_points_error, progress_t, progress_begin, progress_update, progress_end
@@ -408,7 +408,7 @@ contains
    !> or part of a row, with the columns `ids`.
    subroutine compute_row(scene, ids, alpha, betas, lines, values, statuses, plan, beta_texts)
       type(scene_t), intent(in) :: scene
-      integer, intent(in) :: ids(:)  !! the columns (hillstab_output's chart_column_names)
+      integer, intent(in) :: ids(:)  !! the columns (hillstab_batch_output's chart_column_names)
       real(wp), intent(in) :: alpha, betas(:)
       character(len=*), intent(inout) :: lines(:)  !! text format: one line a point
       real(wp), intent(inout) :: values(:, :)      !! binary format: (columns, points)
@@ -757,4 +757,4 @@ contains
       max_threads = 1
       !$ max_threads = omp_get_max_threads()
    end function max_threads
-end module hillstab_tasks
+end module hillstab_batch_tasks

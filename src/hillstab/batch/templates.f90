@@ -13,12 +13,12 @@
 !> call scene_template("chart", text, error)
 !> if (.not. allocated(error)) write (*, '(a)') text
 !>```
-module hillstab_templates
-   use hillstab_error, only: error_t, set_error, err_input
-   use hillstab_coefficient, only: model_name, sampling_name
-   use hillstab_monodromy, only: method_name
-   use hillstab_units, only: physical_t
-   use hillstab_scene, only: scene_t, default_scene, real_text, integer_text, task_chart, task_points, &
+module hillstab_batch_templates
+   use hillstab_core_error, only: error_t, set_error, err_input
+   use hillstab_hill_coefficient, only: model_name, sampling_name
+   use hillstab_integrate_monodromy, only: method_name
+   use hillstab_hill_units, only: physical_t
+   use hillstab_batch_scene, only: scene_t, default_scene, real_text, integer_text, task_chart, task_points, &
       task_coefficient, task_boundaries, task_series, task_lyapunov, task_poincare
    implicit none
    private
@@ -309,4 +309,4 @@ contains
          item("n_tau = "//integer_text(scene%coefficient%n_tau), "number of tau values, >= 1")// &
          "/"
    end function coefficient_group
-end module hillstab_templates
+end module hillstab_batch_templates

@@ -6,8 +6,8 @@
 !> so the data lines are those of a serial run; a points scene is cut into runs of
 !> consecutive points. A unit's result is its text (the lines as the serial task writes
 !> them, with the blank line that separates α blocks) and a status per point
-!> (hillstab_status). Only `batch_open` / `batch_write` / `batch_commit` touch the file,
-!> through hillstab_output, so the file appears whole or not at all. As in the serial
+!> (hillstab_core_status). Only `batch_open` / `batch_write` / `batch_commit` touch the file,
+!> through hillstab_batch_output, so the file appears whole or not at all. As in the serial
 !> tasks, a failed point is written with its status and placeholders, and `batch_commit`
 !> returns err_points_failed (exit status 3) naming the first.
 !>
@@ -29,18 +29,18 @@
 !>    call batch_commit(batch, error)   ! err_points_failed: written, with failed points
 !> end if
 !>```
-module hillstab_batch
-   use hillstab_kinds, only: wp, int64
-   use hillstab_error, only: error_t, set_error, err_input, err_io, err_invalid_parameter, err_points_failed
-   use hillstab_status, only: status_roundoff, status_failed, exit_points_failed
-   use hillstab_coefficient, only: in_physical_domain
-   use hillstab_scene, only: scene_t, task_chart, task_points, task_lyapunov, grid_point
-   use hillstab_task_lyapunov, only: lyapunov_lines, lyapunov_header, lyapunov_columns, lyapunov_point_count, &
+module hillstab_batch_units
+   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_error, only: error_t, set_error, err_input, err_io, err_invalid_parameter, err_points_failed
+   use hillstab_core_status, only: status_roundoff, status_failed, exit_points_failed
+   use hillstab_hill_coefficient, only: in_physical_domain
+   use hillstab_batch_scene, only: scene_t, task_chart, task_points, task_lyapunov, grid_point
+   use hillstab_batch_task_lyapunov, only: lyapunov_lines, lyapunov_header, lyapunov_columns, lyapunov_point_count, &
       lyapunov_point, lyapunov_failure_error
-   use hillstab_coefficient, only: model_elastic
-   use hillstab_output, only: output_file_t, write_header, write_text, commit_output, discard_output, &
+   use hillstab_hill_coefficient, only: model_elastic
+   use hillstab_batch_output, only: output_file_t, write_header, write_text, commit_output, discard_output, &
       chart_columns_text, chart_line_length, joined_lines
-   use hillstab_tasks, only: scene_columns, chart_betas, chart_row, compute_points, chart_header, open_scene_output, &
+   use hillstab_batch_tasks, only: scene_columns, chart_betas, chart_row, compute_points, chart_header, open_scene_output, &
       check_method_runs, &
       warn_inaccurate, failed_points_error, progress_t, progress_begin, progress_update, progress_end
    implicit none
@@ -311,4 +311,4 @@ contains
          exit_status = 1
       end select
    end function exit_status
-end module hillstab_batch
+end module hillstab_batch_units

@@ -6,7 +6,7 @@
 !> call check_model(model, error)
 !> if (allocated(error)) print '(a)', error%message
 !>```
-module hillstab_error
+module hillstab_core_error
    implicit none
    private
    public :: error_t, set_error, error_code_name
@@ -29,7 +29,7 @@ module hillstab_error
    !> the best value is returned with this error.
    integer, parameter :: err_accuracy = 7
    !> A task wrote its file, but some of its points could not be computed (they carry
-   !> status_failed of hillstab_status); the message counts them and names the first.
+   !> status_failed of hillstab_core_status); the message counts them and names the first.
    integer, parameter :: err_points_failed = 8
 
    !> Error descriptor: a code from the `err_*` constants and a readable message.
@@ -66,4 +66,4 @@ contains
       case default; name = "error"
       end select
    end function error_code_name
-end module hillstab_error
+end module hillstab_core_error

@@ -1,5 +1,5 @@
 !> Working precision and mathematical constants shared by every hillstab module.
-module hillstab_kinds
+module hillstab_core_kinds
    use, intrinsic :: iso_fortran_env, only: wp => real64, int64
    implicit none
    private
@@ -19,4 +19,4 @@ module hillstab_kinds
    real(wp), parameter :: log_huge = 709.0_wp
    !> Package version, written into every output header.
    character(len=*), parameter :: version_string = "0.1.0"
-end module hillstab_kinds
+end module hillstab_core_kinds

@@ -1,7 +1,7 @@
 !> Work counters shared by the integrators, so that methods can be compared by
 !> the work they do (steps, rejections, right-hand-side or Q evaluations).
-module hillstab_stats
-   use hillstab_kinds, only: int64
+module hillstab_core_stats
+   use hillstab_core_kinds, only: int64
    implicit none
    private
    public :: work_stats_t, add_work
@@ -23,4 +23,4 @@ contains
       total%n_rejected = total%n_rejected + part%n_rejected
       total%n_evaluations = total%n_evaluations + part%n_evaluations
    end subroutine add_work
-end module hillstab_stats
+end module hillstab_core_stats

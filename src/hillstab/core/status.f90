@@ -3,10 +3,10 @@
 !> status of a run that completed with some failed points.
 !>
 !>```fortran
-!> use hillstab_status
+!> use hillstab_core_status
 !> print '(i0, 1x, a)', status_roundoff, status_name(status_roundoff)
 !>```
-module hillstab_status
+module hillstab_core_status
    implicit none
    private
    public :: status_ok, status_roundoff, status_failed, status_name, exit_points_failed
@@ -34,4 +34,4 @@ contains
       case default; name = "unknown"
       end select
    end function status_name
-end module hillstab_status
+end module hillstab_core_status

@@ -13,8 +13,8 @@
 !>```fortran
 !> print '(a)', format_es(-1266.8019686641_wp, 12)   ! -1.26680196866e+003
 !>```
-module hillstab_format
-   use hillstab_kinds, only: wp, int64
+module hillstab_core_text
+   use hillstab_core_kinds, only: wp, int64
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    implicit none
    private
@@ -244,4 +244,4 @@ contains
       end if
       buffer(last - width + 1:last) = text(2:width + 1)
    end subroutine put_es_fortran
-end module hillstab_format
+end module hillstab_core_text

@@ -21,13 +21,13 @@
 !> call verify_boundary(model_elastic, 5.0_wp, 0.8766005119978297_wp, -2, 1.0e-11_wp, check, error)
 !> print *, check%passed, check%trace
 !>```
-module hillstab_boundaries
-   use hillstab_kinds, only: wp, pi2
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
-   use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu
-   use hillstab_transfer, only: trace_t
-   use hillstab_monodromy, only: method_t, method_auto, monodromy_trace
-   use hillstab_gsl, only: mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b, mathieu_max_order
+module hillstab_curves_boundaries
+   use hillstab_core_kinds, only: wp, pi2
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_integrate_monodromy, only: method_t, method_auto, monodromy_trace
+   use hillstab_integrate_gsl, only: mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b, mathieu_max_order
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -42,7 +42,7 @@ module hillstab_boundaries
    real(wp), parameter :: roundoff_trace_allowance = 1.0e-8_wp
    !> GSL's Mathieu values are used as a witness only for |q| up to this. Measured
    !> against Hill's method: every a_n, b_n with n ≤ 60 within 1e-12 relative (worst
-   !> 9.7e-13) for q = 1 … 5000; orders beyond 60 are refused by hillstab_gsl (GSL's
+   !> 9.7e-13) for q = 1 … 5000; orders beyond 60 are refused by hillstab_integrate_gsl (GSL's
    !> root search fails there at large q). The bound keeps a margin below what was measured.
    real(wp), parameter :: gsl_witness_max_q = 1000.0_wp
 
@@ -322,4 +322,4 @@ contains
       end do
       length = interval_length(a) + interval_length(b) - 2.0_wp*overlap
    end function symmetric_difference_length
-end module hillstab_boundaries
+end module hillstab_curves_boundaries

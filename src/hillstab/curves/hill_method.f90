@@ -52,11 +52,11 @@
 !> call hill_boundaries(model_elastic, 5.0_wp, -2.0_wp, 40.0_wp, 1.0e-11_wp, curves, error)
 !> print *, curves%beta
 !>```
-module hillstab_hill_method
-   use hillstab_kinds, only: wp, pi, pi2
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_singular, err_accuracy
-   use hillstab_coefficient, only: model_elastic, model_mathieu
-   use hillstab_lapack, only: dsbgv, dgeev
+module hillstab_curves_hill_method
+   use hillstab_core_kinds, only: wp, pi, pi2
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_singular, err_accuracy
+   use hillstab_hill_coefficient, only: model_elastic, model_mathieu
+   use hillstab_ffi_lapack, only: dsbgv, dgeev
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -531,4 +531,4 @@ contains
       values = fine(:m)
       changes = abs(coarse(:m) - fine(:m))
    end subroutine converged_block
-end module hillstab_hill_method
+end module hillstab_curves_hill_method

@@ -1,7 +1,7 @@
 !> Explicit interfaces to the LAPACK routines hillstab calls (the build compiles with
 !> `-Werror=implicit-interface`, so every external routine is declared once, here).
-module hillstab_lapack
-   use hillstab_kinds, only: wp
+module hillstab_ffi_lapack
+   use hillstab_core_kinds, only: wp
    implicit none
    private
    public :: dsbgv, dgeev
@@ -45,4 +45,4 @@ module hillstab_lapack
          integer, intent(out) :: info           !! 0 on success
       end subroutine dgeev
    end interface
-end module hillstab_lapack
+end module hillstab_ffi_lapack

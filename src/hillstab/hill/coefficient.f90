@@ -10,9 +10,9 @@
 !> model = hill_model_t(model_elastic, alpha=4.0_wp, beta=6.0_wp, epsilon=0.0_wp)
 !> print *, hill_coefficient(model, 0.5_wp)
 !>```
-module hillstab_coefficient
-   use hillstab_kinds, only: wp, pi, pi2, pi2_lo
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter
+module hillstab_hill_coefficient
+   use hillstab_core_kinds, only: wp, pi, pi2, pi2_lo
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -140,7 +140,7 @@ contains
    !> and √|c₀ + c₁ w| ≤ √|c₀| + √|c₁| √|w|: Φ ≤ 2 (√|c₀| + √|c₁| `shape_root_mean`).
    !> It sets the part of the round-off level of S that no integrator can remove: Q is
    !> computed from rounded constants (1 − α/π², α/π², β − π², π²), a systematic relative
-   !> error of a few ε that moves the phase by about ε Φ (hillstab_refine `roundoff_level`).
+   !> error of a few ε that moves the phase by about ε Φ (hillstab_integrate_refine `roundoff_level`).
    elemental real(wp) function phase_bound(model) result(phase)
       type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
       real(wp) :: c0, c1
@@ -254,4 +254,4 @@ contains
          end select
       end do
    end subroutine segment_coefficients
-end module hillstab_coefficient
+end module hillstab_hill_coefficient

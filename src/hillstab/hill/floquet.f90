@@ -8,9 +8,9 @@
 !>
 !> Multipliers are stored as log-modulus and argument so that they stay finite
 !> however large the trace.
-module hillstab_floquet
-   use hillstab_kinds, only: wp, pi, log_huge
-   use hillstab_transfer, only: trace_t, trace_from_value
+module hillstab_hill_floquet
+   use hillstab_core_kinds, only: wp, pi, log_huge
+   use hillstab_hill_transfer, only: trace_t, trace_from_value
    implicit none
    private
    public :: floquet_t, floquet_from_trace, floquet_from_value, multipliers, largest_multiplier_modulus
@@ -118,4 +118,4 @@ contains
          largest_multiplier_modulus = exp(f%log_modulus(1))
       end if
    end function largest_multiplier_modulus
-end module hillstab_floquet
+end module hillstab_hill_floquet

@@ -9,10 +9,10 @@
 !> paper's expression, since (q₁ + q₂)/√(q₁q₂) = 2(β − α²/π²)/√((β² − α²)(1 − α²/π⁴)),
 !> but it stays real and finite where the paper's radicands turn negative
 !> (β < α, β + α < 0) and at β = ±α where the paper's form is 0/0.
-module hillstab_formulas
-   use hillstab_kinds, only: wp, pi2
-   use hillstab_coefficient, only: one_minus_alpha_over_pi2
-   use hillstab_transfer, only: transfer_functions, trace_t, trace_from_scaled
+module hillstab_hill_formulas
+   use hillstab_core_kinds, only: wp, pi2
+   use hillstab_hill_coefficient, only: one_minus_alpha_over_pi2
+   use hillstab_hill_transfer, only: transfer_functions, trace_t, trace_from_scaled
    implicit none
    private
    public :: trace_two_segment_paper, trace_damped_paper, trace_mathieu_two_segment, trace_two_piece
@@ -59,4 +59,4 @@ contains
       type(trace_t) :: tr
       tr = trace_two_piece(beta - nu, beta + nu)
    end function trace_mathieu_two_segment
-end module hillstab_formulas
+end module hillstab_hill_formulas

@@ -13,8 +13,8 @@
 !> call multiply_transfer(m, q=3.0_wp, h=1.0_wp)
 !> print *, trace_of(m)%value
 !>```
-module hillstab_transfer
-   use hillstab_kinds, only: wp, log_huge
+module hillstab_hill_transfer
+   use hillstab_core_kinds, only: wp, log_huge
    implicit none
    private
    public :: transfer_matrix, transfer_functions, transfer_increment, scaled_matrix_t, scaled_identity, scaled_from_matrix
@@ -319,4 +319,4 @@ contains
       d = determinant(a%m)
       log_det_scale = 2.0_wp*a%log_scale
    end subroutine determinant_of
-end module hillstab_transfer
+end module hillstab_hill_transfer

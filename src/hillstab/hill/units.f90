@@ -25,9 +25,9 @@
 !> print *, physical_alpha(p), physical_beta(p), physical_epsilon(p)
 !> print *, rate_per_second(0.1_wp, p%omega)   ! μ = 0.1 per unit τ, in 1/s
 !>```
-module hillstab_units
-   use hillstab_kinds, only: wp, pi, pi2
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter
+module hillstab_hill_units
+   use hillstab_core_kinds, only: wp, pi, pi2
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -37,7 +37,7 @@ module hillstab_units
 
    !> Standard gravity (m/s²), the default of g.
    real(wp), parameter :: standard_gravity = 9.80665_wp
-   !> Bounds of a pendulum's scales (ω, r0, g, κ in SI units; also ρ in hillstab_pendulum):
+   !> Bounds of a pendulum's scales (ω, r0, g, κ in SI units; also ρ in hillstab_pendulum_equations):
    !> within them no product of the model overflows or underflows to zero.
    real(wp), parameter :: smallest_scale = 1.0e-50_wp, largest_scale = 1.0e50_wp
 
@@ -271,4 +271,4 @@ contains
       real(wp), intent(in) :: omega  !! ω (rad/s), > 0
       time_from_tau = pi*tau/omega
    end function time_from_tau
-end module hillstab_units
+end module hillstab_hill_units

@@ -26,15 +26,15 @@
 !> type(trace_t) :: traces(3)
 !> call trace_auto_batch(model_elastic, 5.0_wp, 0.0_wp, betas, 1.0e-10_wp, traces, stats, error)
 !>```
-module hillstab_auto
-   use hillstab_kinds, only: wp, pi, pi2, log_huge
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
+module hillstab_integrate_auto
+   use hillstab_core_kinds, only: wp, pi, pi2, log_huge
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use hillstab_stats, only: work_stats_t
-   use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, check_model, one_minus_alpha_over_pi2, &
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu, check_model, one_minus_alpha_over_pi2, &
       shape_root_mean, coefficient_phase
-   use hillstab_transfer, only: transfer_functions, trace_t, trace_from_scaled
-   use hillstab_refine, only: roundoff_level
+   use hillstab_hill_transfer, only: transfer_functions, trace_t, trace_from_scaled
+   use hillstab_integrate_refine, only: roundoff_level
    implicit none
    private
    public :: trace_auto, trace_auto_batch, auto_initial_steps, auto_mesh_power, fixed_n_trace
@@ -274,7 +274,7 @@ contains
       do j = 1, m
          ns(j) = steps_for_point(base, kind, c0s(j), c1s(j))
       end do
-      ! the phase bound of each point, for its round-off level (hillstab_refine)
+      ! the phase bound of each point, for its round-off level (hillstab_integrate_refine)
       phases = coefficient_phase(c0s, c1s, shape_root_mean(kind, alpha))
       ! first pass: S_N and S_{N/2} of all points sharing N together, in lanes
       allocate (fine(m), coarse(m), n_coarse(m), pending(m), floors(m), coarse_floors(m), estimates(m), previous(m), &
@@ -642,7 +642,7 @@ contains
          h = mesh%h(i)
          w1 = mesh%w(1, i); w2 = mesh%w(2, i); w3 = mesh%w(3, i)
          ! sixth-order Gauss–Legendre Magnus generators Ω = [[ga, gb], [gc, −ga]] of all lanes:
-         ! `magnus6_generator` of hillstab_magnus (Blanes, Casas, Oteo, Ros, Phys. Rep. 470 (2009) §5)
+         ! `magnus6_generator` of hillstab_integrate_magnus (Blanes, Casas, Oteo, Ros, Phys. Rep. 470 (2009) §5)
          ! written out in components (α₂, α₃ have only a lower-left entry) so that the loop vectorises
          do l = 1, size(c0)
             q1 = c0(l) + c1(l)*w1
@@ -751,4 +751,4 @@ contains
       call lane_traces(mesh, [c0], [c1], [coefficient_phase(c0, c1, shape_root_mean(kind, alpha))], tr, floor)
       s = tr(1)%value
    end function fixed_n_trace
-end module hillstab_auto
+end module hillstab_integrate_auto

@@ -23,7 +23,7 @@
 !> α = 9.8, β = 0, where S = 2). A local epsilon therefore does not bound the error of
 !> S: `monodromy_gsl` integrates with eps = tolerance·gsl_tolerance_factor, then eps
 !> divided by max(10, κ/2), then by 10, until two successive traces agree to the
-!> tolerance (hillstab_refine), and reports round-off limited (err_accuracy) where eps
+!> tolerance (hillstab_integrate_refine), and reports round-off limited (err_accuracy) where eps
 !> reaches its floor 1e-15 or GSL's control cannot meet it (GSL_FAILURE). The driver's
 !> loop is run here (`integrate_pair`) so that every step is exact in time (GSL advances
 !> t by a rounded t + h; over the 1e4 steps at |β| ~ 1e5 that cost up to 3e-12 in S),
@@ -36,28 +36,28 @@
 !> type(error_t), allocatable :: error
 !> call trace_gsl(hill_model_t(model_elastic, 9.8_wp, 2.47_wp, 0.0_wp), 1.0e-12_wp, tr, stats, error)
 !>```
-module hillstab_gsl
+module hillstab_integrate_gsl
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_long, c_ptr, c_funptr, &
       c_null_funptr, c_loc, c_funloc, c_f_pointer, c_associated
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use hillstab_kinds, only: wp, int64, pi2, log_huge
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
-   use hillstab_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
+   use hillstab_core_kinds, only: wp, int64, pi2, log_huge
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
+   use hillstab_integrate_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
       roundoff_level, propagator_condition, trace_distance, first_step_factor, next_local_tolerance
-   use hillstab_stats, only: work_stats_t, add_work
-   use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
-   use hillstab_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
+   use hillstab_core_stats, only: work_stats_t, add_work
+   use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
+   use hillstab_hill_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
    implicit none
    private
    public :: mathieu_a, mathieu_b, mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b, &
       mathieu_max_order
    public :: monodromy_gsl, trace_gsl, monodromy_gsl_full_period, gsl_tolerance_factor
    public :: gsl_odeiv2_step_rk8pd
-   ! the odeiv2 driver, for other systems integrated by rk8pd (hillstab_gsl_lyapunov)
+   ! the odeiv2 driver, for other systems integrated by rk8pd (hillstab_pendulum_gsl_lyapunov)
    public :: gsl_odeiv2_system, gsl_odeiv2_driver_alloc_scaled_new, gsl_odeiv2_driver_set_nmax, &
       gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_set_error_handler_off, gsl_rk8pd_scaled_driver, &
       gsl_odeiv2_driver_view, gsl_odeiv2_evolve_apply
-   ! the status codes the drivers of hillstab_gsl_pendulum and hillstab_gsl_lyapunov read and set
+   ! the status codes the drivers of hillstab_pendulum_gsl and hillstab_pendulum_gsl_lyapunov read and set
    public :: gsl_success, gsl_ebadfunc, gsl_emaxiter
 
    !> Curves of the even Mathieu functions ce_n: a_n(q), n ≥ 0.
@@ -529,7 +529,7 @@ contains
    !> M = [[u v' + u' v, 2 v v'], [2 u u', u v' + u' v]], S = 2 (u v' + u' v).
    !>
    !> `tolerance` is the target error on S relative to max(1, |S|), with a global error
-   !> control (hillstab_refine): the half period is integrated with GSL's control epsilon
+   !> control (hillstab_integrate_refine): the half period is integrated with GSL's control epsilon
    !> tolerance·gsl_tolerance_factor, then smaller (first by the condition of the
    !> propagator, then tenfold) until two successive traces agree to the tolerance; the
    !> finer monodromy is returned and their difference is the error estimate. When the
@@ -710,4 +710,4 @@ contains
          call set_error(error, err_invalid_parameter, trim(buf))
       end if
    end subroutine check_tolerance
-end module hillstab_gsl
+end module hillstab_integrate_gsl

@@ -33,13 +33,13 @@
 !> call trace_magnus(hill_model_t(model_elastic, 9.8_wp, 2.47_wp, 0.0_wp), 6, 1.0e-10_wp, tr, stats, error)
 !> print *, tr%value, stats%n_evaluations
 !>```
-module hillstab_magnus
-   use hillstab_kinds, only: wp, int64, log_huge
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
-   use hillstab_refine, only: roundoff_level, propagator_condition
-   use hillstab_stats, only: work_stats_t
-   use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
-   use hillstab_transfer, only: scaled_matrix_t, scaled_identity, transfer_functions, transfer_increment, multiply_matrix, &
+module hillstab_integrate_magnus
+   use hillstab_core_kinds, only: wp, int64, log_huge
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
+   use hillstab_integrate_refine, only: roundoff_level, propagator_condition
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
+   use hillstab_hill_transfer, only: scaled_matrix_t, scaled_identity, transfer_functions, transfer_increment, multiply_matrix, &
       add_compensated, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
    implicit none
    private
@@ -556,4 +556,4 @@ contains
       if (estimate < huge(1.0_wp)) tr%error_estimate = estimate
       if (present(error_estimate)) error_estimate = estimate
    end subroutine trace_magnus
-end module hillstab_magnus
+end module hillstab_integrate_magnus

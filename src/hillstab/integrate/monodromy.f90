@@ -4,19 +4,19 @@
 !> (N-piece piecewise-constant product with endpoint/midpoint/average sampling)
 !> and the exact methods (`auto`, Magnus, Runge–Kutta, GSL) as they are registered
 !> here. All return the trace of the χ equation (47), i.e. S₁ when ε > 0.
-module hillstab_monodromy
-   use hillstab_kinds, only: wp
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
-   use hillstab_coefficient, only: hill_model_t, model_elastic, model_mathieu, check_model, &
+module hillstab_integrate_monodromy
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu, check_model, &
       segment_coefficients, hill_period, sampling_endpoint, sampling_midpoint, sampling_average
-   use hillstab_transfer, only: scaled_matrix_t, scaled_identity, multiply_transfer, multiply_matrix, &
+   use hillstab_hill_transfer, only: scaled_matrix_t, scaled_identity, multiply_transfer, multiply_matrix, &
       trace_t, trace_of
-   use hillstab_formulas, only: trace_damped_paper, trace_mathieu_two_segment
-   use hillstab_stats, only: work_stats_t, add_work
-   use hillstab_gsl, only: trace_gsl
-   use hillstab_monodromy_rk, only: trace_rk
-   use hillstab_magnus, only: trace_magnus
-   use hillstab_auto, only: trace_auto, trace_auto_batch, auto_plan_t, auto_prepare
+   use hillstab_hill_formulas, only: trace_damped_paper, trace_mathieu_two_segment
+   use hillstab_core_stats, only: work_stats_t, add_work
+   use hillstab_integrate_gsl, only: trace_gsl
+   use hillstab_integrate_monodromy_rk, only: trace_rk
+   use hillstab_integrate_magnus, only: trace_magnus
+   use hillstab_integrate_auto, only: trace_auto, trace_auto_batch, auto_plan_t, auto_prepare
    implicit none
    private
    public :: method_t, method_auto, method_formula, method_segments, method_magnus4, method_magnus6, &
@@ -238,4 +238,4 @@ contains
       end do
       if (present(stats)) stats = work
    end subroutine monodromy_trace_batch
-end module hillstab_monodromy
+end module hillstab_integrate_monodromy

@@ -18,15 +18,15 @@
 !> type(error_t), allocatable :: error
 !> call trace_rk(hill_model_t(model_elastic, 9.8_wp, 2.47_wp, 0.0_wp), 1.0e-10_wp, tr, error)
 !>```
-module hillstab_monodromy_rk
-   use hillstab_kinds, only: wp
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
-   use hillstab_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
+module hillstab_integrate_monodromy_rk
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
+   use hillstab_integrate_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
       roundoff_level, propagator_condition, first_step_factor, next_local_tolerance
-   use hillstab_stats, only: work_stats_t, add_work
-   use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
-   use hillstab_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
-   use hillstab_rk, only: rk_system_t, rk_options_t, rk_step_t, rk_integrate, rk_dopri5, rk_dop853
+   use hillstab_core_stats, only: work_stats_t, add_work
+   use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
+   use hillstab_hill_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
+   use hillstab_integrate_rk, only: rk_system_t, rk_options_t, rk_step_t, rk_integrate, rk_dopri5, rk_dop853
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -161,7 +161,7 @@ contains
    end subroutine monodromy_rk
 
    !> Trace S of the one-period monodromy of the χ equation by `monodromy_rk`, with a
-   !> global error control (hillstab_refine): S at local tolerances ℓ, ℓ/10, … (ℓ =
+   !> global error control (hillstab_integrate_refine): S at local tolerances ℓ, ℓ/10, … (ℓ =
    !> 2·rk_tolerances(tolerance)) until two successive values agree to `tolerance`; the
    !> finer one is returned with their difference as `tr%error_estimate`. When the local
    !> tolerance reaches its floor, or the values differ only by rounding noise, the finest
@@ -243,4 +243,4 @@ contains
                 .or. exponent(maxval(abs(step%y(3:4)))) > rescale_exponent
       end if
    end subroutine watch_growth
-end module hillstab_monodromy_rk
+end module hillstab_integrate_monodromy_rk

@@ -19,9 +19,9 @@
 !>    if (ladder%verdict /= refine_more) exit
 !> end do
 !>```
-module hillstab_refine
-   use hillstab_kinds, only: wp, log_huge
-   use hillstab_transfer, only: trace_t
+module hillstab_integrate_refine
+   use hillstab_core_kinds, only: wp, log_huge
+   use hillstab_hill_transfer, only: trace_t
    implicit none
    private
    public :: refinement_t, start_refinement, refine, trace_distance, roundoff_level, propagator_condition, first_step_factor, &
@@ -111,7 +111,7 @@ contains
    !> Round-off level of S relative to max(1, |S|), the one model of every exact method
    !> (auto, Magnus, rk, gsl), for a propagation of `n_steps` steps whose propagator reached
    !> the scaled condition κ = e^{log_peak}, over a period that accumulates the phase (or
-   !> growth exponent) Φ ≤ `phase` (hillstab_coefficient `phase_bound`):
+   !> growth exponent) Φ ≤ `phase` (hillstab_hill_coefficient `phase_bound`):
    !>
    !>   0.1 ε √N κ/max(1, |S|) + 2 ε Φ.
    !>
@@ -170,4 +170,4 @@ contains
       next = max(local/factor, floor)
       if (next < 10.0_wp*floor .and. local > 10.001_wp*floor) next = 10.0_wp*floor
    end function next_local_tolerance
-end module hillstab_refine
+end module hillstab_integrate_refine

@@ -50,10 +50,10 @@
 !>    dydt = [y(2), -self%omega**2*y(1)]
 !> end subroutine oscillator_rhs
 !>```
-module hillstab_rk
-   use hillstab_kinds, only: wp, int64
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
-   use hillstab_stats, only: work_stats_t
+module hillstab_integrate_rk
+   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration
+   use hillstab_core_stats, only: work_stats_t
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -1601,4 +1601,4 @@ contains
       end do
       failed = .not. finite
    end function stage_failed
-end module hillstab_rk
+end module hillstab_integrate_rk

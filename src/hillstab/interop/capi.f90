@@ -1,6 +1,6 @@
 !> C-callable entry points (`bind(C)`, `value` scalars, names prefixed `hillstab_`).
 !> The matching declarations are in include/hillstab.h. Every function returns a
-!> status: 0 on success, otherwise one of the hillstab_error codes; outputs are
+!> status: 0 on success, otherwise one of the hillstab_core_error codes; outputs are
 !> left untouched on failure. `hillstab_error_message` turns a status into the name of
 !> its code; `hillstab_last_error` gives the full message of the calling thread's most
 !> recent failed call (the same text as `error_t%message` in Fortran).
@@ -10,17 +10,17 @@
 !> int status = hillstab_trace(HILLSTAB_MODEL_ELASTIC, 3.7, 2.47, 0.0, HILLSTAB_METHOD_SEGMENTS,
 !>                             256, HILLSTAB_SAMPLING_AVERAGE, 1e-10, &s, &log_abs, &overflow);
 !>```
-module hillstab_capi
+module hillstab_interop_capi
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_null_char
-   use hillstab_kinds, only: wp
-   use hillstab_error, only: error_t, error_code_name, set_error, err_invalid_parameter, err_overflow
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t, error_code_name, set_error, err_invalid_parameter, err_overflow
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
-   use hillstab_coefficient, only: hill_model_t, hill_coefficient, check_model, model_elastic
-   use hillstab_transfer, only: trace_t
-   use hillstab_formulas, only: trace_damped_paper
-   use hillstab_floquet, only: floquet_t, floquet_from_trace
-   use hillstab_monodromy, only: method_t, monodromy_trace, method_formula
-   use hillstab_outcome, only: record_outcome, get_last_error
+   use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, check_model, model_elastic
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_formulas, only: trace_damped_paper
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace
+   use hillstab_integrate_monodromy, only: method_t, monodromy_trace, method_formula
+   use hillstab_interop_outcome, only: record_outcome, get_last_error
    implicit none
    private
    public :: hillstab_c_coefficient, hillstab_c_trace, hillstab_c_floquet, hillstab_c_trace_paper, &
@@ -206,4 +206,4 @@ contains
       end do
       buffer(n + 1) = c_null_char
    end subroutine copy_c_string
-end module hillstab_capi
+end module hillstab_interop_capi

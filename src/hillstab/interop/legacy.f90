@@ -1,6 +1,6 @@
 !> Explicit interfaces of the old-style entry points HSTRACE, HSFLOQ and HSERRM for
-!> modern callers (`use hillstab_legacy`). The routines themselves are external
-!> procedures (src/hillstab_legacy_external.f90, link symbols `hstrace_`,
+!> modern callers (`use hillstab_interop_legacy`). The routines themselves are external
+!> procedures (src/hillstab/interop/legacy_external.f90, link symbols `hstrace_`,
 !> `hsfloq_`, `hserrm_`), so FORTRAN 77 code calls them with no `USE`, through an
 !> implicit interface, the way it calls LAPACK:
 !>
@@ -11,8 +11,8 @@
 !>```
 !>
 !> Every argument and code is documented in the README (*Old-style entry points*).
-module hillstab_legacy
-   use hillstab_kinds, only: wp
+module hillstab_interop_legacy
+   use hillstab_core_kinds, only: wp
    implicit none
    private
    public :: hstrace, hsfloq, hserrm
@@ -55,4 +55,4 @@ module hillstab_legacy
          character(len=*), intent(out) :: msg  !! receives the message, cut or blank-padded to its length
       end subroutine hserrm
    end interface
-end module hillstab_legacy
+end module hillstab_interop_legacy

@@ -1,7 +1,7 @@
 !> The old-style entry points as external procedures (no module): FORTRAN 77 code
 !> calls them through an implicit interface and links the symbols `hstrace_`,
 !> `hsfloq_` and `hserrm_`. Modern callers get their explicit interfaces from
-!> `module hillstab_legacy`. Plain DOUBLE PRECISION / INTEGER / CHARACTER arguments,
+!> `module hillstab_interop_legacy`. Plain DOUBLE PRECISION / INTEGER / CHARACTER arguments,
 !> an INFO code; the README documents every argument and code, LAPACK-style.
 
 !> Trace S of the one-period monodromy (S₁ of the χ equation (47) when EPS > 0) for
@@ -12,8 +12,8 @@
 !> the best value); otherwise an error code (1 invalid parameter, 3 integration failure,
 !> 6 singular problem) and S = 0. HSERRM gives the message.
 subroutine hstrace(model, alpha, beta, eps, method, nseg, isamp, tol, s, info)
-   use hillstab_kinds, only: wp
-   use hillstab_legacy, only: hsfloq
+   use hillstab_core_kinds, only: wp
+   use hillstab_interop_legacy, only: hsfloq
    implicit none
    integer, intent(in) :: model   !! 1 elastic (eq. 25), 2 Mathieu
    real(wp), intent(in) :: alpha  !! α (elastic: 0 ≤ α < π²); ν for Mathieu
@@ -36,13 +36,13 @@ end subroutine hstrace
 !> overflowed (S = ±HUGE, MU stays finite), 7 round-off limited (best values returned),
 !> otherwise an error code with S = MU = 0, ISTAB = 0.
 subroutine hsfloq(model, alpha, beta, eps, method, nseg, isamp, tol, s, mu, istab, info)
-   use hillstab_kinds, only: wp
-   use hillstab_error, only: error_t, err_accuracy
-   use hillstab_coefficient, only: hill_model_t
-   use hillstab_transfer, only: trace_t
-   use hillstab_floquet, only: floquet_t, floquet_from_trace
-   use hillstab_monodromy, only: method_t, monodromy_trace
-   use hillstab_outcome, only: record_outcome
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t, err_accuracy
+   use hillstab_hill_coefficient, only: hill_model_t
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace
+   use hillstab_integrate_monodromy, only: method_t, monodromy_trace
+   use hillstab_interop_outcome, only: record_outcome
    implicit none
    integer, intent(in) :: model   !! 1 elastic (eq. 25), 2 Mathieu
    real(wp), intent(in) :: alpha  !! α (elastic: 0 ≤ α < π²); ν for Mathieu
@@ -77,7 +77,7 @@ end subroutine hsfloq
 !> MSG receives the message of the most recent HSTRACE or HSFLOQ call in this thread
 !> (blank when that call succeeded), cut or blank-padded to the length of MSG.
 subroutine hserrm(msg)
-   use hillstab_outcome, only: get_last_error
+   use hillstab_interop_outcome, only: get_last_error
    implicit none
    character(len=*), intent(out) :: msg  !! receives the message
    character(len=:), allocatable :: text

@@ -10,8 +10,8 @@
 !> call record_outcome(error)   ! at the end of every entry point
 !> call get_last_error(code, text)
 !>```
-module hillstab_outcome
-   use hillstab_error, only: error_t
+module hillstab_interop_outcome
+   use hillstab_core_error, only: error_t
    implicit none
    private
    public :: record_outcome, get_last_error, last_error_length
@@ -52,4 +52,4 @@ contains
       error_code = code
       error_message = message(1:length)
    end subroutine get_last_error
-end module hillstab_outcome
+end module hillstab_interop_outcome

@@ -18,13 +18,13 @@
 !> print *, watch%onset_time/watch%pendulum%period, watch%max_abs_phi
 !>```
 module hillstab_pendulum_analysis
-   use hillstab_kinds, only: wp, int64
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_singular
-   use hillstab_stats, only: work_stats_t
-   use hillstab_rk, only: rk_options_t, rk_step_t, rk_integrate, rk_dense_value, rk_dop853
-   use hillstab_pendulum, only: pendulum_t, pendulum_system_t, pendulum_bounce_monodromy, pendulum_angle, &
+   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_singular
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_integrate_rk, only: rk_options_t, rk_step_t, rk_integrate, rk_dense_value, rk_dop853
+   use hillstab_pendulum_equations, only: pendulum_t, pendulum_system_t, pendulum_bounce_monodromy, pendulum_angle, &
       pendulum_energy, pendulum_energy_scale, pendulum_atol, px, pvx
-   use hillstab_lapack, only: dgeev
+   use hillstab_ffi_lapack, only: dgeev
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private

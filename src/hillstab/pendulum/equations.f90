@@ -13,7 +13,7 @@
 !> swing linearised about it is exactly the Hill equation of the chart (BRIEF §2):
 !> `pendulum_bounce_monodromy` integrates the 4×4 variational equations along it.
 !>
-!> Two RK systems (extensions of `rk_system_t`, see hillstab_rk):
+!> Two RK systems (extensions of `rk_system_t`, see hillstab_integrate_rk):
 !> - `pendulum_system_t`: the 4-D equations of motion;
 !> - `pendulum_tangent_t`: the state plus m tangent vectors, y = (state, v₁, …, v_m) with
 !>   size(y) = 4 + 4m, each v_k' = J(state) v_k (J = `pendulum_jacobian`). Use it for the
@@ -25,8 +25,8 @@
 !> of x, x' with the initial swing amplitude (see there).
 !>
 !>```fortran
-!> use hillstab_pendulum
-!> use hillstab_rk
+!> use hillstab_pendulum_equations
+!> use hillstab_integrate_rk
 !> type(pendulum_t) :: p
 !> type(pendulum_system_t) :: system
 !> type(rk_options_t) :: options
@@ -41,12 +41,12 @@
 !> call rk_integrate(system, t, 50*p%period, y, options, error=error)
 !> print *, pendulum_angle(y), pendulum_energy(p, y)
 !>```
-module hillstab_pendulum
-   use hillstab_kinds, only: wp, pi, pi2
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
-   use hillstab_units, only: largest_scale
-   use hillstab_stats, only: work_stats_t
-   use hillstab_rk, only: rk_system_t, rk_options_t, rk_integrate, rk_dop853
+module hillstab_pendulum_equations
+   use hillstab_core_kinds, only: wp, pi, pi2
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration
+   use hillstab_hill_units, only: largest_scale
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_integrate_rk, only: rk_system_t, rk_options_t, rk_integrate, rk_dop853
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -100,7 +100,7 @@ contains
 
    !> Physical pendulum from the chart's parameters, validated: 0 ≤ α < π² and
    !> 0 < β < π² (the physical domain: a < ρ, r0 > 0), ε ≥ 0, r0 > 0, g > 0, all finite.
-   !> ρ, ω and κ must come out within [1e-50, 1e50] (hillstab_units' scale bounds; checked on their logarithms before
+   !> ρ, ω and κ must come out within [1e-50, 1e50] (hillstab_hill_units' scale bounds; checked on their logarithms before
    !> they are computed, so nothing overflows). On error `p` holds the given values only
    !> and `error` names the parameter.
    pure subroutine pendulum_from_chart(alpha, beta, epsilon, r0, g, p, error)
@@ -345,4 +345,4 @@ contains
          dydt(k:k + 3) = matmul(jac, y(k:k + 3))
       end do
    end subroutine tangent_rhs
-end module hillstab_pendulum
+end module hillstab_pendulum_equations

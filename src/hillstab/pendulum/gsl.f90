@@ -11,17 +11,17 @@
 !> y = pendulum_initial_state(p, 0.017_wp)
 !> call pendulum_gsl(p, y, 100*p%period, 1.0e-10_wp, stats, error)
 !>```
-module hillstab_gsl_pendulum
+module hillstab_pendulum_gsl
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_long, c_ptr, c_null_funptr, &
       c_loc, c_funloc, c_f_pointer, c_associated
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use hillstab_kinds, only: wp, int64
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
-   use hillstab_stats, only: work_stats_t
-   use hillstab_gsl, only: gsl_odeiv2_system, gsl_rk8pd_scaled_driver, gsl_odeiv2_driver_apply, &
+   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_integrate_gsl, only: gsl_odeiv2_system, gsl_rk8pd_scaled_driver, gsl_odeiv2_driver_apply, &
       gsl_odeiv2_driver_free, gsl_odeiv2_driver_view, gsl_odeiv2_evolve_apply, gsl_success, gsl_ebadfunc, &
       gsl_emaxiter
-   use hillstab_pendulum, only: pendulum_t, pendulum_rhs, pendulum_atol, pendulum_energy, pendulum_energy_scale
+   use hillstab_pendulum_equations, only: pendulum_t, pendulum_rhs, pendulum_atol, pendulum_energy, pendulum_energy_scale
    implicit none
    private
    public :: pendulum_gsl
@@ -118,4 +118,4 @@ contains
       status = gsl_success
       if (.not. all(ieee_is_finite(dydt))) status = gsl_ebadfunc
    end function gsl_rhs
-end module hillstab_gsl_pendulum
+end module hillstab_pendulum_gsl

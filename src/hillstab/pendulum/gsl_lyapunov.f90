@@ -1,6 +1,6 @@
 !> The largest Lyapunov exponent of the nonlinear pendulum with GSL's odeiv2 driver and
 !> the Prince–Dormand 8(7) pair rk8pd driving the same equations as
-!> `hillstab_lyapunov` (state and one tangent vector, `pendulum_rhs` and
+!> `hillstab_pendulum_lyapunov` (state and one tangent vector, `pendulum_rhs` and
 !> `pendulum_jacobian`), with the same renormalisation every radial period and the same
 !> tolerances (GSL's scaled control: absolute part per component as
 !> `pendulum_atol` and rtol·(1, 1, ω, ω) for the tangent vector, relative part rtol·|y|).
@@ -12,17 +12,17 @@
 !>```fortran
 !> call lyapunov_largest_gsl(p, pendulum_initial_state(p, 0.017_wp), 300, 1.0e-10_wp, result, error)
 !>```
-module hillstab_gsl_lyapunov
+module hillstab_pendulum_gsl_lyapunov
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_long, c_ptr, c_null_funptr, &
       c_loc, c_funloc, c_f_pointer, c_associated
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use hillstab_kinds, only: wp, int64
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
-   use hillstab_gsl, only: gsl_odeiv2_system, gsl_rk8pd_scaled_driver, gsl_odeiv2_driver_apply, &
+   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration
+   use hillstab_integrate_gsl, only: gsl_odeiv2_system, gsl_rk8pd_scaled_driver, gsl_odeiv2_driver_apply, &
       gsl_odeiv2_driver_free, gsl_success, gsl_ebadfunc
-   use hillstab_pendulum, only: pendulum_t, pendulum_rhs, pendulum_jacobian, pendulum_atol, pendulum_angle, &
+   use hillstab_pendulum_equations, only: pendulum_t, pendulum_rhs, pendulum_jacobian, pendulum_atol, pendulum_angle, &
       pendulum_energy, pendulum_energy_scale
-   use hillstab_lyapunov, only: lyapunov_t, tangent_norm
+   use hillstab_pendulum_lyapunov, only: lyapunov_t, tangent_norm
    implicit none
    private
    public :: lyapunov_largest_gsl
@@ -121,4 +121,4 @@ contains
       status = gsl_success
       if (.not. all(ieee_is_finite(dydt))) status = gsl_ebadfunc
    end function tangent_rhs
-end module hillstab_gsl_lyapunov
+end module hillstab_pendulum_gsl_lyapunov

@@ -1,4 +1,4 @@
-!> The largest Lyapunov exponent of the nonlinear elastic pendulum (hillstab_pendulum),
+!> The largest Lyapunov exponent of the nonlinear elastic pendulum (hillstab_pendulum_equations),
 !> per radial period, by Benettin's method: the trajectory and one tangent vector of the
 !> variational equations v' = J(y) v are integrated together (DOP853 or DOPRI5 with
 !> error control on both), and at the end of every radial period T the tangent vector
@@ -25,12 +25,12 @@
 !> call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 300, 1.0e-10_wp, result, error)
 !> print *, result%exponent, result%spread, result%max_abs_phi
 !>```
-module hillstab_lyapunov
-   use hillstab_kinds, only: wp
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter, err_integration
-   use hillstab_stats, only: work_stats_t, add_work
-   use hillstab_rk, only: rk_step_t, rk_options_t, rk_integrate, rk_dop853, rk_dopri5
-   use hillstab_pendulum, only: pendulum_t, pendulum_tangent_t, pendulum_atol, pendulum_angle, pendulum_energy, &
+module hillstab_pendulum_lyapunov
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration
+   use hillstab_core_stats, only: work_stats_t, add_work
+   use hillstab_integrate_rk, only: rk_step_t, rk_options_t, rk_integrate, rk_dop853, rk_dopri5
+   use hillstab_pendulum_equations, only: pendulum_t, pendulum_tangent_t, pendulum_atol, pendulum_angle, pendulum_energy, &
       pendulum_energy_scale
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
@@ -161,4 +161,4 @@ contains
       logical, intent(inout) :: stop
       self%max_abs_phi = max(self%max_abs_phi, abs(pendulum_angle(step%y)))
    end subroutine watch_angle
-end module hillstab_lyapunov
+end module hillstab_pendulum_lyapunov

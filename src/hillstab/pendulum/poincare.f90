@@ -1,4 +1,4 @@
-!> Poincaré sections of the nonlinear elastic pendulum (hillstab_pendulum): the points
+!> Poincaré sections of the nonlinear elastic pendulum (hillstab_pendulum_equations): the points
 !> where an orbit crosses φ = 0 (the downward vertical, x = 0 with z > 0) with φ' > 0
 !> (there φ' = x'/z, so x' > 0), recorded as (t, r, r'). At such a point r = z and r' = z'.
 !>
@@ -24,12 +24,12 @@
 !> call poincare_section(p, y0, 1000*p%period, 1.0e-10_wp, section, error)
 !> print *, section%n, section%points(:, 1)   ! t, r, r'
 !>```
-module hillstab_poincare
-   use hillstab_kinds, only: wp
-   use hillstab_error, only: error_t, set_error, err_invalid_parameter
-   use hillstab_stats, only: work_stats_t
-   use hillstab_rk, only: rk_step_t, rk_options_t, rk_integrate, rk_dense_value, rk_dop853
-   use hillstab_pendulum, only: pendulum_t, pendulum_system_t, pendulum_atol, pendulum_energy, pendulum_energy_scale, &
+module hillstab_pendulum_poincare
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_integrate_rk, only: rk_step_t, rk_options_t, rk_integrate, rk_dense_value, rk_dop853
+   use hillstab_pendulum_equations, only: pendulum_t, pendulum_system_t, pendulum_atol, pendulum_energy, pendulum_energy_scale, &
       px, pz, pvx, pvz
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
@@ -41,7 +41,7 @@ module hillstab_poincare
       integer :: n = 0                        !! number of crossings
       real(wp), allocatable :: points(:, :)   !! (3, n): t [s], r [m], r' [m/s] at each crossing
       !> |E(t_end) − E(0)| over the sum of the energy terms' magnitudes at t = 0
-      !> (`pendulum_energy_scale`, as in hillstab_lyapunov and task series)
+      !> (`pendulum_energy_scale`, as in hillstab_pendulum_lyapunov and task series)
       real(wp) :: energy_drift = 0.0_wp
       type(work_stats_t) :: stats             !! steps, rejections, f-evaluations
    end type section_t
@@ -191,4 +191,4 @@ contains
       end if
       y = [r*sin(phi0), r*cos(phi0), 0.0_wp, 0.0_wp]
    end subroutine pendulum_state_at_energy
-end module hillstab_poincare
+end module hillstab_pendulum_poincare
