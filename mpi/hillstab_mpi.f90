@@ -6,21 +6,24 @@
 !> next, computes units itself between requests, and writes the results in order into
 !> the same file as a single-process `hillstab` run (identical data lines), through the
 !> atomic writers of hillstab_batch_output: the file appears whole or not at all. Other tasks
-!> run on rank 0. Options, messages and exit statuses are those of `hillstab`; every rank
+!> run on rank 0. Options, messages and exit statuses are those of `hillstab` (one command
+!> line module, hillstab_batch_cli, for both programs); every rank
 !> exits with the status of the run (0 success, 2 bad input, 3 written with failed
 !> points, 1 a computation failed).
-program hillstab_mpi
+module hillstab_mpi_runner
    use mpi_f08
-   use hillstab_core_kinds, only: wp, version_string
+   use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
-   use hillstab_batch_scene, only: scene_t, read_scene
-   use hillstab_batch_tasks, only: run_scene, output_path
-   use hillstab_core_status, only: exit_points_failed
+   use hillstab_batch_scene, only: scene_t, output_path
+   use hillstab_batch_scene_read, only: read_scene
+   use hillstab_batch_tasks, only: run_scene
    use hillstab_batch_units, only: batch_t, batch_result_t, batch_distributable, batch_plan, batch_compute, &
-      batch_open, batch_write, batch_commit, batch_discard, exit_status
-   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
-   use, intrinsic :: ieee_arithmetic, only: ieee_set_flag, ieee_all
+      batch_open, batch_write, batch_commit, batch_discard
+   use hillstab_batch_cli, only: scene_runner_t, exit_status
+   use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
+   private
+   public :: mpi_runner_t
 
    integer, parameter :: manager = 0
    integer, parameter :: tag_assign = 1, tag_result = 2, tag_text = 3, tag_status = 4
@@ -37,143 +40,103 @@ program hillstab_mpi
       real(wp) :: busy(2) = 0.0_wp                 !! rank 0's computing time [s]: CPU, wall
    end type manager_t
 
-   integer :: rank, n_ranks, i, n_scenes
-   logical :: points_failed
-   character(len=:), allocatable :: argument, written
-   integer, parameter :: max_path = 4096
-   character(len=*), parameter :: max_path_text = "4096"
-   character(len=max_path), allocatable :: scenes(:)
-   logical :: quiet, help, version
-   type(error_t), allocatable :: error
-
-   call MPI_Init()
-   call MPI_Comm_rank(MPI_COMM_WORLD, rank)
-   call MPI_Comm_size(MPI_COMM_WORLD, n_ranks)
-
-   quiet = .false.
-   help = .false.
-   version = .false.
-   n_scenes = 0
-   allocate (scenes(command_argument_count()))
-   do i = 1, command_argument_count()
-      argument = command_argument(i)
-      select case (argument)
-      case ("-h", "--help")
-         help = .true.
-         exit
-      case ("-V", "--version")
-         version = .true.
-         exit
-      case ("-q", "--quiet")
-         quiet = .true.
-      case default
-         if (len(argument) > 1 .and. argument(1:1) == "-") &
-            call quit(on_manager("hillstab_mpi: unknown option '"//argument//"' (see hillstab_mpi --help)"), 2)
-         ! as hillstab: a longer path would be cut and another file read
-         if (len(argument) > max_path) &
-            call quit(on_manager("hillstab_mpi: scene path longer than "//max_path_text//" characters"), 2)
-         n_scenes = n_scenes + 1
-         scenes(n_scenes) = argument
-      end select
-   end do
-   if (help) then
-      if (rank == manager) call print_help()
-      call quit("", 0)
-   end if
-   if (version) then
-      if (rank == manager) write (output_unit, '(a)') "hillstab_mpi "//version_string
-      call quit("", 0)
-   end if
-   if (n_scenes == 0) &
-      call quit(on_manager("usage: mpirun -np N hillstab_mpi [--quiet] SCENE.nml... (see hillstab_mpi --help)"), 2)
-
-   points_failed = .false.
-   do i = 1, n_scenes
-      call run_scene_everywhere(trim(scenes(i)), error, written)
-      if (allocated(error)) then
-         ! after `agree`, only the rank that found the error holds its message
-         if (len(error%message) > 0) error%message = "hillstab_mpi: "//error%message
-         if (error%code == err_points_failed) then
-            ! the file is written; the message says where (also with --quiet: it qualifies the file)
-            if (len(error%message) > 0) write (error_unit, '(a)') error%message
-            points_failed = .true.
-         else
-            call quit(error%message, exit_status(error))
-         end if
-      end if
-      if (.not. quiet .and. rank == manager) write (error_unit, '(a)') "hillstab_mpi: wrote "//written
-   end do
-   call quit("", merge(exit_points_failed, 0, points_failed))
+   !> hillstab over MPI ranks: the scene runner of hillstab_batch_cli.
+   type, extends(scene_runner_t) :: mpi_runner_t
+      integer :: rank = 0     !! this rank
+      integer :: n_ranks = 1  !! ranks in MPI_COMM_WORLD
+      logical :: quiet = .false.  !! the --quiet of the scene being run
+   contains
+      procedure :: run => run_scene_everywhere
+      procedure :: reports => mpi_reports
+      procedure :: finish => mpi_finish
+   end type mpi_runner_t
 
 contains
+
+   !> Only rank 0 prints.
+   logical function mpi_reports(self)
+      class(mpi_runner_t), intent(in) :: self
+      mpi_reports = self%rank == manager
+   end function mpi_reports
+
+   !> MPI_Finalize before the exit.
+   subroutine mpi_finish(self)
+      class(mpi_runner_t), intent(inout) :: self
+      call MPI_Finalize()
+   end subroutine mpi_finish
 
    !> Read and run one scene on all ranks. On return every rank holds the same outcome:
    !> `error` allocated on all ranks or on none (with the message on the rank that
    !> knows it, a generic one elsewhere).
-   subroutine run_scene_everywhere(path, error, written)
+   subroutine run_scene_everywhere(self, path, quiet, error, written)
+      class(mpi_runner_t), intent(inout) :: self
       character(len=*), intent(in) :: path
+      logical, intent(in) :: quiet
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable, intent(out) :: written
       type(scene_t) :: scene
       type(batch_t) :: batch
       real(wp) :: busy(2)
       logical :: written_ok
+      self%quiet = quiet
       ! every rank reads the scene (and its points file); the worst outcome wins, so a
       ! file one rank cannot read stops all of them
       call read_scene(path, scene, error)
-      call agree(error)
+      call agree(self, error)
       if (allocated(error)) return
       written = output_path(scene)
       if (.not. batch_distributable(scene)) then
-         if (rank == manager) call run_scene(scene, quiet, error)
-         call agree(error)
+         if (self%rank == manager) call run_scene(scene, quiet, error)
+         call agree(self, error)
          return
       end if
-      call batch_plan(scene, n_ranks, batch)
-      if (rank == manager) then
+      call batch_plan(scene, self%n_ranks, batch)
+      if (self%rank == manager) then
          call batch_open(batch, quiet, error)
-         call agree(error)
+         call agree(self, error)
          if (allocated(error)) return
-         call manage(batch, error, busy)
+         call manage(self, batch, error, busy)
          if (allocated(error)) then
             call batch_discard(batch)
          else
             call batch_commit(batch, error)
          end if
       else
-         call agree(error)
+         call agree(self, error)
          if (allocated(error)) return
          call work(batch, busy)
       end if
-      call agree(error)
+      call agree(self, error)
       written_ok = .true.
       if (allocated(error)) written_ok = error%code == err_points_failed
-      call report_balance(busy, written_ok)
+      call report_balance(self, busy, written_ok)
    end subroutine run_scene_everywhere
 
    !> Make the outcome collective: if any rank has an error, all have one, the most
    !> severe (bad input, then a failed computation, then failed points in a written
    !> file), with the message of the lowest rank holding it; the others get the same
    !> code and an empty message, so that one rank prints it.
-   subroutine agree(error)
+   subroutine agree(self, error)
+      class(mpi_runner_t), intent(in) :: self
       type(error_t), allocatable, intent(inout) :: error
       integer, parameter :: severity_of_status(0:3) = [0, 2, 3, 1]  ! exit status -> severity
       integer, parameter :: code_of_severity(3) = [err_points_failed, 0, err_input]
       integer :: mine(2), worst(2)
-      mine = [0, n_ranks]
-      if (allocated(error)) mine = [severity_of_status(exit_status(error)), rank]
+      mine = [0, self%n_ranks]
+      if (allocated(error)) mine = [severity_of_status(exit_status(error)), self%rank]
       ! the highest severity, and among the ranks with it the lowest rank number
       call MPI_Allreduce(mine(1), worst(1), 1, MPI_INTEGER, MPI_MAX, MPI_COMM_WORLD)
-      if (mine(1) /= worst(1)) mine(2) = n_ranks
+      if (mine(1) /= worst(1)) mine(2) = self%n_ranks
       call MPI_Allreduce(mine(2), worst(2), 1, MPI_INTEGER, MPI_MIN, MPI_COMM_WORLD)
       if (worst(1) == 0) return
-      if (rank /= worst(2)) call set_error(error, code_of_severity(worst(1)), "")
+      if (self%rank /= worst(2)) call set_error(error, code_of_severity(worst(1)), "")
    end subroutine agree
 
    !> Rank 0: hand out units, compute some, write all in order. Returns the first error
    !> (a failed point, a write failure); after one, no new unit is started and the
    !> queued ones are drained.
-   subroutine manage(batch, error, busy)
+   subroutine manage(self, batch, error, busy)
+      class(mpi_runner_t), intent(in) :: self
       type(batch_t), intent(inout) :: batch
       type(error_t), allocatable, intent(out) :: error
       real(wp), intent(out) :: busy(2)  !! seconds rank 0 spent computing units: CPU, wall
@@ -182,16 +145,16 @@ contains
       logical :: computes, arrived
       type(MPI_Status) :: probe
 
-      allocate (m%done(batch%n_units), m%queued(n_ranks - 1))
+      allocate (m%done(batch%n_units), m%queued(self%n_ranks - 1))
       m%queued = 0
       ! with many ranks, rank 0 only manages: answering at once keeps the others busy
-      computes = n_ranks <= 8
+      computes = self%n_ranks <= 8
       do d = 1, queue_depth
-         do w = 1, n_ranks - 1
+         do w = 1, self%n_ranks - 1
             call assign(m, batch, w)
          end do
       end do
-      do w = 1, n_ranks - 1
+      do w = 1, self%n_ranks - 1
          if (m%queued(w) == 0) call MPI_Send(0, 1, MPI_INTEGER, w, tag_assign, MPI_COMM_WORLD)
       end do
       do
@@ -201,7 +164,7 @@ contains
             if (.not. arrived) exit
             call receive_result(m, batch, probe%MPI_SOURCE, error)
          end do
-         if (.not. m%stopping .and. m%next_unit <= batch%n_units .and. (computes .or. n_ranks == 1)) then
+         if (.not. m%stopping .and. m%next_unit <= batch%n_units .and. (computes .or. self%n_ranks == 1)) then
             m%next_unit = m%next_unit + 1
             call compute_timed(batch, m%next_unit - 1, m%done(m%next_unit - 1), m%busy)
             call write_ready(m, batch, error)
@@ -301,67 +264,41 @@ contains
    !> computing was spread: the busiest rank's computing time over the mean of the ranks
    !> that computed, in CPU time (the work, whatever else runs on the machine) and in wall
    !> time.
-   subroutine report_balance(busy, succeeded)
+   subroutine report_balance(self, busy, succeeded)
+      class(mpi_runner_t), intent(in) :: self
       real(wp), intent(in) :: busy(2)    !! this rank's computing time [s]: CPU, wall
       logical, intent(in) :: succeeded   !! the same on every rank
-      real(wp) :: all_busy(2, n_ranks), mean(2)
+      real(wp) :: all_busy(2, self%n_ranks), mean(2)
       integer :: n_computing
       character(len=240) :: text
       call MPI_Gather(busy, 2, MPI_DOUBLE_PRECISION, all_busy, 2, MPI_DOUBLE_PRECISION, manager, MPI_COMM_WORLD)
-      if (rank /= manager .or. quiet .or. .not. succeeded .or. n_ranks == 1) return
+      if (self%rank /= manager .or. self%quiet .or. .not. succeeded .or. self%n_ranks == 1) return
       n_computing = count(all_busy(2, :) > 0.0_wp)
       if (n_computing == 0) return
       mean = sum(all_busy, dim=2)/n_computing
-      write (text, '(a,i0,a,i0,a,es9.3,a,f6.3,a,es9.3,a,f6.3,a)') "hillstab_mpi: ", n_computing, " of ", n_ranks, &
+      write (text, '(a,i0,a,i0,a,es9.3,a,f6.3,a,es9.3,a,f6.3,a)') "hillstab_mpi: ", n_computing, " of ", self%n_ranks, &
          " ranks computed; per rank: CPU mean ", mean(1), " s, busiest/mean ", &
          maxval(all_busy(1, :))/max(mean(1), tiny(1.0_wp)), "; wall mean ", mean(2), " s, busiest/mean ", &
          maxval(all_busy(2, :))/max(mean(2), tiny(1.0_wp)), " (load balance)"
       write (error_unit, '(a)') trim(text)
    end subroutine report_balance
+end module hillstab_mpi_runner
 
-   function command_argument(i) result(text)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: text
-      integer :: length
-      call get_command_argument(i, length=length)
-      allocate (character(len=length) :: text)
-      call get_command_argument(i, text)
-   end function command_argument
-
-   !> `message` on rank 0, nothing elsewhere (for messages every rank would print alike).
-   function on_manager(message) result(text)
-      character(len=*), intent(in) :: message
-      character(len=:), allocatable :: text
-      text = ""
-      if (rank == manager) text = message
-   end function on_manager
-
-   !> Finish MPI and exit with `status`, printing `message` on stderr unless it is empty.
-   subroutine quit(message, status)
-      character(len=*), intent(in) :: message
-      integer, intent(in) :: status
-      if (len(message) > 0) write (error_unit, '(a)') message
-      call MPI_Finalize()
-      call ieee_set_flag(ieee_all, .false.)
-      stop status, quiet=.true.
-   end subroutine quit
-
-   subroutine print_help()
-      write (output_unit, '(a)') &
-         "usage: mpirun -np N hillstab_mpi [--quiet] SCENE.nml...", &
-         "", &
-         "hillstab spread over MPI ranks: the points of chart, points and lyapunov scenes", &
-         "are computed on all ranks (dynamic load balancing), rank 0 writes the same file", &
-         "as a single-process hillstab run; other tasks run on rank 0.", &
-         "Each SCENE is a namelist file (&scene plus the group of its task);", &
-         "results go to <output>_<task>.dat, gnuplot-ready. The README has the full", &
-         "namelist reference and 'Running on a cluster'.", &
-         "", &
-         "  -q, --quiet    no progress or messages on stderr (errors still)", &
-         "  -h, --help     this text", &
-         "  -V, --version  the version", &
-         "", &
-         "Exit status (every rank): 0 success, 2 bad input, 3 the file was written but some", &
-         "points failed (status 2 in the file), 1 a computation failed."
-   end subroutine print_help
+program hillstab_mpi
+   use mpi_f08, only: MPI_Init, MPI_Comm_rank, MPI_Comm_size, MPI_COMM_WORLD
+   use hillstab_mpi_runner, only: mpi_runner_t
+   use hillstab_batch_cli, only: run_command_line
+   implicit none
+   type(mpi_runner_t) :: runner
+   call MPI_Init()
+   call MPI_Comm_rank(MPI_COMM_WORLD, runner%rank)
+   call MPI_Comm_size(MPI_COMM_WORLD, runner%n_ranks)
+   runner%program = "hillstab_mpi"
+   runner%usage = [character(len=64) :: "mpirun -np N hillstab_mpi [--quiet] SCENE.nml...", &
+                   "hillstab_mpi --template TASK > SCENE.nml"]
+   runner%description = [character(len=80) :: &
+      "hillstab spread over MPI ranks: the points of chart, points and lyapunov scenes", &
+      "are computed on all ranks (dynamic load balancing), rank 0 writes the same file", &
+      "as a single-process hillstab run; other tasks run on rank 0."]
+   call run_command_line(runner)
 end program hillstab_mpi

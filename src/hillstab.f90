@@ -1,13 +1,5 @@
 !> The umbrella module of hillstab, the stability of the elastic pendulum through the Hill
 !> equation x'' + Q(τ) x = 0 and Floquet theory: it re-exports the public API.
-!>
-!>```fortran
-!> use hillstab
-!> type(floquet_t) :: f
-!> f = floquet_from_trace(trace_segmented(hill_model_t(model_elastic, 1.48_wp, 2.47_wp, 0.0_wp), &
-!>                        256, sampling_average), 0.0_wp)
-!> print *, f%trace%value, f%stable
-!>```
 module hillstab
    use hillstab_core_kinds
    use hillstab_core_error
@@ -31,10 +23,6 @@ module hillstab
    use hillstab_pendulum_lyapunov
    use hillstab_pendulum_gsl_lyapunov
    use hillstab_pendulum_poincare
-   use hillstab_batch_scene
-   use hillstab_batch_output
-   use hillstab_batch_tasks
-   use hillstab_batch_task_series
    implicit none
    public
 end module hillstab

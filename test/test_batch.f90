@@ -6,10 +6,13 @@
 module test_batch
    use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, err_input, err_io, err_integration, err_invalid_parameter, err_points_failed
-   use hillstab_batch_scene, only: scene_t, read_scene
+   use hillstab_batch_scene, only: scene_t
+   use hillstab_batch_scene_read, only: read_scene
    use hillstab_batch_tasks, only: run_scene, output_path
    use hillstab_batch_units, only: batch_t, batch_result_t, batch_plan, batch_unit_range, batch_compute, batch_open, &
-      batch_write, batch_commit, batch_discard, run_batch, exit_status
+      batch_write, batch_commit, batch_discard, run_batch
+   use hillstab_batch_cli, only: exit_status
+   use hillstab_batch_task_points, only: points_task_t
    use hillstab_testing
    use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text
    implicit none
@@ -169,9 +172,12 @@ contains
          scene)
       call delete_file(points)
       do n = 1, 2000, 37
-         deallocate (scene%points)
-         allocate (scene%points(2, n))
-         scene%points = 1.0_wp
+         select type (task => scene%task)
+         type is (points_task_t)
+            deallocate (task%points)
+            allocate (task%points(2, n))
+            task%points = 1.0_wp
+         end select
          do workers = 1, 9, 4
             call batch_plan(scene, workers, batch)
             next = 1

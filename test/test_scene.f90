@@ -6,9 +6,20 @@
 module test_scene
    use hillstab_core_kinds, only: wp, pi2
    use hillstab_core_error, only: error_t, err_input
+   use hillstab_core_text, only: real_text, read_text_line
    use hillstab_hill_coefficient, only: model_elastic, model_mathieu, sampling_endpoint, sampling_average
    use hillstab_integrate_monodromy, only: method_auto, method_segments
-   use hillstab_batch_scene
+   use hillstab_batch_scene, only: scene_t, scene_namelist
+   use hillstab_batch_scene_read, only: read_scene
+   use hillstab_batch_scene_file, only: max_line_length
+   use hillstab_batch_declaration, only: group_t
+   use hillstab_batch_group_chart, only: chart_grid_t, grid_value
+   use hillstab_batch_task_chart, only: chart_task_t
+   use hillstab_batch_task_points, only: points_task_t
+   use hillstab_batch_task_coefficient, only: coefficient_task_t
+   use hillstab_batch_task_registry, only: task_names, new_task
+   use hillstab_batch_scene, only: task_t
+   use hillstab_batch_templates, only: scene_template
    use hillstab_testing
    use, intrinsic :: iso_c_binding, only: c_int
    implicit none
@@ -16,7 +27,7 @@ module test_scene
    public :: collect_scene
    public :: scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text
    public :: padded, bad_case_t, bad_cases, bad_case_text, write_bad_points_files, delete_bad_points_files
-   public :: c_getpid
+   public :: c_getpid, grid_of, points_of, coefficient_of
 
    !> One bad scene: its text (`@OUT@` stands for the output prefix, `@DIR@` for the
    !> scratch prefix of the points files), the group and variable the message must name.
@@ -46,8 +57,40 @@ contains
          new_unittest("namelist_round_trip", namelist_round_trip), &
          new_unittest("bad_input_messages", bad_input_messages), &
          new_unittest("missing_scene_file", missing_scene_file), &
-         new_unittest("hostile_scene_files", hostile_scene_files)])
+         new_unittest("hostile_scene_files", hostile_scene_files), &
+         new_unittest("groups_declared_once", groups_declared_once)])
    end function collect_scene
+
+   !> The grid of a chart scene (a zero grid for another task).
+   function grid_of(scene) result(grid)
+      type(scene_t), intent(in) :: scene
+      type(chart_grid_t) :: grid
+      select type (task => scene%task)
+      type is (chart_task_t)
+         grid = task%grid
+      end select
+   end function grid_of
+
+   !> The points of a points scene (none for another task).
+   function points_of(scene) result(points)
+      type(scene_t), intent(in) :: scene
+      real(wp), allocatable :: points(:, :)
+      allocate (points(2, 0))
+      select type (task => scene%task)
+      type is (points_task_t)
+         points = task%points
+      end select
+   end function points_of
+
+   !> The task of a coefficient scene.
+   function coefficient_of(scene) result(coefficient)
+      type(scene_t), intent(in) :: scene
+      type(coefficient_task_t) :: coefficient
+      select type (task => scene%task)
+      type is (coefficient_task_t)
+         coefficient = task
+      end select
+   end function coefficient_of
 
    !> A unique scratch path prefix under build/ for this process and test.
    function scratch_prefix(name) result(prefix)
@@ -138,13 +181,14 @@ contains
 
    subroutine defaults(ctx)
       type(test_context_t), intent(inout) :: ctx
+      type(chart_grid_t) :: grid
       type(scene_t) :: scene
       type(error_t), allocatable :: error
       character(len=:), allocatable :: path
       call read_text_scene("defaults", ["&scene /", "&chart /"], scene, error, path)
       call check(ctx, .not. allocated(error), "defaults read")
       if (allocated(error)) return
-      call check(ctx, scene%task == task_chart, "task chart")
+      call check(ctx, scene%task%name == "chart", "task chart")
       call check(ctx, scene%model == model_elastic, "model elastic")
       call check(ctx, scene%method%kind == method_auto, "method auto")
       call check(ctx, scene%method%n_segments == 2, "n_segments 2")
@@ -153,15 +197,17 @@ contains
       call check(ctx, scene%epsilon, 0.0_wp)
       ! output defaults to the scene file name without directory and extension
       call check(ctx, scene%output == path(len("build/") + 1:len(path) - len(".nml")), "default output "//scene%output)
-      call check(ctx, scene%chart%alpha_min, 0.0_wp)
-      call check(ctx, scene%chart%alpha_max, 9.8_wp)
-      call check(ctx, scene%chart%beta_min, -2.0_wp)
-      call check(ctx, scene%chart%beta_max, 12.0_wp)
-      call check(ctx, scene%chart%n_alpha == 200 .and. scene%chart%n_beta == 200, "200 x 200")
+      grid = grid_of(scene)
+      call check(ctx, grid%alpha_min, 0.0_wp)
+      call check(ctx, grid%alpha_max, 9.8_wp)
+      call check(ctx, grid%beta_min, -2.0_wp)
+      call check(ctx, grid%beta_max, 12.0_wp)
+      call check(ctx, grid%n_alpha == 200 .and. grid%n_beta == 200, "200 x 200")
    end subroutine defaults
 
    subroutine group_order_and_comments(ctx)
       type(test_context_t), intent(inout) :: ctx
+      type(chart_grid_t) :: grid
       type(scene_t) :: scene
       type(error_t), allocatable :: error
       character(len=:), allocatable :: path
@@ -183,15 +229,17 @@ contains
       call check(ctx, scene%method%sampling == sampling_average, "average")
       call check(ctx, scene%epsilon, 0.5_wp)
       call check(ctx, scene%output == "build/x!y", "'!' inside a string is not a comment")
-      call check(ctx, scene%chart%n_alpha == 3 .and. scene%chart%n_beta == 4, "chart counts")
-      call check(ctx, scene%chart%alpha_max, 9.7_wp)
-      call check(ctx, scene%chart%beta_max, 12.0_wp)
+      grid = grid_of(scene)
+      call check(ctx, grid%n_alpha == 3 .and. grid%n_beta == 4, "chart counts")
+      call check(ctx, grid%alpha_max, 9.7_wp)
+      call check(ctx, grid%beta_max, 12.0_wp)
       call check(ctx, grid_value(0.0_wp, 9.7_wp, 3, 2), 4.85_wp)
       call check(ctx, grid_value(0.0_wp, 9.7_wp, 3, 3), 9.7_wp, abs=0.0_wp, rel=0.0_wp)
    end subroutine group_order_and_comments
 
    subroutine coefficient_list(ctx)
       type(test_context_t), intent(inout) :: ctx
+      type(coefficient_task_t) :: c
       type(scene_t) :: scene
       type(error_t), allocatable :: error
       character(len=:), allocatable :: path
@@ -200,20 +248,23 @@ contains
       call check(ctx, .not. allocated(error), "coefficient read")
       if (allocated(error)) return
       ! two values given: exactly two, not the rest of the default list
-      call check(ctx, size(scene%coefficient%alphas) == 2, "two alphas")
-      call check(ctx, scene%coefficient%alphas(2), 9.7_wp)
-      call check(ctx, scene%coefficient%beta, 2.5_wp)
-      call check(ctx, scene%coefficient%n_tau == 5, "n_tau")
+      c = coefficient_of(scene)
+      call check(ctx, size(c%alphas) == 2, "two alphas")
+      if (size(c%alphas) == 2) call check(ctx, c%alphas(2), 9.7_wp)
+      call check(ctx, c%beta, 2.5_wp)
+      call check(ctx, c%n_tau == 5, "n_tau")
       call read_text_scene("coef2", [ padded("&scene task = 'coefficient' /"), padded("&coefficient /")], &
                            scene, error, path)
       call check(ctx, .not. allocated(error), "default coefficient read")
       if (allocated(error)) return
-      call check(ctx, size(scene%coefficient%alphas) == 6, "the paper's six alphas by default")
-      call check(ctx, scene%coefficient%alphas(6), 9.7_wp)
+      c = coefficient_of(scene)
+      call check(ctx, size(c%alphas) == 6, "the paper's six alphas by default")
+      if (size(c%alphas) == 6) call check(ctx, c%alphas(6), 9.7_wp)
    end subroutine coefficient_list
 
    subroutine points_file(ctx)
       type(test_context_t), intent(inout) :: ctx
+      real(wp), allocatable :: pairs(:, :)
       type(scene_t) :: scene
       type(error_t), allocatable :: error
       character(len=:), allocatable :: path, points
@@ -225,9 +276,12 @@ contains
       call delete_file(points)
       call check(ctx, .not. allocated(error), "points read")
       if (allocated(error)) return
-      call check(ctx, size(scene%points, 2) == 3, "three points")
-      call check(ctx, scene%points(1, 2), 3.70_wp)
-      call check(ctx, scene%points(2, 3), 0.76_wp)
+      pairs = points_of(scene)
+      call check(ctx, size(pairs, 2) == 3, "three points")
+      if (size(pairs, 2) == 3) then
+         call check(ctx, pairs(1, 2), 3.70_wp)
+         call check(ctx, pairs(2, 3), 0.76_wp)
+      end if
    end subroutine points_file
 
    subroutine real_text_round_trip(ctx)
@@ -252,6 +306,7 @@ contains
    !> The namelist lines of `scene_namelist`, read back as a scene, give the same scene.
    subroutine namelist_round_trip(ctx)
       type(test_context_t), intent(inout) :: ctx
+      type(coefficient_task_t) :: c
       type(scene_t) :: first, second
       type(error_t), allocatable :: error
       character(len=:), allocatable :: path, lines(:), header(:)
@@ -275,17 +330,18 @@ contains
          call check(ctx, .false., error%message)
          return
       end if
-      call check(ctx, second%task == first%task .and. second%model == first%model, "task, model")
+      call check(ctx, second%task%name == first%task%name .and. second%model == first%model, "task, model")
       call check(ctx, second%method%kind == first%method%kind .and. second%method%n_segments == 7 .and. &
                  second%method%sampling == first%method%sampling, "method")
       call check(ctx, second%method%tolerance, first%method%tolerance, rel=0.0_wp, abs=0.0_wp)
       call check(ctx, second%epsilon, first%epsilon, rel=0.0_wp, abs=0.0_wp)
       call check(ctx, second%output == "build/it's", "quote in output: "//second%output)
-      call check(ctx, size(second%coefficient%alphas) == 2, "alphas")
-      call check(ctx, second%coefficient%alphas(2), 9.8696_wp, rel=0.0_wp, abs=0.0_wp)
-      call check(ctx, second%coefficient%beta, -1.5_wp, rel=0.0_wp, abs=0.0_wp)
-      call check(ctx, second%coefficient%tau_max, 4.25_wp, rel=0.0_wp, abs=0.0_wp)
-      call check(ctx, second%coefficient%n_tau == 11, "n_tau")
+      c = coefficient_of(second)
+      call check(ctx, size(c%alphas) == 2, "alphas")
+      if (size(c%alphas) == 2) call check(ctx, c%alphas(2), 9.8696_wp, rel=0.0_wp, abs=0.0_wp)
+      call check(ctx, c%beta, -1.5_wp, rel=0.0_wp, abs=0.0_wp)
+      call check(ctx, c%tau_max, 4.25_wp, rel=0.0_wp, abs=0.0_wp)
+      call check(ctx, c%n_tau == 11, "n_tau")
    end subroutine namelist_round_trip
 
    !> Bad scenes: the tasks suite runs the same table to check that no file is touched.
@@ -487,6 +543,8 @@ contains
    !> columns; a points file with a long line.
    subroutine hostile_scene_files(ctx)
       type(test_context_t), intent(inout) :: ctx
+      type(chart_grid_t) :: grid
+      real(wp), allocatable :: pairs(:, :)
       type(scene_t) :: scene
       type(error_t), allocatable :: error
       character(len=:), allocatable :: path, points
@@ -506,7 +564,10 @@ contains
       close (unit)
       call read_scene(path, scene, error)
       call check(ctx, .not. allocated(error), "no final newline is accepted")
-      if (.not. allocated(error)) call check(ctx, scene%chart%n_alpha == 3, "the last line is read")
+      if (.not. allocated(error)) then
+         grid = grid_of(scene)
+         call check(ctx, grid%n_alpha == 3, "the last line is read")
+      end if
       ! a string longer than 4096 characters
       call write_file(path, ["&scene output='"//repeat("o", 5000)//"' /", "&chart /"//repeat(" ", 5010)])
       call read_scene(path, scene, error)
@@ -520,10 +581,11 @@ contains
       call read_scene(path, scene, error)
       call check(ctx, .not. allocated(error), "extra columns accepted")
       if (.not. allocated(error)) then
-         call check(ctx, size(scene%points, 2) == 3, "three points")
-         if (size(scene%points, 2) == 3) then
-            call check(ctx, scene%points(1, 1) == 1.5_wp .and. scene%points(2, 1) == 2.5_wp, "first point")
-            call check(ctx, scene%points(1, 3) == 0.1_wp .and. scene%points(2, 3) == 4.0_wp, "tab separated")
+         pairs = points_of(scene)
+         call check(ctx, size(pairs, 2) == 3, "three points")
+         if (size(pairs, 2) == 3) then
+            call check(ctx, pairs(1, 1) == 1.5_wp .and. pairs(2, 1) == 2.5_wp, "first point")
+            call check(ctx, pairs(1, 3) == 0.1_wp .and. pairs(2, 3) == 4.0_wp, "tab separated")
          end if
       end if
       open (newunit=unit, file=points, status="replace", action="write", access="stream")
@@ -536,4 +598,61 @@ contains
       call delete_file(points)
       call delete_file(path)
    end subroutine hostile_scene_files
+
+   !> Every group of every task is declared once: its template reads back (so each group's
+   !> namelist statement lists the declared variables in the declared order — the reader
+   !> checks the values the namelist writes back against the declaration), and the
+   !> effective scene names exactly the declared variables of each group it writes.
+   subroutine groups_declared_once(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: names(:), text, path, lines(:), points
+      class(task_t), allocatable :: task
+      type(group_t), allocatable :: groups(:)
+      type(scene_t) :: scene
+      type(error_t), allocatable :: error
+      integer :: k, g, v
+      names = task_names()
+      do k = 1, size(names)
+         call scene_template(trim(names(k)), text, error)
+         call check(ctx, .not. allocated(error), trim(names(k))//": a template")
+         if (allocated(error)) cycle
+         path = scratch_prefix("declared_"//trim(names(k)))//".nml"
+         points = path//".dat"
+         call write_file(points, ["1.0 2.0"])
+         call write_file(path, [replaced_text(text, "'points.dat'", "'"//points//"'")])
+         call read_scene(path, scene, error)
+         call delete_file(path)
+         call delete_file(points)
+         call check(ctx, .not. allocated(error), trim(names(k))//": the template reads")
+         if (allocated(error)) then
+            call check(ctx, .false., error%message)
+            cycle
+         end if
+         call new_task(trim(names(k)), task, error)
+         groups = task%declarations()
+         lines = scene_namelist(scene)
+         do g = 1, size(groups)
+            ! the task's groups follow &scene in the effective scene
+            call check(ctx, index(lines(1 + g), "&"//groups(g)%name//" ") == 1 .or. &
+               lines(1 + g) == "&"//groups(g)%name//" /", trim(names(k))//": group "//groups(g)%name// &
+               " in the effective scene: "//trim(lines(1 + g)))
+            do v = 1, size(groups(g)%variables)
+               associate (name => groups(g)%variables(v)%name)
+                  if (len(groups(g)%variables(v)%default) == 0 .and. .not. groups(g)%variables(v)%required) cycle
+                  call check(ctx, index(lines(1 + g), " "//name//" = ") > 0, trim(names(k))//": &"// &
+                     groups(g)%name//" writes "//name)
+               end associate
+            end do
+         end do
+      end do
+   end subroutine groups_declared_once
+
+   function replaced_text(text, old, new) result(out)
+      character(len=*), intent(in) :: text, old, new
+      character(len=:), allocatable :: out
+      integer :: at
+      out = text
+      at = index(out, old)
+      if (at > 0) out = out(:at - 1)//new//out(at + len(old):)
+   end function replaced_text
 end module test_scene

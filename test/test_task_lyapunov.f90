@@ -7,7 +7,8 @@
 module test_task_lyapunov
    use hillstab_core_kinds, only: wp, pi2
    use hillstab_core_error, only: error_t, err_input
-   use hillstab_batch_scene, only: scene_t, read_scene
+   use hillstab_batch_scene, only: scene_t
+   use hillstab_batch_scene_read, only: read_scene
    use hillstab_batch_tasks, only: run_scene_file, output_path
    use hillstab_batch_units, only: run_batch
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart, pendulum_initial_state

@@ -3,7 +3,10 @@
 !> scene, and every task the scene reader accepts has one.
 module test_templates
    use hillstab_core_error, only: error_t, err_input
-   use hillstab_batch_scene, only: scene_t, read_scene, default_scene, scene_namelist, task_name
+   use hillstab_batch_scene, only: scene_t, task_t, scene_namelist
+   use hillstab_batch_scene_read, only: read_scene
+   use hillstab_batch_declaration, only: group_t
+   use hillstab_batch_task_registry, only: new_task, task_names
    use hillstab_batch_templates, only: template_task_names, scene_template
    use test_scene, only: scratch_prefix, write_file, delete_file
    use hillstab_testing
@@ -56,12 +59,16 @@ contains
       call read_scene(path, scene, error)
    end subroutine read_template
 
+   !> A template read back gives the scene of its task with every group given empty: its
+   !> values are the defaults.
    subroutine templates_read_back_as_defaults(ctx)
       type(test_context_t), intent(inout) :: ctx
-      character(len=:), allocatable :: names(:), path, got(:), expected(:)
+      character(len=:), allocatable :: names(:), path, got(:), expected(:), minimal(:)
       type(scene_t) :: scene, defaults
       type(error_t), allocatable :: error
-      integer :: k
+      class(task_t), allocatable :: task
+      type(group_t), allocatable :: groups(:)
+      integer :: k, g
       names = template_task_names()
       do k = 1, size(names)
          call read_template(trim(names(k)), path, scene, error)
@@ -69,13 +76,28 @@ contains
             call check(ctx, .false., trim(names(k))//": "//error%message)
             cycle
          end if
-         call check(ctx, task_name(scene%task) == trim(names(k)), trim(names(k))//": the template's task")
-         defaults = default_scene(path, scene%task)
-         defaults%points_file = scene%points_file
+         call check(ctx, scene%task%name == trim(names(k)), trim(names(k))//": the template's task")
+         call new_task(trim(names(k)), task, error)
+         groups = task%declarations()
+         allocate (character(len=200) :: minimal(1 + size(groups)))
+         minimal(1) = "&scene task = '"//trim(names(k))//"' /"
+         do g = 1, size(groups)
+            minimal(1 + g) = "&"//groups(g)%name//" /"
+            if (groups(g)%name == "points") minimal(1 + g) = "&points file = '"//path//".points' /"
+         end do
+         call write_file(path, minimal)
+         call read_scene(path, defaults, error)
+         deallocate (minimal)
+         if (allocated(error)) then
+            call check(ctx, .false., trim(names(k))//" (empty groups): "//error%message)
+            cycle
+         end if
          got = scene_namelist(scene)
          expected = scene_namelist(defaults)
-         call check(ctx, all(got == expected), trim(names(k))//": values are the defaults: "// &
-            trim(got(1))//" "//trim(got(2))//" against "//trim(expected(1))//" "//trim(expected(2)))
+         call check(ctx, size(got) == size(expected), trim(names(k))//": as many groups")
+         if (size(got) == size(expected)) call check(ctx, all(got == expected), trim(names(k))// &
+            ": values are the defaults: "//trim(got(1))//" "//trim(got(2))//" against "//trim(expected(1))//" "// &
+            trim(expected(2)))
          call delete_file(path)
          call delete_file(path//".points")
       end do
@@ -104,7 +126,7 @@ contains
                start = index(lines(line)(:at - 1), " ", back=.true.) + 1
                variable = lines(line)(start:at - 1)
                call check(ctx, index(text, " "//variable//" = ") > 0, trim(names(k))//": the template "// &
-                  "names '"//variable//"' (add it in src/hillstab/batch/templates.f90)")
+                  "names '"//variable//"' (declare it in its group)")
                from = at + 3
             end do
          end do
@@ -161,23 +183,15 @@ contains
    !> has a template.
    subroutine every_task_has_a_template(ctx)
       type(test_context_t), intent(inout) :: ctx
-      character(len=:), allocatable :: names(:), path, name
-      type(scene_t) :: scene
+      character(len=:), allocatable :: names(:), text
       type(error_t), allocatable :: error
-      integer :: task
-      names = template_task_names()
-      path = scratch_prefix("template_task")//".nml"
-      do task = 1, 100
-         name = task_name(task)
-         if (name == "unknown") exit
-         call write_file(path, ["&scene task = '"//name//"' /"])
-         call read_scene(path, scene, error)
-         if (allocated(error)) then
-            if (index(error%message, "not available") > 0) cycle
-         end if
-         call check(ctx, any(names == name), "task '"//name//"' has a template (add one in src/hillstab/batch/templates.f90)")
+      integer :: k
+      names = task_names()
+      do k = 1, size(names)
+         call scene_template(trim(names(k)), text, error)
+         call check(ctx, .not. allocated(error) .and. any(template_task_names() == names(k)), "task '"// &
+            trim(names(k))//"' has a template")
       end do
-      call delete_file(path)
    end subroutine every_task_has_a_template
 
    subroutine unknown_task(ctx)

@@ -15,6 +15,7 @@
 !> call install_signal_cleanup()
 !>```
 module hillstab_batch_signals
+   use hillstab_ffi_libc, only: c_signal, c_unlink, c_exit_now
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_funptr, c_funloc, c_intptr_t
    implicit none
    private
@@ -33,23 +34,6 @@ module hillstab_batch_signals
    !> Watched paths, NUL-terminated; a slot is free when its first character is NUL.
    character(kind=c_char), volatile, save :: watched(max_watched_path + 1, n_slots) = c_null_char
 
-   interface
-      function c_signal(signum, handler) bind(C, name="signal") result(previous)
-         import :: c_int, c_funptr
-         integer(c_int), value :: signum
-         type(c_funptr), value :: handler
-         type(c_funptr) :: previous
-      end function c_signal
-      function c_unlink(path) bind(C, name="unlink") result(status)
-         import :: c_int, c_char
-         character(kind=c_char), intent(in) :: path(*)
-         integer(c_int) :: status
-      end function c_unlink
-      subroutine c_exit_now(status) bind(C, name="_exit")
-         import :: c_int
-         integer(c_int), value :: status
-      end subroutine c_exit_now
-   end interface
 
 contains
 

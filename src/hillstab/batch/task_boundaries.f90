@@ -20,12 +20,18 @@ module hillstab_batch_task_boundaries
    use hillstab_curves_hill_method, only: hill_boundary_t, hill_boundaries, coexistence_threshold
    use hillstab_curves_boundaries, only: boundary_check_t, verify_boundary, approximate_root_t, approximate_boundaries, &
       mathieu_witness, beta_accuracy_factor, gsl_witness_max_q
-   use hillstab_batch_scene, only: scene_t, scene_header, grid_value, real_text, integer_text, output_path
-   use hillstab_batch_output, only: output_file_t, open_output, finish_output, discard_output, write_header, write_text
-   use hillstab_core_text, only: format_es
+   use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, open_scene_output
+   use hillstab_batch_declaration, only: group_t
+   use hillstab_batch_scene_file, only: scene_file_t, fail
+   use hillstab_batch_scene_checks, only: max_boundaries_magnitude
+   use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value
+   use hillstab_batch_columns, only: column_t, style_e17, style_e4, style_integer, style_width2, style_width4, &
+      columns_text, put_row, all_columns
+   use hillstab_batch_output, only: output_file_t, finish_output, discard_output, write_header, write_text
+   use hillstab_core_text, only: real_text, integer_text
    implicit none
    private
-   public :: run_boundaries, boundary_columns, boundary_row_t, compute_boundary_rows
+   public :: boundaries_task_t, boundaries_task, boundary_row_t, compute_boundary_rows
 
    !> One row of the file: one curve at one α.
    type :: boundary_row_t
@@ -52,24 +58,96 @@ module hillstab_batch_task_boundaries
       character(len=:), allocatable :: message    !! why
    end type alpha_rows_t
 
+   !> The boundaries task and the grid of `&chart` (`n_beta` used by formula and segments).
+   type, extends(task_t) :: boundaries_task_t
+      type(chart_grid_t) :: grid  !! `&chart`
+   contains
+      procedure :: read => boundaries_read
+      procedure :: run => boundaries_run
+      procedure :: declarations => boundaries_declarations
+   end type boundaries_task_t
+
 contains
+
+   !> `&chart`.
+   function boundaries_declarations(self) result(groups)
+      class(boundaries_task_t), intent(in) :: self  !! the task
+      type(group_t), allocatable :: groups(:)
+      groups = [chart_group()]
+   end function boundaries_declarations
+
+   !> A boundaries task before its scene is read.
+   function boundaries_task() result(task)
+      type(boundaries_task_t) :: task
+      task%name = "boundaries"
+   end function boundaries_task
+
+   !> `&chart`, bounded for Hill's method; the curves are those of the undamped equation.
+   subroutine boundaries_read(self, file, scene, error)
+      class(boundaries_task_t), intent(inout) :: self  !! the task, its grid filled in
+      type(scene_file_t), intent(in) :: file      !! the scene file
+      type(scene_t), intent(in) :: scene          !! the `&scene` settings
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
+      if (scene%epsilon > 0.0_wp .and. .not. scene%physical) then
+         call fail(error, file%path, "scene", "epsilon", "task 'boundaries' draws the undamped curves: epsilon must be 0")
+         return
+      end if
+      allocate (self%groups(1))
+      call read_chart_group(file, chart_group(), scene%model, self%grid, self%groups(1), error)
+      if (allocated(error)) return
+      call check_boundaries_cost(scene, self%grid, error)
+   end subroutine boundaries_read
+
+   !> The boundaries task (Hill's method, its matrix growing with sqrt|alpha|) is bounded
+   !> to |alpha|, |beta| <= max_boundaries_magnitude.
+   subroutine check_boundaries_cost(scene, grid, error)
+      type(scene_t), intent(in) :: scene
+      type(chart_grid_t), intent(in) :: grid
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: why = " for task boundaries (the cost of Hill's method grows with the magnitude)"
+      if (max(abs(grid%alpha_min), abs(grid%alpha_max)) > max_boundaries_magnitude) then
+         call fail(error, scene%source, "chart", merge("alpha_max", "alpha_min", &
+            abs(grid%alpha_max) >= abs(grid%alpha_min)), "|alpha| must be <= "// &
+            real_text(max_boundaries_magnitude)//why)
+      else if (max(abs(grid%beta_min), abs(grid%beta_max)) > max_boundaries_magnitude) then
+         call fail(error, scene%source, "chart", merge("beta_max", "beta_min", &
+            abs(grid%beta_max) >= abs(grid%beta_min)), "|beta| must be <= "// &
+            real_text(max_boundaries_magnitude)//why)
+      end if
+   end subroutine check_boundaries_cost
 
    logical function exact_method(scene)
       type(scene_t), intent(in) :: scene
       exact_method = scene%method%kind /= method_formula .and. scene%method%kind /= method_segments
    end function exact_method
 
-   !> Column names of the boundaries file.
-   function boundary_columns(mathieu) result(names)
+   !> The columns of the boundaries file (the GSL witness columns for the Mathieu model).
+   function boundary_columns(mathieu) result(table)
       logical, intent(in) :: mathieu  !! add the GSL witness columns
-      character(len=:), allocatable :: names
-      names = "alpha beta kind order branch curve coexist status check beta_error modes"
-      if (mathieu) names = names//" beta_gsl gsl_ok"
+      type(column_t), allocatable :: table(:)
+      allocate (table(merge(13, 11, mathieu)))
+      table(1) = column_t("alpha", "", "alpha of the boundary point", style_e17)
+      table(2) = column_t("beta", "", "beta of the boundary point", style_e17)
+      table(3) = column_t("kind", "", "S on the curve: +2 periodic, -2 antiperiodic", style_integer)
+      table(4) = column_t("order", "", "n of a_n/b_n", style_width4)
+      table(5) = column_t("branch", "", "exact 1 = a_n (even), 2 = b_n (odd); approximate 1 = lower, 2 = upper edge", &
+                          style_width2)
+      table(6) = column_t("curve", "", "the block's index (gnuplot index = curve)", style_width4)
+      table(7) = column_t("coexist", "", "1 when both curves of this order coincide", style_integer)
+      table(8) = column_t("status", "", "0 ok, 1 check by auto limited by round-off, 2 failed the check", style_integer)
+      table(9) = column_t("check", "", "S by auto at the point (approximate: S_method)", style_e17)
+      table(10) = column_t("beta_error", "", "estimated error of beta", style_e4)
+      table(11) = column_t("modes", "", "Fourier modes of the truncation (approximate: pieces)", style_integer)
+      if (mathieu) then
+         table(12) = column_t("beta_gsl", "", "GSL's value of the curve", style_e17)
+         table(13) = column_t("gsl_ok", "", "1 GSL agrees, 2 disagrees, 0 not used", style_integer)
+      end if
    end function boundary_columns
 
    !> All boundaries at one α, by Hill's method (checked by auto) or by root finding.
-   subroutine compute_boundary_rows(scene, alpha, rows, error)
+   subroutine compute_boundary_rows(scene, grid, alpha, rows, error)
       type(scene_t), intent(in) :: scene  !! a validated boundaries scene
+      type(chart_grid_t), intent(in) :: grid  !! its `&chart`
       real(wp), intent(in) :: alpha  !! the alpha of the rows
       type(boundary_row_t), allocatable, intent(out) :: rows(:)  !! one row per curve crossing the beta window
       type(error_t), allocatable, intent(out) :: error  !! what failed at this alpha; unallocated on success
@@ -80,7 +158,7 @@ contains
       integer :: i, j
       logical :: available
       if (exact_method(scene)) then
-         call hill_boundaries(scene%model, alpha, scene%chart%beta_min, scene%chart%beta_max, &
+         call hill_boundaries(scene%model, alpha, grid%beta_min, grid%beta_max, &
                               scene%method%tolerance, curves, error)
          if (allocated(error)) then
             allocate (rows(0))
@@ -120,8 +198,8 @@ contains
             end if
          end do
       else
-         call approximate_boundaries(scene%model, alpha, scene%method, scene%chart%beta_min, scene%chart%beta_max, &
-                                     max(scene%chart%n_beta, 2), scene%method%tolerance, roots, error)
+         call approximate_boundaries(scene%model, alpha, scene%method, grid%beta_min, grid%beta_max, &
+                                     max(grid%n_beta, 2), scene%method%tolerance, roots, error)
          if (allocated(error)) then
             allocate (rows(0))
             return
@@ -150,7 +228,8 @@ contains
    end subroutine compute_boundary_rows
 
    !> The boundaries task.
-   subroutine run_boundaries(scene, quiet, error)
+   subroutine boundaries_run(self, scene, quiet, error)
+      class(boundaries_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! a validated boundaries scene
       logical, intent(in) :: quiet  !! accepted for symmetry with the other tasks: nothing is printed
       type(error_t), allocatable, intent(out) :: error  !! what failed; unallocated on success
@@ -162,19 +241,20 @@ contains
       character(len=:), allocatable :: line, first_message
       type(error_t), allocatable :: cause
       real(wp) :: first_failure(2)
+      type(column_t), allocatable :: table(:)
       if (scene%epsilon > 0.0_wp) then   ! damping from &physical kappa
          call set_error(error, err_input, scene%source//": &physical: kappa: task 'boundaries' draws the "// &
             "undamped curves: kappa must be 0")
          return
       end if
-      call open_output(file, output_path(scene), error, context=scene%source//": &scene: output: ")
+      call open_scene_output(scene, file, error)
       if (allocated(error)) return
       mathieu = scene%model /= model_elastic
-      n_alpha = scene%chart%n_alpha
+      n_alpha = self%grid%n_alpha
       allocate (per_alpha(n_alpha))
       !$omp parallel do schedule(dynamic) default(shared) private(i, cause)
       do i = 1, n_alpha
-         call compute_boundary_rows(scene, grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i), &
+         call compute_boundary_rows(scene, self%grid, grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i), &
                                     per_alpha(i)%rows, cause)
          if (allocated(cause)) then
             per_alpha(i)%failed = .true.
@@ -198,7 +278,8 @@ contains
       end do
       call sort_keys(keys)
 
-      call write_header(file, header(scene, size(keys, 2)), boundary_columns(mathieu), error)
+      table = boundary_columns(mathieu)
+      call write_header(file, header(scene, self%grid, size(keys, 2)), columns_text(table, all_columns(table)), error)
       if (allocated(error)) then
          call discard_output(file)
          return
@@ -218,7 +299,7 @@ contains
                associate (r => per_alpha(i)%rows(j))
                   if (.not. all([r%order, r%branch, r%trace_sign] == keys(:, c))) cycle
                   if (any_written .and. last_i /= i - 1) call write_text(file, "", error)
-                  line = row_text(r, c - 1, mathieu)
+                  line = row_text(table, r, c - 1, mathieu)
                   call write_text(file, line, error)
                   if (r%status == status_failed) then
                      n_failed_rows = n_failed_rows + 1
@@ -243,7 +324,7 @@ contains
          do i = 1, n_alpha
             if (per_alpha(i)%failed) then
                first_message = "; Hill's method failed at alpha = "// &
-                  real_text(grid_value(scene%chart%alpha_min, scene%chart%alpha_max, n_alpha, i))//": "// &
+                  real_text(grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i))//": "// &
                   per_alpha(i)%message
                exit
             end if
@@ -256,7 +337,7 @@ contains
             output_path(scene)//") and "//integer_text(n_failed_alpha)//" alpha value(s) have no boundaries"// &
             first_message)
       end if
-   end subroutine run_boundaries
+   end subroutine boundaries_run
 
    !> Sort curve keys (order, branch, kind) by order, then branch.
    pure subroutine sort_keys(keys)
@@ -275,22 +356,27 @@ contains
    end subroutine sort_keys
 
    !> One data line.
-   function row_text(r, curve, mathieu) result(line)
+   function row_text(table, r, curve, mathieu) result(line)
+      type(column_t), intent(in) :: table(:)
       type(boundary_row_t), intent(in) :: r
       integer, intent(in) :: curve
       logical, intent(in) :: mathieu
       character(len=:), allocatable :: line
-      character(len=64) :: ints
-      write (ints, '(i3,1x,i4,1x,i2,1x,i4,1x,i1,1x,i1)') r%trace_sign, r%order, r%branch, curve, &
-         merge(1, 0, r%coexistent), r%status
-      line = format_es(r%alpha, 16)//" "//format_es(r%beta, 16)//" "//trim(adjustl(ints))//" "// &
-             format_es(r%check, 16)//" "//format_es(r%beta_error, 3)//" "//integer_text(r%modes)
-      if (mathieu) line = line//" "//format_es(r%beta_gsl, 16)//" "//integer_text(r%gsl_ok)
+      character(len=400) :: buffer
+      integer :: pos
+      real(wp), allocatable :: values(:)
+      values = [r%alpha, r%beta, real(r%trace_sign, wp), real(r%order, wp), real(r%branch, wp), real(curve, wp), &
+                merge(1.0_wp, 0.0_wp, r%coexistent), real(r%status, wp), r%check, r%beta_error, real(r%modes, wp)]
+      if (mathieu) values = [values, r%beta_gsl, real(r%gsl_ok, wp)]
+      pos = 0
+      call put_row(table, all_columns(table), values, buffer, pos)
+      line = buffer(:pos)
    end function row_text
 
    !> Header: version, scene (repeatable), model, method, columns explained.
-   function header(scene, n_curves) result(lines)
+   function header(scene, grid, n_curves) result(lines)
       type(scene_t), intent(in) :: scene
+      type(chart_grid_t), intent(in) :: grid
       integer, intent(in) :: n_curves
       character(len=:), allocatable :: lines(:)
       character(len=240) :: text(16)
@@ -312,7 +398,7 @@ contains
          if (scene%method%kind == method_segments) text(n) = trim(text(n))//", "// &
             integer_text(scene%method%n_segments)//" pieces, sampling "//sampling_name(scene%method%sampling)
          n = n + 1; text(n) = "roots of S_method = +-2 by Brent's method to tolerance*max(1,|beta|), brackets from "// &
-            integer_text(scene%chart%n_beta)//" samples over the beta window (n_beta); tongues narrower than a sample "// &
+            integer_text(grid%n_beta)//" samples over the beta window (n_beta); tongues narrower than a sample "// &
             "step can be missed"
       end if
       n = n + 1; text(n) = "one block per curve (gnuplot index = curve), blocks separated by two blank lines; "// &
@@ -329,8 +415,8 @@ contains
             real_text(gsl_agreement)//"*max(1,|beta|), 2 disagrees (a GSL failure), 0 not used (order > 60 or |q| > "// &
             real_text(gsl_witness_max_q)//"; beta_gsl = beta)"
       end if
-      if (.not. (in_physical_domain(scene%chart%alpha_min, scene%chart%beta_min) .and. &
-                 in_physical_domain(scene%chart%alpha_max, scene%chart%beta_max))) then
+      if (.not. (in_physical_domain(grid%alpha_min, grid%beta_min) .and. &
+                 in_physical_domain(grid%alpha_max, grid%beta_max))) then
          n = n + 1; text(n) = "note: the window leaves the physical domain 0 <= alpha < pi^2, 0 < beta < pi^2"
       end if
       lines = scene_header(scene, "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau; transition "// &

@@ -29,17 +29,25 @@ module hillstab_batch_task_series
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_system_t, pendulum_from_chart, pendulum_initial_state, &
       pendulum_angle, pendulum_energy, pendulum_radius, px, pz, pvx, pvz
    use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat
-   use hillstab_batch_scene, only: scene_t, scene_header, output_path, real_text, integer_text
-   use hillstab_core_text, only: put_es
-   use hillstab_batch_output, only: output_file_t, open_output, finish_output, discard_output, write_header, write_text
+   use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, open_scene_output
+   use hillstab_batch_declaration, only: group_t
+   use hillstab_batch_scene_file, only: scene_file_t
+   use hillstab_batch_group_series, only: series_plan_t, series_group, read_series_group
+   use hillstab_batch_columns, only: column_t, style_e17, columns_text, put_row, all_columns
+   use hillstab_core_text, only: put_es, real_text, integer_text
+   use hillstab_batch_output, only: output_file_t, finish_output, discard_output, write_header, write_text
    implicit none
    private
-   public :: run_series, series_summary_t, series_summary, series_columns
+   public :: series_task_t, series_task, series_summary_t, series_summary
 
-   !> Column names of a series file.
-   character(len=*), parameter :: series_columns = "t r phi x z E vx vz"
-   !> Significant digits of every number in a series row.
-   integer, parameter :: row_digits = 16
+   !> The series task and its pendulum (`&series`).
+   type, extends(task_t) :: series_task_t
+      type(series_plan_t) :: plan  !! the pendulum, its start and the sampling
+   contains
+      procedure :: read => series_read
+      procedure :: run => series_run
+      procedure :: declarations => series_declarations
+   end type series_task_t
 
    !> What the header reports about a run.
    type :: series_summary_t
@@ -63,6 +71,7 @@ module hillstab_batch_task_series
    !> The pendulum of the writing pass: writes the samples (the first pass has watched).
    type, extends(pendulum_system_t) :: series_writer_t
       type(output_file_t) :: file                !! the open output file
+      type(column_t), allocatable :: table(:)    !! the columns
       integer(int64) :: next = 0                 !! index j of the next sample
       integer(int64) :: n_samples = 0            !! last index (periods × samples_per_period)
       integer :: samples_per_period = 1
@@ -73,29 +82,68 @@ module hillstab_batch_task_series
 
 contains
 
+   !> `&series`.
+   function series_declarations(self) result(groups)
+      class(series_task_t), intent(in) :: self  !! the task
+      type(group_t), allocatable :: groups(:)
+      groups = [series_group()]
+   end function series_declarations
+
+   !> A series task before its scene is read.
+   function series_task() result(task)
+      type(series_task_t) :: task
+      task%name = "series"
+      task%takes_physical = .false.
+   end function series_task
+
+   !> `&series`.
+   subroutine series_read(self, file, scene, error)
+      class(series_task_t), intent(inout) :: self  !! the task, its pendulum filled in
+      type(scene_file_t), intent(in) :: file      !! the scene file
+      type(scene_t), intent(in) :: scene          !! the `&scene` settings
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
+      allocate (self%groups(1))
+      call read_series_group(file, series_group(), scene%model, scene%physical, self%plan, self%groups(1), error)
+   end subroutine series_read
+
+   !> The columns of a series file.
+   function series_columns() result(table)
+      type(column_t), allocatable :: table(:)
+      table = [column_t("t", "s", "time", style_e17), column_t("r", "m", "length of the spring", style_e17), &
+               column_t("phi", "rad", "angle from the downward vertical", style_e17), &
+               column_t("x", "m", "horizontal position", style_e17), column_t("z", "m", "downward position", style_e17), &
+               column_t("E", "J/kg", "energy per unit mass, eq. (3)", style_e17), &
+               column_t("vx", "m/s", "horizontal velocity", style_e17), column_t("vz", "m/s", "downward velocity", &
+               style_e17)]
+   end function series_columns
+
    !> Run the series task of a validated scene: `<output>_series.dat`, or an error and no file.
-   subroutine run_series(scene, error)
-      type(scene_t), intent(in) :: scene  !! task = series
+   subroutine series_run(self, scene, quiet, error)
+      class(series_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      logical, intent(in) :: quiet  !! unused: the run reports nothing on the way
       type(error_t), allocatable, intent(out) :: error  !! what failed; unallocated on success
       type(series_summary_t) :: summary
       type(series_writer_t) :: writer
       type(work_stats_t) :: stats
       real(wp) :: y(4)
 
-      call series_summary(scene, summary, error)
+      call series_summary(scene, self%plan, summary, error)
       if (allocated(error)) return
 
-      call open_output(writer%file, output_path(scene), error, context=scene%source//": &scene: output: ")
+      call open_scene_output(scene, writer%file, error)
       if (allocated(error)) return
-      call write_header(writer%file, series_header(scene, summary), series_columns, error)
+      writer%table = series_columns()
+      call write_header(writer%file, series_header(scene, self%plan, summary), &
+                        columns_text(writer%table, all_columns(writer%table)), error)
       if (allocated(error)) then
          call discard_output(writer%file)
          return
       end if
       writer%pendulum = summary%pendulum
-      writer%n_samples = int(scene%series%periods, int64)*scene%series%samples_per_period
-      writer%samples_per_period = scene%series%samples_per_period
-      y = initial_state(scene, summary%pendulum)
+      writer%n_samples = int(self%plan%periods, int64)*self%plan%samples_per_period
+      writer%samples_per_period = self%plan%samples_per_period
+      y = initial_state(self%plan, summary%pendulum)
       call pendulum_integrate(writer, y, sample_time(writer%pendulum, writer%n_samples, writer%samples_per_period), &
                               scene%method%tolerance, stats, error)
       if (.not. allocated(error) .and. allocated(writer%error)) call move_alloc(writer%error, error)
@@ -104,11 +152,12 @@ contains
       end if
       if (allocated(error)) error%message = scene%source//": "//error%message
       call finish_output(writer%file, error)
-   end subroutine run_series
+   end subroutine series_run
 
    !> The first pass: integrate without writing and measure what the header reports.
-   subroutine series_summary(scene, summary, error)
+   subroutine series_summary(scene, plan, summary, error)
       type(scene_t), intent(in) :: scene           !! task = series
+      type(series_plan_t), intent(in) :: plan      !! its pendulum
       type(series_summary_t), intent(out) :: summary  !! what the header reports: energy drift, angles, onset, work
       type(error_t), allocatable, intent(out) :: error  !! integration failure; unallocated on success
       type(pendulum_watch_t) :: watch
@@ -116,7 +165,6 @@ contains
       type(floquet_t) :: f
       type(error_t), allocatable :: cause
       real(wp) :: y(4), t_end
-      associate (plan => scene%series)
          call pendulum_from_chart(plan%alpha, plan%beta, scene%epsilon, plan%r0, plan%g, summary%pendulum, cause)
          if (allocated(cause)) then
             call set_error(error, err_input, scene%source//": &series: "//cause%message)
@@ -139,7 +187,7 @@ contains
          end if
 
          watch%pendulum = summary%pendulum
-         y = initial_state(scene, summary%pendulum)
+         y = initial_state(plan, summary%pendulum)
          t_end = sample_time(summary%pendulum, int(plan%periods, int64)*plan%samples_per_period, &
                              plan%samples_per_period)
          call pendulum_integrate(watch, y, t_end, scene%method%tolerance, summary%work, cause)
@@ -155,15 +203,14 @@ contains
          summary%energy_drift = watch%max_energy_error/watch%energy_scale
          summary%energy_increases = watch%energy_increases
          if (watch%onset_time >= 0.0_wp) summary%onset_observed = watch%onset_time/summary%pendulum%period
-      end associate
    end subroutine series_summary
 
    !> Initial state of the scene (eq. (38) plus the optional velocities).
-   pure function initial_state(scene, p) result(y)
-      type(scene_t), intent(in) :: scene
+   pure function initial_state(plan, p) result(y)
+      type(series_plan_t), intent(in) :: plan
       type(pendulum_t), intent(in) :: p
       real(wp) :: y(4)
-      y = pendulum_initial_state(p, scene%series%phi0, scene%series%vx0, scene%series%vz0)
+      y = pendulum_initial_state(p, plan%phi0, plan%vx0, plan%vz0)
    end function initial_state
 
    !> t_j = j T / samples_per_period, computed afresh for every j (no accumulated round-off).
@@ -181,8 +228,8 @@ contains
       type(rk_step_t), intent(in) :: step
       logical, intent(inout) :: stop
       real(wp) :: ts, y(4)
-      character(len=8*(row_digits + 8)) :: line
-      integer :: pos, k
+      character(len=8*25) :: line
+      integer :: pos
       real(wp) :: values(8)
       do while (self%next <= self%n_samples)
          ts = sample_time(self%pendulum, self%next, self%samples_per_period)
@@ -196,13 +243,7 @@ contains
          values = [ts, pendulum_radius(y), pendulum_angle(y), y(px), y(pz), pendulum_energy(self%pendulum, y), &
                    y(pvx), y(pvz)]
          pos = 0
-         do k = 1, size(values)
-            if (k > 1) then
-               line(pos + 1:pos + 1) = " "
-               pos = pos + 1
-            end if
-            call put_es(line, pos, values(k), row_digits)
-         end do
+         call put_row(self%table, all_columns(self%table), values, line, pos)
          call write_text(self%file, trim(adjustl(line(1:pos))), self%error)
          if (allocated(self%error)) then
             stop = .true.
@@ -213,8 +254,9 @@ contains
    end subroutine write_samples
 
    !> Header: version, scene (repeatable), the pendulum, the method, the summary, the columns.
-   function series_header(scene, s) result(lines)
+   function series_header(scene, plan, s) result(lines)
       type(scene_t), intent(in) :: scene
+      type(series_plan_t), intent(in) :: plan
       type(series_summary_t), intent(in) :: s
       character(len=:), allocatable :: lines(:)
       character(len=400) :: extra(24)

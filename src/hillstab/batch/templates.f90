@@ -1,11 +1,9 @@
 !> Commented scene templates: `hillstab --template TASK` prints a complete scene for a
 !> task, every variable at its default with a comment saying what it means, so the
-!> installed program documents its own input. The values come from `default_scene`,
-!> so a template cannot drift from the defaults; the tests read every template back
-!> and check that it names every variable of the task's effective scene.
-!>
-!> Adding a task: write a function returning its group (as `chart_group` below), add
-!> its name to `template_task_names` and a `case` to `scene_template`.
+!> installed program documents its own input. Everything comes from the declarations of
+!> the groups (hillstab_batch_declaration) and the task registry: the groups a task
+!> reads (`task_t%declarations`), the alternatives it offers commented out, and the
+!> optional `&physical` group. A new task or variable has a template without an edit here.
 !>
 !>```fortran
 !> character(len=:), allocatable :: text
@@ -15,11 +13,10 @@
 !>```
 module hillstab_batch_templates
    use hillstab_core_error, only: error_t, set_error, err_input
-   use hillstab_hill_coefficient, only: model_name, sampling_name
-   use hillstab_integrate_monodromy, only: method_name
-   use hillstab_hill_units, only: physical_t
-   use hillstab_batch_scene, only: scene_t, default_scene, real_text, integer_text, task_chart, task_points, &
-      task_coefficient, task_boundaries, task_series, task_lyapunov, task_poincare
+   use hillstab_batch_scene, only: task_t
+   use hillstab_batch_declaration, only: group_t, variable_t, var_real_list
+   use hillstab_batch_scene_read, only: scene_group, physical_group
+   use hillstab_batch_task_registry, only: task_entry_t, task_entries, task_names, task_names_text, new_task
    implicit none
    private
    public :: template_task_names, scene_template
@@ -33,10 +30,10 @@ module hillstab_batch_templates
 
 contains
 
-   !> The tasks that have a template, in the order `--help` lists them.
+   !> The tasks that have a template, in the order `--help` lists them (every registered task).
    function template_task_names() result(names)
       character(len=:), allocatable :: names(:)  !! task names, blank-padded to a common length
-      names = [character(len=11) :: "chart", "points", "coefficient", "boundaries", "series", "lyapunov", "poincare"]
+      names = task_names()
    end function template_task_names
 
    !> The complete commented scene of `task` (lines separated by new_line('a'), no final
@@ -45,62 +42,42 @@ contains
       character(len=*), intent(in) :: task                  !! a task name, e.g. "chart"
       character(len=:), allocatable, intent(out) :: text    !! the scene
       type(error_t), allocatable, intent(out) :: error      !! unknown task
-      type(scene_t) :: scene
-      scene = default_scene(task//".nml")
-      select case (task)
-      case ("chart")
-         scene%task = task_chart
-         text = header(task, "a stability chart over an (alpha, beta) grid: S, stability, multipliers, exponent") &
-                //scene_group(scene, task)//nl//chart_group(scene)//nl//nl//physical_group("")
-      case ("points")
-         scene%task = task_points
-         text = header(task, "the chart's columns at (alpha, beta) points listed in a file") &
-                //scene_group(scene, task)//nl//points_group()//nl//nl//physical_group("&points file")
-      case ("coefficient")
-         scene%task = task_coefficient
-         text = header(task, "Q(tau) and its segmented version, one pair of columns per alpha (the paper's Fig. 2)") &
-                //scene_group(scene, task)//nl//coefficient_group(scene)//nl//nl// &
-                physical_group("&coefficient alphas and beta")
-      case ("boundaries")
-         scene%task = task_boundaries
-         text = header(task, "transition curves S = +-2 over the alpha grid of &chart, within its beta window "// &
-                "(exact methods: Hill's method; formula, segments: roots by Brent from n_beta samples)") &
-                //scene_group(scene, task)//nl//chart_group(scene)//nl//nl//physical_group("")
-      case ("series")
-         scene%task = task_series
-         text = header(task, "the nonlinear elastic pendulum from eq. (38), sampled from the dense output at "// &
-                "t = j T/samples_per_period (tolerance: the integrator's relative tolerance; method: the core "// &
-                "computing lambda_max)")//scene_group(scene, task)//nl//series_group(scene)
-      case ("lyapunov")
-         scene = default_scene(task//".nml", task_lyapunov)
-         text = header(task, "the largest Lyapunov exponent of the nonlinear pendulum (per radial period) over "// &
-                "the grid of &chart or the points of &points, beside the chart's linear verdict (tolerance: the "// &
-                "integrator's relative tolerance; method: the core computing lambda_max)") &
-                //scene_group(scene, task)//nl//series_group(scene)//nl//lyapunov_group()//nl//chart_group(scene)// &
-                nl//"! with over = 'points': the points of a file instead of the grid"//nl//"! &points"//nl// &
-                commented_item("file = 'points.dat'", "one 'alpha beta' pair per line, 0 < beta < pi^2")//"! /"
-      case ("poincare")
-         scene%task = task_poincare
-         text = header(task, "Poincare sections (phi = 0, phi' > 0: r, r') of orbits started at rest at each "// &
-                "angle of &poincare phi0s, at the (alpha, beta, r0, g) of &series, over &series periods") &
-                //scene_group(scene, task)//nl//series_group(scene)//nl//poincare_group(scene)
-      case default
-         call set_error(error, err_input, "no template for task '"//task//"' (tasks: "// &
-            joined(template_task_names(), ", ")//")")
-         text = ""
-      end select
-   end subroutine scene_template
-
-   !> The trimmed `names` separated by `separator`.
-   function joined(names, separator) result(text)
-      character(len=*), intent(in) :: names(:), separator
-      character(len=:), allocatable :: text
+      class(task_t), allocatable :: job
+      type(error_t), allocatable :: cause
+      type(task_entry_t), allocatable :: entries(:)
+      type(group_t), allocatable :: groups(:), alternatives(:)
+      character(len=80), allocatable :: notes(:)
+      character(len=:), allocatable :: block, note
       integer :: k
-      text = trim(names(1))
-      do k = 2, size(names)
-         text = text//separator//trim(names(k))
+      text = ""
+      call new_task(task, job, cause)
+      if (allocated(cause)) then
+         call set_error(error, err_input, "no template for task '"//task//"' (tasks: "//task_names_text(", ")//")")
+         return
+      end if
+      entries = task_entries()
+      do k = 1, size(entries)
+         if (entries(k)%name == task) text = header(task, entries(k)%purpose)
       end do
-   end function joined
+      block = group_block(scene_group(), ["task"], ["'"//task//"'"])
+      text = text//block
+      groups = job%declarations()
+      do k = 1, size(groups)
+         block = group_block(groups(k))
+         text = text//nl//block
+      end do
+      call job%template_alternatives(alternatives, notes)
+      do k = 1, size(alternatives)
+         note = trim(notes(k))
+         block = commented_block(alternatives(k))
+         text = text//nl//"! "//note//nl//block
+      end do
+      if (job%takes_physical) then
+         block = physical_block(job)
+         text = text//nl//nl//block
+      end if
+      if (text(len(text):) == nl) text = text(:len(text) - 1)
+   end subroutine scene_template
 
    !> Comment lines opening a template.
    function header(task, purpose) result(text)
@@ -110,6 +87,89 @@ contains
              "! Run: hillstab FILE.nml. Every variable is shown at its default; delete what you do not change."//nl// &
              "! '!' starts a comment; names and keyword values are case-insensitive; group order does not matter."//nl
    end function header
+
+   !> A group with every variable at its default (or, given in `names`, at `values`); a
+   !> variable without a default is shown commented out with its example.
+   function group_block(group, names, values) result(text)
+      type(group_t), intent(in) :: group
+      character(len=*), intent(in), optional :: names(:), values(:)
+      character(len=:), allocatable :: text, value
+      integer :: k, j
+      text = group_line(group)
+      do k = 1, size(group%variables)
+         associate (v => group%variables(k))
+            value = v%default
+            if (present(names)) then
+               do j = 1, size(names)
+                  if (trim(names(j)) == v%name) value = trim(values(j))
+               end do
+            end if
+            if (len(value) == 0 .and. v%required) then
+               text = text//item(v%name//" = "//v%example, v%help)
+            else if (len(value) == 0) then
+               text = text//item("! "//v%name//" = "//v%example, v%help)
+            else
+               text = text//item(v%name//" = "//value, v%help)
+            end if
+         end associate
+      end do
+      text = text//"/"//nl
+   end function group_block
+
+   !> A group commented out, every variable at its default or example.
+   function commented_block(group) result(text)
+      type(group_t), intent(in) :: group
+      character(len=:), allocatable :: text
+      integer :: k
+      text = "! &"//group%name//nl
+      do k = 1, size(group%variables)
+         associate (v => group%variables(k))
+            if (len(v%default) > 0) then
+               text = text//commented_item(v%name//" = "//v%default, v%help)
+            else
+               text = text//commented_item(v%name//" = "//v%example, v%help)
+            end if
+         end associate
+      end do
+      text = text//"! /"
+   end function commented_block
+
+   !> The optional `&physical` group, commented out (a scene gives either it or the
+   !> dimensionless values); `r0` and `a` only for a task that takes amplitudes.
+   function physical_block(task) result(text)
+      class(task_t), intent(in) :: task
+      character(len=:), allocatable :: text
+      type(group_t) :: group
+      integer :: k
+      group = physical_group()
+      text = "! Optional, instead of the dimensionless values: the pendulum in SI units (remove the '!'s"// &
+         nl//"! to use it; then no &scene epsilon"
+      if (task%takes_amplitudes) text = text//", and r0 with a replace "//task%amplitudes_replace
+      text = text//")."//nl//"! &"//group%name//nl
+      do k = 1, size(group%variables)
+         associate (v => group%variables(k))
+            if (.not. task%takes_amplitudes .and. (v%name == "r0" .or. v%name == "a")) cycle
+            if (len(v%default) > 0) then
+               text = text//commented_item(v%name//" = "//v%default, v%help)
+            else
+               text = text//commented_item(v%name//" = "//v%example, v%help)
+            end if
+         end associate
+      end do
+      text = text//"! /"
+   end function physical_block
+
+   !> The first line of a group: its name, and its help at the comment column.
+   function group_line(group) result(text)
+      type(group_t), intent(in) :: group
+      character(len=:), allocatable :: text
+      text = "&"//group%name
+      if (len(group%help) > 0) then
+         if (len(text) < comment_column - 1) text = text//repeat(" ", comment_column - 1 - len(text))
+         text = text//" ! "//group%help
+      end if
+      text = text//nl
+   end function group_line
 
    !> `words` after `lead`, wrapped at word boundaries into lines of at most `line_width`
    !> characters, each continuation starting with `lead`; every line ends with a new line.
@@ -155,109 +215,6 @@ contains
       text = text//line//rest//nl
    end function item
 
-   !> The `&scene` group, common to every task.
-   function scene_group(scene, task) result(text)
-      type(scene_t), intent(in) :: scene
-      character(len=*), intent(in) :: task
-      character(len=:), allocatable :: text
-      text = "&scene"//nl// &
-         item("task = '"//task//"'", joined(template_task_names(), " | "))// &
-         item("model = '"//model_name(scene%model)//"'", &
-              "elastic: Q = (beta - alpha cos pi tau)/(1 - (alpha/pi^2) cos pi tau), eq. (25) | "// &
-              "mathieu: Q = beta - alpha cos pi tau")// &
-         item("method = '"//method_name(scene%method%kind)//"'", &
-              "auto (exact to tolerance, fastest) | formula (the paper's 2 pieces, eq. (37)) | segments | "// &
-              "magnus4 | magnus6 | rk | gsl")// &
-         item("n_segments = "//integer_text(scene%method%n_segments), &
-              "method segments (and Qseg of task coefficient): pieces per period, at least 1")// &
-         item("sampling = '"//sampling_name(scene%method%sampling)//"'", &
-              "segments: endpoint (eq. (28)) | midpoint | average (exact mean of Q per piece)")// &
-         item("tolerance = "//real_text(scene%method%tolerance), &
-              "exact methods: target error on S, scaled by max(1, |S|); > 0")// &
-         item("epsilon = "//real_text(scene%epsilon), "damping eps = kappa pi/omega of eqs. (46)-(47); >= 0")// &
-         item("! output = 'run1'", &
-              "prefix: files are <output>_<task>.dat, relative to the current directory; "// &
-              "default: the scene file's name without directory and extension")
-      if (task == "chart" .or. task == "points") then
-         text = text// &
-            item("columns = ''", "columns to write, e.g. 'alpha beta stable mu'; '' = all (see the # columns: line)")// &
-            item("format = 'text'", "text | binary (float64 records after the # header, <output>_<task>.bin; "// &
-                 "the header gives the gnuplot and numpy commands)")// &
-            item("names_line = .false.", "text: .true. adds an uncommented line of column names after the "// &
-                 "# header, for gnuplot using 'alpha':'mu'")
-      end if
-      text = text//"/"//nl
-   end function scene_group
-
-   !> `&chart`.
-   function chart_group(scene) result(text)
-      type(scene_t), intent(in) :: scene
-      character(len=:), allocatable :: text
-      text = "&chart                     ! n values from min to max inclusive (n = 1: min only)"//nl// &
-         item("alpha_min = "//real_text(scene%chart%alpha_min), "first alpha = a pi^2/rho (elastic: 0 <= alpha < pi^2)")// &
-         item("alpha_max = "//real_text(scene%chart%alpha_max), "last alpha, >= alpha_min")// &
-         item("n_alpha = "//integer_text(scene%chart%n_alpha), "number of alpha values, >= 1")// &
-         item("beta_min = "//real_text(scene%chart%beta_min), "first beta = g pi^2/(rho omega^2)")// &
-         item("beta_max = "//real_text(scene%chart%beta_max), "last beta, >= beta_min")// &
-         item("n_beta = "//integer_text(scene%chart%n_beta), "number of beta values, >= 1")// &
-         "/"
-   end function chart_group
-
-   !> `&series`.
-   function series_group(scene) result(text)
-      type(scene_t), intent(in) :: scene
-      character(len=:), allocatable :: text
-      associate (plan => scene%series)
-         text = "&series"//nl// &
-            item("alpha = "//real_text(plan%alpha), "alpha = a pi^2/rho, 0 <= alpha < pi^2")// &
-            item("beta = "//real_text(plan%beta), "beta = g pi^2/(rho omega^2), 0 < beta < pi^2 (physical domain)")// &
-            item("phi0 = "//real_text(plan%phi0), "initial angle from the downward vertical, rad (0: pure bounce)")// &
-            item("periods = "//integer_text(plan%periods), "radial periods T = 2 pi/omega to simulate, >= 1")// &
-            item("samples_per_period = "//integer_text(plan%samples_per_period), &
-                 "output rows per radial period, >= 1; periods*samples_per_period + 1 <= 1e8")// &
-            item("r0 = "//real_text(plan%r0), "natural length of the spring, m; > 0")// &
-            item("g = "//real_text(plan%g), "gravity, m/s^2; > 0")// &
-            item("vx0 = "//real_text(plan%vx0), "initial horizontal velocity, m/s")// &
-            item("vz0 = "//real_text(plan%vz0), "initial downward velocity, m/s")// &
-            "/"
-      end associate
-   end function series_group
-
-   !> `&lyapunov`.
-   function lyapunov_group() result(text)
-      character(len=:), allocatable :: text
-      text = "&lyapunov"//nl// &
-         item("over = 'chart'", "chart: the grid of &chart (0 < beta < pi^2) | points: the points of &points")// &
-         "/"
-   end function lyapunov_group
-
-   !> `&poincare`.
-   function poincare_group(scene) result(text)
-      type(scene_t), intent(in) :: scene
-      character(len=:), allocatable :: text
-      integer :: k
-      character(len=:), allocatable :: values
-      values = real_text(scene%poincare%phi0s(1))
-      do k = 2, size(scene%poincare%phi0s)
-         values = values//", "//real_text(scene%poincare%phi0s(k))
-      end do
-      text = "&poincare"//nl// &
-         item("phi0s = "//values, "initial angles of the orbits, rad, |phi0| < pi, up to 64 (one block each)")// &
-         item("same_energy = "//merge(".true. ", ".false.", scene%poincare%same_energy), &
-              ".true.: every orbit starts at rest with the energy of the &series start (one section plane) | "// &
-              ".false.: each at r = rho - a, eq. (38)")// &
-         "/"
-   end function poincare_group
-
-   !> `&points` (the file name is an example: the file must exist).
-   function points_group() result(text)
-      character(len=:), allocatable :: text
-      text = "&points"//nl// &
-         item("file = 'points.dat'", "required: one 'alpha beta' pair per line, '#' comments, extra columns "// &
-              "ignored; relative to the current directory")// &
-         "/"
-   end function points_group
-
    !> `item` commented out: its first column becomes `!`.
    function commented_item(assignment, comment) result(text)
       character(len=*), intent(in) :: assignment, comment
@@ -265,48 +222,4 @@ contains
       text = item(assignment, comment)
       text(1:1) = "!"
    end function commented_item
-
-   !> The optional `&physical` group, commented out (a scene gives either it or the
-   !> dimensionless values). `replaces`: the variables of the task that `r0` with `a`
-   !> replace ("" when the task takes no amplitudes).
-   function physical_group(replaces) result(text)
-      character(len=*), intent(in) :: replaces
-      character(len=:), allocatable :: text
-      type(physical_t) :: p
-      logical :: amplitudes
-      amplitudes = len(replaces) > 0
-      text = "! Optional, instead of the dimensionless values: the pendulum in SI units (remove the '!'s"// &
-         nl//"! to use it; then no &scene epsilon"
-      if (amplitudes) text = text//", and r0 with a replace "//replaces
-      text = text//")."//nl//"! &physical"//nl// &
-         commented_item("omega = 10.0", "required: radial angular frequency sqrt(k/m), rad/s; > 0")// &
-         commented_item("g = "//real_text(p%g), "gravity, m/s^2; >= 0")// &
-         commented_item("kappa = "//real_text(p%kappa), "damping rate of eqs. (40)-(42), 1/s: gives epsilon = "// &
-                   "kappa pi/omega")
-      if (amplitudes) then
-         text = text// &
-            commented_item("r0 = 0.3", "natural length of the spring, m; > 0 (with a)")// &
-            commented_item("a = 0.05, 0.1, 0.2", "bounce amplitudes, m, up to 64; 0 <= a < rho = r0 + g/omega^2")
-      end if
-      text = text//"! /"
-   end function physical_group
-
-   !> `&coefficient`.
-   function coefficient_group(scene) result(text)
-      type(scene_t), intent(in) :: scene
-      character(len=:), allocatable :: text
-      character(len=:), allocatable :: alphas
-      integer :: k
-      alphas = real_text(scene%coefficient%alphas(1))
-      do k = 2, size(scene%coefficient%alphas)
-         alphas = alphas//", "//real_text(scene%coefficient%alphas(k))
-      end do
-      text = "&coefficient"//nl// &
-         item("alphas = "//alphas, "one curve per alpha, up to 64 values")// &
-         item("beta = "//real_text(scene%coefficient%beta), "beta of every curve")// &
-         item("tau_min = "//real_text(scene%coefficient%tau_min), "first tau")// &
-         item("tau_max = "//real_text(scene%coefficient%tau_max), "last tau (one period is 2)")// &
-         item("n_tau = "//integer_text(scene%coefficient%n_tau), "number of tau values, >= 1")// &
-         "/"
-   end function coefficient_group
 end module hillstab_batch_templates

@@ -1,5 +1,8 @@
 !> Fast text for reals in scientific notation, for large gnuplot-ready files; and the
-!> small text helpers the writers and the scene reader share (`integer_text`, `lower_case`).
+!> small text helpers the writers and the scene reader share: `integer_text`, `lower_case`,
+!> `real_text` (the shortest text that reads back to the same double), `quoted` (a namelist
+!> string constant), `read_text_line` (one line of any length), and the switch that keeps
+!> floating-point traps off while text is turned into numbers (`halting_off`).
 !>
 !> Fortran's formatted `write` costs about half a microsecond per number, which
 !> is more than method auto needs to compute a chart point; this module writes
@@ -15,10 +18,12 @@
 !>```
 module hillstab_core_text
    use hillstab_core_kinds, only: wp, int64
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_usual, ieee_support_halting, &
+      ieee_get_halting_mode, ieee_set_halting_mode, ieee_set_flag
    implicit none
    private
    public :: format_es, es_width, put_es, put_integer, integer_text, lower_case
+   public :: real_text, quoted, read_text_line, fpe_state_t, halting_off, halting_restore
 
    !> Decimal text of an integer of the default kind or of kind int64, without blanks.
    interface integer_text
@@ -40,6 +45,12 @@ module hillstab_core_text
       10000000000_int64, 100000000000_int64, 1000000000000_int64, 10000000000000_int64, &
       100000000000000_int64, 1000000000000000_int64, 10000000000000000_int64, 100000000000000000_int64, &
       1000000000000000000_int64]
+
+   !> Floating-point halting modes saved while a read runs with halting off.
+   type :: fpe_state_t
+      logical :: can_halt = .false.                 !! halting can be controlled here
+      logical :: halting(size(ieee_usual)) = .false. !! the modes to restore
+   end type fpe_state_t
 
 contains
 
@@ -244,4 +255,118 @@ contains
       end if
       buffer(last - width + 1:last) = text(2:width + 1)
    end subroutine put_es_fortran
+   !> Shortest decimal text that reads back to exactly x (plain notation for
+   !> 1e-4 <= |x| < 1e15, else mantissa and exponent), e.g. 9.8, 0.0, 1.0e-10.
+   function real_text(x) result(text)
+      real(wp), intent(in) :: x  !! a finite value
+      character(len=:), allocatable :: text
+      character(len=40) :: buffer, fmt
+      character(len=:), allocatable :: digits, sign_text
+      integer :: d, e_at, exponent10, ios
+      real(wp) :: back
+      type(fpe_state_t) :: fpe
+      if (x == 0.0_wp) then
+         text = "0.0"
+         return
+      end if
+      if (.not. ieee_is_finite(x)) then
+         text = "not a finite number"
+         return
+      end if
+      ! a rounded candidate may overflow when read back (1.8e308): no trap, just a miss
+      call halting_off(fpe)
+      do d = 1, 17
+         write (fmt, '(a,i0,a)') "(es40.", d - 1, "e3)"
+         write (buffer, fmt) x
+         read (buffer, *, iostat=ios) back
+         if (ios == 0 .and. back == x) exit
+      end do
+      call halting_restore(fpe)
+      buffer = adjustl(buffer)
+      sign_text = ""
+      if (buffer(1:1) == "-") then
+         sign_text = "-"
+         buffer = buffer(2:)
+      end if
+      e_at = index(buffer, "E")
+      read (buffer(e_at + 1:), *) exponent10
+      digits = buffer(1:1)//buffer(3:e_at - 1)  ! mantissa digits without the point
+      if (exponent10 >= -4 .and. exponent10 < 15) then
+         if (exponent10 >= 0) then
+            if (len(digits) <= exponent10 + 1) digits = digits//repeat("0", exponent10 + 2 - len(digits))
+            text = sign_text//digits(:exponent10 + 1)//"."//digits(exponent10 + 2:)
+         else
+            text = sign_text//"0."//repeat("0", -exponent10 - 1)//digits
+         end if
+      else
+         if (len(digits) == 1) digits = digits//"0"
+         text = sign_text//digits(1:1)//"."//digits(2:)//"e"//integer_text(exponent10)
+      end if
+   end function real_text
+
+   !> A string as a namelist character constant (quotes doubled).
+   pure function quoted(text) result(q)
+      character(len=*), intent(in) :: text  !! the text
+      character(len=:), allocatable :: q
+      integer :: i
+      q = "'"
+      do i = 1, len(text)
+         if (text(i:i) == "'") then
+            q = q//"''"
+         else
+            q = q//text(i:i)
+         end if
+      end do
+      q = q//"'"
+   end function quoted
+
+
+   !> Switch halting on overflow/invalid/divide-by-zero off (reading `1e400` or `nan`
+   !> must give a message, not a trap, even in a build compiled with -ffpe-trap).
+   subroutine halting_off(state)
+      type(fpe_state_t), intent(out) :: state  !! the modes to restore
+      integer :: k
+      state%can_halt = .true.
+      do k = 1, size(ieee_usual)
+         state%can_halt = state%can_halt .and. ieee_support_halting(ieee_usual(k))
+      end do
+      if (state%can_halt) then
+         call ieee_get_halting_mode(ieee_usual, state%halting)
+         call ieee_set_halting_mode(ieee_usual, .false.)
+      end if
+   end subroutine halting_off
+
+   !> Clear the flags raised meanwhile and restore the halting modes.
+   subroutine halting_restore(state)
+      type(fpe_state_t), intent(in) :: state  !! from halting_off
+      call ieee_set_flag(ieee_usual, .false.)
+      if (state%can_halt) call ieee_set_halting_mode(ieee_usual, state%halting)
+   end subroutine halting_restore
+
+   !> Read one whole line from a formatted unit; with `max_length`, stop after that many
+   !> characters (`too_long` true, `ios` /= 0, the rest of the line unread).
+   subroutine read_text_line(unit, line, ios, max_length, too_long)
+      integer, intent(in) :: unit  !! a formatted unit open for reading
+      character(len=:), allocatable, intent(out) :: line  !! the line, without its newline
+      integer, intent(out) :: ios  !! 0, or iostat_end at the end of the file
+      integer, intent(in), optional :: max_length  !! longest line accepted
+      logical, intent(out), optional :: too_long   !! the line is longer than max_length
+      character(len=1024) :: chunk
+      integer :: got
+      line = ""
+      if (present(too_long)) too_long = .false.
+      do
+         read (unit, '(a)', advance="no", iostat=ios, size=got) chunk
+         line = line//chunk(:got)
+         if (present(max_length)) then
+            if (len(line) > max_length) then
+               if (present(too_long)) too_long = .true.
+               ios = 1
+               return
+            end if
+         end if
+         if (ios /= 0) exit
+      end do
+      if (is_iostat_eor(ios)) ios = 0
+   end subroutine read_text_line
 end module hillstab_core_text

@@ -1,0 +1,396 @@
+!> What the chart and points tasks share: the columns of their files (one table: name,
+!> unit, meaning, style, placeholder — and the value of each at a computed point), the
+!> evaluation of one point by the scene's method, the header lines, and the messages for
+!> failed and round-off limited points.
+!>
+!> A new column of chart and points files is added here and nowhere else: a `col_*`
+!> index, its `column_t` in `chart_columns`, when it is offered in `offered_chart_columns`
+!> and its value in `chart_values`.
+!>
+!>```fortran
+!> type(column_t), allocatable :: table(:)
+!> table = chart_columns(scene)
+!> print '(a)', columns_text(table, offered_chart_columns(scene))
+!>```
+module hillstab_batch_chart_columns
+   use hillstab_core_kinds, only: wp, int64, pi, version_string
+   use hillstab_core_error, only: error_t, set_error, err_input, err_accuracy, err_invalid_parameter, &
+      err_points_failed
+   use hillstab_core_status, only: status_ok, status_roundoff, status_failed
+   use hillstab_core_text, only: real_text, integer_text
+   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu, sampling_name
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
+   use hillstab_hill_units, only: equilibrium_length
+   use hillstab_integrate_monodromy, only: monodromy_trace, method_name, method_segments
+   use hillstab_batch_scene, only: scene_t, scene_header, output_path
+   use hillstab_batch_scene_file, only: fail
+   use hillstab_batch_columns, only: column_t, style_e17, style_e11, style_e4, style_flag, column_lines, &
+      find_columns, columns_text, put_value, failed_row
+   use, intrinsic :: iso_fortran_env, only: error_unit
+   implicit none
+   private
+   public :: chart_columns, offered_chart_columns, chart_values, scene_chart_columns, n_chart_columns
+   public :: chart_header, common_header, evaluate_point, failed_points_error, check_method_runs, warn_inaccurate
+   public :: clamp_magnitude, log10_floor, chart_line_length, stacked, chart_line, failed_values
+   public :: header_bytes, text_row_bytes, binary_row_bytes
+
+   !> The columns of a chart or points file, in file order.
+   integer, parameter :: col_alpha = 1, col_beta = 2, col_s = 3, col_stable = 4, col_lambda_max = 5, col_mu = 6, &
+      col_log10_abs_s = 7, col_overflow = 8, col_physical = 9, col_stable_paper = 10, col_mu_per_s = 11, &
+      col_error_estimate = 12, col_status = 13
+   !> Number of columns a chart or points file can hold.
+   integer, parameter :: n_chart_columns = 13
+   !> Characters in one chart line (13 columns of at most 24 characters, with blanks).
+   integer, parameter :: chart_line_length = 200
+   !> The text style of each column (hillstab_batch_columns), by the col_* index.
+   integer, parameter :: chart_styles(n_chart_columns) = [style_e17, style_e17, style_e17, style_flag, style_e11, &
+      style_e11, style_e11, style_flag, style_flag, style_flag, style_e11, style_e4, style_flag]
+   !> What a failed point writes in each column (where `chart_kept` is false): values outside
+   !> every column's range.
+   real(wp), parameter :: chart_placeholders(n_chart_columns) = [0.0_wp, 0.0_wp, 0.0_wp, -1.0_wp, -1.0_wp, 0.0_wp, &
+      -999.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, real(status_failed, wp)]
+   !> The columns a failed point keeps: its alpha, beta and physical.
+   logical, parameter :: chart_kept(n_chart_columns) = [.true., .true., .false., .false., .false., .false., .false., &
+      .false., .true., .false., .false., .false., .false.]
+   !> Bytes of a header (an upper bound), of one row as text (an upper bound) and binary.
+   integer(int64), parameter :: header_bytes = 16384, text_row_bytes = 161, binary_row_bytes = 8*16
+   !> Magnitudes beyond this are written as ±clamp_magnitude with the overflow flag set.
+   real(wp), parameter :: clamp_magnitude = 1.0e300_wp
+   !> log10|S| is written as at least this (only S = 0 exactly reaches it).
+   real(wp), parameter :: log10_floor = -300.0_wp
+
+contains
+
+   !> The column table of a chart or points file of this scene (meanings depend on the
+   !> model and the damping).
+   function chart_columns(scene) result(table)
+      type(scene_t), intent(in) :: scene  !! the scene
+      type(column_t) :: table(n_chart_columns)
+      character(len=:), allocatable :: stable, alpha
+      if (scene%epsilon > 0.0_wp) then
+         stable = "1 when |S1| < 2 cosh(epsilon) (all multipliers of x inside the unit circle)"
+      else
+         stable = "1 when |S| < 2"
+      end if
+      stable = stable//"; 0.5: marginal, |S| is within its error bound max(error_estimate, tolerance) max(1, |S|) "// &
+         "of the threshold, the value cannot decide"
+      if (scene%model == model_elastic) then
+         alpha = "alpha = a pi^2/rho, eq. (24)"
+      else
+         alpha = "nu of eq. (A1) (the Mathieu model)"
+      end if
+      table(col_alpha) = column(col_alpha, "alpha", "", alpha)
+      table(col_beta) = column(col_beta, "beta", "", "beta = g pi^2/(rho omega^2), eq. (24)")
+      table(col_s) = column(col_s, "S", "", "trace of the one-period monodromy (with epsilon > 0: S1 of the chi "// &
+         "equation (47)); |S| > 1e300 is written as +-1e300 with overflow = 1")
+      table(col_stable) = column(col_stable, "stable", "", stable)
+      table(col_lambda_max) = column(col_lambda_max, "lambda_max", "", "largest |multiplier| of x per radial period")
+      table(col_mu) = column(col_mu, "mu", "", "Floquet exponent ln(lambda_max)/2 per unit tau")
+      table(col_log10_abs_s) = column(col_log10_abs_s, "log10_abs_S", "", "log10|S|, exact also where S overflows")
+      table(col_overflow) = column(col_overflow, "overflow", "", "1 when |S| > 1e300")
+      table(col_physical) = column(col_physical, "physical", "", "1 inside the physical domain 0 <= alpha < pi^2, "// &
+         "0 <= beta < pi^2")
+      table(col_stable_paper) = column(col_stable_paper, "stable_paper", "", "1 when |S1| <= 2, the sufficient "// &
+         "criterion of the paper")
+      table(col_mu_per_s) = column(col_mu_per_s, "mu_per_s", "1/s", "the Floquet exponent per second, mu omega/pi "// &
+         "(tau = omega t/pi)")
+      table(col_error_estimate) = column(col_error_estimate, "error_estimate", "", "the method's estimate of "// &
+         "|error of S|/max(1, |S|) (-1: the method gives none)")
+      table(col_status) = column(col_status, "status", "", "0 ok; 1 round-off limited (best value, error_estimate "// &
+         "at the round-off level); 2 failed (placeholders in the other columns)")
+   contains
+      pure function column(k, name, unit, meaning) result(c)
+         integer, intent(in) :: k
+         character(len=*), intent(in) :: name, unit, meaning
+         type(column_t) :: c
+         c = column_t(name, unit, meaning, chart_styles(k), chart_placeholders(k), chart_kept(k))
+      end function column
+   end function chart_columns
+
+   !> The columns a chart or points file of this scene offers, in file order: `physical`
+   !> for the elastic model, `stable_paper` with damping, `mu_per_s` when ω is known.
+   pure function offered_chart_columns(scene) result(ids)
+      type(scene_t), intent(in) :: scene  !! the scene
+      integer, allocatable :: ids(:)
+      integer :: k
+      allocate (ids(0))
+      do k = 1, n_chart_columns
+         if (k == col_physical .and. scene%model /= model_elastic) cycle
+         if (k == col_stable_paper .and. .not. scene%epsilon > 0.0_wp) cycle
+         if (k == col_mu_per_s .and. .not. scene%physical) cycle
+         ids = [ids, k]
+      end do
+   end function offered_chart_columns
+
+   !> The columns a chart or points file of this scene holds: `&scene columns` when given,
+   !> else all it offers; an error naming `&scene columns` when a name is not offered.
+   subroutine scene_chart_columns(scene, ids, error)
+      type(scene_t), intent(in) :: scene  !! a chart or points scene
+      integer, allocatable, intent(out) :: ids(:)  !! indices into `chart_columns`, in file order
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming &scene columns
+      integer, allocatable :: available(:)
+      character(len=:), allocatable :: bad
+      type(column_t) :: table(n_chart_columns)
+      available = offered_chart_columns(scene)
+      if (len_trim(scene%columns) == 0) then
+         ids = available
+         return
+      end if
+      table = chart_columns(scene)
+      call find_columns(table, available, scene%columns, ids, bad)
+      if (len(bad) > 0) then
+         call fail(error, scene%source, "scene", "columns", "'"//bad//"' is not a column of this file or is "// &
+            "named twice (available: "//columns_text(table, available)//")")
+      else if (size(ids) == 0) then
+         call fail(error, scene%source, "scene", "columns", "no column named")
+      end if
+   end subroutine scene_chart_columns
+
+   !> The value of every column (table order) at one computed point: S and lambda_max
+   !> clamped to ±1e300, flags 1 or 0, stable 0.5 when marginal, mu_per_s = μ ω/π
+   !> (0 without `per_second`), error_estimate −1 when the method gives none.
+   pure function chart_values(alpha, beta, f, physical, status, per_second) result(v)
+      real(wp), intent(in) :: alpha, beta  !! the grid point
+      type(floquet_t), intent(in) :: f  !! Floquet data of the point
+      logical, intent(in) :: physical   !! (α, β) inside the physical domain
+      integer, intent(in) :: status     !! per-point status code (hillstab_core_status)
+      real(wp), intent(in), optional :: per_second  !! ω/π
+      real(wp) :: v(n_chart_columns)
+      real(wp) :: s, estimate
+      logical :: overflow
+      s = f%trace%value
+      overflow = f%trace%overflow .or. abs(s) > clamp_magnitude
+      if (overflow) s = sign(clamp_magnitude, s)
+      estimate = f%trace%error_estimate
+      if (estimate < 0.0_wp) estimate = -1.0_wp
+      v(col_alpha) = alpha
+      v(col_beta) = beta
+      v(col_s) = s
+      v(col_stable) = merge(1.0_wp, 0.0_wp, f%stable)
+      if (f%marginal) v(col_stable) = 0.5_wp
+      v(col_lambda_max) = min(largest_multiplier_modulus(f), clamp_magnitude)
+      v(col_mu) = f%exponent + 0.0_wp  ! no "-0.0" in the file
+      v(col_log10_abs_s) = max(f%trace%log_abs/log(10.0_wp), log10_floor)
+      v(col_overflow) = merge(1.0_wp, 0.0_wp, overflow)
+      v(col_physical) = merge(1.0_wp, 0.0_wp, physical)
+      v(col_stable_paper) = merge(1.0_wp, 0.0_wp, f%stable_paper)
+      v(col_mu_per_s) = 0.0_wp
+      if (present(per_second)) v(col_mu_per_s) = v(col_mu)*per_second + 0.0_wp
+      v(col_error_estimate) = min(estimate, clamp_magnitude)
+      v(col_status) = real(status, wp)
+   end function chart_values
+
+   !> The values of a point where nothing could be computed: alpha, beta and physical
+   !> kept, the other columns at their placeholders, status 2.
+   pure function failed_values(alpha, beta, physical) result(v)
+      real(wp), intent(in) :: alpha, beta  !! the point
+      logical, intent(in) :: physical      !! (α, β) inside the physical domain
+      real(wp) :: v(n_chart_columns)
+      v = chart_placeholders
+      v(col_alpha) = alpha
+      v(col_beta) = beta
+      v(col_physical) = merge(1.0_wp, 0.0_wp, physical)
+   end function failed_values
+
+   !> One text line of the columns `ids` of a point's values `v` (`chart_values`), each in
+   !> its column's style; alpha and beta from `alpha_text`, `beta_text` when at hand (a
+   !> chart formats each grid value once, not once per point). No allocation.
+   pure subroutine chart_line(ids, v, line, alpha_text, beta_text)
+      integer, intent(in) :: ids(:)  !! the columns to write
+      real(wp), intent(in) :: v(n_chart_columns)  !! every column's value
+      character(len=chart_line_length), intent(out) :: line  !! the line, blank-padded
+      character(len=23), intent(in), optional :: alpha_text  !! put_es(alpha, 16)
+      character(len=23), intent(in), optional :: beta_text   !! put_es(beta, 16)
+      integer :: k, pos
+      pos = 0
+      do k = 1, size(ids)
+         if (k > 1) then
+            line(pos + 1:pos + 1) = " "
+            pos = pos + 1
+         end if
+         if (ids(k) == col_alpha .and. present(alpha_text)) then
+            line(pos + 1:pos + 23) = alpha_text
+            pos = pos + 23
+         else if (ids(k) == col_beta .and. present(beta_text)) then
+            line(pos + 1:pos + 23) = beta_text
+            pos = pos + 23
+         else
+            call put_value(chart_styles(ids(k)), v(ids(k)), line, pos)
+         end if
+      end do
+      line(pos + 1:) = ""
+   end subroutine chart_line
+
+   !> Header lines of a chart or points file: the common header, the method, one line per
+   !> column written, the placeholders of failed rows.
+   function chart_header(scene, outside, ids) result(lines)
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      logical, intent(in) :: outside  !! some point lies outside the physical domain
+      integer, intent(in) :: ids(:)   !! the columns written
+      character(len=:), allocatable :: lines(:)
+      type(column_t) :: table(n_chart_columns)
+      character(len=:), allocatable :: per_column(:), placeholder
+      character(len=400) :: text(n_chart_columns + 3)
+      integer :: k, n
+      table = chart_columns(scene)
+      per_column = column_lines(table, ids)
+      n = 1
+      text(1) = "method: "//method_description(scene)
+      do k = 1, size(per_column)
+         text(n + k) = per_column(k)
+      end do
+      n = n + size(per_column) + 1
+      text(n) = "status 2 rows (placeholders, not values):"
+      do k = 1, size(ids)
+         if (table(ids(k))%keep_on_failure .or. ids(k) == col_status) cycle
+         placeholder = real_text(table(ids(k))%placeholder)
+         text(n) = trim(text(n))//merge(" ", ",", index(text(n), "=") == 0)//" "//table(ids(k))%name//" = "//placeholder
+      end do
+      if (outside .and. scene%model == model_elastic) then
+         n = n + 1
+         text(n) = "note: this file leaves the physical domain (rows with physical = 0)"
+      end if
+      lines = stacked(common_header(scene), text(:n))
+   end function chart_header
+
+   !> Floquet data of one point; `error` only when the point failed.
+   subroutine evaluate_point(scene, alpha, beta, f, error, status)
+      type(scene_t), intent(in) :: scene  !! the scene (model, method, damping)
+      real(wp), intent(in) :: alpha, beta  !! the point
+      type(floquet_t), intent(out) :: f  !! its Floquet data
+      type(error_t), allocatable, intent(out) :: error  !! why the point failed
+      !> status_ok, status_roundoff (computed, but only to the round-off level) or status_failed
+      integer, intent(out), optional :: status
+      type(trace_t) :: tr
+      if (present(status)) status = status_ok
+      call monodromy_trace(hill_model_t(scene%model, alpha, beta, scene%epsilon), scene%method, tr, error)
+      if (allocated(error)) then
+         if (error%code /= err_accuracy) then
+            if (present(status)) status = status_failed
+            return
+         end if
+         deallocate (error)
+         if (present(status)) status = status_roundoff
+      end if
+      f = floquet_from_trace(tr, scene%epsilon, scene%method%tolerance)
+   end subroutine evaluate_point
+
+   !> Count the failed points of a task and name the first: err_points_failed, after the
+   !> file has been written. The first failure is computed again serially, so the message
+   !> does not depend on thread timing.
+   subroutine failed_points_error(scene, n_failed, n_total, first, error)
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      integer(int64), intent(in) :: n_failed, n_total  !! failed points; all points
+      real(wp), intent(in) :: first(2)  !! alpha, beta of the first failed point
+      type(error_t), allocatable, intent(out) :: error  !! err_points_failed naming the count and the first point
+      type(error_t), allocatable :: cause
+      type(floquet_t) :: f
+      if (n_failed == 0) return
+      call evaluate_point(scene, first(1), first(2), f, cause)
+      if (.not. allocated(cause)) call set_error(cause, err_input, "fails in parallel only")
+      call set_error(error, err_points_failed, scene%source//": &scene: method: '"// &
+         method_name(scene%method%kind)//"' failed at "//integer_text(n_failed)//" of "//integer_text(n_total)// &
+         " point(s), written with status "//integer_text(status_failed)//" and placeholders to "//output_path(scene)// &
+         "; first at alpha = "// &
+         real_text(first(1))//", beta = "//real_text(first(2))//": "//cause%message)
+   end subroutine failed_points_error
+
+   !> The error of a failed point, naming the scene, the method and the point.
+   subroutine point_error(scene, alpha, beta, cause, error)
+      type(scene_t), intent(in) :: scene
+      real(wp), intent(in) :: alpha, beta
+      type(error_t), intent(in) :: cause
+      type(error_t), allocatable, intent(out) :: error
+      call set_error(error, cause%code, scene%source//": &scene: method: '"//method_name(scene%method%kind)// &
+         "' fails at alpha = "//real_text(alpha)//", beta = "//real_text(beta)//": "//cause%message)
+   end subroutine point_error
+
+   !> A chart whose method cannot run at all (bad parameters) fails at its first point,
+   !> before anything is written; a point where the computation fails is written with
+   !> its status instead.
+   subroutine check_method_runs(scene, alpha, beta, error)
+      type(scene_t), intent(in) :: scene  !! a chart scene
+      real(wp), intent(in) :: alpha, beta  !! its first point
+      type(error_t), allocatable, intent(out) :: error  !! why the method cannot run; unallocated when it can
+      type(error_t), allocatable :: cause
+      type(floquet_t) :: f
+      call evaluate_point(scene, alpha, beta, f, cause)
+      if (allocated(cause)) then
+         if (cause%code == err_invalid_parameter) call point_error(scene, alpha, beta, cause, error)
+      end if
+   end subroutine check_method_runs
+
+   !> Say on stderr (even when quiet: it qualifies the results) how many points could only
+   !> be computed to the round-off level of double precision, not to the tolerance.
+   subroutine warn_inaccurate(scene, n, first)
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      integer(int64), intent(in) :: n  !! number of round-off limited points
+      real(wp), intent(in) :: first(2)  !! alpha, beta of the first such point
+      if (n == 0) return
+      write (error_unit, '(a)') "hillstab: warning: "//scene%source//": "//integer_text(n)// &
+         " point(s) reached only the round-off level of double precision, not the tolerance "// &
+         real_text(scene%method%tolerance)//" (first at alpha = "//real_text(first(1))//", beta = "// &
+         real_text(first(2))//"); their S is the best available"
+   end subroutine warn_inaccurate
+
+   function method_description(scene) result(text)
+      type(scene_t), intent(in) :: scene
+      character(len=:), allocatable :: text
+      text = method_name(scene%method%kind)
+      if (scene%method%kind == method_segments) then
+         text = text//", "//integer_text(scene%method%n_segments)//" pieces, sampling "// &
+            sampling_name(scene%method%sampling)
+      else if (method_name(scene%method%kind) /= "formula") then
+         text = text//", tolerance "//real_text(scene%method%tolerance)
+      end if
+   end function method_description
+
+   !> Header lines of a scene given in physical units: the conversions used.
+   function physical_header(scene) result(lines)
+      type(scene_t), intent(in) :: scene
+      character(len=:), allocatable :: lines(:)
+      character(len=200) :: text(3)
+      text(1) = "physical units (SI): rho = r0 + g/omega^2 (eq. (4)), tau = omega t/pi, alpha = a pi^2/rho, "// &
+                "beta = g pi^2/(rho omega^2) (eq. (24)), epsilon = kappa pi/omega (eq. (46))"
+      text(2) = "omega = "//real_text(scene%pendulum%omega)//" rad/s: one radial period 2 pi/omega = "// &
+                real_text(2.0_wp*pi/scene%pendulum%omega)//" s is 2 units of tau; epsilon = "//real_text(scene%epsilon)
+      if (size(scene%amplitudes) > 0) then
+         text(3) = "rho = "//real_text(equilibrium_length(scene%pendulum))//" m; each row is one amplitude a of "// &
+                   "&physical: a = alpha rho/pi^2"
+         if (scene%model == model_mathieu) text(3) = trim(text(3))//" (here alpha is nu = a r0 pi^2/rho^2 of eq. (21))"
+         lines = text(:3)
+      else
+         lines = text(:2)
+      end if
+   end function physical_header
+
+   !> Header lines common to every task: version, source, the effective scene, the model.
+   function common_header(scene) result(lines)
+      type(scene_t), intent(in) :: scene  !! the scene
+      character(len=:), allocatable :: lines(:)
+      character(len=:), allocatable :: model_text, common(:)
+      if (scene%model == model_elastic) then
+         model_text = "model: elastic, Q(tau) = (beta - alpha cos(pi tau))/(1 - (alpha/pi^2) cos(pi tau)), eq. (25)"
+      else
+         model_text = "model: mathieu, q(tau) = beta - alpha cos(pi tau), eq. (A1), alpha playing nu"
+      end if
+      common = scene_header(scene, "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau", [model_text])
+      if (scene%physical) then
+         lines = stacked(common, physical_header(scene))
+      else
+         lines = common
+      end if
+   end function common_header
+
+   !> The lines of a followed by those of b, at the longer of their lengths.
+   pure function stacked(a, b) result(c)
+      character(len=*), intent(in) :: a(:)  !! the first lines
+      character(len=*), intent(in) :: b(:)  !! the lines after them
+      character(len=:), allocatable :: c(:)
+      allocate (character(len=max(len(a), len(b))) :: c(size(a) + size(b)))
+      c(:size(a)) = a
+      c(size(a) + 1:) = b
+   end function stacked
+
+end module hillstab_batch_chart_columns

@@ -1,0 +1,251 @@
+!> The command line of the hillstab programs, one for both: `hillstab` and `hillstab_mpi`
+!> parse the same options, print the same help and messages, run the scenes in turn and
+!> exit with the same statuses. A program supplies a `scene_runner_t`: how it runs one
+!> scene (in this process, or over MPI ranks), whether this process prints (rank 0), and
+!> what to do before it exits (MPI_Finalize).
+!>
+!> Exit status: 0 on success, 2 for bad input (scene, points file, output path, command
+!> line) or an output file that cannot be written completely, 1 when a computation
+!> fails, 3 (exit_points_failed) when a file was written but some of its points failed
+!> (status 2 in their rows), 128 + N after signal N (SIGINT, SIGTERM, SIGHUP), the
+!> unfinished output file removed.
+!>
+!>```fortran
+!> type(serial_runner_t) :: runner
+!> call run_command_line(runner)   ! never returns
+!>```
+module hillstab_batch_cli
+   use hillstab_core_kinds, only: version_string
+   use hillstab_core_error, only: error_t, err_input, err_io, err_invalid_parameter, err_points_failed
+   use hillstab_core_status, only: exit_points_failed
+   use hillstab_batch_tasks, only: run_scene_file
+   use hillstab_batch_templates, only: scene_template
+   use hillstab_batch_task_registry, only: task_names_text
+   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+   use, intrinsic :: ieee_arithmetic, only: ieee_set_flag, ieee_all
+   implicit none
+   private
+   public :: scene_runner_t, serial_runner_t, run_command_line, exit_status, max_path
+
+   !> Longest scene path accepted (a longer one would be cut and another file read).
+   integer, parameter :: max_path = 4096
+
+   !> How a program runs its scenes.
+   type, abstract :: scene_runner_t
+      character(len=:), allocatable :: program  !! the program's name, the prefix of its messages
+      !> the usage lines of `--help` (the program's name and arguments)
+      character(len=:), allocatable :: usage(:)
+      !> what the program does, for `--help`
+      character(len=:), allocatable :: description(:)
+   contains
+      !> run one scene file; on return the outcome is the same in every process
+      procedure(runner_run), deferred :: run
+      !> whether this process prints (help, version, template, "wrote")
+      procedure :: reports => runner_reports
+      !> what to do before the program exits
+      procedure :: finish => runner_finish
+   end type scene_runner_t
+
+   abstract interface
+      !> Run the scene file `path`.
+      subroutine runner_run(self, path, quiet, error, written)
+         import :: scene_runner_t, error_t
+         class(scene_runner_t), intent(inout) :: self  !! the runner
+         character(len=*), intent(in) :: path  !! the scene file
+         logical, intent(in) :: quiet  !! no progress on stderr
+         !> what failed (err_points_failed: written with failed points); a message that is
+         !> empty is printed by another process
+         type(error_t), allocatable, intent(out) :: error
+         character(len=:), allocatable, intent(out) :: written  !! the file written
+      end subroutine runner_run
+   end interface
+
+   !> The one-process runner of the `hillstab` program.
+   type, extends(scene_runner_t) :: serial_runner_t
+   contains
+      procedure :: run => serial_run
+   end type serial_runner_t
+
+contains
+
+   !> Run a scene in this process.
+   subroutine serial_run(self, path, quiet, error, written)
+      class(serial_runner_t), intent(inout) :: self  !! the runner
+      character(len=*), intent(in) :: path  !! the scene file
+      logical, intent(in) :: quiet  !! no progress on stderr
+      type(error_t), allocatable, intent(out) :: error  !! what failed
+      character(len=:), allocatable, intent(out) :: written  !! the file written
+      call run_scene_file(path, quiet, error, written)
+   end subroutine serial_run
+
+   !> Default: every process prints.
+   logical function runner_reports(self)
+      class(scene_runner_t), intent(in) :: self  !! the runner
+      runner_reports = .true.
+   end function runner_reports
+
+   !> Default: nothing before exit.
+   subroutine runner_finish(self)
+      class(scene_runner_t), intent(inout) :: self  !! the runner
+   end subroutine runner_finish
+
+   !> The exit status of a run that ended with `error`: 2 for bad input (scene, points
+   !> file, output path), 3 when the file was written but some points failed
+   !> (err_points_failed), 1 when a computation failed otherwise.
+   pure integer function exit_status(error)
+      type(error_t), intent(in) :: error  !! the error a run ended with
+      select case (error%code)
+      case (err_input, err_io, err_invalid_parameter)
+         exit_status = 2
+      case (err_points_failed)
+         exit_status = exit_points_failed
+      case default
+         exit_status = 1
+      end select
+   end function exit_status
+
+   !> Parse the command line and run every scene it names, then exit (this never returns):
+   !> `[--quiet] SCENE.nml...`, `--template TASK`, `--help`, `--version`.
+   subroutine run_command_line(runner)
+      class(scene_runner_t), intent(inout) :: runner  !! how the scenes run
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: argument, written
+      character(len=max_path), allocatable :: scenes(:)
+      character(len=:), allocatable :: text
+      logical :: quiet, points_failed
+      integer :: i, n_scenes
+      if (.not. allocated(runner%program)) runner%program = "hillstab"
+      if (.not. allocated(runner%usage)) runner%usage = default_usage(runner%program)
+      if (.not. allocated(runner%description)) runner%description = default_description()
+      quiet = .false.
+      n_scenes = 0
+      allocate (scenes(command_argument_count()))
+      do i = 1, command_argument_count()
+         argument = command_argument(i)
+         select case (argument)
+         case ("-h", "--help")
+            if (runner%reports()) call print_help(runner)
+            call quit("", 0)
+         case ("-V", "--version")
+            if (runner%reports()) write (output_unit, '(a)') runner%program//" "//version_string
+            call quit("", 0)
+         case ("-t", "--template")
+            if (i + 1 > command_argument_count()) then
+               call quit(on_reporter(runner%program//": --template needs a task: "//task_names_text(", ")// &
+                  " (see "//runner%program//" --help)"), 2)
+            end if
+            call scene_template(command_argument(i + 1), text, error)
+            if (allocated(error)) call quit(on_reporter(runner%program//": "//error%message), 2)
+            if (runner%reports()) write (output_unit, '(a)') text
+            call quit("", 0)
+         case ("-q", "--quiet")
+            quiet = .true.
+         case default
+            if (len(argument) > 1 .and. argument(1:1) == "-") then
+               call quit(on_reporter(runner%program//": unknown option '"//argument//"' (see "//runner%program// &
+                  " --help)"), 2)
+            end if
+            if (len(argument) > max_path) then
+               call quit(on_reporter(runner%program//": scene path longer than 4096 characters"), 2)
+            end if
+            n_scenes = n_scenes + 1
+            scenes(n_scenes) = argument
+         end select
+      end do
+      if (n_scenes == 0) call quit(on_reporter("usage: "//trim(runner%usage(1))//" (see "//runner%program// &
+                                               " --help)"), 2)
+
+      points_failed = .false.
+      do i = 1, n_scenes
+         call runner%run(trim(scenes(i)), quiet, error, written)
+         if (allocated(error)) then
+            if (len(error%message) > 0) error%message = runner%program//": "//error%message
+            if (error%code /= err_points_failed) call quit(error%message, exit_status(error))
+            ! the file is written; the message says where (also with --quiet: it qualifies the file)
+            if (len(error%message) > 0) write (error_unit, '(a)') error%message
+            points_failed = .true.
+         end if
+         if (.not. quiet .and. runner%reports()) write (error_unit, '(a)') runner%program//": wrote "//written
+      end do
+      call quit("", merge(exit_points_failed, 0, points_failed))
+
+   contains
+
+      !> `message` on the reporting process, "" elsewhere.
+      function on_reporter(message) result(shown)
+         character(len=*), intent(in) :: message
+         character(len=:), allocatable :: shown
+         shown = ""
+         if (runner%reports()) shown = message
+      end function on_reporter
+
+      !> One message on stderr, then exit with `status` (silently: no STOP banner, no
+      !> floating-point summary).
+      subroutine quit(message, status)
+         character(len=*), intent(in) :: message
+         integer, intent(in) :: status
+         if (len(message) > 0) write (error_unit, '(a)') message
+         ! free what the program allocated, so that memory checkers see no leak
+         if (allocated(scenes)) deallocate (scenes)
+         if (allocated(argument)) deallocate (argument)
+         if (allocated(written)) deallocate (written)
+         if (allocated(error)) deallocate (error)
+         if (allocated(text)) deallocate (text)
+         call runner%finish()
+         call ieee_set_flag(ieee_all, .false.)
+         stop status, quiet=.true.
+      end subroutine quit
+   end subroutine run_command_line
+
+   !> Command-line argument i.
+   function command_argument(i) result(text)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: text
+      integer :: length
+      call get_command_argument(i, length=length)
+      allocate (character(len=length) :: text)
+      call get_command_argument(i, text)
+   end function command_argument
+
+   function default_usage(program) result(lines)
+      character(len=*), intent(in) :: program
+      character(len=:), allocatable :: lines(:)
+      lines = [character(len=80) :: program//" [--quiet] SCENE.nml...", program//" --template TASK > SCENE.nml"]
+   end function default_usage
+
+   function default_description() result(lines)
+      character(len=:), allocatable :: lines(:)
+      lines = [character(len=80) :: "Stability charts of the elastic pendulum (Hill equation x'' + Q(tau) x = 0)."]
+   end function default_description
+
+   subroutine print_help(runner)
+      class(scene_runner_t), intent(in) :: runner
+      integer :: k
+      write (output_unit, '(a)') "usage: "//trim(runner%usage(1))
+      do k = 2, size(runner%usage)
+         write (output_unit, '(a)') "       "//trim(runner%usage(k))
+      end do
+      write (output_unit, '(a)') ""
+      do k = 1, size(runner%description)
+         write (output_unit, '(a)') trim(runner%description(k))
+      end do
+      write (output_unit, '(a)') &
+         "Each SCENE is a namelist file (&scene plus the group of its task);", &
+         "results go to <output>_<task>.dat, gnuplot-ready. An output file can be given", &
+         "as SCENE to repeat its run.", &
+         "", &
+         "Tasks: "//task_names_text(", "), &
+         "  (--template TASK prints a complete scene for TASK, every variable", &
+         "  at its default with a comment)", &
+         "", &
+         "  -q, --quiet          no progress or messages on stderr (errors still)", &
+         "  -t, --template TASK  a commented scene for TASK on stdout", &
+         "  -h, --help           this text", &
+         "  -V, --version        the version", &
+         "", &
+         "Exit status (of every process): 0 success, 2 bad input or an output file that", &
+         "cannot be written, 1 a computation failed, 3 files written but some points failed", &
+         "(status 2 in their rows), 128 + N killed by signal N (SIGINT, SIGTERM, SIGHUP: the", &
+         "unfinished output file is removed)."
+   end subroutine print_help
+end module hillstab_batch_cli

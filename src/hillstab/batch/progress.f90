@@ -1,0 +1,81 @@
+!> Progress on stderr for runs longer than about a second: percentage, points, rate and
+!> time left, redrawn in place on a terminal, a line every 5 s otherwise.
+!>
+!>```fortran
+!> type(progress_t) :: progress
+!> call progress_begin(progress, 1000_int64, quiet=.false.)
+!> call progress_update(progress, 500_int64)
+!> call progress_end(progress)
+!>```
+module hillstab_batch_progress
+   use hillstab_core_kinds, only: wp, int64
+   use hillstab_ffi_libc, only: c_isatty
+   use, intrinsic :: iso_fortran_env, only: error_unit
+   use, intrinsic :: iso_c_binding, only: c_int
+   implicit none
+   private
+   public :: progress_t, progress_begin, progress_update, progress_end
+
+   !> Progress on stderr for runs longer than about a second.
+   type :: progress_t
+      logical :: enabled = .false.      !! not quiet
+      logical :: shown = .false.        !! something has been printed
+      logical :: terminal = .false.     !! stderr is a terminal: redraw one line
+      integer(int64) :: total = 0       !! points to compute
+      integer(int64) :: start = 0       !! clock at the start
+      integer(int64) :: last = 0        !! clock at the last report
+      integer(int64) :: ticks = 1       !! clock ticks per second
+   end type progress_t
+
+contains
+
+   !> Start reporting the progress of a run of `total` points (nothing when quiet).
+   subroutine progress_begin(progress, total, quiet)
+      type(progress_t), intent(out) :: progress  !! the progress state
+      integer(int64), intent(in) :: total  !! points to compute
+      logical, intent(in) :: quiet  !! no progress on stderr
+      progress%enabled = .not. quiet
+      progress%total = total
+      call system_clock(progress%start, progress%ticks)
+      progress%last = progress%start
+      if (progress%enabled) progress%terminal = c_isatty(2_c_int) == 1
+   end subroutine progress_begin
+
+   !> Report `done` of `total` points: percentage, rate and time left, once the run
+   !> has taken a second; redrawn in place on a terminal, a line every 5 s otherwise.
+   subroutine progress_update(progress, done)
+      type(progress_t), intent(inout) :: progress  !! the progress state
+      integer(int64), intent(in) :: done  !! points computed so far
+      integer(int64) :: now
+      real(wp) :: elapsed, since_last, rate, left, interval
+      character(len=160) :: text
+      character(len=12) :: left_text
+      if (.not. progress%enabled) return
+      call system_clock(now)
+      elapsed = real(now - progress%start, wp)/progress%ticks
+      since_last = real(now - progress%last, wp)/progress%ticks
+      if (elapsed < 1.0_wp) return
+      interval = merge(0.25_wp, 5.0_wp, progress%terminal)
+      if (progress%shown .and. since_last < interval .and. done < progress%total) return
+      rate = real(done, wp)/elapsed
+      left = real(progress%total - done, wp)/max(rate, tiny(1.0_wp))
+      write (left_text, '(f12.1)') left
+      write (text, '(a,f5.1,a,i0,a,i0,a,i0,a)') "hillstab: ", 100.0_wp*done/progress%total, "% (", &
+         done, " of ", progress%total, " points, ", nint(rate, int64), " points/s, "
+      text = trim(text)//" "//trim(adjustl(left_text))//" s left)"
+      if (progress%terminal) then
+         write (error_unit, '(a)', advance="no") achar(13)//trim(text)//"   "
+      else
+         write (error_unit, '(a)') trim(text)
+      end if
+      flush (error_unit)
+      progress%shown = .true.
+      progress%last = now
+   end subroutine progress_update
+
+   !> End the progress display (a final new line on a terminal).
+   subroutine progress_end(progress)
+      type(progress_t), intent(in) :: progress  !! the progress state
+      if (progress%shown .and. progress%terminal) write (error_unit, '(a)') ""
+   end subroutine progress_end
+end module hillstab_batch_progress

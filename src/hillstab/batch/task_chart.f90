@@ -1,0 +1,428 @@
+!> Task `chart`: the columns of hillstab_batch_chart_columns over the (α, β) grid of
+!> `&chart`, row by row (one α a row). With many rows, groups of rows run in parallel
+!> (OpenMP, dynamic schedule: the cost varies strongly near α → π²) into one of two
+!> buffers while one thread writes the previous group, so memory stays at a few rows a
+!> thread; with few rows, each row is split into chunks computed in parallel that share
+!> the meshes method auto prepares for the row. A point that cannot be computed does not
+!> stop the chart: its row carries status 2 and placeholders, and the run ends with
+!> err_points_failed after the file is written.
+!>
+!> The task also runs in units of one row (`unit_text`), computed exactly as here, so that
+!> the MPI program writes the same file.
+module hillstab_batch_task_chart
+   use hillstab_core_kinds, only: wp, int64, pi
+   use hillstab_core_error, only: error_t, set_error, err_input
+   use hillstab_core_status, only: status_ok, status_roundoff, status_failed
+   use hillstab_core_text, only: format_es, real_text, integer_text
+   use hillstab_hill_coefficient, only: hill_model_t, in_physical_domain
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace
+   use hillstab_integrate_monodromy, only: monodromy_trace_batch, batch_plan_t, prepare_batch
+   use hillstab_batch_scene, only: scene_t, task_t, open_scene_output
+   use hillstab_batch_declaration, only: group_t
+   use hillstab_batch_scene_file, only: scene_file_t, fail
+   use hillstab_batch_scene_checks, only: check_integration_cost
+   use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point
+   use hillstab_batch_chart_columns, only: n_chart_columns, chart_values, failed_values, chart_line, chart_header, &
+      scene_chart_columns, check_method_runs, warn_inaccurate, failed_points_error, chart_line_length, &
+      header_bytes, text_row_bytes, binary_row_bytes
+   use hillstab_batch_columns, only: columns_text
+   use hillstab_batch_chart_columns, only: chart_columns
+   use hillstab_batch_output, only: output_file_t, finish_output, discard_output, write_header, write_text, &
+      write_records, joined_lines
+   use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
+   !$ use omp_lib, only: omp_get_max_threads
+   implicit none
+   private
+   public :: chart_task_t, chart_task
+
+   !> The chart task and its grid.
+   type, extends(task_t) :: chart_task_t
+      type(chart_grid_t) :: grid                     !! `&chart`
+      !> what every row shares, made by `prepare_units`: the β values, their text, the columns
+      real(wp), allocatable :: betas(:)
+      character(len=23), allocatable :: beta_texts(:)  !! format_es(betas, 16)
+      integer, allocatable :: ids(:)                 !! the columns written
+   contains
+      procedure :: read => chart_read
+      procedure :: run => chart_run
+      procedure :: declarations => chart_declarations
+      procedure :: estimated_bytes => chart_estimated_bytes
+      procedure :: size_variables => chart_size_variables
+      procedure :: point_count => chart_point_count
+      procedure :: unit_size => chart_unit_size
+      procedure :: prepare_units => chart_prepare_units
+      procedure :: unit_text => chart_unit_text
+      procedure :: open_units => chart_open_units
+      procedure :: finish_units => chart_finish_units
+      procedure :: point_of => chart_point_of
+   end type chart_task_t
+
+contains
+
+   !> `&chart`.
+   function chart_declarations(self) result(groups)
+      class(chart_task_t), intent(in) :: self  !! the task
+      type(group_t), allocatable :: groups(:)
+      groups = [chart_group()]
+   end function chart_declarations
+
+   !> The variables that set the size of the file.
+   function chart_size_variables(self) result(text)
+      class(chart_task_t), intent(in) :: self  !! the task
+      character(len=:), allocatable :: text
+      text = "&chart: n_alpha, n_beta: "//integer_text(self%grid%n_alpha)//" x "//integer_text(self%grid%n_beta)// &
+             " points"
+   end function chart_size_variables
+
+   !> A chart task before its scene is read.
+   function chart_task() result(task)
+      type(chart_task_t) :: task
+      task%name = "chart"
+      task%takes_columns = .true.
+   end function chart_task
+
+   !> `&chart`, and what the scene's method and columns allow.
+   subroutine chart_read(self, file, scene, error)
+      class(chart_task_t), intent(inout) :: self  !! the task, its grid filled in
+      type(scene_file_t), intent(in) :: file      !! the scene file
+      type(scene_t), intent(in) :: scene          !! the `&scene` settings
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
+      integer, allocatable :: ids(:)
+      allocate (self%groups(1))
+      call read_chart_group(file, chart_group(), scene%model, self%grid, self%groups(1), error)
+      if (allocated(error)) return
+      call check_integration_cost(scene%source, "chart", "alpha_max", scene%method, &
+         max(abs(self%grid%alpha_min), abs(self%grid%alpha_max)) + &
+         max(abs(self%grid%beta_min), abs(self%grid%beta_max)), error)
+      if (allocated(error)) return
+      call scene_chart_columns(scene, ids, error)
+   end subroutine chart_read
+
+   !> Header plus n_alpha n_beta rows (and one blank line per α block).
+   pure function chart_estimated_bytes(self, scene) result(bytes)
+      class(chart_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      bytes = header_bytes + int(self%grid%n_alpha, int64)*int(self%grid%n_beta, int64)* &
+              merge(binary_row_bytes, text_row_bytes, scene%binary) + int(self%grid%n_alpha, int64)
+   end function chart_estimated_bytes
+
+   !> The chart task.
+   subroutine chart_run(self, scene, quiet, error)
+      class(chart_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      logical, intent(in) :: quiet  !! no progress on stderr
+      type(error_t), allocatable, intent(out) :: error  !! err_io, err_points_failed, ...
+      type(output_file_t) :: file
+      type(progress_t) :: progress
+      character(len=chart_line_length), allocatable :: lines(:)
+      real(wp) :: alpha
+      real(wp), allocatable :: all_betas(:)
+      character(len=23), allocatable :: beta_texts(:)
+      logical :: stopped, stop_now
+      character(len=chart_line_length), allocatable :: block_lines(:, :, :)
+      integer, allocatable :: block_status(:, :, :), statuses(:), ids(:)
+      real(wp), allocatable :: block_values(:, :, :, :), values(:, :)
+      integer(int64) :: n_inaccurate, n_failed
+      real(wp) :: first_inaccurate(2), first_failed(2)
+      integer :: group, n_groups, g
+      integer :: i, n_alpha, n_beta
+
+      n_alpha = self%grid%n_alpha
+      n_beta = self%grid%n_beta
+      call scene_chart_columns(scene, ids, error)
+      if (allocated(error)) return
+      ! an unwritable output path fails before any computing
+      call open_scene_output(scene, file, error)
+      if (allocated(error)) return
+      call check_method_runs(scene, self%grid%alpha_min, self%grid%beta_min, error)
+      if (allocated(error)) then
+         call discard_output(file)
+         return
+      end if
+      call chart_betas(self%grid, all_betas, beta_texts)
+      call write_header(file, chart_header(scene, outside(self%grid), ids), columns_text(chart_columns(scene), ids), &
+                        error, names_line=scene%names_line, records=[n_beta, n_alpha])
+      if (allocated(error)) then
+         call discard_output(file)
+         return
+      end if
+
+      call progress_begin(progress, int(n_alpha, int64)*n_beta, quiet)
+      stopped = .false.
+      n_inaccurate = 0
+      n_failed = 0
+      if (rows_in_parallel(self%grid)) then
+         ! groups of rows computed in parallel (mesh preparation, integration and
+         ! formatting on every core) into one of two buffers, while one thread writes the
+         ! previous group from the other buffer; a group holds a few rows per thread, so
+         ! memory stays bounded however large the chart
+         group = 8*max_threads()
+         n_groups = (n_alpha + group - 1)/group
+         allocate (block_lines(n_beta, group, 0:1), block_status(n_beta, group, 0:1), &
+                   block_values(size(ids), n_beta, group, 0:1))
+         !$omp parallel default(shared) private(g, i, alpha, stop_now)
+         do g = 1, n_groups + 1
+            ! every thread takes the same decision: stopped is read between two barriers
+            ! (it is written only inside the single below)
+            !$omp barrier
+            stop_now = stopped
+            !$omp barrier
+            if (stop_now) exit
+            if (g > 1) then
+               !$omp single
+               do i = (g - 2)*group + 1, min(n_alpha, (g - 1)*group)
+                  alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i)
+                  call finish_row(i, alpha, block_lines(:, i - (g - 2)*group, mod(g - 1, 2)), &
+                     block_values(:, :, i - (g - 2)*group, mod(g - 1, 2)), block_status(:, i - (g - 2)*group, mod(g - 1, 2)))
+                  if (stopped) exit
+               end do
+               !$omp end single nowait
+            end if
+            if (g <= n_groups) then
+               !$omp do schedule(dynamic)
+               do i = (g - 1)*group + 1, min(n_alpha, g*group)
+                  alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i)
+                  call compute_row(scene, ids, alpha, all_betas, block_lines(:, i - (g - 1)*group, mod(g, 2)), &
+                     block_values(:, :, i - (g - 1)*group, mod(g, 2)), block_status(:, i - (g - 1)*group, mod(g, 2)), &
+                     beta_texts=beta_texts)
+               end do
+               !$omp end do
+            else
+               !$omp barrier
+            end if
+         end do
+         !$omp end parallel
+      else
+         ! few rows: the points of each row in parallel chunks sharing the prepared meshes
+         allocate (lines(n_beta), statuses(n_beta), values(size(ids), n_beta))
+         do i = 1, n_alpha
+            alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i)
+            call compute_row_in_chunks(scene, ids, alpha, all_betas, lines, values, statuses, beta_texts)
+            call finish_row(i, alpha, lines, values, statuses)
+            if (stopped) exit
+         end do
+      end if
+      call progress_end(progress)
+      call finish_output(file, error)
+      if (allocated(error)) return
+      call warn_inaccurate(scene, n_inaccurate, first_inaccurate)
+      call failed_points_error(scene, n_failed, int(n_alpha, int64)*n_beta, first_failed, error)
+   contains
+      !> Write a computed row (in order) and count its round-off limited and failed points.
+      subroutine finish_row(i, alpha, lines, values, statuses)
+         integer, intent(in) :: i
+         real(wp), intent(in) :: alpha
+         character(len=*), intent(in) :: lines(:)  !! text: the row's lines
+         real(wp), intent(in) :: values(:, :)      !! binary: the row's records
+         integer, intent(in) :: statuses(:)
+         if (scene%binary) then
+            call write_records(file, values, error)
+         else
+            ! blocks of constant alpha, separated by one blank line (gnuplot pm3d/image)
+            call write_text(file, joined_lines(lines, i > 1), error)
+         end if
+         if (allocated(error)) then
+            stopped = .true.
+            return
+         end if
+         if (any(statuses == status_roundoff)) then
+            if (n_inaccurate == 0) first_inaccurate = [alpha, all_betas(findloc(statuses, status_roundoff, dim=1))]
+            n_inaccurate = n_inaccurate + count(statuses == status_roundoff)
+         end if
+         if (any(statuses == status_failed)) then
+            if (n_failed == 0) first_failed = [alpha, all_betas(findloc(statuses, status_failed, dim=1))]
+            n_failed = n_failed + count(statuses == status_failed)
+         end if
+         call progress_update(progress, int(i, int64)*n_beta)
+      end subroutine finish_row
+   end subroutine chart_run
+
+   !> Whether the grid leaves the physical domain.
+   pure logical function outside(grid)
+      type(chart_grid_t), intent(in) :: grid
+      outside = .not. (in_physical_domain(grid%alpha_min, grid%beta_min) .and. &
+                       in_physical_domain(grid%alpha_max, grid%beta_max))
+   end function outside
+
+   !> Text lines or binary records (and statuses) of the chart points (α, β_j) of one row
+   !> or part of a row, with the columns `ids`.
+   subroutine compute_row(scene, ids, alpha, betas, lines, values, statuses, plan, beta_texts)
+      type(scene_t), intent(in) :: scene
+      integer, intent(in) :: ids(:)  !! the columns (hillstab_batch_chart_columns)
+      real(wp), intent(in) :: alpha, betas(:)
+      character(len=*), intent(inout) :: lines(:)  !! text format: one line a point
+      real(wp), intent(inout) :: values(:, :)      !! binary format: (columns, points)
+      !> status_ok, status_roundoff (computed only to the round-off level) or status_failed
+      integer, intent(out) :: statuses(:)
+      type(batch_plan_t), intent(in), optional :: plan  !! prepared for the whole row
+      character(len=23), intent(in), optional :: beta_texts(:)  !! format_es(betas, 16), made once per chart
+      type(trace_t) :: traces(size(betas))
+      character(len=23) :: alpha_text
+      type(error_t), allocatable :: cause
+      type(floquet_t) :: f
+      type(hill_model_t) :: row
+      real(wp) :: v(n_chart_columns), per_second
+      logical :: failed(size(betas)), inaccurate(size(betas))
+      integer :: j
+      ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
+      ! when the scene knows ω)
+      per_second = 0.0_wp
+      if (scene%physical) per_second = scene%pendulum%omega/pi
+      row = hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon)
+      call monodromy_trace_batch(row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate)
+      alpha_text = format_es(alpha, 16)
+      statuses = merge(status_roundoff, status_ok, inaccurate)
+      where (failed) statuses = status_failed
+      do j = 1, size(betas)
+         if (failed(j)) then
+            v = failed_values(alpha, betas(j), in_physical_domain(alpha, betas(j)))
+         else
+            f = floquet_from_trace(traces(j), scene%epsilon, scene%method%tolerance)
+            v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second)
+         end if
+         if (scene%binary) then
+            values(:, j) = v(ids)
+         else if (present(beta_texts)) then
+            call chart_line(ids, v, lines(j), alpha_text, beta_texts(j))
+         else
+            call chart_line(ids, v, lines(j), alpha_text)
+         end if
+      end do
+   end subroutine compute_row
+
+   !> A chart computes whole rows in parallel when it has enough of them, else the
+   !> chunks of each row in parallel.
+   logical function rows_in_parallel(grid)
+      type(chart_grid_t), intent(in) :: grid
+      rows_in_parallel = grid%n_alpha >= 4*max_threads()
+   end function rows_in_parallel
+
+   !> `compute_row` on a whole row, split into chunks computed in parallel that share
+   !> the meshes prepared for the row.
+   subroutine compute_row_in_chunks(scene, ids, alpha, betas, lines, values, statuses, beta_texts)
+      type(scene_t), intent(in) :: scene
+      integer, intent(in) :: ids(:)  !! the columns
+      real(wp), intent(in) :: alpha, betas(:)
+      character(len=*), intent(inout) :: lines(:)  !! text format: one line a point
+      real(wp), intent(inout) :: values(:, :)      !! binary format: (columns, points)
+      integer, intent(out) :: statuses(:)
+      character(len=23), intent(in) :: beta_texts(:)
+      type(batch_plan_t) :: plan
+      integer :: c, chunk, n_chunks, first, last, n
+      n = size(betas)
+      chunk = max(16, n/(8*max_threads()))
+      n_chunks = (n + chunk - 1)/chunk
+      call prepare_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), betas, scene%method, plan)
+      !$omp parallel do schedule(dynamic) default(shared) private(c, first, last)
+      do c = 1, n_chunks
+         first = (c - 1)*chunk + 1
+         last = min(n, c*chunk)
+         call compute_row(scene, ids, alpha, betas(first:last), lines(first:last), values(:, first:last), &
+            statuses(first:last), plan, beta_texts(first:last))
+      end do
+      !$omp end parallel do
+   end subroutine compute_row_in_chunks
+
+   !> The β values of a chart's rows and their text, made once per chart.
+   subroutine chart_betas(grid, betas, beta_texts)
+      type(chart_grid_t), intent(in) :: grid  !! the grid
+      real(wp), allocatable, intent(out) :: betas(:)  !! the n_beta grid values
+      character(len=23), allocatable, intent(out) :: beta_texts(:)  !! format_es(betas, 16)
+      integer :: j
+      betas = [(grid_value(grid%beta_min, grid%beta_max, grid%n_beta, j), j=1, grid%n_beta)]
+      allocate (beta_texts(grid%n_beta))
+      do j = 1, grid%n_beta
+         beta_texts(j) = format_es(betas(j), 16)
+      end do
+   end subroutine chart_betas
+
+   !> Points of the chart.
+   pure function chart_point_count(self) result(n)
+      class(chart_task_t), intent(in) :: self  !! the task
+      integer(int64) :: n
+      n = int(self%grid%n_alpha, int64)*self%grid%n_beta
+   end function chart_point_count
+
+   !> One row a unit.
+   pure integer function chart_unit_size(self, n_workers) result(size)
+      class(chart_task_t), intent(in) :: self  !! the task
+      integer, intent(in) :: n_workers   !! processes computing units
+      size = self%grid%n_beta
+   end function chart_unit_size
+
+   !> The β values, their text and the columns, shared by every row.
+   subroutine chart_prepare_units(self, scene)
+      class(chart_task_t), intent(inout) :: self  !! the task
+      type(scene_t), intent(in) :: scene    !! its scene
+      type(error_t), allocatable :: error
+      call chart_betas(self%grid, self%betas, self%beta_texts)
+      call scene_chart_columns(scene, self%ids, error)  ! checked when the scene was read
+   end subroutine chart_prepare_units
+
+   !> Row `unit` as the file holds it (a blank line before every row but the first),
+   !> computed as `chart_run` computes it.
+   subroutine chart_unit_text(self, scene, unit, first, last, text, statuses)
+      class(chart_task_t), intent(in) :: self  !! the task, its units prepared
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer, intent(in) :: unit  !! the row
+      integer(int64), intent(in) :: first, last  !! its points
+      character(len=:), allocatable, intent(out) :: text  !! the lines, no final new line
+      integer, intent(out) :: statuses(first:last)  !! per point
+      character(len=chart_line_length), allocatable :: lines(:)
+      real(wp), allocatable :: values(:, :)
+      real(wp) :: alpha
+      allocate (lines(self%grid%n_beta), values(size(self%ids), self%grid%n_beta))
+      alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, self%grid%n_alpha, unit)
+      if (rows_in_parallel(self%grid)) then
+         call compute_row(scene, self%ids, alpha, self%betas, lines, values, statuses, beta_texts=self%beta_texts)
+      else
+         call compute_row_in_chunks(scene, self%ids, alpha, self%betas, lines, values, statuses, self%beta_texts)
+      end if
+      text = joined_lines(lines, unit > 1)
+   end subroutine chart_unit_text
+
+   !> The checks and the header of `chart_run`.
+   subroutine chart_open_units(self, scene, file, error)
+      class(chart_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      type(output_file_t), intent(inout) :: file  !! the open output file
+      type(error_t), allocatable, intent(out) :: error  !! why the file cannot be written
+      integer, allocatable :: ids(:)
+      call scene_chart_columns(scene, ids, error)
+      if (allocated(error)) return
+      call check_method_runs(scene, self%grid%alpha_min, self%grid%beta_min, error)
+      if (allocated(error)) return
+      call write_header(file, chart_header(scene, outside(self%grid), ids), columns_text(chart_columns(scene), ids), &
+                        error, names_line=scene%names_line)
+   end subroutine chart_open_units
+
+   !> As after `chart_run`: round-off limited points warned about, failed ones an error.
+   subroutine chart_finish_units(self, scene, n_points, n_failed, first_failed, n_inaccurate, first_inaccurate, error)
+      class(chart_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64), intent(in) :: n_points  !! all points
+      integer(int64), intent(in) :: n_failed  !! failed points written
+      real(wp), intent(in) :: first_failed(2)  !! (α, β) of the first of them
+      integer(int64), intent(in) :: n_inaccurate  !! round-off limited points written
+      real(wp), intent(in) :: first_inaccurate(2)  !! (α, β) of the first of them
+      type(error_t), allocatable, intent(out) :: error  !! err_points_failed when points failed
+      call warn_inaccurate(scene, n_inaccurate, first_inaccurate)
+      call failed_points_error(scene, n_failed, n_points, first_failed, error)
+   end subroutine chart_finish_units
+
+   !> (α, β) of point k, numbered row by row.
+   pure function chart_point_of(self, k) result(point)
+      class(chart_task_t), intent(in) :: self  !! the task
+      integer(int64), intent(in) :: k  !! the point
+      real(wp) :: point(2)
+      point = grid_point(self%grid, k)
+   end function chart_point_of
+
+   !> Number of OpenMP threads a parallel region will use (1 without OpenMP).
+   integer function max_threads()
+      max_threads = 1
+      !$ max_threads = omp_get_max_threads()
+   end function max_threads
+end module hillstab_batch_task_chart

@@ -1,0 +1,206 @@
+!> Interfaces of the C library and POSIX routines hillstab calls, declared once: files
+!> (stdio streams, rename, remove, unlink, fsync), errno and its message, the process id,
+!> signals, whether a descriptor is a terminal, free space (statvfs). Bindings only: the
+!> writers (hillstab_batch_output), the signal cleanup (hillstab_batch_signals), the
+!> resource limits (hillstab_batch_limits) and the progress line use them; `remove_file` and
+!> `is_directory` are the two path helpers every reader and writer needs.
+!>
+!>```fortran
+!> integer(c_int) :: status
+!> status = c_rename(c_string("a.part"), c_string("a"))
+!> if (status /= 0) print '(a)', errno_text()
+!>```
+module hillstab_ffi_libc
+   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_size_t, c_long, c_funptr, &
+      c_f_pointer
+   implicit none
+   private
+   public :: c_rename, c_remove, c_unlink, c_getpid, c_fopen, c_fwrite, c_fwrite_raw, c_fflush, c_fclose, c_fileno, &
+      c_fsync, c_signal, c_exit_now, c_isatty, c_statvfs, statvfs_t
+   public :: errno_text, set_errno, c_string, remove_file, is_directory
+
+   !> struct statvfs on 64-bit Linux.
+   type, bind(C) :: statvfs_t
+      integer(c_long) :: bsize    !! file system block size
+      integer(c_long) :: frsize   !! fragment size (the unit of the counts)
+      integer(c_long) :: blocks   !! size of the file system in frsize units
+      integer(c_long) :: bfree    !! free blocks
+      integer(c_long) :: bavail   !! free blocks for unprivileged users
+      integer(c_long) :: files    !! inodes
+      integer(c_long) :: ffree    !! free inodes
+      integer(c_long) :: favail   !! free inodes for unprivileged users
+      integer(c_long) :: fsid     !! file system id
+      integer(c_long) :: flag     !! mount flags
+      integer(c_long) :: namemax  !! longest file name
+      integer(c_int) :: spare(6)  !! reserved
+   end type statvfs_t
+
+   interface
+      !> rename(2): 0 on success.
+      function c_rename(old, new) bind(C, name="rename") result(status)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: old(*)  !! NUL-terminated current name
+         character(kind=c_char), intent(in) :: new(*)  !! NUL-terminated new name
+         integer(c_int) :: status
+      end function c_rename
+      !> remove(3): 0 on success.
+      function c_remove(path) bind(C, name="remove") result(status)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: path(*)  !! NUL-terminated path
+         integer(c_int) :: status
+      end function c_remove
+      !> unlink(2) (async-signal-safe): 0 on success.
+      function c_unlink(path) bind(C, name="unlink") result(status)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: path(*)  !! NUL-terminated path
+         integer(c_int) :: status
+      end function c_unlink
+      !> getpid(2).
+      function c_getpid() bind(C, name="getpid") result(pid)
+         import :: c_int
+         integer(c_int) :: pid
+      end function c_getpid
+      !> fopen(3): a C stream, or a null pointer (errno set).
+      function c_fopen(path, mode) bind(C, name="fopen") result(stream)
+         import :: c_char, c_ptr
+         character(kind=c_char), intent(in) :: path(*)  !! NUL-terminated path
+         character(kind=c_char), intent(in) :: mode(*)  !! NUL-terminated mode, e.g. "w"
+         type(c_ptr) :: stream
+      end function c_fopen
+      !> fwrite(3) of characters: the number of items written.
+      function c_fwrite(buffer, size, count, stream) bind(C, name="fwrite") result(written)
+         import :: c_char, c_size_t, c_ptr
+         character(kind=c_char), intent(in) :: buffer(*)  !! the bytes
+         integer(c_size_t), value :: size   !! bytes per item
+         integer(c_size_t), value :: count  !! items
+         type(c_ptr), value :: stream       !! the stream
+         integer(c_size_t) :: written
+      end function c_fwrite
+      !> fwrite(3) from an address (raw records).
+      function c_fwrite_raw(buffer, size, count, stream) bind(C, name="fwrite") result(written)
+         import :: c_ptr, c_size_t
+         type(c_ptr), value :: buffer       !! address of the first byte
+         integer(c_size_t), value :: size   !! bytes per item
+         integer(c_size_t), value :: count  !! items
+         type(c_ptr), value :: stream       !! the stream
+         integer(c_size_t) :: written
+      end function c_fwrite_raw
+      !> fflush(3): 0 on success.
+      function c_fflush(stream) bind(C, name="fflush") result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: stream  !! the stream
+         integer(c_int) :: status
+      end function c_fflush
+      !> fclose(3): 0 on success.
+      function c_fclose(stream) bind(C, name="fclose") result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: stream  !! the stream
+         integer(c_int) :: status
+      end function c_fclose
+      !> fileno(3): the descriptor of a stream.
+      function c_fileno(stream) bind(C, name="fileno") result(fd)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: stream  !! the stream
+         integer(c_int) :: fd
+      end function c_fileno
+      !> fsync(2): 0 once the file's data are on the disk.
+      function c_fsync(fd) bind(C, name="fsync") result(status)
+         import :: c_int
+         integer(c_int), value :: fd  !! the descriptor
+         integer(c_int) :: status
+      end function c_fsync
+      !> signal(2): the previous handler.
+      function c_signal(signum, handler) bind(C, name="signal") result(previous)
+         import :: c_int, c_funptr
+         integer(c_int), value :: signum     !! the signal number
+         type(c_funptr), value :: handler    !! a bind(C) handler, or SIG_IGN
+         type(c_funptr) :: previous
+      end function c_signal
+      !> _exit(2) (async-signal-safe): end the process at once.
+      subroutine c_exit_now(status) bind(C, name="_exit")
+         import :: c_int
+         integer(c_int), value :: status  !! the exit status
+      end subroutine c_exit_now
+      !> isatty(3): 1 when the descriptor is a terminal.
+      function c_isatty(fd) bind(C, name="isatty") result(yes)
+         import :: c_int
+         integer(c_int), value :: fd  !! the descriptor
+         integer(c_int) :: yes
+      end function c_isatty
+      !> statvfs(3): 0 on success.
+      function c_statvfs(path, info) bind(C, name="statvfs") result(status)
+         import :: c_char, c_int, statvfs_t
+         character(kind=c_char), intent(in) :: path(*)  !! NUL-terminated path on the file system
+         type(statvfs_t), intent(out) :: info           !! the file system's counts
+         integer(c_int) :: status
+      end function c_statvfs
+      function c_errno_location() bind(C, name="__errno_location") result(where)
+         import :: c_ptr
+         type(c_ptr) :: where
+      end function c_errno_location
+      function c_strerror(code) bind(C, name="strerror") result(text)
+         import :: c_int, c_ptr
+         integer(c_int), value :: code
+         type(c_ptr) :: text
+      end function c_strerror
+   end interface
+
+contains
+
+   !> The message of the current errno ("unknown cause" when errno is 0).
+   function errno_text() result(text)
+      character(len=:), allocatable :: text
+      integer(c_int), pointer :: code
+      character(kind=c_char), pointer :: chars(:)
+      integer :: n
+      call c_f_pointer(c_errno_location(), code)
+      if (code == 0) then
+         text = "unknown cause"
+         return
+      end if
+      call c_f_pointer(c_strerror(code), chars, [1024])
+      n = 0
+      do while (n < 1024)
+         if (chars(n + 1) == c_null_char) exit
+         n = n + 1
+      end do
+      allocate (character(len=n) :: text)
+      text = transfer(chars(:n), text)
+   end function errno_text
+
+   !> Set errno (to 0 before a call whose failure is then read with `errno_text`).
+   subroutine set_errno(value)
+      integer, intent(in) :: value  !! the new errno
+      integer(c_int), pointer :: code
+      call c_f_pointer(c_errno_location(), code)
+      code = int(value, c_int)
+   end subroutine set_errno
+
+   !> A Fortran string as a NUL-terminated C string.
+   pure function c_string(text) result(c)
+      character(len=*), intent(in) :: text  !! the string
+      character(kind=c_char) :: c(len(text) + 1)
+      integer :: i
+      do i = 1, len(text)
+         c(i) = text(i:i)
+      end do
+      c(len(text) + 1) = c_null_char
+   end function c_string
+
+   !> Delete a file if it exists (no error if it does not).
+   subroutine remove_file(path)
+      character(len=*), intent(in) :: path  !! the file
+      integer(c_int) :: status
+      status = c_remove(c_string(path))
+   end subroutine remove_file
+
+   !> Whether `path` names an existing directory.
+   logical function is_directory(path)
+      character(len=*), intent(in) :: path  !! any path
+      if (len(path) == 0) then
+         is_directory = .false.
+         return
+      end if
+      inquire (file=path//"/.", exist=is_directory)
+   end function is_directory
+end module hillstab_ffi_libc
