@@ -21,7 +21,8 @@ module hillstab
    use hillstab_integrate_magnus
    use hillstab_integrate_auto
    use hillstab_integrate_monodromy
-   use hillstab_integrate_gsl
+   use hillstab_integrate_monodromy_gsl
+   use hillstab_hill_mathieu
    use hillstab_curves_hill_method
    use hillstab_integrate_rk
    use hillstab_integrate_monodromy_rk

@@ -13,7 +13,7 @@ module hillstab_integrate_monodromy
       trace_t, trace_of
    use hillstab_hill_formulas, only: trace_damped_paper, trace_mathieu_two_segment
    use hillstab_core_stats, only: work_stats_t, add_work
-   use hillstab_integrate_gsl, only: trace_gsl
+   use hillstab_integrate_monodromy_gsl, only: trace_gsl
    use hillstab_integrate_monodromy_rk, only: trace_rk
    use hillstab_integrate_magnus, only: trace_magnus
    use hillstab_integrate_auto, only: trace_auto, trace_auto_batch, auto_plan_t, auto_prepare
