@@ -13,6 +13,7 @@ module hillstab
    use hillstab_core_error
    use hillstab_core_status
    use hillstab_core_stats
+   use hillstab_hill_models
    use hillstab_hill_coefficient
    use hillstab_hill_units
    use hillstab_hill_transfer

@@ -1,5 +1,6 @@
 !> Fast text for reals in scientific notation, for large gnuplot-ready files; and the
-!> small text helpers the writers and the scene reader share (`integer_text`, `lower_case`).
+!> small text helpers the writers and the scene reader share (`integer_text`, `lower_case`,
+!> `alternatives_text`).
 !>
 !> Fortran's formatted `write` costs about half a microsecond per number, which
 !> is more than method auto needs to compute a chart point; this module writes
@@ -18,7 +19,7 @@ module hillstab_core_text
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    implicit none
    private
-   public :: format_es, es_width, put_es, put_integer, integer_text, lower_case
+   public :: format_es, es_width, put_es, put_integer, integer_text, lower_case, alternatives_text
 
    !> Decimal text of an integer of the default kind or of kind int64, without blanks.
    interface integer_text
@@ -222,6 +223,22 @@ contains
          if (text(i:i) >= "A" .and. text(i:i) <= "Z") low(i:i) = achar(iachar(text(i:i)) + 32)
       end do
    end function lower_case
+
+   !> The names as a choice for a message: "a", "a or b", "a, b or c" (each name trimmed).
+   pure function alternatives_text(names) result(text)
+      character(len=*), intent(in) :: names(:)  !! the names, in order
+      character(len=:), allocatable :: text
+      integer :: i
+      text = ""
+      do i = 1, size(names)
+         if (i > 1 .and. i == size(names)) then
+            text = text//" or "
+         else if (i > 1) then
+            text = text//", "
+         end if
+         text = text//trim(names(i))
+      end do
+   end function alternatives_text
 
    !> format_es through Fortran's `es` descriptor (correctly rounded; slower), into
    !> buffer(last − digits − 6 : last).

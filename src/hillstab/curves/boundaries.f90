@@ -25,7 +25,7 @@
 module hillstab_curves_boundaries
    use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu
+   use hillstab_hill_models, only: hill_model_t
    use hillstab_hill_transfer, only: trace_t
    use hillstab_integrate_monodromy, only: method_t, method_auto, monodromy_trace
    use hillstab_hill_mathieu, only: mathieu_witness, gsl_witness_max_q
@@ -85,7 +85,7 @@ contains
 
    !> Check a boundary independently: S(α, β) = trace_sign by method auto.
    subroutine verify_boundary(kind, alpha, beta, trace_sign, tolerance, check, error)
-      integer, intent(in) :: kind           !! model_elastic or model_mathieu
+      integer, intent(in) :: kind           !! a model constant (hillstab_hill_models)
       real(wp), intent(in) :: alpha, beta   !! the boundary point
       integer, intent(in) :: trace_sign     !! +2 or −2
       real(wp), intent(in) :: tolerance     !! the tolerance the boundary was computed to
@@ -192,7 +192,7 @@ contains
    !> The roots of S_method(β) = ±2 in [beta_min, beta_max] for an approximate method
    !> (formula or segments), with their orders, ascending in β.
    subroutine approximate_boundaries(kind, alpha, method, beta_min, beta_max, n_samples, tolerance, roots, error)
-      integer, intent(in) :: kind            !! model_elastic or model_mathieu
+      integer, intent(in) :: kind            !! a model constant (hillstab_hill_models)
       real(wp), intent(in) :: alpha          !! α (ν)
       type(method_t), intent(in) :: method   !! method_formula or method_segments
       real(wp), intent(in) :: beta_min, beta_max  !! the beta window searched
@@ -261,7 +261,7 @@ contains
    !> |S| = 2 in [lo, hi]: between consecutive roots (and the ends) the verdict is
    !> that of S_method at the midpoint.
    subroutine unstable_intervals_from_roots(kind, alpha, method, lo, hi, roots, intervals, error)
-      integer, intent(in) :: kind  !! model_elastic or model_mathieu
+      integer, intent(in) :: kind  !! a model constant (hillstab_hill_models)
       real(wp), intent(in) :: alpha, lo, hi  !! alpha (nu); the beta window [lo, hi]
       type(method_t), intent(in) :: method  !! the method whose verdicts are used
       real(wp), intent(in) :: roots(:)   !! ascending, inside [lo, hi]

@@ -7,11 +7,11 @@
 module hillstab_integrate_monodromy
    use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu, check_model, &
+   use hillstab_hill_coefficient, only: hill_model_t, check_model, &
       segment_coefficients, hill_period, sampling_endpoint, sampling_midpoint, sampling_average
    use hillstab_hill_transfer, only: scaled_matrix_t, scaled_identity, multiply_transfer, multiply_matrix, &
       trace_t, trace_of
-   use hillstab_hill_formulas, only: trace_damped_paper, trace_mathieu_two_segment
+   use hillstab_hill_formulas, only: trace_formula
    use hillstab_core_stats, only: work_stats_t, add_work
    use hillstab_integrate_monodromy_gsl, only: trace_gsl
    use hillstab_integrate_monodromy_rk, only: trace_rk
@@ -140,11 +140,7 @@ contains
       if (allocated(error)) return
       select case (method%kind)
       case (method_formula)
-         if (model%kind == model_mathieu) then
-            tr = trace_mathieu_two_segment(model%alpha, model%beta - 0.25_wp*model%epsilon**2)
-         else
-            tr = trace_damped_paper(model%alpha, model%beta, model%epsilon)
-         end if
+         tr = trace_formula(model)
          work = work_stats_t(2, 0, 2)
       case (method_segments)
          if (method%n_segments < 1) then
