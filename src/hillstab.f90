@@ -21,6 +21,7 @@ module hillstab
    use hillstab_hill_floquet
    use hillstab_integrate_magnus
    use hillstab_integrate_auto
+   use hillstab_integrate_segments
    use hillstab_integrate_monodromy
    use hillstab_integrate_monodromy_gsl
    use hillstab_hill_mathieu
