@@ -19,7 +19,7 @@ module hillstab_core_text
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    implicit none
    private
-   public :: format_es, es_width, put_es, put_integer, integer_text, lower_case, alternatives_text
+   public :: format_es, es_width, put_es, put_integer, integer_text, lower_case, alternatives_text, name_position
 
    !> Decimal text of an integer of the default kind or of kind int64, without blanks.
    interface integer_text
@@ -223,6 +223,21 @@ contains
          if (text(i:i) >= "A" .and. text(i:i) <= "Z") low(i:i) = achar(iachar(text(i:i)) + 32)
       end do
    end function lower_case
+
+   !> Position of `name` in `names` (any case, blanks around it ignored; the names lower
+   !> case), 0 when it is none of them: the lookup of the tables' `*_from_name`.
+   pure integer function name_position(name, names) result(position)
+      character(len=*), intent(in) :: name      !! the name looked up
+      character(len=*), intent(in) :: names(:)  !! the names, lower case
+      integer :: i
+      position = 0
+      do i = 1, size(names)
+         if (lower_case(trim(adjustl(name))) == trim(names(i))) then
+            position = i
+            return
+         end if
+      end do
+   end function name_position
 
    !> The names as a choice for a message: "a", "a or b", "a, b or c" (each name trimmed).
    pure function alternatives_text(names) result(text)

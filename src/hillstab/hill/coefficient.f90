@@ -16,7 +16,7 @@
 !>```
 module hillstab_hill_coefficient
    use hillstab_core_kinds, only: wp
-   use hillstab_core_text, only: lower_case, alternatives_text
+   use hillstab_core_text, only: name_position, alternatives_text
    use hillstab_hill_models, only: hill_model_t, model_elastic, model_mathieu, model_name, hill_coefficient, &
       check_model, segment_average, damping_shift, shape_root_mean, model_split
    use hillstab_hill_model_elastic, only: in_physical_domain, one_minus_alpha_over_pi2
@@ -59,11 +59,8 @@ contains
    !> Sampling constant from its name (any case, blanks trimmed); −1 when unknown.
    pure integer function sampling_from_name(name) result(sampling)
       character(len=*), intent(in) :: name  !! a sampling name
-      integer :: k
-      sampling = -1
-      do k = 1, sampling_count
-         if (lower_case(trim(adjustl(name))) == trim(sampling_names(k))) sampling = k
-      end do
+      sampling = name_position(name, sampling_names)
+      if (sampling == 0) sampling = -1
    end function sampling_from_name
 
    !> The sampling names as a choice for messages: "endpoint, midpoint or average".

@@ -18,7 +18,7 @@
 module hillstab_hill_models
    use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
-   use hillstab_core_text, only: lower_case, alternatives_text
+   use hillstab_core_text, only: name_position, alternatives_text
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_hill_units, only: physical_t, physical_alpha, physical_nu
    use hillstab_hill_mathieu, only: mathieu_witness
@@ -105,11 +105,8 @@ contains
    !> Model constant from its name (any case, blanks trimmed); −1 when unknown.
    pure integer function model_from_name(name) result(kind)
       character(len=*), intent(in) :: name  !! a model name
-      integer :: k
-      kind = -1
-      do k = 1, model_count
-         if (lower_case(trim(adjustl(name))) == trim(model_table(k)%name)) kind = k
-      end do
+      kind = name_position(name, model_table%name)
+      if (kind == 0) kind = -1
    end function model_from_name
 
    !> The model names as a choice for messages: "elastic or mathieu".

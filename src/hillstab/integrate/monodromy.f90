@@ -19,7 +19,7 @@
 module hillstab_integrate_monodromy
    use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
-   use hillstab_core_text, only: lower_case, alternatives_text
+   use hillstab_core_text, only: name_position, alternatives_text
    use hillstab_hill_coefficient, only: hill_model_t, check_model, sampling_endpoint, sampling_count
    use hillstab_hill_transfer, only: scaled_matrix_t, multiply_matrix, trace_t
    use hillstab_hill_formulas, only: trace_formula
@@ -126,11 +126,8 @@ contains
    !> Method constant from its name (any case, blanks trimmed); −1 when unknown.
    pure integer function method_from_name(name) result(kind)
       character(len=*), intent(in) :: name  !! a method name
-      integer :: k
-      kind = -1
-      do k = lbound(method_table, 1), ubound(method_table, 1)
-         if (lower_case(trim(adjustl(name))) == trim(method_table(k)%name)) kind = k
-      end do
+      kind = name_position(name, method_table%name)
+      kind = merge(kind - 1 + lbound(method_table, 1), -1, kind > 0)
    end function method_from_name
 
    !> The method names as a choice for messages: "auto, formula, segments, magnus4, magnus6, rk or gsl".

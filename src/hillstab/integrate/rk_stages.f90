@@ -15,14 +15,12 @@
 !> the driver hands them the workspace and the step record as two arguments (passing
 !> the arrays and the outputs one by one cost DOPRI5 6 % more instructions per step). A
 !> new pair is its kernel here, its tableau and its row of `rk_pairs` in
-!> hillstab_integrate_rk_tableaux.
+!> hillstab_integrate_rk_tableaux. (A system and its integration: the example of
+!> hillstab_integrate_rk.)
 !>
 !>```fortran
-!> type, extends(rk_system_t) :: oscillator_t
-!>    real(wp) :: omega = 1.0_wp
-!> contains
-!>    procedure :: rhs => oscillator_rhs
-!> end type oscillator_t
+!> type(rk_stages_t), target :: w
+!> call rk_stages_start(w, rk_dop853, 4, 16, [1.0e-10_wp, 1.0e-10_wp, 1.0e-10_wp, 1.0e-10_wp], 1.0e-10_wp)
 !>```
 module hillstab_integrate_rk_stages
    use hillstab_core_kinds, only: wp, int64
