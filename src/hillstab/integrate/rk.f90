@@ -512,7 +512,7 @@ contains
       integer :: j_new
       hh = t_new - d%step%t
       j_new = d%pair%new_column
-      if (d%method /= rk_dopri5) then
+      if (.not. d%pair%fsal) then
          ! f at the new point, in the column after the stages (DOP853 13, PD87 14, VERN98 17;
          ! DOPRI5's last stage is f there: FSAL)
          call rk_evaluate_new_point(d%stages, system, t_new, j_new)
@@ -530,7 +530,7 @@ contains
       end if
       ! the Hermite part (DOPRI5: with Shampine's 4th-order term), the step recorded
       call rk_accept_step(d%stages, d%step, t_new, j_new)
-      if (d%want_dense .and. d%method == rk_dop853) d%step%dense_order = 7
+      if (d%want_dense) d%step%dense_order = d%pair%dense_order
       d%work%n_steps = d%work%n_steps + 1
    end subroutine complete_step
 end module hillstab_integrate_rk

@@ -55,6 +55,7 @@ module hillstab_integrate_rk_tableaux
       integer :: order = 0        !! classical order of the propagating formula
       integer :: columns = 0      !! columns of the stage array: stages, f at the new point, dense stages
       integer :: new_column = 0   !! the column that holds f at the new point after a step
+      logical :: fsal = .false.   !! the last stage is f at the new point (no evaluation after the step)
       integer :: dense_order = 0  !! order of its own continuous extension (0: none, the cubic Hermite serves)
       !> PI control: the step exponent is 1/order − pi_weight·β, the admissible β below
       !> (1/order)/(1 + pi_weight) (`rk_beta_limit`)
@@ -67,10 +68,10 @@ module hillstab_integrate_rk_tableaux
    !> The pairs, in the order of their codes (DOP853: 12 stages, f at the new point in
    !> column 13, its dense stages in 14–16; PD87: 13 stages and f new in 14; VERN98: 16 and 17).
    type(rk_pair_t), parameter :: rk_pairs(4) = [ &
-      rk_pair_t("dopri5", 5, 7, 7, 4, 0.75_wp, 0.04_wp, 0.2_wp, 10.0_wp), &
-      rk_pair_t("dop853", 8, 16, 13, 7, 0.2_wp, 0.0_wp, 0.333_wp, 6.0_wp), &
-      rk_pair_t("pd87", 8, 16, 14, 0, 0.2_wp, 0.0_wp, 0.333_wp, 6.0_wp), &
-      rk_pair_t("vern98", 9, 17, 17, 0, 0.2_wp, 0.0_wp, 0.333_wp, 6.0_wp)]
+      rk_pair_t("dopri5", 5, 7, 7, .true., 4, 0.75_wp, 0.04_wp, 0.2_wp, 10.0_wp), &
+      rk_pair_t("dop853", 8, 16, 13, .false., 7, 0.2_wp, 0.0_wp, 0.333_wp, 6.0_wp), &
+      rk_pair_t("pd87", 8, 16, 14, .false., 0, 0.2_wp, 0.0_wp, 0.333_wp, 6.0_wp), &
+      rk_pair_t("vern98", 9, 17, 17, .false., 0, 0.2_wp, 0.0_wp, 0.333_wp, 6.0_wp)]
 
    ! PD8(7) and VERN98: the weights of both formulas, named here because the error weights
    ! of the tableaux below are their differences. PD8(7): 8th-order weights b, 7th-order b̂
