@@ -412,92 +412,97 @@ contains
       real(wp), intent(in), optional :: t_out(:)
       real(wp), intent(inout), optional :: y_out(:, :)
       real(wp), intent(inout), optional :: h_next
-      real(wp) :: h, h_new, err, fac11, fac
+      real(wp) :: h, h_new, err, fac11, fac, direction, t_end
+      type(controller_t) :: control
       integer :: order, attempts
       logical :: last, rejected_before
       character(len=160) :: message
       order = d%pair%order
       ! Hairer's defaults of the pair, unless set; the error estimate is of order p − 1
       ! (local error ~ h^p, p the propagating order): h ∝ err^(-1/p), PI-stabilised
-      associate (control => d%control)
-         control%safety = options%safety
-         control%beta = merge(options%beta, d%pair%beta, options%beta >= 0.0_wp)
-         control%fac_min = merge(options%fac_min, d%pair%fac_min, options%fac_min > 0.0_wp)
-         control%fac_max = merge(options%fac_max, d%pair%fac_max, options%fac_max > 0.0_wp)
-         control%exponent = 1.0_wp/order - d%pair%pi_weight*control%beta
-         control%h_max = merge(options%h_max, d%span, options%h_max > 0.0_wp)
-         control%fac_old = 1.0e-4_wp
+      ! (the loop works on local copies of the control and the interval: they stay in
+      ! registers across the calls, where components of the driver, a target, are reloaded)
+      direction = d%direction
+      t_end = d%t_end
+      control%safety = options%safety
+      control%beta = merge(options%beta, d%pair%beta, options%beta >= 0.0_wp)
+      control%fac_min = merge(options%fac_min, d%pair%fac_min, options%fac_min > 0.0_wp)
+      control%fac_max = merge(options%fac_max, d%pair%fac_max, options%fac_max > 0.0_wp)
+      control%exponent = 1.0_wp/order - d%pair%pi_weight*control%beta
+      control%h_max = merge(options%h_max, d%span, options%h_max > 0.0_wp)
+      control%fac_old = 1.0e-4_wp
+      d%control = control
 
-         if (options%h_initial /= 0.0_wp) then
-            h = min(abs(options%h_initial), control%h_max)
-         else
-            h = initial_step(d, system, options, order)
+      if (options%h_initial /= 0.0_wp) then
+         h = min(abs(options%h_initial), control%h_max)
+      else
+         h = initial_step(d, system, options, order)
+      end if
+      h = direction*h
+      rejected_before = .false.
+      last = .false.
+      attempts = 0
+      do
+         if (attempts >= options%max_steps) then
+            write (message, '(a,i0,a,es24.16)') "rk_integrate: more than max_steps = ", options%max_steps, &
+               " steps needed; stopped at t = ", d%step%t
+            call set_error(error, err_integration, trim(message))
+            return
          end if
-         h = d%direction*h
-         rejected_before = .false.
-         last = .false.
-         attempts = 0
-         do
-            if (attempts >= options%max_steps) then
-               write (message, '(a,i0,a,es24.16)') "rk_integrate: more than max_steps = ", options%max_steps, &
-                  " steps needed; stopped at t = ", d%step%t
-               call set_error(error, err_integration, trim(message))
-               return
-            end if
-            if (0.1_wp*abs(h) <= abs(d%step%t)*unit_roundoff .or. abs(h) < tiny(1.0_wp)) then
-               write (message, '(a,es10.3,a,es24.16)') "rk_integrate: step size underflow, h = ", h, &
-                  " at t = ", d%step%t
-               call set_error(error, err_integration, trim(message))
-               return
-            end if
-            if ((d%step%t + 1.01_wp*h - d%t_end)*d%direction > 0.0_wp) then
-               h = d%t_end - d%step%t
-               last = .true.
-            else
-               ! make t + h exact, so that the solution is advanced by exactly the time that
-               ! t moves: otherwise each step's rounding of t is a jump of the coefficient
-               ! (a phase error √q·ulp(t) per step, a random walk of 1e-12 in S over the
-               ! ~1e4 steps of β = 1e5)
-               h = (d%step%t + h) - d%step%t
-            end if
-            attempts = attempts + 1
+         if (0.1_wp*abs(h) <= abs(d%step%t)*unit_roundoff .or. abs(h) < tiny(1.0_wp)) then
+            write (message, '(a,es10.3,a,es24.16)') "rk_integrate: step size underflow, h = ", h, &
+               " at t = ", d%step%t
+            call set_error(error, err_integration, trim(message))
+            return
+         end if
+         if ((d%step%t + 1.01_wp*h - t_end)*direction > 0.0_wp) then
+            h = t_end - d%step%t
+            last = .true.
+         else
+            ! make t + h exact, so that the solution is advanced by exactly the time that
+            ! t moves: otherwise each step's rounding of t is a jump of the coefficient
+            ! (a phase error √q·ulp(t) per step, a random walk of 1e-12 in S over the
+            ! ~1e4 steps of β = 1e5)
+            h = (d%step%t + h) - d%step%t
+         end if
+         attempts = attempts + 1
 
-            call rk_trial_step(d%stages, system, d%step, h, .true., err)
-            if (.not. d%stages%finite) then
-               call fail_non_finite(d, d%step%t, "trial step", error)
-               return
-            end if
+         call rk_trial_step(d%stages, system, d%step, h, .true., err)
+         if (.not. d%stages%finite) then
+            call fail_non_finite(d, d%step%t, "trial step", error)
+            return
+         end if
 
-            if (control%exponent == 0.125_wp) then
-               fac11 = sqrt(sqrt(sqrt(err)))  ! DOP853's err^(1/8) without a pow call
-            else
-               fac11 = err**control%exponent
-            end if
-            ! Lund stabilisation (PI control): divide by the previous error to the power beta
-            fac = fac11
-            if (control%beta /= 0.0_wp) fac = fac11/control%fac_old**control%beta
-            fac = max(1.0_wp/control%fac_max, min(1.0_wp/control%fac_min, fac/control%safety))
-            h_new = h/fac
-            if (err <= 1.0_wp) then
-               control%fac_old = max(err, 1.0e-4_wp)
-               call complete_step(d, system, merge(d%t_end, d%step%t + h, last), error)
-               if (allocated(error)) return
-               if (present(t_out)) call fill_outputs(d, t_out, y_out)
-               call system%observe(d%step, d%stop)
-               if (last .or. d%stop) exit
-               if (abs(h_new) > control%h_max) h_new = d%direction*control%h_max
-               if (rejected_before) h_new = d%direction*min(abs(h_new), abs(h))
-               rejected_before = .false.
-            else
-               h_new = h/min(1.0_wp/control%fac_min, fac11/control%safety)
-               rejected_before = .true.
-               last = .false.
-               d%work%n_rejected = d%work%n_rejected + 1
-            end if
-            h = h_new
-         end do
-         if (present(h_next)) h_next = d%direction*min(abs(h_new), control%h_max)
-      end associate
+         if (control%exponent == 0.125_wp) then
+            fac11 = sqrt(sqrt(sqrt(err)))  ! DOP853's err^(1/8) without a pow call
+         else
+            fac11 = err**control%exponent
+         end if
+         ! Lund stabilisation (PI control): divide by the previous error to the power beta
+         fac = fac11
+         if (control%beta /= 0.0_wp) fac = fac11/control%fac_old**control%beta
+         fac = max(1.0_wp/control%fac_max, min(1.0_wp/control%fac_min, fac/control%safety))
+         h_new = h/fac
+         if (err <= 1.0_wp) then
+            control%fac_old = max(err, 1.0e-4_wp)
+            call complete_step(d, system, merge(t_end, d%step%t + h, last), error)
+            if (allocated(error)) return
+            if (present(t_out)) call fill_outputs(d, t_out, y_out)
+            call system%observe(d%step, d%stop)
+            if (last .or. d%stop) exit
+            if (abs(h_new) > control%h_max) h_new = direction*control%h_max
+            if (rejected_before) h_new = direction*min(abs(h_new), abs(h))
+            rejected_before = .false.
+         else
+            h_new = h/min(1.0_wp/control%fac_min, fac11/control%safety)
+            rejected_before = .true.
+            last = .false.
+            d%work%n_rejected = d%work%n_rejected + 1
+         end if
+         h = h_new
+      end do
+      if (present(h_next)) h_next = direction*min(abs(h_new), control%h_max)
+      d%control = control
    end subroutine integrate_adaptive
 
    !> After a successful attempt: f at the new point (DOP853, PD87, VERN98; DOPRI5 has it),
