@@ -5,6 +5,7 @@ module hillstab
    use hillstab_core_error
    use hillstab_core_status
    use hillstab_core_stats
+   use hillstab_hill_models
    use hillstab_hill_coefficient
    use hillstab_hill_units
    use hillstab_hill_transfer
@@ -12,8 +13,10 @@ module hillstab
    use hillstab_hill_floquet
    use hillstab_integrate_magnus
    use hillstab_integrate_auto
+   use hillstab_integrate_segments
    use hillstab_integrate_monodromy
-   use hillstab_integrate_gsl
+   use hillstab_integrate_monodromy_gsl
+   use hillstab_hill_mathieu
    use hillstab_curves_hill_method
    use hillstab_integrate_rk
    use hillstab_integrate_monodromy_rk

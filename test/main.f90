@@ -2,6 +2,8 @@
 program tester
    use hillstab_testing, only: testsuite_t, run_testsuites
    use test_coefficient, only: collect_coefficient
+   use test_models, only: collect_models
+   use test_codes, only: collect_codes
    use test_transfer, only: collect_transfer
    use test_formulas, only: collect_formulas
    use test_floquet, only: collect_floquet
@@ -31,7 +33,7 @@ program tester
    implicit none
    type(testsuite_t), allocatable :: suites(:)
    integer :: n_failed
-   suites = [collect_coefficient(), collect_transfer(), collect_formulas(), collect_floquet(), &
+   suites = [collect_models(), collect_codes(), collect_coefficient(), collect_transfer(), collect_formulas(), collect_floquet(), &
              collect_monodromy(), collect_capi(), collect_gsl(), collect_rk(), collect_magnus(), &
              collect_scene(), collect_tasks(), collect_format(), collect_auto(), &
              collect_units(), collect_pendulum(), collect_hill_method(), collect_templates(), &

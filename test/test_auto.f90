@@ -12,7 +12,8 @@ module test_auto
    use hillstab_integrate_auto, only: trace_auto, trace_auto_batch, auto_plan_t, auto_prepare, fixed_n_trace
    use hillstab_integrate_monodromy, only: method_t, method_auto, monodromy_trace, monodromy_trace_batch, &
       batch_plan_t, prepare_batch
-   use hillstab_integrate_gsl, only: trace_gsl, mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b
+   use hillstab_integrate_monodromy_gsl, only: trace_gsl
+   use hillstab_hill_mathieu, only: mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b
    use hillstab_integrate_monodromy_rk, only: trace_rk
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
@@ -502,7 +503,7 @@ contains
    !> trace_auto are reported (or ignored by the plan), not turned into a floating-point
    !> trap: with -ffpe-trap=invalid (the debug build) an ordered comparison with NaN
    !> aborts, so the checks must test ieee_is_nan/ieee_is_finite first (as
-   !> check_model and hillstab_integrate_gsl do). Last in the suite: where it fails, it aborts.
+   !> check_model and hillstab_integrate_monodromy_gsl do). Last in the suite: where it fails, it aborts.
    subroutine nan_inputs_no_trap(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(trace_t) :: tr, traces(3)

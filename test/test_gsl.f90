@@ -1,5 +1,5 @@
-!> Tests of hillstab's GSL bindings: published Mathieu characteristic values,
-!> transition curves checked as transitions (S = ±2) by two independent
+!> Tests of the GSL-based references (hillstab_hill_mathieu, hillstab_integrate_monodromy_gsl):
+!> published Mathieu characteristic values, transition curves checked as transitions (S = ±2) by two independent
 !> monodromies, the α = 0 closed form, the half-period identity against a
 !> full-period integration, det M = 1, agreement with Richardson-extrapolated
 !> segmentation, the error-versus-tolerance contract, bad input, and
@@ -11,7 +11,8 @@ module test_gsl
    use hillstab_hill_coefficient
    use hillstab_hill_transfer, only: trace_t, scaled_matrix_t, matrix_of
    use hillstab_integrate_monodromy, only: trace_segmented, method_t, method_gsl, monodromy_trace
-   use hillstab_integrate_gsl
+   use hillstab_integrate_monodromy_gsl
+   use hillstab_hill_mathieu
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_quiet_nan
    implicit none

@@ -9,7 +9,7 @@ module test_hill_method
    use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu
    use hillstab_hill_transfer, only: trace_t
    use hillstab_integrate_monodromy, only: method_t, method_auto, monodromy_trace
-   use hillstab_integrate_gsl, only: mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b
+   use hillstab_hill_mathieu, only: mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b
    use hillstab_curves_hill_method
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan

@@ -52,6 +52,7 @@ contains
          new_unittest("damped_stable_beyond_paper", damped_stable_beyond_paper), &
          new_unittest("hard_cases_finite", hard_cases_finite), &
          new_unittest("method_dispatch", method_dispatch), &
+         new_unittest("method_table_agrees", method_table_agrees), &
          new_unittest("hard_set_auto", hard_set_auto), &
          new_unittest("hard_set_magnus4", hard_set_magnus4), &
          new_unittest("hard_set_magnus6", hard_set_magnus6), &
@@ -202,6 +203,40 @@ contains
       call check(ctx, allocated(error), "alpha > pi**2 rejected")
       call check(ctx, method_from_name("magnus6") == method_magnus6 .and. method_from_name("x") == -1, "names")
    end subroutine method_dispatch
+
+   !> What the method table says of each method, against what the method does at one
+   !> point (α = 5, β = 2.47; reference S by a fine RK4 of test_reference): the exact
+   !> methods meet the tolerance and give an estimate, the others not necessarily and give
+   !> −1; the segmented one changes with n_segments and sampling; the names round-trip.
+   subroutine method_table_agrees(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), parameter :: tolerance = 1.0e-9_wp
+      type(hill_model_t) :: model
+      type(trace_t) :: tr, other
+      type(error_t), allocatable :: error
+      real(wp) :: m(2, 2), reference
+      integer :: k
+      model = hill_model_t(model_elastic, 5.0_wp, 2.47_wp, 0.0_wp)
+      m = rk4_monodromy(model, 0.0_wp, 40000)
+      reference = m(1, 1) + m(2, 2)
+      do k = lbound(method_table, 1), ubound(method_table, 1)
+         call check(ctx, method_from_name(method_name(k)) == k, "name round trip of "//method_name(k))
+         call monodromy_trace(model, method_t(k, 64, sampling_average, tolerance), tr, error)
+         call check(ctx, .not. allocated(error), method_name(k)//" computes")
+         if (method_is_exact(k)) then
+            call check(ctx, tr%value, reference, rel=tolerance, abs=tolerance, message=method_name(k)//" meets the tolerance")
+         end if
+         call check(ctx, method_gives_estimate(k) .eqv. tr%error_estimate >= 0.0_wp, method_name(k)//": estimate or -1")
+         call monodromy_trace(model, method_t(k, 96, sampling_midpoint, tolerance), other, error)
+         call check(ctx, method_uses_segments(k) .eqv. other%value /= tr%value, &
+            method_name(k)//": n_segments and sampling used or ignored")
+         call check(ctx, method_pieces(method_t(k, 64)) == merge(64, merge(2, 0, k == method_formula), &
+            method_uses_segments(k)), method_name(k)//": pieces")
+      end do
+      call check(ctx, count(method_table%batch_rows) == 1 .and. method_batches_rows(method_auto), "auto batches rows")
+      call check(ctx, .not. method_is_exact(-1) .and. method_name(99) == "unknown", "an unknown code offers nothing")
+      call check(ctx, method_names_text() == "auto, formula, segments, magnus4, magnus6, rk or gsl", method_names_text())
+   end subroutine method_table_agrees
 
    !> Read the reference table; `ok` false when it cannot be read.
    subroutine read_hard_set(file, points, ok)

@@ -19,7 +19,7 @@ module test_rk
    use hillstab_integrate_rk
    use hillstab_integrate_monodromy_rk
    use test_reference, only: rk4_monodromy, value_of
-   use hillstab_integrate_gsl, only: gsl_odeiv2_system, gsl_odeiv2_step_rk8pd, gsl_set_error_handler_off
+   use hillstab_ffi_gsl, only: gsl_odeiv2_system, gsl_odeiv2_step_rk8pd, gsl_set_error_handler_off
    use hillstab_pendulum_equations, only: pendulum_system_t, pendulum_initial_state, pendulum_atol
    use hillstab_test_pendulum, only: pendulum_at
    use hillstab_pendulum_analysis, only: pendulum_watch_t

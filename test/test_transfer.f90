@@ -16,10 +16,54 @@ contains
          new_unittest("closed_forms", closed_forms), &
          new_unittest("unit_determinant", unit_determinant), &
          new_unittest("small_q_series", small_q_series), &
+         new_unittest("step_series", step_series), &
          new_unittest("meissner", meissner), &
          new_unittest("overflow_is_scaled", overflow_is_scaled), &
          new_unittest("composition", composition)])
    end function collect_transfer
+
+   !> The short Taylor polynomials of Magnus steps (`cos_sinc_taylor`, `step_functions`)
+   !> against the intrinsics: degree 10 to rounding for |z| ≤ 0.5, degree 5 for |z| ≤ 0.02,
+   !> and step_functions equal to transfer_functions beyond |z| = 0.1 (log scale included).
+   subroutine step_series(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: z, c, s, l, c_ref, s_ref, l_ref
+      integer :: i
+      do i = -50, 50
+         z = 0.01_wp*i
+         call reference(z, c_ref, s_ref)
+         call cos_sinc_taylor(z, 10, c, s)
+         call check(ctx, c, c_ref, rel=4.0e-16_wp, message="degree 10, cos")
+         call check(ctx, s, s_ref, rel=4.0e-16_wp, message="degree 10, sinc")
+         if (abs(z) <= 0.02_wp) then
+            call cos_sinc_taylor(z, 5, c, s)
+            call check(ctx, c, c_ref, rel=4.0e-16_wp, message="degree 5, cos")
+            call check(ctx, s, s_ref, rel=4.0e-16_wp, message="degree 5, sinc")
+         end if
+         call step_functions(z, c, s, l)
+         call check(ctx, c, c_ref, rel=1.0e-15_wp, message="step_functions, cos")
+         call check(ctx, s, s_ref, rel=1.0e-15_wp, message="step_functions, sinc")
+         call check(ctx, l == 0.0_wp, "no scale for small z")
+      end do
+      do i = 1, 6
+         z = -(10.0_wp**i)
+         call step_functions(z, c, s, l)
+         call transfer_functions(z, c_ref, s_ref, l_ref)
+         call check(ctx, c == c_ref .and. s == s_ref .and. l == l_ref, "step_functions = transfer_functions")
+      end do
+   contains
+      subroutine reference(z, c, s)
+         real(wp), intent(in) :: z
+         real(wp), intent(out) :: c, s
+         if (z > 0.0_wp) then
+            c = cos(sqrt(z)); s = sin(sqrt(z))/sqrt(z)
+         else if (z < 0.0_wp) then
+            c = cosh(sqrt(-z)); s = sinh(sqrt(-z))/sqrt(-z)
+         else
+            c = 1.0_wp; s = 1.0_wp
+         end if
+      end subroutine reference
+   end subroutine step_series
 
    subroutine closed_forms(ctx)
       type(test_context_t), intent(inout) :: ctx

@@ -1,8 +1,9 @@
 !> Fast text for reals in scientific notation, for large gnuplot-ready files; and the
-!> small text helpers the writers and the scene reader share: `integer_text`, `lower_case`,
-!> `real_text` (the shortest text that reads back to the same double), `quoted` (a namelist
-!> string constant), `read_text_line` (one line of any length), and the switch that keeps
-!> floating-point traps off while text is turned into numbers (`halting_off`).
+!> small text helpers the writers, the tables and the scene reader share: `integer_text`,
+!> `lower_case`, `alternatives_text`, `name_position`, `real_text` (the shortest text that
+!> reads back to the same double), `quoted` (a namelist string constant), `read_text_line`
+!> (one line of any length), and the switch that keeps floating-point traps off while
+!> text is turned into numbers (`halting_off`).
 !>
 !> Fortran's formatted `write` costs about half a microsecond per number, which
 !> is more than method auto needs to compute a chart point; this module writes
@@ -22,7 +23,7 @@ module hillstab_core_text
       ieee_get_halting_mode, ieee_set_halting_mode, ieee_set_flag
    implicit none
    private
-   public :: format_es, es_width, put_es, put_integer, integer_text, lower_case
+   public :: format_es, es_width, put_es, put_integer, integer_text, lower_case, alternatives_text, name_position
    public :: real_text, quoted, read_text_line, fpe_state_t, halting_off, halting_restore
 
    !> Decimal text of an integer of the default kind or of kind int64, without blanks.
@@ -233,6 +234,37 @@ contains
          if (text(i:i) >= "A" .and. text(i:i) <= "Z") low(i:i) = achar(iachar(text(i:i)) + 32)
       end do
    end function lower_case
+
+   !> Position of `name` in `names` (any case, blanks around it ignored; the names lower
+   !> case), 0 when it is none of them: the lookup of the tables' `*_from_name`.
+   pure integer function name_position(name, names) result(position)
+      character(len=*), intent(in) :: name      !! the name looked up
+      character(len=*), intent(in) :: names(:)  !! the names, lower case
+      integer :: i
+      position = 0
+      do i = 1, size(names)
+         if (lower_case(trim(adjustl(name))) == trim(names(i))) then
+            position = i
+            return
+         end if
+      end do
+   end function name_position
+
+   !> The names as a choice for a message: "a", "a or b", "a, b or c" (each name trimmed).
+   pure function alternatives_text(names) result(text)
+      character(len=*), intent(in) :: names(:)  !! the names, in order
+      character(len=:), allocatable :: text
+      integer :: i
+      text = ""
+      do i = 1, size(names)
+         if (i > 1 .and. i == size(names)) then
+            text = text//" or "
+         else if (i > 1) then
+            text = text//", "
+         end if
+         text = text//trim(names(i))
+      end do
+   end function alternatives_text
 
    !> format_es through Fortran's `es` descriptor (correctly rounded; slower), into
    !> buffer(last − digits − 6 : last).

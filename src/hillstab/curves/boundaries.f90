@@ -1,7 +1,8 @@
 !> Transition curves beyond the eigenvalues: the independent check of a boundary by
 !> method auto, the boundaries of the approximate methods (the paper's eq. (37),
-!> N-piece segmentation) by a bracketing root finder, the GSL witness for the
-!> Mathieu model, and the unstable β intervals of both (for the misclassified area).
+!> N-piece segmentation) by a bracketing root finder, and the unstable β intervals of
+!> both (for the misclassified area); the GSL witness for the Mathieu model
+!> (`mathieu_witness`) is re-exported from hillstab_hill_mathieu.
 !> Numerics only: no files, no namelists.
 !>
 !> - `verify_boundary`: S(α, β) by method auto at the boundary. It passes when
@@ -22,12 +23,12 @@
 !> print *, check%passed, check%trace
 !>```
 module hillstab_curves_boundaries
-   use hillstab_core_kinds, only: wp, pi2
+   use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu
+   use hillstab_hill_models, only: hill_model_t
    use hillstab_hill_transfer, only: trace_t
    use hillstab_integrate_monodromy, only: method_t, method_auto, monodromy_trace
-   use hillstab_integrate_gsl, only: mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b, mathieu_max_order
+   use hillstab_hill_mathieu, only: mathieu_witness, gsl_witness_max_q
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -40,11 +41,6 @@ module hillstab_curves_boundaries
    real(wp), parameter :: beta_accuracy_factor = 100.0_wp
    !> Trace allowance (times 1e-8·max(1, |S|)) when auto is limited by round-off there.
    real(wp), parameter :: roundoff_trace_allowance = 1.0e-8_wp
-   !> GSL's Mathieu values are used as a witness only for |q| up to this. Measured
-   !> against Hill's method: every a_n, b_n with n ≤ 60 within 1e-12 relative (worst
-   !> 9.7e-13) for q = 1 … 5000; orders beyond 60 are refused by hillstab_integrate_gsl (GSL's
-   !> root search fails there at large q). The bound keeps a margin below what was measured.
-   real(wp), parameter :: gsl_witness_max_q = 1000.0_wp
 
    !> Result of the independent check of one boundary.
    type :: boundary_check_t
@@ -89,7 +85,7 @@ contains
 
    !> Check a boundary independently: S(α, β) = trace_sign by method auto.
    subroutine verify_boundary(kind, alpha, beta, trace_sign, tolerance, check, error)
-      integer, intent(in) :: kind           !! model_elastic or model_mathieu
+      integer, intent(in) :: kind           !! a model constant (hillstab_hill_models)
       real(wp), intent(in) :: alpha, beta   !! the boundary point
       integer, intent(in) :: trace_sign     !! +2 or −2
       real(wp), intent(in) :: tolerance     !! the tolerance the boundary was computed to
@@ -196,7 +192,7 @@ contains
    !> The roots of S_method(β) = ±2 in [beta_min, beta_max] for an approximate method
    !> (formula or segments), with their orders, ascending in β.
    subroutine approximate_boundaries(kind, alpha, method, beta_min, beta_max, n_samples, tolerance, roots, error)
-      integer, intent(in) :: kind            !! model_elastic or model_mathieu
+      integer, intent(in) :: kind            !! a model constant (hillstab_hill_models)
       real(wp), intent(in) :: alpha          !! α (ν)
       type(method_t), intent(in) :: method   !! method_formula or method_segments
       real(wp), intent(in) :: beta_min, beta_max  !! the beta window searched
@@ -261,30 +257,11 @@ contains
       end function sample
    end subroutine approximate_boundaries
 
-   !> GSL's β for the Mathieu curve (order, parity) at ν, when GSL is trusted there
-   !> (order ≤ mathieu_max_order, |q| = 2|ν|/π² ≤ gsl_witness_max_q); `available` false otherwise.
-   subroutine mathieu_witness(order, parity, nu, beta, available)
-      integer, intent(in) :: order, parity  !! order n of the curve; parity: 1 even (a_n), 2 odd (b_n)
-      real(wp), intent(in) :: nu  !! Mathieu amplitude nu
-      real(wp), intent(out) :: beta  !! GSL's beta on the curve (0 when not available)
-      logical, intent(out) :: available  !! GSL is trusted at this order and q
-      type(error_t), allocatable :: error
-      beta = 0.0_wp
-      available = order <= mathieu_max_order .and. 2.0_wp*abs(nu)/pi2 <= gsl_witness_max_q .and. &
-                  (parity == 1 .or. order >= 1)
-      if (.not. available) return
-      call mathieu_transition_beta(merge(mathieu_kind_a, mathieu_kind_b, parity == 1), order, nu, beta, error)
-      if (allocated(error)) then
-         available = .false.
-         beta = 0.0_wp
-      end if
-   end subroutine mathieu_witness
-
    !> The unstable β intervals inside [lo, hi] for a method, from its sorted roots of
    !> |S| = 2 in [lo, hi]: between consecutive roots (and the ends) the verdict is
    !> that of S_method at the midpoint.
    subroutine unstable_intervals_from_roots(kind, alpha, method, lo, hi, roots, intervals, error)
-      integer, intent(in) :: kind  !! model_elastic or model_mathieu
+      integer, intent(in) :: kind  !! a model constant (hillstab_hill_models)
       real(wp), intent(in) :: alpha, lo, hi  !! alpha (nu); the beta window [lo, hi]
       type(method_t), intent(in) :: method  !! the method whose verdicts are used
       real(wp), intent(in) :: roots(:)   !! ascending, inside [lo, hi]

@@ -5,6 +5,9 @@
 !>     L x = −(1 − k cos πτ) x'' + α cos πτ x = β x,   k = α/π²   (elastic, eq. (25))
 !>     L x = −x'' + ν cos πτ x = β x                              (Mathieu, eq. (A1); k = 0, α ↔ ν)
 !>
+!> The model's terms (k, the weight of cos πτ on each mode, the decay of the Fourier
+!> coefficients, the α domain) come from hillstab_hill_models.
+!>
 !> Q is even, so each problem splits into cosine-type (even) and sine-type (odd)
 !> solutions: four independent blocks. Their eigenvalues in each block, in
 !> ascending order, are the curves a₀, a₂, a₄, … (periodic even), b₂, b₄, …
@@ -55,7 +58,7 @@
 module hillstab_curves_hill_method
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_singular, err_accuracy
-   use hillstab_hill_coefficient, only: model_elastic, model_mathieu
+   use hillstab_hill_models, only: check_model_alpha, model_hill_k, model_hill_coupling, model_fourier_decay
    use hillstab_ffi_lapack, only: dsbgv, dgeev
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
@@ -126,14 +129,13 @@ contains
    !> Number of modes to start from: enough for the eigenfunctions up to β_top and
    !> for the geometric decay r^{2n} of the Ritz error to reach the tolerance.
    pure integer function hill_initial_modes(kind, alpha, beta_top, tolerance) result(n)
-      integer, intent(in) :: kind  !! model kind (model_elastic or model_mathieu)
+      integer, intent(in) :: kind  !! model kind (a model constant of hillstab_hill_models)
       !> alpha; highest beta wanted; target error relative to max(1, |beta|)
       real(wp), intent(in) :: alpha, beta_top, tolerance
-      real(wp) :: k, r, oscillation
+      real(wp) :: r, oscillation
       oscillation = sqrt(max(beta_top, 0.0_wp) + abs(alpha))/pi
-      if (kind == model_elastic .and. alpha > 0.0_wp) then
-         k = alpha/pi2
-         r = k/(1.0_wp + sqrt((1.0_wp - k)*(1.0_wp + k)))
+      r = model_fourier_decay(kind, alpha)
+      if (r > 0.0_wp) then
          n = 8 + nint(oscillation) + ceiling(log(max(tolerance, 1.0e-16_wp))/(2.0_wp*log(r)))
       else
          n = 16 + 2*nint(oscillation)
@@ -151,17 +153,6 @@ contains
       end if
    end function mode_t
 
-   !> α − kπ²t: the weight of cos πτ on mode t (elastic α(1 − t), exact at t = 1; Mathieu ν).
-   pure real(wp) function coupling(kind, alpha, t)
-      integer, intent(in) :: kind
-      real(wp), intent(in) :: alpha, t
-      if (kind == model_elastic) then
-         coupling = alpha*(1.0_wp - t)
-      else
-         coupling = alpha
-      end if
-   end function coupling
-
    !> Entry (i, j) of A = P D P + α C P in the exponential basis e^{iκ_jτ}.
    pure real(wp) function a_entry(kind, alpha, k, block, i, j) result(a)
       integer, intent(in) :: kind, block, i, j
@@ -170,12 +161,13 @@ contains
       lo = min(i, j)
       select case (abs(i - j))
       case (0)
-         a = pi2*mode_t(block, i) - 0.25_wp*k*(coupling(kind, alpha, mode_t(block, i - 1)) + &
-                                              coupling(kind, alpha, mode_t(block, i + 1)))
+         a = pi2*mode_t(block, i) - 0.25_wp*k*(model_hill_coupling(kind, alpha, mode_t(block, i - 1)) + &
+                                               model_hill_coupling(kind, alpha, mode_t(block, i + 1)))
       case (1)
-         a = 0.5_wp*(coupling(kind, alpha, mode_t(block, lo)) + coupling(kind, alpha, mode_t(block, lo + 1)) - alpha)
+         a = 0.5_wp*(model_hill_coupling(kind, alpha, mode_t(block, lo)) &
+                     + model_hill_coupling(kind, alpha, mode_t(block, lo + 1)) - alpha)
       case (2)
-         a = -0.25_wp*k*coupling(kind, alpha, mode_t(block, lo + 1))
+         a = -0.25_wp*k*model_hill_coupling(kind, alpha, mode_t(block, lo + 1))
       case default
          a = 0.0_wp
       end select
@@ -198,7 +190,7 @@ contains
       real(wp), intent(in) :: alpha
       select case (abs(i - j))
       case (0); l = pi2*mode_t(block, i)
-      case (1); l = 0.5_wp*coupling(kind, alpha, mode_t(block, j))
+      case (1); l = 0.5_wp*model_hill_coupling(kind, alpha, mode_t(block, j))
       case default; l = 0.0_wp
       end select
    end function l_entry
@@ -259,7 +251,7 @@ contains
 
    !> All n eigenvalues, ascending, of the n-mode truncation of one block.
    subroutine hill_block_eigenvalues(kind, alpha, block, n, values, error, formulation)
-      integer, intent(in) :: kind          !! model_elastic or model_mathieu
+      integer, intent(in) :: kind          !! a model constant (hillstab_hill_models)
       real(wp), intent(in) :: alpha        !! α (elastic, 0 ≤ α < π²) or ν (Mathieu)
       integer, intent(in) :: block         !! block_* constant
       integer, intent(in) :: n             !! number of modes
@@ -279,8 +271,7 @@ contains
          call set_error(error, err_invalid_parameter, "Hill's method: unknown block or no modes")
          return
       end if
-      k = 0.0_wp
-      if (kind == model_elastic) k = alpha/pi2
+      k = model_hill_k(kind, alpha)
       sigma = -abs(alpha) - 1.0_wp
       select case (form)
       case (formulation_inverted_pencil, formulation_pencil)
@@ -345,18 +336,12 @@ contains
       integer, intent(in) :: kind
       real(wp), intent(in) :: alpha
       type(error_t), allocatable, intent(out) :: error
-      character(len=64) :: buf
       if (.not. ieee_is_finite(alpha)) then
          call set_error(error, err_invalid_parameter, "Hill's method: alpha must be finite")
-      else if (kind == model_elastic) then
-         if (alpha < 0.0_wp .or. .not. alpha < pi2) then
-            write (buf, '(es23.16)') alpha
-            call set_error(error, err_invalid_parameter, &
-               "Hill's method: the elastic model needs 0 <= alpha < pi**2, got alpha = "//trim(adjustl(buf)))
-         end if
-      else if (kind /= model_mathieu) then
-         call set_error(error, err_invalid_parameter, "Hill's method: unknown model kind")
+         return
       end if
+      call check_model_alpha(kind, alpha, error)
+      if (allocated(error)) error%message = "Hill's method: "//error%message
    end subroutine check_parameters
 
    !> Insertion sort (the arrays are short and nearly sorted).
@@ -380,7 +365,7 @@ contains
    !> the truncation to `tolerance`·max(1, |β|), ordered by β; with the coexistence
    !> of the two curves of each order decided (even when the partner lies outside).
    subroutine hill_boundaries(kind, alpha, beta_min, beta_max, tolerance, curves, error, modes, formulation)
-      integer, intent(in) :: kind          !! model_elastic or model_mathieu
+      integer, intent(in) :: kind          !! a model constant (hillstab_hill_models)
       real(wp), intent(in) :: alpha        !! α (ν for the Mathieu model)
       real(wp), intent(in) :: beta_min, beta_max  !! the β window
       real(wp), intent(in) :: tolerance    !! convergence target on β, relative to max(1, |β|)

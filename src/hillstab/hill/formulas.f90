@@ -2,7 +2,9 @@
 !>
 !> - eq. (37): elastic Q sampled as eq. (28): (β − α)/(1 − α/π²) on [0,1), (β + α)/(1 + α/π²) on [1,2);
 !> - eqs. (48)–(50): the same with the damping shift of eq. (47), giving S₁ for χ;
-!> - eq. (A3)/(A9): Mathieu q = β ∓ ν on the two halves.
+!> - eq. (A3)/(A9): Mathieu q = β ∓ ν on the two halves;
+!> - `trace_formula`: method formula for any registered model, from its two pieces
+!>   (hillstab_hill_models `model_two_piece_values`).
 !>
 !> All are evaluated as tr(T(q₂,1) T(q₁,1)) = 2 C₁C₂ − (q₁ + q₂) S₁S₂, with
 !> C = cos √q, S = sin √q/√q (cosh, sinh for q < 0). Algebraically this is the
@@ -10,12 +12,13 @@
 !> but it stays real and finite where the paper's radicands turn negative
 !> (β < α, β + α < 0) and at β = ±α where the paper's form is 0/0.
 module hillstab_hill_formulas
-   use hillstab_core_kinds, only: wp, pi2
-   use hillstab_hill_coefficient, only: one_minus_alpha_over_pi2
+   use hillstab_core_kinds, only: wp
+   use hillstab_hill_models, only: hill_model_t, model_two_piece_values
+   use hillstab_hill_model_elastic, only: elastic_two_piece_values
    use hillstab_hill_transfer, only: transfer_functions, trace_t, trace_from_scaled
    implicit none
    private
-   public :: trace_two_segment_paper, trace_damped_paper, trace_mathieu_two_segment, trace_two_piece
+   public :: trace_two_segment_paper, trace_damped_paper, trace_mathieu_two_segment, trace_two_piece, trace_formula
 
 contains
 
@@ -45,11 +48,8 @@ contains
       real(wp), intent(in) :: alpha, beta  !! the chart point (alpha, beta)
       real(wp), intent(in) :: epsilon  !! damping ε = κπ/ω
       type(trace_t) :: tr
-      real(wp) :: shifted, amp, b1_sq, b2_sq
-      shifted = beta - 0.25_wp*epsilon**2
-      amp = alpha*(1.0_wp - 0.25_wp*epsilon**2/pi2)
-      b1_sq = (shifted + amp)/(1.0_wp + alpha/pi2)   ! Q(1) − ε²/4, eq. (49)
-      b2_sq = (shifted - amp)/one_minus_alpha_over_pi2(alpha)   ! Q(0) − ε²/4, eq. (50)
+      real(wp) :: b1_sq, b2_sq
+      call elastic_two_piece_values(alpha, beta, epsilon, b2_sq, b1_sq)   ! Q(0), Q(1) − ε²/4, eqs. (50), (49)
       tr = trace_two_piece(b2_sq, b1_sq)
    end function trace_damped_paper
 
@@ -59,4 +59,15 @@ contains
       type(trace_t) :: tr
       tr = trace_two_piece(beta - nu, beta + nu)
    end function trace_mathieu_two_segment
+
+   !> Method formula: the trace of the model's two pieces (the paper's sampling (28) in its
+   !> closed form), S₁ of the χ equation when ε > 0: eq. (37)/(48)–(50) for the elastic
+   !> model, (A3) with β − ε²/4 for the Mathieu model.
+   pure function trace_formula(model) result(tr)
+      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
+      type(trace_t) :: tr
+      real(wp) :: q_first, q_second
+      call model_two_piece_values(model, q_first, q_second)
+      tr = trace_two_piece(q_first, q_second)
+   end function trace_formula
 end module hillstab_hill_formulas

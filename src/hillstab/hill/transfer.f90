@@ -18,6 +18,7 @@ module hillstab_hill_transfer
    implicit none
    private
    public :: transfer_matrix, transfer_functions, transfer_increment, scaled_matrix_t, scaled_identity, scaled_from_matrix
+   public :: cos_sinc_taylor, step_functions, taylor_max_degree, cos_taylor, sinc_taylor
    public :: multiply_transfer, multiply_scaled, multiply_matrix, normalize_scaled, add_compensated
    public :: trace_t, trace_of, trace_from_value, trace_from_scaled, matrix_of, determinant, determinant_of
    public :: monodromy_from_half_period
@@ -49,6 +50,16 @@ module hillstab_hill_transfer
    real(wp), parameter :: series_limit = 0.5_wp
    !> Beyond this √|z| the hyperbolic functions are returned scaled by e^{−√|z|}.
    real(wp), parameter :: scale_limit = 20.0_wp
+   !> Highest degree in z of the Taylor polynomials of `cos_sinc_taylor`.
+   integer, parameter :: taylor_max_degree = 10
+   !> Taylor coefficients of C = cos √z = Σ (−z)^k/(2k)! …
+   real(wp), parameter :: cos_taylor(0:taylor_max_degree) = [1.0_wp, -1.0_wp/2, 1.0_wp/24, -1.0_wp/720, &
+      1.0_wp/40320, -1.0_wp/3628800, 1.0_wp/479001600.0_wp, -1.0_wp/87178291200.0_wp, 1.0_wp/20922789888000.0_wp, &
+      -1.0_wp/6402373705728000.0_wp, 1.0_wp/2432902008176640000.0_wp]
+   !> … and of S = sin √z/√z = Σ (−z)^k/(2k+1)!
+   real(wp), parameter :: sinc_taylor(0:taylor_max_degree) = [1.0_wp, -1.0_wp/6, 1.0_wp/120, -1.0_wp/5040, &
+      1.0_wp/362880, -1.0_wp/39916800, 1.0_wp/6227020800.0_wp, -1.0_wp/1307674368000.0_wp, &
+      1.0_wp/355687428096000.0_wp, -1.0_wp/121645100408832000.0_wp, 1.0_wp/51090942171709440000.0_wp]
 
 contains
 
@@ -99,6 +110,43 @@ contains
          s = s + term_s
       end do
    end subroutine cos_sinc_series
+
+   !> The Taylor polynomials of degree `degree` in z of C = cos √z and S = sin √z/√z, by
+   !> Horner's rule (truncation below 5e-26 at degree 10, 1.3e-19 at degree 5 for |z| ≤ 0.02,
+   !> relative to 1): the short series of Magnus steps, which are short against the local
+   !> oscillation. (`cos_sinc_series`, whose roundings differ, serves `transfer_functions`.)
+   elemental subroutine cos_sinc_taylor(z, degree, c, s)
+      real(wp), intent(in) :: z        !! q h² (or −det of a Magnus generator)
+      integer, intent(in) :: degree    !! degree in z, 0 … taylor_max_degree
+      real(wp), intent(out) :: c       !! cos √z
+      real(wp), intent(out) :: s       !! sin √z / √z
+      integer :: k
+      c = cos_taylor(degree)
+      s = sinc_taylor(degree)
+      do k = degree - 1, 0, -1
+         c = cos_taylor(k) + z*c
+         s = sinc_taylor(k) + z*s
+      end do
+   end subroutine cos_sinc_taylor
+
+   !> C = cos √z, S = sin √z/√z of a Magnus step: Taylor polynomials of degree 5 for
+   !> |z| ≤ 0.01 and 7 for |z| ≤ 0.1 (truncation below 3e-21 relative), otherwise the
+   !> overflow-safe `transfer_functions`. Magnus steps are short against the local
+   !> oscillation, so the polynomials serve almost every step.
+   elemental subroutine step_functions(z, c, s, log_scale)
+      real(wp), intent(in) :: z           !! −det of the step's generator (q h² for constant q)
+      real(wp), intent(out) :: c          !! (scaled) cos √z
+      real(wp), intent(out) :: s          !! (scaled) sin √z / √z
+      real(wp), intent(out) :: log_scale  !! ln of the scale factor removed (as `transfer_functions`)
+      log_scale = 0.0_wp
+      if (abs(z) <= 0.01_wp) then
+         call cos_sinc_taylor(z, 5, c, s)
+      else if (abs(z) <= 0.1_wp) then
+         call cos_sinc_taylor(z, 7, c, s)
+      else
+         call transfer_functions(z, c, s, log_scale)
+      end if
+   end subroutine step_functions
 
    !> As `transfer_functions`, but with C − 1 in place of C, accurate when C is close to 1
    !> (short steps): the step matrix C I + S Ω is then applied as I + ((C − 1) I + S Ω),

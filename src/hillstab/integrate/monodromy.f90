@@ -1,19 +1,31 @@
-!> One entry point from a method choice to the monodromy trace of one period.
+!> One entry point from a method choice to the monodromy trace of one period, and the
+!> table of the methods from which every other use derives: code, name, what each
+!> offers, a one-line description. A new monodromy method is its own module plus its
+!> row in `method_table` and its case in `monodromy_trace` (and its enum entry in
+!> include/hillstab.h when C sees it; test suite codes compares the two).
 !>
-!> Methods: `formula` (the paper's closed 2-piece forms), `segments`
-!> (N-piece piecewise-constant product with endpoint/midpoint/average sampling)
-!> and the exact methods (`auto`, Magnus, Runge–Kutta, GSL) as they are registered
-!> here. All return the trace of the χ equation (47), i.e. S₁ when ε > 0.
+!> Methods (the codes are the C API's HILLSTAB_METHOD_* and the F77 METHOD codes):
+!> `auto` 0, `formula` 1 (the paper's closed 2-piece forms), `segments` 2 (N-piece
+!> piecewise-constant product), `magnus4` 3, `magnus6` 4, `rk` 5, `gsl` 6. All return the
+!> trace of the χ equation (47), i.e. S₁ when ε > 0.
+!>
+!>```fortran
+!> type(trace_t) :: tr
+!> type(error_t), allocatable :: error
+!> call monodromy_trace(hill_model_t(model_elastic, 9.8_wp, 2.47_wp, 0.0_wp), &
+!>                      method_t(method_from_name("magnus6"), tolerance=1.0e-10_wp), tr, error)
+!> print *, tr%value, method_description(method_magnus6)
+!>```
 module hillstab_integrate_monodromy
    use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu, check_model, &
-      segment_coefficients, hill_period, sampling_endpoint, sampling_midpoint, sampling_average
-   use hillstab_hill_transfer, only: scaled_matrix_t, scaled_identity, multiply_transfer, multiply_matrix, &
-      trace_t, trace_of
-   use hillstab_hill_formulas, only: trace_damped_paper, trace_mathieu_two_segment
+   use hillstab_core_text, only: name_position, alternatives_text
+   use hillstab_hill_coefficient, only: hill_model_t, check_model, sampling_endpoint, sampling_count
+   use hillstab_hill_transfer, only: scaled_matrix_t, multiply_matrix, trace_t
+   use hillstab_hill_formulas, only: trace_formula
    use hillstab_core_stats, only: work_stats_t, add_work
-   use hillstab_integrate_gsl, only: trace_gsl
+   use hillstab_integrate_segments, only: monodromy_segmented, trace_segmented
+   use hillstab_integrate_monodromy_gsl, only: trace_gsl
    use hillstab_integrate_monodromy_rk, only: trace_rk
    use hillstab_integrate_magnus, only: trace_magnus
    use hillstab_integrate_auto, only: trace_auto, trace_auto_batch, auto_plan_t, auto_prepare
@@ -21,6 +33,9 @@ module hillstab_integrate_monodromy
    private
    public :: method_t, method_auto, method_formula, method_segments, method_magnus4, method_magnus6, &
       method_rk, method_gsl, method_name, method_from_name
+   public :: method_info_t, method_table, method_info, method_names_text, method_description, method_is_exact, &
+      method_uses_segments, method_gives_estimate, method_batches_rows, method_cost_grows, method_pieces, &
+      max_integrated_magnitude
    public :: monodromy_segmented, trace_segmented, swing_monodromy, monodromy_trace, monodromy_trace_batch
    public :: batch_plan_t, prepare_batch
 
@@ -31,6 +46,39 @@ module hillstab_integrate_monodromy
    integer, parameter :: method_magnus6 = 4  !! sixth-order Magnus integrator
    integer, parameter :: method_rk = 5       !! hillstab's adaptive Runge–Kutta
    integer, parameter :: method_gsl = 6      !! GSL odeiv2 rk8pd reference
+
+   !> The integrating methods (those with `cost_grows`) take steps in proportion to
+   !> √(|α| + |β|): beyond this |α| + |β| one point would take seconds to minutes (auto
+   !> stops at its own step limit; formula and segments cost the same at any magnitude).
+   real(wp), parameter :: max_integrated_magnitude = 1.0e8_wp
+
+   !> What a method is and offers (one row of `method_table`; its code is its row).
+   type :: method_info_t
+      character(len=12) :: name = ""         !! the scene's, the C enum's and the messages' name
+      character(len=80) :: description = ""  !! one line for templates and headers
+      logical :: exact = .false.          !! meets `tolerance` (or says round-off limited)
+      logical :: segments = .false.       !! uses `n_segments` and `sampling`
+      logical :: estimate = .false.       !! gives an error estimate of S (others: −1)
+      logical :: batch_rows = .false.     !! shares work across the β of a chart row (`prepare_batch`)
+      logical :: cost_grows = .false.     !! cost grows like √(|α| + |β|) (`max_integrated_magnitude`)
+      integer :: pieces = 0               !! constant pieces of Q when fixed (formula: 2), else 0
+   end type method_info_t
+
+   !> The methods, in the order of their codes (0 … 6).
+   type(method_info_t), parameter :: method_table(0:6) = [ &
+      method_info_t("auto", "exact to tolerance, fastest (sixth-order Magnus, Richardson check)", &
+                    exact=.true., estimate=.true., batch_rows=.true.), &
+      method_info_t("formula", "the paper's 2 pieces, eq. (37) (Mathieu: eq. (A3))", pieces=2), &
+      method_info_t("segments", "n_segments constant pieces (endpoint, midpoint or average sampling)", &
+                    segments=.true.), &
+      method_info_t("magnus4", "fourth-order Magnus, adaptive mesh, Richardson check", &
+                    exact=.true., estimate=.true., cost_grows=.true.), &
+      method_info_t("magnus6", "sixth-order Magnus, adaptive mesh, Richardson check", &
+                    exact=.true., estimate=.true., cost_grows=.true.), &
+      method_info_t("rk", "DOP853 under the global error control", &
+                    exact=.true., estimate=.true., cost_grows=.true.), &
+      method_info_t("gsl", "GSL odeiv2 rk8pd under the global error control, the independent reference", &
+                    exact=.true., estimate=.true., cost_grows=.true.)]
 
    !> How to compute the monodromy.
    type :: method_t
@@ -58,59 +106,94 @@ contains
                                                        method%tolerance, plan%auto)
    end subroutine prepare_batch
 
-   !> Name of a method constant.
+   !> The row of a method code (a row named "unknown", offering nothing, for any other code).
+   pure function method_info(kind) result(info)
+      integer, intent(in) :: kind  !! one of the method_* constants
+      type(method_info_t) :: info
+      info%name = "unknown"
+      if (kind >= lbound(method_table, 1) .and. kind <= ubound(method_table, 1)) info = method_table(kind)
+   end function method_info
+
+   !> Name of a method constant ("unknown" for any other code).
    pure function method_name(kind) result(name)
       integer, intent(in) :: kind  !! one of the method_* constants
       character(len=:), allocatable :: name
-      select case (kind)
-      case (method_auto); name = "auto"
-      case (method_formula); name = "formula"
-      case (method_segments); name = "segments"
-      case (method_magnus4); name = "magnus4"
-      case (method_magnus6); name = "magnus6"
-      case (method_rk); name = "rk"
-      case (method_gsl); name = "gsl"
-      case default; name = "unknown"
-      end select
+      type(method_info_t) :: row
+      row = method_info(kind)
+      name = trim(row%name)
    end function method_name
 
-   !> Method constant from its name; −1 when unknown.
+   !> Method constant from its name (any case, blanks trimmed); −1 when unknown.
    pure integer function method_from_name(name) result(kind)
-      character(len=*), intent(in) :: name  !! a method name, lower case
-      integer :: k
-      kind = -1
-      do k = method_auto, method_gsl
-         if (trim(name) == method_name(k)) kind = k
-      end do
+      character(len=*), intent(in) :: name  !! a method name
+      kind = name_position(name, method_table%name)
+      kind = merge(kind - 1 + lbound(method_table, 1), -1, kind > 0)
    end function method_from_name
 
-   !> Monodromy of the χ equation over one period [0, 2] with q replaced by
-   !> `n` constant pieces (exact transfer matrix per piece).
-   pure function monodromy_segmented(model, n, sampling) result(a)
-      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
-      integer, intent(in) :: n         !! number of pieces
-      integer, intent(in) :: sampling  !! sampling_endpoint | sampling_midpoint | sampling_average
-      type(scaled_matrix_t) :: a
-      real(wp) :: q(n), h, carry
-      integer :: i
-      call segment_coefficients(model, n, sampling, q)
-      h = hill_period/n
-      a = scaled_identity()
-      carry = 0.0_wp
-      do i = 1, n
-         ! the log scale summed with compensation (see `multiply_transfer`)
-         call multiply_transfer(a, q(i), h, carry)
-      end do
-      a%log_scale = a%log_scale - carry
-   end function monodromy_segmented
+   !> The method names as a choice for messages: "auto, formula, segments, magnus4, magnus6, rk or gsl".
+   pure function method_names_text() result(text)
+      character(len=:), allocatable :: text
+      text = alternatives_text(method_table%name)
+   end function method_names_text
 
-   !> Trace of `monodromy_segmented`.
-   pure function trace_segmented(model, n, sampling) result(tr)
-      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
-      integer, intent(in) :: n, sampling  !! number of pieces; sampling_* constant
-      type(trace_t) :: tr
-      tr = trace_of(monodromy_segmented(model, n, sampling))
-   end function trace_segmented
+   !> One line on what the method does, for templates and headers.
+   pure function method_description(kind) result(text)
+      integer, intent(in) :: kind  !! one of the method_* constants
+      character(len=:), allocatable :: text
+      type(method_info_t) :: row
+      row = method_info(kind)
+      text = trim(row%description)
+   end function method_description
+
+   !> The method meets `tolerance` (or says that it is below the round-off level there).
+   elemental logical function method_is_exact(kind)
+      integer, intent(in) :: kind  !! one of the method_* constants
+      type(method_info_t) :: row
+      row = method_info(kind)
+      method_is_exact = row%exact
+   end function method_is_exact
+
+   !> The method uses `n_segments` and `sampling`.
+   elemental logical function method_uses_segments(kind)
+      integer, intent(in) :: kind  !! one of the method_* constants
+      type(method_info_t) :: row
+      row = method_info(kind)
+      method_uses_segments = row%segments
+   end function method_uses_segments
+
+   !> The method gives an error estimate with S (the others give −1).
+   elemental logical function method_gives_estimate(kind)
+      integer, intent(in) :: kind  !! one of the method_* constants
+      type(method_info_t) :: row
+      row = method_info(kind)
+      method_gives_estimate = row%estimate
+   end function method_gives_estimate
+
+   !> The method shares work across the β of a chart row (`prepare_batch`, `monodromy_trace_batch`).
+   elemental logical function method_batches_rows(kind)
+      integer, intent(in) :: kind  !! one of the method_* constants
+      type(method_info_t) :: row
+      row = method_info(kind)
+      method_batches_rows = row%batch_rows
+   end function method_batches_rows
+
+   !> The method's cost grows like √(|α| + |β|): scenes keep |α| + |β| ≤ `max_integrated_magnitude`.
+   elemental logical function method_cost_grows(kind)
+      integer, intent(in) :: kind  !! one of the method_* constants
+      type(method_info_t) :: row
+      row = method_info(kind)
+      method_cost_grows = row%cost_grows
+   end function method_cost_grows
+
+   !> Constant pieces of Q the method uses: 2 for formula, n_segments for segments, 0 for
+   !> the exact methods (which integrate Q itself).
+   elemental integer function method_pieces(method) result(pieces)
+      type(method_t), intent(in) :: method  !! method and its settings
+      type(method_info_t) :: row
+      row = method_info(method%kind)
+      pieces = row%pieces
+      if (row%segments) pieces = method%n_segments
+   end function method_pieces
 
    !> Monodromy of the damped swing x'' + ε x' + Q x = 0 from that of χ:
    !> M_x = e^{−ε} P M_χ P⁻¹ with P = [[1, 0], [−ε/2, 1]] (x = e^{−ετ/2} χ).
@@ -140,18 +223,14 @@ contains
       if (allocated(error)) return
       select case (method%kind)
       case (method_formula)
-         if (model%kind == model_mathieu) then
-            tr = trace_mathieu_two_segment(model%alpha, model%beta - 0.25_wp*model%epsilon**2)
-         else
-            tr = trace_damped_paper(model%alpha, model%beta, model%epsilon)
-         end if
+         tr = trace_formula(model)
          work = work_stats_t(2, 0, 2)
       case (method_segments)
          if (method%n_segments < 1) then
             call set_error(error, err_invalid_parameter, "n_segments must be >= 1")
             return
          end if
-         if (all(method%sampling /= [sampling_endpoint, sampling_midpoint, sampling_average])) then
+         if (method%sampling < 1 .or. method%sampling > sampling_count) then
             call set_error(error, err_invalid_parameter, "unknown sampling")
             return
          end if

@@ -12,19 +12,19 @@
 !> call pendulum_gsl(p, y, 100*p%period, 1.0e-10_wp, stats, error)
 !>```
 module hillstab_pendulum_gsl
-   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_long, c_ptr, c_null_funptr, &
+   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_long, c_ptr, c_funptr, c_null_funptr, &
       c_loc, c_funloc, c_f_pointer, c_associated
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_integrate_gsl, only: gsl_odeiv2_system, gsl_rk8pd_scaled_driver, gsl_odeiv2_driver_apply, &
-      gsl_odeiv2_driver_free, gsl_odeiv2_driver_view, gsl_odeiv2_evolve_apply, gsl_success, gsl_ebadfunc, &
-      gsl_emaxiter
+   use hillstab_ffi_gsl, only: gsl_odeiv2_system, gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, &
+      gsl_odeiv2_driver_view, gsl_odeiv2_evolve_apply, gsl_odeiv2_step_rk8pd, gsl_odeiv2_driver_alloc_scaled_new, &
+      gsl_odeiv2_driver_set_nmax, gsl_set_error_handler_off, gsl_success, gsl_ebadfunc, gsl_emaxiter
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_rhs, pendulum_atol, pendulum_energy, pendulum_energy_scale
    implicit none
    private
-   public :: pendulum_gsl
+   public :: pendulum_gsl, gsl_rk8pd_scaled_driver
 
    !> Steps allowed per integration (GSL's driver limit, applied by the watched loop too)
    integer(c_long), parameter :: step_limit = 100000000_c_long
@@ -104,6 +104,28 @@ contains
       end if
       y = state
    end subroutine pendulum_gsl
+
+   !> A GSL odeiv2 driver with the rk8pd stepper and GSL's scaled error control set up
+   !> like hillstab's: the error of component i is kept below rtol·(scale_abs(i) + |y_i|)
+   !> (absolute part rtol·scale_abs(i), relative part rtol·|y_i|), with GSL's error
+   !> handler switched off so that failures come back as status codes. The driver keeps
+   !> the address of `system`, which must outlive it. A null pointer when GSL cannot
+   !> allocate it; free it with `gsl_odeiv2_driver_free`. Shared by the pendulum's GSL
+   !> drivers (this module and hillstab_pendulum_gsl_lyapunov).
+   function gsl_rk8pd_scaled_driver(system, h_start, rtol, scale_abs, step_limit) result(driver)
+      type(gsl_odeiv2_system), intent(in), target :: system  !! the system (kept by the driver)
+      real(wp), intent(in) :: h_start              !! first trial step
+      real(wp), intent(in) :: rtol                 !! relative tolerance (> 0)
+      real(c_double), intent(in) :: scale_abs(:)   !! absolute tolerances over rtol, per component
+      integer(c_long), intent(in) :: step_limit    !! most steps per gsl_odeiv2_driver_apply call
+      type(c_ptr) :: driver                        !! the driver, or a null pointer
+      type(c_funptr) :: previous
+      integer(c_int) :: status
+      previous = gsl_set_error_handler_off()
+      driver = gsl_odeiv2_driver_alloc_scaled_new(system, gsl_odeiv2_step_rk8pd, real(h_start, c_double), &
+         real(rtol, c_double), real(rtol, c_double), 1.0_c_double, 0.0_c_double, scale_abs)
+      if (c_associated(driver)) status = gsl_odeiv2_driver_set_nmax(driver, step_limit)
+   end function gsl_rk8pd_scaled_driver
 
    function gsl_rhs(t, y, dydt, params) bind(C) result(status)
       real(c_double), value :: t

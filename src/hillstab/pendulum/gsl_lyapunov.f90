@@ -18,8 +18,9 @@ module hillstab_pendulum_gsl_lyapunov
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration
-   use hillstab_integrate_gsl, only: gsl_odeiv2_system, gsl_rk8pd_scaled_driver, gsl_odeiv2_driver_apply, &
-      gsl_odeiv2_driver_free, gsl_success, gsl_ebadfunc
+   use hillstab_ffi_gsl, only: gsl_odeiv2_system, gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_success, &
+      gsl_ebadfunc
+   use hillstab_pendulum_gsl, only: gsl_rk8pd_scaled_driver
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_rhs, pendulum_jacobian, pendulum_atol, pendulum_angle, &
       pendulum_energy, pendulum_energy_scale
    use hillstab_pendulum_lyapunov, only: lyapunov_t, tangent_norm

@@ -1,13 +1,7 @@
-!> hillstab's own `bind(C)` bindings to the few GSL routines it uses, and two
-!> references built on them:
-!>
-!> - Mathieu characteristic values a_n(q), b_n(q) (`gsl_sf_mathieu_a_e/_b_e`) and
-!>   the transition curves of the paper's Mathieu form q(τ) = β − ν cos πτ (A1):
-!>   with z = πτ/2 it is y'' + (a − 2q cos 2z) y = 0, a = 4β/π², q = 2ν/π², so the
-!>   curves are β = (π²/4) a_n(2ν/π²) and β = (π²/4) b_n(2ν/π²) (BRIEF §5);
-!> - the one-period monodromy of the χ equation (47) by GSL's odeiv2 driver with
-!>   the Prince–Dormand 8(7) pair `rk8pd`, using the even symmetry of Q: the even
-!>   and odd solutions u, v are integrated on [0, 1] only (BRIEF §4).
+!> The one-period monodromy of the χ equation (47) by GSL's odeiv2 stepper with the
+!> Prince–Dormand 8(7) pair `rk8pd` (method `gsl`), using the even symmetry of Q: the
+!> even and odd solutions u, v are integrated on [0, 1] only (BRIEF §4). The bindings
+!> are those of `hillstab_ffi_gsl`.
 !>
 !> GSL's default error handler aborts the program; every entry point here first
 !> switches it off (`gsl_set_error_handler_off`) and checks status codes, which it
@@ -36,40 +30,23 @@
 !> type(error_t), allocatable :: error
 !> call trace_gsl(hill_model_t(model_elastic, 9.8_wp, 2.47_wp, 0.0_wp), 1.0e-12_wp, tr, stats, error)
 !>```
-module hillstab_integrate_gsl
+module hillstab_integrate_monodromy_gsl
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_long, c_ptr, c_funptr, &
       c_null_funptr, c_loc, c_funloc, c_f_pointer, c_associated
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use hillstab_core_kinds, only: wp, int64, pi2, log_huge
+   use hillstab_core_kinds, only: wp, int64, log_huge
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use hillstab_integrate_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
       roundoff_level, propagator_condition, trace_distance, first_step_factor, next_local_tolerance
    use hillstab_core_stats, only: work_stats_t, add_work
    use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
    use hillstab_hill_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
+   use hillstab_ffi_gsl, only: gsl_odeiv2_system, gsl_odeiv2_driver_view, gsl_odeiv2_evolve_view, gsl_odeiv2_step_rk8pd, &
+      gsl_set_error_handler_off, gsl_odeiv2_driver_alloc_y_new, gsl_odeiv2_evolve_apply, gsl_odeiv2_driver_set_nmax, &
+      gsl_odeiv2_driver_free, gsl_odeiv2_driver_reset, gsl_success, gsl_failure, gsl_ebadfunc, gsl_emaxiter
    implicit none
    private
-   public :: mathieu_a, mathieu_b, mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b, &
-      mathieu_max_order
    public :: monodromy_gsl, trace_gsl, monodromy_gsl_full_period, gsl_tolerance_factor
-   public :: gsl_odeiv2_step_rk8pd
-   ! the odeiv2 driver, for other systems integrated by rk8pd (hillstab_pendulum_gsl_lyapunov)
-   public :: gsl_odeiv2_system, gsl_odeiv2_driver_alloc_scaled_new, gsl_odeiv2_driver_set_nmax, &
-      gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_set_error_handler_off, gsl_rk8pd_scaled_driver, &
-      gsl_odeiv2_driver_view, gsl_odeiv2_evolve_apply
-   ! the status codes the drivers of hillstab_pendulum_gsl and hillstab_pendulum_gsl_lyapunov read and set
-   public :: gsl_success, gsl_ebadfunc, gsl_emaxiter
-
-   !> Curves of the even Mathieu functions ce_n: a_n(q), n ≥ 0.
-   integer, parameter :: mathieu_kind_a = 1
-   !> Curves of the odd Mathieu functions se_n: b_n(q), n ≥ 1.
-   integer, parameter :: mathieu_kind_b = 2
-   !> Largest order accepted. GSL's initial guess switches to n² at order 70 and
-   !> its root search then converges to wrong values at large q (a known upstream
-   !> bug); orders up to 60 keep a margin. (GSL's continued fractions also stop at
-   !> 50 terms, so accuracy degrades for |q| of order 1e3 and beyond; hillstab's
-   !> Mathieu charts need |q| = 2|ν|/π² of order 1.)
-   integer, parameter :: mathieu_max_order = 60
 
    !> epsabs = epsrel = tolerance·gsl_tolerance_factor in GSL's control
    !> D_i = epsabs + epsrel |y_i| for the first pass of `monodromy_gsl` (the only one of
@@ -86,55 +63,8 @@ module hillstab_integrate_gsl
    !> chunk before it is renormalized.
    real(wp), parameter :: chunk_log_growth = 200.0_wp
 
-   !> Status GSL_SUCCESS.
-   integer(c_int), parameter :: gsl_success = 0
-   !> Status GSL_FAILURE, returned when the step control cannot meet its epsilon even at the smallest step
-   !> (rounding noise in the step's error estimate exceeds it).
-   integer(c_int), parameter :: gsl_failure = -1
    !> `monodromy_gsl`: at most this many values of S per point.
    integer, parameter :: max_ladder_runs = 8
-   !> Status GSL_EBADFUNC: the right-hand side returned a non-finite value (set by the
-   !> right-hand sides here, read by GSL as a failed evaluation).
-   integer(c_int), parameter :: gsl_ebadfunc = 9
-   !> Status GSL_EMAXITER: more steps than the driver's limit (here: more than `max_steps`
-   !> steps in one stretch).
-   integer(c_int), parameter :: gsl_emaxiter = 11
-
-   !> gsl_sf_result: value and GSL's error estimate.
-   type, bind(C) :: gsl_sf_result
-      real(c_double) :: val
-      real(c_double) :: err
-   end type gsl_sf_result
-
-   !> gsl_odeiv2_system.
-   type, bind(C) :: gsl_odeiv2_system
-      type(c_funptr) :: function      !! int f(double t, const double y[], double dydt[], void *params)
-      type(c_funptr) :: jacobian      !! unused by explicit steppers: null
-      integer(c_size_t) :: dimension  !! number of equations
-      type(c_ptr) :: params  !! context handed to the right-hand side
-   end type gsl_odeiv2_system
-
-   !> The public layout of struct gsl_odeiv2_driver_struct (gsl_odeiv2.h): its stepper,
-   !> control and evolve objects and its step, for loops that run GSL's evolve themselves.
-   type, bind(C) :: gsl_odeiv2_driver_view
-      type(c_ptr) :: sys      !! the gsl_odeiv2_system
-      type(c_ptr) :: step     !! the stepper
-      type(c_ptr) :: control  !! the step-size control
-      type(c_ptr) :: evolve   !! the evolve object
-      real(c_double) :: h     !! the next step proposed
-      real(c_double) :: hmin  !! smallest step allowed
-      real(c_double) :: hmax  !! largest step allowed
-      integer(c_long) :: n, nmax   !! unsigned long in C
-   end type gsl_odeiv2_driver_view
-
-   !> The public layout of struct gsl_odeiv2_evolve_struct: `count` counts every
-   !> attempted step (accepted or not), `failed_steps` the rejected ones.
-   type, bind(C) :: gsl_odeiv2_evolve_view
-      integer(c_size_t) :: dimension
-      type(c_ptr) :: y0, yerr, dydt_in, dydt_out
-      real(c_double) :: last_step
-      integer(c_long) :: count, failed_steps
-   end type gsl_odeiv2_evolve_view
 
    !> What the right-hand side needs: the model, and a counter of its calls.
    type :: rhs_context_t
@@ -147,185 +77,7 @@ module hillstab_integrate_gsl
       real(wp) :: terms(3) = 0.0_wp !! largest u², v'², |v u'| (the scaled condition, within a chunk)
    end type rhs_context_t
 
-   !> `const gsl_odeiv2_step_type *gsl_odeiv2_step_rk8pd`, a global of libgsl.
-   !> It must be public: gfortran gives private module variables hidden
-   !> visibility, even with BIND(C), and the linker then allocates a hidden, null
-   !> copy instead of referring to libgsl's (GSL segfaults on it).
-   !> `protected`: nothing in hillstab may assign it.
-   type(c_ptr), bind(C, name="gsl_odeiv2_step_rk8pd"), protected :: gsl_odeiv2_step_rk8pd
-
-   interface
-      !> Turn GSL's abort-on-error handler off (errors come back as status codes); returns the previous handler.
-      function gsl_set_error_handler_off() bind(C, name="gsl_set_error_handler_off") result(previous)
-         import :: c_funptr
-         type(c_funptr) :: previous
-      end function gsl_set_error_handler_off
-
-      function gsl_sf_mathieu_a_e(order, qq, result) bind(C, name="gsl_sf_mathieu_a_e") result(status)
-         import :: c_int, c_double, gsl_sf_result
-         integer(c_int), value :: order
-         real(c_double), value :: qq
-         type(gsl_sf_result), intent(out) :: result
-         integer(c_int) :: status
-      end function gsl_sf_mathieu_a_e
-
-      function gsl_sf_mathieu_b_e(order, qq, result) bind(C, name="gsl_sf_mathieu_b_e") result(status)
-         import :: c_int, c_double, gsl_sf_result
-         integer(c_int), value :: order
-         real(c_double), value :: qq
-         type(gsl_sf_result), intent(out) :: result
-         integer(c_int) :: status
-      end function gsl_sf_mathieu_b_e
-
-      function gsl_odeiv2_driver_alloc_y_new(sys, step_type, hstart, epsabs, epsrel) &
-         bind(C, name="gsl_odeiv2_driver_alloc_y_new") result(driver)
-         import :: c_ptr, c_double, gsl_odeiv2_system
-         type(gsl_odeiv2_system), intent(in) :: sys
-         type(c_ptr), value :: step_type
-         real(c_double), value :: hstart, epsabs, epsrel
-         type(c_ptr) :: driver
-      end function gsl_odeiv2_driver_alloc_y_new
-
-      !> Driver with GSL's scaled control: the error of component i is kept below
-      !> epsabs·scale_abs(i) + epsrel·(a_y |y_i| + a_dydt h |y_i'|) (the array is copied).
-      function gsl_odeiv2_driver_alloc_scaled_new(sys, step_type, hstart, epsabs, epsrel, a_y, a_dydt, scale_abs) &
-         bind(C, name="gsl_odeiv2_driver_alloc_scaled_new") result(driver)
-         import :: c_ptr, c_double, gsl_odeiv2_system
-         type(gsl_odeiv2_system), intent(in) :: sys  !! the system (function, dimension, params)
-         type(c_ptr), value :: step_type  !! the stepper, e.g. gsl_odeiv2_step_rk8pd
-         !> first step; absolute and relative tolerance; weights of y and h y'
-         real(c_double), value :: hstart, epsabs, epsrel, a_y, a_dydt
-         real(c_double), intent(in) :: scale_abs(*)  !! per-component scale of epsabs
-         type(c_ptr) :: driver
-      end function gsl_odeiv2_driver_alloc_scaled_new
-
-      !> One step of the evolution (with GSL's internal retries on rejection).
-      function gsl_odeiv2_evolve_apply(evolve, control, step, system, t, t1, h, y) &
-         bind(C, name="gsl_odeiv2_evolve_apply") result(status)
-         import :: c_ptr, c_double, c_int
-         type(c_ptr), value :: evolve   !! the evolve object (its step counters)
-         type(c_ptr), value :: control  !! the step-size control
-         type(c_ptr), value :: step     !! the stepper
-         type(c_ptr), value :: system   !! the gsl_odeiv2_system
-         real(c_double), intent(inout) :: t  !! time, advanced by the accepted step
-         real(c_double), value :: t1         !! do not step past t1
-         real(c_double), intent(inout) :: h  !! proposed step in, next proposal out
-         real(c_double), intent(inout) :: y(*)  !! state at t, advanced
-         integer(c_int) :: status
-      end function gsl_odeiv2_evolve_apply
-
-      !> Limit the number of steps of one gsl_odeiv2_driver_apply call.
-      function gsl_odeiv2_driver_set_nmax(driver, nmax) bind(C, name="gsl_odeiv2_driver_set_nmax") result(status)
-         import :: c_ptr, c_long, c_int
-         type(c_ptr), value :: driver  !! the driver
-         integer(c_long), value :: nmax  !! largest number of steps per apply (0: no limit)
-         integer(c_int) :: status
-      end function gsl_odeiv2_driver_set_nmax
-
-      !> Integrate from t to t1 (GSL_SUCCESS = 0, else a GSL error code).
-      function gsl_odeiv2_driver_apply(driver, t, t1, y) bind(C, name="gsl_odeiv2_driver_apply") result(status)
-         import :: c_ptr, c_double, c_int
-         type(c_ptr), value :: driver  !! the driver
-         real(c_double), intent(inout) :: t  !! time, advanced to t1
-         real(c_double), value :: t1  !! end time
-         real(c_double), intent(inout) :: y(*)  !! state at t, advanced
-         integer(c_int) :: status
-      end function gsl_odeiv2_driver_apply
-
-      !> Free a driver.
-      subroutine gsl_odeiv2_driver_free(driver) bind(C, name="gsl_odeiv2_driver_free")
-         import :: c_ptr
-         type(c_ptr), value :: driver  !! the driver
-      end subroutine gsl_odeiv2_driver_free
-
-      function gsl_odeiv2_driver_reset(driver) bind(C, name="gsl_odeiv2_driver_reset") result(status)
-         import :: c_ptr, c_int
-         type(c_ptr), value :: driver
-         integer(c_int) :: status
-      end function gsl_odeiv2_driver_reset
-   end interface
-
 contains
-
-   !> Characteristic value a_n(q) of the even Mathieu functions (GSL).
-   subroutine mathieu_a(n, q, value, error)
-      integer, intent(in) :: n             !! order, 0 ≤ n ≤ mathieu_max_order
-      real(wp), intent(in) :: q            !! Mathieu parameter (any sign)
-      real(wp), intent(out) :: value       !! a_n(q)
-      type(error_t), allocatable, intent(out) :: error  !! GSL failure; unallocated on success
-      call mathieu_characteristic(mathieu_kind_a, n, q, value, error)
-   end subroutine mathieu_a
-
-   !> Characteristic value b_n(q) of the odd Mathieu functions (GSL).
-   subroutine mathieu_b(n, q, value, error)
-      integer, intent(in) :: n             !! order, 1 ≤ n ≤ mathieu_max_order
-      real(wp), intent(in) :: q            !! Mathieu parameter (any sign)
-      real(wp), intent(out) :: value       !! b_n(q)
-      type(error_t), allocatable, intent(out) :: error  !! GSL failure; unallocated on success
-      call mathieu_characteristic(mathieu_kind_b, n, q, value, error)
-   end subroutine mathieu_b
-
-   !> β on the n-th transition curve of q(τ) = β − ν cos πτ: (π²/4) a_n(2ν/π²)
-   !> (kind a) or (π²/4) b_n(2ν/π²) (kind b). On it the trace is +2 for even n
-   !> (2-periodic solution) and −2 for odd n (antiperiodic).
-   subroutine mathieu_transition_beta(kind, n, nu, beta, error)
-      integer, intent(in) :: kind          !! mathieu_kind_a or mathieu_kind_b
-      integer, intent(in) :: n             !! order of the curve
-      real(wp), intent(in) :: nu           !! ν, the amplitude of the cosine
-      real(wp), intent(out) :: beta        !! β on the curve
-      type(error_t), allocatable, intent(out) :: error  !! GSL failure or bad kind; unallocated on success
-      real(wp) :: a
-      call mathieu_characteristic(kind, n, 2.0_wp*nu/pi2, a, error)
-      beta = 0.25_wp*pi2*a
-   end subroutine mathieu_transition_beta
-
-   subroutine mathieu_characteristic(kind, n, q, value, error)
-      integer, intent(in) :: kind, n
-      real(wp), intent(in) :: q
-      real(wp), intent(out) :: value
-      type(error_t), allocatable, intent(out) :: error
-      type(gsl_sf_result) :: result
-      type(c_funptr) :: previous
-      integer(c_int) :: status
-      integer :: lowest
-      character(len=120) :: buf
-      value = 0.0_wp
-      if (kind /= mathieu_kind_a .and. kind /= mathieu_kind_b) then
-         call set_error(error, err_invalid_parameter, "Mathieu kind must be mathieu_kind_a or mathieu_kind_b")
-         return
-      end if
-      lowest = merge(0, 1, kind == mathieu_kind_a)
-      if (n < lowest .or. n > mathieu_max_order) then
-         write (buf, '(a,a,a,i0,a,i0,a,i0)') "Mathieu order of ", trim(kind_letter(kind)), "_n must be in ", &
-            lowest, "..", mathieu_max_order, " (GSL is unreliable beyond), got n = ", n
-         call set_error(error, err_invalid_parameter, trim(buf))
-         return
-      end if
-      if (.not. ieee_is_finite(q)) then
-         call set_error(error, err_invalid_parameter, "Mathieu parameter q must be finite")
-         return
-      end if
-      previous = gsl_set_error_handler_off()
-      result = gsl_sf_result(0.0_c_double, 0.0_c_double)
-      if (kind == mathieu_kind_a) then
-         status = gsl_sf_mathieu_a_e(int(n, c_int), real(q, c_double), result)
-      else
-         status = gsl_sf_mathieu_b_e(int(n, c_int), real(q, c_double), result)
-      end if
-      if (status /= gsl_success .or. .not. (ieee_is_finite(result%val) .and. ieee_is_finite(result%err))) then
-         write (buf, '(a,a,a,i0,a,es12.5,a,i0)') "GSL failed to compute Mathieu ", trim(kind_letter(kind)), "_", &
-            n, "(q) at q = ", q, ", status ", status
-         call set_error(error, err_integration, trim(buf))
-         return
-      end if
-      value = result%val
-   end subroutine mathieu_characteristic
-
-   pure function kind_letter(kind) result(letter)
-      integer, intent(in) :: kind
-      character(len=1) :: letter
-      letter = merge("a", "b", kind == mathieu_kind_a)
-   end function kind_letter
 
    !> Right-hand side of the χ equation for the 4-vector y = (u, u', v, v') of two
    !> solutions, in GSL's calling convention. Non-finite values stop the driver.
@@ -677,27 +429,6 @@ contains
       eps = max(smallest_gsl_epsilon, tolerance*gsl_tolerance_factor*exp(-min(log_condition, 100.0_wp)))
    end function gsl_epsilon
 
-   !> A GSL odeiv2 driver with the rk8pd stepper and GSL's scaled error control set up
-   !> like hillstab's: the error of component i is kept below rtol·(scale_abs(i) + |y_i|)
-   !> (absolute part rtol·scale_abs(i), relative part rtol·|y_i|), with GSL's error
-   !> handler switched off so that failures come back as status codes. The driver keeps
-   !> the address of `system`, which must outlive it. A null pointer when GSL cannot
-   !> allocate it; free it with `gsl_odeiv2_driver_free`.
-   function gsl_rk8pd_scaled_driver(system, h_start, rtol, scale_abs, step_limit) result(driver)
-      type(gsl_odeiv2_system), intent(in), target :: system  !! the system (kept by the driver)
-      real(wp), intent(in) :: h_start              !! first trial step
-      real(wp), intent(in) :: rtol                 !! relative tolerance (> 0)
-      real(c_double), intent(in) :: scale_abs(:)   !! absolute tolerances over rtol, per component
-      integer(c_long), intent(in) :: step_limit    !! most steps per gsl_odeiv2_driver_apply call
-      type(c_ptr) :: driver                        !! the driver, or a null pointer
-      type(c_funptr) :: previous
-      integer(c_int) :: status
-      previous = gsl_set_error_handler_off()
-      driver = gsl_odeiv2_driver_alloc_scaled_new(system, gsl_odeiv2_step_rk8pd, real(h_start, c_double), &
-         real(rtol, c_double), real(rtol, c_double), 1.0_c_double, 0.0_c_double, scale_abs)
-      if (c_associated(driver)) status = gsl_odeiv2_driver_set_nmax(driver, step_limit)
-   end function gsl_rk8pd_scaled_driver
-
    subroutine check_tolerance(tolerance, error)
       real(wp), intent(in) :: tolerance
       type(error_t), allocatable, intent(out) :: error
@@ -710,4 +441,4 @@ contains
          call set_error(error, err_invalid_parameter, trim(buf))
       end if
    end subroutine check_tolerance
-end module hillstab_integrate_gsl
+end module hillstab_integrate_monodromy_gsl

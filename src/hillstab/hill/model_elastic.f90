@@ -1,0 +1,213 @@
+!> The elastic pendulum's coefficient, paper eq. (25):
+!>
+!>     Q(τ) = (β − α cos πτ)/(1 − k cos πτ) = π² + (β − π²) w(τ),   w = 1/(1 − k cos πτ),  k = α/π²,
+!>
+!> the exact linearisation of the swing about the vertical bounce (BRIEF §2), for
+!> 0 ≤ α < π² (a < ρ). Every quantity the methods need of this model is here, without
+!> the damping shift −ε²/4 of eq. (47) (added by hillstab_hill_models, where the models
+!> are registered): Q, its exact segment means, the split q = c₀ + c₁ w that method auto
+!> relies on, w from sin(πτ/2), ∫₀¹ √|w|, auto's mesh and step-count inputs, the Fourier
+!> terms of Hill's method, the two-piece values of the paper's eq. (37)/(48)–(50) and
+!> the physical domain.
+!>
+!> 1 − k cos πτ is written (1 − k) + 2k sin²(πτ/2) with 1 − k = (π² − α)/π² from π²
+!> in two doubles (`one_minus_alpha_over_pi2`): both keep their relative accuracy as
+!> α → π² near τ = 0, where the dip of Q of depth ~ (β − π²)/(1 − k) sits.
+!>
+!>```fortran
+!> print *, elastic_coefficient(9.8_wp, 2.47_wp, 0.0_wp)   ! the bottom of the dip
+!>```
+module hillstab_hill_model_elastic
+   use hillstab_core_kinds, only: wp, pi, pi2, pi2_lo
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   implicit none
+   private
+   public :: one_minus_alpha_over_pi2, in_physical_domain, elastic_alpha_valid, elastic_alpha_domain
+   public :: elastic_coefficient, elastic_segment_mean, elastic_split, elastic_shape, elastic_shapes_from_half_sines
+   public :: elastic_shape_root_mean, elastic_mesh_kappa, elastic_auto_difficulty, elastic_auto_amplitude
+   public :: elastic_hill_k, elastic_hill_coupling, elastic_fourier_decay, elastic_two_piece_values
+
+   !> The α domain in words, for messages: a < ρ, the mass never reaches the pivot.
+   character(len=*), parameter :: elastic_alpha_domain = "0 <= alpha < pi**2 = 9.8696044010893586"
+
+contains
+
+   !> 1 − α/π² computed as (π² − α)/π² with π² split in two doubles: relative error of a
+   !> few ulps for every 0 ≤ α < π² (1 − k from k = α/π² loses 1 − k's relative accuracy
+   !> as α → π², about 2e-12 at α = 9.869).
+   elemental real(wp) function one_minus_alpha_over_pi2(alpha) result(one_minus_k)
+      real(wp), intent(in) :: alpha  !! α, 0 ≤ α < π²
+      one_minus_k = ((pi2 - alpha) + pi2_lo)/pi2
+   end function one_minus_alpha_over_pi2
+
+   !> True when (α, β) describes a real spring pendulum: 0 ≤ α < π² (0 ≤ a < ρ),
+   !> 0 ≤ β < π² (g ≥ 0, r0 > 0; β = 0 is the pendulum without gravity).
+   elemental logical function in_physical_domain(alpha, beta)
+      real(wp), intent(in) :: alpha, beta  !! the chart point (alpha, beta)
+      in_physical_domain = alpha >= 0.0_wp .and. alpha < pi2 .and. beta >= 0.0_wp .and. beta < pi2
+   end function in_physical_domain
+
+   !> 0 ≤ α < π² and finite (a < ρ: the mass never reaches the pivot); no comparison
+   !> with a NaN is made (it would raise the invalid flag).
+   elemental logical function elastic_alpha_valid(alpha) result(valid)
+      real(wp), intent(in) :: alpha  !! α
+      valid = .false.
+      if (.not. ieee_is_finite(alpha)) return
+      valid = alpha >= 0.0_wp .and. alpha < pi2
+   end function elastic_alpha_valid
+
+   !> 1 − (α/π²) cos θ written as (1 − α/π²) + 2(α/π²) sin²(θ/2), accurate as α → π² near θ = 0.
+   elemental real(wp) function one_minus_k_cos(alpha, theta)
+      real(wp), intent(in) :: alpha, theta
+      real(wp) :: s
+      s = sin(0.5_wp*theta)
+      one_minus_k_cos = one_minus_alpha_over_pi2(alpha) + 2.0_wp*(alpha/pi2)*s*s
+   end function one_minus_k_cos
+
+   !> Q(τ) = π² + (β − π²)/(1 − (α/π²) cos πτ), the second form of eq. (25). (Arguments by value:
+   !> the integrators evaluate it at every stage, through `hill_coefficient`.)
+   elemental real(wp) function elastic_coefficient(alpha, beta, tau) result(q)
+      real(wp), intent(in), value :: alpha, beta  !! the chart point
+      real(wp), intent(in), value :: tau          !! dimensionless time, πτ = ωt
+      q = pi2 + (beta - pi2)/one_minus_k_cos(alpha, pi*tau)
+   end function elastic_coefficient
+
+   !> Antiderivative F(θ) of 1/(1 − k cos θ), 0 ≤ k < 1, continuous in θ and F(0) = 0.
+   pure real(wp) function inverse_cos_primitive(k, theta) result(f)
+      real(wp), intent(in) :: k, theta
+      real(wp) :: turns, reduced, c, s, root
+      if (k == 0.0_wp) then
+         f = theta
+         return
+      end if
+      turns = floor(theta/(2.0_wp*pi))
+      reduced = theta - 2.0_wp*pi*turns
+      root = sqrt((1.0_wp - k)*(1.0_wp + k))
+      s = sin(0.5_wp*reduced)
+      c = cos(0.5_wp*reduced)
+      ! 2/√(1−k²) · atan(√((1+k)/(1−k)) tan(θ/2)), unwrapped through atan2 on [0, 2π)
+      f = 2.0_wp/root*(atan2(sqrt(1.0_wp + k)*s, sqrt(1.0_wp - k)*c) + pi*turns)
+   end function inverse_cos_primitive
+
+   !> Exact mean of Q over [tau_a, tau_b]: the integral of 1/(1 − k cos θ) is elementary (BRIEF §3).
+   pure real(wp) function elastic_segment_mean(alpha, beta, tau_a, tau_b) result(q)
+      real(wp), intent(in), value :: alpha, beta    !! the chart point
+      real(wp), intent(in), value :: tau_a, tau_b   !! segment ends, tau_a < tau_b
+      real(wp) :: k
+      k = alpha/pi2
+      q = pi2 + (beta - pi2)*(inverse_cos_primitive(k, pi*tau_b) - inverse_cos_primitive(k, pi*tau_a)) &
+          /(pi*(tau_b - tau_a))
+   end function elastic_segment_mean
+
+   !> Q = c₀ + c₁ w(τ) with w independent of β: c₀ = π², c₁ = β − π².
+   elemental subroutine elastic_split(beta, c0, c1)
+      real(wp), intent(in) :: beta  !! β
+      real(wp), intent(out) :: c0   !! constant part, π²
+      real(wp), intent(out) :: c1   !! factor of w, β − π²
+      c0 = pi2
+      c1 = beta - pi2
+   end subroutine elastic_split
+
+   !> The shape function w(τ) = 1/(1 − (α/π²) cos πτ).
+   elemental real(wp) function elastic_shape(alpha, tau) result(w)
+      real(wp), intent(in) :: alpha  !! α
+      real(wp), intent(in) :: tau    !! τ
+      real(wp) :: s
+      s = sin(0.5_wp*pi*tau)
+      w = 1.0_wp/(one_minus_alpha_over_pi2(alpha) + 2.0_wp*(alpha/pi2)*s*s)
+   end function elastic_shape
+
+   !> w at the points whose half-angle sines s = sin(πτ/2) are given (method auto's mesh
+   !> builds those by angle sums): w = 1/((1 − k) + 2k s²).
+   pure subroutine elastic_shapes_from_half_sines(alpha, n, s, w)
+      real(wp), intent(in) :: alpha  !! α
+      integer, intent(in) :: n       !! number of points
+      real(wp), intent(in) :: s(n)   !! sin(πτ/2) at the points
+      real(wp), intent(out) :: w(n)  !! w(τ) there
+      real(wp) :: k, one_minus_k
+      integer :: i
+      k = alpha/pi2
+      one_minus_k = one_minus_alpha_over_pi2(alpha)
+      do i = 1, n
+         w(i) = 1.0_wp/(one_minus_k + 2.0_wp*k*s(i)*s(i))
+      end do
+   end subroutine elastic_shapes_from_half_sines
+
+   !> ∫₀¹ √w dτ, the complete elliptic integral 1/(√(1 + k) AGM(1, √((1 − k)/(1 + k))))
+   !> (1 at α = 0, growing like ln(1/(1 − k)) as α → π²).
+   elemental real(wp) function elastic_shape_root_mean(alpha) result(mean)
+      real(wp), intent(in) :: alpha  !! α
+      real(wp) :: a, b, a_next, k
+      integer :: i
+      k = alpha/pi2
+      a = 1.0_wp
+      b = sqrt(one_minus_alpha_over_pi2(alpha)/(1.0_wp + k))
+      do i = 1, 40
+         if (a - b <= 4.0_wp*epsilon(1.0_wp)*a) exit
+         a_next = 0.5_wp*(a + b)
+         b = sqrt(a*b)
+         a = a_next
+      end do
+      mean = 1.0_wp/(sqrt(1.0_wp + k)*a)
+   end function elastic_shape_root_mean
+
+   !> κ of method auto's Kepler-type mesh map, 1 − (1 − α/π²)^power: it packs the steps
+   !> into the dip at τ = 0, whose width shrinks like √(1 − α/π²).
+   elemental real(wp) function elastic_mesh_kappa(alpha, power) result(kappa)
+      real(wp), intent(in) :: alpha  !! α
+      real(wp), intent(in) :: power  !! method auto's mesh exponent
+      kappa = 1.0_wp - (1.0_wp - alpha/pi2)**power
+   end function elastic_mesh_kappa
+
+   !> x = −ln(1 − α/π²), the variable of method auto's calibrated step table: how deep
+   !> and narrow the dip is.
+   elemental real(wp) function elastic_auto_difficulty(alpha) result(x)
+      real(wp), intent(in) :: alpha  !! α
+      x = -log(1.0_wp - alpha/pi2)
+   end function elastic_auto_difficulty
+
+   !> The amplitude of q that method auto's step count grows with (N ∝ amplitude^0.4): |c₁| = |β − π²|.
+   elemental real(wp) function elastic_auto_amplitude(c1) result(amplitude)
+      real(wp), intent(in) :: c1  !! the factor of w in the split of q (`elastic_split`)
+      amplitude = abs(c1)
+   end function elastic_auto_amplitude
+
+   !> k of the weight 1 − k cos πτ that multiplies x'' in Hill's method: α/π².
+   elemental real(wp) function elastic_hill_k(alpha) result(k)
+      real(wp), intent(in) :: alpha  !! α
+      k = alpha/pi2
+   end function elastic_hill_k
+
+   !> α − kπ²t, the weight of cos πτ on the Fourier mode t = (κ/π)² in Hill's method:
+   !> α(1 − t) (exact at t = 1).
+   elemental real(wp) function elastic_hill_coupling(alpha, t) result(coupling)
+      real(wp), intent(in) :: alpha  !! α
+      real(wp), intent(in) :: t      !! the squared mode number (κ/π)²
+      coupling = alpha*(1.0_wp - t)
+   end function elastic_hill_coupling
+
+   !> r = k/(1 + √(1 − k²)): the eigenfunctions are analytic in the strip |Im πτ| <
+   !> arccosh(1/k), so their Fourier coefficients decay like rⁿ; 0 at α = 0 (entire).
+   elemental real(wp) function elastic_fourier_decay(alpha) result(r)
+      real(wp), intent(in) :: alpha  !! α
+      real(wp) :: k
+      r = 0.0_wp
+      if (.not. alpha > 0.0_wp) return
+      k = alpha/pi2
+      r = k/(1.0_wp + sqrt((1.0_wp - k)*(1.0_wp + k)))
+   end function elastic_fourier_decay
+
+   !> The paper's two pieces with damping, eqs. (49)–(50): Q(0) − ε²/4 on [0, 1) and
+   !> Q(1) − ε²/4 on [1, 2) in the paper's closed form,
+   !> B₂² = ((β − ε²/4) − α(1 − ε²/4π²))/(1 − α/π²), B₁² = ((β − ε²/4) + α(1 − ε²/4π²))/(1 + α/π²).
+   elemental subroutine elastic_two_piece_values(alpha, beta, epsilon, q_first, q_second)
+      real(wp), intent(in) :: alpha, beta, epsilon  !! the chart point and the damping ε = κπ/ω
+      real(wp), intent(out) :: q_first   !! B₂², the value on [0, 1) (eq. (50))
+      real(wp), intent(out) :: q_second  !! B₁², the value on [1, 2) (eq. (49))
+      real(wp) :: shifted, amp
+      shifted = beta - 0.25_wp*epsilon**2
+      amp = alpha*(1.0_wp - 0.25_wp*epsilon**2/pi2)
+      q_second = (shifted + amp)/(1.0_wp + alpha/pi2)
+      q_first = (shifted - amp)/one_minus_alpha_over_pi2(alpha)
+   end subroutine elastic_two_piece_values
+end module hillstab_hill_model_elastic

@@ -1,0 +1,176 @@
+!> The lists that must agree with the tables, checked against them: the C header's
+!> HILLSTAB_MODEL_*, HILLSTAB_METHOD_* and HILLSTAB_SAMPLING_* enums (include/hillstab.h)
+!> and the MODEL, METHOD and ISAMP codes documented in the F77 entry points
+!> (src/hillstab/interop/legacy.f90, legacy_external.f90) against the model table
+!> (hillstab_hill_models), the method table (hillstab_integrate_monodromy) and the
+!> sampling table (hillstab_hill_coefficient). Paths are relative to the worktree root,
+!> the directory `fpm test` runs in.
+module test_codes
+   use hillstab_core_text, only: lower_case
+   use hillstab_hill_models, only: model_count, model_name, model_from_name
+   use hillstab_hill_coefficient, only: sampling_count, sampling_name, sampling_from_name
+   use hillstab_integrate_monodromy, only: method_table, method_name, method_from_name
+   use hillstab_testing
+   implicit none
+   private
+   public :: collect_codes
+
+   character(len=*), parameter :: header_path = "include/hillstab.h"
+   character(len=*), parameter :: legacy_paths(2) = [character(len=40) :: "src/hillstab/interop/legacy.f90", &
+      "src/hillstab/interop/legacy_external.f90"]
+
+contains
+
+   function collect_codes() result(suite)
+      type(testsuite_t) :: suite
+      suite = new_testsuite("codes", [ &
+         new_unittest("c_header_enums", c_header_enums), &
+         new_unittest("f77_codes", f77_codes)])
+   end function collect_codes
+
+   !> The whole file as one lower-case line (comment markers and line ends as blanks).
+   function file_text(ctx, path) result(text)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: text
+      character(len=1000) :: line
+      integer :: unit, ios
+      text = ""
+      open (newunit=unit, file=path, status="old", action="read", iostat=ios)
+      call check(ctx, ios == 0, "cannot open "//path//" (run the tests from the worktree root)")
+      if (ios /= 0) return
+      do
+         read (unit, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         text = text//" "//trim(line)
+      end do
+      close (unit)
+   end function file_text
+
+   !> The code of a name in one of the three tables (−1 when the table has no such name).
+   integer function table_code(table, name) result(code)
+      character(len=*), intent(in) :: table, name
+      select case (table)
+      case ("model"); code = model_from_name(name)
+      case ("method"); code = method_from_name(name)
+      case default; code = sampling_from_name(name)
+      end select
+   end function table_code
+
+   !> Every `HILLSTAB_<TABLE>_<NAME> = <code>` of the header: the name is in the table with
+   !> that code, and every entry of the table is declared.
+   subroutine c_header_enums(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: tables(3) = [character(len=8) :: "model", "method", "sampling"]
+      character(len=:), allocatable :: text, prefix, name
+      integer :: t, at, start, finish, code, ios, k, n_found
+      logical :: seen(0:20)
+      text = file_text(ctx, header_path)
+      do t = 1, size(tables)
+         prefix = "HILLSTAB_"//upper(trim(tables(t)))//"_"
+         seen = .false.
+         n_found = 0
+         at = 1
+         do
+            start = index(text(at:), prefix)
+            if (start == 0) exit
+            start = at + start - 1 + len(prefix)
+            finish = start + verify(text(start:), "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789") - 2
+            name = lower_case(text(start:finish))
+            ! an enumerator is followed by "= <digits>" (elsewhere the name is only mentioned)
+            at = finish + verify(text(finish + 1:), " ")
+            if (text(at:at) /= "=") cycle
+            at = at + verify(text(at + 1:), " ")
+            ios = 1
+            if (verify(text(at:at), "0123456789") == 0) then
+               read (text(at:at + verify(text(at:), "0123456789") - 2), *, iostat=ios) code
+            end if
+            call check(ctx, ios == 0, "a code after "//prefix//upper(name))
+            if (ios /= 0) exit
+            n_found = n_found + 1
+            call check(ctx, table_code(trim(tables(t)), name) == code, prefix//upper(name)//" is the "// &
+               trim(tables(t))//" table's code of '"//name//"'")
+            if (code >= 0 .and. code <= 20) seen(code) = .true.
+         end do
+         ! every entry of the table declared, under its name
+         select case (trim(tables(t)))
+         case ("model")
+            call check(ctx, n_found == model_count .and. all(seen(1:model_count)), "every model in the C enum")
+            do k = 1, model_count
+               call check(ctx, index(text, prefix//upper(model_name(k))//" =") > 0, prefix//upper(model_name(k)))
+            end do
+         case ("method")
+            call check(ctx, n_found == size(method_table) .and. &
+               all(seen(lbound(method_table, 1):ubound(method_table, 1))), "every method in the C enum")
+            do k = lbound(method_table, 1), ubound(method_table, 1)
+               call check(ctx, index(text, prefix//upper(method_name(k))//" =") > 0, prefix//upper(method_name(k)))
+            end do
+         case default
+            call check(ctx, n_found == sampling_count .and. all(seen(1:sampling_count)), "every sampling in the C enum")
+            do k = 1, sampling_count
+               call check(ctx, index(text, prefix//upper(sampling_name(k))//" =") > 0, prefix//upper(sampling_name(k)))
+            end do
+         end select
+      end do
+   end subroutine c_header_enums
+
+   !> In the F77 entry points' documentation every "<digit> <name>" naming an entry of a
+   !> table gives that entry's code, and every entry of each table is documented.
+   subroutine f77_codes(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: text, word
+      integer :: f, i, j, code, k
+      logical :: methods(0:20), models(0:20), samplings(0:20)
+      do f = 1, size(legacy_paths)
+         text = lower_case(file_text(ctx, trim(legacy_paths(f))))
+         methods = .false.; models = .false.; samplings = .false.
+         do i = 1, len(text) - 2
+            if (index("0123456789", text(i:i)) == 0 .or. text(i + 1:i + 1) /= " ") cycle
+            if (i > 1) then
+               if (index("0123456789.e-", text(i - 1:i - 1)) > 0) cycle   ! part of a number
+            end if
+            j = i + 2
+            do while (j <= len(text))
+               if (index("abcdefghijklmnopqrstuvwxyz0123456789", text(j:j)) == 0) exit
+               j = j + 1
+            end do
+            word = text(i + 2:j - 1)
+            code = iachar(text(i:i)) - iachar("0")
+            if (method_from_name(word) >= 0) then
+               call check(ctx, method_from_name(word) == code, trim(legacy_paths(f))//": '"//text(i:j - 1)// &
+                  "' names method code "//text(i:i))
+               methods(code) = .true.
+            end if
+            if (model_from_name(word) >= 0) then
+               call check(ctx, model_from_name(word) == code, trim(legacy_paths(f))//": '"//text(i:j - 1)// &
+                  "' names model code "//text(i:i))
+               models(code) = .true.
+            end if
+            if (sampling_from_name(word) >= 0) then
+               call check(ctx, sampling_from_name(word) == code, trim(legacy_paths(f))//": '"//text(i:j - 1)// &
+                  "' names sampling code "//text(i:i))
+               samplings(code) = .true.
+            end if
+         end do
+         do k = lbound(method_table, 1), ubound(method_table, 1)
+            call check(ctx, methods(k), trim(legacy_paths(f))//" documents method "//method_name(k))
+         end do
+         do k = 1, model_count
+            call check(ctx, models(k), trim(legacy_paths(f))//" documents model "//model_name(k))
+         end do
+         do k = 1, sampling_count
+            call check(ctx, samplings(k), trim(legacy_paths(f))//" documents sampling "//sampling_name(k))
+         end do
+      end do
+   end subroutine f77_codes
+
+   pure function upper(text) result(up)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: up
+      integer :: i
+      up = text
+      do i = 1, len(text)
+         if (text(i:i) >= "a" .and. text(i:i) <= "z") up(i:i) = achar(iachar(text(i:i)) - 32)
+      end do
+   end function upper
+end module test_codes

@@ -1,0 +1,248 @@
+!> Tests of the model table (hillstab_hill_models) and of each model's quantities against
+!> independent references: the split q = c₀ + c₁ w against Q itself, w from half-angle
+!> sines against w, ∫√|w| against quadrature, the two pieces of method formula against
+!> Q(0) and Q(1), Hill's method's terms against their closed identities, the α domain,
+!> the physical α against eqs. (24) and (21), the witness against a_n(0) = n².
+module test_models
+   use hillstab_core_kinds, only: wp, pi, pi2
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use hillstab_core_error, only: error_t
+   use hillstab_hill_models
+   use hillstab_hill_units, only: physical_t, equilibrium_length, physical_beta
+   use hillstab_testing
+   implicit none
+   private
+   public :: collect_models
+
+   !> (α, β, ε) of the checks, the same for both models (α plays ν for Mathieu).
+   real(wp), parameter :: alphas(5) = [0.0_wp, 1.48_wp, 5.0_wp, 9.5_wp, 9.86_wp]
+   real(wp), parameter :: betas(4) = [-30.0_wp, 0.0_wp, 2.47_wp, 40.0_wp]
+   real(wp), parameter :: epsilons(2) = [0.0_wp, 0.3_wp]
+
+contains
+
+   function collect_models() result(suite)
+      type(testsuite_t) :: suite
+      suite = new_testsuite("models", [ &
+         new_unittest("table", table), &
+         new_unittest("split_is_q", split_is_q), &
+         new_unittest("half_sine_shapes", half_sine_shapes), &
+         new_unittest("shape_root_mean", shape_root_mean_quadrature), &
+         new_unittest("two_pieces_are_q0_q1", two_pieces_are_q0_q1), &
+         new_unittest("hill_method_terms", hill_method_terms), &
+         new_unittest("alpha_domain", alpha_domain), &
+         new_unittest("physical_alpha", physical_alpha_of_models), &
+         new_unittest("witness", witness), &
+         new_unittest("auto_inputs", auto_inputs)])
+   end function collect_models
+
+   !> Codes, names, the texts of messages and headers, the flags.
+   subroutine table(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer :: k
+      call check(ctx, model_count == 2, "two models")
+      call check(ctx, model_elastic == 1 .and. model_mathieu == 2, "codes of the C API: elastic 1, mathieu 2")
+      do k = 1, model_count
+         call check(ctx, model_from_name(model_name(k)) == k, "name round trip of "//model_name(k))
+      end do
+      call check(ctx, model_from_name(" Mathieu ") == model_mathieu, "names in any case, blanks trimmed")
+      call check(ctx, model_from_name("meissner") == -1, "unknown name: -1")
+      call check(ctx, model_name(0) == "unknown" .and. model_name(3) == "unknown", "unknown code")
+      call check(ctx, model_names_text() == "elastic or mathieu", "names text: "//model_names_text())
+      call check(ctx, model_description(model_elastic) == "model: elastic, Q(tau) = (beta - alpha cos(pi tau))/"// &
+         "(1 - (alpha/pi^2) cos(pi tau)), eq. (25)", "elastic header line")
+      call check(ctx, model_description(model_mathieu) == "model: mathieu, q(tau) = beta - alpha cos(pi tau), "// &
+         "eq. (A1), alpha playing nu", "mathieu header line")
+      call check(ctx, model_is_pendulum(model_elastic) .and. .not. model_is_pendulum(model_mathieu), "pendulum flag")
+      call check(ctx, model_has_witness(model_mathieu) .and. .not. model_has_witness(model_elastic), "witness flag")
+      call check(ctx, .not. (model_is_pendulum(7) .or. model_has_witness(-1)), "flags of an unknown code")
+      call check(ctx, model_physical_note(model_elastic) == "" .and. index(model_physical_note(model_mathieu), &
+         "nu") > 0, "physical note")
+   end subroutine table
+
+   !> c₀ + c₁ w(τ) = q(τ) for every model, with damping.
+   subroutine split_is_q(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(hill_model_t) :: m
+      real(wp) :: c0, c1, tau, q
+      integer :: kind, i, j, e, n
+      do kind = 1, model_count
+         do i = 1, size(alphas)
+            do j = 1, size(betas)
+               do e = 1, size(epsilons)
+                  m = hill_model_t(kind, alphas(i), betas(j), epsilons(e))
+                  call model_split(kind, m%alpha, m%beta, m%epsilon, c0, c1)
+                  do n = 0, 10
+                     tau = 0.1_wp*n
+                     q = hill_coefficient(m, tau)
+                     call check(ctx, c0 + c1*model_shape(kind, m%alpha, tau), q, rel=1.0e-12_wp, &
+                        abs=1.0e-12_wp*max(1.0_wp, abs(c0), abs(c1)), message=model_name(kind)//" split")
+                  end do
+               end do
+            end do
+         end do
+      end do
+   end subroutine split_is_q
+
+   !> w from s = sin(πτ/2) equals w(τ).
+   subroutine half_sine_shapes(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: taus(21), s(21), w(21)
+      integer :: kind, i, n
+      taus = [(0.05_wp*n, n = 0, 20)]
+      s = sin(0.5_wp*pi*taus)
+      do kind = 1, model_count
+         do i = 1, size(alphas)
+            call model_shapes_from_half_sines(kind, alphas(i), size(s), s, w)
+            do n = 1, size(taus)
+               call check(ctx, w(n), model_shape(kind, alphas(i), taus(n)), rel=1.0e-14_wp, abs=1.0e-15_wp, &
+                  message=model_name(kind)//" w from sin(pi tau/2)")
+            end do
+         end do
+      end do
+   end subroutine half_sine_shapes
+
+   !> ∫₀¹ √|w| by composite Gauss–Legendre quadrature (elastic: equal; Mathieu: a bound).
+   subroutine shape_root_mean_quadrature(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), parameter :: nodes(3) = [0.5_wp - sqrt(15.0_wp)/10, 0.5_wp, 0.5_wp + sqrt(15.0_wp)/10]
+      real(wp), parameter :: weights(3) = [5.0_wp, 8.0_wp, 5.0_wp]/18.0_wp
+      integer, parameter :: pieces = 4000
+      real(wp) :: integral, h
+      integer :: kind, i, p, g
+      h = 1.0_wp/pieces
+      do kind = 1, model_count
+         do i = 1, size(alphas) - 1   ! α = 9.86: the dip is too narrow for this uniform rule
+            integral = 0.0_wp
+            do p = 0, pieces - 1
+               do g = 1, 3
+                  integral = integral + weights(g)*h*sqrt(abs(model_shape(kind, alphas(i), (p + nodes(g))*h)))
+               end do
+            end do
+            if (model_is_pendulum(kind)) then
+               call check(ctx, shape_root_mean(kind, alphas(i)), integral, rel=1.0e-10_wp, message="elastic AGM")
+            else
+               call check(ctx, shape_root_mean(kind, alphas(i)) >= integral, "mathieu: a bound of the integral")
+               ! (2/π) ∫₀^{π/2} √cos x dx = Γ(3/4)/(√π Γ(5/4)); the rule converges slowly at the
+               ! square-root zero of w at τ = 1/2
+               call check(ctx, integral, 0.7627597635018131_wp, rel=1.0e-6_wp, message="mathieu: Gamma(3/4)/(sqrt(pi) Gamma(5/4))")
+            end if
+         end do
+      end do
+   end subroutine shape_root_mean_quadrature
+
+   !> The two pieces of method formula are q(0) and q(1) (the paper's sampling (28)).
+   subroutine two_pieces_are_q0_q1(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(hill_model_t) :: m
+      real(wp) :: first, second
+      integer :: kind, i, j, e
+      do kind = 1, model_count
+         do i = 1, size(alphas) - 1
+            do j = 1, size(betas)
+               do e = 1, size(epsilons)
+                  m = hill_model_t(kind, alphas(i), betas(j), epsilons(e))
+                  call model_two_piece_values(m, first, second)
+                  call check(ctx, first, hill_coefficient(m, 0.0_wp), rel=1.0e-12_wp, abs=1.0e-12_wp, &
+                     message=model_name(kind)//" piece on [0, 1)")
+                  call check(ctx, second, hill_coefficient(m, 1.0_wp), rel=1.0e-12_wp, abs=1.0e-12_wp, &
+                     message=model_name(kind)//" piece on [1, 2)")
+               end do
+            end do
+         end do
+      end do
+   end subroutine two_pieces_are_q0_q1
+
+   !> coupling(t) = α − kπ²t; the decay ratio r solves k r² − 2r + k = 0 (r < 1), or is 0.
+   subroutine hill_method_terms(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: k, r, t
+      integer :: kind, i, n
+      do kind = 1, model_count
+         do i = 1, size(alphas)
+            k = model_hill_k(kind, alphas(i))
+            do n = 0, 6
+               t = (0.5_wp*n)**2
+               call check(ctx, model_hill_coupling(kind, alphas(i), t), alphas(i) - k*pi2*t, rel=1.0e-14_wp, &
+                  abs=1.0e-13_wp, message=model_name(kind)//" coupling")
+            end do
+            r = model_fourier_decay(kind, alphas(i))
+            if (k > 0.0_wp) then
+               call check(ctx, k*r*r - 2.0_wp*r + k, 0.0_wp, abs=1.0e-14_wp, message="decay ratio")
+               call check(ctx, r > 0.0_wp .and. r < 1.0_wp, "0 < r < 1")
+            else
+               call check(ctx, r == 0.0_wp, model_name(kind)//": no geometric decay")
+            end if
+         end do
+      end do
+      call check(ctx, model_hill_k(model_elastic, pi2/2) == 0.5_wp, "elastic k = alpha/pi^2")
+   end subroutine hill_method_terms
+
+   !> The elastic model takes 0 ≤ α < π² (NaN refused without a trap); Mathieu any finite ν.
+   subroutine alpha_domain(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      real(wp) :: nan
+      nan = ieee_value(1.0_wp, ieee_quiet_nan)
+      call check(ctx, model_alpha_valid(model_elastic, 0.0_wp) .and. model_alpha_valid(model_elastic, 9.869_wp), &
+         "elastic: 0 and 9.869 valid")
+      call check(ctx, .not. (model_alpha_valid(model_elastic, pi2) .or. model_alpha_valid(model_elastic, -1.0e-300_wp) &
+         .or. model_alpha_valid(model_elastic, nan)), "elastic: pi^2, negative, NaN refused")
+      call check(ctx, model_alpha_valid(model_mathieu, 100.0_wp) .and. model_alpha_valid(model_mathieu, -5.0_wp) &
+         .and. .not. model_alpha_valid(model_mathieu, nan), "mathieu: any finite nu")
+      call check(ctx, .not. model_alpha_valid(3, 1.0_wp), "unknown model")
+      call check_model_alpha(model_elastic, 10.0_wp, error)
+      call check(ctx, allocated(error), "elastic alpha = 10 reported")
+      if (allocated(error)) call check(ctx, index(error%message, model_alpha_domain(model_elastic)) > 0 .and. &
+         index(error%message, "1.0000000000000000E+01") > 0, "message names domain and value: "//error%message)
+      call check_model_alpha(model_mathieu, 10.0_wp, error)
+      call check(ctx, .not. allocated(error), "mathieu nu = 10 accepted")
+      call check_model(hill_model_t(4, 1.0_wp, 1.0_wp, 0.0_wp), error)
+      call check(ctx, allocated(error), "unknown model kind reported")
+   end subroutine alpha_domain
+
+   !> α of a pendulum in SI units: aπ²/ρ (eq. (24)); ν = α(1 − β/π²) (eq. (21)).
+   subroutine physical_alpha_of_models(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(physical_t) :: p
+      real(wp) :: alpha
+      p = physical_t(r0=0.8_wp, g=9.81_wp, omega=6.0_wp, a=0.3_wp, kappa=0.0_wp)
+      alpha = p%a*pi2/equilibrium_length(p)
+      call check(ctx, model_physical_alpha(model_elastic, p), alpha, rel=1.0e-15_wp, message="elastic alpha")
+      call check(ctx, model_physical_alpha(model_mathieu, p), alpha*(1.0_wp - physical_beta(p)/pi2), rel=1.0e-14_wp, &
+         message="mathieu nu of eq. (21)")
+   end subroutine physical_alpha_of_models
+
+   !> At ν = 0 the Mathieu curves are β = (π²/4) n² (a_n(0) = b_n(0) = n²); the elastic model has no witness.
+   subroutine witness(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: beta
+      logical :: available
+      integer :: n
+      do n = 0, 4
+         call model_witness_beta(model_mathieu, n, 1, 0.0_wp, beta, available)
+         call check(ctx, available, "a_n witness available")
+         call check(ctx, beta, 0.25_wp*pi2*n*n, rel=1.0e-12_wp, abs=1.0e-12_wp, message="a_n(0) = n^2")
+      end do
+      call model_witness_beta(model_mathieu, 0, 2, 0.0_wp, beta, available)
+      call check(ctx, .not. available, "no b_0")
+      call model_witness_beta(model_elastic, 1, 1, 1.0_wp, beta, available)
+      call check(ctx, .not. available .and. beta == 0.0_wp, "elastic: no witness")
+   end subroutine witness
+
+   !> Method auto's inputs: the mesh map's κ in [0, 1), 0 where there is no dip; x = −ln(1 − α/π²).
+   subroutine auto_inputs(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: kappa
+      integer :: i
+      do i = 1, size(alphas)
+         kappa = model_mesh_kappa(model_elastic, alphas(i), 0.35_wp)
+         call check(ctx, kappa >= 0.0_wp .and. kappa < 1.0_wp, "elastic kappa in [0, 1)")
+         call check(ctx, (alphas(i) == 0.0_wp) .eqv. (kappa == 0.0_wp), "elastic kappa 0 only at alpha = 0")
+         call check(ctx, exp(-model_auto_difficulty(model_elastic, alphas(i))), 1.0_wp - alphas(i)/pi2, rel=1.0e-14_wp)
+         call check(ctx, model_mesh_kappa(model_mathieu, alphas(i), 0.35_wp) == 0.0_wp, "mathieu: uniform mesh")
+      end do
+      call check(ctx, model_auto_amplitude(model_elastic, 5.0_wp, -3.0_wp), 3.0_wp, rel=0.0_wp)
+      call check(ctx, model_auto_amplitude(model_mathieu, 10.0_wp, -3.0_wp), 4.0_wp, rel=1.0e-15_wp)
+   end subroutine auto_inputs
+end module test_models
