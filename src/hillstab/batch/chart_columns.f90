@@ -18,19 +18,21 @@ module hillstab_batch_chart_columns
       err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_core_text, only: real_text, integer_text
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu, sampling_name
+   use hillstab_hill_models, only: hill_model_t, model_description, model_physical_note, model_is_pendulum, &
+      model_summary
+   use hillstab_hill_coefficient, only: sampling_name
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
    use hillstab_hill_units, only: equilibrium_length
-   use hillstab_integrate_monodromy, only: monodromy_trace, method_name, method_segments
-   use hillstab_batch_scene, only: scene_t, scene_header, output_path
+   use hillstab_integrate_monodromy, only: monodromy_trace, method_name, method_uses_segments, method_is_exact
+   use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path
    use hillstab_batch_scene_file, only: fail
    use hillstab_batch_columns, only: column_t, style_e17, style_e11, style_e4, style_flag, column_lines, &
       find_columns, columns_text, put_value, failed_row
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
-   public :: chart_columns, offered_chart_columns, chart_values, scene_chart_columns, n_chart_columns
+   public :: floquet_task_t, chart_columns, offered_chart_columns, chart_values, scene_chart_columns, n_chart_columns
    public :: chart_header, common_header, evaluate_point, failed_points_error, check_method_runs, warn_inaccurate
    public :: clamp_magnitude, log10_floor, chart_line_length, stacked, chart_line, failed_values
    public :: header_bytes, text_row_bytes, binary_row_bytes
@@ -60,7 +62,30 @@ module hillstab_batch_chart_columns
    !> log10|S| is written as at least this (only S = 0 exactly reaches it).
    real(wp), parameter :: log10_floor = -300.0_wp
 
+   !> A task writing the chart's columns (chart, points): what runs in units ends as a
+   !> serial run ends.
+   type, abstract, extends(task_t) :: floquet_task_t
+   contains
+      procedure :: finish_units => floquet_finish_units
+   end type floquet_task_t
+
 contains
+
+   !> After a distributed run, as after a serial one: round-off limited points warned about,
+   !> failed ones an error naming the first.
+   subroutine floquet_finish_units(self, scene, n_points, n_failed, first_failed, n_inaccurate, first_inaccurate, &
+                                   error)
+      class(floquet_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64), intent(in) :: n_points  !! all points
+      integer(int64), intent(in) :: n_failed  !! failed points written
+      real(wp), intent(in) :: first_failed(2)  !! (α, β) of the first of them
+      integer(int64), intent(in) :: n_inaccurate  !! round-off limited points written
+      real(wp), intent(in) :: first_inaccurate(2)  !! (α, β) of the first of them
+      type(error_t), allocatable, intent(out) :: error  !! err_points_failed when points failed
+      call warn_inaccurate(scene, n_inaccurate, first_inaccurate)
+      call failed_points_error(scene, n_failed, n_points, first_failed, error)
+   end subroutine floquet_finish_units
 
    !> The column table of a chart or points file of this scene (meanings depend on the
    !> model and the damping).
@@ -75,10 +100,10 @@ contains
       end if
       stable = stable//"; 0.5: marginal, |S| is within its error bound max(error_estimate, tolerance) max(1, |S|) "// &
          "of the threshold, the value cannot decide"
-      if (scene%model == model_elastic) then
+      if (model_is_pendulum(scene%model)) then
          alpha = "alpha = a pi^2/rho, eq. (24)"
       else
-         alpha = "nu of eq. (A1) (the Mathieu model)"
+         alpha = "alpha of "//model_summary(scene%model)
       end if
       table(col_alpha) = column(col_alpha, "alpha", "", alpha)
       table(col_beta) = column(col_beta, "beta", "", "beta = g pi^2/(rho omega^2), eq. (24)")
@@ -116,7 +141,7 @@ contains
       integer :: k
       allocate (ids(0))
       do k = 1, n_chart_columns
-         if (k == col_physical .and. scene%model /= model_elastic) cycle
+         if (k == col_physical .and. .not. model_is_pendulum(scene%model)) cycle
          if (k == col_stable_paper .and. .not. scene%epsilon > 0.0_wp) cycle
          if (k == col_mu_per_s .and. .not. scene%physical) cycle
          ids = [ids, k]
@@ -247,7 +272,7 @@ contains
          placeholder = real_text(table(ids(k))%placeholder)
          text(n) = trim(text(n))//merge(" ", ",", index(text(n), "=") == 0)//" "//table(ids(k))%name//" = "//placeholder
       end do
-      if (outside .and. scene%model == model_elastic) then
+      if (outside .and. model_is_pendulum(scene%model)) then
          n = n + 1
          text(n) = "note: this file leaves the physical domain (rows with physical = 0)"
       end if
@@ -338,10 +363,10 @@ contains
       type(scene_t), intent(in) :: scene
       character(len=:), allocatable :: text
       text = method_name(scene%method%kind)
-      if (scene%method%kind == method_segments) then
+      if (method_uses_segments(scene%method%kind)) then
          text = text//", "//integer_text(scene%method%n_segments)//" pieces, sampling "// &
             sampling_name(scene%method%sampling)
-      else if (method_name(scene%method%kind) /= "formula") then
+      else if (method_is_exact(scene%method%kind)) then
          text = text//", tolerance "//real_text(scene%method%tolerance)
       end if
    end function method_description
@@ -358,7 +383,7 @@ contains
       if (size(scene%amplitudes) > 0) then
          text(3) = "rho = "//real_text(equilibrium_length(scene%pendulum))//" m; each row is one amplitude a of "// &
                    "&physical: a = alpha rho/pi^2"
-         if (scene%model == model_mathieu) text(3) = trim(text(3))//" (here alpha is nu = a r0 pi^2/rho^2 of eq. (21))"
+         text(3) = trim(text(3))//model_physical_note(scene%model)
          lines = text(:3)
       else
          lines = text(:2)
@@ -370,11 +395,7 @@ contains
       type(scene_t), intent(in) :: scene  !! the scene
       character(len=:), allocatable :: lines(:)
       character(len=:), allocatable :: model_text, common(:)
-      if (scene%model == model_elastic) then
-         model_text = "model: elastic, Q(tau) = (beta - alpha cos(pi tau))/(1 - (alpha/pi^2) cos(pi tau)), eq. (25)"
-      else
-         model_text = "model: mathieu, q(tau) = beta - alpha cos(pi tau), eq. (A1), alpha playing nu"
-      end if
+      model_text = model_description(scene%model)
       common = scene_header(scene, "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau", [model_text])
       if (scene%physical) then
          lines = stacked(common, physical_header(scene))

@@ -10,7 +10,7 @@ module hillstab_batch_group_series
    use hillstab_core_kinds, only: wp, int64, pi2
    use hillstab_core_error, only: error_t
    use hillstab_core_text, only: real_text, integer_text
-   use hillstab_hill_coefficient, only: model_elastic
+   use hillstab_hill_models, only: model_is_pendulum, model_name
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_declaration, only: group_t, group_values_t, group_reader_t, variable, var_real, var_integer, &
       begin_group, next_item, end_group
@@ -88,9 +88,9 @@ contains
       if (physical) then
          call fail(error, file%path, "physical", "r0", "the series task takes r0 and g in &series and the "// &
             "damping as &scene epsilon; leave out &physical")
-      else if (model /= model_elastic) then
-         call fail(error, file%path, "scene", "model", "the series task simulates the elastic pendulum: "// &
-            "model must be 'elastic'")
+      else if (.not. model_is_pendulum(model)) then
+         call fail(error, file%path, "scene", "model", "the pendulum tasks simulate the elastic pendulum: model '"// &
+            model_name(model)//"' is not it")
       else if (alpha < 0.0_wp .or. alpha >= pi2) then
          call fail(error, file%path, group%name, "alpha", "must lie in [0, pi**2 = "//real_text(pi2)// &
             ") (amplitude a < rho), got "//real_text(alpha))

@@ -19,9 +19,9 @@ module hillstab_batch_scene
    use hillstab_core_kinds, only: wp, int64
    use hillstab_core_text, only: quoted
    use hillstab_core_error, only: error_t, set_error, err_input
-   use hillstab_hill_coefficient, only: model_elastic, model_mathieu
+   use hillstab_hill_models, only: model_elastic, model_physical_alpha
    use hillstab_integrate_monodromy, only: method_t
-   use hillstab_hill_units, only: physical_t, physical_alpha, physical_beta, physical_nu
+   use hillstab_hill_units, only: physical_t, physical_beta
    use hillstab_batch_declaration, only: group_t, group_values_t
    use hillstab_batch_scene_file, only: scene_file_t
    use hillstab_batch_output, only: output_file_t, open_output
@@ -202,11 +202,7 @@ contains
       p = scene%pendulum
       do k = 1, size(scene%amplitudes)
          p%a = scene%amplitudes(k)
-         if (scene%model == model_mathieu) then
-            points(1, k) = physical_nu(p)
-         else
-            points(1, k) = physical_alpha(p)
-         end if
+         points(1, k) = model_physical_alpha(scene%model, p)
          points(2, k) = physical_beta(p)
       end do
    end function physical_points

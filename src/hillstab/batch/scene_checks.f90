@@ -9,14 +9,14 @@ module hillstab_batch_scene_checks
    use hillstab_core_kinds, only: wp, pi2
    use hillstab_core_error, only: error_t
    use hillstab_core_text, only: real_text, integer_text
-   use hillstab_hill_coefficient, only: model_elastic
-   use hillstab_integrate_monodromy, only: method_t, method_name, method_magnus4, method_magnus6, method_rk, method_gsl
+   use hillstab_hill_models, only: model_name, model_alpha_valid, model_alpha_domain
+   use hillstab_integrate_monodromy, only: method_t, method_name, method_cost_grows, max_integrated_magnitude
    use hillstab_batch_scene_file, only: fail
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
    public :: require_bounded, require_finite, require_positive_count, check_range, check_alpha_domain
-   public :: check_integration_cost, max_integrated_magnitude
+   public :: check_integration_cost
    public :: max_grid_count, max_segments, min_tolerance, max_magnitude, max_boundaries_magnitude, &
       min_pendulum_beta, max_epsilon, max_points
 
@@ -29,8 +29,6 @@ module hillstab_batch_scene_checks
    real(wp), parameter :: min_tolerance = 1.0e-15_wp
    !> Largest |α|, |β|, |τ| accepted (grid spacings, Q and the methods' scalings stay finite).
    real(wp), parameter :: max_magnitude = 1.0e15_wp
-   !> Largest |α| + |β| for the integrating methods (magnus4, magnus6, rk, gsl).
-   real(wp), parameter :: max_integrated_magnitude = 1.0e8_wp
    !> Largest |α|, |β| of task boundaries.
    real(wp), parameter :: max_boundaries_magnitude = 1.0e6_wp
    !> Smallest β of the tasks that simulate the pendulum (series, lyapunov, poincare):
@@ -94,7 +92,8 @@ contains
          integer_text(max_grid_count)//", got "//integer_text(n))
    end subroutine check_range
 
-   !> The elastic model needs 0 <= α < π² (a < ρ); the Mathieu model takes any finite ν.
+   !> α must lie in the model's domain (the elastic model: 0 <= α < π², a < ρ; the Mathieu
+   !> model takes any finite ν).
    subroutine check_alpha_domain(path, model, group, variable, alpha, error, where)
       character(len=*), intent(in) :: path  !! the scene file
       integer, intent(in) :: model  !! the model code
@@ -105,11 +104,9 @@ contains
       character(len=:), allocatable :: prefix
       prefix = ""
       if (present(where)) prefix = where//": "
-      if (model /= model_elastic) return
-      if (alpha < 0.0_wp .or. alpha >= pi2) then
-         call fail(error, path, group, variable, prefix//"the elastic model needs 0 <= alpha < pi**2 = "// &
-            real_text(pi2)//" (amplitude a < rho), got alpha = "//real_text(alpha))
-      end if
+      if (model_alpha_valid(model, alpha)) return
+      call fail(error, path, group, variable, prefix//"the "//model_name(model)//" model needs "// &
+         model_alpha_domain(model)//" (amplitude a < rho), got alpha = "//real_text(alpha))
    end subroutine check_alpha_domain
 
    !> The integrating methods (magnus4, magnus6, rk, gsl) take steps in proportion to
@@ -124,12 +121,7 @@ contains
       type(error_t), allocatable, intent(out) :: error  !! err_input when too costly
       character(len=*), intent(in), optional :: where  !! a position to name (a point of a file)
       character(len=:), allocatable :: prefix
-      select case (method%kind)
-      case (method_magnus4, method_magnus6, method_rk, method_gsl)
-      case default
-         return
-      end select
-      if (magnitude <= max_integrated_magnitude) return
+      if (.not. method_cost_grows(method%kind) .or. magnitude <= max_integrated_magnitude) return
       prefix = ""
       if (present(where)) prefix = where//": "
       call fail(error, path, group, variable, prefix//"|alpha| + |beta| must be <= "// &

@@ -15,10 +15,11 @@ module hillstab_batch_scene_read
    use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t
    use hillstab_core_text, only: real_text, quoted
-   use hillstab_hill_coefficient, only: model_elastic, model_mathieu, model_name, sampling_endpoint, sampling_average, &
-      sampling_name
+   use hillstab_hill_models, only: model_table, model_name, model_from_name, model_names_text, model_summary
+   use hillstab_hill_coefficient, only: sampling_name, sampling_from_name, sampling_names_text
    use hillstab_hill_units, only: physical_t, physical_epsilon, check_physical
-   use hillstab_integrate_monodromy, only: method_t, method_name, method_from_name
+   use hillstab_integrate_monodromy, only: method_t, method_table, method_name, method_from_name, method_names_text, &
+      method_description
    use hillstab_batch_scene, only: scene_t, task_t
    use hillstab_batch_scene_file, only: scene_file_t, open_scene_file, close_scene_file, group_present, group_sets, &
       fail, read_len
@@ -67,10 +68,8 @@ contains
       type(group_t) :: group
       group = group_t("scene", "what to compute and how", [ &
          variable("task", var_name, "'chart'", task_names_text(" | ")), &
-         variable("model", var_name, "'elastic'", "elastic: Q = (beta - alpha cos pi tau)/(1 - (alpha/pi^2) cos pi "// &
-                  "tau), eq. (25) | mathieu: Q = beta - alpha cos pi tau"), &
-         variable("method", var_name, "'auto'", "auto (exact to tolerance, fastest) | formula (the paper's 2 pieces, "// &
-                  "eq. (37)) | segments | magnus4 | magnus6 | rk | gsl"), &
+         variable("model", var_name, "'"//model_name(1)//"'", model_choices()), &
+         variable("method", var_name, "'"//method_name(0)//"'", method_choices()), &
          variable("n_segments", var_integer, "2", "method segments (and Qseg of task coefficient): pieces per "// &
                   "period, at least 1"), &
          variable("sampling", var_name, "'endpoint'", "segments: endpoint (eq. (28)) | midpoint | average (exact "// &
@@ -115,7 +114,6 @@ contains
       namelist /scene/ task, model, method, n_segments, sampling, tolerance, epsilon, output, columns, format, &
          names_line
       type(group_reader_t) :: reader
-      integer :: k
       group = scene_group()
       call begin_group(reader, file, group)
       read (reader%defaults, nml=scene, iostat=reader%defaults_status, iomsg=reader%defaults_msg)
@@ -128,29 +126,24 @@ contains
       if (allocated(error)) return
       task_name = lower_case(trim(task))
 
-      select case (lower_case(trim(model)))
-      case ("elastic"); this%model = model_elastic
-      case ("mathieu"); this%model = model_mathieu
-      case default
+      this%model = model_from_name(trim(model))
+      if (this%model < 0) then
          call fail(error, file%path, group%name, "model", "unknown model '"//trim(model)// &
-            "' (expected elastic or mathieu)")
-         return
-      end select
-
-      this%method%kind = method_from_name(lower_case(trim(method)))
-      if (this%method%kind < 0) then
-         call fail(error, file%path, group%name, "method", "unknown method '"//trim(method)// &
-            "' (expected auto, formula, segments, magnus4, magnus6, rk or gsl)")
+            "' (expected "//model_names_text()//")")
          return
       end if
 
-      this%method%sampling = -1
-      do k = sampling_endpoint, sampling_average
-         if (lower_case(trim(sampling)) == sampling_name(k)) this%method%sampling = k
-      end do
+      this%method%kind = method_from_name(trim(method))
+      if (this%method%kind < 0) then
+         call fail(error, file%path, group%name, "method", "unknown method '"//trim(method)// &
+            "' (expected "//method_names_text()//")")
+         return
+      end if
+
+      this%method%sampling = sampling_from_name(trim(sampling))
       if (this%method%sampling < 0) then
          call fail(error, file%path, group%name, "sampling", "unknown sampling '"//trim(sampling)// &
-            "' (expected endpoint, midpoint or average)")
+            "' (expected "//sampling_names_text()//")")
          return
       end if
 
@@ -214,6 +207,28 @@ contains
       call this%settings%set("columns", quoted(this%columns))
       call this%settings%set("format", quoted(trim(merge("binary", "text  ", this%binary))))
    end subroutine read_scene_group
+
+   !> The models for a template's comment: "elastic: Q = ... | mathieu: Q = ...".
+   function model_choices() result(text)
+      character(len=:), allocatable :: text
+      integer :: k
+      text = ""
+      do k = 1, size(model_table)
+         if (k > 1) text = text//" | "
+         text = text//model_name(k)//": "//model_summary(k)
+      end do
+   end function model_choices
+
+   !> The methods for a template's comment: "auto (…) | formula (…) | …".
+   function method_choices() result(text)
+      character(len=:), allocatable :: text
+      integer :: k
+      text = ""
+      do k = lbound(method_table, 1), ubound(method_table, 1)
+         if (k > lbound(method_table, 1)) text = text//" | "
+         text = text//method_name(k)//" ("//method_description(k)//")"
+      end do
+   end function method_choices
 
    !> What `&scene` asks of the task that only some tasks offer.
    subroutine check_task_settings(file, scene, task, error)

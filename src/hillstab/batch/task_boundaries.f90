@@ -7,7 +7,8 @@
 !>   (err_points_failed, exit status 3), it is never written as ok;
 !> - method formula or segments: the roots of S_method(β) = ±2 by Brent's method on a
 !>   bracket sampled at n_beta points of the window (`n_beta` is used only here);
-!> - model mathieu: GSL's a_n, b_n as a witness column beside Hill's values.
+!> - a model with an independent GSL witness (Mathieu: a_n, b_n) gets it as a column
+!>   beside Hill's values.
 !>
 !> The α values run in parallel (OpenMP, dynamic schedule: the truncation grows
 !> towards α → π²); the file is written once all are done, curve by curve.
@@ -15,11 +16,12 @@ module hillstab_batch_task_boundaries
    use hillstab_core_kinds, only: wp, version_string
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
-   use hillstab_hill_coefficient, only: model_elastic, in_physical_domain, sampling_name
-   use hillstab_integrate_monodromy, only: method_name, method_formula, method_segments
+   use hillstab_hill_models, only: model_description, model_has_witness, model_witness_beta, model_is_pendulum
+   use hillstab_hill_coefficient, only: in_physical_domain, sampling_name
+   use hillstab_integrate_monodromy, only: method_name, method_is_exact, method_uses_segments, method_pieces
    use hillstab_curves_hill_method, only: hill_boundary_t, hill_boundaries, coexistence_threshold
    use hillstab_curves_boundaries, only: boundary_check_t, verify_boundary, approximate_root_t, approximate_boundaries, &
-      mathieu_witness, beta_accuracy_factor, gsl_witness_max_q
+      beta_accuracy_factor, gsl_witness_max_q
    use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, open_scene_output
    use hillstab_batch_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail
@@ -44,7 +46,7 @@ module hillstab_batch_task_boundaries
       real(wp) :: check = 0.0_wp         !! exact: S by auto at the point; approximate: S_method
       real(wp) :: beta_error = 0.0_wp    !! error estimate of beta
       integer :: modes = 0               !! exact: modes of the truncation; approximate: pieces
-      real(wp) :: beta_gsl = 0.0_wp      !! mathieu: GSL's value (beta when unavailable)
+      real(wp) :: beta_gsl = 0.0_wp      !! with a witness: GSL's value (beta when unavailable)
       integer :: gsl_ok = 0              !! 1 GSL agrees, 0 GSL not used here, 2 GSL disagrees with Hill
    end type boundary_row_t
 
@@ -118,7 +120,7 @@ contains
 
    logical function exact_method(scene)
       type(scene_t), intent(in) :: scene
-      exact_method = scene%method%kind /= method_formula .and. scene%method%kind /= method_segments
+      exact_method = method_is_exact(scene%method%kind)
    end function exact_method
 
    !> The columns of the boundaries file (the GSL witness columns for the Mathieu model).
@@ -185,8 +187,9 @@ contains
             else if (check%roundoff) then
                rows(i)%status = status_roundoff
             end if
-            if (scene%model /= model_elastic) then
-               call mathieu_witness(curves(i)%order, curves(i)%parity, alpha, rows(i)%beta_gsl, available)
+            if (model_has_witness(scene%model)) then
+               call model_witness_beta(scene%model, curves(i)%order, curves(i)%parity, alpha, rows(i)%beta_gsl, &
+                                       available)
                if (.not. available) then
                   rows(i)%gsl_ok = 0
                   rows(i)%beta_gsl = rows(i)%beta
@@ -213,8 +216,8 @@ contains
             rows(i)%branch = max(roots(i)%edge, 1)
             rows(i)%check = roots(i)%residual + roots(i)%trace_sign
             rows(i)%beta_error = scene%method%tolerance*max(1.0_wp, abs(roots(i)%beta))
-            rows(i)%modes = merge(2, scene%method%n_segments, scene%method%kind == method_formula)
-            if (scene%model /= model_elastic) rows(i)%beta_gsl = rows(i)%beta
+            rows(i)%modes = method_pieces(scene%method)
+            if (model_has_witness(scene%model)) rows(i)%beta_gsl = rows(i)%beta
          end do
          ! coexistence: both edges of an order found and equal to the accuracy
          do i = 1, size(rows)
@@ -249,7 +252,7 @@ contains
       end if
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
-      mathieu = scene%model /= model_elastic
+      mathieu = model_has_witness(scene%model)
       n_alpha = self%grid%n_alpha
       allocate (per_alpha(n_alpha))
       !$omp parallel do schedule(dynamic) default(shared) private(i, cause)
@@ -382,11 +385,7 @@ contains
       character(len=240) :: text(16)
       integer :: n
       n = 0
-      if (scene%model == model_elastic) then
-         n = n + 1; text(n) = "model: elastic, Q(tau) = (beta - alpha cos(pi tau))/(1 - (alpha/pi^2) cos(pi tau)), eq. (25)"
-      else
-         n = n + 1; text(n) = "model: mathieu, q(tau) = beta - alpha cos(pi tau), eq. (A1), alpha playing nu"
-      end if
+      n = n + 1; text(n) = model_description(scene%model)
       if (exact_method(scene)) then
          n = n + 1; text(n) = "method: Hill's method (eigenvalues of the banded symmetric-definite pencil, LAPACK "// &
             "dsbgv), converged in the truncation to tolerance "//real_text(scene%method%tolerance)//"*max(1,|beta|)"
@@ -394,8 +393,8 @@ contains
             "beta error <= "//real_text(beta_accuracy_factor)//"*tolerance*max(1,|beta|)"
       else
          n = n + 1; text(n) = "method: "//method_name(scene%method%kind)//merge(" (the paper's eq. (37))", &
-            "                       ", scene%method%kind == method_formula)
-         if (scene%method%kind == method_segments) text(n) = trim(text(n))//", "// &
+            "                       ", method_pieces(scene%method) == 2 .and. .not. method_uses_segments(scene%method%kind))
+         if (method_uses_segments(scene%method%kind)) text(n) = trim(text(n))//", "// &
             integer_text(scene%method%n_segments)//" pieces, sampling "//sampling_name(scene%method%sampling)
          n = n + 1; text(n) = "roots of S_method = +-2 by Brent's method to tolerance*max(1,|beta|), brackets from "// &
             integer_text(grid%n_beta)//" samples over the beta window (n_beta); tongues narrower than a sample "// &
@@ -410,7 +409,7 @@ contains
       n = n + 1; text(n) = "status: 0 ok, 1 check by auto limited by round-off, 2 failed the check; check: S by auto "// &
          "at the point (approximate: S_method)"
       n = n + 1; text(n) = "beta_error: estimated error of beta; modes: Fourier modes of the truncation (approximate: pieces)"
-      if (scene%model /= model_elastic) then
+      if (model_has_witness(scene%model)) then
          n = n + 1; text(n) = "beta_gsl: (pi^2/4) a_n or b_n(2 nu/pi^2) by GSL; gsl_ok: 1 agrees with Hill's method within "// &
             real_text(gsl_agreement)//"*max(1,|beta|), 2 disagrees (a GSL failure), 0 not used (order > 60 or |q| > "// &
             real_text(gsl_witness_max_q)//"; beta_gsl = beta)"

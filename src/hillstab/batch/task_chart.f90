@@ -23,7 +23,7 @@ module hillstab_batch_task_chart
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_checks, only: check_integration_cost
    use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point
-   use hillstab_batch_chart_columns, only: n_chart_columns, chart_values, failed_values, chart_line, chart_header, &
+   use hillstab_batch_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, chart_header, &
       scene_chart_columns, check_method_runs, warn_inaccurate, failed_points_error, chart_line_length, &
       header_bytes, text_row_bytes, binary_row_bytes
    use hillstab_batch_columns, only: columns_text
@@ -37,7 +37,7 @@ module hillstab_batch_task_chart
    public :: chart_task_t, chart_task
 
    !> The chart task and its grid.
-   type, extends(task_t) :: chart_task_t
+   type, extends(floquet_task_t) :: chart_task_t
       type(chart_grid_t) :: grid                     !! `&chart`
       !> what every row shares, made by `prepare_units`: the β values, their text, the columns
       real(wp), allocatable :: betas(:)
@@ -54,7 +54,6 @@ module hillstab_batch_task_chart
       procedure :: prepare_units => chart_prepare_units
       procedure :: unit_text => chart_unit_text
       procedure :: open_units => chart_open_units
-      procedure :: finish_units => chart_finish_units
       procedure :: point_of => chart_point_of
    end type chart_task_t
 
@@ -397,20 +396,6 @@ contains
       call write_header(file, chart_header(scene, outside(self%grid), ids), columns_text(chart_columns(scene), ids), &
                         error, names_line=scene%names_line)
    end subroutine chart_open_units
-
-   !> As after `chart_run`: round-off limited points warned about, failed ones an error.
-   subroutine chart_finish_units(self, scene, n_points, n_failed, first_failed, n_inaccurate, first_inaccurate, error)
-      class(chart_task_t), intent(in) :: self  !! the task
-      type(scene_t), intent(in) :: scene  !! its scene
-      integer(int64), intent(in) :: n_points  !! all points
-      integer(int64), intent(in) :: n_failed  !! failed points written
-      real(wp), intent(in) :: first_failed(2)  !! (α, β) of the first of them
-      integer(int64), intent(in) :: n_inaccurate  !! round-off limited points written
-      real(wp), intent(in) :: first_inaccurate(2)  !! (α, β) of the first of them
-      type(error_t), allocatable, intent(out) :: error  !! err_points_failed when points failed
-      call warn_inaccurate(scene, n_inaccurate, first_inaccurate)
-      call failed_points_error(scene, n_failed, n_points, first_failed, error)
-   end subroutine chart_finish_units
 
    !> (α, β) of point k, numbered row by row.
    pure function chart_point_of(self, k) result(point)

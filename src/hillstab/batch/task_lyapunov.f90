@@ -16,7 +16,7 @@ module hillstab_batch_task_lyapunov
    use hillstab_core_error, only: error_t, set_error, err_accuracy, err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_core_text, only: real_text, integer_text
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic
+   use hillstab_hill_models, only: hill_model_t
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
    use hillstab_integrate_monodromy, only: monodromy_trace, method_name
@@ -331,7 +331,7 @@ contains
             self%series%periods, scene%method%tolerance, result, error)
       end if
       if (.not. allocated(error)) then
-         call monodromy_trace(hill_model_t(model_elastic, alpha, beta, scene%epsilon), scene%method, tr, error)
+         call monodromy_trace(hill_model_t(scene%model, alpha, beta, scene%epsilon), scene%method, tr, error)
          if (allocated(error)) then
             if (error%code == err_accuracy) then
                deallocate (error)

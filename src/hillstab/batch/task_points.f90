@@ -15,7 +15,7 @@ module hillstab_batch_task_points
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_checks, only: check_integration_cost
    use hillstab_batch_group_points, only: points_group, read_points_group
-   use hillstab_batch_chart_columns, only: n_chart_columns, chart_values, failed_values, chart_line, chart_header, &
+   use hillstab_batch_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, chart_header, &
       scene_chart_columns, chart_columns, evaluate_point, warn_inaccurate, failed_points_error, chart_line_length, &
       header_bytes, text_row_bytes, binary_row_bytes
    use hillstab_batch_columns, only: columns_text
@@ -27,7 +27,7 @@ module hillstab_batch_task_points
    public :: points_task_t, points_task
 
    !> The points task and its points.
-   type, extends(task_t) :: points_task_t
+   type, extends(floquet_task_t) :: points_task_t
       character(len=:), allocatable :: file   !! `&points file` ("" with `&physical a`)
       real(wp), allocatable :: points(:, :)   !! (2, n): α, β in order
    contains
@@ -40,7 +40,6 @@ module hillstab_batch_task_points
       procedure :: unit_size => points_unit_size
       procedure :: unit_text => points_unit_text
       procedure :: open_units => points_open_units
-      procedure :: finish_units => points_finish_units
       procedure :: point_of => points_point_of
    end type points_task_t
 
@@ -234,20 +233,6 @@ contains
       call write_header(file, chart_header(scene, outside(self), ids), columns_text(chart_columns(scene), ids), &
                         error, names_line=scene%names_line)
    end subroutine points_open_units
-
-   !> As after `points_run`.
-   subroutine points_finish_units(self, scene, n_points, n_failed, first_failed, n_inaccurate, first_inaccurate, error)
-      class(points_task_t), intent(in) :: self  !! the task
-      type(scene_t), intent(in) :: scene  !! its scene
-      integer(int64), intent(in) :: n_points  !! all points
-      integer(int64), intent(in) :: n_failed  !! failed points written
-      real(wp), intent(in) :: first_failed(2)  !! (α, β) of the first of them
-      integer(int64), intent(in) :: n_inaccurate  !! round-off limited points written
-      real(wp), intent(in) :: first_inaccurate(2)  !! (α, β) of the first of them
-      type(error_t), allocatable, intent(out) :: error  !! err_points_failed when points failed
-      call warn_inaccurate(scene, n_inaccurate, first_inaccurate)
-      call failed_points_error(scene, n_failed, n_points, first_failed, error)
-   end subroutine points_finish_units
 
    !> (α, β) of point k.
    pure function points_point_of(self, k) result(point)

@@ -74,7 +74,7 @@ contains
       end do
       if (job%takes_physical) then
          block = physical_block(job)
-         text = text//nl//nl//block
+         text = text//nl//block
       end if
       if (text(len(text):) == nl) text = text(:len(text) - 1)
    end subroutine scene_template
@@ -116,19 +116,21 @@ contains
       text = text//"/"//nl
    end function group_block
 
-   !> A group commented out, every variable at its default or example.
-   function commented_block(group) result(text)
+   !> A group commented out, every variable at its default or example (but those in `skip`).
+   function commented_block(group, skip) result(text)
       type(group_t), intent(in) :: group
-      character(len=:), allocatable :: text
+      character(len=*), intent(in), optional :: skip(:)  !! variables left out
+      character(len=:), allocatable :: text, value
       integer :: k
       text = "! &"//group%name//nl
       do k = 1, size(group%variables)
          associate (v => group%variables(k))
-            if (len(v%default) > 0) then
-               text = text//commented_item(v%name//" = "//v%default, v%help)
-            else
-               text = text//commented_item(v%name//" = "//v%example, v%help)
+            if (present(skip)) then
+               if (any(skip == v%name)) cycle
             end if
+            value = v%default
+            if (len(value) == 0) value = v%example
+            text = text//commented_item(v%name//" = "//value, v%help)
          end associate
       end do
       text = text//"! /"
@@ -138,25 +140,17 @@ contains
    !> dimensionless values); `r0` and `a` only for a task that takes amplitudes.
    function physical_block(task) result(text)
       class(task_t), intent(in) :: task
-      character(len=:), allocatable :: text
-      type(group_t) :: group
-      integer :: k
-      group = physical_group()
+      character(len=:), allocatable :: text, block
       text = "! Optional, instead of the dimensionless values: the pendulum in SI units (remove the '!'s"// &
          nl//"! to use it; then no &scene epsilon"
-      if (task%takes_amplitudes) text = text//", and r0 with a replace "//task%amplitudes_replace
-      text = text//")."//nl//"! &"//group%name//nl
-      do k = 1, size(group%variables)
-         associate (v => group%variables(k))
-            if (.not. task%takes_amplitudes .and. (v%name == "r0" .or. v%name == "a")) cycle
-            if (len(v%default) > 0) then
-               text = text//commented_item(v%name//" = "//v%default, v%help)
-            else
-               text = text//commented_item(v%name//" = "//v%example, v%help)
-            end if
-         end associate
-      end do
-      text = text//"! /"
+      if (task%takes_amplitudes) then
+         text = text//", and r0 with a replace "//task%amplitudes_replace//")."//nl
+         block = commented_block(physical_group())
+      else
+         text = text//")."//nl
+         block = commented_block(physical_group(), [character(len=2) :: "r0", "a"])
+      end if
+      text = text//block
    end function physical_block
 
    !> The first line of a group: its name, and its help at the comment column.
