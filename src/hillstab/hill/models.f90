@@ -74,6 +74,8 @@ module hillstab_hill_models
          pendulum=.false., witness=.true.)]
    !> Number of models; their codes are 1 … model_count.
    integer, parameter :: model_count = size(model_table)
+   !> The names, contiguous (passing `model_table%name` would copy the column on every call).
+   character(len=16), parameter :: model_names(model_count) = model_table%name
 
    !> Parameters of one Hill equation.
    type :: hill_model_t
@@ -105,14 +107,14 @@ contains
    !> Model constant from its name (any case, blanks trimmed); −1 when unknown.
    pure integer function model_from_name(name) result(kind)
       character(len=*), intent(in) :: name  !! a model name
-      kind = name_position(name, model_table%name)
+      kind = name_position(name, model_names)
       if (kind == 0) kind = -1
    end function model_from_name
 
    !> The model names as a choice for messages: "elastic or mathieu".
    pure function model_names_text() result(text)
       character(len=:), allocatable :: text
-      text = alternatives_text(model_table%name)
+      text = alternatives_text(model_names)
    end function model_names_text
 
    !> The line an output header gives the model, e.g. "model: mathieu, q(tau) = beta - alpha cos(pi tau),

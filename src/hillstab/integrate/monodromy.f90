@@ -79,6 +79,8 @@ module hillstab_integrate_monodromy
                     exact=.true., estimate=.true., cost_grows=.true.), &
       method_info_t("gsl", "GSL odeiv2 rk8pd under the global error control, the independent reference", &
                     exact=.true., estimate=.true., cost_grows=.true.)]
+   !> The names, contiguous (passing `method_table%name` would copy the column on every call).
+   character(len=len(method_table%name)), parameter :: method_names(0:6) = method_table%name
 
    !> How to compute the monodromy.
    type :: method_t
@@ -126,14 +128,14 @@ contains
    !> Method constant from its name (any case, blanks trimmed); −1 when unknown.
    pure integer function method_from_name(name) result(kind)
       character(len=*), intent(in) :: name  !! a method name
-      kind = name_position(name, method_table%name)
+      kind = name_position(name, method_names)
       kind = merge(kind - 1 + lbound(method_table, 1), -1, kind > 0)
    end function method_from_name
 
    !> The method names as a choice for messages: "auto, formula, segments, magnus4, magnus6, rk or gsl".
    pure function method_names_text() result(text)
       character(len=:), allocatable :: text
-      text = alternatives_text(method_table%name)
+      text = alternatives_text(method_names)
    end function method_names_text
 
    !> One line on what the method does, for templates and headers.

@@ -102,7 +102,7 @@ module hillstab_integrate_rk_tableaux
       v9_bh13 = 0.3408096799013119935160094894224543812830_wp, &
       v9_bh16 = 0.4834231373823958314376726739772871714902e-1_wp
 
-   !> DOPRI5: Dormand & Prince (1980), coefficients as in Hairer's dopri5.f (CDOPRI);
+   !> The DOPRI5 pair of Dormand & Prince (1980), coefficients as in Hairer's dopri5.f (CDOPRI);
    !> e = b − b̂ of the embedded 4th-order formula; d = Shampine's (1986) dense output.
    type :: dopri5_tableau_t
       !> nodes c(i) (c(6) = c(7) = 1)
@@ -131,7 +131,7 @@ module hillstab_integrate_rk_tableaux
          d6 = -1453857185.0_wp/822651844.0_wp, d7 = 69997945.0_wp/29380423.0_wp
    end type dopri5_tableau_t
 
-   !> DOP853: coefficients as in Hairer's dop853.f (DP86CO, version of 25 April 1996).
+   !> The DOP853 pair, coefficients as in Hairer's dop853.f (DP86CO, version of 25 April 1996).
    !> Stages 1–12 make the step, stage 13 is f at the new point (FSAL), stages 14–16
    !> serve only the 7th-order dense output. bhh: 3rd-order embedded weights; er: b − b̂₅.
    type :: dop853_tableau_t
@@ -302,7 +302,7 @@ module hillstab_integrate_rk_tableaux
          e13 = -pd_b13
    end type pd87_tableau_t
 
-   !> VERN98: Verner (2010), RKV98.IIa Efficient, 16 stages. Stages 15 and 16 are at c = 1;
+   !> The VERN98 pair of Verner (2010), RKV98.IIa Efficient, 16 stages. Stages 15 and 16 are at c = 1;
    !> the 9th-order formula propagates (local extrapolation) and does not use stage 16,
    !> which only the 8th-order formula uses (a(16, 14) = a(16, 15) = 0). e = b̂ − b.
    type :: vern98_tableau_t
