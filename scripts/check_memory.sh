@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# valgrind memcheck on small scenes of every task: no invalid access, no use of
+# valgrind memcheck on small scenes of every task (and a physical, binary points scene): no invalid access, no use of
 # uninitialised values, no definite leak (--error-exitcode makes any of them fail).
 # usage: scripts/check_memory.sh BUILD/app/hillstab
 set -euo pipefail
@@ -33,12 +33,26 @@ cat > boundaries.nml <<'NML'
 &scene task='boundaries', model='mathieu', output='m_bound' /
 &chart alpha_min=0, alpha_max=10, n_alpha=3, beta_min=-5, beta_max=20 /
 NML
+cat > lyapunov.nml <<'NML'
+&scene task='lyapunov', output='m_lyap' /
+&series periods=3 /
+&chart n_alpha=2, n_beta=2 /
+NML
+cat > poincare.nml <<'NML'
+&scene task='poincare', output='m_poinc' /
+&series periods=5 /
+&poincare phi0s=0.05, 0.1 /
+NML
+cat > physical.nml <<'NML'
+&scene task='points', output='m_phys', format='binary' /
+&physical omega=10, r0=0.3, a=0.01, 0.05, kappa=0.1 /
+NML
 cat > bad.nml <<'NML'
 &scene task='chart', output='m_bad' /
 &chart beta_max = -, /
 NML
 status=0
-for scene in chart chart_segments points coefficient series boundaries bad; do
+for scene in chart chart_segments points coefficient series boundaries lyapunov poincare physical bad; do
    log="$work/$scene.valgrind"
    set +e
    OMP_NUM_THREADS=2 valgrind --quiet --error-exitcode=99 --leak-check=full --show-leak-kinds=definite \

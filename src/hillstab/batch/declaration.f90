@@ -36,7 +36,7 @@ module hillstab_batch_declaration
    private
    public :: variable_t, group_t, value_t, group_values_t, group_reader_t
    public :: var_real, var_integer, var_logical, var_name, var_path, var_words, var_real_list
-   public :: variable, begin_group, next_item, end_group, unset_real, kind_text, real_list, values_of, list_value
+   public :: new_group, variable, begin_group, next_item, end_group, unset_real, kind_text, real_list, values_of, list_value
 
    integer, parameter :: var_real = 1       !! a real number
    integer, parameter :: var_integer = 2    !! an integer
@@ -74,6 +74,8 @@ module hillstab_batch_declaration
       procedure :: with_default => group_with_default
       !> the index of a variable, 0 when not declared
       procedure :: index_of => group_index_of
+      !> declare the next variable (in the order of the namelist statement)
+      procedure :: add => group_add
    end type group_t
 
    !> The effective value of one variable after a read.
@@ -146,6 +148,38 @@ contains
       if (present(max_count)) v%max_count = max_count
       if (present(required)) v%required = required
    end function variable
+
+   !> A group with no variables yet (`add` declares them; an array constructor of variables
+   !> would leak their strings in gfortran 12).
+   function new_group(name, help) result(group)
+      character(len=*), intent(in) :: name  !! the group name, lower case
+      character(len=*), intent(in) :: help  !! what the group describes (templates)
+      type(group_t) :: group
+      group%name = name
+      group%help = help
+      allocate (group%variables(0))
+   end function new_group
+
+   !> Declare the next variable of the group (`variable` gives the meaning of the arguments).
+   subroutine group_add(self, name, kind, default, help, example, max_count, required)
+      class(group_t), intent(inout) :: self     !! the group
+      character(len=*), intent(in) :: name     !! the name, lower case
+      integer, intent(in) :: kind              !! var_* constant
+      character(len=*), intent(in) :: default  !! the default as written in a scene, or ""
+      character(len=*), intent(in) :: help     !! one line for templates
+      character(len=*), intent(in), optional :: example  !! a value for templates when there is no default
+      integer, intent(in), optional :: max_count  !! var_real_list: the most values (default 64)
+      logical, intent(in), optional :: required   !! the scene must give it (default .false.)
+      type(variable_t), allocatable :: grown(:)
+      integer :: k, n
+      n = size(self%variables)
+      allocate (grown(n + 1))
+      do k = 1, n
+         grown(k) = self%variables(k)
+      end do
+      grown(n + 1) = variable(name, kind, default, help, example, max_count, required)
+      call move_alloc(grown, self%variables)
+   end subroutine group_add
 
    !> What a variable holds, for messages ("a real number", "a list of at most 64 real numbers").
    pure function kind_text(v) result(text)

@@ -11,7 +11,7 @@ module hillstab_batch_group_chart
    use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t
    use hillstab_batch_scene_file, only: scene_file_t
-   use hillstab_batch_declaration, only: group_t, group_values_t, group_reader_t, variable, var_real, var_integer, &
+   use hillstab_batch_declaration, only: new_group, group_t, group_values_t, group_reader_t, variable, var_real, var_integer, &
       begin_group, next_item, end_group
    use hillstab_batch_scene_checks, only: check_range, check_alpha_domain
    implicit none
@@ -33,13 +33,13 @@ contains
    !> The declaration of `&chart`, with the chart task's defaults (the paper's Fig. 3 window).
    function chart_group() result(group)
       type(group_t) :: group
-      group = group_t("chart", "n values from min to max inclusive (n = 1: min only)", [ &
-         variable("alpha_min", var_real, "0.0", "first alpha = a pi^2/rho (elastic: 0 <= alpha < pi^2)"), &
-         variable("alpha_max", var_real, "9.8", "last alpha, >= alpha_min"), &
-         variable("n_alpha", var_integer, "200", "number of alpha values, >= 1"), &
-         variable("beta_min", var_real, "-2.0", "first beta = g pi^2/(rho omega^2)"), &
-         variable("beta_max", var_real, "12.0", "last beta, >= beta_min"), &
-         variable("n_beta", var_integer, "200", "number of beta values, >= 1")])
+      group = new_group("chart", "n values from min to max inclusive (n = 1: min only)")
+      call group%add("alpha_min", var_real, "0.0", "first alpha = a pi^2/rho (elastic: 0 <= alpha < pi^2)")
+      call group%add("alpha_max", var_real, "9.8", "last alpha, >= alpha_min")
+      call group%add("n_alpha", var_integer, "200", "number of alpha values, >= 1")
+      call group%add("beta_min", var_real, "-2.0", "first beta = g pi^2/(rho omega^2)")
+      call group%add("beta_max", var_real, "12.0", "last beta, >= beta_min")
+      call group%add("n_beta", var_integer, "200", "number of beta values, >= 1")
    end function chart_group
 
    !> Read and check `&chart` (the declaration `group` carries the task's defaults).

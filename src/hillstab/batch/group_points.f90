@@ -13,7 +13,7 @@ module hillstab_batch_group_points
       halting_off, halting_restore
    use hillstab_ffi_libc, only: is_directory
    use hillstab_batch_scene_file, only: scene_file_t, fail, shortened, max_line_length
-   use hillstab_batch_declaration, only: group_t, group_values_t, group_reader_t, variable, var_path, &
+   use hillstab_batch_declaration, only: new_group, group_t, group_values_t, group_reader_t, variable, var_path, &
       begin_group, next_item, end_group
    use hillstab_batch_scene_checks, only: check_alpha_domain, max_magnitude, max_points
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -26,9 +26,10 @@ contains
    !> The declaration of `&points`.
    function points_group() result(group)
       type(group_t) :: group
-      group = group_t("points", "the points of a file", [ &
-         variable("file", var_path, "", "required: one 'alpha beta' pair per line, '#' comments, extra columns "// &
-                  "ignored; relative to the current directory", example="'points.dat'", required=.true.)])
+      group = new_group("points", "the points of a file")
+      call group%add("file", var_path, "", "required: one 'alpha beta' pair per line, '#' comments, extra columns "// &
+         ""// &
+         "ignored; relative to the current directory", example="'points.dat'", required=.true.)
    end function points_group
 
    !> Read `&points` and its file. With `optional`, a file without the group gives no points

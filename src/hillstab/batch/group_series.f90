@@ -12,7 +12,7 @@ module hillstab_batch_group_series
    use hillstab_core_text, only: real_text, integer_text
    use hillstab_hill_models, only: model_is_pendulum, model_name
    use hillstab_batch_scene_file, only: scene_file_t, fail
-   use hillstab_batch_declaration, only: group_t, group_values_t, group_reader_t, variable, var_real, var_integer, &
+   use hillstab_batch_declaration, only: new_group, group_t, group_values_t, group_reader_t, variable, var_real, var_integer, &
       begin_group, next_item, end_group
    use hillstab_batch_scene_checks, only: require_finite, min_pendulum_beta
    implicit none
@@ -41,17 +41,17 @@ contains
    !> The declaration of `&series` (defaults: the paper's Fig. 4 (a)).
    function series_group() result(group)
       type(group_t) :: group
-      group = group_t("series", "the nonlinear pendulum and its start (eq. (38))", [ &
-         variable("alpha", var_real, "1.48", "alpha = a pi^2/rho, 0 <= alpha < pi^2"), &
-         variable("beta", var_real, "2.47", "beta = g pi^2/(rho omega^2), 0 < beta < pi^2 (physical domain)"), &
-         variable("phi0", var_real, "0.017", "initial angle from the downward vertical, rad (0: pure bounce)"), &
-         variable("periods", var_integer, "50", "radial periods T = 2 pi/omega to simulate, >= 1"), &
-         variable("samples_per_period", var_integer, "100", &
-                  "output rows per radial period, >= 1; periods*samples_per_period + 1 <= 1e8"), &
-         variable("r0", var_real, "0.1", "natural length of the spring, m; > 0"), &
-         variable("g", var_real, "9.81", "gravity, m/s^2; > 0"), &
-         variable("vx0", var_real, "0.0", "initial horizontal velocity, m/s"), &
-         variable("vz0", var_real, "0.0", "initial downward velocity, m/s")])
+      group = new_group("series", "the nonlinear pendulum and its start (eq. (38))")
+      call group%add("alpha", var_real, "1.48", "alpha = a pi^2/rho, 0 <= alpha < pi^2")
+      call group%add("beta", var_real, "2.47", "beta = g pi^2/(rho omega^2), 0 < beta < pi^2 (physical domain)")
+      call group%add("phi0", var_real, "0.017", "initial angle from the downward vertical, rad (0: pure bounce)")
+      call group%add("periods", var_integer, "50", "radial periods T = 2 pi/omega to simulate, >= 1")
+      call group%add("samples_per_period", var_integer, "100", "output rows per radial period, >= 1; "// &
+         "periods*samples_per_period + 1 <= 1e8")
+      call group%add("r0", var_real, "0.1", "natural length of the spring, m; > 0")
+      call group%add("g", var_real, "9.81", "gravity, m/s^2; > 0")
+      call group%add("vx0", var_real, "0.0", "initial horizontal velocity, m/s")
+      call group%add("vz0", var_real, "0.0", "initial downward velocity, m/s")
    end function series_group
 
    !> Read and check `&series`. The pendulum is the elastic one given in dimensionless

@@ -23,7 +23,7 @@ module hillstab_batch_scene_read
    use hillstab_batch_scene, only: scene_t, task_t
    use hillstab_batch_scene_file, only: scene_file_t, open_scene_file, close_scene_file, group_present, group_sets, &
       fail, read_len
-   use hillstab_batch_declaration, only: group_t, group_values_t, group_reader_t, variable, var_real, var_integer, &
+   use hillstab_batch_declaration, only: new_group, group_t, group_values_t, group_reader_t, variable, var_real, var_integer, &
       var_logical, var_name, var_path, var_words, var_real_list, begin_group, next_item, end_group, list_value
    use hillstab_batch_scene_checks, only: require_finite, require_positive_count, max_segments, min_tolerance, &
       max_epsilon
@@ -66,38 +66,45 @@ contains
    !> The declaration of `&scene`.
    function scene_group() result(group)
       type(group_t) :: group
-      group = group_t("scene", "what to compute and how", [ &
-         variable("task", var_name, "'chart'", task_names_text(" | ")), &
-         variable("model", var_name, "'"//model_name(1)//"'", model_choices()), &
-         variable("method", var_name, "'"//method_name(0)//"'", method_choices()), &
-         variable("n_segments", var_integer, "2", "method segments (and Qseg of task coefficient): pieces per "// &
-                  "period, at least 1"), &
-         variable("sampling", var_name, "'endpoint'", "segments: endpoint (eq. (28)) | midpoint | average (exact "// &
-                  "mean of Q per piece)"), &
-         variable("tolerance", var_real, "1.0e-10", "exact methods: target error on S, scaled by max(1, |S|); > 0"), &
-         variable("epsilon", var_real, "0.0", "damping eps = kappa pi/omega of eqs. (46)-(47); >= 0"), &
-         variable("output", var_path, "", "prefix: files are <output>_<task>.dat, relative to the current "// &
-                  "directory; default: the scene file's name without directory and extension", example="'run1'"), &
-         variable("columns", var_words, "''", "chart, points: columns to write, e.g. 'alpha beta stable mu'; '' = "// &
-                  "all (see the # columns: line)"), &
-         variable("format", var_name, "'text'", "chart, points: text | binary (float64 records after the # header, "// &
-                  "<output>_<task>.bin; the header gives the gnuplot and numpy commands)"), &
-         variable("names_line", var_logical, ".false.", "text: .true. adds an uncommented line of column names "// &
-                  "after the # header, for gnuplot using 'alpha':'mu'")])
+      group = new_group("scene", "what to compute and how")
+      call group%add("task", var_name, "'chart'", task_names_text(" | "))
+      call group%add("model", var_name, "'"//model_name(1)//"'", model_choices())
+      call group%add("method", var_name, "'"//method_name(0)//"'", method_choices())
+      call group%add("n_segments", var_integer, "2", "method segments (and Qseg of task coefficient): pieces per "// &
+         ""// &
+         "period, at least 1")
+      call group%add("sampling", var_name, "'endpoint'", "segments: endpoint (eq. (28)) | midpoint | average (exact "// &
+         ""// &
+         "mean of Q per piece)")
+      call group%add("tolerance", var_real, "1.0e-10", "exact methods: target error on S, scaled by max(1, |S|); > "// &
+         ""// &
+         "0")
+      call group%add("epsilon", var_real, "0.0", "damping eps = kappa pi/omega of eqs. (46)-(47); >= 0")
+      call group%add("output", var_path, "", "prefix: files are <output>_<task>.dat, relative to the current "// &
+         "directory; default: the scene file's name without directory and extension", example="'run1'")
+      call group%add("columns", var_words, "''", "chart, points: columns to write, e.g. 'alpha beta stable mu'; '' "// &
+         ""// &
+         "= all (see the # columns: line)")
+      call group%add("format", var_name, "'text'", "chart, points: text | binary (float64 records after the # "// &
+         "header, <output>_<task>.bin; the header gives the gnuplot and numpy commands)")
+      call group%add("names_line", var_logical, ".false.", "text: .true. adds an uncommented line of column names "// &
+         ""// &
+         "after the # header, for gnuplot using 'alpha':'mu'")
    end function scene_group
 
    !> The declaration of `&physical` (omega and r0 have no default: omega is required, r0
    !> goes with a).
    function physical_group() result(group)
       type(group_t) :: group
-      group = group_t("physical", "the pendulum in SI units, instead of the dimensionless values", [ &
-         variable("omega", var_real, "", "required: radial angular frequency sqrt(k/m), rad/s; > 0", example="10.0", &
-                  required=.true.), &
-         variable("g", var_real, "9.80665", "gravity, m/s^2; >= 0"), &
-         variable("kappa", var_real, "0.0", "damping rate of eqs. (40)-(42), 1/s: gives epsilon = kappa pi/omega"), &
-         variable("r0", var_real, "", "natural length of the spring, m; > 0 (with a)", example="0.3"), &
-         variable("a", var_real_list, "", "bounce amplitudes, m, up to 64; 0 <= a < rho = r0 + g/omega^2", &
-                  example="0.05, 0.1, 0.2", max_count=64)])
+      group = new_group("physical", "the pendulum in SI units, instead of the dimensionless values")
+      call group%add("omega", var_real, "", "required: radial angular frequency sqrt(k/m), rad/s; > 0", &
+         example="10.0", required=.true.)
+      call group%add("g", var_real, "9.80665", "gravity, m/s^2; >= 0")
+      call group%add("kappa", var_real, "0.0", "damping rate of eqs. (40)-(42), 1/s: gives epsilon = kappa "// &
+         "pi/omega")
+      call group%add("r0", var_real, "", "natural length of the spring, m; > 0 (with a)", example="0.3")
+      call group%add("a", var_real_list, "", "bounce amplitudes, m, up to 64; 0 <= a < rho = r0 + g/omega^2", &
+         example="0.05, 0.1, 0.2", max_count=64)
    end function physical_group
 
    !> `&scene`: task, model, method and its settings, damping, output prefix, columns, format.

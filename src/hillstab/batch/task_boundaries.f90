@@ -75,7 +75,8 @@ contains
    function boundaries_declarations(self) result(groups)
       class(boundaries_task_t), intent(in) :: self  !! the task
       type(group_t), allocatable :: groups(:)
-      groups = [chart_group()]
+      allocate (groups(1))
+      groups(1) = chart_group()
    end function boundaries_declarations
 
    !> A boundaries task before its scene is read.

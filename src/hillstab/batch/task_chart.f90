@@ -63,7 +63,8 @@ contains
    function chart_declarations(self) result(groups)
       class(chart_task_t), intent(in) :: self  !! the task
       type(group_t), allocatable :: groups(:)
-      groups = [chart_group()]
+      allocate (groups(1))
+      groups(1) = chart_group()
    end function chart_declarations
 
    !> The variables that set the size of the file.

@@ -8,7 +8,7 @@ module hillstab_batch_task_coefficient
    use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, segment_coefficients, hill_period, sampling_name
    use hillstab_batch_scene, only: scene_t, task_t, open_scene_output, physical_points
    use hillstab_batch_scene_file, only: scene_file_t, fail
-   use hillstab_batch_declaration, only: group_t, group_reader_t, variable, var_real, var_integer, var_real_list, &
+   use hillstab_batch_declaration, only: new_group, group_t, group_reader_t, variable, var_real, var_integer, var_real_list, &
       begin_group, next_item, end_group, list_value
    use hillstab_batch_scene_checks, only: require_finite, require_bounded, check_range, check_alpha_domain
    use hillstab_batch_group_chart, only: grid_value
@@ -44,7 +44,8 @@ contains
    function coefficient_declarations(self) result(groups)
       class(coefficient_task_t), intent(in) :: self  !! the task
       type(group_t), allocatable :: groups(:)
-      groups = [coefficient_group()]
+      allocate (groups(1))
+      groups(1) = coefficient_group()
    end function coefficient_declarations
 
    !> The variables that set the size of the file.
@@ -65,13 +66,13 @@ contains
    !> The declaration of `&coefficient` (defaults: the paper's Fig. 2).
    function coefficient_group() result(group)
       type(group_t) :: group
-      group = group_t("coefficient", "Q(tau) at one beta for a list of alpha", [ &
-         variable("alphas", var_real_list, "4.0, 6.0, 7.5, 8.0, 9.0, 9.7", "one curve per alpha, up to "// &
-                  integer_text(max_alphas)//" values", max_count=max_alphas), &
-         variable("beta", var_real, "6.0", "beta of every curve"), &
-         variable("n_tau", var_integer, "801", "number of tau values, >= 1"), &
-         variable("tau_min", var_real, "0.0", "first tau"), &
-         variable("tau_max", var_real, "2.0", "last tau (one period is 2)")])
+      group = new_group("coefficient", "Q(tau) at one beta for a list of alpha")
+      call group%add("alphas", var_real_list, "4.0, 6.0, 7.5, 8.0, 9.0, 9.7", "one curve per alpha, up to "// &
+         ""// integer_text(max_alphas)//" values", max_count=max_alphas)
+      call group%add("beta", var_real, "6.0", "beta of every curve")
+      call group%add("n_tau", var_integer, "801", "number of tau values, >= 1")
+      call group%add("tau_min", var_real, "0.0", "first tau")
+      call group%add("tau_max", var_real, "2.0", "last tau (one period is 2)")
    end function coefficient_group
 
    !> `&coefficient`; with `&physical a` the group is optional and gives only τ.
@@ -158,14 +159,21 @@ contains
       class(coefficient_task_t), intent(in) :: self
       type(scene_t), intent(in) :: scene
       type(column_t), allocatable :: table(:)
+      character(len=:), allocatable :: a
       integer :: k
       allocate (table(1 + 2*size(self%alphas)))
       table(1) = column_t("tau", "", "dimensionless time, pi tau = omega t (one period is 2)", style_fortran_e17)
+      ! component by component: a structure constructor given computed strings leaks them (gfortran 12)
       do k = 1, size(self%alphas)
-         table(2*k) = column_t("Q("//real_text(self%alphas(k))//")", "", "Q at alpha = "//real_text(self%alphas(k)), &
-                               style_fortran_e17)
-         table(2*k + 1) = column_t("Qseg("//real_text(self%alphas(k))//")", "", "the segmented Q at alpha = "// &
-                                   real_text(self%alphas(k)), style_fortran_e17)
+         a = real_text(self%alphas(k))
+         table(2*k)%name = "Q("//a//")"
+         table(2*k)%unit = ""
+         table(2*k)%meaning = "Q at alpha = "//a
+         table(2*k)%style = style_fortran_e17
+         table(2*k + 1)%name = "Qseg("//a//")"
+         table(2*k + 1)%unit = ""
+         table(2*k + 1)%meaning = "the segmented Q at alpha = "//a
+         table(2*k + 1)%style = style_fortran_e17
       end do
    end function coefficient_columns
 

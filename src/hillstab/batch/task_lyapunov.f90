@@ -25,7 +25,7 @@ module hillstab_batch_task_lyapunov
    use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, open_scene_output
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_checks, only: min_pendulum_beta
-   use hillstab_batch_declaration, only: group_t, group_reader_t, variable, var_name, begin_group, next_item, end_group
+   use hillstab_batch_declaration, only: new_group, group_t, group_reader_t, variable, var_name, begin_group, next_item, end_group
    use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_point
    use hillstab_batch_group_points, only: points_group, read_points_group
    use hillstab_batch_group_series, only: series_plan_t, series_group, read_series_group
@@ -76,7 +76,10 @@ contains
    function lyapunov_declarations(self) result(groups)
       class(lyapunov_task_t), intent(in) :: self  !! the task
       type(group_t), allocatable :: groups(:)
-      groups = [series_group(), lyapunov_group(), lyapunov_chart_group()]
+      allocate (groups(3))
+      groups(1) = series_group()
+      groups(2) = lyapunov_group()
+      groups(3) = lyapunov_chart_group()
    end function lyapunov_declarations
 
    !> `&points`, the alternative to `&chart` with over = 'points'.
@@ -108,9 +111,10 @@ contains
    !> The declaration of `&lyapunov`.
    function lyapunov_group() result(group)
       type(group_t) :: group
-      group = group_t("lyapunov", "what the map runs over", [ &
-         variable("over", var_name, "'chart'", "chart: the grid of &chart (0 < beta < pi^2) | points: the points of "// &
-                  "&points")])
+      group = new_group("lyapunov", "what the map runs over")
+      call group%add("over", var_name, "'chart'", "chart: the grid of &chart (0 < beta < pi^2) | points: the points "// &
+         ""// &
+         "of &points")
    end function lyapunov_group
 
    !> The default grid of the task: the physical domain 0 <= alpha < pi^2, 0 < beta < pi^2

@@ -16,7 +16,7 @@ module hillstab_batch_task_poincare
    use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, open_scene_output
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_checks, only: require_finite
-   use hillstab_batch_declaration, only: group_t, group_reader_t, variable, var_real_list, var_logical, &
+   use hillstab_batch_declaration, only: new_group, group_t, group_reader_t, variable, var_real_list, var_logical, &
       begin_group, next_item, end_group, list_value
    use hillstab_batch_group_series, only: series_plan_t, series_group, read_series_group
    use hillstab_batch_columns, only: column_t, style_e17, style_integer, columns_text, put_row, all_columns
@@ -49,7 +49,9 @@ contains
    function poincare_declarations(self) result(groups)
       class(poincare_task_t), intent(in) :: self  !! the task
       type(group_t), allocatable :: groups(:)
-      groups = [series_group(), poincare_group()]
+      allocate (groups(2))
+      groups(1) = series_group()
+      groups(2) = poincare_group()
    end function poincare_declarations
 
    !> A poincare task before its scene is read.
@@ -63,11 +65,12 @@ contains
    !> at the default `&series` energy exist there).
    function poincare_group() result(group)
       type(group_t) :: group
-      group = group_t("poincare", "the orbits of the section", [ &
-         variable("phi0s", var_real_list, "0.05, 0.1, 0.15, 0.2, 0.3", "initial angles of the orbits, rad, |phi0| < "// &
-                  "pi, up to "//integer_text(max_orbits)//" (one block each)", max_count=max_orbits), &
-         variable("same_energy", var_logical, ".true.", ".true.: every orbit starts at rest with the energy of the "// &
-                  "&series start (one section plane) | .false.: each at r = rho - a, eq. (38)")])
+      group = new_group("poincare", "the orbits of the section")
+      call group%add("phi0s", var_real_list, "0.05, 0.1, 0.15, 0.2, 0.3", "initial angles of the orbits, rad, "// &
+         "|phi0| < pi, up to "//integer_text(max_orbits)//" (one block each)", max_count=max_orbits)
+      call group%add("same_energy", var_logical, ".true.", ".true.: every orbit starts at rest with the energy of "// &
+         ""// &
+         "the &series start (one section plane) | .false.: each at r = rho - a, eq. (38)")
    end function poincare_group
 
    !> `&series`, then `&poincare` (optional).
@@ -115,12 +118,13 @@ contains
    !> The columns of `<output>_poincare.dat`.
    function poincare_columns() result(table)
       type(column_t), allocatable :: table(:)
-      table = [column_t("orbit", "", "1, 2, ... in the order of phi0s (gnuplot index orbit-1)", style_integer), &
-               column_t("phi0", "rad", "the orbit's initial angle", style_e17), &
-               column_t("t", "s", "time of the crossing", style_e17), &
-               column_t("r", "m", "r = z at the crossing", style_e17), &
-               column_t("r_dot", "m/s", "r' = z' at the crossing", style_e17), &
-               column_t("status", "", "0 ok; 2 the integration failed after the crossings written", style_integer)]
+      allocate (table(6))
+      table(1) = column_t("orbit", "", "1, 2, ... in the order of phi0s (gnuplot index orbit-1)", style_integer)
+      table(2) = column_t("phi0", "rad", "the orbit's initial angle", style_e17)
+      table(3) = column_t("t", "s", "time of the crossing", style_e17)
+      table(4) = column_t("r", "m", "r = z at the crossing", style_e17)
+      table(5) = column_t("r_dot", "m/s", "r' = z' at the crossing", style_e17)
+      table(6) = column_t("status", "", "0 ok; 2 the integration failed after the crossings written", style_integer)
    end function poincare_columns
 
    !> The poincare task. An angle at which no state at rest has the common energy is bad

@@ -49,7 +49,8 @@ contains
    function points_declarations(self) result(groups)
       class(points_task_t), intent(in) :: self  !! the task
       type(group_t), allocatable :: groups(:)
-      groups = [points_group()]
+      allocate (groups(1))
+      groups(1) = points_group()
    end function points_declarations
 
    !> The variables that set the size of the file.

@@ -34,21 +34,26 @@ contains
    !> Every registered task, in the order the help and the templates list them.
    function task_entries() result(entries)
       type(task_entry_t), allocatable :: entries(:)
-      entries = [ &
-         task_entry_t("chart", "a stability chart over an (alpha, beta) grid: S, stability, multipliers, exponent"), &
-         task_entry_t("points", "the chart's columns at (alpha, beta) points listed in a file"), &
-         task_entry_t("coefficient", "Q(tau) and its segmented version, one pair of columns per alpha "// &
-                      "(the paper's Fig. 2)"), &
-         task_entry_t("boundaries", "transition curves S = +-2 over the alpha grid of &chart, within its beta "// &
-                      "window (exact methods: Hill's method; formula, segments: roots by Brent from n_beta samples)"), &
-         task_entry_t("series", "the nonlinear elastic pendulum from eq. (38), sampled from the dense output at "// &
-                      "t = j T/samples_per_period (tolerance: the integrator's relative tolerance; method: the core "// &
-                      "computing lambda_max)"), &
-         task_entry_t("lyapunov", "the largest Lyapunov exponent of the nonlinear pendulum (per radial period) over "// &
-                      "the grid of &chart or the points of &points, beside the chart's linear verdict (tolerance: the "// &
-                      "integrator's relative tolerance; method: the core computing lambda_max)"), &
-         task_entry_t("poincare", "Poincare sections (phi = 0, phi' > 0: r, r') of orbits started at rest at each "// &
-                      "angle of &poincare phi0s, at the (alpha, beta, r0, g) of &series, over &series periods")]
+      ! one entry at a time: an array constructor of them would leak their strings (gfortran 12)
+      allocate (entries(7))
+      entries(1) = task_entry_t("chart", "a stability chart over an (alpha, beta) grid: S, stability, multipliers, "// &
+                                "exponent")
+      entries(2) = task_entry_t("points", "the chart's columns at (alpha, beta) points listed in a file")
+      entries(3) = task_entry_t("coefficient", "Q(tau) and its segmented version, one pair of columns per alpha "// &
+                                "(the paper's Fig. 2)")
+      entries(4) = task_entry_t("boundaries", "transition curves S = +-2 over the alpha grid of &chart, within its "// &
+                                "beta window (exact methods: Hill's method; formula, segments: roots by Brent from "// &
+                                "n_beta samples)")
+      entries(5) = task_entry_t("series", "the nonlinear elastic pendulum from eq. (38), sampled from the dense "// &
+                                "output at t = j T/samples_per_period (tolerance: the integrator's relative "// &
+                                "tolerance; method: the core computing lambda_max)")
+      entries(6) = task_entry_t("lyapunov", "the largest Lyapunov exponent of the nonlinear pendulum (per radial "// &
+                                "period) over the grid of &chart or the points of &points, beside the chart's linear "// &
+                                "verdict (tolerance: the integrator's relative tolerance; method: the core computing "// &
+                                "lambda_max)")
+      entries(7) = task_entry_t("poincare", "Poincare sections (phi = 0, phi' > 0: r, r') of orbits started at rest "// &
+                                "at each angle of &poincare phi0s, at the (alpha, beta, r0, g) of &series, over "// &
+                                "&series periods")
    end function task_entries
 
    !> The task names, blank-padded to a common length.

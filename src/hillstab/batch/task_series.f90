@@ -86,7 +86,8 @@ contains
    function series_declarations(self) result(groups)
       class(series_task_t), intent(in) :: self  !! the task
       type(group_t), allocatable :: groups(:)
-      groups = [series_group()]
+      allocate (groups(1))
+      groups(1) = series_group()
    end function series_declarations
 
    !> A series task before its scene is read.
@@ -109,12 +110,15 @@ contains
    !> The columns of a series file.
    function series_columns() result(table)
       type(column_t), allocatable :: table(:)
-      table = [column_t("t", "s", "time", style_e17), column_t("r", "m", "length of the spring", style_e17), &
-               column_t("phi", "rad", "angle from the downward vertical", style_e17), &
-               column_t("x", "m", "horizontal position", style_e17), column_t("z", "m", "downward position", style_e17), &
-               column_t("E", "J/kg", "energy per unit mass, eq. (3)", style_e17), &
-               column_t("vx", "m/s", "horizontal velocity", style_e17), column_t("vz", "m/s", "downward velocity", &
-               style_e17)]
+      allocate (table(8))
+      table(1) = column_t("t", "s", "time", style_e17)
+      table(2) = column_t("r", "m", "length of the spring", style_e17)
+      table(3) = column_t("phi", "rad", "angle from the downward vertical", style_e17)
+      table(4) = column_t("x", "m", "horizontal position", style_e17)
+      table(5) = column_t("z", "m", "downward position", style_e17)
+      table(6) = column_t("E", "J/kg", "energy per unit mass, eq. (3)", style_e17)
+      table(7) = column_t("vx", "m/s", "horizontal velocity", style_e17)
+      table(8) = column_t("vz", "m/s", "downward velocity", style_e17)
    end function series_columns
 
    !> Run the series task of a validated scene: `<output>_series.dat`, or an error and no file.
