@@ -31,6 +31,8 @@ module hillstab
    use hillstab_pendulum_lyapunov
    use hillstab_pendulum_gsl_lyapunov
    use hillstab_pendulum_poincare
+   use hillstab_pendulum_symplectic
+   use hillstab_pendulum_chaos
    use hillstab_batch_scene
    use hillstab_batch_output
    use hillstab_batch_tasks
