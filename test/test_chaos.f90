@@ -8,7 +8,7 @@
 !> the batch gives each orbit its own result; an orbit whose energy error the fixed step
 !> cannot hold falls back to DOP853; bad arguments are refused.
 module test_chaos
-   use hillstab_core_kinds, only: wp, pi2
+   use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t, err_invalid_parameter, err_accuracy
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_initial_state
    use hillstab_pendulum_lyapunov, only: lyapunov_t, lyapunov_largest

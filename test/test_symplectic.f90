@@ -5,7 +5,7 @@
 !> MᵀJM = J, the energy error bounded over 10⁴ radial periods, lanes that give each
 !> orbit's own result, and the coefficient tables.
 module test_symplectic
-   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_kinds, only: wp
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_initial_state, pendulum_energy, pendulum_energy_scale
    use hillstab_pendulum_symplectic
    use hillstab_testing

@@ -44,13 +44,13 @@
 !> print *, result%chaotic, result%megno, result%lyapunov, result%periods
 !>```
 module hillstab_pendulum_chaos
-   use hillstab_core_kinds, only: wp, int64, pi
+   use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use hillstab_core_stats, only: work_stats_t, add_work
    use hillstab_integrate_rk, only: rk_step_t, rk_options_t, rk_integrate, rk_dop853, rk_dense_value
    use hillstab_pendulum_lyapunov, only: tangent_norm
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_tangent_t, pendulum_atol, pendulum_energy, &
-      pendulum_energy_scale, pendulum_radius, px, pz
+      pendulum_radius, px, pz
    use hillstab_pendulum_symplectic, only: symplectic_scheme_t, symplectic_scheme, symplectic_scheme_count, &
       tangent_lanes_t, lanes_allocate, lanes_load, lanes_step, lanes_state
    use hillstab_pendulum_chaos_track, only: chaos_options_t, chaos_verdict, chaos_verdict_rule, chaos_auto, &
@@ -256,11 +256,11 @@ contains
    end subroutine check_options
 
    !> The result of lane k (its orbit ended with state y).
-   subroutine track_result(track, k, p, y, y0, periods, options, result)
+   subroutine track_result(track, k, p, y, periods, options, result)
       type(track_t), intent(in) :: track
       integer, intent(in) :: k, periods
       type(pendulum_t), intent(in) :: p
-      real(wp), intent(in) :: y(4), y0(4)
+      real(wp), intent(in) :: y(4)
       type(chaos_options_t), intent(in) :: options
       type(chaos_t), intent(inout) :: result
       real(wp) :: sum_log, running, low, high
@@ -375,7 +375,7 @@ contains
             select case (action)
             case (track_finish)
                call lanes_state(lanes, l, y, d)
-               call track_result(track, l, pendula(k), y, y0(:, k), periods, options, results(k))
+               call track_result(track, l, pendula(k), y, periods, options, results(k))
                results(k)%integrator = chaos_symplectic
                results(k)%scheme = options%scheme
                results(k)%steps_per_period = track%steps(l)
@@ -396,7 +396,7 @@ contains
                   results(k)%stats%n_evaluations = track%evaluations(l)
                   if (options%integrator == chaos_symplectic) then
                      call lanes_state(lanes, l, y, d)
-                     call track_result(track, l, pendula(k), y, y0(:, k), periods, options, results(k))
+                     call track_result(track, l, pendula(k), y, periods, options, results(k))
                      results(k)%integrator = chaos_symplectic
                      results(k)%scheme = options%scheme
                      results(k)%steps_per_period = track%steps(l)
@@ -515,7 +515,7 @@ contains
          call track_period_end(system%track, 1, norm, periods, options, action)
          if (action == track_finish) exit
       end do
-      call track_result(system%track, 1, p, y(1:4), y0, periods, options, result)
+      call track_result(system%track, 1, p, y(1:4), periods, options, result)
       result%integrator = chaos_dop853
       result%scheme = 0
       result%steps_per_period = 0
