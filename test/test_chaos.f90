@@ -391,5 +391,9 @@ contains
       call check(ctx, allocated(results(1)%error), "batch: results of the wrong size")
       call check(ctx, chaos_integrator_name(chaos_auto) == "auto" .and. chaos_integrator_name(chaos_dop853) == &
          "dop853" .and. chaos_integrator_name(chaos_symplectic) == "symplectic", "integrator names")
+      call check(ctx, chaos_integrator_id("symplectic") == chaos_symplectic .and. chaos_integrator_id("auto") == &
+         chaos_auto .and. chaos_integrator_id("rk4") == -1, "integrator ids")
+      call check(ctx, index(chaos_method_text(chaos_options_t(), 1.0e-10_wp), "blanes_moan6") > 0 .and. &
+         index(chaos_method_text(chaos_options_t(), 1.0e-10_wp), "DOP853") > 0, "method text")
    end subroutine bad_arguments
 end module test_chaos

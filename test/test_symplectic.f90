@@ -46,6 +46,10 @@ contains
       end do
       s = symplectic_scheme(symplectic_scheme_count + 1)
       call check(ctx, s%id == 0 .and. s%stages == 0, "unknown id")
+      do id = 1, symplectic_scheme_count
+         call check(ctx, symplectic_scheme_id(symplectic_scheme_name(id)) == id, "id from the name")
+      end do
+      call check(ctx, symplectic_scheme_id("rk4") == 0, "unknown name")
    end subroutine scheme_tables
 
    !> Without gravity the spring pendulum has the circular orbits r = R, angular speed

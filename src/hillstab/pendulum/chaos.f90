@@ -52,7 +52,7 @@ module hillstab_pendulum_chaos
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_tangent_t, pendulum_atol, pendulum_energy, &
       pendulum_radius, px, pz
    use hillstab_pendulum_symplectic, only: symplectic_scheme_t, symplectic_scheme, symplectic_scheme_count, &
-      tangent_lanes_t, lanes_allocate, lanes_load, lanes_step, lanes_state
+      symplectic_scheme_name, tangent_lanes_t, lanes_allocate, lanes_load, lanes_step, lanes_state
    use hillstab_pendulum_chaos_track, only: chaos_options_t, chaos_verdict, chaos_verdict_rule, chaos_auto, &
       chaos_symplectic, chaos_dop853, chaos_transient_allowance, track_t, track_allocate, track_start, &
       track_period_end, track_move, sample_lanes, track_finish, track_refine
@@ -60,7 +60,7 @@ module hillstab_pendulum_chaos
    implicit none
    private
    public :: chaos_options_t, chaos_t, chaos_indicators, chaos_indicators_batch, chaos_verdict, chaos_transient_allowance, &
-      chaos_steps_per_period, chaos_integrator_name, chaos_verdict_rule
+      chaos_steps_per_period, chaos_integrator_name, chaos_integrator_id, chaos_method_text, chaos_verdict_rule
    public :: chaos_auto, chaos_symplectic, chaos_dop853
 
 
@@ -111,6 +111,47 @@ contains
       case default; name = ""
       end select
    end function chaos_integrator_name
+
+   !> The integrator choice named `name` ("auto", "symplectic", "dop853"; −1 when unknown),
+   !> for readers of scene variables.
+   pure integer function chaos_integrator_id(name) result(id)
+      character(len=*), intent(in) :: name  !! an integrator's name
+      do id = chaos_auto, chaos_dop853
+         if (chaos_integrator_name(id) == trim(name)) return
+      end do
+      id = -1
+   end function chaos_integrator_id
+
+   !> What `options` integrate with, in words (for file headers; under 240 characters):
+   !> the integrator, the symplectic scheme and its step rule, the energy check and the
+   !> fallback.
+   function chaos_method_text(options, tolerance) result(text)
+      type(chaos_options_t), intent(in) :: options  !! the options
+      real(wp), intent(in) :: tolerance             !! the tolerance given to DOP853
+      character(len=:), allocatable :: text         !! one line
+      character(len=400) :: buffer
+      character(len=80) :: steps
+      if (options%steps_per_period > 0) then
+         write (steps, '(i0,a)') options%steps_per_period, " steps per period"
+      else
+         write (steps, '(f0.1,a)') options%base_steps, " x max(1, r0/r_lo - 1)^(3/4) steps per period"
+      end if
+      select case (options%integrator)
+      case (chaos_dop853)
+         write (buffer, '(a,es7.1,a)') "integrator dop853: DOP853 on the orbit and the variational equations at ", &
+            tolerance, ", restarted every radial period"
+      case default
+         write (buffer, '(a,a,a,a,a,es7.1,a,i0,a)') "integrator ", chaos_integrator_name(options%integrator), &
+            ": symplectic "//symplectic_scheme_name(options%scheme)//" + tangent map, ", trim(steps), &
+            ", energy error < ", options%energy_tolerance, " (else doubled steps, up to ", &
+            options%max_steps_per_period, ")"
+         if (options%integrator == chaos_auto) then
+            write (buffer, '(a,es7.1,a)') trim(buffer)//"; else DOP853 at ", tolerance, " (and near the pivot, "// &
+               "with damping)"
+         end if
+      end select
+      text = trim(buffer)
+   end function chaos_method_text
 
    !> Steps per radial period of the symplectic scheme for the orbit from y0: what the
    !> fastest motion it can reach needs. Energy bounds the orbit to r ≥ r_lo, the smaller

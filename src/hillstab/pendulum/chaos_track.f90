@@ -103,15 +103,16 @@ module hillstab_pendulum_chaos_track
 
 contains
 
-   !> The verdict rule in words, with the thresholds of `options` (for file headers).
+   !> The verdict rule in words, with the thresholds of `options` (for file headers; under
+   !> 240 characters).
    function chaos_verdict_rule(options) result(text)
       type(chaos_options_t), intent(in) :: options  !! the thresholds
       character(len=:), allocatable :: text  !! one line
       character(len=300) :: buffer
       write (buffer, '(a,f0.2,a,f0.2,a,f0.2,a,i0,a)') "chaotic: 1 if megno > ", options%megno_chaotic, &
-         " at the end, 0 if megno < ", options%megno_regular, ", else 0.5; an orbit stops early as 1 once megno > ", &
-         options%megno_stop, " + ln(rho/s0) (s0 = max(|x0|, |x0'|/omega), the start's swing) and megno >= 1.5 "// &
-         "x its value at half the time, after ", options%min_periods, " periods"
+         " at the end, 0 if < ", options%megno_regular, ", else 0.5; stopped early as 1 once megno > ", &
+         options%megno_stop, " + ln(rho/s0) (s0 = max(|x0|, |x0'|/omega)) and >= 1.5 x megno at half the time, after ", &
+         options%min_periods, " periods"
       text = trim(buffer)
    end function chaos_verdict_rule
 

@@ -53,7 +53,7 @@ module hillstab_pendulum_symplectic
    use hillstab_pendulum_equations, only: pendulum_t
    implicit none
    private
-   public :: symplectic_scheme_t, symplectic_scheme, symplectic_scheme_name, symplectic_max_stages
+   public :: symplectic_scheme_t, symplectic_scheme, symplectic_scheme_name, symplectic_scheme_id, symplectic_max_stages
    public :: symplectic_leapfrog, symplectic_yoshida4, symplectic_yoshida6, symplectic_blanes_moan4, &
       symplectic_blanes_moan6, symplectic_mclachlan8, symplectic_scheme_count
    public :: tangent_lanes_t, lanes_allocate, lanes_load, lanes_step, lanes_energy, lanes_state, symplectic_steps
@@ -211,6 +211,15 @@ contains
       case default; name = ""
       end select
    end function symplectic_scheme_name
+
+   !> The id of the scheme named `name` (0 when unknown), for readers of scene variables.
+   pure integer function symplectic_scheme_id(name) result(id)
+      character(len=*), intent(in) :: name  !! a scheme's name (`symplectic_scheme_name`)
+      do id = 1, symplectic_scheme_count
+         if (symplectic_scheme_name(id) == trim(name)) return
+      end do
+      id = 0
+   end function symplectic_scheme_id
 
    !> Room for `capacity` lanes (none in use).
    pure subroutine lanes_allocate(lanes, capacity)
