@@ -23,7 +23,9 @@
 #                       pkg-config, C and Fortran through CMake find_package
 #   make mpi            build hillstab and hillstab_mpi with CMake (installs Open MPI: scripts/setup_mpi.sh)
 #   make test-mpi       hillstab_mpi against hillstab at np = 1, 2, 3, bad input, failing points
-#   make bench-lyapunov Lyapunov map 100 x 100 x 300 periods, hillstab against GSL rk8pd (~10 CPU minutes)
+#   make bench-lyapunov chaos map 40 x 40 x 300 periods: hillstab against a plain C GSL program and
+#                       lyapunov_largest, interleaved (~2 min; once ~3 min more for the 3000-period
+#                       reference); the 400 x 400 x 1000 map estimated from a sample (out/bench_lyapunov*.dat, .png)
 FPM ?= bash scripts/fpm.sh
 ifeq ($(origin FC),default)
 FC = gfortran
@@ -148,9 +150,23 @@ mpi:
 test-mpi:
 	bash scripts/test_mpi.sh
 
+# the chaos map: hillstab against the plain C GSL program (bench/lyapunov_gsl.c) and against
+# lyapunov_largest, interleaved rounds; the 3000-period reference is computed once (both
+# cores, a few minutes) and kept in out/; then the 400 x 400 x 1000 map estimated from a sample
+BENCH_LYAPUNOV_N ?= 40
+BENCH_LYAPUNOV_PERIODS ?= 300
+BENCH_LYAPUNOV_ROUNDS ?= 3
+BENCH_ESTIMATE_STRIDE ?= 7
 bench-lyapunov: setup
-	mkdir -p out
-	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_lyapunov
+	mkdir -p out build
+	$(CC) -O2 bench/lyapunov_gsl.c -o build/lyapunov_gsl -lgsl -lgslcblas -lm
+	@test -f out/bench_lyapunov_reference.dat || $(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" \
+	   hillstab_chaos_reference -- grid $(BENCH_LYAPUNOV_N) 3000 1e-11 out/bench_lyapunov_reference.dat
+	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_lyapunov -- map \
+	   $(BENCH_LYAPUNOV_N) $(BENCH_LYAPUNOV_PERIODS) $(BENCH_LYAPUNOV_ROUNDS) out/bench_lyapunov_reference.dat build/lyapunov_gsl
+	OMP_NUM_THREADS=2 $(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_lyapunov -- \
+	   estimate 400 1000 $(BENCH_ESTIMATE_STRIDE)
+	gnuplot plots/bench_lyapunov.gp
 
 doc: setup
 	@bash scripts/doc.sh

@@ -51,6 +51,12 @@ module hillstab
       pendulum_integrate
    use hillstab_pendulum_lyapunov, only: lyapunov_t, lyapunov_largest
    use hillstab_pendulum_poincare, only: section_t, poincare_section
+   use hillstab_pendulum_symplectic, only: symplectic_scheme_t, symplectic_scheme, symplectic_scheme_name, &
+      symplectic_scheme_id, symplectic_leapfrog, symplectic_yoshida4, symplectic_yoshida6, symplectic_blanes_moan4, &
+      symplectic_blanes_moan6, symplectic_mclachlan8, symplectic_scheme_count
+   use hillstab_pendulum_chaos, only: chaos_options_t, chaos_t, chaos_indicators, chaos_indicators_batch, &
+      chaos_verdict, chaos_integrator_name, chaos_integrator_id, chaos_method_text, chaos_verdict_rule, chaos_auto, &
+      chaos_symplectic, chaos_dop853
    use hillstab_pendulum_gsl, only: pendulum_gsl
    use hillstab_pendulum_gsl_lyapunov, only: lyapunov_largest_gsl
    implicit none

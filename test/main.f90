@@ -30,6 +30,8 @@ program tester
    use test_task_boundaries, only: collect_task_boundaries
    use test_boundaries, only: collect_boundaries
    use test_templates, only: collect_templates
+   use test_symplectic, only: collect_symplectic
+   use test_chaos, only: collect_chaos
    implicit none
    type(testsuite_t), allocatable :: suites(:)
    integer :: n_failed
@@ -39,7 +41,8 @@ program tester
              collect_units(), collect_pendulum(), collect_hill_method(), collect_templates(), &
              collect_batch(), collect_boundaries(), collect_task_boundaries(), &
              collect_lyapunov(), collect_poincare(), collect_task_lyapunov(), collect_task_poincare(), &
-             collect_pendulum_analysis(), collect_task_series(), collect_output()]
+             collect_pendulum_analysis(), collect_task_series(), collect_output(), collect_symplectic(), &
+             collect_chaos()]
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester
