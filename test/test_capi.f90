@@ -181,7 +181,7 @@ contains
       call check(ctx, mu, 0.0_wp, abs=1.0e-4_wp)
    end subroutine legacy_roundoff_limited
 
-   !> Every invalid argument the README lists gives INFO = 1 and a message naming it.
+   !> Every invalid argument the guide page *Using the library* lists gives INFO = 1 and a message naming it.
    subroutine legacy_invalid_arguments(ctx)
       type(test_context_t), intent(inout) :: ctx
       real(wp) :: s, nan
