@@ -19,7 +19,8 @@
 #                       files and the program (the same files as the CMake install)
 #   make doc            the site with FORD into build/doc: guide pages (docs/guide) and API reference
 #                       (installs FORD through pip if missing), every relative link checked
-#   make doc-check      fail on an undocumented public entity or argument (scripts/doc_check.py)
+#   make doc-check      fail on an undocumented public entity or argument, a README over 300 lines,
+#                       a guide page not listed or not current (scripts/doc_check.py)
 #   make check-install  install into temporary prefixes (make and CMake routes) and build and run
 #                       consumers against each: C, Fortran and fixed-form FORTRAN 77 through
 #                       pkg-config, C and Fortran through CMake find_package
