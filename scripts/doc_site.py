@@ -9,6 +9,7 @@
   offline);
 - removes the MathJax script that FORD loads from its CDN: no page uses TeX (the guide
   writes its equations in plain text);
+- keeps images within the text column (the figures are wider than it);
 - fills the "Contents" column of the umbrella module's page, which FORD leaves at "None"
   (the umbrella defines nothing, it re-exports): the modules its names come from, each
   linked, and the guide page that lists every name.
@@ -49,6 +50,8 @@ def main():
     if local:
         shutil.copy(os.path.join(BOOTSTRAP, "css/bootstrap.min.css"), os.path.join(site, "css"))
         shutil.copy(os.path.join(BOOTSTRAP, "js/bootstrap.bundle.min.js"), os.path.join(site, "js"))
+    with open(os.path.join(site, "css", "local.css"), "a", encoding="utf-8") as f:
+        f.write("\n/* scripts/doc_site.py: figures fit the text column */\n#text img { max-width: 100%; height: auto; }\n")
     pages = 0
     for folder, _, files in os.walk(site):
         for name in files:

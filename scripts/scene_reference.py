@@ -41,7 +41,7 @@ def main():
     parts = [BEGIN, ""]
     for task in tasks:
         text = run(program, "--template", task)
-        parts += [f"### Task `{task}`", "", f"`hillstab --template {task}`:", "", "```", text.rstrip("\n"), "```", ""]
+        parts += [f"### Task `{task}`", "", f"`hillstab --template {task}`:", "", "```text", text.rstrip("\n"), "```", ""]
     parts.append(END)
     with open(PAGE, encoding="utf-8") as f:
         page = f.read()

@@ -56,7 +56,7 @@ contains
             if (text(last:last) /= new_line("a")) exit
             last = last - 1
          end do
-         call check(ctx, index(page, "```"//new_line("a")//text(:last)//new_line("a")//"```") > 0, &
+         call check(ctx, index(page, "```text"//new_line("a")//text(:last)//new_line("a")//"```") > 0, &
             page_path//" shows the current template of task '"//trim(names(k))// &
             "' (run python3 scripts/scene_reference.py)")
       end do
