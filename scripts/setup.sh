@@ -123,8 +123,11 @@ if [ ${#packages[@]} -eq 0 ] && [ $need_fpm = 0 ] && [ $need_ford = 0 ]; then
    if [ $need_bootstrap = 1 ] && [ $can_install = 1 ] && [ $check_only = 0 ]; then
       # optional: the site is still built without it (styled then only with a network)
       echo "setup: installing libjs-bootstrap5 (the site's styles without a network)" >&2
-      DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends libjs-bootstrap5 \
-         >/dev/null 2>&1 || echo "setup: libjs-bootstrap5 not installed; the site loads Bootstrap from its CDN" >&2
+      export DEBIAN_FRONTEND=noninteractive
+      { $sudo_cmd apt-get install -y -qq --no-install-recommends libjs-bootstrap5 >/dev/null 2>&1 \
+         || { $sudo_cmd apt-get update -qq >/dev/null 2>&1 \
+              && $sudo_cmd apt-get install -y -qq --no-install-recommends libjs-bootstrap5 >/dev/null 2>&1; }; } \
+         || echo "setup: libjs-bootstrap5 not installed; the site loads Bootstrap from its CDN" >&2
    fi
    exit 0
 fi
