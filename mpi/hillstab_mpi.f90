@@ -20,6 +20,7 @@ module hillstab_mpi_runner
    use hillstab_batch_units, only: batch_t, batch_result_t, batch_distributable, batch_plan, batch_compute, &
       batch_open, batch_write, batch_commit, batch_discard, scene_fingerprint
    use hillstab_batch_cli, only: scene_runner_t, exit_status
+   use hillstab_batch_limits, only: check_memory_room
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
@@ -92,6 +93,10 @@ contains
          call agree(self, error)
          return
       end if
+      ! buffers that cannot fit are refused before any work, as by hillstab
+      call check_memory_room(scene, error)
+      call agree(self, error)
+      if (allocated(error)) return
       call batch_plan(scene, self%n_ranks, batch)
       if (self%rank == manager) then
          call batch_open(batch, quiet, error)

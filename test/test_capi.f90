@@ -273,6 +273,15 @@ contains
       call check(ctx, status == 0, "C: a huge trace is no error")
       call check(ctx, overflow == 1 .eqv. info_trace == 2, "C overflow flag as HSTRACE")
       call check(ctx, log_abs > 1000.0_c_double .and. log_abs < huge(1.0_c_double), "ln|S| finite and large")
+      ! the bounds of scenes hold for every entry point: 2**30 pieces are refused, not allocated
+      status = hillstab_c_trace(1_c_int, 4.0_c_double, 6.0_c_double, 0.0_c_double, int(method_segments, c_int), &
+         2_c_int**30, 1_c_int, 1.0e-10_c_double, s, log_abs, overflow)
+      call check(ctx, status == err_invalid_parameter, "n_segments = 2**30: invalid parameter")
+      call hstrace(1, 4.0_wp, 6.0_wp, 0.0_wp, method_segments, 2**30, 1, 1.0e-10_wp, sl, info_trace)
+      call check(ctx, info_trace /= 0, "HSTRACE: n_segments = 2**30 refused")
+      status = hillstab_c_trace(1_c_int, 4.0_c_double, 6.0_c_double, 0.0_c_double, int(method_segments, c_int), &
+         100000_c_int, 1_c_int, 1.0e-10_c_double, s, log_abs, overflow)
+      call check(ctx, status == 0, "n_segments = 1e5: computed")
    end subroutine extreme_inputs_status
 
    !> hillstab_trace_paper_checked: the closed form's value with a status, where

@@ -15,10 +15,19 @@ module hillstab_ffi_libc
       c_f_pointer
    implicit none
    private
-   public :: c_mkstemp, c_fdopen, c_fchmod, c_umask, c_close
+   public :: c_mkstemp, c_fdopen, c_fchmod, c_umask, c_close, c_getrlimit, rlimit_t, rlimit_as, c_getpagesize
    public :: c_rename, c_remove, c_unlink, c_getpid, c_fopen, c_fwrite, c_fwrite_raw, c_fflush, c_fclose, c_fileno, &
       c_fsync, c_signal, c_exit_now, c_isatty, c_statvfs, statvfs_t
    public :: errno_text, set_errno, c_string, remove_file, is_directory
+
+   !> RLIMIT_AS (Linux): the largest address space of the process.
+   integer(c_int), parameter :: rlimit_as = 9
+
+   !> struct rlimit on 64-bit Linux (RLIM_INFINITY is all ones: -1 here).
+   type, bind(C) :: rlimit_t
+      integer(c_long) :: cur  !! soft limit
+      integer(c_long) :: max  !! hard limit
+   end type rlimit_t
 
    !> struct statvfs on 64-bit Linux.
    type, bind(C) :: statvfs_t
@@ -64,6 +73,18 @@ module hillstab_ffi_libc
          integer(c_int), value :: mask
          integer(c_int) :: previous
       end function c_umask
+      !> getrlimit(2): 0 on success.
+      function c_getrlimit(resource, limit) bind(C, name="getrlimit") result(status)
+         import :: c_int, rlimit_t
+         integer(c_int), value :: resource
+         type(rlimit_t), intent(out) :: limit
+         integer(c_int) :: status
+      end function c_getrlimit
+      !> getpagesize(2): bytes in a memory page.
+      function c_getpagesize() bind(C, name="getpagesize") result(bytes)
+         import :: c_int
+         integer(c_int) :: bytes
+      end function c_getpagesize
       !> close(2).
       function c_close(fd) bind(C, name="close") result(status)
          import :: c_int
