@@ -21,6 +21,7 @@ module hillstab_mpi_runner
       batch_open, batch_write, batch_commit, batch_discard, scene_fingerprint
    use hillstab_batch_cli, only: scene_runner_t, exit_status
    use hillstab_batch_limits, only: check_memory_room
+   use hillstab_batch_signals, only: watch_temp_file, forget_temp_file
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
@@ -79,6 +80,7 @@ contains
       type(batch_t) :: batch
       real(wp) :: busy(2)
       logical :: written_ok
+      integer :: slot
       self%quiet = quiet
       ! every rank reads the scene (and its points file); the worst outcome wins, so a
       ! file one rank cannot read stops all of them
@@ -102,6 +104,7 @@ contains
          call batch_open(batch, quiet, error)
          call agree(self, error)
          if (allocated(error)) return
+         call share_temporary_name(self, batch%file%temp_path, slot)
          call manage(self, batch, error, busy)
          if (allocated(error)) then
             call batch_discard(batch)
@@ -111,13 +114,33 @@ contains
       else
          call agree(self, error)
          if (allocated(error)) return
+         call share_temporary_name(self, "", slot)
          call work(batch, busy)
+         call forget_temp_file(slot)
       end if
       call agree(self, error)
       written_ok = .true.
       if (allocated(error)) written_ok = error%code == err_points_failed
       call report_balance(self, busy, written_ok)
    end subroutine run_scene_everywhere
+
+   !> Rank 0 sends the name of its temporary output to the other ranks, which watch it as
+   !> their own: when the job is stopped by a signal (to mpirun, or after a rank died),
+   !> whichever rank handles it removes the file, also if rank 0 itself is killed first.
+   subroutine share_temporary_name(self, name, slot)
+      class(mpi_runner_t), intent(in) :: self
+      character(len=*), intent(in) :: name  !! rank 0: the temporary file; elsewhere ignored
+      integer, intent(out) :: slot  !! the watch of the other ranks (0 on rank 0)
+      character(len=:), allocatable :: received
+      integer :: n
+      slot = 0
+      n = len(name)
+      call MPI_Bcast(n, 1, MPI_INTEGER, manager, MPI_COMM_WORLD)
+      allocate (character(len=n) :: received)
+      if (self%rank == manager) received = name
+      call MPI_Bcast(received, n, MPI_CHARACTER, manager, MPI_COMM_WORLD)
+      if (self%rank /= manager) call watch_temp_file(received, slot)
+   end subroutine share_temporary_name
 
    !> Every rank must have read the same scene and points: their fingerprints are compared
    !> (bad input on every rank when they differ; rank 0 says so).

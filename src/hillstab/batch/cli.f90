@@ -218,8 +218,8 @@ contains
    !> U+2028, U+2029 shown as \xNN and \u2028 escapes, so that what a scene file holds
    !> cannot break or forge lines of the program's messages.
    pure function printable(message) result(text)
-      character(len=*), intent(in) :: message
-      character(len=:), allocatable :: text
+      character(len=*), intent(in) :: message  !! the message
+      character(len=:), allocatable :: text  !! the same as plain printable text
       character(len=*), parameter :: hex = "0123456789abcdef"
       integer :: i, c
       text = ""

@@ -60,33 +60,34 @@ module hillstab_ffi_libc
       !> or -1. O_EXCL: nothing placed at the name, a symbolic link included, is opened.
       function c_mkstemp(template) bind(C, name="mkstemp") result(fd)
          import :: c_int, c_char
-         character(kind=c_char), intent(inout) :: template(*)
+         character(kind=c_char), intent(inout) :: template(*)  !! the path, NUL-terminated, ending in XXXXXX
          integer(c_int) :: fd
       end function c_mkstemp
       !> fdopen(3): a stdio stream on an open descriptor (NULL on failure).
       function c_fdopen(fd, mode) bind(C, name="fdopen") result(stream)
          import :: c_int, c_char, c_ptr
-         integer(c_int), value :: fd
-         character(kind=c_char), intent(in) :: mode(*)
+         integer(c_int), value :: fd  !! an open descriptor
+         character(kind=c_char), intent(in) :: mode(*)  !! "w", NUL-terminated
          type(c_ptr) :: stream
       end function c_fdopen
       !> fchmod(2): 0 on success.
       function c_fchmod(fd, mode) bind(C, name="fchmod") result(status)
          import :: c_int
-         integer(c_int), value :: fd, mode
+         integer(c_int), value :: fd    !! an open descriptor
+         integer(c_int), value :: mode  !! permission bits
          integer(c_int) :: status
       end function c_fchmod
       !> umask(2): set the file mode creation mask, return the previous one.
       function c_umask(mask) bind(C, name="umask") result(previous)
          import :: c_int
-         integer(c_int), value :: mask
+         integer(c_int), value :: mask  !! the new mask
          integer(c_int) :: previous
       end function c_umask
       !> getrlimit(2): 0 on success.
       function c_getrlimit(resource, limit) bind(C, name="getrlimit") result(status)
          import :: c_int, rlimit_t
-         integer(c_int), value :: resource
-         type(rlimit_t), intent(out) :: limit
+         integer(c_int), value :: resource  !! RLIMIT_* (rlimit_as)
+         type(rlimit_t), intent(out) :: limit  !! the soft and hard limits
          integer(c_int) :: status
       end function c_getrlimit
       !> getpagesize(2): bytes in a memory page.
@@ -104,7 +105,7 @@ module hillstab_ffi_libc
       !> close(2).
       function c_close(fd) bind(C, name="close") result(status)
          import :: c_int
-         integer(c_int), value :: fd
+         integer(c_int), value :: fd  !! the descriptor
          integer(c_int) :: status
       end function c_close
       !> rename(2): 0 on success.
