@@ -402,6 +402,27 @@ contains
          bad_case_t(s//"/ &chart / &physical omega=3, r0=1, a=0.5 /", "physical", "a"), &
          bad_case_t(s//"/ &chart / &physical omega=-3 /", "physical", "omega"), &
          bad_case_t(s//"/ &chart / &physical omega=3, k=2 /", "physical", "k"), &
+         bad_case_t(sp//"&physical omega=10, k=25, m=0.25, r0=0.3, a=0.1 /", "physical", "k: omega and k are both"), &
+         bad_case_t(sp//"&physical k=0, m=0.25, r0=0.3, a=0.1 /", "physical", "k: the spring constant must be > 0"), &
+         bad_case_t(sp//"&physical k=-25, m=0.25, r0=0.3, a=0.1 /", "physical", "k: the spring constant must be > 0"), &
+         bad_case_t(sp//"&physical k=25, m=0, r0=0.3, a=0.1 /", "physical", "m: the mass must be > 0"), &
+         bad_case_t(sp//"&physical k=25, m=-1, r0=0.3, a=0.1 /", "physical", "m: the mass must be > 0"), &
+         bad_case_t(sp//"&physical k=25, m=nan, r0=0.3, a=0.1 /", "physical", "m: not a finite number"), &
+         bad_case_t(sp//"&physical k=25, r0=0.3, a=0.1 /", "physical", "m: k (spring constant"), &
+         bad_case_t(sp//"&physical m=0.25, r0=0.3, a=0.1 /", "physical", "k: k (spring constant"), &
+         bad_case_t(sp//"&physical k=25, m=0.25, r0=0.3, a=0.3981 /", "physical", "a: the amplitude must satisfy"), &
+         bad_case_t(sp//"&physical k=25, m=0.25, r0=0.3, a_min=0, a_max=0.4, n_a=3 /", "physical", &
+                    "a_max: the amplitude must satisfy"), &
+         bad_case_t(sp//"&physical k=25, m=0.25, r0=0.3, a_min=-0.1, a_max=0.2, n_a=3 /", "physical", &
+                    "a_min: the amplitude must satisfy"), &
+         bad_case_t(sp//"&physical k=25, m=0.25, r0=0.3, a_min=0.2, a_max=0.1, n_a=3 /", "physical", &
+                    "a_max: must be >= a_min"), &
+         bad_case_t(sp//"&physical k=25, m=0.25, r0=0.3, a_min=0, a_max=0.1, n_a=0 /", "physical", "n_a: must be >= 1"), &
+         bad_case_t(sp//"&physical k=25, m=0.25, r0=0.3, a_min=0, a_max=0.1 /", "physical", "n_a: a_min, a_max and n_a"), &
+         bad_case_t(sp//"&physical k=25, m=0.25, r0=0.3, a=0.1, a_max=0.2 /", "physical", "a_max: give the amplitudes"), &
+         bad_case_t(sp//"&physical k=25, m=0.25, a_min=0, a_max=0.1, n_a=3 /", "physical", "r0"), &
+         bad_case_t(s//"task='coefficient' / &physical k=25, m=0.25, r0=0.3, a_min=0, a_max=0.1, n_a=65 /", &
+                    "physical", "n_a: task 'coefficient' draws at most 64"), &
          bad_case_t(s//"task='coefficient' / &coefficient beta=2 / &physical omega=3, r0=1, a=0.5 /", &
                     "coefficient", "beta"), &
          bad_case_t(s//"&chart n_alpha=3 /", "scene", "not closed: no '/' before '&chart'"), &

@@ -26,7 +26,9 @@ module hillstab_batch_scene_read
    use hillstab_batch_declaration, only: new_group, group_t, group_values_t, group_reader_t, variable, var_real, var_integer, &
       var_logical, var_name, var_path, var_words, var_real_list, begin_group, next_item, end_group, list_value
    use hillstab_batch_scene_checks, only: require_finite, require_positive_count, max_segments, min_tolerance, &
-      max_epsilon
+      max_epsilon, max_points
+   use hillstab_batch_group_chart, only: grid_value
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_batch_task_registry, only: new_task, task_names_text
    use hillstab_core_text, only: integer_text, lower_case
    implicit none
@@ -92,19 +94,29 @@ contains
          "after the # header, for gnuplot using 'alpha':'mu'")
    end function scene_group
 
-   !> The declaration of `&physical` (omega and r0 have no default: omega is required, r0
-   !> goes with a).
+   !> The declaration of `&physical` (no defaults for omega, k, m, r0 and the amplitudes:
+   !> omega or k with m is required, r0 goes with the amplitudes, which are the list a or the
+   !> range a_min, a_max, n_a).
    function physical_group() result(group)
       type(group_t) :: group
       group = new_group("physical", "the pendulum in SI units, instead of the dimensionless values")
-      call group%add("omega", var_real, "", "required: radial angular frequency sqrt(k/m), rad/s; > 0", &
-         example="10.0", required=.true.)
+      call group%add("omega", var_real, "", "radial angular frequency sqrt(k/m), rad/s; > 0 (or k and m instead)", &
+         example="10.0")
+      call group%add("k", var_real, "", "spring constant, N/m; > 0 (with m, instead of omega: omega = sqrt(k/m))", &
+         example="25.0")
+      call group%add("m", var_real, "", "mass, kg; > 0 (with k)", example="0.25")
       call group%add("g", var_real, "9.80665", "gravity, m/s^2; >= 0")
       call group%add("kappa", var_real, "0.0", "damping rate of eqs. (40)-(42), 1/s: gives epsilon = kappa "// &
          "pi/omega")
-      call group%add("r0", var_real, "", "natural length of the spring, m; > 0 (with a)", example="0.3")
+      call group%add("r0", var_real, "", "natural length of the spring, m; > 0 (with a or a_min, a_max, n_a)", &
+         example="0.3")
       call group%add("a", var_real_list, "", "bounce amplitudes, m, up to 64; 0 <= a < rho = r0 + g/omega^2", &
          example="0.05, 0.1, 0.2", max_count=64)
+      call group%add("a_min", var_real, "", "first amplitude of a range, m (with a_max, n_a; instead of a)", &
+         example="0.0")
+      call group%add("a_max", var_real, "", "last amplitude of the range, m; < rho", example="0.3")
+      call group%add("n_a", var_integer, "", "amplitudes from a_min to a_max inclusive (1: a_min only)", &
+         example="31")
    end function physical_group
 
    !> `&scene`: task, model, method and its settings, damping, output prefix, columns, format.
@@ -265,22 +277,26 @@ contains
    end function default_output
 
    !> `&physical`: the pendulum in SI units (eqs. (4), (15), (24), (46)). Gives ε (from κ)
-   !> and ω (rates per second); with `a` and `r0`, also the α and β of a points or
-   !> coefficient task. Mixing it with the dimensionless values is an error naming both.
+   !> and ω (given, or √(k/m); rates per second); with amplitudes (the list `a` or the range
+   !> `a_min`, `a_max`, `n_a`) and `r0`, also the α and β of a points or coefficient task.
+   !> Mixing it with the dimensionless values, or two forms of one value, is an error naming
+   !> both.
    subroutine read_physical_group(file, task, scene, error)
       type(scene_file_t), intent(in) :: file
       class(task_t), intent(in) :: task
       type(scene_t), intent(inout) :: scene
       type(error_t), allocatable, intent(out) :: error
       type(group_t) :: group
-      real(wp) :: omega, g, kappa, r0, a(64)
-      namelist /physical/ omega, g, kappa, r0, a
+      real(wp) :: omega, k, m, g, kappa, r0, a(64), a_min, a_max
+      integer :: n_a
+      namelist /physical/ omega, k, m, g, kappa, r0, a, a_min, a_max, n_a
       type(group_reader_t) :: reader
       real(wp), allocatable :: amplitudes(:)
       character(len=:), allocatable :: variable
       type(physical_t) :: p
       type(error_t), allocatable :: cause
-      integer :: k
+      integer :: j, n_range
+      logical :: spring, ranged
       group = physical_group()
       call begin_group(reader, file, group)
       read (reader%defaults, nml=physical, iostat=reader%defaults_status, iomsg=reader%defaults_msg)
@@ -292,28 +308,103 @@ contains
       call end_group(reader, file, group, scene%physical_values, error)
       if (allocated(error)) return
       associate (values => scene%physical_values)
-         if (.not. values%given("omega")) then
-            call fail(error, file%path, group%name, "omega", "the radial angular frequency omega = sqrt(k/m) "// &
-               "(rad/s) is required")
+         spring = values%given("k") .or. values%given("m")
+         if (values%given("omega") .and. spring) then
+            call fail(error, file%path, group%name, merge("k", "m", values%given("k")), "omega and "// &
+               merge("k", "m", values%given("k"))//" are both given: give the radial angular frequency either as "// &
+               "omega or as k and m (omega = sqrt(k/m)), not both")
             return
+         end if
+         if (.not. (values%given("omega") .or. spring)) then
+            call fail(error, file%path, group%name, "omega", "the radial angular frequency is required: omega = "// &
+               "sqrt(k/m) (rad/s), or the spring constant k (N/m) and the mass m (kg)")
+            return
+         end if
+         if (spring) then
+            if (.not. (values%given("k") .and. values%given("m"))) then
+               call fail(error, file%path, group%name, merge("m", "k", values%given("k")), "k (spring constant, "// &
+                  "N/m) and m (mass, kg) go together: omega = sqrt(k/m)")
+               return
+            end if
+            call require_finite(file%path, group%name, "k", k, error)
+            if (.not. allocated(error)) call require_finite(file%path, group%name, "m", m, error)
+            if (allocated(error)) return
+            if (.not. k > 0.0_wp) then
+               call fail(error, file%path, group%name, "k", "the spring constant must be > 0 (N/m), got "// &
+                  real_text(k))
+               return
+            end if
+            if (.not. m > 0.0_wp) then
+               call fail(error, file%path, group%name, "m", "the mass must be > 0 (kg), got "//real_text(m))
+               return
+            end if
+            omega = sqrt(k/m)
+            if (.not. ieee_is_finite(omega) .or. omega <= 0.0_wp) then
+               call fail(error, file%path, group%name, "k", "omega = sqrt(k/m) must be a finite number > 0, got k "// &
+                  "= "//real_text(k)//", m = "//real_text(m))
+               return
+            end if
+            scene%spring_k = k
+            scene%spring_m = m
          end if
          if (group_sets(file%unit, "scene", "epsilon")) then
             call fail(error, file%path, group%name, "kappa", "give the damping either as &scene epsilon "// &
                "(dimensionless) or as &physical kappa (1/s), not both")
             return
          end if
-         amplitudes = list_value(values, "a", a)
-         if (values%given("a") .neqv. values%given("r0")) then
-            call fail(error, file%path, group%name, merge("r0", "a ", values%given("a")), &
-               "a (amplitudes, m) and r0 (natural length, m) go together")
+         ranged = values%given("a_min") .or. values%given("a_max") .or. values%given("n_a")
+         if (ranged .and. values%given("a")) then
+            call fail(error, file%path, group%name, first_given(values, ["a_min", "a_max", "n_a  "]), "give the "// &
+               "amplitudes either as the list a or as the range a_min, a_max, n_a, not both")
+            return
+         end if
+         if (ranged) then
+            do j = 1, 3
+               variable = trim(range_names(j))
+               if (.not. values%given(variable)) then
+                  call fail(error, file%path, group%name, variable, "a_min, a_max and n_a go together (the "// &
+                     "amplitudes from a_min to a_max inclusive)")
+                  return
+               end if
+            end do
+            call require_finite(file%path, group%name, "a_min", a_min, error)
+            if (.not. allocated(error)) call require_finite(file%path, group%name, "a_max", a_max, error)
+            if (allocated(error)) return
+            if (a_max < a_min) then
+               call fail(error, file%path, group%name, "a_max", "must be >= a_min = "//real_text(a_min)// &
+                  ", got "//real_text(a_max))
+               return
+            end if
+            call require_positive_count(file%path, group%name, "n_a", n_a, 1, error)
+            if (allocated(error)) return
+            if (n_a > max_points) then
+               call fail(error, file%path, group%name, "n_a", "must be <= "//integer_text(max_points)// &
+                  " (the most points of task points), got "//integer_text(n_a))
+               return
+            end if
+            allocate (amplitudes(n_a))
+            do j = 1, n_a
+               amplitudes(j) = grid_value(a_min, a_max, n_a, j)
+            end do
+         else
+            amplitudes = list_value(values, "a", a)
+         end if
+         if ((size(amplitudes) > 0) .neqv. values%given("r0")) then
+            call fail(error, file%path, group%name, merge("r0", "a ", size(amplitudes) > 0), &
+               "the amplitudes (a, or a_min, a_max, n_a; m) and r0 (natural length, m) go together")
             return
          end if
          p = physical_t(g=g, omega=omega, a=0.0_wp, kappa=kappa)
          if (values%given("r0")) p%r0 = r0
-         do k = 1, max(size(amplitudes), 1)
-            if (size(amplitudes) > 0) p%a = amplitudes(k)
+         n_range = size(amplitudes)
+         do j = 1, max(n_range, 1)
+            ! a range is checked at its ends (the values between lie between them)
+            if (ranged .and. j > 1 .and. j < n_range) cycle
+            if (n_range > 0) p%a = amplitudes(j)
             call check_physical(p, cause, variable)
             if (allocated(cause)) then
+               if (variable == "a" .and. ranged) variable = merge("a_min", "a_max", j == 1)
+               if (variable == "omega" .and. spring) variable = "k"
                call fail(error, file%path, group%name, variable, cause%message//"; got r0 = "//real_text(p%r0)// &
                   ", g = "//real_text(p%g)//", omega = "//real_text(p%omega)//", a = "//real_text(p%a)// &
                   ", kappa = "//real_text(p%kappa))
@@ -321,13 +412,14 @@ contains
             end if
          end do
          if (size(amplitudes) > 0 .and. .not. task%takes_amplitudes) then
-            call fail(error, file%path, group%name, "a", "task '"//task%name//"' takes no amplitudes "// &
-               "(a chart runs over the grid of &chart, alpha and beta); amplitudes a with r0 make the points of "// &
-               "task 'points' or the curves of task 'coefficient'")
+            call fail(error, file%path, group%name, merge("n_a", "a  ", ranged), "task '"//task%name// &
+               "' takes no amplitudes (a chart runs over the grid of &chart, alpha and beta); amplitudes "// &
+               "with r0 make the points of task 'points' or the curves of task 'coefficient'")
             return
          end if
       end associate
       scene%physical = .true.
+      scene%spring_r0 = scene%physical_values%given("r0")
       scene%pendulum = p
       scene%pendulum%a = 0.0_wp
       scene%amplitudes = amplitudes
@@ -335,4 +427,24 @@ contains
       ! with &physical the damping is kappa; epsilon in &scene would be an error
       call scene%settings%hide("epsilon")
    end subroutine read_physical_group
+
+   !> The first of `names` the group gives.
+   function first_given(values, names) result(name)
+      type(group_values_t), intent(in) :: values
+      character(len=*), intent(in) :: names(:)
+      character(len=:), allocatable :: name
+      integer :: j
+      name = trim(names(1))
+      do j = size(names), 1, -1
+         if (values%given(trim(names(j)))) name = trim(names(j))
+      end do
+   end function first_given
+
+   !> The variables of an amplitude range.
+   pure function range_names(j) result(name)
+      integer, intent(in) :: j
+      character(len=5) :: name
+      character(len=5), parameter :: names(3) = ["a_min", "a_max", "n_a  "]
+      name = names(j)
+   end function range_names
 end module hillstab_batch_scene_read

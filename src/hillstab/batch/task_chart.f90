@@ -24,6 +24,7 @@ module hillstab_batch_task_chart
    use hillstab_batch_scene_checks, only: check_integration_cost
    use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point
    use hillstab_batch_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, chart_header, &
+      point_amplitude, &
       scene_chart_columns, check_method_runs, warn_inaccurate, failed_points_error, chart_line_length, &
       header_bytes, text_row_bytes, binary_row_bytes
    use hillstab_batch_columns, only: columns_text
@@ -263,7 +264,7 @@ contains
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
       type(hill_model_t) :: row
-      real(wp) :: v(n_chart_columns), per_second
+      real(wp) :: v(n_chart_columns), per_second, a
       logical :: failed(size(betas)), inaccurate(size(betas))
       integer :: j
       ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
@@ -276,11 +277,13 @@ contains
       statuses = merge(status_roundoff, status_ok, inaccurate)
       where (failed) statuses = status_failed
       do j = 1, size(betas)
+         a = 0.0_wp
+         if (scene%physical) a = point_amplitude(scene, j, alpha, betas(j))
          if (failed(j)) then
-            v = failed_values(alpha, betas(j), in_physical_domain(alpha, betas(j)))
+            v = failed_values(alpha, betas(j), in_physical_domain(alpha, betas(j)), a)
          else
             f = floquet_from_trace(traces(j), scene%epsilon, scene%method%tolerance)
-            v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second)
+            v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second, a)
          end if
          if (scene%binary) then
             values(:, j) = v(ids)

@@ -90,6 +90,11 @@ contains
       logical :: from_physical
       integer :: k
       from_physical = size(scene%amplitudes) > 0
+      if (size(scene%amplitudes) > max_alphas) then
+         call fail(error, file%path, "physical", "n_a", "task 'coefficient' draws at most "// &
+            integer_text(max_alphas)//" curves, got "//integer_text(size(scene%amplitudes))//" amplitudes")
+         return
+      end if
       group = coefficient_group()
       allocate (self%groups(1))
       call begin_group(reader, file, group, optional=from_physical)

@@ -144,11 +144,13 @@ contains
       text = "! Optional, instead of the dimensionless values: the pendulum in SI units (remove the '!'s"// &
          nl//"! to use it; then no &scene epsilon"
       if (task%takes_amplitudes) then
-         text = text//", and r0 with a replace "//task%amplitudes_replace//")."//nl
-         block = commented_block(physical_group())
+         text = text//", and r0 with a replace "//task%amplitudes_replace//")."//nl// &
+            "! Instead of omega, k and m may give it (omega = sqrt(k/m)); instead of the list a, the range "// &
+            "a_min, a_max, n_a."//nl
+         block = commented_block(physical_group(), [character(len=5) :: "k", "m", "a_min", "a_max", "n_a"])
       else
-         text = text//")."//nl
-         block = commented_block(physical_group(), [character(len=2) :: "r0", "a"])
+         text = text//")."//nl//"! Instead of omega, k and m may give it (omega = sqrt(k/m))."//nl
+         block = commented_block(physical_group(), [character(len=5) :: "k", "m", "r0", "a", "a_min", "a_max", "n_a"])
       end if
       text = text//block
    end function physical_block
