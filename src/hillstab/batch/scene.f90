@@ -39,6 +39,8 @@ module hillstab_batch_scene
       character(len=:), allocatable :: name       !! the task name, as in `&scene task`
       logical :: takes_columns = .false.          !! `&scene columns` and format = 'binary' apply
       logical :: takes_amplitudes = .false.       !! its points can come from `&physical a` with r0
+      !> `&physical r0` without amplitudes: the task takes one spring (its β fixed by r0)
+      logical :: takes_spring = .false.
       logical :: takes_physical = .true.          !! `&physical` may replace the dimensionless values
       !> what `&physical a` with r0 replace, for the template ("&points file")
       character(len=:), allocatable :: amplitudes_replace

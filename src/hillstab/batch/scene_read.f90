@@ -389,9 +389,14 @@ contains
          else
             amplitudes = list_value(values, "a", a)
          end if
-         if ((size(amplitudes) > 0) .neqv. values%given("r0")) then
-            call fail(error, file%path, group%name, merge("r0", "a ", size(amplitudes) > 0), &
-               "the amplitudes (a, or a_min, a_max, n_a; m) and r0 (natural length, m) go together")
+         if (size(amplitudes) > 0 .and. .not. values%given("r0")) then
+            call fail(error, file%path, group%name, "r0", "the amplitudes (a, or a_min, a_max, n_a; m) need r0, "// &
+               "the natural length of the spring (m)")
+            return
+         end if
+         if (values%given("r0") .and. size(amplitudes) == 0 .and. .not. task%takes_spring) then
+            call fail(error, file%path, group%name, "r0", "r0 fixes beta = g pi^2/(rho omega^2), rho = r0 + "// &
+               "g/omega^2: task '"//task%name//"' takes it only with amplitudes (a, or a_min, a_max, n_a)")
             return
          end if
          p = physical_t(g=g, omega=omega, a=0.0_wp, kappa=kappa)
@@ -412,9 +417,10 @@ contains
             end if
          end do
          if (size(amplitudes) > 0 .and. .not. task%takes_amplitudes) then
-            call fail(error, file%path, group%name, merge("n_a", "a  ", ranged), "task '"//task%name// &
-               "' takes no amplitudes (a chart runs over the grid of &chart, alpha and beta); amplitudes "// &
-               "with r0 make the points of task 'points' or the curves of task 'coefficient'")
+            call fail(error, file%path, group%name, trim(merge("n_a", "a  ", ranged)), "task '"//task%name// &
+               "' takes no amplitudes (a chart runs over the grid of &chart; task boundaries finds the critical "// &
+               "amplitudes itself); amplitudes with r0 make the points of task 'points' or the curves of task "// &
+               "'coefficient'")
             return
          end if
       end associate
