@@ -14,7 +14,7 @@ module hillstab_fault_injection
    use hillstab_core_error, only: error_t, err_io
    use hillstab_batch_tasks, only: run_scene_file
    use hillstab_testing, only: test_context_t, check
-   use test_scene, only: write_file, c_getpid
+   use test_scene, only: write_file, any_temp_file
    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_funptr, c_intptr_t, c_null_funptr
    implicit none
    private
@@ -84,7 +84,7 @@ contains
 
    !> Run the scene file `scene` under a file-size limit of `bytes` (smaller than its output)
    !> and check that the writer of `output` fails cleanly: an i/o error naming `output`
-   !> and the cause, `output` still holding its one line `sentinel`, no `output.part*` left.
+   !> and the cause, `output` still holding its one line `sentinel`, no temporary file `output.part??????` left.
    subroutine check_writer_under_limit(ctx, scene, output, bytes)
       type(test_context_t), intent(inout) :: ctx
       character(len=*), intent(in) :: scene   !! scene file (written beforehand)
@@ -115,11 +115,4 @@ contains
       call check(ctx, .not. any_temp_file(output), "no temporary file left: "//output)
    end subroutine check_writer_under_limit
 
-   !> Whether a file `<output>.part<pid>` of this process exists.
-   logical function any_temp_file(output)
-      character(len=*), intent(in) :: output
-      character(len=16) :: pid
-      write (pid, '(i0)') c_getpid()
-      inquire (file=output//".part"//trim(pid), exist=any_temp_file)
-   end function any_temp_file
 end module hillstab_fault_injection

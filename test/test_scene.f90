@@ -27,7 +27,7 @@ module test_scene
    public :: collect_scene
    public :: scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text
    public :: padded, bad_case_t, bad_cases, bad_case_text, write_bad_points_files, delete_bad_points_files
-   public :: c_getpid, grid_of, points_of, coefficient_of
+   public :: c_getpid, grid_of, points_of, coefficient_of, any_temp_file
 
    !> One bad scene: its text (`@OUT@` stands for the output prefix, `@DIR@` for the
    !> scratch prefix of the points files), the group and variable the message must name.
@@ -100,6 +100,14 @@ contains
       write (pid, '(i0)') c_getpid()
       prefix = "build/hillstab_test_"//trim(pid)//"_"//name
    end function scratch_prefix
+
+   !> Whether a temporary file of the writer for `output` (`<output>.part??????`) exists.
+   logical function any_temp_file(output)
+      character(len=*), intent(in) :: output  !! the final name
+      integer :: status
+      call execute_command_line("set -- '"//output//"'.part??????; test -e ""$1""", exitstat=status)
+      any_temp_file = status == 0
+   end function any_temp_file
 
    subroutine write_file(path, lines)
       character(len=*), intent(in) :: path

@@ -2,7 +2,7 @@
 !>
 !>     Q(τ) = (β − α cos πτ)/(1 − k cos πτ) = π² + (β − π²) w(τ),   w = 1/(1 − k cos πτ),  k = α/π²,
 !>
-!> the exact linearisation of the swing about the vertical bounce (BRIEF §2), for
+!> the exact linearisation of the swing about the vertical bounce (the paper's eq. (20)), for
 !> 0 ≤ α < π² (a < ρ). Every quantity the methods need of this model is here, without
 !> the damping shift −ε²/4 of eq. (47) (added by hillstab_hill_models, where the models
 !> are registered): Q, its exact segment means, the split q = c₀ + c₁ w that method auto
@@ -89,7 +89,7 @@ contains
       f = 2.0_wp/root*(atan2(sqrt(1.0_wp + k)*s, sqrt(1.0_wp - k)*c) + pi*turns)
    end function inverse_cos_primitive
 
-   !> Exact mean of Q over [tau_a, tau_b]: the integral of 1/(1 − k cos θ) is elementary (BRIEF §3).
+   !> Exact mean of Q over [tau_a, tau_b]: the integral of 1/(1 − k cos θ) is elementary.
    pure real(wp) function elastic_segment_mean(alpha, beta, tau_a, tau_b) result(q)
       real(wp), intent(in), value :: alpha, beta    !! the chart point
       real(wp), intent(in), value :: tau_a, tau_b   !! segment ends, tau_a < tau_b
