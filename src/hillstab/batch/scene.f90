@@ -41,6 +41,8 @@ module hillstab_batch_scene
       logical :: takes_amplitudes = .false.       !! its points can come from `&physical a` with r0
       !> `&physical r0` without amplitudes: the task takes one spring (its β fixed by r0)
       logical :: takes_spring = .false.
+      !> with amplitudes: exactly one (a template shows one)
+      logical :: single_amplitude = .false.
       logical :: takes_physical = .true.          !! `&physical` may replace the dimensionless values
       !> what `&physical a` with r0 replace, for the template ("&points file")
       character(len=:), allocatable :: amplitudes_replace

@@ -81,7 +81,8 @@ contains
       call group%add("tolerance", var_real, "1.0e-10", "exact methods: target error on S, scaled by max(1, |S|); > "// &
          ""// &
          "0")
-      call group%add("epsilon", var_real, "0.0", "damping eps = kappa pi/omega of eqs. (46)-(47); >= 0")
+      call group%add("epsilon", var_real, "0.0", "damping eps = kappa pi/omega of eqs. (46)-(47); >= 0 (with &physical: "// &
+         "kappa instead)")
       call group%add("output", var_path, "", "prefix: files are <output>_<task>.dat, relative to the current "// &
          "directory; default: the scene file's name without directory and extension", example="'run1'")
       call group%add("columns", var_words, "''", "chart, points: columns to write, e.g. 'alpha beta stable mu'; '' "// &

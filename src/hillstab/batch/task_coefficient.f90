@@ -59,7 +59,7 @@ contains
    function coefficient_task() result(task)
       type(coefficient_task_t) :: task
       task%name = "coefficient"
-      task%amplitudes_replace = "&coefficient alphas and beta"
+      task%amplitudes_replace = "alphas and beta from &coefficient"
       task%takes_amplitudes = .true.
    end function coefficient_task
 

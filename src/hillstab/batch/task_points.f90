@@ -65,7 +65,7 @@ contains
    function points_task() result(task)
       type(points_task_t) :: task
       task%name = "points"
-      task%amplitudes_replace = "&points file"
+      task%amplitudes_replace = "the &points group"
       task%takes_columns = .true.
       task%takes_amplitudes = .true.
    end function points_task

@@ -101,7 +101,8 @@ contains
       task%name = "series"
       task%takes_amplitudes = .true.
       task%takes_spring = .true.
-      task%amplitudes_replace = "&series alpha, beta, r0 and g"
+      task%single_amplitude = .true.
+      task%amplitudes_replace = "alpha, beta, r0 and g from &series"
    end function series_task
 
    !> `&series`.
