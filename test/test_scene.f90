@@ -444,6 +444,11 @@ contains
          bad_case_t(s//"format='hdf5' / &chart /", "scene", "format"), &
          bad_case_t(s//"format='binary', names_line=.true. / &chart /", "scene", "names_line"), &
          bad_case_t(s//"names_line=3 / &chart /", "scene", "names_line"), &
+         bad_case_t(s//"task='coefficient', names_line=.true. / &coefficient /", "scene", "names_line: columns, format"), &
+         bad_case_t(s//"task='boundaries', names_line=.true. / &chart /", "scene", "names_line: columns, format"), &
+         bad_case_t(s//"task='series', names_line=.true. / &series /", "scene", "names_line: columns, format"), &
+         bad_case_t(s//"task='series', columns='t' / &series /", "scene", "columns: columns, format"), &
+         bad_case_t(s//"task='poincare', format='binary' / &series /", "scene", "format: columns, format"), &
          bad_case_t(s//"task='coefficient', format='binary' / &coefficient /", "scene", "format"), &
          bad_case_t(s//"task='coefficient', columns='tau' / &coefficient /", "scene", "columns"), &
          bad_case_t(s//"/ &chart beta_max = -, /", "chart", "beta_max: no value"), &

@@ -873,19 +873,36 @@ contains
       call execute_command_line("rmdir '"//dir//"'")
    end subroutine long_file_names
 
+   !> An output under a regular file cannot be written: an i/o error naming the path, no
+   !> file; an output whose directories are missing gets them made (as mkdir -p).
    subroutine unwritable_output(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(error_t), allocatable :: error
-      character(len=:), allocatable :: written
+      character(len=:), allocatable :: written, blocker, dir
+      blocker = scratch_prefix("blocker")
+      call write_file(blocker, ["not a directory"])
       call run_text_scene("unwritable", [ &
-         padded("&scene method = 'segments', output = 'build/hillstab_no_such_dir/run' /"), &
+         padded("&scene method = 'segments', output = '"//blocker//"/sub/run' /"), &
          padded("&chart n_alpha = 2, n_beta = 2 /")], error, written)
       call check(ctx, allocated(error), "unwritable output is an error")
-      if (.not. allocated(error)) return
-      call check(ctx, error%code == err_io, "i/o error code")
-      call check(ctx, contains_text(error%message, scratch_prefix("unwritable")//".nml: &scene: output:"), &
-                 "names file, group, variable: "//error%message)
-      call check(ctx, contains_text(error%message, "build/hillstab_no_such_dir/run_chart.dat"), "names the path")
-      call check(ctx, .not. file_exists("build/hillstab_no_such_dir"), "no directory created")
+      if (allocated(error)) then
+         call check(ctx, error%code == err_io, "i/o error code")
+         call check(ctx, contains_text(error%message, scratch_prefix("unwritable")//".nml: &scene: output:"), &
+                    "names file, group, variable: "//error%message)
+         call check(ctx, contains_text(error%message, blocker//"/sub/run_chart.dat"), "names the path")
+         call check(ctx, contains_text(error%message, "cannot make the directory '"//blocker//"'"), &
+                    "names the directory: "//error%message)
+      end if
+      call delete_file(blocker)
+      ! missing directories are made
+      dir = scratch_prefix("newdir")
+      call run_text_scene("newdir", [ &
+         padded("&scene method = 'segments', output = '"//dir//"/a/b/run' /"), &
+         padded("&chart n_alpha = 2, n_beta = 2 /")], error, written)
+      call check(ctx, .not. allocated(error), "output into missing directories")
+      if (allocated(error)) call check(ctx, .false., error%message)
+      call check(ctx, file_exists(dir//"/a/b/run_chart.dat"), "the file in the new directories")
+      call delete_file(dir//"/a/b/run_chart.dat")
+      call execute_command_line("rmdir '"//dir//"/a/b' '"//dir//"/a' '"//dir//"'")
    end subroutine unwritable_output
 end module test_tasks

@@ -256,10 +256,20 @@ contains
       type(scene_t), intent(in) :: scene
       class(task_t), intent(in) :: task
       type(error_t), allocatable, intent(out) :: error
-      if (.not. task%takes_columns .and. (scene%binary .or. len(scene%columns) > 0)) then
-         call fail(error, file%path, "scene", merge("format ", "columns", scene%binary), &
-            "columns and format = 'binary' apply to tasks chart and points")
+      character(len=:), allocatable :: variable
+      if (task%takes_columns) return
+      if (scene%binary) then
+         variable = "format"
+      else if (len(scene%columns) > 0) then
+         variable = "columns"
+      else if (scene%names_line) then
+         variable = "names_line"
+      else
+         return
       end if
+      call fail(error, file%path, "scene", variable, "columns, format = 'binary' and names_line apply to tasks "// &
+         "chart and points (task '"//task%name//"' writes every column of its file as text, named on the "// &
+         "'# columns:' line)")
    end subroutine check_task_settings
 
    !> The default output prefix: the scene file's base name without extension.
