@@ -431,6 +431,22 @@ contains
          bad_case_t(sp//"&physical k=25, m=0.25, a_min=0, a_max=0.1, n_a=3 /", "physical", "r0"), &
          bad_case_t(s//"task='coefficient' / &physical k=25, m=0.25, r0=0.3, a_min=0, a_max=0.1, n_a=65 /", &
                     "physical", "n_a: task 'coefficient' draws at most 64"), &
+         bad_case_t("&scene output='@OUT@' / &physical r0=0.3, a_min=0, a_max=0.33, n_a=3, omega_min=5, "// &
+                    "omega_max=20, n_omega=3 /", "physical", "a_max: a = 0.33 m reaches the pivot"), &
+         bad_case_t("&scene output='@OUT@' / &physical r0=0.3, a_min=0, a_max=0.33, n_a=3, omega_min=5, "// &
+                    "omega_max=20, n_omega=3 /", "physical", "largest valid a is rho(omega_max)"), &
+         bad_case_t("&scene output='@OUT@' / &chart / &physical r0=0.3, a_min=0, a_max=0.2, n_a=3, omega_min=5, "// &
+                    "omega_max=20, n_omega=3 /", "chart", "alpha_min: the chart runs either"), &
+         bad_case_t(sp//"&physical r0=0.3, a_min=0, a_max=0.2, n_a=3, omega_min=5, omega_max=20, n_omega=3 /", &
+                    "physical", "n_omega: a range of omega"), &
+         bad_case_t("&scene output='@OUT@' / &physical omega=10, r0=0.3, a_min=0, a_max=0.2, n_a=3, "// &
+                    "omega_min=5, omega_max=20, n_omega=3 /", "physical", "omega_min: give omega"), &
+         bad_case_t("&scene output='@OUT@' / &physical r0=0.3, a_min=0, a_max=0.2, n_a=3, omega_min=5, "// &
+                    "omega_max=20 /", "physical", "n_omega: omega_min, omega_max and"), &
+         bad_case_t("&scene output='@OUT@' / &physical r0=0.3, a_min=0, a_max=0.2, n_a=3, omega_min=0, "// &
+                    "omega_max=20, n_omega=3 /", "physical", "omega_min: must be > 0"), &
+         bad_case_t("&scene output='@OUT@' / &physical r0=0.3, omega_min=5, omega_max=20, n_omega=3 /", &
+                    "physical", "a_min: a chart over (a, omega) needs"), &
          bad_case_t(s//"task='coefficient' / &coefficient beta=2 / &physical omega=3, r0=1, a=0.5 /", &
                     "coefficient", "beta"), &
          bad_case_t(s//"&chart n_alpha=3 /", "scene", "not closed: no '/' before '&chart'"), &

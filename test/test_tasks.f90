@@ -32,6 +32,7 @@ contains
          new_unittest("repeat_from_output", repeat_from_output), &
          new_unittest("physical_units", physical_units), &
          new_unittest("spring_k_m_and_range", spring_k_m_and_range), &
+         new_unittest("chart_over_a_and_omega", chart_over_a_and_omega), &
          new_unittest("domain_notes", domain_notes), &
          new_unittest("chosen_columns_and_binary", chosen_columns_and_binary), &
          new_unittest("bad_input_touches_nothing", bad_input_touches_nothing), &
@@ -622,6 +623,63 @@ contains
       call delete_file(written)
       call delete_file(by_omega)
    end subroutine spring_k_m_and_range
+
+   !> A chart over (a, omega) of &physical (r0, g fixed): blocks of constant a, every row's
+   !> a, omega, alpha = a pi^2/rho, beta = g pi^2/(rho omega^2) with rho = r0 + g/omega^2
+   !> written out here, mu_per_s = mu omega/pi at the row's omega; the point at omega = 10 is
+   !> the points run of that spring (the same S).
+   subroutine chart_over_a_and_omega(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out
+      character(len=1024), allocatable :: lines(:)
+      real(wp), allocatable :: rows(:, :), spring(:, :)
+      real(wp), parameter :: g = 9.81_wp, r0 = 0.3_wp
+      real(wp) :: a, omega, rho
+      integer :: n_blank, i, j, k
+      logical :: numeric
+      out = scratch_prefix("a_omega")
+      call run_text_scene("a_omega", [ &
+         padded("&scene method = 'magnus6', tolerance = 1e-9, output = '"//out//"' /"), &
+         padded("&physical g = 9.81, r0 = 0.3, a_min = 0.0, a_max = 0.2, n_a = 3, omega_min = 8, omega_max = 12, "// &
+                "n_omega = 3 /")], error, written)
+      call check(ctx, .not. allocated(error), "chart over (a, omega)")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      lines = read_lines(written)
+      call check(ctx, columns_line(lines) == "alpha a beta omega S stable lambda_max mu log10_abs_S overflow "// &
+                 "physical mu_per_s error_estimate status", "columns: "//columns_line(lines))
+      call data_rows(lines, 14, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 9 .and. n_blank == 2, "3 blocks of 3 rows")
+      if (size(rows, 2) /= 9) return
+      do i = 1, 3
+         do j = 1, 3
+            k = 3*(i - 1) + j
+            a = 0.1_wp*real(i - 1, wp)
+            omega = 8.0_wp + 2.0_wp*real(j - 1, wp)
+            rho = r0 + g/omega**2
+            call check(ctx, rows(2, k), a, rel=1.0e-15_wp, abs=1.0e-300_wp, message="a of the block")
+            call check(ctx, rows(4, k), omega, rel=1.0e-15_wp, message="omega of the row")
+            call check(ctx, rows(1, k), a*pi2/rho, rel=1.0e-14_wp, abs=1.0e-300_wp, message="alpha = a pi^2/rho")
+            call check(ctx, rows(3, k), g*pi2/(rho*omega**2), rel=1.0e-14_wp, message="beta")
+            call check(ctx, rows(12, k), rows(8, k)*omega/pi, rel=1.0e-9_wp, abs=1.0e-300_wp, message="mu_per_s")
+            call check(ctx, rows(11, k) == 1.0_wp .and. rows(14, k) == 0.0_wp, "physical, status 0")
+         end do
+      end do
+      call delete_file(written)
+      ! the spring omega = 10 at a = 0.1 as a points run
+      call run_text_scene("a_omega_p", [ &
+         padded("&scene task = 'points', method = 'magnus6', tolerance = 1e-9, output = '"//out//"' /"), &
+         padded("&physical omega = 10, g = 9.81, r0 = 0.3, a = 0.1 /")], error, written)
+      call check(ctx, .not. allocated(error), "the spring of the middle row")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call data_rows(lines, 13, spring, n_blank, numeric)
+      if (size(spring, 2) == 1) call check(ctx, rows(5, 5), spring(4, 1), rel=1.0e-15_wp, message="the same S")
+      call delete_file(written)
+   end subroutine chart_over_a_and_omega
 
    !> `columns` picks and orders columns with the same text as the full file; `names_line`
    !> adds one uncommented line of names; `format = 'binary'` writes the same values as

@@ -37,25 +37,25 @@ module hillstab_batch_chart_columns
    public :: header_bytes, text_row_bytes, binary_row_bytes, point_amplitude
 
    !> The columns of a chart or points file, in file order.
-   integer, parameter :: col_alpha = 1, col_a = 2, col_beta = 3, col_s = 4, col_stable = 5, col_lambda_max = 6, &
-      col_mu = 7, col_log10_abs_s = 8, col_overflow = 9, col_physical = 10, col_stable_paper = 11, col_mu_per_s = 12, &
-      col_error_estimate = 13, col_status = 14
+   integer, parameter :: col_alpha = 1, col_a = 2, col_beta = 3, col_omega = 4, col_s = 5, col_stable = 6, &
+      col_lambda_max = 7, col_mu = 8, col_log10_abs_s = 9, col_overflow = 10, col_physical = 11, col_stable_paper = 12, &
+      col_mu_per_s = 13, col_error_estimate = 14, col_status = 15
    !> Number of columns a chart or points file can hold.
-   integer, parameter :: n_chart_columns = 14
-   !> Characters in one chart line (14 columns of at most 24 characters, with blanks).
-   integer, parameter :: chart_line_length = 240
+   integer, parameter :: n_chart_columns = 15
+   !> Characters in one chart line (15 columns of at most 24 characters, with blanks).
+   integer, parameter :: chart_line_length = 280
    !> The text style of each column (hillstab_batch_columns), by the col_* index.
-   integer, parameter :: chart_styles(n_chart_columns) = [style_e17, style_e17, style_e17, style_e17, style_flag, &
-      style_e11, style_e11, style_e11, style_flag, style_flag, style_flag, style_e11, style_e4, style_flag]
+   integer, parameter :: chart_styles(n_chart_columns) = [style_e17, style_e17, style_e17, style_e17, style_e17, &
+      style_flag, style_e11, style_e11, style_e11, style_flag, style_flag, style_flag, style_e11, style_e4, style_flag]
    !> What a failed point writes in each column (where `chart_kept` is false): values outside
    !> every column's range.
-   real(wp), parameter :: chart_placeholders(n_chart_columns) = [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, -1.0_wp, -1.0_wp, &
-      0.0_wp, -999.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, real(status_failed, wp)]
-   !> The columns a failed point keeps: its alpha, a, beta and physical.
-   logical, parameter :: chart_kept(n_chart_columns) = [.true., .true., .true., .false., .false., .false., .false., &
-      .false., .false., .true., .false., .false., .false., .false.]
+   real(wp), parameter :: chart_placeholders(n_chart_columns) = [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, -1.0_wp, &
+      -1.0_wp, 0.0_wp, -999.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, real(status_failed, wp)]
+   !> The columns a failed point keeps: its alpha, a, beta, omega and physical.
+   logical, parameter :: chart_kept(n_chart_columns) = [.true., .true., .true., .true., .false., .false., .false., &
+      .false., .false., .false., .true., .false., .false., .false., .false.]
    !> Bytes of a header (an upper bound), of one row as text (an upper bound) and binary.
-   integer(int64), parameter :: header_bytes = 16384, text_row_bytes = 185, binary_row_bytes = 8*16
+   integer(int64), parameter :: header_bytes = 16384, text_row_bytes = 209, binary_row_bytes = 8*16
    !> Magnitudes beyond this are written as ±clamp_magnitude with the overflow flag set.
    real(wp), parameter :: clamp_magnitude = 1.0e300_wp
    !> log10|S| is written as at least this (only S = 0 exactly reaches it).
@@ -112,6 +112,8 @@ contains
             "omega^2) (eq. (24)); -1 where beta <= 0 (no equilibrium length)")
       end if
       table(col_beta) = column(col_beta, "beta", "", "beta = g pi^2/(rho omega^2), eq. (24)")
+      table(col_omega) = column(col_omega, "omega", "rad/s", "radial angular frequency sqrt(k/m) of the point "// &
+         "(rho = r0 + g/omega^2)")
       table(col_s) = column(col_s, "S", "", "trace of the one-period monodromy (with epsilon > 0: S1 of the chi "// &
          "equation (47)); |S| > 1e300 is written as +-1e300 with overflow = 1")
       table(col_stable) = column(col_stable, "stable", "", stable)
@@ -150,6 +152,7 @@ contains
          if (k == col_physical .and. .not. model_is_pendulum(scene%model)) cycle
          if (k == col_stable_paper .and. .not. scene%epsilon > 0.0_wp) cycle
          if (k == col_mu_per_s .and. .not. scene%physical) cycle
+         if (k == col_omega .and. size(scene%omegas) == 0) cycle
          if (k == col_a .and. .not. (scene%physical .and. (size(scene%amplitudes) > 0 .or. &
              model_is_pendulum(scene%model)))) cycle
          ids = [ids, k]
@@ -184,13 +187,14 @@ contains
    !> clamped to ±1e300, flags 1 or 0, stable 0.5 when marginal, mu_per_s = μ ω/π
    !> (0 without `per_second`), error_estimate −1 when the method gives none, a the
    !> amplitude (0 without `amplitude`).
-   pure function chart_values(alpha, beta, f, physical, status, per_second, amplitude) result(v)
+   pure function chart_values(alpha, beta, f, physical, status, per_second, amplitude, omega) result(v)
       real(wp), intent(in) :: alpha, beta  !! the grid point
       type(floquet_t), intent(in) :: f  !! Floquet data of the point
       logical, intent(in) :: physical   !! (α, β) inside the physical domain
       integer, intent(in) :: status     !! per-point status code (hillstab_core_status)
       real(wp), intent(in), optional :: per_second  !! ω/π
       real(wp), intent(in), optional :: amplitude   !! a (m), `point_amplitude`
+      real(wp), intent(in), optional :: omega       !! ω (rad/s) of a chart over (a, ω)
       real(wp) :: v(n_chart_columns)
       real(wp) :: s, estimate
       logical :: overflow
@@ -203,6 +207,8 @@ contains
       v(col_a) = 0.0_wp
       if (present(amplitude)) v(col_a) = amplitude
       v(col_beta) = beta
+      v(col_omega) = 0.0_wp
+      if (present(omega)) v(col_omega) = omega
       v(col_s) = s
       v(col_stable) = merge(1.0_wp, 0.0_wp, f%stable)
       if (f%marginal) v(col_stable) = 0.5_wp
@@ -220,13 +226,15 @@ contains
 
    !> The values of a point where nothing could be computed: alpha, a, beta and physical
    !> kept, the other columns at their placeholders, status 2.
-   pure function failed_values(alpha, beta, physical, amplitude) result(v)
+   pure function failed_values(alpha, beta, physical, amplitude, omega) result(v)
       real(wp), intent(in) :: alpha, beta  !! the point
       logical, intent(in) :: physical      !! (α, β) inside the physical domain
       real(wp), intent(in), optional :: amplitude  !! a (m)
+      real(wp), intent(in), optional :: omega      !! ω (rad/s)
       real(wp) :: v(n_chart_columns)
       v = chart_placeholders
       if (present(amplitude)) v(col_a) = amplitude
+      if (present(omega)) v(col_omega) = omega
       v(col_alpha) = alpha
       v(col_beta) = beta
       v(col_physical) = merge(1.0_wp, 0.0_wp, physical)
@@ -294,16 +302,21 @@ contains
    end function chart_header
 
    !> Floquet data of one point; `error` only when the point failed.
-   subroutine evaluate_point(scene, alpha, beta, f, error, status)
+   subroutine evaluate_point(scene, alpha, beta, f, error, status, epsilon)
       type(scene_t), intent(in) :: scene  !! the scene (model, method, damping)
       real(wp), intent(in) :: alpha, beta  !! the point
       type(floquet_t), intent(out) :: f  !! its Floquet data
       type(error_t), allocatable, intent(out) :: error  !! why the point failed
       !> status_ok, status_roundoff (computed, but only to the round-off level) or status_failed
       integer, intent(out), optional :: status
+      !> the point's damping (a chart over (a, ω): κπ/ω); default the scene's
+      real(wp), intent(in), optional :: epsilon
       type(trace_t) :: tr
+      real(wp) :: damping
+      damping = scene%epsilon
+      if (present(epsilon)) damping = epsilon
       if (present(status)) status = status_ok
-      call monodromy_trace(hill_model_t(scene%model, alpha, beta, scene%epsilon), scene%method, tr, error)
+      call monodromy_trace(hill_model_t(scene%model, alpha, beta, damping), scene%method, tr, error)
       if (allocated(error)) then
          if (error%code /= err_accuracy) then
             if (present(status)) status = status_failed
@@ -312,7 +325,7 @@ contains
          deallocate (error)
          if (present(status)) status = status_roundoff
       end if
-      f = floquet_from_trace(tr, scene%epsilon, scene%method%tolerance)
+      f = floquet_from_trace(tr, damping, scene%method%tolerance)
    end subroutine evaluate_point
 
    !> Count the failed points of a task and name the first: err_points_failed, after the

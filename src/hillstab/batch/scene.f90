@@ -18,7 +18,7 @@
 module hillstab_batch_scene
    use hillstab_core_kinds, only: wp, int64
    use hillstab_core_kinds, only: pi
-   use hillstab_core_text, only: quoted, real_text
+   use hillstab_core_text, only: quoted, real_text, integer_text
    use hillstab_core_error, only: error_t, set_error, err_input
    use hillstab_hill_models, only: model_elastic, model_physical_alpha
    use hillstab_integrate_monodromy, only: method_t
@@ -41,6 +41,8 @@ module hillstab_batch_scene
       logical :: takes_amplitudes = .false.       !! its points can come from `&physical a` with r0
       !> `&physical r0` without amplitudes: the task takes one spring (its β fixed by r0)
       logical :: takes_spring = .false.
+      !> `&physical omega_min, omega_max, n_omega` (with amplitudes): a grid over (a, ω)
+      logical :: takes_omega_range = .false.
       !> with amplitudes: exactly one (a template shows one)
       logical :: single_amplitude = .false.
       logical :: takes_physical = .true.          !! `&physical` may replace the dimensionless values
@@ -100,6 +102,9 @@ module hillstab_batch_scene
       !> `&physical a` (m): the points (task points) or the curves (task coefficient) at
       !> these amplitudes and the given r0; empty when α and β come from the task's group
       real(wp), allocatable :: amplitudes(:)
+      !> `&physical omega_min, omega_max, n_omega` (rad/s): the ω of a chart over (a, ω),
+      !> r0 and g fixed; empty when ω is one value (`pendulum%omega`)
+      real(wp), allocatable :: omegas(:)
       type(group_values_t) :: settings              !! the effective `&scene` values
       type(group_values_t) :: physical_values       !! the effective `&physical` values
    end type scene_t
@@ -226,13 +231,20 @@ contains
       character(len=400) :: text(3)
       character(len=:), allocatable :: spring
       associate (p => scene%pendulum)
-         if (scene%spring_k > 0.0_wp) then
+         if (size(scene%omegas) > 0) then
+            spring = "omega = "//real_text(scene%omegas(1))//" ... "//real_text(scene%omegas(size(scene%omegas)))// &
+                     " rad/s ("//integer_text(size(scene%omegas))//" values, the chart's second axis)"
+         else if (scene%spring_k > 0.0_wp) then
             spring = "k = "//real_text(scene%spring_k)//" N/m, m = "//real_text(scene%spring_m)// &
                      " kg, omega = sqrt(k/m) = "//real_text(p%omega)//" rad/s"
          else
             spring = "omega = "//real_text(p%omega)//" rad/s"
          end if
-         if (scene%spring_r0) then
+         if (size(scene%omegas) > 0) then
+            spring = spring//", r0 = "//real_text(p%r0)//" m, g = "//real_text(p%g)//" m/s^2; rho = r0 + g/omega^2 "// &
+                     "from "//real_text(p%r0 + p%g/scene%omegas(1)**2)//" m down to "// &
+                     real_text(p%r0 + p%g/scene%omegas(size(scene%omegas))**2)//" m"
+         else if (scene%spring_r0) then
             spring = spring//", r0 = "//real_text(p%r0)//" m, g = "//real_text(p%g)//" m/s^2, rho = r0 + g/omega^2 = "// &
                      real_text(equilibrium_length(p))//" m, beta = "//real_text(physical_beta(p))
          else
@@ -241,8 +253,14 @@ contains
          text(1) = "physical units (SI): rho = r0 + g/omega^2 (eq. (4)), tau = omega t/pi, alpha = a pi^2/rho, "// &
                    "beta = g pi^2/(rho omega^2) (eq. (24)), epsilon = kappa pi/omega (eq. (46))"
          text(2) = "spring: "//spring
-         text(3) = "kappa = "//real_text(p%kappa)//" 1/s, epsilon = "//real_text(scene%epsilon)// &
-                   "; radial period 2 pi/omega = "//real_text(2.0_wp*pi/p%omega)//" s (2 units of tau)"
+         if (size(scene%omegas) > 0) then
+            text(3) = "kappa = "//real_text(p%kappa)//" 1/s, epsilon = kappa pi/omega at each omega; radial "// &
+                      "period 2 pi/omega from "//real_text(2.0_wp*pi/scene%omegas(1))//" s down to "// &
+                      real_text(2.0_wp*pi/scene%omegas(size(scene%omegas)))//" s (2 units of tau)"
+         else
+            text(3) = "kappa = "//real_text(p%kappa)//" 1/s, epsilon = "//real_text(scene%epsilon)// &
+                      "; radial period 2 pi/omega = "//real_text(2.0_wp*pi/p%omega)//" s (2 units of tau)"
+         end if
       end associate
       lines = text
    end function physical_summary

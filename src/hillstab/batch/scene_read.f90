@@ -17,7 +17,7 @@ module hillstab_batch_scene_read
    use hillstab_core_text, only: real_text, quoted
    use hillstab_hill_models, only: model_table, model_name, model_from_name, model_names_text, model_summary
    use hillstab_hill_coefficient, only: sampling_name, sampling_from_name, sampling_names_text
-   use hillstab_hill_units, only: physical_t, physical_epsilon, check_physical
+   use hillstab_hill_units, only: physical_t, physical_epsilon, check_physical, equilibrium_length
    use hillstab_integrate_monodromy, only: method_t, method_table, method_name, method_from_name, method_names_text, &
       method_description
    use hillstab_batch_scene, only: scene_t, task_t
@@ -48,7 +48,7 @@ contains
       type(error_t), allocatable :: cause
       scene%source = path
       scene%columns = ""
-      allocate (scene%amplitudes(0))
+      allocate (scene%amplitudes(0), scene%omegas(0))
       call open_scene_file(path, file, error)
       if (allocated(error)) return
       call read_scene_group(file, scene, task_name, error)
@@ -118,6 +118,11 @@ contains
       call group%add("a_max", var_real, "", "last amplitude of the range, m; < rho", example="0.3")
       call group%add("n_a", var_integer, "", "amplitudes from a_min to a_max inclusive (1: a_min only)", &
          example="31")
+      call group%add("omega_min", var_real, "", "chart over (a, omega): first omega, rad/s (with omega_max, "// &
+         "n_omega, r0 and the amplitudes; instead of omega)", example="5.0")
+      call group%add("omega_max", var_real, "", "last omega, rad/s", example="20.0")
+      call group%add("n_omega", var_integer, "", "omega values from omega_min to omega_max inclusive", &
+         example="151")
    end function physical_group
 
    !> `&scene`: task, model, method and its settings, damping, output prefix, columns, format.
@@ -298,16 +303,17 @@ contains
       type(scene_t), intent(inout) :: scene
       type(error_t), allocatable, intent(out) :: error
       type(group_t) :: group
-      real(wp) :: omega, k, m, g, kappa, r0, a(64), a_min, a_max
-      integer :: n_a
-      namelist /physical/ omega, k, m, g, kappa, r0, a, a_min, a_max, n_a
+      real(wp) :: omega, k, m, g, kappa, r0, a(64), a_min, a_max, omega_min, omega_max
+      integer :: n_a, n_omega
+      namelist /physical/ omega, k, m, g, kappa, r0, a, a_min, a_max, n_a, omega_min, omega_max, n_omega
       type(group_reader_t) :: reader
       real(wp), allocatable :: amplitudes(:)
       character(len=:), allocatable :: variable
       type(physical_t) :: p
       type(error_t), allocatable :: cause
       integer :: j, n_range
-      logical :: spring, ranged
+      logical :: spring, ranged, omega_ranged, reaches
+      real(wp), allocatable :: omegas(:)
       group = physical_group()
       call begin_group(reader, file, group)
       read (reader%defaults, nml=physical, iostat=reader%defaults_status, iomsg=reader%defaults_msg)
@@ -320,13 +326,61 @@ contains
       if (allocated(error)) return
       associate (values => scene%physical_values)
          spring = values%given("k") .or. values%given("m")
+         omega_ranged = values%given("omega_min") .or. values%given("omega_max") .or. values%given("n_omega")
+         allocate (omegas(0))
+         if (omega_ranged) then
+            if (values%given("omega") .or. spring) then
+               call fail(error, file%path, group%name, "omega_min", "give omega (or k and m) or the range "// &
+                  "omega_min, omega_max, n_omega, not both")
+               return
+            end if
+            do j = 1, 3
+               variable = trim(omega_range_names(j))
+               if (.not. values%given(variable)) then
+                  call fail(error, file%path, group%name, variable, "omega_min, omega_max and n_omega go "// &
+                     "together (a chart over (a, omega))")
+                  return
+               end if
+            end do
+            if (.not. task%takes_omega_range) then
+               call fail(error, file%path, group%name, "n_omega", "a range of omega makes a chart over (a, "// &
+                  "omega): task 'chart', not '"//task%name//"'")
+               return
+            end if
+            call require_finite(file%path, group%name, "omega_min", omega_min, error)
+            if (.not. allocated(error)) call require_finite(file%path, group%name, "omega_max", omega_max, error)
+            if (allocated(error)) return
+            if (.not. omega_min > 0.0_wp) then
+               call fail(error, file%path, group%name, "omega_min", "must be > 0 (rad/s), got "//real_text(omega_min))
+               return
+            end if
+            if (omega_max < omega_min) then
+               call fail(error, file%path, group%name, "omega_max", "must be >= omega_min = "//real_text(omega_min)// &
+                  ", got "//real_text(omega_max))
+               return
+            end if
+            call require_positive_count(file%path, group%name, "n_omega", n_omega, 1, error)
+            if (allocated(error)) return
+            if (n_omega > max_points) then
+               call fail(error, file%path, group%name, "n_omega", "must be <= "//integer_text(max_points)// &
+                  ", got "//integer_text(n_omega))
+               return
+            end if
+            deallocate (omegas)
+            allocate (omegas(n_omega))
+            do j = 1, n_omega
+               omegas(j) = grid_value(omega_min, omega_max, n_omega, j)
+            end do
+            ! the pendulum is checked at the largest omega (the smallest rho) below
+            omega = omega_max
+         end if
          if (values%given("omega") .and. spring) then
             call fail(error, file%path, group%name, merge("k", "m", values%given("k")), "omega and "// &
                merge("k", "m", values%given("k"))//" are both given: give the radial angular frequency either as "// &
                "omega or as k and m (omega = sqrt(k/m)), not both")
             return
          end if
-         if (.not. (values%given("omega") .or. spring)) then
+         if (.not. (values%given("omega") .or. spring .or. omega_ranged)) then
             call fail(error, file%path, group%name, "omega", "the radial angular frequency is required: omega = "// &
                "sqrt(k/m) (rad/s), or the spring constant k (N/m) and the mass m (kg)")
             return
@@ -405,6 +459,11 @@ contains
                "the natural length of the spring (m)")
             return
          end if
+         if (omega_ranged .and. size(amplitudes) == 0) then
+            call fail(error, file%path, group%name, "a_min", "a chart over (a, omega) needs the amplitudes: "// &
+               "a_min, a_max, n_a (or the list a) with r0")
+            return
+         end if
          if (values%given("r0") .and. size(amplitudes) == 0 .and. .not. task%takes_spring) then
             call fail(error, file%path, group%name, "r0", "r0 fixes beta = g pi^2/(rho omega^2), rho = r0 + "// &
                "g/omega^2: task '"//task%name//"' takes it only with amplitudes (a, or a_min, a_max, n_a)")
@@ -419,7 +478,16 @@ contains
             if (n_range > 0) p%a = amplitudes(j)
             call check_physical(p, cause, variable)
             if (allocated(cause)) then
+               reaches = variable == "a" .and. p%a >= 0.0_wp
                if (variable == "a" .and. ranged) variable = merge("a_min", "a_max", j == 1)
+            if (reaches .and. omega_ranged) then
+               call fail(error, file%path, group%name, variable, "a = "//real_text(p%a)//" m reaches the pivot at "// &
+                  "omega_max = "//real_text(omega_max)//" rad/s: a chart over (a, omega) must stay inside 0 <= a "// &
+                  "< rho(omega) = r0 + g/omega^2 everywhere, and the largest valid a is rho(omega_max) = "// &
+                  real_text(equilibrium_length(p))//" m (lower a_max or omega_max)")
+               return
+            end if
+            if (variable == "omega" .and. omega_ranged) variable = "omega_max"
                if (variable == "omega" .and. spring) variable = "k"
                call fail(error, file%path, group%name, variable, cause%message//"; got r0 = "//real_text(p%r0)// &
                   ", g = "//real_text(p%g)//", omega = "//real_text(p%omega)//", a = "//real_text(p%a)// &
@@ -427,7 +495,7 @@ contains
                return
             end if
          end do
-         if (size(amplitudes) > 0 .and. .not. task%takes_amplitudes) then
+         if (size(amplitudes) > 0 .and. .not. (task%takes_amplitudes .or. omega_ranged)) then
             call fail(error, file%path, group%name, trim(merge("n_a", "a  ", ranged)), "task '"//task%name// &
                "' takes no amplitudes (a chart runs over the grid of &chart; task boundaries finds the critical "// &
                "amplitudes itself); amplitudes with r0 make the points of task 'points' or the curves of task "// &
@@ -440,7 +508,9 @@ contains
       scene%pendulum = p
       scene%pendulum%a = 0.0_wp
       scene%amplitudes = amplitudes
-      scene%epsilon = physical_epsilon(p)
+      scene%omegas = omegas
+      if (size(omegas) > 0) scene%pendulum%omega = omegas(1)
+      scene%epsilon = physical_epsilon(scene%pendulum)
       ! with &physical the damping is kappa; epsilon in &scene would be an error
       call scene%settings%hide("epsilon")
    end subroutine read_physical_group
@@ -456,6 +526,14 @@ contains
          if (values%given(trim(names(j)))) name = trim(names(j))
       end do
    end function first_given
+
+   !> The variables of an omega range.
+   pure function omega_range_names(j) result(name)
+      integer, intent(in) :: j
+      character(len=9) :: name
+      character(len=9), parameter :: names(3) = ["omega_min", "omega_max", "n_omega  "]
+      name = names(j)
+   end function omega_range_names
 
    !> The variables of an amplitude range.
    pure function range_names(j) result(name)
