@@ -236,13 +236,25 @@ contains
          call check(ctx, index(variant, new_line("a")//"k =") > 0 .and. index(variant, new_line("a")//"m =") > 0, &
                     trim(names(k))//": k and m offered")
          call run_ok(ctx, trim(names(k))//" with &physical k and m", variant)
-         if (index(physical, "! a_min =") > 0) then
+         if (index(physical, "! a_min =") > 0 .and. index(physical, "! omega_min =") == 0) then
             variant = without_lines(replaced(replaced(replaced(physical, new_line("a")//"! a_min =", &
                new_line("a")//"a_min ="), new_line("a")//"! a_max =", new_line("a")//"a_max ="), &
                new_line("a")//"! n_a =", new_line("a")//"n_a ="), "a =")
             call run_ok(ctx, trim(names(k))//" with &physical a_min, a_max, n_a", variant)
          end if
-         if (index(physical, new_line("a")//"! r0 =") > 0) then
+         if (index(physical, new_line("a")//"! omega_min =") > 0) then
+            ! r0 with the ranges of a and omega: a chart over (a, omega)
+            variant = physical
+            variant = replaced(variant, new_line("a")//"! r0 =", new_line("a")//"r0 =")
+            variant = replaced(variant, new_line("a")//"! a_min =", new_line("a")//"a_min =")
+            variant = replaced(variant, new_line("a")//"! a_max =", new_line("a")//"a_max =")
+            variant = replaced(variant, new_line("a")//"! n_a =", new_line("a")//"n_a =")
+            variant = replaced(variant, new_line("a")//"! omega_min =", new_line("a")//"omega_min =")
+            variant = replaced(variant, new_line("a")//"! omega_max =", new_line("a")//"omega_max =")
+            variant = replaced(variant, new_line("a")//"! n_omega =", new_line("a")//"n_omega =")
+            variant = without_group(without_lines(variant, "omega ="), "chart")
+            call run_ok(ctx, trim(names(k))//" with &physical over (a, omega)", variant)
+         else if (index(physical, new_line("a")//"! r0 =") > 0) then
             variant = without_group(replaced(physical, new_line("a")//"! r0 =", new_line("a")//"r0 ="), "chart")
             call run_ok(ctx, trim(names(k))//" with &physical r0 (the critical amplitudes)", variant)
          end if

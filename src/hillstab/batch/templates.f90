@@ -169,6 +169,8 @@ contains
          "of a (uncomment them and delete a)"
       if (task%takes_spring .and. .not. task%takes_amplitudes) text = text//"; r0 alone gives the critical "// &
          "amplitudes of that spring (uncomment it and delete the &chart group)"
+      if (task%takes_omega_range) text = text//"; r0 with a_min, a_max, n_a and omega_min, omega_max, n_omega "// &
+         "give a chart over (a, omega) (uncomment them, delete omega and the &chart group)"
       text = wrapped("! ", text//".")
       text = text//"! &"//group%name//nl
       do k = 1, size(group%variables)
@@ -179,14 +181,16 @@ contains
             case ("r0")
                if (task%takes_amplitudes) then
                   text = text//commented_item(v%name//" = "//value_of(v), v%help)
-               else if (task%takes_spring) then
+               else if (task%takes_spring .or. task%takes_omega_range) then
                   text = text//commented_item("! "//v%name//" = "//value_of(v), v%help)
                end if
             case ("a")
                if (task%takes_amplitudes) text = text//commented_item(v%name//" = "//value_of(v), v%help)
             case ("a_min", "a_max", "n_a")
-               if (task%takes_amplitudes .and. .not. task%single_amplitude) &
+               if ((task%takes_amplitudes .and. .not. task%single_amplitude) .or. task%takes_omega_range) &
                   text = text//commented_item("! "//v%name//" = "//value_of(v), v%help)
+            case ("omega_min", "omega_max", "n_omega")
+               if (task%takes_omega_range) text = text//commented_item("! "//v%name//" = "//value_of(v), v%help)
             case default
                text = text//commented_item(v%name//" = "//value_of(v), v%help)
             end select
