@@ -21,11 +21,13 @@ module hillstab_batch_cli
    use hillstab_batch_tasks, only: run_scene_file
    use hillstab_batch_templates, only: scene_template
    use hillstab_batch_task_registry, only: task_names_text
+   use hillstab_batch_signals, only: settle_signals
+   use hillstab_core_text, only: integer_text
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use, intrinsic :: ieee_arithmetic, only: ieee_set_flag, ieee_all
    implicit none
    private
-   public :: scene_runner_t, serial_runner_t, run_command_line, exit_status, max_path
+   public :: scene_runner_t, serial_runner_t, run_command_line, exit_status, max_path, printable
 
    !> Longest scene path accepted (a longer one would be cut and another file read).
    integer, parameter :: max_path = 4096
@@ -113,7 +115,7 @@ contains
       character(len=max_path), allocatable :: scenes(:)
       character(len=:), allocatable :: text
       logical :: quiet, points_failed
-      integer :: i, n_scenes
+      integer :: i, n_scenes, signum
       if (.not. allocated(runner%program)) runner%program = "hillstab"
       if (.not. allocated(runner%usage)) runner%usage = default_usage(runner%program)
       if (.not. allocated(runner%description)) runner%description = default_description()
@@ -160,12 +162,26 @@ contains
          call runner%run(trim(scenes(i)), quiet, error, written)
          if (allocated(error)) then
             if (len(error%message) > 0) error%message = runner%program//": "//error%message
-            if (error%code /= err_points_failed) call quit(error%message, exit_status(error))
+            if (error%code /= err_points_failed) then
+               signum = settle_signals()
+               call quit(error%message, exit_status(error))
+            end if
             ! the file is written; the message says where (also with --quiet: it qualifies the file)
-            if (len(error%message) > 0) write (error_unit, '(a)') error%message
+            if (len(error%message) > 0) write (error_unit, '(a)') printable(error%message)
             points_failed = .true.
          end if
          if (.not. quiet .and. runner%reports()) write (error_unit, '(a)') runner%program//": wrote "//written
+         ! a signal that arrived while the file took its name: it is written and said so;
+         ! stop here
+         signum = settle_signals()
+         if (signum /= 0) then
+            if (i < n_scenes) then
+               call quit(on_reporter(runner%program//": signal "//integer_text(signum)//" arrived after "// &
+                  written//" was written; the scenes after "//trim(scenes(i))//" were not run"), 128 + signum)
+            end if
+            call quit(on_reporter(runner%program//": signal "//integer_text(signum)//" arrived after "// &
+               written//" was written: the run is complete"), merge(exit_points_failed, 0, points_failed))
+         end if
       end do
       call quit("", merge(exit_points_failed, 0, points_failed))
 
@@ -184,7 +200,7 @@ contains
       subroutine quit(message, status)
          character(len=*), intent(in) :: message
          integer, intent(in) :: status
-         if (len(message) > 0) write (error_unit, '(a)') message
+         if (len(message) > 0) write (error_unit, '(a)') printable(message)
          ! free what the program allocated, so that memory checkers see no leak
          if (allocated(scenes)) deallocate (scenes)
          if (allocated(argument)) deallocate (argument)
@@ -196,6 +212,36 @@ contains
          stop status, quiet=.true.
       end subroutine quit
    end subroutine run_command_line
+
+   !> A message as one line of plain text: control characters (NUL, form feed, a line
+   !> break a scene value carried, ...) and the Unicode line and paragraph separators
+   !> U+2028, U+2029 shown as \xNN and \u2028 escapes, so that what a scene file holds
+   !> cannot break or forge lines of the program's messages.
+   pure function printable(message) result(text)
+      character(len=*), intent(in) :: message
+      character(len=:), allocatable :: text
+      character(len=*), parameter :: hex = "0123456789abcdef"
+      integer :: i, c
+      text = ""
+      i = 1
+      do while (i <= len(message))
+         c = iachar(message(i:i))
+         if (c < 32 .or. c == 127) then
+            text = text//"\x"//hex(c/16 + 1:c/16 + 1)//hex(mod(c, 16) + 1:mod(c, 16) + 1)
+         else if (c == 226 .and. i + 2 <= len(message)) then
+            if (iachar(message(i + 1:i + 1)) == 128 .and. (iachar(message(i + 2:i + 2)) == 168 .or. &
+                                                        iachar(message(i + 2:i + 2)) == 169)) then
+               text = text//merge("\u2028", "\u2029", iachar(message(i + 2:i + 2)) == 168)
+               i = i + 3
+               cycle
+            end if
+            text = text//message(i:i)
+         else
+            text = text//message(i:i)
+         end if
+         i = i + 1
+      end do
+   end function printable
 
    !> Command-line argument i.
    function command_argument(i) result(text)

@@ -29,7 +29,7 @@ module hillstab_batch_output
    use hillstab_core_text, only: integer_text
    use hillstab_ffi_libc, only: c_mkdir, c_rename, c_mkstemp, c_fdopen, c_fchmod, c_umask, c_close, c_fwrite, c_fwrite_raw, &
       c_fflush, c_fclose, c_fileno, c_fsync, errno_text, set_errno, c_string, remove_file, is_directory
-   use hillstab_batch_signals, only: watch_temp_file, forget_temp_file
+   use hillstab_batch_signals, only: watch_temp_file, forget_temp_file, begin_commit
    use hillstab_core_kinds, only: wp
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_ptr, c_null_ptr, c_associated, c_size_t, c_loc
    implicit none
@@ -175,6 +175,8 @@ contains
          return
       end if
       call set_errno(0)
+      ! a signal from here on is held until the program has reported this file
+      call begin_commit()
       if (c_rename(c_string(file%temp_path), c_string(file%path)) /= 0) then
          cause = errno_text()
          call remove_file(file%temp_path)

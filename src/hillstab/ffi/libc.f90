@@ -15,10 +15,28 @@ module hillstab_ffi_libc
       c_f_pointer
    implicit none
    private
-   public :: c_mkstemp, c_fdopen, c_fchmod, c_umask, c_close
+   public :: c_mkstemp, c_fdopen, c_fchmod, c_umask, c_close, c_getrlimit, rlimit_t, rlimit_as, c_getpagesize
    public :: c_rename, c_remove, c_unlink, c_getpid, c_fopen, c_fwrite, c_fwrite_raw, c_fflush, c_fclose, c_fileno, &
       c_fsync, c_signal, c_exit_now, c_isatty, c_statvfs, statvfs_t
-   public :: errno_text, set_errno, c_string, remove_file, is_directory, c_mkdir
+   public :: errno_text, set_errno, c_string, remove_file, is_directory, is_special_file, c_mkdir
+
+   !> RLIMIT_AS (Linux): the largest address space of the process.
+   integer(c_int), parameter :: rlimit_as = 9
+
+   !> struct rlimit on 64-bit Linux (RLIM_INFINITY is all ones: -1 here).
+   type, bind(C) :: rlimit_t
+      integer(c_long) :: cur  !! soft limit
+      integer(c_long) :: max  !! hard limit
+   end type rlimit_t
+
+   !> struct stat on x86-64 Linux (144 bytes).
+   type, bind(C) :: stat_t
+      integer(c_long) :: dev, ino, nlink
+      integer(c_int) :: mode, uid, gid, pad
+      integer(c_long) :: rdev, size, blksize, blocks
+      integer(c_long) :: times(6)
+      integer(c_long) :: reserved(3)
+   end type stat_t
 
    !> struct statvfs on 64-bit Linux.
    type, bind(C) :: statvfs_t
@@ -64,6 +82,25 @@ module hillstab_ffi_libc
          integer(c_int), value :: mask
          integer(c_int) :: previous
       end function c_umask
+      !> getrlimit(2): 0 on success.
+      function c_getrlimit(resource, limit) bind(C, name="getrlimit") result(status)
+         import :: c_int, rlimit_t
+         integer(c_int), value :: resource
+         type(rlimit_t), intent(out) :: limit
+         integer(c_int) :: status
+      end function c_getrlimit
+      !> getpagesize(2): bytes in a memory page.
+      function c_getpagesize() bind(C, name="getpagesize") result(bytes)
+         import :: c_int
+         integer(c_int) :: bytes
+      end function c_getpagesize
+      !> stat(2): 0 on success (follows symbolic links).
+      function c_stat(path, info) bind(C, name="stat") result(status)
+         import :: c_int, c_char, stat_t
+         character(kind=c_char), intent(in) :: path(*)
+         type(stat_t), intent(out) :: info
+         integer(c_int) :: status
+      end function c_stat
       !> close(2).
       function c_close(fd) bind(C, name="close") result(status)
          import :: c_int
@@ -234,6 +271,19 @@ contains
       integer(c_int) :: status
       status = c_remove(c_string(path))
    end subroutine remove_file
+
+   !> Whether `path` names an existing file that is neither a regular file nor a directory
+   !> (a FIFO, a device, a socket): opening one to read may block forever or never end.
+   logical function is_special_file(path)
+      character(len=*), intent(in) :: path  !! any path
+      type(stat_t) :: info
+      integer(c_int), parameter :: type_mask = int(o'170000', c_int), regular = int(o'100000', c_int), &
+         directory = int(o'040000', c_int)
+      is_special_file = .false.
+      if (len(path) == 0) return
+      if (c_stat(c_string(path), info) /= 0) return
+      is_special_file = iand(info%mode, type_mask) /= regular .and. iand(info%mode, type_mask) /= directory
+   end function is_special_file
 
    !> Whether `path` names an existing directory.
    logical function is_directory(path)
