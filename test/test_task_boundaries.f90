@@ -33,7 +33,8 @@ contains
          new_unittest("mathieu_gsl_column", mathieu_gsl_column), &
          new_unittest("damping_refused", damping_refused), &
          new_unittest("spring_critical_amplitudes", spring_critical_amplitudes), &
-         new_unittest("spring_bad_input", spring_bad_input)])
+         new_unittest("spring_bad_input", spring_bad_input), &
+         new_unittest("physical_curves_a_column", physical_curves_a_column)])
    end function collect_task_boundaries
 
    !> Two scene lines as one array (built here: typed array constructors with
@@ -436,4 +437,27 @@ contains
          call check(ctx, .not. exists, "no file written")
       end do
    end subroutine spring_bad_input
+   !> The curves over &chart of a scene with &physical omega carry a = alpha rho/pi^2 with
+   !> rho = g pi^2/(beta omega^2), written out here, beside alpha.
+   subroutine physical_curves_a_column(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), allocatable :: rows(:, :)
+      character(len=1024), allocatable :: lines(:)
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out
+      integer :: j
+      out = scratch_prefix("bnd_phys")
+      call run_rows("bnd_phys", two_lines("&scene task='boundaries', output='"//out//"' / &physical omega = 10, "// &
+         "g = 9.81 /", "&chart alpha_max = 2, n_alpha = 3, beta_min = 0.5, beta_max = 4 /"), 12, rows, lines, error)
+      call check(ctx, .not. allocated(error), "curves with &physical omega")
+      if (allocated(error)) return
+      call check(ctx, any(lines == "# columns: alpha a beta kind order branch curve coexist status check beta_error "// &
+                          "modes"), "the a column beside alpha")
+      call check(ctx, size(rows, 2) >= 6, "the two edges of the first tongue at three alpha")
+      do j = 1, size(rows, 2)
+         call check(ctx, rows(2, j), rows(1, j)*9.81_wp/(rows(3, j)*100.0_wp), rel=1.0e-14_wp, abs=1.0e-300_wp, &
+                    message="a = alpha g/(beta omega^2)")
+      end do
+   end subroutine physical_curves_a_column
+
 end module test_task_boundaries

@@ -31,6 +31,7 @@ module hillstab_batch_task_boundaries
    use hillstab_batch_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail, group_present
    use hillstab_batch_scene_checks, only: max_boundaries_magnitude, min_pendulum_beta
+   use hillstab_batch_chart_columns, only: point_amplitude
    use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value
    use hillstab_batch_columns, only: column_t, style_e17, style_e4, style_integer, style_width2, style_width4, &
       columns_text, put_row, all_columns, column_lines
@@ -187,9 +188,13 @@ contains
    end function exact_method
 
    !> The columns of the boundaries file (the GSL witness columns for the Mathieu model).
-   function boundary_columns(mathieu) result(table)
+   function boundary_columns(mathieu, amplitude) result(table)
       logical, intent(in) :: mathieu  !! add the GSL witness columns
+      !> add the column a [m] (a scene with `&physical`: a = alpha g/(beta omega^2))
+      logical, intent(in) :: amplitude
       type(column_t), allocatable :: table(:)
+      type(column_t), allocatable :: with_a(:)
+      integer :: k
       allocate (table(merge(13, 11, mathieu)))
       table(1) = column_t("alpha", "", "alpha of the boundary point", style_e17)
       table(2) = column_t("beta", "", "beta of the boundary point", style_e17)
@@ -206,6 +211,16 @@ contains
       if (mathieu) then
          table(12) = column_t("beta_gsl", "", "GSL's value of the curve", style_e17)
          table(13) = column_t("gsl_ok", "", "1 GSL agrees, 2 disagrees, 0 not used", style_integer)
+      end if
+      if (amplitude) then
+         allocate (with_a(size(table) + 1))
+         with_a(1) = table(1)
+         with_a(2) = column_t("a", "m", "bounce amplitude a = alpha rho/pi^2 with rho = g pi^2/(beta omega^2) "// &
+                              "(eq. (24)); -1 where beta <= 0 (no equilibrium length)", style_e17)
+         do k = 2, size(table)
+            with_a(k + 1) = table(k)
+         end do
+         call move_alloc(with_a, table)
       end if
    end function boundary_columns
 
@@ -348,7 +363,7 @@ contains
       end do
       call sort_keys(keys)
 
-      table = boundary_columns(mathieu)
+      table = boundary_columns(mathieu, amplitude_column(scene))
       call write_header(file, header(scene, self%grid, size(keys, 2)), columns_text(table, all_columns(table)), error)
       if (allocated(error)) then
          call discard_output(file)
@@ -369,7 +384,7 @@ contains
                associate (r => per_alpha(i)%rows(j))
                   if (.not. all([r%order, r%branch, r%trace_sign] == keys(:, c))) cycle
                   if (any_written .and. last_i /= i - 1) call write_text(file, "", error)
-                  line = row_text(table, r, c - 1, mathieu)
+                  line = row_text(table, r, c - 1, mathieu, scene)
                   call write_text(file, line, error)
                   if (r%status == status_failed) then
                      n_failed_rows = n_failed_rows + 1
@@ -630,11 +645,18 @@ contains
    end subroutine sort_keys
 
    !> One data line.
-   function row_text(table, r, curve, mathieu) result(line)
+   !> Whether the file has the column a: a scene with `&physical` and the elastic model.
+   pure logical function amplitude_column(scene)
+      type(scene_t), intent(in) :: scene
+      amplitude_column = scene%physical .and. model_is_pendulum(scene%model)
+   end function amplitude_column
+
+   function row_text(table, r, curve, mathieu, scene) result(line)
       type(column_t), intent(in) :: table(:)
       type(boundary_row_t), intent(in) :: r
       integer, intent(in) :: curve
       logical, intent(in) :: mathieu
+      type(scene_t), intent(in) :: scene
       character(len=:), allocatable :: line
       character(len=400) :: buffer
       integer :: pos
@@ -642,6 +664,7 @@ contains
       values = [r%alpha, r%beta, real(r%trace_sign, wp), real(r%order, wp), real(r%branch, wp), real(curve, wp), &
                 merge(1.0_wp, 0.0_wp, r%coexistent), real(r%status, wp), r%check, r%beta_error, real(r%modes, wp)]
       if (mathieu) values = [values, r%beta_gsl, real(r%gsl_ok, wp)]
+      if (amplitude_column(scene)) values = [values(1:1), point_amplitude(scene, 1, r%alpha, r%beta), values(2:)]
       pos = 0
       call put_row(table, all_columns(table), values, buffer, pos)
       line = buffer(:pos)

@@ -211,6 +211,15 @@ contains
       segments_line = "Qseg: Q replaced by "//integer_text(n_pieces)//" constant pieces on [0, 2), sampling "// &
                       sampling_name(scene%method%sampling)//" (2 pieces, endpoint: eq. (28) of the paper)"
       columns_line = "Q(a), Qseg(a): the two columns of alpha = a"
+      if (size(scene%amplitudes) == n_alpha) then
+         ! the curves in metres: each alpha is a bounce amplitude of &physical
+         columns_line = columns_line//"; the amplitudes [m]:"
+         do k = 1, n_alpha
+            columns_line = columns_line//" a = "//real_text(scene%amplitudes(k))//" (alpha = "// &
+                           real_text(self%alphas(k))//")"
+            if (k < n_alpha) columns_line = columns_line//","
+         end do
+      end if
       lines = stacked(common_header(scene), stacked([q_line], stacked([segments_line], [columns_line])))
 
       call open_scene_output(scene, file, error)
