@@ -538,8 +538,9 @@ contains
       unstable = abs(tr%value) > 2.0_wp .or. tr%overflow
    end function auto_unstable
 
-   !> "unstable for 0.003811 m <= a < 0.3981 m" (4 significant digits; the last interval
-   !> reaching the end of the search ends at rho), or "stable for every 0 <= a < rho".
+   !> "unstable for 0.003811 m <= a < 0.3981 m" (4 significant digits; an unstable interval
+   !> reaching the end of the search ends at rho: inside the tongue there the bounce stays
+   !> unstable up to the pivot), or "stable for every 0 m <= a <= (the end of the search)".
    function unstable_text(cuts, unstable, rho, alpha_end) result(text)
       real(wp), intent(in) :: cuts(:), rho, alpha_end
       logical, intent(in) :: unstable(:)
@@ -568,7 +569,8 @@ contains
          end block
       end do
       if (len(text) == 0) then
-         text = "stable for every 0 m <= a < "//digits4(rho)//" m"
+         text = "stable for every 0 m <= a <= (1 - "//real_text(crossing_search_gap)//") rho (the end of "// &
+                "the search; rho = "//digits4(rho)//" m)"
       else
          text = "unstable for "//text
       end if
