@@ -1,9 +1,13 @@
 # out/damped.png: damped swing (eqs. 46-48), ε = 1. Left: the correct verdict
 # |S₁| < 2 cosh ε (multipliers of x inside the unit circle); right: the paper's
 # |S₁| ≤ 2, only sufficient. Needs out/damped_chart.dat (columns stable and stable_paper).
+# Parameters: file (the chart), out (the image).
+load 'plots/columns.gp'
+if (!exists("file")) file = 'out/damped_chart.dat'
+if (!exists("out")) out = 'out/damped.png'
 set encoding utf8
 set terminal pngcairo size 1500,650 font "Sans,11"
-set output 'out/damped.png'
+set output out
 pi2 = pi**2
 set palette defined (0 "#f3efe6", 1 "#23406e")
 set cbrange [0:1]
@@ -20,11 +24,11 @@ set label 3 "β = 0  (g = 0)" at 0.15,0.4 front boxed font ",9" tc "#555555"
 set key at graph 0.01, graph 0.80 left top Left reverse box opaque samplen 2 font ",10"
 set multiplot layout 1,2 title "Damped swing, ε = κπ/ω = 1 (exact S₁; dark = asymptotically stable)" font ",13"
 set title "correct: |S₁| < 2 cosh ε"
-plot 'out/damped_chart.dat' using 'alpha':'beta':'stable' with image notitle, \
+plot named(file) using 'alpha':'beta':'stable' with image notitle, \
      keyentry with boxes fs solid 1.0 border lc "#555555" fc "#23406e" title "asymptotically stable: |S₁| < 2 cosh ε", \
      keyentry with boxes fs solid 1.0 border lc "#555555" fc "#f3efe6" title "unstable"
 set title "the paper: |S₁| ≤ 2, only sufficient: part of the stable region shown unstable"
-plot 'out/damped_chart.dat' using 'alpha':'beta':'stable_paper' with image notitle, \
+plot named(file) using 'alpha':'beta':'stable_paper' with image notitle, \
      keyentry with boxes fs solid 1.0 border lc "#555555" fc "#23406e" title "stable by the paper: |S₁| ≤ 2", \
      keyentry with boxes fs solid 1.0 border lc "#555555" fc "#f3efe6" title "not stable by the paper"
 unset multiplot

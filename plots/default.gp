@@ -1,10 +1,16 @@
 # out/default.png: the exact stability chart of the elastic pendulum beside the
 # paper's 2-piece chart of eq. (37), with the paper's Fig. 4 points.
 # Run from the repository root after the default scenes: gnuplot plots/default.gp
-# Columns by name: the scenes write a line of column names after the '#' header (names_line).
+# Parameters: file (the exact chart), paper (the eq. (37) chart), points (the Fig. 4 points
+# file written by hillstab), out (the image).
+load 'plots/columns.gp'
+if (!exists("file")) file = 'out/default_exact_chart.dat'
+if (!exists("paper")) paper = 'out/default_paper_chart.dat'
+if (!exists("points")) points = 'out/fig4_points.dat'
+if (!exists("out")) out = 'out/default.png'
 set encoding utf8
 set terminal pngcairo size 1500,650 font "Sans,11"
-set output 'out/default.png'
+set output out
 pi2 = pi**2
 
 set palette defined (0 "#f3efe6", 1 "#23406e")
@@ -29,8 +35,8 @@ set multiplot layout 1,2 title "Elastic pendulum: stability of a small swing abo
 # point labels up and to the right, except (a), which would sit under the β = π²/4 box
 label_dy(name) = name eq "(a)" ? -0.45 : 0.35
 set title "exact monodromy (method auto)"
-plot 'out/default_exact_chart.dat' using 'alpha':'beta':'stable' with image notitle, \
-     'out/fig4_points.dat' using 'alpha':'beta':(column('stable') > 0.5 ? 0x1a9850 : 0xd73027) with points pt 7 ps 1.4 lc rgb variable notitle, \
+plot named(file) using 'alpha':'beta':'stable' with image notitle, \
+     named(points) using 'alpha':'beta':(column('stable') > 0.5 ? 0x1a9850 : 0xd73027) with points pt 7 ps 1.4 lc rgb variable notitle, \
      'data/points/fig4.dat' using ($1 + 0.12):($2 + label_dy(strcol(3))):3 with labels left boxed font ",10" tc "black" notitle, \
      keyentry with boxes fs solid 1.0 border lc "#555555" fc "#23406e" title "stable chart region", \
      keyentry with boxes fs solid 1.0 border lc "#555555" fc "#f3efe6" title "unstable chart region", \
@@ -38,8 +44,8 @@ plot 'out/default_exact_chart.dat' using 'alpha':'beta':'stable' with image noti
      keyentry with points pt 7 ps 1.4 lc "#d73027" title "Fig. 4 point, unstable (exact)"
 
 set title "the paper's eq. (37): Q in two constant pieces"
-plot 'out/default_paper_chart.dat' using 'alpha':'beta':'stable' with image notitle, \
-     'out/fig4_points.dat' using 'alpha':'beta':(column('stable') > 0.5 ? 0x1a9850 : 0xd73027) with points pt 7 ps 1.4 lc rgb variable notitle, \
+plot named(paper) using 'alpha':'beta':'stable' with image notitle, \
+     named(points) using 'alpha':'beta':(column('stable') > 0.5 ? 0x1a9850 : 0xd73027) with points pt 7 ps 1.4 lc rgb variable notitle, \
      'data/points/fig4.dat' using ($1 + 0.12):($2 + label_dy(strcol(3))):3 with labels left boxed font ",10" tc "black" notitle, \
      keyentry with boxes fs solid 1.0 border lc "#555555" fc "#23406e" title "stable by eq. (37)", \
      keyentry with boxes fs solid 1.0 border lc "#555555" fc "#f3efe6" title "unstable by eq. (37)", \

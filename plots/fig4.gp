@@ -1,9 +1,13 @@
 # out/fig4.png: the paper's Fig. 4 redrawn from the nonlinear pendulum (task series):
 # phi(t) over 50 radial periods for the cases (a)-(h). Run from the repository root
 # after the scenes data/scenes/fig4[a-h].nml (`make run` does both).
+# Parameters: files (a sprintf pattern of the eight series files, %s = a ... h), out.
+load 'plots/columns.gp'
+if (!exists("files")) files = 'out/fig4%s_series.dat'
+if (!exists("out")) out = 'out/fig4.png'
 set encoding utf8
 set terminal pngcairo size 1200,1300 font "Sans,10"
-set output 'out/fig4.png'
+set output out
 set multiplot layout 4,2 title "Fig. 4: the elastic pendulum from φ(0) = 0.017 rad ((f), (h): 1e-20), 50 radial periods, DOP853 at 1e-10"
 set xlabel "t [s]"
 set ylabel "φ [rad]"
@@ -14,6 +18,6 @@ labels = "'(a) α=1.48, β=2.47' '(b) α=3.70, β=2.47' '(c) α=2.57, β=1.29 (s
 do for [i=1:8] {
    c = word(cases, i)
    set title word(labels, i)
-   plot sprintf('out/fig4%s_series.dat', c) using 1:3 with lines lw 1 lc "#23406e" notitle
+   plot named(sprintf(files, c)) using 't':'phi' with lines lw 1 lc "#23406e" notitle
 }
 unset multiplot

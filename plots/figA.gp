@@ -3,6 +3,13 @@
 #   out/figA3.png  (A3) with the exact Strutt diagram boundary over it (Fig. A3),
 #   out/figA4.png  4 averaged pieces, the paper's (A18), with the exact boundary (Fig. A4).
 # Needs out/figA_formula_chart.dat, out/figA_segments4_chart.dat, out/figA_exact_chart.dat.
+# Parameters: exact, formula, segments4 (the three charts); out (a sprintf pattern of the
+# images, %s = 1, 3, 4).
+load 'plots/columns.gp'
+if (!exists("exact")) exact = 'out/figA_exact_chart.dat'
+if (!exists("formula")) formula = 'out/figA_formula_chart.dat'
+if (!exists("segments4")) segments4 = 'out/figA_segments4_chart.dat'
+if (!exists("out")) out = 'out/figA%s.png'
 set encoding utf8
 pi2 = pi**2
 
@@ -11,7 +18,7 @@ set cntrparam levels discrete log10(2.0)
 unset surface
 set view map
 set table $strutt
-splot 'out/figA_exact_chart.dat' using 'alpha':'beta':'log10_abs_S' with lines notitle
+splot named(exact) using 'alpha':'beta':'log10_abs_S' with lines notitle
 unset table
 unset contour
 
@@ -28,16 +35,16 @@ set key at graph 0.02, graph 0.97 left top Left reverse box opaque samplen 2 fon
 key_stable = 'keyentry with boxes fs solid 1.0 border lc "#555555" fc "#23406e" title "stable"'
 key_unstable = 'keyentry with boxes fs solid 1.0 border lc "#555555" fc "#f3efe6" title "unstable"'
 
-set output 'out/figA1.png'
+set output sprintf(out, '1')
 set title "Fig. A1: Mathieu, 2-piece trace (A3)  (dark = stable)"
-plot 'out/figA_formula_chart.dat' using 'alpha':'beta':'stable' with image notitle, @key_stable, @key_unstable
+plot named(formula) using 'alpha':'beta':'stable' with image notitle, @key_stable, @key_unstable
 
-set output 'out/figA3.png'
+set output sprintf(out, '3')
 set title "Fig. A3: (A3), 2 pieces, against the exact Strutt diagram"
-plot 'out/figA_formula_chart.dat' using 'alpha':'beta':'stable' with image notitle, @key_stable, @key_unstable, \
+plot named(formula) using 'alpha':'beta':'stable' with image notitle, @key_stable, @key_unstable, \
      $strutt using 1:2 with lines lw 2 lc "#e08000" title "exact |S| = 2"
 
-set output 'out/figA4.png'
+set output sprintf(out, '4')
 set title "Fig. A4: 4 averaged pieces (A18) against the exact Strutt diagram"
-plot 'out/figA_segments4_chart.dat' using 'alpha':'beta':'stable' with image notitle, @key_stable, @key_unstable, \
+plot named(segments4) using 'alpha':'beta':'stable' with image notitle, @key_stable, @key_unstable, \
      $strutt using 1:2 with lines lw 2 lc "#e08000" title "exact |S| = 2"

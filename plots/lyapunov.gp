@@ -6,9 +6,14 @@
 # their verdict is certain, so their exponent is over fewer periods (the periods column).
 # Needs out/lyapunov_map_lyapunov.dat and out/boundaries_exact_boundaries.dat (scenes
 # lyapunov_map.nml, boundaries_exact.nml). Run from the repository root.
+# Parameters: file (the lyapunov map), curves (the boundaries file), out.
+load 'plots/columns.gp'
+if (!exists("file")) file = 'out/lyapunov_map_lyapunov.dat'
+if (!exists("curves")) curves = 'out/boundaries_exact_boundaries.dat'
+if (!exists("out")) out = 'out/lyapunov.png'
 set encoding utf8
 set terminal pngcairo size 1500,680 font "Sans,11"
-set output 'out/lyapunov.png'
+set output out
 pi2 = pi**2
 set xrange [0.05:9.8]
 set yrange [0.1:9.75]
@@ -21,17 +26,17 @@ set palette defined (0 "#fbfbf4", 0.06 "#fde8a0", 0.2 "#f39a3d", 0.5 "#c4312b", 
 set cbrange [0:0.5]
 set cblabel "λ (per radial period)"
 set key at graph 0.02, graph 0.98 left top Left reverse box opaque samplen 2 font ",9"
-plot 'out/lyapunov_map_lyapunov.dat' using 1:2:($3 < 0 ? 0 : $3) with image notitle, \
-     'out/boundaries_exact_boundaries.dat' using 1:($3 > 0 ? $2 : 1/0) with lines lw 1.5 lc "#1f4e9c" title "S = +2", \
-     '' using 1:($3 < 0 ? $2 : 1/0) with lines lw 1.5 lc "#2a9d8f" title "S = −2"
+plot named(file) using 'alpha':'beta':(column('lyapunov') < 0 ? 0 : column('lyapunov')) with image notitle, \
+     named(curves) using 'alpha':(column('kind') > 0 ? column('beta') : 1/0) with lines lw 1.5 lc "#1f4e9c" title "S = +2", \
+     named(curves) using 'alpha':(column('kind') < 0 ? column('beta') : 1/0) with lines lw 1.5 lc "#2a9d8f" title "S = −2"
 
 set title "verdicts: the chart's (linear) and the orbit's (MEGNO)"
 unset colorbox
 set palette defined (0 "#dfe7f2", 1 "#7a5195", 2 "#f6c85f", 3 "#b2182b", 4 "#9a9a9a")
 set cbrange [0:4]
 verdict(stable, chaotic) = chaotic == 0.5 ? 4 : (stable >= 0.5 ? 0 : 2) + (chaotic > 0.5 ? 1 : 0)
-plot 'out/lyapunov_map_lyapunov.dat' using 1:2:(verdict($5, $10)) with image notitle, \
-     'out/boundaries_exact_boundaries.dat' using 1:2 with lines lw 1 lc "#555555" notitle, \
+plot named(file) using 'alpha':'beta':(verdict(column('stable'), column('chaotic'))) with image notitle, \
+     named(curves) using 'alpha':'beta' with lines lw 1 lc "#555555" notitle, \
      keyentry with boxes fs solid 1.0 fc "#dfe7f2" title "chart stable, orbit regular", \
      keyentry with boxes fs solid 1.0 fc "#7a5195" title "chart stable, orbit chaotic", \
      keyentry with boxes fs solid 1.0 fc "#f6c85f" title "chart unstable, orbit regular", \

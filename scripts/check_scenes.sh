@@ -49,6 +49,15 @@ for scene in data/scenes/*.nml; do
 done
 seconds=$(( $(date +%s) - start ))
 
+# every data line is numbers, so that numpy.loadtxt(comments='#') and awk read the files as
+# they are (the column names are on the '# columns:' line only)
+for file in "$work"/out/*; do
+   if grep -av '^#' "$file" | grep -aqvE '^[[:space:]]*$|^[-+0-9.eE[:space:]]+$'; then
+      echo "check_scenes: $(basename "$file"): a data line that is not numbers" >&2
+      exit 1
+   fi
+done
+
 current=$work/checksums.txt
 (
    cd "$work/out"

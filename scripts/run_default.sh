@@ -14,10 +14,11 @@ cd "$(dirname "$0")/.."
 scenes_dir=${HILLSTAB_SCENES:-data/scenes}
 scenes=(default_exact default_paper fig4_points fig2_coefficient
         figA_mathieu_formula figA_mathieu_segments4 figA_mathieu_exact damped spring_physical
+        spring_amplitudes spring_boundaries spring_series spring_chart
         fig4a fig4b fig4c fig4d fig4e fig4f fig4g fig4h
         boundaries_chart boundaries_exact boundaries_paper boundaries_mathieu
         lyapunov_map lyapunov_fig4 poincare_regular poincare_chaotic)
-plots=(default fig2 fig3 figA damped fig4 boundaries fig3_boundaries strutt lyapunov poincare)
+plots=(default fig2 fig3 figA damped fig4 boundaries fig3_boundaries strutt lyapunov poincare spring_chart)
 
 command -v gnuplot >/dev/null 2>&1 || { echo "run_default: gnuplot not found (run scripts/setup.sh)" >&2; exit 1; }
 
@@ -41,5 +42,5 @@ seconds=$(( $(date +%s) - start ))
 echo
 echo "hillstab: scenes run and figures drawn in ${seconds} s"
 echo "  default figure (exact chart beside the paper's): out/default.png"
-echo "  other figures: $(cd out && ls fig*.png damped.png boundaries.png strutt.png onset.png lyapunov.png poincare.png | sed 's|^|out/|' | tr '\n' ' ')"
+echo "  other figures: $(cd out && ls fig*.png damped.png boundaries.png strutt.png onset.png lyapunov.png poincare.png spring_chart.png | sed 's|^|out/|' | tr '\n' ' ')"
 echo "  data (gnuplot-ready, header = scene to repeat the run): out/*.dat"

@@ -412,6 +412,43 @@ contains
          bad_case_t(s//"/ &chart / &physical omega=3, r0=1, a=0.5 /", "physical", "a"), &
          bad_case_t(s//"/ &chart / &physical omega=-3 /", "physical", "omega"), &
          bad_case_t(s//"/ &chart / &physical omega=3, k=2 /", "physical", "k"), &
+         bad_case_t(sp//"&physical omega=10, k=25, m=0.25, r0=0.3, a=0.1 /", "physical", "k: omega and k are both"), &
+         bad_case_t(sp//"&physical k=0, m=0.25, r0=0.3, a=0.1 /", "physical", "k: the spring constant must be > 0"), &
+         bad_case_t(sp//"&physical k=-25, m=0.25, r0=0.3, a=0.1 /", "physical", "k: the spring constant must be > 0"), &
+         bad_case_t(sp//"&physical k=25, m=0, r0=0.3, a=0.1 /", "physical", "m: the mass must be > 0"), &
+         bad_case_t(sp//"&physical k=25, m=-1, r0=0.3, a=0.1 /", "physical", "m: the mass must be > 0"), &
+         bad_case_t(sp//"&physical k=25, m=nan, r0=0.3, a=0.1 /", "physical", "m: not a finite number"), &
+         bad_case_t(sp//"&physical k=25, r0=0.3, a=0.1 /", "physical", "m: k (spring constant"), &
+         bad_case_t(sp//"&physical m=0.25, r0=0.3, a=0.1 /", "physical", "k: k (spring constant"), &
+         bad_case_t(sp//"&physical k=25, m=0.25, r0=0.3, a=0.3981 /", "physical", "a: the amplitude must satisfy"), &
+         bad_case_t(sp//"&physical k=25, m=0.25, r0=0.3, a_min=0, a_max=0.4, n_a=3 /", "physical", &
+                    "a_max: the amplitude must satisfy"), &
+         bad_case_t(sp//"&physical k=25, m=0.25, r0=0.3, a_min=-0.1, a_max=0.2, n_a=3 /", "physical", &
+                    "a_min: the amplitude must satisfy"), &
+         bad_case_t(sp//"&physical k=25, m=0.25, r0=0.3, a_min=0.2, a_max=0.1, n_a=3 /", "physical", &
+                    "a_max: must be >= a_min"), &
+         bad_case_t(sp//"&physical k=25, m=0.25, r0=0.3, a_min=0, a_max=0.1, n_a=0 /", "physical", "n_a: must be >= 1"), &
+         bad_case_t(sp//"&physical k=25, m=0.25, r0=0.3, a_min=0, a_max=0.1 /", "physical", "n_a: a_min, a_max and n_a"), &
+         bad_case_t(sp//"&physical k=25, m=0.25, r0=0.3, a=0.1, a_max=0.2 /", "physical", "a_max: give the amplitudes"), &
+         bad_case_t(sp//"&physical k=25, m=0.25, a_min=0, a_max=0.1, n_a=3 /", "physical", "r0"), &
+         bad_case_t(s//"task='coefficient' / &physical k=25, m=0.25, r0=0.3, a_min=0, a_max=0.1, n_a=65 /", &
+                    "physical", "n_a: task 'coefficient' draws at most 64"), &
+         bad_case_t("&scene output='@OUT@' / &physical r0=0.3, a_min=0, a_max=0.33, n_a=3, omega_min=5, "// &
+                    "omega_max=20, n_omega=3 /", "physical", "a_max: a = 0.33 m reaches the pivot"), &
+         bad_case_t("&scene output='@OUT@' / &physical r0=0.3, a_min=0, a_max=0.33, n_a=3, omega_min=5, "// &
+                    "omega_max=20, n_omega=3 /", "physical", "largest valid a is rho(omega_max)"), &
+         bad_case_t("&scene output='@OUT@' / &chart / &physical r0=0.3, a_min=0, a_max=0.2, n_a=3, omega_min=5, "// &
+                    "omega_max=20, n_omega=3 /", "chart", "alpha_min: the chart runs either"), &
+         bad_case_t(sp//"&physical r0=0.3, a_min=0, a_max=0.2, n_a=3, omega_min=5, omega_max=20, n_omega=3 /", &
+                    "physical", "n_omega: a range of omega"), &
+         bad_case_t("&scene output='@OUT@' / &physical omega=10, r0=0.3, a_min=0, a_max=0.2, n_a=3, "// &
+                    "omega_min=5, omega_max=20, n_omega=3 /", "physical", "omega_min: give omega"), &
+         bad_case_t("&scene output='@OUT@' / &physical r0=0.3, a_min=0, a_max=0.2, n_a=3, omega_min=5, "// &
+                    "omega_max=20 /", "physical", "n_omega: omega_min, omega_max and"), &
+         bad_case_t("&scene output='@OUT@' / &physical r0=0.3, a_min=0, a_max=0.2, n_a=3, omega_min=0, "// &
+                    "omega_max=20, n_omega=3 /", "physical", "omega_min: must be > 0"), &
+         bad_case_t("&scene output='@OUT@' / &physical r0=0.3, omega_min=5, omega_max=20, n_omega=3 /", &
+                    "physical", "a_min: a chart over (a, omega) needs"), &
          bad_case_t(s//"task='coefficient' / &coefficient beta=2 / &physical omega=3, r0=1, a=0.5 /", &
                     "coefficient", "beta"), &
          bad_case_t(s//"&chart n_alpha=3 /", "scene", "not closed: no '/' before '&chart'"), &
@@ -425,6 +462,11 @@ contains
          bad_case_t(s//"format='hdf5' / &chart /", "scene", "format"), &
          bad_case_t(s//"format='binary', names_line=.true. / &chart /", "scene", "names_line"), &
          bad_case_t(s//"names_line=3 / &chart /", "scene", "names_line"), &
+         bad_case_t(s//"task='coefficient', names_line=.true. / &coefficient /", "scene", "names_line: columns, format"), &
+         bad_case_t(s//"task='boundaries', names_line=.true. / &chart /", "scene", "names_line: columns, format"), &
+         bad_case_t(s//"task='series', names_line=.true. / &series /", "scene", "names_line: columns, format"), &
+         bad_case_t(s//"task='series', columns='t' / &series /", "scene", "columns: columns, format"), &
+         bad_case_t(s//"task='poincare', format='binary' / &series /", "scene", "format: columns, format"), &
          bad_case_t(s//"task='coefficient', format='binary' / &coefficient /", "scene", "format"), &
          bad_case_t(s//"task='coefficient', columns='tau' / &coefficient /", "scene", "columns"), &
          bad_case_t(s//"/ &chart beta_max = -, /", "chart", "beta_max: no value"), &

@@ -3,7 +3,9 @@
 !> values at α = 0 against β = (nπ/2)², the accuracy bar (a boundary at a grid α
 !> within 1e-9 of the β found by bisection on S with method auto at tolerance 1e-13,
 !> or of the exact β = 0 and π²), repeating a run from its output, the approximate
-!> curves of eq. (37) (S_formula = ±2 at every root), and the Mathieu model's GSL column.
+!> curves of eq. (37) (S_formula = ±2 at every root), the Mathieu model's GSL column, and
+!> the critical amplitudes of a spring (`&physical` without `&chart`) against a scan of S
+!> along α with method auto and bisection.
 module test_task_boundaries
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t, err_input
@@ -29,7 +31,10 @@ contains
          new_unittest("repeat_from_output", repeat_from_output), &
          new_unittest("paper_formula_curves", paper_formula_curves), &
          new_unittest("mathieu_gsl_column", mathieu_gsl_column), &
-         new_unittest("damping_refused", damping_refused)])
+         new_unittest("damping_refused", damping_refused), &
+         new_unittest("spring_critical_amplitudes", spring_critical_amplitudes), &
+         new_unittest("spring_bad_input", spring_bad_input), &
+         new_unittest("physical_curves_a_column", physical_curves_a_column)])
    end function collect_task_boundaries
 
    !> Two scene lines as one array (built here: typed array constructors with
@@ -293,4 +298,177 @@ contains
       inquire (file=out//"_boundaries.dat", exist=exists)
       call check(ctx, .not. exists, "no file written")
    end subroutine damping_refused
+   !> |S(alpha, beta)| - 2 by method auto (the reference of the spring tests).
+   real(wp) function excess(alpha, beta)
+      real(wp), intent(in) :: alpha, beta
+      type(trace_t) :: tr
+      type(error_t), allocatable :: error
+      call monodromy_trace(hill_model_t(model_elastic, alpha, beta, 0.0_wp), method_t(method_auto, tolerance=1.0e-12_wp), &
+                           tr, error)
+      excess = abs(tr%value) - 2.0_wp
+   end function excess
+
+   !> Every alpha in [0, alpha_end] where |S| - 2 by auto changes sign along alpha at fixed
+   !> beta: a scan (400 steps up to 0.95 pi^2, then 40 a decade in 1 - alpha/pi^2), each
+   !> sign change bisected to 1e-12.
+   function bisected_crossings(beta, alpha_end) result(roots)
+      real(wp), intent(in) :: beta, alpha_end
+      real(wp), allocatable :: roots(:)
+      real(wp), allocatable :: alphas(:), f(:)
+      real(wp) :: lo, hi, mid, f_lo, f_mid
+      integer :: j, n_uniform, n_end, iteration
+      n_uniform = 400
+      n_end = ceiling(40.0_wp*log10(0.05_wp/(1.0_wp - alpha_end/pi2)))
+      allocate (alphas(n_uniform + 1 + n_end))
+      do j = 0, n_uniform
+         alphas(j + 1) = 0.95_wp*pi2*real(j, wp)/real(n_uniform, wp)
+      end do
+      do j = 1, n_end
+         alphas(n_uniform + 1 + j) = pi2*(1.0_wp - 0.05_wp*((1.0_wp - alpha_end/pi2)/0.05_wp)**(real(j, wp)/n_end))
+      end do
+      allocate (f(size(alphas)), roots(0))
+      do j = 1, size(alphas)
+         f(j) = excess(alphas(j), beta)
+      end do
+      do j = 1, size(alphas) - 1
+         if ((f(j) < 0.0_wp) .eqv. (f(j + 1) < 0.0_wp)) cycle
+         lo = alphas(j); hi = alphas(j + 1); f_lo = f(j)
+         do iteration = 1, 100
+            if (hi - lo <= 1.0e-12_wp) exit
+            mid = 0.5_wp*(lo + hi)
+            f_mid = excess(mid, beta)
+            if ((f_mid < 0.0_wp) .eqv. (f_lo < 0.0_wp)) then
+               lo = mid; f_lo = f_mid
+            else
+               hi = mid
+            end if
+         end do
+         roots = [roots, 0.5_wp*(lo + hi)]
+      end do
+   end function bisected_crossings
+
+   !> The critical amplitudes of three springs — k = 25 N/m, m = 0.25 kg, r0 = 0.3 m
+   !> (beta just below pi^2/4), omega = 10 rad/s with r0 = 0.1 m (beta > pi^2/4) and with
+   !> r0 = 0.005 m (beta = 9.39, near pi^2: the crossing at 1 - alpha/pi^2 = 5e-4) and with
+   !> r0 = 0.002 m (beta = 9.67: the crossing beyond the end of the search) — against
+   !> bisection on S by auto along alpha: the same number of crossings, each alpha within
+   !> 1e-8, a = alpha rho/pi^2 with rho = r0 + g m/k, S = -2 by auto there; the header's
+   !> unstable interval from the reference's verdicts.
+   subroutine spring_critical_amplitudes(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=40), parameter :: springs(4) = [character(len=40) :: "k = 25, m = 0.25, r0 = 0.3", &
+                                                   "omega = 10, r0 = 0.1", "omega = 10, r0 = 0.005", &
+                                                   "omega = 10, r0 = 0.002"]
+      real(wp), parameter :: r0s(4) = [0.3_wp, 0.1_wp, 0.005_wp, 0.002_wp], g = 9.81_wp
+      real(wp), parameter :: alpha_end = pi2*(1.0_wp - 1.0e-4_wp)
+      real(wp), allocatable :: rows(:, :), reference(:)
+      character(len=1024), allocatable :: lines(:)
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out
+      real(wp) :: rho, beta
+      integer :: i, j
+      do i = 1, 4
+         out = scratch_prefix("bnd_spring")
+         call run_rows("bnd_spring", two_lines("&scene task='boundaries', output='"//out//"' /", &
+            "&physical "//trim(springs(i))//", g = 9.81 /"), 11, rows, lines, error)
+         call check(ctx, .not. allocated(error), "spring run: "//trim(springs(i)))
+         if (allocated(error)) then
+            call check(ctx, .false., error%message)
+            cycle
+         end if
+         call check(ctx, any(lines == "# columns: a alpha beta kind order branch status check a_error alpha_error "// &
+                             "modes"), "columns")
+         rho = r0s(i) + g/100.0_wp   ! omega = 10 rad/s in all three (k/m = 100)
+         beta = g*pi2/(rho*100.0_wp)
+         reference = bisected_crossings(beta, alpha_end)
+         call check(ctx, size(rows, 2) == size(reference), "as many crossings as bisection finds: "//trim(springs(i)))
+         if (i == 4) then
+            ! beta = 9.67: the tongue's edge lies closer to the pivot than the search goes
+            call check(ctx, size(reference) == 0, "no crossing within the search by bisection either")
+            call check(ctx, excess(0.5_wp*alpha_end, beta) < 0.0_wp .and. excess(alpha_end, beta) < 0.0_wp, &
+                       "stable at the middle and at the end of the search")
+            call check(ctx, any(index(lines, "stable for every 0 m <= a <= (1 - 0.0001) rho") > 0), &
+                       "stable up to the end of the search, no claim beyond")
+            cycle
+         end if
+         call check(ctx, size(reference) == 1, "one crossing (the first tongue's edge)")
+         if (size(rows, 2) /= size(reference)) cycle
+         do j = 1, size(reference)
+            call check(ctx, rows(2, j), reference(j), rel=1.0e-8_wp, abs=1.0e-8_wp, message="alpha against bisection")
+            call check(ctx, rows(1, j), rows(2, j)*rho/pi2, rel=1.0e-14_wp, message="a = alpha rho/pi^2")
+            call check(ctx, rows(3, j), beta, rel=1.0e-14_wp, message="beta of the spring")
+            call check(ctx, rows(4, j) == -2.0_wp .and. rows(7, j) == 0.0_wp, "antiperiodic, status 0")
+            call check(ctx, rows(8, j), -2.0_wp, rel=1.0e-8_wp, message="check: S = -2 by auto")
+         end do
+         ! unstable from the crossing to the pivot: the reference's verdicts either side
+         call check(ctx, excess(0.5_wp*reference(1), beta) < 0.0_wp .and. &
+                    excess(0.5_wp*(reference(1) + alpha_end), beta) > 0.0_wp, "stable below, unstable above")
+         call check(ctx, any(index(lines, "unstable for "//digits(reference(1)*rho/pi2)//" m <= a < "// &
+                             digits(rho)//" m") > 0), "unstable interval in metres: "//digits(reference(1)*rho/pi2))
+         if (i == 1) call check(ctx, any(index(lines, "unstable for 0.003811 m <= a < 0.3981 m") > 0), &
+                                "the spring of the README")
+      end do
+   contains
+      function digits(x) result(text)
+         real(wp), intent(in) :: x
+         character(len=:), allocatable :: text
+         character(len=32) :: buffer
+         write (buffer, '(f0.'//char(iachar('0') + max(0, 3 - floor(log10(x))))//')') x
+         text = trim(adjustl(buffer))
+         if (text(1:1) == ".") text = "0"//text
+      end function digits
+   end subroutine spring_critical_amplitudes
+
+   !> A spring's critical amplitudes need r0, no damping, no amplitudes, the elastic model
+   !> and an exact method; a chart with r0 is refused; each is bad input naming the variable.
+   subroutine spring_bad_input(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=80), parameter :: cases(6) = [character(len=80) :: &
+         "&physical omega = 10 /", "&physical omega = 10, r0 = 0.3, kappa = 0.1 /", &
+         "&physical omega = 10, r0 = 0.3, a = 0.1 /", "&physical omega = 10, r0 = 0.3, g = 0 /", &
+         "&physical omega = 10, r0 = 0.3 / &chart n_alpha = 2 /", "&physical omega = 10, r0 = 0.3 /"]
+      character(len=12), parameter :: variables(6) = [character(len=12) :: "r0", "kappa", "a", "g", "r0", "method"]
+      real(wp), allocatable :: rows(:, :)
+      character(len=1024), allocatable :: lines(:)
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out, scene
+      logical :: exists
+      integer :: i
+      do i = 1, size(cases)
+         out = scratch_prefix("bnd_spring_bad")
+         scene = "&scene task='boundaries', output='"//out//"'"
+         if (i == 6) scene = scene//", method = 'formula'"
+         call run_rows("bnd_spring_bad", two_lines(scene//" /", trim(cases(i))), 11, rows, lines, error)
+         call check(ctx, allocated(error), "refused: "//trim(cases(i)))
+         if (.not. allocated(error)) cycle
+         call check(ctx, error%code == err_input, "input error")
+         call check(ctx, index(error%message, ": "//trim(variables(i))//": ") > 0, "names "//trim(variables(i))// &
+                    ": "//error%message)
+         inquire (file=out//"_boundaries.dat", exist=exists)
+         call check(ctx, .not. exists, "no file written")
+      end do
+   end subroutine spring_bad_input
+   !> The curves over &chart of a scene with &physical omega carry a = alpha rho/pi^2 with
+   !> rho = g pi^2/(beta omega^2), written out here, beside alpha.
+   subroutine physical_curves_a_column(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), allocatable :: rows(:, :)
+      character(len=1024), allocatable :: lines(:)
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out
+      integer :: j
+      out = scratch_prefix("bnd_phys")
+      call run_rows("bnd_phys", two_lines("&scene task='boundaries', output='"//out//"' / &physical omega = 10, "// &
+         "g = 9.81 /", "&chart alpha_max = 2, n_alpha = 3, beta_min = 0.5, beta_max = 4 /"), 12, rows, lines, error)
+      call check(ctx, .not. allocated(error), "curves with &physical omega")
+      if (allocated(error)) return
+      call check(ctx, any(lines == "# columns: alpha a beta kind order branch curve coexist status check beta_error "// &
+                          "modes"), "the a column beside alpha")
+      call check(ctx, size(rows, 2) >= 6, "the two edges of the first tongue at three alpha")
+      do j = 1, size(rows, 2)
+         call check(ctx, rows(2, j), rows(1, j)*9.81_wp/(rows(3, j)*100.0_wp), rel=1.0e-14_wp, abs=1.0e-300_wp, &
+                    message="a = alpha g/(beta omega^2)")
+      end do
+   end subroutine physical_curves_a_column
+
 end module test_task_boundaries

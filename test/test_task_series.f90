@@ -2,7 +2,8 @@
 !> units, samples at exactly t = j T / samples_per_period, the columns against each
 !> other (r, φ from x, z; E from the state), the exact bounce from φ0 = 0, a run repeated
 !> from its own output, bad input (exit-2 class errors naming file, group and variable,
-!> no file), the 1e8-line limit, and the hard cases (finite, documented behaviour).
+!> no file), the 1e8-line limit, the hard cases (finite, documented behaviour), and a
+!> spring of `&physical` run for a duration in seconds against the same run in periods.
 module test_task_series
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t, err_input
@@ -25,6 +26,8 @@ contains
          new_unittest("bounce_from_zero_angle", bounce_from_zero_angle), &
          new_unittest("repeat_from_output", repeat_from_output), &
          new_unittest("bad_input", bad_input), &
+         new_unittest("seconds_and_physical", seconds_and_physical), &
+         new_unittest("physical_bad_input", physical_bad_input), &
          new_unittest("hard_cases", hard_cases)])
    end function collect_task_series
 
@@ -213,6 +216,133 @@ contains
       call check(ctx, allocated(error), "mathieu model refused")
       if (allocated(error)) call check(ctx, contains_text(error%message, "&scene: model:"), error%message)
    end subroutine bad_input
+
+   !> A spring of &physical (k, m, r0, g, one a) run for `duration` seconds: rows at exactly
+   !> t_j = j T/samples (T = 2 pi sqrt(m/k) here), the last one at t <= duration within one
+   !> spacing, as many as floor(duration/spacing) + 1; and the same rows as the run of
+   !> &series alpha, beta, r0, g (alpha, beta read from the first run's header) in periods,
+   !> when the duration ends within that run's last spacing.
+   subroutine seconds_and_physical(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: spring = "&physical k = 25, m = 0.25, g = 9.81, r0 = 0.3, a = 0.05 /"
+      character(len=1024), allocatable :: lines(:), by_periods(:), by_seconds(:)
+      type(error_t), allocatable :: error
+      real(wp), allocatable :: rows(:, :)
+      real(wp) :: period, spacing, t_last
+      character(len=:), allocatable :: alpha_text, beta_text, header
+      character(len=64) :: duration_text
+      integer :: k, j, n_data
+      period = 2.0_wp*pi*sqrt(0.25_wp/25.0_wp)
+      spacing = period/20.0_wp
+      call run_physical("series_sec", "&series duration = 3.0, samples_per_period = 20 /", spring, lines, error)
+      call check(ctx, .not. allocated(error), "series in seconds with &physical")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      rows = rows_of(lines)
+      call check(ctx, size(rows, 2) == floor(3.0_wp/spacing) + 1, "floor(duration/spacing) + 1 rows")
+      do j = 1, size(rows, 2)
+         call check(ctx, rows(1, j), real(j - 1, wp)*period/20.0_wp, rel=1.0e-15_wp, abs=1.0e-300_wp, &
+                    message="t_j = j T/samples")
+      end do
+      t_last = rows(1, size(rows, 2))
+      call check(ctx, t_last <= 3.0_wp .and. 3.0_wp - t_last < spacing, "last row within one spacing of duration")
+      call check(ctx, rows(2, 1), 0.3_wp + 9.81_wp*0.25_wp/25.0_wp - 0.05_wp, rel=1.0e-14_wp, &
+                 message="r(0) = rho - a, rho = r0 + m g/k")
+      ! alpha and beta as the header states them (shortest round-trip text)
+      alpha_text = ""
+      beta_text = ""
+      do k = 1, size(lines)
+         header = trim(lines(k))
+         j = index(header, "# the pendulum of &physical: alpha = a pi^2/rho = ")
+         if (j == 1) then
+            header = header(len("# the pendulum of &physical: alpha = a pi^2/rho = ") + 1:)
+            alpha_text = header(:index(header, ",") - 1)
+            beta_text = header(index(header, "beta = ") + 7:index(header, " (eq.") - 1)
+         end if
+      end do
+      call check(ctx, len(alpha_text) > 0 .and. len(beta_text) > 0, "alpha and beta in the header")
+      if (len(alpha_text) == 0) return
+      call run_series_text("series_per", "&series alpha = "//alpha_text//", beta = "//beta_text// &
+                           ", r0 = 0.3, g = 9.81, periods = 4, samples_per_period = 20 /", "", by_periods, error)
+      call check(ctx, .not. allocated(error), "the same pendulum in periods")
+      if (allocated(error)) return
+      rows = rows_of(by_periods)
+      t_last = rows(1, size(rows, 2))
+      write (duration_text, '(es24.17)') t_last + 0.5_wp*spacing
+      call run_physical("series_sec2", "&series duration = "//trim(duration_text)//", samples_per_period = 20 /", &
+                        spring, by_seconds, error)
+      call check(ctx, .not. allocated(error), "the duration of 4 periods")
+      if (allocated(error)) return
+      n_data = 0
+      call check(ctx, size(rows_of(by_seconds), 2) == 81, "4 periods of 20 samples and t = 0")
+      do k = 1, size(by_periods)
+         if (by_periods(k)(1:1) == "#") cycle
+         n_data = n_data + 1
+         j = data_line(by_seconds, n_data)
+         if (j == 0) exit
+         call check(ctx, by_seconds(j) == by_periods(k), "the same row in seconds and in periods")
+      end do
+      call check(ctx, n_data == 81, "every row compared")
+   end subroutine seconds_and_physical
+
+   !> The index of the n-th data line (0 when there are fewer).
+   pure integer function data_line(lines, n) result(j)
+      character(len=*), intent(in) :: lines(:)
+      integer, intent(in) :: n
+      integer :: count
+      count = 0
+      do j = 1, size(lines)
+         if (lines(j)(1:1) == "#" .or. len_trim(lines(j)) == 0) cycle
+         count = count + 1
+         if (count == n) return
+      end do
+      j = 0
+   end function data_line
+
+   !> Run a series scene with a &physical line.
+   subroutine run_physical(name, group_series, physical, lines, error)
+      character(len=*), intent(in) :: name, group_series, physical
+      character(len=1024), allocatable, intent(out) :: lines(:)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: written
+      call run_text_scene(name, [padded("&scene task = 'series', output = '"//scratch_prefix(name)//"' /"), &
+                                 padded(group_series), padded(physical)], error, written)
+      if (allocated(error)) return
+      call read_series_file(written, lines)
+      call delete_file(written)
+   end subroutine run_physical
+
+   !> Bad input of a series in seconds or in physical units: exit-2 class errors naming
+   !> file, group and variable, no file.
+   subroutine physical_bad_input(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=80), parameter :: cases(8) = [character(len=80) :: &
+         "&series duration = 0 /", "&series duration = -2 /", "&series duration = 2, periods = 3 /", &
+         "&series alpha = 1.0 /", "&series r0 = 0.2 /", "&series duration = 1e-4 /", &
+         "&series duration = 1e9, samples_per_period = 1000 /", "&series /"]
+      character(len=40), parameter :: where(8) = [character(len=40) :: "&series: duration:", "&series: duration:", &
+         "&series: duration:", "&series: alpha:", "&series: r0:", "&series: duration:", "&series: duration:", &
+         "&physical: a:"]
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out, written, physical
+      integer :: k
+      out = scratch_prefix("series_pbad")
+      do k = 1, size(cases)
+         physical = "&physical k = 25, m = 0.25, g = 9.81, r0 = 0.3, a = 0.05 /"
+         if (k == 8) physical = "&physical k = 25, m = 0.25, g = 9.81, r0 = 0.3, a = 0.05, 0.1 /"
+         call run_text_scene("series_pbad", [padded("&scene task = 'series', output = '"//out//"' /"), &
+                             padded(cases(k)), padded(physical)], error, written)
+         call check(ctx, allocated(error), "error for "//trim(cases(k)))
+         if (allocated(error)) then
+            call check(ctx, error%code == err_input, "input error code for "//trim(cases(k)))
+            call check(ctx, contains_text(error%message, trim(where(k))), "names "//trim(where(k))//": "// &
+                       error%message)
+         end if
+         call check(ctx, .not. file_exists(out//"_series.dat"), "no file for "//trim(cases(k)))
+      end do
+   end subroutine physical_bad_input
 
    !> α = 9.8 (r_min = 0.7 % of ρ), ε = 3, φ0 = 1e-300, φ0 = π/2, 10⁴ periods: finite rows,
    !> and the documented behaviour of each.

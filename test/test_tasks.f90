@@ -32,6 +32,8 @@ contains
          new_unittest("failed_points_written", failed_points_written), &
          new_unittest("repeat_from_output", repeat_from_output), &
          new_unittest("physical_units", physical_units), &
+         new_unittest("spring_k_m_and_range", spring_k_m_and_range), &
+         new_unittest("chart_over_a_and_omega", chart_over_a_and_omega), &
          new_unittest("domain_notes", domain_notes), &
          new_unittest("chosen_columns_and_binary", chosen_columns_and_binary), &
          new_unittest("bad_input_touches_nothing", bad_input_touches_nothing), &
@@ -496,20 +498,21 @@ contains
          return
       end if
       first = read_lines(written)
-      call check(ctx, columns_line(first) == "alpha beta S stable lambda_max mu log10_abs_S overflow physical mu_per_s "// &
-                 "error_estimate status", &
+      call check(ctx, columns_line(first) == "alpha a beta S stable lambda_max mu log10_abs_S overflow physical "// &
+                 "mu_per_s error_estimate status", &
                  "columns: "//columns_line(first))
-      call data_rows(first, 12, rows, n_blank, numeric)
-      call check(ctx, numeric .and. size(rows, 2) == 3, "three rows of 12 numbers")
+      call data_rows(first, 13, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 3, "three rows of 13 numbers")
       if (size(rows, 2) /= 3) return
       rho = r0 + g/omega**2
       beta = g*pi2/(rho*omega**2)
       do k = 1, 3
          call check(ctx, rows(1, k), amplitudes(k)*pi2/rho, rel=1.0e-14_wp, message="alpha = a pi^2/rho")
-         call check(ctx, rows(2, k), beta, rel=1.0e-14_wp, message="beta = g pi^2/(rho omega^2)")
-         call check(ctx, rows(10, k), rows(6, k)*omega/pi, rel=1.0e-9_wp, abs=1.0e-300_wp, message="mu_per_s")
+         call check(ctx, rows(2, k), amplitudes(k), rel=1.0e-15_wp, message="a as given")
+         call check(ctx, rows(3, k), beta, rel=1.0e-14_wp, message="beta = g pi^2/(rho omega^2)")
+         call check(ctx, rows(11, k), rows(7, k)*omega/pi, rel=1.0e-9_wp, abs=1.0e-300_wp, message="mu_per_s")
       end do
-      call check(ctx, rows(10, 3) > 0.0_wp, "a = 0.3 m grows")
+      call check(ctx, rows(11, 3) > 0.0_wp, "a = 0.3 m grows")
       call check_rerun(ctx, written, first, again, ok)
       if (.not. ok) return
       call delete_file(written)
@@ -520,13 +523,14 @@ contains
       call check(ctx, .not. allocated(error), "physical Mathieu points run")
       if (allocated(error)) return
       first = read_lines(written)
-      call check(ctx, columns_line(first) == "alpha beta S stable lambda_max mu log10_abs_S overflow stable_paper "// &
+      call check(ctx, columns_line(first) == "alpha a beta S stable lambda_max mu log10_abs_S overflow stable_paper "// &
                  "mu_per_s error_estimate status", "Mathieu columns: "//columns_line(first))
-      call data_rows(first, 12, rows, n_blank, numeric)
-      call check(ctx, numeric .and. size(rows, 2) == 3, "three rows of 12 numbers")
+      call data_rows(first, 13, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 3, "three rows of 13 numbers")
       if (size(rows, 2) /= 3) return
       do k = 1, 3
          call check(ctx, rows(1, k), amplitudes(k)*pi2/rho*(1.0_wp - beta/pi2), rel=1.0e-14_wp, message="nu")
+         call check(ctx, rows(2, k), amplitudes(k), rel=1.0e-15_wp, message="Mathieu: a as given")
       end do
       call check(ctx, any(index(first, "# &physical omega = 10.0, g = 9.81, kappa = 0.5, r0 = 0.3, a = 0.05, 0.2, "// &
                  "0.3 /") == 1), "effective &physical in the header")
@@ -542,17 +546,142 @@ contains
       call check(ctx, .not. allocated(error), "physical chart run")
       if (allocated(error)) return
       first = read_lines(written)
-      call check(ctx, columns_line(first) == "alpha beta S stable lambda_max mu log10_abs_S overflow physical "// &
+      call check(ctx, columns_line(first) == "alpha a beta S stable lambda_max mu log10_abs_S overflow physical "// &
                  "stable_paper mu_per_s error_estimate status", "chart columns: "//columns_line(first))
-      call data_rows(first, 13, rows, n_blank, numeric)
-      call check(ctx, numeric .and. size(rows, 2) == 15, "15 rows of 13 numbers")
-      call check(ctx, count(rows(4, :) == 1.0_wp) >= 3, "some stable points")
+      call data_rows(first, 14, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 15, "15 rows of 14 numbers")
+      call check(ctx, count(rows(5, :) == 1.0_wp) >= 3, "some stable points")
       do k = 1, size(rows, 2)
-         if (rows(4, k) == 1.0_wp) call check(ctx, rows(11, k), -0.25_wp, rel=1.0e-9_wp, message="decay -kappa/2")
-         if (rows(4, k) == 0.0_wp) call check(ctx, rows(11, k) > -0.25_wp, "unstable: slower decay or growth")
+         if (rows(5, k) == 1.0_wp) call check(ctx, rows(12, k), -0.25_wp, rel=1.0e-9_wp, message="decay -kappa/2")
+         if (rows(5, k) == 0.0_wp) call check(ctx, rows(12, k) > -0.25_wp, "unstable: slower decay or growth")
+         ! a = alpha rho/pi^2 with rho = g pi^2/(beta omega^2), g the default 9.80665
+         call check(ctx, rows(2, k), rows(1, k)*9.80665_wp/(rows(3, k)*25.0_wp), rel=1.0e-14_wp, abs=1.0e-300_wp, &
+                    message="chart a = alpha g/(beta omega^2)")
       end do
       call delete_file(written)
    end subroutine physical_units
+
+   !> A spring given by k and m with a range of amplitudes: the rows are those of the same
+   !> spring given by omega = sqrt(k/m) with the list of the same amplitudes (apart from
+   !> the header's spring line); a is the range written out here, alpha = a pi^2/rho with
+   !> rho = r0 + m g/k (eq. (4)); the header states k, m, omega, rho and the radial period;
+   !> the file repeats its run.
+   subroutine spring_k_m_and_range(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, by_omega, out, again
+      character(len=1024), allocatable :: first(:), second(:)
+      real(wp), allocatable :: rows(:, :), rows_omega(:, :)
+      real(wp), parameter :: k_spring = 25.0_wp, mass = 0.25_wp, g = 9.81_wp, r0 = 0.3_wp
+      real(wp) :: rho, a
+      integer :: n_blank, j
+      logical :: numeric, ok
+      out = scratch_prefix("spring_km")
+      call run_text_scene("spring_km", [ &
+         padded("&scene task = 'points', method = 'magnus6', tolerance = 1e-9, output = '"//out//"' /"), &
+         padded("&physical k = 25, m = 0.25, g = 9.81, r0 = 0.3, a_min = 0.01, a_max = 0.35, n_a = 5 /")], &
+         error, written)
+      call check(ctx, .not. allocated(error), "k, m, a range run")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      first = read_lines(written)
+      call data_rows(first, 13, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 5, "five rows of 13 numbers")
+      if (size(rows, 2) /= 5) return
+      rho = r0 + mass*g/k_spring
+      do j = 1, 5
+         a = 0.01_wp + (0.35_wp - 0.01_wp)*real(j - 1, wp)/4.0_wp
+         call check(ctx, rows(2, j), a, rel=1.0e-15_wp, message="a of the range")
+         call check(ctx, rows(1, j), a*pi2/rho, rel=1.0e-14_wp, message="alpha = a pi^2/(r0 + m g/k)")
+         call check(ctx, rows(3, j), g*pi2*mass/(rho*k_spring), rel=1.0e-14_wp, message="beta = g pi^2 m/(rho k)")
+      end do
+      call check(ctx, any(index(first, "# spring: k = 25.0 N/m, m = 0.25 kg, omega = sqrt(k/m) = 10.0 rad/s") == 1), &
+                 "header states k, m, omega")
+      call check(ctx, any(index(first, "rho = r0 + g/omega^2 = 0.3981 m") > 0), "header states rho")
+      call check(ctx, any(index(first, "radial period 2 pi/omega = 0.6283185307179586 s") > 0), &
+                 "header states the radial period")
+      call check(ctx, any(index(first, "# &physical k = 25.0, m = 0.25, g = 9.81, kappa = 0.0, r0 = 0.3, "// &
+                 "a_min = 0.01, a_max = 0.35, n_a = 5 /") == 1), "effective &physical")
+      call check_rerun(ctx, written, first, again, ok)
+      if (ok) call delete_file(again)
+      ! the same spring by omega and the list of the same amplitudes: the same rows
+      call run_text_scene("spring_om", [ &
+         padded("&scene task = 'points', method = 'magnus6', tolerance = 1e-9, output = '"//out//"_om' /"), &
+         padded("&physical omega = 10, g = 9.81, r0 = 0.3, a = 0.01, 0.095, 0.18, 0.265, 0.35 /")], &
+         error, by_omega)
+      call check(ctx, .not. allocated(error), "omega run")
+      if (allocated(error)) return
+      second = read_lines(by_omega)
+      call data_rows(second, 13, rows_omega, n_blank, numeric)
+      call check(ctx, size(rows_omega, 2) == 5, "five rows by omega")
+      if (size(rows_omega, 2) == 5) then
+         do j = 1, 5
+            call check(ctx, all(abs(rows(:, j) - rows_omega(:, j)) <= 1.0e-15_wp*max(1.0_wp, abs(rows(:, j)))), &
+                       "row by k, m = row by omega")
+         end do
+      end if
+      call delete_file(written)
+      call delete_file(by_omega)
+   end subroutine spring_k_m_and_range
+
+   !> A chart over (a, omega) of &physical (r0, g fixed): blocks of constant a, every row's
+   !> a, omega, alpha = a pi^2/rho, beta = g pi^2/(rho omega^2) with rho = r0 + g/omega^2
+   !> written out here, mu_per_s = mu omega/pi at the row's omega; the point at omega = 10 is
+   !> the points run of that spring (the same S).
+   subroutine chart_over_a_and_omega(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out
+      character(len=1024), allocatable :: lines(:)
+      real(wp), allocatable :: rows(:, :), spring(:, :)
+      real(wp), parameter :: g = 9.81_wp, r0 = 0.3_wp
+      real(wp) :: a, omega, rho
+      integer :: n_blank, i, j, k
+      logical :: numeric
+      out = scratch_prefix("a_omega")
+      call run_text_scene("a_omega", [ &
+         padded("&scene method = 'magnus6', tolerance = 1e-9, output = '"//out//"' /"), &
+         padded("&physical g = 9.81, r0 = 0.3, a_min = 0.0, a_max = 0.2, n_a = 3, omega_min = 8, omega_max = 12, "// &
+                "n_omega = 3 /")], error, written)
+      call check(ctx, .not. allocated(error), "chart over (a, omega)")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      lines = read_lines(written)
+      call check(ctx, columns_line(lines) == "alpha a beta omega S stable lambda_max mu log10_abs_S overflow "// &
+                 "physical mu_per_s error_estimate status", "columns: "//columns_line(lines))
+      call data_rows(lines, 14, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) == 9 .and. n_blank == 2, "3 blocks of 3 rows")
+      if (size(rows, 2) /= 9) return
+      do i = 1, 3
+         do j = 1, 3
+            k = 3*(i - 1) + j
+            a = 0.1_wp*real(i - 1, wp)
+            omega = 8.0_wp + 2.0_wp*real(j - 1, wp)
+            rho = r0 + g/omega**2
+            call check(ctx, rows(2, k), a, rel=1.0e-15_wp, abs=1.0e-300_wp, message="a of the block")
+            call check(ctx, rows(4, k), omega, rel=1.0e-15_wp, message="omega of the row")
+            call check(ctx, rows(1, k), a*pi2/rho, rel=1.0e-14_wp, abs=1.0e-300_wp, message="alpha = a pi^2/rho")
+            call check(ctx, rows(3, k), g*pi2/(rho*omega**2), rel=1.0e-14_wp, message="beta")
+            call check(ctx, rows(12, k), rows(8, k)*omega/pi, rel=1.0e-9_wp, abs=1.0e-300_wp, message="mu_per_s")
+            call check(ctx, rows(11, k) == 1.0_wp .and. rows(14, k) == 0.0_wp, "physical, status 0")
+         end do
+      end do
+      call delete_file(written)
+      ! the spring omega = 10 at a = 0.1 as a points run
+      call run_text_scene("a_omega_p", [ &
+         padded("&scene task = 'points', method = 'magnus6', tolerance = 1e-9, output = '"//out//"' /"), &
+         padded("&physical omega = 10, g = 9.81, r0 = 0.3, a = 0.1 /")], error, written)
+      call check(ctx, .not. allocated(error), "the spring of the middle row")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call data_rows(lines, 13, spring, n_blank, numeric)
+      if (size(spring, 2) == 1) call check(ctx, rows(5, 5), spring(4, 1), rel=1.0e-15_wp, message="the same S")
+      call delete_file(written)
+   end subroutine chart_over_a_and_omega
 
    !> `columns` picks and orders columns with the same text as the full file; `names_line`
    !> adds one uncommented line of names; `format = 'binary'` writes the same values as
@@ -815,19 +944,36 @@ contains
       call check(ctx, printable("&scene: output: 'é' α") == "&scene: output: 'é' α", "plain text unchanged")
    end subroutine messages_printable
 
+   !> An output under a regular file cannot be written: an i/o error naming the path, no
+   !> file; an output whose directories are missing gets them made (as mkdir -p).
    subroutine unwritable_output(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(error_t), allocatable :: error
-      character(len=:), allocatable :: written
+      character(len=:), allocatable :: written, blocker, dir
+      blocker = scratch_prefix("blocker")
+      call write_file(blocker, ["not a directory"])
       call run_text_scene("unwritable", [ &
-         padded("&scene method = 'segments', output = 'build/hillstab_no_such_dir/run' /"), &
+         padded("&scene method = 'segments', output = '"//blocker//"/sub/run' /"), &
          padded("&chart n_alpha = 2, n_beta = 2 /")], error, written)
       call check(ctx, allocated(error), "unwritable output is an error")
-      if (.not. allocated(error)) return
-      call check(ctx, error%code == err_io, "i/o error code")
-      call check(ctx, contains_text(error%message, scratch_prefix("unwritable")//".nml: &scene: output:"), &
-                 "names file, group, variable: "//error%message)
-      call check(ctx, contains_text(error%message, "build/hillstab_no_such_dir/run_chart.dat"), "names the path")
-      call check(ctx, .not. file_exists("build/hillstab_no_such_dir"), "no directory created")
+      if (allocated(error)) then
+         call check(ctx, error%code == err_io, "i/o error code")
+         call check(ctx, contains_text(error%message, scratch_prefix("unwritable")//".nml: &scene: output:"), &
+                    "names file, group, variable: "//error%message)
+         call check(ctx, contains_text(error%message, blocker//"/sub/run_chart.dat"), "names the path")
+         call check(ctx, contains_text(error%message, "cannot make the directory '"//blocker//"'"), &
+                    "names the directory: "//error%message)
+      end if
+      call delete_file(blocker)
+      ! missing directories are made
+      dir = scratch_prefix("newdir")
+      call run_text_scene("newdir", [ &
+         padded("&scene method = 'segments', output = '"//dir//"/a/b/run' /"), &
+         padded("&chart n_alpha = 2, n_beta = 2 /")], error, written)
+      call check(ctx, .not. allocated(error), "output into missing directories")
+      if (allocated(error)) call check(ctx, .false., error%message)
+      call check(ctx, file_exists(dir//"/a/b/run_chart.dat"), "the file in the new directories")
+      call delete_file(dir//"/a/b/run_chart.dat")
+      call execute_command_line("rmdir '"//dir//"/a/b' '"//dir//"/a' '"//dir//"'")
    end subroutine unwritable_output
 end module test_tasks

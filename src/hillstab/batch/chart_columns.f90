@@ -13,7 +13,7 @@
 !> print '(a)', columns_text(table, offered_chart_columns(scene))
 !>```
 module hillstab_batch_chart_columns
-   use hillstab_core_kinds, only: wp, int64, pi, version_string
+   use hillstab_core_kinds, only: wp, int64, version_string
    use hillstab_core_error, only: error_t, set_error, err_input, err_accuracy, err_invalid_parameter, &
       err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
@@ -23,9 +23,8 @@ module hillstab_batch_chart_columns
    use hillstab_hill_coefficient, only: sampling_name
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
-   use hillstab_hill_units, only: equilibrium_length
    use hillstab_integrate_monodromy, only: monodromy_trace, method_name, method_uses_segments, method_is_exact
-   use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path
+   use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, physical_summary
    use hillstab_batch_scene_file, only: fail
    use hillstab_batch_columns, only: column_t, style_e17, style_e11, style_e4, style_flag, column_lines, &
       find_columns, columns_text, put_value, failed_row
@@ -35,28 +34,28 @@ module hillstab_batch_chart_columns
    public :: floquet_task_t, chart_columns, offered_chart_columns, chart_values, scene_chart_columns, n_chart_columns
    public :: chart_header, common_header, evaluate_point, failed_points_error, check_method_runs, warn_inaccurate
    public :: clamp_magnitude, log10_floor, chart_line_length, stacked, chart_line, failed_values
-   public :: header_bytes, text_row_bytes, binary_row_bytes
+   public :: header_bytes, text_row_bytes, binary_row_bytes, point_amplitude
 
    !> The columns of a chart or points file, in file order.
-   integer, parameter :: col_alpha = 1, col_beta = 2, col_s = 3, col_stable = 4, col_lambda_max = 5, col_mu = 6, &
-      col_log10_abs_s = 7, col_overflow = 8, col_physical = 9, col_stable_paper = 10, col_mu_per_s = 11, &
-      col_error_estimate = 12, col_status = 13
+   integer, parameter :: col_alpha = 1, col_a = 2, col_beta = 3, col_omega = 4, col_s = 5, col_stable = 6, &
+      col_lambda_max = 7, col_mu = 8, col_log10_abs_s = 9, col_overflow = 10, col_physical = 11, col_stable_paper = 12, &
+      col_mu_per_s = 13, col_error_estimate = 14, col_status = 15
    !> Number of columns a chart or points file can hold.
-   integer, parameter :: n_chart_columns = 13
-   !> Characters in one chart line (13 columns of at most 24 characters, with blanks).
-   integer, parameter :: chart_line_length = 200
+   integer, parameter :: n_chart_columns = 15
+   !> Characters in one chart line (15 columns of at most 24 characters, with blanks).
+   integer, parameter :: chart_line_length = 280
    !> The text style of each column (hillstab_batch_columns), by the col_* index.
-   integer, parameter :: chart_styles(n_chart_columns) = [style_e17, style_e17, style_e17, style_flag, style_e11, &
-      style_e11, style_e11, style_flag, style_flag, style_flag, style_e11, style_e4, style_flag]
+   integer, parameter :: chart_styles(n_chart_columns) = [style_e17, style_e17, style_e17, style_e17, style_e17, &
+      style_flag, style_e11, style_e11, style_e11, style_flag, style_flag, style_flag, style_e11, style_e4, style_flag]
    !> What a failed point writes in each column (where `chart_kept` is false): values outside
    !> every column's range.
-   real(wp), parameter :: chart_placeholders(n_chart_columns) = [0.0_wp, 0.0_wp, 0.0_wp, -1.0_wp, -1.0_wp, 0.0_wp, &
-      -999.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, real(status_failed, wp)]
-   !> The columns a failed point keeps: its alpha, beta and physical.
-   logical, parameter :: chart_kept(n_chart_columns) = [.true., .true., .false., .false., .false., .false., .false., &
-      .false., .true., .false., .false., .false., .false.]
+   real(wp), parameter :: chart_placeholders(n_chart_columns) = [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, -1.0_wp, &
+      -1.0_wp, 0.0_wp, -999.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, real(status_failed, wp)]
+   !> The columns a failed point keeps: its alpha, a, beta, omega and physical.
+   logical, parameter :: chart_kept(n_chart_columns) = [.true., .true., .true., .true., .false., .false., .false., &
+      .false., .false., .false., .true., .false., .false., .false., .false.]
    !> Bytes of a header (an upper bound), of one row as text (an upper bound) and binary.
-   integer(int64), parameter :: header_bytes = 16384, text_row_bytes = 161, binary_row_bytes = 8*16
+   integer(int64), parameter :: header_bytes = 16384, text_row_bytes = 209, binary_row_bytes = 8*16
    !> Magnitudes beyond this are written as ±clamp_magnitude with the overflow flag set.
    real(wp), parameter :: clamp_magnitude = 1.0e300_wp
    !> log10|S| is written as at least this (only S = 0 exactly reaches it).
@@ -106,7 +105,15 @@ contains
          alpha = "alpha of "//model_summary(scene%model)
       end if
       table(col_alpha) = column(col_alpha, "alpha", "", alpha)
+      if (size(scene%amplitudes) > 0) then
+         table(col_a) = column(col_a, "a", "m", "bounce amplitude of &physical (alpha = a pi^2/rho)")
+      else
+         table(col_a) = column(col_a, "a", "m", "bounce amplitude a = alpha rho/pi^2 with rho = g pi^2/(beta "// &
+            "omega^2) (eq. (24)); -1 where beta <= 0 (no equilibrium length)")
+      end if
       table(col_beta) = column(col_beta, "beta", "", "beta = g pi^2/(rho omega^2), eq. (24)")
+      table(col_omega) = column(col_omega, "omega", "rad/s", "radial angular frequency sqrt(k/m) of the point "// &
+         "(rho = r0 + g/omega^2)")
       table(col_s) = column(col_s, "S", "", "trace of the one-period monodromy (with epsilon > 0: S1 of the chi "// &
          "equation (47)); |S| > 1e300 is written as +-1e300 with overflow = 1")
       table(col_stable) = column(col_stable, "stable", "", stable)
@@ -134,7 +141,8 @@ contains
    end function chart_columns
 
    !> The columns a chart or points file of this scene offers, in file order: `physical`
-   !> for the elastic model, `stable_paper` with damping, `mu_per_s` when ω is known.
+   !> for the elastic model, `stable_paper` with damping, `mu_per_s` when ω is known, `a`
+   !> with `&physical` (for the Mathieu model only when the amplitudes are given).
    pure function offered_chart_columns(scene) result(ids)
       type(scene_t), intent(in) :: scene  !! the scene
       integer, allocatable :: ids(:)
@@ -144,6 +152,9 @@ contains
          if (k == col_physical .and. .not. model_is_pendulum(scene%model)) cycle
          if (k == col_stable_paper .and. .not. scene%epsilon > 0.0_wp) cycle
          if (k == col_mu_per_s .and. .not. scene%physical) cycle
+         if (k == col_omega .and. size(scene%omegas) == 0) cycle
+         if (k == col_a .and. .not. (scene%physical .and. (size(scene%amplitudes) > 0 .or. &
+             model_is_pendulum(scene%model)))) cycle
          ids = [ids, k]
       end do
    end function offered_chart_columns
@@ -174,13 +185,16 @@ contains
 
    !> The value of every column (table order) at one computed point: S and lambda_max
    !> clamped to ±1e300, flags 1 or 0, stable 0.5 when marginal, mu_per_s = μ ω/π
-   !> (0 without `per_second`), error_estimate −1 when the method gives none.
-   pure function chart_values(alpha, beta, f, physical, status, per_second) result(v)
+   !> (0 without `per_second`), error_estimate −1 when the method gives none, a the
+   !> amplitude (0 without `amplitude`).
+   pure function chart_values(alpha, beta, f, physical, status, per_second, amplitude, omega) result(v)
       real(wp), intent(in) :: alpha, beta  !! the grid point
       type(floquet_t), intent(in) :: f  !! Floquet data of the point
       logical, intent(in) :: physical   !! (α, β) inside the physical domain
       integer, intent(in) :: status     !! per-point status code (hillstab_core_status)
       real(wp), intent(in), optional :: per_second  !! ω/π
+      real(wp), intent(in), optional :: amplitude   !! a (m), `point_amplitude`
+      real(wp), intent(in), optional :: omega       !! ω (rad/s) of a chart over (a, ω)
       real(wp) :: v(n_chart_columns)
       real(wp) :: s, estimate
       logical :: overflow
@@ -190,7 +204,11 @@ contains
       estimate = f%trace%error_estimate
       if (estimate < 0.0_wp) estimate = -1.0_wp
       v(col_alpha) = alpha
+      v(col_a) = 0.0_wp
+      if (present(amplitude)) v(col_a) = amplitude
       v(col_beta) = beta
+      v(col_omega) = 0.0_wp
+      if (present(omega)) v(col_omega) = omega
       v(col_s) = s
       v(col_stable) = merge(1.0_wp, 0.0_wp, f%stable)
       if (f%marginal) v(col_stable) = 0.5_wp
@@ -206,13 +224,17 @@ contains
       v(col_status) = real(status, wp)
    end function chart_values
 
-   !> The values of a point where nothing could be computed: alpha, beta and physical
+   !> The values of a point where nothing could be computed: alpha, a, beta and physical
    !> kept, the other columns at their placeholders, status 2.
-   pure function failed_values(alpha, beta, physical) result(v)
+   pure function failed_values(alpha, beta, physical, amplitude, omega) result(v)
       real(wp), intent(in) :: alpha, beta  !! the point
       logical, intent(in) :: physical      !! (α, β) inside the physical domain
+      real(wp), intent(in), optional :: amplitude  !! a (m)
+      real(wp), intent(in), optional :: omega      !! ω (rad/s)
       real(wp) :: v(n_chart_columns)
       v = chart_placeholders
+      if (present(amplitude)) v(col_a) = amplitude
+      if (present(omega)) v(col_omega) = omega
       v(col_alpha) = alpha
       v(col_beta) = beta
       v(col_physical) = merge(1.0_wp, 0.0_wp, physical)
@@ -280,16 +302,21 @@ contains
    end function chart_header
 
    !> Floquet data of one point; `error` only when the point failed.
-   subroutine evaluate_point(scene, alpha, beta, f, error, status)
+   subroutine evaluate_point(scene, alpha, beta, f, error, status, epsilon)
       type(scene_t), intent(in) :: scene  !! the scene (model, method, damping)
       real(wp), intent(in) :: alpha, beta  !! the point
       type(floquet_t), intent(out) :: f  !! its Floquet data
       type(error_t), allocatable, intent(out) :: error  !! why the point failed
       !> status_ok, status_roundoff (computed, but only to the round-off level) or status_failed
       integer, intent(out), optional :: status
+      !> the point's damping (a chart over (a, ω): κπ/ω); default the scene's
+      real(wp), intent(in), optional :: epsilon
       type(trace_t) :: tr
+      real(wp) :: damping
+      damping = scene%epsilon
+      if (present(epsilon)) damping = epsilon
       if (present(status)) status = status_ok
-      call monodromy_trace(hill_model_t(scene%model, alpha, beta, scene%epsilon), scene%method, tr, error)
+      call monodromy_trace(hill_model_t(scene%model, alpha, beta, damping), scene%method, tr, error)
       if (allocated(error)) then
          if (error%code /= err_accuracy) then
             if (present(status)) status = status_failed
@@ -298,7 +325,7 @@ contains
          deallocate (error)
          if (present(status)) status = status_roundoff
       end if
-      f = floquet_from_trace(tr, scene%epsilon, scene%method%tolerance)
+      f = floquet_from_trace(tr, damping, scene%method%tolerance)
    end subroutine evaluate_point
 
    !> Count the failed points of a task and name the first: err_points_failed, after the
@@ -371,24 +398,35 @@ contains
       end if
    end function method_description
 
-   !> Header lines of a scene given in physical units: the conversions used.
+   !> Header lines of a scene given in physical units: the spring, the conversions used.
    function physical_header(scene) result(lines)
       type(scene_t), intent(in) :: scene
       character(len=:), allocatable :: lines(:)
-      character(len=200) :: text(3)
-      text(1) = "physical units (SI): rho = r0 + g/omega^2 (eq. (4)), tau = omega t/pi, alpha = a pi^2/rho, "// &
-                "beta = g pi^2/(rho omega^2) (eq. (24)), epsilon = kappa pi/omega (eq. (46))"
-      text(2) = "omega = "//real_text(scene%pendulum%omega)//" rad/s: one radial period 2 pi/omega = "// &
-                real_text(2.0_wp*pi/scene%pendulum%omega)//" s is 2 units of tau; epsilon = "//real_text(scene%epsilon)
+      character(len=400) :: text(1)
       if (size(scene%amplitudes) > 0) then
-         text(3) = "rho = "//real_text(equilibrium_length(scene%pendulum))//" m; each row is one amplitude a of "// &
-                   "&physical: a = alpha rho/pi^2"
-         text(3) = trim(text(3))//model_physical_note(scene%model)
-         lines = text(:3)
+         text(1) = "each amplitude a of &physical is one point (points: a row; coefficient: a curve): alpha = "// &
+            "a pi^2/rho"//model_physical_note(scene%model)
+         lines = stacked(physical_summary(scene), text)
       else
-         lines = text(:2)
+         lines = physical_summary(scene)
       end if
    end function physical_header
+
+   !> The bounce amplitude a (m) of a point of a scene with `&physical`: the k-th
+   !> amplitude when the scene gives them, else a = α ρ/π² with ρ = g π²/(β ω²)
+   !> (eq. (24)), that is α g/(β ω²); −1 where β ≤ 0 or g = 0 (no equilibrium length).
+   pure real(wp) function point_amplitude(scene, k, alpha, beta) result(a)
+      type(scene_t), intent(in) :: scene  !! a scene with `&physical`
+      integer, intent(in) :: k  !! the point's index
+      real(wp), intent(in) :: alpha, beta  !! the point
+      if (size(scene%amplitudes) > 0) then
+         a = scene%amplitudes(k)
+      else if (beta > 0.0_wp .and. scene%pendulum%g > 0.0_wp) then
+         a = alpha*scene%pendulum%g/(beta*scene%pendulum%omega**2)
+      else
+         a = -1.0_wp
+      end if
+   end function point_amplitude
 
    !> Header lines common to every task: version, source, the effective scene, the model.
    function common_header(scene) result(lines)

@@ -28,12 +28,14 @@ module hillstab_batch_group_series
       real(wp) :: alpha = 0.0_wp             !! α, in [0, π²)
       real(wp) :: beta = 0.0_wp              !! β, in (0, π²)
       real(wp) :: phi0 = 0.0_wp              !! initial angle [rad]
-      integer :: periods = 1                 !! radial periods to simulate
+      integer :: periods = 1                 !! radial periods to simulate (with `duration`: 0)
       integer :: samples_per_period = 1      !! output rows per radial period
       real(wp) :: r0 = 0.0_wp                !! natural length [m]
       real(wp) :: g = 0.0_wp                 !! gravity [m/s²]
       real(wp) :: vx0 = 0.0_wp               !! initial horizontal velocity [m/s]
       real(wp) :: vz0 = 0.0_wp               !! initial downward velocity [m/s]
+      !> the length of the run in seconds (`&series duration`); 0 when given as `periods`
+      real(wp) :: duration = 0.0_wp
    end type series_plan_t
 
 contains
@@ -46,6 +48,8 @@ contains
       call group%add("beta", var_real, "2.47", "beta = g pi^2/(rho omega^2), 0 < beta < pi^2 (physical domain)")
       call group%add("phi0", var_real, "0.017", "initial angle from the downward vertical, rad (0: pure bounce)")
       call group%add("periods", var_integer, "50", "radial periods T = 2 pi/omega to simulate, >= 1")
+      call group%add("duration", var_real, "", "series: instead of periods, the length of the run in seconds "// &
+         "(> 0; rows at t = j T/samples_per_period <= duration)", example="30.0")
       call group%add("samples_per_period", var_integer, "100", "output rows per radial period, >= 1; "// &
          "periods*samples_per_period + 1 <= 1e8")
       call group%add("r0", var_real, "0.1", "natural length of the spring, m; > 0")
@@ -56,7 +60,7 @@ contains
 
    !> Read and check `&series`. The pendulum is the elastic one given in dimensionless
    !> units here, so a scene with `&physical` or another model is refused.
-   subroutine read_series_group(file, group, model, physical, plan, values, error, samples)
+   subroutine read_series_group(file, group, model, physical, plan, values, error, samples, takes_duration)
       type(scene_file_t), intent(in) :: file  !! the scene file
       type(group_t), intent(in) :: group      !! the declaration (`series_group`)
       integer, intent(in) :: model            !! the model code of `&scene`
@@ -67,10 +71,13 @@ contains
       !> the task writes the samples (series; default): periods * samples_per_period lines
       !> are bounded; else (lyapunov, poincare) periods alone
       logical, intent(in), optional :: samples
-      real(wp) :: alpha, beta, phi0, r0, g, vx0, vz0
+      !> the task takes `duration` (seconds) instead of `periods` (default: no)
+      logical, intent(in), optional :: takes_duration
+      real(wp) :: alpha, beta, phi0, duration, r0, g, vx0, vz0
       logical :: samples_written
       integer :: periods, samples_per_period
-      namelist /series/ alpha, beta, phi0, periods, samples_per_period, r0, g, vx0, vz0
+      namelist /series/ alpha, beta, phi0, periods, duration, samples_per_period, r0, g, vx0, vz0
+      logical :: durations
       type(group_reader_t) :: reader
       samples_written = .true.
       if (present(samples)) samples_written = samples
@@ -90,7 +97,22 @@ contains
       call finite("g", g)
       call finite("vx0", vx0)
       call finite("vz0", vz0)
+      call finite("duration", duration)
       if (allocated(error)) return
+      durations = .false.
+      if (present(takes_duration)) durations = takes_duration
+      if (values%given("duration")) then
+         if (.not. durations) then
+            call fail(error, file%path, group%name, "duration", "this task counts radial periods: give periods")
+         else if (values%given("periods")) then
+            call fail(error, file%path, group%name, "duration", "give the length of the run either as periods "// &
+               "(radial periods) or as duration (seconds), not both")
+         else if (.not. duration > 0.0_wp) then
+            call fail(error, file%path, group%name, "duration", "must be > 0 (seconds), got "//real_text(duration))
+         end if
+         if (allocated(error)) return
+         periods = 1   ! checked below as a count; the rows follow from duration (task series)
+      end if
       if (physical) then
          call fail(error, file%path, "physical", "r0", "the series task takes r0 and g in &series and the "// &
             "damping as &scene epsilon; leave out &physical")
@@ -133,7 +155,14 @@ contains
       end if
       if (allocated(error)) return
       if (allocated(error)) return
-      plan = series_plan_t(alpha, beta, phi0, periods, samples_per_period, r0, g, vx0, vz0)
+      if (values%given("duration")) then
+         periods = 0
+         call values%hide("periods")
+      else
+         duration = 0.0_wp
+      end if
+      plan = series_plan_t(alpha=alpha, beta=beta, phi0=phi0, periods=periods, samples_per_period=samples_per_period, &
+         r0=r0, g=g, vx0=vx0, vz0=vz0, duration=duration)
    contains
       subroutine finite(name, x)
          character(len=*), intent(in) :: name

@@ -27,7 +27,7 @@ module hillstab_batch_output
    use hillstab_core_kinds, only: int64
    use hillstab_core_error, only: error_t, set_error, err_io
    use hillstab_core_text, only: integer_text
-   use hillstab_ffi_libc, only: c_rename, c_mkstemp, c_fdopen, c_fchmod, c_umask, c_close, c_fwrite, c_fwrite_raw, &
+   use hillstab_ffi_libc, only: c_mkdir, c_rename, c_mkstemp, c_fdopen, c_fchmod, c_umask, c_close, c_fwrite, c_fwrite_raw, &
       c_fflush, c_fclose, c_fileno, c_fsync, errno_text, set_errno, c_string, remove_file, is_directory
    use hillstab_batch_signals, only: watch_temp_file, forget_temp_file, begin_commit
    use hillstab_core_kinds, only: wp
@@ -81,6 +81,9 @@ contains
             integer_text(name_max)//")")
          return
       end if
+      ! the output's directory is made when missing (each missing component, as mkdir -p)
+      call make_directories(path, prefix, error)
+      if (allocated(error)) return
       name = temporary_template(path)
       allocate (template(len(name) + 1))
       do k = 1, len(name)
@@ -112,6 +115,28 @@ contains
          return
       end if
    end subroutine open_output
+
+   !> Make the missing directories of the path of a file (its components before the last
+   !> '/'), as `mkdir -p` with mode 0777 before the umask.
+   subroutine make_directories(path, prefix, error)
+      character(len=*), intent(in) :: path    !! the file
+      character(len=*), intent(in) :: prefix  !! put before an error message
+      type(error_t), allocatable, intent(out) :: error  !! err_io naming the directory that cannot be made
+      integer :: k
+      integer(c_int) :: status
+      do k = 2, len(path)
+         if (path(k:k) /= "/") cycle
+         if (path(k - 1:k - 1) == "/") cycle
+         if (is_directory(path(:k - 1))) cycle
+         call set_errno(0)
+         status = c_mkdir(c_string(path(:k - 1)), int(o'777', c_int))
+         if (status /= 0 .and. .not. is_directory(path(:k - 1))) then
+            call set_error(error, err_io, prefix//"cannot write '"//path//"': cannot make the directory '"// &
+               path(:k - 1)//"': "//errno_text())
+            return
+         end if
+      end do
+   end subroutine make_directories
 
    !> The mkstemp template of the temporary file of `path`: `<dir>/<name>.partXXXXXX`, the
    !> name cut to at most 244 bytes so that the whole fits in the 255 bytes of a file name.

@@ -17,17 +17,19 @@
 !>```
 module hillstab_batch_scene
    use hillstab_core_kinds, only: wp, int64
-   use hillstab_core_text, only: quoted
+   use hillstab_core_kinds, only: pi
+   use hillstab_core_text, only: quoted, real_text, integer_text
    use hillstab_core_error, only: error_t, set_error, err_input
    use hillstab_hill_models, only: model_elastic, model_physical_alpha
    use hillstab_integrate_monodromy, only: method_t
-   use hillstab_hill_units, only: physical_t, physical_beta
+   use hillstab_hill_units, only: physical_t, physical_beta, equilibrium_length
    use hillstab_batch_declaration, only: group_t, group_values_t
    use hillstab_batch_scene_file, only: scene_file_t
    use hillstab_batch_output, only: output_file_t, open_output
    implicit none
    private
-   public :: scene_t, task_t, output_path, scene_namelist, scene_header, open_scene_output, physical_points
+   public :: scene_t, task_t, output_path, scene_namelist, scene_header, open_scene_output, physical_points, &
+      physical_summary
 
    !> A task: what it reads, runs and writes. Concrete tasks extend it (the registry,
    !> hillstab_batch_task_registry, makes one from its name); a task whose points are
@@ -37,6 +39,12 @@ module hillstab_batch_scene
       character(len=:), allocatable :: name       !! the task name, as in `&scene task`
       logical :: takes_columns = .false.          !! `&scene columns` and format = 'binary' apply
       logical :: takes_amplitudes = .false.       !! its points can come from `&physical a` with r0
+      !> `&physical r0` without amplitudes: the task takes one spring (its β fixed by r0)
+      logical :: takes_spring = .false.
+      !> `&physical omega_min, omega_max, n_omega` (with amplitudes): a grid over (a, ω)
+      logical :: takes_omega_range = .false.
+      !> with amplitudes: exactly one (a template shows one)
+      logical :: single_amplitude = .false.
       logical :: takes_physical = .true.          !! `&physical` may replace the dimensionless values
       !> what `&physical a` with r0 replace, for the template ("&points file")
       character(len=:), allocatable :: amplitudes_replace
@@ -89,9 +97,16 @@ module hillstab_batch_scene
       !> rates per second (ω is known)
       logical :: physical = .false.
       type(physical_t) :: pendulum                  !! `&physical` r0, g, omega, kappa (a: `amplitudes`)
+      !> `&physical k` (N/m) and `m` (kg) when the scene gives ω as √(k/m); 0 when it gives omega
+      real(wp) :: spring_k = 0.0_wp, spring_m = 0.0_wp
+      !> `&physical r0` is given: ρ = r0 + g/ω² is known and β fixed by the spring
+      logical :: spring_r0 = .false.
       !> `&physical a` (m): the points (task points) or the curves (task coefficient) at
       !> these amplitudes and the given r0; empty when α and β come from the task's group
       real(wp), allocatable :: amplitudes(:)
+      !> `&physical omega_min, omega_max, n_omega` (rad/s): the ω of a chart over (a, ω),
+      !> r0 and g fixed; empty when ω is one value (`pendulum%omega`)
+      real(wp), allocatable :: omegas(:)
       type(group_values_t) :: settings              !! the effective `&scene` values
       type(group_values_t) :: physical_values       !! the effective `&physical` values
    end type scene_t
@@ -208,6 +223,49 @@ contains
          points(2, k) = physical_beta(p)
       end do
    end function physical_points
+
+   !> Header lines of a scene in physical units: the spring as the run understood it —
+   !> k and m (when given), ω, r0, g, ρ (when r0 is given), κ and ε, the radial period
+   !> and the conversions (eqs. (4), (24), (46)).
+   function physical_summary(scene) result(lines)
+      type(scene_t), intent(in) :: scene  !! a scene with `&physical`
+      character(len=:), allocatable :: lines(:)
+      character(len=400) :: text(3)
+      character(len=:), allocatable :: spring
+      associate (p => scene%pendulum)
+         if (size(scene%omegas) > 0) then
+            spring = "omega = "//real_text(scene%omegas(1))//" ... "//real_text(scene%omegas(size(scene%omegas)))// &
+                     " rad/s ("//integer_text(size(scene%omegas))//" values, the chart's second axis)"
+         else if (scene%spring_k > 0.0_wp) then
+            spring = "k = "//real_text(scene%spring_k)//" N/m, m = "//real_text(scene%spring_m)// &
+                     " kg, omega = sqrt(k/m) = "//real_text(p%omega)//" rad/s"
+         else
+            spring = "omega = "//real_text(p%omega)//" rad/s"
+         end if
+         if (size(scene%omegas) > 0) then
+            spring = spring//", r0 = "//real_text(p%r0)//" m, g = "//real_text(p%g)//" m/s^2; rho = r0 + g/omega^2 "// &
+                     "from "//real_text(p%r0 + p%g/scene%omegas(1)**2)//" m down to "// &
+                     real_text(p%r0 + p%g/scene%omegas(size(scene%omegas))**2)//" m"
+         else if (scene%spring_r0) then
+            spring = spring//", r0 = "//real_text(p%r0)//" m, g = "//real_text(p%g)//" m/s^2, rho = r0 + g/omega^2 = "// &
+                     real_text(equilibrium_length(p))//" m, beta = "//real_text(physical_beta(p))
+         else
+            spring = spring//", g = "//real_text(p%g)//" m/s^2 (r0 not given: rho = g pi^2/(beta omega^2) varies with beta)"
+         end if
+         text(1) = "physical units (SI): rho = r0 + g/omega^2 (eq. (4)), tau = omega t/pi, alpha = a pi^2/rho, "// &
+                   "beta = g pi^2/(rho omega^2) (eq. (24)), epsilon = kappa pi/omega (eq. (46))"
+         text(2) = "spring: "//spring
+         if (size(scene%omegas) > 0) then
+            text(3) = "kappa = "//real_text(p%kappa)//" 1/s, epsilon = kappa pi/omega at each omega; radial "// &
+                      "period 2 pi/omega from "//real_text(2.0_wp*pi/scene%omegas(1))//" s down to "// &
+                      real_text(2.0_wp*pi/scene%omegas(size(scene%omegas)))//" s (2 units of tau)"
+         else
+            text(3) = "kappa = "//real_text(p%kappa)//" 1/s, epsilon = "//real_text(scene%epsilon)// &
+                      "; radial period 2 pi/omega = "//real_text(2.0_wp*pi/p%omega)//" s (2 units of tau)"
+         end if
+      end associate
+      lines = text
+   end function physical_summary
 
    !> Default: no alternative groups.
    subroutine task_template_alternatives(self, groups, notes)

@@ -13,23 +13,29 @@
 !> The α values run in parallel (OpenMP, dynamic schedule: the truncation grows
 !> towards α → π²); the file is written once all are done, curve by curve.
 module hillstab_batch_task_boundaries
-   use hillstab_core_kinds, only: wp, int64, version_string
+   use hillstab_core_kinds, only: wp, int64, pi2, version_string
    use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
-   use hillstab_hill_models, only: model_description, model_has_witness, model_witness_beta, model_is_pendulum
+   use hillstab_hill_models, only: model_description, model_has_witness, model_witness_beta, model_is_pendulum, &
+      model_name, hill_model_t
+   use hillstab_hill_units, only: equilibrium_length, physical_beta
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_integrate_monodromy, only: monodromy_trace, method_t, method_auto
+   use hillstab_core_error, only: err_accuracy
    use hillstab_hill_coefficient, only: in_physical_domain, sampling_name
    use hillstab_integrate_monodromy, only: method_name, method_is_exact, method_uses_segments, method_pieces
    use hillstab_curves_hill_method, only: hill_boundary_t, hill_boundaries, coexistence_threshold
    use hillstab_curves_boundaries, only: boundary_check_t, verify_boundary, approximate_root_t, approximate_boundaries, &
-      beta_accuracy_factor, gsl_witness_max_q
-   use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, open_scene_output
+      beta_accuracy_factor, gsl_witness_max_q, alpha_crossing_t, alpha_crossings, crossing_search_gap
+   use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, open_scene_output, physical_summary
    use hillstab_batch_declaration, only: group_t
-   use hillstab_batch_scene_file, only: scene_file_t, fail
-   use hillstab_batch_scene_checks, only: max_boundaries_magnitude
+   use hillstab_batch_scene_file, only: scene_file_t, fail, group_present
+   use hillstab_batch_scene_checks, only: max_boundaries_magnitude, min_pendulum_beta
+   use hillstab_batch_chart_columns, only: point_amplitude
    use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value
    use hillstab_batch_columns, only: column_t, style_e17, style_e4, style_integer, style_width2, style_width4, &
-      columns_text, put_row, all_columns
+      columns_text, put_row, all_columns, column_lines
    use hillstab_batch_output, only: output_file_t, finish_output, discard_output, write_header, write_text
    use hillstab_core_text, only: real_text, integer_text
    implicit none
@@ -64,6 +70,9 @@ module hillstab_batch_task_boundaries
    !> The boundaries task and the grid of `&chart` (`n_beta` used by formula and segments).
    type, extends(task_t) :: boundaries_task_t
       type(chart_grid_t) :: grid  !! `&chart`
+      !> `&physical` without `&chart`: the critical amplitudes of one spring (S = ±2 along α
+      !> at its fixed β)
+      logical :: spring = .false.
    contains
       procedure :: read => boundaries_read
       procedure :: run => boundaries_run
@@ -78,12 +87,15 @@ contains
       type(group_t), allocatable :: groups(:)
       allocate (groups(1))
       groups(1) = chart_group()
+      if (self%spring) deallocate (groups)
+      if (self%spring) allocate (groups(0))
    end function boundaries_declarations
 
    !> A boundaries task before its scene is read.
    function boundaries_task() result(task)
       type(boundaries_task_t) :: task
       task%name = "boundaries"
+      task%takes_spring = .true.
    end function boundaries_task
 
    !> `&chart`, bounded for Hill's method; the curves are those of the undamped equation.
@@ -96,11 +108,62 @@ contains
          call fail(error, file%path, "scene", "epsilon", "task 'boundaries' draws the undamped curves: epsilon must be 0")
          return
       end if
+      if (scene%physical .and. .not. group_present(file%unit, "chart")) then
+         call read_spring(self, file, scene, error)
+         return
+      end if
+      if (scene%spring_r0) then
+         call fail(error, file%path, "physical", "r0", "r0 fixes beta: with &chart the curves run over its beta "// &
+            "window (drop r0), without &chart the task finds the critical amplitudes of the spring (drop &chart)")
+         return
+      end if
       allocate (self%groups(1))
       call read_chart_group(file, chart_group(), scene%model, self%grid, self%groups(1), error)
       if (allocated(error)) return
       call check_boundaries_cost(scene, self%grid, error)
    end subroutine boundaries_read
+
+   !> `&physical` without `&chart`: one spring, whose β is fixed by r0, g and ω.
+   subroutine read_spring(self, file, scene, error)
+      class(boundaries_task_t), intent(inout) :: self
+      type(scene_file_t), intent(in) :: file
+      type(scene_t), intent(in) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: beta
+      self%spring = .true.
+      allocate (self%groups(0))
+      if (.not. scene%spring_r0) then
+         call fail(error, file%path, "physical", "r0", "the critical amplitudes of a spring (task boundaries with "// &
+            "&physical and no &chart) need r0, the natural length of the spring (m); for the curves over a grid "// &
+            "give &chart")
+         return
+      end if
+      if (scene%epsilon > 0.0_wp) then
+         call fail(error, file%path, "physical", "kappa", "task 'boundaries' draws the undamped curves: kappa "// &
+            "must be 0")
+         return
+      end if
+      if (.not. model_is_pendulum(scene%model)) then
+         call fail(error, file%path, "scene", "model", "the critical amplitudes of a spring are those of the "// &
+            "elastic model, not of model '"//model_name(scene%model)//"'")
+         return
+      end if
+      if (.not. method_is_exact(scene%method%kind)) then
+         call fail(error, file%path, "scene", "method", "the critical amplitudes of a spring are found by Hill's "// &
+            "method: method must be auto or an exact method, not '"//method_name(scene%method%kind)//"'")
+         return
+      end if
+      beta = physical_beta(scene%pendulum)
+      if (beta < min_pendulum_beta) then
+         call fail(error, file%path, "physical", "g", "beta = g pi^2/(rho omega^2) = "//real_text(beta)// &
+            " lies below "//real_text(min_pendulum_beta)//" (g = 0 or a spring too stiff to sag): S = 2 "// &
+            "there at every amplitude")
+      else if (pi2 - beta < min_pendulum_beta*pi2) then
+         call fail(error, file%path, "physical", "r0", "beta = "//real_text(beta)//" is within "// &
+            real_text(min_pendulum_beta)//" pi^2 of pi^2 (r0 negligible beside the sag g/omega^2): Q = pi^2, "// &
+            "nothing resonates")
+      end if
+   end subroutine read_spring
 
    !> The boundaries task (Hill's method, its matrix growing with sqrt|alpha|) is bounded
    !> to |alpha|, |beta| <= max_boundaries_magnitude.
@@ -126,9 +189,13 @@ contains
    end function exact_method
 
    !> The columns of the boundaries file (the GSL witness columns for the Mathieu model).
-   function boundary_columns(mathieu) result(table)
+   function boundary_columns(mathieu, amplitude) result(table)
       logical, intent(in) :: mathieu  !! add the GSL witness columns
+      !> add the column a [m] (a scene with `&physical`: a = alpha g/(beta omega^2))
+      logical, intent(in) :: amplitude
       type(column_t), allocatable :: table(:)
+      type(column_t), allocatable :: with_a(:)
+      integer :: k
       allocate (table(merge(13, 11, mathieu)))
       table(1) = column_t("alpha", "", "alpha of the boundary point", style_e17)
       table(2) = column_t("beta", "", "beta of the boundary point", style_e17)
@@ -145,6 +212,16 @@ contains
       if (mathieu) then
          table(12) = column_t("beta_gsl", "", "GSL's value of the curve", style_e17)
          table(13) = column_t("gsl_ok", "", "1 GSL agrees, 2 disagrees, 0 not used", style_integer)
+      end if
+      if (amplitude) then
+         allocate (with_a(size(table) + 1))
+         with_a(1) = table(1)
+         with_a(2) = column_t("a", "m", "bounce amplitude a = alpha rho/pi^2 with rho = g pi^2/(beta omega^2) "// &
+                              "(eq. (24)); -1 where beta <= 0 (no equilibrium length)", style_e17)
+         do k = 2, size(table)
+            with_a(k + 1) = table(k)
+         end do
+         call move_alloc(with_a, table)
       end if
    end function boundary_columns
 
@@ -249,6 +326,10 @@ contains
       type(error_t), allocatable :: cause
       real(wp) :: first_failure(2)
       type(column_t), allocatable :: table(:)
+      if (self%spring) then
+         call spring_run(scene, error)
+         return
+      end if
       if (scene%epsilon > 0.0_wp) then   ! damping from &physical kappa
          call set_error(error, err_input, scene%source//": &physical: kappa: task 'boundaries' draws the "// &
             "undamped curves: kappa must be 0")
@@ -292,7 +373,7 @@ contains
       end do
       call sort_keys(keys)
 
-      table = boundary_columns(mathieu)
+      table = boundary_columns(mathieu, amplitude_column(scene))
       call write_header(file, header(scene, self%grid, size(keys, 2)), columns_text(table, all_columns(table)), error)
       if (allocated(error)) then
          call discard_output(file)
@@ -313,7 +394,7 @@ contains
                associate (r => per_alpha(i)%rows(j))
                   if (.not. all([r%order, r%branch, r%trace_sign] == keys(:, c))) cycle
                   if (any_written .and. last_i /= i - 1) call write_text(file, "", error)
-                  line = row_text(table, r, c - 1, mathieu)
+                  line = row_text(table, r, c - 1, mathieu, scene)
                   call write_text(file, line, error)
                   if (r%status == status_failed) then
                      n_failed_rows = n_failed_rows + 1
@@ -353,6 +434,212 @@ contains
       end if
    end subroutine boundaries_run
 
+   !> The columns of the critical amplitudes of a spring.
+   function spring_columns() result(table)
+      type(column_t), allocatable :: table(:)
+      allocate (table(11))
+      table(1) = column_t("a", "m", "critical bounce amplitude: the stability of the bounce changes here", style_e17)
+      table(2) = column_t("alpha", "", "alpha = a pi^2/rho of the crossing", style_e17)
+      table(3) = column_t("beta", "", "the spring's beta = g pi^2/(rho omega^2)", style_e17)
+      table(4) = column_t("kind", "", "S at the crossing: +2 periodic, -2 antiperiodic", style_integer)
+      table(5) = column_t("order", "", "n of the curve a_n/b_n crossed", style_width4)
+      table(6) = column_t("branch", "", "1 = a_n (even), 2 = b_n (odd)", style_width2)
+      table(7) = column_t("status", "", "0 ok, 1 check by auto limited by round-off, 2 failed the check", &
+                          style_integer)
+      table(8) = column_t("check", "", "S by method auto at (alpha, beta): +-2 within the tolerance", style_e17)
+      table(9) = column_t("a_error", "m", "estimated error of a", style_e4)
+      table(10) = column_t("alpha_error", "", "estimated error of alpha", style_e4)
+      table(11) = column_t("modes", "", "Fourier modes of Hill's truncation at the crossing", style_integer)
+   end function spring_columns
+
+   !> The critical amplitudes of the spring of `&physical`: every 0 <= a < rho where a
+   !> transition curve crosses the spring's beta (alpha_crossings), each checked by auto;
+   !> the header states the unstable intervals of a in metres, from S by auto between them.
+   subroutine spring_run(scene, error)
+      type(scene_t), intent(in) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      type(alpha_crossing_t), allocatable :: crossings(:)
+      type(boundary_check_t), allocatable :: checks(:)
+      integer, allocatable :: statuses(:)
+      type(column_t), allocatable :: table(:)
+      type(output_file_t) :: file
+      type(error_t), allocatable :: cause
+      real(wp) :: rho, beta, alpha_end, values(11)
+      real(wp), allocatable :: cuts(:)
+      logical, allocatable :: unstable(:)
+      character(len=400) :: buffer
+      character(len=:), allocatable :: intervals
+      integer :: j, pos, n_failed
+      rho = equilibrium_length(scene%pendulum)
+      beta = physical_beta(scene%pendulum)
+      alpha_end = pi2*(1.0_wp - crossing_search_gap)
+      call open_scene_output(scene, file, error)
+      if (allocated(error)) return
+      call alpha_crossings(scene%model, beta, alpha_end, scene%method%tolerance, crossings, cause)
+      if (allocated(cause)) then
+         call discard_output(file)
+         call set_error(error, cause%code, scene%source//": &physical: the critical amplitudes of the spring "// &
+            "could not be found: "//cause%message)
+         return
+      end if
+      allocate (checks(size(crossings)), statuses(size(crossings)))
+      !$omp parallel do schedule(dynamic) default(shared) private(j, cause)
+      do j = 1, size(crossings)
+         statuses(j) = status_ok
+         call verify_boundary(scene%model, crossings(j)%alpha, beta, crossings(j)%trace_sign, &
+                              scene%method%tolerance, checks(j), cause)
+         if (allocated(cause)) then
+            statuses(j) = status_failed
+         else if (.not. checks(j)%passed) then
+            statuses(j) = status_failed
+         else if (checks(j)%roundoff) then
+            statuses(j) = status_roundoff
+         end if
+      end do
+      !$omp end parallel do
+      ! the verdict between the critical amplitudes, by S of auto at the middle of each piece
+      cuts = [0.0_wp, crossings%alpha, alpha_end]
+      allocate (unstable(size(cuts) - 1))
+      unstable = .false.
+      !$omp parallel do schedule(dynamic) default(shared) private(j)
+      do j = 1, size(cuts) - 1
+         if (cuts(j + 1) > cuts(j)) unstable(j) = auto_unstable(scene, 0.5_wp*(cuts(j) + cuts(j + 1)), beta)
+      end do
+      !$omp end parallel do
+      intervals = unstable_text(cuts, unstable, rho, alpha_end)
+      table = spring_columns()
+      call write_header(file, spring_header(scene, table, rho, beta, alpha_end, intervals, size(crossings)), &
+                        columns_text(table, all_columns(table)), error)
+      n_failed = 0
+      do j = 1, size(crossings)
+         if (allocated(error)) exit
+         values = [crossings(j)%alpha*rho/pi2, crossings(j)%alpha, beta, real(crossings(j)%trace_sign, wp), &
+                   real(crossings(j)%order, wp), real(merge(1, 2, crossings(j)%parity == 1), wp), &
+                   real(statuses(j), wp), checks(j)%trace, crossings(j)%alpha_error*rho/pi2, &
+                   crossings(j)%alpha_error, real(crossings(j)%modes, wp)]
+         pos = 0
+         call put_row(table, all_columns(table), values, buffer, pos)
+         call write_text(file, buffer(:pos), error)
+         if (statuses(j) == status_failed) n_failed = n_failed + 1
+      end do
+      if (allocated(error)) then
+         call discard_output(file)
+         return
+      end if
+      call finish_output(file, error)
+      if (allocated(error)) return
+      if (n_failed > 0) then
+         j = findloc(statuses, status_failed, dim=1)
+         call set_error(error, err_points_failed, scene%source//": &scene: method: "//integer_text(n_failed)// &
+            " critical amplitude(s) failed the check by auto (status "//integer_text(status_failed)//" in "// &
+            output_path(scene)//"); first at a = "//real_text(crossings(j)%alpha*rho/pi2)//" m, alpha = "// &
+            real_text(crossings(j)%alpha))
+      end if
+   end subroutine spring_run
+
+   !> Whether the bounce is unstable at (alpha, beta): |S| > 2 by method auto.
+   logical function auto_unstable(scene, alpha, beta) result(unstable)
+      type(scene_t), intent(in) :: scene
+      real(wp), intent(in) :: alpha, beta
+      type(trace_t) :: tr
+      type(error_t), allocatable :: cause
+      call monodromy_trace(hill_model_t(scene%model, alpha, beta, 0.0_wp), &
+                           method_t(method_auto, tolerance=scene%method%tolerance), tr, cause)
+      unstable = abs(tr%value) > 2.0_wp .or. tr%overflow
+   end function auto_unstable
+
+   !> "unstable for 0.003811 m <= a < 0.3981 m" (4 significant digits; an unstable interval
+   !> reaching the end of the search ends at rho: inside the tongue there the bounce stays
+   !> unstable up to the pivot), or "stable for every 0 m <= a <= (the end of the search)".
+   function unstable_text(cuts, unstable, rho, alpha_end) result(text)
+      real(wp), intent(in) :: cuts(:), rho, alpha_end
+      logical, intent(in) :: unstable(:)
+      character(len=:), allocatable :: text
+      integer :: j
+      text = ""
+      do j = 1, size(unstable)
+         if (.not. unstable(j)) cycle
+         if (j > 1) then
+            if (unstable(j - 1)) cycle   ! joined to the interval before (a crossing of a zero-width tongue)
+         end if
+         if (len(text) > 0) text = text//" and "
+         text = text//digits4(cuts(j)*rho/pi2)//" m <= a < "
+         block
+            integer :: last
+            last = j
+            do while (last < size(unstable))
+               if (.not. unstable(last + 1)) exit
+               last = last + 1
+            end do
+            if (cuts(last + 1) >= alpha_end) then
+               text = text//digits4(rho)//" m"
+            else
+               text = text//digits4(cuts(last + 1)*rho/pi2)//" m"
+            end if
+         end block
+      end do
+      if (len(text) == 0) then
+         text = "stable for every 0 m <= a <= (1 - "//real_text(crossing_search_gap)//") rho (the end of "// &
+                "the search; rho = "//digits4(rho)//" m)"
+      else
+         text = "unstable for "//text
+      end if
+   end function unstable_text
+
+   !> x with 4 significant digits, plain decimal ("0.003811", "0.3981", "12.35").
+   function digits4(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: text
+      character(len=40) :: buffer, form
+      integer :: e, decimals
+      if (x == 0.0_wp) then
+         text = "0"
+         return
+      end if
+      e = floor(log10(abs(x)))
+      decimals = max(0, 3 - e)
+      if (decimals > 20 .or. e > 15) then
+         write (buffer, '(es11.3e3)') x
+      else
+         write (form, '(a, i0, a)') "(f40.", decimals, ")"
+         write (buffer, form) x
+      end if
+      text = trim(adjustl(buffer))
+      if (text(1:1) == ".") text = "0"//text
+   end function digits4
+
+   !> Header of the critical amplitudes: the spring, the method, the search, the verdicts.
+   function spring_header(scene, table, rho, beta, alpha_end, intervals, n) result(lines)
+      type(scene_t), intent(in) :: scene
+      type(column_t), intent(in) :: table(:)
+      real(wp), intent(in) :: rho, beta, alpha_end
+      character(len=*), intent(in) :: intervals
+      integer, intent(in) :: n
+      character(len=:), allocatable :: lines(:), spring(:), per_column(:)
+      character(len=400) :: text(8 + size(table))
+      integer :: k, m
+      spring = physical_summary(scene)
+      m = 0
+      m = m + 1; text(m) = model_description(scene%model)
+      do k = 1, size(spring)
+         m = m + 1; text(m) = spring(k)
+      end do
+      m = m + 1; text(m) = "critical amplitudes: every a where S = +-2 along alpha = a pi^2/rho at the spring's "// &
+         "beta = "//real_text(beta)//", searched over 0 <= a <= (1 - "//real_text(crossing_search_gap)// &
+         ") rho = "//real_text(alpha_end*rho/pi2)//" m"
+      m = m + 1; text(m) = "method: the curves by Hill's method (tolerance "//real_text(scene%method%tolerance)// &
+         "*max(1,|beta|)) at steps of 0.1 in alpha up to 0.9 pi^2, then 8 a decade in 1 - alpha/pi^2; each "// &
+         "crossing refined in alpha and checked by method auto"
+      m = m + 1; text(m) = integer_text(n)//" critical amplitude(s); verdicts between them by S of method auto: "// &
+         intervals
+      per_column = column_lines(table, all_columns(table))
+      do k = 1, size(per_column)
+         m = m + 1; text(m) = per_column(k)
+      end do
+      lines = scene_header(scene, "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau; critical "// &
+                           "amplitudes of a spring (S = +-2 along alpha)", text(:m))
+   end function spring_header
+
    !> Sort curve keys (order, branch, kind) by order, then branch.
    pure subroutine sort_keys(keys)
       integer, intent(inout) :: keys(:, :)
@@ -370,11 +657,18 @@ contains
    end subroutine sort_keys
 
    !> One data line.
-   function row_text(table, r, curve, mathieu) result(line)
+   !> Whether the file has the column a: a scene with `&physical` and the elastic model.
+   pure logical function amplitude_column(scene)
+      type(scene_t), intent(in) :: scene
+      amplitude_column = scene%physical .and. model_is_pendulum(scene%model)
+   end function amplitude_column
+
+   function row_text(table, r, curve, mathieu, scene) result(line)
       type(column_t), intent(in) :: table(:)
       type(boundary_row_t), intent(in) :: r
       integer, intent(in) :: curve
       logical, intent(in) :: mathieu
+      type(scene_t), intent(in) :: scene
       character(len=:), allocatable :: line
       character(len=400) :: buffer
       integer :: pos
@@ -382,6 +676,7 @@ contains
       values = [r%alpha, r%beta, real(r%trace_sign, wp), real(r%order, wp), real(r%branch, wp), real(curve, wp), &
                 merge(1.0_wp, 0.0_wp, r%coexistent), real(r%status, wp), r%check, r%beta_error, real(r%modes, wp)]
       if (mathieu) values = [values, r%beta_gsl, real(r%gsl_ok, wp)]
+      if (amplitude_column(scene)) values = [values(1:1), point_amplitude(scene, 1, r%alpha, r%beta), values(2:)]
       pos = 0
       call put_row(table, all_columns(table), values, buffer, pos)
       line = buffer(:pos)

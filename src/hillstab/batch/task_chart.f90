@@ -20,11 +20,14 @@ module hillstab_batch_task_chart
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, batch_plan_t, prepare_batch
    use hillstab_batch_scene, only: scene_t, task_t, open_scene_output
    use hillstab_batch_declaration, only: group_t
-   use hillstab_batch_scene_file, only: scene_file_t, fail
-   use hillstab_batch_scene_checks, only: check_integration_cost
+   use hillstab_batch_scene_file, only: scene_file_t, fail, group_present
+   use hillstab_batch_scene_checks, only: check_integration_cost, max_grid_count
+   use hillstab_hill_units, only: physical_t, physical_beta, physical_epsilon
+   use hillstab_hill_models, only: model_physical_alpha
    use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point
    use hillstab_batch_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, chart_header, &
-      scene_chart_columns, check_method_runs, warn_inaccurate, failed_points_error, chart_line_length, &
+      point_amplitude, &
+      scene_chart_columns, check_method_runs, warn_inaccurate, failed_points_error, chart_line_length, evaluate_point, &
       header_bytes, text_row_bytes, binary_row_bytes
    use hillstab_batch_columns, only: columns_text
    use hillstab_batch_chart_columns, only: chart_columns
@@ -43,6 +46,9 @@ module hillstab_batch_task_chart
       real(wp), allocatable :: betas(:)
       character(len=23), allocatable :: beta_texts(:)  !! format_es(betas, 16)
       integer, allocatable :: ids(:)                 !! the columns written
+      !> `&physical a_min, a_max, n_a, omega_min, omega_max, n_omega` without `&chart`: the
+      !> chart runs over (a, ω) at fixed r0, g (blocks of constant a)
+      logical :: physical_grid = .false.
    contains
       procedure :: read => chart_read
       procedure :: run => chart_run
@@ -64,14 +70,23 @@ contains
    function chart_declarations(self) result(groups)
       class(chart_task_t), intent(in) :: self  !! the task
       type(group_t), allocatable :: groups(:)
-      allocate (groups(1))
-      groups(1) = chart_group()
+      if (self%physical_grid) then
+         allocate (groups(0))
+      else
+         allocate (groups(1))
+         groups(1) = chart_group()
+      end if
    end function chart_declarations
 
    !> The variables that set the size of the file.
    function chart_size_variables(self) result(text)
       class(chart_task_t), intent(in) :: self  !! the task
       character(len=:), allocatable :: text
+      if (self%physical_grid) then
+         text = "&physical: n_a, n_omega: "//integer_text(self%grid%n_alpha)//" x "//integer_text(self%grid%n_beta)// &
+                " points"
+         return
+      end if
       text = "&chart: n_alpha, n_beta: "//integer_text(self%grid%n_alpha)//" x "//integer_text(self%grid%n_beta)// &
              " points"
    end function chart_size_variables
@@ -81,6 +96,7 @@ contains
       type(chart_task_t) :: task
       task%name = "chart"
       task%takes_columns = .true.
+      task%takes_omega_range = .true.
    end function chart_task
 
    !> `&chart`, and what the scene's method and columns allow.
@@ -90,6 +106,25 @@ contains
       type(scene_t), intent(in) :: scene          !! the `&scene` settings
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
       integer, allocatable :: ids(:)
+      if (size(scene%omegas) > 0) then
+         ! a chart over (a, omega): the grid comes from &physical
+         if (group_present(file%unit, "chart")) then
+            call fail(error, file%path, "chart", "alpha_min", "the chart runs either over &chart (alpha, beta) or "// &
+               "over &physical a_min, a_max, n_a and omega_min, omega_max, n_omega, not both")
+            return
+         end if
+         self%physical_grid = .true.
+         allocate (self%groups(0))
+         self%grid%n_alpha = size(scene%amplitudes)
+         self%grid%n_beta = size(scene%omegas)
+         if (int(self%grid%n_alpha, int64)*self%grid%n_beta > int(max_grid_count, int64)) then
+            call fail(error, file%path, "physical", "n_omega", "n_a * n_omega = "// &
+               integer_text(int(self%grid%n_alpha, int64)*self%grid%n_beta)//" points exceed the limit of 1e8")
+            return
+         end if
+         call scene_chart_columns(scene, ids, error)
+         return
+      end if
       allocate (self%groups(1))
       call read_chart_group(file, chart_group(), scene%model, self%grid, self%groups(1), error)
       if (allocated(error)) return
@@ -146,6 +181,10 @@ contains
       integer :: group, n_groups, g, alloc_status
       integer :: i, n_alpha, n_beta
 
+      if (self%physical_grid) then
+         call physical_chart_run(scene, quiet, error)
+         return
+      end if
       n_alpha = self%grid%n_alpha
       n_beta = self%grid%n_beta
       call scene_chart_columns(scene, ids, error)
@@ -271,6 +310,88 @@ contains
       end subroutine finish_row
    end subroutine chart_run
 
+   !> A chart over (a, omega) of `&physical`, r0 and g fixed: the points a_i, omega_j, in
+   !> blocks of constant a (one blank line between), each with alpha = a pi^2/rho(omega),
+   !> beta = g pi^2/(rho omega^2), epsilon = kappa pi/omega (eqs. (4), (24), (46)); every
+   !> point lies in 0 <= a < rho(omega) (the scene reader refuses a chart reaching the pivot).
+   subroutine physical_chart_run(scene, quiet, error)
+      type(scene_t), intent(in) :: scene
+      logical, intent(in) :: quiet
+      type(error_t), allocatable, intent(out) :: error
+      type(output_file_t) :: file
+      type(progress_t) :: progress
+      character(len=chart_line_length), allocatable :: lines(:)
+      integer, allocatable :: statuses(:), ids(:)
+      real(wp), allocatable :: values(:, :), alphas(:), betas(:)
+      type(floquet_t) :: f
+      type(error_t), allocatable :: cause
+      type(physical_t) :: p
+      real(wp) :: v(n_chart_columns), first_failed(2), first_inaccurate(2), epsilon
+      integer(int64) :: n_failed, n_inaccurate
+      integer :: i, j, n_a, n_omega
+      logical :: outside
+      n_a = size(scene%amplitudes)
+      n_omega = size(scene%omegas)
+      call scene_chart_columns(scene, ids, error)
+      if (allocated(error)) return
+      call open_scene_output(scene, file, error)
+      if (allocated(error)) return
+      outside = .false.
+      call write_header(file, chart_header(scene, outside, ids), columns_text(chart_columns(scene), ids), error, &
+                        names_line=scene%names_line, records=[n_omega, n_a])
+      if (allocated(error)) then
+         call discard_output(file)
+         return
+      end if
+      allocate (lines(n_omega), statuses(n_omega), values(size(ids), n_omega), alphas(n_omega), betas(n_omega))
+      n_failed = 0
+      n_inaccurate = 0
+      call progress_begin(progress, int(n_a, int64)*n_omega, quiet)
+      do i = 1, n_a
+         !$omp parallel do schedule(dynamic) default(shared) private(j, p, f, cause, v, epsilon)
+         do j = 1, n_omega
+            p = scene%pendulum
+            p%omega = scene%omegas(j)
+            p%a = scene%amplitudes(i)
+            alphas(j) = model_physical_alpha(scene%model, p)
+            betas(j) = physical_beta(p)
+            epsilon = physical_epsilon(p)
+            call evaluate_point(scene, alphas(j), betas(j), f, cause, statuses(j), epsilon)
+            if (statuses(j) == status_failed) then
+               v = failed_values(alphas(j), betas(j), in_physical_domain(alphas(j), betas(j)), p%a, p%omega)
+            else
+               v = chart_values(alphas(j), betas(j), f, in_physical_domain(alphas(j), betas(j)), statuses(j), &
+                                p%omega/pi, p%a, p%omega)
+            end if
+            values(:, j) = v(ids)
+            call chart_line(ids, v, lines(j))
+         end do
+         !$omp end parallel do
+         if (scene%binary) then
+            call write_records(file, values, error)
+         else
+            call write_text(file, joined_lines(lines, i > 1), error)
+         end if
+         if (allocated(error)) exit
+         if (any(statuses == status_roundoff)) then
+            j = findloc(statuses, status_roundoff, dim=1)
+            if (n_inaccurate == 0) first_inaccurate = [alphas(j), betas(j)]
+            n_inaccurate = n_inaccurate + count(statuses == status_roundoff)
+         end if
+         if (any(statuses == status_failed)) then
+            j = findloc(statuses, status_failed, dim=1)
+            if (n_failed == 0) first_failed = [alphas(j), betas(j)]
+            n_failed = n_failed + count(statuses == status_failed)
+         end if
+         call progress_update(progress, int(i, int64)*n_omega)
+      end do
+      call progress_end(progress)
+      call finish_output(file, error)
+      if (allocated(error)) return
+      call warn_inaccurate(scene, n_inaccurate, first_inaccurate)
+      call failed_points_error(scene, n_failed, int(n_a, int64)*n_omega, first_failed, error)
+   end subroutine physical_chart_run
+
    !> Whether the grid leaves the physical domain.
    pure logical function outside(grid)
       type(chart_grid_t), intent(in) :: grid
@@ -295,7 +416,7 @@ contains
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
       type(hill_model_t) :: row
-      real(wp) :: v(n_chart_columns), per_second
+      real(wp) :: v(n_chart_columns), per_second, a
       logical :: failed(size(betas)), inaccurate(size(betas))
       integer :: j
       ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
@@ -308,11 +429,13 @@ contains
       statuses = merge(status_roundoff, status_ok, inaccurate)
       where (failed) statuses = status_failed
       do j = 1, size(betas)
+         a = 0.0_wp
+         if (scene%physical) a = point_amplitude(scene, j, alpha, betas(j))
          if (failed(j)) then
-            v = failed_values(alpha, betas(j), in_physical_domain(alpha, betas(j)))
+            v = failed_values(alpha, betas(j), in_physical_domain(alpha, betas(j)), a)
          else
             f = floquet_from_trace(traces(j), scene%epsilon, scene%method%tolerance)
-            v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second)
+            v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second, a)
          end if
          if (scene%binary) then
             values(:, j) = v(ids)
@@ -375,6 +498,7 @@ contains
       class(chart_task_t), intent(in) :: self  !! the task
       integer(int64) :: n
       n = int(self%grid%n_alpha, int64)*self%grid%n_beta
+      if (self%physical_grid) n = 0   ! one process: the points are not on the (alpha, beta) grid
    end function chart_point_count
 
    !> One row a unit.

@@ -59,7 +59,7 @@ contains
    function coefficient_task() result(task)
       type(coefficient_task_t) :: task
       task%name = "coefficient"
-      task%amplitudes_replace = "&coefficient alphas and beta"
+      task%amplitudes_replace = "alphas and beta from &coefficient"
       task%takes_amplitudes = .true.
    end function coefficient_task
 
@@ -90,6 +90,11 @@ contains
       logical :: from_physical
       integer :: k
       from_physical = size(scene%amplitudes) > 0
+      if (size(scene%amplitudes) > max_alphas) then
+         call fail(error, file%path, "physical", "n_a", "task 'coefficient' draws at most "// &
+            integer_text(max_alphas)//" curves, got "//integer_text(size(scene%amplitudes))//" amplitudes")
+         return
+      end if
       group = coefficient_group()
       allocate (self%groups(1))
       call begin_group(reader, file, group, optional=from_physical)
@@ -206,6 +211,15 @@ contains
       segments_line = "Qseg: Q replaced by "//integer_text(n_pieces)//" constant pieces on [0, 2), sampling "// &
                       sampling_name(scene%method%sampling)//" (2 pieces, endpoint: eq. (28) of the paper)"
       columns_line = "Q(a), Qseg(a): the two columns of alpha = a"
+      if (size(scene%amplitudes) == n_alpha) then
+         ! the curves in metres: each alpha is a bounce amplitude of &physical
+         columns_line = columns_line//"; the amplitudes [m]:"
+         do k = 1, n_alpha
+            columns_line = columns_line//" a = "//real_text(scene%amplitudes(k))//" (alpha = "// &
+                           real_text(self%alphas(k))//")"
+            if (k < n_alpha) columns_line = columns_line//","
+         end do
+      end if
       lines = stacked(common_header(scene), stacked([q_line], stacked([segments_line], [columns_line])))
 
       call open_scene_output(scene, file, error)

@@ -16,6 +16,7 @@ module hillstab_batch_task_points
    use hillstab_batch_scene_checks, only: check_integration_cost
    use hillstab_batch_group_points, only: points_group, read_points_group
    use hillstab_batch_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, chart_header, &
+      point_amplitude, &
       scene_chart_columns, chart_columns, evaluate_point, warn_inaccurate, failed_points_error, chart_line_length, &
       header_bytes, text_row_bytes, binary_row_bytes
    use hillstab_batch_columns, only: columns_text
@@ -68,7 +69,7 @@ contains
    function points_task() result(task)
       type(points_task_t) :: task
       task%name = "points"
-      task%amplitudes_replace = "&points file"
+      task%amplitudes_replace = "the &points group"
       task%takes_columns = .true.
       task%takes_amplitudes = .true.
    end function points_task
@@ -139,7 +140,7 @@ contains
       real(wp), intent(out), optional :: values(:, first:)
       type(floquet_t) :: f
       type(error_t), allocatable :: cause
-      real(wp) :: per_second, v(n_chart_columns), alpha, beta
+      real(wp) :: per_second, v(n_chart_columns), alpha, beta, a
       integer, allocatable :: ids(:)
       integer :: k
       call scene_chart_columns(scene, ids, cause)  ! checked when the scene was read
@@ -147,15 +148,17 @@ contains
       ! when the scene knows ω)
       per_second = 0.0_wp
       if (scene%physical) per_second = scene%pendulum%omega/pi
-      !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause, v, alpha, beta)
+      !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause, v, alpha, beta, a)
       do k = first, last
          alpha = self%points(1, k)
          beta = self%points(2, k)
+         a = 0.0_wp
+         if (scene%physical) a = point_amplitude(scene, k, alpha, beta)
          call evaluate_point(scene, alpha, beta, f, cause, statuses(k))
          if (statuses(k) == status_failed) then
-            v = failed_values(alpha, beta, in_physical_domain(alpha, beta))
+            v = failed_values(alpha, beta, in_physical_domain(alpha, beta), a)
          else
-            v = chart_values(alpha, beta, f, in_physical_domain(alpha, beta), statuses(k), per_second)
+            v = chart_values(alpha, beta, f, in_physical_domain(alpha, beta), statuses(k), per_second, a)
          end if
          if (present(values)) values(:, k) = v(ids)
          call chart_line(ids, v, lines(k))

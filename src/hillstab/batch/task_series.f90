@@ -17,7 +17,7 @@
 !> if (.not. allocated(error)) call run_series(scene, error)
 !>```
 module hillstab_batch_task_series
-   use hillstab_core_kinds, only: wp, int64, version_string
+   use hillstab_core_kinds, only: wp, int64, pi2, version_string
    use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
    use hillstab_core_error, only: error_t, set_error, err_input, err_accuracy, err_invalid_parameter
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed, status_name
@@ -30,10 +30,12 @@ module hillstab_batch_task_series
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_system_t, pendulum_from_chart, pendulum_initial_state, &
       pendulum_angle, pendulum_energy, pendulum_radius, px, pz, pvx, pvz
    use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat
-   use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, open_scene_output
+   use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, open_scene_output, physical_summary
    use hillstab_batch_declaration, only: group_t
-   use hillstab_batch_scene_file, only: scene_file_t
-   use hillstab_batch_group_series, only: series_plan_t, series_group, read_series_group
+   use hillstab_batch_scene_file, only: scene_file_t, fail
+   use hillstab_batch_scene_checks, only: min_pendulum_beta
+   use hillstab_hill_units, only: physical_t, physical_alpha, physical_beta
+   use hillstab_batch_group_series, only: series_plan_t, series_group, read_series_group, max_series_lines
    use hillstab_batch_columns, only: column_t, style_e17, columns_text, put_row, all_columns
    use hillstab_core_text, only: put_es, real_text, integer_text
    use hillstab_batch_output, only: output_file_t, finish_output, discard_output, write_header, write_text
@@ -44,6 +46,9 @@ module hillstab_batch_task_series
    !> The series task and its pendulum (`&series`).
    type, extends(task_t) :: series_task_t
       type(series_plan_t) :: plan  !! the pendulum, its start and the sampling
+      !> the last sample index j (t_j = j T/samples_per_period): periods × samples_per_period,
+      !> or the last t_j <= duration
+      integer(int64) :: n_samples = 0
    contains
       procedure :: read => series_read
       procedure :: run => series_run
@@ -96,7 +101,10 @@ contains
    function series_task() result(task)
       type(series_task_t) :: task
       task%name = "series"
-      task%takes_physical = .false.
+      task%takes_amplitudes = .true.
+      task%takes_spring = .true.
+      task%single_amplitude = .true.
+      task%amplitudes_replace = "alpha, beta, r0 and g from &series"
    end function series_task
 
    !> `&series`.
@@ -105,8 +113,78 @@ contains
       type(scene_file_t), intent(in) :: file      !! the scene file
       type(scene_t), intent(in) :: scene          !! the `&scene` settings
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
+      type(pendulum_t) :: p
+      type(error_t), allocatable :: cause
+      character(len=5), parameter :: replaced(4) = ["alpha", "beta ", "r0   ", "g    "]
+      real(wp) :: spacing
+      integer :: k
       allocate (self%groups(1))
-      call read_series_group(file, series_group(), scene%model, scene%physical, self%plan, self%groups(1), error)
+      call read_series_group(file, series_group(), scene%model, .false., self%plan, self%groups(1), error, &
+                             takes_duration=.true.)
+      if (allocated(error)) return
+      if (scene%physical) then
+         ! the pendulum of &physical (omega or k, m; r0; g; kappa; one amplitude a)
+         do k = 1, size(replaced)
+            if (self%groups(1)%given(trim(replaced(k)))) then
+               call fail(error, file%path, "series", trim(replaced(k)), "the pendulum comes either from &series "// &
+                  "alpha, beta, r0, g or from &physical (omega or k, m; r0; g; a), not both: &series "// &
+                  trim(replaced(k))//" with &physical")
+               return
+            end if
+         end do
+         if (size(scene%amplitudes) /= 1) then
+            call fail(error, file%path, "physical", "a", "task series simulates one bounce amplitude: give one a "// &
+               "(m) with r0, got "//integer_text(size(scene%amplitudes)))
+            return
+         end if
+         if (.not. scene%pendulum%g > 0.0_wp) then
+            call fail(error, file%path, "physical", "g", "the series task needs gravity g > 0")
+            return
+         end if
+         self%plan%alpha = physical_alpha(physical_t(r0=scene%pendulum%r0, g=scene%pendulum%g, &
+                                                     omega=scene%pendulum%omega, a=scene%amplitudes(1)))
+         self%plan%beta = physical_beta(scene%pendulum)
+         self%plan%r0 = scene%pendulum%r0
+         self%plan%g = scene%pendulum%g
+         if (self%plan%beta < min_pendulum_beta .or. self%plan%beta >= pi2) then
+            call fail(error, file%path, "physical", "r0", "beta = g pi^2/(rho omega^2) = "// &
+               real_text(self%plan%beta)//" must lie in [1e-8, pi^2) for the series task")
+            return
+         end if
+         do k = 1, size(replaced)
+            call self%groups(1)%hide(trim(replaced(k)))
+         end do
+      end if
+      call pendulum_from_chart(self%plan%alpha, self%plan%beta, scene%epsilon, self%plan%r0, self%plan%g, p, cause)
+      if (allocated(cause)) then
+         call fail(error, file%path, "series", "alpha", cause%message)
+         return
+      end if
+      if (self%plan%duration > 0.0_wp) then
+         ! the last sample time t_j = j T/samples_per_period (the expression of the run) <= duration
+         spacing = p%period/real(self%plan%samples_per_period, wp)
+         if (self%plan%duration/spacing + 2.0_wp > real(max_series_lines, wp)) then
+            call fail(error, file%path, "series", "duration", real_text(self%plan%duration)//" s at "// &
+               real_text(spacing)//" s a row exceeds the limit of 1e8 data lines; lower duration or "// &
+               "samples_per_period")
+            return
+         end if
+         self%n_samples = int(self%plan%duration/spacing, int64)
+         do while (sample_time(p, self%n_samples + 1, self%plan%samples_per_period) <= self%plan%duration)
+            self%n_samples = self%n_samples + 1
+         end do
+         do while (self%n_samples > 0)
+            if (sample_time(p, self%n_samples, self%plan%samples_per_period) <= self%plan%duration) exit
+            self%n_samples = self%n_samples - 1
+         end do
+         if (self%n_samples < 1) then
+            call fail(error, file%path, "series", "duration", "must be at least one sample spacing T/"// &
+               "samples_per_period = "//real_text(spacing)//" s, got "//real_text(self%plan%duration))
+            return
+         end if
+      else
+         self%n_samples = int(self%plan%periods, int64)*self%plan%samples_per_period
+      end if
    end subroutine series_read
 
    !> The columns of a series file.
@@ -134,20 +212,20 @@ contains
       type(work_stats_t) :: stats
       real(wp) :: y(4)
 
-      call series_summary(scene, self%plan, summary, error)
+      call series_summary(scene, self%plan, self%n_samples, summary, error)
       if (allocated(error)) return
 
       call open_scene_output(scene, writer%file, error)
       if (allocated(error)) return
       writer%table = series_columns()
-      call write_header(writer%file, series_header(scene, self%plan, summary), &
+      call write_header(writer%file, series_header(scene, self%plan, self%n_samples, summary), &
                         columns_text(writer%table, all_columns(writer%table)), error)
       if (allocated(error)) then
          call discard_output(writer%file)
          return
       end if
       writer%pendulum = summary%pendulum
-      writer%n_samples = int(self%plan%periods, int64)*self%plan%samples_per_period
+      writer%n_samples = self%n_samples
       writer%samples_per_period = self%plan%samples_per_period
       y = initial_state(self%plan, summary%pendulum)
       call progress_begin(writer%progress, writer%n_samples + 1, quiet, "rows")
@@ -163,9 +241,10 @@ contains
    end subroutine series_run
 
    !> The first pass: integrate without writing and measure what the header reports.
-   subroutine series_summary(scene, plan, summary, error)
+   subroutine series_summary(scene, plan, n_samples, summary, error)
       type(scene_t), intent(in) :: scene           !! task = series
       type(series_plan_t), intent(in) :: plan      !! its pendulum
+      integer(int64), intent(in) :: n_samples      !! the last sample index
       type(series_summary_t), intent(out) :: summary  !! what the header reports: energy drift, angles, onset, work
       type(error_t), allocatable, intent(out) :: error  !! integration failure; unallocated on success
       type(pendulum_watch_t) :: watch
@@ -196,8 +275,7 @@ contains
 
          watch%pendulum = summary%pendulum
          y = initial_state(plan, summary%pendulum)
-         t_end = sample_time(summary%pendulum, int(plan%periods, int64)*plan%samples_per_period, &
-                             plan%samples_per_period)
+         t_end = sample_time(summary%pendulum, n_samples, plan%samples_per_period)
          call pendulum_integrate(watch, y, t_end, scene%method%tolerance, summary%work, cause)
          if (allocated(cause)) then
             call set_error(error, cause%code, scene%source//": series: "//cause%message)
@@ -263,14 +341,24 @@ contains
    end subroutine write_samples
 
    !> Header: version, scene (repeatable), the pendulum, the method, the summary, the columns.
-   function series_header(scene, plan, s) result(lines)
+   function series_header(scene, plan, n_samples, s) result(lines)
       type(scene_t), intent(in) :: scene
       type(series_plan_t), intent(in) :: plan
+      integer(int64), intent(in) :: n_samples
       type(series_summary_t), intent(in) :: s
       character(len=:), allocatable :: lines(:)
-      character(len=400) :: extra(24)
-      integer :: n
+      character(len=400) :: extra(30)
+      character(len=:), allocatable :: spring(:)
+      integer :: n, k
       n = 0
+      if (scene%physical) then
+         spring = physical_summary(scene)
+         do k = 1, size(spring)
+            n = n + 1; extra(n) = spring(k)
+         end do
+         n = n + 1; extra(n) = "the pendulum of &physical: alpha = a pi^2/rho = "//real_text(plan%alpha)// &
+            ", beta = "//real_text(plan%beta)//" (eq. (24))"
+      end if
       associate (p => s%pendulum)
          n = n + 1; extra(n) = "model: x'' = -omega^2 (1 - r0/r) x - kappa x', z'' = -omega^2 (1 - r0/r) z + g - kappa z'"// &
             " (x horizontal, z downward from the pivot, r = sqrt(x^2 + z^2), phi = atan2(x, z))"
@@ -282,8 +370,9 @@ contains
       end associate
       n = n + 1; extra(n) = "integrator: DOP853, relative tolerance "//real_text(scene%method%tolerance)// &
          "; absolute tolerances rtol*rho on z, rtol*(initial swing) on x (relative accuracy in a tiny swing)"
-      n = n + 1; extra(n) = "samples: 7th-order dense output at t = j T / samples_per_period, j = 0 .. periods "// &
-         "samples_per_period (the step size is not forced onto them)"
+      n = n + 1; extra(n) = "samples: 7th-order dense output at t = j T / samples_per_period, j = 0 .. "// &
+         integer_text(n_samples)//" (the step size is not forced onto them); last row t = "// &
+         real_text(sample_time(s%pendulum, n_samples, plan%samples_per_period))//" s"
       n = n + 1; extra(n) = "summary: max |phi| = "//fmt(s%max_abs_phi)//" rad at t = "//fmt(s%time_of_max_phi)// &
          " s (16 dense points per step)"
       n = n + 1; extra(n) = "summary: energy E(0) = "//fmt(s%energy_start)//" J/kg, E(end) = "//fmt(s%energy_end)// &

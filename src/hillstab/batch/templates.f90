@@ -59,7 +59,12 @@ contains
       do k = 1, size(entries)
          if (entries(k)%name == task) text = header(task, entries(k)%purpose)
       end do
-      block = group_block(scene_group(), ["task"], ["'"//task//"'"])
+      if (job%takes_physical) then
+         ! epsilon shown commented out: with &physical the damping is kappa
+         block = group_block(scene_group(), ["task"], ["'"//task//"'"], ["epsilon"])
+      else
+         block = group_block(scene_group(), ["task"], ["'"//task//"'"])
+      end if
       text = text//block
       groups = job%declarations()
       do k = 1, size(groups)
@@ -90,11 +95,14 @@ contains
 
    !> A group with every variable at its default (or, given in `names`, at `values`); a
    !> variable without a default is shown commented out with its example.
-   function group_block(group, names, values) result(text)
+   function group_block(group, names, values, commented) result(text)
       type(group_t), intent(in) :: group
       character(len=*), intent(in), optional :: names(:), values(:)
+      !> variables shown commented out at their default (an alternative group replaces them)
+      character(len=*), intent(in), optional :: commented(:)
       character(len=:), allocatable :: text, value
       integer :: k, j
+      logical :: hidden
       text = group_line(group)
       do k = 1, size(group%variables)
          associate (v => group%variables(k))
@@ -104,7 +112,11 @@ contains
                   if (trim(names(j)) == v%name) value = trim(values(j))
                end do
             end if
-            if (len(value) == 0 .and. v%required) then
+            hidden = .false.
+            if (present(commented)) hidden = any(commented == v%name)
+            if (hidden) then
+               text = text//item("! "//v%name//" = "//value, v%help)
+            else if (len(value) == 0 .and. v%required) then
                text = text//item(v%name//" = "//v%example, v%help)
             else if (len(value) == 0) then
                text = text//item("! "//v%name//" = "//v%example, v%help)
@@ -137,20 +149,61 @@ contains
    end function commented_block
 
    !> The optional `&physical` group, commented out (a scene gives either it or the
-   !> dimensionless values); `r0` and `a` only for a task that takes amplitudes.
+   !> dimensionless values), with instructions that make a valid scene when followed:
+   !> remove the '! ' of its lines (and delete what it replaces); its own alternatives
+   !> (k and m for omega, the range a_min, a_max, n_a for the list a, r0 alone for the
+   !> spring of task boundaries) are '! !' lines inside it.
    function physical_block(task) result(text)
       class(task_t), intent(in) :: task
-      character(len=:), allocatable :: text, block
-      text = "! Optional, instead of the dimensionless values: the pendulum in SI units (remove the '!'s"// &
-         nl//"! to use it; then no &scene epsilon"
-      if (task%takes_amplitudes) then
-         text = text//", and r0 with a replace "//task%amplitudes_replace//")."//nl
-         block = commented_block(physical_group())
-      else
-         text = text//")."//nl
-         block = commented_block(physical_group(), [character(len=2) :: "r0", "a"])
-      end if
-      text = text//block
+      character(len=:), allocatable :: text, what
+      type(group_t) :: group
+      integer :: k
+      group = physical_group()
+      if (task%single_amplitude) group = group%with_default("a", "0.05")
+      what = ""
+      if (task%takes_amplitudes) what = " and delete "//task%amplitudes_replace
+      text = "Optional, instead of the dimensionless values: the pendulum in SI units. To use it, delete the "// &
+         "first two characters of each line from &physical to /"//what//". The lines that then stay commented "// &
+         "are alternatives: k and m instead of omega (uncomment them and delete omega)"
+      if (task%takes_amplitudes .and. .not. task%single_amplitude) text = text//"; a_min, a_max, n_a instead "// &
+         "of a (uncomment them and delete a)"
+      if (task%takes_spring .and. .not. task%takes_amplitudes) text = text//"; r0 alone gives the critical "// &
+         "amplitudes of that spring (uncomment it and delete the &chart group)"
+      if (task%takes_omega_range) text = text//"; r0 with a_min, a_max, n_a and omega_min, omega_max, n_omega "// &
+         "give a chart over (a, omega) (uncomment them, delete omega and the &chart group)"
+      text = wrapped("! ", text//".")
+      text = text//"! &"//group%name//nl
+      do k = 1, size(group%variables)
+         associate (v => group%variables(k))
+            select case (v%name)
+            case ("k", "m")
+               text = text//commented_item("! "//v%name//" = "//value_of(v), v%help)
+            case ("r0")
+               if (task%takes_amplitudes) then
+                  text = text//commented_item(v%name//" = "//value_of(v), v%help)
+               else if (task%takes_spring .or. task%takes_omega_range) then
+                  text = text//commented_item("! "//v%name//" = "//value_of(v), v%help)
+               end if
+            case ("a")
+               if (task%takes_amplitudes) text = text//commented_item(v%name//" = "//value_of(v), v%help)
+            case ("a_min", "a_max", "n_a")
+               if ((task%takes_amplitudes .and. .not. task%single_amplitude) .or. task%takes_omega_range) &
+                  text = text//commented_item("! "//v%name//" = "//value_of(v), v%help)
+            case ("omega_min", "omega_max", "n_omega")
+               if (task%takes_omega_range) text = text//commented_item("! "//v%name//" = "//value_of(v), v%help)
+            case default
+               text = text//commented_item(v%name//" = "//value_of(v), v%help)
+            end select
+         end associate
+      end do
+      text = text//"! /"
+   contains
+      function value_of(v) result(value)
+         type(variable_t), intent(in) :: v
+         character(len=:), allocatable :: value
+         value = v%default
+         if (len(value) == 0) value = v%example
+      end function value_of
    end function physical_block
 
    !> The first line of a group: its name, and its help at the comment column.

@@ -23,18 +23,21 @@
 !> print *, check%passed, check%trace
 !>```
 module hillstab_curves_boundaries
-   use hillstab_core_kinds, only: wp
+   use hillstab_core_kinds, only: wp, pi2
+   use hillstab_core_text, only: real_text, integer_text
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
    use hillstab_hill_models, only: hill_model_t
    use hillstab_hill_transfer, only: trace_t
    use hillstab_integrate_monodromy, only: method_t, method_auto, monodromy_trace
    use hillstab_hill_mathieu, only: mathieu_witness, gsl_witness_max_q
+   use hillstab_curves_hill_method, only: hill_boundary_t, hill_boundaries
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
    public :: boundary_check_t, verify_boundary, approximate_root_t, approximate_boundaries
    public :: mathieu_witness, gsl_witness_max_q, beta_accuracy_factor, unstable_intervals_from_roots
    public :: interval_length, symmetric_difference_length
+   public :: alpha_crossing_t, alpha_crossings, crossing_samples, crossing_search_gap
 
    !> A boundary passes the check when the β error implied by the trace residual is at
    !> most this times tolerance·max(1, |β|) (tolerance 1e-11 → 1e-9 at |β| ≤ 1).
@@ -50,6 +53,26 @@ module hillstab_curves_boundaries
       real(wp) :: slope = 0.0_wp       !! dS/dβ (0 when not needed)
       real(wp) :: beta_error = 0.0_wp  !! β error implied by the residual (0 when within the trace allowance)
    end type boundary_check_t
+
+   !> The search for crossings along α ends at α = π²(1 − crossing_search_gap): a bounce
+   !> reaching to within 1e-4 ρ of the pivot (Hill's truncation grows like 1/√(1 − α/π²)).
+   real(wp), parameter :: crossing_search_gap = 1.0e-4_wp
+
+   !> One α where a transition curve crosses a fixed β (S = ±2 along α).
+   type :: alpha_crossing_t
+      real(wp) :: alpha = 0.0_wp        !! α of the crossing
+      integer :: trace_sign = 2         !! +2 / −2: S there
+      integer :: order = 0              !! n of a_n / b_n
+      integer :: parity = 1             !! +1 a_n (even), −1 b_n (odd)
+      real(wp) :: alpha_error = 0.0_wp  !! estimated error of α: the last bracket, or the β accuracy over |dβ/dα|
+      integer :: modes = 0              !! Fourier modes of the last truncation
+   end type alpha_crossing_t
+
+   !> The transition curves at one sample α.
+   type :: sample_curves_t
+      type(hill_boundary_t), allocatable :: curves(:)
+      type(error_t), allocatable :: error
+   end type sample_curves_t
 
    !> One root of S_method(β) = ±2.
    type :: approximate_root_t
@@ -279,6 +302,207 @@ contains
          if (abs(s) > 2.0_wp) intervals = reshape([intervals, cuts(i), cuts(i + 1)], [2, size(intervals, 2) + 1])
       end do
    end subroutine unstable_intervals_from_roots
+
+   !> The sample α of the crossing search, ascending from 0 to `alpha_end` < π²: steps of
+   !> 0.1 up to 0.9 π², then 8 a decade in the gap 1 − α/π² (where the curves change on
+   !> the scale of that gap).
+   pure function crossing_samples(alpha_end) result(alphas)
+      real(wp), intent(in) :: alpha_end  !! the last α, in (0.9 π², π²)
+      real(wp), allocatable :: alphas(:)
+      integer :: n_uniform, n_geometric, j
+      real(wp) :: gap_end
+      n_uniform = ceiling(0.9_wp*pi2/0.1_wp)
+      gap_end = 1.0_wp - alpha_end/pi2
+      n_geometric = max(1, ceiling(8.0_wp*log10(0.1_wp/gap_end)))
+      allocate (alphas(n_uniform + 1 + n_geometric))
+      do j = 0, n_uniform
+         alphas(j + 1) = 0.9_wp*pi2*real(j, wp)/real(n_uniform, wp)
+      end do
+      do j = 1, n_geometric
+         alphas(n_uniform + 1 + j) = pi2*(1.0_wp - 0.1_wp*(gap_end/0.1_wp)**(real(j, wp)/real(n_geometric, wp)))
+      end do
+      alphas(size(alphas)) = alpha_end
+   end function crossing_samples
+
+   !> Every α in [0, alpha_end] where a transition curve of `kind` crosses the fixed β:
+   !> the curves by Hill's method (β window [−1, π² + 1]) at the samples of
+   !> `crossing_samples`, each sign change of β_curve(α) − β between neighbouring samples
+   !> refined by the Illinois variant of regula falsi (bisection when it stalls) to
+   !> tolerance·max(1, α), or until β_curve − β is within the curves' own accuracy
+   !> tolerance·max(1, β). Zero-width tongues (both edges coincide: S touches ±2, the
+   !> stability does not change) are skipped. Ascending in α.
+   subroutine alpha_crossings(kind, beta, alpha_end, tolerance, crossings, error)
+      integer, intent(in) :: kind           !! a model constant (hillstab_hill_models)
+      real(wp), intent(in) :: beta          !! the fixed β, inside (0, π²)
+      real(wp), intent(in) :: alpha_end     !! the end of the search, < π²
+      real(wp), intent(in) :: tolerance     !! target accuracy of α and of the curves' β
+      type(alpha_crossing_t), allocatable, intent(out) :: crossings(:)  !! ascending in α
+      type(error_t), allocatable, intent(out) :: error  !! Hill's method failed; unallocated on success
+      real(wp), allocatable :: alphas(:)
+      type(sample_curves_t), allocatable :: samples(:)
+      real(wp) :: f0, f1, beta1
+      integer :: j, c, n
+      logical :: found
+      type(alpha_crossing_t) :: crossing
+      allocate (crossings(0))
+      alphas = crossing_samples(alpha_end)
+      n = size(alphas)
+      allocate (samples(n))
+      !$omp parallel do schedule(dynamic) default(shared) private(j)
+      do j = n, 1, -1
+         call hill_boundaries(kind, alphas(j), -1.0_wp, pi2 + 1.0_wp, tolerance, samples(j)%curves, samples(j)%error)
+      end do
+      !$omp end parallel do
+      do j = 1, n
+         if (allocated(samples(j)%error)) then
+            call set_error(error, samples(j)%error%code, "Hill's method at alpha = "// &
+               real_text((alphas(j)))//": "//samples(j)%error%message)
+            return
+         end if
+      end do
+      do j = 1, n - 1
+         do c = 1, size(samples(j)%curves)
+            associate (curve => samples(j)%curves(c))
+               call matching_beta(samples(j + 1)%curves, curve, beta1, found)
+               if (.not. found) cycle
+               if (curve%coexistent .and. sample_coexistent(samples(j + 1)%curves, curve)) cycle
+               f0 = curve%beta - beta
+               f1 = beta1 - beta
+               if (f0 == 0.0_wp .and. j == 1) then
+                  crossing = alpha_crossing_t(alphas(j), curve%trace_sign, curve%order, curve%parity, 0.0_wp, &
+                                              curve%modes)
+               else if (f1 == 0.0_wp) then
+                  crossing = alpha_crossing_t(alphas(j + 1), curve%trace_sign, curve%order, curve%parity, 0.0_wp, &
+                                              curve%modes)
+               else if ((f0 < 0.0_wp .and. f1 > 0.0_wp) .or. (f0 > 0.0_wp .and. f1 < 0.0_wp)) then
+                  call refine_crossing(kind, beta, curve, alphas(j), alphas(j + 1), f0, f1, tolerance, crossing, error)
+                  if (allocated(error)) return
+               else
+                  cycle
+               end if
+               crossings = [crossings, crossing]
+            end associate
+         end do
+      end do
+      call sort_crossings(crossings)
+   end subroutine alpha_crossings
+
+   !> β of the curve with the same kind, order and parity as `like` among `curves`.
+   pure subroutine matching_beta(curves, like, beta, found)
+      type(hill_boundary_t), intent(in) :: curves(:)
+      type(hill_boundary_t), intent(in) :: like
+      real(wp), intent(out) :: beta
+      logical, intent(out) :: found
+      integer :: c
+      found = .false.
+      beta = 0.0_wp
+      do c = 1, size(curves)
+         if (curves(c)%trace_sign == like%trace_sign .and. curves(c)%order == like%order .and. &
+             curves(c)%parity == like%parity) then
+            beta = curves(c)%beta
+            found = .true.
+            return
+         end if
+      end do
+   end subroutine matching_beta
+
+   !> Whether the curve like `like` is flagged coexistent among `curves`.
+   pure logical function sample_coexistent(curves, like)
+      type(hill_boundary_t), intent(in) :: curves(:)
+      type(hill_boundary_t), intent(in) :: like
+      integer :: c
+      sample_coexistent = .false.
+      do c = 1, size(curves)
+         if (curves(c)%trace_sign == like%trace_sign .and. curves(c)%order == like%order .and. &
+             curves(c)%parity == like%parity) sample_coexistent = curves(c)%coexistent
+      end do
+   end function sample_coexistent
+
+   !> The crossing of one curve with β inside [lo, hi] (f = β_curve − β of opposite signs
+   !> at the ends): Illinois regula falsi, a bisection after two steps that do not halve
+   !> the bracket.
+   subroutine refine_crossing(kind, beta, curve, lo_in, hi_in, f_lo_in, f_hi_in, tolerance, crossing, error)
+      integer, intent(in) :: kind
+      real(wp), intent(in) :: beta, lo_in, hi_in, f_lo_in, f_hi_in, tolerance
+      type(hill_boundary_t), intent(in) :: curve
+      type(alpha_crossing_t), intent(out) :: crossing
+      type(error_t), allocatable, intent(out) :: error
+      type(hill_boundary_t), allocatable :: curves(:)
+      real(wp) :: lo, hi, f_lo, f_hi, x, fx, width, slope, beta_x
+      integer :: iteration, side, stalls, c
+      logical :: found
+      lo = lo_in; hi = hi_in; f_lo = f_lo_in; f_hi = f_hi_in
+      side = 0
+      stalls = 0
+      x = lo
+      fx = f_lo
+      crossing = alpha_crossing_t(lo, curve%trace_sign, curve%order, curve%parity, hi - lo, curve%modes)
+      do iteration = 1, 200
+         width = hi - lo
+         if (stalls >= 2) then
+            x = 0.5_wp*(lo + hi)
+            stalls = 0
+         else
+            x = (lo*f_hi - hi*f_lo)/(f_hi - f_lo)
+            if (.not. (x > lo .and. x < hi)) x = 0.5_wp*(lo + hi)
+         end if
+         call hill_boundaries(kind, x, -1.0_wp, pi2 + 1.0_wp, tolerance, curves, error)
+         if (allocated(error)) return
+         call matching_beta(curves, curve, beta_x, found)
+         if (.not. found) then
+            call set_error(error, err_invalid_parameter, "the curve of order "//integer_text((curve%order))// &
+               " left the window at alpha = "//real_text((x)))
+            return
+         end if
+         do c = 1, size(curves)
+            if (curves(c)%trace_sign == curve%trace_sign .and. curves(c)%order == curve%order .and. &
+                curves(c)%parity == curve%parity) crossing%modes = curves(c)%modes
+         end do
+         fx = beta_x - beta
+         if (fx == 0.0_wp) then
+            lo = x; hi = x
+            exit
+         end if
+         if ((fx < 0.0_wp) .eqv. (f_lo < 0.0_wp)) then
+            lo = x; f_lo = fx
+            if (side == -1) f_hi = 0.5_wp*f_hi
+            side = -1
+         else
+            hi = x; f_hi = fx
+            if (side == 1) f_lo = 0.5_wp*f_lo
+            side = 1
+         end if
+         if (hi - lo > 0.5_wp*width) then
+            stalls = stalls + 1
+         else
+            stalls = 0
+         end if
+         if (hi - lo <= tolerance*max(1.0_wp, abs(x))) exit
+         if (abs(fx) <= tolerance*max(1.0_wp, abs(beta))) exit
+      end do
+      crossing%alpha = x
+      slope = 0.0_wp
+      if (hi > lo) slope = abs(f_hi - f_lo)/(hi - lo)
+      crossing%alpha_error = hi - lo
+      if (slope > 0.0_wp) crossing%alpha_error = min(crossing%alpha_error, &
+                                                     max(abs(fx), tolerance*max(1.0_wp, abs(beta)))/slope)
+   end subroutine refine_crossing
+
+   pure subroutine sort_crossings(crossings)
+      type(alpha_crossing_t), intent(inout) :: crossings(:)
+      type(alpha_crossing_t) :: t
+      integer :: i, j
+      do i = 2, size(crossings)
+         t = crossings(i)
+         j = i - 1
+         do while (j >= 1)
+            if (crossings(j)%alpha <= t%alpha) exit
+            crossings(j + 1) = crossings(j)
+            j = j - 1
+         end do
+         crossings(j + 1) = t
+      end do
+   end subroutine sort_crossings
 
    !> Total length of a union of disjoint intervals (2, m).
    pure real(wp) function interval_length(intervals)

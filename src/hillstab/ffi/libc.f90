@@ -18,7 +18,7 @@ module hillstab_ffi_libc
    public :: c_mkstemp, c_fdopen, c_fchmod, c_umask, c_close, c_getrlimit, rlimit_t, rlimit_as, c_getpagesize
    public :: c_rename, c_remove, c_unlink, c_getpid, c_fopen, c_fwrite, c_fwrite_raw, c_fflush, c_fclose, c_fileno, &
       c_fsync, c_signal, c_exit_now, c_isatty, c_statvfs, statvfs_t
-   public :: errno_text, set_errno, c_string, remove_file, is_directory, is_special_file
+   public :: errno_text, set_errno, c_string, remove_file, is_directory, is_special_file, c_mkdir
 
    !> RLIMIT_AS (Linux): the largest address space of the process.
    integer(c_int), parameter :: rlimit_as = 9
@@ -199,6 +199,13 @@ module hillstab_ffi_libc
          integer(c_int), value :: fd  !! the descriptor
          integer(c_int) :: yes
       end function c_isatty
+      !> mkdir(2): 0 on success (mode_t is an unsigned int on Linux).
+      function c_mkdir(path, mode) bind(C, name="mkdir") result(status)
+         import :: c_char, c_int
+         character(kind=c_char), intent(in) :: path(*)  !! NUL-terminated path of the new directory
+         integer(c_int), value :: mode                  !! permissions before the umask
+         integer(c_int) :: status
+      end function c_mkdir
       !> statvfs(3): 0 on success.
       function c_statvfs(path, info) bind(C, name="statvfs") result(status)
          import :: c_char, c_int, statvfs_t
