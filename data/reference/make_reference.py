@@ -24,10 +24,13 @@ Run from the repository root (installs mpmath and gmpy2 from PyPI if missing):
 writes data/reference/hard_set.dat. Takes a few minutes on 2 cores. With --check
 (`python3 data/reference/make_reference.py --check`) it writes
 data/reference/check_set.dat instead: points of the same kind that no method was
-tuned on (see `check_points`).
+tuned on (see `check_points`). With --band it writes data/reference/band_set.dat: the
+band beta in +-[1e-5, 1e-2] and {0}, alpha in [9.3, pi^2 - 1e-6], where S is close to 2
+and the solution x ~ r(tau) of beta = 0 is nearly periodic (see `band_points`).
 """
 import sys
 import multiprocessing as mproc
+import random
 
 import mpmath as mp
 
@@ -209,16 +212,44 @@ def check_points():
     return pts
 
 
+def band_points():
+    """The band beta in +-[1e-5, 1e-2] and {0}, alpha in [9.3, pi^2 - 1e-6]: four points
+    reported as missed by earlier versions, then points drawn with a fixed seed: alpha
+    uniform in [9.3, pi^2 - 1e-6] for half of them and with pi^2 - alpha log-uniform in
+    [1e-6, pi^2 - 9.3] for the other half (the dip deepens as alpha -> pi^2); |beta|
+    log-uniform in [1e-5, 1e-2] with a random sign, one point in eight at beta = 0."""
+    pts = [(ELASTIC, 9.82, -0.0007, "band: magnus6 missed"), (ELASTIC, 9.73, 0.002, "band: magnus6 missed"),
+           (ELASTIC, 9.536632300815704, 0.0004637511878637649, "band: auto missed"),
+           (ELASTIC, 9.52, 0.0015, "band: auto missed")]
+    rng = random.Random(20261201)
+    top = float(mp.pi**2) - 1e-6
+    for i in range(36):
+        if i % 2 == 0:
+            alpha = rng.uniform(9.3, top)
+        else:
+            alpha = float(mp.pi**2) - 10 ** rng.uniform(-6, float(mp.log10(mp.pi**2 - 9.3)))
+            alpha = min(max(alpha, 9.3), top)
+        if i % 8 == 7:
+            beta = 0.0
+        else:
+            beta = rng.choice((-1, 1)) * 10 ** rng.uniform(-5, -2)
+        pts.append((ELASTIC, alpha, beta, "band"))
+    return pts
+
+
 def main():
-    args = [a for a in sys.argv[1:] if a != "--check"]
+    args = [a for a in sys.argv[1:] if a not in ("--check", "--band", "--serial")]
     check = "--check" in sys.argv[1:]
-    out = args[0] if args else ("data/reference/check_set.dat" if check else "data/reference/hard_set.dat")
-    pts = check_points() if check else points()
-    with mproc.Pool(2) as pool:
+    band = "--band" in sys.argv[1:]
+    default = "data/reference/band_set.dat" if band else (
+        "data/reference/check_set.dat" if check else "data/reference/hard_set.dat")
+    out = args[0] if args else default
+    pts = band_points() if band else (check_points() if check else points())
+    with mproc.Pool(1 if "--serial" in sys.argv[1:] else 2) as pool:
         lines = pool.map(point_line, pts, chunksize=1)
     with open(out, "w") as f:
         f.write("# Reference traces S of x'' + Q(tau) x = 0 at hillstab's %s points, made by\n"
-                % ("check" if check else "hard"))
+                % ("band" if band else ("check" if check else "hard")))
         f.write("# data/reference/make_reference.py (mpmath %s, Taylor series, 50 digits).\n" % mp.__version__)
         f.write("# model: 0 elastic Q of eq. (25), 1 mathieu q = beta - alpha cos(pi tau); alpha, beta: the exact\n")
         f.write("# doubles used; sign, ln_abs_S: sign and natural log of |S|; S: S itself (0.0 when |S| > 1e300);\n")
