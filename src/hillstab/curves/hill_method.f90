@@ -66,7 +66,7 @@ module hillstab_curves_hill_method
    public :: hill_boundary_t, hill_boundaries, hill_block_eigenvalues, hill_block_name
    public :: block_periodic_even, block_periodic_odd, block_antiperiodic_even, block_antiperiodic_odd
    public :: formulation_inverted_pencil, formulation_pencil, formulation_nonsymmetric
-   public :: hill_initial_modes, hill_max_modes, block_order, coexistence_threshold
+   public :: hill_initial_modes, hill_max_modes, block_order, coexistence_threshold, structural_coexistence
 
    !> Periodic, cosine-type: curves a₀, a₂, a₄, … (S = +2).
    integer, parameter :: block_periodic_even = 1
@@ -87,7 +87,9 @@ module hillstab_curves_hill_method
    !> Largest truncation (modes per block) tried before giving up.
    integer, parameter :: hill_max_modes = 40000
    !> Two curves of one order closer than this times tolerance·max(1, |β|) count as one
-   !> (zero-width tongue, coexistence).
+   !> (zero-width tongue, coexistence) for the approximate methods of the boundaries task,
+   !> whose piecewise-constant Q has no structure to decide it by; the exact curves use
+   !> `structural_coexistence`.
    real(wp), parameter :: coexistence_threshold = 100.0_wp
 
    !> One point of a transition curve at the α of the call.
@@ -115,6 +117,29 @@ contains
       case default; name = "unknown"
       end select
    end function hill_block_name
+
+   !> Whether the two curves of every order n ≥ 1 of this kind (S = +2 or −2) coincide: decided
+   !> by the structure of the blocks, not by the distance of two computed eigenvalues (thin
+   !> tongues — Mathieu q = 1 at order 9 has width 4e-13, below the error of its edges —
+   !> cannot be told from closed ones by a threshold).
+   !>
+   !> On the Fourier modes the even (cosine) and odd (sine) blocks of one kind are the same
+   !> matrix except where the lowest modes meet their mirror images: in the periodic
+   !> blocks the cosine block has the extra mode 0, coupled to mode 1 by the weight
+   !> c(1) of cos πτ there (`model_hill_coupling` at t = 1); in the antiperiodic blocks the
+   !> first diagonal entries differ by ±c(1/4)/2. When that weight is 0 the cosine block is
+   !> block-triangular over the sine block (periodic: its eigenvalues are a₀ and those of the
+   !> sine block) or equal to it (antiperiodic), and every tongue of that kind has zero
+   !> width. For the elastic model c(t) = α(1 − t): the periodic tongues (S = +2) are closed
+   !> for every α — the two 2-periodic solutions coexist — and the antiperiodic ones only at
+   !> α = 0 (their widths are measured nonzero, falling geometrically with the order). For
+   !> the Mathieu model c = ν: no tongue is closed for ν ≠ 0 (Ince's theorem), all at ν = 0.
+   elemental logical function structural_coexistence(kind, alpha, trace_sign) result(closed)
+      integer, intent(in) :: kind        !! a model constant
+      real(wp), intent(in) :: alpha      !! α (ν for the Mathieu model)
+      integer, intent(in) :: trace_sign  !! +2 periodic, −2 antiperiodic
+      closed = model_hill_coupling(kind, alpha, merge(1.0_wp, 0.25_wp, trace_sign == 2)) == 0.0_wp
+   end function structural_coexistence
 
    !> Order n of the j-th eigenvalue (j = 1, 2, …) of a block.
    elemental integer function block_order(block, j)
@@ -429,8 +454,7 @@ contains
                      found = .true.
                   end if
                end do
-               if (found) all(n_out)%coexistent = abs(partner - all(n_out)%beta) <= &
-                  coexistence_threshold*tolerance*max(1.0_wp, abs(all(n_out)%beta))
+               if (found) all(n_out)%coexistent = structural_coexistence(kind, alpha, all(n_out)%trace_sign)
             end if
          end do
       end do
