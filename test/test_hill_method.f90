@@ -31,6 +31,7 @@ contains
          new_unittest("quarter_pi2_in_first_tongue", quarter_pi2_in_first_tongue), &
          new_unittest("tongues_open_and_closed", tongues_open_and_closed), &
          new_unittest("coexistence_by_structure", coexistence_by_structure), &
+         new_unittest("error_bound_against_references", error_bound_against_references), &
          new_unittest("ritz_convergence", ritz_convergence), &
          new_unittest("formulations_agree", formulations_agree), &
          new_unittest("bad_input", bad_input)])
@@ -263,6 +264,58 @@ contains
          call check(ctx, n_orders >= 6, "elastic: several S = +2 tongues seen")
       end do
    end subroutine coexistence_by_structure
+
+   !> The error bound of every curve point of the stored 50-digit references
+   !> (data/reference/curve_set.dat, `make_reference.py --curves`: elastic curves at
+   !> α = 2 … 9.8 up to β = 40) bounds its actual error, at tolerances 1e-8, 1e-10, 1e-12,
+   !> and is not vacuous (below 1e-10 relative at 1e-12).
+   subroutine error_bound_against_references(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: file = "data/reference/curve_set.dat"
+      type(hill_boundary_t), allocatable :: c(:)
+      type(error_t), allocatable :: error
+      real(wp) :: alpha(200), beta(200), ref_error, tolerance, err, worst, largest
+      integer :: kind(200), order(200), parity(200), n, unit, ios, i, j, t, found
+      character(len=400) :: line
+      open (newunit=unit, file=file, status="old", action="read", iostat=ios)
+      call check(ctx, ios == 0, "reference table "//file//" read")
+      if (ios /= 0) return
+      n = 0
+      do
+         read (unit, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         if (line(1:1) == "#" .or. len_trim(line) == 0) cycle
+         n = n + 1
+         read (line, *) alpha(n), kind(n), order(n), parity(n), beta(n), ref_error
+      end do
+      close (unit)
+      call check(ctx, n >= 40, "at least 40 reference points")
+      do t = 1, 3
+         tolerance = 10.0_wp**(-6 - 2*t)
+         worst = 0.0_wp
+         largest = 0.0_wp
+         do i = 1, n
+            call hill_boundaries(model_elastic, alpha(i), -50.0_wp, 45.0_wp, tolerance, c, error)
+            call check(ctx, .not. allocated(error), "no error")
+            if (allocated(error)) return
+            found = 0
+            do j = 1, size(c)
+               if (c(j)%trace_sign /= kind(i) .or. c(j)%order /= order(i) .or. c(j)%parity /= parity(i)) cycle
+               found = found + 1
+               err = abs(c(j)%beta - beta(i))
+               worst = max(worst, err/c(j)%error_bound)
+               largest = max(largest, c(j)%error_bound/max(1.0_wp, abs(beta(i))))
+               if (err > c(j)%error_bound) print "(a,es8.1,f6.2,3i3,4es11.3,i6)", "MISS", tolerance, alpha(i), &
+                  kind(i), order(i), parity(i), beta(i), err, c(j)%change, c(j)%error_bound, c(j)%modes
+               call check(ctx, err <= c(j)%error_bound, "error bound of the curve point")
+            end do
+            call check(ctx, found == 1, "the reference curve is found")
+         end do
+         print '(4x,a,es8.1,a,f6.3,a,es9.2)', "tolerance ", tolerance, ": worst error/bound ", worst, &
+            ", largest bound/max(1,|beta|) ", largest
+         if (t == 3) call check(ctx, largest < 1.0e-10_wp, "the bound is not vacuous at tolerance 1e-12")
+      end do
+   end subroutine error_bound_against_references
 
    subroutine tongues_open_and_closed(ctx)
       type(test_context_t), intent(inout) :: ctx

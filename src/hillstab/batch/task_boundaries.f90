@@ -179,7 +179,7 @@ contains
             call verify_boundary(scene%model, alpha, curves(i)%beta, curves(i)%trace_sign, scene%method%tolerance, &
                                  check, cause)
             rows(i)%check = check%trace
-            rows(i)%beta_error = max(curves(i)%change, check%beta_error)
+            rows(i)%beta_error = max(curves(i)%error_bound, check%beta_error)
             if (allocated(cause)) then
                rows(i)%status = status_failed
                deallocate (cause)
