@@ -94,7 +94,7 @@ contains
       character(len=1024), allocatable :: lines(:)
       type(error_t), allocatable :: error
       real(wp), allocatable :: rows(:, :)
-      real(wp) :: rho, omega, period
+      real(wp) :: rho, omega, period, drift, scale, row_drift
       integer :: j
       call run_series_text("series_layout", "&series alpha = 3.7, beta = 2.47, periods = 7, samples_per_period = 13 /", &
                            ", tolerance = 1e-10", lines, error)
@@ -128,7 +128,29 @@ contains
          + 0.5_wp*omega**2*(rows(2, :) - 0.1_wp)**2 - 9.81_wp*rows(5, :)))) < 1.0e-12_wp, "E column")
       call check(ctx, maxval(abs(rows(6, :) - rows(6, 1))) < 1.0e-8_wp*abs(rows(6, 1)) + 1.0e-9_wp, &
          "energy conserved on the samples")
+      ! the header's drift is the largest over the written rows (their E column, 17 digits)
+      drift = header_number(lines, "max|E - E(0)|/E_scale = ")
+      scale = header_number(lines, "summary: E_scale = ")
+      row_drift = maxval(abs(rows(6, :) - rows(6, 1)))/scale
+      call check(ctx, drift, row_drift, rel=1.0e-6_wp, abs=1.0e-3_wp*row_drift, &
+                 message="header drift = max over the written rows")
+      call check(ctx, drift > 0.0_wp .and. header_number(lines, "over the written rows (") > 0.0_wp, &
+                 "both drifts stated")
    end subroutine layout_and_sample_times
+
+   !> The number that follows `key` on the first header line containing it (−1 if none).
+   real(wp) function header_number(lines, key) result(x)
+      character(len=*), intent(in) :: lines(:), key
+      integer :: i, at, ios
+      x = -1.0_wp
+      do i = 1, size(lines)
+         at = index(lines(i), key)
+         if (at == 0 .or. lines(i)(1:1) /= "#") cycle
+         read (lines(i)(at + len(key):), *, iostat=ios) x
+         if (ios /= 0) x = -1.0_wp
+         return
+      end do
+   end function header_number
 
    !> φ0 = 0: the swing never starts (x ≡ 0 exactly) and z follows ρ − a cos ωt.
    subroutine bounce_from_zero_angle(ctx)

@@ -57,6 +57,12 @@ module hillstab_pendulum_analysis
       real(wp) :: energy_start = 0.0_wp       !! E at the start [J/kg]
       real(wp) :: energy_scale = 0.0_wp       !! ½|v|² + ½ω²(r − r0)² + g|z| at the start [J/kg]
       real(wp) :: max_energy_error = 0.0_wp   !! max |E − E(0)| over step ends [J/kg]
+      !> sample times t_j = j T / samples_per_period, j = 0 … n_samples, whose energies are
+      !> also watched (from the dense output, as the series task writes its rows; 0: none)
+      integer :: samples_per_period = 0
+      integer(int64) :: n_samples = 0
+      integer(int64) :: next_sample = 0                !! the next sample index to watch
+      real(wp) :: max_sample_energy_error = 0.0_wp  !! max |E − E(0)| over the sample times [J/kg]
       real(wp) :: energy_last = 0.0_wp        !! E at the last step end
       integer(int64) :: energy_increases = 0  !! steps over which E rose by more than round-off
       real(wp) :: onset_time = -1.0_wp        !! first t with |φ| > phi_sat [s]; < 0: not reached
@@ -189,8 +195,23 @@ contains
          self%time_of_max_phi = step%t
          self%onset_time = -1.0_wp
          if (self%max_abs_phi > self%phi_sat) self%onset_time = step%t
+         self%max_sample_energy_error = 0.0_wp
+         self%next_sample = 1
          return
       end if
+      ! the sample times in (t_old, t], computed as the series task computes them
+      do while (self%samples_per_period > 0 .and. self%next_sample <= self%n_samples)
+         ts = real(self%next_sample, wp)*self%pendulum%period/real(self%samples_per_period, wp)
+         if (ts > step%t) exit
+         if (ts == step%t) then
+            y = step%y
+         else
+            y = rk_dense_value(step, ts)
+         end if
+         self%max_sample_energy_error = max(self%max_sample_energy_error, &
+                                            abs(pendulum_energy(self%pendulum, y) - self%energy_start))
+         self%next_sample = self%next_sample + 1
+      end do
       e = pendulum_energy(self%pendulum, step%y)
       self%max_energy_error = max(self%max_energy_error, abs(e - self%energy_start))
       noise = 16*epsilon(1.0_wp)*self%energy_scale
