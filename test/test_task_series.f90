@@ -24,6 +24,7 @@ contains
          new_unittest("layout_and_sample_times", layout_and_sample_times), &
          new_unittest("bounce_from_zero_angle", bounce_from_zero_angle), &
          new_unittest("repeat_from_output", repeat_from_output), &
+         new_unittest("onset_summary", onset_summary), &
          new_unittest("bad_input", bad_input), &
          new_unittest("hard_cases", hard_cases)])
    end function collect_task_series
@@ -138,6 +139,26 @@ contains
                  "both drifts stated")
    end subroutine layout_and_sample_times
 
+   !> The summary's onset at (e) from φ0 = 1e-8: the predicted X (the linear swing) within
+   !> 0.1 radial period of the observed Y, and the multiplier law on its own line.
+   subroutine onset_summary(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=1024), allocatable :: lines(:)
+      type(error_t), allocatable :: error
+      real(wp) :: predicted, observed, law
+      call run_series_text("series_onset", "&series alpha = 7.88, beta = 3.95, phi0 = 1e-8, periods = 12, "// &
+                           "samples_per_period = 4 /", ", tolerance = 1e-10", lines, error)
+      call check(ctx, .not. allocated(error), "run succeeds")
+      if (allocated(error)) return
+      predicted = header_number(lines, "u(t) = ")
+      observed = header_number(lines, " s), observed ")
+      law = header_number(lines, "ln(0.1/|phi0|)/ln(lambda_max) = ")
+      call check(ctx, any(index(lines, "# summary: onset (|phi| > 0.1): predicted n* = ") == 1), "summary line form")
+      call check(ctx, predicted > 0.0_wp .and. observed > 0.0_wp .and. law > 0.0_wp, "three onsets stated")
+      call check(ctx, predicted, observed, abs=0.1_wp, message="predicted onset within 0.1 period of the observed")
+      call check(ctx, observed - law > 0.2_wp, "the multiplier law alone comes earlier")
+   end subroutine onset_summary
+
    !> The number that follows `key` on the first header line containing it (−1 if none).
    real(wp) function header_number(lines, key) result(x)
       character(len=*), intent(in) :: lines(:), key
@@ -167,7 +188,7 @@ contains
       if (allocated(error)) return
       rows = rows_of(lines)
       call check(ctx, all(rows(4, :) == 0.0_wp) .and. all(rows(7, :) == 0.0_wp), "x = vx = 0 exactly")
-      call check(ctx, any(index(lines, "predicted n* = ln(0.1/|phi0|)/ln(lambda_max) = never") > 0), &
+      call check(ctx, any(index(lines, "u(t) = never") > 0) .and. any(index(lines, "ln(lambda_max) = never") > 0), &
          "no onset predicted")
       call check(ctx, any(index(lines, "observed not within the run") > 0), "no onset observed")
       p = pendulum_at(7.88_wp, 3.95_wp)
