@@ -1,7 +1,8 @@
 # hillstab
 #   make run            run the default scene (data files + PNG figures in out/)
 #   make test           check that the public API is documented, then run the test suite
-# both install what is missing first (scripts/setup.sh). Further targets:
+# both install what they need when it is missing (scripts/setup.sh NEED...; without root it
+# lists what is missing and how to provide it). Further targets:
 #   make test-debug     tests again with runtime checks and floating-point traps
 #   make fuzz           300 mutated scenes on the normal and the trap build (scripts/fuzz.py)
 #   make check-memory   valgrind memcheck on small scenes of every task
@@ -16,8 +17,10 @@
 #                       with plain gfortran (no fpm)
 #   make install PREFIX=/usr/local   install libraries, modules, C header, pkg-config and CMake
 #                       files and the program (the same files as the CMake install)
-#   make doc            API reference with FORD into build/doc (installs FORD through pip if missing)
-#   make doc-check      fail on an undocumented public entity or argument (scripts/doc_check.py)
+#   make doc            the site with FORD into build/doc: guide pages (docs/guide) and API reference
+#                       (installs FORD through pip if missing), every relative link checked
+#   make doc-check      fail on an undocumented public entity or argument, a README over 300 lines,
+#                       a guide page not listed or not current (scripts/doc_check.py)
 #   make check-install  install into temporary prefixes (make and CMake routes) and build and run
 #                       consumers against each: C, Fortran and fixed-form FORTRAN 77 through
 #                       pkg-config, C and Fortran through CMake find_package
@@ -44,26 +47,32 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug setup bench bench-output area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov fuzz check-memory check-scenes
+.PHONY: run test test-debug setup setup-build setup-test bench bench-output area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov fuzz check-memory check-scenes
 
+# what each target needs (scripts/setup.sh installs only what is missing)
 setup:
-	@bash scripts/setup.sh
+	@bash scripts/setup.sh compiler fpm plot python
+setup-build:
+	@bash scripts/setup.sh compiler fpm
+setup-test:
+	@bash scripts/setup.sh compiler fpm python
 
-run: setup
+run:
+	@bash scripts/setup.sh compiler fpm plot
 	@bash scripts/run_default.sh
 
-test: setup
+test: setup-test
 	@python3 scripts/doc_check.py
 	$(FPM) test
 
-test-debug: setup
+test-debug: setup-build
 	$(FPM) test --profile debug --flag "$(DEBUG_FLAGS)"
 
 # 300 seeded mutations of the shipped scenes, on the normal and on the trap build
 # (scripts/fuzz.py: whole NaN-free files or one message line, no temp file, in time)
 FUZZ_COUNT ?= 300
 FUZZ_SEED ?= 7
-fuzz: setup
+fuzz: setup-test
 	$(FPM) build >/dev/null
 	python3 scripts/fuzz.py --count $(FUZZ_COUNT) --seed $(FUZZ_SEED) --signals \
 	   --hillstab "$$($(FPM) run --runner echo hillstab 2>/dev/null | tail -1)"
@@ -72,14 +81,15 @@ fuzz: setup
 	   --hillstab "$$($(FPM) run --profile debug --flag "$(DEBUG_FLAGS)" --runner echo hillstab 2>/dev/null | tail -1)"
 
 # valgrind memcheck on small scenes of every task (scripts/check_memory.sh)
-check-memory: setup
+check-memory:
+	@bash scripts/setup.sh compiler fpm valgrind
 	$(FPM) build >/dev/null
 	bash scripts/check_memory.sh "$$($(FPM) run --runner echo hillstab 2>/dev/null | tail -1)"
 
-check-scenes: setup
+check-scenes: setup-build
 	bash scripts/check_scenes.sh
 
-bench-output: setup
+bench-output: setup-build
 	bash scripts/bench_output.sh
 
 bench: setup
@@ -95,7 +105,8 @@ area: setup
 	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_area
 	gnuplot plots/area.gp
 
-lib: setup
+lib:
+	@bash scripts/setup.sh compiler
 	@rm -rf $(LEGACY_DIR)/obj $(LEGACY_DIR)/mod; mkdir -p $(LEGACY_DIR)/obj $(LEGACY_DIR)/mod
 	@sources=$$(bash scripts/fortran_order.sh) || exit 1; for f in $$sources; do \
 	   echo "  FC $$f"; \
@@ -132,6 +143,7 @@ install: lib
 	   > $(DESTDIR)$(PREFIX)/lib/cmake/hillstab/hillstab-config-version.cmake
 
 check-install:
+	@bash scripts/setup.sh compiler install
 	@rm -rf build/_install build/_install_cmake build/cmake_check
 	$(MAKE) --no-print-directory install PREFIX=$(CURDIR)/build/_install
 	bash config/export/check.sh $(CURDIR)/build/_install make
@@ -168,10 +180,12 @@ bench-lyapunov: setup
 	   estimate 400 1000 $(BENCH_ESTIMATE_STRIDE)
 	gnuplot plots/bench_lyapunov.gp
 
-doc: setup
+doc:
+	@bash scripts/setup.sh doc
 	@bash scripts/doc.sh
 
-doc-check: setup
+doc-check:
+	@bash scripts/setup.sh python
 	@python3 scripts/doc_check.py
 
 clean:

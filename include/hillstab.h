@@ -1,14 +1,25 @@
 /* hillstab C interface: stability of the elastic pendulum through the Hill
  * equation x'' + Q(tau) x = 0, Q = (beta - alpha cos pi tau)/(1 - (alpha/pi^2) cos pi tau).
- * Link with the shared library: -lhillstab (`pkg-config --libs hillstab`); with the
- * static one: -lhillstab -lgsl -lgslcblas -llapack -lblas -lgfortran -lgomp -lm
- * (`pkg-config --libs --static hillstab`).
+ * Shared library: cc $(pkg-config --cflags hillstab) app.c $(pkg-config --libs hillstab)
+ * (-lhillstab alone: the library records its own dependencies).
+ * Static library: name the archive, then its dependencies (the Libs.private of hillstab.pc,
+ * which `pkg-config --static --libs hillstab` appends to -lhillstab):
+ *   cc $(pkg-config --cflags hillstab) app.c "$(pkg-config --variable=libdir hillstab)/libhillstab.a" \
+ *      -lgsl -lgslcblas -llapack -lblas -lgfortran -lgomp -lm
+ * Both libraries are installed in one directory, so -lhillstab (also in the --static
+ * output) picks the shared one.
  * Every int-returning function returns 0 on success or an error code (see
  * hillstab_error_message); outputs are untouched on failure, and
  * hillstab_last_error gives the full message of the failure. */
 #ifndef HILLSTAB_H
 #define HILLSTAB_H
 #include <stddef.h>
+
+/* The version this header belongs to (the library's: hillstab_version). */
+#define HILLSTAB_VERSION_MAJOR 0
+#define HILLSTAB_VERSION_MINOR 1
+#define HILLSTAB_VERSION_PATCH 0
+#define HILLSTAB_VERSION_STRING "0.1.0"
 
 #ifdef __cplusplus
 extern "C" {
@@ -57,6 +68,13 @@ void hillstab_error_message(int status, char *buffer, size_t length);
  * NUL-terminated and cut to length bytes; "" when that call succeeded. Returns that call's status.
  * Each thread has its own record, so calls from several threads do not mix. */
 int hillstab_last_error(char *buffer, size_t length);
+
+/* The version of the library linked at run time, "MAJOR.MINOR.PATCH" (compare
+ * HILLSTAB_VERSION_STRING, the version compiled against); a static string, never freed. */
+const char *hillstab_version(void);
+
+/* The same as three numbers. */
+void hillstab_version_numbers(int *major, int *minor, int *patch);
 
 #ifdef __cplusplus
 }

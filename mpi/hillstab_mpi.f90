@@ -12,14 +12,15 @@
 !> points, 1 a computation failed).
 module hillstab_mpi_runner
    use mpi_f08
-   use hillstab_core_kinds, only: wp
+   use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_batch_scene, only: scene_t, output_path
    use hillstab_batch_scene_read, only: read_scene
    use hillstab_batch_tasks, only: run_scene
    use hillstab_batch_units, only: batch_t, batch_result_t, batch_distributable, batch_plan, batch_compute, &
-      batch_open, batch_write, batch_commit, batch_discard
+      batch_open, batch_write, batch_commit, batch_discard, scene_fingerprint
    use hillstab_batch_cli, only: scene_runner_t, exit_status
+   use hillstab_batch_limits, only: check_memory_room
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
@@ -84,12 +85,18 @@ contains
       call read_scene(path, scene, error)
       call agree(self, error)
       if (allocated(error)) return
+      call same_scene_everywhere(self, scene, error)
+      if (allocated(error)) return
       written = output_path(scene)
       if (.not. batch_distributable(scene)) then
          if (self%rank == manager) call run_scene(scene, quiet, error)
          call agree(self, error)
          return
       end if
+      ! buffers that cannot fit are refused before any work, as by hillstab
+      call check_memory_room(scene, error)
+      call agree(self, error)
+      if (allocated(error)) return
       call batch_plan(scene, self%n_ranks, batch)
       if (self%rank == manager) then
          call batch_open(batch, quiet, error)
@@ -111,6 +118,26 @@ contains
       if (allocated(error)) written_ok = error%code == err_points_failed
       call report_balance(self, busy, written_ok)
    end subroutine run_scene_everywhere
+
+   !> Every rank must have read the same scene and points: their fingerprints are compared
+   !> (bad input on every rank when they differ; rank 0 says so).
+   subroutine same_scene_everywhere(self, scene, error)
+      class(mpi_runner_t), intent(in) :: self
+      type(scene_t), intent(in) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      integer(int64) :: mine(2), low(2), high(2)
+      mine = scene_fingerprint(scene)
+      call MPI_Allreduce(mine, low, 2, MPI_INTEGER8, MPI_MIN, MPI_COMM_WORLD)
+      call MPI_Allreduce(mine, high, 2, MPI_INTEGER8, MPI_MAX, MPI_COMM_WORLD)
+      if (all(low == high)) return
+      if (self%rank == manager) then
+         call set_error(error, err_input, scene%source//": the ranks read different scenes or points files "// &
+            "(another working directory, or a file changed while the ranks started): every rank must read "// &
+            "the same; nothing was computed")
+      else
+         call set_error(error, err_input, "")
+      end if
+   end subroutine same_scene_everywhere
 
    !> Make the outcome collective: if any rank has an error, all have one, the most
    !> severe (bad input, then a failed computation, then failed points in a written
@@ -288,9 +315,16 @@ program hillstab_mpi
    use mpi_f08, only: MPI_Init, MPI_Comm_rank, MPI_Comm_size, MPI_COMM_WORLD
    use hillstab_mpi_runner, only: mpi_runner_t
    use hillstab_batch_cli, only: run_command_line
+   use hillstab_batch_signals, only: install_signal_cleanup
    implicit none
    type(mpi_runner_t) :: runner
+   ! as hillstab: SIGINT, SIGTERM, SIGHUP remove the temporary output (rank 0 writes it);
+   ! SIGXFSZ ignored, so a file-size limit is a write error that stops every rank (also
+   ! while MPI_Init creates its shared-memory files); again after MPI_Init, in case the MPI
+   ! library installed handlers of its own
+   call install_signal_cleanup()
    call MPI_Init()
+   call install_signal_cleanup()
    call MPI_Comm_rank(MPI_COMM_WORLD, runner%rank)
    call MPI_Comm_size(MPI_COMM_WORLD, runner%n_ranks)
    runner%program = "hillstab_mpi"

@@ -1,7 +1,14 @@
 #!/usr/bin/env bash
-# Build the API reference with FORD into build/doc (make doc), installing FORD through
-# pip when it is missing. Fails when FORD prints a warning; scripts/doc_check.py (make
-# doc-check) separately fails on undocumented public entities and arguments.
+# Build the documentation site with FORD into build/doc (make doc): the guide pages of
+# docs/guide and the API reference from the `!>`/`!!` comments of src/. FORD runs without
+# its preprocessor (every source is free-form .f90; docs/ford.md: preprocess: false).
+# Then the figures are copied beside the pages, Bootstrap is taken from Debian's
+# libjs-bootstrap5 when it is installed (else the pages load it from its CDN), and every
+# relative link of the site must resolve (scripts/doc_links.py). Fails on a FORD warning or
+# a broken link; scripts/doc_check.py (make doc-check) separately fails on undocumented
+# public entities and arguments.
+#   bash scripts/doc.sh               build and check (FORD must be installed: scripts/setup.sh doc)
+#   bash scripts/doc.sh --find-ford   print where FORD is (exit 1 when it is not installed)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 find_ford() {
@@ -9,23 +16,20 @@ find_ford() {
    for dir in "$HOME/.local/bin" "$(python3 -c 'import sysconfig; print(sysconfig.get_path("scripts"))' 2>/dev/null)"; do
       if [ -n "$dir" ] && [ -x "$dir/ford" ]; then echo "$dir/ford"; return; fi
    done
+   return 1
 }
+if [ "${1:-}" = "--find-ford" ]; then find_ford; exit; fi
 ford=$(find_ford || true)
-if [ -z "$ford" ]; then
-   echo "doc: installing FORD" >&2
-   # a Debian system Python refuses plain pip installs (PEP 668): fall back to --user/--break-system-packages
-   python3 -m pip install --quiet ford 2>/dev/null \
-      || python3 -m pip install --quiet --user --break-system-packages ford
-   hash -r
-   ford=$(find_ford || true)
-   [ -n "$ford" ] || { echo "doc: ford not found after pip install" >&2; exit 1; }
-fi
+[ -n "$ford" ] || { echo "doc: ford not found (bash scripts/setup.sh doc, or python3 -m pip install --user ford)" >&2; exit 1; }
 mkdir -p build
 log=build/ford.log
+rm -rf build/doc
 (cd docs && "$ford" ford.md) > "$log" 2>&1 || { cat "$log" >&2; echo "doc: FORD failed" >&2; exit 1; }
 if grep -qi "warning" "$log"; then
    grep -i -A2 "warning" "$log" >&2
    echo "doc: FORD warnings (above); fix the doc comments" >&2
    exit 1
 fi
-echo "doc: API reference in build/doc/index.html (no FORD warnings)"
+python3 scripts/doc_site.py build/doc
+python3 scripts/doc_links.py build/doc
+echo "doc: site in build/doc/index.html, guide in build/doc/page/index.html (no FORD warnings, every link resolves)"

@@ -10,9 +10,23 @@ sources under src/ and reports, with file and line:
   - an argument of a public procedure (module procedure, interface body, external
     procedure) without a `!>` line before its declaration or `!!` on it;
   - a component or type-bound procedure of a public derived type without one.
-A public generic interface makes its specific procedures public. Exit status 1 when
-anything is missing. Usage: scripts/doc_check.py [FILE.f90...] (default: every .f90 file under src/).
+A public generic interface makes its specific procedures public. Without file arguments
+it also checks the documentation around the code:
+  - README.md has at most 300 lines and its Quick start the commands `make run` and
+    `make test`;
+  - every page of docs/guide/ is listed in the `ordered_subpage` lines of its index.md,
+    and every listed page exists;
+  - no page of docs/guide/ and not the README refers to a file outside the repository
+    (an absolute path under /work, /home or /tmp, a brief or a paper file);
+  - every declaration of include/hillstab.h (macros, enums, prototypes) appears on the
+    guide page library.md;
+  - docs/guide/api.md and the export list of src/hillstab.f90 are what scripts/api_page.py
+    writes.
+Exit status 1 when anything is missing. Usage: scripts/doc_check.py [FILE.f90...]
+(default: every .f90 file under src/, and the checks above).
 """
+import os
+import subprocess
 import glob
 import re
 import sys
@@ -268,6 +282,58 @@ class Checker:
             self.report(path, st.line, f"argument {n} of public {kind} {name}: declaration not found")
 
 
+README_LIMIT = 300
+OUTSIDE = re.compile(r"(?<![\w.])(/work/|/home/|/tmp/[\w.-]+\.md|BRIEF|elastic-pendulum-stability-paper)")
+
+
+def c_declarations(header):
+    """The macros, enum bodies and prototypes of a C header, whitespace-normalised."""
+    text = re.sub(r"/\*.*?\*/", " ", open(header, encoding="utf-8").read(), flags=re.S)
+    out = [" ".join(m.split()) for m in re.findall(r"^#define[ \t]+HILLSTAB_\w+[ \t]+\S.*$", text, re.M)]
+    body = re.sub(r"^#.*$", " ", text, flags=re.M).replace('extern "C" {', " ")
+    for statement in body.split(";"):
+        statement = " ".join(statement.split()).strip("{} ")
+        if statement and ("(" in statement or statement.startswith("enum")):
+            out.append(statement)
+    return [d for d in out if d]
+
+
+def check_guide(root):
+    """The documentation checks around the code (see the module docstring)."""
+    problems = []
+    readme = os.path.join(root, "README.md")
+    lines = open(readme, encoding="utf-8").read().splitlines()
+    if len(lines) > README_LIMIT:
+        problems.append(f"README.md: {len(lines)} lines, more than {README_LIMIT} (move the detail to docs/guide/)")
+    text = "\n".join(lines)
+    quick = re.search(r"^## Quick start\s*\n+```sh\n(.*?)```", text, re.M | re.S)
+    if not quick or quick.group(1).split("\n")[:2] != ["make run", "make test"]:
+        problems.append("README.md: the Quick start must begin with the commands `make run` and `make test`")
+    guide = os.path.join(root, "docs", "guide")
+    pages = sorted(n for n in os.listdir(guide) if n.endswith(".md"))
+    index = open(os.path.join(guide, "index.md"), encoding="utf-8").read()
+    listed = re.findall(r"^ordered_subpage:\s*(\S+)\s*$", index, re.M)
+    for name in pages:
+        if name != "index.md" and name not in listed:
+            problems.append(f"docs/guide/index.md: page {name} is not listed (ordered_subpage)")
+    for name in listed:
+        if name not in pages:
+            problems.append(f"docs/guide/index.md: listed page {name} does not exist")
+    for path in [readme] + [os.path.join(guide, n) for n in pages]:
+        for number, line in enumerate(open(path, encoding="utf-8"), 1):
+            if OUTSIDE.search(line):
+                problems.append(f"{os.path.relpath(path, root)}:{number}: refers to a file outside the repository")
+    library = " ".join(open(os.path.join(guide, "library.md"), encoding="utf-8").read().split())
+    for declaration in c_declarations(os.path.join(root, "include", "hillstab.h")):
+        if declaration not in library:
+            problems.append(f"docs/guide/library.md: lacks the declaration of include/hillstab.h: {declaration[:90]}")
+    api = subprocess.run([sys.executable, os.path.join(root, "scripts", "api_page.py"), "--check"],
+                         capture_output=True, text=True)
+    if api.returncode != 0:
+        problems.append(api.stderr.strip())
+    return problems
+
+
 def main(argv):
     files = argv[1:] or sorted(glob.glob("src/**/*.f90", recursive=True))
     checker = Checker()
@@ -275,10 +341,17 @@ def main(argv):
         checker.check_file(path)
     for p in checker.problems:
         print(p)
+    guide = [] if argv[1:] else check_guide(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    for p in guide:
+        print(p)
     if checker.problems:
         print(f"doc-check: {len(checker.problems)} undocumented public entities or arguments", file=sys.stderr)
+    if guide:
+        print(f"doc-check: {len(guide)} problems of the README and the guide", file=sys.stderr)
+    if checker.problems or guide:
         return 1
-    print(f"doc-check: every public entity and argument of {len(files)} files is documented")
+    print(f"doc-check: every public entity and argument of {len(files)} files is documented; "
+          "the README and the guide pass their checks")
     return 0
 
 

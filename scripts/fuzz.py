@@ -235,6 +235,59 @@ def check_signals(hillstab, work):
     return problems
 
 
+def check_signal_timing(hillstab, work, runs=60, seed=11):
+    """SIGTERM at random moments of a short chart, the end (rename) included: the exit
+    status must tell what is on disk. Exit 0: the new, complete file (with, when the
+    signal came after it was written, the message saying so); 143: the old file,
+    untouched. Never a temporary file left. Returns a list of problems."""
+    import signal
+    problems = []
+    rng = random.Random(seed)
+    scene = os.path.join(work, "timing.nml")
+    with open(scene, "w") as f:
+        f.write("&scene method='formula', output='out/timing' /\n&chart n_alpha=150, n_beta=150 /\n")
+    out = os.path.join(work, "out", "timing_chart.dat")
+    start = time.monotonic()
+    subprocess.run([hillstab, "--quiet", "timing.nml"], cwd=work, check=True)
+    duration = time.monotonic() - start
+    with open(out) as f:
+        complete = f.read()
+    counts = {0: 0, 143: 0}
+    for _ in range(runs):
+        with open(out, "w") as f:
+            f.write("old\n")
+        proc = subprocess.Popen([hillstab, "--quiet", "timing.nml"], cwd=work, stdin=subprocess.DEVNULL,
+                                stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+        time.sleep(rng.uniform(0.5, 1.3) * duration)
+        if proc.poll() is None:
+            proc.send_signal(signal.SIGTERM)
+        try:
+            _, err = proc.communicate(timeout=20)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            problems.append("timing: still running 20 s after the signal")
+            continue
+        status = proc.returncode
+        with open(out) as f:
+            now = f.read()
+        counts[status] = counts.get(status, 0) + 1
+        if status == 0:
+            if now != complete:
+                problems.append("timing: exit 0 but the file is not the complete new one")
+        elif status == 143:
+            if now != "old\n":
+                problems.append("timing: exit 143 but the old file was replaced")
+        else:
+            problems.append("timing: exit status %d" % status)
+        if glob.glob(out + ".part*"):
+            problems.append("timing: temporary file left")
+    print("fuzz: SIGTERM at random moments of a %.2f s chart: %d runs ended written (exit 0), %d interrupted "
+          "(exit 143)" % (duration, counts.get(0, 0), counts.get(143, 0)))
+    os.remove(out)
+    os.remove(scene)
+    return problems
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--hillstab", required=True, help="the hillstab executable")
@@ -272,6 +325,10 @@ def main():
                 print("FAIL signals: " + p)
             failures += 1 if problems else 0
             print("fuzz: signals %s" % ("failed" if problems else "ok (exit 128 + signal, no temporary file, old file kept)"))
+            problems = check_signal_timing(hillstab, work)
+            for p in problems:
+                print("FAIL signal timing: " + p)
+            failures += 1 if problems else 0
         for k in range(args.count):
             name, base = texts[k % len(texts)]
             text = mutate(base, rng)

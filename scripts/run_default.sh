@@ -6,7 +6,7 @@
 #   out/onset.png    the onset law of the swing (out/onset_law.dat)
 #   out/fig2.png, out/fig3.png, out/figA1.png, out/figA3.png, out/figA4.png, out/damped.png,
 #   out/boundaries.png, out/fig3_boundaries.png, out/strutt.png (transition curves)
-#   out/lyapunov.png (Lyapunov map, about 3 CPU minutes), out/poincare.png (Poincare sections)
+#   out/lyapunov.png (Lyapunov map), out/poincare.png (Poincare sections)
 # HILLSTAB_SCENES=DIR runs the scenes of DIR instead (same names expected).
 set -euo pipefail
 cd "$(dirname "$0")/.."

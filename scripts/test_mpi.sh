@@ -6,6 +6,9 @@
 #  - bad input (unknown variable, unwritable output) gives exit 2 on every rank, no hang,
 #    no file; a failing point is written as hillstab writes it (status 2, placeholders),
 #    with hillstab's message and exit 3 on every rank;
+#  - faults: ranks reading different scenes (exit 2, no file); SIGTERM to rank 0 and to
+#    mpirun, kill -9 of a worker, a file-size limit: no hang, no temporary file, the old
+#    output kept;
 #  - options: --version, --help, an unknown option.
 # Prints one line per check and a closing `N passed, M failed`; exits 1 on a failure.
 set -uo pipefail
@@ -113,6 +116,46 @@ mv "$work/fail_chart.dat" "$work/fail_chart.serial"
 rank_statuses 3 "$work/st" -q "$work/fail_chart.nml"
 check "failing_chart_np3_as_serial" 'all_ranks "$work/st" 3 $serial_rc && cmp -s "$work/fail_chart.dat" "$work/fail_chart.serial"'
 check "no_temporary_files" '[ -z "$(ls "$work" | grep part)" ]'
+
+# faults: ranks that read different scenes; signals; a killed worker; a file-size limit.
+# Each: no temporary file, the old output kept, no hang (every mpirun under timeout).
+mkdir -p "$work/A" "$work/B"
+printf '%s\n' "&scene method='formula', output='out' /" "&chart n_alpha=10, n_beta=20 /" >"$work/A/s.nml"
+printf '%s\n' "&scene method='formula', output='out' /" "&chart n_alpha=10, n_beta=20, beta_max=8 /" \
+   >"$work/B/s.nml"
+timeout 120 mpirun --oversubscribe -np 1 --wdir "$work/A" "$mpi" -q s.nml : -np 2 --wdir "$work/B" "$mpi" -q s.nml \
+   >/dev/null 2>"$work/mismatch.err"
+mismatch_rc=$?
+check "mismatched_scenes_exit2_no_file" '[ $mismatch_rc = 2 ] && [ ! -e "$work/A/out_chart.dat" ] && [ ! -e "$work/B/out_chart.dat" ] && grep -q "ranks read different scenes" "$work/mismatch.err"'
+printf '%s\n' "&scene method='magnus6', tolerance=1e-12, output='$work/sig' /" \
+   "&chart n_alpha=1500, n_beta=1500 /" >"$work/sig.nml"
+# interrupt a long chart: SIGTERM to rank 0, to mpirun, kill -9 of a worker
+for how in rank0_term mpirun_term worker_kill; do
+   echo old >"$work/sig_chart.dat"
+   timeout 120 mpirun --oversubscribe -np 2 "$mpi" -q "$work/sig.nml" >/dev/null 2>&1 &
+   launcher=$!
+   for _ in $(seq 100); do ls "$work" | grep -q "sig_chart.dat.part" && break; sleep 0.1; done
+   sleep 0.5
+   ranks=$(pgrep -f "^$mpi -q $work/sig.nml" | sort -n)
+   rank0=$(echo "$ranks" | sed -n 1p)
+   worker=$(echo "$ranks" | sed -n 2p)
+   case $how in
+   rank0_term) kill -TERM "$rank0" ;;
+   mpirun_term) pkill -TERM -f "^mpirun --oversubscribe -np 2 $mpi -q $work/sig.nml" ;;
+   worker_kill) kill -KILL "$worker" ;;
+   esac
+   wait "$launcher"
+   rc=$?
+   sleep 0.5
+   [ -n "$(ls "$work" | grep sig_chart.dat.part)" ] && echo "    $how: left $(ls "$work" | grep sig_chart.dat.part), exit $rc"
+   check "${how}_no_temporary_file_old_kept" '[ -z "$(ls "$work" | grep sig_chart.dat.part)" ] && [ "$(cat "$work/sig_chart.dat")" = old ] && [ $rc != 0 ] && [ $rc != 124 ]'
+done
+printf '%s\n' "&scene method='formula', output='$work/big' /" "&chart n_alpha=300, n_beta=300 /" >"$work/big.nml"
+echo old >"$work/big_chart.dat"
+timeout 120 mpirun --oversubscribe -np 2 bash -c "ulimit -f 100; exec \"$mpi\" -q \"$work/big.nml\"" >/dev/null \
+   2>"$work/big.err"
+big_rc=$?
+check "file_size_limit_message_no_hang" '[ $big_rc = 2 ] && grep -q "File too large" "$work/big.err" && [ "$(cat "$work/big_chart.dat")" = old ] && [ -z "$(ls "$work" | grep big_chart.dat.part)" ]'
 
 # options
 check "version" '[ "$(run_mpi 2 "$mpi" --version)" = "$("$serial" --version | sed s/hillstab/hillstab_mpi/)" ]'

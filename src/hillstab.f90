@@ -6,6 +6,114 @@
 !> (scenes, tasks, output files: `hillstab_batch_*`) are not part of it; programs that run
 !> scenes use them by name.
 !>
+!> **What it exports.**
+!>
+!> Each name links to its entry; the guide page [The public API](../page/api.html)
+!> gives the first doc line of each. Written by `scripts/api_page.py`.
+!>
+!> - [[hillstab_core_kinds]]: `wp`, `int64`, [[hillstab_core_kinds:pi]], [[hillstab_core_kinds:pi2]],
+!>   [[hillstab_core_kinds:version_string]]
+!> - [[hillstab_core_error]]: [[hillstab_core_error:error_t]], [[hillstab_core_error:set_error]],
+!>   [[hillstab_core_error:error_code_name]], [[hillstab_core_error:err_invalid_parameter]],
+!>   [[hillstab_core_error:err_overflow]], [[hillstab_core_error:err_integration]],
+!>   [[hillstab_core_error:err_io]], [[hillstab_core_error:err_input]], [[hillstab_core_error:err_singular]],
+!>   [[hillstab_core_error:err_accuracy]], [[hillstab_core_error:err_points_failed]]
+!> - [[hillstab_core_status]]: [[hillstab_core_status:status_ok]], [[hillstab_core_status:status_roundoff]],
+!>   [[hillstab_core_status:status_failed]], [[hillstab_core_status:status_name]]
+!> - [[hillstab_core_stats]]: [[hillstab_core_stats:work_stats_t]]
+!> - [[hillstab_hill_models]]: [[hillstab_hill_models:hill_model_t]], [[hillstab_hill_models:model_elastic]],
+!>   [[hillstab_hill_models:model_mathieu]], [[hillstab_hill_models:model_name]],
+!>   [[hillstab_hill_models:model_from_name]], [[hillstab_hill_models:model_names_text]],
+!>   [[hillstab_hill_models:model_description]], [[hillstab_hill_models:model_is_pendulum]],
+!>   [[hillstab_hill_models:check_model]], [[hillstab_hill_models:hill_coefficient]],
+!>   [[hillstab_hill_models:segment_average]], [[hillstab_hill_models:damping_shift]]
+!> - [[hillstab_hill_coefficient]]: [[hillstab_hill_coefficient:sampling_endpoint]],
+!>   [[hillstab_hill_coefficient:sampling_midpoint]], [[hillstab_hill_coefficient:sampling_average]],
+!>   [[hillstab_hill_coefficient:sampling_name]], [[hillstab_hill_coefficient:sampling_from_name]],
+!>   [[hillstab_hill_coefficient:segment_coefficients]], [[hillstab_hill_coefficient:hill_period]],
+!>   [[hillstab_hill_model_elastic:in_physical_domain]]
+!> - [[hillstab_hill_units]]: [[hillstab_hill_units:physical_t]], [[hillstab_hill_units:standard_gravity]],
+!>   [[hillstab_hill_units:equilibrium_length]], [[hillstab_hill_units:physical_alpha]],
+!>   [[hillstab_hill_units:physical_beta]], [[hillstab_hill_units:physical_epsilon]],
+!>   [[hillstab_hill_units:physical_nu]], [[hillstab_hill_units:check_physical]],
+!>   [[hillstab_hill_units:physical_from_dimensionless]], [[hillstab_hill_units:rate_per_second]],
+!>   [[hillstab_hill_units:tau_from_time]], [[hillstab_hill_units:time_from_tau]]
+!> - [[hillstab_hill_transfer]]: [[hillstab_hill_transfer:trace_t]],
+!>   [[hillstab_hill_transfer:transfer_matrix]], [[hillstab_hill_transfer:scaled_matrix_t]],
+!>   [[hillstab_hill_transfer:trace_of]], [[hillstab_hill_transfer:trace_from_value]],
+!>   [[hillstab_hill_transfer:matrix_of]], [[hillstab_hill_transfer:determinant]]
+!> - [[hillstab_hill_formulas]]: [[hillstab_hill_formulas:trace_two_segment_paper]],
+!>   [[hillstab_hill_formulas:trace_damped_paper]], [[hillstab_hill_formulas:trace_mathieu_two_segment]]
+!> - [[hillstab_hill_floquet]]: [[hillstab_hill_floquet:floquet_t]],
+!>   [[hillstab_hill_floquet:floquet_from_trace]], [[hillstab_hill_floquet:floquet_from_value]],
+!>   [[hillstab_hill_floquet:multipliers]], [[hillstab_hill_floquet:largest_multiplier_modulus]]
+!> - [[hillstab_hill_mathieu]]: [[hillstab_hill_mathieu:mathieu_a]], [[hillstab_hill_mathieu:mathieu_b]],
+!>   [[hillstab_hill_mathieu:mathieu_transition_beta]]
+!> - [[hillstab_integrate_monodromy]]: [[hillstab_integrate_monodromy:method_t]],
+!>   [[hillstab_integrate_monodromy:method_auto]], [[hillstab_integrate_monodromy:method_formula]],
+!>   [[hillstab_integrate_monodromy:method_segments]], [[hillstab_integrate_monodromy:method_magnus4]],
+!>   [[hillstab_integrate_monodromy:method_magnus6]], [[hillstab_integrate_monodromy:method_rk]],
+!>   [[hillstab_integrate_monodromy:method_gsl]], [[hillstab_integrate_monodromy:method_name]],
+!>   [[hillstab_integrate_monodromy:method_from_name]], [[hillstab_integrate_monodromy:method_names_text]],
+!>   [[hillstab_integrate_monodromy:method_is_exact]], [[hillstab_integrate_monodromy:monodromy_trace]],
+!>   [[hillstab_integrate_monodromy:monodromy_trace_batch]],
+!>   [[hillstab_integrate_segments:monodromy_segmented]], [[hillstab_integrate_segments:trace_segmented]],
+!>   [[hillstab_integrate_monodromy:swing_monodromy]]
+!> - [[hillstab_integrate_auto]]: [[hillstab_integrate_auto:trace_auto]],
+!>   [[hillstab_integrate_auto:trace_auto_batch]]
+!> - [[hillstab_integrate_magnus]]: [[hillstab_integrate_magnus:trace_magnus]],
+!>   [[hillstab_integrate_magnus:monodromy_magnus]]
+!> - [[hillstab_integrate_monodromy_rk]]: [[hillstab_integrate_monodromy_rk:trace_rk]],
+!>   [[hillstab_integrate_monodromy_rk:monodromy_rk]]
+!> - [[hillstab_integrate_monodromy_gsl]]: [[hillstab_integrate_monodromy_gsl:trace_gsl]],
+!>   [[hillstab_integrate_monodromy_gsl:monodromy_gsl]]
+!> - [[hillstab_integrate_rk]]: [[hillstab_integrate_rk_stages:rk_system_t]],
+!>   [[hillstab_integrate_rk:rk_options_t]], [[hillstab_integrate_rk_stages:rk_step_t]],
+!>   [[hillstab_integrate_rk:rk_integrate]], [[hillstab_integrate_rk:rk_dense_value]],
+!>   [[hillstab_integrate_rk_tableaux:rk_dopri5]], [[hillstab_integrate_rk_tableaux:rk_dop853]],
+!>   [[hillstab_integrate_rk_tableaux:rk_pd87]], [[hillstab_integrate_rk_tableaux:rk_vern98]],
+!>   [[hillstab_integrate_rk_tableaux:rk_method_name]]
+!> - [[hillstab_curves_hill_method]]: [[hillstab_curves_hill_method:hill_boundary_t]],
+!>   [[hillstab_curves_hill_method:hill_boundaries]], [[hillstab_curves_hill_method:hill_block_eigenvalues]]
+!> - [[hillstab_curves_boundaries]]: [[hillstab_curves_boundaries:boundary_check_t]],
+!>   [[hillstab_curves_boundaries:verify_boundary]], [[hillstab_curves_boundaries:approximate_root_t]],
+!>   [[hillstab_curves_boundaries:approximate_boundaries]],
+!>   [[hillstab_curves_boundaries:unstable_intervals_from_roots]]
+!> - [[hillstab_pendulum_equations]]: [[hillstab_pendulum_equations:pendulum_t]],
+!>   [[hillstab_pendulum_equations:pendulum_from_chart]],
+!>   [[hillstab_pendulum_equations:pendulum_initial_state]], [[hillstab_pendulum_equations:pendulum_energy]],
+!>   [[hillstab_pendulum_equations:pendulum_angle]], [[hillstab_pendulum_equations:pendulum_radius]],
+!>   [[hillstab_pendulum_equations:pendulum_bounce]], [[hillstab_pendulum_equations:pendulum_system_t]]
+!> - [[hillstab_pendulum_analysis]]: [[hillstab_pendulum_analysis:bounce_multipliers_t]],
+!>   [[hillstab_pendulum_analysis:bounce_multipliers]], [[hillstab_pendulum_analysis:onset_periods]],
+!>   [[hillstab_pendulum_analysis:pendulum_watch_t]], [[hillstab_pendulum_analysis:pendulum_integrate]]
+!> - [[hillstab_pendulum_lyapunov]]: [[hillstab_pendulum_lyapunov:lyapunov_t]],
+!>   [[hillstab_pendulum_lyapunov:lyapunov_largest]]
+!> - [[hillstab_pendulum_poincare]]: [[hillstab_pendulum_poincare:section_t]],
+!>   [[hillstab_pendulum_poincare:poincare_section]]
+!> - [[hillstab_pendulum_symplectic]]: [[hillstab_pendulum_symplectic:symplectic_scheme_t]],
+!>   [[hillstab_pendulum_symplectic:symplectic_scheme]],
+!>   [[hillstab_pendulum_symplectic:symplectic_scheme_name]],
+!>   [[hillstab_pendulum_symplectic:symplectic_scheme_id]],
+!>   [[hillstab_pendulum_symplectic:symplectic_leapfrog]],
+!>   [[hillstab_pendulum_symplectic:symplectic_yoshida4]],
+!>   [[hillstab_pendulum_symplectic:symplectic_yoshida6]],
+!>   [[hillstab_pendulum_symplectic:symplectic_blanes_moan4]],
+!>   [[hillstab_pendulum_symplectic:symplectic_blanes_moan6]],
+!>   [[hillstab_pendulum_symplectic:symplectic_mclachlan8]],
+!>   [[hillstab_pendulum_symplectic:symplectic_scheme_count]]
+!> - [[hillstab_pendulum_chaos]]: [[hillstab_pendulum_chaos_track:chaos_options_t]],
+!>   [[hillstab_pendulum_chaos:chaos_t]], [[hillstab_pendulum_chaos:chaos_indicators]],
+!>   [[hillstab_pendulum_chaos:chaos_indicators_batch]], [[hillstab_pendulum_chaos_track:chaos_verdict]],
+!>   [[hillstab_pendulum_chaos:chaos_integrator_name]], [[hillstab_pendulum_chaos:chaos_integrator_id]],
+!>   [[hillstab_pendulum_chaos:chaos_method_text]], [[hillstab_pendulum_chaos_track:chaos_verdict_rule]],
+!>   [[hillstab_pendulum_chaos_track:chaos_auto]], [[hillstab_pendulum_chaos_track:chaos_symplectic]],
+!>   [[hillstab_pendulum_chaos_track:chaos_dop853]]
+!> - [[hillstab_pendulum_gsl]]: [[hillstab_pendulum_gsl:pendulum_gsl]]
+!> - [[hillstab_pendulum_gsl_lyapunov]]: [[hillstab_pendulum_gsl_lyapunov:lyapunov_largest_gsl]]
+!>
+!> (end of the exports)
+!>
 !>```fortran
 !> use hillstab
 !> type(floquet_t) :: f

@@ -14,11 +14,13 @@ module hillstab_fault_injection
    use hillstab_core_error, only: error_t, err_io
    use hillstab_batch_tasks, only: run_scene_file
    use hillstab_testing, only: test_context_t, check
-   use test_scene, only: write_file, c_getpid
+   use test_scene, only: write_file, any_temp_file
    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_funptr, c_intptr_t, c_null_funptr
    implicit none
    private
-   public :: limit_file_size, lift_file_size_limit, check_writer_under_limit
+   public :: limit_file_size, lift_file_size_limit, check_writer_under_limit, limit_address_space, &
+      lift_address_space_limit
+   integer(c_int), parameter :: rlimit_as = 9     ! RLIMIT_AS (Linux)
 
    integer(c_int), parameter :: rlimit_fsize = 1  ! RLIMIT_FSIZE (Linux)
    integer(c_int), parameter :: sigxfsz = 25      ! SIGXFSZ (Linux)
@@ -29,6 +31,7 @@ module hillstab_fault_injection
    end type rlimit_t
 
    type(rlimit_t), save :: saved_limit
+   type(rlimit_t), save :: saved_as
    type(c_funptr), save :: saved_handler = c_null_funptr
    logical, save :: active = .false.
 
@@ -54,6 +57,30 @@ module hillstab_fault_injection
    end interface
 
 contains
+
+   !> Limit the address space of this process to its current size plus `extra` bytes
+   !> (allocations beyond fail, as on a machine short of memory).
+   subroutine limit_address_space(extra)
+      integer(int64), intent(in) :: extra
+      type(rlimit_t) :: limit
+      integer(int64) :: pages
+      integer :: unit, ios
+      integer(c_int) :: status
+      status = c_getrlimit(rlimit_as, saved_as)
+      pages = 0
+      open (newunit=unit, file="/proc/self/statm", action="read", status="old", iostat=ios)
+      if (ios == 0) read (unit, *, iostat=ios) pages
+      if (ios == 0) close (unit)
+      limit%current = int(pages*4096_int64 + extra, c_long)
+      limit%maximum = saved_as%maximum
+      status = c_setrlimit(rlimit_as, limit)
+   end subroutine limit_address_space
+
+   !> Restore the address-space limit in place before `limit_address_space`.
+   subroutine lift_address_space_limit()
+      integer(c_int) :: status
+      status = c_setrlimit(rlimit_as, saved_as)
+   end subroutine lift_address_space_limit
 
    !> Limit the size of files this process writes to `bytes`; crossing it makes the
    !> write fail (EFBIG) instead of killing the process. Print nothing until lifted.
@@ -84,7 +111,7 @@ contains
 
    !> Run the scene file `scene` under a file-size limit of `bytes` (smaller than its output)
    !> and check that the writer of `output` fails cleanly: an i/o error naming `output`
-   !> and the cause, `output` still holding its one line `sentinel`, no `output.part*` left.
+   !> and the cause, `output` still holding its one line `sentinel`, no temporary file `output.part??????` left.
    subroutine check_writer_under_limit(ctx, scene, output, bytes)
       type(test_context_t), intent(inout) :: ctx
       character(len=*), intent(in) :: scene   !! scene file (written beforehand)
@@ -115,11 +142,4 @@ contains
       call check(ctx, .not. any_temp_file(output), "no temporary file left: "//output)
    end subroutine check_writer_under_limit
 
-   !> Whether a file `<output>.part<pid>` of this process exists.
-   logical function any_temp_file(output)
-      character(len=*), intent(in) :: output
-      character(len=16) :: pid
-      write (pid, '(i0)') c_getpid()
-      inquire (file=output//".part"//trim(pid), exist=any_temp_file)
-   end function any_temp_file
 end module hillstab_fault_injection

@@ -1,7 +1,7 @@
 !> Tests of the C and legacy entry points against the modern API.
 module test_capi
-   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_null_char
-   use hillstab_core_kinds, only: wp, pi2
+   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_null_char, c_ptr, c_f_pointer
+   use hillstab_core_kinds, only: wp, pi2, version_string
    use hillstab_hill_coefficient, only: hill_model_t, model_elastic, sampling_average
    use hillstab_hill_transfer, only: trace_t
    use hillstab_integrate_monodromy, only: trace_segmented, method_segments, method_formula
@@ -20,6 +20,28 @@ module test_capi
 
 contains
 
+   !> hillstab_version gives version_string NUL-terminated; hillstab_version_numbers its
+   !> numbers; version_numbers reads MAJOR.MINOR.PATCH and marks what is not a number.
+   subroutine c_version(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(kind=c_char), pointer :: chars(:)
+      integer(c_int) :: major, minor, patch
+      character(len=:), allocatable :: text
+      integer :: i
+      call c_f_pointer(hillstab_c_version(), chars, [len(version_string) + 1])
+      text = ""
+      do i = 1, len(version_string)
+         text = text//chars(i)
+      end do
+      call check(ctx, text == version_string, "hillstab_version() = "//text)
+      call check(ctx, chars(len(version_string) + 1) == c_null_char, "NUL-terminated")
+      call hillstab_c_version_numbers(major, minor, patch)
+      call check(ctx, all(version_numbers(version_string) == [major, minor, patch]), "numbers of "//version_string)
+      call check(ctx, all(version_numbers("12.3.45") == [12, 3, 45]), "12.3.45")
+      call check(ctx, all(version_numbers("1.x") == [1, -1, -1]), "1.x")
+      call check(ctx, all(version_numbers("") == [-1, -1, -1]), "empty")
+   end subroutine c_version
+
    function collect_capi() result(suite)
       type(testsuite_t) :: suite
       suite = new_testsuite("capi", [ &
@@ -32,7 +54,8 @@ contains
          new_unittest("legacy_roundoff_limited", legacy_roundoff_limited), &
          new_unittest("legacy_invalid_arguments", legacy_invalid_arguments), &
          new_unittest("extreme_inputs_status", extreme_inputs_status), &
-         new_unittest("trace_paper_checked", trace_paper_checked)])
+         new_unittest("trace_paper_checked", trace_paper_checked), &
+         new_unittest("c_version", c_version)])
    end function collect_capi
 
    subroutine c_trace_matches_library(ctx)
@@ -181,7 +204,7 @@ contains
       call check(ctx, mu, 0.0_wp, abs=1.0e-4_wp)
    end subroutine legacy_roundoff_limited
 
-   !> Every invalid argument the README lists gives INFO = 1 and a message naming it.
+   !> Every invalid argument the guide page *Using the library* lists gives INFO = 1 and a message naming it.
    subroutine legacy_invalid_arguments(ctx)
       type(test_context_t), intent(inout) :: ctx
       real(wp) :: s, nan
@@ -250,6 +273,15 @@ contains
       call check(ctx, status == 0, "C: a huge trace is no error")
       call check(ctx, overflow == 1 .eqv. info_trace == 2, "C overflow flag as HSTRACE")
       call check(ctx, log_abs > 1000.0_c_double .and. log_abs < huge(1.0_c_double), "ln|S| finite and large")
+      ! the bounds of scenes hold for every entry point: 2**30 pieces are refused, not allocated
+      status = hillstab_c_trace(1_c_int, 4.0_c_double, 6.0_c_double, 0.0_c_double, int(method_segments, c_int), &
+         2_c_int**30, 1_c_int, 1.0e-10_c_double, s, log_abs, overflow)
+      call check(ctx, status == err_invalid_parameter, "n_segments = 2**30: invalid parameter")
+      call hstrace(1, 4.0_wp, 6.0_wp, 0.0_wp, method_segments, 2**30, 1, 1.0e-10_wp, sl, info_trace)
+      call check(ctx, info_trace /= 0, "HSTRACE: n_segments = 2**30 refused")
+      status = hillstab_c_trace(1_c_int, 4.0_c_double, 6.0_c_double, 0.0_c_double, int(method_segments, c_int), &
+         100000_c_int, 1_c_int, 1.0e-10_c_double, s, log_abs, overflow)
+      call check(ctx, status == 0, "n_segments = 1e5: computed")
    end subroutine extreme_inputs_status
 
    !> hillstab_trace_paper_checked: the closed form's value with a status, where

@@ -3,10 +3,13 @@
 !> and the MODEL, METHOD and ISAMP codes documented in the F77 entry points
 !> (src/hillstab/interop/legacy.f90, legacy_external.f90) against the model table
 !> (hillstab_hill_models), the method table (hillstab_integrate_monodromy) and the
-!> sampling table (hillstab_hill_coefficient). Paths are relative to the worktree root,
+!> sampling table (hillstab_hill_coefficient); and the header's HILLSTAB_VERSION_* macros
+!> against `version_string` (hillstab_core_kinds) and the version of fpm.toml. Paths are relative to the worktree root,
 !> the directory `fpm test` runs in.
 module test_codes
    use hillstab_core_text, only: lower_case
+   use hillstab_core_kinds, only: version_string
+   use hillstab_interop_capi, only: version_numbers
    use hillstab_hill_models, only: model_count, model_name, model_from_name
    use hillstab_hill_coefficient, only: sampling_count, sampling_name, sampling_from_name
    use hillstab_integrate_monodromy, only: method_table, method_name, method_from_name
@@ -25,7 +28,8 @@ contains
       type(testsuite_t) :: suite
       suite = new_testsuite("codes", [ &
          new_unittest("c_header_enums", c_header_enums), &
-         new_unittest("f77_codes", f77_codes)])
+         new_unittest("f77_codes", f77_codes), &
+         new_unittest("c_header_version", c_header_version)])
    end function collect_codes
 
    !> The whole file as one lower-case line (comment markers and line ends as blanks).
@@ -163,6 +167,31 @@ contains
          end do
       end do
    end subroutine f77_codes
+
+   !> The header's version macros, `version_string` and fpm.toml's `version = "..."` agree.
+   subroutine c_header_version(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: parts(3) = [character(len=5) :: "MAJOR", "MINOR", "PATCH"]
+      character(len=:), allocatable :: text, manifest, macro
+      integer :: numbers(3), k, at, value, ios
+      numbers = version_numbers(version_string)
+      call check(ctx, all(numbers >= 0), "version_string '"//version_string//"' is MAJOR.MINOR.PATCH")
+      text = file_text(ctx, header_path)
+      do k = 1, 3
+         macro = "#define HILLSTAB_VERSION_"//trim(parts(k))//" "
+         at = index(text, macro)
+         call check(ctx, at > 0, macro//"in "//header_path)
+         if (at == 0) cycle
+         read (text(at + len(macro):), *, iostat=ios) value
+         call check(ctx, ios == 0 .and. value == numbers(k), macro//"is the "//trim(parts(k))// &
+            " number of version_string "//version_string)
+      end do
+      call check(ctx, index(text, '#define HILLSTAB_VERSION_STRING "'//version_string//'"') > 0, &
+         "HILLSTAB_VERSION_STRING is version_string "//version_string)
+      manifest = file_text(ctx, "fpm.toml")
+      call check(ctx, index(manifest, ' version = "'//version_string//'"') > 0, &
+         "fpm.toml's version is version_string "//version_string)
+   end subroutine c_header_version
 
    pure function upper(text) result(up)
       character(len=*), intent(in) :: text

@@ -37,7 +37,7 @@ contains
          new_unittest("openmp_threads", openmp_threads)])
    end function collect_gsl
 
-   !> Characteristic values published to 12 decimals (BRIEF §5; GSL, SciPy and a
+   !> Characteristic values published to 12 decimals (GSL, SciPy and a
    !> tridiagonal solve agree to ~1e-13).
    subroutine mathieu_published(ctx)
       type(test_context_t), intent(inout) :: ctx

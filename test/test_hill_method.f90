@@ -60,7 +60,7 @@ contains
    end subroutine alpha_zero_closed_form
 
    !> The Mathieu model's curves are β = (π²/4) a_n(q), (π²/4) b_n(q) with q = 2ν/π²:
-   !> published values (BRIEF §5) at q = 1, 10, 25.
+   !> published values at q = 1, 10, 25.
    subroutine mathieu_published(ctx)
       type(test_context_t), intent(inout) :: ctx
       call expect(1.0_wp, 0, 1, -0.455138604107_wp)
@@ -184,7 +184,7 @@ contains
    end subroutine trace_on_boundaries
 
    !> β = π²/4 lies strictly inside the first antiperiodic tongue, between b_1 and
-   !> a_1, for every 0 < α < π² (BRIEF §5), and the tongue edges have S = −2.
+   !> a_1, for every 0 < α < π² (parametric resonance), and the tongue edges have S = −2.
    subroutine quarter_pi2_in_first_tongue(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(hill_boundary_t), allocatable :: c(:)

@@ -4,11 +4,12 @@
 !> work; a committed file holds exactly what was written (every line compared).
 module test_output
    use hillstab_core_kinds, only: int64
-   use hillstab_core_error, only: error_t, err_io
+   use hillstab_core_error, only: error_t, err_io, err_input
    use hillstab_batch_output, only: output_file_t, open_output, write_text, commit_output, discard_output
    use hillstab_batch_tasks, only: run_scene_file
    use hillstab_testing
-   use hillstab_fault_injection, only: check_writer_under_limit, limit_file_size, lift_file_size_limit
+   use hillstab_fault_injection, only: check_writer_under_limit, limit_file_size, lift_file_size_limit, &
+      limit_address_space, lift_address_space_limit
    use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text
    implicit none
    private
@@ -25,7 +26,8 @@ contains
          new_unittest("points_writer_file_limit", points_writer_file_limit), &
          new_unittest("coefficient_writer_file_limit", coefficient_writer_file_limit), &
          new_unittest("directory_output_refused", directory_output_refused), &
-         new_unittest("output_larger_than_free_space", output_larger_than_free_space)])
+         new_unittest("output_larger_than_free_space", output_larger_than_free_space), &
+         new_unittest("buffers_larger_than_memory", buffers_larger_than_memory)])
    end function collect_output
 
    subroutine commit_writes_all(ctx)
@@ -174,4 +176,37 @@ contains
       call check(ctx, .not. file_exists(out//"_chart.dat"), "no file")
       call delete_file(scene)
    end subroutine output_larger_than_free_space
+
+   !> Under an address-space limit 400 MB above the process's size, a 1 x 2000000 chart
+   !> (about 1 GB of row buffers) is refused before any work, naming the variables and
+   !> the limit, with no file; the same scene at 1 x 20000 still runs under the limit.
+   subroutine buffers_larger_than_memory(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out, scene
+      out = scratch_prefix("memory")
+      scene = out//".nml"
+      call write_file(scene, [padded("&scene method = 'formula', output = '"//out//"' /"), &
+                              padded("&chart n_alpha = 1, n_beta = 2000000 /")])
+      call limit_address_space(400000000_int64)
+      call run_scene_file(scene, .true., error)
+      call lift_address_space_limit()
+      call check(ctx, allocated(error), "buffers larger than the memory left are refused")
+      if (allocated(error)) then
+         call check(ctx, error%code == err_input, "bad input (exit 2): "//error%message)
+         call check(ctx, contains_text(error%message, scene//": &chart: n_alpha, n_beta: "), "names the variables: "// &
+                    error%message)
+         call check(ctx, contains_text(error%message, "ulimit -v"), "says which limit: "//error%message)
+      end if
+      call check(ctx, .not. file_exists(out//"_chart.dat"), "no file")
+      call write_file(scene, [padded("&scene method = 'formula', output = '"//out//"' /"), &
+                              padded("&chart n_alpha = 1, n_beta = 20000 /")])
+      call limit_address_space(400000000_int64)
+      call run_scene_file(scene, .true., error)
+      call lift_address_space_limit()
+      call check(ctx, .not. allocated(error), "a small chart runs under the limit")
+      call check(ctx, file_exists(out//"_chart.dat"), "and writes its file")
+      call delete_file(out//"_chart.dat")
+      call delete_file(scene)
+   end subroutine buffers_larger_than_memory
 end module test_output

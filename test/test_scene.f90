@@ -27,7 +27,7 @@ module test_scene
    public :: collect_scene
    public :: scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text
    public :: padded, bad_case_t, bad_cases, bad_case_text, write_bad_points_files, delete_bad_points_files
-   public :: c_getpid, grid_of, points_of, coefficient_of
+   public :: c_getpid, grid_of, points_of, coefficient_of, any_temp_file
 
    !> One bad scene: its text (`@OUT@` stands for the output prefix, `@DIR@` for the
    !> scratch prefix of the points files), the group and variable the message must name.
@@ -58,6 +58,7 @@ contains
          new_unittest("bad_input_messages", bad_input_messages), &
          new_unittest("missing_scene_file", missing_scene_file), &
          new_unittest("hostile_scene_files", hostile_scene_files), &
+         new_unittest("special_files_refused", special_files_refused), &
          new_unittest("groups_declared_once", groups_declared_once)])
    end function collect_scene
 
@@ -100,6 +101,14 @@ contains
       write (pid, '(i0)') c_getpid()
       prefix = "build/hillstab_test_"//trim(pid)//"_"//name
    end function scratch_prefix
+
+   !> Whether a temporary file of the writer for `output` (`<output>.part??????`) exists.
+   logical function any_temp_file(output)
+      character(len=*), intent(in) :: output  !! the final name
+      integer :: status
+      call execute_command_line("set -- '"//output//"'.part??????; test -e ""$1""", exitstat=status)
+      any_temp_file = status == 0
+   end function any_temp_file
 
    subroutine write_file(path, lines)
       character(len=*), intent(in) :: path
@@ -538,6 +547,34 @@ contains
       if (.not. allocated(error)) return
       call check(ctx, contains_text(error%message, "build/no_such_scene.nml"), "names the file: "//error%message)
    end subroutine missing_scene_file
+   !> A FIFO without a writer (which would block a read forever) and a device, as the
+   !> scene or as the points file: refused at once (exit 2) naming the file, nothing read.
+   subroutine special_files_refused(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(scene_t) :: scene
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: fifo, path
+      integer :: status
+      fifo = scratch_prefix("fifo")
+      call execute_command_line("rm -f '"//fifo//"'; mkfifo '"//fifo//"'", exitstat=status)
+      call check(ctx, status == 0, "FIFO made")
+      if (status /= 0) return
+      call read_scene(fifo, scene, error)
+      call check(ctx, allocated(error), "a FIFO as the scene is refused")
+      if (allocated(error)) call check(ctx, error%code == err_input .and. contains_text(error%message, &
+         fifo//": cannot read the scene file: it is not a regular file"), "names it: "//error%message)
+      call read_scene("/dev/zero", scene, error)
+      call check(ctx, allocated(error), "/dev/zero as the scene is refused")
+      path = scratch_prefix("fifo_points")//".nml"
+      call write_file(path, [padded("&scene task = 'points' /"), padded("&points file = '"//fifo//"' /")])
+      call read_scene(path, scene, error)
+      call check(ctx, allocated(error), "a FIFO as the points file is refused")
+      if (allocated(error)) call check(ctx, contains_text(error%message, path//": &points: file: '"//fifo// &
+         "' is not a regular file"), "names &points file: "//error%message)
+      call delete_file(path)
+      call execute_command_line("rm -f '"//fifo//"'")
+   end subroutine special_files_refused
+
    !> Scene files a careless or hostile user may give: an endless line (as /dev/zero),
    !> no final newline, a string longer than the strings read, a points file with extra
    !> columns; a points file with a long line.

@@ -1,8 +1,11 @@
 !> Tests of the lyapunov task (hillstab_batch_task_lyapunov) through `run_scene_file`, reading
 !> the file back: layout (header with the effective scene, one `# columns:` line, α
-!> blocks), each value against the library called directly (lyapunov_largest) and the
-!> linear columns against the points task of the core at the same points; the same
-!> values over `&points`; repeating the run from its output; the distributed driver
+!> blocks); with `integrator = 'dop853'` and no early stop each value against the library
+!> called directly (lyapunov_largest, Benettin by DOP853), and the linear columns against
+!> the points task of the core at the same points; the default integrator (symplectic
+!> tangent map, early stop) against that run: the same verdicts, the exponents of regular
+!> orbits within their spread; lanes do not change the lines; the same values over
+!> `&points`; repeating the run from its output; the distributed driver
 !> (hillstab_batch_units) writing the same file; bad input naming file, group and variable.
 module test_task_lyapunov
    use hillstab_core_kinds, only: wp, pi2
@@ -26,6 +29,8 @@ contains
       type(testsuite_t) :: suite
       suite = new_testsuite("task_lyapunov", [ &
          new_unittest("grid_layout_and_values", grid_layout_and_values), &
+         new_unittest("default_integrator_same_verdicts", default_integrator_same_verdicts), &
+         new_unittest("lanes_do_not_change_lines", lanes_do_not_change_lines), &
          new_unittest("points_same_values", points_same_values), &
          new_unittest("repeat_and_distributed", repeat_and_distributed), &
          new_unittest("bad_input", bad_input)])
@@ -59,8 +64,9 @@ contains
       rows = rows(:, :n)
    end subroutine rows_of
 
-   !> A 3 × 2 grid at 60 periods: 6 lines in 3 blocks; each exponent, spread, max |φ|
-   !> and energy drift equal lyapunov_largest's; λ_max and stable equal the points task's.
+   !> A 3 × 2 grid at 60 periods by DOP853 without early stop: 6 lines in 3 blocks; each
+   !> exponent, spread, max |φ| and energy drift equal lyapunov_largest's; λ_max and stable
+   !> equal the points task's; MEGNO below 3 on the regular orbit (c), above 3.5 on (g).
    subroutine grid_layout_and_values(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(error_t), allocatable :: error
@@ -72,16 +78,21 @@ contains
       character(len=60) :: points(6)
       call run_text_scene("lyap_grid", [padded("&scene task='lyapunov', tolerance=1e-10, output='"// &
          scratch_prefix("lyap_grid")//"' /"), padded("&series phi0=0.017, periods=60, r0=0.2, g=9.81 /"), &
+         padded("&lyapunov integrator='dop853', early_stop=.false. /"), &
          padded("&chart alpha_min=2.57, alpha_max=7.48, n_alpha=3, beta_min=1.29, beta_max=2.47, n_beta=2 /")], &
          error, written)
       call check(ctx, .not. allocated(error), "runs")
       if (allocated(error)) return
-      call rows_of(written, 11, rows, n_blank, columns)
+      call rows_of(written, 16, rows, n_blank, columns)
       call check(ctx, columns == "alpha beta lyapunov spread stable lambda_max log_lambda_max max_abs_phi "// &
-         "energy_drift periods status", "columns")
+         "energy_drift chaotic megno fli energy_error integrator periods status", "columns")
       call check(ctx, size(rows, 2) == 6 .and. n_blank == 2, "6 lines in 3 blocks")
       if (size(rows, 2) /= 6) return
-      call check(ctx, all(rows(11, :) == 0.0_wp) .and. all(rows(10, :) == 60.0_wp), "status 0, 60 periods")
+      call check(ctx, all(rows(16, :) == 0.0_wp) .and. all(rows(15, :) == 60.0_wp), "status 0, 60 periods")
+      call check(ctx, all(rows(14, :) == 2.0_wp), "integrator 2 (DOP853)")
+      call check(ctx, rows(11, 1) < 3.0_wp .and. rows(11, 6) > 3.5_wp, "megno below 3 at (c), above 3.5 at (g)")
+      call check(ctx, rows(10, 1) == 0.0_wp .and. rows(10, 6) == 1.0_wp, "(c) regular, (g) chaotic")
+      call check(ctx, all(rows(12, :) >= 0.0_wp) .and. all(rows(13, :) >= rows(9, :)), "fli >= 0, energy_error >= drift")
       do k = 1, 6
          call pendulum_from_chart(rows(1, k), rows(2, k), 0.0_wp, 0.2_wp, 9.81_wp, p, error)
          call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 60, 1.0e-10_wp, reference, error)
@@ -111,6 +122,74 @@ contains
       call delete_file(written)
    end subroutine grid_layout_and_values
 
+   !> The default integrator (auto: the symplectic tangent map, early stop) over a 4 × 3 grid
+   !> of the physical domain at 300 periods against DOP853 without early stop: the same
+   !> verdict at every point; on the points both call regular, the exponents agree within
+   !> the larger spread; the symplectic map ran at most points, with energy errors below
+   !> the tolerance; chaotic points stopped early.
+   subroutine default_integrator_same_verdicts(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: fast, slow, columns
+      real(wp), allocatable :: a(:, :), b(:, :)
+      integer :: na, nb, k
+      character(len=*), parameter :: grid = "&chart alpha_min=1.5, alpha_max=8.5, n_alpha=4, beta_min=1, "// &
+         "beta_max=6, n_beta=3 /"
+      call run_text_scene("lyap_auto", [padded("&scene task='lyapunov', output='"//scratch_prefix("lyap_auto")// &
+         "' /"), padded("&series periods=300 /"), padded(grid)], error, fast)
+      call check(ctx, .not. allocated(error), "auto runs")
+      if (allocated(error)) return
+      call run_text_scene("lyap_dop", [padded("&scene task='lyapunov', output='"//scratch_prefix("lyap_dop")// &
+         "' /"), padded("&series periods=300 /"), padded("&lyapunov integrator='dop853', early_stop=.false. /"), &
+         padded(grid)], error, slow)
+      call check(ctx, .not. allocated(error), "dop853 runs")
+      if (allocated(error)) return
+      call rows_of(fast, 16, a, na, columns)
+      call rows_of(slow, 16, b, nb, columns)
+      call check(ctx, size(a, 2) == 12 .and. size(b, 2) == 12, "12 lines each")
+      if (size(a, 2) /= 12 .or. size(b, 2) /= 12) return
+      call check(ctx, all(a(10, :) == b(10, :)), "same verdicts")
+      call check(ctx, count(a(14, :) == 1.0_wp) >= 9, "symplectic at most points")
+      call check(ctx, all(a(13, :) <= 1.0e-6_wp .or. a(14, :) == 2.0_wp), "energy errors within the tolerance")
+      call check(ctx, any(a(10, :) == 1.0_wp) .and. any(a(10, :) == 0.0_wp), "both kinds of orbit")
+      do k = 1, 12
+         if (a(10, k) == 0.0_wp .and. b(10, k) == 0.0_wp) then
+            call check(ctx, abs(a(3, k) - b(3, k)) <= max(a(4, k), b(4, k)), "regular: exponents within the spread")
+            call check(ctx, a(15, k) == 300.0_wp, "regular: the full periods")
+         else if (a(10, k) == 1.0_wp) then
+            call check(ctx, a(15, k) < 300.0_wp, "chaotic: stopped early")
+         end if
+         call check(ctx, a(5, k) == b(5, k) .and. a(6, k) == b(6, k), "the same linear columns")
+      end do
+      call delete_file(fast)
+      call delete_file(slow)
+   end subroutine default_integrator_same_verdicts
+
+   !> One lane or sixteen: the same lines (each lane's arithmetic is its own).
+   subroutine lanes_do_not_change_lines(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: one, many
+      character(len=1024), allocatable :: a(:), b(:)
+      character(len=*), parameter :: grid = "&chart alpha_min=2, alpha_max=9, n_alpha=5, beta_min=1, "// &
+         "beta_max=8, n_beta=4 /"
+      call run_text_scene("lyap_one", [padded("&scene task='lyapunov', output='"//scratch_prefix("lyap_lanes")// &
+         "' /"), padded("&series periods=40 /"), padded("&lyapunov lanes=1 /"), padded(grid)], error, one)
+      call check(ctx, .not. allocated(error), "one lane runs")
+      if (allocated(error)) return
+      a = read_lines(one)
+      call delete_file(one)
+      call run_text_scene("lyap_many", [padded("&scene task='lyapunov', output='"//scratch_prefix("lyap_lanes")// &
+         "' /"), padded("&series periods=40 /"), padded("&lyapunov lanes=16 /"), padded(grid)], error, many)
+      call check(ctx, .not. allocated(error), "16 lanes run")
+      if (allocated(error)) return
+      b = read_lines(many)
+      call delete_file(many)
+      call check(ctx, size(a) == size(b), "same length")
+      ! the scene file line and the &lyapunov line differ
+      if (size(a) == size(b)) call check(ctx, count(a /= b) == 2, "only the scene lines differ")
+   end subroutine lanes_do_not_change_lines
+
    !> Over `&points`: the lines of the same points as the grid's (no blank lines).
    subroutine points_same_values(ctx)
       type(test_context_t), intent(inout) :: ctx
@@ -128,8 +207,8 @@ contains
          padded("&points file='"//scratch_prefix("lyap_p")//".dat' /")], error, list)
       call check(ctx, .not. allocated(error), "runs")
       if (allocated(error)) return
-      call rows_of(grid, 11, a, na, columns)
-      call rows_of(list, 11, b, nb, columns)
+      call rows_of(grid, 16, a, na, columns)
+      call rows_of(list, 16, b, nb, columns)
       call check(ctx, size(a, 2) == 2 .and. size(b, 2) == 2 .and. nb == 0, "two lines each")
       if (size(a, 2) == 2 .and. size(b, 2) == 2) call check(ctx, all(a == b), "same values")
       call delete_file(grid)
@@ -190,6 +269,31 @@ contains
          padded("&series periods=0 /"), padded("&chart beta_min=1 /")], error, written)
       call check(ctx, allocated(error), "periods = 0 refused")
       if (allocated(error)) call check(ctx, contains_text(error%message, "periods"), "names periods")
+      call bad_lyapunov("integrator='rk4'", "integrator")
+      call bad_lyapunov("scheme='euler'", "scheme")
+      call bad_lyapunov("lanes=0", "lanes")
+      call bad_lyapunov("megno_regular=3.0, megno_chaotic=2.5", "megno_chaotic")
+      call bad_lyapunov("megno_stop=3.0", "megno_stop")
+      call bad_lyapunov("energy_tolerance=0", "energy_tolerance")
+      call bad_lyapunov("steps_per_period=2", "steps_per_period")
+      call bad_lyapunov("min_periods=0", "min_periods")
+      call run_text_scene("lyap_bad", [padded("&scene task='lyapunov', epsilon=0.01, output='"// &
+         scratch_prefix("lyap_bad")//"' /"), padded("&series periods=20 /"), &
+         padded("&lyapunov integrator='symplectic' /"), padded("&chart /")], error, written)
+      call check(ctx, allocated(error), "symplectic with damping refused")
+      if (allocated(error)) call check(ctx, contains_text(error%message, "integrator") .and. &
+         contains_text(error%message, "epsilon"), "names integrator and epsilon: "//error%message)
       call check(ctx, .not. file_exists(scratch_prefix("lyap_bad")//"_lyapunov.dat"), "no file")
+   contains
+      subroutine bad_lyapunov(settings, variable)
+         character(len=*), intent(in) :: settings, variable
+         call run_text_scene("lyap_bad", [padded("&scene task='lyapunov', output='"//scratch_prefix("lyap_bad")// &
+            "' /"), padded("&series periods=20 /"), padded("&lyapunov "//settings//" /"), padded("&chart /")], &
+            error, written)
+         call check(ctx, allocated(error), settings//" refused")
+         if (allocated(error)) call check(ctx, error%code == err_input .and. contains_text(error%message, &
+            "&lyapunov") .and. contains_text(error%message, variable//":"), "names &lyapunov "//variable//": "// &
+            error%message)
+      end subroutine bad_lyapunov
    end subroutine bad_input
 end module test_task_lyapunov

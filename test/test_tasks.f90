@@ -11,7 +11,7 @@ module test_tasks
    use hillstab_testing
    use hillstab_test_files, only: run_text_scene, check_rerun
    use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text, &
-      bad_case_t, bad_cases, bad_case_text, write_bad_points_files, delete_bad_points_files, c_getpid
+      bad_case_t, bad_cases, bad_case_text, write_bad_points_files, delete_bad_points_files, c_getpid, any_temp_file
    implicit none
    private
    public :: collect_tasks
@@ -34,6 +34,8 @@ contains
          new_unittest("domain_notes", domain_notes), &
          new_unittest("chosen_columns_and_binary", chosen_columns_and_binary), &
          new_unittest("bad_input_touches_nothing", bad_input_touches_nothing), &
+         new_unittest("planted_links_untouched", planted_links_untouched), &
+         new_unittest("long_file_names", long_file_names), &
          new_unittest("unwritable_output", unwritable_output)])
    end function collect_tasks
 
@@ -697,9 +699,7 @@ contains
       character(len=:), allocatable :: written, out, dir, text
       character(len=1024), allocatable :: kept(:)
       character(len=*), parameter :: tasks(3) = [character(len=11) :: "chart", "points", "coefficient"]
-      character(len=16) :: pid
       integer :: k, t
-      write (pid, '(i0)') c_getpid()
       out = scratch_prefix("keep")
       dir = scratch_prefix("keeppts")
       call write_bad_points_files(dir)
@@ -714,13 +714,93 @@ contains
          call check(ctx, size(kept) == 1, "existing file untouched: "//text)
          if (size(kept) == 1) call check(ctx, kept(1) == "sentinel", "existing file untouched: "//text)
          do t = 1, 3
-            call check(ctx, .not. file_exists(out//"_"//trim(tasks(t))//".dat.part"//trim(pid)), "no temporary file")
+            call check(ctx, .not. any_temp_file(out//"_"//trim(tasks(t))//".dat"), "no temporary file")
             if (t > 1) call check(ctx, .not. file_exists(out//"_"//trim(tasks(t))//".dat"), "no file created: "//text)
          end do
       end do
       call delete_file(out//"_chart.dat")
       call delete_bad_points_files(dir)
    end subroutine bad_input_touches_nothing
+
+   !> Links planted where a writer might write: a symbolic link at the temporary name
+   !> older versions used (`<file>.part<pid>`) and at the final name, a hard link at the
+   !> final name. The run writes its file; neither victim changes; the final name is then a
+   !> regular file of its own; no temporary file is left (and the check for one works).
+   subroutine planted_links_untouched(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out, victim, other
+      character(len=1024), allocatable :: lines(:)
+      character(len=16) :: pid
+      integer :: status
+      write (pid, '(i0)') c_getpid()
+      out = scratch_prefix("planted")
+      victim = scratch_prefix("victim")//".txt"
+      other = scratch_prefix("victim_hard")//".txt"
+      call write_file(out//"_chart.dat.partAbc123", ["x"])
+      call check(ctx, any_temp_file(out//"_chart.dat"), "a temporary file is seen")
+      call delete_file(out//"_chart.dat.partAbc123")
+      call check(ctx, .not. any_temp_file(out//"_chart.dat"), "no temporary file is seen")
+      call write_file(victim, ["victim"])
+      call write_file(other, ["other"])
+      ! a symbolic link at the old temporary name, to the victim
+      call execute_command_line("ln -s '"//victim(index(victim, "/", back=.true.) + 1:)//"' '"//out// &
+         "_chart.dat.part"//trim(pid)//"'", exitstat=status)
+      call check(ctx, status == 0, "symbolic link planted")
+      ! the final name a hard link to the other victim
+      call execute_command_line("ln '"//other//"' '"//out//"_chart.dat'", exitstat=status)
+      call check(ctx, status == 0, "hard link planted")
+      call run_text_scene("planted", [padded("&scene method = 'formula', output = '"//out//"' /"), &
+         padded("&chart n_alpha = 3, n_beta = 3 /")], error, written)
+      call check(ctx, .not. allocated(error), "runs")
+      lines = read_lines(victim)
+      call check(ctx, size(lines) == 1, "the victim keeps its one line")
+      if (size(lines) == 1) call check(ctx, lines(1) == "victim", "the victim is unchanged")
+      lines = read_lines(other)
+      call check(ctx, size(lines) == 1, "the hard-linked file keeps its one line")
+      if (size(lines) == 1) call check(ctx, lines(1) == "other", "the hard-linked file is unchanged")
+      lines = read_lines(out//"_chart.dat")
+      call check(ctx, size(lines) > 9, "the output is written")
+      call execute_command_line("test -L '"//out//"_chart.dat.part"//trim(pid)//"'", exitstat=status)
+      call check(ctx, status == 0, "the planted link is left as it was")
+      call execute_command_line("test -f '"//out//"_chart.dat' && test ! -L '"//out//"_chart.dat' && "// &
+         "test ""$(stat -c %h '"//out//"_chart.dat')"" = 1", exitstat=status)
+      call check(ctx, status == 0, "the output is a regular file with one link")
+      call check(ctx, .not. any_temp_file(out//"_chart.dat"), "no temporary file left")
+      call delete_file(out//"_chart.dat.part"//trim(pid))
+      call delete_file(out//"_chart.dat")
+      call delete_file(victim)
+      call delete_file(other)
+   end subroutine planted_links_untouched
+
+   !> A file name of 255 bytes (the most a name may have) is written, whatever the temporary
+   !> name needs; 256 bytes is refused, naming &scene output and the length, with no file.
+   subroutine long_file_names(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, dir, base
+      character(len=600) :: scene(2)
+      integer :: n
+      dir = scratch_prefix("long")//"_dir"
+      call execute_command_line("mkdir -p '"//dir//"'")
+      do n = 255, 256
+         base = repeat("n", n - len("_chart.dat"))
+         scene(1) = "&scene method = 'formula', output = '"//dir//"/"//base//"' /"
+         scene(2) = "&chart n_alpha = 2, n_beta = 2 /"
+         call run_text_scene("long", scene, error, written)
+         if (n == 255) then
+            call check(ctx, .not. allocated(error), "a name of 255 bytes is written")
+            call check(ctx, file_exists(dir//"/"//base//"_chart.dat"), "the file exists")
+            call delete_file(dir//"/"//base//"_chart.dat")
+         else
+            call check(ctx, allocated(error), "a name of 256 bytes is refused")
+            if (allocated(error)) call check(ctx, contains_text(error%message, "&scene: output:") .and. &
+               contains_text(error%message, "256 bytes"), "names &scene output and the length: "//error%message)
+         end if
+         call check(ctx, .not. any_temp_file(dir//"/"//base//"_chart.dat"), "no temporary file left")
+      end do
+      call execute_command_line("rmdir '"//dir//"'")
+   end subroutine long_file_names
 
    subroutine unwritable_output(ctx)
       type(test_context_t), intent(inout) :: ctx

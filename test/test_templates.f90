@@ -23,8 +23,44 @@ contains
          new_unittest("templates_name_every_variable", templates_name_every_variable), &
          new_unittest("physical_variant_reads", physical_variant_reads), &
          new_unittest("every_task_has_a_template", every_task_has_a_template), &
-         new_unittest("unknown_task", unknown_task)])
+         new_unittest("unknown_task", unknown_task), &
+         new_unittest("guide_shows_every_template", guide_shows_every_template)])
    end function collect_templates
+
+   !> The scene reference of the guide (docs/guide/scene-reference.md) holds every task's
+   !> template verbatim: regenerate it with `python3 scripts/scene_reference.py`.
+   subroutine guide_shows_every_template(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: page_path = "docs/guide/scene-reference.md"
+      character(len=:), allocatable :: page, text, names(:)
+      character(len=4096) :: line
+      type(error_t), allocatable :: error
+      integer :: unit, ios, k, last
+      page = ""
+      open (newunit=unit, file=page_path, status="old", action="read", iostat=ios)
+      call check(ctx, ios == 0, "cannot open "//page_path//" (run the tests from the repository root)")
+      if (ios /= 0) return
+      do
+         read (unit, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         page = page//trim(line)//new_line("a")
+      end do
+      close (unit)
+      names = template_task_names()
+      do k = 1, size(names)
+         call scene_template(trim(names(k)), text, error)
+         call check(ctx, .not. allocated(error), "template of "//trim(names(k)))
+         if (allocated(error)) cycle
+         last = len(text)
+         do while (last > 0)
+            if (text(last:last) /= new_line("a")) exit
+            last = last - 1
+         end do
+         call check(ctx, index(page, "```text"//new_line("a")//text(:last)//new_line("a")//"```") > 0, &
+            page_path//" shows the current template of task '"//trim(names(k))// &
+            "' (run python3 scripts/scene_reference.py)")
+      end do
+   end subroutine guide_shows_every_template
 
    !> `text` with every `old` replaced by `new`.
    function replaced(text, old, new) result(out)

@@ -3,7 +3,7 @@
 
 Independent of hillstab's code: Taylor-series integration in mpmath (40+ digits)
 of the even and odd solutions u, v on [0, 1] (Q is even and 2-periodic, so
-S = 2 (u v' + u' v) at tau = 1, BRIEF section 4), with the Taylor coefficients of
+S = 2 (u v' + u' v) at tau = 1, Floquet theory), with the Taylor coefficients of
 Q from the series of cos(pi tau) and a series division, and each step's length
 chosen so that the series tail is below the working precision (and at most a
 fraction of the distance to the nearest complex pole of Q, 1 - k cos(pi tau) = 0).

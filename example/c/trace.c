@@ -1,13 +1,19 @@
-/* Links against an installed hillstab through its C header: eq. (37) and a
+/* Links against an installed hillstab through its C header: the version, eq. (37) and a
  * segmented trace at the paper's case (b), an error status and an overflow. */
 #include <stdio.h>
+#include <string.h>
 #include <math.h>
 #include "hillstab.h"
 
 int main(void) {
   double s, log_abs, paper;
-  int overflow, status;
+  int overflow, status, major, minor, patch;
   char message[64];
+  /* the library linked at run time is the one the header belongs to */
+  hillstab_version_numbers(&major, &minor, &patch);
+  printf("C: hillstab %s (header %s)\n", hillstab_version(), HILLSTAB_VERSION_STRING);
+  if (strcmp(hillstab_version(), HILLSTAB_VERSION_STRING) != 0 || major != HILLSTAB_VERSION_MAJOR
+      || minor != HILLSTAB_VERSION_MINOR || patch != HILLSTAB_VERSION_PATCH) return 1;
   status = hillstab_trace(HILLSTAB_MODEL_ELASTIC, 3.70, 2.47, 0.0, HILLSTAB_METHOD_SEGMENTS, 4096,
                           HILLSTAB_SAMPLING_AVERAGE, 1e-10, &s, &log_abs, &overflow);
   if (hillstab_trace_paper_checked(3.70, 2.47, 0.0, &paper, &log_abs, &overflow) != 0) return 1;

@@ -1,4 +1,4 @@
-!> The round-off floor of the hard case β = 0, α → π² (README, *Hard cases*).
+!> The round-off floor of the hard case β = 0, α → π² (guide page *Validation*, hard cases).
 !>
 !> With no gravity (β = 0) the rigidly turned bounce is 2-periodic, so the exact
 !> trace is S = 2 for every α; but the propagator passes through large, badly

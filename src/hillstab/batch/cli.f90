@@ -21,6 +21,8 @@ module hillstab_batch_cli
    use hillstab_batch_tasks, only: run_scene_file
    use hillstab_batch_templates, only: scene_template
    use hillstab_batch_task_registry, only: task_names_text
+   use hillstab_batch_signals, only: settle_signals
+   use hillstab_core_text, only: integer_text
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use, intrinsic :: ieee_arithmetic, only: ieee_set_flag, ieee_all
    implicit none
@@ -113,7 +115,7 @@ contains
       character(len=max_path), allocatable :: scenes(:)
       character(len=:), allocatable :: text
       logical :: quiet, points_failed
-      integer :: i, n_scenes
+      integer :: i, n_scenes, signum
       if (.not. allocated(runner%program)) runner%program = "hillstab"
       if (.not. allocated(runner%usage)) runner%usage = default_usage(runner%program)
       if (.not. allocated(runner%description)) runner%description = default_description()
@@ -160,12 +162,26 @@ contains
          call runner%run(trim(scenes(i)), quiet, error, written)
          if (allocated(error)) then
             if (len(error%message) > 0) error%message = runner%program//": "//error%message
-            if (error%code /= err_points_failed) call quit(error%message, exit_status(error))
+            if (error%code /= err_points_failed) then
+               signum = settle_signals()
+               call quit(error%message, exit_status(error))
+            end if
             ! the file is written; the message says where (also with --quiet: it qualifies the file)
             if (len(error%message) > 0) write (error_unit, '(a)') error%message
             points_failed = .true.
          end if
          if (.not. quiet .and. runner%reports()) write (error_unit, '(a)') runner%program//": wrote "//written
+         ! a signal that arrived while the file took its name: it is written and said so;
+         ! stop here
+         signum = settle_signals()
+         if (signum /= 0) then
+            if (i < n_scenes) then
+               call quit(on_reporter(runner%program//": signal "//integer_text(signum)//" arrived after "// &
+                  written//" was written; the scenes after "//trim(scenes(i))//" were not run"), 128 + signum)
+            end if
+            call quit(on_reporter(runner%program//": signal "//integer_text(signum)//" arrived after "// &
+               written//" was written: the run is complete"), merge(exit_points_failed, 0, points_failed))
+         end if
       end do
       call quit("", merge(exit_points_failed, 0, points_failed))
 

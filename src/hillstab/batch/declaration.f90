@@ -392,7 +392,7 @@ contains
       character(len=*), intent(in) :: text
       integer, intent(inout) :: pos
       character(len=:), allocatable, intent(out) :: name, value
-      integer :: i, start, eq
+      integer :: i, j, last, start, eq
       character :: quote
       name = ""
       value = ""
@@ -413,15 +413,25 @@ contains
       ! the value ends at the first ", NAME=" outside quotes, or at the closing "/"
       do while (i <= len(text))
          if (quote /= " ") then
-            if (text(i:i) == quote) then
-               if (i < len(text)) then
-                  if (text(i + 1:i + 1) == quote) then
-                     i = i + 2
-                     cycle
-                  end if
+            ! a string variable is written at its full length (64 KiB of blanks): skip
+            ! blank runs 64 characters at a time, then find the next quote character
+            do while (i <= len(text))
+               last = min(len(text), i + 63)
+               if (text(i:last) /= "") then
+                  j = index(text(i:last), quote)
+                  if (j > 0) exit
                end if
-               quote = " "
+               i = last + 1
+            end do
+            if (i > len(text)) exit
+            i = i + j - 1
+            if (i < len(text)) then
+               if (text(i + 1:i + 1) == quote) then
+                  i = i + 2
+                  cycle
+               end if
             end if
+            quote = " "
          else if (text(i:i) == "'" .or. text(i:i) == '"') then
             quote = text(i:i)
          else if (text(i:i) == "/") then

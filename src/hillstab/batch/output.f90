@@ -1,6 +1,9 @@
 !> Gnuplot-ready output files: a `#` header, one `# columns:` line, numeric columns.
 !>
-!> Files appear complete or not at all: rows go to `<path>.part<pid>`, which is
+!> Files appear complete or not at all: rows go to a new temporary file in the output's
+!> directory, `<name>.partXXXXXX` (the suffix unpredictable, the file created exclusively
+!> by mkstemp: nothing someone placed at that name, a symbolic or hard link included, is
+!> ever opened; the name shortened so that it fits wherever the final name does), which is
 !> renamed onto `<path>` only by `commit_output`, and only when every write, the
 !> flush to the disk and the close succeeded; otherwise the temporary file is deleted,
 !> `<path>` keeps what it had and the error names the path and the cause (a full file
@@ -24,15 +27,18 @@ module hillstab_batch_output
    use hillstab_core_kinds, only: int64
    use hillstab_core_error, only: error_t, set_error, err_io
    use hillstab_core_text, only: integer_text
-   use hillstab_ffi_libc, only: c_rename, c_getpid, c_fopen, c_fwrite, c_fwrite_raw, c_fflush, c_fclose, c_fileno, &
-      c_fsync, errno_text, set_errno, c_string, remove_file, is_directory
-   use hillstab_batch_signals, only: watch_temp_file, forget_temp_file
+   use hillstab_ffi_libc, only: c_rename, c_mkstemp, c_fdopen, c_fchmod, c_umask, c_close, c_fwrite, c_fwrite_raw, &
+      c_fflush, c_fclose, c_fileno, c_fsync, errno_text, set_errno, c_string, remove_file, is_directory
+   use hillstab_batch_signals, only: watch_temp_file, forget_temp_file, begin_commit
    use hillstab_core_kinds, only: wp
-   use, intrinsic :: iso_c_binding, only: c_int, c_ptr, c_null_ptr, c_associated, c_size_t, c_loc
+   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_ptr, c_null_ptr, c_associated, c_size_t, c_loc
    implicit none
    private
    public :: output_file_t, open_output, commit_output, discard_output, finish_output, write_header, write_text
    public :: write_records, joined_lines
+
+   !> Longest file name (one path component) of Linux file systems, NAME_MAX.
+   integer, parameter :: name_max = 255
 
    !> An output file being written under a temporary name.
    type :: output_file_t
@@ -47,8 +53,8 @@ module hillstab_batch_output
 
 contains
 
-   !> Open `<path>.part<pid>` for writing; fails (err_io) when the place is not writable
-   !> or `path` is a directory. With `binary`, the file is a byte stream: text lines
+   !> Create the temporary file of `path` for writing; fails (err_io) when the place is not
+   !> writable or `path` is a directory. With `binary`, the file is a byte stream: text lines
    !> (`write_text`, `write_header`) and then raw records (`write_records`).
    subroutine open_output(file, path, error, binary, context)
       type(output_file_t), intent(out) :: file  !! the open temporary file
@@ -57,26 +63,62 @@ contains
       logical, intent(in), optional :: binary  !! a byte stream (default: a text file)
       !> put before the error message: what named the path (a task: "<scene>: &scene: output: ")
       character(len=*), intent(in), optional :: context
-      character(len=24) :: pid
       character(len=:), allocatable :: prefix
+      character(kind=c_char), allocatable :: template(:)
+      integer(c_int) :: fd, mask, status
+      integer :: k
       prefix = ""
       if (present(context)) prefix = context
-      write (pid, '(i0)') c_getpid()
       file%path = path
-      file%temp_path = path//".part"//trim(pid)
       if (present(binary)) file%binary = binary
       if (is_directory(path)) then
          call set_error(error, err_io, prefix//"cannot write '"//path//"': it is a directory")
          return
       end if
+      if (len(path) - index(path, "/", back=.true.) > name_max) then
+         call set_error(error, err_io, prefix//"cannot write '"//path//"': File name too long (its last "// &
+            "component has "//integer_text(len(path) - index(path, "/", back=.true.))//" bytes, at most "// &
+            integer_text(name_max)//")")
+         return
+      end if
+      template = c_string(temporary_template(path))
       call set_errno(0)
-      file%stream = c_fopen(c_string(file%temp_path), c_string("w"))
-      if (.not. c_associated(file%stream)) then
+      fd = c_mkstemp(template)
+      if (fd < 0) then
          call set_error(error, err_io, prefix//"cannot write '"//path//"': "//errno_text())
          return
       end if
+      allocate (character(len=size(template) - 1) :: file%temp_path)
+      do k = 1, size(template) - 1
+         file%temp_path(k:k) = template(k)
+      end do
       call watch_temp_file(file%temp_path, file%slot)
+      ! mkstemp creates the file 0600; the output gets the mode a new file would get
+      mask = c_umask(int(o'022', c_int))
+      status = c_umask(mask)
+      status = c_fchmod(fd, iand(int(o'666', c_int), not(mask)))
+      call set_errno(0)
+      file%stream = c_fdopen(fd, c_string("w"))
+      if (.not. c_associated(file%stream)) then
+         call set_error(error, err_io, prefix//"cannot write '"//path//"': "//errno_text())
+         status = c_close(fd)
+         call remove_file(file%temp_path)
+         call forget_temp_file(file%slot)
+         return
+      end if
    end subroutine open_output
+
+   !> The mkstemp template of the temporary file of `path`: `<dir>/<name>.partXXXXXX`, the
+   !> name cut to at most 244 bytes so that the whole fits in the 255 bytes of a file name.
+   pure function temporary_template(path) result(template)
+      character(len=*), intent(in) :: path  !! final file name
+      character(len=:), allocatable :: template
+      integer, parameter :: suffix = len(".partXXXXXX")
+      integer :: slash, n
+      slash = index(path, "/", back=.true.)
+      n = min(len(path) - slash, name_max - suffix)
+      template = path(:slash + n)//".partXXXXXX"
+   end function temporary_template
 
    !> Flush the temporary file to the disk, close it and rename it onto the final name;
    !> after any failure (now or in an earlier write) the temporary file is deleted.
@@ -108,6 +150,8 @@ contains
          return
       end if
       call set_errno(0)
+      ! a signal from here on is held until the program has reported this file
+      call begin_commit()
       if (c_rename(c_string(file%temp_path), c_string(file%path)) /= 0) then
          cause = errno_text()
          call remove_file(file%temp_path)

@@ -53,6 +53,8 @@ module hillstab_batch_scene
       procedure :: template_alternatives => task_template_alternatives
       !> an upper estimate of the bytes of the output file (0: the task bounds its own)
       procedure :: estimated_bytes => task_estimated_bytes
+      !> an upper estimate of the memory its buffers need (0: a few MB whatever the scene)
+      procedure :: memory_bytes => task_memory_bytes
       !> what sets the size of the output, for messages ("&chart: n_alpha, n_beta: 200 x 200 points")
       procedure :: size_variables => task_size_variables
       !> points a distributed run computes (0: the task runs in one process)
@@ -222,6 +224,14 @@ contains
       integer(int64) :: bytes
       bytes = 0
    end function task_estimated_bytes
+
+   !> Default: memory of a task whose buffers do not grow with its scene (a few MB).
+   function task_memory_bytes(self, scene) result(bytes)
+      class(task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      bytes = 0
+   end function task_memory_bytes
 
    !> Default: the task's groups.
    function task_size_variables(self) result(text)

@@ -10,7 +10,7 @@ module hillstab_batch_scene_checks
    use hillstab_core_error, only: error_t
    use hillstab_core_text, only: real_text, integer_text
    use hillstab_hill_models, only: model_name, model_alpha_valid, model_alpha_domain
-   use hillstab_integrate_monodromy, only: method_t, method_name, method_cost_grows, max_integrated_magnitude
+   use hillstab_integrate_monodromy, only: method_t, method_name, method_cost_grows, max_integrated_magnitude, max_segments
    use hillstab_batch_scene_file, only: fail
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
@@ -22,8 +22,6 @@ module hillstab_batch_scene_checks
 
    !> Largest `n_alpha`, `n_beta`, `n_tau` (and every other `n_` count of a range).
    integer, parameter :: max_grid_count = 100000000
-   !> Largest `n_segments`: bounds the work and memory of one point.
-   integer, parameter :: max_segments = 100000
    !> Smallest `tolerance` accepted (methods reach the round-off level of double precision
    !> near 1e-16 relative to max(1, |S|); below this the answer could only be round-off limited).
    real(wp), parameter :: min_tolerance = 1.0e-15_wp

@@ -16,7 +16,7 @@ module hillstab_batch_scene_file
    use hillstab_core_kinds, only: int64
    use hillstab_core_error, only: error_t, set_error, err_input
    use hillstab_core_text, only: integer_text, lower => lower_case, read_text_line
-   use hillstab_ffi_libc, only: is_directory
+   use hillstab_ffi_libc, only: is_directory, is_special_file
    use, intrinsic :: iso_fortran_env, only: iostat_end
    implicit none
    private
@@ -65,6 +65,11 @@ contains
       file%path = path
       if (is_directory(path)) then
          call set_error(error, err_input, path//": cannot read the scene file: it is a directory")
+         return
+      end if
+      if (is_special_file(path)) then
+         call set_error(error, err_input, path//": cannot read the scene file: it is not a regular file "// &
+            "(a FIFO, device or socket); give a file")
          return
       end if
       open (newunit=source, file=path, status="old", action="read", form="formatted", iostat=ios, iomsg=msg)

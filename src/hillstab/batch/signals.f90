@@ -8,6 +8,12 @@
 !> SIGXFSZ (a file-size limit) is ignored instead, so the write that crosses the
 !> limit fails with EFBIG and the writer reports it and deletes its temporary file.
 !>
+!> The outcome reported is the outcome on disk: from just before a finished file is
+!> renamed onto its name (`begin_commit`) until the program has reported that scene
+!> (`settle_signals`), a signal is held, not acted on; `settle_signals` then says that it
+!> arrived after the file was written, and the program stops there with the status of
+!> what it wrote (the scenes after it not run: 128 + signal).
+!>
 !> The handler touches only a fixed character buffer and calls `unlink` and `_exit`,
 !> both async-signal-safe.
 !>
@@ -19,7 +25,8 @@ module hillstab_batch_signals
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_funptr, c_funloc, c_intptr_t
    implicit none
    private
-   public :: install_signal_cleanup, watch_temp_file, forget_temp_file, max_watched_path
+   public :: install_signal_cleanup, watch_temp_file, forget_temp_file, max_watched_path, begin_commit, &
+      settle_signals
    public :: signal_hangup, signal_interrupt, signal_terminate, signal_file_size
 
    integer, parameter :: signal_hangup = 1      !! SIGHUP (Linux)
@@ -33,6 +40,10 @@ module hillstab_batch_signals
 
    !> Watched paths, NUL-terminated; a slot is free when its first character is NUL.
    character(kind=c_char), volatile, save :: watched(max_watched_path + 1, n_slots) = c_null_char
+   !> 1 while a file is being committed and reported: signals are held
+   integer(c_int), volatile, save :: holding = 0
+   !> the signal held (0: none)
+   integer(c_int), volatile, save :: held = 0
 
 
 contains
@@ -79,11 +90,30 @@ contains
       watched(1, slot) = c_null_char
    end subroutine forget_temp_file
 
-   !> Signal handler: unlink every watched file, exit 128 + signal.
+   !> From now until `settle_signals`, hold SIGINT, SIGTERM, SIGHUP instead of acting on
+   !> them: a file is about to take its final name.
+   subroutine begin_commit()
+      holding = 1
+   end subroutine begin_commit
+
+   !> End the hold of `begin_commit`; the signal that arrived meanwhile (0: none), which
+   !> the caller acts on now that what is on disk has been reported.
+   integer function settle_signals() result(signum)
+      holding = 0
+      signum = int(held)
+      held = 0
+   end function settle_signals
+
+   !> Signal handler: unlink every watched file, exit 128 + signal (while a commit is in
+   !> progress: hold the signal for `settle_signals`).
    subroutine on_signal(signum) bind(C)
       integer(c_int), value :: signum
       integer :: k
       integer(c_int) :: status
+      if (holding /= 0) then
+         if (held == 0) held = signum
+         return
+      end if
       do k = 1, n_slots
          if (watched(1, k) /= c_null_char) status = c_unlink(watched(:, k))
       end do

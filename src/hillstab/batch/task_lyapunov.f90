@@ -1,31 +1,39 @@
-!> Task `lyapunov`: the largest Lyapunov exponent of the nonlinear pendulum
-!> (hillstab_pendulum_lyapunov) over the (α, β) grid of `&chart` or at the points of `&points`
-!> (`&lyapunov over`), each point started as `&series` says (φ0, velocities, r0, g) and
-!> integrated for `&series periods` radial periods at the `&scene tolerance`. Beside the
-!> exponent: its error indication, the chart's linear verdict at the point (the core's
-!> stable, λ_max and ln λ_max by the `&scene method`), the largest |φ| reached and the
-!> energy drift. One line per point, blocks of constant α separated by a blank line
-!> (a grid), or in the points' order.
+!> Task `lyapunov`: chaos indicators of the nonlinear pendulum (hillstab_pendulum_chaos)
+!> over the (α, β) grid of `&chart` or at the points of `&points` (`&lyapunov over`), each
+!> point started as `&series` says (φ0, velocities, r0, g) and integrated for up to
+!> `&series periods` radial periods: the finite-time Lyapunov exponent and its spread,
+!> MEGNO, the FLI and the verdict (chaotic 1, regular 0, undecided 0.5), by the integrator
+!> of `&lyapunov` (auto: a symplectic tangent map where it holds the energy tolerance,
+!> DOP853 at the `&scene tolerance` otherwise and with damping); a point stops as soon as
+!> its verdict is certain unless `early_stop = .false.`. Beside them: the chart's linear
+!> verdict at the point (the core's stable, λ_max and ln λ_max by the `&scene method`), the
+!> largest |φ| reached and the energy errors. One line per point, blocks of constant α
+!> separated by a blank line (a grid), or in the points' order.
 !>
 !> Points are independent: the serial task computes them in parallel (OpenMP, dynamic
-!> schedule: chaotic and near-π² points cost more) in units of consecutive points and
-!> writes the units in order; the MPI program (hillstab_batch_units) computes the same units
-!> on several ranks with `lyapunov_lines` and writes the same file.
+!> schedule over batches of `lanes` consecutive points advanced together) in units of
+!> whole batches and writes the units in order; the MPI program (hillstab_batch_units)
+!> computes the same units on several ranks with `lyapunov_lines` and writes the same
+!> file. Batches start at fixed point indices (1, 1 + lanes, …), so that a point's
+!> companions, and its line, do not depend on how the units are cut.
 module hillstab_batch_task_lyapunov
    use hillstab_core_kinds, only: wp, int64, pi2, version_string
    use hillstab_core_error, only: error_t, set_error, err_accuracy, err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
-   use hillstab_core_text, only: real_text, integer_text
+   use hillstab_core_text, only: real_text, integer_text, lower_case
    use hillstab_hill_models, only: hill_model_t
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
    use hillstab_integrate_monodromy, only: monodromy_trace, method_name
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart, pendulum_initial_state
-   use hillstab_pendulum_lyapunov, only: lyapunov_t, lyapunov_largest
+   use hillstab_pendulum_symplectic, only: symplectic_scheme_id, symplectic_scheme_name, symplectic_scheme_count
+   use hillstab_pendulum_chaos, only: chaos_options_t, chaos_t, chaos_indicators_batch, chaos_integrator_id, &
+      chaos_integrator_name, chaos_method_text, chaos_verdict_rule, chaos_auto, chaos_symplectic, chaos_dop853
    use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, open_scene_output
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_checks, only: min_pendulum_beta
-   use hillstab_batch_declaration, only: new_group, group_t, group_reader_t, variable, var_name, begin_group, next_item, end_group
+   use hillstab_batch_declaration, only: new_group, group_t, group_reader_t, variable, var_name, var_integer, var_real, &
+      var_logical, begin_group, next_item, end_group
    use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_point
    use hillstab_batch_group_points, only: points_group, read_points_group
    use hillstab_batch_group_series, only: series_plan_t, series_group, read_series_group
@@ -40,12 +48,15 @@ module hillstab_batch_task_lyapunov
 
    !> Characters in one line of the file.
    integer, parameter :: lyapunov_line_length = 240
-   !> Points per unit of work in the serial task (written as one block).
-   integer, parameter :: lyapunov_unit_size = 64
+   !> Batches of lanes per unit of work in the serial task (written as one block).
+   integer, parameter :: lyapunov_unit_batches = 8
+   !> Most lanes a scene may ask for.
+   integer, parameter :: max_lanes = 256
    !> The columns, by index.
    integer, parameter :: col_alpha = 1, col_beta = 2, col_lyapunov = 3, col_spread = 4, col_stable = 5, &
-      col_lambda_max = 6, col_log_lambda_max = 7, col_max_abs_phi = 8, col_energy_drift = 9, col_periods = 10, &
-      col_status = 11, n_columns = 11
+      col_lambda_max = 6, col_log_lambda_max = 7, col_max_abs_phi = 8, col_energy_drift = 9, col_chaotic = 10, &
+      col_megno = 11, col_fli = 12, col_energy_error = 13, col_integrator = 14, col_periods = 15, col_status = 16, &
+      n_columns = 16
 
    !> The lyapunov task: the pendulum of `&series` over a grid or a list of points.
    type, extends(task_t) :: lyapunov_task_t
@@ -55,6 +66,7 @@ module hillstab_batch_task_lyapunov
       character(len=:), allocatable :: file   !! `&points file`
       real(wp), allocatable :: points(:, :)   !! (2, n) α, β of `&points`
       type(column_t), allocatable :: table(:)  !! the columns of the file
+      type(chaos_options_t) :: chaos          !! integrator and indicators of `&lyapunov`
    contains
       procedure :: read => lyapunov_read
       procedure :: run => lyapunov_run
@@ -111,10 +123,29 @@ contains
    !> The declaration of `&lyapunov`.
    function lyapunov_group() result(group)
       type(group_t) :: group
-      group = new_group("lyapunov", "what the map runs over")
+      type(chaos_options_t) :: defaults
+      group = new_group("lyapunov", "what the map runs over, the integrator and the chaos indicators")
       call group%add("over", var_name, "'chart'", "chart: the grid of &chart (0 < beta < pi^2) | points: the points "// &
-         ""// &
          "of &points")
+      call group%add("integrator", var_name, "'"//chaos_integrator_name(defaults%integrator)//"'", "auto: "// &
+         "symplectic where it holds energy_tolerance, else DOP853 | symplectic (undamped only) | dop853")
+      call group%add("scheme", var_name, "'"//symplectic_scheme_name(defaults%scheme)//"'", "symplectic scheme: "// &
+         "leapfrog | yoshida4 | yoshida6 | blanes_moan4 | blanes_moan6 | mclachlan8")
+      call group%add("steps_per_period", var_integer, integer_text(defaults%steps_per_period), "symplectic steps "// &
+         "per radial period, >= 4; 0: from each orbit's closest pass to the pivot")
+      call group%add("energy_tolerance", var_real, real_text(defaults%energy_tolerance), "largest relative energy "// &
+         "error of a symplectic run, in (0, 0.1]; beyond it the steps double, then (auto) DOP853")
+      call group%add("early_stop", var_logical, ".true.", "stop a point as soon as its verdict is certain")
+      call group%add("megno_chaotic", var_real, real_text(defaults%megno_chaotic), "MEGNO above this at the "// &
+         "end: chaotic (1)")
+      call group%add("megno_regular", var_real, real_text(defaults%megno_regular), "MEGNO below this at the "// &
+         "end: regular (0); between the two: undecided (0.5)")
+      call group%add("megno_stop", var_real, real_text(defaults%megno_stop), "early stop as chaotic once MEGNO "// &
+         "exceeds this plus the start's transient allowance, >= megno_chaotic")
+      call group%add("min_periods", var_integer, integer_text(defaults%min_periods), "no early stop before this "// &
+         "many radial periods, >= 1")
+      call group%add("lanes", var_integer, integer_text(defaults%lanes), "points advanced together, 1 ... "// &
+         integer_text(max_lanes))
    end function lyapunov_group
 
    !> The default grid of the task: the physical domain 0 <= alpha < pi^2, 0 < beta < pi^2
@@ -135,8 +166,12 @@ contains
       type(scene_t), intent(in) :: scene          !! the `&scene` settings
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
       type(group_t) :: group
-      character(len=65536) :: over
-      namelist /lyapunov/ over
+      character(len=65536) :: over, integrator, scheme
+      integer :: steps_per_period, min_periods, lanes
+      real(wp) :: energy_tolerance, megno_chaotic, megno_regular, megno_stop
+      logical :: early_stop
+      namelist /lyapunov/ over, integrator, scheme, steps_per_period, energy_tolerance, early_stop, megno_chaotic, &
+         megno_regular, megno_stop, min_periods, lanes
       type(group_reader_t) :: reader
       allocate (self%groups(3))
       call read_series_group(file, series_group(), scene%model, scene%physical, self%series, self%groups(1), error)
@@ -158,6 +193,8 @@ contains
          call fail(error, file%path, group%name, "over", "unknown value '"//trim(over)//"' (expected chart or points)")
          return
       end select
+      call chaos_settings(error)
+      if (allocated(error)) return
       if (self%over_points) then
          call read_points_group(file, points_group(), scene%model, self%file, self%points, self%groups(3), error)
       else
@@ -166,7 +203,54 @@ contains
       if (allocated(error)) return
       call check_lyapunov_domain(self, file%path, error)
       self%table = lyapunov_columns()
+   contains
+      !> The options of hillstab_pendulum_chaos from the group, checked.
+      subroutine chaos_settings(error)
+         type(error_t), allocatable, intent(out) :: error
+         self%chaos%integrator = chaos_integrator_id(lower_case(trim(adjustl(integrator))))
+         self%chaos%scheme = symplectic_scheme_id(lower_case(trim(adjustl(scheme))))
+         if (self%chaos%integrator < 0) then
+            call fail(error, file%path, group%name, "integrator", "unknown value '"//trim(integrator)// &
+               "' (expected auto, symplectic or dop853)")
+         else if (self%chaos%scheme < 1 .or. self%chaos%scheme > symplectic_scheme_count) then
+            call fail(error, file%path, group%name, "scheme", "unknown value '"//trim(scheme)// &
+               "' (expected leapfrog, yoshida4, yoshida6, blanes_moan4, blanes_moan6 or mclachlan8)")
+         else if (self%chaos%integrator == chaos_symplectic .and. scene%epsilon > 0.0_wp) then
+            call fail(error, file%path, group%name, "integrator", "'symplectic' needs an undamped pendulum, but "// &
+               "&scene epsilon = "//real_text(scene%epsilon)//" (use auto or dop853)")
+         else if (steps_per_period /= 0 .and. (steps_per_period < 4 .or. steps_per_period > 1000000)) then
+            call fail(error, file%path, group%name, "steps_per_period", "must be 0 or lie in [4, 1e6], got "// &
+               integer_text(steps_per_period))
+         else if (.not. (energy_tolerance > 0.0_wp .and. energy_tolerance <= 0.1_wp)) then
+            call fail(error, file%path, group%name, "energy_tolerance", "must lie in (0, 0.1], got "// &
+               real_text(energy_tolerance))
+         else if (.not. (megno_regular > 0.0_wp .and. megno_regular < 1.0e6_wp)) then
+            call fail(error, file%path, group%name, "megno_regular", "must lie in (0, 1e6), got "// &
+               real_text(megno_regular))
+         else if (.not. (megno_chaotic >= megno_regular .and. megno_chaotic < 1.0e6_wp)) then
+            call fail(error, file%path, group%name, "megno_chaotic", "must lie in [megno_regular = "// &
+               real_text(megno_regular)//", 1e6), got "//real_text(megno_chaotic))
+         else if (.not. (megno_stop >= megno_chaotic .and. megno_stop < 1.0e6_wp)) then
+            call fail(error, file%path, group%name, "megno_stop", "must lie in [megno_chaotic = "// &
+               real_text(megno_chaotic)//", 1e6), got "//real_text(megno_stop))
+         else if (min_periods < 1) then
+            call fail(error, file%path, group%name, "min_periods", "must be >= 1, got "//integer_text(min_periods))
+         else if (lanes < 1 .or. lanes > max_lanes) then
+            call fail(error, file%path, group%name, "lanes", "must lie in [1, "//integer_text(max_lanes)// &
+               "], got "//integer_text(lanes))
+         end if
+         if (allocated(error)) return
+         self%chaos%steps_per_period = steps_per_period
+         self%chaos%energy_tolerance = energy_tolerance
+         self%chaos%early_stop = early_stop
+         self%chaos%megno_chaotic = megno_chaotic
+         self%chaos%megno_regular = megno_regular
+         self%chaos%megno_stop = megno_stop
+         self%chaos%min_periods = min_periods
+         self%chaos%lanes = lanes
+      end subroutine chaos_settings
    end subroutine lyapunov_read
+
 
    !> The lyapunov task integrates the pendulum: every point must lie in the physical
    !> domain 0 <= alpha < pi^2, 0 < beta < pi^2.
@@ -208,8 +292,8 @@ contains
       type(column_t) :: table(n_columns)
       table(col_alpha) = column_t("alpha", "", "alpha of the point", style_e17, 0.0_wp, .true.)
       table(col_beta) = column_t("beta", "", "beta of the point", style_e17, 0.0_wp, .true.)
-      table(col_lyapunov) = column_t("lyapunov", "", "largest Lyapunov exponent per radial period (Benettin: one "// &
-         "tangent vector, renormalised every period)", style_e11, 0.0_wp)
+      table(col_lyapunov) = column_t("lyapunov", "", "finite-time largest Lyapunov exponent per radial period "// &
+         "over the periods integrated (Benettin: one tangent vector, renormalised every period)", style_e11, 0.0_wp)
       table(col_spread) = column_t("spread", "", "max - min of the running estimate over the last half of the "// &
          "periods (error indication; a regular orbit decays like ln n/n)", style_e4, -1.0_wp)
       table(col_stable) = column_t("stable", "", "the chart's linear verdict for the swing about the bounce "// &
@@ -221,9 +305,19 @@ contains
       table(col_max_abs_phi) = column_t("max_abs_phi", "rad", "largest |phi| at the integrator's steps", style_e7, &
          -1.0_wp)
       table(col_energy_drift) = column_t("energy_drift", "", "|E(end) - E(0)| over the sum of the energy terms' "// &
-         "magnitudes", style_e4, -1.0_wp)
-      table(col_periods) = column_t("periods", "", "radial periods integrated (fewer than asked only on a failed "// &
-         "point)", style_integer, 0.0_wp, .true.)
+         "magnitudes at the start", style_e4, -1.0_wp)
+      table(col_chaotic) = column_t("chaotic", "", "verdict: 1 chaotic, 0 regular, 0.5 undecided (the rule in "// &
+         "the header)", style_flag, -1.0_wp)
+      table(col_megno) = column_t("megno", "", "MEGNO <Y> at the end: -> 2 on quasi-periodic orbits, -> 0 on "// &
+         "stable periodic ones, ~ lyapunov t/2 on chaotic ones (t in radial periods)", style_e7, 0.0_wp)
+      table(col_fli) = column_t("fli", "", "fast Lyapunov indicator: largest ln|delta| at the period ends, "// &
+         "|delta(0)| = 1", style_e7, 0.0_wp)
+      table(col_energy_error) = column_t("energy_error", "", "largest |E - E(0)| at the integrator's steps, on "// &
+         "the scale of energy_drift", style_e4, -1.0_wp)
+      table(col_integrator) = column_t("integrator", "", "the integrator that ran: 1 symplectic tangent map, "// &
+         "2 DOP853", style_integer, 0.0_wp)
+      table(col_periods) = column_t("periods", "", "radial periods integrated (fewer than asked when the "// &
+         "verdict was certain early, or on a failed point)", style_integer, 0.0_wp, .true.)
       table(col_status) = column_t("status", "", "0 ok; 1 the chart's value only round-off limited; 2 failed "// &
          "(placeholders)", style_flag, real(status_failed, wp))
    end function lyapunov_columns
@@ -252,11 +346,15 @@ contains
       end if
    end function lyapunov_point_count
 
-   !> A point is hundreds of radial periods (~10 ms to 1 s): small units balance well.
+   !> A point is up to thousands of radial periods (~1 ms to 1 s; points whose verdict is
+   !> certain early cost far less): units of whole batches of lanes, 1 to 16 batches, about
+   !> 8 units per worker at least.
    pure integer function lyapunov_unit_size_of(self, n_workers) result(size)
       class(lyapunov_task_t), intent(in) :: self  !! the task
       integer, intent(in) :: n_workers   !! processes computing units
-      size = int(max(1_int64, min(16_int64, self%point_count()/(32*max(1, n_workers)))))
+      integer(int64) :: batches
+      batches = (self%point_count() + self%chaos%lanes - 1)/self%chaos%lanes
+      size = self%chaos%lanes*int(max(1_int64, min(16_int64, batches/(8*max(1, n_workers)))))
    end function lyapunov_unit_size_of
 
    !> (α, β) of point k.
@@ -280,76 +378,142 @@ contains
       new_block = mod(k - 1, int(self%grid%n_beta, int64)) == 0 .and. k > self%grid%n_beta
    end function new_block
 
-   !> Header lines: version, the effective scene, what the columns mean.
+   !> Header lines: version, the effective scene, the integrator, the verdict's rule, what
+   !> the columns mean.
    function lyapunov_header(self, scene) result(lines)
       class(lyapunov_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
       character(len=:), allocatable :: lines(:)
-      character(len=240) :: text(16)
+      character(len=400) :: text(16)
       integer :: n
       n = 0
       n = n + 1; text(n) = "each point: the pendulum at (alpha, beta) with r0, g of &series, started at phi0 (eq. (38)), "// &
-         integer_text(self%series%periods)//" radial periods by DOP853 at tolerance "// &
-         real_text(scene%method%tolerance)
-      n = n + 1; text(n) = "lyapunov: largest Lyapunov exponent per radial period (Benettin: one tangent vector, "// &
-         "renormalised every period)"
+         integer_text(self%series%periods)//" radial periods"
+      if (self%chaos%early_stop) text(n) = trim(text(n))//" at most, stopped as soon as the verdict is certain"
+      n = n + 1; text(n) = chaos_method_text(self%chaos, scene%method%tolerance)
+      n = n + 1; text(n) = chaos_verdict_rule(self%chaos)
+      n = n + 1; text(n) = "lyapunov: finite-time largest Lyapunov exponent per radial period (Benettin: one tangent "// &
+         "vector, renormalised every period)"
       n = n + 1; text(n) = "spread: max - min of the running estimate over the last half of the periods "// &
          "(error indication; a regular orbit decays like ln n/n)"
+      n = n + 1; text(n) = "megno: MEGNO <Y> -> 2 quasi-periodic, -> 0 stable periodic, ~ lyapunov t/2 chaotic; fli: "// &
+         "largest ln|delta| at the period ends (|delta(0)| = 1)"
       n = n + 1; text(n) = "stable, lambda_max: the chart's linear verdict for the swing about the bounce (method "// &
          method_name(scene%method%kind)//"; stable 0.5: marginal, as in charts), log_lambda_max = ln(lambda_max) per "// &
          "radial period (compare lyapunov)"
-      n = n + 1; text(n) = "max_abs_phi: largest |phi| [rad] at the integrator's steps; energy_drift: |E(end) - E(0)| "// &
-         "over the sum of the energy terms' magnitudes"
-      n = n + 1; text(n) = "status: 0 ok; 1 the chart's value only round-off limited; 2 failed (lyapunov = 0, spread = "// &
-         "-1, stable = -1, lambda_max = -1, log_lambda_max = 0, max_abs_phi = -1, energy_drift = -1: placeholders)"
-      n = n + 1; text(n) = "periods: radial periods integrated (fewer than asked only on a failed point)"
+      n = n + 1; text(n) = "max_abs_phi: largest |phi| [rad] at the integrator's steps; energy_drift, energy_error: "// &
+         "|E - E(0)| at the end, largest at the steps, over the energy terms' magnitudes at t = 0"
+      n = n + 1; text(n) = "integrator: 1 symplectic tangent map, 2 DOP853; periods: radial periods integrated (fewer "// &
+         "than asked when the verdict was certain early)"
+      n = n + 1; text(n) = "status: 0 ok; 1 the chart's value only round-off limited; 2 failed (placeholders, below)"
+      n = n + 1; text(n) = "failed rows: "//placeholders_text(self%table)
       if (scene%epsilon > 0.0_wp) then
          n = n + 1; text(n) = "damping epsilon = "//real_text(scene%epsilon)//": stable is |S1| < 2 cosh(epsilon), "// &
-            "lambda_max includes exp(-epsilon)"
+            "lambda_max includes exp(-epsilon); DOP853 at every point; energy_drift is the energy lost"
       end if
-      lines = scene_header(scene, "hillstab "//version_string//": largest Lyapunov exponent of the nonlinear "// &
+      lines = scene_header(scene, "hillstab "//version_string//": chaos indicators of the nonlinear "// &
                            "elastic pendulum", text(:n))
    end function lyapunov_header
 
-   !> The line of one point and its status.
-   subroutine lyapunov_point_line(self, scene, alpha, beta, line, status)
+   !> "lyapunov = 0, spread = -1, ...": the placeholders of a failed row, in the columns' styles.
+   function placeholders_text(table) result(text)
+      type(column_t), intent(in) :: table(:)
+      character(len=:), allocatable :: text
+      character(len=48) :: field
+      integer :: k, pos
+      text = ""
+      do k = 1, size(table)
+         if (table(k)%keep_on_failure .or. k == col_status) cycle
+         pos = 0
+         call put_row(table(k:k), [1], [table(k)%placeholder], field, pos)
+         if (len(text) > 0) text = text//", "
+         text = text//table(k)%name//" = "//trim(adjustl(field(:pos)))
+      end do
+   end function placeholders_text
+
+   !> The lines and statuses of the points lo … hi, one batch: the orbits advanced together
+   !> by chaos_indicators_batch, then each point's linear verdict.
+   subroutine lyapunov_batch(self, scene, lo, hi, lines, statuses)
       class(lyapunov_task_t), intent(in) :: self
       type(scene_t), intent(in) :: scene
-      real(wp), intent(in) :: alpha, beta
+      integer(int64), intent(in) :: lo, hi
+      character(len=lyapunov_line_length), intent(out) :: lines(lo:hi)
+      integer, intent(out) :: statuses(lo:hi)
+      type(pendulum_t) :: pendula(hi - lo + 1)
+      real(wp) :: y0(4, hi - lo + 1), point(2, hi - lo + 1)
+      type(chaos_t), allocatable :: results(:)
+      integer :: slot(hi - lo + 1)
+      type(error_t), allocatable :: error
+      integer :: m, j
+      integer(int64) :: k
+      m = 0
+      do k = lo, hi
+         j = int(k - lo) + 1
+         point(:, j) = self%point_of(k)
+         slot(j) = 0
+         call pendulum_from_chart(point(1, j), point(2, j), scene%epsilon, self%series%r0, self%series%g, &
+            pendula(m + 1), error)
+         if (allocated(error)) then
+            deallocate (error)
+            cycle
+         end if
+         m = m + 1
+         slot(j) = m
+         y0(:, m) = pendulum_initial_state(pendula(m), self%series%phi0, self%series%vx0, self%series%vz0)
+      end do
+      allocate (results(m))
+      if (m > 0) call chaos_indicators_batch(pendula(:m), y0(:, :m), self%series%periods, scene%method%tolerance, &
+                                             self%chaos, results)
+      do k = lo, hi
+         j = int(k - lo) + 1
+         if (slot(j) == 0) then
+            call point_line(self, scene, point(:, j), chaos_t(), .false., lines(k), statuses(k))
+         else
+            call point_line(self, scene, point(:, j), results(slot(j)), .true., lines(k), statuses(k))
+         end if
+      end do
+   end subroutine lyapunov_batch
+
+   !> The line of one point from its orbit's indicators (`integrated` false: the pendulum
+   !> could not be set up), with the chart's linear verdict; its status.
+   subroutine point_line(self, scene, point, result, integrated, line, status)
+      class(lyapunov_task_t), intent(in) :: self
+      type(scene_t), intent(in) :: scene
+      real(wp), intent(in) :: point(2)
+      type(chaos_t), intent(in) :: result
+      logical, intent(in) :: integrated
       character(len=lyapunov_line_length), intent(out) :: line
       integer, intent(out) :: status
-      type(pendulum_t) :: p
-      type(lyapunov_t) :: result
       type(error_t), allocatable :: error
       type(trace_t) :: tr
       type(floquet_t) :: f
       real(wp) :: v(n_columns)
       integer :: pos
+      logical :: failed
       status = status_ok
       v = 0.0_wp
-      v(col_alpha) = alpha
-      v(col_beta) = beta
-      call pendulum_from_chart(alpha, beta, scene%epsilon, self%series%r0, self%series%g, p, error)
-      if (.not. allocated(error)) then
-         call lyapunov_largest(p, pendulum_initial_state(p, self%series%phi0, self%series%vx0, self%series%vz0), &
-            self%series%periods, scene%method%tolerance, result, error)
-      end if
-      if (.not. allocated(error)) then
-         call monodromy_trace(hill_model_t(scene%model, alpha, beta, scene%epsilon), scene%method, tr, error)
+      v(col_alpha) = point(1)
+      v(col_beta) = point(2)
+      failed = .not. integrated
+      if (.not. failed) failed = allocated(result%error)
+      if (.not. failed) then
+         call monodromy_trace(hill_model_t(scene%model, point(1), point(2), scene%epsilon), scene%method, tr, error)
          if (allocated(error)) then
             if (error%code == err_accuracy) then
                deallocate (error)
                status = status_roundoff
+            else
+               failed = .true.
             end if
          end if
       end if
       v(col_periods) = real(result%periods, wp)
-      if (allocated(error)) then
+      if (failed) then
          status = status_failed
          call failed_row(self%table, v)
       else
          f = floquet_from_trace(tr, scene%epsilon)
-         v(col_lyapunov) = result%exponent
+         v(col_lyapunov) = result%lyapunov
          v(col_spread) = result%spread
          v(col_stable) = merge(1.0_wp, 0.0_wp, f%stable)
          ! |S| within its error bound of the threshold: as the chart writes it
@@ -358,15 +522,21 @@ contains
          v(col_log_lambda_max) = f%exponent*2.0_wp + 0.0_wp
          v(col_max_abs_phi) = result%max_abs_phi
          v(col_energy_drift) = result%energy_drift
+         v(col_chaotic) = result%chaotic
+         v(col_megno) = result%megno
+         v(col_fli) = result%fli
+         v(col_energy_error) = result%energy_error
+         v(col_integrator) = real(merge(1, 2, result%integrator == chaos_symplectic), wp)
          v(col_status) = real(status, wp)
       end if
       pos = 0
       call put_row(self%table, all_columns(self%table), v, line, pos)
       line(pos + 1:) = ""
-   end subroutine lyapunov_point_line
+   end subroutine point_line
 
-   !> Lines and statuses of the points first … last (in parallel), and the text the file
-   !> holds for them: the lines joined, a blank line before each new α block.
+   !> Lines and statuses of the points first … last, and the text the file holds for them:
+   !> the lines joined, a blank line before each new α block. The points go in batches of
+   !> `lanes` that start at fixed indices (1, 1 + lanes, …), the batches in parallel.
    subroutine lyapunov_lines(self, scene, first, last, text, statuses)
       class(lyapunov_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
@@ -375,14 +545,17 @@ contains
       integer, intent(out) :: statuses(first:last)       !! per point
       character(len=lyapunov_line_length), allocatable :: lines(:)
       logical, allocatable :: breaks(:)
-      real(wp) :: point(2)
-      integer(int64) :: k
+      integer(int64) :: k, b, lanes, lo, hi
       allocate (lines(first:last), breaks(first:last))
-      !$omp parallel do schedule(dynamic) default(shared) private(k, point)
+      lanes = self%chaos%lanes
       do k = first, last
-         point = self%point_of(k)
          breaks(k) = new_block(self, k)
-         call lyapunov_point_line(self, scene, point(1), point(2), lines(k), statuses(k))
+      end do
+      !$omp parallel do schedule(dynamic) default(shared) private(b, lo, hi)
+      do b = (first - 1)/lanes, (last - 1)/lanes
+         lo = max(first, b*lanes + 1)
+         hi = min(last, (b + 1)*lanes)
+         call lyapunov_batch(self, scene, lo, hi, lines(lo:hi), statuses(lo:hi))
       end do
       !$omp end parallel do
       text = joined_lines(lines, .false., breaks)
@@ -402,7 +575,7 @@ contains
          "; first at alpha = "//real_text(first(1))//", beta = "//real_text(first(2)))
    end subroutine lyapunov_failure_error
 
-   !> The lyapunov task, in this process: units of `lyapunov_unit_size` points computed
+   !> The lyapunov task, in this process: units of `lyapunov_unit_batches` batches of lanes computed
    !> in parallel and written in order.
    subroutine lyapunov_run(self, scene, quiet, error)
       class(lyapunov_task_t), intent(in) :: self  !! the task
@@ -424,7 +597,7 @@ contains
       call progress_begin(progress, n, quiet)
       first = 1
       do while (first <= n .and. .not. allocated(error))
-         last = min(n, first + lyapunov_unit_size - 1)
+         last = min(n, first + lyapunov_unit_batches*self%chaos%lanes - 1)
          allocate (statuses(first:last))
          call lyapunov_lines(self, scene, first, last, text, statuses)
          call write_text(file, text, error)

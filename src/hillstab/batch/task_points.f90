@@ -5,7 +5,7 @@
 !> err_points_failed. The task also runs in units of consecutive points.
 module hillstab_batch_task_points
    use hillstab_core_kinds, only: wp, int64, pi
-   use hillstab_core_error, only: error_t
+   use hillstab_core_error, only: error_t, set_error, err_input
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_core_text, only: integer_text
    use hillstab_hill_coefficient, only: in_physical_domain
@@ -20,7 +20,7 @@ module hillstab_batch_task_points
       header_bytes, text_row_bytes, binary_row_bytes
    use hillstab_batch_columns, only: columns_text
    use hillstab_batch_output, only: output_file_t, finish_output, write_header, write_text, write_records, &
-      joined_lines
+      joined_lines, discard_output
    use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
    implicit none
    private
@@ -35,6 +35,7 @@ module hillstab_batch_task_points
       procedure :: run => points_run
       procedure :: declarations => points_declarations
       procedure :: estimated_bytes => points_estimated_bytes
+      procedure :: memory_bytes => points_memory_bytes
       procedure :: size_variables => points_size_variables
       procedure :: point_count => points_point_count
       procedure :: unit_size => points_unit_size
@@ -108,6 +109,15 @@ contains
       bytes = header_bytes + int(size(self%points, 2), int64)*merge(binary_row_bytes, text_row_bytes, scene%binary)
    end function points_estimated_bytes
 
+   !> Every point's line, status and values at once and their text joined for the writer,
+   !> beside the points themselves.
+   function points_memory_bytes(self, scene) result(bytes)
+      class(points_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      bytes = int(size(self%points, 2), int64)*(2*chart_line_length + 4 + 8*n_chart_columns + 16)
+   end function points_memory_bytes
+
    !> Whether some point lies outside the physical domain.
    pure logical function outside(self)
       class(points_task_t), intent(in) :: self
@@ -167,7 +177,13 @@ contains
       if (allocated(error)) return
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
-      allocate (lines(n), statuses(n), values(size(ids), n))
+      allocate (lines(n), statuses(n), values(size(ids), n), stat=k)
+      if (k /= 0) then
+         call discard_output(file)
+         call set_error(error, err_input, scene%source//": &points: file: the buffers of "//integer_text(n)// &
+            " points cannot be allocated (out of memory)")
+         return
+      end if
       statuses = status_ok
       call progress_begin(progress, int(n, int64), quiet)
       call compute_points(self, scene, 1, n, lines, statuses, values)

@@ -13,7 +13,7 @@ module hillstab_batch_tasks
    use hillstab_core_error, only: error_t, err_points_failed
    use hillstab_batch_scene, only: scene_t, output_path
    use hillstab_batch_scene_read, only: read_scene
-   use hillstab_batch_limits, only: check_output_room
+   use hillstab_batch_limits, only: check_output_room, check_memory_room
    implicit none
    private
    public :: run_scene_file, run_scene, output_path
@@ -43,6 +43,9 @@ contains
       type(error_t), allocatable, intent(out) :: error  !! what failed (err_points_failed: written with failed points)
       ! an output that cannot fit where it goes is refused before any work
       call check_output_room(scene, output_path(scene), error)
+      if (allocated(error)) return
+      ! as are buffers that would not fit in memory
+      call check_memory_room(scene, error)
       if (allocated(error)) return
       call scene%task%run(scene, quiet, error)
    end subroutine run_scene

@@ -32,15 +32,16 @@
 !>```
 module hillstab_batch_units
    use hillstab_core_kinds, only: wp, int64
+   use, intrinsic :: iso_fortran_env, only: int32
    use hillstab_core_error, only: error_t, set_error, err_input
    use hillstab_core_status, only: status_roundoff, status_failed
-   use hillstab_batch_scene, only: scene_t, task_t, open_scene_output
+   use hillstab_batch_scene, only: scene_t, task_t, open_scene_output, scene_namelist
    use hillstab_batch_output, only: output_file_t, write_text, commit_output, discard_output
    use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
    implicit none
    private
    public :: batch_t, batch_result_t, batch_distributable, batch_plan, batch_unit_range, batch_compute, &
-      batch_open, batch_write, batch_commit, batch_discard, run_batch
+      batch_open, batch_write, batch_commit, batch_discard, run_batch, scene_fingerprint
 
    !> A scene's work cut into units, and the state of its output file.
    type :: batch_t
@@ -90,6 +91,44 @@ contains
       call task%prepare_units(scene)
       call move_alloc(task, batch%scene%task)
    end subroutine batch_plan
+
+   !> Two 32-bit FNV-1a hashes (different offset bases) of what a run computes: the
+   !> effective scene's namelist lines and, for a distributable scene, every point's
+   !> (α, β). Processes that read the same scene and points get the same pair; a scene
+   !> or points file that differs between them (another working directory, a file edited
+   !> between the starts) gives another pair.
+   function scene_fingerprint(scene) result(hash)
+      type(scene_t), intent(in) :: scene  !! a scene as read
+      integer(int64) :: hash(2)
+      integer(int64), parameter :: prime = 16777619_int64, modulus = 4294967296_int64
+      character(len=:), allocatable :: lines(:)
+      integer(int32) :: words(4)
+      real(wp) :: point(2)
+      integer(int64) :: k
+      integer :: i, j
+      hash = [2166136261_int64, 84696351_int64]
+      lines = scene_namelist(scene)
+      do i = 1, size(lines)
+         do j = 1, len_trim(lines(i))
+            call mix(int(iachar(lines(i)(j:j)), int64))
+         end do
+         call mix(10_int64)
+      end do
+      if (batch_distributable(scene)) then
+         do k = 1, scene%task%point_count()
+            point = scene%task%point_of(k)
+            words = transfer(point, words)
+            do j = 1, 4
+               call mix(int(words(j), int64) + 2147483648_int64)
+            end do
+         end do
+      end if
+   contains
+      pure subroutine mix(value)
+         integer(int64), intent(in) :: value  !! in [0, 2^32)
+         hash = mod(ieor(hash, value)*prime, modulus)
+      end subroutine mix
+   end function scene_fingerprint
 
    !> The points of `unit`, as indices first … last in the scene's order (a chart's
    !> points numbered row by row).

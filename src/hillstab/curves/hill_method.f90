@@ -15,7 +15,7 @@
 !> the Mathieu naming; the instability tongue of order n ≥ 1 lies between a_n and
 !> b_n, and has zero width (coexistence of two periodic solutions) when they agree.
 !>
-!> ## Formulation (chosen by measurement, see the README)
+!> ## Formulation (chosen by measurement, see the guide page *Transition curves*)
 !> In the Fourier basis L is tridiagonal but not symmetric. Writing x = p z with
 !> p = 1 − k cos πτ > 0 turns L x = β x into the symmetric-definite pencil
 !>
@@ -31,7 +31,7 @@
 !>     P z = μ (A − σP) z,   β = σ + 1/μ,   σ = −|α| − 1 < every eigenvalue,
 !>
 !> in which A − σP is positive definite and the wanted small β are the largest μ
-!> (in practice the two pencils come out within a factor 2 of each other). Measured (`make bench`, README "Transition curves"): on the antiperiodic curves
+!> (in practice the two pencils come out within a factor 2 of each other). Measured (`make bench`, guide page *Transition curves*): on the antiperiodic curves
 !> 10 < β < 40 against bisection on S by method auto at tolerance 1e-13, the largest
 !> error is 1.5e-12 / 2.3e-12 / 1.6e-10 at α = 9.5 / 9.8 / 9.86 for the inverted
 !> pencil, 1.2e-12 / 5.6e-12 / 2.7e-10 for the direct pencil and 6.9e-11 / 3.3e-10 /

@@ -1,5 +1,5 @@
 !> Interfaces of the C library and POSIX routines hillstab calls, declared once: files
-!> (stdio streams, rename, remove, unlink, fsync), errno and its message, the process id,
+!> (stdio streams, mkstemp, fdopen, fchmod, umask, rename, remove, unlink, fsync), errno and its message, the process id,
 !> signals, whether a descriptor is a terminal, free space (statvfs). Bindings only: the
 !> writers (hillstab_batch_output), the signal cleanup (hillstab_batch_signals), the
 !> resource limits (hillstab_batch_limits) and the progress line use them; `remove_file` and
@@ -7,7 +7,7 @@
 !>
 !>```fortran
 !> integer(c_int) :: status
-!> status = c_rename(c_string("a.part"), c_string("a"))
+!> status = c_rename(c_string("a.part"), c_string("a"))   ! rename(2): 0 on success
 !> if (status /= 0) print '(a)', errno_text()
 !>```
 module hillstab_ffi_libc
@@ -15,9 +15,28 @@ module hillstab_ffi_libc
       c_f_pointer
    implicit none
    private
+   public :: c_mkstemp, c_fdopen, c_fchmod, c_umask, c_close, c_getrlimit, rlimit_t, rlimit_as, c_getpagesize
    public :: c_rename, c_remove, c_unlink, c_getpid, c_fopen, c_fwrite, c_fwrite_raw, c_fflush, c_fclose, c_fileno, &
       c_fsync, c_signal, c_exit_now, c_isatty, c_statvfs, statvfs_t
-   public :: errno_text, set_errno, c_string, remove_file, is_directory
+   public :: errno_text, set_errno, c_string, remove_file, is_directory, is_special_file
+
+   !> RLIMIT_AS (Linux): the largest address space of the process.
+   integer(c_int), parameter :: rlimit_as = 9
+
+   !> struct rlimit on 64-bit Linux (RLIM_INFINITY is all ones: -1 here).
+   type, bind(C) :: rlimit_t
+      integer(c_long) :: cur  !! soft limit
+      integer(c_long) :: max  !! hard limit
+   end type rlimit_t
+
+   !> struct stat on x86-64 Linux (144 bytes).
+   type, bind(C) :: stat_t
+      integer(c_long) :: dev, ino, nlink
+      integer(c_int) :: mode, uid, gid, pad
+      integer(c_long) :: rdev, size, blksize, blocks
+      integer(c_long) :: times(6)
+      integer(c_long) :: reserved(3)
+   end type stat_t
 
    !> struct statvfs on 64-bit Linux.
    type, bind(C) :: statvfs_t
@@ -36,6 +55,58 @@ module hillstab_ffi_libc
    end type statvfs_t
 
    interface
+      !> mkstemp(3): create and open a new file from `template` (ending in XXXXXX, replaced in
+      !> place by an unpredictable suffix) with O_CREAT | O_EXCL, mode 0600; the descriptor,
+      !> or -1. O_EXCL: nothing placed at the name, a symbolic link included, is opened.
+      function c_mkstemp(template) bind(C, name="mkstemp") result(fd)
+         import :: c_int, c_char
+         character(kind=c_char), intent(inout) :: template(*)
+         integer(c_int) :: fd
+      end function c_mkstemp
+      !> fdopen(3): a stdio stream on an open descriptor (NULL on failure).
+      function c_fdopen(fd, mode) bind(C, name="fdopen") result(stream)
+         import :: c_int, c_char, c_ptr
+         integer(c_int), value :: fd
+         character(kind=c_char), intent(in) :: mode(*)
+         type(c_ptr) :: stream
+      end function c_fdopen
+      !> fchmod(2): 0 on success.
+      function c_fchmod(fd, mode) bind(C, name="fchmod") result(status)
+         import :: c_int
+         integer(c_int), value :: fd, mode
+         integer(c_int) :: status
+      end function c_fchmod
+      !> umask(2): set the file mode creation mask, return the previous one.
+      function c_umask(mask) bind(C, name="umask") result(previous)
+         import :: c_int
+         integer(c_int), value :: mask
+         integer(c_int) :: previous
+      end function c_umask
+      !> getrlimit(2): 0 on success.
+      function c_getrlimit(resource, limit) bind(C, name="getrlimit") result(status)
+         import :: c_int, rlimit_t
+         integer(c_int), value :: resource
+         type(rlimit_t), intent(out) :: limit
+         integer(c_int) :: status
+      end function c_getrlimit
+      !> getpagesize(2): bytes in a memory page.
+      function c_getpagesize() bind(C, name="getpagesize") result(bytes)
+         import :: c_int
+         integer(c_int) :: bytes
+      end function c_getpagesize
+      !> stat(2): 0 on success (follows symbolic links).
+      function c_stat(path, info) bind(C, name="stat") result(status)
+         import :: c_int, c_char, stat_t
+         character(kind=c_char), intent(in) :: path(*)
+         type(stat_t), intent(out) :: info
+         integer(c_int) :: status
+      end function c_stat
+      !> close(2).
+      function c_close(fd) bind(C, name="close") result(status)
+         import :: c_int
+         integer(c_int), value :: fd
+         integer(c_int) :: status
+      end function c_close
       !> rename(2): 0 on success.
       function c_rename(old, new) bind(C, name="rename") result(status)
          import :: c_int, c_char
@@ -193,6 +264,19 @@ contains
       integer(c_int) :: status
       status = c_remove(c_string(path))
    end subroutine remove_file
+
+   !> Whether `path` names an existing file that is neither a regular file nor a directory
+   !> (a FIFO, a device, a socket): opening one to read may block forever or never end.
+   logical function is_special_file(path)
+      character(len=*), intent(in) :: path  !! any path
+      type(stat_t) :: info
+      integer(c_int), parameter :: type_mask = int(o'170000', c_int), regular = int(o'100000', c_int), &
+         directory = int(o'040000', c_int)
+      is_special_file = .false.
+      if (len(path) == 0) return
+      if (c_stat(c_string(path), info) /= 0) return
+      is_special_file = iand(info%mode, type_mask) /= regular .and. iand(info%mode, type_mask) /= directory
+   end function is_special_file
 
    !> Whether `path` names an existing directory.
    logical function is_directory(path)

@@ -1,7 +1,7 @@
 !> Mathieu characteristic values a_n(q), b_n(q) by GSL (`gsl_sf_mathieu_a_e/_b_e`) and
 !> the transition curves of the paper's Mathieu form q(τ) = β − ν cos πτ (A1): with
 !> z = πτ/2 it is y'' + (a − 2q cos 2z) y = 0, a = 4β/π², q = 2ν/π², so the curves are
-!> β = (π²/4) a_n(2ν/π²) and β = (π²/4) b_n(2ν/π²) (BRIEF §5). `mathieu_witness` gives
+!> β = (π²/4) a_n(2ν/π²) and β = (π²/4) b_n(2ν/π²) (the Mathieu equation in its standard form). `mathieu_witness` gives
 !> that β where GSL is trusted, as the independent witness of the Mathieu chart's curves.
 !>
 !> GSL's abort-on-error handler is switched off before every call and its status is

@@ -2,7 +2,7 @@
 !>
 !>     Q(τ) = (β − α cos πτ)/(1 − k cos πτ) = π² + (β − π²) w(τ),   w = 1/(1 − k cos πτ),  k = α/π²,
 !>
-!> the exact linearisation of the swing about the vertical bounce (BRIEF §2), for
+!> the exact linearisation of the swing about the vertical bounce (the paper's eq. (20)), for
 !> 0 ≤ α < π² (a < ρ). Every quantity the methods need of this model is here, without
 !> the damping shift −ε²/4 of eq. (47) (added by hillstab_hill_models, where the models
 !> are registered): Q, its exact segment means, the split q = c₀ + c₁ w that method auto
@@ -124,7 +124,7 @@ contains
    end function inverse_cos_integral
 
    !> Exact mean of Q over [tau_a, tau_b] (tau_b − tau_a ≤ 2, one period at most): the
-   !> integral of 1/(1 − k cos θ) is elementary (BRIEF §3), `inverse_cos_integral`.
+   !> integral of 1/(1 − k cos θ) is elementary, `inverse_cos_integral`.
    pure real(wp) function elastic_segment_mean(alpha, beta, tau_a, tau_b) result(q)
       real(wp), intent(in), value :: alpha, beta    !! the chart point
       real(wp), intent(in), value :: tau_a, tau_b   !! segment ends, tau_a < tau_b ≤ tau_a + 2

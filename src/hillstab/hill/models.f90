@@ -247,7 +247,7 @@ contains
       q = q + damping_shift(model%epsilon)
    end function hill_coefficient
 
-   !> Exact mean of q over [tau_a, tau_b] (closed form; BRIEF §3).
+   !> Exact mean of q over [tau_a, tau_b] (closed form).
    pure real(wp) function segment_average(model, tau_a, tau_b) result(q)
       type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
       real(wp), intent(in) :: tau_a, tau_b  !! segment ends, tau_a < tau_b

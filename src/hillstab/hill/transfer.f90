@@ -24,7 +24,7 @@ module hillstab_hill_transfer
    public :: monodromy_from_half_period
 
    !> Full-period monodromy of an even coefficient from the half-period propagator
-   !> Φ(1) = [[u, v], [u', v']] (BRIEF §4): M = [[u v' + u' v, 2 v v'], [2 u u', u v' + u' v]].
+   !> Φ(1) = [[u, v], [u', v']] (Floquet theory of the even coefficient): M = [[u v' + u' v, 2 v v'], [2 u u', u v' + u' v]].
    interface monodromy_from_half_period
       module procedure monodromy_from_half_period_scaled
       module procedure monodromy_from_half_period_columns

@@ -3,7 +3,7 @@
 !>
 !> - Constant coefficient (α = 0): one exact transfer matrix, no error at all.
 !> - Otherwise: sixth-order Magnus on the half period [0, 1] (the even symmetry of
-!>   Q, BRIEF §4) on a mesh that is uniform in a Kepler-type variable ψ,
+!>   Q, Floquet theory) on a mesh that is uniform in a Kepler-type variable ψ,
 !>   tan(πτ/2) = √((1 − κ)/(1 + κ)) tan(πψ/2), κ = 1 − (1 − α/π²)^0.35, which
 !>   packs steps into the dip of Q at τ = 0 whose width shrinks like √(1 − α/π²).
 !>   The step count comes from a calibrated a-priori model; the error is then
@@ -669,7 +669,7 @@ contains
          end if
       end do
       do l = 1, size(c0)
-         ! S = 2(u v' + u' v) from Φ(1) = [[u, v], [u', v']] (BRIEF §4)
+         ! S = 2(u v' + u' v) from Φ(1) = [[u, v], [u', v']] (Floquet theory)
          traces(l) = trace_from_scaled(2.0_wp*(p11(l)*p22(l) + p21(l)*p12(l)), 2.0_wp*log_scale(l))
          if (peak(l) > 0.0_wp) log_peak(l) = max(log_peak(l), log(peak(l)) + 2.0_wp*log_scale(l))
          floors(l) = roundoff_level(log_peak(l), traces(l)%log_abs, mesh%n_steps, phases(l))

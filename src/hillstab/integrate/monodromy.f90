@@ -19,7 +19,7 @@
 module hillstab_integrate_monodromy
    use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
-   use hillstab_core_text, only: name_position, alternatives_text
+   use hillstab_core_text, only: name_position, alternatives_text, integer_text
    use hillstab_hill_coefficient, only: hill_model_t, check_model, sampling_endpoint, sampling_count
    use hillstab_hill_transfer, only: scaled_matrix_t, multiply_matrix, trace_t
    use hillstab_hill_formulas, only: trace_formula
@@ -37,7 +37,12 @@ module hillstab_integrate_monodromy
       method_uses_segments, method_gives_estimate, method_batches_rows, method_cost_grows, method_pieces, &
       max_integrated_magnitude
    public :: monodromy_segmented, trace_segmented, swing_monodromy, monodromy_trace, monodromy_trace_batch
-   public :: batch_plan_t, prepare_batch
+   public :: batch_plan_t, prepare_batch, max_segments
+
+   !> Largest `n_segments` of method segments, for every caller (scenes, the C and
+   !> FORTRAN 77 entry points): it bounds the work and the memory of one point (the
+   !> pieces' coefficients are n_segments numbers).
+   integer, parameter :: max_segments = 100000
 
    integer, parameter :: method_auto = 0     !! cheapest exact method meeting the tolerance
    integer, parameter :: method_formula = 1  !! the paper's closed forms, eq. (37)/(48)/(A3)
@@ -228,8 +233,9 @@ contains
          tr = trace_formula(model)
          work = work_stats_t(2, 0, 2)
       case (method_segments)
-         if (method%n_segments < 1) then
-            call set_error(error, err_invalid_parameter, "n_segments must be >= 1")
+         if (method%n_segments < 1 .or. method%n_segments > max_segments) then
+            call set_error(error, err_invalid_parameter, "n_segments must lie in [1, 100000], got "// &
+               integer_text(method%n_segments))
             return
          end if
          if (method%sampling < 1 .or. method%sampling > sampling_count) then

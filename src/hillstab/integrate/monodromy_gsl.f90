@@ -1,6 +1,6 @@
 !> The one-period monodromy of the χ equation (47) by GSL's odeiv2 stepper with the
 !> Prince–Dormand 8(7) pair `rk8pd` (method `gsl`), using the even symmetry of Q: the
-!> even and odd solutions u, v are integrated on [0, 1] only (BRIEF §4). The bindings
+!> even and odd solutions u, v are integrated on [0, 1] only (Floquet theory: S = 2(u v' + u' v)). The bindings
 !> are those of `hillstab_ffi_gsl`.
 !>
 !> GSL's default error handler aborts the program; every entry point here first
@@ -22,7 +22,7 @@
 !> loop is run here (`integrate_pair`) so that every step is exact in time (GSL advances
 !> t by a rounded t + h; over the 1e4 steps at |β| ~ 1e5 that cost up to 3e-12 in S),
 !> and the solutions are rescaled by powers of two. Measured against the 50-digit
-!> references of data/reference/ (README, *Accuracy*).
+!> references of data/reference/ (guide page *Methods and accuracy*).
 !>
 !>```fortran
 !> type(trace_t) :: tr

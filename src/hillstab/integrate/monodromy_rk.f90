@@ -7,7 +7,7 @@
 !>
 !>   M = [[u v' + u' v, 2 v v'], [2 u u', u v' + u' v]] at τ = 1,  S = 2 (u v' + u' v),
 !>
-!> and det M = (u v' − u' v)² = W² = 1 (BRIEF §4). Only [0, 1] is integrated.
+!> and det M = (u v' − u' v)² = W² = 1 (Floquet theory of the Hill equation). Only [0, 1] is integrated.
 !>
 !> Strongly negative q (β ≪ 0, α → π²) makes u, v grow like e^{∫√|q|}; the
 !> integration stops whenever a pair exceeds 2^200, rescales it by a power of two

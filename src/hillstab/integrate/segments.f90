@@ -1,6 +1,6 @@
 !> Method `segments`: the monodromy of one period with q replaced by N constant pieces
 !> (endpoint, midpoint or exact-average sampling, hillstab_hill_coefficient), the product
-!> of their exact transfer matrices (BRIEF §4, Meissner). Second order in 1/N; N = 2 with
+!> of their exact transfer matrices (Meissner). Second order in 1/N; N = 2 with
 !> endpoint sampling is the paper's eq. (28), whose closed form is method `formula`.
 !>
 !>```fortran

@@ -3,7 +3,9 @@
 !> status: 0 on success, otherwise one of the hillstab_core_error codes; outputs are
 !> left untouched on failure. `hillstab_error_message` turns a status into the name of
 !> its code; `hillstab_last_error` gives the full message of the calling thread's most
-!> recent failed call (the same text as `error_t%message` in Fortran).
+!> recent failed call (the same text as `error_t%message` in Fortran). `hillstab_version`
+!> and `hillstab_version_numbers` give the version of the library linked at run time
+!> (the header's `HILLSTAB_VERSION_*` macros give the version compiled against).
 !>
 !>```c
 !> double s, log_abs; int overflow;
@@ -11,8 +13,8 @@
 !>                             256, HILLSTAB_SAMPLING_AVERAGE, 1e-10, &s, &log_abs, &overflow);
 !>```
 module hillstab_interop_capi
-   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_null_char
-   use hillstab_core_kinds, only: wp
+   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_null_char, c_ptr, c_loc
+   use hillstab_core_kinds, only: wp, version_string
    use hillstab_core_error, only: error_t, error_code_name, set_error, err_invalid_parameter, err_overflow
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, check_model, model_elastic
@@ -24,7 +26,14 @@ module hillstab_interop_capi
    implicit none
    private
    public :: hillstab_c_coefficient, hillstab_c_trace, hillstab_c_floquet, hillstab_c_trace_paper, &
-      hillstab_c_trace_paper_checked, hillstab_c_error_message, hillstab_c_last_error
+      hillstab_c_trace_paper_checked, hillstab_c_error_message, hillstab_c_last_error, hillstab_c_version, &
+      hillstab_c_version_numbers, version_numbers
+
+   integer :: i_char
+   !> The version as a NUL-terminated C string (a constant: safe from every thread).
+   character(kind=c_char), parameter :: version_chars(len(version_string) + 1) = &
+      [(version_string(i_char:i_char), i_char = 1, len(version_string)), c_null_char]
+   character(kind=c_char), target, save :: version_c(size(version_chars)) = version_chars
 
 contains
 
@@ -192,6 +201,49 @@ contains
       call copy_c_string(text, buffer, length)
       status = int(code, c_int)
    end function hillstab_c_last_error
+
+   !> The version of the library, "MAJOR.MINOR.PATCH" (`version_string`), as a pointer to a
+   !> NUL-terminated string that lives as long as the program: `const char *hillstab_version(void)`.
+   function hillstab_c_version() result(text) bind(C, name="hillstab_version")
+      type(c_ptr) :: text
+      text = c_loc(version_c(1))
+   end function hillstab_c_version
+
+   !> The three numbers of the version: `void hillstab_version_numbers(int *major, int *minor, int *patch)`.
+   subroutine hillstab_c_version_numbers(major, minor, patch) bind(C, name="hillstab_version_numbers")
+      integer(c_int), intent(out) :: major  !! the major version
+      integer(c_int), intent(out) :: minor  !! the minor version
+      integer(c_int), intent(out) :: patch  !! the patch level
+      integer :: numbers(3)
+      numbers = version_numbers(version_string)
+      major = int(numbers(1), c_int)
+      minor = int(numbers(2), c_int)
+      patch = int(numbers(3), c_int)
+   end subroutine hillstab_c_version_numbers
+
+   !> The numbers of a "MAJOR.MINOR.PATCH" version text (−1 for a part that is missing or
+   !> not a number).
+   pure function version_numbers(text) result(numbers)
+      character(len=*), intent(in) :: text  !! e.g. "0.1.0"
+      integer :: numbers(3)
+      integer :: part, from, dot, ios
+      numbers = -1
+      from = 1
+      do part = 1, 3
+         dot = index(text(from:), ".")
+         if (dot == 0) then
+            dot = len(text) + 1
+         else
+            dot = from + dot - 1
+         end if
+         if (dot > from .and. verify(text(from:dot - 1), "0123456789") == 0) then
+            read (text(from:dot - 1), *, iostat=ios) numbers(part)
+            if (ios /= 0) numbers(part) = -1
+         end if
+         from = dot + 1
+         if (from > len(text)) exit
+      end do
+   end function version_numbers
 
    !> `text` into a C buffer of `length` bytes, cut to length − 1 and NUL-terminated.
    subroutine copy_c_string(text, buffer, length)

@@ -10,7 +10,7 @@
 !>       CALL HSTRACE(1, 3.7D0, 2.47D0, 0.0D0, 2, 256, 3, 1.0D-10, S, INFO)
 !>```
 !>
-!> Every argument and code is documented in the README (*Old-style entry points*).
+!> Every argument and code is documented in the guide page *Using the library* (*Old-style entry points*).
 module hillstab_interop_legacy
    use hillstab_core_kinds, only: wp
    implicit none

@@ -2,7 +2,7 @@
 !> calls them through an implicit interface and links the symbols `hstrace_`,
 !> `hsfloq_` and `hserrm_`. Modern callers get their explicit interfaces from
 !> `module hillstab_interop_legacy`. Plain DOUBLE PRECISION / INTEGER / CHARACTER arguments,
-!> an INFO code; the README documents every argument and code, LAPACK-style.
+!> an INFO code; the guide page *Using the library* documents every argument and code, LAPACK-style.
 
 !> Trace S of the one-period monodromy (S₁ of the χ equation (47) when EPS > 0) for
 !> MODEL (1 elastic, 2 Mathieu) by METHOD (0 auto, 1 formula, 2 segments, 3 magnus4,

@@ -162,7 +162,7 @@ contains
    !> (−1: never, no growth or φ0 = 0), undamped.
    !>
    !> About the bounce r(τ) = ρ(1 − k cos πτ) (τ = ωt/π, k = α/π²) the swing x = r sin φ
-   !> obeys the Hill equation x'' + Q(τ) x = 0 exactly (BRIEF §2), and the start at rest
+   !> obeys the Hill equation x'' + Q(τ) x = 0 exactly (eq. (20)), and the start at rest
    !> with φ(0) = φ0 is x(0) = r(0) sin φ0, x'(0) = 0: x = r(0) sin φ0 · u(τ), u the even
    !> solution. Over the n-th period u(2n + s) = (Φ(s) Mⁿ e₁)₁ — Φ the propagator within the
    !> period, M = Φ(2) the monodromy, so Mⁿ e₁ = c₊ λⁿ v₊ + c₋ λ⁻ⁿ v₋ carries both Floquet

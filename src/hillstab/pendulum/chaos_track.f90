@@ -36,7 +36,7 @@ module hillstab_pendulum_chaos_track
    integer, parameter :: chaos_dop853 = 2
 
    !> Options of `chaos_indicators`. The defaults give the fastest correct verdicts on the
-   !> physical domain from the paper's start (φ0 = 0.017 at rest); see the README.
+   !> physical domain from the paper's start (φ0 = 0.017 at rest); see the guide page *Chaos*.
    type :: chaos_options_t
       integer :: integrator = chaos_auto  !! chaos_auto, chaos_symplectic or chaos_dop853
       !> symplectic scheme (a symplectic_* constant of hillstab_pendulum_symplectic)

@@ -3,14 +3,14 @@
 !>
 !> Coordinates: x horizontal, z downward from the pivot, r = √(x² + z²), φ = atan2(x, z).
 !> The state vector is y = (x, z, x', z') [m, m, m/s, m/s] (indices `px`, `pz`, `pvx`, `pvz`).
-!> Equations of motion (BRIEF §1, eq. (10)/(42) in Cartesian components):
+!> Equations of motion (the paper's eq. (10)/(42) in Cartesian components):
 !>
 !>   x'' = −ω²(1 − r0/r) x − κ x',   z'' = −ω²(1 − r0/r) z + g − κ z',   κ = ε ω/π.
 !>
-!> Chart parameters (α, β) and the physical r0, g give (BRIEF §3, eq. (23)–(25), (38)):
+!> Chart parameters (α, β) and the physical r0, g give (the paper's eq. (23)–(25), (38)):
 !> ρ = r0 π²/(π² − β), ω² = g π²/(ρ β), a = α ρ/π², T = 2π/ω. The vertical bounce
 !> x ≡ 0, z = ρ − a cos ωt is an exact solution when ε = 0 (`pendulum_bounce`), and the
-!> swing linearised about it is exactly the Hill equation of the chart (BRIEF §2):
+!> swing linearised about it is exactly the Hill equation of the chart (the paper's eq. (20)):
 !> `pendulum_bounce_monodromy` integrates the 4×4 variational equations along it.
 !>
 !> Two RK systems (extensions of `rk_system_t`, see hillstab_integrate_rk):
@@ -275,7 +275,7 @@ contains
    !> with ε > 0 it is the damped radial oscillation from the same start). Rows and columns
    !> in the order (x, z, x', z'). With ε = 0 its eigenvalues are those of the radial block
    !> (a harmonic oscillator over one period: {1, 1}) and the two of the swing block, whose
-   !> sum is the chart's S (BRIEF §2). The swing block couples to nothing along the bounce.
+   !> sum is the chart's S (the paper's eq. (20) is exact). The swing block couples to nothing along the bounce.
    !> With ε > 0 the radial pair has modulus e^{−ε} (κT/2 = ε), and the swing block is
    !> taken along the decaying radial motion, which is not the periodic orbit of eq. (47).
    subroutine pendulum_bounce_monodromy(p, rtol, m, stats, error)

@@ -1,7 +1,7 @@
 !> Explicit symplectic integration of the undamped pendulum with its tangent map, in lanes.
 !>
 !> Without damping the pendulum is Hamiltonian with the separable
-!> H = ½|v|² + V(x, z), V = ½ω²(r − r0)² − g z (BRIEF §10; z downward, per unit mass), so
+!> H = ½|v|² + V(x, z), V = ½ω²(r − r0)² − g z (z downward, per unit mass), so
 !> compositions of the exact flows of the kinetic part (the drift x += h v) and of the
 !> potential (the kick v += h F(x), F = −∇V = −ω²(1 − r0/r)(x, z) + (0, g)) are symplectic
 !> maps; with fixed steps their energy error stays bounded instead of drifting. Every
