@@ -492,28 +492,6 @@ contains
       stats%n_steps = stats%n_steps + int(n_mesh, int64)*split
    end subroutine mesh_product
 
-   !> Φ(1) on the mesh with its steps merged in groups of `group` (2: pairs, 4: fours); a
-   !> last incomplete group is merged into one step.
-   subroutine coarse_product(model, order, mesh, n_mesh, group, phi, stats)
-      type(hill_model_t), intent(in) :: model
-      integer, intent(in) :: order, n_mesh, group
-      real(wp), intent(in) :: mesh(0:n_mesh)
-      type(scaled_matrix_t), intent(out) :: phi
-      type(work_stats_t), intent(inout) :: stats
-      integer :: i, j
-      real(wp) :: carry, low(2, 2)
-      phi = scaled_identity()
-      carry = 0.0_wp
-      low = 0.0_wp
-      do i = 0, n_mesh - 1, group
-         j = min(i + group, n_mesh)
-         call magnus_step(model, order, mesh(i), mesh(j) - mesh(i), phi, stats%n_evaluations, carry, low)
-         stats%n_steps = stats%n_steps + 1
-      end do
-      phi%m = phi%m + low
-      phi%log_scale = phi%log_scale - carry
-   end subroutine coarse_product
-
    !> Σ_b |ΔS_b|/max(1, |S|) over blocks b of the half period, ΔS_b the change of S when the
    !> pairs of steps of block b alone are merged: the Richardson difference S_fine − S_coarse
    !> split by where along [0, 1] it arises, with the magnitudes summed.
@@ -530,14 +508,15 @@ contains
    !> ΔS_b telescopes through hybrid products H_b = S(coarse on [τ_b, 1]·fine on [0, τ_b]):
    !> H_0 = S_coarse, H_B = S_fine, ΔS_b = H_b − H_{b−1}. The fine parts are the march's
    !> `prefix`; the coarse parts are multiplied here from τ = 1 backwards (half the
-   !> march's steps, the cost of the plain check).
-   function block_estimate(model, order, mesh, n_mesh, prefix, m_fine, stats) result(total)
+   !> march's steps: this is the plain check's coarse product too, returned as `m_coarse`).
+   function block_estimate(model, order, mesh, n_mesh, prefix, m_fine, stats, m_coarse) result(total)
       type(hill_model_t), intent(in) :: model
       integer, intent(in) :: order, n_mesh
       real(wp), intent(in) :: mesh(0:n_mesh)
       type(scaled_matrix_t), intent(in) :: prefix(0:)   !! Φ_fine at the end of each pair
       type(scaled_matrix_t), intent(in) :: m_fine       !! the fine monodromy (for the scale)
       type(work_stats_t), intent(inout) :: stats
+      type(scaled_matrix_t), intent(out) :: m_coarse    !! the coarse monodromy (steps merged in pairs)
       real(wp) :: total
       integer, parameter :: n_blocks = 8
       type(scaled_matrix_t) :: suffix, whole, hybrid, before
@@ -563,6 +542,8 @@ contains
             before = hybrid
          end if
       end do
+      ! the last hybrid has the coarse steps everywhere
+      m_coarse = before
    end function block_estimate
 
    !> The Richardson estimate |S_fine − S_coarse|/(r^p − 1) (times the safety factor) of a
@@ -604,10 +585,10 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp), intent(out), optional :: error_estimate  !! estimated |ΔS|/max(1, |S|)
       real(wp), allocatable :: mesh(:)
-      type(scaled_matrix_t) :: phi, phi_check, m_check
+      type(scaled_matrix_t) :: phi, m_check
       type(scaled_matrix_t), allocatable :: prefix(:)
       real(wp) :: theta, estimate, ratio, log_peak, noise, previous, phase, c0, c1, difference, previous_difference
-      real(wp) :: previous_ratio
+      real(wp) :: previous_ratio, blocks
       type(sensitivity_t) :: sensitivity
       logical :: stagnated
       type(trace_t) :: tr
@@ -635,12 +616,10 @@ contains
       call adaptive_march(model, order, theta, mesh, n_mesh, phi, stats, log_peak, sensitivity, prefix)
       call model_split(model%kind, model%alpha, model%beta, model%epsilon, c0, c1)
       m = monodromy_from_half_period(phi)
-      call coarse_product(model, order, mesh, n_mesh, 2, phi_check, stats)
-      m_check = monodromy_from_half_period(phi_check)
+      blocks = block_estimate(model, order, mesh, n_mesh, prefix, m, stats, m_check)
       ratio = 2.0_wp**order
       difference = relative_trace_difference(m, m_check)
-      estimate = richardson_safety*max(difference, block_estimate(model, order, mesh, n_mesh, prefix, m, stats)) &
-                 /(ratio - 1.0_wp)
+      estimate = richardson_safety*max(difference, blocks)/(ratio - 1.0_wp)
       split = 1
       tr = trace_of(m)
       phase = phase_bound(model)
