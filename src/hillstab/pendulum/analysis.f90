@@ -64,7 +64,7 @@ module hillstab_pendulum_analysis
       !> sample times t_j = j T / samples_per_period, j = 0 … n_samples, whose energies are
       !> also watched (from the dense output, as the series task writes its rows; 0: none)
       integer :: samples_per_period = 0
-      integer(int64) :: n_samples = 0
+      integer(int64) :: n_samples = 0                  !! the last sample index j
       integer(int64) :: next_sample = 0                !! the next sample index to watch
       real(wp) :: max_sample_energy_error = 0.0_wp  !! max |E − E(0)| over the sample times [J/kg]
       real(wp) :: energy_last = 0.0_wp        !! E at the last step end
