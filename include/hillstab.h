@@ -9,8 +9,10 @@
  * Both libraries are installed in one directory, so -lhillstab (also in the --static
  * output) picks the shared one.
  * Every int-returning function returns 0 on success or an error code (see
- * hillstab_error_message); outputs are untouched on failure, and
- * hillstab_last_error gives the full message of the failure. */
+ * hillstab_error_message); outputs are untouched on failure, except
+ * HILLSTAB_ERR_ACCURACY (7: the tolerance is below what double precision reaches there),
+ * where they hold the best value, and hillstab_last_error gives the full message of
+ * the failure. */
 #ifndef HILLSTAB_H
 #define HILLSTAB_H
 #include <stddef.h>

@@ -202,6 +202,27 @@ contains
       call check(ctx, info == err_accuracy, "INFO = 7")
       call check(ctx, s, 2.0_wp, abs=1.0e-8_wp)
       call check(ctx, mu, 0.0_wp, abs=1.0e-4_wp)
+      ! the C entry points as the FORTRAN 77 ones: status 7 with the best value
+      block
+         real(c_double) :: sc, log_abs
+         integer(c_int) :: overflow, status
+         character(kind=c_char) :: buffer(300)
+         character(len=300) :: text
+         integer :: k
+         sc = -7.0_c_double
+         status = hillstab_c_trace(1_c_int, 9.86_c_double, 0.0_c_double, 0.0_c_double, int(method_auto, c_int), &
+            2_c_int, 1_c_int, 1.0e-14_c_double, sc, log_abs, overflow)
+         call check(ctx, status == err_accuracy, "C: status 7")
+         call check(ctx, real(sc, wp), 2.0_wp, abs=1.0e-8_wp)
+         status = hillstab_c_last_error(buffer, 300_c_size_t)
+         text = ""
+         do k = 1, 300
+            if (buffer(k) == c_null_char) exit
+            text(k:k) = buffer(k)
+         end do
+         call check(ctx, index(text, "best value returned") > 0, "the message says what the outputs hold: "// &
+            trim(text))
+      end block
    end subroutine legacy_roundoff_limited
 
    !> Every invalid argument the guide page *Using the library* lists gives INFO = 1 and a message naming it.

@@ -59,6 +59,7 @@ contains
          new_unittest("missing_scene_file", missing_scene_file), &
          new_unittest("hostile_scene_files", hostile_scene_files), &
          new_unittest("special_files_refused", special_files_refused), &
+         new_unittest("read_as_written", read_as_written), &
          new_unittest("groups_declared_once", groups_declared_once)])
    end function collect_scene
 
@@ -547,6 +548,39 @@ contains
       if (.not. allocated(error)) return
       call check(ctx, contains_text(error%message, "build/no_such_scene.nml"), "names the file: "//error%message)
    end subroutine missing_scene_file
+   !> What a namelist read would take otherwise than written is refused, naming group and
+   !> variable: a second `&scene` (ignored), `output = 12` unquoted (read as text), a
+   !> quoted string across a line break (the break dropped). A `&series` named in prose
+   !> (an output header's) is no second group.
+   subroutine read_as_written(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(scene_t) :: scene
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: path
+      path = scratch_prefix("as_written")//".nml"
+      call write_file(path, [padded("&scene task = 'chart' /"), padded("&scene task = 'points' /"), &
+                             padded("&chart /")])
+      call read_scene(path, scene, error)
+      call check(ctx, allocated(error), "a second &scene refused")
+      if (allocated(error)) call check(ctx, contains_text(error%message, path//": &scene: the group is given 2 "// &
+         "times"), "says so: "//error%message)
+      call write_file(path, [padded("&scene output = 12 /"), padded("&chart /")])
+      call read_scene(path, scene, error)
+      call check(ctx, allocated(error), "output = 12 refused")
+      if (allocated(error)) call check(ctx, contains_text(error%message, path//": &scene: output: must be quoted"), &
+         "names &scene output: "//error%message)
+      call write_file(path, [padded("&scene output = 'out/a"), padded("b' /"), padded("&chart /")])
+      call read_scene(path, scene, error)
+      call check(ctx, allocated(error), "a string across lines refused")
+      if (allocated(error)) call check(ctx, contains_text(error%message, path//": &scene: output: a quoted "// &
+         "string runs on"), "names &scene output: "//error%message)
+      call write_file(path, [padded("! the pendulum of &series, a chart of &chart"), padded("&scene /"), &
+                             padded("&chart n_alpha = 2, n_beta = 2 /")])
+      call read_scene(path, scene, error)
+      call check(ctx, .not. allocated(error), "groups named in comments are no groups")
+      call delete_file(path)
+   end subroutine read_as_written
+
    !> A FIFO without a writer (which would block a read forever) and a device, as the
    !> scene or as the points file: refused at once (exit 2) naming the file, nothing read.
    subroutine special_files_refused(ctx)

@@ -240,6 +240,8 @@ contains
       call check(ctx, size(a) == size(b), "same length")
       if (size(a) == size(b)) call check(ctx, count(a /= b) == 1, "only the scene file line differs")
       call read_scene(copy, scene, error)
+      call check(ctx, .not. allocated(error), "its output reads as a scene")
+      if (allocated(error)) return
       scene%output = scene%output//"_batch"
       call run_batch(scene, .true., error)
       call check(ctx, .not. allocated(error), "batch runs")

@@ -8,6 +8,7 @@ module test_tasks
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t, err_input, err_io, err_points_failed
    use hillstab_batch_tasks, only: run_scene_file
+   use hillstab_batch_cli, only: printable
    use hillstab_testing
    use hillstab_test_files, only: run_text_scene, check_rerun
    use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text, &
@@ -36,6 +37,7 @@ contains
          new_unittest("bad_input_touches_nothing", bad_input_touches_nothing), &
          new_unittest("planted_links_untouched", planted_links_untouched), &
          new_unittest("long_file_names", long_file_names), &
+         new_unittest("messages_printable", messages_printable), &
          new_unittest("unwritable_output", unwritable_output)])
    end function collect_tasks
 
@@ -801,6 +803,17 @@ contains
       end do
       call execute_command_line("rmdir '"//dir//"'")
    end subroutine long_file_names
+
+   !> Messages echo what scene files hold as one plain line: control characters and the
+   !> Unicode line separators are escaped; plain text and other UTF-8 pass unchanged.
+   subroutine messages_printable(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: ls = achar(226)//achar(128)//achar(168)
+      call check(ctx, printable("a"//achar(12)//"b"//achar(0)//"c"//achar(10)) == "a\x0cb\x00c\x0a", &
+         "form feed, NUL, line feed escaped: "//printable("a"//achar(12)//"b"//achar(0)//"c"//achar(10)))
+      call check(ctx, printable("x"//ls//"y") == "x\u2028y", "U+2028 escaped")
+      call check(ctx, printable("&scene: output: 'é' α") == "&scene: output: 'é' α", "plain text unchanged")
+   end subroutine messages_printable
 
    subroutine unwritable_output(ctx)
       type(test_context_t), intent(inout) :: ctx

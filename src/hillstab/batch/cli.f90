@@ -27,7 +27,7 @@ module hillstab_batch_cli
    use, intrinsic :: ieee_arithmetic, only: ieee_set_flag, ieee_all
    implicit none
    private
-   public :: scene_runner_t, serial_runner_t, run_command_line, exit_status, max_path
+   public :: scene_runner_t, serial_runner_t, run_command_line, exit_status, max_path, printable
 
    !> Longest scene path accepted (a longer one would be cut and another file read).
    integer, parameter :: max_path = 4096
@@ -167,7 +167,7 @@ contains
                call quit(error%message, exit_status(error))
             end if
             ! the file is written; the message says where (also with --quiet: it qualifies the file)
-            if (len(error%message) > 0) write (error_unit, '(a)') error%message
+            if (len(error%message) > 0) write (error_unit, '(a)') printable(error%message)
             points_failed = .true.
          end if
          if (.not. quiet .and. runner%reports()) write (error_unit, '(a)') runner%program//": wrote "//written
@@ -200,7 +200,7 @@ contains
       subroutine quit(message, status)
          character(len=*), intent(in) :: message
          integer, intent(in) :: status
-         if (len(message) > 0) write (error_unit, '(a)') message
+         if (len(message) > 0) write (error_unit, '(a)') printable(message)
          ! free what the program allocated, so that memory checkers see no leak
          if (allocated(scenes)) deallocate (scenes)
          if (allocated(argument)) deallocate (argument)
@@ -212,6 +212,36 @@ contains
          stop status, quiet=.true.
       end subroutine quit
    end subroutine run_command_line
+
+   !> A message as one line of plain text: control characters (NUL, form feed, a line
+   !> break a scene value carried, ...) and the Unicode line and paragraph separators
+   !> U+2028, U+2029 shown as \xNN and \u2028 escapes, so that what a scene file holds
+   !> cannot break or forge lines of the program's messages.
+   pure function printable(message) result(text)
+      character(len=*), intent(in) :: message
+      character(len=:), allocatable :: text
+      character(len=*), parameter :: hex = "0123456789abcdef"
+      integer :: i, c
+      text = ""
+      i = 1
+      do while (i <= len(message))
+         c = iachar(message(i:i))
+         if (c < 32 .or. c == 127) then
+            text = text//"\x"//hex(c/16 + 1:c/16 + 1)//hex(mod(c, 16) + 1:mod(c, 16) + 1)
+         else if (c == 226 .and. i + 2 <= len(message)) then
+            if (iachar(message(i + 1:i + 1)) == 128 .and. (iachar(message(i + 2:i + 2)) == 168 .or. &
+                                                        iachar(message(i + 2:i + 2)) == 169)) then
+               text = text//merge("\u2028", "\u2029", iachar(message(i + 2:i + 2)) == 168)
+               i = i + 3
+               cycle
+            end if
+            text = text//message(i:i)
+         else
+            text = text//message(i:i)
+         end if
+         i = i + 1
+      end do
+   end function printable
 
    !> Command-line argument i.
    function command_argument(i) result(text)

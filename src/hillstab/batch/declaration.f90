@@ -31,7 +31,8 @@ module hillstab_batch_declaration
    use hillstab_core_error, only: error_t, set_error, err_input
    use hillstab_core_text, only: real_text, quoted, integer_text, lower_case, fpe_state_t, halting_off, &
       halting_restore
-   use hillstab_batch_scene_file, only: scene_file_t, item_t, group_items, group_present, check_read, fail, read_len
+   use hillstab_batch_scene_file, only: scene_file_t, item_t, group_items, group_present, check_read, fail, read_len, &
+      group_count, string_across_lines
    implicit none
    private
    public :: variable_t, group_t, value_t, group_values_t, group_reader_t
@@ -325,6 +326,11 @@ contains
       values%group = group%name
       values%present = group_present(file%unit, group%name)
       call group_items(file%unit, group%name, items)
+      call check_written_as_read(error)
+      if (allocated(error)) then
+         call halting_restore(reader%fpe)
+         return
+      end if
       allocate (values%values(n))
       do k = 1, n
          values%values(k)%name = group%variables(k)%name
@@ -337,6 +343,41 @@ contains
       ! the group's checks refuse it)
       call parse_echo(reader, file, group, values, error)
       call halting_restore(reader%fpe)
+   contains
+      !> What the namelist read would take otherwise than written: a second `&group`
+      !> (ignored), a quoted string across a line break (the break dropped), an unquoted
+      !> value of a text variable (`output = 12` read as the text 12).
+      subroutine check_written_as_read(error)
+         type(error_t), allocatable, intent(out) :: error
+         character(len=:), allocatable :: name, value
+         integer :: count, i, v
+         count = group_count(file%unit, group%name)
+         if (count > 1) then
+            call set_error(error, err_input, file%path//": &"//group%name//": the group is given "// &
+               integer_text(count)//" times; all but the first would be ignored: give it once")
+            return
+         end if
+         name = string_across_lines(file%unit, group%name)
+         if (len(name) > 0) then
+            call fail(error, file%path, group%name, name, "a quoted string runs on to the next line (the "// &
+               "line break would be dropped): keep it on one line")
+            return
+         end if
+         do i = 1, size(items)
+            v = group%index_of(items(i)%name)
+            if (v == 0) cycle
+            select case (group%variables(v)%kind)
+            case (var_name, var_path, var_words)
+               value = adjustl(items(i)%text(index(items(i)%text, "=") + 1:))
+               if (len_trim(value) == 0) cycle
+               if (value(1:1) /= "'" .and. value(1:1) /= '"') then
+                  call fail(error, file%path, group%name, items(i)%name, "must be quoted, e.g. "// &
+                     items(i)%name//" = '"//trim(value)//"' (got "//trim(value)//")")
+                  return
+               end if
+            end select
+         end do
+      end subroutine check_written_as_read
    end subroutine end_group
 
    !> The values the namelist wrote back, one per declared variable in the declared order,

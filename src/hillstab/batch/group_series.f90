@@ -56,7 +56,7 @@ contains
 
    !> Read and check `&series`. The pendulum is the elastic one given in dimensionless
    !> units here, so a scene with `&physical` or another model is refused.
-   subroutine read_series_group(file, group, model, physical, plan, values, error)
+   subroutine read_series_group(file, group, model, physical, plan, values, error, samples)
       type(scene_file_t), intent(in) :: file  !! the scene file
       type(group_t), intent(in) :: group      !! the declaration (`series_group`)
       integer, intent(in) :: model            !! the model code of `&scene`
@@ -64,10 +64,16 @@ contains
       type(series_plan_t), intent(out) :: plan  !! the pendulum and its sampling
       type(group_values_t), intent(out) :: values  !! the effective values
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
+      !> the task writes the samples (series; default): periods * samples_per_period lines
+      !> are bounded; else (lyapunov, poincare) periods alone
+      logical, intent(in), optional :: samples
       real(wp) :: alpha, beta, phi0, r0, g, vx0, vz0
+      logical :: samples_written
       integer :: periods, samples_per_period
       namelist /series/ alpha, beta, phi0, periods, samples_per_period, r0, g, vx0, vz0
       type(group_reader_t) :: reader
+      samples_written = .true.
+      if (present(samples)) samples_written = samples
       call begin_group(reader, file, group)
       read (reader%defaults, nml=series, iostat=reader%defaults_status, iomsg=reader%defaults_msg)
       if (reader%from_file) read (file%unit, nml=series, iostat=reader%ios, iomsg=reader%msg)
@@ -117,10 +123,13 @@ contains
             "must lie in [1e-50, 1e50]")
       else if (max(abs(vx0), abs(vz0)) > 1.0e50_wp) then
          call fail(error, file%path, group%name, merge("vx0", "vz0", abs(vx0) > 1.0e50_wp), "must lie in [-1e50, 1e50]")
-      else if (int(periods, int64)*samples_per_period + 1 > max_series_lines) then
+      else if (samples_written .and. int(periods, int64)*samples_per_period + 1 > max_series_lines) then
          call fail(error, file%path, group%name, "periods", "periods * samples_per_period + 1 = "// &
             integer_text(int(periods, int64)*samples_per_period + 1)// &
             " data lines exceed the limit of 1e8; lower periods or samples_per_period")
+      else if (.not. samples_written .and. periods > max_series_lines) then
+         call fail(error, file%path, group%name, "periods", "must be at most 1e8 radial periods, got "// &
+            integer_text(periods))
       end if
       if (allocated(error)) return
       if (allocated(error)) return

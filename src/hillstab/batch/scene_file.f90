@@ -22,6 +22,7 @@ module hillstab_batch_scene_file
    private
    public :: scene_file_t, item_t, open_scene_file, close_scene_file
    public :: locate_group, group_present, group_sets, group_items, check_read, fail, shortened, joined, item_name
+   public :: group_count, string_across_lines
    public :: max_line_length, max_scene_bytes, text_len, read_len
 
    !> Longest line of a scene or points file.
@@ -431,6 +432,95 @@ contains
          items(k)%name = item_name(items(k)%text)
       end do
    end subroutine group_items
+
+   !> The scene text as one string, lines joined by `separator`, up to the `# columns:`
+   !> line of an output file, `!` comments removed.
+   function scene_text(unit, separator) result(text)
+      integer, intent(in) :: unit
+      character, intent(in) :: separator
+      character(len=:), allocatable :: text, line, code
+      integer :: ios
+      text = ""
+      rewind (unit)
+      do
+         call read_text_line(unit, line, ios)
+         if (ios /= 0) exit
+         if (index(line, "# columns:") == 1) exit
+         ! (a function result in a concatenation onto the same variable is miscopied by
+         ! gfortran 12: the piece goes through a variable of its own)
+         code = strip_comment(line)
+         text = text//code//separator
+      end do
+   end function scene_text
+
+   !> Positions just after each `&group` of `text` (lines joined by new lines) that opens
+   !> a line, after blanks or an output header's `#`: the groups a namelist read sees
+   !> (not a `&series` named in a header's prose).
+   function group_starts(text, group) result(starts)
+      character(len=*), intent(in) :: text, group
+      integer, allocatable :: starts(:)
+      integer :: i, line_start
+      allocate (starts(0))
+      do i = 1, len(text) - len(group) - 1
+         if (text(i:i) /= "&") cycle
+         line_start = index(text(:i), achar(10), back=.true.) + 1
+         if (verify(text(line_start:i - 1), " #") /= 0) cycle
+         if (lower(text(i + 1:i + len(group))) /= lower(group)) cycle
+         if (index(" /,"//achar(10), text(i + len(group) + 1:i + len(group) + 1)) == 0) cycle
+         starts = [starts, i + len(group) + 1]
+      end do
+   end function group_starts
+
+   !> How many times `&group` opens in the file (a second one would be ignored by the
+   !> namelist read).
+   integer function group_count(unit, group)
+      integer, intent(in) :: unit  !! the scratch copy of the scene file
+      character(len=*), intent(in) :: group  !! the namelist group
+      character(len=:), allocatable :: text
+      text = scene_text(unit, achar(10))
+      group_count = size(group_starts(text, group))
+   end function group_count
+
+   !> The item of the first `&group` whose quoted string runs past the end of its line
+   !> ("" when none): the namelist read would join the lines and drop the line break.
+   function string_across_lines(unit, group) result(name)
+      integer, intent(in) :: unit  !! the scratch copy of the scene file
+      character(len=*), intent(in) :: group  !! the namelist group
+      character(len=:), allocatable :: name
+      character(len=:), allocatable :: text
+      integer, allocatable :: starts(:)
+      integer :: i, opened, eq, j
+      character :: quote
+      name = ""
+      text = scene_text(unit, achar(10))
+      starts = group_starts(text, group)
+      if (size(starts) == 0) return
+      quote = " "
+      opened = 0
+      do i = starts(1), len(text)
+         if (quote == " " .and. text(i:i) == "/") return
+         if (quote /= " " .and. text(i:i) == achar(10)) then
+            ! the variable: the name before the last '=' ahead of the opening quote
+            eq = index(text(starts(1):opened), "=", back=.true.) + starts(1) - 1
+            j = eq - 1
+            do while (j > starts(1))
+               if (text(j:j) /= " ") exit
+               j = j - 1
+            end do
+            name = ""
+            do while (j >= starts(1))
+               if (.not. is_name_char(text(j:j))) exit
+               name = text(j:j)//name
+               j = j - 1
+            end do
+            name = lower(name)
+            if (len(name) == 0) name = "?"
+            return
+         end if
+         call track_quote(text(i:i), quote)
+         if (quote /= " " .and. opened < i .and. (text(i:i) == "'" .or. text(i:i) == '"')) opened = i
+      end do
+   end function string_across_lines
 
    !> Keep track of whether position i is inside a quoted string.
    pure subroutine track_quote(c, quote)

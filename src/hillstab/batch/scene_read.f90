@@ -244,7 +244,7 @@ contains
       class(task_t), intent(in) :: task
       type(error_t), allocatable, intent(out) :: error
       if (.not. task%takes_columns .and. (scene%binary .or. len(scene%columns) > 0)) then
-         call fail(error, file%path, "scene", merge("format ", "columns", scene%binary), &
+         call fail(error, file%path, "scene", trim(merge("format ", "columns", scene%binary)), &
             "columns and format = 'binary' apply to tasks chart and points")
       end if
    end subroutine check_task_settings

@@ -174,7 +174,8 @@ contains
          megno_regular, megno_stop, min_periods, lanes
       type(group_reader_t) :: reader
       allocate (self%groups(3))
-      call read_series_group(file, series_group(), scene%model, scene%physical, self%series, self%groups(1), error)
+      call read_series_group(file, series_group(), scene%model, scene%physical, self%series, self%groups(1), error, &
+         samples=.false.)
       if (allocated(error)) return
       group = lyapunov_group()
       call begin_group(reader, file, group, optional=.true.)

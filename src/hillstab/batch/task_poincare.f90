@@ -86,7 +86,8 @@ contains
       type(group_reader_t) :: reader
       integer :: k
       allocate (self%groups(2))
-      call read_series_group(file, series_group(), scene%model, scene%physical, self%series, self%groups(1), error)
+      call read_series_group(file, series_group(), scene%model, scene%physical, self%series, self%groups(1), error, &
+         samples=.false.)
       if (allocated(error)) return
       group = poincare_group()
       call begin_group(reader, file, group, optional=.true.)

@@ -1,7 +1,8 @@
 !> C-callable entry points (`bind(C)`, `value` scalars, names prefixed `hillstab_`).
 !> The matching declarations are in include/hillstab.h. Every function returns a
 !> status: 0 on success, otherwise one of the hillstab_core_error codes; outputs are
-!> left untouched on failure. `hillstab_error_message` turns a status into the name of
+!> left untouched on failure, except status 7 (the tolerance is below the round-off level
+!> there), where they hold the best value double precision allows. `hillstab_error_message` turns a status into the name of
 !> its code; `hillstab_last_error` gives the full message of the calling thread's most
 !> recent failed call (the same text as `error_t%message` in Fortran). `hillstab_version`
 !> and `hillstab_version_numbers` give the version of the library linked at run time
@@ -15,7 +16,7 @@
 module hillstab_interop_capi
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_null_char, c_ptr, c_loc
    use hillstab_core_kinds, only: wp, version_string
-   use hillstab_core_error, only: error_t, error_code_name, set_error, err_invalid_parameter, err_overflow
+   use hillstab_core_error, only: error_t, error_code_name, set_error, err_invalid_parameter, err_overflow, err_accuracy
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, check_model, model_elastic
    use hillstab_hill_transfer, only: trace_t
@@ -107,7 +108,9 @@ contains
 
    !> Everything the C functions return: trace S, ln|S|, overflow flag, ln|λ| of both
    !> multipliers (largest first), exponent μ, verdicts (|S₁| < 2 cosh ε; |S₁| ≤ 2);
-   !> status 0 or an error code, outputs untouched on error.
+   !> status 0 or an error code, outputs untouched on error, except HILLSTAB_ERR_ACCURACY
+   !> (the tolerance is below what double precision reaches there): the outputs then hold
+   !> the best value, as the FORTRAN 77 routines' and the message says.
    subroutine evaluate(model, method, s, logs, iovf, rlogm, mu, istab, ipaper, info)
       type(hill_model_t), intent(in) :: model
       type(method_t), intent(in) :: method
@@ -119,9 +122,10 @@ contains
       type(error_t), allocatable :: error
       call monodromy_trace(model, method, tr, error)
       call record_outcome(error)
+      info = 0
       if (allocated(error)) then
          info = int(error%code, c_int)
-         return
+         if (error%code /= err_accuracy) return
       end if
       f = floquet_from_trace(tr, model%epsilon)
       s = tr%value
@@ -134,7 +138,6 @@ contains
       if (f%stable) istab = 1
       ipaper = 0
       if (f%stable_paper) ipaper = 1
-      info = 0
       ! never a silent NaN or Inf (S is +-DBL_MAX with the overflow flag; the logarithms are finite)
       if (.not. (ieee_is_finite(logs) .and. all(ieee_is_finite(rlogm)) .and. ieee_is_finite(mu) .and. &
                  .not. ieee_is_nan(s))) then
