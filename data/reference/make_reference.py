@@ -297,7 +297,8 @@ def points():
 def check_points():
     """A second set of the same kind at other points, for checking that what was tuned on the
     hard set holds elsewhere: larger |beta| (more oscillations or more growth), alpha = 9.7 and
-    9.86, and the Mathieu model at q = 10 and q = 30 on its a0 and b1 curves."""
+    9.86, the Mathieu model at q = 10 and q = 30 on its a0 and b1 curves, and one more Mathieu
+    point (nu = 226.18, beta = -193.40) found by an independent check."""
     pts = []
     for alpha in (0.0, 5.0, 9.7, 9.86):
         for beta in (-3e4, 3e4, 3e5):
@@ -312,6 +313,8 @@ def check_points():
             nu = float(q * mp.pi**2 / 2)
             pts.append((MATHIEU, nu, float(mp.pi**2 / 4 * a0), "mathieu q = %d on a0 (S = +2)" % qv))
             pts.append((MATHIEU, nu, float(mp.pi**2 / 4 * b1), "mathieu q = %d on b1 (S = -2)" % qv))
+    # a Mathieu point where rk's round-off level was 4.4x below its error (S = -3.46e6)
+    pts.append((MATHIEU, 226.17754433821787, -193.3961568448847, "mathieu rk round-off"))
     return pts
 
 

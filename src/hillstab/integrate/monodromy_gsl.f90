@@ -38,7 +38,7 @@ module hillstab_integrate_monodromy_gsl
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use hillstab_integrate_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
       roundoff_level, propagator_condition, trace_distance, first_step_factor, next_local_tolerance, sensitivity_t, &
-      accumulate_sensitivity, coefficient_level
+      accumulate_sensitivity, coefficient_level, rk_rounding
    use hillstab_hill_models, only: model_split
    use hillstab_core_stats, only: work_stats_t, add_work
    use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
@@ -356,7 +356,7 @@ contains
       end if
       tr = trace_of(best)
       phase = phase_bound(model)
-      call refine(ladder, tr, .false., roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase) &
+      call refine(ladder, tr, .false., roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding) &
                   + coefficient_noise)
       last_coefficient_noise = coefficient_noise
       estimate = -1.0_wp
@@ -387,12 +387,12 @@ contains
                estimate = trace_distance(trace_of(best), trace_of(trial))
             end if
             tr = trace_of(best)
-            estimate = max(estimate, roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase) &
+            estimate = max(estimate, roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding) &
                                      + last_coefficient_noise)
             exit
          end if
          tr = trace_of(trial)
-         noise = roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase) + coefficient_noise
+         noise = roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding) + coefficient_noise
          last_coefficient_noise = coefficient_noise
          call refine(ladder, tr, eps <= 1.001_wp*smallest_gsl_epsilon .or. run == max_ladder_runs, noise, &
                      near_floor=eps <= 1.0e3_wp*smallest_gsl_epsilon)

@@ -23,7 +23,7 @@ module hillstab_integrate_monodromy_rk
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use hillstab_integrate_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
       roundoff_level, propagator_condition, first_step_factor, next_local_tolerance, sensitivity_t, &
-      accumulate_sensitivity, coefficient_level
+      accumulate_sensitivity, coefficient_level, rk_rounding
    use hillstab_hill_models, only: model_split
    use hillstab_core_stats, only: work_stats_t, add_work
    use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
@@ -214,7 +214,7 @@ contains
          if (run == 1) phase = phase_bound(model)   ! (the model is known valid from here)
          tr = trace_of(m)
          call refine(ladder, tr, at_floor=local <= 1.001_wp*tolerance_floor .or. run == max_ladder_runs, &
-                     noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase) &
+                     noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding) &
                            + coefficient_noise, &
                      near_floor=local <= 1.0e3_wp*tolerance_floor)
          if (ladder%verdict /= refine_more) exit

@@ -32,6 +32,9 @@ module hillstab_integrate_refine
    !> Safety factor of `roundoff_level` (calibrated with method auto on β = 0,
    !> α = 9.8 … 9.86, where S = 2 exactly).
    real(wp), parameter :: roundoff_safety = 0.1_wp
+   !> The factor of the √N term of `roundoff_level` for the Runge–Kutta integrators (rk,
+   !> gsl), whose steps round the state itself: one rounding of ε per step (its `step_rounding`).
+   real(wp), parameter, public :: rk_rounding = 1.0_wp
 
    !> Compute S again at a tighter local tolerance.
    integer, parameter :: refine_more = 0
@@ -209,12 +212,22 @@ contains
    !> which a double also stores only to ε Φ). With |β| = 3e5 at α = 9.86 that is 1.1e-12
    !> (rk and gsl both settle 4e-13 to 6e-13 away from the reference there); at β = −1e6,
    !> α → π², 2.6e-12.
-   elemental real(wp) function roundoff_level(log_peak, log_abs_s, n_steps, phase) result(level)
+   !>
+   !> `step_rounding` replaces the 0.1 for the Runge–Kutta integrators (rk, gsl), whose steps
+   !> round the state itself (y + h Σ bᵢkᵢ, no compensation): one rounding of ε per step at
+   !> the full condition. With 0.1 DOP853 at the Mathieu point ν = 226.17754433821787,
+   !> β = −193.3961568448847 (S = −3.46e6, κ/|S| = 2e4) settled 2.6e-11 off at local
+   !> tolerances 1e-14 and 1e-15 alike, against a level of 5.9e-12 (4.4×); with 1, 6e-11.
+   elemental real(wp) function roundoff_level(log_peak, log_abs_s, n_steps, phase, step_rounding) result(level)
       real(wp), intent(in) :: log_peak   !! ln of the largest `propagator_condition` along the path
       real(wp), intent(in) :: log_abs_s  !! ln|S|
       integer, intent(in) :: n_steps     !! steps of the propagation
       real(wp), intent(in) :: phase      !! bound of the phase or growth over the period (`phase_bound`)
-      level = roundoff_safety*epsilon(1.0_wp)*sqrt(real(max(n_steps, 1), wp)) &
+      real(wp), intent(in), optional :: step_rounding  !! factor of the √N term (default `roundoff_safety`)
+      real(wp) :: factor
+      factor = roundoff_safety
+      if (present(step_rounding)) factor = step_rounding
+      level = factor*epsilon(1.0_wp)*sqrt(real(max(n_steps, 1), wp)) &
               *exp(min(log_peak - max(0.0_wp, log_abs_s), log_huge)) + 2.0_wp*epsilon(1.0_wp)*phase
    end function roundoff_level
 
