@@ -31,7 +31,7 @@ module hillstab_batch_output
       c_fflush, c_fclose, c_fileno, c_fsync, errno_text, set_errno, c_string, remove_file, is_directory
    use hillstab_batch_signals, only: watch_temp_file, forget_temp_file, begin_commit
    use hillstab_core_kinds, only: wp
-   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_ptr, c_null_ptr, c_associated, c_size_t, c_loc
+   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, c_associated, c_size_t, c_loc
    implicit none
    private
    public :: output_file_t, open_output, commit_output, discard_output, finish_output, write_header, write_text
@@ -63,7 +63,7 @@ contains
       logical, intent(in), optional :: binary  !! a byte stream (default: a text file)
       !> put before the error message: what named the path (a task: "<scene>: &scene: output: ")
       character(len=*), intent(in), optional :: context
-      character(len=:), allocatable :: prefix
+      character(len=:), allocatable :: prefix, name
       character(kind=c_char), allocatable :: template(:)
       integer(c_int) :: fd, mask, status
       integer :: k
@@ -81,7 +81,12 @@ contains
             integer_text(name_max)//")")
          return
       end if
-      template = c_string(temporary_template(path))
+      name = temporary_template(path)
+      allocate (template(len(name) + 1))
+      do k = 1, len(name)
+         template(k) = name(k:k)
+      end do
+      template(len(name) + 1) = c_null_char
       call set_errno(0)
       fd = c_mkstemp(template)
       if (fd < 0) then

@@ -25,16 +25,19 @@ module hillstab_batch_progress
       integer(int64) :: start = 0       !! clock at the start
       integer(int64) :: last = 0        !! clock at the last report
       integer(int64) :: ticks = 1       !! clock ticks per second
+      character(len=16) :: label = "points"  !! what is counted: points, rows, alphas, orbits
    end type progress_t
 
 contains
 
    !> Start reporting the progress of a run of `total` points (nothing when quiet).
-   subroutine progress_begin(progress, total, quiet)
+   subroutine progress_begin(progress, total, quiet, label)
       type(progress_t), intent(out) :: progress  !! the progress state
       integer(int64), intent(in) :: total  !! points to compute
       logical, intent(in) :: quiet  !! no progress on stderr
+      character(len=*), intent(in), optional :: label  !! what is counted (default "points")
       progress%enabled = .not. quiet
+      if (present(label)) progress%label = label
       progress%total = total
       call system_clock(progress%start, progress%ticks)
       progress%last = progress%start
@@ -61,7 +64,8 @@ contains
       left = real(progress%total - done, wp)/max(rate, tiny(1.0_wp))
       write (left_text, '(f12.1)') left
       write (text, '(a,f5.1,a,i0,a,i0,a,i0,a)') "hillstab: ", 100.0_wp*done/progress%total, "% (", &
-         done, " of ", progress%total, " points, ", nint(rate, int64), " points/s, "
+         done, " of ", progress%total, " "//trim(progress%label)//", ", nint(rate, int64), " "// &
+         trim(progress%label)//"/s, "
       text = trim(text)//" "//trim(adjustl(left_text))//" s left)"
       if (progress%terminal) then
          write (error_unit, '(a)', advance="no") achar(13)//trim(text)//"   "

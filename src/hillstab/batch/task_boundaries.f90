@@ -13,7 +13,8 @@
 !> The α values run in parallel (OpenMP, dynamic schedule: the truncation grows
 !> towards α → π²); the file is written once all are done, curve by curve.
 module hillstab_batch_task_boundaries
-   use hillstab_core_kinds, only: wp, version_string
+   use hillstab_core_kinds, only: wp, int64, version_string
+   use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_hill_models, only: model_description, model_has_witness, model_witness_beta, model_is_pendulum
@@ -235,9 +236,11 @@ contains
    subroutine boundaries_run(self, scene, quiet, error)
       class(boundaries_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! a validated boundaries scene
-      logical, intent(in) :: quiet  !! accepted for symmetry with the other tasks: nothing is printed
+      logical, intent(in) :: quiet  !! no progress on stderr (alphas done)
       type(error_t), allocatable, intent(out) :: error  !! what failed; unallocated on success
       type(output_file_t) :: file
+      type(progress_t) :: progress
+      integer(int64) :: done
       type(alpha_rows_t), allocatable :: per_alpha(:)
       integer, allocatable :: keys(:, :)
       integer :: i, j, c, n_alpha, n_failed_rows, n_failed_alpha, last_i, first_failed
@@ -256,6 +259,8 @@ contains
       mathieu = model_has_witness(scene%model)
       n_alpha = self%grid%n_alpha
       allocate (per_alpha(n_alpha))
+      call progress_begin(progress, int(n_alpha, int64), quiet, "alphas")
+      done = 0
       !$omp parallel do schedule(dynamic) default(shared) private(i, cause)
       do i = 1, n_alpha
          call compute_boundary_rows(scene, self%grid, grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i), &
@@ -264,8 +269,13 @@ contains
             per_alpha(i)%failed = .true.
             per_alpha(i)%message = cause%message
          end if
+         !$omp critical (boundaries_progress)
+         done = done + 1
+         call progress_update(progress, done)
+         !$omp end critical (boundaries_progress)
       end do
       !$omp end parallel do
+      call progress_end(progress)
 
       ! the curves present anywhere, ordered by order, then branch
       allocate (keys(3, 0))

@@ -26,6 +26,9 @@ module hillstab_batch_task_points
    private
    public :: points_task_t, points_task
 
+   !> Points computed between two progress reports (in parallel within).
+   integer, parameter :: points_chunk = 4096
+
    !> The points task and its points.
    type, extends(floquet_task_t) :: points_task_t
       character(len=:), allocatable :: file   !! `&points file` ("" with `&physical a`)
@@ -171,7 +174,7 @@ contains
       character(len=chart_line_length), allocatable :: lines(:)
       integer, allocatable :: statuses(:), ids(:)
       real(wp), allocatable :: values(:, :)
-      integer :: k, n
+      integer :: k, m, n
       n = size(self%points, 2)
       call scene_chart_columns(scene, ids, error)
       if (allocated(error)) return
@@ -186,8 +189,12 @@ contains
       end if
       statuses = status_ok
       call progress_begin(progress, int(n, int64), quiet)
-      call compute_points(self, scene, 1, n, lines, statuses, values)
-      call progress_update(progress, int(n, int64))
+      ! in chunks, for the progress line (the points of a chunk in parallel)
+      do k = 1, n, points_chunk
+         m = min(n, k + points_chunk - 1)
+         call compute_points(self, scene, k, m, lines(k:m), statuses(k:m), values(:, k:m))
+         call progress_update(progress, int(m, int64))
+      end do
       call progress_end(progress)
       call write_header(file, chart_header(scene, outside(self), ids), columns_text(chart_columns(scene), ids), &
                         error, names_line=scene%names_line, records=[n, 1])

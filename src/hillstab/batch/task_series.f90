@@ -18,6 +18,7 @@
 !>```
 module hillstab_batch_task_series
    use hillstab_core_kinds, only: wp, int64, version_string
+   use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
    use hillstab_core_error, only: error_t, set_error, err_input, err_accuracy, err_invalid_parameter
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed, status_name
    use hillstab_core_stats, only: work_stats_t
@@ -81,6 +82,7 @@ module hillstab_batch_task_series
       integer(int64) :: n_samples = 0            !! last index (periods × samples_per_period)
       integer :: samples_per_period = 1
       type(error_t), allocatable :: error        !! a write failure (the integration then stops)
+      type(progress_t) :: progress               !! rows written, on stderr
    contains
       procedure :: observe => write_samples
    end type series_writer_t
@@ -130,7 +132,7 @@ contains
    subroutine series_run(self, scene, quiet, error)
       class(series_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
-      logical, intent(in) :: quiet  !! unused: the run reports nothing on the way
+      logical, intent(in) :: quiet  !! no progress on stderr (the rows of the writing pass)
       type(error_t), allocatable, intent(out) :: error  !! what failed; unallocated on success
       type(series_summary_t) :: summary
       type(series_writer_t) :: writer
@@ -153,12 +155,14 @@ contains
       writer%n_samples = int(self%plan%periods, int64)*self%plan%samples_per_period
       writer%samples_per_period = self%plan%samples_per_period
       y = initial_state(self%plan, summary%pendulum)
+      call progress_begin(writer%progress, writer%n_samples + 1, quiet, "rows")
       call pendulum_integrate(writer, y, sample_time(writer%pendulum, writer%n_samples, writer%samples_per_period), &
                               scene%method%tolerance, stats, error)
       if (.not. allocated(error) .and. allocated(writer%error)) call move_alloc(writer%error, error)
       if (.not. allocated(error) .and. writer%next <= writer%n_samples) then
          call set_error(error, err_input, "series: the integration ended before the last sample")
       end if
+      call progress_end(writer%progress)
       if (allocated(error)) error%message = scene%source//": "//error%message
       call finish_output(writer%file, error)
    end subroutine series_run
@@ -267,6 +271,7 @@ contains
          end if
          self%next = self%next + 1
       end do
+      call progress_update(self%progress, self%next)
    end subroutine write_samples
 
    !> Header: version, scene (repeatable), the pendulum, the method, the summary, the columns.
