@@ -7,6 +7,8 @@ module test_coefficient
    use hillstab_hill_coefficient
    use hillstab_testing
    implicit none
+   !> Quadruple precision for the independent quadrature of the segment averages.
+   integer, parameter :: qp = selected_real_kind(30)
    private
    public :: collect_coefficient
 
@@ -20,6 +22,7 @@ contains
          new_unittest("even_and_periodic", even_and_periodic), &
          new_unittest("isotropic_beta_pi2", isotropic_beta_pi2), &
          new_unittest("average_matches_quadrature", average_matches_quadrature), &
+         new_unittest("average_near_pi2_quad_precision", average_near_pi2_quad_precision), &
          new_unittest("mathieu_and_damping", mathieu_and_damping), &
          new_unittest("validation", validation)])
    end function collect_coefficient
@@ -108,6 +111,73 @@ contains
             pi2 + (m%beta - pi2)/sqrt(1.0_wp - (m%alpha/pi2)**2), rel=1.0e-13_wp)
       end do
    end subroutine average_matches_quadrature
+
+   !> 1/(1 − k cos θ) in quadruple precision, with 1 − k cos θ = (1 − k) + 2k sin²(θ/2).
+   pure real(qp) function inverse_cos_qp(k, one_minus_k, theta) result(f)
+      real(qp), intent(in) :: k, one_minus_k, theta
+      f = 1.0_qp/(one_minus_k + 2.0_qp*k*sin(0.5_qp*theta)**2)
+   end function inverse_cos_qp
+
+   !> 5-point Gauss–Legendre on [a, b] in quadruple precision.
+   pure real(qp) function gauss5_qp(k, one_minus_k, a, b) result(s)
+      real(qp), intent(in) :: k, one_minus_k, a, b
+      real(qp), parameter :: x(5) = [-0.906179845938663992797626878299392965_qp, -0.538469310105683091036314420700208805_qp, &
+                                     0.0_qp, 0.538469310105683091036314420700208805_qp, 0.906179845938663992797626878299392965_qp]
+      real(qp), parameter :: w(5) = [0.236926885056189087514264040719917363_qp, 0.478628670499366468041291514835638192_qp, &
+                                     0.568888888888888888888888888888888889_qp, 0.478628670499366468041291514835638192_qp, &
+                                     0.236926885056189087514264040719917363_qp]
+      integer :: i
+      s = 0.0_qp
+      do i = 1, 5
+         s = s + w(i)*inverse_cos_qp(k, one_minus_k, 0.5_qp*(a + b) + 0.5_qp*(b - a)*x(i))
+      end do
+      s = 0.5_qp*(b - a)*s
+   end function gauss5_qp
+
+   !> ∫ₐᵇ 1/(1 − k cos θ) dθ by adaptive bisection of 5-point Gauss–Legendre panels until
+   !> the two halves agree with the whole to 1e-26 of it (quadruple precision throughout).
+   recursive function adaptive_qp(k, one_minus_k, a, b, whole, depth) result(s)
+      real(qp), intent(in) :: k, one_minus_k, a, b, whole
+      integer, intent(in) :: depth
+      real(qp) :: s, m, left, right
+      m = 0.5_qp*(a + b)
+      left = gauss5_qp(k, one_minus_k, a, m)
+      right = gauss5_qp(k, one_minus_k, m, b)
+      if (abs(left + right - whole) <= 1.0e-26_qp*abs(left + right) .or. depth > 60) then
+         s = left + right
+      else
+         s = adaptive_qp(k, one_minus_k, a, m, left, depth + 1) + adaptive_qp(k, one_minus_k, m, b, right, depth + 1)
+      end if
+   end function adaptive_qp
+
+   !> The closed-form segment averages near α → π² (down to π² − 8e-6, where 1 − α/π² =
+   !> 8.1e-7) and at β = −19735, against an independent quadrature of 1/(1 − k cos πτ) in
+   !> quadruple precision (k and 1 − k from the double α in quadruple precision): the
+   !> 4-, 2- and 1-piece segmentations of the period and some others, to 2e-14 relative.
+   subroutine average_near_pi2_quad_precision(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), parameter :: alphas(4) = [9.0_wp, 9.8_wp, 9.869_wp, pi2 - 8.0e-6_wp]
+      real(wp), parameter :: ends(2, 9) = reshape([0.0_wp, 0.5_wp, 0.5_wp, 1.0_wp, 1.0_wp, 1.5_wp, 1.5_wp, 2.0_wp, &
+                                                   0.0_wp, 1.0_wp, 1.0_wp, 2.0_wp, 0.0_wp, 2.0_wp, 0.001_wp, 0.003_wp, &
+                                                   0.3_wp, 0.31_wp], [2, 9])
+      real(wp), parameter :: beta = -19735.0_wp
+      real(qp) :: k, one_minus_k, a, b, integral, reference
+      type(hill_model_t) :: m
+      integer :: i, j
+      do i = 1, size(alphas)
+         m = hill_model_t(model_elastic, alphas(i), beta, 0.0_wp)
+         k = real(alphas(i), qp)/(acos(-1.0_qp)**2)
+         one_minus_k = (acos(-1.0_qp)**2 - real(alphas(i), qp))/(acos(-1.0_qp)**2)
+         do j = 1, size(ends, 2)
+            a = acos(-1.0_qp)*real(ends(1, j), qp)
+            b = acos(-1.0_qp)*real(ends(2, j), qp)
+            integral = adaptive_qp(k, one_minus_k, a, b, gauss5_qp(k, one_minus_k, a, b), 0)
+            reference = acos(-1.0_qp)**2 + (real(beta, qp) - acos(-1.0_qp)**2)*integral/(b - a)
+            call check(ctx, segment_average(m, ends(1, j), ends(2, j)), real(reference, wp), rel=2.0e-14_wp, &
+                       message="segment average against quadruple-precision quadrature")
+         end do
+      end do
+   end subroutine average_near_pi2_quad_precision
 
    subroutine mathieu_and_damping(ctx)
       type(test_context_t), intent(inout) :: ctx

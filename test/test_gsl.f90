@@ -215,7 +215,8 @@ contains
    end subroutine tolerance_contract
 
    !> Work counters: rk8pd makes 13 stage evaluations per attempted step, one of
-   !> them reused (FSAL-like dydt_in), and tighter tolerances cost more.
+   !> them reused (FSAL-like dydt_in), plus one per accepted step for the sensitivity
+   !> integrals of the round-off level, and tighter tolerances cost more.
    subroutine work_counted(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(trace_t) :: tr
@@ -226,8 +227,9 @@ contains
       call trace_gsl(model, 1.0e-6_wp, tr, loose, error)
       call trace_gsl(model, 1.0e-13_wp, tr, tight, error)
       call check(ctx, loose%n_steps > 0 .and. loose%n_rejected >= 0, "steps counted")
-      call check(ctx, loose%n_evaluations >= 12*(loose%n_steps + loose%n_rejected) .and. &
-                 loose%n_evaluations <= 14*(loose%n_steps + loose%n_rejected) + 1, "about 13 evaluations per step")
+      ! 13 per step (12 per retry) and one per accepted step for the sensitivity integrals
+      call check(ctx, loose%n_evaluations >= 12*(loose%n_steps + loose%n_rejected) + loose%n_steps .and. &
+                 loose%n_evaluations <= 15*(loose%n_steps + loose%n_rejected) + 1, "about 14 evaluations per step")
       call check(ctx, tight%n_evaluations > loose%n_evaluations, "tighter tolerance costs more")
    end subroutine work_counted
 

@@ -2,7 +2,8 @@
 !> published Mathieu characteristic values and GSL's, the exact boundaries β = 0 and
 !> β = π² of the elastic model, S = ±2 by method auto on every computed boundary,
 !> β = π²/4 inside the first tongue, monotone (Ritz) convergence in the truncation,
-!> agreement of the three formulations, and bad input.
+!> agreement of the three formulations, coexistence (Mathieu never for ν ≠ 0, elastic
+!> S = +2 tongues always), and bad input.
 module test_hill_method
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t, err_invalid_parameter
@@ -29,6 +30,8 @@ contains
          new_unittest("trace_on_boundaries", trace_on_boundaries), &
          new_unittest("quarter_pi2_in_first_tongue", quarter_pi2_in_first_tongue), &
          new_unittest("tongues_open_and_closed", tongues_open_and_closed), &
+         new_unittest("coexistence_by_structure", coexistence_by_structure), &
+         new_unittest("error_bound_against_references", error_bound_against_references), &
          new_unittest("ritz_convergence", ritz_convergence), &
          new_unittest("formulations_agree", formulations_agree), &
          new_unittest("bad_input", bad_input)])
@@ -206,6 +209,114 @@ contains
    !> Open and closed tongues at α = 5, against S by auto inside: the antiperiodic
    !> tongues (orders 1, 3) are open (S < −2 at their middle), the periodic ones
    !> (orders 2, 4) have zero width (S ≤ 2 just beside the double boundary).
+   !> Coexistence at every order below 250: Mathieu at q = 0.5 and 1 never (Ince's theorem;
+   !> its tongues of orders 6–9 are 1e-9 … 4e-13 wide, within a distance threshold of
+   !> 100·tolerance, which took them for closed), its lowest tongues visibly open (S < −2 or
+   !> S > 2 by auto at their middle); the elastic model at α = 2, 5, 8: every S = +2 tongue
+   !> closed, its two computed edges within 1e-10·max(1, |β|), every S = −2 tongue open.
+   subroutine coexistence_by_structure(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(hill_boundary_t), allocatable :: c(:)
+      type(error_t), allocatable :: error
+      type(trace_t) :: tr
+      real(wp), parameter :: qs(2) = [0.5_wp, 1.0_wp], alphas(3) = [2.0_wp, 5.0_wp, 8.0_wp]
+      real(wp) :: nu, edges(2)
+      integer :: k, i, j, order, m, n_orders
+      do k = 1, size(qs)
+         nu = qs(k)*pi2/2.0_wp
+         call hill_boundaries(model_mathieu, nu, -50.0_wp, 250.0_wp, 1.0e-12_wp, c, error)
+         call check(ctx, .not. allocated(error), "mathieu: no error")
+         if (allocated(error)) return
+         call check(ctx, count(c%order >= 6) >= 6, "mathieu: the thin tongues of orders 6 and up are in the window")
+         do i = 1, size(c)
+            if (c(i)%order > 0) call check(ctx, .not. c(i)%coexistent, "mathieu q /= 0: no coexistence")
+         end do
+         do order = 1, 3
+            m = 0
+            do i = 1, size(c)
+               if (c(i)%order /= order) cycle
+               m = m + 1
+               edges(min(m, 2)) = c(i)%beta
+            end do
+            call check(ctx, m == 2, "mathieu: two edges per order")
+            call monodromy_trace(hill_model_t(model_mathieu, nu, sum(edges)/2, 0.0_wp), &
+                                 method_t(method_auto, tolerance=1.0e-12_wp), tr, error)
+            call check(ctx, abs(tr%value) > 2.0_wp, "mathieu: open tongue, |S| > 2 at its middle")
+         end do
+      end do
+      do k = 1, size(alphas)
+         call hill_boundaries(model_elastic, alphas(k), -2.0_wp, 150.0_wp, 1.0e-12_wp, c, error)
+         call check(ctx, .not. allocated(error), "elastic: no error")
+         if (allocated(error)) return
+         n_orders = 0
+         do i = 1, size(c)
+            if (c(i)%order == 0) cycle
+            call check(ctx, c(i)%coexistent .eqv. c(i)%trace_sign == 2, "elastic: S = +2 tongues closed, S = -2 open")
+            if (c(i)%trace_sign /= 2) cycle
+            do j = 1, size(c)
+               if (j /= i .and. c(j)%order == c(i)%order .and. c(j)%trace_sign == 2) then
+                  n_orders = n_orders + 1
+                  call check(ctx, abs(c(j)%beta - c(i)%beta) <= 1.0e-10_wp*max(1.0_wp, abs(c(i)%beta)), &
+                             "elastic: the two edges of an S = +2 tongue agree")
+               end if
+            end do
+         end do
+         call check(ctx, n_orders >= 6, "elastic: several S = +2 tongues seen")
+      end do
+   end subroutine coexistence_by_structure
+
+   !> The error bound of every curve point of the stored 50-digit references
+   !> (data/reference/curve_set.dat, `make_reference.py --curves`: elastic curves at
+   !> α = 2 … 9.8 up to β = 40) bounds its actual error, at tolerances 1e-8, 1e-10, 1e-12,
+   !> and is not vacuous (below 1e-10 relative at 1e-12).
+   subroutine error_bound_against_references(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: file = "data/reference/curve_set.dat"
+      type(hill_boundary_t), allocatable :: c(:)
+      type(error_t), allocatable :: error
+      real(wp) :: alpha(200), beta(200), ref_error, tolerance, err, worst, largest
+      integer :: kind(200), order(200), parity(200), n, unit, ios, i, j, t, found
+      character(len=400) :: line
+      open (newunit=unit, file=file, status="old", action="read", iostat=ios)
+      call check(ctx, ios == 0, "reference table "//file//" read")
+      if (ios /= 0) return
+      n = 0
+      do
+         read (unit, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         if (line(1:1) == "#" .or. len_trim(line) == 0) cycle
+         n = n + 1
+         read (line, *) alpha(n), kind(n), order(n), parity(n), beta(n), ref_error
+      end do
+      close (unit)
+      call check(ctx, n >= 40, "at least 40 reference points")
+      do t = 1, 3
+         tolerance = 10.0_wp**(-6 - 2*t)
+         worst = 0.0_wp
+         largest = 0.0_wp
+         do i = 1, n
+            call hill_boundaries(model_elastic, alpha(i), -50.0_wp, 45.0_wp, tolerance, c, error)
+            call check(ctx, .not. allocated(error), "no error")
+            if (allocated(error)) return
+            found = 0
+            do j = 1, size(c)
+               if (c(j)%trace_sign /= kind(i) .or. c(j)%order /= order(i) .or. c(j)%parity /= parity(i)) cycle
+               found = found + 1
+               err = abs(c(j)%beta - beta(i))
+               worst = max(worst, err/c(j)%error_bound)
+               largest = max(largest, c(j)%error_bound/max(1.0_wp, abs(beta(i))))
+               if (err > c(j)%error_bound) print "(a,es8.1,f6.2,3i3,4es11.3,i6)", "MISS", tolerance, alpha(i), &
+                  kind(i), order(i), parity(i), beta(i), err, c(j)%change, c(j)%error_bound, c(j)%modes
+               call check(ctx, err <= c(j)%error_bound, "error bound of the curve point")
+            end do
+            call check(ctx, found == 1, "the reference curve is found")
+         end do
+         print '(4x,a,es8.1,a,f6.3,a,es9.2)', "tolerance ", tolerance, ": worst error/bound ", worst, &
+            ", largest bound/max(1,|beta|) ", largest
+         if (t == 3) call check(ctx, largest < 1.0e-10_wp, "the bound is not vacuous at tolerance 1e-12")
+      end do
+   end subroutine error_bound_against_references
+
    subroutine tongues_open_and_closed(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(hill_boundary_t), allocatable :: c(:)

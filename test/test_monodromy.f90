@@ -20,15 +20,22 @@ module test_monodromy
    public :: collect_monodromy
 
    !> The stored reference tables, relative to the repository root (where fpm test runs):
-   !> the hard set, and a check set of points of the same kind that no method was tuned on.
-   character(len=*), parameter :: hard_set_files(2) = [character(len=31) :: &
-      "data/reference/hard_set.dat", "data/reference/check_set.dat"]
+   !> the hard set, a check set of points of the same kind that no method was tuned on, and
+   !> the band β ∈ ±[1e-5, 1e-2] ∪ {0}, α ∈ [9.3, π² − 1e-6] (S near 2 with a nearly
+   !> periodic solution, where the error of S is a difference of large contributions).
+   character(len=*), parameter :: hard_set_files(3) = [character(len=31) :: &
+      "data/reference/hard_set.dat", "data/reference/check_set.dat", "data/reference/band_set.dat"]
    !> Tolerances of the hard-set tests (1e-10 is the default of a scene).
    real(wp), parameter :: hard_set_tolerances(3) = [1.0e-8_wp, 1.0e-10_wp, 1.0e-12_wp]
    !> A round-off limited point passes when its error is at most this factor times the
    !> error estimate the method reports with it (the estimate of the round-off level is an
    !> order of magnitude, not a bound).
    real(wp), parameter :: roundoff_factor = 4.0_wp
+   !> gsl at status ok: its estimate, the difference of the last two values of its ladder,
+   !> fell short of the error at 2 of the 288 runs of the three sets (by 1.3× and 1.55×, at
+   !> (9.8, −1e3) and (9.86, 2.47), tolerance 1e-10, errors 1.7e-12 and 2.4e-13: rk8pd's
+   !> values scatter by a few 1e-13 relative there whatever its epsilon below 1e-10)
+   real(wp), parameter :: gsl_estimate_factor = 2.0_wp
 
    !> One point of the reference table.
    type :: reference_point_t
@@ -298,10 +305,10 @@ contains
       end if
    end function expm1_small
 
-   !> Every point of the hard set and of the check set with method `kind` at each of
-   !> `hard_set_tolerances`: no point fails; status ok: error ≤ tolerance and
-   !> error_estimate ≤ tolerance; status round-off limited: error ≤ roundoff_factor ×
-   !> error_estimate.
+   !> Every point of the hard set, the check set and the band set with method `kind` at each
+   !> of `hard_set_tolerances`: no point fails; status ok: error ≤ tolerance, error_estimate
+   !> ≤ tolerance and error ≤ error_estimate (gsl: ≤ gsl_estimate_factor × error_estimate);
+   !> status round-off limited: error ≤ roundoff_factor × error_estimate.
    subroutine check_hard_set(ctx, kind)
       type(test_context_t), intent(inout) :: ctx
       integer, intent(in) :: kind
@@ -342,6 +349,8 @@ contains
                else
                   worst_ok = max(worst_ok, err)
                   call check(ctx, err <= tolerance, trim(where)//" error "//real_text(err)//" > tolerance")
+                  call check(ctx, err <= merge(gsl_estimate_factor, 1.0_wp, kind == method_gsl)*tr%error_estimate, &
+                             trim(where)//" error "//real_text(err)//" above its estimate "//real_text(tr%error_estimate))
                   call check(ctx, tr%error_estimate >= 0.0_wp .and. tr%error_estimate <= tolerance, &
                              trim(where)//" error estimate "//real_text(tr%error_estimate)//" outside [0, tolerance]")
                end if

@@ -25,6 +25,7 @@ contains
          new_unittest("layout_and_sample_times", layout_and_sample_times), &
          new_unittest("bounce_from_zero_angle", bounce_from_zero_angle), &
          new_unittest("repeat_from_output", repeat_from_output), &
+         new_unittest("onset_summary", onset_summary), &
          new_unittest("bad_input", bad_input), &
          new_unittest("seconds_and_physical", seconds_and_physical), &
          new_unittest("physical_bad_input", physical_bad_input), &
@@ -97,7 +98,7 @@ contains
       character(len=1024), allocatable :: lines(:)
       type(error_t), allocatable :: error
       real(wp), allocatable :: rows(:, :)
-      real(wp) :: rho, omega, period
+      real(wp) :: rho, omega, period, drift, scale, row_drift
       integer :: j
       call run_series_text("series_layout", "&series alpha = 3.7, beta = 2.47, periods = 7, samples_per_period = 13 /", &
                            ", tolerance = 1e-10", lines, error)
@@ -131,7 +132,49 @@ contains
          + 0.5_wp*omega**2*(rows(2, :) - 0.1_wp)**2 - 9.81_wp*rows(5, :)))) < 1.0e-12_wp, "E column")
       call check(ctx, maxval(abs(rows(6, :) - rows(6, 1))) < 1.0e-8_wp*abs(rows(6, 1)) + 1.0e-9_wp, &
          "energy conserved on the samples")
+      ! the header's drift is the largest over the written rows (their E column, 17 digits)
+      drift = header_number(lines, "max|E - E(0)|/E_scale = ")
+      scale = header_number(lines, "summary: E_scale = ")
+      row_drift = maxval(abs(rows(6, :) - rows(6, 1)))/scale
+      call check(ctx, drift, row_drift, rel=1.0e-6_wp, abs=1.0e-3_wp*row_drift, &
+                 message="header drift = max over the written rows")
+      call check(ctx, drift > 0.0_wp .and. header_number(lines, "over the written rows (") > 0.0_wp, &
+                 "both drifts stated")
    end subroutine layout_and_sample_times
+
+   !> The summary's onset at (e) from φ0 = 1e-8: the predicted X (the linear swing) within
+   !> 0.1 radial period of the observed Y, and the multiplier law on its own line.
+   subroutine onset_summary(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=1024), allocatable :: lines(:)
+      type(error_t), allocatable :: error
+      real(wp) :: predicted, observed, law
+      call run_series_text("series_onset", "&series alpha = 7.88, beta = 3.95, phi0 = 1e-8, periods = 12, "// &
+                           "samples_per_period = 4 /", ", tolerance = 1e-10", lines, error)
+      call check(ctx, .not. allocated(error), "run succeeds")
+      if (allocated(error)) return
+      predicted = header_number(lines, "u(t) = ")
+      observed = header_number(lines, " s), observed ")
+      law = header_number(lines, "ln(0.1/|phi0|)/ln(lambda_max) = ")
+      call check(ctx, any(index(lines, "# summary: onset (|phi| > 0.1): predicted n* = ") == 1), "summary line form")
+      call check(ctx, predicted > 0.0_wp .and. observed > 0.0_wp .and. law > 0.0_wp, "three onsets stated")
+      call check(ctx, predicted, observed, abs=0.1_wp, message="predicted onset within 0.1 period of the observed")
+      call check(ctx, observed - law > 0.2_wp, "the multiplier law alone comes earlier")
+   end subroutine onset_summary
+
+   !> The number that follows `key` on the first header line containing it (−1 if none).
+   real(wp) function header_number(lines, key) result(x)
+      character(len=*), intent(in) :: lines(:), key
+      integer :: i, at, ios
+      x = -1.0_wp
+      do i = 1, size(lines)
+         at = index(lines(i), key)
+         if (at == 0 .or. lines(i)(1:1) /= "#") cycle
+         read (lines(i)(at + len(key):), *, iostat=ios) x
+         if (ios /= 0) x = -1.0_wp
+         return
+      end do
+   end function header_number
 
    !> φ0 = 0: the swing never starts (x ≡ 0 exactly) and z follows ρ − a cos ωt.
    subroutine bounce_from_zero_angle(ctx)
@@ -148,7 +191,7 @@ contains
       if (allocated(error)) return
       rows = rows_of(lines)
       call check(ctx, all(rows(4, :) == 0.0_wp) .and. all(rows(7, :) == 0.0_wp), "x = vx = 0 exactly")
-      call check(ctx, any(index(lines, "predicted n* = ln(0.1/|phi0|)/ln(lambda_max) = never") > 0), &
+      call check(ctx, any(index(lines, "u(t) = never") > 0) .and. any(index(lines, "ln(lambda_max) = never") > 0), &
          "no onset predicted")
       call check(ctx, any(index(lines, "observed not within the run") > 0), "no onset observed")
       p = pendulum_at(7.88_wp, 3.95_wp)

@@ -24,10 +24,14 @@ Run from the repository root (installs mpmath and gmpy2 from PyPI if missing):
 writes data/reference/hard_set.dat. Takes a few minutes on 2 cores. With --check
 (`python3 data/reference/make_reference.py --check`) it writes
 data/reference/check_set.dat instead: points of the same kind that no method was
-tuned on (see `check_points`).
+tuned on (see `check_points`). With --curves it writes data/reference/curve_set.dat: points of the
+elastic transition curves (see `curve_points`). With --band it writes data/reference/band_set.dat: the
+band beta in +-[1e-5, 1e-2] and {0}, alpha in [9.3, pi^2 - 1e-6], where S is close to 2
+and the solution x ~ r(tau) of beta = 0 is nearly periodic (see `band_points`).
 """
 import sys
 import multiprocessing as mproc
+import random
 
 import mpmath as mp
 
@@ -57,12 +61,13 @@ def mathieu_values(q, n_terms=80):
     return min(ea), min(eb)
 
 
-def trace(model, alpha, beta, order, tail, dps):
-    """S, the Wronskian defect and the number of steps at (model, alpha, beta)."""
+def trace(model, alpha, beta, order, tail, dps, solutions=False):
+    """S, the Wronskian defect and the number of steps at (model, alpha, beta); with
+    solutions, (u, u', v, v') at tau = 1 instead."""
     with mp.workdps(dps):
         pi = mp.pi
         alpha = mp.mpf(alpha)
-        beta = mp.mpf(beta)
+        beta = mp.mpf(beta) if not isinstance(beta, mp.mpf) else +beta
         k = alpha / pi**2
         # Taylor coefficients of cos(pi h) and sin(pi h)
         pc = [mp.mpf(0)] * (order + 1)
@@ -144,9 +149,110 @@ def trace(model, alpha, beta, order, tail, dps):
             u, du, v, dv = u_new, du_new, v_new, dv_new
             tau = tau + h if tau + h < 1 else mp.mpf(1)
             steps += 1
+        if solutions:
+            return u, du, v, dv
         s = 2 * (u * dv + du * v)
         wronskian_defect = abs(u * dv - du * v - 1)
         return s, wronskian_defect, steps
+
+
+def half_period(model, alpha, beta, order, tail, dps):
+    """u, u', v, v' at tau = 1 (the even and odd solutions), by the same Taylor integration
+    as `trace`, at the working precision dps."""
+    with mp.workdps(dps):
+        return trace(model, alpha, beta, order, tail, dps, solutions=True)
+
+
+def curve_root(point, order, tail, dps):
+    """beta on the transition curve of `point` = (alpha, kind, order_n, parity, start): the
+    root of the component of Phi(1) that vanishes there, u'(1) (periodic even, a_n), v(1)
+    (periodic odd, b_n), u(1) (antiperiodic even), v'(1) (antiperiodic odd): a simple root
+    even where the two curves of an order coincide (S - 2 only touches 0 there). Secant
+    method from the start value (hillstab's Hill method; the root found must lie within
+    1e-6 of it, or the start led to another curve)."""
+    alpha, kind, n, parity, start = point
+    index = {(2, 1): 1, (2, -1): 2, (-2, 1): 0, (-2, -1): 3}[(kind, parity)]
+    with mp.workdps(dps):
+        def f(b):
+            return half_period(ELASTIC, alpha, b, order, tail, dps)[index]
+        b0 = mp.mpf(start)
+        b1 = b0 + mp.mpf("1e-7") * max(1, abs(b0))
+        f0, f1 = f(b0), f(b1)
+        for _ in range(40):
+            if f1 == f0:
+                break
+            b2 = b1 - f1 * (b1 - b0) / (f1 - f0)
+            b0, f0 = b1, f1
+            b1, f1 = b2, f(b2)
+            if abs(b1 - b0) < mp.mpf(10) ** (-(dps - 6)) * max(1, abs(b1)):
+                break
+        if abs(b1 - mp.mpf(start)) > mp.mpf("1e-6") * max(1, abs(mp.mpf(start))):
+            raise RuntimeError("curve point %r: root %s far from its start" % (point, b1))
+        return b1
+
+
+def curve_line(point):
+    b1 = curve_root(point, 40, mp.mpf("1e-26"), 32)
+    b2 = curve_root(point, 56, mp.mpf("1e-34"), 44)
+    with mp.workdps(44):
+        line = "%s %d %d %d %s %s" % (repr(point[0]), point[1], point[2], point[3], mp.nstr(b2, 25),
+                                      mp.nstr(max(abs(b1 - b2) / max(1, abs(b2)), mp.mpf("1e-40")), 3))
+    print(line, file=sys.stderr, flush=True)
+    return line
+
+
+def curve_points():
+    """Elastic transition curves crossing beta in [-50, 40] at alpha = 2, 5, 8, 9, 9.5, 9.8,
+    every order from 1 (beta = 0 and beta = pi^2, exact curves, left out): (alpha, kind,
+    order, parity, start) with the start from hillstab's Hill method at tolerance 1e-12."""
+    return [
+        (2.0, -2, 1, -1, 1.763509184004056),
+        (2.0, -2, 1, 1, 3.267199012747406),
+        (2.0, -2, 3, 1, 21.98879192037978),
+        (2.0, -2, 3, -1, 21.99247997400036),
+        (2.0, 2, 4, 1, 38.98677076411258),
+        (2.0, 2, 4, -1, 38.98677076411258),
+        (5.0, -2, 1, -1, 0.8766005119978297),
+        (5.0, -2, 1, 1, 4.692232190876094),
+        (5.0, -2, 3, 1, 20.73871418421774),
+        (5.0, -2, 3, -1, 20.80411287458061),
+        (5.0, 2, 4, -1, 36.20376810710144),
+        (5.0, 2, 4, 1, 36.20376810710145),
+        (8.0, -2, 1, -1, 0.2186457591441968),
+        (8.0, -2, 1, 1, 6.598215026305491),
+        (8.0, -2, 3, 1, 17.69592098774797),
+        (8.0, -2, 3, -1, 18.06998018126381),
+        (8.0, 2, 4, 1, 29.54450311629769),
+        (8.0, 2, 4, -1, 29.54450311629769),
+        (9.0, -2, 1, -1, 0.07126887852946062),
+        (9.0, -2, 1, 1, 7.519300631954724),
+        (9.0, -2, 3, 1, 15.69478945730775),
+        (9.0, -2, 3, -1, 16.37402817160946),
+        (9.0, 2, 4, 1, 25.21128316631184),
+        (9.0, 2, 4, -1, 25.21128316631185),
+        (9.0, -2, 5, 1, 37.15669612162398),
+        (9.0, -2, 5, -1, 37.17481366658214),
+        (9.5, -2, 1, -1, 0.02011554098864465),
+        (9.5, -2, 1, 1, 8.18200879144145),
+        (9.5, -2, 3, 1, 14.03810064801171),
+        (9.5, -2, 3, -1, 15.02912488671466),
+        (9.5, 2, 4, 1, 21.62850848213387),
+        (9.5, 2, 4, -1, 21.6285084821341),
+        (9.5, -2, 5, 1, 30.89516312344354),
+        (9.5, -2, 5, -1, 30.93842011641719),
+        (9.8, -2, 1, -1, 0.001667896825336967),
+        (9.8, -2, 1, 1, 8.89869428900289),
+        (9.8, -2, 3, 1, 12.08274819100451),
+        (9.8, -2, 3, -1, 13.49600122124452),
+        (9.8, 2, 4, 1, 17.34529364942884),
+        (9.8, 2, 4, -1, 17.3452936494303),
+        (9.8, -2, 5, 1, 23.24290253287949),
+        (9.8, -2, 5, -1, 23.3626233928055),
+        (9.8, 2, 6, 1, 30.71794188273553),
+        (9.8, 2, 6, -1, 30.71794188273812),
+        (9.8, -2, 7, 1, 39.5367576338566),
+        (9.8, -2, 7, -1, 39.54930580637034),
+    ]
 
 
 def point_line(point):
@@ -191,7 +297,8 @@ def points():
 def check_points():
     """A second set of the same kind at other points, for checking that what was tuned on the
     hard set holds elsewhere: larger |beta| (more oscillations or more growth), alpha = 9.7 and
-    9.86, and the Mathieu model at q = 10 and q = 30 on its a0 and b1 curves."""
+    9.86, the Mathieu model at q = 10 and q = 30 on its a0 and b1 curves, and one more Mathieu
+    point (nu = 226.18, beta = -193.40) found by an independent check."""
     pts = []
     for alpha in (0.0, 5.0, 9.7, 9.86):
         for beta in (-3e4, 3e4, 3e5):
@@ -206,19 +313,68 @@ def check_points():
             nu = float(q * mp.pi**2 / 2)
             pts.append((MATHIEU, nu, float(mp.pi**2 / 4 * a0), "mathieu q = %d on a0 (S = +2)" % qv))
             pts.append((MATHIEU, nu, float(mp.pi**2 / 4 * b1), "mathieu q = %d on b1 (S = -2)" % qv))
+    # a Mathieu point where rk's round-off level was 4.4x below its error (S = -3.46e6)
+    pts.append((MATHIEU, 226.17754433821787, -193.3961568448847, "mathieu rk round-off"))
     return pts
 
 
+def band_points():
+    """The band beta in +-[1e-5, 1e-2] and {0}, alpha in [9.3, pi^2 - 1e-6]: four points
+    reported as missed by earlier versions, then points drawn with a fixed seed: alpha
+    uniform in [9.3, pi^2 - 1e-6] for half of them and with pi^2 - alpha log-uniform in
+    [1e-6, pi^2 - 9.3] for the other half (the dip deepens as alpha -> pi^2); |beta|
+    log-uniform in [1e-5, 1e-2] with a random sign, one point in eight at beta = 0."""
+    pts = [(ELASTIC, 9.82, -0.0007, "band: magnus6 missed"), (ELASTIC, 9.73, 0.002, "band: magnus6 missed"),
+           (ELASTIC, 9.536632300815704, 0.0004637511878637649, "band: auto missed"),
+           (ELASTIC, 9.52, 0.0015, "band: auto missed")]
+    rng = random.Random(20261201)
+    top = float(mp.pi**2) - 1e-6
+    for i in range(36):
+        if i % 2 == 0:
+            alpha = rng.uniform(9.3, top)
+        else:
+            alpha = float(mp.pi**2) - 10 ** rng.uniform(-6, float(mp.log10(mp.pi**2 - 9.3)))
+            alpha = min(max(alpha, 9.3), top)
+        if i % 8 == 7:
+            beta = 0.0
+        else:
+            beta = rng.choice((-1, 1)) * 10 ** rng.uniform(-5, -2)
+        pts.append((ELASTIC, alpha, beta, "band"))
+    return pts
+
+
+def curves_main(out, serial):
+    pts = curve_points()
+    with mproc.Pool(1 if serial else 2) as pool:
+        lines = pool.map(curve_line, pts, chunksize=1)
+    with open(out, "w") as f:
+        f.write("# Reference transition curves of the elastic model (eq. (25)), made by\n")
+        f.write("# data/reference/make_reference.py --curves (mpmath %s, Taylor series, 44 digits): beta where\n"
+                % mp.__version__)
+        f.write("# the component of Phi(1) = [[u, v], [u', v']] that vanishes on the curve is 0 (u'(1): periodic\n")
+        f.write("# even a_n; v(1): periodic odd b_n; u(1): antiperiodic even; v'(1): antiperiodic odd), by the secant\n")
+        f.write("# method; ref_error: |beta(order 40, 32 digits) - beta(order 56, 44 digits)|/max(1, |beta|)\n")
+        f.write("# columns: alpha kind order parity beta ref_error\n")
+        for line in lines:
+            f.write(line + "\n")
+
+
 def main():
-    args = [a for a in sys.argv[1:] if a != "--check"]
+    args = [a for a in sys.argv[1:] if a not in ("--check", "--band", "--serial", "--curves")]
+    if "--curves" in sys.argv[1:]:
+        curves_main(args[0] if args else "data/reference/curve_set.dat", "--serial" in sys.argv[1:])
+        return
     check = "--check" in sys.argv[1:]
-    out = args[0] if args else ("data/reference/check_set.dat" if check else "data/reference/hard_set.dat")
-    pts = check_points() if check else points()
-    with mproc.Pool(2) as pool:
+    band = "--band" in sys.argv[1:]
+    default = "data/reference/band_set.dat" if band else (
+        "data/reference/check_set.dat" if check else "data/reference/hard_set.dat")
+    out = args[0] if args else default
+    pts = band_points() if band else (check_points() if check else points())
+    with mproc.Pool(1 if "--serial" in sys.argv[1:] else 2) as pool:
         lines = pool.map(point_line, pts, chunksize=1)
     with open(out, "w") as f:
         f.write("# Reference traces S of x'' + Q(tau) x = 0 at hillstab's %s points, made by\n"
-                % ("check" if check else "hard"))
+                % ("band" if band else ("check" if check else "hard")))
         f.write("# data/reference/make_reference.py (mpmath %s, Taylor series, 50 digits).\n" % mp.__version__)
         f.write("# model: 0 elastic Q of eq. (25), 1 mathieu q = beta - alpha cos(pi tau); alpha, beta: the exact\n")
         f.write("# doubles used; sign, ln_abs_S: sign and natural log of |S|; S: S itself (0.0 when |S| > 1e300);\n")

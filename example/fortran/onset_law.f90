@@ -2,7 +2,9 @@
 !> unstable cases (b), (e), (g) of Fig. 4 and φ0 = 1e-2, 1e-5, 1e-10, 1e-15, 1e-20, the
 !> predicted number of radial periods until |φ| first exceeds 0.1,
 !> n* = ln(0.1/φ0)/ln λ_max (λ_max from the core), beside the observed one (the first
-!> crossing on DOP853's dense output at tolerance 1e-10, located to round-off).
+!> crossing on DOP853's dense output at tolerance 1e-10, located to round-off), and the
+!> prediction from the full linear solution (`linear_onset_periods`: the even solution of
+!> the Hill equation from the start at rest, the first |x|/r = sin 0.1).
 !>
 !> Usage: fpm run --example onset_law [-- OUTPUT]  (default out/onset_law.dat); plot with
 !> gnuplot plots/onset.gp. The file is written atomically, with a `# columns:` line and
@@ -17,7 +19,8 @@ program onset_law
    use hillstab_hill_floquet, only: floquet_from_trace, largest_multiplier_modulus
    use hillstab_integrate_monodromy, only: monodromy_trace, method_t, method_gsl
    use hillstab_pendulum_equations, only: pendulum_from_chart, pendulum_initial_state
-   use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat
+   use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat, &
+      linear_onset_periods
    use hillstab_batch_output, only: output_file_t, open_output, write_header, write_text, commit_output, discard_output
    implicit none
    character(len=*), parameter :: labels(3) = ["b", "e", "g"]
@@ -32,7 +35,7 @@ program onset_law
    type(trace_t) :: tr
    character(len=256) :: path
    character(len=300) :: line
-   real(wp) :: lambda, predicted, observed, y(4)
+   real(wp) :: lambda, predicted, observed, linear, y(4)
    integer :: i, j, status
 
    path = "out/onset_law.dat"
@@ -49,8 +52,11 @@ program onset_law
       "n_predicted = ln(0.1/phi0)/ln(lambda_max) radial periods; n_observed: first |phi| > 0.1 on the dense "// &
       "output of DOP853 (tolerance 1e-10)", &
       "t_*: the same in seconds; difference = n_observed - n_predicted (constant in the linear regime)", &
-      "status: 0 ok; 2 failed (integration incomplete: n_observed = -1 is a placeholder)"], &
-      "case alpha beta phi0 lambda_max n_predicted n_observed t_predicted t_observed difference status", error)
+      "status: 0 ok; 2 failed (integration incomplete: n_observed = -1 is a placeholder)", &
+      "n_linear: first |x|/r = sin(0.1) of the linear swing x = r(0) sin(phi0) u(t), u the even solution of the "// &
+      "Hill equation; linear_difference = n_observed - n_linear"], &
+      "case alpha beta phi0 lambda_max n_predicted n_observed t_predicted t_observed difference status n_linear "// &
+      "linear_difference", error)
    do i = 1, size(cases, 2)
       call monodromy_trace(hill_model_t(model_elastic, cases(1, i), cases(2, i), 0.0_wp), &
                            method_t(method_gsl, tolerance=1.0e-13_wp), tr, error)
@@ -72,13 +78,14 @@ program onset_law
             observed = watch%onset_time/watch%pendulum%period
          end if
          predicted = onset_periods(phi0s(j), default_phi_sat, lambda)
-         write (line, '(i2,2f6.2,es9.1,es15.7,2f12.5,2es15.7,f10.5,i3)') index("abcdefgh", labels(i)), cases(:, i), &
-            phi0s(j), lambda, predicted, observed, predicted*watch%pendulum%period, &
-            observed*watch%pendulum%period, observed - predicted, status
+         linear = linear_onset_periods(cases(1, i), cases(2, i), phi0s(j), default_phi_sat)
+         write (line, '(i2,2f6.2,es9.1,es15.7,2f12.5,2es15.7,f10.5,i3,f12.5,f10.5)') index("abcdefgh", labels(i)), &
+            cases(:, i), phi0s(j), lambda, predicted, observed, predicted*watch%pendulum%period, &
+            observed*watch%pendulum%period, observed - predicted, status, linear, observed - linear
          call write_text(file, trim(line), error)
          if (allocated(error)) exit
          write (*, '(a,a,a,es8.1,a,f9.4,a,f9.4,a)') "(", labels(i), ") phi0 = ", phi0s(j), ": predicted ", &
-            predicted, " periods, observed ", observed, " periods"
+            predicted, " periods (law), ", linear, " (linear solution), observed ", observed, " periods"
       end do
       if (allocated(error)) exit
    end do

@@ -257,7 +257,7 @@ contains
             call verify_boundary(scene%model, alpha, curves(i)%beta, curves(i)%trace_sign, scene%method%tolerance, &
                                  check, cause)
             rows(i)%check = check%trace
-            rows(i)%beta_error = max(curves(i)%change, check%beta_error)
+            rows(i)%beta_error = max(curves(i)%error_bound, check%beta_error)
             if (allocated(cause)) then
                rows(i)%status = status_failed
                deallocate (cause)
@@ -710,8 +710,13 @@ contains
          integer_text(n_curves)//" curves"
       n = n + 1; text(n) = "kind: S on the curve (+2 periodic, -2 antiperiodic); order: n of a_n/b_n; branch: exact 1 = a_n "// &
          "(even), 2 = b_n (odd), approximate 1 = lower, 2 = upper edge"
-      n = n + 1; text(n) = "coexist: 1 when both curves of this order coincide (zero-width tongue, within "// &
-         real_text(coexistence_threshold)//"*tolerance*max(1,|beta|))"
+      if (exact_method(scene)) then
+         n = n + 1; text(n) = "coexist: 1 when both curves of this order coincide (zero-width tongue), by the structure "// &
+            "of Q: elastic S = +2 tongues always, S = -2 only at alpha = 0; Mathieu only at nu = 0 (Ince)"
+      else
+         n = n + 1; text(n) = "coexist: 1 when both curves of this order coincide (zero-width tongue, within "// &
+            real_text(coexistence_threshold)//"*tolerance*max(1,|beta|))"
+      end if
       n = n + 1; text(n) = "status: 0 ok, 1 check by auto limited by round-off, 2 failed the check; check: S by auto "// &
          "at the point (approximate: S_method)"
       n = n + 1; text(n) = "beta_error: estimated error of beta; modes: Fourier modes of the truncation (approximate: pieces)"

@@ -29,7 +29,8 @@ module hillstab_batch_task_series
    use hillstab_integrate_rk, only: rk_step_t, rk_dense_value
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_system_t, pendulum_from_chart, pendulum_initial_state, &
       pendulum_angle, pendulum_energy, pendulum_radius, px, pz, pvx, pvz
-   use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat
+   use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat, &
+      linear_onset_periods
    use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, open_scene_output, physical_summary
    use hillstab_batch_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail
@@ -60,7 +61,8 @@ module hillstab_batch_task_series
       type(pendulum_t) :: pendulum               !! parameters and derived quantities
       real(wp) :: max_abs_phi = 0.0_wp           !! largest |φ| [rad]
       real(wp) :: time_of_max_phi = 0.0_wp       !! where [s]
-      real(wp) :: energy_drift = 0.0_wp          !! max |E − E(0)| / energy scale
+      real(wp) :: energy_drift = 0.0_wp          !! max |E − E(0)| / energy scale over the written rows
+      real(wp) :: energy_drift_steps = 0.0_wp    !! the same over the integrator's step ends
       real(wp) :: energy_start = 0.0_wp          !! E(0) [J/kg]
       real(wp) :: energy_scale = 0.0_wp          !! ½|v|² + ½ω²(r − r0)² + g|z| at t = 0 [J/kg]
       real(wp) :: energy_end = 0.0_wp            !! E at the end [J/kg]
@@ -70,7 +72,10 @@ module hillstab_batch_task_series
       real(wp) :: lambda_max = -1.0_wp           !! largest multiplier modulus of x per radial period
       logical :: stable = .false.                !! the chart's verdict
       integer :: status = status_failed          !! of the core's λ_max (hillstab_core_status)
-      real(wp) :: onset_predicted = -1.0_wp      !! n* [periods]; −1: no onset expected
+      !> first |φ| = φ_sat of the linear swing from the start (`linear_onset_periods`; damped:
+      !> the multiplier law) [periods]; −1: no onset expected
+      real(wp) :: onset_predicted = -1.0_wp
+      real(wp) :: onset_law = -1.0_wp            !! n* = ln(φ_sat/|φ0|)/ln λ_max [periods]; −1: none
       real(wp) :: onset_observed = -1.0_wp       !! first |φ| > φ_sat [periods]; −1: not within the run
    end type series_summary_t
 
@@ -270,10 +275,16 @@ contains
             summary%trace = tr%value
             summary%lambda_max = largest_multiplier_modulus(f)
             summary%stable = f%stable
-            summary%onset_predicted = onset_periods(plan%phi0, default_phi_sat, summary%lambda_max)
+            summary%onset_law = onset_periods(plan%phi0, default_phi_sat, summary%lambda_max)
+            summary%onset_predicted = summary%onset_law
+            if (scene%epsilon == 0.0_wp .and. summary%onset_law >= 0.0_wp) &
+               summary%onset_predicted = linear_onset_periods(plan%alpha, plan%beta, plan%phi0, default_phi_sat)
          end if
 
          watch%pendulum = summary%pendulum
+         ! the rows the second pass writes: their energies are what the user reads
+         watch%samples_per_period = plan%samples_per_period
+         watch%n_samples = int(plan%periods, int64)*plan%samples_per_period
          y = initial_state(plan, summary%pendulum)
          t_end = sample_time(summary%pendulum, n_samples, plan%samples_per_period)
          call pendulum_integrate(watch, y, t_end, scene%method%tolerance, summary%work, cause)
@@ -286,7 +297,8 @@ contains
          summary%energy_start = watch%energy_start
          summary%energy_scale = watch%energy_scale
          summary%energy_end = watch%energy_last
-         summary%energy_drift = watch%max_energy_error/watch%energy_scale
+         summary%energy_drift = watch%max_sample_energy_error/watch%energy_scale
+         summary%energy_drift_steps = watch%max_energy_error/watch%energy_scale
          summary%energy_increases = watch%energy_increases
          if (watch%onset_time >= 0.0_wp) summary%onset_observed = watch%onset_time/summary%pendulum%period
    end subroutine series_summary
@@ -377,7 +389,8 @@ contains
          " s (16 dense points per step)"
       n = n + 1; extra(n) = "summary: energy E(0) = "//fmt(s%energy_start)//" J/kg, E(end) = "//fmt(s%energy_end)// &
          " J/kg, "//merge("change", "drift ", scene%epsilon > 0.0_wp)//" max|E - E(0)|/E_scale = "// &
-         fmt(s%energy_drift)//" over the step ends"//merge(" (damped: the dissipated energy, not an error)", &
+         fmt(s%energy_drift)//" over the written rows ("//fmt(s%energy_drift_steps)//" over the integrator's "// &
+         "step ends)"//merge(" (damped: the dissipated energy, not an error)", &
          "                                              ", scene%epsilon > 0.0_wp)
       n = n + 1; extra(n) = "summary: E_scale = "//fmt(s%energy_scale)// &
          " J/kg (1/2 |v|^2 + 1/2 omega^2 (r - r0)^2 + g |z| at t = 0; E itself may be near 0)"
@@ -396,9 +409,19 @@ contains
             " swing), chart verdict "//merge("stable  ", "unstable", s%stable)//", status "// &
             integer_text(s%status)//" ("//status_name(s%status)//")"
       end if
-      n = n + 1; extra(n) = "summary: onset (|phi| > "//real_text(default_phi_sat)//"): predicted n* = "// &
-         "ln(0.1/|phi0|)/ln(lambda_max) = "//periods_text(s%onset_predicted, "never (no growth or phi0 = 0)")// &
-         ", observed "//periods_text(s%onset_observed, "not within the run")
+      if (scene%epsilon == 0.0_wp) then
+         n = n + 1; extra(n) = "summary: onset (|phi| > "//real_text(default_phi_sat)//"): predicted n* = "// &
+            "first |x|/r = sin(0.1) of the linear swing x = r(0) sin(phi0) u(t) = "// &
+            periods_text(s%onset_predicted, "never (no growth or phi0 = 0)")// &
+            ", observed "//periods_text(s%onset_observed, "not within the run")
+      else
+         n = n + 1; extra(n) = "summary: onset (|phi| > "//real_text(default_phi_sat)//"): predicted n* = "// &
+            "ln(0.1/|phi0|)/ln(lambda_max) (damped) = "//periods_text(s%onset_predicted, &
+            "never (no growth or phi0 = 0)")//", observed "//periods_text(s%onset_observed, "not within the run")
+      end if
+      n = n + 1; extra(n) = "summary: onset law (the multiplier alone): n* = ln(0.1/|phi0|)/ln(lambda_max) = "// &
+         periods_text(s%onset_law, "never (no growth or phi0 = 0)")// &
+         "; u: the even solution of the Hill equation x'' + Q x = 0 about the bounce, tau = omega t/pi"
       n = n + 1; extra(n) = "units: t [s], r [m], phi [rad], x, z [m], E [J/kg], vx, vz [m/s]"
       lines = scene_header(scene, "hillstab "//version_string//": the nonlinear elastic pendulum (task series)", extra(:n))
    contains

@@ -58,7 +58,8 @@
 module hillstab_curves_hill_method
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_singular, err_accuracy
-   use hillstab_hill_models, only: check_model_alpha, model_hill_k, model_hill_coupling, model_fourier_decay
+   use hillstab_hill_models, only: check_model_alpha, model_hill_k, model_hill_coupling, model_fourier_decay, model_elastic
+   use hillstab_hill_model_elastic, only: one_minus_alpha_over_pi2
    use hillstab_ffi_lapack, only: dsbgv, dgeev
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
@@ -66,7 +67,7 @@ module hillstab_curves_hill_method
    public :: hill_boundary_t, hill_boundaries, hill_block_eigenvalues, hill_block_name
    public :: block_periodic_even, block_periodic_odd, block_antiperiodic_even, block_antiperiodic_odd
    public :: formulation_inverted_pencil, formulation_pencil, formulation_nonsymmetric
-   public :: hill_initial_modes, hill_max_modes, block_order, coexistence_threshold
+   public :: hill_initial_modes, hill_max_modes, block_order, coexistence_threshold, structural_coexistence
 
    !> Periodic, cosine-type: curves a₀, a₂, a₄, … (S = +2).
    integer, parameter :: block_periodic_even = 1
@@ -87,7 +88,9 @@ module hillstab_curves_hill_method
    !> Largest truncation (modes per block) tried before giving up.
    integer, parameter :: hill_max_modes = 40000
    !> Two curves of one order closer than this times tolerance·max(1, |β|) count as one
-   !> (zero-width tongue, coexistence).
+   !> (zero-width tongue, coexistence) for the approximate methods of the boundaries task,
+   !> whose piecewise-constant Q has no structure to decide it by; the exact curves use
+   !> `structural_coexistence`.
    real(wp), parameter :: coexistence_threshold = 100.0_wp
 
    !> One point of a transition curve at the α of the call.
@@ -97,7 +100,10 @@ module hillstab_curves_hill_method
       integer :: order = 0             !! n of a_n / b_n
       integer :: parity = 1            !! +1 even (a_n, cosine-type), −1 odd (b_n, sine-type)
       integer :: modes = 0             !! modes of the block's truncation
-      real(wp) :: change = 0.0_wp      !! change between the last two truncations (error bound estimate)
+      real(wp) :: change = 0.0_wp      !! change between the last two truncations
+      !> bound of the error of beta: the truncation change or the rounding bound of the
+      !> eigensolver (`rounding_bound`), whichever is larger
+      real(wp) :: error_bound = 0.0_wp
       logical :: coexistent = .false.  !! the other curve of this order coincides (zero-width tongue)
    end type hill_boundary_t
 
@@ -115,6 +121,57 @@ contains
       case default; name = "unknown"
       end select
    end function hill_block_name
+
+   !> Whether the two curves of every order n ≥ 1 of this kind (S = +2 or −2) coincide: decided
+   !> by the structure of the blocks, not by the distance of two computed eigenvalues (thin
+   !> tongues — Mathieu q = 1 at order 9 has width 4e-13, below the error of its edges —
+   !> cannot be told from closed ones by a threshold).
+   !>
+   !> On the Fourier modes the even (cosine) and odd (sine) blocks of one kind are the same
+   !> matrix except where the lowest modes meet their mirror images: in the periodic
+   !> blocks the cosine block has the extra mode 0, coupled to mode 1 by the weight
+   !> c(1) of cos πτ there (`model_hill_coupling` at t = 1); in the antiperiodic blocks the
+   !> first diagonal entries differ by ±c(1/4)/2. When that weight is 0 the cosine block is
+   !> block-triangular over the sine block (periodic: its eigenvalues are a₀ and those of the
+   !> sine block) or equal to it (antiperiodic), and every tongue of that kind has zero
+   !> width. For the elastic model c(t) = α(1 − t): the periodic tongues (S = +2) are closed
+   !> for every α — the two 2-periodic solutions coexist — and the antiperiodic ones only at
+   !> α = 0 (their widths are measured nonzero, falling geometrically with the order). For
+   !> the Mathieu model c = ν: no tongue is closed for ν ≠ 0 (Ince's theorem), all at ν = 0.
+   elemental logical function structural_coexistence(kind, alpha, trace_sign) result(closed)
+      integer, intent(in) :: kind        !! a model constant
+      real(wp), intent(in) :: alpha      !! α (ν for the Mathieu model)
+      integer, intent(in) :: trace_sign  !! +2 periodic, −2 antiperiodic
+      closed = model_hill_coupling(kind, alpha, merge(1.0_wp, 0.25_wp, trace_sign == 2)) == 0.0_wp
+   end function structural_coexistence
+
+   !> Rounding error bound of an eigenvalue β of the inverted pencil P z = μ (A − σP) z,
+   !> β = σ + 1/μ (the default formulation): for a symmetric-definite pencil LAPACK's
+   !> computed μ lies within p(n) ε ‖P‖ ‖(A − σP)⁻¹‖ of the exact one (the Users' Guide
+   !> bound; its modest function of n taken as √n, n the modes), and ‖P‖ ≤ 1 + k, ‖(A − σP)⁻¹‖ ≤
+   !> 1/((β₁ − σ)(1 − k)) since A − σP ≥ (β₁ − σ) P ≥ (β₁ − σ)(1 − k) I, β₁ the block's
+   !> smallest eigenvalue; δβ = (β − σ)² δμ. So
+   !>
+   !>   δβ ≤ √n ε (1 + k)(β − σ)² / ((β₁ − σ)(1 − k)) + ε |β|.
+   !>
+   !> It grows like 1/(1 − k) as α → π²: at α = 9.8 the errors of the curves below β = 40 reach
+   !> 6.9e-12 (against 50-digit references, `data/reference/curve_set.dat`) while the change
+   !> between truncations is 1e-14. With the factor 1 in place of √n the errors exceeded it
+   !> by up to 2.75× at α = 2 … 8 (a dozen ulps of β, 23–48 modes).
+   pure real(wp) function rounding_bound(kind, alpha, beta_lowest, beta, modes) result(bound)
+      integer, intent(in) :: kind, modes
+      real(wp), intent(in) :: alpha, beta_lowest, beta
+      real(wp) :: k, one_minus_k, sigma
+      k = model_hill_k(kind, alpha)
+      if (kind == model_elastic) then
+         one_minus_k = one_minus_alpha_over_pi2(alpha)
+      else
+         one_minus_k = 1.0_wp - k
+      end if
+      sigma = -abs(alpha) - 1.0_wp
+      bound = sqrt(real(modes, wp))*epsilon(1.0_wp)*(1.0_wp + k)*(beta - sigma)**2 &
+              /(max(beta_lowest - sigma, tiny(1.0_wp))*one_minus_k) + epsilon(1.0_wp)*abs(beta)
+   end function rounding_bound
 
    !> Order n of the j-th eigenvalue (j = 1, 2, …) of a block.
    elemental integer function block_order(block, j)
@@ -418,6 +475,8 @@ contains
             all(n_out)%parity = merge(1, -1, block == block_periodic_even .or. block == block_antiperiodic_even)
             all(n_out)%modes = used(block)
             all(n_out)%change = changes(j, block)
+            all(n_out)%error_bound = max(changes(j, block), &
+                                         rounding_bound(kind, alpha, values(1, block), values(j, block), used(block)))
             ! the partner of the same order in the other block of this kind
             all(n_out)%coexistent = .false.
             if (all(n_out)%order > 0) then
@@ -429,8 +488,7 @@ contains
                      found = .true.
                   end if
                end do
-               if (found) all(n_out)%coexistent = abs(partner - all(n_out)%beta) <= &
-                  coexistence_threshold*tolerance*max(1.0_wp, abs(all(n_out)%beta))
+               if (found) all(n_out)%coexistent = structural_coexistence(kind, alpha, all(n_out)%trace_sign)
             end if
          end do
       end do

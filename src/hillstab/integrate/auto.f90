@@ -36,8 +36,8 @@ module hillstab_integrate_auto
       model_shapes_from_half_sines, shape_root_mean, model_mesh_kappa, model_auto_difficulty, model_auto_amplitude
    use hillstab_hill_coefficient, only: coefficient_phase
    use hillstab_hill_transfer, only: transfer_functions, step_functions, cos_taylor, sinc_taylor, trace_t, &
-      trace_from_scaled
-   use hillstab_integrate_refine, only: roundoff_level, trace_distance
+      trace_from_scaled, scaled_matrix_t
+   use hillstab_integrate_refine, only: roundoff_level, trace_distance, sensitivity_t, coefficient_level
    implicit none
    private
    public :: trace_auto, trace_auto_batch, auto_initial_steps, auto_mesh_power, fixed_n_trace
@@ -564,13 +564,21 @@ contains
       real(wp), parameter :: c_d2 = -sqrt15/3.0_wp, c_d3 = -10.0_wp/3.0_wp, c_60 = 1.0_wp/30.0_wp
       real(wp), parameter :: c_240 = 1.0_wp/240.0_wp, c_120 = 1.0_wp/120.0_wp, c_12 = 1.0_wp/12.0_wp
       real(wp), dimension(size(c0)) :: p11, p12, p21, p22, log_scale, ga, gb, gc, z, log_peak, peak, cs, sn
-      real(wp) :: z_max
+      ! the integrals of `sensitivity_t` (hillstab_integrate_refine), in units of e^{2 log_scale}·2^512
+      ! (the propagator is rescaled only every eighth step, so its entries may pass 2^400; their
+      ! squares times 2^-512 stay in range)
+      real(wp), dimension(size(c0)) :: su2, sv2, su2w, sv2w, su2a, sv2a
+      real(wp), parameter :: square_unit = 2.0_wp**(-256)
+      type(sensitivity_t) :: sensitivity
+      type(scaled_matrix_t) :: monodromy
+      real(wp) :: z_max, uu, vv, sw
       real(wp) :: h, w1, w2, w3, q1, q2, q3, d2, d3, x3, y1, y2, y3, ls, e11, e12, e21, e22, a, b, big
       integer :: i, l, k, shift
       p11 = 1.0_wp; p12 = 0.0_wp; p21 = 0.0_wp; p22 = 1.0_wp
       log_scale = 0.0_wp
       log_peak = 0.0_wp
       peak = 2.0_wp
+      su2 = 0.0_wp; sv2 = 0.0_wp; su2w = 0.0_wp; sv2w = 0.0_wp; su2a = 0.0_wp; sv2a = 0.0_wp
       do i = 1, mesh%n_steps
          h = mesh%h(i)
          w1 = mesh%w(1, i); w2 = mesh%w(2, i); w3 = mesh%w(3, i)
@@ -631,6 +639,13 @@ contains
             a = p12(l); b = p22(l)
             p12(l) = e11*a + e12*b
             p22(l) = e21*a + e22*b
+            ! the sensitivity integrals ∫u², ∫v², ∫u² c₁w, … (rectangle rule at the step end)
+            uu = h*(square_unit*p11(l))**2
+            vv = h*(square_unit*p12(l))**2
+            sw = c1(l)*w2
+            su2(l) = su2(l) + uu; sv2(l) = sv2(l) + vv
+            su2w(l) = su2w(l) + uu*sw; sv2w(l) = sv2w(l) + vv*sw
+            su2a(l) = su2a(l) + uu*abs(sw); sv2a(l) = sv2a(l) + vv*abs(sw)
          end do
          if (iand(i, 7) == 0 .or. i == mesh%n_steps) then
             do l = 1, size(c0)
@@ -645,6 +660,9 @@ contains
                   shift = exponent(big)
                   p11(l) = scale(p11(l), -shift); p12(l) = scale(p12(l), -shift)
                   p21(l) = scale(p21(l), -shift); p22(l) = scale(p22(l), -shift)
+                  su2(l) = scale(su2(l), -2*shift); sv2(l) = scale(sv2(l), -2*shift)
+                  su2w(l) = scale(su2w(l), -2*shift); sv2w(l) = scale(sv2w(l), -2*shift)
+                  su2a(l) = scale(su2a(l), -2*shift); sv2a(l) = scale(sv2a(l), -2*shift)
                   log_scale(l) = log_scale(l) + shift*log(2.0_wp)
                end if
             end do
@@ -655,6 +673,12 @@ contains
          traces(l) = trace_from_scaled(2.0_wp*(p11(l)*p22(l) + p21(l)*p12(l)), 2.0_wp*log_scale(l))
          if (peak(l) > 0.0_wp) log_peak(l) = max(log_peak(l), log(peak(l)) + 2.0_wp*log_scale(l))
          floors(l) = roundoff_level(log_peak(l), traces(l)%log_abs, mesh%n_steps, phases(l))
+         ! the rounding of q itself, through the sensitivity of S to its constants
+         sensitivity = sensitivity_t(2.0_wp*log_scale(l) + 512.0_wp*log(2.0_wp), su2(l), sv2(l), su2w(l), sv2w(l), &
+                                     su2a(l), sv2a(l))
+         monodromy%m = reshape([0.0_wp, 2.0_wp*p11(l)*p21(l), 2.0_wp*p12(l)*p22(l), 0.0_wp], [2, 2])
+         monodromy%log_scale = 2.0_wp*log_scale(l)
+         floors(l) = floors(l) + coefficient_level(sensitivity, c0(l), monodromy, traces(l)%log_abs)
       end do
    end subroutine lane_traces
 

@@ -36,10 +36,13 @@
 module hillstab_integrate_magnus
    use hillstab_core_kinds, only: wp, int64, log_huge
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
-   use hillstab_integrate_refine, only: roundoff_level, propagator_condition
+   use hillstab_integrate_refine, only: roundoff_level, propagator_condition, sensitivity_t, accumulate_sensitivity, &
+      coefficient_level
+   use hillstab_hill_models, only: model_split
    use hillstab_core_stats, only: work_stats_t
    use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
    use hillstab_hill_transfer, only: scaled_matrix_t, scaled_identity, transfer_functions, transfer_increment, multiply_matrix, &
+      multiply_scaled, &
       add_compensated, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
    implicit none
    private
@@ -148,13 +151,20 @@ contains
    !> that repeats on every step where q changes little: ~ε N over N steps (1e-11 in S
    !> after 6e4 steps at constant q = 1e5). Compensated, each step errs by ε relative to
    !> F, ~ε √|q| h, and N steps by ε times the accumulated phase ∫√|q|.
-   pure subroutine multiply_exp_sl2(a, g, compensation, low)
+   !>
+   !> With `from_right` (compensated form only) the product is a ← a exp(Ω) instead, for
+   !> propagators built from τ = 1 backwards.
+   pure subroutine multiply_exp_sl2(a, g, compensation, low, from_right)
       type(scaled_matrix_t), intent(inout) :: a  !! the propagator, advanced
       real(wp), intent(in) :: g(3)  !! generator [a, b, c]
       real(wp), intent(inout), optional :: compensation  !! Kahan carry of a%log_scale
       real(wp), intent(inout), optional :: low(2, 2)  !! low part of the propagator (a%m + low), same scale
+      logical, intent(in), optional :: from_right  !! multiply by exp(Ω) from the right
       real(wp) :: c, s, log_scale, e(2, 2), before, d(2, 2), sum(2, 2), part(2, 2)
       integer :: k
+      logical :: right
+      right = .false.
+      if (present(from_right)) right = from_right
       if (present(low) .and. present(compensation)) then
          call transfer_increment(-(g(1)*g(1) + g(2)*g(3)), c, s, log_scale)
          e(1, 1) = c + s*g(1); e(1, 2) = s*g(2)
@@ -162,10 +172,19 @@ contains
          if (log_scale > 0.0_wp) then
             ! a long growing step: exp(Ω) is far from I, no increment form
             e(1, 1) = e(1, 1) + 1.0_wp; e(2, 2) = e(2, 2) + 1.0_wp
-            a%m = matmul(e, a%m)
-            low = matmul(e, low)
+            if (right) then
+               a%m = matmul(a%m, e)
+               low = matmul(low, e)
+            else
+               a%m = matmul(e, a%m)
+               low = matmul(e, low)
+            end if
          else
-            d = matmul(e, a%m) + (low + matmul(e, low))
+            if (right) then
+               d = matmul(a%m, e) + (low + matmul(low, e))
+            else
+               d = matmul(e, a%m) + (low + matmul(e, low))
+            end if
             sum = a%m + d
             part = sum - a%m
             low = (a%m - (sum - part)) + (d - part)
@@ -225,7 +244,7 @@ contains
    end function step_generator
 
    !> a ← (one Magnus step over [t, t + h]) a; adds the Q evaluations to `n_evaluations`.
-   pure subroutine magnus_step(model, order, t, h, a, n_evaluations, compensation, low)
+   pure subroutine magnus_step(model, order, t, h, a, n_evaluations, compensation, low, from_right)
       type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
       integer, intent(in) :: order                    !! 4 or 6
       real(wp), intent(in) :: t, h                    !! step start and length
@@ -233,11 +252,12 @@ contains
       integer(int64), intent(inout) :: n_evaluations  !! Q evaluation counter
       real(wp), intent(inout), optional :: compensation  !! see `multiply_exp_sl2`
       real(wp), intent(inout), optional :: low(2, 2)     !! see `multiply_exp_sl2`
+      logical, intent(in), optional :: from_right        !! see `multiply_exp_sl2`
       real(wp) :: q(3)
       integer :: n_nodes
       call gauss_samples(model, order, t, h, q, n_nodes)
       n_evaluations = n_evaluations + n_nodes
-      call multiply_exp_sl2(a, step_generator(order, q, h), compensation, low)
+      call multiply_exp_sl2(a, step_generator(order, q, h), compensation, low, from_right)
    end subroutine magnus_step
 
    !> Propagator Φ(1) over [0, 1] with `n_steps` equal Magnus steps.
@@ -289,6 +309,18 @@ contains
       r = abs(ta - tb)/max(floor_scale, abs(ta))
    end function relative_trace_difference
 
+   !> |S_a − S_b| / max(1, |S_c|): `relative_trace_difference` on the scale of a third matrix.
+   pure real(wp) function relative_trace_difference_at(a, b, c) result(r)
+      type(scaled_matrix_t), intent(in) :: a, b, c  !! the two matrices and the one giving the scale
+      real(wp) :: top, ta, tb, tc, floor_scale
+      top = max(a%log_scale, b%log_scale, c%log_scale)
+      ta = (a%m(1, 1) + a%m(2, 2))*exp(max(a%log_scale - top, -log_huge))
+      tb = (b%m(1, 1) + b%m(2, 2))*exp(max(b%log_scale - top, -log_huge))
+      tc = (c%m(1, 1) + c%m(2, 2))*exp(max(c%log_scale - top, -log_huge))
+      floor_scale = exp(max(min(-top, log_huge), -log_huge))
+      r = abs(ta - tb)/max(floor_scale, abs(tc))
+   end function relative_trace_difference_at
+
    !> Monitor λ(τ), an inverse length, from the Gauss samples of one step; the mesh
    !> takes h ≈ θ/λ so that every step makes about the same error.
    !>
@@ -330,7 +362,16 @@ contains
    !> March over [0, 1] with steps h ≈ θ/λ(τ) (equidistributing the monitor λ of
    !> `local_scale`), rejecting a step when λ h > reject_factor θ. Returns the mesh
    !> (n_mesh + 1 points) and the propagator Φ(1).
-   subroutine adaptive_march(model, order, theta, mesh, n_mesh, phi, stats, log_peak)
+   !>
+   !> The number of steps is always even: the Richardson check merges the steps in pairs,
+   !> and a step left alone there (the last one of an odd mesh) would be absent from the
+   !> difference. Near β = 0 with α → π² the last step, where q' → 0 lets the steps grow,
+   !> carried nearly all the error of S (9.95e-9 of the 1.04e-8 at α = 9.82, β = −7e-4,
+   !> tolerance 1e-10, 199 steps) and the estimate missed it by 23×; so the march ends on
+   !> two halves of the last step when it would otherwise end on an odd count.
+   !> `prefix(j)` is Φ at the end of the j-th pair of steps (`prefix(0)` = I), for
+   !> `block_estimate`.
+   subroutine adaptive_march(model, order, theta, mesh, n_mesh, phi, stats, log_peak, sensitivity, prefix)
       type(hill_model_t), intent(in) :: model
       integer, intent(in) :: order
       real(wp), intent(in) :: theta
@@ -340,12 +381,17 @@ contains
       type(work_stats_t), intent(inout) :: stats
       !> ln of the largest scaled condition of Φ along the march (`propagator_condition`)
       real(wp), intent(out) :: log_peak
-      real(wp) :: t, h, q(3), lambda, slope_before, h_next, carry, low(2, 2)
+      !> the integrals of u and v for the rounding of q (hillstab_integrate_refine `coefficient_level`)
+      type(sensitivity_t), intent(out) :: sensitivity
+      type(scaled_matrix_t), allocatable, intent(out) :: prefix(:)  !! Φ at the pair ends
+      real(wp) :: t, h, q(3), lambda, slope_before, h_next, carry, low(2, 2), c0, c1
       real(wp), allocatable :: grown(:)
-      integer :: n_nodes
+      type(scaled_matrix_t), allocatable :: grown_prefix(:)
+      integer :: n_nodes, closing
       logical :: last
-      allocate (mesh(0:255))
+      allocate (mesh(0:255), prefix(0:127))
       mesh(0) = 0.0_wp
+      prefix(0) = scaled_identity()
       n_mesh = 0
       phi = scaled_identity()
       carry = 0.0_wp
@@ -356,9 +402,18 @@ contains
       h = min(max_step, theta/sqrt(abs(hill_coefficient(model, 0.0_wp)) + 1.0e-300_wp))
       stats%n_evaluations = stats%n_evaluations + 1
       slope_before = 0.0_wp  ! q is even: q'(0) = 0
+      call model_split(model%kind, model%alpha, model%beta, model%epsilon, c0, c1)
+      closing = 0
       do while (t < 1.0_wp)
-         last = t + 1.05_wp*h >= 1.0_wp
-         if (last) then
+         if (closing == 0 .and. t + 1.05_wp*h >= 1.0_wp) then
+            ! the end is in reach: finish on one step, or two halves if one would leave the count odd
+            closing = 2 - mod(n_mesh, 2)
+         end if
+         last = closing == 1
+         if (closing > 1) then
+            h = (1.0_wp - t)/closing
+            h = (t + h) - t
+         else if (last) then
             h = 1.0_wp - t
          else
             ! t + h exact: the propagator is advanced by exactly the time t moves (a rounded
@@ -371,11 +426,14 @@ contains
          if (lambda*h > reject_factor*theta .and. h > 1.0e-12_wp) then
             stats%n_rejected = stats%n_rejected + 1
             h = max(0.1_wp*h, min(0.5_wp*h, 0.9_wp*theta/lambda))
+            closing = 0
             cycle
          end if
+         if (closing > 0) closing = closing - 1
          call multiply_exp_sl2(phi, step_generator(order, q, h), carry, low)
          log_peak = max(log_peak, 2.0_wp*phi%log_scale + &
                         log(propagator_condition(phi%m(1, 1), phi%m(2, 1), phi%m(1, 2), phi%m(2, 2))))
+         call accumulate_sensitivity(sensitivity, phi%m(1, 1), phi%m(1, 2), phi%log_scale, h, q(2) - c0)
          stats%n_steps = stats%n_steps + 1
          slope_before = sample_slope(order, q, h)
          if (last) then
@@ -390,6 +448,15 @@ contains
             call move_alloc(grown, mesh)
          end if
          mesh(n_mesh) = t
+         if (mod(n_mesh, 2) == 0) then
+            if (n_mesh/2 > ubound(prefix, 1)) then
+               allocate (grown_prefix(0:2*ubound(prefix, 1) + 1))
+               grown_prefix(0:n_mesh/2 - 1) = prefix(0:n_mesh/2 - 1)
+               call move_alloc(grown_prefix, prefix)
+            end if
+            prefix(n_mesh/2)%m = phi%m + low
+            prefix(n_mesh/2)%log_scale = phi%log_scale - carry
+         end if
          if (lambda > 0.0_wp) then
             h_next = theta/lambda
          else
@@ -425,30 +492,78 @@ contains
       stats%n_steps = stats%n_steps + int(n_mesh, int64)*split
    end subroutine mesh_product
 
-   !> Φ(1) on the mesh with every other point removed (steps merged in pairs).
-   subroutine coarse_product(model, order, mesh, n_mesh, phi, stats)
+   !> Σ_b |ΔS_b|/max(1, |S|) over blocks b of the half period, ΔS_b the change of S when the
+   !> pairs of steps of block b alone are merged: the Richardson difference S_fine − S_coarse
+   !> split by where along [0, 1] it arises, with the magnitudes summed.
+   !>
+   !> The error of S is a sum of contributions from the whole half period, and they can
+   !> cancel: near β = 0 with α → π² the middle of [0, 1] and the approach to τ = 1, where
+   !> the even solution has grown by (1 + k)/(1 − k), give contributions of opposite sign,
+   !> each several times the total, and the long steps near τ = 1 are not yet in the
+   !> asymptotic regime, so the coarse error is no multiple 2^p of the fine one (at
+   !> α = 9.576, β = 3.8e-5, tolerance 1e-10 it was −5.6 times it) and the plain difference
+   !> missed the error by 4.9×. With the contributions taken block by block their
+   !> cancellation no longer hides them.
+   !>
+   !> ΔS_b telescopes through hybrid products H_b = S(coarse on [τ_b, 1]·fine on [0, τ_b]):
+   !> H_0 = S_coarse, H_B = S_fine, ΔS_b = H_b − H_{b−1}. The fine parts are the march's
+   !> `prefix`; the coarse parts are multiplied here from τ = 1 backwards (half the
+   !> march's steps: this is the plain check's coarse product too, returned as `m_coarse`).
+   function block_estimate(model, order, mesh, n_mesh, prefix, m_fine, stats, m_coarse) result(total)
       type(hill_model_t), intent(in) :: model
       integer, intent(in) :: order, n_mesh
       real(wp), intent(in) :: mesh(0:n_mesh)
-      type(scaled_matrix_t), intent(out) :: phi
+      type(scaled_matrix_t), intent(in) :: prefix(0:)   !! Φ_fine at the end of each pair
+      type(scaled_matrix_t), intent(in) :: m_fine       !! the fine monodromy (for the scale)
       type(work_stats_t), intent(inout) :: stats
-      integer :: i
+      type(scaled_matrix_t), intent(out) :: m_coarse    !! the coarse monodromy (steps merged in pairs)
+      real(wp) :: total
+      integer, parameter :: n_blocks = 8
+      type(scaled_matrix_t) :: suffix, whole, hybrid, before
+      integer :: n_pairs, j, block_pairs
       real(wp) :: carry, low(2, 2)
-      phi = scaled_identity()
+      n_pairs = n_mesh/2
+      block_pairs = max(1, (n_pairs + n_blocks - 1)/n_blocks)
+      total = 0.0_wp
+      suffix = scaled_identity()
       carry = 0.0_wp
       low = 0.0_wp
-      do i = 2, n_mesh, 2
-         call magnus_step(model, order, mesh(i - 2), mesh(i) - mesh(i - 2), phi, stats%n_evaluations, carry, low)
+      before = m_fine
+      do j = n_pairs, 1, -1
+         ! compensated as the forward products are (a plain product errs by ε per step)
+         call magnus_step(model, order, mesh(2*j - 2), mesh(2*j) - mesh(2*j - 2), suffix, stats%n_evaluations, &
+                          carry, low, from_right=.true.)
          stats%n_steps = stats%n_steps + 1
+         if (mod(j - 1, block_pairs) == 0 .or. j == 1) then
+            whole%m = suffix%m + low
+            whole%log_scale = suffix%log_scale - carry
+            hybrid = monodromy_from_half_period(multiply_scaled(whole, prefix(j - 1)))
+            total = total + relative_trace_difference_at(hybrid, before, m_fine)
+            before = hybrid
+         end if
       end do
-      if (mod(n_mesh, 2) == 1) then
-         call magnus_step(model, order, mesh(n_mesh - 1), mesh(n_mesh) - mesh(n_mesh - 1), phi, &
-            stats%n_evaluations, carry, low)
-         stats%n_steps = stats%n_steps + 1
-      end if
-      phi%m = phi%m + low
-      phi%log_scale = phi%log_scale - carry
-   end subroutine coarse_product
+      ! the last hybrid has the coarse steps everywhere
+      m_coarse = before
+   end function block_estimate
+
+   !> The Richardson estimate |S_fine − S_coarse|/(r^p − 1) (times the safety factor) of a
+   !> refinement, or, where the observed convergence does not look asymptotic, the
+   !> undivided |S_fine − S_coarse| (an upper estimate of the fine error as soon as the
+   !> coarse error is at least twice it): the difference is compared with the one before it
+   !> (`previous`, between the coarse value and the one before); their ratio must be the
+   !> expected `expected_ratio` within a factor 4 (contributions of opposite sign from
+   !> different parts of [0, 1] that converge at different rates break it, see
+   !> `block_estimate`).
+   pure real(wp) function checked_estimate(difference, previous, ratio, expected_ratio) result(estimate)
+      real(wp), intent(in) :: difference      !! |S_fine − S_coarse|/max(1, |S_fine|)
+      real(wp), intent(in) :: previous        !! |S_coarse − S_coarser|/max(1, |S_fine|)
+      real(wp), intent(in) :: ratio           !! r^p: the error ratio of coarse to fine
+      real(wp), intent(in) :: expected_ratio  !! the expected previous/difference
+      real(wp), parameter :: ratio_slack = 4.0_wp
+      estimate = richardson_safety*difference/(ratio - 1.0_wp)
+      if (.not. (previous*ratio_slack >= expected_ratio*difference .and. &
+                 previous <= ratio_slack*expected_ratio*difference)) estimate = max(estimate, difference)
+   end function checked_estimate
 
    !> One-period monodromy of the χ equation by an adaptive Magnus method.
    !>
@@ -470,8 +585,11 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp), intent(out), optional :: error_estimate  !! estimated |ΔS|/max(1, |S|)
       real(wp), allocatable :: mesh(:)
-      type(scaled_matrix_t) :: phi, phi_check, m_check
-      real(wp) :: theta, estimate, ratio, log_peak, noise, previous, phase
+      type(scaled_matrix_t) :: phi, m_check
+      type(scaled_matrix_t), allocatable :: prefix(:)
+      real(wp) :: theta, estimate, ratio, log_peak, noise, previous, phase, c0, c1, difference, previous_difference
+      real(wp) :: previous_ratio, blocks
+      type(sensitivity_t) :: sensitivity
       logical :: stagnated
       type(trace_t) :: tr
       integer :: n_mesh, split, pass, factor
@@ -495,16 +613,17 @@ contains
       else
          theta = min(max_theta, theta_constant_6*tolerance**(1.0_wp/6))
       end if
-      call adaptive_march(model, order, theta, mesh, n_mesh, phi, stats, log_peak)
+      call adaptive_march(model, order, theta, mesh, n_mesh, phi, stats, log_peak, sensitivity, prefix)
+      call model_split(model%kind, model%alpha, model%beta, model%epsilon, c0, c1)
       m = monodromy_from_half_period(phi)
-      call coarse_product(model, order, mesh, n_mesh, phi_check, stats)
-      m_check = monodromy_from_half_period(phi_check)
+      blocks = block_estimate(model, order, mesh, n_mesh, prefix, m, stats, m_check)
       ratio = 2.0_wp**order
-      estimate = richardson_safety*relative_trace_difference(m, m_check)/(ratio - 1.0_wp)
+      difference = relative_trace_difference(m, m_check)
+      estimate = richardson_safety*max(difference, blocks)/(ratio - 1.0_wp)
       split = 1
       tr = trace_of(m)
       phase = phase_bound(model)
-      noise = roundoff_level(log_peak, tr%log_abs, n_mesh, phase)
+      noise = roundoff_level(log_peak, tr%log_abs, n_mesh, phase) + coefficient_level(sensitivity, c0, m, tr%log_abs)
       stagnated = .false.
       do pass = 1, max_refinements
          if (estimate <= tolerance .and. noise <= tolerance) exit
@@ -518,9 +637,15 @@ contains
          call mesh_product(model, order, mesh, n_mesh, split, phi, stats)
          m = monodromy_from_half_period(phi)
          previous = estimate
-         estimate = richardson_safety*relative_trace_difference(m, m_check)/(real(factor, wp)**order - 1.0_wp)
+         previous_difference = difference
+         previous_ratio = ratio
+         ratio = real(factor, wp)**order
+         difference = relative_trace_difference(m, m_check)
+         ! successive differences fall by r (r_before − 1)/(r − 1) in the asymptotic regime
+         estimate = checked_estimate(difference, previous_difference, ratio, &
+                                     ratio*(previous_ratio - 1.0_wp)/(ratio - 1.0_wp))
          tr = trace_of(m)
-         noise = roundoff_level(log_peak, tr%log_abs, split*n_mesh, phase)
+         noise = roundoff_level(log_peak, tr%log_abs, split*n_mesh, phase) + coefficient_level(sensitivity, c0, m, tr%log_abs)
          ! truncation falls by factor^p (at least 16); a difference that no longer falls
          ! by a quarter of that, within a few times the round-off level, is rounding noise
          stagnated = estimate > previous*4.0_wp/real(factor, wp)**order .and. estimate <= 10.0_wp*noise

@@ -37,7 +37,9 @@ module hillstab_integrate_monodromy_gsl
    use hillstab_core_kinds, only: wp, int64, log_huge
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use hillstab_integrate_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
-      roundoff_level, propagator_condition, trace_distance, first_step_factor, next_local_tolerance
+      roundoff_level, propagator_condition, trace_distance, first_step_factor, next_local_tolerance, sensitivity_t, &
+      accumulate_sensitivity, coefficient_level, rk_rounding
+   use hillstab_hill_models, only: model_split
    use hillstab_core_stats, only: work_stats_t, add_work
    use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
    use hillstab_hill_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
@@ -107,7 +109,7 @@ contains
    !> y(0) = (1, 0, 0, 1), to `t_end` with GSL's control epsilon `eps`,
    !> renormalizing each solution between chunks short enough that it cannot
    !> overflow. On return the solutions are exp(log_scale(j)) times the columns of y.
-   subroutine integrate_pair(model, t_end, eps, y, log_scale, log_peak, stats, error, log_condition_peak)
+   subroutine integrate_pair(model, t_end, eps, y, log_scale, log_peak, stats, error, log_condition_peak, sensitivity)
       type(hill_model_t), intent(in) :: model
       real(wp), intent(in) :: t_end          !! end of the integration, > 0
       real(wp), intent(in) :: eps            !! epsabs = epsrel of GSL's y-control
@@ -119,7 +121,12 @@ contains
       type(error_t), allocatable, intent(out) :: error
       !> ln of the largest scaled condition u² + v'² + 2|v u'| along the way
       real(wp), intent(out), optional :: log_condition_peak
+      !> the integrals for the rounding of q (hillstab_integrate_refine `coefficient_level`;
+      !> one more evaluation of q per step)
+      type(sensitivity_t), intent(out), optional :: sensitivity
       type(rhs_context_t), target :: context
+      type(sensitivity_t) :: integrals
+      real(wp) :: c0, c1, top
       type(gsl_odeiv2_system), target :: system
       type(gsl_odeiv2_driver_view), pointer :: driver_view
       type(gsl_odeiv2_evolve_view), pointer :: evolve_view
@@ -140,6 +147,7 @@ contains
       log_peak = 0.0_wp
       stats = work_stats_t()
       previous = gsl_set_error_handler_off()
+      call model_split(model%kind, model%alpha, model%beta, model%epsilon, c0, c1)
 
       ! With c² = max(1, max|q|) the energy c²w² + w'² of any solution grows at most
       ! like exp(2c τ), and q is monotone in cos πτ, so its extremes on [0, 1] are at
@@ -195,6 +203,7 @@ contains
          if (status /= gsl_success) exit
       end do
       if (present(log_condition_peak)) log_condition_peak = condition_peak
+      if (present(sensitivity)) sensitivity = integrals
 
       ! (counted here: the evolve object's counters restart at each driver reset)
       stats%n_steps = n_accepted
@@ -226,6 +235,7 @@ contains
       subroutine advance_to(t_goal)
          real(wp), intent(in) :: t_goal  !! the time the solution is to reach
          real(c_double) :: t_start, target, h_exact
+         real(wp) :: lag_before
          integer(c_long) :: n, failed_before
          ! GSL's t runs ahead of the solution's time by `lag`
          target = real(t_goal + context%lag, c_double)
@@ -242,12 +252,21 @@ contains
                if (h_exact > 0.0_c_double) driver_view%h = h_exact
             end if
             t_start = t
+            lag_before = context%lag
             failed_before = evolve_view%failed_steps
             status = gsl_odeiv2_evolve_apply(driver_view%evolve, driver_view%control, driver_view%step, &
                                              driver_view%sys, t, target, driver_view%h, state)
             n_rejected = n_rejected + (evolve_view%failed_steps - failed_before)
             if (status /= gsl_success) return
             context%lag = context%lag + ((t - t_start) - evolve_view%last_step)
+            if (present(sensitivity)) then
+               ! the sensitivity integrals, u and v brought to their common scale, q − c₀ at mid-step
+               top = max(log_scale(1), log_scale(2))
+               call accumulate_sensitivity(integrals, state(1)*exp(log_scale(1) - top), state(3)*exp(log_scale(2) - top), &
+                                           top, real(evolve_view%last_step, wp), &
+                                           hill_coefficient(model, t_start - lag_before + 0.5_wp*evolve_view%last_step) - c0)
+               context%n_evaluations = context%n_evaluations + 1
+            end if
             n = n + 1
             n_accepted = n_accepted + 1
          end do
@@ -257,7 +276,7 @@ contains
    !> Monodromy from the half period with GSL epsilon `eps`; `log_condition` is
    !> ln κ, κ = max|u-solution|·max|v-solution| over [0, 1] / max(1, |S|); `log_peak` the
    !> ln of the largest scaled condition of the propagator (`propagator_condition`).
-   subroutine half_period_monodromy(model, eps, m, log_condition, stats, error, log_peak)
+   subroutine half_period_monodromy(model, eps, m, log_condition, stats, error, log_peak, coefficient_noise)
       type(hill_model_t), intent(in) :: model
       real(wp), intent(in) :: eps
       type(scaled_matrix_t), intent(out) :: m
@@ -265,15 +284,23 @@ contains
       type(work_stats_t), intent(out) :: stats
       type(error_t), allocatable, intent(out) :: error
       real(wp), intent(out), optional :: log_peak
-      real(wp) :: y(2, 2), log_scale(2), log_peaks(2), condition_peak
+      !> the round-off of S from the rounding of q (`coefficient_level`)
+      real(wp), intent(out), optional :: coefficient_noise
+      real(wp) :: y(2, 2), log_scale(2), log_peaks(2), condition_peak, c0, c1
       type(trace_t) :: tr
+      type(sensitivity_t) :: sensitivity
       log_condition = 0.0_wp
-      call integrate_pair(model, 1.0_wp, eps, y, log_scale, log_peaks, stats, error, condition_peak)
+      if (present(coefficient_noise)) coefficient_noise = 0.0_wp
+      call integrate_pair(model, 1.0_wp, eps, y, log_scale, log_peaks, stats, error, condition_peak, sensitivity)
       if (present(log_peak)) log_peak = condition_peak
       if (allocated(error)) return
       m = monodromy_from_half_period(y, log_scale(1), log_scale(2))
       tr = trace_of(m)
       log_condition = sum(log_peaks) - max(0.0_wp, tr%log_abs)
+      if (present(coefficient_noise)) then
+         call model_split(model%kind, model%alpha, model%beta, model%epsilon, c0, c1)
+         coefficient_noise = coefficient_level(sensitivity, c0, m, tr%log_abs)
+      end if
    end subroutine half_period_monodromy
 
    !> One-period monodromy of the χ equation from the half period: with u, v the
@@ -301,7 +328,7 @@ contains
       type(refinement_t) :: ladder
       type(trace_t) :: tr
       type(error_t), allocatable :: run_error
-      real(wp) :: log_condition, eps, log_peak, estimate, noise, phase
+      real(wp) :: log_condition, eps, log_peak, estimate, noise, phase, coefficient_noise, last_coefficient_noise
       integer :: run, loosening
       character(len=200) :: buffer
       stats = work_stats_t()
@@ -314,7 +341,7 @@ contains
       eps = max(gsl_epsilon(tolerance, 0.0_wp), 10.0_wp*smallest_gsl_epsilon)
       ! the first pass: loosen the epsilon while GSL's control cannot meet it at all
       do loosening = 1, 6
-         call half_period_monodromy(model, eps, best, log_condition, part, run_error, log_peak)
+         call half_period_monodromy(model, eps, best, log_condition, part, run_error, log_peak, coefficient_noise)
          call add_work(stats, part)
          if (.not. allocated(run_error)) exit
          if (run_error%code /= err_accuracy .or. eps > 1.0e-6_wp) then
@@ -329,7 +356,9 @@ contains
       end if
       tr = trace_of(best)
       phase = phase_bound(model)
-      call refine(ladder, tr, .false., roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase))
+      call refine(ladder, tr, .false., roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding) &
+                  + coefficient_noise)
+      last_coefficient_noise = coefficient_noise
       estimate = -1.0_wp
       do run = 2, max_ladder_runs
          ! the first step down also divides by the condition κ of the first pass: where the
@@ -337,7 +366,7 @@ contains
          ! error is κ times its epsilon and two loose passes can agree on a wrong value
          eps = next_local_tolerance(eps, merge(first_step_factor(log_peak, tr%log_abs), 10.0_wp, run == 2), &
                                     smallest_gsl_epsilon)
-         call half_period_monodromy(model, eps, trial, log_condition, part, run_error, log_peak)
+         call half_period_monodromy(model, eps, trial, log_condition, part, run_error, log_peak, coefficient_noise)
          call add_work(stats, part)
          if (allocated(run_error)) then
             if (run_error%code /= err_accuracy) then
@@ -358,11 +387,13 @@ contains
                estimate = trace_distance(trace_of(best), trace_of(trial))
             end if
             tr = trace_of(best)
-            estimate = max(estimate, roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase))
+            estimate = max(estimate, roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding) &
+                                     + last_coefficient_noise)
             exit
          end if
          tr = trace_of(trial)
-         noise = roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase)
+         noise = roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding) + coefficient_noise
+         last_coefficient_noise = coefficient_noise
          call refine(ladder, tr, eps <= 1.001_wp*smallest_gsl_epsilon .or. run == max_ladder_runs, noise, &
                      near_floor=eps <= 1.0e3_wp*smallest_gsl_epsilon)
          best = trial

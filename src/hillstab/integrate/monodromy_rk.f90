@@ -19,10 +19,12 @@
 !> call trace_rk(hill_model_t(model_elastic, 9.8_wp, 2.47_wp, 0.0_wp), 1.0e-10_wp, tr, error)
 !>```
 module hillstab_integrate_monodromy_rk
-   use hillstab_core_kinds, only: wp
+   use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use hillstab_integrate_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
-      roundoff_level, propagator_condition, first_step_factor, next_local_tolerance
+      roundoff_level, propagator_condition, first_step_factor, next_local_tolerance, sensitivity_t, &
+      accumulate_sensitivity, coefficient_level, rk_rounding
+   use hillstab_hill_models, only: model_split
    use hillstab_core_stats, only: work_stats_t, add_work
    use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
    use hillstab_hill_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
@@ -56,6 +58,12 @@ module hillstab_integrate_monodromy_rk
       type(hill_model_t) :: model
       !> largest u², v'², |v u'| of the current (unrescaled) stretch, for the condition
       real(wp) :: peak_terms(3) = 0.0_wp
+      !> ln of the scales of the u and v pairs of the current stretch, the constant c₀ of q
+      real(wp) :: log_u = 0.0_wp, log_v = 0.0_wp, c0 = 0.0_wp
+      !> the integrals for the rounding of q (hillstab_integrate_refine `coefficient_level`)
+      type(sensitivity_t) :: sensitivity
+      !> Q evaluations made for them (one per step)
+      integer(int64) :: n_extra = 0
    contains
       procedure :: rhs => even_odd_rhs
       procedure :: observe => watch_growth
@@ -75,7 +83,7 @@ contains
    end function rk_tolerances
 
    !> One-period monodromy M of the χ equation from the even/odd solutions on [0, 1].
-   subroutine monodromy_rk(model, tolerance, m, stats, error, method, local_tolerance, log_peak)
+   subroutine monodromy_rk(model, tolerance, m, stats, error, method, local_tolerance, log_peak, coefficient_noise)
       type(hill_model_t), intent(in) :: model  !! the Hill equation
       real(wp), intent(in) :: tolerance        !! target error on S, scaled by max(1, |S|)
       type(scaled_matrix_t), intent(out) :: m  !! M = e^{log_scale} m
@@ -88,7 +96,11 @@ contains
       !> ln of the largest scaled condition of the half-period propagator along the way
       !> (`propagator_condition`), for the round-off level of S
       real(wp), intent(out), optional :: log_peak
+      !> the round-off of S from the rounding of q (`coefficient_level`)
+      real(wp), intent(out), optional :: coefficient_noise
       type(rk_options_t) :: options
+      type(trace_t) :: tr
+      real(wp) :: c1
       type(even_odd_pair_t) :: pair
       type(work_stats_t) :: part
       real(wp) :: t, y(4), h_next, log_u, log_v, peak
@@ -116,6 +128,7 @@ contains
       options%atol = options%rtol
       options%max_steps = 1000000
       pair%model = model
+      call model_split(model%kind, model%alpha, model%beta, model%epsilon, pair%c0, c1)
 
       ! y = (u, u', v, v') with the even and odd initial values
       y = [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]
@@ -127,6 +140,8 @@ contains
       peak = 0.0_wp
       do
          pair%peak_terms = 0.0_wp
+         pair%log_u = log_u
+         pair%log_v = log_v
          call rk_integrate(pair, t, 1.0_wp, y, options, part, error, h_next=h_next)
          call add_work(stats, part)
          if (allocated(error)) then
@@ -153,7 +168,12 @@ contains
       end do
 
       if (present(log_peak)) log_peak = max(peak, log(propagator_condition(1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp)))
+      stats%n_evaluations = stats%n_evaluations + pair%n_extra
       m = monodromy_from_half_period(reshape(y, [2, 2]), log_u, log_v)
+      if (present(coefficient_noise)) then
+         tr = trace_of(m)
+         coefficient_noise = coefficient_level(pair%sensitivity, pair%c0, m, tr%log_abs)
+      end if
       if (.not. (all(ieee_is_finite(m%m)) .and. ieee_is_finite(m%log_scale))) then
          call set_error(error, err_integration, "monodromy_rk: non-finite monodromy")
          m = scaled_matrix_t()
@@ -177,7 +197,7 @@ contains
       type(scaled_matrix_t) :: m
       type(work_stats_t) :: work, part
       type(refinement_t) :: ladder
-      real(wp) :: local, log_peak, phase
+      real(wp) :: local, log_peak, phase, coefficient_noise
       integer :: run, kind
       character(len=160) :: buffer
       kind = rk_dop853
@@ -187,13 +207,15 @@ contains
       call start_refinement(ladder, tolerance)
       local = max(ladder_start_factor*rk_tolerances(tolerance, kind), 10.0_wp*tolerance_floor)
       do run = 1, max_ladder_runs
-         call monodromy_rk(model, tolerance, m, part, error, method, local_tolerance=local, log_peak=log_peak)
+         call monodromy_rk(model, tolerance, m, part, error, method, local_tolerance=local, log_peak=log_peak, &
+                           coefficient_noise=coefficient_noise)
          call add_work(work, part)
          if (allocated(error)) exit
          if (run == 1) phase = phase_bound(model)   ! (the model is known valid from here)
          tr = trace_of(m)
          call refine(ladder, tr, at_floor=local <= 1.001_wp*tolerance_floor .or. run == max_ladder_runs, &
-                     noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase), &
+                     noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding) &
+                           + coefficient_noise, &
                      near_floor=local <= 1.0e3_wp*tolerance_floor)
          if (ladder%verdict /= refine_more) exit
          ! the first step down also divides by the propagator's condition (`first_step_factor`)
@@ -237,7 +259,16 @@ contains
       class(even_odd_pair_t), intent(inout) :: self
       type(rk_step_t), intent(in) :: step
       logical, intent(inout) :: stop
+      real(wp) :: top
       self%peak_terms = max(self%peak_terms, [step%y(1)**2, step%y(4)**2, abs(step%y(3)*step%y(2))])
+      if (step%index > 0) then
+         ! the sensitivity integrals, u and v brought to their common scale, q − c₀ at mid-step
+         top = max(self%log_u, self%log_v)
+         call accumulate_sensitivity(self%sensitivity, step%y(1)*exp(self%log_u - top), &
+                                     step%y(3)*exp(self%log_v - top), top, step%h, &
+                                     hill_coefficient(self%model, step%t_old + 0.5_wp*step%h) - self%c0)
+         self%n_extra = self%n_extra + 1
+      end if
       if (step%t < 1.0_wp) then
          stop = exponent(maxval(abs(step%y(1:2)))) > rescale_exponent &
                 .or. exponent(maxval(abs(step%y(3:4)))) > rescale_exponent

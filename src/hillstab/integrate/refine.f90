@@ -21,16 +21,20 @@
 !>```
 module hillstab_integrate_refine
    use hillstab_core_kinds, only: wp, log_huge
-   use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_transfer, only: trace_t, scaled_matrix_t
    implicit none
    private
    public :: refinement_t, start_refinement, refine, trace_distance, roundoff_level, propagator_condition, first_step_factor, &
       next_local_tolerance
    public :: refine_more, refine_met, refine_roundoff
+   public :: sensitivity_t, accumulate_sensitivity, coefficient_level
 
    !> Safety factor of `roundoff_level` (calibrated with method auto on β = 0,
    !> α = 9.8 … 9.86, where S = 2 exactly).
    real(wp), parameter :: roundoff_safety = 0.1_wp
+   !> The factor of the √N term of `roundoff_level` for the Runge–Kutta integrators (rk,
+   !> gsl), whose steps round the state itself: one rounding of ε per step (its `step_rounding`).
+   real(wp), parameter, public :: rk_rounding = 1.0_wp
 
    !> Compute S again at a tighter local tolerance.
    integer, parameter :: refine_more = 0
@@ -51,7 +55,86 @@ module hillstab_integrate_refine
       real(wp) :: difference = huge(1.0_wp)  !! |S_last − S_before|/max(1, |S_last|)
    end type refinement_t
 
+   !> Relative rounding error of the constants c₀, c₁ of q = c₀ + c₁ w(τ) and of the
+   !> computed shape w, as a multiple of ε in `coefficient_level`: one rounding of c₀, one
+   !> of c₁ and up to two of w (its denominator and the division).
+   real(wp), parameter :: coefficient_roundings_c0 = 1.0_wp, coefficient_roundings_c1 = 3.0_wp
+   !> `coefficient_level` trusts a sensitivity while the cancellation of its two terms, the
+   !> ratio of the result to the sum of their magnitudes, stays above this: the solutions u,
+   !> v it is made of carry the integrator's own error (relative errors up to about 1e-8 of
+   !> the larger terms), which a stronger cancellation would leave as the whole result.
+   real(wp), parameter :: cancellation_limit = 1.0e-6_wp
+
+   !> Integrals along the half period [0, 1] of the even and odd solutions u, v that give
+   !> the sensitivity of S to the constants of q = c₀ + c₁ w(τ) (`coefficient_level`):
+   !> ∫u², ∫v², ∫u² c₁w, ∫v² c₁w, ∫u² |c₁w|, ∫v² |c₁w|, all in units of e^{log_unit}.
+   type :: sensitivity_t
+      real(wp) :: log_unit = 0.0_wp  !! the integrals are multiples of e^{log_unit}
+      real(wp) :: u2 = 0.0_wp, v2 = 0.0_wp      !! ∫u², ∫v²
+      real(wp) :: u2w = 0.0_wp, v2w = 0.0_wp    !! ∫u² c₁w, ∫v² c₁w
+      real(wp) :: u2a = 0.0_wp, v2a = 0.0_wp    !! ∫u² |c₁w|, ∫v² |c₁w|
+   end type sensitivity_t
+
 contains
+
+   !> Add one step of length h to the integrals of `acc`: u, v the solutions at the end of
+   !> the step in units of e^{log_scale}, `shape_part` = c₁ w(τ) = q − c₀ within the step.
+   pure subroutine accumulate_sensitivity(acc, u, v, log_scale, h, shape_part)
+      type(sensitivity_t), intent(inout) :: acc  !! the integrals, advanced
+      real(wp), intent(in) :: u, v        !! the even and odd solutions, times e^{-log_scale}
+      real(wp), intent(in) :: log_scale   !! ln of the scale of u and v
+      real(wp), intent(in) :: h           !! step length
+      real(wp), intent(in) :: shape_part  !! c₁ w at the step (q − c₀)
+      real(wp) :: f, uu, vv
+      if (acc%log_unit /= 2.0_wp*log_scale) then
+         f = exp(max(acc%log_unit - 2.0_wp*log_scale, -700.0_wp))
+         acc%u2 = acc%u2*f; acc%v2 = acc%v2*f
+         acc%u2w = acc%u2w*f; acc%v2w = acc%v2w*f
+         acc%u2a = acc%u2a*f; acc%v2a = acc%v2a*f
+         acc%log_unit = 2.0_wp*log_scale
+      end if
+      uu = h*u*u
+      vv = h*v*v
+      acc%u2 = acc%u2 + uu; acc%v2 = acc%v2 + vv
+      acc%u2w = acc%u2w + uu*shape_part; acc%v2w = acc%v2w + vv*shape_part
+      acc%u2a = acc%u2a + uu*abs(shape_part); acc%v2a = acc%v2a + vv*abs(shape_part)
+   end subroutine accumulate_sensitivity
+
+   !> Round-off of S from the rounding of q itself, relative to max(1, |S|): q = c₀ + c₁ w is
+   !> computed from rounded constants and a rounded shape w, a perturbation δq = δc₀ + δc₁ w
+   !> that every method sees alike. To first order (the variation of the monodromy M,
+   !> with the half-period symmetry of q)
+   !>
+   !>   ∂S/∂c₀ = 2 (m₂₁ ∫₀¹ v² − m₁₂ ∫₀¹ u²),   c₁ ∂S/∂c₁ = 2 (m₂₁ ∫₀¹ v² c₁w − m₁₂ ∫₀¹ u² c₁w),
+   !>
+   !> u, v the even and odd solutions, m₁₂ = 2 v(1) v'(1), m₂₁ = 2 u(1) u'(1). The level is
+   !> ε (|c₀ ∂S/∂c₀| + 3 |c₁ ∂S/∂c₁|)/max(1, |S|) (`coefficient_roundings_c0`, `_c1`). For a
+   !> constant q = ω² this is 2εω|sin 2ω| (c₀ and c₁ aside), the exact first-order effect of
+   !> a relative error ε of q; near β = 0 with α → π², where S ≈ 2 but a solution is nearly
+   !> periodic and the other grows secularly, it is the large ∂S/∂β that the rounding of
+   !> β − π² meets. The two terms of each sensitivity cancel where the solutions grow
+   !> (u², v² and m₁₂, m₂₁ of order |S|² for a result of order |S|): where the result is
+   !> below `cancellation_limit` times its terms it is integration noise and 0 is returned;
+   !> the phase term of `roundoff_level` (2εΦ, exact for growth at constant q) covers it.
+   pure real(wp) function coefficient_level(acc, c0, m, log_abs_s) result(level)
+      type(sensitivity_t), intent(in) :: acc    !! the integrals over [0, 1]
+      real(wp), intent(in) :: c0                !! the constant c₀ of q
+      type(scaled_matrix_t), intent(in) :: m    !! the monodromy
+      real(wp), intent(in) :: log_abs_s         !! ln|S|
+      real(wp) :: d0, d1, size0, size1, m12, m21, log_factor
+      m12 = m%m(1, 2)
+      m21 = m%m(2, 1)
+      d0 = 2.0_wp*abs(c0)*abs(m21*acc%v2 - m12*acc%u2)
+      size0 = 2.0_wp*abs(c0)*(abs(m21)*acc%v2 + abs(m12)*acc%u2)
+      d1 = 2.0_wp*abs(m21*acc%v2w - m12*acc%u2w)
+      size1 = 2.0_wp*(abs(m21)*acc%v2a + abs(m12)*acc%u2a)
+      level = 0.0_wp
+      if (d0 > cancellation_limit*size0) level = level + coefficient_roundings_c0*d0
+      if (d1 > cancellation_limit*size1) level = level + coefficient_roundings_c1*d1
+      if (level == 0.0_wp) return
+      log_factor = m%log_scale + acc%log_unit - max(0.0_wp, log_abs_s)
+      level = epsilon(1.0_wp)*level*exp(min(log_factor, log_huge))
+   end function coefficient_level
 
    !> Start a ladder for the target `tolerance`.
    pure subroutine start_refinement(ladder, tolerance)
@@ -129,12 +212,22 @@ contains
    !> which a double also stores only to ε Φ). With |β| = 3e5 at α = 9.86 that is 1.1e-12
    !> (rk and gsl both settle 4e-13 to 6e-13 away from the reference there); at β = −1e6,
    !> α → π², 2.6e-12.
-   elemental real(wp) function roundoff_level(log_peak, log_abs_s, n_steps, phase) result(level)
+   !>
+   !> `step_rounding` replaces the 0.1 for the Runge–Kutta integrators (rk, gsl), whose steps
+   !> round the state itself (y + h Σ bᵢkᵢ, no compensation): one rounding of ε per step at
+   !> the full condition. With 0.1 DOP853 at the Mathieu point ν = 226.17754433821787,
+   !> β = −193.3961568448847 (S = −3.46e6, κ/|S| = 2e4) settled 2.6e-11 off at local
+   !> tolerances 1e-14 and 1e-15 alike, against a level of 5.9e-12 (4.4×); with 1, 6e-11.
+   elemental real(wp) function roundoff_level(log_peak, log_abs_s, n_steps, phase, step_rounding) result(level)
       real(wp), intent(in) :: log_peak   !! ln of the largest `propagator_condition` along the path
       real(wp), intent(in) :: log_abs_s  !! ln|S|
       integer, intent(in) :: n_steps     !! steps of the propagation
       real(wp), intent(in) :: phase      !! bound of the phase or growth over the period (`phase_bound`)
-      level = roundoff_safety*epsilon(1.0_wp)*sqrt(real(max(n_steps, 1), wp)) &
+      real(wp), intent(in), optional :: step_rounding  !! factor of the √N term (default `roundoff_safety`)
+      real(wp) :: factor
+      factor = roundoff_safety
+      if (present(step_rounding)) factor = step_rounding
+      level = factor*epsilon(1.0_wp)*sqrt(real(max(n_steps, 1), wp)) &
               *exp(min(log_peak - max(0.0_wp, log_abs_s), log_huge)) + 2.0_wp*epsilon(1.0_wp)*phase
    end function roundoff_level
 
@@ -160,14 +253,24 @@ contains
       factor = max(10.0_wp, min(1.0e4_wp, 0.5_wp*exp(min(log_peak - max(0.0_wp, log_abs_s), 30.0_wp))))
    end function first_step_factor
 
-   !> The next local tolerance of a ladder: `local/factor`, not below `floor`; the floor is
-   !> reached from 10·floor, so that the last difference (the error estimate there) comes
-   !> from a tenfold step and not from a long jump.
+   !> The next local tolerance of a ladder: `local/factor`, not below `floor`, and never a
+   !> step of less than tenfold: between `floor` and 10·floor only the floor itself is used,
+   !> reached from 10·floor or above (from 100·floor or above the step goes to 10·floor
+   !> first). The last difference, the error estimate there, then comes from a step of at
+   !> least ten: a step from 1.78e-14 to 10·floor = 1e-14 (rk at α = 9.52, β = 1.5e-3,
+   !> tolerance 1e-10, where the error is about 400 times the local tolerance) gave a
+   !> difference of 0.4 times the finer value's error.
    elemental real(wp) function next_local_tolerance(local, factor, floor) result(next)
       real(wp), intent(in) :: local   !! the current local tolerance
       real(wp), intent(in) :: factor  !! the step down, > 1
       real(wp), intent(in) :: floor   !! the smallest local tolerance the integrator can use
       next = max(local/factor, floor)
-      if (next < 10.0_wp*floor .and. local > 10.001_wp*floor) next = 10.0_wp*floor
+      if (next < 10.0_wp*floor .and. local > 10.001_wp*floor) then
+         if (local >= 100.0_wp*floor) then
+            next = 10.0_wp*floor
+         else
+            next = floor
+         end if
+      end if
    end function next_local_tolerance
 end module hillstab_integrate_refine

@@ -18,17 +18,21 @@
 !> print *, watch%onset_time/watch%pendulum%period, watch%max_abs_phi
 !>```
 module hillstab_pendulum_analysis
-   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_kinds, only: wp, int64, pi, pi2
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_singular
    use hillstab_core_stats, only: work_stats_t
    use hillstab_integrate_rk, only: rk_options_t, rk_step_t, rk_integrate, rk_dense_value, rk_dop853
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_system_t, pendulum_bounce_monodromy, pendulum_angle, &
       pendulum_energy, pendulum_energy_scale, pendulum_atol, px, pvx
    use hillstab_ffi_lapack, only: dgeev
+   use hillstab_hill_models, only: hill_model_t, model_elastic
+   use hillstab_hill_model_elastic, only: one_minus_alpha_over_pi2
+   use hillstab_hill_transfer, only: scaled_matrix_t, scaled_identity
+   use hillstab_integrate_magnus, only: magnus_step
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
-   public :: bounce_multipliers_t, bounce_multipliers, onset_periods
+   public :: bounce_multipliers_t, bounce_multipliers, onset_periods, linear_onset_periods
    public :: pendulum_watch_t, pendulum_integrate, default_phi_sat
 
    !> The swing threshold of the onset law: |φ| = 0.1 rad ends the linear phase.
@@ -57,6 +61,12 @@ module hillstab_pendulum_analysis
       real(wp) :: energy_start = 0.0_wp       !! E at the start [J/kg]
       real(wp) :: energy_scale = 0.0_wp       !! ½|v|² + ½ω²(r − r0)² + g|z| at the start [J/kg]
       real(wp) :: max_energy_error = 0.0_wp   !! max |E − E(0)| over step ends [J/kg]
+      !> sample times t_j = j T / samples_per_period, j = 0 … n_samples, whose energies are
+      !> also watched (from the dense output, as the series task writes its rows; 0: none)
+      integer :: samples_per_period = 0
+      integer(int64) :: n_samples = 0                  !! the last sample index j
+      integer(int64) :: next_sample = 0                !! the next sample index to watch
+      real(wp) :: max_sample_energy_error = 0.0_wp  !! max |E − E(0)| over the sample times [J/kg]
       real(wp) :: energy_last = 0.0_wp        !! E at the last step end
       integer(int64) :: energy_increases = 0  !! steps over which E rose by more than round-off
       real(wp) :: onset_time = -1.0_wp        !! first t with |φ| > phi_sat [s]; < 0: not reached
@@ -147,6 +157,88 @@ contains
       end if
    end function onset_periods
 
+   !> The onset of the swing from the linear theory in full: the first time, in radial
+   !> periods, at which the linearised swing from the start of eq. (38) reaches |φ| = φ_sat
+   !> (−1: never, no growth or φ0 = 0), undamped.
+   !>
+   !> About the bounce r(τ) = ρ(1 − k cos πτ) (τ = ωt/π, k = α/π²) the swing x = r sin φ
+   !> obeys the Hill equation x'' + Q(τ) x = 0 exactly (eq. (20)), and the start at rest
+   !> with φ(0) = φ0 is x(0) = r(0) sin φ0, x'(0) = 0: x = r(0) sin φ0 · u(τ), u the even
+   !> solution. Over the n-th period u(2n + s) = (Φ(s) Mⁿ e₁)₁ — Φ the propagator within the
+   !> period, M = Φ(2) the monodromy, so Mⁿ e₁ = c₊ λⁿ v₊ + c₋ λ⁻ⁿ v₋ carries both Floquet
+   !> solutions with the coefficients of the start, and Φ(s) their periodic factors — and
+   !> |φ| = φ_sat where |x|/r = sin φ_sat, that is
+   !>
+   !>   |sin φ0| |u(τ)| (1 − k)/(1 − k cos πτ) = sin φ_sat.
+   !>
+   !> Φ on 4096 equal Magnus-6 steps of the period; the crossing located between two of
+   !> them by linear interpolation. The law n* = ln(φ_sat/|φ0|)/ln λ_max (`onset_periods`)
+   !> keeps only the multiplier and comes 0.2–1.1 periods early; this also has the
+   !> projection of the start onto the growing solution and where within the period |φ|
+   !> peaks. It holds while the swing is linear up to φ_sat: for φ0 ≤ 1e-5 the nonlinear
+   !> terms act only over the last fraction of a period; from larger φ0 the swing feeds
+   !> back on the bounce before φ_sat (tested: within 0.1 period at φ0 ≤ 1e-5 at the paper's
+   !> (b), (e), (g)).
+   function linear_onset_periods(alpha, beta, phi0, phi_sat) result(n_onset)
+      real(wp), intent(in) :: alpha, beta  !! the chart point, 0 ≤ α < π²
+      real(wp), intent(in) :: phi0         !! initial angle [rad]
+      real(wp), intent(in) :: phi_sat      !! threshold [rad], 0 < phi_sat < π/2
+      real(wp) :: n_onset
+      integer, parameter :: steps = 4096
+      real(wp) :: p11(0:steps), p12(0:steps), shape(0:steps), m(2, 2), w(2), log_w, h, target, value, before, &
+                  big, law, lambda
+      type(scaled_matrix_t) :: a
+      type(hill_model_t) :: model
+      integer(int64) :: n_evaluations
+      integer :: j, n, n_max
+      n_onset = -1.0_wp
+      if (phi0 == 0.0_wp .or. .not. (alpha >= 0.0_wp .and. alpha < pi2)) return
+      if (abs(phi0) >= phi_sat) then
+         n_onset = 0.0_wp
+         return
+      end if
+      model = hill_model_t(model_elastic, alpha, beta, 0.0_wp)
+      h = 2.0_wp/steps
+      a = scaled_identity()
+      n_evaluations = 0
+      p11(0) = 1.0_wp
+      p12(0) = 0.0_wp
+      do j = 1, steps
+         call magnus_step(model, 6, (j - 1)*h, h, a, n_evaluations)
+         if (a%log_scale > 600.0_wp) return   ! growth beyond doubles within one period: no prediction
+         p11(j) = a%m(1, 1)*exp(a%log_scale)
+         p12(j) = a%m(1, 2)*exp(a%log_scale)
+      end do
+      m = a%m*exp(a%log_scale)
+      lambda = 0.5_wp*(abs(m(1, 1) + m(2, 2)) + sqrt(max((m(1, 1) + m(2, 2))**2 - 4.0_wp, 0.0_wp)))
+      law = onset_periods(phi0, phi_sat, lambda)
+      if (law < 0.0_wp) return
+      n_max = min(10**6, ceiling(2.0_wp*law) + 20)
+      ! (1 − k)/(1 − k cos πτ) = r(0)/r(τ) at the mesh points
+      do j = 0, steps
+         shape(j) = one_minus_alpha_over_pi2(alpha)/(one_minus_alpha_over_pi2(alpha) + &
+                    2.0_wp*(alpha/pi2)*sin(0.5_wp*pi*j*h)**2)
+      end do
+      target = sin(phi_sat)/abs(sin(phi0))
+      w = [1.0_wp, 0.0_wp]
+      log_w = 0.0_wp
+      before = shape(0)
+      do n = 0, n_max
+         do j = 1, steps
+            value = exp(log_w)*abs(p11(j)*w(1) + p12(j)*w(2))*shape(j)
+            if (value >= target) then
+               n_onset = n + ((j - 1) + (target - before)/(value - before))*h/2.0_wp
+               return
+            end if
+            before = value
+         end do
+         w = matmul(m, w)
+         big = maxval(abs(w))
+         w = w/big
+         log_w = log_w + log(big)
+      end do
+   end function linear_onset_periods
+
    !> Integrate `system` (any pendulum system, e.g. a `pendulum_watch_t`) from t = 0 to
    !> t_end with DOP853 and its 7th-order dense output, relative tolerance rtol and the
    !> absolute tolerances of `pendulum_atol` (relative accuracy in a tiny swing). On
@@ -189,8 +281,23 @@ contains
          self%time_of_max_phi = step%t
          self%onset_time = -1.0_wp
          if (self%max_abs_phi > self%phi_sat) self%onset_time = step%t
+         self%max_sample_energy_error = 0.0_wp
+         self%next_sample = 1
          return
       end if
+      ! the sample times in (t_old, t], computed as the series task computes them
+      do while (self%samples_per_period > 0 .and. self%next_sample <= self%n_samples)
+         ts = real(self%next_sample, wp)*self%pendulum%period/real(self%samples_per_period, wp)
+         if (ts > step%t) exit
+         if (ts == step%t) then
+            y = step%y
+         else
+            y = rk_dense_value(step, ts)
+         end if
+         self%max_sample_energy_error = max(self%max_sample_energy_error, &
+                                            abs(pendulum_energy(self%pendulum, y) - self%energy_start))
+         self%next_sample = self%next_sample + 1
+      end do
       e = pendulum_energy(self%pendulum, step%y)
       self%max_energy_error = max(self%max_energy_error, abs(e - self%energy_start))
       noise = 16*epsilon(1.0_wp)*self%energy_scale
