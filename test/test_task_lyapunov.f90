@@ -83,23 +83,24 @@ contains
          error, written)
       call check(ctx, .not. allocated(error), "runs")
       if (allocated(error)) return
-      call rows_of(written, 16, rows, n_blank, columns)
-      call check(ctx, columns == "alpha beta lyapunov spread stable lambda_max log_lambda_max max_abs_phi "// &
+      call rows_of(written, 17, rows, n_blank, columns)
+      call check(ctx, columns == "alpha beta lyapunov spread lyapunov_error stable lambda_max log_lambda_max max_abs_phi "// &
          "energy_drift chaotic megno fli energy_error integrator periods status", "columns")
       call check(ctx, size(rows, 2) == 6 .and. n_blank == 2, "6 lines in 3 blocks")
       if (size(rows, 2) /= 6) return
-      call check(ctx, all(rows(16, :) == 0.0_wp) .and. all(rows(15, :) == 60.0_wp), "status 0, 60 periods")
-      call check(ctx, all(rows(14, :) == 2.0_wp), "integrator 2 (DOP853)")
-      call check(ctx, rows(11, 1) < 3.0_wp .and. rows(11, 6) > 3.5_wp, "megno below 3 at (c), above 3.5 at (g)")
-      call check(ctx, rows(10, 1) == 0.0_wp .and. rows(10, 6) == 1.0_wp, "(c) regular, (g) chaotic")
-      call check(ctx, all(rows(12, :) >= 0.0_wp) .and. all(rows(13, :) >= rows(9, :)), "fli >= 0, energy_error >= drift")
+      call check(ctx, all(rows(17, :) == 0.0_wp) .and. all(rows(16, :) == 60.0_wp), "status 0, 60 periods")
+      call check(ctx, all(rows(15, :) == 2.0_wp), "integrator 2 (DOP853)")
+      call check(ctx, rows(12, 1) < 3.0_wp .and. rows(12, 6) > 3.5_wp, "megno below 3 at (c), above 3.5 at (g)")
+      call check(ctx, rows(11, 1) == 0.0_wp .and. rows(11, 6) == 1.0_wp, "(c) regular, (g) chaotic")
+      call check(ctx, all(rows(13, :) >= 0.0_wp) .and. all(rows(14, :) >= rows(10, :)), "fli >= 0, energy_error >= drift")
       do k = 1, 6
          call pendulum_from_chart(rows(1, k), rows(2, k), 0.0_wp, 0.2_wp, 9.81_wp, p, error)
          call lyapunov_largest(p, pendulum_initial_state(p, 0.017_wp), 60, 1.0e-10_wp, reference, error)
          call check(ctx, rows(3, k), reference%exponent, rel=1.0e-9_wp, abs=1.0e-12_wp)
          call check(ctx, rows(4, k), reference%spread, rel=1.0e-2_wp, abs=1.0e-12_wp)
-         call check(ctx, rows(8, k), reference%max_abs_phi, rel=1.0e-5_wp)
-         call check(ctx, abs(rows(7, k) - log(rows(6, k))) < 1.0e-8_wp*max(1.0_wp, rows(7, k)), &
+         call check(ctx, rows(5, k), reference%exponent_error, rel=1.0e-2_wp, abs=1.0e-12_wp)
+         call check(ctx, rows(9, k), reference%max_abs_phi, rel=1.0e-5_wp)
+         call check(ctx, abs(rows(8, k) - log(rows(7, k))) < 1.0e-8_wp*max(1.0_wp, rows(8, k)), &
             "log_lambda_max = ln lambda_max")
          write (points(k), '(2es24.16)') rows(1, k), rows(2, k)
       end do
@@ -111,8 +112,8 @@ contains
       if (.not. allocated(error)) then
          call rows_of(chart_written, 5, core, n_core_blank, columns)
          do k = 1, 6
-            call check(ctx, rows(5, k) == core(4, k), "stable as the chart")
-            call check(ctx, rows(6, k), core(5, k), rel=1.0e-9_wp)
+            call check(ctx, rows(6, k) == core(4, k), "stable as the chart")
+            call check(ctx, rows(7, k), core(5, k), rel=1.0e-9_wp)
          end do
          call delete_file(chart_written)
       end if
@@ -144,22 +145,22 @@ contains
          padded(grid)], error, slow)
       call check(ctx, .not. allocated(error), "dop853 runs")
       if (allocated(error)) return
-      call rows_of(fast, 16, a, na, columns)
-      call rows_of(slow, 16, b, nb, columns)
+      call rows_of(fast, 17, a, na, columns)
+      call rows_of(slow, 17, b, nb, columns)
       call check(ctx, size(a, 2) == 12 .and. size(b, 2) == 12, "12 lines each")
       if (size(a, 2) /= 12 .or. size(b, 2) /= 12) return
-      call check(ctx, all(a(10, :) == b(10, :)), "same verdicts")
-      call check(ctx, count(a(14, :) == 1.0_wp) >= 9, "symplectic at most points")
-      call check(ctx, all(a(13, :) <= 1.0e-6_wp .or. a(14, :) == 2.0_wp), "energy errors within the tolerance")
-      call check(ctx, any(a(10, :) == 1.0_wp) .and. any(a(10, :) == 0.0_wp), "both kinds of orbit")
+      call check(ctx, all(a(11, :) == b(11, :)), "same verdicts")
+      call check(ctx, count(a(15, :) == 1.0_wp) >= 9, "symplectic at most points")
+      call check(ctx, all(a(14, :) <= 1.0e-6_wp .or. a(15, :) == 2.0_wp), "energy errors within the tolerance")
+      call check(ctx, any(a(11, :) == 1.0_wp) .and. any(a(11, :) == 0.0_wp), "both kinds of orbit")
       do k = 1, 12
-         if (a(10, k) == 0.0_wp .and. b(10, k) == 0.0_wp) then
+         if (a(11, k) == 0.0_wp .and. b(11, k) == 0.0_wp) then
             call check(ctx, abs(a(3, k) - b(3, k)) <= max(a(4, k), b(4, k)), "regular: exponents within the spread")
-            call check(ctx, a(15, k) == 300.0_wp, "regular: the full periods")
-         else if (a(10, k) == 1.0_wp) then
-            call check(ctx, a(15, k) < 300.0_wp, "chaotic: stopped early")
+            call check(ctx, a(16, k) == 300.0_wp, "regular: the full periods")
+         else if (a(11, k) == 1.0_wp) then
+            call check(ctx, a(16, k) < 300.0_wp, "chaotic: stopped early")
          end if
-         call check(ctx, a(5, k) == b(5, k) .and. a(6, k) == b(6, k), "the same linear columns")
+         call check(ctx, a(6, k) == b(6, k) .and. a(7, k) == b(7, k), "the same linear columns")
       end do
       call delete_file(fast)
       call delete_file(slow)
@@ -207,8 +208,8 @@ contains
          padded("&points file='"//scratch_prefix("lyap_p")//".dat' /")], error, list)
       call check(ctx, .not. allocated(error), "runs")
       if (allocated(error)) return
-      call rows_of(grid, 16, a, na, columns)
-      call rows_of(list, 16, b, nb, columns)
+      call rows_of(grid, 17, a, na, columns)
+      call rows_of(list, 17, b, nb, columns)
       call check(ctx, size(a, 2) == 2 .and. size(b, 2) == 2 .and. nb == 0, "two lines each")
       if (size(a, 2) == 2 .and. size(b, 2) == 2) call check(ctx, all(a == b), "same values")
       call delete_file(grid)

@@ -53,10 +53,10 @@ module hillstab_batch_task_lyapunov
    !> Most lanes a scene may ask for.
    integer, parameter :: max_lanes = 256
    !> The columns, by index.
-   integer, parameter :: col_alpha = 1, col_beta = 2, col_lyapunov = 3, col_spread = 4, col_stable = 5, &
-      col_lambda_max = 6, col_log_lambda_max = 7, col_max_abs_phi = 8, col_energy_drift = 9, col_chaotic = 10, &
-      col_megno = 11, col_fli = 12, col_energy_error = 13, col_integrator = 14, col_periods = 15, col_status = 16, &
-      n_columns = 16
+   integer, parameter :: col_alpha = 1, col_beta = 2, col_lyapunov = 3, col_spread = 4, col_lyapunov_error = 5, &
+      col_stable = 6, col_lambda_max = 7, col_log_lambda_max = 8, col_max_abs_phi = 9, col_energy_drift = 10, &
+      col_chaotic = 11, col_megno = 12, col_fli = 13, col_energy_error = 14, col_integrator = 15, col_periods = 16, &
+      col_status = 17, n_columns = 17
 
    !> The lyapunov task: the pendulum of `&series` over a grid or a list of points.
    type, extends(task_t) :: lyapunov_task_t
@@ -296,7 +296,10 @@ contains
       table(col_lyapunov) = column_t("lyapunov", "", "finite-time largest Lyapunov exponent per radial period "// &
          "over the periods integrated (Benettin: one tangent vector, renormalised every period)", style_e11, 0.0_wp)
       table(col_spread) = column_t("spread", "", "max - min of the running estimate over the last half of the "// &
-         "periods (error indication; a regular orbit decays like ln n/n)", style_e4, -1.0_wp)
+         "periods (how far it still moves, not an error bar; a regular orbit decays like ln n/n)", style_e4, -1.0_wp)
+      table(col_lyapunov_error) = column_t("lyapunov_error", "", "error bar of lyapunov: 95% half-width by batch "// &
+         "means of the per-period growths (min(5, periods) batches, Student's t); covers the scatter of runs from "// &
+         "starts 1e-12 apart", style_e4, -1.0_wp)
       table(col_stable) = column_t("stable", "", "the chart's linear verdict for the swing about the bounce "// &
          "(0.5: marginal, as in charts)", style_flag, -1.0_wp)
       table(col_lambda_max) = column_t("lambda_max", "", "largest |multiplier| of the linearised swing per radial "// &
@@ -385,7 +388,7 @@ contains
       class(lyapunov_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
       character(len=:), allocatable :: lines(:)
-      character(len=400) :: text(16)
+      character(len=400) :: text(18)
       integer :: n
       n = 0
       n = n + 1; text(n) = "each point: the pendulum at (alpha, beta) with r0, g of &series, started at phi0 (eq. (38)), "// &
@@ -396,7 +399,12 @@ contains
       n = n + 1; text(n) = "lyapunov: finite-time largest Lyapunov exponent per radial period (Benettin: one tangent "// &
          "vector, renormalised every period)"
       n = n + 1; text(n) = "spread: max - min of the running estimate over the last half of the periods "// &
-         "(error indication; a regular orbit decays like ln n/n)"
+         "(how far it still moves; not an error bar)"
+      n = n + 1; text(n) = "lyapunov_error: 95% half-width of lyapunov by batch means: the periods' growths "// &
+         "ln(|delta(k)|/|delta(k-1)|) in B = min(5, periods) consecutive batches, the standard error of their "// &
+         "mean times Student's t (B - 1)"
+      n = n + 1; text(n) = "lyapunov_error covers the scatter of lyapunov between runs from starts 1e-12 apart "// &
+         "(chaotic orbits), is ~ sqrt(B) t/periods on regular ones and wider on points stopped early (fewer periods)"
       n = n + 1; text(n) = "megno: MEGNO <Y> -> 2 quasi-periodic, -> 0 stable periodic, ~ lyapunov t/2 chaotic; fli: "// &
          "largest ln|delta| at the period ends (|delta(0)| = 1)"
       n = n + 1; text(n) = "stable, lambda_max: the chart's linear verdict for the swing about the bounce (method "// &
@@ -516,6 +524,7 @@ contains
          f = floquet_from_trace(tr, scene%epsilon)
          v(col_lyapunov) = result%lyapunov
          v(col_spread) = result%spread
+         v(col_lyapunov_error) = result%lyapunov_error
          v(col_stable) = merge(1.0_wp, 0.0_wp, f%stable)
          ! |S| within its error bound of the threshold: as the chart writes it
          if (f%marginal) v(col_stable) = 0.5_wp

@@ -21,7 +21,9 @@
 !> Indicators, all from the tangent vector δ with ‖δ‖² = δx² + δz² + (δx'² + δz'²)/ω²,
 !> renormalised at the end of every radial period, and t in radial periods:
 !> - `lyapunov`: λ_n = (1/n) Σ ln(‖δ(k)‖/‖δ(k−1)‖) (Benettin), per radial period;
-!>   `spread`: max − min of λ_m over m ∈ [⌈n/2⌉, n] (as `lyapunov_largest`).
+!>   `spread`: max − min of λ_m over m ∈ [⌈n/2⌉, n] (as `lyapunov_largest`), how far it
+!>   still moves; `lyapunov_error`: the error bar of λ_n by batch means of the growths
+!>   (`lyapunov_error_bar`: 95 % half-width, B = min(5, n) batches, Student's t).
 !> - `megno`: ⟨Y⟩(t) = (1/t) ∫₀ᵗ Y ds with Y(t) = (2/t) ∫₀ᵗ s (δ̇·δ)/(δ·δ) ds
 !>   (Cincotta & Simó, A&AS 147 (2000) 205, eq. (2)–(3)), from the same tangent vector
 !>   at no extra integration: on the symplectic scheme by the trapezoidal rule over its
@@ -48,7 +50,7 @@ module hillstab_pendulum_chaos
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use hillstab_core_stats, only: work_stats_t, add_work
    use hillstab_integrate_rk, only: rk_step_t, rk_options_t, rk_integrate, rk_dop853, rk_dense_value
-   use hillstab_pendulum_lyapunov, only: tangent_norm
+   use hillstab_pendulum_lyapunov, only: tangent_norm, lyapunov_error_bar
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_tangent_t, pendulum_atol, pendulum_energy, &
       pendulum_radius, px, pz
    use hillstab_pendulum_symplectic, only: symplectic_scheme_t, symplectic_scheme, symplectic_scheme_count, &
@@ -69,6 +71,8 @@ module hillstab_pendulum_chaos
       integer :: periods = 0           !! radial periods integrated (fewer than asked: stopped early or failed)
       real(wp) :: lyapunov = 0.0_wp    !! λ_n: finite-time largest Lyapunov exponent per radial period
       real(wp) :: spread = 0.0_wp      !! max − min of λ_m over m ∈ [⌈n/2⌉, n]
+      !> error bar of λ_n: 95 % half-width by batch means of the growths (`lyapunov_error_bar`)
+      real(wp) :: lyapunov_error = 0.0_wp
       real(wp) :: megno = 0.0_wp       !! ⟨Y⟩ at the end
       real(wp) :: fli = 0.0_wp         !! fast Lyapunov indicator: max ln‖δ‖ at the period ends
       real(wp) :: chaotic = 0.5_wp     !! verdict: 1 chaotic, 0 regular, 0.5 undecided
@@ -324,6 +328,7 @@ contains
       end do
       result%lyapunov = sum_log/n
       result%spread = high - low
+      result%lyapunov_error = lyapunov_error_bar(track%growth(:n, k))
       result%megno = track%megno(n, k)
       result%fli = track%fli(k)
       call chaos_verdict(options, n, periods, track%megno(n, k), track%megno((n + 1)/2, k), track%allowance(k), &

@@ -23,7 +23,7 @@ module hillstab_pendulum_gsl_lyapunov
    use hillstab_pendulum_gsl, only: gsl_rk8pd_scaled_driver
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_rhs, pendulum_jacobian, pendulum_atol, pendulum_angle, &
       pendulum_energy, pendulum_energy_scale
-   use hillstab_pendulum_lyapunov, only: lyapunov_t, tangent_norm
+   use hillstab_pendulum_lyapunov, only: lyapunov_t, lyapunov_error_bar, tangent_norm
    implicit none
    private
    public :: lyapunov_largest_gsl
@@ -100,6 +100,7 @@ contains
       result%exponent = result%running(periods)
       half = (periods + 1)/2
       result%spread = maxval(result%running(half:)) - minval(result%running(half:))
+      result%exponent_error = lyapunov_error_bar(result%log_growth)
       result%final_state = state(1:4)
       result%energy_drift = abs(pendulum_energy(p, state(1:4)) - pendulum_energy(p, y0))/ &
                             max(pendulum_energy_scale(p, y0), tiny(1.0_wp))
