@@ -12,7 +12,7 @@ set xlabel "φ(0) [rad]"
 set ylabel "radial periods until |φ| > 0.1"
 set grid lc "#dddddd"
 set key top right box opaque
-set title "Onset of the swing: observed (points) against ln(0.1/φ0)/ln λ_{max} (lines)"
+set title "Onset of the swing: observed (points), ln(0.1/φ0)/ln λ_{max} (solid), the linear solution (dashed)"
 file = 'out/onset_law.dat'
 plot file using ($1 == 2 ? $4 : 1/0):7 with points pt 7 ps 1.3 lc "#23406e" title "(b) α=3.70, β=2.47", \
      file using ($1 == 2 ? $4 : 1/0):6 with lines lw 1.5 lc "#23406e" notitle, \
