@@ -17,7 +17,9 @@
 !> α = 9.8, β = 0, where S = 2). A local epsilon therefore does not bound the error of
 !> S: `monodromy_gsl` integrates with eps = tolerance·gsl_tolerance_factor, then eps
 !> divided by max(10, κ/2), then by 10, until two successive traces agree to the
-!> tolerance (hillstab_integrate_refine), and reports round-off limited (err_accuracy) where eps
+!> tolerance and their difference has contracted to at most half the one before
+!> (hillstab_integrate_refine `refine`, `contraction`: rk8pd's global error need not
+!> follow its epsilon, so two agreeing values alone do not bound it), and reports round-off limited (err_accuracy) where eps
 !> reaches its floor 1e-15 or GSL's control cannot meet it (GSL_FAILURE). The driver's
 !> loop is run here (`integrate_pair`) so that every step is exact in time (GSL advances
 !> t by a rounded t + h; over the 1e4 steps at |β| ~ 1e5 that cost up to 3e-12 in S),
@@ -310,8 +312,8 @@ contains
    !> `tolerance` is the target error on S relative to max(1, |S|), with a global error
    !> control (hillstab_integrate_refine): the half period is integrated with GSL's control epsilon
    !> tolerance·gsl_tolerance_factor, then smaller (first by the condition of the
-   !> propagator, then tenfold) until two successive traces agree to the tolerance; the
-   !> finer monodromy is returned and their difference is the error estimate. When the
+   !> propagator, then tenfold) until two successive traces agree to the tolerance with a
+   !> difference at most half the one before (or at the round-off level); the finer monodromy is returned and their difference is the error estimate. When the
    !> epsilon reaches its floor, GSL's control cannot meet it (GSL_FAILURE: rounding
    !> noise), or the traces differ by rounding noise only, the finest monodromy comes back
    !> with err_accuracy (round-off limited) and its estimate. `stats` counts every pass.
@@ -395,7 +397,7 @@ contains
          noise = roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding) + coefficient_noise
          last_coefficient_noise = coefficient_noise
          call refine(ladder, tr, eps <= 1.001_wp*smallest_gsl_epsilon .or. run == max_ladder_runs, noise, &
-                     near_floor=eps <= 1.0e3_wp*smallest_gsl_epsilon)
+                     near_floor=eps <= 1.0e3_wp*smallest_gsl_epsilon, contraction=.true.)
          best = trial
          if (ladder%verdict /= refine_more) then
             estimate = tr%error_estimate
