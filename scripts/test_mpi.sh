@@ -85,7 +85,8 @@ for np in 1 3; do
    check "bad_scene_np${np}_exit2_every_rank" 'all_ranks "$work/st" $np 2 && [ ! -e "$work/bad_chart.dat" ]'
    check "bad_scene_np${np}_one_message" '[ $(cat "$work"/st/stderr.* | grep -c "n_alpah") -eq 1 ]'
 done
-printf '%s\n' "&scene task='chart', output='$work/no/such/dir/x' /" "&chart n_alpha=3, n_beta=3 /" >"$work/nodir.nml"
+# (a missing directory is created; under a regular file none can be)
+printf '%s\n' "&scene task='chart', output='$work/bad.nml/dir/x' /" "&chart n_alpha=3, n_beta=3 /" >"$work/nodir.nml"
 rank_statuses 3 "$work/st" "$work/nodir.nml"
 check "unwritable_output_exit2_every_rank" 'all_ranks "$work/st" 3 2'
 rank_statuses 2 "$work/st" "$work/missing.nml"

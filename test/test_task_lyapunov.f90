@@ -32,6 +32,7 @@ contains
          new_unittest("default_integrator_same_verdicts", default_integrator_same_verdicts), &
          new_unittest("lanes_do_not_change_lines", lanes_do_not_change_lines), &
          new_unittest("points_same_values", points_same_values), &
+         new_unittest("over_a_spring", over_a_spring), &
          new_unittest("repeat_and_distributed", repeat_and_distributed), &
          new_unittest("bad_input", bad_input)])
    end function collect_task_lyapunov
@@ -190,6 +191,92 @@ contains
       ! the scene file line and the &lyapunov line differ
       if (size(a) == size(b)) call check(ctx, count(a /= b) == 2, "only the scene lines differ")
    end subroutine lanes_do_not_change_lines
+
+   !> Over the amplitudes and frequencies of `&physical` (3 x 2, r0 = 0.3 m): blocks of
+   !> constant a; a, omega as given; alpha = a pi^2/rho with rho = r0 + g/omega^2, beta =
+   !> g pi^2/(rho omega^2); lyapunov_per_s = lyapunov omega/(2 pi); every indicator equal
+   !> to a run over `&points` at the same (alpha, beta) with r0, g in `&series`; the file
+   !> repeats its run; the spring and `&chart` (or r0 in `&series`) together refused.
+   subroutine over_a_spring(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: spring, list, columns, copy, again
+      real(wp), allocatable :: a(:, :), b(:, :)
+      character(len=60) :: points(6)
+      real(wp), parameter :: g = 9.80665_wp, r0 = 0.3_wp, pi = acos(-1.0_wp)
+      real(wp) :: rho, amplitude, omega
+      integer :: na, nb, k, i, j
+      character(len=1024), allocatable :: first(:), second(:)
+      call run_text_scene("lyap_spring", [padded("&scene task='lyapunov', output='"// &
+         scratch_prefix("lyap_spring")//"' /"), padded("&series periods=40 /"), &
+         padded("&physical r0=0.3, a_min=0.002, a_max=0.05, n_a=3, omega_min=8, omega_max=12, n_omega=2 /")], &
+         error, spring)
+      call check(ctx, .not. allocated(error), "runs")
+      if (allocated(error)) return
+      call rows_of(spring, 20, a, na, columns)
+      call check(ctx, columns == "alpha beta a omega lyapunov lyapunov_per_s spread lyapunov_error stable lambda_max "// &
+         "log_lambda_max max_abs_phi energy_drift chaotic megno fli energy_error integrator periods status", "columns")
+      call check(ctx, size(a, 2) == 6 .and. na == 2, "6 lines in 3 blocks of constant a")
+      if (size(a, 2) /= 6) return
+      do k = 1, 6
+         i = (k - 1)/2 + 1
+         j = mod(k - 1, 2) + 1
+         amplitude = 0.002_wp + (i - 1)*0.024_wp
+         omega = 8.0_wp + (j - 1)*4.0_wp
+         rho = r0 + g/omega**2
+         call check(ctx, a(3, k), amplitude, rel=1.0e-15_wp)
+         call check(ctx, a(4, k), omega, rel=1.0e-15_wp)
+         call check(ctx, a(1, k), amplitude*pi**2/rho, rel=1.0e-14_wp)
+         call check(ctx, a(2, k), g*pi**2/(rho*omega**2), rel=1.0e-14_wp)
+         call check(ctx, a(6, k), a(5, k)*omega/(2.0_wp*pi), rel=1.0e-9_wp, abs=1.0e-12_wp)
+         write (points(k), '(2es24.16e3)') a(1, k), a(2, k)
+      end do
+      call write_file(scratch_prefix("lyap_spring_pts")//".dat", points)
+      call run_text_scene("lyap_spring_pts", [padded("&scene task='lyapunov', output='"// &
+         scratch_prefix("lyap_spring_pts")//"' /"), padded("&series periods=40, r0=0.3, g=9.80665 /"), &
+         padded("&lyapunov over='points' /"), padded("&points file='"//scratch_prefix("lyap_spring_pts")//".dat' /")], &
+         error, list)
+      call check(ctx, .not. allocated(error), "the points run")
+      if (.not. allocated(error)) then
+         call rows_of(list, 17, b, nb, columns)
+         if (size(b, 2) == 6) then
+            ! the shared columns: the spring's file has a, omega (3, 4) and lyapunov_per_s (6) more
+            call check(ctx, all(a([1, 2, 5], :) == b([1, 2, 3], :)) .and. all(a(7:20, :) == b(4:17, :)), &
+               "every indicator as over &points")
+         else
+            call check(ctx, .false., "6 lines over &points")
+         end if
+         call delete_file(list)
+      end if
+      ! the file repeats its run
+      first = read_lines(spring)
+      copy = scratch_prefix("lyap_spring_copy")//".dat"
+      call write_file(copy, first)
+      call delete_file(spring)
+      call run_scene_file(copy, .true., error, again)
+      call check(ctx, .not. allocated(error), "repeats from its output")
+      if (.not. allocated(error)) then
+         second = read_lines(again)
+         call check(ctx, size(first) == size(second), "same length")
+         if (size(first) == size(second)) call check(ctx, count(first /= second) == 1, "only the scene file line differs")
+         call delete_file(again)
+      end if
+      call delete_file(copy)
+      call delete_file(scratch_prefix("lyap_spring_pts")//".dat")
+      ! the spring and the dimensionless grid together
+      call run_text_scene("lyap_spring_bad", [padded("&scene task='lyapunov', output='"// &
+         scratch_prefix("lyap_spring_bad")//"' /"), padded("&series periods=40, r0=0.1 /"), &
+         padded("&physical r0=0.3, a_min=0.002, a_max=0.05, n_a=3, omega=10 /")], error, list)
+      call check(ctx, allocated(error), "r0 in &series with &physical refused")
+      if (allocated(error)) call check(ctx, contains_text(error%message, "&series: r0:"), "names &series r0: "// &
+         error%message)
+      call run_text_scene("lyap_spring_bad", [padded("&scene task='lyapunov', output='"// &
+         scratch_prefix("lyap_spring_bad")//"' /"), padded("&series periods=40 /"), padded("&chart /"), &
+         padded("&physical r0=0.3, a_min=0.002, a_max=0.05, n_a=3, omega=10 /")], error, list)
+      call check(ctx, allocated(error), "&chart with &physical refused")
+      if (allocated(error)) call check(ctx, contains_text(error%message, "&chart:"), "names &chart: "//error%message)
+      call check(ctx, .not. file_exists(scratch_prefix("lyap_spring_bad")//"_lyapunov.dat"), "no file")
+   end subroutine over_a_spring
 
    !> Over `&points`: the lines of the same points as the grid's (no blank lines).
    subroutine points_same_values(ctx)

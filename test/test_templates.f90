@@ -228,6 +228,8 @@ contains
          case ("series")
             physical = without_lines(without_lines(without_lines(without_lines(physical, "  alpha ="), "  beta ="), &
                                      "  r0 ="), "  g =")
+         case ("lyapunov")
+            physical = without_group(without_lines(without_lines(physical, "  r0 ="), "  g ="), "chart")
          end select
          call run_ok(ctx, trim(names(k))//" with &physical", physical)
          ! k and m instead of omega
@@ -252,7 +254,8 @@ contains
             variant = replaced(variant, new_line("a")//"! omega_min =", new_line("a")//"omega_min =")
             variant = replaced(variant, new_line("a")//"! omega_max =", new_line("a")//"omega_max =")
             variant = replaced(variant, new_line("a")//"! n_omega =", new_line("a")//"n_omega =")
-            variant = without_group(without_lines(variant, "omega ="), "chart")
+            ! the list a, where the task also takes one, goes: the range replaces it
+            variant = without_group(without_lines(without_lines(variant, "omega ="), "a ="), "chart")
             call run_ok(ctx, trim(names(k))//" with &physical over (a, omega)", variant)
          else if (index(physical, new_line("a")//"! r0 =") > 0) then
             variant = without_group(replaced(physical, new_line("a")//"! r0 =", new_line("a")//"r0 ="), "chart")

@@ -17,7 +17,7 @@
 !> file. Batches start at fixed point indices (1, 1 + lanes, …), so that a point's
 !> companions, and its line, do not depend on how the units are cut.
 module hillstab_batch_task_lyapunov
-   use hillstab_core_kinds, only: wp, int64, pi2, version_string
+   use hillstab_core_kinds, only: wp, int64, pi, pi2, version_string
    use hillstab_core_error, only: error_t, set_error, err_accuracy, err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_core_text, only: real_text, integer_text, lower_case
@@ -29,10 +29,12 @@ module hillstab_batch_task_lyapunov
    use hillstab_pendulum_symplectic, only: symplectic_scheme_id, symplectic_scheme_name, symplectic_scheme_count
    use hillstab_pendulum_chaos, only: chaos_options_t, chaos_t, chaos_indicators_batch, chaos_integrator_id, &
       chaos_integrator_name, chaos_method_text, chaos_verdict_rule, chaos_auto, chaos_symplectic, chaos_dop853
-   use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, open_scene_output
-   use hillstab_batch_scene_file, only: scene_file_t, fail
+   use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, open_scene_output, physical_summary
+   use hillstab_batch_scene_file, only: scene_file_t, fail, group_present
+   use hillstab_hill_units, only: physical_t, physical_alpha, physical_beta, physical_epsilon
    use hillstab_batch_scene_checks, only: min_pendulum_beta
-   use hillstab_batch_declaration, only: new_group, group_t, group_reader_t, variable, var_name, var_integer, var_real, &
+   use hillstab_batch_declaration, only: new_group, group_t, group_values_t, group_reader_t, variable, var_name, &
+      var_integer, var_real, &
       var_logical, begin_group, next_item, end_group
    use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_point
    use hillstab_batch_group_points, only: points_group, read_points_group
@@ -47,16 +49,25 @@ module hillstab_batch_task_lyapunov
    public :: lyapunov_task_t, lyapunov_task, lyapunov_group
 
    !> Characters in one line of the file.
-   integer, parameter :: lyapunov_line_length = 240
+   integer, parameter :: lyapunov_line_length = 320
    !> Batches of lanes per unit of work in the serial task (written as one block).
    integer, parameter :: lyapunov_unit_batches = 8
    !> Most lanes a scene may ask for.
    integer, parameter :: max_lanes = 256
    !> The columns, by index.
-   integer, parameter :: col_alpha = 1, col_beta = 2, col_lyapunov = 3, col_spread = 4, col_lyapunov_error = 5, &
-      col_stable = 6, col_lambda_max = 7, col_log_lambda_max = 8, col_max_abs_phi = 9, col_energy_drift = 10, &
-      col_chaotic = 11, col_megno = 12, col_fli = 13, col_energy_error = 14, col_integrator = 15, col_periods = 16, &
-      col_status = 17, n_columns = 17
+   integer, parameter :: col_alpha = 1, col_beta = 2, col_lyapunov = 3, col_spread = 4, col_stable = 5, &
+      col_lambda_max = 6, col_log_lambda_max = 7, col_max_abs_phi = 8, col_energy_drift = 9, col_chaotic = 10, &
+      col_megno = 11, col_fli = 12, col_energy_error = 13, col_integrator = 14, col_periods = 15, col_status = 16, &
+      col_a = 17, col_omega = 18, col_lyapunov_per_s = 19, col_lyapunov_error = 20, n_columns = 20
+   !> The columns of a file over (α, β), and over the amplitudes and frequencies of
+   !> `&physical` (a, ω and the exponent per second beside α, β and the exponent).
+   integer, parameter :: chart_ids(17) = [col_alpha, col_beta, col_lyapunov, col_spread, col_lyapunov_error, &
+      col_stable, col_lambda_max, col_log_lambda_max, col_max_abs_phi, col_energy_drift, col_chaotic, col_megno, &
+      col_fli, col_energy_error, col_integrator, col_periods, col_status]
+   integer, parameter :: physical_ids(20) = [col_alpha, col_beta, col_a, col_omega, col_lyapunov, &
+      col_lyapunov_per_s, col_spread, col_lyapunov_error, col_stable, col_lambda_max, col_log_lambda_max, &
+      col_max_abs_phi, col_energy_drift, col_chaotic, col_megno, col_fli, col_energy_error, col_integrator, col_periods, &
+      col_status]
 
    !> The lyapunov task: the pendulum of `&series` over a grid or a list of points.
    type, extends(task_t) :: lyapunov_task_t
@@ -67,6 +78,13 @@ module hillstab_batch_task_lyapunov
       real(wp), allocatable :: points(:, :)   !! (2, n) α, β of `&points`
       type(column_t), allocatable :: table(:)  !! the columns of the file
       type(chaos_options_t) :: chaos          !! integrator and indicators of `&lyapunov`
+      !> over the amplitudes (and frequencies) of `&physical`: a grid of n_a x n_omega
+      !> points in blocks of constant a, or the amplitudes at one omega
+      logical :: physical = .false.
+      type(physical_t) :: spring              !! `&physical` r0, g, kappa (a, omega per point)
+      real(wp), allocatable :: amplitudes(:)  !! a [m]
+      real(wp), allocatable :: omegas(:)      !! omega [rad/s] (one value without a range)
+      integer, allocatable :: ids(:)          !! the columns written
    contains
       procedure :: read => lyapunov_read
       procedure :: run => lyapunov_run
@@ -109,6 +127,11 @@ contains
    function lyapunov_size_variables(self) result(text)
       class(lyapunov_task_t), intent(in) :: self  !! the task
       character(len=:), allocatable :: text
+      if (self%physical) then
+         text = "&physical: n_a, n_omega: "//integer_text(self%grid%n_alpha)//" x "//integer_text(self%grid%n_beta)// &
+                " points"
+         return
+      end if
       text = "&chart: n_alpha, n_beta: "//integer_text(self%grid%n_alpha)//" x "//integer_text(self%grid%n_beta)// &
              " points"
    end function lyapunov_size_variables
@@ -117,7 +140,10 @@ contains
    function lyapunov_task() result(task)
       type(lyapunov_task_t) :: task
       task%name = "lyapunov"
-      task%takes_physical = .false.
+      task%takes_physical = .true.
+      task%takes_amplitudes = .true.
+      task%takes_omega_range = .true.
+      task%amplitudes_replace = "&chart (or &points), and r0, g from &series"
    end function lyapunov_task
 
    !> The declaration of `&lyapunov`.
@@ -173,8 +199,12 @@ contains
       namelist /lyapunov/ over, integrator, scheme, steps_per_period, energy_tolerance, early_stop, megno_chaotic, &
          megno_regular, megno_stop, min_periods, lanes
       type(group_reader_t) :: reader
+      type(group_values_t), allocatable :: kept(:)
+      character(len=*), parameter :: spring_variables(4) = ["alpha", "beta ", "r0   ", "g    "]
+      integer :: j
       allocate (self%groups(3))
-      call read_series_group(file, series_group(), scene%model, scene%physical, self%series, self%groups(1), error, &
+      ! with &physical the spring comes from there: &series gives the start and the periods
+      call read_series_group(file, series_group(), scene%model, .false., self%series, self%groups(1), error, &
          samples=.false.)
       if (allocated(error)) return
       group = lyapunov_group()
@@ -196,6 +226,24 @@ contains
       end select
       call chaos_settings(error)
       if (allocated(error)) return
+      self%table = lyapunov_columns()
+      self%ids = chart_ids
+      if (scene%physical) then
+         call physical_settings(error)
+         if (allocated(error)) return
+         self%ids = physical_ids
+         ! the effective scene: &series without the spring, &lyapunov without over, no
+         ! &chart or &points (given back as a scene, the file repeats its run)
+         do j = 1, size(spring_variables)
+            call self%groups(1)%hide(trim(spring_variables(j)))
+         end do
+         call self%groups(2)%hide("over")
+         allocate (kept(2))
+         kept(1) = self%groups(1)
+         kept(2) = self%groups(2)
+         call move_alloc(kept, self%groups)
+         return
+      end if
       if (self%over_points) then
          call read_points_group(file, points_group(), scene%model, self%file, self%points, self%groups(3), error)
       else
@@ -203,8 +251,64 @@ contains
       end if
       if (allocated(error)) return
       call check_lyapunov_domain(self, file%path, error)
-      self%table = lyapunov_columns()
    contains
+      !> Over `&physical`: the amplitudes (and frequencies), r0, g, kappa from there; `&series`
+      !> gives the start and the periods only; no `&chart` or `&points`.
+      subroutine physical_settings(error)
+         type(error_t), allocatable, intent(out) :: error
+         integer :: j
+         real(wp) :: beta_low
+         ! (alpha and beta of &series are unused by this task in any case)
+         do j = 3, size(spring_variables)
+            if (self%groups(1)%given(trim(spring_variables(j)))) then
+               call fail(error, file%path, "series", trim(spring_variables(j)), "with &physical the points come "// &
+                  "from its amplitudes and frequencies and r0, g from &physical: leave "//trim(spring_variables(j))// &
+                  " out of &series")
+               return
+            end if
+         end do
+         if (self%over_points) then
+            call fail(error, file%path, "lyapunov", "over", "with &physical the map runs over its amplitudes "// &
+               "(and frequencies), not over &points: leave over = 'points' out")
+            return
+         end if
+         if (group_present(file%unit, "chart") .or. group_present(file%unit, "points")) then
+            call fail(error, file%path, trim(merge("chart ", "points", group_present(file%unit, "chart"))), "alpha_min", &
+               "the map runs either over &physical (a, omega) or over &chart / &points, not both")
+            if (.not. group_present(file%unit, "chart")) error%message = file%path//": &points: file: the map "// &
+               "runs either over &physical (a, omega) or over &chart / &points, not both"
+            return
+         end if
+         if (size(scene%amplitudes) == 0) then
+            call fail(error, file%path, "physical", "a_min", "the map over &physical needs the amplitudes: "// &
+               "a_min, a_max, n_a (or the list a) with r0")
+            return
+         end if
+         self%physical = .true.
+         self%spring = scene%pendulum
+         self%amplitudes = scene%amplitudes
+         if (size(scene%omegas) > 0) then
+            self%omegas = scene%omegas
+         else
+            self%omegas = [scene%pendulum%omega]
+         end if
+         self%over_points = .false.
+         self%grid%n_alpha = size(self%amplitudes)
+         self%grid%n_beta = size(self%omegas)
+         ! beta = g pi^2/(rho omega^2) falls with omega: its smallest value at the largest omega
+         beta_low = huge(1.0_wp)
+         do j = 1, size(self%omegas)
+            self%spring%omega = self%omegas(j)
+            beta_low = min(beta_low, physical_beta(self%spring))
+         end do
+         self%spring%omega = self%omegas(1)
+         if (beta_low < min_pendulum_beta) then
+            call fail(error, file%path, "physical", trim(merge("omega_max", "omega    ", size(scene%omegas) > 0)), &
+               "gives beta = "//real_text(beta_low)//", below "//real_text(min_pendulum_beta)// &
+               " (the pendulum's time scales overflow there)")
+         end if
+      end subroutine physical_settings
+
       !> The options of hillstab_pendulum_chaos from the group, checked.
       subroutine chaos_settings(error)
          type(error_t), allocatable, intent(out) :: error
@@ -324,6 +428,12 @@ contains
          "verdict was certain early, or on a failed point)", style_integer, 0.0_wp, .true.)
       table(col_status) = column_t("status", "", "0 ok; 1 the chart's value only round-off limited; 2 failed "// &
          "(placeholders)", style_flag, real(status_failed, wp))
+      table(col_a) = column_t("a", "m", "bounce amplitude of &physical (alpha = a pi^2/rho)", style_e17, 0.0_wp, &
+         .true.)
+      table(col_omega) = column_t("omega", "rad/s", "radial angular frequency of &physical (beta = g pi^2/(rho "// &
+         "omega^2))", style_e17, 0.0_wp, .true.)
+      table(col_lyapunov_per_s) = column_t("lyapunov_per_s", "1/s", "lyapunov per second: lyapunov omega/(2 pi)", &
+         style_e11, 0.0_wp)
    end function lyapunov_columns
 
    !> As a chart of the same grid (or points).
@@ -366,12 +476,28 @@ contains
       class(lyapunov_task_t), intent(in) :: self  !! the task
       integer(int64), intent(in) :: k  !! the point
       real(wp) :: point(2)
-      if (self%over_points) then
+      type(physical_t) :: p
+      if (self%physical) then
+         p = spring_at(self, k)
+         point = [physical_alpha(p), physical_beta(p)]
+      else if (self%over_points) then
          point = self%points(:, k)
       else
          point = grid_point(self%grid, k)
       end if
    end function lyapunov_point_of
+
+   !> The spring of point k of a map over `&physical`: a of its block, omega within it.
+   pure function spring_at(self, k) result(p)
+      class(lyapunov_task_t), intent(in) :: self
+      integer(int64), intent(in) :: k
+      type(physical_t) :: p
+      integer(int64) :: n_omega
+      n_omega = size(self%omegas, kind=int64)
+      p = self%spring
+      p%a = self%amplitudes((k - 1)/n_omega + 1)
+      p%omega = self%omegas(mod(k - 1, n_omega) + 1)
+   end function spring_at
 
    !> Whether point k starts a new α block after the first (a blank line goes before it).
    pure logical function new_block(self, k)
@@ -379,6 +505,8 @@ contains
       integer(int64), intent(in) :: k
       new_block = .false.
       if (self%over_points) return
+      ! amplitudes at one omega: a list, not a grid
+      if (self%physical .and. size(self%omegas) == 1) return
       new_block = mod(k - 1, int(self%grid%n_beta, int64)) == 0 .and. k > self%grid%n_beta
    end function new_block
 
@@ -388,11 +516,18 @@ contains
       class(lyapunov_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
       character(len=:), allocatable :: lines(:)
-      character(len=400) :: text(18)
-      integer :: n
+      character(len=400) :: text(26)
+      character(len=:), allocatable :: spring(:)
+      integer :: n, j
       n = 0
-      n = n + 1; text(n) = "each point: the pendulum at (alpha, beta) with r0, g of &series, started at phi0 (eq. (38)), "// &
-         integer_text(self%series%periods)//" radial periods"
+      if (self%physical) then
+         n = n + 1; text(n) = "each point: the spring of &physical at its amplitude a and frequency omega (alpha = a "// &
+            "pi^2/rho, beta = g pi^2/(rho omega^2), epsilon = kappa pi/omega), started at phi0 of &series (eq. (38)), "// &
+            integer_text(self%series%periods)//" radial periods"
+      else
+         n = n + 1; text(n) = "each point: the pendulum at (alpha, beta) with r0, g of &series, started at phi0 "// &
+            "(eq. (38)), "//integer_text(self%series%periods)//" radial periods"
+      end if
       if (self%chaos%early_stop) text(n) = trim(text(n))//" at most, stopped as soon as the verdict is certain"
       n = n + 1; text(n) = chaos_method_text(self%chaos, scene%method%tolerance)
       n = n + 1; text(n) = chaos_verdict_rule(self%chaos)
@@ -415,7 +550,15 @@ contains
       n = n + 1; text(n) = "integrator: 1 symplectic tangent map, 2 DOP853; periods: radial periods integrated (fewer "// &
          "than asked when the verdict was certain early)"
       n = n + 1; text(n) = "status: 0 ok; 1 the chart's value only round-off limited; 2 failed (placeholders, below)"
-      n = n + 1; text(n) = "failed rows: "//placeholders_text(self%table)
+      n = n + 1; text(n) = "failed rows: "//placeholders_text(self%table, self%ids)
+      if (self%physical) then
+         spring = physical_summary(scene)
+         do j = 1, size(spring)
+            n = n + 1; text(n) = spring(j)
+         end do
+         n = n + 1; text(n) = "a [m], omega [rad/s]: the point's spring; lyapunov_per_s [1/s] = lyapunov omega/(2 pi), "// &
+            "the exponent per second"
+      end if
       if (scene%epsilon > 0.0_wp) then
          n = n + 1; text(n) = "damping epsilon = "//real_text(scene%epsilon)//": stable is |S1| < 2 cosh(epsilon), "// &
             "lambda_max includes exp(-epsilon); DOP853 at every point; energy_drift is the energy lost"
@@ -425,13 +568,15 @@ contains
    end function lyapunov_header
 
    !> "lyapunov = 0, spread = -1, ...": the placeholders of a failed row, in the columns' styles.
-   function placeholders_text(table) result(text)
+   function placeholders_text(table, ids) result(text)
       type(column_t), intent(in) :: table(:)
+      integer, intent(in) :: ids(:)  !! the columns written
       character(len=:), allocatable :: text
       character(len=48) :: field
-      integer :: k, pos
+      integer :: i, k, pos
       text = ""
-      do k = 1, size(table)
+      do i = 1, size(ids)
+         k = ids(i)
          if (table(k)%keep_on_failure .or. k == col_status) cycle
          pos = 0
          call put_row(table(k:k), [1], [table(k)%placeholder], field, pos)
@@ -452,6 +597,8 @@ contains
       real(wp) :: y0(4, hi - lo + 1), point(2, hi - lo + 1)
       type(chaos_t), allocatable :: results(:)
       integer :: slot(hi - lo + 1)
+      real(wp) :: epsilons(hi - lo + 1)
+      type(physical_t) :: spring
       type(error_t), allocatable :: error
       integer :: m, j
       integer(int64) :: k
@@ -460,8 +607,15 @@ contains
          j = int(k - lo) + 1
          point(:, j) = self%point_of(k)
          slot(j) = 0
-         call pendulum_from_chart(point(1, j), point(2, j), scene%epsilon, self%series%r0, self%series%g, &
-            pendula(m + 1), error)
+         if (self%physical) then
+            spring = spring_at(self, k)
+            epsilons(j) = physical_epsilon(spring)
+            call pendulum_from_chart(point(1, j), point(2, j), epsilons(j), spring%r0, spring%g, pendula(m + 1), error)
+         else
+            epsilons(j) = scene%epsilon
+            call pendulum_from_chart(point(1, j), point(2, j), scene%epsilon, self%series%r0, self%series%g, &
+               pendula(m + 1), error)
+         end if
          if (allocated(error)) then
             deallocate (error)
             cycle
@@ -475,20 +629,28 @@ contains
                                              self%chaos, results)
       do k = lo, hi
          j = int(k - lo) + 1
-         if (slot(j) == 0) then
-            call point_line(self, scene, point(:, j), chaos_t(), .false., lines(k), statuses(k))
+         if (self%physical) then
+            spring = spring_at(self, k)
          else
-            call point_line(self, scene, point(:, j), results(slot(j)), .true., lines(k), statuses(k))
+            spring = physical_t()
+         end if
+         if (slot(j) == 0) then
+            call point_line(self, scene, point(:, j), epsilons(j), spring, chaos_t(), .false., lines(k), statuses(k))
+         else
+            call point_line(self, scene, point(:, j), epsilons(j), spring, results(slot(j)), .true., lines(k), &
+               statuses(k))
          end if
       end do
    end subroutine lyapunov_batch
 
    !> The line of one point from its orbit's indicators (`integrated` false: the pendulum
    !> could not be set up), with the chart's linear verdict; its status.
-   subroutine point_line(self, scene, point, result, integrated, line, status)
+   subroutine point_line(self, scene, point, epsilon, spring, result, integrated, line, status)
       class(lyapunov_task_t), intent(in) :: self
       type(scene_t), intent(in) :: scene
       real(wp), intent(in) :: point(2)
+      real(wp), intent(in) :: epsilon  !! the point's damping
+      type(physical_t), intent(in) :: spring  !! over `&physical`: the point's a and omega
       type(chaos_t), intent(in) :: result
       logical, intent(in) :: integrated
       character(len=lyapunov_line_length), intent(out) :: line
@@ -506,7 +668,7 @@ contains
       failed = .not. integrated
       if (.not. failed) failed = allocated(result%error)
       if (.not. failed) then
-         call monodromy_trace(hill_model_t(scene%model, point(1), point(2), scene%epsilon), scene%method, tr, error)
+         call monodromy_trace(hill_model_t(scene%model, point(1), point(2), epsilon), scene%method, tr, error)
          if (allocated(error)) then
             if (error%code == err_accuracy) then
                deallocate (error)
@@ -517,12 +679,15 @@ contains
          end if
       end if
       v(col_periods) = real(result%periods, wp)
+      v(col_a) = spring%a
+      v(col_omega) = spring%omega
       if (failed) then
          status = status_failed
          call failed_row(self%table, v)
       else
-         f = floquet_from_trace(tr, scene%epsilon)
+         f = floquet_from_trace(tr, epsilon)
          v(col_lyapunov) = result%lyapunov
+         v(col_lyapunov_per_s) = result%lyapunov*spring%omega/(2.0_wp*pi)
          v(col_spread) = result%spread
          v(col_lyapunov_error) = result%lyapunov_error
          v(col_stable) = merge(1.0_wp, 0.0_wp, f%stable)
@@ -540,7 +705,7 @@ contains
          v(col_status) = real(status, wp)
       end if
       pos = 0
-      call put_row(self%table, all_columns(self%table), v, line, pos)
+      call put_row(self%table, self%ids, v, line, pos)
       line(pos + 1:) = ""
    end subroutine point_line
 
@@ -602,7 +767,7 @@ contains
       n = self%point_count()
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
-      call write_header(file, lyapunov_header(self, scene), columns_text(self%table, all_columns(self%table)), error)
+      call write_header(file, lyapunov_header(self, scene), columns_text(self%table, self%ids), error)
       n_failed = 0
       call progress_begin(progress, n, quiet)
       first = 1
@@ -645,7 +810,7 @@ contains
       type(scene_t), intent(in) :: scene  !! its scene
       type(output_file_t), intent(inout) :: file  !! the open output file
       type(error_t), allocatable, intent(out) :: error  !! why the file cannot be written
-      call write_header(file, lyapunov_header(self, scene), columns_text(self%table, all_columns(self%table)), error)
+      call write_header(file, lyapunov_header(self, scene), columns_text(self%table, self%ids), error)
    end subroutine lyapunov_open_units
 
    !> As after `lyapunov_run`: the error naming the first failed point.
