@@ -158,7 +158,9 @@ contains
    !> not bound the finer one's error. Then if |S_k − S_{k+1}| ≤ |S_{k−1} − S_k|/2 holds on,
    !> |S_k − S| ≤ Σ_{j>k} |S_j − S_{j+1}| ≤ |S_{k−1} − S_k|, the difference reported. Until
    !> the differences contract, a difference within the tolerance asks for the next value
-   !> rather than ending the ladder as round-off limited.
+   !> rather than ending the ladder as round-off limited; where no finer value is possible
+   !> (`at_floor`) such a difference still ends it with status met, the estimate resting on
+   !> the agreement of the two values alone.
    pure subroutine refine(ladder, tr, at_floor, noise, near_floor, contraction)
       type(refinement_t), intent(inout) :: ladder  !! the ladder, advanced
       type(trace_t), intent(inout) :: tr  !! S at the new local tolerance; gets its error estimate when the ladder ends
@@ -184,8 +186,8 @@ contains
       end if
       d = trace_distance(tr, ladder%previous)
       if (contracting) then
-         if (d <= ladder%tolerance .and. noise <= ladder%tolerance .and. &
-             (d <= noise .or. (ladder%n_values >= 3 .and. d <= noise_ratio*ladder%difference))) then
+         if (d <= ladder%tolerance .and. noise <= ladder%tolerance .and. (d <= noise .or. at_floor .or. &
+             (ladder%n_values >= 3 .and. d <= noise_ratio*ladder%difference))) then
             ladder%verdict = refine_met
          else if (at_floor .or. (noise > ladder%tolerance .and. d <= noise) .or. &
                   (d > ladder%tolerance .and. stagnation_is_noise .and. ladder%n_values >= 3 .and. &
