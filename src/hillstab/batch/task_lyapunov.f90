@@ -506,7 +506,9 @@ contains
       new_block = .false.
       if (self%over_points) return
       ! amplitudes at one omega: a list, not a grid
-      if (self%physical .and. size(self%omegas) == 1) return
+      if (self%physical) then
+         if (size(self%omegas) == 1) return
+      end if
       new_block = mod(k - 1, int(self%grid%n_beta, int64)) == 0 .and. k > self%grid%n_beta
    end function new_block
 
