@@ -16,7 +16,7 @@ module hillstab_batch_group_chart
    use hillstab_batch_scene_checks, only: check_range, check_alpha_domain
    implicit none
    private
-   public :: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point
+   public :: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point, grid_size_text
 
    !> The (α, β) grid of a chart: n values from min to max inclusive (n = 1: min only).
    type :: chart_grid_t
@@ -29,6 +29,22 @@ module hillstab_batch_group_chart
    end type chart_grid_t
 
 contains
+
+   !> What sets the size of a grid's file, for messages: "&chart: n_alpha, n_beta: 200 x 200
+   !> points", or with `physical` the (a, omega) grid of `&physical` (n_a x n_omega).
+   function grid_size_text(grid, physical) result(text)
+      type(chart_grid_t), intent(in) :: grid  !! n_alpha (n_a) by n_beta (n_omega)
+      logical, intent(in) :: physical          !! the grid is &physical's (a, omega)
+      character(len=:), allocatable :: text
+      character(len=24) :: rows, columns
+      write (rows, '(i0)') grid%n_alpha
+      write (columns, '(i0)') grid%n_beta
+      if (physical) then
+         text = "&physical: n_a, n_omega: "//trim(rows)//" x "//trim(columns)//" points"
+      else
+         text = "&chart: n_alpha, n_beta: "//trim(rows)//" x "//trim(columns)//" points"
+      end if
+   end function grid_size_text
 
    !> The declaration of `&chart`, with the chart task's defaults (the paper's Fig. 3 window).
    function chart_group() result(group)

@@ -24,7 +24,7 @@ module hillstab_batch_task_chart
    use hillstab_batch_scene_checks, only: check_integration_cost, max_grid_count
    use hillstab_hill_units, only: physical_t, physical_beta, physical_epsilon
    use hillstab_hill_models, only: model_physical_alpha
-   use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point
+   use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point, grid_size_text
    use hillstab_batch_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, chart_header, &
       point_amplitude, &
       scene_chart_columns, check_method_runs, warn_inaccurate, failed_points_error, chart_line_length, evaluate_point, &
@@ -82,13 +82,7 @@ contains
    function chart_size_variables(self) result(text)
       class(chart_task_t), intent(in) :: self  !! the task
       character(len=:), allocatable :: text
-      if (self%physical_grid) then
-         text = "&physical: n_a, n_omega: "//integer_text(self%grid%n_alpha)//" x "//integer_text(self%grid%n_beta)// &
-                " points"
-         return
-      end if
-      text = "&chart: n_alpha, n_beta: "//integer_text(self%grid%n_alpha)//" x "//integer_text(self%grid%n_beta)// &
-             " points"
+      text = grid_size_text(self%grid, self%physical_grid)
    end function chart_size_variables
 
    !> A chart task before its scene is read.

@@ -36,7 +36,7 @@ module hillstab_batch_task_lyapunov
    use hillstab_batch_declaration, only: new_group, group_t, group_values_t, group_reader_t, variable, var_name, &
       var_integer, var_real, &
       var_logical, begin_group, next_item, end_group
-   use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_point
+   use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_point, grid_size_text
    use hillstab_batch_group_points, only: points_group, read_points_group
    use hillstab_batch_group_series, only: series_plan_t, series_group, read_series_group
    use hillstab_batch_columns, only: column_t, style_e17, style_e11, style_e7, style_e4, style_flag, style_integer, &
@@ -127,13 +127,7 @@ contains
    function lyapunov_size_variables(self) result(text)
       class(lyapunov_task_t), intent(in) :: self  !! the task
       character(len=:), allocatable :: text
-      if (self%physical) then
-         text = "&physical: n_a, n_omega: "//integer_text(self%grid%n_alpha)//" x "//integer_text(self%grid%n_beta)// &
-                " points"
-         return
-      end if
-      text = "&chart: n_alpha, n_beta: "//integer_text(self%grid%n_alpha)//" x "//integer_text(self%grid%n_beta)// &
-             " points"
+      text = grid_size_text(self%grid, self%physical)
    end function lyapunov_size_variables
 
    !> A lyapunov task before its scene is read.

@@ -113,13 +113,13 @@ contains
       bytes = header_bytes + int(size(self%points, 2), int64)*merge(binary_row_bytes, text_row_bytes, scene%binary)
    end function points_estimated_bytes
 
-   !> Every point's line, status and values at once and their text joined for the writer,
+   !> Every point's line, status and values at once (the lines are written one by one),
    !> beside the points themselves.
    function points_memory_bytes(self, scene) result(bytes)
       class(points_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
       integer(int64) :: bytes
-      bytes = int(size(self%points, 2), int64)*(2*chart_line_length + 4 + 8*n_chart_columns + 16)
+      bytes = int(size(self%points, 2), int64)*(chart_line_length + 4 + 8*n_chart_columns + 16)
    end function points_memory_bytes
 
    !> Whether some point lies outside the physical domain.
