@@ -9,6 +9,8 @@
 #   bash scripts/check_scenes.sh            compare (exit 1 when a data line differs)
 #   bash scripts/check_scenes.sh --update   store the checksums of this build
 #   bash scripts/check_scenes.sh --strict   also exit 1 when a header differs
+#   HILLSTAB_SCENES_KEEP=DIR bash scripts/check_scenes.sh   also copy the files written into DIR
+#   (for scripts/compare_scenes.py, which says by how much two such sets differ)
 #
 # The build is fpm's release profile without -march=native (HILLSTAB_RELEASE_FLAGS
 # empty), so the checksums depend on the compiler and libraries, not on the CPU;
@@ -48,6 +50,10 @@ for scene in data/scenes/*.nml; do
    }
 done
 seconds=$(( $(date +%s) - start ))
+if [ -n "${HILLSTAB_SCENES_KEEP:-}" ]; then
+   mkdir -p "$HILLSTAB_SCENES_KEEP"
+   cp "$work"/out/* "$HILLSTAB_SCENES_KEEP"/
+fi
 
 # every data line is numbers, so that numpy.loadtxt(comments='#') and awk read the files as
 # they are (the column names are on the '# columns:' line only)
