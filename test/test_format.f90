@@ -1,10 +1,13 @@
 !> Tests of hillstab_core_text (format_es, put_es) against Fortran's own formatted I/O:
-!> numbers read back by a list-directed read, exact text for powers of ten and for
-!> roundings that carry into the exponent, the layout (width, digits, exponent),
-!> agreement with the `es` edit descriptor, and non-finite values.
+!> numbers read back by a list-directed read (exactly, at 17 digits), exact text for
+!> powers of ten and for roundings that carry into the exponent, the layout (width,
+!> digits, exponent), agreement digit for digit with the correctly rounded `es` edit
+!> descriptor (sample values, random bit patterns, near-ties), the table of powers of
+!> ten, and non-finite values.
 module test_format
    use hillstab_core_kinds, only: wp, int64
    use hillstab_core_text, only: format_es, es_width, put_es, put_integer
+   use hillstab_core_powers_of_ten, only: power_min, power_max, power_hi, power_lo
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, ieee_negative_inf
    implicit none
@@ -21,6 +24,8 @@ contains
          new_unittest("carry_into_exponent", carry_into_exponent), &
          new_unittest("layout", layout), &
          new_unittest("agrees_with_es_descriptor", agrees_with_es_descriptor), &
+         new_unittest("random_bits_round_trip", random_bits_round_trip), &
+         new_unittest("power_table", power_table), &
          new_unittest("put_es_buffer", put_es_buffer), &
          new_unittest("non_finite", non_finite), &
          new_unittest("put_integer_as_i0", put_integer_as_i0)])
@@ -53,16 +58,6 @@ contains
       write (text, '(a,i0)') "1e", k
       read (text, *) x
    end function power_of_ten
-
-   !> The two texts of 16 significant digits differ by at most one unit in the last digit.
-   logical function within_one_unit(a, b)
-      character(len=*), intent(in) :: a, b
-      real(wp) :: x, y
-      read (a, *) x
-      read (b, *) y
-      within_one_unit = abs(x - y) <= 1.01e-15_wp*10.0_wp**decimal_exponent(max(abs(x), abs(y)))
-   end function within_one_unit
-
    !> Decimal exponent E of x (|x| = m·10^E, 1 ≤ m < 10) from Fortran's own es descriptor.
    integer function decimal_exponent(x) result(e)
       real(wp), intent(in) :: x
@@ -71,9 +66,10 @@ contains
       read (text(index(text, "E") + 1:), *) e
    end function decimal_exponent
 
-   !> format_es(x, d) read back: within half a unit of the last printed digit (plus two
-   !> ulp for the scaling) for d = 16, and within 4e-16 relative (≈ 2 ulp) for d = 17.
-   !> (±huge is not read: at 16 digits its correctly rounded text lies beyond huge.)
+   !> format_es(x, d) read back: within half a unit of the last printed digit for d = 16
+   !> (the text is correctly rounded), and exactly x for d = 17 (17 significant digits
+   !> identify a double). (±huge is not read: at 16 digits its correctly rounded text lies
+   !> beyond huge.)
    subroutine read_back(ctx)
       type(test_context_t), intent(inout) :: ctx
       real(wp), allocatable :: x(:)
@@ -89,7 +85,7 @@ contains
          text = format_es(x(i), 17)
          read (text, *, iostat=iostat) y
          call check(ctx, iostat == 0, "17 digits readable, "//trim(label))
-         call check(ctx, abs(y - x(i)) <= 4.0e-16_wp*abs(x(i)) + tiny_spacing(x(i)), "17 digits, "//trim(label))
+         call check(ctx, y == x(i), "17 digits read back exactly, "//trim(label))
          if (x(i) /= 0.0_wp) worst17 = max(worst17, abs(y - x(i))/max(abs(x(i)), tiny(1.0_wp)))
          text = format_es(x(i), 16)
          read (text, *, iostat=iostat) y
@@ -99,7 +95,7 @@ contains
             cycle
          end if
          half_unit = 0.5_wp*power_of_ten(decimal_exponent(x(i)) - 15)
-         bound = half_unit + 2.0_wp*spacing(x(i))
+         bound = half_unit + spacing(y)
          call check(ctx, abs(y - x(i)) <= bound, "16 digits, "//trim(label))
          worst16 = max(worst16, abs(y - x(i))/bound)
       end do
@@ -110,7 +106,7 @@ contains
       call check(ctx, text(2:19) <= "1.7976931348623158" .and. text(2:19) >= "1.7976931348623156" &
                  .and. text(20:24) == "e+308", "huge at 17 digits must read back as huge: '"//trim(text)//"'")
       write (*, '(4x,a,i0,a,es9.2,a,f5.2,a)') "read back of ", size(x), " values: 17 digits max rel. error ", &
-         worst17, ", 16 digits max error ", worst16, " x (half unit + 2 ulp)"
+         worst17, ", 16 digits max error ", worst16, " x (half unit + 1 ulp)"
    end subroutine read_back
 
    !> An integer as text.
@@ -119,14 +115,6 @@ contains
       character(len=12) :: text
       write (text, '(i0)') n
    end function count_text
-
-   !> Spacing of subnormal numbers, the absolute resolution at the bottom of the range.
-   elemental real(wp) function tiny_spacing(x)
-      real(wp), intent(in) :: x
-      tiny_spacing = 0.0_wp
-      if (abs(x) < tiny(1.0_wp)) tiny_spacing = 2.0_wp*spacing(tiny(1.0_wp))
-   end function tiny_spacing
-
    !> The double nearest 10^k prints as exactly 1.000…e±k with 16 digits (it is within
    !> 1.2e-16 relative of 10^k, far inside half a unit of the 16th digit).
    subroutine powers_of_ten_exact(ctx)
@@ -140,15 +128,15 @@ contains
          write (expected, '(es23.15e3)') power_of_ten(k)
          e_pos = index(expected, "E")
          if (e_pos > 0) expected(e_pos:e_pos) = "e"
-         ! within one unit of the correctly rounded 16th digit (the module's promise)
-         if (.not. within_one_unit(format_es(power_of_ten(k), 16), expected)) then
+         ! the correctly rounded text itself (the module's promise)
+         if (format_es(power_of_ten(k), 16) /= expected) then
             n_wrong = n_wrong + 1
             if (n_wrong <= 3) call check(ctx, .false., "10^k: got '"//format_es(power_of_ten(k), 16)// &
                                          "' expected '"//expected//"'")
          end if
       end do
       call check(ctx, n_wrong == 0, "all powers of ten exact")
-      write (*, '(4x,a,i0,a)') "powers of ten 1e-307 … 1e308 at 16 digits: ", n_wrong, " more than one unit off"
+      write (*, '(4x,a,i0,a)') "powers of ten 1e-307 … 1e308 at 16 digits: ", n_wrong, " not correctly rounded"
    end subroutine powers_of_ten_exact
 
    !> Roundings that carry into the exponent: 9.99…5 → 1.0 × 10^(e+1).
@@ -156,7 +144,10 @@ contains
       type(test_context_t), intent(inout) :: ctx
       call check(ctx, format_es(0.99999999999999999_wp, 16) == " 1.000000000000000e+000", &
                  "0.99999999999999999 (= 1.0 in binary)")
-      call check(ctx, format_es(9.9999999999999995e22_wp, 16) == " 1.000000000000000e+023", "9.9999999999999995e22")
+      ! the double nearest 1e23 is 9.99999999999999991611392e22: its 16 digits do not carry
+      call check(ctx, format_es(9.9999999999999995e22_wp, 16) == " 9.999999999999999e+022", "9.9999999999999995e22")
+      ! the double nearest 999999.99999999999 is 999999.99999999998836…: they do
+      call check(ctx, format_es(999999.99999999999_wp, 16) == " 1.000000000000000e+006", "999999.99999999999")
       call check(ctx, format_es(9.96_wp, 2) == " 1.0e+001", "9.96 with 2 digits")
       call check(ctx, format_es(-9.96_wp, 2) == "-1.0e+001", "-9.96 with 2 digits")
       call check(ctx, format_es(0.0996_wp, 2) == " 1.0e-001", "0.0996 with 2 digits")
@@ -213,49 +204,130 @@ contains
       call check(ctx, format_es(3.0_wp, 1) == "  3e+000", "one digit: no point")
    end subroutine layout
 
-   !> format_es(x, d) against gfortran's correctly rounded es(d+7).(d−1)e3 text: both read
-   !> back as (integer mantissa, exponent) and compared in units of the last place.
-   !> 16 digits: the module's claim, "correctly rounded except, rarely, in the last digit
-   !> (the scaling by a power of ten rounds once)", i.e. at most 1 unit, everywhere.
-   !> 17 digits: no claim beyond read-back; the scaled mantissa (up to 1e17 > 2^53) is
-   !> quantised to 16, so up to ~10 units where the scaling is one step (decimal exponent
-   !> in [−6, 38]) and the first 15 digits (< 100 units) elsewhere. Reports the counts.
+   !> format_es(x, d) against gfortran's correctly rounded es(d+7).(d−1)e3 text, for every
+   !> digit count 1 … 17 and every sample value, and for values a hair's breadth from a
+   !> tie of the last digit (k + 1/2 units, moved by one ulp either way, and the exact
+   !> ties k + 1/2 that a double can hold): the texts must be equal.
    subroutine agrees_with_es_descriptor(ctx)
       type(test_context_t), intent(inout) :: ctx
       real(wp), allocatable :: x(:)
-      integer :: i, k, d, n_differ(2, 2), worst(2, 2), delta, n_values(2), r, e
-      integer, parameter :: limit(2, 2) = reshape([1, 1, 12, 99], [2, 2])   ! (range, digits)
-      character(len=32) :: fmt, reference
-      character(len=:), allocatable :: text
-      character(len=*), parameter :: range_name(2) = ["one-step scaling  ", "multi-step scaling"]
+      real(wp) :: tie
+      integer :: i, d, n_differ, n_values, k
       x = sample_values()
-      n_differ = 0; worst = 0
-      do k = 1, 2
-         d = 15 + k
-         n_values = 0
-         write (fmt, '(a,i0,a,i0,a)') "(es", es_width(d), ".", d - 1, "e3)"
+      ! near-ties: (k + 1/2)·10^e for a few digit counts, and its neighbours
+      do k = 1, 40
+         tie = (real(12345*k, wp) + 0.5_wp)*10.0_wp**(mod(k, 9) - 4)
+         x = [x, tie, nearest(tie, 1.0_wp), nearest(tie, -1.0_wp), -tie]
+      end do
+      ! exact ties in binary: 0.125, 2.5, 1.0000000000000002 ... (k + 1/2)/2^j
+      x = [x, 0.125_wp, 2.5_wp, 0.375_wp, 1.5_wp, 1234.5_wp, 9.5_wp, 0.5_wp**20]
+      n_differ = 0
+      n_values = 0
+      do d = 1, 17
          do i = 1, size(x)
-            write (reference, fmt) x(i)
-            call lower_case(reference)
-            ! range 1: |d − 1 − E| ≤ 22, one multiplication by an exact power of ten
-            e = 0
-            if (x(i) /= 0.0_wp) e = decimal_exponent(x(i))
-            r = merge(1, 2, abs(d - 1 - e) <= 22)
-            n_values(r) = n_values(r) + 1
-            text = format_es(x(i), d)
-            if (text == reference(1:es_width(d))) cycle
-            n_differ(r, k) = n_differ(r, k) + 1
-            delta = last_place_difference(text, reference(1:es_width(d)))
-            worst(r, k) = max(worst(r, k), delta)
-            call check(ctx, delta <= limit(r, k), "es descriptor vs format_es: '"//text//"' '"// &
-                       reference(1:es_width(d))//"'")
-         end do
-         do r = 1, 2
-            write (*, '(4x,a,i0,a,i0,a,i0,a,i0)') "vs es descriptor, "//trim(range_name(r))//", ", d, &
-               " digits: ", n_differ(r, k), " of ", n_values(r), " differ, max units in the last place ", worst(r, k)
+            n_values = n_values + 1
+            if (.not. same_as_es(x(i), d)) then
+               n_differ = n_differ + 1
+               if (n_differ <= 5) call check(ctx, .false., "es descriptor vs format_es at "// &
+                  trim(count_text(d))//" digits: '"//format_es(x(i), d)//"'")
+            end if
          end do
       end do
+      call check(ctx, n_differ == 0, "every text equal to the es descriptor's")
+      write (*, '(4x,a,i0,a,i0,a)') "vs es descriptor, digits 1 ... 17: ", n_differ, " of ", n_values, " differ"
    end subroutine agrees_with_es_descriptor
+
+   !> Whether format_es(x, d) equals Fortran's es text of x (its 'E' made 'e'; with one
+   !> digit, the point Fortran writes after it dropped).
+   logical function same_as_es(x, d) result(same)
+      real(wp), intent(in) :: x
+      integer, intent(in) :: d
+      character(len=40) :: fmt, reference
+      integer :: i
+      write (fmt, '(a,i0,a,i0,a)') "(es", es_width(d) + 1, ".", d - 1, "e3)"
+      write (reference, fmt) x
+      call lower_case(reference)
+      if (d == 1) then
+         i = index(reference(1:es_width(d) + 1), ".")
+         reference(2:i) = reference(1:i - 1)
+         reference(1:1) = " "
+      end if
+      same = format_es(x, d) == reference(2:es_width(d) + 1)
+   end function same_as_es
+
+   !> 200 000 doubles drawn as random bit patterns (every exponent, subnormals included)
+   !> and 200 000 drawn uniformly in [1e-12, 1e12]: at 17 digits each text reads back to
+   !> the same double and equals the es descriptor's; at 11 and 4 digits it equals the es
+   !> descriptor's.
+   subroutine random_bits_round_trip(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer, parameter :: n = 200000
+      integer(int64) :: bits, state
+      real(wp) :: x, y, u
+      integer :: i, n_bad_read, n_bad_text, d, j
+      character(len=32) :: text
+      integer, parameter :: digit_counts(3) = [17, 11, 4]
+      state = 88172645463325252_int64
+      n_bad_read = 0
+      n_bad_text = 0
+      do i = 1, 2*n
+         ! xorshift64: a fixed sequence, the same on every run
+         state = ieor(state, ishft(state, 13))
+         state = ieor(state, ishft(state, -7))
+         state = ieor(state, ishft(state, 17))
+         if (i <= n) then
+            bits = iand(state, huge(1_int64))
+            if (ishft(bits, -52) == 2047) cycle   ! NaN and Inf: not numbers
+            x = transfer(bits, 1.0_wp)
+            if (btest(state, 63)) x = -x
+         else
+            u = real(iand(ishft(state, -11), 2_int64**52 - 1), wp)/2.0_wp**52
+            x = 10.0_wp**(24.0_wp*u - 12.0_wp)
+         end if
+         if (abs(x) == huge(1.0_wp)) cycle
+         text = format_es(x, 17)
+         read (text, *) y
+         if (y /= x) n_bad_read = n_bad_read + 1
+         do j = 1, size(digit_counts)
+            d = digit_counts(j)
+            if (.not. same_as_es(x, d)) then
+               n_bad_text = n_bad_text + 1
+               if (n_bad_text <= 3) call check(ctx, .false., "format_es vs es at "//trim(count_text(d))// &
+                  " digits: '"//format_es(x, d)//"'")
+            end if
+         end do
+      end do
+      call check(ctx, n_bad_read == 0, "17 digits read back exactly: "//trim(count_text(n_bad_read))//" did not")
+      call check(ctx, n_bad_text == 0, "texts equal to the es descriptor's: "//trim(count_text(n_bad_text))//" were not")
+      write (*, '(4x,a,i0,a,i0,a,i0,a)') "random doubles: ", 2*n, " values, ", n_bad_read, &
+         " not read back exactly, ", n_bad_text, " texts unlike the es descriptor's"
+   end subroutine random_bits_round_trip
+
+   !> The table of powers of ten: power_hi(p) is the double nearest 10^p (the compiler's
+   !> conversion of "1e<p>"), |power_lo(p)| is at most half an ulp of it, and the pairs
+   !> agree with 10 times the pair before to double-double accuracy (1e-30 relative).
+   subroutine power_table(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer :: p, n_hi, n_lo, n_step
+      real(wp) :: hi, lo, e_hi, e_lo
+      n_hi = 0; n_lo = 0; n_step = 0
+      do p = power_min, power_max
+         if (power_hi(p) /= power_of_ten(p)) n_hi = n_hi + 1
+         if (abs(power_lo(p)) > 0.5_wp*spacing(power_hi(p))) n_lo = n_lo + 1
+         if (p > power_min) then
+            ! 10·(hi + lo) of p − 1 in double-double: exact products by 10 of each part
+            ! (hi·10 as 8 hi + 2 hi, exact in binary), then compared with hi + lo of p
+            hi = 10.0_wp*power_hi(p - 1)
+            e_hi = (8.0_wp*power_hi(p - 1) - hi) + 2.0_wp*power_hi(p - 1)
+            lo = 10.0_wp*power_lo(p - 1)
+            e_lo = (hi - power_hi(p)) + (e_hi + lo - power_lo(p))
+            if (abs(e_lo) > 1.0e-30_wp*power_hi(p)) n_step = n_step + 1
+         end if
+      end do
+      call check(ctx, n_hi == 0, "power_hi(p) is the double nearest 10^p: "//trim(count_text(n_hi))//" are not")
+      call check(ctx, n_lo == 0, "|power_lo(p)| <= ulp/2: "//trim(count_text(n_lo))//" are not")
+      call check(ctx, n_step == 0, "pairs agree with 10 times the one before: "//trim(count_text(n_step))//" do not")
+   end subroutine power_table
 
    !> 'E' of Fortran's es output to 'e'.
    pure subroutine lower_case(text)
@@ -264,43 +336,6 @@ contains
       i = index(text, "E")
       if (i > 0) text(i:i) = "e"
    end subroutine lower_case
-
-   !> |m_a − m_b| in units of the last place for two es texts of the same width, with
-   !> mantissas normalised to the same exponent (a carry may change the exponent).
-   integer function last_place_difference(a, b) result(delta)
-      character(len=*), intent(in) :: a, b
-      integer(int64) :: ma, mb
-      integer :: ea, eb
-      call split(a, ma, ea)
-      call split(b, mb, eb)
-      if (ea > eb) then
-         ma = ma*10**(ea - eb)
-      else if (eb > ea) then
-         mb = mb*10**(eb - ea)
-      end if
-      delta = int(min(abs(ma - mb), 1000000_int64))
-   contains
-      subroutine split(text, mantissa, exponent)
-         character(len=*), intent(in) :: text
-         integer(int64), intent(out) :: mantissa
-         integer, intent(out) :: exponent
-         character(len=len(text)) :: digits
-         integer :: i, n, at
-         at = scan(text, "eE")
-         n = 0
-         digits = ""
-         do i = 1, at - 1
-            if (verify(text(i:i), "0123456789") == 0) then
-               n = n + 1
-               digits(n:n) = text(i:i)
-            end if
-         end do
-         read (digits(1:n), *) mantissa
-         if (index(text(1:at), "-") > 0) mantissa = -mantissa
-         read (text(at + 1:), *) exponent
-      end subroutine split
-   end function last_place_difference
-
    !> put_es writes consecutive fields into one buffer and advances pos by es_width.
    subroutine put_es_buffer(ctx)
       type(test_context_t), intent(inout) :: ctx

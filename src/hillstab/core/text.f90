@@ -7,18 +7,21 @@
 !>
 !> Fortran's formatted `write` costs about half a microsecond per number, which
 !> is more than method auto needs to compute a chart point; this module writes
-!> the same `d.ddd…e±xxx` text with integer arithmetic, ten times faster. The
-!> mantissa comes from one multiplication by an exact power of ten (|decimal
-!> exponent shift| ≤ 22, i.e. |x| between about 1e-7 and 1e38 at 16 digits) and
-!> is then within one unit of the correctly rounded last digit (often one off);
-!> outside that range, where several roundings would pile up, the text comes from
-!> Fortran's own `es` edit descriptor, correctly rounded.
+!> the same `d.ddd…e±xxx` text, correctly rounded, with a few floating-point and
+!> integer operations: x times 10^p as a double-double (the table of
+!> hillstab_core_powers_of_ten and an error-free product), whose integer part and
+!> fraction decide the last digit exactly, except within 1e-9 of a tie (about one
+!> number in 10^9 at random) or outside |x| in [1e-274, 1e290], where the text comes from
+!> Fortran's own `es` edit descriptor, also correctly rounded. With 17 digits the text
+!> reads back to the same double.
 !>
 !>```fortran
 !> print '(a)', format_es(-1266.8019686641_wp, 12)   ! -1.26680196866e+003
 !>```
 module hillstab_core_text
    use hillstab_core_kinds, only: wp, int64
+   use, intrinsic :: iso_fortran_env, only: int32
+   use hillstab_core_powers_of_ten, only: power_min, power_max, power_hi, power_lo
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_usual, ieee_support_halting, &
       ieee_get_halting_mode, ieee_set_halting_mode, ieee_set_flag
    implicit none
@@ -31,11 +34,10 @@ module hillstab_core_text
       module procedure integer_text_default, integer_text_int64
    end interface integer_text
 
-   !> Exact powers of ten 1e0 … 1e22.
-   real(wp), parameter :: powers(0:22) = [1.0e0_wp, 1.0e1_wp, 1.0e2_wp, 1.0e3_wp, 1.0e4_wp, 1.0e5_wp, &
-      1.0e6_wp, 1.0e7_wp, 1.0e8_wp, 1.0e9_wp, 1.0e10_wp, 1.0e11_wp, 1.0e12_wp, 1.0e13_wp, 1.0e14_wp, &
-      1.0e15_wp, 1.0e16_wp, 1.0e17_wp, 1.0e18_wp, 1.0e19_wp, 1.0e20_wp, 1.0e21_wp, 1.0e22_wp]
    integer(int64), parameter :: ten = 10_int64
+   !> Powers of ten 10^0 … 10^8 in 32 bits.
+   integer(int32), parameter :: int32_powers(0:8) = [1_int32, 10_int32, 100_int32, 1000_int32, 10000_int32, &
+      100000_int32, 1000000_int32, 10000000_int32, 100000000_int32]
    !> "00", "01", … "99": digits are produced two at a time.
    character(len=200), parameter :: digit_pairs = &
       "0001020304050607080910111213141516171819202122232425262728293031323334353637383940414243444546474849"// &
@@ -61,25 +63,6 @@ contains
       es_width = digits + 7
    end function es_width
 
-   !> x multiplied by 10^p, in at most three exact-power steps (no intermediate overflow for
-   !> the ranges used here).
-   pure real(wp) function times_power_of_ten(x, p) result(y)
-      real(wp), intent(in) :: x
-      integer, intent(in) :: p
-      integer :: rest, step
-      y = x
-      rest = p
-      do while (rest /= 0)
-         step = max(-22, min(22, rest))
-         if (step > 0) then
-            y = y*powers(step)
-         else
-            y = y/powers(-step)
-         end if
-         rest = rest - step
-      end do
-   end function times_power_of_ten
-
    !> x in scientific notation with `digits` (1 … 17) significant digits and a
    !> three-digit exponent, right-aligned in es_width(digits) characters.
    !> Non-finite values give "nan", "inf" or "-inf" (callers keep them out of files).
@@ -93,19 +76,20 @@ contains
    end function format_es
 
    !> Write format_es(x, digits) into buffer(pos + 1 : pos + digits + 7) and advance pos
-   !> (no allocation: this runs once per number of a chart file).
+   !> (no allocation: this runs once per number of a chart file). Correctly rounded.
    pure subroutine put_es(buffer, pos, x, digits)
       character(len=*), intent(inout) :: buffer  !! the line being built
       integer, intent(inout) :: pos  !! last position written; advanced past the number
       real(wp), intent(in) :: x  !! the value, finite
       integer, intent(in) :: digits  !! significant digits, 1 ... 17
       integer(int64) :: mantissa
-      integer :: e, i, k, p, abs_e, last, biased
-      real(wp) :: ax
+      integer :: e, k, p, abs_e, last, biased, n_after
+      integer(int32) :: low
+      logical :: exact
       last = pos + digits + 7
-      buffer(pos + 1:last) = repeat(" ", digits + 7)
       pos = last
       if (.not. ieee_is_finite(x)) then
+         buffer(last - digits - 6:last) = " "
          if (ieee_is_nan(x)) then
             buffer(last - 2:last) = "nan"
          else if (x > 0.0_wp) then
@@ -115,69 +99,168 @@ contains
          end if
          return
       end if
-      ax = abs(x)
-      if (ax == 0.0_wp) then
+      if (x == 0.0_wp) then
          mantissa = 0
          e = 0
       else
          ! decimal exponent from the binary one, read from the bits (exponent() is a
-         ! library call; subnormals have biased exponent 0 and fall back to it); may be
-         ! off by one, corrected below
-         biased = int(ishft(transfer(ax, 0_int64), -52))
-         if (biased == 0) biased = exponent(ax) + 1022
+         ! library call); it is floor(log10|x|) or one less, corrected by `scaled_digits`
+         biased = int(ishft(transfer(abs(x), 0_int64), -52))
          e = floor((biased - 1023)*0.30102999566398120_wp)
-         if (abs(digits - 1 - e) > 21) then
+         p = digits - 1 - e
+         exact = biased > 0 .and. p - 1 >= power_min .and. p <= power_max
+         if (exact) call scaled_digits(abs(x), digits, p, mantissa, exact)
+         if (.not. exact) then
+            ! subnormal or beyond the table, or within 1e-9 of a tie
             call put_es_fortran(buffer, last, x, digits)
             return
          end if
-         mantissa = nint(times_power_of_ten(ax, digits - 1 - e), int64)
-         do while (mantissa >= int_powers(digits))
-            e = e + 1
-            mantissa = nint(times_power_of_ten(ax, digits - 1 - e), int64)
-         end do
-         do while (mantissa < int_powers(digits - 1))
-            e = e - 1
-            mantissa = nint(times_power_of_ten(ax, digits - 1 - e), int64)
-            if (mantissa >= int_powers(digits)) then   ! rounding carried: 9.99…5 → 10.0
-               mantissa = mantissa/ten
-               e = e + 1
-            end if
-         end do
+         e = digits - 1 - p
       end if
       ! layout: [-]d.ddd…e±xxx, filled from the right
-      p = last
       abs_e = abs(e)
-      do i = 1, 3
-         buffer(p:p) = achar(iachar("0") + mod(abs_e, 10))
-         abs_e = abs_e/10
-         p = p - 1
-      end do
+      k = 2*mod(abs_e, 100)
+      buffer(last - 1:last) = digit_pairs(k + 1:k + 2)
+      buffer(last - 2:last - 2) = achar(iachar("0") + abs_e/100)
       if (e < 0) then
-         buffer(p:p) = "-"
+         buffer(last - 4:last - 3) = "e-"
       else
-         buffer(p:p) = "+"
+         buffer(last - 4:last - 3) = "e+"
       end if
-      buffer(p - 1:p - 1) = "e"
-      p = p - 2
-      do i = 1, (digits - 1)/2
-         k = 2*int(mod(mantissa, 100_int64))
-         buffer(p - 1:p) = digit_pairs(k + 1:k + 2)
-         mantissa = mantissa/100_int64
-         p = p - 2
-      end do
-      if (mod(digits - 1, 2) == 1) then
-         buffer(p:p) = achar(iachar("0") + int(mod(mantissa, ten)))
-         mantissa = mantissa/ten
-         p = p - 1
+      p = last - 5
+      ! the digits after the point, two at a time, in 32-bit pieces of at most 8 digits
+      ! (64-bit division by a constant costs several times more)
+      n_after = digits - 1
+      if (n_after > 8) then
+         call put_eight(buffer, p, int(mod(mantissa, 100000000_int64), int32))
+         mantissa = mantissa/100000000_int64
+         n_after = n_after - 8
       end if
+      low = int(mantissa, int32)
+      call put_pairs(buffer, p, mod(low, int32_powers(n_after)), n_after)
+      low = low/int32_powers(n_after)
       if (digits > 1) then
          buffer(p:p) = "."
          p = p - 1
       end if
-      buffer(p:p) = achar(iachar("0") + int(mantissa))
+      buffer(p:p) = achar(iachar("0") + low)
       p = p - 1
-      if (x < 0.0_wp) buffer(p:p) = "-"
+      if (x < 0.0_wp) then
+         buffer(p:p) = "-"
+         p = p - 1
+      end if
+      do k = last - digits - 6, p   ! one or two blanks: a loop, not a call to memset
+         buffer(k:k) = " "
+      end do
    end subroutine put_es
+
+   !> The 8 decimal digits of `value` (with leading zeros) into buffer(p − 7 : p); p moves
+   !> left past them. Written out: two 4-digit halves, each two pairs.
+   pure subroutine put_eight(buffer, p, value)
+      character(len=*), intent(inout) :: buffer  !! the line being built
+      integer, intent(inout) :: p                !! the last position to fill; moved left
+      integer(int32), intent(in) :: value        !! 0 ≤ value < 10^8
+      integer(int32) :: high, low, k
+      high = value/10000_int32
+      low = value - 10000_int32*high
+      k = 2*(low/100_int32)
+      buffer(p - 3:p - 2) = digit_pairs(k + 1:k + 2)
+      k = 2*(low - 100_int32*(low/100_int32))
+      buffer(p - 1:p) = digit_pairs(k + 1:k + 2)
+      k = 2*(high/100_int32)
+      buffer(p - 7:p - 6) = digit_pairs(k + 1:k + 2)
+      k = 2*(high - 100_int32*(high/100_int32))
+      buffer(p - 5:p - 4) = digit_pairs(k + 1:k + 2)
+      p = p - 8
+   end subroutine put_eight
+
+   !> The `n` (≤ 8) decimal digits of `value` (with leading zeros) into buffer(p − n + 1 : p),
+   !> two at a time from the right; p moves left past them.
+   pure subroutine put_pairs(buffer, p, value, n)
+      character(len=*), intent(inout) :: buffer  !! the line being built
+      integer, intent(inout) :: p                !! the last position to fill; moved left
+      integer(int32), intent(in) :: value        !! 0 ≤ value < 10^n
+      integer, intent(in) :: n                   !! digits, 0 … 8
+      integer(int32) :: rest
+      integer :: i, k
+      if (n == 8) then
+         call put_eight(buffer, p, value)
+         return
+      end if
+      rest = value
+      do i = 1, n/2
+         k = 2*int(mod(rest, 100_int32))
+         buffer(p - 1:p) = digit_pairs(k + 1:k + 2)
+         rest = rest/100_int32
+         p = p - 2
+      end do
+      if (mod(n, 2) == 1) then
+         buffer(p:p) = achar(iachar("0") + int(rest))
+         p = p - 1
+      end if
+   end subroutine put_pairs
+
+   !> The `digits` significant digits of ax > 0, correctly rounded, as an integer
+   !> mantissa in [10^(digits−1), 10^digits) with ax ≈ mantissa·10^(−p); p is the
+   !> caller's guess, decreased by one when ax·10^p reaches 10^digits (before or after
+   !> rounding). `exact` is false when the rounding cannot be decided here: ax·10^p
+   !> within 1e-9 of a half-integer, or p out of the table.
+   pure subroutine scaled_digits(ax, digits, p, mantissa, exact)
+      real(wp), intent(in) :: ax
+      integer, intent(in) :: digits
+      integer, intent(inout) :: p
+      integer(int64), intent(out) :: mantissa
+      logical, intent(out) :: exact
+      real(wp), parameter :: tie_margin = 1.0e-9_wp
+      real(wp) :: product, error, whole, fraction
+      integer :: attempt
+      exact = .false.
+      mantissa = 0
+      do attempt = 1, 2
+         if (p < power_min .or. p > power_max) return
+         ! ax·10^p = product + error + ax·power_lo(p), to about 2^-104 relative
+         call two_product(ax, power_hi(p), product, error)
+         whole = aint(product)
+         fraction = (product - whole) + (error + ax*power_lo(p))
+         mantissa = int(whole, int64)
+         do while (fraction < 0.0_wp)
+            mantissa = mantissa - 1
+            fraction = fraction + 1.0_wp
+         end do
+         do while (fraction >= 1.0_wp)
+            mantissa = mantissa + 1
+            fraction = fraction - 1.0_wp
+         end do
+         if (mantissa >= int_powers(digits)) then
+            p = p - 1   ! the guessed decimal exponent was one too small
+            cycle
+         end if
+         if (abs(fraction - 0.5_wp) < tie_margin) return
+         if (fraction > 0.5_wp) mantissa = mantissa + 1
+         if (mantissa == int_powers(digits)) then   ! rounding carried: 9.99…5 → 10.0
+            mantissa = int_powers(digits - 1)
+            p = p - 1
+         end if
+         exact = .true.
+         return
+      end do
+   end subroutine scaled_digits
+
+   !> product + error = a·b exactly up to the rounding of the smallest partial product
+   !> (about 2^-106 relative), by Dekker's splitting; the halves are cut from the bits, so
+   !> the result does not depend on whether the compiler fuses multiply-adds.
+   pure subroutine two_product(a, b, product, error)
+      real(wp), intent(in) :: a, b
+      real(wp), intent(out) :: product, error
+      integer(int64), parameter :: high_mask = not(2_int64**27 - 1_int64)
+      real(wp) :: a_hi, a_lo, b_hi, b_lo
+      product = a*b
+      a_hi = transfer(iand(transfer(a, 0_int64), high_mask), 1.0_wp)
+      b_hi = transfer(iand(transfer(b, 0_int64), high_mask), 1.0_wp)
+      a_lo = a - a_hi
+      b_lo = b - b_hi
+      error = ((a_hi*b_hi - product) + a_hi*b_lo + a_lo*b_hi) + a_lo*b_lo
+   end subroutine two_product
 
    !> Write the decimal digits of n (a '-' first when negative) into buffer(pos + 1 : …) and
    !> advance pos. No allocation: inside an OpenMP loop this replaces `integer_text`, since
