@@ -9,7 +9,9 @@ module test_auto
    use hillstab_core_stats, only: work_stats_t
    use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_integrate_auto, only: trace_auto, trace_auto_batch, auto_plan_t, auto_prepare, fixed_n_trace
+   use hillstab_integrate_auto, only: trace_auto, trace_auto_batch, auto_plan_t, auto_prepare, fixed_n_trace, &
+      trace_auto_screen
+   use hillstab_integrate_refine, only: trace_distance
    use hillstab_integrate_monodromy, only: method_t, method_auto, monodromy_trace, monodromy_trace_batch, &
       batch_plan_t, prepare_batch
    use hillstab_integrate_monodromy_gsl, only: trace_gsl
@@ -48,7 +50,8 @@ contains
          new_unittest("bad_input", bad_input), &
          new_unittest("fixed_n_order", fixed_n_order), &
          new_unittest("nan_inputs_no_trap", nan_inputs_no_trap), &
-         new_unittest("roundoff_best_value", roundoff_best_value)])
+         new_unittest("roundoff_best_value", roundoff_best_value), &
+         new_unittest("screen_bound_grids", screen_bound_grids)])
    end function collect_auto
 
    !> Error of S relative to max(1, |S_ref|); through ln|S| when either value overflowed
@@ -577,4 +580,59 @@ contains
       call check(ctx, tr%value, 2.0_wp, abs=1.0e-7_wp, message="S = 2 to the round-off level")
       call check(ctx, abs(tr%value - 2.0_wp)/2.0_wp <= tr%error_estimate, "error within the estimate")
    end subroutine roundoff_best_value
+
+   !> The screening pass of a verdict on 30 × 30 grids: the elastic chart α ∈ [0, 9.8],
+   !> β ∈ [−2, 12]; the hard band α ∈ [9.5, π²(1 − 1e-7)], β ∈ [−50, 50]; the band near β = 0,
+   !> α up to π²(1 − 1e-9); Mathieu ν ∈ [0, 10], β ∈ [−5, 15]; damped (ε = 0.3); large β
+   !> (±1000). At every point the error of the screen's S against auto at 1e-13 lies within
+   !> the bound it reports (where that error exceeds 1e-12, the reference's own level), and
+   !> most points are settled (their |S| beyond the bound from 2 cosh ε).
+   subroutine screen_bound_grids(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      call grid(model_elastic, 0.0_wp, 9.8_wp, -2.0_wp, 12.0_wp, 0.0_wp, "elastic")
+      call grid(model_elastic, 9.5_wp, pi2*(1.0_wp - 1.0e-7_wp), -50.0_wp, 50.0_wp, 0.0_wp, "hard band")
+      call grid(model_elastic, 9.3_wp, pi2*(1.0_wp - 1.0e-9_wp), -0.01_wp, 0.01_wp, 0.0_wp, "band near beta = 0")
+      call grid(model_mathieu, 0.0_wp, 10.0_wp, -5.0_wp, 15.0_wp, 0.0_wp, "mathieu")
+      call grid(model_elastic, 0.0_wp, 9.8_wp, -2.0_wp, 12.0_wp, 0.3_wp, "damped")
+      call grid(model_elastic, 0.0_wp, 9.8_wp, -1000.0_wp, 1000.0_wp, 0.0_wp, "large beta")
+   contains
+      subroutine grid(kind, a0, a1, b0, b1, epsilon, name)
+         integer, intent(in) :: kind
+         real(wp), intent(in) :: a0, a1, b0, b1, epsilon
+         character(len=*), intent(in) :: name
+         integer, parameter :: n = 30
+         real(wp) :: alpha, betas(n), e, worst, threshold
+         type(trace_t) :: screened(n), reference(n)
+         type(work_stats_t) :: stats
+         type(error_t), allocatable :: error
+         integer :: i, j, n_settled, n_violations
+         do j = 1, n
+            betas(j) = b0 + (b1 - b0)*(j - 1)/real(n - 1, wp)
+         end do
+         threshold = 2.0_wp*cosh(epsilon)
+         worst = 0.0_wp
+         n_settled = 0
+         n_violations = 0
+         do i = 1, n
+            alpha = a0 + (a1 - a0)*(i - 1)/real(n - 1, wp)
+            call trace_auto_screen(kind, alpha, epsilon, betas, screened, stats, error)
+            call check(ctx, .not. allocated(error), name//": screened")
+            if (allocated(error)) return
+            call trace_auto_batch(kind, alpha, epsilon, betas, 1.0e-13_wp, reference, stats, error)
+            if (allocated(error)) deallocate (error)   ! round-off limited points: their best values
+            do j = 1, n
+               e = trace_distance(screened(j), reference(j))
+               if (e > 1.0e-12_wp) then
+                  worst = max(worst, e/screened(j)%error_estimate)
+                  if (e > screened(j)%error_estimate) n_violations = n_violations + 1
+               end if
+               if (abs(abs(screened(j)%value) - threshold) > max(screened(j)%error_estimate, 1.0e-10_wp)* &
+                   max(1.0_wp, abs(screened(j)%value))) n_settled = n_settled + 1
+            end do
+         end do
+         call check(ctx, n_violations == 0, name//": screen errors within their bounds")
+         call check(ctx, n_settled >= 9*n*n/10, name//": most points settled by the screen")
+         print '(4x,a,a,es9.2,a,i0,a,i0)', name, ": largest error/bound ", worst, ", settled ", n_settled, " of ", n*n
+      end subroutine grid
+   end subroutine screen_bound_grids
 end module test_auto

@@ -12,6 +12,8 @@ module test_monodromy
    use hillstab_hill_transfer
    use hillstab_hill_floquet
    use hillstab_integrate_monodromy
+   use hillstab_integrate_auto, only: trace_auto_screen
+   use hillstab_core_stats, only: work_stats_t
    use test_reference, only: rk4_monodromy, value_of
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -59,7 +61,10 @@ contains
          new_unittest("hard_set_magnus4", hard_set_magnus4), &
          new_unittest("hard_set_magnus6", hard_set_magnus6), &
          new_unittest("hard_set_rk", hard_set_rk), &
-         new_unittest("hard_set_gsl", hard_set_gsl)])
+         new_unittest("hard_set_gsl", hard_set_gsl), &
+         new_unittest("screen_bound_hard_sets", screen_bound_hard_sets), &
+         new_unittest("verdict_need_every_method", verdict_need_every_method), &
+         new_unittest("growth_need", growth_need)])
    end function collect_monodromy
 
    subroutine unit_determinant(ctx)
@@ -389,4 +394,152 @@ contains
       type(test_context_t), intent(inout) :: ctx
       call check_hard_set(ctx, method_gsl)
    end subroutine hard_set_gsl
+
+   !> The screening pass of a verdict (auto) at every point of the hard, check and band sets:
+   !> the error of its S against the 50-digit reference is within the bound it reports, and
+   !> a verdict (need_verdict, tolerance 1e-10) agrees with the reference's wherever the
+   !> reference lies farther than 1e-7 from |S| = 2.
+   subroutine screen_bound_hard_sets(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(reference_point_t), allocatable :: points(:)
+      type(trace_t) :: tr(1)
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      logical :: failed(1), ok
+      real(wp) :: err, worst, distance
+      integer :: i_file, k, n_points, n_marginal
+      type(floquet_t) :: f
+      character(len=160) :: where
+      worst = 0.0_wp
+      n_points = 0
+      n_marginal = 0
+      do i_file = 1, size(hard_set_files)
+         call read_hard_set(trim(hard_set_files(i_file)), points, ok)
+         call check(ctx, ok, "reference table "//trim(hard_set_files(i_file))//" read")
+         if (.not. ok) cycle
+         do k = 1, size(points)
+            write (where, '(a,i0,a,es10.3,a,es11.3)') "model ", points(k)%model, " alpha ", points(k)%alpha, &
+               " beta ", points(k)%beta
+            call trace_auto_screen(points(k)%model, points(k)%alpha, 0.0_wp, [points(k)%beta], tr, stats, error)
+            call check(ctx, .not. allocated(error), trim(where)//": screened")
+            if (allocated(error)) cycle
+            n_points = n_points + 1
+            err = reference_error(tr(1), points(k))
+            worst = max(worst, err/tr(1)%error_estimate)
+            call check(ctx, err <= tr(1)%error_estimate, trim(where)//": screen error "//real_text(err)// &
+                       " above its bound "//real_text(tr(1)%error_estimate))
+            call monodromy_trace_batch(hill_model_t(points(k)%model, points(k)%alpha, 0.0_wp, 0.0_wp), &
+               [points(k)%beta], method_t(method_auto, tolerance=1.0e-10_wp), tr, failed, error, need=need_verdict)
+            if (failed(1)) then
+               call check(ctx, .false., trim(where)//": verdict failed")
+               cycle
+            end if
+            ! where the verdict is not marginal (its error bound does not reach |S| = 2)
+            f = floquet_from_trace(tr(1), 0.0_wp, 1.0e-10_wp)
+            if (f%marginal) then
+               n_marginal = n_marginal + 1
+               distance = abs(exp(min(points(k)%log_abs, 1.0_wp)) - 2.0_wp)
+               call check(ctx, distance <= 2.0_wp*max(tr(1)%error_estimate, 1.0e-10_wp)*max(1.0_wp, abs(tr(1)%value)) &
+                          + reference_error(tr(1), points(k))*max(1.0_wp, abs(tr(1)%value)), &
+                          trim(where)//": marginal only within its bound of |S| = 2")
+            else
+               call check(ctx, f%stable .eqv. points(k)%log_abs < log(2.0_wp), trim(where)//": verdict")
+            end if
+         end do
+      end do
+      print '(4x,a,i0,a,es9.2,a,i0)', "screened ", n_points, " reference points: largest error/bound ", worst, &
+         "; marginal verdicts ", n_marginal
+   end subroutine screen_bound_hard_sets
+
+   !> need_verdict and need_trace give the same verdicts wherever neither is marginal, for
+   !> every exact method, on a row across the first tongues (α = 5) and on a row of the hard
+   !> band (α = 9.8, β near 0); the verdict does less work (auto: fewer Q evaluations).
+   subroutine verdict_need_every_method(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer, parameter :: methods(4) = [method_auto, method_magnus6, method_rk, method_gsl]
+      integer, parameter :: n = 41
+      real(wp) :: betas(n), alphas(2)
+      type(trace_t) :: full(n), verdict(n)
+      logical :: failed(n)
+      type(error_t), allocatable :: error
+      type(work_stats_t) :: work_full, work_verdict
+      type(floquet_t) :: f_full, f_verdict
+      integer :: m, j, r, n_compared
+      alphas = [5.0_wp, 9.8_wp]
+      do r = 1, 2
+         do j = 1, n
+            if (r == 1) then
+               betas(j) = -2.0_wp + 14.0_wp*(j - 1)/real(n - 1, wp)
+            else
+               betas(j) = -0.5_wp + 1.0_wp*(j - 1)/real(n - 1, wp)
+            end if
+         end do
+         do m = 1, size(methods)
+            call monodromy_trace_batch(hill_model_t(model_elastic, alphas(r), 0.0_wp, 0.0_wp), betas, &
+               method_t(methods(m), tolerance=1.0e-10_wp), full, failed, error, work_full)
+            call check(ctx, .not. any(failed), method_name(methods(m))//": full row computed")
+            call monodromy_trace_batch(hill_model_t(model_elastic, alphas(r), 0.0_wp, 0.0_wp), betas, &
+               method_t(methods(m), tolerance=1.0e-10_wp), verdict, failed, error, work_verdict, need=need_verdict)
+            call check(ctx, .not. any(failed), method_name(methods(m))//": verdict row computed")
+            n_compared = 0
+            do j = 1, n
+               f_full = floquet_from_trace(full(j), 0.0_wp, 1.0e-10_wp)
+               f_verdict = floquet_from_trace(verdict(j), 0.0_wp, 1.0e-10_wp)
+               if (f_full%marginal .or. f_verdict%marginal) cycle
+               n_compared = n_compared + 1
+               call check(ctx, f_full%stable .eqv. f_verdict%stable, method_name(methods(m))//": same verdict")
+            end do
+            call check(ctx, n_compared >= n - 2, method_name(methods(m))//": at most two marginal points")
+            if (methods(m) == method_auto) call check(ctx, work_verdict%n_evaluations < work_full%n_evaluations/2, &
+               "auto: a verdict costs less than half the evaluations of S")
+         end do
+      end do
+   end subroutine verdict_need_every_method
+
+   !> need_growth: where |S| < 2 is certain λ_max = 1 and μ = 0 exactly (as from S computed
+   !> to the tolerance); elsewhere S agrees with need_trace's to the tolerance. Elastic and
+   !> Mathieu rows, and a damped one (where λ_max = e^{−ε} below |S| = 2).
+   subroutine growth_need(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer, parameter :: n = 41
+      real(wp) :: betas(n)
+      type(trace_t) :: full(n), growth(n)
+      logical :: failed(n)
+      type(error_t), allocatable :: error
+      type(floquet_t) :: f_full, f_growth
+      type(hill_model_t) :: row
+      integer :: j, r, n_exact
+      do j = 1, n
+         betas(j) = -2.0_wp + 14.0_wp*(j - 1)/real(n - 1, wp)
+      end do
+      do r = 1, 3
+         select case (r)
+         case (1)
+            row = hill_model_t(model_elastic, 7.0_wp, 0.0_wp, 0.0_wp)
+         case (2)
+            row = hill_model_t(model_mathieu, 4.0_wp, 0.0_wp, 0.0_wp)
+         case default
+            row = hill_model_t(model_elastic, 7.0_wp, 0.0_wp, 0.4_wp)
+         end select
+         call monodromy_trace_batch(row, betas, method_t(method_auto, tolerance=1.0e-10_wp), full, failed, error)
+         call monodromy_trace_batch(row, betas, method_t(method_auto, tolerance=1.0e-10_wp), growth, failed, error, &
+                                    need=need_growth)
+         n_exact = 0
+         do j = 1, n
+            f_full = floquet_from_trace(full(j), row%epsilon, 1.0e-10_wp)
+            f_growth = floquet_from_trace(growth(j), row%epsilon, 1.0e-10_wp)
+            if (abs(growth(j)%value) < 2.0_wp .and. growth(j)%error_estimate > 1.0e-10_wp) then
+               ! settled by the screen: the multipliers of x have modulus e^{-epsilon}
+               n_exact = n_exact + 1
+               call check(ctx, largest_multiplier_modulus(f_growth) == largest_multiplier_modulus(f_full) .and. &
+                          f_growth%exponent == f_full%exponent, "lambda_max and mu exact where |S| < 2")
+            else
+               call check(ctx, growth(j)%value, full(j)%value, abs=2.0e-10_wp*max(1.0_wp, abs(full(j)%value)), &
+                          message="S to the tolerance elsewhere")
+               call check(ctx, f_growth%exponent, f_full%exponent, abs=1.0e-9_wp, message="mu elsewhere")
+            end if
+         end do
+         call check(ctx, n_exact > 5, "some points settled by the screen")
+      end do
+   end subroutine growth_need
 end module test_monodromy

@@ -36,6 +36,9 @@ contains
          new_unittest("chart_over_a_and_omega", chart_over_a_and_omega), &
          new_unittest("domain_notes", domain_notes), &
          new_unittest("chosen_columns_and_binary", chosen_columns_and_binary), &
+         new_unittest("verdict_chart_matches_full", verdict_chart_matches_full), &
+         new_unittest("growth_columns_match_full", growth_columns_match_full), &
+         new_unittest("columns_state_their_accuracy", columns_state_their_accuracy), &
          new_unittest("bad_input_touches_nothing", bad_input_touches_nothing), &
          new_unittest("planted_links_untouched", planted_links_untouched), &
          new_unittest("long_file_names", long_file_names), &
@@ -976,4 +979,164 @@ contains
       call delete_file(dir//"/a/b/run_chart.dat")
       call execute_command_line("rmdir '"//dir//"/a/b' '"//dir//"/a' '"//dir//"'")
    end subroutine unwritable_output
+
+   !> A chart asking only for verdicts (`columns = 'alpha beta stable'`, with stable_paper
+   !> when damped) against the same chart with S: the same verdict at every point where
+   !> neither file says 0.5 (marginal); where one does, S lies within twice the tolerance
+   !> (relative to max(1, |S|)) of the threshold. Elastic across the first tongues, the hard
+   !> band α → π² near β = 0 (S = 2 exactly at β = 0), Mathieu, and damped (ε = 0.3, where
+   !> stable_paper settles |S| = 2 as well).
+   subroutine verdict_chart_matches_full(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      call compare("elastic", "model = 'elastic'", &
+                   "alpha_min = 0, alpha_max = 9.8, n_alpha = 24, beta_min = -2, beta_max = 12, n_beta = 37", .false.)
+      call compare("band", "model = 'elastic'", &
+                   "alpha_min = 9.5, alpha_max = 9.8696, n_alpha = 12, beta_min = -0.01, beta_max = 0.01, n_beta = 21", &
+                   .false.)
+      call compare("mathieu", "model = 'mathieu'", &
+                   "alpha_min = 0, alpha_max = 10, n_alpha = 21, beta_min = -5, beta_max = 15, n_beta = 31", .false.)
+      call compare("damped", "model = 'elastic', epsilon = 0.3", &
+                   "alpha_min = 0, alpha_max = 9.8, n_alpha = 24, beta_min = -2, beta_max = 12, n_beta = 37", .true.)
+   contains
+      subroutine compare(name, settings, chart, damped)
+         character(len=*), intent(in) :: name, settings, chart
+         logical, intent(in) :: damped
+         type(error_t), allocatable :: error
+         character(len=:), allocatable :: out, full_path, verdict_path, verdict_columns, full_columns
+         character(len=1024), allocatable :: full(:), verdict(:)
+         real(wp), allocatable :: full_rows(:, :), verdict_rows(:, :)
+         real(wp) :: s, bound, tolerance
+         integer :: n_blank, k, c, n_columns, n_marginal
+         logical :: numeric
+         tolerance = 1.0e-10_wp
+         out = scratch_prefix("verdict_"//name)
+         verdict_columns = "alpha beta stable"
+         if (damped) verdict_columns = verdict_columns//" stable_paper"
+         full_columns = verdict_columns//" S"
+         n_columns = merge(4, 3, damped)
+         call run_text_scene("verdict_full", [padded("&scene "//settings//", output = '"//out//"_full',"), &
+            padded("  columns = '"//full_columns//"' /"), padded("&chart "//chart//" /")], error, full_path)
+         call check(ctx, .not. allocated(error), name//": full chart")
+         if (allocated(error)) return
+         call run_text_scene("verdict_only", [padded("&scene "//settings//", output = '"//out//"_verdict',"), &
+            padded("  columns = '"//verdict_columns//"' /"), padded("&chart "//chart//" /")], error, verdict_path)
+         call check(ctx, .not. allocated(error), name//": verdict chart")
+         if (allocated(error)) return
+         full = read_lines(full_path)
+         verdict = read_lines(verdict_path)
+         call data_rows(full, n_columns + 1, full_rows, n_blank, numeric)
+         call check(ctx, numeric, name//": full rows numeric")
+         call data_rows(verdict, n_columns, verdict_rows, n_blank, numeric)
+         call check(ctx, numeric .and. size(verdict_rows, 2) == size(full_rows, 2), name//": as many verdict rows")
+         if (size(verdict_rows, 2) /= size(full_rows, 2)) return
+         n_marginal = 0
+         do k = 1, size(full_rows, 2)
+            call check(ctx, all(verdict_rows(1:2, k) == full_rows(1:2, k)), name//": the same grid")
+            s = full_rows(n_columns + 1, k)
+            do c = 3, n_columns
+               if (verdict_rows(c, k) == full_rows(c, k)) cycle
+               if (verdict_rows(c, k) == 0.5_wp .or. full_rows(c, k) == 0.5_wp) then
+                  n_marginal = n_marginal + 1
+                  ! the threshold of stable: 2 cosh(0.3) when damped; of stable_paper: 2
+                  bound = 2.0_wp*tolerance*max(1.0_wp, abs(s))
+                  if (c == 3 .and. damped) then
+                     call check(ctx, abs(abs(s) - 2.0_wp*cosh(0.3_wp)) <= bound, name//": marginal near the threshold")
+                  else
+                     call check(ctx, abs(abs(s) - 2.0_wp) <= bound, name//": marginal near |S| = 2")
+                  end if
+               else
+                  call check(ctx, .false., name//": the same verdict where neither is marginal")
+               end if
+            end do
+         end do
+         print '(4x,a,a,i0,a,i0,a)', name, ": ", size(full_rows, 2), " points, ", n_marginal, &
+            " verdicts marginal in one file only"
+         call delete_file(full_path)
+         call delete_file(verdict_path)
+      end subroutine compare
+   end subroutine verdict_chart_matches_full
+
+   !> `columns = 'alpha beta lambda_max mu'` (what the growth of the swing needs) against
+   !> the full chart: lambda_max and mu equal where the full chart has |S| < 2 (1 and 0
+   !> exactly), within 1e-9 relative elsewhere (the header's accuracy at tolerance 1e-10).
+   subroutine growth_columns_match_full(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out, full_path, growth_path
+      character(len=1024), allocatable :: full(:), growth(:)
+      real(wp), allocatable :: full_rows(:, :), growth_rows(:, :)
+      character(len=*), parameter :: chart = &
+         "&chart alpha_min = 0.5, alpha_max = 9.8, n_alpha = 16, beta_min = -2, beta_max = 12, n_beta = 29 /"
+      integer :: n_blank, k, n_stable
+      logical :: numeric
+      out = scratch_prefix("growth")
+      call run_text_scene("growth_full", [padded("&scene output = '"//out//"_full', "// &
+         "columns = 'alpha beta lambda_max mu S' /"), padded(chart)], error, full_path)
+      call check(ctx, .not. allocated(error), "full chart")
+      if (allocated(error)) return
+      call run_text_scene("growth_only", [padded("&scene output = '"//out//"_growth', "// &
+         "columns = 'alpha beta lambda_max mu' /"), padded(chart)], error, growth_path)
+      call check(ctx, .not. allocated(error), "growth chart")
+      if (allocated(error)) return
+      full = read_lines(full_path)
+      growth = read_lines(growth_path)
+      call data_rows(full, 5, full_rows, n_blank, numeric)
+      call data_rows(growth, 4, growth_rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(growth_rows, 2) == size(full_rows, 2), "as many rows")
+      if (size(growth_rows, 2) /= size(full_rows, 2)) return
+      n_stable = 0
+      do k = 1, size(full_rows, 2)
+         if (abs(full_rows(5, k)) < 2.0_wp) then
+            n_stable = n_stable + 1
+            call check(ctx, growth_rows(3, k) == 1.0_wp .and. growth_rows(4, k) == 0.0_wp, &
+                       "lambda_max = 1 and mu = 0 exactly where |S| < 2")
+         else
+            call check(ctx, growth_rows(3, k), full_rows(3, k), rel=1.0e-9_wp, message="lambda_max")
+            call check(ctx, growth_rows(4, k), full_rows(4, k), rel=1.0e-9_wp, abs=1.0e-9_wp, message="mu")
+         end if
+      end do
+      call check(ctx, n_stable > 50 .and. n_stable < size(full_rows, 2) - 50, "stable and unstable points")
+      call delete_file(full_path)
+      call delete_file(growth_path)
+   end subroutine growth_columns_match_full
+
+   !> The header says what accuracy each written column has: a verdict chart that its
+   !> verdicts come from a screening pass; a chart with S the tolerance of S; a chart of the
+   !> grid's columns alone that nothing is computed; an approximate method that it has no
+   !> error bound.
+   subroutine columns_state_their_accuracy(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      call expect("alpha beta stable", "auto", "# accuracy of stable: exact except at 0.5 (marginal): each point "// &
+                  "computed only until |S| = 2 lies beyond the error bound of its S")
+      call expect("alpha beta S stable", "auto", "# accuracy of S: to the tolerance 1.0e-10: |error of S| <= "// &
+                  "max(error_estimate, 1.0e-10) max(1, |S|) at status 0")
+      call expect("alpha beta S stable", "auto", "# accuracy of stable: exact except at 0.5 (marginal), from S "// &
+                  "computed to the tolerance 1.0e-10")
+      call expect("alpha beta mu", "auto", "# accuracy of mu: exact where |S| < 2")
+      call expect("alpha beta physical", "auto", "# accuracy: no trace is computed (the columns written need none)")
+      call expect("alpha beta S", "formula", "# accuracy of S: the value of method 'formula' itself (an "// &
+                  "approximation, no error bound)")
+   contains
+      subroutine expect(columns, method, line)
+         character(len=*), intent(in) :: columns, method, line
+         type(error_t), allocatable :: error
+         character(len=:), allocatable :: path
+         character(len=1024), allocatable :: lines(:)
+         integer :: k
+         logical :: found
+         call run_text_scene("accuracy", [padded("&scene method = '"//method//"', output = '"// &
+            scratch_prefix("accuracy")//"', columns = '"//columns//"' /"), &
+            padded("&chart alpha_min = 1, alpha_max = 2, n_alpha = 2, beta_min = 1, beta_max = 2, n_beta = 2 /")], &
+            error, path)
+         call check(ctx, .not. allocated(error), columns//": chart")
+         if (allocated(error)) return
+         lines = read_lines(path)
+         found = .false.
+         do k = 1, size(lines)
+            if (index(lines(k), line) == 1) found = .true.
+         end do
+         call check(ctx, found, columns//" ("//method//"): header line '"//line//"'")
+         call delete_file(path)
+      end subroutine expect
+   end subroutine columns_state_their_accuracy
 end module test_tasks

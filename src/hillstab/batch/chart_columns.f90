@@ -23,7 +23,8 @@ module hillstab_batch_chart_columns
    use hillstab_hill_coefficient, only: sampling_name
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
-   use hillstab_integrate_monodromy, only: monodromy_trace, method_name, method_uses_segments, method_is_exact
+   use hillstab_integrate_monodromy, only: monodromy_trace_batch, method_name, method_uses_segments, method_is_exact, &
+      need_nothing, need_verdict, need_growth, need_trace
    use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, physical_summary
    use hillstab_batch_scene_file, only: fail
    use hillstab_batch_columns, only: column_t, style_e17, style_e11, style_e4, style_flag, column_lines, &
@@ -34,7 +35,7 @@ module hillstab_batch_chart_columns
    public :: floquet_task_t, chart_columns, offered_chart_columns, chart_values, scene_chart_columns, n_chart_columns
    public :: chart_header, common_header, evaluate_point, failed_points_error, check_method_runs, warn_inaccurate
    public :: clamp_magnitude, log10_floor, chart_line_length, stacked, chart_line, failed_values
-   public :: header_bytes, text_row_bytes, binary_row_bytes, point_amplitude
+   public :: header_bytes, text_row_bytes, binary_row_bytes, point_amplitude, columns_need, columns_paper
 
    !> The columns of a chart or points file, in file order.
    integer, parameter :: col_alpha = 1, col_a = 2, col_beta = 3, col_omega = 4, col_s = 5, col_stable = 6, &
@@ -51,6 +52,14 @@ module hillstab_batch_chart_columns
    !> every column's range.
    real(wp), parameter :: chart_placeholders(n_chart_columns) = [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, -1.0_wp, &
       -1.0_wp, 0.0_wp, -999.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, real(status_failed, wp)]
+   !> What each column needs computed at a point (hillstab_integrate_monodromy): nothing
+   !> for the grid's own columns and status, the verdict for stable and stable_paper, the
+   !> growth (exact where |S| < 2, S to the tolerance elsewhere) for lambda_max, mu and
+   !> mu_per_s, S to the tolerance for S, log10_abs_S, overflow and error_estimate. A file
+   !> computes what the most demanding of its columns needs.
+   integer, parameter :: chart_needs(n_chart_columns) = [need_nothing, need_nothing, need_nothing, need_nothing, &
+      need_trace, need_verdict, need_growth, need_growth, need_trace, need_trace, need_nothing, need_verdict, &
+      need_growth, need_trace, need_nothing]
    !> The columns a failed point keeps: its alpha, a, beta, omega and physical.
    logical, parameter :: chart_kept(n_chart_columns) = [.true., .true., .true., .true., .false., .false., .false., &
       .false., .false., .false., .true., .false., .false., .false., .false.]
@@ -183,11 +192,66 @@ contains
       end if
    end subroutine scene_chart_columns
 
+   !> What the columns `ids` need computed at each point: the most any of them needs.
+   pure integer function columns_need(ids) result(need)
+      integer, intent(in) :: ids(:)  !! the columns written
+      need = need_nothing
+      if (size(ids) > 0) need = maxval(chart_needs(ids))
+   end function columns_need
+
+   !> Whether the columns `ids` include stable_paper (a verdict then settles |S| = 2 too).
+   pure logical function columns_paper(ids) result(paper)
+      integer, intent(in) :: ids(:)  !! the columns written
+      paper = any(ids == col_stable_paper)
+   end function columns_paper
+
+   !> The header's line on the accuracy of column `k` (written with the columns `ids`).
+   function accuracy_line(scene, k, ids) result(line)
+      type(scene_t), intent(in) :: scene  !! the scene
+      integer, intent(in) :: k            !! a column
+      integer, intent(in) :: ids(:)       !! the columns written
+      character(len=:), allocatable :: line
+      character(len=:), allocatable :: tolerance, threshold
+      type(column_t) :: table(n_chart_columns)
+      table = chart_columns(scene)
+      line = ""
+      if (chart_needs(k) == need_nothing) return
+      line = "accuracy of "//table(k)%name//": "
+      if (.not. method_is_exact(scene%method%kind)) then
+         line = line//"the value of method '"//method_name(scene%method%kind)//"' itself (an approximation, "// &
+            "no error bound)"
+         return
+      end if
+      tolerance = real_text(scene%method%tolerance)
+      threshold = "|S| = 2 cosh(epsilon)"
+      if (.not. scene%epsilon > 0.0_wp) threshold = "|S| = 2"
+      select case (k)
+      case (col_stable, col_stable_paper)
+         if (k == col_stable_paper) threshold = "|S| = 2"
+         if (columns_need(ids) == need_verdict) then
+            line = line//"exact except at 0.5 (marginal): each point computed only until "//threshold// &
+               " lies beyond the error bound of its S (a screening pass; the tolerance "//tolerance// &
+               " where that does not settle it)"
+         else
+            line = line//"exact except at 0.5 (marginal), from S computed to the tolerance "//tolerance
+         end if
+      case (col_lambda_max, col_mu, col_mu_per_s)
+         line = line//"exact where |S| < 2 (lambda_max = exp(-epsilon), mu = -epsilon/2); elsewhere from S "// &
+            "computed to the tolerance "//tolerance//": relative error of lambda_max (absolute error of 2 mu) "// &
+            "at most "//tolerance//" max(1, |S|)/sqrt(S^2 - 4)"
+      case (col_error_estimate)
+         line = line//"the method's own estimate; at status 0 at most the tolerance "//tolerance
+      case default
+         line = line//"to the tolerance "//tolerance//": |error of S| <= max(error_estimate, "//tolerance// &
+            ") max(1, |S|) at status 0"
+      end select
+   end function accuracy_line
+
    !> The value of every column (table order) at one computed point: S and lambda_max
    !> clamped to ±1e300, flags 1 or 0, stable 0.5 when marginal, mu_per_s = μ ω/π
    !> (0 without `per_second`), error_estimate −1 when the method gives none, a the
    !> amplitude (0 without `amplitude`).
-   pure function chart_values(alpha, beta, f, physical, status, per_second, amplitude, omega) result(v)
+   pure function chart_values(alpha, beta, f, physical, status, per_second, amplitude, omega, need) result(v)
       real(wp), intent(in) :: alpha, beta  !! the grid point
       type(floquet_t), intent(in) :: f  !! Floquet data of the point
       logical, intent(in) :: physical   !! (α, β) inside the physical domain
@@ -195,9 +259,12 @@ contains
       real(wp), intent(in), optional :: per_second  !! ω/π
       real(wp), intent(in), optional :: amplitude   !! a (m), `point_amplitude`
       real(wp), intent(in), optional :: omega       !! ω (rad/s) of a chart over (a, ω)
+      !> what was computed (`columns_need`): below need_growth the columns of λ, μ and ln|S|
+      !> are left at 0 (not written)
+      integer, intent(in), optional :: need
       real(wp) :: v(n_chart_columns)
       real(wp) :: s, estimate
-      logical :: overflow
+      logical :: overflow, growth
       s = f%trace%value
       overflow = f%trace%overflow .or. abs(s) > clamp_magnitude
       if (overflow) s = sign(clamp_magnitude, s)
@@ -212,14 +279,22 @@ contains
       v(col_s) = s
       v(col_stable) = merge(1.0_wp, 0.0_wp, f%stable)
       if (f%marginal) v(col_stable) = 0.5_wp
-      v(col_lambda_max) = min(largest_multiplier_modulus(f), clamp_magnitude)
-      v(col_mu) = f%exponent + 0.0_wp  ! no "-0.0" in the file
-      v(col_log10_abs_s) = max(f%trace%log_abs/log(10.0_wp), log10_floor)
+      growth = .true.
+      if (present(need)) growth = need >= need_growth
+      if (growth) then
+         v(col_lambda_max) = min(largest_multiplier_modulus(f), clamp_magnitude)
+         v(col_mu) = f%exponent + 0.0_wp  ! no "-0.0" in the file
+         v(col_log10_abs_s) = max(f%trace%log_abs/log(10.0_wp), log10_floor)
+      else
+         v(col_lambda_max) = 0.0_wp
+         v(col_mu) = 0.0_wp
+         v(col_log10_abs_s) = 0.0_wp
+      end if
       v(col_overflow) = merge(1.0_wp, 0.0_wp, overflow)
       v(col_physical) = merge(1.0_wp, 0.0_wp, physical)
       v(col_stable_paper) = merge(1.0_wp, 0.0_wp, f%stable_paper)
       v(col_mu_per_s) = 0.0_wp
-      if (present(per_second)) v(col_mu_per_s) = v(col_mu)*per_second + 0.0_wp
+      if (present(per_second) .and. growth) v(col_mu_per_s) = v(col_mu)*per_second + 0.0_wp
       v(col_error_estimate) = min(estimate, clamp_magnitude)
       v(col_status) = real(status, wp)
    end function chart_values
@@ -242,13 +317,15 @@ contains
 
    !> One text line of the columns `ids` of a point's values `v` (`chart_values`), each in
    !> its column's style; alpha and beta from `alpha_text`, `beta_text` when at hand (a
-   !> chart formats each grid value once, not once per point). No allocation.
-   pure subroutine chart_line(ids, v, line, alpha_text, beta_text)
+   !> chart formats each grid value once, not once per point). No allocation. With
+   !> `length`, the characters after it are left as they were (not blanked).
+   pure subroutine chart_line(ids, v, line, alpha_text, beta_text, length)
       integer, intent(in) :: ids(:)  !! the columns to write
       real(wp), intent(in) :: v(n_chart_columns)  !! every column's value
-      character(len=chart_line_length), intent(out) :: line  !! the line, blank-padded
+      character(len=chart_line_length), intent(inout) :: line  !! the line (blank-padded without `length`)
       character(len=23), intent(in), optional :: alpha_text  !! put_es(alpha, 16)
       character(len=23), intent(in), optional :: beta_text   !! put_es(beta, 16)
+      integer, intent(out), optional :: length  !! characters written
       integer :: k, pos
       pos = 0
       do k = 1, size(ids)
@@ -266,7 +343,11 @@ contains
             call put_value(chart_styles(ids(k)), v(ids(k)), line, pos)
          end if
       end do
-      line(pos + 1:) = ""
+      if (present(length)) then
+         length = pos
+      else
+         line(pos + 1:) = ""
+      end if
    end subroutine chart_line
 
    !> Header lines of a chart or points file: the common header, the method, one line per
@@ -278,7 +359,8 @@ contains
       character(len=:), allocatable :: lines(:)
       type(column_t) :: table(n_chart_columns)
       character(len=:), allocatable :: per_column(:), placeholder
-      character(len=400) :: text(n_chart_columns + 3)
+      character(len=400) :: text(2*n_chart_columns + 3)
+      character(len=:), allocatable :: accuracy
       integer :: k, n
       table = chart_columns(scene)
       per_column = column_lines(table, ids)
@@ -287,7 +369,18 @@ contains
       do k = 1, size(per_column)
          text(n + k) = per_column(k)
       end do
-      n = n + size(per_column) + 1
+      n = n + size(per_column)
+      do k = 1, size(ids)
+         accuracy = accuracy_line(scene, ids(k), ids)
+         if (len(accuracy) == 0) cycle
+         n = n + 1
+         text(n) = accuracy
+      end do
+      if (columns_need(ids) == need_nothing) then
+         n = n + 1
+         text(n) = "accuracy: no trace is computed (the columns written need none)"
+      end if
+      n = n + 1
       text(n) = "status 2 rows (placeholders, not values):"
       do k = 1, size(ids)
          if (table(ids(k))%keep_on_failure .or. ids(k) == col_status) cycle
@@ -302,7 +395,7 @@ contains
    end function chart_header
 
    !> Floquet data of one point; `error` only when the point failed.
-   subroutine evaluate_point(scene, alpha, beta, f, error, status, epsilon)
+   subroutine evaluate_point(scene, alpha, beta, f, error, status, epsilon, ids)
       type(scene_t), intent(in) :: scene  !! the scene (model, method, damping)
       real(wp), intent(in) :: alpha, beta  !! the point
       type(floquet_t), intent(out) :: f  !! its Floquet data
@@ -311,21 +404,31 @@ contains
       integer, intent(out), optional :: status
       !> the point's damping (a chart over (a, ω): κπ/ω); default the scene's
       real(wp), intent(in), optional :: epsilon
-      type(trace_t) :: tr
+      !> the columns written: only what they need is computed (`columns_need`); default all of S
+      integer, intent(in), optional :: ids(:)
+      type(trace_t) :: tr(1)
+      logical :: failed(1), inaccurate(1)
       real(wp) :: damping
+      integer :: need
+      logical :: paper
       damping = scene%epsilon
       if (present(epsilon)) damping = epsilon
       if (present(status)) status = status_ok
-      call monodromy_trace(hill_model_t(scene%model, alpha, beta, damping), scene%method, tr, error)
-      if (allocated(error)) then
-         if (error%code /= err_accuracy) then
-            if (present(status)) status = status_failed
-            return
-         end if
-         deallocate (error)
-         if (present(status)) status = status_roundoff
+      need = need_trace
+      paper = .false.
+      if (present(ids)) then
+         need = columns_need(ids)
+         paper = columns_paper(ids)
       end if
-      f = floquet_from_trace(tr, damping, scene%method%tolerance)
+      call monodromy_trace_batch(hill_model_t(scene%model, alpha, 0.0_wp, damping), [beta], scene%method, tr, &
+                                 failed, error, inaccurate=inaccurate, need=need, paper=paper)
+      if (failed(1)) then
+         if (present(status)) status = status_failed
+         return
+      end if
+      if (allocated(error)) deallocate (error)
+      if (inaccurate(1) .and. present(status)) status = status_roundoff
+      f = floquet_from_trace(tr(1), damping, scene%method%tolerance)
    end subroutine evaluate_point
 
    !> Count the failed points of a task and name the first: err_points_failed, after the

@@ -193,10 +193,11 @@ contains
             line(pos + 1:pos + 3) = "0.5"
             pos = pos + 3
          else if (x < 0.0_wp) then
-            line(pos + 1:pos + 2) = "-"//achar(iachar("0") + min(9, nint(-x)))
+            ! flags are small whole numbers: int(x + 0.5) rounds them without a library call
+            line(pos + 1:pos + 2) = "-"//achar(iachar("0") + min(9, int(-x + 0.5_wp)))
             pos = pos + 2
          else
-            line(pos + 1:pos + 1) = achar(iachar("0") + min(9, nint(x)))
+            line(pos + 1:pos + 1) = achar(iachar("0") + min(9, int(x + 0.5_wp)))
             pos = pos + 1
          end if
       case (style_integer)

@@ -305,7 +305,11 @@ contains
             file%failure = "the file is not open"
          else
             call set_errno(0)
-            written = c_fwrite(line//new_line("a"), 1_c_size_t, int(len(line) + 1, c_size_t), file%stream)
+            ! the line and its new line in two calls to the buffered stream (line//new_line
+            ! would copy a chart's whole block of rows)
+            written = c_fwrite(line, 1_c_size_t, int(len(line), c_size_t), file%stream)
+            if (written == int(len(line), c_size_t)) written = written + &
+               c_fwrite(new_line("a"), 1_c_size_t, 1_c_size_t, file%stream)
             if (written /= int(len(line) + 1, c_size_t)) then
                file%failure = errno_text()
             else
@@ -317,21 +321,28 @@ contains
          file%failure//" (the file is left as it was)")
    end subroutine write_text
 
-   !> `lines` (each trimmed) joined by new lines, after a leading new line if `separate`,
-   !> without a final one: a block of rows written by one `write_text` (one write per line
-   !> would cost more than a chart point of method auto). With `breaks`, one more new line
-   !> (a blank line: a new gnuplot block) before each line j where breaks(j).
-   pure function joined_lines(lines, separate, breaks) result(text)
+   !> `lines` (each trimmed, or cut at `lengths`) joined by new lines, after a leading new
+   !> line if `separate`, without a final one: a block of rows written by one `write_text`
+   !> (one write per line would cost more than a chart point of method auto). With
+   !> `breaks`, one more new line (a blank line: a new gnuplot block) before each line j
+   !> where breaks(j).
+   pure function joined_lines(lines, separate, breaks, lengths) result(text)
       character(len=*), intent(in) :: lines(:)  !! the rows
       logical, intent(in) :: separate  !! start with a new line (a blank line before the block)
       logical, intent(in), optional :: breaks(:)  !! a blank line before line j (size of lines)
+      !> the length of each row (its text is lines(j)(1:lengths(j))); default len_trim
+      integer, intent(in), optional :: lengths(:)
       character(len=:), allocatable :: text
       integer :: j, n, pos, total
       total = merge(1, 0, separate) + max(size(lines) - 1, 0)
       if (present(breaks)) total = total + count(breaks)
-      do j = 1, size(lines)
-         total = total + len_trim(lines(j))
-      end do
+      if (present(lengths)) then
+         total = total + sum(lengths)
+      else
+         do j = 1, size(lines)
+            total = total + len_trim(lines(j))
+         end do
+      end if
       allocate (character(len=total) :: text)
       pos = 0
       if (separate) then
@@ -349,7 +360,11 @@ contains
                pos = pos + 1
             end if
          end if
-         n = len_trim(lines(j))
+         if (present(lengths)) then
+            n = lengths(j)
+         else
+            n = len_trim(lines(j))
+         end if
          text(pos + 1:pos + n) = lines(j)(1:n)
          pos = pos + n
       end do

@@ -16,8 +16,8 @@ module hillstab_batch_task_chart
    use hillstab_core_text, only: format_es, real_text, integer_text
    use hillstab_hill_coefficient, only: hill_model_t, in_physical_domain
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace
-   use hillstab_integrate_monodromy, only: monodromy_trace_batch, batch_plan_t, prepare_batch
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict
+   use hillstab_integrate_monodromy, only: monodromy_trace_batch, batch_plan_t, prepare_batch, need_verdict
    use hillstab_batch_scene, only: scene_t, task_t, open_scene_output
    use hillstab_batch_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail, group_present
@@ -26,7 +26,7 @@ module hillstab_batch_task_chart
    use hillstab_hill_models, only: model_physical_alpha
    use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point, grid_size_text
    use hillstab_batch_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, chart_header, &
-      point_amplitude, &
+      point_amplitude, columns_need, columns_paper, &
       scene_chart_columns, check_method_runs, warn_inaccurate, failed_points_error, chart_line_length, evaluate_point, &
       header_bytes, text_row_bytes, binary_row_bytes
    use hillstab_batch_columns, only: columns_text
@@ -168,7 +168,7 @@ contains
       character(len=23), allocatable :: beta_texts(:)
       logical :: stopped, stop_now
       character(len=chart_line_length), allocatable :: block_lines(:, :, :)
-      integer, allocatable :: block_status(:, :, :), statuses(:), ids(:)
+      integer, allocatable :: block_status(:, :, :), statuses(:), ids(:), block_lengths(:, :, :), lengths(:)
       real(wp), allocatable :: block_values(:, :, :, :), values(:, :)
       integer(int64) :: n_inaccurate, n_failed
       real(wp) :: first_inaccurate(2), first_failed(2)
@@ -211,7 +211,7 @@ contains
          group = 8*max_threads()
          n_groups = (n_alpha + group - 1)/group
          allocate (block_lines(n_beta, group, 0:1), block_status(n_beta, group, 0:1), &
-                   block_values(size(ids), n_beta, group, 0:1), stat=alloc_status)
+                   block_values(size(ids), n_beta, group, 0:1), block_lengths(n_beta, group, 0:1), stat=alloc_status)
          if (alloc_status /= 0) then
             call out_of_memory()
             return
@@ -229,6 +229,7 @@ contains
                do i = (g - 2)*group + 1, min(n_alpha, (g - 1)*group)
                   alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i)
                   call finish_row(i, alpha, block_lines(:, i - (g - 2)*group, mod(g - 1, 2)), &
+                     block_lengths(:, i - (g - 2)*group, mod(g - 1, 2)), &
                      block_values(:, :, i - (g - 2)*group, mod(g - 1, 2)), block_status(:, i - (g - 2)*group, mod(g - 1, 2)))
                   if (stopped) exit
                end do
@@ -239,6 +240,7 @@ contains
                do i = (g - 1)*group + 1, min(n_alpha, g*group)
                   alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i)
                   call compute_row(scene, ids, alpha, all_betas, block_lines(:, i - (g - 1)*group, mod(g, 2)), &
+                     block_lengths(:, i - (g - 1)*group, mod(g, 2)), &
                      block_values(:, :, i - (g - 1)*group, mod(g, 2)), block_status(:, i - (g - 1)*group, mod(g, 2)), &
                      beta_texts=beta_texts)
                end do
@@ -250,15 +252,15 @@ contains
          !$omp end parallel
       else
          ! few rows: the points of each row in parallel chunks sharing the prepared meshes
-         allocate (lines(n_beta), statuses(n_beta), values(size(ids), n_beta), stat=alloc_status)
+         allocate (lines(n_beta), lengths(n_beta), statuses(n_beta), values(size(ids), n_beta), stat=alloc_status)
          if (alloc_status /= 0) then
             call out_of_memory()
             return
          end if
          do i = 1, n_alpha
             alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i)
-            call compute_row_in_chunks(scene, ids, alpha, all_betas, lines, values, statuses, beta_texts)
-            call finish_row(i, alpha, lines, values, statuses)
+            call compute_row_in_chunks(scene, ids, alpha, all_betas, lines, lengths, values, statuses, beta_texts)
+            call finish_row(i, alpha, lines, lengths, values, statuses)
             if (stopped) exit
          end do
       end if
@@ -276,17 +278,18 @@ contains
             "cannot be allocated (out of memory); lower n_beta or the number of threads (OMP_NUM_THREADS)")
       end subroutine out_of_memory
       !> Write a computed row (in order) and count its round-off limited and failed points.
-      subroutine finish_row(i, alpha, lines, values, statuses)
+      subroutine finish_row(i, alpha, lines, lengths, values, statuses)
          integer, intent(in) :: i
          real(wp), intent(in) :: alpha
          character(len=*), intent(in) :: lines(:)  !! text: the row's lines
+         integer, intent(in) :: lengths(:)         !! text: their lengths
          real(wp), intent(in) :: values(:, :)      !! binary: the row's records
          integer, intent(in) :: statuses(:)
          if (scene%binary) then
             call write_records(file, values, error)
          else
             ! blocks of constant alpha, separated by one blank line (gnuplot pm3d/image)
-            call write_text(file, joined_lines(lines, i > 1), error)
+            call write_text(file, joined_lines(lines, i > 1, lengths=lengths), error)
          end if
          if (allocated(error)) then
             stopped = .true.
@@ -315,7 +318,7 @@ contains
       type(output_file_t) :: file
       type(progress_t) :: progress
       character(len=chart_line_length), allocatable :: lines(:)
-      integer, allocatable :: statuses(:), ids(:)
+      integer, allocatable :: statuses(:), ids(:), lengths(:)
       real(wp), allocatable :: values(:, :), alphas(:), betas(:)
       type(floquet_t) :: f
       type(error_t), allocatable :: cause
@@ -337,7 +340,8 @@ contains
          call discard_output(file)
          return
       end if
-      allocate (lines(n_omega), statuses(n_omega), values(size(ids), n_omega), alphas(n_omega), betas(n_omega))
+      allocate (lines(n_omega), lengths(n_omega), statuses(n_omega), values(size(ids), n_omega), alphas(n_omega), &
+                betas(n_omega))
       n_failed = 0
       n_inaccurate = 0
       call progress_begin(progress, int(n_a, int64)*n_omega, quiet)
@@ -350,7 +354,7 @@ contains
             alphas(j) = model_physical_alpha(scene%model, p)
             betas(j) = physical_beta(p)
             epsilon = physical_epsilon(p)
-            call evaluate_point(scene, alphas(j), betas(j), f, cause, statuses(j), epsilon)
+            call evaluate_point(scene, alphas(j), betas(j), f, cause, statuses(j), epsilon, ids)
             if (statuses(j) == status_failed) then
                v = failed_values(alphas(j), betas(j), in_physical_domain(alphas(j), betas(j)), p%a, p%omega)
             else
@@ -358,13 +362,13 @@ contains
                                 p%omega/pi, p%a, p%omega)
             end if
             values(:, j) = v(ids)
-            call chart_line(ids, v, lines(j))
+            call chart_line(ids, v, lines(j), length=lengths(j))
          end do
          !$omp end parallel do
          if (scene%binary) then
             call write_records(file, values, error)
          else
-            call write_text(file, joined_lines(lines, i > 1), error)
+            call write_text(file, joined_lines(lines, i > 1, lengths=lengths), error)
          end if
          if (allocated(error)) exit
          if (any(statuses == status_roundoff)) then
@@ -395,11 +399,12 @@ contains
 
    !> Text lines or binary records (and statuses) of the chart points (α, β_j) of one row
    !> or part of a row, with the columns `ids`.
-   subroutine compute_row(scene, ids, alpha, betas, lines, values, statuses, plan, beta_texts)
+   subroutine compute_row(scene, ids, alpha, betas, lines, lengths, values, statuses, plan, beta_texts)
       type(scene_t), intent(in) :: scene
       integer, intent(in) :: ids(:)  !! the columns (hillstab_batch_chart_columns)
       real(wp), intent(in) :: alpha, betas(:)
-      character(len=*), intent(inout) :: lines(:)  !! text format: one line a point
+      character(len=chart_line_length), intent(inout) :: lines(:)  !! text format: one line a point
+      integer, intent(out) :: lengths(:)           !! text format: the length of each line
       real(wp), intent(inout) :: values(:, :)      !! binary format: (columns, points)
       !> status_ok, status_roundoff (computed only to the round-off level) or status_failed
       integer, intent(out) :: statuses(:)
@@ -412,13 +417,15 @@ contains
       type(hill_model_t) :: row
       real(wp) :: v(n_chart_columns), per_second, a
       logical :: failed(size(betas)), inaccurate(size(betas))
-      integer :: j
+      integer :: j, need
+      need = columns_need(ids)
       ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
       ! when the scene knows ω)
       per_second = 0.0_wp
       if (scene%physical) per_second = scene%pendulum%omega/pi
       row = hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon)
-      call monodromy_trace_batch(row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate)
+      call monodromy_trace_batch(row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate, &
+                                 need=need, paper=columns_paper(ids))
       alpha_text = format_es(alpha, 16)
       statuses = merge(status_roundoff, status_ok, inaccurate)
       where (failed) statuses = status_failed
@@ -428,15 +435,20 @@ contains
          if (failed(j)) then
             v = failed_values(alpha, betas(j), in_physical_domain(alpha, betas(j)), a)
          else
-            f = floquet_from_trace(traces(j), scene%epsilon, scene%method%tolerance)
-            v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second, a)
+            if (need <= need_verdict) then
+               f = floquet_verdict(traces(j), scene%epsilon, scene%method%tolerance)
+            else
+               f = floquet_from_trace(traces(j), scene%epsilon, scene%method%tolerance)
+            end if
+            v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second, a, &
+                             need=need)
          end if
          if (scene%binary) then
             values(:, j) = v(ids)
          else if (present(beta_texts)) then
-            call chart_line(ids, v, lines(j), alpha_text, beta_texts(j))
+            call chart_line(ids, v, lines(j), alpha_text, beta_texts(j), lengths(j))
          else
-            call chart_line(ids, v, lines(j), alpha_text)
+            call chart_line(ids, v, lines(j), alpha_text, length=lengths(j))
          end if
       end do
    end subroutine compute_row
@@ -450,11 +462,12 @@ contains
 
    !> `compute_row` on a whole row, split into chunks computed in parallel that share
    !> the meshes prepared for the row.
-   subroutine compute_row_in_chunks(scene, ids, alpha, betas, lines, values, statuses, beta_texts)
+   subroutine compute_row_in_chunks(scene, ids, alpha, betas, lines, lengths, values, statuses, beta_texts)
       type(scene_t), intent(in) :: scene
       integer, intent(in) :: ids(:)  !! the columns
       real(wp), intent(in) :: alpha, betas(:)
-      character(len=*), intent(inout) :: lines(:)  !! text format: one line a point
+      character(len=chart_line_length), intent(inout) :: lines(:)  !! text format: one line a point
+      integer, intent(out) :: lengths(:)           !! text format: the length of each line
       real(wp), intent(inout) :: values(:, :)      !! binary format: (columns, points)
       integer, intent(out) :: statuses(:)
       character(len=23), intent(in) :: beta_texts(:)
@@ -463,13 +476,14 @@ contains
       n = size(betas)
       chunk = max(16, n/(8*max_threads()))
       n_chunks = (n + chunk - 1)/chunk
-      call prepare_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), betas, scene%method, plan)
+      call prepare_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), betas, scene%method, plan, &
+                         columns_need(ids))
       !$omp parallel do schedule(dynamic) default(shared) private(c, first, last)
       do c = 1, n_chunks
          first = (c - 1)*chunk + 1
          last = min(n, c*chunk)
-         call compute_row(scene, ids, alpha, betas(first:last), lines(first:last), values(:, first:last), &
-            statuses(first:last), plan, beta_texts(first:last))
+         call compute_row(scene, ids, alpha, betas(first:last), lines(first:last), lengths(first:last), &
+            values(:, first:last), statuses(first:last), plan, beta_texts(first:last))
       end do
       !$omp end parallel do
    end subroutine compute_row_in_chunks
@@ -521,16 +535,19 @@ contains
       character(len=:), allocatable, intent(out) :: text  !! the lines, no final new line
       integer, intent(out) :: statuses(first:last)  !! per point
       character(len=chart_line_length), allocatable :: lines(:)
+      integer, allocatable :: lengths(:)
       real(wp), allocatable :: values(:, :)
       real(wp) :: alpha
-      allocate (lines(self%grid%n_beta), values(size(self%ids), self%grid%n_beta))
+      allocate (lines(self%grid%n_beta), lengths(self%grid%n_beta), values(size(self%ids), self%grid%n_beta))
       alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, self%grid%n_alpha, unit)
       if (rows_in_parallel(self%grid)) then
-         call compute_row(scene, self%ids, alpha, self%betas, lines, values, statuses, beta_texts=self%beta_texts)
+         call compute_row(scene, self%ids, alpha, self%betas, lines, lengths, values, statuses, &
+                          beta_texts=self%beta_texts)
       else
-         call compute_row_in_chunks(scene, self%ids, alpha, self%betas, lines, values, statuses, self%beta_texts)
+         call compute_row_in_chunks(scene, self%ids, alpha, self%betas, lines, lengths, values, statuses, &
+                                    self%beta_texts)
       end if
-      text = joined_lines(lines, unit > 1)
+      text = joined_lines(lines, unit > 1, lengths=lengths)
    end subroutine chart_unit_text
 
    !> The checks and the header of `chart_run`.

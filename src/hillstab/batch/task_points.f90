@@ -154,7 +154,7 @@ contains
          beta = self%points(2, k)
          a = 0.0_wp
          if (scene%physical) a = point_amplitude(scene, k, alpha, beta)
-         call evaluate_point(scene, alpha, beta, f, cause, statuses(k))
+         call evaluate_point(scene, alpha, beta, f, cause, statuses(k), ids=ids)
          if (statuses(k) == status_failed) then
             v = failed_values(alpha, beta, in_physical_domain(alpha, beta), a)
          else

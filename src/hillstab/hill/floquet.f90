@@ -13,7 +13,7 @@ module hillstab_hill_floquet
    use hillstab_hill_transfer, only: trace_t, trace_from_value
    implicit none
    private
-   public :: floquet_t, floquet_from_trace, floquet_from_value, multipliers, largest_multiplier_modulus
+   public :: floquet_t, floquet_from_trace, floquet_verdict, floquet_from_value, multipliers, largest_multiplier_modulus
 
    !> Floquet data of the swing x over one radial period (2 units of τ).
    type :: floquet_t
@@ -36,30 +36,23 @@ contains
    !> Floquet data from the trace of the (χ-)monodromy and the damping ε.
    !> `marginal` is set when the trace has an error estimate e ≥ 0 (exact methods) and
    !> ||S| − 2 cosh ε| ≤ max(e, tolerance) max(1, |S|): the error bound of S, on the scale of
-   !> `tolerance`, reaches across the stability threshold.
+   !> `tolerance`, reaches across the stability threshold (always when e ≥ 1).
    pure function floquet_from_trace(tr, epsilon, tolerance) result(f)
       type(trace_t), intent(in) :: tr  !! trace of the (chi-)monodromy, with ln|S| and its error estimate
       real(wp), intent(in) :: epsilon  !! damping ε ≥ 0
       !> the tolerance S was computed to (relative to max(1, |S|)); default 0: the estimate alone
       real(wp), intent(in), optional :: tolerance
       type(floquet_t) :: f
-      real(wp) :: s, log_growth, half, bound
-      f%trace = tr
-      f%epsilon = epsilon
+      real(wp) :: s, log_growth, half
+      f = floquet_verdict(tr, epsilon, tolerance)
       s = tr%value
       if (.not. tr%overflow .and. abs(s) <= 2.0_wp) then
          half = 0.5_wp*s
          f%rotation = acos(half)
          f%log_modulus = -epsilon
          f%argument = [f%rotation, -f%rotation]
-         log_growth = 0.0_wp
       else
-         ! ln|λ_max| of χ = arccosh(|S|/2) = ln((|S| + √(S² − 4))/2); ≈ ln|S| for huge |S|
-         if (tr%log_abs > 0.5_wp*log_huge) then
-            log_growth = tr%log_abs + log1p_small(-exp(-2.0_wp*tr%log_abs))
-         else
-            log_growth = acosh(0.5_wp*abs(s))
-         end if
+         log_growth = growth_of(tr)
          f%rotation = 0.0_wp
          f%log_modulus = [log_growth - epsilon, -log_growth - epsilon]
          if (s > 0.0_wp) then
@@ -69,18 +62,54 @@ contains
          end if
       end if
       f%exponent = 0.5_wp*f%log_modulus(1)
+   end function floquet_from_trace
+
+   !> The verdicts alone of `floquet_from_trace` (`stable`, `stable_paper`, `marginal`, the
+   !> trace and ε; the multipliers left at zero): what a file of verdicts needs, without
+   !> the inverse trigonometric and hyperbolic functions of the multipliers.
+   pure function floquet_verdict(tr, epsilon, tolerance) result(f)
+      type(trace_t), intent(in) :: tr  !! trace of the (chi-)monodromy, with its error estimate
+      real(wp), intent(in) :: epsilon  !! damping ε ≥ 0
+      !> the tolerance S was computed to (relative to max(1, |S|)); default 0: the estimate alone
+      real(wp), intent(in), optional :: tolerance
+      type(floquet_t) :: f
+      real(wp) :: s, bound
+      f%trace = tr
+      f%epsilon = epsilon
+      s = tr%value
       if (epsilon > 0.0_wp) then
-         f%stable = log_growth < epsilon
+         if (.not. tr%overflow .and. abs(s) <= 2.0_wp) then
+            f%stable = 0.0_wp < epsilon
+         else
+            f%stable = growth_of(tr) < epsilon
+         end if
       else
          f%stable = .not. tr%overflow .and. abs(s) < 2.0_wp
       end if
       f%stable_paper = .not. tr%overflow .and. abs(s) <= 2.0_wp
-      if (tr%error_estimate >= 0.0_wp .and. .not. tr%overflow .and. epsilon < log_huge) then
+      if (tr%error_estimate >= 1.0_wp .and. .not. tr%overflow) then
+         ! an error bound of the order of S itself decides nothing
+         f%marginal = .true.
+      else if (tr%error_estimate >= 0.0_wp .and. .not. tr%overflow .and. epsilon < log_huge) then
          bound = tr%error_estimate
          if (present(tolerance)) bound = max(bound, tolerance)
-         f%marginal = abs(abs(s) - 2.0_wp*cosh(epsilon)) <= bound*max(1.0_wp, abs(s))
+         if (epsilon > 0.0_wp) then
+            f%marginal = abs(abs(s) - 2.0_wp*cosh(epsilon)) <= bound*max(1.0_wp, abs(s))
+         else
+            f%marginal = abs(abs(s) - 2.0_wp) <= bound*max(1.0_wp, abs(s))
+         end if
       end if
-   end function floquet_from_trace
+   end function floquet_verdict
+
+   !> ln|λ_max| of χ for |S| ≥ 2: arccosh(|S|/2) = ln((|S| + √(S² − 4))/2); ≈ ln|S| for huge |S|.
+   pure real(wp) function growth_of(tr) result(log_growth)
+      type(trace_t), intent(in) :: tr
+      if (tr%log_abs > 0.5_wp*log_huge) then
+         log_growth = tr%log_abs + log1p_small(-exp(-2.0_wp*tr%log_abs))
+      else
+         log_growth = acosh(0.5_wp*abs(tr%value))
+      end if
+   end function growth_of
 
    !> Floquet data from a finite trace value.
    pure function floquet_from_value(s, epsilon) result(f)

@@ -51,15 +51,23 @@ module hillstab_hill_transfer
    !> Beyond this √|z| the hyperbolic functions are returned scaled by e^{−√|z|}.
    real(wp), parameter :: scale_limit = 20.0_wp
    !> Highest degree in z of the Taylor polynomials of `cos_sinc_taylor`.
-   integer, parameter :: taylor_max_degree = 10
+   integer, parameter :: taylor_max_degree = 16
    !> Taylor coefficients of C = cos √z = Σ (−z)^k/(2k)! …
-   real(wp), parameter :: cos_taylor(0:taylor_max_degree) = [1.0_wp, -1.0_wp/2, 1.0_wp/24, -1.0_wp/720, &
-      1.0_wp/40320, -1.0_wp/3628800, 1.0_wp/479001600.0_wp, -1.0_wp/87178291200.0_wp, 1.0_wp/20922789888000.0_wp, &
-      -1.0_wp/6402373705728000.0_wp, 1.0_wp/2432902008176640000.0_wp]
+   real(wp), parameter :: cos_taylor(0:taylor_max_degree) = [ &
+      1.0_wp/1.0_wp, -1.0_wp/2.0_wp, 1.0_wp/24.0_wp, -1.0_wp/720.0_wp, 1.0_wp/40320.0_wp, &
+      -1.0_wp/3628800.0_wp, 1.0_wp/479001600.0_wp, -1.0_wp/87178291200.0_wp, 1.0_wp/20922789888000.0_wp, &
+      -1.0_wp/6402373705728000.0_wp, 1.0_wp/2432902008176640000.0_wp, -1.0_wp/1124000727777607680000.0_wp, &
+      1.0_wp/620448401733239439360000.0_wp, -1.0_wp/403291461126605635584000000.0_wp, &
+      1.0_wp/304888344611713860501504000000.0_wp, -1.0_wp/265252859812191058636308480000000.0_wp, &
+      1.0_wp/263130836933693530167218012160000000.0_wp]
    !> … and of S = sin √z/√z = Σ (−z)^k/(2k+1)!
-   real(wp), parameter :: sinc_taylor(0:taylor_max_degree) = [1.0_wp, -1.0_wp/6, 1.0_wp/120, -1.0_wp/5040, &
-      1.0_wp/362880, -1.0_wp/39916800, 1.0_wp/6227020800.0_wp, -1.0_wp/1307674368000.0_wp, &
-      1.0_wp/355687428096000.0_wp, -1.0_wp/121645100408832000.0_wp, 1.0_wp/51090942171709440000.0_wp]
+   real(wp), parameter :: sinc_taylor(0:taylor_max_degree) = [ &
+      1.0_wp/1.0_wp, -1.0_wp/6.0_wp, 1.0_wp/120.0_wp, -1.0_wp/5040.0_wp, 1.0_wp/362880.0_wp, &
+      -1.0_wp/39916800.0_wp, 1.0_wp/6227020800.0_wp, -1.0_wp/1307674368000.0_wp, 1.0_wp/355687428096000.0_wp, &
+      -1.0_wp/121645100408832000.0_wp, 1.0_wp/51090942171709440000.0_wp, &
+      -1.0_wp/25852016738884976640000.0_wp, 1.0_wp/15511210043330985984000000.0_wp, &
+      -1.0_wp/10888869450418352160768000000.0_wp, 1.0_wp/8841761993739701954543616000000.0_wp, &
+      -1.0_wp/8222838654177922817725562880000000.0_wp, 1.0_wp/8683317618811886495518194401280000000.0_wp]
 
 contains
 
@@ -296,7 +304,10 @@ contains
          return
       end if
       tr%log_abs = log(abs(t)) + log_scale
-      if (tr%log_abs < log_huge) then
+      if (log_scale == 0.0_wp) then
+         tr%value = t   ! t·e⁰, without the call
+         tr%overflow = .false.
+      else if (tr%log_abs < log_huge) then
          tr%value = t*exp(log_scale)
          tr%overflow = .false.
       else

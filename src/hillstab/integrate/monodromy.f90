@@ -28,7 +28,8 @@ module hillstab_integrate_monodromy
    use hillstab_integrate_monodromy_gsl, only: trace_gsl
    use hillstab_integrate_monodromy_rk, only: trace_rk
    use hillstab_integrate_magnus, only: trace_magnus
-   use hillstab_integrate_auto, only: trace_auto, trace_auto_batch, auto_plan_t, auto_prepare
+   use hillstab_integrate_auto, only: trace_auto, trace_auto_batch, auto_plan_t, auto_prepare, trace_auto_screen
+   use hillstab_hill_floquet, only: floquet_t, floquet_verdict
    implicit none
    private
    public :: method_t, method_auto, method_formula, method_segments, method_magnus4, method_magnus6, &
@@ -36,6 +37,7 @@ module hillstab_integrate_monodromy
    public :: method_info_t, method_table, method_info, method_names_text, method_description, method_is_exact, &
       method_uses_segments, method_gives_estimate, method_batches_rows, method_cost_grows, method_pieces, &
       max_integrated_magnitude
+   public :: need_nothing, need_verdict, need_growth, need_trace, verdict_is_certain, screen_tolerance, screen_safety
    public :: monodromy_segmented, trace_segmented, swing_monodromy, monodromy_trace, monodromy_trace_batch
    public :: batch_plan_t, prepare_batch, max_segments
 
@@ -56,6 +58,23 @@ module hillstab_integrate_monodromy
    !> √(|α| + |β|): beyond this |α| + |β| one point would take seconds to minutes (auto
    !> stops at its own step limit; formula and segments cost the same at any magnitude).
    real(wp), parameter :: max_integrated_magnitude = 1.0e8_wp
+
+   !> What a caller needs of the traces of a batch (`monodromy_trace_batch`; a chart asks for
+   !> the most any of its columns needs). The exact methods do only that work: a verdict is
+   !> settled by a cheap screening pass wherever |S| lies beyond the screen's error bound from
+   !> the threshold, and only the other points are computed to the tolerance.
+   integer, parameter :: need_nothing = 0  !! no trace at all (columns of the grid only)
+   integer, parameter :: need_verdict = 1  !! the side of the stability threshold |S| = 2 cosh ε
+   !> the verdict, and S to the tolerance wherever |S| < 2 is not certain (λ_max, μ: exact
+   !> where |S| < 2, from S elsewhere)
+   integer, parameter :: need_growth = 2
+   integer, parameter :: need_trace = 3    !! S to the tolerance at every point
+   !> The tolerance of the screening pass of the exact methods other than auto (auto has
+   !> its own, `auto_screen_tolerance`).
+   real(wp), parameter :: screen_tolerance = 1.0e-6_wp
+   !> Factor on the error estimate of those methods' screening pass, so that the bound
+   !> stands also where the estimate is not yet asymptotic (auto's screen returns a bound).
+   real(wp), parameter :: screen_safety = 64.0_wp
 
    !> What a method is and offers (one row of `method_table`; its code is its row).
    type :: method_info_t
@@ -104,14 +123,46 @@ contains
 
    !> Prepare what batches of the points (model%kind, model%alpha, β_j, model%epsilon)
    !> can share; pass the plan to `monodromy_trace_batch`.
-   subroutine prepare_batch(model, betas, method, plan)
+   subroutine prepare_batch(model, betas, method, plan, need)
       type(hill_model_t), intent(in) :: model  !! kind, alpha and epsilon of the batch (beta ignored)
       real(wp), intent(in) :: betas(:)  !! the betas of the batch
       type(method_t), intent(in) :: method  !! how the traces will be computed
       type(batch_plan_t), intent(out) :: plan  !! what the batches can share
+      integer, intent(in), optional :: need  !! what the batches will need (default need_trace)
+      logical :: screen
+      screen = .false.
+      if (present(need)) screen = need < need_trace
       if (method%kind == method_auto) call auto_prepare(model%kind, model%alpha, model%epsilon, betas, &
-                                                       method%tolerance, plan%auto)
+                                                       method%tolerance, plan%auto, screen)
    end subroutine prepare_batch
+
+   !> Whether the trace `tr`, with its error bound max(error_estimate, tolerance)·max(1, |S|),
+   !> settles what `need` asks: for need_verdict the side of |S| = 2 cosh ε (and of |S| = 2
+   !> too with `paper`, the criterion of the paper); for need_growth that |S| < 2, where
+   !> λ_max = e^{−ε} and μ = −ε/2 whatever the value of S. Never for need_trace.
+   pure logical function verdict_is_certain(tr, epsilon, tolerance, need, paper) result(certain)
+      type(trace_t), intent(in) :: tr  !! a trace with its error estimate (relative to max(1, |S|))
+      real(wp), intent(in) :: epsilon    !! damping ε
+      real(wp), intent(in) :: tolerance  !! the tolerance S is asked to
+      integer, intent(in) :: need        !! need_verdict or need_growth
+      logical, intent(in) :: paper       !! also the side of |S| = 2 (need_verdict)
+      type(floquet_t) :: f
+      real(wp) :: bound
+      certain = .false.
+      ! no estimate, or one of the order of S itself (the screen's difference of two
+      ! values of opposite sign, or overflowing ones): nothing is settled
+      if (tr%error_estimate < 0.0_wp .or. tr%error_estimate >= 1.0_wp .or. tr%overflow) return
+      bound = max(tr%error_estimate, tolerance)*max(1.0_wp, abs(tr%value))
+      select case (need)
+      case (need_verdict)
+         f = floquet_verdict(tr, epsilon, tolerance)
+         certain = .not. f%marginal
+         if (paper .and. epsilon > 0.0_wp .and. .not. tr%overflow) certain = certain .and. &
+            abs(abs(tr%value) - 2.0_wp) > bound
+      case (need_growth)
+         certain = .not. tr%overflow .and. abs(tr%value) < 2.0_wp - bound
+      end select
+   end function verdict_is_certain
 
    !> The row of a method code (a row named "unknown", offering nothing, for any other code).
    pure function method_info(kind) result(info)
@@ -265,11 +316,13 @@ contains
    !> auto shares its meshes and coefficient values across the batch (much faster than
    !> point by point); the other methods go point by point. `failed(j)` marks points that
    !> could not be computed; `error` describes the first of them.
-   subroutine monodromy_trace_batch(model, betas, method, traces, failed, error, stats, plan, inaccurate)
+   recursive subroutine monodromy_trace_batch(model, betas, method, traces, failed, error, stats, plan, inaccurate, need, paper)
       type(hill_model_t), intent(in) :: model  !! kind, alpha and epsilon of the batch (beta ignored)
       real(wp), intent(in) :: betas(:)  !! the betas of the batch
       type(method_t), intent(in) :: method  !! method and its settings
-      type(trace_t), intent(out) :: traces(size(betas))  !! S of each beta
+      !> S of each beta (where a verdict settled the need: the screening value, its bound as
+      !> error estimate)
+      type(trace_t), intent(out) :: traces(size(betas))
       logical, intent(out) :: failed(size(betas))  !! true where no value could be computed
       type(error_t), allocatable, intent(out) :: error  !! the first failure; unallocated when none failed
       type(work_stats_t), intent(out), optional :: stats  !! work done over the batch
@@ -277,14 +330,77 @@ contains
       !> computed, but the tolerance is below the round-off level there (err_accuracy): the
       !> trace is the best double precision allows; not counted in `failed`
       logical, intent(out), optional :: inaccurate(size(betas))
+      !> what is needed of the traces (need_nothing … need_trace, default need_trace; only
+      !> the exact methods do less than need_trace)
+      integer, intent(in), optional :: need
+      !> need_verdict: the side of |S| = 2 too (the paper's criterion), when damped
+      logical, intent(in), optional :: paper
       type(work_stats_t) :: work, part
-      logical :: reached(size(betas)), roundoff(size(betas))
+      logical :: reached(size(betas)), roundoff(size(betas)), settled(size(betas))
       type(error_t), allocatable :: point_error
       type(hill_model_t) :: point
-      integer :: j
+      type(method_t) :: screening
+      type(trace_t), allocatable :: rest(:)
+      logical, allocatable :: rest_failed(:), rest_inaccurate(:)
+      integer :: j, wanted
+      logical :: paper_side
       failed = .false.
       if (present(inaccurate)) inaccurate = .false.
       work = work_stats_t()
+      wanted = need_trace
+      if (present(need)) wanted = need
+      paper_side = .false.
+      if (present(paper)) paper_side = paper
+      if (wanted == need_nothing) then
+         traces = trace_t()
+         if (present(stats)) stats = work
+         return
+      end if
+      if (wanted < need_trace .and. method_is_exact(method%kind)) then
+         ! the screening pass; the points it settles are done, the others computed in full
+         settled = .false.
+         if (method%kind == method_auto) then
+            if (present(plan)) then
+               call trace_auto_screen(model%kind, model%alpha, model%epsilon, betas, traces, work, point_error, &
+                                      plan%auto)
+            else
+               call trace_auto_screen(model%kind, model%alpha, model%epsilon, betas, traces, work, point_error)
+            end if
+            if (.not. allocated(point_error)) then
+               do j = 1, size(betas)
+                  settled(j) = verdict_is_certain(traces(j), model%epsilon, method%tolerance, wanted, paper_side)
+               end do
+            end if
+         else
+            screening = method
+            screening%tolerance = max(method%tolerance, screen_tolerance)
+            do j = 1, size(betas)
+               point = model
+               point%beta = betas(j)
+               call monodromy_trace(point, screening, traces(j), point_error, part)
+               call add_work(work, part)
+               if (allocated(point_error)) then
+                  deallocate (point_error)
+                  cycle
+               end if
+               traces(j)%error_estimate = screen_safety*traces(j)%error_estimate
+               settled(j) = verdict_is_certain(traces(j), model%epsilon, method%tolerance, wanted, paper_side)
+            end do
+         end if
+         if (all(settled)) then
+            if (present(stats)) stats = work
+            return
+         end if
+         allocate (rest(count(.not. settled)), rest_failed(count(.not. settled)), rest_inaccurate(count(.not. settled)))
+         call monodromy_trace_batch(model, pack(betas, .not. settled), method, rest, rest_failed, error, part, plan, &
+                                    rest_inaccurate)
+         call add_work(work, part)
+         traces = unpack(rest, .not. settled, traces)
+         failed = unpack(rest_failed, .not. settled, failed)
+         if (present(inaccurate)) inaccurate = unpack(rest_inaccurate, .not. settled, inaccurate)
+         if (present(stats)) stats = work
+         return
+      end if
       if (method%kind == method_auto) then
          if (present(plan)) then
             call trace_auto_batch(model%kind, model%alpha, model%epsilon, betas, method%tolerance, traces, work, &

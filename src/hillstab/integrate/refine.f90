@@ -27,7 +27,7 @@ module hillstab_integrate_refine
    public :: refinement_t, start_refinement, refine, trace_distance, roundoff_level, propagator_condition, first_step_factor, &
       next_local_tolerance
    public :: refine_more, refine_met, refine_roundoff
-   public :: sensitivity_t, accumulate_sensitivity, coefficient_level
+   public :: sensitivity_t, accumulate_sensitivity, coefficient_level, coefficient_sum, roundoff_level_plain
 
    !> Safety factor of `roundoff_level` (calibrated with method auto on β = 0,
    !> α = 9.8 … 9.86, where S = 2 exactly).
@@ -121,7 +121,21 @@ contains
       real(wp), intent(in) :: c0                !! the constant c₀ of q
       type(scaled_matrix_t), intent(in) :: m    !! the monodromy
       real(wp), intent(in) :: log_abs_s         !! ln|S|
-      real(wp) :: d0, d1, size0, size1, m12, m21, log_factor
+      real(wp) :: log_factor
+      level = coefficient_sum(acc, c0, m)
+      if (level == 0.0_wp) return
+      log_factor = m%log_scale + acc%log_unit - max(0.0_wp, log_abs_s)
+      level = epsilon(1.0_wp)*level*exp(min(log_factor, log_huge))
+   end function coefficient_level
+
+   !> |c₀ ∂S/∂c₀| + 3 |c₁ ∂S/∂c₁| of `coefficient_level` in the units of the integrals and
+   !> of the monodromy (times e^{−m%log_scale − acc%log_unit}), each term 0 where it
+   !> cancels to integration noise.
+   pure real(wp) function coefficient_sum(acc, c0, m) result(level)
+      type(sensitivity_t), intent(in) :: acc    !! the integrals over [0, 1]
+      real(wp), intent(in) :: c0                !! the constant c₀ of q
+      type(scaled_matrix_t), intent(in) :: m    !! the monodromy
+      real(wp) :: d0, d1, size0, size1, m12, m21
       m12 = m%m(1, 2)
       m21 = m%m(2, 1)
       d0 = 2.0_wp*abs(c0)*abs(m21*acc%v2 - m12*acc%u2)
@@ -131,10 +145,7 @@ contains
       level = 0.0_wp
       if (d0 > cancellation_limit*size0) level = level + coefficient_roundings_c0*d0
       if (d1 > cancellation_limit*size1) level = level + coefficient_roundings_c1*d1
-      if (level == 0.0_wp) return
-      log_factor = m%log_scale + acc%log_unit - max(0.0_wp, log_abs_s)
-      level = epsilon(1.0_wp)*level*exp(min(log_factor, log_huge))
-   end function coefficient_level
+   end function coefficient_sum
 
    !> Start a ladder for the target `tolerance`.
    pure subroutine start_refinement(ladder, tolerance)
@@ -258,6 +269,18 @@ contains
       level = factor*epsilon(1.0_wp)*sqrt(real(max(n_steps, 1), wp)) &
               *exp(min(log_peak - max(0.0_wp, log_abs_s), log_huge)) + 2.0_wp*epsilon(1.0_wp)*phase
    end function roundoff_level
+
+   !> `roundoff_level` where the propagator was never rescaled (its condition `peak` and S as
+   !> plain numbers): factor ε √N max(1, peak)/max(1, |S|) + 2 ε phase, without a logarithm
+   !> or an exponential (the screening pass of a verdict computes it at every point).
+   elemental real(wp) function roundoff_level_plain(peak, abs_s, n_steps, phase) result(level)
+      real(wp), intent(in) :: peak     !! the largest `propagator_condition` along the path
+      real(wp), intent(in) :: abs_s    !! |S|
+      integer, intent(in) :: n_steps   !! steps of the propagation
+      real(wp), intent(in) :: phase    !! bound of the phase or growth over the period (`phase_bound`)
+      level = roundoff_safety*epsilon(1.0_wp)*sqrt(real(max(n_steps, 1), wp))*max(1.0_wp, peak)/max(1.0_wp, abs_s) &
+              + 2.0_wp*epsilon(1.0_wp)*phase
+   end function roundoff_level_plain
 
    !> |S_a − S_b|/max(1, |S_a|), through ln|S| when S is large or overflows; huge when the
    !> signs of large traces differ.
