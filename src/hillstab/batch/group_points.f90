@@ -12,7 +12,7 @@ module hillstab_batch_group_points
    use hillstab_core_text, only: integer_text, real_text, lower => lower_case, read_text_line, fpe_state_t, &
       halting_off, halting_restore
    use hillstab_ffi_libc, only: is_directory, is_special_file
-   use hillstab_batch_scene_file, only: scene_file_t, fail, shortened, max_line_length
+   use hillstab_batch_scene_file, only: scene_file_t, fail, shortened, max_line_length, read_len
    use hillstab_batch_declaration, only: new_group, group_t, group_values_t, group_reader_t, variable, var_path, &
       begin_group, next_item, end_group
    use hillstab_batch_scene_checks, only: check_alpha_domain, max_magnitude, max_points
@@ -43,7 +43,7 @@ contains
       type(group_values_t), intent(out) :: values  !! the effective values
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
       logical, intent(in), optional :: optional  !! the group and its file may be missing
-      character(len=65536) :: file
+      character(len=read_len) :: file
       namelist /points/ file
       type(group_reader_t) :: reader
       call begin_group(reader, scene_file, group, optional)

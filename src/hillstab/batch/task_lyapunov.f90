@@ -30,7 +30,7 @@ module hillstab_batch_task_lyapunov
    use hillstab_pendulum_chaos, only: chaos_options_t, chaos_t, chaos_indicators_batch, chaos_integrator_id, &
       chaos_integrator_name, chaos_method_text, chaos_verdict_rule, chaos_auto, chaos_symplectic, chaos_dop853
    use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, open_scene_output, physical_summary
-   use hillstab_batch_scene_file, only: scene_file_t, fail, group_present
+   use hillstab_batch_scene_file, only: scene_file_t, fail, group_present, read_len
    use hillstab_hill_units, only: physical_t, physical_alpha, physical_beta, physical_epsilon
    use hillstab_batch_scene_checks, only: min_pendulum_beta
    use hillstab_batch_declaration, only: new_group, group_t, group_values_t, group_reader_t, variable, var_name, &
@@ -186,7 +186,7 @@ contains
       type(scene_t), intent(in) :: scene          !! the `&scene` settings
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
       type(group_t) :: group
-      character(len=65536) :: over, integrator, scheme
+      character(len=read_len) :: over, integrator, scheme
       integer :: steps_per_period, min_periods, lanes
       real(wp) :: energy_tolerance, megno_chaotic, megno_regular, megno_stop
       logical :: early_stop

@@ -34,7 +34,7 @@ module hillstab_hill_models
    public :: hill_model_t, model_info_t, model_table, model_count, model_elastic, model_mathieu, model_info
    public :: model_name, model_from_name, model_names_text, model_description, model_summary, model_alpha_domain, &
       model_physical_note, model_is_pendulum, model_has_witness
-   public :: check_model, check_model_alpha, model_alpha_valid, damping_shift
+   public :: check_model, check_model_alpha, check_model_batch, model_alpha_valid, damping_shift
    public :: hill_coefficient, segment_average, model_split, model_shape, model_shapes_from_half_sines, shape_root_mean
    public :: model_mesh_kappa, model_auto_difficulty, model_auto_amplitude
    public :: model_hill_k, model_hill_coupling, model_fourier_decay
@@ -84,6 +84,10 @@ module hillstab_hill_models
       real(wp) :: beta = 0.0_wp        !! β = gπ²/(ρω²)
       real(wp) :: epsilon = 0.0_wp     !! damping ε = κπ/ω of eq. (46)
    end type hill_model_t
+
+   !> Largest |α| and |β| of a model: beyond it Q, the grid spacings and the methods'
+   !> scalings overflow.
+   real(wp), parameter :: max_magnitude = 1.0e15_wp
 
 contains
 
@@ -221,12 +225,32 @@ contains
          return
       end if
       ! beyond these magnitudes Q, the grid spacings and the methods' scalings overflow
-      if (max(abs(model%alpha), abs(model%beta)) > 1.0e15_wp .or. model%epsilon > 100.0_wp) then
+      if (max(abs(model%alpha), abs(model%beta)) > max_magnitude .or. model%epsilon > 100.0_wp) then
          call set_error(error, err_invalid_parameter, "|alpha|, |beta| must be <= 1e15 and epsilon <= 100")
          return
       end if
       call check_model_alpha(model%kind, model%alpha, error)
    end subroutine check_model
+
+   !> `check_model` for the points (kind, α, β_j, ε) of a batch: α and ε checked once, each
+   !> β for what depends on it (finite, |β| ≤ 1e15); the error of the first failing point.
+   pure subroutine check_model_batch(kind, alpha, epsilon, betas, error)
+      integer, intent(in) :: kind              !! a model constant
+      real(wp), intent(in) :: alpha, epsilon   !! α and ε of the batch
+      real(wp), intent(in) :: betas(:)         !! the β values
+      !> err_invalid_parameter naming the value and the limit; unallocated when all are valid
+      type(error_t), allocatable, intent(out) :: error
+      integer :: j
+      if (size(betas) == 0) return
+      call check_model(hill_model_t(kind, alpha, betas(1), epsilon), error)
+      if (allocated(error)) return
+      do j = 2, size(betas)
+         if (.not. (ieee_is_finite(betas(j)) .and. abs(betas(j)) <= max_magnitude)) then
+            call check_model(hill_model_t(kind, alpha, betas(j), epsilon), error)
+            return
+         end if
+      end do
+   end subroutine check_model_batch
 
    !> Damping shift −ε²/4 of eq. (47).
    elemental real(wp) function damping_shift(epsilon)

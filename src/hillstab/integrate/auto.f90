@@ -32,7 +32,8 @@ module hillstab_integrate_auto
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_models, only: hill_model_t, check_model, model_alpha_valid, model_split, model_shape, &
+   use hillstab_hill_models, only: hill_model_t, check_model, check_model_batch, model_alpha_valid, model_split, &
+      model_shape, &
       model_shapes_from_half_sines, shape_root_mean, model_mesh_kappa, model_auto_difficulty, model_auto_amplitude
    use hillstab_hill_coefficient, only: coefficient_phase
    use hillstab_hill_transfer, only: transfer_functions, step_functions, cos_taylor, sinc_taylor, trace_t, &
@@ -67,9 +68,10 @@ module hillstab_integrate_auto
       362, 430, 512, 608, 724, 862, 1024, 1218, 1448, 1722, 2048, 2436, 2896, 3444, 4096, 4870, 5792, 6888, &
       8192, 9742, 11586, 13778, 16384, 19484, 23170, 27554, 32768, 38968, 46340, 55108, 65536, 77936, 92682, &
       110218, 131072, 155872, 185364, 220436, 262144, 262144]
-   !> What `lane_traces` computes: S and its round-off level as in every method; the same
-   !> without logarithm or exponential where the propagator was never rescaled; S alone.
-   integer, parameter :: lanes_full = 0, lanes_plain = 1, lanes_values = 2
+   !> What `lane_traces` computes: S and its round-off level (`roundoff_level` and
+   !> `coefficient_level`, their exponentials written out as plain products where the
+   !> propagator was never rescaled, the usual case); or S alone.
+   integer, parameter :: lanes_plain = 1, lanes_values = 2
    !> Lanes propagated together by `lane_traces` (work arrays of this size on the stack).
    integer, parameter :: lane_block = 64
    !> Rescale the propagator when an entry exceeds 2^rescale_exponent.
@@ -155,6 +157,29 @@ contains
       amplitude = model_auto_amplitude(kind, c0, c1)
       n = ladder_steps(base*(max(amplitude, 1.0_wp)/12.0_wp)**0.4_wp)
    end function steps_for_point
+
+   !> `steps_for_point` of every point of a batch, without a power per point: rung r of
+   !> the ladder serves the amplitudes x ≤ 12 (r/base)^2.5 (base (x/12)^0.4 ≤ r), so the
+   !> rungs' thresholds are computed once and each point's rung found among them.
+   pure subroutine steps_for_points(base, kind, c0s, c1s, ns)
+      real(wp), intent(in) :: base, c0s(:), c1s(:)
+      integer, intent(in) :: kind
+      integer, intent(out) :: ns(:)
+      real(wp) :: thresholds(size(ladder)), x
+      integer :: j, k, first
+      ! the rung of the smallest amplitude (x = 1), then the thresholds of the rungs above it
+      first = findloc(ladder, ladder_steps(base*(1.0_wp/12.0_wp)**0.4_wp), dim=1)
+      thresholds(first:) = 12.0_wp*(real(ladder(first:), wp)/base)**2.5_wp
+      do j = 1, size(c0s)
+         x = max(model_auto_amplitude(kind, c0s(j), c1s(j)), 1.0_wp)
+         k = first
+         do while (k < size(ladder))
+            if (x <= thresholds(k)) exit
+            k = k + 1
+         end do
+         ns(j) = ladder(k)
+      end do
+   end subroutine steps_for_points
 
    !> The α- and tolerance-dependent part of the step count. Measured: the smallest N
    !> meeting 1e-10 against GSL rk8pd at 1e-14 for β ∈ [−2, 12], tabulated against
@@ -256,13 +281,8 @@ contains
          call set_error(error, err_invalid_parameter, "auto: tolerance must lie in (0, 1)")
          return
       end if
-      do j = 1, size(betas)
-         call check_model(hill_model_t(kind, alpha, betas(j), epsilon), point_error)
-         if (allocated(point_error)) then
-            call move_alloc(point_error, error)
-            return
-         end if
-      end do
+      call check_model_batch(kind, alpha, epsilon, betas, error)
+      if (allocated(error)) return
       if (present(plan)) then
          if (plan%kind == kind .and. plan%alpha == alpha) cache = plan%cache
       end if
@@ -288,9 +308,7 @@ contains
          stats%n_evaluations = stats%n_evaluations + m
          return
       end if
-      do j = 1, m
-         ns(j) = steps_for_point(base, kind, c0s(j), c1s(j))
-      end do
+      call steps_for_points(base, kind, c0s, c1s, ns)
       ! the phase bound of each point, for its round-off level (hillstab_integrate_refine)
       phases = coefficient_phase(c0s, c1s, shape_root_mean(kind, alpha))
       ! first pass: S_N and S_{N/2} of all points sharing N together, in lanes
@@ -418,17 +436,14 @@ contains
       type(mesh_cache_t) :: cache
       type(error_t), allocatable :: point_error
       real(wp) :: base, q
-      real(wp), dimension(size(betas)) :: c0s, c1s, phases, floors, coarse_floors, coarser_floors
+      real(wp), dimension(size(betas)) :: c0s, c1s, phases, floors
       integer, dimension(size(betas)) :: ns
       type(trace_t) :: coarse(size(betas)), coarser(size(betas))
       integer :: j
       stats = work_stats_t()
+      call check_model_batch(kind, alpha, epsilon, betas, error)
+      if (allocated(error)) return
       do j = 1, size(betas)
-         call check_model(hill_model_t(kind, alpha, betas(j), epsilon), point_error)
-         if (allocated(point_error)) then
-            call move_alloc(point_error, error)
-            return
-         end if
          call model_split(kind, alpha, betas(j), epsilon, c0s(j), c1s(j))
       end do
       if (alpha == 0.0_wp) then
@@ -446,15 +461,10 @@ contains
          if (plan%kind == kind .and. plan%alpha == alpha) cache = plan%cache
       end if
       base = auto_base_steps(kind, alpha, auto_screen_tolerance)
-      do j = 1, size(betas)
-         ns(j) = max(screen_min_steps, steps_for_point(base, kind, c0s(j), c1s(j)))
-      end do
+      call steps_for_points(base, kind, c0s, c1s, ns)
+      ns = max(screen_min_steps, ns)
       phases = coefficient_phase(c0s, c1s, shape_root_mean(kind, alpha))
-      call lanes_pass(cache, kind, alpha, ns, c0s, c1s, phases, traces, floors, stats, mode=lanes_plain)
-      ! the coarser meshes have fewer steps and the same solutions: their round-off levels
-      ! are taken as the finest one's
-      call lanes_pass(cache, kind, alpha, ns/2, c0s, c1s, phases, coarse, coarse_floors, stats, mode=lanes_values)
-      call lanes_pass(cache, kind, alpha, ns/4, c0s, c1s, phases, coarser, coarser_floors, stats, mode=lanes_values)
+      call screen_lanes(cache, kind, alpha, ns, c0s, c1s, phases, traces, floors, coarse, coarser, stats)
       do j = 1, size(betas)
          ! differences of the order of S itself (values of opposite signs, overflow) count
          ! as 1: such a bound settles nothing, and the sum stays finite
@@ -463,6 +473,61 @@ contains
             max(1.0_wp, abs(traces(j)%value)))/8.0_wp + 3.0_wp*floors(j)
       end do
    end subroutine trace_auto_screen
+
+   !> The three passes of `trace_auto_screen`: the points grouped once by their N, each group
+   !> propagated in lanes on the meshes of N (S and its round-off level, `lanes_plain`),
+   !> N/2 and N/4 steps (S only: their round-off levels are taken as the finest one's, the
+   !> same solutions over fewer steps).
+   subroutine screen_lanes(cache, kind, alpha, n, c0s, c1s, phases, fine, floors, coarse, coarser, stats)
+      type(mesh_cache_t), intent(inout) :: cache  !! meshes of this (kind, α)
+      integer, intent(in) :: kind            !! model kind
+      real(wp), intent(in) :: alpha          !! α of the batch
+      integer, intent(in) :: n(:)            !! N of each point
+      real(wp), intent(in) :: c0s(:), c1s(:)  !! q = c₀ + c₁ w of each point
+      real(wp), intent(in) :: phases(:)      !! phase bound of each point
+      type(trace_t), intent(out) :: fine(:), coarse(:), coarser(:)  !! S on N, N/2, N/4 steps
+      real(wp), intent(out) :: floors(:)     !! round-off level of each S on N steps
+      type(work_stats_t), intent(inout) :: stats  !! steps counted
+      logical :: todo(size(n))
+      integer :: group_c(size(n))
+      real(wp) :: lane_c0(size(n)), lane_c1(size(n)), lane_floors(size(n)), lane_phases(size(n))
+      type(trace_t) :: lane_results(size(n))
+      integer :: i, k, index, m_group, level, steps
+      todo = .true.
+      do i = 1, size(n)
+         if (.not. todo(i)) cycle
+         m_group = 0
+         do k = i, size(n)
+            if (todo(k) .and. n(k) == n(i)) then
+               m_group = m_group + 1
+               group_c(m_group) = k
+               todo(k) = .false.
+            end if
+         end do
+         lane_c0(1:m_group) = c0s(group_c(1:m_group))
+         lane_c1(1:m_group) = c1s(group_c(1:m_group))
+         lane_phases(1:m_group) = phases(group_c(1:m_group))
+         do level = 0, 2
+            steps = n(i)/2**level
+            call get_mesh(cache, kind, alpha, steps, index)
+            if (level == 0) then
+               call lane_traces(cache%meshes(index), lane_c0(1:m_group), lane_c1(1:m_group), lane_phases(1:m_group), &
+                  lane_results(1:m_group), lane_floors(1:m_group), lanes_plain)
+               fine(group_c(1:m_group)) = lane_results(1:m_group)
+               floors(group_c(1:m_group)) = lane_floors(1:m_group)
+            else
+               call lane_traces(cache%meshes(index), lane_c0(1:m_group), lane_c1(1:m_group), lane_phases(1:m_group), &
+                  lane_results(1:m_group), lane_floors(1:m_group), lanes_values)
+               if (level == 1) then
+                  coarse(group_c(1:m_group)) = lane_results(1:m_group)
+               else
+                  coarser(group_c(1:m_group)) = lane_results(1:m_group)
+               end if
+            end if
+            call count_steps(stats, m_group*steps)
+         end do
+      end do
+   end subroutine screen_lanes
 
    !> S on meshes of n(j) steps for the selected points (all without `selected`), grouped by
    !> n and propagated in lanes; the meshes come from (or go into) `cache`.
@@ -477,7 +542,7 @@ contains
       real(wp), intent(inout) :: floors(:)   !! their round-off levels
       type(work_stats_t), intent(inout) :: stats  !! steps counted
       logical, intent(in), optional :: selected(:)  !! the points to compute
-      integer, intent(in), optional :: mode  !! what `lane_traces` computes (default lanes_full)
+      integer, intent(in), optional :: mode  !! what `lane_traces` computes (default lanes_plain)
       logical :: todo(size(n))
       integer :: order(size(n)), group_c(size(n))
       real(wp) :: lane_c0(size(n)), lane_c1(size(n)), lane_floors(size(n)), lane_phases(size(n))
@@ -675,12 +740,11 @@ contains
       real(wp), intent(in) :: phases(:)  !! phase bound of each lane (`coefficient_phase`)
       type(trace_t), intent(out) :: traces(size(c0))
       real(wp), intent(out) :: floors(size(c0))  !! round-off level of each S, relative to max(1, |S|)
-      !> lanes_full (default), lanes_plain (the same floors, without logarithm or exponential
-      !> where the propagator was never rescaled) or lanes_values (S only: floors 0, and ln|S|
-      !> left unset below |S| = 1e300 where the propagator was never rescaled)
+      !> lanes_plain (default: S and its round-off level) or lanes_values (S only: floors 0,
+      !> and ln|S| left unset below |S| = 1e300 where the propagator was never rescaled)
       integer, intent(in), optional :: mode
       integer :: first, last, how
-      how = lanes_full
+      how = lanes_plain
       if (present(mode)) how = mode
       do first = 1, size(c0), lane_block
          last = min(size(c0), first + lane_block - 1)
@@ -696,7 +760,7 @@ contains
       real(wp), intent(in) :: phases(:)  !! phase bound of each lane (`coefficient_phase`)
       type(trace_t), intent(out) :: traces(size(c0))
       real(wp), intent(out) :: floors(size(c0))  !! round-off level of each S, relative to max(1, |S|)
-      integer, intent(in) :: how  !! lanes_full, lanes_plain or lanes_values
+      integer, intent(in) :: how  !! lanes_plain or lanes_values
       real(wp), parameter :: c_d2 = -sqrt15/3.0_wp, c_d3 = -10.0_wp/3.0_wp, c_60 = 1.0_wp/30.0_wp
       real(wp), parameter :: c_240 = 1.0_wp/240.0_wp, c_120 = 1.0_wp/120.0_wp, c_12 = 1.0_wp/12.0_wp
       real(wp), dimension(lane_block) :: p11, p12, p21, p22, log_scale, ga, gb, gc, z, log_peak, peak, cs, sn
@@ -780,6 +844,19 @@ contains
                log_scale(l) = log_scale(l) + ls
             end do
          end if
+         if (how == lanes_values) then
+            ! S only: the propagator, without the sensitivity integrals
+            do l = 1, nl
+               e11 = cs(l) + sn(l)*ga(l); e12 = sn(l)*gb(l)
+               e21 = sn(l)*gc(l); e22 = cs(l) - sn(l)*ga(l)
+               a = p11(l); b = p21(l)
+               p11(l) = e11*a + e12*b
+               p21(l) = e21*a + e22*b
+               a = p12(l); b = p22(l)
+               p12(l) = e11*a + e12*b
+               p22(l) = e21*a + e22*b
+            end do
+         else
          do l = 1, nl
             e11 = cs(l) + sn(l)*ga(l); e12 = sn(l)*gb(l)
             e21 = sn(l)*gc(l); e22 = cs(l) - sn(l)*ga(l)
@@ -797,6 +874,7 @@ contains
             su2w(l) = su2w(l) + uu*sw; sv2w(l) = sv2w(l) + vv*sw
             su2a(l) = su2a(l) + uu*abs(sw); sv2a(l) = sv2a(l) + vv*abs(sw)
          end do
+         end if
          if (iand(i, 7) == 0 .or. i == mesh%n_steps) then
             do l = 1, nl
                big = max(abs(p11(l)), abs(p12(l)), abs(p21(l)), abs(p22(l)))
@@ -819,45 +897,37 @@ contains
             end do
          end if
       end do
-      if (how /= lanes_full) then
-         do l = 1, nl
-            t = 2.0_wp*(p11(l)*p22(l) + p21(l)*p12(l))
-            if (rescaled(l) .or. log_scale(l) /= 0.0_wp .or. .not. abs(t) < 1.0e300_wp) then
-               ! as lanes_full
-               call lane_result(p11(l), p12(l), p21(l), p22(l), log_scale(l), log_peak(l), peak(l), &
-                  sensitivity_t(2.0_wp*log_scale(l) + 512.0_wp*log(2.0_wp), su2(l), sv2(l), su2w(l), sv2w(l), &
-                  su2a(l), sv2a(l)), c0(l), mesh%n_steps, phases(l), traces(l), floors(l))
-               if (how == lanes_values) floors(l) = 0.0_wp
-            else if (how == lanes_values) then
-               traces(l)%value = t
-               traces(l)%overflow = .false.
-               floors(l) = 0.0_wp
-            else
-               ! the values of `roundoff_level` and `coefficient_level` with e^{log ...} written
-               ! out: the propagator was never rescaled (log_scale = 0, log_peak = ln max(1, peak))
-               traces(l) = trace_from_scaled(t, 0.0_wp)
-               floors(l) = roundoff_level_plain(peak(l), abs(t), mesh%n_steps, phases(l))
-               monodromy%m(1, 1) = 0.0_wp
-               monodromy%m(2, 1) = 2.0_wp*p11(l)*p21(l)
-               monodromy%m(1, 2) = 2.0_wp*p12(l)*p22(l)
-               monodromy%m(2, 2) = 0.0_wp
-               monodromy%log_scale = 0.0_wp
-               sensitivity = sensitivity_t(512.0_wp*log(2.0_wp), su2(l), sv2(l), su2w(l), sv2w(l), su2a(l), sv2a(l))
-               level = coefficient_sum(sensitivity, c0(l), monodromy)
-               if (level > 0.0_wp .and. exponent(level) < 400) then
-                  ! the integrals are in units of 2^-512
-                  floors(l) = floors(l) + epsilon(1.0_wp)*scale(level, 512)/max(1.0_wp, abs(t))
-               else if (level > 0.0_wp) then
-                  floors(l) = floors(l) + coefficient_level(sensitivity, c0(l), monodromy, traces(l)%log_abs)
-               end if
-            end if
-         end do
-         return
-      end if
       do l = 1, nl
-         call lane_result(p11(l), p12(l), p21(l), p22(l), log_scale(l), log_peak(l), peak(l), &
-            sensitivity_t(2.0_wp*log_scale(l) + 512.0_wp*log(2.0_wp), su2(l), sv2(l), su2w(l), sv2w(l), su2a(l), &
-            sv2a(l)), c0(l), mesh%n_steps, phases(l), traces(l), floors(l))
+         t = 2.0_wp*(p11(l)*p22(l) + p21(l)*p12(l))
+         if (rescaled(l) .or. log_scale(l) /= 0.0_wp .or. .not. abs(t) < 1.0e300_wp) then
+            ! through the logarithms (`roundoff_level`, `coefficient_level`)
+            call lane_result(p11(l), p12(l), p21(l), p22(l), log_scale(l), log_peak(l), peak(l), &
+               sensitivity_t(2.0_wp*log_scale(l) + 512.0_wp*log(2.0_wp), su2(l), sv2(l), su2w(l), sv2w(l), &
+               su2a(l), sv2a(l)), c0(l), mesh%n_steps, phases(l), traces(l), floors(l))
+            if (how == lanes_values) floors(l) = 0.0_wp
+         else if (how == lanes_values) then
+            traces(l)%value = t
+            traces(l)%overflow = .false.
+            floors(l) = 0.0_wp
+         else
+            ! the values of `roundoff_level` and `coefficient_level` with e^{log ...} written
+            ! out: the propagator was never rescaled (log_scale = 0, log_peak = ln max(1, peak))
+            traces(l) = trace_from_scaled(t, 0.0_wp)
+            floors(l) = roundoff_level_plain(peak(l), abs(t), mesh%n_steps, phases(l))
+            monodromy%m(1, 1) = 0.0_wp
+            monodromy%m(2, 1) = 2.0_wp*p11(l)*p21(l)
+            monodromy%m(1, 2) = 2.0_wp*p12(l)*p22(l)
+            monodromy%m(2, 2) = 0.0_wp
+            monodromy%log_scale = 0.0_wp
+            sensitivity = sensitivity_t(512.0_wp*log(2.0_wp), su2(l), sv2(l), su2w(l), sv2w(l), su2a(l), sv2a(l))
+            level = coefficient_sum(sensitivity, c0(l), monodromy)
+            if (level > 0.0_wp .and. level < 2.0_wp**400) then
+               ! the integrals are in units of 2^-512 (an exact factor, no overflow below 2^400)
+               floors(l) = floors(l) + epsilon(1.0_wp)*(level*2.0_wp**512)/max(1.0_wp, abs(t))
+            else if (level > 0.0_wp) then
+               floors(l) = floors(l) + coefficient_level(sensitivity, c0(l), monodromy, traces(l)%log_abs)
+            end if
+         end if
       end do
    end subroutine lane_block_traces
 

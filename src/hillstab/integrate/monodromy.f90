@@ -17,7 +17,7 @@
 !> print *, tr%value, method_description(method_magnus6)
 !>```
 module hillstab_integrate_monodromy
-   use hillstab_core_kinds, only: wp
+   use hillstab_core_kinds, only: wp, log_huge
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
    use hillstab_core_text, only: name_position, alternatives_text, integer_text
    use hillstab_hill_coefficient, only: hill_model_t, check_model, sampling_endpoint, sampling_count
@@ -29,7 +29,6 @@ module hillstab_integrate_monodromy
    use hillstab_integrate_monodromy_rk, only: trace_rk
    use hillstab_integrate_magnus, only: trace_magnus
    use hillstab_integrate_auto, only: trace_auto, trace_auto_batch, auto_plan_t, auto_prepare, trace_auto_screen
-   use hillstab_hill_floquet, only: floquet_t, floquet_verdict
    implicit none
    private
    public :: method_t, method_auto, method_formula, method_segments, method_magnus4, method_magnus6, &
@@ -146,7 +145,6 @@ contains
       real(wp), intent(in) :: tolerance  !! the tolerance S is asked to
       integer, intent(in) :: need        !! need_verdict or need_growth
       logical, intent(in) :: paper       !! also the side of |S| = 2 (need_verdict)
-      type(floquet_t) :: f
       real(wp) :: bound
       certain = .false.
       ! no estimate, or one of the order of S itself (the screen's difference of two
@@ -155,10 +153,13 @@ contains
       bound = max(tr%error_estimate, tolerance)*max(1.0_wp, abs(tr%value))
       select case (need)
       case (need_verdict)
-         f = floquet_verdict(tr, epsilon, tolerance)
-         certain = .not. f%marginal
-         if (paper .and. epsilon > 0.0_wp .and. .not. tr%overflow) certain = certain .and. &
-            abs(abs(tr%value) - 2.0_wp) > bound
+         ! not marginal in the sense of `floquet_verdict`, written out (this runs at every point)
+         if (epsilon > 0.0_wp) then
+            certain = epsilon < log_huge .and. abs(abs(tr%value) - 2.0_wp*cosh(epsilon)) > bound
+            if (paper) certain = certain .and. abs(abs(tr%value) - 2.0_wp) > bound
+         else
+            certain = abs(abs(tr%value) - 2.0_wp) > bound
+         end if
       case (need_growth)
          certain = .not. tr%overflow .and. abs(tr%value) < 2.0_wp - bound
       end select
