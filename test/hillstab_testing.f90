@@ -126,20 +126,30 @@ contains
    end function context
 
    !> Run the suites, or only the suite named by the first command-line
-   !> argument and, if a second is given, only that test. Prints one line per
+   !> argument and, if a second is given, only that test; a first argument
+   !> `--skip=SUITE[,SUITE...]` runs every suite but those. Prints one line per
    !> test and closes with `N passed, M failed`; returns the number of failures.
    subroutine run_testsuites(suites, n_failed)
       type(testsuite_t), intent(in) :: suites(:)
       integer, intent(out) :: n_failed
       character(len=256) :: suite_name, test_name
+      character(len=:), allocatable :: skipped
       integer :: i, j, n_passed, n_selected
       type(test_context_t) :: ctx
-      suite_name = ""; test_name = ""
+      suite_name = ""; test_name = ""; skipped = ""
       if (command_argument_count() >= 1) call get_command_argument(1, suite_name)
       if (command_argument_count() >= 2) call get_command_argument(2, test_name)
+      if (index(suite_name, "--skip=") == 1) then
+         skipped = ","//trim(suite_name(len("--skip=") + 1:))//","
+         suite_name = ""
+      end if
       n_passed = 0; n_failed = 0; n_selected = 0
       do i = 1, size(suites)
          if (len_trim(suite_name) > 0 .and. suites(i)%name /= trim(suite_name)) cycle
+         if (index(skipped, ","//suites(i)%name//",") > 0) then
+            write (*, '(a)') "# suite "//suites(i)%name//" skipped"
+            cycle
+         end if
          write (*, '(a)') "# suite "//suites(i)%name
          do j = 1, size(suites(i)%tests)
             if (len_trim(test_name) > 0 .and. suites(i)%tests(j)%name /= trim(test_name)) cycle
