@@ -53,6 +53,7 @@ contains
          new_unittest("group_order_and_comments", group_order_and_comments), &
          new_unittest("coefficient_list", coefficient_list), &
          new_unittest("points_file", points_file), &
+         new_unittest("points_file_tab_lines", points_file_tab_lines), &
          new_unittest("real_text_round_trip", real_text_round_trip), &
          new_unittest("namelist_round_trip", namelist_round_trip), &
          new_unittest("bad_input_messages", bad_input_messages), &
@@ -293,6 +294,50 @@ contains
          call check(ctx, pairs(2, 3), 0.76_wp)
       end if
    end subroutine points_file
+
+   !> A points file exactly as given, byte by byte (no line end added).
+   subroutine write_bytes(path, text)
+      character(len=*), intent(in) :: path, text
+      integer :: unit
+      open (newunit=unit, file=path, access="stream", form="unformatted", status="replace", action="write")
+      write (unit) text
+      close (unit)
+   end subroutine write_bytes
+
+   !> Read the points of a points file through a points scene.
+   subroutine read_points_text(text, pairs, error)
+      character(len=*), intent(in) :: text  !! the points file's bytes
+      real(wp), allocatable, intent(out) :: pairs(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      type(scene_t) :: scene
+      character(len=:), allocatable :: path, points
+      points = scratch_prefix("pts_bytes")//".dat"
+      call write_bytes(points, text)
+      call read_text_scene("points_bytes", [padded("&scene task = 'points' /"), &
+                           padded("&points file = '"//points//"' /")], scene, error, path)
+      call delete_file(points)
+      allocate (pairs(2, 0))
+      if (.not. allocated(error)) pairs = points_of(scene)
+   end subroutine read_points_text
+
+   !> Lines of blanks and tabs, tab-indented comments and a tab between the numbers (the
+   !> fuzzer's points files: a tab-indented comment was refused, "got '\x09'").
+   subroutine points_file_tab_lines(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: lf = achar(10), tab = achar(9)
+      real(wp), allocatable :: pairs(:, :)
+      type(error_t), allocatable :: error
+      call read_points_text("1.48 2.47"//lf//tab//lf//tab//"# a comment"//lf//" "//tab//" "//lf// &
+                            "3.70"//tab//"2.47"//tab//"# (b)"//lf//"1.0 2.0 "//tab//lf, pairs, error)
+      call check(ctx, .not. allocated(error), "read")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      call check(ctx, size(pairs, 2) == 3, "three points")
+      if (size(pairs, 2) == 3) call check(ctx, all(pairs == reshape([1.48_wp, 2.47_wp, 3.70_wp, 2.47_wp, &
+                                                                     1.0_wp, 2.0_wp], [2, 3])), "their values")
+   end subroutine points_file_tab_lines
 
    subroutine real_text_round_trip(ctx)
       type(test_context_t), intent(inout) :: ctx

@@ -68,7 +68,7 @@ contains
    end subroutine read_points_group
 
    !> Read the points file: one `alpha beta` pair per line, `#` starts a comment,
-   !> blank lines are skipped, further columns are ignored. A line is parsed as text:
+   !> blank lines (spaces and tabs) are skipped, further columns are ignored. A line is parsed as text:
    !> its first two blank-separated fields must be plain numbers (no list-directed
    !> shortcuts such as `/`, `,`, `3*`); at most max_points points, lines of at most
    !> max_line_length characters.
@@ -115,7 +115,9 @@ contains
          end if
          hash = index(line, "#")
          if (hash > 0) line = line(:hash - 1)
-         if (len_trim(line) == 0) cycle
+         ! blank: spaces, tabs, CRs only (len_trim sees only spaces: a tab-indented comment
+         ! was refused as "expected two numbers, got '\x09'"; make fuzz found it)
+         if (verify(line, " "//achar(9)//achar(13)) == 0) cycle
          call parse_pair(line, pair, ios)
          if (ios /= 0) then
             call fail(error, source, group, "file", where//": expected two numbers 'alpha beta' "// &
