@@ -13,10 +13,24 @@ in a scratch directory holding a copy of data/ and a sentinel output file, and m
   - finish within the time limit;
   - leave no temporary file (*.part<pid>) and the sentinel untouched.
 
+Two further families follow, with the same acceptance rules:
+
+  - points files (--points-count): the scenes that read &points (task points, task lyapunov
+    over points, the points template) run on a mutated copy of data/points/*.dat: malformed
+    numbers, NaN/Inf text, extreme values, more lines than the limit, empty or comment-only
+    files, binary junk, NUL bytes, very long lines, CRLF or CR line ends, a byte-order mark,
+    UTF-16; or their `&points file =` names something else: a missing file, a directory, a
+    device, a FIFO, a symbolic link, an empty or very long name. An exit 1 or 2 there must
+    name `&points: file:`, unless the scene itself was also mutated;
+  - templates (--template-count): `hillstab --template TASK` of every task the program lists,
+    shrunk and mutated like the shipped scenes, sometimes with their optional commented
+    groups (`&physical` and its alternatives) switched on.
+
 With --signals, a chart is first interrupted by SIGINT, SIGTERM and SIGHUP: each must
 exit 128 + signal, remove its temporary file and keep the old output.
 
-usage: scripts/fuzz.py --hillstab BUILD/app/hillstab [--count 300] [--seed 7] [--timeout 30] [--signals]
+usage: scripts/fuzz.py --hillstab BUILD/app/hillstab [--count 300] [--points-count 90]
+                       [--template-count 140] [--seed 7] [--timeout 30] [--signals]
 Exit status 0 when every scene passes; the failures are listed with the scene text saved
 under the report directory (default build/fuzz_failures).
 """
@@ -109,6 +123,192 @@ def mutate(text, rng):
     return text
 
 
+# points files: what a careless or hostile points file may hold in place of a number
+MALFORMED_NUMBERS = ["1.2.3", "1e", "--1", "+-2", "+", "-", ".", "1d", "0x10", "3*1", "3*", "1,", ",", "/", "1e99999",
+                     "1e-99999", "1_8", "1..5", "e5", "1e+", "(1)", "'1'", "\"2\"", "1 .5", "T", ".true.", "1/2",
+                     "\u0663", "\u22122", "1\u00a0000", "9" * 400, "0." + "0" * 400 + "1"]
+NONFINITE_TEXTS = ["nan", "NaN", "-nan", "inf", "-inf", "+Inf", "Infinity", "-infinity", "nan(0x1)", "infinit", "NAN()"]
+EXTREME_POINT_VALUES = ["1e308", "-1e308", "1e309", "4.9e-324", "1e-320", "0", "-0.0", "-1", "9.8696044010893586",
+                        "9.869604401089358", "9.87", "1e15", "1e16", "-1e15", "1e6", "123456789012345678901234567890"]
+MAX_POINTS = 1000000          # hillstab_batch_scene_checks: max_points
+MAX_LINE_LENGTH = 65536       # hillstab_batch_scene_file: max_line_length
+# what `&points file =` may name instead of the mutated file (fixtures made in the work directory)
+POINTS_ROUTES = ["missing_points.dat", "", " ", "data", "data/", "/dev/zero", "/dev/null", "fuzz.fifo",
+                 "link_points.dat", "dangling_link.dat", "data/points/fig4.dat", "./fuzz_points.dat",
+                 "fuzz_points.dat/", "x" * 300 + ".dat", "x" * 5000, "fuzz.nml", "out"]
+
+
+def mutate_points(text, rng):
+    """One to three random mutations of a points file; returns bytes."""
+    data = None  # set when a mutation leaves text for bytes
+    for _ in range(rng.randint(1, 3)):
+        if data is not None:
+            break
+        kind = rng.randrange(14)
+        numbers = list(NUMBER.finditer(text))
+        if kind in (0, 1, 2) and numbers:  # a number replaced: malformed, non-finite, extreme
+            m = rng.choice(numbers)
+            value = rng.choice([MALFORMED_NUMBERS, NONFINITE_TEXTS, EXTREME_POINT_VALUES][kind])
+            text = text[:m.start()] + value + text[m.end():]
+        elif kind == 3:  # more lines than the limit (refused after reading them), rarely
+            if rng.random() < 0.15:
+                text = "1.48 2.47\n" * (MAX_POINTS + 1)
+            else:
+                text = text + "3.70 2.47\n" * rng.choice([50, 200])
+        elif kind == 4 and rng.random() < 0.4:  # empty, comments only, blanks only (now and then)
+            text = rng.choice(["", "\n", "# nothing\n", "   \n\t\n", "#", "# " + "c" * 1000 + "\n"])
+        elif kind == 5:  # binary junk: a whole file of it, or some inserted
+            junk = bytes(rng.randrange(256) for _ in range(rng.choice([1, 16, 512, 4096])))
+            raw = text.encode()
+            where = rng.randrange(3)
+            if where == 0:
+                data = junk
+            elif where == 1:
+                i = rng.randrange(len(raw) + 1)
+                data = raw[:i] + junk + raw[i:]
+            else:
+                data = raw + junk
+        elif kind == 6:  # NUL bytes in a line
+            raw = text.encode()
+            i = rng.randrange(len(raw) + 1)
+            data = raw[:i] + b"\0" * rng.choice([1, 3]) + raw[i:]
+        elif kind == 7:  # a very long line: at the limit, beyond it; digits, blanks or a comment
+            n = rng.choice([MAX_LINE_LENGTH - 1, MAX_LINE_LENGTH, MAX_LINE_LENGTH + 1, 70000, 300000])
+            line = rng.choice(["1.48 2.47 " + "x" * n, "1.48 " + "0" * n + "2.47", " " * n + "1.48 2.47",
+                               "#" * n, "1" * n])
+            lines = text.split("\n")
+            lines.insert(rng.randrange(len(lines) + 1), line[:n])
+            text = "\n".join(lines)
+        elif kind == 8:  # line ends: CRLF, CR only, mixed
+            choice = rng.randrange(3)
+            if choice == 0:
+                text = text.replace("\n", "\r\n")
+            elif choice == 1:
+                text = text.replace("\n", "\r")
+            else:
+                text = "".join(c + ("\r" if c == "\n" and rng.random() < 0.5 else "") for c in text)
+        elif kind == 9:  # separators: commas, tabs, a byte-order mark, UTF-16
+            choice = rng.randrange(5)
+            if choice == 0:
+                text = re.sub(r"(\d) +(\d)", r"\1,\2", text)
+            elif choice == 1:
+                text = re.sub(r"(\d) +(\d)", r"\1 ,, \2", text)
+            elif choice == 2:
+                text = text.replace(" ", "\t")
+            elif choice == 3:
+                text = "\ufeff" + text
+            else:
+                data = text.encode("utf-16")
+        elif kind == 10:  # drop, double or swap lines
+            lines = text.split("\n")
+            i, j = rng.randrange(len(lines)), rng.randrange(len(lines))
+            action = rng.randrange(3)
+            if action == 0:
+                del lines[i]
+            elif action == 1:
+                lines.insert(i, lines[i])
+            else:
+                lines[i], lines[j] = lines[j], lines[i]
+            text = "\n".join(lines)
+        elif kind == 11:  # cut short, no final newline
+            text = text[:rng.randrange(len(text) + 1)] if rng.random() < 0.5 else text.rstrip("\n")
+        elif kind == 12:  # one field per line, or three numbers, or the label first
+            text = re.sub(r"^(\S+)\s+(\S+)", rng.choice([r"\1", r"\1 \2 \2", r"(x) \1 \2", r"\1 \2 /"]), text,
+                          count=rng.randint(1, 3), flags=re.M)
+        else:  # list-directed shortcuts a namelist reader would take
+            text = re.sub(r"^(\S+)\s+(\S+)", rng.choice([r"\1 /", r",\2", r"2*\1", r"\1,,\2", r"/"]), text,
+                          count=1, flags=re.M)
+    return data if data is not None else text.encode("utf-8")
+
+
+def points_file_value(text):
+    """The `file = '...'` of a scene's &points group, or None."""
+    return re.search(r"^\s*(&points\b[^/]*?\bfile\s*=\s*)'([^']*)'", text, re.I | re.S | re.M)
+
+
+def with_points_file(text, name):
+    """The scene with its &points file set to `name` (quoted as a namelist string)."""
+    m = points_file_value(text)
+    quoted = "'" + name.replace("'", "''") + "'"
+    return text[:m.start(2) - 1] + quoted + text[m.end(2) + 1:]
+
+
+def delete_group(text, name):
+    """The text without its group &name (from `&name` at the start of a line to its `/` line)."""
+    return re.sub(r"^&%s\b[^\n]*\n(?:[^\n]*\n)*?/[^\n]*(?:\n|$)" % name, "", text, count=1, flags=re.M | re.I)
+
+
+def delete_variable(text, group, name):
+    """The text without the line `name = ...` inside group &group."""
+    m = re.search(r"^&%s\b.*?^/" % group, text, re.M | re.S | re.I)
+    if not m:
+        return text
+    body = re.sub(r"^\s*%s\s*=[^\n]*\n" % name, "", m.group(0), count=1, flags=re.M | re.I)
+    return text[:m.start()] + body + text[m.end():]
+
+
+def uncomment_optional(text, rng):
+    """A template with its optional commented groups (&physical, a commented &points)
+    switched on: the lines from `! &group` to `! /` lose their first two characters; then
+    mostly as its comment says (the groups and variables it names deleted, sometimes an
+    alternative taken: k and m for omega, a range of amplitudes or of omega), else with
+    a group deleted at random."""
+    prose = " ".join(line[2:] for line in text.split("\n") if line.startswith("! "))
+    lines = text.split("\n")
+    inside = False
+    for i, line in enumerate(lines):
+        if re.match(r"^! &\w+", line):
+            inside = True
+        if inside and line.startswith("! "):
+            lines[i] = line[2:]
+            if line.startswith("! /"):
+                inside = False
+    text = "\n".join(lines)
+    if rng.random() < 0.8:  # as the template says
+        for m in re.finditer(r"delete (?:the )?&(\w+)(?: \(or &(\w+)\))?", prose):
+            for name in m.groups():
+                if name:
+                    text = delete_group(text, name)
+        for m in re.finditer(r"delete ((?:\w+, )*\w+(?: and \w+)?) from &(\w+)|and ((?:\w+, )*\w+) from &(\w+)", prose):
+            names, group = (m.group(1), m.group(2)) if m.group(1) else (m.group(3), m.group(4))
+            for name in re.split(r", | and ", names):
+                text = delete_variable(text, group, name)
+    else:
+        groups = re.findall(r"^&(\w+)", text, re.M)
+        groups = [g for g in groups if g.lower() != "scene"]
+        if groups:
+            text = delete_group(text, rng.choice(groups))
+    alternatives = [(("k", "m"), ("omega",)), (("a_min", "a_max", "n_a"), ("a",)),
+                    (("omega_min", "omega_max", "n_omega"), ("omega",))]
+    for switched_on, switched_off in alternatives:
+        if rng.random() < 0.35 and re.search(r"^! %s =" % switched_on[0], text, re.M):
+            for name in switched_on:
+                text = re.sub(r"^! (%s) =" % name, r"\1 =", text, count=1, flags=re.M)
+            for name in switched_off:
+                text = delete_variable(text, "physical", name)
+    return text
+
+
+def task_names(hillstab):
+    """The tasks the program lists in --help ("Tasks: chart, points, ...")."""
+    out = subprocess.run([hillstab, "--help"], stdout=subprocess.PIPE, check=True).stdout.decode()
+    m = re.search(r"Tasks:\s*([a-z_]+(?:,\s*[a-z_]+)*)", out)
+    if not m:
+        sys.exit("fuzz: no task list in hillstab --help")
+    return [t.strip() for t in m.group(1).split(",")]
+
+
+def template_texts(hillstab):
+    """Every task's template, shrunk (physical counts too)."""
+    texts = []
+    for task in task_names(hillstab):
+        proc = subprocess.run([hillstab, "--template", task], stdout=subprocess.PIPE, check=True)
+        text = shrink(proc.stdout.decode())
+        text = re.sub(r"\b(n_a|n_omega)(\s*=\s*)\d+", r"\1\g<2>3", text)
+        texts.append(("template_" + task, text))
+    return texts
+
+
 def data_rows_ok(path):
     """Whether a text output file has whole numeric rows: no NaN/Inf, equal column counts."""
     with open(path, "rb") as f:
@@ -150,11 +350,16 @@ def snapshot(directory):
     return files
 
 
-def run_one(hillstab, text, work, timeout):
-    """Run one scene; return a list of problems (empty: pass) and the exit status."""
+def run_one(hillstab, text, work, timeout, files=None, message_names=None):
+    """Run one scene (with `files`, name -> bytes, written beside it); return a list of
+    problems (empty: pass) and the exit status. With `message_names`, an exit 1 or 2 must
+    name it (e.g. "&points: file:")."""
     scene = os.path.join(work, "fuzz.nml")
     with open(scene, "w", encoding="utf-8", errors="replace") as f:
         f.write(text)
+    for name, data in (files or {}).items():
+        with open(os.path.join(work, name), "wb") as f:
+            f.write(data)
     sentinel = os.path.join(work, "out", "sentinel.dat")
     before = snapshot(work)
     start = time.monotonic()
@@ -182,6 +387,8 @@ def run_one(hillstab, text, work, timeout):
     elif status in (1, 2):
         if len(err_lines) != 1 or not err_lines[0].startswith("hillstab: "):
             problems.append("exit %d with %d stderr lines: %s" % (status, len(err_lines), " | ".join(err_lines[:4])))
+        elif message_names and message_names not in err_lines[0]:
+            problems.append("exit %d, the message does not name %s: %s" % (status, message_names, err_lines[0][:300]))
     else:
         problems.append("exit status %d: %s" % (status, " | ".join(err_lines[:4])))
     leftovers = [p for p in glob.glob(os.path.join(work, "**", "*.part*"), recursive=True)]
@@ -288,10 +495,84 @@ def check_signal_timing(hillstab, work, runs=60, seed=11):
     return problems
 
 
+FIXTURES = ("data", "out", "fuzz.nml", "points.dat", "fuzz.fifo", "link_points.dat", "dangling_link.dat")
+
+
+def make_work_directory():
+    """A scratch directory: a copy of data/, out/ with the sentinel, points.dat (the points
+    templates name it), a FIFO without a writer, a link to a points file and a dangling one."""
+    work = tempfile.mkdtemp(prefix="hillstab_fuzz_")
+    shutil.copytree(os.path.join(ROOT, "data"), os.path.join(work, "data"))
+    os.makedirs(os.path.join(work, "out"))
+    with open(os.path.join(work, "out", "sentinel.dat"), "w") as f:
+        f.write("sentinel\n")
+    shutil.copy(os.path.join(ROOT, "data", "points", "fig4.dat"), os.path.join(work, "points.dat"))
+    os.mkfifo(os.path.join(work, "fuzz.fifo"))
+    os.symlink(os.path.join("data", "points", "fig4.dat"), os.path.join(work, "link_points.dat"))
+    os.symlink("no_such_points.dat", os.path.join(work, "dangling_link.dat"))
+    return work
+
+
+def clean_work_directory(work):
+    """Remove what a case wrote: outputs of this case must not mask the next one's."""
+    for path in glob.glob(os.path.join(work, "out", "*")):
+        if not path.endswith("sentinel.dat"):
+            if os.path.isdir(path) and not os.path.islink(path):
+                shutil.rmtree(path, ignore_errors=True)
+            else:
+                os.remove(path)
+    for path in glob.glob(os.path.join(work, "*")):
+        if os.path.basename(path) not in FIXTURES:
+            if os.path.isdir(path) and not os.path.islink(path):
+                shutil.rmtree(path, ignore_errors=True)
+            else:
+                os.remove(path)
+
+
+def points_cases(texts, templates, count, rng):
+    """`count` cases of (name, scene text, files, message_names): a mutated points file under
+    a scene that reads &points, or that scene's &points file pointed elsewhere; now and then
+    the scene mutated as well."""
+    bases = [(name, text) for name, text in texts + templates if points_file_value(text)]
+    point_files = sorted(glob.glob(os.path.join(ROOT, "data", "points", "*.dat")))
+    originals = []
+    for path in point_files:
+        with open(path) as f:
+            originals.append(f.read())
+    for k in range(count):
+        name, scene = bases[k % len(bases)]
+        if rng.random() < 0.2:
+            route = rng.choice(POINTS_ROUTES)
+            scene = with_points_file(scene, route)
+            files = {}
+            label = "route " + (route if len(route) < 40 else route[:20] + "...(%d)" % len(route))
+        else:
+            scene = with_points_file(scene, "fuzz_points.dat")
+            files = {"fuzz_points.dat": mutate_points(rng.choice(originals), rng)}
+            label = "points file"
+        names = "&points: file:"
+        if rng.random() < 0.15:
+            scene = mutate(scene, rng)
+            names = None  # the scene's own fault may come first
+        yield "%s (%s)" % (name, label), scene, files, names
+
+
+def template_cases(templates, count, rng):
+    """`count` mutated templates, every task in turn; a third with the optional groups on."""
+    for k in range(count):
+        name, text = templates[k % len(templates)]
+        if rng.random() < 1.0 / 3.0:
+            text = uncomment_optional(text, rng)
+            name += " (optional groups on)"
+        yield name, mutate(text, rng)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--hillstab", required=True, help="the hillstab executable")
     parser.add_argument("--count", type=int, default=300, help="number of mutated scenes")
+    parser.add_argument("--points-count", type=int, default=90, help="number of mutated points files or routes")
+    parser.add_argument("--template-count", type=int, default=140, help="number of mutated templates")
     parser.add_argument("--seed", type=int, default=7, help="random seed (same seed, same scenes)")
     parser.add_argument("--timeout", type=float, default=30.0, help="seconds allowed per scene")
     parser.add_argument("--signals", action="store_true",
@@ -307,17 +588,26 @@ def main():
     for path in bases:
         with open(path) as f:
             texts.append((os.path.basename(path), shrink(f.read())))
-    rng = random.Random(args.seed)
-    work = tempfile.mkdtemp(prefix="hillstab_fuzz_")
-    shutil.copytree(os.path.join(ROOT, "data"), os.path.join(work, "data"))
-    os.makedirs(os.path.join(work, "out"))
-    with open(os.path.join(work, "out", "sentinel.dat"), "w") as f:
-        f.write("sentinel\n")
+    templates = template_texts(hillstab)
+    work = make_work_directory()
     if os.path.isdir(args.report):
         shutil.rmtree(args.report)
     failures = 0
     counts = {}
     slowest = 0.0
+    family_seconds = {}
+
+    def scene_cases():
+        rng = random.Random(args.seed)  # the stream of the scenes alone: their cases stay as they were
+        for k in range(args.count):
+            name, base = texts[k % len(texts)]
+            yield name, mutate(base, rng), None, None
+
+    # each family draws from its own stream, so that one family's count leaves the others' cases as they are
+    families = [("scenes", scene_cases()),
+                ("points", points_cases(texts, templates, args.points_count, random.Random(args.seed * 1000 + 1))),
+                ("templates", ((n, t, None, None) for n, t in
+                               template_cases(templates, args.template_count, random.Random(args.seed * 1000 + 2))))]
     try:
         if args.signals:
             problems = check_signals(hillstab, work)
@@ -329,39 +619,40 @@ def main():
             for p in problems:
                 print("FAIL signal timing: " + p)
             failures += 1 if problems else 0
-        for k in range(args.count):
-            name, base = texts[k % len(texts)]
-            text = mutate(base, rng)
-            problems, status, elapsed = run_one(hillstab, text, work, args.timeout)
-            slowest = max(slowest, elapsed)
-            counts[status] = counts.get(status, 0) + 1
-            if problems:
-                failures += 1
-                os.makedirs(args.report, exist_ok=True)
-                saved = os.path.join(args.report, "case%03d_%s" % (k, name))
-                with open(saved, "w", encoding="utf-8", errors="replace") as f:
-                    f.write(text)
-                print("FAIL case %d (from %s, saved as %s):" % (k, name, os.path.relpath(saved, ROOT)))
-                for p in problems:
-                    print("    " + p[:400])
-            # outputs of this case must not mask the next one's
-            for path in glob.glob(os.path.join(work, "out", "*")):
-                if not path.endswith("sentinel.dat"):
-                    if os.path.isdir(path):
-                        shutil.rmtree(path, ignore_errors=True)
-                    else:
-                        os.remove(path)
-            for path in glob.glob(os.path.join(work, "*")):
-                if os.path.basename(path) not in ("data", "out", "fuzz.nml"):
-                    if os.path.isdir(path):
-                        shutil.rmtree(path, ignore_errors=True)
-                    else:
-                        os.remove(path)
+        for family, cases in families:
+            started = time.monotonic()
+            n_cases = 0
+            family_counts = {}
+            for k, (name, text, files, names) in enumerate(cases):
+                n_cases += 1
+                problems, status, elapsed = run_one(hillstab, text, work, args.timeout, files, names)
+                slowest = max(slowest, elapsed)
+                counts[status] = counts.get(status, 0) + 1
+                family_counts[status] = family_counts.get(status, 0) + 1
+                if problems:
+                    failures += 1
+                    os.makedirs(args.report, exist_ok=True)
+                    stem = "%s%03d_%s" % ("case" if family == "scenes" else family + "_", k,
+                                          re.sub(r"[^A-Za-z0-9_.]+", "_", name)[:60])
+                    saved = os.path.join(args.report, stem)
+                    with open(saved, "w", encoding="utf-8", errors="replace") as f:
+                        f.write(text)
+                    for file_name, data in (files or {}).items():
+                        with open(saved + "." + file_name, "wb") as f:
+                            f.write(data[:1 << 20])
+                    print("FAIL %s case %d (from %s, saved as %s):" % (family, k, name, os.path.relpath(saved, ROOT)))
+                    for p in problems:
+                        print("    " + p[:400])
+                clean_work_directory(work)
+            family_seconds[family] = (n_cases, time.monotonic() - started)
+            print("fuzz: %s: %d cases in %.0f s; %s" % (family, n_cases, time.monotonic() - started, ", ".join(
+                "exit %s: %d" % (s, n) for s, n in sorted(family_counts.items(), key=lambda x: str(x[0])))))
     finally:
         shutil.rmtree(work, ignore_errors=True)
     summary = ", ".join("exit %s: %d" % (s, n) for s, n in sorted(counts.items(), key=lambda x: str(x[0])))
-    print("fuzz: %d scenes (seed %d), %d failed; %s; slowest %.1f s" % (args.count, args.seed, failures, summary,
-                                                                       slowest))
+    times = ", ".join("%d %s in %.0f s" % (n, family, t) for family, (n, t) in family_seconds.items())
+    print("fuzz: %d cases (seed %d: %s), %d failed; %s; slowest %.1f s" % (sum(counts.values()), args.seed, times,
+                                                                          failures, summary, slowest))
     sys.exit(1 if failures else 0)
 
 

@@ -33,16 +33,41 @@ program tester
    use test_symplectic, only: collect_symplectic
    use test_chaos, only: collect_chaos
    implicit none
-   type(testsuite_t), allocatable :: suites(:)
+   ! one by one, not as an array constructor of the collect functions' results: gfortran 12
+   ! leaks the allocatable components of such results (LeakSanitizer, make test-sanitize)
+   type(testsuite_t) :: suites(31)
    integer :: n_failed
-   suites = [collect_models(), collect_codes(), collect_coefficient(), collect_transfer(), collect_formulas(), collect_floquet(), &
-             collect_monodromy(), collect_capi(), collect_gsl(), collect_rk(), collect_magnus(), &
-             collect_scene(), collect_tasks(), collect_format(), collect_auto(), &
-             collect_units(), collect_pendulum(), collect_hill_method(), collect_templates(), &
-             collect_batch(), collect_boundaries(), collect_task_boundaries(), &
-             collect_lyapunov(), collect_poincare(), collect_task_lyapunov(), collect_task_poincare(), &
-             collect_pendulum_analysis(), collect_task_series(), collect_output(), collect_symplectic(), &
-             collect_chaos()]
+   suites(1) = collect_models()
+   suites(2) = collect_codes()
+   suites(3) = collect_coefficient()
+   suites(4) = collect_transfer()
+   suites(5) = collect_formulas()
+   suites(6) = collect_floquet()
+   suites(7) = collect_monodromy()
+   suites(8) = collect_capi()
+   suites(9) = collect_gsl()
+   suites(10) = collect_rk()
+   suites(11) = collect_magnus()
+   suites(12) = collect_scene()
+   suites(13) = collect_tasks()
+   suites(14) = collect_format()
+   suites(15) = collect_auto()
+   suites(16) = collect_units()
+   suites(17) = collect_pendulum()
+   suites(18) = collect_hill_method()
+   suites(19) = collect_templates()
+   suites(20) = collect_batch()
+   suites(21) = collect_boundaries()
+   suites(22) = collect_task_boundaries()
+   suites(23) = collect_lyapunov()
+   suites(24) = collect_poincare()
+   suites(25) = collect_task_lyapunov()
+   suites(26) = collect_task_poincare()
+   suites(27) = collect_pendulum_analysis()
+   suites(28) = collect_task_series()
+   suites(29) = collect_output()
+   suites(30) = collect_symplectic()
+   suites(31) = collect_chaos()
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

@@ -1,12 +1,14 @@
 !> Tests of the atomic output writer (hillstab_batch_output): under a file-size limit every
 !> task's writer fails with the path and the cause and leaves the old file and no
 !> temporary file; a directory in the place of the output file is refused before any
-!> work; a committed file holds exactly what was written (every line compared).
+!> work; a committed file holds exactly what was written (every line compared); the progress
+!> line's rate, whole from 10 up and with two significant digits below.
 module test_output
-   use hillstab_core_kinds, only: int64
+   use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, err_io, err_input
    use hillstab_batch_output, only: output_file_t, open_output, write_text, commit_output, discard_output
    use hillstab_batch_tasks, only: run_scene_file
+   use hillstab_batch_progress, only: rate_text
    use hillstab_testing
    use hillstab_fault_injection, only: check_writer_under_limit, limit_file_size, lift_file_size_limit, &
       limit_address_space, lift_address_space_limit
@@ -27,7 +29,8 @@ contains
          new_unittest("coefficient_writer_file_limit", coefficient_writer_file_limit), &
          new_unittest("directory_output_refused", directory_output_refused), &
          new_unittest("output_larger_than_free_space", output_larger_than_free_space), &
-         new_unittest("buffers_larger_than_memory", buffers_larger_than_memory)])
+         new_unittest("buffers_larger_than_memory", buffers_larger_than_memory), &
+         new_unittest("progress_rate_text", progress_rate_text)])
    end function collect_output
 
    subroutine commit_writes_all(ctx)
@@ -209,4 +212,17 @@ contains
       call delete_file(out//"_chart.dat")
       call delete_file(scene)
    end subroutine buffers_larger_than_memory
+   !> The rate of the progress line: a unit taking half a minute (a block of Hill's matrix near
+   !> alpha = pi^2) showed as "0 Hill blocks/s".
+   subroutine progress_rate_text(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      call check(ctx, rate_text(1234.4_wp) == "1234", "1234.4: "//rate_text(1234.4_wp))
+      call check(ctx, rate_text(9.6_wp) == "10", "9.6: "//rate_text(9.6_wp))
+      call check(ctx, rate_text(3.74_wp) == "3.7", "3.74: "//rate_text(3.74_wp))
+      call check(ctx, rate_text(0.5_wp) == "0.50", "0.5: "//rate_text(0.5_wp))
+      call check(ctx, rate_text(0.0357_wp) == "0.036", "0.0357: "//rate_text(0.0357_wp))
+      call check(ctx, rate_text(2.0e-5_wp) == "0.000020", "2e-5: "//rate_text(2.0e-5_wp))
+      call check(ctx, rate_text(0.0_wp) == "0", "0: "//rate_text(0.0_wp))
+   end subroutine progress_rate_text
+
 end module test_output

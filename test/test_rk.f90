@@ -24,7 +24,7 @@ module test_rk
    use hillstab_test_pendulum, only: pendulum_at
    use hillstab_pendulum_analysis, only: pendulum_watch_t
    use hillstab_testing
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_positive_inf
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_positive_inf, ieee_quiet_nan
    implicit none
    private
    public :: collect_rk
@@ -182,6 +182,7 @@ contains
          new_unittest("dense_output", dense_output), &
          new_unittest("dense_order", dense_order), &
          new_unittest("backward_and_observer", backward_and_observer), &
+         new_unittest("output_arguments", output_arguments), &
          new_unittest("error_paths", error_paths), &
          new_unittest("tiny_state_relative", tiny_state_relative), &
          new_unittest("half_equals_full_period", half_equals_full_period), &
@@ -625,6 +626,64 @@ contains
                         y_out=y_out(:, 1:2))
       call check(ctx, allocated(error), "unordered t_out rejected")
    end subroutine backward_and_observer
+
+   !> t_out and y_out: checked as before they went on to the driver as ordinary arrays (empty
+   !> when absent), and the same steps with and without them (fixed and adaptive).
+   subroutine output_arguments(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: t, y(2), y_plain(2), t_out(3), y_out(2, 3), y_wide(2, 4), h_plain, h_out
+      type(work_stats_t) :: stats, stats_plain
+      type(error_t), allocatable :: error
+      type(oscillator_t) :: osc
+      type(rk_options_t) :: options
+      integer :: k
+      t_out = [0.5_wp, 1.0_wp, 2.0_wp]
+      do k = 1, 2
+         options = rk_options_t(rtol=1.0e-10_wp, atol=1.0e-10_wp)
+         if (k == 2) options%fixed_steps = 40
+         t = 0.0_wp
+         y_plain = [1.0_wp, 0.0_wp]
+         call rk_integrate(osc, t, 2.0_wp, y_plain, options, stats_plain, error, h_next=h_plain)
+         call check(ctx, .not. allocated(error), "without outputs")
+         t = 0.0_wp
+         y = [1.0_wp, 0.0_wp]
+         y_out = -7.0_wp
+         call rk_integrate(osc, t, 2.0_wp, y, options, stats, error, t_out=t_out, y_out=y_out, h_next=h_out)
+         call check(ctx, .not. allocated(error), "with outputs")
+         call check(ctx, all(y == y_plain) .and. h_out == h_plain .and. stats%n_steps == stats_plain%n_steps, &
+                    "the same steps with and without outputs")
+         call check(ctx, y_out(1, 3), y(1), abs=0.0_wp, message="the last output time is t_end")
+         call check(ctx, y_out(1, 1), cos(0.5_wp), abs=merge(1.0e-8_wp, 1.0e-6_wp, k == 1), &
+                    message="dense output at t = 0.5")
+         call check(ctx, y_out(2, 2), -sin(1.0_wp), abs=merge(1.0e-8_wp, 1.0e-6_wp, k == 1), &
+                    message="dense output at t = 1")
+      end do
+      t = 0.0_wp
+      y = [1.0_wp, 0.0_wp]
+      call rk_integrate(osc, t, 2.0_wp, y, rk_options_t(), stats, error, t_out=t_out)
+      call check(ctx, has_message(error, "t_out and y_out go together"), "t_out without y_out")
+      call check(ctx, t == 0.0_wp .and. stats%n_steps == 0, "nothing integrated")
+      call rk_integrate(osc, t, 2.0_wp, y, rk_options_t(), stats, error, y_out=y_out)
+      call check(ctx, has_message(error, "t_out and y_out go together"), "y_out without t_out")
+      call rk_integrate(osc, t, 2.0_wp, y, rk_options_t(), stats, error, t_out=t_out, y_out=y_wide)
+      call check(ctx, has_message(error, "y_out must be (size(y), size(t_out))"), "y_out of the wrong shape")
+      call rk_integrate(osc, t, 2.0_wp, y, rk_options_t(), stats, error, t_out=[0.5_wp, ieee_value(1.0_wp, &
+                        ieee_quiet_nan), 1.0_wp], y_out=y_out)
+      call check(ctx, has_message(error, "non-finite output time"), "NaN output time")
+      call rk_integrate(osc, t, 2.0_wp, y, rk_options_t(), stats, error, t_out=[0.5_wp, 1.0_wp, 3.0_wp], y_out=y_out)
+      call check(ctx, has_message(error, "monotone from t towards t_end"), "output time beyond t_end")
+      ! an unknown method still comes first (the order of the checks kept)
+      call rk_integrate(osc, t, 2.0_wp, y, rk_options_t(method=99), stats, error, t_out=t_out)
+      call check(ctx, has_message(error, "unknown method"), "the method before the outputs")
+   contains
+      logical function has_message(error, text)
+         type(error_t), allocatable, intent(in) :: error
+         character(len=*), intent(in) :: text
+         has_message = .false.
+         if (allocated(error)) has_message = error%code == err_invalid_parameter .and. &
+                                             index(error%message, text) > 0
+      end function has_message
+   end subroutine output_arguments
 
    !> Failures are reported through error_t and leave a finite state behind.
    subroutine error_paths(ctx)

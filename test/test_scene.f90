@@ -6,7 +6,7 @@
 module test_scene
    use hillstab_core_kinds, only: wp, pi2
    use hillstab_core_error, only: error_t, err_input
-   use hillstab_core_text, only: real_text, read_text_line
+   use hillstab_core_text, only: real_text, read_text_line, integer_text
    use hillstab_hill_coefficient, only: model_elastic, model_mathieu, sampling_endpoint, sampling_average
    use hillstab_integrate_monodromy, only: method_auto, method_segments
    use hillstab_batch_scene, only: scene_t, scene_namelist
@@ -53,6 +53,9 @@ contains
          new_unittest("group_order_and_comments", group_order_and_comments), &
          new_unittest("coefficient_list", coefficient_list), &
          new_unittest("points_file", points_file), &
+         new_unittest("points_file_tab_lines", points_file_tab_lines), &
+         new_unittest("points_file_line_ends", points_file_line_ends), &
+         new_unittest("points_file_byte_order_mark", points_file_byte_order_mark), &
          new_unittest("real_text_round_trip", real_text_round_trip), &
          new_unittest("namelist_round_trip", namelist_round_trip), &
          new_unittest("bad_input_messages", bad_input_messages), &
@@ -293,6 +296,103 @@ contains
          call check(ctx, pairs(2, 3), 0.76_wp)
       end if
    end subroutine points_file
+
+   !> A points file exactly as given, byte by byte (no line end added).
+   subroutine write_bytes(path, text)
+      character(len=*), intent(in) :: path, text
+      integer :: unit
+      open (newunit=unit, file=path, access="stream", form="unformatted", status="replace", action="write")
+      write (unit) text
+      close (unit)
+   end subroutine write_bytes
+
+   !> Read the points of a points file through a points scene.
+   subroutine read_points_text(text, pairs, error)
+      character(len=*), intent(in) :: text  !! the points file's bytes
+      real(wp), allocatable, intent(out) :: pairs(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      type(scene_t) :: scene
+      character(len=:), allocatable :: path, points
+      points = scratch_prefix("pts_bytes")//".dat"
+      call write_bytes(points, text)
+      call read_text_scene("points_bytes", [padded("&scene task = 'points' /"), &
+                           padded("&points file = '"//points//"' /")], scene, error, path)
+      call delete_file(points)
+      allocate (pairs(2, 0))
+      if (.not. allocated(error)) pairs = points_of(scene)
+   end subroutine read_points_text
+
+   !> Lines of blanks and tabs, tab-indented comments and a tab between the numbers (the
+   !> fuzzer's points files: a tab-indented comment was refused, "got '\x09'").
+   subroutine points_file_tab_lines(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: lf = achar(10), tab = achar(9)
+      real(wp), allocatable :: pairs(:, :)
+      type(error_t), allocatable :: error
+      call read_points_text("1.48 2.47"//lf//tab//lf//tab//"# a comment"//lf//" "//tab//" "//lf// &
+                            "3.70"//tab//"2.47"//tab//"# (b)"//lf//"1.0 2.0 "//tab//lf, pairs, error)
+      call check(ctx, .not. allocated(error), "read")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      call check(ctx, size(pairs, 2) == 3, "three points")
+      if (size(pairs, 2) == 3) call check(ctx, all(pairs == reshape([1.48_wp, 2.47_wp, 3.70_wp, 2.47_wp, &
+                                                                     1.0_wp, 2.0_wp], [2, 3])), "their values")
+   end subroutine points_file_tab_lines
+
+   !> Line ends LF, CR LF and a lone CR (old Mac files; gfortran's formatted read ends a
+   !> record at each); a message counts the lines as they end.
+   subroutine points_file_line_ends(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: lf = achar(10), cr = achar(13)
+      character(len=*), parameter :: body(3) = [character(len=9) :: "1.48 2.47", "3.70 2.47", "5.0 0.76"]
+      character(len=2), parameter :: ends(3) = [character(len=2) :: lf, cr//lf, cr]
+      real(wp), allocatable :: pairs(:, :)
+      type(error_t), allocatable :: error
+      integer :: k
+      do k = 1, size(ends)
+         call read_points_text("# the paper's points"//trim(ends(k))//trim(body(1))//trim(ends(k))// &
+                               trim(body(2))//"  # (b)"//trim(ends(k))//trim(ends(k))//trim(body(3))// &
+                               trim(ends(k)), pairs, error)
+         call check(ctx, .not. allocated(error), "read, line end "//integer_text(k))
+         if (allocated(error)) then
+            call check(ctx, .false., error%message)
+            cycle
+         end if
+         call check(ctx, size(pairs, 2) == 3, "three points, line end "//integer_text(k))
+         if (size(pairs, 2) == 3) call check(ctx, pairs(1, 3) == 5.0_wp .and. pairs(2, 2) == 2.47_wp, &
+                                             "their values, line end "//integer_text(k))
+      end do
+      ! CR alone, then mixed with LF: the bad line is the one an editor shows as line 3
+      call read_points_text("1 2"//cr//"3 4"//cr//"5"//cr//"7 8"//lf, pairs, error)
+      call check(ctx, allocated(error), "a line with one number")
+      if (allocated(error)) call check(ctx, index(error%message, "line 3: expected two numbers") > 0, &
+                                       "names line 3: "//error%message)
+      call read_points_text("1 2"//lf//"3 4"//cr//"5"//lf, pairs, error)
+      call check(ctx, allocated(error), "a line with one number, mixed line ends")
+      if (allocated(error)) call check(ctx, index(error%message, "line 3: expected two numbers") > 0, &
+                                       "names line 3 (mixed line ends): "//error%message)
+   end subroutine points_file_line_ends
+
+   !> A UTF-8 byte-order mark at the start of a points file is skipped, as in a scene file
+   !> (it was refused with the mark, unseen, in the message); elsewhere it is no number.
+   subroutine points_file_byte_order_mark(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: lf = achar(10), bom = achar(239)//achar(187)//achar(191)
+      real(wp), allocatable :: pairs(:, :)
+      type(error_t), allocatable :: error
+      call read_points_text(bom//"1.48 2.47"//lf//"3.70 2.47"//lf, pairs, error)
+      call check(ctx, .not. allocated(error), "read with the mark before a point")
+      if (.not. allocated(error)) call check(ctx, size(pairs, 2) == 2 .and. pairs(1, 1) == 1.48_wp, "two points")
+      call read_points_text(bom//"# comment"//lf//"3.70 2.47"//lf, pairs, error)
+      call check(ctx, .not. allocated(error), "read with the mark before a comment")
+      if (.not. allocated(error)) call check(ctx, size(pairs, 2) == 1, "one point")
+      call read_points_text("1.48 2.47"//lf//bom//"3.70 2.47"//lf, pairs, error)
+      call check(ctx, allocated(error), "the mark on line 2 is no number")
+      if (allocated(error)) call check(ctx, index(error%message, "line 2: expected two numbers") > 0, &
+                                       "names line 2: "//error%message)
+   end subroutine points_file_byte_order_mark
 
    subroutine real_text_round_trip(ctx)
       type(test_context_t), intent(inout) :: ctx

@@ -5,7 +5,7 @@
 !> or of the exact β = 0 and π²), repeating a run from its output, the approximate
 !> curves of eq. (37) (S_formula = ±2 at every root), the Mathieu model's GSL column, and
 !> the critical amplitudes of a spring (`&physical` without `&chart`) against a scan of S
-!> along α with method auto and bisection.
+!> along α with method auto and bisection; progress inside one α (per curve point checked).
 module test_task_boundaries
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t, err_input
@@ -16,6 +16,7 @@ module test_task_boundaries
    use hillstab_batch_tasks, only: run_scene_file
    use hillstab_testing
    use hillstab_test_files, only: run_text_scene
+   use hillstab_test_progress, only: run_with_progress, progress_numbers
    use test_scene, only: scratch_prefix, write_file, read_lines, delete_file
    implicit none
    private
@@ -34,7 +35,9 @@ contains
          new_unittest("damping_refused", damping_refused), &
          new_unittest("spring_critical_amplitudes", spring_critical_amplitudes), &
          new_unittest("spring_bad_input", spring_bad_input), &
-         new_unittest("physical_curves_a_column", physical_curves_a_column)])
+         new_unittest("physical_curves_a_column", physical_curves_a_column), &
+         new_unittest("progress_within_an_alpha", progress_within_an_alpha), &
+         new_unittest("spring_progress", spring_progress)])
    end function collect_task_boundaries
 
    !> Two scene lines as one array (built here: typed array constructors with
@@ -471,4 +474,93 @@ contains
       end do
    end subroutine physical_curves_a_column
 
+   !> Progress inside one alpha (issue 19: `n_alpha = 1` up to beta = 1e6 ran two minutes in
+   !> silence): a step per block of Hill's matrix (four), then one per curve point checked by
+   !> auto, each reported (HILLSTAB_PROGRESS=always) up to 100%; the file as a quiet run's.
+   subroutine progress_within_an_alpha(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=1024), allocatable :: progress(:), lines(:), quiet_lines(:)
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: path, out, written, label
+      real :: percent
+      integer :: k, n_rows, n_points, n_alphas, done, total, last_done
+      logical :: ok, in_order
+      out = scratch_prefix("bnd_progress")
+      path = out//".nml"
+      call write_file(path, two_lines("&scene task = 'boundaries', output = '"//out//"' /", &
+                                      "&chart n_alpha = 1, alpha_min = 5, alpha_max = 5, beta_min = -2, "// &
+                                      "beta_max = 60 /"))
+      call run_with_progress(path, progress, error, written)
+      call check(ctx, .not. allocated(error), "the run")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         call delete_file(path)
+         return
+      end if
+      lines = read_lines(written)
+      n_rows = count(lines(:)(1:1) /= "#" .and. len_trim(lines) > 0)
+      call check(ctx, n_rows >= 8, "several curves cross the window at alpha = 5")
+      n_points = 0
+      n_alphas = 0
+      last_done = 0
+      in_order = .true.
+      do k = 1, size(progress)
+         call progress_numbers(progress(k), percent, done, total, label, ok)
+         call check(ctx, ok, "a progress line: "//trim(progress(k)))
+         if (label == "Hill blocks") then
+            n_alphas = n_alphas + 1
+            call check(ctx, done == n_alphas .and. total == 4, "four blocks of Hill's matrix: "//trim(progress(k)))
+         else if (label == "curve points") then
+            n_points = n_points + 1
+            call check(ctx, total == n_rows, "as many curve points as data rows: "//trim(progress(k)))
+            in_order = in_order .and. done == last_done + 1
+            last_done = done
+            if (done == total) call check(ctx, real(percent, wp), 100.0_wp, abs=0.0_wp, message="100% at the end")
+         else
+            call check(ctx, .false., "unexpected unit: "//trim(progress(k)))
+         end if
+      end do
+      call check(ctx, n_alphas == 4, "a step per block of Hill's matrix at the one alpha")
+      call check(ctx, n_points == n_rows .and. in_order, "a step per curve point, in order")
+      call run_scene_file(path, .true., error, written)
+      call check(ctx, .not. allocated(error), "the quiet run")
+      quiet_lines = read_lines(written)
+      call check(ctx, size(quiet_lines) == size(lines), "as many lines quiet")
+      if (size(quiet_lines) == size(lines)) call check(ctx, all(quiet_lines == lines), "the same file quiet")
+      call delete_file(written)
+      call delete_file(path)
+   end subroutine progress_within_an_alpha
+
+   !> The critical amplitudes of a spring: progress over the checks by auto of the crossings
+   !> and of the verdicts between them (2 n + 1 for n crossings).
+   subroutine spring_progress(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=1024), allocatable :: progress(:), lines(:)
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: path, out, written, label
+      real :: percent
+      integer :: k, n_rows, done, total
+      logical :: ok
+      out = scratch_prefix("bnd_spring_progress")
+      path = out//".nml"
+      call write_file(path, two_lines("&scene task = 'boundaries', output = '"//out//"' /", &
+                                      "&physical omega = 10, r0 = 0.1, g = 9.81 /"))
+      call run_with_progress(path, progress, error, written)
+      call check(ctx, .not. allocated(error), "the run")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         call delete_file(path)
+         return
+      end if
+      lines = read_lines(written)
+      n_rows = count(lines(:)(1:1) /= "#" .and. len_trim(lines) > 0)
+      call check(ctx, n_rows >= 1 .and. size(progress) == 2*n_rows + 1, "a line per check by auto")
+      do k = 1, size(progress)
+         call progress_numbers(progress(k), percent, done, total, label, ok)
+         call check(ctx, ok .and. label == "auto checks" .and. done == k .and. total == 2*n_rows + 1, &
+                    "progress line "//trim(progress(k)))
+      end do
+      call delete_file(written)
+      call delete_file(path)
+   end subroutine spring_progress
 end module test_task_boundaries

@@ -11,6 +11,7 @@ module test_tasks
    use hillstab_batch_cli, only: printable
    use hillstab_testing
    use hillstab_test_files, only: run_text_scene, check_rerun
+   use hillstab_test_progress, only: run_with_progress, progress_numbers
    use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text, &
       bad_case_t, bad_cases, bad_case_text, write_bad_points_files, delete_bad_points_files, c_getpid, any_temp_file
    implicit none
@@ -43,7 +44,8 @@ contains
          new_unittest("planted_links_untouched", planted_links_untouched), &
          new_unittest("long_file_names", long_file_names), &
          new_unittest("messages_printable", messages_printable), &
-         new_unittest("unwritable_output", unwritable_output)])
+         new_unittest("unwritable_output", unwritable_output), &
+         new_unittest("progress_every_task", progress_every_task)])
    end function collect_tasks
 
    !> The numeric rows of a file: each must hold exactly `n_columns` numbers.
@@ -1139,4 +1141,63 @@ contains
          call delete_file(path)
       end subroutine expect
    end subroutine columns_state_their_accuracy
+   !> Every task reports its progress in the same line (percentage, units done of the total,
+   !> rate, time left): with HILLSTAB_PROGRESS=always each update is a line, the units done
+   !> grow, the total stays, the last line says 100%.
+   subroutine progress_every_task(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=100), parameter :: scenes(2, 7) = reshape([character(len=100) :: &
+         "task = 'chart'", "&chart n_alpha = 3, n_beta = 4 /", &
+         "task = 'points'", "&points file = 'data/points/fig4.dat' /", &
+         "task = 'coefficient'", "&coefficient n_tau = 10000 /", &
+         "task = 'boundaries'", "&chart n_alpha = 3, alpha_max = 5, beta_max = 20 /", &
+         "task = 'series'", "&series periods = 3, samples_per_period = 10 /", &
+         "task = 'lyapunov'", "&chart n_alpha = 2, n_beta = 2 / &series periods = 10 /", &
+         "task = 'poincare'", "&series periods = 5 / &poincare phi0s = 0.05, 0.1 /"], [2, 7])
+      character(len=1024), allocatable :: progress(:)
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: path, out, written, label, task, previous_label
+      real :: percent, last_percent
+      integer :: i, k, done, total, last_done, first_total
+      logical :: ok, growing
+      do i = 1, size(scenes, 2)
+         task = trim(scenes(1, i))
+         out = scratch_prefix("progress_task")
+         path = out//".nml"
+         call write_file(path, [padded("&scene "//task//", output = '"//out//"' /"), padded(scenes(2, i))])
+         call run_with_progress(path, progress, error, written)
+         call check(ctx, .not. allocated(error), "runs: "//task)
+         if (allocated(error)) then
+            call check(ctx, .false., error%message)
+            call delete_file(path)
+            cycle
+         end if
+         call check(ctx, size(progress) >= 1, "progress lines: "//task)
+         growing = .true.
+         previous_label = ""
+         do k = 1, size(progress)
+            call progress_numbers(progress(k), percent, done, total, label, ok)
+            call check(ctx, ok .and. len(label) > 0, task//": the form of "//trim(progress(k)))
+            if (label /= previous_label) then
+               ! a new count (boundaries: alphas by Hill's method, then curve points checked)
+               previous_label = label
+               first_total = total
+               last_done = 0
+               last_percent = 0.0
+            end if
+            growing = growing .and. done > last_done .and. percent >= last_percent .and. total == first_total
+            last_done = done
+            last_percent = percent
+         end do
+         call check(ctx, growing, task//": units done grow to one total")
+         if (size(progress) >= 1) then
+            call progress_numbers(progress(size(progress)), percent, done, total, label, ok)
+            call check(ctx, done == total .and. abs(percent - 100.0) < 0.05, task//": 100% at the end: "// &
+                       trim(progress(size(progress))))
+         end if
+         call delete_file(written)
+         call delete_file(path)
+      end do
+   end subroutine progress_every_task
+
 end module test_tasks

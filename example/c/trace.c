@@ -1,5 +1,6 @@
 /* Links against an installed hillstab through its C header: the version, eq. (37) and a
- * segmented trace at the paper's case (b), an error status and an overflow. */
+ * segmented trace at the paper's case (b), an error status (the outputs untouched) and an
+ * overflow. */
 #include <stdio.h>
 #include <string.h>
 #include <math.h>
@@ -20,11 +21,14 @@ int main(void) {
   printf("C: S(eq. 37) = %.6f, S(4096 pieces) = %.6f, status %d\n", paper, s, status);
   if (status != 0 || fabs(s + 2.9343) > 1e-3 || fabs(paper + 3.6282) > 1e-3) return 1;
   if (hillstab_trace_paper(3.70, 2.47, 0.0) != paper) return 1;
+  /* an error leaves the outputs as they were */
+  s = -7.0; log_abs = -8.0; overflow = -9;
   status = hillstab_trace(HILLSTAB_MODEL_ELASTIC, 10.0, 2.47, 0.0, HILLSTAB_METHOD_FORMULA, 2, 1, 1e-10,
                           &s, &log_abs, &overflow);
   hillstab_error_message(status, message, sizeof message);
-  printf("C: alpha = 10 -> status %d (%s)\n", status, message);
-  if (status != HILLSTAB_ERR_INVALID_PARAMETER) return 1;
+  printf("C: alpha = 10 -> status %d (%s), outputs %s\n", status, message,
+         s == -7.0 && log_abs == -8.0 && overflow == -9 ? "untouched" : "CHANGED");
+  if (status != HILLSTAB_ERR_INVALID_PARAMETER || s != -7.0 || log_abs != -8.0 || overflow != -9) return 1;
   /* alpha = 0, beta = -1e6: S = 2 cosh 2000 overflows; the checked closed form says so and
    * gives ln S, where hillstab_trace_paper returns DBL_MAX alone */
   status = hillstab_trace_paper_checked(0.0, -1.0e6, 0.0, &paper, &log_abs, &overflow);

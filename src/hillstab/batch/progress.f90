@@ -1,6 +1,10 @@
 !> Progress on stderr for runs longer than about a second: percentage, points, rate and
 !> time left, redrawn in place on a terminal, a line every 5 s otherwise.
 !>
+!> The environment variable HILLSTAB_PROGRESS=always reports every update that advances the
+!> count at once, a line each (not redrawn), whether or not stderr is a terminal and however
+!> short the run: for tests of what a task counts, and for logs that should show each step.
+!>
 !>```fortran
 !> type(progress_t) :: progress
 !> call progress_begin(progress, 1000_int64, quiet=.false.)
@@ -14,13 +18,15 @@ module hillstab_batch_progress
    use, intrinsic :: iso_c_binding, only: c_int
    implicit none
    private
-   public :: progress_t, progress_begin, progress_update, progress_end
+   public :: progress_t, progress_begin, progress_update, progress_end, rate_text
 
    !> Progress on stderr for runs longer than about a second.
    type :: progress_t
       logical :: enabled = .false.      !! not quiet
       logical :: shown = .false.        !! something has been printed
       logical :: terminal = .false.     !! stderr is a terminal: redraw one line
+      logical :: always = .false.       !! HILLSTAB_PROGRESS=always: every advance, a line each
+      integer(int64) :: reported = -1   !! points done at the last report
       integer(int64) :: total = 0       !! points to compute
       integer(int64) :: start = 0       !! clock at the start
       integer(int64) :: last = 0        !! clock at the last report
@@ -41,8 +47,19 @@ contains
       progress%total = total
       call system_clock(progress%start, progress%ticks)
       progress%last = progress%start
-      if (progress%enabled) progress%terminal = c_isatty(2_c_int) == 1
+      if (progress%enabled) then
+         progress%always = progress_always()
+         progress%terminal = c_isatty(2_c_int) == 1 .and. .not. progress%always
+      end if
    end subroutine progress_begin
+
+   !> Whether HILLSTAB_PROGRESS is `always`.
+   logical function progress_always()
+      character(len=16) :: value
+      integer :: length, status
+      call get_environment_variable("HILLSTAB_PROGRESS", value, length, status)
+      progress_always = status == 0 .and. value == "always"
+   end function progress_always
 
    !> Report `done` of `total` points: percentage, rate and time left, once the run
    !> has taken a second; redrawn in place on a terminal, a line every 5 s otherwise.
@@ -53,18 +70,27 @@ contains
       real(wp) :: elapsed, since_last, rate, left, interval
       character(len=160) :: text
       character(len=12) :: left_text
-      if (.not. progress%enabled) return
+      if (.not. progress%enabled .or. progress%total <= 0) return
       call system_clock(now)
       elapsed = real(now - progress%start, wp)/progress%ticks
       since_last = real(now - progress%last, wp)/progress%ticks
-      if (elapsed < 1.0_wp) return
-      interval = merge(0.25_wp, 5.0_wp, progress%terminal)
-      if (progress%shown .and. since_last < interval .and. done < progress%total) return
-      rate = real(done, wp)/elapsed
-      left = real(progress%total - done, wp)/max(rate, tiny(1.0_wp))
-      write (left_text, '(f12.1)') left
-      write (text, '(a,f5.1,a,i0,a,i0,a,i0,a)') "hillstab: ", 100.0_wp*done/progress%total, "% (", &
-         done, " of ", progress%total, " "//trim(progress%label)//", ", nint(rate, int64), " "// &
+      if (progress%always) then
+         if (done == progress%reported) return
+      else
+         if (elapsed < 1.0_wp) return
+         interval = merge(0.25_wp, 5.0_wp, progress%terminal)
+         if (progress%shown .and. since_last < interval .and. done < progress%total) return
+      end if
+      ! (at least a microsecond: HILLSTAB_PROGRESS=always reports from the start)
+      rate = real(done, wp)/max(elapsed, 1.0e-6_wp)
+      if (done > 0) then
+         left = real(progress%total - done, wp)/rate
+         write (left_text, '(f12.1)') min(left, 1.0e9_wp)
+      else
+         left_text = "?"   ! nothing done yet: no rate (and no division by zero in a trapping build)
+      end if
+      write (text, '(a,f5.1,a,i0,a,i0,a)') "hillstab: ", 100.0_wp*done/progress%total, "% (", &
+         done, " of ", progress%total, " "//trim(progress%label)//", "//rate_text(rate)//" "// &
          trim(progress%label)//"/s, "
       text = trim(text)//" "//trim(adjustl(left_text))//" s left)"
       if (progress%terminal) then
@@ -75,7 +101,28 @@ contains
       flush (error_unit)
       progress%shown = .true.
       progress%last = now
+      progress%reported = done
    end subroutine progress_update
+
+   !> A rate as a whole number from 10 up, with two significant digits below (a unit that
+   !> takes many seconds, as a block of Hill's matrix near alpha = pi^2: "0.036").
+   function rate_text(rate) result(text)
+      real(wp), intent(in) :: rate  !! units per second, >= 0
+      character(len=:), allocatable :: text
+      character(len=32) :: buffer, form
+      integer :: decimals
+      if (rate >= 9.5_wp) then
+         write (buffer, '(i0)') nint(rate, int64)
+      else if (rate < 1.0e-6_wp) then
+         buffer = "0"
+      else
+         decimals = min(7, max(1, 1 - floor(log10(rate))))
+         write (form, '(a,i0,a)') "(f0.", decimals, ")"
+         write (buffer, form) rate
+         if (buffer(1:1) == ".") buffer = "0"//buffer
+      end if
+      text = trim(buffer)
+   end function rate_text
 
    !> End the progress display (a final new line on a terminal).
    subroutine progress_end(progress)

@@ -10,8 +10,11 @@
 !> - a model with an independent GSL witness (Mathieu: a_n, b_n) gets it as a column
 !>   beside Hill's values.
 !>
-!> The α values run in parallel (OpenMP, dynamic schedule: the truncation grows
-!> towards α → π²); the file is written once all are done, curve by curve.
+!> The work runs in parallel (OpenMP, dynamic schedule: the truncation grows towards
+!> α → π² and with β): for the exact methods the four blocks of Hill's matrix at every α,
+!> then the check by auto of every curve point found, each a unit of the progress line
+!> (one α may take minutes and hold hundreds of curves); for formula and segments the α
+!> values. The file is written once all are done, curve by curve.
 module hillstab_batch_task_boundaries
    use hillstab_core_kinds, only: wp, int64, pi2, version_string
    use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
@@ -25,7 +28,8 @@ module hillstab_batch_task_boundaries
    use hillstab_core_error, only: err_accuracy
    use hillstab_hill_coefficient, only: in_physical_domain, sampling_name
    use hillstab_integrate_monodromy, only: method_name, method_is_exact, method_uses_segments, method_pieces
-   use hillstab_curves_hill_method, only: hill_boundary_t, hill_boundaries, coexistence_threshold
+   use hillstab_curves_hill_method, only: hill_boundary_t, hill_boundaries, coexistence_threshold, &
+      hill_block_values_t, hill_block_values, hill_curves
    use hillstab_curves_boundaries, only: boundary_check_t, verify_boundary, approximate_root_t, approximate_boundaries, &
       beta_accuracy_factor, gsl_witness_max_q, alpha_crossing_t, alpha_crossings, crossing_search_gap
    use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, open_scene_output, physical_summary
@@ -232,12 +236,27 @@ contains
       real(wp), intent(in) :: alpha  !! the alpha of the rows
       type(boundary_row_t), allocatable, intent(out) :: rows(:)  !! one row per curve crossing the beta window
       type(error_t), allocatable, intent(out) :: error  !! what failed at this alpha; unallocated on success
+      integer :: i
+      call find_boundary_rows(scene, grid, alpha, rows, error)
+      if (exact_method(scene)) then
+         do i = 1, size(rows)
+            call check_boundary_row(scene, rows(i))
+         end do
+      end if
+   end subroutine compute_boundary_rows
+
+   !> The boundaries at one α before their check: Hill's method's curves (the check by auto,
+   !> `check_boundary_row`, still to do for each; beta_error holds Hill's own bound), or the
+   !> roots of the approximate methods (complete).
+   subroutine find_boundary_rows(scene, grid, alpha, rows, error)
+      type(scene_t), intent(in) :: scene
+      type(chart_grid_t), intent(in) :: grid
+      real(wp), intent(in) :: alpha
+      type(boundary_row_t), allocatable, intent(out) :: rows(:)
+      type(error_t), allocatable, intent(out) :: error
       type(hill_boundary_t), allocatable :: curves(:)
       type(approximate_root_t), allocatable :: roots(:)
-      type(boundary_check_t) :: check
-      type(error_t), allocatable :: cause
       integer :: i, j
-      logical :: available
       if (exact_method(scene)) then
          call hill_boundaries(scene%model, alpha, grid%beta_min, grid%beta_max, &
                               scene%method%tolerance, curves, error)
@@ -245,40 +264,7 @@ contains
             allocate (rows(0))
             return
          end if
-         allocate (rows(size(curves)))
-         do i = 1, size(curves)
-            rows(i)%alpha = alpha
-            rows(i)%beta = curves(i)%beta
-            rows(i)%trace_sign = curves(i)%trace_sign
-            rows(i)%order = curves(i)%order
-            rows(i)%branch = merge(1, 2, curves(i)%parity == 1)
-            rows(i)%coexistent = curves(i)%coexistent
-            rows(i)%modes = curves(i)%modes
-            call verify_boundary(scene%model, alpha, curves(i)%beta, curves(i)%trace_sign, scene%method%tolerance, &
-                                 check, cause)
-            rows(i)%check = check%trace
-            rows(i)%beta_error = max(curves(i)%error_bound, check%beta_error)
-            if (allocated(cause)) then
-               rows(i)%status = status_failed
-               deallocate (cause)
-            else if (.not. check%passed) then
-               rows(i)%status = status_failed
-            else if (check%roundoff) then
-               rows(i)%status = status_roundoff
-            end if
-            if (model_has_witness(scene%model)) then
-               call model_witness_beta(scene%model, curves(i)%order, curves(i)%parity, alpha, rows(i)%beta_gsl, &
-                                       available)
-               if (.not. available) then
-                  rows(i)%gsl_ok = 0
-                  rows(i)%beta_gsl = rows(i)%beta
-               else if (abs(rows(i)%beta_gsl - rows(i)%beta) <= gsl_agreement*max(1.0_wp, abs(rows(i)%beta))) then
-                  rows(i)%gsl_ok = 1
-               else
-                  rows(i)%gsl_ok = 2   ! GSL computed a value that disagrees with Hill's method: flagged
-               end if
-            end if
-         end do
+         rows = rows_of_curves(alpha, curves)
       else
          call approximate_boundaries(scene%model, alpha, scene%method, grid%beta_min, grid%beta_max, &
                                      max(grid%n_beta, 2), scene%method%tolerance, roots, error)
@@ -307,13 +293,66 @@ contains
             end do
          end do
       end if
-   end subroutine compute_boundary_rows
+   end subroutine find_boundary_rows
+
+   !> The rows of Hill's method's curves at one alpha, before their check (beta_error: Hill's
+   !> own bound).
+   function rows_of_curves(alpha, curves) result(rows)
+      real(wp), intent(in) :: alpha
+      type(hill_boundary_t), intent(in) :: curves(:)
+      type(boundary_row_t), allocatable :: rows(:)
+      integer :: i
+      allocate (rows(size(curves)))
+      do i = 1, size(curves)
+         rows(i)%alpha = alpha
+         rows(i)%beta = curves(i)%beta
+         rows(i)%trace_sign = curves(i)%trace_sign
+         rows(i)%order = curves(i)%order
+         rows(i)%branch = merge(1, 2, curves(i)%parity == 1)
+         rows(i)%coexistent = curves(i)%coexistent
+         rows(i)%modes = curves(i)%modes
+         rows(i)%beta_error = curves(i)%error_bound
+      end do
+   end function rows_of_curves
+
+   !> One boundary of Hill's method checked by method auto (its status, check and beta_error),
+   !> with GSL's witness value for a model that has one.
+   subroutine check_boundary_row(scene, row)
+      type(scene_t), intent(in) :: scene
+      type(boundary_row_t), intent(inout) :: row
+      type(boundary_check_t) :: check
+      type(error_t), allocatable :: cause
+      logical :: available
+      call verify_boundary(scene%model, row%alpha, row%beta, row%trace_sign, scene%method%tolerance, check, cause)
+      row%check = check%trace
+      row%beta_error = max(row%beta_error, check%beta_error)
+      if (allocated(cause)) then
+         row%status = status_failed
+      else if (.not. check%passed) then
+         row%status = status_failed
+      else if (check%roundoff) then
+         row%status = status_roundoff
+      end if
+      if (model_has_witness(scene%model)) then
+         ! the parity as hill_boundary_t has it: +1 even (a_n), -1 odd (b_n)
+         call model_witness_beta(scene%model, row%order, merge(1, -1, row%branch == 1), row%alpha, row%beta_gsl, &
+                                 available)
+         if (.not. available) then
+            row%gsl_ok = 0
+            row%beta_gsl = row%beta
+         else if (abs(row%beta_gsl - row%beta) <= gsl_agreement*max(1.0_wp, abs(row%beta))) then
+            row%gsl_ok = 1
+         else
+            row%gsl_ok = 2   ! GSL computed a value that disagrees with Hill's method: flagged
+         end if
+      end if
+   end subroutine check_boundary_row
 
    !> The boundaries task.
    subroutine boundaries_run(self, scene, quiet, error)
       class(boundaries_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! a validated boundaries scene
-      logical, intent(in) :: quiet  !! no progress on stderr (alphas done)
+      logical, intent(in) :: quiet  !! no progress on stderr (alphas done, then curve points checked)
       type(error_t), allocatable, intent(out) :: error  !! what failed; unallocated on success
       type(output_file_t) :: file
       type(progress_t) :: progress
@@ -327,7 +366,7 @@ contains
       real(wp) :: first_failure(2)
       type(column_t), allocatable :: table(:)
       if (self%spring) then
-         call spring_run(scene, error)
+         call spring_run(scene, quiet, error)
          return
       end if
       if (scene%epsilon > 0.0_wp) then   ! damping from &physical kappa
@@ -340,23 +379,31 @@ contains
       mathieu = model_has_witness(scene%model)
       n_alpha = self%grid%n_alpha
       allocate (per_alpha(n_alpha))
-      call progress_begin(progress, int(n_alpha, int64), quiet, "alphas")
-      done = 0
-      !$omp parallel do schedule(dynamic) default(shared) private(i, cause)
-      do i = 1, n_alpha
-         call compute_boundary_rows(scene, self%grid, grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i), &
-                                    per_alpha(i)%rows, cause)
-         if (allocated(cause)) then
-            per_alpha(i)%failed = .true.
-            per_alpha(i)%message = cause%message
-         end if
-         !$omp critical (boundaries_progress)
-         done = done + 1
-         call progress_update(progress, done)
-         !$omp end critical (boundaries_progress)
-      end do
-      !$omp end parallel do
-      call progress_end(progress)
+      if (exact_method(scene)) then
+         ! the four blocks of Hill's matrix at every alpha, then the check of every curve point
+         ! by auto: the units of progress and of the parallel loops (near alpha = pi^2 or at
+         ! large |beta| one block takes many seconds and one alpha holds hundreds of curves)
+         call find_hill_rows(scene, self%grid, per_alpha, quiet)
+         call check_every_row(scene, per_alpha, quiet)
+      else
+         call progress_begin(progress, int(n_alpha, int64), quiet, "alphas")
+         done = 0
+         !$omp parallel do schedule(dynamic) default(shared) private(i, cause)
+         do i = 1, n_alpha
+            call find_boundary_rows(scene, self%grid, grid_value(self%grid%alpha_min, self%grid%alpha_max, &
+                                    n_alpha, i), per_alpha(i)%rows, cause)
+            if (allocated(cause)) then
+               per_alpha(i)%failed = .true.
+               per_alpha(i)%message = cause%message
+            end if
+            !$omp critical (boundaries_progress)
+            done = done + 1
+            call progress_update(progress, done)
+            !$omp end critical (boundaries_progress)
+         end do
+         !$omp end parallel do
+         call progress_end(progress)
+      end if
 
       ! the curves present anywhere, ordered by order, then branch
       allocate (keys(3, 0))
@@ -434,6 +481,93 @@ contains
       end if
    end subroutine boundaries_run
 
+   !> Hill's method at every alpha of the grid, block by block in parallel (with progress per
+   !> block), the blocks of each alpha then joined into its rows (as `hill_boundaries` does);
+   !> an alpha whose block failed has no rows and the first failing block's message.
+   subroutine find_hill_rows(scene, grid, per_alpha, quiet)
+      type(scene_t), intent(in) :: scene
+      type(chart_grid_t), intent(in) :: grid
+      type(alpha_rows_t), intent(inout) :: per_alpha(:)
+      logical, intent(in) :: quiet
+      type(hill_block_values_t), allocatable :: blocks(:, :)
+      type(hill_boundary_t), allocatable :: curves(:)
+      type(progress_t) :: progress
+      type(error_t), allocatable :: cause
+      type(alpha_rows_t), allocatable :: outcomes(:, :)   ! failed and message per block
+      integer(int64) :: done
+      integer :: i, k, block, n_alpha
+      n_alpha = size(per_alpha)
+      allocate (blocks(4, n_alpha), outcomes(4, n_alpha))
+      call progress_begin(progress, 4_int64*n_alpha, quiet, "Hill blocks")
+      done = 0
+      !$omp parallel do schedule(dynamic) default(shared) private(k, i, block, cause)
+      do k = 1, 4*n_alpha
+         i = (k - 1)/4 + 1
+         block = k - 4*(i - 1)
+         call hill_block_values(scene%model, grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i), block, &
+                                grid%beta_min, grid%beta_max, scene%method%tolerance, blocks(block, i), cause)
+         if (allocated(cause)) then
+            outcomes(block, i)%failed = .true.
+            outcomes(block, i)%message = cause%message
+         end if
+         !$omp critical (boundaries_progress)
+         done = done + 1
+         call progress_update(progress, done)
+         !$omp end critical (boundaries_progress)
+      end do
+      !$omp end parallel do
+      call progress_end(progress)
+      do i = 1, n_alpha
+         block = findloc(outcomes(:, i)%failed, .true., dim=1)
+         if (block > 0) then
+            per_alpha(i)%failed = .true.
+            per_alpha(i)%message = outcomes(block, i)%message
+            allocate (per_alpha(i)%rows(0))
+         else
+            call hill_curves(scene%model, grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i), grid%beta_min, &
+                             grid%beta_max, blocks(:, i), curves)
+            per_alpha(i)%rows = rows_of_curves(grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i), curves)
+         end if
+      end do
+   end subroutine find_hill_rows
+
+   !> Every curve point of Hill's method checked by auto (`check_boundary_row`), in parallel
+   !> over all alphas, with progress per point.
+   subroutine check_every_row(scene, per_alpha, quiet)
+      type(scene_t), intent(in) :: scene
+      type(alpha_rows_t), intent(inout) :: per_alpha(:)
+      logical, intent(in) :: quiet
+      type(progress_t) :: progress
+      integer, allocatable :: alpha_of(:), row_of(:)
+      integer(int64) :: done
+      integer :: i, j, k, n
+      n = 0
+      do i = 1, size(per_alpha)
+         n = n + size(per_alpha(i)%rows)
+      end do
+      allocate (alpha_of(n), row_of(n))
+      k = 0
+      do i = 1, size(per_alpha)
+         do j = 1, size(per_alpha(i)%rows)
+            k = k + 1
+            alpha_of(k) = i
+            row_of(k) = j
+         end do
+      end do
+      call progress_begin(progress, int(n, int64), quiet, "curve points")
+      done = 0
+      !$omp parallel do schedule(dynamic) default(shared) private(k)
+      do k = 1, n
+         call check_boundary_row(scene, per_alpha(alpha_of(k))%rows(row_of(k)))
+         !$omp critical (boundaries_progress)
+         done = done + 1
+         call progress_update(progress, done)
+         !$omp end critical (boundaries_progress)
+      end do
+      !$omp end parallel do
+      call progress_end(progress)
+   end subroutine check_every_row
+
    !> The columns of the critical amplitudes of a spring.
    function spring_columns() result(table)
       type(column_t), allocatable :: table(:)
@@ -455,9 +589,12 @@ contains
    !> The critical amplitudes of the spring of `&physical`: every 0 <= a < rho where a
    !> transition curve crosses the spring's beta (alpha_crossings), each checked by auto;
    !> the header states the unstable intervals of a in metres, from S by auto between them.
-   subroutine spring_run(scene, error)
+   subroutine spring_run(scene, quiet, error)
       type(scene_t), intent(in) :: scene
+      logical, intent(in) :: quiet
       type(error_t), allocatable, intent(out) :: error
+      type(progress_t) :: progress
+      integer(int64) :: done
       type(alpha_crossing_t), allocatable :: crossings(:)
       type(boundary_check_t), allocatable :: checks(:)
       integer, allocatable :: statuses(:)
@@ -483,6 +620,9 @@ contains
          return
       end if
       allocate (checks(size(crossings)), statuses(size(crossings)))
+      ! progress over the checks of the crossings and the verdicts between them, by auto
+      call progress_begin(progress, int(2*size(crossings) + 1, int64), quiet, "auto checks")
+      done = 0
       !$omp parallel do schedule(dynamic) default(shared) private(j, cause)
       do j = 1, size(crossings)
          statuses(j) = status_ok
@@ -495,6 +635,10 @@ contains
          else if (checks(j)%roundoff) then
             statuses(j) = status_roundoff
          end if
+         !$omp critical (spring_progress)
+         done = done + 1
+         call progress_update(progress, done)
+         !$omp end critical (spring_progress)
       end do
       !$omp end parallel do
       ! the verdict between the critical amplitudes, by S of auto at the middle of each piece
@@ -504,8 +648,13 @@ contains
       !$omp parallel do schedule(dynamic) default(shared) private(j)
       do j = 1, size(cuts) - 1
          if (cuts(j + 1) > cuts(j)) unstable(j) = auto_unstable(scene, 0.5_wp*(cuts(j) + cuts(j + 1)), beta)
+         !$omp critical (spring_progress)
+         done = done + 1
+         call progress_update(progress, done)
+         !$omp end critical (spring_progress)
       end do
       !$omp end parallel do
+      call progress_end(progress)
       intervals = unstable_text(cuts, unstable, rho, alpha_end)
       table = spring_columns()
       call write_header(file, spring_header(scene, table, rho, beta, alpha_end, intervals, size(crossings)), &

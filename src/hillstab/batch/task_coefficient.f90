@@ -15,6 +15,7 @@ module hillstab_batch_task_coefficient
    use hillstab_batch_columns, only: column_t, style_fortran_e17, columns_text, put_row, all_columns
    use hillstab_batch_chart_columns, only: common_header, stacked, header_bytes
    use hillstab_batch_output, only: output_file_t, finish_output, write_header, write_text
+   use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -187,7 +188,7 @@ contains
    subroutine coefficient_run(self, scene, quiet, error)
       class(coefficient_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
-      logical, intent(in) :: quiet  !! unused: the task is short
+      logical, intent(in) :: quiet  !! no progress on stderr (rows written)
       type(error_t), allocatable, intent(out) :: error  !! err_io when the file cannot be written
       type(output_file_t) :: file
       type(hill_model_t) :: model
@@ -196,6 +197,7 @@ contains
       character(len=:), allocatable :: lines(:), q_line, segments_line, columns_line, line
       real(wp) :: tau, h
       integer :: i, k, n_alpha, n_pieces, piece, pos
+      type(progress_t) :: progress
 
       n_alpha = size(self%alphas)
       n_pieces = scene%method%n_segments
@@ -226,6 +228,7 @@ contains
       if (allocated(error)) return
       call write_header(file, lines, columns_text(table, all_columns(table)), error)
       allocate (character(len=25*size(row)) :: line)
+      call progress_begin(progress, int(self%n_tau, int64), quiet, "rows")
       do i = 1, self%n_tau
          if (allocated(error)) exit
          tau = grid_value(self%tau_min, self%tau_max, self%n_tau, i)
@@ -240,7 +243,9 @@ contains
          call put_row(table, all_columns(table), row, line, pos)
          ! the rows end with one blank, as the files this task has always written
          call write_text(file, line(:pos)//" ", error)
+         if (mod(i, 4096) == 0 .or. i == self%n_tau) call progress_update(progress, int(i, int64))
       end do
+      call progress_end(progress)
       call finish_output(file, error)
    end subroutine coefficient_run
 end module hillstab_batch_task_coefficient

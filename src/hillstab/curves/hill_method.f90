@@ -65,6 +65,7 @@ module hillstab_curves_hill_method
    implicit none
    private
    public :: hill_boundary_t, hill_boundaries, hill_block_eigenvalues, hill_block_name
+   public :: hill_block_values_t, hill_block_values, hill_curves
    public :: block_periodic_even, block_periodic_odd, block_antiperiodic_even, block_antiperiodic_odd
    public :: formulation_inverted_pencil, formulation_pencil, formulation_nonsymmetric
    public :: hill_initial_modes, hill_max_modes, block_order, coexistence_threshold, structural_coexistence
@@ -92,6 +93,16 @@ module hillstab_curves_hill_method
    !> whose piecewise-constant Q has no structure to decide it by; the exact curves use
    !> `structural_coexistence`.
    real(wp), parameter :: coexistence_threshold = 100.0_wp
+
+   !> The converged eigenvalues of one block up to the top of a β window: what
+   !> `hill_boundaries` computes for each of the four blocks before it joins them. The blocks
+   !> are independent: a caller may compute them apart (in parallel, or reporting progress
+   !> per block: `hill_block_values`) and join them with `hill_curves`.
+   type :: hill_block_values_t
+      real(wp), allocatable :: values(:)   !! converged eigenvalues up to the top, ascending
+      real(wp), allocatable :: changes(:)  !! their change between the last two truncations
+      integer :: used = 0                  !! modes of the final truncation
+   end type hill_block_values_t
 
    !> One point of a transition curve at the α of the call.
    type :: hill_boundary_t
@@ -421,6 +432,7 @@ contains
    !> Every transition curve crossing β_min ≤ β ≤ β_max at this α, converged in
    !> the truncation to `tolerance`·max(1, |β|), ordered by β; with the coexistence
    !> of the two curves of each order decided (even when the partner lies outside).
+   !> (The four blocks by `hill_block_values`, joined by `hill_curves`.)
    subroutine hill_boundaries(kind, alpha, beta_min, beta_max, tolerance, curves, error, modes, formulation)
       integer, intent(in) :: kind          !! a model constant (hillstab_hill_models)
       real(wp), intent(in) :: alpha        !! α (ν for the Mathieu model)
@@ -431,14 +443,30 @@ contains
       type(error_t), allocatable, intent(out) :: error  !! failure to converge or LAPACK failure; unallocated on success
       integer, intent(out), optional :: modes(4)  !! final truncation of each block
       integer, intent(in), optional :: formulation  !! formulation_* (default inverted pencil)
-      real(wp), allocatable :: values(:, :)   ! (j, block): converged eigenvalues at most up to the top
-      real(wp), allocatable :: changes(:, :)
-      integer :: counts(4), used(4), block, j, m, n_out, jp, other
-      type(hill_boundary_t), allocatable :: all(:)
-      real(wp), allocatable :: block_values(:), block_changes(:)
-      real(wp) :: top, partner
-      logical :: found
+      type(hill_block_values_t) :: blocks(4)
+      integer :: block
       allocate (curves(0))
+      do block = block_periodic_even, block_antiperiodic_odd
+         call hill_block_values(kind, alpha, block, beta_min, beta_max, tolerance, blocks(block), error, formulation)
+         if (allocated(error)) return
+      end do
+      call hill_curves(kind, alpha, beta_min, beta_max, blocks, curves)
+      if (present(modes)) modes = blocks%used
+   end subroutine hill_boundaries
+
+   !> One block's eigenvalues for the window [beta_min, beta_max] of `hill_boundaries`
+   !> (converged up to one order above it), with the same checks of the arguments.
+   subroutine hill_block_values(kind, alpha, block, beta_min, beta_max, tolerance, block_values, error, formulation)
+      integer, intent(in) :: kind          !! a model constant (hillstab_hill_models)
+      real(wp), intent(in) :: alpha        !! α (ν for the Mathieu model)
+      integer, intent(in) :: block         !! block_periodic_even … block_antiperiodic_odd
+      real(wp), intent(in) :: beta_min, beta_max  !! the β window
+      real(wp), intent(in) :: tolerance    !! convergence target on β, relative to max(1, |β|)
+      type(hill_block_values_t), intent(out) :: block_values  !! the converged eigenvalues of the block
+      type(error_t), allocatable, intent(out) :: error  !! failure to converge or LAPACK failure; unallocated on success
+      integer, intent(in), optional :: formulation  !! formulation_* (default inverted pencil)
+      real(wp) :: top
+      allocate (block_values%values(0), block_values%changes(0))
       if (.not. (ieee_is_finite(beta_min) .and. ieee_is_finite(beta_max) .and. ieee_is_finite(tolerance))) then
          call set_error(error, err_invalid_parameter, "Hill's method: beta window and tolerance must be finite")
          return
@@ -447,50 +475,59 @@ contains
          call set_error(error, err_invalid_parameter, "Hill's method: need beta_min <= beta_max and tolerance > 0")
          return
       end if
+      if (block < block_periodic_even .or. block > block_antiperiodic_odd) then
+         call set_error(error, err_invalid_parameter, "Hill's method: block must be 1 to 4")
+         return
+      end if
       call check_parameters(kind, alpha, error)
       if (allocated(error)) return
       ! one order above the window too, so that every tongue reaching into it has both edges
       top = beta_max + 1.0_wp + 0.25_wp*abs(beta_max)
-      counts = 0
-      allocate (values(0, 4), changes(0, 4))
+      call converged_block(kind, alpha, block, top, tolerance, block_values%values, block_values%changes, &
+                           block_values%used, error, formulation)
+   end subroutine hill_block_values
+
+   !> The transition curves crossing [beta_min, beta_max] from the four blocks'
+   !> eigenvalues (`hill_block_values` with this window), ordered by β, with their error
+   !> bounds and the coexistence of the two curves of each order.
+   subroutine hill_curves(kind, alpha, beta_min, beta_max, blocks, curves)
+      integer, intent(in) :: kind          !! a model constant (hillstab_hill_models)
+      real(wp), intent(in) :: alpha        !! α (ν for the Mathieu model)
+      real(wp), intent(in) :: beta_min, beta_max  !! the β window
+      type(hill_block_values_t), intent(in) :: blocks(4)  !! the four blocks, in block order
+      type(hill_boundary_t), allocatable, intent(out) :: curves(:)  !! the curves, by beta
+      integer :: counts(4), block, j, m, n_out, jp, other
+      type(hill_boundary_t), allocatable :: all(:)
+      logical :: found
       do block = block_periodic_even, block_antiperiodic_odd
-         call converged_block(kind, alpha, block, top, tolerance, block_values, block_changes, used(block), error, &
-                              formulation)
-         if (allocated(error)) return
-         counts(block) = size(block_values)
-         if (counts(block) > size(values, 1)) call grow(values, changes, counts(block))
-         values(:counts(block), block) = block_values
-         changes(:counts(block), block) = block_changes
+         counts(block) = size(blocks(block)%values)
       end do
-      if (present(modes)) modes = used
       allocate (all(sum(counts)))
       n_out = 0
       do block = block_periodic_even, block_antiperiodic_odd
-         do j = 1, counts(block)
-            if (values(j, block) < beta_min .or. values(j, block) > beta_max) cycle
-            n_out = n_out + 1
-            all(n_out)%beta = values(j, block)
-            all(n_out)%trace_sign = merge(2, -2, block <= block_periodic_odd)
-            all(n_out)%order = block_order(block, j)
-            all(n_out)%parity = merge(1, -1, block == block_periodic_even .or. block == block_antiperiodic_even)
-            all(n_out)%modes = used(block)
-            all(n_out)%change = changes(j, block)
-            all(n_out)%error_bound = max(changes(j, block), &
-                                         rounding_bound(kind, alpha, values(1, block), values(j, block), used(block)))
-            ! the partner of the same order in the other block of this kind
-            all(n_out)%coexistent = .false.
-            if (all(n_out)%order > 0) then
-               other = partner_block(block)
-               found = .false.
-               do jp = 1, counts(other)
-                  if (block_order(other, jp) == all(n_out)%order) then
-                     partner = values(jp, other)
-                     found = .true.
-                  end if
-               end do
-               if (found) all(n_out)%coexistent = structural_coexistence(kind, alpha, all(n_out)%trace_sign)
-            end if
-         end do
+         associate (values => blocks(block)%values, changes => blocks(block)%changes, used => blocks(block)%used)
+            do j = 1, counts(block)
+               if (values(j) < beta_min .or. values(j) > beta_max) cycle
+               n_out = n_out + 1
+               all(n_out)%beta = values(j)
+               all(n_out)%trace_sign = merge(2, -2, block <= block_periodic_odd)
+               all(n_out)%order = block_order(block, j)
+               all(n_out)%parity = merge(1, -1, block == block_periodic_even .or. block == block_antiperiodic_even)
+               all(n_out)%modes = used
+               all(n_out)%change = changes(j)
+               all(n_out)%error_bound = max(changes(j), rounding_bound(kind, alpha, values(1), values(j), used))
+               ! the partner of the same order in the other block of this kind
+               all(n_out)%coexistent = .false.
+               if (all(n_out)%order > 0) then
+                  other = partner_block(block)
+                  found = .false.
+                  do jp = 1, counts(other)
+                     if (block_order(other, jp) == all(n_out)%order) found = .true.
+                  end do
+                  if (found) all(n_out)%coexistent = structural_coexistence(kind, alpha, all(n_out)%trace_sign)
+               end if
+            end do
+         end associate
       end do
       ! ascending β
       curves = all(:n_out)
@@ -503,23 +540,12 @@ contains
          end do
       end do
    contains
-      subroutine grow(v, c, rows)
-         real(wp), allocatable, intent(inout) :: v(:, :), c(:, :)
-         integer, intent(in) :: rows
-         real(wp), allocatable :: t(:, :), u(:, :)
-         allocate (t(rows, 4), u(rows, 4))
-         t = 0.0_wp; u = 0.0_wp
-         t(:size(v, 1), :) = v
-         u(:size(c, 1), :) = c
-         call move_alloc(t, v)
-         call move_alloc(u, c)
-      end subroutine grow
       subroutine swap(a, b)
          type(hill_boundary_t), intent(inout) :: a, b
          type(hill_boundary_t) :: t
          t = a; a = b; b = t
       end subroutine swap
-   end subroutine hill_boundaries
+   end subroutine hill_curves
 
    pure integer function partner_block(block)
       integer, intent(in) :: block

@@ -155,16 +155,45 @@ contains
       real(wp), intent(in), optional :: t_out(:)  !! output times, monotone from t towards t_end
       real(wp), intent(out), optional :: y_out(:, :)  !! (size(y), size(t_out)) dense output there
       real(wp), intent(out), optional :: h_next  !! predicted next step (to resume an integration)
-      type(rk_driver_t), target :: d
+      ! t_out and y_out go on to the driver as ordinary arrays, empty when absent: gfortran 12
+      ! builds the descriptor of an absent optional array passed on to another optional dummy
+      ! from strides it set only when the array is present (offset = -stride1 - stride2 on
+      ! stale registers; the descriptor is then discarded, but UBSan reports the overflow:
+      ! scripts/sanitize/absent_optional.f90 shows it)
+      real(wp) :: no_times(0), no_states(0, 0)
 
       if (present(h_next)) h_next = 0.0_wp
-      call check_arguments(t, t_end, y, options, error, t_out, y_out)
+      call check_arguments(t, t_end, y, options, present(t_out), present(y_out), error)
+      if (.not. allocated(error) .and. present(t_out) .and. present(y_out)) &
+         call check_outputs(t, t_end, size(y), t_out, y_out, error)
       if (allocated(error)) then
          if (present(stats)) stats = work_stats_t()
          return
       end if
-      call start_driver(d, t, t_end, y, options, present(t_out) .or. options%dense_output)
-      if (present(t_out)) call fill_outputs(d, t_out, y_out)
+      if (present(t_out) .and. present(y_out)) then
+         call integrate_outputs(system, t, t_end, y, options, .true., t_out, y_out, error, stats, h_next)
+      else
+         call integrate_outputs(system, t, t_end, y, options, .false., no_times, no_states, error, stats, h_next)
+      end if
+   end subroutine rk_integrate
+
+   !> `rk_integrate` once its arguments are checked; `outputs` tells whether the caller gave
+   !> t_out and y_out (else both are empty).
+   subroutine integrate_outputs(system, t, t_end, y, options, outputs, t_out, y_out, error, stats, h_next)
+      class(rk_system_t), intent(inout) :: system
+      real(wp), intent(inout) :: t
+      real(wp), intent(in) :: t_end
+      real(wp), intent(inout) :: y(:)
+      type(rk_options_t), intent(in) :: options
+      logical, intent(in) :: outputs
+      real(wp), intent(in) :: t_out(:)
+      real(wp), intent(inout) :: y_out(:, :)
+      type(error_t), allocatable, intent(inout) :: error
+      type(work_stats_t), intent(out), optional :: stats
+      real(wp), intent(inout), optional :: h_next
+      type(rk_driver_t), target :: d
+      call start_driver(d, t, t_end, y, options, outputs .or. options%dense_output)
+      call fill_outputs(d, t_out, y_out)
       if (t == t_end) then
          call finish(d, t, y, stats)
          return
@@ -186,21 +215,21 @@ contains
          end if
       end if
       call finish(d, t, y, stats)
-   end subroutine rk_integrate
+   end subroutine integrate_outputs
 
    !> The arguments of `rk_integrate` checked: err_invalid_parameter naming the first bad one.
-   subroutine check_arguments(t, t_end, y, options, error, t_out, y_out)
+   !> (The shapes and values of t_out and y_out, when both are given, by `check_outputs`.)
+   subroutine check_arguments(t, t_end, y, options, has_t_out, has_y_out, error)
       real(wp), intent(in) :: t, t_end, y(:)
       type(rk_options_t), intent(in) :: options
+      logical, intent(in) :: has_t_out, has_y_out
       type(error_t), allocatable, intent(out) :: error
-      real(wp), intent(in), optional :: t_out(:)
-      real(wp), intent(in), optional :: y_out(:, :)
       character(len=160) :: message
       integer :: n
       n = size(y)
       if (options%method < 1 .or. options%method > size(rk_pairs)) then
          call set_error(error, err_invalid_parameter, "rk_integrate: unknown method")
-      else if (rk_pairs(options%method)%dense_order == 0 .and. (present(t_out) .or. options%dense_output)) then
+      else if (rk_pairs(options%method)%dense_order == 0 .and. (has_t_out .or. options%dense_output)) then
          call set_error(error, err_invalid_parameter, "rk_integrate: "//rk_method_name(options%method)// &
             " has no continuous extension of its order; use dop853 for t_out or dense_output")
       else if (n < 1) then
@@ -232,19 +261,26 @@ contains
          call set_error(error, err_invalid_parameter, "rk_integrate: h_max must be >= 0")
       else if (options%fac_min > 1.0_wp .or. (options%fac_max > 0.0_wp .and. options%fac_max < 1.0_wp)) then
          call set_error(error, err_invalid_parameter, "rk_integrate: need fac_min <= 1 <= fac_max")
-      else if (present(t_out) .neqv. present(y_out)) then
+      else if (has_t_out .neqv. has_y_out) then
          call set_error(error, err_invalid_parameter, "rk_integrate: t_out and y_out go together")
-      else if (present(t_out)) then
-         if (size(y_out, 1) /= n .or. size(y_out, 2) /= size(t_out)) then
-            call set_error(error, err_invalid_parameter, "rk_integrate: y_out must be (size(y), size(t_out))")
-         else if (.not. all(ieee_is_finite(t_out))) then
-            call set_error(error, err_invalid_parameter, "rk_integrate: non-finite output time")
-         else if (.not. outputs_ordered(t, t_end, t_out)) then
-            call set_error(error, err_invalid_parameter, &
-               "rk_integrate: t_out must be monotone from t towards t_end and lie in between")
-         end if
       end if
    end subroutine check_arguments
+
+   !> The output times and their array checked: err_invalid_parameter naming the first fault.
+   subroutine check_outputs(t, t_end, n, t_out, y_out, error)
+      real(wp), intent(in) :: t, t_end
+      integer, intent(in) :: n
+      real(wp), intent(in) :: t_out(:), y_out(:, :)
+      type(error_t), allocatable, intent(inout) :: error
+      if (size(y_out, 1) /= n .or. size(y_out, 2) /= size(t_out)) then
+         call set_error(error, err_invalid_parameter, "rk_integrate: y_out must be (size(y), size(t_out))")
+      else if (.not. all(ieee_is_finite(t_out))) then
+         call set_error(error, err_invalid_parameter, "rk_integrate: non-finite output time")
+      else if (.not. outputs_ordered(t, t_end, t_out)) then
+         call set_error(error, err_invalid_parameter, &
+            "rk_integrate: t_out must be monotone from t towards t_end and lie in between")
+      end if
+   end subroutine check_outputs
 
    logical function atol_components_valid(options, n) result(valid)
       type(rk_options_t), intent(in) :: options
@@ -382,8 +418,8 @@ contains
       real(wp), intent(in) :: t0
       type(rk_options_t), intent(in) :: options
       type(error_t), allocatable, intent(inout) :: error
-      real(wp), intent(in), optional :: t_out(:)
-      real(wp), intent(inout), optional :: y_out(:, :)
+      real(wp), intent(in) :: t_out(:)        !! output times (empty: none)
+      real(wp), intent(inout) :: y_out(:, :)
       real(wp), intent(inout), optional :: h_next
       real(wp) :: h, err
       integer :: i
@@ -396,7 +432,7 @@ contains
          end if
          call complete_step(d, system, merge(d%t_end, t0 + i*h, i == options%fixed_steps), error)
          if (allocated(error)) return
-         if (present(t_out)) call fill_outputs(d, t_out, y_out)
+         if (size(t_out) > 0) call fill_outputs(d, t_out, y_out)
          call system%observe(d%step, d%stop)
          if (d%stop) exit
       end do
@@ -409,8 +445,8 @@ contains
       class(rk_system_t), intent(inout) :: system
       type(rk_options_t), intent(in) :: options
       type(error_t), allocatable, intent(inout) :: error
-      real(wp), intent(in), optional :: t_out(:)
-      real(wp), intent(inout), optional :: y_out(:, :)
+      real(wp), intent(in) :: t_out(:)        !! output times (empty: none)
+      real(wp), intent(inout) :: y_out(:, :)
       real(wp), intent(inout), optional :: h_next
       real(wp) :: h, h_new, err, fac11, fac, direction, t_end
       type(controller_t) :: control
@@ -487,7 +523,7 @@ contains
             control%fac_old = max(err, 1.0e-4_wp)
             call complete_step(d, system, merge(t_end, d%step%t + h, last), error)
             if (allocated(error)) return
-            if (present(t_out)) call fill_outputs(d, t_out, y_out)
+            if (size(t_out) > 0) call fill_outputs(d, t_out, y_out)
             call system%observe(d%step, d%stop)
             if (last .or. d%stop) exit
             if (abs(h_new) > control%h_max) h_new = direction*control%h_max

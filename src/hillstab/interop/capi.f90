@@ -2,7 +2,9 @@
 !> The matching declarations are in include/hillstab.h. Every function returns a
 !> status: 0 on success, otherwise one of the hillstab_core_error codes; outputs are
 !> left untouched on failure, except status 7 (the tolerance is below the round-off level
-!> there), where they hold the best value double precision allows. `hillstab_error_message` turns a status into the name of
+!> there), where they hold the best value double precision allows. (The outputs are
+!> therefore `intent(inout)`: `intent(out)` lets a compiler drop their old value, and an
+!> optimizing Fortran caller does: it removes the store before the call as dead.) `hillstab_error_message` turns a status into the name of
 !> its code; `hillstab_last_error` gives the full message of the calling thread's most
 !> recent failed call (the same text as `error_t%message` in Fortran). `hillstab_version`
 !> and `hillstab_version_numbers` give the version of the library linked at run time
@@ -50,7 +52,7 @@ contains
       bind(C, name="hillstab_q")
       integer(c_int), value, intent(in) :: model  !! HILLSTAB_MODEL_ELASTIC (1) or HILLSTAB_MODEL_MATHIEU (2)
       real(c_double), value, intent(in) :: alpha, beta, epsilon, tau  !! alpha, beta, damping epsilon >= 0, and tau
-      real(c_double), intent(out) :: q  !! Q(tau) - epsilon**2/4
+      real(c_double), intent(inout) :: q  !! Q(tau) - epsilon**2/4 (untouched on failure)
       integer(c_int) :: status
       type(hill_model_t) :: m
       type(error_t), allocatable :: error
@@ -75,8 +77,8 @@ contains
       integer(c_int), value, intent(in) :: model, method, n_segments, sampling
       !> alpha, beta, damping epsilon >= 0; target error on S (exact methods)
       real(c_double), value, intent(in) :: alpha, beta, epsilon, tolerance
-      real(c_double), intent(out) :: trace, log_abs_trace  !! S (+-DBL_MAX on overflow) and ln|S|
-      integer(c_int), intent(out) :: overflow  !! 1 when |S| overflowed, else 0
+      real(c_double), intent(inout) :: trace, log_abs_trace  !! S (+-DBL_MAX on overflow) and ln|S|
+      integer(c_int), intent(inout) :: overflow  !! 1 when |S| overflowed, else 0
       integer(c_int) :: status
       real(c_double) :: log_modulus(2), floquet_exponent
       integer(c_int) :: stable, stable_paper
@@ -95,9 +97,9 @@ contains
       !> alpha, beta, damping epsilon >= 0; target error on S (exact methods)
       real(c_double), value, intent(in) :: alpha, beta, epsilon, tolerance
       !> S; ln|lambda| of x's multipliers, largest first; mu per unit tau
-      real(c_double), intent(out) :: trace, log_moduli(2), floquet_exponent
+      real(c_double), intent(inout) :: trace, log_moduli(2), floquet_exponent
       !> 1 when |S1| < 2 cosh epsilon; 1 when |S1| <= 2 (the paper's test)
-      integer(c_int), intent(out) :: stable, stable_paper
+      integer(c_int), intent(inout) :: stable, stable_paper
       integer(c_int) :: status
       real(c_double) :: log_abs_trace
       integer(c_int) :: overflow
@@ -166,9 +168,9 @@ contains
    function hillstab_c_trace_paper_checked(alpha, beta, epsilon, trace, log_abs_trace, overflow) result(status) &
       bind(C, name="hillstab_trace_paper_checked")
       real(c_double), value, intent(in) :: alpha, beta, epsilon  !! alpha, beta and damping epsilon (0: eq. (37))
-      real(c_double), intent(out) :: trace          !! S (+-DBL_MAX on overflow)
-      real(c_double), intent(out) :: log_abs_trace  !! ln|S|
-      integer(c_int), intent(out) :: overflow       !! 1 when |S| overflowed, else 0
+      real(c_double), intent(inout) :: trace          !! S (+-DBL_MAX on overflow)
+      real(c_double), intent(inout) :: log_abs_trace  !! ln|S|
+      integer(c_int), intent(inout) :: overflow       !! 1 when |S| overflowed, else 0
       integer(c_int) :: status
       real(c_double) :: log_modulus(2), floquet_exponent
       integer(c_int) :: stable, stable_paper
