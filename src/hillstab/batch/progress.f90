@@ -22,6 +22,7 @@ module hillstab_batch_progress
       logical :: shown = .false.        !! something has been printed
       logical :: terminal = .false.     !! stderr is a terminal: redraw one line
       integer(int64) :: total = 0       !! points to compute
+      integer(int64) :: before = 0      !! points done before this run (a resumed run)
       integer(int64) :: start = 0       !! clock at the start
       integer(int64) :: last = 0        !! clock at the last report
       integer(int64) :: ticks = 1       !! clock ticks per second
@@ -30,14 +31,18 @@ module hillstab_batch_progress
 
 contains
 
-   !> Start reporting the progress of a run of `total` points (nothing when quiet).
-   subroutine progress_begin(progress, total, quiet, label)
+   !> Start reporting the progress of a run of `total` points (nothing when quiet); a
+   !> resumed run gives the points an earlier run did (`before`): the rate and the time left
+   !> count only this run's.
+   subroutine progress_begin(progress, total, quiet, label, before)
       type(progress_t), intent(out) :: progress  !! the progress state
       integer(int64), intent(in) :: total  !! points to compute
       logical, intent(in) :: quiet  !! no progress on stderr
       character(len=*), intent(in), optional :: label  !! what is counted (default "points")
+      integer(int64), intent(in), optional :: before  !! points already done (default 0)
       progress%enabled = .not. quiet
       if (present(label)) progress%label = label
+      if (present(before)) progress%before = before
       progress%total = total
       call system_clock(progress%start, progress%ticks)
       progress%last = progress%start
@@ -60,7 +65,7 @@ contains
       if (elapsed < 1.0_wp) return
       interval = merge(0.25_wp, 5.0_wp, progress%terminal)
       if (progress%shown .and. since_last < interval .and. done < progress%total) return
-      rate = real(done, wp)/elapsed
+      rate = real(done - progress%before, wp)/elapsed
       left = real(progress%total - done, wp)/max(rate, tiny(1.0_wp))
       write (left_text, '(f12.1)') left
       write (text, '(a,f5.1,a,i0,a,i0,a,i0,a)') "hillstab: ", 100.0_wp*done/progress%total, "% (", &
