@@ -32,6 +32,7 @@ program tester
    use test_templates, only: collect_templates
    use test_symplectic, only: collect_symplectic
    use test_chaos, only: collect_chaos
+   use test_checkpoint, only: collect_checkpoint
    implicit none
    type(testsuite_t), allocatable :: suites(:)
    integer :: n_failed
@@ -42,7 +43,7 @@ program tester
              collect_batch(), collect_boundaries(), collect_task_boundaries(), &
              collect_lyapunov(), collect_poincare(), collect_task_lyapunov(), collect_task_poincare(), &
              collect_pendulum_analysis(), collect_task_series(), collect_output(), collect_symplectic(), &
-             collect_chaos()]
+             collect_chaos(), collect_checkpoint()]
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester
