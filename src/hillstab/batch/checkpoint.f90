@@ -48,7 +48,7 @@ module hillstab_batch_checkpoint
    private
    public :: checkpoint_options_t, checkpoint_state_t, checkpoint_directory, checkpoint_data, find_checkpoint, &
       make_checkpoint, save_checkpoint_state, remove_checkpoint, remove_stale_temporary, scene_difference, &
-      checkpoint_note, default_interval
+      checkpoint_note, default_interval, scene_text, scene_lines
    public :: checkpoint_none, checkpoint_usable, checkpoint_incomplete
 
    !> Seconds between two updates of a checkpoint by default.
@@ -91,7 +91,9 @@ module hillstab_batch_checkpoint
       integer(int64) :: first_inaccurate = 0      !! index of the first of them (0: none)
       integer(int64) :: n_failed = 0              !! failed points among them
       integer(int64) :: first_failed = 0          !! index of the first of them (0: none)
-      character(len=:), allocatable :: scene(:)   !! the effective scene's namelist lines
+      !> the effective scene's namelist lines, each ended by a new line (one string: gfortran 12
+      !> copies a deferred-length array component wrongly in intrinsic assignment)
+      character(len=:), allocatable :: scene
    end type checkpoint_state_t
 
 contains
@@ -223,7 +225,7 @@ contains
       type(checkpoint_state_t), intent(inout) :: state
       character(len=:), allocatable, intent(inout) :: reason
       logical :: ok
-      character(len=:), allocatable :: line, key, value, scene_text
+      character(len=:), allocatable :: line, key, value, collected
       integer :: unit, ios, at, n_scene
       logical :: have(8)
       ok = .false.
@@ -239,7 +241,7 @@ contains
          return
       end if
       have = .false.
-      scene_text = ""
+      collected = ""
       n_scene = 0
       do
          call read_text_line(unit, line, ios, max_length=1048576)
@@ -281,7 +283,7 @@ contains
             read (value, *, iostat=ios) state%n_failed, state%first_failed
             have(8) = .true.
          case ("scene")
-            scene_text = scene_text//value//new_line("a")
+            collected = collected//value//new_line("a")
             n_scene = n_scene + 1
          end select
          if (ios /= 0) exit
@@ -296,16 +298,27 @@ contains
          reason = "its state is inconsistent"
          return
       end if
-      state%scene = split_lines(scene_text, n_scene)
+      state%scene = collected
       ok = .true.
    end function read_state
 
-   !> The `n` lines of `text` (each ended by a new line) as an array.
-   pure function split_lines(text, n) result(lines)
-      character(len=*), intent(in) :: text
-      integer, intent(in) :: n
+   !> Namelist lines as one text, each trimmed and ended by a new line (`checkpoint_state_t%scene`).
+   pure function scene_text(lines) result(text)
+      character(len=*), intent(in) :: lines(:)  !! the lines
+      character(len=:), allocatable :: text
+      integer :: k
+      text = ""
+      do k = 1, size(lines)
+         text = text//trim(lines(k))//new_line("a")
+      end do
+   end function scene_text
+
+   !> The lines of a text whose every line ends with a new line, as an array.
+   pure function scene_lines(text) result(lines)
+      character(len=*), intent(in) :: text  !! lines, each ended by a new line
       character(len=:), allocatable :: lines(:)
-      integer :: k, start, at, width
+      integer :: k, n, start, at, width
+      n = count([(text(k:k) == new_line("a"), k=1, len(text))])
       width = 0
       start = 1
       do k = 1, n
@@ -320,7 +333,7 @@ contains
          lines(k) = text(start:at - 1)
          start = at + 1
       end do
-   end function split_lines
+   end function scene_lines
 
    !> Write `state` durably: to `state.new`, fsynced, renamed onto `state`, the directory
    !> fsynced (the caller has put the data it describes on the disk first).
@@ -332,7 +345,7 @@ contains
       type(c_ptr) :: stream
       integer(c_size_t) :: written
       integer(c_int) :: status
-      integer :: k
+      integer :: start, at
       text = state_format//new_line("a")// &
          "# the progress of an interrupted run, read by --resume; remove this directory to discard it"// &
          new_line("a")// &
@@ -346,8 +359,12 @@ contains
          "bytes = "//integer_text(state%bytes)//new_line("a")// &
          "inaccurate = "//integer_text(state%n_inaccurate)//" "//integer_text(state%first_inaccurate)//new_line("a")// &
          "failed = "//integer_text(state%n_failed)//" "//integer_text(state%first_failed)//new_line("a")
-      do k = 1, size(state%scene)
-         text = text//"scene = "//trim(state%scene(k))//new_line("a")
+      start = 1
+      do while (start <= len(state%scene))
+         at = start + index(state%scene(start:), new_line("a")) - 1
+         if (at < start) at = len(state%scene) + 1
+         text = text//"scene = "//state%scene(start:at - 1)//new_line("a")
+         start = at + 1
       end do
       call set_errno(0)
       stream = c_fopen(c_string(directory//"/state.new"), c_string("w"))

@@ -55,7 +55,7 @@ module hillstab_batch_units
    use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
    use hillstab_batch_checkpoint, only: checkpoint_options_t, checkpoint_state_t, checkpoint_directory, checkpoint_data, &
       find_checkpoint, make_checkpoint, save_checkpoint_state, remove_checkpoint, remove_stale_temporary, &
-      scene_difference, checkpoint_note, checkpoint_usable, checkpoint_incomplete
+      scene_difference, checkpoint_note, checkpoint_usable, checkpoint_incomplete, scene_text, scene_lines
    use hillstab_batch_signals, only: set_interrupt_note, clear_interrupt_note
    use hillstab_ffi_libc, only: c_nanosleep, timespec_t
    use, intrinsic :: iso_c_binding, only: c_int, c_long
@@ -283,7 +283,7 @@ contains
       batch%state%n_points = batch%n_points
       batch%state%unit_size = batch%unit_size
       batch%state%n_units = batch%n_units
-      batch%state%scene = scene_namelist(batch%scene)
+      batch%state%scene = scene_text(scene_namelist(batch%scene))
    end subroutine describe_run
 
    !> "37 of 400 units, 14800 of 160000 points done".
@@ -324,13 +324,13 @@ contains
             saved%output//"'"//refusal)
          return
       end if
-      difference = scene_difference(saved%scene, batch%state%scene)
+      difference = scene_difference(scene_lines(saved%scene), scene_lines(batch%state%scene))
       if (len(difference) > 0) then
          call set_error(error, err_input, source//": "//difference//refusal)
          return
       end if
       if (any(saved%fingerprint /= batch%state%fingerprint) .or. saved%n_points /= batch%n_points) then
-         if (any(batch%state%scene(:)(1:8) == "&points ")) then
+         if (index(new_line("a")//batch%state%scene, new_line("a")//"&points ") > 0) then
             call set_error(error, err_input, source//": &points: file: the points differ from those of the "// &
                "checkpoint (the file changed since)"//refusal)
          else
