@@ -44,7 +44,7 @@ module hillstab_batch_output
    implicit none
    private
    public :: output_file_t, open_output, commit_output, discard_output, finish_output, write_header, write_text
-   public :: write_records, joined_lines, sync_output, lock_output, resume_output, temporary_prefix
+   public :: write_records, joined_lines, join_lines, sync_output, lock_output, resume_output, temporary_prefix
 
    !> Longest file name (one path component) of Linux file systems, NAME_MAX.
    integer, parameter :: name_max = 255
@@ -339,12 +339,25 @@ contains
    !> `lines` (each trimmed) joined by new lines, after a leading new line if `separate`,
    !> without a final one: a block of rows written by one `write_text` (one write per line
    !> would cost more than a chart point of method auto). With `breaks`, one more new line
-   !> (a blank line: a new gnuplot block) before each line j where breaks(j).
+   !> (a blank line: a new gnuplot block) before each line j where breaks(j). On OpenMP
+   !> threads call `join_lines` instead: gfortran 12 keeps the length of a deferred-length
+   !> function result in a static variable of the caller, so concurrent calls of this
+   !> function can return texts of the wrong length.
    pure function joined_lines(lines, separate, breaks) result(text)
       character(len=*), intent(in) :: lines(:)  !! the rows
       logical, intent(in) :: separate  !! start with a new line (a blank line before the block)
       logical, intent(in), optional :: breaks(:)  !! a blank line before line j (size of lines)
       character(len=:), allocatable :: text
+      call join_lines(lines, separate, text, breaks)
+   end function joined_lines
+
+   !> `joined_lines` as a subroutine, safe on concurrent OpenMP threads (the text is an
+   !> argument, not a function result): the unit texts of the tasks are joined with it.
+   pure subroutine join_lines(lines, separate, text, breaks)
+      character(len=*), intent(in) :: lines(:)  !! the rows
+      logical, intent(in) :: separate  !! start with a new line (a blank line before the block)
+      character(len=:), allocatable, intent(out) :: text  !! the rows joined, no final new line
+      logical, intent(in), optional :: breaks(:)  !! a blank line before line j (size of lines)
       integer :: j, n, pos, total
       total = merge(1, 0, separate) + max(size(lines) - 1, 0)
       if (present(breaks)) total = total + count(breaks)
@@ -372,7 +385,7 @@ contains
          text(pos + 1:pos + n) = lines(j)(1:n)
          pos = pos + n
       end do
-   end function joined_lines
+   end subroutine join_lines
 
    !> Write records of reals as raw float64 (binary files only), column-major: one
    !> record per column of `values`.

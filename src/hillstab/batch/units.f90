@@ -527,6 +527,7 @@ contains
       type(checkpoint_options_t), intent(in), optional :: options
       type(batch_t) :: batch
       type(batch_result_t), allocatable :: window(:)
+      type(batch_result_t) :: result
       integer :: unit, next_claim, next_write, written, slots, threads, status, slot
       logical :: in_parallel, stopped, stop_now
       call batch_plan(scene, 1, batch)
@@ -549,10 +550,12 @@ contains
       next_claim = batch%first_unit
       next_write = batch%first_unit
       stopped = .false.
-      !$omp parallel if(in_parallel) default(shared) private(unit, written, slot, stop_now)
+      ! units are computed on several threads at once: a task's unit_text must not call a
+      ! function with a deferred-length character result (gfortran 12 keeps that length in a
+      ! static variable of the caller; concurrent calls lost a unit's text now and then),
+      ! hence join_lines, not joined_lines, in the tasks
+      !$omp parallel if(in_parallel) default(shared) private(unit, written, slot, stop_now, result)
       do
-         block
-         type(batch_result_t) :: result  ! private: declared in the parallel region
          !$omp atomic capture
          unit = next_claim
          next_claim = next_claim + 1
@@ -588,7 +591,6 @@ contains
             next_write = next_write + 1
          end do
          !$omp end critical (hillstab_batch_writer)
-         end block
       end do
       !$omp end parallel
       if (allocated(error)) then
