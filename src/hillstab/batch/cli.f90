@@ -201,8 +201,9 @@ contains
          end if
          if (.not. quiet .and. runner%reports()) write (error_unit, '(a)') runner%program//": wrote "//written
          ! a signal that arrived while the file took its name: it is written and said so;
-         ! stop here
-         signum = settle_signals()
+         ! stop here (after the last scene signals stay held until the exit, whose status is
+         ! that of the files written)
+         signum = settle_signals(keep_holding=i == n_scenes)
          if (signum /= 0) then
             if (i < n_scenes) then
                call quit(on_reporter(runner%program//": signal "//integer_text(signum)//" arrived after "// &

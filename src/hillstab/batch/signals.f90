@@ -134,9 +134,16 @@ contains
    end subroutine begin_commit
 
    !> End the hold of `begin_commit`; the signal that arrived meanwhile (0: none), which
-   !> the caller acts on now that what is on disk has been reported.
-   integer function settle_signals() result(signum)
-      holding = 0
+   !> the caller acts on now that what is on disk has been reported. With `keep_holding`
+   !> (the last scene reported, the program about to exit with the status of what it
+   !> wrote) signals stay held until the exit: one arriving in between must not turn a
+   !> finished run into an interrupted one.
+   integer function settle_signals(keep_holding) result(signum)
+      logical, intent(in), optional :: keep_holding  !! hold signals until the process exits
+      logical :: keep
+      keep = .false.
+      if (present(keep_holding)) keep = keep_holding
+      if (.not. keep) holding = 0
       signum = int(held)
       held = 0
    end function settle_signals
