@@ -176,6 +176,17 @@ contains
       f%ready = status == 0
    end subroutine make_fixture
 
+   !> Delete the files of a fixture (each test leaves nothing behind; the next makes it again).
+   subroutine release_fixture(f)
+      type(fixture_t), intent(inout) :: f
+      if (.not. allocated(f%scene)) return
+      call delete_file(f%scene)
+      call delete_file(f%reference)
+      call delete_file(f%scene(:len(f%scene) - 4)//".err")
+      call delete_file(f%output)
+      f%ready = .false.
+   end subroutine release_fixture
+
    !> A chart of 24 rows of 300 points by magnus6 at 1e-12 (20 to 50 ms a row here).
    subroutine chart_fixture()
       call make_fixture(chart, "ck_chart", [ &
@@ -262,6 +273,7 @@ contains
       call kill_and_resume(ctx, chart, 1, .false.)
       call kill_and_resume(ctx, chart, 12, .true.)
       call kill_and_resume(ctx, chart, 20, .false.)
+      call release_fixture(chart)
    end subroutine chart_resumed_after_kill
 
    !> SIGKILL after 1, 6 and 11 of 13 units of a Lyapunov map.
@@ -273,6 +285,7 @@ contains
       call kill_and_resume(ctx, map, 1, .false.)
       call kill_and_resume(ctx, map, 6, .true.)
       call kill_and_resume(ctx, map, 11, .false.)
+      call release_fixture(map)
    end subroutine lyapunov_resumed_after_kill
 
    !> SIGTERM: exit 143, the temporary file removed, the checkpoint kept, a message saying
@@ -298,8 +311,8 @@ contains
       status = run_program("--quiet --resume '"//chart%scene//"'", err, 2)
       call check(ctx, status == 0 .and. same_file(chart%output, chart%reference), "resumed: the uninterrupted file")
       call check(ctx, .not. directory_exists(directory), "the checkpoint is removed")
-      call delete_file(chart%output)
       call delete_file(err)
+      call release_fixture(chart)
    end subroutine sigterm_keeps_checkpoint
 
    !> A checkpoint of another effective scene (a variable of &chart, of &scene) is refused
@@ -337,9 +350,9 @@ contains
       ! the same scene resumes it
       status = run_program("--quiet --resume '"//chart%scene//"'", err, 2)
       call check(ctx, status == 0 .and. same_file(chart%output, chart%reference), "the scene of the checkpoint resumes")
-      call delete_file(chart%output)
       call delete_file(other)
       call delete_file(err)
+      call release_fixture(chart)
    end subroutine other_scene_refused
 
    !> `--resume` without a checkpoint: a fresh run that says so, the same file.
@@ -357,8 +370,8 @@ contains
                  "says it starts afresh")
       call check(ctx, same_file(map%output, map%reference), "the same file")
       call check(ctx, .not. directory_exists(checkpoint_directory(map%output)), "no checkpoint after")
-      call delete_file(map%output)
       call delete_file(err)
+      call release_fixture(map)
    end subroutine resume_without_checkpoint
 
    !> A run without `--resume` discards a checkpoint (and the temporary file its killed run
@@ -380,8 +393,8 @@ contains
       call check(ctx, same_file(map%output, map%reference), "the whole file")
       call check(ctx, .not. directory_exists(directory), "the checkpoint is gone")
       call check(ctx, .not. any_temp_file(map%output), "so is the temporary file")
-      call delete_file(map%output)
       call delete_file(err)
+      call release_fixture(map)
    end subroutine discarded_without_resume
 
    !> At the checkpoint's name: a symbolic link to a directory and to a file, a hard link of
@@ -459,6 +472,7 @@ contains
       status = shell("rm -rf '"//directory//"'")
       call delete_file(script)
       call delete_file(err)
+      call release_fixture(chart)
    end subroutine second_run_refused
 
    !> A points run that hits a file-size limit fails (exit 2) keeping its checkpoint and
