@@ -10,6 +10,11 @@
 !> line module, hillstab_batch_cli, for both programs); every rank
 !> exits with the status of the run (0 success, 2 bad input, 3 written with failed
 !> points, 1 a computation failed).
+!>
+!> Rank 0 keeps the run's checkpoint as hillstab does (hillstab_batch_units), so that
+!> `hillstab_mpi --resume` (or `hillstab --resume`, whatever the number of ranks) continues
+!> an interrupted run: the units of the checkpoint are those of the resumed run, and only
+!> the units it lacks are handed out.
 module hillstab_mpi_runner
    use mpi_f08
    use hillstab_core_kinds, only: wp, int64
@@ -82,6 +87,9 @@ contains
       logical :: written_ok
       integer :: slot
       self%quiet = quiet
+      ! the resume command of messages, as this job was started
+      if (allocated(self%options%command)) self%options%command = "mpirun -np "//rank_count_text(self%n_ranks)// &
+         " "//self%options%command
       ! every rank reads the scene (and its points file); the worst outcome wins, so a
       ! file one rank cannot read stops all of them
       call read_scene(path, scene, error)
@@ -91,7 +99,7 @@ contains
       if (allocated(error)) return
       written = output_path(scene)
       if (.not. batch_distributable(scene)) then
-         if (self%rank == manager) call run_scene(scene, quiet, error)
+         if (self%rank == manager) call run_scene(scene, quiet, error, self%options)
          call agree(self, error)
          return
       end if
@@ -101,19 +109,22 @@ contains
       if (allocated(error)) return
       call batch_plan(scene, self%n_ranks, batch)
       if (self%rank == manager) then
-         call batch_open(batch, quiet, error)
+         ! a resumed run keeps the units of its checkpoint: the workers are told below
+         call batch_open(batch, quiet, error, self%options)
          call agree(self, error)
          if (allocated(error)) return
+         call share_unit_size(self, batch, scene)
          call share_temporary_name(self, batch%file%temp_path, slot)
          call manage(self, batch, error, busy)
          if (allocated(error)) then
-            call batch_discard(batch)
+            call batch_discard(batch, error)
          else
             call batch_commit(batch, error)
          end if
       else
          call agree(self, error)
          if (allocated(error)) return
+         call share_unit_size(self, batch, scene)
          call share_temporary_name(self, "", slot)
          call work(batch, busy)
          call forget_temp_file(slot)
@@ -123,6 +134,27 @@ contains
       if (allocated(error)) written_ok = error%code == err_points_failed
       call report_balance(self, busy, written_ok)
    end subroutine run_scene_everywhere
+
+   !> The decimal text of a rank count.
+   pure function rank_count_text(n) result(text)
+      integer, intent(in) :: n
+      character(len=:), allocatable :: text
+      character(len=12) :: buffer
+      write (buffer, '(i0)') n
+      text = trim(buffer)
+   end function rank_count_text
+
+   !> Rank 0 sends the points per unit of the run (a resumed run's are its checkpoint's) to the
+   !> other ranks, which plan their units alike.
+   subroutine share_unit_size(self, batch, scene)
+      class(mpi_runner_t), intent(in) :: self
+      type(batch_t), intent(inout) :: batch  !! rank 0: opened; elsewhere planned
+      type(scene_t), intent(in) :: scene
+      integer :: unit_size
+      unit_size = batch%unit_size
+      call MPI_Bcast(unit_size, 1, MPI_INTEGER, manager, MPI_COMM_WORLD)
+      if (self%rank /= manager .and. unit_size /= batch%unit_size) call batch_plan(scene, self%n_ranks, batch, unit_size)
+   end subroutine share_unit_size
 
    !> Rank 0 sends the name of its temporary output to the other ranks, which watch it as
    !> their own: when the job is stopped by a signal (to mpirun, or after a rank died),
@@ -197,6 +229,9 @@ contains
 
       allocate (m%done(batch%n_units), m%queued(self%n_ranks - 1))
       m%queued = 0
+      ! a resumed run: the units before first_unit are in the file already
+      m%next_unit = batch%first_unit
+      m%next_write = batch%first_unit
       ! with many ranks, rank 0 only manages: answering at once keeps the others busy
       computes = self%n_ranks <= 8
       do d = 1, queue_depth
@@ -351,11 +386,12 @@ program hillstab_mpi
    call MPI_Comm_rank(MPI_COMM_WORLD, runner%rank)
    call MPI_Comm_size(MPI_COMM_WORLD, runner%n_ranks)
    runner%program = "hillstab_mpi"
-   runner%usage = [character(len=64) :: "mpirun -np N hillstab_mpi [--quiet] SCENE.nml...", &
+   runner%usage = [character(len=80) :: "mpirun -np N hillstab_mpi [--quiet] [--resume] SCENE.nml...", &
                    "hillstab_mpi --template TASK > SCENE.nml"]
    runner%description = [character(len=80) :: &
       "hillstab spread over MPI ranks: the points of chart, points and lyapunov scenes", &
       "are computed on all ranks (dynamic load balancing), rank 0 writes the same file", &
-      "as a single-process hillstab run; other tasks run on rank 0."]
+      "as a single-process hillstab run; other tasks run on rank 0. Rank 0 keeps the", &
+      "checkpoint: --resume continues a run that hillstab or hillstab_mpi began."]
    call run_command_line(runner)
 end program hillstab_mpi

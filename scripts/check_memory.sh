@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# valgrind memcheck on small scenes of every task (and a physical, binary points scene): no invalid access, no use of
-# uninitialised values, no definite leak (--error-exitcode makes any of them fail).
+# valgrind memcheck on small scenes of every task (and a physical, binary points scene, a chart updating its
+# checkpoint after every row, and a chart resumed from the checkpoint a write error left): no invalid access, no use
+# of uninitialised values, no definite leak (--error-exitcode makes any of them fail).
 # usage: scripts/check_memory.sh BUILD/app/hillstab
 set -euo pipefail
 hillstab=$(readlink -f "$1")
@@ -47,16 +48,40 @@ cat > physical.nml <<'NML'
 &scene task='points', output='m_phys', format='binary' /
 &physical omega=10, r0=0.3, a=0.01, 0.05, kappa=0.1 /
 NML
+cat > checkpoint.nml <<'NML'
+&scene task='chart', method='magnus4', output='m_checkpoint' /
+&chart n_alpha=4, n_beta=6 /
+NML
+cat > resume.nml <<'NML'
+&scene task='chart', method='formula', output='m_resume' /
+&chart n_alpha=6, n_beta=40 /
+NML
+# a checkpoint for the resumed run: the first run stops at a file-size limit of 10 kB (exit 2)
+set +e
+(ulimit -f 20; "$hillstab" --quiet --checkpoint-interval 0 resume.nml 2>/dev/null)
+code=$?
+set -e
+if [ "$code" -ne 2 ] || [ ! -f m_resume_chart.dat.checkpoint/state ]; then
+   echo "check-memory: the run under a file-size limit exited $code and left no checkpoint" >&2
+   exit 1
+fi
 cat > bad.nml <<'NML'
 &scene task='chart', output='m_bad' /
 &chart beta_max = -, /
 NML
 status=0
-for scene in chart chart_segments points coefficient series boundaries lyapunov poincare physical bad; do
+for scene in chart chart_segments points coefficient series boundaries lyapunov poincare physical checkpoint resume \
+   bad; do
    log="$work/$scene.valgrind"
+   options=--quiet
+   case $scene in
+   checkpoint) options="--quiet --checkpoint-interval 0" ;;
+   resume) options="--quiet --resume" ;;
+   esac
    set +e
+   # shellcheck disable=SC2086
    OMP_NUM_THREADS=2 valgrind --quiet --error-exitcode=99 --leak-check=full --show-leak-kinds=definite \
-      --errors-for-leak-kinds=definite --log-file="$log" "$hillstab" --quiet "$scene.nml"
+      --errors-for-leak-kinds=definite --log-file="$log" "$hillstab" $options "$scene.nml" 2>"$work/$scene.stderr"
    code=$?
    set -e
    if [ "$code" -eq 99 ] || [ -s "$log" ]; then
@@ -68,6 +93,9 @@ for scene in chart chart_segments points coefficient series boundaries lyapunov 
       status=1
    elif [ "$scene" != bad ] && [ "$code" -ne 0 ]; then
       echo "check-memory: $scene exited $code" >&2
+      status=1
+   elif [ "$scene" = resume ] && { ! grep -q resuming "$work/$scene.stderr" || [ -e m_resume_chart.dat.checkpoint ]; }; then
+      echo "check-memory: the resumed run did not resume, or left its checkpoint" >&2
       status=1
    else
       echo "check-memory: $scene: clean (exit $code)"

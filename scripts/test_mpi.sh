@@ -9,6 +9,11 @@
 #  - faults: ranks reading different scenes (exit 2, no file); SIGTERM to rank 0 and to
 #    mpirun, kill -9 of a worker, a file-size limit: no hang, no temporary file, the old
 #    output kept;
+#  - resume: a chart and a Lyapunov map killed with SIGKILL (rank 0) early, midway and late,
+#    resumed with another number of ranks or by hillstab (and a hillstab run resumed by
+#    hillstab_mpi): the file of an uninterrupted run, no checkpoint, no temporary file left;
+#    a checkpoint of another scene refused (exit 2 on every rank, one message); --resume
+#    without a checkpoint; SIGTERM to mpirun keeps the checkpoint and says how to resume;
 #  - options: --version, --help, an unknown option.
 # Prints one line per check and a closing `N passed, M failed`; exits 1 on a failure.
 set -uo pipefail
@@ -157,6 +162,98 @@ timeout 120 mpirun --oversubscribe -np 2 bash -c "ulimit -f 100; exec \"$mpi\" -
    2>"$work/big.err"
 big_rc=$?
 check "file_size_limit_message_no_hang" '[ $big_rc = 2 ] && grep -q "File too large" "$work/big.err" && [ "$(cat "$work/big_chart.dat")" = old ] && [ -z "$(ls "$work" | grep big_chart.dat.part)" ]'
+
+# resume: runs killed with SIGKILL once their checkpoint (updated after every unit) holds
+# UNITS units, then resumed; the file must be the uninterrupted one
+printf '%s\n' "&scene task='chart', method='magnus6', tolerance=1e-12, output='$work/rc' /" \
+   "&chart alpha_min=0, alpha_max=9.8, n_alpha=24, beta_min=-2, beta_max=12, n_beta=300 /" >"$work/rc.nml"
+printf '%s\n' "&scene task='lyapunov', output='$work/rl' /" "&series phi0=0.017, periods=250 /" \
+   "&lyapunov lanes=1, early_stop=.false. /" \
+   "&chart alpha_min=0.5, alpha_max=9.5, n_alpha=8, beta_min=0.5, beta_max=9.5, n_beta=25 /" >"$work/rl.nml"
+"$serial" -q "$work/rc.nml" 2>/dev/null && mv "$work/rc_chart.dat" "$work/rc.serial"
+"$serial" -q "$work/rl.nml" 2>/dev/null && mv "$work/rl_lyapunov.dat" "$work/rl.serial"
+# stop_at SCENE TASK UNITS SIGNAL WHO: run SCENE (WHO: mpi or mpirun, 2 ranks; serial) and
+# send SIGNAL to rank 0 (WHO mpi), to mpirun (WHO mpirun) or to hillstab once the checkpoint
+# holds UNITS units; sets rc and ck
+stop_at() {
+   local scene=$1 task=$2 units=$3 sig=$4 who=$5 pid n u target
+   ck="$work/${scene}_${task}.dat.checkpoint"
+   rm -rf "$ck" "$work/${scene}_${task}.dat"
+   if [ "$who" != serial ]; then
+      timeout 120 mpirun --oversubscribe -np 2 "$mpi" -q --checkpoint-interval 0 "$work/$scene.nml" \
+         >/dev/null 2>"$work/stop.err" &
+   else
+      timeout 120 "$serial" -q --checkpoint-interval 0 "$work/$scene.nml" >/dev/null 2>"$work/stop.err" &
+   fi
+   pid=$!
+   n=0
+   while kill -0 "$pid" 2>/dev/null; do
+      u=$(sed -n 's/^units = \([0-9]*\) .*/\1/p' "$ck/state" 2>/dev/null)
+      if [ "${u:-0}" -ge "$units" ]; then
+         if [ "$who" = mpi ]; then
+            target=$(pgrep -f "^$mpi -q --checkpoint-interval 0 $work/$scene.nml" | sort -n | head -1)
+         elif [ "$who" = mpirun ]; then
+            target=$(pgrep -f "^mpirun --oversubscribe -np 2 $mpi -q --checkpoint-interval 0 $work/$scene.nml")
+         else
+            target=$(pgrep -f "^$serial -q --checkpoint-interval 0 $work/$scene.nml")
+         fi
+         kill -"$sig" $target
+         break
+      fi
+      n=$((n + 1))
+      [ $n -ge 6000 ] && break
+      sleep 0.01
+   done
+   { wait "$pid"; } 2>/dev/null
+   rc=$?
+}
+# resume_by SCENE TASK HOW: --resume by HOW (np2, np3: hillstab_mpi; serial); sets rc
+resume_by() {
+   case $3 in
+   np*) run_mpi "${3#np}" "$mpi" -q --resume "$work/$1.nml" 2>"$work/resume.err" ;;
+   serial) "$serial" -q --resume "$work/$1.nml" 2>"$work/resume.err" ;;
+   esac
+   rc=$?
+}
+for case in rc:chart:2:mpi:np3 rc:chart:12:mpi:serial rc:chart:20:mpi:np2 rc:chart:10:serial:np2 \
+   rl:lyapunov:2:mpi:np2 rl:lyapunov:8:mpi:serial rl:lyapunov:12:mpi:np3; do
+   IFS=: read -r scene task units who how <<<"$case"
+   name="resume_${task}_${who}_killed_after_${units}_by_$how"
+   stop_at "$scene" "$task" "$units" KILL "$who"
+   done_units=$(sed -n 's/^units = \([0-9]*\) .*/\1/p' "$ck/state" 2>/dev/null)
+   bytes=$(sed -n 's/^bytes = //p' "$ck/state" 2>/dev/null)
+   check "${name}_killed_with_checkpoint" '[ $rc != 0 ] && [ $rc != 124 ] && [ "${done_units:-0}" -ge $units ] && [ "${bytes:-0}" -le $(stat -c %s "$ck/data") ] && [ ! -e "$work/${scene}_${task}.dat" ]'
+   resume_by "$scene" "$task" "$how"
+   check "${name}_same_file" '[ $rc = 0 ] && cmp -s "$work/${scene}_${task}.dat" "$work/$scene.serial" && grep -q "resuming" "$work/resume.err"'
+   check "${name}_nothing_left" '[ ! -e "$ck" ] && [ -z "$(ls "$work" | grep "${scene}_${task}.dat.part")" ]'
+done
+# a checkpoint of another scene: exit 2 on every rank, one message naming the variable
+stop_at rc chart 3 KILL mpi
+sed 's/n_beta=300/n_beta=301/' "$work/rc.nml" >"$work/rc_other.nml"
+rank_statuses 3 "$work/st" -q --resume "$work/rc_other.nml"
+check "resume_other_scene_exit2_every_rank" 'all_ranks "$work/st" 3 2 && [ -d "$ck" ] && [ ! -e "$work/rc_chart.dat" ]'
+check "resume_other_scene_one_message" '[ "$(cat "$work"/st/stderr.* | grep -c "&chart: n_beta: 301 in this scene, 300 in the checkpoint")" = 1 ] && [ "$(cat "$work"/st/stderr.* | wc -l)" = 1 ]'
+# without --resume: discarded with one note, the whole file
+rank_statuses 2 "$work/st" -q "$work/rc.nml"
+check "no_resume_discards_with_a_note" 'all_ranks "$work/st" 2 0 && [ "$(cat "$work"/st/stderr.* | grep -c "discarded the checkpoint")" = 1 ] && [ ! -e "$ck" ] && cmp -s "$work/rc_chart.dat" "$work/rc.serial"'
+# --resume without a checkpoint: starts afresh, says so once
+rm -f "$work/rl_lyapunov.dat"
+rank_statuses 3 "$work/st" -q --resume "$work/rl.nml"
+check "resume_without_checkpoint" 'all_ranks "$work/st" 3 0 && [ "$(cat "$work"/st/stderr.* | grep -c "no checkpoint of .*starting afresh")" = 1 ] && cmp -s "$work/rl_lyapunov.dat" "$work/rl.serial"'
+# SIGTERM to rank 0: the checkpoint is kept, rank 0 says how to resume, no temporary file;
+# to mpirun: the same on the disk (mpirun need not pass on what rank 0 prints as it ends)
+stop_at rc chart 4 TERM mpi
+check "sigterm_rank0_keeps_checkpoint" '[ $rc != 0 ] && [ $rc != 124 ] && [ -f "$ck/state" ] && [ -z "$(ls "$work" | grep rc_chart.dat.part)" ] && grep -q "stopped by signal 15; the checkpoint .* keeps .*hillstab_mpi --resume $work/rc.nml" "$work/stop.err"'
+resume_by rc chart np2
+check "sigterm_rank0_then_resumed" '[ $rc = 0 ] && cmp -s "$work/rc_chart.dat" "$work/rc.serial" && [ ! -e "$ck" ]'
+# (mpirun acts on SIGTERM about a second later: a longer chart, so that the run is still going;
+# a temporary file mpirun's SIGKILL may leave is removed by the resumed run)
+sed 's/n_beta=300/n_beta=1500/; s/rc.nml/rt.nml/; s|/rc'"'"'|/rt'"'"'|' "$work/rc.nml" >"$work/rt.nml"
+"$serial" -q "$work/rt.nml" 2>/dev/null && mv "$work/rt_chart.dat" "$work/rt.serial"
+stop_at rt chart 4 TERM mpirun
+check "sigterm_mpirun_keeps_checkpoint" '[ $rc != 0 ] && [ $rc != 124 ] && [ -f "$ck/state" ] && [ ! -e "$work/rt_chart.dat" ]'
+resume_by rt chart np3
+check "sigterm_mpirun_then_resumed" '[ $rc = 0 ] && cmp -s "$work/rt_chart.dat" "$work/rt.serial" && [ ! -e "$ck" ] && [ -z "$(ls "$work" | grep rt_chart.dat.part)" ]'
 
 # options
 check "version" '[ "$(run_mpi 2 "$mpi" --version)" = "$("$serial" --version | sed s/hillstab/hillstab_mpi/)" ]'

@@ -32,10 +32,11 @@ program tester
    use test_templates, only: collect_templates
    use test_symplectic, only: collect_symplectic
    use test_chaos, only: collect_chaos
+   use test_checkpoint, only: collect_checkpoint
    implicit none
    ! one by one, not as an array constructor of the collect functions' results: gfortran 12
    ! leaks the allocatable components of such results (LeakSanitizer, make test-sanitize)
-   type(testsuite_t) :: suites(31)
+   type(testsuite_t) :: suites(32)
    integer :: n_failed
    suites(1) = collect_models()
    suites(2) = collect_codes()
@@ -68,6 +69,7 @@ program tester
    suites(29) = collect_output()
    suites(30) = collect_symplectic()
    suites(31) = collect_chaos()
+   suites(32) = collect_checkpoint()
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

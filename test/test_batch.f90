@@ -1,5 +1,6 @@
-!> Tests of the unit-by-unit driver shared with the MPI program: its file equals the
-!> serial task's (same data lines, same header apart from the output name) for charts
+!> Tests of the unit-by-unit driver shared with the MPI program and the serial program's
+!> text runs: its file equals the one the task's own loop writes (same data lines, same
+!> header apart from the output name) for charts
 !> with few and many rows and for points lists, also when the units are computed in
 !> reverse order and written in order; the units cover every point once; a failing
 !> point is written with its status and reported with the serial message; exit statuses.
@@ -8,7 +9,7 @@ module test_batch
    use hillstab_core_error, only: error_t, err_input, err_io, err_integration, err_invalid_parameter, err_points_failed
    use hillstab_batch_scene, only: scene_t
    use hillstab_batch_scene_read, only: read_scene
-   use hillstab_batch_tasks, only: run_scene, output_path
+   use hillstab_batch_tasks, only: output_path
    use hillstab_batch_units, only: batch_t, batch_result_t, batch_plan, batch_unit_range, batch_compute, batch_open, &
       batch_write, batch_commit, batch_discard, run_batch
    use hillstab_batch_cli, only: exit_status
@@ -56,7 +57,7 @@ contains
       lines = pack(all, all(:)(1:1) /= "#")
    end subroutine data_lines
 
-   !> Run `scene` serially and through run_batch; compare the two files.
+   !> Run `scene` by its task's own loop and through run_batch; compare the two files.
    subroutine compare_with_serial(ctx, scene, label)
       type(test_context_t), intent(inout) :: ctx
       type(scene_t), intent(in) :: scene
@@ -69,7 +70,7 @@ contains
       serial%output = scene%output//"_serial"
       batched = scene
       batched%output = scene%output//"_batch"
-      call run_scene(serial, .true., error)
+      call serial%task%run(serial, .true., error)
       call check(ctx, .not. allocated(error), label//": serial run")
       call run_batch(batched, .true., error)
       call check(ctx, .not. allocated(error), label//": batch run")
@@ -128,7 +129,7 @@ contains
          padded("&chart alpha_min=1, alpha_max=9.5, n_alpha=9, beta_min=-1, beta_max=10, n_beta=23 /")], scene)
       serial = scene
       serial%output = scene%output//"_serial"
-      call run_scene(serial, .true., error)
+      call serial%task%run(serial, .true., error)
       call check(ctx, .not. allocated(error), "serial run")
       call batch_plan(scene, 3, batch)
       allocate (results(batch%n_units))
@@ -209,7 +210,7 @@ contains
          scratch_prefix("fail")//"' /"), padded("&points file='"//points//"' /")], scene)
       serial = scene
       serial%output = scene%output//"_serial"
-      call run_scene(serial, .true., serial_error)
+      call serial%task%run(serial, .true., serial_error)
       call run_batch(scene, .true., error)
       call check(ctx, allocated(error) .and. allocated(serial_error), "both runs report the failure")
       if (allocated(error) .and. allocated(serial_error)) then

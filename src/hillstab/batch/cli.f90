@@ -8,7 +8,9 @@
 !> line) or an output file that cannot be written completely, 1 when a computation
 !> fails, 3 (exit_points_failed) when a file was written but some of its points failed
 !> (status 2 in their rows), 128 + N after signal N (SIGINT, SIGTERM, SIGHUP), the
-!> unfinished output file removed.
+!> unfinished output file removed and its checkpoint kept. `--resume` continues the runs of
+!> the scenes from their checkpoints (hillstab_batch_checkpoint); `--checkpoint-interval S`
+!> sets how often a checkpoint is updated.
 !>
 !>```fortran
 !> type(serial_runner_t) :: runner
@@ -22,6 +24,8 @@ module hillstab_batch_cli
    use hillstab_batch_templates, only: scene_template
    use hillstab_batch_task_registry, only: task_names_text
    use hillstab_batch_signals, only: settle_signals
+   use hillstab_batch_checkpoint, only: checkpoint_options_t
+   use hillstab_core_kinds, only: wp
    use hillstab_core_text, only: integer_text
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use, intrinsic :: ieee_arithmetic, only: ieee_set_flag, ieee_all
@@ -39,6 +43,9 @@ module hillstab_batch_cli
       character(len=:), allocatable :: usage(:)
       !> what the program does, for `--help`
       character(len=:), allocatable :: description(:)
+      !> checkpoints: `--resume`, `--checkpoint-interval`; the command that resumes the
+      !> scene being run (for messages)
+      type(checkpoint_options_t) :: options
    contains
       !> run one scene file; on return the outcome is the same in every process
       procedure(runner_run), deferred :: run
@@ -77,7 +84,7 @@ contains
       logical, intent(in) :: quiet  !! no progress on stderr
       type(error_t), allocatable, intent(out) :: error  !! what failed
       character(len=:), allocatable, intent(out) :: written  !! the file written
-      call run_scene_file(path, quiet, error, written)
+      call run_scene_file(path, quiet, error, written, self%options)
    end subroutine serial_run
 
    !> Default: every process prints.
@@ -107,23 +114,36 @@ contains
    end function exit_status
 
    !> Parse the command line and run every scene it names, then exit (this never returns):
-   !> `[--quiet] SCENE.nml...`, `--template TASK`, `--help`, `--version`.
+   !> `[--quiet] [--resume] [--checkpoint-interval S] SCENE.nml...`, `--template TASK`,
+   !> `--help`, `--version`.
    subroutine run_command_line(runner)
       class(scene_runner_t), intent(inout) :: runner  !! how the scenes run
       type(error_t), allocatable :: error
       character(len=:), allocatable :: argument, written
       character(len=max_path), allocatable :: scenes(:)
       character(len=:), allocatable :: text
-      logical :: quiet, points_failed
+      logical :: quiet, points_failed, value_next
       integer :: i, n_scenes, signum
       if (.not. allocated(runner%program)) runner%program = "hillstab"
       if (.not. allocated(runner%usage)) runner%usage = default_usage(runner%program)
       if (.not. allocated(runner%description)) runner%description = default_description()
+      runner%options%program = runner%program
       quiet = .false.
+      value_next = .false.
       n_scenes = 0
       allocate (scenes(command_argument_count()))
       do i = 1, command_argument_count()
          argument = command_argument(i)
+         if (value_next) then
+            ! the seconds of --checkpoint-interval
+            value_next = .false.
+            runner%options%interval = seconds_value(argument)
+            if (runner%options%interval < 0.0_wp) then
+               call quit(on_reporter(runner%program//": --checkpoint-interval: '"//argument//"' is not a number of "// &
+                  "seconds >= 0 (see "//runner%program//" --help)"), 2)
+            end if
+            cycle
+         end if
          select case (argument)
          case ("-h", "--help")
             if (runner%reports()) call print_help(runner)
@@ -142,6 +162,14 @@ contains
             call quit("", 0)
          case ("-q", "--quiet")
             quiet = .true.
+         case ("--resume")
+            runner%options%resume = .true.
+         case ("--checkpoint-interval")
+            if (i + 1 > command_argument_count()) then
+               call quit(on_reporter(runner%program//": --checkpoint-interval needs a number of seconds (see "// &
+                  runner%program//" --help)"), 2)
+            end if
+            value_next = .true.
          case default
             if (len(argument) > 1 .and. argument(1:1) == "-") then
                call quit(on_reporter(runner%program//": unknown option '"//argument//"' (see "//runner%program// &
@@ -159,6 +187,7 @@ contains
 
       points_failed = .false.
       do i = 1, n_scenes
+         runner%options%command = runner%program//" --resume "//shell_word(trim(scenes(i)))
          call runner%run(trim(scenes(i)), quiet, error, written)
          if (allocated(error)) then
             if (len(error%message) > 0) error%message = runner%program//": "//error%message
@@ -172,8 +201,9 @@ contains
          end if
          if (.not. quiet .and. runner%reports()) write (error_unit, '(a)') runner%program//": wrote "//written
          ! a signal that arrived while the file took its name: it is written and said so;
-         ! stop here
-         signum = settle_signals()
+         ! stop here (after the last scene signals stay held until the exit, whose status is
+         ! that of the files written)
+         signum = settle_signals(keep_holding=i == n_scenes)
          if (signum /= 0) then
             if (i < n_scenes) then
                call quit(on_reporter(runner%program//": signal "//integer_text(signum)//" arrived after "// &
@@ -243,6 +273,42 @@ contains
       end do
    end function printable
 
+   !> The seconds of `--checkpoint-interval`: a plain non-negative number (-1 for anything
+   !> else, a NaN or an infinity included).
+   function seconds_value(text) result(seconds)
+      character(len=*), intent(in) :: text  !! the argument
+      real(wp) :: seconds
+      integer :: ios
+      seconds = -1.0_wp
+      if (len(text) == 0 .or. len(text) > 30) return
+      if (verify(text, "0123456789.eE+-") /= 0) return
+      read (text, *, iostat=ios) seconds
+      if (ios /= 0) seconds = -1.0_wp
+      if (.not. (seconds >= 0.0_wp .and. seconds <= 1.0e9_wp)) seconds = -1.0_wp
+   end function seconds_value
+
+   !> `text` as one word of a POSIX shell command line (quoted when it holds anything but
+   !> letters, digits and ._/+-), for the resume command shown in messages.
+   pure function shell_word(text) result(word)
+      character(len=*), intent(in) :: text  !! a path
+      character(len=:), allocatable :: word
+      character(len=*), parameter :: plain = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._/+-"
+      integer :: k
+      if (len(text) > 0 .and. verify(text, plain) == 0) then
+         word = text
+         return
+      end if
+      word = "'"
+      do k = 1, len(text)
+         if (text(k:k) == "'") then
+            word = word//"'\''"
+         else
+            word = word//text(k:k)
+         end if
+      end do
+      word = word//"'"
+   end function shell_word
+
    !> Command-line argument i.
    function command_argument(i) result(text)
       integer, intent(in) :: i
@@ -256,7 +322,8 @@ contains
    function default_usage(program) result(lines)
       character(len=*), intent(in) :: program
       character(len=:), allocatable :: lines(:)
-      lines = [character(len=80) :: program//" [--quiet] SCENE.nml...", program//" --template TASK > SCENE.nml"]
+      lines = [character(len=80) :: program//" [--quiet] [--resume] [--checkpoint-interval S] SCENE.nml...", &
+               program//" --template TASK > SCENE.nml"]
    end function default_usage
 
    function default_description() result(lines)
@@ -285,13 +352,22 @@ contains
          "  at its default with a comment)", &
          "", &
          "  -q, --quiet          no progress or messages on stderr (errors still)", &
+         "  --resume             continue each run from the checkpoint an interrupted run", &
+         "                       left; without it an old checkpoint is discarded", &
+         "  --checkpoint-interval S  seconds between checkpoint updates (default 3;", &
+         "                       0: after every row or unit)", &
          "  -t, --template TASK  a commented scene for TASK on stdout", &
          "  -h, --help           this text", &
          "  -V, --version        the version", &
          "", &
+         "Checkpoints: charts over &chart, points and lyapunov runs written as text keep", &
+         "<output file>.checkpoint/ (the rows written so far, on the disk every few", &
+         "seconds); a successful run removes it. --resume computes only what is missing", &
+         "and writes the same file; it refuses a checkpoint of another scene (exit 2).", &
+         "", &
          "Exit status (of every process): 0 success, 2 bad input or an output file that", &
          "cannot be written, 1 a computation failed, 3 files written but some points failed", &
          "(status 2 in their rows), 128 + N killed by signal N (SIGINT, SIGTERM, SIGHUP: the", &
-         "unfinished output file is removed)."
+         "unfinished output file is removed, its checkpoint kept)."
    end subroutine print_help
 end module hillstab_batch_cli

@@ -12,6 +12,12 @@
 !> Writes go through C stdio so that every failure is seen with its errno (gfortran's
 !> buffered formatted writes can lose ENOSPC). While written, the temporary file is
 !> registered with hillstab_batch_signals for removal on an interrupt.
+!>
+!> A long run keeps a checkpoint of its partial file (hillstab_batch_checkpoint): `sync_output`
+!> puts what was written on the disk, `lock_output` marks the file as in use, and
+!> `resume_output` continues a partial file: cut to its valid length, it is written on under
+!> a new temporary name (a hard link made exclusively, with an unpredictable suffix, as
+!> mkstemp names) and renamed onto `<path>` by `commit_output` like a new one.
 !> This module moves bytes and files; what the columns mean is the tasks' (their column
 !> tables, hillstab_batch_columns); it knows nothing of integrators.
 !>
@@ -28,14 +34,17 @@ module hillstab_batch_output
    use hillstab_core_error, only: error_t, set_error, err_io
    use hillstab_core_text, only: integer_text
    use hillstab_ffi_libc, only: c_mkdir, c_rename, c_mkstemp, c_fdopen, c_fchmod, c_umask, c_close, c_fwrite, c_fwrite_raw, &
-      c_fflush, c_fclose, c_fileno, c_fsync, errno_text, set_errno, c_string, remove_file, is_directory
+      c_fflush, c_fclose, c_fileno, c_fsync, errno_text, set_errno, c_string, remove_file, is_directory, c_fopen, &
+      c_fstat, stat_t, file_type, file_type_regular, c_ftruncate, c_fseek, seek_end, c_flock, lock_exclusive, &
+      lock_nonblocking, errno_value, errno_would_block, errno_exists, c_link, c_getrandom, c_getpid
    use hillstab_batch_signals, only: watch_temp_file, forget_temp_file, begin_commit
    use hillstab_core_kinds, only: wp
-   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, c_associated, c_size_t, c_loc
+   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, c_associated, c_size_t, c_loc, &
+      c_long
    implicit none
    private
    public :: output_file_t, open_output, commit_output, discard_output, finish_output, write_header, write_text
-   public :: write_records, joined_lines
+   public :: write_records, joined_lines, join_lines, sync_output, lock_output, resume_output, temporary_prefix
 
    !> Longest file name (one path component) of Linux file systems, NAME_MAX.
    integer, parameter :: name_max = 255
@@ -149,6 +158,16 @@ contains
       n = min(len(path) - slash, name_max - suffix)
       template = path(:slash + n)//".partXXXXXX"
    end function temporary_template
+
+   !> The temporary names of `path` before their six unpredictable characters
+   !> (`<dir>/<name>.part`, the name cut as `open_output` cuts it).
+   pure function temporary_prefix(path) result(prefix)
+      character(len=*), intent(in) :: path  !! final file name
+      character(len=:), allocatable :: prefix
+      character(len=:), allocatable :: template
+      template = temporary_template(path)
+      prefix = template(:len(template) - 6)
+   end function temporary_prefix
 
    !> Flush the temporary file to the disk, close it and rename it onto the final name;
    !> after any failure (now or in an earlier write) the temporary file is deleted.
@@ -325,7 +344,9 @@ contains
    !> line if `separate`, without a final one: a block of rows written by one `write_text`
    !> (one write per line would cost more than a chart point of method auto). With
    !> `breaks`, one more new line (a blank line: a new gnuplot block) before each line j
-   !> where breaks(j).
+   !> where breaks(j). On OpenMP threads call `join_lines` instead: gfortran 12 keeps the
+   !> length of a deferred-length function result in a static variable of the caller, so
+   !> concurrent calls of this function can return texts of the wrong length.
    pure function joined_lines(lines, separate, breaks, lengths) result(text)
       character(len=*), intent(in) :: lines(:)  !! the rows
       logical, intent(in) :: separate  !! start with a new line (a blank line before the block)
@@ -333,6 +354,18 @@ contains
       !> the length of each row (its text is lines(j)(1:lengths(j))); default len_trim
       integer, intent(in), optional :: lengths(:)
       character(len=:), allocatable :: text
+      call join_lines(lines, separate, text, breaks, lengths)
+   end function joined_lines
+
+   !> `joined_lines` as a subroutine, safe on concurrent OpenMP threads (the text is an
+   !> argument, not a function result): the unit texts of the tasks are joined with it.
+   pure subroutine join_lines(lines, separate, text, breaks, lengths)
+      character(len=*), intent(in) :: lines(:)  !! the rows
+      logical, intent(in) :: separate  !! start with a new line (a blank line before the block)
+      character(len=:), allocatable, intent(out) :: text  !! the rows joined, no final new line
+      logical, intent(in), optional :: breaks(:)  !! a blank line before line j (size of lines)
+      !> the length of each row (its text is lines(j)(1:lengths(j))); default len_trim
+      integer, intent(in), optional :: lengths(:)
       integer :: j, n, pos, total
       total = merge(1, 0, separate) + max(size(lines) - 1, 0)
       if (present(breaks)) total = total + count(breaks)
@@ -368,7 +401,7 @@ contains
          text(pos + 1:pos + n) = lines(j)(1:n)
          pos = pos + n
       end do
-   end function joined_lines
+   end subroutine join_lines
 
    !> Write records of reals as raw float64 (binary files only), column-major: one
    !> record per column of `values`.
@@ -396,4 +429,143 @@ contains
       if (allocated(file%failure)) call set_error(error, err_io, "cannot write '"//file%path//"': "// &
          file%failure//" (the file is left as it was)")
    end subroutine write_records
+   !> Put everything written so far on the disk (flush and fsync): afterwards `file%bytes`
+   !> bytes are durable. A failure makes the file incomplete, as a failed write does.
+   subroutine sync_output(file, error)
+      type(output_file_t), intent(inout) :: file  !! the open output file
+      type(error_t), allocatable, intent(out) :: error  !! err_io when the flush or fsync failed
+      if (.not. allocated(file%failure)) then
+         if (.not. c_associated(file%stream)) then
+            file%failure = "the file is not open"
+         else
+            call set_errno(0)
+            if (c_fflush(file%stream) /= 0) then
+               file%failure = errno_text()
+            else if (c_fsync(c_fileno(file%stream)) /= 0) then
+               file%failure = errno_text()
+            end if
+         end if
+      end if
+      if (allocated(file%failure)) call set_error(error, err_io, "cannot write '"//file%path//"': "// &
+         file%failure//" (the file is left as it was)")
+   end subroutine sync_output
+
+   !> Take an exclusive advisory lock (flock) on the open file, released when the file is
+   !> closed or the process ends; `.false.` also when the file system has no locks.
+   !> `busy`: another process holds the lock.
+   function lock_output(file) result(busy)
+      type(output_file_t), intent(in) :: file  !! the open output file
+      logical :: busy
+      busy = .false.
+      if (.not. c_associated(file%stream)) return
+      call set_errno(0)
+      if (c_flock(c_fileno(file%stream), ior(lock_exclusive, lock_nonblocking)) /= 0) then
+         busy = errno_value() == errno_would_block
+      end if
+   end function lock_output
+
+   !> Continue the partial output `data_path` of `path` (a file in a directory only this
+   !> user can write, which nothing else has open: `lock_output`): it is cut to its first
+   !> `bytes` bytes, given a new temporary name beside `path` (a hard link made exclusively,
+   !> with an unpredictable suffix: a name someone placed is never written through) and
+   !> opened for appending, with `file%bytes` = `bytes`. `commit_output` then renames it onto
+   !> `path`, `discard_output` removes only the temporary name. On failure nothing is
+   !> changed but the length of the partial file when the cut was made.
+   subroutine resume_output(file, path, data_path, bytes, error, context)
+      type(output_file_t), intent(out) :: file  !! the file, open for writing on
+      character(len=*), intent(in) :: path  !! final file name
+      character(len=*), intent(in) :: data_path  !! the partial file
+      integer(int64), intent(in) :: bytes  !! its valid length
+      !> err_io naming the partial file and the cause (another run holds its lock: in use)
+      type(error_t), allocatable, intent(out) :: error
+      !> put before the error message: what named the path
+      character(len=*), intent(in), optional :: context
+      character(len=:), allocatable :: prefix, template
+      type(stat_t) :: info
+      integer(c_int) :: status
+      integer :: attempt
+      prefix = ""
+      if (present(context)) prefix = context
+      file%path = path
+      call set_errno(0)
+      file%stream = c_fopen(c_string(data_path), c_string("r+"))
+      if (.not. c_associated(file%stream)) then
+         call set_error(error, err_io, prefix//"cannot resume '"//path//"': cannot open '"//data_path//"': "// &
+            errno_text())
+         return
+      end if
+      if (c_fstat(c_fileno(file%stream), info) /= 0) then
+         call fail_resume(errno_text())
+         return
+      end if
+      if (iand(info%mode, file_type) /= file_type_regular) then
+         call fail_resume("not a regular file")
+         return
+      end if
+      if (lock_output(file)) then
+         call fail_resume("another run is writing it (it holds the file's lock)")
+         return
+      end if
+      if (int(info%size, int64) < bytes) then
+         call fail_resume("it holds "//integer_text(int(info%size, int64))//" bytes, fewer than the "// &
+            integer_text(bytes)//" its checkpoint records (damaged)")
+         return
+      end if
+      call set_errno(0)
+      if (c_ftruncate(c_fileno(file%stream), int(bytes, c_long)) /= 0) then
+         call fail_resume(errno_text())
+         return
+      end if
+      if (c_fseek(file%stream, 0_c_long, seek_end) /= 0) then
+         call fail_resume(errno_text())
+         return
+      end if
+      template = temporary_prefix(path)
+      do attempt = 1, 100
+         file%temp_path = template//random_suffix(6)
+         call set_errno(0)
+         if (c_link(c_string(data_path), c_string(file%temp_path)) == 0) exit
+         if (errno_value() /= errno_exists .or. attempt == 100) then
+            call fail_resume("cannot give it a temporary name beside '"//path//"': "//errno_text())
+            deallocate (file%temp_path)
+            return
+         end if
+      end do
+      call watch_temp_file(file%temp_path, file%slot)
+      file%bytes = bytes
+   contains
+      !> Close the partial file and say why it cannot be continued.
+      subroutine fail_resume(cause)
+         character(len=*), intent(in) :: cause
+         status = c_fclose(file%stream)
+         file%stream = c_null_ptr
+         call set_error(error, err_io, prefix//"cannot resume '"//path//"' from '"//data_path//"': "//cause)
+      end subroutine fail_resume
+   end subroutine resume_output
+
+   !> `n` characters from [A-Za-z0-9], unpredictable (getrandom; the clock and the process
+   !> id should it fail, when a name taken only costs another try).
+   function random_suffix(n) result(text)
+      integer, intent(in) :: n  !! the length
+      character(len=n) :: text
+      character(len=*), parameter :: alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789"
+      character(kind=c_char) :: bytes(n)
+      integer(int64) :: clock, mix
+      integer :: k, code
+      if (c_getrandom(bytes, int(n, c_size_t), 0_c_int) /= int(n, c_long)) then
+         call system_clock(clock)
+         mix = ieor(clock, ishft(int(c_getpid(), int64), 32)) + 1
+         do k = 1, n
+            ! xorshift64
+            mix = ieor(mix, ishft(mix, 13))
+            mix = ieor(mix, ishft(mix, -7))
+            mix = ieor(mix, ishft(mix, 17))
+            bytes(k) = achar(int(iand(ishft(mix, -24), 255_int64)))
+         end do
+      end if
+      do k = 1, n
+         code = mod(modulo(iachar(bytes(k)), 256), len(alphabet)) + 1
+         text(k:k) = alphabet(code:code)
+      end do
+   end function random_suffix
 end module hillstab_batch_output

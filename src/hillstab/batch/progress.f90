@@ -28,6 +28,7 @@ module hillstab_batch_progress
       logical :: always = .false.       !! HILLSTAB_PROGRESS=always: every advance, a line each
       integer(int64) :: reported = -1   !! points done at the last report
       integer(int64) :: total = 0       !! points to compute
+      integer(int64) :: before = 0      !! points done before this run (a resumed run)
       integer(int64) :: start = 0       !! clock at the start
       integer(int64) :: last = 0        !! clock at the last report
       integer(int64) :: ticks = 1       !! clock ticks per second
@@ -36,14 +37,18 @@ module hillstab_batch_progress
 
 contains
 
-   !> Start reporting the progress of a run of `total` points (nothing when quiet).
-   subroutine progress_begin(progress, total, quiet, label)
+   !> Start reporting the progress of a run of `total` points (nothing when quiet); a
+   !> resumed run gives the points an earlier run did (`before`): the rate and the time left
+   !> count only this run's.
+   subroutine progress_begin(progress, total, quiet, label, before)
       type(progress_t), intent(out) :: progress  !! the progress state
       integer(int64), intent(in) :: total  !! points to compute
       logical, intent(in) :: quiet  !! no progress on stderr
       character(len=*), intent(in), optional :: label  !! what is counted (default "points")
+      integer(int64), intent(in), optional :: before  !! points already done (default 0)
       progress%enabled = .not. quiet
       if (present(label)) progress%label = label
+      if (present(before)) progress%before = before
       progress%total = total
       call system_clock(progress%start, progress%ticks)
       progress%last = progress%start
@@ -81,9 +86,10 @@ contains
          interval = merge(0.25_wp, 5.0_wp, progress%terminal)
          if (progress%shown .and. since_last < interval .and. done < progress%total) return
       end if
-      ! (at least a microsecond: HILLSTAB_PROGRESS=always reports from the start)
-      rate = real(done, wp)/max(elapsed, 1.0e-6_wp)
-      if (done > 0) then
+      ! (at least a microsecond: HILLSTAB_PROGRESS=always reports from the start); a resumed
+      ! run counts only the points it computed itself
+      rate = real(done - progress%before, wp)/max(elapsed, 1.0e-6_wp)
+      if (done > progress%before) then
          left = real(progress%total - done, wp)/rate
          write (left_text, '(f12.1)') min(left, 1.0e9_wp)
       else

@@ -71,7 +71,9 @@ module hillstab_batch_scene
       procedure :: unit_size => task_unit_size
       !> prepare what every unit shares (once, before the units)
       procedure :: prepare_units => task_prepare_units
-      !> the text and statuses of the points `first` … `last`
+      !> the text and statuses of the points `first` … `last` (called on several OpenMP threads
+      !> at once: no function with a deferred-length character result, see hillstab_batch_output
+      !> `join_lines`)
       procedure :: unit_text => task_unit_text
       !> open the output of a distributed run: checks, the header
       procedure :: open_units => task_open_units

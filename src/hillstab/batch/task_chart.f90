@@ -32,7 +32,7 @@ module hillstab_batch_task_chart
    use hillstab_batch_columns, only: columns_text
    use hillstab_batch_chart_columns, only: chart_columns
    use hillstab_batch_output, only: output_file_t, finish_output, discard_output, write_header, write_text, &
-      write_records, joined_lines
+      write_records, joined_lines, join_lines
    use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
    !$ use omp_lib, only: omp_get_max_threads
    implicit none
@@ -547,7 +547,7 @@ contains
          call compute_row_in_chunks(scene, self%ids, alpha, self%betas, lines, lengths, values, statuses, &
                                     self%beta_texts)
       end if
-      text = joined_lines(lines, unit > 1, lengths=lengths)
+      call join_lines(lines, unit > 1, text, lengths=lengths)
    end subroutine chart_unit_text
 
    !> The checks and the header of `chart_run`.

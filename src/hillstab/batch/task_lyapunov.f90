@@ -42,7 +42,7 @@ module hillstab_batch_task_lyapunov
    use hillstab_batch_columns, only: column_t, style_e17, style_e11, style_e7, style_e4, style_flag, style_integer, &
       columns_text, put_row, all_columns, failed_row
    use hillstab_batch_chart_columns, only: header_bytes, text_row_bytes
-   use hillstab_batch_output, only: output_file_t, finish_output, write_header, write_text, joined_lines
+   use hillstab_batch_output, only: output_file_t, finish_output, write_header, write_text, join_lines
    use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
    implicit none
    private
@@ -729,7 +729,7 @@ contains
          call lyapunov_batch(self, scene, lo, hi, lines(lo:hi), statuses(lo:hi))
       end do
       !$omp end parallel do
-      text = joined_lines(lines, .false., breaks)
+      call join_lines(lines, .false., text, breaks)
    end subroutine lyapunov_lines
 
    !> err_points_failed naming the first failed point, after the file has been written.

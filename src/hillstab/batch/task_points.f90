@@ -21,7 +21,7 @@ module hillstab_batch_task_points
       header_bytes, text_row_bytes, binary_row_bytes
    use hillstab_batch_columns, only: columns_text
    use hillstab_batch_output, only: output_file_t, finish_output, write_header, write_text, write_records, &
-      joined_lines, discard_output
+      join_lines, discard_output
    use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
    implicit none
    private
@@ -245,7 +245,7 @@ contains
       character(len=chart_line_length), allocatable :: lines(:)
       allocate (lines(first:last))
       call compute_points(self, scene, int(first), int(last), lines, statuses)
-      text = joined_lines(lines, .false.)
+      call join_lines(lines, .false., text)
    end subroutine points_unit_text
 
    !> The header of `points_run`.

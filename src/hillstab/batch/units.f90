@@ -12,6 +12,19 @@
 !> tasks, a failed point is written with its status and placeholders, and `batch_commit`
 !> returns err_points_failed (exit status 3) naming the first.
 !>
+!> Long runs keep a checkpoint (hillstab_batch_checkpoint) when `batch_open` is given
+!> options: every `interval` seconds of progress (3 by default), at a unit boundary,
+!> `batch_write` puts the file written so far on the disk and records how many units it
+!> holds; the first such update makes the checkpoint, so runs shorter than the interval
+!> leave none. `batch_open` with `resume` continues from a checkpoint of the same
+!> effective scene and points (units before `first_unit` are not computed again: the file
+!> is the one an uninterrupted run writes), refuses one of another scene (err_input, naming
+!> the first difference), and without `resume` discards one with a note. `batch_commit`
+!> removes the checkpoint with the finished file; `batch_discard` and signals keep it.
+!> `run_batch` computes units on OpenMP threads (as many at once as the serial chart task
+!> computes rows) and writes each as soon as it is next in order, so a checkpoint follows
+!> the run unit by unit, in the serial program and in `hillstab_mpi` alike.
+!>
 !>```fortran
 !> type(batch_t) :: batch
 !> type(batch_result_t) :: result
@@ -31,13 +44,22 @@
 !> end if
 !>```
 module hillstab_batch_units
-   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_kinds, only: wp, int64, version_string
    use, intrinsic :: iso_fortran_env, only: int32
    use hillstab_core_error, only: error_t, set_error, err_input
    use hillstab_core_status, only: status_roundoff, status_failed
-   use hillstab_batch_scene, only: scene_t, task_t, open_scene_output, scene_namelist
-   use hillstab_batch_output, only: output_file_t, write_text, commit_output, discard_output
+   use hillstab_core_text, only: integer_text
+   use hillstab_batch_scene, only: scene_t, task_t, open_scene_output, scene_namelist, output_path
+   use hillstab_batch_output, only: output_file_t, write_text, commit_output, discard_output, sync_output, lock_output, &
+      resume_output, temporary_prefix
    use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
+   use hillstab_batch_checkpoint, only: checkpoint_options_t, checkpoint_state_t, checkpoint_directory, checkpoint_data, &
+      find_checkpoint, make_checkpoint, save_checkpoint_state, remove_checkpoint, remove_stale_temporary, &
+      scene_difference, checkpoint_note, checkpoint_usable, checkpoint_incomplete, scene_text, scene_lines
+   use hillstab_batch_signals, only: set_interrupt_note, clear_interrupt_note
+   use hillstab_ffi_libc, only: c_nanosleep, timespec_t
+   use, intrinsic :: iso_c_binding, only: c_int, c_long
+   !$ use omp_lib, only: omp_get_max_threads
    implicit none
    private
    public :: batch_t, batch_result_t, batch_distributable, batch_plan, batch_unit_range, batch_compute, &
@@ -56,6 +78,13 @@ module hillstab_batch_units
       real(wp) :: first_inaccurate(2) = 0.0_wp  !! (α, β) of the first of them
       integer(int64) :: n_failed = 0         !! failed points written so far
       real(wp) :: first_failed(2) = 0.0_wp   !! (α, β) of the first of them
+      integer :: first_unit = 1              !! the first unit to compute (after those of a resumed checkpoint)
+      type(checkpoint_options_t) :: options  !! how this run keeps its checkpoint
+      logical :: checkpointing = .false.     !! this run keeps a checkpoint
+      logical :: checkpoint_made = .false.   !! it exists on the disk (made, or resumed)
+      character(len=:), allocatable :: checkpoint  !! its directory
+      type(checkpoint_state_t) :: state      !! what it records (as of its last update)
+      integer(int64) :: checkpoint_clock = 0  !! system_clock at its last update (or the start)
    end type batch_t
 
    !> The computed text of one unit.
@@ -77,14 +106,18 @@ contains
    !> Cut the work of `scene` into units for `n_workers` computing processes, as its task
    !> says (a chart by rows; a points list or a Lyapunov map in runs of consecutive points,
    !> small enough to balance points of very different cost).
-   subroutine batch_plan(scene, n_workers, batch)
+   subroutine batch_plan(scene, n_workers, batch, unit_size)
       type(scene_t), intent(in) :: scene  !! a distributable scene
       integer, intent(in) :: n_workers    !! processes that will compute units (≥ 1)
       type(batch_t), intent(out) :: batch  !! the units and the output file state
+      !> points per unit instead of the task's choice (that of a resumed checkpoint); only
+      !> a chart's must be its rows' n_beta, the others' files do not depend on the cut
+      integer, intent(in), optional :: unit_size
       class(task_t), allocatable :: task
       batch%scene = scene
       batch%n_points = scene%task%point_count()
       batch%unit_size = scene%task%unit_size(n_workers)
+      if (present(unit_size)) batch%unit_size = unit_size
       batch%n_units = int((batch%n_points + batch%unit_size - 1)/batch%unit_size)
       ! what every unit shares, made once (the task is prepared apart from the scene holding it)
       allocate (task, source=scene%task)
@@ -153,28 +186,245 @@ contains
    end subroutine batch_compute
 
    !> Open the output file of the scene and write its header (an unwritable path fails
-   !> here, before anything is computed).
-   subroutine batch_open(batch, quiet, error)
+   !> here, before anything is computed). With `options`, the run keeps a checkpoint, and
+   !> what is at the checkpoint's name is dealt with first: with `resume`, a checkpoint of
+   !> the same effective scene and points is continued (the file reopened after its last
+   !> recorded unit, `first_unit` the next), one of another scene is refused (err_input
+   !> naming the first difference); without, a checkpoint is discarded with a note. Anything
+   !> else at the name (a symbolic link, a file, a directory open to others) is refused
+   !> (err_io), as is a checkpoint another run is writing.
+   subroutine batch_open(batch, quiet, error, options)
       type(batch_t), intent(inout) :: batch  !! the planned work; its output file is opened
       logical, intent(in) :: quiet  !! no progress on stderr
       type(error_t), allocatable, intent(out) :: error  !! failure description; unallocated on success
+      type(checkpoint_options_t), intent(in), optional :: options  !! keep a checkpoint, and how
+      type(checkpoint_state_t) :: saved
+      character(len=:), allocatable :: reason
+      integer :: kind
+      logical :: resumed
+      integer(int64) :: rate
       if (batch%scene%binary) then
          call set_error(error, err_input, batch%scene%source//": &scene: format: 'binary' is written by the "// &
             "hillstab program, not by the unit-by-unit driver: use format = 'text'")
          return
       end if
-      call open_scene_output(batch%scene, batch%file, error)
-      if (allocated(error)) return
-      call batch%scene%task%open_units(batch%scene, batch%file, error)
-      if (allocated(error)) then
-         call discard_output(batch%file)
-         return
-      end if
       batch%done = 0
       batch%n_inaccurate = 0
       batch%n_failed = 0
-      call progress_begin(batch%progress, batch%n_points, quiet)
+      batch%first_unit = 1
+      batch%checkpoint_made = .false.
+      batch%checkpointing = present(options)
+      resumed = .false.
+      if (batch%checkpointing) then
+         batch%options = options
+         if (.not. allocated(batch%options%program)) batch%options%program = "hillstab"
+         if (.not. allocated(batch%options%command)) batch%options%command = batch%options%program//" --resume SCENE"
+         batch%checkpoint = checkpoint_directory(output_path(batch%scene))
+         call find_checkpoint(batch%checkpoint, kind, saved, reason, error)
+         if (allocated(error)) then
+            error%message = batch%scene%source//": &scene: output: "//error%message
+            return
+         end if
+         call describe_run(batch)
+         select case (kind)
+         case (checkpoint_usable)
+            if (options%resume) then
+               call resume_batch(batch, saved, error)
+               if (allocated(error)) return
+               resumed = .true.
+            else
+               call discard_checkpoint(batch, saved, error)
+               if (allocated(error)) return
+               call checkpoint_note(batch%options, "discarded the checkpoint '"//batch%checkpoint//"' of an "// &
+                  "earlier run ("//progress_text(saved)//"): without --resume the run starts afresh")
+            end if
+         case (checkpoint_incomplete)
+            call discard_checkpoint(batch, saved, error)
+            if (allocated(error)) return
+            if (options%resume) then
+               call checkpoint_note(batch%options, "the checkpoint '"//batch%checkpoint//"' cannot be resumed: "// &
+                  reason//"; discarded it, starting afresh")
+            else
+               call checkpoint_note(batch%options, "discarded the incomplete checkpoint '"//batch%checkpoint// &
+                  "' of an earlier run ("//reason//")")
+            end if
+         case default
+            if (options%resume) call checkpoint_note(batch%options, "no checkpoint of "//output_path(batch%scene)// &
+               " ('"//batch%checkpoint//"' does not exist): starting afresh")
+         end select
+      end if
+      if (.not. resumed) then
+         call open_scene_output(batch%scene, batch%file, error)
+         if (allocated(error)) return
+         call batch%scene%task%open_units(batch%scene, batch%file, error)
+         if (allocated(error)) then
+            call discard_output(batch%file)
+            return
+         end if
+      end if
+      call progress_begin(batch%progress, batch%n_points, quiet, before=batch%done)
+      call system_clock(batch%checkpoint_clock, rate)
+      ! with no interval, the checkpoint is made at once (the header alone)
+      if (batch%checkpointing .and. .not. batch%checkpoint_made) then
+         if (batch%options%interval <= 0.0_wp) call update_checkpoint(batch, error)
+      end if
+      if (allocated(error)) call batch_discard(batch)
    end subroutine batch_open
+
+   !> What this run would record in its checkpoint before any unit: the program, the output,
+   !> the effective scene, its points' fingerprint, the units.
+   subroutine describe_run(batch)
+      type(batch_t), intent(inout) :: batch
+      batch%state = checkpoint_state_t()
+      batch%state%version = version_string
+      batch%state%output = output_path(batch%scene)
+      batch%state%temporary = ""
+      batch%state%fingerprint = scene_fingerprint(batch%scene)
+      batch%state%n_points = batch%n_points
+      batch%state%unit_size = batch%unit_size
+      batch%state%n_units = batch%n_units
+      batch%state%scene = scene_text(scene_namelist(batch%scene))
+   end subroutine describe_run
+
+   !> "37 of 400 units, 14800 of 160000 points done".
+   function progress_text(state) result(text)
+      type(checkpoint_state_t), intent(in) :: state
+      character(len=:), allocatable :: text
+      text = integer_text(min(state%n_points, int(state%units_done, int64)*state%unit_size))//" of "// &
+         integer_text(state%n_points)//" points done"
+   end function progress_text
+
+   !> Remove a checkpoint found at the start (and the temporary output its killed run left).
+   subroutine discard_checkpoint(batch, saved, error)
+      type(batch_t), intent(inout) :: batch
+      type(checkpoint_state_t), intent(in) :: saved
+      type(error_t), allocatable, intent(out) :: error
+      call remove_stale_temporary(batch%checkpoint, saved, temporary_prefix(output_path(batch%scene)))
+      call remove_checkpoint(batch%checkpoint, error)
+      if (allocated(error)) error%message = batch%scene%source//": &scene: output: "//error%message
+   end subroutine discard_checkpoint
+
+   !> Continue from the checkpoint `saved` when it is one of this run (same version, output,
+   !> effective scene and points): the file is reopened after its last recorded unit.
+   subroutine resume_batch(batch, saved, error)
+      type(batch_t), intent(inout) :: batch
+      type(checkpoint_state_t), intent(in) :: saved
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: difference, refusal, source
+      source = batch%scene%source
+      refusal = " (checkpoint '"//batch%checkpoint//"'): it is not resumed; run without --resume to discard it "// &
+         "and start afresh"
+      if (saved%version /= version_string) then
+         call set_error(error, err_input, source//": the checkpoint was written by hillstab "//saved%version// &
+            ", this is "//version_string//", whose lines may differ"//refusal)
+         return
+      end if
+      if (saved%output /= batch%state%output) then
+         call set_error(error, err_input, source//": &scene: output: the checkpoint is of the output '"// &
+            saved%output//"'"//refusal)
+         return
+      end if
+      difference = scene_difference(scene_lines(saved%scene), scene_lines(batch%state%scene))
+      if (len(difference) > 0) then
+         call set_error(error, err_input, source//": "//difference//refusal)
+         return
+      end if
+      if (any(saved%fingerprint /= batch%state%fingerprint) .or. saved%n_points /= batch%n_points) then
+         if (index(new_line("a")//batch%state%scene, new_line("a")//"&points ") > 0) then
+            call set_error(error, err_input, source//": &points: file: the points differ from those of the "// &
+               "checkpoint (the file changed since)"//refusal)
+         else
+            call set_error(error, err_input, source//": the points differ from those of the checkpoint"//refusal)
+         end if
+         return
+      end if
+      ! the units of the checkpoint (the file does not depend on the cut, a chart's is its rows)
+      batch%unit_size = saved%unit_size
+      batch%n_units = int((batch%n_points + batch%unit_size - 1)/batch%unit_size)
+      if (batch%n_units /= saved%n_units) then
+         call set_error(error, err_input, source//": the checkpoint's units do not tile the points"//refusal)
+         return
+      end if
+      call remove_stale_temporary(batch%checkpoint, saved, temporary_prefix(batch%state%output))
+      call resume_output(batch%file, batch%state%output, checkpoint_data(batch%checkpoint), saved%bytes, error, &
+         context=source//": &scene: output: ")
+      if (allocated(error)) return
+      batch%first_unit = saved%units_done + 1
+      batch%done = min(batch%n_points, int(saved%units_done, int64)*batch%unit_size)
+      batch%n_inaccurate = saved%n_inaccurate
+      if (saved%first_inaccurate > 0) batch%first_inaccurate = batch%scene%task%point_of(saved%first_inaccurate)
+      batch%n_failed = saved%n_failed
+      if (saved%first_failed > 0) batch%first_failed = batch%scene%task%point_of(saved%first_failed)
+      batch%state = saved
+      batch%state%temporary = batch%file%temp_path
+      batch%checkpoint_made = .true.
+      ! the state names the new temporary file at once (a kill now leaves nothing unknown)
+      call save_checkpoint_state(batch%checkpoint, batch%state, error)
+      if (allocated(error)) then
+         call discard_output(batch%file)
+         error%message = source//": &scene: output: "//error%message
+         return
+      end if
+      call set_resume_note(batch)
+      call checkpoint_note(batch%options, "resuming "//batch%state%output//" from its checkpoint '"// &
+         batch%checkpoint//"': "//progress_text(saved)//", "//integer_text(batch%n_points - batch%done)// &
+         " to compute")
+   end subroutine resume_batch
+
+   !> What a signal prints from now on: the checkpoint is kept, and how to resume.
+   subroutine set_resume_note(batch)
+      type(batch_t), intent(in) :: batch
+      character(len=:), allocatable :: head
+      head = batch%options%program//": stopped by signal "
+      ! on a terminal the progress line has no new line yet
+      if (batch%progress%terminal) head = new_line("a")//head
+      call set_interrupt_note(head, "; "//kept_text(batch))
+   end subroutine set_resume_note
+
+   !> "the checkpoint '…' keeps … points: `hillstab --resume s.nml` continues the run".
+   function kept_text(batch) result(text)
+      type(batch_t), intent(in) :: batch
+      character(len=:), allocatable :: text
+      text = "the checkpoint '"//batch%checkpoint//"' keeps "// &
+         integer_text(min(batch%n_points, int(batch%state%units_done, int64)*batch%unit_size))//" of "// &
+         integer_text(batch%n_points)//" points: `"//batch%options%command//"` continues the run"
+   end function kept_text
+
+   !> Put the file written so far on the disk and record it in the checkpoint (made on the
+   !> first call). A failure to sync is the file's write error (`error`); a checkpoint that
+   !> cannot be made or updated only costs the protection: a note, and the run goes on.
+   subroutine update_checkpoint(batch, error)
+      type(batch_t), intent(inout) :: batch
+      type(error_t), allocatable, intent(inout) :: error
+      type(error_t), allocatable :: cause
+      logical :: busy
+      call sync_output(batch%file, error)
+      if (allocated(error)) return
+      batch%state%units_done = int((batch%done + batch%unit_size - 1)/batch%unit_size)
+      batch%state%bytes = batch%file%bytes
+      batch%state%n_inaccurate = batch%n_inaccurate
+      batch%state%n_failed = batch%n_failed
+      batch%state%temporary = batch%file%temp_path
+      if (.not. batch%checkpoint_made) then
+         busy = lock_output(batch%file)
+         call make_checkpoint(batch%checkpoint, batch%file%temp_path, batch%state, cause)
+         if (allocated(cause)) then
+            call checkpoint_note(batch%options, cause%message//"; the run goes on without a checkpoint")
+            batch%checkpointing = .false.
+            return
+         end if
+         batch%checkpoint_made = .true.
+      else
+         call save_checkpoint_state(batch%checkpoint, batch%state, cause)
+         if (allocated(cause)) then
+            call checkpoint_note(batch%options, cause%message//"; the checkpoint keeps its last update, the "// &
+               "run goes on without updating it")
+            batch%checkpointing = .false.
+            return
+         end if
+      end if
+      call set_resume_note(batch)
+   end subroutine update_checkpoint
 
    !> Append a unit's text to the file and count its round-off limited and failed
    !> points; units must come in order 1, 2, …. An error (the file cannot be written)
@@ -190,59 +440,176 @@ contains
       if (allocated(error)) return
       if (any(result%status == status_roundoff)) then
          j = findloc(result%status, status_roundoff, dim=1)
-         if (batch%n_inaccurate == 0) batch%first_inaccurate = batch%scene%task%point_of(first + j - 1)
+         if (batch%n_inaccurate == 0) then
+            batch%first_inaccurate = batch%scene%task%point_of(first + j - 1)
+            batch%state%first_inaccurate = first + j - 1
+         end if
          batch%n_inaccurate = batch%n_inaccurate + count(result%status == status_roundoff)
       end if
       if (any(result%status == status_failed)) then
          j = findloc(result%status, status_failed, dim=1)
-         if (batch%n_failed == 0) batch%first_failed = batch%scene%task%point_of(first + j - 1)
+         if (batch%n_failed == 0) then
+            batch%first_failed = batch%scene%task%point_of(first + j - 1)
+            batch%state%first_failed = first + j - 1
+         end if
          batch%n_failed = batch%n_failed + count(result%status == status_failed)
       end if
       batch%done = last
       call progress_update(batch%progress, batch%done)
+      if (batch%checkpointing) then
+         if (checkpoint_due(batch)) call update_checkpoint(batch, error)
+      end if
    end subroutine batch_write
 
-   !> Finish the file (rename it onto its name); then the task's warnings, and with failed
-   !> points `error` is err_points_failed naming the first (as after a serial run).
+   !> Whether the checkpoint's interval has passed since its last update.
+   logical function checkpoint_due(batch)
+      type(batch_t), intent(inout) :: batch
+      integer(int64) :: now, rate
+      call system_clock(now, rate)
+      checkpoint_due = real(now - batch%checkpoint_clock, wp) >= batch%options%interval*real(rate, wp)
+      if (checkpoint_due) batch%checkpoint_clock = now
+   end function checkpoint_due
+
+   !> Finish the file (rename it onto its name) and remove its checkpoint; then the task's
+   !> warnings, and with failed points `error` is err_points_failed naming the first (as
+   !> after a serial run). A file that cannot be finished keeps its checkpoint.
    subroutine batch_commit(batch, error)
       type(batch_t), intent(inout) :: batch  !! the planned work with every unit written
       !> err_points_failed naming the first failed point, or a rename failure
       type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: cause
       call progress_end(batch%progress)
       call commit_output(batch%file, error)
+      if (batch%checkpoint_made) then
+         call clear_interrupt_note()
+         if (allocated(error)) then
+            error%message = error%message//"; "//kept_text(batch)
+            return
+         end if
+         call remove_checkpoint(batch%checkpoint, cause)
+         if (allocated(cause)) call checkpoint_note(batch%options, cause%message)
+         batch%checkpoint_made = .false.
+      end if
       if (allocated(error)) return
       call batch%scene%task%finish_units(batch%scene, batch%n_points, batch%n_failed, batch%first_failed, &
                                          batch%n_inaccurate, batch%first_inaccurate, error)
    end subroutine batch_commit
 
-   !> Abandon the file: the temporary file is deleted, the final name left as it was.
-   subroutine batch_discard(batch)
+   !> Abandon the file: the temporary file is deleted, the final name left as it was. A
+   !> checkpoint is kept; `error` (the failure that stopped the run) then says where and
+   !> how to resume.
+   subroutine batch_discard(batch, error)
       type(batch_t), intent(inout) :: batch  !! the planned work whose file is abandoned
+      !> the error that stopped the run: the checkpoint kept is added to its message
+      type(error_t), allocatable, intent(inout), optional :: error
       call progress_end(batch%progress)
       call discard_output(batch%file)
+      if (batch%checkpoint_made) then
+         call clear_interrupt_note()
+         if (present(error)) then
+            if (allocated(error)) error%message = error%message//"; "//kept_text(batch)
+         end if
+      end if
    end subroutine batch_discard
 
-   !> Run a distributable scene unit by unit in this process: the reference order of
-   !> work of a distributed run, and what such a run does with one process.
-   subroutine run_batch(scene, quiet, error)
-      type(scene_t), intent(in) :: scene  !! a validated chart or points scene
+   !> Run a distributable scene unit by unit in this process, keeping a checkpoint (default
+   !> options without `options`): the serial program's run of chart, points and lyapunov
+   !> scenes in text, and the reference order of work of a distributed run. With at least 4
+   !> units a thread, units are computed on OpenMP threads, each written as soon as it is
+   !> next in order; at most 16 a thread are held at once (a unit waits to start until it is
+   !> within that window of the next to write). With fewer, units go one by one, each
+   !> computed in parallel within (a chart's row in chunks), as the serial tasks do.
+   subroutine run_batch(scene, quiet, error, options)
+      type(scene_t), intent(in) :: scene  !! a validated chart, points or lyapunov scene
       logical, intent(in) :: quiet  !! no progress on stderr
       type(error_t), allocatable, intent(out) :: error  !! what failed (err_points_failed: written with failed points)
+      !> checkpoint and resume (default: a checkpoint, no resume)
+      type(checkpoint_options_t), intent(in), optional :: options
       type(batch_t) :: batch
+      type(batch_result_t), allocatable :: window(:)
       type(batch_result_t) :: result
-      integer :: unit
+      integer :: unit, next_claim, next_write, written, slots, threads, status, slot
+      logical :: in_parallel, stopped, stop_now
       call batch_plan(scene, 1, batch)
-      call batch_open(batch, quiet, error)
+      if (present(options)) then
+         call batch_open(batch, quiet, error, options)
+      else
+         call batch_open(batch, quiet, error, checkpoint_options_t())
+      end if
       if (allocated(error)) return
-      do unit = 1, batch%n_units
+      threads = max_threads()
+      in_parallel = batch%n_units >= 4*threads
+      slots = merge(16*threads, 1, in_parallel)
+      allocate (window(0:slots - 1), stat=status)
+      if (status /= 0) then
+         call set_error(error, err_input, scene%source//": "//scene%task%size_variables()//": the buffers of "// &
+            integer_text(slots)//" units cannot be allocated (out of memory)")
+         call batch_discard(batch, error)
+         return
+      end if
+      next_claim = batch%first_unit
+      next_write = batch%first_unit
+      stopped = .false.
+      ! units are computed on several threads at once: a task's unit_text must not call a
+      ! function with a deferred-length character result (gfortran 12 keeps that length in a
+      ! static variable of the caller; concurrent calls lost a unit's text now and then),
+      ! hence join_lines, not joined_lines, in the tasks
+      !$omp parallel if(in_parallel) default(shared) private(unit, written, slot, stop_now, result)
+      do
+         !$omp atomic capture
+         unit = next_claim
+         next_claim = next_claim + 1
+         !$omp end atomic
+         if (unit > batch%n_units) exit
+         ! hold the unit back while it lies beyond the window of results kept
+         do
+            !$omp atomic read
+            written = next_write
+            !$omp atomic read
+            stop_now = stopped
+            if (unit < written + slots .or. stop_now) exit
+            call pause_briefly()
+         end do
+         if (stop_now) cycle
          call batch_compute(batch, unit, result)
-         call batch_write(batch, result, error)
-         if (allocated(error)) exit
+         !$omp critical (hillstab_batch_writer)
+         slot = mod(unit, slots)
+         window(slot)%unit = unit
+         call move_alloc(result%text, window(slot)%text)
+         call move_alloc(result%status, window(slot)%status)
+         do while (next_write <= batch%n_units .and. .not. stopped)
+            slot = mod(next_write, slots)
+            if (.not. allocated(window(slot)%status)) exit
+            if (window(slot)%unit /= next_write) exit
+            call batch_write(batch, window(slot), error)
+            deallocate (window(slot)%text, window(slot)%status)
+            if (allocated(error)) then
+               !$omp atomic write
+               stopped = .true.
+            end if
+            !$omp atomic update
+            next_write = next_write + 1
+         end do
+         !$omp end critical (hillstab_batch_writer)
       end do
+      !$omp end parallel
       if (allocated(error)) then
-         call batch_discard(batch)
+         call batch_discard(batch, error)
       else
          call batch_commit(batch, error)
       end if
    end subroutine run_batch
+
+   !> Wait a millisecond.
+   subroutine pause_briefly()
+      type(timespec_t) :: remaining
+      integer(c_int) :: status
+      status = c_nanosleep(timespec_t(0_c_long, 1000000_c_long), remaining)
+   end subroutine pause_briefly
+
+   !> Number of OpenMP threads a parallel region will use (1 without OpenMP).
+   integer function max_threads()
+      max_threads = 1
+      !$ max_threads = omp_get_max_threads()
+   end function max_threads
 end module hillstab_batch_units

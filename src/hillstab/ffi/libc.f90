@@ -1,9 +1,12 @@
 !> Interfaces of the C library and POSIX routines hillstab calls, declared once: files
-!> (stdio streams, mkstemp, fdopen, fchmod, umask, rename, remove, unlink, fsync), errno and its message, the process id,
-!> signals, whether a descriptor is a terminal, free space (statvfs). Bindings only: the
-!> writers (hillstab_batch_output), the signal cleanup (hillstab_batch_signals), the
-!> resource limits (hillstab_batch_limits) and the progress line use them; `remove_file` and
-!> `is_directory` are the two path helpers every reader and writer needs.
+!> (stdio streams, mkstemp, fdopen, fchmod, umask, rename, remove, unlink, fsync, link,
+!> rmdir, lstat, fstat, ftruncate, fseek, flock), errno and its message, the process id and
+!> effective user, signals and write(2) for the handler, whether a descriptor is a terminal,
+!> free space (statvfs), random bytes (getrandom), a short sleep (nanosleep). Bindings only:
+!> the writers (hillstab_batch_output), the checkpoints (hillstab_batch_checkpoint), the
+!> signal cleanup (hillstab_batch_signals), the resource limits (hillstab_batch_limits) and
+!> the progress line use them; `remove_file` and `is_directory` are the two path helpers
+!> every reader and writer needs. Layouts (struct stat, off_t) are those of 64-bit Linux.
 !>
 !>```fortran
 !> integer(c_int) :: status
@@ -19,6 +22,21 @@ module hillstab_ffi_libc
    public :: c_rename, c_remove, c_unlink, c_getpid, c_fopen, c_fwrite, c_fwrite_raw, c_fflush, c_fclose, c_fileno, &
       c_fsync, c_signal, c_exit_now, c_isatty, c_statvfs, statvfs_t
    public :: errno_text, set_errno, c_string, remove_file, is_directory, is_special_file, c_mkdir
+   public :: stat_t, c_lstat, c_fstat, c_link, c_rmdir, c_geteuid, c_ftruncate, c_fseek, c_flock, c_getrandom, &
+      c_write, c_nanosleep, timespec_t, errno_value, file_type, file_type_regular, file_type_directory, &
+      file_type_link, seek_end, lock_exclusive, lock_nonblocking, errno_exists, errno_no_entry, errno_would_block
+
+   !> The file type bits of `stat_t%mode` (S_IFMT).
+   integer(c_int), parameter :: file_type = int(o'170000', c_int)
+   integer(c_int), parameter :: file_type_regular = int(o'100000', c_int)    !! S_IFREG: a regular file
+   integer(c_int), parameter :: file_type_directory = int(o'040000', c_int)  !! S_IFDIR: a directory
+   integer(c_int), parameter :: file_type_link = int(o'120000', c_int)       !! S_IFLNK: a symbolic link
+   integer(c_int), parameter :: seek_end = 2           !! SEEK_END of fseek
+   integer(c_int), parameter :: lock_exclusive = 2     !! LOCK_EX of flock
+   integer(c_int), parameter :: lock_nonblocking = 4   !! LOCK_NB of flock
+   integer, parameter :: errno_no_entry = 2            !! ENOENT
+   integer, parameter :: errno_would_block = 11        !! EWOULDBLOCK (EAGAIN) on Linux
+   integer, parameter :: errno_exists = 17             !! EEXIST
 
    !> RLIMIT_AS (Linux): the largest address space of the process.
    integer(c_int), parameter :: rlimit_as = 9
@@ -31,12 +49,26 @@ module hillstab_ffi_libc
 
    !> struct stat on x86-64 Linux (144 bytes).
    type, bind(C) :: stat_t
-      integer(c_long) :: dev, ino, nlink
-      integer(c_int) :: mode, uid, gid, pad
-      integer(c_long) :: rdev, size, blksize, blocks
-      integer(c_long) :: times(6)
-      integer(c_long) :: reserved(3)
+      integer(c_long) :: dev        !! device of the file system
+      integer(c_long) :: ino        !! inode number
+      integer(c_long) :: nlink      !! number of hard links
+      integer(c_int) :: mode        !! type and permission bits
+      integer(c_int) :: uid         !! owner
+      integer(c_int) :: gid         !! group
+      integer(c_int) :: pad         !! padding
+      integer(c_long) :: rdev       !! device (special files)
+      integer(c_long) :: size       !! size in bytes
+      integer(c_long) :: blksize    !! block size for i/o
+      integer(c_long) :: blocks     !! 512-byte blocks allocated
+      integer(c_long) :: times(6)   !! access, modification, change times (seconds, nanoseconds)
+      integer(c_long) :: reserved(3)  !! reserved
    end type stat_t
+
+   !> struct timespec on 64-bit Linux.
+   type, bind(C) :: timespec_t
+      integer(c_long) :: seconds      !! whole seconds
+      integer(c_long) :: nanoseconds  !! and nanoseconds, 0 … 999999999
+   end type timespec_t
 
    !> struct statvfs on 64-bit Linux.
    type, bind(C) :: statvfs_t
@@ -102,6 +134,84 @@ module hillstab_ffi_libc
          type(stat_t), intent(out) :: info
          integer(c_int) :: status
       end function c_stat
+      !> lstat(2): 0 on success; a symbolic link is described, not followed.
+      function c_lstat(path, info) bind(C, name="lstat") result(status)
+         import :: c_int, c_char, stat_t
+         character(kind=c_char), intent(in) :: path(*)  !! NUL-terminated path
+         type(stat_t), intent(out) :: info  !! what the name is
+         integer(c_int) :: status
+      end function c_lstat
+      !> fstat(2): 0 on success.
+      function c_fstat(fd, info) bind(C, name="fstat") result(status)
+         import :: c_int, stat_t
+         integer(c_int), value :: fd  !! an open descriptor
+         type(stat_t), intent(out) :: info  !! the open file
+         integer(c_int) :: status
+      end function c_fstat
+      !> link(2): a new name for an existing file, 0 on success; fails (EEXIST) when the new
+      !> name exists, whatever it is (a symbolic link there is not followed).
+      function c_link(old, new) bind(C, name="link") result(status)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: old(*)  !! NUL-terminated existing name
+         character(kind=c_char), intent(in) :: new(*)  !! NUL-terminated new name
+         integer(c_int) :: status
+      end function c_link
+      !> rmdir(2): remove an empty directory, 0 on success.
+      function c_rmdir(path) bind(C, name="rmdir") result(status)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: path(*)  !! NUL-terminated path
+         integer(c_int) :: status
+      end function c_rmdir
+      !> geteuid(2): the effective user id.
+      function c_geteuid() bind(C, name="geteuid") result(uid)
+         import :: c_int
+         integer(c_int) :: uid
+      end function c_geteuid
+      !> ftruncate(2): cut (or extend) an open file to `length` bytes, 0 on success.
+      function c_ftruncate(fd, length) bind(C, name="ftruncate") result(status)
+         import :: c_int, c_long
+         integer(c_int), value :: fd      !! an open descriptor
+         integer(c_long), value :: length  !! the new size (off_t)
+         integer(c_int) :: status
+      end function c_ftruncate
+      !> fseek(3): move the position of a stream, 0 on success.
+      function c_fseek(stream, offset, whence) bind(C, name="fseek") result(status)
+         import :: c_int, c_long, c_ptr
+         type(c_ptr), value :: stream      !! the stream
+         integer(c_long), value :: offset  !! bytes from `whence`
+         integer(c_int), value :: whence   !! seek_end, …
+         integer(c_int) :: status
+      end function c_fseek
+      !> flock(2): an advisory lock on an open file (released when the process ends), 0 on success.
+      function c_flock(fd, operation) bind(C, name="flock") result(status)
+         import :: c_int
+         integer(c_int), value :: fd         !! an open descriptor
+         integer(c_int), value :: operation  !! lock_exclusive, with lock_nonblocking
+         integer(c_int) :: status
+      end function c_flock
+      !> getrandom(2): `length` random bytes from the kernel; the number given, or -1.
+      function c_getrandom(buffer, length, flags) bind(C, name="getrandom") result(got)
+         import :: c_char, c_size_t, c_int, c_long
+         character(kind=c_char), intent(out) :: buffer(*)  !! the bytes
+         integer(c_size_t), value :: length  !! how many
+         integer(c_int), value :: flags      !! 0
+         integer(c_long) :: got
+      end function c_getrandom
+      !> write(2) (async-signal-safe): the bytes written, or -1.
+      function c_write(fd, buffer, length) bind(C, name="write") result(written)
+         import :: c_int, c_char, c_size_t, c_long
+         integer(c_int), value :: fd  !! the descriptor (2: stderr)
+         character(kind=c_char), intent(in) :: buffer(*)  !! the bytes
+         integer(c_size_t), value :: length  !! how many
+         integer(c_long) :: written
+      end function c_write
+      !> nanosleep(2): sleep for `duration`, 0 when it elapsed.
+      function c_nanosleep(duration, remaining) bind(C, name="nanosleep") result(status)
+         import :: c_int, timespec_t
+         type(timespec_t), intent(in) :: duration  !! how long
+         type(timespec_t), intent(out) :: remaining  !! left when interrupted
+         integer(c_int) :: status
+      end function c_nanosleep
       !> close(2).
       function c_close(fd) bind(C, name="close") result(status)
          import :: c_int
@@ -246,6 +356,13 @@ contains
       allocate (character(len=n) :: text)
       text = transfer(chars(:n), text)
    end function errno_text
+
+   !> The current errno (0 after `set_errno(0)` and a call that did not fail).
+   integer function errno_value()
+      integer(c_int), pointer :: code
+      call c_f_pointer(c_errno_location(), code)
+      errno_value = int(code)
+   end function errno_value
 
    !> Set errno (to 0 before a call whose failure is then read with `errno_text`).
    subroutine set_errno(value)
