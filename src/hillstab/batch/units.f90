@@ -82,6 +82,7 @@ module hillstab_batch_units
       type(checkpoint_options_t) :: options  !! how this run keeps its checkpoint
       logical :: checkpointing = .false.     !! this run keeps a checkpoint
       logical :: checkpoint_made = .false.   !! it exists on the disk (made, or resumed)
+      logical :: fingerprinted = .false.     !! state%fingerprint is made (`fingerprint_run`)
       character(len=:), allocatable :: checkpoint  !! its directory
       type(checkpoint_state_t) :: state      !! what it records (as of its last update)
       integer(int64) :: checkpoint_clock = 0  !! system_clock at its last update (or the start)
@@ -279,12 +280,24 @@ contains
       batch%state%version = version_string
       batch%state%output = output_path(batch%scene)
       batch%state%temporary = ""
-      batch%state%fingerprint = scene_fingerprint(batch%scene)
+      ! the fingerprint is made when a checkpoint is compared or first written
+      ! (`fingerprint_run`): it reads every point (a chart's grid, a points file), and most
+      ! runs end before they make a checkpoint
+      batch%state%fingerprint = 0
+      batch%fingerprinted = .false.
       batch%state%n_points = batch%n_points
       batch%state%unit_size = batch%unit_size
       batch%state%n_units = batch%n_units
       batch%state%scene = scene_text(scene_namelist(batch%scene))
    end subroutine describe_run
+
+   !> The fingerprint of the run's scene and points in its state, made once.
+   subroutine fingerprint_run(batch)
+      type(batch_t), intent(inout) :: batch
+      if (batch%fingerprinted) return
+      batch%state%fingerprint = scene_fingerprint(batch%scene)
+      batch%fingerprinted = .true.
+   end subroutine fingerprint_run
 
    !> "37 of 400 units, 14800 of 160000 points done".
    function progress_text(state) result(text)
@@ -329,6 +342,7 @@ contains
          call set_error(error, err_input, source//": "//difference//refusal)
          return
       end if
+      call fingerprint_run(batch)
       if (any(saved%fingerprint /= batch%state%fingerprint) .or. saved%n_points /= batch%n_points) then
          if (index(new_line("a")//batch%state%scene, new_line("a")//"&points ") > 0) then
             call set_error(error, err_input, source//": &points: file: the points differ from those of the "// &
@@ -406,6 +420,7 @@ contains
       batch%state%n_failed = batch%n_failed
       batch%state%temporary = batch%file%temp_path
       if (.not. batch%checkpoint_made) then
+         call fingerprint_run(batch)
          busy = lock_output(batch%file)
          call make_checkpoint(batch%checkpoint, batch%file%temp_path, batch%state, cause)
          if (allocated(cause)) then
