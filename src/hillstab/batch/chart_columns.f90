@@ -22,7 +22,7 @@ module hillstab_batch_chart_columns
       model_summary
    use hillstab_hill_coefficient, only: sampling_name
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus, verdicts
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, method_name, method_uses_segments, method_is_exact, &
       need_nothing, need_verdict, need_growth, need_trace
    use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, physical_summary
@@ -36,6 +36,7 @@ module hillstab_batch_chart_columns
    public :: chart_header, common_header, evaluate_point, failed_points_error, check_method_runs, warn_inaccurate
    public :: clamp_magnitude, log10_floor, chart_line_length, stacked, chart_line, failed_values
    public :: header_bytes, text_row_bytes, binary_row_bytes, point_amplitude, columns_need, columns_paper
+   public :: verdict_values
 
    !> The columns of a chart or points file, in file order.
    integer, parameter :: col_alpha = 1, col_a = 2, col_beta = 3, col_omega = 4, col_s = 5, col_stable = 6, &
@@ -298,6 +299,31 @@ contains
       v(col_error_estimate) = min(estimate, clamp_magnitude)
       v(col_status) = real(status, wp)
    end function chart_values
+
+   !> `chart_values` of a point computed for its verdicts only (`columns_need` ≤
+   !> need_verdict): the grid's columns, stable (0.5 when marginal), stable_paper, physical
+   !> and status; the columns of S and the multipliers 0 (a verdict file holds none of them).
+   pure function verdict_values(alpha, beta, tr, epsilon, tolerance, physical, status, amplitude) result(v)
+      real(wp), intent(in) :: alpha, beta  !! the grid point
+      type(trace_t), intent(in) :: tr      !! its trace, with its error bound
+      real(wp), intent(in) :: epsilon      !! damping ε
+      real(wp), intent(in) :: tolerance    !! the scene's tolerance
+      logical, intent(in) :: physical      !! (α, β) inside the physical domain
+      integer, intent(in) :: status        !! per-point status code
+      real(wp), intent(in) :: amplitude    !! a (m), or 0
+      real(wp) :: v(n_chart_columns)
+      logical :: stable, stable_paper, marginal
+      call verdicts(tr, epsilon, tolerance, stable, stable_paper, marginal)
+      v = 0.0_wp
+      v(col_alpha) = alpha
+      v(col_a) = amplitude
+      v(col_beta) = beta
+      v(col_stable) = merge(1.0_wp, 0.0_wp, stable)
+      if (marginal) v(col_stable) = 0.5_wp
+      v(col_stable_paper) = merge(1.0_wp, 0.0_wp, stable_paper)
+      v(col_physical) = merge(1.0_wp, 0.0_wp, physical)
+      v(col_status) = real(status, wp)
+   end function verdict_values
 
    !> The values of a point where nothing could be computed: alpha, a, beta and physical
    !> kept, the other columns at their placeholders, status 2.

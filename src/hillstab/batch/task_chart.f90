@@ -16,7 +16,7 @@ module hillstab_batch_task_chart
    use hillstab_core_text, only: format_es, real_text, integer_text
    use hillstab_hill_coefficient, only: hill_model_t, in_physical_domain
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, batch_plan_t, prepare_batch, need_verdict
    use hillstab_batch_scene, only: scene_t, task_t, open_scene_output
    use hillstab_batch_declaration, only: group_t
@@ -26,7 +26,7 @@ module hillstab_batch_task_chart
    use hillstab_hill_models, only: model_physical_alpha
    use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point, grid_size_text
    use hillstab_batch_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, chart_header, &
-      point_amplitude, columns_need, columns_paper, &
+      point_amplitude, columns_need, columns_paper, verdict_values, &
       scene_chart_columns, check_method_runs, warn_inaccurate, failed_points_error, chart_line_length, evaluate_point, &
       header_bytes, text_row_bytes, binary_row_bytes
    use hillstab_batch_columns, only: columns_text
@@ -436,12 +436,14 @@ contains
             v = failed_values(alpha, betas(j), in_physical_domain(alpha, betas(j)), a)
          else
             if (need <= need_verdict) then
-               f = floquet_verdict(traces(j), scene%epsilon, scene%method%tolerance)
+               ! verdicts only: no Floquet data, the few columns a verdict file can hold
+               v = verdict_values(alpha, betas(j), traces(j), scene%epsilon, scene%method%tolerance, &
+                                  in_physical_domain(alpha, betas(j)), statuses(j), a)
             else
                f = floquet_from_trace(traces(j), scene%epsilon, scene%method%tolerance)
+               v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second, a, &
+                                need=need)
             end if
-            v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second, a, &
-                             need=need)
          end if
          if (scene%binary) then
             values(:, j) = v(ids)

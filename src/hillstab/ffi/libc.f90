@@ -25,6 +25,7 @@ module hillstab_ffi_libc
    public :: stat_t, c_lstat, c_fstat, c_link, c_rmdir, c_geteuid, c_ftruncate, c_fseek, c_flock, c_getrandom, &
       c_write, c_nanosleep, timespec_t, errno_value, file_type, file_type_regular, file_type_directory, &
       file_type_link, seek_end, lock_exclusive, lock_nonblocking, errno_exists, errno_no_entry, errno_would_block
+   public :: c_mallopt, malloc_trim_threshold, malloc_top_pad, malloc_mmap_threshold
 
    !> The file type bits of `stat_t%mode` (S_IFMT).
    integer(c_int), parameter :: file_type = int(o'170000', c_int)
@@ -32,6 +33,9 @@ module hillstab_ffi_libc
    integer(c_int), parameter :: file_type_directory = int(o'040000', c_int)  !! S_IFDIR: a directory
    integer(c_int), parameter :: file_type_link = int(o'120000', c_int)       !! S_IFLNK: a symbolic link
    integer(c_int), parameter :: seek_end = 2           !! SEEK_END of fseek
+   integer(c_int), parameter :: malloc_trim_threshold = -1  !! M_TRIM_THRESHOLD of mallopt
+   integer(c_int), parameter :: malloc_top_pad = -2         !! M_TOP_PAD of mallopt
+   integer(c_int), parameter :: malloc_mmap_threshold = -3  !! M_MMAP_THRESHOLD of mallopt
    integer(c_int), parameter :: lock_exclusive = 2     !! LOCK_EX of flock
    integer(c_int), parameter :: lock_nonblocking = 4   !! LOCK_NB of flock
    integer, parameter :: errno_no_entry = 2            !! ENOENT
@@ -205,6 +209,13 @@ module hillstab_ffi_libc
          integer(c_size_t), value :: length  !! how many
          integer(c_long) :: written
       end function c_write
+      !> mallopt(3) of glibc: set one parameter of the allocator; 1 on success.
+      function c_mallopt(parameter, value) bind(C, name="mallopt") result(status)
+         import :: c_int
+         integer(c_int), value :: parameter  !! M_TRIM_THRESHOLD, M_TOP_PAD, M_MMAP_THRESHOLD, ...
+         integer(c_int), value :: value      !! its value (bytes)
+         integer(c_int) :: status
+      end function c_mallopt
       !> nanosleep(2): sleep for `duration`, 0 when it elapsed.
       function c_nanosleep(duration, remaining) bind(C, name="nanosleep") result(status)
          import :: c_int, timespec_t

@@ -13,7 +13,8 @@ module hillstab_hill_floquet
    use hillstab_hill_transfer, only: trace_t, trace_from_value
    implicit none
    private
-   public :: floquet_t, floquet_from_trace, floquet_verdict, floquet_from_value, multipliers, largest_multiplier_modulus
+   public :: floquet_t, floquet_from_trace, floquet_verdict, verdicts, floquet_from_value, multipliers, &
+      largest_multiplier_modulus
 
    !> Floquet data of the swing x over one radial period (2 units of τ).
    type :: floquet_t
@@ -73,33 +74,48 @@ contains
       !> the tolerance S was computed to (relative to max(1, |S|)); default 0: the estimate alone
       real(wp), intent(in), optional :: tolerance
       type(floquet_t) :: f
-      real(wp) :: s, bound
+      real(wp) :: bound
       f%trace = tr
       f%epsilon = epsilon
+      bound = 0.0_wp
+      if (present(tolerance)) bound = tolerance
+      call verdicts(tr, epsilon, bound, f%stable, f%stable_paper, f%marginal)
+   end function floquet_verdict
+
+   !> The verdicts of `floquet_verdict` alone, as three flags: what a file of verdicts writes
+   !> at every point (no Floquet data built).
+   elemental subroutine verdicts(tr, epsilon, tolerance, stable, stable_paper, marginal)
+      type(trace_t), intent(in) :: tr  !! trace of the (chi-)monodromy, with its error estimate
+      real(wp), intent(in) :: epsilon  !! damping ε ≥ 0
+      real(wp), intent(in) :: tolerance  !! the tolerance S was computed to (0: the estimate alone)
+      logical, intent(out) :: stable        !! |S| < 2 cosh ε
+      logical, intent(out) :: stable_paper  !! |S| ≤ 2
+      logical, intent(out) :: marginal      !! the error bound reaches across 2 cosh ε
+      real(wp) :: s, bound
       s = tr%value
       if (epsilon > 0.0_wp) then
          if (.not. tr%overflow .and. abs(s) <= 2.0_wp) then
-            f%stable = 0.0_wp < epsilon
+            stable = 0.0_wp < epsilon
          else
-            f%stable = growth_of(tr) < epsilon
+            stable = growth_of(tr) < epsilon
          end if
       else
-         f%stable = .not. tr%overflow .and. abs(s) < 2.0_wp
+         stable = .not. tr%overflow .and. abs(s) < 2.0_wp
       end if
-      f%stable_paper = .not. tr%overflow .and. abs(s) <= 2.0_wp
+      stable_paper = .not. tr%overflow .and. abs(s) <= 2.0_wp
+      marginal = .false.
       if (tr%error_estimate >= 1.0_wp .and. .not. tr%overflow) then
          ! an error bound of the order of S itself decides nothing
-         f%marginal = .true.
+         marginal = .true.
       else if (tr%error_estimate >= 0.0_wp .and. .not. tr%overflow .and. epsilon < log_huge) then
-         bound = tr%error_estimate
-         if (present(tolerance)) bound = max(bound, tolerance)
+         bound = max(tr%error_estimate, tolerance)
          if (epsilon > 0.0_wp) then
-            f%marginal = abs(abs(s) - 2.0_wp*cosh(epsilon)) <= bound*max(1.0_wp, abs(s))
+            marginal = abs(abs(s) - 2.0_wp*cosh(epsilon)) <= bound*max(1.0_wp, abs(s))
          else
-            f%marginal = abs(abs(s) - 2.0_wp) <= bound*max(1.0_wp, abs(s))
+            marginal = abs(abs(s) - 2.0_wp) <= bound*max(1.0_wp, abs(s))
          end if
       end if
-   end function floquet_verdict
+   end subroutine verdicts
 
    !> ln|λ_max| of χ for |S| ≥ 2: arccosh(|S|/2) = ln((|S| + √(S² − 4))/2); ≈ ln|S| for huge |S|.
    pure real(wp) function growth_of(tr) result(log_growth)

@@ -756,8 +756,8 @@ contains
    !> `lane_traces` of at most `lane_block` lanes.
    pure subroutine lane_block_traces(mesh, c0, c1, phases, traces, floors, how)
       type(mesh_t), intent(in) :: mesh
-      real(wp), intent(in) :: c0(:), c1(:)
-      real(wp), intent(in) :: phases(:)  !! phase bound of each lane (`coefficient_phase`)
+      real(wp), intent(in), contiguous :: c0(:), c1(:)
+      real(wp), intent(in), contiguous :: phases(:)  !! phase bound of each lane (`coefficient_phase`)
       type(trace_t), intent(out) :: traces(size(c0))
       real(wp), intent(out) :: floors(size(c0))  !! round-off level of each S, relative to max(1, |S|)
       integer, intent(in) :: how  !! lanes_plain or lanes_values
