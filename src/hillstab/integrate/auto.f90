@@ -38,8 +38,8 @@ module hillstab_integrate_auto
    use hillstab_hill_coefficient, only: coefficient_phase
    use hillstab_hill_transfer, only: transfer_functions, step_functions, cos_taylor, sinc_taylor, trace_t, &
       trace_from_scaled, scaled_matrix_t
-   use hillstab_integrate_refine, only: roundoff_level, trace_distance, sensitivity_t, coefficient_level, coefficient_sum, &
-      roundoff_level_plain
+   use hillstab_integrate_refine, only: roundoff_level, trace_distance, sensitivity_t, coefficient_level, &
+      roundoff_safety, coefficient_roundings_c0, coefficient_roundings_c1, cancellation_limit
    implicit none
    private
    public :: trace_auto, trace_auto_batch, auto_initial_steps, auto_mesh_power, fixed_n_trace
@@ -756,8 +756,8 @@ contains
    !> `lane_traces` of at most `lane_block` lanes.
    pure subroutine lane_block_traces(mesh, c0, c1, phases, traces, floors, how)
       type(mesh_t), intent(in) :: mesh
-      real(wp), intent(in), contiguous :: c0(:), c1(:)
-      real(wp), intent(in), contiguous :: phases(:)  !! phase bound of each lane (`coefficient_phase`)
+      real(wp), intent(in) :: c0(:), c1(:)
+      real(wp), intent(in) :: phases(:)  !! phase bound of each lane (`coefficient_phase`)
       type(trace_t), intent(out) :: traces(size(c0))
       real(wp), intent(out) :: floors(size(c0))  !! round-off level of each S, relative to max(1, |S|)
       integer, intent(in) :: how  !! lanes_plain or lanes_values
@@ -773,7 +773,9 @@ contains
       type(scaled_matrix_t) :: monodromy
       real(wp) :: z_max, uu, vv, sw, t, level
       real(wp) :: h, w1, w2, w3, q1, q2, q3, d2, d3, x3, y1, y2, y3, ls, e11, e12, e21, e22, a, b, big
-      real(wp) :: big_max, big_min
+      real(wp) :: big_max, big_min, root_n, size_s, m12, m21, d0, d1, size0, size1
+      real(wp), dimension(lane_block) :: s_lane
+      logical :: special(lane_block)
       integer :: i, l, k, shift, nl
       logical :: rescaled(lane_block)
       nl = size(c0)
@@ -910,36 +912,49 @@ contains
             end if
          end if
       end do
+      ! S of every lane, and, where the propagator was never rescaled (the usual case), its
+      ! round-off level (`roundoff_level` and `coefficient_level` with their exponentials
+      ! written out: log_scale = 0, log_peak = ln max(1, peak), the integrals in units of
+      ! 2^-512), all in loops over the lanes that the compiler vectorises; the other lanes
+      ! (`special`) one by one through the logarithms (`lane_result`)
       do l = 1, nl
-         t = 2.0_wp*(p11(l)*p22(l) + p21(l)*p12(l))
-         if (rescaled(l) .or. log_scale(l) /= 0.0_wp .or. .not. abs(t) < 1.0e300_wp) then
-            ! through the logarithms (`roundoff_level`, `coefficient_level`)
+         s_lane(l) = 2.0_wp*(p11(l)*p22(l) + p21(l)*p12(l))
+         special(l) = rescaled(l) .or. log_scale(l) /= 0.0_wp .or. .not. abs(s_lane(l)) < 1.0e300_wp
+      end do
+      if (how == lanes_values) then
+         do l = 1, nl
+            floors(l) = 0.0_wp
+         end do
+      else
+         root_n = sqrt(real(max(mesh%n_steps, 1), wp))
+         do l = 1, nl
+            size_s = max(1.0_wp, abs(s_lane(l)))
+            m21 = 2.0_wp*p11(l)*p21(l)
+            m12 = 2.0_wp*p12(l)*p22(l)
+            d0 = 2.0_wp*abs(c0(l))*abs(m21*sv2(l) - m12*su2(l))
+            size0 = 2.0_wp*abs(c0(l))*(abs(m21)*sv2(l) + abs(m12)*su2(l))
+            d1 = 2.0_wp*abs(m21*sv2w(l) - m12*su2w(l))
+            size1 = 2.0_wp*(abs(m21)*sv2a(l) + abs(m12)*su2a(l))
+            level = merge(coefficient_roundings_c0*d0, 0.0_wp, d0 > cancellation_limit*size0) + &
+                    merge(coefficient_roundings_c1*d1, 0.0_wp, d1 > cancellation_limit*size1)
+            ! beyond 2^400 the integrals times 2^512 may overflow: those lanes go the long way
+            special(l) = special(l) .or. .not. level < 2.0_wp**400
+            floors(l) = roundoff_safety*epsilon(1.0_wp)*root_n*max(1.0_wp, peak(l))/size_s + &
+                        2.0_wp*epsilon(1.0_wp)*phases(l) + epsilon(1.0_wp)*(level*2.0_wp**512)/size_s
+         end do
+      end if
+      do l = 1, nl
+         if (special(l)) then
             call lane_result(p11(l), p12(l), p21(l), p22(l), log_scale(l), log_peak(l), peak(l), &
                sensitivity_t(2.0_wp*log_scale(l) + 512.0_wp*log(2.0_wp), su2(l), sv2(l), su2w(l), sv2w(l), &
                su2a(l), sv2a(l)), c0(l), mesh%n_steps, phases(l), traces(l), floors(l))
             if (how == lanes_values) floors(l) = 0.0_wp
          else if (how == lanes_values) then
-            traces(l)%value = t
+            ! S only: ln|S| is left unset (below 1e300 nothing reads it)
+            traces(l)%value = s_lane(l)
             traces(l)%overflow = .false.
-            floors(l) = 0.0_wp
          else
-            ! the values of `roundoff_level` and `coefficient_level` with e^{log ...} written
-            ! out: the propagator was never rescaled (log_scale = 0, log_peak = ln max(1, peak))
-            traces(l) = trace_from_scaled(t, 0.0_wp)
-            floors(l) = roundoff_level_plain(peak(l), abs(t), mesh%n_steps, phases(l))
-            monodromy%m(1, 1) = 0.0_wp
-            monodromy%m(2, 1) = 2.0_wp*p11(l)*p21(l)
-            monodromy%m(1, 2) = 2.0_wp*p12(l)*p22(l)
-            monodromy%m(2, 2) = 0.0_wp
-            monodromy%log_scale = 0.0_wp
-            sensitivity = sensitivity_t(512.0_wp*log(2.0_wp), su2(l), sv2(l), su2w(l), sv2w(l), su2a(l), sv2a(l))
-            level = coefficient_sum(sensitivity, c0(l), monodromy)
-            if (level > 0.0_wp .and. level < 2.0_wp**400) then
-               ! the integrals are in units of 2^-512 (an exact factor, no overflow below 2^400)
-               floors(l) = floors(l) + epsilon(1.0_wp)*(level*2.0_wp**512)/max(1.0_wp, abs(t))
-            else if (level > 0.0_wp) then
-               floors(l) = floors(l) + coefficient_level(sensitivity, c0(l), monodromy, traces(l)%log_abs)
-            end if
+            traces(l) = trace_from_scaled(s_lane(l), 0.0_wp)
          end if
       end do
    end subroutine lane_block_traces

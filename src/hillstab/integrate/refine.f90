@@ -27,11 +27,11 @@ module hillstab_integrate_refine
    public :: refinement_t, start_refinement, refine, trace_distance, roundoff_level, propagator_condition, first_step_factor, &
       next_local_tolerance
    public :: refine_more, refine_met, refine_roundoff
-   public :: sensitivity_t, accumulate_sensitivity, coefficient_level, coefficient_sum, roundoff_level_plain
+   public :: sensitivity_t, accumulate_sensitivity, coefficient_level, coefficient_sum
 
    !> Safety factor of `roundoff_level` (calibrated with method auto on β = 0,
    !> α = 9.8 … 9.86, where S = 2 exactly).
-   real(wp), parameter :: roundoff_safety = 0.1_wp
+   real(wp), parameter, public :: roundoff_safety = 0.1_wp
    !> The factor of the √N term of `roundoff_level` for the Runge–Kutta integrators (rk,
    !> gsl), whose steps round the state itself: one rounding of ε per step (its `step_rounding`).
    real(wp), parameter, public :: rk_rounding = 1.0_wp
@@ -58,12 +58,12 @@ module hillstab_integrate_refine
    !> Relative rounding error of the constants c₀, c₁ of q = c₀ + c₁ w(τ) and of the
    !> computed shape w, as a multiple of ε in `coefficient_level`: one rounding of c₀, one
    !> of c₁ and up to two of w (its denominator and the division).
-   real(wp), parameter :: coefficient_roundings_c0 = 1.0_wp, coefficient_roundings_c1 = 3.0_wp
+   real(wp), parameter, public :: coefficient_roundings_c0 = 1.0_wp, coefficient_roundings_c1 = 3.0_wp
    !> `coefficient_level` trusts a sensitivity while the cancellation of its two terms, the
    !> ratio of the result to the sum of their magnitudes, stays above this: the solutions u,
    !> v it is made of carry the integrator's own error (relative errors up to about 1e-8 of
    !> the larger terms), which a stronger cancellation would leave as the whole result.
-   real(wp), parameter :: cancellation_limit = 1.0e-6_wp
+   real(wp), parameter, public :: cancellation_limit = 1.0e-6_wp
 
    !> Integrals along the half period [0, 1] of the even and odd solutions u, v that give
    !> the sensitivity of S to the constants of q = c₀ + c₁ w(τ) (`coefficient_level`):
@@ -269,18 +269,6 @@ contains
       level = factor*epsilon(1.0_wp)*sqrt(real(max(n_steps, 1), wp)) &
               *exp(min(log_peak - max(0.0_wp, log_abs_s), log_huge)) + 2.0_wp*epsilon(1.0_wp)*phase
    end function roundoff_level
-
-   !> `roundoff_level` where the propagator was never rescaled (its condition `peak` and S as
-   !> plain numbers): factor ε √N max(1, peak)/max(1, |S|) + 2 ε phase, without a logarithm
-   !> or an exponential (the screening pass of a verdict computes it at every point).
-   elemental real(wp) function roundoff_level_plain(peak, abs_s, n_steps, phase) result(level)
-      real(wp), intent(in) :: peak     !! the largest `propagator_condition` along the path
-      real(wp), intent(in) :: abs_s    !! |S|
-      integer, intent(in) :: n_steps   !! steps of the propagation
-      real(wp), intent(in) :: phase    !! bound of the phase or growth over the period (`phase_bound`)
-      level = roundoff_safety*epsilon(1.0_wp)*sqrt(real(max(n_steps, 1), wp))*max(1.0_wp, peak)/max(1.0_wp, abs_s) &
-              + 2.0_wp*epsilon(1.0_wp)*phase
-   end function roundoff_level_plain
 
    !> |S_a − S_b|/max(1, |S_a|), through ln|S| when S is large or overflows; huge when the
    !> signs of large traces differ.
