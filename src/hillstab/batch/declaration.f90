@@ -32,6 +32,7 @@ module hillstab_batch_declaration
    use hillstab_core_text, only: real_text, quoted, integer_text, lower_case, fpe_state_t, halting_off, &
       halting_restore
    use hillstab_batch_scene_file, only: scene_file_t, item_t, group_items, group_present, check_read, fail, read_len, &
+      long_item, text_len, &
       group_count, string_across_lines
    implicit none
    private
@@ -124,6 +125,8 @@ module hillstab_batch_declaration
       character(len=512) :: message = ""           !! iomsg of the item read (unused)
       character(len=:), allocatable :: bad         !! the first item that fails alone
       type(fpe_state_t) :: fpe                     !! halting modes to restore
+      !> an item whose value is longer than a string is read (not read: see `long_item`)
+      character(len=:), allocatable :: too_long
    end type group_reader_t
 
 contains
@@ -250,6 +253,14 @@ contains
       end do
       reader%defaults = reader%defaults//" /"
       allocate (character(len=room) :: reader%echo)
+      ! a value longer than the strings it would be read into is refused before the read
+      ! (the namelist read would cut it with a runtime warning on stderr)
+      reader%too_long = ""
+      if (reader%from_file) then
+         reader%too_long = long_item(file%unit, group%name)
+         if (len(reader%too_long) > 0) reader%from_file = .false.
+         rewind (file%unit)   ! the group is read from the start of the file
+      end if
    end subroutine begin_group
 
    !> The default of a variable as namelist input: the declared one, else a neutral value
@@ -312,6 +323,14 @@ contains
          names(k) = group%variables(k)%name
          kinds(k) = kind_text(group%variables(k))
       end do
+      if (allocated(reader%too_long)) then
+         if (len(reader%too_long) > 0) then
+            call halting_restore(reader%fpe)
+            call fail(error, file%path, group%name, reader%too_long, "value longer than "//integer_text(text_len)// &
+               " characters")
+            return
+         end if
+      end if
       if (reader%defaults_status /= 0) then
          call halting_restore(reader%fpe)
          call set_error(error, err_input, file%path//": &"//group%name//": the declared defaults do not read "// &

@@ -22,7 +22,7 @@ module hillstab_batch_scene_file
    private
    public :: scene_file_t, item_t, open_scene_file, close_scene_file
    public :: locate_group, group_present, group_sets, group_items, check_read, fail, shortened, joined, item_name
-   public :: group_count, string_across_lines
+   public :: group_count, string_across_lines, long_item
    public :: max_line_length, max_scene_bytes, text_len, read_len
 
    !> Longest line of a scene or points file.
@@ -284,6 +284,41 @@ contains
          end if
       end do
    end subroutine check_item_values
+
+   !> The name of the first item of `&group` whose value, as written, is longer than the
+   !> strings a group is read into (`text_len` between quotes); "" when there is none. The
+   !> readers ask before the namelist read, which would cut such a value with a runtime
+   !> warning of its own on stderr; `check_item_values` refuses it with the same message.
+   function long_item(unit, group) result(name)
+      integer, intent(in) :: unit  !! the scratch copy of the scene file
+      character(len=*), intent(in) :: group  !! the namelist group
+      character(len=:), allocatable :: name
+      type(item_t), allocatable :: items(:)
+      integer :: k, eq
+      name = ""
+      call group_items(unit, group, items)
+      do k = 1, size(items)
+         eq = index(items(k)%text, "=")
+         if (len_trim(adjustl(items(k)%text(eq + 1:))) > text_len + 3) then
+            ! (a closing comma may follow the quotes: check_item_values strips it)
+            if (value_length(items(k)%text(eq + 1:)) > text_len + 2) then
+               name = items(k)%name
+               return
+            end if
+         end if
+      end do
+   contains
+      pure integer function value_length(text) result(n)
+         character(len=*), intent(in) :: text
+         character(len=:), allocatable :: value
+         value = trim(adjustl(text))
+         do while (len(value) > 0)
+            if (value(len(value):) /= ",") exit
+            value = trim(value(:len(value) - 1))
+         end do
+         n = len(value)
+      end function value_length
+   end function long_item
 
    !> Find the first `&group` of the file (at the start of a line or after a blank, so
    !> `# &group` in output headers counts; `!` comments removed) and its body up to the
