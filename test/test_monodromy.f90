@@ -13,6 +13,7 @@ module test_monodromy
    use hillstab_hill_floquet
    use hillstab_integrate_monodromy
    use hillstab_integrate_auto, only: trace_auto_screen
+   use hillstab_hill_models, only: model_coefficient_range
    use hillstab_core_stats, only: work_stats_t
    use test_reference, only: rk4_monodromy, value_of
    use hillstab_testing
@@ -64,7 +65,8 @@ contains
          new_unittest("hard_set_gsl", hard_set_gsl), &
          new_unittest("screen_bound_hard_sets", screen_bound_hard_sets), &
          new_unittest("verdict_need_every_method", verdict_need_every_method), &
-         new_unittest("growth_need", growth_need)])
+         new_unittest("growth_need", growth_need), &
+         new_unittest("bounds_settle_correctly", bounds_settle_correctly)])
    end function collect_monodromy
 
    subroutine unit_determinant(ctx)
@@ -496,9 +498,10 @@ contains
       end do
    end subroutine verdict_need_every_method
 
-   !> need_growth: where |S| < 2 is certain λ_max = 1 and μ = 0 exactly (as from S computed
-   !> to the tolerance); elsewhere S agrees with need_trace's to the tolerance. Elastic and
-   !> Mathieu rows, and a damped one (where λ_max = e^{−ε} below |S| = 2).
+   !> need_growth: where |S| < 2, λ_max = 1 and μ = 0 exactly (as from S computed to the
+   !> tolerance), whether the range of q, the screen or S itself settled it; elsewhere S
+   !> agrees with need_trace's to the tolerance. Elastic and Mathieu rows, and a damped one
+   !> (where λ_max = e^{−ε} below |S| = 2).
    subroutine growth_need(ctx)
       type(test_context_t), intent(inout) :: ctx
       integer, parameter :: n = 41
@@ -528,9 +531,11 @@ contains
          do j = 1, n
             f_full = floquet_from_trace(full(j), row%epsilon, 1.0e-10_wp)
             f_growth = floquet_from_trace(growth(j), row%epsilon, 1.0e-10_wp)
-            if (abs(growth(j)%value) < 2.0_wp .and. growth(j)%error_estimate > 1.0e-10_wp) then
-               ! settled by the screen: the multipliers of x have modulus e^{-epsilon}
-               n_exact = n_exact + 1
+            if (abs(full(j)%value) < 2.0_wp .and. .not. f_full%marginal) then
+               ! |S| < 2 (settled by the range of q, by the screen, or computed): the
+               ! multipliers of x have modulus e^{-epsilon} exactly
+               if (growth(j)%error_estimate > 1.0e-10_wp .or. growth(j)%error_estimate == 0.0_wp) &
+                  n_exact = n_exact + 1
                call check(ctx, largest_multiplier_modulus(f_growth) == largest_multiplier_modulus(f_full) .and. &
                           f_growth%exponent == f_full%exponent, "lambda_max and mu exact where |S| < 2")
             else
@@ -539,7 +544,61 @@ contains
                call check(ctx, f_growth%exponent, f_full%exponent, abs=1.0e-9_wp, message="mu elsewhere")
             end if
          end do
-         call check(ctx, n_exact > 5, "some points settled by the screen")
+         call check(ctx, n_exact > 5, "some points settled without S to the tolerance")
       end do
    end subroutine growth_need
+
+   !> What the range of q alone decides (Zhukovskii's criterion, q < 0 throughout) against S
+   !> computed by auto at 1e-12: every point declared stable has |S| < 2 and every point
+   !> declared unstable S > 2, beyond S's error bound, on grids of the elastic model (β from
+   !> −20 to 40, across the bands of q), of the Mathieu model and of the damped χ equation;
+   !> and the criterion decides a good share of each grid. Near a band edge (q constant at
+   !> (nπ/2)², S = ±2) nothing is declared.
+   subroutine bounds_settle_correctly(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      call sweep(model_elastic, 0.0_wp, 9.8_wp, -20.0_wp, 40.0_wp, 0.0_wp, "elastic")
+      call sweep(model_mathieu, 0.0_wp, 20.0_wp, -10.0_wp, 40.0_wp, 0.0_wp, "mathieu")
+      call sweep(model_elastic, 0.0_wp, 9.8_wp, -20.0_wp, 40.0_wp, 0.5_wp, "damped")
+      ! q ≡ π²/4 (α = 0, β = π²/4): on the edge of the first band, S = −2: undecided
+      call check(ctx, bounds_verdict(pi2/4.0_wp, pi2/4.0_wp) == bounds_undecided, "band edge undecided")
+      call check(ctx, bounds_verdict(pi2/4.0_wp*(1.0_wp - 1.0e-6_wp), pi2/4.0_wp*(1.0_wp - 1.0e-6_wp)) == &
+                 bounds_stable, "just inside the first band")
+      call check(ctx, bounds_verdict(-1.0e-3_wp, -1.0e-6_wp) == bounds_unstable, "q < 0 throughout")
+      call check(ctx, bounds_verdict(-1.0_wp, 0.5_wp) == bounds_undecided, "q changes sign")
+   contains
+      subroutine sweep(kind, a0, a1, b0, b1, epsilon, name)
+         integer, intent(in) :: kind
+         real(wp), intent(in) :: a0, a1, b0, b1, epsilon
+         character(len=*), intent(in) :: name
+         integer, parameter :: n = 40
+         real(wp) :: alpha, beta, q_min, q_max, bound
+         type(trace_t) :: tr
+         type(error_t), allocatable :: error
+         integer :: i, j, verdict, n_stable, n_unstable
+         n_stable = 0
+         n_unstable = 0
+         do i = 1, n
+            alpha = a0 + (a1 - a0)*(i - 1)/real(n - 1, wp)
+            do j = 1, n
+               beta = b0 + (b1 - b0)*(j - 1)/real(n - 1, wp)
+               call model_coefficient_range(kind, alpha, beta, epsilon, q_min, q_max)
+               verdict = bounds_verdict(q_min, q_max)
+               if (verdict == bounds_undecided) cycle
+               call monodromy_trace(hill_model_t(kind, alpha, beta, epsilon), method_t(method_auto, &
+                                    tolerance=1.0e-12_wp), tr, error)
+               if (allocated(error)) deallocate (error)
+               bound = max(tr%error_estimate, 1.0e-12_wp)*max(1.0_wp, abs(tr%value))
+               if (verdict == bounds_stable) then
+                  n_stable = n_stable + 1
+                  call check(ctx, abs(tr%value) + bound < 2.0_wp, name//": declared stable, |S| < 2")
+               else
+                  n_unstable = n_unstable + 1
+                  call check(ctx, tr%value - bound > 2.0_wp, name//": declared unstable, S > 2")
+               end if
+            end do
+         end do
+         call check(ctx, n_stable + n_unstable > n*n/10, name//": the range decides some points")
+         print '(4x,a,a,i0,a,i0,a,i0)', name, ": declared stable ", n_stable, ", unstable ", n_unstable, " of ", n*n
+      end subroutine sweep
+   end subroutine bounds_settle_correctly
 end module test_monodromy

@@ -36,7 +36,7 @@ module hillstab_batch_chart_columns
    public :: chart_header, common_header, evaluate_point, failed_points_error, check_method_runs, warn_inaccurate
    public :: clamp_magnitude, log10_floor, chart_line_length, stacked, chart_line, failed_values
    public :: header_bytes, text_row_bytes, binary_row_bytes, point_amplitude, columns_need, columns_paper
-   public :: verdict_values
+   public :: verdict_values, verdict_line
 
    !> The columns of a chart or points file, in file order.
    integer, parameter :: col_alpha = 1, col_a = 2, col_beta = 3, col_omega = 4, col_s = 5, col_stable = 6, &
@@ -324,6 +324,69 @@ contains
       v(col_physical) = merge(1.0_wp, 0.0_wp, physical)
       v(col_status) = real(status, wp)
    end function verdict_values
+
+   !> The text line of a point computed for its verdicts only, written directly (what
+   !> `verdict_values` and `chart_line` write, without the array of every column's value and
+   !> the dispatch by style: a verdict chart writes little more than the grid and a flag).
+   pure subroutine verdict_line(ids, alpha, beta, tr, epsilon, tolerance, physical, status, amplitude, line, &
+                                length, alpha_text, beta_text)
+      integer, intent(in) :: ids(:)        !! the columns to write (each offered to a verdict file)
+      real(wp), intent(in) :: alpha, beta  !! the grid point
+      type(trace_t), intent(in) :: tr      !! its trace, with its error bound
+      real(wp), intent(in) :: epsilon      !! damping ε
+      real(wp), intent(in) :: tolerance    !! the scene's tolerance
+      logical, intent(in) :: physical      !! (α, β) inside the physical domain
+      integer, intent(in) :: status        !! per-point status code
+      real(wp), intent(in) :: amplitude    !! a (m), or 0
+      character(len=chart_line_length), intent(inout) :: line  !! the line (not blanked beyond `length`)
+      integer, intent(out) :: length       !! characters written
+      character(len=23), intent(in) :: alpha_text  !! put_es(alpha, 16)
+      character(len=23), intent(in), optional :: beta_text   !! put_es(beta, 16)
+      logical :: stable, stable_paper, marginal
+      integer :: k, pos
+      call verdicts(tr, epsilon, tolerance, stable, stable_paper, marginal)
+      pos = 0
+      do k = 1, size(ids)
+         if (k > 1) then
+            line(pos + 1:pos + 1) = " "
+            pos = pos + 1
+         end if
+         select case (ids(k))
+         case (col_alpha)
+            line(pos + 1:pos + 23) = alpha_text
+            pos = pos + 23
+         case (col_beta)
+            if (present(beta_text)) then
+               line(pos + 1:pos + 23) = beta_text
+               pos = pos + 23
+            else
+               call put_value(chart_styles(col_beta), beta, line, pos)
+            end if
+         case (col_stable)
+            if (marginal) then
+               line(pos + 1:pos + 3) = "0.5"
+               pos = pos + 3
+            else
+               line(pos + 1:pos + 1) = merge("1", "0", stable)
+               pos = pos + 1
+            end if
+         case (col_stable_paper)
+            line(pos + 1:pos + 1) = merge("1", "0", stable_paper)
+            pos = pos + 1
+         case (col_physical)
+            line(pos + 1:pos + 1) = merge("1", "0", physical)
+            pos = pos + 1
+         case (col_status)
+            call put_value(style_flag, real(status, wp), line, pos)
+         case (col_a)
+            call put_value(chart_styles(col_a), amplitude, line, pos)
+         case default
+            ! a column of S or the multipliers: not in a verdict file (its need is higher)
+            call put_value(chart_styles(ids(k)), 0.0_wp, line, pos)
+         end select
+      end do
+      length = pos
+   end subroutine verdict_line
 
    !> The values of a point where nothing could be computed: alpha, a, beta and physical
    !> kept, the other columns at their placeholders, status 2.

@@ -26,7 +26,7 @@ module hillstab_batch_task_chart
    use hillstab_hill_models, only: model_physical_alpha
    use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point, grid_size_text
    use hillstab_batch_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, chart_header, &
-      point_amplitude, columns_need, columns_paper, verdict_values, &
+      point_amplitude, columns_need, columns_paper, verdict_values, verdict_line, &
       scene_chart_columns, check_method_runs, warn_inaccurate, failed_points_error, chart_line_length, evaluate_point, &
       header_bytes, text_row_bytes, binary_row_bytes
    use hillstab_batch_columns, only: columns_text
@@ -432,6 +432,17 @@ contains
       do j = 1, size(betas)
          a = 0.0_wp
          if (scene%physical) a = point_amplitude(scene, j, alpha, betas(j))
+         if (need <= need_verdict .and. .not. (scene%binary .or. failed(j))) then
+            ! a verdict line, written directly
+            if (present(beta_texts)) then
+               call verdict_line(ids, alpha, betas(j), traces(j), scene%epsilon, scene%method%tolerance, &
+                  in_physical_domain(alpha, betas(j)), statuses(j), a, lines(j), lengths(j), alpha_text, beta_texts(j))
+            else
+               call verdict_line(ids, alpha, betas(j), traces(j), scene%epsilon, scene%method%tolerance, &
+                  in_physical_domain(alpha, betas(j)), statuses(j), a, lines(j), lengths(j), alpha_text)
+            end if
+            cycle
+         end if
          if (failed(j)) then
             v = failed_values(alpha, betas(j), in_physical_domain(alpha, betas(j)), a)
          else

@@ -14,7 +14,7 @@ module hillstab_hill_floquet
    implicit none
    private
    public :: floquet_t, floquet_from_trace, floquet_verdict, verdicts, floquet_from_value, multipliers, &
-      largest_multiplier_modulus
+      largest_multiplier_modulus, bounds_verdict, bounds_stable, bounds_unstable, bounds_undecided
 
    !> Floquet data of the swing x over one radial period (2 units of τ).
    type :: floquet_t
@@ -32,7 +32,35 @@ module hillstab_hill_floquet
       logical :: marginal = .false.
    end type floquet_t
 
+   !> What the range of the coefficient alone decides (`bounds_verdict`).
+   integer, parameter :: bounds_undecided = 0  !! nothing
+   integer, parameter :: bounds_stable = 1     !! |S| < 2 (Zhukovskii's criterion)
+   integer, parameter :: bounds_unstable = -1  !! S > 2 (q ≤ 0 throughout, q ≢ 0)
+
 contains
+
+   !> The verdict of x'' + q(τ) x = 0 (period 2) that the range [q_min, q_max] of q decides
+   !> without integrating: Zhukovskii's criterion (1892), stable, |S| < 2, when
+   !> (nπ/2)² < q_min and q_max < ((n + 1)π/2)² for some n ≥ 0 (q between two consecutive
+   !> eigenvalues of the periodic and antiperiodic problems of a constant coefficient);
+   !> S > 2 when q_max < 0 (u'' = −q u with u(0) = 1, u'(0) = 0 is convex and increasing,
+   !> v' of the odd solution grows from 1, so S = u(2) + v'(2) > 2). Otherwise undecided.
+   !> The caller widens the range for the roundings of q (`model_coefficient_range`); the
+   !> band edges are compared with a margin of their own roundings.
+   elemental integer function bounds_verdict(q_min, q_max) result(verdict)
+      real(wp), intent(in) :: q_min, q_max  !! bounds of q over the period
+      real(wp) :: n, low, high
+      verdict = bounds_undecided
+      if (q_max < 0.0_wp) then
+         verdict = bounds_unstable
+      else if (q_min > 0.0_wp .and. q_max < 1.0e12_wp) then
+         ! the band of q_min: n = floor(2 √q_min/π)
+         n = aint(2.0_wp*sqrt(q_min)/pi)
+         low = (0.5_wp*pi*n)**2*(1.0_wp + 8.0_wp*epsilon(1.0_wp))
+         high = (0.5_wp*pi*(n + 1.0_wp))**2*(1.0_wp - 8.0_wp*epsilon(1.0_wp))
+         if (low < q_min .and. q_max < high) verdict = bounds_stable
+      end if
+   end function bounds_verdict
 
    !> Floquet data from the trace of the (χ-)monodromy and the damping ε.
    !> `marginal` is set when the trace has an error estimate e ≥ 0 (exact methods) and

@@ -25,6 +25,7 @@ module hillstab_hill_model_elastic
    public :: one_minus_alpha_over_pi2, in_physical_domain, elastic_alpha_valid, elastic_alpha_domain
    public :: elastic_coefficient, elastic_segment_mean, elastic_split, elastic_shape, elastic_shapes_from_half_sines
    public :: elastic_shape_root_mean, elastic_mesh_kappa, elastic_auto_difficulty, elastic_auto_amplitude
+   public :: elastic_shape_range
    public :: elastic_hill_k, elastic_hill_coupling, elastic_fourier_decay, elastic_two_piece_values
 
    !> The α domain in words, for messages: a < ρ, the mass never reaches the pivot.
@@ -148,6 +149,19 @@ contains
       s = sin(0.5_wp*pi*tau)
       w = 1.0_wp/(one_minus_alpha_over_pi2(alpha) + 2.0_wp*(alpha/pi2)*s*s)
    end function elastic_shape
+
+   !> The least and the largest value of w(τ) = 1/((1 − k) + 2k sin²(πτ/2)), k = α/π²: its
+   !> values at τ = 0 and τ = 1, 1/(1 − k) and 1/(1 + k) (1 − k from
+   !> `one_minus_alpha_over_pi2`, accurate as α → π²).
+   elemental subroutine elastic_shape_range(alpha, w_min, w_max)
+      real(wp), intent(in) :: alpha  !! α
+      real(wp), intent(out) :: w_min, w_max  !! the range of w over the period
+      real(wp) :: at_0, at_1
+      at_0 = 1.0_wp/one_minus_alpha_over_pi2(alpha)
+      at_1 = 1.0_wp/(1.0_wp + alpha/pi2)
+      w_min = min(at_0, at_1)
+      w_max = max(at_0, at_1)
+   end subroutine elastic_shape_range
 
    !> w at the points whose half-angle sines s = sin(πτ/2) are given (method auto's mesh
    !> builds those by angle sums): w = 1/((1 − k) + 2k s²).

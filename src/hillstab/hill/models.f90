@@ -25,7 +25,7 @@ module hillstab_hill_models
    use hillstab_hill_model_elastic, only: elastic_alpha_valid, elastic_alpha_domain, elastic_coefficient, &
       elastic_segment_mean, elastic_split, elastic_shape, elastic_shapes_from_half_sines, elastic_shape_root_mean, &
       elastic_mesh_kappa, elastic_auto_difficulty, elastic_auto_amplitude, elastic_hill_k, elastic_hill_coupling, &
-      elastic_fourier_decay, elastic_two_piece_values
+      elastic_fourier_decay, elastic_two_piece_values, elastic_shape_range
    use hillstab_hill_model_mathieu, only: mathieu_coefficient, mathieu_segment_mean, mathieu_split, mathieu_shape, &
       mathieu_shapes_from_half_sines, mathieu_shape_root_mean, mathieu_auto_difficulty, mathieu_auto_amplitude, &
       mathieu_hill_coupling, mathieu_two_piece_values
@@ -36,7 +36,8 @@ module hillstab_hill_models
       model_physical_note, model_is_pendulum, model_has_witness
    public :: check_model, check_model_alpha, check_model_batch, model_alpha_valid, damping_shift
    public :: hill_coefficient, segment_average, model_split, model_shape, model_shapes_from_half_sines, shape_root_mean
-   public :: model_mesh_kappa, model_auto_difficulty, model_auto_amplitude
+   public :: model_mesh_kappa, model_auto_difficulty, model_auto_amplitude, model_coefficient_range, &
+      model_shape_range, coefficient_range
    public :: model_hill_k, model_hill_coupling, model_fourier_decay
    public :: model_two_piece_values, model_witness_beta, model_physical_alpha
 
@@ -328,6 +329,48 @@ contains
          call elastic_shapes_from_half_sines(alpha, n, s, w)
       end select
    end subroutine model_shapes_from_half_sines
+
+   !> The least and the largest value over the period of the shape function w(τ) of the
+   !> split q = c₀ + c₁ w (`model_split`): elastic 1/(1 ± α/π²), Mathieu cos πτ in [−1, 1].
+   elemental subroutine model_shape_range(kind, alpha, w_min, w_max)
+      integer, intent(in) :: kind    !! a model constant
+      real(wp), intent(in) :: alpha  !! α (ν)
+      real(wp), intent(out) :: w_min, w_max  !! the range of w
+      select case (kind)
+      case (model_mathieu)
+         w_min = -1.0_wp
+         w_max = 1.0_wp
+      case default
+         call elastic_shape_range(alpha, w_min, w_max)
+      end select
+   end subroutine model_shape_range
+
+   !> The least and the largest value over the period of q = c₀ + c₁ w(τ) for the split
+   !> (c₀, c₁) of a point and the range of w (`model_shape_range`), widened by a few
+   !> roundings of the values it is made of, so that the true range lies inside it.
+   elemental subroutine coefficient_range(c0, c1, w_min, w_max, q_min, q_max)
+      real(wp), intent(in) :: c0, c1        !! the split of q at the point
+      real(wp), intent(in) :: w_min, w_max  !! the range of w
+      real(wp), intent(out) :: q_min, q_max  !! bounds of q over the period
+      real(wp) :: a, b, slack
+      a = c0 + c1*w_min
+      b = c0 + c1*w_max
+      slack = 16.0_wp*epsilon(1.0_wp)*(abs(c0) + abs(c1)*max(abs(w_min), abs(w_max)))
+      q_min = min(a, b) - slack
+      q_max = max(a, b) + slack
+   end subroutine coefficient_range
+
+   !> `coefficient_range` of the point (α, β, ε) of a model.
+   elemental subroutine model_coefficient_range(kind, alpha, beta, damping, q_min, q_max)
+      integer, intent(in) :: kind    !! a model constant
+      real(wp), intent(in) :: alpha, beta  !! the point
+      real(wp), intent(in) :: damping      !! its damping ε
+      real(wp), intent(out) :: q_min, q_max  !! bounds of q over the period
+      real(wp) :: c0, c1, w_min, w_max
+      call model_split(kind, alpha, beta, damping, c0, c1)
+      call model_shape_range(kind, alpha, w_min, w_max)
+      call coefficient_range(c0, c1, w_min, w_max, q_min, q_max)
+   end subroutine model_coefficient_range
 
    !> ∫₀¹ √|w(τ)| dτ of the shape function (or a bound of it): elastic an elliptic integral
    !> by an AGM (1 at α = 0, growing like ln(1/(1 − α/π²))), Mathieu 1. It enters the phase

@@ -21,7 +21,9 @@ module hillstab_integrate_monodromy
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
    use hillstab_core_text, only: name_position, alternatives_text, integer_text
    use hillstab_hill_coefficient, only: hill_model_t, check_model, sampling_endpoint, sampling_count
-   use hillstab_hill_transfer, only: scaled_matrix_t, multiply_matrix, trace_t
+   use hillstab_hill_models, only: model_shape_range, coefficient_range, model_split, check_model_batch
+   use hillstab_hill_floquet, only: bounds_verdict, bounds_stable, bounds_unstable
+   use hillstab_hill_transfer, only: scaled_matrix_t, multiply_matrix, trace_t, trace_from_value
    use hillstab_hill_formulas, only: trace_formula
    use hillstab_core_stats, only: work_stats_t, add_work
    use hillstab_integrate_segments, only: monodromy_segmented, trace_segmented
@@ -134,6 +136,38 @@ contains
       if (method%kind == method_auto) call auto_prepare(model%kind, model%alpha, model%epsilon, betas, &
                                                        method%tolerance, plan%auto, screen)
    end subroutine prepare_batch
+
+   !> The points of a batch whose need the range of q decides without integrating
+   !> (hillstab_hill_floquet `bounds_verdict`): Zhukovskii's criterion gives |S| < 2, which
+   !> settles need_verdict (stable, and stable by the paper's criterion too) and need_growth
+   !> (λ_max = e^{−ε} whatever S); q < 0 throughout gives S > 2, which settles need_verdict
+   !> of an undamped point. Their traces stand for S alone where it decides nothing else:
+   !> 0 for |S| < 2, 3 for S > 2, with error estimate 0 (no column of S is written where the
+   !> need is below need_trace).
+   pure subroutine settle_by_bounds(model, betas, need, traces, settled)
+      type(hill_model_t), intent(in) :: model  !! kind, alpha and epsilon of the batch
+      real(wp), intent(in) :: betas(:)         !! the betas of the batch
+      integer, intent(in) :: need              !! need_verdict or need_growth
+      type(trace_t), intent(inout) :: traces(:)  !! the settled points' stand-ins
+      logical, intent(out) :: settled(:)       !! which points are settled
+      real(wp) :: q_min, q_max, w_min, w_max, c0, c1
+      integer :: j, verdict
+      call model_shape_range(model%kind, model%alpha, w_min, w_max)
+      do j = 1, size(betas)
+         call model_split(model%kind, model%alpha, betas(j), model%epsilon, c0, c1)
+         call coefficient_range(c0, c1, w_min, w_max, q_min, q_max)
+         verdict = bounds_verdict(q_min, q_max)
+         settled(j) = verdict == bounds_stable .or. (verdict == bounds_unstable .and. need == need_verdict .and. &
+                                                    .not. model%epsilon > 0.0_wp)
+         if (.not. settled(j)) cycle
+         if (verdict == bounds_stable) then
+            traces(j) = trace_from_value(0.0_wp)
+         else
+            traces(j) = trace_from_value(3.0_wp)
+         end if
+         traces(j)%error_estimate = 0.0_wp
+      end do
+   end subroutine settle_by_bounds
 
    !> Whether the trace `tr`, with its error bound max(error_estimate, tolerance)·max(1, |S|),
    !> settles what `need` asks: for need_verdict the side of |S| = 2 cosh ε (and of |S| = 2
@@ -341,8 +375,9 @@ contains
       type(error_t), allocatable :: point_error
       type(hill_model_t) :: point
       type(method_t) :: screening
-      type(trace_t), allocatable :: rest(:)
+      type(trace_t), allocatable :: rest(:), screened(:)
       logical, allocatable :: rest_failed(:), rest_inaccurate(:)
+      integer, allocatable :: open(:)
       integer :: j, wanted
       logical :: paper_side
       failed = .false.
@@ -358,47 +393,66 @@ contains
          return
       end if
       if (wanted < need_trace .and. method_is_exact(method%kind)) then
-         ! the screening pass; the points it settles are done, the others computed in full
-         settled = .false.
-         if (method%kind == method_auto) then
-            if (present(plan)) then
-               call trace_auto_screen(model%kind, model%alpha, model%epsilon, betas, traces, work, point_error, &
-                                      plan%auto)
+         ! first what the range of q decides, then the screening pass; the points they settle
+         ! are done, the others computed in full
+         ! (an invalid point settles nothing: the full computation below reports it)
+         call check_model_batch(model%kind, model%alpha, model%epsilon, betas, point_error)
+         if (allocated(point_error)) then
+            deallocate (point_error)
+            settled = .false.
+         else
+            call settle_by_bounds(model, betas, wanted, traces, settled)
+         end if
+         if (.not. all(settled)) then
+            ! the points left, by index (no packed copies of the traces)
+            open = pack([(j, j=1, size(betas))], .not. settled)
+            allocate (screened(size(open)))
+            if (method%kind == method_auto) then
+               if (present(plan)) then
+                  call trace_auto_screen(model%kind, model%alpha, model%epsilon, betas(open), screened, part, &
+                                         point_error, plan%auto)
+               else
+                  call trace_auto_screen(model%kind, model%alpha, model%epsilon, betas(open), screened, part, &
+                                         point_error)
+               end if
+               call add_work(work, part)
+               if (.not. allocated(point_error)) then
+                  do j = 1, size(open)
+                     traces(open(j)) = screened(j)
+                     settled(open(j)) = verdict_is_certain(screened(j), model%epsilon, method%tolerance, wanted, &
+                                                           paper_side)
+                  end do
+               end if
             else
-               call trace_auto_screen(model%kind, model%alpha, model%epsilon, betas, traces, work, point_error)
-            end if
-            if (.not. allocated(point_error)) then
-               do j = 1, size(betas)
-                  settled(j) = verdict_is_certain(traces(j), model%epsilon, method%tolerance, wanted, paper_side)
+               screening = method
+               screening%tolerance = max(method%tolerance, screen_tolerance)
+               point = model
+               do j = 1, size(open)
+                  point%beta = betas(open(j))
+                  call monodromy_trace(point, screening, traces(open(j)), point_error, part)
+                  call add_work(work, part)
+                  if (allocated(point_error)) then
+                     deallocate (point_error)
+                     cycle
+                  end if
+                  traces(open(j))%error_estimate = screen_safety*traces(open(j))%error_estimate
+                  settled(open(j)) = verdict_is_certain(traces(open(j)), model%epsilon, method%tolerance, wanted, &
+                                                        paper_side)
                end do
             end if
-         else
-            screening = method
-            screening%tolerance = max(method%tolerance, screen_tolerance)
-            do j = 1, size(betas)
-               point = model
-               point%beta = betas(j)
-               call monodromy_trace(point, screening, traces(j), point_error, part)
-               call add_work(work, part)
-               if (allocated(point_error)) then
-                  deallocate (point_error)
-                  cycle
-               end if
-               traces(j)%error_estimate = screen_safety*traces(j)%error_estimate
-               settled(j) = verdict_is_certain(traces(j), model%epsilon, method%tolerance, wanted, paper_side)
-            end do
+            if (allocated(point_error)) deallocate (point_error)
          end if
          if (all(settled)) then
             if (present(stats)) stats = work
             return
          end if
-         allocate (rest(count(.not. settled)), rest_failed(count(.not. settled)), rest_inaccurate(count(.not. settled)))
-         call monodromy_trace_batch(model, pack(betas, .not. settled), method, rest, rest_failed, error, part, plan, &
-                                    rest_inaccurate)
+         open = pack([(j, j=1, size(betas))], .not. settled)
+         allocate (rest(size(open)), rest_failed(size(open)), rest_inaccurate(size(open)))
+         call monodromy_trace_batch(model, betas(open), method, rest, rest_failed, error, part, plan, rest_inaccurate)
          call add_work(work, part)
-         traces = unpack(rest, .not. settled, traces)
-         failed = unpack(rest_failed, .not. settled, failed)
-         if (present(inaccurate)) inaccurate = unpack(rest_inaccurate, .not. settled, inaccurate)
+         traces(open) = rest
+         failed(open) = rest_failed
+         if (present(inaccurate)) inaccurate(open) = rest_inaccurate
          if (present(stats)) stats = work
          return
       end if
