@@ -44,7 +44,8 @@ module hillstab_batch_chart_columns
       col_mu_per_s = 13, col_error_estimate = 14, col_status = 15
    !> Number of columns a chart or points file can hold.
    integer, parameter :: n_chart_columns = 15
-   !> Characters in one chart line (15 columns of at most 24 characters, with blanks).
+   !> Characters in one chart line (15 columns of at most 24 characters, with blanks: 224 at
+   !> most).
    integer, parameter :: chart_line_length = 280
    !> The text style of each column (hillstab_batch_columns), by the col_* index.
    integer, parameter :: chart_styles(n_chart_columns) = [style_e17, style_e17, style_e17, style_e17, style_e17, &
@@ -65,7 +66,7 @@ module hillstab_batch_chart_columns
    logical, parameter :: chart_kept(n_chart_columns) = [.true., .true., .true., .true., .false., .false., .false., &
       .false., .false., .false., .true., .false., .false., .false., .false.]
    !> Bytes of a header (an upper bound), of one row as text (an upper bound) and binary.
-   integer(int64), parameter :: header_bytes = 16384, text_row_bytes = 209, binary_row_bytes = 8*16
+   integer(int64), parameter :: header_bytes = 16384, text_row_bytes = 225, binary_row_bytes = 8*16
    !> Magnitudes beyond this are written as ±clamp_magnitude with the overflow flag set.
    real(wp), parameter :: clamp_magnitude = 1.0e300_wp
    !> log10|S| is written as at least this (only S = 0 exactly reaches it).
@@ -340,8 +341,8 @@ contains
       real(wp), intent(in) :: amplitude    !! a (m), or 0
       character(len=chart_line_length), intent(inout) :: line  !! the line (not blanked beyond `length`)
       integer, intent(out) :: length       !! characters written
-      character(len=23), intent(in) :: alpha_text  !! put_es(alpha, 16)
-      character(len=23), intent(in), optional :: beta_text   !! put_es(beta, 16)
+      character(len=24), intent(in) :: alpha_text  !! put_es(alpha, 17)
+      character(len=24), intent(in), optional :: beta_text   !! put_es(beta, 17)
       logical :: stable, stable_paper, marginal
       integer :: k, pos
       call verdicts(tr, epsilon, tolerance, stable, stable_paper, marginal)
@@ -353,12 +354,12 @@ contains
          end if
          select case (ids(k))
          case (col_alpha)
-            line(pos + 1:pos + 23) = alpha_text
-            pos = pos + 23
+            line(pos + 1:pos + 24) = alpha_text
+            pos = pos + 24
          case (col_beta)
             if (present(beta_text)) then
-               line(pos + 1:pos + 23) = beta_text
-               pos = pos + 23
+               line(pos + 1:pos + 24) = beta_text
+               pos = pos + 24
             else
                call put_value(chart_styles(col_beta), beta, line, pos)
             end if
@@ -412,8 +413,8 @@ contains
       integer, intent(in) :: ids(:)  !! the columns to write
       real(wp), intent(in) :: v(n_chart_columns)  !! every column's value
       character(len=chart_line_length), intent(inout) :: line  !! the line (blank-padded without `length`)
-      character(len=23), intent(in), optional :: alpha_text  !! put_es(alpha, 16)
-      character(len=23), intent(in), optional :: beta_text   !! put_es(beta, 16)
+      character(len=24), intent(in), optional :: alpha_text  !! put_es(alpha, 17)
+      character(len=24), intent(in), optional :: beta_text   !! put_es(beta, 17)
       integer, intent(out), optional :: length  !! characters written
       integer :: k, pos
       pos = 0
@@ -423,11 +424,11 @@ contains
             pos = pos + 1
          end if
          if (ids(k) == col_alpha .and. present(alpha_text)) then
-            line(pos + 1:pos + 23) = alpha_text
-            pos = pos + 23
+            line(pos + 1:pos + 24) = alpha_text
+            pos = pos + 24
          else if (ids(k) == col_beta .and. present(beta_text)) then
-            line(pos + 1:pos + 23) = beta_text
-            pos = pos + 23
+            line(pos + 1:pos + 24) = beta_text
+            pos = pos + 24
          else
             call put_value(chart_styles(ids(k)), v(ids(k)), line, pos)
          end if

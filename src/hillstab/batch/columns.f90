@@ -26,7 +26,7 @@ module hillstab_batch_columns
    public :: style_width2, style_width4
    public :: columns_text, find_columns, column_lines, put_row, put_value, failed_row, all_columns, column_index
 
-   integer, parameter :: style_e17 = 1      !! 17 significant digits, d.dddde±xxx (exact round trip)
+   integer, parameter :: style_e17 = 1      !! 17 significant digits, d.dddde±xxx: reads back to the same double
    integer, parameter :: style_e11 = 2      !! 11 significant digits
    integer, parameter :: style_e7 = 3       !! 7 significant digits
    integer, parameter :: style_e4 = 4       !! 4 significant digits (error estimates)
@@ -181,7 +181,7 @@ contains
       integer :: n, first
       select case (style)
       case (style_e17)
-         call put_es(line, pos, x, 16)
+         call put_es(line, pos, x, 17)
       case (style_e11)
          call put_es(line, pos, x, 10)
       case (style_e7)

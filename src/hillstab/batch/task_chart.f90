@@ -44,7 +44,7 @@ module hillstab_batch_task_chart
       type(chart_grid_t) :: grid                     !! `&chart`
       !> what every row shares, made by `prepare_units`: the β values, their text, the columns
       real(wp), allocatable :: betas(:)
-      character(len=23), allocatable :: beta_texts(:)  !! format_es(betas, 16)
+      character(len=24), allocatable :: beta_texts(:)  !! format_es(betas, 17)
       integer, allocatable :: ids(:)                 !! the columns written
       !> `&physical a_min, a_max, n_a, omega_min, omega_max, n_omega` without `&chart`: the
       !> chart runs over (a, ω) at fixed r0, g (blocks of constant a)
@@ -165,7 +165,7 @@ contains
       character(len=chart_line_length), allocatable :: lines(:)
       real(wp) :: alpha
       real(wp), allocatable :: all_betas(:)
-      character(len=23), allocatable :: beta_texts(:)
+      character(len=24), allocatable :: beta_texts(:)
       logical :: stopped, stop_now
       character(len=chart_line_length), allocatable :: block_lines(:, :, :)
       integer, allocatable :: block_status(:, :, :), statuses(:), ids(:), block_lengths(:, :, :), lengths(:)
@@ -409,9 +409,9 @@ contains
       !> status_ok, status_roundoff (computed only to the round-off level) or status_failed
       integer, intent(out) :: statuses(:)
       type(batch_plan_t), intent(in), optional :: plan  !! prepared for the whole row
-      character(len=23), intent(in), optional :: beta_texts(:)  !! format_es(betas, 16), made once per chart
+      character(len=24), intent(in), optional :: beta_texts(:)  !! format_es(betas, 17), made once per chart
       type(trace_t) :: traces(size(betas))
-      character(len=23) :: alpha_text
+      character(len=24) :: alpha_text
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
       type(hill_model_t) :: row
@@ -426,7 +426,7 @@ contains
       row = hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon)
       call monodromy_trace_batch(row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate, &
                                  need=need, paper=columns_paper(ids))
-      alpha_text = format_es(alpha, 16)
+      alpha_text = format_es(alpha, 17)
       statuses = merge(status_roundoff, status_ok, inaccurate)
       where (failed) statuses = status_failed
       do j = 1, size(betas)
@@ -483,7 +483,7 @@ contains
       integer, intent(out) :: lengths(:)           !! text format: the length of each line
       real(wp), intent(inout) :: values(:, :)      !! binary format: (columns, points)
       integer, intent(out) :: statuses(:)
-      character(len=23), intent(in) :: beta_texts(:)
+      character(len=24), intent(in) :: beta_texts(:)
       type(batch_plan_t) :: plan
       integer :: c, chunk, n_chunks, first, last, n
       n = size(betas)
@@ -505,12 +505,12 @@ contains
    subroutine chart_betas(grid, betas, beta_texts)
       type(chart_grid_t), intent(in) :: grid  !! the grid
       real(wp), allocatable, intent(out) :: betas(:)  !! the n_beta grid values
-      character(len=23), allocatable, intent(out) :: beta_texts(:)  !! format_es(betas, 16)
+      character(len=24), allocatable, intent(out) :: beta_texts(:)  !! format_es(betas, 17)
       integer :: j
       betas = [(grid_value(grid%beta_min, grid%beta_max, grid%n_beta, j), j=1, grid%n_beta)]
       allocate (beta_texts(grid%n_beta))
       do j = 1, grid%n_beta
-         beta_texts(j) = format_es(betas(j), 16)
+         beta_texts(j) = format_es(betas(j), 17)
       end do
    end subroutine chart_betas
 

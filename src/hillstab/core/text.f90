@@ -117,7 +117,9 @@ contains
          end if
          e = digits - 1 - p
       end if
-      ! layout: [-]d.ddd…e±xxx, filled from the right
+      ! layout: [-]d.ddd…e±xxx, filled from the right after its first two characters are
+      ! blanked (one or two blanks lead the field; a digit or the sign overwrites the rest)
+      buffer(last - digits - 6:last - digits - 5) = "  "
       abs_e = abs(e)
       k = 2*mod(abs_e, 100)
       buffer(last - 1:last) = digit_pairs(k + 1:k + 2)
@@ -145,13 +147,7 @@ contains
       end if
       buffer(p:p) = achar(iachar("0") + low)
       p = p - 1
-      if (x < 0.0_wp) then
-         buffer(p:p) = "-"
-         p = p - 1
-      end if
-      do k = last - digits - 6, p   ! one or two blanks: a loop, not a call to memset
-         buffer(k:k) = " "
-      end do
+      if (x < 0.0_wp) buffer(p:p) = "-"
    end subroutine put_es
 
    !> The 8 decimal digits of `value` (with leading zeros) into buffer(p − 7 : p); p moves
@@ -212,16 +208,30 @@ contains
       integer(int64), intent(out) :: mantissa
       logical, intent(out) :: exact
       real(wp), parameter :: tie_margin = 1.0e-9_wp
-      real(wp) :: product, error, whole, fraction
+      real(wp) :: product, error, whole, fraction, margin
       integer :: attempt
       exact = .false.
       mantissa = 0
       do attempt = 1, 2
          if (p < power_min .or. p > power_max) return
-         ! ax·10^p = product + error + ax·power_lo(p), to about 2^-104 relative
-         call two_product(ax, power_hi(p), product, error)
-         whole = aint(product)
-         fraction = (product - whole) + (error + ax*power_lo(p))
+         if (digits <= 12) then
+            ! few digits: the plain product decides unless its fraction lies within the
+            ! product's own rounding and the neglected power_lo of a tie or of an integer
+            product = ax*power_hi(p)
+            whole = aint(product)
+            fraction = product - whole
+            margin = 4.0_wp*epsilon(1.0_wp)*product + ax*abs(power_lo(p))
+            if (abs(fraction - 0.5_wp) <= margin .or. fraction <= margin .or. fraction >= 1.0_wp - margin) then
+               call two_product(ax, power_hi(p), product, error)
+               whole = aint(product)
+               fraction = (product - whole) + (error + ax*power_lo(p))
+            end if
+         else
+            ! ax·10^p = product + error + ax·power_lo(p), to about 2^-104 relative
+            call two_product(ax, power_hi(p), product, error)
+            whole = aint(product)
+            fraction = (product - whole) + (error + ax*power_lo(p))
+         end if
          mantissa = int(whole, int64)
          do while (fraction < 0.0_wp)
             mantissa = mantissa - 1
