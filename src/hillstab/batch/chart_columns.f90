@@ -17,7 +17,7 @@ module hillstab_batch_chart_columns
    use hillstab_core_error, only: error_t, set_error, err_input, err_accuracy, err_invalid_parameter, &
       err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
-   use hillstab_core_text, only: real_text, integer_text
+   use hillstab_core_text, only: real_text, integer_text, put_es
    use hillstab_hill_models, only: hill_model_t, model_description, model_physical_note, model_is_pendulum, &
       model_summary
    use hillstab_hill_coefficient, only: sampling_name
@@ -50,6 +50,10 @@ module hillstab_batch_chart_columns
    !> The text style of each column (hillstab_batch_columns), by the col_* index.
    integer, parameter :: chart_styles(n_chart_columns) = [style_e17, style_e17, style_e17, style_e17, style_e17, &
       style_flag, style_e11, style_e11, style_e11, style_flag, style_flag, style_flag, style_e11, style_e4, style_flag]
+   !> The significant digits of each column's text, from its style (e17 17, e11 11, e4 4;
+   !> 0 for the flags, which `put_value` writes).
+   integer, parameter :: chart_digits(n_chart_columns) = merge(17, merge(11, merge(4, 0, chart_styles == style_e4), &
+      chart_styles == style_e11), chart_styles == style_e17)
    !> What a failed point writes in each column (where `chart_kept` is false): values outside
    !> every column's range.
    real(wp), parameter :: chart_placeholders(n_chart_columns) = [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, -1.0_wp, &
@@ -429,6 +433,10 @@ contains
          else if (ids(k) == col_beta .and. present(beta_text)) then
             line(pos + 1:pos + 24) = beta_text
             pos = pos + 24
+         else if (chart_digits(ids(k)) > 0) then
+            ! the numbers straight to put_es (put_value's dispatch by style, once per column
+            ! of every line, cost a tenth of a full chart's text)
+            call put_es(line, pos, v(ids(k)), chart_digits(ids(k)))
          else
             call put_value(chart_styles(ids(k)), v(ids(k)), line, pos)
          end if

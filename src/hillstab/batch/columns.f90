@@ -183,11 +183,11 @@ contains
       case (style_e17)
          call put_es(line, pos, x, 17)
       case (style_e11)
-         call put_es(line, pos, x, 10)
+         call put_es(line, pos, x, 11)
       case (style_e7)
-         call put_es(line, pos, x, 6)
+         call put_es(line, pos, x, 7)
       case (style_e4)
-         call put_es(line, pos, x, 3)
+         call put_es(line, pos, x, 4)
       case (style_flag)
          if (x == 0.5_wp) then
             line(pos + 1:pos + 3) = "0.5"
