@@ -11,8 +11,10 @@
 #   make check-memory   valgrind memcheck on small scenes of every task
 #   make check-scenes   every scene of data/scenes against the stored checksums of its data lines
 #                       (scripts/check_scenes.sh; --update after a change that means to alter them)
-#   make bench-output   size and run time of a 1000 x 1000 chart per output layout (out/bench_output.dat)
-#   make bench          speed-against-error benchmarks (out/bench_*.dat, out/bench*.png), the
+#   make bench-output   size and run time of a 1000 x 1000 chart per output layout and columns (out/bench_output.dat)
+#   make bench-instructions  callgrind counts of a 300 x 300 chart, this tree against BENCH_BASE (compute, text)
+#   make bench          charts against the plain C GSL program (bench/chart_gsl.c, scripts/bench_chart.py:
+#                       out/bench_chart_gsl.dat, .png), speed-against-error benchmarks (out/bench_*.dat, out/bench*.png), the
 #                       transition-curve benchmark (out/bench_boundaries.dat) and the pendulum
 #                       integrators (out/bench_series.dat, out/bench_series.png)
 #   make area           where the approximate charts are wrong: misclassified area (out/area*.dat, out/area.png)
@@ -50,7 +52,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug test-sanitize setup setup-build setup-test bench bench-output area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov fuzz check-memory check-scenes
+.PHONY: run test test-debug test-sanitize setup setup-build setup-test bench bench-output bench-instructions area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov fuzz check-memory check-scenes
 
 # what each target needs (scripts/setup.sh installs only what is missing)
 setup:
@@ -114,8 +116,17 @@ check-scenes: setup-build
 bench-output: setup-build
 	bash scripts/bench_output.sh
 
+BENCH_BASE ?= a5be02a
+bench-instructions: setup-build
+	bash scripts/bench_instructions.sh $(BENCH_BASE)
+
 bench: setup
-	mkdir -p out
+	mkdir -p out build
+	$(CC) -O2 bench/chart_gsl.c -o build/chart_gsl -lgsl -lgslcblas -lm
+	$(FPM) build --profile release --flag "$$(bash scripts/release_flags.sh)" >/dev/null
+	python3 scripts/bench_chart.py "$$($(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" \
+	   --runner echo hillstab 2>/dev/null | tail -1)" build/chart_gsl
+	gnuplot plots/bench_chart_gsl.gp
 	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench
 	gnuplot plots/bench.gp
 	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_series

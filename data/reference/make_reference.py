@@ -24,7 +24,8 @@ Run from the repository root (installs mpmath and gmpy2 from PyPI if missing):
 writes data/reference/hard_set.dat. Takes a few minutes on 2 cores. With --check
 (`python3 data/reference/make_reference.py --check`) it writes
 data/reference/check_set.dat instead: points of the same kind that no method was
-tuned on (see `check_points`). With --curves it writes data/reference/curve_set.dat: points of the
+tuned on (see `check_points`). With --chart it writes data/reference/chart_set.dat: 40 points of the
+300 x 300 chart of the chart benchmark (see `chart_points`). With --curves it writes data/reference/curve_set.dat: points of the
 elastic transition curves (see `curve_points`). With --band it writes data/reference/band_set.dat: the
 band beta in +-[1e-5, 1e-2] and {0}, alpha in [9.3, pi^2 - 1e-6], where S is close to 2
 and the solution x ~ r(tau) of beta = 0 is nearly periodic (see `band_points`).
@@ -318,6 +319,28 @@ def check_points():
     return pts
 
 
+def grid_value(lo, hi, n, i):
+    """hillstab's grid_value: lo + (hi - lo)(i - 1)/(n - 1) in double precision, hi exactly at i = n."""
+    if n <= 1:
+        return lo
+    if i == n:
+        return hi
+    return lo + (hi - lo) * float(i - 1) / float(n - 1)
+
+
+def chart_points():
+    """40 points of the 300 x 300 chart alpha in [0, 9.8], beta in [-2, 12] of the chart benchmark
+    (scripts/bench_chart.py, bench/chart_gsl.c): rows i in {1, 60, 120, 180, 240, 270, 290, 300} (the
+    last ones near the hard end alpha = 9.8), columns j in {1, 75, 150, 225, 300}, the exact doubles
+    both programs use."""
+    pts = []
+    for i in (1, 60, 120, 180, 240, 270, 290, 300):
+        for j in (1, 75, 150, 225, 300):
+            pts.append((ELASTIC, grid_value(0.0, 9.8, 300, i), grid_value(-2.0, 12.0, 300, j),
+                        "chart 300 x 300 (%d, %d)" % (i, j)))
+    return pts
+
+
 def band_points():
     """The band beta in +-[1e-5, 1e-2] and {0}, alpha in [9.3, pi^2 - 1e-6]: four points
     reported as missed by earlier versions, then points drawn with a fixed seed: alpha
@@ -360,21 +383,23 @@ def curves_main(out, serial):
 
 
 def main():
-    args = [a for a in sys.argv[1:] if a not in ("--check", "--band", "--serial", "--curves")]
+    args = [a for a in sys.argv[1:] if a not in ("--check", "--band", "--serial", "--curves", "--chart")]
     if "--curves" in sys.argv[1:]:
         curves_main(args[0] if args else "data/reference/curve_set.dat", "--serial" in sys.argv[1:])
         return
     check = "--check" in sys.argv[1:]
     band = "--band" in sys.argv[1:]
+    chart = "--chart" in sys.argv[1:]
     default = "data/reference/band_set.dat" if band else (
-        "data/reference/check_set.dat" if check else "data/reference/hard_set.dat")
+        "data/reference/check_set.dat" if check else (
+            "data/reference/chart_set.dat" if chart else "data/reference/hard_set.dat"))
     out = args[0] if args else default
-    pts = band_points() if band else (check_points() if check else points())
+    pts = band_points() if band else (check_points() if check else (chart_points() if chart else points()))
     with mproc.Pool(1 if "--serial" in sys.argv[1:] else 2) as pool:
         lines = pool.map(point_line, pts, chunksize=1)
     with open(out, "w") as f:
         f.write("# Reference traces S of x'' + Q(tau) x = 0 at hillstab's %s points, made by\n"
-                % ("band" if band else ("check" if check else "hard")))
+                % ("band" if band else ("check" if check else ("chart" if chart else "hard"))))
         f.write("# data/reference/make_reference.py (mpmath %s, Taylor series, 50 digits).\n" % mp.__version__)
         f.write("# model: 0 elastic Q of eq. (25), 1 mathieu q = beta - alpha cos(pi tau); alpha, beta: the exact\n")
         f.write("# doubles used; sign, ln_abs_S: sign and natural log of |S|; S: S itself (0.0 when |S| > 1e300);\n")
