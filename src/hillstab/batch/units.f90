@@ -59,9 +59,12 @@ module hillstab_batch_units
    use hillstab_batch_signals, only: set_interrupt_note, clear_interrupt_note
    use hillstab_ffi_libc, only: c_nanosleep, timespec_t
    use, intrinsic :: iso_c_binding, only: c_int, c_long
-   !$ use omp_lib, only: omp_get_max_threads
+   !$ use omp_lib, only: omp_get_max_threads, omp_init_lock, omp_destroy_lock, omp_test_lock, omp_unset_lock
    implicit none
    private
+   !> Kind of the writer's lock of `run_batch`: OpenMP's lock kind (4 in gfortran; checked
+   !> at compile time by the calls taking it); unused without OpenMP.
+   integer, parameter :: lock_kind = int32
    public :: batch_t, batch_result_t, batch_distributable, batch_plan, batch_unit_range, batch_compute, &
       batch_open, batch_write, batch_commit, batch_discard, run_batch, scene_fingerprint
 
@@ -545,6 +548,7 @@ contains
       type(batch_result_t) :: result
       integer :: unit, next_claim, next_write, written, slots, threads, status, slot
       logical :: in_parallel, stopped, stop_now
+      integer(lock_kind) :: writer
       call batch_plan(scene, 1, batch)
       if (present(options)) then
          call batch_open(batch, quiet, error, options)
@@ -569,6 +573,7 @@ contains
       ! function with a deferred-length character result (gfortran 12 keeps that length in a
       ! static variable of the caller; concurrent calls lost a unit's text now and then),
       ! hence join_lines, not joined_lines, in the tasks
+      !$ call omp_init_lock(writer)
       !$omp parallel if(in_parallel) default(shared) private(unit, written, slot, stop_now, result)
       do
          !$omp atomic capture
@@ -587,33 +592,75 @@ contains
          end do
          if (stop_now) cycle
          call batch_compute(batch, unit, result)
-         !$omp critical (hillstab_batch_writer)
+         !$omp critical (hillstab_batch_window)
          slot = mod(unit, slots)
          window(slot)%unit = unit
          call move_alloc(result%text, window(slot)%text)
          call move_alloc(result%status, window(slot)%status)
-         do while (next_write <= batch%n_units .and. .not. stopped)
-            slot = mod(next_write, slots)
-            if (.not. allocated(window(slot)%status)) exit
-            if (window(slot)%unit /= next_write) exit
-            call batch_write(batch, window(slot), error)
-            deallocate (window(slot)%text, window(slot)%status)
-            if (allocated(error)) then
-               !$omp atomic write
-               stopped = .true.
-            end if
-            !$omp atomic update
-            next_write = next_write + 1
-         end do
-         !$omp end critical (hillstab_batch_writer)
+         !$omp end critical (hillstab_batch_window)
+         ! the units that are next in order are written by one thread at a time, outside the
+         ! window's lock, while the others compute: the thread that holds the writer's lock
+         ! writes what is ready; one that finds it held goes on (the holder, or the sweep
+         ! after the loop, writes its unit)
+         call write_ready(batch, window, slots, next_write, stopped, writer, error)
       end do
       !$omp end parallel
+      ! what arrived after the last writer's last look
+      call write_ready(batch, window, slots, next_write, stopped, writer, error)
+      !$ call omp_destroy_lock(writer)
       if (allocated(error)) then
          call batch_discard(batch, error)
       else
          call batch_commit(batch, error)
       end if
    end subroutine run_batch
+
+   !> Write the units of the window that are next in order, if no other thread is writing
+   !> (the writer's lock, tested, not waited for); `next_write` advances past each. The
+   !> window's entries are taken under its lock and written outside it.
+   subroutine write_ready(batch, window, slots, next_write, stopped, writer, error)
+      type(batch_t), intent(inout) :: batch
+      type(batch_result_t), intent(inout) :: window(0:)
+      integer, intent(in) :: slots
+      integer, intent(inout) :: next_write
+      logical, intent(inout) :: stopped
+      integer(lock_kind), intent(inout) :: writer
+      type(error_t), allocatable, intent(inout) :: error
+      type(batch_result_t) :: ready
+      type(error_t), allocatable :: failure
+      integer :: slot
+      logical :: have, mine
+      mine = .true.
+      !$ mine = omp_test_lock(writer)
+      if (.not. mine) return
+      do
+         have = .false.
+         !$omp critical (hillstab_batch_window)
+         if (next_write <= batch%n_units .and. .not. stopped) then
+            slot = mod(next_write, slots)
+            if (allocated(window(slot)%status)) then
+               if (window(slot)%unit == next_write) then
+                  ready%unit = window(slot)%unit
+                  call move_alloc(window(slot)%text, ready%text)
+                  call move_alloc(window(slot)%status, ready%status)
+                  have = .true.
+               end if
+            end if
+         end if
+         !$omp end critical (hillstab_batch_window)
+         if (.not. have) exit
+         call batch_write(batch, ready, failure)
+         deallocate (ready%text, ready%status)
+         if (allocated(failure)) then
+            call move_alloc(failure, error)
+            !$omp atomic write
+            stopped = .true.
+         end if
+         !$omp atomic update
+         next_write = next_write + 1
+      end do
+      !$ call omp_unset_lock(writer)
+   end subroutine write_ready
 
    !> Wait a millisecond.
    subroutine pause_briefly()
