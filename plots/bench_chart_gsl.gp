@@ -1,8 +1,8 @@
 # out/bench_chart_gsl.png from out/bench_chart_gsl.dat (make bench, scripts/bench_chart.py): the
 # 300 x 300 chart, time of a whole run against the worst error of S at the 40 reference points
-# of data/reference/chart_set.dat. The plain C GSL program (rk8pd, one thread) at its six
-# tolerances as a line; hillstab (auto at 1e-10, two threads) as points for the full chart
-# (text, binary, text on disk) and as horizontal lines for the charts that need no S (verdict,
+# of data/reference/chart_set.dat. The plain C GSL program (rk8pd, one thread) at its seven
+# tolerances as a line; hillstab (auto, two threads) as points for the full chart (text at
+# tolerances 1e-8, 1e-10 and 1e-12; binary and text on disk at 1e-10) and as horizontal lines for the charts that need no S (verdict,
 # growth), whose time does not depend on an error of S. Run from the repository root;
 # gnuplot -e "file='...'; out='...'" plots/bench_chart_gsl.gp for other files.
 if (!exists("file")) file = 'out/bench_chart_gsl.dat'
@@ -20,9 +20,9 @@ set title "300 × 300 chart: hillstab against the plain C GSL program"
 # the rows of one program and run, by the words of the run column
 is(prog, word) = (strcol(1) eq prog && strstrt(strcol(2), word) > 0)
 plot file using (strcol(1) eq "gsl" ? $5 : 1/0):4 with linespoints pt 7 lw 2 lc "#b2182b" \
-        title "GSL rk8pd, 1 thread (tolerance 1e-8 … 1e-13)", \
+        title "GSL rk8pd, 1 thread (tolerance 1e-8 … 1e-14)", \
      '' using (is("hillstab", "full chart, text") && !is("hillstab", "disk") ? $5 : 1/0):4 \
-        with points pt 5 ps 1.6 lc "#2166ac" title "hillstab full chart, text (tmpfs)", \
+        with points pt 5 ps 1.6 lc "#2166ac" title "hillstab full chart, text (tmpfs; tolerance 1e-8, 1e-10, 1e-12)", \
      '' using (is("hillstab", "binary") ? $5 : 1/0):4 with points pt 4 ps 1.6 lw 2 lc "#2166ac" \
         title "hillstab full chart, binary", \
      '' using (is("hillstab", "full chart, text, on disk") ? $5 : 1/0):4 with points pt 6 ps 1.6 lw 2 \

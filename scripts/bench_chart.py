@@ -11,7 +11,8 @@ fastest of its rounds:
   - hillstab, method auto, tolerance 1e-10, on THREADS threads: the full chart (every column,
     text), the same in binary, the verdict chart (columns 'alpha beta stable'), the growth chart
     (columns 'alpha beta mu');
-  - the C program on one thread at epsabs = epsrel = 1e-8 ... 1e-13, writing nothing.
+  - the same full chart at tolerances 1e-8 and 1e-12 (work against precision);
+  - the C program on one thread at epsabs = epsrel = 1e-8 ... 1e-14, writing nothing.
 hillstab writes its files into SCRATCH (default /dev/shm, a tmpfs, when it is writable): there
 the fsync before the file takes its name costs nothing, so the comparison measures computing
 and writing; the full and the verdict chart are also timed writing to DISK (default build/),
@@ -104,12 +105,12 @@ def main():
     env = dict(os.environ, OMP_NUM_THREADS=str(args.threads))
     env1 = dict(os.environ, OMP_NUM_THREADS="1")
 
-    def scene(name, extra, where=None):
+    def scene(name, extra, where=None, tolerance=None):
         where = where or work
         path = os.path.join(where, name + ".nml")
         with open(path, "w") as f:
             f.write("&scene task = 'chart', method = 'auto', tolerance = %g, output = '%s'%s /\n"
-                    % (args.tolerance, os.path.join(where, name), extra))
+                    % (tolerance or args.tolerance, os.path.join(where, name), extra))
             f.write("&chart alpha_min = 0, alpha_max = 9.8, n_alpha = %d, beta_min = -2, beta_max = 12, n_beta = %d /\n"
                     % (n, n))
         return path
@@ -124,9 +125,13 @@ def main():
         ("hillstab", "full chart, text, on disk", [args.hillstab, "--quiet", scene("full", "", disk)], env),
         ("hillstab", "verdict chart, on disk",
          [args.hillstab, "--quiet", scene("verdict", ", columns = 'alpha beta stable'", disk)], env),
+        ("hillstab", "full chart, text, tolerance 1e-8",
+         [args.hillstab, "--quiet", scene("full8", "", tolerance=1e-8)], env),
+        ("hillstab", "full chart, text, tolerance 1e-12",
+         [args.hillstab, "--quiet", scene("full12", "", tolerance=1e-12)], env),
     ]
-    n_hillstab = 6
-    gsl_tolerances = [1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13]
+    n_hillstab = 8
+    gsl_tolerances = [1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13, 1e-14]
     for tol in gsl_tolerances:
         jobs.append(("gsl", "%.0e" % tol, [args.chart_gsl, str(n), str(n), repr(tol)], env1))
 
@@ -134,7 +139,7 @@ def main():
     for r in range(args.rounds):
         for k, (who, label, command, e) in enumerate(jobs):
             start = time.perf_counter()
-            subprocess.run(command, env=e, check=True, stdout=subprocess.DEVNULL)
+            subprocess.run(command, env=e, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
             best[k] = min(best[k], time.perf_counter() - start)
         print("round %d of %d done" % (r + 1, args.rounds), file=sys.stderr)
 
@@ -155,6 +160,9 @@ def main():
     errors = {}
     if reference_points:
         errors["hillstab"] = error_at_points(hillstab_s, reference_points, n)
+        for name, key in (("full8", "hillstab 1e-8"), ("full12", "hillstab 1e-12")):
+            rows = read_chart(os.path.join(work, name + "_chart.dat"), ["S"])
+            errors[key] = error_at_points(chart_values(rows, n, "S"), reference_points, n)
         for tol in gsl_tolerances:
             errors[tol] = error_at_points(gsl_values[tol], reference_points, n)
     # the whole chart against the C program at 1e-13
@@ -173,7 +181,7 @@ def main():
         elif (v == 1.0) != (abs(s) < 2.0):
             wrong += 1
 
-    t_full, t_binary, t_verdict, t_growth, t_full_disk, t_verdict_disk = best[0:n_hillstab]
+    t_full, t_binary, t_verdict, t_growth, t_full_disk, t_verdict_disk, t_full8, t_full12 = best[0:n_hillstab]
     t_gsl = dict(zip(gsl_tolerances, best[n_hillstab:]))
     same_tolerance = min(gsl_tolerances, key=lambda t: abs(t - args.tolerance))
     equal = None
@@ -191,8 +199,9 @@ def main():
         err = ""
         if errors:
             err = "%.2e" % (errors["hillstab"] if who == "hillstab" and k in (0, 1, 4) else
+                            errors["hillstab 1e-8"] if k == 6 else errors["hillstab 1e-12"] if k == 7 else
                             errors.get(float(label), 0.0) if who == "gsl" else float("nan"))
-            if who == "hillstab" and k not in (0, 1, 4):
+            if who == "hillstab" and k not in (0, 1, 4, 6, 7):
                 err = "-"
         print("%-10s %-36s %10.4f %14s" % (who, label, best[k], err))
     print()
@@ -205,6 +214,16 @@ def main():
               % (equal, errors[equal], errors["hillstab"], t_gsl[equal] / t_full))
     elif errors:
         print("full chart vs GSL at equal accuracy: no GSL tolerance reaches hillstab's error %.2e" % errors["hillstab"])
+    for key, t_run in (("hillstab 1e-8", t_full8), ("hillstab 1e-12", t_full12)):
+        if errors:
+            fits = [t for t in gsl_tolerances if errors[t] <= errors[key]]
+            if fits:
+                g = min(fits, key=lambda t: t_gsl[t])
+                print("full chart at %s vs GSL at equal accuracy (GSL %g, error %.2e <= %.2e): %.1f x"
+                      % (key[9:], g, errors[g], errors[key], t_gsl[g] / t_run))
+            else:
+                print("full chart at %s: no GSL tolerance down to 1e-14 reaches its error %.2e (GSL 1e-14: %.2e, "
+                      "%.1f x its time)" % (key[9:], errors[key], errors[1e-14], t_gsl[1e-14] / t_run))
     print("verdict chart vs GSL at the same tolerance: %.1f x" % (t_gsl[same_tolerance] / t_verdict))
     print("growth chart vs GSL at the same tolerance: %.1f x" % (t_gsl[same_tolerance] / t_growth))
     print("on disk (the fsync of the file before its rename waits for the disk): full chart %.1f x at the same "
@@ -229,8 +248,9 @@ def main():
                 tol = float(label)
                 err = errors.get(tol, -1.0)
             else:
-                tol = args.tolerance
-                err = errors.get("hillstab", -1.0) if k in (0, 1, 4) else -1.0
+                tol = 1e-8 if k == 6 else 1e-12 if k == 7 else args.tolerance
+                err = errors.get("hillstab", -1.0) if k in (0, 1, 4) else errors.get("hillstab 1e-8", -1.0) if k == 6 \
+                    else errors.get("hillstab 1e-12", -1.0) if k == 7 else -1.0
             f.write('%s "%s" %g %.6f %.3e %.3f\n' % (who, label, tol, best[k], err, best[k] / t_full))
     os.replace(args.out + ".part", args.out)
     print("wrote " + args.out)
