@@ -246,7 +246,13 @@ contains
       call check_model(hill_model_t(kind, alpha, betas(1), epsilon), error)
       if (allocated(error)) return
       do j = 2, size(betas)
-         if (.not. (ieee_is_finite(betas(j)) .and. abs(betas(j)) <= max_magnitude)) then
+         ! NaN first, on its own: an ordered comparison of a NaN raises the invalid flag
+         ! (a trap in debug builds), and Fortran's .and. need not stop at the first operand
+         if (.not. ieee_is_finite(betas(j))) then
+            call check_model(hill_model_t(kind, alpha, betas(j), epsilon), error)
+            return
+         end if
+         if (abs(betas(j)) > max_magnitude) then
             call check_model(hill_model_t(kind, alpha, betas(j), epsilon), error)
             return
          end if
