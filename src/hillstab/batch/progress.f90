@@ -8,7 +8,7 @@
 !>```fortran
 !> type(progress_t) :: progress
 !> call progress_begin(progress, 1000_int64, quiet=.false.)
-!> call progress_update(progress, 500_int64)
+!> call progress_update(progress, 500_int64)   ! or, one point at a time: call progress_step(progress)
 !> call progress_end(progress)
 !>```
 module hillstab_batch_progress
@@ -18,7 +18,7 @@ module hillstab_batch_progress
    use, intrinsic :: iso_c_binding, only: c_int
    implicit none
    private
-   public :: progress_t, progress_begin, progress_update, progress_end, rate_text
+   public :: progress_t, progress_begin, progress_update, progress_step, progress_end, rate_text
 
    !> Progress on stderr for runs longer than about a second.
    type :: progress_t
@@ -27,6 +27,7 @@ module hillstab_batch_progress
       logical :: terminal = .false.     !! stderr is a terminal: redraw one line
       logical :: always = .false.       !! HILLSTAB_PROGRESS=always: every advance, a line each
       integer(int64) :: reported = -1   !! points done at the last report
+      integer(int64) :: done = 0        !! points counted by `progress_step`
       integer(int64) :: total = 0       !! points to compute
       integer(int64) :: before = 0      !! points done before this run (a resumed run)
       integer(int64) :: start = 0       !! clock at the start
@@ -109,6 +110,16 @@ contains
       progress%last = now
       progress%reported = done
    end subroutine progress_update
+
+   !> One more point done, from any thread of a parallel loop: counted and reported
+   !> (`progress_update`) under one lock.
+   subroutine progress_step(progress)
+      type(progress_t), intent(inout) :: progress  !! the progress state
+      !$omp critical (hillstab_progress_step)
+      progress%done = progress%done + 1
+      call progress_update(progress, progress%done)
+      !$omp end critical (hillstab_progress_step)
+   end subroutine progress_step
 
    !> A rate as a whole number from 10 up, with two significant digits below (a unit that
    !> takes many seconds, as a block of Hill's matrix near alpha = pi^2: "0.036").

@@ -17,7 +17,7 @@
 !> values. The file is written once all are done, curve by curve.
 module hillstab_batch_task_boundaries
    use hillstab_core_kinds, only: wp, int64, pi2, version_string
-   use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
+   use hillstab_batch_progress, only: progress_t, progress_begin, progress_step, progress_end
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_hill_models, only: model_description, model_has_witness, model_witness_beta, model_is_pendulum, &
@@ -356,7 +356,6 @@ contains
       type(error_t), allocatable, intent(out) :: error  !! what failed; unallocated on success
       type(output_file_t) :: file
       type(progress_t) :: progress
-      integer(int64) :: done
       type(alpha_rows_t), allocatable :: per_alpha(:)
       integer, allocatable :: keys(:, :)
       integer :: i, j, c, n_alpha, n_failed_rows, n_failed_alpha, last_i, first_failed
@@ -387,7 +386,6 @@ contains
          call check_every_row(scene, per_alpha, quiet)
       else
          call progress_begin(progress, int(n_alpha, int64), quiet, "alphas")
-         done = 0
          !$omp parallel do schedule(dynamic) default(shared) private(i, cause)
          do i = 1, n_alpha
             call find_boundary_rows(scene, self%grid, grid_value(self%grid%alpha_min, self%grid%alpha_max, &
@@ -396,10 +394,7 @@ contains
                per_alpha(i)%failed = .true.
                per_alpha(i)%message = cause%message
             end if
-            !$omp critical (boundaries_progress)
-            done = done + 1
-            call progress_update(progress, done)
-            !$omp end critical (boundaries_progress)
+            call progress_step(progress)
          end do
          !$omp end parallel do
          call progress_end(progress)
@@ -494,12 +489,10 @@ contains
       type(progress_t) :: progress
       type(error_t), allocatable :: cause
       type(alpha_rows_t), allocatable :: outcomes(:, :)   ! failed and message per block
-      integer(int64) :: done
       integer :: i, k, block, n_alpha
       n_alpha = size(per_alpha)
       allocate (blocks(4, n_alpha), outcomes(4, n_alpha))
       call progress_begin(progress, 4_int64*n_alpha, quiet, "Hill blocks")
-      done = 0
       !$omp parallel do schedule(dynamic) default(shared) private(k, i, block, cause)
       do k = 1, 4*n_alpha
          i = (k - 1)/4 + 1
@@ -510,10 +503,7 @@ contains
             outcomes(block, i)%failed = .true.
             outcomes(block, i)%message = cause%message
          end if
-         !$omp critical (boundaries_progress)
-         done = done + 1
-         call progress_update(progress, done)
-         !$omp end critical (boundaries_progress)
+         call progress_step(progress)
       end do
       !$omp end parallel do
       call progress_end(progress)
@@ -539,7 +529,6 @@ contains
       logical, intent(in) :: quiet
       type(progress_t) :: progress
       integer, allocatable :: alpha_of(:), row_of(:)
-      integer(int64) :: done
       integer :: i, j, k, n
       n = 0
       do i = 1, size(per_alpha)
@@ -555,14 +544,10 @@ contains
          end do
       end do
       call progress_begin(progress, int(n, int64), quiet, "curve points")
-      done = 0
       !$omp parallel do schedule(dynamic) default(shared) private(k)
       do k = 1, n
          call check_boundary_row(scene, per_alpha(alpha_of(k))%rows(row_of(k)))
-         !$omp critical (boundaries_progress)
-         done = done + 1
-         call progress_update(progress, done)
-         !$omp end critical (boundaries_progress)
+         call progress_step(progress)
       end do
       !$omp end parallel do
       call progress_end(progress)
@@ -594,7 +579,6 @@ contains
       logical, intent(in) :: quiet
       type(error_t), allocatable, intent(out) :: error
       type(progress_t) :: progress
-      integer(int64) :: done
       type(alpha_crossing_t), allocatable :: crossings(:)
       type(boundary_check_t), allocatable :: checks(:)
       integer, allocatable :: statuses(:)
@@ -622,7 +606,6 @@ contains
       allocate (checks(size(crossings)), statuses(size(crossings)))
       ! progress over the checks of the crossings and the verdicts between them, by auto
       call progress_begin(progress, int(2*size(crossings) + 1, int64), quiet, "auto checks")
-      done = 0
       !$omp parallel do schedule(dynamic) default(shared) private(j, cause)
       do j = 1, size(crossings)
          statuses(j) = status_ok
@@ -635,10 +618,7 @@ contains
          else if (checks(j)%roundoff) then
             statuses(j) = status_roundoff
          end if
-         !$omp critical (spring_progress)
-         done = done + 1
-         call progress_update(progress, done)
-         !$omp end critical (spring_progress)
+         call progress_step(progress)
       end do
       !$omp end parallel do
       ! the verdict between the critical amplitudes, by S of auto at the middle of each piece
@@ -648,10 +628,7 @@ contains
       !$omp parallel do schedule(dynamic) default(shared) private(j)
       do j = 1, size(cuts) - 1
          if (cuts(j + 1) > cuts(j)) unstable(j) = auto_unstable(scene, 0.5_wp*(cuts(j) + cuts(j + 1)), beta)
-         !$omp critical (spring_progress)
-         done = done + 1
-         call progress_update(progress, done)
-         !$omp end critical (spring_progress)
+         call progress_step(progress)
       end do
       !$omp end parallel do
       call progress_end(progress)

@@ -34,7 +34,7 @@ module hillstab_batch_task_chart
    use hillstab_batch_output, only: output_file_t, finish_output, discard_output, write_header, write_text, &
       write_records, joined_lines, join_lines
    use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
-   !$ use omp_lib, only: omp_get_max_threads
+   use hillstab_batch_units, only: max_threads
    implicit none
    private
    public :: chart_task_t, chart_task
@@ -585,10 +585,4 @@ contains
       real(wp) :: point(2)
       point = grid_point(self%grid, k)
    end function chart_point_of
-
-   !> Number of OpenMP threads a parallel region will use (1 without OpenMP).
-   integer function max_threads()
-      max_threads = 1
-      !$ max_threads = omp_get_max_threads()
-   end function max_threads
 end module hillstab_batch_task_chart

@@ -9,7 +9,7 @@
 !> gnuplot `index`), one line per crossing of φ = 0 with φ' > 0.
 module hillstab_batch_task_poincare
    use hillstab_core_kinds, only: wp, int64, version_string
-   use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
+   use hillstab_batch_progress, only: progress_t, progress_begin, progress_step, progress_end
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_core_status, only: status_ok, status_failed
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_energy
@@ -151,7 +151,6 @@ contains
       integer :: k, n, j, first_failed
       type(column_t), allocatable :: table(:)
       type(progress_t) :: progress
-      integer(int64) :: done
 
       n = size(self%phi0s)
       call pendulum_from_chart(self%series%alpha, self%series%beta, scene%epsilon, self%series%r0, &
@@ -179,16 +178,12 @@ contains
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
       call progress_begin(progress, int(n, int64), quiet, "orbits")
-      done = 0
       !$omp parallel do schedule(dynamic) default(shared) private(k, cause)
       do k = 1, n
          call poincare_section(p, starts(:, k), self%series%periods*p%period, scene%method%tolerance, sections(k), &
             cause)
          statuses(k) = merge(status_failed, status_ok, allocated(cause))
-         !$omp critical (poincare_progress)
-         done = done + 1
-         call progress_update(progress, done)
-         !$omp end critical (poincare_progress)
+         call progress_step(progress)
       end do
       !$omp end parallel do
       call progress_end(progress)

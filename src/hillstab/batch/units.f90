@@ -66,7 +66,7 @@ module hillstab_batch_units
    !> at compile time by the calls taking it); unused without OpenMP.
    integer, parameter :: lock_kind = int32
    public :: batch_t, batch_result_t, batch_distributable, batch_plan, batch_unit_range, batch_compute, &
-      batch_open, batch_write, batch_commit, batch_discard, run_batch, scene_fingerprint
+      batch_open, batch_write, batch_commit, batch_discard, run_batch, scene_fingerprint, max_threads
 
    !> A scene's work cut into units, and the state of its output file.
    type :: batch_t
@@ -581,13 +581,17 @@ contains
          next_claim = next_claim + 1
          !$omp end atomic
          if (unit > batch%n_units) exit
-         ! hold the unit back while it lies beyond the window of results kept
+         ! hold the unit back while it lies beyond the window of results kept, writing what
+         ! is ready meanwhile: the unit next in order may have arrived just as the writer
+         ! was leaving (it found the writer's lock held and went on), and with every other
+         ! thread waiting here nobody else would write it
          do
             !$omp atomic read
             written = next_write
             !$omp atomic read
             stop_now = stopped
             if (unit < written + slots .or. stop_now) exit
+            call write_ready(batch, window, slots, next_write, stopped, writer, error)
             call pause_briefly()
          end do
          if (stop_now) cycle

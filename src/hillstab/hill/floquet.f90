@@ -13,7 +13,7 @@ module hillstab_hill_floquet
    use hillstab_hill_transfer, only: trace_t, trace_from_value
    implicit none
    private
-   public :: floquet_t, floquet_from_trace, floquet_verdict, verdicts, floquet_from_value, multipliers, &
+   public :: floquet_t, floquet_from_trace, floquet_verdict, verdicts, near_threshold, floquet_from_value, multipliers, &
       largest_multiplier_modulus, bounds_verdict, bounds_stable, bounds_unstable, bounds_undecided
 
    !> Floquet data of the swing x over one radial period (2 units of τ).
@@ -137,13 +137,22 @@ contains
          marginal = .true.
       else if (tr%error_estimate >= 0.0_wp .and. .not. tr%overflow .and. epsilon < log_huge) then
          bound = max(tr%error_estimate, tolerance)
-         if (epsilon > 0.0_wp) then
-            marginal = abs(abs(s) - 2.0_wp*cosh(epsilon)) <= bound*max(1.0_wp, abs(s))
-         else
-            marginal = abs(abs(s) - 2.0_wp) <= bound*max(1.0_wp, abs(s))
-         end if
+         marginal = near_threshold(s, epsilon, bound)
       end if
    end subroutine verdicts
+
+   !> Whether |S| lies within bound·max(1, |S|) of the stability threshold 2 cosh ε (2
+   !> without damping): the value cannot tell the side (for ε < log_huge).
+   elemental logical function near_threshold(s, epsilon, bound) result(near)
+      real(wp), intent(in) :: s        !! the trace
+      real(wp), intent(in) :: epsilon  !! damping ε ≥ 0 (0: the threshold 2, also the paper's)
+      real(wp), intent(in) :: bound    !! error bound relative to max(1, |S|)
+      if (epsilon > 0.0_wp) then
+         near = abs(abs(s) - 2.0_wp*cosh(epsilon)) <= bound*max(1.0_wp, abs(s))
+      else
+         near = abs(abs(s) - 2.0_wp) <= bound*max(1.0_wp, abs(s))
+      end if
+   end function near_threshold
 
    !> ln|λ_max| of χ for |S| ≥ 2: arccosh(|S|/2) = ln((|S| + √(S² − 4))/2); ≈ ln|S| for huge |S|.
    pure real(wp) function growth_of(tr) result(log_growth)

@@ -474,10 +474,10 @@ contains
       end do
    end subroutine trace_auto_screen
 
-   !> The three passes of `trace_auto_screen`: the points grouped once by their N, each group
-   !> propagated in lanes on the meshes of N (S and its round-off level, `lanes_plain`),
-   !> N/2 and N/4 steps (S only: their round-off levels are taken as the finest one's, the
-   !> same solutions over fewer steps).
+   !> The three passes of `trace_auto_screen`: the points grouped once by their N, each
+   !> group propagated (`group_pass`) on the meshes of N (S and its round-off level), N/2
+   !> and N/4 steps (S only: their round-off levels are taken as the finest one's, the same
+   !> solutions over fewer steps).
    subroutine screen_lanes(cache, kind, alpha, n, c0s, c1s, phases, fine, floors, coarse, coarser, stats)
       type(mesh_cache_t), intent(inout) :: cache  !! meshes of this (kind, α)
       integer, intent(in) :: kind            !! model kind
@@ -489,43 +489,22 @@ contains
       real(wp), intent(out) :: floors(:)     !! round-off level of each S on N steps
       type(work_stats_t), intent(inout) :: stats  !! steps counted
       logical :: todo(size(n))
-      integer :: group_c(size(n))
-      real(wp) :: lane_c0(size(n)), lane_c1(size(n)), lane_floors(size(n)), lane_phases(size(n))
-      type(trace_t) :: lane_results(size(n))
-      integer :: i, k, index, m_group, level, steps
+      integer :: group(size(n))
+      real(wp) :: lane_c0(size(n)), lane_c1(size(n)), lane_phases(size(n)), unused(size(n))
+      integer :: i, m
       todo = .true.
       do i = 1, size(n)
          if (.not. todo(i)) cycle
-         m_group = 0
-         do k = i, size(n)
-            if (todo(k) .and. n(k) == n(i)) then
-               m_group = m_group + 1
-               group_c(m_group) = k
-               todo(k) = .false.
-            end if
-         end do
-         lane_c0(1:m_group) = c0s(group_c(1:m_group))
-         lane_c1(1:m_group) = c1s(group_c(1:m_group))
-         lane_phases(1:m_group) = phases(group_c(1:m_group))
-         do level = 0, 2
-            steps = n(i)/2**level
-            call get_mesh(cache, kind, alpha, steps, index)
-            if (level == 0) then
-               call lane_traces(cache%meshes(index), lane_c0(1:m_group), lane_c1(1:m_group), lane_phases(1:m_group), &
-                  lane_results(1:m_group), lane_floors(1:m_group), lanes_plain)
-               fine(group_c(1:m_group)) = lane_results(1:m_group)
-               floors(group_c(1:m_group)) = lane_floors(1:m_group)
-            else
-               call lane_traces(cache%meshes(index), lane_c0(1:m_group), lane_c1(1:m_group), lane_phases(1:m_group), &
-                  lane_results(1:m_group), lane_floors(1:m_group), lanes_values)
-               if (level == 1) then
-                  coarse(group_c(1:m_group)) = lane_results(1:m_group)
-               else
-                  coarser(group_c(1:m_group)) = lane_results(1:m_group)
-               end if
-            end if
-            call count_steps(stats, m_group*steps)
-         end do
+         call next_group(n, i, todo, group, m)
+         lane_c0(1:m) = c0s(group(1:m))
+         lane_c1(1:m) = c1s(group(1:m))
+         lane_phases(1:m) = phases(group(1:m))
+         call group_pass(cache, kind, alpha, n(i), group(1:m), lane_c0(1:m), lane_c1(1:m), lane_phases(1:m), &
+                         fine, floors, stats, lanes_plain)
+         call group_pass(cache, kind, alpha, n(i)/2, group(1:m), lane_c0(1:m), lane_c1(1:m), lane_phases(1:m), &
+                         coarse, unused, stats, lanes_values)
+         call group_pass(cache, kind, alpha, n(i)/4, group(1:m), lane_c0(1:m), lane_c1(1:m), lane_phases(1:m), &
+                         coarser, unused, stats, lanes_values)
       end do
    end subroutine screen_lanes
 
@@ -544,36 +523,66 @@ contains
       logical, intent(in), optional :: selected(:)  !! the points to compute
       integer, intent(in), optional :: mode  !! what `lane_traces` computes (default lanes_plain)
       logical :: todo(size(n))
-      integer :: order(size(n)), group_c(size(n))
-      real(wp) :: lane_c0(size(n)), lane_c1(size(n)), lane_floors(size(n)), lane_phases(size(n))
-      type(trace_t) :: lane_results(size(n))
-      integer :: i, k, index, m_group
+      integer :: group(size(n))
+      real(wp) :: lane_c0(size(n)), lane_c1(size(n)), lane_phases(size(n))
+      integer :: i, m, how
       todo = .true.
       if (present(selected)) todo = selected
-      ! gather each group of equal n into contiguous lanes (no allocation: this runs
-      ! once per pass of every batch)
+      how = lanes_plain
+      if (present(mode)) how = mode
       do i = 1, size(n)
          if (.not. todo(i)) cycle
-         m_group = 0
-         do k = i, size(n)
-            if (todo(k) .and. n(k) == n(i)) then
-               m_group = m_group + 1
-               order(m_group) = k
-               todo(k) = .false.
-            end if
-         end do
-         group_c(1:m_group) = order(1:m_group)
-         lane_c0(1:m_group) = c0s(group_c(1:m_group))
-         lane_c1(1:m_group) = c1s(group_c(1:m_group))
-         lane_phases(1:m_group) = phases(group_c(1:m_group))
-         call get_mesh(cache, kind, alpha, n(i), index)
-         call lane_traces(cache%meshes(index), lane_c0(1:m_group), lane_c1(1:m_group), lane_phases(1:m_group), &
-            lane_results(1:m_group), lane_floors(1:m_group), mode)
-         result(group_c(1:m_group)) = lane_results(1:m_group)
-         floors(group_c(1:m_group)) = lane_floors(1:m_group)
-         call count_steps(stats, m_group*n(i))
+         call next_group(n, i, todo, group, m)
+         lane_c0(1:m) = c0s(group(1:m))
+         lane_c1(1:m) = c1s(group(1:m))
+         lane_phases(1:m) = phases(group(1:m))
+         call group_pass(cache, kind, alpha, n(i), group(1:m), lane_c0(1:m), lane_c1(1:m), lane_phases(1:m), &
+                         result, floors, stats, how)
       end do
    end subroutine lanes_pass
+
+   !> The points k ≥ i still to do whose n(k) equals n(i), in order, taken off `todo`.
+   pure subroutine next_group(n, i, todo, group, m_group)
+      integer, intent(in) :: n(:)        !! steps of each point
+      integer, intent(in) :: i           !! the first point of the group
+      logical, intent(inout) :: todo(:)  !! the points not yet in a group
+      integer, intent(inout) :: group(:) !! the group's points in group(1:m_group)
+      integer, intent(out) :: m_group    !! its size
+      integer :: k
+      m_group = 0
+      do k = i, size(n)
+         if (todo(k) .and. n(k) == n(i)) then
+            m_group = m_group + 1
+            group(m_group) = k
+            todo(k) = .false.
+         end if
+      end do
+   end subroutine next_group
+
+   !> The points `group`, their coefficients gathered into contiguous lanes by the caller
+   !> (no allocation: this runs for every group of every pass of every batch), on the mesh of
+   !> `steps` steps: propagated by `lane_traces` in mode `how`, the results scattered back.
+   subroutine group_pass(cache, kind, alpha, steps, group, lane_c0, lane_c1, lane_phases, result, floors, stats, how)
+      type(mesh_cache_t), intent(inout) :: cache  !! meshes of this (kind, α)
+      integer, intent(in) :: kind            !! model kind
+      real(wp), intent(in) :: alpha          !! α of the batch
+      integer, intent(in) :: steps           !! steps of the mesh
+      integer, intent(in) :: group(:)        !! the points
+      real(wp), intent(in) :: lane_c0(:), lane_c1(:)  !! q = c₀ + c₁ w of each point of the group
+      real(wp), intent(in) :: lane_phases(:)  !! phase bound of each point of the group
+      type(trace_t), intent(inout) :: result(:)  !! S of every point (those of the group set)
+      real(wp), intent(inout) :: floors(:)   !! round-off levels of every point (likewise)
+      type(work_stats_t), intent(inout) :: stats  !! steps counted
+      integer, intent(in) :: how             !! what `lane_traces` computes
+      real(wp) :: lane_floors(size(group))
+      type(trace_t) :: lane_results(size(group))
+      integer :: index
+      call get_mesh(cache, kind, alpha, steps, index)
+      call lane_traces(cache%meshes(index), lane_c0, lane_c1, lane_phases, lane_results, lane_floors, how)
+      result(group) = lane_results
+      floors(group) = lane_floors
+      call count_steps(stats, size(group)*steps)
+   end subroutine group_pass
 
    !> Exact trace for constant q over the period 2.
    pure function constant_trace(q) result(tr)

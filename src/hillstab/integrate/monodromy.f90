@@ -22,7 +22,7 @@ module hillstab_integrate_monodromy
    use hillstab_core_text, only: name_position, alternatives_text, integer_text
    use hillstab_hill_coefficient, only: hill_model_t, check_model, sampling_endpoint, sampling_count
    use hillstab_hill_models, only: model_shape_range, coefficient_range, model_split, check_model_batch
-   use hillstab_hill_floquet, only: bounds_verdict, bounds_stable, bounds_unstable
+   use hillstab_hill_floquet, only: bounds_verdict, bounds_stable, bounds_unstable, near_threshold
    use hillstab_hill_transfer, only: scaled_matrix_t, multiply_matrix, trace_t, trace_from_value
    use hillstab_hill_formulas, only: trace_formula
    use hillstab_core_stats, only: work_stats_t, add_work
@@ -184,18 +184,14 @@ contains
       ! no estimate, or one of the order of S itself (the screen's difference of two
       ! values of opposite sign, or overflowing ones): nothing is settled
       if (tr%error_estimate < 0.0_wp .or. tr%error_estimate >= 1.0_wp .or. tr%overflow) return
-      bound = max(tr%error_estimate, tolerance)*max(1.0_wp, abs(tr%value))
+      bound = max(tr%error_estimate, tolerance)
       select case (need)
       case (need_verdict)
-         ! not marginal in the sense of `floquet_verdict`, written out (this runs at every point)
-         if (epsilon > 0.0_wp) then
-            certain = epsilon < log_huge .and. abs(abs(tr%value) - 2.0_wp*cosh(epsilon)) > bound
-            if (paper) certain = certain .and. abs(abs(tr%value) - 2.0_wp) > bound
-         else
-            certain = abs(abs(tr%value) - 2.0_wp) > bound
-         end if
+         ! not marginal in the sense of `floquet_verdict` (the paper's threshold 2 too)
+         certain = epsilon < log_huge .and. .not. near_threshold(tr%value, epsilon, bound)
+         if (paper .and. epsilon > 0.0_wp) certain = certain .and. .not. near_threshold(tr%value, 0.0_wp, bound)
       case (need_growth)
-         certain = .not. tr%overflow .and. abs(tr%value) < 2.0_wp - bound
+         certain = abs(tr%value) < 2.0_wp - bound*max(1.0_wp, abs(tr%value))
       end select
    end function verdict_is_certain
 
