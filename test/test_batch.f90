@@ -14,6 +14,8 @@ module test_batch
       batch_write, batch_commit, batch_discard, run_batch
    use hillstab_batch_cli, only: exit_status
    use hillstab_batch_task_points, only: points_task_t
+   use hillstab_batch_threads, only: place_threads, placement_by_openmp, allowed_cpus
+   !$ use omp_lib, only: omp_get_max_threads, omp_get_thread_num
    use hillstab_testing
    use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text
    implicit none
@@ -30,7 +32,8 @@ contains
          new_unittest("units_in_any_order", units_in_any_order), &
          new_unittest("units_cover_points", units_cover_points), &
          new_unittest("failing_point", failing_point), &
-         new_unittest("exit_statuses", exit_statuses)])
+         new_unittest("exit_statuses", exit_statuses), &
+         new_unittest("threads_bound", threads_bound)])
    end function collect_batch
 
    !> Read a scene written from `lines`.
@@ -249,4 +252,38 @@ contains
       call check(ctx, exit_status(error_t(err_integration, "x")) == 1, "computation: 1")
       call check(ctx, exit_status(error_t(err_points_failed, "x")) == 3, "points failed: 3")
    end subroutine exit_statuses
+   !> place_threads: with several threads, CPUs enough and no OpenMP placement chosen, every
+   !> thread of a team runs on one CPU of its own, among those the process could use; else
+   !> nothing is bound. A second call does nothing.
+   subroutine threads_bound(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer, allocatable :: before(:), mine(:)
+      integer :: n, t, own(0:255), counts(0:255)
+      logical :: bound
+      call allowed_cpus(before)
+      n = 1
+      !$ n = omp_get_max_threads()
+      call place_threads()
+      call place_threads(bound)
+      call check(ctx, .not. bound, "a second call binds nothing")
+      if (n < 2 .or. n > 256 .or. size(before) < n .or. placement_by_openmp()) then
+         call allowed_cpus(mine)
+         call check(ctx, size(mine) == size(before), "nothing bound: the CPUs as before")
+         return
+      end if
+      own = -1
+      counts = 0
+      !$omp parallel num_threads(n) default(shared) private(t, mine)
+      t = 0
+      !$ t = omp_get_thread_num()
+      call allowed_cpus(mine)
+      counts(t) = size(mine)
+      if (size(mine) == 1) own(t) = mine(1)
+      !$omp end parallel
+      call check(ctx, all(counts(0:n - 1) == 1), "every thread on one CPU")
+      do t = 0, n - 1
+         call check(ctx, any(before == own(t)), "a CPU the process could use")
+         call check(ctx, count(own(0:n - 1) == own(t)) == 1, "a CPU of its own")
+      end do
+   end subroutine threads_bound
 end module test_batch

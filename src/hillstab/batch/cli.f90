@@ -25,6 +25,7 @@ module hillstab_batch_cli
    use hillstab_batch_task_registry, only: task_names_text
    use hillstab_batch_signals, only: settle_signals
    use hillstab_batch_checkpoint, only: checkpoint_options_t
+   use hillstab_batch_threads, only: place_threads
    use hillstab_core_kinds, only: wp
    use hillstab_core_text, only: integer_text
    use hillstab_ffi_libc, only: c_mallopt, malloc_trim_threshold, malloc_top_pad, malloc_mmap_threshold
@@ -86,6 +87,7 @@ contains
       logical, intent(in) :: quiet  !! no progress on stderr
       type(error_t), allocatable, intent(out) :: error  !! what failed
       character(len=:), allocatable, intent(out) :: written  !! the file written
+      call place_threads()   ! once: one thread per CPU (hillstab_batch_threads)
       call run_scene_file(path, quiet, error, written, self%options)
    end subroutine serial_run
 

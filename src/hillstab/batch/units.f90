@@ -545,9 +545,8 @@ contains
       type(checkpoint_options_t), intent(in), optional :: options
       type(batch_t) :: batch
       type(batch_result_t), allocatable :: window(:)
-      type(batch_result_t) :: result
-      integer :: unit, next_claim, next_write, written, slots, threads, status, slot
-      logical :: in_parallel, stopped, stop_now
+      integer :: next_claim, next_write, slots, threads, status
+      logical :: in_parallel, stopped
       integer(lock_kind) :: writer
       call batch_plan(scene, 1, batch)
       if (present(options)) then
@@ -574,7 +573,40 @@ contains
       ! static variable of the caller; concurrent calls lost a unit's text now and then),
       ! hence join_lines, not joined_lines, in the tasks
       !$ call omp_init_lock(writer)
-      !$omp parallel if(in_parallel) default(shared) private(unit, written, slot, stop_now, result)
+      ! (a run of one thread is no parallel region at all: a region inside a region, even an
+      ! inactive one, is nested, and libgomp starts and ends new threads for every nested
+      ! team, such as the chunks of the rows of a chart with few rows)
+      if (in_parallel) then
+         !$omp parallel default(shared)
+         call batch_loop(batch, window, slots, next_claim, next_write, stopped, writer, error)
+         !$omp end parallel
+      else
+         call batch_loop(batch, window, slots, next_claim, next_write, stopped, writer, error)
+      end if
+      ! what arrived after the last writer's last look
+      call write_ready(batch, window, slots, next_write, stopped, writer, error)
+      !$ call omp_destroy_lock(writer)
+      if (allocated(error)) then
+         call batch_discard(batch, error)
+      else
+         call batch_commit(batch, error)
+      end if
+   end subroutine run_batch
+
+   !> The units of `run_batch`, claimed one at a time by each thread that calls this (every
+   !> thread of the team, or the one thread of a serial run): computed, kept in the window,
+   !> written in order.
+   subroutine batch_loop(batch, window, slots, next_claim, next_write, stopped, writer, error)
+      type(batch_t), intent(inout) :: batch
+      type(batch_result_t), intent(inout) :: window(0:)
+      integer, intent(in) :: slots
+      integer, intent(inout) :: next_claim, next_write
+      logical, intent(inout) :: stopped
+      integer(lock_kind), intent(inout) :: writer
+      type(error_t), allocatable, intent(inout) :: error
+      type(batch_result_t) :: result
+      integer :: unit, written, slot
+      logical :: stop_now
       do
          !$omp atomic capture
          unit = next_claim
@@ -608,16 +640,7 @@ contains
          ! after the loop, writes its unit)
          call write_ready(batch, window, slots, next_write, stopped, writer, error)
       end do
-      !$omp end parallel
-      ! what arrived after the last writer's last look
-      call write_ready(batch, window, slots, next_write, stopped, writer, error)
-      !$ call omp_destroy_lock(writer)
-      if (allocated(error)) then
-         call batch_discard(batch, error)
-      else
-         call batch_commit(batch, error)
-      end if
-   end subroutine run_batch
+   end subroutine batch_loop
 
    !> Write the units of the window that are next in order, if no other thread is writing
    !> (the writer's lock, tested, not waited for); `next_write` advances past each. The

@@ -2,7 +2,8 @@
 !> (stdio streams, mkstemp, fdopen, fchmod, umask, rename, remove, unlink, fsync, link,
 !> rmdir, lstat, fstat, ftruncate, fseek, flock), errno and its message, the process id and
 !> effective user, signals and write(2) for the handler, whether a descriptor is a terminal,
-!> free space (statvfs), random bytes (getrandom), a short sleep (nanosleep). Bindings only:
+!> free space (statvfs), random bytes (getrandom), a short sleep (nanosleep), the CPUs a thread
+!> may run on (sched_getaffinity, sched_setaffinity, sched_getcpu). Bindings only:
 !> the writers (hillstab_batch_output), the checkpoints (hillstab_batch_checkpoint), the
 !> signal cleanup (hillstab_batch_signals), the resource limits (hillstab_batch_limits) and
 !> the progress line use them; `remove_file` and `is_directory` are the two path helpers
@@ -26,6 +27,7 @@ module hillstab_ffi_libc
       c_write, c_nanosleep, timespec_t, errno_value, file_type, file_type_regular, file_type_directory, &
       file_type_link, seek_end, lock_exclusive, lock_nonblocking, errno_exists, errno_no_entry, errno_would_block
    public :: c_mallopt, malloc_trim_threshold, malloc_top_pad, malloc_mmap_threshold
+   public :: c_sched_getaffinity, c_sched_setaffinity, c_sched_getcpu, cpu_set_words
 
    !> The file type bits of `stat_t%mode` (S_IFMT).
    integer(c_int), parameter :: file_type = int(o'170000', c_int)
@@ -41,6 +43,9 @@ module hillstab_ffi_libc
    integer, parameter :: errno_no_entry = 2            !! ENOENT
    integer, parameter :: errno_would_block = 11        !! EWOULDBLOCK (EAGAIN) on Linux
    integer, parameter :: errno_exists = 17             !! EEXIST
+
+   !> cpu_set_t of glibc: 1024 bits, CPU k is bit mod(k, 64) of word k/64 (from 1 here).
+   integer, parameter :: cpu_set_words = 16
 
    !> RLIMIT_AS (Linux): the largest address space of the process.
    integer(c_int), parameter :: rlimit_as = 9
@@ -223,6 +228,27 @@ module hillstab_ffi_libc
          type(timespec_t), intent(out) :: remaining  !! left when interrupted
          integer(c_int) :: status
       end function c_nanosleep
+      !> sched_getaffinity(2): the CPUs thread `pid` (0: the caller) may run on; 0 on success.
+      function c_sched_getaffinity(pid, size, mask) bind(C, name="sched_getaffinity") result(status)
+         import :: c_int, c_size_t, c_long
+         integer(c_int), value :: pid       !! the thread (0: the calling thread)
+         integer(c_size_t), value :: size   !! bytes of `mask`
+         integer(c_long), intent(out) :: mask(*)  !! cpu_set_t: `cpu_set_words` words
+         integer(c_int) :: status
+      end function c_sched_getaffinity
+      !> sched_setaffinity(2): restrict thread `pid` (0: the caller) to the CPUs of `mask`.
+      function c_sched_setaffinity(pid, size, mask) bind(C, name="sched_setaffinity") result(status)
+         import :: c_int, c_size_t, c_long
+         integer(c_int), value :: pid       !! the thread (0: the calling thread)
+         integer(c_size_t), value :: size   !! bytes of `mask`
+         integer(c_long), intent(in) :: mask(*)  !! cpu_set_t: `cpu_set_words` words
+         integer(c_int) :: status
+      end function c_sched_setaffinity
+      !> sched_getcpu(3): the CPU the caller runs on, or −1.
+      function c_sched_getcpu() bind(C, name="sched_getcpu") result(cpu)
+         import :: c_int
+         integer(c_int) :: cpu
+      end function c_sched_getcpu
       !> close(2).
       function c_close(fd) bind(C, name="close") result(status)
          import :: c_int
