@@ -83,42 +83,60 @@ contains
       real(wp), intent(in) :: x  !! the value, finite
       integer, intent(in) :: digits  !! significant digits, 1 ... 17
       integer(int64) :: mantissa
-      integer :: e, k, p, abs_e, last, biased, n_after
-      integer(int32) :: low
+      integer :: e, p, last, biased
       logical :: exact
       last = pos + digits + 7
       pos = last
-      if (.not. ieee_is_finite(x)) then
-         buffer(last - digits - 6:last) = " "
-         if (ieee_is_nan(x)) then
-            buffer(last - 2:last) = "nan"
-         else if (x > 0.0_wp) then
-            buffer(last - 2:last) = "inf"
+      biased = int(ibits(transfer(x, 0_int64), 52, 11))
+      if (biased == 0 .or. biased == 2047) then
+         ! zero, subnormal, infinite or NaN
+         if (.not. ieee_is_finite(x)) then
+            buffer(last - digits - 6:last) = " "
+            if (ieee_is_nan(x)) then
+               buffer(last - 2:last) = "nan"
+            else if (x > 0.0_wp) then
+               buffer(last - 2:last) = "inf"
+            else
+               buffer(last - 3:last) = "-inf"
+            end if
+         else if (x == 0.0_wp) then
+            call put_es_digits(buffer, last, digits, 0_int64, 0, .false.)   ! −0 without a sign, as 0
          else
-            buffer(last - 3:last) = "-inf"
+            call put_es_fortran(buffer, last, x, digits)
          end if
          return
       end if
-      if (x == 0.0_wp) then
-         mantissa = 0
-         e = 0
-      else
-         ! decimal exponent from the binary one, read from the bits (exponent() is a
-         ! library call); it is floor(log10|x|) or one less, corrected by `scaled_digits`
-         biased = int(ishft(transfer(abs(x), 0_int64), -52))
-         e = floor((biased - 1023)*0.30102999566398120_wp)
-         p = digits - 1 - e
-         exact = biased > 0 .and. p - 1 >= power_min .and. p <= power_max
-         if (exact) call scaled_digits(abs(x), digits, p, mantissa, exact)
-         if (.not. exact) then
-            ! subnormal or beyond the table, or within 1e-9 of a tie
-            call put_es_fortran(buffer, last, x, digits)
-            return
-         end if
-         e = digits - 1 - p
+      ! the decimal exponent from the binary one, floor((biased − 1023) log10 2) in integers
+      ! (78913/2^18 for log10 2: exact over the whole exponent range); it is floor(log10|x|)
+      ! or one less, corrected by `scaled_digits`
+      e = shifta((biased - 1023)*78913, 18)
+      p = digits - 1 - e
+      exact = p - 1 >= power_min .and. p <= power_max
+      if (exact) call scaled_digits(abs(x), digits, p, mantissa, exact)
+      if (.not. exact) then
+         ! beyond the table, or within 1e-9 of a tie
+         call put_es_fortran(buffer, last, x, digits)
+         return
       end if
-      ! layout: [-]d.ddd…e±xxx, filled from the right after its first two characters are
-      ! blanked (one or two blanks lead the field; a digit or the sign overwrites the rest)
+      call put_es_digits(buffer, last, digits, mantissa, digits - 1 - p, x < 0.0_wp)
+   end subroutine put_es
+
+   !> The text of ±mantissa·10^(e − digits + 1), mantissa of `digits` digits (or 0), into
+   !> buffer(last − digits − 6 : last): [-]d.ddd…e±xxx filled from the right after its first
+   !> two characters are blanked (one or two blanks lead the field; a digit or the sign
+   !> overwrites the rest). The digit counts of the chart styles (17, 11, 7, 4) are written
+   !> out; digits after the point go two at a time, in 32-bit pieces of at most 8 digits
+   !> (64-bit division by a constant costs several times more).
+   pure subroutine put_es_digits(buffer, last, digits, mantissa, e, negative)
+      character(len=*), intent(inout) :: buffer  !! the line being built
+      integer, intent(in) :: last     !! the field's last position
+      integer, intent(in) :: digits   !! significant digits, 1 ... 17
+      integer(int64), intent(in) :: mantissa  !! the digits, 0 ≤ mantissa < 10^digits
+      integer, intent(in) :: e        !! the decimal exponent
+      logical, intent(in) :: negative !! a minus sign first
+      integer(int64) :: high, rest
+      integer(int32) :: low, lead
+      integer :: p, k, abs_e, n_after
       buffer(last - digits - 6:last - digits - 5) = "  "
       abs_e = abs(e)
       k = 2*mod(abs_e, 100)
@@ -130,43 +148,72 @@ contains
          buffer(last - 4:last - 3) = "e+"
       end if
       p = last - 5
-      ! the digits after the point, two at a time, in 32-bit pieces of at most 8 digits
-      ! (64-bit division by a constant costs several times more)
-      n_after = digits - 1
-      if (n_after > 8) then
-         call put_eight(buffer, p, int(mod(mantissa, 100000000_int64), int32))
-         mantissa = mantissa/100000000_int64
-         n_after = n_after - 8
-      end if
-      low = int(mantissa, int32)
-      call put_pairs(buffer, p, mod(low, int32_powers(n_after)), n_after)
-      low = low/int32_powers(n_after)
+      select case (digits)
+      case (17)
+         high = mantissa/100000000_int64
+         call put_eight(buffer, p, int(mantissa - 100000000_int64*high, int32))
+         lead = int(high/100000000_int64, int32)
+         call put_eight(buffer, p, int(high - 100000000_int64*lead, int32))
+      case (11)
+         lead = int(mantissa/10000000000_int64, int32)
+         rest = mantissa - 10000000000_int64*lead
+         low = int(rest/100000000_int64, int32)
+         call put_eight(buffer, p, int(rest - 100000000_int64*low, int32))
+         buffer(p - 1:p) = digit_pairs(2*low + 1:2*low + 2)
+         p = p - 2
+      case (7)
+         low = int(mantissa, int32)
+         lead = low/1000000_int32
+         call put_pairs(buffer, p, low - 1000000_int32*lead, 6)
+      case (4)
+         low = int(mantissa, int32)
+         lead = low/1000_int32
+         call put_pairs(buffer, p, low - 1000_int32*lead, 3)
+      case default
+         high = mantissa
+         n_after = digits - 1
+         if (n_after > 8) then
+            rest = high/100000000_int64
+            call put_eight(buffer, p, int(high - 100000000_int64*rest, int32))
+            high = rest
+            n_after = n_after - 8
+         end if
+         low = int(high, int32)
+         call put_pairs(buffer, p, mod(low, int32_powers(n_after)), n_after)
+         lead = low/int32_powers(n_after)
+      end select
       if (digits > 1) then
          buffer(p:p) = "."
          p = p - 1
       end if
-      buffer(p:p) = achar(iachar("0") + low)
-      p = p - 1
-      if (x < 0.0_wp) buffer(p:p) = "-"
-   end subroutine put_es
+      buffer(p:p) = achar(iachar("0") + lead)
+      if (negative) buffer(p - 1:p - 1) = "-"
+   end subroutine put_es_digits
 
    !> The 8 decimal digits of `value` (with leading zeros) into buffer(p − 7 : p); p moves
-   !> left past them. Written out: two 4-digit halves, each two pairs.
+   !> left past them. All eight at once in the bytes of one 64-bit word: the two 4-digit
+   !> halves in its 32-bit lanes, each split into two 2-digit numbers in 16-bit lanes, each
+   !> of those into two digits in bytes (divisions by 100 and 10 as multiplications and
+   !> shifts, exact for these ranges: 10486/2^20 for 1/100 below 10^4, 103/2^10 for 1/10
+   !> below 100), then ASCII; the first digit is the lowest byte (little-endian order, as
+   !> x86-64 and AArch64 Linux store it).
    pure subroutine put_eight(buffer, p, value)
       character(len=*), intent(inout) :: buffer  !! the line being built
       integer, intent(inout) :: p                !! the last position to fill; moved left
       integer(int32), intent(in) :: value        !! 0 ≤ value < 10^8
-      integer(int32) :: high, low, k
+      integer(int64), parameter :: lanes_32 = int(z'0000007F0000007F', int64)
+      integer(int64), parameter :: lanes_16 = int(z'000F000F000F000F', int64)
+      integer(int64), parameter :: ascii = int(z'3030303030303030', int64)
+      character(len=8), parameter :: mold = ""
+      integer(int64) :: x, y
+      integer(int32) :: high
       high = value/10000_int32
-      low = value - 10000_int32*high
-      k = 2*(low/100_int32)
-      buffer(p - 3:p - 2) = digit_pairs(k + 1:k + 2)
-      k = 2*(low - 100_int32*(low/100_int32))
-      buffer(p - 1:p) = digit_pairs(k + 1:k + 2)
-      k = 2*(high/100_int32)
-      buffer(p - 7:p - 6) = digit_pairs(k + 1:k + 2)
-      k = 2*(high - 100_int32*(high/100_int32))
-      buffer(p - 5:p - 4) = digit_pairs(k + 1:k + 2)
+      x = ior(int(high, int64), shiftl(int(value - 10000_int32*high, int64), 32))
+      y = iand(shiftr(x*10486_int64, 20), lanes_32)
+      x = ior(y, shiftl(x - 100_int64*y, 16))
+      y = iand(shiftr(x*103_int64, 10), lanes_16)
+      x = ior(y, shiftl(x - 10_int64*y, 8))
+      buffer(p - 7:p) = transfer(x + ascii, mold)
       p = p - 8
    end subroutine put_eight
 
