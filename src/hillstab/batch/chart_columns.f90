@@ -420,25 +420,39 @@ contains
       character(len=24), intent(in), optional :: alpha_text  !! put_es(alpha, 17)
       character(len=24), intent(in), optional :: beta_text   !! put_es(beta, 17)
       integer, intent(out), optional :: length  !! characters written
-      integer :: k, pos
+      integer :: k, pos, id
+      logical :: have_alpha, have_beta
+      have_alpha = present(alpha_text)
+      have_beta = present(beta_text)
       pos = 0
       do k = 1, size(ids)
+         id = ids(k)
          if (k > 1) then
             line(pos + 1:pos + 1) = " "
             pos = pos + 1
          end if
-         if (ids(k) == col_alpha .and. present(alpha_text)) then
-            line(pos + 1:pos + 24) = alpha_text
-            pos = pos + 24
-         else if (ids(k) == col_beta .and. present(beta_text)) then
-            line(pos + 1:pos + 24) = beta_text
-            pos = pos + 24
-         else if (chart_digits(ids(k)) > 0) then
-            ! the numbers straight to put_es (put_value's dispatch by style, once per column
-            ! of every line, cost a tenth of a full chart's text)
-            call put_es(line, pos, v(ids(k)), chart_digits(ids(k)))
+         if (chart_digits(id) > 0) then
+            if (id == col_alpha .and. have_alpha) then
+               line(pos + 1:pos + 24) = alpha_text
+               pos = pos + 24
+            else if (id == col_beta .and. have_beta) then
+               line(pos + 1:pos + 24) = beta_text
+               pos = pos + 24
+            else
+               ! the numbers straight to put_es (put_value's dispatch by style, once per
+               ! column of every line, cost a tenth of a full chart's text)
+               call put_es(line, pos, v(id), chart_digits(id))
+            end if
+         else if (v(id) == 0.0_wp) then
+            ! the flags' usual values written here (through put_value they cost 3 % of a
+            ! full chart)
+            line(pos + 1:pos + 1) = "0"
+            pos = pos + 1
+         else if (v(id) == 1.0_wp) then
+            line(pos + 1:pos + 1) = "1"
+            pos = pos + 1
          else
-            call put_value(chart_styles(ids(k)), v(ids(k)), line, pos)
+            call put_value(chart_styles(id), v(id), line, pos)
          end if
       end do
       if (present(length)) then
