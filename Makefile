@@ -35,6 +35,10 @@
 #                       lyapunov_largest, interleaved (~2 min; once ~3 min more for the 3000-period
 #                       reference); the 400 x 400 x 1000 map estimated from a sample (out/bench_lyapunov*.dat, .png)
 FPM ?= bash scripts/fpm.sh
+# the release build: native code (scripts/release_flags.sh), GSL, LAPACK, BLAS and the Fortran
+# runtime linked from their static archives when installed (scripts/release_link_flags.sh)
+RELEASE = --profile release --flag "$$(bash scripts/release_flags.sh)" --link-flag "$$(bash scripts/release_link_flags.sh)"
+
 ifeq ($(origin FC),default)
 FC = gfortran
 endif
@@ -123,19 +127,19 @@ bench-instructions: setup-build
 bench: setup
 	mkdir -p out build
 	$(CC) -O2 bench/chart_gsl.c -o build/chart_gsl -lgsl -lgslcblas -lm
-	$(FPM) build --profile release --flag "$$(bash scripts/release_flags.sh)" >/dev/null
-	python3 scripts/bench_chart.py "$$($(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" \
+	$(FPM) build $(RELEASE) >/dev/null
+	python3 scripts/bench_chart.py "$$($(FPM) run $(RELEASE) \
 	   --runner echo hillstab 2>/dev/null | tail -1)" build/chart_gsl
 	gnuplot plots/bench_chart_gsl.gp
-	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench
+	$(FPM) run $(RELEASE) hillstab_bench
 	gnuplot plots/bench.gp
-	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_series
+	$(FPM) run $(RELEASE) hillstab_bench_series
 	gnuplot plots/bench_series.gp
-	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_boundaries
+	$(FPM) run $(RELEASE) hillstab_bench_boundaries
 
 area: setup
 	mkdir -p out
-	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_area
+	$(FPM) run $(RELEASE) hillstab_area
 	gnuplot plots/area.gp
 
 lib:
@@ -205,11 +209,11 @@ BENCH_ESTIMATE_STRIDE ?= 7
 bench-lyapunov: setup
 	mkdir -p out build
 	$(CC) -O2 bench/lyapunov_gsl.c -o build/lyapunov_gsl -lgsl -lgslcblas -lm
-	@test -f out/bench_lyapunov_reference.dat || $(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" \
+	@test -f out/bench_lyapunov_reference.dat || $(FPM) run $(RELEASE) \
 	   hillstab_chaos_reference -- grid $(BENCH_LYAPUNOV_N) 3000 1e-11 out/bench_lyapunov_reference.dat
-	$(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_lyapunov -- map \
+	$(FPM) run $(RELEASE) hillstab_bench_lyapunov -- map \
 	   $(BENCH_LYAPUNOV_N) $(BENCH_LYAPUNOV_PERIODS) $(BENCH_LYAPUNOV_ROUNDS) out/bench_lyapunov_reference.dat build/lyapunov_gsl
-	OMP_NUM_THREADS=2 $(FPM) run --profile release --flag "$$(bash scripts/release_flags.sh)" hillstab_bench_lyapunov -- \
+	OMP_NUM_THREADS=2 $(FPM) run $(RELEASE) hillstab_bench_lyapunov -- \
 	   estimate 400 1000 $(BENCH_ESTIMATE_STRIDE)
 	gnuplot plots/bench_lyapunov.gp
 

@@ -13,8 +13,9 @@ n=${HILLSTAB_BENCH_N:-1000}
 work=$(mktemp -d "${TMPDIR:-/tmp}/hillstab_bench_output.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 flags=$(bash scripts/release_flags.sh)
-bash scripts/fpm.sh build --profile release --flag "$flags" >/dev/null
-exe=$(bash scripts/fpm.sh run --profile release --flag "$flags" --runner echo hillstab 2>/dev/null | tail -1)
+link=$(bash scripts/release_link_flags.sh)
+bash scripts/fpm.sh build --profile release --flag "$flags" --link-flag "$link" >/dev/null
+exe=$(bash scripts/fpm.sh run --profile release --flag "$flags" --link-flag "$link" --runner echo hillstab 2>/dev/null | tail -1)
 mkdir -p out
 result=out/bench_output.dat
 {

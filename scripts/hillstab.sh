@@ -10,6 +10,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 flags=$(bash "$root/scripts/release_flags.sh")
+link=$(bash "$root/scripts/release_link_flags.sh")
 target=(hillstab)
 if [ "${1:-}" = "--example" ]; then
    [ $# -ge 2 ] || { echo "usage: hillstab.sh --example NAME [ARGS]" >&2; exit 2; }
@@ -17,11 +18,11 @@ if [ "${1:-}" = "--example" ]; then
    shift 2
 fi
 cd "$root"
-if ! log=$(bash scripts/fpm.sh build --profile release --flag "$flags" 2>&1); then
+if ! log=$(bash scripts/fpm.sh build --profile release --flag "$flags" --link-flag "$link" 2>&1); then
    printf '%s\n' "$log" >&2
    exit 1
 fi
-exe=$(bash scripts/fpm.sh run --profile release --flag "$flags" --runner echo "${target[@]}" 2>/dev/null | tail -1)
+exe=$(bash scripts/fpm.sh run --profile release --flag "$flags" --link-flag "$link" --runner echo "${target[@]}" 2>/dev/null | tail -1)
 cd - >/dev/null
 case "$exe" in /*) ;; *) exe="$root/$exe" ;; esac
 exec "$exe" "$@"

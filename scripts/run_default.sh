@@ -30,9 +30,10 @@ done
 
 start=$(date +%s)
 flags=$(bash scripts/release_flags.sh)
-bash scripts/fpm.sh run --profile release --flag "$flags" hillstab -- "${paths[@]}"
+link=$(bash scripts/release_link_flags.sh)
+bash scripts/fpm.sh run --profile release --flag "$flags" --link-flag "$link" hillstab -- "${paths[@]}"
 # the onset law of the swing (a library example writing out/onset_law.dat)
-bash scripts/fpm.sh run --profile release --flag "$flags" --example onset_law
+bash scripts/fpm.sh run --profile release --flag "$flags" --link-flag "$link" --example onset_law
 plots+=(onset)
 for plot in "${plots[@]}"; do
    gnuplot "plots/$plot.gp"
