@@ -36,7 +36,7 @@ module hillstab_batch_chart_columns
    public :: chart_header, common_header, evaluate_point, failed_points_error, check_method_runs, warn_inaccurate
    public :: clamp_magnitude, log10_floor, chart_line_length, stacked, chart_line, failed_values
    public :: header_bytes, text_row_bytes, binary_row_bytes, point_amplitude, columns_need, columns_paper
-   public :: verdict_values, verdict_line
+   public :: verdict_values, verdict_line, col_physical
 
    !> The columns of a chart or points file, in file order.
    integer, parameter :: col_alpha = 1, col_a = 2, col_beta = 3, col_omega = 4, col_s = 5, col_stable = 6, &

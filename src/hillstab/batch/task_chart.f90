@@ -28,7 +28,7 @@ module hillstab_batch_task_chart
    use hillstab_batch_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, chart_header, &
       point_amplitude, columns_need, columns_paper, verdict_values, verdict_line, &
       scene_chart_columns, check_method_runs, warn_inaccurate, failed_points_error, chart_line_length, evaluate_point, &
-      header_bytes, text_row_bytes, binary_row_bytes
+      header_bytes, text_row_bytes, binary_row_bytes, col_physical
    use hillstab_batch_columns, only: columns_text
    use hillstab_batch_chart_columns, only: chart_columns
    use hillstab_batch_output, only: output_file_t, finish_output, discard_output, write_header, write_text, &
@@ -551,8 +551,12 @@ contains
       integer, allocatable :: lengths(:)
       real(wp), allocatable :: values(:, :)
       real(wp) :: alpha
-      allocate (lines(self%grid%n_beta), lengths(self%grid%n_beta), values(size(self%ids), self%grid%n_beta))
       alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, self%grid%n_alpha, unit)
+      if (rows_in_parallel(self%grid) .and. columns_need(self%ids) <= need_verdict) then
+         call verdict_row_text(scene, self%ids, alpha, self%betas, self%beta_texts, unit > 1, text, statuses)
+         return
+      end if
+      allocate (lines(self%grid%n_beta), lengths(self%grid%n_beta), values(size(self%ids), self%grid%n_beta))
       if (rows_in_parallel(self%grid)) then
          call compute_row(scene, self%ids, alpha, self%betas, lines, lengths, values, statuses, &
                           beta_texts=self%beta_texts)
@@ -562,6 +566,60 @@ contains
       end if
       call join_lines(lines, unit > 1, text, lengths=lengths)
    end subroutine chart_unit_text
+
+   !> The text of a row of a verdict file (columns that need no more than the verdict), as
+   !> `compute_row` and `join_lines` make it, written straight into the unit's text: no
+   !> array of lines, the physical domain tested only for a `physical` column (the verdict
+   !> charts spent a fifth of their time between the traces and the text).
+   subroutine verdict_row_text(scene, ids, alpha, betas, beta_texts, separate, text, statuses)
+      type(scene_t), intent(in) :: scene  !! the chart's scene (text format)
+      integer, intent(in) :: ids(:)  !! the columns, none needing more than the verdict
+      real(wp), intent(in) :: alpha, betas(:)  !! the row
+      character(len=24), intent(in) :: beta_texts(:)  !! format_es(betas, 17)
+      logical, intent(in) :: separate  !! a blank line before the row
+      character(len=:), allocatable, intent(out) :: text  !! the lines, no final new line
+      integer, intent(out) :: statuses(:)  !! per point
+      type(trace_t) :: traces(size(betas))
+      logical :: failed(size(betas)), inaccurate(size(betas)), physical, with_physical
+      type(error_t), allocatable :: cause
+      character(len=:), allocatable :: buffer
+      character(len=24) :: alpha_text
+      real(wp) :: a
+      integer :: j, pos, length
+      call monodromy_trace_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), betas, scene%method, &
+                                 traces, failed, cause, inaccurate=inaccurate, need=columns_need(ids), &
+                                 paper=columns_paper(ids))
+      statuses = merge(status_roundoff, status_ok, inaccurate)
+      where (failed) statuses = status_failed
+      alpha_text = format_es(alpha, 17)
+      with_physical = any(ids == col_physical)
+      physical = .true.
+      a = 0.0_wp
+      ! room for every line at its longest (and one more, for the line being written)
+      allocate (character(len=(size(betas) + 1)*(chart_line_length + 1) + 1) :: buffer)
+      pos = 0
+      if (separate) then
+         buffer(1:1) = new_line("a")
+         pos = 1
+      end if
+      do j = 1, size(betas)
+         if (j > 1) then
+            buffer(pos + 1:pos + 1) = new_line("a")
+            pos = pos + 1
+         end if
+         if (with_physical) physical = in_physical_domain(alpha, betas(j))
+         if (scene%physical) a = point_amplitude(scene, j, alpha, betas(j))
+         if (failed(j)) then
+            call chart_line(ids, failed_values(alpha, betas(j), physical, a), buffer(pos + 1:pos + chart_line_length), &
+                            alpha_text, beta_texts(j), length)
+         else
+            call verdict_line(ids, alpha, betas(j), traces(j), scene%epsilon, scene%method%tolerance, physical, &
+                              statuses(j), a, buffer(pos + 1:pos + chart_line_length), length, alpha_text, beta_texts(j))
+         end if
+         pos = pos + length
+      end do
+      text = buffer(1:pos)
+   end subroutine verdict_row_text
 
    !> The checks and the header of `chart_run`.
    subroutine chart_open_units(self, scene, file, error)
