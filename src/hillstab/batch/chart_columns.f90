@@ -333,13 +333,15 @@ contains
    !> The text line of a point computed for its verdicts only, written directly (what
    !> `verdict_values` and `chart_line` write, without the array of every column's value and
    !> the dispatch by style: a verdict chart writes little more than the grid and a flag).
-   pure subroutine verdict_line(ids, alpha, beta, tr, epsilon, tolerance, physical, status, amplitude, line, &
+   !> The verdicts come from `verdicts` (hillstab_hill_floquet), which the callers apply to a
+   !> whole row at once.
+   pure subroutine verdict_line(ids, beta, stable, stable_paper, marginal, physical, status, amplitude, line, &
                                 length, alpha_text, beta_text)
       integer, intent(in) :: ids(:)        !! the columns to write (each offered to a verdict file)
-      real(wp), intent(in) :: alpha, beta  !! the grid point
-      type(trace_t), intent(in) :: tr      !! its trace, with its error bound
-      real(wp), intent(in) :: epsilon      !! damping ε
-      real(wp), intent(in) :: tolerance    !! the scene's tolerance
+      real(wp), intent(in) :: beta         !! the point's β (written when `beta_text` is absent)
+      logical, intent(in) :: stable        !! |S| < 2 cosh ε
+      logical, intent(in) :: stable_paper  !! |S| ≤ 2
+      logical, intent(in) :: marginal      !! the error bound reaches across 2 cosh ε
       logical, intent(in) :: physical      !! (α, β) inside the physical domain
       integer, intent(in) :: status        !! per-point status code
       real(wp), intent(in) :: amplitude    !! a (m), or 0
@@ -347,9 +349,7 @@ contains
       integer, intent(out) :: length       !! characters written
       character(len=24), intent(in) :: alpha_text  !! put_es(alpha, 17)
       character(len=24), intent(in), optional :: beta_text   !! put_es(beta, 17)
-      logical :: stable, stable_paper, marginal
-      integer :: k, pos
-      call verdicts(tr, epsilon, tolerance, stable, stable_paper, marginal)
+      integer :: k, pos, p
       pos = 0
       do k = 1, size(ids)
          if (k > 1) then
@@ -358,14 +358,14 @@ contains
          end if
          select case (ids(k))
          case (col_alpha)
-            line(pos + 1:pos + 24) = alpha_text
-            pos = pos + 24
+            call put_text24(line, pos, alpha_text)
          case (col_beta)
             if (present(beta_text)) then
-               line(pos + 1:pos + 24) = beta_text
-               pos = pos + 24
+               call put_text24(line, pos, beta_text)
             else
-               call put_value(chart_styles(col_beta), beta, line, pos)
+               p = pos
+               call put_es(line, p, beta, chart_digits(col_beta))
+               pos = p
             end if
          case (col_stable)
             if (marginal) then
@@ -382,16 +382,35 @@ contains
             line(pos + 1:pos + 1) = merge("1", "0", physical)
             pos = pos + 1
          case (col_status)
-            call put_value(style_flag, real(status, wp), line, pos)
+            p = pos
+            call put_value(style_flag, real(status, wp), line, p)
+            pos = p
          case (col_a)
-            call put_value(chart_styles(col_a), amplitude, line, pos)
+            p = pos
+            call put_value(chart_styles(col_a), amplitude, line, p)
+            pos = p
          case default
             ! a column of S or the multipliers: not in a verdict file (its need is higher)
-            call put_value(chart_styles(ids(k)), 0.0_wp, line, pos)
+            p = pos
+            call put_value(chart_styles(ids(k)), 0.0_wp, line, p)
+            pos = p
          end select
       end do
       length = pos
    end subroutine verdict_line
+
+   !> A 24-character field (a grid value's text) into line(pos + 1 : pos + 24), pos advanced:
+   !> three 8-character pieces, which the compiler copies as words (the whole field went
+   !> through memmove, a fifth of a verdict line's cost).
+   pure subroutine put_text24(line, pos, text)
+      character(len=chart_line_length), intent(inout) :: line  !! the line being built
+      integer, intent(inout) :: pos  !! last position written; advanced past the field
+      character(len=24), intent(in) :: text  !! the field
+      line(pos + 1:pos + 8) = text(1:8)
+      line(pos + 9:pos + 16) = text(9:16)
+      line(pos + 17:pos + 24) = text(17:24)
+      pos = pos + 24
+   end subroutine put_text24
 
    !> The values of a point where nothing could be computed: alpha, a, beta and physical
    !> kept, the other columns at their placeholders, status 2.

@@ -16,7 +16,7 @@ module hillstab_batch_task_chart
    use hillstab_core_text, only: format_es, real_text, integer_text
    use hillstab_hill_coefficient, only: hill_model_t, in_physical_domain
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, verdicts
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, batch_plan_t, prepare_batch, need_verdict
    use hillstab_batch_scene, only: scene_t, task_t, open_scene_output
    use hillstab_batch_declaration, only: group_t
@@ -416,7 +416,7 @@ contains
       type(floquet_t) :: f
       type(hill_model_t) :: row
       real(wp) :: v(n_chart_columns), per_second, a
-      logical :: failed(size(betas)), inaccurate(size(betas))
+      logical :: failed(size(betas)), inaccurate(size(betas)), stable, stable_paper, marginal
       integer :: j, need
       need = columns_need(ids)
       ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
@@ -434,12 +434,13 @@ contains
          if (scene%physical) a = point_amplitude(scene, j, alpha, betas(j))
          if (need <= need_verdict .and. .not. (scene%binary .or. failed(j))) then
             ! a verdict line, written directly
+            call verdicts(traces(j), scene%epsilon, scene%method%tolerance, stable, stable_paper, marginal)
             if (present(beta_texts)) then
-               call verdict_line(ids, alpha, betas(j), traces(j), scene%epsilon, scene%method%tolerance, &
-                  in_physical_domain(alpha, betas(j)), statuses(j), a, lines(j), lengths(j), alpha_text, beta_texts(j))
+               call verdict_line(ids, betas(j), stable, stable_paper, marginal, in_physical_domain(alpha, betas(j)), &
+                                 statuses(j), a, lines(j), lengths(j), alpha_text, beta_texts(j))
             else
-               call verdict_line(ids, alpha, betas(j), traces(j), scene%epsilon, scene%method%tolerance, &
-                  in_physical_domain(alpha, betas(j)), statuses(j), a, lines(j), lengths(j), alpha_text)
+               call verdict_line(ids, betas(j), stable, stable_paper, marginal, in_physical_domain(alpha, betas(j)), &
+                                 statuses(j), a, lines(j), lengths(j), alpha_text)
             end if
             cycle
          end if
@@ -581,6 +582,7 @@ contains
       integer, intent(out) :: statuses(:)  !! per point
       type(trace_t) :: traces(size(betas))
       logical :: failed(size(betas)), inaccurate(size(betas)), physical, with_physical
+      logical, dimension(size(betas)) :: stable, stable_paper, marginal
       type(error_t), allocatable :: cause
       character(len=:), allocatable :: buffer
       character(len=24) :: alpha_text
@@ -591,6 +593,8 @@ contains
                                  paper=columns_paper(ids))
       statuses = merge(status_roundoff, status_ok, inaccurate)
       where (failed) statuses = status_failed
+      ! the verdicts of the whole row in one elemental call
+      call verdicts(traces, scene%epsilon, scene%method%tolerance, stable, stable_paper, marginal)
       alpha_text = format_es(alpha, 17)
       with_physical = any(ids == col_physical)
       physical = .true.
@@ -613,8 +617,8 @@ contains
             call chart_line(ids, failed_values(alpha, betas(j), physical, a), buffer(pos + 1:pos + chart_line_length), &
                             alpha_text, beta_texts(j), length)
          else
-            call verdict_line(ids, alpha, betas(j), traces(j), scene%epsilon, scene%method%tolerance, physical, &
-                              statuses(j), a, buffer(pos + 1:pos + chart_line_length), length, alpha_text, beta_texts(j))
+            call verdict_line(ids, betas(j), stable(j), stable_paper(j), marginal(j), physical, statuses(j), a, &
+                              buffer(pos + 1:pos + chart_line_length), length, alpha_text, beta_texts(j))
          end if
          pos = pos + length
       end do
