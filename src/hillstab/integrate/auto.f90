@@ -70,8 +70,11 @@ module hillstab_integrate_auto
       110218, 131072, 155872, 185364, 220436, 262144, 262144]
    !> What `lane_traces` computes: S and its round-off level (`roundoff_level` and
    !> `coefficient_level`, their exponentials written out as plain products where the
-   !> propagator was never rescaled, the usual case); or S alone.
-   integer, parameter :: lanes_plain = 1, lanes_values = 2
+   !> propagator was never rescaled, the usual case); or S alone; or S and its round-off
+   !> level with ln|S| left unset below |S| = 1e300, as for S alone (the screening pass:
+   !> the logarithm of every lane was 2 % of a verdict chart, and a verdict reads ln|S|
+   !> only for traces beyond that).
+   integer, parameter :: lanes_plain = 1, lanes_values = 2, lanes_screen = 3
    !> Lanes propagated together by `lane_traces` (work arrays of this size on the stack).
    integer, parameter :: lane_block = 64
    !> Rescale the propagator when an entry exceeds 2^rescale_exponent.
@@ -423,7 +426,8 @@ contains
    !> bounds the error of S_N whenever each halving at least doubles it. A point whose
    !> |S| lies beyond the bound from a stability threshold has its verdict; the others go
    !> to `trace_auto_batch`. S_N itself is returned (not extrapolated): the bound is a
-   !> bound on S_N.
+   !> bound on S_N. Its ln|S| is set only where |S| ≥ 1e300 (`lanes_screen`): what reads
+   !> the screened traces (the verdicts, the growth rate) needs it only there.
    subroutine trace_auto_screen(kind, alpha, epsilon, betas, traces, stats, error, plan)
       integer, intent(in) :: kind            !! a model constant (hillstab_hill_models)
       real(wp), intent(in) :: alpha          !! α (ν for the Mathieu model)
@@ -500,7 +504,7 @@ contains
          lane_c1(1:m) = c1s(group(1:m))
          lane_phases(1:m) = phases(group(1:m))
          call group_pass(cache, kind, alpha, n(i), group(1:m), lane_c0(1:m), lane_c1(1:m), lane_phases(1:m), &
-                         fine, floors, stats, lanes_plain)
+                         fine, floors, stats, lanes_screen)
          call group_pass(cache, kind, alpha, n(i)/2, group(1:m), lane_c0(1:m), lane_c1(1:m), lane_phases(1:m), &
                          coarse, unused, stats, lanes_values)
          call group_pass(cache, kind, alpha, n(i)/4, group(1:m), lane_c0(1:m), lane_c1(1:m), lane_phases(1:m), &
@@ -751,8 +755,9 @@ contains
       real(wp), intent(in) :: phases(:)  !! phase bound of each lane (`coefficient_phase`)
       type(trace_t), intent(out) :: traces(size(c0))
       real(wp), intent(out) :: floors(size(c0))  !! round-off level of each S, relative to max(1, |S|)
-      !> lanes_plain (default: S and its round-off level) or lanes_values (S only: floors 0,
-      !> and ln|S| left unset below |S| = 1e300 where the propagator was never rescaled)
+      !> lanes_plain (default: S and its round-off level), lanes_values (S only: floors 0,
+      !> and ln|S| left unset below |S| = 1e300 where the propagator was never rescaled) or
+      !> lanes_screen (S and its round-off level, ln|S| as for lanes_values)
       integer, intent(in), optional :: mode
       integer :: first, last, how
       how = lanes_plain
@@ -771,7 +776,7 @@ contains
       real(wp), intent(in) :: phases(:)  !! phase bound of each lane (`coefficient_phase`)
       type(trace_t), intent(out) :: traces(size(c0))
       real(wp), intent(out) :: floors(size(c0))  !! round-off level of each S, relative to max(1, |S|)
-      integer, intent(in) :: how  !! lanes_plain or lanes_values
+      integer, intent(in) :: how  !! lanes_plain, lanes_values or lanes_screen
       real(wp), parameter :: c_d2 = -sqrt15/3.0_wp, c_d3 = -10.0_wp/3.0_wp, c_60 = 1.0_wp/30.0_wp
       real(wp), parameter :: c_240 = 1.0_wp/240.0_wp, c_120 = 1.0_wp/120.0_wp, c_12 = 1.0_wp/12.0_wp
       real(wp), dimension(lane_block) :: p11, p12, p21, p22, log_scale, ga, gb, gc, z, log_peak, peak, cs, sn
@@ -960,8 +965,8 @@ contains
                sensitivity_t(2.0_wp*log_scale(l) + 512.0_wp*log(2.0_wp), su2(l), sv2(l), su2w(l), sv2w(l), &
                su2a(l), sv2a(l)), c0(l), mesh%n_steps, phases(l), traces(l), floors(l))
             if (how == lanes_values) floors(l) = 0.0_wp
-         else if (how == lanes_values) then
-            ! S only: ln|S| is left unset (below 1e300 nothing reads it)
+         else if (how /= lanes_plain) then
+            ! ln|S| is left unset (below 1e300 nothing reads it)
             traces(l)%value = s_lane(l)
             traces(l)%overflow = .false.
          else
