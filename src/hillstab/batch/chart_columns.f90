@@ -22,7 +22,7 @@ module hillstab_batch_chart_columns
       model_summary
    use hillstab_hill_coefficient, only: sampling_name
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus, verdicts
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus, verdicts, near_threshold
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, method_name, method_uses_segments, method_is_exact, &
       need_nothing, need_verdict, need_growth, need_trace
    use hillstab_batch_scene, only: scene_t, task_t, scene_header, output_path, physical_summary
@@ -36,7 +36,7 @@ module hillstab_batch_chart_columns
    public :: chart_header, common_header, evaluate_point, failed_points_error, check_method_runs, warn_inaccurate
    public :: clamp_magnitude, log10_floor, chart_line_length, stacked, chart_line, failed_values
    public :: header_bytes, text_row_bytes, binary_row_bytes, point_amplitude, columns_need, columns_paper
-   public :: verdict_values, verdict_line, col_physical
+   public :: verdict_values, verdict_lines, col_physical
 
    !> The columns of a chart or points file, in file order.
    integer, parameter :: col_alpha = 1, col_a = 2, col_beta = 3, col_omega = 4, col_s = 5, col_stable = 6, &
@@ -330,85 +330,119 @@ contains
       v(col_status) = real(status, wp)
    end function verdict_values
 
-   !> The text line of a point computed for its verdicts only, written directly (what
-   !> `verdict_values` and `chart_line` write, without the array of every column's value and
-   !> the dispatch by style: a verdict chart writes little more than the grid and a flag).
-   !> The verdicts come from `verdicts` (hillstab_hill_floquet), which the callers apply to a
-   !> whole row at once.
-   pure subroutine verdict_line(ids, beta, stable, stable_paper, marginal, physical, status, amplitude, line, &
-                                length, alpha_text, beta_text)
+   !> The text lines of points computed for their verdicts only, written directly into
+   !> buffer(pos + 1 : …), one new-line character between two lines, pos advanced past the
+   !> last (what `verdict_values` and `chart_line` write, without the array of every
+   !> column's value and the dispatch by style: a verdict chart writes little more than the
+   !> grid and a flag, and this loop is most of its text's cost). The verdicts are those of
+   !> `verdicts` (hillstab_hill_floquet), the usual case (no damping, an estimate below 1)
+   !> written out here; a failed point's line is `chart_line`'s of `failed_values`.
+   pure subroutine verdict_lines(ids, alpha, betas, traces, epsilon, tolerance, statuses, physical, amplitudes, &
+                                 alpha_text, buffer, pos, beta_texts)
       integer, intent(in) :: ids(:)        !! the columns to write (each offered to a verdict file)
-      real(wp), intent(in) :: beta         !! the point's β (written when `beta_text` is absent)
-      logical, intent(in) :: stable        !! |S| < 2 cosh ε
-      logical, intent(in) :: stable_paper  !! |S| ≤ 2
-      logical, intent(in) :: marginal      !! the error bound reaches across 2 cosh ε
-      logical, intent(in) :: physical      !! (α, β) inside the physical domain
-      integer, intent(in) :: status        !! per-point status code
-      real(wp), intent(in) :: amplitude    !! a (m), or 0
-      character(len=chart_line_length), intent(inout) :: line  !! the line (not blanked beyond `length`)
-      integer, intent(out) :: length       !! characters written
+      real(wp), intent(in) :: alpha        !! the points' α
+      real(wp), intent(in) :: betas(:)     !! their β
+      type(trace_t), intent(in) :: traces(:)  !! their traces, with error bounds
+      real(wp), intent(in) :: epsilon      !! damping ε
+      real(wp), intent(in) :: tolerance    !! the scene's tolerance
+      integer, intent(in) :: statuses(:)   !! per-point status codes (status_failed: no trace)
+      !> (α, β) inside the physical domain, per point; empty when no column asks
+      logical, intent(in) :: physical(:)
+      real(wp), intent(in) :: amplitudes(:)  !! a (m) per point; empty for 0
       character(len=24), intent(in) :: alpha_text  !! put_es(alpha, 17)
-      character(len=24), intent(in), optional :: beta_text   !! put_es(beta, 17)
-      integer :: k, pos, p
-      pos = 0
-      do k = 1, size(ids)
-         if (k > 1) then
-            line(pos + 1:pos + 1) = " "
+      character(len=*), intent(inout) :: buffer  !! room for the lines (chart_line_length + 1 each)
+      integer, intent(inout) :: pos        !! last position written; advanced past the lines
+      character(len=24), intent(in), optional :: beta_texts(:)  !! put_es(betas, 17)
+      logical :: stable, stable_paper, marginal, inside
+      real(wp) :: s, a
+      integer :: j, k, p, length
+      do j = 1, size(betas)
+         if (j > 1) then
+            buffer(pos + 1:pos + 1) = new_line("a")
             pos = pos + 1
          end if
-         select case (ids(k))
-         case (col_alpha)
-            call put_text24(line, pos, alpha_text)
-         case (col_beta)
-            if (present(beta_text)) then
-               call put_text24(line, pos, beta_text)
+         inside = .true.
+         if (size(physical) > 0) inside = physical(j)
+         a = 0.0_wp
+         if (size(amplitudes) > 0) a = amplitudes(j)
+         if (statuses(j) == status_failed) then
+            if (present(beta_texts)) then
+               call chart_line(ids, failed_values(alpha, betas(j), inside, a), buffer(pos + 1:pos + chart_line_length), &
+                               alpha_text, beta_texts(j), length)
             else
-               p = pos
-               call put_es(line, p, beta, chart_digits(col_beta))
-               pos = p
+               call chart_line(ids, failed_values(alpha, betas(j), inside, a), buffer(pos + 1:pos + chart_line_length), &
+                               alpha_text, length=length)
             end if
-         case (col_stable)
-            if (marginal) then
-               line(pos + 1:pos + 3) = "0.5"
-               pos = pos + 3
-            else
-               line(pos + 1:pos + 1) = merge("1", "0", stable)
+            pos = pos + length
+            cycle
+         end if
+         s = traces(j)%value
+         if (epsilon == 0.0_wp .and. .not. traces(j)%overflow .and. traces(j)%error_estimate >= 0.0_wp .and. &
+             traces(j)%error_estimate < 1.0_wp) then
+            stable = abs(s) < 2.0_wp
+            stable_paper = abs(s) <= 2.0_wp
+            marginal = near_threshold(s, 0.0_wp, max(traces(j)%error_estimate, tolerance))
+         else
+            call verdicts(traces(j), epsilon, tolerance, stable, stable_paper, marginal)
+         end if
+         do k = 1, size(ids)
+            if (k > 1) then
+               buffer(pos + 1:pos + 1) = " "
                pos = pos + 1
             end if
-         case (col_stable_paper)
-            line(pos + 1:pos + 1) = merge("1", "0", stable_paper)
-            pos = pos + 1
-         case (col_physical)
-            line(pos + 1:pos + 1) = merge("1", "0", physical)
-            pos = pos + 1
-         case (col_status)
-            p = pos
-            call put_value(style_flag, real(status, wp), line, p)
-            pos = p
-         case (col_a)
-            p = pos
-            call put_value(chart_styles(col_a), amplitude, line, p)
-            pos = p
-         case default
-            ! a column of S or the multipliers: not in a verdict file (its need is higher)
-            p = pos
-            call put_value(chart_styles(ids(k)), 0.0_wp, line, p)
-            pos = p
-         end select
+            select case (ids(k))
+            case (col_alpha)
+               call put_text24(buffer, pos, alpha_text)
+            case (col_beta)
+               if (present(beta_texts)) then
+                  call put_text24(buffer, pos, beta_texts(j))
+               else
+                  p = pos
+                  call put_es(buffer, p, betas(j), chart_digits(col_beta))
+                  pos = p
+               end if
+            case (col_stable)
+               if (marginal) then
+                  buffer(pos + 1:pos + 3) = "0.5"
+                  pos = pos + 3
+               else
+                  buffer(pos + 1:pos + 1) = merge("1", "0", stable)
+                  pos = pos + 1
+               end if
+            case (col_stable_paper)
+               buffer(pos + 1:pos + 1) = merge("1", "0", stable_paper)
+               pos = pos + 1
+            case (col_physical)
+               buffer(pos + 1:pos + 1) = merge("1", "0", inside)
+               pos = pos + 1
+            case (col_status)
+               p = pos
+               call put_value(style_flag, real(statuses(j), wp), buffer, p)
+               pos = p
+            case (col_a)
+               p = pos
+               call put_value(chart_styles(col_a), a, buffer, p)
+               pos = p
+            case default
+               ! a column of S or the multipliers: not in a verdict file (its need is higher)
+               p = pos
+               call put_value(chart_styles(ids(k)), 0.0_wp, buffer, p)
+               pos = p
+            end select
+         end do
       end do
-      length = pos
-   end subroutine verdict_line
+   end subroutine verdict_lines
 
-   !> A 24-character field (a grid value's text) into line(pos + 1 : pos + 24), pos advanced:
-   !> three 8-character pieces, which the compiler copies as words (the whole field went
-   !> through memmove, a fifth of a verdict line's cost).
-   pure subroutine put_text24(line, pos, text)
-      character(len=chart_line_length), intent(inout) :: line  !! the line being built
+   !> A 24-character field (a grid value's text) into buffer(pos + 1 : pos + 24), pos
+   !> advanced: three 8-character pieces, which the compiler copies as words (the whole
+   !> field went through memmove, a fifth of a verdict line's cost).
+   pure subroutine put_text24(buffer, pos, text)
+      character(len=*), intent(inout) :: buffer  !! the line being built
       integer, intent(inout) :: pos  !! last position written; advanced past the field
       character(len=24), intent(in) :: text  !! the field
-      line(pos + 1:pos + 8) = text(1:8)
-      line(pos + 9:pos + 16) = text(9:16)
-      line(pos + 17:pos + 24) = text(17:24)
+      buffer(pos + 1:pos + 8) = text(1:8)
+      buffer(pos + 9:pos + 16) = text(9:16)
+      buffer(pos + 17:pos + 24) = text(17:24)
       pos = pos + 24
    end subroutine put_text24
 

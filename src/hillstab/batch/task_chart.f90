@@ -16,7 +16,7 @@ module hillstab_batch_task_chart
    use hillstab_core_text, only: format_es, real_text, integer_text
    use hillstab_hill_coefficient, only: hill_model_t, in_physical_domain
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, verdicts
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, batch_plan_t, prepare_batch, need_verdict
    use hillstab_batch_scene, only: scene_t, task_t, open_scene_output
    use hillstab_batch_declaration, only: group_t
@@ -26,7 +26,7 @@ module hillstab_batch_task_chart
    use hillstab_hill_models, only: model_physical_alpha
    use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point, grid_size_text
    use hillstab_batch_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, chart_header, &
-      point_amplitude, columns_need, columns_paper, verdict_values, verdict_line, &
+      point_amplitude, columns_need, columns_paper, verdict_values, verdict_lines, &
       scene_chart_columns, check_method_runs, warn_inaccurate, failed_points_error, chart_line_length, evaluate_point, &
       header_bytes, text_row_bytes, binary_row_bytes, col_physical
    use hillstab_batch_columns, only: columns_text
@@ -416,7 +416,7 @@ contains
       type(floquet_t) :: f
       type(hill_model_t) :: row
       real(wp) :: v(n_chart_columns), per_second, a
-      logical :: failed(size(betas)), inaccurate(size(betas)), stable, stable_paper, marginal
+      logical :: failed(size(betas)), inaccurate(size(betas))
       integer :: j, need
       need = columns_need(ids)
       ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
@@ -434,13 +434,15 @@ contains
          if (scene%physical) a = point_amplitude(scene, j, alpha, betas(j))
          if (need <= need_verdict .and. .not. (scene%binary .or. failed(j))) then
             ! a verdict line, written directly
-            call verdicts(traces(j), scene%epsilon, scene%method%tolerance, stable, stable_paper, marginal)
+            lengths(j) = 0
             if (present(beta_texts)) then
-               call verdict_line(ids, betas(j), stable, stable_paper, marginal, in_physical_domain(alpha, betas(j)), &
-                                 statuses(j), a, lines(j), lengths(j), alpha_text, beta_texts(j))
+               call verdict_lines(ids, alpha, betas(j:j), traces(j:j), scene%epsilon, scene%method%tolerance, &
+                                  statuses(j:j), [in_physical_domain(alpha, betas(j))], [a], alpha_text, lines(j), &
+                                  lengths(j), beta_texts(j:j))
             else
-               call verdict_line(ids, betas(j), stable, stable_paper, marginal, in_physical_domain(alpha, betas(j)), &
-                                 statuses(j), a, lines(j), lengths(j), alpha_text)
+               call verdict_lines(ids, alpha, betas(j:j), traces(j:j), scene%epsilon, scene%method%tolerance, &
+                                  statuses(j:j), [in_physical_domain(alpha, betas(j))], [a], alpha_text, lines(j), &
+                                  lengths(j))
             end if
             cycle
          end if
@@ -581,24 +583,20 @@ contains
       character(len=:), allocatable, intent(out) :: text  !! the lines, no final new line
       integer, intent(out) :: statuses(:)  !! per point
       type(trace_t) :: traces(size(betas))
-      logical :: failed(size(betas)), inaccurate(size(betas)), physical, with_physical
-      logical, dimension(size(betas)) :: stable, stable_paper, marginal
+      logical :: failed(size(betas)), inaccurate(size(betas))
+      logical, allocatable :: physical(:)
+      real(wp), allocatable :: amplitudes(:)
       type(error_t), allocatable :: cause
       character(len=:), allocatable :: buffer
-      character(len=24) :: alpha_text
-      real(wp) :: a
-      integer :: j, pos, length
+      integer :: j, pos
       call monodromy_trace_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), betas, scene%method, &
                                  traces, failed, cause, inaccurate=inaccurate, need=columns_need(ids), &
                                  paper=columns_paper(ids))
       statuses = merge(status_roundoff, status_ok, inaccurate)
       where (failed) statuses = status_failed
-      ! the verdicts of the whole row in one elemental call
-      call verdicts(traces, scene%epsilon, scene%method%tolerance, stable, stable_paper, marginal)
-      alpha_text = format_es(alpha, 17)
-      with_physical = any(ids == col_physical)
-      physical = .true.
-      a = 0.0_wp
+      allocate (physical(0), amplitudes(0))
+      if (any(ids == col_physical)) physical = [(in_physical_domain(alpha, betas(j)), j=1, size(betas))]
+      if (scene%physical) amplitudes = [(point_amplitude(scene, j, alpha, betas(j)), j=1, size(betas))]
       ! room for every line at its longest (and one more, for the line being written)
       allocate (character(len=(size(betas) + 1)*(chart_line_length + 1) + 1) :: buffer)
       pos = 0
@@ -606,22 +604,8 @@ contains
          buffer(1:1) = new_line("a")
          pos = 1
       end if
-      do j = 1, size(betas)
-         if (j > 1) then
-            buffer(pos + 1:pos + 1) = new_line("a")
-            pos = pos + 1
-         end if
-         if (with_physical) physical = in_physical_domain(alpha, betas(j))
-         if (scene%physical) a = point_amplitude(scene, j, alpha, betas(j))
-         if (failed(j)) then
-            call chart_line(ids, failed_values(alpha, betas(j), physical, a), buffer(pos + 1:pos + chart_line_length), &
-                            alpha_text, beta_texts(j), length)
-         else
-            call verdict_line(ids, betas(j), stable(j), stable_paper(j), marginal(j), physical, statuses(j), a, &
-                              buffer(pos + 1:pos + chart_line_length), length, alpha_text, beta_texts(j))
-         end if
-         pos = pos + length
-      end do
+      call verdict_lines(ids, alpha, betas, traces, scene%epsilon, scene%method%tolerance, statuses, physical, &
+                         amplitudes, format_es(alpha, 17), buffer, pos, beta_texts)
       text = buffer(1:pos)
    end subroutine verdict_row_text
 

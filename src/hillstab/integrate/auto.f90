@@ -666,13 +666,25 @@ contains
       integer, intent(in) :: kind, n
       real(wp), intent(in) :: alpha
       type(mesh_t), intent(out) :: mesh
-      real(wp), parameter :: nodes(3) = [0.5_wp - gauss3_offset, 0.5_wp, 0.5_wp + gauss3_offset]
-      real(wp) :: kappa, sa, sb, t0, h, cs, sn, cr, sr, x, sin0, cos0, b, sb_k, cb_k
-      real(wp), allocatable :: half_sin(:, :), xs(:), ys(:), ts(:)
-      integer :: i, j
-      kappa = model_mesh_kappa(kind, alpha, auto_mesh_power)
+      ! the sines at the nodes (3 n) and the mesh points' X, Y and τ (n each): one allocation
+      ! (an allocation costs about as much as a mesh step)
+      real(wp), allocatable :: work(:)
       mesh%n_steps = n
-      allocate (mesh%h(n), mesh%w(3, n), half_sin(3, n), xs(n), ys(n), ts(n))
+      allocate (mesh%h(n), mesh%w(3, n), work(6*n))
+      call mesh_points(n, model_mesh_kappa(kind, alpha, auto_mesh_power), mesh%h, work(1:3*n), &
+                       work(3*n + 1:4*n), work(4*n + 1:5*n), work(5*n + 1:6*n))
+      call model_shapes_from_half_sines(kind, alpha, 3*n, work(1:3*n), mesh%w)
+   end subroutine build_mesh
+
+   !> The step lengths h and the sines sin(πτ/2) at the Gauss nodes (`half_sin`) of
+   !> `build_mesh`'s mesh for the map's κ; xs, ys, ts are work space.
+   pure subroutine mesh_points(n, kappa, h, half_sin, xs, ys, ts)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: kappa
+      real(wp), intent(out) :: h(n), half_sin(3, n), xs(n), ys(n), ts(n)
+      real(wp), parameter :: nodes(3) = [0.5_wp - gauss3_offset, 0.5_wp, 0.5_wp + gauss3_offset]
+      real(wp) :: sa, sb, t0, cs, sn, cr, sr, x, sin0, cos0, b, sb_k, cb_k
+      integer :: i, j
       ! the map tan(πτ/2) = √((1 − κ)/(1 + κ)) tan(πψ/2) as a point (X, Y) = (√(1+κ) cos, √(1−κ) sin)(πψ/2)
       ! turning by π/(2n) per step (exact cos/sin every 32 steps against drift); then
       ! sin(πτ/2) = Y/R, cos(πτ/2) = X/R at the mesh points and, at the Gauss nodes
@@ -704,10 +716,9 @@ contains
       t0 = 0.0_wp
       sin0 = 0.0_wp; cos0 = 1.0_wp
       do i = 1, n
-         h = ts(i) - t0
-         mesh%h(i) = h
+         h(i) = ts(i) - t0
          do j = 1, 3
-            b = 0.5_wp*pi*nodes(j)*h
+            b = 0.5_wp*pi*nodes(j)*h(i)
             call small_angle(b, sb_k, cb_k)
             half_sin(j, i) = sin0*cb_k + cos0*sb_k        ! sin(πτ/2) at the node
          end do
@@ -716,8 +727,7 @@ contains
          x = sqrt(xs(i)*xs(i) + ys(i)*ys(i))
          sin0 = ys(i)/x; cos0 = xs(i)/x
       end do
-      call model_shapes_from_half_sines(kind, alpha, 3*n, half_sin, mesh%w)
-   end subroutine build_mesh
+   end subroutine mesh_points
 
    !> sin b and cos b for 0 ≤ b ≤ π/4: below 0.3 the Taylor polynomials of degree 7 in b²
    !> (those of `cos_sinc_taylor`, to b^17 and b^16, its Horner loop written out here: the
