@@ -88,7 +88,7 @@ contains
 
    !> The CPUs the calling thread may run on, in increasing order (none when unknown).
    subroutine allowed_cpus(cpus)
-      integer, allocatable, intent(out) :: cpus(:)
+      integer, allocatable, intent(out) :: cpus(:)  !! CPU numbers (from 0), increasing
       integer(c_long) :: mask(cpu_set_words)
       integer :: cpu, n
       if (c_sched_getaffinity(0_c_int, set_bytes, mask) /= 0) then
