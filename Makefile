@@ -129,7 +129,7 @@ bench: setup
 	$(CC) -O2 bench/chart_gsl.c -o build/chart_gsl -lgsl -lgslcblas -lm
 	$(FPM) build $(RELEASE) >/dev/null
 	python3 scripts/bench_chart.py "$$($(FPM) run $(RELEASE) \
-	   --runner echo hillstab 2>/dev/null | tail -1)" build/chart_gsl
+	   --runner echo hillstab 2>/dev/null | tail -1)" build/chart_gsl --rounds 11
 	gnuplot plots/bench_chart_gsl.gp
 	$(FPM) run $(RELEASE) hillstab_bench
 	gnuplot plots/bench.gp
