@@ -11,6 +11,7 @@ set encoding utf8
 set terminal pngcairo size 900,620 font "Sans,10"
 set output out
 set logscale xy
+set yrange [0.004:10]
 set format x "10^{%L}"
 set xlabel "worst |S − S_{ref}|/max(1, |S_{ref}|) at 40 chart points"
 set ylabel "seconds, whole run"
