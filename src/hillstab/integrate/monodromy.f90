@@ -169,6 +169,21 @@ contains
       end do
    end subroutine settle_by_bounds
 
+   !> The indices of the points not settled, in order (what pack([(j, j = 1, n)], .not.
+   !> settled) gives, without its temporary array and library call: once or twice per row).
+   pure subroutine unsettled_points(settled, open)
+      logical, intent(in) :: settled(:)  !! which points are settled
+      integer, allocatable, intent(out) :: open(:)  !! the others' indices
+      integer :: j, k
+      allocate (open(count(.not. settled)))
+      k = 0
+      do j = 1, size(settled)
+         if (settled(j)) cycle
+         k = k + 1
+         open(k) = j
+      end do
+   end subroutine unsettled_points
+
    !> Whether the trace `tr`, with its error bound max(error_estimate, tolerance)·max(1, |S|),
    !> settles what `need` asks: for need_verdict the side of |S| = 2 cosh ε (and of |S| = 2
    !> too with `paper`, the criterion of the paper); for need_growth that |S| < 2, where
@@ -401,7 +416,7 @@ contains
          end if
          if (.not. all(settled)) then
             ! the points left, by index (no packed copies of the traces)
-            open = pack([(j, j=1, size(betas))], .not. settled)
+            call unsettled_points(settled, open)
             allocate (screened(size(open)))
             if (method%kind == method_auto) then
                if (present(plan)) then
@@ -442,7 +457,7 @@ contains
             if (present(stats)) stats = work
             return
          end if
-         open = pack([(j, j=1, size(betas))], .not. settled)
+         call unsettled_points(settled, open)
          allocate (rest(size(open)), rest_failed(size(open)), rest_inaccurate(size(open)))
          call monodromy_trace_batch(model, betas(open), method, rest, rest_failed, error, part, plan, rest_inaccurate)
          call add_work(work, part)
