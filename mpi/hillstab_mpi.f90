@@ -19,6 +19,7 @@ module hillstab_mpi_runner
    use mpi_f08
    use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
+   use hillstab_core_text, only: integer_text
    use hillstab_batch_scene, only: scene_t, output_path
    use hillstab_batch_scene_read, only: read_scene
    use hillstab_batch_tasks, only: run_scene
@@ -88,7 +89,7 @@ contains
       integer :: slot
       self%quiet = quiet
       ! the resume command of messages, as this job was started
-      if (allocated(self%options%command)) self%options%command = "mpirun -np "//rank_count_text(self%n_ranks)// &
+      if (allocated(self%options%command)) self%options%command = "mpirun -np "//integer_text(self%n_ranks)// &
          " "//self%options%command
       ! every rank reads the scene (and its points file); the worst outcome wins, so a
       ! file one rank cannot read stops all of them
@@ -134,15 +135,6 @@ contains
       if (allocated(error)) written_ok = error%code == err_points_failed
       call report_balance(self, busy, written_ok)
    end subroutine run_scene_everywhere
-
-   !> The decimal text of a rank count.
-   pure function rank_count_text(n) result(text)
-      integer, intent(in) :: n
-      character(len=:), allocatable :: text
-      character(len=12) :: buffer
-      write (buffer, '(i0)') n
-      text = trim(buffer)
-   end function rank_count_text
 
    !> Rank 0 sends the points per unit of the run (a resumed run's are its checkpoint's) to the
    !> other ranks, which plan their units alike.

@@ -56,7 +56,7 @@ cat > resume.nml <<'NML'
 &scene task='chart', method='formula', output='m_resume' /
 &chart n_alpha=6, n_beta=40 /
 NML
-# a checkpoint for the resumed run: the first run stops at a file-size limit of 10 kB (exit 2)
+# a checkpoint for the resumed run: the first run stops at a file-size limit of 20 KiB (exit 2; bash counts ulimit -f in 1024-byte blocks)
 set +e
 (ulimit -f 20; "$hillstab" --quiet --checkpoint-interval 0 resume.nml 2>/dev/null)
 code=$?

@@ -14,7 +14,7 @@ module test_batch
       batch_write, batch_commit, batch_discard, run_batch
    use hillstab_batch_cli, only: exit_status
    use hillstab_batch_task_points, only: points_task_t
-   use hillstab_batch_threads, only: place_threads, placement_by_openmp, allowed_cpus
+   use hillstab_batch_threads, only: place_threads, placement_by_openmp, allowed_cpus, bind_thread
    !$ use omp_lib, only: omp_get_max_threads, omp_get_thread_num
    use hillstab_testing
    use test_scene, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text
@@ -269,6 +269,7 @@ contains
       if (n < 2 .or. n > 256 .or. size(before) < n .or. placement_by_openmp()) then
          call allowed_cpus(mine)
          call check(ctx, size(mine) == size(before), "nothing bound: the CPUs as before")
+         write (*, '(4x,a)') "threads_bound: one thread, too few CPUs or OpenMP's placement set: nothing to bind"
          return
       end if
       own = -1
@@ -285,5 +286,12 @@ contains
          call check(ctx, any(before == own(t)), "a CPU the process could use")
          call check(ctx, count(own(0:n - 1) == own(t)) == 1, "a CPU of its own")
       end do
+      ! the threads freed again, so that the suites after this one (and the programs they
+      ! start, which inherit the mask) run as a fresh process would
+      !$omp parallel num_threads(n) default(shared) private(bound)
+      call bind_thread(before, bound)
+      !$omp end parallel
+      call allowed_cpus(mine)
+      call check(ctx, size(mine) == size(before), "the CPUs as before, afterwards")
    end subroutine threads_bound
 end module test_batch

@@ -11,6 +11,7 @@
 module test_checkpoint
    use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, err_io, err_input
+   use hillstab_core_text, only: integer_text
    use hillstab_batch_tasks, only: run_scene_file
    use hillstab_batch_checkpoint, only: checkpoint_options_t, checkpoint_directory, scene_difference
    use hillstab_batch_cli, only: exit_status
@@ -212,7 +213,7 @@ contains
       type(fixture_t), intent(in) :: f
       integer, intent(in) :: units
       logical, intent(in) :: garbage
-      character(len=:), allocatable :: directory, err, label, expected
+      character(len=:), allocatable :: directory, err, label, expected, message
       character(len=8) :: text
       integer(int64) :: bytes
       integer :: status, done
@@ -221,9 +222,9 @@ contains
       directory = checkpoint_directory(f%output)
       err = scratch_prefix("ck.err")
       status = stop_program("--quiet --checkpoint-interval 0 '"//f%scene//"'", directory//"/state", units, "KILL", err)
-      call check(ctx, status == 137, label//": killed while it ran (status "//status_text(status)//")")
+      call check(ctx, status == 137, label//": killed while it ran (status "//integer_text(status)//")")
       call state_of(directory, done, bytes)
-      call check(ctx, done >= units .and. done < f%n_units, label//": the checkpoint records "//status_text(done)// &
+      call check(ctx, done >= units .and. done < f%n_units, label//": the checkpoint records "//integer_text(done)// &
                  " units")
       call check(ctx, bytes > 0 .and. bytes <= size_of(directory//"/data"), label// &
                  ": the state claims no more bytes than the data hold")
@@ -240,28 +241,17 @@ contains
          call check(ctx, status == 0 .and. .not. same_file(expected, f%reference), label//": marked")
       end if
       status = run_program("--quiet --resume '"//f%scene//"'", err, 2)
-      call check(ctx, status == 0, label//": the resumed run succeeds (status "//status_text(status)//")")
+      call check(ctx, status == 0, label//": the resumed run succeeds (status "//integer_text(status)//")")
       call check(ctx, file_says(err, "resuming"), label//": it says it resumes")
-      if (garbage) then
-         call check(ctx, same_file(f%output, expected), label//": the file of an uninterrupted run, with the mark "// &
-                    "(the units done are not computed again)")
-      else
-         call check(ctx, same_file(f%output, expected), label//": the file of an uninterrupted run")
-      end if
+      message = label//": the file of an uninterrupted run"
+      if (garbage) message = message//", with the mark (the units done are not computed again)"
+      call check(ctx, same_file(f%output, expected), message)
       if (garbage) call delete_file(expected)
       call check(ctx, .not. directory_exists(directory), label//": the checkpoint is removed")
       call check(ctx, .not. any_temp_file(f%output), label//": no temporary file")
       call delete_file(f%output)
       call delete_file(err)
    end subroutine kill_and_resume
-
-   function status_text(status) result(text)
-      integer, intent(in) :: status
-      character(len=:), allocatable :: text
-      character(len=12) :: buffer
-      write (buffer, '(i0)') status
-      text = trim(buffer)
-   end function status_text
 
    !> SIGKILL after 1, 12 and 20 of 24 rows (the middle one with a partial row after the
    !> recorded bytes, which the resumed run cuts, and a mark in a recorded row, which it keeps).
@@ -300,7 +290,7 @@ contains
       directory = checkpoint_directory(chart%output)
       err = scratch_prefix("ck_term.err")
       status = stop_program("--quiet --checkpoint-interval 0 '"//chart%scene//"'", directory//"/state", 5, "TERM", err)
-      call check(ctx, status == 143, "exit 143 (status "//status_text(status)//")")
+      call check(ctx, status == 143, "exit 143 (status "//integer_text(status)//")")
       call check(ctx, file_says(err, "stopped by signal 15"), "says which signal")
       call check(ctx, file_says(err, "hillstab --resume "//chart%scene), "says how to resume")
       call check(ctx, file_says(err, "the checkpoint '"//directory//"' keeps"), "names the checkpoint")
@@ -333,7 +323,7 @@ contains
          padded("&scene task='chart', method='magnus6', tolerance=1e-12, output='"//scratch_prefix("ck_chart")//"' /"), &
          padded("&chart alpha_min=0, alpha_max=9.8, n_alpha=24, beta_min=-2, beta_max=12, n_beta=301 /")])
       status = run_program("--quiet --resume '"//other//"'", err, 1)
-      call check(ctx, status == 2, "another grid: exit 2 (status "//status_text(status)//")")
+      call check(ctx, status == 2, "another grid: exit 2 (status "//integer_text(status)//")")
       call check(ctx, file_says(err, other//": &chart: n_beta: 301 in this scene, 300 in the checkpoint"), &
                  "names group, variable and values")
       call write_file(other, [ &
@@ -429,7 +419,7 @@ contains
             status = shell("mkdir -m 0777 '"//directory//"'; echo precious > '"//directory//"/state'")
          end select
          call run_scene_file(scene, .true., error, options=checkpoint_options_t(resume=resume, interval=0.0_wp))
-         call check(ctx, allocated(error), "refused, round "//status_text(round))
+         call check(ctx, allocated(error), "refused, round "//integer_text(round))
          if (allocated(error)) then
             call check(ctx, exit_status(error) == 2, "exit 2: "//error%message)
             call check(ctx, contains_text(error%message, scene//": &scene: output: cannot keep the checkpoint '"// &
@@ -511,7 +501,7 @@ contains
       end if
       call state_of(directory, done, bytes)
       call check(ctx, done > 0 .and. bytes <= 30000_int64, "the checkpoint holds the units written: "// &
-                 status_text(done))
+                 integer_text(done))
       call check(ctx, .not. file_exists(output) .and. .not. any_temp_file(output), "no output, no temporary file")
       call run_scene_file(scene, .true., error, options=checkpoint_options_t(resume=.true.))
       call check(ctx, .not. allocated(error), "resumed without the limit")

@@ -146,8 +146,8 @@ contains
                  "0.99999999999999999 (= 1.0 in binary)")
       ! the double nearest 1e23 is 9.99999999999999991611392e22: its 16 digits do not carry
       call check(ctx, format_es(9.9999999999999995e22_wp, 16) == " 9.999999999999999e+022", "9.9999999999999995e22")
-      ! the double nearest 999999.99999999999 is 999999.99999999998836…: they do
-      call check(ctx, format_es(999999.99999999999_wp, 16) == " 1.000000000000000e+006", "999999.99999999999")
+      ! the double nearest 1e24 is 999999999999999983222784: its 16 digits do carry
+      call check(ctx, format_es(1.0e24_wp, 16) == " 1.000000000000000e+024", "1e24 (9.99999999999999983e23)")
       call check(ctx, format_es(9.96_wp, 2) == " 1.0e+001", "9.96 with 2 digits")
       call check(ctx, format_es(-9.96_wp, 2) == "-1.0e+001", "-9.96 with 2 digits")
       call check(ctx, format_es(0.0996_wp, 2) == " 1.0e-001", "0.0996 with 2 digits")

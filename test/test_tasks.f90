@@ -7,6 +7,7 @@
 module test_tasks
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t, err_input, err_io, err_points_failed
+   use hillstab_core_text, only: integer_text
    use hillstab_batch_tasks, only: run_scene_file
    use hillstab_batch_cli, only: printable
    use hillstab_testing
@@ -735,8 +736,8 @@ contains
       if (allocated(error)) return
       call check(ctx, binary_path == out//"_bin_chart.bin", "binary file name")
       call read_binary(binary_path, 11, records, header_bytes, text)
-      call check(ctx, index(text, "skip="//integer_text_of(header_bytes)//" ") > 0, &
-                 "the header states its own length: "//integer_text_of(header_bytes))
+      call check(ctx, index(text, "skip="//integer_text(header_bytes)//" ") > 0, &
+                 "the header states its own length: "//integer_text(header_bytes))
       call check(ctx, size(records, 2) == 12, "12 records of 11")
       if (size(records, 2) /= 12) return
       ! the text holds 17 significant digits of alpha, beta, S (which read back to the same
@@ -786,13 +787,6 @@ contains
          read (unit, pos=header_bytes + 1) records
          close (unit)
       end subroutine read_binary
-      pure function integer_text_of(n) result(t)
-         integer, intent(in) :: n
-         character(len=:), allocatable :: t
-         character(len=16) :: b
-         write (b, '(i0)') n
-         t = trim(b)
-      end function integer_text_of
    end subroutine chosen_columns_and_binary
 
    !> The physical-domain note only where it means something: not for the Mathieu model,
@@ -1084,6 +1078,7 @@ contains
       full = read_lines(full_path)
       growth = read_lines(growth_path)
       call data_rows(full, 5, full_rows, n_blank, numeric)
+      call check(ctx, numeric, "full chart: numeric rows")
       call data_rows(growth, 4, growth_rows, n_blank, numeric)
       call check(ctx, numeric .and. size(growth_rows, 2) == size(full_rows, 2), "as many rows")
       if (size(growth_rows, 2) /= size(full_rows, 2)) return

@@ -28,7 +28,7 @@ module hillstab_batch_threads
    !$ use omp_lib, only: omp_get_max_threads, omp_get_thread_num
    implicit none
    private
-   public :: place_threads, placement_by_openmp, allowed_cpus
+   public :: place_threads, placement_by_openmp, allowed_cpus, bind_thread
 
    !> Bytes of a cpu_set_t.
    integer(c_size_t), parameter :: set_bytes = int(8*cpu_set_words, c_size_t)
@@ -69,22 +69,32 @@ contains
    subroutine bind_team(cpus, done)
       integer, intent(in) :: cpus(:)  !! a CPU for each thread of later teams
       logical, intent(out) :: done    !! every thread bound
-      integer(c_long) :: mask(cpu_set_words)
       integer :: t, failures
-      integer(c_int) :: status
+      logical :: ok
       failures = 0
-      !$omp parallel num_threads(size(cpus) + 1) default(shared) private(t, mask, status) reduction(+:failures)
+      !$omp parallel num_threads(size(cpus) + 1) default(shared) private(t, ok) reduction(+:failures)
       t = 0
       !$ t = omp_get_thread_num()
       if (t < size(cpus)) then
-         mask = 0
-         mask(cpus(t + 1)/64 + 1) = ibset(0_c_long, mod(cpus(t + 1), 64))
-         status = c_sched_setaffinity(0_c_int, set_bytes, mask)
-         if (status /= 0) failures = failures + 1
+         call bind_thread(cpus(t + 1:t + 1), ok)
+         if (.not. ok) failures = failures + 1
       end if
       !$omp end parallel
       done = failures == 0
    end subroutine bind_team
+
+   !> Let the calling thread run on the CPUs `cpus` (numbers from 0) only.
+   subroutine bind_thread(cpus, ok)
+      integer, intent(in) :: cpus(:)  !! the CPUs
+      logical, intent(out) :: ok      !! sched_setaffinity succeeded
+      integer(c_long) :: mask(cpu_set_words)
+      integer :: k
+      mask = 0
+      do k = 1, size(cpus)
+         mask(cpus(k)/64 + 1) = ibset(mask(cpus(k)/64 + 1), mod(cpus(k), 64))
+      end do
+      ok = c_sched_setaffinity(0_c_int, set_bytes, mask) == 0
+   end subroutine bind_thread
 
    !> The CPUs the calling thread may run on, in increasing order (none when unknown).
    subroutine allowed_cpus(cpus)
