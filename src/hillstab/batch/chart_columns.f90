@@ -424,7 +424,8 @@ contains
                call put_value(chart_styles(col_a), a, buffer, p)
                pos = p
             case default
-               ! a column of S or the multipliers: not in a verdict file (its need is higher)
+               ! no other column reaches a chart's verdict file (omega is offered to points
+               ! files only); written as 0, as `verdict_values` has it
                p = pos
                call put_value(chart_styles(ids(k)), 0.0_wp, buffer, p)
                pos = p

@@ -48,8 +48,8 @@ module hillstab_batch_checkpoint
    private
    public :: checkpoint_options_t, checkpoint_state_t, checkpoint_directory, checkpoint_data, find_checkpoint, &
       make_checkpoint, save_checkpoint_state, remove_checkpoint, remove_stale_temporary, scene_difference, &
-      checkpoint_note, default_interval, scene_text, scene_lines
-   public :: checkpoint_none, checkpoint_usable, checkpoint_incomplete
+      checkpoint_note, scene_text, scene_lines
+   public :: checkpoint_usable, checkpoint_incomplete
 
    !> Seconds between two updates of a checkpoint by default.
    real(wp), parameter :: default_interval = 3.0_wp

@@ -172,7 +172,7 @@ contains
       case default
          high = mantissa
          n_after = digits - 1
-         if (n_after > 8) then
+         if (n_after >= 8) then
             rest = high/100000000_int64
             call put_eight(buffer, p, int(high - 100000000_int64*rest, int32))
             high = rest
@@ -217,19 +217,15 @@ contains
       p = p - 8
    end subroutine put_eight
 
-   !> The `n` (≤ 8) decimal digits of `value` (with leading zeros) into buffer(p − n + 1 : p),
+   !> The `n` (≤ 7) decimal digits of `value` (with leading zeros) into buffer(p − n + 1 : p),
    !> two at a time from the right; p moves left past them.
    pure subroutine put_pairs(buffer, p, value, n)
       character(len=*), intent(inout) :: buffer  !! the line being built
       integer, intent(inout) :: p                !! the last position to fill; moved left
       integer(int32), intent(in) :: value        !! 0 ≤ value < 10^n
-      integer, intent(in) :: n                   !! digits, 0 … 8
+      integer, intent(in) :: n                   !! digits, 0 … 7
       integer(int32) :: rest
       integer :: i, k
-      if (n == 8) then
-         call put_eight(buffer, p, value)
-         return
-      end if
       rest = value
       do i = 1, n/2
          k = 2*int(mod(rest, 100_int32))

@@ -32,7 +32,7 @@ module hillstab_integrate_auto
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_models, only: hill_model_t, check_model, check_model_batch, model_alpha_valid, model_split, &
+   use hillstab_hill_models, only: hill_model_t, check_model_batch, model_alpha_valid, model_split, &
       model_shape, &
       model_shapes_from_half_sines, shape_root_mean, model_mesh_kappa, model_auto_difficulty, model_auto_amplitude
    use hillstab_hill_coefficient, only: coefficient_phase
@@ -262,7 +262,6 @@ contains
       !> point j is round-off limited: its trace is the best value, not a failure
       logical, intent(out), optional :: roundoff(:)
       type(mesh_cache_t) :: cache
-      type(error_t), allocatable :: point_error
       real(wp) :: base, estimate, q
       real(wp), allocatable :: c0s(:), c1s(:), phases(:)
       integer, allocatable :: ns(:), n_coarse(:)
@@ -436,7 +435,6 @@ contains
       type(error_t), allocatable, intent(out) :: error  !! a parameter out of range (nothing screened)
       type(auto_plan_t), intent(in), optional :: plan  !! meshes prepared for this (kind, α)
       type(mesh_cache_t) :: cache
-      type(error_t), allocatable :: point_error
       real(wp) :: base, q
       real(wp), dimension(size(betas)) :: c0s, c1s, phases, floors
       integer, dimension(size(betas)) :: ns
@@ -512,7 +510,7 @@ contains
 
    !> S on meshes of n(j) steps for the selected points (all without `selected`), grouped by
    !> n and propagated in lanes; the meshes come from (or go into) `cache`.
-   subroutine lanes_pass(cache, kind, alpha, n, c0s, c1s, phases, result, floors, stats, selected, mode)
+   subroutine lanes_pass(cache, kind, alpha, n, c0s, c1s, phases, result, floors, stats, selected)
       type(mesh_cache_t), intent(inout) :: cache  !! meshes of this (kind, α)
       integer, intent(in) :: kind            !! model kind
       real(wp), intent(in) :: alpha          !! α of the batch
@@ -523,15 +521,12 @@ contains
       real(wp), intent(inout) :: floors(:)   !! their round-off levels
       type(work_stats_t), intent(inout) :: stats  !! steps counted
       logical, intent(in), optional :: selected(:)  !! the points to compute
-      integer, intent(in), optional :: mode  !! what `lane_traces` computes (default lanes_plain)
       logical :: todo(size(n))
       integer :: group(size(n))
       real(wp) :: lane_c0(size(n)), lane_c1(size(n)), lane_phases(size(n))
-      integer :: i, m, how
+      integer :: i, m
       todo = .true.
       if (present(selected)) todo = selected
-      how = lanes_plain
-      if (present(mode)) how = mode
       do i = 1, size(n)
          if (.not. todo(i)) cycle
          call next_group(n, i, todo, group, m)
@@ -539,7 +534,7 @@ contains
          lane_c1(1:m) = c1s(group(1:m))
          lane_phases(1:m) = phases(group(1:m))
          call group_pass(cache, kind, alpha, n(i), group(1:m), lane_c0(1:m), lane_c1(1:m), lane_phases(1:m), &
-                         result, floors, stats, how)
+                         result, floors, stats, lanes_plain)
       end do
    end subroutine lanes_pass
 
@@ -793,9 +788,7 @@ contains
       ! squares times 2^-512 stay in range)
       real(wp), dimension(lane_block) :: su2, sv2, su2w, sv2w, su2a, sv2a
       real(wp), parameter :: square_unit = 2.0_wp**(-256)
-      type(sensitivity_t) :: sensitivity
-      type(scaled_matrix_t) :: monodromy
-      real(wp) :: z_max, uu, vv, sw, t, level
+      real(wp) :: z_max, uu, vv, sw, level
       real(wp) :: h, w1, w2, w3, q1, q2, q3, d2, d3, x3, y1, y2, y3, ls, e11, e12, e21, e22, a, b, big
       real(wp) :: big_max, big_min, root_n, size_s, m12, m21, d0, d1, size0, size1
       real(wp), dimension(lane_block) :: s_lane, log_abs

@@ -27,7 +27,7 @@ module hillstab_integrate_refine
    public :: refinement_t, start_refinement, refine, trace_distance, roundoff_level, propagator_condition, first_step_factor, &
       next_local_tolerance
    public :: refine_more, refine_met, refine_roundoff
-   public :: sensitivity_t, accumulate_sensitivity, coefficient_level, coefficient_sum
+   public :: sensitivity_t, accumulate_sensitivity, coefficient_level
 
    !> Safety factor of `roundoff_level` (calibrated with method auto on β = 0,
    !> α = 9.8 … 9.86, where S = 2 exactly).
