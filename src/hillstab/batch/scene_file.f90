@@ -257,7 +257,8 @@ contains
    end function first_word
 
    !> After a group read that succeeded: refuse an item without a value (`beta_max = -,`
-   !> reads as "keep the default") and a value longer than the strings read (4096 characters).
+   !> reads as "keep the default"). A value longer than the strings read (4096 characters)
+   !> was refused before the read (`long_item`).
    subroutine check_item_values(unit, path, group, error)
       integer, intent(in) :: unit
       character(len=*), intent(in) :: path, group
@@ -268,18 +269,10 @@ contains
       call group_items(unit, group, items)
       do k = 1, size(items)
          eq = index(items(k)%text, "=")
-         value = trim(adjustl(items(k)%text(eq + 1:)))
-         do while (len(value) > 0)
-            if (value(len(value):) /= ",") exit
-            value = trim(value(:len(value) - 1))
-         end do
+         value = item_value(items(k)%text(eq + 1:))
          if (value == "" .or. value == "+" .or. value == "-") then
             call fail(error, path, group, items(k)%name, "no value after '=' (got '"// &
                trim(adjustl(items(k)%text(eq + 1:)))//"')")
-            return
-         end if
-         if (len(value) > text_len + 2) then
-            call fail(error, path, group, items(k)%name, "value longer than "//integer_text(text_len)//" characters")
             return
          end if
       end do
@@ -288,7 +281,7 @@ contains
    !> The name of the first item of `&group` whose value, as written, is longer than the
    !> strings a group is read into (`text_len` between quotes); "" when there is none. The
    !> readers ask before the namelist read, which would cut such a value with a runtime
-   !> warning of its own on stderr; `check_item_values` refuses it with the same message.
+   !> warning of its own on stderr, and refuse it.
    function long_item(unit, group) result(name)
       integer, intent(in) :: unit  !! the scratch copy of the scene file
       character(len=*), intent(in) :: group  !! the namelist group
@@ -299,26 +292,25 @@ contains
       call group_items(unit, group, items)
       do k = 1, size(items)
          eq = index(items(k)%text, "=")
-         if (len_trim(adjustl(items(k)%text(eq + 1:))) > text_len + 3) then
-            ! (a closing comma may follow the quotes: check_item_values strips it)
-            if (value_length(items(k)%text(eq + 1:)) > text_len + 2) then
-               name = items(k)%name
-               return
-            end if
+         ! (the text as written is a bound on the value: closing commas may follow it)
+         if (len_trim(adjustl(items(k)%text(eq + 1:))) <= text_len + 2) cycle
+         if (len(item_value(items(k)%text(eq + 1:))) > text_len + 2) then
+            name = items(k)%name
+            return
          end if
       end do
-   contains
-      pure integer function value_length(text) result(n)
-         character(len=*), intent(in) :: text
-         character(len=:), allocatable :: value
-         value = trim(adjustl(text))
-         do while (len(value) > 0)
-            if (value(len(value):) /= ",") exit
-            value = trim(value(:len(value) - 1))
-         end do
-         n = len(value)
-      end function value_length
    end function long_item
+
+   !> An item's value as written after its '=': blanks and closing commas removed.
+   pure function item_value(text) result(value)
+      character(len=*), intent(in) :: text  !! what follows the '='
+      character(len=:), allocatable :: value
+      value = trim(adjustl(text))
+      do while (len(value) > 0)
+         if (value(len(value):) /= ",") exit
+         value = trim(value(:len(value) - 1))
+      end do
+   end function item_value
 
    !> Find the first `&group` of the file (at the start of a line or after a blank, so
    !> `# &group` in output headers counts; `!` comments removed) and its body up to the
