@@ -23,7 +23,8 @@ module hillstab_mpi_runner
    use hillstab_batch_scene, only: scene_t, output_path
    use hillstab_batch_scene_read, only: read_scene
    use hillstab_batch_tasks, only: run_scene
-   use hillstab_batch_units, only: batch_t, batch_result_t, batch_distributable, batch_plan, batch_compute, &
+   use hillstab_batch_units, only: batch_t, batch_result_t, batch_distributable, batch_plan, batch_set_unit_size, &
+      batch_compute, &
       batch_open, batch_write, batch_commit, batch_discard, scene_fingerprint
    use hillstab_batch_cli, only: scene_runner_t, exit_status
    use hillstab_batch_limits, only: check_memory_room
@@ -114,7 +115,7 @@ contains
          call batch_open(batch, quiet, error, self%options)
          call agree(self, error)
          if (allocated(error)) return
-         call share_unit_size(self, batch, scene)
+         call share_unit_size(self, batch)
          call share_temporary_name(self, batch%file%temp_path, slot)
          call manage(self, batch, error, busy)
          if (allocated(error)) then
@@ -125,7 +126,7 @@ contains
       else
          call agree(self, error)
          if (allocated(error)) return
-         call share_unit_size(self, batch, scene)
+         call share_unit_size(self, batch)
          call share_temporary_name(self, "", slot)
          call work(batch, busy)
          call forget_temp_file(slot)
@@ -138,14 +139,13 @@ contains
 
    !> Rank 0 sends the points per unit of the run (a resumed run's are its checkpoint's) to the
    !> other ranks, which plan their units alike.
-   subroutine share_unit_size(self, batch, scene)
+   subroutine share_unit_size(self, batch)
       class(mpi_runner_t), intent(in) :: self
       type(batch_t), intent(inout) :: batch  !! rank 0: opened; elsewhere planned
-      type(scene_t), intent(in) :: scene
       integer :: unit_size
       unit_size = batch%unit_size
       call MPI_Bcast(unit_size, 1, MPI_INTEGER, manager, MPI_COMM_WORLD)
-      if (self%rank /= manager .and. unit_size /= batch%unit_size) call batch_plan(scene, self%n_ranks, batch, unit_size)
+      if (self%rank /= manager) call batch_set_unit_size(batch, unit_size)
    end subroutine share_unit_size
 
    !> Rank 0 sends the name of its temporary output to the other ranks, which watch it as

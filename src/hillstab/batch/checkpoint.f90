@@ -48,7 +48,7 @@ module hillstab_batch_checkpoint
    private
    public :: checkpoint_options_t, checkpoint_state_t, checkpoint_directory, checkpoint_data, find_checkpoint, &
       make_checkpoint, save_checkpoint_state, remove_checkpoint, remove_stale_temporary, scene_difference, &
-      checkpoint_note, scene_text, scene_lines
+      checkpoint_note, scene_lines, fnv1a_step
    public :: checkpoint_usable, checkpoint_incomplete
 
    !> Seconds between two updates of a checkpoint by default.
@@ -129,13 +129,20 @@ contains
       integer :: k
       hash = 2166136261_int64
       do k = 1, len(text)
-         hash = mod(ieor(hash, int(iachar(text(k:k)), int64))*16777619_int64, 4294967296_int64)
+         hash = fnv1a_step(hash, int(iachar(text(k:k)), int64))
       end do
       do k = 8, 1, -1
          hex(k:k) = digits(int(mod(hash, 16_int64)) + 1:int(mod(hash, 16_int64)) + 1)
          hash = hash/16
       end do
    end function hash_text
+
+   !> One step of the 32-bit FNV-1a hash: `value` mixed into `hash`.
+   elemental integer(int64) function fnv1a_step(hash, value) result(next)
+      integer(int64), intent(in) :: hash   !! the hash so far, in [0, 2^32)
+      integer(int64), intent(in) :: value  !! the next byte or word, in [0, 2^32)
+      next = mod(ieor(hash, value)*16777619_int64, 4294967296_int64)
+   end function fnv1a_step
 
    !> What is at the checkpoint name `directory`: nothing, a usable checkpoint (`state`
    !> read), or an incomplete one (`reason` says what it lacks). `error` (err_io) when
@@ -301,17 +308,6 @@ contains
       state%scene = collected
       ok = .true.
    end function read_state
-
-   !> Namelist lines as one text, each trimmed and ended by a new line (`checkpoint_state_t%scene`).
-   pure function scene_text(lines) result(text)
-      character(len=*), intent(in) :: lines(:)  !! the lines
-      character(len=:), allocatable :: text
-      integer :: k
-      text = ""
-      do k = 1, size(lines)
-         text = text//trim(lines(k))//new_line("a")
-      end do
-   end function scene_text
 
    !> The lines of a text whose every line ends with a new line, as an array.
    pure function scene_lines(text) result(lines)

@@ -51,11 +51,12 @@ module hillstab_batch_units
    use hillstab_core_text, only: integer_text
    use hillstab_batch_scene, only: scene_t, task_t, open_scene_output, scene_namelist, output_path
    use hillstab_batch_output, only: output_file_t, write_text, commit_output, discard_output, sync_output, lock_output, &
-      resume_output, temporary_prefix
+      resume_output, temporary_prefix, joined_lines
    use hillstab_batch_progress, only: progress_t, progress_begin, progress_update, progress_end
    use hillstab_batch_checkpoint, only: checkpoint_options_t, checkpoint_state_t, checkpoint_directory, checkpoint_data, &
       find_checkpoint, make_checkpoint, save_checkpoint_state, remove_checkpoint, remove_stale_temporary, &
-      scene_difference, checkpoint_note, checkpoint_usable, checkpoint_incomplete, scene_text, scene_lines
+      scene_difference, checkpoint_note, checkpoint_usable, checkpoint_incomplete, scene_lines, &
+      fnv1a_step
    use hillstab_batch_signals, only: set_interrupt_note, clear_interrupt_note
    use hillstab_ffi_libc, only: c_nanosleep, timespec_t
    use, intrinsic :: iso_c_binding, only: c_int, c_long
@@ -65,8 +66,8 @@ module hillstab_batch_units
    !> Kind of the writer's lock of `run_batch`: OpenMP's lock kind (4 in gfortran; checked
    !> at compile time by the calls taking it); unused without OpenMP.
    integer, parameter :: lock_kind = int32
-   public :: batch_t, batch_result_t, batch_distributable, batch_plan, batch_unit_range, batch_compute, &
-      batch_open, batch_write, batch_commit, batch_discard, run_batch, scene_fingerprint, max_threads
+   public :: batch_t, batch_result_t, batch_distributable, batch_plan, batch_set_unit_size, batch_unit_range, &
+      batch_compute, batch_open, batch_write, batch_commit, batch_discard, run_batch, scene_fingerprint, max_threads
 
    !> A scene's work cut into units, and the state of its output file.
    type :: batch_t
@@ -110,24 +111,29 @@ contains
    !> Cut the work of `scene` into units for `n_workers` computing processes, as its task
    !> says (a chart by rows; a points list or a Lyapunov map in runs of consecutive points,
    !> small enough to balance points of very different cost).
-   subroutine batch_plan(scene, n_workers, batch, unit_size)
+   subroutine batch_plan(scene, n_workers, batch)
       type(scene_t), intent(in) :: scene  !! a distributable scene
       integer, intent(in) :: n_workers    !! processes that will compute units (≥ 1)
       type(batch_t), intent(out) :: batch  !! the units and the output file state
-      !> points per unit instead of the task's choice (that of a resumed checkpoint); only
-      !> a chart's must be its rows' n_beta, the others' files do not depend on the cut
-      integer, intent(in), optional :: unit_size
       class(task_t), allocatable :: task
       batch%scene = scene
       batch%n_points = scene%task%point_count()
-      batch%unit_size = scene%task%unit_size(n_workers)
-      if (present(unit_size)) batch%unit_size = unit_size
-      batch%n_units = int((batch%n_points + batch%unit_size - 1)/batch%unit_size)
+      call batch_set_unit_size(batch, scene%task%unit_size(n_workers))
       ! what every unit shares, made once (the task is prepared apart from the scene holding it)
       allocate (task, source=scene%task)
       call task%prepare_units(scene)
       call move_alloc(task, batch%scene%task)
    end subroutine batch_plan
+
+   !> Cut a planned batch's points into units of `unit_size` points instead (a resumed
+   !> checkpoint's cut; only a chart's must be its rows' n_beta, the other files do not
+   !> depend on the cut).
+   pure subroutine batch_set_unit_size(batch, unit_size)
+      type(batch_t), intent(inout) :: batch  !! a planned batch
+      integer, intent(in) :: unit_size  !! points per unit (≥ 1)
+      batch%unit_size = unit_size
+      batch%n_units = int((batch%n_points + batch%unit_size - 1)/batch%unit_size)
+   end subroutine batch_set_unit_size
 
    !> Two 32-bit FNV-1a hashes (different offset bases) of what a run computes: the
    !> effective scene's namelist lines and, for a distributable scene, every point's
@@ -137,7 +143,6 @@ contains
    function scene_fingerprint(scene) result(hash)
       type(scene_t), intent(in) :: scene  !! a scene as read
       integer(int64) :: hash(2)
-      integer(int64), parameter :: prime = 16777619_int64, modulus = 4294967296_int64
       character(len=:), allocatable :: lines(:)
       integer(int32) :: words(4)
       real(wp) :: point(2)
@@ -163,7 +168,7 @@ contains
    contains
       pure subroutine mix(value)
          integer(int64), intent(in) :: value  !! in [0, 2^32)
-         hash = mod(ieor(hash, value)*prime, modulus)
+         hash = fnv1a_step(hash, value)
       end subroutine mix
    end function scene_fingerprint
 
@@ -291,7 +296,7 @@ contains
       batch%state%n_points = batch%n_points
       batch%state%unit_size = batch%unit_size
       batch%state%n_units = batch%n_units
-      batch%state%scene = scene_text(scene_namelist(batch%scene))
+      batch%state%scene = joined_lines(scene_namelist(batch%scene), .false.)//new_line("a")
    end subroutine describe_run
 
    !> The fingerprint of the run's scene and points in its state, made once.
@@ -356,8 +361,7 @@ contains
          return
       end if
       ! the units of the checkpoint (the file does not depend on the cut, a chart's is its rows)
-      batch%unit_size = saved%unit_size
-      batch%n_units = int((batch%n_points + batch%unit_size - 1)/batch%unit_size)
+      call batch_set_unit_size(batch, saved%unit_size)
       if (batch%n_units /= saved%n_units) then
          call set_error(error, err_input, source//": the checkpoint's units do not tile the points"//refusal)
          return
