@@ -51,7 +51,8 @@ contains
          new_unittest("fixed_n_order", fixed_n_order), &
          new_unittest("nan_inputs_no_trap", nan_inputs_no_trap), &
          new_unittest("roundoff_best_value", roundoff_best_value), &
-         new_unittest("screen_bound_grids", screen_bound_grids)])
+         new_unittest("screen_bound_grids", screen_bound_grids), &
+         new_unittest("screen_huge_traces", screen_huge_traces)])
    end function collect_auto
 
    !> Error of S relative to max(1, |S_ref|); through ln|S| when either value overflowed
@@ -635,4 +636,26 @@ contains
          print '(4x,a,a,es9.2,a,i0,a,i0)', name, ": largest error/bound ", worst, ", settled ", n_settled, " of ", n*n
       end subroutine grid
    end subroutine screen_bound_grids
+   !> Deeply unstable points (β ≪ 0, |S| between e^300 and 1e300, compared by their
+   !> logarithms) get a screen bound below 1, within which auto's S lies: their coarser
+   !> meshes' ln|S| is set (it was not, and the bound was huge, sending them to the full pass).
+   subroutine screen_huge_traces(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), parameter :: betas(3) = [-3.0e4_wp, -6.0e4_wp, -1.0e5_wp]
+      type(trace_t) :: screened(size(betas)), tr
+      type(work_stats_t) :: stats
+      type(error_t), allocatable :: error
+      integer :: j
+      call trace_auto_screen(model_elastic, 1.0_wp, 0.0_wp, betas, screened, stats, error)
+      call check(ctx, .not. allocated(error), "screened")
+      if (allocated(error)) return
+      do j = 1, size(betas)
+         call check(ctx, screened(j)%log_abs > 300.0_wp .and. .not. screened(j)%overflow, "|S| beyond e^300")
+         call check(ctx, screened(j)%error_estimate < 1.0_wp, "a bound below 1")
+         call trace_auto(hill_model_t(model_elastic, 1.0_wp, betas(j), 0.0_wp), 1.0e-10_wp, tr, stats, error)
+         if (allocated(error)) deallocate (error)
+         call check(ctx, trace_distance(tr, screened(j)) <= screened(j)%error_estimate, &
+                    "auto's S within the bound")
+      end do
+   end subroutine screen_huge_traces
 end module test_auto

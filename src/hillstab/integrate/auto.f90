@@ -71,7 +71,7 @@ module hillstab_integrate_auto
    !> What `lane_traces` computes: S and its round-off level (`roundoff_level` and
    !> `coefficient_level`, their exponentials written out as plain products where the
    !> propagator was never rescaled, the usual case); or S alone (ln|S| left unset below
-   !> |S| = 1e300); or S and its round-off level with ln|S| from the vectorised logarithm
+   !> |S| = e^300 ≈ 1.9e130); or S and its round-off level with ln|S| from the vectorised logarithm
    !> (the screening pass: its logarithms one by one were 2 % of a verdict chart).
    integer, parameter :: lanes_plain = 1, lanes_values = 2, lanes_screen = 3
    !> Lanes propagated together by `lane_traces` (work arrays of this size on the stack).
@@ -759,7 +759,7 @@ contains
       type(trace_t), intent(out) :: traces(size(c0))
       real(wp), intent(out) :: floors(size(c0))  !! round-off level of each S, relative to max(1, |S|)
       !> lanes_plain (default: S and its round-off level), lanes_values (S only: floors 0,
-      !> and ln|S| left unset below |S| = 1e300 where the propagator was never rescaled) or
+      !> and ln|S| left unset below |S| = e^300 where the propagator was never rescaled) or
       !> lanes_screen (S and its round-off level, ln|S| from the vectorised logarithm)
       integer, intent(in), optional :: mode
       integer :: first, last, how
@@ -788,7 +788,7 @@ contains
       ! squares times 2^-512 stay in range)
       real(wp), dimension(lane_block) :: su2, sv2, su2w, sv2w, su2a, sv2a
       real(wp), parameter :: square_unit = 2.0_wp**(-256)
-      real(wp) :: z_max, uu, vv, sw, level
+      real(wp) :: z_max, uu, vv, sw, level, values_limit
       real(wp) :: h, w1, w2, w3, q1, q2, q3, d2, d3, x3, y1, y2, y3, ls, e11, e12, e21, e22, a, b, big
       real(wp) :: big_max, big_min, root_n, size_s, m12, m21, d0, d1, size0, size1
       real(wp), dimension(lane_block) :: s_lane, log_abs
@@ -933,10 +933,13 @@ contains
       ! round-off level (`roundoff_level` and `coefficient_level` with their exponentials
       ! written out: log_scale = 0, log_peak = ln max(1, peak), the integrals in units of
       ! 2^-512), all in loops over the lanes that the compiler vectorises; the other lanes
-      ! (`special`) one by one through the logarithms (`lane_result`)
+      ! (`special`) one by one through the logarithms (`lane_result`); with S alone
+      ! (lanes_values), also every lane beyond e^300 ≈ 1.9e130, where `trace_distance`
+      ! compares logarithms (left unset, they made such points' screen bound huge)
+      values_limit = merge(1.0e130_wp, 1.0e300_wp, how == lanes_values)
       do l = 1, nl
          s_lane(l) = 2.0_wp*(p11(l)*p22(l) + p21(l)*p12(l))
-         special(l) = rescaled(l) .or. log_scale(l) /= 0.0_wp .or. .not. abs(s_lane(l)) < 1.0e300_wp
+         special(l) = rescaled(l) .or. log_scale(l) /= 0.0_wp .or. .not. abs(s_lane(l)) < values_limit
       end do
       if (how == lanes_values) then
          do l = 1, nl
@@ -975,7 +978,7 @@ contains
                su2a(l), sv2a(l)), c0(l), mesh%n_steps, phases(l), traces(l), floors(l))
             if (how == lanes_values) floors(l) = 0.0_wp
          else if (how == lanes_values) then
-            ! ln|S| is left unset (below 1e300 nothing reads it)
+            ! ln|S| is left unset (below 1.9e130 nothing reads it)
             traces(l)%value = s_lane(l)
             traces(l)%overflow = .false.
          else if (how == lanes_screen) then
