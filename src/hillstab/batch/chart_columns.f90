@@ -36,7 +36,7 @@ module hillstab_batch_chart_columns
    public :: chart_header, common_header, evaluate_point, failed_points_error, check_method_runs, warn_inaccurate
    public :: clamp_magnitude, log10_floor, chart_line_length, stacked, chart_line, failed_values
    public :: header_bytes, text_row_bytes, binary_row_bytes, point_amplitude, columns_need, columns_paper
-   public :: verdict_values, verdict_lines, col_physical
+   public :: verdict_lines, col_physical
 
    !> The columns of a chart or points file, in file order.
    integer, parameter :: col_alpha = 1, col_a = 2, col_beta = 3, col_omega = 4, col_s = 5, col_stable = 6, &
@@ -305,34 +305,9 @@ contains
       v(col_status) = real(status, wp)
    end function chart_values
 
-   !> `chart_values` of a point computed for its verdicts only (`columns_need` ≤
-   !> need_verdict): the grid's columns, stable (0.5 when marginal), stable_paper, physical
-   !> and status; the columns of S and the multipliers 0 (a verdict file holds none of them).
-   pure function verdict_values(alpha, beta, tr, epsilon, tolerance, physical, status, amplitude) result(v)
-      real(wp), intent(in) :: alpha, beta  !! the grid point
-      type(trace_t), intent(in) :: tr      !! its trace, with its error bound
-      real(wp), intent(in) :: epsilon      !! damping ε
-      real(wp), intent(in) :: tolerance    !! the scene's tolerance
-      logical, intent(in) :: physical      !! (α, β) inside the physical domain
-      integer, intent(in) :: status        !! per-point status code
-      real(wp), intent(in) :: amplitude    !! a (m), or 0
-      real(wp) :: v(n_chart_columns)
-      logical :: stable, stable_paper, marginal
-      call verdicts(tr, epsilon, tolerance, stable, stable_paper, marginal)
-      v = 0.0_wp
-      v(col_alpha) = alpha
-      v(col_a) = amplitude
-      v(col_beta) = beta
-      v(col_stable) = merge(1.0_wp, 0.0_wp, stable)
-      if (marginal) v(col_stable) = 0.5_wp
-      v(col_stable_paper) = merge(1.0_wp, 0.0_wp, stable_paper)
-      v(col_physical) = merge(1.0_wp, 0.0_wp, physical)
-      v(col_status) = real(status, wp)
-   end function verdict_values
-
    !> The text lines of points computed for their verdicts only, written directly into
    !> buffer(pos + 1 : …), one new-line character between two lines, pos advanced past the
-   !> last (what `verdict_values` and `chart_line` write, without the array of every
+   !> last (what `chart_values` of `floquet_verdict` and `chart_line` write, without the array of every
    !> column's value and the dispatch by style: a verdict chart writes little more than the
    !> grid and a flag, and this loop is most of its text's cost). The verdicts are those of
    !> `verdicts` (hillstab_hill_floquet), the usual case (no damping, an estimate below 1)
@@ -425,7 +400,7 @@ contains
                pos = p
             case default
                ! no other column reaches a chart's verdict file (omega is offered to points
-               ! files only); written as 0, as `verdict_values` has it
+               ! files only); written as 0, as `chart_values` of `floquet_verdict` has it
                p = pos
                call put_value(chart_styles(ids(k)), 0.0_wp, buffer, p)
                pos = p

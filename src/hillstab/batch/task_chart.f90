@@ -16,7 +16,7 @@ module hillstab_batch_task_chart
    use hillstab_core_text, only: format_es, real_text, integer_text
    use hillstab_hill_coefficient, only: hill_model_t, in_physical_domain
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, batch_plan_t, prepare_batch, need_verdict
    use hillstab_batch_scene, only: scene_t, task_t, open_scene_output
    use hillstab_batch_declaration, only: group_t
@@ -26,7 +26,7 @@ module hillstab_batch_task_chart
    use hillstab_hill_models, only: model_physical_alpha
    use hillstab_batch_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point, grid_size_text
    use hillstab_batch_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, chart_header, &
-      point_amplitude, columns_need, columns_paper, verdict_values, verdict_lines, &
+      point_amplitude, columns_need, columns_paper, verdict_lines, &
       scene_chart_columns, check_method_runs, warn_inaccurate, failed_points_error, chart_line_length, evaluate_point, &
       header_bytes, text_row_bytes, binary_row_bytes, col_physical
    use hillstab_batch_columns, only: columns_text
@@ -432,8 +432,8 @@ contains
       do j = 1, size(betas)
          a = 0.0_wp
          if (scene%physical) a = point_amplitude(scene, j, alpha, betas(j))
-         if (need <= need_verdict .and. .not. (scene%binary .or. failed(j))) then
-            ! a verdict line, written directly
+         if (need <= need_verdict .and. .not. scene%binary) then
+            ! a verdict line (or a failed point's), written directly
             lengths(j) = 0
             if (present(beta_texts)) then
                call verdict_lines(ids, alpha, betas(j:j), traces(j:j), scene%epsilon, scene%method%tolerance, &
@@ -450,14 +450,13 @@ contains
             v = failed_values(alpha, betas(j), in_physical_domain(alpha, betas(j)), a)
          else
             if (need <= need_verdict) then
-               ! verdicts only: no Floquet data, the few columns a verdict file can hold
-               v = verdict_values(alpha, betas(j), traces(j), scene%epsilon, scene%method%tolerance, &
-                                  in_physical_domain(alpha, betas(j)), statuses(j), a)
+               ! verdicts only: no multipliers (their columns, not in a verdict file, stay 0)
+               f = floquet_verdict(traces(j), scene%epsilon, scene%method%tolerance)
             else
                f = floquet_from_trace(traces(j), scene%epsilon, scene%method%tolerance)
-               v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second, a, &
-                                need=need)
             end if
+            v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second, a, &
+                             need=need)
          end if
          if (scene%binary) then
             values(:, j) = v(ids)
