@@ -115,29 +115,35 @@ def main():
                     % (n, n))
         return path
 
+    # (program, run, command, environment, tolerance, key of its error in `errors`: None
+    # for the runs that write no S)
     jobs = [
-        ("hillstab", "full chart, text", [args.hillstab, "--quiet", scene("full", "")], env),
-        ("hillstab", "full chart, binary", [args.hillstab, "--quiet", scene("binary", ", format = 'binary'")], env),
+        ("hillstab", "full chart, text", [args.hillstab, "--quiet", scene("full", "")], env,
+         args.tolerance, "hillstab"),
+        ("hillstab", "full chart, binary", [args.hillstab, "--quiet", scene("binary", ", format = 'binary'")], env,
+         args.tolerance, "hillstab"),
         ("hillstab", "verdict chart (alpha beta stable)",
-         [args.hillstab, "--quiet", scene("verdict", ", columns = 'alpha beta stable'")], env),
+         [args.hillstab, "--quiet", scene("verdict", ", columns = 'alpha beta stable'")], env, args.tolerance, None),
         ("hillstab", "growth chart (alpha beta mu)",
-         [args.hillstab, "--quiet", scene("growth", ", columns = 'alpha beta mu'")], env),
-        ("hillstab", "full chart, text, on disk", [args.hillstab, "--quiet", scene("full", "", disk)], env),
+         [args.hillstab, "--quiet", scene("growth", ", columns = 'alpha beta mu'")], env, args.tolerance, None),
+        ("hillstab", "full chart, text, on disk", [args.hillstab, "--quiet", scene("full", "", disk)], env,
+         args.tolerance, "hillstab"),
         ("hillstab", "verdict chart, on disk",
-         [args.hillstab, "--quiet", scene("verdict", ", columns = 'alpha beta stable'", disk)], env),
+         [args.hillstab, "--quiet", scene("verdict", ", columns = 'alpha beta stable'", disk)], env,
+         args.tolerance, None),
         ("hillstab", "full chart, text, tolerance 1e-8",
-         [args.hillstab, "--quiet", scene("full8", "", tolerance=1e-8)], env),
+         [args.hillstab, "--quiet", scene("full8", "", tolerance=1e-8)], env, 1e-8, "hillstab 1e-8"),
         ("hillstab", "full chart, text, tolerance 1e-12",
-         [args.hillstab, "--quiet", scene("full12", "", tolerance=1e-12)], env),
+         [args.hillstab, "--quiet", scene("full12", "", tolerance=1e-12)], env, 1e-12, "hillstab 1e-12"),
     ]
     n_hillstab = 8
     gsl_tolerances = [1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13, 1e-14]
     for tol in gsl_tolerances:
-        jobs.append(("gsl", "%.0e" % tol, [args.chart_gsl, str(n), str(n), repr(tol)], env1))
+        jobs.append(("gsl", "%.0e" % tol, [args.chart_gsl, str(n), str(n), repr(tol)], env1, tol, tol))
 
     best = [float("inf")] * len(jobs)
     for r in range(args.rounds):
-        for k, (who, label, command, e) in enumerate(jobs):
+        for k, (who, label, command, e, tol, key) in enumerate(jobs):
             start = time.perf_counter()
             subprocess.run(command, env=e, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
             best[k] = min(best[k], time.perf_counter() - start)
@@ -181,7 +187,7 @@ def main():
         elif (v == 1.0) != (abs(s) < 2.0):
             wrong += 1
 
-    t_full, t_binary, t_verdict, t_growth, t_full_disk, t_verdict_disk, t_full8, t_full12 = best[0:n_hillstab]
+    t_full, _, t_verdict, t_growth, t_full_disk, t_verdict_disk, t_full8, t_full12 = best[0:n_hillstab]
     t_gsl = dict(zip(gsl_tolerances, best[n_hillstab:]))
     same_tolerance = min(gsl_tolerances, key=lambda t: abs(t - args.tolerance))
     equal = None
@@ -195,14 +201,10 @@ def main():
           "GSL rk8pd on 1 thread" % (n, n, args.tolerance, args.threads))
     print("hillstab's files in %s (disk runs: %s)" % (work, disk))
     print("%-10s %-36s %10s %14s" % ("program", "run", "seconds", "error (40 pts)"))
-    for k, (who, label, command, e) in enumerate(jobs):
+    for k, (who, label, command, e, tol, key) in enumerate(jobs):
         err = ""
         if errors:
-            err = "%.2e" % (errors["hillstab"] if who == "hillstab" and k in (0, 1, 4) else
-                            errors["hillstab 1e-8"] if k == 6 else errors["hillstab 1e-12"] if k == 7 else
-                            errors.get(float(label), 0.0) if who == "gsl" else float("nan"))
-            if who == "hillstab" and k not in (0, 1, 4, 6, 7):
-                err = "-"
+            err = "-" if key is None else "%.2e" % errors[key]
         print("%-10s %-36s %10.4f %14s" % (who, label, best[k], err))
     print()
     print("worst error of hillstab's S over the whole chart against GSL at 1e-13: %.2e" % chart_worst)
@@ -243,14 +245,8 @@ def main():
         f.write("# verdicts: %d compared, %d wrong, %d marginal; whole-chart error of hillstab vs GSL 1e-13: %.3e\n"
                 % (compared, wrong, marginal, chart_worst))
         f.write("# columns: program run tolerance seconds error ratio_to_hillstab_full\n")
-        for k, (who, label, command, e) in enumerate(jobs):
-            if who == "gsl":
-                tol = float(label)
-                err = errors.get(tol, -1.0)
-            else:
-                tol = 1e-8 if k == 6 else 1e-12 if k == 7 else args.tolerance
-                err = errors.get("hillstab", -1.0) if k in (0, 1, 4) else errors.get("hillstab 1e-8", -1.0) if k == 6 \
-                    else errors.get("hillstab 1e-12", -1.0) if k == 7 else -1.0
+        for k, (who, label, command, e, tol, key) in enumerate(jobs):
+            err = errors.get(key, -1.0) if key is not None else -1.0
             f.write('%s "%s" %g %.6f %.3e %.3f\n' % (who, label, tol, best[k], err, best[k] / t_full))
     os.replace(args.out + ".part", args.out)
     print("wrote " + args.out)
