@@ -39,9 +39,9 @@ module hillstab_batch_checkpoint
    use hillstab_core_error, only: error_t, set_error, err_io
    use hillstab_core_text, only: integer_text, read_text_line
    use hillstab_ffi_libc, only: c_lstat, c_fstat, stat_t, c_mkdir, c_link, c_rmdir, c_unlink, c_rename, c_geteuid, &
-      c_fopen, c_fclose, c_fwrite, c_fflush, c_fsync, c_fileno, c_flock, lock_exclusive, lock_nonblocking, &
+      c_fopen, c_fclose, c_fwrite, c_fflush, c_fsync, c_fileno, try_lock, name_max, &
       file_type, file_type_directory, file_type_link, file_type_regular, errno_text, errno_value, set_errno, &
-      errno_no_entry, errno_would_block, c_string
+      errno_no_entry, c_string
    use, intrinsic :: iso_c_binding, only: c_int, c_ptr, c_size_t, c_associated
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
@@ -62,8 +62,6 @@ module hillstab_batch_checkpoint
    integer, parameter :: checkpoint_incomplete = 2
    !> The first line of a state file.
    character(len=*), parameter :: state_format = "hillstab checkpoint 1"
-   !> Longest file name (one path component), NAME_MAX.
-   integer, parameter :: name_max = 255
    !> Suffix of a checkpoint directory.
    character(len=*), parameter :: suffix = ".checkpoint"
 
@@ -189,9 +187,7 @@ contains
          reason = "it has no data ("//errno_text()//")"
          return
       end if
-      busy = .false.
-      call set_errno(0)
-      if (c_flock(c_fileno(stream), ior(lock_exclusive, lock_nonblocking)) /= 0) busy = errno_value() == errno_would_block
+      busy = try_lock(stream)
       status = c_fstat(c_fileno(stream), info)
       status = c_fclose(stream)
       if (busy) then

@@ -35,8 +35,8 @@ module hillstab_batch_output
    use hillstab_core_text, only: integer_text
    use hillstab_ffi_libc, only: c_mkdir, c_rename, c_mkstemp, c_fdopen, c_fchmod, c_umask, c_close, c_fwrite, c_fwrite_raw, &
       c_fflush, c_fclose, c_fileno, c_fsync, errno_text, set_errno, c_string, remove_file, is_directory, c_fopen, &
-      c_fstat, stat_t, file_type, file_type_regular, c_ftruncate, c_fseek, seek_end, c_flock, lock_exclusive, &
-      lock_nonblocking, errno_value, errno_would_block, errno_exists, c_link, c_getrandom, c_getpid
+      c_fstat, stat_t, file_type, file_type_regular, c_ftruncate, c_fseek, seek_end, try_lock, name_max, &
+      errno_value, errno_exists, c_link, c_getrandom, c_getpid
    use hillstab_batch_signals, only: watch_temp_file, forget_temp_file, begin_commit
    use hillstab_core_kinds, only: wp
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, c_associated, c_size_t, c_loc, &
@@ -45,9 +45,6 @@ module hillstab_batch_output
    private
    public :: output_file_t, open_output, commit_output, discard_output, finish_output, write_header, write_text
    public :: write_records, joined_lines, join_lines, sync_output, lock_output, resume_output, temporary_prefix
-
-   !> Longest file name (one path component) of Linux file systems, NAME_MAX.
-   integer, parameter :: name_max = 255
 
    !> An output file being written under a temporary name.
    type :: output_file_t
@@ -457,11 +454,7 @@ contains
       type(output_file_t), intent(in) :: file  !! the open output file
       logical :: busy
       busy = .false.
-      if (.not. c_associated(file%stream)) return
-      call set_errno(0)
-      if (c_flock(c_fileno(file%stream), ior(lock_exclusive, lock_nonblocking)) /= 0) then
-         busy = errno_value() == errno_would_block
-      end if
+      if (c_associated(file%stream)) busy = try_lock(file%stream)
    end function lock_output
 
    !> Continue the partial output `data_path` of `path` (a file in a directory only this

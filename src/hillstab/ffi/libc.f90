@@ -7,7 +7,7 @@
 !> the writers (hillstab_batch_output), the checkpoints (hillstab_batch_checkpoint), the
 !> signal cleanup (hillstab_batch_signals), the resource limits (hillstab_batch_limits) and
 !> the progress line use them; `remove_file` and `is_directory` are the two path helpers
-!> every reader and writer needs. Layouts (struct stat, off_t) are those of 64-bit Linux.
+!> every reader and writer needs, `try_lock` the lock test of the output and the checkpoint. Layouts (struct stat, off_t) are those of 64-bit Linux.
 !>
 !>```fortran
 !> integer(c_int) :: status
@@ -27,7 +27,7 @@ module hillstab_ffi_libc
       c_write, c_nanosleep, timespec_t, errno_value, file_type, file_type_regular, file_type_directory, &
       file_type_link, seek_end, lock_exclusive, lock_nonblocking, errno_exists, errno_no_entry, errno_would_block
    public :: c_mallopt, malloc_trim_threshold, malloc_top_pad, malloc_mmap_threshold
-   public :: c_sched_getaffinity, c_sched_setaffinity, c_sched_getcpu, cpu_set_words
+   public :: c_sched_getaffinity, c_sched_setaffinity, c_sched_getcpu, cpu_set_words, name_max, try_lock
 
    !> The file type bits of `stat_t%mode` (S_IFMT).
    integer(c_int), parameter :: file_type = int(o'170000', c_int)
@@ -43,6 +43,9 @@ module hillstab_ffi_libc
    integer, parameter :: errno_no_entry = 2            !! ENOENT
    integer, parameter :: errno_would_block = 11        !! EWOULDBLOCK (EAGAIN) on Linux
    integer, parameter :: errno_exists = 17             !! EEXIST
+
+   !> NAME_MAX of Linux: the longest file name (one path component), in bytes.
+   integer, parameter :: name_max = 255
 
    !> cpu_set_t of glibc: 1024 bits, CPU k is bit mod(k, 64) of word k/64 (from 1 here).
    integer, parameter :: cpu_set_words = 16
@@ -439,6 +442,17 @@ contains
       if (c_stat(c_string(path), info) /= 0) return
       is_special_file = iand(info%mode, type_mask) /= regular .and. iand(info%mode, type_mask) /= directory
    end function is_special_file
+
+   !> Take an exclusive advisory lock (flock) on the open stream without waiting; true when
+   !> another process holds it (false also where the file system has no locks). The lock
+   !> goes with the stream's close or the process's end.
+   function try_lock(stream) result(busy)
+      type(c_ptr), intent(in) :: stream  !! an open stream
+      logical :: busy
+      busy = .false.
+      call set_errno(0)
+      if (c_flock(c_fileno(stream), ior(lock_exclusive, lock_nonblocking)) /= 0) busy = errno_value() == errno_would_block
+   end function try_lock
 
    !> Whether `path` names an existing directory.
    logical function is_directory(path)
