@@ -747,7 +747,9 @@ contains
    end subroutine lyapunov_failure_error
 
    !> The lyapunov task, in this process: units of `lyapunov_unit_batches` batches of lanes computed
-   !> in parallel and written in order.
+   !> in parallel and written in order. The programs run lyapunov scenes (text only) through
+   !> the unit driver (`run_batch`, hillstab_batch_units); this loop is the task's own `run`,
+   !> the reference the batch tests compare the driver's files with.
    subroutine lyapunov_run(self, scene, quiet, error)
       class(lyapunov_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! a validated lyapunov scene
