@@ -13,7 +13,7 @@
 program hillstab_bench
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use hillstab
-   use hillstab_batch_tasks, only: run_scene_file
+   use hillstab_batch_run_scenes, only: run_scene_file
    !$ use omp_lib, only: omp_get_max_threads, omp_set_num_threads
    implicit none
 

@@ -1,17 +1,17 @@
 !> `mpirun -np N hillstab_mpi [--quiet] SCENE.nml...`: hillstab spread over MPI ranks.
 !>
 !> The points of chart, points and lyapunov scenes are computed on all ranks with dynamic
-!> load balancing: rank 0 hands out units (hillstab_batch_units: a chart row, a run of points) on
+!> load balancing: rank 0 hands out units (hillstab_batch_run_units: a chart row, a run of points) on
 !> demand, keeps two units queued at every other rank so that no rank waits for the
 !> next, computes units itself between requests, and writes the results in order into
 !> the same file as a single-process `hillstab` run (identical data lines), through the
-!> atomic writers of hillstab_batch_output: the file appears whole or not at all. Other tasks
+!> atomic writers of hillstab_batch_output_file: the file appears whole or not at all. Other tasks
 !> run on rank 0. Options, messages and exit statuses are those of `hillstab` (one command
-!> line module, hillstab_batch_cli, for both programs); every rank
+!> line module, hillstab_batch_run_cli, for both programs); every rank
 !> exits with the status of the run (0 success, 2 bad input, 3 written with failed
 !> points, 1 a computation failed).
 !>
-!> Rank 0 keeps the run's checkpoint as hillstab does (hillstab_batch_units), so that
+!> Rank 0 keeps the run's checkpoint as hillstab does (hillstab_batch_run_units), so that
 !> `hillstab_mpi --resume` (or `hillstab --resume`, whatever the number of ranks) continues
 !> an interrupted run: the units of the checkpoint are those of the resumed run, and only
 !> the units it lacks are handed out.
@@ -20,15 +20,15 @@ module hillstab_mpi_runner
    use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_core_text, only: integer_text
-   use hillstab_batch_scene, only: scene_t, output_path
+   use hillstab_batch_scene_types, only: scene_t, output_path
    use hillstab_batch_scene_read, only: read_scene
-   use hillstab_batch_tasks, only: run_scene
-   use hillstab_batch_units, only: batch_t, batch_result_t, batch_distributable, batch_plan, batch_set_unit_size, &
+   use hillstab_batch_run_scenes, only: run_scene
+   use hillstab_batch_run_units, only: batch_t, batch_result_t, batch_distributable, batch_plan, batch_set_unit_size, &
       batch_compute, &
       batch_open, batch_write, batch_commit, batch_discard, scene_fingerprint
-   use hillstab_batch_cli, only: scene_runner_t, exit_status
-   use hillstab_batch_limits, only: check_memory_room
-   use hillstab_batch_signals, only: watch_temp_file, forget_temp_file
+   use hillstab_batch_run_cli, only: scene_runner_t, exit_status
+   use hillstab_batch_run_limits, only: check_memory_room
+   use hillstab_batch_run_signals, only: watch_temp_file, forget_temp_file
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
@@ -49,7 +49,7 @@ module hillstab_mpi_runner
       real(wp) :: busy(2) = 0.0_wp                 !! rank 0's computing time [s]: CPU, wall
    end type manager_t
 
-   !> hillstab over MPI ranks: the scene runner of hillstab_batch_cli.
+   !> hillstab over MPI ranks: the scene runner of hillstab_batch_run_cli.
    type, extends(scene_runner_t) :: mpi_runner_t
       integer :: rank = 0     !! this rank
       integer :: n_ranks = 1  !! ranks in MPI_COMM_WORLD
@@ -364,8 +364,8 @@ end module hillstab_mpi_runner
 program hillstab_mpi
    use mpi_f08, only: MPI_Init, MPI_Comm_rank, MPI_Comm_size, MPI_COMM_WORLD
    use hillstab_mpi_runner, only: mpi_runner_t
-   use hillstab_batch_cli, only: run_command_line
-   use hillstab_batch_signals, only: install_signal_cleanup
+   use hillstab_batch_run_cli, only: run_command_line
+   use hillstab_batch_run_signals, only: install_signal_cleanup
    implicit none
    type(mpi_runner_t) :: runner
    ! as hillstab: SIGINT, SIGTERM, SIGHUP remove the temporary output (rank 0 writes it);

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Remake data/reference/chaos_verdicts.dat, the reference verdicts of the chaos tests
-# (test/test_chaos.f90): the paper's Fig. 4 points and the cell-centred 8 x 8 grid of the
+# (test/pendulum/test_chaos.f90): the paper's Fig. 4 points and the cell-centred 8 x 8 grid of the
 # physical domain, alpha_i = (i - 1/2) pi^2/8, beta_j = (j - 1/2) pi^2/8, each integrated for
 # 3000 radial periods by lyapunov_largest (DOP853 on the variational equations at
 # tolerance 1e-11, the code that predates the symplectic tangent maps) from phi0 = 0.017,

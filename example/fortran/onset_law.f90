@@ -21,7 +21,7 @@ program onset_law
    use hillstab_pendulum_equations, only: pendulum_from_chart, pendulum_initial_state
    use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat, &
       linear_onset_periods
-   use hillstab_batch_output, only: output_file_t, open_output, write_header, write_text, commit_output, discard_output
+   use hillstab_batch_output_file, only: output_file_t, open_output, write_header, write_text, commit_output, discard_output
    implicit none
    character(len=*), parameter :: labels(3) = ["b", "e", "g"]
    real(wp), parameter :: cases(2, 3) = reshape([3.70_wp, 2.47_wp, 7.88_wp, 3.95_wp, 7.48_wp, 2.47_wp], [2, 3])

@@ -3,7 +3,7 @@
 ! component, as `[new_unittest("a", a), new_unittest("b", b)]` was, copies each result into
 ! the constructor's temporary and frees neither the results' components nor the copies'.
 ! Assigning results one by one (`items(1) = new_item("first")`) does not leak; nor does a
-! type without allocatable components. test/hillstab_testing.f90 and test/main.f90 do that.
+! type without allocatable components. testing/src/hillstab_testing.f90 and test/main.f90 do that.
 module constructor_leak
    implicit none
    type :: item_t

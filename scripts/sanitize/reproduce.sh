@@ -2,7 +2,7 @@
 # The two gfortran 12 artefacts that the sanitizer build of the test suite met (issue 19),
 # each as a minimal program; both must report (UBSan: signed integer overflow in
 # absent_optional.f90; LeakSanitizer: two leaks from new_item in constructor_leak.f90).
-# hillstab avoids both patterns (src/hillstab/integrate/rk.f90, test/hillstab_testing.f90,
+# hillstab avoids both patterns (src/hillstab/integrate/rk.f90, testing/src/hillstab_testing.f90,
 # test/main.f90); when a newer gfortran no longer reports them, the workarounds may go.
 # usage: bash scripts/sanitize/reproduce.sh   (x86-64, gfortran and gcc with libasan/libubsan)
 set -u

@@ -4,8 +4,8 @@
 !> effective user, signals and write(2) for the handler, whether a descriptor is a terminal,
 !> free space (statvfs), random bytes (getrandom), a short sleep (nanosleep), the CPUs a thread
 !> may run on (sched_getaffinity, sched_setaffinity, sched_getcpu). Bindings only:
-!> the writers (hillstab_batch_output), the checkpoints (hillstab_batch_checkpoint), the
-!> signal cleanup (hillstab_batch_signals), the resource limits (hillstab_batch_limits) and
+!> the writers (hillstab_batch_output_file), the checkpoints (hillstab_batch_output_checkpoint), the
+!> signal cleanup (hillstab_batch_run_signals), the resource limits (hillstab_batch_run_limits) and
 !> the progress line use them; `remove_file` and `is_directory` are the two path helpers
 !> every reader and writer needs, `try_lock` the lock test of the output and the checkpoint. Layouts (struct stat, off_t) are those of 64-bit Linux.
 !>

@@ -1,0 +1,79 @@
+!> Running scenes: read a scene file (hillstab_batch_scene_read) and run its task, after
+!> the checks every run makes before any work (the output must fit where it goes).
+!> Errors come back in `error` with the scene file, group and variable named; no output
+!> file is created or touched unless the task completes. A point that cannot be computed
+!> does not stop a chart, points or lyapunov task: its row carries status 2 and
+!> placeholders, the file is written, and `error` comes back with err_points_failed.
+!>
+!> Scenes whose points are independent (chart over `&chart`, points, lyapunov), written as
+!> text, run unit by unit (hillstab_batch_run_units `run_batch`, the driver `hillstab_mpi` shares)
+!> and keep a checkpoint as they go, so that `--resume` continues them; the others run
+!> their task's own loop and keep none (`format = 'binary'` cannot be resumed).
+!>
+!>```fortran
+!> type(error_t), allocatable :: error
+!> call run_scene_file("data/scenes/default_exact.nml", quiet=.false., error=error)
+!>```
+module hillstab_batch_run_scenes
+   use hillstab_core_error, only: error_t, set_error, err_points_failed, err_input
+   use hillstab_batch_scene_types, only: scene_t, output_path
+   use hillstab_batch_scene_read, only: read_scene
+   use hillstab_batch_run_limits, only: check_output_room, check_memory_room
+   use hillstab_batch_run_units, only: batch_distributable, run_batch
+   use hillstab_batch_output_checkpoint, only: checkpoint_options_t, checkpoint_note
+   implicit none
+   private
+   public :: run_scene_file, run_scene, output_path
+
+contains
+
+   !> Read the scene file `path` and run it.
+   subroutine run_scene_file(path, quiet, error, written, options)
+      character(len=*), intent(in) :: path  !! scene file (a previous output file also works)
+      logical, intent(in) :: quiet          !! no progress on stderr
+      type(error_t), allocatable, intent(out) :: error  !! what failed (err_points_failed: written with failed points)
+      character(len=:), allocatable, intent(out), optional :: written  !! the file written
+      !> checkpoints: resume, interval (default: a checkpoint every 3 s, no resume)
+      type(checkpoint_options_t), intent(in), optional :: options
+      type(scene_t) :: scene
+      call read_scene(path, scene, error)
+      if (allocated(error)) return
+      call run_scene(scene, quiet, error, options)
+      if (allocated(error)) then
+         if (error%code /= err_points_failed) return
+      end if
+      if (present(written)) written = output_path(scene)
+   end subroutine run_scene_file
+
+   !> Run a validated scene: unit by unit with a checkpoint when its points are independent
+   !> and it is written as text, else by its task's own loop. With `options%resume`, a scene
+   !> written in binary is refused (it keeps no checkpoint), other tasks run afresh with a note.
+   subroutine run_scene(scene, quiet, error, options)
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      logical, intent(in) :: quiet  !! no progress on stderr
+      type(error_t), allocatable, intent(out) :: error  !! what failed (err_points_failed: written with failed points)
+      !> checkpoints: resume, interval (default: a checkpoint every 3 s, no resume)
+      type(checkpoint_options_t), intent(in), optional :: options
+      logical :: resume
+      resume = .false.
+      if (present(options)) resume = options%resume
+      if (resume .and. scene%binary .and. batch_distributable(scene)) then
+         call set_error(error, err_input, scene%source//": &scene: format: 'binary' output keeps no checkpoint, "// &
+            "so it cannot be resumed: run it without --resume, or with format = 'text'")
+         return
+      end if
+      ! an output that cannot fit where it goes is refused before any work
+      call check_output_room(scene, output_path(scene), error)
+      if (allocated(error)) return
+      ! as are buffers that would not fit in memory
+      call check_memory_room(scene, error)
+      if (allocated(error)) return
+      if (batch_distributable(scene) .and. .not. scene%binary) then
+         call run_batch(scene, quiet, error, options)
+         return
+      end if
+      if (resume) call checkpoint_note(options, scene%source//": this run keeps no checkpoint (only charts over "// &
+         "&chart, points and lyapunov runs written as text do): running it afresh")
+      call scene%task%run(scene, quiet, error)
+   end subroutine run_scene
+end module hillstab_batch_run_scenes

@@ -1,0 +1,174 @@
+!> The `&series` group: the nonlinear pendulum at (α, β) with its natural length and
+!> gravity, its start (eq. (38) plus optional velocities) and the sampling. Read by the
+!> series, lyapunov and poincare tasks.
+!>
+!>```fortran
+!> type(series_plan_t) :: plan
+!> plan = series_plan_t(1.48_wp, 2.47_wp, 0.017_wp, 50, 100, 0.1_wp, 9.81_wp, 0.0_wp, 0.0_wp)
+!>```
+module hillstab_batch_scene_group_series
+   use hillstab_core_kinds, only: wp, int64, pi2
+   use hillstab_core_error, only: error_t
+   use hillstab_core_text, only: real_text, integer_text
+   use hillstab_hill_models, only: model_is_pendulum, model_name
+   use hillstab_batch_scene_file, only: scene_file_t, fail
+   use hillstab_batch_scene_declaration, only: new_group, group_t, group_values_t, group_reader_t, variable, var_real, &
+      var_integer, &
+      begin_group, next_item, end_group
+   use hillstab_batch_scene_checks, only: require_finite, min_pendulum_beta
+   implicit none
+   private
+   public :: series_plan_t, series_group, read_series_group, max_series_lines
+
+   !> A series scene writing more data lines than this is refused.
+   integer(int64), parameter :: max_series_lines = 100000000_int64
+
+   !> The pendulum of `&series`: (α, β) from eq. (38), sampled `samples_per_period` times
+   !> per radial period.
+   type :: series_plan_t
+      real(wp) :: alpha = 0.0_wp             !! α, in [0, π²)
+      real(wp) :: beta = 0.0_wp              !! β, in (0, π²)
+      real(wp) :: phi0 = 0.0_wp              !! initial angle [rad]
+      integer :: periods = 1                 !! radial periods to simulate (with `duration`: 0)
+      integer :: samples_per_period = 1      !! output rows per radial period
+      real(wp) :: r0 = 0.0_wp                !! natural length [m]
+      real(wp) :: g = 0.0_wp                 !! gravity [m/s²]
+      real(wp) :: vx0 = 0.0_wp               !! initial horizontal velocity [m/s]
+      real(wp) :: vz0 = 0.0_wp               !! initial downward velocity [m/s]
+      !> the length of the run in seconds (`&series duration`); 0 when given as `periods`
+      real(wp) :: duration = 0.0_wp
+   end type series_plan_t
+
+contains
+
+   !> The declaration of `&series` (defaults: the paper's Fig. 4 (a)).
+   function series_group() result(group)
+      type(group_t) :: group
+      group = new_group("series", "the nonlinear pendulum and its start (eq. (38))")
+      call group%add("alpha", var_real, "1.48", "alpha = a pi^2/rho, 0 <= alpha < pi^2")
+      call group%add("beta", var_real, "2.47", "beta = g pi^2/(rho omega^2), 0 < beta < pi^2 (physical domain)")
+      call group%add("phi0", var_real, "0.017", "initial angle from the downward vertical, rad (0: pure bounce)")
+      call group%add("periods", var_integer, "50", "radial periods T = 2 pi/omega to simulate, >= 1")
+      call group%add("duration", var_real, "", "series: instead of periods, the length of the run in seconds "// &
+         "(> 0; rows at t = j T/samples_per_period <= duration)", example="30.0")
+      call group%add("samples_per_period", var_integer, "100", "output rows per radial period, >= 1; "// &
+         "periods*samples_per_period + 1 <= 1e8")
+      call group%add("r0", var_real, "0.1", "natural length of the spring, m; > 0")
+      call group%add("g", var_real, "9.81", "gravity, m/s^2; > 0")
+      call group%add("vx0", var_real, "0.0", "initial horizontal velocity, m/s")
+      call group%add("vz0", var_real, "0.0", "initial downward velocity, m/s")
+   end function series_group
+
+   !> Read and check `&series`. The pendulum is the elastic one given in dimensionless
+   !> units here, so a scene with `&physical` or another model is refused.
+   subroutine read_series_group(file, group, model, physical, plan, values, error, samples, takes_duration)
+      type(scene_file_t), intent(in) :: file  !! the scene file
+      type(group_t), intent(in) :: group      !! the declaration (`series_group`)
+      integer, intent(in) :: model            !! the model code of `&scene`
+      logical, intent(in) :: physical         !! the scene has `&physical`
+      type(series_plan_t), intent(out) :: plan  !! the pendulum and its sampling
+      type(group_values_t), intent(out) :: values  !! the effective values
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
+      !> the task writes the samples (series; default): periods * samples_per_period lines
+      !> are bounded; else (lyapunov, poincare) periods alone
+      logical, intent(in), optional :: samples
+      !> the task takes `duration` (seconds) instead of `periods` (default: no)
+      logical, intent(in), optional :: takes_duration
+      real(wp) :: alpha, beta, phi0, duration, r0, g, vx0, vz0
+      logical :: samples_written
+      integer :: periods, samples_per_period
+      namelist /series/ alpha, beta, phi0, periods, duration, samples_per_period, r0, g, vx0, vz0
+      logical :: durations
+      type(group_reader_t) :: reader
+      samples_written = .true.
+      if (present(samples)) samples_written = samples
+      call begin_group(reader, file, group)
+      read (reader%defaults, nml=series, iostat=reader%defaults_status, iomsg=reader%defaults_msg)
+      if (reader%from_file) read (file%unit, nml=series, iostat=reader%ios, iomsg=reader%msg)
+      do while (next_item(reader, file, group))
+         read (reader%record, nml=series, iostat=reader%stat, iomsg=reader%message)
+      end do
+      write (reader%echo, nml=series, delim="apostrophe", iostat=reader%echo_status)
+      call end_group(reader, file, group, values, error)
+      if (allocated(error)) return
+      call finite("alpha", alpha)
+      call finite("beta", beta)
+      call finite("phi0", phi0)
+      call finite("r0", r0)
+      call finite("g", g)
+      call finite("vx0", vx0)
+      call finite("vz0", vz0)
+      call finite("duration", duration)
+      if (allocated(error)) return
+      durations = .false.
+      if (present(takes_duration)) durations = takes_duration
+      if (values%given("duration")) then
+         if (.not. durations) then
+            call fail(error, file%path, group%name, "duration", "this task counts radial periods: give periods")
+         else if (values%given("periods")) then
+            call fail(error, file%path, group%name, "duration", "give the length of the run either as periods "// &
+               "(radial periods) or as duration (seconds), not both")
+         else if (.not. duration > 0.0_wp) then
+            call fail(error, file%path, group%name, "duration", "must be > 0 (seconds), got "//real_text(duration))
+         end if
+         if (allocated(error)) return
+         periods = 1   ! checked below as a count; the rows follow from duration (task series)
+      end if
+      if (physical) then
+         call fail(error, file%path, "physical", "r0", "the series task takes r0 and g in &series and the "// &
+            "damping as &scene epsilon; leave out &physical")
+      else if (.not. model_is_pendulum(model)) then
+         call fail(error, file%path, "scene", "model", "the pendulum tasks simulate the elastic pendulum: model '"// &
+            model_name(model)//"' is not it")
+      else if (alpha < 0.0_wp .or. alpha >= pi2) then
+         call fail(error, file%path, group%name, "alpha", "must lie in [0, pi**2 = "//real_text(pi2)// &
+            ") (amplitude a < rho), got "//real_text(alpha))
+      else if (beta <= 0.0_wp .or. beta >= pi2) then
+         call fail(error, file%path, group%name, "beta", "must lie in (0, pi**2 = "//real_text(pi2)// &
+            "), the physical domain (r0 > 0), got "//real_text(beta))
+      else if (beta < min_pendulum_beta) then
+         call fail(error, file%path, group%name, "beta", "must be >= 1.0e-8 (smaller values make the "// &
+            "pendulum's time scales overflow), got "//real_text(beta))
+      else if (periods < 1) then
+         call fail(error, file%path, group%name, "periods", "must be >= 1, got "//integer_text(periods))
+      else if (samples_per_period < 1) then
+         call fail(error, file%path, group%name, "samples_per_period", "must be >= 1, got "// &
+            integer_text(samples_per_period))
+      else if (.not. r0 > 0.0_wp) then
+         call fail(error, file%path, group%name, "r0", "the natural length must be > 0, got "//real_text(r0))
+      else if (.not. g > 0.0_wp) then
+         call fail(error, file%path, group%name, "g", "gravity must be > 0, got "//real_text(g))
+      else if (phi0 /= 0.0_wp .and. (abs(phi0) < 1.0e-300_wp .or. abs(phi0) > 1.0e3_wp)) then
+         call fail(error, file%path, group%name, "phi0", "must be 0 or lie in [1e-300, 1e3] in magnitude, got "// &
+            real_text(phi0))
+      else if (r0 < 1.0e-50_wp .or. r0 > 1.0e50_wp .or. g < 1.0e-50_wp .or. g > 1.0e50_wp) then
+         call fail(error, file%path, group%name, merge("r0", "g ", r0 < 1.0e-50_wp .or. r0 > 1.0e50_wp), &
+            "must lie in [1e-50, 1e50]")
+      else if (max(abs(vx0), abs(vz0)) > 1.0e50_wp) then
+         call fail(error, file%path, group%name, merge("vx0", "vz0", abs(vx0) > 1.0e50_wp), "must lie in [-1e50, 1e50]")
+      else if (samples_written .and. int(periods, int64)*samples_per_period + 1 > max_series_lines) then
+         call fail(error, file%path, group%name, "periods", "periods * samples_per_period + 1 = "// &
+            integer_text(int(periods, int64)*samples_per_period + 1)// &
+            " data lines exceed the limit of 1e8; lower periods or samples_per_period")
+      else if (.not. samples_written .and. periods > max_series_lines) then
+         call fail(error, file%path, group%name, "periods", "must be at most 1e8 radial periods, got "// &
+            integer_text(periods))
+      end if
+      if (allocated(error)) return
+      if (allocated(error)) return
+      if (values%given("duration")) then
+         periods = 0
+         call values%hide("periods")
+      else
+         duration = 0.0_wp
+      end if
+      plan = series_plan_t(alpha=alpha, beta=beta, phi0=phi0, periods=periods, samples_per_period=samples_per_period, &
+         r0=r0, g=g, vx0=vx0, vz0=vz0, duration=duration)
+   contains
+      subroutine finite(name, x)
+         character(len=*), intent(in) :: name
+         real(wp), intent(in) :: x
+         if (.not. allocated(error)) call require_finite(file%path, group%name, name, x, error)
+      end subroutine finite
+   end subroutine read_series_group
+end module hillstab_batch_scene_group_series

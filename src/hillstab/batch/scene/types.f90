@@ -1,0 +1,364 @@
+!> A scene: one namelist file describing one run. `scene_t` holds what every task
+!> shares — the `&scene` settings (model, method, damping, output, columns, format), the
+!> optional `&physical` pendulum in SI units — and the task itself, an extension of the
+!> abstract `task_t` that holds its own groups (a chart's grid, a series' pendulum) and
+!> knows how to read, run, size and split itself. The dispatcher, the MPI splitter and
+!> the resource limits call the task's bindings; nothing switches on the task.
+!>
+!> This module declares the types and writes the effective scene back as namelist text
+!> (`scene_namelist`): every output header carries it, so that the file repeats its
+!> run. Reading is in hillstab_batch_scene_read, the tasks in hillstab_batch_task_*.
+!>
+!>```fortran
+!> type(scene_t) :: scene
+!> type(error_t), allocatable :: error
+!> call read_scene("data/scenes/default_exact.nml", scene, error)
+!> if (.not. allocated(error)) print '(a)', scene_namelist(scene)
+!>```
+module hillstab_batch_scene_types
+   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_kinds, only: pi
+   use hillstab_core_text, only: quoted, real_text, integer_text
+   use hillstab_core_error, only: error_t, set_error, err_input
+   use hillstab_hill_models, only: model_elastic, model_physical_alpha
+   use hillstab_integrate_monodromy, only: method_t
+   use hillstab_hill_units, only: physical_t, physical_beta, equilibrium_length
+   use hillstab_batch_scene_declaration, only: group_t, group_values_t
+   use hillstab_batch_scene_file, only: scene_file_t
+   use hillstab_batch_output_file, only: output_file_t, open_output
+   implicit none
+   private
+   public :: scene_t, task_t, output_path, scene_namelist, scene_header, open_scene_output, physical_points, &
+      physical_summary
+
+   !> A task: what it reads, runs and writes. Concrete tasks extend it (the registry,
+   !> hillstab_batch_tasks_registry, makes one from its name); a task whose points are
+   !> independent also overrides the unit bindings, so that a driver can compute its
+   !> points in units anywhere (hillstab_batch_run_units, the MPI program).
+   type, abstract :: task_t
+      character(len=:), allocatable :: name       !! the task name, as in `&scene task`
+      logical :: takes_columns = .false.          !! `&scene columns` and format = 'binary' apply
+      logical :: takes_amplitudes = .false.       !! its points can come from `&physical a` with r0
+      !> `&physical r0` without amplitudes: the task takes one spring (its β fixed by r0)
+      logical :: takes_spring = .false.
+      !> `&physical omega_min, omega_max, n_omega` (with amplitudes): a grid over (a, ω)
+      logical :: takes_omega_range = .false.
+      !> with amplitudes: exactly one (a template shows one)
+      logical :: single_amplitude = .false.
+      logical :: takes_physical = .true.          !! `&physical` may replace the dimensionless values
+      !> what `&physical a` with r0 replace, for the template ("&points file")
+      character(len=:), allocatable :: amplitudes_replace
+      !> the effective values of the task's groups, in the order the header writes them
+      type(group_values_t), allocatable :: groups(:)
+   contains
+      !> read and check the task's groups from the scene file
+      procedure(task_read), deferred :: read
+      !> run the task: write its output file
+      procedure(task_run), deferred :: run
+      !> the groups the task reads, with its defaults, in the order the header writes them
+      procedure(task_declarations), deferred :: declarations
+      !> groups a template shows commented out, each an alternative to one it reads
+      procedure :: template_alternatives => task_template_alternatives
+      !> an upper estimate of the bytes of the output file (0: the task bounds its own)
+      procedure :: estimated_bytes => task_estimated_bytes
+      !> an upper estimate of the memory its buffers need (0: a few MB whatever the scene)
+      procedure :: memory_bytes => task_memory_bytes
+      !> what sets the size of the output, for messages ("&chart: n_alpha, n_beta: 200 x 200 points")
+      procedure :: size_variables => task_size_variables
+      !> points a distributed run computes (0: the task runs in one process)
+      procedure :: point_count => task_point_count
+      !> how many consecutive points make one unit for `n_workers` processes
+      procedure :: unit_size => task_unit_size
+      !> prepare what every unit shares (once, before the units)
+      procedure :: prepare_units => task_prepare_units
+      !> the text and statuses of the points `first` … `last` (called on several OpenMP threads
+      !> at once: no function with a deferred-length character result, see hillstab_batch_output_file
+      !> `join_lines`)
+      procedure :: unit_text => task_unit_text
+      !> open the output of a distributed run: checks, the header
+      procedure :: open_units => task_open_units
+      !> after a distributed run: warnings, and the error naming the first failed point
+      procedure :: finish_units => task_finish_units
+      !> (α, β) of point k
+      procedure :: point_of => task_point_of
+   end type task_t
+
+   !> One validated run description.
+   type :: scene_t
+      character(len=:), allocatable :: source       !! path of the scene file
+      class(task_t), allocatable :: task            !! the task, with its groups
+      integer :: model = model_elastic              !! a model code of hillstab_hill_models
+      type(method_t) :: method                      !! method, n_segments, sampling, tolerance
+      real(wp) :: epsilon = 0.0_wp                  !! damping ε of eq. (46)
+      character(len=:), allocatable :: output       !! prefix: files are <output>_<task>.dat (.bin)
+      !> chart and points: the columns to write, blank-separated ("" = all the task offers)
+      character(len=:), allocatable :: columns
+      logical :: binary = .false.      !! chart and points: float64 records after a text header
+      logical :: names_line = .false.  !! text: a line of column names after the `#` header
+      !> the scene has a `&physical` group: ε comes from κ and ω, and the outputs add
+      !> rates per second (ω is known)
+      logical :: physical = .false.
+      type(physical_t) :: pendulum                  !! `&physical` r0, g, omega, kappa (a: `amplitudes`)
+      !> `&physical k` (N/m) and `m` (kg) when the scene gives ω as √(k/m); 0 when it gives omega
+      real(wp) :: spring_k = 0.0_wp, spring_m = 0.0_wp
+      !> `&physical r0` is given: ρ = r0 + g/ω² is known and β fixed by the spring
+      logical :: spring_r0 = .false.
+      !> `&physical a` (m): the points (task points) or the curves (task coefficient) at
+      !> these amplitudes and the given r0; empty when α and β come from the task's group
+      real(wp), allocatable :: amplitudes(:)
+      !> `&physical omega_min, omega_max, n_omega` (rad/s): the ω of a chart over (a, ω),
+      !> r0 and g fixed; empty when ω is one value (`pendulum%omega`)
+      real(wp), allocatable :: omegas(:)
+      type(group_values_t) :: settings              !! the effective `&scene` values
+      type(group_values_t) :: physical_values       !! the effective `&physical` values
+   end type scene_t
+
+   abstract interface
+      !> Read and check the task's groups (`file` holds the scene; `scene` its common part).
+      subroutine task_read(self, file, scene, error)
+         import :: task_t, scene_file_t, scene_t, error_t
+         class(task_t), intent(inout) :: self  !! the task, its groups filled in
+         type(scene_file_t), intent(in) :: file  !! the scene file
+         type(scene_t), intent(in) :: scene  !! the `&scene` and `&physical` settings
+         !> err_input naming file, group and variable; unallocated on success
+         type(error_t), allocatable, intent(out) :: error
+      end subroutine task_read
+      !> The groups the task reads, with its defaults.
+      function task_declarations(self) result(groups)
+         import :: task_t, group_t
+         class(task_t), intent(in) :: self  !! the task
+         type(group_t), allocatable :: groups(:)
+      end function task_declarations
+      !> Run the task of a validated scene.
+      subroutine task_run(self, scene, quiet, error)
+         import :: task_t, scene_t, error_t
+         class(task_t), intent(in) :: self  !! the task
+         type(scene_t), intent(in) :: scene  !! the scene (holding this task)
+         logical, intent(in) :: quiet  !! no progress on stderr
+         !> what failed (err_points_failed: the file is written with failed points)
+         type(error_t), allocatable, intent(out) :: error
+      end subroutine task_run
+   end interface
+
+contains
+
+   !> The file a scene's task writes: `<output>_<task>.dat` (`.bin` for format = 'binary').
+   pure function output_path(scene) result(path)
+      type(scene_t), intent(in) :: scene  !! the scene
+      character(len=:), allocatable :: path
+      if (scene%binary) then
+         path = scene%output//"_"//scene%task%name//".bin"
+      else
+         path = scene%output//"_"//scene%task%name//".dat"
+      end if
+   end function output_path
+
+   !> Open the scene's output file (its temporary name), a failure reported against
+   !> `&scene output`.
+   subroutine open_scene_output(scene, file, error)
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      type(output_file_t), intent(out) :: file  !! the open temporary output file
+      type(error_t), allocatable, intent(out) :: error  !! err_io naming &scene output
+      call open_output(file, output_path(scene), error, binary=scene%binary, context=scene%source//": &scene: output: ")
+   end subroutine open_scene_output
+
+   !> The effective scene as namelist groups, one group a line, every variable with its
+   !> value (defaults filled in): `&scene`, `&physical` when the scene has it, then the
+   !> groups of the task. Reading these lines back as a scene reproduces the run.
+   function scene_namelist(scene) result(lines)
+      type(scene_t), intent(in) :: scene  !! the scene
+      character(len=:), allocatable :: lines(:)
+      character(len=:), allocatable :: settings, physical
+      type(group_values_t) :: values
+      integer :: k, width, n_task, first
+      ! the output prefix as the scene holds it (a driver may direct the file elsewhere)
+      values = scene%settings
+      call values%set("output", quoted(scene%output))
+      settings = values%line()
+      physical = ""
+      if (scene%physical) physical = scene%physical_values%line()
+      n_task = 0
+      if (allocated(scene%task%groups)) n_task = size(scene%task%groups)
+      width = max(len(settings), len(physical))
+      do k = 1, n_task
+         width = max(width, len(scene%task%groups(k)%line()))
+      end do
+      first = merge(3, 2, scene%physical)
+      allocate (character(len=width) :: lines(first - 1 + n_task))
+      lines(1) = settings
+      if (scene%physical) lines(2) = physical
+      do k = 1, n_task
+         lines(first - 1 + k) = scene%task%groups(k)%line()
+      end do
+   end function scene_namelist
+
+   !> The lines an output file's header holds: `title`, the scene file, the effective scene
+   !> (`scene_namelist`: given back as a scene, the file repeats its run), then `extra`.
+   function scene_header(scene, title, extra) result(lines)
+      type(scene_t), intent(in) :: scene  !! the scene of the run
+      character(len=*), intent(in) :: title  !! the first line: the program, its version, what the file holds
+      character(len=*), intent(in) :: extra(:)  !! the lines after the namelist groups
+      character(len=:), allocatable :: lines(:)
+      character(len=:), allocatable :: groups(:), source_line
+      groups = scene_namelist(scene)
+      source_line = "scene file: "//scene%source//" (the namelist lines below repeat this run)"
+      allocate (character(len=max(len(title), len(source_line), len(groups), len(extra))) :: &
+         lines(2 + size(groups) + size(extra)))
+      lines(1) = title
+      lines(2) = source_line
+      lines(3:2 + size(groups)) = groups
+      lines(3 + size(groups):) = extra
+   end function scene_header
+
+   !> α (elastic model) or ν of eq. (21) (Mathieu model) and β of the pendulum at each
+   !> amplitude of `&physical a`: a (2, n) array like the points of a points file.
+   pure function physical_points(scene) result(points)
+      type(scene_t), intent(in) :: scene  !! a scene with `&physical a`
+      real(wp), allocatable :: points(:, :)
+      type(physical_t) :: p
+      integer :: k
+      allocate (points(2, size(scene%amplitudes)))
+      p = scene%pendulum
+      do k = 1, size(scene%amplitudes)
+         p%a = scene%amplitudes(k)
+         points(1, k) = model_physical_alpha(scene%model, p)
+         points(2, k) = physical_beta(p)
+      end do
+   end function physical_points
+
+   !> Header lines of a scene in physical units: the spring as the run understood it —
+   !> k and m (when given), ω, r0, g, ρ (when r0 is given), κ and ε, the radial period
+   !> and the conversions (eqs. (4), (24), (46)).
+   function physical_summary(scene) result(lines)
+      type(scene_t), intent(in) :: scene  !! a scene with `&physical`
+      character(len=:), allocatable :: lines(:)
+      character(len=400) :: text(3)
+      character(len=:), allocatable :: spring
+      associate (p => scene%pendulum)
+         if (size(scene%omegas) > 0) then
+            spring = "omega = "//real_text(scene%omegas(1))//" ... "//real_text(scene%omegas(size(scene%omegas)))// &
+                     " rad/s ("//integer_text(size(scene%omegas))//" values, the chart's second axis)"
+         else if (scene%spring_k > 0.0_wp) then
+            spring = "k = "//real_text(scene%spring_k)//" N/m, m = "//real_text(scene%spring_m)// &
+                     " kg, omega = sqrt(k/m) = "//real_text(p%omega)//" rad/s"
+         else
+            spring = "omega = "//real_text(p%omega)//" rad/s"
+         end if
+         if (size(scene%omegas) > 0) then
+            spring = spring//", r0 = "//real_text(p%r0)//" m, g = "//real_text(p%g)//" m/s^2; rho = r0 + g/omega^2 "// &
+                     "from "//real_text(p%r0 + p%g/scene%omegas(1)**2)//" m down to "// &
+                     real_text(p%r0 + p%g/scene%omegas(size(scene%omegas))**2)//" m"
+         else if (scene%spring_r0) then
+            spring = spring//", r0 = "//real_text(p%r0)//" m, g = "//real_text(p%g)//" m/s^2, rho = r0 + g/omega^2 = "// &
+                     real_text(equilibrium_length(p))//" m, beta = "//real_text(physical_beta(p))
+         else
+            spring = spring//", g = "//real_text(p%g)//" m/s^2 (r0 not given: rho = g pi^2/(beta omega^2) varies with beta)"
+         end if
+         text(1) = "physical units (SI): rho = r0 + g/omega^2 (eq. (4)), tau = omega t/pi, alpha = a pi^2/rho, "// &
+                   "beta = g pi^2/(rho omega^2) (eq. (24)), epsilon = kappa pi/omega (eq. (46))"
+         text(2) = "spring: "//spring
+         if (size(scene%omegas) > 0) then
+            text(3) = "kappa = "//real_text(p%kappa)//" 1/s, epsilon = kappa pi/omega at each omega; radial "// &
+                      "period 2 pi/omega from "//real_text(2.0_wp*pi/scene%omegas(1))//" s down to "// &
+                      real_text(2.0_wp*pi/scene%omegas(size(scene%omegas)))//" s (2 units of tau)"
+         else
+            text(3) = "kappa = "//real_text(p%kappa)//" 1/s, epsilon = "//real_text(scene%epsilon)// &
+                      "; radial period 2 pi/omega = "//real_text(2.0_wp*pi/p%omega)//" s (2 units of tau)"
+         end if
+      end associate
+      lines = text
+   end function physical_summary
+
+   !> Default: no alternative groups.
+   subroutine task_template_alternatives(self, groups, notes)
+      class(task_t), intent(in) :: self  !! the task
+      type(group_t), allocatable, intent(out) :: groups(:)  !! the groups, commented out in templates
+      character(len=80), allocatable, intent(out) :: notes(:)  !! one comment line per group
+      allocate (groups(0), notes(0))
+   end subroutine task_template_alternatives
+
+   !> Default: the task bounds its own output.
+   pure function task_estimated_bytes(self, scene) result(bytes)
+      class(task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      bytes = 0
+   end function task_estimated_bytes
+
+   !> Default: memory of a task whose buffers do not grow with its scene (a few MB).
+   function task_memory_bytes(self, scene) result(bytes)
+      class(task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      bytes = 0
+   end function task_memory_bytes
+
+   !> Default: the task's groups.
+   function task_size_variables(self) result(text)
+      class(task_t), intent(in) :: self  !! the task
+      character(len=:), allocatable :: text
+      text = "task '"//self%name//"'"
+   end function task_size_variables
+
+   !> Default: not distributable.
+   pure function task_point_count(self) result(n)
+      class(task_t), intent(in) :: self  !! the task
+      integer(int64) :: n
+      n = 0
+   end function task_point_count
+
+   !> Default: one point a unit.
+   pure integer function task_unit_size(self, n_workers) result(size)
+      class(task_t), intent(in) :: self  !! the task
+      integer, intent(in) :: n_workers   !! processes computing units (>= 1)
+      size = 1
+   end function task_unit_size
+
+   !> Default: nothing shared.
+   subroutine task_prepare_units(self, scene)
+      class(task_t), intent(inout) :: self  !! the task
+      type(scene_t), intent(in) :: scene    !! its scene
+   end subroutine task_prepare_units
+
+   !> Default: no units (a driver asks only tasks with a point count).
+   subroutine task_unit_text(self, scene, unit, first, last, text, statuses)
+      class(task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer, intent(in) :: unit  !! the unit, 1 …
+      integer(int64), intent(in) :: first, last  !! its points
+      character(len=:), allocatable, intent(out) :: text  !! the lines as the file holds them, no final new line
+      integer, intent(out) :: statuses(first:last)  !! per point
+      text = ""
+      statuses = 0
+   end subroutine task_unit_text
+
+   !> Default: the task cannot run in units.
+   subroutine task_open_units(self, scene, file, error)
+      class(task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      type(output_file_t), intent(inout) :: file  !! the open output file
+      type(error_t), allocatable, intent(out) :: error  !! why the units cannot be written
+      call set_error(error, err_input, scene%source//": &scene: task: task '"//self%name// &
+         "' does not run in units")
+   end subroutine task_open_units
+
+   !> Default: nothing to report.
+   subroutine task_finish_units(self, scene, n_points, n_failed, first_failed, n_inaccurate, first_inaccurate, error)
+      class(task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64), intent(in) :: n_points  !! all points
+      integer(int64), intent(in) :: n_failed  !! failed points written
+      real(wp), intent(in) :: first_failed(2)  !! (α, β) of the first of them
+      integer(int64), intent(in) :: n_inaccurate  !! round-off limited points written
+      real(wp), intent(in) :: first_inaccurate(2)  !! (α, β) of the first of them
+      type(error_t), allocatable, intent(out) :: error  !! err_points_failed when points failed
+   end subroutine task_finish_units
+
+   !> Default: no points.
+   pure function task_point_of(self, k) result(point)
+      class(task_t), intent(in) :: self  !! the task
+      integer(int64), intent(in) :: k  !! the point, 1 … point_count
+      real(wp) :: point(2)
+      point = 0.0_wp
+   end function task_point_of
+end module hillstab_batch_scene_types

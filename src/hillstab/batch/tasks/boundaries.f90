@@ -1,0 +1,861 @@
+!> Task `boundaries`: the transition curves (S = ±2) over the α grid of `&chart`,
+!> inside its β window, written as one gnuplot block per curve.
+!>
+!> - method auto or any exact method: Hill's method (hillstab_curves_hill_method), every
+!>   boundary checked independently by method auto (hillstab_curves_boundaries); a boundary
+!>   that fails the check is written with status_failed and the run reports it
+!>   (err_points_failed, exit status 3), it is never written as ok;
+!> - method formula or segments: the roots of S_method(β) = ±2 by Brent's method on a
+!>   bracket sampled at n_beta points of the window (`n_beta` is used only here);
+!> - a model with an independent GSL witness (Mathieu: a_n, b_n) gets it as a column
+!>   beside Hill's values.
+!>
+!> The work runs in parallel (OpenMP, dynamic schedule: the truncation grows towards
+!> α → π² and with β): for the exact methods the four blocks of Hill's matrix at every α,
+!> then the check by auto of every curve point found, each a unit of the progress line
+!> (one α may take minutes and hold hundreds of curves); for formula and segments the α
+!> values. The file is written once all are done, curve by curve.
+module hillstab_batch_tasks_boundaries
+   use hillstab_core_kinds, only: wp, int64, pi2, version_string
+   use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_step, progress_end
+   use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
+   use hillstab_core_status, only: status_ok, status_roundoff, status_failed
+   use hillstab_hill_models, only: model_description, model_has_witness, model_witness_beta, model_is_pendulum, &
+      model_name, hill_model_t
+   use hillstab_hill_units, only: equilibrium_length, physical_beta
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_integrate_monodromy, only: monodromy_trace, method_t, method_auto
+   use hillstab_core_error, only: err_accuracy
+   use hillstab_hill_coefficient, only: in_physical_domain, sampling_name
+   use hillstab_integrate_monodromy, only: method_name, method_is_exact, method_uses_segments, method_pieces
+   use hillstab_curves_hill_method, only: hill_boundary_t, hill_boundaries, coexistence_threshold, &
+      hill_block_values_t, hill_block_values, hill_curves
+   use hillstab_curves_boundaries, only: boundary_check_t, verify_boundary, approximate_root_t, approximate_boundaries, &
+      beta_accuracy_factor, gsl_witness_max_q, alpha_crossing_t, alpha_crossings, crossing_search_gap
+   use hillstab_batch_scene_types, only: scene_t, task_t, scene_header, output_path, open_scene_output, physical_summary
+   use hillstab_batch_scene_declaration, only: group_t
+   use hillstab_batch_scene_file, only: scene_file_t, fail, group_present
+   use hillstab_batch_scene_checks, only: max_boundaries_magnitude, min_pendulum_beta
+   use hillstab_batch_tasks_chart_columns, only: point_amplitude
+   use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value
+   use hillstab_batch_output_columns, only: column_t, style_e17, style_e4, style_integer, style_width2, style_width4, &
+      columns_text, put_row, all_columns, column_lines
+   use hillstab_batch_output_file, only: output_file_t, finish_output, discard_output, write_header, write_text
+   use hillstab_core_text, only: real_text, integer_text
+   implicit none
+   private
+   public :: boundaries_task_t, boundaries_task, boundary_row_t, compute_boundary_rows
+
+   !> One row of the file: one curve at one α.
+   type :: boundary_row_t
+      real(wp) :: alpha = 0.0_wp, beta = 0.0_wp  !! the boundary point
+      integer :: trace_sign = 2          !! +2 / −2
+      integer :: order = 0               !! n of a_n, b_n
+      integer :: branch = 1              !! exact: 1 even (a_n), 2 odd (b_n); approximate: 1 lower, 2 upper edge
+      logical :: coexistent = .false.  !! both curves of this order coincide here (coexistence)
+      integer :: status = status_ok  !! a status_* code of hillstab_core_status
+      real(wp) :: check = 0.0_wp         !! exact: S by auto at the point; approximate: S_method
+      real(wp) :: beta_error = 0.0_wp    !! error estimate of beta
+      integer :: modes = 0               !! exact: modes of the truncation; approximate: pieces
+      real(wp) :: beta_gsl = 0.0_wp      !! with a witness: GSL's value (beta when unavailable)
+      integer :: gsl_ok = 0              !! 1 GSL agrees, 0 GSL not used here, 2 GSL disagrees with Hill
+   end type boundary_row_t
+
+   !> GSL's value counts as agreeing with Hill's when within this times max(1, |β|).
+   real(wp), parameter :: gsl_agreement = 1.0e-8_wp
+
+   !> The rows of one α.
+   type :: alpha_rows_t
+      type(boundary_row_t), allocatable :: rows(:)
+      logical :: failed = .false.                 !! Hill's method itself failed at this α
+      character(len=:), allocatable :: message    !! why
+   end type alpha_rows_t
+
+   !> The boundaries task and the grid of `&chart` (`n_beta` used by formula and segments).
+   type, extends(task_t) :: boundaries_task_t
+      type(chart_grid_t) :: grid  !! `&chart`
+      !> `&physical` without `&chart`: the critical amplitudes of one spring (S = ±2 along α
+      !> at its fixed β)
+      logical :: spring = .false.
+   contains
+      procedure :: read => boundaries_read
+      procedure :: run => boundaries_run
+      procedure :: declarations => boundaries_declarations
+   end type boundaries_task_t
+
+contains
+
+   !> `&chart`.
+   function boundaries_declarations(self) result(groups)
+      class(boundaries_task_t), intent(in) :: self  !! the task
+      type(group_t), allocatable :: groups(:)
+      allocate (groups(1))
+      groups(1) = chart_group()
+      if (self%spring) deallocate (groups)
+      if (self%spring) allocate (groups(0))
+   end function boundaries_declarations
+
+   !> A boundaries task before its scene is read.
+   function boundaries_task() result(task)
+      type(boundaries_task_t) :: task
+      task%name = "boundaries"
+      task%takes_spring = .true.
+   end function boundaries_task
+
+   !> `&chart`, bounded for Hill's method; the curves are those of the undamped equation.
+   subroutine boundaries_read(self, file, scene, error)
+      class(boundaries_task_t), intent(inout) :: self  !! the task, its grid filled in
+      type(scene_file_t), intent(in) :: file      !! the scene file
+      type(scene_t), intent(in) :: scene          !! the `&scene` settings
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
+      if (scene%epsilon > 0.0_wp .and. .not. scene%physical) then
+         call fail(error, file%path, "scene", "epsilon", "task 'boundaries' draws the undamped curves: epsilon must be 0")
+         return
+      end if
+      if (scene%physical .and. .not. group_present(file%unit, "chart")) then
+         call read_spring(self, file, scene, error)
+         return
+      end if
+      if (scene%spring_r0) then
+         call fail(error, file%path, "physical", "r0", "r0 fixes beta: with &chart the curves run over its beta "// &
+            "window (drop r0), without &chart the task finds the critical amplitudes of the spring (drop &chart)")
+         return
+      end if
+      allocate (self%groups(1))
+      call read_chart_group(file, chart_group(), scene%model, self%grid, self%groups(1), error)
+      if (allocated(error)) return
+      call check_boundaries_cost(scene, self%grid, error)
+   end subroutine boundaries_read
+
+   !> `&physical` without `&chart`: one spring, whose β is fixed by r0, g and ω.
+   subroutine read_spring(self, file, scene, error)
+      class(boundaries_task_t), intent(inout) :: self
+      type(scene_file_t), intent(in) :: file
+      type(scene_t), intent(in) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: beta
+      self%spring = .true.
+      allocate (self%groups(0))
+      if (.not. scene%spring_r0) then
+         call fail(error, file%path, "physical", "r0", "the critical amplitudes of a spring (task boundaries with "// &
+            "&physical and no &chart) need r0, the natural length of the spring (m); for the curves over a grid "// &
+            "give &chart")
+         return
+      end if
+      if (scene%epsilon > 0.0_wp) then
+         call fail(error, file%path, "physical", "kappa", "task 'boundaries' draws the undamped curves: kappa "// &
+            "must be 0")
+         return
+      end if
+      if (.not. model_is_pendulum(scene%model)) then
+         call fail(error, file%path, "scene", "model", "the critical amplitudes of a spring are those of the "// &
+            "elastic model, not of model '"//model_name(scene%model)//"'")
+         return
+      end if
+      if (.not. method_is_exact(scene%method%kind)) then
+         call fail(error, file%path, "scene", "method", "the critical amplitudes of a spring are found by Hill's "// &
+            "method: method must be auto or an exact method, not '"//method_name(scene%method%kind)//"'")
+         return
+      end if
+      beta = physical_beta(scene%pendulum)
+      if (beta < min_pendulum_beta) then
+         call fail(error, file%path, "physical", "g", "beta = g pi^2/(rho omega^2) = "//real_text(beta)// &
+            " lies below "//real_text(min_pendulum_beta)//" (g = 0 or a spring too stiff to sag): S = 2 "// &
+            "there at every amplitude")
+      else if (pi2 - beta < min_pendulum_beta*pi2) then
+         call fail(error, file%path, "physical", "r0", "beta = "//real_text(beta)//" is within "// &
+            real_text(min_pendulum_beta)//" pi^2 of pi^2 (r0 negligible beside the sag g/omega^2): Q = pi^2, "// &
+            "nothing resonates")
+      end if
+   end subroutine read_spring
+
+   !> The boundaries task (Hill's method, its matrix growing with sqrt|alpha|) is bounded
+   !> to |alpha|, |beta| <= max_boundaries_magnitude.
+   subroutine check_boundaries_cost(scene, grid, error)
+      type(scene_t), intent(in) :: scene
+      type(chart_grid_t), intent(in) :: grid
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: why = " for task boundaries (the cost of Hill's method grows with the magnitude)"
+      if (max(abs(grid%alpha_min), abs(grid%alpha_max)) > max_boundaries_magnitude) then
+         call fail(error, scene%source, "chart", merge("alpha_max", "alpha_min", &
+            abs(grid%alpha_max) >= abs(grid%alpha_min)), "|alpha| must be <= "// &
+            real_text(max_boundaries_magnitude)//why)
+      else if (max(abs(grid%beta_min), abs(grid%beta_max)) > max_boundaries_magnitude) then
+         call fail(error, scene%source, "chart", merge("beta_max", "beta_min", &
+            abs(grid%beta_max) >= abs(grid%beta_min)), "|beta| must be <= "// &
+            real_text(max_boundaries_magnitude)//why)
+      end if
+   end subroutine check_boundaries_cost
+
+   logical function exact_method(scene)
+      type(scene_t), intent(in) :: scene
+      exact_method = method_is_exact(scene%method%kind)
+   end function exact_method
+
+   !> The columns of the boundaries file (the GSL witness columns for the Mathieu model).
+   function boundary_columns(mathieu, amplitude) result(table)
+      logical, intent(in) :: mathieu  !! add the GSL witness columns
+      !> add the column a [m] (a scene with `&physical`: a = alpha g/(beta omega^2))
+      logical, intent(in) :: amplitude
+      type(column_t), allocatable :: table(:)
+      type(column_t), allocatable :: with_a(:)
+      integer :: k
+      allocate (table(merge(13, 11, mathieu)))
+      table(1) = column_t("alpha", "", "alpha of the boundary point", style_e17)
+      table(2) = column_t("beta", "", "beta of the boundary point", style_e17)
+      table(3) = column_t("kind", "", "S on the curve: +2 periodic, -2 antiperiodic", style_integer)
+      table(4) = column_t("order", "", "n of a_n/b_n", style_width4)
+      table(5) = column_t("branch", "", "exact 1 = a_n (even), 2 = b_n (odd); approximate 1 = lower, 2 = upper edge", &
+                          style_width2)
+      table(6) = column_t("curve", "", "the block's index (gnuplot index = curve)", style_width4)
+      table(7) = column_t("coexist", "", "1 when both curves of this order coincide", style_integer)
+      table(8) = column_t("status", "", "0 ok, 1 check by auto limited by round-off, 2 failed the check", style_integer)
+      table(9) = column_t("check", "", "S by auto at the point (approximate: S_method)", style_e17)
+      table(10) = column_t("beta_error", "", "estimated error of beta", style_e4)
+      table(11) = column_t("modes", "", "Fourier modes of the truncation (approximate: pieces)", style_integer)
+      if (mathieu) then
+         table(12) = column_t("beta_gsl", "", "GSL's value of the curve", style_e17)
+         table(13) = column_t("gsl_ok", "", "1 GSL agrees, 2 disagrees, 0 not used", style_integer)
+      end if
+      if (amplitude) then
+         allocate (with_a(size(table) + 1))
+         with_a(1) = table(1)
+         with_a(2) = column_t("a", "m", "bounce amplitude a = alpha rho/pi^2 with rho = g pi^2/(beta omega^2) "// &
+                              "(eq. (24)); -1 where beta <= 0 (no equilibrium length)", style_e17)
+         do k = 2, size(table)
+            with_a(k + 1) = table(k)
+         end do
+         call move_alloc(with_a, table)
+      end if
+   end function boundary_columns
+
+   !> All boundaries at one α, by Hill's method (checked by auto) or by root finding.
+   subroutine compute_boundary_rows(scene, grid, alpha, rows, error)
+      type(scene_t), intent(in) :: scene  !! a validated boundaries scene
+      type(chart_grid_t), intent(in) :: grid  !! its `&chart`
+      real(wp), intent(in) :: alpha  !! the alpha of the rows
+      type(boundary_row_t), allocatable, intent(out) :: rows(:)  !! one row per curve crossing the beta window
+      type(error_t), allocatable, intent(out) :: error  !! what failed at this alpha; unallocated on success
+      integer :: i
+      call find_boundary_rows(scene, grid, alpha, rows, error)
+      if (exact_method(scene)) then
+         do i = 1, size(rows)
+            call check_boundary_row(scene, rows(i))
+         end do
+      end if
+   end subroutine compute_boundary_rows
+
+   !> The boundaries at one α before their check: Hill's method's curves (the check by auto,
+   !> `check_boundary_row`, still to do for each; beta_error holds Hill's own bound), or the
+   !> roots of the approximate methods (complete).
+   subroutine find_boundary_rows(scene, grid, alpha, rows, error)
+      type(scene_t), intent(in) :: scene
+      type(chart_grid_t), intent(in) :: grid
+      real(wp), intent(in) :: alpha
+      type(boundary_row_t), allocatable, intent(out) :: rows(:)
+      type(error_t), allocatable, intent(out) :: error
+      type(hill_boundary_t), allocatable :: curves(:)
+      type(approximate_root_t), allocatable :: roots(:)
+      integer :: i, j
+      if (exact_method(scene)) then
+         call hill_boundaries(scene%model, alpha, grid%beta_min, grid%beta_max, &
+                              scene%method%tolerance, curves, error)
+         if (allocated(error)) then
+            allocate (rows(0))
+            return
+         end if
+         rows = rows_of_curves(alpha, curves)
+      else
+         call approximate_boundaries(scene%model, alpha, scene%method, grid%beta_min, grid%beta_max, &
+                                     max(grid%n_beta, 2), scene%method%tolerance, roots, error)
+         if (allocated(error)) then
+            allocate (rows(0))
+            return
+         end if
+         allocate (rows(size(roots)))
+         do i = 1, size(roots)
+            rows(i)%alpha = alpha
+            rows(i)%beta = roots(i)%beta
+            rows(i)%trace_sign = roots(i)%trace_sign
+            rows(i)%order = roots(i)%order
+            rows(i)%branch = max(roots(i)%edge, 1)
+            rows(i)%check = roots(i)%residual + roots(i)%trace_sign
+            rows(i)%beta_error = scene%method%tolerance*max(1.0_wp, abs(roots(i)%beta))
+            rows(i)%modes = method_pieces(scene%method)
+            if (model_has_witness(scene%model)) rows(i)%beta_gsl = rows(i)%beta
+         end do
+         ! coexistence: both edges of an order found and equal to the accuracy
+         do i = 1, size(rows)
+            do j = 1, size(rows)
+               if (i == j .or. rows(i)%order /= rows(j)%order .or. rows(i)%order == 0) cycle
+               if (abs(rows(i)%beta - rows(j)%beta) <= coexistence_threshold*scene%method%tolerance* &
+                   max(1.0_wp, abs(rows(i)%beta))) rows(i)%coexistent = .true.
+            end do
+         end do
+      end if
+   end subroutine find_boundary_rows
+
+   !> The rows of Hill's method's curves at one alpha, before their check (beta_error: Hill's
+   !> own bound).
+   function rows_of_curves(alpha, curves) result(rows)
+      real(wp), intent(in) :: alpha
+      type(hill_boundary_t), intent(in) :: curves(:)
+      type(boundary_row_t), allocatable :: rows(:)
+      integer :: i
+      allocate (rows(size(curves)))
+      do i = 1, size(curves)
+         rows(i)%alpha = alpha
+         rows(i)%beta = curves(i)%beta
+         rows(i)%trace_sign = curves(i)%trace_sign
+         rows(i)%order = curves(i)%order
+         rows(i)%branch = merge(1, 2, curves(i)%parity == 1)
+         rows(i)%coexistent = curves(i)%coexistent
+         rows(i)%modes = curves(i)%modes
+         rows(i)%beta_error = curves(i)%error_bound
+      end do
+   end function rows_of_curves
+
+   !> One boundary of Hill's method checked by method auto (its status, check and beta_error),
+   !> with GSL's witness value for a model that has one.
+   subroutine check_boundary_row(scene, row)
+      type(scene_t), intent(in) :: scene
+      type(boundary_row_t), intent(inout) :: row
+      type(boundary_check_t) :: check
+      type(error_t), allocatable :: cause
+      logical :: available
+      call verify_boundary(scene%model, row%alpha, row%beta, row%trace_sign, scene%method%tolerance, check, cause)
+      row%check = check%trace
+      row%beta_error = max(row%beta_error, check%beta_error)
+      if (allocated(cause)) then
+         row%status = status_failed
+      else if (.not. check%passed) then
+         row%status = status_failed
+      else if (check%roundoff) then
+         row%status = status_roundoff
+      end if
+      if (model_has_witness(scene%model)) then
+         ! the parity as hill_boundary_t has it: +1 even (a_n), -1 odd (b_n)
+         call model_witness_beta(scene%model, row%order, merge(1, -1, row%branch == 1), row%alpha, row%beta_gsl, &
+                                 available)
+         if (.not. available) then
+            row%gsl_ok = 0
+            row%beta_gsl = row%beta
+         else if (abs(row%beta_gsl - row%beta) <= gsl_agreement*max(1.0_wp, abs(row%beta))) then
+            row%gsl_ok = 1
+         else
+            row%gsl_ok = 2   ! GSL computed a value that disagrees with Hill's method: flagged
+         end if
+      end if
+   end subroutine check_boundary_row
+
+   !> The boundaries task.
+   subroutine boundaries_run(self, scene, quiet, error)
+      class(boundaries_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! a validated boundaries scene
+      logical, intent(in) :: quiet  !! no progress on stderr (alphas done, then curve points checked)
+      type(error_t), allocatable, intent(out) :: error  !! what failed; unallocated on success
+      type(output_file_t) :: file
+      type(progress_t) :: progress
+      type(alpha_rows_t), allocatable :: per_alpha(:)
+      integer, allocatable :: keys(:, :)
+      integer :: i, j, c, n_alpha, n_failed_rows, n_failed_alpha, last_i, first_failed
+      logical :: mathieu, found, any_written
+      character(len=:), allocatable :: line, first_message
+      type(error_t), allocatable :: cause
+      real(wp) :: first_failure(2)
+      type(column_t), allocatable :: table(:)
+      if (self%spring) then
+         call spring_run(scene, quiet, error)
+         return
+      end if
+      if (scene%epsilon > 0.0_wp) then   ! damping from &physical kappa
+         call set_error(error, err_input, scene%source//": &physical: kappa: task 'boundaries' draws the "// &
+            "undamped curves: kappa must be 0")
+         return
+      end if
+      call open_scene_output(scene, file, error)
+      if (allocated(error)) return
+      mathieu = model_has_witness(scene%model)
+      n_alpha = self%grid%n_alpha
+      allocate (per_alpha(n_alpha))
+      if (exact_method(scene)) then
+         ! the four blocks of Hill's matrix at every alpha, then the check of every curve point
+         ! by auto: the units of progress and of the parallel loops (near alpha = pi^2 or at
+         ! large |beta| one block takes many seconds and one alpha holds hundreds of curves)
+         call find_hill_rows(scene, self%grid, per_alpha, quiet)
+         call check_every_row(scene, per_alpha, quiet)
+      else
+         call progress_begin(progress, int(n_alpha, int64), quiet, "alphas")
+         !$omp parallel do schedule(dynamic) default(shared) private(i, cause)
+         do i = 1, n_alpha
+            call find_boundary_rows(scene, self%grid, grid_value(self%grid%alpha_min, self%grid%alpha_max, &
+                                    n_alpha, i), per_alpha(i)%rows, cause)
+            if (allocated(cause)) then
+               per_alpha(i)%failed = .true.
+               per_alpha(i)%message = cause%message
+            end if
+            call progress_step(progress)
+         end do
+         !$omp end parallel do
+         call progress_end(progress)
+      end if
+
+      ! the curves present anywhere, ordered by order, then branch
+      allocate (keys(3, 0))
+      do i = 1, n_alpha
+         do j = 1, size(per_alpha(i)%rows)
+            associate (r => per_alpha(i)%rows(j))
+               found = .false.
+               do c = 1, size(keys, 2)
+                  if (all(keys(:, c) == [r%order, r%branch, r%trace_sign])) found = .true.
+               end do
+               if (.not. found) keys = reshape([keys, r%order, r%branch, r%trace_sign], [3, size(keys, 2) + 1])
+            end associate
+         end do
+      end do
+      call sort_keys(keys)
+
+      table = boundary_columns(mathieu, amplitude_column(scene))
+      call write_header(file, header(scene, self%grid, size(keys, 2)), columns_text(table, all_columns(table)), error)
+      if (allocated(error)) then
+         call discard_output(file)
+         return
+      end if
+      n_failed_rows = 0
+      first_failed = 0
+      do c = 1, size(keys, 2)
+         ! blocks separated by two blank lines (gnuplot `index`); a gap in α inside a curve by one
+         if (c > 1) then
+            call write_text(file, new_line("a"), error)
+            if (allocated(error)) exit
+         end if
+         last_i = -1
+         any_written = .false.
+         do i = 1, n_alpha
+            do j = 1, size(per_alpha(i)%rows)
+               associate (r => per_alpha(i)%rows(j))
+                  if (.not. all([r%order, r%branch, r%trace_sign] == keys(:, c))) cycle
+                  if (any_written .and. last_i /= i - 1) call write_text(file, "", error)
+                  line = row_text(table, r, c - 1, mathieu, scene)
+                  call write_text(file, line, error)
+                  if (r%status == status_failed) then
+                     n_failed_rows = n_failed_rows + 1
+                     if (first_failed == 0) then
+                        first_failed = 1
+                        first_failure = [r%alpha, r%beta]
+                     end if
+                  end if
+                  last_i = i
+                  any_written = .true.
+               end associate
+            end do
+            if (allocated(error)) exit
+         end do
+         if (allocated(error)) exit
+      end do
+      call finish_output(file, error)
+      if (allocated(error)) return
+      n_failed_alpha = count(per_alpha%failed)
+      if (n_failed_alpha > 0 .or. n_failed_rows > 0) then
+         first_message = ""
+         do i = 1, n_alpha
+            if (per_alpha(i)%failed) then
+               first_message = "; Hill's method failed at alpha = "// &
+                  real_text(grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i))//": "// &
+                  per_alpha(i)%message
+               exit
+            end if
+         end do
+         if (first_failed > 0) first_message = first_message//"; first boundary failing the check by auto at alpha = "// &
+            real_text(first_failure(1))//", beta = "//real_text(first_failure(2))
+         call set_error(error, err_points_failed, scene%source//": &scene: method: '"// &
+            method_name(scene%method%kind)//"': "//integer_text(n_failed_rows)// &
+            " boundary point(s) failed the check (status "//integer_text(status_failed)//" in "// &
+            output_path(scene)//") and "//integer_text(n_failed_alpha)//" alpha value(s) have no boundaries"// &
+            first_message)
+      end if
+   end subroutine boundaries_run
+
+   !> Hill's method at every alpha of the grid, block by block in parallel (with progress per
+   !> block), the blocks of each alpha then joined into its rows (as `hill_boundaries` does);
+   !> an alpha whose block failed has no rows and the first failing block's message.
+   subroutine find_hill_rows(scene, grid, per_alpha, quiet)
+      type(scene_t), intent(in) :: scene
+      type(chart_grid_t), intent(in) :: grid
+      type(alpha_rows_t), intent(inout) :: per_alpha(:)
+      logical, intent(in) :: quiet
+      type(hill_block_values_t), allocatable :: blocks(:, :)
+      type(hill_boundary_t), allocatable :: curves(:)
+      type(progress_t) :: progress
+      type(error_t), allocatable :: cause
+      type(alpha_rows_t), allocatable :: outcomes(:, :)   ! failed and message per block
+      integer :: i, k, block, n_alpha
+      n_alpha = size(per_alpha)
+      allocate (blocks(4, n_alpha), outcomes(4, n_alpha))
+      call progress_begin(progress, 4_int64*n_alpha, quiet, "Hill blocks")
+      !$omp parallel do schedule(dynamic) default(shared) private(k, i, block, cause)
+      do k = 1, 4*n_alpha
+         i = (k - 1)/4 + 1
+         block = k - 4*(i - 1)
+         call hill_block_values(scene%model, grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i), block, &
+                                grid%beta_min, grid%beta_max, scene%method%tolerance, blocks(block, i), cause)
+         if (allocated(cause)) then
+            outcomes(block, i)%failed = .true.
+            outcomes(block, i)%message = cause%message
+         end if
+         call progress_step(progress)
+      end do
+      !$omp end parallel do
+      call progress_end(progress)
+      do i = 1, n_alpha
+         block = findloc(outcomes(:, i)%failed, .true., dim=1)
+         if (block > 0) then
+            per_alpha(i)%failed = .true.
+            per_alpha(i)%message = outcomes(block, i)%message
+            allocate (per_alpha(i)%rows(0))
+         else
+            call hill_curves(scene%model, grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i), grid%beta_min, &
+                             grid%beta_max, blocks(:, i), curves)
+            per_alpha(i)%rows = rows_of_curves(grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i), curves)
+         end if
+      end do
+   end subroutine find_hill_rows
+
+   !> Every curve point of Hill's method checked by auto (`check_boundary_row`), in parallel
+   !> over all alphas, with progress per point.
+   subroutine check_every_row(scene, per_alpha, quiet)
+      type(scene_t), intent(in) :: scene
+      type(alpha_rows_t), intent(inout) :: per_alpha(:)
+      logical, intent(in) :: quiet
+      type(progress_t) :: progress
+      integer, allocatable :: alpha_of(:), row_of(:)
+      integer :: i, j, k, n
+      n = 0
+      do i = 1, size(per_alpha)
+         n = n + size(per_alpha(i)%rows)
+      end do
+      allocate (alpha_of(n), row_of(n))
+      k = 0
+      do i = 1, size(per_alpha)
+         do j = 1, size(per_alpha(i)%rows)
+            k = k + 1
+            alpha_of(k) = i
+            row_of(k) = j
+         end do
+      end do
+      call progress_begin(progress, int(n, int64), quiet, "curve points")
+      !$omp parallel do schedule(dynamic) default(shared) private(k)
+      do k = 1, n
+         call check_boundary_row(scene, per_alpha(alpha_of(k))%rows(row_of(k)))
+         call progress_step(progress)
+      end do
+      !$omp end parallel do
+      call progress_end(progress)
+   end subroutine check_every_row
+
+   !> The columns of the critical amplitudes of a spring.
+   function spring_columns() result(table)
+      type(column_t), allocatable :: table(:)
+      allocate (table(11))
+      table(1) = column_t("a", "m", "critical bounce amplitude: the stability of the bounce changes here", style_e17)
+      table(2) = column_t("alpha", "", "alpha = a pi^2/rho of the crossing", style_e17)
+      table(3) = column_t("beta", "", "the spring's beta = g pi^2/(rho omega^2)", style_e17)
+      table(4) = column_t("kind", "", "S at the crossing: +2 periodic, -2 antiperiodic", style_integer)
+      table(5) = column_t("order", "", "n of the curve a_n/b_n crossed", style_width4)
+      table(6) = column_t("branch", "", "1 = a_n (even), 2 = b_n (odd)", style_width2)
+      table(7) = column_t("status", "", "0 ok, 1 check by auto limited by round-off, 2 failed the check", &
+                          style_integer)
+      table(8) = column_t("check", "", "S by method auto at (alpha, beta): +-2 within the tolerance", style_e17)
+      table(9) = column_t("a_error", "m", "estimated error of a", style_e4)
+      table(10) = column_t("alpha_error", "", "estimated error of alpha", style_e4)
+      table(11) = column_t("modes", "", "Fourier modes of Hill's truncation at the crossing", style_integer)
+   end function spring_columns
+
+   !> The critical amplitudes of the spring of `&physical`: every 0 <= a < rho where a
+   !> transition curve crosses the spring's beta (alpha_crossings), each checked by auto;
+   !> the header states the unstable intervals of a in metres, from S by auto between them.
+   subroutine spring_run(scene, quiet, error)
+      type(scene_t), intent(in) :: scene
+      logical, intent(in) :: quiet
+      type(error_t), allocatable, intent(out) :: error
+      type(progress_t) :: progress
+      type(alpha_crossing_t), allocatable :: crossings(:)
+      type(boundary_check_t), allocatable :: checks(:)
+      integer, allocatable :: statuses(:)
+      type(column_t), allocatable :: table(:)
+      type(output_file_t) :: file
+      type(error_t), allocatable :: cause
+      real(wp) :: rho, beta, alpha_end, values(11)
+      real(wp), allocatable :: cuts(:)
+      logical, allocatable :: unstable(:)
+      character(len=400) :: buffer
+      character(len=:), allocatable :: intervals
+      integer :: j, pos, n_failed
+      rho = equilibrium_length(scene%pendulum)
+      beta = physical_beta(scene%pendulum)
+      alpha_end = pi2*(1.0_wp - crossing_search_gap)
+      call open_scene_output(scene, file, error)
+      if (allocated(error)) return
+      call alpha_crossings(scene%model, beta, alpha_end, scene%method%tolerance, crossings, cause)
+      if (allocated(cause)) then
+         call discard_output(file)
+         call set_error(error, cause%code, scene%source//": &physical: the critical amplitudes of the spring "// &
+            "could not be found: "//cause%message)
+         return
+      end if
+      allocate (checks(size(crossings)), statuses(size(crossings)))
+      ! progress over the checks of the crossings and the verdicts between them, by auto
+      call progress_begin(progress, int(2*size(crossings) + 1, int64), quiet, "auto checks")
+      !$omp parallel do schedule(dynamic) default(shared) private(j, cause)
+      do j = 1, size(crossings)
+         statuses(j) = status_ok
+         call verify_boundary(scene%model, crossings(j)%alpha, beta, crossings(j)%trace_sign, &
+                              scene%method%tolerance, checks(j), cause)
+         if (allocated(cause)) then
+            statuses(j) = status_failed
+         else if (.not. checks(j)%passed) then
+            statuses(j) = status_failed
+         else if (checks(j)%roundoff) then
+            statuses(j) = status_roundoff
+         end if
+         call progress_step(progress)
+      end do
+      !$omp end parallel do
+      ! the verdict between the critical amplitudes, by S of auto at the middle of each piece
+      cuts = [0.0_wp, crossings%alpha, alpha_end]
+      allocate (unstable(size(cuts) - 1))
+      unstable = .false.
+      !$omp parallel do schedule(dynamic) default(shared) private(j)
+      do j = 1, size(cuts) - 1
+         if (cuts(j + 1) > cuts(j)) unstable(j) = auto_unstable(scene, 0.5_wp*(cuts(j) + cuts(j + 1)), beta)
+         call progress_step(progress)
+      end do
+      !$omp end parallel do
+      call progress_end(progress)
+      intervals = unstable_text(cuts, unstable, rho, alpha_end)
+      table = spring_columns()
+      call write_header(file, spring_header(scene, table, rho, beta, alpha_end, intervals, size(crossings)), &
+                        columns_text(table, all_columns(table)), error)
+      n_failed = 0
+      do j = 1, size(crossings)
+         if (allocated(error)) exit
+         values = [crossings(j)%alpha*rho/pi2, crossings(j)%alpha, beta, real(crossings(j)%trace_sign, wp), &
+                   real(crossings(j)%order, wp), real(merge(1, 2, crossings(j)%parity == 1), wp), &
+                   real(statuses(j), wp), checks(j)%trace, crossings(j)%alpha_error*rho/pi2, &
+                   crossings(j)%alpha_error, real(crossings(j)%modes, wp)]
+         pos = 0
+         call put_row(table, all_columns(table), values, buffer, pos)
+         call write_text(file, buffer(:pos), error)
+         if (statuses(j) == status_failed) n_failed = n_failed + 1
+      end do
+      if (allocated(error)) then
+         call discard_output(file)
+         return
+      end if
+      call finish_output(file, error)
+      if (allocated(error)) return
+      if (n_failed > 0) then
+         j = findloc(statuses, status_failed, dim=1)
+         call set_error(error, err_points_failed, scene%source//": &scene: method: "//integer_text(n_failed)// &
+            " critical amplitude(s) failed the check by auto (status "//integer_text(status_failed)//" in "// &
+            output_path(scene)//"); first at a = "//real_text(crossings(j)%alpha*rho/pi2)//" m, alpha = "// &
+            real_text(crossings(j)%alpha))
+      end if
+   end subroutine spring_run
+
+   !> Whether the bounce is unstable at (alpha, beta): |S| > 2 by method auto.
+   logical function auto_unstable(scene, alpha, beta) result(unstable)
+      type(scene_t), intent(in) :: scene
+      real(wp), intent(in) :: alpha, beta
+      type(trace_t) :: tr
+      type(error_t), allocatable :: cause
+      call monodromy_trace(hill_model_t(scene%model, alpha, beta, 0.0_wp), &
+                           method_t(method_auto, tolerance=scene%method%tolerance), tr, cause)
+      unstable = abs(tr%value) > 2.0_wp .or. tr%overflow
+   end function auto_unstable
+
+   !> "unstable for 0.003811 m <= a < 0.3981 m" (4 significant digits; an unstable interval
+   !> reaching the end of the search ends at rho: inside the tongue there the bounce stays
+   !> unstable up to the pivot), or "stable for every 0 m <= a <= (the end of the search)".
+   function unstable_text(cuts, unstable, rho, alpha_end) result(text)
+      real(wp), intent(in) :: cuts(:), rho, alpha_end
+      logical, intent(in) :: unstable(:)
+      character(len=:), allocatable :: text
+      integer :: j
+      text = ""
+      do j = 1, size(unstable)
+         if (.not. unstable(j)) cycle
+         if (j > 1) then
+            if (unstable(j - 1)) cycle   ! joined to the interval before (a crossing of a zero-width tongue)
+         end if
+         if (len(text) > 0) text = text//" and "
+         text = text//digits4(cuts(j)*rho/pi2)//" m <= a < "
+         block
+            integer :: last
+            last = j
+            do while (last < size(unstable))
+               if (.not. unstable(last + 1)) exit
+               last = last + 1
+            end do
+            if (cuts(last + 1) >= alpha_end) then
+               text = text//digits4(rho)//" m"
+            else
+               text = text//digits4(cuts(last + 1)*rho/pi2)//" m"
+            end if
+         end block
+      end do
+      if (len(text) == 0) then
+         text = "stable for every 0 m <= a <= (1 - "//real_text(crossing_search_gap)//") rho (the end of "// &
+                "the search; rho = "//digits4(rho)//" m)"
+      else
+         text = "unstable for "//text
+      end if
+   end function unstable_text
+
+   !> x with 4 significant digits, plain decimal ("0.003811", "0.3981", "12.35").
+   function digits4(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: text
+      character(len=40) :: buffer, form
+      integer :: e, decimals
+      if (x == 0.0_wp) then
+         text = "0"
+         return
+      end if
+      e = floor(log10(abs(x)))
+      decimals = max(0, 3 - e)
+      if (decimals > 20 .or. e > 15) then
+         write (buffer, '(es11.3e3)') x
+      else
+         write (form, '(a, i0, a)') "(f40.", decimals, ")"
+         write (buffer, form) x
+      end if
+      text = trim(adjustl(buffer))
+      if (text(1:1) == ".") text = "0"//text
+   end function digits4
+
+   !> Header of the critical amplitudes: the spring, the method, the search, the verdicts.
+   function spring_header(scene, table, rho, beta, alpha_end, intervals, n) result(lines)
+      type(scene_t), intent(in) :: scene
+      type(column_t), intent(in) :: table(:)
+      real(wp), intent(in) :: rho, beta, alpha_end
+      character(len=*), intent(in) :: intervals
+      integer, intent(in) :: n
+      character(len=:), allocatable :: lines(:), spring(:), per_column(:)
+      character(len=400) :: text(8 + size(table))
+      integer :: k, m
+      spring = physical_summary(scene)
+      m = 0
+      m = m + 1; text(m) = model_description(scene%model)
+      do k = 1, size(spring)
+         m = m + 1; text(m) = spring(k)
+      end do
+      m = m + 1; text(m) = "critical amplitudes: every a where S = +-2 along alpha = a pi^2/rho at the spring's "// &
+         "beta = "//real_text(beta)//", searched over 0 <= a <= (1 - "//real_text(crossing_search_gap)// &
+         ") rho = "//real_text(alpha_end*rho/pi2)//" m"
+      m = m + 1; text(m) = "method: the curves by Hill's method (tolerance "//real_text(scene%method%tolerance)// &
+         "*max(1,|beta|)) at steps of 0.1 in alpha up to 0.9 pi^2, then 8 a decade in 1 - alpha/pi^2; each "// &
+         "crossing refined in alpha and checked by method auto"
+      m = m + 1; text(m) = integer_text(n)//" critical amplitude(s); verdicts between them by S of method auto: "// &
+         intervals
+      per_column = column_lines(table, all_columns(table))
+      do k = 1, size(per_column)
+         m = m + 1; text(m) = per_column(k)
+      end do
+      lines = scene_header(scene, "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau; critical "// &
+                           "amplitudes of a spring (S = +-2 along alpha)", text(:m))
+   end function spring_header
+
+   !> Sort curve keys (order, branch, kind) by order, then branch.
+   pure subroutine sort_keys(keys)
+      integer, intent(inout) :: keys(:, :)
+      integer :: i, j, t(3)
+      do i = 2, size(keys, 2)
+         t = keys(:, i)
+         j = i - 1
+         do while (j >= 1)
+            if (keys(1, j)*3 + keys(2, j) <= t(1)*3 + t(2)) exit
+            keys(:, j + 1) = keys(:, j)
+            j = j - 1
+         end do
+         keys(:, j + 1) = t
+      end do
+   end subroutine sort_keys
+
+   !> One data line.
+   !> Whether the file has the column a: a scene with `&physical` and the elastic model.
+   pure logical function amplitude_column(scene)
+      type(scene_t), intent(in) :: scene
+      amplitude_column = scene%physical .and. model_is_pendulum(scene%model)
+   end function amplitude_column
+
+   function row_text(table, r, curve, mathieu, scene) result(line)
+      type(column_t), intent(in) :: table(:)
+      type(boundary_row_t), intent(in) :: r
+      integer, intent(in) :: curve
+      logical, intent(in) :: mathieu
+      type(scene_t), intent(in) :: scene
+      character(len=:), allocatable :: line
+      character(len=400) :: buffer
+      integer :: pos
+      real(wp), allocatable :: values(:)
+      values = [r%alpha, r%beta, real(r%trace_sign, wp), real(r%order, wp), real(r%branch, wp), real(curve, wp), &
+                merge(1.0_wp, 0.0_wp, r%coexistent), real(r%status, wp), r%check, r%beta_error, real(r%modes, wp)]
+      if (mathieu) values = [values, r%beta_gsl, real(r%gsl_ok, wp)]
+      if (amplitude_column(scene)) values = [values(1:1), point_amplitude(scene, 1, r%alpha, r%beta), values(2:)]
+      pos = 0
+      call put_row(table, all_columns(table), values, buffer, pos)
+      line = buffer(:pos)
+   end function row_text
+
+   !> Header: version, scene (repeatable), model, method, columns explained.
+   function header(scene, grid, n_curves) result(lines)
+      type(scene_t), intent(in) :: scene
+      type(chart_grid_t), intent(in) :: grid
+      integer, intent(in) :: n_curves
+      character(len=:), allocatable :: lines(:)
+      character(len=240) :: text(16)
+      integer :: n
+      n = 0
+      n = n + 1; text(n) = model_description(scene%model)
+      if (exact_method(scene)) then
+         n = n + 1; text(n) = "method: Hill's method (eigenvalues of the banded symmetric-definite pencil, LAPACK "// &
+            "dsbgv), converged in the truncation to tolerance "//real_text(scene%method%tolerance)//"*max(1,|beta|)"
+         n = n + 1; text(n) = "each boundary checked by method auto: S = +-2 within 2*tolerance*max(1,|S|), or implied "// &
+            "beta error <= "//real_text(beta_accuracy_factor)//"*tolerance*max(1,|beta|)"
+      else
+         n = n + 1; text(n) = "method: "//method_name(scene%method%kind)//merge(" (the paper's eq. (37))", &
+            "                       ", method_pieces(scene%method) == 2 .and. .not. method_uses_segments(scene%method%kind))
+         if (method_uses_segments(scene%method%kind)) text(n) = trim(text(n))//", "// &
+            integer_text(scene%method%n_segments)//" pieces, sampling "//sampling_name(scene%method%sampling)
+         n = n + 1; text(n) = "roots of S_method = +-2 by Brent's method to tolerance*max(1,|beta|), brackets from "// &
+            integer_text(grid%n_beta)//" samples over the beta window (n_beta); tongues narrower than a sample "// &
+            "step can be missed"
+      end if
+      n = n + 1; text(n) = "one block per curve (gnuplot index = curve), blocks separated by two blank lines; "// &
+         integer_text(n_curves)//" curves"
+      n = n + 1; text(n) = "kind: S on the curve (+2 periodic, -2 antiperiodic); order: n of a_n/b_n; branch: exact 1 = a_n "// &
+         "(even), 2 = b_n (odd), approximate 1 = lower, 2 = upper edge"
+      if (exact_method(scene)) then
+         n = n + 1; text(n) = "coexist: 1 when both curves of this order coincide (zero-width tongue), by the structure "// &
+            "of Q: elastic S = +2 tongues always, S = -2 only at alpha = 0; Mathieu only at nu = 0 (Ince)"
+      else
+         n = n + 1; text(n) = "coexist: 1 when both curves of this order coincide (zero-width tongue, within "// &
+            real_text(coexistence_threshold)//"*tolerance*max(1,|beta|))"
+      end if
+      n = n + 1; text(n) = "status: 0 ok, 1 check by auto limited by round-off, 2 failed the check; check: S by auto "// &
+         "at the point (approximate: S_method)"
+      n = n + 1; text(n) = "beta_error: estimated error of beta; modes: Fourier modes of the truncation (approximate: pieces)"
+      if (model_has_witness(scene%model)) then
+         n = n + 1; text(n) = "beta_gsl: (pi^2/4) a_n or b_n(2 nu/pi^2) by GSL; gsl_ok: 1 agrees with Hill's method within "// &
+            real_text(gsl_agreement)//"*max(1,|beta|), 2 disagrees (a GSL failure), 0 not used (order > 60 or |q| > "// &
+            real_text(gsl_witness_max_q)//"; beta_gsl = beta)"
+      end if
+      if (.not. (in_physical_domain(grid%alpha_min, grid%beta_min) .and. &
+                 in_physical_domain(grid%alpha_max, grid%beta_max))) then
+         n = n + 1; text(n) = "note: the window leaves the physical domain 0 <= alpha < pi^2, 0 < beta < pi^2"
+      end if
+      lines = scene_header(scene, "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau; transition "// &
+                           "curves S = +-2", text(:n))
+   end function header
+end module hillstab_batch_tasks_boundaries

@@ -1,0 +1,634 @@
+!> Task `chart`: the columns of hillstab_batch_tasks_chart_columns over the (α, β) grid of
+!> `&chart`, row by row (one α a row). With many rows, groups of rows run in parallel
+!> (OpenMP, dynamic schedule: the cost varies strongly near α → π²) into one of two
+!> buffers while one thread writes the previous group, so memory stays at a few rows a
+!> thread; with few rows, each row is split into chunks computed in parallel that share
+!> the meshes method auto prepares for the row. A point that cannot be computed does not
+!> stop the chart: its row carries status 2 and placeholders, and the run ends with
+!> err_points_failed after the file is written.
+!>
+!> The task also runs in units of one row (`unit_text`), computed exactly as here, so that
+!> the MPI program writes the same file.
+module hillstab_batch_tasks_chart
+   use hillstab_core_kinds, only: wp, int64, pi
+   use hillstab_core_error, only: error_t, set_error, err_input
+   use hillstab_core_status, only: status_ok, status_roundoff, status_failed
+   use hillstab_core_text, only: format_es, real_text, integer_text
+   use hillstab_hill_coefficient, only: hill_model_t, in_physical_domain
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict
+   use hillstab_integrate_monodromy, only: monodromy_trace_batch, batch_plan_t, prepare_batch, need_verdict
+   use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output
+   use hillstab_batch_scene_declaration, only: group_t
+   use hillstab_batch_scene_file, only: scene_file_t, fail, group_present
+   use hillstab_batch_scene_checks, only: check_integration_cost, max_grid_count
+   use hillstab_hill_units, only: physical_t, physical_beta, physical_epsilon
+   use hillstab_hill_models, only: model_physical_alpha
+   use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point, grid_size_text
+   use hillstab_batch_tasks_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, &
+      chart_header, &
+      point_amplitude, columns_need, columns_paper, verdict_lines, &
+      scene_chart_columns, check_method_runs, warn_inaccurate, failed_points_error, chart_line_length, evaluate_point, &
+      header_bytes, text_row_bytes, binary_row_bytes, col_physical
+   use hillstab_batch_output_columns, only: columns_text
+   use hillstab_batch_tasks_chart_columns, only: chart_columns
+   use hillstab_batch_output_file, only: output_file_t, finish_output, discard_output, write_header, write_text, &
+      write_records, joined_lines, join_lines
+   use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
+   use hillstab_batch_run_units, only: max_threads
+   implicit none
+   private
+   public :: chart_task_t, chart_task
+
+   !> The chart task and its grid.
+   type, extends(floquet_task_t) :: chart_task_t
+      type(chart_grid_t) :: grid                     !! `&chart`
+      !> what every row shares, made by `prepare_units`: the β values, their text, the columns
+      real(wp), allocatable :: betas(:)
+      character(len=24), allocatable :: beta_texts(:)  !! format_es(betas, 17)
+      integer, allocatable :: ids(:)                 !! the columns written
+      !> `&physical a_min, a_max, n_a, omega_min, omega_max, n_omega` without `&chart`: the
+      !> chart runs over (a, ω) at fixed r0, g (blocks of constant a)
+      logical :: physical_grid = .false.
+   contains
+      procedure :: read => chart_read
+      procedure :: run => chart_run
+      procedure :: declarations => chart_declarations
+      procedure :: estimated_bytes => chart_estimated_bytes
+      procedure :: memory_bytes => chart_memory_bytes
+      procedure :: size_variables => chart_size_variables
+      procedure :: point_count => chart_point_count
+      procedure :: unit_size => chart_unit_size
+      procedure :: prepare_units => chart_prepare_units
+      procedure :: unit_text => chart_unit_text
+      procedure :: open_units => chart_open_units
+      procedure :: point_of => chart_point_of
+   end type chart_task_t
+
+contains
+
+   !> `&chart`.
+   function chart_declarations(self) result(groups)
+      class(chart_task_t), intent(in) :: self  !! the task
+      type(group_t), allocatable :: groups(:)
+      if (self%physical_grid) then
+         allocate (groups(0))
+      else
+         allocate (groups(1))
+         groups(1) = chart_group()
+      end if
+   end function chart_declarations
+
+   !> The variables that set the size of the file.
+   function chart_size_variables(self) result(text)
+      class(chart_task_t), intent(in) :: self  !! the task
+      character(len=:), allocatable :: text
+      text = grid_size_text(self%grid, self%physical_grid)
+   end function chart_size_variables
+
+   !> A chart task before its scene is read.
+   function chart_task() result(task)
+      type(chart_task_t) :: task
+      task%name = "chart"
+      task%takes_columns = .true.
+      task%takes_omega_range = .true.
+   end function chart_task
+
+   !> `&chart`, and what the scene's method and columns allow.
+   subroutine chart_read(self, file, scene, error)
+      class(chart_task_t), intent(inout) :: self  !! the task, its grid filled in
+      type(scene_file_t), intent(in) :: file      !! the scene file
+      type(scene_t), intent(in) :: scene          !! the `&scene` settings
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
+      integer, allocatable :: ids(:)
+      if (size(scene%omegas) > 0) then
+         ! a chart over (a, omega): the grid comes from &physical
+         if (group_present(file%unit, "chart")) then
+            call fail(error, file%path, "chart", "alpha_min", "the chart runs either over &chart (alpha, beta) or "// &
+               "over &physical a_min, a_max, n_a and omega_min, omega_max, n_omega, not both")
+            return
+         end if
+         self%physical_grid = .true.
+         allocate (self%groups(0))
+         self%grid%n_alpha = size(scene%amplitudes)
+         self%grid%n_beta = size(scene%omegas)
+         if (int(self%grid%n_alpha, int64)*self%grid%n_beta > int(max_grid_count, int64)) then
+            call fail(error, file%path, "physical", "n_omega", "n_a * n_omega = "// &
+               integer_text(int(self%grid%n_alpha, int64)*self%grid%n_beta)//" points exceed the limit of 1e8")
+            return
+         end if
+         call scene_chart_columns(scene, ids, error)
+         return
+      end if
+      allocate (self%groups(1))
+      call read_chart_group(file, chart_group(), scene%model, self%grid, self%groups(1), error)
+      if (allocated(error)) return
+      call check_integration_cost(scene%source, "chart", "alpha_max", scene%method, &
+         max(abs(self%grid%alpha_min), abs(self%grid%alpha_max)) + &
+         max(abs(self%grid%beta_min), abs(self%grid%beta_max)), error)
+      if (allocated(error)) return
+      call scene_chart_columns(scene, ids, error)
+   end subroutine chart_read
+
+   !> Header plus n_alpha n_beta rows (and one blank line per α block).
+   pure function chart_estimated_bytes(self, scene) result(bytes)
+      class(chart_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      bytes = header_bytes + int(self%grid%n_alpha, int64)*int(self%grid%n_beta, int64)* &
+              merge(binary_row_bytes, text_row_bytes, scene%binary) + int(self%grid%n_alpha, int64)
+   end function chart_estimated_bytes
+
+   !> The rows held at once (two groups of 8 per thread when rows go in parallel, else one),
+   !> each n_beta lines, statuses and values and the row's text joined for the writer, the
+   !> β texts, and each thread's work on a row (auto's batch: its meshes and lanes, 64 bytes
+   !> a point). Measured peaks: 265 MB for 1 x 500000 points (estimate 333 MB), 147 MB for
+   !> 64 x 20000 on two threads (estimate 328 MB).
+   function chart_memory_bytes(self, scene) result(bytes)
+      class(chart_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      integer(int64) :: rows, per_point
+      rows = 1
+      if (rows_in_parallel(self%grid)) rows = 2*8*max_threads()
+      per_point = 2*chart_line_length + 4 + 8*n_chart_columns
+      bytes = int(self%grid%n_beta, int64)*(rows*per_point + 31 + 64*max_threads())
+   end function chart_memory_bytes
+
+   !> The chart task.
+   subroutine chart_run(self, scene, quiet, error)
+      class(chart_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      logical, intent(in) :: quiet  !! no progress on stderr
+      type(error_t), allocatable, intent(out) :: error  !! err_io, err_points_failed, ...
+      type(output_file_t) :: file
+      type(progress_t) :: progress
+      character(len=chart_line_length), allocatable :: lines(:)
+      real(wp) :: alpha
+      real(wp), allocatable :: all_betas(:)
+      character(len=24), allocatable :: beta_texts(:)
+      logical :: stopped, stop_now
+      character(len=chart_line_length), allocatable :: block_lines(:, :, :)
+      integer, allocatable :: block_status(:, :, :), statuses(:), ids(:), block_lengths(:, :, :), lengths(:)
+      real(wp), allocatable :: block_values(:, :, :, :), values(:, :)
+      integer(int64) :: n_inaccurate, n_failed
+      real(wp) :: first_inaccurate(2), first_failed(2)
+      integer :: group, n_groups, g, alloc_status
+      integer :: i, n_alpha, n_beta
+
+      if (self%physical_grid) then
+         call physical_chart_run(scene, quiet, error)
+         return
+      end if
+      n_alpha = self%grid%n_alpha
+      n_beta = self%grid%n_beta
+      call scene_chart_columns(scene, ids, error)
+      if (allocated(error)) return
+      ! an unwritable output path fails before any computing
+      call open_scene_output(scene, file, error)
+      if (allocated(error)) return
+      call check_method_runs(scene, self%grid%alpha_min, self%grid%beta_min, error)
+      if (allocated(error)) then
+         call discard_output(file)
+         return
+      end if
+      call chart_betas(self%grid, all_betas, beta_texts)
+      call write_header(file, chart_header(scene, outside(self%grid), ids), columns_text(chart_columns(scene), ids), &
+                        error, names_line=scene%names_line, records=[n_beta, n_alpha])
+      if (allocated(error)) then
+         call discard_output(file)
+         return
+      end if
+
+      call progress_begin(progress, int(n_alpha, int64)*n_beta, quiet)
+      stopped = .false.
+      n_inaccurate = 0
+      n_failed = 0
+      if (rows_in_parallel(self%grid)) then
+         ! groups of rows computed in parallel (mesh preparation, integration and
+         ! formatting on every core) into one of two buffers, while one thread writes the
+         ! previous group from the other buffer; a group holds a few rows per thread, so
+         ! memory stays bounded however large the chart
+         group = 8*max_threads()
+         n_groups = (n_alpha + group - 1)/group
+         allocate (block_lines(n_beta, group, 0:1), block_status(n_beta, group, 0:1), &
+                   block_values(size(ids), n_beta, group, 0:1), block_lengths(n_beta, group, 0:1), stat=alloc_status)
+         if (alloc_status /= 0) then
+            call out_of_memory()
+            return
+         end if
+         !$omp parallel default(shared) private(g, i, alpha, stop_now)
+         do g = 1, n_groups + 1
+            ! every thread takes the same decision: stopped is read between two barriers
+            ! (it is written only inside the single below)
+            !$omp barrier
+            stop_now = stopped
+            !$omp barrier
+            if (stop_now) exit
+            if (g > 1) then
+               !$omp single
+               do i = (g - 2)*group + 1, min(n_alpha, (g - 1)*group)
+                  alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i)
+                  call finish_row(i, alpha, block_lines(:, i - (g - 2)*group, mod(g - 1, 2)), &
+                     block_lengths(:, i - (g - 2)*group, mod(g - 1, 2)), &
+                     block_values(:, :, i - (g - 2)*group, mod(g - 1, 2)), block_status(:, i - (g - 2)*group, mod(g - 1, 2)))
+                  if (stopped) exit
+               end do
+               !$omp end single nowait
+            end if
+            if (g <= n_groups) then
+               !$omp do schedule(dynamic)
+               do i = (g - 1)*group + 1, min(n_alpha, g*group)
+                  alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i)
+                  call compute_row(scene, ids, alpha, all_betas, block_lines(:, i - (g - 1)*group, mod(g, 2)), &
+                     block_lengths(:, i - (g - 1)*group, mod(g, 2)), &
+                     block_values(:, :, i - (g - 1)*group, mod(g, 2)), block_status(:, i - (g - 1)*group, mod(g, 2)), &
+                     beta_texts=beta_texts)
+               end do
+               !$omp end do
+            else
+               !$omp barrier
+            end if
+         end do
+         !$omp end parallel
+      else
+         ! few rows: the points of each row in parallel chunks sharing the prepared meshes
+         allocate (lines(n_beta), lengths(n_beta), statuses(n_beta), values(size(ids), n_beta), stat=alloc_status)
+         if (alloc_status /= 0) then
+            call out_of_memory()
+            return
+         end if
+         do i = 1, n_alpha
+            alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i)
+            call compute_row_in_chunks(scene, ids, alpha, all_betas, lines, lengths, values, statuses, beta_texts)
+            call finish_row(i, alpha, lines, lengths, values, statuses)
+            if (stopped) exit
+         end do
+      end if
+      call progress_end(progress)
+      call finish_output(file, error)
+      if (allocated(error)) return
+      call warn_inaccurate(scene, n_inaccurate, first_inaccurate)
+      call failed_points_error(scene, n_failed, int(n_alpha, int64)*n_beta, first_failed, error)
+   contains
+      !> The row buffers could not be allocated: no file, a message naming the size.
+      subroutine out_of_memory()
+         call discard_output(file)
+         call progress_end(progress)
+         call set_error(error, err_input, scene%source//": "//self%size_variables()//": the row buffers "// &
+            "cannot be allocated (out of memory); lower n_beta or the number of threads (OMP_NUM_THREADS)")
+      end subroutine out_of_memory
+      !> Write a computed row (in order) and count its round-off limited and failed points.
+      subroutine finish_row(i, alpha, lines, lengths, values, statuses)
+         integer, intent(in) :: i
+         real(wp), intent(in) :: alpha
+         character(len=*), intent(in) :: lines(:)  !! text: the row's lines
+         integer, intent(in) :: lengths(:)         !! text: their lengths
+         real(wp), intent(in) :: values(:, :)      !! binary: the row's records
+         integer, intent(in) :: statuses(:)
+         if (scene%binary) then
+            call write_records(file, values, error)
+         else
+            ! blocks of constant alpha, separated by one blank line (gnuplot pm3d/image)
+            call write_text(file, joined_lines(lines, i > 1, lengths=lengths), error)
+         end if
+         if (allocated(error)) then
+            stopped = .true.
+            return
+         end if
+         if (any(statuses == status_roundoff)) then
+            if (n_inaccurate == 0) first_inaccurate = [alpha, all_betas(findloc(statuses, status_roundoff, dim=1))]
+            n_inaccurate = n_inaccurate + count(statuses == status_roundoff)
+         end if
+         if (any(statuses == status_failed)) then
+            if (n_failed == 0) first_failed = [alpha, all_betas(findloc(statuses, status_failed, dim=1))]
+            n_failed = n_failed + count(statuses == status_failed)
+         end if
+         call progress_update(progress, int(i, int64)*n_beta)
+      end subroutine finish_row
+   end subroutine chart_run
+
+   !> A chart over (a, omega) of `&physical`, r0 and g fixed: the points a_i, omega_j, in
+   !> blocks of constant a (one blank line between), each with alpha = a pi^2/rho(omega),
+   !> beta = g pi^2/(rho omega^2), epsilon = kappa pi/omega (eqs. (4), (24), (46)); every
+   !> point lies in 0 <= a < rho(omega) (the scene reader refuses a chart reaching the pivot).
+   subroutine physical_chart_run(scene, quiet, error)
+      type(scene_t), intent(in) :: scene
+      logical, intent(in) :: quiet
+      type(error_t), allocatable, intent(out) :: error
+      type(output_file_t) :: file
+      type(progress_t) :: progress
+      character(len=chart_line_length), allocatable :: lines(:)
+      integer, allocatable :: statuses(:), ids(:), lengths(:)
+      real(wp), allocatable :: values(:, :), alphas(:), betas(:)
+      type(floquet_t) :: f
+      type(error_t), allocatable :: cause
+      type(physical_t) :: p
+      real(wp) :: v(n_chart_columns), first_failed(2), first_inaccurate(2), epsilon
+      integer(int64) :: n_failed, n_inaccurate
+      integer :: i, j, n_a, n_omega
+      logical :: outside
+      n_a = size(scene%amplitudes)
+      n_omega = size(scene%omegas)
+      call scene_chart_columns(scene, ids, error)
+      if (allocated(error)) return
+      call open_scene_output(scene, file, error)
+      if (allocated(error)) return
+      outside = .false.
+      call write_header(file, chart_header(scene, outside, ids), columns_text(chart_columns(scene), ids), error, &
+                        names_line=scene%names_line, records=[n_omega, n_a])
+      if (allocated(error)) then
+         call discard_output(file)
+         return
+      end if
+      allocate (lines(n_omega), lengths(n_omega), statuses(n_omega), values(size(ids), n_omega), alphas(n_omega), &
+                betas(n_omega))
+      n_failed = 0
+      n_inaccurate = 0
+      call progress_begin(progress, int(n_a, int64)*n_omega, quiet)
+      do i = 1, n_a
+         !$omp parallel do schedule(dynamic) default(shared) private(j, p, f, cause, v, epsilon)
+         do j = 1, n_omega
+            p = scene%pendulum
+            p%omega = scene%omegas(j)
+            p%a = scene%amplitudes(i)
+            alphas(j) = model_physical_alpha(scene%model, p)
+            betas(j) = physical_beta(p)
+            epsilon = physical_epsilon(p)
+            call evaluate_point(scene, alphas(j), betas(j), f, cause, statuses(j), epsilon, ids)
+            if (statuses(j) == status_failed) then
+               v = failed_values(alphas(j), betas(j), in_physical_domain(alphas(j), betas(j)), p%a, p%omega)
+            else
+               v = chart_values(alphas(j), betas(j), f, in_physical_domain(alphas(j), betas(j)), statuses(j), &
+                                p%omega/pi, p%a, p%omega)
+            end if
+            values(:, j) = v(ids)
+            call chart_line(ids, v, lines(j), length=lengths(j))
+         end do
+         !$omp end parallel do
+         if (scene%binary) then
+            call write_records(file, values, error)
+         else
+            call write_text(file, joined_lines(lines, i > 1, lengths=lengths), error)
+         end if
+         if (allocated(error)) exit
+         if (any(statuses == status_roundoff)) then
+            j = findloc(statuses, status_roundoff, dim=1)
+            if (n_inaccurate == 0) first_inaccurate = [alphas(j), betas(j)]
+            n_inaccurate = n_inaccurate + count(statuses == status_roundoff)
+         end if
+         if (any(statuses == status_failed)) then
+            j = findloc(statuses, status_failed, dim=1)
+            if (n_failed == 0) first_failed = [alphas(j), betas(j)]
+            n_failed = n_failed + count(statuses == status_failed)
+         end if
+         call progress_update(progress, int(i, int64)*n_omega)
+      end do
+      call progress_end(progress)
+      call finish_output(file, error)
+      if (allocated(error)) return
+      call warn_inaccurate(scene, n_inaccurate, first_inaccurate)
+      call failed_points_error(scene, n_failed, int(n_a, int64)*n_omega, first_failed, error)
+   end subroutine physical_chart_run
+
+   !> Whether the grid leaves the physical domain.
+   pure logical function outside(grid)
+      type(chart_grid_t), intent(in) :: grid
+      outside = .not. (in_physical_domain(grid%alpha_min, grid%beta_min) .and. &
+                       in_physical_domain(grid%alpha_max, grid%beta_max))
+   end function outside
+
+   !> Text lines or binary records (and statuses) of the chart points (α, β_j) of one row
+   !> or part of a row, with the columns `ids`.
+   subroutine compute_row(scene, ids, alpha, betas, lines, lengths, values, statuses, plan, beta_texts)
+      type(scene_t), intent(in) :: scene
+      integer, intent(in) :: ids(:)  !! the columns (hillstab_batch_tasks_chart_columns)
+      real(wp), intent(in) :: alpha, betas(:)
+      character(len=chart_line_length), intent(inout) :: lines(:)  !! text format: one line a point
+      integer, intent(out) :: lengths(:)           !! text format: the length of each line
+      real(wp), intent(inout) :: values(:, :)      !! binary format: (columns, points)
+      !> status_ok, status_roundoff (computed only to the round-off level) or status_failed
+      integer, intent(out) :: statuses(:)
+      type(batch_plan_t), intent(in), optional :: plan  !! prepared for the whole row
+      character(len=24), intent(in), optional :: beta_texts(:)  !! format_es(betas, 17), made once per chart
+      type(trace_t) :: traces(size(betas))
+      character(len=24) :: alpha_text
+      type(error_t), allocatable :: cause
+      type(floquet_t) :: f
+      type(hill_model_t) :: row
+      real(wp) :: v(n_chart_columns), per_second, a
+      logical :: failed(size(betas)), inaccurate(size(betas))
+      integer :: j, need
+      need = columns_need(ids)
+      ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
+      ! when the scene knows ω)
+      per_second = 0.0_wp
+      if (scene%physical) per_second = scene%pendulum%omega/pi
+      row = hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon)
+      call monodromy_trace_batch(row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate, &
+                                 need=need, paper=columns_paper(ids))
+      alpha_text = format_es(alpha, 17)
+      statuses = merge(status_roundoff, status_ok, inaccurate)
+      where (failed) statuses = status_failed
+      do j = 1, size(betas)
+         a = 0.0_wp
+         if (scene%physical) a = point_amplitude(scene, j, alpha, betas(j))
+         if (need <= need_verdict .and. .not. scene%binary) then
+            ! a verdict line (or a failed point's), written directly
+            lengths(j) = 0
+            if (present(beta_texts)) then
+               call verdict_lines(ids, alpha, betas(j:j), traces(j:j), scene%epsilon, scene%method%tolerance, &
+                                  statuses(j:j), [in_physical_domain(alpha, betas(j))], [a], alpha_text, lines(j), &
+                                  lengths(j), beta_texts(j:j))
+            else
+               call verdict_lines(ids, alpha, betas(j:j), traces(j:j), scene%epsilon, scene%method%tolerance, &
+                                  statuses(j:j), [in_physical_domain(alpha, betas(j))], [a], alpha_text, lines(j), &
+                                  lengths(j))
+            end if
+            cycle
+         end if
+         if (failed(j)) then
+            v = failed_values(alpha, betas(j), in_physical_domain(alpha, betas(j)), a)
+         else
+            if (need <= need_verdict) then
+               ! verdicts only: no multipliers (their columns, not in a verdict file, stay 0)
+               f = floquet_verdict(traces(j), scene%epsilon, scene%method%tolerance)
+            else
+               f = floquet_from_trace(traces(j), scene%epsilon, scene%method%tolerance)
+            end if
+            v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second, a, &
+                             need=need)
+         end if
+         if (scene%binary) then
+            values(:, j) = v(ids)
+         else if (present(beta_texts)) then
+            call chart_line(ids, v, lines(j), alpha_text, beta_texts(j), lengths(j))
+         else
+            call chart_line(ids, v, lines(j), alpha_text, length=lengths(j))
+         end if
+      end do
+   end subroutine compute_row
+
+   !> A chart computes whole rows in parallel when it has enough of them, else the
+   !> chunks of each row in parallel.
+   logical function rows_in_parallel(grid)
+      type(chart_grid_t), intent(in) :: grid
+      rows_in_parallel = grid%n_alpha >= 4*max_threads()
+   end function rows_in_parallel
+
+   !> `compute_row` on a whole row, split into chunks computed in parallel that share
+   !> the meshes prepared for the row.
+   subroutine compute_row_in_chunks(scene, ids, alpha, betas, lines, lengths, values, statuses, beta_texts)
+      type(scene_t), intent(in) :: scene
+      integer, intent(in) :: ids(:)  !! the columns
+      real(wp), intent(in) :: alpha, betas(:)
+      character(len=chart_line_length), intent(inout) :: lines(:)  !! text format: one line a point
+      integer, intent(out) :: lengths(:)           !! text format: the length of each line
+      real(wp), intent(inout) :: values(:, :)      !! binary format: (columns, points)
+      integer, intent(out) :: statuses(:)
+      character(len=24), intent(in) :: beta_texts(:)
+      type(batch_plan_t) :: plan
+      integer :: c, chunk, n_chunks, first, last, n
+      n = size(betas)
+      chunk = max(16, n/(8*max_threads()))
+      n_chunks = (n + chunk - 1)/chunk
+      call prepare_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), betas, scene%method, plan, &
+                         columns_need(ids))
+      !$omp parallel do schedule(dynamic) default(shared) private(c, first, last)
+      do c = 1, n_chunks
+         first = (c - 1)*chunk + 1
+         last = min(n, c*chunk)
+         call compute_row(scene, ids, alpha, betas(first:last), lines(first:last), lengths(first:last), &
+            values(:, first:last), statuses(first:last), plan, beta_texts(first:last))
+      end do
+      !$omp end parallel do
+   end subroutine compute_row_in_chunks
+
+   !> The β values of a chart's rows and their text, made once per chart.
+   subroutine chart_betas(grid, betas, beta_texts)
+      type(chart_grid_t), intent(in) :: grid  !! the grid
+      real(wp), allocatable, intent(out) :: betas(:)  !! the n_beta grid values
+      character(len=24), allocatable, intent(out) :: beta_texts(:)  !! format_es(betas, 17)
+      integer :: j
+      betas = [(grid_value(grid%beta_min, grid%beta_max, grid%n_beta, j), j=1, grid%n_beta)]
+      allocate (beta_texts(grid%n_beta))
+      do j = 1, grid%n_beta
+         beta_texts(j) = format_es(betas(j), 17)
+      end do
+   end subroutine chart_betas
+
+   !> Points of the chart.
+   pure function chart_point_count(self) result(n)
+      class(chart_task_t), intent(in) :: self  !! the task
+      integer(int64) :: n
+      n = int(self%grid%n_alpha, int64)*self%grid%n_beta
+      if (self%physical_grid) n = 0   ! one process: the points are not on the (alpha, beta) grid
+   end function chart_point_count
+
+   !> One row a unit.
+   pure integer function chart_unit_size(self, n_workers) result(size)
+      class(chart_task_t), intent(in) :: self  !! the task
+      integer, intent(in) :: n_workers   !! processes computing units
+      size = self%grid%n_beta
+   end function chart_unit_size
+
+   !> The β values, their text and the columns, shared by every row.
+   subroutine chart_prepare_units(self, scene)
+      class(chart_task_t), intent(inout) :: self  !! the task
+      type(scene_t), intent(in) :: scene    !! its scene
+      type(error_t), allocatable :: error
+      call chart_betas(self%grid, self%betas, self%beta_texts)
+      call scene_chart_columns(scene, self%ids, error)  ! checked when the scene was read
+   end subroutine chart_prepare_units
+
+   !> Row `unit` as the file holds it (a blank line before every row but the first),
+   !> computed as `chart_run` computes it.
+   subroutine chart_unit_text(self, scene, unit, first, last, text, statuses)
+      class(chart_task_t), intent(in) :: self  !! the task, its units prepared
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer, intent(in) :: unit  !! the row
+      integer(int64), intent(in) :: first, last  !! its points
+      character(len=:), allocatable, intent(out) :: text  !! the lines, no final new line
+      integer, intent(out) :: statuses(first:last)  !! per point
+      character(len=chart_line_length), allocatable :: lines(:)
+      integer, allocatable :: lengths(:)
+      real(wp), allocatable :: values(:, :)
+      real(wp) :: alpha
+      alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, self%grid%n_alpha, unit)
+      if (rows_in_parallel(self%grid) .and. columns_need(self%ids) <= need_verdict) then
+         call verdict_row_text(scene, self%ids, alpha, self%betas, self%beta_texts, unit > 1, text, statuses)
+         return
+      end if
+      allocate (lines(self%grid%n_beta), lengths(self%grid%n_beta), values(size(self%ids), self%grid%n_beta))
+      if (rows_in_parallel(self%grid)) then
+         call compute_row(scene, self%ids, alpha, self%betas, lines, lengths, values, statuses, &
+                          beta_texts=self%beta_texts)
+      else
+         call compute_row_in_chunks(scene, self%ids, alpha, self%betas, lines, lengths, values, statuses, &
+                                    self%beta_texts)
+      end if
+      call join_lines(lines, unit > 1, text, lengths=lengths)
+   end subroutine chart_unit_text
+
+   !> The text of a row of a verdict file (columns that need no more than the verdict), as
+   !> `compute_row` and `join_lines` make it, written straight into the unit's text: no
+   !> array of lines, the physical domain tested only for a `physical` column (the verdict
+   !> charts spent a fifth of their time between the traces and the text).
+   subroutine verdict_row_text(scene, ids, alpha, betas, beta_texts, separate, text, statuses)
+      type(scene_t), intent(in) :: scene  !! the chart's scene (text format)
+      integer, intent(in) :: ids(:)  !! the columns, none needing more than the verdict
+      real(wp), intent(in) :: alpha, betas(:)  !! the row
+      character(len=24), intent(in) :: beta_texts(:)  !! format_es(betas, 17)
+      logical, intent(in) :: separate  !! a blank line before the row
+      character(len=:), allocatable, intent(out) :: text  !! the lines, no final new line
+      integer, intent(out) :: statuses(:)  !! per point
+      type(trace_t) :: traces(size(betas))
+      logical :: failed(size(betas)), inaccurate(size(betas))
+      logical, allocatable :: physical(:)
+      real(wp), allocatable :: amplitudes(:)
+      type(error_t), allocatable :: cause
+      character(len=:), allocatable :: buffer
+      integer :: j, pos
+      call monodromy_trace_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), betas, scene%method, &
+                                 traces, failed, cause, inaccurate=inaccurate, need=columns_need(ids), &
+                                 paper=columns_paper(ids))
+      statuses = merge(status_roundoff, status_ok, inaccurate)
+      where (failed) statuses = status_failed
+      allocate (physical(0), amplitudes(0))
+      if (any(ids == col_physical)) physical = [(in_physical_domain(alpha, betas(j)), j=1, size(betas))]
+      if (scene%physical) amplitudes = [(point_amplitude(scene, j, alpha, betas(j)), j=1, size(betas))]
+      ! room for every line at its longest (and one more, for the line being written)
+      allocate (character(len=(size(betas) + 1)*(chart_line_length + 1) + 1) :: buffer)
+      pos = 0
+      if (separate) then
+         buffer(1:1) = new_line("a")
+         pos = 1
+      end if
+      call verdict_lines(ids, alpha, betas, traces, scene%epsilon, scene%method%tolerance, statuses, physical, &
+                         amplitudes, format_es(alpha, 17), buffer, pos, beta_texts)
+      text = buffer(1:pos)
+   end subroutine verdict_row_text
+
+   !> The checks and the header of `chart_run`.
+   subroutine chart_open_units(self, scene, file, error)
+      class(chart_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      type(output_file_t), intent(inout) :: file  !! the open output file
+      type(error_t), allocatable, intent(out) :: error  !! why the file cannot be written
+      integer, allocatable :: ids(:)
+      call scene_chart_columns(scene, ids, error)
+      if (allocated(error)) return
+      call check_method_runs(scene, self%grid%alpha_min, self%grid%beta_min, error)
+      if (allocated(error)) return
+      call write_header(file, chart_header(scene, outside(self%grid), ids), columns_text(chart_columns(scene), ids), &
+                        error, names_line=scene%names_line)
+   end subroutine chart_open_units
+
+   !> (α, β) of point k, numbered row by row.
+   pure function chart_point_of(self, k) result(point)
+      class(chart_task_t), intent(in) :: self  !! the task
+      integer(int64), intent(in) :: k  !! the point
+      real(wp) :: point(2)
+      point = grid_point(self%grid, k)
+   end function chart_point_of
+end module hillstab_batch_tasks_chart

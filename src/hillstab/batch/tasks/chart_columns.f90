@@ -1,0 +1,699 @@
+!> What the chart and points tasks share: the columns of their files (one table: name,
+!> unit, meaning, style, placeholder — and the value of each at a computed point), the
+!> evaluation of one point by the scene's method, the header lines, and the messages for
+!> failed and round-off limited points.
+!>
+!> A new column of chart and points files is added here and nowhere else: a `col_*`
+!> index, its `column_t` in `chart_columns`, when it is offered in `offered_chart_columns`
+!> and its value in `chart_values`.
+!>
+!>```fortran
+!> type(column_t), allocatable :: table(:)
+!> table = chart_columns(scene)
+!> print '(a)', columns_text(table, offered_chart_columns(scene))
+!>```
+module hillstab_batch_tasks_chart_columns
+   use hillstab_core_kinds, only: wp, int64, version_string
+   use hillstab_core_error, only: error_t, set_error, err_input, err_accuracy, err_invalid_parameter, &
+      err_points_failed
+   use hillstab_core_status, only: status_ok, status_roundoff, status_failed
+   use hillstab_core_text, only: real_text, integer_text, put_es
+   use hillstab_hill_models, only: hill_model_t, model_description, model_physical_note, model_is_pendulum, &
+      model_summary
+   use hillstab_hill_coefficient, only: sampling_name
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus, verdicts, near_threshold
+   use hillstab_integrate_monodromy, only: monodromy_trace_batch, method_name, method_uses_segments, method_is_exact, &
+      need_nothing, need_verdict, need_growth, need_trace
+   use hillstab_batch_scene_types, only: scene_t, task_t, scene_header, output_path, physical_summary
+   use hillstab_batch_scene_file, only: fail
+   use hillstab_batch_output_columns, only: column_t, style_e17, style_e11, style_e4, style_flag, column_lines, &
+      find_columns, columns_text, put_value, failed_row
+   use, intrinsic :: iso_fortran_env, only: error_unit
+   implicit none
+   private
+   public :: floquet_task_t, chart_columns, offered_chart_columns, chart_values, scene_chart_columns, n_chart_columns
+   public :: chart_header, common_header, evaluate_point, failed_points_error, check_method_runs, warn_inaccurate
+   public :: clamp_magnitude, log10_floor, chart_line_length, stacked, chart_line, failed_values
+   public :: header_bytes, text_row_bytes, binary_row_bytes, point_amplitude, columns_need, columns_paper
+   public :: verdict_lines, col_physical
+
+   !> The columns of a chart or points file, in file order.
+   integer, parameter :: col_alpha = 1, col_a = 2, col_beta = 3, col_omega = 4, col_s = 5, col_stable = 6, &
+      col_lambda_max = 7, col_mu = 8, col_log10_abs_s = 9, col_overflow = 10, col_physical = 11, col_stable_paper = 12, &
+      col_mu_per_s = 13, col_error_estimate = 14, col_status = 15
+   !> Number of columns a chart or points file can hold.
+   integer, parameter :: n_chart_columns = 15
+   !> Characters in one chart line (15 columns of at most 24 characters, with blanks: 224 at
+   !> most).
+   integer, parameter :: chart_line_length = 280
+   !> The text style of each column (hillstab_batch_output_columns), by the col_* index.
+   integer, parameter :: chart_styles(n_chart_columns) = [style_e17, style_e17, style_e17, style_e17, style_e17, &
+      style_flag, style_e11, style_e11, style_e11, style_flag, style_flag, style_flag, style_e11, style_e4, style_flag]
+   !> The significant digits of each column's text, from its style (e17 17, e11 11, e4 4;
+   !> 0 for the flags, which `put_value` writes).
+   integer, parameter :: chart_digits(n_chart_columns) = merge(17, merge(11, merge(4, 0, chart_styles == style_e4), &
+      chart_styles == style_e11), chart_styles == style_e17)
+   !> What a failed point writes in each column (where `chart_kept` is false): values outside
+   !> every column's range.
+   real(wp), parameter :: chart_placeholders(n_chart_columns) = [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, -1.0_wp, &
+      -1.0_wp, 0.0_wp, -999.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, real(status_failed, wp)]
+   !> What each column needs computed at a point (hillstab_integrate_monodromy): nothing
+   !> for the grid's own columns and status, the verdict for stable and stable_paper, the
+   !> growth (exact where |S| < 2, S to the tolerance elsewhere) for lambda_max, mu and
+   !> mu_per_s, S to the tolerance for S, log10_abs_S, overflow and error_estimate. A file
+   !> computes what the most demanding of its columns needs.
+   integer, parameter :: chart_needs(n_chart_columns) = [need_nothing, need_nothing, need_nothing, need_nothing, &
+      need_trace, need_verdict, need_growth, need_growth, need_trace, need_trace, need_nothing, need_verdict, &
+      need_growth, need_trace, need_nothing]
+   !> The columns a failed point keeps: its alpha, a, beta, omega and physical.
+   logical, parameter :: chart_kept(n_chart_columns) = [.true., .true., .true., .true., .false., .false., .false., &
+      .false., .false., .false., .true., .false., .false., .false., .false.]
+   !> Bytes of a header (an upper bound), of one row as text (an upper bound) and binary.
+   integer(int64), parameter :: header_bytes = 16384, text_row_bytes = 225, binary_row_bytes = 8*16
+   !> Magnitudes beyond this are written as ±clamp_magnitude with the overflow flag set.
+   real(wp), parameter :: clamp_magnitude = 1.0e300_wp
+   !> log10|S| is written as at least this (only S = 0 exactly reaches it).
+   real(wp), parameter :: log10_floor = -300.0_wp
+
+   !> A task writing the chart's columns (chart, points): what runs in units ends as a
+   !> serial run ends.
+   type, abstract, extends(task_t) :: floquet_task_t
+   contains
+      procedure :: finish_units => floquet_finish_units
+   end type floquet_task_t
+
+contains
+
+   !> After a distributed run, as after a serial one: round-off limited points warned about,
+   !> failed ones an error naming the first.
+   subroutine floquet_finish_units(self, scene, n_points, n_failed, first_failed, n_inaccurate, first_inaccurate, &
+                                   error)
+      class(floquet_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64), intent(in) :: n_points  !! all points
+      integer(int64), intent(in) :: n_failed  !! failed points written
+      real(wp), intent(in) :: first_failed(2)  !! (α, β) of the first of them
+      integer(int64), intent(in) :: n_inaccurate  !! round-off limited points written
+      real(wp), intent(in) :: first_inaccurate(2)  !! (α, β) of the first of them
+      type(error_t), allocatable, intent(out) :: error  !! err_points_failed when points failed
+      call warn_inaccurate(scene, n_inaccurate, first_inaccurate)
+      call failed_points_error(scene, n_failed, n_points, first_failed, error)
+   end subroutine floquet_finish_units
+
+   !> The column table of a chart or points file of this scene (meanings depend on the
+   !> model and the damping).
+   function chart_columns(scene) result(table)
+      type(scene_t), intent(in) :: scene  !! the scene
+      type(column_t) :: table(n_chart_columns)
+      character(len=:), allocatable :: stable, alpha
+      if (scene%epsilon > 0.0_wp) then
+         stable = "1 when |S1| < 2 cosh(epsilon) (all multipliers of x inside the unit circle)"
+      else
+         stable = "1 when |S| < 2"
+      end if
+      stable = stable//"; 0.5: marginal, |S| is within its error bound max(error_estimate, tolerance) max(1, |S|) "// &
+         "of the threshold, the value cannot decide"
+      if (model_is_pendulum(scene%model)) then
+         alpha = "alpha = a pi^2/rho, eq. (24)"
+      else
+         alpha = "alpha of "//model_summary(scene%model)
+      end if
+      table(col_alpha) = column(col_alpha, "alpha", "", alpha)
+      if (size(scene%amplitudes) > 0) then
+         table(col_a) = column(col_a, "a", "m", "bounce amplitude of &physical (alpha = a pi^2/rho)")
+      else
+         table(col_a) = column(col_a, "a", "m", "bounce amplitude a = alpha rho/pi^2 with rho = g pi^2/(beta "// &
+            "omega^2) (eq. (24)); -1 where beta <= 0 (no equilibrium length)")
+      end if
+      table(col_beta) = column(col_beta, "beta", "", "beta = g pi^2/(rho omega^2), eq. (24)")
+      table(col_omega) = column(col_omega, "omega", "rad/s", "radial angular frequency sqrt(k/m) of the point "// &
+         "(rho = r0 + g/omega^2)")
+      table(col_s) = column(col_s, "S", "", "trace of the one-period monodromy (with epsilon > 0: S1 of the chi "// &
+         "equation (47)); |S| > 1e300 is written as +-1e300 with overflow = 1")
+      table(col_stable) = column(col_stable, "stable", "", stable)
+      table(col_lambda_max) = column(col_lambda_max, "lambda_max", "", "largest |multiplier| of x per radial period")
+      table(col_mu) = column(col_mu, "mu", "", "Floquet exponent ln(lambda_max)/2 per unit tau")
+      table(col_log10_abs_s) = column(col_log10_abs_s, "log10_abs_S", "", "log10|S|, exact also where S overflows")
+      table(col_overflow) = column(col_overflow, "overflow", "", "1 when |S| > 1e300")
+      table(col_physical) = column(col_physical, "physical", "", "1 inside the physical domain 0 <= alpha < pi^2, "// &
+         "0 <= beta < pi^2")
+      table(col_stable_paper) = column(col_stable_paper, "stable_paper", "", "1 when |S1| <= 2, the sufficient "// &
+         "criterion of the paper")
+      table(col_mu_per_s) = column(col_mu_per_s, "mu_per_s", "1/s", "the Floquet exponent per second, mu omega/pi "// &
+         "(tau = omega t/pi)")
+      table(col_error_estimate) = column(col_error_estimate, "error_estimate", "", "the method's estimate of "// &
+         "|error of S|/max(1, |S|) (-1: the method gives none)")
+      table(col_status) = column(col_status, "status", "", "0 ok; 1 round-off limited (best value, error_estimate "// &
+         "at the round-off level); 2 failed (placeholders in the other columns)")
+   contains
+      pure function column(k, name, unit, meaning) result(c)
+         integer, intent(in) :: k
+         character(len=*), intent(in) :: name, unit, meaning
+         type(column_t) :: c
+         c = column_t(name, unit, meaning, chart_styles(k), chart_placeholders(k), chart_kept(k))
+      end function column
+   end function chart_columns
+
+   !> The columns a chart or points file of this scene offers, in file order: `physical`
+   !> for the elastic model, `stable_paper` with damping, `mu_per_s` when ω is known, `a`
+   !> with `&physical` (for the Mathieu model only when the amplitudes are given).
+   pure function offered_chart_columns(scene) result(ids)
+      type(scene_t), intent(in) :: scene  !! the scene
+      integer, allocatable :: ids(:)
+      integer :: k
+      allocate (ids(0))
+      do k = 1, n_chart_columns
+         if (k == col_physical .and. .not. model_is_pendulum(scene%model)) cycle
+         if (k == col_stable_paper .and. .not. scene%epsilon > 0.0_wp) cycle
+         if (k == col_mu_per_s .and. .not. scene%physical) cycle
+         if (k == col_omega .and. size(scene%omegas) == 0) cycle
+         if (k == col_a .and. .not. (scene%physical .and. (size(scene%amplitudes) > 0 .or. &
+             model_is_pendulum(scene%model)))) cycle
+         ids = [ids, k]
+      end do
+   end function offered_chart_columns
+
+   !> The columns a chart or points file of this scene holds: `&scene columns` when given,
+   !> else all it offers; an error naming `&scene columns` when a name is not offered.
+   subroutine scene_chart_columns(scene, ids, error)
+      type(scene_t), intent(in) :: scene  !! a chart or points scene
+      integer, allocatable, intent(out) :: ids(:)  !! indices into `chart_columns`, in file order
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming &scene columns
+      integer, allocatable :: available(:)
+      character(len=:), allocatable :: bad
+      type(column_t) :: table(n_chart_columns)
+      available = offered_chart_columns(scene)
+      if (len_trim(scene%columns) == 0) then
+         ids = available
+         return
+      end if
+      table = chart_columns(scene)
+      call find_columns(table, available, scene%columns, ids, bad)
+      if (len(bad) > 0) then
+         call fail(error, scene%source, "scene", "columns", "'"//bad//"' is not a column of this file or is "// &
+            "named twice (available: "//columns_text(table, available)//")")
+      else if (size(ids) == 0) then
+         call fail(error, scene%source, "scene", "columns", "no column named")
+      end if
+   end subroutine scene_chart_columns
+
+   !> What the columns `ids` need computed at each point: the most any of them needs.
+   pure integer function columns_need(ids) result(need)
+      integer, intent(in) :: ids(:)  !! the columns written
+      need = need_nothing
+      if (size(ids) > 0) need = maxval(chart_needs(ids))
+   end function columns_need
+
+   !> Whether the columns `ids` include stable_paper (a verdict then settles |S| = 2 too).
+   pure logical function columns_paper(ids) result(paper)
+      integer, intent(in) :: ids(:)  !! the columns written
+      paper = any(ids == col_stable_paper)
+   end function columns_paper
+
+   !> The header's line on the accuracy of column `k` (written with the columns `ids`).
+   function accuracy_line(scene, k, ids) result(line)
+      type(scene_t), intent(in) :: scene  !! the scene
+      integer, intent(in) :: k            !! a column
+      integer, intent(in) :: ids(:)       !! the columns written
+      character(len=:), allocatable :: line
+      character(len=:), allocatable :: tolerance, threshold
+      type(column_t) :: table(n_chart_columns)
+      table = chart_columns(scene)
+      line = ""
+      if (chart_needs(k) == need_nothing) return
+      line = "accuracy of "//table(k)%name//": "
+      if (.not. method_is_exact(scene%method%kind)) then
+         line = line//"the value of method '"//method_name(scene%method%kind)//"' itself (an approximation, "// &
+            "no error bound)"
+         return
+      end if
+      tolerance = real_text(scene%method%tolerance)
+      threshold = "|S| = 2 cosh(epsilon)"
+      if (.not. scene%epsilon > 0.0_wp) threshold = "|S| = 2"
+      select case (k)
+      case (col_stable, col_stable_paper)
+         if (k == col_stable_paper) threshold = "|S| = 2"
+         if (columns_need(ids) == need_verdict) then
+            line = line//"exact except at 0.5 (marginal): each point computed only until "//threshold// &
+               " lies beyond the error bound of its S (a screening pass; the tolerance "//tolerance// &
+               " where that does not settle it)"
+         else
+            line = line//"exact except at 0.5 (marginal), from S computed to the tolerance "//tolerance
+         end if
+      case (col_lambda_max, col_mu, col_mu_per_s)
+         line = line//"exact where |S| < 2 (lambda_max = exp(-epsilon), mu = -epsilon/2); elsewhere from S "// &
+            "computed to the tolerance "//tolerance//": relative error of lambda_max (absolute error of 2 mu) "// &
+            "at most "//tolerance//" max(1, |S|)/sqrt(S^2 - 4)"
+      case (col_error_estimate)
+         line = line//"the method's own estimate; at status 0 at most the tolerance "//tolerance
+      case default
+         line = line//"to the tolerance "//tolerance//": |error of S| <= max(error_estimate, "//tolerance// &
+            ") max(1, |S|) at status 0"
+      end select
+   end function accuracy_line
+
+   !> The value of every column (table order) at one computed point: S and lambda_max
+   !> clamped to ±1e300, flags 1 or 0, stable 0.5 when marginal, mu_per_s = μ ω/π
+   !> (0 without `per_second`), error_estimate −1 when the method gives none, a the
+   !> amplitude (0 without `amplitude`).
+   pure function chart_values(alpha, beta, f, physical, status, per_second, amplitude, omega, need) result(v)
+      real(wp), intent(in) :: alpha, beta  !! the grid point
+      type(floquet_t), intent(in) :: f  !! Floquet data of the point
+      logical, intent(in) :: physical   !! (α, β) inside the physical domain
+      integer, intent(in) :: status     !! per-point status code (hillstab_core_status)
+      real(wp), intent(in), optional :: per_second  !! ω/π
+      real(wp), intent(in), optional :: amplitude   !! a (m), `point_amplitude`
+      real(wp), intent(in), optional :: omega       !! ω (rad/s) of a chart over (a, ω)
+      !> what was computed (`columns_need`): below need_growth the columns of λ, μ and ln|S|
+      !> are left at 0 (not written)
+      integer, intent(in), optional :: need
+      real(wp) :: v(n_chart_columns)
+      real(wp) :: s, estimate
+      logical :: overflow, growth
+      s = f%trace%value
+      overflow = f%trace%overflow .or. abs(s) > clamp_magnitude
+      if (overflow) s = sign(clamp_magnitude, s)
+      estimate = f%trace%error_estimate
+      if (estimate < 0.0_wp) estimate = -1.0_wp
+      v(col_alpha) = alpha
+      v(col_a) = 0.0_wp
+      if (present(amplitude)) v(col_a) = amplitude
+      v(col_beta) = beta
+      v(col_omega) = 0.0_wp
+      if (present(omega)) v(col_omega) = omega
+      v(col_s) = s
+      v(col_stable) = merge(1.0_wp, 0.0_wp, f%stable)
+      if (f%marginal) v(col_stable) = 0.5_wp
+      growth = .true.
+      if (present(need)) growth = need >= need_growth
+      if (growth) then
+         v(col_lambda_max) = min(largest_multiplier_modulus(f), clamp_magnitude)
+         v(col_mu) = f%exponent + 0.0_wp  ! no "-0.0" in the file
+         v(col_log10_abs_s) = max(f%trace%log_abs/log(10.0_wp), log10_floor)
+      else
+         v(col_lambda_max) = 0.0_wp
+         v(col_mu) = 0.0_wp
+         v(col_log10_abs_s) = 0.0_wp
+      end if
+      v(col_overflow) = merge(1.0_wp, 0.0_wp, overflow)
+      v(col_physical) = merge(1.0_wp, 0.0_wp, physical)
+      v(col_stable_paper) = merge(1.0_wp, 0.0_wp, f%stable_paper)
+      v(col_mu_per_s) = 0.0_wp
+      if (present(per_second) .and. growth) v(col_mu_per_s) = v(col_mu)*per_second + 0.0_wp
+      v(col_error_estimate) = min(estimate, clamp_magnitude)
+      v(col_status) = real(status, wp)
+   end function chart_values
+
+   !> The text lines of points computed for their verdicts only, written directly into
+   !> buffer(pos + 1 : …), one new-line character between two lines, pos advanced past the
+   !> last (what `chart_values` of `floquet_verdict` and `chart_line` write, without the array of every
+   !> column's value and the dispatch by style: a verdict chart writes little more than the
+   !> grid and a flag, and this loop is most of its text's cost). The verdicts are those of
+   !> `verdicts` (hillstab_hill_floquet), the usual case (no damping, an estimate below 1)
+   !> written out here; a failed point's line is `chart_line`'s of `failed_values`.
+   pure subroutine verdict_lines(ids, alpha, betas, traces, epsilon, tolerance, statuses, physical, amplitudes, &
+                                 alpha_text, buffer, pos, beta_texts)
+      integer, intent(in) :: ids(:)        !! the columns to write (each offered to a verdict file)
+      real(wp), intent(in) :: alpha        !! the points' α
+      real(wp), intent(in) :: betas(:)     !! their β
+      type(trace_t), intent(in) :: traces(:)  !! their traces, with error bounds
+      real(wp), intent(in) :: epsilon      !! damping ε
+      real(wp), intent(in) :: tolerance    !! the scene's tolerance
+      integer, intent(in) :: statuses(:)   !! per-point status codes (status_failed: no trace)
+      !> (α, β) inside the physical domain, per point; empty when no column asks
+      logical, intent(in) :: physical(:)
+      real(wp), intent(in) :: amplitudes(:)  !! a (m) per point; empty for 0
+      character(len=24), intent(in) :: alpha_text  !! put_es(alpha, 17)
+      character(len=*), intent(inout) :: buffer  !! room for the lines (chart_line_length + 1 each)
+      integer, intent(inout) :: pos        !! last position written; advanced past the lines
+      character(len=24), intent(in), optional :: beta_texts(:)  !! put_es(betas, 17)
+      logical :: stable, stable_paper, marginal, inside
+      real(wp) :: s, a
+      integer :: j, k, p, length
+      do j = 1, size(betas)
+         if (j > 1) then
+            buffer(pos + 1:pos + 1) = new_line("a")
+            pos = pos + 1
+         end if
+         inside = .true.
+         if (size(physical) > 0) inside = physical(j)
+         a = 0.0_wp
+         if (size(amplitudes) > 0) a = amplitudes(j)
+         if (statuses(j) == status_failed) then
+            if (present(beta_texts)) then
+               call chart_line(ids, failed_values(alpha, betas(j), inside, a), buffer(pos + 1:pos + chart_line_length), &
+                               alpha_text, beta_texts(j), length)
+            else
+               call chart_line(ids, failed_values(alpha, betas(j), inside, a), buffer(pos + 1:pos + chart_line_length), &
+                               alpha_text, length=length)
+            end if
+            pos = pos + length
+            cycle
+         end if
+         s = traces(j)%value
+         if (epsilon == 0.0_wp .and. .not. traces(j)%overflow .and. traces(j)%error_estimate >= 0.0_wp .and. &
+             traces(j)%error_estimate < 1.0_wp) then
+            stable = abs(s) < 2.0_wp
+            stable_paper = abs(s) <= 2.0_wp
+            marginal = near_threshold(s, 0.0_wp, max(traces(j)%error_estimate, tolerance))
+         else
+            call verdicts(traces(j), epsilon, tolerance, stable, stable_paper, marginal)
+         end if
+         do k = 1, size(ids)
+            if (k > 1) then
+               buffer(pos + 1:pos + 1) = " "
+               pos = pos + 1
+            end if
+            select case (ids(k))
+            case (col_alpha)
+               call put_text24(buffer, pos, alpha_text)
+            case (col_beta)
+               if (present(beta_texts)) then
+                  call put_text24(buffer, pos, beta_texts(j))
+               else
+                  p = pos
+                  call put_es(buffer, p, betas(j), chart_digits(col_beta))
+                  pos = p
+               end if
+            case (col_stable)
+               if (marginal) then
+                  buffer(pos + 1:pos + 3) = "0.5"
+                  pos = pos + 3
+               else
+                  buffer(pos + 1:pos + 1) = merge("1", "0", stable)
+                  pos = pos + 1
+               end if
+            case (col_stable_paper)
+               buffer(pos + 1:pos + 1) = merge("1", "0", stable_paper)
+               pos = pos + 1
+            case (col_physical)
+               buffer(pos + 1:pos + 1) = merge("1", "0", inside)
+               pos = pos + 1
+            case (col_status)
+               p = pos
+               call put_value(style_flag, real(statuses(j), wp), buffer, p)
+               pos = p
+            case (col_a)
+               p = pos
+               call put_value(chart_styles(col_a), a, buffer, p)
+               pos = p
+            case default
+               ! no other column reaches a chart's verdict file (omega is offered to points
+               ! files only); written as 0, as `chart_values` of `floquet_verdict` has it
+               p = pos
+               call put_value(chart_styles(ids(k)), 0.0_wp, buffer, p)
+               pos = p
+            end select
+         end do
+      end do
+   end subroutine verdict_lines
+
+   !> A 24-character field (a grid value's text) into buffer(pos + 1 : pos + 24), pos
+   !> advanced: three 8-character pieces, which the compiler copies as words (the whole
+   !> field went through memmove, a fifth of a verdict line's cost).
+   pure subroutine put_text24(buffer, pos, text)
+      character(len=*), intent(inout) :: buffer  !! the line being built
+      integer, intent(inout) :: pos  !! last position written; advanced past the field
+      character(len=24), intent(in) :: text  !! the field
+      buffer(pos + 1:pos + 8) = text(1:8)
+      buffer(pos + 9:pos + 16) = text(9:16)
+      buffer(pos + 17:pos + 24) = text(17:24)
+      pos = pos + 24
+   end subroutine put_text24
+
+   !> The values of a point where nothing could be computed: alpha, a, beta and physical
+   !> kept, the other columns at their placeholders, status 2.
+   pure function failed_values(alpha, beta, physical, amplitude, omega) result(v)
+      real(wp), intent(in) :: alpha, beta  !! the point
+      logical, intent(in) :: physical      !! (α, β) inside the physical domain
+      real(wp), intent(in), optional :: amplitude  !! a (m)
+      real(wp), intent(in), optional :: omega      !! ω (rad/s)
+      real(wp) :: v(n_chart_columns)
+      v = chart_placeholders
+      if (present(amplitude)) v(col_a) = amplitude
+      if (present(omega)) v(col_omega) = omega
+      v(col_alpha) = alpha
+      v(col_beta) = beta
+      v(col_physical) = merge(1.0_wp, 0.0_wp, physical)
+   end function failed_values
+
+   !> One text line of the columns `ids` of a point's values `v` (`chart_values`), each in
+   !> its column's style; alpha and beta from `alpha_text`, `beta_text` when at hand (a
+   !> chart formats each grid value once, not once per point). No allocation. With
+   !> `length`, the characters after it are left as they were (not blanked).
+   pure subroutine chart_line(ids, v, line, alpha_text, beta_text, length)
+      integer, intent(in) :: ids(:)  !! the columns to write
+      real(wp), intent(in) :: v(n_chart_columns)  !! every column's value
+      character(len=chart_line_length), intent(inout) :: line  !! the line (blank-padded without `length`)
+      character(len=24), intent(in), optional :: alpha_text  !! put_es(alpha, 17)
+      character(len=24), intent(in), optional :: beta_text   !! put_es(beta, 17)
+      integer, intent(out), optional :: length  !! characters written
+      integer :: k, pos, id
+      logical :: have_alpha, have_beta
+      have_alpha = present(alpha_text)
+      have_beta = present(beta_text)
+      pos = 0
+      do k = 1, size(ids)
+         id = ids(k)
+         if (k > 1) then
+            line(pos + 1:pos + 1) = " "
+            pos = pos + 1
+         end if
+         if (chart_digits(id) > 0) then
+            if (id == col_alpha .and. have_alpha) then
+               line(pos + 1:pos + 24) = alpha_text
+               pos = pos + 24
+            else if (id == col_beta .and. have_beta) then
+               line(pos + 1:pos + 24) = beta_text
+               pos = pos + 24
+            else
+               ! the numbers straight to put_es (put_value's dispatch by style, once per
+               ! column of every line, cost a tenth of a full chart's text)
+               call put_es(line, pos, v(id), chart_digits(id))
+            end if
+         else if (v(id) == 0.0_wp) then
+            ! the flags' usual values written here (through put_value they cost 3 % of a
+            ! full chart)
+            line(pos + 1:pos + 1) = "0"
+            pos = pos + 1
+         else if (v(id) == 1.0_wp) then
+            line(pos + 1:pos + 1) = "1"
+            pos = pos + 1
+         else
+            call put_value(chart_styles(id), v(id), line, pos)
+         end if
+      end do
+      if (present(length)) then
+         length = pos
+      else
+         line(pos + 1:) = ""
+      end if
+   end subroutine chart_line
+
+   !> Header lines of a chart or points file: the common header, the method, one line per
+   !> column written, the placeholders of failed rows.
+   function chart_header(scene, outside, ids) result(lines)
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      logical, intent(in) :: outside  !! some point lies outside the physical domain
+      integer, intent(in) :: ids(:)   !! the columns written
+      character(len=:), allocatable :: lines(:)
+      type(column_t) :: table(n_chart_columns)
+      character(len=:), allocatable :: per_column(:), placeholder
+      character(len=400) :: text(2*n_chart_columns + 3)
+      character(len=:), allocatable :: accuracy
+      integer :: k, n
+      table = chart_columns(scene)
+      per_column = column_lines(table, ids)
+      n = 1
+      text(1) = "method: "//method_description(scene)
+      do k = 1, size(per_column)
+         text(n + k) = per_column(k)
+      end do
+      n = n + size(per_column)
+      do k = 1, size(ids)
+         accuracy = accuracy_line(scene, ids(k), ids)
+         if (len(accuracy) == 0) cycle
+         n = n + 1
+         text(n) = accuracy
+      end do
+      if (columns_need(ids) == need_nothing) then
+         n = n + 1
+         text(n) = "accuracy: no trace is computed (the columns written need none)"
+      end if
+      n = n + 1
+      text(n) = "status 2 rows (placeholders, not values):"
+      do k = 1, size(ids)
+         if (table(ids(k))%keep_on_failure .or. ids(k) == col_status) cycle
+         placeholder = real_text(table(ids(k))%placeholder)
+         text(n) = trim(text(n))//merge(" ", ",", index(text(n), "=") == 0)//" "//table(ids(k))%name//" = "//placeholder
+      end do
+      if (outside .and. model_is_pendulum(scene%model)) then
+         n = n + 1
+         text(n) = "note: this file leaves the physical domain (rows with physical = 0)"
+      end if
+      lines = stacked(common_header(scene), text(:n))
+   end function chart_header
+
+   !> Floquet data of one point; `error` only when the point failed.
+   subroutine evaluate_point(scene, alpha, beta, f, error, status, epsilon, ids)
+      type(scene_t), intent(in) :: scene  !! the scene (model, method, damping)
+      real(wp), intent(in) :: alpha, beta  !! the point
+      type(floquet_t), intent(out) :: f  !! its Floquet data
+      type(error_t), allocatable, intent(out) :: error  !! why the point failed
+      !> status_ok, status_roundoff (computed, but only to the round-off level) or status_failed
+      integer, intent(out), optional :: status
+      !> the point's damping (a chart over (a, ω): κπ/ω); default the scene's
+      real(wp), intent(in), optional :: epsilon
+      !> the columns written: only what they need is computed (`columns_need`); default all of S
+      integer, intent(in), optional :: ids(:)
+      type(trace_t) :: tr(1)
+      logical :: failed(1), inaccurate(1)
+      real(wp) :: damping
+      integer :: need
+      logical :: paper
+      damping = scene%epsilon
+      if (present(epsilon)) damping = epsilon
+      if (present(status)) status = status_ok
+      need = need_trace
+      paper = .false.
+      if (present(ids)) then
+         need = columns_need(ids)
+         paper = columns_paper(ids)
+      end if
+      call monodromy_trace_batch(hill_model_t(scene%model, alpha, 0.0_wp, damping), [beta], scene%method, tr, &
+                                 failed, error, inaccurate=inaccurate, need=need, paper=paper)
+      if (failed(1)) then
+         if (present(status)) status = status_failed
+         return
+      end if
+      if (allocated(error)) deallocate (error)
+      if (inaccurate(1) .and. present(status)) status = status_roundoff
+      f = floquet_from_trace(tr(1), damping, scene%method%tolerance)
+   end subroutine evaluate_point
+
+   !> Count the failed points of a task and name the first: err_points_failed, after the
+   !> file has been written. The first failure is computed again serially, so the message
+   !> does not depend on thread timing.
+   subroutine failed_points_error(scene, n_failed, n_total, first, error)
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      integer(int64), intent(in) :: n_failed, n_total  !! failed points; all points
+      real(wp), intent(in) :: first(2)  !! alpha, beta of the first failed point
+      type(error_t), allocatable, intent(out) :: error  !! err_points_failed naming the count and the first point
+      type(error_t), allocatable :: cause
+      type(floquet_t) :: f
+      if (n_failed == 0) return
+      call evaluate_point(scene, first(1), first(2), f, cause)
+      if (.not. allocated(cause)) call set_error(cause, err_input, "fails in parallel only")
+      call set_error(error, err_points_failed, scene%source//": &scene: method: '"// &
+         method_name(scene%method%kind)//"' failed at "//integer_text(n_failed)//" of "//integer_text(n_total)// &
+         " point(s), written with status "//integer_text(status_failed)//" and placeholders to "//output_path(scene)// &
+         "; first at alpha = "// &
+         real_text(first(1))//", beta = "//real_text(first(2))//": "//cause%message)
+   end subroutine failed_points_error
+
+   !> The error of a failed point, naming the scene, the method and the point.
+   subroutine point_error(scene, alpha, beta, cause, error)
+      type(scene_t), intent(in) :: scene
+      real(wp), intent(in) :: alpha, beta
+      type(error_t), intent(in) :: cause
+      type(error_t), allocatable, intent(out) :: error
+      call set_error(error, cause%code, scene%source//": &scene: method: '"//method_name(scene%method%kind)// &
+         "' fails at alpha = "//real_text(alpha)//", beta = "//real_text(beta)//": "//cause%message)
+   end subroutine point_error
+
+   !> A chart whose method cannot run at all (bad parameters) fails at its first point,
+   !> before anything is written; a point where the computation fails is written with
+   !> its status instead.
+   subroutine check_method_runs(scene, alpha, beta, error)
+      type(scene_t), intent(in) :: scene  !! a chart scene
+      real(wp), intent(in) :: alpha, beta  !! its first point
+      type(error_t), allocatable, intent(out) :: error  !! why the method cannot run; unallocated when it can
+      type(error_t), allocatable :: cause
+      type(floquet_t) :: f
+      call evaluate_point(scene, alpha, beta, f, cause)
+      if (allocated(cause)) then
+         if (cause%code == err_invalid_parameter) call point_error(scene, alpha, beta, cause, error)
+      end if
+   end subroutine check_method_runs
+
+   !> Say on stderr (even when quiet: it qualifies the results) how many points could only
+   !> be computed to the round-off level of double precision, not to the tolerance.
+   subroutine warn_inaccurate(scene, n, first)
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      integer(int64), intent(in) :: n  !! number of round-off limited points
+      real(wp), intent(in) :: first(2)  !! alpha, beta of the first such point
+      if (n == 0) return
+      write (error_unit, '(a)') "hillstab: warning: "//scene%source//": "//integer_text(n)// &
+         " point(s) reached only the round-off level of double precision, not the tolerance "// &
+         real_text(scene%method%tolerance)//" (first at alpha = "//real_text(first(1))//", beta = "// &
+         real_text(first(2))//"); their S is the best available"
+   end subroutine warn_inaccurate
+
+   function method_description(scene) result(text)
+      type(scene_t), intent(in) :: scene
+      character(len=:), allocatable :: text
+      text = method_name(scene%method%kind)
+      if (method_uses_segments(scene%method%kind)) then
+         text = text//", "//integer_text(scene%method%n_segments)//" pieces, sampling "// &
+            sampling_name(scene%method%sampling)
+      else if (method_is_exact(scene%method%kind)) then
+         text = text//", tolerance "//real_text(scene%method%tolerance)
+      end if
+   end function method_description
+
+   !> Header lines of a scene given in physical units: the spring, the conversions used.
+   function physical_header(scene) result(lines)
+      type(scene_t), intent(in) :: scene
+      character(len=:), allocatable :: lines(:)
+      character(len=400) :: text(1)
+      if (size(scene%amplitudes) > 0) then
+         text(1) = "each amplitude a of &physical is one point (points: a row; coefficient: a curve): alpha = "// &
+            "a pi^2/rho"//model_physical_note(scene%model)
+         lines = stacked(physical_summary(scene), text)
+      else
+         lines = physical_summary(scene)
+      end if
+   end function physical_header
+
+   !> The bounce amplitude a (m) of a point of a scene with `&physical`: the k-th
+   !> amplitude when the scene gives them, else a = α ρ/π² with ρ = g π²/(β ω²)
+   !> (eq. (24)), that is α g/(β ω²); −1 where β ≤ 0 or g = 0 (no equilibrium length).
+   pure real(wp) function point_amplitude(scene, k, alpha, beta) result(a)
+      type(scene_t), intent(in) :: scene  !! a scene with `&physical`
+      integer, intent(in) :: k  !! the point's index
+      real(wp), intent(in) :: alpha, beta  !! the point
+      if (size(scene%amplitudes) > 0) then
+         a = scene%amplitudes(k)
+      else if (beta > 0.0_wp .and. scene%pendulum%g > 0.0_wp) then
+         a = alpha*scene%pendulum%g/(beta*scene%pendulum%omega**2)
+      else
+         a = -1.0_wp
+      end if
+   end function point_amplitude
+
+   !> Header lines common to every task: version, source, the effective scene, the model.
+   function common_header(scene) result(lines)
+      type(scene_t), intent(in) :: scene  !! the scene
+      character(len=:), allocatable :: lines(:)
+      character(len=:), allocatable :: model_text, common(:)
+      model_text = model_description(scene%model)
+      common = scene_header(scene, "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau", [model_text])
+      if (scene%physical) then
+         lines = stacked(common, physical_header(scene))
+      else
+         lines = common
+      end if
+   end function common_header
+
+   !> The lines of a followed by those of b, at the longer of their lengths.
+   pure function stacked(a, b) result(c)
+      character(len=*), intent(in) :: a(:)  !! the first lines
+      character(len=*), intent(in) :: b(:)  !! the lines after them
+      character(len=:), allocatable :: c(:)
+      allocate (character(len=max(len(a), len(b))) :: c(size(a) + size(b)))
+      c(:size(a)) = a
+      c(size(a) + 1:) = b
+   end function stacked
+
+end module hillstab_batch_tasks_chart_columns

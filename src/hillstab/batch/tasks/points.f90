@@ -1,0 +1,272 @@
+!> Task `points`: the columns of a chart (hillstab_batch_tasks_chart_columns) at the (α, β)
+!> points of a file (`&points file`), or at the bounce amplitudes of `&physical a` with
+!> its r0, in order; the points run in parallel (OpenMP, dynamic schedule). A failed
+!> point is written with status 2 and placeholders; the run then ends with
+!> err_points_failed. The task also runs in units of consecutive points.
+module hillstab_batch_tasks_points
+   use hillstab_core_kinds, only: wp, int64, pi
+   use hillstab_core_error, only: error_t, set_error, err_input
+   use hillstab_core_status, only: status_ok, status_roundoff, status_failed
+   use hillstab_core_text, only: integer_text
+   use hillstab_hill_coefficient, only: in_physical_domain
+   use hillstab_hill_floquet, only: floquet_t
+   use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output, physical_points
+   use hillstab_batch_scene_declaration, only: group_t
+   use hillstab_batch_scene_file, only: scene_file_t, fail
+   use hillstab_batch_scene_checks, only: check_integration_cost
+   use hillstab_batch_scene_group_points, only: points_group, read_points_group
+   use hillstab_batch_tasks_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, &
+      chart_header, &
+      point_amplitude, &
+      scene_chart_columns, chart_columns, evaluate_point, warn_inaccurate, failed_points_error, chart_line_length, &
+      header_bytes, text_row_bytes, binary_row_bytes
+   use hillstab_batch_output_columns, only: columns_text
+   use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text, write_records, &
+      join_lines, discard_output
+   use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
+   implicit none
+   private
+   public :: points_task_t, points_task
+
+   !> Points computed between two progress reports (in parallel within).
+   integer, parameter :: points_chunk = 4096
+
+   !> The points task and its points.
+   type, extends(floquet_task_t) :: points_task_t
+      character(len=:), allocatable :: file   !! `&points file` ("" with `&physical a`)
+      real(wp), allocatable :: points(:, :)   !! (2, n): α, β in order
+   contains
+      procedure :: read => points_read
+      procedure :: run => points_run
+      procedure :: declarations => points_declarations
+      procedure :: estimated_bytes => points_estimated_bytes
+      procedure :: memory_bytes => points_memory_bytes
+      procedure :: size_variables => points_size_variables
+      procedure :: point_count => points_point_count
+      procedure :: unit_size => points_unit_size
+      procedure :: unit_text => points_unit_text
+      procedure :: open_units => points_open_units
+      procedure :: point_of => points_point_of
+   end type points_task_t
+
+contains
+
+   !> `&points`.
+   function points_declarations(self) result(groups)
+      class(points_task_t), intent(in) :: self  !! the task
+      type(group_t), allocatable :: groups(:)
+      allocate (groups(1))
+      groups(1) = points_group()
+   end function points_declarations
+
+   !> The variables that set the size of the file.
+   function points_size_variables(self) result(text)
+      class(points_task_t), intent(in) :: self  !! the task
+      character(len=:), allocatable :: text
+      text = "&points: file: "//integer_text(size(self%points, 2))//" points"
+   end function points_size_variables
+
+   !> A points task before its scene is read.
+   function points_task() result(task)
+      type(points_task_t) :: task
+      task%name = "points"
+      task%amplitudes_replace = "the &points group"
+      task%takes_columns = .true.
+      task%takes_amplitudes = .true.
+   end function points_task
+
+   !> The points of `&points file`, or of `&physical a` (then `&points` may not name a file).
+   subroutine points_read(self, file, scene, error)
+      class(points_task_t), intent(inout) :: self  !! the task, its points filled in
+      type(scene_file_t), intent(in) :: file      !! the scene file
+      type(scene_t), intent(in) :: scene          !! the `&scene` and `&physical` settings
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
+      integer, allocatable :: ids(:)
+      integer :: k
+      logical :: from_physical
+      from_physical = size(scene%amplitudes) > 0
+      allocate (self%groups(1))
+      call read_points_group(file, points_group(), scene%model, self%file, self%points, self%groups(1), error, &
+                             optional=from_physical)
+      if (allocated(error)) return
+      if (from_physical) then
+         if (self%groups(1)%given("file")) then
+            call fail(error, file%path, "points", "file", "the points come either from &points file (alpha, beta) "// &
+               "or from &physical a and r0, not both")
+            return
+         end if
+         self%points = physical_points(scene)
+         call self%groups(1)%hide("file")
+      end if
+      do k = 1, size(self%points, 2)
+         call check_integration_cost(file%path, "points", "file", scene%method, &
+            abs(self%points(1, k)) + abs(self%points(2, k)), error, where="point "//integer_text(k))
+         if (allocated(error)) return
+      end do
+      call scene_chart_columns(scene, ids, error)
+   end subroutine points_read
+
+   !> Header plus one row a point.
+   pure function points_estimated_bytes(self, scene) result(bytes)
+      class(points_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      bytes = header_bytes + int(size(self%points, 2), int64)*merge(binary_row_bytes, text_row_bytes, scene%binary)
+   end function points_estimated_bytes
+
+   !> Every point's line, status and values at once (the lines are written one by one),
+   !> beside the points themselves.
+   function points_memory_bytes(self, scene) result(bytes)
+      class(points_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      bytes = int(size(self%points, 2), int64)*(chart_line_length + 4 + 8*n_chart_columns + 16)
+   end function points_memory_bytes
+
+   !> Whether some point lies outside the physical domain.
+   pure logical function outside(self)
+      class(points_task_t), intent(in) :: self
+      outside = .not. all(in_physical_domain(self%points(1, :), self%points(2, :)))
+   end function outside
+
+   !> Text lines (with the scene's columns) or records `values` of the points `first` …
+   !> `last` (in parallel); a failed point gets its placeholders.
+   subroutine compute_points(self, scene, first, last, lines, statuses, values)
+      class(points_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer, intent(in) :: first, last  !! range of point indices
+      character(len=*), intent(out) :: lines(first:)  !! one chart line per point
+      integer, intent(out) :: statuses(first:)  !! per point: status_ok, status_roundoff or status_failed
+      !> the same points as records (columns, points), for format = 'binary'
+      real(wp), intent(out), optional :: values(:, first:)
+      type(floquet_t) :: f
+      type(error_t), allocatable :: cause
+      real(wp) :: per_second, v(n_chart_columns), alpha, beta, a
+      integer, allocatable :: ids(:)
+      integer :: k
+      call scene_chart_columns(scene, ids, cause)  ! checked when the scene was read
+      ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
+      ! when the scene knows ω)
+      per_second = 0.0_wp
+      if (scene%physical) per_second = scene%pendulum%omega/pi
+      !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause, v, alpha, beta, a)
+      do k = first, last
+         alpha = self%points(1, k)
+         beta = self%points(2, k)
+         a = 0.0_wp
+         if (scene%physical) a = point_amplitude(scene, k, alpha, beta)
+         call evaluate_point(scene, alpha, beta, f, cause, statuses(k), ids=ids)
+         if (statuses(k) == status_failed) then
+            v = failed_values(alpha, beta, in_physical_domain(alpha, beta), a)
+         else
+            v = chart_values(alpha, beta, f, in_physical_domain(alpha, beta), statuses(k), per_second, a)
+         end if
+         if (present(values)) values(:, k) = v(ids)
+         call chart_line(ids, v, lines(k))
+      end do
+      !$omp end parallel do
+   end subroutine compute_points
+
+   !> The points task.
+   subroutine points_run(self, scene, quiet, error)
+      class(points_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      logical, intent(in) :: quiet  !! no progress on stderr
+      type(error_t), allocatable, intent(out) :: error  !! err_io, err_points_failed
+      type(output_file_t) :: file
+      type(progress_t) :: progress
+      character(len=chart_line_length), allocatable :: lines(:)
+      integer, allocatable :: statuses(:), ids(:)
+      real(wp), allocatable :: values(:, :)
+      integer :: k, m, n
+      n = size(self%points, 2)
+      call scene_chart_columns(scene, ids, error)
+      if (allocated(error)) return
+      call open_scene_output(scene, file, error)
+      if (allocated(error)) return
+      allocate (lines(n), statuses(n), values(size(ids), n), stat=k)
+      if (k /= 0) then
+         call discard_output(file)
+         call set_error(error, err_input, scene%source//": &points: file: the buffers of "//integer_text(n)// &
+            " points cannot be allocated (out of memory)")
+         return
+      end if
+      statuses = status_ok
+      call progress_begin(progress, int(n, int64), quiet)
+      ! in chunks, for the progress line (the points of a chunk in parallel)
+      do k = 1, n, points_chunk
+         m = min(n, k + points_chunk - 1)
+         call compute_points(self, scene, k, m, lines(k:m), statuses(k:m), values(:, k:m))
+         call progress_update(progress, int(m, int64))
+      end do
+      call progress_end(progress)
+      call write_header(file, chart_header(scene, outside(self), ids), columns_text(chart_columns(scene), ids), &
+                        error, names_line=scene%names_line, records=[n, 1])
+      if (scene%binary .and. .not. allocated(error)) call write_records(file, values, error)
+      do k = 1, n
+         if (allocated(error) .or. scene%binary) exit
+         call write_text(file, trim(lines(k)), error)
+      end do
+      call finish_output(file, error)
+      if (allocated(error)) return
+      if (any(statuses == status_roundoff)) then
+         k = findloc(statuses, status_roundoff, dim=1)
+         call warn_inaccurate(scene, int(count(statuses == status_roundoff), int64), self%points(:, k))
+      end if
+      if (any(statuses == status_failed)) then
+         k = findloc(statuses, status_failed, dim=1)
+         call failed_points_error(scene, int(count(statuses == status_failed), int64), int(n, int64), &
+                                  self%points(:, k), error)
+      end if
+   end subroutine points_run
+
+   !> The points.
+   pure function points_point_count(self) result(n)
+      class(points_task_t), intent(in) :: self  !! the task
+      integer(int64) :: n
+      n = size(self%points, 2)
+   end function points_point_count
+
+   !> Runs of consecutive points, small enough (about 16 units a worker, at most 64 points)
+   !> to balance points of very different cost.
+   pure integer function points_unit_size(self, n_workers) result(size)
+      class(points_task_t), intent(in) :: self  !! the task
+      integer, intent(in) :: n_workers   !! processes computing units
+      size = max(1, min(64, int(self%point_count())/(16*max(1, n_workers))))
+   end function points_unit_size
+
+   !> The lines of the points `first` … `last`.
+   subroutine points_unit_text(self, scene, unit, first, last, text, statuses)
+      class(points_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer, intent(in) :: unit  !! the unit
+      integer(int64), intent(in) :: first, last  !! its points
+      character(len=:), allocatable, intent(out) :: text  !! the lines, no final new line
+      integer, intent(out) :: statuses(first:last)  !! per point
+      character(len=chart_line_length), allocatable :: lines(:)
+      allocate (lines(first:last))
+      call compute_points(self, scene, int(first), int(last), lines, statuses)
+      call join_lines(lines, .false., text)
+   end subroutine points_unit_text
+
+   !> The header of `points_run`.
+   subroutine points_open_units(self, scene, file, error)
+      class(points_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      type(output_file_t), intent(inout) :: file  !! the open output file
+      type(error_t), allocatable, intent(out) :: error  !! why the file cannot be written
+      integer, allocatable :: ids(:)
+      call scene_chart_columns(scene, ids, error)
+      if (allocated(error)) return
+      call write_header(file, chart_header(scene, outside(self), ids), columns_text(chart_columns(scene), ids), &
+                        error, names_line=scene%names_line)
+   end subroutine points_open_units
+
+   !> (α, β) of point k.
+   pure function points_point_of(self, k) result(point)
+      class(points_task_t), intent(in) :: self  !! the task
+      integer(int64), intent(in) :: k  !! the point
+      real(wp) :: point(2)
+      point = self%points(:, k)
+   end function points_point_of
+end module hillstab_batch_tasks_points

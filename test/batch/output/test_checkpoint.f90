@@ -1,0 +1,589 @@
+!> Tests of checkpoints and `--resume` (hillstab_batch_output_checkpoint, hillstab_batch_run_units): the
+!> hillstab program (built beside this test program) is killed with SIGKILL early, midway and
+!> late in a chart and a Lyapunov map, and `--resume` must then write the file an
+!> uninterrupted run writes, byte for byte, computing only what is missing, and leave no
+!> checkpoint and no temporary file; SIGTERM keeps the checkpoint and says how to resume; a
+!> checkpoint of another scene is refused (exit 2) naming the difference; `--resume` without
+!> a checkpoint starts afresh and says so; a run without `--resume` discards one with a
+!> note; anything planted at the checkpoint's name (symbolic links, a hard link, a
+!> directory open to others) is refused and left untouched; a second run is refused while
+!> the first writes; a write error keeps the checkpoint and a resumed run completes the file.
+module test_checkpoint
+   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_error, only: error_t, err_io, err_input
+   use hillstab_core_text, only: integer_text
+   use hillstab_batch_run_scenes, only: run_scene_file
+   use hillstab_batch_output_checkpoint, only: checkpoint_options_t, checkpoint_directory, scene_difference
+   use hillstab_batch_run_cli, only: exit_status
+   use hillstab_fault_injection, only: limit_file_size, lift_file_size_limit
+   use hillstab_testing
+   use hillstab_test_scratch, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text, &
+      any_temp_file
+   implicit none
+   private
+   public :: collect_checkpoint
+
+   !> A scene run by the program, its output and the file of an uninterrupted run.
+   type :: fixture_t
+      character(len=:), allocatable :: scene      !! the scene file
+      character(len=:), allocatable :: output     !! the file it writes
+      character(len=:), allocatable :: reference  !! that file from an uninterrupted run
+      integer :: n_units = 0                      !! units of a serial run
+      logical :: ready = .false.                  !! made (the reference written)
+   end type fixture_t
+
+   type(fixture_t), save :: chart, map
+
+contains
+
+   function collect_checkpoint() result(suite)
+      type(testsuite_t) :: suite
+      suite = new_testsuite("checkpoint", [ &
+         new_unittest("chart_resumed_after_kill", chart_resumed_after_kill), &
+         new_unittest("lyapunov_resumed_after_kill", lyapunov_resumed_after_kill), &
+         new_unittest("sigterm_keeps_checkpoint", sigterm_keeps_checkpoint), &
+         new_unittest("other_scene_refused", other_scene_refused), &
+         new_unittest("resume_without_checkpoint", resume_without_checkpoint), &
+         new_unittest("discarded_without_resume", discarded_without_resume), &
+         new_unittest("planted_links_not_followed", planted_links_not_followed), &
+         new_unittest("second_run_refused", second_run_refused), &
+         new_unittest("write_error_keeps_checkpoint", write_error_keeps_checkpoint), &
+         new_unittest("binary_not_resumed", binary_not_resumed), &
+         new_unittest("scene_differences", scene_differences), &
+         new_unittest("long_output_names", long_output_names)])
+   end function collect_checkpoint
+
+   !> The hillstab program of this build: `<build>/app/hillstab` beside `<build>/test/…`.
+   function program_path() result(path)
+      character(len=:), allocatable :: path
+      character(len=4096) :: self
+      integer :: at
+      call get_command_argument(0, self)
+      at = index(self, "/test/", back=.true.)
+      if (at == 0) then
+         path = "hillstab"
+      else
+         path = self(:at)//"app/hillstab"
+      end if
+   end function program_path
+
+   !> Run a shell command; its exit status.
+   integer function shell(command) result(status)
+      character(len=*), intent(in) :: command
+      integer :: exit_code
+      call execute_command_line(command, exitstat=exit_code)
+      status = exit_code
+   end function shell
+
+   !> Run the program with `arguments` (OMP_NUM_THREADS=`threads`), stderr to `err`; its
+   !> exit status.
+   integer function run_program(arguments, err, threads) result(status)
+      character(len=*), intent(in) :: arguments, err
+      integer, intent(in) :: threads
+      character(len=8) :: text
+      write (text, '(i0)') threads
+      status = shell("OMP_NUM_THREADS="//trim(text)//" '"//program_path()//"' "//arguments//" 2>'"//err//"'")
+   end function run_program
+
+   !> Start the program on one thread with `arguments`, and once the checkpoint's state
+   !> `state` records at least `units` units, send it `signal` (KILL, TERM); the program's
+   !> exit status as the shell sees it (137 killed, 143 after SIGTERM, 0 when it ended first).
+   integer function stop_program(arguments, state, units, signal, err) result(status)
+      character(len=*), intent(in) :: arguments, state, signal, err
+      integer, intent(in) :: units
+      character(len=:), allocatable :: script
+      character(len=8) :: text
+      script = scratch_prefix("stop.sh")
+      call write_file(script, [character(len=100) :: &
+         'units=$1; sig=$2; state=$3; err=$4; shift 4', &
+         'OMP_NUM_THREADS=1 "$@" 2>"$err" &', &
+         'pid=$!; n=0', &
+         'while kill -0 $pid 2>/dev/null; do', &
+         '   u=$(sed -n "s/^units = \([0-9]*\) .*/\1/p" "$state" 2>/dev/null)', &
+         '   if [ "${u:-0}" -ge "$units" ]; then kill -"$sig" $pid; break; fi', &
+         '   n=$((n + 1)); if [ $n -ge 12000 ]; then kill -KILL $pid; break; fi', &
+         '   sleep 0.01', &
+         'done', &
+         '{ wait $pid; } 2>/dev/null'])
+      write (text, '(i0)') units
+      status = shell("bash '"//script//"' "//trim(text)//" "//signal//" '"//state//"' '"//err//"' '"// &
+                     program_path()//"' "//arguments)
+      call delete_file(script)
+   end function stop_program
+
+   !> The units done and the bytes a checkpoint's state records (-1 when it has none).
+   subroutine state_of(directory, units, bytes)
+      character(len=*), intent(in) :: directory
+      integer, intent(out) :: units
+      integer(int64), intent(out) :: bytes
+      character(len=1024), allocatable :: lines(:)
+      integer :: k, ios
+      units = -1
+      bytes = -1
+      lines = read_lines(directory//"/state")
+      do k = 1, size(lines)
+         if (lines(k)(1:8) == "units = ") read (lines(k)(9:), *, iostat=ios) units
+         if (lines(k)(1:8) == "bytes = ") read (lines(k)(9:), *, iostat=ios) bytes
+      end do
+   end subroutine state_of
+
+   !> Bytes of a file (-1 when missing).
+   function size_of(path) result(bytes)
+      character(len=*), intent(in) :: path
+      integer(int64) :: bytes
+      logical :: exists
+      inquire (file=path, exist=exists, size=bytes)
+      if (.not. exists) bytes = -1
+   end function size_of
+
+   !> Whether two files are byte for byte the same.
+   logical function same_file(a, b)
+      character(len=*), intent(in) :: a, b
+      same_file = shell("cmp -s '"//a//"' '"//b//"'") == 0
+   end function same_file
+
+   !> Whether a file's text contains `part`.
+   logical function file_says(path, part)
+      character(len=*), intent(in) :: path, part
+      character(len=1024), allocatable :: lines(:)
+      integer :: k
+      file_says = .false.
+      lines = read_lines(path)
+      do k = 1, size(lines)
+         if (index(lines(k), part) > 0) file_says = .true.
+      end do
+   end function file_says
+
+   !> Whether a directory exists.
+   logical function directory_exists(path)
+      character(len=*), intent(in) :: path
+      directory_exists = shell("test -d '"//path//"'") == 0
+   end function directory_exists
+
+   !> Write `lines` as the scene of `f`, run it uninterrupted, keep its file as the reference.
+   subroutine make_fixture(f, name, lines, task, n_units)
+      type(fixture_t), intent(inout) :: f
+      character(len=*), intent(in) :: name, lines(:), task
+      integer, intent(in) :: n_units
+      integer :: status
+      if (f%ready) return
+      f%scene = scratch_prefix(name)//".nml"
+      f%output = scratch_prefix(name)//"_"//task//".dat"
+      f%reference = scratch_prefix(name)//".reference"
+      f%n_units = n_units
+      call write_file(f%scene, lines)
+      status = run_program("--quiet '"//f%scene//"'", scratch_prefix(name)//".err", 2)
+      status = shell("mv '"//f%output//"' '"//f%reference//"'")
+      f%ready = status == 0
+   end subroutine make_fixture
+
+   !> Delete the files of a fixture (each test leaves nothing behind; the next makes it again).
+   subroutine release_fixture(f)
+      type(fixture_t), intent(inout) :: f
+      if (.not. allocated(f%scene)) return
+      call delete_file(f%scene)
+      call delete_file(f%reference)
+      call delete_file(f%scene(:len(f%scene) - 4)//".err")
+      call delete_file(f%output)
+      f%ready = .false.
+   end subroutine release_fixture
+
+   !> A chart of 24 rows of 300 points by magnus6 at 1e-12 (20 to 50 ms a row here).
+   subroutine chart_fixture()
+      call make_fixture(chart, "ck_chart", [ &
+         padded("&scene task='chart', method='magnus6', tolerance=1e-12, output='"//scratch_prefix("ck_chart")//"' /"), &
+         padded("&chart alpha_min=0, alpha_max=9.8, n_alpha=24, beta_min=-2, beta_max=12, n_beta=300 /")], "chart", 24)
+   end subroutine chart_fixture
+
+   !> A Lyapunov map of 8 x 25 points, one a batch, 150 periods each: 13 units of 16 points.
+   subroutine map_fixture()
+      call make_fixture(map, "ck_map", [ &
+         padded("&scene task='lyapunov', output='"//scratch_prefix("ck_map")//"' /"), &
+         padded("&series phi0=0.017, periods=150 /"), &
+         padded("&lyapunov lanes=1, early_stop=.false. /"), &
+         padded("&chart alpha_min=0.5, alpha_max=9.5, n_alpha=8, beta_min=0.5, beta_max=9.5, n_beta=25 /")], &
+         "lyapunov", 13)
+   end subroutine map_fixture
+
+   !> Kill the run of `f` with SIGKILL once `units` units are in its checkpoint, check what
+   !> the checkpoint holds, optionally add bytes a killed write could leave, and resume it
+   !> (on two threads): the file of the uninterrupted run, no checkpoint, no temporary file.
+   subroutine kill_and_resume(ctx, f, units, garbage)
+      type(test_context_t), intent(inout) :: ctx
+      type(fixture_t), intent(in) :: f
+      integer, intent(in) :: units
+      logical, intent(in) :: garbage
+      character(len=:), allocatable :: directory, err, label, expected, message
+      character(len=8) :: text
+      integer(int64) :: bytes
+      integer :: status, done
+      write (text, '(i0)') units
+      label = f%output//" killed after "//trim(text)//" units"
+      directory = checkpoint_directory(f%output)
+      err = scratch_prefix("ck.err")
+      status = stop_program("--quiet --checkpoint-interval 0 '"//f%scene//"'", directory//"/state", units, "KILL", err)
+      call check(ctx, status == 137, label//": killed while it ran (status "//integer_text(status)//")")
+      call state_of(directory, done, bytes)
+      call check(ctx, done >= units .and. done < f%n_units, label//": the checkpoint records "//integer_text(done)// &
+                 " units")
+      call check(ctx, bytes > 0 .and. bytes <= size_of(directory//"/data"), label// &
+                 ": the state claims no more bytes than the data hold")
+      call check(ctx, .not. file_exists(f%output), label//": no output file")
+      expected = f%reference
+      if (garbage) then
+         ! a partial row after the recorded bytes (cut on resume), and a mark in the first
+         ! recorded row (kept: a resumed run computes only what is missing)
+         expected = scratch_prefix("ck.marked")
+         status = shell("printf '1.0 2.0 partial row' >> '"//directory//"/data'")
+         status = shell("at=$(grep -b -m1 -v '^#' '"//directory//"/data' | cut -d: -f1) && cp '"//f%reference// &
+                        "' '"//expected//"' && for f in '"//directory//"/data' '"//expected//"'; do printf X | "// &
+                        "dd of=""$f"" bs=1 seek=$at conv=notrunc 2>/dev/null; done")
+         call check(ctx, status == 0 .and. .not. same_file(expected, f%reference), label//": marked")
+      end if
+      status = run_program("--quiet --resume '"//f%scene//"'", err, 2)
+      call check(ctx, status == 0, label//": the resumed run succeeds (status "//integer_text(status)//")")
+      call check(ctx, file_says(err, "resuming"), label//": it says it resumes")
+      message = label//": the file of an uninterrupted run"
+      if (garbage) message = message//", with the mark (the units done are not computed again)"
+      call check(ctx, same_file(f%output, expected), message)
+      if (garbage) call delete_file(expected)
+      call check(ctx, .not. directory_exists(directory), label//": the checkpoint is removed")
+      call check(ctx, .not. any_temp_file(f%output), label//": no temporary file")
+      call delete_file(f%output)
+      call delete_file(err)
+   end subroutine kill_and_resume
+
+   !> SIGKILL after 1, 12 and 20 of 24 rows (the middle one with a partial row after the
+   !> recorded bytes, which the resumed run cuts, and a mark in a recorded row, which it keeps).
+   subroutine chart_resumed_after_kill(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      call chart_fixture()
+      call check(ctx, chart%ready, "the uninterrupted chart ran: "//program_path())
+      if (.not. chart%ready) return
+      call kill_and_resume(ctx, chart, 1, .false.)
+      call kill_and_resume(ctx, chart, 12, .true.)
+      call kill_and_resume(ctx, chart, 20, .false.)
+      call release_fixture(chart)
+   end subroutine chart_resumed_after_kill
+
+   !> SIGKILL after 1, 6 and 11 of 13 units of a Lyapunov map.
+   subroutine lyapunov_resumed_after_kill(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      call map_fixture()
+      call check(ctx, map%ready, "the uninterrupted map ran: "//program_path())
+      if (.not. map%ready) return
+      call kill_and_resume(ctx, map, 1, .false.)
+      call kill_and_resume(ctx, map, 6, .true.)
+      call kill_and_resume(ctx, map, 11, .false.)
+      call release_fixture(map)
+   end subroutine lyapunov_resumed_after_kill
+
+   !> SIGTERM: exit 143, the temporary file removed, the checkpoint kept, a message saying
+   !> how to resume; the resumed run writes the uninterrupted file.
+   subroutine sigterm_keeps_checkpoint(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: directory, err
+      integer(int64) :: bytes
+      integer :: status, done
+      call chart_fixture()
+      if (.not. chart%ready) return
+      directory = checkpoint_directory(chart%output)
+      err = scratch_prefix("ck_term.err")
+      status = stop_program("--quiet --checkpoint-interval 0 '"//chart%scene//"'", directory//"/state", 5, "TERM", err)
+      call check(ctx, status == 143, "exit 143 (status "//integer_text(status)//")")
+      call check(ctx, file_says(err, "stopped by signal 15"), "says which signal")
+      call check(ctx, file_says(err, "hillstab --resume "//chart%scene), "says how to resume")
+      call check(ctx, file_says(err, "the checkpoint '"//directory//"' keeps"), "names the checkpoint")
+      call check(ctx, .not. any_temp_file(chart%output), "no temporary file")
+      call check(ctx, .not. file_exists(chart%output), "no output file")
+      call state_of(directory, done, bytes)
+      call check(ctx, done >= 5 .and. bytes <= size_of(directory//"/data"), "the checkpoint is kept")
+      status = run_program("--quiet --resume '"//chart%scene//"'", err, 2)
+      call check(ctx, status == 0 .and. same_file(chart%output, chart%reference), "resumed: the uninterrupted file")
+      call check(ctx, .not. directory_exists(directory), "the checkpoint is removed")
+      call delete_file(err)
+      call release_fixture(chart)
+   end subroutine sigterm_keeps_checkpoint
+
+   !> A checkpoint of another effective scene (a variable of &chart, of &scene) is refused
+   !> with exit 2 naming group and variable, and left as it was.
+   subroutine other_scene_refused(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: directory, err, other
+      character(len=1024), allocatable :: before(:), after(:)
+      integer :: status
+      call chart_fixture()
+      if (.not. chart%ready) return
+      directory = checkpoint_directory(chart%output)
+      err = scratch_prefix("ck_other.err")
+      other = scratch_prefix("ck_other.nml")
+      status = stop_program("--quiet --checkpoint-interval 0 '"//chart%scene//"'", directory//"/state", 2, "KILL", err)
+      before = read_lines(directory//"/state")
+      call write_file(other, [ &
+         padded("&scene task='chart', method='magnus6', tolerance=1e-12, output='"//scratch_prefix("ck_chart")//"' /"), &
+         padded("&chart alpha_min=0, alpha_max=9.8, n_alpha=24, beta_min=-2, beta_max=12, n_beta=301 /")])
+      status = run_program("--quiet --resume '"//other//"'", err, 1)
+      call check(ctx, status == 2, "another grid: exit 2 (status "//integer_text(status)//")")
+      call check(ctx, file_says(err, other//": &chart: n_beta: 301 in this scene, 300 in the checkpoint"), &
+                 "names group, variable and values")
+      call write_file(other, [ &
+         padded("&scene task='chart', method='magnus4', tolerance=1e-12, output='"//scratch_prefix("ck_chart")//"' /"), &
+         padded("&chart alpha_min=0, alpha_max=9.8, n_alpha=24, beta_min=-2, beta_max=12, n_beta=300 /")])
+      status = run_program("--quiet --resume '"//other//"'", err, 1)
+      call check(ctx, status == 2, "another method: exit 2")
+      call check(ctx, file_says(err, "&scene: method: 'magnus4' in this scene, 'magnus6' in the checkpoint"), &
+                 "names the method")
+      after = read_lines(directory//"/state")
+      call check(ctx, size(after) == size(before) .and. size(before) > 5, "the checkpoint is kept")
+      if (size(after) == size(before)) call check(ctx, all(after == before), "unchanged")
+      call check(ctx, .not. file_exists(chart%output), "no output file")
+      ! the same scene resumes it
+      status = run_program("--quiet --resume '"//chart%scene//"'", err, 2)
+      call check(ctx, status == 0 .and. same_file(chart%output, chart%reference), "the scene of the checkpoint resumes")
+      call delete_file(other)
+      call delete_file(err)
+      call release_fixture(chart)
+   end subroutine other_scene_refused
+
+   !> `--resume` without a checkpoint: a fresh run that says so, the same file.
+   subroutine resume_without_checkpoint(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: err
+      integer :: status
+      call map_fixture()
+      if (.not. map%ready) return
+      err = scratch_prefix("ck_fresh.err")
+      call check(ctx, .not. directory_exists(checkpoint_directory(map%output)), "no checkpoint before")
+      status = run_program("--quiet --resume '"//map%scene//"'", err, 2)
+      call check(ctx, status == 0, "exit 0")
+      call check(ctx, file_says(err, "no checkpoint of "//map%output) .and. file_says(err, "starting afresh"), &
+                 "says it starts afresh")
+      call check(ctx, same_file(map%output, map%reference), "the same file")
+      call check(ctx, .not. directory_exists(checkpoint_directory(map%output)), "no checkpoint after")
+      call delete_file(err)
+      call release_fixture(map)
+   end subroutine resume_without_checkpoint
+
+   !> A run without `--resume` discards a checkpoint (and the temporary file its killed run
+   !> left) with a note, and writes the whole file.
+   subroutine discarded_without_resume(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: directory, err
+      integer :: status
+      call map_fixture()
+      if (.not. map%ready) return
+      directory = checkpoint_directory(map%output)
+      err = scratch_prefix("ck_discard.err")
+      status = stop_program("--quiet --checkpoint-interval 0 '"//map%scene//"'", directory//"/state", 3, "KILL", err)
+      call check(ctx, status == 137 .and. directory_exists(directory), "a checkpoint is left")
+      call check(ctx, any_temp_file(map%output), "and the killed run's temporary file")
+      status = run_program("--quiet '"//map%scene//"'", err, 2)
+      call check(ctx, status == 0, "exit 0")
+      call check(ctx, file_says(err, "discarded the checkpoint '"//directory//"'"), "says it discarded it")
+      call check(ctx, same_file(map%output, map%reference), "the whole file")
+      call check(ctx, .not. directory_exists(directory), "the checkpoint is gone")
+      call check(ctx, .not. any_temp_file(map%output), "so is the temporary file")
+      call delete_file(err)
+      call release_fixture(map)
+   end subroutine discarded_without_resume
+
+   !> At the checkpoint's name: a symbolic link to a directory and to a file, a hard link of
+   !> a file, a directory other users may write: refused (exit 2) naming it, with and without
+   !> `--resume`, nothing followed, written or removed, no output.
+   subroutine planted_links_not_followed(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: prefix, scene, output, directory, victim
+      character(len=1024), allocatable :: lines(:)
+      type(error_t), allocatable :: error
+      integer :: status, round
+      logical :: resume
+      prefix = scratch_prefix("ck_planted")
+      scene = prefix//".nml"
+      output = prefix//"_chart.dat"
+      directory = checkpoint_directory(output)
+      victim = prefix//"_victim"
+      call write_file(scene, [padded("&scene method='formula', output='"//prefix//"' /"), &
+                              padded("&chart n_alpha=3, n_beta=4 /")])
+      do round = 1, 8
+         resume = round > 4
+         status = shell("rm -rf '"//victim//"' '"//directory//"'; mkdir -p '"//victim//"'; echo precious > '"// &
+                        victim//"/state'; echo precious > '"//victim//"/file'")
+         select case (mod(round - 1, 4))
+         case (0)
+            status = shell("ln -s '"//victim(index(victim, "/", back=.true.) + 1:)//"' '"//directory//"'")
+         case (1)
+            status = shell("ln -s '"//victim(index(victim, "/", back=.true.) + 1:)//"/file' '"//directory//"'")
+         case (2)
+            status = shell("ln '"//victim//"/file' '"//directory//"'")
+         case (3)
+            status = shell("mkdir -m 0777 '"//directory//"'; echo precious > '"//directory//"/state'")
+         end select
+         call run_scene_file(scene, .true., error, options=checkpoint_options_t(resume=resume, interval=0.0_wp))
+         call check(ctx, allocated(error), "refused, round "//integer_text(round))
+         if (allocated(error)) then
+            call check(ctx, exit_status(error) == 2, "exit 2: "//error%message)
+            call check(ctx, contains_text(error%message, scene//": &scene: output: cannot keep the checkpoint '"// &
+                       directory//"'"), "names the checkpoint: "//error%message)
+         end if
+         lines = read_lines(victim//"/file")
+         call check(ctx, size(lines) == 1 .and. lines(1) == "precious", "the victim's file untouched")
+         lines = read_lines(victim//"/state")
+         call check(ctx, size(lines) == 1 .and. lines(1) == "precious", "the victim's directory untouched")
+         call check(ctx, shell("test -L '"//directory//"' || test -e '"//directory//"'") == 0, "the planted name kept")
+         call check(ctx, .not. file_exists(output) .and. .not. any_temp_file(output), "no output, no temporary file")
+      end do
+      status = shell("rm -rf '"//victim//"' '"//directory//"'")
+      call delete_file(scene)
+   end subroutine planted_links_not_followed
+
+   !> While a run writes its checkpoint, a second run of the same output (with or without
+   !> `--resume`) is refused (exit 2) and changes nothing.
+   subroutine second_run_refused(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: directory, err, script
+      integer :: status
+      call chart_fixture()
+      if (.not. chart%ready) return
+      directory = checkpoint_directory(chart%output)
+      err = scratch_prefix("ck_second.err")
+      script = scratch_prefix("second.sh")
+      call write_file(script, [character(len=200) :: &
+         'OMP_NUM_THREADS=1 "$1" --quiet --checkpoint-interval 0 "$2" 2>/dev/null &', &
+         'pid=$!; n=0', &
+         'until [ -e "$3/state" ] || [ $n -ge 3000 ]; do sleep 0.01; n=$((n + 1)); done', &
+         '"$1" --quiet "$2" 2>"$4"; first=$?', &
+         '"$1" --quiet --resume "$2" 2>>"$4"; second=$?', &
+         'kill -TERM $pid; wait $pid', &
+         '[ $first = 2 ] && [ $second = 2 ]'])
+      status = shell("bash '"//script//"' '"//program_path()//"' '"//chart%scene//"' '"//directory//"' '"//err//"'")
+      call check(ctx, status == 0, "both refused with exit 2")
+      call check(ctx, file_says(err, "is in use by another run"), "says why")
+      call check(ctx, .not. file_exists(chart%output), "no output file")
+      status = shell("rm -rf '"//directory//"'")
+      call delete_file(script)
+      call delete_file(err)
+      call release_fixture(chart)
+   end subroutine second_run_refused
+
+   !> A points run that hits a file-size limit fails (exit 2) keeping its checkpoint and
+   !> saying so; resumed without the limit it writes the uninterrupted file. A changed
+   !> points file is then refused, naming `&points file`.
+   subroutine write_error_keeps_checkpoint(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: prefix, scene, points, output, directory, reference
+      character(len=40) :: lines(400)
+      type(error_t), allocatable :: error
+      integer(int64) :: bytes
+      integer :: k, done, status
+      prefix = scratch_prefix("ck_points")
+      scene = prefix//".nml"
+      points = prefix//".dat"
+      output = prefix//"_points.dat"
+      reference = prefix//".reference"
+      directory = checkpoint_directory(output)
+      do k = 1, size(lines)
+         write (lines(k), '(f8.4,1x,f8.4)') 9.8_wp*(k - 1)/size(lines), 12.0_wp - 14.0_wp*mod(7*k, 31)/31.0_wp
+      end do
+      call write_file(points, lines)
+      call write_file(scene, [padded("&scene task='points', method='magnus6', output='"//prefix//"' /"), &
+                              padded("&points file='"//points//"' /")])
+      call run_scene_file(scene, .true., error)
+      call check(ctx, .not. allocated(error), "the uninterrupted run")
+      status = shell("mv '"//output//"' '"//reference//"'")
+      call limit_file_size(30000_int64)
+      call run_scene_file(scene, .true., error, options=checkpoint_options_t(interval=0.0_wp, command="RESUME"))
+      call lift_file_size_limit()
+      call check(ctx, allocated(error), "the write error stops the run")
+      if (allocated(error)) then
+         call check(ctx, error%code == err_io .and. contains_text(error%message, "File too large"), error%message)
+         call check(ctx, contains_text(error%message, "the checkpoint '"//directory//"' keeps") .and. &
+                    contains_text(error%message, "`RESUME` continues the run"), "says the checkpoint is kept")
+      end if
+      call state_of(directory, done, bytes)
+      call check(ctx, done > 0 .and. bytes <= 30000_int64, "the checkpoint holds the units written: "// &
+                 integer_text(done))
+      call check(ctx, .not. file_exists(output) .and. .not. any_temp_file(output), "no output, no temporary file")
+      call run_scene_file(scene, .true., error, options=checkpoint_options_t(resume=.true.))
+      call check(ctx, .not. allocated(error), "resumed without the limit")
+      call check(ctx, same_file(output, reference), "the file of the uninterrupted run")
+      if (.not. same_file(output, reference)) status = shell("diff '"//output//"' '"//reference//"' | head -20")
+      call check(ctx, .not. directory_exists(directory), "the checkpoint is removed")
+      ! a checkpoint of the same scene with other points
+      call limit_file_size(30000_int64)
+      call run_scene_file(scene, .true., error, options=checkpoint_options_t(interval=0.0_wp))
+      call lift_file_size_limit()
+      lines(7) = "1.2345 2.3456"
+      call write_file(points, lines)
+      call run_scene_file(scene, .true., error, options=checkpoint_options_t(resume=.true.))
+      call check(ctx, allocated(error), "other points are refused")
+      if (allocated(error)) then
+         call check(ctx, error%code == err_input, "bad input (exit 2)")
+         call check(ctx, contains_text(error%message, scene//": &points: file: the points differ"), error%message)
+      end if
+      call check(ctx, directory_exists(directory), "and their checkpoint kept")
+      status = shell("rm -rf '"//directory//"'")
+      call delete_file(output)
+      call delete_file(reference)
+      call delete_file(points)
+      call delete_file(scene)
+   end subroutine write_error_keeps_checkpoint
+
+   !> `--resume` on a chart written in binary (which keeps no checkpoint) is refused, naming
+   !> `&scene format`; without `--resume` it runs.
+   subroutine binary_not_resumed(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: prefix
+      type(error_t), allocatable :: error
+      prefix = scratch_prefix("ck_binary")
+      call write_file(prefix//".nml", [padded("&scene method='formula', format='binary', output='"//prefix//"' /"), &
+                                       padded("&chart n_alpha=3, n_beta=4 /")])
+      call run_scene_file(prefix//".nml", .true., error, options=checkpoint_options_t(resume=.true.))
+      call check(ctx, allocated(error), "refused")
+      if (allocated(error)) then
+         call check(ctx, exit_status(error) == 2, "exit 2")
+         call check(ctx, contains_text(error%message, prefix//".nml: &scene: format: 'binary'"), error%message)
+      end if
+      call check(ctx, .not. file_exists(prefix//"_chart.bin"), "no file")
+      call run_scene_file(prefix//".nml", .true., error, options=checkpoint_options_t())
+      call check(ctx, .not. allocated(error) .and. file_exists(prefix//"_chart.bin"), "runs without --resume")
+      call delete_file(prefix//"_chart.bin")
+      call delete_file(prefix//".nml")
+   end subroutine binary_not_resumed
+
+   !> The first difference between two effective scenes, by group and variable.
+   subroutine scene_differences(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=80) :: a(2), b(2)
+      character(len=80) :: c(3)
+      a = [character(len=80) :: "&scene task = 'chart', columns = 'alpha, beta', epsilon = 0.0 /", &
+           "&chart n_alpha = 3, n_beta = 4 /"]
+      b = a
+      call check(ctx, scene_difference(a, b) == "", "the same scene")
+      b(2) = "&chart n_alpha = 3, n_beta = 5 /"
+      call check(ctx, scene_difference(a, b) == "&chart: n_beta: 5 in this scene, 4 in the checkpoint", &
+                 scene_difference(a, b))
+      b = a
+      b(1) = "&scene task = 'chart', columns = 'alpha, S', epsilon = 0.0 /"
+      call check(ctx, scene_difference(a, b) == "&scene: columns: 'alpha, S' in this scene, 'alpha, beta' in the "// &
+                 "checkpoint", "a quoted comma: "//scene_difference(a, b))
+      c = [character(len=80) :: a(1), "&physical r0 = 1.0 /", a(2)]
+      call check(ctx, scene_difference(a, c) == "&physical: this scene has the group, the checkpoint's scene has not", &
+                 scene_difference(a, c))
+      call check(ctx, scene_difference(c, a) == "&physical: the checkpoint's scene has the group, this scene has not", &
+                 scene_difference(c, a))
+   end subroutine scene_differences
+
+   !> The checkpoint of an output name of 255 bytes fits in a file name, and different long
+   !> names get different checkpoints.
+   subroutine long_output_names(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: a, b, da, db
+      a = "out/"//repeat("a", 250)//"1.dat"
+      b = "out/"//repeat("a", 250)//"2.dat"
+      da = checkpoint_directory(a)
+      db = checkpoint_directory(b)
+      call check(ctx, len(da) - 4 <= 255 .and. len(db) - 4 <= 255, "fits: "//da)
+      call check(ctx, da /= db, "distinct")
+      call check(ctx, checkpoint_directory("out/x_chart.dat") == "out/x_chart.dat.checkpoint", "the plain name")
+   end subroutine long_output_names
+end module test_checkpoint

@@ -1,0 +1,228 @@
+!> Tests of the atomic output writer (hillstab_batch_output_file): under a file-size limit every
+!> task's writer fails with the path and the cause and leaves the old file and no
+!> temporary file; a directory in the place of the output file is refused before any
+!> work; a committed file holds exactly what was written (every line compared); the progress
+!> line's rate, whole from 10 up and with two significant digits below.
+module test_output
+   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_error, only: error_t, err_io, err_input
+   use hillstab_batch_output_file, only: output_file_t, open_output, write_text, commit_output, discard_output
+   use hillstab_batch_run_scenes, only: run_scene_file
+   use hillstab_batch_output_progress, only: rate_text
+   use hillstab_testing
+   use hillstab_fault_injection, only: check_writer_under_limit, limit_file_size, lift_file_size_limit, &
+      limit_address_space, lift_address_space_limit
+   use hillstab_test_scratch, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text
+   implicit none
+   private
+   public :: collect_output
+
+contains
+
+   function collect_output() result(suite)
+      type(testsuite_t) :: suite
+      suite = new_testsuite("output", [ &
+         new_unittest("commit_writes_all", commit_writes_all), &
+         new_unittest("failed_write_keeps_old_file", failed_write_keeps_old_file), &
+         new_unittest("chart_writer_file_limit", chart_writer_file_limit), &
+         new_unittest("points_writer_file_limit", points_writer_file_limit), &
+         new_unittest("coefficient_writer_file_limit", coefficient_writer_file_limit), &
+         new_unittest("directory_output_refused", directory_output_refused), &
+         new_unittest("output_larger_than_free_space", output_larger_than_free_space), &
+         new_unittest("buffers_larger_than_memory", buffers_larger_than_memory), &
+         new_unittest("progress_rate_text", progress_rate_text)])
+   end function collect_output
+
+   subroutine commit_writes_all(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(output_file_t) :: file
+      type(error_t), allocatable :: error
+      character(len=1024), allocatable :: lines(:)
+      character(len=:), allocatable :: path
+      integer :: k
+      path = scratch_prefix("commit")//".dat"
+      call open_output(file, path, error)
+      call check(ctx, .not. allocated(error), "open")
+      if (allocated(error)) return
+      do k = 1, 3000
+         call write_text(file, repeat("x", mod(k, 97))//"|", error)
+         if (allocated(error)) exit
+      end do
+      call check(ctx, .not. allocated(error), "writes")
+      call commit_output(file, error)
+      call check(ctx, .not. allocated(error), "commit")
+      lines = read_lines(path)
+      call check(ctx, size(lines) == 3000, "every line")
+      if (size(lines) == 3000) then
+         do k = 1, 3000
+            if (trim(lines(k)) /= repeat("x", mod(k, 97))//"|") exit
+         end do
+         call check(ctx, k > 3000, "each line as written")
+      end if
+      call delete_file(path)
+   end subroutine commit_writes_all
+
+   !> The writer itself: a write beyond the limit fails, so does commit; the old file stays.
+   subroutine failed_write_keeps_old_file(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(output_file_t) :: file
+      type(error_t), allocatable :: error, commit_error
+      character(len=1024), allocatable :: lines(:)
+      character(len=:), allocatable :: path
+      integer :: k
+      logical :: failed
+      path = scratch_prefix("limited")//".dat"
+      call write_file(path, ["old"])
+      call open_output(file, path, error)
+      call check(ctx, .not. allocated(error), "open")
+      if (allocated(error)) return
+      call limit_file_size(10000_int64)
+      failed = .false.
+      do k = 1, 1000
+         call write_text(file, repeat("y", 99), error)
+         if (allocated(error)) failed = .true.
+      end do
+      call commit_output(file, commit_error)
+      call lift_file_size_limit()
+      call check(ctx, failed, "a write past the limit reports an error")
+      call check(ctx, allocated(commit_error), "commit refuses an incomplete file")
+      if (allocated(commit_error)) then
+         call check(ctx, commit_error%code == err_io, "i/o error")
+         call check(ctx, contains_text(commit_error%message, path), "names the path: "//commit_error%message)
+      end if
+      lines = read_lines(path)
+      call check(ctx, size(lines) == 1, "old file kept")
+      if (size(lines) == 1) call check(ctx, lines(1) == "old", "old file unchanged")
+      call check(ctx, .not. file_exists(file%temp_path), "temporary file removed")
+      call delete_file(path)
+   end subroutine failed_write_keeps_old_file
+
+   subroutine chart_writer_file_limit(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: out, scene
+      out = scratch_prefix("limchart")
+      scene = out//".nml"
+      call write_file(scene, [padded("&scene method = 'formula', output = '"//out//"' /"), &
+                              padded("&chart n_alpha = 40, n_beta = 40 /")])
+      call check_writer_under_limit(ctx, scene, out//"_chart.dat", 8192_int64)
+      call delete_file(scene)
+   end subroutine chart_writer_file_limit
+
+   subroutine points_writer_file_limit(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: out, scene, points
+      character(len=40) :: lines(200)
+      integer :: k
+      out = scratch_prefix("limpts")
+      scene = out//".nml"
+      points = out//"_in.dat"
+      do k = 1, size(lines)
+         write (lines(k), '(f6.3,1x,f6.3)') 0.04*k, 0.05*k
+      end do
+      call write_file(points, lines)
+      call write_file(scene, [padded("&scene task = 'points', method = 'formula', output = '"//out//"' /"), &
+                              padded("&points file = '"//points//"' /")])
+      call check_writer_under_limit(ctx, scene, out//"_points.dat", 8192_int64)
+      call delete_file(scene)
+      call delete_file(points)
+   end subroutine points_writer_file_limit
+
+   subroutine coefficient_writer_file_limit(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: out, scene
+      out = scratch_prefix("limcoef")
+      scene = out//".nml"
+      call write_file(scene, [padded("&scene task = 'coefficient', output = '"//out//"' /"), &
+                              padded("&coefficient n_tau = 400 /")])
+      call check_writer_under_limit(ctx, scene, out//"_coefficient.dat", 8192_int64)
+      call delete_file(scene)
+   end subroutine coefficient_writer_file_limit
+
+   !> An output path taken by a directory fails before any computing, naming `output`.
+   subroutine directory_output_refused(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out, scene
+      integer :: stat
+      out = scratch_prefix("dirout")
+      scene = out//".nml"
+      call execute_command_line("mkdir -p "//out//"_chart.dat", exitstat=stat)
+      call write_file(scene, [padded("&scene method = 'formula', output = '"//out//"' /"), &
+                              padded("&chart n_alpha = 3, n_beta = 3 /")])
+      call run_scene_file(scene, .true., error)
+      call check(ctx, allocated(error), "a directory as output file is an error")
+      if (allocated(error)) then
+         call check(ctx, error%code == err_io, "i/o error")
+         call check(ctx, contains_text(error%message, scene//": &scene: output: "), "names output: "//error%message)
+         call check(ctx, contains_text(error%message, "directory"), "says why: "//error%message)
+      end if
+      call execute_command_line("rmdir "//out//"_chart.dat", exitstat=stat)
+      call delete_file(scene)
+   end subroutine directory_output_refused
+   !> A chart whose file cannot fit on the file system is refused before any work,
+   !> naming n_alpha and n_beta (10^16 points: no disk holds 10^18 bytes).
+   subroutine output_larger_than_free_space(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out, scene
+      out = scratch_prefix("huge")
+      scene = out//".nml"
+      call write_file(scene, [padded("&scene method = 'formula', output = '"//out//"' /"), &
+                              padded("&chart n_alpha = 100000000, n_beta = 100000000 /")])
+      call run_scene_file(scene, .true., error)
+      call check(ctx, allocated(error), "a chart larger than the free space is refused")
+      if (allocated(error)) then
+         call check(ctx, contains_text(error%message, scene//": &chart: n_alpha, n_beta: "), "names the variables: "// &
+                    error%message)
+         call check(ctx, contains_text(error%message, "free"), "says why: "//error%message)
+      end if
+      call check(ctx, .not. file_exists(out//"_chart.dat"), "no file")
+      call delete_file(scene)
+   end subroutine output_larger_than_free_space
+
+   !> Under an address-space limit 400 MB above the process's size, a 1 x 2000000 chart
+   !> (about 1 GB of row buffers) is refused before any work, naming the variables and
+   !> the limit, with no file; the same scene at 1 x 20000 still runs under the limit.
+   subroutine buffers_larger_than_memory(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out, scene
+      out = scratch_prefix("memory")
+      scene = out//".nml"
+      call write_file(scene, [padded("&scene method = 'formula', output = '"//out//"' /"), &
+                              padded("&chart n_alpha = 1, n_beta = 2000000 /")])
+      call limit_address_space(400000000_int64)
+      call run_scene_file(scene, .true., error)
+      call lift_address_space_limit()
+      call check(ctx, allocated(error), "buffers larger than the memory left are refused")
+      if (allocated(error)) then
+         call check(ctx, error%code == err_input, "bad input (exit 2): "//error%message)
+         call check(ctx, contains_text(error%message, scene//": &chart: n_alpha, n_beta: "), "names the variables: "// &
+                    error%message)
+         call check(ctx, contains_text(error%message, "ulimit -v"), "says which limit: "//error%message)
+      end if
+      call check(ctx, .not. file_exists(out//"_chart.dat"), "no file")
+      call write_file(scene, [padded("&scene method = 'formula', output = '"//out//"' /"), &
+                              padded("&chart n_alpha = 1, n_beta = 20000 /")])
+      call limit_address_space(400000000_int64)
+      call run_scene_file(scene, .true., error)
+      call lift_address_space_limit()
+      call check(ctx, .not. allocated(error), "a small chart runs under the limit")
+      call check(ctx, file_exists(out//"_chart.dat"), "and writes its file")
+      call delete_file(out//"_chart.dat")
+      call delete_file(scene)
+   end subroutine buffers_larger_than_memory
+   !> The rate of the progress line: a unit taking half a minute (a block of Hill's matrix near
+   !> alpha = pi^2) showed as "0 Hill blocks/s".
+   subroutine progress_rate_text(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      call check(ctx, rate_text(1234.4_wp) == "1234", "1234.4: "//rate_text(1234.4_wp))
+      call check(ctx, rate_text(9.6_wp) == "10", "9.6: "//rate_text(9.6_wp))
+      call check(ctx, rate_text(3.74_wp) == "3.7", "3.74: "//rate_text(3.74_wp))
+      call check(ctx, rate_text(0.5_wp) == "0.50", "0.5: "//rate_text(0.5_wp))
+      call check(ctx, rate_text(0.0357_wp) == "0.036", "0.0357: "//rate_text(0.0357_wp))
+      call check(ctx, rate_text(2.0e-5_wp) == "0.000020", "2e-5: "//rate_text(2.0e-5_wp))
+      call check(ctx, rate_text(0.0_wp) == "0", "0: "//rate_text(0.0_wp))
+   end subroutine progress_rate_text
+
+end module test_output
