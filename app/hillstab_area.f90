@@ -18,13 +18,16 @@
 program hillstab_area
    use hillstab_core_kinds, only: wp, pi2
    use hillstab_core_error, only: error_t
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu, sampling_endpoint, sampling_midpoint
+   use hillstab_hill_coefficient, only: sampling_endpoint, sampling_midpoint
    use hillstab_hill_transfer, only: trace_t
    use hillstab_integrate_monodromy, only: method_t, method_auto, method_formula, method_segments, monodromy_trace, &
       monodromy_trace_batch
    use hillstab_curves_hill_method, only: hill_boundary_t, hill_boundaries
    use hillstab_curves_boundaries, only: approximate_root_t, approximate_boundaries, unstable_intervals_from_roots, &
       symmetric_difference_length
+   use hillstab_hill_model, only: hill_point_t
+   use hillstab_hill_model_elastic, only: elastic_model_t
+   use hillstab_hill_model_mathieu, only: mathieu_model_t
    implicit none
    integer, parameter :: n_methods = 9
    type(method_t) :: methods(n_methods)
@@ -92,7 +95,7 @@ contains
       real(wp), allocatable :: exact(:, :), approximate(:, :)
       real(wp) :: lo, hi
       integer :: k, j
-      call hill_boundaries(model_elastic, alpha, 0.0_wp, pi2, 1.0e-10_wp, curves, error)
+      call hill_boundaries(elastic_model_t(), alpha, 0.0_wp, pi2, 1.0e-10_wp, curves, error)
       if (allocated(error)) error stop "hillstab_area: Hill's method failed"
       lo = pi2; hi = 0.0_wp
       do k = 1, size(curves)
@@ -105,10 +108,10 @@ contains
          allocate (exact(2, 0))
       end if
       do j = 1, n_methods
-         call approximate_boundaries(model_elastic, alpha, methods(j), 1.0e-9_wp, pi2 - 1.0e-9_wp, 2000, &
+         call approximate_boundaries(elastic_model_t(), alpha, methods(j), 1.0e-9_wp, pi2 - 1.0e-9_wp, 2000, &
                                      area_tolerance, roots, error)
          if (allocated(error)) error stop "hillstab_area: root finding failed"
-         call unstable_intervals_from_roots(model_elastic, alpha, methods(j), 0.0_wp, pi2, roots%beta, approximate, &
+         call unstable_intervals_from_roots(elastic_model_t(), alpha, methods(j), 0.0_wp, pi2, roots%beta, approximate, &
                                             error)
          length(j) = symmetric_difference_length(exact, approximate)
       end do
@@ -130,12 +133,12 @@ contains
       !$omp parallel do schedule(dynamic) default(shared) private(i, alpha, exact, failed, error, j, k, tr)
       do i = 1, n
          alpha = (i - 0.5_wp)*pi2/n
-         call monodromy_trace_batch(hill_model_t(model_elastic, alpha, 0.0_wp, 0.0_wp), betas, &
+         call monodromy_trace_batch(elastic_model_t(), hill_point_t(alpha, 0.0_wp, 0.0_wp), betas, &
                                     method_t(method_auto, tolerance=1.0e-8_wp), exact, failed, error)
          wrong_rows(:, i) = 0
          do j = 1, n
             do k = 1, n_methods
-               call monodromy_trace(hill_model_t(model_elastic, alpha, betas(j), 0.0_wp), methods(k), tr, error)
+               call monodromy_trace(elastic_model_t(), hill_point_t(alpha, betas(j), 0.0_wp), methods(k), tr, error)
                if ((abs(tr%value) > 2.0_wp) .neqv. (abs(exact(j)%value) > 2.0_wp)) wrong_rows(k, i) = wrong_rows(k, i) + 1
                ! map of the paper's chart: 0 both stable, 1 both unstable, 2 exact stable but eq. (37)
                ! unstable, 3 exact unstable but eq. (37) stable
@@ -181,7 +184,7 @@ contains
       print '(a)', "|---|---|---|---|---|---|"
       do i = 1, 200
          alpha = 0.01_wp*i
-         call hill_boundaries(model_elastic, alpha, 0.0_wp, pi2, 1.0e-11_wp, curves, error)
+         call hill_boundaries(elastic_model_t(), alpha, 0.0_wp, pi2, 1.0e-11_wp, curves, error)
          exact = [pi2, 0.0_wp]
          do k = 1, size(curves)
             if (curves(k)%order /= 1) cycle
@@ -191,14 +194,14 @@ contains
             beta = exact(merge(1, 2, parity == -1))
             do it = 1, 60
                nu = alpha*(1.0_wp - beta/pi2)
-               call hill_boundaries(model_mathieu, nu, 0.0_wp, pi2, 1.0e-12_wp, curves, error)
+               call hill_boundaries(mathieu_model_t(), nu, 0.0_wp, pi2, 1.0e-12_wp, curves, error)
                do k = 1, size(curves)
                   if (curves(k)%order == 1 .and. curves(k)%parity == parity) beta = curves(k)%beta
                end do
             end do
             limit(merge(1, 2, parity == -1)) = beta
          end do
-         call approximate_boundaries(model_elastic, alpha, method_t(method_formula, tolerance=1.0e-12_wp), &
+         call approximate_boundaries(elastic_model_t(), alpha, method_t(method_formula, tolerance=1.0e-12_wp), &
                                      0.1_wp, 6.0_wp, 2000, 1.0e-12_wp, roots, error)
          paper = [pi2, 0.0_wp]
          do k = 1, size(roots)

@@ -15,6 +15,8 @@ program hillstab_bench
    use hillstab
    use hillstab_batch_run_scenes, only: run_scene_file
    !$ use omp_lib, only: omp_get_max_threads, omp_set_num_threads
+   use hillstab_hill_model, only: hill_point_t
+   use hillstab_hill_model_elastic, only: elastic_model_t
    implicit none
 
    type :: sample_t
@@ -29,7 +31,8 @@ program hillstab_bench
    ! what the timed_* procedures run (internal procedures cannot nest, so the work to
    ! time is described here before each seconds_per_call)
    type(method_t) :: timed_method
-   type(hill_model_t) :: timed_model
+   type(hill_point_t) :: timed_at
+   type(elastic_model_t) :: elastic
    type(trace_t), allocatable :: timed_traces(:)
    integer(int64) :: timed_evaluations
    real(wp), allocatable :: truth(:)
@@ -253,27 +256,27 @@ contains
       integer :: k
       worst = 0.0_wp
       do k = 1, size(s)
-         call monodromy_trace(model_at(s(k)), method_t(method_magnus6, tolerance=1.0e-14_wp), a, err_a)
-         call monodromy_trace(model_at(s(k)), method_t(method_gsl, tolerance=1.0e-13_wp), b, err_b)
+         call monodromy_trace(elastic, point_at(s(k)), method_t(method_magnus6, tolerance=1.0e-14_wp), a, err_a)
+         call monodromy_trace(elastic, point_at(s(k)), method_t(method_gsl, tolerance=1.0e-13_wp), b, err_b)
          if (.not. allocated(err_a)) then
             ref(k) = a%value
             if (.not. allocated(err_b)) worst = max(worst, abs(a%value - b%value)/max(1.0_wp, abs(a%value)))
          else if (.not. allocated(err_b)) then
             ref(k) = b%value
          else
-            a = trace_segmented(model_at(s(k)), 65536, sampling_average)
-            b = trace_segmented(model_at(s(k)), 131072, sampling_average)
+            a = trace_segmented(elastic, point_at(s(k)), 65536, sampling_average)
+            b = trace_segmented(elastic, point_at(s(k)), 131072, sampling_average)
             ref(k) = (4.0_wp*b%value - a%value)/3.0_wp
          end if
       end do
       write (output_unit, '(a,es9.2)') "reference: Magnus-6 (1e-14) vs GSL rk8pd (1e-13), max scaled difference ", worst
    end subroutine reference_traces
 
-   pure function model_at(s) result(m)
+   pure function point_at(s) result(point)
       type(sample_t), intent(in) :: s
-      type(hill_model_t) :: m
-      m = hill_model_t(model_elastic, s%alpha, s%beta, 0.0_wp)
-   end function model_at
+      type(hill_point_t) :: point
+      point = hill_point_t(s%alpha, s%beta, 0.0_wp)
+   end function point_at
 
    !> Time all sample points with one method (repeated until ≥ 0.05 s), errors and work.
    subroutine measure(method, seconds, max_err, mean_err, evals, ok)
@@ -288,7 +291,7 @@ contains
       ok = .true.
       total_evals = 0
       do k = 1, size(samples)
-         call monodromy_trace(model_at(samples(k)), method, traces(k), error, work)
+         call monodromy_trace(elastic, point_at(samples(k)), method, traces(k), error, work)
          if (allocated(error)) then
             ok = .false.
             return
@@ -307,7 +310,7 @@ contains
       type(error_t), allocatable :: error
       integer :: k
       do k = 1, size(samples)
-         call monodromy_trace(model_at(samples(k)), timed_method, tr, error)
+         call monodromy_trace(elastic, point_at(samples(k)), timed_method, tr, error)
       end do
    end subroutine timed_all_points
 
@@ -326,18 +329,18 @@ contains
             if (samples(last + 1)%alpha /= samples(first)%alpha) exit
             last = last + 1
          end do
-         call monodromy_trace_batch(model_at(samples(first)), samples(first:last)%beta, timed_method, &
+         call monodromy_trace_batch(elastic, point_at(samples(first)), samples(first:last)%beta, timed_method, &
             timed_traces(first:last), failed(first:last), error, work)
          timed_evaluations = timed_evaluations + work%n_evaluations
          first = last + 1
       end do
    end subroutine timed_all_rows
 
-   !> Timed work: `timed_model` by `timed_method`.
+   !> Timed work: `timed_at` by `timed_method`.
    subroutine timed_one_point()
       type(trace_t) :: tr
       type(error_t), allocatable :: error
-      call monodromy_trace(timed_model, timed_method, tr, error)
+      call monodromy_trace(elastic, timed_at, timed_method, tr, error)
    end subroutine timed_one_point
 
    !> max and mean of |S − S_ref|/max(1, |S_ref|) over the sample.
@@ -476,7 +479,7 @@ contains
       do a = 1, size(alphas)
          do b = 1, size(betas)
             do m = 1, size(kinds)
-               call time_point(hill_model_t(model_elastic, alphas(a), betas(b), 0.0_wp), &
+               call time_point(hill_point_t(alphas(a), betas(b), 0.0_wp), &
                   method_t(kinds(m), tolerance=1.0e-10_wp), seconds(m), evals(m))
             end do
             write (u, '(2(es12.5,1x),6(es12.5,1x))') alphas(a), betas(b), (seconds(m), evals(m), m=1, 3)
@@ -489,18 +492,18 @@ contains
       write (output_unit, '(a)') "wrote "//path
    end subroutine beta_cost
 
-   subroutine time_point(model, method, seconds, evals)
-      type(hill_model_t), intent(in) :: model
+   subroutine time_point(point, method, seconds, evals)
+      type(hill_point_t), intent(in) :: point
       type(method_t), intent(in) :: method
       real(wp), intent(out) :: seconds, evals
       type(trace_t) :: tr
       type(error_t), allocatable :: error
       type(work_stats_t) :: work
       seconds = -1.0_wp; evals = -1.0_wp
-      call monodromy_trace(model, method, tr, error, work)
+      call monodromy_trace(elastic, point, method, tr, error, work)
       if (allocated(error)) return
       evals = real(work%n_evaluations, wp)
-      timed_model = model
+      timed_at = point
       timed_method = method
       seconds = seconds_per_call(timed_point, 0.02_wp)
    end subroutine time_point

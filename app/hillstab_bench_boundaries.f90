@@ -14,11 +14,12 @@
 program hillstab_bench_boundaries
    use hillstab_core_kinds, only: wp, int64, pi2
    use hillstab_core_error, only: error_t
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic
    use hillstab_hill_transfer, only: trace_t
    use hillstab_integrate_monodromy, only: method_t, method_auto, monodromy_trace, monodromy_trace_batch
    use hillstab_curves_hill_method
    use hillstab_curves_boundaries, only: boundary_check_t, verify_boundary
+   use hillstab_hill_model, only: hill_point_t
+   use hillstab_hill_model_elastic, only: elastic_model_t
    implicit none
    real(wp), parameter :: tolerance = 1.0e-11_wp
    integer :: unit
@@ -53,12 +54,12 @@ contains
       print '(a)', "|---|---|---|---|---|---|"
       write (unit, '(a)') "# formulations: alpha modes formulation(1 inverted, 2 direct, 3 nonsymmetric) err_0 err_pi2 ms"
       do i = 1, size(alphas)
-         call hill_boundaries(model_elastic, alphas(i), -2.0_wp, 40.0_wp, tolerance, curves, error, modes)
+         call hill_boundaries(elastic_model_t(), alphas(i), -2.0_wp, 40.0_wp, tolerance, curves, error, modes)
          do f = 1, 3
             reps = merge(1, 20, f == 3 .and. modes(1) > 200)
             t0 = now()
             do r = 1, reps
-               call hill_block_eigenvalues(model_elastic, alphas(i), block_periodic_even, modes(1), v, error, f)
+               call hill_block_eigenvalues(elastic_model_t(), alphas(i), block_periodic_even, modes(1), v, error, f)
             end do
             elapsed = (now() - t0)/reps
             print '(a,f5.2,a,i5,a,a,a,es9.2,a,es9.2,a,f10.3,a)', "| ", alphas(i), " | ", modes(1), " | ", &
@@ -88,14 +89,14 @@ contains
       print '(a)', "| alpha | modes | curves | inverted pencil | direct pencil | nonsymmetric |"
       print '(a)', "|---|---|---|---|---|---|"
       do i = 1, size(alphas)
-         call hill_boundaries(model_elastic, alphas(i), -2.0_wp, 40.0_wp, tolerance, curves, error, modes)
+         call hill_boundaries(elastic_model_t(), alphas(i), -2.0_wp, 40.0_wp, tolerance, curves, error, modes)
          worst = 0.0_wp
          m = 0
          do block = block_antiperiodic_even, block_antiperiodic_odd
-            call hill_block_eigenvalues(model_elastic, alphas(i), block, modes(block), w, error, 1)
+            call hill_block_eigenvalues(elastic_model_t(), alphas(i), block, modes(block), w, error, 1)
             allocate (v(size(w), 3))
             do f = 1, 3
-               call hill_block_eigenvalues(model_elastic, alphas(i), block, modes(block), w, error, f)
+               call hill_block_eigenvalues(elastic_model_t(), alphas(i), block, modes(block), w, error, f)
                v(:, f) = w
             end do
             do j = 1, size(w)
@@ -129,7 +130,7 @@ contains
       real(wp), intent(in) :: alpha, beta
       type(trace_t) :: tr
       type(error_t), allocatable :: error
-      call monodromy_trace(hill_model_t(model_elastic, alpha, beta, 0.0_wp), method_t(method_auto, tolerance=1.0e-13_wp), &
+      call monodromy_trace(elastic_model_t(), hill_point_t(alpha, beta, 0.0_wp), method_t(method_auto, tolerance=1.0e-13_wp), &
                            tr, error)
       trace13 = tr%value
    end function trace13
@@ -146,13 +147,13 @@ contains
       print '(a)', "|---|---|---|---|"
       write (unit, '(a)') "# modes: alpha needed(4 blocks) used"
       do i = 1, size(alphas)
-         call hill_boundaries(model_elastic, alphas(i), -2.0_wp, 40.0_wp, tolerance, curves, error, modes)
+         call hill_boundaries(elastic_model_t(), alphas(i), -2.0_wp, 40.0_wp, tolerance, curves, error, modes)
          do block = 1, 4
-            call hill_block_eigenvalues(model_elastic, alphas(i), block, 2*modes(block), ref, error)
+            call hill_block_eigenvalues(elastic_model_t(), alphas(i), block, 2*modes(block), ref, error)
             m = count(ref <= 40.0_wp)
             needed(block) = -1
             do n = max(m + 1, 8), 2*modes(block), max(1, modes(block)/100)
-               call hill_block_eigenvalues(model_elastic, alphas(i), block, n, v, error)
+               call hill_block_eigenvalues(elastic_model_t(), alphas(i), block, n, v, error)
                ok = size(v) > m
                if (ok) then
                   do j = 1, m
@@ -191,7 +192,7 @@ contains
       n_hill = 0
       do i = 1, n_alpha
          alpha = 9.8_wp*(i - 1)/real(n_alpha - 1, wp)
-         call hill_boundaries(model_elastic, alpha, beta_min, beta_max, tolerance, curves, error)
+         call hill_boundaries(elastic_model_t(), alpha, beta_min, beta_max, tolerance, curves, error)
          n_hill = n_hill + size(curves)
       end do
       t_hill = now() - t0
@@ -200,9 +201,9 @@ contains
       n_crossing_hill = 0
       do i = 1, n_alpha
          alpha = 9.8_wp*(i - 1)/real(n_alpha - 1, wp)
-         call hill_boundaries(model_elastic, alpha, beta_min, beta_max, tolerance, curves, error)
+         call hill_boundaries(elastic_model_t(), alpha, beta_min, beta_max, tolerance, curves, error)
          do k = 1, size(curves)
-            call verify_boundary(model_elastic, alpha, curves(k)%beta, curves(k)%trace_sign, tolerance, check, error)
+            call verify_boundary(elastic_model_t(), alpha, curves(k)%beta, curves(k)%trace_sign, tolerance, check, error)
             if (.not. curves(k)%coexistent) n_crossing_hill = n_crossing_hill + 1
          end do
       end do
@@ -214,7 +215,7 @@ contains
       worst_difference = 0.0_wp
       do i = 1, n_alpha
          alpha = 9.8_wp*(i - 1)/real(n_alpha - 1, wp)
-         call monodromy_trace_batch(hill_model_t(model_elastic, alpha, 0.0_wp, 0.0_wp), betas, &
+         call monodromy_trace_batch(elastic_model_t(), hill_point_t(alpha, 0.0_wp, 0.0_wp), betas, &
                                     method_t(method_auto, tolerance=tolerance), traces, failed, error)
          s = traces%value
          allocate (found(0))
@@ -239,7 +240,7 @@ contains
          end do
          ! each bisected boundary against Hill's nearest (outside the timing would be fairer; it is cheap)
          if (mod(i, 50) == 1) then
-            call hill_boundaries(model_elastic, alpha, beta_min, beta_max, tolerance, curves, error)
+            call hill_boundaries(elastic_model_t(), alpha, beta_min, beta_max, tolerance, curves, error)
             do k = 1, size(found)
                nearest = huge(1.0_wp)
                do j = 1, size(curves)
@@ -271,7 +272,7 @@ contains
       real(wp), intent(in) :: alpha, beta
       type(trace_t) :: tr
       type(error_t), allocatable :: error
-      call monodromy_trace(hill_model_t(model_elastic, alpha, beta, 0.0_wp), method_t(method_auto, tolerance=tolerance), &
+      call monodromy_trace(elastic_model_t(), hill_point_t(alpha, beta, 0.0_wp), method_t(method_auto, tolerance=tolerance), &
                            tr, error)
       trace = tr%value
    end function trace

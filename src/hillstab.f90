@@ -117,7 +117,7 @@
 !>```fortran
 !> use hillstab
 !> type(floquet_t) :: f
-!> f = floquet_from_trace(trace_segmented(hill_model_t(model_elastic, 1.48_wp, 2.47_wp, 0.0_wp), &
+!> f = floquet_from_trace(trace_segmented(elastic_model_t(), hill_point_t(1.48_wp, 2.47_wp, 0.0_wp), &
 !>                        256, sampling_average), 0.0_wp)
 !> print *, f%trace%value, f%stable
 !>```
@@ -127,11 +127,13 @@ module hillstab
       err_integration, err_io, err_input, err_singular, err_accuracy, err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed, status_name
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_models, only: hill_model_t, model_elastic, model_mathieu, model_name, model_from_name, &
-      model_names_text, model_description, model_is_pendulum, check_model, hill_coefficient, segment_average, &
-      damping_shift
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_window_t, model_description, check_point, &
+      check_alpha, hill_coefficient, segment_average, model_split, damping_shift
+   use hillstab_hill_models, only: model_names, model_count, new_model, model_from_code, model_code, model_names_text
+   use hillstab_hill_model_elastic, only: elastic_model_t
+   use hillstab_hill_model_mathieu, only: mathieu_model_t
    use hillstab_hill_coefficient, only: sampling_endpoint, sampling_midpoint, sampling_average, sampling_name, &
-      sampling_from_name, segment_coefficients, hill_period, in_physical_domain
+      sampling_from_name, segment_coefficients, in_physical_domain
    use hillstab_hill_units, only: physical_t, standard_gravity, equilibrium_length, physical_alpha, physical_beta, &
       physical_epsilon, physical_nu, check_physical, physical_from_dimensionless, rate_per_second, tau_from_time, &
       time_from_tau

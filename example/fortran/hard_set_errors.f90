@@ -21,6 +21,8 @@ program hard_set_errors
    integer(int64) :: t0, t1, rate
    character(len=400) :: line
    type(trace_t) :: tr
+   type(elastic_model_t) :: elastic
+   type(mathieu_model_t) :: mathieu
    type(error_t), allocatable :: error
    logical :: verbose, list_all
    character(len=400) :: file, arg
@@ -54,7 +56,7 @@ program hard_set_errors
       line = line(1:index(line//"#", "#") - 1)
       n = n + 1
       read (line, *) kind, alpha(n), beta(n), sgn(n), log_abs(n), value(n), ref_error
-      model(n) = merge(model_elastic, model_mathieu, kind == 0)
+      model(n) = kind
    end do
    close (unit)
    write (*, '(a,i0,a)') trim(file)//": ", n, " points"
@@ -71,8 +73,14 @@ program hard_set_errors
          n_failed = 0
          call system_clock(t0, rate)
          do i = 1, n
-            call monodromy_trace(hill_model_t(model(i), alpha(i), beta(i), 0.0_wp), &
-                                 method_t(methods(m), tolerance=tolerances(k)), tr, error)
+            ! the files' first column: 0 the elastic model, 1 the Mathieu model
+            if (model(i) == 0) then
+               call monodromy_trace(elastic, hill_point_t(alpha(i), beta(i), 0.0_wp), &
+                                    method_t(methods(m), tolerance=tolerances(k)), tr, error)
+            else
+               call monodromy_trace(mathieu, hill_point_t(alpha(i), beta(i), 0.0_wp), &
+                                    method_t(methods(m), tolerance=tolerances(k)), tr, error)
+            end if
             if (log_abs(i) > log(1.0e6_wp)) then
                err = abs(exp(min(tr%log_abs - log_abs(i), 700.0_wp)) - 1.0_wp)
                if (sign(1.0_wp, tr%value) /= sgn(i)) err = 2.0_wp

@@ -14,7 +14,6 @@ program onset_law
    use hillstab_core_error, only: error_t
    use hillstab_core_status, only: status_ok, status_failed
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_from_trace, largest_multiplier_modulus
    use hillstab_integrate_monodromy, only: monodromy_trace, method_t, method_gsl
@@ -22,6 +21,8 @@ program onset_law
    use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat, &
       linear_onset_periods
    use hillstab_batch_output_file, only: output_file_t, open_output, write_header, write_text, commit_output, discard_output
+   use hillstab_hill_model, only: hill_point_t
+   use hillstab_hill_model_elastic, only: elastic_model_t
    implicit none
    character(len=*), parameter :: labels(3) = ["b", "e", "g"]
    real(wp), parameter :: cases(2, 3) = reshape([3.70_wp, 2.47_wp, 7.88_wp, 3.95_wp, 7.48_wp, 2.47_wp], [2, 3])
@@ -58,7 +59,7 @@ program onset_law
       "case alpha beta phi0 lambda_max n_predicted n_observed t_predicted t_observed difference status n_linear "// &
       "linear_difference", error)
    do i = 1, size(cases, 2)
-      call monodromy_trace(hill_model_t(model_elastic, cases(1, i), cases(2, i), 0.0_wp), &
+      call monodromy_trace(elastic_model_t(), hill_point_t(cases(1, i), cases(2, i), 0.0_wp), &
                            method_t(method_gsl, tolerance=1.0e-13_wp), tr, error)
       if (allocated(error)) exit
       lambda = largest_multiplier_modulus(floquet_from_trace(tr, 0.0_wp))

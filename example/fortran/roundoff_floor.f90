@@ -20,7 +20,7 @@ program roundoff_floor
    write (*, '(a)') "# alpha   tolerance  |S-2|/2    steps  floor reported"
    do i = 1, size(alphas)
       do k = 1, size(tolerances)
-         call trace_auto(hill_model_t(model_elastic, alphas(i), 0.0_wp, 0.0_wp), tolerances(k), tr, stats, error)
+         call trace_auto(elastic_model_t(), hill_point_t(alphas(i), 0.0_wp, 0.0_wp), tolerances(k), tr, stats, error)
          write (*, '(f6.2, es11.1, es11.2, i8, 2x, l1)') alphas(i), tolerances(k), abs(tr%value - 2.0_wp)/2.0_wp, &
             stats%n_steps, allocated(error)
          if (allocated(error)) then

@@ -4,7 +4,7 @@ program installed_trace
    implicit none
    type(trace_t) :: tr
    type(error_t), allocatable :: error
-   call monodromy_trace(hill_model_t(model_elastic, 2.57_wp, 1.29_wp, 0.0_wp), &
+   call monodromy_trace(elastic_model_t(), hill_point_t(2.57_wp, 1.29_wp, 0.0_wp), &
       method_t(method_segments, 4096, sampling_average), tr, error)
    if (allocated(error)) error stop 1
    print '(a,f10.6)', "Fortran: S at case (c) = ", tr%value

@@ -6,11 +6,13 @@
 module test_boundaries
    use hillstab_core_kinds, only: wp, pi2
    use hillstab_core_error, only: error_t
-   use hillstab_hill_coefficient, only: model_elastic, model_mathieu, sampling_midpoint
+   use hillstab_hill_coefficient, only: sampling_midpoint
    use hillstab_integrate_monodromy, only: method_t, method_formula, method_segments
    use hillstab_curves_hill_method, only: hill_boundary_t, hill_boundaries
    use hillstab_curves_boundaries
    use hillstab_testing
+   use hillstab_hill_model_elastic, only: elastic_model_t
+   use hillstab_hill_model_mathieu, only: mathieu_model_t
    implicit none
    private
    public :: collect_boundaries
@@ -33,19 +35,19 @@ contains
       type(error_t), allocatable :: error
       type(boundary_check_t) :: chk
       integer :: i
-      call hill_boundaries(model_elastic, 5.0_wp, -2.0_wp, 40.0_wp, 1.0e-11_wp, c, error)
+      call hill_boundaries(elastic_model_t(), 5.0_wp, -2.0_wp, 40.0_wp, 1.0e-11_wp, c, error)
       call check(ctx, .not. allocated(error), "Hill's method runs")
       if (allocated(error)) return
       ! 9 boundaries, 4 of them coexistent
       call check(ctx, size(c) >= 6 .and. count(.not. c%coexistent) >= 3, "boundaries to check")
       do i = 1, size(c)
-         call verify_boundary(model_elastic, 5.0_wp, c(i)%beta, c(i)%trace_sign, 1.0e-11_wp, chk, error)
+         call verify_boundary(elastic_model_t(), 5.0_wp, c(i)%beta, c(i)%trace_sign, 1.0e-11_wp, chk, error)
          call check(ctx, .not. allocated(error) .and. chk%passed, "true boundary passes")
          if (c(i)%coexistent) cycle   ! S touches 2 there: a shifted point is still |S| ~ 2
-         call verify_boundary(model_elastic, 5.0_wp, c(i)%beta + 1.0e-6_wp, c(i)%trace_sign, 1.0e-11_wp, chk, error)
+         call verify_boundary(elastic_model_t(), 5.0_wp, c(i)%beta + 1.0e-6_wp, c(i)%trace_sign, 1.0e-11_wp, chk, error)
          call check(ctx, .not. chk%passed, "boundary moved by 1e-6 fails")
          call check(ctx, chk%beta_error, 1.0e-6_wp, rel=2.0e-2_wp, message="implied beta error (to first order)")
-         call verify_boundary(model_elastic, 5.0_wp, c(i)%beta, -c(i)%trace_sign, 1.0e-11_wp, chk, error)
+         call verify_boundary(elastic_model_t(), 5.0_wp, c(i)%beta, -c(i)%trace_sign, 1.0e-11_wp, chk, error)
          call check(ctx, .not. chk%passed, "wrong kind fails")
       end do
    end subroutine check_accepts_and_rejects
@@ -59,14 +61,14 @@ contains
       type(error_t), allocatable :: error
       real(wp) :: exact(2), err(3), ratio
       integer :: i, k, n
-      call hill_boundaries(model_elastic, 3.0_wp, 0.0_wp, 9.0_wp, 1.0e-12_wp, c, error)
+      call hill_boundaries(elastic_model_t(), 3.0_wp, 0.0_wp, 9.0_wp, 1.0e-12_wp, c, error)
       exact = 0.0_wp
       do i = 1, size(c)
          if (c(i)%order == 1) exact(merge(1, 2, c(i)%parity == -1)) = c(i)%beta
       end do
       do k = 1, 3
          n = 64*2**(k - 1)
-         call approximate_boundaries(model_elastic, 3.0_wp, method_t(method_segments, n, sampling_midpoint, 1.0e-13_wp), &
+         call approximate_boundaries(elastic_model_t(), 3.0_wp, method_t(method_segments, n, sampling_midpoint, 1.0e-13_wp), &
                                      0.5_wp, 9.0_wp, 200, 1.0e-13_wp, r, error)
          call check(ctx, .not. allocated(error), "roots found")
          err(k) = 0.0_wp
@@ -89,11 +91,11 @@ contains
       type(approximate_root_t), allocatable :: r(:)
       type(error_t), allocatable :: error
       real(wp), allocatable :: intervals(:, :)
-      call approximate_boundaries(model_elastic, 0.0_wp, method_t(method_formula), -2.0_wp, 12.0_wp, 500, &
+      call approximate_boundaries(elastic_model_t(), 0.0_wp, method_t(method_formula), -2.0_wp, 12.0_wp, 500, &
                                   1.0e-12_wp, r, error)
       call check(ctx, .not. allocated(error) .and. size(r) == 1, "one crossing")
       if (size(r) == 1) call check(ctx, r(1)%beta, 0.0_wp, abs=1.0e-12_wp, message="beta = 0")
-      call unstable_intervals_from_roots(model_elastic, 0.0_wp, method_t(method_formula), 0.1_wp, pi2, &
+      call unstable_intervals_from_roots(elastic_model_t(), 0.0_wp, method_t(method_formula), 0.1_wp, pi2, &
                                          [real(wp) ::], intervals, error)
       call check(ctx, size(intervals, 2) == 0, "no unstable interval")
    end subroutine formula_alpha_zero
@@ -117,7 +119,7 @@ contains
       real(wp) :: beta
       logical :: available
       integer :: i
-      call hill_boundaries(model_mathieu, 30.0_wp, -30.0_wp, 120.0_wp, 1.0e-12_wp, c, error)
+      call hill_boundaries(mathieu_model_t(), 30.0_wp, -30.0_wp, 120.0_wp, 1.0e-12_wp, c, error)
       ! 13 boundaries
       call check(ctx, .not. allocated(error) .and. size(c) >= 10, "Hill's method runs")
       do i = 1, size(c)

@@ -7,13 +7,18 @@
 module test_hill_method
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t, err_invalid_parameter
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu
    use hillstab_hill_transfer, only: trace_t
    use hillstab_integrate_monodromy, only: method_t, method_auto, monodromy_trace
    use hillstab_hill_mathieu, only: mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b
    use hillstab_curves_hill_method
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use hillstab_hill_model, only: hill_point_t
+   use hillstab_hill_model_elastic, only: elastic_model_t
+   use hillstab_hill_model_mathieu, only: mathieu_model_t
+   use hillstab_hill_model, only: hill_model_t
+   use hillstab_hill_models, only: model_from_code
+   use hillstab_test_models, only: model_of_code
    implicit none
    private
    public :: collect_hill_method
@@ -43,9 +48,11 @@ contains
       type(test_context_t), intent(inout) :: ctx
       type(hill_boundary_t), allocatable :: c(:)
       type(error_t), allocatable :: error
-      integer :: i, kind, n
-      do kind = model_elastic, model_mathieu
-         call hill_boundaries(kind, 0.0_wp, -2.0_wp, 100.0_wp, 1.0e-12_wp, c, error)
+      class(hill_model_t), pointer :: model
+      integer :: i, code, n
+      do code = 1, 2   ! the elastic and the Mathieu model
+         model => model_of_code(code)
+         call hill_boundaries(model, 0.0_wp, -2.0_wp, 100.0_wp, 1.0e-12_wp, c, error)
          call check(ctx, .not. allocated(error), "no error")
          if (allocated(error)) return
          ! n = 0 once, n = 1 … 6 twice: (6π/2)² = 88.8 < 100 < (7π/2)²
@@ -80,7 +87,7 @@ contains
          integer :: i, hits
          character(len=40) :: label
          write (label, '(a,i0,a,f5.1)') merge("a", "b", parity == 1), order, " at q = ", q
-         call hill_boundaries(model_mathieu, q*pi2/2, -0.25_wp*pi2*(2*q + 2), 0.25_wp*pi2*(order + 1)**2 + 1, &
+         call hill_boundaries(mathieu_model_t(), q*pi2/2, -0.25_wp*pi2*(2*q + 2), 0.25_wp*pi2*(order + 1)**2 + 1, &
                               1.0e-13_wp, c, error)
          call check(ctx, .not. allocated(error), trim(label)//": no error")
          if (allocated(error)) return
@@ -103,7 +110,7 @@ contains
       real(wp) :: beta_gsl
       integer :: i, f, n_checked
       do f = 1, size(nus)
-         call hill_boundaries(model_mathieu, nus(f), -30.0_wp, 0.25_wp*pi2*12.5_wp**2, 1.0e-12_wp, c, error)
+         call hill_boundaries(mathieu_model_t(), nus(f), -30.0_wp, 0.25_wp*pi2*12.5_wp**2, 1.0e-12_wp, c, error)
          call check(ctx, .not. allocated(error), "no error")
          if (allocated(error)) return
          n_checked = 0
@@ -129,7 +136,7 @@ contains
       type(error_t), allocatable :: error
       integer :: f, i, n_zero, n_pi2
       do f = 1, size(alphas)
-         call hill_boundaries(model_elastic, alphas(f), -1.0_wp, 12.0_wp, 1.0e-12_wp, c, error)
+         call hill_boundaries(elastic_model_t(), alphas(f), -1.0_wp, 12.0_wp, 1.0e-12_wp, c, error)
          call check(ctx, .not. allocated(error), "no error")
          if (allocated(error)) return
          n_zero = 0; n_pi2 = 0
@@ -158,7 +165,7 @@ contains
       real(wp) :: s, s_plus, s_minus, h, slope
       integer :: f, i
       do f = 1, size(alphas)
-         call hill_boundaries(model_elastic, alphas(f), -2.0_wp, 40.0_wp, 1.0e-12_wp, c, error)
+         call hill_boundaries(elastic_model_t(), alphas(f), -2.0_wp, 40.0_wp, 1.0e-12_wp, c, error)
          call check(ctx, .not. allocated(error), "no error")
          if (allocated(error)) return
          call check(ctx, size(c) >= 9, "at least nine curves below beta = 40")
@@ -177,7 +184,7 @@ contains
          real(wp), intent(in) :: alpha, beta
          type(trace_t) :: tr
          type(error_t), allocatable :: err
-         call monodromy_trace(hill_model_t(model_elastic, alpha, beta, 0.0_wp), &
+         call monodromy_trace(elastic_model_t(), hill_point_t(alpha, beta, 0.0_wp), &
                               method_t(method_auto, tolerance=1.0e-12_wp), tr, err)
          trace = tr%value
       end function trace
@@ -193,7 +200,7 @@ contains
       integer :: f, i
       do f = 1, 12
          alpha = 9.85_wp*f/12
-         call hill_boundaries(model_elastic, alpha, -1.0_wp, 12.0_wp, 1.0e-11_wp, c, error)
+         call hill_boundaries(elastic_model_t(), alpha, -1.0_wp, 12.0_wp, 1.0e-11_wp, c, error)
          call check(ctx, .not. allocated(error), "no error")
          if (allocated(error)) return
          lo = huge(1.0_wp); hi = -huge(1.0_wp)
@@ -224,7 +231,7 @@ contains
       integer :: k, i, j, order, m, n_orders
       do k = 1, size(qs)
          nu = qs(k)*pi2/2.0_wp
-         call hill_boundaries(model_mathieu, nu, -50.0_wp, 250.0_wp, 1.0e-12_wp, c, error)
+         call hill_boundaries(mathieu_model_t(), nu, -50.0_wp, 250.0_wp, 1.0e-12_wp, c, error)
          call check(ctx, .not. allocated(error), "mathieu: no error")
          if (allocated(error)) return
          call check(ctx, count(c%order >= 6) >= 6, "mathieu: the thin tongues of orders 6 and up are in the window")
@@ -239,13 +246,13 @@ contains
                edges(min(m, 2)) = c(i)%beta
             end do
             call check(ctx, m == 2, "mathieu: two edges per order")
-            call monodromy_trace(hill_model_t(model_mathieu, nu, sum(edges)/2, 0.0_wp), &
+            call monodromy_trace(mathieu_model_t(), hill_point_t(nu, sum(edges)/2, 0.0_wp), &
                                  method_t(method_auto, tolerance=1.0e-12_wp), tr, error)
             call check(ctx, abs(tr%value) > 2.0_wp, "mathieu: open tongue, |S| > 2 at its middle")
          end do
       end do
       do k = 1, size(alphas)
-         call hill_boundaries(model_elastic, alphas(k), -2.0_wp, 150.0_wp, 1.0e-12_wp, c, error)
+         call hill_boundaries(elastic_model_t(), alphas(k), -2.0_wp, 150.0_wp, 1.0e-12_wp, c, error)
          call check(ctx, .not. allocated(error), "elastic: no error")
          if (allocated(error)) return
          n_orders = 0
@@ -295,7 +302,7 @@ contains
          worst = 0.0_wp
          largest = 0.0_wp
          do i = 1, n
-            call hill_boundaries(model_elastic, alpha(i), -50.0_wp, 45.0_wp, tolerance, c, error)
+            call hill_boundaries(elastic_model_t(), alpha(i), -50.0_wp, 45.0_wp, tolerance, c, error)
             call check(ctx, .not. allocated(error), "no error")
             if (allocated(error)) return
             found = 0
@@ -324,7 +331,7 @@ contains
       type(trace_t) :: tr
       real(wp) :: betas(2)
       integer :: order, i, m
-      call hill_boundaries(model_elastic, 5.0_wp, -2.0_wp, 40.0_wp, 1.0e-12_wp, c, error)
+      call hill_boundaries(elastic_model_t(), 5.0_wp, -2.0_wp, 40.0_wp, 1.0e-12_wp, c, error)
       call check(ctx, .not. allocated(error), "no error")
       if (allocated(error)) return
       do order = 1, 4
@@ -337,12 +344,12 @@ contains
          end do
          call check(ctx, m == 2, "two curves per order")
          if (mod(order, 2) == 1) then
-            call monodromy_trace(hill_model_t(model_elastic, 5.0_wp, sum(betas)/2, 0.0_wp), &
+            call monodromy_trace(elastic_model_t(), hill_point_t(5.0_wp, sum(betas)/2, 0.0_wp), &
                                  method_t(method_auto, tolerance=1.0e-12_wp), tr, error)
             call check(ctx, tr%value < -2.0_wp, "open antiperiodic tongue: S < -2 inside")
          else
             do i = -1, 1, 2
-               call monodromy_trace(hill_model_t(model_elastic, 5.0_wp, betas(1) + i*1.0e-4_wp, 0.0_wp), &
+               call monodromy_trace(elastic_model_t(), hill_point_t(5.0_wp, betas(1) + i*1.0e-4_wp, 0.0_wp), &
                                     method_t(method_auto, tolerance=1.0e-12_wp), tr, error)
                call check(ctx, tr%value <= 2.0_wp .and. tr%value > 1.99_wp, "closed periodic tongue: S <= 2 beside")
             end do
@@ -359,13 +366,13 @@ contains
       real(wp) :: err_now, err_before
       integer :: block, n, j
       do block = block_periodic_even, block_antiperiodic_odd
-         call hill_block_eigenvalues(model_elastic, 9.5_wp, block, 400, ref, error)
+         call hill_block_eigenvalues(elastic_model_t(), 9.5_wp, block, 400, ref, error)
          call check(ctx, .not. allocated(error), "no error")
          if (allocated(error)) return
          err_before = huge(1.0_wp)
          if (allocated(previous)) deallocate (previous)
          do n = 20, 140, 40
-            call hill_block_eigenvalues(model_elastic, 9.5_wp, block, n, v, error)
+            call hill_block_eigenvalues(elastic_model_t(), 9.5_wp, block, n, v, error)
             err_now = maxval(abs(v(:5) - ref(:5)))
             do j = 1, 5
                call check(ctx, v(j) >= ref(j) - 1.0e-11_wp*max(1.0_wp, abs(ref(j))), "upper bound (Ritz)")
@@ -392,12 +399,14 @@ contains
       type(test_context_t), intent(inout) :: ctx
       real(wp), allocatable :: a(:), b(:), c(:)
       type(error_t), allocatable :: error
-      integer :: block, kind
-      do kind = model_elastic, model_mathieu
+      class(hill_model_t), pointer :: model
+      integer :: block, code
+      do code = 1, 2   ! the elastic and the Mathieu model
+         model => model_of_code(code)
          do block = block_periodic_even, block_antiperiodic_odd
-            call hill_block_eigenvalues(kind, 6.0_wp, block, 60, a, error, formulation_inverted_pencil)
-            call hill_block_eigenvalues(kind, 6.0_wp, block, 60, b, error, formulation_pencil)
-            call hill_block_eigenvalues(kind, 6.0_wp, block, 60, c, error, formulation_nonsymmetric)
+            call hill_block_eigenvalues(model, 6.0_wp, block, 60, a, error, formulation_inverted_pencil)
+            call hill_block_eigenvalues(model, 6.0_wp, block, 60, b, error, formulation_pencil)
+            call hill_block_eigenvalues(model, 6.0_wp, block, 60, c, error, formulation_nonsymmetric)
             call check(ctx, .not. allocated(error), "no error")
             call check(ctx, maxval(abs(a(:8) - b(:8))) < 1.0e-9_wp, "pencil and inverted pencil")
             call check(ctx, maxval(abs(a(:8) - c(:8))) < 1.0e-9_wp, "nonsymmetric and inverted pencil")
@@ -413,18 +422,18 @@ contains
       real(wp), allocatable :: v(:)
       real(wp) :: nan
       nan = ieee_value(1.0_wp, ieee_quiet_nan)
-      call hill_boundaries(model_elastic, pi2, 0.0_wp, 10.0_wp, 1.0e-10_wp, c, error)
+      call hill_boundaries(elastic_model_t(), pi2, 0.0_wp, 10.0_wp, 1.0e-10_wp, c, error)
       call check(ctx, allocated(error), "alpha = pi^2 refused")
       if (allocated(error)) call check(ctx, error%code == err_invalid_parameter, "code")
-      call hill_boundaries(model_elastic, -0.1_wp, 0.0_wp, 10.0_wp, 1.0e-10_wp, c, error)
+      call hill_boundaries(elastic_model_t(), -0.1_wp, 0.0_wp, 10.0_wp, 1.0e-10_wp, c, error)
       call check(ctx, allocated(error), "alpha < 0 refused")
-      call hill_boundaries(model_mathieu, nan, 0.0_wp, 10.0_wp, 1.0e-10_wp, c, error)
+      call hill_boundaries(mathieu_model_t(), nan, 0.0_wp, 10.0_wp, 1.0e-10_wp, c, error)
       call check(ctx, allocated(error), "NaN refused")
-      call hill_boundaries(model_elastic, 1.0_wp, 10.0_wp, 0.0_wp, 1.0e-10_wp, c, error)
+      call hill_boundaries(elastic_model_t(), 1.0_wp, 10.0_wp, 0.0_wp, 1.0e-10_wp, c, error)
       call check(ctx, allocated(error), "beta_min > beta_max refused")
-      call hill_boundaries(model_elastic, 1.0_wp, 0.0_wp, 10.0_wp, 0.0_wp, c, error)
+      call hill_boundaries(elastic_model_t(), 1.0_wp, 0.0_wp, 10.0_wp, 0.0_wp, c, error)
       call check(ctx, allocated(error), "tolerance 0 refused")
-      call hill_block_eigenvalues(model_elastic, 1.0_wp, 7, 10, v, error)
+      call hill_block_eigenvalues(elastic_model_t(), 1.0_wp, 7, 10, v, error)
       call check(ctx, allocated(error), "unknown block refused")
    end subroutine bad_input
 end module test_hill_method

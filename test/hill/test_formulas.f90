@@ -9,6 +9,9 @@ module test_formulas
    use hillstab_integrate_monodromy, only: trace_segmented
    use hillstab_testing
    use hillstab_test_reference, only: value_of
+   use hillstab_hill_model, only: hill_point_t
+   use hillstab_hill_model_elastic, only: elastic_model_t
+   use hillstab_hill_model_mathieu, only: mathieu_model_t
    implicit none
    private
    public :: collect_formulas
@@ -42,7 +45,7 @@ contains
          tr = trace_two_segment_paper(0.0_wp, beta)
          call check(ctx, tr%value, exact, rel=1.0e-12_wp, abs=2.0e-12_wp*max(1.0_wp, sqrt(abs(beta))))
          do n = 1, 7, 3
-            tr = trace_segmented(hill_model_t(model_elastic, 0.0_wp, beta, 0.0_wp), n, sampling_midpoint)
+            tr = trace_segmented(elastic_model_t(), hill_point_t(0.0_wp, beta, 0.0_wp), n, sampling_midpoint)
             call check(ctx, tr%value, exact, rel=1.0e-12_wp, abs=1.0e-11_wp*max(1.0_wp, sqrt(abs(beta))))
          end do
       end do
@@ -78,7 +81,7 @@ contains
       do i = 1, size(alphas)
          do j = 1, size(betas)
             formula = trace_two_segment_paper(alphas(i), betas(j))
-            product = trace_segmented(hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp), 2, sampling_endpoint)
+            product = trace_segmented(elastic_model_t(), hill_point_t(alphas(i), betas(j), 0.0_wp), 2, sampling_endpoint)
             call check(ctx, formula%log_abs, product%log_abs, rel=1.0e-12_wp, abs=1.0e-12_wp)
             if (.not. formula%overflow) call check(ctx, formula%value, product%value, rel=1.0e-12_wp, abs=1.0e-12_wp)
          end do
@@ -94,7 +97,7 @@ contains
          do i = 0, 4
             do j = -2, 6
                formula = trace_damped_paper(2.4_wp*i, 2.0_wp*j, eps(k))
-               product = trace_segmented(hill_model_t(model_elastic, 2.4_wp*i, 2.0_wp*j, eps(k)), 2, sampling_endpoint)
+               product = trace_segmented(elastic_model_t(), hill_point_t(2.4_wp*i, 2.0_wp*j, eps(k)), 2, sampling_endpoint)
                call check(ctx, formula%value, product%value, rel=1.0e-12_wp, abs=1.0e-12_wp)
             end do
          end do
@@ -117,7 +120,7 @@ contains
                       - 2.0_wp*beta*sin(sqrt(beta + nu))*sin(sqrt(beta - nu))/sqrt(beta**2 - nu**2)
             call check(ctx, value_of(trace_mathieu_two_segment(nu, beta)), literal, rel=1.0e-12_wp, abs=1.0e-12_wp)
             call check(ctx, value_of(trace_mathieu_two_segment(nu, -beta)), &
-               value_of(trace_segmented(hill_model_t(model_mathieu, nu, -beta, 0.0_wp), 2, sampling_endpoint)), &
+               value_of(trace_segmented(mathieu_model_t(), hill_point_t(nu, -beta, 0.0_wp), 2, sampling_endpoint)), &
                rel=1.0e-12_wp)
          end do
       end do

@@ -5,11 +5,13 @@
 module test_units
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, hill_coefficient
    use hillstab_hill_units
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_coefficient
+   use hillstab_hill_model_elastic, only: elastic_model_t
+   use hillstab_test_models, only: model_of_code
    implicit none
    private
    public :: collect_units
@@ -33,7 +35,8 @@ contains
       type(test_context_t), intent(inout) :: ctx
       type(physical_t) :: pendulums(3)
       type(physical_t) :: p
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
       real(wp) :: t, rho, physical_q, scaled_q
       integer :: k, i
       pendulums = [physical_t(r0=1.0_wp, g=9.81_wp, omega=5.0_wp, a=0.3_wp, kappa=0.0_wp), &
@@ -42,11 +45,12 @@ contains
       do k = 1, size(pendulums)
          p = pendulums(k)
          rho = p%r0 + p%g/p%omega**2
-         model = hill_model_t(model_elastic, physical_alpha(p), physical_beta(p), physical_epsilon(p))
+         model => model_of_code(1)
+         point = hill_point_t(physical_alpha(p), physical_beta(p), physical_epsilon(p))
          do i = 0, 12
             t = 0.37_wp*i/p%omega
             physical_q = (p%g - p%a*p%omega**2*cos(p%omega*t))/(rho - p%a*cos(p%omega*t)) - 0.25_wp*p%kappa**2
-            scaled_q = (p%omega/pi)**2*hill_coefficient(model, tau_from_time(t, p%omega))
+            scaled_q = (p%omega/pi)**2*hill_coefficient(model, point, tau_from_time(t, p%omega))
             call check(ctx, scaled_q, physical_q, rel=1.0e-12_wp, abs=1.0e-12_wp*p%omega**2)
          end do
       end do

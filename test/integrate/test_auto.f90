@@ -7,7 +7,6 @@ module test_auto
    use hillstab_core_kinds, only: wp, pi2
    use hillstab_core_error, only: error_t, err_invalid_parameter, err_accuracy
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu
    use hillstab_hill_transfer, only: trace_t
    use hillstab_integrate_auto, only: trace_auto, trace_auto_batch, auto_plan_t, auto_prepare, fixed_n_trace, &
       trace_auto_screen
@@ -19,6 +18,11 @@ module test_auto
    use hillstab_integrate_monodromy_rk, only: trace_rk
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
+   use hillstab_hill_model, only: hill_model_t, hill_point_t
+   use hillstab_hill_model_elastic, only: elastic_model_t
+   use hillstab_hill_model_mathieu, only: mathieu_model_t
+   use hillstab_hill_models, only: model_from_code
+   use hillstab_test_models, only: model_of_code
    implicit none
    private
    public :: collect_auto
@@ -76,12 +80,13 @@ contains
    end function succeeded
 
    !> Reference trace by GSL rk8pd at `reference_tolerance`.
-   subroutine gsl_reference(model, tr, error)
-      type(hill_model_t), intent(in) :: model
+   subroutine gsl_reference(model, point, tr, error)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       type(trace_t), intent(out) :: tr
       type(error_t), allocatable, intent(out) :: error
       type(work_stats_t) :: stats
-      call trace_gsl(model, reference_tolerance, tr, stats, error)
+      call trace_gsl(model, point, reference_tolerance, tr, stats, error)
    end subroutine gsl_reference
 
    !> The issue's contract: auto at 1e-10 agrees with GSL rk8pd (1e-13) to
@@ -104,12 +109,12 @@ contains
       do i = 1, size(alphas)
          do j = 1, size(betas)
             write (label, '(a,f5.2,a,f6.2)') "alpha = ", alphas(i), " beta = ", betas(j)
-            call trace_auto(hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp), tolerance, tr, stats, error)
+            call trace_auto(elastic_model_t(), hill_point_t(alphas(i), betas(j), 0.0_wp), tolerance, tr, stats, error)
             call check(ctx, succeeded(error), "auto succeeds at "//trim(label))
             if (betas(j) == 0.0_wp) then
                reference = trace_t(trace_at_beta_zero, log(trace_at_beta_zero), .false.)
             else
-               call gsl_reference(hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp), reference, error)
+               call gsl_reference(elastic_model_t(), hill_point_t(alphas(i), betas(j), 0.0_wp), reference, error)
                ! (round-off limited at 1e-13 near pi^2: its best value, within its estimate)
                call check(ctx, succeeded(error), "gsl succeeds at "//trim(label))
             end if
@@ -145,12 +150,12 @@ contains
       do i = 1, size(alphas)
          do j = 1, size(betas)
             write (label, '(a,f5.2,a,f7.1)') "alpha = ", alphas(i), " beta = ", betas(j)
-            call trace_auto(hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp), tolerance, tr, stats, error)
+            call trace_auto(elastic_model_t(), hill_point_t(alphas(i), betas(j), 0.0_wp), tolerance, tr, stats, error)
             call check(ctx, .not. allocated(error), "auto succeeds at "//trim(label))
-            call gsl_reference(hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp), reference, error)
+            call gsl_reference(elastic_model_t(), hill_point_t(alphas(i), betas(j), 0.0_wp), reference, error)
             source = "gsl"
             if (allocated(error)) then
-               call trace_rk(hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp), 1.0e-12_wp, reference, error)
+               call trace_rk(elastic_model_t(), hill_point_t(alphas(i), betas(j), 0.0_wp), 1.0e-12_wp, reference, error)
                call check(ctx, .not. allocated(error), "trace_rk succeeds at "//trim(label))
                source = "rk"
             end if
@@ -181,7 +186,7 @@ contains
       do k = 1, size(tolerances)
          do i = 1, size(alphas)
             write (label, '(a,es8.1,a,f5.2)') "tol ", tolerances(k), " alpha ", alphas(i)
-            call trace_auto(hill_model_t(model_elastic, alphas(i), 0.0_wp, 0.0_wp), tolerances(k), tr, stats, error)
+            call trace_auto(elastic_model_t(), hill_point_t(alphas(i), 0.0_wp, 0.0_wp), tolerances(k), tr, stats, error)
             call check(ctx, succeeded(error), "auto succeeds, "//trim(label))
             e = abs(tr%value - trace_at_beta_zero)/trace_at_beta_zero
             call check(ctx, e <= 2.0_wp*tolerances(k), "S = 2 within 2 tol, "//trim(label))
@@ -209,7 +214,7 @@ contains
       integer :: i
       character(len=80) :: label
       do i = 1, size(cases, 2)
-         call trace_auto(hill_model_t(model_elastic, cases(1, i), 0.0_wp, 0.0_wp), cases(2, i), tr, stats, error)
+         call trace_auto(elastic_model_t(), hill_point_t(cases(1, i), 0.0_wp, 0.0_wp), cases(2, i), tr, stats, error)
          e = abs(tr%value - trace_at_beta_zero)/trace_at_beta_zero
          write (label, '(a,f5.2,a,es8.1,a,es9.2,a,l1)') "alpha ", cases(1, i), " beta 0 tol ", cases(2, i), &
             ": error/tol ", e/cases(2, i), ", error reported ", allocated(error)
@@ -237,29 +242,31 @@ contains
       type(auto_plan_t) :: plan
       type(batch_plan_t) :: row_plan
       type(method_t) :: method
-      type(hill_model_t) :: row
+      type(hill_point_t) :: row
       real(wp) :: worst, e
       integer :: i, j, kind
+      class(hill_model_t), pointer :: kind_model
       character(len=40) :: label
       worst = 0.0_wp
       method = method_t(method_auto, tolerance=tolerance)
-      do kind = model_elastic, model_mathieu
+      do kind = 1, 2   ! the elastic and the Mathieu model
+         kind_model => model_of_code(kind)
          do i = 1, size(alphas)
             write (label, '(a,i0,a,f4.1)') "kind ", kind, " alpha ", alphas(i)
-            row = hill_model_t(kind, alphas(i), 0.0_wp, 0.0_wp)
+            row = hill_point_t(alphas(i), 0.0_wp, 0.0_wp)
             do j = 1, size(betas)
-               call trace_auto(hill_model_t(kind, alphas(i), betas(j), 0.0_wp), tolerance, single(j), stats, error)
+               call trace_auto(kind_model, hill_point_t(alphas(i), betas(j), 0.0_wp), tolerance, single(j), stats, error)
                call check(ctx, .not. allocated(error), "point "//trim(label))
             end do
-            call trace_auto_batch(kind, alphas(i), 0.0_wp, betas, tolerance, batch, stats, error)
+            call trace_auto_batch(kind_model, alphas(i), 0.0_wp, betas, tolerance, batch, stats, error)
             call check(ctx, .not. allocated(error), "batch "//trim(label))
-            call auto_prepare(kind, alphas(i), 0.0_wp, betas, tolerance, plan)
-            call trace_auto_batch(kind, alphas(i), 0.0_wp, betas, tolerance, planned, stats, error, plan)
+            call auto_prepare(kind_model, alphas(i), 0.0_wp, betas, tolerance, plan)
+            call trace_auto_batch(kind_model, alphas(i), 0.0_wp, betas, tolerance, planned, stats, error, plan)
             call check(ctx, .not. allocated(error), "planned batch "//trim(label))
-            call monodromy_trace_batch(row, betas, method, dispatched, failed, error)
+            call monodromy_trace_batch(kind_model, row, betas, method, dispatched, failed, error)
             call check(ctx, .not. allocated(error) .and. .not. any(failed), "monodromy_trace_batch "//trim(label))
-            call prepare_batch(row, betas, method, row_plan)
-            call monodromy_trace_batch(row, betas, method, prepared, failed, error, plan=row_plan)
+            call prepare_batch(kind_model, row, betas, method, row_plan)
+            call monodromy_trace_batch(kind_model, row, betas, method, prepared, failed, error, plan=row_plan)
             call check(ctx, .not. allocated(error) .and. .not. any(failed), "prepared batch "//trim(label))
             do j = 1, size(betas)
                e = max(trace_error(batch(j), single(j)), trace_error(planned(j), single(j)), &
@@ -270,8 +277,8 @@ contains
          end do
       end do
       ! a single-point dispatch goes through the same path
-      call monodromy_trace(hill_model_t(model_elastic, 9.0_wp, 2.47_wp, 0.0_wp), method, batch(1), error)
-      call trace_auto(hill_model_t(model_elastic, 9.0_wp, 2.47_wp, 0.0_wp), tolerance, single(1), stats, error)
+      call monodromy_trace(elastic_model_t(), hill_point_t(9.0_wp, 2.47_wp, 0.0_wp), method, batch(1), error)
+      call trace_auto(elastic_model_t(), hill_point_t(9.0_wp, 2.47_wp, 0.0_wp), tolerance, single(1), stats, error)
       call check(ctx, batch(1)%value == single(1)%value, "monodromy_trace(method_auto) = trace_auto")
       write (*, '(4x,a,es9.2)') "batch vs point: max relative difference ", worst
    end subroutine batch_equals_point
@@ -292,7 +299,7 @@ contains
       character(len=60) :: label
       do i = 1, size(alphas)
          do j = 1, size(betas)
-            call gsl_reference(hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp), reference(i, j), error)
+            call gsl_reference(elastic_model_t(), hill_point_t(alphas(i), betas(j), 0.0_wp), reference(i, j), error)
             call check(ctx, .not. allocated(error), "gsl reference")
          end do
       end do
@@ -301,7 +308,7 @@ contains
          do i = 1, size(alphas)
             do j = 1, size(betas)
                write (label, '(a,es8.1,a,f4.1,a,f5.2)') "tol ", tolerances(k), " alpha ", alphas(i), " beta ", betas(j)
-               call trace_auto(hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp), tolerances(k), tr, stats, error)
+               call trace_auto(elastic_model_t(), hill_point_t(alphas(i), betas(j), 0.0_wp), tolerances(k), tr, stats, error)
                call check(ctx, .not. allocated(error), "auto succeeds, "//trim(label))
                e = trace_error(tr, reference(i, j))
                call check(ctx, e <= 3.0_wp*tolerances(k), "error <= 3 tol, "//trim(label))
@@ -333,10 +340,12 @@ contains
       type(error_t), allocatable :: error
       real(wp) :: exact, worst
       integer :: j, kind
+      class(hill_model_t), pointer :: kind_model
       character(len=40) :: label
       worst = 0.0_wp
-      do kind = model_elastic, model_mathieu
-         call trace_auto_batch(kind, 0.0_wp, 0.0_wp, betas, 1.0e-6_wp, batch, stats, error)
+      do kind = 1, 2   ! the elastic and the Mathieu model
+         kind_model => model_of_code(kind)
+         call trace_auto_batch(kind_model, 0.0_wp, 0.0_wp, betas, 1.0e-6_wp, batch, stats, error)
          call check(ctx, .not. allocated(error), "batch at alpha = 0")
          do j = 1, size(betas)
             write (label, '(a,i0,a,es10.3)') "kind ", kind, " beta ", betas(j)
@@ -345,7 +354,7 @@ contains
             else
                exact = 2.0_wp*cosh(2.0_wp*sqrt(-betas(j)))
             end if
-            call trace_auto(hill_model_t(kind, 0.0_wp, betas(j), 0.0_wp), 1.0e-6_wp, tr, stats, error)
+            call trace_auto(kind_model, hill_point_t(0.0_wp, betas(j), 0.0_wp), 1.0e-6_wp, tr, stats, error)
             call check(ctx, .not. allocated(error), "auto succeeds, "//trim(label))
             call check(ctx, tr%value, exact, abs=1.0e-13_wp*max(1.0_wp, abs(exact)), message=trim(label))
             call check(ctx, batch(j)%value, exact, abs=1.0e-13_wp*max(1.0_wp, abs(exact)), message="batch "//trim(label))
@@ -367,26 +376,30 @@ contains
       type(trace_t) :: tr, reference, undamped
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
       real(wp) :: e, worst, exact, q
       integer :: i, k, kind
+      class(hill_model_t), pointer :: kind_model
       character(len=60) :: label
       worst = 0.0_wp
-      do kind = model_elastic, model_mathieu
+      do kind = 1, 2   ! the elastic and the Mathieu model
+         kind_model => model_of_code(kind)
          do k = 1, size(epsilons)
             do i = 1, size(points, 2)
                write (label, '(a,i0,a,f4.1,a,f5.2,a,f5.2)') "kind ", kind, " eps ", epsilons(k), " alpha ", &
                   points(1, i), " beta ", points(2, i)
-               model = hill_model_t(kind, points(1, i), points(2, i), epsilons(k))
-               call trace_auto(model, tolerance, tr, stats, error)
+               model => kind_model
+               point = hill_point_t(points(1, i), points(2, i), epsilons(k))
+               call trace_auto(model, point, tolerance, tr, stats, error)
                call check(ctx, .not. allocated(error), "auto succeeds, "//trim(label))
-               call gsl_reference(model, reference, error)
+               call gsl_reference(model, point, reference, error)
                call check(ctx, .not. allocated(error), "gsl succeeds, "//trim(label))
                e = trace_error(tr, reference)
                call check(ctx, e <= 2.0_wp*tolerance, "damped vs gsl, "//trim(label))
                worst = max(worst, e/tolerance)
                ! the damping changes the answer (guards against ε being ignored)
-               call trace_auto(hill_model_t(kind, points(1, i), points(2, i), 0.0_wp), tolerance, undamped, stats, error)
+               call trace_auto(kind_model, hill_point_t(points(1, i), points(2, i), 0.0_wp), tolerance, undamped, stats, error)
                call check(ctx, abs(undamped%value - tr%value) > 1.0e-3_wp, "epsilon has an effect, "//trim(label))
             end do
             ! α = 0, β = 2.47: q = β − ε²/4, constant
@@ -396,7 +409,7 @@ contains
             else
                exact = 2.0_wp*cosh(2.0_wp*sqrt(-q))
             end if
-            call trace_auto(hill_model_t(kind, 0.0_wp, 2.47_wp, epsilons(k)), tolerance, tr, stats, error)
+            call trace_auto(kind_model, hill_point_t(0.0_wp, 2.47_wp, epsilons(k)), tolerance, tr, stats, error)
             call check(ctx, tr%value, exact, abs=1.0e-13_wp*max(1.0_wp, abs(exact)), message="alpha = 0 damped")
          end do
       end do
@@ -423,7 +436,7 @@ contains
                call check(ctx, .not. allocated(error), "transition beta "//trim(label))
                if (allocated(error)) cycle
                expected = merge(2.0_wp, -2.0_wp, mod(n, 2) == 0)
-               call trace_auto(hill_model_t(model_mathieu, nus(i), beta, 0.0_wp), 1.0e-12_wp, tr, stats, error)
+               call trace_auto(mathieu_model_t(), hill_point_t(nus(i), beta, 0.0_wp), 1.0e-12_wp, tr, stats, error)
                call check(ctx, .not. allocated(error), "auto succeeds, "//trim(label))
                call check(ctx, tr%value, expected, abs=1.0e-9_wp, message=trim(label))
                worst = max(worst, abs(tr%value - expected))
@@ -437,15 +450,17 @@ contains
    !> flagged as overflowing, or finite, with ln|S| matching trace_rk; never NaN/Inf.
    subroutine overflow_finite(ctx)
       type(test_context_t), intent(inout) :: ctx
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
       type(trace_t) :: tr, reference, batch(3)
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
-      model = hill_model_t(model_elastic, 9.86_wp, -1.0e5_wp, 0.0_wp)
-      call trace_auto(model, 1.0e-10_wp, tr, stats, error)
+      model => model_of_code(1)
+      point = hill_point_t(9.86_wp, -1.0e5_wp, 0.0_wp)
+      call trace_auto(model, point, 1.0e-10_wp, tr, stats, error)
       call check(ctx, .not. allocated(error), "auto succeeds")
       call check(ctx, ieee_is_finite(tr%value) .and. ieee_is_finite(tr%log_abs), "value and ln|S| finite")
-      call trace_rk(model, 1.0e-10_wp, reference, error)
+      call trace_rk(model, point, 1.0e-10_wp, reference, error)
       call check(ctx, .not. allocated(error), "trace_rk succeeds")
       call check(ctx, tr%overflow .eqv. reference%overflow, "overflow flag as in trace_rk")
       call check(ctx, tr%overflow .or. tr%log_abs < log(huge(1.0_wp)), "flagged or representable")
@@ -453,11 +468,11 @@ contains
       write (*, '(4x,a,es22.14,a,es22.14,a,l1,a,i0)') "alpha 9.86 beta -1e5: ln|S| ", tr%log_abs, " (rk ", &
          reference%log_abs, "), overflow ", tr%overflow, ", steps ", stats%n_steps
       ! in a batch with ordinary points the others are unaffected
-      call trace_auto_batch(model_elastic, 9.86_wp, 0.0_wp, [2.47_wp, -1.0e5_wp, 5.0_wp], 1.0e-10_wp, batch, stats, error)
+      call trace_auto_batch(elastic_model_t(), 9.86_wp, 0.0_wp, [2.47_wp, -1.0e5_wp, 5.0_wp], 1.0e-10_wp, batch, stats, error)
       call check(ctx, .not. allocated(error), "batch succeeds")
       call check(ctx, all(ieee_is_finite(batch%value)) .and. all(ieee_is_finite(batch%log_abs)), "batch finite")
       call check(ctx, batch(2)%log_abs, reference%log_abs, rel=1.0e-6_wp, message="batch ln|S| vs trace_rk")
-      call trace_auto(hill_model_t(model_elastic, 9.86_wp, 2.47_wp, 0.0_wp), 1.0e-10_wp, tr, stats, error)
+      call trace_auto(elastic_model_t(), hill_point_t(9.86_wp, 2.47_wp, 0.0_wp), 1.0e-10_wp, tr, stats, error)
       call check(ctx, trace_error(batch(1), tr) <= 1.0e-10_wp, "neighbour of an overflowing point unaffected")
    end subroutine overflow_finite
 
@@ -472,35 +487,35 @@ contains
       logical :: failed(3)
       integer :: k
       nan = ieee_value(1.0_wp, ieee_quiet_nan)
-      call trace_auto(hill_model_t(model_elastic, pi2, 2.0_wp, 0.0_wp), 1.0e-10_wp, tr, stats, error)
+      call trace_auto(elastic_model_t(), hill_point_t(pi2, 2.0_wp, 0.0_wp), 1.0e-10_wp, tr, stats, error)
       call check(ctx, allocated(error), "alpha = pi**2 rejected")
       if (allocated(error)) call check(ctx, error%code == err_invalid_parameter, "code invalid_parameter")
-      call trace_auto(hill_model_t(model_elastic, 12.0_wp, 2.0_wp, 0.0_wp), 1.0e-10_wp, tr, stats, error)
+      call trace_auto(elastic_model_t(), hill_point_t(12.0_wp, 2.0_wp, 0.0_wp), 1.0e-10_wp, tr, stats, error)
       call check(ctx, allocated(error), "alpha > pi**2 rejected")
-      call trace_auto(hill_model_t(model_elastic, -0.5_wp, 2.0_wp, 0.0_wp), 1.0e-10_wp, tr, stats, error)
+      call trace_auto(elastic_model_t(), hill_point_t(-0.5_wp, 2.0_wp, 0.0_wp), 1.0e-10_wp, tr, stats, error)
       call check(ctx, allocated(error), "alpha < 0 rejected")
       ! the Mathieu model has no bound on ν
-      call trace_auto(hill_model_t(model_mathieu, 12.0_wp, 2.0_wp, 0.0_wp), 1.0e-8_wp, tr, stats, error)
+      call trace_auto(mathieu_model_t(), hill_point_t(12.0_wp, 2.0_wp, 0.0_wp), 1.0e-8_wp, tr, stats, error)
       call check(ctx, .not. allocated(error), "mathieu nu = 12 accepted")
       do k = 1, size(bad_tolerances)
-         call trace_auto(hill_model_t(model_elastic, 5.0_wp, 2.0_wp, 0.0_wp), bad_tolerances(k), tr, stats, error)
+         call trace_auto(elastic_model_t(), hill_point_t(5.0_wp, 2.0_wp, 0.0_wp), bad_tolerances(k), tr, stats, error)
          call check(ctx, allocated(error), "bad tolerance rejected")
          if (allocated(error)) call check(ctx, error%code == err_invalid_parameter, "code invalid_parameter")
       end do
-      call trace_auto(hill_model_t(model_elastic, 5.0_wp, nan, 0.0_wp), 1.0e-10_wp, tr, stats, error)
+      call trace_auto(elastic_model_t(), hill_point_t(5.0_wp, nan, 0.0_wp), 1.0e-10_wp, tr, stats, error)
       call check(ctx, allocated(error), "NaN beta rejected")
-      call trace_auto(hill_model_t(model_elastic, nan, 2.0_wp, 0.0_wp), 1.0e-10_wp, tr, stats, error)
+      call trace_auto(elastic_model_t(), hill_point_t(nan, 2.0_wp, 0.0_wp), 1.0e-10_wp, tr, stats, error)
       call check(ctx, allocated(error), "NaN alpha rejected")
-      call trace_auto(hill_model_t(model_elastic, 5.0_wp, 2.0_wp, -1.0_wp), 1.0e-10_wp, tr, stats, error)
+      call trace_auto(elastic_model_t(), hill_point_t(5.0_wp, 2.0_wp, -1.0_wp), 1.0e-10_wp, tr, stats, error)
       call check(ctx, allocated(error), "negative epsilon rejected")
-      call trace_auto_batch(model_elastic, 5.0_wp, 0.0_wp, [1.0_wp, nan, 3.0_wp], 1.0e-10_wp, batch, stats, error)
+      call trace_auto_batch(elastic_model_t(), 5.0_wp, 0.0_wp, [1.0_wp, nan, 3.0_wp], 1.0e-10_wp, batch, stats, error)
       call check(ctx, allocated(error), "NaN beta in a batch rejected")
       ! the dispatcher's batch locates the bad point and still computes the others
-      call monodromy_trace_batch(hill_model_t(model_elastic, 5.0_wp, 0.0_wp, 0.0_wp), [1.0_wp, nan, 3.0_wp], &
+      call monodromy_trace_batch(elastic_model_t(), hill_point_t(5.0_wp, 0.0_wp, 0.0_wp), [1.0_wp, nan, 3.0_wp], &
          method_t(method_auto, tolerance=1.0e-10_wp), batch, failed, error)
       call check(ctx, allocated(error), "monodromy_trace_batch reports the NaN")
       call check(ctx, (.not. failed(1)) .and. failed(2) .and. (.not. failed(3)), "only the NaN point failed")
-      call trace_auto(hill_model_t(model_elastic, 5.0_wp, 3.0_wp, 0.0_wp), 1.0e-10_wp, tr, stats, error)
+      call trace_auto(elastic_model_t(), hill_point_t(5.0_wp, 3.0_wp, 0.0_wp), 1.0e-10_wp, tr, stats, error)
       call check(ctx, batch(3)%value == tr%value, "good point of a failed batch computed")
    end subroutine bad_input
 
@@ -519,17 +534,17 @@ contains
       logical :: failed(3)
       real(wp) :: nan
       nan = ieee_value(1.0_wp, ieee_quiet_nan)
-      call trace_auto(hill_model_t(model_elastic, 5.0_wp, 2.0_wp, 0.0_wp), nan, tr, stats, error)
+      call trace_auto(elastic_model_t(), hill_point_t(5.0_wp, 2.0_wp, 0.0_wp), nan, tr, stats, error)
       call check(ctx, allocated(error), "NaN tolerance rejected")
       ! a plan built from bad input is harmless: the batch still validates its input
-      call auto_prepare(model_elastic, 5.0_wp, 0.0_wp, [1.0_wp, 2.0_wp], nan, plan)
-      call auto_prepare(model_elastic, nan, 0.0_wp, [1.0_wp, 2.0_wp], 1.0e-10_wp, plan)
-      call auto_prepare(model_elastic, 5.0_wp, 0.0_wp, [1.0_wp, nan, 3.0_wp], 1.0e-10_wp, plan)
-      call trace_auto_batch(model_elastic, 5.0_wp, 0.0_wp, [1.0_wp, nan, 3.0_wp], 1.0e-10_wp, traces, stats, error, plan)
+      call auto_prepare(elastic_model_t(), 5.0_wp, 0.0_wp, [1.0_wp, 2.0_wp], nan, plan)
+      call auto_prepare(elastic_model_t(), nan, 0.0_wp, [1.0_wp, 2.0_wp], 1.0e-10_wp, plan)
+      call auto_prepare(elastic_model_t(), 5.0_wp, 0.0_wp, [1.0_wp, nan, 3.0_wp], 1.0e-10_wp, plan)
+      call trace_auto_batch(elastic_model_t(), 5.0_wp, 0.0_wp, [1.0_wp, nan, 3.0_wp], 1.0e-10_wp, traces, stats, error, plan)
       call check(ctx, allocated(error), "NaN beta rejected with a plan")
-      call prepare_batch(hill_model_t(model_elastic, 5.0_wp, 0.0_wp, 0.0_wp), [1.0_wp, nan, 3.0_wp], &
+      call prepare_batch(elastic_model_t(), hill_point_t(5.0_wp, 0.0_wp, 0.0_wp), [1.0_wp, nan, 3.0_wp], &
          method_t(method_auto, tolerance=1.0e-10_wp), row_plan)
-      call monodromy_trace_batch(hill_model_t(model_elastic, 5.0_wp, 0.0_wp, 0.0_wp), [1.0_wp, nan, 3.0_wp], &
+      call monodromy_trace_batch(elastic_model_t(), hill_point_t(5.0_wp, 0.0_wp, 0.0_wp), [1.0_wp, nan, 3.0_wp], &
          method_t(method_auto, tolerance=1.0e-10_wp), traces, failed, error, plan=row_plan)
       call check(ctx, allocated(error) .and. failed(2) .and. .not. (failed(1) .or. failed(3)), &
                  "NaN beta located by monodromy_trace_batch with a plan")
@@ -547,12 +562,12 @@ contains
       real(wp) :: errors(3), order
       integer :: i, k, n
       do i = 1, size(cases, 2)
-         call trace_gsl(hill_model_t(model_elastic, cases(1, i), cases(2, i), 0.0_wp), 1.0e-14_wp, reference, &
+         call trace_gsl(elastic_model_t(), hill_point_t(cases(1, i), cases(2, i), 0.0_wp), 1.0e-14_wp, reference, &
             stats, error)
          call check(ctx, .not. allocated(error), "gsl reference")
          do k = 1, 3
             n = first_n(i)*2**(k - 1)
-            errors(k) = abs(fixed_n_trace(model_elastic, cases(1, i), cases(2, i), n) - reference%value)
+            errors(k) = abs(fixed_n_trace(elastic_model_t(), cases(1, i), cases(2, i), n) - reference%value)
          end do
          do k = 1, 2
             order = log(errors(k)/errors(k + 1))/log(2.0_wp)
@@ -575,7 +590,7 @@ contains
       type(trace_t) :: tr
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
-      call trace_auto(hill_model_t(model_elastic, 9.869_wp, 0.0_wp, 0.0_wp), 1.0e-10_wp, tr, stats, error)
+      call trace_auto(elastic_model_t(), hill_point_t(9.869_wp, 0.0_wp, 0.0_wp), 1.0e-10_wp, tr, stats, error)
       call check(ctx, allocated(error), "round-off limited")
       if (allocated(error)) call check(ctx, error%code == err_accuracy, "err_accuracy")
       call check(ctx, tr%value, 2.0_wp, abs=1.0e-7_wp, message="S = 2 to the round-off level")
@@ -590,15 +605,15 @@ contains
    !> most points are settled (their |S| beyond the bound from 2 cosh ε).
    subroutine screen_bound_grids(ctx)
       type(test_context_t), intent(inout) :: ctx
-      call grid(model_elastic, 0.0_wp, 9.8_wp, -2.0_wp, 12.0_wp, 0.0_wp, "elastic")
-      call grid(model_elastic, 9.5_wp, pi2*(1.0_wp - 1.0e-7_wp), -50.0_wp, 50.0_wp, 0.0_wp, "hard band")
-      call grid(model_elastic, 9.3_wp, pi2*(1.0_wp - 1.0e-9_wp), -0.01_wp, 0.01_wp, 0.0_wp, "band near beta = 0")
-      call grid(model_mathieu, 0.0_wp, 10.0_wp, -5.0_wp, 15.0_wp, 0.0_wp, "mathieu")
-      call grid(model_elastic, 0.0_wp, 9.8_wp, -2.0_wp, 12.0_wp, 0.3_wp, "damped")
-      call grid(model_elastic, 0.0_wp, 9.8_wp, -1000.0_wp, 1000.0_wp, 0.0_wp, "large beta")
+      call grid(elastic_model_t(), 0.0_wp, 9.8_wp, -2.0_wp, 12.0_wp, 0.0_wp, "elastic")
+      call grid(elastic_model_t(), 9.5_wp, pi2*(1.0_wp - 1.0e-7_wp), -50.0_wp, 50.0_wp, 0.0_wp, "hard band")
+      call grid(elastic_model_t(), 9.3_wp, pi2*(1.0_wp - 1.0e-9_wp), -0.01_wp, 0.01_wp, 0.0_wp, "band near beta = 0")
+      call grid(mathieu_model_t(), 0.0_wp, 10.0_wp, -5.0_wp, 15.0_wp, 0.0_wp, "mathieu")
+      call grid(elastic_model_t(), 0.0_wp, 9.8_wp, -2.0_wp, 12.0_wp, 0.3_wp, "damped")
+      call grid(elastic_model_t(), 0.0_wp, 9.8_wp, -1000.0_wp, 1000.0_wp, 0.0_wp, "large beta")
    contains
-      subroutine grid(kind, a0, a1, b0, b1, epsilon, name)
-         integer, intent(in) :: kind
+      subroutine grid(model, a0, a1, b0, b1, epsilon, name)
+         class(hill_model_t), intent(in) :: model
          real(wp), intent(in) :: a0, a1, b0, b1, epsilon
          character(len=*), intent(in) :: name
          integer, parameter :: n = 30
@@ -616,10 +631,10 @@ contains
          n_violations = 0
          do i = 1, n
             alpha = a0 + (a1 - a0)*(i - 1)/real(n - 1, wp)
-            call trace_auto_screen(kind, alpha, epsilon, betas, screened, stats, error)
+            call trace_auto_screen(model, alpha, epsilon, betas, screened, stats, error)
             call check(ctx, .not. allocated(error), name//": screened")
             if (allocated(error)) return
-            call trace_auto_batch(kind, alpha, epsilon, betas, 1.0e-13_wp, reference, stats, error)
+            call trace_auto_batch(model, alpha, epsilon, betas, 1.0e-13_wp, reference, stats, error)
             if (allocated(error)) deallocate (error)   ! round-off limited points: their best values
             do j = 1, n
                e = trace_distance(screened(j), reference(j))
@@ -646,13 +661,13 @@ contains
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
       integer :: j
-      call trace_auto_screen(model_elastic, 1.0_wp, 0.0_wp, betas, screened, stats, error)
+      call trace_auto_screen(elastic_model_t(), 1.0_wp, 0.0_wp, betas, screened, stats, error)
       call check(ctx, .not. allocated(error), "screened")
       if (allocated(error)) return
       do j = 1, size(betas)
          call check(ctx, screened(j)%log_abs > 300.0_wp .and. .not. screened(j)%overflow, "|S| beyond e^300")
          call check(ctx, screened(j)%error_estimate < 1.0_wp, "a bound below 1")
-         call trace_auto(hill_model_t(model_elastic, 1.0_wp, betas(j), 0.0_wp), 1.0e-10_wp, tr, stats, error)
+         call trace_auto(elastic_model_t(), hill_point_t(1.0_wp, betas(j), 0.0_wp), 1.0e-10_wp, tr, stats, error)
          if (allocated(error)) deallocate (error)
          call check(ctx, trace_distance(tr, screened(j)) <= screened(j)%error_estimate, &
                     "auto's S within the bound")

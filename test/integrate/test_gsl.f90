@@ -15,6 +15,11 @@ module test_gsl
    use hillstab_hill_mathieu
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_quiet_nan
+   use hillstab_hill_model, only: hill_model_t, hill_point_t
+   use hillstab_hill_model_elastic, only: elastic_model_t
+   use hillstab_hill_model_mathieu, only: mathieu_model_t
+   use hillstab_hill_models, only: model_from_code
+   use hillstab_test_models, only: model_of_code
    implicit none
    private
    public :: collect_gsl
@@ -88,7 +93,8 @@ contains
       type(trace_t) :: tr, coarse, fine
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
       integer :: n, i, kind
       character(len=60) :: label
       do kind = mathieu_kind_a, mathieu_kind_b
@@ -99,11 +105,12 @@ contains
                call check(ctx, .not. allocated(error), "transition beta "//trim(label))
                if (allocated(error)) cycle
                expected = merge(2.0_wp, -2.0_wp, mod(n, 2) == 0)
-               model = hill_model_t(model_mathieu, nus(i), beta, 0.0_wp)
-               call trace_gsl(model, 1.0e-13_wp, tr, stats, error)
+               model => model_of_code(2)
+               point = hill_point_t(nus(i), beta, 0.0_wp)
+               call trace_gsl(model, point, 1.0e-13_wp, tr, stats, error)
                call check(ctx, tr%value, expected, abs=1.0e-10_wp, message="gsl "//trim(label))
-               coarse = trace_segmented(model, 2048, sampling_average)
-               fine = trace_segmented(model, 4096, sampling_average)
+               coarse = trace_segmented(model, point, 2048, sampling_average)
+               fine = trace_segmented(model, point, 4096, sampling_average)
                richardson = (4.0_wp*fine%value - coarse%value)/3.0_wp
                call check(ctx, richardson, expected, abs=1.0e-9_wp, message="segments "//trim(label))
             end do
@@ -120,14 +127,16 @@ contains
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
       integer :: i, kind
-      do kind = model_elastic, model_mathieu
+      class(hill_model_t), pointer :: kind_model
+      do kind = 1, 2   ! the elastic and the Mathieu model
+         kind_model => model_of_code(kind)
          do i = 1, size(betas)
             if (betas(i) >= 0.0_wp) then
                exact = 2.0_wp*cos(2.0_wp*sqrt(betas(i)))
             else
                exact = 2.0_wp*cosh(2.0_wp*sqrt(-betas(i)))
             end if
-            call trace_gsl(hill_model_t(kind, 0.0_wp, betas(i), 0.0_wp), 1.0e-12_wp, tr, stats, error)
+            call trace_gsl(kind_model, hill_point_t(0.0_wp, betas(i), 0.0_wp), 1.0e-12_wp, tr, stats, error)
             call check(ctx, tr%value, exact, abs=1.0e-12_wp*max(1.0_wp, abs(exact)))
          end do
       end do
@@ -143,13 +152,15 @@ contains
       type(scaled_matrix_t) :: half, full
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
       real(wp) :: a(2, 2), b(2, 2), size_a
       integer :: p, i, j
       do p = 1, size(points, 2)
-         model = hill_model_t(nint(points(1, p)), points(2, p), points(3, p), 0.0_wp)
-         call monodromy_gsl(model, 1.0e-13_wp, half, stats, error)
-         call monodromy_gsl_full_period(model, 1.0e-14_wp, full, stats, error)
+         model => model_of_code(nint(points(1, p)))
+         point = hill_point_t(points(2, p), points(3, p), 0.0_wp)
+         call monodromy_gsl(model, point, 1.0e-13_wp, half, stats, error)
+         call monodromy_gsl_full_period(model, point, 1.0e-14_wp, full, stats, error)
          call check(ctx, .not. allocated(error), "integrations succeed")
          a = matrix_of(half)
          b = matrix_of(full)
@@ -173,14 +184,16 @@ contains
       type(trace_t) :: tr, coarse, fine
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
       real(wp) :: richardson
       integer :: p
       do p = 1, size(points, 2)
-         model = hill_model_t(model_elastic, points(1, p), points(2, p), 0.0_wp)
-         call trace_gsl(model, 1.0e-12_wp, tr, stats, error)
-         coarse = trace_segmented(model, 4096, sampling_average)
-         fine = trace_segmented(model, 8192, sampling_average)
+         model => model_of_code(1)
+         point = hill_point_t(points(1, p), points(2, p), 0.0_wp)
+         call trace_gsl(model, point, 1.0e-12_wp, tr, stats, error)
+         coarse = trace_segmented(model, point, 4096, sampling_average)
+         fine = trace_segmented(model, point, 8192, sampling_average)
          richardson = (4.0_wp*fine%value - coarse%value)/3.0_wp
          call check(ctx, tr%value, richardson, rel=1.0e-9_wp, abs=1.0e-9_wp)
       end do
@@ -205,7 +218,7 @@ contains
       integer :: p, k
       do p = 1, size(points, 2)
          do k = 1, size(tolerances)
-            call trace_gsl(hill_model_t(model_elastic, points(1, p), points(2, p), 0.0_wp), tolerances(k), &
+            call trace_gsl(elastic_model_t(), hill_point_t(points(1, p), points(2, p), 0.0_wp), tolerances(k), &
                            tr, stats, error)
             bound = tolerances(k)*max(1.0_wp, abs(exact(p)))
             if (p == 4) bound = max(bound, 5.0e-11_wp)  ! the double-precision floor at κ ≈ 3e3
@@ -222,10 +235,12 @@ contains
       type(trace_t) :: tr
       type(work_stats_t) :: loose, tight
       type(error_t), allocatable :: error
-      type(hill_model_t) :: model
-      model = hill_model_t(model_elastic, 7.88_wp, 3.95_wp, 0.0_wp)
-      call trace_gsl(model, 1.0e-6_wp, tr, loose, error)
-      call trace_gsl(model, 1.0e-13_wp, tr, tight, error)
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
+      model => model_of_code(1)
+      point = hill_point_t(7.88_wp, 3.95_wp, 0.0_wp)
+      call trace_gsl(model, point, 1.0e-6_wp, tr, loose, error)
+      call trace_gsl(model, point, 1.0e-13_wp, tr, tight, error)
       call check(ctx, loose%n_steps > 0 .and. loose%n_rejected >= 0, "steps counted")
       ! 13 per step (12 per retry) and one per accepted step for the sensitivity integrals
       call check(ctx, loose%n_evaluations >= 12*(loose%n_steps + loose%n_rejected) + loose%n_steps .and. &
@@ -252,13 +267,14 @@ contains
       call check(ctx, allocated(error), "unknown kind")
       call mathieu_a(mathieu_max_order, 1.0_wp, value, error)
       call check(ctx, .not. allocated(error), "largest order accepted")
-      call trace_gsl(hill_model_t(model_elastic, 1.0_wp, 2.0_wp, 0.0_wp), 0.0_wp, tr, stats, error)
+      call trace_gsl(elastic_model_t(), hill_point_t(1.0_wp, 2.0_wp, 0.0_wp), 0.0_wp, tr, stats, error)
       call check(ctx, allocated(error), "zero tolerance")
-      call trace_gsl(hill_model_t(model_elastic, 1.0_wp, 2.0_wp, 0.0_wp), ieee_value(1.0_wp, ieee_positive_inf), tr, stats, error)
+      call trace_gsl(elastic_model_t(), hill_point_t(1.0_wp, 2.0_wp, 0.0_wp), ieee_value(1.0_wp, ieee_positive_inf), tr, &
+         stats, error)
       call check(ctx, allocated(error), "infinite tolerance")
-      call trace_gsl(hill_model_t(model_elastic, 1.0_wp, 2.0_wp, 0.0_wp), ieee_value(1.0_wp, ieee_quiet_nan), tr, stats, error)
+      call trace_gsl(elastic_model_t(), hill_point_t(1.0_wp, 2.0_wp, 0.0_wp), ieee_value(1.0_wp, ieee_quiet_nan), tr, stats, error)
       call check(ctx, allocated(error), "NaN tolerance")
-      call trace_gsl(hill_model_t(model_elastic, pi2, 2.0_wp, 0.0_wp), 1.0e-8_wp, tr, stats, error)
+      call trace_gsl(elastic_model_t(), hill_point_t(pi2, 2.0_wp, 0.0_wp), 1.0e-8_wp, tr, stats, error)
       call check(ctx, allocated(error), "alpha = pi**2")
    end subroutine bad_input
 
@@ -267,10 +283,12 @@ contains
       type(trace_t) :: direct, dispatched
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
-      type(hill_model_t) :: model
-      model = hill_model_t(model_elastic, 5.0_wp, 1.6_wp, 0.4_wp)
-      call trace_gsl(model, 1.0e-11_wp, direct, stats, error)
-      call monodromy_trace(model, method_t(kind=method_gsl, tolerance=1.0e-11_wp), dispatched, error)
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
+      model => model_of_code(1)
+      point = hill_point_t(5.0_wp, 1.6_wp, 0.4_wp)
+      call trace_gsl(model, point, 1.0e-11_wp, direct, stats, error)
+      call monodromy_trace(model, point, method_t(kind=method_gsl, tolerance=1.0e-11_wp), dispatched, error)
       call check(ctx, .not. allocated(error), "dispatch succeeds")
       call check(ctx, dispatched%value, direct%value, abs=0.0_wp, message="same trace")
    end subroutine method_dispatch
@@ -302,7 +320,7 @@ contains
          type(trace_t) :: tr
          type(work_stats_t) :: stats
          type(error_t), allocatable :: error
-         call trace_gsl(hill_model_t(model_elastic, 0.4_wp*k, 0.5_wp*k, 0.0_wp), 1.0e-11_wp, tr, stats, error)
+         call trace_gsl(elastic_model_t(), hill_point_t(0.4_wp*k, 0.5_wp*k, 0.0_wp), 1.0e-11_wp, tr, stats, error)
          bad = bad .or. allocated(error)
          s = tr%value
       end function trace_at

@@ -7,13 +7,17 @@ module test_magnus
    use hillstab_core_kinds, only: wp, int64, pi2
    use hillstab_core_error, only: error_t, err_integration, err_invalid_parameter, err_accuracy
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu
    use hillstab_hill_transfer, only: scaled_matrix_t, trace_t, trace_of, determinant_of, monodromy_from_half_period
    use hillstab_integrate_magnus
    use hillstab_integrate_monodromy, only: monodromy_trace, method_t, method_magnus4, method_magnus6
    use hillstab_test_reference, only: rk4_monodromy, value_of
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_coefficient
+   use hillstab_hill_model_elastic, only: elastic_model_t
+   use hillstab_hill_model_mathieu, only: mathieu_model_t
+   use hillstab_hill_models, only: model_from_code
+   use hillstab_test_models, only: model_of_code
    implicit none
    private
    public :: collect_magnus
@@ -105,14 +109,17 @@ contains
    subroutine sixth_order_formulas_agree(ctx)
       type(test_context_t), intent(inout) :: ctx
       real(wp), parameter :: offset = 0.38729833462074168852_wp
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
       real(wp) :: h, q(3), diff(4)
       integer :: k
-      model = hill_model_t(model_elastic, 8.0_wp, 2.47_wp, 0.0_wp)
+      model => model_of_code(1)
+      point = hill_point_t(8.0_wp, 2.47_wp, 0.0_wp)
       h = 0.2_wp
       do k = 1, 4
-         q = [hill_coefficient_at(model, 0.3_wp + (0.5_wp - offset)*h), hill_coefficient_at(model, 0.3_wp + 0.5_wp*h), &
-              hill_coefficient_at(model, 0.3_wp + (0.5_wp + offset)*h)]
+         q = [hill_coefficient_at(model, point, 0.3_wp + (0.5_wp - offset)*h), hill_coefficient_at(model, point, &
+            0.3_wp + 0.5_wp*h), &
+              hill_coefficient_at(model, point, 0.3_wp + (0.5_wp + offset)*h)]
          diff(k) = maxval(abs(sl2_matrix(magnus6_generator(q, h)) - moment_magnus6(q, h)))
          h = h/2
       end do
@@ -121,11 +128,12 @@ contains
       end do
    end subroutine sixth_order_formulas_agree
 
-   real(wp) function hill_coefficient_at(model, tau) result(q)
-      use hillstab_hill_coefficient, only: hill_coefficient
-      type(hill_model_t), intent(in) :: model
+   real(wp) function hill_coefficient_at(model, point, tau) result(q)
+      use hillstab_hill_model, only: hill_coefficient
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       real(wp), intent(in) :: tau
-      q = hill_coefficient(model, tau)
+      q = hill_coefficient(model, point, tau)
    end function hill_coefficient_at
 
    !> α = 0: Q ≡ β and S = 2 cos(2√β) (2 cosh(2√−β) for β < 0), for every step size.
@@ -138,6 +146,7 @@ contains
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
       integer :: j, order, kind
+      class(hill_model_t), pointer :: kind_model
       character(len=60) :: label
       do j = 1, size(betas)
          if (betas(j) >= 0.0_wp) then
@@ -147,14 +156,15 @@ contains
          end if
          ! 2√β rad of phase carry a round-off of about ε·2√β
          tol = 1.0e-14_wp*max(1.0_wp, abs(exact))*max(1.0_wp, 2*sqrt(abs(betas(j))))
-         do kind = model_elastic, model_mathieu
+         do kind = 1, 2   ! the elastic and the Mathieu model
+            kind_model => model_of_code(kind)
             do order = 4, 6, 2
                write (label, '(a,es10.3,a,i0,a,i0)') "beta=", betas(j), " order ", order, " model ", kind
-               call trace_magnus(hill_model_t(kind, 0.0_wp, betas(j), 0.0_wp), order, 1.0e-10_wp, tr, stats, error)
+               call trace_magnus(kind_model, hill_point_t(0.0_wp, betas(j), 0.0_wp), order, 1.0e-10_wp, tr, stats, error)
                call check(ctx, .not. allocated(error), "no error "//trim(label))
                call check(ctx, tr%value, exact, abs=tol, message=trim(label))
                call check(ctx, stats%n_evaluations <= 60_int64, "cheap for constant q "//trim(label))
-               tr = trace_of(monodromy_magnus_uniform(hill_model_t(kind, 0.0_wp, betas(j), 0.0_wp), order, 3))
+               tr = trace_of(monodromy_magnus_uniform(kind_model, hill_point_t(0.0_wp, betas(j), 0.0_wp), order, 3))
                call check(ctx, tr%value, exact, abs=tol, message="3 uniform steps "//trim(label))
             end do
          end do
@@ -164,22 +174,25 @@ contains
    !> Orders 4 and 6 on uniform full-period meshes, against RK4 with 40000 steps.
    subroutine observed_order(ctx)
       type(test_context_t), intent(inout) :: ctx
-      type(hill_model_t) :: models(2)
+      type(hill_point_t) :: points(2)
+      integer :: codes(2)  !! the models by registry code (1 elastic, 2 Mathieu)
       real(wp) :: reference, e1, e2, m(2, 2)
       integer :: i, order, n
       ! coarsest mesh per (order, model): errors well above RK4's ~1e-13 yet asymptotic
       integer, parameter :: first_steps(2, 2) = reshape([32, 16, 16, 8], [2, 2])
       character(len=60) :: label
-      models(1) = hill_model_t(model_elastic, 5.0_wp, 2.47_wp, 0.0_wp)
-      models(2) = hill_model_t(model_mathieu, 2.0_wp, 2.47_wp, 0.0_wp)
+      codes(1) = 1
+      points(1) = hill_point_t(5.0_wp, 2.47_wp, 0.0_wp)
+      codes(2) = 2
+      points(2) = hill_point_t(2.0_wp, 2.47_wp, 0.0_wp)
       do i = 1, 2
-         m = rk4_monodromy(models(i), 0.0_wp, 40000)
+         m = rk4_monodromy(model_of_code(codes(i)), points(i), 0.0_wp, 40000)
          reference = m(1, 1) + m(2, 2)
          do order = 4, 6, 2
             n = first_steps(order/2 - 1, i)
-            e1 = abs(value_of(trace_of(monodromy_magnus_uniform(models(i), order, n))) - reference)
-            e2 = abs(value_of(trace_of(monodromy_magnus_uniform(models(i), order, 2*n))) - reference)
-            write (label, '(a,i0,a,i0,a,2es9.2)') "model ", models(i)%kind, " order ", order, " errors ", e1, e2
+            e1 = abs(value_of(trace_of(monodromy_magnus_uniform(model_of_code(codes(i)), points(i), order, n))) - reference)
+            e2 = abs(value_of(trace_of(monodromy_magnus_uniform(model_of_code(codes(i)), points(i), order, 2*n))) - reference)
+            write (label, '(a,i0,a,i0,a,2es9.2)') "model ", codes(i), " order ", order, " errors ", e1, e2
             call check(ctx, e2 > 1.0e-11_wp, "above the reference's accuracy "//trim(label))
             call check(ctx, log(e1/e2)/log(2.0_wp), real(order, wp), abs=0.25_wp, message=trim(label))
          end do
@@ -189,19 +202,25 @@ contains
    !> M from Φ(1) (u even, v odd) equals the product over the full period.
    subroutine half_period_identity(ctx)
       type(test_context_t), intent(inout) :: ctx
-      type(hill_model_t) :: models(5)
+      type(hill_point_t) :: points(5)
+      integer :: codes(5)  !! the models by registry code (1 elastic, 2 Mathieu)
       type(scaled_matrix_t) :: half, full
       real(wp) :: a(2, 2), b(2, 2)
       integer :: i, order
-      models(1) = hill_model_t(model_elastic, 5.0_wp, 2.47_wp, 0.0_wp)
-      models(2) = hill_model_t(model_elastic, 9.8_wp, -50.0_wp, 0.0_wp)
-      models(3) = hill_model_t(model_elastic, 9.8_wp, 400.0_wp, 0.0_wp)
-      models(4) = hill_model_t(model_elastic, 7.0_wp, 1.6_wp, 1.5_wp)
-      models(5) = hill_model_t(model_mathieu, 3.0_wp, 6.0_wp, 0.0_wp)
-      do i = 1, size(models)
+      codes(1) = 1
+      points(1) = hill_point_t(5.0_wp, 2.47_wp, 0.0_wp)
+      codes(2) = 1
+      points(2) = hill_point_t(9.8_wp, -50.0_wp, 0.0_wp)
+      codes(3) = 1
+      points(3) = hill_point_t(9.8_wp, 400.0_wp, 0.0_wp)
+      codes(4) = 1
+      points(4) = hill_point_t(7.0_wp, 1.6_wp, 1.5_wp)
+      codes(5) = 2
+      points(5) = hill_point_t(3.0_wp, 6.0_wp, 0.0_wp)
+      do i = 1, size(points)
          do order = 4, 6, 2
-            half = monodromy_from_half_period(half_period_magnus_uniform(models(i), order, 300))
-            full = monodromy_magnus_uniform(models(i), order, 600)
+            half = monodromy_from_half_period(half_period_magnus_uniform(model_of_code(codes(i)), points(i), order, 300))
+            full = monodromy_magnus_uniform(model_of_code(codes(i)), points(i), order, 600)
             ! compare on the scale of the larger matrix (entries in units of e^log_scale)
             a = half%m*exp(half%log_scale - max(half%log_scale, full%log_scale))
             b = full%m*exp(full%log_scale - max(half%log_scale, full%log_scale))
@@ -223,7 +242,7 @@ contains
       integer :: i, j
       do i = 1, size(alphas)
          do j = 1, size(betas)
-            call monodromy_magnus(hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp), 6, 1.0e-10_wp, &
+            call monodromy_magnus(elastic_model_t(), hill_point_t(alphas(i), betas(j), 0.0_wp), 6, 1.0e-10_wp, &
                m, stats, error)
             call determinant_of(m, d, log_det_scale)
             ! det M − 1 in units of max|M_ij|² = e^{log_det_scale}
@@ -235,12 +254,13 @@ contains
    end subroutine unit_determinant
 
    !> Reference S: uniform full-period Magnus-6 with n and 2n steps, Richardson-extrapolated.
-   function richardson_reference(model, n) result(s)
-      type(hill_model_t), intent(in) :: model
+   function richardson_reference(model, point, n) result(s)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       integer, intent(in) :: n
       real(wp) :: s, s1, s2
-      s1 = value_of(trace_of(monodromy_magnus_uniform(model, 6, n)))
-      s2 = value_of(trace_of(monodromy_magnus_uniform(model, 6, 2*n)))
+      s1 = value_of(trace_of(monodromy_magnus_uniform(model, point, 6, n)))
+      s2 = value_of(trace_of(monodromy_magnus_uniform(model, point, 6, 2*n)))
       s = s2 + (s2 - s1)/63
    end function richardson_reference
 
@@ -250,7 +270,8 @@ contains
       real(wp) :: alphas(7) = [0.0_wp, 2.0_wp, 5.0_wp, 8.0_wp, 9.5_wp, 9.8_wp, 9.85_wp]
       real(wp) :: betas(7) = [-2.0_wp, 2.47_wp, 6.0_wp, 12.0_wp, -50.0_wp, 400.0_wp, 2500.0_wp]
       real(wp), parameter :: tolerance = 1.0e-10_wp
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
       type(trace_t) :: tr
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
@@ -260,9 +281,10 @@ contains
       do i = 1, size(alphas)
          do j = 1, size(betas)
             if (j > 4 .and. alphas(i) /= 9.8_wp) cycle
-            model = hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp)
-            reference = richardson_reference(model, merge(8192, 32768, j <= 4))
-            call trace_magnus(model, 6, tolerance, tr, stats, error, estimate)
+            model => model_of_code(1)
+            point = hill_point_t(alphas(i), betas(j), 0.0_wp)
+            reference = richardson_reference(model, point, merge(8192, 32768, j <= 4))
+            call trace_magnus(model, point, 6, tolerance, tr, stats, error, estimate)
             write (label, '(a,f5.2,a,f8.2,a,es9.2,a,i0)') "alpha=", alphas(i), " beta=", betas(j), &
                " estimate ", estimate, " evaluations ", stats%n_evaluations
             call check(ctx, .not. allocated(error), "no error "//trim(label))
@@ -271,13 +293,15 @@ contains
          end do
       end do
       ! the Richardson reference itself against the independent RK4 where RK4 is affordable
-      model = hill_model_t(model_elastic, 9.8_wp, 2.47_wp, 0.0_wp)
-      m = rk4_monodromy(model, 0.0_wp, 200000)
-      reference = richardson_reference(model, 8192)
+      model => model_of_code(1)
+      point = hill_point_t(9.8_wp, 2.47_wp, 0.0_wp)
+      m = rk4_monodromy(model, point, 0.0_wp, 200000)
+      reference = richardson_reference(model, point, 8192)
       call check(ctx, m(1, 1) + m(2, 2), reference, rel=1.0e-10_wp, message="reference vs RK4, alpha = 9.8")
-      model = hill_model_t(model_elastic, 5.0_wp, 6.0_wp, 0.0_wp)
-      m = rk4_monodromy(model, 0.0_wp, 40000)
-      call check(ctx, m(1, 1) + m(2, 2), richardson_reference(model, 8192), rel=1.0e-11_wp, &
+      model => model_of_code(1)
+      point = hill_point_t(5.0_wp, 6.0_wp, 0.0_wp)
+      m = rk4_monodromy(model, point, 0.0_wp, 40000)
+      call check(ctx, m(1, 1) + m(2, 2), richardson_reference(model, point, 8192), rel=1.0e-11_wp, &
          message="reference vs RK4, alpha = 5")
    end subroutine adaptive_grid
 
@@ -285,16 +309,18 @@ contains
    subroutine adaptive_order4(ctx)
       type(test_context_t), intent(inout) :: ctx
       real(wp) :: points(2, 4) = reshape([2.0_wp, 2.47_wp, 8.0_wp, -2.0_wp, 9.8_wp, 6.0_wp, 9.85_wp, 12.0_wp], [2, 4])
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
       type(trace_t) :: tr
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
       real(wp) :: reference
       integer :: k
       do k = 1, size(points, 2)
-         model = hill_model_t(model_elastic, points(1, k), points(2, k), 0.0_wp)
-         reference = richardson_reference(model, 8192)
-         call trace_magnus(model, 4, 1.0e-8_wp, tr, stats, error)
+         model => model_of_code(1)
+         point = hill_point_t(points(1, k), points(2, k), 0.0_wp)
+         reference = richardson_reference(model, point, 8192)
+         call trace_magnus(model, point, 4, 1.0e-8_wp, tr, stats, error)
          call check(ctx, .not. allocated(error), "no error")
          call check(ctx, tr%value, reference, abs=1.0e-8_wp*max(1.0_wp, abs(reference)))
       end do
@@ -304,20 +330,22 @@ contains
    !> number of steps (the dip at τ = 0 is resolved, the smooth part is not over-resolved).
    subroutine adaptive_mesh_pays(ctx)
       type(test_context_t), intent(inout) :: ctx
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
       type(scaled_matrix_t) :: m
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
       real(wp) :: reference, adaptive_error, uniform_error
       integer :: n_steps
-      model = hill_model_t(model_elastic, 9.85_wp, 2.47_wp, 0.0_wp)
-      reference = richardson_reference(model, 8192)
-      call monodromy_magnus(model, 6, 1.0e-8_wp, m, stats, error)
+      model => model_of_code(1)
+      point = hill_point_t(9.85_wp, 2.47_wp, 0.0_wp)
+      reference = richardson_reference(model, point, 8192)
+      call monodromy_magnus(model, point, 6, 1.0e-8_wp, m, stats, error)
       adaptive_error = abs(value_of(trace_of(m)) - reference)
       ! steps of the returned pass: total evaluations ≈ 3 (fine + coarse/2) per step
       n_steps = int(stats%n_evaluations/4.5_wp)
       uniform_error = abs(value_of(trace_of(monodromy_from_half_period( &
-                      half_period_magnus_uniform(model, 6, n_steps)))) - reference)
+                      half_period_magnus_uniform(model, point, 6, n_steps)))) - reference)
       call check(ctx, adaptive_error <= 1.0e-8_wp*abs(reference), "adaptive meets tolerance")
       call check(ctx, uniform_error > 30*adaptive_error, "uniform mesh of equal size is much worse")
    end subroutine adaptive_mesh_pays
@@ -328,18 +356,20 @@ contains
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
       real(wp) :: estimate
-      type(hill_model_t) :: model
-      model = hill_model_t(model_elastic, 5.0_wp, 2.47_wp, 0.0_wp)
-      call trace_magnus(model, 5, 1.0e-8_wp, tr, stats, error)
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
+      model => model_of_code(1)
+      point = hill_point_t(5.0_wp, 2.47_wp, 0.0_wp)
+      call trace_magnus(model, point, 5, 1.0e-8_wp, tr, stats, error)
       call check(ctx, allocated(error), "order 5 rejected")
       if (allocated(error)) call check(ctx, error%code == err_invalid_parameter, "invalid parameter")
-      call trace_magnus(model, 6, 0.0_wp, tr, stats, error)
+      call trace_magnus(model, point, 6, 0.0_wp, tr, stats, error)
       call check(ctx, allocated(error), "tolerance 0 rejected")
-      call trace_magnus(hill_model_t(model_elastic, pi2, 2.47_wp, 0.0_wp), 6, 1.0e-8_wp, tr, stats, error)
+      call trace_magnus(elastic_model_t(), hill_point_t(pi2, 2.47_wp, 0.0_wp), 6, 1.0e-8_wp, tr, stats, error)
       call check(ctx, allocated(error), "alpha = pi**2 rejected")
       ! below round-off the tolerance cannot be met: round-off limited (err_accuracy), the
       ! best value with an estimate above the tolerance, never NaN
-      call trace_magnus(hill_model_t(model_elastic, 2.0_wp, 2.47_wp, 0.0_wp), 6, 1.0e-17_wp, tr, stats, error, estimate)
+      call trace_magnus(elastic_model_t(), hill_point_t(2.0_wp, 2.47_wp, 0.0_wp), 6, 1.0e-17_wp, tr, stats, error, estimate)
       call check(ctx, allocated(error), "1e-17 not reachable")
       if (allocated(error)) call check(ctx, error%code == err_accuracy, "round-off limited")
       call check(ctx, estimate > 1.0e-17_wp .and. estimate < 1.0e-12_wp, "estimate at the round-off level")
@@ -348,16 +378,18 @@ contains
 
    subroutine dispatch(ctx)
       type(test_context_t), intent(inout) :: ctx
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
       type(trace_t) :: tr, direct
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
       integer :: kind
-      model = hill_model_t(model_elastic, 7.48_wp, 2.47_wp, 0.3_wp)
+      model => model_of_code(1)
+      point = hill_point_t(7.48_wp, 2.47_wp, 0.3_wp)
       do kind = method_magnus4, method_magnus6
-         call monodromy_trace(model, method_t(kind=kind, tolerance=1.0e-9_wp), tr, error)
+         call monodromy_trace(model, point, method_t(kind=kind, tolerance=1.0e-9_wp), tr, error)
          call check(ctx, .not. allocated(error), "dispatched")
-         call trace_magnus(model, merge(4, 6, kind == method_magnus4), 1.0e-9_wp, direct, stats, error)
+         call trace_magnus(model, point, merge(4, 6, kind == method_magnus4), 1.0e-9_wp, direct, stats, error)
          call check(ctx, tr%value, direct%value, rel=0.0_wp, message="same result")
       end do
    end subroutine dispatch

@@ -13,11 +13,14 @@ module test_monodromy
    use hillstab_hill_floquet
    use hillstab_integrate_monodromy
    use hillstab_integrate_auto, only: trace_auto_screen
-   use hillstab_hill_models, only: model_coefficient_range
    use hillstab_core_stats, only: work_stats_t
    use hillstab_test_reference, only: rk4_monodromy, value_of
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, model_coefficient_range
+   use hillstab_hill_model_elastic, only: elastic_model_t
+   use hillstab_hill_model_mathieu, only: mathieu_model_t
+   use hillstab_test_models, only: model_of_code
    implicit none
    private
    public :: collect_monodromy
@@ -37,7 +40,7 @@ module test_monodromy
 
    !> One point of the reference table.
    type :: reference_point_t
-      integer :: model = model_elastic
+      integer :: model = 1  !! the model's registry code (1 elastic, 2 Mathieu)
       real(wp) :: alpha = 0.0_wp, beta = 0.0_wp
       real(wp) :: sign = 1.0_wp      !! sign of S
       real(wp) :: log_abs = 0.0_wp   !! ln|S|
@@ -77,7 +80,7 @@ contains
       do i = 1, 4
          do j = 1, 4
             do s = sampling_endpoint, sampling_average
-               m = matrix_of(monodromy_segmented(hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp), 64, s))
+               m = matrix_of(monodromy_segmented(elastic_model_t(), hill_point_t(alphas(i), betas(j), 0.0_wp), 64, s))
                call check(ctx, determinant(m), 1.0_wp, rel=1.0e-12_wp*max(1.0_wp, maxval(abs(m))**2*1.0e-2_wp))
             end do
          end do
@@ -89,14 +92,17 @@ contains
    subroutine damped_determinant(ctx)
       type(test_context_t), intent(inout) :: ctx
       real(wp) :: eps(3) = [0.2_wp, 1.0_wp, 3.0_wp], mx(2, 2), ref(2, 2)
-      type(hill_model_t) :: chi, bare
+      class(hill_model_t), pointer :: chi_model
+      type(hill_point_t) :: chi
+      type(hill_point_t) :: bare
       integer :: k
       do k = 1, size(eps)
-         chi = hill_model_t(model_elastic, 5.0_wp, 1.6_wp, eps(k))
+         chi_model => model_of_code(1)
+         chi = hill_point_t(5.0_wp, 1.6_wp, eps(k))
          bare = chi; bare%epsilon = 0.0_wp
-         ref = rk4_monodromy(bare, eps(k), 20000)
+         ref = rk4_monodromy(chi_model, bare, eps(k), 20000)
          call check(ctx, determinant(ref), exp(-2*eps(k)), rel=1.0e-10_wp)
-         mx = matrix_of(swing_monodromy(monodromy_segmented(chi, 8192, sampling_average), eps(k)))
+         mx = matrix_of(swing_monodromy(monodromy_segmented(chi_model, chi, 8192, sampling_average), eps(k)))
          call check(ctx, determinant(mx), exp(-2*eps(k)), rel=1.0e-12_wp)
          call check(ctx, mx(1, 1) + mx(2, 2), ref(1, 1) + ref(2, 2), rel=1.0e-6_wp, abs=1.0e-6_wp)
          call check(ctx, mx(2, 1), ref(2, 1), rel=1.0e-6_wp, abs=1.0e-6_wp)
@@ -108,20 +114,22 @@ contains
       type(test_context_t), intent(inout) :: ctx
       real(wp) :: alphas(2) = [2.0_wp, 5.0_wp], betas(2) = [2.47_wp, 6.0_wp], exact, e1, e2, order
       integer :: i, j, s, n
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
       character(len=80) :: label
       do i = 1, 2
          do j = 1, 2
-            model = hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp)
+            model => model_of_code(1)
+            point = hill_point_t(alphas(i), betas(j), 0.0_wp)
             ref: block
                real(wp) :: m(2, 2)
-               m = rk4_monodromy(model, 0.0_wp, 20000)
+               m = rk4_monodromy(model, point, 0.0_wp, 20000)
                exact = m(1, 1) + m(2, 2)
             end block ref
             do s = sampling_midpoint, sampling_average
                do n = 32, 256, 224
-                  e1 = abs(value_of(trace_segmented(model, n, s)) - exact)
-                  e2 = abs(value_of(trace_segmented(model, 2*n, s)) - exact)
+                  e1 = abs(value_of(trace_segmented(model, point, n, s)) - exact)
+                  e2 = abs(value_of(trace_segmented(model, point, 2*n, s)) - exact)
                   order = log(e1/e2)/log(2.0_wp)
                   write (label, '(a,f4.1,a,f5.2,a,a,a,i0)') "alpha=", alphas(i), " beta=", betas(j), " ", &
                      sampling_name(s), " N=", n
@@ -136,15 +144,17 @@ contains
    subroutine resonance_four_thirds(ctx)
       type(test_context_t), intent(inout) :: ctx
       real(wp) :: alphas(5) = [0.1_wp, 1.0_wp, 4.0_wp, 8.0_wp, 9.5_wp], m(2, 2)
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
       type(floquet_t) :: f
       integer :: i
       do i = 1, size(alphas)
-         model = hill_model_t(model_elastic, alphas(i), pi2/4, 0.0_wp)
-         f = floquet_from_trace(trace_segmented(model, 4096, sampling_average), 0.0_wp)
+         model => model_of_code(1)
+         point = hill_point_t(alphas(i), pi2/4, 0.0_wp)
+         f = floquet_from_trace(trace_segmented(model, point, 4096, sampling_average), 0.0_wp)
          call check(ctx, .not. f%stable, "segmented unstable")
          call check(ctx, f%trace%value < -2.0_wp, "antiperiodic: S < -2")
-         m = rk4_monodromy(model, 0.0_wp, 40000)
+         m = rk4_monodromy(model, point, 0.0_wp, 40000)
          call check(ctx, f%trace%value, m(1, 1) + m(2, 2), rel=1.0e-5_wp)
       end do
    end subroutine resonance_four_thirds
@@ -153,16 +163,19 @@ contains
    !> by the spectral radius of the directly integrated damped monodromy.
    subroutine damped_stable_beyond_paper(ctx)
       type(test_context_t), intent(inout) :: ctx
-      type(hill_model_t) :: chi, bare
+      class(hill_model_t), pointer :: chi_model
+      type(hill_point_t) :: chi
+      type(hill_point_t) :: bare
       type(floquet_t) :: f
       real(wp) :: m(2, 2), tr, det, radius
-      chi = hill_model_t(model_elastic, 5.0_wp, 1.6_wp, 1.0_wp)
-      f = floquet_from_trace(trace_segmented(chi, 8192, sampling_average), chi%epsilon)
+      chi_model => model_of_code(1)
+      chi = hill_point_t(5.0_wp, 1.6_wp, 1.0_wp)
+      f = floquet_from_trace(trace_segmented(chi_model, chi, 8192, sampling_average), chi%epsilon)
       call check(ctx, abs(f%trace%value) > 2.0_wp, "|S1| > 2")
       call check(ctx, f%stable, "stable by |S1| < 2 cosh eps")
       call check(ctx, .not. f%stable_paper, "paper's criterion says unstable")
       bare = chi; bare%epsilon = 0.0_wp
-      m = rk4_monodromy(bare, 1.0_wp, 20000)
+      m = rk4_monodromy(chi_model, bare, 1.0_wp, 20000)
       tr = m(1, 1) + m(2, 2); det = determinant(m)
       radius = (abs(tr) + sqrt(max(tr**2 - 4*det, 0.0_wp)))/2
       if (tr**2 < 4*det) radius = sqrt(det)
@@ -179,36 +192,38 @@ contains
       do i = 1, 3
          do j = 1, 4
             do s = sampling_endpoint, sampling_average
-               tr = trace_segmented(hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp), 512, s)
+               tr = trace_segmented(elastic_model_t(), hill_point_t(alphas(i), betas(j), 0.0_wp), 512, s)
                f = floquet_from_trace(tr, 0.0_wp)
                call check(ctx, ieee_is_finite(tr%value) .and. ieee_is_finite(tr%log_abs) .and. &
                   ieee_is_finite(f%exponent), "finite")
             end do
-            tr = trace_segmented(hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp), 2, sampling_endpoint)
+            tr = trace_segmented(elastic_model_t(), hill_point_t(alphas(i), betas(j), 0.0_wp), 2, sampling_endpoint)
             call check(ctx, ieee_is_finite(tr%value) .and. ieee_is_finite(tr%log_abs), "finite eq. (37)")
          end do
       end do
       ! q = 0 pieces: β = α makes the first endpoint piece exactly zero
-      tr = trace_segmented(hill_model_t(model_elastic, 5.0_wp, 5.0_wp, 0.0_wp), 2, sampling_endpoint)
+      tr = trace_segmented(elastic_model_t(), hill_point_t(5.0_wp, 5.0_wp, 0.0_wp), 2, sampling_endpoint)
       call check(ctx, ieee_is_finite(tr%value), "zero piece finite")
       ! extreme negative coefficient: the trace overflows and is flagged, exponent finite
-      tr = trace_segmented(hill_model_t(model_elastic, 9.86_wp, -1.0e6_wp, 0.0_wp), 256, sampling_average)
+      tr = trace_segmented(elastic_model_t(), hill_point_t(9.86_wp, -1.0e6_wp, 0.0_wp), 256, sampling_average)
       f = floquet_from_trace(tr, 0.0_wp)
       call check(ctx, tr%overflow .and. ieee_is_finite(f%exponent) .and. f%exponent > 300.0_wp, "overflow flagged")
    end subroutine hard_cases_finite
 
    subroutine method_dispatch(ctx)
       type(test_context_t), intent(inout) :: ctx
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
       type(trace_t) :: tr
       type(error_t), allocatable :: error
-      model = hill_model_t(model_elastic, 3.7_wp, 2.47_wp, 0.0_wp)
-      call monodromy_trace(model, method_t(method_formula), tr, error)
+      model => model_of_code(1)
+      point = hill_point_t(3.7_wp, 2.47_wp, 0.0_wp)
+      call monodromy_trace(model, point, method_t(method_formula), tr, error)
       call check(ctx, .not. allocated(error), "formula works")
-      call check(ctx, tr%value, value_of(trace_segmented(model, 2, sampling_endpoint)), rel=1.0e-12_wp)
-      call monodromy_trace(model, method_t(method_segments, 0, sampling_average), tr, error)
+      call check(ctx, tr%value, value_of(trace_segmented(model, point, 2, sampling_endpoint)), rel=1.0e-12_wp)
+      call monodromy_trace(model, point, method_t(method_segments, 0, sampling_average), tr, error)
       call check(ctx, allocated(error), "n_segments = 0 rejected")
-      call monodromy_trace(hill_model_t(model_elastic, 10.0_wp, 1.0_wp, 0.0_wp), method_t(method_formula), tr, error)
+      call monodromy_trace(elastic_model_t(), hill_point_t(10.0_wp, 1.0_wp, 0.0_wp), method_t(method_formula), tr, error)
       call check(ctx, allocated(error), "alpha > pi**2 rejected")
       call check(ctx, method_from_name("magnus6") == method_magnus6 .and. method_from_name("x") == -1, "names")
    end subroutine method_dispatch
@@ -220,23 +235,25 @@ contains
    subroutine method_table_agrees(ctx)
       type(test_context_t), intent(inout) :: ctx
       real(wp), parameter :: tolerance = 1.0e-9_wp
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model
+      type(hill_point_t) :: point
       type(trace_t) :: tr, other
       type(error_t), allocatable :: error
       real(wp) :: m(2, 2), reference
       integer :: k
-      model = hill_model_t(model_elastic, 5.0_wp, 2.47_wp, 0.0_wp)
-      m = rk4_monodromy(model, 0.0_wp, 40000)
+      model => model_of_code(1)
+      point = hill_point_t(5.0_wp, 2.47_wp, 0.0_wp)
+      m = rk4_monodromy(model, point, 0.0_wp, 40000)
       reference = m(1, 1) + m(2, 2)
       do k = lbound(method_table, 1), ubound(method_table, 1)
          call check(ctx, method_from_name(method_name(k)) == k, "name round trip of "//method_name(k))
-         call monodromy_trace(model, method_t(k, 64, sampling_average, tolerance), tr, error)
+         call monodromy_trace(model, point, method_t(k, 64, sampling_average, tolerance), tr, error)
          call check(ctx, .not. allocated(error), method_name(k)//" computes")
          if (method_is_exact(k)) then
             call check(ctx, tr%value, reference, rel=tolerance, abs=tolerance, message=method_name(k)//" meets the tolerance")
          end if
          call check(ctx, method_gives_estimate(k) .eqv. tr%error_estimate >= 0.0_wp, method_name(k)//": estimate or -1")
-         call monodromy_trace(model, method_t(k, 96, sampling_midpoint, tolerance), other, error)
+         call monodromy_trace(model, point, method_t(k, 96, sampling_midpoint, tolerance), other, error)
          call check(ctx, method_uses_segments(k) .eqv. other%value /= tr%value, &
             method_name(k)//": n_segments and sampling used or ignored")
          call check(ctx, method_pieces(method_t(k, 64)) == merge(64, merge(2, 0, k == method_formula), &
@@ -270,9 +287,9 @@ contains
             exit
          end if
          if (p%model == 0) then
-            p%model = model_elastic
+            p%model = 1
          else
-            p%model = model_mathieu
+            p%model = 2
          end if
          n = n + 1
          buffer(n) = p
@@ -332,7 +349,7 @@ contains
             worst_estimate = 0.0_wp
             n_roundoff = 0
             do k = 1, size(points)
-               call monodromy_trace(hill_model_t(points(k)%model, points(k)%alpha, points(k)%beta, 0.0_wp), &
+               call monodromy_trace(model_of_code(points(k)%model), hill_point_t(points(k)%alpha, points(k)%beta, 0.0_wp), &
                                     method_t(kind, tolerance=tolerance), tr, error)
                err = reference_error(tr, points(k))
                write (where, '(a,es8.1,a,i0,a,es10.3,a,es11.3,a)') "tolerance ", tolerance, ", model ", &
@@ -422,7 +439,7 @@ contains
          do k = 1, size(points)
             write (where, '(a,i0,a,es10.3,a,es11.3)') "model ", points(k)%model, " alpha ", points(k)%alpha, &
                " beta ", points(k)%beta
-            call trace_auto_screen(points(k)%model, points(k)%alpha, 0.0_wp, [points(k)%beta], tr, stats, error)
+            call trace_auto_screen(model_of_code(points(k)%model), points(k)%alpha, 0.0_wp, [points(k)%beta], tr, stats, error)
             call check(ctx, .not. allocated(error), trim(where)//": screened")
             if (allocated(error)) cycle
             n_points = n_points + 1
@@ -430,7 +447,7 @@ contains
             worst = max(worst, err/tr(1)%error_estimate)
             call check(ctx, err <= tr(1)%error_estimate, trim(where)//": screen error "//real_text(err)// &
                        " above its bound "//real_text(tr(1)%error_estimate))
-            call monodromy_trace_batch(hill_model_t(points(k)%model, points(k)%alpha, 0.0_wp, 0.0_wp), &
+            call monodromy_trace_batch(model_of_code(points(k)%model), hill_point_t(points(k)%alpha, 0.0_wp, 0.0_wp), &
                [points(k)%beta], method_t(method_auto, tolerance=1.0e-10_wp), tr, failed, error, need=need_verdict)
             if (failed(1)) then
                call check(ctx, .false., trim(where)//": verdict failed")
@@ -477,10 +494,10 @@ contains
             end if
          end do
          do m = 1, size(methods)
-            call monodromy_trace_batch(hill_model_t(model_elastic, alphas(r), 0.0_wp, 0.0_wp), betas, &
+            call monodromy_trace_batch(elastic_model_t(), hill_point_t(alphas(r), 0.0_wp, 0.0_wp), betas, &
                method_t(methods(m), tolerance=1.0e-10_wp), full, failed, error, work_full)
             call check(ctx, .not. any(failed), method_name(methods(m))//": full row computed")
-            call monodromy_trace_batch(hill_model_t(model_elastic, alphas(r), 0.0_wp, 0.0_wp), betas, &
+            call monodromy_trace_batch(elastic_model_t(), hill_point_t(alphas(r), 0.0_wp, 0.0_wp), betas, &
                method_t(methods(m), tolerance=1.0e-10_wp), verdict, failed, error, work_verdict, need=need_verdict)
             call check(ctx, .not. any(failed), method_name(methods(m))//": verdict row computed")
             n_compared = 0
@@ -510,7 +527,8 @@ contains
       logical :: failed(n)
       type(error_t), allocatable :: error
       type(floquet_t) :: f_full, f_growth
-      type(hill_model_t) :: row
+      class(hill_model_t), pointer :: row_model
+      type(hill_point_t) :: row
       integer :: j, r, n_exact
       do j = 1, n
          betas(j) = -2.0_wp + 14.0_wp*(j - 1)/real(n - 1, wp)
@@ -518,14 +536,17 @@ contains
       do r = 1, 3
          select case (r)
          case (1)
-            row = hill_model_t(model_elastic, 7.0_wp, 0.0_wp, 0.0_wp)
+            row_model => model_of_code(1)
+            row = hill_point_t(7.0_wp, 0.0_wp, 0.0_wp)
          case (2)
-            row = hill_model_t(model_mathieu, 4.0_wp, 0.0_wp, 0.0_wp)
+            row_model => model_of_code(2)
+            row = hill_point_t(4.0_wp, 0.0_wp, 0.0_wp)
          case default
-            row = hill_model_t(model_elastic, 7.0_wp, 0.0_wp, 0.4_wp)
+            row_model => model_of_code(1)
+            row = hill_point_t(7.0_wp, 0.0_wp, 0.4_wp)
          end select
-         call monodromy_trace_batch(row, betas, method_t(method_auto, tolerance=1.0e-10_wp), full, failed, error)
-         call monodromy_trace_batch(row, betas, method_t(method_auto, tolerance=1.0e-10_wp), growth, failed, error, &
+         call monodromy_trace_batch(row_model, row, betas, method_t(method_auto, tolerance=1.0e-10_wp), full, failed, error)
+         call monodromy_trace_batch(row_model, row, betas, method_t(method_auto, tolerance=1.0e-10_wp), growth, failed, error, &
                                     need=need_growth)
          n_exact = 0
          do j = 1, n
@@ -556,9 +577,9 @@ contains
    !> (nπ/2)², S = ±2) nothing is declared.
    subroutine bounds_settle_correctly(ctx)
       type(test_context_t), intent(inout) :: ctx
-      call sweep(model_elastic, 0.0_wp, 9.8_wp, -20.0_wp, 40.0_wp, 0.0_wp, "elastic")
-      call sweep(model_mathieu, 0.0_wp, 20.0_wp, -10.0_wp, 40.0_wp, 0.0_wp, "mathieu")
-      call sweep(model_elastic, 0.0_wp, 9.8_wp, -20.0_wp, 40.0_wp, 0.5_wp, "damped")
+      call sweep(elastic_model_t(), 0.0_wp, 9.8_wp, -20.0_wp, 40.0_wp, 0.0_wp, "elastic")
+      call sweep(mathieu_model_t(), 0.0_wp, 20.0_wp, -10.0_wp, 40.0_wp, 0.0_wp, "mathieu")
+      call sweep(elastic_model_t(), 0.0_wp, 9.8_wp, -20.0_wp, 40.0_wp, 0.5_wp, "damped")
       ! q ≡ π²/4 (α = 0, β = π²/4): on the edge of the first band, S = −2: undecided
       call check(ctx, bounds_verdict(pi2/4.0_wp, pi2/4.0_wp) == bounds_undecided, "band edge undecided")
       call check(ctx, bounds_verdict(pi2/4.0_wp*(1.0_wp - 1.0e-6_wp), pi2/4.0_wp*(1.0_wp - 1.0e-6_wp)) == &
@@ -566,8 +587,8 @@ contains
       call check(ctx, bounds_verdict(-1.0e-3_wp, -1.0e-6_wp) == bounds_unstable, "q < 0 throughout")
       call check(ctx, bounds_verdict(-1.0_wp, 0.5_wp) == bounds_undecided, "q changes sign")
    contains
-      subroutine sweep(kind, a0, a1, b0, b1, epsilon, name)
-         integer, intent(in) :: kind
+      subroutine sweep(model, a0, a1, b0, b1, epsilon, name)
+         class(hill_model_t), intent(in) :: model
          real(wp), intent(in) :: a0, a1, b0, b1, epsilon
          character(len=*), intent(in) :: name
          integer, parameter :: n = 40
@@ -581,10 +602,10 @@ contains
             alpha = a0 + (a1 - a0)*(i - 1)/real(n - 1, wp)
             do j = 1, n
                beta = b0 + (b1 - b0)*(j - 1)/real(n - 1, wp)
-               call model_coefficient_range(kind, alpha, beta, epsilon, q_min, q_max)
+               call model_coefficient_range(model, hill_point_t(alpha, beta, epsilon), q_min, q_max)
                verdict = bounds_verdict(q_min, q_max)
                if (verdict == bounds_undecided) cycle
-               call monodromy_trace(hill_model_t(kind, alpha, beta, epsilon), method_t(method_auto, &
+               call monodromy_trace(model, hill_point_t(alpha, beta, epsilon), method_t(method_auto, &
                                     tolerance=1.0e-12_wp), tr, error)
                if (allocated(error)) deallocate (error)
                bound = max(tr%error_estimate, 1.0e-12_wp)*max(1.0_wp, abs(tr%value))

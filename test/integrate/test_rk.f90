@@ -12,8 +12,7 @@ module test_rk
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t, err_integration, err_invalid_parameter
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, model_mathieu, hill_coefficient, &
-      sampling_average
+   use hillstab_hill_coefficient, only: sampling_average
    use hillstab_hill_transfer, only: scaled_matrix_t, trace_t, matrix_of, determinant
    use hillstab_integrate_monodromy, only: trace_segmented, monodromy_trace, method_t, method_rk
    use hillstab_integrate_rk
@@ -25,6 +24,10 @@ module test_rk
    use hillstab_pendulum_analysis, only: pendulum_watch_t
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_positive_inf, ieee_quiet_nan
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_coefficient
+   use hillstab_hill_model_elastic, only: elastic_model_t
+   use hillstab_hill_model_mathieu, only: mathieu_model_t
+   use hillstab_test_models, only: model_of_code
    implicit none
    private
    public :: collect_rk
@@ -82,7 +85,8 @@ module test_rk
 
    !> Two solutions (u, u', v, v') of x'' + q(τ) x = 0.
    type, extends(rk_system_t) :: hill_pair_t
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model => null()
+      type(hill_point_t) :: point
    contains
       procedure :: rhs => hill_pair
    end type hill_pair_t
@@ -279,7 +283,7 @@ contains
       real(wp), intent(in) :: t, y(:)
       real(wp), intent(out) :: dydt(:)
       real(wp) :: q
-      q = hill_coefficient(self%model, t)
+      q = hill_coefficient(self%model, self%point, t)
       dydt = [y(2), -q*y(1), y(4), -q*y(3)]
    end subroutine hill_pair
 
@@ -311,15 +315,17 @@ contains
 
    !> S = 2(u v' + u' v) of x'' + q(τ) x = 0 from the even/odd solutions on [0, 1]
    !> integrated in fixed-step mode (the half-period identity, independent of monodromy_rk).
-   real(wp) function fixed_step_trace(model, method, n_steps) result(s)
-      type(hill_model_t), intent(in) :: model
+   real(wp) function fixed_step_trace(model, point, method, n_steps) result(s)
+      class(hill_model_t), intent(in), target :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       integer, intent(in) :: method, n_steps
       real(wp) :: t, y(4)
       type(error_t), allocatable :: error
       type(hill_pair_t) :: pair
       t = 0.0_wp
       y = [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]
-      pair = hill_pair_t(model)
+      pair%model => model
+      pair%point = point
       call rk_integrate(pair, t, 1.0_wp, y, rk_options_t(method=method, fixed_steps=n_steps), &
                         error=error)
       s = 2.0_wp*(y(1)*y(4) + y(2)*y(3))
@@ -409,21 +415,25 @@ contains
    !> so β is chosen where the matching factor is near 1 (β = 10: cos ≈ 1; β = 30: sin ≈ 1).
    subroutine order_constant_hill(ctx)
       type(test_context_t), intent(inout) :: ctx
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model => null()
+      type(hill_point_t) :: point
       real(wp) :: exact
-      model = hill_model_t(model_elastic, 0.0_wp, 30.0_wp, 0.0_wp)
+      model => model_of_code(1)
+      point = hill_point_t(0.0_wp, 30.0_wp, 0.0_wp)
       exact = 2.0_wp*cos(2.0_wp*sqrt(30.0_wp))
-      call check_order(ctx, abs(fixed_step_trace(model, rk_dop853, 8) - exact), &
-         abs(fixed_step_trace(model, rk_dop853, 16) - exact), 8.0_wp, "dop853 alpha=0 beta=30 N=8,16")
-      call check(ctx, fixed_step_trace(model, rk_dop853, 200), exact, abs=1.0e-13_wp, message="dop853 N=200")
-      model = hill_model_t(model_elastic, 0.0_wp, 10.0_wp, 0.0_wp)
+      call check_order(ctx, abs(fixed_step_trace(model, point, rk_dop853, 8) - exact), &
+         abs(fixed_step_trace(model, point, rk_dop853, 16) - exact), 8.0_wp, "dop853 alpha=0 beta=30 N=8,16")
+      call check(ctx, fixed_step_trace(model, point, rk_dop853, 200), exact, abs=1.0e-13_wp, message="dop853 N=200")
+      model => model_of_code(1)
+      point = hill_point_t(0.0_wp, 10.0_wp, 0.0_wp)
       exact = 2.0_wp*cos(2.0_wp*sqrt(10.0_wp))
-      call check_order(ctx, abs(fixed_step_trace(model, rk_dopri5, 32) - exact), &
-         abs(fixed_step_trace(model, rk_dopri5, 64) - exact), 5.0_wp, "dopri5 alpha=0 beta=10 N=32,64")
+      call check_order(ctx, abs(fixed_step_trace(model, point, rk_dopri5, 32) - exact), &
+         abs(fixed_step_trace(model, point, rk_dopri5, 64) - exact), 5.0_wp, "dopri5 alpha=0 beta=10 N=32,64")
       ! β < 0: S = 2 cosh(2√|β|)
-      model = hill_model_t(model_elastic, 0.0_wp, -10.0_wp, 0.0_wp)
+      model => model_of_code(1)
+      point = hill_point_t(0.0_wp, -10.0_wp, 0.0_wp)
       exact = 2.0_wp*cosh(2.0_wp*sqrt(10.0_wp))
-      call check(ctx, fixed_step_trace(model, rk_dop853, 200), exact, rel=1.0e-13_wp, message="beta < 0")
+      call check(ctx, fixed_step_trace(model, point, rk_dop853, 200), exact, rel=1.0e-13_wp, message="beta < 0")
    end subroutine order_constant_hill
 
    !> Meissner: y'' + r s(t) y = 0, s = +1 on [0, 1), −1 on [1, 2), trace 2 cos√r cosh√r.
@@ -824,21 +834,24 @@ contains
       type(test_context_t), intent(inout) :: ctx
       real(wp) :: alphas(3) = [1.48_wp, 5.0_wp, 9.0_wp], betas(3) = [2.47_wp, -3.0_wp, 12.0_wp]
       real(wp) :: half(2, 2), full(2, 2), t, y(4)
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model => null()
+      type(hill_point_t) :: point
       type(scaled_matrix_t) :: m
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
       integer :: i, k
       type(hill_pair_t) :: pair
       do i = 1, size(alphas)
-         do k = model_elastic, model_mathieu
-            model = hill_model_t(k, alphas(i), betas(i), 0.0_wp)
-            call monodromy_rk(model, 1.0e-12_wp, m, stats, error)
+         do k = 1, 2   ! the elastic and the Mathieu model
+            model => model_of_code(k)
+            point = hill_point_t(alphas(i), betas(i), 0.0_wp)
+            call monodromy_rk(model, point, 1.0e-12_wp, m, stats, error)
             call check(ctx, .not. allocated(error), "monodromy_rk succeeds")
             half = matrix_of(m)
             t = 0.0_wp
             y = [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]
-            pair = hill_pair_t(model)
+            pair%model => model
+            pair%point = point
             call rk_integrate(pair, t, 2.0_wp, y, rk_options_t(rtol=1.0e-13_wp, atol=1.0e-13_wp), error=error)
             call check(ctx, .not. allocated(error), "full-period integration succeeds")
             full = reshape(y, [2, 2])
@@ -854,28 +867,30 @@ contains
       type(test_context_t), intent(inout) :: ctx
       real(wp) :: alphas(4) = [0.5_wp, 3.7_wp, 7.88_wp, 9.8_wp], betas(3) = [0.76_wp, 2.47_wp, 3.95_wp]
       real(wp) :: coarse, fine, reference, m4(2, 2), scale_s
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model => null()
+      type(hill_point_t) :: point
       type(trace_t) :: tr
       type(error_t), allocatable :: error
       integer :: i, j, method
       character(len=64) :: label
       do i = 1, size(alphas)
          do j = 1, size(betas)
-            model = hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp)
-            coarse = value_of(trace_segmented(model, 2**15, sampling_average))
-            fine = value_of(trace_segmented(model, 2**16, sampling_average))
+            model => model_of_code(1)
+            point = hill_point_t(alphas(i), betas(j), 0.0_wp)
+            coarse = value_of(trace_segmented(model, point, 2**15, sampling_average))
+            fine = value_of(trace_segmented(model, point, 2**16, sampling_average))
             reference = (4.0_wp*fine - coarse)/3.0_wp
             scale_s = max(1.0_wp, abs(reference))
             write (label, '(a,f5.2,a,f5.2)') "alpha=", alphas(i), " beta=", betas(j)
             do method = rk_dopri5, rk_dop853
-               call trace_rk(model, 1.0e-10_wp, tr, error, method=method)
+               call trace_rk(model, point, 1.0e-10_wp, tr, error, method=method)
                call check(ctx, .not. allocated(error), "trace_rk succeeds")
                ! the reference itself is good to ~1e-12 relative (difference to a 1e-15 run)
                call check(ctx, tr%value, reference, abs=1.0e-10_wp*scale_s, &
                   message=trim(label)//" vs segmented "//rk_method_name(method))
             end do
             if (alphas(i) < 9.0_wp) then
-               m4 = rk4_monodromy(model, 0.0_wp, 4000)
+               m4 = rk4_monodromy(model, point, 0.0_wp, 4000)
                call check(ctx, tr%value, m4(1, 1) + m4(2, 2), abs=1.0e-8_wp*scale_s, message=trim(label)//" vs rk4")
             end if
          end do
@@ -893,7 +908,7 @@ contains
       integer :: i, j
       do i = 1, size(alphas)
          do j = 1, size(betas)
-            call monodromy_rk(hill_model_t(model_elastic, alphas(i), betas(j), 0.0_wp), 1.0e-12_wp, m, stats, error)
+            call monodromy_rk(elastic_model_t(), hill_point_t(alphas(i), betas(j), 0.0_wp), 1.0e-12_wp, m, stats, error)
             call check(ctx, .not. allocated(error), "monodromy_rk succeeds")
             plain = matrix_of(m)
             ! the determinant of a matrix with entries ~E is known to ~E² · 1e-16
@@ -907,18 +922,20 @@ contains
    subroutine hard_cases(ctx)
       type(test_context_t), intent(inout) :: ctx
       real(wp) :: betas(3) = [-50.0_wp, 400.0_wp, -400.0_wp], coarse, fine, reference
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model => null()
+      type(hill_point_t) :: point
       type(trace_t) :: tr, segmented
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
       integer :: j
       do j = 1, size(betas)
-         model = hill_model_t(model_elastic, 9.8_wp, betas(j), 0.0_wp)
-         call trace_rk(model, 1.0e-10_wp, tr, error, stats)
+         model => model_of_code(1)
+         point = hill_point_t(9.8_wp, betas(j), 0.0_wp)
+         call trace_rk(model, point, 1.0e-10_wp, tr, error, stats)
          call check(ctx, .not. allocated(error), "trace_rk succeeds")
          call check(ctx, ieee_is_finite(tr%value) .and. ieee_is_finite(tr%log_abs) .and. .not. tr%overflow, "finite")
-         coarse = value_of(trace_segmented(model, 2**15, sampling_average))
-         fine = value_of(trace_segmented(model, 2**16, sampling_average))
+         coarse = value_of(trace_segmented(model, point, 2**15, sampling_average))
+         fine = value_of(trace_segmented(model, point, 2**16, sampling_average))
          reference = (4.0_wp*fine - coarse)/3.0_wp
          write (*, '(4x,a,f7.1,a,es22.14,a,es9.2,a,i0)') "alpha=9.8 beta=", betas(j), ": S = ", tr%value, &
             ", rel. diff to segmented ", abs(tr%value - reference)/max(1.0_wp, abs(reference)), &
@@ -926,10 +943,11 @@ contains
          call check(ctx, tr%value, reference, abs=1.0e-9_wp*max(1.0_wp, abs(reference)), message="vs segmented")
       end do
       ! S ~ e^2000: the pairs are rescaled on the way and the trace is flagged as overflowing
-      model = hill_model_t(model_elastic, 9.86_wp, -1.0e5_wp, 0.0_wp)
-      call trace_rk(model, 1.0e-8_wp, tr, error, stats)
+      model => model_of_code(1)
+      point = hill_point_t(9.86_wp, -1.0e5_wp, 0.0_wp)
+      call trace_rk(model, point, 1.0e-8_wp, tr, error, stats)
       call check(ctx, .not. allocated(error), "extreme case succeeds")
-      segmented = trace_segmented(model, 2**16, sampling_average)
+      segmented = trace_segmented(model, point, 2**16, sampling_average)
       write (*, '(4x,a,es12.5,a,es12.5,a,i0)') "alpha=9.86 beta=-1e5: ln S = ", tr%log_abs, " (segmented ", &
          segmented%log_abs, "), Q evaluations ", stats%n_evaluations
       call check(ctx, tr%overflow .and. ieee_is_finite(tr%log_abs), "overflow flagged, log finite")
@@ -940,17 +958,19 @@ contains
    subroutine dispatch_and_work(ctx)
       type(test_context_t), intent(inout) :: ctx
       real(wp) :: points(2, 5)
-      type(hill_model_t) :: model
+      class(hill_model_t), pointer :: model => null()
+      type(hill_point_t) :: point
       type(trace_t) :: tr, direct
       type(work_stats_t) :: stats
       type(error_t), allocatable :: error
       integer :: i
       points = reshape([1.48_wp, 2.47_wp, 3.7_wp, 2.47_wp, 7.88_wp, 3.95_wp, 9.8_wp, 2.47_wp, 9.8_wp, pi2/4], [2, 5])
       do i = 1, size(points, 2)
-         model = hill_model_t(model_elastic, points(1, i), points(2, i), 0.0_wp)
-         call monodromy_trace(model, method_t(method_rk, tolerance=1.0e-10_wp), tr, error)
+         model => model_of_code(1)
+         point = hill_point_t(points(1, i), points(2, i), 0.0_wp)
+         call monodromy_trace(model, point, method_t(method_rk, tolerance=1.0e-10_wp), tr, error)
          call check(ctx, .not. allocated(error), "method_rk available")
-         call trace_rk(model, 1.0e-10_wp, direct, error, stats)
+         call trace_rk(model, point, 1.0e-10_wp, direct, error, stats)
          call check(ctx, tr%value == direct%value, "dispatcher = trace_rk")
          call check(ctx, stats%n_evaluations > 0 .and. stats%n_steps > 0, "work counted")
          write (*, '(4x,a,f5.2,a,f5.2,a,es20.12,a,i0,a,i0,a,i0)') "alpha=", points(1, i), " beta=", points(2, i), &
@@ -958,15 +978,16 @@ contains
             ", rejected ", stats%n_rejected
       end do
       ! damping: the χ equation carries −ε²/4
-      model = hill_model_t(model_mathieu, 1.0_wp, 2.0_wp, 0.6_wp)
-      call trace_rk(model, 1.0e-10_wp, tr, error)
-      direct = trace_segmented(model, 2**15, sampling_average)
+      model => model_of_code(2)
+      point = hill_point_t(1.0_wp, 2.0_wp, 0.6_wp)
+      call trace_rk(model, point, 1.0e-10_wp, tr, error)
+      direct = trace_segmented(model, point, 2**15, sampling_average)
       call check(ctx, tr%value, direct%value, abs=1.0e-8_wp, message="damped mathieu vs segmented")
-      call trace_rk(hill_model_t(model_elastic, 10.0_wp, 1.0_wp, 0.0_wp), 1.0e-10_wp, tr, error)
+      call trace_rk(elastic_model_t(), hill_point_t(10.0_wp, 1.0_wp, 0.0_wp), 1.0e-10_wp, tr, error)
       call check(ctx, allocated(error), "alpha > pi**2 rejected")
-      call trace_rk(model, 0.0_wp, tr, error)
+      call trace_rk(model, point, 0.0_wp, tr, error)
       call check(ctx, allocated(error), "tolerance 0 rejected")
-      call trace_rk(model, 1.0e-10_wp, tr, error, method=9)
+      call trace_rk(model, point, 1.0e-10_wp, tr, error, method=9)
       call check(ctx, allocated(error), "unknown method rejected")
    end subroutine dispatch_and_work
 
@@ -991,7 +1012,8 @@ contains
       call compare(pendulum, 0.0_wp, pendulum%pendulum%period/8, pendulum_initial_state(pendulum%pendulum, 0.3_wp), &
          "pendulum (e) phi0=0.3")
       call compare(body, 0.0_wp, 0.01_wp, arenstorf_start, "arenstorf")
-      pair%model = hill_model_t(model_elastic, 7.88_wp, 3.95_wp, 0.0_wp)
+      pair%model => model_of_code(1)
+      pair%point = hill_point_t(7.88_wp, 3.95_wp, 0.0_wp)
       call compare(pair, 0.3_wp, 0.2_wp, [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], "hill pair alpha=7.88 beta=3.95")
    contains
       subroutine compare(system, t0, h, y0, label)

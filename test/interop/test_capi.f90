@@ -2,18 +2,19 @@
 module test_capi
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_null_char, c_ptr, c_f_pointer
    use hillstab_core_kinds, only: wp, pi2, version_string
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic, sampling_average
+   use hillstab_hill_coefficient, only: sampling_average
    use hillstab_hill_transfer, only: trace_t
    use hillstab_integrate_monodromy, only: trace_segmented, method_segments, method_formula
    use hillstab_hill_formulas, only: trace_two_segment_paper, trace_damped_paper
    use hillstab_interop_capi
    use hillstab_core_error, only: error_t, err_invalid_parameter, err_accuracy
-   use hillstab_hill_coefficient, only: check_model
    use hillstab_integrate_monodromy, only: method_auto
    use hillstab_interop_legacy, only: hstrace, hsfloq, hserrm
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
    !$ use omp_lib, only: omp_get_thread_num, omp_get_num_threads
    use hillstab_testing
+   use hillstab_hill_model, only: hill_point_t, check_point
+   use hillstab_hill_model_elastic, only: elastic_model_t
    implicit none
    private
    public :: collect_capi
@@ -63,7 +64,7 @@ contains
       real(c_double) :: s, log_abs, log_modulus(2), mu, q
       integer(c_int) :: overflow, stable, stable_paper, status
       type(trace_t) :: tr
-      tr = trace_segmented(hill_model_t(model_elastic, 3.7_wp, 2.47_wp, 0.0_wp), 64, sampling_average)
+      tr = trace_segmented(elastic_model_t(), hill_point_t(3.7_wp, 2.47_wp, 0.0_wp), 64, sampling_average)
       status = hillstab_c_trace(1_c_int, 3.7_c_double, 2.47_c_double, 0.0_c_double, int(method_segments, c_int), &
          64_c_int, int(sampling_average, c_int), 1.0e-10_c_double, s, log_abs, overflow)
       call check(ctx, status == 0, "status 0")
@@ -111,7 +112,7 @@ contains
    function fortran_message() result(text)
       character(len=:), allocatable :: text
       type(error_t), allocatable :: error
-      call check_model(hill_model_t(model_elastic, 10.0_wp, 2.47_wp, 0.0_wp), error)
+      call check_point(elastic_model_t(), hill_point_t(10.0_wp, 2.47_wp, 0.0_wp), error)
       text = error%message
    end function fortran_message
 

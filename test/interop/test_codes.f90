@@ -10,10 +10,11 @@ module test_codes
    use hillstab_core_text, only: lower_case
    use hillstab_core_kinds, only: version_string
    use hillstab_interop_capi, only: version_numbers
-   use hillstab_hill_models, only: model_count, model_name, model_from_name
    use hillstab_hill_coefficient, only: sampling_count, sampling_name, sampling_from_name
    use hillstab_integrate_monodromy, only: method_table, method_name, method_from_name
    use hillstab_testing
+   use hillstab_hill_models, only: model_count, model_names
+   use hillstab_core_text, only: name_position
    implicit none
    private
    public :: collect_codes
@@ -51,11 +52,18 @@ contains
       close (unit)
    end function file_text
 
+   !> The code of a model name in the model registry (−1 when it has no such model).
+   integer function model_code_of(name) result(code)
+      character(len=*), intent(in) :: name
+      code = name_position(name, model_names)
+      if (code == 0) code = -1
+   end function model_code_of
+
    !> The code of a name in one of the three tables (−1 when the table has no such name).
    integer function table_code(table, name) result(code)
       character(len=*), intent(in) :: table, name
       select case (table)
-      case ("model"); code = model_from_name(name)
+      case ("model"); code = model_code_of(name)
       case ("method"); code = method_from_name(name)
       case default; code = sampling_from_name(name)
       end select
@@ -101,7 +109,7 @@ contains
          case ("model")
             call check(ctx, n_found == model_count .and. all(seen(1:model_count)), "every model in the C enum")
             do k = 1, model_count
-               call check(ctx, index(text, prefix//upper(model_name(k))//" =") > 0, prefix//upper(model_name(k)))
+               call check(ctx, index(text, prefix//upper(trim(model_names(k)))//" =") > 0, prefix//upper(trim(model_names(k))))
             end do
          case ("method")
             call check(ctx, n_found == size(method_table) .and. &
@@ -145,8 +153,8 @@ contains
                   "' names method code "//text(i:i))
                methods(code) = .true.
             end if
-            if (model_from_name(word) >= 0) then
-               call check(ctx, model_from_name(word) == code, trim(legacy_paths(f))//": '"//text(i:j - 1)// &
+            if (model_code_of(word) >= 0) then
+               call check(ctx, model_code_of(word) == code, trim(legacy_paths(f))//": '"//text(i:j - 1)// &
                   "' names model code "//text(i:i))
                models(code) = .true.
             end if
@@ -160,7 +168,7 @@ contains
             call check(ctx, methods(k), trim(legacy_paths(f))//" documents method "//method_name(k))
          end do
          do k = 1, model_count
-            call check(ctx, models(k), trim(legacy_paths(f))//" documents model "//model_name(k))
+            call check(ctx, models(k), trim(legacy_paths(f))//" documents model "//trim(model_names(k)))
          end do
          do k = 1, sampling_count
             call check(ctx, samplings(k), trim(legacy_paths(f))//" documents sampling "//sampling_name(k))

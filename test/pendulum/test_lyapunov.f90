@@ -10,7 +10,6 @@
 module test_lyapunov
    use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t, err_invalid_parameter
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
    use hillstab_integrate_monodromy, only: monodromy_trace, method_t, method_auto
@@ -21,6 +20,8 @@ module test_lyapunov
    use hillstab_testing
    use hillstab_test_pendulum, only: pendulum_at
    use hillstab_pendulum_chaos, only: chaos_t, chaos_options_t, chaos_indicators
+   use hillstab_hill_model, only: hill_point_t
+   use hillstab_hill_model_elastic, only: elastic_model_t
    implicit none
    private
    public :: collect_lyapunov
@@ -49,7 +50,7 @@ contains
       type(trace_t) :: tr
       type(floquet_t) :: f
       type(error_t), allocatable :: error
-      call monodromy_trace(hill_model_t(model_elastic, alpha, beta, epsilon), method_t(method_auto, tolerance=1.0e-13_wp), &
+      call monodromy_trace(elastic_model_t(), hill_point_t(alpha, beta, epsilon), method_t(method_auto, tolerance=1.0e-13_wp), &
          tr, error)
       if (allocated(error)) error stop "test_lyapunov: core failed"
       f = floquet_from_trace(tr, epsilon)

@@ -7,7 +7,6 @@ module test_pendulum
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic
    use hillstab_hill_transfer, only: trace_t
    use hillstab_integrate_monodromy, only: monodromy_trace, method_t, method_gsl
    use hillstab_integrate_rk, only: rk_options_t, rk_integrate, rk_dop853, rk_step_t
@@ -16,6 +15,8 @@ module test_pendulum
    use hillstab_testing
    use hillstab_test_pendulum, only: pendulum_at
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use hillstab_hill_model, only: hill_point_t
+   use hillstab_hill_model_elastic, only: elastic_model_t
    implicit none
    private
    public :: collect_pendulum
@@ -259,7 +260,7 @@ contains
          p = pendulum_at(points(1, i), points(2, i), 0.0_wp)
          call pendulum_bounce_monodromy(p, 1.0e-13_wp, m, stats, error)
          call check(ctx, .not. allocated(error), "monodromy succeeds")
-         call monodromy_trace(hill_model_t(model_elastic, p%alpha, p%beta, 0.0_wp), &
+         call monodromy_trace(elastic_model_t(), hill_point_t(p%alpha, p%beta, 0.0_wp), &
                               method_t(method_gsl, tolerance=1.0e-13_wp), core, error)
          call check(ctx, .not. allocated(error), "core trace succeeds")
          s_pendulum = m(px, px) + m(pvx, pvx)

@@ -7,7 +7,6 @@ module test_pendulum_analysis
    use hillstab_core_kinds, only: wp, pi2
    use hillstab_core_error, only: error_t
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_from_trace, largest_multiplier_modulus
    use hillstab_integrate_monodromy, only: monodromy_trace, method_t, method_gsl
@@ -15,6 +14,8 @@ module test_pendulum_analysis
    use hillstab_pendulum_analysis
    use hillstab_testing
    use hillstab_test_pendulum, only: pendulum_at
+   use hillstab_hill_model, only: hill_point_t
+   use hillstab_hill_model_elastic, only: elastic_model_t
    implicit none
    private
    public :: collect_pendulum_analysis
@@ -37,7 +38,7 @@ contains
       real(wp), intent(in) :: alpha, beta, epsilon
       type(trace_t) :: tr
       type(error_t), allocatable :: error
-      call monodromy_trace(hill_model_t(model_elastic, alpha, beta, epsilon), method_t(method_gsl, &
+      call monodromy_trace(elastic_model_t(), hill_point_t(alpha, beta, epsilon), method_t(method_gsl, &
                            tolerance=1.0e-13_wp), tr, error)
       lambda = largest_multiplier_modulus(floquet_from_trace(tr, epsilon))
    end function core_lambda
@@ -79,7 +80,7 @@ contains
          call bounce_multipliers(pendulum_at(points(1, i), points(2, i), 0.0_wp), 1.0e-13_wp, mult, stats, error)
          call check(ctx, .not. allocated(error), trim(label)//": multipliers computed")
          if (allocated(error)) cycle
-         call monodromy_trace(hill_model_t(model_elastic, points(1, i), points(2, i), 0.0_wp), &
+         call monodromy_trace(elastic_model_t(), hill_point_t(points(1, i), points(2, i), 0.0_wp), &
                               method_t(method_gsl, tolerance=1.0e-13_wp), core, error)
          write (*, '(4x,a,a,es22.14,a,es22.14,a,2es10.2)') trim(label), ": lambda1 + lambda2 = ", mult%swing_sum, &
             ", core S = ", core%value, ", |radial - 1| = ", abs(mult%radial - 1.0_wp)

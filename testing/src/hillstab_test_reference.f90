@@ -3,8 +3,8 @@
 !> code with the library's transfer matrices, so it is an independent check.
 module hillstab_test_reference
    use hillstab_core_kinds, only: wp
-   use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient
    use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_coefficient
    implicit none
    private
    public :: rk4_monodromy, value_of
@@ -17,15 +17,16 @@ contains
       value_of = tr%value
    end function value_of
 
-   !> Monodromy over [0, 2] with `n_steps` RK4 steps; `drag` is the ε of the x' term.
-   function rk4_monodromy(model, drag, n_steps) result(m)
-      type(hill_model_t), intent(in) :: model
+   !> Monodromy over one period [0, P] with `n_steps` RK4 steps; `drag` is the ε of the x' term.
+   function rk4_monodromy(model, point, drag, n_steps) result(m)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       real(wp), intent(in) :: drag
       integer, intent(in) :: n_steps
       real(wp) :: m(2, 2)
       real(wp) :: h, t, k1(2, 2), k2(2, 2), k3(2, 2), k4(2, 2)
       integer :: i
-      h = 2.0_wp/n_steps
+      h = model%period()/n_steps
       m = reshape([1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], [2, 2])
       do i = 0, n_steps - 1
          t = i*h
@@ -39,7 +40,7 @@ contains
       function rhs(tau, y) result(dy)
          real(wp), intent(in) :: tau, y(2, 2)
          real(wp) :: dy(2, 2), q
-         q = hill_coefficient(model, tau)
+         q = hill_coefficient(model, point, tau)
          dy(1, :) = y(2, :)
          dy(2, :) = -q*y(1, :) - drag*y(2, :)
       end function rhs

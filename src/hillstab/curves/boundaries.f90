@@ -26,7 +26,7 @@ module hillstab_curves_boundaries
    use hillstab_core_kinds, only: wp, pi2
    use hillstab_core_text, only: real_text, integer_text
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
-   use hillstab_hill_models, only: hill_model_t
+   use hillstab_hill_model, only: hill_model_t, hill_point_t
    use hillstab_hill_transfer, only: trace_t
    use hillstab_integrate_monodromy, only: method_t, method_auto, monodromy_trace
    use hillstab_hill_mathieu, only: mathieu_witness, gsl_witness_max_q
@@ -86,14 +86,14 @@ module hillstab_curves_boundaries
 contains
 
    !> S by method auto; `limited` when only the round-off level could be reached.
-   subroutine auto_trace(kind, alpha, beta, tolerance, s, limited, error)
-      integer, intent(in) :: kind
+   subroutine auto_trace(model, alpha, beta, tolerance, s, limited, error)
+      class(hill_model_t), intent(in) :: model  !! the model
       real(wp), intent(in) :: alpha, beta, tolerance
       real(wp), intent(out) :: s
       logical, intent(inout) :: limited
       type(error_t), allocatable, intent(out) :: error
       type(trace_t) :: tr
-      call monodromy_trace(hill_model_t(kind, alpha, beta, 0.0_wp), method_t(method_auto, tolerance=tolerance), &
+      call monodromy_trace(model, hill_point_t(alpha, beta, 0.0_wp), method_t(method_auto, tolerance=tolerance), &
                            tr, error)
       s = tr%value
       if (allocated(error)) then
@@ -107,15 +107,15 @@ contains
    end subroutine auto_trace
 
    !> Check a boundary independently: S(α, β) = trace_sign by method auto.
-   subroutine verify_boundary(kind, alpha, beta, trace_sign, tolerance, check, error)
-      integer, intent(in) :: kind           !! a model constant (hillstab_hill_models)
+   subroutine verify_boundary(model, alpha, beta, trace_sign, tolerance, check, error)
+      class(hill_model_t), intent(in) :: model           !! the model
       real(wp), intent(in) :: alpha, beta   !! the boundary point
       integer, intent(in) :: trace_sign     !! +2 or −2
       real(wp), intent(in) :: tolerance     !! the tolerance the boundary was computed to
       type(boundary_check_t), intent(out) :: check  !! S by auto at the point and its distance from trace_sign
       type(error_t), allocatable, intent(out) :: error  !! auto failed at the point; unallocated on success
       real(wp) :: residual, allowance, h, s_plus, s_minus
-      call auto_trace(kind, alpha, beta, tolerance, check%trace, check%roundoff, error)
+      call auto_trace(model, alpha, beta, tolerance, check%trace, check%roundoff, error)
       if (allocated(error)) return
       residual = abs(check%trace - trace_sign)
       allowance = 2.0_wp*tolerance*max(1.0_wp, abs(check%trace))
@@ -125,9 +125,9 @@ contains
          return
       end if
       h = 1.0e-5_wp*max(1.0_wp, abs(beta))
-      call auto_trace(kind, alpha, beta + h, tolerance, s_plus, check%roundoff, error)
+      call auto_trace(model, alpha, beta + h, tolerance, s_plus, check%roundoff, error)
       if (allocated(error)) return
-      call auto_trace(kind, alpha, beta - h, tolerance, s_minus, check%roundoff, error)
+      call auto_trace(model, alpha, beta - h, tolerance, s_minus, check%roundoff, error)
       if (allocated(error)) return
       check%slope = (s_plus - s_minus)/(2.0_wp*h)
       if (check%slope == 0.0_wp) then
@@ -139,15 +139,15 @@ contains
    end subroutine verify_boundary
 
    !> S_method(α, β) − target, finite (an overflowing S keeps its sign, clamped).
-   subroutine shifted_trace(kind, alpha, beta, method, target, value, error)
-      integer, intent(in) :: kind
+   subroutine shifted_trace(model, alpha, beta, method, target, value, error)
+      class(hill_model_t), intent(in) :: model  !! the model
       real(wp), intent(in) :: alpha, beta
       type(method_t), intent(in) :: method
       real(wp), intent(in) :: target
       real(wp), intent(out) :: value
       type(error_t), allocatable, intent(out) :: error
       type(trace_t) :: tr
-      call monodromy_trace(hill_model_t(kind, alpha, beta, 0.0_wp), method, tr, error)
+      call monodromy_trace(model, hill_point_t(alpha, beta, 0.0_wp), method, tr, error)
       if (allocated(error)) then
          if (error%code /= err_accuracy) return
          deallocate (error)
@@ -156,8 +156,8 @@ contains
    end subroutine shifted_trace
 
    !> Brent's method for S_method(β) = target on [a, b] with a sign change.
-   subroutine brent_root(kind, alpha, method, target, a_in, b_in, fa_in, fb_in, xtol, root, residual, error)
-      integer, intent(in) :: kind
+   subroutine brent_root(model, alpha, method, target, a_in, b_in, fa_in, fb_in, xtol, root, residual, error)
+      class(hill_model_t), intent(in) :: model  !! the model
       real(wp), intent(in) :: alpha, target, a_in, b_in, fa_in, fb_in, xtol
       type(method_t), intent(in) :: method
       real(wp), intent(out) :: root, residual
@@ -205,7 +205,7 @@ contains
          else
             b = b + sign(tol1, xm)
          end if
-         call shifted_trace(kind, alpha, b, method, target, fb, error)
+         call shifted_trace(model, alpha, b, method, target, fb, error)
          if (allocated(error)) return
       end do
       root = b
@@ -214,8 +214,8 @@ contains
 
    !> The roots of S_method(β) = ±2 in [beta_min, beta_max] for an approximate method
    !> (formula or segments), with their orders, ascending in β.
-   subroutine approximate_boundaries(kind, alpha, method, beta_min, beta_max, n_samples, tolerance, roots, error)
-      integer, intent(in) :: kind            !! a model constant (hillstab_hill_models)
+   subroutine approximate_boundaries(model, alpha, method, beta_min, beta_max, n_samples, tolerance, roots, error)
+      class(hill_model_t), intent(in) :: model            !! the model
       real(wp), intent(in) :: alpha          !! α (ν)
       type(method_t), intent(in) :: method   !! method_formula or method_segments
       real(wp), intent(in) :: beta_min, beta_max  !! the beta window searched
@@ -240,7 +240,7 @@ contains
       targets = [2.0_wp, -2.0_wp]
       allocate (f(0:n - 1, 2))
       do i = 0, n - 1
-         call shifted_trace(kind, alpha, sample(i), method, 0.0_wp, f(i, 1), error)
+         call shifted_trace(model, alpha, sample(i), method, 0.0_wp, f(i, 1), error)
          if (allocated(error)) return
          f(i, 2) = f(i, 1) - targets(2)
          f(i, 1) = f(i, 1) - targets(1)
@@ -252,7 +252,7 @@ contains
             if (f(i, t) == 0.0_wp) then
                root = b0; residual = 0.0_wp
             else if (f(i, t)*f(i + 1, t) < 0.0_wp) then
-               call brent_root(kind, alpha, method, targets(t), b0, b1, f(i, t), f(i + 1, t), &
+               call brent_root(model, alpha, method, targets(t), b0, b1, f(i, t), f(i + 1, t), &
                                tolerance*max(1.0_wp, abs(b0), abs(b1)), root, residual, error)
                if (allocated(error)) return
             else
@@ -283,8 +283,8 @@ contains
    !> The unstable β intervals inside [lo, hi] for a method, from its sorted roots of
    !> |S| = 2 in [lo, hi]: between consecutive roots (and the ends) the verdict is
    !> that of S_method at the midpoint.
-   subroutine unstable_intervals_from_roots(kind, alpha, method, lo, hi, roots, intervals, error)
-      integer, intent(in) :: kind  !! a model constant (hillstab_hill_models)
+   subroutine unstable_intervals_from_roots(model, alpha, method, lo, hi, roots, intervals, error)
+      class(hill_model_t), intent(in) :: model  !! the model
       real(wp), intent(in) :: alpha, lo, hi  !! alpha (nu); the beta window [lo, hi]
       type(method_t), intent(in) :: method  !! the method whose verdicts are used
       real(wp), intent(in) :: roots(:)   !! ascending, inside [lo, hi]
@@ -297,7 +297,7 @@ contains
       cuts = [lo, roots, hi]
       do i = 1, size(cuts) - 1
          if (cuts(i + 1) <= cuts(i)) cycle
-         call shifted_trace(kind, alpha, 0.5_wp*(cuts(i) + cuts(i + 1)), method, 0.0_wp, s, error)
+         call shifted_trace(model, alpha, 0.5_wp*(cuts(i) + cuts(i + 1)), method, 0.0_wp, s, error)
          if (allocated(error)) return
          if (abs(s) > 2.0_wp) intervals = reshape([intervals, cuts(i), cuts(i + 1)], [2, size(intervals, 2) + 1])
       end do
@@ -331,8 +331,8 @@ contains
    !> tolerance·max(1, α), or until β_curve − β is within the curves' own accuracy
    !> tolerance·max(1, β). Zero-width tongues (both edges coincide: S touches ±2, the
    !> stability does not change) are skipped. Ascending in α.
-   subroutine alpha_crossings(kind, beta, alpha_end, tolerance, crossings, error)
-      integer, intent(in) :: kind           !! a model constant (hillstab_hill_models)
+   subroutine alpha_crossings(model, beta, alpha_end, tolerance, crossings, error)
+      class(hill_model_t), intent(in) :: model           !! the model
       real(wp), intent(in) :: beta          !! the fixed β, inside (0, π²)
       real(wp), intent(in) :: alpha_end     !! the end of the search, < π²
       real(wp), intent(in) :: tolerance     !! target accuracy of α and of the curves' β
@@ -350,7 +350,7 @@ contains
       allocate (samples(n))
       !$omp parallel do schedule(dynamic) default(shared) private(j)
       do j = n, 1, -1
-         call hill_boundaries(kind, alphas(j), -1.0_wp, pi2 + 1.0_wp, tolerance, samples(j)%curves, samples(j)%error)
+         call hill_boundaries(model, alphas(j), -1.0_wp, pi2 + 1.0_wp, tolerance, samples(j)%curves, samples(j)%error)
       end do
       !$omp end parallel do
       do j = 1, n
@@ -375,7 +375,7 @@ contains
                   crossing = alpha_crossing_t(alphas(j + 1), curve%trace_sign, curve%order, curve%parity, 0.0_wp, &
                                               curve%modes)
                else if ((f0 < 0.0_wp .and. f1 > 0.0_wp) .or. (f0 > 0.0_wp .and. f1 < 0.0_wp)) then
-                  call refine_crossing(kind, beta, curve, alphas(j), alphas(j + 1), f0, f1, tolerance, crossing, error)
+                  call refine_crossing(model, beta, curve, alphas(j), alphas(j + 1), f0, f1, tolerance, crossing, error)
                   if (allocated(error)) return
                else
                   cycle
@@ -421,8 +421,8 @@ contains
    !> The crossing of one curve with β inside [lo, hi] (f = β_curve − β of opposite signs
    !> at the ends): Illinois regula falsi, a bisection after two steps that do not halve
    !> the bracket.
-   subroutine refine_crossing(kind, beta, curve, lo_in, hi_in, f_lo_in, f_hi_in, tolerance, crossing, error)
-      integer, intent(in) :: kind
+   subroutine refine_crossing(model, beta, curve, lo_in, hi_in, f_lo_in, f_hi_in, tolerance, crossing, error)
+      class(hill_model_t), intent(in) :: model  !! the model
       real(wp), intent(in) :: beta, lo_in, hi_in, f_lo_in, f_hi_in, tolerance
       type(hill_boundary_t), intent(in) :: curve
       type(alpha_crossing_t), intent(out) :: crossing
@@ -446,7 +446,7 @@ contains
             x = (lo*f_hi - hi*f_lo)/(f_hi - f_lo)
             if (.not. (x > lo .and. x < hi)) x = 0.5_wp*(lo + hi)
          end if
-         call hill_boundaries(kind, x, -1.0_wp, pi2 + 1.0_wp, tolerance, curves, error)
+         call hill_boundaries(model, x, -1.0_wp, pi2 + 1.0_wp, tolerance, curves, error)
          if (allocated(error)) return
          call matching_beta(curves, curve, beta_x, found)
          if (.not. found) then

@@ -52,14 +52,13 @@
 !>```fortran
 !> type(hill_boundary_t), allocatable :: curves(:)
 !> type(error_t), allocatable :: error
-!> call hill_boundaries(model_elastic, 5.0_wp, -2.0_wp, 40.0_wp, 1.0e-11_wp, curves, error)
+!> call hill_boundaries(elastic_model_t(), 5.0_wp, -2.0_wp, 40.0_wp, 1.0e-11_wp, curves, error)
 !> print *, curves%beta
 !>```
 module hillstab_curves_hill_method
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_singular, err_accuracy
-   use hillstab_hill_models, only: check_model_alpha, model_hill_k, model_hill_coupling, model_fourier_decay, model_elastic
-   use hillstab_hill_model_elastic, only: one_minus_alpha_over_pi2
+   use hillstab_hill_model, only: hill_model_t, check_alpha, hill_form_pencil
    use hillstab_ffi_lapack, only: dsbgv, dgeev
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
@@ -149,11 +148,11 @@ contains
    !> for every α — the two 2-periodic solutions coexist — and the antiperiodic ones only at
    !> α = 0 (their widths are measured nonzero, falling geometrically with the order). For
    !> the Mathieu model c = ν: no tongue is closed for ν ≠ 0 (Ince's theorem), all at ν = 0.
-   elemental logical function structural_coexistence(kind, alpha, trace_sign) result(closed)
-      integer, intent(in) :: kind        !! a model constant
+   elemental logical function structural_coexistence(model, alpha, trace_sign) result(closed)
+      class(hill_model_t), intent(in) :: model        !! the model
       real(wp), intent(in) :: alpha      !! α (ν for the Mathieu model)
       integer, intent(in) :: trace_sign  !! +2 periodic, −2 antiperiodic
-      closed = model_hill_coupling(kind, alpha, merge(1.0_wp, 0.25_wp, trace_sign == 2)) == 0.0_wp
+      closed = model%hill_coupling(alpha, merge(1.0_wp, 0.25_wp, trace_sign == 2)) == 0.0_wp
    end function structural_coexistence
 
    !> Rounding error bound of an eigenvalue β of the inverted pencil P z = μ (A − σP) z,
@@ -169,16 +168,13 @@ contains
    !> 6.9e-12 (against 50-digit references, `data/reference/curve_set.dat`) while the change
    !> between truncations is 1e-14. With the factor 1 in place of √n the errors exceeded it
    !> by up to 2.75× at α = 2 … 8 (a dozen ulps of β, 23–48 modes).
-   pure real(wp) function rounding_bound(kind, alpha, beta_lowest, beta, modes) result(bound)
-      integer, intent(in) :: kind, modes
+   pure real(wp) function rounding_bound(model, alpha, beta_lowest, beta, modes) result(bound)
+      class(hill_model_t), intent(in) :: model  !! the model
+      integer, intent(in) :: modes
       real(wp), intent(in) :: alpha, beta_lowest, beta
       real(wp) :: k, one_minus_k, sigma
-      k = model_hill_k(kind, alpha)
-      if (kind == model_elastic) then
-         one_minus_k = one_minus_alpha_over_pi2(alpha)
-      else
-         one_minus_k = 1.0_wp - k
-      end if
+      k = model%hill_k(alpha)
+      one_minus_k = model%hill_one_minus_k(alpha)
       sigma = -abs(alpha) - 1.0_wp
       bound = sqrt(real(modes, wp))*epsilon(1.0_wp)*(1.0_wp + k)*(beta - sigma)**2 &
               /(max(beta_lowest - sigma, tiny(1.0_wp))*one_minus_k) + epsilon(1.0_wp)*abs(beta)
@@ -196,13 +192,13 @@ contains
 
    !> Number of modes to start from: enough for the eigenfunctions up to β_top and
    !> for the geometric decay r^{2n} of the Ritz error to reach the tolerance.
-   pure integer function hill_initial_modes(kind, alpha, beta_top, tolerance) result(n)
-      integer, intent(in) :: kind  !! model kind (a model constant of hillstab_hill_models)
+   pure integer function hill_initial_modes(model, alpha, beta_top, tolerance) result(n)
+      class(hill_model_t), intent(in) :: model  !! the model
       !> alpha; highest beta wanted; target error relative to max(1, |beta|)
       real(wp), intent(in) :: alpha, beta_top, tolerance
       real(wp) :: r, oscillation
       oscillation = sqrt(max(beta_top, 0.0_wp) + abs(alpha))/pi
-      r = model_fourier_decay(kind, alpha)
+      r = model%fourier_decay(alpha)
       if (r > 0.0_wp) then
          n = 8 + nint(oscillation) + ceiling(log(max(tolerance, 1.0e-16_wp))/(2.0_wp*log(r)))
       else
@@ -222,20 +218,21 @@ contains
    end function mode_t
 
    !> Entry (i, j) of A = P D P + α C P in the exponential basis e^{iκ_jτ}.
-   pure real(wp) function a_entry(kind, alpha, k, block, i, j) result(a)
-      integer, intent(in) :: kind, block, i, j
+   pure real(wp) function a_entry(model, alpha, k, block, i, j) result(a)
+      class(hill_model_t), intent(in) :: model  !! the model
+      integer, intent(in) :: block, i, j
       real(wp), intent(in) :: alpha, k
       integer :: lo
       lo = min(i, j)
       select case (abs(i - j))
       case (0)
-         a = pi2*mode_t(block, i) - 0.25_wp*k*(model_hill_coupling(kind, alpha, mode_t(block, i - 1)) + &
-                                               model_hill_coupling(kind, alpha, mode_t(block, i + 1)))
+         a = pi2*mode_t(block, i) - 0.25_wp*k*(model%hill_coupling(alpha, mode_t(block, i - 1)) + &
+                                               model%hill_coupling(alpha, mode_t(block, i + 1)))
       case (1)
-         a = 0.5_wp*(model_hill_coupling(kind, alpha, mode_t(block, lo)) &
-                     + model_hill_coupling(kind, alpha, mode_t(block, lo + 1)) - alpha)
+         a = 0.5_wp*(model%hill_coupling(alpha, mode_t(block, lo)) &
+                     + model%hill_coupling(alpha, mode_t(block, lo + 1)) - alpha)
       case (2)
-         a = -0.25_wp*k*model_hill_coupling(kind, alpha, mode_t(block, lo + 1))
+         a = -0.25_wp*k*model%hill_coupling(alpha, mode_t(block, lo + 1))
       case default
          a = 0.0_wp
       end select
@@ -253,12 +250,13 @@ contains
    end function p_entry
 
    !> Entry (i, j) of the nonsymmetric L = D + C·diag(coupling)/… : L_ij = κ_i² δ_ij + ½(α − kκ_j²) for |i − j| = 1.
-   pure real(wp) function l_entry(kind, alpha, block, i, j) result(l)
-      integer, intent(in) :: kind, block, i, j
+   pure real(wp) function l_entry(model, alpha, block, i, j) result(l)
+      class(hill_model_t), intent(in) :: model  !! the model
+      integer, intent(in) :: block, i, j
       real(wp), intent(in) :: alpha
       select case (abs(i - j))
       case (0); l = pi2*mode_t(block, i)
-      case (1); l = 0.5_wp*model_hill_coupling(kind, alpha, mode_t(block, j))
+      case (1); l = 0.5_wp*model%hill_coupling(alpha, mode_t(block, j))
       case default; l = 0.0_wp
       end select
    end function l_entry
@@ -282,8 +280,9 @@ contains
 
    !> ⟨φ_r, M φ_s⟩ for the orthonormal symmetric basis φ_r = (e_i + sign e_mirror)/√2
    !> (φ = e_0 for the periodic even constant), M given by `which`.
-   pure real(wp) function folded(which, kind, alpha, k, block, r, s) result(value)
-      integer, intent(in) :: which, kind, block, r, s
+   pure real(wp) function folded(which, model, alpha, k, block, r, s) result(value)
+      class(hill_model_t), intent(in) :: model  !! the model
+      integer, intent(in) :: which, block, r, s
       real(wp), intent(in) :: alpha, k
       integer :: i, ip, j, jp
       real(wp) :: si, sj, wi, wj
@@ -310,16 +309,16 @@ contains
       pure real(wp) function element(a, b)
          integer, intent(in) :: a, b
          select case (which)
-         case (1); element = a_entry(kind, alpha, k, block, a, b)
+         case (1); element = a_entry(model, alpha, k, block, a, b)
          case (2); element = p_entry(k, a, b)
-         case default; element = l_entry(kind, alpha, block, a, b)
+         case default; element = l_entry(model, alpha, block, a, b)
          end select
       end function element
    end function folded
 
    !> All n eigenvalues, ascending, of the n-mode truncation of one block.
-   subroutine hill_block_eigenvalues(kind, alpha, block, n, values, error, formulation)
-      integer, intent(in) :: kind          !! a model constant (hillstab_hill_models)
+   subroutine hill_block_eigenvalues(model, alpha, block, n, values, error, formulation)
+      class(hill_model_t), intent(in) :: model          !! the model
       real(wp), intent(in) :: alpha        !! α (elastic, 0 ≤ α < π²) or ν (Mathieu)
       integer, intent(in) :: block         !! block_* constant
       integer, intent(in) :: n             !! number of modes
@@ -333,13 +332,13 @@ contains
       form = formulation_inverted_pencil
       if (present(formulation)) form = formulation
       allocate (values(0))
-      call check_parameters(kind, alpha, error)
+      call check_parameters(model, alpha, error)
       if (allocated(error)) return
       if (block < block_periodic_even .or. block > block_antiperiodic_odd .or. n < 1) then
          call set_error(error, err_invalid_parameter, "Hill's method: unknown block or no modes")
          return
       end if
-      k = model_hill_k(kind, alpha)
+      k = model%hill_k(alpha)
       sigma = -abs(alpha) - 1.0_wp
       select case (form)
       case (formulation_inverted_pencil, formulation_pencil)
@@ -349,11 +348,11 @@ contains
          do r = 1, n
             do d = 0, min(2, r - 1)
                if (form == formulation_inverted_pencil) then
-                  ab(3 - d, r) = folded(2, kind, alpha, k, block, r - d, r)
-                  bb(3 - d, r) = folded(1, kind, alpha, k, block, r - d, r) - sigma*folded(2, kind, alpha, k, block, r - d, r)
+                  ab(3 - d, r) = folded(2, model, alpha, k, block, r - d, r)
+                  bb(3 - d, r) = folded(1, model, alpha, k, block, r - d, r) - sigma*folded(2, model, alpha, k, block, r - d, r)
                else
-                  ab(3 - d, r) = folded(1, kind, alpha, k, block, r - d, r)
-                  bb(3 - d, r) = folded(2, kind, alpha, k, block, r - d, r)
+                  ab(3 - d, r) = folded(1, model, alpha, k, block, r - d, r)
+                  bb(3 - d, r) = folded(2, model, alpha, k, block, r - d, r)
                end if
             end do
          end do
@@ -377,7 +376,7 @@ contains
          h = 0.0_wp
          do r = 1, n
             do d = max(1, r - 1), min(n, r + 1)
-               h(r, d) = folded(3, kind, alpha, k, block, r, d)
+               h(r, d) = folded(3, model, alpha, k, block, r, d)
             end do
          end do
          lwork = -1
@@ -400,15 +399,19 @@ contains
       end if
    end subroutine hill_block_eigenvalues
 
-   subroutine check_parameters(kind, alpha, error)
-      integer, intent(in) :: kind
+   subroutine check_parameters(model, alpha, error)
+      class(hill_model_t), intent(in) :: model  !! the model
       real(wp), intent(in) :: alpha
       type(error_t), allocatable, intent(out) :: error
       if (.not. ieee_is_finite(alpha)) then
          call set_error(error, err_invalid_parameter, "Hill's method: alpha must be finite")
          return
       end if
-      call check_model_alpha(kind, alpha, error)
+      if (model%hill_form() /= hill_form_pencil) then
+         call set_error(error, err_invalid_parameter, "Hill's method does not apply to the "//model%name()//" model")
+         return
+      end if
+      call check_alpha(model, alpha, error)
       if (allocated(error)) error%message = "Hill's method: "//error%message
    end subroutine check_parameters
 
@@ -433,8 +436,8 @@ contains
    !> the truncation to `tolerance`·max(1, |β|), ordered by β; with the coexistence
    !> of the two curves of each order decided (even when the partner lies outside).
    !> (The four blocks by `hill_block_values`, joined by `hill_curves`.)
-   subroutine hill_boundaries(kind, alpha, beta_min, beta_max, tolerance, curves, error, modes, formulation)
-      integer, intent(in) :: kind          !! a model constant (hillstab_hill_models)
+   subroutine hill_boundaries(model, alpha, beta_min, beta_max, tolerance, curves, error, modes, formulation)
+      class(hill_model_t), intent(in) :: model          !! the model
       real(wp), intent(in) :: alpha        !! α (ν for the Mathieu model)
       real(wp), intent(in) :: beta_min, beta_max  !! the β window
       real(wp), intent(in) :: tolerance    !! convergence target on β, relative to max(1, |β|)
@@ -447,17 +450,17 @@ contains
       integer :: block
       allocate (curves(0))
       do block = block_periodic_even, block_antiperiodic_odd
-         call hill_block_values(kind, alpha, block, beta_min, beta_max, tolerance, blocks(block), error, formulation)
+         call hill_block_values(model, alpha, block, beta_min, beta_max, tolerance, blocks(block), error, formulation)
          if (allocated(error)) return
       end do
-      call hill_curves(kind, alpha, beta_min, beta_max, blocks, curves)
+      call hill_curves(model, alpha, beta_min, beta_max, blocks, curves)
       if (present(modes)) modes = blocks%used
    end subroutine hill_boundaries
 
    !> One block's eigenvalues for the window [beta_min, beta_max] of `hill_boundaries`
    !> (converged up to one order above it), with the same checks of the arguments.
-   subroutine hill_block_values(kind, alpha, block, beta_min, beta_max, tolerance, block_values, error, formulation)
-      integer, intent(in) :: kind          !! a model constant (hillstab_hill_models)
+   subroutine hill_block_values(model, alpha, block, beta_min, beta_max, tolerance, block_values, error, formulation)
+      class(hill_model_t), intent(in) :: model          !! the model
       real(wp), intent(in) :: alpha        !! α (ν for the Mathieu model)
       integer, intent(in) :: block         !! block_periodic_even … block_antiperiodic_odd
       real(wp), intent(in) :: beta_min, beta_max  !! the β window
@@ -479,19 +482,19 @@ contains
          call set_error(error, err_invalid_parameter, "Hill's method: block must be 1 to 4")
          return
       end if
-      call check_parameters(kind, alpha, error)
+      call check_parameters(model, alpha, error)
       if (allocated(error)) return
       ! one order above the window too, so that every tongue reaching into it has both edges
       top = beta_max + 1.0_wp + 0.25_wp*abs(beta_max)
-      call converged_block(kind, alpha, block, top, tolerance, block_values%values, block_values%changes, &
+      call converged_block(model, alpha, block, top, tolerance, block_values%values, block_values%changes, &
                            block_values%used, error, formulation)
    end subroutine hill_block_values
 
    !> The transition curves crossing [beta_min, beta_max] from the four blocks'
    !> eigenvalues (`hill_block_values` with this window), ordered by β, with their error
    !> bounds and the coexistence of the two curves of each order.
-   subroutine hill_curves(kind, alpha, beta_min, beta_max, blocks, curves)
-      integer, intent(in) :: kind          !! a model constant (hillstab_hill_models)
+   subroutine hill_curves(model, alpha, beta_min, beta_max, blocks, curves)
+      class(hill_model_t), intent(in) :: model          !! the model
       real(wp), intent(in) :: alpha        !! α (ν for the Mathieu model)
       real(wp), intent(in) :: beta_min, beta_max  !! the β window
       type(hill_block_values_t), intent(in) :: blocks(4)  !! the four blocks, in block order
@@ -515,7 +518,7 @@ contains
                all(n_out)%parity = merge(1, -1, block == block_periodic_even .or. block == block_antiperiodic_even)
                all(n_out)%modes = used
                all(n_out)%change = changes(j)
-               all(n_out)%error_bound = max(changes(j), rounding_bound(kind, alpha, values(1), values(j), used))
+               all(n_out)%error_bound = max(changes(j), rounding_bound(model, alpha, values(1), values(j), used))
                ! the partner of the same order in the other block of this kind
                all(n_out)%coexistent = .false.
                if (all(n_out)%order > 0) then
@@ -524,7 +527,7 @@ contains
                   do jp = 1, counts(other)
                      if (block_order(other, jp) == all(n_out)%order) found = .true.
                   end do
-                  if (found) all(n_out)%coexistent = structural_coexistence(kind, alpha, all(n_out)%trace_sign)
+                  if (found) all(n_out)%coexistent = structural_coexistence(model, alpha, all(n_out)%trace_sign)
                end if
             end do
          end associate
@@ -560,8 +563,9 @@ contains
    !> The eigenvalues ≤ top of one block, converged: the truncation grows by half
    !> until every one of them changes by at most tolerance·max(1, |β|) (Ritz values
    !> only decrease as modes are added, and the count below top only grows).
-   subroutine converged_block(kind, alpha, block, top, tolerance, values, changes, used, error, formulation)
-      integer, intent(in) :: kind, block
+   subroutine converged_block(model, alpha, block, top, tolerance, values, changes, used, error, formulation)
+      class(hill_model_t), intent(in) :: model  !! the model
+      integer, intent(in) :: block
       real(wp), intent(in) :: alpha, top, tolerance
       real(wp), allocatable, intent(out) :: values(:), changes(:)
       integer, intent(out) :: used
@@ -572,12 +576,12 @@ contains
       logical :: done
       character(len=200) :: buf
       allocate (values(0), changes(0))
-      n = hill_initial_modes(kind, alpha, top, tolerance)
-      call hill_block_eigenvalues(kind, alpha, block, n, coarse, error, formulation)
+      n = hill_initial_modes(model, alpha, top, tolerance)
+      call hill_block_eigenvalues(model, alpha, block, n, coarse, error, formulation)
       if (allocated(error)) return
       do
          n_fine = min(n + max(8, n/2), hill_max_modes)
-         call hill_block_eigenvalues(kind, alpha, block, n_fine, fine, error, formulation)
+         call hill_block_eigenvalues(model, alpha, block, n_fine, fine, error, formulation)
          if (allocated(error)) return
          m = count(fine <= top)
          done = m < size(fine) .and. m < size(coarse)   ! a value above top exists in both

@@ -3,31 +3,27 @@
 !> start, midpoint or exact mean: the sampling table, whose codes are the C API's
 !> HILLSTAB_SAMPLING_* and the F77 ISAMP codes) and the phase bound of the round-off level.
 !>
-!> The models of Q themselves (`hill_model_t`, `hill_coefficient`, `check_model`,
-!> segment averages, …) are registered in hillstab_hill_models, with each model's
-!> formulas in its own module; they are re-exported here for the code that uses the
-!> coefficient and its samples together.
+!> The models of Q themselves (`hill_model_t`, `hill_coefficient`, `check_point`, segment
+!> averages, …) are in hillstab_hill_model, each model in its own module, registered in
+!> hillstab_hill_models.
 !>
 !>```fortran
-!> type(hill_model_t) :: model
+!> type(elastic_model_t) :: elastic
 !> real(wp) :: q(4)
-!> model = hill_model_t(model_elastic, alpha=4.0_wp, beta=6.0_wp, epsilon=0.0_wp)
-!> call segment_coefficients(model, 4, sampling_from_name("average"), q)
+!> call segment_coefficients(elastic, hill_point_t(alpha=4.0_wp, beta=6.0_wp), 4, sampling_from_name("average"), q)
 !>```
 module hillstab_hill_coefficient
    use hillstab_core_kinds, only: wp
    use hillstab_core_text, only: name_position, alternatives_text
-   use hillstab_hill_models, only: hill_model_t, model_elastic, model_mathieu, model_name, hill_coefficient, &
-      check_model, segment_average, damping_shift, shape_root_mean, model_split
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_coefficient, segment_average, model_split
    use hillstab_hill_model_elastic, only: in_physical_domain, one_minus_alpha_over_pi2
    implicit none
    private
-   public :: hill_model_t, model_elastic, model_mathieu, model_name
-   public :: hill_coefficient, check_model, segment_average, segment_coefficients
+   public :: segment_coefficients
    public :: sampling_endpoint, sampling_midpoint, sampling_average, sampling_name, sampling_from_name, &
       sampling_names_text, sampling_count
-   public :: damping_shift, hill_period, in_physical_domain, one_minus_alpha_over_pi2
-   public :: phase_bound, shape_root_mean, coefficient_phase
+   public :: in_physical_domain, one_minus_alpha_over_pi2
+   public :: phase_bound, coefficient_phase
 
    !> Piece value = Q at the start of the piece (N = 2 is the paper's eq. (28)).
    integer, parameter :: sampling_endpoint = 1
@@ -39,9 +35,6 @@ module hillstab_hill_coefficient
    character(len=*), parameter :: sampling_names(3) = [character(len=8) :: "endpoint", "midpoint", "average"]
    !> Number of samplings; their codes are 1 … sampling_count.
    integer, parameter :: sampling_count = size(sampling_names)
-
-   !> Period of Q in τ: one radial oscillation.
-   real(wp), parameter :: hill_period = 2.0_wp
 
 contains
 
@@ -75,11 +68,12 @@ contains
    !> It sets the part of the round-off level of S that no integrator can remove: Q is
    !> computed from rounded constants (1 − α/π², α/π², β − π², π²), a systematic relative
    !> error of a few ε that moves the phase by about ε Φ (hillstab_integrate_refine `roundoff_level`).
-   elemental real(wp) function phase_bound(model) result(phase)
-      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
+   elemental real(wp) function phase_bound(model, point) result(phase)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       real(wp) :: c0, c1
-      call model_split(model%kind, model%alpha, model%beta, model%epsilon, c0, c1)
-      phase = coefficient_phase(c0, c1, shape_root_mean(model%kind, model%alpha))
+      call model_split(model, point%alpha, point%beta, point%epsilon, c0, c1)
+      phase = coefficient_phase(c0, c1, model%shape_root_mean(point%alpha))
    end function phase_bound
 
    !> `phase_bound` from q = c₀ + c₁ w and ∫₀¹ √|w| dτ: 2 (√|c₀| + √|c₁| shape_root).
@@ -91,23 +85,25 @@ contains
    end function coefficient_phase
 
    !> Values of the piecewise-constant approximation of q with `n` equal pieces
-   !> over one period [0, 2]: at each piece's start, midpoint, or its exact mean.
-   pure subroutine segment_coefficients(model, n, sampling, q)
-      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
+   !> over one period [0, P] (P = 2 unless the model's period differs): at each piece's
+   !> start, midpoint, or its exact mean.
+   pure subroutine segment_coefficients(model, point, n, sampling, q)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       integer, intent(in) :: n          !! number of pieces, n ≥ 1
       integer, intent(in) :: sampling   !! sampling_endpoint, sampling_midpoint or sampling_average
       real(wp), intent(out) :: q(n)     !! piece values, in order of τ
       real(wp) :: h
       integer :: i
-      h = hill_period/n
+      h = model%period()/n
       do i = 1, n
          select case (sampling)
          case (sampling_midpoint)
-            q(i) = hill_coefficient(model, (i - 0.5_wp)*h)
+            q(i) = hill_coefficient(model, point, (i - 0.5_wp)*h)
          case (sampling_average)
-            q(i) = segment_average(model, (i - 1)*h, i*h)
+            q(i) = segment_average(model, point, (i - 1)*h, i*h)
          case default
-            q(i) = hill_coefficient(model, (i - 1)*h)
+            q(i) = hill_coefficient(model, point, (i - 1)*h)
          end select
       end do
    end subroutine segment_coefficients

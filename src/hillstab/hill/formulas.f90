@@ -4,7 +4,7 @@
 !> - eqs. (48)–(50): the same with the damping shift of eq. (47), giving S₁ for χ;
 !> - eq. (A3)/(A9): Mathieu q = β ∓ ν on the two halves;
 !> - `trace_formula`: method formula for any registered model, from its two pieces
-!>   (hillstab_hill_models `model_two_piece_values`).
+!>   (hillstab_hill_model: the binding `two_piece_values`).
 !>
 !> All are evaluated as tr(T(q₂,1) T(q₁,1)) = 2 C₁C₂ − (q₁ + q₂) S₁S₂, with
 !> C = cos √q, S = sin √q/√q (cosh, sinh for q < 0). Algebraically this is the
@@ -13,7 +13,7 @@
 !> (β < α, β + α < 0) and at β = ±α where the paper's form is 0/0.
 module hillstab_hill_formulas
    use hillstab_core_kinds, only: wp
-   use hillstab_hill_models, only: hill_model_t, model_two_piece_values
+   use hillstab_hill_model, only: hill_model_t, hill_point_t
    use hillstab_hill_model_elastic, only: elastic_two_piece_values
    use hillstab_hill_transfer, only: transfer_functions, trace_t, trace_from_scaled
    implicit none
@@ -63,11 +63,12 @@ contains
    !> Method formula: the trace of the model's two pieces (the paper's sampling (28) in its
    !> closed form), S₁ of the χ equation when ε > 0: eq. (37)/(48)–(50) for the elastic
    !> model, (A3) with β − ε²/4 for the Mathieu model.
-   pure function trace_formula(model) result(tr)
-      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
+   pure function trace_formula(model, point) result(tr)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       type(trace_t) :: tr
       real(wp) :: q_first, q_second
-      call model_two_piece_values(model, q_first, q_second)
+      call model%two_piece_values(point%alpha, point%beta, point%epsilon, q_first, q_second)
       tr = trace_two_piece(q_first, q_second)
    end function trace_formula
 end module hillstab_hill_formulas

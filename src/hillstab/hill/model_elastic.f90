@@ -3,25 +3,27 @@
 !>     Q(τ) = (β − α cos πτ)/(1 − k cos πτ) = π² + (β − π²) w(τ),   w = 1/(1 − k cos πτ),  k = α/π²,
 !>
 !> the exact linearisation of the swing about the vertical bounce (the paper's eq. (20)), for
-!> 0 ≤ α < π² (a < ρ). Every quantity the methods need of this model is here, without
-!> the damping shift −ε²/4 of eq. (47) (added by hillstab_hill_models, where the models
-!> are registered): Q, its exact segment means, the split q = c₀ + c₁ w that method auto
-!> relies on, w from sin(πτ/2), ∫₀¹ √|w|, auto's mesh and step-count inputs, the Fourier
-!> terms of Hill's method, the two-piece values of the paper's eq. (37)/(48)–(50) and
-!> the physical domain.
+!> 0 ≤ α < π² (a < ρ). `elastic_model_t` is this model as a value (hillstab_hill_model):
+!> its bindings answer, without the damping shift −ε²/4 of eq. (47), everything the methods
+!> ask: Q, its exact segment means, the split q = c₀ + c₁ w that method auto relies on, w
+!> from sin(πτ/2), ∫₀¹ √|w|, auto's mesh and step-count inputs, the Fourier terms of Hill's
+!> method, the two-piece values of the paper's eq. (37)/(48)–(50) and the physical domain.
 !>
 !> 1 − k cos πτ is written (1 − k) + 2k sin²(πτ/2) with 1 − k = (π² − α)/π² from π²
 !> in two doubles (`one_minus_alpha_over_pi2`): both keep their relative accuracy as
 !> α → π² near τ = 0, where the dip of Q of depth ~ (β − π²)/(1 − k) sits.
 !>
 !>```fortran
-!> print *, elastic_coefficient(9.8_wp, 2.47_wp, 0.0_wp)   ! the bottom of the dip
+!> type(elastic_model_t) :: elastic
+!> print *, elastic%coefficient(9.8_wp, 2.47_wp, 0.0_wp)   ! the bottom of the dip
 !>```
 module hillstab_hill_model_elastic
    use hillstab_core_kinds, only: wp, pi, pi2, pi2_lo
+   use hillstab_hill_model, only: hill_model_t, hill_form_pencil
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
+   public :: elastic_model_t
    public :: one_minus_alpha_over_pi2, in_physical_domain, elastic_alpha_valid, elastic_alpha_domain
    public :: elastic_coefficient, elastic_segment_mean, elastic_split, elastic_shape, elastic_shapes_from_half_sines
    public :: elastic_shape_root_mean, elastic_mesh_kappa, elastic_auto_difficulty, elastic_auto_amplitude
@@ -31,7 +33,200 @@ module hillstab_hill_model_elastic
    !> The α domain in words, for messages: a < ρ, the mass never reaches the pivot.
    character(len=*), parameter :: elastic_alpha_domain = "0 <= alpha < pi**2 = 9.8696044010893586"
 
+   !> The elastic pendulum's coefficient, eq. (25), as a model (hillstab_hill_model).
+   type, extends(hill_model_t) :: elastic_model_t
+   contains
+      procedure :: name => elastic_name
+      procedure :: formula => elastic_formula
+      procedure :: summary => elastic_summary
+      procedure :: alpha_domain => elastic_domain_text
+      procedure :: alpha_valid => elastic_model_alpha_valid
+      procedure :: is_pendulum => elastic_is_pendulum
+      procedure :: coefficient => elastic_model_coefficient
+      procedure :: segment_mean => elastic_model_segment_mean
+      procedure :: split => elastic_model_split
+      procedure :: shapes => elastic_model_shapes
+      procedure :: shape_range => elastic_model_shape_range
+      procedure :: shape_root_mean => elastic_model_shape_root_mean
+      procedure :: shapes_from_half_sines => elastic_model_shapes_from_half_sines
+      procedure :: mesh_kappa => elastic_model_mesh_kappa
+      procedure :: auto_difficulty => elastic_model_auto_difficulty
+      procedure :: auto_amplitude => elastic_model_auto_amplitude
+      procedure :: two_piece_values => elastic_model_two_piece_values
+      procedure :: hill_form => elastic_hill_form
+      procedure :: hill_k => elastic_model_hill_k
+      procedure :: hill_coupling => elastic_model_hill_coupling
+      procedure :: hill_one_minus_k => elastic_model_hill_one_minus_k
+      procedure :: fourier_decay => elastic_model_fourier_decay
+   end type elastic_model_t
+
 contains
+
+   !> "elastic".
+   pure function elastic_name(self) result(text)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      character(len=:), allocatable :: text
+      text = "elastic"
+   end function elastic_name
+
+   !> The coefficient as output headers state it.
+   pure function elastic_formula(self) result(text)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      character(len=:), allocatable :: text
+      text = "Q(tau) = (beta - alpha cos(pi tau))/(1 - (alpha/pi^2) cos(pi tau)), eq. (25)"
+   end function elastic_formula
+
+   !> The coefficient in a few words (a template's comment).
+   pure function elastic_summary(self) result(text)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      character(len=:), allocatable :: text
+      text = "Q = (beta - alpha cos pi tau)/(1 - (alpha/pi^2) cos pi tau), eq. (25)"
+   end function elastic_summary
+
+   !> The α domain in words: a < ρ.
+   pure function elastic_domain_text(self) result(text)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      character(len=:), allocatable :: text
+      text = elastic_alpha_domain
+   end function elastic_domain_text
+
+   !> 0 ≤ α < π² (`elastic_alpha_valid`).
+   elemental logical function elastic_model_alpha_valid(self, alpha) result(valid)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha               !! α
+      valid = elastic_alpha_valid(alpha)
+   end function elastic_model_alpha_valid
+
+   !> The model is the elastic pendulum: physical domain, simulation, α = aπ²/ρ.
+   elemental logical function elastic_is_pendulum(self)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      elastic_is_pendulum = .true.
+   end function elastic_is_pendulum
+
+   !> Q(τ), eq. (25) (`elastic_coefficient`).
+   elemental real(wp) function elastic_model_coefficient(self, alpha, beta, tau) result(q)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha, beta         !! the point
+      real(wp), intent(in) :: tau                 !! dimensionless time
+      q = elastic_coefficient(alpha, beta, tau)
+   end function elastic_model_coefficient
+
+   !> Exact mean of Q over [τ_a, τ_b] (`elastic_segment_mean`).
+   pure real(wp) function elastic_model_segment_mean(self, alpha, beta, tau_a, tau_b) result(q)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha, beta         !! the point
+      real(wp), intent(in) :: tau_a, tau_b        !! segment ends, tau_a < tau_b
+      q = elastic_segment_mean(alpha, beta, tau_a, tau_b)
+   end function elastic_model_segment_mean
+
+   !> Q = π² + (β − π²) w (`elastic_split`).
+   elemental subroutine elastic_model_split(self, alpha, beta, c0, c1)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha, beta         !! the point
+      real(wp), intent(out) :: c0                 !! π²
+      real(wp), intent(out) :: c1                 !! β − π²
+      call elastic_split(beta, c0, c1)
+   end subroutine elastic_model_split
+
+   !> w(τ) = 1/(1 − (α/π²) cos πτ) at the times `tau`.
+   pure subroutine elastic_model_shapes(self, alpha, tau, w)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha               !! α
+      real(wp), intent(in) :: tau(:)              !! the times
+      real(wp), intent(out) :: w(:)               !! w there
+      w = elastic_shape(alpha, tau)
+   end subroutine elastic_model_shapes
+
+   !> The range of w, 1/(1 ± α/π²) (`elastic_shape_range`).
+   elemental subroutine elastic_model_shape_range(self, alpha, w_min, w_max)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha               !! α
+      real(wp), intent(out) :: w_min, w_max       !! the range of w
+      call elastic_shape_range(alpha, w_min, w_max)
+   end subroutine elastic_model_shape_range
+
+   !> ∫₀¹ √w dτ, an elliptic integral (`elastic_shape_root_mean`).
+   elemental real(wp) function elastic_model_shape_root_mean(self, alpha) result(mean)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha               !! α
+      mean = elastic_shape_root_mean(alpha)
+   end function elastic_model_shape_root_mean
+
+   !> w from the half-angle sines, 1/((1 − k) + 2k s²) (`elastic_shapes_from_half_sines`).
+   pure subroutine elastic_model_shapes_from_half_sines(self, alpha, n, s, w)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha               !! α
+      integer, intent(in) :: n                    !! number of points
+      real(wp), intent(in) :: s(n)                !! sin(πτ/2) at the points
+      real(wp), intent(out) :: w(n)               !! w there
+      call elastic_shapes_from_half_sines(alpha, n, s, w)
+   end subroutine elastic_model_shapes_from_half_sines
+
+   !> κ = 1 − (1 − α/π²)^power: steps packed into the dip (`elastic_mesh_kappa`).
+   elemental real(wp) function elastic_model_mesh_kappa(self, alpha, power) result(kappa)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha               !! α
+      real(wp), intent(in) :: power               !! method auto's mesh exponent
+      kappa = elastic_mesh_kappa(alpha, power)
+   end function elastic_model_mesh_kappa
+
+   !> −ln(1 − α/π²) (`elastic_auto_difficulty`).
+   elemental real(wp) function elastic_model_auto_difficulty(self, alpha) result(x)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha               !! α
+      x = elastic_auto_difficulty(alpha)
+   end function elastic_model_auto_difficulty
+
+   !> |c₁| = |β − π²| (`elastic_auto_amplitude`).
+   elemental real(wp) function elastic_model_auto_amplitude(self, c0, c1) result(amplitude)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: c0, c1              !! the split of q
+      amplitude = elastic_auto_amplitude(c1)
+   end function elastic_model_auto_amplitude
+
+   !> The paper's two pieces with damping, eqs. (49)–(50) (`elastic_two_piece_values`).
+   elemental subroutine elastic_model_two_piece_values(self, alpha, beta, epsilon, q_first, q_second)
+      class(elastic_model_t), intent(in) :: self    !! the model
+      real(wp), intent(in) :: alpha, beta, epsilon  !! the point and its damping
+      real(wp), intent(out) :: q_first              !! B₂², the value on [0, 1)
+      real(wp), intent(out) :: q_second             !! B₁², the value on [1, 2)
+      call elastic_two_piece_values(alpha, beta, epsilon, q_first, q_second)
+   end subroutine elastic_model_two_piece_values
+
+   !> Hill's method in the pencil form.
+   pure integer function elastic_hill_form(self) result(form)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      form = hill_form_pencil
+   end function elastic_hill_form
+
+   !> k = α/π² (`elastic_hill_k`).
+   elemental real(wp) function elastic_model_hill_k(self, alpha) result(k)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha               !! α
+      k = elastic_hill_k(alpha)
+   end function elastic_model_hill_k
+
+   !> 1 − α/π², accurate as α → π² (`one_minus_alpha_over_pi2`).
+   elemental real(wp) function elastic_model_hill_one_minus_k(self, alpha) result(one_minus_k)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha               !! α
+      one_minus_k = one_minus_alpha_over_pi2(alpha)
+   end function elastic_model_hill_one_minus_k
+
+   !> α(1 − t) (`elastic_hill_coupling`).
+   elemental real(wp) function elastic_model_hill_coupling(self, alpha, t) result(coupling)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha               !! α
+      real(wp), intent(in) :: t                   !! the squared mode number
+      coupling = elastic_hill_coupling(alpha, t)
+   end function elastic_model_hill_coupling
+
+   !> r = k/(1 + √(1 − k²)) (`elastic_fourier_decay`).
+   elemental real(wp) function elastic_model_fourier_decay(self, alpha) result(r)
+      class(elastic_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha               !! α
+      r = elastic_fourier_decay(alpha)
+   end function elastic_model_fourier_decay
 
    !> 1 − α/π² computed as (π² − α)/π² with π² split in two doubles: relative error of a
    !> few ulps for every 0 ≤ α < π² (1 − k from k = α/π² loses 1 − k's relative accuracy

@@ -16,7 +16,7 @@
 !> Speed comes from the structure of Q: for fixed α, q(τ) = c₀ + c₁ w(τ) with w
 !> independent of β (elastic: w = 1/(1 − (α/π²) cos πτ), c₁ = β − π²,
 !> c₀ = π² − ε²/4; Mathieu: w = cos πτ, c₁ = −ν, c₀ = β − ε²/4; every model gives its
-!> split, w and the inputs of the mesh and the step count through hillstab_hill_models).
+!> split, w and the inputs of the mesh and the step count through its bindings, hillstab_hill_model).
 !> A batch of points shares the mesh and the w values at its Gauss nodes, so each step
 !> costs three multiply-adds, a few flops for the Magnus generator and one
 !> exponential of a traceless 2×2 matrix, evaluated by a short power series when
@@ -25,16 +25,14 @@
 !>```fortran
 !> real(wp) :: betas(3) = [1.0_wp, 2.0_wp, 3.0_wp]
 !> type(trace_t) :: traces(3)
-!> call trace_auto_batch(model_elastic, 5.0_wp, 0.0_wp, betas, 1.0e-10_wp, traces, stats, error)
+!> call trace_auto_batch(elastic_model_t(), 5.0_wp, 0.0_wp, betas, 1.0e-10_wp, traces, stats, error)
 !>```
 module hillstab_integrate_auto
    use hillstab_core_kinds, only: wp, pi
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_models, only: hill_model_t, check_model_batch, model_alpha_valid, model_split, &
-      model_shape, &
-      model_shapes_from_half_sines, shape_root_mean, model_mesh_kappa, model_auto_difficulty, model_auto_amplitude
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, check_batch, model_split
    use hillstab_hill_coefficient, only: coefficient_phase
    use hillstab_hill_transfer, only: transfer_functions, step_functions, cos_taylor, sinc_taylor, trace_t, &
       trace_from_scaled, scaled_matrix_t
@@ -92,10 +90,11 @@ module hillstab_integrate_auto
       type(mesh_t) :: meshes(40)
    end type mesh_cache_t
 
-   !> Meshes prepared once for a batch sharing (model kind, α) — a chart row — and
-   !> then read by all threads (`auto_prepare`, `trace_auto_batch(..., plan)`).
+   !> Meshes prepared once for a batch sharing (model, α) — a chart row — and then read
+   !> by all threads (`auto_prepare`, `trace_auto_batch(..., plan)`, which must be given
+   !> the model the plan was prepared with).
    type :: auto_plan_t
-      integer :: kind = 0  !! model kind the meshes were built for (0: none yet)
+      logical :: prepared = .false.  !! meshes were built (for the model of the batch)
       real(wp) :: alpha = -1.0_wp  !! alpha the meshes were built for (-1: none yet)
       type(mesh_cache_t) :: cache  !! the meshes, by number of steps
    end type auto_plan_t
@@ -104,8 +103,8 @@ contains
 
    !> Build the meshes the points of a batch start with (N₀ and N₀/2 of each β), so
    !> that threads working on parts of the batch share them.
-   subroutine auto_prepare(kind, alpha, epsilon, betas, tolerance, plan, screen)
-      integer, intent(in) :: kind  !! model kind (a model constant of hillstab_hill_models)
+   subroutine auto_prepare(model, alpha, epsilon, betas, tolerance, plan, screen)
+      class(hill_model_t), intent(in) :: model  !! the model
       !> alpha and epsilon of the batch, its betas, the target error on S
       real(wp), intent(in) :: alpha, epsilon, betas(:), tolerance
       type(auto_plan_t), intent(out) :: plan  !! the meshes, to pass to trace_auto_batch
@@ -114,58 +113,58 @@ contains
       real(wp) :: c0, c1, base
       integer :: j, n, index
       logical :: screening
-      plan%kind = kind
+      plan%prepared = .true.
       plan%alpha = alpha
       ! unchecked input: leave the plan empty (the batch reports the error)
       if (.not. (ieee_is_finite(alpha) .and. ieee_is_finite(epsilon) .and. ieee_is_finite(tolerance))) return
       if (.not. all(ieee_is_finite(betas))) return
       if (alpha == 0.0_wp .or. .not. (tolerance > 0.0_wp .and. tolerance < 1.0_wp)) return
-      if (.not. model_alpha_valid(kind, alpha)) return
+      if (.not. model%alpha_valid(alpha)) return
       screening = .false.
       if (present(screen)) screening = screen
       if (screening) then
-         base = auto_base_steps(kind, alpha, auto_screen_tolerance)
+         base = auto_base_steps(model, alpha, auto_screen_tolerance)
       else
-         base = auto_base_steps(kind, alpha, tolerance)
+         base = auto_base_steps(model, alpha, tolerance)
       end if
       do j = 1, size(betas)
-         call model_split(kind, alpha, betas(j), epsilon, c0, c1)
-         n = steps_for_point(base, kind, c0, c1)
+         call model_split(model, alpha, betas(j), epsilon, c0, c1)
+         n = steps_for_point(base, model, c0, c1)
          if (screening) n = max(screen_min_steps, n)
          if (plan%cache%n_meshes + 3 > size(plan%cache%meshes)) exit
-         call get_mesh(plan%cache, kind, alpha, n, index)
-         call get_mesh(plan%cache, kind, alpha, n/2, index)
-         if (screening) call get_mesh(plan%cache, kind, alpha, n/4, index)
+         call get_mesh(plan%cache, model, alpha, n, index)
+         call get_mesh(plan%cache, model, alpha, n/2, index)
+         if (screening) call get_mesh(plan%cache, model, alpha, n/4, index)
       end do
    end subroutine auto_prepare
 
    !> A-priori number of Magnus-6 steps on [0, 1]: `auto_base_steps` (α, tolerance)
    !> times max(1, (|c₁|/12)^0.4) for large |β − π²| (fitted on β = −50 … 1000), raised
    !> to the next rung of the ladder. The a-posteriori check corrects what this misses.
-   pure integer function auto_initial_steps(kind, alpha, c0, c1, tolerance) result(n)
-      integer, intent(in) :: kind  !! model kind (a model constant of hillstab_hill_models)
+   pure integer function auto_initial_steps(model, alpha, c0, c1, tolerance) result(n)
+      class(hill_model_t), intent(in) :: model  !! the model
       real(wp), intent(in) :: alpha, c0, c1, tolerance  !! alpha; Q's expansion c0, c1 at the point; the target error on S
-      n = steps_for_point(auto_base_steps(kind, alpha, tolerance), kind, c0, c1)
+      n = steps_for_point(auto_base_steps(model, alpha, tolerance), model, c0, c1)
    end function auto_initial_steps
 
    !> N for one point from the batch's base count: the error of Magnus-6 grows with the
    !> amplitude of q (`model_auto_amplitude`: |β − π²| for the elastic model, about ν for Mathieu) like |c₁|^{2.4}
    !> (N ∝ |c₁|^0.4, fitted on β = −50 … 1000 and measured down to |c₁| = 2), normalised to
    !> |c₁| = 12 (β = −2), where the table was measured.
-   pure integer function steps_for_point(base, kind, c0, c1) result(n)
+   pure integer function steps_for_point(base, model, c0, c1) result(n)
       real(wp), intent(in) :: base, c0, c1
-      integer, intent(in) :: kind
+      class(hill_model_t), intent(in) :: model
       real(wp) :: amplitude
-      amplitude = model_auto_amplitude(kind, c0, c1)
+      amplitude = model%auto_amplitude(c0, c1)
       n = ladder_steps(base*(max(amplitude, 1.0_wp)/12.0_wp)**0.4_wp)
    end function steps_for_point
 
    !> `steps_for_point` of every point of a batch, without a power per point: rung r of
    !> the ladder serves the amplitudes x ≤ 12 (r/base)^2.5 (base (x/12)^0.4 ≤ r), so the
    !> rungs' thresholds are computed once and each point's rung found among them.
-   pure subroutine steps_for_points(base, kind, c0s, c1s, ns)
+   pure subroutine steps_for_points(base, model, c0s, c1s, ns)
       real(wp), intent(in) :: base, c0s(:), c1s(:)
-      integer, intent(in) :: kind
+      class(hill_model_t), intent(in) :: model
       integer, intent(out) :: ns(:)
       real(wp) :: thresholds(size(ladder)), x
       integer :: j, k, first
@@ -173,7 +172,7 @@ contains
       first = findloc(ladder, ladder_steps(base*(1.0_wp/12.0_wp)**0.4_wp), dim=1)
       thresholds(first:) = 12.0_wp*(real(ladder(first:), wp)/base)**2.5_wp
       do j = 1, size(c0s)
-         x = max(model_auto_amplitude(kind, c0s(j), c1s(j)), 1.0_wp)
+         x = max(model%auto_amplitude(c0s(j), c1s(j)), 1.0_wp)
          k = first
          do while (k < size(ladder))
             if (x <= thresholds(k)) exit
@@ -188,8 +187,8 @@ contains
    !> x = −ln(1 − α/π²) (`model_auto_difficulty`; ln N linear in between, N ∝ (1 − α/π²)^−0.3 beyond), times 0.8
    !> (cheapest on average with the check), times (1e-10/tol)^{1/6} (the order; tolerances
    !> looser than 1e-6 use the 1e-6 count so that the check stays in the asymptotic regime).
-   pure real(wp) function auto_base_steps(kind, alpha, tolerance) result(base)
-      integer, intent(in) :: kind
+   pure real(wp) function auto_base_steps(model, alpha, tolerance) result(base)
+      class(hill_model_t), intent(in) :: model
       real(wp), intent(in) :: alpha, tolerance
       real(wp), parameter :: table_x(9) = [0.0_wp, 0.052_wp, 0.227_wp, 0.519_wp, 0.937_wp, 1.666_wp, 2.43_wp, &
                                            3.29_wp, 4.95_wp]
@@ -198,7 +197,7 @@ contains
       real(wp), parameter :: slope_beyond = 0.3_wp
       real(wp) :: x, log_n
       integer :: i
-      x = model_auto_difficulty(kind, alpha)
+      x = model%auto_difficulty(alpha)
       if (x >= table_x(size(table_x))) then
          log_n = log(table_n(size(table_n))) + slope_beyond*(x - table_x(size(table_x)))
       else
@@ -233,22 +232,23 @@ contains
    end function ladder_steps
 
    !> Trace S of one point by method auto.
-   subroutine trace_auto(model, tolerance, tr, stats, error)
-      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
+   subroutine trace_auto(model, point, tolerance, tr, stats, error)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       real(wp), intent(in) :: tolerance   !! target |ΔS|/max(1, |S|)
       type(trace_t), intent(out) :: tr  !! the trace S, or the best value with err_accuracy
       type(work_stats_t), intent(out) :: stats  !! work done: steps, rejected steps, Q evaluations
       type(error_t), allocatable, intent(out) :: error  !! failure description; unallocated on success
       type(trace_t) :: traces(1)
-      call trace_auto_batch(model%kind, model%alpha, model%epsilon, [model%beta], tolerance, traces, stats, error)
+      call trace_auto_batch(model, point%alpha, point%epsilon, [point%beta], tolerance, traces, stats, error)
       tr = traces(1)
    end subroutine trace_auto
 
    !> Traces of the points (α, β_j, ε), j = 1 … size(betas), sharing meshes and w values.
    !> On error (a parameter out of range, or a tolerance that cannot be met) the
    !> remaining traces are still filled with the best values available.
-   subroutine trace_auto_batch(kind, alpha, epsilon, betas, tolerance, traces, stats, error, plan, reached, roundoff)
-      integer, intent(in) :: kind            !! a model constant (hillstab_hill_models)
+   subroutine trace_auto_batch(model, alpha, epsilon, betas, tolerance, traces, stats, error, plan, reached, roundoff)
+      class(hill_model_t), intent(in) :: model            !! the model
       real(wp), intent(in) :: alpha          !! α (ν for the Mathieu model)
       real(wp), intent(in) :: epsilon        !! damping ε
       real(wp), intent(in) :: betas(:)       !! β values
@@ -257,7 +257,7 @@ contains
       type(work_stats_t), intent(out) :: stats  !! work done over the batch
       !> the first failure (err_accuracy: round-off limited); unallocated on success
       type(error_t), allocatable, intent(out) :: error
-      type(auto_plan_t), intent(in), optional :: plan  !! meshes prepared for this (kind, α)
+      type(auto_plan_t), intent(in), optional :: plan  !! meshes prepared for this (model, α)
       logical, intent(out), optional :: reached(:)     !! the tolerance was met at point j
       !> point j is round-off limited: its trace is the best value, not a failure
       logical, intent(out), optional :: roundoff(:)
@@ -282,21 +282,21 @@ contains
          call set_error(error, err_invalid_parameter, "auto: tolerance must lie in (0, 1)")
          return
       end if
-      call check_model_batch(kind, alpha, epsilon, betas, error)
+      call check_batch(model, alpha, epsilon, betas, error)
       if (allocated(error)) return
       if (present(plan)) then
-         if (plan%kind == kind .and. plan%alpha == alpha) cache = plan%cache
+         if (plan%prepared .and. plan%alpha == alpha) cache = plan%cache
       end if
-      base = auto_base_steps(kind, alpha, tolerance)
+      base = auto_base_steps(model, alpha, tolerance)
       m = size(betas)
       allocate (c0s(m), c1s(m), ns(m))
       do j = 1, m
-         call model_split(kind, alpha, betas(j), epsilon, c0s(j), c1s(j))
+         call model_split(model, alpha, betas(j), epsilon, c0s(j), c1s(j))
       end do
       if (alpha == 0.0_wp) then
          do j = 1, m
             ! w is constant at α = 0 (its value then at any τ)
-            q = c0s(j) + c1s(j)*model_shape(kind, alpha, 0.0_wp)
+            q = c0s(j) + c1s(j)*shape_at_start(model, alpha)
             traces(j) = constant_trace(q)
             ! one exact transfer matrix: the rounding of its few operations, and of its
             ! argument 2√|q|, the phase (or the growth) over the period, which moves S by
@@ -309,9 +309,9 @@ contains
          stats%n_evaluations = stats%n_evaluations + m
          return
       end if
-      call steps_for_points(base, kind, c0s, c1s, ns)
+      call steps_for_points(base, model, c0s, c1s, ns)
       ! the phase bound of each point, for its round-off level (hillstab_integrate_refine)
-      phases = coefficient_phase(c0s, c1s, shape_root_mean(kind, alpha))
+      phases = coefficient_phase(c0s, c1s, model%shape_root_mean(alpha))
       ! first pass: S_N and S_{N/2} of all points sharing N together, in lanes
       allocate (fine(m), coarse(m), n_coarse(m), pending(m), floors(m), coarse_floors(m), estimates(m), previous(m), &
                 converged(m))
@@ -395,7 +395,7 @@ contains
          type(trace_t), intent(inout) :: result(:)
          real(wp), intent(inout) :: floors(:)
          logical, intent(in), optional :: selected(:)
-         call lanes_pass(cache, kind, alpha, n, c0s, c1s, phases, result, floors, stats, selected)
+         call lanes_pass(cache, model, alpha, n, c0s, c1s, phases, result, floors, stats, selected)
       end subroutine traces_in_lanes
 
       !> Point j is round-off limited at `level`: flagged, and the first such point (unless
@@ -425,15 +425,15 @@ contains
    !> |S| lies beyond the bound from a stability threshold has its verdict; the others go
    !> to `trace_auto_batch`. S_N itself is returned (not extrapolated): the bound is a
    !> bound on S_N.
-   subroutine trace_auto_screen(kind, alpha, epsilon, betas, traces, stats, error, plan)
-      integer, intent(in) :: kind            !! a model constant (hillstab_hill_models)
+   subroutine trace_auto_screen(model, alpha, epsilon, betas, traces, stats, error, plan)
+      class(hill_model_t), intent(in) :: model            !! the model
       real(wp), intent(in) :: alpha          !! α (ν for the Mathieu model)
       real(wp), intent(in) :: epsilon        !! damping ε
       real(wp), intent(in) :: betas(:)       !! β values
       type(trace_t), intent(out) :: traces(:)  !! S_N of each β with its error bound
       type(work_stats_t), intent(out) :: stats  !! work done over the batch
       type(error_t), allocatable, intent(out) :: error  !! a parameter out of range (nothing screened)
-      type(auto_plan_t), intent(in), optional :: plan  !! meshes prepared for this (kind, α)
+      type(auto_plan_t), intent(in), optional :: plan  !! meshes prepared for this (model, α)
       type(mesh_cache_t) :: cache
       real(wp) :: base, q
       real(wp), dimension(size(betas)) :: c0s, c1s, phases, floors
@@ -441,15 +441,15 @@ contains
       type(trace_t) :: coarse(size(betas)), coarser(size(betas))
       integer :: j
       stats = work_stats_t()
-      call check_model_batch(kind, alpha, epsilon, betas, error)
+      call check_batch(model, alpha, epsilon, betas, error)
       if (allocated(error)) return
       do j = 1, size(betas)
-         call model_split(kind, alpha, betas(j), epsilon, c0s(j), c1s(j))
+         call model_split(model, alpha, betas(j), epsilon, c0s(j), c1s(j))
       end do
       if (alpha == 0.0_wp) then
          ! one exact transfer matrix (as `trace_auto_batch`)
          do j = 1, size(betas)
-            q = c0s(j) + c1s(j)*model_shape(kind, alpha, 0.0_wp)
+            q = c0s(j) + c1s(j)*shape_at_start(model, alpha)
             traces(j) = constant_trace(q)
             traces(j)%error_estimate = exact_transfer_error*(1.0_wp + sqrt(abs(q)))
          end do
@@ -458,13 +458,13 @@ contains
          return
       end if
       if (present(plan)) then
-         if (plan%kind == kind .and. plan%alpha == alpha) cache = plan%cache
+         if (plan%prepared .and. plan%alpha == alpha) cache = plan%cache
       end if
-      base = auto_base_steps(kind, alpha, auto_screen_tolerance)
-      call steps_for_points(base, kind, c0s, c1s, ns)
+      base = auto_base_steps(model, alpha, auto_screen_tolerance)
+      call steps_for_points(base, model, c0s, c1s, ns)
       ns = max(screen_min_steps, ns)
-      phases = coefficient_phase(c0s, c1s, shape_root_mean(kind, alpha))
-      call screen_lanes(cache, kind, alpha, ns, c0s, c1s, phases, traces, floors, coarse, coarser, stats)
+      phases = coefficient_phase(c0s, c1s, model%shape_root_mean(alpha))
+      call screen_lanes(cache, model, alpha, ns, c0s, c1s, phases, traces, floors, coarse, coarser, stats)
       do j = 1, size(betas)
          ! differences of the order of S itself (values of opposite signs, overflow) count
          ! as 1: such a bound settles nothing, and the sum stays finite
@@ -478,9 +478,9 @@ contains
    !> group propagated (`group_pass`) on the meshes of N (S and its round-off level), N/2
    !> and N/4 steps (S only: their round-off levels are taken as the finest one's, the same
    !> solutions over fewer steps).
-   subroutine screen_lanes(cache, kind, alpha, n, c0s, c1s, phases, fine, floors, coarse, coarser, stats)
-      type(mesh_cache_t), intent(inout) :: cache  !! meshes of this (kind, α)
-      integer, intent(in) :: kind            !! model kind
+   subroutine screen_lanes(cache, model, alpha, n, c0s, c1s, phases, fine, floors, coarse, coarser, stats)
+      type(mesh_cache_t), intent(inout) :: cache  !! meshes of this (model, α)
+      class(hill_model_t), intent(in) :: model            !! the model
       real(wp), intent(in) :: alpha          !! α of the batch
       integer, intent(in) :: n(:)            !! N of each point
       real(wp), intent(in) :: c0s(:), c1s(:)  !! q = c₀ + c₁ w of each point
@@ -499,20 +499,20 @@ contains
          lane_c0(1:m) = c0s(group(1:m))
          lane_c1(1:m) = c1s(group(1:m))
          lane_phases(1:m) = phases(group(1:m))
-         call group_pass(cache, kind, alpha, n(i), group(1:m), lane_c0(1:m), lane_c1(1:m), lane_phases(1:m), &
+         call group_pass(cache, model, alpha, n(i), group(1:m), lane_c0(1:m), lane_c1(1:m), lane_phases(1:m), &
                          fine, floors, stats, lanes_screen)
-         call group_pass(cache, kind, alpha, n(i)/2, group(1:m), lane_c0(1:m), lane_c1(1:m), lane_phases(1:m), &
+         call group_pass(cache, model, alpha, n(i)/2, group(1:m), lane_c0(1:m), lane_c1(1:m), lane_phases(1:m), &
                          coarse, unused, stats, lanes_values)
-         call group_pass(cache, kind, alpha, n(i)/4, group(1:m), lane_c0(1:m), lane_c1(1:m), lane_phases(1:m), &
+         call group_pass(cache, model, alpha, n(i)/4, group(1:m), lane_c0(1:m), lane_c1(1:m), lane_phases(1:m), &
                          coarser, unused, stats, lanes_values)
       end do
    end subroutine screen_lanes
 
    !> S on meshes of n(j) steps for the selected points (all without `selected`), grouped by
    !> n and propagated in lanes; the meshes come from (or go into) `cache`.
-   subroutine lanes_pass(cache, kind, alpha, n, c0s, c1s, phases, result, floors, stats, selected)
-      type(mesh_cache_t), intent(inout) :: cache  !! meshes of this (kind, α)
-      integer, intent(in) :: kind            !! model kind
+   subroutine lanes_pass(cache, model, alpha, n, c0s, c1s, phases, result, floors, stats, selected)
+      type(mesh_cache_t), intent(inout) :: cache  !! meshes of this (model, α)
+      class(hill_model_t), intent(in) :: model            !! the model
       real(wp), intent(in) :: alpha          !! α of the batch
       integer, intent(in) :: n(:)            !! steps of each point
       real(wp), intent(in) :: c0s(:), c1s(:)  !! q = c₀ + c₁ w of each point
@@ -533,7 +533,7 @@ contains
          lane_c0(1:m) = c0s(group(1:m))
          lane_c1(1:m) = c1s(group(1:m))
          lane_phases(1:m) = phases(group(1:m))
-         call group_pass(cache, kind, alpha, n(i), group(1:m), lane_c0(1:m), lane_c1(1:m), lane_phases(1:m), &
+         call group_pass(cache, model, alpha, n(i), group(1:m), lane_c0(1:m), lane_c1(1:m), lane_phases(1:m), &
                          result, floors, stats, lanes_plain)
       end do
    end subroutine lanes_pass
@@ -559,9 +559,9 @@ contains
    !> The points `group`, their coefficients gathered into contiguous lanes by the caller
    !> (no allocation: this runs for every group of every pass of every batch), on the mesh of
    !> `steps` steps: propagated by `lane_traces` in mode `how`, the results scattered back.
-   subroutine group_pass(cache, kind, alpha, steps, group, lane_c0, lane_c1, lane_phases, result, floors, stats, how)
-      type(mesh_cache_t), intent(inout) :: cache  !! meshes of this (kind, α)
-      integer, intent(in) :: kind            !! model kind
+   subroutine group_pass(cache, model, alpha, steps, group, lane_c0, lane_c1, lane_phases, result, floors, stats, how)
+      type(mesh_cache_t), intent(inout) :: cache  !! meshes of this (model, α)
+      class(hill_model_t), intent(in) :: model            !! the model
       real(wp), intent(in) :: alpha          !! α of the batch
       integer, intent(in) :: steps           !! steps of the mesh
       integer, intent(in) :: group(:)        !! the points
@@ -574,7 +574,7 @@ contains
       real(wp) :: lane_floors(size(group))
       type(trace_t) :: lane_results(size(group))
       integer :: index
-      call get_mesh(cache, kind, alpha, steps, index)
+      call get_mesh(cache, model, alpha, steps, index)
       call lane_traces(cache%meshes(index), lane_c0, lane_c1, lane_phases, lane_results, lane_floors, how)
       result(group) = lane_results
       floors(group) = lane_floors
@@ -598,6 +598,16 @@ contains
       stats%n_steps = stats%n_steps + n
       stats%n_evaluations = stats%n_evaluations + 3*n
    end subroutine count_steps
+
+   !> w at τ = 0: at α = 0 every model's coefficient is constant, and w is its value
+   !> anywhere.
+   pure real(wp) function shape_at_start(model, alpha) result(w)
+      class(hill_model_t), intent(in) :: model  !! the model
+      real(wp), intent(in) :: alpha             !! α
+      real(wp) :: values(1)
+      call model%shapes(alpha, [0.0_wp], values)
+      w = values(1)
+   end function shape_at_start
 
    !> Richardson extrapolation of an order-6 pair: fine + (fine − coarse)/(ratio − 1),
    !> ratio = (N_fine/N_coarse)⁶; through ln|S| when S is large or overflows (and left
@@ -627,9 +637,10 @@ contains
    end function extrapolated
 
    !> Index of the mesh with n steps in the cache, building it if needed.
-   subroutine get_mesh(cache, kind, alpha, n, index)
+   subroutine get_mesh(cache, model, alpha, n, index)
       type(mesh_cache_t), intent(inout) :: cache
-      integer, intent(in) :: kind, n
+      class(hill_model_t), intent(in) :: model
+      integer, intent(in) :: n
       real(wp), intent(in) :: alpha
       integer, intent(out) :: index
       integer :: i
@@ -645,7 +656,7 @@ contains
          cache%n_meshes = cache%n_meshes + 1
          index = cache%n_meshes
       end if
-      call build_mesh(kind, alpha, n, cache%meshes(index))
+      call build_mesh(model, alpha, n, cache%meshes(index))
    end subroutine get_mesh
 
    !> τ(ψ) of the Kepler-type map on [0, 1]: tan(πτ/2) = √((1 − κ)/(1 + κ)) tan(πψ/2).
@@ -655,8 +666,9 @@ contains
    end function mapped_time
 
    !> Mesh of n steps on [0, 1], uniform in ψ, with w at the Gauss nodes.
-   pure subroutine build_mesh(kind, alpha, n, mesh)
-      integer, intent(in) :: kind, n
+   pure subroutine build_mesh(model, alpha, n, mesh)
+      class(hill_model_t), intent(in) :: model
+      integer, intent(in) :: n
       real(wp), intent(in) :: alpha
       type(mesh_t), intent(out) :: mesh
       ! the sines at the nodes (3 n) and the mesh points' X, Y and τ (n each): one allocation
@@ -664,9 +676,9 @@ contains
       real(wp), allocatable :: work(:)
       mesh%n_steps = n
       allocate (mesh%h(n), mesh%w(3, n), work(6*n))
-      call mesh_points(n, model_mesh_kappa(kind, alpha, auto_mesh_power), mesh%h, work(1:3*n), &
+      call mesh_points(n, model%mesh_kappa(alpha, auto_mesh_power), mesh%h, work(1:3*n), &
                        work(3*n + 1:4*n), work(4*n + 1:5*n), work(5*n + 1:6*n))
-      call model_shapes_from_half_sines(kind, alpha, 3*n, work(1:3*n), mesh%w)
+      call model%shapes_from_half_sines(alpha, 3*n, work(1:3*n), mesh%w)
    end subroutine build_mesh
 
    !> The step lengths h and the sines sin(πτ/2) at the Gauss nodes (`half_sin`) of
@@ -1021,16 +1033,17 @@ contains
 
    !> S by Magnus-6 on the auto mesh with exactly n steps on [0, 1] (no error control;
    !> for calibration, tests and benchmarks). Undamped β (ε = 0).
-   function fixed_n_trace(kind, alpha, beta, n) result(s)
-      integer, intent(in) :: kind, n  !! model kind; number of Magnus-6 steps on [0, 1]
+   function fixed_n_trace(model, alpha, beta, n) result(s)
+      class(hill_model_t), intent(in) :: model  !! the model
+      integer, intent(in) :: n  !! number of Magnus-6 steps on [0, 1]
       real(wp), intent(in) :: alpha, beta  !! the point (alpha, beta)
       real(wp) :: s
       type(mesh_t) :: mesh
       type(trace_t) :: tr(1)
       real(wp) :: c0, c1, floor(1)
-      call model_split(kind, alpha, beta, 0.0_wp, c0, c1)
-      call build_mesh(kind, alpha, n, mesh)
-      call lane_traces(mesh, [c0], [c1], [coefficient_phase(c0, c1, shape_root_mean(kind, alpha))], tr, floor)
+      call model_split(model, alpha, beta, 0.0_wp, c0, c1)
+      call build_mesh(model, alpha, n, mesh)
+      call lane_traces(mesh, [c0], [c1], [coefficient_phase(c0, c1, model%shape_root_mean(alpha))], tr, floor)
       s = tr(1)%value
    end function fixed_n_trace
 end module hillstab_integrate_auto

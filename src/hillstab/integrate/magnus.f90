@@ -30,7 +30,7 @@
 !> type(trace_t) :: tr
 !> type(work_stats_t) :: stats
 !> type(error_t), allocatable :: error
-!> call trace_magnus(hill_model_t(model_elastic, 9.8_wp, 2.47_wp, 0.0_wp), 6, 1.0e-10_wp, tr, stats, error)
+!> call trace_magnus(elastic_model_t(), hill_point_t(9.8_wp, 2.47_wp, 0.0_wp), 6, 1.0e-10_wp, tr, stats, error)
 !> print *, tr%value, stats%n_evaluations
 !>```
 module hillstab_integrate_magnus
@@ -38,9 +38,9 @@ module hillstab_integrate_magnus
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use hillstab_integrate_refine, only: roundoff_level, propagator_condition, sensitivity_t, accumulate_sensitivity, &
       coefficient_level
-   use hillstab_hill_models, only: model_split
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_coefficient, check_point, model_split
+   use hillstab_hill_coefficient, only: phase_bound
    use hillstab_hill_transfer, only: scaled_matrix_t, scaled_identity, transfer_functions, transfer_increment, multiply_matrix, &
       multiply_scaled, &
       add_compensated, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
@@ -212,22 +212,23 @@ contains
    end subroutine multiply_exp_sl2
 
    !> q at the Gauss nodes of [t, t + h] for a method of the given order (2 or 3 nodes).
-   pure subroutine gauss_samples(model, order, t, h, q, n_nodes)
-      type(hill_model_t), intent(in) :: model
+   pure subroutine gauss_samples(model, point, order, t, h, q, n_nodes)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       integer, intent(in) :: order
       real(wp), intent(in) :: t, h
       real(wp), intent(out) :: q(3)
       integer, intent(out) :: n_nodes
       if (order == 4) then
          n_nodes = 2
-         q(1) = hill_coefficient(model, t + (0.5_wp - gauss2_offset)*h)
-         q(2) = hill_coefficient(model, t + (0.5_wp + gauss2_offset)*h)
+         q(1) = hill_coefficient(model, point, t + (0.5_wp - gauss2_offset)*h)
+         q(2) = hill_coefficient(model, point, t + (0.5_wp + gauss2_offset)*h)
          q(3) = 0.0_wp
       else
          n_nodes = 3
-         q(1) = hill_coefficient(model, t + (0.5_wp - gauss3_offset)*h)
-         q(2) = hill_coefficient(model, t + 0.5_wp*h)
-         q(3) = hill_coefficient(model, t + (0.5_wp + gauss3_offset)*h)
+         q(1) = hill_coefficient(model, point, t + (0.5_wp - gauss3_offset)*h)
+         q(2) = hill_coefficient(model, point, t + 0.5_wp*h)
+         q(3) = hill_coefficient(model, point, t + (0.5_wp + gauss3_offset)*h)
       end if
    end subroutine gauss_samples
 
@@ -244,8 +245,9 @@ contains
    end function step_generator
 
    !> a ← (one Magnus step over [t, t + h]) a; adds the Q evaluations to `n_evaluations`.
-   pure subroutine magnus_step(model, order, t, h, a, n_evaluations, compensation, low, from_right)
-      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
+   pure subroutine magnus_step(model, point, order, t, h, a, n_evaluations, compensation, low, from_right)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       integer, intent(in) :: order                    !! 4 or 6
       real(wp), intent(in) :: t, h                    !! step start and length
       type(scaled_matrix_t), intent(inout) :: a       !! propagator so far
@@ -255,32 +257,35 @@ contains
       logical, intent(in), optional :: from_right        !! see `multiply_exp_sl2`
       real(wp) :: q(3)
       integer :: n_nodes
-      call gauss_samples(model, order, t, h, q, n_nodes)
+      call gauss_samples(model, point, order, t, h, q, n_nodes)
       n_evaluations = n_evaluations + n_nodes
       call multiply_exp_sl2(a, step_generator(order, q, h), compensation, low, from_right)
    end subroutine magnus_step
 
    !> Propagator Φ(1) over [0, 1] with `n_steps` equal Magnus steps.
-   pure function half_period_magnus_uniform(model, order, n_steps) result(phi)
-      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
+   pure function half_period_magnus_uniform(model, point, order, n_steps) result(phi)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       integer, intent(in) :: order    !! 4 or 6
       integer, intent(in) :: n_steps  !! number of equal steps on [0, 1]
       type(scaled_matrix_t) :: phi
-      phi = uniform_product(model, order, n_steps, 1.0_wp)
+      phi = uniform_product(model, point, order, n_steps, 1.0_wp)
    end function half_period_magnus_uniform
 
    !> Monodromy over the full period [0, 2] with `n_steps` equal Magnus steps (no use of
    !> the symmetry of q: a fixed-mesh reference for order tests and benchmarks).
-   pure function monodromy_magnus_uniform(model, order, n_steps) result(m)
-      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
+   pure function monodromy_magnus_uniform(model, point, order, n_steps) result(m)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       integer, intent(in) :: order    !! 4 or 6
       integer, intent(in) :: n_steps  !! number of equal steps on [0, 2]
       type(scaled_matrix_t) :: m
-      m = uniform_product(model, order, n_steps, 2.0_wp)
+      m = uniform_product(model, point, order, n_steps, 2.0_wp)
    end function monodromy_magnus_uniform
 
-   pure function uniform_product(model, order, n_steps, length) result(a)
-      type(hill_model_t), intent(in) :: model
+   pure function uniform_product(model, point, order, n_steps, length) result(a)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       integer, intent(in) :: order, n_steps
       real(wp), intent(in) :: length
       type(scaled_matrix_t) :: a
@@ -291,7 +296,7 @@ contains
       a = scaled_identity()
       n_evaluations = 0
       do i = 0, n_steps - 1
-         call magnus_step(model, order, i*h, h, a, n_evaluations)
+         call magnus_step(model, point, order, i*h, h, a, n_evaluations)
       end do
    end function uniform_product
 
@@ -371,8 +376,9 @@ contains
    !> two halves of the last step when it would otherwise end on an odd count.
    !> `prefix(j)` is Φ at the end of the j-th pair of steps (`prefix(0)` = I), for
    !> `block_estimate`.
-   subroutine adaptive_march(model, order, theta, mesh, n_mesh, phi, stats, log_peak, sensitivity, prefix)
-      type(hill_model_t), intent(in) :: model
+   subroutine adaptive_march(model, point, order, theta, mesh, n_mesh, phi, stats, log_peak, sensitivity, prefix)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       integer, intent(in) :: order
       real(wp), intent(in) :: theta
       real(wp), allocatable, intent(out) :: mesh(:)
@@ -399,10 +405,10 @@ contains
       log_peak = log(2.0_wp)
       t = 0.0_wp
       ! first guess from the size of q at the start (the dip of Q sits at τ = 0)
-      h = min(max_step, theta/sqrt(abs(hill_coefficient(model, 0.0_wp)) + 1.0e-300_wp))
+      h = min(max_step, theta/sqrt(abs(hill_coefficient(model, point, 0.0_wp)) + 1.0e-300_wp))
       stats%n_evaluations = stats%n_evaluations + 1
       slope_before = 0.0_wp  ! q is even: q'(0) = 0
-      call model_split(model%kind, model%alpha, model%beta, model%epsilon, c0, c1)
+      call model_split(model, point%alpha, point%beta, point%epsilon, c0, c1)
       closing = 0
       do while (t < 1.0_wp)
          if (closing == 0 .and. t + 1.05_wp*h >= 1.0_wp) then
@@ -420,7 +426,7 @@ contains
             ! t + h would be a jump of q, a phase error √|q|·ulp(t) per step)
             h = (t + h) - t
          end if
-         call gauss_samples(model, order, t, h, q, n_nodes)
+         call gauss_samples(model, point, order, t, h, q, n_nodes)
          stats%n_evaluations = stats%n_evaluations + n_nodes
          lambda = local_scale(order, q, h, slope_before)
          if (lambda*h > reject_factor*theta .and. h > 1.0e-12_wp) then
@@ -470,8 +476,9 @@ contains
    end subroutine adaptive_march
 
    !> Φ(1) on a given mesh of [0, 1], each interval split into `split` equal steps.
-   subroutine mesh_product(model, order, mesh, n_mesh, split, phi, stats)
-      type(hill_model_t), intent(in) :: model
+   subroutine mesh_product(model, point, order, mesh, n_mesh, split, phi, stats)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       integer, intent(in) :: order, n_mesh, split
       real(wp), intent(in) :: mesh(0:n_mesh)
       type(scaled_matrix_t), intent(out) :: phi
@@ -484,7 +491,7 @@ contains
       do i = 1, n_mesh
          h = (mesh(i) - mesh(i - 1))/split
          do j = 0, split - 1
-            call magnus_step(model, order, mesh(i - 1) + j*h, h, phi, stats%n_evaluations, carry, low)
+            call magnus_step(model, point, order, mesh(i - 1) + j*h, h, phi, stats%n_evaluations, carry, low)
          end do
       end do
       phi%m = phi%m + low
@@ -509,8 +516,9 @@ contains
    !> H_0 = S_coarse, H_B = S_fine, ΔS_b = H_b − H_{b−1}. The fine parts are the march's
    !> `prefix`; the coarse parts are multiplied here from τ = 1 backwards (half the
    !> march's steps: this is the plain check's coarse product too, returned as `m_coarse`).
-   function block_estimate(model, order, mesh, n_mesh, prefix, m_fine, stats, m_coarse) result(total)
-      type(hill_model_t), intent(in) :: model
+   function block_estimate(model, point, order, mesh, n_mesh, prefix, m_fine, stats, m_coarse) result(total)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       integer, intent(in) :: order, n_mesh
       real(wp), intent(in) :: mesh(0:n_mesh)
       type(scaled_matrix_t), intent(in) :: prefix(0:)   !! Φ_fine at the end of each pair
@@ -531,7 +539,7 @@ contains
       before = m_fine
       do j = n_pairs, 1, -1
          ! compensated as the forward products are (a plain product errs by ε per step)
-         call magnus_step(model, order, mesh(2*j - 2), mesh(2*j) - mesh(2*j - 2), suffix, stats%n_evaluations, &
+         call magnus_step(model, point, order, mesh(2*j - 2), mesh(2*j) - mesh(2*j - 2), suffix, stats%n_evaluations, &
                           carry, low, from_right=.true.)
          stats%n_steps = stats%n_steps + 1
          if (mod(j - 1, block_pairs) == 0 .or. j == 1) then
@@ -575,8 +583,9 @@ contains
    !> steps of all passes (march, check, refinements) and every Q evaluation. When the
    !> tolerance cannot be met (round-off, or more than 2^17 steps on [0, 1]) the best
    !> monodromy is returned together with an `err_integration` error.
-   subroutine monodromy_magnus(model, order, tolerance, m, stats, error, error_estimate)
-      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
+   subroutine monodromy_magnus(model, point, order, tolerance, m, stats, error, error_estimate)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       integer, intent(in) :: order                  !! 4 or 6
       real(wp), intent(in) :: tolerance             !! target |ΔS|/max(1, |S|)
       type(scaled_matrix_t), intent(out) :: m       !! monodromy over [0, 2]
@@ -597,7 +606,7 @@ contains
       stats = work_stats_t()
       m = scaled_identity()
       if (present(error_estimate)) error_estimate = huge(1.0_wp)
-      call check_model(model, error)
+      call check_point(model, point, error)
       if (allocated(error)) return
       if (order /= 4 .and. order /= 6) then
          write (buffer, '(a,i0)') "Magnus order must be 4 or 6, got ", order
@@ -613,16 +622,16 @@ contains
       else
          theta = min(max_theta, theta_constant_6*tolerance**(1.0_wp/6))
       end if
-      call adaptive_march(model, order, theta, mesh, n_mesh, phi, stats, log_peak, sensitivity, prefix)
-      call model_split(model%kind, model%alpha, model%beta, model%epsilon, c0, c1)
+      call adaptive_march(model, point, order, theta, mesh, n_mesh, phi, stats, log_peak, sensitivity, prefix)
+      call model_split(model, point%alpha, point%beta, point%epsilon, c0, c1)
       m = monodromy_from_half_period(phi)
-      blocks = block_estimate(model, order, mesh, n_mesh, prefix, m, stats, m_check)
+      blocks = block_estimate(model, point, order, mesh, n_mesh, prefix, m, stats, m_check)
       ratio = 2.0_wp**order
       difference = relative_trace_difference(m, m_check)
       estimate = richardson_safety*max(difference, blocks)/(ratio - 1.0_wp)
       split = 1
       tr = trace_of(m)
-      phase = phase_bound(model)
+      phase = phase_bound(model, point)
       noise = roundoff_level(log_peak, tr%log_abs, n_mesh, phase) + coefficient_level(sensitivity, c0, m, tr%log_abs)
       stagnated = .false.
       do pass = 1, max_refinements
@@ -634,7 +643,7 @@ contains
          if (real(factor, wp)*split*n_mesh > real(max_steps, wp)) exit
          m_check = m
          split = split*factor
-         call mesh_product(model, order, mesh, n_mesh, split, phi, stats)
+         call mesh_product(model, point, order, mesh, n_mesh, split, phi, stats)
          m = monodromy_from_half_period(phi)
          previous = estimate
          previous_difference = difference
@@ -664,8 +673,9 @@ contains
    end subroutine monodromy_magnus
 
    !> Trace of `monodromy_magnus`.
-   subroutine trace_magnus(model, order, tolerance, tr, stats, error, error_estimate)
-      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
+   subroutine trace_magnus(model, point, order, tolerance, tr, stats, error, error_estimate)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       integer, intent(in) :: order                  !! 4 or 6
       real(wp), intent(in) :: tolerance             !! target |ΔS|/max(1, |S|)
       type(trace_t), intent(out) :: tr  !! the trace S
@@ -675,7 +685,7 @@ contains
       real(wp), intent(out), optional :: error_estimate  !! the Richardson estimate of |dS|/max(1, |S|)
       type(scaled_matrix_t) :: m
       real(wp) :: estimate
-      call monodromy_magnus(model, order, tolerance, m, stats, error, estimate)
+      call monodromy_magnus(model, point, order, tolerance, m, stats, error, estimate)
       tr = trace_of(m)
       ! no estimate when the method stopped before measuring one (bad input)
       if (estimate < huge(1.0_wp)) tr%error_estimate = estimate

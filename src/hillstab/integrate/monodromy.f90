@@ -12,7 +12,7 @@
 !>```fortran
 !> type(trace_t) :: tr
 !> type(error_t), allocatable :: error
-!> call monodromy_trace(hill_model_t(model_elastic, 9.8_wp, 2.47_wp, 0.0_wp), &
+!> call monodromy_trace(elastic_model_t(), hill_point_t(9.8_wp, 2.47_wp, 0.0_wp), &
 !>                      method_t(method_from_name("magnus6"), tolerance=1.0e-10_wp), tr, error)
 !> print *, tr%value, method_description(method_magnus6)
 !>```
@@ -20,8 +20,8 @@ module hillstab_integrate_monodromy
    use hillstab_core_kinds, only: wp, log_huge
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
    use hillstab_core_text, only: name_position, alternatives_text, integer_text
-   use hillstab_hill_coefficient, only: hill_model_t, check_model, sampling_endpoint, sampling_count
-   use hillstab_hill_models, only: model_shape_range, coefficient_range, model_split, check_model_batch
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, check_point, check_batch, coefficient_range, model_split
+   use hillstab_hill_coefficient, only: sampling_endpoint, sampling_count
    use hillstab_hill_floquet, only: bounds_verdict, bounds_stable, bounds_unstable, near_threshold
    use hillstab_hill_transfer, only: scaled_matrix_t, multiply_matrix, trace_t, trace_from_value
    use hillstab_hill_formulas, only: trace_formula
@@ -122,10 +122,11 @@ module hillstab_integrate_monodromy
 
 contains
 
-   !> Prepare what batches of the points (model%kind, model%alpha, β_j, model%epsilon)
+   !> Prepare what batches of the points (row%alpha, β_j, row%epsilon) of a model
    !> can share; pass the plan to `monodromy_trace_batch`.
-   subroutine prepare_batch(model, betas, method, plan, need)
-      type(hill_model_t), intent(in) :: model  !! kind, alpha and epsilon of the batch (beta ignored)
+   subroutine prepare_batch(model, row, betas, method, plan, need)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: row     !! α and ε of the batch (β ignored)
       real(wp), intent(in) :: betas(:)  !! the betas of the batch
       type(method_t), intent(in) :: method  !! how the traces will be computed
       type(batch_plan_t), intent(out) :: plan  !! what the batches can share
@@ -133,7 +134,7 @@ contains
       logical :: screen
       screen = .false.
       if (present(need)) screen = need < need_trace
-      if (method%kind == method_auto) call auto_prepare(model%kind, model%alpha, model%epsilon, betas, &
+      if (method%kind == method_auto) call auto_prepare(model, row%alpha, row%epsilon, betas, &
                                                        method%tolerance, plan%auto, screen)
    end subroutine prepare_batch
 
@@ -144,21 +145,22 @@ contains
    !> of an undamped point. Their traces stand for S alone where it decides nothing else:
    !> 0 for |S| < 2, 3 for S > 2, with error estimate 0 (no column of S is written where the
    !> need is below need_trace).
-   pure subroutine settle_by_bounds(model, betas, need, traces, settled)
-      type(hill_model_t), intent(in) :: model  !! kind, alpha and epsilon of the batch
+   pure subroutine settle_by_bounds(model, row, betas, need, traces, settled)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: row     !! α and ε of the batch (β ignored)
       real(wp), intent(in) :: betas(:)         !! the betas of the batch
       integer, intent(in) :: need              !! need_verdict or need_growth
       type(trace_t), intent(inout) :: traces(:)  !! the settled points' stand-ins
       logical, intent(out) :: settled(:)       !! which points are settled
       real(wp) :: q_min, q_max, w_min, w_max, c0, c1
       integer :: j, verdict
-      call model_shape_range(model%kind, model%alpha, w_min, w_max)
+      call model%shape_range(row%alpha, w_min, w_max)
       do j = 1, size(betas)
-         call model_split(model%kind, model%alpha, betas(j), model%epsilon, c0, c1)
+         call model_split(model, row%alpha, betas(j), row%epsilon, c0, c1)
          call coefficient_range(c0, c1, w_min, w_max, q_min, q_max)
          verdict = bounds_verdict(q_min, q_max)
          settled(j) = verdict == bounds_stable .or. (verdict == bounds_unstable .and. need == need_verdict .and. &
-                                                    .not. model%epsilon > 0.0_wp)
+                                                    .not. row%epsilon > 0.0_wp)
          if (.not. settled(j)) cycle
          if (verdict == bounds_stable) then
             traces(j) = trace_from_value(0.0_wp)
@@ -315,19 +317,20 @@ contains
    end function swing_monodromy
 
    !> Trace of the one-period monodromy of the χ equation by the chosen method.
-   subroutine monodromy_trace(model, method, tr, error, stats)
-      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
+   subroutine monodromy_trace(model, point, method, tr, error, stats)
+      class(hill_model_t), intent(in) :: model  !! the model of Q
+      type(hill_point_t), intent(in) :: point   !! the Hill equation's α, β and damping ε
       type(method_t), intent(in) :: method  !! method and its settings
       type(trace_t), intent(out) :: tr  !! the trace S (S1 of the chi equation when epsilon > 0)
       !> what failed (err_accuracy: tr is the best value); unallocated on success
       type(error_t), allocatable, intent(out) :: error
       type(work_stats_t), intent(out), optional :: stats  !! work done (Q evaluations, steps)
       type(work_stats_t) :: work
-      call check_model(model, error)
+      call check_point(model, point, error)
       if (allocated(error)) return
       select case (method%kind)
       case (method_formula)
-         tr = trace_formula(model)
+         tr = trace_formula(model, point)
          work = work_stats_t(2, 0, 2)
       case (method_segments)
          if (method%n_segments < 1 .or. method%n_segments > max_segments) then
@@ -339,18 +342,18 @@ contains
             call set_error(error, err_invalid_parameter, "unknown sampling")
             return
          end if
-         tr = trace_segmented(model, method%n_segments, method%sampling)
+         tr = trace_segmented(model, point, method%n_segments, method%sampling)
          work = work_stats_t(method%n_segments, 0, method%n_segments)
       case (method_gsl)
-         call trace_gsl(model, method%tolerance, tr, work, error)
+         call trace_gsl(model, point, method%tolerance, tr, work, error)
       case (method_rk)
-         call trace_rk(model, method%tolerance, tr, error, work)
+         call trace_rk(model, point, method%tolerance, tr, error, work)
       case (method_auto)
-         call trace_auto(model, method%tolerance, tr, work, error)
+         call trace_auto(model, point, method%tolerance, tr, work, error)
       case (method_magnus4)
-         call trace_magnus(model, 4, method%tolerance, tr, work, error)
+         call trace_magnus(model, point, 4, method%tolerance, tr, work, error)
       case (method_magnus6)
-         call trace_magnus(model, 6, method%tolerance, tr, work, error)
+         call trace_magnus(model, point, 6, method%tolerance, tr, work, error)
       case default
          call set_error(error, err_invalid_parameter, "method '"//method_name(method%kind)// &
             "' is not available in this build")
@@ -362,8 +365,10 @@ contains
    !> auto shares its meshes and coefficient values across the batch (much faster than
    !> point by point); the other methods go point by point. `failed(j)` marks points that
    !> could not be computed; `error` describes the first of them.
-   recursive subroutine monodromy_trace_batch(model, betas, method, traces, failed, error, stats, plan, inaccurate, need, paper)
-      type(hill_model_t), intent(in) :: model  !! kind, alpha and epsilon of the batch (beta ignored)
+   recursive subroutine monodromy_trace_batch(model, row, betas, method, traces, failed, error, stats, plan, inaccurate, &
+                                              need, paper)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: row     !! α and ε of the batch (β ignored)
       real(wp), intent(in) :: betas(:)  !! the betas of the batch
       type(method_t), intent(in) :: method  !! method and its settings
       !> S of each beta (where a verdict settled the need: the screening value, its bound as
@@ -384,7 +389,7 @@ contains
       type(work_stats_t) :: work, part
       logical :: reached(size(betas)), roundoff(size(betas)), settled(size(betas))
       type(error_t), allocatable :: point_error
-      type(hill_model_t) :: point
+      type(hill_point_t) :: single
       type(method_t) :: screening
       type(trace_t), allocatable :: rest(:), screened(:)
       logical, allocatable :: rest_failed(:), rest_inaccurate(:)
@@ -407,12 +412,12 @@ contains
          ! first what the range of q decides, then the screening pass; the points they settle
          ! are done, the others computed in full
          ! (an invalid point settles nothing: the full computation below reports it)
-         call check_model_batch(model%kind, model%alpha, model%epsilon, betas, point_error)
+         call check_batch(model, row%alpha, row%epsilon, betas, point_error)
          if (allocated(point_error)) then
             deallocate (point_error)
             settled = .false.
          else
-            call settle_by_bounds(model, betas, wanted, traces, settled)
+            call settle_by_bounds(model, row, betas, wanted, traces, settled)
          end if
          if (.not. all(settled)) then
             ! the points left, by index (no packed copies of the traces)
@@ -420,34 +425,34 @@ contains
             allocate (screened(size(open)))
             if (method%kind == method_auto) then
                if (present(plan)) then
-                  call trace_auto_screen(model%kind, model%alpha, model%epsilon, betas(open), screened, part, &
+                  call trace_auto_screen(model, row%alpha, row%epsilon, betas(open), screened, part, &
                                          point_error, plan%auto)
                else
-                  call trace_auto_screen(model%kind, model%alpha, model%epsilon, betas(open), screened, part, &
+                  call trace_auto_screen(model, row%alpha, row%epsilon, betas(open), screened, part, &
                                          point_error)
                end if
                call add_work(work, part)
                if (.not. allocated(point_error)) then
                   do j = 1, size(open)
                      traces(open(j)) = screened(j)
-                     settled(open(j)) = verdict_is_certain(screened(j), model%epsilon, method%tolerance, wanted, &
+                     settled(open(j)) = verdict_is_certain(screened(j), row%epsilon, method%tolerance, wanted, &
                                                            paper_side)
                   end do
                end if
             else
                screening = method
                screening%tolerance = max(method%tolerance, screen_tolerance)
-               point = model
+               single = row
                do j = 1, size(open)
-                  point%beta = betas(open(j))
-                  call monodromy_trace(point, screening, traces(open(j)), point_error, part)
+                  single%beta = betas(open(j))
+                  call monodromy_trace(model, single, screening, traces(open(j)), point_error, part)
                   call add_work(work, part)
                   if (allocated(point_error)) then
                      deallocate (point_error)
                      cycle
                   end if
                   traces(open(j))%error_estimate = screen_safety*traces(open(j))%error_estimate
-                  settled(open(j)) = verdict_is_certain(traces(open(j)), model%epsilon, method%tolerance, wanted, &
+                  settled(open(j)) = verdict_is_certain(traces(open(j)), row%epsilon, method%tolerance, wanted, &
                                                         paper_side)
                end do
             end if
@@ -459,7 +464,7 @@ contains
          end if
          call unsettled_points(settled, open)
          allocate (rest(size(open)), rest_failed(size(open)), rest_inaccurate(size(open)))
-         call monodromy_trace_batch(model, betas(open), method, rest, rest_failed, error, part, plan, rest_inaccurate)
+         call monodromy_trace_batch(model, row, betas(open), method, rest, rest_failed, error, part, plan, rest_inaccurate)
          call add_work(work, part)
          traces(open) = rest
          failed(open) = rest_failed
@@ -469,10 +474,10 @@ contains
       end if
       if (method%kind == method_auto) then
          if (present(plan)) then
-            call trace_auto_batch(model%kind, model%alpha, model%epsilon, betas, method%tolerance, traces, work, &
+            call trace_auto_batch(model, row%alpha, row%epsilon, betas, method%tolerance, traces, work, &
                error, plan%auto, reached, roundoff)
          else
-            call trace_auto_batch(model%kind, model%alpha, model%epsilon, betas, method%tolerance, traces, work, &
+            call trace_auto_batch(model, row%alpha, row%epsilon, betas, method%tolerance, traces, work, &
                error, reached=reached, roundoff=roundoff)
          end if
          if (allocated(error)) then
@@ -492,9 +497,9 @@ contains
          deallocate (error)
       end if
       do j = 1, size(betas)
-         point = model
-         point%beta = betas(j)
-         call monodromy_trace(point, method, traces(j), point_error, part)
+         single = row
+         single%beta = betas(j)
+         call monodromy_trace(model, single, method, traces(j), point_error, part)
          call add_work(work, part)
          if (allocated(point_error)) then
             if (point_error%code == err_accuracy) then

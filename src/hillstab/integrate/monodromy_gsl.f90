@@ -30,7 +30,7 @@
 !> type(trace_t) :: tr
 !> type(work_stats_t) :: stats
 !> type(error_t), allocatable :: error
-!> call trace_gsl(hill_model_t(model_elastic, 9.8_wp, 2.47_wp, 0.0_wp), 1.0e-12_wp, tr, stats, error)
+!> call trace_gsl(elastic_model_t(), hill_point_t(9.8_wp, 2.47_wp, 0.0_wp), 1.0e-12_wp, tr, stats, error)
 !>```
 module hillstab_integrate_monodromy_gsl
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_long, c_ptr, c_funptr, &
@@ -41,9 +41,9 @@ module hillstab_integrate_monodromy_gsl
    use hillstab_integrate_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
       roundoff_level, propagator_condition, trace_distance, first_step_factor, next_local_tolerance, sensitivity_t, &
       accumulate_sensitivity, coefficient_level, rk_rounding
-   use hillstab_hill_models, only: model_split
    use hillstab_core_stats, only: work_stats_t, add_work
-   use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_coefficient, check_point, model_split
+   use hillstab_hill_coefficient, only: phase_bound
    use hillstab_hill_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
    use hillstab_ffi_gsl, only: gsl_odeiv2_system, gsl_odeiv2_driver_view, gsl_odeiv2_evolve_view, gsl_odeiv2_step_rk8pd, &
       gsl_set_error_handler_off, gsl_odeiv2_driver_alloc_y_new, gsl_odeiv2_evolve_apply, gsl_odeiv2_driver_set_nmax, &
@@ -72,7 +72,8 @@ module hillstab_integrate_monodromy_gsl
 
    !> What the right-hand side needs: the model, and a counter of its calls.
    type :: rhs_context_t
-      type(hill_model_t) :: model
+      class(hill_model_t), allocatable :: model  !! the model (a copy: GSL reaches it through a C pointer)
+      type(hill_point_t) :: point                !! α, β, ε
       integer(int64) :: n_evaluations = 0
       !> GSL's t minus the time the solution has been advanced by (Σ h of the accepted
       !> steps): q is evaluated at t − lag (see `integrate_pair`)
@@ -98,7 +99,7 @@ contains
       context%peak(1) = max(context%peak(1), abs(y(1)), abs(y(2)))
       context%peak(2) = max(context%peak(2), abs(y(3)), abs(y(4)))
       context%terms = max(context%terms, [y(1)*y(1), y(4)*y(4), abs(y(3)*y(2))])
-      q = hill_coefficient(context%model, t - context%lag)
+      q = hill_coefficient(context%model, context%point, t - context%lag)
       dydt(1) = y(2)
       dydt(2) = -q*y(1)
       dydt(3) = y(4)
@@ -111,8 +112,9 @@ contains
    !> y(0) = (1, 0, 0, 1), to `t_end` with GSL's control epsilon `eps`,
    !> renormalizing each solution between chunks short enough that it cannot
    !> overflow. On return the solutions are exp(log_scale(j)) times the columns of y.
-   subroutine integrate_pair(model, t_end, eps, y, log_scale, log_peak, stats, error, log_condition_peak, sensitivity)
-      type(hill_model_t), intent(in) :: model
+   subroutine integrate_pair(model, point, t_end, eps, y, log_scale, log_peak, stats, error, log_condition_peak, sensitivity)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       real(wp), intent(in) :: t_end          !! end of the integration, > 0
       real(wp), intent(in) :: eps            !! epsabs = epsrel of GSL's y-control
       real(wp), intent(out) :: y(2, 2)       !! (scaled) u, u' and v, v' at t_end
@@ -149,15 +151,16 @@ contains
       log_peak = 0.0_wp
       stats = work_stats_t()
       previous = gsl_set_error_handler_off()
-      call model_split(model%kind, model%alpha, model%beta, model%epsilon, c0, c1)
+      call model_split(model, point%alpha, point%beta, point%epsilon, c0, c1)
 
       ! With c² = max(1, max|q|) the energy c²w² + w'² of any solution grows at most
       ! like exp(2c τ), and q is monotone in cos πτ, so its extremes on [0, 1] are at
       ! τ = 0 and 1: chunks of length ≤ chunk_log_growth/c keep u, v finite.
-      growth_rate = sqrt(max(1.0_wp, abs(hill_coefficient(model, 0.0_wp)), abs(hill_coefficient(model, 1.0_wp))))
+      growth_rate = sqrt(max(1.0_wp, abs(hill_coefficient(model, point, 0.0_wp)), abs(hill_coefficient(model, point, 1.0_wp))))
       n_chunks = max(1, ceiling(growth_rate*t_end/chunk_log_growth))
 
-      context%model = model
+      allocate (context%model, source=model)
+      context%point = point
       context%n_evaluations = 0
       context%peak = 0.0_wp
       system = gsl_odeiv2_system(c_funloc(hill_rhs), c_null_funptr, 4_c_size_t, c_loc(context))
@@ -215,7 +218,7 @@ contains
 
       if (status /= gsl_success) then
          write (buf, '(a,i0,a,es12.5,a,es12.5,a,es12.5,a,es9.2,a)') "GSL rk8pd failed with status ", status, &
-            " at tau = ", t, " (alpha = ", model%alpha, ", beta = ", model%beta, ", eps = ", eps, ")"
+            " at tau = ", t, " (alpha = ", point%alpha, ", beta = ", point%beta, ", eps = ", eps, ")"
          if (status == gsl_failure) then
             call set_error(error, err_accuracy, trim(buf))
          else
@@ -266,7 +269,7 @@ contains
                top = max(log_scale(1), log_scale(2))
                call accumulate_sensitivity(integrals, state(1)*exp(log_scale(1) - top), state(3)*exp(log_scale(2) - top), &
                                            top, real(evolve_view%last_step, wp), &
-                                           hill_coefficient(model, t_start - lag_before + 0.5_wp*evolve_view%last_step) - c0)
+                                           hill_coefficient(model, point, t_start - lag_before + 0.5_wp*evolve_view%last_step) - c0)
                context%n_evaluations = context%n_evaluations + 1
             end if
             n = n + 1
@@ -278,8 +281,9 @@ contains
    !> Monodromy from the half period with GSL epsilon `eps`; `log_condition` is
    !> ln κ, κ = max|u-solution|·max|v-solution| over [0, 1] / max(1, |S|); `log_peak` the
    !> ln of the largest scaled condition of the propagator (`propagator_condition`).
-   subroutine half_period_monodromy(model, eps, m, log_condition, stats, error, log_peak, coefficient_noise)
-      type(hill_model_t), intent(in) :: model
+   subroutine half_period_monodromy(model, point, eps, m, log_condition, stats, error, log_peak, coefficient_noise)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       real(wp), intent(in) :: eps
       type(scaled_matrix_t), intent(out) :: m
       real(wp), intent(out) :: log_condition
@@ -293,14 +297,14 @@ contains
       type(sensitivity_t) :: sensitivity
       log_condition = 0.0_wp
       if (present(coefficient_noise)) coefficient_noise = 0.0_wp
-      call integrate_pair(model, 1.0_wp, eps, y, log_scale, log_peaks, stats, error, condition_peak, sensitivity)
+      call integrate_pair(model, point, 1.0_wp, eps, y, log_scale, log_peaks, stats, error, condition_peak, sensitivity)
       if (present(log_peak)) log_peak = condition_peak
       if (allocated(error)) return
       m = monodromy_from_half_period(y, log_scale(1), log_scale(2))
       tr = trace_of(m)
       log_condition = sum(log_peaks) - max(0.0_wp, tr%log_abs)
       if (present(coefficient_noise)) then
-         call model_split(model%kind, model%alpha, model%beta, model%epsilon, c0, c1)
+         call model_split(model, point%alpha, point%beta, point%epsilon, c0, c1)
          coefficient_noise = coefficient_level(sensitivity, c0, m, tr%log_abs)
       end if
    end subroutine half_period_monodromy
@@ -317,8 +321,9 @@ contains
    !> epsilon reaches its floor, GSL's control cannot meet it (GSL_FAILURE: rounding
    !> noise), or the traces differ by rounding noise only, the finest monodromy comes back
    !> with err_accuracy (round-off limited) and its estimate. `stats` counts every pass.
-   subroutine monodromy_gsl(model, tolerance, m, stats, error, error_estimate)
-      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
+   subroutine monodromy_gsl(model, point, tolerance, m, stats, error, error_estimate)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       real(wp), intent(in) :: tolerance         !! target error on S, scaled by max(1, |S|)
       type(scaled_matrix_t), intent(out) :: m   !! monodromy over [0, 2]
       type(work_stats_t), intent(out) :: stats  !! rk8pd steps, rejections, Q evaluations
@@ -335,7 +340,7 @@ contains
       character(len=200) :: buffer
       stats = work_stats_t()
       if (present(error_estimate)) error_estimate = -1.0_wp
-      call check_model(model, error)
+      call check_point(model, point, error)
       if (allocated(error)) return
       call check_tolerance(tolerance, error)
       if (allocated(error)) return
@@ -343,7 +348,7 @@ contains
       eps = max(gsl_epsilon(tolerance, 0.0_wp), 10.0_wp*smallest_gsl_epsilon)
       ! the first pass: loosen the epsilon while GSL's control cannot meet it at all
       do loosening = 1, 6
-         call half_period_monodromy(model, eps, best, log_condition, part, run_error, log_peak, coefficient_noise)
+         call half_period_monodromy(model, point, eps, best, log_condition, part, run_error, log_peak, coefficient_noise)
          call add_work(stats, part)
          if (.not. allocated(run_error)) exit
          if (run_error%code /= err_accuracy .or. eps > 1.0e-6_wp) then
@@ -357,7 +362,7 @@ contains
          return
       end if
       tr = trace_of(best)
-      phase = phase_bound(model)
+      phase = phase_bound(model, point)
       call refine(ladder, tr, .false., roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding) &
                   + coefficient_noise)
       last_coefficient_noise = coefficient_noise
@@ -368,7 +373,7 @@ contains
          ! error is κ times its epsilon and two loose passes can agree on a wrong value
          eps = next_local_tolerance(eps, merge(first_step_factor(log_peak, tr%log_abs), 10.0_wp, run == 2), &
                                     smallest_gsl_epsilon)
-         call half_period_monodromy(model, eps, trial, log_condition, part, run_error, log_peak, coefficient_noise)
+         call half_period_monodromy(model, point, eps, trial, log_condition, part, run_error, log_peak, coefficient_noise)
          call add_work(stats, part)
          if (allocated(run_error)) then
             if (run_error%code /= err_accuracy) then
@@ -380,7 +385,7 @@ contains
                estimate = ladder%difference
             else
                ! only one value so far: compare it with a pass ten times looser
-               call half_period_monodromy(model, 100.0_wp*eps, trial, log_condition, part, run_error, log_peak)
+               call half_period_monodromy(model, point, 100.0_wp*eps, trial, log_condition, part, run_error, log_peak)
                call add_work(stats, part)
                if (allocated(run_error)) then
                   call move_alloc(run_error, error)
@@ -415,8 +420,9 @@ contains
 
    !> Trace S of `monodromy_gsl`, with its error estimate; on err_accuracy (round-off
    !> limited) the best value is still returned.
-   subroutine trace_gsl(model, tolerance, tr, stats, error)
-      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
+   subroutine trace_gsl(model, point, tolerance, tr, stats, error)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       real(wp), intent(in) :: tolerance         !! target error on S, scaled by max(1, |S|)
       type(trace_t), intent(out) :: tr          !! S and its error estimate
       type(work_stats_t), intent(out) :: stats  !! rk8pd steps, rejections, Q evaluations
@@ -424,7 +430,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(scaled_matrix_t) :: m
       real(wp) :: estimate
-      call monodromy_gsl(model, tolerance, m, stats, error, estimate)
+      call monodromy_gsl(model, point, tolerance, m, stats, error, estimate)
       if (allocated(error)) then
          if (error%code /= err_accuracy) return
       end if
@@ -435,19 +441,20 @@ contains
    !> Monodromy by direct rk8pd integration over the whole period [0, 2], without
    !> the symmetry (GSL epsilon tolerance·gsl_tolerance_factor, no rerun): a check
    !> of `monodromy_gsl`, at twice the work.
-   subroutine monodromy_gsl_full_period(model, tolerance, m, stats, error)
-      type(hill_model_t), intent(in) :: model  !! the Hill equation: model kind, alpha, beta, damping epsilon
+   subroutine monodromy_gsl_full_period(model, point, tolerance, m, stats, error)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       real(wp), intent(in) :: tolerance         !! sets GSL's control epsilon
       type(scaled_matrix_t), intent(out) :: m   !! monodromy over [0, 2]
       type(work_stats_t), intent(out) :: stats  !! rk8pd steps, rejections, Q evaluations
       type(error_t), allocatable, intent(out) :: error  !! GSL failure; unallocated on success
       real(wp) :: y(2, 2), log_scale(2), log_peak(2), top
       stats = work_stats_t()
-      call check_model(model, error)
+      call check_point(model, point, error)
       if (allocated(error)) return
       call check_tolerance(tolerance, error)
       if (allocated(error)) return
-      call integrate_pair(model, 2.0_wp, gsl_epsilon(tolerance, 0.0_wp), y, log_scale, log_peak, stats, error)
+      call integrate_pair(model, point, 2.0_wp, gsl_epsilon(tolerance, 0.0_wp), y, log_scale, log_peak, stats, error)
       if (allocated(error)) return
       top = maxval(log_scale)
       m%m(:, 1) = y(:, 1)*exp(max(log_scale(1) - top, -log_huge))

@@ -16,7 +16,7 @@
 !>```fortran
 !> type(trace_t) :: tr
 !> type(error_t), allocatable :: error
-!> call trace_rk(hill_model_t(model_elastic, 9.8_wp, 2.47_wp, 0.0_wp), 1.0e-10_wp, tr, error)
+!> call trace_rk(elastic_model_t(), hill_point_t(9.8_wp, 2.47_wp, 0.0_wp), 1.0e-10_wp, tr, error)
 !>```
 module hillstab_integrate_monodromy_rk
    use hillstab_core_kinds, only: wp, int64
@@ -24,9 +24,9 @@ module hillstab_integrate_monodromy_rk
    use hillstab_integrate_refine, only: refinement_t, start_refinement, refine, refine_more, refine_roundoff, &
       roundoff_level, propagator_condition, first_step_factor, next_local_tolerance, sensitivity_t, &
       accumulate_sensitivity, coefficient_level, rk_rounding
-   use hillstab_hill_models, only: model_split
    use hillstab_core_stats, only: work_stats_t, add_work
-   use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, check_model, phase_bound
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_coefficient, check_point, model_split
+   use hillstab_hill_coefficient, only: phase_bound
    use hillstab_hill_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
    use hillstab_integrate_rk, only: rk_system_t, rk_options_t, rk_step_t, rk_integrate, rk_dopri5, rk_dop853
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -55,7 +55,8 @@ module hillstab_integrate_monodromy_rk
    !> The even and odd solutions (u, u', v, v') of χ'' + q(τ) χ = 0 as one RK system; the
    !> observer stops the integration before either pair can overflow.
    type, extends(rk_system_t) :: even_odd_pair_t
-      type(hill_model_t) :: model
+      class(hill_model_t), allocatable :: model  !! the model
+      type(hill_point_t) :: point                !! α, β, ε
       !> largest u², v'², |v u'| of the current (unrescaled) stretch, for the condition
       real(wp) :: peak_terms(3) = 0.0_wp
       !> ln of the scales of the u and v pairs of the current stretch, the constant c₀ of q
@@ -83,8 +84,9 @@ contains
    end function rk_tolerances
 
    !> One-period monodromy M of the χ equation from the even/odd solutions on [0, 1].
-   subroutine monodromy_rk(model, tolerance, m, stats, error, method, local_tolerance, log_peak, coefficient_noise)
-      type(hill_model_t), intent(in) :: model  !! the Hill equation
+   subroutine monodromy_rk(model, point, tolerance, m, stats, error, method, local_tolerance, log_peak, coefficient_noise)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       real(wp), intent(in) :: tolerance        !! target error on S, scaled by max(1, |S|)
       type(scaled_matrix_t), intent(out) :: m  !! M = e^{log_scale} m
       type(work_stats_t), intent(out) :: stats !! steps, rejections, Q evaluations
@@ -109,7 +111,7 @@ contains
 
       stats = work_stats_t()
       m = scaled_matrix_t()
-      call check_model(model, error)
+      call check_point(model, point, error)
       if (allocated(error)) return
       if (.not. (ieee_is_finite(tolerance) .and. tolerance > 0.0_wp)) then
          write (buffer, '(es12.4)') tolerance
@@ -127,8 +129,9 @@ contains
       if (present(local_tolerance)) options%rtol = max(local_tolerance, tolerance_floor)
       options%atol = options%rtol
       options%max_steps = 1000000
-      pair%model = model
-      call model_split(model%kind, model%alpha, model%beta, model%epsilon, pair%c0, c1)
+      allocate (pair%model, source=model)
+      pair%point = point
+      call model_split(model, point%alpha, point%beta, point%epsilon, pair%c0, c1)
 
       ! y = (u, u', v, v') with the even and odd initial values
       y = [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]
@@ -186,8 +189,9 @@ contains
    !> finer one is returned with their difference as `tr%error_estimate`. When the local
    !> tolerance reaches its floor, or the values differ only by rounding noise, the finest
    !> value comes back with err_accuracy (round-off limited) and its estimate.
-   subroutine trace_rk(model, tolerance, tr, error, stats, method)
-      type(hill_model_t), intent(in) :: model  !! the Hill equation
+   subroutine trace_rk(model, point, tolerance, tr, error, stats, method)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       real(wp), intent(in) :: tolerance        !! target error on S, scaled by max(1, |S|)
       type(trace_t), intent(out) :: tr         !! S, flagged if it overflows; its error estimate
       !> integration failure; err_accuracy when round-off limited (`tr` then holds the best value)
@@ -207,11 +211,11 @@ contains
       call start_refinement(ladder, tolerance)
       local = max(ladder_start_factor*rk_tolerances(tolerance, kind), 10.0_wp*tolerance_floor)
       do run = 1, max_ladder_runs
-         call monodromy_rk(model, tolerance, m, part, error, method, local_tolerance=local, log_peak=log_peak, &
+         call monodromy_rk(model, point, tolerance, m, part, error, method, local_tolerance=local, log_peak=log_peak, &
                            coefficient_noise=coefficient_noise)
          call add_work(work, part)
          if (allocated(error)) exit
-         if (run == 1) phase = phase_bound(model)   ! (the model is known valid from here)
+         if (run == 1) phase = phase_bound(model, point)   ! (the model is known valid from here)
          tr = trace_of(m)
          call refine(ladder, tr, at_floor=local <= 1.001_wp*tolerance_floor .or. run == max_ladder_runs, &
                      noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding) &
@@ -240,7 +244,7 @@ contains
       real(wp), intent(in) :: t, y(:)
       real(wp), intent(out) :: dydt(:)
       real(wp) :: q
-      q = hill_coefficient(self%model, t)
+      q = hill_coefficient(self%model, self%point, t)
       dydt(1) = y(2)
       dydt(2) = -q*y(1)
       dydt(3) = y(4)
@@ -266,7 +270,7 @@ contains
          top = max(self%log_u, self%log_v)
          call accumulate_sensitivity(self%sensitivity, step%y(1)*exp(self%log_u - top), &
                                      step%y(3)*exp(self%log_v - top), top, step%h, &
-                                     hill_coefficient(self%model, step%t_old + 0.5_wp*step%h) - self%c0)
+                                     hill_coefficient(self%model, self%point, step%t_old + 0.5_wp*step%h) - self%c0)
          self%n_extra = self%n_extra + 1
       end if
       if (step%t < 1.0_wp) then

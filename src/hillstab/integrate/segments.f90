@@ -5,11 +5,13 @@
 !>
 !>```fortran
 !> type(trace_t) :: tr
-!> tr = trace_segmented(hill_model_t(model_elastic, 3.7_wp, 2.47_wp, 0.0_wp), 256, sampling_average)
+!> type(elastic_model_t) :: elastic
+!> tr = trace_segmented(elastic, hill_point_t(3.7_wp, 2.47_wp, 0.0_wp), 256, sampling_average)
 !>```
 module hillstab_integrate_segments
    use hillstab_core_kinds, only: wp
-   use hillstab_hill_coefficient, only: hill_model_t, segment_coefficients, hill_period
+   use hillstab_hill_model, only: hill_model_t, hill_point_t
+   use hillstab_hill_coefficient, only: segment_coefficients
    use hillstab_hill_transfer, only: scaled_matrix_t, scaled_identity, multiply_transfer, trace_t, trace_of
    implicit none
    private
@@ -17,17 +19,18 @@ module hillstab_integrate_segments
 
 contains
 
-   !> Monodromy of the χ equation over one period [0, 2] with q replaced by
-   !> `n` constant pieces (exact transfer matrix per piece).
-   pure function monodromy_segmented(model, n, sampling) result(a)
-      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
+   !> Monodromy of the χ equation over one period [0, P] (P = 2 unless the model's period
+   !> differs) with q replaced by `n` constant pieces (exact transfer matrix per piece).
+   pure function monodromy_segmented(model, point, n, sampling) result(a)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       integer, intent(in) :: n         !! number of pieces
       integer, intent(in) :: sampling  !! sampling_endpoint | sampling_midpoint | sampling_average
       type(scaled_matrix_t) :: a
       real(wp) :: q(n), h, carry
       integer :: i
-      call segment_coefficients(model, n, sampling, q)
-      h = hill_period/n
+      call segment_coefficients(model, point, n, sampling, q)
+      h = model%period()/n
       a = scaled_identity()
       carry = 0.0_wp
       do i = 1, n
@@ -38,10 +41,11 @@ contains
    end function monodromy_segmented
 
    !> Trace of `monodromy_segmented`.
-   pure function trace_segmented(model, n, sampling) result(tr)
-      type(hill_model_t), intent(in) :: model  !! model kind, alpha, beta, epsilon
+   pure function trace_segmented(model, point, n, sampling) result(tr)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       integer, intent(in) :: n, sampling  !! number of pieces; sampling_* constant
       type(trace_t) :: tr
-      tr = trace_of(monodromy_segmented(model, n, sampling))
+      tr = trace_of(monodromy_segmented(model, point, n, sampling))
    end function trace_segmented
 end module hillstab_integrate_segments

@@ -20,7 +20,9 @@ module hillstab_interop_capi
    use hillstab_core_kinds, only: wp, version_string
    use hillstab_core_error, only: error_t, error_code_name, set_error, err_invalid_parameter, err_overflow, err_accuracy
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
-   use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, check_model, model_elastic
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_coefficient, check_point
+   use hillstab_hill_models, only: model_from_code
+   use hillstab_hill_model_elastic, only: elastic_model_t
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_formulas, only: trace_damped_paper
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace
@@ -47,17 +49,19 @@ contains
       m = method_t(int(method), int(n_segments), int(sampling), real(tolerance, wp))
    end function make_method
 
-   !> Q(τ) of the model (elastic = 1, mathieu = 2), including the damping shift −ε²/4.
+   !> Q(τ) of the model (its code: HILLSTAB_MODEL_*), including the damping shift −ε²/4.
    function hillstab_c_coefficient(model, alpha, beta, epsilon, tau, q) result(status) &
       bind(C, name="hillstab_q")
-      integer(c_int), value, intent(in) :: model  !! HILLSTAB_MODEL_ELASTIC (1) or HILLSTAB_MODEL_MATHIEU (2)
+      integer(c_int), value, intent(in) :: model  !! a model code, HILLSTAB_MODEL_* (ELASTIC 1, MATHIEU 2, ...)
       real(c_double), value, intent(in) :: alpha, beta, epsilon, tau  !! alpha, beta, damping epsilon >= 0, and tau
       real(c_double), intent(inout) :: q  !! Q(tau) - epsilon**2/4 (untouched on failure)
       integer(c_int) :: status
-      type(hill_model_t) :: m
+      class(hill_model_t), allocatable :: m
+      type(hill_point_t) :: point
       type(error_t), allocatable :: error
-      m = hill_model_t(int(model), real(alpha, wp), real(beta, wp), real(epsilon, wp))
-      call check_model(m, error)
+      point = hill_point_t(real(alpha, wp), real(beta, wp), real(epsilon, wp))
+      call model_from_code(int(model), m, error)
+      if (.not. allocated(error)) call check_point(m, point, error)
       if (.not. allocated(error) .and. .not. ieee_is_finite(tau)) &
          call set_error(error, err_invalid_parameter, "tau must be finite")
       call record_outcome(error)
@@ -65,7 +69,7 @@ contains
          status = int(error%code, c_int)
          return
       end if
-      q = hill_coefficient(m, real(tau, wp))
+      q = hill_coefficient(m, point, real(tau, wp))
       status = 0
    end function hillstab_c_coefficient
 
@@ -82,7 +86,7 @@ contains
       integer(c_int) :: status
       real(c_double) :: log_modulus(2), floquet_exponent
       integer(c_int) :: stable, stable_paper
-      call evaluate(hill_model_t(int(model), real(alpha, wp), real(beta, wp), real(epsilon, wp)), &
+      call evaluate_code(int(model), hill_point_t(real(alpha, wp), real(beta, wp), real(epsilon, wp)), &
          make_method(method, n_segments, sampling, tolerance), trace, log_abs_trace, overflow, &
          log_modulus, floquet_exponent, stable, stable_paper, status)
    end function hillstab_c_trace
@@ -103,7 +107,7 @@ contains
       integer(c_int) :: status
       real(c_double) :: log_abs_trace
       integer(c_int) :: overflow
-      call evaluate(hill_model_t(int(model), real(alpha, wp), real(beta, wp), real(epsilon, wp)), &
+      call evaluate_code(int(model), hill_point_t(real(alpha, wp), real(beta, wp), real(epsilon, wp)), &
          make_method(method, n_segments, sampling, tolerance), trace, log_abs_trace, overflow, &
          log_moduli, floquet_exponent, stable, stable_paper, status)
    end function hillstab_c_floquet
@@ -113,8 +117,9 @@ contains
    !> status 0 or an error code, outputs untouched on error, except HILLSTAB_ERR_ACCURACY
    !> (the tolerance is below what double precision reaches there): the outputs then hold
    !> the best value, as the FORTRAN 77 routines' and the message says.
-   subroutine evaluate(model, method, s, logs, iovf, rlogm, mu, istab, ipaper, info)
-      type(hill_model_t), intent(in) :: model
+   subroutine evaluate(model, point, method, s, logs, iovf, rlogm, mu, istab, ipaper, info)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
       type(method_t), intent(in) :: method
       real(wp), intent(inout) :: s, logs, rlogm(2), mu
       integer(c_int), intent(inout) :: iovf, istab, ipaper
@@ -122,14 +127,14 @@ contains
       type(trace_t) :: tr
       type(floquet_t) :: f
       type(error_t), allocatable :: error
-      call monodromy_trace(model, method, tr, error)
+      call monodromy_trace(model, point, method, tr, error)
       call record_outcome(error)
       info = 0
       if (allocated(error)) then
          info = int(error%code, c_int)
          if (error%code /= err_accuracy) return
       end if
-      f = floquet_from_trace(tr, model%epsilon)
+      f = floquet_from_trace(tr, point%epsilon)
       s = tr%value
       logs = tr%log_abs
       iovf = 0
@@ -148,6 +153,26 @@ contains
          info = int(error%code, c_int)
       end if
    end subroutine evaluate
+
+   !> `evaluate` for the model of a code (HILLSTAB_MODEL_*); an unknown code is an error
+   !> (err_invalid_parameter), the outputs untouched.
+   subroutine evaluate_code(code, point, method, s, logs, iovf, rlogm, mu, istab, ipaper, info)
+      integer, intent(in) :: code  !! the model's code
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
+      type(method_t), intent(in) :: method
+      real(wp), intent(inout) :: s, logs, rlogm(2), mu
+      integer(c_int), intent(inout) :: iovf, istab, ipaper
+      integer(c_int), intent(out) :: info
+      class(hill_model_t), allocatable :: model
+      type(error_t), allocatable :: error
+      call model_from_code(code, model, error)
+      if (allocated(error)) then
+         call record_outcome(error)
+         info = int(error%code, c_int)
+         return
+      end if
+      call evaluate(model, point, method, s, logs, iovf, rlogm, mu, istab, ipaper, info)
+   end subroutine evaluate_code
 
    !> The paper's closed form eq. (37)/(48) (ε = 0 gives eq. (37)); ±DBL_MAX on overflow.
    !> No error channel: parameters outside the model's domain or non-finite give a
@@ -174,7 +199,7 @@ contains
       integer(c_int) :: status
       real(c_double) :: log_modulus(2), floquet_exponent
       integer(c_int) :: stable, stable_paper
-      call evaluate(hill_model_t(model_elastic, real(alpha, wp), real(beta, wp), real(epsilon, wp)), &
+      call evaluate(elastic_model_t(), hill_point_t(real(alpha, wp), real(beta, wp), real(epsilon, wp)), &
          method_t(method_formula), trace, log_abs_trace, overflow, log_modulus, floquet_exponent, stable, &
          stable_paper, status)
    end function hillstab_c_trace_paper_checked

@@ -38,7 +38,8 @@ end subroutine hstrace
 subroutine hsfloq(model, alpha, beta, eps, method, nseg, isamp, tol, s, mu, istab, info)
    use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t, err_accuracy
-   use hillstab_hill_coefficient, only: hill_model_t
+   use hillstab_hill_model, only: hill_model_t, hill_point_t
+   use hillstab_hill_models, only: model_from_code
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace
    use hillstab_integrate_monodromy, only: method_t, monodromy_trace
@@ -59,8 +60,11 @@ subroutine hsfloq(model, alpha, beta, eps, method, nseg, isamp, tol, s, mu, ista
    type(trace_t) :: tr
    type(floquet_t) :: f
    type(error_t), allocatable :: error
+   class(hill_model_t), allocatable :: q_model
    s = 0.0_wp; mu = 0.0_wp; istab = 0
-   call monodromy_trace(hill_model_t(model, alpha, beta, eps), method_t(method, nseg, isamp, tol), tr, error)
+   call model_from_code(model, q_model, error)
+   if (.not. allocated(error)) call monodromy_trace(q_model, hill_point_t(alpha, beta, eps), &
+      method_t(method, nseg, isamp, tol), tr, error)
    call record_outcome(error)
    info = 0
    if (allocated(error)) then

@@ -25,7 +25,8 @@ module hillstab_pendulum_analysis
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_system_t, pendulum_bounce_monodromy, pendulum_angle, &
       pendulum_energy, pendulum_energy_scale, pendulum_atol, px, pvx
    use hillstab_ffi_lapack, only: dgeev
-   use hillstab_hill_models, only: hill_model_t, model_elastic
+   use hillstab_hill_model, only: hill_point_t
+   use hillstab_hill_model_elastic, only: elastic_model_t
    use hillstab_hill_model_elastic, only: one_minus_alpha_over_pi2
    use hillstab_hill_transfer, only: scaled_matrix_t, scaled_identity
    use hillstab_integrate_magnus, only: magnus_step
@@ -188,7 +189,8 @@ contains
       real(wp) :: p11(0:steps), p12(0:steps), shape(0:steps), m(2, 2), w(2), log_w, h, target, value, before, &
                   big, law, lambda
       type(scaled_matrix_t) :: a
-      type(hill_model_t) :: model
+      type(elastic_model_t) :: elastic
+      type(hill_point_t) :: point
       integer(int64) :: n_evaluations
       integer :: j, n, n_max
       n_onset = -1.0_wp
@@ -197,14 +199,14 @@ contains
          n_onset = 0.0_wp
          return
       end if
-      model = hill_model_t(model_elastic, alpha, beta, 0.0_wp)
+      point = hill_point_t(alpha, beta, 0.0_wp)
       h = 2.0_wp/steps
       a = scaled_identity()
       n_evaluations = 0
       p11(0) = 1.0_wp
       p12(0) = 0.0_wp
       do j = 1, steps
-         call magnus_step(model, 6, (j - 1)*h, h, a, n_evaluations)
+         call magnus_step(elastic, point, 6, (j - 1)*h, h, a, n_evaluations)
          if (a%log_scale > 600.0_wp) return   ! growth beyond doubles within one period: no prediction
          p11(j) = a%m(1, 1)*exp(a%log_scale)
          p12(j) = a%m(1, 2)*exp(a%log_scale)

@@ -5,7 +5,7 @@ module test_scene
    use hillstab_core_kinds, only: wp, pi2
    use hillstab_core_error, only: error_t, err_input
    use hillstab_core_text, only: real_text, read_text_line, integer_text
-   use hillstab_hill_coefficient, only: model_elastic, model_mathieu, sampling_endpoint, sampling_average
+   use hillstab_hill_coefficient, only: sampling_endpoint, sampling_average
    use hillstab_integrate_monodromy, only: method_auto, method_segments
    use hillstab_batch_scene_types, only: scene_t, scene_namelist
    use hillstab_batch_scene_read, only: read_scene
@@ -23,6 +23,8 @@ module test_scene
       padded
    use hillstab_test_bad_scenes, only: bad_case_t, bad_cases, bad_case_text, write_bad_points_files, &
       delete_bad_points_files
+   use hillstab_hill_model_elastic, only: elastic_model_t
+   use hillstab_hill_model_mathieu, only: mathieu_model_t
    implicit none
    private
    public :: collect_scene, grid_of, points_of, coefficient_of
@@ -103,7 +105,7 @@ contains
       call check(ctx, .not. allocated(error), "defaults read")
       if (allocated(error)) return
       call check(ctx, scene%task%name == "chart", "task chart")
-      call check(ctx, scene%model == model_elastic, "model elastic")
+      call check(ctx, scene%model%name() == "elastic", "model elastic")
       call check(ctx, scene%method%kind == method_auto, "method auto")
       call check(ctx, scene%method%n_segments == 2, "n_segments 2")
       call check(ctx, scene%method%sampling == sampling_endpoint, "sampling endpoint")
@@ -138,7 +140,7 @@ contains
          call check(ctx, .false., error%message)
          return
       end if
-      call check(ctx, scene%model == model_mathieu, "model name is case-insensitive")
+      call check(ctx, scene%model%name() == "mathieu", "model name is case-insensitive")
       call check(ctx, scene%method%kind == method_segments .and. scene%method%n_segments == 64, "segments 64")
       call check(ctx, scene%method%sampling == sampling_average, "average")
       call check(ctx, scene%epsilon, 0.5_wp)
@@ -341,7 +343,7 @@ contains
          call check(ctx, .false., error%message)
          return
       end if
-      call check(ctx, second%task%name == first%task%name .and. second%model == first%model, "task, model")
+      call check(ctx, second%task%name == first%task%name .and. second%model%name() == first%model%name(), "task, model")
       call check(ctx, second%method%kind == first%method%kind .and. second%method%n_segments == 7 .and. &
                  second%method%sampling == first%method%sampling, "method")
       call check(ctx, second%method%tolerance, first%method%tolerance, rel=0.0_wp, abs=0.0_wp)

@@ -9,7 +9,6 @@
 module test_task_boundaries
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t, err_input
-   use hillstab_hill_coefficient, only: hill_model_t, model_elastic
    use hillstab_hill_transfer, only: trace_t
    use hillstab_integrate_monodromy, only: method_t, method_auto, monodromy_trace
    use hillstab_hill_formulas, only: trace_two_segment_paper
@@ -18,6 +17,8 @@ module test_task_boundaries
    use hillstab_test_files, only: run_text_scene
    use hillstab_test_progress, only: run_with_progress, progress_numbers
    use hillstab_test_scratch, only: scratch_prefix, write_file, read_lines, delete_file
+   use hillstab_hill_model, only: hill_point_t
+   use hillstab_hill_model_elastic, only: elastic_model_t
    implicit none
    private
    public :: collect_task_boundaries
@@ -182,7 +183,7 @@ contains
          real(wp), intent(in) :: alpha, beta
          type(trace_t) :: tr
          type(error_t), allocatable :: err
-         call monodromy_trace(hill_model_t(model_elastic, alpha, beta, 0.0_wp), &
+         call monodromy_trace(elastic_model_t(), hill_point_t(alpha, beta, 0.0_wp), &
                               method_t(method_auto, tolerance=1.0e-13_wp), tr, err)
          s = tr%value
       end function s
@@ -306,7 +307,7 @@ contains
       real(wp), intent(in) :: alpha, beta
       type(trace_t) :: tr
       type(error_t), allocatable :: error
-      call monodromy_trace(hill_model_t(model_elastic, alpha, beta, 0.0_wp), method_t(method_auto, tolerance=1.0e-12_wp), &
+      call monodromy_trace(elastic_model_t(), hill_point_t(alpha, beta, 0.0_wp), method_t(method_auto, tolerance=1.0e-12_wp), &
                            tr, error)
       excess = abs(tr%value) - 2.0_wp
    end function excess

@@ -9,7 +9,7 @@ module hillstab_batch_scene_checks
    use hillstab_core_kinds, only: wp, pi2
    use hillstab_core_error, only: error_t
    use hillstab_core_text, only: real_text, integer_text
-   use hillstab_hill_models, only: model_name, model_alpha_valid, model_alpha_domain
+   use hillstab_hill_model, only: hill_model_t
    use hillstab_integrate_monodromy, only: method_t, method_name, method_cost_grows, max_integrated_magnitude, max_segments
    use hillstab_batch_scene_file, only: fail
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -94,7 +94,7 @@ contains
    !> model takes any finite ν).
    subroutine check_alpha_domain(path, model, group, variable, alpha, error, where)
       character(len=*), intent(in) :: path  !! the scene file
-      integer, intent(in) :: model  !! the model code
+      class(hill_model_t), intent(in) :: model  !! the model (the domain of α)
       character(len=*), intent(in) :: group, variable  !! the namelist group
       real(wp), intent(in) :: alpha  !! a finite value
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable; unallocated when fine
@@ -102,9 +102,9 @@ contains
       character(len=:), allocatable :: prefix
       prefix = ""
       if (present(where)) prefix = where//": "
-      if (model_alpha_valid(model, alpha)) return
-      call fail(error, path, group, variable, prefix//"the "//model_name(model)//" model needs "// &
-         model_alpha_domain(model)//" (amplitude a < rho), got alpha = "//real_text(alpha))
+      if (model%alpha_valid(alpha)) return
+      call fail(error, path, group, variable, prefix//"the "//model%name()//" model needs "// &
+         model%alpha_domain()//" (amplitude a < rho), got alpha = "//real_text(alpha))
    end subroutine check_alpha_domain
 
    !> The integrating methods (magnus4, magnus6, rk, gsl) take steps in proportion to

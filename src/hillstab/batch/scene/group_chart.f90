@@ -15,6 +15,7 @@ module hillstab_batch_scene_group_chart
       var_integer, &
       begin_group, next_item, end_group
    use hillstab_batch_scene_checks, only: check_range, check_alpha_domain
+   use hillstab_hill_model, only: hill_model_t
    implicit none
    private
    public :: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point, grid_size_text
@@ -63,7 +64,7 @@ contains
    subroutine read_chart_group(file, group, model, grid, values, error)
       type(scene_file_t), intent(in) :: file  !! the scene file
       type(group_t), intent(in) :: group      !! the declaration (`chart_group`, maybe other defaults)
-      integer, intent(in) :: model            !! the model code (the domain of α)
+      class(hill_model_t), intent(in) :: model  !! the model (the domain of α)
       type(chart_grid_t), intent(out) :: grid  !! the grid
       type(group_values_t), intent(out) :: values  !! the effective values
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable

@@ -17,6 +17,7 @@ module hillstab_batch_scene_group_points
       begin_group, next_item, end_group
    use hillstab_batch_scene_checks, only: check_alpha_domain, max_magnitude, max_points
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use hillstab_hill_model, only: hill_model_t
    implicit none
    private
    public :: points_group, read_points_group, read_points_file
@@ -37,7 +38,7 @@ contains
    subroutine read_points_group(scene_file, group, model, path, pairs, values, error, optional)
       type(scene_file_t), intent(in) :: scene_file  !! the scene file
       type(group_t), intent(in) :: group      !! the declaration (`points_group`)
-      integer, intent(in) :: model            !! the model code (the domain of α)
+      class(hill_model_t), intent(in) :: model  !! the model (the domain of α)
       character(len=:), allocatable, intent(out) :: path  !! the points file named
       real(wp), allocatable, intent(out) :: pairs(:, :)  !! (2, n): α, β in file order
       type(group_values_t), intent(out) :: values  !! the effective values
@@ -75,7 +76,7 @@ contains
    !> max_line_length characters.
    subroutine read_points_file(source, model, path, points, error)
       character(len=*), intent(in) :: source  !! the scene file (for messages)
-      integer, intent(in) :: model            !! the model code (the domain of α)
+      class(hill_model_t), intent(in) :: model  !! the model (the domain of α)
       character(len=*), intent(in) :: path    !! the points file
       real(wp), allocatable, intent(out) :: points(:, :)  !! (2, n): α, β in file order
       type(error_t), allocatable, intent(out) :: error  !! err_input naming &points file

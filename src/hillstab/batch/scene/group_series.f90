@@ -10,7 +10,7 @@ module hillstab_batch_scene_group_series
    use hillstab_core_kinds, only: wp, int64, pi2
    use hillstab_core_error, only: error_t
    use hillstab_core_text, only: real_text, integer_text
-   use hillstab_hill_models, only: model_is_pendulum, model_name
+   use hillstab_hill_model, only: hill_model_t
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_declaration, only: new_group, group_t, group_values_t, group_reader_t, variable, var_real, &
       var_integer, &
@@ -64,7 +64,7 @@ contains
    subroutine read_series_group(file, group, model, physical, plan, values, error, samples, takes_duration)
       type(scene_file_t), intent(in) :: file  !! the scene file
       type(group_t), intent(in) :: group      !! the declaration (`series_group`)
-      integer, intent(in) :: model            !! the model code of `&scene`
+      class(hill_model_t), intent(in) :: model  !! the model of `&scene`
       logical, intent(in) :: physical         !! the scene has `&physical`
       type(series_plan_t), intent(out) :: plan  !! the pendulum and its sampling
       type(group_values_t), intent(out) :: values  !! the effective values
@@ -117,9 +117,9 @@ contains
       if (physical) then
          call fail(error, file%path, "physical", "r0", "the series task takes r0 and g in &series and the "// &
             "damping as &scene epsilon; leave out &physical")
-      else if (.not. model_is_pendulum(model)) then
+      else if (.not. model%is_pendulum()) then
          call fail(error, file%path, "scene", "model", "the pendulum tasks simulate the elastic pendulum: model '"// &
-            model_name(model)//"' is not it")
+            model%name()//"' is not it")
       else if (alpha < 0.0_wp .or. alpha >= pi2) then
          call fail(error, file%path, group%name, "alpha", "must lie in [0, pi**2 = "//real_text(pi2)// &
             ") (amplitude a < rho), got "//real_text(alpha))

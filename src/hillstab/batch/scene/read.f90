@@ -15,7 +15,8 @@ module hillstab_batch_scene_read
    use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t
    use hillstab_core_text, only: real_text, quoted
-   use hillstab_hill_models, only: model_table, model_name, model_from_name, model_names_text, model_summary
+   use hillstab_hill_model, only: hill_model_t
+   use hillstab_hill_models, only: model_names, new_model
    use hillstab_hill_coefficient, only: sampling_name, sampling_from_name, sampling_names_text
    use hillstab_hill_units, only: physical_t, physical_epsilon, check_physical, equilibrium_length
    use hillstab_integrate_monodromy, only: method_t, method_table, method_name, method_from_name, method_names_text, &
@@ -71,7 +72,7 @@ contains
       type(group_t) :: group
       group = new_group("scene", "what to compute and how")
       call group%add("task", var_name, "'chart'", task_names_text(" | "))
-      call group%add("model", var_name, "'"//model_name(1)//"'", model_choices())
+      call group%add("model", var_name, "'"//trim(model_names(1))//"'", model_choices())
       call group%add("method", var_name, "'"//method_name(0)//"'", method_choices())
       call group%add("n_segments", var_integer, "2", "method segments (and Qseg of task coefficient): pieces per "// &
          ""// &
@@ -137,6 +138,7 @@ contains
       integer :: n_segments
       real(wp) :: tolerance, epsilon
       logical :: names_line
+      type(error_t), allocatable :: model_error
       namelist /scene/ task, model, method, n_segments, sampling, tolerance, epsilon, output, columns, format, &
          names_line
       type(group_reader_t) :: reader
@@ -152,10 +154,9 @@ contains
       if (allocated(error)) return
       task_name = lower_case(trim(task))
 
-      this%model = model_from_name(trim(model))
-      if (this%model < 0) then
-         call fail(error, file%path, group%name, "model", "unknown model '"//trim(model)// &
-            "' (expected "//model_names_text()//")")
+      call new_model(trim(model), this%model, model_error)
+      if (allocated(model_error)) then
+         call fail(error, file%path, group%name, "model", model_error%message)
          return
       end if
 
@@ -227,7 +228,7 @@ contains
       end if
       ! the effective scene names the choices as they were understood
       call this%settings%set("task", quoted(task_name))
-      call this%settings%set("model", quoted(model_name(this%model)))
+      call this%settings%set("model", quoted(this%model%name()))
       call this%settings%set("method", quoted(method_name(this%method%kind)))
       call this%settings%set("sampling", quoted(sampling_name(this%method%sampling)))
       call this%settings%set("columns", quoted(this%columns))
@@ -237,11 +238,14 @@ contains
    !> The models for a template's comment: "elastic: Q = ... | mathieu: Q = ...".
    function model_choices() result(text)
       character(len=:), allocatable :: text
+      class(hill_model_t), allocatable :: model
+      type(error_t), allocatable :: error
       integer :: k
       text = ""
-      do k = 1, size(model_table)
+      do k = 1, size(model_names)
+         call new_model(model_names(k), model, error)
          if (k > 1) text = text//" | "
-         text = text//model_name(k)//": "//model_summary(k)
+         text = text//model%name()//": "//model%summary()
       end do
    end function model_choices
 

@@ -20,7 +20,7 @@ module hillstab_batch_scene_types
    use hillstab_core_kinds, only: pi
    use hillstab_core_text, only: quoted, real_text, integer_text
    use hillstab_core_error, only: error_t, set_error, err_input
-   use hillstab_hill_models, only: model_elastic, model_physical_alpha
+   use hillstab_hill_model, only: hill_model_t
    use hillstab_integrate_monodromy, only: method_t
    use hillstab_hill_units, only: physical_t, physical_beta, equilibrium_length
    use hillstab_batch_scene_declaration, only: group_t, group_values_t
@@ -87,7 +87,8 @@ module hillstab_batch_scene_types
    type :: scene_t
       character(len=:), allocatable :: source       !! path of the scene file
       class(task_t), allocatable :: task            !! the task, with its groups
-      integer :: model = model_elastic              !! a model code of hillstab_hill_models
+      !> the model of Q, made by the model registry (hillstab_hill_models) from `&scene model`
+      class(hill_model_t), allocatable :: model
       type(method_t) :: method                      !! method, n_segments, sampling, tolerance
       real(wp) :: epsilon = 0.0_wp                  !! damping ε of eq. (46)
       character(len=:), allocatable :: output       !! prefix: files are <output>_<task>.dat (.bin)
@@ -221,7 +222,7 @@ contains
       p = scene%pendulum
       do k = 1, size(scene%amplitudes)
          p%a = scene%amplitudes(k)
-         points(1, k) = model_physical_alpha(scene%model, p)
+         points(1, k) = scene%model%physical_alpha(p)
          points(2, k) = physical_beta(p)
       end do
    end function physical_points

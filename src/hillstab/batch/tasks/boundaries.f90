@@ -20,8 +20,7 @@ module hillstab_batch_tasks_boundaries
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_step, progress_end
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
-   use hillstab_hill_models, only: model_description, model_has_witness, model_witness_beta, model_is_pendulum, &
-      model_name, hill_model_t
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, model_description
    use hillstab_hill_units, only: equilibrium_length, physical_beta
    use hillstab_hill_transfer, only: trace_t
    use hillstab_integrate_monodromy, only: monodromy_trace, method_t, method_auto
@@ -147,9 +146,9 @@ contains
             "must be 0")
          return
       end if
-      if (.not. model_is_pendulum(scene%model)) then
+      if (.not. scene%model%is_pendulum()) then
          call fail(error, file%path, "scene", "model", "the critical amplitudes of a spring are those of the "// &
-            "elastic model, not of model '"//model_name(scene%model)//"'")
+            "elastic model, not of model '"//scene%model%name()//"'")
          return
       end if
       if (.not. method_is_exact(scene%method%kind)) then
@@ -282,7 +281,7 @@ contains
             rows(i)%check = roots(i)%residual + roots(i)%trace_sign
             rows(i)%beta_error = scene%method%tolerance*max(1.0_wp, abs(roots(i)%beta))
             rows(i)%modes = method_pieces(scene%method)
-            if (model_has_witness(scene%model)) rows(i)%beta_gsl = rows(i)%beta
+            if (scene%model%has_witness()) rows(i)%beta_gsl = rows(i)%beta
          end do
          ! coexistence: both edges of an order found and equal to the accuracy
          do i = 1, size(rows)
@@ -333,9 +332,9 @@ contains
       else if (check%roundoff) then
          row%status = status_roundoff
       end if
-      if (model_has_witness(scene%model)) then
+      if (scene%model%has_witness()) then
          ! the parity as hill_boundary_t has it: +1 even (a_n), -1 odd (b_n)
-         call model_witness_beta(scene%model, row%order, merge(1, -1, row%branch == 1), row%alpha, row%beta_gsl, &
+         call scene%model%witness_beta(row%order, merge(1, -1, row%branch == 1), row%alpha, row%beta_gsl, &
                                  available)
          if (.not. available) then
             row%gsl_ok = 0
@@ -375,7 +374,7 @@ contains
       end if
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
-      mathieu = model_has_witness(scene%model)
+      mathieu = scene%model%has_witness()
       n_alpha = self%grid%n_alpha
       allocate (per_alpha(n_alpha))
       if (exact_method(scene)) then
@@ -669,7 +668,7 @@ contains
       real(wp), intent(in) :: alpha, beta
       type(trace_t) :: tr
       type(error_t), allocatable :: cause
-      call monodromy_trace(hill_model_t(scene%model, alpha, beta, 0.0_wp), &
+      call monodromy_trace(scene%model, hill_point_t(alpha, beta, 0.0_wp), &
                            method_t(method_auto, tolerance=scene%method%tolerance), tr, cause)
       unstable = abs(tr%value) > 2.0_wp .or. tr%overflow
    end function auto_unstable
@@ -786,7 +785,7 @@ contains
    !> Whether the file has the column a: a scene with `&physical` and the elastic model.
    pure logical function amplitude_column(scene)
       type(scene_t), intent(in) :: scene
-      amplitude_column = scene%physical .and. model_is_pendulum(scene%model)
+      amplitude_column = scene%physical .and. scene%model%is_pendulum()
    end function amplitude_column
 
    function row_text(table, r, curve, mathieu, scene) result(line)
@@ -846,7 +845,7 @@ contains
       n = n + 1; text(n) = "status: 0 ok, 1 check by auto limited by round-off, 2 failed the check; check: S by auto "// &
          "at the point (approximate: S_method)"
       n = n + 1; text(n) = "beta_error: estimated error of beta; modes: Fourier modes of the truncation (approximate: pieces)"
-      if (model_has_witness(scene%model)) then
+      if (scene%model%has_witness()) then
          n = n + 1; text(n) = "beta_gsl: (pi^2/4) a_n or b_n(2 nu/pi^2) by GSL; gsl_ok: 1 agrees with Hill's method within "// &
             real_text(gsl_agreement)//"*max(1,|beta|), 2 disagrees (a GSL failure), 0 not used (order > 60 or |q| > "// &
             real_text(gsl_witness_max_q)//"; beta_gsl = beta)"

@@ -14,7 +14,7 @@ module hillstab_batch_tasks_chart
    use hillstab_core_error, only: error_t, set_error, err_input
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_core_text, only: format_es, real_text, integer_text
-   use hillstab_hill_coefficient, only: hill_model_t, in_physical_domain
+   use hillstab_hill_coefficient, only: in_physical_domain
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, batch_plan_t, prepare_batch, need_verdict
@@ -23,7 +23,7 @@ module hillstab_batch_tasks_chart
    use hillstab_batch_scene_file, only: scene_file_t, fail, group_present
    use hillstab_batch_scene_checks, only: check_integration_cost, max_grid_count
    use hillstab_hill_units, only: physical_t, physical_beta, physical_epsilon
-   use hillstab_hill_models, only: model_physical_alpha
+   use hillstab_hill_model, only: hill_point_t
    use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point, grid_size_text
    use hillstab_batch_tasks_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, &
       chart_header, &
@@ -352,7 +352,7 @@ contains
             p = scene%pendulum
             p%omega = scene%omegas(j)
             p%a = scene%amplitudes(i)
-            alphas(j) = model_physical_alpha(scene%model, p)
+            alphas(j) = scene%model%physical_alpha(p)
             betas(j) = physical_beta(p)
             epsilon = physical_epsilon(p)
             call evaluate_point(scene, alphas(j), betas(j), f, cause, statuses(j), epsilon, ids)
@@ -415,7 +415,7 @@ contains
       character(len=24) :: alpha_text
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
-      type(hill_model_t) :: row
+      type(hill_point_t) :: row
       real(wp) :: v(n_chart_columns), per_second, a
       logical :: failed(size(betas)), inaccurate(size(betas))
       integer :: j, need
@@ -424,8 +424,8 @@ contains
       ! when the scene knows ω)
       per_second = 0.0_wp
       if (scene%physical) per_second = scene%pendulum%omega/pi
-      row = hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon)
-      call monodromy_trace_batch(row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate, &
+      row = hill_point_t(alpha, 0.0_wp, scene%epsilon)
+      call monodromy_trace_batch(scene%model, row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate, &
                                  need=need, paper=columns_paper(ids))
       alpha_text = format_es(alpha, 17)
       statuses = merge(status_roundoff, status_ok, inaccurate)
@@ -492,7 +492,7 @@ contains
       n = size(betas)
       chunk = max(16, n/(8*max_threads()))
       n_chunks = (n + chunk - 1)/chunk
-      call prepare_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), betas, scene%method, plan, &
+      call prepare_batch(scene%model, hill_point_t(alpha, 0.0_wp, scene%epsilon), betas, scene%method, plan, &
                          columns_need(ids))
       !$omp parallel do schedule(dynamic) default(shared) private(c, first, last)
       do c = 1, n_chunks
@@ -589,7 +589,7 @@ contains
       type(error_t), allocatable :: cause
       character(len=:), allocatable :: buffer
       integer :: j, pos
-      call monodromy_trace_batch(hill_model_t(scene%model, alpha, 0.0_wp, scene%epsilon), betas, scene%method, &
+      call monodromy_trace_batch(scene%model, hill_point_t(alpha, 0.0_wp, scene%epsilon), betas, scene%method, &
                                  traces, failed, cause, inaccurate=inaccurate, need=columns_need(ids), &
                                  paper=columns_paper(ids))
       statuses = merge(status_roundoff, status_ok, inaccurate)

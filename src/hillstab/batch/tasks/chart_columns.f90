@@ -18,8 +18,7 @@ module hillstab_batch_tasks_chart_columns
       err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_core_text, only: real_text, integer_text, put_es
-   use hillstab_hill_models, only: hill_model_t, model_description, model_physical_note, model_is_pendulum, &
-      model_summary
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, model_description
    use hillstab_hill_coefficient, only: sampling_name
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus, verdicts, near_threshold
@@ -114,10 +113,10 @@ contains
       end if
       stable = stable//"; 0.5: marginal, |S| is within its error bound max(error_estimate, tolerance) max(1, |S|) "// &
          "of the threshold, the value cannot decide"
-      if (model_is_pendulum(scene%model)) then
+      if (scene%model%is_pendulum()) then
          alpha = "alpha = a pi^2/rho, eq. (24)"
       else
-         alpha = "alpha of "//model_summary(scene%model)
+         alpha = "alpha of "//scene%model%summary()
       end if
       table(col_alpha) = column(col_alpha, "alpha", "", alpha)
       if (size(scene%amplitudes) > 0) then
@@ -164,12 +163,12 @@ contains
       integer :: k
       allocate (ids(0))
       do k = 1, n_chart_columns
-         if (k == col_physical .and. .not. model_is_pendulum(scene%model)) cycle
+         if (k == col_physical .and. .not. scene%model%is_pendulum()) cycle
          if (k == col_stable_paper .and. .not. scene%epsilon > 0.0_wp) cycle
          if (k == col_mu_per_s .and. .not. scene%physical) cycle
          if (k == col_omega .and. size(scene%omegas) == 0) cycle
          if (k == col_a .and. .not. (scene%physical .and. (size(scene%amplitudes) > 0 .or. &
-             model_is_pendulum(scene%model)))) cycle
+             scene%model%is_pendulum()))) cycle
          ids = [ids, k]
       end do
    end function offered_chart_columns
@@ -528,7 +527,7 @@ contains
          placeholder = real_text(table(ids(k))%placeholder)
          text(n) = trim(text(n))//merge(" ", ",", index(text(n), "=") == 0)//" "//table(ids(k))%name//" = "//placeholder
       end do
-      if (outside .and. model_is_pendulum(scene%model)) then
+      if (outside .and. scene%model%is_pendulum()) then
          n = n + 1
          text(n) = "note: this file leaves the physical domain (rows with physical = 0)"
       end if
@@ -561,7 +560,7 @@ contains
          need = columns_need(ids)
          paper = columns_paper(ids)
       end if
-      call monodromy_trace_batch(hill_model_t(scene%model, alpha, 0.0_wp, damping), [beta], scene%method, tr, &
+      call monodromy_trace_batch(scene%model, hill_point_t(alpha, 0.0_wp, damping), [beta], scene%method, tr, &
                                  failed, error, inaccurate=inaccurate, need=need, paper=paper)
       if (failed(1)) then
          if (present(status)) status = status_failed
@@ -649,7 +648,7 @@ contains
       character(len=400) :: text(1)
       if (size(scene%amplitudes) > 0) then
          text(1) = "each amplitude a of &physical is one point (points: a row; coefficient: a curve): alpha = "// &
-            "a pi^2/rho"//model_physical_note(scene%model)
+            "a pi^2/rho"//scene%model%physical_note()
          lines = stacked(physical_summary(scene), text)
       else
          lines = physical_summary(scene)

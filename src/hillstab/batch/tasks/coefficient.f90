@@ -5,7 +5,7 @@ module hillstab_batch_tasks_coefficient
    use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t
    use hillstab_core_text, only: real_text, integer_text
-   use hillstab_hill_coefficient, only: hill_model_t, hill_coefficient, segment_coefficients, hill_period, sampling_name
+   use hillstab_hill_coefficient, only: segment_coefficients, sampling_name
    use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output, physical_points
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_declaration, only: new_group, group_t, group_reader_t, variable, var_real, var_integer, var_real_list, &
@@ -17,6 +17,7 @@ module hillstab_batch_tasks_coefficient
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use hillstab_hill_model, only: hill_point_t, hill_coefficient
    implicit none
    private
    public :: coefficient_task_t, coefficient_task, coefficient_group
@@ -191,7 +192,8 @@ contains
       logical, intent(in) :: quiet  !! no progress on stderr (rows written)
       type(error_t), allocatable, intent(out) :: error  !! err_io when the file cannot be written
       type(output_file_t) :: file
-      type(hill_model_t) :: model
+      type(hill_point_t) :: point
+      real(wp) :: period
       type(column_t), allocatable :: table(:)
       real(wp), allocatable :: pieces(:, :), row(:)
       character(len=:), allocatable :: lines(:), q_line, segments_line, columns_line, line
@@ -201,11 +203,12 @@ contains
 
       n_alpha = size(self%alphas)
       n_pieces = scene%method%n_segments
-      h = hill_period/n_pieces
+      period = scene%model%period()
+      h = period/n_pieces
       allocate (pieces(n_pieces, n_alpha), row(1 + 2*n_alpha))
       do k = 1, n_alpha
-         model = hill_model_t(scene%model, self%alphas(k), self%beta, scene%epsilon)
-         call segment_coefficients(model, n_pieces, scene%method%sampling, pieces(:, k))
+         point = hill_point_t(self%alphas(k), self%beta, scene%epsilon)
+         call segment_coefficients(scene%model, point, n_pieces, scene%method%sampling, pieces(:, k))
       end do
       table = coefficient_columns(self, scene)
       q_line = "Q: the coefficient at beta = "//real_text(self%beta)// &
@@ -232,11 +235,11 @@ contains
       do i = 1, self%n_tau
          if (allocated(error)) exit
          tau = grid_value(self%tau_min, self%tau_max, self%n_tau, i)
-         piece = min(int(modulo(tau, hill_period)/h) + 1, n_pieces)
+         piece = min(int(modulo(tau, period)/h) + 1, n_pieces)
          row(1) = tau
          do k = 1, n_alpha
-            model = hill_model_t(scene%model, self%alphas(k), self%beta, scene%epsilon)
-            row(2*k) = hill_coefficient(model, tau)
+            point = hill_point_t(self%alphas(k), self%beta, scene%epsilon)
+            row(2*k) = hill_coefficient(scene%model, point, tau)
             row(2*k + 1) = pieces(piece, k)
          end do
          pos = 0

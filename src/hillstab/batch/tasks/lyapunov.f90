@@ -21,7 +21,7 @@ module hillstab_batch_tasks_lyapunov
    use hillstab_core_error, only: error_t, set_error, err_accuracy, err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_core_text, only: real_text, integer_text, lower_case
-   use hillstab_hill_models, only: hill_model_t
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, model_description
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
    use hillstab_integrate_monodromy, only: monodromy_trace, method_name
@@ -664,7 +664,7 @@ contains
       failed = .not. integrated
       if (.not. failed) failed = allocated(result%error)
       if (.not. failed) then
-         call monodromy_trace(hill_model_t(scene%model, point(1), point(2), epsilon), scene%method, tr, error)
+         call monodromy_trace(scene%model, hill_point_t(point(1), point(2), epsilon), scene%method, tr, error)
          if (allocated(error)) then
             if (error%code == err_accuracy) then
                deallocate (error)

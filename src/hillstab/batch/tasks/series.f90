@@ -22,7 +22,7 @@ module hillstab_batch_tasks_series
    use hillstab_core_error, only: error_t, set_error, err_input, err_accuracy, err_invalid_parameter
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed, status_name
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_models, only: hill_model_t
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, model_description
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
    use hillstab_integrate_monodromy, only: monodromy_trace, method_name
@@ -263,7 +263,7 @@ contains
             return
          end if
          ! λ_max of the linearised swing from the core (the chart's method and tolerance)
-         call monodromy_trace(hill_model_t(scene%model, plan%alpha, plan%beta, scene%epsilon), scene%method, &
+         call monodromy_trace(scene%model, hill_point_t(plan%alpha, plan%beta, scene%epsilon), scene%method, &
                               tr, cause)
          summary%status = status_ok
          if (allocated(cause)) then

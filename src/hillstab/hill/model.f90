@@ -1,0 +1,543 @@
+!> A model of the periodic coefficient of the Hill equation x'' + Q(τ) x = 0 as a value:
+!> the abstract type `hill_model_t`, whose bindings answer everything the methods ask of a
+!> model (Q, its exact segment means, the split Q = c₀ + c₁ w(τ) with w independent of β,
+!> the range of w, the window a method integrates over, the hints of method auto's mesh
+!> and step count, the terms of Hill's method, the paper's two pieces, the α domain and
+!> the texts that headers and messages give), and the point of a chart, `hill_point_t`
+!> (α, β and the damping ε). A concrete model extends `hill_model_t`, carries its own data
+!> (coefficients, samples) and is registered in hillstab_hill_models, which builds it from
+!> its name; the methods receive `class(hill_model_t)` and never ask which model it is.
+!>
+!> Every model describes the damped equation through χ = e^{ετ/2} x (eq. (47)): its
+!> bindings give Q without damping, and the procedures of this module add the shift
+!> −ε²/4 (`hill_coefficient`, `segment_average`, `model_split`).
+!>
+!> The defaults of the optional bindings suit a smooth coefficient of period 2 that is even
+!> about τ = 0 (Q(−τ) = Q(τ)): a model overrides what differs.
+!>
+!>```fortran
+!> type(elastic_model_t) :: elastic
+!> print *, hill_coefficient(elastic, hill_point_t(alpha=4.0_wp, beta=6.0_wp), 0.5_wp)
+!> print *, model_description(elastic)
+!>```
+module hillstab_hill_model
+   use hillstab_core_kinds, only: wp, pi, pi2
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
+   use hillstab_hill_units, only: physical_t, physical_alpha
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   implicit none
+   private
+   public :: hill_model_t, hill_point_t, hill_window_t, max_window_breaks
+   public :: hill_form_none, hill_form_pencil
+   public :: model_variable_t, model_variable_real, model_variable_list, model_variable_file
+   public :: harmonics_none, harmonics_infinite
+   public :: hill_coefficient, segment_average, model_split, damping_shift, model_description
+   public :: coefficient_range, model_coefficient_range
+   public :: check_point, check_alpha, check_batch, max_magnitude
+
+   !> Hill's method does not apply to the model (its transition curves come from elsewhere).
+   integer, parameter :: hill_form_none = 0
+   !> Hill's method on the pencil −(1 − k cos πτ) x'' + a(t) cos πτ x = β (1 − k cos πτ) x
+   !> (`hill_k`, `hill_coupling`, `fourier_decay`): the elastic and the Mathieu coefficient.
+   integer, parameter :: hill_form_pencil = 1
+
+   !> A model variable holding one number.
+   integer, parameter :: model_variable_real = 1
+   !> A model variable holding a list of numbers (up to `max_count`).
+   integer, parameter :: model_variable_list = 2
+   !> A model variable naming a file of numbers (one or more per line, `#` comments), read by
+   !> the scene reader and handed to the model as the list of its numbers, row by row.
+   integer, parameter :: model_variable_file = 3
+
+   !> `drive_harmonic_count`: Q is not of the form β + g(τ) with g independent of β.
+   integer, parameter :: harmonics_none = 0
+   !> `drive_harmonic_count`: g has infinitely many harmonics (truncated on request).
+   integer, parameter :: harmonics_infinite = -1
+
+   !> Most interior jumps of Q a window can hold.
+   integer, parameter :: max_window_breaks = 16
+
+   !> Largest |α| and |β| of a point: beyond it Q, the grid spacings and the methods'
+   !> scalings overflow.
+   real(wp), parameter :: max_magnitude = 1.0e15_wp
+
+   !> One point of a chart: the parameters of one Hill equation of a model.
+   type :: hill_point_t
+      real(wp) :: alpha = 0.0_wp    !! α: the drive (elastic: aπ²/ρ; Mathieu: ν)
+      real(wp) :: beta = 0.0_wp     !! β: the mean stiffness (elastic: gπ²/(ρω²))
+      real(wp) :: epsilon = 0.0_wp  !! damping ε = κπ/ω of eq. (46)
+   end type hill_point_t
+
+   !> Where a method integrates to get the trace of one period: from `start` over `length`.
+   !> When Q is even about `start` (Q(start + s) = Q(start − s)), half a period is enough
+   !> (`half`, Floquet theory: S = 2(u v' + u' v) at the end); else the whole period. Q is
+   !> smooth inside the window but at `breaks`, where it may jump (the methods put a mesh
+   !> point there and integrate each piece apart).
+   type :: hill_window_t
+      real(wp) :: start = 0.0_wp   !! τ where the integration starts
+      real(wp) :: length = 1.0_wp  !! half the period (`half`) or the period
+      logical :: half = .true.     !! Q is even about `start`
+      integer :: n_breaks = 0      !! number of interior jumps
+      !> the jumps, ascending, strictly inside (start, start + length)
+      real(wp) :: breaks(max_window_breaks) = 0.0_wp
+   end type hill_window_t
+
+   !> One variable of a model that carries data (Fourier coefficients, samples): what its
+   !> scene group (named after the model), its template and the C API's
+   !> `hillstab_model_set` know of it.
+   type :: model_variable_t
+      character(len=32) :: name = ""                !! the variable's name
+      integer :: kind = model_variable_list          !! model_variable_real, _list or _file
+      integer :: max_count = 1                       !! most numbers it takes
+      character(len=64) :: default = ""             !! its default as scene text ("" = none)
+      character(len=240) :: help = ""               !! what it means, for templates and docs
+   end type model_variable_t
+
+   !> A model of Q(τ; α, β), period `period()` in τ (2 unless the model says otherwise).
+   !> At α = 0 every model's Q is the constant β (the chart's axis of an undriven oscillator).
+   type, abstract :: hill_model_t
+   contains
+      !> the name a scene gives in `&scene model` (lower case)
+      procedure(model_text), deferred :: name
+      !> the coefficient as output headers state it, after "model: <name>, "
+      procedure(model_text), deferred :: formula
+      !> Q(τ) without damping
+      procedure(coefficient_interface), deferred :: coefficient
+      !> exact mean of Q over [τ_a, τ_b] without damping
+      procedure(segment_mean_interface), deferred :: segment_mean
+      !> Q = c₀ + c₁ w(τ) with w independent of β, without damping
+      procedure(split_interface), deferred :: split
+      !> w(τ) at many τ
+      procedure(shapes_interface), deferred :: shapes
+      !> the least and largest value of w over the period
+      procedure(shape_range_interface), deferred :: shape_range
+      procedure :: summary => formula_summary
+      procedure :: alpha_domain => no_alpha_domain
+      procedure :: alpha_valid => finite_alpha
+      procedure :: physical_note => no_physical_note
+      procedure :: is_pendulum => not_pendulum
+      procedure :: physical_alpha => pendulum_alpha
+      procedure :: has_witness => no_witness
+      procedure :: witness_beta => no_witness_beta
+      procedure :: period => period_two
+      procedure :: window => even_half_window
+      procedure :: shape_root_mean => shape_root_bound
+      procedure :: shapes_from_half_sines => shapes_at_half_sines
+      procedure :: mesh_kappa => uniform_mesh
+      procedure :: auto_difficulty => amplitude_difficulty
+      procedure :: auto_amplitude => oscillation_amplitude
+      procedure :: two_piece_values => sampled_two_pieces
+      procedure :: hill_form => no_hill_form
+      procedure :: hill_k => no_hill_k
+      procedure :: hill_coupling => no_hill_coupling
+      procedure :: hill_one_minus_k => complement_of_hill_k
+      procedure :: fourier_decay => entire_decay
+      procedure :: drive_harmonic_count => no_drive_harmonics
+      procedure :: drive_harmonics => zero_drive_harmonics
+      procedure :: variables => no_variables
+      procedure :: set_values => no_values
+      procedure :: check_values => values_complete
+   end type hill_model_t
+
+   abstract interface
+      !> A text of the model.
+      pure function model_text(self) result(text)
+         import :: hill_model_t
+         class(hill_model_t), intent(in) :: self  !! the model
+         character(len=:), allocatable :: text
+      end function model_text
+
+      !> Q(τ) at the point (α, β), without damping.
+      elemental real(wp) function coefficient_interface(self, alpha, beta, tau) result(q)
+         import :: hill_model_t, wp
+         class(hill_model_t), intent(in) :: self  !! the model
+         real(wp), intent(in) :: alpha, beta      !! the point
+         real(wp), intent(in) :: tau              !! dimensionless time
+      end function coefficient_interface
+
+      !> Exact mean of Q over [τ_a, τ_b] at (α, β), without damping.
+      pure real(wp) function segment_mean_interface(self, alpha, beta, tau_a, tau_b) result(q)
+         import :: hill_model_t, wp
+         class(hill_model_t), intent(in) :: self  !! the model
+         real(wp), intent(in) :: alpha, beta      !! the point
+         real(wp), intent(in) :: tau_a, tau_b     !! segment ends, tau_a < tau_b
+      end function segment_mean_interface
+
+      !> Q = c₀ + c₁ w(τ) at (α, β), w independent of β, without damping.
+      elemental subroutine split_interface(self, alpha, beta, c0, c1)
+         import :: hill_model_t, wp
+         class(hill_model_t), intent(in) :: self  !! the model
+         real(wp), intent(in) :: alpha, beta      !! the point
+         real(wp), intent(out) :: c0              !! constant part of Q
+         real(wp), intent(out) :: c1              !! factor of w
+      end subroutine split_interface
+
+      !> The shape function w of the split at the times `tau`.
+      pure subroutine shapes_interface(self, alpha, tau, w)
+         import :: hill_model_t, wp
+         class(hill_model_t), intent(in) :: self  !! the model
+         real(wp), intent(in) :: alpha            !! α
+         real(wp), intent(in) :: tau(:)           !! the times
+         real(wp), intent(out) :: w(:)            !! w there (size(tau))
+      end subroutine shapes_interface
+
+      !> The least and the largest value of w over the period.
+      elemental subroutine shape_range_interface(self, alpha, w_min, w_max)
+         import :: hill_model_t, wp
+         class(hill_model_t), intent(in) :: self  !! the model
+         real(wp), intent(in) :: alpha            !! α
+         real(wp), intent(out) :: w_min, w_max    !! the range of w
+      end subroutine shape_range_interface
+   end interface
+
+contains
+
+   !> The coefficient in a few words (a template's comment): the formula unless the model
+   !> says otherwise.
+   pure function formula_summary(self) result(text)
+      class(hill_model_t), intent(in) :: self  !! the model
+      character(len=:), allocatable :: text
+      text = self%formula()
+   end function formula_summary
+
+   !> The α domain in words, for messages ("" when every finite α is accepted).
+   pure function no_alpha_domain(self) result(text)
+      class(hill_model_t), intent(in) :: self  !! the model
+      character(len=:), allocatable :: text
+      text = ""
+   end function no_alpha_domain
+
+   !> α lies in the model's domain: any finite α unless the model says otherwise.
+   elemental logical function finite_alpha(self, alpha) result(valid)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha            !! α
+      valid = ieee_is_finite(alpha)
+   end function finite_alpha
+
+   !> What α means when it comes from physical units, for headers ("" when it is aπ²/ρ).
+   pure function no_physical_note(self) result(text)
+      class(hill_model_t), intent(in) :: self  !! the model
+      character(len=:), allocatable :: text
+      text = ""
+   end function no_physical_note
+
+   !> The model is the elastic pendulum itself: it has the physical domain (a `physical`
+   !> column), the nonlinear simulation and α = aπ²/ρ. False unless the model says so.
+   elemental logical function not_pendulum(self)
+      class(hill_model_t), intent(in) :: self  !! the model
+      not_pendulum = .false.
+   end function not_pendulum
+
+   !> The model's α of a pendulum given in physical units: α = aπ²/ρ, eq. (24).
+   elemental real(wp) function pendulum_alpha(self, p) result(alpha)
+      class(hill_model_t), intent(in) :: self  !! the model
+      type(physical_t), intent(in) :: p        !! the pendulum (ω > 0, ρ > 0)
+      alpha = physical_alpha(p)
+   end function pendulum_alpha
+
+   !> An independent witness of the transition curves exists (`witness_beta`): none unless
+   !> the model has one.
+   elemental logical function no_witness(self)
+      class(hill_model_t), intent(in) :: self  !! the model
+      no_witness = .false.
+   end function no_witness
+
+   !> An independent value of β on the transition curve (order, parity) at α: none.
+   subroutine no_witness_beta(self, order, parity, alpha, beta, available)
+      class(hill_model_t), intent(in) :: self  !! the model
+      integer, intent(in) :: order, parity     !! order n; parity 1 even (a_n), 2 odd (b_n)
+      real(wp), intent(in) :: alpha            !! α
+      real(wp), intent(out) :: beta            !! the witness' β (0: none)
+      logical, intent(out) :: available        !! a witness value was computed
+      beta = 0.0_wp
+      available = .false.
+   end subroutine no_witness_beta
+
+   !> The period of Q in τ: 2, one radial oscillation.
+   pure real(wp) function period_two(self) result(period)
+      class(hill_model_t), intent(in) :: self  !! the model
+      period = 2.0_wp
+   end function period_two
+
+   !> The window of a smooth Q even about τ = 0: [0, period/2], half a period.
+   pure function even_half_window(self, alpha) result(window)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha            !! α
+      type(hill_window_t) :: window
+      window = hill_window_t(start=0.0_wp, length=0.5_wp*self%period(), half=.true.)
+   end function even_half_window
+
+   !> A bound of ∫₀¹ √|w(τ)| dτ: √max|w| (the range of w), for the phase bound of the
+   !> round-off level (hillstab_hill_coefficient `phase_bound`).
+   elemental real(wp) function shape_root_bound(self, alpha) result(mean)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha            !! α
+      real(wp) :: w_min, w_max
+      call self%shape_range(alpha, w_min, w_max)
+      mean = sqrt(max(abs(w_min), abs(w_max)))
+   end function shape_root_bound
+
+   !> w at n points of [0, 1] given by their half-angle sines s = sin(πτ/2) (method auto's
+   !> mesh builds those by angle sums): through τ = (2/π) asin s unless the model has a
+   !> closed form in s.
+   pure subroutine shapes_at_half_sines(self, alpha, n, s, w)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha            !! α
+      integer, intent(in) :: n                 !! number of points
+      real(wp), intent(in) :: s(n)             !! sin(πτ/2) at the points
+      real(wp), intent(out) :: w(n)            !! w there
+      call self%shapes(alpha, (2.0_wp/pi)*asin(min(1.0_wp, max(-1.0_wp, s))), w)
+   end subroutine shapes_at_half_sines
+
+   !> κ of method auto's mesh map tan(πτ/2) = √((1 − κ)/(1 + κ)) tan(πψ/2): 0, a uniform
+   !> mesh, unless Q has a narrow feature at τ = 0 to pack steps into.
+   elemental real(wp) function uniform_mesh(self, alpha, power) result(kappa)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha            !! α
+      real(wp), intent(in) :: power            !! method auto's mesh exponent
+      kappa = 0.0_wp
+   end function uniform_mesh
+
+   !> x of method auto's calibrated step table, −ln(1 − min(|α|, 9)/π²): without a dip the
+   !> amplitude α plays the role the elastic model's dip has (clipped to the table).
+   elemental real(wp) function amplitude_difficulty(self, alpha) result(x)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha            !! α
+      x = -log(1.0_wp - min(abs(alpha), 9.0_wp)/pi2)
+   end function amplitude_difficulty
+
+   !> The amplitude of q that method auto's step count grows with: |c₁| + 0.1 |c₀| (the
+   !> drive and, for large |β|, the oscillation itself).
+   elemental real(wp) function oscillation_amplitude(self, c0, c1) result(amplitude)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: c0, c1           !! the split of q (`model_split`)
+      amplitude = abs(c1) + 0.1_wp*abs(c0)
+   end function oscillation_amplitude
+
+   !> The two constant pieces of method formula, the paper's sampling (28): Q(0) − ε²/4 on
+   !> the first half period and Q(period/2) − ε²/4 on the second.
+   elemental subroutine sampled_two_pieces(self, alpha, beta, epsilon, q_first, q_second)
+      class(hill_model_t), intent(in) :: self   !! the model
+      real(wp), intent(in) :: alpha, beta, epsilon  !! the point and its damping
+      real(wp), intent(out) :: q_first   !! the value on the first half period
+      real(wp), intent(out) :: q_second  !! the value on the second
+      q_first = self%coefficient(alpha, beta, 0.0_wp) + damping_shift(epsilon)
+      q_second = self%coefficient(alpha, beta, 0.5_wp*self%period()) + damping_shift(epsilon)
+   end subroutine sampled_two_pieces
+
+   !> Which form of Hill's method the model offers (`hill_form_*`): none.
+   pure integer function no_hill_form(self) result(form)
+      class(hill_model_t), intent(in) :: self  !! the model
+      form = hill_form_none
+   end function no_hill_form
+
+   !> k of the weight 1 − k cos πτ on x'' in Hill's pencil form: 0.
+   elemental real(wp) function no_hill_k(self, alpha) result(k)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha            !! α
+      k = 0.0_wp
+   end function no_hill_k
+
+   !> 1 − k of Hill's pencil form (`hill_k`), from k unless the model has it more accurately.
+   elemental real(wp) function complement_of_hill_k(self, alpha) result(one_minus_k)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha            !! α
+      one_minus_k = 1.0_wp - self%hill_k(alpha)
+   end function complement_of_hill_k
+
+   !> The weight of cos πτ on the Fourier mode t = (κ/π)² in Hill's pencil form: 0.
+   elemental real(wp) function no_hill_coupling(self, alpha, t) result(coupling)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha            !! α
+      real(wp), intent(in) :: t                !! the squared mode number
+      coupling = 0.0_wp
+   end function no_hill_coupling
+
+   !> The ratio r < 1 by which the Fourier coefficients of the eigenfunctions decay per
+   !> mode; 0 when they decay faster than any geometric sequence.
+   elemental real(wp) function entire_decay(self, alpha) result(r)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha            !! α
+      r = 0.0_wp
+   end function entire_decay
+
+   !> How many harmonics g(τ) = Q − β has when Q is of the form β + g(τ) with g independent
+   !> of β (Hill's method for such models: `drive_harmonics`): harmonics_none unless the model
+   !> says so, harmonics_infinite when they never end (a jump of Q).
+   pure integer function no_drive_harmonics(self) result(count)
+      class(hill_model_t), intent(in) :: self  !! the model
+      count = harmonics_none
+   end function no_drive_harmonics
+
+   !> The mean and the first n harmonics of g(τ) = Q(τ) − β over the period P:
+   !> g = mean + Σₘ (c(m) cos(2πmτ/P) + s(m) sin(2πmτ/P)). Zero unless the model has them.
+   pure subroutine zero_drive_harmonics(self, alpha, n, mean, c, s)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha            !! α
+      integer, intent(in) :: n                 !! number of harmonics wanted
+      real(wp), intent(out) :: mean            !! the mean of g
+      real(wp), intent(out) :: c(n), s(n)      !! cosine and sine coefficients
+      mean = 0.0_wp
+      c = 0.0_wp
+      s = 0.0_wp
+   end subroutine zero_drive_harmonics
+
+   !> The variables of a model that carries data: none unless the model has them.
+   pure function no_variables(self) result(variables)
+      class(hill_model_t), intent(in) :: self  !! the model
+      type(model_variable_t), allocatable :: variables(:)
+      allocate (variables(0))
+   end function no_variables
+
+   !> Set a variable of the model (`variables`) to the given numbers: err_invalid_parameter
+   !> unless the model has such a variable.
+   pure subroutine no_values(self, name, values, error)
+      class(hill_model_t), intent(inout) :: self  !! the model
+      character(len=*), intent(in) :: name        !! the variable
+      real(wp), intent(in) :: values(:)           !! its numbers
+      !> err_invalid_parameter naming the model and the variable; unallocated when set
+      type(error_t), allocatable, intent(out) :: error
+      call set_error(error, err_invalid_parameter, "the "//self%name()//" model has no variable '"//trim(name)//"'")
+   end subroutine no_values
+
+   !> After its variables are set: whether the model is complete and consistent (every
+   !> model without variables is).
+   pure subroutine values_complete(self, error)
+      class(hill_model_t), intent(in) :: self  !! the model
+      !> err_invalid_parameter naming what is missing or wrong; unallocated when complete
+      type(error_t), allocatable, intent(out) :: error
+   end subroutine values_complete
+
+   !> Damping shift −ε²/4 of eq. (47).
+   elemental real(wp) function damping_shift(epsilon)
+      real(wp), intent(in) :: epsilon  !! damping ε of eq. (46)
+      damping_shift = -0.25_wp*epsilon*epsilon
+   end function damping_shift
+
+   !> The coefficient q(τ) of the damping-shifted Hill equation (47) at a point.
+   elemental real(wp) function hill_coefficient(model, point, tau) result(q)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
+      real(wp), intent(in) :: tau               !! dimensionless time, πτ = ωt
+      q = model%coefficient(point%alpha, point%beta, tau) + damping_shift(point%epsilon)
+   end function hill_coefficient
+
+   !> Exact mean of q over [tau_a, tau_b] at a point (damping shift included).
+   pure real(wp) function segment_average(model, point, tau_a, tau_b) result(q)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
+      real(wp), intent(in) :: tau_a, tau_b      !! segment ends, tau_a < tau_b
+      q = model%segment_mean(point%alpha, point%beta, tau_a, tau_b) + damping_shift(point%epsilon)
+   end function segment_average
+
+   !> q = c₀ + c₁ w(τ) at (α, β, ε), the damping shift in c₀; method auto shares w over the
+   !> β of a chart row.
+   elemental subroutine model_split(model, alpha, beta, epsilon, c0, c1)
+      class(hill_model_t), intent(in) :: model      !! the model
+      real(wp), intent(in) :: alpha, beta, epsilon  !! the point and its damping
+      real(wp), intent(out) :: c0  !! constant part of q
+      real(wp), intent(out) :: c1  !! factor of w
+      call model%split(alpha, beta, c0, c1)
+      c0 = c0 + damping_shift(epsilon)
+   end subroutine model_split
+
+   !> The line an output header gives the model, e.g. "model: mathieu, q(tau) = beta -
+   !> alpha cos(pi tau), eq. (A1), alpha playing nu".
+   pure function model_description(model) result(text)
+      class(hill_model_t), intent(in) :: model  !! the model
+      character(len=:), allocatable :: text
+      text = "model: "//model%name()//", "//model%formula()
+   end function model_description
+
+   !> The least and the largest value over the period of q = c₀ + c₁ w(τ) for the split
+   !> (c₀, c₁) of a point and the range of w, widened by a few roundings of the values it
+   !> is made of, so that the true range lies inside it.
+   elemental subroutine coefficient_range(c0, c1, w_min, w_max, q_min, q_max)
+      real(wp), intent(in) :: c0, c1        !! the split of q at the point
+      real(wp), intent(in) :: w_min, w_max  !! the range of w
+      real(wp), intent(out) :: q_min, q_max  !! bounds of q over the period
+      real(wp) :: a, b, slack
+      a = c0 + c1*w_min
+      b = c0 + c1*w_max
+      slack = 16.0_wp*epsilon(1.0_wp)*(abs(c0) + abs(c1)*max(abs(w_min), abs(w_max)))
+      q_min = min(a, b) - slack
+      q_max = max(a, b) + slack
+   end subroutine coefficient_range
+
+   !> `coefficient_range` of a point of a model.
+   elemental subroutine model_coefficient_range(model, point, q_min, q_max)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
+      real(wp), intent(out) :: q_min, q_max     !! bounds of q over the period
+      real(wp) :: c0, c1, w_min, w_max
+      call model_split(model, point%alpha, point%beta, point%epsilon, c0, c1)
+      call model%shape_range(point%alpha, w_min, w_max)
+      call coefficient_range(c0, c1, w_min, w_max, q_min, q_max)
+   end subroutine model_coefficient_range
+
+   !> err_invalid_parameter unless α lies in the model's domain, naming the domain and the value.
+   pure subroutine check_alpha(model, alpha, error)
+      class(hill_model_t), intent(in) :: model  !! the model
+      real(wp), intent(in) :: alpha             !! α
+      !> err_invalid_parameter naming the value and the limit; unallocated when valid
+      type(error_t), allocatable, intent(out) :: error
+      character(len=64) :: buf
+      if (.not. model%alpha_valid(alpha)) then
+         write (buf, '(es23.16)') alpha
+         call set_error(error, err_invalid_parameter, model%name()//" model needs "//model%alpha_domain()// &
+            ", got alpha = "//trim(adjustl(buf)))
+      end if
+   end subroutine check_alpha
+
+   !> Validate a point: finite values, ε ≥ 0, magnitudes the methods can scale, α in the
+   !> model's domain (elastic: 0 ≤ α < π², the mass never reaches the pivot).
+   pure subroutine check_point(model, point, error)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! the parameters to check
+      !> err_invalid_parameter naming the value and the limit; unallocated when valid
+      type(error_t), allocatable, intent(out) :: error
+      character(len=64) :: buf
+      if (.not. (ieee_is_finite(point%alpha) .and. ieee_is_finite(point%beta) &
+                 .and. ieee_is_finite(point%epsilon))) then
+         call set_error(error, err_invalid_parameter, "alpha, beta and epsilon must be finite")
+         return
+      end if
+      if (point%epsilon < 0.0_wp) then
+         write (buf, '(es12.5)') point%epsilon
+         call set_error(error, err_invalid_parameter, "epsilon must be >= 0, got "//trim(adjustl(buf)))
+         return
+      end if
+      ! beyond these magnitudes Q, the grid spacings and the methods' scalings overflow
+      if (max(abs(point%alpha), abs(point%beta)) > max_magnitude .or. point%epsilon > 100.0_wp) then
+         call set_error(error, err_invalid_parameter, "|alpha|, |beta| must be <= 1e15 and epsilon <= 100")
+         return
+      end if
+      call check_alpha(model, point%alpha, error)
+   end subroutine check_point
+
+   !> `check_point` for the points (α, β_j, ε) of a batch: α and ε checked once, each β for
+   !> what depends on it (finite, |β| ≤ 1e15); the error of the first failing point.
+   pure subroutine check_batch(model, alpha, epsilon, betas, error)
+      class(hill_model_t), intent(in) :: model  !! the model
+      real(wp), intent(in) :: alpha, epsilon    !! α and ε of the batch
+      real(wp), intent(in) :: betas(:)          !! the β values
+      !> err_invalid_parameter naming the value and the limit; unallocated when all are valid
+      type(error_t), allocatable, intent(out) :: error
+      integer :: j
+      if (size(betas) == 0) return
+      call check_point(model, hill_point_t(alpha, betas(1), epsilon), error)
+      if (allocated(error)) return
+      do j = 2, size(betas)
+         ! NaN first, on its own: an ordered comparison of a NaN raises the invalid flag
+         ! (a trap in debug builds), and Fortran's .and. need not stop at the first operand
+         if (.not. ieee_is_finite(betas(j))) then
+            call check_point(model, hill_point_t(alpha, betas(j), epsilon), error)
+            return
+         end if
+         if (abs(betas(j)) > max_magnitude) then
+            call check_point(model, hill_point_t(alpha, betas(j), epsilon), error)
+            return
+         end if
+      end do
+   end subroutine check_batch
+end module hillstab_hill_model
