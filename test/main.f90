@@ -3,6 +3,7 @@ program tester
    use hillstab_testing, only: testsuite_t, run_testsuites
    use test_coefficient, only: collect_coefficient
    use test_models, only: collect_models
+   use test_model_meissner, only: collect_model_meissner
    use test_codes, only: collect_codes
    use test_transfer, only: collect_transfer
    use test_formulas, only: collect_formulas
@@ -36,7 +37,7 @@ program tester
    implicit none
    ! one by one, not as an array constructor of the collect functions' results: gfortran 12
    ! leaks the allocatable components of such results (LeakSanitizer, make test-sanitize)
-   type(testsuite_t) :: suites(32)
+   type(testsuite_t) :: suites(33)
    integer :: n_failed
    suites(1) = collect_models()
    suites(2) = collect_codes()
@@ -70,6 +71,7 @@ program tester
    suites(30) = collect_symplectic()
    suites(31) = collect_chaos()
    suites(32) = collect_checkpoint()
+   suites(33) = collect_model_meissner()
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

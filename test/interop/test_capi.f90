@@ -233,9 +233,9 @@ contains
       integer :: info
       character(len=200) :: msg
       nan = ieee_value(0.0_wp, ieee_quiet_nan)
-      call hstrace(3, 3.7_wp, 2.47_wp, 0.0_wp, method_auto, 2, 1, 1.0e-10_wp, s, info)
+      call hstrace(9, 3.7_wp, 2.47_wp, 0.0_wp, method_auto, 2, 1, 1.0e-10_wp, s, info)
       call hserrm(msg)
-      call check(ctx, info == 1 .and. index(msg, "model") > 0, "MODEL = 3: "//trim(msg))
+      call check(ctx, info == 1 .and. index(msg, "model") > 0, "MODEL = 9: "//trim(msg))
       call hstrace(1, 3.7_wp, 2.47_wp, -1.0_wp, method_auto, 2, 1, 1.0e-10_wp, s, info)
       call hserrm(msg)
       call check(ctx, info == 1 .and. index(msg, "epsilon") > 0, "EPS < 0: "//trim(msg))

@@ -31,7 +31,8 @@ module hillstab_hill_model
    public :: hill_form_none, hill_form_pencil
    public :: model_variable_t, model_variable_real, model_variable_list, model_variable_file
    public :: harmonics_none, harmonics_infinite
-   public :: hill_coefficient, segment_average, model_split, damping_shift, model_description
+   public :: hill_coefficient, hill_coefficient_before, segment_average, model_split, damping_shift, model_description
+   public :: window_piece_end
    public :: coefficient_range, model_coefficient_range
    public :: check_point, check_alpha, check_batch, max_magnitude
 
@@ -127,6 +128,7 @@ module hillstab_hill_model
       procedure :: auto_difficulty => amplitude_difficulty
       procedure :: auto_amplitude => oscillation_amplitude
       procedure :: two_piece_values => sampled_two_pieces
+      procedure :: two_pieces_exact => two_pieces_approximate
       procedure :: hill_form => no_hill_form
       procedure :: hill_k => no_hill_k
       procedure :: hill_coupling => no_hill_coupling
@@ -325,6 +327,13 @@ contains
       q_second = self%coefficient(alpha, beta, 0.5_wp*self%period()) + damping_shift(epsilon)
    end subroutine sampled_two_pieces
 
+   !> The two pieces of method formula are Q itself (a square-wave coefficient), so that
+   !> the paper's closed form is exact: false unless the model says so.
+   pure logical function two_pieces_approximate(self) result(exact)
+      class(hill_model_t), intent(in) :: self  !! the model
+      exact = .false.
+   end function two_pieces_approximate
+
    !> Which form of Hill's method the model offers (`hill_form_*`): none.
    pure integer function no_hill_form(self) result(form)
       class(hill_model_t), intent(in) :: self  !! the model
@@ -421,6 +430,34 @@ contains
       real(wp), intent(in) :: tau               !! dimensionless time, πτ = ωt
       q = model%coefficient(point%alpha, point%beta, tau) + damping_shift(point%epsilon)
    end function hill_coefficient
+
+   !> `hill_coefficient` inside a piece of a window that ends at a jump of Q at `piece_end`:
+   !> at τ ≥ piece_end (an integrator's stage at the end of its last step) Q's value from the
+   !> left, at the last double below the jump (a model's Q at a jump is its value after it).
+   elemental real(wp) function hill_coefficient_before(model, point, tau, piece_end) result(q)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
+      real(wp), intent(in) :: tau               !! dimensionless time
+      real(wp), intent(in) :: piece_end         !! the jump that ends the piece (huge: none)
+      q = hill_coefficient(model, point, min(tau, nearest(piece_end, -1.0_wp)))
+   end function hill_coefficient_before
+
+   !> The end of piece k of a window (its k-th jump, or the window's end after the last), and
+   !> the jump there as `hill_coefficient_before` takes it (huge where the piece ends with
+   !> the window: no jump to stop short of).
+   pure subroutine window_piece_end(window, k, piece_end, jump)
+      type(hill_window_t), intent(in) :: window  !! the window
+      integer, intent(in) :: k                   !! the piece, 1 … n_breaks + 1
+      real(wp), intent(out) :: piece_end         !! where the piece ends
+      real(wp), intent(out) :: jump              !! the jump there (huge: none)
+      if (k <= window%n_breaks) then
+         piece_end = window%breaks(k)
+         jump = piece_end
+      else
+         piece_end = window%start + window%length
+         jump = huge(1.0_wp)
+      end if
+   end subroutine window_piece_end
 
    !> Exact mean of q over [tau_a, tau_b] at a point (damping shift included).
    pure real(wp) function segment_average(model, point, tau_a, tau_b) result(q)

@@ -21,7 +21,7 @@ module hillstab_hill_transfer
    public :: cos_sinc_taylor, step_functions, taylor_max_degree, cos_taylor, sinc_taylor
    public :: multiply_transfer, multiply_scaled, multiply_matrix, normalize_scaled, add_compensated
    public :: trace_t, trace_of, trace_from_value, trace_from_scaled, matrix_of, determinant, determinant_of
-   public :: monodromy_from_half_period
+   public :: monodromy_from_half_period, monodromy_from_window
 
    !> Full-period monodromy of an even coefficient from the half-period propagator
    !> Φ(1) = [[u, v], [u', v']] (Floquet theory of the even coefficient): M = [[u v' + u' v, 2 v v'], [2 u u', u v' + u' v]].
@@ -29,6 +29,14 @@ module hillstab_hill_transfer
       module procedure monodromy_from_half_period_scaled
       module procedure monodromy_from_half_period_columns
    end interface monodromy_from_half_period
+
+   !> The monodromy from the propagator over a method's window: `monodromy_from_half_period`
+   !> where the window is half a period of a coefficient even about its start, the propagator
+   !> itself where it is the whole period.
+   interface monodromy_from_window
+      module procedure monodromy_from_window_scaled
+      module procedure monodromy_from_window_columns
+   end interface monodromy_from_window
 
    !> 2×2 matrix M = exp(log_scale) · m, m normalized so that max |m_ij| = 1.
    type :: scaled_matrix_t
@@ -315,6 +323,38 @@ contains
          tr%overflow = .true.
       end if
    end function trace_from_scaled
+
+   !> `monodromy_from_window` for Φ held as one scaled matrix (the window of hillstab_hill_model
+   !> `hill_window_t`).
+   pure function monodromy_from_window_scaled(phi, half) result(m)
+      type(scaled_matrix_t), intent(in) :: phi  !! the propagator over the window
+      logical, intent(in) :: half               !! the window is half a period
+      type(scaled_matrix_t) :: m
+      if (half) then
+         m = monodromy_from_half_period_scaled(phi)
+      else
+         m = phi
+      end if
+   end function monodromy_from_window_scaled
+
+   !> `monodromy_from_window` for Φ = [[u, v], [u', v']] whose columns carry their own scales
+   !> (u, u' times e^{log_u}; v, v' times e^{log_v}).
+   pure function monodromy_from_window_columns(phi, log_u, log_v, half) result(m)
+      real(wp), intent(in) :: phi(2, 2)  !! [[u, v], [u', v']] at the end of the window, each column scaled
+      real(wp), intent(in) :: log_u, log_v  !! ln of the scales of the u and v columns
+      logical, intent(in) :: half           !! the window is half a period
+      type(scaled_matrix_t) :: m
+      real(wp) :: top
+      if (half) then
+         m = monodromy_from_half_period_columns(phi, log_u, log_v)
+      else
+         top = max(log_u, log_v)
+         m%m(:, 1) = phi(:, 1)*exp(max(log_u - top, -log_huge))
+         m%m(:, 2) = phi(:, 2)*exp(max(log_v - top, -log_huge))
+         m%log_scale = top
+         call normalize_scaled(m)
+      end if
+   end function monodromy_from_window_columns
 
    !> monodromy_from_half_period for Φ(1) held as one scaled matrix. The scale doubles:
    !> M is quadratic in Φ.

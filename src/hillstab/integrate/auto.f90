@@ -32,7 +32,7 @@ module hillstab_integrate_auto
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_model, only: hill_model_t, hill_point_t, check_batch, model_split
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_window_t, check_batch, model_split
    use hillstab_hill_coefficient, only: coefficient_phase
    use hillstab_hill_transfer, only: transfer_functions, step_functions, cos_taylor, sinc_taylor, trace_t, &
       trace_from_scaled, scaled_matrix_t
@@ -77,8 +77,11 @@ module hillstab_integrate_auto
    !> Rescale the propagator when an entry exceeds 2^rescale_exponent.
    integer, parameter :: rescale_exponent = 400
 
-   !> One mesh of the half period with the shape function w at its Gauss nodes.
+   !> One mesh of the model's window (half a period of an even q, or the period) with the
+   !> shape function w at its Gauss nodes.
    type :: mesh_t
+      integer :: key = 0                 !! the step count it was asked for (its cache key)
+      logical :: half = .true.           !! the window is half a period: S = 2(u v' + u' v)
       integer :: n_steps = 0
       real(wp), allocatable :: h(:)      !! step lengths
       real(wp), allocatable :: w(:, :)   !! w at the three Gauss nodes of each step
@@ -297,7 +300,7 @@ contains
          do j = 1, m
             ! w is constant at α = 0 (its value then at any τ)
             q = c0s(j) + c1s(j)*shape_at_start(model, alpha)
-            traces(j) = constant_trace(q)
+            traces(j) = constant_trace(q, model%period())
             ! one exact transfer matrix: the rounding of its few operations, and of its
             ! argument 2√|q|, the phase (or the growth) over the period, which moves S by
             ! up to ε·2√|q| relative to max(1, |S|) (1e-13 at q = 3e5)
@@ -450,7 +453,7 @@ contains
          ! one exact transfer matrix (as `trace_auto_batch`)
          do j = 1, size(betas)
             q = c0s(j) + c1s(j)*shape_at_start(model, alpha)
-            traces(j) = constant_trace(q)
+            traces(j) = constant_trace(q, model%period())
             traces(j)%error_estimate = exact_transfer_error*(1.0_wp + sqrt(abs(q)))
          end do
          stats%n_steps = size(betas)
@@ -582,11 +585,12 @@ contains
    end subroutine group_pass
 
    !> Exact trace for constant q over the period 2.
-   pure function constant_trace(q) result(tr)
-      real(wp), intent(in) :: q
+   pure function constant_trace(q, period) result(tr)
+      real(wp), intent(in) :: q       !! the constant coefficient
+      real(wp), intent(in) :: period  !! the model's period
       type(trace_t) :: tr
       real(wp) :: c, s, log_scale
-      call transfer_functions(4.0_wp*q, c, s, log_scale)   ! z = q h², h = 2
+      call transfer_functions(q*period*period, c, s, log_scale)   ! z = q h², h = the period
       tr = trace_from_scaled(2.0_wp*c, log_scale)
    end function constant_trace
 
@@ -645,7 +649,7 @@ contains
       integer, intent(out) :: index
       integer :: i
       do i = 1, cache%n_meshes
-         if (cache%meshes(i)%n_steps == n) then
+         if (cache%meshes(i)%key == n) then
             index = i
             return
          end if
@@ -665,7 +669,10 @@ contains
       mapped_time = 2.0_wp/pi*atan2(sqrt(1.0_wp - kappa)*sin(0.5_wp*pi*psi), sqrt(1.0_wp + kappa)*cos(0.5_wp*pi*psi))
    end function mapped_time
 
-   !> Mesh of n steps on [0, 1], uniform in ψ, with w at the Gauss nodes.
+   !> Mesh of the model's window with w at the Gauss nodes, n steps per unit of τ: on [0, 1]
+   !> (half a period of a q even about 0, no jump) n steps uniform in ψ of the Kepler-type
+   !> map; on any other window uniform steps in τ on each piece between the jumps of q (an
+   !> even number on each piece).
    pure subroutine build_mesh(model, alpha, n, mesh)
       class(hill_model_t), intent(in) :: model
       integer, intent(in) :: n
@@ -674,12 +681,57 @@ contains
       ! the sines at the nodes (3 n) and the mesh points' X, Y and τ (n each): one allocation
       ! (an allocation costs about as much as a mesh step)
       real(wp), allocatable :: work(:)
+      type(hill_window_t) :: window
+      mesh%key = n
+      window = model%window(alpha)
+      mesh%half = window%half
+      if (.not. (window%start == 0.0_wp .and. window%length == 1.0_wp .and. window%half .and. &
+                 window%n_breaks == 0)) then
+         call build_piece_mesh(model, alpha, window, n, mesh)
+         return
+      end if
       mesh%n_steps = n
       allocate (mesh%h(n), mesh%w(3, n), work(6*n))
       call mesh_points(n, model%mesh_kappa(alpha, auto_mesh_power), mesh%h, work(1:3*n), &
                        work(3*n + 1:4*n), work(4*n + 1:5*n), work(5*n + 1:6*n))
       call model%shapes_from_half_sines(alpha, 3*n, work(1:3*n), mesh%w)
    end subroutine build_mesh
+
+   !> `build_mesh` on a general window: each piece [a, b] between the window's ends and
+   !> jumps gets 2 round(n (b − a)/2) ≥ 2 equal steps (n steps per unit of τ, as on the
+   !> half period [0, 1]), w at their Gauss nodes from the model's `shapes`.
+   pure subroutine build_piece_mesh(model, alpha, window, n, mesh)
+      class(hill_model_t), intent(in) :: model
+      real(wp), intent(in) :: alpha
+      type(hill_window_t), intent(in) :: window
+      integer, intent(in) :: n
+      type(mesh_t), intent(inout) :: mesh
+      real(wp), parameter :: nodes(3) = [0.5_wp - gauss3_offset, 0.5_wp, 0.5_wp + gauss3_offset]
+      real(wp) :: edges(size(window%breaks) + 2), h
+      real(wp), allocatable :: taus(:, :), w(:)
+      integer :: counts(size(window%breaks) + 1), k, i, first, n_pieces
+      n_pieces = window%n_breaks + 1
+      edges(1) = window%start
+      edges(2:n_pieces) = window%breaks(1:window%n_breaks)
+      edges(n_pieces + 1) = window%start + window%length
+      do k = 1, n_pieces
+         counts(k) = max(2, 2*nint(0.5_wp*n*(edges(k + 1) - edges(k))))
+      end do
+      mesh%n_steps = sum(counts(1:n_pieces))
+      allocate (mesh%h(mesh%n_steps), mesh%w(3, mesh%n_steps), taus(3, mesh%n_steps))
+      first = 0
+      do k = 1, n_pieces
+         h = (edges(k + 1) - edges(k))/counts(k)
+         do i = 1, counts(k)
+            mesh%h(first + i) = h
+            taus(:, first + i) = edges(k) + (real(i - 1, wp) + nodes)*h
+         end do
+         first = first + counts(k)
+      end do
+      allocate (w(3*mesh%n_steps))
+      call model%shapes(alpha, reshape(taus, [3*mesh%n_steps]), w)
+      mesh%w = reshape(w, [3, mesh%n_steps])
+   end subroutine build_piece_mesh
 
    !> The step lengths h and the sines sin(πτ/2) at the Gauss nodes (`half_sin`) of
    !> `build_mesh`'s mesh for the map's κ; xs, ys, ts are work space.
@@ -949,13 +1001,40 @@ contains
       ! (lanes_values), also every lane beyond e^300 ≈ 1.9e130, where `trace_distance`
       ! compares logarithms (left unset, they made such points' screen bound huge)
       values_limit = merge(1.0e130_wp, 1.0e300_wp, how == lanes_values)
-      do l = 1, nl
-         s_lane(l) = 2.0_wp*(p11(l)*p22(l) + p21(l)*p12(l))
-         special(l) = rescaled(l) .or. log_scale(l) /= 0.0_wp .or. .not. abs(s_lane(l)) < values_limit
-      end do
+      if (mesh%half) then
+         do l = 1, nl
+            s_lane(l) = 2.0_wp*(p11(l)*p22(l) + p21(l)*p12(l))
+            special(l) = rescaled(l) .or. log_scale(l) /= 0.0_wp .or. .not. abs(s_lane(l)) < values_limit
+         end do
+      else
+         ! the whole period: S = tr Φ
+         do l = 1, nl
+            s_lane(l) = p11(l) + p22(l)
+            special(l) = rescaled(l) .or. log_scale(l) /= 0.0_wp .or. .not. abs(s_lane(l)) < values_limit
+         end do
+      end if
       if (how == lanes_values) then
          do l = 1, nl
             floors(l) = 0.0_wp
+         end do
+      else if (.not. mesh%half) then
+         ! the level of `coefficient_level` over the whole period (M = Φ, no factor 2, the
+         ! cross term of u v bounded by Cauchy–Schwarz), and `roundoff_level`'s
+         root_n = sqrt(real(max(mesh%n_steps, 1), wp))
+         do l = 1, nl
+            size_s = max(1.0_wp, abs(s_lane(l)))
+            m21 = p21(l)
+            m12 = p12(l)
+            x3 = abs(p22(l) - p11(l))
+            d0 = abs(c0(l))*(abs(m21*sv2(l) - m12*su2(l)) + x3*sqrt(su2(l)*sv2(l)))
+            size0 = abs(c0(l))*(abs(m21)*sv2(l) + abs(m12)*su2(l) + x3*sqrt(su2(l)*sv2(l)))
+            d1 = abs(m21*sv2w(l) - m12*su2w(l)) + x3*sqrt(su2a(l)*sv2a(l))
+            size1 = abs(m21)*sv2a(l) + abs(m12)*su2a(l) + x3*sqrt(su2a(l)*sv2a(l))
+            level = merge(coefficient_roundings_c0*d0, 0.0_wp, d0 > cancellation_limit*size0) + &
+                    merge(coefficient_roundings_c1*d1, 0.0_wp, d1 > cancellation_limit*size1)
+            special(l) = special(l) .or. .not. level < 2.0_wp**400
+            floors(l) = roundoff_safety*epsilon(1.0_wp)*root_n*max(1.0_wp, peak(l))/size_s + &
+                        2.0_wp*epsilon(1.0_wp)*phases(l) + epsilon(1.0_wp)*(level*2.0_wp**512)/size_s
          end do
       else
          root_n = sqrt(real(max(mesh%n_steps, 1), wp))
@@ -987,7 +1066,7 @@ contains
          if (special(l)) then
             call lane_result(p11(l), p12(l), p21(l), p22(l), log_scale(l), log_peak(l), peak(l), &
                sensitivity_t(2.0_wp*log_scale(l) + 512.0_wp*log(2.0_wp), su2(l), sv2(l), su2w(l), sv2w(l), &
-               su2a(l), sv2a(l)), c0(l), mesh%n_steps, phases(l), traces(l), floors(l))
+               su2a(l), sv2a(l)), c0(l), mesh%n_steps, phases(l), traces(l), floors(l), mesh%half)
             if (how == lanes_values) floors(l) = 0.0_wp
          else if (how == lanes_values) then
             ! ln|S| is left unset (below 1.9e130 nothing reads it)
@@ -1003,18 +1082,31 @@ contains
       end do
    end subroutine lane_block_traces
 
-   !> S of one lane from its propagator Φ(1) = [[p11, p12], [p21, p22]]·e^{log_scale} and
-   !> its round-off level (`roundoff_level`, `coefficient_level`).
+   !> S of one lane from its propagator Φ = [[p11, p12], [p21, p22]]·e^{log_scale} over the
+   !> window (half a period: S = 2(u v' + u' v); the period: S = tr Φ) and its round-off
+   !> level (`roundoff_level`, `coefficient_level`).
    pure subroutine lane_result(p11, p12, p21, p22, log_scale, log_peak, peak, sensitivity, c0, n_steps, phase, &
-                               trace, floor)
+                               trace, floor, half)
       real(wp), intent(in) :: p11, p12, p21, p22, log_scale, peak, c0, phase
       real(wp), intent(in) :: log_peak  !! ln of the largest condition before the last rescaling
       type(sensitivity_t), intent(in) :: sensitivity  !! the integrals, in units of e^{2 log_scale}·2^512
       integer, intent(in) :: n_steps
       type(trace_t), intent(out) :: trace
       real(wp), intent(out) :: floor
+      logical, intent(in) :: half  !! the window is half a period of an even q
       type(scaled_matrix_t) :: monodromy
       real(wp) :: peak_log
+      if (.not. half) then
+         ! the whole period: M = Φ
+         trace = trace_from_scaled(p11 + p22, log_scale)
+         peak_log = log_peak
+         if (peak > 0.0_wp) peak_log = max(log_peak, log(peak) + 2.0_wp*log_scale)
+         floor = roundoff_level(peak_log, trace%log_abs, n_steps, phase)
+         monodromy%m = reshape([p11, p21, p12, p22], [2, 2])
+         monodromy%log_scale = log_scale
+         floor = floor + coefficient_level(sensitivity, c0, monodromy, trace%log_abs, half=.false.)
+         return
+      end if
       ! S = 2(u v' + u' v) from Φ(1) = [[u, v], [u', v']] (Floquet theory)
       trace = trace_from_scaled(2.0_wp*(p11*p22 + p21*p12), 2.0_wp*log_scale)
       peak_log = log_peak

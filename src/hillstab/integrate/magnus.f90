@@ -39,11 +39,11 @@ module hillstab_integrate_magnus
    use hillstab_integrate_refine, only: roundoff_level, propagator_condition, sensitivity_t, accumulate_sensitivity, &
       coefficient_level
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_coefficient, check_point, model_split
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_window_t, hill_coefficient, check_point, model_split
    use hillstab_hill_coefficient, only: phase_bound
    use hillstab_hill_transfer, only: scaled_matrix_t, scaled_identity, transfer_functions, transfer_increment, multiply_matrix, &
       multiply_scaled, &
-      add_compensated, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
+      add_compensated, normalize_scaled, trace_t, trace_of, monodromy_from_window
    implicit none
    private
    public :: monodromy_magnus, trace_magnus, monodromy_magnus_uniform, half_period_magnus_uniform
@@ -390,37 +390,48 @@ contains
       !> the integrals of u and v for the rounding of q (hillstab_integrate_refine `coefficient_level`)
       type(sensitivity_t), intent(out) :: sensitivity
       type(scaled_matrix_t), allocatable, intent(out) :: prefix(:)  !! Φ at the pair ends
-      real(wp) :: t, h, q(3), lambda, slope_before, h_next, carry, low(2, 2), c0, c1
+      real(wp) :: t, h, q(3), lambda, slope_before, h_next, carry, low(2, 2), c0, c1, piece_end, window_end
       real(wp), allocatable :: grown(:)
       type(scaled_matrix_t), allocatable :: grown_prefix(:)
-      integer :: n_nodes, closing
+      type(hill_window_t) :: window
+      integer :: n_nodes, closing, n_piece, next_break
       logical :: last
       allocate (mesh(0:255), prefix(0:127))
-      mesh(0) = 0.0_wp
+      ! the window: half a period from τ = start (Q even about it) or the whole period, in
+      ! pieces between the jumps of Q, each marched on its own with an even number of steps
+      ! (so that no pair of the Richardson check straddles a jump)
+      window = model%window(point%alpha)
+      window_end = window%start + window%length
+      next_break = 1
+      piece_end = window_end
+      if (window%n_breaks > 0) piece_end = window%breaks(1)
+      mesh(0) = window%start
       prefix(0) = scaled_identity()
       n_mesh = 0
+      n_piece = 0
       phi = scaled_identity()
       carry = 0.0_wp
       low = 0.0_wp
       log_peak = log(2.0_wp)
-      t = 0.0_wp
+      t = window%start
       ! first guess from the size of q at the start (the dip of Q sits at τ = 0)
-      h = min(max_step, theta/sqrt(abs(hill_coefficient(model, point, 0.0_wp)) + 1.0e-300_wp))
+      h = min(max_step, theta/sqrt(abs(hill_coefficient(model, point, t)) + 1.0e-300_wp))
       stats%n_evaluations = stats%n_evaluations + 1
-      slope_before = 0.0_wp  ! q is even: q'(0) = 0
+      slope_before = 0.0_wp  ! q is even about the start: q'(start) = 0 (a guess only, else)
       call model_split(model, point%alpha, point%beta, point%epsilon, c0, c1)
       closing = 0
-      do while (t < 1.0_wp)
-         if (closing == 0 .and. t + 1.05_wp*h >= 1.0_wp) then
-            ! the end is in reach: finish on one step, or two halves if one would leave the count odd
-            closing = 2 - mod(n_mesh, 2)
+      do while (t < window_end)
+         if (closing == 0 .and. t + 1.05_wp*h >= piece_end) then
+            ! the end of the piece is in reach: finish on one step, or two halves if one would
+            ! leave the piece's count odd
+            closing = 2 - mod(n_piece, 2)
          end if
          last = closing == 1
          if (closing > 1) then
-            h = (1.0_wp - t)/closing
+            h = (piece_end - t)/closing
             h = (t + h) - t
          else if (last) then
-            h = 1.0_wp - t
+            h = piece_end - t
          else
             ! t + h exact: the propagator is advanced by exactly the time t moves (a rounded
             ! t + h would be a jump of q, a phase error √|q|·ulp(t) per step)
@@ -443,11 +454,12 @@ contains
          stats%n_steps = stats%n_steps + 1
          slope_before = sample_slope(order, q, h)
          if (last) then
-            t = 1.0_wp
+            t = piece_end
          else
             t = t + h
          end if
          n_mesh = n_mesh + 1
+         n_piece = n_piece + 1
          if (n_mesh > ubound(mesh, 1)) then
             allocate (grown(0:2*ubound(mesh, 1) + 1))
             grown(0:n_mesh - 1) = mesh(0:n_mesh - 1)
@@ -469,8 +481,19 @@ contains
             h_next = max_step
          end if
          h = min(max_step, max_growth*h, h_next)
+         if (last .and. t < window_end) then
+            ! across a jump of q: the next piece starts afresh (its size at the start, no slope)
+            next_break = next_break + 1
+            piece_end = window_end
+            if (next_break <= window%n_breaks) piece_end = window%breaks(next_break)
+            n_piece = 0
+            closing = 0
+            slope_before = 0.0_wp
+            h = min(max_step, theta/sqrt(abs(hill_coefficient(model, point, t)) + 1.0e-300_wp))
+            stats%n_evaluations = stats%n_evaluations + 1
+         end if
       end do
-      mesh(n_mesh) = 1.0_wp
+      mesh(n_mesh) = window_end
       phi%m = phi%m + low
       phi%log_scale = phi%log_scale - carry
    end subroutine adaptive_march
@@ -530,6 +553,8 @@ contains
       type(scaled_matrix_t) :: suffix, whole, hybrid, before
       integer :: n_pairs, j, block_pairs
       real(wp) :: carry, low(2, 2)
+      logical :: half
+      half = window_is_half(model, point)
       n_pairs = n_mesh/2
       block_pairs = max(1, (n_pairs + n_blocks - 1)/n_blocks)
       total = 0.0_wp
@@ -545,7 +570,7 @@ contains
          if (mod(j - 1, block_pairs) == 0 .or. j == 1) then
             whole%m = suffix%m + low
             whole%log_scale = suffix%log_scale - carry
-            hybrid = monodromy_from_half_period(multiply_scaled(whole, prefix(j - 1)))
+            hybrid = monodromy_from_window(multiply_scaled(whole, prefix(j - 1)), half)
             total = total + relative_trace_difference_at(hybrid, before, m_fine)
             before = hybrid
          end if
@@ -602,6 +627,7 @@ contains
       logical :: stagnated
       type(trace_t) :: tr
       integer :: n_mesh, split, pass, factor
+      logical :: half
       character(len=100) :: buffer
       stats = work_stats_t()
       m = scaled_identity()
@@ -624,7 +650,8 @@ contains
       end if
       call adaptive_march(model, point, order, theta, mesh, n_mesh, phi, stats, log_peak, sensitivity, prefix)
       call model_split(model, point%alpha, point%beta, point%epsilon, c0, c1)
-      m = monodromy_from_half_period(phi)
+      half = window_is_half(model, point)
+      m = monodromy_from_window(phi, half)
       blocks = block_estimate(model, point, order, mesh, n_mesh, prefix, m, stats, m_check)
       ratio = 2.0_wp**order
       difference = relative_trace_difference(m, m_check)
@@ -632,7 +659,7 @@ contains
       split = 1
       tr = trace_of(m)
       phase = phase_bound(model, point)
-      noise = roundoff_level(log_peak, tr%log_abs, n_mesh, phase) + coefficient_level(sensitivity, c0, m, tr%log_abs)
+      noise = roundoff_level(log_peak, tr%log_abs, n_mesh, phase) + coefficient_level(sensitivity, c0, m, tr%log_abs, half)
       stagnated = .false.
       do pass = 1, max_refinements
          if (estimate <= tolerance .and. noise <= tolerance) exit
@@ -644,7 +671,7 @@ contains
          m_check = m
          split = split*factor
          call mesh_product(model, point, order, mesh, n_mesh, split, phi, stats)
-         m = monodromy_from_half_period(phi)
+         m = monodromy_from_window(phi, half)
          previous = estimate
          previous_difference = difference
          previous_ratio = ratio
@@ -654,7 +681,8 @@ contains
          estimate = checked_estimate(difference, previous_difference, ratio, &
                                      ratio*(previous_ratio - 1.0_wp)/(ratio - 1.0_wp))
          tr = trace_of(m)
-         noise = roundoff_level(log_peak, tr%log_abs, split*n_mesh, phase) + coefficient_level(sensitivity, c0, m, tr%log_abs)
+         noise = roundoff_level(log_peak, tr%log_abs, split*n_mesh, phase) + &
+                 coefficient_level(sensitivity, c0, m, tr%log_abs, half)
          ! truncation falls by factor^p (at least 16); a difference that no longer falls
          ! by a quarter of that, within a few times the round-off level, is rounding noise
          stagnated = estimate > previous*4.0_wp/real(factor, wp)**order .and. estimate <= 10.0_wp*noise
@@ -671,6 +699,15 @@ contains
          call set_error(error, err_integration, trim(buffer))
       end if
    end subroutine monodromy_magnus
+
+   !> Whether the model's window at the point is half a period of an even coefficient.
+   pure logical function window_is_half(model, point) result(half)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
+      type(hill_window_t) :: window
+      window = model%window(point%alpha)
+      half = window%half
+   end function window_is_half
 
    !> Trace of `monodromy_magnus`.
    subroutine trace_magnus(model, point, order, tolerance, tr, stats, error, error_estimate)

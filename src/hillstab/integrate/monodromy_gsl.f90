@@ -42,9 +42,10 @@ module hillstab_integrate_monodromy_gsl
       roundoff_level, propagator_condition, trace_distance, first_step_factor, next_local_tolerance, sensitivity_t, &
       accumulate_sensitivity, coefficient_level, rk_rounding
    use hillstab_core_stats, only: work_stats_t, add_work
-   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_coefficient, check_point, model_split
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_window_t, hill_coefficient_before, check_point, &
+      model_split, model_coefficient_range, window_piece_end
    use hillstab_hill_coefficient, only: phase_bound
-   use hillstab_hill_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
+   use hillstab_hill_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_window
    use hillstab_ffi_gsl, only: gsl_odeiv2_system, gsl_odeiv2_driver_view, gsl_odeiv2_evolve_view, gsl_odeiv2_step_rk8pd, &
       gsl_set_error_handler_off, gsl_odeiv2_driver_alloc_y_new, gsl_odeiv2_evolve_apply, gsl_odeiv2_driver_set_nmax, &
       gsl_odeiv2_driver_free, gsl_odeiv2_driver_reset, gsl_success, gsl_failure, gsl_ebadfunc, gsl_emaxiter
@@ -74,6 +75,8 @@ module hillstab_integrate_monodromy_gsl
    type :: rhs_context_t
       class(hill_model_t), allocatable :: model  !! the model (a copy: GSL reaches it through a C pointer)
       type(hill_point_t) :: point                !! α, β, ε
+      !> the jump of q that ends the current piece (huge: none): q from the left there
+      real(wp) :: jump = huge(1.0_wp)
       integer(int64) :: n_evaluations = 0
       !> GSL's t minus the time the solution has been advanced by (Σ h of the accepted
       !> steps): q is evaluated at t − lag (see `integrate_pair`)
@@ -99,7 +102,7 @@ contains
       context%peak(1) = max(context%peak(1), abs(y(1)), abs(y(2)))
       context%peak(2) = max(context%peak(2), abs(y(3)), abs(y(4)))
       context%terms = max(context%terms, [y(1)*y(1), y(4)*y(4), abs(y(3)*y(2))])
-      q = hill_coefficient(context%model, context%point, t - context%lag)
+      q = hill_coefficient_before(context%model, context%point, t - context%lag, context%jump)
       dydt(1) = y(2)
       dydt(2) = -q*y(1)
       dydt(3) = y(4)
@@ -108,14 +111,16 @@ contains
       if (.not. all(ieee_is_finite(dydt))) status = gsl_ebadfunc
    end function hill_rhs
 
-   !> Integrate the two solutions y = (u, u', v, v') of the χ equation from τ = 0,
-   !> y(0) = (1, 0, 0, 1), to `t_end` with GSL's control epsilon `eps`,
-   !> renormalizing each solution between chunks short enough that it cannot
-   !> overflow. On return the solutions are exp(log_scale(j)) times the columns of y.
-   subroutine integrate_pair(model, point, t_end, eps, y, log_scale, log_peak, stats, error, log_condition_peak, sensitivity)
+   !> Integrate the two solutions y = (u, u', v, v') of the χ equation over the window
+   !> (from its start, y = (1, 0, 0, 1), over `length`; the driver restarts at each jump of q
+   !> inside it) with GSL's control epsilon `eps`, renormalizing each solution between
+   !> chunks short enough that it cannot overflow. On return the solutions are
+   !> exp(log_scale(j)) times the columns of y.
+   subroutine integrate_pair(model, point, window, eps, y, log_scale, log_peak, stats, error, log_condition_peak, &
+                             sensitivity)
       class(hill_model_t), intent(in) :: model  !! the model
       type(hill_point_t), intent(in) :: point   !! α, β, ε
-      real(wp), intent(in) :: t_end          !! end of the integration, > 0
+      type(hill_window_t), intent(in) :: window  !! where to integrate (its length > 0)
       real(wp), intent(in) :: eps            !! epsabs = epsrel of GSL's y-control
       real(wp), intent(out) :: y(2, 2)       !! (scaled) u, u' and v, v' at t_end
       real(wp), intent(out) :: log_scale(2)  !! ln of the scale factor of each column
@@ -137,9 +142,9 @@ contains
       type(c_ptr) :: driver
       type(c_funptr) :: previous
       real(c_double) :: state(4), t
-      real(wp) :: growth_rate, magnitude, condition_peak
+      real(wp) :: growth_rate, magnitude, condition_peak, q_min, q_max, piece_start, piece_end, jump
       integer(c_int) :: status
-      integer :: n_chunks, chunk, j, e, exponents(2)
+      integer :: n_chunks, chunk, j, e, exponents(2), piece
       integer(int64) :: n_accepted, n_rejected
       character(len=200) :: buf
 
@@ -154,10 +159,10 @@ contains
       call model_split(model, point%alpha, point%beta, point%epsilon, c0, c1)
 
       ! With c² = max(1, max|q|) the energy c²w² + w'² of any solution grows at most
-      ! like exp(2c τ), and q is monotone in cos πτ, so its extremes on [0, 1] are at
-      ! τ = 0 and 1: chunks of length ≤ chunk_log_growth/c keep u, v finite.
-      growth_rate = sqrt(max(1.0_wp, abs(hill_coefficient(model, point, 0.0_wp)), abs(hill_coefficient(model, point, 1.0_wp))))
-      n_chunks = max(1, ceiling(growth_rate*t_end/chunk_log_growth))
+      ! like exp(2c τ), and |q| is bounded by the model's range of q: chunks of length
+      ! ≤ chunk_log_growth/c keep u, v finite.
+      call model_coefficient_range(model, point, q_min, q_max)
+      growth_rate = sqrt(max(1.0_wp, abs(q_min), abs(q_max)))
 
       allocate (context%model, source=model)
       context%point = point
@@ -175,12 +180,23 @@ contains
       call c_f_pointer(driver, driver_view)
       call c_f_pointer(driver_view%evolve, evolve_view)
       state = [1.0_c_double, 0.0_c_double, 0.0_c_double, 1.0_c_double]
-      t = 0.0_c_double
+      t = real(window%start, c_double)
       context%lag = 0.0_wp
       condition_peak = 0.0_wp
+      piece_start = window%start
+      do piece = 1, window%n_breaks + 1
+      call window_piece_end(window, piece, piece_end, jump)
+      context%jump = jump
+      if (piece > 1) then
+         ! across a jump of q: GSL's t made the piece's start exactly (no lag), the driver's
+         ! step and its FSAL state reset
+         context%lag = real(t, wp) - piece_start
+         status = gsl_odeiv2_driver_reset(driver)
+      end if
+      n_chunks = max(1, ceiling(growth_rate*(piece_end - piece_start)/chunk_log_growth))
       do chunk = 1, n_chunks
          context%terms = 0.0_wp
-         call advance_to(t_end*chunk/n_chunks)
+         call advance_to(piece_start + (piece_end - piece_start)*chunk/n_chunks)
          if (status == gsl_success .and. .not. all(ieee_is_finite(state))) status = gsl_ebadfunc
          if (status /= gsl_success) exit
          condition_peak = max(condition_peak, log(max(context%terms(1), tiny(1.0_wp))) + 2.0_wp*log_scale(1), &
@@ -206,6 +222,9 @@ contains
          ! This was rk8pd's status -1 at |beta| >= 1e4 and beta << 0 near alpha -> pi^2.
          if (n_chunks > 1) status = gsl_odeiv2_driver_reset(driver)
          if (status /= gsl_success) exit
+      end do
+      if (status /= gsl_success) exit
+      piece_start = piece_end
       end do
       if (present(log_condition_peak)) log_condition_peak = condition_peak
       if (present(sensitivity)) sensitivity = integrals
@@ -269,7 +288,8 @@ contains
                top = max(log_scale(1), log_scale(2))
                call accumulate_sensitivity(integrals, state(1)*exp(log_scale(1) - top), state(3)*exp(log_scale(2) - top), &
                                            top, real(evolve_view%last_step, wp), &
-                                           hill_coefficient(model, point, t_start - lag_before + 0.5_wp*evolve_view%last_step) - c0)
+                                           hill_coefficient_before(model, point, &
+                                              t_start - lag_before + 0.5_wp*evolve_view%last_step, context%jump) - c0)
                context%n_evaluations = context%n_evaluations + 1
             end if
             n = n + 1
@@ -278,8 +298,9 @@ contains
       end subroutine advance_to
    end subroutine integrate_pair
 
-   !> Monodromy from the half period with GSL epsilon `eps`; `log_condition` is
-   !> ln κ, κ = max|u-solution|·max|v-solution| over [0, 1] / max(1, |S|); `log_peak` the
+   !> Monodromy from the model's window (half a period of an even q, or the period) with GSL
+   !> epsilon `eps`; `log_condition` is ln κ, κ = max|u-solution|·max|v-solution| over the
+   !> window / max(1, |S|); `log_peak` the
    !> ln of the largest scaled condition of the propagator (`propagator_condition`).
    subroutine half_period_monodromy(model, point, eps, m, log_condition, stats, error, log_peak, coefficient_noise)
       class(hill_model_t), intent(in) :: model  !! the model
@@ -295,17 +316,19 @@ contains
       real(wp) :: y(2, 2), log_scale(2), log_peaks(2), condition_peak, c0, c1
       type(trace_t) :: tr
       type(sensitivity_t) :: sensitivity
+      type(hill_window_t) :: window
       log_condition = 0.0_wp
       if (present(coefficient_noise)) coefficient_noise = 0.0_wp
-      call integrate_pair(model, point, 1.0_wp, eps, y, log_scale, log_peaks, stats, error, condition_peak, sensitivity)
+      window = model%window(point%alpha)
+      call integrate_pair(model, point, window, eps, y, log_scale, log_peaks, stats, error, condition_peak, sensitivity)
       if (present(log_peak)) log_peak = condition_peak
       if (allocated(error)) return
-      m = monodromy_from_half_period(y, log_scale(1), log_scale(2))
+      m = monodromy_from_window(y, log_scale(1), log_scale(2), window%half)
       tr = trace_of(m)
       log_condition = sum(log_peaks) - max(0.0_wp, tr%log_abs)
       if (present(coefficient_noise)) then
          call model_split(model, point%alpha, point%beta, point%epsilon, c0, c1)
-         coefficient_noise = coefficient_level(sensitivity, c0, m, tr%log_abs)
+         coefficient_noise = coefficient_level(sensitivity, c0, m, tr%log_abs, window%half)
       end if
    end subroutine half_period_monodromy
 
@@ -438,9 +461,9 @@ contains
       tr%error_estimate = estimate
    end subroutine trace_gsl
 
-   !> Monodromy by direct rk8pd integration over the whole period [0, 2], without
-   !> the symmetry (GSL epsilon tolerance·gsl_tolerance_factor, no rerun): a check
-   !> of `monodromy_gsl`, at twice the work.
+   !> Monodromy by direct rk8pd integration over the whole period [0, P] (the jumps of q
+   !> kept), without the symmetry (GSL epsilon tolerance·gsl_tolerance_factor, no rerun): a
+   !> check of `monodromy_gsl`, at twice the work.
    subroutine monodromy_gsl_full_period(model, point, tolerance, m, stats, error)
       class(hill_model_t), intent(in) :: model  !! the model
       type(hill_point_t), intent(in) :: point   !! α, β, ε
@@ -448,20 +471,59 @@ contains
       type(scaled_matrix_t), intent(out) :: m   !! monodromy over [0, 2]
       type(work_stats_t), intent(out) :: stats  !! rk8pd steps, rejections, Q evaluations
       type(error_t), allocatable, intent(out) :: error  !! GSL failure; unallocated on success
-      real(wp) :: y(2, 2), log_scale(2), log_peak(2), top
+      real(wp) :: y(2, 2), log_scale(2), log_peak(2)
       stats = work_stats_t()
       call check_point(model, point, error)
       if (allocated(error)) return
       call check_tolerance(tolerance, error)
       if (allocated(error)) return
-      call integrate_pair(model, point, 2.0_wp, gsl_epsilon(tolerance, 0.0_wp), y, log_scale, log_peak, stats, error)
+      call integrate_pair(model, point, period_window(model, point), gsl_epsilon(tolerance, 0.0_wp), y, log_scale, &
+                          log_peak, stats, error)
       if (allocated(error)) return
-      top = maxval(log_scale)
-      m%m(:, 1) = y(:, 1)*exp(max(log_scale(1) - top, -log_huge))
-      m%m(:, 2) = y(:, 2)*exp(max(log_scale(2) - top, -log_huge))
-      m%log_scale = top
-      call normalize_scaled(m)
+      m = monodromy_from_window(y, log_scale(1), log_scale(2), .false.)
    end subroutine monodromy_gsl_full_period
+
+   !> The whole period [0, P] as a window, with the jumps of q in it (from the model's own
+   !> window: its jumps, and their mirror images about its start when it is half a period).
+   pure function period_window(model, point) result(window)
+      class(hill_model_t), intent(in) :: model  !! the model
+      type(hill_point_t), intent(in) :: point   !! α, β, ε
+      type(hill_window_t) :: window
+      type(hill_window_t) :: own
+      real(wp) :: period, jumps(2*size(own%breaks) + 2), t
+      integer :: k, n, i
+      own = model%window(point%alpha)
+      period = model%period()
+      n = 0
+      do k = 1, own%n_breaks
+         n = n + 1; jumps(n) = own%breaks(k)
+         if (own%half) then
+            n = n + 1; jumps(n) = 2.0_wp*own%start - own%breaks(k)
+         end if
+      end do
+      ! the window's ends are not among its jumps: where q has jumps at all, they are taken
+      ! as jumps too (a restart where q is continuous costs a few steps, nothing more)
+      if (own%n_breaks > 0) then
+         n = n + 1; jumps(n) = own%start
+         n = n + 1; jumps(n) = own%start + own%length
+      end if
+      window = hill_window_t(start=0.0_wp, length=period, half=.false.)
+      do k = 1, n
+         t = modulo(jumps(k), period)
+         if (t <= 0.0_wp .or. t >= period) cycle
+         if (any(window%breaks(1:window%n_breaks) == t)) cycle
+         if (window%n_breaks == size(window%breaks)) exit
+         ! insertion in ascending order
+         i = window%n_breaks
+         do while (i > 0)
+            if (window%breaks(i) < t) exit
+            window%breaks(i + 1) = window%breaks(i)
+            i = i - 1
+         end do
+         window%breaks(i + 1) = t
+         window%n_breaks = window%n_breaks + 1
+      end do
+   end function period_window
 
    !> GSL control epsilon for a target tolerance and a condition ln κ, floored.
    pure real(wp) function gsl_epsilon(tolerance, log_condition) result(eps)

@@ -1,4 +1,4 @@
-!> Monodromy of the χ equation χ'' + q(τ) χ = 0 (q = hill_coefficient, eq. (25)/(47)) by
+!> Monodromy of the χ equation χ'' + q(τ) χ = 0 (q of the model, eq. (47)) by
 !> hillstab's adaptive Runge–Kutta integrator, over half a period.
 !>
 !> q is even and 2-periodic, so with the even and odd fundamental solutions u
@@ -25,9 +25,10 @@ module hillstab_integrate_monodromy_rk
       roundoff_level, propagator_condition, first_step_factor, next_local_tolerance, sensitivity_t, &
       accumulate_sensitivity, coefficient_level, rk_rounding
    use hillstab_core_stats, only: work_stats_t, add_work
-   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_coefficient, check_point, model_split
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_window_t, hill_coefficient_before, check_point, &
+      model_split, window_piece_end
    use hillstab_hill_coefficient, only: phase_bound
-   use hillstab_hill_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_half_period
+   use hillstab_hill_transfer, only: scaled_matrix_t, normalize_scaled, trace_t, trace_of, monodromy_from_window
    use hillstab_integrate_rk, only: rk_system_t, rk_options_t, rk_step_t, rk_integrate, rk_dopri5, rk_dop853
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
@@ -57,6 +58,9 @@ module hillstab_integrate_monodromy_rk
    type, extends(rk_system_t) :: even_odd_pair_t
       class(hill_model_t), allocatable :: model  !! the model
       type(hill_point_t) :: point                !! α, β, ε
+      !> the jump of q that ends the current piece of the window (huge: none): q is taken
+      !> from the left there (`hill_coefficient_before`)
+      real(wp) :: jump = huge(1.0_wp)
       !> largest u², v'², |v u'| of the current (unrescaled) stretch, for the condition
       real(wp) :: peak_terms(3) = 0.0_wp
       !> ln of the scales of the u and v pairs of the current stretch, the constant c₀ of q
@@ -83,7 +87,10 @@ contains
       end if
    end function rk_tolerances
 
-   !> One-period monodromy M of the χ equation from the even/odd solutions on [0, 1].
+   !> One-period monodromy M of the χ equation from the solutions u, v (u(start) = 1, u' = 0;
+   !> v(start) = 0, v' = 1) over the model's window: the even and odd solutions on half a
+   !> period where Q is even about the start, the fundamental matrix over the period else; the
+   !> integration restarts at each jump of Q inside the window.
    subroutine monodromy_rk(model, point, tolerance, m, stats, error, method, local_tolerance, log_peak, coefficient_noise)
       class(hill_model_t), intent(in) :: model  !! the model
       type(hill_point_t), intent(in) :: point   !! α, β, ε
@@ -105,8 +112,9 @@ contains
       real(wp) :: c1
       type(even_odd_pair_t) :: pair
       type(work_stats_t) :: part
-      real(wp) :: t, y(4), h_next, log_u, log_v, peak
-      integer :: e, e_u, e_v
+      real(wp) :: t, y(4), h_next, log_u, log_v, peak, piece_end, window_end
+      type(hill_window_t) :: window
+      integer :: e, e_u, e_v, piece
       character(len=80) :: buffer
 
       stats = work_stats_t()
@@ -135,17 +143,21 @@ contains
 
       ! y = (u, u', v, v') with the even and odd initial values
       y = [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]
-      t = 0.0_wp
+      window = model%window(point%alpha)
+      window_end = window%start + window%length
+      t = window%start
       log_u = 0.0_wp
       log_v = 0.0_wp
       e_u = 0
       e_v = 0
       peak = 0.0_wp
+      piece = 1
       do
+         call window_piece_end(window, piece, piece_end, pair%jump)
          pair%peak_terms = 0.0_wp
          pair%log_u = log_u
          pair%log_v = log_v
-         call rk_integrate(pair, t, 1.0_wp, y, options, part, error, h_next=h_next)
+         call rk_integrate(pair, t, piece_end, y, options, part, error, h_next=h_next)
          call add_work(stats, part)
          if (allocated(error)) then
             error%message = "monodromy_rk: "//error%message
@@ -155,7 +167,13 @@ contains
          peak = max(peak, log_or_floor(pair%peak_terms(1)) + 2.0_wp*log_u, &
                     log_or_floor(pair%peak_terms(2)) + 2.0_wp*log_v, &
                     log_or_floor(pair%peak_terms(3)) + log_u + log_v)
-         if (t == 1.0_wp) exit
+         if (t == window_end) exit
+         if (t == piece_end) then
+            ! a jump of q: the next piece starts with the pair's own first step
+            piece = piece + 1
+            options%h_initial = 0.0_wp
+            cycle
+         end if
          ! stopped by watch_growth: rescale each pair by a power of two and resume
          ! (the exponents are counted as integers: a logarithm added at each rescaling
          ! would round each time)
@@ -172,10 +190,10 @@ contains
 
       if (present(log_peak)) log_peak = max(peak, log(propagator_condition(1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp)))
       stats%n_evaluations = stats%n_evaluations + pair%n_extra
-      m = monodromy_from_half_period(reshape(y, [2, 2]), log_u, log_v)
+      m = monodromy_from_window(reshape(y, [2, 2]), log_u, log_v, window%half)
       if (present(coefficient_noise)) then
          tr = trace_of(m)
-         coefficient_noise = coefficient_level(pair%sensitivity, pair%c0, m, tr%log_abs)
+         coefficient_noise = coefficient_level(pair%sensitivity, pair%c0, m, tr%log_abs, window%half)
       end if
       if (.not. (all(ieee_is_finite(m%m)) .and. ieee_is_finite(m%log_scale))) then
          call set_error(error, err_integration, "monodromy_rk: non-finite monodromy")
@@ -244,7 +262,7 @@ contains
       real(wp), intent(in) :: t, y(:)
       real(wp), intent(out) :: dydt(:)
       real(wp) :: q
-      q = hill_coefficient(self%model, self%point, t)
+      q = hill_coefficient_before(self%model, self%point, t, self%jump)
       dydt(1) = y(2)
       dydt(2) = -q*y(1)
       dydt(3) = y(4)
@@ -270,7 +288,8 @@ contains
          top = max(self%log_u, self%log_v)
          call accumulate_sensitivity(self%sensitivity, step%y(1)*exp(self%log_u - top), &
                                      step%y(3)*exp(self%log_v - top), top, step%h, &
-                                     hill_coefficient(self%model, self%point, step%t_old + 0.5_wp*step%h) - self%c0)
+                                     hill_coefficient_before(self%model, self%point, step%t_old + 0.5_wp*step%h, &
+                                                             self%jump) - self%c0)
          self%n_extra = self%n_extra + 1
       end if
       if (step%t < 1.0_wp) then

@@ -116,13 +116,23 @@ contains
    !> (u², v² and m₁₂, m₂₁ of order |S|² for a result of order |S|): where the result is
    !> below `cancellation_limit` times its terms it is integration noise and 0 is returned;
    !> the phase term of `roundoff_level` (2εΦ, exact for growth at constant q) covers it.
-   pure real(wp) function coefficient_level(acc, c0, m, log_abs_s) result(level)
+   !>
+   !> Over the whole period (`half` false: a coefficient without the symmetry) the variation
+   !> is ∂S/∂q(τ) = −(m₁₂ u² − m₂₁ v² + (m₂₂ − m₁₁) u v) along [0, P], without the factor 2;
+   !> the cross term's integral is bounded by Cauchy–Schwarz (|∫uv f| ≤ (∫u²|f| ∫v²|f|)^½),
+   !> so the level stays a bound without integrals of its own.
+   pure real(wp) function coefficient_level(acc, c0, m, log_abs_s, half) result(level)
       type(sensitivity_t), intent(in) :: acc    !! the integrals over [0, 1]
       real(wp), intent(in) :: c0                !! the constant c₀ of q
       type(scaled_matrix_t), intent(in) :: m    !! the monodromy
       real(wp), intent(in) :: log_abs_s         !! ln|S|
+      !> the integrals are over half a period of an even coefficient (default) or over the period
+      logical, intent(in), optional :: half
       real(wp) :: log_factor
-      level = coefficient_sum(acc, c0, m)
+      logical :: symmetric
+      symmetric = .true.
+      if (present(half)) symmetric = half
+      level = coefficient_sum(acc, c0, m, symmetric)
       if (level == 0.0_wp) return
       log_factor = m%log_scale + acc%log_unit - max(0.0_wp, log_abs_s)
       level = epsilon(1.0_wp)*level*exp(min(log_factor, log_huge))
@@ -131,17 +141,27 @@ contains
    !> |c₀ ∂S/∂c₀| + 3 |c₁ ∂S/∂c₁| of `coefficient_level` in the units of the integrals and
    !> of the monodromy (times e^{−m%log_scale − acc%log_unit}), each term 0 where it
    !> cancels to integration noise.
-   pure real(wp) function coefficient_sum(acc, c0, m) result(level)
-      type(sensitivity_t), intent(in) :: acc    !! the integrals over [0, 1]
+   pure real(wp) function coefficient_sum(acc, c0, m, half) result(level)
+      type(sensitivity_t), intent(in) :: acc    !! the integrals over the window
       real(wp), intent(in) :: c0                !! the constant c₀ of q
       type(scaled_matrix_t), intent(in) :: m    !! the monodromy
-      real(wp) :: d0, d1, size0, size1, m12, m21
+      logical, intent(in) :: half               !! the window is half a period of an even q
+      real(wp) :: d0, d1, size0, size1, m12, m21, cross0, cross1
       m12 = m%m(1, 2)
       m21 = m%m(2, 1)
-      d0 = 2.0_wp*abs(c0)*abs(m21*acc%v2 - m12*acc%u2)
-      size0 = 2.0_wp*abs(c0)*(abs(m21)*acc%v2 + abs(m12)*acc%u2)
-      d1 = 2.0_wp*abs(m21*acc%v2w - m12*acc%u2w)
-      size1 = 2.0_wp*(abs(m21)*acc%v2a + abs(m12)*acc%u2a)
+      if (half) then
+         d0 = 2.0_wp*abs(c0)*abs(m21*acc%v2 - m12*acc%u2)
+         size0 = 2.0_wp*abs(c0)*(abs(m21)*acc%v2 + abs(m12)*acc%u2)
+         d1 = 2.0_wp*abs(m21*acc%v2w - m12*acc%u2w)
+         size1 = 2.0_wp*(abs(m21)*acc%v2a + abs(m12)*acc%u2a)
+      else
+         cross0 = abs(m%m(2, 2) - m%m(1, 1))*sqrt(acc%u2*acc%v2)
+         cross1 = abs(m%m(2, 2) - m%m(1, 1))*sqrt(acc%u2a*acc%v2a)
+         d0 = abs(c0)*(abs(m21*acc%v2 - m12*acc%u2) + cross0)
+         size0 = abs(c0)*(abs(m21)*acc%v2 + abs(m12)*acc%u2 + cross0)
+         d1 = abs(m21*acc%v2w - m12*acc%u2w) + cross1
+         size1 = abs(m21)*acc%v2a + abs(m12)*acc%u2a + cross1
+      end if
       level = 0.0_wp
       if (d0 > cancellation_limit*size0) level = level + coefficient_roundings_c0*d0
       if (d1 > cancellation_limit*size1) level = level + coefficient_roundings_c1*d1
