@@ -25,9 +25,11 @@ module test_monodromy
    !> The stored reference tables, relative to the repository root (where fpm test runs):
    !> the hard set, a check set of points of the same kind that no method was tuned on, and
    !> the band β ∈ ±[1e-5, 1e-2] ∪ {0}, α ∈ [9.3, π² − 1e-6] (S near 2 with a nearly
-   !> periodic solution, where the error of S is a difference of large contributions).
-   character(len=*), parameter :: hard_set_files(3) = [character(len=31) :: &
-      "data/reference/hard_set.dat", "data/reference/check_set.dat", "data/reference/band_set.dat"]
+   !> periodic solution, where the error of S is a difference of large contributions), and the
+   !> approach to the pivot α = π² − 10^−k, k = 3 … 6, |β| = 1e2 … 1e5 (the deepest dips of Q).
+   character(len=*), parameter :: hard_set_files(4) = [character(len=31) :: &
+      "data/reference/hard_set.dat", "data/reference/check_set.dat", "data/reference/band_set.dat", &
+      "data/reference/pivot_set.dat"]
    !> Tolerances of the hard-set tests (1e-10 is the default of a scene).
    real(wp), parameter :: hard_set_tolerances(3) = [1.0e-8_wp, 1.0e-10_wp, 1.0e-12_wp]
    !> A round-off limited point passes when its error is at most this factor times the
