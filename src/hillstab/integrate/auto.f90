@@ -400,8 +400,8 @@ contains
       !> Point j, which the mapped mesh could not bring to the tolerance (its estimate
       !> `estimate` there), computed again by adaptive Magnus-6 (`trace_magnus`), whose mesh
       !> follows the local scale of q wherever the dip lies; its value, estimate and status
-      !> replace auto's, or, where that fails too, the better estimate's value is kept and
-      !> the point fails.
+      !> replace auto's (round-off limited only with a level below `estimate` and below 1),
+      !> or, where that fails too, the better estimate's value is kept and the point fails.
       subroutine hand_over(j, estimate)
          integer, intent(in) :: j
          real(wp), intent(in) :: estimate
@@ -415,7 +415,9 @@ contains
             traces(j) = adaptive
             return
          end if
-         if (cause%code == err_accuracy) then
+         ! round-off limited: its best value, where its round-off level lies below auto's own
+         ! estimate and below 1 (no value beyond)
+         if (cause%code == err_accuracy .and. adaptive%error_estimate < min(estimate, 1.0_wp)) then
             traces(j) = adaptive
             if (present(reached)) reached(j) = .false.
             call roundoff_limited(j, adaptive%error_estimate)
