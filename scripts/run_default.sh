@@ -28,12 +28,39 @@ for scene in "${scenes[@]}"; do
    paths+=("$scenes_dir/$scene.nml")
 done
 
+# every line a program prints is text: its stdout and stderr are shown as they come and
+# kept, then checked to decode as UTF-8 with no control characters but tab, carriage
+# return (progress) and escape (a list-directed or raw write of a number is not text)
+logs=$(mktemp -d)
+trap 'rm -rf "$logs"' EXIT
+text_only() {   # name command...: run, show and check its output
+   local name=$1
+   shift
+   local status=0
+   "$@" > >(tee "$logs/$name.out") 2> >(tee "$logs/$name.err" >&2) || status=$?
+   wait
+   for stream in out err; do
+      python3 - "$logs/$name.$stream" "$name" "$stream" <<'PY' || exit 1
+import sys
+data = open(sys.argv[1], "rb").read()
+try:
+    text = data.decode("utf-8")
+except UnicodeDecodeError as e:
+    sys.exit("run_default: %s wrote bytes that are not UTF-8 text on std%s (at byte %d)" % (sys.argv[2], sys.argv[3], e.start))
+bad = [c for c in text if ord(c) < 32 and c not in "\t\n\r\x1b" or ord(c) == 127]
+if bad:
+    sys.exit("run_default: %s wrote control characters on std%s: %r" % (sys.argv[2], sys.argv[3], bad[:5]))
+PY
+   done
+   return $status
+}
+
 start=$(date +%s)
 flags=$(bash scripts/release_flags.sh)
 link=$(bash scripts/release_link_flags.sh)
-bash scripts/fpm.sh run --profile release --flag "$flags" --link-flag "$link" hillstab -- "${paths[@]}"
+text_only hillstab bash scripts/fpm.sh run --profile release --flag "$flags" --link-flag "$link" hillstab -- "${paths[@]}"
 # the onset law of the swing (a library example writing out/onset_law.dat)
-bash scripts/fpm.sh run --profile release --flag "$flags" --link-flag "$link" --example onset_law
+text_only onset_law bash scripts/fpm.sh run --profile release --flag "$flags" --link-flag "$link" --example onset_law
 plots+=(onset)
 for plot in "${plots[@]}"; do
    gnuplot "plots/$plot.gp"

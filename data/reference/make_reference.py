@@ -28,7 +28,9 @@ tuned on (see `check_points`). With --chart it writes data/reference/chart_set.d
 300 x 300 chart of the chart benchmark (see `chart_points`). With --curves it writes data/reference/curve_set.dat: points of the
 elastic transition curves (see `curve_points`). With --band it writes data/reference/band_set.dat: the
 band beta in +-[1e-5, 1e-2] and {0}, alpha in [9.3, pi^2 - 1e-6], where S is close to 2
-and the solution x ~ r(tau) of beta = 0 is nearly periodic (see `band_points`).
+and the solution x ~ r(tau) of beta = 0 is nearly periodic (see `band_points`). With --pivot it writes
+data/reference/pivot_set.dat: alpha = pi^2 - 10^-k (k = 3 ... 6) against |beta| = 1e2 ... 1e5 of both signs,
+where the dip of Q at tau = 0 is deepest (see `pivot_points`).
 """
 import sys
 import multiprocessing as mproc
@@ -366,6 +368,21 @@ def band_points():
     return pts
 
 
+def pivot_points():
+    """The approach to the pivot: alpha = pi^2 - 10^-k (the double nearest pi^2, minus 10^-k), k = 3 ... 6,
+    against beta in +-{1e2, 1e3, 1e4, 3e4, 1e5} (the dip of Q at tau = 0 of depth |beta - pi^2|/(1 - alpha/pi^2)
+    and width sqrt(1 - alpha/pi^2)), and the point where method auto once failed (1 - alpha/pi^2 = 1e-8,
+    beta = -66515.8: its mapped mesh needed more than 2^18 steps). Deeper k take minutes a point here (the
+    test monodromy/pivot_scan_every_method runs k = 7, 8 against the methods' agreement instead)."""
+    pts = []
+    for k in range(3, 7):
+        alpha = float(mp.pi**2) - 10.0**-k
+        for beta in (-1e5, -3e4, -1e4, -1e3, -1e2, 1e2, 1e3, 1e4, 3e4, 1e5):
+            pts.append((ELASTIC, alpha, beta, "pivot 10^-%d" % k))
+    pts.append((ELASTIC, 9.869604301014792, -66515.82489436984, "pivot: auto failed"))
+    return pts
+
+
 def curves_main(out, serial):
     pts = curve_points()
     with mproc.Pool(1 if serial else 2) as pool:
@@ -383,23 +400,25 @@ def curves_main(out, serial):
 
 
 def main():
-    args = [a for a in sys.argv[1:] if a not in ("--check", "--band", "--serial", "--curves", "--chart")]
+    args = [a for a in sys.argv[1:] if a not in ("--check", "--band", "--serial", "--curves", "--chart", "--pivot")]
     if "--curves" in sys.argv[1:]:
         curves_main(args[0] if args else "data/reference/curve_set.dat", "--serial" in sys.argv[1:])
         return
     check = "--check" in sys.argv[1:]
     band = "--band" in sys.argv[1:]
     chart = "--chart" in sys.argv[1:]
-    default = "data/reference/band_set.dat" if band else (
+    pivot = "--pivot" in sys.argv[1:]
+    default = "data/reference/pivot_set.dat" if pivot else "data/reference/band_set.dat" if band else (
         "data/reference/check_set.dat" if check else (
             "data/reference/chart_set.dat" if chart else "data/reference/hard_set.dat"))
     out = args[0] if args else default
-    pts = band_points() if band else (check_points() if check else (chart_points() if chart else points()))
+    pts = pivot_points() if pivot else band_points() if band else (
+        check_points() if check else (chart_points() if chart else points()))
     with mproc.Pool(1 if "--serial" in sys.argv[1:] else 2) as pool:
         lines = pool.map(point_line, pts, chunksize=1)
     with open(out, "w") as f:
         f.write("# Reference traces S of x'' + Q(tau) x = 0 at hillstab's %s points, made by\n"
-                % ("band" if band else ("check" if check else ("chart" if chart else "hard"))))
+                % ("pivot" if pivot else "band" if band else ("check" if check else ("chart" if chart else "hard"))))
         f.write("# data/reference/make_reference.py (mpmath %s, Taylor series, 50 digits).\n" % mp.__version__)
         f.write("# model: 0 elastic Q of eq. (25), 1 mathieu q = beta - alpha cos(pi tau); alpha, beta: the exact\n")
         f.write("# doubles used; sign, ln_abs_S: sign and natural log of |S|; S: S itself (0.0 when |S| > 1e300);\n")

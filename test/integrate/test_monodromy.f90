@@ -28,9 +28,11 @@ module test_monodromy
    !> The stored reference tables, relative to the repository root (where fpm test runs):
    !> the hard set, a check set of points of the same kind that no method was tuned on, and
    !> the band β ∈ ±[1e-5, 1e-2] ∪ {0}, α ∈ [9.3, π² − 1e-6] (S near 2 with a nearly
-   !> periodic solution, where the error of S is a difference of large contributions).
-   character(len=*), parameter :: hard_set_files(3) = [character(len=31) :: &
-      "data/reference/hard_set.dat", "data/reference/check_set.dat", "data/reference/band_set.dat"]
+   !> periodic solution, where the error of S is a difference of large contributions), and the
+   !> approach to the pivot α = π² − 10^−k, k = 3 … 6, |β| = 1e2 … 1e5 (the deepest dips of Q).
+   character(len=*), parameter :: hard_set_files(4) = [character(len=31) :: &
+      "data/reference/hard_set.dat", "data/reference/check_set.dat", "data/reference/band_set.dat", &
+      "data/reference/pivot_set.dat"]
    !> Tolerances of the hard-set tests (1e-10 is the default of a scene).
    real(wp), parameter :: hard_set_tolerances(3) = [1.0e-8_wp, 1.0e-10_wp, 1.0e-12_wp]
    !> A round-off limited point passes when its error is at most this factor times the
@@ -67,6 +69,7 @@ contains
          new_unittest("hard_set_rk", hard_set_rk), &
          new_unittest("hard_set_gsl", hard_set_gsl), &
          new_unittest("screen_bound_hard_sets", screen_bound_hard_sets), &
+         new_unittest("pivot_scan_every_method", pivot_scan_every_method), &
          new_unittest("verdict_need_every_method", verdict_need_every_method), &
          new_unittest("growth_need", growth_need), &
          new_unittest("bounds_settle_correctly", bounds_settle_correctly)])
@@ -380,6 +383,72 @@ contains
          end do
       end do
    end subroutine check_hard_set
+
+   !> The approach to the pivot, α = π² − 10^−k (k = 3 … 8) against β = ±1e2, ±1e4, ±3e4, ±1e5
+   !> and the point (1 − α/π² = 1e-8, β = −66515.8) where auto's mapped mesh needed more than
+   !> 2^18 steps: every exact method at 1e-10 and 1e-12 returns a value with status 0 or 1
+   !> (auto failed at 13 of 88 such points before it handed them to adaptive Magnus-6), and
+   !> the methods' values agree within the sum of their estimates (relative to max(1, |S|),
+   !> through ln|S| beyond 1e6).
+   subroutine pivot_scan_every_method(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer, parameter :: kinds(5) = [method_auto, method_magnus4, method_magnus6, method_rk, method_gsl]
+      real(wp), parameter :: betas(8) = [-1.0e5_wp, -3.0e4_wp, -1.0e4_wp, -1.0e2_wp, 1.0e2_wp, 1.0e4_wp, &
+                                         3.0e4_wp, 1.0e5_wp]
+      real(wp), parameter :: tolerances(2) = [1.0e-10_wp, 1.0e-12_wp]
+      real(wp) :: alphas(49), bs(49), gap, tolerance
+      type(trace_t) :: tr(5)
+      type(error_t), allocatable :: error
+      character(len=160) :: where
+      integer :: k, i, n, m, t, n_failed
+      n = 0
+      do k = 3, 8
+         do i = 1, size(betas)
+            n = n + 1
+            alphas(n) = pi2 - 10.0_wp**(-k)
+            bs(n) = betas(i)
+         end do
+      end do
+      n = n + 1
+      alphas(n) = 9.869604301014792_wp
+      bs(n) = -66515.82489436984_wp
+      do t = 1, size(tolerances)
+         tolerance = tolerances(t)
+         n_failed = 0
+         do i = 1, n
+            write (where, '(a,es8.1,a,es23.16,a,es11.4,a)') "tolerance ", tolerance, ", alpha ", alphas(i), &
+               " beta ", bs(i), ": "
+            do m = 1, size(kinds)
+               call monodromy_trace(elastic_model_t(), hill_point_t(alphas(i), bs(i), 0.0_wp), &
+                                    method_t(kinds(m), tolerance=tolerance), tr(m), error)
+               if (allocated(error)) then
+                  if (error%code /= err_accuracy) n_failed = n_failed + 1
+                  call check(ctx, error%code == err_accuracy, trim(where)//method_name(kinds(m))//" fails: "// &
+                             error%message)
+               end if
+            end do
+            do m = 2, size(kinds)
+               gap = trace_gap(tr(1), tr(m))
+               call check(ctx, gap <= tr(1)%error_estimate + tr(m)%error_estimate, trim(where)//"auto and "// &
+                          method_name(kinds(m))//" differ by "//real_text(gap)//", beyond their estimates "// &
+                          real_text(tr(1)%error_estimate)//", "//real_text(tr(m)%error_estimate))
+            end do
+         end do
+         print '(4x,a,es8.1,a,i0,a,i0,a)', "pivot scan at ", tolerance, ": ", n_failed, " failed of ", &
+            n*size(kinds), " (5 methods)"
+      end do
+   contains
+      !> |S_a − S_b|/max(1, |S_b|), through ln|S| beyond 1e6.
+      pure real(wp) function trace_gap(a, b) result(g)
+         type(trace_t), intent(in) :: a, b
+         if (max(abs(a%value), abs(b%value)) > 1.0e6_wp .or. a%overflow .or. b%overflow) then
+            g = 2.0_wp
+            if (sign(1.0_wp, a%value) == sign(1.0_wp, b%value)) g = abs(expm1_small(a%log_abs - b%log_abs))
+         else
+            g = abs(a%value - b%value)/max(1.0_wp, abs(b%value))
+         end if
+      end function trace_gap
+   end subroutine pivot_scan_every_method
 
    pure function real_text(x) result(text)
       real(wp), intent(in) :: x

@@ -30,6 +30,7 @@ contains
          new_unittest("onset_accurate_at_1e-20", onset_accurate), &
          new_unittest("onset_law_spacing", onset_law_spacing), &
          new_unittest("linear_onset_prediction", linear_onset_prediction), &
+         new_unittest("onset_interval_weak_to_strong", onset_interval), &
          new_unittest("zero_angle_never_starts", zero_angle_never_starts)])
    end function collect_pendulum_analysis
 
@@ -175,6 +176,37 @@ contains
       call check(ctx, linear_onset_periods(2.57_wp, 1.29_wp, 1.0e-5_wp, default_phi_sat), -1.0_wp, abs=0.0_wp, &
                  message="stable (c): never")
    end subroutine linear_onset_prediction
+
+   !> The predicted interval of the onset, [first |φ| = 0.1, first |φ| = 0.2] of the linear
+   !> swing (`linear_onset_periods` at φ_sat and 2 φ_sat), contains the observed onset from
+   !> weak growth (λ_max = 1.13 per period, where the nonlinear swing falls four periods
+   !> behind the linear one) to strong (λ_max = 44), at φ0 = 1e-10 (the points where the
+   !> crossing once moved by a period or by a peak among them); at λ_max = 1.10 the swing
+   !> saturates below 0.1 and never gets there (3000 periods).
+   subroutine onset_interval(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), parameter :: cases(3, 9) = reshape([ &
+         0.6_wp, 2.35_wp, 1.0e-10_wp, 2.1821108452452718_wp, 3.2087214047188071_wp, 1.0e-10_wp, &
+         1.0_wp, 2.4674_wp, 1.0e-10_wp, 2.0_wp, 2.4674_wp, 1.0e-10_wp, 4.4_wp, 3.1_wp, 1.0e-9_wp, &
+         4.0_wp, 2.4674_wp, 1.0e-15_wp, 6.0_wp, 2.4674_wp, 1.0e-10_wp, 7.0_wp, 3.0_wp, 1.0e-10_wp, &
+         9.0_wp, 2.4674_wp, 1.0e-10_wp], [3, 9])
+      real(wp) :: low, high, observed, lambda
+      character(len=160) :: where
+      integer :: i
+      do i = 1, size(cases, 2)
+         low = linear_onset_periods(cases(1, i), cases(2, i), cases(3, i), default_phi_sat)
+         high = linear_onset_periods(cases(1, i), cases(2, i), cases(3, i), 2.0_wp*default_phi_sat)
+         observed = observed_onset(cases(1, i), cases(2, i), cases(3, i), 1.0e-10_wp, 400)
+         lambda = core_lambda(cases(1, i), cases(2, i), 0.0_wp)
+         write (where, '(a,f6.3,a,f6.3,a,es8.1,a,f7.3,a,f9.3,a,f9.3,a,f9.3)') "alpha=", cases(1, i), " beta=", &
+            cases(2, i), " phi0=", cases(3, i), " lambda_max=", lambda, ": [", low, ",", high, "], observed ", observed
+         write (*, '(4x,a)') trim(where)
+         call check(ctx, observed > 0.0_wp .and. low > 0.0_wp .and. high > low, trim(where)//": all found")
+         call check(ctx, observed >= low - 0.01_wp .and. observed <= high, trim(where)//": observed in the interval")
+      end do
+      call check(ctx, observed_onset(0.4_wp, 2.4674_wp, 1.0e-5_wp, 1.0e-10_wp, 3000), -1.0_wp, abs=0.0_wp, &
+                 message="lambda_max = 1.10: saturates below 0.1 (no onset in 3000 periods)")
+   end subroutine onset_interval
 
    !> φ0 = 0: the bounce is an exact solution, x stays 0 and the swing never starts.
    subroutine zero_angle_never_starts(ctx)

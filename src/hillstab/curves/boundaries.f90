@@ -19,7 +19,7 @@
 !>```fortran
 !> type(boundary_check_t) :: check
 !> type(error_t), allocatable :: error
-!> call verify_boundary(model_elastic, 5.0_wp, 0.8766005119978297_wp, -2, 1.0e-11_wp, check, error)
+!> call verify_boundary(elastic_model_t(), 5.0_wp, 0.8766005119978297_wp, -2, 1.0e-11_wp, check, error)
 !> print *, check%passed, check%trace
 !>```
 module hillstab_curves_boundaries
@@ -64,7 +64,9 @@ module hillstab_curves_boundaries
       integer :: trace_sign = 2         !! +2 / −2: S there
       integer :: order = 0              !! n of a_n / b_n
       integer :: parity = 1             !! +1 a_n (even), −1 b_n (odd)
-      real(wp) :: alpha_error = 0.0_wp  !! estimated error of α: the last bracket, or the β accuracy over |dβ/dα|
+      !> error bound of α: the last bracket or |β_curve − β|/|dβ/dα|, plus the curve's own error
+      !> in β over |dβ/dα| (twice each, for the change of the slope)
+      real(wp) :: alpha_error = 0.0_wp
       integer :: modes = 0              !! Fourier modes of the last truncation
    end type alpha_crossing_t
 
@@ -428,10 +430,14 @@ contains
       type(alpha_crossing_t), intent(out) :: crossing
       type(error_t), allocatable, intent(out) :: error
       type(hill_boundary_t), allocatable :: curves(:)
-      real(wp) :: lo, hi, f_lo, f_hi, x, fx, width, slope, beta_x
+      real(wp) :: lo, hi, f_lo, f_hi, x, fx, width, slope, beta_x, g_lo, g_hi, beta_bound
       integer :: iteration, side, stalls, c
       logical :: found
       lo = lo_in; hi = hi_in; f_lo = f_lo_in; f_hi = f_hi_in
+      slope = 0.0_wp
+      ! the values of f at the bracket's ends as computed (f_lo, f_hi are halved by Illinois)
+      g_lo = f_lo; g_hi = f_hi
+      beta_bound = tolerance*max(1.0_wp, abs(beta))
       side = 0
       stalls = 0
       x = lo
@@ -456,19 +462,23 @@ contains
          end if
          do c = 1, size(curves)
             if (curves(c)%trace_sign == curve%trace_sign .and. curves(c)%order == curve%order .and. &
-                curves(c)%parity == curve%parity) crossing%modes = curves(c)%modes
+                curves(c)%parity == curve%parity) then
+               crossing%modes = curves(c)%modes
+               beta_bound = max(curves(c)%error_bound, tolerance*max(1.0_wp, abs(beta)))
+            end if
          end do
          fx = beta_x - beta
+         if (hi > lo) slope = abs(g_hi - g_lo)/(hi - lo)
          if (fx == 0.0_wp) then
             lo = x; hi = x
             exit
          end if
          if ((fx < 0.0_wp) .eqv. (f_lo < 0.0_wp)) then
-            lo = x; f_lo = fx
+            lo = x; f_lo = fx; g_lo = fx
             if (side == -1) f_hi = 0.5_wp*f_hi
             side = -1
          else
-            hi = x; f_hi = fx
+            hi = x; f_hi = fx; g_hi = fx
             if (side == 1) f_lo = 0.5_wp*f_lo
             side = 1
          end if
@@ -481,11 +491,16 @@ contains
          if (abs(fx) <= tolerance*max(1.0_wp, abs(beta))) exit
       end do
       crossing%alpha = x
-      slope = 0.0_wp
-      if (hi > lo) slope = abs(f_hi - f_lo)/(hi - lo)
+      ! the root of the computed curve lies within the bracket and within |fx|/|dβ/dα| of x,
+      ! that of the true curve farther by the curve's own error in β over the slope (the
+      ! secant of the last bracket of nonzero width, through the computed values; twice, for
+      ! the slope's change across it); at least the rounding of α (a bracket closed on an
+      ! exact zero of fx was 0)
+      if (hi > lo) slope = abs(g_hi - g_lo)/(hi - lo)
       crossing%alpha_error = hi - lo
-      if (slope > 0.0_wp) crossing%alpha_error = min(crossing%alpha_error, &
-                                                     max(abs(fx), tolerance*max(1.0_wp, abs(beta)))/slope)
+      if (slope > 0.0_wp) crossing%alpha_error = min(crossing%alpha_error, 2.0_wp*abs(fx)/slope) + &
+                                                 2.0_wp*beta_bound/slope
+      crossing%alpha_error = max(crossing%alpha_error, 2.0_wp*epsilon(1.0_wp)*abs(x))
    end subroutine refine_crossing
 
    pure subroutine sort_crossings(crossings)

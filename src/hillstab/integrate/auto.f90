@@ -36,6 +36,7 @@ module hillstab_integrate_auto
    use hillstab_hill_coefficient, only: coefficient_phase
    use hillstab_hill_transfer, only: transfer_functions, step_functions, cos_taylor, sinc_taylor, trace_t, &
       trace_from_scaled, scaled_matrix_t
+   use hillstab_integrate_magnus, only: trace_magnus
    use hillstab_integrate_refine, only: roundoff_level, trace_distance, sensitivity_t, coefficient_level, &
       roundoff_safety, coefficient_roundings_c0, coefficient_roundings_c1, cancellation_limit
    implicit none
@@ -57,6 +58,10 @@ module hillstab_integrate_auto
    real(wp), parameter :: auto_screen_tolerance = 1.0e-6_wp
    !> The fewest steps of the finest screening mesh (its coarsest has a quarter of them).
    integer, parameter :: screen_min_steps = 8
+   !> The fewest steps of the a-priori mesh of the Richardson check (its coarse mesh has half
+   !> of them): with 4 and 2 steps (tolerance 1e-6, |β − π²| ≲ 1) the pair was far from the
+   !> asymptotic regime and the extrapolated S missed the tolerance by up to 1.13×.
+   integer, parameter :: check_min_steps = 8
    !> Largest number of Magnus steps on [0, 1].
    integer, parameter :: max_auto_steps = 2**18
    !> Step counts N used by auto: even, ratio ≈ 2^{1/4} (2 round(2^{k/4} 2), from 4 to 2^18), so
@@ -159,7 +164,7 @@ contains
       class(hill_model_t), intent(in) :: model
       real(wp) :: amplitude
       amplitude = model%auto_amplitude(c0, c1)
-      n = ladder_steps(base*(max(amplitude, 1.0_wp)/12.0_wp)**0.4_wp)
+      n = max(check_min_steps, ladder_steps(base*(max(amplitude, 1.0_wp)/12.0_wp)**0.4_wp))
    end function steps_for_point
 
    !> `steps_for_point` of every point of a batch, without a power per point: rung r of
@@ -181,7 +186,7 @@ contains
             if (x <= thresholds(k)) exit
             k = k + 1
          end do
-         ns(j) = ladder(k)
+         ns(j) = max(check_min_steps, ladder(k))
       end do
    end subroutine steps_for_points
 
@@ -268,12 +273,12 @@ contains
       real(wp) :: base, estimate, q
       real(wp), allocatable :: c0s(:), c1s(:), phases(:)
       integer, allocatable :: ns(:), n_coarse(:)
-      logical, allocatable :: pending(:), converged(:)
+      logical, allocatable :: pending(:), converged(:), handed_over(:)
       type(trace_t), allocatable :: fine(:), coarse(:)
       real(wp), allocatable :: floors(:), coarse_floors(:), estimates(:), previous(:)
       real(wp) :: noise
       integer :: j, m, pass
-      character(len=120) :: buffer
+      character(len=160) :: buffer
       stats = work_stats_t()
       if (present(reached)) reached = .false.
       if (present(roundoff)) roundoff = .false.
@@ -317,8 +322,9 @@ contains
       phases = coefficient_phase(c0s, c1s, model%shape_root_mean(alpha))
       ! first pass: S_N and S_{N/2} of all points sharing N together, in lanes
       allocate (fine(m), coarse(m), n_coarse(m), pending(m), floors(m), coarse_floors(m), estimates(m), previous(m), &
-                converged(m))
+                converged(m), handed_over(m))
       converged = .false.
+      handed_over = .false.
       previous = huge(1.0_wp)
       call traces_in_lanes(ns, fine, floors)
       n_coarse = ns/2
@@ -362,11 +368,10 @@ contains
                if (present(reached)) reached(j) = .false.
                call roundoff_limited(j, noise)
             else if (ns(j) >= max_auto_steps .or. pass == 12) then
+               ! the mapped mesh cannot resolve this point (the dip of Q at α → π² with
+               ! |β| ≳ 1e4 needs more than 2^18 of its steps): `hand_over` below
                pending(j) = .false.
-               if (present(reached)) reached(j) = .false.
-               write (buffer, '(a,es9.2,a,es9.2,a,es10.3,a)') "auto: estimated error ", estimate, &
-                  " in S exceeds the tolerance ", tolerance, " (at beta = ", betas(j), ")"
-               if (.not. allocated(error)) call set_error(error, err_integration, trim(buffer))
+               handed_over(j) = .true.
             else
                coarse(j) = fine(j)
                coarse_floors(j) = floors(j)
@@ -391,7 +396,44 @@ contains
          end if
       end do
       traces%error_estimate = estimates
+      do j = 1, m
+         if (handed_over(j)) call hand_over(j, estimates(j))
+      end do
    contains
+      !> Point j, which the mapped mesh could not bring to the tolerance (its estimate
+      !> `estimate` there), computed again by adaptive Magnus-6 (`trace_magnus`), whose mesh
+      !> follows the local scale of q wherever the dip lies; its value, estimate and status
+      !> replace auto's (round-off limited only with a level below `estimate` and below 1),
+      !> or, where that fails too, the better estimate's value is kept and the point fails.
+      subroutine hand_over(j, estimate)
+         integer, intent(in) :: j
+         real(wp), intent(in) :: estimate
+         type(trace_t) :: adaptive
+         type(work_stats_t) :: work
+         type(error_t), allocatable :: cause
+         call trace_magnus(model, hill_point_t(alpha, betas(j), epsilon), 6, tolerance, adaptive, work, cause)
+         stats%n_steps = stats%n_steps + work%n_steps
+         stats%n_evaluations = stats%n_evaluations + work%n_evaluations
+         if (.not. allocated(cause)) then
+            traces(j) = adaptive
+            return
+         end if
+         ! round-off limited: its best value, where its round-off level lies below auto's own
+         ! estimate and below 1 (no value beyond)
+         if (cause%code == err_accuracy .and. adaptive%error_estimate < min(estimate, 1.0_wp)) then
+            traces(j) = adaptive
+            if (present(reached)) reached(j) = .false.
+            call roundoff_limited(j, adaptive%error_estimate)
+            return
+         end if
+         if (adaptive%error_estimate >= 0.0_wp .and. adaptive%error_estimate < estimate) traces(j) = adaptive
+         if (present(reached)) reached(j) = .false.
+         write (buffer, '(a,es9.2,a,es9.2,a,es10.3,a)') "auto: estimated error ", traces(j)%error_estimate, &
+            " in S exceeds the tolerance ", tolerance, " (at beta = ", betas(j), "; mapped mesh and adaptive Magnus-6)"
+         if (.not. allocated(error)) call set_error(error, err_integration, trim(buffer))
+      end subroutine hand_over
+
+
       !> S on meshes of n(j) steps for the selected points (all without `selected`), in lanes.
       subroutine traces_in_lanes(n, result, floors, selected)
          integer, intent(in) :: n(:)
@@ -402,10 +444,18 @@ contains
       end subroutine traces_in_lanes
 
       !> Point j is round-off limited at `level`: flagged, and the first such point (unless
-      !> an error is already recorded) named in an err_accuracy error.
+      !> an error is already recorded) named in an err_accuracy error. A level of 1 or more
+      !> leaves no digit of S: the point fails (err_integration), it is no best value.
       subroutine roundoff_limited(j, level)
          integer, intent(in) :: j
          real(wp), intent(in) :: level
+         if (.not. level < 1.0_wp) then
+            if (present(reached)) reached(j) = .false.
+            write (buffer, '(a,es10.2e3,a,es10.3,a)') "auto: the round-off level of S is ", level, &
+               " (at beta = ", betas(j), "): no digit of S is reliable"
+            if (.not. allocated(error)) call set_error(error, err_integration, trim(buffer))
+            return
+         end if
          if (present(roundoff)) roundoff(j) = .true.
          write (buffer, '(a,es9.2,a,es9.2,a,es10.3,a)') "auto: the tolerance ", tolerance, &
             " is below the round-off level ", level, " of S (at beta = ", betas(j), "); best value returned"

@@ -328,7 +328,30 @@ contains
          call check(ctx, by_seconds(j) == by_periods(k), "the same row in seconds and in periods")
       end do
       call check(ctx, n_data == 81, "every row compared")
+      ! the header's energy drift over the written rows is that of the rows, in seconds as in
+      ! periods (it was 0 in seconds: no sample time was watched)
+      call check(ctx, drift_text(by_seconds) == drift_text(by_periods), "the same drift in seconds ("// &
+                 drift_text(by_seconds)//") and in periods ("//drift_text(by_periods)//")")
+      call check(ctx, drift_text(by_seconds) /= "0" .and. len(drift_text(by_seconds)) > 0, &
+                 "a drift over the rows in seconds: "//drift_text(by_seconds))
    end subroutine seconds_and_physical
+
+   !> The header's energy drift over the written rows (the text after "max|E - E(0)|/E_scale = ").
+   function drift_text(lines) result(text)
+      character(len=*), intent(in) :: lines(:)
+      character(len=:), allocatable :: text
+      character(len=*), parameter :: key = "max|E - E(0)|/E_scale = "
+      integer :: k, j
+      text = ""
+      do k = 1, size(lines)
+         if (lines(k)(1:1) /= "#") cycle
+         j = index(lines(k), key)
+         if (j == 0) cycle
+         text = lines(k)(j + len(key):)
+         text = text(:index(text//" ", " ") - 1)
+         return
+      end do
+   end function drift_text
 
    !> The index of the n-th data line (0 when there are fewer).
    pure integer function data_line(lines, n) result(j)

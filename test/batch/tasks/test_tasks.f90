@@ -362,8 +362,8 @@ contains
       call delete_file(written)
    end subroutine roundoff_limited_points_written
 
-   !> A point no method run can compute (β = 1e13: auto's step limit is reached far from
-   !> the tolerance) does not stop the run: points and chart files are written, the failed
+   !> A point no method run can compute (α = 9.8696, β = 1e13: neither auto's mesh nor
+   !> adaptive Magnus-6 leaves a digit of S, round-off level 9e293) does not stop the run: points and chart files are written, the failed
    !> rows carry status 2 and placeholders outside every column's range, the other rows
    !> are computed as usual, and the run reports err_points_failed naming the point.
    subroutine failed_points_written(ctx)
@@ -376,7 +376,7 @@ contains
       logical :: numeric
       out = scratch_prefix("failedpts")
       points = out//"_in.dat"
-      call write_file(points, [character(len=40) :: "5.0 2.47", "9.8 1e13", "0.0 2.0"])
+      call write_file(points, [character(len=40) :: "5.0 2.47", "9.8696 1e13", "0.0 2.0"])
       call run_text_scene("failedpts", [padded("&scene task = 'points', method = 'auto', output = '"// &
                                          out//"' /"), padded("&points file = '"//points//"' /")], error, written)
       call delete_file(points)
@@ -394,7 +394,7 @@ contains
       call check(ctx, rows(3, 3), 2.0_wp*cos(2.0_wp*sqrt(2.0_wp)), rel=1.0e-12_wp, message="S at alpha = 0")
       call check(ctx, rows(10, 1) >= 0.0_wp .and. rows(10, 1) <= 1.0e-10_wp, "estimate within the tolerance")
       call check(ctx, rows(11, 2) == 2.0_wp, "status 2 at the failed point")
-      call check(ctx, rows(1, 2) == 9.8_wp .and. rows(2, 2) == 1.0e13_wp, "alpha, beta of the failed point")
+      call check(ctx, rows(1, 2) == 9.8696_wp .and. rows(2, 2) == 1.0e13_wp, "alpha, beta of the failed point")
       call check(ctx, rows(3, 2) == 0.0_wp .and. rows(6, 2) == 0.0_wp, "S, mu placeholders 0")
       call check(ctx, rows(4, 2) == -1.0_wp .and. rows(8, 2) == -1.0_wp, "flags -1")
       call check(ctx, rows(5, 2) == -1.0_wp, "lambda_max -1")
@@ -410,19 +410,19 @@ contains
       ! the chart path (rows in parallel, lines formatted on every thread), damped: 12 columns
       call run_text_scene("failedchart", [ &
          padded("&scene method = 'auto', epsilon = 0.5, output = '"//out//"' /"), &
-         padded("&chart alpha_min = 9, alpha_max = 9.8, n_alpha = 2, beta_min = 1, beta_max = 1e13, n_beta = 2 /")], &
+         padded("&chart alpha_min = 9.8696, alpha_max = 9.8696, n_alpha = 1, beta_min = 1, beta_max = 1e13, n_beta = 2 /")], &
          error, written)
       call check(ctx, allocated(error), "the chart reports the failure")
       if (.not. allocated(error)) return
       call check(ctx, error%code == err_points_failed, "err_points_failed (chart)")
-      call check(ctx, contains_text(error%message, "2 of 4 point"), "counts the failed points: "//error%message)
+      call check(ctx, contains_text(error%message, "1 of 2 point"), "counts the failed points: "//error%message)
       lines = read_lines(out//"_chart.dat")
       call data_rows(lines, 12, rows, n_blank, numeric)
-      call check(ctx, numeric .and. size(rows, 2) == 4 .and. n_blank == 1, "4 rows of 12 numbers in 2 blocks")
-      if (size(rows, 2) /= 4) return
-      call check(ctx, all(rows(12, [1, 3]) == 0.0_wp) .and. all(rows(12, [2, 4]) == 2.0_wp), "statuses 0, 2")
-      call check(ctx, all(rows(10, [2, 4]) == -1.0_wp), "stable_paper -1 at failed points")
-      call check(ctx, all(rows(10, [1, 3]) >= 0.0_wp), "stable_paper a flag elsewhere")
+      call check(ctx, numeric .and. size(rows, 2) == 2 .and. n_blank == 0, "2 rows of 12 numbers")
+      if (size(rows, 2) /= 2) return
+      call check(ctx, rows(12, 1) == 0.0_wp .and. rows(12, 2) == 2.0_wp, "statuses 0, 2")
+      call check(ctx, rows(10, 2) == -1.0_wp, "stable_paper -1 at the failed point")
+      call check(ctx, rows(10, 1) >= 0.0_wp, "stable_paper a flag elsewhere")
       call delete_file(written)
    end subroutine failed_points_written
 

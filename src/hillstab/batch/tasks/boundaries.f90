@@ -688,19 +688,26 @@ contains
             if (unstable(j - 1)) cycle   ! joined to the interval before (a crossing of a zero-width tongue)
          end if
          if (len(text) > 0) text = text//" and "
-         text = text//digits4(cuts(j)*rho/pi2)//" m <= a < "
          block
-            integer :: last
+            integer :: last, digits
+            real(wp) :: low, high
             last = j
             do while (last < size(unstable))
                if (.not. unstable(last + 1)) exit
                last = last + 1
             end do
+            low = cuts(j)*rho/pi2
             if (cuts(last + 1) >= alpha_end) then
-               text = text//digits4(rho)//" m"
+               high = rho
             else
-               text = text//digits4(cuts(last + 1)*rho/pi2)//" m"
+               high = cuts(last + 1)*rho/pi2
             end if
+            ! 4 significant digits, more where 4 would print the two ends alike
+            digits = 4
+            do while (digits < 17 .and. significant_text(low, digits) == significant_text(high, digits))
+               digits = digits + 1
+            end do
+            text = text//significant_text(low, digits)//" m <= a < "//significant_text(high, digits)//" m"
          end block
       end do
       if (len(text) == 0) then
@@ -715,6 +722,14 @@ contains
    function digits4(x) result(text)
       real(wp), intent(in) :: x
       character(len=:), allocatable :: text
+      text = significant_text(x, 4)
+   end function digits4
+
+   !> x with `digits` significant digits, plain decimal ("0.003811", "1.68982" at 6).
+   function significant_text(x, digits) result(text)
+      real(wp), intent(in) :: x
+      integer, intent(in) :: digits
+      character(len=:), allocatable :: text
       character(len=40) :: buffer, form
       integer :: e, decimals
       if (x == 0.0_wp) then
@@ -722,16 +737,17 @@ contains
          return
       end if
       e = floor(log10(abs(x)))
-      decimals = max(0, 3 - e)
+      decimals = max(0, digits - 1 - e)
       if (decimals > 20 .or. e > 15) then
-         write (buffer, '(es11.3e3)') x
+         write (form, '(a, i0, a, i0, a)') "(es", digits + 8, ".", digits - 1, "e3)"
+         write (buffer, form) x
       else
          write (form, '(a, i0, a)') "(f40.", decimals, ")"
          write (buffer, form) x
       end if
       text = trim(adjustl(buffer))
       if (text(1:1) == ".") text = "0"//text
-   end function digits4
+   end function significant_text
 
    !> Header of the critical amplitudes: the spring, the method, the search, the verdicts.
    function spring_header(scene, table, rho, beta, alpha_end, intervals, n) result(lines)

@@ -142,7 +142,7 @@ contains
       table(col_mu_per_s) = column(col_mu_per_s, "mu_per_s", "1/s", "the Floquet exponent per second, mu omega/pi "// &
          "(tau = omega t/pi)")
       table(col_error_estimate) = column(col_error_estimate, "error_estimate", "", "the method's estimate of "// &
-         "|error of S|/max(1, |S|) (-1: the method gives none)")
+         "|error of S|/max(1, |S|), not a bound (-1: the method gives none; the bound at status 0 is the tolerance)")
       table(col_status) = column(col_status, "status", "", "0 ok; 1 round-off limited (best value, error_estimate "// &
          "at the round-off level); 2 failed (placeholders in the other columns)")
    contains

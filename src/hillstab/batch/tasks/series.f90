@@ -75,6 +75,9 @@ module hillstab_batch_tasks_series
       !> first |φ| = φ_sat of the linear swing from the start (`linear_onset_periods`; damped:
       !> the multiplier law) [periods]; −1: no onset expected
       real(wp) :: onset_predicted = -1.0_wp
+      !> first |φ| = 2 φ_sat of the linear swing: the late end of the predicted interval of the
+      !> onset (the nonlinear swing falls behind the linear one) [periods]; −1: none
+      real(wp) :: onset_late = -1.0_wp
       real(wp) :: onset_law = -1.0_wp            !! n* = ln(φ_sat/|φ0|)/ln λ_max [periods]; −1: none
       real(wp) :: onset_observed = -1.0_wp       !! first |φ| > φ_sat [periods]; −1: not within the run
    end type series_summary_t
@@ -277,14 +280,16 @@ contains
             summary%stable = f%stable
             summary%onset_law = onset_periods(plan%phi0, default_phi_sat, summary%lambda_max)
             summary%onset_predicted = summary%onset_law
-            if (scene%epsilon == 0.0_wp .and. summary%onset_law >= 0.0_wp) &
+            if (scene%epsilon == 0.0_wp .and. summary%onset_law >= 0.0_wp) then
                summary%onset_predicted = linear_onset_periods(plan%alpha, plan%beta, plan%phi0, default_phi_sat)
+               summary%onset_late = linear_onset_periods(plan%alpha, plan%beta, plan%phi0, 2.0_wp*default_phi_sat)
+            end if
          end if
 
          watch%pendulum = summary%pendulum
          ! the rows the second pass writes: their energies are what the user reads
          watch%samples_per_period = plan%samples_per_period
-         watch%n_samples = int(plan%periods, int64)*plan%samples_per_period
+         watch%n_samples = n_samples
          y = initial_state(plan, summary%pendulum)
          t_end = sample_time(summary%pendulum, n_samples, plan%samples_per_period)
          call pendulum_integrate(watch, y, t_end, scene%method%tolerance, summary%work, cause)
@@ -414,6 +419,13 @@ contains
             "first |x|/r = sin(0.1) of the linear swing x = r(0) sin(phi0) u(t) = "// &
             periods_text(s%onset_predicted, "never (no growth or phi0 = 0)")// &
             ", observed "//periods_text(s%onset_observed, "not within the run")
+         if (s%onset_predicted > 0.0_wp) then
+            n = n + 1; extra(n) = "summary: onset expected in [n*, n2] = ["//fmt(s%onset_predicted)//", "// &
+               late_text(s%onset_late)//"] periods, n2 the "// &
+               "first |x|/r = sin(0.2) of the linear swing (the nonlinear swing falls behind it near 0.1; "// &
+               "measured: every observed onset inside for lambda_max = 1.13 ... 44; at lambda_max <= 1.1 the "// &
+               "swing may saturate below 0.1, no onset)"
+         end if
       else
          n = n + 1; extra(n) = "summary: onset (|phi| > "//real_text(default_phi_sat)//"): predicted n* = "// &
             "ln(0.1/|phi0|)/ln(lambda_max) (damped) = "//periods_text(s%onset_predicted, &
@@ -434,6 +446,15 @@ contains
          call put_es(buffer, pos, x, 10)
          text = trim(adjustl(buffer(1:pos)))
       end function fmt
+      function late_text(n_periods) result(text)
+         real(wp), intent(in) :: n_periods
+         character(len=:), allocatable :: text
+         if (n_periods < 0.0_wp) then
+            text = "never"
+         else
+            text = fmt(n_periods)
+         end if
+      end function late_text
       function periods_text(n_periods, none) result(text)
          real(wp), intent(in) :: n_periods
          character(len=*), intent(in) :: none
