@@ -318,7 +318,7 @@ contains
       type(output_file_t) :: file
       type(progress_t) :: progress
       character(len=chart_line_length), allocatable :: lines(:)
-      integer, allocatable :: statuses(:), lengths(:)
+      integer, allocatable :: statuses(:), lengths(:), ids(:)
       type(chart_layout_t) :: columns
       real(wp), allocatable :: values(:, :), alphas(:), betas(:)
       type(floquet_t) :: f
@@ -332,6 +332,7 @@ contains
       n_omega = size(scene%omegas)
       call scene_chart_columns(scene, columns, error)
       if (allocated(error)) return
+      ids = columns%ids
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
       outside = .false.
@@ -362,7 +363,7 @@ contains
                v = chart_values(alphas(j), betas(j), f, in_physical_domain(alphas(j), betas(j)), statuses(j), &
                                 p%omega/pi, p%a, p%omega)
             end if
-            values(:, j) = v(columns%ids)
+            values(:, j) = v(ids)
             call chart_line(columns, v, lines(j), length=lengths(j))
          end do
          !$omp end parallel do
@@ -419,6 +420,8 @@ contains
       real(wp) :: v(n_chart_columns), per_second, a
       logical :: failed(size(betas)), inaccurate(size(betas))
       integer :: j, need
+      integer :: ids(size(columns%ids))  ! the binary records' columns (a gather through `columns` allocated)
+      ids = columns%ids
       need = columns%need
       ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
       ! when the scene knows ω)
@@ -460,7 +463,7 @@ contains
                              need=need)
          end if
          if (scene%binary) then
-            values(:, j) = v(columns%ids)
+            values(:, j) = v(ids)
          else if (present(beta_texts)) then
             call chart_line(columns, v, lines(j), alpha_text, beta_texts(j), lengths(j))
          else

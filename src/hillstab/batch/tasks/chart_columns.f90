@@ -84,6 +84,11 @@ module hillstab_batch_tasks_chart_columns
       integer, allocatable :: ids(:)                  !! the columns written, in file order
       integer :: need = need_nothing  !! what they need computed at each point: the most any of them needs
       logical :: paper = .false.      !! they include a verdict by the paper's criterion
+      !> the table's digits and styles by col_* index, as plain arrays for the row writers
+      !> (read through the records at every value of every line they cost a fifth of the
+      !> lines' formatting)
+      integer :: digits(n_chart_columns) = 0
+      integer :: styles(n_chart_columns) = 0  !! see `digits`
    end type chart_layout_t
 
    !> Bytes of a header (an upper bound), of one row as text (an upper bound) and binary.
@@ -254,6 +259,8 @@ contains
             call fail(error, scene%source, "scene", "columns", "no column named")
          end if
       end if
+      columns%digits = columns%table%digits
+      columns%styles = columns%table%style
       columns%need = need_nothing
       columns%paper = .false.
       do k = 1, size(columns%ids)
@@ -400,6 +407,10 @@ contains
       logical :: stable, stable_paper, marginal, inside
       real(wp) :: s, a, v(n_chart_columns)
       integer :: j, k, p, length
+      ! the columns in a local array: read through `columns` at every point and column, they
+      ! cost a tenth of a verdict line
+      integer :: ids(size(columns%ids))
+      ids = columns%ids
       do j = 1, size(betas)
          if (j > 1) then
             buffer(pos + 1:pos + 1) = new_line("a")
@@ -429,12 +440,12 @@ contains
          else
             call verdicts(traces(j), epsilon, tolerance, stable, stable_paper, marginal)
          end if
-         do k = 1, size(columns%ids)
+         do k = 1, size(ids)
             if (k > 1) then
                buffer(pos + 1:pos + 1) = " "
                pos = pos + 1
             end if
-            select case (columns%ids(k))
+            select case (ids(k))
             case (col_alpha)
                call put_text24(buffer, pos, alpha_text)
             case (col_beta)
@@ -442,7 +453,7 @@ contains
                   call put_text24(buffer, pos, beta_texts(j))
                else
                   p = pos
-                  call put_es(buffer, p, betas(j), columns%table(col_beta)%digits)
+                  call put_es(buffer, p, betas(j), columns%digits(col_beta))
                   pos = p
                end if
             case (col_stable)
@@ -465,7 +476,7 @@ contains
                pos = p
             case (col_a)
                p = pos
-               call put_value(columns%table(col_a)%style, a, buffer, p)
+               call put_value(columns%styles(col_a), a, buffer, p)
                pos = p
             case default
                ! no other column reaches a chart's verdict file today (omega is offered to
@@ -473,7 +484,7 @@ contains
                v = chart_values(alpha, betas(j), floquet_verdict(traces(j), epsilon, tolerance), inside, statuses(j), &
                                 amplitude=a, need=need_verdict)
                p = pos
-               call put_value(columns%table(columns%ids(k))%style, v(columns%ids(k)), buffer, p)
+               call put_value(columns%styles(ids(k)), v(ids(k)), buffer, p)
                pos = p
             end select
          end do
@@ -538,7 +549,7 @@ contains
             line(pos + 1:pos + 1) = " "
             pos = pos + 1
          end if
-         digits = columns%table(id)%digits
+         digits = columns%digits(id)
          if (digits > 0) then
             if (id == col_alpha .and. have_alpha) then
                line(pos + 1:pos + 24) = alpha_text
@@ -560,7 +571,7 @@ contains
             line(pos + 1:pos + 1) = "1"
             pos = pos + 1
          else
-            call put_value(columns%table(id)%style, v(id), line, pos)
+            call put_value(columns%styles(id), v(id), line, pos)
          end if
       end do
       if (present(length)) then

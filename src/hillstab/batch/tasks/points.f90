@@ -145,6 +145,8 @@ contains
       type(error_t), allocatable :: cause
       real(wp) :: per_second, v(n_chart_columns), alpha, beta, a
       integer :: k
+      integer :: ids(size(columns%ids))  ! the binary records' columns (a gather through `columns` allocated)
+      ids = columns%ids
       ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
       ! when the scene knows ω)
       per_second = 0.0_wp
@@ -161,7 +163,7 @@ contains
          else
             v = chart_values(alpha, beta, f, in_physical_domain(alpha, beta), statuses(k), per_second, a)
          end if
-         if (present(values)) values(:, k) = v(columns%ids)
+         if (present(values)) values(:, k) = v(ids)
          call chart_line(columns, v, lines(k))
       end do
       !$omp end parallel do
