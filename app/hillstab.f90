@@ -9,7 +9,10 @@ program hillstab_cli
    use hillstab_batch_run_signals, only: install_signal_cleanup
    implicit none
    type(serial_runner_t) :: runner
+   integer :: status
    call install_signal_cleanup()
    runner%program = "hillstab"
-   call run_command_line(runner)
+   call run_command_line(runner, status)
+   ! the run's exit status, silently (no STOP banner, no floating-point summary)
+   stop status, quiet=.true.
 end program hillstab_cli

@@ -368,6 +368,7 @@ program hillstab_mpi
    use hillstab_batch_run_signals, only: install_signal_cleanup
    implicit none
    type(mpi_runner_t) :: runner
+   integer :: status
    ! as hillstab: SIGINT, SIGTERM, SIGHUP remove the temporary output (rank 0 writes it);
    ! SIGXFSZ ignored, so a file-size limit is a write error that stops every rank (also
    ! while MPI_Init creates its shared-memory files); again after MPI_Init, in case the MPI
@@ -385,5 +386,7 @@ program hillstab_mpi
       "are computed on all ranks (dynamic load balancing), rank 0 writes the same file", &
       "as a single-process hillstab run; other tasks run on rank 0. Rank 0 keeps the", &
       "checkpoint: --resume continues a run that hillstab or hillstab_mpi began."]
-   call run_command_line(runner)
+   call run_command_line(runner, status)
+   ! every rank ends with the run's exit status (MPI finalized), silently
+   stop status, quiet=.true.
 end program hillstab_mpi

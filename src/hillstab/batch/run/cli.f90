@@ -14,7 +14,9 @@
 !>
 !>```fortran
 !> type(serial_runner_t) :: runner
-!> call run_command_line(runner)   ! never returns
+!> integer :: status
+!> call run_command_line(runner, status)
+!> stop status, quiet=.true.   ! the program turns the status into its exit code
 !>```
 module hillstab_batch_run_cli
    use hillstab_core_kinds, only: version_string
@@ -117,11 +119,14 @@ contains
       end select
    end function exit_status
 
-   !> Parse the command line and run every scene it names, then exit (this never returns):
+   !> Parse the command line and run every scene it names:
    !> `[--quiet] [--resume] [--checkpoint-interval S] SCENE.nml...`, `--template TASK`,
-   !> `--help`, `--version`.
-   subroutine run_command_line(runner)
+   !> `--help`, `--version`. On return the message of a failure is on stderr, the runner
+   !> has finished (`finish`: MPI_Finalize) and `status` is the exit status the program
+   !> ends with (0, 1, 2, 3 or 128 + N, as the module says).
+   subroutine run_command_line(runner, status)
       class(scene_runner_t), intent(inout) :: runner  !! how the scenes run
+      integer, intent(out) :: status  !! the exit status of the run
       type(error_t), allocatable :: error
       character(len=:), allocatable :: argument, written
       character(len=max_path), allocatable :: scenes(:)
@@ -146,6 +151,7 @@ contains
             if (runner%options%interval < 0.0_wp) then
                call quit(on_reporter(runner%program//": --checkpoint-interval: '"//argument//"' is not a number of "// &
                   "seconds >= 0 (see "//runner%program//" --help)"), 2)
+               return
             end if
             cycle
          end if
@@ -153,18 +159,25 @@ contains
          case ("-h", "--help")
             if (runner%reports()) call print_help(runner)
             call quit("", 0)
+            return
          case ("-V", "--version")
             if (runner%reports()) write (output_unit, '(a)') runner%program//" "//version_string
             call quit("", 0)
+            return
          case ("-t", "--template")
             if (i + 1 > command_argument_count()) then
                call quit(on_reporter(runner%program//": --template needs a task: "//task_names_text(", ")// &
                   " (see "//runner%program//" --help)"), 2)
+               return
             end if
             call scene_template(command_argument(i + 1), text, error)
-            if (allocated(error)) call quit(on_reporter(runner%program//": "//error%message), 2)
+            if (allocated(error)) then
+               call quit(on_reporter(runner%program//": "//error%message), 2)
+               return
+            end if
             if (runner%reports()) write (output_unit, '(a)') text
             call quit("", 0)
+            return
          case ("-q", "--quiet")
             quiet = .true.
          case ("--resume")
@@ -173,22 +186,27 @@ contains
             if (i + 1 > command_argument_count()) then
                call quit(on_reporter(runner%program//": --checkpoint-interval needs a number of seconds (see "// &
                   runner%program//" --help)"), 2)
+               return
             end if
             value_next = .true.
          case default
             if (len(argument) > 1 .and. argument(1:1) == "-") then
                call quit(on_reporter(runner%program//": unknown option '"//argument//"' (see "//runner%program// &
                   " --help)"), 2)
+               return
             end if
             if (len(argument) > max_path) then
                call quit(on_reporter(runner%program//": scene path longer than 4096 characters"), 2)
+               return
             end if
             n_scenes = n_scenes + 1
             scenes(n_scenes) = argument
          end select
       end do
-      if (n_scenes == 0) call quit(on_reporter("usage: "//trim(runner%usage(1))//" (see "//runner%program// &
-                                               " --help)"), 2)
+      if (n_scenes == 0) then
+         call quit(on_reporter("usage: "//trim(runner%usage(1))//" (see "//runner%program//" --help)"), 2)
+         return
+      end if
 
       points_failed = .false.
       do i = 1, n_scenes
@@ -199,6 +217,7 @@ contains
             if (error%code /= err_points_failed) then
                signum = settle_signals()
                call quit(error%message, exit_status(error))
+               return
             end if
             ! the file is written; the message says where (also with --quiet: it qualifies the file)
             if (len(error%message) > 0) write (error_unit, '(a)') printable(error%message)
@@ -213,9 +232,11 @@ contains
             if (i < n_scenes) then
                call quit(on_reporter(runner%program//": signal "//integer_text(signum)//" arrived after "// &
                   written//" was written; the scenes after "//trim(scenes(i))//" were not run"), 128 + signum)
+               return
             end if
             call quit(on_reporter(runner%program//": signal "//integer_text(signum)//" arrived after "// &
                written//" was written: the run is complete"), merge(exit_points_failed, 0, points_failed))
+            return
          end if
       end do
       call quit("", merge(exit_points_failed, 0, points_failed))
@@ -230,11 +251,13 @@ contains
          if (runner%reports()) shown = message
       end function on_reporter
 
-      !> One message on stderr, then exit with `status` (silently: no STOP banner, no
-      !> floating-point summary).
-      subroutine quit(message, status)
+      !> The end of the run: one message on stderr, what the run allocated freed, the runner
+      !> finished, the floating-point flags cleared (the program's `stop` then prints no
+      !> summary), the exit status `code` returned; the caller returns next.
+      subroutine quit(message, code)
          character(len=*), intent(in) :: message
-         integer, intent(in) :: status
+         integer, intent(in) :: code
+         status = code
          if (len(message) > 0) write (error_unit, '(a)') printable(message)
          ! free what the program allocated, so that memory checkers see no leak
          if (allocated(scenes)) deallocate (scenes)
@@ -244,7 +267,6 @@ contains
          if (allocated(text)) deallocate (text)
          call runner%finish()
          call ieee_set_flag(ieee_all, .false.)
-         stop status, quiet=.true.
       end subroutine quit
    end subroutine run_command_line
 

@@ -60,6 +60,19 @@ module hillstab_batch_tasks_boundaries
       integer :: gsl_ok = 0              !! 1 GSL agrees, 0 GSL not used here, 2 GSL disagrees with Hill
    end type boundary_row_t
 
+   !> The columns of a boundaries file: where `boundary_columns` puts each column and
+   !> `row_text` its value (the file's order is that of `boundary_columns`).
+   integer, parameter :: curve_alpha = 1, curve_a = 2, curve_beta = 3, curve_kind = 4, curve_order = 5, &
+      curve_branch = 6, curve_index = 7, curve_coexist = 8, curve_status = 9, curve_check = 10, curve_beta_error = 11, &
+      curve_modes = 12, curve_beta_gsl = 13, curve_gsl_ok = 14
+   integer, parameter :: n_curve_columns = 14  !! columns a boundaries file can hold
+   !> The columns of the critical amplitudes of a spring: where `spring_columns` puts each
+   !> column and `spring_run` its value.
+   integer, parameter :: spring_a = 1, spring_alpha = 2, spring_beta = 3, spring_kind = 4, spring_order = 5, &
+      spring_branch = 6, spring_status = 7, spring_check = 8, spring_a_error = 9, spring_alpha_error = 10, &
+      spring_modes = 11
+   integer, parameter :: n_spring_columns = 11  !! columns of a critical amplitudes file
+
    !> GSL's value counts as agreeing with Hill's when within this times max(1, |β|).
    real(wp), parameter :: gsl_agreement = 1.0e-8_wp
 
@@ -191,42 +204,48 @@ contains
       exact_method = method_is_exact(scene%method%kind)
    end function exact_method
 
-   !> The columns of the boundaries file (the GSL witness columns for the Mathieu model).
-   function boundary_columns(mathieu, amplitude) result(table)
-      logical, intent(in) :: mathieu  !! add the GSL witness columns
-      !> add the column a [m] (a scene with `&physical`: a = alpha g/(beta omega^2))
-      logical, intent(in) :: amplitude
-      type(column_t), allocatable :: table(:)
-      type(column_t), allocatable :: with_a(:)
-      integer :: k
-      allocate (table(merge(13, 11, mathieu)))
-      table(1) = column_t("alpha", "", "alpha of the boundary point", style_e17)
-      table(2) = column_t("beta", "", "beta of the boundary point", style_e17)
-      table(3) = column_t("kind", "", "S on the curve: +2 periodic, -2 antiperiodic", style_integer)
-      table(4) = column_t("order", "", "n of a_n/b_n", style_width4)
-      table(5) = column_t("branch", "", "exact 1 = a_n (even), 2 = b_n (odd); approximate 1 = lower, 2 = upper edge", &
-                          style_width2)
-      table(6) = column_t("curve", "", "the block's index (gnuplot index = curve)", style_width4)
-      table(7) = column_t("coexist", "", "1 when both curves of this order coincide", style_integer)
-      table(8) = column_t("status", "", "0 ok, 1 check by auto limited by round-off, 2 failed the check", style_integer)
-      table(9) = column_t("check", "", "S by auto at the point (approximate: S_method)", style_e17)
-      table(10) = column_t("beta_error", "", "estimated error of beta", style_e4)
-      table(11) = column_t("modes", "", "Fourier modes of the truncation (approximate: pieces)", style_integer)
-      if (mathieu) then
-         table(12) = column_t("beta_gsl", "", "GSL's value of the curve", style_e17)
-         table(13) = column_t("gsl_ok", "", "1 GSL agrees, 2 disagrees, 0 not used", style_integer)
-      end if
-      if (amplitude) then
-         allocate (with_a(size(table) + 1))
-         with_a(1) = table(1)
-         with_a(2) = column_t("a", "m", "bounce amplitude a = alpha rho/pi^2 with rho = g pi^2/(beta omega^2) "// &
-                              "(eq. (24)); -1 where beta <= 0 (no equilibrium length)", style_e17)
-         do k = 2, size(table)
-            with_a(k + 1) = table(k)
-         end do
-         call move_alloc(with_a, table)
-      end if
-   end function boundary_columns
+   !> The columns of a boundaries file of this scene, one record each, by its curve_*
+   !> index, and those the file holds, in the order given here: the GSL witness columns for
+   !> a model that has one, the column a [m] for a scene with `&physical` and the elastic
+   !> model (a = alpha g/(beta omega^2)).
+   subroutine boundary_columns(scene, table, ids)
+      type(scene_t), intent(in) :: scene  !! a boundaries scene
+      type(column_t), intent(out) :: table(n_curve_columns)  !! every column, by curve_* index
+      integer, allocatable, intent(out) :: ids(:)  !! the columns of the file, in file order
+      allocate (ids(0))
+      call add(curve_alpha, column_t("alpha", "", "alpha of the boundary point", style_e17))
+      call add(curve_a, column_t("a", "m", "bounce amplitude a = alpha rho/pi^2 with rho = g pi^2/(beta omega^2) "// &
+         "(eq. (24)); -1 where beta <= 0 (no equilibrium length)", style_e17), amplitude_column(scene))
+      call add(curve_beta, column_t("beta", "", "beta of the boundary point", style_e17))
+      call add(curve_kind, column_t("kind", "", "S on the curve: +2 periodic, -2 antiperiodic", style_integer))
+      call add(curve_order, column_t("order", "", "n of a_n/b_n", style_width4))
+      call add(curve_branch, column_t("branch", "", "exact 1 = a_n (even), 2 = b_n (odd); approximate 1 = lower, "// &
+         "2 = upper edge", style_width2))
+      call add(curve_index, column_t("curve", "", "the block's index (gnuplot index = curve)", style_width4))
+      call add(curve_coexist, column_t("coexist", "", "1 when both curves of this order coincide", style_integer))
+      call add(curve_status, column_t("status", "", "0 ok, 1 check by auto limited by round-off, 2 failed the check", &
+         style_integer))
+      call add(curve_check, column_t("check", "", "S by auto at the point (approximate: S_method)", style_e17))
+      call add(curve_beta_error, column_t("beta_error", "", "estimated error of beta", style_e4))
+      call add(curve_modes, column_t("modes", "", "Fourier modes of the truncation (approximate: pieces)", &
+         style_integer))
+      call add(curve_beta_gsl, column_t("beta_gsl", "", "GSL's value of the curve", style_e17), &
+         scene%model%has_witness())
+      call add(curve_gsl_ok, column_t("gsl_ok", "", "1 GSL agrees, 2 disagrees, 0 not used", style_integer), &
+         scene%model%has_witness())
+   contains
+      !> Column k, next in the file when offered (default).
+      subroutine add(k, column, offered)
+         integer, intent(in) :: k
+         type(column_t), intent(in) :: column
+         logical, intent(in), optional :: offered
+         table(k) = column
+         if (present(offered)) then
+            if (.not. offered) return
+         end if
+         ids = [ids, k]
+      end subroutine add
+   end subroutine boundary_columns
 
    !> All boundaries at one α, by Hill's method (checked by auto) or by root finding.
    subroutine compute_boundary_rows(scene, grid, alpha, rows, error)
@@ -358,11 +377,12 @@ contains
       type(alpha_rows_t), allocatable :: per_alpha(:)
       integer, allocatable :: keys(:, :)
       integer :: i, j, c, n_alpha, n_failed_rows, n_failed_alpha, last_i, first_failed
-      logical :: mathieu, found, any_written
+      logical :: found, any_written
       character(len=:), allocatable :: line, first_message
       type(error_t), allocatable :: cause
       real(wp) :: first_failure(2)
-      type(column_t), allocatable :: table(:)
+      type(column_t) :: table(n_curve_columns)
+      integer, allocatable :: ids(:)
       if (self%spring) then
          call spring_run(scene, quiet, error)
          return
@@ -374,7 +394,6 @@ contains
       end if
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
-      mathieu = scene%model%has_witness()
       n_alpha = self%grid%n_alpha
       allocate (per_alpha(n_alpha))
       if (exact_method(scene)) then
@@ -414,8 +433,8 @@ contains
       end do
       call sort_keys(keys)
 
-      table = boundary_columns(mathieu, amplitude_column(scene))
-      call write_header(file, header(scene, self%grid, size(keys, 2)), columns_text(table, all_columns(table)), error)
+      call boundary_columns(scene, table, ids)
+      call write_header(file, header(scene, self%grid, size(keys, 2)), columns_text(table, ids), error)
       if (allocated(error)) then
          call discard_output(file)
          return
@@ -435,7 +454,7 @@ contains
                associate (r => per_alpha(i)%rows(j))
                   if (.not. all([r%order, r%branch, r%trace_sign] == keys(:, c))) cycle
                   if (any_written .and. last_i /= i - 1) call write_text(file, "", error)
-                  line = row_text(table, r, c - 1, mathieu, scene)
+                  line = row_text(table, ids, r, c - 1, scene)
                   call write_text(file, line, error)
                   if (r%status == status_failed) then
                      n_failed_rows = n_failed_rows + 1
@@ -552,22 +571,24 @@ contains
       call progress_end(progress)
    end subroutine check_every_row
 
-   !> The columns of the critical amplitudes of a spring.
+   !> The columns of the critical amplitudes of a spring, one record each, by its spring_*
+   !> index (the file's order).
    function spring_columns() result(table)
-      type(column_t), allocatable :: table(:)
-      allocate (table(11))
-      table(1) = column_t("a", "m", "critical bounce amplitude: the stability of the bounce changes here", style_e17)
-      table(2) = column_t("alpha", "", "alpha = a pi^2/rho of the crossing", style_e17)
-      table(3) = column_t("beta", "", "the spring's beta = g pi^2/(rho omega^2)", style_e17)
-      table(4) = column_t("kind", "", "S at the crossing: +2 periodic, -2 antiperiodic", style_integer)
-      table(5) = column_t("order", "", "n of the curve a_n/b_n crossed", style_width4)
-      table(6) = column_t("branch", "", "1 = a_n (even), 2 = b_n (odd)", style_width2)
-      table(7) = column_t("status", "", "0 ok, 1 check by auto limited by round-off, 2 failed the check", &
-                          style_integer)
-      table(8) = column_t("check", "", "S by method auto at (alpha, beta): +-2 within the tolerance", style_e17)
-      table(9) = column_t("a_error", "m", "estimated error of a", style_e4)
-      table(10) = column_t("alpha_error", "", "estimated error of alpha", style_e4)
-      table(11) = column_t("modes", "", "Fourier modes of Hill's truncation at the crossing", style_integer)
+      type(column_t) :: table(n_spring_columns)
+      table(spring_a) = column_t("a", "m", "critical bounce amplitude: the stability of the bounce changes here", &
+         style_e17)
+      table(spring_alpha) = column_t("alpha", "", "alpha = a pi^2/rho of the crossing", style_e17)
+      table(spring_beta) = column_t("beta", "", "the spring's beta = g pi^2/(rho omega^2)", style_e17)
+      table(spring_kind) = column_t("kind", "", "S at the crossing: +2 periodic, -2 antiperiodic", style_integer)
+      table(spring_order) = column_t("order", "", "n of the curve a_n/b_n crossed", style_width4)
+      table(spring_branch) = column_t("branch", "", "1 = a_n (even), 2 = b_n (odd)", style_width2)
+      table(spring_status) = column_t("status", "", "0 ok, 1 check by auto limited by round-off, 2 failed the "// &
+         "check", style_integer)
+      table(spring_check) = column_t("check", "", "S by method auto at (alpha, beta): +-2 within the tolerance", &
+         style_e17)
+      table(spring_a_error) = column_t("a_error", "m", "estimated error of a", style_e4)
+      table(spring_alpha_error) = column_t("alpha_error", "", "estimated error of alpha", style_e4)
+      table(spring_modes) = column_t("modes", "", "Fourier modes of Hill's truncation at the crossing", style_integer)
    end function spring_columns
 
    !> The critical amplitudes of the spring of `&physical`: every 0 <= a < rho where a
@@ -581,10 +602,10 @@ contains
       type(alpha_crossing_t), allocatable :: crossings(:)
       type(boundary_check_t), allocatable :: checks(:)
       integer, allocatable :: statuses(:)
-      type(column_t), allocatable :: table(:)
+      type(column_t) :: table(n_spring_columns)
       type(output_file_t) :: file
       type(error_t), allocatable :: cause
-      real(wp) :: rho, beta, alpha_end, values(11)
+      real(wp) :: rho, beta, alpha_end, values(n_spring_columns)
       real(wp), allocatable :: cuts(:)
       logical, allocatable :: unstable(:)
       character(len=400) :: buffer
@@ -638,10 +659,17 @@ contains
       n_failed = 0
       do j = 1, size(crossings)
          if (allocated(error)) exit
-         values = [crossings(j)%alpha*rho/pi2, crossings(j)%alpha, beta, real(crossings(j)%trace_sign, wp), &
-                   real(crossings(j)%order, wp), real(merge(1, 2, crossings(j)%parity == 1), wp), &
-                   real(statuses(j), wp), checks(j)%trace, crossings(j)%alpha_error*rho/pi2, &
-                   crossings(j)%alpha_error, real(crossings(j)%modes, wp)]
+         values(spring_a) = crossings(j)%alpha*rho/pi2
+         values(spring_alpha) = crossings(j)%alpha
+         values(spring_beta) = beta
+         values(spring_kind) = real(crossings(j)%trace_sign, wp)
+         values(spring_order) = real(crossings(j)%order, wp)
+         values(spring_branch) = real(merge(1, 2, crossings(j)%parity == 1), wp)
+         values(spring_status) = real(statuses(j), wp)
+         values(spring_check) = checks(j)%trace
+         values(spring_a_error) = crossings(j)%alpha_error*rho/pi2
+         values(spring_alpha_error) = crossings(j)%alpha_error
+         values(spring_modes) = real(crossings(j)%modes, wp)
          pos = 0
          call put_row(table, all_columns(table), values, buffer, pos)
          call write_text(file, buffer(:pos), error)
@@ -797,29 +825,40 @@ contains
       end do
    end subroutine sort_keys
 
-   !> One data line.
    !> Whether the file has the column a: a scene with `&physical` and the elastic model.
    pure logical function amplitude_column(scene)
       type(scene_t), intent(in) :: scene
       amplitude_column = scene%physical .and. scene%model%is_pendulum()
    end function amplitude_column
 
-   function row_text(table, r, curve, mathieu, scene) result(line)
-      type(column_t), intent(in) :: table(:)
-      type(boundary_row_t), intent(in) :: r
-      integer, intent(in) :: curve
-      logical, intent(in) :: mathieu
-      type(scene_t), intent(in) :: scene
+   !> One data line: the columns `ids` of the row `r` of curve `curve`.
+   function row_text(table, ids, r, curve, scene) result(line)
+      type(column_t), intent(in) :: table(:)  !! every column (`boundary_columns`)
+      integer, intent(in) :: ids(:)           !! the columns of the file
+      type(boundary_row_t), intent(in) :: r   !! the boundary point
+      integer, intent(in) :: curve            !! its curve's index (from 0)
+      type(scene_t), intent(in) :: scene      !! the scene
       character(len=:), allocatable :: line
       character(len=400) :: buffer
       integer :: pos
-      real(wp), allocatable :: values(:)
-      values = [r%alpha, r%beta, real(r%trace_sign, wp), real(r%order, wp), real(r%branch, wp), real(curve, wp), &
-                merge(1.0_wp, 0.0_wp, r%coexistent), real(r%status, wp), r%check, r%beta_error, real(r%modes, wp)]
-      if (mathieu) values = [values, r%beta_gsl, real(r%gsl_ok, wp)]
-      if (amplitude_column(scene)) values = [values(1:1), point_amplitude(scene, 1, r%alpha, r%beta), values(2:)]
+      real(wp) :: values(n_curve_columns)
+      values(curve_alpha) = r%alpha
+      values(curve_a) = 0.0_wp
+      if (amplitude_column(scene)) values(curve_a) = point_amplitude(scene, 1, r%alpha, r%beta)
+      values(curve_beta) = r%beta
+      values(curve_kind) = real(r%trace_sign, wp)
+      values(curve_order) = real(r%order, wp)
+      values(curve_branch) = real(r%branch, wp)
+      values(curve_index) = real(curve, wp)
+      values(curve_coexist) = merge(1.0_wp, 0.0_wp, r%coexistent)
+      values(curve_status) = real(r%status, wp)
+      values(curve_check) = r%check
+      values(curve_beta_error) = r%beta_error
+      values(curve_modes) = real(r%modes, wp)
+      values(curve_beta_gsl) = r%beta_gsl
+      values(curve_gsl_ok) = real(r%gsl_ok, wp)
       pos = 0
-      call put_row(table, all_columns(table), values, buffer, pos)
+      call put_row(table, ids, values, buffer, pos)
       line = buffer(:pos)
    end function row_text
 

@@ -26,12 +26,10 @@ module hillstab_batch_tasks_chart
    use hillstab_hill_model, only: hill_point_t
    use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point, grid_size_text
    use hillstab_batch_tasks_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, &
-      chart_header, &
-      point_amplitude, columns_need, columns_paper, verdict_lines, &
+      chart_header, chart_layout_t, chart_names, &
+      point_amplitude, verdict_lines, &
       scene_chart_columns, check_method_runs, warn_inaccurate, failed_points_error, chart_line_length, evaluate_point, &
       header_bytes, text_row_bytes, binary_row_bytes, col_physical
-   use hillstab_batch_output_columns, only: columns_text
-   use hillstab_batch_tasks_chart_columns, only: chart_columns
    use hillstab_batch_output_file, only: output_file_t, finish_output, discard_output, write_header, write_text, &
       write_records, joined_lines, join_lines
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
@@ -46,7 +44,7 @@ module hillstab_batch_tasks_chart
       !> what every row shares, made by `prepare_units`: the β values, their text, the columns
       real(wp), allocatable :: betas(:)
       character(len=24), allocatable :: beta_texts(:)  !! format_es(betas, 17)
-      integer, allocatable :: ids(:)                 !! the columns written
+      type(chart_layout_t) :: columns                !! the columns written
       !> `&physical a_min, a_max, n_a, omega_min, omega_max, n_omega` without `&chart`: the
       !> chart runs over (a, ω) at fixed r0, g (blocks of constant a)
       logical :: physical_grid = .false.
@@ -100,7 +98,7 @@ contains
       type(scene_file_t), intent(in) :: file      !! the scene file
       type(scene_t), intent(in) :: scene          !! the `&scene` settings
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
-      integer, allocatable :: ids(:)
+      type(chart_layout_t) :: columns
       if (size(scene%omegas) > 0) then
          ! a chart over (a, omega): the grid comes from &physical
          if (group_present(file%unit, "chart")) then
@@ -117,7 +115,7 @@ contains
                integer_text(int(self%grid%n_alpha, int64)*self%grid%n_beta)//" points exceed the limit of 1e8")
             return
          end if
-         call scene_chart_columns(scene, ids, error)
+         call scene_chart_columns(scene, columns, error)
          return
       end if
       allocate (self%groups(1))
@@ -127,7 +125,7 @@ contains
          max(abs(self%grid%alpha_min), abs(self%grid%alpha_max)) + &
          max(abs(self%grid%beta_min), abs(self%grid%beta_max)), error)
       if (allocated(error)) return
-      call scene_chart_columns(scene, ids, error)
+      call scene_chart_columns(scene, columns, error)
    end subroutine chart_read
 
    !> Header plus n_alpha n_beta rows (and one blank line per α block).
@@ -169,7 +167,8 @@ contains
       character(len=24), allocatable :: beta_texts(:)
       logical :: stopped, stop_now
       character(len=chart_line_length), allocatable :: block_lines(:, :, :)
-      integer, allocatable :: block_status(:, :, :), statuses(:), ids(:), block_lengths(:, :, :), lengths(:)
+      integer, allocatable :: block_status(:, :, :), statuses(:), block_lengths(:, :, :), lengths(:)
+      type(chart_layout_t) :: columns
       real(wp), allocatable :: block_values(:, :, :, :), values(:, :)
       integer(int64) :: n_inaccurate, n_failed
       real(wp) :: first_inaccurate(2), first_failed(2)
@@ -182,7 +181,7 @@ contains
       end if
       n_alpha = self%grid%n_alpha
       n_beta = self%grid%n_beta
-      call scene_chart_columns(scene, ids, error)
+      call scene_chart_columns(scene, columns, error)
       if (allocated(error)) return
       ! an unwritable output path fails before any computing
       call open_scene_output(scene, file, error)
@@ -193,7 +192,7 @@ contains
          return
       end if
       call chart_betas(self%grid, all_betas, beta_texts)
-      call write_header(file, chart_header(scene, outside(self%grid), ids), columns_text(chart_columns(scene), ids), &
+      call write_header(file, chart_header(scene, outside(self%grid), columns), chart_names(columns), &
                         error, names_line=scene%names_line, records=[n_beta, n_alpha])
       if (allocated(error)) then
          call discard_output(file)
@@ -212,7 +211,7 @@ contains
          group = 8*max_threads()
          n_groups = (n_alpha + group - 1)/group
          allocate (block_lines(n_beta, group, 0:1), block_status(n_beta, group, 0:1), &
-                   block_values(size(ids), n_beta, group, 0:1), block_lengths(n_beta, group, 0:1), stat=alloc_status)
+                   block_values(size(columns%ids), n_beta, group, 0:1), block_lengths(n_beta, group, 0:1), stat=alloc_status)
          if (alloc_status /= 0) then
             call out_of_memory()
             return
@@ -240,7 +239,7 @@ contains
                !$omp do schedule(dynamic)
                do i = (g - 1)*group + 1, min(n_alpha, g*group)
                   alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i)
-                  call compute_row(scene, ids, alpha, all_betas, block_lines(:, i - (g - 1)*group, mod(g, 2)), &
+                  call compute_row(scene, columns, alpha, all_betas, block_lines(:, i - (g - 1)*group, mod(g, 2)), &
                      block_lengths(:, i - (g - 1)*group, mod(g, 2)), &
                      block_values(:, :, i - (g - 1)*group, mod(g, 2)), block_status(:, i - (g - 1)*group, mod(g, 2)), &
                      beta_texts=beta_texts)
@@ -253,14 +252,14 @@ contains
          !$omp end parallel
       else
          ! few rows: the points of each row in parallel chunks sharing the prepared meshes
-         allocate (lines(n_beta), lengths(n_beta), statuses(n_beta), values(size(ids), n_beta), stat=alloc_status)
+         allocate (lines(n_beta), lengths(n_beta), statuses(n_beta), values(size(columns%ids), n_beta), stat=alloc_status)
          if (alloc_status /= 0) then
             call out_of_memory()
             return
          end if
          do i = 1, n_alpha
             alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i)
-            call compute_row_in_chunks(scene, ids, alpha, all_betas, lines, lengths, values, statuses, beta_texts)
+            call compute_row_in_chunks(scene, columns, alpha, all_betas, lines, lengths, values, statuses, beta_texts)
             call finish_row(i, alpha, lines, lengths, values, statuses)
             if (stopped) exit
          end do
@@ -319,7 +318,8 @@ contains
       type(output_file_t) :: file
       type(progress_t) :: progress
       character(len=chart_line_length), allocatable :: lines(:)
-      integer, allocatable :: statuses(:), ids(:), lengths(:)
+      integer, allocatable :: statuses(:), lengths(:), ids(:)
+      type(chart_layout_t) :: columns
       real(wp), allocatable :: values(:, :), alphas(:), betas(:)
       type(floquet_t) :: f
       type(error_t), allocatable :: cause
@@ -330,18 +330,19 @@ contains
       logical :: outside
       n_a = size(scene%amplitudes)
       n_omega = size(scene%omegas)
-      call scene_chart_columns(scene, ids, error)
+      call scene_chart_columns(scene, columns, error)
       if (allocated(error)) return
+      ids = columns%ids
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
       outside = .false.
-      call write_header(file, chart_header(scene, outside, ids), columns_text(chart_columns(scene), ids), error, &
+      call write_header(file, chart_header(scene, outside, columns), chart_names(columns), error, &
                         names_line=scene%names_line, records=[n_omega, n_a])
       if (allocated(error)) then
          call discard_output(file)
          return
       end if
-      allocate (lines(n_omega), lengths(n_omega), statuses(n_omega), values(size(ids), n_omega), alphas(n_omega), &
+      allocate (lines(n_omega), lengths(n_omega), statuses(n_omega), values(size(columns%ids), n_omega), alphas(n_omega), &
                 betas(n_omega))
       n_failed = 0
       n_inaccurate = 0
@@ -355,15 +356,15 @@ contains
             alphas(j) = scene%model%physical_alpha(p)
             betas(j) = physical_beta(p)
             epsilon = physical_epsilon(p)
-            call evaluate_point(scene, alphas(j), betas(j), f, cause, statuses(j), epsilon, ids)
+            call evaluate_point(scene, alphas(j), betas(j), f, cause, statuses(j), epsilon, columns)
             if (statuses(j) == status_failed) then
-               v = failed_values(alphas(j), betas(j), in_physical_domain(alphas(j), betas(j)), p%a, p%omega)
+               v = failed_values(columns, alphas(j), betas(j), in_physical_domain(alphas(j), betas(j)), p%a, p%omega)
             else
                v = chart_values(alphas(j), betas(j), f, in_physical_domain(alphas(j), betas(j)), statuses(j), &
                                 p%omega/pi, p%a, p%omega)
             end if
             values(:, j) = v(ids)
-            call chart_line(ids, v, lines(j), length=lengths(j))
+            call chart_line(columns, v, lines(j), length=lengths(j))
          end do
          !$omp end parallel do
          if (scene%binary) then
@@ -399,10 +400,10 @@ contains
    end function outside
 
    !> Text lines or binary records (and statuses) of the chart points (α, β_j) of one row
-   !> or part of a row, with the columns `ids`.
-   subroutine compute_row(scene, ids, alpha, betas, lines, lengths, values, statuses, plan, beta_texts)
+   !> or part of a row, with the file's columns.
+   subroutine compute_row(scene, columns, alpha, betas, lines, lengths, values, statuses, plan, beta_texts)
       type(scene_t), intent(in) :: scene
-      integer, intent(in) :: ids(:)  !! the columns (hillstab_batch_tasks_chart_columns)
+      type(chart_layout_t), intent(in) :: columns  !! the columns (hillstab_batch_tasks_chart_columns)
       real(wp), intent(in) :: alpha, betas(:)
       character(len=chart_line_length), intent(inout) :: lines(:)  !! text format: one line a point
       integer, intent(out) :: lengths(:)           !! text format: the length of each line
@@ -419,14 +420,16 @@ contains
       real(wp) :: v(n_chart_columns), per_second, a
       logical :: failed(size(betas)), inaccurate(size(betas))
       integer :: j, need
-      need = columns_need(ids)
+      integer :: ids(size(columns%ids))  ! the binary records' columns (a gather through `columns` allocated)
+      ids = columns%ids
+      need = columns%need
       ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
       ! when the scene knows ω)
       per_second = 0.0_wp
       if (scene%physical) per_second = scene%pendulum%omega/pi
       row = hill_point_t(alpha, 0.0_wp, scene%epsilon)
       call monodromy_trace_batch(scene%model, row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate, &
-                                 need=need, paper=columns_paper(ids))
+                                 need=need, paper=columns%paper)
       alpha_text = format_es(alpha, 17)
       statuses = merge(status_roundoff, status_ok, inaccurate)
       where (failed) statuses = status_failed
@@ -437,18 +440,18 @@ contains
             ! a verdict line (or a failed point's), written directly
             lengths(j) = 0
             if (present(beta_texts)) then
-               call verdict_lines(ids, alpha, betas(j:j), traces(j:j), scene%epsilon, scene%method%tolerance, &
+               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), scene%epsilon, scene%method%tolerance, &
                                   statuses(j:j), [in_physical_domain(alpha, betas(j))], [a], alpha_text, lines(j), &
                                   lengths(j), beta_texts(j:j))
             else
-               call verdict_lines(ids, alpha, betas(j:j), traces(j:j), scene%epsilon, scene%method%tolerance, &
+               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), scene%epsilon, scene%method%tolerance, &
                                   statuses(j:j), [in_physical_domain(alpha, betas(j))], [a], alpha_text, lines(j), &
                                   lengths(j))
             end if
             cycle
          end if
          if (failed(j)) then
-            v = failed_values(alpha, betas(j), in_physical_domain(alpha, betas(j)), a)
+            v = failed_values(columns, alpha, betas(j), in_physical_domain(alpha, betas(j)), a)
          else
             if (need <= need_verdict) then
                ! verdicts only: no multipliers (their columns, not in a verdict file, stay 0)
@@ -462,9 +465,9 @@ contains
          if (scene%binary) then
             values(:, j) = v(ids)
          else if (present(beta_texts)) then
-            call chart_line(ids, v, lines(j), alpha_text, beta_texts(j), lengths(j))
+            call chart_line(columns, v, lines(j), alpha_text, beta_texts(j), lengths(j))
          else
-            call chart_line(ids, v, lines(j), alpha_text, length=lengths(j))
+            call chart_line(columns, v, lines(j), alpha_text, length=lengths(j))
          end if
       end do
    end subroutine compute_row
@@ -478,9 +481,9 @@ contains
 
    !> `compute_row` on a whole row, split into chunks computed in parallel that share
    !> the meshes prepared for the row.
-   subroutine compute_row_in_chunks(scene, ids, alpha, betas, lines, lengths, values, statuses, beta_texts)
+   subroutine compute_row_in_chunks(scene, columns, alpha, betas, lines, lengths, values, statuses, beta_texts)
       type(scene_t), intent(in) :: scene
-      integer, intent(in) :: ids(:)  !! the columns
+      type(chart_layout_t), intent(in) :: columns  !! the columns
       real(wp), intent(in) :: alpha, betas(:)
       character(len=chart_line_length), intent(inout) :: lines(:)  !! text format: one line a point
       integer, intent(out) :: lengths(:)           !! text format: the length of each line
@@ -493,12 +496,12 @@ contains
       chunk = max(16, n/(8*max_threads()))
       n_chunks = (n + chunk - 1)/chunk
       call prepare_batch(scene%model, hill_point_t(alpha, 0.0_wp, scene%epsilon), betas, scene%method, plan, &
-                         columns_need(ids))
+                         columns%need)
       !$omp parallel do schedule(dynamic) default(shared) private(c, first, last)
       do c = 1, n_chunks
          first = (c - 1)*chunk + 1
          last = min(n, c*chunk)
-         call compute_row(scene, ids, alpha, betas(first:last), lines(first:last), lengths(first:last), &
+         call compute_row(scene, columns, alpha, betas(first:last), lines(first:last), lengths(first:last), &
             values(:, first:last), statuses(first:last), plan, beta_texts(first:last))
       end do
       !$omp end parallel do
@@ -538,7 +541,7 @@ contains
       type(scene_t), intent(in) :: scene    !! its scene
       type(error_t), allocatable :: error
       call chart_betas(self%grid, self%betas, self%beta_texts)
-      call scene_chart_columns(scene, self%ids, error)  ! checked when the scene was read
+      call scene_chart_columns(scene, self%columns, error)  ! checked when the scene was read
    end subroutine chart_prepare_units
 
    !> Row `unit` as the file holds it (a blank line before every row but the first),
@@ -555,16 +558,16 @@ contains
       real(wp), allocatable :: values(:, :)
       real(wp) :: alpha
       alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, self%grid%n_alpha, unit)
-      if (rows_in_parallel(self%grid) .and. columns_need(self%ids) <= need_verdict) then
-         call verdict_row_text(scene, self%ids, alpha, self%betas, self%beta_texts, unit > 1, text, statuses)
+      if (rows_in_parallel(self%grid) .and. self%columns%need <= need_verdict) then
+         call verdict_row_text(scene, self%columns, alpha, self%betas, self%beta_texts, unit > 1, text, statuses)
          return
       end if
-      allocate (lines(self%grid%n_beta), lengths(self%grid%n_beta), values(size(self%ids), self%grid%n_beta))
+      allocate (lines(self%grid%n_beta), lengths(self%grid%n_beta), values(size(self%columns%ids), self%grid%n_beta))
       if (rows_in_parallel(self%grid)) then
-         call compute_row(scene, self%ids, alpha, self%betas, lines, lengths, values, statuses, &
+         call compute_row(scene, self%columns, alpha, self%betas, lines, lengths, values, statuses, &
                           beta_texts=self%beta_texts)
       else
-         call compute_row_in_chunks(scene, self%ids, alpha, self%betas, lines, lengths, values, statuses, &
+         call compute_row_in_chunks(scene, self%columns, alpha, self%betas, lines, lengths, values, statuses, &
                                     self%beta_texts)
       end if
       call join_lines(lines, unit > 1, text, lengths=lengths)
@@ -574,9 +577,9 @@ contains
    !> `compute_row` and `join_lines` make it, written straight into the unit's text: no
    !> array of lines, the physical domain tested only for a `physical` column (the verdict
    !> charts spent a fifth of their time between the traces and the text).
-   subroutine verdict_row_text(scene, ids, alpha, betas, beta_texts, separate, text, statuses)
+   subroutine verdict_row_text(scene, columns, alpha, betas, beta_texts, separate, text, statuses)
       type(scene_t), intent(in) :: scene  !! the chart's scene (text format)
-      integer, intent(in) :: ids(:)  !! the columns, none needing more than the verdict
+      type(chart_layout_t), intent(in) :: columns  !! the columns, none needing more than the verdict
       real(wp), intent(in) :: alpha, betas(:)  !! the row
       character(len=24), intent(in) :: beta_texts(:)  !! format_es(betas, 17)
       logical, intent(in) :: separate  !! a blank line before the row
@@ -590,12 +593,12 @@ contains
       character(len=:), allocatable :: buffer
       integer :: j, pos
       call monodromy_trace_batch(scene%model, hill_point_t(alpha, 0.0_wp, scene%epsilon), betas, scene%method, &
-                                 traces, failed, cause, inaccurate=inaccurate, need=columns_need(ids), &
-                                 paper=columns_paper(ids))
+                                 traces, failed, cause, inaccurate=inaccurate, need=columns%need, &
+                                 paper=columns%paper)
       statuses = merge(status_roundoff, status_ok, inaccurate)
       where (failed) statuses = status_failed
       allocate (physical(0), amplitudes(0))
-      if (any(ids == col_physical)) physical = [(in_physical_domain(alpha, betas(j)), j=1, size(betas))]
+      if (any(columns%ids == col_physical)) physical = [(in_physical_domain(alpha, betas(j)), j=1, size(betas))]
       if (scene%physical) amplitudes = [(point_amplitude(scene, j, alpha, betas(j)), j=1, size(betas))]
       ! room for every line at its longest (and one more, for the line being written)
       allocate (character(len=(size(betas) + 1)*(chart_line_length + 1) + 1) :: buffer)
@@ -604,7 +607,7 @@ contains
          buffer(1:1) = new_line("a")
          pos = 1
       end if
-      call verdict_lines(ids, alpha, betas, traces, scene%epsilon, scene%method%tolerance, statuses, physical, &
+      call verdict_lines(columns, alpha, betas, traces, scene%epsilon, scene%method%tolerance, statuses, physical, &
                          amplitudes, format_es(alpha, 17), buffer, pos, beta_texts)
       text = buffer(1:pos)
    end subroutine verdict_row_text
@@ -615,12 +618,12 @@ contains
       type(scene_t), intent(in) :: scene  !! its scene
       type(output_file_t), intent(inout) :: file  !! the open output file
       type(error_t), allocatable, intent(out) :: error  !! why the file cannot be written
-      integer, allocatable :: ids(:)
-      call scene_chart_columns(scene, ids, error)
+      type(chart_layout_t) :: columns
+      call scene_chart_columns(scene, columns, error)
       if (allocated(error)) return
       call check_method_runs(scene, self%grid%alpha_min, self%grid%beta_min, error)
       if (allocated(error)) return
-      call write_header(file, chart_header(scene, outside(self%grid), ids), columns_text(chart_columns(scene), ids), &
+      call write_header(file, chart_header(scene, outside(self%grid), columns), chart_names(columns), &
                         error, names_line=scene%names_line)
    end subroutine chart_open_units
 

@@ -1,16 +1,20 @@
-!> What the chart and points tasks share: the columns of their files (one table: name,
-!> unit, meaning, style, placeholder — and the value of each at a computed point), the
+!> What the chart and points tasks share: the columns of their files (one table of records,
+!> `chart_column_table`: name, unit, meaning, style, placeholder, what each needs computed,
+!> when it is offered — and the value of each at a computed point, `chart_values`), the
 !> evaluation of one point by the scene's method, the header lines, and the messages for
 !> failed and round-off limited points.
 !>
-!> A new column of chart and points files is added here and nowhere else: a `col_*`
-!> index, its `column_t` in `chart_columns`, when it is offered in `offered_chart_columns`
-!> and its value in `chart_values`.
+!> A new column of chart and points files is added here and nowhere else: a `col_*` index
+!> (its place in the file order), its record in `chart_column_table` and its value in
+!> `chart_values`. The `# columns:` line, the header's lines (the column's meaning, its
+!> `# accuracy of` line, its placeholder), `&scene columns`, what a file computes, the
+!> text and binary rows and the units of the MPI program follow from the table.
 !>
 !>```fortran
-!> type(column_t), allocatable :: table(:)
-!> table = chart_columns(scene)
-!> print '(a)', columns_text(table, offered_chart_columns(scene))
+!> type(chart_layout_t) :: columns
+!> type(error_t), allocatable :: error
+!> call scene_chart_columns(scene, columns, error)
+!> print '(a)', chart_names(columns)   ! the `# columns:` line's names
 !>```
 module hillstab_batch_tasks_chart_columns
    use hillstab_core_kinds, only: wp, int64, version_string
@@ -21,23 +25,25 @@ module hillstab_batch_tasks_chart_columns
    use hillstab_hill_model, only: hill_model_t, hill_point_t, model_description
    use hillstab_hill_coefficient, only: sampling_name
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus, verdicts, near_threshold
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict, largest_multiplier_modulus, &
+      verdicts, near_threshold
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, method_name, method_uses_segments, method_is_exact, &
       need_nothing, need_verdict, need_growth, need_trace
    use hillstab_batch_scene_types, only: scene_t, task_t, scene_header, output_path, physical_summary
    use hillstab_batch_scene_file, only: fail
-   use hillstab_batch_output_columns, only: column_t, style_e17, style_e11, style_e4, style_flag, column_lines, &
-      find_columns, columns_text, put_value, failed_row
+   use hillstab_batch_output_columns, only: column_t, style_e17, style_e11, style_e7, style_e4, style_flag, &
+      column_lines, find_columns, columns_text, put_value
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
-   public :: floquet_task_t, chart_columns, offered_chart_columns, chart_values, scene_chart_columns, n_chart_columns
+   public :: floquet_task_t, chart_column_t, chart_layout_t, chart_column_table, chart_names, chart_values
+   public :: scene_chart_columns, n_chart_columns
    public :: chart_header, common_header, evaluate_point, failed_points_error, check_method_runs, warn_inaccurate
    public :: clamp_magnitude, log10_floor, chart_line_length, stacked, chart_line, failed_values
-   public :: header_bytes, text_row_bytes, binary_row_bytes, point_amplitude, columns_need, columns_paper
-   public :: verdict_lines, col_physical
+   public :: header_bytes, text_row_bytes, binary_row_bytes, point_amplitude, verdict_lines, col_physical
 
-   !> The columns of a chart or points file, in file order.
+   !> The columns of a chart or points file, in file order: where `chart_column_table` puts
+   !> each record and `chart_values` each value.
    integer, parameter :: col_alpha = 1, col_a = 2, col_beta = 3, col_omega = 4, col_s = 5, col_stable = 6, &
       col_lambda_max = 7, col_mu = 8, col_log10_abs_s = 9, col_overflow = 10, col_physical = 11, col_stable_paper = 12, &
       col_mu_per_s = 13, col_error_estimate = 14, col_status = 15
@@ -46,28 +52,45 @@ module hillstab_batch_tasks_chart_columns
    !> Characters in one chart line (15 columns of at most 24 characters, with blanks: 224 at
    !> most).
    integer, parameter :: chart_line_length = 280
-   !> The text style of each column (hillstab_batch_output_columns), by the col_* index.
-   integer, parameter :: chart_styles(n_chart_columns) = [style_e17, style_e17, style_e17, style_e17, style_e17, &
-      style_flag, style_e11, style_e11, style_e11, style_flag, style_flag, style_flag, style_e11, style_e4, style_flag]
-   !> The significant digits of each column's text, from its style (e17 17, e11 11, e4 4;
-   !> 0 for the flags, which `put_value` writes).
-   integer, parameter :: chart_digits(n_chart_columns) = merge(17, merge(11, merge(4, 0, chart_styles == style_e4), &
-      chart_styles == style_e11), chart_styles == style_e17)
-   !> What a failed point writes in each column (where `chart_kept` is false): values outside
-   !> every column's range.
-   real(wp), parameter :: chart_placeholders(n_chart_columns) = [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, -1.0_wp, &
-      -1.0_wp, 0.0_wp, -999.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, real(status_failed, wp)]
-   !> What each column needs computed at a point (hillstab_integrate_monodromy): nothing
-   !> for the grid's own columns and status, the verdict for stable and stable_paper, the
-   !> growth (exact where |S| < 2, S to the tolerance elsewhere) for lambda_max, mu and
-   !> mu_per_s, S to the tolerance for S, log10_abs_S, overflow and error_estimate. A file
-   !> computes what the most demanding of its columns needs.
-   integer, parameter :: chart_needs(n_chart_columns) = [need_nothing, need_nothing, need_nothing, need_nothing, &
-      need_trace, need_verdict, need_growth, need_growth, need_trace, need_trace, need_nothing, need_verdict, &
-      need_growth, need_trace, need_nothing]
-   !> The columns a failed point keeps: its alpha, a, beta, omega and physical.
-   logical, parameter :: chart_kept(n_chart_columns) = [.true., .true., .true., .true., .false., .false., .false., &
-      .false., .false., .false., .true., .false., .false., .false., .false.]
+
+   !> The header's `# accuracy of` statement for a column (`accuracy_line`): none (the
+   !> column needs nothing computed), S to the tolerance, a verdict, the growth (λ, μ), the
+   !> method's own error estimate.
+   integer, parameter :: accuracy_none = 0, accuracy_trace = 1, accuracy_verdict = 2, accuracy_growth = 3, &
+      accuracy_estimate = 4
+
+   !> One column of chart and points files: what the `# columns:` line, the header, the rows
+   !> of failed points (`placeholder`, `keep_on_failure`), `&scene columns`, the text of a
+   !> row and the computation know of it. Made by `chart_column`.
+   type, extends(column_t) :: chart_column_t
+      !> what the column needs computed at a point (need_* of hillstab_integrate_monodromy):
+      !> nothing, the verdict, the growth (exact where |S| < 2, S to the tolerance elsewhere)
+      !> or S to the tolerance; a file computes what the most demanding of its columns needs
+      integer :: need = need_nothing
+      integer :: accuracy = accuracy_none  !! its `# accuracy of` statement (accuracy_*)
+      !> significant digits of its text, from its style (e17 17, e11 11, e7 7, e4 4; 0 for
+      !> the flags, which `put_value` writes)
+      integer :: digits = 17
+      !> a verdict by the paper's criterion |S1| <= 2 (the computation then settles |S| = 2
+      !> too, and its accuracy is stated at |S| = 2)
+      logical :: paper = .false.
+      logical :: offered = .true.  !! files of this scene offer the column
+   end type chart_column_t
+
+   !> The columns of one chart or points file, made once per file (`scene_chart_columns`):
+   !> the table of its scene, the columns written and what they need.
+   type :: chart_layout_t
+      type(chart_column_t), allocatable :: table(:)  !! every column (`chart_column_table`), by col_* index
+      integer, allocatable :: ids(:)                  !! the columns written, in file order
+      integer :: need = need_nothing  !! what they need computed at each point: the most any of them needs
+      logical :: paper = .false.      !! they include a verdict by the paper's criterion
+      !> the table's digits and styles by col_* index, as plain arrays for the row writers
+      !> (read through the records at every value of every line they cost a fifth of the
+      !> lines' formatting)
+      integer :: digits(n_chart_columns) = 0
+      integer :: styles(n_chart_columns) = 0  !! see `digits`
+   end type chart_layout_t
+
    !> Bytes of a header (an upper bound), of one row as text (an upper bound) and binary.
    integer(int64), parameter :: header_bytes = 16384, text_row_bytes = 225, binary_row_bytes = 8*16
    !> Magnitudes beyond this are written as ±clamp_magnitude with the overflow flag set.
@@ -100,128 +123,182 @@ contains
       call failed_points_error(scene, n_failed, n_points, first_failed, error)
    end subroutine floquet_finish_units
 
-   !> The column table of a chart or points file of this scene (meanings depend on the
-   !> model and the damping).
-   function chart_columns(scene) result(table)
+   !> Every column of a chart or points file of this scene, one record each, by its col_*
+   !> index (meanings and what is offered depend on the model, the damping and
+   !> `&physical`).
+   function chart_column_table(scene) result(table)
       type(scene_t), intent(in) :: scene  !! the scene
-      type(column_t) :: table(n_chart_columns)
-      character(len=:), allocatable :: stable, alpha
-      if (scene%epsilon > 0.0_wp) then
+      type(chart_column_t) :: table(n_chart_columns)
+      character(len=:), allocatable :: stable, alpha, a
+      logical :: damped, pendulum
+      damped = scene%epsilon > 0.0_wp
+      pendulum = scene%model%is_pendulum()
+      if (damped) then
          stable = "1 when |S1| < 2 cosh(epsilon) (all multipliers of x inside the unit circle)"
       else
          stable = "1 when |S| < 2"
       end if
       stable = stable//"; 0.5: marginal, |S| is within its error bound max(error_estimate, tolerance) max(1, |S|) "// &
          "of the threshold, the value cannot decide"
-      if (scene%model%is_pendulum()) then
+      if (pendulum) then
          alpha = "alpha = a pi^2/rho, eq. (24)"
       else
          alpha = "alpha of "//scene%model%summary()
       end if
-      table(col_alpha) = column(col_alpha, "alpha", "", alpha)
       if (size(scene%amplitudes) > 0) then
-         table(col_a) = column(col_a, "a", "m", "bounce amplitude of &physical (alpha = a pi^2/rho)")
+         a = "bounce amplitude of &physical (alpha = a pi^2/rho)"
       else
-         table(col_a) = column(col_a, "a", "m", "bounce amplitude a = alpha rho/pi^2 with rho = g pi^2/(beta "// &
-            "omega^2) (eq. (24)); -1 where beta <= 0 (no equilibrium length)")
+         a = "bounce amplitude a = alpha rho/pi^2 with rho = g pi^2/(beta omega^2) (eq. (24)); -1 where beta <= 0 "// &
+            "(no equilibrium length)"
       end if
-      table(col_beta) = column(col_beta, "beta", "", "beta = g pi^2/(rho omega^2), eq. (24)")
-      table(col_omega) = column(col_omega, "omega", "rad/s", "radial angular frequency sqrt(k/m) of the point "// &
-         "(rho = r0 + g/omega^2)")
-      table(col_s) = column(col_s, "S", "", "trace of the one-period monodromy (with epsilon > 0: S1 of the chi "// &
-         "equation (47)); |S| > 1e300 is written as +-1e300 with overflow = 1")
-      table(col_stable) = column(col_stable, "stable", "", stable)
-      table(col_lambda_max) = column(col_lambda_max, "lambda_max", "", "largest |multiplier| of x per radial period")
-      table(col_mu) = column(col_mu, "mu", "", "Floquet exponent ln(lambda_max)/2 per unit tau")
-      table(col_log10_abs_s) = column(col_log10_abs_s, "log10_abs_S", "", "log10|S|, exact also where S overflows")
-      table(col_overflow) = column(col_overflow, "overflow", "", "1 when |S| > 1e300")
-      table(col_physical) = column(col_physical, "physical", "", "1 inside the physical domain 0 <= alpha < pi^2, "// &
-         "0 <= beta < pi^2")
-      table(col_stable_paper) = column(col_stable_paper, "stable_paper", "", "1 when |S1| <= 2, the sufficient "// &
-         "criterion of the paper")
-      table(col_mu_per_s) = column(col_mu_per_s, "mu_per_s", "1/s", "the Floquet exponent per second, mu omega/pi "// &
-         "(tau = omega t/pi)")
-      table(col_error_estimate) = column(col_error_estimate, "error_estimate", "", "the method's estimate of "// &
-         "|error of S|/max(1, |S|), not a bound (-1: the method gives none; the bound at status 0 is the tolerance)")
-      table(col_status) = column(col_status, "status", "", "0 ok; 1 round-off limited (best value, error_estimate "// &
-         "at the round-off level); 2 failed (placeholders in the other columns)")
-   contains
-      pure function column(k, name, unit, meaning) result(c)
-         integer, intent(in) :: k
-         character(len=*), intent(in) :: name, unit, meaning
-         type(column_t) :: c
-         c = column_t(name, unit, meaning, chart_styles(k), chart_placeholders(k), chart_kept(k))
-      end function column
-   end function chart_columns
+      table(col_alpha) = chart_column("alpha", "", alpha, style_e17, need_nothing, kept=.true.)
+      table(col_a) = chart_column("a", "m", a, style_e17, need_nothing, kept=.true., &
+         offered=scene%physical .and. (size(scene%amplitudes) > 0 .or. pendulum))
+      table(col_beta) = chart_column("beta", "", "beta = g pi^2/(rho omega^2), eq. (24)", style_e17, need_nothing, &
+         kept=.true.)
+      table(col_omega) = chart_column("omega", "rad/s", "radial angular frequency sqrt(k/m) of the point "// &
+         "(rho = r0 + g/omega^2)", style_e17, need_nothing, kept=.true., offered=size(scene%omegas) > 0)
+      table(col_s) = chart_column("S", "", "trace of the one-period monodromy (with epsilon > 0: S1 of the chi "// &
+         "equation (47)); |S| > 1e300 is written as +-1e300 with overflow = 1", style_e17, need_trace)
+      table(col_stable) = chart_column("stable", "", stable, style_flag, need_verdict, placeholder=-1.0_wp)
+      table(col_lambda_max) = chart_column("lambda_max", "", "largest |multiplier| of x per radial period", &
+         style_e11, need_growth, placeholder=-1.0_wp)
+      table(col_mu) = chart_column("mu", "", "Floquet exponent ln(lambda_max)/2 per unit tau", style_e11, need_growth)
+      table(col_log10_abs_s) = chart_column("log10_abs_S", "", "log10|S|, exact also where S overflows", style_e11, &
+         need_trace, placeholder=-999.0_wp)
+      table(col_overflow) = chart_column("overflow", "", "1 when |S| > 1e300", style_flag, need_trace, &
+         placeholder=-1.0_wp)
+      table(col_physical) = chart_column("physical", "", "1 inside the physical domain 0 <= alpha < pi^2, "// &
+         "0 <= beta < pi^2", style_flag, need_nothing, kept=.true., offered=pendulum)
+      table(col_stable_paper) = chart_column("stable_paper", "", "1 when |S1| <= 2, the sufficient criterion of "// &
+         "the paper", style_flag, need_verdict, placeholder=-1.0_wp, paper=.true., offered=damped)
+      table(col_mu_per_s) = chart_column("mu_per_s", "1/s", "the Floquet exponent per second, mu omega/pi "// &
+         "(tau = omega t/pi)", style_e11, need_growth, offered=scene%physical)
+      table(col_error_estimate) = chart_column("error_estimate", "", "the method's estimate of |error of S|/max(1, "// &
+         "|S|), not a bound (-1: the method gives none; the bound at status 0 is the tolerance)", style_e4, need_trace, &
+         placeholder=-1.0_wp, accuracy=accuracy_estimate)
+      table(col_status) = chart_column("status", "", "0 ok; 1 round-off limited (best value, error_estimate at the "// &
+         "round-off level); 2 failed (placeholders in the other columns)", style_flag, need_nothing, kept=.true.)
+   end function chart_column_table
 
-   !> The columns a chart or points file of this scene offers, in file order: `physical`
-   !> for the elastic model, `stable_paper` with damping, `mu_per_s` when ω is known, `a`
-   !> with `&physical` (for the Mathieu model only when the amplitudes are given).
-   pure function offered_chart_columns(scene) result(ids)
-      type(scene_t), intent(in) :: scene  !! the scene
-      integer, allocatable :: ids(:)
-      integer :: k
-      allocate (ids(0))
-      do k = 1, n_chart_columns
-         if (k == col_physical .and. .not. scene%model%is_pendulum()) cycle
-         if (k == col_stable_paper .and. .not. scene%epsilon > 0.0_wp) cycle
-         if (k == col_mu_per_s .and. .not. scene%physical) cycle
-         if (k == col_omega .and. size(scene%omegas) == 0) cycle
-         if (k == col_a .and. .not. (scene%physical .and. (size(scene%amplitudes) > 0 .or. &
-             scene%model%is_pendulum()))) cycle
-         ids = [ids, k]
-      end do
-   end function offered_chart_columns
+   !> One column's record: its name, unit and meaning (the header's line), its text style,
+   !> what it needs computed at a point (need_* of hillstab_integrate_monodromy), the value
+   !> a failed point writes (`placeholder`: outside the column's range; default 0) unless it
+   !> keeps its own (`kept`: the point's coordinates, flags and status), its `# accuracy of`
+   !> statement (default: that of what it needs), whether it is a verdict by the paper's
+   !> criterion, and whether this scene's files offer it (default: always).
+   pure function chart_column(name, unit, meaning, style, need, placeholder, kept, accuracy, paper, offered) &
+      result(column)
+      character(len=*), intent(in) :: name     !! as in the `# columns:` line and `&scene columns`
+      character(len=*), intent(in) :: unit     !! "" when dimensionless
+      character(len=*), intent(in) :: meaning  !! one line for the header
+      integer, intent(in) :: style             !! style_* of hillstab_batch_output_columns
+      integer, intent(in) :: need              !! need_* of hillstab_integrate_monodromy
+      real(wp), intent(in), optional :: placeholder  !! the value of a failed point
+      logical, intent(in), optional :: kept     !! a failed point writes its own value
+      integer, intent(in), optional :: accuracy  !! accuracy_*
+      logical, intent(in), optional :: paper    !! a verdict by |S1| <= 2
+      logical, intent(in), optional :: offered  !! files of the scene offer it
+      type(chart_column_t) :: column
+      column%name = name
+      column%unit = unit
+      column%meaning = meaning
+      column%style = style
+      column%need = need
+      if (present(placeholder)) column%placeholder = placeholder
+      if (present(kept)) column%keep_on_failure = kept
+      select case (need)
+      case (need_verdict)
+         column%accuracy = accuracy_verdict
+      case (need_growth)
+         column%accuracy = accuracy_growth
+      case (need_trace)
+         column%accuracy = accuracy_trace
+      case default
+         column%accuracy = accuracy_none
+      end select
+      if (present(accuracy)) column%accuracy = accuracy
+      select case (style)
+      case (style_e17)
+         column%digits = 17
+      case (style_e11)
+         column%digits = 11
+      case (style_e7)
+         column%digits = 7
+      case (style_e4)
+         column%digits = 4
+      case default
+         column%digits = 0
+      end select
+      if (present(paper)) column%paper = paper
+      if (present(offered)) column%offered = offered
+   end function chart_column
 
    !> The columns a chart or points file of this scene holds: `&scene columns` when given,
-   !> else all it offers; an error naming `&scene columns` when a name is not offered.
-   subroutine scene_chart_columns(scene, ids, error)
+   !> else all it offers (in file order); an error naming `&scene columns` when a name is
+   !> not offered.
+   subroutine scene_chart_columns(scene, columns, error)
       type(scene_t), intent(in) :: scene  !! a chart or points scene
-      integer, allocatable, intent(out) :: ids(:)  !! indices into `chart_columns`, in file order
+      type(chart_layout_t), intent(out) :: columns  !! its table, the columns written and what they need
       type(error_t), allocatable, intent(out) :: error  !! err_input naming &scene columns
       integer, allocatable :: available(:)
       character(len=:), allocatable :: bad
-      type(column_t) :: table(n_chart_columns)
-      available = offered_chart_columns(scene)
+      integer :: k
+      columns%table = chart_column_table(scene)
+      allocate (available(0))
+      do k = 1, n_chart_columns
+         if (columns%table(k)%offered) available = [available, k]
+      end do
       if (len_trim(scene%columns) == 0) then
-         ids = available
-         return
+         columns%ids = available
+      else
+         call find_columns(plain_columns(columns), available, scene%columns, columns%ids, bad)
+         if (len(bad) > 0) then
+            call fail(error, scene%source, "scene", "columns", "'"//bad//"' is not a column of this file or is "// &
+               "named twice (available: "//columns_text(plain_columns(columns), available)//")")
+         else if (size(columns%ids) == 0) then
+            call fail(error, scene%source, "scene", "columns", "no column named")
+         end if
       end if
-      table = chart_columns(scene)
-      call find_columns(table, available, scene%columns, ids, bad)
-      if (len(bad) > 0) then
-         call fail(error, scene%source, "scene", "columns", "'"//bad//"' is not a column of this file or is "// &
-            "named twice (available: "//columns_text(table, available)//")")
-      else if (size(ids) == 0) then
-         call fail(error, scene%source, "scene", "columns", "no column named")
-      end if
+      columns%digits = columns%table%digits
+      columns%styles = columns%table%style
+      columns%need = need_nothing
+      columns%paper = .false.
+      do k = 1, size(columns%ids)
+         columns%need = max(columns%need, columns%table(columns%ids(k))%need)
+         columns%paper = columns%paper .or. columns%table(columns%ids(k))%paper
+      end do
    end subroutine scene_chart_columns
 
-   !> What the columns `ids` need computed at each point: the most any of them needs.
-   pure integer function columns_need(ids) result(need)
-      integer, intent(in) :: ids(:)  !! the columns written
-      need = need_nothing
-      if (size(ids) > 0) need = maxval(chart_needs(ids))
-   end function columns_need
+   !> The names of the columns written, blank-separated (the `# columns:` line).
+   function chart_names(columns) result(text)
+      type(chart_layout_t), intent(in) :: columns  !! the file's columns
+      character(len=:), allocatable :: text
+      text = columns_text(plain_columns(columns), columns%ids)
+   end function chart_names
 
-   !> Whether the columns `ids` include stable_paper (a verdict then settles |S| = 2 too).
-   pure logical function columns_paper(ids) result(paper)
-      integer, intent(in) :: ids(:)  !! the columns written
-      paper = any(ids == col_stable_paper)
-   end function columns_paper
+   !> The table as the output columns of hillstab_batch_output_columns (name, unit, meaning,
+   !> style, placeholder).
+   pure function plain_columns(columns) result(table)
+      type(chart_layout_t), intent(in) :: columns  !! the file's columns
+      type(column_t) :: table(size(columns%table))
+      integer :: k
+      do k = 1, size(columns%table)
+         table(k) = columns%table(k)%column_t
+      end do
+   end function plain_columns
 
-   !> The header's line on the accuracy of column `k` (written with the columns `ids`).
-   function accuracy_line(scene, k, ids) result(line)
+   !> The header's line on the accuracy of column `k` of a file's columns ("" for a column
+   !> that needs nothing computed).
+   function accuracy_line(scene, columns, k) result(line)
       type(scene_t), intent(in) :: scene  !! the scene
+      type(chart_layout_t), intent(in) :: columns  !! the file's columns
       integer, intent(in) :: k            !! a column
-      integer, intent(in) :: ids(:)       !! the columns written
       character(len=:), allocatable :: line
       character(len=:), allocatable :: tolerance, threshold
-      type(column_t) :: table(n_chart_columns)
-      table = chart_columns(scene)
       line = ""
-      if (chart_needs(k) == need_nothing) return
-      line = "accuracy of "//table(k)%name//": "
+      if (columns%table(k)%accuracy == accuracy_none) return
+      line = "accuracy of "//columns%table(k)%name//": "
       if (.not. method_is_exact(scene%method%kind)) then
          line = line//"the value of method '"//method_name(scene%method%kind)//"' itself (an approximation, "// &
             "no error bound)"
@@ -230,21 +307,21 @@ contains
       tolerance = real_text(scene%method%tolerance)
       threshold = "|S| = 2 cosh(epsilon)"
       if (.not. scene%epsilon > 0.0_wp) threshold = "|S| = 2"
-      select case (k)
-      case (col_stable, col_stable_paper)
-         if (k == col_stable_paper) threshold = "|S| = 2"
-         if (columns_need(ids) == need_verdict) then
+      select case (columns%table(k)%accuracy)
+      case (accuracy_verdict)
+         if (columns%table(k)%paper) threshold = "|S| = 2"
+         if (columns%need == need_verdict) then
             line = line//"exact except at 0.5 (marginal): each point computed only until "//threshold// &
                " lies beyond the error bound of its S (a screening pass; the tolerance "//tolerance// &
                " where that does not settle it)"
          else
             line = line//"exact except at 0.5 (marginal), from S computed to the tolerance "//tolerance
          end if
-      case (col_lambda_max, col_mu, col_mu_per_s)
+      case (accuracy_growth)
          line = line//"exact where |S| < 2 (lambda_max = exp(-epsilon), mu = -epsilon/2); elsewhere from S "// &
             "computed to the tolerance "//tolerance//": relative error of lambda_max (absolute error of 2 mu) "// &
             "at most "//tolerance//" max(1, |S|)/sqrt(S^2 - 4)"
-      case (col_error_estimate)
+      case (accuracy_estimate)
          line = line//"the method's own estimate; at status 0 at most the tolerance "//tolerance
       case default
          line = line//"to the tolerance "//tolerance//": |error of S| <= max(error_estimate, "//tolerance// &
@@ -264,7 +341,7 @@ contains
       real(wp), intent(in), optional :: per_second  !! ω/π
       real(wp), intent(in), optional :: amplitude   !! a (m), `point_amplitude`
       real(wp), intent(in), optional :: omega       !! ω (rad/s) of a chart over (a, ω)
-      !> what was computed (`columns_need`): below need_growth the columns of λ, μ and ln|S|
+      !> what was computed (`chart_layout_t` need): below need_growth the columns of λ, μ and ln|S|
       !> are left at 0 (not written)
       integer, intent(in), optional :: need
       real(wp) :: v(n_chart_columns)
@@ -310,10 +387,11 @@ contains
    !> column's value and the dispatch by style: a verdict chart writes little more than the
    !> grid and a flag, and this loop is most of its text's cost). The verdicts are those of
    !> `verdicts` (hillstab_hill_floquet), the usual case (no damping, an estimate below 1)
-   !> written out here; a failed point's line is `chart_line`'s of `failed_values`.
-   pure subroutine verdict_lines(ids, alpha, betas, traces, epsilon, tolerance, statuses, physical, amplitudes, &
+   !> written out here; a failed point's line is `chart_line`'s of `failed_values`; a column
+   !> without a case here gets its value from `chart_values` of `floquet_verdict`.
+   pure subroutine verdict_lines(columns, alpha, betas, traces, epsilon, tolerance, statuses, physical, amplitudes, &
                                  alpha_text, buffer, pos, beta_texts)
-      integer, intent(in) :: ids(:)        !! the columns to write (each offered to a verdict file)
+      type(chart_layout_t), intent(in) :: columns  !! the columns to write (none needing more than the verdict)
       real(wp), intent(in) :: alpha        !! the points' α
       real(wp), intent(in) :: betas(:)     !! their β
       type(trace_t), intent(in) :: traces(:)  !! their traces, with error bounds
@@ -328,8 +406,12 @@ contains
       integer, intent(inout) :: pos        !! last position written; advanced past the lines
       character(len=24), intent(in), optional :: beta_texts(:)  !! put_es(betas, 17)
       logical :: stable, stable_paper, marginal, inside
-      real(wp) :: s, a
+      real(wp) :: s, a, v(n_chart_columns)
       integer :: j, k, p, length
+      ! the columns in a local array: read through `columns` at every point and column, they
+      ! cost a tenth of a verdict line
+      integer :: ids(size(columns%ids))
+      ids = columns%ids
       do j = 1, size(betas)
          if (j > 1) then
             buffer(pos + 1:pos + 1) = new_line("a")
@@ -341,11 +423,11 @@ contains
          if (size(amplitudes) > 0) a = amplitudes(j)
          if (statuses(j) == status_failed) then
             if (present(beta_texts)) then
-               call chart_line(ids, failed_values(alpha, betas(j), inside, a), buffer(pos + 1:pos + chart_line_length), &
-                               alpha_text, beta_texts(j), length)
+               call chart_line(columns, failed_values(columns, alpha, betas(j), inside, a), &
+                               buffer(pos + 1:pos + chart_line_length), alpha_text, beta_texts(j), length)
             else
-               call chart_line(ids, failed_values(alpha, betas(j), inside, a), buffer(pos + 1:pos + chart_line_length), &
-                               alpha_text, length=length)
+               call chart_line(columns, failed_values(columns, alpha, betas(j), inside, a), &
+                               buffer(pos + 1:pos + chart_line_length), alpha_text, length=length)
             end if
             pos = pos + length
             cycle
@@ -372,7 +454,7 @@ contains
                   call put_text24(buffer, pos, beta_texts(j))
                else
                   p = pos
-                  call put_es(buffer, p, betas(j), chart_digits(col_beta))
+                  call put_es(buffer, p, betas(j), columns%digits(col_beta))
                   pos = p
                end if
             case (col_stable)
@@ -395,13 +477,15 @@ contains
                pos = p
             case (col_a)
                p = pos
-               call put_value(chart_styles(col_a), a, buffer, p)
+               call put_value(columns%styles(col_a), a, buffer, p)
                pos = p
             case default
-               ! no other column reaches a chart's verdict file (omega is offered to points
-               ! files only); written as 0, as `chart_values` of `floquet_verdict` has it
+               ! no other column reaches a chart's verdict file today (omega is offered to
+               ! points files only): the value `chart_values` gives
+               v = chart_values(alpha, betas(j), floquet_verdict(traces(j), epsilon, tolerance), inside, statuses(j), &
+                                amplitude=a, need=need_verdict)
                p = pos
-               call put_value(chart_styles(ids(k)), 0.0_wp, buffer, p)
+               call put_value(columns%styles(ids(k)), v(ids(k)), buffer, p)
                pos = p
             end select
          end do
@@ -421,45 +505,53 @@ contains
       pos = pos + 24
    end subroutine put_text24
 
-   !> The values of a point where nothing could be computed: alpha, a, beta and physical
-   !> kept, the other columns at their placeholders, status 2.
-   pure function failed_values(alpha, beta, physical, amplitude, omega) result(v)
+   !> The values of a point where nothing could be computed: its own values in the columns
+   !> that keep them (alpha, a, beta, omega, physical; status 2), the placeholders in the
+   !> others.
+   pure function failed_values(columns, alpha, beta, physical, amplitude, omega) result(v)
+      type(chart_layout_t), intent(in) :: columns  !! the file's columns
       real(wp), intent(in) :: alpha, beta  !! the point
       logical, intent(in) :: physical      !! (α, β) inside the physical domain
       real(wp), intent(in), optional :: amplitude  !! a (m)
       real(wp), intent(in), optional :: omega      !! ω (rad/s)
       real(wp) :: v(n_chart_columns)
-      v = chart_placeholders
+      integer :: k
+      v = 0.0_wp
       if (present(amplitude)) v(col_a) = amplitude
       if (present(omega)) v(col_omega) = omega
       v(col_alpha) = alpha
       v(col_beta) = beta
       v(col_physical) = merge(1.0_wp, 0.0_wp, physical)
+      v(col_status) = real(status_failed, wp)
+      do k = 1, n_chart_columns
+         if (.not. columns%table(k)%keep_on_failure) v(k) = columns%table(k)%placeholder
+      end do
    end function failed_values
 
-   !> One text line of the columns `ids` of a point's values `v` (`chart_values`), each in
+   !> One text line of the columns written of a point's values `v` (`chart_values`), each in
    !> its column's style; alpha and beta from `alpha_text`, `beta_text` when at hand (a
    !> chart formats each grid value once, not once per point). No allocation. With
    !> `length`, the characters after it are left as they were (not blanked).
-   pure subroutine chart_line(ids, v, line, alpha_text, beta_text, length)
-      integer, intent(in) :: ids(:)  !! the columns to write
+   pure subroutine chart_line(columns, v, line, alpha_text, beta_text, length)
+      type(chart_layout_t), intent(in) :: columns  !! the file's columns
       real(wp), intent(in) :: v(n_chart_columns)  !! every column's value
       character(len=chart_line_length), intent(inout) :: line  !! the line (blank-padded without `length`)
       character(len=24), intent(in), optional :: alpha_text  !! put_es(alpha, 17)
       character(len=24), intent(in), optional :: beta_text   !! put_es(beta, 17)
       integer, intent(out), optional :: length  !! characters written
-      integer :: k, pos, id
+      integer :: k, pos, id, digits
       logical :: have_alpha, have_beta
       have_alpha = present(alpha_text)
       have_beta = present(beta_text)
       pos = 0
-      do k = 1, size(ids)
-         id = ids(k)
+      do k = 1, size(columns%ids)
+         id = columns%ids(k)
          if (k > 1) then
             line(pos + 1:pos + 1) = " "
             pos = pos + 1
          end if
-         if (chart_digits(id) > 0) then
+         digits = columns%digits(id)
+         if (digits > 0) then
             if (id == col_alpha .and. have_alpha) then
                line(pos + 1:pos + 24) = alpha_text
                pos = pos + 24
@@ -469,7 +561,7 @@ contains
             else
                ! the numbers straight to put_es (put_value's dispatch by style, once per
                ! column of every line, cost a tenth of a full chart's text)
-               call put_es(line, pos, v(id), chart_digits(id))
+               call put_es(line, pos, v(id), digits)
             end if
          else if (v(id) == 0.0_wp) then
             ! the flags' usual values written here (through put_value they cost 3 % of a
@@ -480,7 +572,7 @@ contains
             line(pos + 1:pos + 1) = "1"
             pos = pos + 1
          else
-            call put_value(chart_styles(id), v(id), line, pos)
+            call put_value(columns%styles(id), v(id), line, pos)
          end if
       end do
       if (present(length)) then
@@ -492,40 +584,40 @@ contains
 
    !> Header lines of a chart or points file: the common header, the method, one line per
    !> column written, the placeholders of failed rows.
-   function chart_header(scene, outside, ids) result(lines)
+   function chart_header(scene, outside, columns) result(lines)
       type(scene_t), intent(in) :: scene  !! a validated scene
       logical, intent(in) :: outside  !! some point lies outside the physical domain
-      integer, intent(in) :: ids(:)   !! the columns written
+      type(chart_layout_t), intent(in) :: columns  !! the file's columns
       character(len=:), allocatable :: lines(:)
-      type(column_t) :: table(n_chart_columns)
       character(len=:), allocatable :: per_column(:), placeholder
       character(len=400) :: text(2*n_chart_columns + 3)
       character(len=:), allocatable :: accuracy
-      integer :: k, n
-      table = chart_columns(scene)
-      per_column = column_lines(table, ids)
+      integer :: k, n, id
+      per_column = column_lines(plain_columns(columns), columns%ids)
       n = 1
       text(1) = "method: "//method_description(scene)
       do k = 1, size(per_column)
          text(n + k) = per_column(k)
       end do
       n = n + size(per_column)
-      do k = 1, size(ids)
-         accuracy = accuracy_line(scene, ids(k), ids)
+      do k = 1, size(columns%ids)
+         accuracy = accuracy_line(scene, columns, columns%ids(k))
          if (len(accuracy) == 0) cycle
          n = n + 1
          text(n) = accuracy
       end do
-      if (columns_need(ids) == need_nothing) then
+      if (columns%need == need_nothing) then
          n = n + 1
          text(n) = "accuracy: no trace is computed (the columns written need none)"
       end if
       n = n + 1
       text(n) = "status 2 rows (placeholders, not values):"
-      do k = 1, size(ids)
-         if (table(ids(k))%keep_on_failure .or. ids(k) == col_status) cycle
-         placeholder = real_text(table(ids(k))%placeholder)
-         text(n) = trim(text(n))//merge(" ", ",", index(text(n), "=") == 0)//" "//table(ids(k))%name//" = "//placeholder
+      do k = 1, size(columns%ids)
+         id = columns%ids(k)
+         if (columns%table(id)%keep_on_failure) cycle
+         placeholder = real_text(columns%table(id)%placeholder)
+         text(n) = trim(text(n))//merge(" ", ",", index(text(n), "=") == 0)//" "//columns%table(id)%name//" = "// &
+            placeholder
       end do
       if (outside .and. scene%model%is_pendulum()) then
          n = n + 1
@@ -535,7 +627,7 @@ contains
    end function chart_header
 
    !> Floquet data of one point; `error` only when the point failed.
-   subroutine evaluate_point(scene, alpha, beta, f, error, status, epsilon, ids)
+   subroutine evaluate_point(scene, alpha, beta, f, error, status, epsilon, columns)
       type(scene_t), intent(in) :: scene  !! the scene (model, method, damping)
       real(wp), intent(in) :: alpha, beta  !! the point
       type(floquet_t), intent(out) :: f  !! its Floquet data
@@ -544,8 +636,8 @@ contains
       integer, intent(out), optional :: status
       !> the point's damping (a chart over (a, ω): κπ/ω); default the scene's
       real(wp), intent(in), optional :: epsilon
-      !> the columns written: only what they need is computed (`columns_need`); default all of S
-      integer, intent(in), optional :: ids(:)
+      !> the columns written: only what they need is computed; default all of S
+      type(chart_layout_t), intent(in), optional :: columns
       type(trace_t) :: tr(1)
       logical :: failed(1), inaccurate(1)
       real(wp) :: damping
@@ -556,9 +648,9 @@ contains
       if (present(status)) status = status_ok
       need = need_trace
       paper = .false.
-      if (present(ids)) then
-         need = columns_need(ids)
-         paper = columns_paper(ids)
+      if (present(columns)) then
+         need = columns%need
+         paper = columns%paper
       end if
       call monodromy_trace_batch(scene%model, hill_point_t(alpha, 0.0_wp, damping), [beta], scene%method, tr, &
                                  failed, error, inaccurate=inaccurate, need=need, paper=paper)

@@ -16,11 +16,10 @@ module hillstab_batch_tasks_points
    use hillstab_batch_scene_checks, only: check_integration_cost
    use hillstab_batch_scene_group_points, only: points_group, read_points_group
    use hillstab_batch_tasks_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, &
-      chart_header, &
+      chart_header, chart_layout_t, chart_names, &
       point_amplitude, &
-      scene_chart_columns, chart_columns, evaluate_point, warn_inaccurate, failed_points_error, chart_line_length, &
+      scene_chart_columns, evaluate_point, warn_inaccurate, failed_points_error, chart_line_length, &
       header_bytes, text_row_bytes, binary_row_bytes
-   use hillstab_batch_output_columns, only: columns_text
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text, write_records, &
       join_lines, discard_output
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
@@ -35,6 +34,7 @@ module hillstab_batch_tasks_points
    type, extends(floquet_task_t) :: points_task_t
       character(len=:), allocatable :: file   !! `&points file` ("" with `&physical a`)
       real(wp), allocatable :: points(:, :)   !! (2, n): α, β in order
+      type(chart_layout_t) :: columns         !! the columns written, made by `prepare_units`
    contains
       procedure :: read => points_read
       procedure :: run => points_run
@@ -44,6 +44,7 @@ module hillstab_batch_tasks_points
       procedure :: size_variables => points_size_variables
       procedure :: point_count => points_point_count
       procedure :: unit_size => points_unit_size
+      procedure :: prepare_units => points_prepare_units
       procedure :: unit_text => points_unit_text
       procedure :: open_units => points_open_units
       procedure :: point_of => points_point_of
@@ -81,7 +82,7 @@ contains
       type(scene_file_t), intent(in) :: file      !! the scene file
       type(scene_t), intent(in) :: scene          !! the `&scene` and `&physical` settings
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
-      integer, allocatable :: ids(:)
+      type(chart_layout_t) :: columns
       integer :: k
       logical :: from_physical
       from_physical = size(scene%amplitudes) > 0
@@ -103,7 +104,7 @@ contains
             abs(self%points(1, k)) + abs(self%points(2, k)), error, where="point "//integer_text(k))
          if (allocated(error)) return
       end do
-      call scene_chart_columns(scene, ids, error)
+      call scene_chart_columns(scene, columns, error)
    end subroutine points_read
 
    !> Header plus one row a point.
@@ -129,11 +130,12 @@ contains
       outside = .not. all(in_physical_domain(self%points(1, :), self%points(2, :)))
    end function outside
 
-   !> Text lines (with the scene's columns) or records `values` of the points `first` …
+   !> Text lines (with the file's columns) or records `values` of the points `first` …
    !> `last` (in parallel); a failed point gets its placeholders.
-   subroutine compute_points(self, scene, first, last, lines, statuses, values)
+   subroutine compute_points(self, scene, columns, first, last, lines, statuses, values)
       class(points_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
+      type(chart_layout_t), intent(in) :: columns  !! the columns written
       integer, intent(in) :: first, last  !! range of point indices
       character(len=*), intent(out) :: lines(first:)  !! one chart line per point
       integer, intent(out) :: statuses(first:)  !! per point: status_ok, status_roundoff or status_failed
@@ -142,9 +144,9 @@ contains
       type(floquet_t) :: f
       type(error_t), allocatable :: cause
       real(wp) :: per_second, v(n_chart_columns), alpha, beta, a
-      integer, allocatable :: ids(:)
       integer :: k
-      call scene_chart_columns(scene, ids, cause)  ! checked when the scene was read
+      integer :: ids(size(columns%ids))  ! the binary records' columns (a gather through `columns` allocated)
+      ids = columns%ids
       ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
       ! when the scene knows ω)
       per_second = 0.0_wp
@@ -155,14 +157,14 @@ contains
          beta = self%points(2, k)
          a = 0.0_wp
          if (scene%physical) a = point_amplitude(scene, k, alpha, beta)
-         call evaluate_point(scene, alpha, beta, f, cause, statuses(k), ids=ids)
+         call evaluate_point(scene, alpha, beta, f, cause, statuses(k), columns=columns)
          if (statuses(k) == status_failed) then
-            v = failed_values(alpha, beta, in_physical_domain(alpha, beta), a)
+            v = failed_values(columns, alpha, beta, in_physical_domain(alpha, beta), a)
          else
             v = chart_values(alpha, beta, f, in_physical_domain(alpha, beta), statuses(k), per_second, a)
          end if
          if (present(values)) values(:, k) = v(ids)
-         call chart_line(ids, v, lines(k))
+         call chart_line(columns, v, lines(k))
       end do
       !$omp end parallel do
    end subroutine compute_points
@@ -176,15 +178,16 @@ contains
       type(output_file_t) :: file
       type(progress_t) :: progress
       character(len=chart_line_length), allocatable :: lines(:)
-      integer, allocatable :: statuses(:), ids(:)
+      integer, allocatable :: statuses(:)
+      type(chart_layout_t) :: columns
       real(wp), allocatable :: values(:, :)
       integer :: k, m, n
       n = size(self%points, 2)
-      call scene_chart_columns(scene, ids, error)
+      call scene_chart_columns(scene, columns, error)
       if (allocated(error)) return
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
-      allocate (lines(n), statuses(n), values(size(ids), n), stat=k)
+      allocate (lines(n), statuses(n), values(size(columns%ids), n), stat=k)
       if (k /= 0) then
          call discard_output(file)
          call set_error(error, err_input, scene%source//": &points: file: the buffers of "//integer_text(n)// &
@@ -196,11 +199,11 @@ contains
       ! in chunks, for the progress line (the points of a chunk in parallel)
       do k = 1, n, points_chunk
          m = min(n, k + points_chunk - 1)
-         call compute_points(self, scene, k, m, lines(k:m), statuses(k:m), values(:, k:m))
+         call compute_points(self, scene, columns, k, m, lines(k:m), statuses(k:m), values(:, k:m))
          call progress_update(progress, int(m, int64))
       end do
       call progress_end(progress)
-      call write_header(file, chart_header(scene, outside(self), ids), columns_text(chart_columns(scene), ids), &
+      call write_header(file, chart_header(scene, outside(self), columns), chart_names(columns), &
                         error, names_line=scene%names_line, records=[n, 1])
       if (scene%binary .and. .not. allocated(error)) call write_records(file, values, error)
       do k = 1, n
@@ -235,7 +238,15 @@ contains
       size = max(1, min(64, int(self%point_count())/(16*max(1, n_workers))))
    end function points_unit_size
 
-   !> The lines of the points `first` … `last`.
+   !> The columns, shared by every unit.
+   subroutine points_prepare_units(self, scene)
+      class(points_task_t), intent(inout) :: self  !! the task
+      type(scene_t), intent(in) :: scene    !! its scene
+      type(error_t), allocatable :: error
+      call scene_chart_columns(scene, self%columns, error)  ! checked when the scene was read
+   end subroutine points_prepare_units
+
+   !> The lines of the points `first` … `last` (the units prepared).
    subroutine points_unit_text(self, scene, unit, first, last, text, statuses)
       class(points_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
@@ -245,7 +256,7 @@ contains
       integer, intent(out) :: statuses(first:last)  !! per point
       character(len=chart_line_length), allocatable :: lines(:)
       allocate (lines(first:last))
-      call compute_points(self, scene, int(first), int(last), lines, statuses)
+      call compute_points(self, scene, self%columns, int(first), int(last), lines, statuses)
       call join_lines(lines, .false., text)
    end subroutine points_unit_text
 
@@ -255,10 +266,10 @@ contains
       type(scene_t), intent(in) :: scene  !! its scene
       type(output_file_t), intent(inout) :: file  !! the open output file
       type(error_t), allocatable, intent(out) :: error  !! why the file cannot be written
-      integer, allocatable :: ids(:)
-      call scene_chart_columns(scene, ids, error)
+      type(chart_layout_t) :: columns
+      call scene_chart_columns(scene, columns, error)
       if (allocated(error)) return
-      call write_header(file, chart_header(scene, outside(self), ids), columns_text(chart_columns(scene), ids), &
+      call write_header(file, chart_header(scene, outside(self), columns), chart_names(columns), &
                         error, names_line=scene%names_line)
    end subroutine points_open_units
 
