@@ -1,11 +1,12 @@
 !> A test-only model of the form Q(τ) = β + α f(τ) with f given by its harmonics over a
 !> period P (cosine and sine terms, any P), or the square wave f = +1 on [0, P/2), −1 on
-!> [P/2, P) (Meissner, infinitely many harmonics), for the tests of Hill's method on the
+!> [P/2, P) (Meissner, infinitely many harmonics), or either withholding its harmonics (a
+!> model Hill's method does not know), for the tests of Hill's method on the
 !> Fourier coefficients; and the full-period references the tests compare it with: S by
 !> sixth-order Magnus steps over [0, P] (no use of any symmetry of Q) and bisection on it.
 module hillstab_test_drive_model
    use hillstab_core_kinds, only: wp, pi, int64
-   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_window_t, harmonics_infinite
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_window_t, harmonics_infinite, harmonics_none
    use hillstab_hill_transfer, only: scaled_matrix_t
    use hillstab_integrate_magnus, only: magnus_step
    implicit none
@@ -18,6 +19,9 @@ module hillstab_test_drive_model
       real(wp) :: f0 = 0.0_wp                !! mean of f
       real(wp), allocatable :: a(:), b(:)    !! cosine and sine coefficients of f
       logical :: square = .false.            !! f is the square wave instead
+      !> the model does not say it is β + g (drive_harmonic_count = harmonics_none): the
+      !> transition curves go by the roots of S
+      logical :: withhold = .false.
    contains
       procedure :: name => drive_name
       procedure :: formula => drive_formula
@@ -167,7 +171,9 @@ contains
 
    pure integer function drive_count(self) result(count)
       class(drive_model_t), intent(in) :: self
-      if (self%square) then
+      if (self%withhold) then
+         count = harmonics_none
+      else if (self%square) then
          count = harmonics_infinite
       else
          count = size(self%a)
