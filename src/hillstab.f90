@@ -78,7 +78,10 @@
 !> - [[hillstab_curves_boundaries]]: [[hillstab_curves_boundaries:boundary_check_t]],
 !>   [[hillstab_curves_boundaries:verify_boundary]], [[hillstab_curves_boundaries:approximate_root_t]],
 !>   [[hillstab_curves_boundaries:approximate_boundaries]],
-!>   [[hillstab_curves_boundaries:unstable_intervals_from_roots]]
+!>   [[hillstab_curves_boundaries:unstable_intervals_from_roots]],
+!>   [[hillstab_curves_boundaries:curve_route]], [[hillstab_curves_boundaries:exact_boundaries]]
+!> - [[hillstab_curves_hill_fourier]]: [[hillstab_curves_hill_fourier:fourier_boundaries]]
+!> - [[hillstab_curves_characteristic]]: [[hillstab_curves_characteristic:characteristic_values]]
 !> - [[hillstab_pendulum_equations]]: [[hillstab_pendulum_equations:pendulum_t]],
 !>   [[hillstab_pendulum_equations:pendulum_from_chart]],
 !>   [[hillstab_pendulum_equations:pendulum_initial_state]], [[hillstab_pendulum_equations:pendulum_energy]],
@@ -154,7 +157,9 @@ module hillstab
       rk_dop853, rk_pd87, rk_vern98, rk_method_name
    use hillstab_curves_hill_method, only: hill_boundary_t, hill_boundaries, hill_block_eigenvalues
    use hillstab_curves_boundaries, only: boundary_check_t, verify_boundary, approximate_root_t, approximate_boundaries, &
-      unstable_intervals_from_roots
+      unstable_intervals_from_roots, curve_route, exact_boundaries
+   use hillstab_curves_hill_fourier, only: fourier_boundaries
+   use hillstab_curves_characteristic, only: characteristic_values
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_energy, &
       pendulum_angle, pendulum_radius, pendulum_bounce, pendulum_system_t
    use hillstab_pendulum_analysis, only: bounce_multipliers_t, bounce_multipliers, onset_periods, pendulum_watch_t, &
