@@ -151,7 +151,11 @@ contains
          type(hill_boundary_t), intent(in) :: values(:)
          integer, intent(in) :: block
          real(wp), allocatable :: betas(:)
-         betas = pack(values%beta, values%block == block)
+         integer :: i
+         allocate (betas(0))
+         do i = 1, size(values)
+            if (values(i)%block == block) betas = [betas, values(i)%beta]
+         end do
       end function pick
       function sorted(x) result(y)
          real(wp), intent(in) :: x(:)
