@@ -147,8 +147,9 @@ contains
    end subroutine fourier_values
 
    !> The roots route: S = ±2 by method auto, scanned from below every curve (`beta_floor`)
-   !> up to a top that holds n roots of each kind (doubled until it does), 60 samples per
-   !> tongue's spacing; the first n of each kind kept.
+   !> up to a top that holds n roots of each kind (the top and the samples doubled until it
+   !> does, at most 8 times and 200 000 samples); the first n of each kind kept (a tongue
+   !> narrower than a sample step, or closed, is missed and shifts the orders above it).
    subroutine root_values(model, alpha, n, tol, values, error)
       class(hill_model_t), intent(in) :: model
       real(wp), intent(in) :: alpha, tol
@@ -162,8 +163,8 @@ contains
       p = model%period()
       floor = beta_floor(model, alpha)
       top = (real(n + 1, wp)*pi/p)**2 + abs(floor) + 2.0_wp
-      do attempt = 1, 12
-         samples = 60*(n + 2)*2**(attempt - 1)
+      do attempt = 1, 8
+         samples = min(60*(n + 2)*2**(attempt - 1), 200000)
          call approximate_boundaries(model, alpha, method_t(method_auto, tolerance=tol), floor, top, samples, tol, &
                                      roots, error, floor=floor)
          if (allocated(error)) return
