@@ -15,7 +15,7 @@
 #   make bench-instructions  callgrind counts of a 300 x 300 chart, this tree against BENCH_BASE (compute, text)
 #   make bench          charts against the plain C GSL program (bench/chart_gsl.c, scripts/bench_chart.py:
 #                       out/bench_chart_gsl.dat, .png), speed-against-error benchmarks (out/bench_*.dat, out/bench*.png), the
-#                       transition-curve benchmark (out/bench_boundaries.dat) and the pendulum
+#                       transition-curve benchmarks (out/bench_boundaries.dat, out/bench_fourier.dat) and the pendulum
 #                       integrators (out/bench_series.dat, out/bench_series.png)
 #   make area           where the approximate charts are wrong: misclassified area (out/area*.dat, out/area.png)
 #   make lib            build libhillstab.a, libhillstab.so, .mod files and the hillstab program
@@ -136,6 +136,7 @@ bench: setup
 	$(FPM) run $(RELEASE) hillstab_bench_series
 	gnuplot plots/bench_series.gp
 	$(FPM) run $(RELEASE) hillstab_bench_boundaries
+	$(FPM) run $(RELEASE) hillstab_bench_fourier
 
 area: setup
 	mkdir -p out

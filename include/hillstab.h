@@ -62,6 +62,20 @@ double hillstab_trace_paper(double alpha, double beta, double epsilon);
 int hillstab_trace_paper_checked(double alpha, double beta, double epsilon, double *trace,
                                  double *log_abs_trace, int *overflow);
 
+/* The first n transition values of beta of each kind at alpha (the characteristic values;
+ * Mathieu's a_n(q), b_n(q) for HILLSTAB_MODEL_MATHIEU: beta = pi^2 a/4 at alpha = nu = pi^2 q/2):
+ * *count values in beta[], order[] (n of a_n, b_n), kind[] and error_bound[], by kind then
+ * ascending. kind: HILLSTAB_KIND_* (1 periodic even a_0, a_2, ...; 2 periodic odd b_2, b_4, ...;
+ * 3 antiperiodic even a_1, a_3, ...; 4 antiperiodic odd b_1, b_3, ... where Q is even, else
+ * 5 periodic and 6 antiperiodic, both edges of each order). capacity: places in each array
+ * (4 n always suffice); tolerance > 0: target error relative to max(1, |beta|). */
+enum {
+  HILLSTAB_KIND_PERIODIC_EVEN = 1, HILLSTAB_KIND_PERIODIC_ODD = 2, HILLSTAB_KIND_ANTIPERIODIC_EVEN = 3,
+  HILLSTAB_KIND_ANTIPERIODIC_ODD = 4, HILLSTAB_KIND_PERIODIC = 5, HILLSTAB_KIND_ANTIPERIODIC = 6
+};
+int hillstab_characteristic_values(int model, double alpha, int n, double tolerance, int capacity, int *count,
+                                   double beta[], int order[], int kind[], double error_bound[]);
+
 /* A NUL-terminated description of a status code (the name of the code, e.g. "invalid parameter"). */
 void hillstab_error_message(int status, char *buffer, size_t length);
 

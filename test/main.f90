@@ -28,6 +28,8 @@ program tester
    use test_pendulum_analysis, only: collect_pendulum_analysis
    use test_task_series, only: collect_task_series
    use test_hill_method, only: collect_hill_method
+   use test_hill_fourier, only: collect_hill_fourier
+   use test_characteristic, only: collect_characteristic
    use test_task_boundaries, only: collect_task_boundaries
    use test_boundaries, only: collect_boundaries
    use test_templates, only: collect_templates
@@ -37,7 +39,7 @@ program tester
    implicit none
    ! one by one, not as an array constructor of the collect functions' results: gfortran 12
    ! leaks the allocatable components of such results (LeakSanitizer, make test-sanitize)
-   type(testsuite_t) :: suites(33)
+   type(testsuite_t) :: suites(35)
    integer :: n_failed
    suites(1) = collect_models()
    suites(2) = collect_codes()
@@ -72,6 +74,8 @@ program tester
    suites(31) = collect_chaos()
    suites(32) = collect_checkpoint()
    suites(33) = collect_model_meissner()
+   suites(34) = collect_hill_fourier()
+   suites(35) = collect_characteristic()
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

@@ -14,6 +14,8 @@ module test_model_meissner
    use hillstab_hill_coefficient, only: sampling_endpoint, sampling_average
    use hillstab_integrate_monodromy, only: method_t, monodromy_trace, method_auto, method_magnus4, method_magnus6, &
       method_rk, method_gsl, method_formula, method_segments, method_name
+   use hillstab_curves_hill_method, only: hill_boundary_t, route_closed_form
+   use hillstab_curves_characteristic, only: characteristic_values
    use hillstab_testing
    implicit none
    private
@@ -32,7 +34,8 @@ contains
          new_unittest("fourier_series", fourier_series), &
          new_unittest("window_symmetry", window_symmetry), &
          new_unittest("closed_form_methods", closed_form_methods), &
-         new_unittest("exact_methods_closed_form", exact_methods_closed_form)])
+         new_unittest("exact_methods_closed_form", exact_methods_closed_form), &
+         new_unittest("transition_values", transition_values)])
    end function collect_model_meissner
 
    !> Meissner's trace S = 2 c₊c₋ − (k₊/k₋ + k₋/k₊) s₊s₋ with k± = √(q±), q± = β ± α − ε²/4
@@ -241,4 +244,63 @@ contains
       end do
       print '(4x,a,i0,a,i0)', "round-off limited: ", n_roundoff, " of ", size(points)*size(exact_methods)*size(tolerances)
    end subroutine exact_methods_closed_form
+   !> The first 4 transition values of β of each kind (S = +2, S = −2) at α = 0.5, 3, 8
+   !> against the roots of the test's own closed form, found by scanning β from below every
+   !> curve (β ≥ −α − 1) in steps of 1e-3 and bisecting to 1e-14; the route is the closed form.
+   subroutine transition_values(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), parameter :: alphas(3) = [0.5_wp, 3.0_wp, 8.0_wp]
+      type(meissner_model_t) :: meissner
+      type(hill_boundary_t), allocatable :: values(:)
+      type(error_t), allocatable :: error
+      real(wp) :: expected(4), beta_a, beta_b, f_a, f_b, mid, f_mid, sgn, log_s, s
+      integer :: i, kind, found, k, j, iteration
+      do i = 1, size(alphas)
+         call characteristic_values(meissner, alphas(i), 4, values, error, tolerance=1.0e-12_wp)
+         if (allocated(error)) then
+            call check(ctx, .false., "characteristic values: "//error%message)
+            return
+         end if
+         call check(ctx, all(values%route == route_closed_form), "route: the closed form")
+         do kind = 1, 2
+            ! roots of S - 2 (kind 1) and S + 2 (kind 2) of the closed form
+            found = 0
+            beta_a = -alphas(i) - 1.0_wp
+            call closed_form(alphas(i), beta_a, 0.0_wp, sgn, log_s, s)
+            f_a = s - merge(2.0_wp, -2.0_wp, kind == 1)
+            do while (found < 4)
+               beta_b = beta_a + 1.0e-3_wp
+               call closed_form(alphas(i), beta_b, 0.0_wp, sgn, log_s, s)
+               f_b = s - merge(2.0_wp, -2.0_wp, kind == 1)
+               if (f_a == 0.0_wp .or. f_a*f_b < 0.0_wp) then
+                  do iteration = 1, 200
+                     mid = 0.5_wp*(beta_a + beta_b)
+                     if (beta_b - beta_a <= 1.0e-14_wp*max(1.0_wp, abs(mid))) exit
+                     call closed_form(alphas(i), mid, 0.0_wp, sgn, log_s, s)
+                     f_mid = s - merge(2.0_wp, -2.0_wp, kind == 1)
+                     if (f_a*f_mid <= 0.0_wp) then
+                        beta_b = mid
+                     else
+                        beta_a = mid
+                        f_a = f_mid
+                     end if
+                  end do
+                  found = found + 1
+                  expected(found) = 0.5_wp*(beta_a + beta_b)
+               end if
+               beta_a = beta_b
+               f_a = f_b
+            end do
+            j = 0
+            do k = 1, size(values)
+               if (values(k)%trace_sign /= merge(2, -2, kind == 1)) cycle
+               j = j + 1
+               if (j > 4) exit
+               call check(ctx, values(k)%beta, expected(j), rel=2.0e-11_wp, abs=2.0e-11_wp, &
+                          message="transition value against the closed form")
+            end do
+            call check(ctx, j == 4, "four values of each kind")
+         end do
+      end do
+   end subroutine transition_values
 end module test_model_meissner

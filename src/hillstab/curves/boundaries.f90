@@ -9,8 +9,15 @@
 !>   |S ∓ 2| ≤ 2·tolerance·max(1, |S|) (the trace error auto guarantees), or when the
 !>   β error this residual implies, (|S ∓ 2| − that allowance)/|dS/dβ|, is at most
 !>   `beta_accuracy_factor`·tolerance·max(1, |β|); dS/dβ by a centred difference of auto.
+!> - `curve_route`, `exact_boundaries`: the exact transition curves of any model, by the
+!>   route that suits it: Hill's method on the pencil (`hill_form_pencil`: elastic, Mathieu),
+!>   Hill's method on the Fourier coefficients of g = Q − β (a finite `drive_harmonic_count`,
+!>   hillstab_curves_hill_fourier), or else root finding on S by method auto
+!>   (`approximate_boundaries` with an exact method: infinitely many harmonics, a jump of Q,
+!>   where the truncation converges slowly, or a model not of the form β + g). Each curve
+!>   says its route (`hill_boundary_t%route`).
 !> - `approximate_boundaries`: the roots of S_method(β) = ±2 for the closed-form or
-!>   segmented methods: S sampled on `n_samples` points from below every boundary
+!>   segmented methods (or an exact one): S sampled on `n_samples` points from below every boundary
 !>   (β ≥ −|α| on any curve) to the top of the window, each sign change of S ∓ 2
 !>   refined by Brent's method to tolerance·max(1, |β|). The order of a root is its
 !>   rank among the roots of its kind counted from below (a₀ | b₁ a₁ | b₂ a₂ …), so
@@ -26,11 +33,14 @@ module hillstab_curves_boundaries
    use hillstab_core_kinds, only: wp, pi2
    use hillstab_core_text, only: real_text, integer_text
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
-   use hillstab_hill_model, only: hill_model_t, hill_point_t
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_form_pencil, model_coefficient_range
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_integrate_monodromy, only: method_t, method_auto, monodromy_trace
+   use hillstab_integrate_monodromy, only: method_t, method_auto, method_formula, monodromy_trace
    use hillstab_hill_mathieu, only: mathieu_witness, gsl_witness_max_q
-   use hillstab_curves_hill_method, only: hill_boundary_t, hill_boundaries
+   use hillstab_curves_hill_method, only: hill_boundary_t, hill_boundaries, route_pencil, route_fourier, route_roots, &
+      route_closed_form, &
+      block_periodic, block_antiperiodic
+   use hillstab_curves_hill_fourier, only: fourier_boundaries
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -38,6 +48,11 @@ module hillstab_curves_boundaries
    public :: mathieu_witness, gsl_witness_max_q, beta_accuracy_factor, unstable_intervals_from_roots
    public :: interval_length, symmetric_difference_length
    public :: alpha_crossing_t, alpha_crossings, crossing_samples, crossing_search_gap
+   public :: curve_route, exact_boundaries, roots_to_curves, beta_floor, default_root_samples
+
+   !> Samples of the bracket search of the roots route over the β window when the caller
+   !> gives none.
+   integer, parameter :: default_root_samples = 400
 
    !> A boundary passes the check when the β error implied by the trace residual is at
    !> most this times tolerance·max(1, |β|) (tolerance 1e-11 → 1e-9 at |β| ≤ 1).
@@ -214,9 +229,114 @@ contains
       residual = fb
    end subroutine brent_root
 
+   !> The route of a model's exact transition curves: route_pencil for a model with Hill's
+   !> pencil form, route_closed_form for a model whose trace has the closed form of method
+   !> formula (`two_pieces_exact`: Meissner's square wave, whose Fourier series never ends),
+   !> route_fourier for Q = β + g with finitely many harmonics, route_roots for the rest
+   !> (infinitely many harmonics, or no form Hill's method knows).
+   pure integer function curve_route(model) result(route)
+      class(hill_model_t), intent(in) :: model  !! the model
+      if (model%two_pieces_exact()) then
+         route = route_closed_form
+      else if (model%hill_form() == hill_form_pencil) then
+         route = route_pencil
+      else if (model%drive_harmonic_count() > 0) then
+         route = route_fourier
+      else
+         route = route_roots
+      end if
+   end function curve_route
+
+   !> A β below every transition curve of the model at α: −|α| − 1 for the pencil models
+   !> (every curve of a weighted Hill equation lies at β ≥ −|α|), else −max Q(τ; α, β = 0) − 1
+   !> (for Q = β + g the operator −d² − g is ≥ −sup g).
+   pure real(wp) function beta_floor(model, alpha) result(floor)
+      class(hill_model_t), intent(in) :: model  !! the model
+      real(wp), intent(in) :: alpha             !! α
+      real(wp) :: q_min, q_max
+      if (model%hill_form() == hill_form_pencil) then
+         floor = -abs(alpha) - 1.0_wp
+      else
+         call model_coefficient_range(model, hill_point_t(alpha, 0.0_wp, 0.0_wp), q_min, q_max)
+         floor = -max(q_max, abs(q_min)) - 1.0_wp
+      end if
+   end function beta_floor
+
+   !> The exact transition curves crossing [beta_min, beta_max] at α, by the model's route
+   !> (`curve_route`): Hill's method on the pencil or on the Fourier coefficients (converged
+   !> to tolerance·max(1, |β|)), or the roots of S = ±2 by method auto at `tolerance`, refined
+   !> by Brent's method from brackets sampled at `n_samples` points over the window (default
+   !> `default_root_samples`; a tongue narrower than a step is missed and shifts the orders
+   !> above it). Ordered by β, each with its route.
+   subroutine exact_boundaries(model, alpha, beta_min, beta_max, tolerance, curves, error, n_samples)
+      class(hill_model_t), intent(in) :: model    !! the model
+      real(wp), intent(in) :: alpha               !! α
+      real(wp), intent(in) :: beta_min, beta_max  !! the β window
+      real(wp), intent(in) :: tolerance           !! target accuracy of β, relative to max(1, |β|)
+      type(hill_boundary_t), allocatable, intent(out) :: curves(:)  !! the curves, by beta
+      !> failure of Hill's method or of auto at a sample; unallocated on success
+      type(error_t), allocatable, intent(out) :: error
+      integer, intent(in), optional :: n_samples  !! samples of the roots route's bracket search
+      type(approximate_root_t), allocatable :: roots(:)
+      integer :: samples, route, method
+      route = curve_route(model)
+      select case (route)
+      case (route_pencil)
+         call hill_boundaries(model, alpha, beta_min, beta_max, tolerance, curves, error)
+      case (route_fourier)
+         call fourier_boundaries(model, alpha, beta_min, beta_max, tolerance, curves, error)
+      case default
+         samples = default_root_samples
+         if (present(n_samples)) samples = n_samples
+         allocate (curves(0))
+         if (.not. (ieee_is_finite(beta_min) .and. ieee_is_finite(beta_max) .and. ieee_is_finite(tolerance) &
+                    .and. ieee_is_finite(alpha))) then
+            call set_error(error, err_invalid_parameter, "transition curves: alpha, the beta window and the "// &
+               "tolerance must be finite")
+            return
+         end if
+         if (beta_min > beta_max .or. .not. tolerance > 0.0_wp) then
+            call set_error(error, err_invalid_parameter, "transition curves: need beta_min <= beta_max and tolerance > 0")
+            return
+         end if
+         method = merge(method_formula, method_auto, route == route_closed_form)
+         call approximate_boundaries(model, alpha, method_t(method, tolerance=tolerance), beta_min, beta_max, &
+                                     max(samples, 2), tolerance, roots, error, floor=beta_floor(model, alpha))
+         if (allocated(error)) return
+         curves = roots_to_curves(roots, tolerance)
+         curves%route = route
+      end select
+   end subroutine exact_boundaries
+
+   !> Roots of S = ±2 (`approximate_boundaries` with an exact method) as transition curves of
+   !> the roots route: the coupled block of their kind, parity 0 with their edge, error bound
+   !> tolerance·max(1, |β|) (the root finder's).
+   pure function roots_to_curves(roots, tolerance) result(curves)
+      type(approximate_root_t), intent(in) :: roots(:)     !! the roots, ascending
+      real(wp), intent(in) :: tolerance                    !! their accuracy relative to max(1, |β|)
+      type(hill_boundary_t), allocatable :: curves(:)
+      integer :: i
+      allocate (curves(size(roots)))
+      do i = 1, size(roots)
+         curves(i)%beta = roots(i)%beta
+         curves(i)%trace_sign = roots(i)%trace_sign
+         curves(i)%order = roots(i)%order
+         curves(i)%parity = 0
+         curves(i)%edge = roots(i)%edge
+         curves(i)%block = merge(block_periodic, block_antiperiodic, roots(i)%trace_sign == 2)
+         curves(i)%route = route_roots
+         curves(i)%modes = 0
+         curves(i)%change = 0.0_wp
+         curves(i)%error_bound = tolerance*max(1.0_wp, abs(roots(i)%beta))
+         curves(i)%truncated_drive = .false.
+         curves(i)%coexistent = .false.
+      end do
+   end function roots_to_curves
+
    !> The roots of S_method(β) = ±2 in [beta_min, beta_max] for an approximate method
    !> (formula or segments), with their orders, ascending in β.
-   subroutine approximate_boundaries(model, alpha, method, beta_min, beta_max, n_samples, tolerance, roots, error)
+   subroutine approximate_boundaries(model, alpha, method, beta_min, beta_max, n_samples, tolerance, roots, error, &
+                                     floor)
       class(hill_model_t), intent(in) :: model            !! the model
       real(wp), intent(in) :: alpha          !! α (ν)
       type(method_t), intent(in) :: method   !! method_formula or method_segments
@@ -225,6 +345,9 @@ contains
       real(wp), intent(in) :: tolerance      !! root accuracy, relative to max(1, |β|)
       type(approximate_root_t), allocatable, intent(out) :: roots(:)  !! the roots with their orders, ascending in beta
       type(error_t), allocatable, intent(out) :: error  !! the method failed at a sample; unallocated on success
+      !> a β below every curve, where the search starts (default −|α| − 1, right for the
+      !> elastic and Mathieu models; `beta_floor` for the others)
+      real(wp), intent(in), optional :: floor
       real(wp) :: low, step, b0, b1, root, residual, targets(2)
       real(wp), allocatable :: f(:, :)
       integer :: n, i, t, count_kind(2), m
@@ -236,6 +359,7 @@ contains
       end if
       ! every curve of a weighted Hill equation lies at β ≥ −|α|; start below it
       low = min(beta_min, -abs(alpha) - 1.0_wp)
+      if (present(floor)) low = min(beta_min, floor)
       step = (beta_max - beta_min)/real(n_samples - 1, wp)
       if (step <= 0.0_wp) step = 1.0_wp
       n = n_samples + ceiling((beta_min - low)/step)
@@ -327,7 +451,7 @@ contains
    end function crossing_samples
 
    !> Every α in [0, alpha_end] where a transition curve of `kind` crosses the fixed β:
-   !> the curves by Hill's method (β window [−1, π² + 1]) at the samples of
+   !> the curves by `exact_boundaries` (β window [−1, π² + 1]) at the samples of
    !> `crossing_samples`, each sign change of β_curve(α) − β between neighbouring samples
    !> refined by the Illinois variant of regula falsi (bisection when it stalls) to
    !> tolerance·max(1, α), or until β_curve − β is within the curves' own accuracy
@@ -352,7 +476,7 @@ contains
       allocate (samples(n))
       !$omp parallel do schedule(dynamic) default(shared) private(j)
       do j = n, 1, -1
-         call hill_boundaries(model, alphas(j), -1.0_wp, pi2 + 1.0_wp, tolerance, samples(j)%curves, samples(j)%error)
+         call exact_boundaries(model, alphas(j), -1.0_wp, pi2 + 1.0_wp, tolerance, samples(j)%curves, samples(j)%error)
       end do
       !$omp end parallel do
       do j = 1, n
@@ -452,7 +576,7 @@ contains
             x = (lo*f_hi - hi*f_lo)/(f_hi - f_lo)
             if (.not. (x > lo .and. x < hi)) x = 0.5_wp*(lo + hi)
          end if
-         call hill_boundaries(model, x, -1.0_wp, pi2 + 1.0_wp, tolerance, curves, error)
+         call exact_boundaries(model, x, -1.0_wp, pi2 + 1.0_wp, tolerance, curves, error)
          if (allocated(error)) return
          call matching_beta(curves, curve, beta_x, found)
          if (.not. found) then

@@ -68,6 +68,8 @@ module hillstab_curves_hill_method
    public :: block_periodic_even, block_periodic_odd, block_antiperiodic_even, block_antiperiodic_odd
    public :: formulation_inverted_pencil, formulation_pencil, formulation_nonsymmetric
    public :: hill_initial_modes, hill_max_modes, block_order, coexistence_threshold, structural_coexistence
+   public :: route_pencil, route_fourier, route_roots, route_closed_form, route_name
+   public :: block_periodic, block_antiperiodic
 
    !> Periodic, cosine-type: curves a₀, a₂, a₄, … (S = +2).
    integer, parameter :: block_periodic_even = 1
@@ -77,6 +79,22 @@ module hillstab_curves_hill_method
    integer, parameter :: block_antiperiodic_even = 3
    !> Antiperiodic, sine-type: curves b₁, b₃, … (S = −2).
    integer, parameter :: block_antiperiodic_odd = 4
+   !> Periodic, both types coupled (Q without the even symmetry; Hill's method on the Fourier
+   !> coefficients of Q − β, hillstab_curves_hill_fourier): every S = +2 curve, ascending.
+   integer, parameter :: block_periodic = 5
+   !> Antiperiodic, both types coupled: every S = −2 curve, ascending.
+   integer, parameter :: block_antiperiodic = 6
+
+   !> The curve comes from Hill's method on the pencil (`hill_form_pencil`: elastic, Mathieu).
+   integer, parameter :: route_pencil = 1
+   !> The curve comes from Hill's method on the Fourier coefficients of g = Q − β
+   !> (hillstab_curves_hill_fourier: models of the form Q = β + g(τ)).
+   integer, parameter :: route_fourier = 2
+   !> The curve comes from root finding on S (Brent's method on S ∓ 2 by an exact method).
+   integer, parameter :: route_roots = 3
+   !> The curve comes from root finding on the model's closed-form trace (method formula,
+   !> exact for a model whose two pieces are Q itself: `two_pieces_exact`, Meissner's).
+   integer, parameter :: route_closed_form = 4
 
    !> P z = μ (A − σP) z by `dsbgv` (the default).
    integer, parameter :: formulation_inverted_pencil = 1
@@ -115,22 +133,47 @@ module hillstab_curves_hill_method
       !> eigensolver (`rounding_bound`), whichever is larger
       real(wp) :: error_bound = 0.0_wp
       logical :: coexistent = .false.  !! the other curve of this order coincides (zero-width tongue)
+      !> the block it is an eigenvalue of (block_*; 0 for a root of S)
+      integer :: block = 0
+      !> 1 lower, 2 upper edge of the tongue of its order where the parity is not known
+      !> (parity 0: Q without the even symmetry, or a root of S); 0 otherwise and for order 0
+      integer :: edge = 0
+      !> how it was computed: route_pencil, route_fourier or route_roots
+      integer :: route = route_pencil
+      !> the drive g has infinitely many harmonics (a jump of Q), truncated: Hill's method
+      !> converges slowly there and error_bound is only the change between truncations
+      logical :: truncated_drive = .false.
    end type hill_boundary_t
 
 contains
 
    !> Short name of a block.
    pure function hill_block_name(block) result(name)
-      integer, intent(in) :: block  !! one of the four even/odd, periodic/antiperiodic blocks
+      integer, intent(in) :: block  !! one of the blocks (block_*)
       character(len=:), allocatable :: name
       select case (block)
       case (block_periodic_even); name = "periodic even (a_2m)"
       case (block_periodic_odd); name = "periodic odd (b_2m)"
       case (block_antiperiodic_even); name = "antiperiodic even (a_2m+1)"
       case (block_antiperiodic_odd); name = "antiperiodic odd (b_2m+1)"
+      case (block_periodic); name = "periodic"
+      case (block_antiperiodic); name = "antiperiodic"
       case default; name = "unknown"
       end select
    end function hill_block_name
+
+   !> The name of a route (`route_*`) for headers: "Hill's method (pencil)", …
+   pure function route_name(route) result(name)
+      integer, intent(in) :: route  !! route_pencil, route_fourier or route_roots
+      character(len=:), allocatable :: name
+      select case (route)
+      case (route_pencil); name = "Hill's method on the pencil"
+      case (route_fourier); name = "Hill's method on the Fourier coefficients of Q - beta"
+      case (route_roots); name = "roots of S = +-2"
+      case (route_closed_form); name = "roots of the closed-form S = +-2"
+      case default; name = "unknown"
+      end select
+   end function route_name
 
    !> Whether the two curves of every order n ≥ 1 of this kind (S = +2 or −2) coincide: decided
    !> by the structure of the blocks, not by the distance of two computed eigenvalues (thin
@@ -517,6 +560,7 @@ contains
                all(n_out)%order = block_order(block, j)
                all(n_out)%parity = merge(1, -1, block == block_periodic_even .or. block == block_antiperiodic_even)
                all(n_out)%modes = used
+               all(n_out)%block = block
                all(n_out)%change = changes(j)
                all(n_out)%error_bound = max(changes(j), rounding_bound(model, alpha, values(1), values(j), used))
                ! the partner of the same order in the other block of this kind

@@ -4,7 +4,7 @@ module hillstab_ffi_lapack
    use hillstab_core_kinds, only: wp
    implicit none
    private
-   public :: dsbgv, dgeev
+   public :: dsbgv, dgeev, dsbev, zhbev
 
    interface
       !> Generalised symmetric-definite banded eigenproblem A z = λ B z.
@@ -44,5 +44,38 @@ module hillstab_ffi_lapack
          real(wp), intent(out) :: work(*)       !! workspace
          integer, intent(out) :: info           !! 0 on success
       end subroutine dgeev
+
+      !> Eigenvalues and, optionally, eigenvectors of a real symmetric band matrix.
+      subroutine dsbev(jobz, uplo, n, kd, ab, ldab, w, z, ldz, work, info)
+         import :: wp
+         character, intent(in) :: jobz  !! 'N' eigenvalues only, 'V' also eigenvectors
+         character, intent(in) :: uplo  !! 'U' or 'L': which triangle the band holds
+         integer, intent(in) :: n       !! order of the matrix
+         integer, intent(in) :: kd      !! super-diagonals
+         integer, intent(in) :: ldab    !! leading dimension of ab (≥ kd + 1)
+         integer, intent(in) :: ldz     !! leading dimension of z
+         real(wp), intent(inout) :: ab(ldab, *)  !! the matrix in band storage (overwritten)
+         real(wp), intent(out) :: w(*)           !! eigenvalues, ascending
+         real(wp), intent(out) :: z(ldz, *)      !! eigenvectors if jobz = 'V'
+         real(wp), intent(out) :: work(*)        !! workspace, max(1, 3n − 2)
+         integer, intent(out) :: info            !! 0 on success
+      end subroutine dsbev
+
+      !> Eigenvalues and, optionally, eigenvectors of a complex Hermitian band matrix.
+      subroutine zhbev(jobz, uplo, n, kd, ab, ldab, w, z, ldz, work, rwork, info)
+         import :: wp
+         character, intent(in) :: jobz  !! 'N' eigenvalues only, 'V' also eigenvectors
+         character, intent(in) :: uplo  !! 'U' or 'L': which triangle the band holds
+         integer, intent(in) :: n       !! order of the matrix
+         integer, intent(in) :: kd      !! super-diagonals
+         integer, intent(in) :: ldab    !! leading dimension of ab (≥ kd + 1)
+         integer, intent(in) :: ldz     !! leading dimension of z
+         complex(wp), intent(inout) :: ab(ldab, *)  !! the matrix in band storage (overwritten)
+         real(wp), intent(out) :: w(*)              !! eigenvalues, ascending
+         complex(wp), intent(out) :: z(ldz, *)      !! eigenvectors if jobz = 'V'
+         complex(wp), intent(out) :: work(*)        !! workspace, n
+         real(wp), intent(out) :: rwork(*)          !! workspace, max(1, 3n − 2)
+         integer, intent(out) :: info               !! 0 on success
+      end subroutine zhbev
    end interface
 end module hillstab_ffi_lapack

@@ -3,7 +3,8 @@
 !> and takes any finite value. `mathieu_model_t` is this model as a value
 !> (hillstab_hill_model): its bindings answer, without the damping shift −ε²/4 of eq. (47),
 !> q, its exact segment means, the split q = c₀ + c₁ w with w = cos πτ, w from sin(πτ/2),
-!> ∫₀¹ √|w|, auto's step-count inputs, the Fourier terms of Hill's method, the two-piece
+!> ∫₀¹ √|w|, auto's step-count inputs, the Fourier terms of Hill's method (the pencil's, and
+!> the one harmonic of g = Q − β = −ν cos πτ), the two-piece
 !> values of the paper's eq. (A3) and GSL's characteristic values as the independent
 !> witness of its transition curves.
 !>
@@ -45,6 +46,8 @@ module hillstab_hill_model_mathieu
       procedure :: two_piece_values => mathieu_model_two_piece_values
       procedure :: hill_form => mathieu_hill_form
       procedure :: hill_coupling => mathieu_model_hill_coupling
+      procedure :: drive_harmonic_count => mathieu_drive_harmonic_count
+      procedure :: drive_harmonics => mathieu_drive_harmonics
    end type mathieu_model_t
 
 contains
@@ -197,6 +200,25 @@ contains
       real(wp), intent(in) :: t                   !! the squared mode number
       coupling = mathieu_hill_coupling(alpha)
    end function mathieu_model_hill_coupling
+
+   !> Q = β + g(τ) with g = −ν cos πτ: one harmonic (Hill's method on the Fourier coefficients).
+   pure integer function mathieu_drive_harmonic_count(self) result(count)
+      class(mathieu_model_t), intent(in) :: self  !! the model
+      count = 1
+   end function mathieu_drive_harmonic_count
+
+   !> g = −ν cos πτ over the period 2: mean 0, c(1) = −ν, every other coefficient 0.
+   pure subroutine mathieu_drive_harmonics(self, alpha, n, mean, c, s)
+      class(mathieu_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha               !! ν
+      integer, intent(in) :: n                    !! number of harmonics wanted
+      real(wp), intent(out) :: mean               !! 0
+      real(wp), intent(out) :: c(n), s(n)         !! −ν, 0, 0, … and 0
+      mean = 0.0_wp
+      c = 0.0_wp
+      s = 0.0_wp
+      if (n >= 1) c(1) = -alpha
+   end subroutine mathieu_drive_harmonics
 
    !> q(τ) = β − ν cos πτ, eq. (A1). (Arguments by value: the integrators evaluate it at every
    !> stage, through `hill_coefficient`.)

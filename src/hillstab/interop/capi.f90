@@ -28,11 +28,14 @@ module hillstab_interop_capi
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace
    use hillstab_integrate_monodromy, only: method_t, monodromy_trace, method_formula
    use hillstab_interop_outcome, only: record_outcome, get_last_error
+   use hillstab_curves_hill_method, only: hill_boundary_t
+   use hillstab_curves_characteristic, only: characteristic_values
+   use hillstab_core_text, only: integer_text
    implicit none
    private
    public :: hillstab_c_coefficient, hillstab_c_trace, hillstab_c_floquet, hillstab_c_trace_paper, &
       hillstab_c_trace_paper_checked, hillstab_c_error_message, hillstab_c_last_error, hillstab_c_version, &
-      hillstab_c_version_numbers, version_numbers
+      hillstab_c_version_numbers, version_numbers, hillstab_c_characteristic_values
 
    integer :: i_char
    !> The version as a NUL-terminated C string (a constant: safe from every thread).
@@ -203,6 +206,52 @@ contains
          method_t(method_formula), trace, log_abs_trace, overflow, log_modulus, floquet_exponent, stable, &
          stable_paper, status)
    end function hillstab_c_trace_paper_checked
+
+   !> The first n transition values of β of each kind at α (hillstab_curves_characteristic
+   !> `characteristic_values`): `count` values in the first `count` places of the arrays, by
+   !> kind, then ascending; kind is 1 periodic even (a_0, a_2, …), 2 periodic odd (b_2, b_4, …),
+   !> 3 antiperiodic even (a_1, a_3, …), 4 antiperiodic odd (b_1, b_3, …) where Q is even, else
+   !> 5 periodic and 6 antiperiodic (both edges of each order); 4n places always suffice.
+   !> Status err_invalid_parameter when capacity < count, n < 1, α outside the model's domain
+   !> or tolerance ≤ 0; the outputs are untouched on failure.
+   function hillstab_c_characteristic_values(model, alpha, n, tolerance, capacity, count, beta, order, kind, &
+                                             error_bound) result(status) bind(C, name="hillstab_characteristic_values")
+      integer(c_int), value, intent(in) :: model      !! HILLSTAB_MODEL_*
+      real(c_double), value, intent(in) :: alpha      !! alpha (nu for the Mathieu model)
+      integer(c_int), value, intent(in) :: n          !! values of each kind, >= 1
+      real(c_double), value, intent(in) :: tolerance  !! target error of beta relative to max(1, |beta|), > 0
+      integer(c_int), value, intent(in) :: capacity   !! places in each output array
+      integer(c_int), intent(inout) :: count          !! values written
+      real(c_double), intent(inout) :: beta(*)        !! the values of beta
+      integer(c_int), intent(inout) :: order(*)       !! n of a_n, b_n: their order
+      integer(c_int), intent(inout) :: kind(*)        !! 1 … 6 (above)
+      real(c_double), intent(inout) :: error_bound(*) !! bound of each value's error
+      integer(c_int) :: status
+      class(hill_model_t), allocatable :: m
+      type(error_t), allocatable :: error
+      type(hill_boundary_t), allocatable :: values(:)
+      integer :: i
+      call model_from_code(int(model), m, error)
+      if (.not. allocated(error)) call characteristic_values(m, real(alpha, wp), int(n), values, error, &
+                                                             real(tolerance, wp))
+      if (.not. allocated(error)) then
+         if (size(values) > capacity) call set_error(error, err_invalid_parameter, "characteristic values: "// &
+            "capacity "//integer_text(int(capacity))//" < the "//integer_text(size(values))//" values")
+      end if
+      call record_outcome(error)
+      if (allocated(error)) then
+         status = int(error%code, c_int)
+         return
+      end if
+      do i = 1, size(values)
+         beta(i) = values(i)%beta
+         order(i) = int(values(i)%order, c_int)
+         kind(i) = int(values(i)%block, c_int)
+         error_bound(i) = values(i)%error_bound
+      end do
+      count = int(size(values), c_int)
+      status = 0
+   end function hillstab_c_characteristic_values
 
    !> Copy a NUL-terminated description of `status` into `buffer` (at most `length` bytes).
    subroutine hillstab_c_error_message(status, buffer, length) bind(C, name="hillstab_error_message")

@@ -1,7 +1,7 @@
-!> Explicit interfaces of the old-style entry points HSTRACE, HSFLOQ and HSERRM for
+!> Explicit interfaces of the old-style entry points HSTRACE, HSFLOQ, HSCHAR and HSERRM for
 !> modern callers (`use hillstab_interop_legacy`). The routines themselves are external
 !> procedures (src/hillstab/interop/legacy_external.f90, link symbols `hstrace_`,
-!> `hsfloq_`, `hserrm_`), so FORTRAN 77 code calls them with no `USE`, through an
+!> `hsfloq_`, `hschar_`, `hserrm_`), so FORTRAN 77 code calls them with no `USE`, through an
 !> implicit interface, the way it calls LAPACK:
 !>
 !>```fortran
@@ -15,7 +15,7 @@ module hillstab_interop_legacy
    use hillstab_core_kinds, only: wp
    implicit none
    private
-   public :: hstrace, hsfloq, hserrm
+   public :: hstrace, hsfloq, hserrm, hschar
 
    interface
       !> Trace S of the one-period monodromy (S₁ of the χ equation (47) when EPS > 0).
@@ -50,7 +50,23 @@ module hillstab_interop_legacy
          integer, intent(out) :: info   !! 0 success, 2 overflow (as HSTRACE), 7 round-off limited, else an error code
       end subroutine hsfloq
 
-      !> Message of the most recent HSTRACE or HSFLOQ call in this thread (blank after success).
+      !> The first N transition values of β of each kind at ALPHA (the characteristic values).
+      subroutine hschar(model, alpha, n, tol, ldim, nout, beta, iord, kind, errb, info)
+         import :: wp
+         integer, intent(in) :: model    !! 1 elastic (eq. 25), 2 Mathieu
+         real(wp), intent(in) :: alpha   !! α (elastic: 0 ≤ α < π²); ν for Mathieu
+         integer, intent(in) :: n        !! values of each kind, ≥ 1
+         real(wp), intent(in) :: tol     !! target error of β relative to max(1, |β|), > 0
+         integer, intent(in) :: ldim     !! length of BETA, IORD, KIND, ERRB (4N always suffices)
+         integer, intent(out) :: nout    !! values returned (0 on failure)
+         real(wp), intent(inout) :: beta(ldim)  !! the values, by kind then ascending
+         integer, intent(inout) :: iord(ldim)   !! their orders n of a_n, b_n
+         integer, intent(inout) :: kind(ldim)   !! 1 a_2m, 2 b_2m, 3 a_2m+1, 4 b_2m+1; 5 periodic, 6 antiperiodic
+         real(wp), intent(inout) :: errb(ldim)  !! bound of each value's error
+         integer, intent(out) :: info    !! 0 success, else an error code (1 invalid parameter, 6, 7)
+      end subroutine hschar
+
+      !> Message of the most recent HSTRACE, HSFLOQ or HSCHAR call in this thread (blank after success).
       subroutine hserrm(msg)
          character(len=*), intent(out) :: msg  !! receives the message, cut or blank-padded to its length
       end subroutine hserrm

@@ -1,6 +1,6 @@
 !> The old-style entry points as external procedures (no module): FORTRAN 77 code
 !> calls them through an implicit interface and links the symbols `hstrace_`,
-!> `hsfloq_` and `hserrm_`. Modern callers get their explicit interfaces from
+!> `hsfloq_`, `hschar_` and `hserrm_`. Modern callers get their explicit interfaces from
 !> `module hillstab_interop_legacy`. Plain DOUBLE PRECISION / INTEGER / CHARACTER arguments,
 !> an INFO code; the guide page *Using the library* documents every argument and code, LAPACK-style.
 
@@ -78,7 +78,63 @@ subroutine hsfloq(model, alpha, beta, eps, method, nseg, isamp, tol, s, mu, ista
    if (info == 0 .and. tr%overflow) info = 2  ! S is +-HUGE
 end subroutine hsfloq
 
-!> MSG receives the message of the most recent HSTRACE or HSFLOQ call in this thread
+!> The first N transition values of β of each kind at ALPHA for MODEL (1 elastic, 2 Mathieu:
+!> Mathieu's a_n(q), b_n(q) are 4β/π² at ALPHA = ν = π²q/2), converged to TOL·max(1, |β|):
+!> NOUT values in BETA, their orders in IORD (n of a_n, b_n), their kinds in KIND (1 periodic
+!> even a_0, a_2, …; 2 periodic odd b_2, b_4, …; 3 antiperiodic even a_1, a_3, …; 4
+!> antiperiodic odd b_1, b_3, …; 5 periodic and 6 antiperiodic where Q is not even) and the
+!> bounds of their errors in ERRB, by kind then ascending; LDIM ≥ NOUT (4N always suffices).
+!> INFO = 0 success; otherwise an error code (1 invalid parameter: N < 1, TOL ≤ 0, ALPHA
+!> outside the model's domain, LDIM too small; 6 eigensolver failure; 7 not converged),
+!> NOUT = 0 and the arrays untouched. HSERRM gives the message.
+subroutine hschar(model, alpha, n, tol, ldim, nout, beta, iord, kind, errb, info)
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
+   use hillstab_core_text, only: integer_text
+   use hillstab_hill_model, only: hill_model_t
+   use hillstab_hill_models, only: model_from_code
+   use hillstab_curves_hill_method, only: hill_boundary_t
+   use hillstab_curves_characteristic, only: characteristic_values
+   use hillstab_interop_outcome, only: record_outcome
+   implicit none
+   integer, intent(in) :: model    !! 1 elastic (eq. 25), 2 Mathieu
+   real(wp), intent(in) :: alpha   !! α (elastic: 0 ≤ α < π²); ν for Mathieu
+   integer, intent(in) :: n        !! values of each kind, ≥ 1
+   real(wp), intent(in) :: tol     !! target error of β relative to max(1, |β|), > 0
+   integer, intent(in) :: ldim     !! length of BETA, IORD, KIND, ERRB (4N always suffices)
+   integer, intent(out) :: nout    !! values returned (0 on failure)
+   real(wp), intent(inout) :: beta(ldim)  !! the values, by kind then ascending
+   integer, intent(inout) :: iord(ldim)   !! their orders n of a_n, b_n
+   integer, intent(inout) :: kind(ldim)   !! 1 a_2m, 2 b_2m, 3 a_2m+1, 4 b_2m+1; 5 periodic, 6 antiperiodic
+   real(wp), intent(inout) :: errb(ldim)  !! bound of each value's error
+   integer, intent(out) :: info    !! 0 success, else an error code (1 invalid parameter, 6, 7)
+   class(hill_model_t), allocatable :: q_model
+   type(hill_boundary_t), allocatable :: values(:)
+   type(error_t), allocatable :: error
+   integer :: i
+   nout = 0
+   call model_from_code(model, q_model, error)
+   if (.not. allocated(error)) call characteristic_values(q_model, alpha, n, values, error, tol)
+   if (.not. allocated(error)) then
+      if (size(values) > ldim) call set_error(error, err_invalid_parameter, "HSCHAR: LDIM = "// &
+         integer_text(ldim)//" < the "//integer_text(size(values))//" values")
+   end if
+   call record_outcome(error)
+   info = 0
+   if (allocated(error)) then
+      info = error%code
+      return
+   end if
+   do i = 1, size(values)
+      beta(i) = values(i)%beta
+      iord(i) = values(i)%order
+      kind(i) = values(i)%block
+      errb(i) = values(i)%error_bound
+   end do
+   nout = size(values)
+end subroutine hschar
+
+!> MSG receives the message of the most recent HSTRACE, HSFLOQ or HSCHAR call in this thread
 !> (blank when that call succeeded), cut or blank-padded to the length of MSG.
 subroutine hserrm(msg)
    use hillstab_interop_outcome, only: get_last_error

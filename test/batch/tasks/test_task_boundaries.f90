@@ -19,6 +19,12 @@ module test_task_boundaries
    use hillstab_test_scratch, only: scratch_prefix, write_file, read_lines, delete_file
    use hillstab_hill_model, only: hill_point_t
    use hillstab_hill_model_elastic, only: elastic_model_t
+   use hillstab_batch_scene_read, only: read_scene
+   use hillstab_batch_scene_types, only: scene_t
+   use hillstab_batch_run_scenes, only: run_scene, output_path
+   use hillstab_curves_hill_method, only: hill_boundary_t
+   use hillstab_curves_hill_fourier, only: fourier_boundaries
+   use hillstab_test_drive_model, only: drive_model_t, drive_model
    implicit none
    private
    public :: collect_task_boundaries
@@ -38,8 +44,88 @@ contains
          new_unittest("spring_bad_input", spring_bad_input), &
          new_unittest("physical_curves_a_column", physical_curves_a_column), &
          new_unittest("progress_within_an_alpha", progress_within_an_alpha), &
-         new_unittest("spring_progress", spring_progress)])
+         new_unittest("spring_progress", spring_progress), &
+         new_unittest("fourier_and_roots_routes", fourier_and_roots_routes)])
    end function collect_task_boundaries
+
+   !> A model of the form β + g with three cosine harmonics goes by Hill's method on the
+   !> Fourier coefficients (the header says so; every point passes the check by auto; the
+   !> values are those of `fourier_boundaries`), and the same model withholding its harmonics
+   !> by the roots of S (the header says so; the same curves to 1e-9).
+   subroutine fourier_and_roots_routes(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(drive_model_t) :: model
+      real(wp), allocatable :: fourier_rows(:, :), root_rows(:, :)
+      type(hill_boundary_t), allocatable :: curves(:)
+      type(error_t), allocatable :: error
+      integer :: k, j
+      logical :: found
+      model = drive_model(2.0_wp, 0.2_wp, [-1.0_wp, 0.4_wp, 0.1_wp], [0.0_wp, 0.0_wp, 0.0_wp])
+      call run_with_model(model, "bnd_fourier", "Hill's method on the Fourier coefficients", fourier_rows)
+      model%withhold = .true.
+      call run_with_model(model, "bnd_roots", "root finding on S", root_rows)
+      call check(ctx, size(fourier_rows, 2) > 10 .and. size(fourier_rows, 2) == size(root_rows, 2), &
+                 "the same number of curve points")
+      if (size(fourier_rows, 2) /= size(root_rows, 2)) return
+      call check(ctx, all(fourier_rows(8, :) == 0.0_wp) .and. all(root_rows(8, :) == 0.0_wp), "every check passed")
+      model%withhold = .false.
+      do k = 1, size(fourier_rows, 2)
+         call fourier_boundaries(model, fourier_rows(1, k), -5.0_wp, 30.0_wp, 1.0e-11_wp, curves, error)
+         if (allocated(error)) return
+         found = .false.
+         do j = 1, size(curves)
+            if (abs(curves(j)%beta - fourier_rows(2, k)) <= 1.0e-12_wp*max(1.0_wp, abs(curves(j)%beta))) found = .true.
+         end do
+         call check(ctx, found, "a value of fourier_boundaries")
+         found = .false.
+         do j = 1, size(root_rows, 2)
+            if (root_rows(1, j) == fourier_rows(1, k) .and. abs(root_rows(2, j) - fourier_rows(2, k)) <= &
+                1.0e-9_wp*max(1.0_wp, abs(fourier_rows(2, k)))) found = .true.
+         end do
+         call check(ctx, found, "the same curve point by the roots of S")
+      end do
+   contains
+      subroutine run_with_model(model, name, route_text, rows)
+         type(drive_model_t), intent(in) :: model
+         character(len=*), intent(in) :: name, route_text
+         real(wp), allocatable, intent(out) :: rows(:, :)
+         type(scene_t) :: scene
+         type(error_t), allocatable :: error
+         character(len=:), allocatable :: path, out
+         character(len=1024), allocatable :: lines(:)
+         integer :: k, n, ios
+         logical :: said
+         allocate (rows(11, 0))
+         path = scratch_prefix(name)//".nml"
+         out = scratch_prefix(name)
+         call write_file(path, two_lines("&scene task='boundaries', model='mathieu', tolerance=1e-11, "// &
+            "output='"//out//"' /", "&chart alpha_min=1, alpha_max=6, n_alpha=4, beta_min=-5, beta_max=30, n_beta=400 /"))
+         call read_scene(path, scene, error)
+         call delete_file(path)
+         call check(ctx, .not. allocated(error), name//": scene read")
+         if (allocated(error)) return
+         deallocate (scene%model)
+         allocate (scene%model, source=model)
+         call run_scene(scene, .true., error)
+         call check(ctx, .not. allocated(error), name//": runs")
+         if (allocated(error)) call check(ctx, .false., error%message)
+         if (allocated(error)) return
+         lines = read_lines(output_path(scene))
+         call delete_file(output_path(scene))
+         said = .false.
+         deallocate (rows)
+         allocate (rows(11, size(lines)))
+         n = 0
+         do k = 1, size(lines)
+            if (index(lines(k), "method: every curve by "//route_text) > 0) said = .true.
+            if (lines(k)(1:1) == "#" .or. len_trim(lines(k)) == 0) cycle
+            n = n + 1
+            read (lines(k), *, iostat=ios) rows(:, n)
+         end do
+         rows = rows(:, :n)
+         call check(ctx, said, name//": the header names the route")
+      end subroutine run_with_model
+   end subroutine fourier_and_roots_routes
 
    !> Two scene lines as one array (built here: typed array constructors with
    !> deferred-length concatenations corrupt the heap in gfortran 12).

@@ -1,8 +1,13 @@
 !> Task `boundaries`: the transition curves (S = ±2) over the α grid of `&chart`,
 !> inside its β window, written as one gnuplot block per curve.
 !>
-!> - method auto or any exact method: Hill's method (hillstab_curves_hill_method), every
-!>   boundary checked independently by method auto (hillstab_curves_boundaries); a boundary
+!> - method auto or any exact method: the exact curves by the model's route
+!>   (hillstab_curves_boundaries `curve_route`): Hill's method on the pencil
+!>   (hillstab_curves_hill_method: elastic, Mathieu), Hill's method on the Fourier
+!>   coefficients of g = Q − β (hillstab_curves_hill_fourier: Q = β + g with finitely many
+!>   harmonics), or root finding on S by method auto (brackets from n_beta samples of the
+!>   window: infinitely many harmonics, a jump of Q); the header says which. Every boundary is
+!>   checked independently by method auto (hillstab_curves_boundaries); a boundary
 !>   that fails the check is written with status_failed and the run reports it
 !>   (err_points_failed, exit status 3), it is never written as ok;
 !> - method formula or segments: the roots of S_method(β) = ±2 by Brent's method on a
@@ -28,9 +33,12 @@ module hillstab_batch_tasks_boundaries
    use hillstab_hill_coefficient, only: in_physical_domain, sampling_name
    use hillstab_integrate_monodromy, only: method_name, method_is_exact, method_uses_segments, method_pieces
    use hillstab_curves_hill_method, only: hill_boundary_t, hill_boundaries, coexistence_threshold, &
-      hill_block_values_t, hill_block_values, hill_curves
+      hill_block_values_t, hill_block_values, hill_curves, route_pencil, route_fourier, route_roots, route_closed_form
+   use hillstab_curves_hill_fourier, only: fourier_drive_t, fourier_drive, fourier_blocks, fourier_block_t, &
+      fourier_block_values, fourier_curves
    use hillstab_curves_boundaries, only: boundary_check_t, verify_boundary, approximate_root_t, approximate_boundaries, &
-      beta_accuracy_factor, gsl_witness_max_q, alpha_crossing_t, alpha_crossings, crossing_search_gap
+      beta_accuracy_factor, gsl_witness_max_q, alpha_crossing_t, alpha_crossings, crossing_search_gap, &
+      curve_route, exact_boundaries
    use hillstab_batch_scene_types, only: scene_t, task_t, scene_header, output_path, open_scene_output, physical_summary
    use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail, group_present
@@ -276,8 +284,8 @@ contains
       type(approximate_root_t), allocatable :: roots(:)
       integer :: i, j
       if (exact_method(scene)) then
-         call hill_boundaries(scene%model, alpha, grid%beta_min, grid%beta_max, &
-                              scene%method%tolerance, curves, error)
+         call exact_boundaries(scene%model, alpha, grid%beta_min, grid%beta_max, &
+                               scene%method%tolerance, curves, error, n_samples=max(grid%n_beta, 2))
          if (allocated(error)) then
             allocate (rows(0))
             return
@@ -313,8 +321,8 @@ contains
       end if
    end subroutine find_boundary_rows
 
-   !> The rows of Hill's method's curves at one alpha, before their check (beta_error: Hill's
-   !> own bound).
+   !> The rows of the exact curves at one alpha, before their check (beta_error: their own
+   !> bound; branch 1 a_n, 2 b_n, or 1 lower, 2 upper edge where the blocks do not split).
    function rows_of_curves(alpha, curves) result(rows)
       real(wp), intent(in) :: alpha
       type(hill_boundary_t), intent(in) :: curves(:)
@@ -326,7 +334,11 @@ contains
          rows(i)%beta = curves(i)%beta
          rows(i)%trace_sign = curves(i)%trace_sign
          rows(i)%order = curves(i)%order
-         rows(i)%branch = merge(1, 2, curves(i)%parity == 1)
+         if (curves(i)%parity == 0) then   ! no even/odd split: the lower or upper edge
+            rows(i)%branch = max(curves(i)%edge, 1)
+         else
+            rows(i)%branch = merge(1, 2, curves(i)%parity == 1)
+         end if
          rows(i)%coexistent = curves(i)%coexistent
          rows(i)%modes = curves(i)%modes
          rows(i)%beta_error = curves(i)%error_bound
@@ -494,29 +506,79 @@ contains
       end if
    end subroutine boundaries_run
 
-   !> Hill's method at every alpha of the grid, block by block in parallel (with progress per
-   !> block), the blocks of each alpha then joined into its rows (as `hill_boundaries` does);
-   !> an alpha whose block failed has no rows and the first failing block's message.
+   !> The exact curves at every alpha of the grid by the model's route, before their check:
+   !> Hill's method block by block in parallel (with progress per block), the blocks of each
+   !> alpha then joined into its rows (as `hill_boundaries` and `fourier_boundaries` do); or
+   !> the roots of S by auto, alpha by alpha. An alpha where this failed has no rows and the
+   !> first failure's message.
    subroutine find_hill_rows(scene, grid, per_alpha, quiet)
       type(scene_t), intent(in) :: scene
       type(chart_grid_t), intent(in) :: grid
       type(alpha_rows_t), intent(inout) :: per_alpha(:)
       logical, intent(in) :: quiet
       type(hill_block_values_t), allocatable :: blocks(:, :)
+      type(fourier_block_t), allocatable :: fourier(:, :)
+      type(fourier_drive_t) :: drive
+      integer, allocatable :: n_blocks(:), ids(:, :)
       type(hill_boundary_t), allocatable :: curves(:)
       type(progress_t) :: progress
       type(error_t), allocatable :: cause
       type(alpha_rows_t), allocatable :: outcomes(:, :)   ! failed and message per block
-      integer :: i, k, block, n_alpha
+      integer :: i, k, block, n_alpha, route
+      real(wp) :: alpha
       n_alpha = size(per_alpha)
-      allocate (blocks(4, n_alpha), outcomes(4, n_alpha))
+      route = curve_route(scene%model)
+      if (route == route_roots .or. route == route_closed_form) then
+         call progress_begin(progress, int(n_alpha, int64), quiet, "alphas")
+         !$omp parallel do schedule(dynamic) default(shared) private(i, cause)
+         do i = 1, n_alpha
+            call find_boundary_rows(scene, grid, grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i), &
+                                    per_alpha(i)%rows, cause)
+            if (allocated(cause)) then
+               per_alpha(i)%failed = .true.
+               per_alpha(i)%message = cause%message
+            end if
+            call progress_step(progress)
+         end do
+         !$omp end parallel do
+         call progress_end(progress)
+         return
+      end if
+      allocate (outcomes(4, n_alpha), n_blocks(n_alpha), ids(4, n_alpha))
+      n_blocks = 4
+      ids = 0
+      if (route == route_fourier) then
+         ! the blocks of each alpha's drive: four for an even g, two coupled ones otherwise
+         allocate (fourier(4, n_alpha))
+         do i = 1, n_alpha
+            call fourier_drive(scene%model, grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i), drive, cause)
+            if (allocated(cause)) then
+               outcomes(1, i)%failed = .true.
+               outcomes(1, i)%message = cause%message
+               n_blocks(i) = 0
+               cycle
+            end if
+            associate (list => fourier_blocks(drive))
+               n_blocks(i) = size(list)
+               ids(:size(list), i) = list
+            end associate
+         end do
+      else
+         allocate (blocks(4, n_alpha))
+      end if
       call progress_begin(progress, 4_int64*n_alpha, quiet, "Hill blocks")
-      !$omp parallel do schedule(dynamic) default(shared) private(k, i, block, cause)
+      !$omp parallel do schedule(dynamic) default(shared) private(k, i, block, cause, alpha)
       do k = 1, 4*n_alpha
          i = (k - 1)/4 + 1
          block = k - 4*(i - 1)
-         call hill_block_values(scene%model, grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i), block, &
-                                grid%beta_min, grid%beta_max, scene%method%tolerance, blocks(block, i), cause)
+         alpha = grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i)
+         if (route == route_fourier) then
+            if (block <= n_blocks(i)) call fourier_block_values(scene%model, alpha, ids(block, i), grid%beta_min, &
+               grid%beta_max, scene%method%tolerance, fourier(block, i), cause)
+         else
+            call hill_block_values(scene%model, alpha, block, grid%beta_min, grid%beta_max, scene%method%tolerance, &
+                                   blocks(block, i), cause)
+         end if
          if (allocated(cause)) then
             outcomes(block, i)%failed = .true.
             outcomes(block, i)%message = cause%message
@@ -526,15 +588,18 @@ contains
       !$omp end parallel do
       call progress_end(progress)
       do i = 1, n_alpha
+         alpha = grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i)
          block = findloc(outcomes(:, i)%failed, .true., dim=1)
          if (block > 0) then
             per_alpha(i)%failed = .true.
             per_alpha(i)%message = outcomes(block, i)%message
             allocate (per_alpha(i)%rows(0))
+         else if (route == route_fourier) then
+            call fourier_curves(grid%beta_min, grid%beta_max, fourier(:n_blocks(i), i), curves)
+            per_alpha(i)%rows = rows_of_curves(alpha, curves)
          else
-            call hill_curves(scene%model, grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i), grid%beta_min, &
-                             grid%beta_max, blocks(:, i), curves)
-            per_alpha(i)%rows = rows_of_curves(grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i), curves)
+            call hill_curves(scene%model, alpha, grid%beta_min, grid%beta_max, blocks(:, i), curves)
+            per_alpha(i)%rows = rows_of_curves(alpha, curves)
          end if
       end do
    end subroutine find_hill_rows
@@ -868,13 +933,45 @@ contains
       type(chart_grid_t), intent(in) :: grid
       integer, intent(in) :: n_curves
       character(len=:), allocatable :: lines(:)
-      character(len=240) :: text(16)
+      character(len=400) :: text(18)
       integer :: n
       n = 0
       n = n + 1; text(n) = model_description(scene%model)
       if (exact_method(scene)) then
-         n = n + 1; text(n) = "method: Hill's method (eigenvalues of the banded symmetric-definite pencil, LAPACK "// &
-            "dsbgv), converged in the truncation to tolerance "//real_text(scene%method%tolerance)//"*max(1,|beta|)"
+         select case (curve_route(scene%model))
+         case (route_pencil)
+            n = n + 1; text(n) = "method: Hill's method (eigenvalues of the banded symmetric-definite pencil, LAPACK "// &
+               "dsbgv), converged in the truncation to tolerance "//real_text(scene%method%tolerance)//"*max(1,|beta|)"
+         case (route_fourier)
+            n = n + 1; text(n) = "method: every curve by Hill's method on the Fourier coefficients of Q - beta ("// &
+               integer_text(scene%model%drive_harmonic_count())//" harmonics over the period "// &
+               real_text(scene%model%period())//"; inverted banded pencil, LAPACK dsbgv), converged in the "// &
+               "truncation to tolerance "//real_text(scene%method%tolerance)//"*max(1,|beta|)"
+            n = n + 1; text(n) = "branch of Q without the even symmetry (sine terms): 1 = lower, 2 = upper edge "// &
+               "of the tongue; coexist: 1 where the harmonics of Q - beta make the tongue's order no multiple of "// &
+               "their gcd (Q of a shorter period) or vanish"
+         case (route_closed_form)
+            n = n + 1; text(n) = "method: every curve by root finding on the closed-form trace (method formula, exact "// &
+               "for this model: its two constant pieces are Q itself), Brent's method to tolerance "// &
+               real_text(scene%method%tolerance)//" from brackets of "//integer_text(max(grid%n_beta, 2))// &
+               " samples over the beta window (n_beta; tongues narrower than a step can be missed); Q - beta has "// &
+               "infinitely many harmonics (a jump of Q), where Hill's method converges slowly"
+            n = n + 1; text(n) = "branch of the roots of S: 1 = lower, 2 = upper edge of the tongue (the rank among "// &
+               "the roots of its kind from below)"
+         case default
+            n = n + 1; text(n) = "method: every curve by root finding on S: the roots of S = +-2 by method auto "// &
+               "(tolerance "//real_text(scene%method%tolerance)//"), Brent's method from brackets of "// &
+               integer_text(max(grid%n_beta, 2))//" samples over the beta window (n_beta; tongues narrower than a "// &
+               "step can be missed)"
+            if (scene%model%drive_harmonic_count() /= 0) then
+               text(n) = trim(text(n))//"; Q - beta has infinitely many harmonics (a jump of Q), where Hill's "// &
+                  "method converges slowly"
+            else
+               text(n) = trim(text(n))//"; Q has no form Hill's method knows"
+            end if
+            n = n + 1; text(n) = "branch of the roots of S: 1 = lower, 2 = upper edge of the tongue (the rank among "// &
+               "the roots of its kind from below)"
+         end select
          n = n + 1; text(n) = "each boundary checked by method auto: S = +-2 within 2*tolerance*max(1,|S|), or implied "// &
             "beta error <= "//real_text(beta_accuracy_factor)//"*tolerance*max(1,|beta|)"
       else
