@@ -9,6 +9,7 @@ program tester
    use test_floquet, only: collect_floquet
    use test_monodromy, only: collect_monodromy
    use test_capi, only: collect_capi
+   use test_capi_batch, only: collect_capi_batch
    use test_gsl, only: collect_gsl
    use test_rk, only: collect_rk
    use test_magnus, only: collect_magnus
@@ -36,7 +37,7 @@ program tester
    implicit none
    ! one by one, not as an array constructor of the collect functions' results: gfortran 12
    ! leaks the allocatable components of such results (LeakSanitizer, make test-sanitize)
-   type(testsuite_t) :: suites(32)
+   type(testsuite_t) :: suites(33)
    integer :: n_failed
    suites(1) = collect_models()
    suites(2) = collect_codes()
@@ -70,6 +71,7 @@ program tester
    suites(30) = collect_symplectic()
    suites(31) = collect_chaos()
    suites(32) = collect_checkpoint()
+   suites(33) = collect_capi_batch()
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester
