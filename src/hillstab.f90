@@ -21,17 +21,20 @@
 !> - [[hillstab_core_status]]: [[hillstab_core_status:status_ok]], [[hillstab_core_status:status_roundoff]],
 !>   [[hillstab_core_status:status_failed]], [[hillstab_core_status:status_name]]
 !> - [[hillstab_core_stats]]: [[hillstab_core_stats:work_stats_t]]
-!> - [[hillstab_hill_models]]: [[hillstab_hill_models:hill_model_t]], [[hillstab_hill_models:model_elastic]],
-!>   [[hillstab_hill_models:model_mathieu]], [[hillstab_hill_models:model_name]],
-!>   [[hillstab_hill_models:model_from_name]], [[hillstab_hill_models:model_names_text]],
-!>   [[hillstab_hill_models:model_description]], [[hillstab_hill_models:model_is_pendulum]],
-!>   [[hillstab_hill_models:check_model]], [[hillstab_hill_models:hill_coefficient]],
-!>   [[hillstab_hill_models:segment_average]], [[hillstab_hill_models:damping_shift]]
+!> - [[hillstab_hill_model]]: [[hillstab_hill_model:hill_model_t]], [[hillstab_hill_model:hill_point_t]],
+!>   [[hillstab_hill_model:hill_window_t]], [[hillstab_hill_model:model_description]],
+!>   [[hillstab_hill_model:check_point]], [[hillstab_hill_model:check_alpha]],
+!>   [[hillstab_hill_model:hill_coefficient]], [[hillstab_hill_model:segment_average]],
+!>   [[hillstab_hill_model:model_split]], [[hillstab_hill_model:damping_shift]]
+!> - [[hillstab_hill_models]]: [[hillstab_hill_models:model_names]], [[hillstab_hill_models:model_count]],
+!>   [[hillstab_hill_models:new_model]], [[hillstab_hill_models:model_from_code]],
+!>   [[hillstab_hill_models:model_code]], [[hillstab_hill_models:model_names_text]]
+!> - [[hillstab_hill_model_elastic]]: [[hillstab_hill_model_elastic:elastic_model_t]]
+!> - [[hillstab_hill_model_mathieu]]: [[hillstab_hill_model_mathieu:mathieu_model_t]]
 !> - [[hillstab_hill_coefficient]]: [[hillstab_hill_coefficient:sampling_endpoint]],
 !>   [[hillstab_hill_coefficient:sampling_midpoint]], [[hillstab_hill_coefficient:sampling_average]],
 !>   [[hillstab_hill_coefficient:sampling_name]], [[hillstab_hill_coefficient:sampling_from_name]],
-!>   [[hillstab_hill_coefficient:segment_coefficients]], [[hillstab_hill_coefficient:hill_period]],
-!>   [[hillstab_hill_model_elastic:in_physical_domain]]
+!>   [[hillstab_hill_coefficient:segment_coefficients]], [[hillstab_hill_model_elastic:in_physical_domain]]
 !> - [[hillstab_hill_units]]: [[hillstab_hill_units:physical_t]], [[hillstab_hill_units:standard_gravity]],
 !>   [[hillstab_hill_units:equilibrium_length]], [[hillstab_hill_units:physical_alpha]],
 !>   [[hillstab_hill_units:physical_beta]], [[hillstab_hill_units:physical_epsilon]],
