@@ -42,7 +42,10 @@ class Model:
     def __del__(self):
         handle = getattr(self, "_handle", None)
         if handle is not None and handle.value:
-            lib.hillstab_model_free(handle)
+            try:
+                lib.hillstab_model_free(handle)
+            except Exception:  # the interpreter is shutting down
+                pass
             self._handle = None
 
     @property
@@ -87,7 +90,9 @@ class Model:
 
     def q(self, tau, alpha, beta, epsilon=0.0):
         """Q(τ) − ε²/4 of the model (the damping shift of eq. (47)) at the point (α, β)
-        (registry models only; scalars)."""
+        (scalars; through ``hillstab_q``, which knows the models without data)."""
+        if self.variables:
+            raise NotImplementedError("q() of a model with data: hillstab_q takes a model code, not a handle")
         code = model_names().index(self.name) + 1
         out = ctypes.c_double(0.0)
         check(lib.hillstab_q(code, float(alpha), float(beta), float(epsilon), float(tau), ctypes.byref(out)))
