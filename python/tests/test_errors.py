@@ -153,5 +153,24 @@ def test_mathieu_characteristic_values():
 
 
 def test_help_is_everywhere():
+    """Every public module, function, class, method and property has a docstring."""
+    import inspect
+    modules = [hillstab] + [getattr(hillstab, name) for name in ("models", "floquet", "curves", "spring", "scenes",
+                                                                 "errors")]
+    missing = []
+    for module in modules:
+        if not module.__doc__:
+            missing.append(module.__name__)
+        for name, obj in vars(module).items():
+            if name.startswith("_") or not getattr(obj, "__module__", "").startswith("hillstab"):
+                continue
+            if inspect.isfunction(obj) or inspect.isclass(obj):
+                if not obj.__doc__:
+                    missing.append(module.__name__ + "." + name)
+                for member, value in (vars(obj).items() if inspect.isclass(obj) else ()):
+                    if not member.startswith("_") and (inspect.isfunction(value) or isinstance(value, property)) \
+                            and not value.__doc__:
+                        missing.append(module.__name__ + "." + name + "." + member)
+    assert not missing
     for name in hillstab.__all__:
         assert getattr(hillstab, name).__doc__, name
