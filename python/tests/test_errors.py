@@ -174,3 +174,28 @@ def test_help_is_everywhere():
     assert not missing
     for name in hillstab.__all__:
         assert getattr(hillstab, name).__doc__, name
+
+
+def test_concurrent_calls_from_python_threads():
+    """Calls from several Python threads at once (ctypes releases the GIL: they run inside the
+    library together) give the serial values, and each thread gets its own error message."""
+    from concurrent.futures import ThreadPoolExecutor
+    grid = ((0.0, 9.8, 12), (-2.0, 12.0, 30))
+    serial = hillstab.chart(*grid, threads=1)
+
+    def good(_):
+        return hillstab.chart(*grid, threads=1).trace
+
+    def bad(k):
+        try:
+            hillstab.floquet([1.0, 10.0 + k], [1.0, 1.0])
+        except ValueError as error:
+            return str(error)
+        return ""
+
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        traces = list(pool.map(good, range(4)))
+        messages = list(pool.map(bad, range(4)))
+    assert all(same_bits(t, serial.trace) for t in traces)
+    for k, message in enumerate(messages):
+        assert message.startswith("point 1 (alpha = {!r}".format(10.0 + k)), message
