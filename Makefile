@@ -4,6 +4,8 @@
 # both install what they need when it is missing (scripts/setup.sh NEED...; without root it
 # lists what is missing and how to provide it). Further targets:
 #   make test-debug     tests again with runtime checks and floating-point traps
+#   make test-python    pip install . (the Python package, compiled by CMake) into a fresh virtual
+#                       environment build/venv, then its pytest suite (python/tests)
 #   make test-sanitize  tests again built with AddressSanitizer and UndefinedBehaviorSanitizer
 #                       (any report fails the run, leaks included; scripts/sanitize/)
 #   make fuzz           300 mutated scenes, 90 mutated points files and 140 mutated templates
@@ -56,7 +58,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug test-sanitize setup setup-build setup-test bench bench-output bench-instructions area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov fuzz check-memory check-scenes
+.PHONY: run test test-debug test-python test-sanitize setup setup-build setup-test bench bench-output bench-instructions area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov fuzz check-memory check-scenes
 
 # what each target needs (scripts/setup.sh installs only what is missing)
 setup:
@@ -73,6 +75,17 @@ run:
 test: setup-test
 	@python3 scripts/doc_check.py
 	$(FPM) test
+
+# the Python package as a user installs it: a fresh virtual environment, `pip install .`
+# (scikit-build-core compiles the library through CMakeLists.txt), then its suite, which compares
+# the package's values with the program of the same build (python/tests)
+VENV = build/venv
+test-python:
+	@bash scripts/setup.sh compiler python-package
+	rm -rf $(VENV)
+	python3 -m venv $(VENV)
+	$(VENV)/bin/python -m pip install --quiet ".[test,plot]"
+	$(VENV)/bin/python -m pytest -q -p no:cacheprovider python/tests
 
 test-debug: setup-build
 	$(FPM) test --profile debug --flag "$(DEBUG_FLAGS)"

@@ -92,6 +92,90 @@ const char *hillstab_version(void);
 /* The same as three numbers. */
 void hillstab_version_numbers(int *major, int *minor, int *patch);
 
+/* ---- Models as values, batches of points, transition curves, scenes ----
+ * A model is an opaque handle made from a name of the model registry
+ * (hillstab_model_registry_name lists them); the batch functions take it, compute every
+ * point inside the call (OpenMP threads: `threads`, 0 for the OpenMP default) and give
+ * each point the values of a chart or points file and a status (0 ok, 1 round-off
+ * limited: the best value double precision allows, 2 failed: the files' placeholders).
+ * The values equal the command line's files to the bit for the same model, method and
+ * tolerance. Bad input fails the whole call before any work (outputs untouched, the
+ * message in hillstab_last_error). A handle may be used by several threads at once;
+ * hillstab_model_set and hillstab_model_free not while another thread uses it. */
+typedef struct hillstab_model hillstab_model;
+
+/* What a batch must compute to the tolerance: the verdicts (a screening pass settles most
+ * points), the growth (lambda_max, mu: exact where |S| < 2), or S at every point. */
+enum { HILLSTAB_NEED_VERDICT = 1, HILLSTAB_NEED_GROWTH = 2, HILLSTAB_NEED_TRACE = 3 };
+
+/* The values of a point, values[j][HILLSTAB_VALUE_*]: S (+-1e300 with overflow = 1 beyond),
+ * ln|S|, log10|S| (at least -300), overflow, stable (1, 0, or 0.5 when marginal),
+ * stable_paper (|S1| <= 2), lambda_max (at most 1e300), ln|lambda| of both multipliers of x
+ * (largest first), mu = ln|lambda_max|/2 per unit tau, the method's error estimate (-1: none).
+ * Below HILLSTAB_NEED_GROWTH a chart leaves the logarithms, lambda_max and mu at 0. */
+enum {
+  HILLSTAB_VALUE_TRACE = 0, HILLSTAB_VALUE_LOG_ABS_TRACE = 1, HILLSTAB_VALUE_LOG10_ABS_TRACE = 2,
+  HILLSTAB_VALUE_OVERFLOW = 3, HILLSTAB_VALUE_STABLE = 4, HILLSTAB_VALUE_STABLE_PAPER = 5,
+  HILLSTAB_VALUE_LAMBDA_MAX = 6, HILLSTAB_VALUE_LOG_MODULUS_MAX = 7, HILLSTAB_VALUE_LOG_MODULUS_MIN = 8,
+  HILLSTAB_VALUE_EXPONENT = 9, HILLSTAB_VALUE_ERROR_ESTIMATE = 10, HILLSTAB_VALUE_COUNT = 11
+};
+
+/* hillstab_run_scene: the file was written, but some of its points failed (status 2 rows). */
+enum { HILLSTAB_ERR_POINTS_FAILED = 8 };
+
+/* The registry: its number of models, and the name of model index (1 ... count, its
+ * HILLSTAB_MODEL_* code). */
+int hillstab_model_count(void);
+int hillstab_model_registry_name(int index, char *buffer, size_t length);
+
+/* A model of the registry by name (any case), its data at their defaults; free it with
+ * hillstab_model_free (NULL is ignored). */
+int hillstab_model_new(const char *name, hillstab_model **model);
+void hillstab_model_free(hillstab_model *model);
+
+/* Set a variable of a model that carries data (the elastic and Mathieu models have none);
+ * hillstab_model_check: whether the model is complete (every computation checks too). */
+int hillstab_model_set(hillstab_model *model, const char *variable, const double *values, size_t count);
+int hillstab_model_check(const hillstab_model *model);
+
+/* The model's name, its coefficient Q as output headers state it, its variables. */
+int hillstab_model_name(const hillstab_model *model, char *buffer, size_t length);
+int hillstab_model_formula(const hillstab_model *model, char *buffer, size_t length);
+int hillstab_model_variable_count(const hillstab_model *model, int *count);
+int hillstab_model_variable_name(const hillstab_model *model, int index, char *buffer, size_t length,
+                                 int *max_count);
+
+/* The n points (alpha[j], beta[j], epsilon[j]) as task points computes them:
+ * values[j][HILLSTAB_VALUE_*], status[j]. paper = 1 settles the paper's verdict too. */
+int hillstab_points(const hillstab_model *model, size_t n, const double *alpha, const double *beta,
+                    const double *epsilon, int method, int n_segments, int sampling, double tolerance,
+                    int need, int paper, int threads, double *values, int *status);
+
+/* The chart of task chart over n_alpha x n_beta grid values (ends included): alpha[i], beta[j],
+ * values[i][j][HILLSTAB_VALUE_*], status[i][j]; HILLSTAB_NEED_VERDICT computes the verdicts only. */
+int hillstab_chart(const hillstab_model *model, double alpha_min, double alpha_max, size_t n_alpha,
+                   double beta_min, double beta_max, size_t n_beta, double epsilon, int method, int n_segments,
+                   int sampling, double tolerance, int need, int paper, int threads, double *alpha,
+                   double *beta, double *values, int *status);
+
+/* alpha (elastic: a pi^2/rho), beta = g pi^2/(rho omega^2) and epsilon = kappa pi/omega of a
+ * pendulum in SI units (r0 m, g m/s^2, omega = sqrt(k/m) rad/s, a m, kappa 1/s). */
+int hillstab_physical(const hillstab_model *model, double r0, double g, double omega, double a, double kappa,
+                      double *alpha, double *beta, double *epsilon);
+
+/* The transition curves |S| = 2 crossing [beta_min, beta_max] at each alpha[i] by Hill's
+ * method: count[i] curves by beta, the first `capacity` in row i of the [n_alpha][capacity]
+ * arrays (beta, order n, parity +1 a_n / -1 b_n, trace_sign +2 / -2, error_bound,
+ * coexistent 1 for a tongue of zero width); status[i] 2 where the method failed. */
+int hillstab_transition_curves(const hillstab_model *model, size_t n_alpha, const double *alpha,
+                               double beta_min, double beta_max, double tolerance, size_t capacity,
+                               int threads, double *beta, int *order, int *parity, int *trace_sign,
+                               double *error_bound, int *coexistent, size_t *count, int *status);
+
+/* Run a namelist scene file as `hillstab SCENE.nml` does (quiet = 1: no progress on stderr);
+ * the output file's path goes to written (on success and with HILLSTAB_ERR_POINTS_FAILED). */
+int hillstab_run_scene(const char *path, int quiet, char *written, size_t length);
+
 #ifdef __cplusplus
 }
 #endif

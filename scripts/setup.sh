@@ -5,6 +5,8 @@
 #   fpm       the Fortran package manager (PyPI package `fpm`)
 #   plot      gnuplot (make run and the benchmarks draw figures)
 #   python    python3 (make test: the documentation check; make fuzz)
+#   python-package  python3 with venv and pip (make test-python: pip install . into a fresh
+#             virtual environment, which compiles the library with CMake from PyPI when missing)
 #   valgrind  valgrind (make check-memory)
 #   install   pkg-config, cmake and readelf (make check-install: both install routes, stack flags)
 #   mpi       cmake and Open MPI with the Fortran mpi_f08 module (make mpi, make test-mpi)
@@ -64,6 +66,10 @@ for need in "${needs[@]}"; do
          bash "$here/fpm.sh" --version >/dev/null 2>&1 || need_fpm=1 ;;
       plot) have gnuplot || add gnuplot-nox gnuplot ;;
       python) have python3 || add python3 python3 ;;
+      python-package)
+         have python3 || add python3 python3
+         # Debian's python3 makes virtual environments with pip only with python3-venv
+         python3 -c 'import venv, ensurepip' >/dev/null 2>&1 || add python3-venv "python3 -m venv (python3-venv)" ;;
       valgrind) have valgrind || add valgrind valgrind ;;
       install)
          have pkg-config || add pkg-config pkg-config

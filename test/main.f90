@@ -10,6 +10,7 @@ program tester
    use test_floquet, only: collect_floquet
    use test_monodromy, only: collect_monodromy
    use test_capi, only: collect_capi
+   use test_capi_batch, only: collect_capi_batch
    use test_gsl, only: collect_gsl
    use test_rk, only: collect_rk
    use test_magnus, only: collect_magnus
@@ -39,7 +40,7 @@ program tester
    implicit none
    ! one by one, not as an array constructor of the collect functions' results: gfortran 12
    ! leaks the allocatable components of such results (LeakSanitizer, make test-sanitize)
-   type(testsuite_t) :: suites(35)
+   type(testsuite_t) :: suites(36)
    integer :: n_failed
    suites(1) = collect_models()
    suites(2) = collect_codes()
@@ -76,6 +77,7 @@ program tester
    suites(33) = collect_model_meissner()
    suites(34) = collect_hill_fourier()
    suites(35) = collect_characteristic()
+   suites(36) = collect_capi_batch()
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

@@ -14,7 +14,12 @@ module test_codes
    use hillstab_integrate_monodromy, only: method_table, method_name, method_from_name
    use hillstab_testing
    use hillstab_hill_models, only: model_count, model_names
-   use hillstab_core_text, only: name_position
+   use hillstab_core_text, only: name_position, integer_text
+   use hillstab_core_error, only: err_points_failed
+   use hillstab_integrate_monodromy, only: need_verdict, need_growth, need_trace
+   use hillstab_interop_capi_batch, only: value_trace, value_log_abs_trace, value_log10_abs_trace, value_overflow, &
+      value_stable, value_stable_paper, value_lambda_max, value_log_modulus_max, value_log_modulus_min, &
+      value_exponent, value_error_estimate, value_count
    implicit none
    private
    public :: collect_codes
@@ -30,7 +35,8 @@ contains
       suite = new_testsuite("codes", [ &
          new_unittest("c_header_enums", c_header_enums), &
          new_unittest("f77_codes", f77_codes), &
-         new_unittest("c_header_version", c_header_version)])
+         new_unittest("c_header_version", c_header_version), &
+         new_unittest("c_header_batch_enums", c_header_batch_enums)])
    end function collect_codes
 
    !> The whole file as one lower-case line (comment markers and line ends as blanks).
@@ -210,4 +216,37 @@ contains
          if (text(i:i) >= "a" .and. text(i:i) <= "z") up(i:i) = achar(iachar(text(i:i)) - 32)
       end do
    end function upper
+   !> The header's HILLSTAB_NEED_*, HILLSTAB_VALUE_* and HILLSTAB_ERR_POINTS_FAILED against the
+   !> constants of the library (hillstab_integrate_monodromy need_*, hillstab_interop_capi_batch
+   !> value_*, hillstab_core_error err_points_failed).
+   subroutine c_header_batch_enums(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: text
+      character(len=24), parameter :: values(value_count + 1) = [character(len=24) :: "TRACE", "LOG_ABS_TRACE", &
+         "LOG10_ABS_TRACE", "OVERFLOW", "STABLE", "STABLE_PAPER", "LAMBDA_MAX", "LOG_MODULUS_MAX", "LOG_MODULUS_MIN", &
+         "EXPONENT", "ERROR_ESTIMATE", "COUNT"]
+      integer, parameter :: codes(value_count + 1) = [value_trace, value_log_abs_trace, value_log10_abs_trace, &
+         value_overflow, value_stable, value_stable_paper, value_lambda_max, value_log_modulus_max, &
+         value_log_modulus_min, value_exponent, value_error_estimate, value_count]
+      integer :: k
+      text = file_text(ctx, header_path)
+      call expect("HILLSTAB_NEED_VERDICT", need_verdict)
+      call expect("HILLSTAB_NEED_GROWTH", need_growth)
+      call expect("HILLSTAB_NEED_TRACE", need_trace)
+      call expect("HILLSTAB_ERR_POINTS_FAILED", err_points_failed)
+      do k = 1, size(values)
+         call expect("HILLSTAB_VALUE_"//trim(values(k)), codes(k))
+      end do
+      ! the values are 0 ... count - 1, each once
+      do k = 0, value_count - 1
+         call check(ctx, count(codes(:value_count) == k) == 1, "one value of index "//integer_text(k))
+      end do
+   contains
+      subroutine expect(name, code)
+         character(len=*), intent(in) :: name
+         integer, intent(in) :: code
+         call check(ctx, index(text, " "//name//" = "//integer_text(code)//",") > 0 .or. &
+            index(text, " "//name//" = "//integer_text(code)//" ") > 0, name//" = "//integer_text(code))
+      end subroutine expect
+   end subroutine c_header_batch_enums
 end module test_codes

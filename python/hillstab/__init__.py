@@ -1,0 +1,34 @@
+"""hillstab: stability of Hill equations x'' + Q(τ) x = 0 by Floquet theory, from Python.
+
+The Fortran library hillstab computes; this package passes numpy arrays through its C
+interface (ctypes; the GIL is released during every computation, which runs on the
+library's OpenMP threads). What it offers:
+
+- models as objects: `Model` (``"elastic"``, ``"mathieu"``: `model_names`);
+- `floquet`, `trace` over arrays of (α, β) and `chart` over a grid, returning numpy arrays
+  (S, verdicts, multipliers, exponents, error estimates) with a per-point ``status``;
+- `transition_curves` (Hill's method) and Mathieu's characteristic values `mathieu_a`,
+  `mathieu_b`;
+- `Spring`: a real spring in SI units (α, β, growth per second, critical amplitudes,
+  the nonlinear motion);
+- `series`: the nonlinear pendulum over time; `run_scene` and `read_output`: namelist
+  scenes and output files of the command line.
+
+Bad input raises ValueError with the library's message; a failed computation raises
+`HillstabError`; per-point failures are status 2 (placeholders, never NaN) with a
+`HillstabWarning`.
+"""
+from ._capi import lib as _lib
+from .errors import HillstabError, HillstabWarning, PointsFailedError
+from .models import Model, model_names
+from .floquet import floquet, trace, chart, Result, ALL_VALUES
+from .curves import transition_curves, mathieu_a, mathieu_b, Curves
+from .spring import Spring
+from .scenes import run_scene, read_output, series, Output, Series
+
+#: the version of the library loaded
+__version__ = _lib.hillstab_version().decode()
+
+__all__ = ["Model", "model_names", "floquet", "trace", "chart", "Result", "ALL_VALUES", "transition_curves",
+           "mathieu_a", "mathieu_b", "Curves", "Spring", "run_scene", "read_output", "series", "Output", "Series",
+           "HillstabError", "HillstabWarning", "PointsFailedError"]

@@ -1,0 +1,157 @@
+"""The C interface of libhillstab through ctypes (internal).
+
+The library is the ``libhillstab.so`` that ``pip install`` compiled into this package
+(``HILLSTAB_LIBRARY`` names another one). Every function returns a status: 0, or an error
+code whose full message the calling thread reads with ``hillstab_last_error``; `check`
+turns it into a Python exception. ctypes releases the GIL during each call, so the
+library's OpenMP threads run while other Python threads go on.
+"""
+import ctypes
+import glob
+import os
+
+import numpy as np
+
+from .errors import HillstabError, PointsFailedError
+
+#: error codes of include/hillstab.h
+ERR_INVALID_PARAMETER = 1
+ERR_OVERFLOW = 2
+ERR_INTEGRATION = 3
+ERR_IO = 4
+ERR_INPUT = 5
+ERR_SINGULAR = 6
+ERR_ACCURACY = 7
+ERR_POINTS_FAILED = 8
+
+#: HILLSTAB_METHOD_*
+METHODS = {"auto": 0, "formula": 1, "segments": 2, "magnus4": 3, "magnus6": 4, "rk": 5, "gsl": 6}
+#: HILLSTAB_SAMPLING_*
+SAMPLINGS = {"endpoint": 1, "midpoint": 2, "average": 3}
+#: HILLSTAB_NEED_*
+NEED_VERDICT, NEED_GROWTH, NEED_TRACE = 1, 2, 3
+#: HILLSTAB_VALUE_*: the values of a point, by their index
+VALUES = ("trace", "log_abs_trace", "log10_abs_trace", "overflow", "stable", "stable_paper", "lambda_max",
+          "log_modulus_max", "log_modulus_min", "exponent", "error_estimate")
+VALUE_COUNT = len(VALUES)
+
+_c_double_p = ctypes.POINTER(ctypes.c_double)
+_c_int_p = ctypes.POINTER(ctypes.c_int)
+_c_size_p = ctypes.POINTER(ctypes.c_size_t)
+_model_p = ctypes.c_void_p
+
+
+def _find_library():
+    path = os.environ.get("HILLSTAB_LIBRARY")
+    if path:
+        return path
+    here = os.path.dirname(os.path.abspath(__file__))
+    found = sorted(glob.glob(os.path.join(here, "libhillstab.so*")))
+    if not found:
+        raise ImportError("hillstab: libhillstab.so is not in " + here + " (install the package with pip, "
+                          "or set HILLSTAB_LIBRARY to the library's path)")
+    return found[0]
+
+
+lib = ctypes.CDLL(_find_library())
+
+
+def _declare(name, restype, *argtypes):
+    function = getattr(lib, name)
+    function.restype = restype
+    function.argtypes = list(argtypes)
+    return function
+
+
+_declare("hillstab_last_error", ctypes.c_int, ctypes.c_char_p, ctypes.c_size_t)
+_declare("hillstab_error_message", None, ctypes.c_int, ctypes.c_char_p, ctypes.c_size_t)
+_declare("hillstab_version", ctypes.c_char_p)
+_declare("hillstab_trace", ctypes.c_int, ctypes.c_int, ctypes.c_double, ctypes.c_double, ctypes.c_double,
+         ctypes.c_int, ctypes.c_int, ctypes.c_int, ctypes.c_double, _c_double_p, _c_double_p, _c_int_p)
+_declare("hillstab_q", ctypes.c_int, ctypes.c_int, ctypes.c_double, ctypes.c_double, ctypes.c_double,
+         ctypes.c_double, _c_double_p)
+_declare("hillstab_model_count", ctypes.c_int)
+_declare("hillstab_model_registry_name", ctypes.c_int, ctypes.c_int, ctypes.c_char_p, ctypes.c_size_t)
+_declare("hillstab_model_new", ctypes.c_int, ctypes.c_char_p, ctypes.POINTER(_model_p))
+_declare("hillstab_model_free", None, _model_p)
+_declare("hillstab_model_set", ctypes.c_int, _model_p, ctypes.c_char_p, _c_double_p, ctypes.c_size_t)
+_declare("hillstab_model_check", ctypes.c_int, _model_p)
+_declare("hillstab_model_name", ctypes.c_int, _model_p, ctypes.c_char_p, ctypes.c_size_t)
+_declare("hillstab_model_formula", ctypes.c_int, _model_p, ctypes.c_char_p, ctypes.c_size_t)
+_declare("hillstab_model_variable_count", ctypes.c_int, _model_p, _c_int_p)
+_declare("hillstab_model_variable_name", ctypes.c_int, _model_p, ctypes.c_int, ctypes.c_char_p, ctypes.c_size_t,
+         _c_int_p)
+_declare("hillstab_points", ctypes.c_int, _model_p, ctypes.c_size_t, _c_double_p, _c_double_p, _c_double_p,
+         ctypes.c_int, ctypes.c_int, ctypes.c_int, ctypes.c_double, ctypes.c_int, ctypes.c_int, ctypes.c_int,
+         _c_double_p, _c_int_p)
+_declare("hillstab_chart", ctypes.c_int, _model_p, ctypes.c_double, ctypes.c_double, ctypes.c_size_t,
+         ctypes.c_double, ctypes.c_double, ctypes.c_size_t, ctypes.c_double, ctypes.c_int, ctypes.c_int,
+         ctypes.c_int, ctypes.c_double, ctypes.c_int, ctypes.c_int, ctypes.c_int, _c_double_p, _c_double_p,
+         _c_double_p, _c_int_p)
+_declare("hillstab_physical", ctypes.c_int, _model_p, ctypes.c_double, ctypes.c_double, ctypes.c_double,
+         ctypes.c_double, ctypes.c_double, _c_double_p, _c_double_p, _c_double_p)
+_declare("hillstab_transition_curves", ctypes.c_int, _model_p, ctypes.c_size_t, _c_double_p, ctypes.c_double,
+         ctypes.c_double, ctypes.c_double, ctypes.c_size_t, ctypes.c_int, _c_double_p, _c_int_p, _c_int_p,
+         _c_int_p, _c_double_p, _c_int_p, _c_size_p, _c_int_p)
+_declare("hillstab_run_scene", ctypes.c_int, ctypes.c_char_p, ctypes.c_int, ctypes.c_char_p, ctypes.c_size_t)
+
+
+def last_error():
+    """The calling thread's most recent status and message of the library."""
+    buffer = ctypes.create_string_buffer(1100)
+    status = lib.hillstab_last_error(buffer, len(buffer))
+    return status, buffer.value.decode("utf-8", "replace")
+
+
+def error_name(status):
+    """The name of an error code ("invalid parameter", ...)."""
+    buffer = ctypes.create_string_buffer(64)
+    lib.hillstab_error_message(status, buffer, len(buffer))
+    return buffer.value.decode()
+
+
+def check(status, path=None):
+    """Raise the library's error of a failed call: ValueError for bad input (invalid
+    parameter, invalid input), PointsFailedError when a scene's file was written with
+    failed points, HillstabError for a computation that failed."""
+    if status == 0:
+        return
+    code, message = last_error()
+    if not message:
+        message = error_name(status)
+    if status in (ERR_INVALID_PARAMETER, ERR_INPUT):
+        raise ValueError(message)
+    if status == ERR_POINTS_FAILED:
+        raise PointsFailedError(message, status, path)
+    raise HillstabError(message, status)
+
+
+def text_out(function, *args, length=4096):
+    """Call a function filling a text buffer (last two arguments: buffer, length)."""
+    buffer = ctypes.create_string_buffer(length)
+    check(function(*args, buffer, length))
+    return buffer.value.decode("utf-8", "replace")
+
+
+def doubles(array):
+    """A C pointer to a contiguous float64 array."""
+    return array.ctypes.data_as(_c_double_p)
+
+
+def ints(array):
+    """A C pointer to a contiguous C int array."""
+    return array.ctypes.data_as(_c_int_p)
+
+
+def sizes(array):
+    """A C pointer to a contiguous size_t array."""
+    return array.ctypes.data_as(_c_size_p)
+
+
+def as_doubles(values):
+    """A contiguous float64 copy-or-view of values."""
+    return np.ascontiguousarray(values, dtype=np.float64)
+
+
+INT = np.dtype(np.intc)
+SIZE = np.dtype(np.uintp)

@@ -1,0 +1,117 @@
+"""Transition curves |S| = 2 by Hill's method, and Mathieu's characteristic values.
+
+`transition_curves` gives, at each α of an array, every curve crossing a β window (the
+boundaries of the stability chart), computed by the library's banded eigenproblems in
+parallel over α. `mathieu_a` and `mathieu_b` are the characteristic values a_m(q), b_m(q)
+of Mathieu's equation y'' + (a − 2q cos 2v) y = 0 in the standard form (the Mathieu
+model's curves: a = 4β/π², q = 2α/π²), each found as the curve of its order and parity,
+so they follow their own branch at any q (no jump between branches at large q).
+"""
+import math
+
+import numpy as np
+
+from . import _capi
+from ._capi import lib, check
+from .floquet import Result
+from .models import as_model
+
+
+class Curves:
+    """The transition curves at each α: flat arrays over every curve found (``alpha``,
+    ``beta``, ``order`` n, ``parity`` +1 for a_n / −1 for b_n, ``trace_sign`` S = ±2 on it,
+    ``error_bound`` of β, ``coexistent`` for a tongue of zero width, ``index`` of its α),
+    ``count`` per α and ``status`` per α (2 where Hill's method failed)."""
+
+    def __init__(self, **arrays):
+        for key, value in arrays.items():
+            setattr(self, key, value)
+
+    def at(self, i):
+        """The curves at the i-th α, as a dict of arrays."""
+        mask = self.index == i
+        return {name: getattr(self, name)[mask] for name in
+                ("beta", "order", "parity", "trace_sign", "error_bound", "coexistent")}
+
+    def __repr__(self):
+        return "<hillstab curves: {} points at {} alpha values>".format(self.beta.size, self.count.size)
+
+
+def transition_curves(alpha, beta_min, beta_max, model="elastic", tolerance=1e-11, threads=0):
+    """The curves |S| = 2 crossing [beta_min, beta_max] at each α (a scalar or an array),
+    by Hill's method (models elastic and mathieu). `tolerance` is the convergence target
+    on β, relative to max(1, |β|). Returns `Curves`; bad input raises ValueError with the
+    library's message.
+
+    >>> c = transition_curves(5.0, -2.0, 40.0)
+    >>> c.beta, c.order, c.parity
+    """
+    model = as_model(model)
+    alphas = _capi.as_doubles(np.atleast_1d(alpha).ravel())
+    n = alphas.size
+    capacity = 32
+    while True:
+        beta = np.zeros((n, capacity))
+        bound = np.zeros((n, capacity))
+        order, parity, sign, coexistent = (np.zeros((n, capacity), dtype=_capi.INT) for _ in range(4))
+        count = np.zeros(n, dtype=_capi.SIZE)
+        status = np.zeros(n, dtype=_capi.INT)
+        check(lib.hillstab_transition_curves(
+            model.handle, n, _capi.doubles(alphas), float(beta_min), float(beta_max), float(tolerance), capacity,
+            int(threads), _capi.doubles(beta), _capi.ints(order), _capi.ints(parity), _capi.ints(sign),
+            _capi.doubles(bound), _capi.ints(coexistent), _capi.sizes(count), _capi.ints(status)))
+        if n == 0 or int(count.max()) <= capacity:
+            break
+        capacity = int(count.max())
+    mask = np.arange(capacity)[None, :] < count.astype(np.int64)[:, None]
+    index = np.broadcast_to(np.arange(n)[:, None], (n, capacity))[mask]
+    return Curves(alpha=alphas[index], beta=beta[mask], order=order[mask].astype(int),
+                  parity=parity[mask].astype(int), trace_sign=sign[mask].astype(int), error_bound=bound[mask],
+                  coexistent=coexistent[mask].astype(bool), index=index, count=count.astype(int),
+                  status=status.astype(np.int8))
+
+
+def _characteristic(m, q, parity, tolerance, threads):
+    m = int(m)
+    if m < 0 or (parity < 0 and m < 1):
+        raise ValueError("order m must be >= {} for {}, got {}".format(0 if parity > 0 else 1,
+                                                                        "a_m" if parity > 0 else "b_m", m))
+    q = np.asarray(q, dtype=np.float64)
+    flat = q.ravel()
+    result = np.full(flat.shape, np.nan)
+    if flat.size == 0:
+        return result.reshape(q.shape)
+    if not np.all(np.isfinite(flat)):
+        raise ValueError("q must be finite")
+    quarter = math.pi ** 2 / 4.0
+    # m^2 - 2|q| <= a_m(q), b_m(q) <= m^2 + 2|q|: the window of the m-th curve
+    spread = 2.0 * float(np.max(np.abs(flat))) + 1.0
+    curves = transition_curves(flat * (2.0 * quarter), quarter * (m * m - spread), quarter * (m * m + spread),
+                               model="mathieu", tolerance=tolerance, threads=threads)
+    hit = (curves.order == m) & (curves.parity == parity)
+    found = np.zeros(flat.shape, dtype=int)
+    np.add.at(found, curves.index[hit], 1)
+    if np.any(curves.status == 2) or np.any(found != 1):
+        bad = int(np.argmax((found != 1) | (curves.status == 2)))
+        raise _capi.HillstabError("{}_{}(q = {!r}) not found by Hill's method".format(
+            "a" if parity > 0 else "b", m, flat[bad]), _capi.ERR_INTEGRATION)
+    result[curves.index[hit]] = curves.beta[hit] / quarter
+    return result.reshape(q.shape)
+
+
+def mathieu_a(m, q, tolerance=1e-13, threads=0):
+    """The characteristic value a_m(q) of the even Mathieu functions ce_m (scipy's
+    ``mathieu_a``), q a scalar or an array.
+
+    >>> mathieu_a(0, 1.0)      # -0.455138604107...
+    """
+    return _characteristic(m, q, 1, tolerance, threads)
+
+
+def mathieu_b(m, q, tolerance=1e-13, threads=0):
+    """The characteristic value b_m(q) of the odd Mathieu functions se_m (m >= 1; scipy's
+    ``mathieu_b``), q a scalar or an array.
+
+    >>> mathieu_b(1, 1.0)      # -0.110248816992...
+    """
+    return _characteristic(m, q, -1, tolerance, threads)

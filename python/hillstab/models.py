@@ -1,0 +1,109 @@
+"""Models of the coefficient Q(τ) of the Hill equation x'' + Q(τ) x = 0 as objects.
+
+Every model of the library's registry is available by name (`model_names`): ``elastic``,
+the elastic pendulum's Q(τ) = (β − α cos πτ)/(1 − (α/π²) cos πτ), and ``mathieu``,
+q(τ) = β − α cos πτ. A model that carries data (a Fourier series of Q) takes it through
+`Model.set`.
+"""
+import ctypes
+
+import numpy as np
+
+from . import _capi
+from ._capi import lib, check
+
+
+def model_names():
+    """The names of the models the library knows, in the order of their codes.
+
+    >>> model_names()
+    ['elastic', 'mathieu']
+    """
+    return [_capi.text_out(lib.hillstab_model_registry_name, k, length=64)
+            for k in range(1, lib.hillstab_model_count() + 1)]
+
+
+class Model:
+    """A model of Q(τ) from the library's registry, by name (any case).
+
+    >>> m = Model("mathieu")
+    >>> m.name, m.formula
+    ('mathieu', ...)
+
+    An unknown name raises ValueError listing the known ones. The model is freed with the
+    object; several threads may compute with it at once.
+    """
+
+    def __init__(self, name="elastic"):
+        handle = _capi._model_p()
+        check(lib.hillstab_model_new(str(name).encode(), ctypes.byref(handle)))
+        self._handle = handle
+
+    def __del__(self):
+        handle = getattr(self, "_handle", None)
+        if handle is not None and handle.value:
+            try:
+                lib.hillstab_model_free(handle)
+            except Exception:  # the interpreter is shutting down
+                pass
+            self._handle = None
+
+    @property
+    def handle(self):
+        """The C handle (``hillstab_model *``)."""
+        return self._handle
+
+    @property
+    def name(self):
+        """The model's name, as a scene's ``&scene model`` gives it."""
+        return _capi.text_out(lib.hillstab_model_name, self._handle, length=256)
+
+    @property
+    def formula(self):
+        """The coefficient Q(τ) as output files' headers state it."""
+        return _capi.text_out(lib.hillstab_model_formula, self._handle)
+
+    @property
+    def variables(self):
+        """The model's variables as {name: most numbers it takes} (empty for elastic and mathieu)."""
+        count = ctypes.c_int(0)
+        check(lib.hillstab_model_variable_count(self._handle, ctypes.byref(count)))
+        result = {}
+        for k in range(1, count.value + 1):
+            buffer = ctypes.create_string_buffer(256)
+            most = ctypes.c_int(0)
+            check(lib.hillstab_model_variable_name(self._handle, k, buffer, len(buffer), ctypes.byref(most)))
+            result[buffer.value.decode()] = most.value
+        return result
+
+    def set(self, variable, values):
+        """Set a variable of the model (e.g. Fourier coefficients) to the given numbers;
+        ValueError with the library's message when the model has no such variable or
+        refuses the numbers. Returns the model."""
+        array = _capi.as_doubles(np.atleast_1d(values))
+        check(lib.hillstab_model_set(self._handle, str(variable).encode(), _capi.doubles(array), array.size))
+        return self
+
+    def check(self):
+        """Raise ValueError naming what is missing when the model is not complete."""
+        check(lib.hillstab_model_check(self._handle))
+
+    def q(self, tau, alpha, beta, epsilon=0.0):
+        """Q(τ) − ε²/4 of the model (the damping shift of eq. (47)) at the point (α, β)
+        (scalars; through ``hillstab_q``, which knows the models without data)."""
+        if self.variables:
+            raise NotImplementedError("q() of a model with data: hillstab_q takes a model code, not a handle")
+        code = model_names().index(self.name) + 1
+        out = ctypes.c_double(0.0)
+        check(lib.hillstab_q(code, float(alpha), float(beta), float(epsilon), float(tau), ctypes.byref(out)))
+        return out.value
+
+    def __repr__(self):
+        return "hillstab.Model({!r})".format(self.name)
+
+
+def as_model(model):
+    """A Model from a Model or a name."""
+    if isinstance(model, Model):
+        return model
+    return Model(model)
