@@ -11,6 +11,8 @@
 #   make check-memory   valgrind memcheck on small scenes of every task
 #   make check-scenes   every scene of data/scenes against the stored checksums of its data lines
 #                       (scripts/check_scenes.sh; --update after a change that means to alter them)
+#   make check-plots    every plots/*.gp run from a temporary directory on the files of other scenes
+#                       (another spring, other ranges): a PNG each and no word from gnuplot (scripts/check_plots.sh)
 #   make bench-output   size and run time of a 1000 x 1000 chart per output layout and columns (out/bench_output.dat)
 #   make bench-instructions  callgrind counts of a 300 x 300 chart, this tree against BENCH_BASE (compute, text)
 #   make bench          charts against the plain C GSL program (bench/chart_gsl.c, scripts/bench_chart.py:
@@ -56,7 +58,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug test-sanitize setup setup-build setup-test bench bench-output bench-instructions area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov fuzz check-memory check-scenes
+.PHONY: run test test-debug test-sanitize setup setup-build setup-test bench bench-output bench-instructions area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov fuzz check-memory check-scenes check-plots
 
 # what each target needs (scripts/setup.sh installs only what is missing)
 setup:
@@ -116,6 +118,9 @@ check-memory:
 
 check-scenes: setup-build
 	bash scripts/check_scenes.sh
+
+check-plots: setup
+	bash scripts/check_plots.sh
 
 bench-output: setup-build
 	bash scripts/bench_output.sh
