@@ -84,7 +84,7 @@ program onset_law
             observed*watch%pendulum%period, observed - predicted, status, linear, observed - linear
          call write_text(file, trim(line), error)
          if (allocated(error)) exit
-         write (*, '(a,a,a,es8.1,a,f9.4,a,f9.4,a)') "(", labels(i), ") phi0 = ", phi0s(j), ": predicted ", &
+         write (*, '(a,a,a,es8.1,a,f9.4,a,f9.4,a,f9.4,a)') "(", labels(i), ") phi0 = ", phi0s(j), ": predicted ", &
             predicted, " periods (law), ", linear, " (linear solution), observed ", observed, " periods"
       end do
       if (allocated(error)) exit
