@@ -26,11 +26,13 @@
 #                       files and the program (the same files as the CMake install)
 #   make doc            the site with FORD into build/doc: guide pages (docs/guide) and API reference
 #                       (installs FORD through pip if missing), every relative link checked
-#   make doc-check      fail on an undocumented public entity or argument, a README over 300 lines,
-#                       a guide page not listed or not current (scripts/doc_check.py)
-#   make check-install  install into temporary prefixes (make and CMake routes) and build and run
-#                       consumers against each: C, Fortran and fixed-form FORTRAN 77 through
-#                       pkg-config, C and Fortran through CMake find_package
+#   make doc-check      fail on an undocumented public entity or argument, a README over 150 lines,
+#                       a guide page not listed or not current, a broken link of the Markdown
+#                       (scripts/doc_check.py)
+#   make check-install  install into private prefixes (make and CMake routes) and build and run
+#                       consumers against each: C, Fortran (also beside its own pi and wp) and
+#                       fixed-form FORTRAN 77 through pkg-config, C and Fortran through CMake
+#                       find_package, and every linking route of docs/guide/library.md as printed
 #   make mpi            build hillstab and hillstab_mpi with CMake (installs Open MPI: scripts/setup_mpi.sh)
 #   make test-mpi       hillstab_mpi against hillstab at np = 1, 2, 3, bad input, failing points
 #   make bench-lyapunov chaos map 40 x 40 x 300 periods: hillstab against a plain C GSL program and
@@ -184,16 +186,22 @@ install: lib
 	sed -e 's|@VERSION@|$(VERSION)|g' config/hillstab-config-version.cmake.in \
 	   > $(DESTDIR)$(PREFIX)/lib/cmake/hillstab/hillstab-config-version.cmake
 
+# each route installs into $HOME/opt/hillstab of a home of its own under build/, the prefix
+# of the library guide, whose linking routes config/export/guide_routes.sh runs as printed
+CHECK_HOME = $(CURDIR)/build/_home
+CHECK_HOME_CMAKE = $(CURDIR)/build/_home_cmake
 check-install:
 	@bash scripts/setup.sh compiler install
-	@rm -rf build/_install build/_install_cmake build/cmake_check
-	$(MAKE) --no-print-directory install PREFIX=$(CURDIR)/build/_install
-	bash config/export/check.sh $(CURDIR)/build/_install make
+	@rm -rf $(CHECK_HOME) $(CHECK_HOME_CMAKE) build/cmake_check
+	$(MAKE) --no-print-directory install PREFIX=$(CHECK_HOME)/opt/hillstab
+	bash config/export/check.sh $(CHECK_HOME)/opt/hillstab make
+	bash config/export/guide_routes.sh $(CHECK_HOME) make
 	@if command -v cmake >/dev/null 2>&1; then \
-	   cmake -S . -B build/cmake_check -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=$(CURDIR)/build/_install_cmake \
+	   cmake -S . -B build/cmake_check -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=$(CHECK_HOME_CMAKE)/opt/hillstab \
 	      >/dev/null && cmake --build build/cmake_check -j 2 >/dev/null && cmake --install build/cmake_check >/dev/null \
-	   && bash config/export/check.sh $(CURDIR)/build/_install_cmake cmake \
-	   && bash config/export/same_files.sh build/_install build/_install_cmake; \
+	   && bash config/export/check.sh $(CHECK_HOME_CMAKE)/opt/hillstab cmake \
+	   && bash config/export/guide_routes.sh $(CHECK_HOME_CMAKE) cmake \
+	   && bash config/export/same_files.sh $(CHECK_HOME)/opt/hillstab $(CHECK_HOME_CMAKE)/opt/hillstab; \
 	else echo "check-install: cmake not found, CMake route not checked"; fi
 
 mpi:
