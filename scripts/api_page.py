@@ -236,7 +236,7 @@ def page_text(groups):
            "(`..._t`) and procedures named for what they compute. Where a name appears as",
            "`hillstab_x` = `x`, its module defines it as `x`, and `use` of that module gives it",
            "under that name. `use hillstab, only: wp => hillstab_wp, ...` takes just what a program",
-           "needs, under names of its choosing ([Using the library](library.html)).",
+           "needs, under names of its choosing ([Using the library](library.md)).",
            ""]
     for module, names in groups:
         with open(module_path(module), encoding="utf-8") as f:
