@@ -11,7 +11,9 @@
 #                      (a gnuplot pipe through sed; blank lines, and so alpha blocks, are kept)
 #   col(f, name)       the number of column `name` in file f (0 when it has none), for
 #                      `plot f index k using (column(col(f, 'r'))):...`, where a header in the
-#                      first block only would not reach the later blocks
+#                      first block only would not reach the later blocks, and for big files:
+#                      `a = col(f, 'alpha'); ...; plot f using a:b:s` reads f directly, without
+#                      named()'s pipe (a 600 x 600 chart in 2.3 s instead of 3.8 s)
 #   scene_value(f, v)  the value of variable v in the effective scene of f's header ("" when
 #                      no group gives it), e.g. scene_value(f, 'epsilon'), scene_value(f, 'r0')
 #   header_line(f, k)  the text of f's header line '# k: ...', e.g. header_line(f, 'model'),

@@ -59,11 +59,12 @@ point_plots = !has_points ? '' : \
 
 set multiplot layout 1,2 title "Stability of a small swing about the vertical bounce (dark = stable); model ".greek(model) font ",13" noenhanced
 set title method_title(file) noenhanced
-plot named(file) using 'alpha':'beta':'stable' with image notitle, \
+# the charts read directly, by column numbers (big files: no pipe)
+plot file using col(file, 'alpha'):col(file, 'beta'):col(file, 'stable') with image notitle, \
      keyentry with boxes fs solid 1.0 border lc "#555555" fc "#23406e" title "stable chart region", \
      keyentry with boxes fs solid 1.0 border lc "#555555" fc "#f3efe6" title "unstable chart region" @point_plots
 set title method_title(paper) noenhanced
-plot named(paper) using 'alpha':'beta':'stable' with image notitle, \
+plot paper using col(paper, 'alpha'):col(paper, 'beta'):col(paper, 'stable') with image notitle, \
      keyentry with boxes fs solid 1.0 border lc "#555555" fc "#23406e" title "stable by this method", \
      keyentry with boxes fs solid 1.0 border lc "#555555" fc "#f3efe6" title "unstable by this method" @point_plots
 unset multiplot

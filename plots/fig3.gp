@@ -25,7 +25,7 @@ set cntrparam levels discrete log10(2.0)
 unset surface
 set view map
 set table $boundary
-splot named(exact) using 'alpha':'beta':'log10_abs_S' with lines notitle
+splot exact using col(exact, 'alpha'):col(exact, 'beta'):col(exact, 'log10_abs_S') with lines notitle
 unset table
 unset contour
 
@@ -49,7 +49,7 @@ if (readable(points)) {
 }
 set title sprintf("The chart of method %s (dark = stable) and the boundary |S| = 2 of method %s", method_name(file), \
    method_name(exact)) noenhanced
-plot named(file) using 'alpha':'beta':'stable' with image notitle, \
+plot file using col(file, 'alpha'):col(file, 'beta'):col(file, 'stable') with image notitle, \
      keyentry with boxes fs solid 1.0 border lc "#555555" fc "#23406e" title "stable", \
      keyentry with boxes fs solid 1.0 border lc "#555555" fc "#f3efe6" title "unstable", \
      $boundary using 1:2 with lines lw 2 lc "#e08000" title "|S| = 2, ".method_title(exact) @points_plot

@@ -36,7 +36,7 @@ if (readable(points)) {
 }
 set title sprintf("The chart of method %s (dark = stable) with the transition curves by %s", method_name(file), \
    method_name(curves)) noenhanced
-plot named(file) using 'alpha':'beta':'stable' with image notitle, \
+plot file using col(file, 'alpha'):col(file, 'beta'):col(file, 'stable') with image notitle, \
      named(curves) using 'alpha':(column('kind') > 0 ? column('beta') : 1/0) with lines lw 2.5 lc "#f2b134" \
         title "S = +2, ".method_name(curves), \
      named(curves) using 'alpha':(column('kind') < 0 ? column('beta') : 1/0) with lines lw 2.5 lc "#e8553e" \
