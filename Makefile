@@ -13,6 +13,8 @@
 #   make check-memory   valgrind memcheck on small scenes of every task
 #   make check-scenes   every scene of data/scenes against the stored checksums of its data lines
 #                       (scripts/check_scenes.sh; --update after a change that means to alter them)
+#   make check-plots    every plots/*.gp run from a temporary directory on the files of other scenes
+#                       (another spring, other ranges): a PNG each and no word from gnuplot (scripts/check_plots.sh)
 #   make bench-output   size and run time of a 1000 x 1000 chart per output layout and columns (out/bench_output.dat)
 #   make bench-instructions  callgrind counts of a 300 x 300 chart, this tree against BENCH_BASE (compute, text)
 #   make bench          charts against the plain C GSL program (bench/chart_gsl.c, scripts/bench_chart.py:
@@ -26,11 +28,13 @@
 #                       files and the program (the same files as the CMake install)
 #   make doc            the site with FORD into build/doc: guide pages (docs/guide) and API reference
 #                       (installs FORD through pip if missing), every relative link checked
-#   make doc-check      fail on an undocumented public entity or argument, a README over 300 lines,
-#                       a guide page not listed or not current (scripts/doc_check.py)
-#   make check-install  install into temporary prefixes (make and CMake routes) and build and run
-#                       consumers against each: C, Fortran and fixed-form FORTRAN 77 through
-#                       pkg-config, C and Fortran through CMake find_package
+#   make doc-check      fail on an undocumented public entity or argument, a README over 150 lines,
+#                       a guide page not listed or not current, a broken link of the Markdown
+#                       (scripts/doc_check.py)
+#   make check-install  install into private prefixes (make and CMake routes) and build and run
+#                       consumers against each: C, Fortran (also beside its own pi and wp) and
+#                       fixed-form FORTRAN 77 through pkg-config, C and Fortran through CMake
+#                       find_package, and every linking route of docs/guide/library.md as printed
 #   make mpi            build hillstab and hillstab_mpi with CMake (installs Open MPI: scripts/setup_mpi.sh)
 #   make test-mpi       hillstab_mpi against hillstab at np = 1, 2, 3, bad input, failing points
 #   make bench-lyapunov chaos map 40 x 40 x 300 periods: hillstab against a plain C GSL program and
@@ -58,7 +62,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug test-python test-sanitize setup setup-build setup-test bench bench-output bench-instructions area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov fuzz check-memory check-scenes
+.PHONY: run test test-debug test-python test-sanitize setup setup-build setup-test bench bench-output bench-instructions area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov fuzz check-memory check-scenes check-plots
 
 # what each target needs (scripts/setup.sh installs only what is missing)
 setup:
@@ -130,6 +134,9 @@ check-memory:
 check-scenes: setup-build
 	bash scripts/check_scenes.sh
 
+check-plots: setup
+	bash scripts/check_plots.sh
+
 bench-output: setup-build
 	bash scripts/bench_output.sh
 
@@ -193,16 +200,22 @@ install: lib
 	sed -e 's|@VERSION@|$(VERSION)|g' config/hillstab-config-version.cmake.in \
 	   > $(DESTDIR)$(PREFIX)/lib/cmake/hillstab/hillstab-config-version.cmake
 
+# each route installs into $HOME/opt/hillstab of a home of its own under build/, the prefix
+# of the library guide, whose linking routes config/export/guide_routes.sh runs as printed
+CHECK_HOME = $(CURDIR)/build/_home
+CHECK_HOME_CMAKE = $(CURDIR)/build/_home_cmake
 check-install:
 	@bash scripts/setup.sh compiler install
-	@rm -rf build/_install build/_install_cmake build/cmake_check
-	$(MAKE) --no-print-directory install PREFIX=$(CURDIR)/build/_install
-	bash config/export/check.sh $(CURDIR)/build/_install make
+	@rm -rf $(CHECK_HOME) $(CHECK_HOME_CMAKE) build/cmake_check
+	$(MAKE) --no-print-directory install PREFIX=$(CHECK_HOME)/opt/hillstab
+	bash config/export/check.sh $(CHECK_HOME)/opt/hillstab make
+	bash config/export/guide_routes.sh $(CHECK_HOME) make
 	@if command -v cmake >/dev/null 2>&1; then \
-	   cmake -S . -B build/cmake_check -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=$(CURDIR)/build/_install_cmake \
+	   cmake -S . -B build/cmake_check -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=$(CHECK_HOME_CMAKE)/opt/hillstab \
 	      >/dev/null && cmake --build build/cmake_check -j 2 >/dev/null && cmake --install build/cmake_check >/dev/null \
-	   && bash config/export/check.sh $(CURDIR)/build/_install_cmake cmake \
-	   && bash config/export/same_files.sh build/_install build/_install_cmake; \
+	   && bash config/export/check.sh $(CHECK_HOME_CMAKE)/opt/hillstab cmake \
+	   && bash config/export/guide_routes.sh $(CHECK_HOME_CMAKE) cmake \
+	   && bash config/export/same_files.sh $(CHECK_HOME)/opt/hillstab $(CHECK_HOME_CMAKE)/opt/hillstab; \
 	else echo "check-install: cmake not found, CMake route not checked"; fi
 
 mpi:

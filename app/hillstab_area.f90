@@ -15,6 +15,8 @@
 !> exact verdicts by method auto (tolerance 1e-8), approximate ones by the method.
 !>
 !> Writes out/area_table.dat, out/area_length.dat, out/area_map.dat, out/area_small_alpha.dat.
+!> Usage: hillstab_area [--quick]; --quick: α in steps of 0.1 and 10 graded points, 40 × 40
+!> pixels, every tenth small α (the same files, coarse: a check of the files and plots/area.gp).
 program hillstab_area
    use hillstab_core_kinds, only: wp, pi2
    use hillstab_core_error, only: error_t
@@ -34,8 +36,10 @@ program hillstab_area
    character(len=24) :: labels(n_methods)
    real(wp), allocatable :: alphas(:), lengths(:, :)
    real(wp) :: area(n_methods), pixel_area(n_methods)
-   integer :: m, i, unit
+   integer :: m, i, unit, n_pixels, n_graded, stride
    integer, parameter :: pieces(4) = [4, 8, 16, 64]
+   character(len=16) :: arg
+   logical :: quick
    real(wp), parameter :: area_tolerance = 1.0e-10_wp
 
    methods(1) = method_t(method_formula, 2, sampling_endpoint, area_tolerance)
@@ -47,7 +51,21 @@ program hillstab_area
       write (labels(5 + m), '(a,i0)') "midpoint N = ", pieces(m)
    end do
 
-   alphas = [(0.01_wp*i, i=0, 980), (pi2 - (pi2 - 9.8_wp)*(1.0e-4_wp*pi2/(pi2 - 9.8_wp))**(i/40.0_wp), i=1, 40)]
+   quick = .false.
+   do i = 1, command_argument_count()
+      call get_command_argument(i, arg)
+      if (arg == "--quick") then
+         quick = .true.
+      else
+         write (*, '(a)') "usage: hillstab_area [--quick]"
+         error stop 2
+      end if
+   end do
+   stride = merge(10, 1, quick)
+   n_graded = merge(10, 40, quick)
+   n_pixels = merge(40, 400, quick)
+   alphas = [(0.01_wp*i, i=0, 980, stride), &
+             (pi2 - (pi2 - 9.8_wp)*(1.0e-4_wp*pi2/(pi2 - 9.8_wp))**(real(i, wp)/n_graded), i=1, n_graded)]
    allocate (lengths(size(alphas), n_methods))
    !$omp parallel do schedule(dynamic) default(shared) private(i)
    do i = 1, size(alphas)
@@ -66,10 +84,10 @@ program hillstab_area
    end do
    close (unit)
 
-   call pixel_count(400, pixel_area)
+   call pixel_count(n_pixels, pixel_area)
 
    print '(a)', "Misclassified fraction of the physical domain 0 <= alpha < pi^2, 0 < beta < pi^2 (area pi^4)"
-   print '(a)', "| chart | from the boundaries | pixel count (400 x 400) |"
+   print '(a,i0,a,i0,a)', "| chart | from the boundaries | pixel count (", n_pixels, " x ", n_pixels, ") |"
    print '(a)', "|---|---|---|"
    open (newunit=unit, file="out/area_table.dat", status="replace", action="write")
    write (unit, '(a)') "# columns: method_index fraction_boundaries fraction_pixels  (1 paper, 2-5 endpoint N = 4 8 16 64, "// &
@@ -151,7 +169,7 @@ contains
       wrong = sum(wrong_rows, dim=2)
       fraction = real(wrong, wp)/real(n, wp)**2
       open (newunit=u, file="out/area_map.dat", status="replace", action="write")
-      write (u, '(a)') "# the paper's eq. (37) chart against the exact one on 400 x 400 cell centres"
+      write (u, '(a,i0,a,i0,a)') "# the paper's eq. (37) chart against the exact one on ", n, " x ", n, " cell centres"
       write (u, '(a)') "# class: 0 both stable, 1 both unstable, 2 exact stable but eq. (37) unstable, "// &
          "3 exact unstable but eq. (37) stable"
       write (u, '(a)') "# columns: alpha beta class"
@@ -182,7 +200,7 @@ contains
          "largest edge difference of eq. (37) from the exact curve"
       print '(a)', "| alpha | exact | Mathieu limit | eq. (37) | eq. (37) - exact | Mathieu limit - exact |"
       print '(a)', "|---|---|---|---|---|---|"
-      do i = 1, 200
+      do i = stride, 200, stride
          alpha = 0.01_wp*i
          call hill_boundaries(elastic_model_t(), alpha, 0.0_wp, pi2, 1.0e-11_wp, curves, error)
          exact = [pi2, 0.0_wp]

@@ -12,11 +12,16 @@
 !> point of both files against a reference chart (GSL at 1e-13).
 program hillstab_bench
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-   use hillstab
+   use hillstab, only: wp => hillstab_wp, int64 => hillstab_int64, version_string => hillstab_version_string, &
+      error_t => hillstab_error_t, work_stats_t, elastic_model_t, hill_point_t, &
+      sampling_midpoint => hillstab_sampling_midpoint, sampling_average => hillstab_sampling_average, &
+      sampling_name => hillstab_sampling_name, trace_t, method_t, method_auto => hillstab_method_auto, &
+      method_formula => hillstab_method_formula, method_segments => hillstab_method_segments, &
+      method_magnus4 => hillstab_method_magnus4, method_magnus6 => hillstab_method_magnus6, &
+      method_rk => hillstab_method_rk, method_gsl => hillstab_method_gsl, method_name => hillstab_method_name, &
+      monodromy_trace, monodromy_trace_batch, trace_segmented
    use hillstab_batch_run_scenes, only: run_scene_file
    !$ use omp_lib, only: omp_get_max_threads, omp_set_num_threads
-   use hillstab_hill_model, only: hill_point_t
-   use hillstab_hill_model_elastic, only: elastic_model_t
    implicit none
 
    type :: sample_t

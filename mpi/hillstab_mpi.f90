@@ -22,7 +22,7 @@ module hillstab_mpi_runner
    use hillstab_core_text, only: integer_text
    use hillstab_batch_scene_types, only: scene_t, output_path
    use hillstab_batch_scene_read, only: read_scene
-   use hillstab_batch_run_scenes, only: run_scene
+   use hillstab_batch_run_scenes, only: run_scene, warn_scene
    use hillstab_batch_run_units, only: batch_t, batch_result_t, batch_distributable, batch_plan, batch_set_unit_size, &
       batch_compute, &
       batch_open, batch_write, batch_commit, batch_discard, scene_fingerprint
@@ -99,6 +99,7 @@ contains
       if (allocated(error)) return
       call same_scene_everywhere(self, scene, error)
       if (allocated(error)) return
+      if (self%rank == manager) call warn_scene(scene, "hillstab_mpi")
       written = output_path(scene)
       if (.not. batch_distributable(scene)) then
          if (self%rank == manager) call run_scene(scene, quiet, error, self%options)

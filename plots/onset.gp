@@ -1,25 +1,37 @@
-# out/onset.png from out/onset_law.dat (fpm run --example onset_law; make run does both):
-# the onset law of the swing. Points: observed radial periods until |phi| first exceeds 0.1;
-# solid lines: the law n* = ln(0.1/phi0)/ln(lambda_max), lambda_max from the core; dashed: the onset
-# of the full linear solution (n_linear).
+# The onset law of the swing, from the library example onset_law (`fpm run --example
+# onset_law` writes out/onset_law.dat where it runs; `make run` draws out/onset.png): per
+# case, points: the observed radial periods until |phi| first exceeds 0.1; solid: the law
+# n* = ln(0.1/phi0)/ln(lambda_max), lambda_max from the core; dashed: the onset of the full
+# linear solution (n_linear).
+# Call from any directory (defaults: the files `make run` writes into out/ here):
+#   gnuplot -e "file='onset_law.dat'; out='x.png'" PATH/plots/onset.gp
+# Parameters: file, out. From the file: its cases (column case, each with its alpha and
+# beta) and the range of phi0; the columns by the names of its '# columns:' line.
+load system("dirname '".ARG0."'")."/columns.gp"
+if (!exists("file")) file = 'out/onset_law.dat'
+if (!exists("out")) out = 'out/onset.png'
 set encoding utf8
 set terminal pngcairo size 900,600 font "Sans,11"
-set output 'out/onset.png'
+set output out
 set logscale x
 set format x "10^{%L}"
-set xrange [1e-21:1e-1]
+set xrange [low(file, 'phi0')/10:high(file, 'phi0')*10]
 set xlabel "φ(0) [rad]"
 set ylabel "radial periods until |φ| > 0.1"
 set grid lc "#dddddd"
 set key top right box opaque
 set title "Onset of the swing: observed (points), ln(0.1/φ0)/ln λ_{max} (solid), the linear solution (dashed)"
-file = 'out/onset_law.dat'
-plot file using ($1 == 2 ? $4 : 1/0):7 with points pt 7 ps 1.3 lc "#23406e" title "(b) α=3.70, β=2.47", \
-     file using ($1 == 2 ? $4 : 1/0):6 with lines lw 1.5 lc "#23406e" notitle, \
-     file using ($1 == 5 ? $4 : 1/0):7 with points pt 5 ps 1.3 lc "#d55e00" title "(e) α=7.88, β=3.95", \
-     file using ($1 == 5 ? $4 : 1/0):6 with lines lw 1.5 lc "#d55e00" notitle, \
-     file using ($1 == 7 ? $4 : 1/0):7 with points pt 9 ps 1.5 lc "#009e73" title "(g) α=7.48, β=2.47", \
-     file using ($1 == 7 ? $4 : 1/0):6 with lines lw 1.5 lc "#009e73" notitle, \
-     file using ($1 == 2 ? $4 : 1/0):12 with lines dt 2 lw 1.5 lc "#23406e" notitle, \
-     file using ($1 == 5 ? $4 : 1/0):12 with lines dt 2 lw 1.5 lc "#d55e00" notitle, \
-     file using ($1 == 7 ? $4 : 1/0):12 with lines dt 2 lw 1.5 lc "#009e73" notitle
+cases = values(file, 'case')
+c_case = col(file, 'case'); c_alpha = col(file, 'alpha'); c_beta = col(file, 'beta')
+where(k) = sprintf("α = %s, β = %s", \
+   system(sprintf("awk '!/^#/ && $%d == %s {print $%d; exit}' '%s'", c_case, word(cases, k), c_alpha, file)), \
+   system(sprintf("awk '!/^#/ && $%d == %s {print $%d; exit}' '%s'", c_case, word(cases, k), c_beta, file)))
+array colours[3] = ["#23406e", "#d55e00", "#009e73"]
+array shapes[3] = [7, 5, 9]
+is(k) = column(c_case) == real(word(cases, k))
+plot for [k = 1:words(cases)] named(file) using (is(k) ? column('phi0') : 1/0):'n_observed' with points \
+        pt shapes[(k - 1)%3 + 1] ps 1.3 lc rgb colours[(k - 1)%3 + 1] title sprintf("case %s: %s", word(cases, k), where(k)), \
+     for [k = 1:words(cases)] named(file) using (is(k) ? column('phi0') : 1/0):'n_predicted' with lines lw 1.5 \
+        lc rgb colours[(k - 1)%3 + 1] notitle, \
+     for [k = 1:words(cases)] named(file) using (is(k) ? column('phi0') : 1/0):'n_linear' with lines dt 2 lw 1.5 \
+        lc rgb colours[(k - 1)%3 + 1] notitle

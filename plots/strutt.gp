@@ -1,15 +1,19 @@
-# out/strutt.png: the Strutt diagram (Mathieu model q = beta - nu cos(pi tau)): transition
-# curves by Hill's method as lines, GSL's (pi^2/4) a_n, b_n(2 nu/pi^2) as points over them.
-# Needs out/boundaries_mathieu_boundaries.dat (scene boundaries_mathieu.nml).
-# Parameters: file (the boundaries file of the Mathieu model), out.
-load 'plots/columns.gp'
+# The Strutt diagram (Mathieu model q = beta - nu cos(pi tau)): transition curves by Hill's
+# method as lines, GSL's (pi^2/4) a_n, b_n(2 nu/pi^2) as points over them (out/strutt.png of
+# `make run`).
+# Call from any directory (default: the file `make run` writes into out/ here):
+#   gnuplot -e "file='my_boundaries.dat'; out='x.png'" PATH/plots/strutt.gp
+# Parameters: file (a boundaries file of the Mathieu model by an exact method: columns
+# branch, gsl_ok, beta_gsl), out (the image). From the header: the ranges (&chart alpha_min
+# ... beta_max of the run).
+load system("dirname '".ARG0."'")."/columns.gp"
 if (!exists("file")) file = 'out/boundaries_mathieu_boundaries.dat'
 if (!exists("out")) out = 'out/strutt.png'
 set encoding utf8
 set terminal pngcairo size 1000,780 font "Sans,11"
 set output out
-set xrange [0:40]
-set yrange [-20:60]
+set xrange [low(file, 'alpha'):high(file, 'alpha')]
+set yrange [low(file, 'beta'):high(file, 'beta')]
 set xlabel "ν  (q = β − ν cos πτ;  Mathieu q = 2ν/π²)"
 set ylabel "β  (Mathieu a = 4β/π²)"
 set key at graph 0.02, graph 0.98 left top Left reverse box opaque samplen 3 font ",10"

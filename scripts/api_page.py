@@ -142,12 +142,27 @@ BEGIN = "!> **What it exports.**"
 END = "!> (end of the exports)"
 
 
+def split_name(item):
+    """(the name `use hillstab` gives, the name in its module) of an `only:` item `local => name`."""
+    local, _, name = item.partition("=>")
+    return (local.strip(), name.strip()) if name else (local.strip(), local.strip())
+
+
+def linked(module, item):
+    """An exported name linked to its entry: `[[module:name]]`, or `hillstab_x` = [[module:x]]."""
+    local, name = split_name(item)
+    if name in INTRINSIC:
+        return f"`{local}`"
+    link = f"[[{defined_in(module, name)[0]}:{name}]]"
+    return link if local == name else f"`{local}` = {link}"
+
+
 def umbrella_block(groups):
     """The umbrella's doc lines listing its exports, each linked, by defining module."""
     out = [BEGIN, "!>", "!> Each name links to its entry; the guide page [The public API](../page/api.html)",
            "!> gives the first doc line of each. Written by `scripts/api_page.py`.", "!>"]
     for module, names in groups:
-        links = [f"`{n}`" if n in INTRINSIC else f"[[{defined_in(module, n)[0]}:{n}]]" for n in names]
+        links = [linked(module, n) for n in names]
         line = f"!> - [[{module}]]:"
         for link in links:
             piece = " " + link + ("," if link is not links[-1] else "")
@@ -183,6 +198,28 @@ def exports():
     return umbrella, groups
 
 
+def is_constant(lines, name):
+    """Whether `name` is declared as a named constant (`parameter`) in these lines."""
+    for statement in joined(lines):
+        if re.search(r"\bparameter\b", statement.split("::", 1)[0], re.I) and name.lower() in declared(statement):
+            return True
+    return False
+
+
+def unprefixed_constants(groups):
+    """Exported kinds and named constants without the prefix `hillstab_`: the names a
+    program's own `pi` or `wp` would clash with."""
+    bad = []
+    for module, names in groups:
+        for item in names:
+            local, name = split_name(item)
+            if local.lower().startswith("hillstab_"):
+                continue
+            if name in INTRINSIC or is_constant(defined_in(module, name)[1], name):
+                bad.append(f"{local} (from {module})")
+    return bad
+
+
 def page_text(groups):
     out = ["---", "title: The public API (use hillstab)", "---", "",
            "`use hillstab` gives the library's numerical API: the names below, re-exported by the",
@@ -191,6 +228,15 @@ def page_text(groups):
            "program's modules (`src/hillstab/batch/`: scenes, tasks, output files) are internal",
            "and not part of it. This page is written by `scripts/api_page.py` from",
            "`src/hillstab.f90` and the doc comments; `make doc-check` fails when it is not current.",
+           "",
+           "Every constant it gives (the kinds, π, the codes of methods, models, statuses and errors)",
+           "and the few procedures and types with everyday names (`hillstab_error_t`,",
+           "`hillstab_determinant`, `hillstab_model_name`, ...) carry the prefix `hillstab_`, so they",
+           "cannot clash with a program's own `pi`, `wp` or `determinant`; the other names are types",
+           "(`..._t`) and procedures named for what they compute. Where a name appears as",
+           "`hillstab_x` = `x`, its module defines it as `x`, and `use` of that module gives it",
+           "under that name. `use hillstab, only: wp => hillstab_wp, ...` takes just what a program",
+           "needs, under names of its choosing ([Using the library](library.md)).",
            ""]
     for module, names in groups:
         with open(module_path(module), encoding="utf-8") as f:
@@ -202,19 +248,25 @@ def page_text(groups):
                 break
         out += [f"## {module}", "", f"[[{module}]]: {header}" if header else f"[[{module}]]", "",
                 "| name | what it is |", "|---|---|"]
-        for name in names:
+        for item in names:
+            local, name = split_name(item)
             if name in INTRINSIC:
-                out.append(f"| `{name}` | {INTRINSIC[name]} |")
+                out.append(f"| `{local}` | {INTRINSIC[name]} |")
                 continue
             home, home_lines = defined_in(module, name)
             doc = entity_doc(home_lines, name).replace("|", "\\|")
-            out.append(f"| [[{home}:{name}]] | {doc} |")
+            out.append(f"| {linked(module, item)} | {doc} |")
         out.append("")
     return "\n".join(out)
 
 
 def main():
     umbrella, groups = exports()
+    bad = unprefixed_constants(groups)
+    if bad:
+        print("api_page: src/hillstab.f90 exports constants without the prefix hillstab_ (rename them "
+              "there, `hillstab_x => x`): " + ", ".join(bad), file=sys.stderr)
+        return 1
     outputs = {PAGE: page_text(groups), UMBRELLA: umbrella_text(umbrella, groups)}
     stale = []
     for path, text in outputs.items():

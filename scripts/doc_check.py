@@ -12,8 +12,8 @@ sources under src/ and reports, with file and line:
   - a component or type-bound procedure of a public derived type without one.
 A public generic interface makes its specific procedures public. Without file arguments
 it also checks the documentation around the code:
-  - README.md has at most 300 lines and its Quick start the commands `make run` and
-    `make test`;
+  - README.md has at most 150 lines and its Quick start exactly the two commands
+    `make run` and `make test`;
   - every page of docs/guide/ is listed in the `ordered_subpage` lines of its index.md,
     and every listed page exists;
   - no page of docs/guide/ and not the README refers to a file outside the repository
@@ -21,7 +21,9 @@ it also checks the documentation around the code:
   - every declaration of include/hillstab.h (macros, enums, prototypes) appears on the
     guide page library.md;
   - docs/guide/api.md and the export list of src/hillstab.f90 are what scripts/api_page.py
-    writes.
+    writes;
+  - every relative link of the Markdown (README.md, CHANGELOG.md, docs/guide) resolves in
+    the repository, as the pages are read there (scripts/doc_links.py --markdown).
 Exit status 1 when anything is missing. Usage: scripts/doc_check.py [FILE.f90...]
 (default: every .f90 file under src/, and the checks above).
 """
@@ -282,7 +284,7 @@ class Checker:
             self.report(path, st.line, f"argument {n} of public {kind} {name}: declaration not found")
 
 
-README_LIMIT = 300
+README_LIMIT = 150
 OUTSIDE = re.compile(r"(?<![\w.])(/work/|/home/|/tmp/[\w.-]+\.md|BRIEF|elastic-pendulum-stability-paper)")
 
 
@@ -307,8 +309,8 @@ def check_guide(root):
         problems.append(f"README.md: {len(lines)} lines, more than {README_LIMIT} (move the detail to docs/guide/)")
     text = "\n".join(lines)
     quick = re.search(r"^## Quick start\s*\n+```sh\n(.*?)```", text, re.M | re.S)
-    if not quick or quick.group(1).split("\n")[:2] != ["make run", "make test"]:
-        problems.append("README.md: the Quick start must begin with the commands `make run` and `make test`")
+    if not quick or quick.group(1).strip().split("\n") != ["make run", "make test"]:
+        problems.append("README.md: the Quick start must be exactly the two commands `make run` and `make test`")
     guide = os.path.join(root, "docs", "guide")
     pages = sorted(n for n in os.listdir(guide) if n.endswith(".md"))
     index = open(os.path.join(guide, "index.md"), encoding="utf-8").read()
@@ -331,6 +333,10 @@ def check_guide(root):
                          capture_output=True, text=True)
     if api.returncode != 0:
         problems.append(api.stderr.strip())
+    links = subprocess.run([sys.executable, os.path.join(root, "scripts", "doc_links.py"), "--markdown"],
+                           capture_output=True, text=True)
+    if links.returncode != 0:
+        problems.append(links.stderr.strip())
     return problems
 
 

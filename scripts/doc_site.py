@@ -12,7 +12,12 @@
 - keeps images within the text column (the figures are wider than it);
 - fills the "Contents" column of the umbrella module's page, which FORD leaves at "None"
   (the umbrella defines nothing, it re-exports): the modules its names come from, each
-  linked, and the guide page that lists every name.
+  linked, and the guide page that lists every name;
+- turns the guide's links, written for the Markdown as it is read in the repository, into
+  the site's: `other-page.md#x` into `other-page.html#x`, a link to a source file
+  `../../src/hillstab/<folder>/<name>.f90` (or `../../src/hillstab.f90`) into the page of
+  its module, `../module/hillstab_<folder>_<name>.html` (scripts/doc_links.py then checks
+  every link of the site, and `--markdown` the sources).
 Usage: scripts/doc_site.py [DIR]
 """
 import os
@@ -26,6 +31,15 @@ JS_CDN = re.compile(r'<script src="https://cdn\.jsdelivr\.net/npm/bootstrap@[^"]
 MATHJAX = re.compile(r'<!-- MathJax -->.*?<script src="https://cdn\.jsdelivr\.net/npm/mathjax@[^"]*"[^>]*>\s*</script>', re.S)
 LOCAL_CSS = re.compile(r'<link href="([^"]*)css/local\.css"')
 NO_CONTENTS = re.compile(r'(<h3>Contents</h3>\s*)<em>None</em>')
+GUIDE_LINK = re.compile(r'(\b(?:href|src)=")([^"#:]+)\.md((?:#[^"]*)?")')
+SOURCE_LINK = re.compile(r'(\bhref=")\.\./\.\./src/([^"#:]+)\.f90((?:#[^"]*)?")')
+
+
+def site_links(text):
+    """A guide page's links to other pages (.md) and to sources (../../src/...f90) as the site's."""
+    text = GUIDE_LINK.sub(lambda m: m.group(1) + m.group(2) + ".html" + m.group(3), text)
+    return SOURCE_LINK.sub(lambda m: m.group(1) + "../module/" + m.group(2).replace("/", "_") + ".html" + m.group(3),
+                           text)
 
 
 def umbrella_contents():
@@ -61,6 +75,8 @@ def main():
             with open(path, encoding="utf-8") as f:
                 text = f.read()
             new = MATHJAX.sub("", text)
+            if os.path.relpath(path, site).startswith("page" + os.sep):
+                new = site_links(new)
             if os.path.relpath(path, site) == os.path.join("module", "hillstab.html"):
                 new = NO_CONTENTS.sub(lambda m: m.group(1) + umbrella_contents(), new)
             found = LOCAL_CSS.search(new)

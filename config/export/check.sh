@@ -2,7 +2,8 @@
 # Consumers of an installed hillstab (argument 1: the install prefix; 2: the route that
 # installed it, for messages). Checks that the prefix holds every installed file, then
 # builds and runs the examples of example/ against it:
-#   pkg-config: C (shared library, `--libs` without --static, and static), modern Fortran,
+#   pkg-config: C (shared library, `--libs` without --static, and static), modern Fortran
+#               (also config/export/own_names.f90: its own pi and wp beside `use hillstab`),
 #               fixed-form FORTRAN 77 compiled with -std=legacy and no USE (implicit interfaces);
 #   CMake find_package(hillstab): C, Fortran and FORTRAN 77, shared and static targets;
 #   the installed program: --version and --help.
@@ -56,9 +57,11 @@ build() {
 build cc "$examples/c/trace.c" trace_c $libs
 build cc "$examples/c/trace.c" trace_c_static $static_libs
 build gfortran "$examples/fortran/trace.f90" trace_f $libs
+# a program with its own pi, wp, error_t and determinant beside `use hillstab`
+build gfortran "$here/own_names.f90" own_names $libs
 build gfortran "$examples/f77/trace.f" trace_f77 -std=legacy $libs
 build gfortran "$examples/f77/trace.f" trace_f77_static -std=legacy $static_libs
-for p in trace_c trace_c_static trace_f trace_f77 trace_f77_static; do
+for p in trace_c trace_c_static trace_f own_names trace_f77 trace_f77_static; do
    "$work/$p" > "$work/$p.out" || { cat "$work/$p.out"; die "$p failed"; }
 done
 for p in trace_c trace_f trace_f77; do
@@ -67,13 +70,13 @@ done
 for p in trace_c_static trace_f77_static; do
    readelf -dW "$work/$p" | grep -q 'NEEDED.*libhillstab' && die "$p depends on the shared library"
 done
-cat "$work/trace_c.out" "$work/trace_f.out" "$work/trace_f77.out"
-say "pkg-config: C, Fortran and fixed-form FORTRAN 77 link (shared: '$libs'; static too) and run"
+cat "$work/trace_c.out" "$work/trace_f.out" "$work/own_names.out" "$work/trace_f77.out"
+say "pkg-config: C, Fortran (also with its own pi and wp beside use hillstab) and fixed-form FORTRAN 77 link (shared: '$libs'; static too) and run"
 
 if command -v cmake >/dev/null 2>&1; then
    cmake -S "$here" -B "$work/cmake" -DCMAKE_PREFIX_PATH="$prefix" >"$work/cmake.log" 2>&1 \
       && cmake --build "$work/cmake" >>"$work/cmake.log" 2>&1 || { cat "$work/cmake.log" >&2; die "CMake consumer"; }
-   for p in trace_c trace_c_static trace_f trace_f77; do
+   for p in trace_c trace_c_static trace_f own_names trace_f77; do
       "$work/cmake/$p" >/dev/null || die "CMake-built $p failed"
    done
    say "CMake find_package(hillstab): C, Fortran, FORTRAN 77 (shared and static targets) link and run"

@@ -1,14 +1,14 @@
 /* Links against an installed hillstab through its C header: the version, eq. (37) and a
- * segmented trace at the paper's case (b), an error status (the outputs untouched) and an
- * overflow. */
+ * segmented trace at the paper's case (b), the growth rate of the swing at cases (b) and
+ * (c), an error status (the outputs untouched) and an overflow. */
 #include <stdio.h>
 #include <string.h>
 #include <math.h>
 #include "hillstab.h"
 
 int main(void) {
-  double s, log_abs, paper;
-  int overflow, status, major, minor, patch;
+  double s, log_abs, paper, log_modulus[2], mu;
+  int overflow, status, major, minor, patch, stable, stable_paper;
   char message[64];
   /* the library linked at run time is the one the header belongs to */
   hillstab_version_numbers(&major, &minor, &patch);
@@ -21,6 +21,16 @@ int main(void) {
   printf("C: S(eq. 37) = %.6f, S(4096 pieces) = %.6f, status %d\n", paper, s, status);
   if (status != 0 || fabs(s + 2.9343) > 1e-3 || fabs(paper + 3.6282) > 1e-3) return 1;
   if (hillstab_trace_paper(3.70, 2.47, 0.0) != paper) return 1;
+  /* the growth rate of the swing, the Floquet exponent mu per unit tau: (b) grows, mu =
+   * acosh(|S|/2)/2 = 0.46621 with the S above; (c) is stable, mu = 0 (printed as 0, never -0) */
+  status = hillstab_floquet_data(HILLSTAB_MODEL_ELASTIC, 3.70, 2.47, 0.0, HILLSTAB_METHOD_AUTO, 0, 0, 1e-10,
+                                 &s, log_modulus, &mu, &stable, &stable_paper);
+  printf("C: case (b): stable %d, growth rate mu = %.6f per unit tau\n", stable, mu);
+  if (status != 0 || stable != 0 || fabs(mu - 0.46621) > 1e-5) return 1;
+  status = hillstab_floquet_data(HILLSTAB_MODEL_ELASTIC, 2.57, 1.29, 0.0, HILLSTAB_METHOD_AUTO, 0, 0, 1e-10,
+                                 &s, log_modulus, &mu, &stable, &stable_paper);
+  printf("C: case (c): stable %d, growth rate mu = %g per unit tau\n", stable, mu);
+  if (status != 0 || stable != 1 || mu != 0.0 || signbit(mu)) return 1;
   /* an error leaves the outputs as they were */
   s = -7.0; log_abs = -8.0; overflow = -9;
   status = hillstab_trace(HILLSTAB_MODEL_ELASTIC, 10.0, 2.47, 0.0, HILLSTAB_METHOD_FORMULA, 2, 1, 1e-10,

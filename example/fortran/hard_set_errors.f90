@@ -10,7 +10,12 @@
 !> `all` (list every point with its error, estimate and status); any other argument lists
 !> every point with status ok whose error exceeds the tolerance.
 program hard_set_errors
-   use hillstab
+   use hillstab, only: wp => hillstab_wp, int64 => hillstab_int64, error_t => hillstab_error_t, &
+      err_accuracy => hillstab_err_accuracy, elastic_model_t, mathieu_model_t, hill_point_t, &
+      trace_t, method_t, method_auto => hillstab_method_auto, &
+      method_magnus4 => hillstab_method_magnus4, method_magnus6 => hillstab_method_magnus6, &
+      method_rk => hillstab_method_rk, method_gsl => hillstab_method_gsl, method_name => hillstab_method_name, &
+      monodromy_trace
    implicit none
    integer, parameter :: n_max = 200
    real(wp) :: tolerances(3) = [1.0e-8_wp, 1.0e-10_wp, 1.0e-12_wp]

@@ -3,7 +3,10 @@
 !> and the exact trace (method auto at tolerance 1e-12), the difference between
 !> eq. (37) and the converged trace, and the stability verdicts. Prints a Markdown table.
 program paper_fig4
-   use hillstab
+   use hillstab, only: wp => hillstab_wp, error_t => hillstab_error_t, elastic_model_t, &
+      hill_point_t, sampling_average => hillstab_sampling_average, trace_t, &
+      trace_two_segment_paper, floquet_t, floquet_from_trace, largest_multiplier_modulus, method_t, &
+      method_auto => hillstab_method_auto, monodromy_trace, trace_segmented
    implicit none
    real(wp), parameter :: points(2, 6) = reshape([1.48_wp, 2.47_wp, 3.70_wp, 2.47_wp, 2.57_wp, 1.29_wp, &
                                                   5.0_wp, 0.76_wp, 7.88_wp, 3.95_wp, 7.48_wp, 2.47_wp], [2, 6])

@@ -9,7 +9,8 @@
 !> α and tolerance, the achieved error |S − 2|/2, the Magnus steps taken and
 !> whether auto reported the floor. Run: `fpm run --example roundoff_floor`.
 program roundoff_floor
-   use hillstab
+   use hillstab, only: wp => hillstab_wp, error_t => hillstab_error_t, err_accuracy => hillstab_err_accuracy, &
+      work_stats_t, elastic_model_t, hill_point_t, trace_t, trace_auto
    implicit none
    real(wp), parameter :: alphas(3) = [9.8_wp, 9.85_wp, 9.86_wp]
    real(wp), parameter :: tolerances(2) = [1.0e-12_wp, 1.0e-10_wp]

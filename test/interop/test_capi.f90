@@ -10,7 +10,7 @@ module test_capi
    use hillstab_core_error, only: error_t, err_invalid_parameter, err_accuracy
    use hillstab_integrate_monodromy, only: method_auto
    use hillstab_interop_legacy, only: hstrace, hsfloq, hserrm
-   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite, ieee_copy_sign
    !$ use omp_lib, only: omp_get_thread_num, omp_get_num_threads
    use hillstab_testing
    use hillstab_hill_model, only: hill_point_t, check_point
@@ -64,6 +64,8 @@ contains
       real(c_double) :: s, log_abs, log_modulus(2), mu, q
       integer(c_int) :: overflow, stable, stable_paper, status
       type(trace_t) :: tr
+      real(wp) :: legacy_s, legacy_mu
+      integer :: legacy_stable, legacy_info
       tr = trace_segmented(elastic_model_t(), hill_point_t(3.7_wp, 2.47_wp, 0.0_wp), 64, sampling_average)
       status = hillstab_c_trace(1_c_int, 3.7_c_double, 2.47_c_double, 0.0_c_double, int(method_segments, c_int), &
          64_c_int, int(sampling_average, c_int), 1.0e-10_c_double, s, log_abs, overflow)
@@ -75,6 +77,19 @@ contains
          64_c_int, int(sampling_average, c_int), 1.0e-10_c_double, s, log_modulus, mu, stable, stable_paper)
       call check(ctx, status == 0 .and. stable == 0 .and. stable_paper == 0, "unstable point")
       call check(ctx, real(mu, wp), 0.5_wp*acosh(0.5_wp*abs(tr%value)), rel=1.0e-13_wp)
+      ! a stable undamped point (the paper's case (c)): exponent and ln|lambda| are +0, not
+      ! -0 (printf would write "-0"), from C and from HSFLOQ
+      status = hillstab_c_floquet(1_c_int, 2.57_c_double, 1.29_c_double, 0.0_c_double, int(method_segments, c_int), &
+         64_c_int, int(sampling_average, c_int), 1.0e-10_c_double, s, log_modulus, mu, stable, stable_paper)
+      call check(ctx, status == 0 .and. stable == 1, "case (c) stable")
+      call check(ctx, mu == 0.0_c_double .and. ieee_copy_sign(1.0_c_double, mu) > 0.0_c_double, &
+         "exponent +0 at a stable point")
+      call check(ctx, all(log_modulus == 0.0_c_double) .and. all(ieee_copy_sign(1.0_c_double, log_modulus) > 0.0_c_double), &
+         "ln|lambda| +0")
+      call hsfloq(1, 2.57_wp, 1.29_wp, 0.0_wp, int(method_segments), 64, int(sampling_average), 1.0e-10_wp, &
+         legacy_s, legacy_mu, legacy_stable, legacy_info)
+      call check(ctx, legacy_info == 0 .and. legacy_stable == 1 .and. legacy_mu == 0.0_wp .and. &
+         ieee_copy_sign(1.0_wp, legacy_mu) > 0.0_wp, "HSFLOQ: MU +0 at a stable point")
       tr = trace_two_segment_paper(1.48_wp, 2.47_wp)
       call check(ctx, real(hillstab_c_trace_paper(1.48_c_double, 2.47_c_double, 0.0_c_double), wp), tr%value, &
          rel=1.0e-15_wp)

@@ -36,7 +36,8 @@ contains
          new_unittest("c_header_enums", c_header_enums), &
          new_unittest("f77_codes", f77_codes), &
          new_unittest("c_header_version", c_header_version), &
-         new_unittest("c_header_batch_enums", c_header_batch_enums)])
+         new_unittest("c_header_batch_enums", c_header_batch_enums), &
+         new_unittest("citation_in_step", citation_in_step)])
    end function collect_codes
 
    !> The whole file as one lower-case line (comment markers and line ends as blanks).
@@ -206,6 +207,37 @@ contains
       call check(ctx, index(manifest, ' version = "'//version_string//'"') > 0, &
          "fpm.toml's version is version_string "//version_string)
    end subroutine c_header_version
+
+   !> CITATION.cff gives the version of fpm.toml (`version_string`) and a `date-released`
+   !> (YYYY-MM-DD); the newest entry of CHANGELOG.md (its first `## ` heading) is that version
+   !> on that date.
+   subroutine citation_in_step(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: citation, changelog, heading, date
+      integer :: at, next
+      citation = file_text(ctx, "CITATION.cff")
+      call check(ctx, index(citation, ' version: "'//version_string//'"') > 0, &
+         "CITATION.cff's version is fpm.toml's "//version_string)
+      at = index(citation, " date-released: ")
+      call check(ctx, at > 0, "CITATION.cff has a date-released")
+      if (at == 0) return
+      date = adjustl(citation(at + len(" date-released: "):))
+      if (date(1:1) == '"' .or. date(1:1) == "'") date = date(2:)
+      date = date(:min(10, len(date)))
+      call check(ctx, verify(date, "0123456789-") == 0 .and. len(date) == 10 .and. date(5:5) == "-" .and. &
+         date(8:8) == "-", "date-released is YYYY-MM-DD: "//date)
+      changelog = file_text(ctx, "CHANGELOG.md")
+      at = index(changelog, " ## ")
+      call check(ctx, at > 0, "CHANGELOG.md has a version heading (## )")
+      if (at == 0) return
+      next = index(changelog(at + 4:), " ## ")
+      if (next == 0) next = len(changelog) - at - 3
+      heading = changelog(at + 4:at + 3 + min(next - 1, 80))
+      call check(ctx, index(heading, version_string//" ") == 1, "CHANGELOG.md's newest entry is version "// &
+         version_string//": "//heading)
+      call check(ctx, index(heading, date) > 0, "CHANGELOG.md's newest entry carries CITATION.cff's date-released "// &
+         date//": "//heading)
+   end subroutine citation_in_step
 
    pure function upper(text) result(up)
       character(len=*), intent(in) :: text

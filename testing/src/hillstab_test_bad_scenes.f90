@@ -129,6 +129,10 @@ contains
          bad_case_t(s//"task='series', names_line=.true. / &series /", "scene", "names_line: columns, format"), &
          bad_case_t(s//"task='series', columns='t' / &series /", "scene", "columns: columns, format"), &
          bad_case_t(s//"task='poincare', format='binary' / &series /", "scene", "format: columns, format"), &
+         bad_case_t(s//"task='series' / &series phi0=0.1, phi0_degrees=1 /", "series", "phi0_degrees: give the "// &
+            "initial angle either as phi0 (radians) or as phi0_degrees"), &
+         bad_case_t(s//"task='lyapunov' / &series phi0_degrees=nan, periods=2 / &chart /", "series", "phi0_degrees"), &
+         bad_case_t(s//"task='series' / &series phi0_degrees=1e9 /", "series", "phi0_degrees: must be 0 or lie"), &
          bad_case_t(s//"task='coefficient', format='binary' / &coefficient /", "scene", "format"), &
          bad_case_t(s//"task='coefficient', columns='tau' / &coefficient /", "scene", "columns"), &
          bad_case_t(s//"/ &chart beta_max = -, /", "chart", "beta_max: no value"), &

@@ -142,8 +142,10 @@ contains
       logs = tr%log_abs
       iovf = 0
       if (tr%overflow) iovf = 1
-      rlogm = f%log_modulus
-      mu = f%exponent
+      ! a stable undamped swing has ln|lambda| = -epsilon = -0.0: given to C as +0.0, so that
+      ! printf does not write its growth rate as "-0"
+      rlogm = f%log_modulus + 0.0_wp
+      mu = f%exponent + 0.0_wp
       istab = 0
       if (f%stable) istab = 1
       ipaper = 0

@@ -73,7 +73,7 @@ subroutine hsfloq(model, alpha, beta, eps, method, nseg, isamp, tol, s, mu, ista
    end if
    f = floquet_from_trace(tr, eps)
    s = f%trace%value
-   mu = f%exponent
+   mu = f%exponent + 0.0_wp   ! -epsilon/2 of a stable undamped swing is -0.0: written as +0.0
    if (f%stable) istab = 1
    if (info == 0 .and. tr%overflow) info = 2  ! S is +-HUGE
 end subroutine hsfloq

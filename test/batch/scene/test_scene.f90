@@ -15,6 +15,8 @@ module test_scene
    use hillstab_batch_tasks_chart, only: chart_task_t
    use hillstab_batch_tasks_points, only: points_task_t
    use hillstab_batch_tasks_coefficient, only: coefficient_task_t
+   use hillstab_batch_tasks_series, only: series_task_t
+   use hillstab_batch_tasks_lyapunov, only: lyapunov_task_t
    use hillstab_batch_tasks_registry, only: task_names, new_task
    use hillstab_batch_scene_types, only: task_t
    use hillstab_batch_scene_templates, only: scene_template
@@ -48,7 +50,10 @@ contains
          new_unittest("hostile_scene_files", hostile_scene_files), &
          new_unittest("special_files_refused", special_files_refused), &
          new_unittest("read_as_written", read_as_written), &
-         new_unittest("groups_declared_once", groups_declared_once)])
+         new_unittest("groups_declared_once", groups_declared_once), &
+         new_unittest("start_angle_in_degrees", start_angle_in_degrees), &
+         new_unittest("foreign_groups_warned", foreign_groups_warned), &
+         new_unittest("implausible_spring_warned", implausible_spring_warned)])
    end function collect_scene
 
    !> The grid of a chart scene (a zero grid for another task).
@@ -564,6 +569,163 @@ contains
          end do
       end do
    end subroutine groups_declared_once
+
+   !> The start angle of the pendulum tasks in degrees: `&series phi0_degrees = 1` is
+   !> 1° = π/180 rad (not 1 rad = 57.3°); the effective scene repeats it in degrees (and
+   !> reads back to the same angle); phi0 alone stays radians.
+   subroutine start_angle_in_degrees(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(scene_t) :: scene, again
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: path, lines(:), header(:)
+      integer :: k
+      call read_text_scene("degrees", [padded("&scene task = 'series' /"), &
+         padded("&series phi0_degrees = 1, periods = 2 /")], scene, error, path)
+      call check(ctx, .not. allocated(error), "phi0_degrees reads")
+      if (allocated(error)) return
+      call check(ctx, series_phi0(scene), 0.017453292519943295_wp, rel=1.0e-15_wp, abs=0.0_wp)
+      lines = scene_namelist(scene)
+      call check(ctx, contains_text(lines(2), "phi0_degrees = 1.0") .and. .not. contains_text(lines(2), " phi0 = "), &
+         "the effective scene gives the angle in degrees: "//trim(lines(2)))
+      allocate (character(len=len(lines) + 2) :: header(size(lines)))
+      do k = 1, size(lines)
+         header(k) = "# "//lines(k)
+      end do
+      call read_text_scene("degrees_again", header, again, error, path)
+      call check(ctx, .not. allocated(error), "the effective scene reads back")
+      if (.not. allocated(error)) call check(ctx, series_phi0(again), series_phi0(scene), rel=0.0_wp, abs=0.0_wp)
+      ! radians as before, and the lyapunov task reads the same group
+      call read_text_scene("radians", [padded("&scene task = 'series' /"), padded("&series phi0 = 1 /")], &
+         scene, error, path)
+      if (.not. allocated(error)) call check(ctx, series_phi0(scene), 1.0_wp)
+      call read_text_scene("degrees_lyapunov", [padded("&scene task = 'lyapunov' /"), &
+         padded("&series phi0_degrees = -2.5, periods = 2 /"), padded("&chart n_alpha = 2, n_beta = 2 /")], &
+         scene, error, path)
+      call check(ctx, .not. allocated(error), "lyapunov reads phi0_degrees")
+      if (.not. allocated(error)) call check(ctx, series_phi0(scene), -2.5_wp*0.017453292519943295_wp, rel=1.0e-15_wp)
+   end subroutine start_angle_in_degrees
+
+   !> φ0 [rad] of a series or lyapunov scene.
+   real(wp) function series_phi0(scene)
+      type(scene_t), intent(in) :: scene
+      series_phi0 = huge(1.0_wp)
+      select type (task => scene%task)
+      type is (series_task_t)
+         series_phi0 = task%plan%phi0
+      type is (lyapunov_task_t)
+         series_phi0 = task%series%phi0
+      end select
+   end function series_phi0
+
+   !> A group the task does not read runs with a warning naming the file and the group,
+   !> for every task alike: another task's group (which tasks read it), a misspelt one (no
+   !> task does). The shipped scenes read without a warning.
+   subroutine foreign_groups_warned(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(scene_t) :: scene
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: path, names(:)
+      character(len=*), parameter :: shipped(*) = [character(len=24) :: "default_exact", "fig4_points", "damped", &
+         "spring_physical", "spring_boundaries", "spring_series", "spring_chart", "fig4e", "boundaries_exact", &
+         "lyapunov_map", "lyapunov_fig4", "poincare_regular", "fig2_coefficient", "figA_mathieu_exact"]
+      integer :: k
+      call read_text_scene("foreign", [padded("&scene task = 'chart' /"), padded("&chart n_alpha = 2, n_beta = 2 /"), &
+         padded("&series phi0 = 1 /")], scene, error, path)
+      call check(ctx, .not. allocated(error), "a chart scene with &series runs")
+      if (allocated(error)) return
+      call check(ctx, contains_text(scene%warnings, path//": &series: ignored: task 'chart' reads &scene, &chart; "// &
+         "tasks series, lyapunov, poincare read it"), "the chart warns of &series: "//scene%warnings)
+      call read_text_scene("misspelt", [padded("&scene task = 'series' /"), padded("&serie periods = 2 /"), &
+         padded("&series periods = 3 /")], scene, error, path)
+      call check(ctx, .not. allocated(error), "a series scene with &serie runs")
+      if (allocated(error)) return
+      call check(ctx, contains_text(scene%warnings, path//": &serie: ignored: task 'series' reads &scene, &series; "// &
+         "no task reads a group of that name"), "the misspelt group is named: "//scene%warnings)
+      call check(ctx, .not. contains_text(scene%warnings, "&series:"), "not the group it reads: "//scene%warnings)
+      ! every task: a group it does not read, here &coefficient (read by task coefficient only)
+      names = task_names()
+      do k = 1, size(names)
+         if (trim(names(k)) == "coefficient") cycle
+         call read_template_with(trim(names(k)), "&coefficient n_tau = 3 /", scene, error)
+         call check(ctx, .not. allocated(error), trim(names(k))//": the template with &coefficient reads")
+         if (allocated(error)) then
+            call check(ctx, .false., error%message)
+            cycle
+         end if
+         call check(ctx, contains_text(scene%warnings, ": &coefficient: ignored: task '"//trim(names(k))// &
+            "' reads &scene") .and. contains_text(scene%warnings, "task coefficient reads it"), &
+            trim(names(k))//" warns of &coefficient: "//scene%warnings)
+         call read_template_with(trim(names(k)), "", scene, error)
+         if (.not. allocated(error)) call check(ctx, len(scene%warnings) == 0, trim(names(k))// &
+            ": its own template reads without a warning: "//scene%warnings)
+      end do
+      do k = 1, size(shipped)
+         call read_scene("data/scenes/"//trim(shipped(k))//".nml", scene, error)
+         call check(ctx, .not. allocated(error), trim(shipped(k))//" reads")
+         if (.not. allocated(error)) call check(ctx, len(scene%warnings) == 0, trim(shipped(k))// &
+            " reads without a warning: "//scene%warnings)
+      end do
+   end subroutine foreign_groups_warned
+
+   !> Read the template of a task with one more line.
+   subroutine read_template_with(task, line, scene, error)
+      character(len=*), intent(in) :: task, line
+      type(scene_t), intent(out) :: scene
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: text, path, points
+      call scene_template(task, text, error)
+      if (allocated(error)) return
+      path = scratch_prefix("with_"//task)//".nml"
+      points = path//".dat"
+      call write_file(points, ["1.0 2.0"])
+      call write_file(path, [replaced_text(text, "'points.dat'", "'"//points//"'")//achar(10)//line])
+      call read_scene(path, scene, error)
+      call delete_file(path)
+      call delete_file(points)
+   end subroutine read_template_with
+
+   !> A spring in the wrong units runs, with a warning naming the variable: longer than
+   !> 100 m (r0 of &physical or &series, or ρ = r0 + g/ω² through a tiny ω), ω below 1e-3
+   !> rad/s. A lab spring (k = 40 N/m, m = 0.5 kg, r0 = 0.25 m), and the same one in
+   !> centimetres (r0 = 25 m, short of the limit: its header shows ρ = 25.1 m), do not warn.
+   subroutine implausible_spring_warned(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: points = "&scene task = 'points' /"
+      call expect(points, "&physical k = 40, m = 0.5, g = 9.81, r0 = 0.25, a = 0.02 /", "")
+      call expect(points, "&physical k = 40, m = 0.5, g = 9.81, r0 = 25, a = 2 /", "")
+      call expect(points, "&physical k = 40, m = 0.5, g = 9.81, r0 = 250, a = 2 /", &
+         "&physical: r0: a spring longer than 100.0 m: r0 = 250.0 m, rho = r0 + g/omega^2 = 250.122625 m")
+      ! m in grams: omega = 0.28 rad/s, rho = 0.25 + 9.81/0.08 = 122.875 m
+      call expect(points, "&physical k = 40, m = 500, g = 9.81, r0 = 0.25, a = 0.02 /", &
+         "&physical: k: a spring longer than 100.0 m: r0 = 0.25 m, rho = r0 + g/omega^2 = 122.875 m")
+      call expect("&scene task = 'chart' /", "&physical omega = 5e-4, g = 9.81 / &chart n_alpha = 2, n_beta = 2 /", &
+         "&physical: omega: omega = 0.0005 rad/s is below 0.001 rad/s")
+      call expect("&scene task = 'chart' /", "&physical omega_min = 2e-4, omega_max = 5, n_omega = 3, r0 = 0.3, "// &
+         "a_min = 0, a_max = 0.1, n_a = 2 /", "&physical: omega_min: omega = 0.0002 rad/s is below 0.001 rad/s")
+      ! &series: rho = r0/(1 - beta/pi^2)
+      call expect("&scene task = 'series' /", "&series r0 = 150, periods = 1 /", "&series: r0: a spring longer "// &
+         "than 100.0 m: r0 = 150.0 m, rho = r0/(1 - beta/pi^2) = "//real_text(150.0_wp/(1.0_wp - 2.47_wp/pi2)))
+      call expect("&scene task = 'series' /", "&series r0 = 0.25, periods = 1 /", "")
+   contains
+      subroutine expect(first, second, warning)
+         character(len=*), intent(in) :: first, second, warning
+         type(scene_t) :: scene
+         type(error_t), allocatable :: error
+         character(len=:), allocatable :: path
+         call read_text_scene("units", [padded(first), padded(second)], scene, error, path)
+         call check(ctx, .not. allocated(error), "runs: "//second)
+         if (allocated(error)) then
+            call check(ctx, .false., error%message)
+            return
+         end if
+         if (len(warning) == 0) then
+            call check(ctx, len(scene%warnings) == 0, "no warning for "//second//": "//scene%warnings)
+         else
+            call check(ctx, contains_text(scene%warnings, path//": "//warning), "warns for "//second//": "// &
+               scene%warnings)
+         end if
+      end subroutine expect
+   end subroutine implausible_spring_warned
 
    function replaced_text(text, old, new) result(out)
       character(len=*), intent(in) :: text, old, new

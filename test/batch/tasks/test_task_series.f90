@@ -12,6 +12,7 @@ module test_task_series
    use hillstab_test_pendulum, only: pendulum_at
    use hillstab_test_files, only: run_text_scene, check_rerun
    use hillstab_test_scratch, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text
+   use hillstab_core_text, only: real_text
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -25,6 +26,7 @@ contains
          new_unittest("layout_and_sample_times", layout_and_sample_times), &
          new_unittest("bounce_from_zero_angle", bounce_from_zero_angle), &
          new_unittest("repeat_from_output", repeat_from_output), &
+         new_unittest("start_angle_in_both_units", start_angle_in_both_units), &
          new_unittest("onset_summary", onset_summary), &
          new_unittest("bad_input", bad_input), &
          new_unittest("seconds_and_physical", seconds_and_physical), &
@@ -222,6 +224,45 @@ contains
       call check(ctx, any(index(first, "E decreases monotonically") > 0), "damped summary")
       call delete_file(written)
    end subroutine repeat_from_output
+
+   !> The header gives the start angle in radians and in degrees, whichever the scene used;
+   !> a run started by `phi0_degrees` repeats from its output, and equals the run started
+   !> by the same angle in radians.
+   subroutine start_angle_in_both_units(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=1024), allocatable :: by_degrees(:), by_radians(:)
+      character(len=:), allocatable :: written, again
+      character(len=:), allocatable :: first(:)
+      logical :: ok
+      integer :: k
+      call run_series_text("series_degrees", "&series phi0_degrees = 1, periods = 2, samples_per_period = 5 /", "", &
+         by_degrees, error)
+      call check(ctx, .not. allocated(error), "phi0_degrees runs")
+      if (allocated(error)) return
+      call check(ctx, any(index(by_degrees, "phi(0) = phi0 = "//real_text(pi/180.0_wp)//" rad = 1.0 degrees") > 0), &
+         "the header gives 1 degree in both units")
+      call run_series_text("series_radians", "&series phi0 = "//real_text(pi/180.0_wp)//", periods = 2, "// &
+         "samples_per_period = 5 /", "", by_radians, error)
+      call check(ctx, .not. allocated(error), "phi0 runs")
+      if (allocated(error)) return
+      call check(ctx, any(index(by_radians, "phi(0) = phi0 = "//real_text(pi/180.0_wp)//" rad = ") > 0), &
+         "the header gives the angle in radians and degrees")
+      call check(ctx, size(by_degrees) == size(by_radians), "as many lines")
+      if (size(by_degrees) /= size(by_radians)) return
+      do k = 1, size(by_degrees)
+         if (by_degrees(k)(1:1) == "#") cycle
+         call check(ctx, by_degrees(k) == by_radians(k), "the same data line "//trim(by_degrees(k)))
+      end do
+      call run_text_scene("series_degrees_again", [padded("&scene task = 'series', output = '"// &
+         scratch_prefix("series_degrees_again")//"' /"), padded("&series phi0_degrees = -3.5, periods = 1 /")], &
+         error, written)
+      call check(ctx, .not. allocated(error), "phi0_degrees = -3.5 runs")
+      if (allocated(error)) return
+      first = read_lines(written)
+      call check_rerun(ctx, written, first, again, ok)
+      call delete_file(written)
+   end subroutine start_angle_in_both_units
 
    !> Each bad `&series` value: err_input naming file, group and variable; no file.
    subroutine bad_input(ctx)

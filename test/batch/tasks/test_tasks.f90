@@ -7,7 +7,7 @@
 module test_tasks
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t, err_input, err_io, err_points_failed
-   use hillstab_core_text, only: integer_text
+   use hillstab_core_text, only: integer_text, real_text
    use hillstab_batch_run_scenes, only: run_scene_file
    use hillstab_batch_run_cli, only: printable
    use hillstab_testing
@@ -645,9 +645,11 @@ contains
       character(len=1024), allocatable :: lines(:)
       real(wp), allocatable :: rows(:, :), spring(:, :)
       real(wp), parameter :: g = 9.81_wp, r0 = 0.3_wp
-      real(wp) :: a, omega, rho
+      real(wp) :: a, omega, rho, beta_range(2)
       integer :: n_blank, i, j, k
       logical :: numeric
+      character(len=:), allocatable :: prefix
+      character(len=8) :: text
       out = scratch_prefix("a_omega")
       call run_text_scene("a_omega", [ &
          padded("&scene method = 'magnus6', tolerance = 1e-9, output = '"//out//"' /"), &
@@ -659,6 +661,18 @@ contains
          return
       end if
       lines = read_lines(written)
+      ! the header states the spring in SI, with its loaded length and beta over the range of omega
+      prefix = "# spring: omega = 8.0 ... 12.0 rad/s (3 values, the chart's second axis), r0 = 0.3 m, g = 9.81 "// &
+         "m/s^2; rho = r0 + g/omega^2 from "//real_text(r0 + g/64.0_wp)//" m down to "//real_text(r0 + g/144.0_wp)// &
+         " m, beta = g pi^2/(rho omega^2) from "
+      k = findloc(index(lines, prefix), 1, dim=1)
+      call check(ctx, k > 0, "the spring line of the header")
+      if (k > 0) then
+         read (lines(k)(len(prefix) + 1:), *, iostat=i) beta_range(1), text, text, beta_range(2)
+         call check(ctx, i == 0 .and. text == "to", "beta from ... down to ...: "//trim(lines(k)))
+         call check(ctx, beta_range(1), g*pi2/((r0 + g/64.0_wp)*64.0_wp), rel=1.0e-14_wp, message="beta at omega_min")
+         call check(ctx, beta_range(2), g*pi2/((r0 + g/144.0_wp)*144.0_wp), rel=1.0e-14_wp, message="beta at omega_max")
+      end if
       call check(ctx, columns_line(lines) == "alpha a beta omega S stable lambda_max mu log10_abs_S overflow "// &
                  "physical mu_per_s error_estimate status", "columns: "//columns_line(lines))
       call data_rows(lines, 14, rows, n_blank, numeric)

@@ -21,9 +21,10 @@ module hillstab_batch_run_scenes
    use hillstab_batch_run_limits, only: check_output_room, check_memory_room
    use hillstab_batch_run_units, only: batch_distributable, run_batch
    use hillstab_batch_output_checkpoint, only: checkpoint_options_t, checkpoint_note
+   use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
-   public :: run_scene_file, run_scene, output_path
+   public :: run_scene_file, run_scene, output_path, warn_scene
 
 contains
 
@@ -38,12 +39,37 @@ contains
       type(scene_t) :: scene
       call read_scene(path, scene, error)
       if (allocated(error)) return
+      call warn_scene(scene)
       call run_scene(scene, quiet, error, options)
       if (allocated(error)) then
          if (error%code /= err_points_failed) return
       end if
       if (present(written)) written = output_path(scene)
    end subroutine run_scene_file
+
+   !> Say on stderr, one line each, what reading the scene found suspect (`scene%warnings`:
+   !> a group its task does not read, a spring longer than 100 m, ...), also when quiet:
+   !> it may mean the run is not the one meant.
+   subroutine warn_scene(scene, program)
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      character(len=*), intent(in), optional :: program  !! the name the lines start with (default hillstab)
+      character(len=:), allocatable :: name
+      integer :: start, stop
+      if (.not. allocated(scene%warnings)) return
+      name = "hillstab"
+      if (present(program)) name = program
+      start = 1
+      do while (start <= len(scene%warnings))
+         stop = index(scene%warnings(start:), achar(10))
+         if (stop == 0) then
+            stop = len(scene%warnings) + 1
+         else
+            stop = start + stop - 1
+         end if
+         write (error_unit, '(a)') name//": warning: "//scene%warnings(start:stop - 1)
+         start = stop + 1
+      end do
+   end subroutine warn_scene
 
    !> Run a validated scene: unit by unit with a checkpoint when its points are independent
    !> and it is written as text, else by its task's own loop. With `options%resume`, a scene

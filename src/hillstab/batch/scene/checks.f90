@@ -1,6 +1,6 @@
 !> Checks every scene group shares, and the limits they enforce: finite values, bounded
 !> magnitudes, ranges `<name>_min <= <name>_max` with `n_<name>` values, the domain of α
-!> of the model. Each check names the file, the group and the variable in its message.
+!> of the model; and the bounds beyond which a physical value is read with a warning. Each check names the file, the group and the variable in its message.
 !>
 !>```fortran
 !> call check_range("s.nml", "chart", "alpha", 0.0_wp, 9.8_wp, 200, error)
@@ -18,7 +18,7 @@ module hillstab_batch_scene_checks
    public :: require_bounded, require_finite, require_positive_count, check_range, check_alpha_domain
    public :: check_integration_cost
    public :: max_grid_count, max_segments, min_tolerance, max_magnitude, max_boundaries_magnitude, &
-      min_pendulum_beta, max_epsilon, max_points
+      min_pendulum_beta, max_epsilon, max_points, longest_spring, slowest_omega
 
    !> Largest `n_alpha`, `n_beta`, `n_tau` (and every other `n_` count of a range).
    integer, parameter :: max_grid_count = 100000000
@@ -36,6 +36,12 @@ module hillstab_batch_scene_checks
    real(wp), parameter :: max_epsilon = 100.0_wp
    !> Largest number of points in a points file.
    integer, parameter :: max_points = 1000000
+   !> A spring longer than this [m] (r0, or the loaded length ρ) is read with a warning: a
+   !> length typed in centimetres, most likely.
+   real(wp), parameter :: longest_spring = 100.0_wp
+   !> A radial angular frequency below this [rad/s] (a period of 105 minutes) is read with a
+   !> warning: k or m in the wrong unit, most likely.
+   real(wp), parameter :: slowest_omega = 1.0e-3_wp
 
 contains
 

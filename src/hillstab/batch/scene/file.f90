@@ -22,7 +22,7 @@ module hillstab_batch_scene_file
    private
    public :: scene_file_t, item_t, open_scene_file, close_scene_file
    public :: locate_group, group_present, group_sets, group_items, check_read, fail, shortened, joined, item_name
-   public :: group_count, string_across_lines, long_item
+   public :: group_count, group_names, string_across_lines, long_item
    public :: max_line_length, max_scene_bytes, text_len, read_len
 
    !> Longest line of a scene or points file.
@@ -511,6 +511,33 @@ contains
       text = scene_text(unit, achar(10))
       group_count = size(group_starts(text, group))
    end function group_count
+
+   !> The groups the file opens, each once, in the order of their first `&name` (at the
+   !> start of a line, after blanks or an output header's `#`, as `group_count` counts them;
+   !> not the `&end` of old-style namelists), lower case.
+   function group_names(unit) result(names)
+      integer, intent(in) :: unit  !! the scratch copy of the scene file
+      character(len=63), allocatable :: names(:)
+      character(len=:), allocatable :: text
+      character(len=63) :: name
+      integer :: i, j, line_start
+      allocate (names(0))
+      text = scene_text(unit, achar(10))
+      do i = 1, len(text) - 1
+         if (text(i:i) /= "&") cycle
+         line_start = index(text(:i), achar(10), back=.true.) + 1
+         if (verify(text(line_start:i - 1), " #") /= 0) cycle
+         if (.not. is_letter(text(i + 1:i + 1))) cycle
+         j = i + 1
+         do while (j < len(text))
+            if (.not. is_name_char(text(j + 1:j + 1))) exit
+            j = j + 1
+         end do
+         name = lower(text(i + 1:j))
+         if (name == "end" .or. any(names == name)) cycle
+         names = [character(len=63) :: names, name]
+      end do
+   end function group_names
 
    !> The item of the first `&group` whose quoted string runs past the end of its line
    !> ("" when none): the namelist read would join the lines and drop the line break.

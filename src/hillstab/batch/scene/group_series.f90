@@ -7,7 +7,7 @@
 !> plan = series_plan_t(1.48_wp, 2.47_wp, 0.017_wp, 50, 100, 0.1_wp, 9.81_wp, 0.0_wp, 0.0_wp)
 !>```
 module hillstab_batch_scene_group_series
-   use hillstab_core_kinds, only: wp, int64, pi2
+   use hillstab_core_kinds, only: wp, int64, pi, pi2
    use hillstab_core_error, only: error_t
    use hillstab_core_text, only: real_text, integer_text
    use hillstab_hill_model, only: hill_model_t
@@ -15,10 +15,11 @@ module hillstab_batch_scene_group_series
    use hillstab_batch_scene_declaration, only: new_group, group_t, group_values_t, group_reader_t, variable, var_real, &
       var_integer, &
       begin_group, next_item, end_group
-   use hillstab_batch_scene_checks, only: require_finite, min_pendulum_beta
+   use hillstab_batch_scene_checks, only: require_finite, min_pendulum_beta, longest_spring, slowest_omega
+   use hillstab_batch_scene_types, only: add_warning
    implicit none
    private
-   public :: series_plan_t, series_group, read_series_group, max_series_lines
+   public :: series_plan_t, series_group, read_series_group, max_series_lines, start_angle_text
 
    !> A series scene writing more data lines than this is refused.
    integer(int64), parameter :: max_series_lines = 100000000_int64
@@ -48,6 +49,7 @@ contains
       call group%add("alpha", var_real, "1.48", "alpha = a pi^2/rho, 0 <= alpha < pi^2")
       call group%add("beta", var_real, "2.47", "beta = g pi^2/(rho omega^2), 0 < beta < pi^2 (physical domain)")
       call group%add("phi0", var_real, "0.017", "initial angle from the downward vertical, rad (0: pure bounce)")
+      call group%add("phi0_degrees", var_real, "", "instead of phi0, the initial angle in degrees", example="1.0")
       call group%add("periods", var_integer, "50", "radial periods T = 2 pi/omega to simulate, >= 1")
       call group%add("duration", var_real, "", "series: instead of periods, the length of the run in seconds "// &
          "(> 0; rows at t = j T/samples_per_period <= duration)", example="30.0")
@@ -61,7 +63,7 @@ contains
 
    !> Read and check `&series`. The pendulum is the elastic one given in dimensionless
    !> units here, so a scene with `&physical` or another model is refused.
-   subroutine read_series_group(file, group, model, physical, plan, values, error, samples, takes_duration)
+   subroutine read_series_group(file, group, model, physical, plan, values, error, samples, takes_duration, warnings)
       type(scene_file_t), intent(in) :: file  !! the scene file
       type(group_t), intent(in) :: group      !! the declaration (`series_group`)
       class(hill_model_t), intent(in) :: model  !! the model of `&scene`
@@ -74,10 +76,14 @@ contains
       logical, intent(in), optional :: samples
       !> the task takes `duration` (seconds) instead of `periods` (default: no)
       logical, intent(in), optional :: takes_duration
-      real(wp) :: alpha, beta, phi0, duration, r0, g, vx0, vz0
+      !> warnings, one a line, to which a spring longer than 100 m (`r0` or ρ) or an ω below
+      !> 1e-3 rad/s adds one (`task_t%warnings`)
+      character(len=:), allocatable, intent(inout), optional :: warnings
+      real(wp) :: alpha, beta, phi0, phi0_degrees, duration, r0, g, vx0, vz0, rho, omega
       logical :: samples_written
       integer :: periods, samples_per_period
-      namelist /series/ alpha, beta, phi0, periods, duration, samples_per_period, r0, g, vx0, vz0
+      character(len=:), allocatable :: angle
+      namelist /series/ alpha, beta, phi0, phi0_degrees, periods, duration, samples_per_period, r0, g, vx0, vz0
       logical :: durations
       type(group_reader_t) :: reader
       samples_written = .true.
@@ -94,12 +100,25 @@ contains
       call finite("alpha", alpha)
       call finite("beta", beta)
       call finite("phi0", phi0)
+      call finite("phi0_degrees", phi0_degrees)
       call finite("r0", r0)
       call finite("g", g)
       call finite("vx0", vx0)
       call finite("vz0", vz0)
       call finite("duration", duration)
       if (allocated(error)) return
+      ! the start angle in radians or in degrees, not both
+      angle = "phi0"
+      if (values%given("phi0_degrees")) then
+         if (values%given("phi0")) then
+            call fail(error, file%path, group%name, "phi0_degrees", "give the initial angle either as phi0 "// &
+               "(radians) or as phi0_degrees (degrees), not both")
+            return
+         end if
+         angle = "phi0_degrees"
+         phi0 = phi0_degrees*(pi/180.0_wp)
+         call values%hide("phi0")
+      end if
       durations = .false.
       if (present(takes_duration)) durations = takes_duration
       if (values%given("duration")) then
@@ -139,8 +158,8 @@ contains
       else if (.not. g > 0.0_wp) then
          call fail(error, file%path, group%name, "g", "gravity must be > 0, got "//real_text(g))
       else if (phi0 /= 0.0_wp .and. (abs(phi0) < 1.0e-300_wp .or. abs(phi0) > 1.0e3_wp)) then
-         call fail(error, file%path, group%name, "phi0", "must be 0 or lie in [1e-300, 1e3] in magnitude, got "// &
-            real_text(phi0))
+         call fail(error, file%path, group%name, angle, "must be 0 or lie in [1e-300, 1e3] rad in magnitude, got "// &
+            start_angle_text(phi0))
       else if (r0 < 1.0e-50_wp .or. r0 > 1.0e50_wp .or. g < 1.0e-50_wp .or. g > 1.0e50_wp) then
          call fail(error, file%path, group%name, merge("r0", "g ", r0 < 1.0e-50_wp .or. r0 > 1.0e50_wp), &
             "must lie in [1e-50, 1e50]")
@@ -155,7 +174,21 @@ contains
             integer_text(periods))
       end if
       if (allocated(error)) return
-      if (allocated(error)) return
+      if (present(warnings) .and. values%given("r0")) then
+         ! the loaded length and the radial frequency of this (alpha, beta): eqs. (4), (24)
+         rho = r0/(1.0_wp - beta/pi2)
+         omega = sqrt(g*pi2/(rho*beta))
+         if (rho > longest_spring) then
+            call add_warning(warnings, file%path//": &"//group%name//": r0: a spring longer than "// &
+               real_text(longest_spring)//" m: r0 = "//real_text(r0)//" m, rho = r0/(1 - beta/pi^2) = "// &
+               real_text(rho)//" m (lengths are in metres: 25 cm is r0 = 0.25)")
+         end if
+         if (omega < slowest_omega) then
+            call add_warning(warnings, file%path//": &"//group%name//": r0: omega = sqrt(g pi^2/(rho beta)) = "// &
+               real_text(omega)//" rad/s is below "//real_text(slowest_omega)//" rad/s (r0 = "//real_text(r0)// &
+               " m, g = "//real_text(g)//" m/s^2: lengths in metres?)")
+         end if
+      end if
       if (values%given("duration")) then
          periods = 0
          call values%hide("periods")
@@ -171,4 +204,11 @@ contains
          if (.not. allocated(error)) call require_finite(file%path, group%name, name, x, error)
       end subroutine finite
    end subroutine read_series_group
+
+   !> The start angle in both units, for headers and messages: "0.017 rad = 0.974... degrees".
+   function start_angle_text(phi0) result(text)
+      real(wp), intent(in) :: phi0  !! the angle [rad]
+      character(len=:), allocatable :: text
+      text = real_text(phi0)//" rad = "//real_text(phi0*(180.0_wp/pi))//" degrees"
+   end function start_angle_text
 end module hillstab_batch_scene_group_series

@@ -1,8 +1,9 @@
 !> Reading a scene: `&scene` (always), `&physical` (optional: the pendulum in SI units, in
 !> place of the dimensionless ε and, for points and coefficient, of α and β), then the
 !> groups of the task, which the task reads itself (hillstab_batch_tasks_registry makes it
-!> from `&scene task`). Group order in the file does not matter and other groups are
-!> ignored, so one file may hold several; `#` lines before a group are tolerated, which
+!> from `&scene task`). Group order in the file does not matter; other groups are ignored
+!> with a warning naming them (`scene%warnings`), so one file may hold the groups of several
+!> tasks, and a misspelt group does not pass in silence; `#` lines before a group are tolerated, which
 !> lets a run be repeated from the header of its own output file. Every error names the
 !> file, the group and the variable.
 !>
@@ -12,7 +13,7 @@
 !> call read_scene("data/scenes/default_exact.nml", scene, error)
 !>```
 module hillstab_batch_scene_read
-   use hillstab_core_kinds, only: wp
+   use hillstab_core_kinds, only: wp, pi
    use hillstab_core_error, only: error_t
    use hillstab_core_text, only: real_text, quoted
    use hillstab_hill_model, only: hill_model_t
@@ -21,17 +22,17 @@ module hillstab_batch_scene_read
    use hillstab_hill_units, only: physical_t, physical_epsilon, check_physical, equilibrium_length
    use hillstab_integrate_monodromy, only: method_t, method_table, method_name, method_from_name, method_names_text, &
       method_description
-   use hillstab_batch_scene_types, only: scene_t, task_t
+   use hillstab_batch_scene_types, only: scene_t, task_t, add_warning
    use hillstab_batch_scene_file, only: scene_file_t, open_scene_file, close_scene_file, group_present, group_sets, &
-      fail, read_len
+      group_names, fail, read_len
    use hillstab_batch_scene_declaration, only: new_group, group_t, group_values_t, group_reader_t, variable, var_real, &
       var_integer, &
       var_logical, var_name, var_path, var_words, var_real_list, begin_group, next_item, end_group, list_value
    use hillstab_batch_scene_checks, only: require_finite, require_positive_count, max_segments, min_tolerance, &
-      max_epsilon, max_points
+      max_epsilon, max_points, longest_spring, slowest_omega
    use hillstab_batch_scene_group_chart, only: grid_value
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use hillstab_batch_tasks_registry, only: new_task, task_names_text
+   use hillstab_batch_tasks_registry, only: new_task, task_names, task_names_text
    use hillstab_core_text, only: integer_text, lower_case
    implicit none
    private
@@ -50,6 +51,7 @@ contains
       type(error_t), allocatable :: cause
       scene%source = path
       scene%columns = ""
+      scene%warnings = ""
       allocate (scene%amplitudes(0), scene%omegas(0))
       call open_scene_file(path, file, error)
       if (allocated(error)) return
@@ -63,9 +65,81 @@ contains
          if (group_present(file%unit, "physical")) call read_physical_group(file, task, scene, error)
       end if
       if (.not. allocated(error)) call task%read(file, scene, error)
+      if (.not. allocated(error)) then
+         call warn_foreign_groups(file, task, scene)
+         if (allocated(task%warnings)) then
+            if (len(task%warnings) > 0) call add_warning(scene%warnings, task%warnings)
+         end if
+      end if
       call close_scene_file(file)
       if (.not. allocated(error)) call move_alloc(task, scene%task)
    end subroutine read_scene
+
+   !> A warning for each group of the file that the task does not read (another task's
+   !> group, or a misspelt name whose values would otherwise be ignored in silence), saying
+   !> which groups it reads and which tasks read the stray one. Not an error: one file may
+   !> hold the groups of several tasks, `&scene task` choosing among them.
+   subroutine warn_foreign_groups(file, task, scene)
+      type(scene_file_t), intent(in) :: file
+      class(task_t), intent(in) :: task
+      type(scene_t), intent(inout) :: scene
+      character(len=63), allocatable :: names(:)
+      character(len=:), allocatable :: reads, readers, tasks(:)
+      class(task_t), allocatable :: other
+      type(error_t), allocatable :: cause
+      integer :: k, j, n
+      names = group_names(file%unit)
+      reads = "&scene"
+      if (scene%physical) reads = reads//", &physical"
+      associate (groups => task%declarations())
+         do j = 1, size(groups)
+            reads = reads//", &"//groups(j)%name
+         end do
+      end associate
+      tasks = task_names()
+      do k = 1, size(names)
+         if (task_reads(task, trim(names(k)))) cycle
+         readers = ""
+         n = 0
+         do j = 1, size(tasks)
+            call new_task(trim(tasks(j)), other, cause)
+            if (allocated(cause)) cycle
+            if (.not. task_reads(other, trim(names(k)))) cycle
+            n = n + 1
+            if (n > 1) readers = readers//", "
+            readers = readers//trim(tasks(j))
+         end do
+         if (n == 0) then
+            readers = "no task reads a group of that name (misspelt?)"
+         else if (n == 1) then
+            readers = "task "//readers//" reads it"
+         else
+            readers = "tasks "//readers//" read it"
+         end if
+         call add_warning(scene%warnings, file%path//": &"//trim(names(k))//": ignored: task '"//task%name// &
+            "' reads "//reads//"; "//readers)
+      end do
+   end subroutine warn_foreign_groups
+
+   !> Whether the task reads a group of this name: &scene, &physical (read, or refused with
+   !> an error, before this is asked), its own groups and the alternatives its template shows.
+   logical function task_reads(task, name)
+      class(task_t), intent(in) :: task
+      character(len=*), intent(in) :: name
+      type(group_t), allocatable :: declared(:), alternatives(:)
+      character(len=80), allocatable :: notes(:)
+      integer :: j
+      task_reads = name == "scene" .or. name == "physical"
+      if (task_reads) return
+      declared = task%declarations()
+      call task%template_alternatives(alternatives, notes)
+      do j = 1, size(declared)
+         if (declared(j)%name == name) task_reads = .true.
+      end do
+      do j = 1, size(alternatives)
+         if (alternatives(j)%name == name) task_reads = .true.
+      end do
+   end function task_reads
 
    !> The declaration of `&scene`.
    function scene_group() result(group)
@@ -508,6 +582,7 @@ contains
             return
          end if
       end associate
+      call warn_implausible(file, group, scene, p, spring, omega_ranged, omegas)
       scene%physical = .true.
       scene%spring_r0 = scene%physical_values%given("r0")
       scene%pendulum = p
@@ -519,6 +594,45 @@ contains
       ! with &physical the damping is kappa; epsilon in &scene would be an error
       call scene%settings%hide("epsilon")
    end subroutine read_physical_group
+
+   !> Warnings for a valid `&physical` that is most likely in the wrong units: a spring longer
+   !> than 100 m (r0, or the loaded length ρ = r0 + g/ω² at the smallest ω), an ω below 1e-3
+   !> rad/s (a radial period of 105 minutes).
+   subroutine warn_implausible(file, group, scene, p, spring, omega_ranged, omegas)
+      type(scene_file_t), intent(in) :: file
+      type(group_t), intent(in) :: group
+      type(scene_t), intent(inout) :: scene
+      type(physical_t), intent(in) :: p  !! the pendulum (at the largest ω of a range)
+      logical, intent(in) :: spring, omega_ranged  !! ω given as k and m; as a range
+      real(wp), intent(in) :: omegas(:)  !! the range of ω (empty when one ω)
+      type(physical_t) :: slowest
+      character(len=:), allocatable :: omega_name, hint
+      slowest = p
+      if (omega_ranged) slowest%omega = omegas(1)
+      omega_name = "omega"
+      if (omega_ranged) omega_name = "omega_min"
+      if (spring) omega_name = "k"
+      if (scene%physical_values%given("r0")) then
+         if (equilibrium_length(slowest) > longest_spring) then
+            hint = "(k in N/m, m in kg?)"
+            if (p%r0 > longest_spring) then
+               omega_name = "r0"
+               hint = "(lengths are in metres: 25 cm is r0 = 0.25)"
+            end if
+            call add_warning(scene%warnings, file%path//": &"//group%name//": "//omega_name//": a spring longer than "// &
+               real_text(longest_spring)//" m: r0 = "//real_text(p%r0)//" m, rho = r0 + g/omega^2 = "// &
+               real_text(equilibrium_length(slowest))//" m at omega = "//real_text(slowest%omega)//" rad/s "//hint)
+         end if
+      end if
+      if (slowest%omega < slowest_omega) then
+         omega_name = "omega"
+         if (omega_ranged) omega_name = "omega_min"
+         if (spring) omega_name = "k"
+         call add_warning(scene%warnings, file%path//": &"//group%name//": "//omega_name//": omega = "// &
+            real_text(slowest%omega)//" rad/s is below "//real_text(slowest_omega)//" rad/s, a radial period of "// &
+            real_text(2.0_wp*pi/slowest%omega/60.0_wp)//" minutes (k in N/m, m in kg?)")
+      end if
+   end subroutine warn_implausible
 
    !> The first of `names` the group gives.
    function first_given(values, names) result(name)

@@ -29,7 +29,7 @@ module hillstab_batch_scene_types
    implicit none
    private
    public :: scene_t, task_t, output_path, scene_namelist, scene_header, open_scene_output, physical_points, &
-      physical_summary
+      physical_summary, add_warning
 
    !> A task: what it reads, runs and writes. Concrete tasks extend it (the registry,
    !> hillstab_batch_tasks_registry, makes one from its name); a task whose points are
@@ -50,6 +50,9 @@ module hillstab_batch_scene_types
       character(len=:), allocatable :: amplitudes_replace
       !> the effective values of the task's groups, in the order the header writes them
       type(group_values_t), allocatable :: groups(:)
+      !> what reading its groups found suspect though valid (a value in the wrong unit?), one
+      !> warning a line (new lines between them; "" when none): read_scene adds them to the scene's
+      character(len=:), allocatable :: warnings
    contains
       !> read and check the task's groups from the scene file
       procedure(task_read), deferred :: read
@@ -112,6 +115,11 @@ module hillstab_batch_scene_types
       real(wp), allocatable :: omegas(:)
       type(group_values_t) :: settings              !! the effective `&scene` values
       type(group_values_t) :: physical_values       !! the effective `&physical` values
+      !> what reading the scene found suspect though valid — a group the task does not read,
+      !> a spring longer than 100 m, ω below 1e-3 rad/s — one warning a line, each naming the
+      !> file and the group (new lines between them; "" when none). The programs print them
+      !> on stderr before the run (`warn_scene` of hillstab_batch_run_scenes).
+      character(len=:), allocatable :: warnings
    end type scene_t
 
    abstract interface
@@ -248,7 +256,9 @@ contains
          if (size(scene%omegas) > 0) then
             spring = spring//", r0 = "//real_text(p%r0)//" m, g = "//real_text(p%g)//" m/s^2; rho = r0 + g/omega^2 "// &
                      "from "//real_text(p%r0 + p%g/scene%omegas(1)**2)//" m down to "// &
-                     real_text(p%r0 + p%g/scene%omegas(size(scene%omegas))**2)//" m"
+                     real_text(p%r0 + p%g/scene%omegas(size(scene%omegas))**2)//" m, beta = g pi^2/(rho omega^2) "// &
+                     "from "//real_text(beta_at(scene%omegas(1)))//" down to "// &
+                     real_text(beta_at(scene%omegas(size(scene%omegas))))
          else if (scene%spring_r0) then
             spring = spring//", r0 = "//real_text(p%r0)//" m, g = "//real_text(p%g)//" m/s^2, rho = r0 + g/omega^2 = "// &
                      real_text(equilibrium_length(p))//" m, beta = "//real_text(physical_beta(p))
@@ -268,7 +278,29 @@ contains
          end if
       end associate
       lines = text
+   contains
+      !> β of the spring at one ω of the chart (eq. (24)).
+      pure real(wp) function beta_at(omega)
+         real(wp), intent(in) :: omega
+         type(physical_t) :: at
+         at = scene%pendulum
+         at%omega = omega
+         beta_at = physical_beta(at)
+      end function beta_at
    end function physical_summary
+
+   !> Add a warning (or several, one a line) to a list of warnings (`scene_t%warnings`,
+   !> `task_t%warnings`).
+   pure subroutine add_warning(warnings, text)
+      character(len=:), allocatable, intent(inout) :: warnings  !! the warnings so far, one a line
+      character(len=*), intent(in) :: text  !! the new warning
+      if (.not. allocated(warnings)) warnings = ""
+      if (len(warnings) > 0) then
+         warnings = warnings//achar(10)//text
+      else
+         warnings = text
+      end if
+   end subroutine add_warning
 
    !> Default: no alternative groups.
    subroutine task_template_alternatives(self, groups, notes)

@@ -38,7 +38,7 @@ module hillstab_batch_tasks_lyapunov
       var_logical, begin_group, next_item, end_group
    use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_point, grid_size_text
    use hillstab_batch_scene_group_points, only: points_group, read_points_group
-   use hillstab_batch_scene_group_series, only: series_plan_t, series_group, read_series_group
+   use hillstab_batch_scene_group_series, only: series_plan_t, series_group, read_series_group, start_angle_text
    use hillstab_batch_output_columns, only: column_t, style_e17, style_e11, style_e7, style_e4, style_flag, style_integer, &
       columns_text, put_row, all_columns, failed_row
    use hillstab_batch_tasks_chart_columns, only: header_bytes, text_row_bytes
@@ -199,7 +199,7 @@ contains
       allocate (self%groups(3))
       ! with &physical the spring comes from there: &series gives the start and the periods
       call read_series_group(file, series_group(), scene%model, .false., self%series, self%groups(1), error, &
-         samples=.false.)
+         samples=.false., warnings=self%warnings)
       if (allocated(error)) return
       group = lyapunov_group()
       call begin_group(reader, file, group, optional=.true.)
@@ -518,11 +518,12 @@ contains
       n = 0
       if (self%physical) then
          n = n + 1; text(n) = "each point: the spring of &physical at its amplitude a and frequency omega (alpha = a "// &
-            "pi^2/rho, beta = g pi^2/(rho omega^2), epsilon = kappa pi/omega), started at phi0 of &series (eq. (38)), "// &
-            integer_text(self%series%periods)//" radial periods"
+            "pi^2/rho, beta = g pi^2/(rho omega^2), epsilon = kappa pi/omega), started at phi0 of &series (eq. (38)) "// &
+            "= "//start_angle_text(self%series%phi0)//", "//integer_text(self%series%periods)//" radial periods"
       else
          n = n + 1; text(n) = "each point: the pendulum at (alpha, beta) with r0, g of &series, started at phi0 "// &
-            "(eq. (38)), "//integer_text(self%series%periods)//" radial periods"
+            "(eq. (38)) = "//start_angle_text(self%series%phi0)//", "//integer_text(self%series%periods)// &
+            " radial periods"
       end if
       if (self%chaos%early_stop) text(n) = trim(text(n))//" at most, stopped as soon as the verdict is certain"
       n = n + 1; text(n) = chaos_method_text(self%chaos, scene%method%tolerance)

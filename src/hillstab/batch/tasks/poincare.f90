@@ -19,7 +19,7 @@ module hillstab_batch_tasks_poincare
    use hillstab_batch_scene_checks, only: require_finite
    use hillstab_batch_scene_declaration, only: new_group, group_t, group_reader_t, variable, var_real_list, var_logical, &
       begin_group, next_item, end_group, list_value
-   use hillstab_batch_scene_group_series, only: series_plan_t, series_group, read_series_group
+   use hillstab_batch_scene_group_series, only: series_plan_t, series_group, read_series_group, start_angle_text
    use hillstab_batch_output_columns, only: column_t, style_e17, style_integer, columns_text, put_row, all_columns
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text
    use hillstab_core_text, only: real_text, integer_text
@@ -88,7 +88,7 @@ contains
       integer :: k
       allocate (self%groups(2))
       call read_series_group(file, series_group(), scene%model, scene%physical, self%series, self%groups(1), error, &
-         samples=.false.)
+         samples=.false., warnings=self%warnings)
       if (allocated(error)) return
       group = poincare_group()
       call begin_group(reader, file, group, optional=.true.)
@@ -231,7 +231,7 @@ contains
             " s, "//integer_text(self%series%periods)//" periods"
          if (self%same_energy) then
             m = m + 1; extra(m) = "every orbit starts at rest at its phi0 with the energy E = "//real_text(energy)// &
-               " J/kg of the &series start (one section plane)"
+               " J/kg of the &series start at phi0 = "//start_angle_text(self%series%phi0)//" (one section plane)"
          else
             m = m + 1; extra(m) = "every orbit starts at rest at r = rho - a (eq. (38)) at its phi0 (energies differ)"
          end if

@@ -36,7 +36,8 @@ module hillstab_batch_tasks_series
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_checks, only: min_pendulum_beta
    use hillstab_hill_units, only: physical_t, physical_alpha, physical_beta
-   use hillstab_batch_scene_group_series, only: series_plan_t, series_group, read_series_group, max_series_lines
+   use hillstab_batch_scene_group_series, only: series_plan_t, series_group, read_series_group, max_series_lines, &
+      start_angle_text
    use hillstab_batch_output_columns, only: column_t, style_e17, columns_text, put_row, all_columns
    use hillstab_core_text, only: put_es, real_text, integer_text
    use hillstab_batch_output_file, only: output_file_t, finish_output, discard_output, write_header, write_text
@@ -128,7 +129,7 @@ contains
       integer :: k
       allocate (self%groups(1))
       call read_series_group(file, series_group(), scene%model, .false., self%plan, self%groups(1), error, &
-                             takes_duration=.true.)
+                             takes_duration=.true., warnings=self%warnings)
       if (allocated(error)) return
       if (scene%physical) then
          ! the pendulum of &physical (omega or k, m; r0; g; kappa; one amplitude a)
@@ -382,8 +383,8 @@ contains
          n = n + 1; extra(n) = "pendulum: rho = "//real_text(p%rho)//" m, omega = "//real_text(p%omega)// &
             " 1/s, a = "//real_text(p%a)//" m, T = "//real_text(p%period)//" s, kappa = epsilon omega/pi = "// &
             real_text(p%kappa)//" 1/s"
-         n = n + 1; extra(n) = "start (eq. (38)): r(0) = rho - a = "//real_text(p%rho - p%a)//" m, phi(0) = phi0,"// &
-            " velocities vx0, vz0"
+         n = n + 1; extra(n) = "start (eq. (38)): r(0) = rho - a = "//real_text(p%rho - p%a)//" m, phi(0) = phi0 = "// &
+            start_angle_text(plan%phi0)//", velocities vx0, vz0"
       end associate
       n = n + 1; extra(n) = "integrator: DOP853, relative tolerance "//real_text(scene%method%tolerance)// &
          "; absolute tolerances rtol*rho on z, rtol*(initial swing) on x (relative accuracy in a tiny swing)"
