@@ -49,7 +49,7 @@ contains
       type(elastic_model_t) :: elastic
       type(mathieu_model_t) :: mathieu
       integer :: k
-      call check(ctx, model_count == 3, "three models")
+      call check(ctx, model_count == 5, "five models")
       call check(ctx, model_code(elastic) == 1 .and. model_code(mathieu) == 2, "codes of the C API: elastic 1, mathieu 2")
       do k = 1, model_count
          call new_model(model_names(k), model, error)
@@ -71,7 +71,7 @@ contains
       call check(ctx, allocated(error), "code 0 refused")
       call model_from_code(model_count + 1, model, error)
       call check(ctx, allocated(error), "code past the last refused")
-      call check(ctx, model_names_text() == "elastic, mathieu or meissner", "names text: "//model_names_text())
+      call check(ctx, model_names_text() == "elastic, mathieu, meissner, fourier or sampled", "names text: "//model_names_text())
       call check(ctx, model_description(elastic) == "model: elastic, Q(tau) = (beta - alpha cos(pi tau))/"// &
          "(1 - (alpha/pi^2) cos(pi tau)), eq. (25)", "elastic header line")
       call check(ctx, model_description(mathieu) == "model: mathieu, q(tau) = beta - alpha cos(pi tau), "// &
@@ -152,11 +152,13 @@ contains
                call check(ctx, model%shape_root_mean(alphas(i)), integral, rel=1.0e-10_wp, message="elastic AGM")
             case ("meissner")
                call check(ctx, model%shape_root_mean(alphas(i)), integral, rel=1.0e-12_wp, message="meissner: |w| = 1")
-            case default
+            case ("mathieu")
                call check(ctx, model%shape_root_mean(alphas(i)) >= integral, "mathieu: a bound of the integral")
                ! (2/π) ∫₀^{π/2} √cos x dx = Γ(3/4)/(√π Γ(5/4)); the rule converges slowly at the
                ! square-root zero of w at τ = 1/2
                call check(ctx, integral, 0.7627597635018131_wp, rel=1.0e-6_wp, message="mathieu: Gamma(3/4)/(sqrt(pi) Gamma(5/4))")
+            case default
+               call check(ctx, model%shape_root_mean(alphas(i)) >= integral, model%name()//": a bound of the integral")
             end select
          end do
       end do

@@ -8,7 +8,9 @@
 !> Models:
 !> - `elastic` (1): Q(τ) = (β − α cos πτ)/(1 − (α/π²) cos πτ), paper eq. (25);
 !> - `mathieu` (2): q(τ) = β − α cos πτ, the paper's Mathieu form (A1) with α playing ν;
-!> - `meissner` (3): Q(τ) = β ± α on the two halves of the period, Meissner's square wave.
+!> - `meissner` (3): Q(τ) = β ± α on the two halves of the period, Meissner's square wave;
+!> - `fourier` (4): Q(τ) = β + α f(τ), f a Fourier series given in the scene (`&fourier`);
+!> - `sampled` (5): Q(τ) = β + α f(τ), f interpolating samples of one period (`&sampled`).
 !>
 !>```fortran
 !> class(hill_model_t), allocatable :: model
@@ -23,12 +25,15 @@ module hillstab_hill_models
    use hillstab_hill_model_elastic, only: elastic_model_t
    use hillstab_hill_model_mathieu, only: mathieu_model_t
    use hillstab_hill_model_meissner, only: meissner_model_t
+   use hillstab_hill_model_fourier, only: fourier_model_t
+   use hillstab_hill_model_sampled, only: sampled_model_t
    implicit none
    private
    public :: model_names, model_count, new_model, model_from_code, model_code, model_names_text
 
    !> The registered models' names, in the order of their codes (code = position).
-   character(len=*), parameter :: model_names(3) = [character(len=16) :: "elastic", "mathieu", "meissner"]
+   character(len=*), parameter :: model_names(5) = [character(len=16) :: "elastic", "mathieu", "meissner", "fourier", &
+      "sampled"]
    !> Number of models; their codes are 1 … model_count.
    integer, parameter :: model_count = size(model_names)
 
@@ -60,6 +65,8 @@ contains
       case (1); allocate (model, source=elastic_model_t())
       case (2); allocate (model, source=mathieu_model_t())
       case (3); allocate (model, source=meissner_model_t())
+      case (4); allocate (model, source=fourier_model_t())
+      case (5); allocate (model, source=sampled_model_t())
       case default
          call set_error(error, err_invalid_parameter, "unknown model code "//integer_text(code)//" (expected 1 to "// &
             integer_text(model_count)//")")
