@@ -408,20 +408,33 @@ def check_signals(hillstab, work):
     scene = os.path.join(work, "signal.nml")
     with open(scene, "w") as f:
         f.write("&scene method='magnus6', tolerance=1e-12, output='out/signal' /\n"
-                "&chart n_alpha=2000, n_beta=2000 /\n")
+                "&chart n_alpha=200, n_beta=200 /\n")
     old = os.path.join(work, "out", "signal_chart.dat")
     for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
         with open(old, "w") as f:
             f.write("old\n")
-        proc = subprocess.Popen([hillstab, "--quiet", "signal.nml"], cwd=work, stdin=subprocess.DEVNULL,
-                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        # wait until the temporary file exists (the chart has started writing)
-        deadline = time.monotonic() + 20
-        while time.monotonic() < deadline and not glob.glob(old + ".part*") and proc.poll() is None:
+        # the chart waits after its first row (the test hook), so that the signal lands
+        # mid-run whatever the machine's speed
+        err_path = os.path.join(work, "signal.err")
+        env = dict(os.environ, HILLSTAB_TEST_PAUSE_AFTER_UNITS="1")
+        with open(err_path, "w") as err:
+            proc = subprocess.Popen([hillstab, "--quiet", "signal.nml"], cwd=work, stdin=subprocess.DEVNULL,
+                                    stdout=subprocess.DEVNULL, stderr=err, env=env)
+        deadline = time.monotonic() + 60
+        while time.monotonic() < deadline and proc.poll() is None:
+            with open(err_path) as f:
+                if "test hook: paused" in f.read():
+                    break
             time.sleep(0.05)
-        time.sleep(0.3)
-        if proc.poll() is not None:
-            problems.append("signal %d: the chart ended before the signal (status %d)" % (sig, proc.returncode))
+        with open(err_path) as f:
+            paused = "test hook: paused" in f.read()
+        os.remove(err_path)
+        if not paused:
+            if proc.poll() is None:
+                proc.kill()
+                proc.wait()
+            problems.append("signal %d: precondition not reached: the chart ended (status %s) or ran a minute "
+                            "before it paused after its first row; nothing was tested" % (sig, proc.returncode))
             continue
         proc.send_signal(sig)
         try:

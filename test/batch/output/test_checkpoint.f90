@@ -33,6 +33,8 @@ module test_checkpoint
    end type fixture_t
 
    type(fixture_t), save :: chart, map
+   !> The status of `stop_program` when the run did not reach the units it was to be stopped at.
+   integer, parameter :: not_reached = 250
 
 contains
 
@@ -85,31 +87,51 @@ contains
       status = shell("OMP_NUM_THREADS="//trim(text)//" '"//program_path()//"' "//arguments//" 2>'"//err//"'")
    end function run_program
 
-   !> Start the program on one thread with `arguments`, and once the checkpoint's state
-   !> `state` records at least `units` units, send it `signal` (KILL, TERM); the program's
-   !> exit status as the shell sees it (137 killed, 143 after SIGTERM, 0 when it ended first).
+   !> Start the program on one thread with `arguments` and the test hook
+   !> HILLSTAB_TEST_PAUSE_AFTER_UNITS=`units` (it waits once unit `units` is written and,
+   !> with --checkpoint-interval 0, recorded), and once the checkpoint's state `state`
+   !> records at least `units` units, send it `signal` (KILL, TERM): the signal lands
+   !> mid-run whatever the machine's speed. The program's exit status as the shell sees it
+   !> (137 killed, 143 after SIGTERM); `not_reached` when the run ended, or ran two minutes,
+   !> without its checkpoint recording `units` units (no signal was sent: see `reached`).
    integer function stop_program(arguments, state, units, signal, err) result(status)
       character(len=*), intent(in) :: arguments, state, signal, err
       integer, intent(in) :: units
       character(len=:), allocatable :: script
       character(len=8) :: text
       script = scratch_prefix("stop.sh")
-      call write_file(script, [character(len=100) :: &
+      call write_file(script, [character(len=120) :: &
          'units=$1; sig=$2; state=$3; err=$4; shift 4', &
-         'OMP_NUM_THREADS=1 "$@" 2>"$err" &', &
-         'pid=$!; n=0', &
+         'HILLSTAB_TEST_PAUSE_AFTER_UNITS=$units OMP_NUM_THREADS=1 "$@" 2>"$err" &', &
+         'pid=$!; n=0; sent=0', &
          'while kill -0 $pid 2>/dev/null; do', &
          '   u=$(sed -n "s/^units = \([0-9]*\) .*/\1/p" "$state" 2>/dev/null)', &
-         '   if [ "${u:-0}" -ge "$units" ]; then kill -"$sig" $pid; break; fi', &
+         '   if [ "${u:-0}" -ge "$units" ]; then kill -"$sig" $pid; sent=1; break; fi', &
          '   n=$((n + 1)); if [ $n -ge 12000 ]; then kill -KILL $pid; break; fi', &
          '   sleep 0.01', &
          'done', &
-         '{ wait $pid; } 2>/dev/null'])
+         '{ wait $pid; } 2>/dev/null; status=$?', &
+         '[ $sent = 1 ] && exit $status', &
+         'echo "test: the run ended with status $status, its checkpoint holding ${u:-no} units" >>"$err"', &
+         'exit 250'])
       write (text, '(i0)') units
       status = shell("bash '"//script//"' "//trim(text)//" "//signal//" '"//state//"' '"//err//"' '"// &
                      program_path()//"' "//arguments)
       call delete_file(script)
    end function stop_program
+
+   !> Whether `stop_program` reached its precondition (the checkpoint recorded the units, the
+   !> signal was sent while the run went on); when not, a failed check that says so.
+   logical function reached(ctx, status, units, label)
+      type(test_context_t), intent(inout) :: ctx
+      integer, intent(in) :: status  !! of stop_program
+      integer, intent(in) :: units   !! the units the signal was to wait for
+      character(len=*), intent(in) :: label
+      reached = status /= not_reached
+      if (.not. reached) call check(ctx, .false., label//": precondition not reached: the run ended (or ran two "// &
+         "minutes) before its checkpoint recorded "//integer_text(units)//" units, so the signal could not land "// &
+         "mid-run; nothing was tested")
+   end function reached
 
    !> The units done and the bytes a checkpoint's state records (-1 when it has none).
    subroutine state_of(directory, units, bytes)
@@ -222,6 +244,7 @@ contains
       directory = checkpoint_directory(f%output)
       err = scratch_prefix("ck.err")
       status = stop_program("--quiet --checkpoint-interval 0 '"//f%scene//"'", directory//"/state", units, "KILL", err)
+      if (.not. reached(ctx, status, units, label)) return
       call check(ctx, status == 137, label//": killed while it ran (status "//integer_text(status)//")")
       call state_of(directory, done, bytes)
       call check(ctx, done >= units .and. done < f%n_units, label//": the checkpoint records "//integer_text(done)// &
@@ -290,6 +313,7 @@ contains
       directory = checkpoint_directory(chart%output)
       err = scratch_prefix("ck_term.err")
       status = stop_program("--quiet --checkpoint-interval 0 '"//chart%scene//"'", directory//"/state", 5, "TERM", err)
+      if (.not. reached(ctx, status, 5, "SIGTERM after 5 units")) return
       call check(ctx, status == 143, "exit 143 (status "//integer_text(status)//")")
       call check(ctx, file_says(err, "stopped by signal 15"), "says which signal")
       call check(ctx, file_says(err, "hillstab --resume "//chart%scene), "says how to resume")
@@ -318,6 +342,7 @@ contains
       err = scratch_prefix("ck_other.err")
       other = scratch_prefix("ck_other.nml")
       status = stop_program("--quiet --checkpoint-interval 0 '"//chart%scene//"'", directory//"/state", 2, "KILL", err)
+      if (.not. reached(ctx, status, 2, "SIGKILL after 2 units")) return
       before = read_lines(directory//"/state")
       call write_file(other, [ &
          padded("&scene task='chart', method='magnus6', tolerance=1e-12, output='"//scratch_prefix("ck_chart")//"' /"), &
@@ -375,6 +400,7 @@ contains
       directory = checkpoint_directory(map%output)
       err = scratch_prefix("ck_discard.err")
       status = stop_program("--quiet --checkpoint-interval 0 '"//map%scene//"'", directory//"/state", 3, "KILL", err)
+      if (.not. reached(ctx, status, 3, "SIGKILL after 3 units")) return
       call check(ctx, status == 137 .and. directory_exists(directory), "a checkpoint is left")
       call check(ctx, any_temp_file(map%output), "and the killed run's temporary file")
       status = run_program("--quiet '"//map%scene//"'", err, 2)
@@ -436,30 +462,41 @@ contains
       call delete_file(scene)
    end subroutine planted_links_not_followed
 
-   !> While a run writes its checkpoint, a second run of the same output (with or without
-   !> `--resume`) is refused (exit 2) and changes nothing.
+   !> While a run writes its output, a second run of the same output (with or without
+   !> `--resume`) is refused (exit 2) and changes nothing: once the first keeps a checkpoint
+   !> (interval 0: from its start), and before it has made one (the default interval).
    subroutine second_run_refused(ctx)
       type(test_context_t), intent(inout) :: ctx
-      character(len=:), allocatable :: directory, err, script
-      integer :: status
+      character(len=:), allocatable :: directory, err, script, interval
+      integer :: status, round
       call chart_fixture()
       if (.not. chart%ready) return
       directory = checkpoint_directory(chart%output)
       err = scratch_prefix("ck_second.err")
       script = scratch_prefix("second.sh")
+      ! the first run waits after its first row (the test hook) while the others start
       call write_file(script, [character(len=200) :: &
-         'OMP_NUM_THREADS=1 "$1" --quiet --checkpoint-interval 0 "$2" 2>/dev/null &', &
+         'HILLSTAB_TEST_PAUSE_AFTER_UNITS=1 OMP_NUM_THREADS=1 "$1" --quiet "${@:5}" "$2" 2>"$4.first" &', &
          'pid=$!; n=0', &
-         'until [ -e "$3/state" ] || [ $n -ge 3000 ]; do sleep 0.01; n=$((n + 1)); done', &
+         'until grep -q "test hook: paused" "$4.first" 2>/dev/null || ! kill -0 $pid 2>/dev/null; do', &
+         '   n=$((n + 1)); if [ $n -ge 12000 ]; then break; fi; sleep 0.01', &
+         'done', &
+         'if ! grep -q "test hook: paused" "$4.first"; then kill -KILL $pid; wait $pid; rm -f "$4.first"; exit 250; fi', &
          '"$1" --quiet "$2" 2>"$4"; first=$?', &
          '"$1" --quiet --resume "$2" 2>>"$4"; second=$?', &
-         'kill -TERM $pid; wait $pid', &
+         'kill -TERM $pid; wait $pid; rm -f "$4.first"', &
          '[ $first = 2 ] && [ $second = 2 ]'])
-      status = shell("bash '"//script//"' '"//program_path()//"' '"//chart%scene//"' '"//directory//"' '"//err//"'")
-      call check(ctx, status == 0, "both refused with exit 2")
-      call check(ctx, file_says(err, "is in use by another run"), "says why")
-      call check(ctx, .not. file_exists(chart%output), "no output file")
-      status = shell("rm -rf '"//directory//"'")
+      do round = 1, 2
+         interval = merge("--checkpoint-interval 0", "                       ", round == 1)
+         status = shell("bash '"//script//"' '"//program_path()//"' '"//chart%scene//"' '"//directory//"' '"// &
+                        err//"' "//trim(interval))
+         if (.not. reached(ctx, status, 1, "round "//integer_text(round))) exit
+         call check(ctx, status == 0, "both refused with exit 2, round "//integer_text(round))
+         call check(ctx, file_says(err, "is in use by another run"), "says why, round "//integer_text(round))
+         call check(ctx, .not. file_exists(chart%output), "no output file")
+         call check(ctx, .not. any_temp_file(chart%output), "no temporary file left")
+         status = shell("rm -rf '"//directory//"'")
+      end do
       call delete_file(script)
       call delete_file(err)
       call release_fixture(chart)

@@ -90,7 +90,14 @@ module hillstab_batch_run_units
       character(len=:), allocatable :: checkpoint  !! its directory
       type(checkpoint_state_t) :: state      !! what it records (as of its last update)
       integer(int64) :: checkpoint_clock = 0  !! system_clock at its last update (or the start)
+      !> the test hook's unit (`pause_hook`): the writer waits once this unit is written (0: never)
+      integer :: pause_after = 0
    end type batch_t
+
+   !> The environment variable of the test hook (`pause_hook`).
+   character(len=*), parameter :: pause_variable = "HILLSTAB_TEST_PAUSE_AFTER_UNITS"
+   !> Longest wait of the test hook [s].
+   integer, parameter :: pause_seconds = 60
 
    !> The computed text of one unit.
    type :: batch_result_t
@@ -223,6 +230,7 @@ contains
       batch%first_unit = 1
       batch%checkpoint_made = .false.
       batch%checkpointing = present(options)
+      batch%pause_after = pause_hook()
       resumed = .false.
       if (batch%checkpointing) then
          batch%options = options
@@ -481,7 +489,40 @@ contains
       if (batch%checkpointing) then
          if (checkpoint_due(batch)) call update_checkpoint(batch, error)
       end if
+      if (batch%pause_after > 0 .and. result%unit >= batch%pause_after .and. .not. allocated(error)) &
+         call test_pause(batch, result%unit)
    end subroutine batch_write
+
+   !> The test hook: the unit after which the writer of a batch waits, from the environment
+   !> variable HILLSTAB_TEST_PAUSE_AFTER_UNITS (read once, when the batch opens; 0 when it is
+   !> unset or not a positive whole number). Only the tests set it: a test that kills a
+   !> run (SIGKILL, SIGTERM, a killed MPI rank) waits for the pause, so that its signal lands
+   !> mid-run however fast the machine is.
+   integer function pause_hook() result(unit)
+      character(len=16) :: text
+      integer :: length, status, ios
+      unit = 0
+      call get_environment_variable(pause_variable, text, length, status)
+      if (status /= 0 .or. length == 0) return
+      if (verify(text(:length), "0123456789") /= 0) return
+      read (text(:length), *, iostat=ios) unit
+      if (ios /= 0 .or. unit < 0) unit = 0
+   end function pause_hook
+
+   !> The test hook's wait: the units 1 … `unit` are written (and, with the checkpoint
+   !> interval 0, recorded in the checkpoint); say so on stderr and sleep, at most a minute,
+   !> then go on. Once per run.
+   subroutine test_pause(batch, unit)
+      type(batch_t), intent(inout) :: batch
+      integer, intent(in) :: unit
+      integer :: k
+      batch%pause_after = 0
+      call checkpoint_note(batch%options, "test hook: paused after unit "//integer_text(unit)//" of "// &
+         integer_text(batch%n_units)//" ("//pause_variable//")")
+      do k = 1, 20*pause_seconds
+         call pause_for(50000000_c_long)
+      end do
+   end subroutine test_pause
 
    !> Whether the checkpoint's interval has passed since its last update.
    logical function checkpoint_due(batch)
@@ -695,10 +736,16 @@ contains
 
    !> Wait a millisecond.
    subroutine pause_briefly()
+      call pause_for(1000000_c_long)
+   end subroutine pause_briefly
+
+   !> Wait `nanoseconds` (< 1 s).
+   subroutine pause_for(nanoseconds)
+      integer(c_long), intent(in) :: nanoseconds
       type(timespec_t) :: remaining
       integer(c_int) :: status
-      status = c_nanosleep(timespec_t(0_c_long, 1000000_c_long), remaining)
-   end subroutine pause_briefly
+      status = c_nanosleep(timespec_t(0_c_long, nanoseconds), remaining)
+   end subroutine pause_for
 
    !> Number of OpenMP threads a parallel region will use (1 without OpenMP).
    integer function max_threads()
