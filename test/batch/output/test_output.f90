@@ -6,13 +6,19 @@
 module test_output
    use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, err_io, err_input
+   use hillstab_core_text, only: integer_text
+   use hillstab_batch_run_cli, only: exit_status
    use hillstab_batch_output_file, only: output_file_t, open_output, write_text, commit_output, discard_output
    use hillstab_batch_run_scenes, only: run_scene_file
    use hillstab_batch_output_progress, only: rate_text
    use hillstab_testing
    use hillstab_fault_injection, only: check_writer_under_limit, limit_file_size, lift_file_size_limit, &
       limit_address_space, lift_address_space_limit
-   use hillstab_test_scratch, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text
+   use hillstab_test_scratch, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text, &
+      any_temp_file
+   use hillstab_batch_output_checkpoint, only: checkpoint_options_t
+   use hillstab_ffi_libc, only: c_fopen, c_fclose, c_string, lock_state, lock_taken
+   use, intrinsic :: iso_c_binding, only: c_ptr, c_int, c_associated
    implicit none
    private
    public :: collect_output
@@ -30,6 +36,8 @@ contains
          new_unittest("directory_output_refused", directory_output_refused), &
          new_unittest("output_larger_than_free_space", output_larger_than_free_space), &
          new_unittest("buffers_larger_than_memory", buffers_larger_than_memory), &
+         new_unittest("stale_temporary_removed", stale_temporary_removed), &
+         new_unittest("busy_temporary_refused", busy_temporary_refused), &
          new_unittest("progress_rate_text", progress_rate_text)])
    end function collect_output
 
@@ -212,6 +220,120 @@ contains
       call delete_file(out//"_chart.dat")
       call delete_file(scene)
    end subroutine buffers_larger_than_memory
+   !> A small scene of every task (chart in text and in binary, points, lyapunov,
+   !> coefficient, series, boundaries, poincare) writing `<prefix>k_<task>.<ext>`: its
+   !> scene file and its output.
+   subroutine every_task(prefix, k, scene, output)
+      character(len=*), intent(in) :: prefix
+      integer, intent(in) :: k  !! 1 … 8
+      character(len=:), allocatable, intent(out) :: scene, output
+      character(len=:), allocatable :: out
+      character(len=:), allocatable :: lines(:)
+      out = prefix//achar(iachar("0") + k)
+      scene = out//".nml"
+      select case (k)
+      case (1)
+         lines = [padded("&scene method='formula', output='"//out//"' /"), padded("&chart n_alpha=3, n_beta=4 /")]
+         output = out//"_chart.dat"
+      case (2)
+         lines = [padded("&scene method='formula', format='binary', output='"//out//"' /"), &
+                  padded("&chart n_alpha=3, n_beta=4 /")]
+         output = out//"_chart.bin"
+      case (3)
+         call write_file(out//"_pts.txt", ["1.0 2.0", "3.0 4.0"])
+         lines = [padded("&scene task='points', method='formula', output='"//out//"' /"), &
+                  padded("&points file='"//out//"_pts.txt' /")]
+         output = out//"_points.dat"
+      case (4)
+         lines = [padded("&scene task='lyapunov', output='"//out//"' /"), padded("&series phi0=0.017, periods=2 /"), &
+                  padded("&chart n_alpha=2, n_beta=2 /")]
+         output = out//"_lyapunov.dat"
+      case (5)
+         lines = [padded("&scene task='coefficient', output='"//out//"' /"), padded("&coefficient n_tau=5 /")]
+         output = out//"_coefficient.dat"
+      case (6)
+         lines = [padded("&scene task='series', output='"//out//"' /"), &
+                  padded("&series periods=1, samples_per_period=5 /")]
+         output = out//"_series.dat"
+      case (7)
+         lines = [padded("&scene task='boundaries', method='formula', output='"//out//"' /"), &
+                  padded("&chart n_alpha=3 /")]
+         output = out//"_boundaries.dat"
+      case default
+         lines = [padded("&scene task='poincare', output='"//out//"' /"), padded("&series periods=2 /")]
+         output = out//"_poincare.dat"
+      end select
+      call write_file(scene, lines)
+   end subroutine every_task
+
+   !> A temporary file a killed run of each task's output left (named as the writer names
+   !> them, nobody holding its lock) is removed by the next run of that output, with or
+   !> without `--resume`, and the run writes its file.
+   subroutine stale_temporary_removed(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: scene, output
+      integer :: k, round
+      do round = 1, 2
+         do k = 1, 8
+            call every_task(scratch_prefix("stale"), k, scene, output)
+            call write_file(output//".partAb12Cd", ["a row of a killed run"])
+            call write_file(output//".partZz99zz", ["another"])
+            call run_scene_file(scene, .true., error, options=checkpoint_options_t(resume=round == 2))
+            if (k == 2 .and. round == 2) then
+               ! a binary chart keeps no checkpoint: --resume is bad input, refused before
+               ! anything is touched
+               call check(ctx, allocated(error), "binary --resume refused")
+               call check(ctx, any_temp_file(output), "and nothing touched")
+               call delete_file(output//".partAb12Cd")
+               call delete_file(output//".partZz99zz")
+            else
+               call check(ctx, .not. allocated(error), "task "//integer_text(k)//" runs")
+               call check(ctx, file_exists(output), "and writes "//output)
+               call check(ctx, .not. any_temp_file(output), "task "//integer_text(k)//", round "// &
+                          integer_text(round)//": the stale temporary files are removed")
+            end if
+            call delete_file(output)
+            call delete_file(scene)
+         end do
+      end do
+      call delete_file(scratch_prefix("stale")//"3_pts.txt")
+   end subroutine stale_temporary_removed
+
+   !> A temporary file of the output whose lock is held (another run writing it): every
+   !> task refuses the run (exit 2, "in use by another run"), writes nothing and leaves
+   !> that file alone.
+   subroutine busy_temporary_refused(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: scene, output
+      type(c_ptr) :: held
+      integer(c_int) :: status
+      integer :: k
+      do k = 1, 8
+         call every_task(scratch_prefix("busy"), k, scene, output)
+         call write_file(output//".partAb12Cd", ["a row of a running run"])
+         held = c_fopen(c_string(output//".partAb12Cd"), c_string("r"))
+         call check(ctx, c_associated(held), "opened")
+         if (.not. c_associated(held)) cycle
+         call check(ctx, lock_state(held) == lock_taken, "its lock held here")
+         call run_scene_file(scene, .true., error)
+         call check(ctx, allocated(error), "task "//integer_text(k)//": refused")
+         if (allocated(error)) then
+            call check(ctx, exit_status(error) == 2, "exit 2: "//error%message)
+            call check(ctx, contains_text(error%message, scene//": &scene: output: ") .and. &
+                       contains_text(error%message, "in use by another run"), "says why: "//error%message)
+         end if
+         call check(ctx, .not. file_exists(output), "no output")
+         call check(ctx, file_exists(output//".partAb12Cd"), "the other run's file is kept")
+         status = c_fclose(held)
+         call delete_file(output//".partAb12Cd")
+         call check(ctx, .not. any_temp_file(output), "no temporary file of its own left")
+         call delete_file(scene)
+      end do
+      call delete_file(scratch_prefix("busy")//"3_pts.txt")
+   end subroutine busy_temporary_refused
+
    !> The rate of the progress line: a unit taking half a minute (a block of Hill's matrix near
    !> alpha = pi^2) showed as "0 Hill blocks/s".
    subroutine progress_rate_text(ctx)
