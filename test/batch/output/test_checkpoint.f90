@@ -46,6 +46,7 @@ contains
          new_unittest("sigterm_keeps_checkpoint", sigterm_keeps_checkpoint), &
          new_unittest("damaged_checkpoint_refused", damaged_checkpoint_refused), &
          new_unittest("probe_digit_flip_refused", probe_digit_flip_refused), &
+         new_unittest("killed_before_checkpoint", killed_before_checkpoint), &
          new_unittest("other_scene_refused", other_scene_refused), &
          new_unittest("resume_without_checkpoint", resume_without_checkpoint), &
          new_unittest("discarded_without_resume", discarded_without_resume), &
@@ -122,18 +123,24 @@ contains
       call delete_file(script)
    end function stop_program
 
-   !> Whether `stop_program` reached its precondition (the checkpoint recorded the units, the
-   !> signal was sent while the run went on); when not, a failed check that says so.
-   logical function reached(ctx, status, units, label)
+   !> Whether `stop_program` or `kill_when` reached its precondition (`condition`: what the
+   !> signal waited for); when not, a failed check that says so.
+   logical function reached(ctx, status, condition, label)
       type(test_context_t), intent(inout) :: ctx
-      integer, intent(in) :: status  !! of stop_program
-      integer, intent(in) :: units   !! the units the signal was to wait for
+      integer, intent(in) :: status  !! of stop_program or kill_when
+      character(len=*), intent(in) :: condition  !! "its checkpoint recorded 5 units"
       character(len=*), intent(in) :: label
       reached = status /= not_reached
       if (.not. reached) call check(ctx, .false., label//": precondition not reached: the run ended (or ran two "// &
-         "minutes) before its checkpoint recorded "//integer_text(units)//" units, so the signal could not land "// &
-         "mid-run; nothing was tested")
+         "minutes) before "//condition//", so the signal could not land mid-run; nothing was tested")
    end function reached
+
+   !> "its checkpoint recorded 5 units".
+   function units_text(units) result(text)
+      integer, intent(in) :: units
+      character(len=:), allocatable :: text
+      text = "its checkpoint recorded "//integer_text(units)//" units"
+   end function units_text
 
    !> The units done and the bytes a checkpoint's state records (-1 when it has none).
    subroutine state_of(directory, units, bytes)
@@ -247,7 +254,12 @@ contains
       directory = checkpoint_directory(f%output)
       err = scratch_prefix("ck.err")
       status = stop_program("--quiet --checkpoint-interval 0 '"//f%scene//"'", directory//"/state", units, "KILL", err)
-      if (.not. reached(ctx, status, units, label)) return
+      if (.not. reached(ctx, status, units_text(units), label)) then
+         ! what the run that ended wrote must not fail the next check of the caller
+         call delete_file(f%output)
+         status = shell("rm -rf '"//directory//"'")
+         return
+      end if
       call check(ctx, status == 137, label//": killed while it ran (status "//integer_text(status)//")")
       call state_of(directory, done, bytes)
       call check(ctx, done >= units .and. done < f%n_units, label//": the checkpoint records "//integer_text(done)// &
@@ -312,7 +324,7 @@ contains
       saved = directory//".saved"
       err = scratch_prefix("ck_damaged.err")
       status = stop_program("--quiet --checkpoint-interval 0 '"//chart%scene//"'", directory//"/state", 10, "KILL", err)
-      if (.not. reached(ctx, status, 10, "SIGKILL after 10 rows")) return
+      if (.not. reached(ctx, status, units_text(10), "SIGKILL after 10 rows")) return
       status = shell("rm -rf '"//saved//"' && cp -a '"//directory//"' '"//saved//"'")
       ! the fifth data line of `data` (a recorded row: 10 rows of 300 lines are recorded)
       row = "$(($(grep -n -m1 -v '^#' data | cut -d: -f1) + 4))"
@@ -370,7 +382,7 @@ contains
       call write_file(scene, [padded("&scene method='magnus6', tolerance=1e-12, output='"//prefix//"' /"), &
                               padded("&chart n_alpha=200, n_beta=200 /")])
       status = stop_program("--quiet --checkpoint-interval 0 '"//scene//"'", directory//"/state", 20, "KILL", err)
-      if (.not. reached(ctx, status, 20, "SIGKILL after 20 rows")) return
+      if (.not. reached(ctx, status, units_text(20), "SIGKILL after 20 rows")) return
       status = shell("cd '"//directory//"' && cp data data.before && n=$(($(grep -n -m1 -v '^#' data | cut -d: -f1) "// &
                      "+ 1000)) && sed -i -E ""${n}{s/0e/1e/;t;s/[1-9]e/0e/}"" data && ! cmp -s data data.before && "// &
                      "rm data.before")
@@ -385,6 +397,75 @@ contains
       call delete_file(err)
    end subroutine probe_digit_flip_refused
 
+   !> Run the program with `arguments` (and `environment`, assignments before it) and send it
+   !> SIGKILL once a file `<output>.part??????` exists and, when `mark` is given, its stderr
+   !> `err` holds `mark`: 137, or `not_reached` when the run ended (or ran two minutes) first.
+   integer function kill_when(environment, arguments, output, mark, err) result(status)
+      character(len=*), intent(in) :: environment, arguments, output, mark, err
+      character(len=:), allocatable :: script
+      script = scratch_prefix("kill_when.sh")
+      call write_file(script, [character(len=160) :: &
+         'output=$1; mark=$2; err=$3; shift 3', &
+         'env "$@" 2>"$err" &', &
+         'pid=$!; n=0; exec 2>/dev/null', &
+         'while kill -0 $pid; do', &
+         '   set -- "$output".part??????', &
+         '   if [ -e "$1" ] && { [ -z "$mark" ] || grep -q "$mark" "$err"; }; then kill -KILL $pid; wait $pid; exit $?; fi', &
+         '   n=$((n + 1)); if [ $n -ge 12000 ]; then kill -KILL $pid; break; fi', &
+         '   sleep 0.01', &
+         'done', &
+         'wait $pid; echo "test: the run ended with status $? before it could be killed" >>"$err"', &
+         'exit 250'])
+      status = shell("bash '"//script//"' '"//output//"' '"//mark//"' '"//err//"' "//environment//" '"// &
+                     program_path()//"' "//arguments)
+      call delete_file(script)
+   end function kill_when
+
+   !> SIGKILL before the first checkpoint leaves the temporary output (nothing else can
+   !> remove it); the next run of the same output removes it, says so, and writes its file:
+   !> a chart stopped after its first row (the test hook, the default checkpoint interval)
+   !> and a boundaries run stopped in its first block of Hill's matrix (alpha = 1, beta up
+   !> to 1e6: a block of a minute or more), each followed by a run without `--resume`.
+   subroutine killed_before_checkpoint(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: err, prefix, scene, output
+      integer :: status
+      call chart_fixture()
+      if (.not. chart%ready) return
+      err = scratch_prefix("ck_early.err")
+      status = kill_when("HILLSTAB_TEST_PAUSE_AFTER_UNITS=1 OMP_NUM_THREADS=1", "--quiet '"//chart%scene//"'", &
+                         chart%output, "test hook: paused", err)
+      if (reached(ctx, status, "it paused after its first row", "chart")) then
+         call check(ctx, status == 137, "chart: killed (status "//integer_text(status)//")")
+         call check(ctx, any_temp_file(chart%output), "chart: its temporary file is left")
+         status = shell("rm -rf '"//checkpoint_directory(chart%output)//"'")
+         status = run_program("--quiet '"//chart%scene//"'", err, 2)
+         call check(ctx, status == 0 .and. same_file(chart%output, chart%reference), "chart: the next run writes its file")
+         call check(ctx, file_says(err, "removed '"//chart%output//".part"), "chart: and says it removed the old one")
+         call check(ctx, .not. any_temp_file(chart%output), "chart: no temporary file")
+      end if
+      call delete_file(chart%output)
+      call release_fixture(chart)
+      prefix = scratch_prefix("ck_bnd")
+      scene = prefix//".nml"
+      output = prefix//"_boundaries.dat"
+      call write_file(scene, [padded("&scene task='boundaries', output='"//prefix//"' /"), &
+                              padded("&chart alpha_min=1, alpha_max=1, n_alpha=1, beta_min=0, beta_max=1e6 /")])
+      status = kill_when("OMP_NUM_THREADS=1", "--quiet '"//scene//"'", output, "", err)
+      if (reached(ctx, status, "its temporary file appeared", "boundaries")) then
+         call check(ctx, status == 137 .and. any_temp_file(output), "boundaries: killed, its temporary file left")
+         call write_file(scene, [padded("&scene task='boundaries', method='formula', output='"//prefix//"' /"), &
+                                 padded("&chart n_alpha=3 /")])
+         status = run_program("--quiet --resume '"//scene//"'", err, 2)
+         call check(ctx, status == 0 .and. file_exists(output), "boundaries: the next run (--resume) writes its file")
+         call check(ctx, file_says(err, "removed '"//output//".part"), "boundaries: and says it removed the old one")
+         call check(ctx, .not. any_temp_file(output), "boundaries: no temporary file")
+      end if
+      call delete_file(output)
+      call delete_file(scene)
+      call delete_file(err)
+   end subroutine killed_before_checkpoint
+
    !> SIGTERM: exit 143, the temporary file removed, the checkpoint kept, a message saying
    !> how to resume; the resumed run writes the uninterrupted file.
    subroutine sigterm_keeps_checkpoint(ctx)
@@ -397,7 +478,7 @@ contains
       directory = checkpoint_directory(chart%output)
       err = scratch_prefix("ck_term.err")
       status = stop_program("--quiet --checkpoint-interval 0 '"//chart%scene//"'", directory//"/state", 5, "TERM", err)
-      if (.not. reached(ctx, status, 5, "SIGTERM after 5 units")) return
+      if (.not. reached(ctx, status, units_text(5), "SIGTERM after 5 units")) return
       call check(ctx, status == 143, "exit 143 (status "//integer_text(status)//")")
       call check(ctx, file_says(err, "stopped by signal 15"), "says which signal")
       call check(ctx, file_says(err, "hillstab --resume "//chart%scene), "says how to resume")
@@ -426,7 +507,7 @@ contains
       err = scratch_prefix("ck_other.err")
       other = scratch_prefix("ck_other.nml")
       status = stop_program("--quiet --checkpoint-interval 0 '"//chart%scene//"'", directory//"/state", 2, "KILL", err)
-      if (.not. reached(ctx, status, 2, "SIGKILL after 2 units")) return
+      if (.not. reached(ctx, status, units_text(2), "SIGKILL after 2 units")) return
       before = read_lines(directory//"/state")
       call write_file(other, [ &
          padded("&scene task='chart', method='magnus6', tolerance=1e-12, output='"//scratch_prefix("ck_chart")//"' /"), &
@@ -484,7 +565,7 @@ contains
       directory = checkpoint_directory(map%output)
       err = scratch_prefix("ck_discard.err")
       status = stop_program("--quiet --checkpoint-interval 0 '"//map%scene//"'", directory//"/state", 3, "KILL", err)
-      if (.not. reached(ctx, status, 3, "SIGKILL after 3 units")) return
+      if (.not. reached(ctx, status, units_text(3), "SIGKILL after 3 units")) return
       call check(ctx, status == 137 .and. directory_exists(directory), "a checkpoint is left")
       call check(ctx, any_temp_file(map%output), "and the killed run's temporary file")
       status = run_program("--quiet '"//map%scene//"'", err, 2)
@@ -574,7 +655,7 @@ contains
          interval = merge("--checkpoint-interval 0", "                       ", round == 1)
          status = shell("bash '"//script//"' '"//program_path()//"' '"//chart%scene//"' '"//directory//"' '"// &
                         err//"' "//trim(interval))
-         if (.not. reached(ctx, status, 1, "round "//integer_text(round))) exit
+         if (.not. reached(ctx, status, "it paused after its first row", "round "//integer_text(round))) exit
          call check(ctx, status == 0, "both refused with exit 2, round "//integer_text(round))
          call check(ctx, file_says(err, "is in use by another run"), "says why, round "//integer_text(round))
          call check(ctx, .not. file_exists(chart%output), "no output file")
