@@ -21,7 +21,8 @@ module hillstab_ffi_libc
       c_f_pointer, c_associated
    implicit none
    private
-   public :: c_mkstemp, c_fdopen, c_fchmod, c_umask, c_close, c_getrlimit, rlimit_t, rlimit_as, c_getpagesize
+   public :: c_mkstemp, c_fdopen, c_fchmod, c_umask, c_close, c_getrlimit, rlimit_t, rlimit_as, rlimit_stack, &
+      c_getpagesize
    public :: c_rename, c_remove, c_unlink, c_getpid, c_fopen, c_fwrite, c_fwrite_raw, c_fflush, c_fclose, c_fileno, &
       c_fsync, c_signal, c_exit_now, c_isatty, c_statvfs, statvfs_t
    public :: errno_text, set_errno, c_string, remove_file, is_directory, is_special_file, c_mkdir
@@ -64,6 +65,8 @@ module hillstab_ffi_libc
 
    !> RLIMIT_AS (Linux): the largest address space of the process.
    integer(c_int), parameter :: rlimit_as = 9
+   !> RLIMIT_STACK (Linux): the stack of the main thread (and glibc's default for new threads).
+   integer(c_int), parameter :: rlimit_stack = 3
 
    !> struct rlimit on 64-bit Linux (RLIM_INFINITY is all ones: -1 here).
    type, bind(C) :: rlimit_t

@@ -18,7 +18,7 @@ module test_checkpoint
    use hillstab_fault_injection, only: limit_file_size, lift_file_size_limit
    use hillstab_testing
    use hillstab_test_scratch, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text, &
-      any_temp_file
+      any_temp_file, program_path
    implicit none
    private
    public :: collect_checkpoint
@@ -57,20 +57,6 @@ contains
          new_unittest("scene_differences", scene_differences), &
          new_unittest("long_output_names", long_output_names)])
    end function collect_checkpoint
-
-   !> The hillstab program of this build: `<build>/app/hillstab` beside `<build>/test/…`.
-   function program_path() result(path)
-      character(len=:), allocatable :: path
-      character(len=4096) :: self
-      integer :: at
-      call get_command_argument(0, self)
-      at = index(self, "/test/", back=.true.)
-      if (at == 0) then
-         path = "hillstab"
-      else
-         path = self(:at)//"app/hillstab"
-      end if
-   end function program_path
 
    !> Run a shell command; its exit status.
    integer function shell(command) result(status)

@@ -42,6 +42,7 @@ module hillstab_batch_tasks_boundaries
       columns_text, put_row, all_columns, column_lines
    use hillstab_batch_output_file, only: output_file_t, finish_output, discard_output, write_header, write_text
    use hillstab_core_text, only: real_text, integer_text
+   use hillstab_batch_run_units, only: max_threads
    implicit none
    private
    public :: boundaries_task_t, boundaries_task, boundary_row_t, compute_boundary_rows
@@ -81,6 +82,8 @@ module hillstab_batch_tasks_boundaries
       procedure :: read => boundaries_read
       procedure :: run => boundaries_run
       procedure :: declarations => boundaries_declarations
+      procedure :: memory_bytes => boundaries_memory_bytes
+      procedure :: memory_variables => boundaries_memory_variables
    end type boundaries_task_t
 
 contains
@@ -94,6 +97,45 @@ contains
       if (self%spring) deallocate (groups)
       if (self%spring) allocate (groups(0))
    end function boundaries_declarations
+
+   !> An upper estimate of the memory of a run over the grid: for every α its rows and (exact
+   !> methods) its four blocks of Hill's matrix with their eigenvalues up to the top of the
+   !> β window (about sqrt(β + |α|)/π + 2 a block, values and changes) and the curves they
+   !> give (one row each), held until the file is written; and each thread's truncation at
+   !> work (a banded pencil of up to the modes of the top, ten numbers a mode). The spring's
+   !> critical amplitudes hold a few curves: nothing beyond the program's own.
+   function boundaries_memory_bytes(self, scene) result(bytes)
+      class(boundaries_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      type(hill_block_values_t) :: block
+      type(alpha_rows_t) :: rows
+      type(boundary_row_t) :: row
+      real(wp) :: top, per_block
+      integer(int64) :: per_alpha, modes
+      if (self%spring) then
+         bytes = 0
+         return
+      end if
+      top = max(abs(self%grid%beta_min), abs(self%grid%beta_max))
+      top = top + 1.0_wp + 0.25_wp*top + max(abs(self%grid%alpha_min), abs(self%grid%alpha_max))
+      per_block = sqrt(top)/3.14_wp + 2.0_wp
+      per_alpha = storage_size(rows)/8 + int(4.0_wp*per_block, int64)*(storage_size(row)/8)
+      if (exact_method(scene)) then
+         per_alpha = per_alpha + 4*(storage_size(block)/8 + storage_size(rows)/8 + int(16.0_wp*per_block, int64))
+      end if
+      ! the truncations grow by half past the top's modes until they converge
+      modes = 2*int(per_block, int64) + 64
+      bytes = int(self%grid%n_alpha, int64)*per_alpha + int(max_threads(), int64)*modes*80
+   end function boundaries_memory_bytes
+
+   !> What sets the memory of a run: the α grid and the top of the β window.
+   function boundaries_memory_variables(self) result(text)
+      class(boundaries_task_t), intent(in) :: self  !! the task
+      character(len=:), allocatable :: text
+      text = "&chart: n_alpha, beta_max: "//integer_text(self%grid%n_alpha)//" alphas up to beta = "// &
+             real_text(max(abs(self%grid%beta_min), abs(self%grid%beta_max)))
+   end function boundaries_memory_variables
 
    !> A boundaries task before its scene is read.
    function boundaries_task() result(task)
@@ -373,16 +415,28 @@ contains
             "undamped curves: kappa must be 0")
          return
       end if
-      call open_scene_output(scene, file, error)
-      if (allocated(error)) return
       mathieu = model_has_witness(scene%model)
       n_alpha = self%grid%n_alpha
-      allocate (per_alpha(n_alpha))
+      ! (the estimate of `boundaries_memory_bytes` was checked before the run: should the
+      ! machine still lack the memory, say so before the output is opened)
+      allocate (per_alpha(n_alpha), stat=i)
+      if (i /= 0) then
+         call set_error(error, err_input, scene%source//": "//self%memory_variables()//": the rows of "// &
+            integer_text(n_alpha)//" alphas cannot be allocated (out of memory)")
+         return
+      end if
+      call open_scene_output(scene, file, error)
+      if (allocated(error)) return
       if (exact_method(scene)) then
          ! the four blocks of Hill's matrix at every alpha, then the check of every curve point
          ! by auto: the units of progress and of the parallel loops (near alpha = pi^2 or at
          ! large |beta| one block takes many seconds and one alpha holds hundreds of curves)
-         call find_hill_rows(scene, self%grid, per_alpha, quiet)
+         call find_hill_rows(scene, self%grid, per_alpha, quiet, error)
+         if (allocated(error)) then
+            error%message = scene%source//": "//self%memory_variables()//": "//error%message
+            call discard_output(file)
+            return
+         end if
          call check_every_row(scene, per_alpha, quiet)
       else
          call progress_begin(progress, int(n_alpha, int64), quiet, "alphas")
@@ -479,11 +533,12 @@ contains
    !> Hill's method at every alpha of the grid, block by block in parallel (with progress per
    !> block), the blocks of each alpha then joined into its rows (as `hill_boundaries` does);
    !> an alpha whose block failed has no rows and the first failing block's message.
-   subroutine find_hill_rows(scene, grid, per_alpha, quiet)
+   subroutine find_hill_rows(scene, grid, per_alpha, quiet, error)
       type(scene_t), intent(in) :: scene
       type(chart_grid_t), intent(in) :: grid
       type(alpha_rows_t), intent(inout) :: per_alpha(:)
       logical, intent(in) :: quiet
+      type(error_t), allocatable, intent(out) :: error  !! err_input: the blocks cannot be allocated
       type(hill_block_values_t), allocatable :: blocks(:, :)
       type(hill_boundary_t), allocatable :: curves(:)
       type(progress_t) :: progress
@@ -491,7 +546,12 @@ contains
       type(alpha_rows_t), allocatable :: outcomes(:, :)   ! failed and message per block
       integer :: i, k, block, n_alpha
       n_alpha = size(per_alpha)
-      allocate (blocks(4, n_alpha), outcomes(4, n_alpha))
+      allocate (blocks(4, n_alpha), outcomes(4, n_alpha), stat=i)
+      if (i /= 0) then
+         call set_error(error, err_input, "the blocks of Hill's matrix of "//integer_text(n_alpha)// &
+            " alphas cannot be allocated (out of memory)")
+         return
+      end if
       call progress_begin(progress, 4_int64*n_alpha, quiet, "Hill blocks")
       !$omp parallel do schedule(dynamic) default(shared) private(k, i, block, cause)
       do k = 1, 4*n_alpha
