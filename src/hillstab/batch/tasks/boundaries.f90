@@ -17,7 +17,10 @@
 !> values. The file is written once all are done, curve by curve.
 module hillstab_batch_tasks_boundaries
    use hillstab_core_kinds, only: wp, int64, pi2, version_string
-   use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_step, progress_end
+   use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_step, progress_beat, progress_end
+   use hillstab_ffi_libc, only: c_nanosleep, timespec_t
+   use, intrinsic :: iso_c_binding, only: c_int, c_long
+   !$ use omp_lib, only: omp_get_thread_num, omp_get_num_threads
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_hill_models, only: model_description, model_has_witness, model_witness_beta, model_is_pendulum, &
@@ -400,7 +403,7 @@ contains
       type(progress_t) :: progress
       type(alpha_rows_t), allocatable :: per_alpha(:)
       integer, allocatable :: keys(:, :)
-      integer :: i, j, c, n_alpha, n_failed_rows, n_failed_alpha, last_i, first_failed
+      integer :: i, j, c, n_alpha, n_failed_rows, n_failed_alpha, last_i, first_failed, next, finished
       logical :: mathieu, found, any_written
       character(len=:), allocatable :: line, first_message
       type(error_t), allocatable :: cause
@@ -440,17 +443,31 @@ contains
          call check_every_row(scene, per_alpha, quiet)
       else
          call progress_begin(progress, int(n_alpha, int64), quiet, "alphas")
-         !$omp parallel do schedule(dynamic) default(shared) private(i, cause)
-         do i = 1, n_alpha
-            call find_boundary_rows(scene, self%grid, grid_value(self%grid%alpha_min, self%grid%alpha_max, &
-                                    n_alpha, i), per_alpha(i)%rows, cause)
-            if (allocated(cause)) then
-               per_alpha(i)%failed = .true.
-               per_alpha(i)%message = cause%message
-            end if
-            call progress_step(progress)
-         end do
-         !$omp end parallel do
+         ! (an alpha of 10^8 samples of formula takes seconds: the line keeps its pace)
+         next = 0
+         finished = 0
+         !$omp parallel num_threads(team_size(progress)) default(shared) private(i, cause)
+         if (watches(progress)) then
+            call watch_progress(progress, finished, n_alpha)
+         else
+            do
+               !$omp atomic capture
+               next = next + 1
+               i = next
+               !$omp end atomic
+               if (i > n_alpha) exit
+               call find_boundary_rows(scene, self%grid, grid_value(self%grid%alpha_min, self%grid%alpha_max, &
+                                       n_alpha, i), per_alpha(i)%rows, cause)
+               if (allocated(cause)) then
+                  per_alpha(i)%failed = .true.
+                  per_alpha(i)%message = cause%message
+               end if
+               call progress_step(progress)
+               !$omp atomic update
+               finished = finished + 1
+            end do
+         end if
+         !$omp end parallel
          call progress_end(progress)
       end if
 
@@ -544,7 +561,7 @@ contains
       type(progress_t) :: progress
       type(error_t), allocatable :: cause
       type(alpha_rows_t), allocatable :: outcomes(:, :)   ! failed and message per block
-      integer :: i, k, block, n_alpha
+      integer :: i, k, block, n_alpha, next, finished
       n_alpha = size(per_alpha)
       allocate (blocks(4, n_alpha), outcomes(4, n_alpha), stat=i)
       if (i /= 0) then
@@ -553,19 +570,35 @@ contains
          return
       end if
       call progress_begin(progress, 4_int64*n_alpha, quiet, "Hill blocks")
-      !$omp parallel do schedule(dynamic) default(shared) private(k, i, block, cause)
-      do k = 1, 4*n_alpha
-         i = (k - 1)/4 + 1
-         block = k - 4*(i - 1)
-         call hill_block_values(scene%model, grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i), block, &
-                                grid%beta_min, grid%beta_max, scene%method%tolerance, blocks(block, i), cause)
-         if (allocated(cause)) then
-            outcomes(block, i)%failed = .true.
-            outcomes(block, i)%message = cause%message
-         end if
-         call progress_step(progress)
-      end do
-      !$omp end parallel do
+      ! the blocks claimed one at a time by the computing threads; with progress on, one
+      ! more thread keeps the line's pace while a block takes a minute (one LAPACK call on
+      ! a truncation of 10^4 modes near alpha = pi^2 or at large |beta|)
+      next = 0
+      finished = 0
+      !$omp parallel num_threads(team_size(progress)) default(shared) private(k, i, block, cause)
+      if (watches(progress)) then
+         call watch_progress(progress, finished, 4*n_alpha)
+      else
+         do
+            !$omp atomic capture
+            next = next + 1
+            k = next
+            !$omp end atomic
+            if (k > 4*n_alpha) exit
+            i = (k - 1)/4 + 1
+            block = k - 4*(i - 1)
+            call hill_block_values(scene%model, grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i), block, &
+                                   grid%beta_min, grid%beta_max, scene%method%tolerance, blocks(block, i), cause)
+            if (allocated(cause)) then
+               outcomes(block, i)%failed = .true.
+               outcomes(block, i)%message = cause%message
+            end if
+            call progress_step(progress)
+            !$omp atomic update
+            finished = finished + 1
+         end do
+      end if
+      !$omp end parallel
       call progress_end(progress)
       do i = 1, n_alpha
          block = findloc(outcomes(:, i)%failed, .true., dim=1)
@@ -580,6 +613,41 @@ contains
          end if
       end do
    end subroutine find_hill_rows
+
+   !> The threads of a loop over long units: the computing threads, and one more that
+   !> watches the progress (`watch_progress`) when it is shown and OpenMP runs the loop.
+   integer function team_size(progress)
+      type(progress_t), intent(in) :: progress
+      team_size = max_threads()
+      !$ if (progress%enabled) team_size = team_size + 1
+   end function team_size
+
+   !> Whether the calling thread of a team of `team_size` watches the progress: the first,
+   !> when the progress is shown and the team has the extra thread.
+   logical function watches(progress)
+      type(progress_t), intent(in) :: progress
+      watches = .false.
+      !$ watches = progress%enabled .and. omp_get_thread_num() == 0 .and. omp_get_num_threads() > max_threads()
+   end function watches
+
+   !> Until `finished` reaches `total` (the computing threads count their units there):
+   !> every 0.2 s the progress line, printed when due (`progress_beat`: every 5 s off a
+   !> terminal however long a unit takes).
+   subroutine watch_progress(progress, finished, total)
+      type(progress_t), intent(inout) :: progress
+      integer, intent(inout) :: finished  !! units done (updated by the other threads)
+      integer, intent(in) :: total
+      type(timespec_t) :: remaining
+      integer(c_int) :: status
+      integer :: now
+      do
+         !$omp atomic read
+         now = finished
+         if (now >= total) exit
+         status = c_nanosleep(timespec_t(0_c_long, 200000000_c_long), remaining)
+         call progress_beat(progress)
+      end do
+   end subroutine watch_progress
 
    !> Every curve point of Hill's method checked by auto (`check_boundary_row`), in parallel
    !> over all alphas, with progress per point.
