@@ -15,6 +15,9 @@
 #    a checkpoint of another scene refused (exit 2 on every rank, one message); --resume
 #    without a checkpoint; SIGTERM to mpirun keeps the checkpoint and says how to resume;
 #  - options: --version, --help, an unknown option.
+# Every check that stops a run waits first for rank 0 to pause at a chosen unit (the test
+# hook HILLSTAB_TEST_PAUSE_AFTER_UNITS, passed on with mpirun -x), so that the signal lands
+# mid-run on any machine; a run that ends first fails as "precondition not reached".
 # Prints one line per check and a closing `N passed, M failed`; exits 1 on a failure.
 set -uo pipefail
 cd "$(dirname "$0")/.."
