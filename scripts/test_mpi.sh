@@ -256,11 +256,12 @@ for case in rc:chart:2:mpi:np3 rc:chart:12:mpi:serial rc:chart:20:mpi:np2 rc:cha
    check "${name}_nothing_left" '[ ! -e "$ck" ] && [ -z "$(ls "$work" | grep "${scene}_${task}.dat.part")" ]'
 done
 # a checkpoint of another scene: exit 2 on every rank, one message naming the variable
+# (beside the note on a temporary file the killed rank 0 may have left, which the run removes)
 stop_at rc chart 3 KILL mpi
 sed 's/n_beta=300/n_beta=301/' "$work/rc.nml" >"$work/rc_other.nml"
 rank_statuses 3 "$work/st" -q --resume "$work/rc_other.nml"
 check "resume_other_scene_exit2_every_rank" '[ $reached = 1 ] && all_ranks "$work/st" 3 2 && [ -d "$ck" ] && [ ! -e "$work/rc_chart.dat" ]'
-check "resume_other_scene_one_message" '[ "$(cat "$work"/st/stderr.* | grep -c "&chart: n_beta: 301 in this scene, 300 in the checkpoint")" = 1 ] && [ "$(cat "$work"/st/stderr.* | wc -l)" = 1 ]'
+check "resume_other_scene_one_message" '[ "$(cat "$work"/st/stderr.* | grep -c "&chart: n_beta: 301 in this scene, 300 in the checkpoint")" = 1 ] && [ "$(cat "$work"/st/stderr.* | grep -v ": removed .*a temporary file of" | wc -l)" = 1 ]'
 # without --resume: discarded with one note, the whole file
 rank_statuses 2 "$work/st" -q "$work/rc.nml"
 check "no_resume_discards_with_a_note" 'all_ranks "$work/st" 2 0 && [ "$(cat "$work"/st/stderr.* | grep -c "discarded the checkpoint")" = 1 ] && [ ! -e "$ck" ] && cmp -s "$work/rc_chart.dat" "$work/rc.serial"'

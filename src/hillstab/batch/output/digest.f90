@@ -7,7 +7,9 @@
 !> chance of about 2^-64); it guards against damage, not against someone who recomputes it.
 !>
 !> The value depends on the bytes only, not on how they were cut into `digest_update` calls.
-!> Each call costs about a nanosecond a byte (a 150 MB chart: 0.15 s on the writing thread).
+!> It costs a fraction of a nanosecond a byte: a 1000 x 1000 chart of 152 MB by formula (the
+!> output dominates) took 0.62 s of CPU time against 0.575 s without it (release build,
+!> medians of 6 runs; wall 0.77 against 0.76 s).
 !>
 !>```fortran
 !> type(digest_t) :: digest
