@@ -38,6 +38,7 @@ contains
          new_unittest("buffers_larger_than_memory", buffers_larger_than_memory), &
          new_unittest("every_task_memory_estimate", every_task_memory_estimate), &
          new_unittest("address_space_too_small_to_start", address_space_too_small_to_start), &
+         new_unittest("probe_memory_reproducers", probe_memory_reproducers), &
          new_unittest("stale_temporary_removed", stale_temporary_removed), &
          new_unittest("busy_temporary_refused", busy_temporary_refused), &
          new_unittest("progress_rate_text", progress_rate_text)])
@@ -334,6 +335,59 @@ contains
       call delete_file(out//"_c.nml")
       call delete_file(err)
    end subroutine address_space_too_small_to_start
+
+   !> The reproducers of a fault probe, which ended with "Error allocating 54400000000
+   !> bytes", a backtrace, exit 1 and a temporary file left: boundaries over
+   !> `n_alpha = 100000000` (here under an address-space limit 200 GB above the process, so
+   !> that no machine runs it), boundaries over 10^6 alphas under `ulimit -v 300000` and
+   !> poincare over 10^6 periods under `ulimit -v 200000` (the program, as the probe ran it;
+   !> not under AddressSanitizer). Each: exit 2, one message naming the variable, no file.
+   subroutine probe_memory_reproducers(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out, err
+      character(len=1024), allocatable :: lines(:)
+      character(len=16) :: asan
+      integer :: status, length
+      out = scratch_prefix("probe_memory")
+      err = out//".err"
+      call write_file(out//"_b8.nml", [padded("&scene task='boundaries', output='"//out//"' /"), &
+                                       padded("&chart n_alpha=100000000 /")])
+      call limit_address_space(200000000000_int64)
+      call run_scene_file(out//"_b8.nml", .true., error)
+      call lift_address_space_limit()
+      call check(ctx, allocated(error), "n_alpha = 1e8: refused")
+      if (allocated(error)) then
+         call check(ctx, exit_status(error) == 2 .and. contains_text(error%message, out//"_b8.nml: &chart: n_alpha"), &
+                    "exit 2 naming n_alpha: "//error%message)
+      end if
+      call check(ctx, .not. file_exists(out//"_boundaries.dat") .and. .not. any_temp_file(out//"_boundaries.dat"), &
+                 "n_alpha = 1e8: no file, no temporary file")
+      call delete_file(out//"_b8.nml")
+      call get_environment_variable("ASAN_OPTIONS", asan, length, status)
+      if (status == 0) return
+      call write_file(out//"_b6.nml", [padded("&scene task='boundaries', output='"//out//"' /"), &
+                                       padded("&chart n_alpha=1000000 /")])
+      call write_file(out//"_p6.nml", [padded("&scene task='poincare', output='"//out//"' /"), &
+                                       padded("&series periods=1000000 /")])
+      call probe("300000", out//"_b6.nml", out//"_boundaries.dat", "&chart: n_alpha")
+      call probe("200000", out//"_p6.nml", out//"_poincare.dat", "&series: periods")
+      call delete_file(out//"_b6.nml")
+      call delete_file(out//"_p6.nml")
+      call delete_file(err)
+   contains
+      subroutine probe(limit, scene, output, names)
+         character(len=*), intent(in) :: limit, scene, output, names
+         call execute_command_line("ulimit -v "//limit//"; '"//program_path()//"' --quiet '"//scene//"' 2>'"// &
+                                   err//"'", exitstat=status)
+         call check(ctx, status == 2, scene//" under ulimit -v "//limit//": exit 2 (status "//integer_text(status)//")")
+         lines = read_lines(err)
+         call check(ctx, size(lines) == 1, scene//": one message line")
+         if (size(lines) == 1) call check(ctx, index(lines(1), "hillstab: "//scene//": "//names) == 1 .and. &
+                                          index(lines(1), "ulimit -v") > 0, trim(lines(1)))
+         call check(ctx, .not. file_exists(output) .and. .not. any_temp_file(output), scene//": no file, no temporary file")
+      end subroutine probe
+   end subroutine probe_memory_reproducers
 
    !> A small scene of every task (chart in text and in binary, points, lyapunov,
    !> coefficient, series, boundaries, poincare) writing `<prefix>k_<task>.<ext>`: its
