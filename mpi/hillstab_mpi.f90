@@ -22,7 +22,7 @@ module hillstab_mpi_runner
    use hillstab_core_text, only: integer_text
    use hillstab_batch_scene_types, only: scene_t, output_path
    use hillstab_batch_scene_read, only: read_scene
-   use hillstab_batch_run_scenes, only: run_scene, warn_scene
+   use hillstab_batch_run_scenes, only: run_scene, warn_scene, name_scene_file
    use hillstab_batch_run_units, only: batch_t, batch_result_t, batch_distributable, batch_plan, batch_set_unit_size, &
       batch_compute, &
       batch_open, batch_write, batch_commit, batch_discard, scene_fingerprint
@@ -124,6 +124,7 @@ contains
          else
             call batch_commit(batch, error)
          end if
+         call name_scene_file(scene, error)
       else
          call agree(self, error)
          if (allocated(error)) return

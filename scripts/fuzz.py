@@ -29,11 +29,24 @@ Two further families follow, with the same acceptance rules:
     shrunk and mutated like the shipped scenes, sometimes with their optional commented
     groups (`&physical` and its alternatives) switched on.
 
+A last family damages checkpoints (--checkpoint-count): a chart, a points run and a
+Lyapunov map, each killed with SIGKILL while the test hook HILLSTAB_TEST_PAUSE_AFTER_UNITS
+holds it mid-run (--checkpoint-interval 0), leave checkpoints; a copy of one gets one to
+three seeded mutations of its `data` (bytes flipped, inserted or deleted among the recorded
+ones, a digit changed, a new line planted, the header edited, cut short, bytes appended
+after the recorded ones) or of its `state` (a number changed, a line dropped, doubled,
+swapped or cut, the checksum line edited, the file emptied or filled with junk), and
+`--resume` must then exit 0 with the file of an uninterrupted run, byte for byte, or exit 2
+with one message line naming the checkpoint and no output file; never exit 0 with another
+file; no temporary file left, in time. A run without --resume then writes the uninterrupted
+file.
+
 With --signals, a chart is first interrupted by SIGINT, SIGTERM and SIGHUP: each must
 exit 128 + signal, remove its temporary file and keep the old output.
 
 usage: scripts/fuzz.py --hillstab BUILD/app/hillstab [--count 300] [--points-count 90]
-                       [--template-count 140] [--seed 7] [--timeout 30] [--signals]
+                       [--template-count 140] [--checkpoint-count 60] [--seed 7]
+                       [--timeout 30] [--signals]
 Exit status 0 when every scene passes; the failures are listed with the scene text saved
 under the report directory (default build/fuzz_failures).
 """
@@ -412,20 +425,33 @@ def check_signals(hillstab, work):
     scene = os.path.join(work, "signal.nml")
     with open(scene, "w") as f:
         f.write("&scene method='magnus6', tolerance=1e-12, output='out/signal' /\n"
-                "&chart n_alpha=2000, n_beta=2000 /\n")
+                "&chart n_alpha=200, n_beta=200 /\n")
     old = os.path.join(work, "out", "signal_chart.dat")
     for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
         with open(old, "w") as f:
             f.write("old\n")
-        proc = subprocess.Popen([hillstab, "--quiet", "signal.nml"], cwd=work, stdin=subprocess.DEVNULL,
-                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        # wait until the temporary file exists (the chart has started writing)
-        deadline = time.monotonic() + 20
-        while time.monotonic() < deadline and not glob.glob(old + ".part*") and proc.poll() is None:
+        # the chart waits after its first row (the test hook), so that the signal lands
+        # mid-run whatever the machine's speed
+        err_path = os.path.join(work, "signal.err")
+        env = dict(os.environ, HILLSTAB_TEST_PAUSE_AFTER_UNITS="1")
+        with open(err_path, "w") as err:
+            proc = subprocess.Popen([hillstab, "--quiet", "signal.nml"], cwd=work, stdin=subprocess.DEVNULL,
+                                    stdout=subprocess.DEVNULL, stderr=err, env=env)
+        deadline = time.monotonic() + 60
+        while time.monotonic() < deadline and proc.poll() is None:
+            with open(err_path) as f:
+                if "test hook: paused" in f.read():
+                    break
             time.sleep(0.05)
-        time.sleep(0.3)
-        if proc.poll() is not None:
-            problems.append("signal %d: the chart ended before the signal (status %d)" % (sig, proc.returncode))
+        with open(err_path) as f:
+            paused = "test hook: paused" in f.read()
+        os.remove(err_path)
+        if not paused:
+            if proc.poll() is None:
+                proc.kill()
+                proc.wait()
+            problems.append("signal %d: precondition not reached: the chart ended (status %s) or ran a minute "
+                            "before it paused after its first row; nothing was tested" % (sig, proc.returncode))
             continue
         proc.send_signal(sig)
         try:
@@ -497,6 +523,198 @@ def check_signal_timing(hillstab, work, runs=60, seed=11):
     os.remove(out)
     os.remove(scene)
     return problems
+
+
+# checkpoint fixtures: (name, scene text with OUT for the output prefix, the unit to kill after)
+CHECKPOINT_SCENES = [
+    ("chart", "&scene method='formula', output='OUT' /\n&chart n_alpha=24, n_beta=40 /\n", 9),
+    ("points", "&scene task='points', method='magnus6', output='OUT' /\n&points file='data/points/fig4.dat' /\n", 2),
+    ("lyapunov", "&scene task='lyapunov', output='OUT' /\n&series phi0=0.017, periods=3 /\n"
+     "&lyapunov lanes=1, early_stop=.false. /\n&chart n_alpha=6, n_beta=12 /\n", 3),
+]
+
+
+def mutate_checkpoint(directory, rng):
+    """One to three seeded mutations of a checkpoint's data or state; returns their names."""
+    names = []
+    data_path = os.path.join(directory, "data")
+    state_path = os.path.join(directory, "state")
+    with open(state_path, "rb") as f:
+        state = f.read()
+    m = re.search(rb"^bytes = (\d+)$", state, re.M)
+    recorded = int(m.group(1)) if m else 0
+    for _ in range(rng.randint(1, 3)):
+        with open(data_path, "rb") as f:
+            data = f.read()
+        with open(state_path, "rb") as f:
+            state = f.read()
+        kind = rng.randrange(14)
+        inside = rng.randrange(max(1, min(recorded, len(data))))
+        if kind == 0 and data:  # a byte flipped among the recorded ones
+            data = data[:inside] + bytes([data[inside] ^ (1 << rng.randrange(8))]) + data[inside + 1:]
+            names.append("data: byte %d flipped" % inside)
+        elif kind == 1:  # a digit changed in a data row
+            digits = [k.start() for k in re.finditer(rb"[0-9]", data[:recorded]) if data.rfind(b"#", 0, k.start()) <
+                      data.rfind(b"\n", 0, k.start())]
+            if digits:
+                k = rng.choice(digits)
+                data = data[:k] + str((int(data[k:k + 1]) + rng.randint(1, 9)) % 10).encode() + data[k + 1:]
+                names.append("data: digit %d changed" % k)
+        elif kind == 2:  # a new line planted, or a byte inserted or deleted
+            what = rng.choice([b"\n", b" ", b"7", b""])
+            if what:
+                data = data[:inside] + what + data[inside:]
+                names.append("data: %r inserted at %d" % (what, inside))
+            else:
+                data = data[:inside] + data[inside + 1:]
+                names.append("data: byte %d deleted" % inside)
+        elif kind == 3:  # the header edited (the scene it states)
+            data, n = re.subn(rb"(n_[a-z]+ = )(\d+)", lambda x: x.group(1) + str(int(x.group(2)) + 1).encode(), data,
+                              count=1)
+            names.append("data: header edited" if n else "data: header unchanged")
+        elif kind == 4:  # cut short, or bytes after the recorded ones (a write the kill cut short)
+            if rng.random() < 0.5:
+                data = data[:rng.randrange(len(data) + 1)]
+                names.append("data: cut to %d bytes" % len(data))
+            else:
+                data = data + rng.choice([b"1.0 2.0 partial", b"\n\n", bytes(rng.randrange(256) for _ in range(40))])
+                names.append("data: bytes appended")
+        elif kind in (5, 6, 7):  # a number of the state changed
+            numbers = list(re.finditer(rb"(?<=[ =])(\d+)(?=[ \n])", state))
+            if numbers:
+                k = rng.choice(numbers)
+                value = int(k.group(1))
+                new = rng.choice([value + 1, max(0, value - 1), 0, value * 2, value + 1000])
+                state = state[:k.start()] + str(new).encode() + state[k.end():]
+                names.append("state: %d -> %d" % (value, new))
+        elif kind == 8:  # a line dropped, doubled or swapped
+            lines = state.split(b"\n")
+            i, j = rng.randrange(len(lines)), rng.randrange(len(lines))
+            action = rng.randrange(3)
+            if action == 0:
+                del lines[i]
+            elif action == 1:
+                lines.insert(i, lines[i])
+            else:
+                lines[i], lines[j] = lines[j], lines[i]
+            state = b"\n".join(lines)
+            names.append("state: lines %d/%d %s" % (i, j, ["dropped", "doubled", "swapped"][action]))
+        elif kind == 9:  # the checksum line edited
+            state = re.sub(rb"check = (\w)", lambda x: b"check = " + (b"0" if x.group(1) != b"0" else b"1"), state)
+            names.append("state: checksum edited")
+        elif kind == 10:  # cut short
+            state = state[:rng.randrange(len(state) + 1)]
+            names.append("state: cut to %d bytes" % len(state))
+        elif kind == 11:  # emptied, junk, the other format
+            state = rng.choice([b"", bytes(rng.randrange(256) for _ in range(300)),
+                                state.replace(b"hillstab checkpoint 2", b"hillstab checkpoint 1")])
+            names.append("state: replaced")
+        elif kind == 12:  # the scene lines of the state edited
+            state, n = re.subn(rb"(scene = &chart [^\n]*?n_beta = )(\d+)", lambda x: x.group(1) + b"41", state)
+            names.append("state: scene edited" if n else "state: scene unchanged")
+        else:  # a digit changed in the state's recorded counts line
+            state, n = re.subn(rb"^(failed|inaccurate) = (\d+)", lambda x: x.group(1) + b" = " +
+                               str(int(x.group(2)) + 1).encode(), state, count=1, flags=re.M)
+            names.append("state: counts edited" if n else "state: counts unchanged")
+        with open(data_path, "wb") as f:
+            f.write(data)
+        with open(state_path, "wb") as f:
+            f.write(state)
+    return names
+
+
+def check_checkpoints(hillstab, work, count, seed, timeout):
+    """Damaged checkpoints (`mutate_checkpoint`) resumed: exit 0 with the uninterrupted file
+    or exit 2 with one message naming the checkpoint and no file. Returns (problems, counts)."""
+    rng = random.Random(seed * 1000 + 3)
+    problems = []
+    counts = {}
+    base = os.path.join(work, "ck")
+    os.makedirs(base, exist_ok=True)
+    fixtures = []
+    for name, text, unit in CHECKPOINT_SCENES:
+        scene = os.path.join(base, name + ".nml")
+        with open(scene, "w") as f:
+            f.write(text.replace("OUT", "ck/" + name))
+        output = os.path.join(work, "ck", "%s_%s.dat" % (name, name))
+        subprocess.run([hillstab, "--quiet", scene], cwd=work, check=True, stderr=subprocess.DEVNULL)
+        with open(output, "rb") as f:
+            reference = f.read()
+        os.remove(output)
+        # killed while the test hook holds it after `unit` units
+        env = dict(os.environ, HILLSTAB_TEST_PAUSE_AFTER_UNITS=str(unit))
+        err_path = scene + ".err"
+        with open(err_path, "w") as err:
+            proc = subprocess.Popen([hillstab, "--quiet", "--checkpoint-interval", "0", scene], cwd=work, env=env,
+                                    stdout=subprocess.DEVNULL, stderr=err)
+        deadline = time.monotonic() + 60
+        paused = False
+        while time.monotonic() < deadline and proc.poll() is None:
+            with open(err_path) as f:
+                if "test hook: paused" in f.read():
+                    paused = True
+                    break
+            time.sleep(0.02)
+        proc.kill()
+        proc.wait()
+        if not paused:
+            problems.append("checkpoint %s: precondition not reached: the run ended before it paused after unit %d"
+                            % (name, unit))
+            continue
+        saved = output + ".saved"
+        shutil.copytree(output + ".checkpoint", saved)
+        shutil.rmtree(output + ".checkpoint")
+        for leftover in glob.glob(output + ".part*"):
+            os.remove(leftover)
+        fixtures.append((name, scene, output, reference, saved))
+    if not fixtures:
+        return problems, counts
+    for k in range(count):
+        name, scene, output, reference, saved = fixtures[k % len(fixtures)]
+        directory = output + ".checkpoint"
+        shutil.copytree(saved, directory)
+        damage = mutate_checkpoint(directory, rng)
+        label = "checkpoint case %d (%s: %s)" % (k, name, "; ".join(damage))
+        try:
+            proc = subprocess.run([hillstab, "--quiet", "--resume", scene], cwd=work, stdin=subprocess.DEVNULL,
+                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            problems.append(label + ": no answer within %g s" % timeout)
+            continue
+        status = proc.returncode
+        counts[status] = counts.get(status, 0) + 1
+        lines = [l for l in proc.stderr.decode("utf-8", "replace").splitlines()
+                 if not l.startswith("hillstab: warning:") and "resuming" not in l and
+                 "cannot be resumed: its state is not one" not in l and "no checkpoint of" not in l]
+        if status == 0:
+            with open(output, "rb") as f:
+                if f.read() != reference:
+                    problems.append(label + ": exit 0 with a file that differs from the uninterrupted run's")
+        elif status == 2:
+            if len(lines) != 1 or "checkpoint 'ck/%s_%s.dat.checkpoint'" % (name, name) not in lines[0]:
+                problems.append(label + ": exit 2 without one message naming the checkpoint: " + " | ".join(lines[:3]))
+            if os.path.exists(output):
+                problems.append(label + ": exit 2 with an output file")
+        else:
+            problems.append(label + ": exit status %d: %s" % (status, " | ".join(lines[:3])))
+        if glob.glob(output + ".part*"):
+            problems.append(label + ": temporary file left")
+        if status == 2 and k % 5 == 0:
+            # without --resume: discarded, the uninterrupted file
+            again = subprocess.run([hillstab, "--quiet", scene], cwd=work, stdin=subprocess.DEVNULL,
+                                   stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, timeout=timeout)
+            with open(output, "rb") as f:
+                if again.returncode != 0 or f.read() != reference:
+                    problems.append(label + ": a run without --resume did not write the uninterrupted file")
+            if os.path.exists(directory):
+                problems.append(label + ": the checkpoint survived a run without --resume")
+        for path in (output, directory):
+            if os.path.isdir(path):
+                shutil.rmtree(path)
+            elif os.path.exists(path):
+                os.remove(path)
+    shutil.rmtree(base, ignore_errors=True)
+    return problems, counts
 
 
 FIXTURES = ("data", "out", "fuzz.nml", "points.dat", "fuzz.fifo", "link_points.dat", "dangling_link.dat")
@@ -577,6 +795,7 @@ def main():
     parser.add_argument("--count", type=int, default=300, help="number of mutated scenes")
     parser.add_argument("--points-count", type=int, default=90, help="number of mutated points files or routes")
     parser.add_argument("--template-count", type=int, default=140, help="number of mutated templates")
+    parser.add_argument("--checkpoint-count", type=int, default=60, help="number of damaged checkpoints resumed")
     parser.add_argument("--seed", type=int, default=7, help="random seed (same seed, same scenes)")
     parser.add_argument("--timeout", type=float, default=30.0, help="seconds allowed per scene")
     parser.add_argument("--signals", action="store_true",
@@ -651,6 +870,18 @@ def main():
             family_seconds[family] = (n_cases, time.monotonic() - started)
             print("fuzz: %s: %d cases in %.0f s; %s" % (family, n_cases, time.monotonic() - started, ", ".join(
                 "exit %s: %d" % (s, n) for s, n in sorted(family_counts.items(), key=lambda x: str(x[0])))))
+        if args.checkpoint_count > 0:
+            started = time.monotonic()
+            problems, family_counts = check_checkpoints(hillstab, work, args.checkpoint_count, args.seed, args.timeout)
+            for p in problems:
+                print("FAIL " + p[:400])
+            failures += len(problems)
+            for status, n in family_counts.items():
+                counts[status] = counts.get(status, 0) + n
+            family_seconds["checkpoints"] = (args.checkpoint_count, time.monotonic() - started)
+            print("fuzz: checkpoints: %d damaged checkpoints resumed in %.0f s; %s" % (
+                args.checkpoint_count, time.monotonic() - started, ", ".join(
+                    "exit %s: %d" % (s, n) for s, n in sorted(family_counts.items(), key=lambda x: str(x[0])))))
     finally:
         shutil.rmtree(work, ignore_errors=True)
     summary = ", ".join("exit %s: %d" % (s, n) for s, n in sorted(counts.items(), key=lambda x: str(x[0])))

@@ -111,7 +111,8 @@ contains
 
    !> Run the scene file `scene` under a file-size limit of `bytes` (smaller than its output)
    !> and check that the writer of `output` fails cleanly: an i/o error naming `output`
-   !> and the cause, `output` still holding its one line `sentinel`, no temporary file `output.part??????` left.
+   !> and the cause after the scene (`<scene>: &scene: output: `), `output` still holding its
+   !> one line `sentinel`, no temporary file `output.part??????` left.
    subroutine check_writer_under_limit(ctx, scene, output, bytes)
       type(test_context_t), intent(inout) :: ctx
       character(len=*), intent(in) :: scene   !! scene file (written beforehand)
@@ -128,6 +129,7 @@ contains
       if (allocated(error)) then
          call check(ctx, error%code == err_io, "i/o error code: "//error%message)
          call check(ctx, index(error%message, "'"//output//"'") > 0, "names the path: "//error%message)
+         call check(ctx, index(error%message, scene//": &scene: output: ") == 1, "names the scene: "//error%message)
          call check(ctx, index(error%message, "File too large") > 0, "names the cause: "//error%message)
       end if
       open (newunit=unit, file=output, status="old", action="read", iostat=ios)

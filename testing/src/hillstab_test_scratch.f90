@@ -1,11 +1,13 @@
 !> Scratch files of the tests: unique names under build/ for this process, writing and
-!> reading text files line by line, and a look for the output writer's temporary files.
+!> reading text files line by line, a look for the output writer's temporary files, and
+!> the hillstab program of the build under test.
 module hillstab_test_scratch
    use hillstab_core_text, only: read_text_line
    use, intrinsic :: iso_c_binding, only: c_int
    implicit none
    private
-   public :: scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text, padded, any_temp_file
+   public :: scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text, padded, any_temp_file, &
+      program_path
    public :: c_getpid
 
    interface
@@ -25,6 +27,20 @@ contains
       write (pid, '(i0)') c_getpid()
       prefix = "build/hillstab_test_"//trim(pid)//"_"//name
    end function scratch_prefix
+
+   !> The hillstab program of this build: `<build>/app/hillstab` beside `<build>/test/…`.
+   function program_path() result(path)
+      character(len=:), allocatable :: path
+      character(len=4096) :: self
+      integer :: at
+      call get_command_argument(0, self)
+      at = index(self, "/test/", back=.true.)
+      if (at == 0) then
+         path = "hillstab"
+      else
+         path = self(:at)//"app/hillstab"
+      end if
+   end function program_path
 
    !> Whether a temporary file of the writer for `output` (`<output>.part??????`) exists.
    logical function any_temp_file(output)

@@ -3,11 +3,13 @@
 !> rmdir, lstat, fstat, ftruncate, fseek, flock), errno and its message, the process id and
 !> effective user, signals and write(2) for the handler, whether a descriptor is a terminal,
 !> free space (statvfs), random bytes (getrandom), a short sleep (nanosleep), the CPUs a thread
-!> may run on (sched_getaffinity, sched_setaffinity, sched_getcpu). Bindings only:
+!> may run on (sched_getaffinity, sched_setaffinity, sched_getcpu), the names in a directory
+!> (opendir, readdir, closedir: `names_with_prefix`). Bindings only:
 !> the writers (hillstab_batch_output_file), the checkpoints (hillstab_batch_output_checkpoint), the
 !> signal cleanup (hillstab_batch_run_signals), the resource limits (hillstab_batch_run_limits) and
 !> the progress line use them; `remove_file` and `is_directory` are the two path helpers
-!> every reader and writer needs, `try_lock` the lock test of the output and the checkpoint. Layouts (struct stat, off_t) are those of 64-bit Linux.
+!> every reader and writer needs, `try_lock` the lock test of the output and the checkpoint. Layouts (struct stat,
+!> off_t, struct dirent) are those of 64-bit Linux.
 !>
 !>```fortran
 !> integer(c_int) :: status
@@ -16,10 +18,11 @@
 !>```
 module hillstab_ffi_libc
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_size_t, c_long, c_funptr, &
-      c_f_pointer
+      c_f_pointer, c_associated
    implicit none
    private
-   public :: c_mkstemp, c_fdopen, c_fchmod, c_umask, c_close, c_getrlimit, rlimit_t, rlimit_as, c_getpagesize
+   public :: c_mkstemp, c_fdopen, c_fchmod, c_umask, c_close, c_getrlimit, rlimit_t, rlimit_as, rlimit_stack, &
+      c_getpagesize
    public :: c_rename, c_remove, c_unlink, c_getpid, c_fopen, c_fwrite, c_fwrite_raw, c_fflush, c_fclose, c_fileno, &
       c_fsync, c_signal, c_exit_now, c_isatty, c_statvfs, statvfs_t
    public :: errno_text, set_errno, c_string, remove_file, is_directory, is_special_file, c_mkdir
@@ -28,6 +31,7 @@ module hillstab_ffi_libc
       file_type_link, seek_end, lock_exclusive, lock_nonblocking, errno_exists, errno_no_entry, errno_would_block
    public :: c_mallopt, malloc_trim_threshold, malloc_top_pad, malloc_mmap_threshold
    public :: c_sched_getaffinity, c_sched_setaffinity, c_sched_getcpu, cpu_set_words, name_max, try_lock
+   public :: names_with_prefix, lock_state, lock_taken, lock_busy, lock_unknown
 
    !> The file type bits of `stat_t%mode` (S_IFMT).
    integer(c_int), parameter :: file_type = int(o'170000', c_int)
@@ -46,12 +50,23 @@ module hillstab_ffi_libc
 
    !> NAME_MAX of Linux: the longest file name (one path component), in bytes.
    integer, parameter :: name_max = 255
+   !> Offset of d_name in struct dirent of 64-bit Linux (after d_ino, d_off, d_reclen, d_type).
+   integer, parameter :: dirent_name_offset = 19
+
+   !> What `lock_state` found: the lock was free and is now held by the caller
+   integer, parameter :: lock_taken = 1
+   !> another open file holds it (a running writer)
+   integer, parameter :: lock_busy = 2
+   !> the file system cannot say (no flock there)
+   integer, parameter :: lock_unknown = 3
 
    !> cpu_set_t of glibc: 1024 bits, CPU k is bit mod(k, 64) of word k/64 (from 1 here).
    integer, parameter :: cpu_set_words = 16
 
    !> RLIMIT_AS (Linux): the largest address space of the process.
    integer(c_int), parameter :: rlimit_as = 9
+   !> RLIMIT_STACK (Linux): the stack of the main thread (and glibc's default for new threads).
+   integer(c_int), parameter :: rlimit_stack = 3
 
    !> struct rlimit on 64-bit Linux (RLIM_INFINITY is all ones: -1 here).
    type, bind(C) :: rlimit_t
@@ -153,6 +168,24 @@ module hillstab_ffi_libc
          type(stat_t), intent(out) :: info  !! what the name is
          integer(c_int) :: status
       end function c_lstat
+      !> opendir(3): a directory stream (NULL on failure).
+      function c_opendir(path) bind(C, name="opendir") result(dir)
+         import :: c_char, c_ptr
+         character(kind=c_char), intent(in) :: path(*)  !! NUL-terminated path
+         type(c_ptr) :: dir
+      end function c_opendir
+      !> readdir(3): the next entry (struct dirent), NULL at the end.
+      function c_readdir(dir) bind(C, name="readdir") result(entry)
+         import :: c_ptr
+         type(c_ptr), value :: dir  !! from c_opendir
+         type(c_ptr) :: entry
+      end function c_readdir
+      !> closedir(3): 0 on success.
+      function c_closedir(dir) bind(C, name="closedir") result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: dir  !! from c_opendir
+         integer(c_int) :: status
+      end function c_closedir
       !> fstat(2): 0 on success.
       function c_fstat(fd, info) bind(C, name="fstat") result(status)
          import :: c_int, stat_t
@@ -453,6 +486,65 @@ contains
       call set_errno(0)
       if (c_flock(c_fileno(stream), ior(lock_exclusive, lock_nonblocking)) /= 0) busy = errno_value() == errno_would_block
    end function try_lock
+
+   !> The lock of an open stream, tried without waiting: lock_taken (it was free and this
+   !> stream holds it now), lock_busy (another open file holds it) or lock_unknown (the file
+   !> system has no locks, or the call failed otherwise).
+   integer function lock_state(stream)
+      type(c_ptr), intent(in) :: stream  !! an open stream
+      call set_errno(0)
+      if (c_flock(c_fileno(stream), ior(lock_exclusive, lock_nonblocking)) == 0) then
+         lock_state = lock_taken
+      else if (errno_value() == errno_would_block) then
+         lock_state = lock_busy
+      else
+         lock_state = lock_unknown
+      end if
+   end function lock_state
+
+   !> The names in `directory` that begin with `prefix` and have `tail` more bytes, in the
+   !> order readdir gives them (none when the directory cannot be read).
+   subroutine names_with_prefix(directory, prefix, tail, names)
+      character(len=*), intent(in) :: directory  !! the directory
+      character(len=*), intent(in) :: prefix  !! the start of the names wanted
+      integer, intent(in) :: tail  !! bytes after the prefix
+      character(len=:), allocatable, intent(out) :: names(:)  !! the names (without the directory)
+      character(len=len(prefix) + tail), allocatable :: found(:), grown(:)
+      character(kind=c_char), pointer :: bytes(:)
+      type(c_ptr) :: dir, entry
+      integer(c_int) :: status
+      integer :: n, k, length
+      allocate (found(8))
+      n = 0
+      dir = c_opendir(c_string(directory))
+      if (c_associated(dir)) then
+         do
+            entry = c_readdir(dir)
+            if (.not. c_associated(entry)) exit
+            call c_f_pointer(entry, bytes, [dirent_name_offset + name_max + 1])
+            length = 0
+            do k = dirent_name_offset + 1, dirent_name_offset + name_max + 1
+               if (bytes(k) == c_null_char) exit
+               length = length + 1
+            end do
+            if (length /= len(prefix) + tail) cycle
+            if (any(bytes(dirent_name_offset + 1:dirent_name_offset + len(prefix)) /= transfer(prefix, "a", len(prefix)))) &
+               cycle
+            if (n == size(found)) then
+               allocate (grown(2*n))
+               grown(:n) = found
+               call move_alloc(grown, found)
+            end if
+            n = n + 1
+            do k = 1, length
+               found(n)(k:k) = bytes(dirent_name_offset + k)
+            end do
+         end do
+         status = c_closedir(dir)
+      end if
+      allocate (character(len=len(prefix) + tail) :: names(n))
+      names = found(:n)
+   end subroutine names_with_prefix
 
    !> Whether `path` names an existing directory.
    logical function is_directory(path)

@@ -18,7 +18,7 @@ module test_checkpoint
    use hillstab_fault_injection, only: limit_file_size, lift_file_size_limit
    use hillstab_testing
    use hillstab_test_scratch, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text, &
-      any_temp_file
+      any_temp_file, program_path
    implicit none
    private
    public :: collect_checkpoint
@@ -33,6 +33,8 @@ module test_checkpoint
    end type fixture_t
 
    type(fixture_t), save :: chart, map
+   !> The status of `stop_program` when the run did not reach the units it was to be stopped at.
+   integer, parameter :: not_reached = 250
 
 contains
 
@@ -42,6 +44,9 @@ contains
          new_unittest("chart_resumed_after_kill", chart_resumed_after_kill), &
          new_unittest("lyapunov_resumed_after_kill", lyapunov_resumed_after_kill), &
          new_unittest("sigterm_keeps_checkpoint", sigterm_keeps_checkpoint), &
+         new_unittest("damaged_checkpoint_refused", damaged_checkpoint_refused), &
+         new_unittest("probe_digit_flip_refused", probe_digit_flip_refused), &
+         new_unittest("killed_before_checkpoint", killed_before_checkpoint), &
          new_unittest("other_scene_refused", other_scene_refused), &
          new_unittest("resume_without_checkpoint", resume_without_checkpoint), &
          new_unittest("discarded_without_resume", discarded_without_resume), &
@@ -52,20 +57,6 @@ contains
          new_unittest("scene_differences", scene_differences), &
          new_unittest("long_output_names", long_output_names)])
    end function collect_checkpoint
-
-   !> The hillstab program of this build: `<build>/app/hillstab` beside `<build>/test/…`.
-   function program_path() result(path)
-      character(len=:), allocatable :: path
-      character(len=4096) :: self
-      integer :: at
-      call get_command_argument(0, self)
-      at = index(self, "/test/", back=.true.)
-      if (at == 0) then
-         path = "hillstab"
-      else
-         path = self(:at)//"app/hillstab"
-      end if
-   end function program_path
 
    !> Run a shell command; its exit status.
    integer function shell(command) result(status)
@@ -85,31 +76,57 @@ contains
       status = shell("OMP_NUM_THREADS="//trim(text)//" '"//program_path()//"' "//arguments//" 2>'"//err//"'")
    end function run_program
 
-   !> Start the program on one thread with `arguments`, and once the checkpoint's state
-   !> `state` records at least `units` units, send it `signal` (KILL, TERM); the program's
-   !> exit status as the shell sees it (137 killed, 143 after SIGTERM, 0 when it ended first).
+   !> Start the program on one thread with `arguments` and the test hook
+   !> HILLSTAB_TEST_PAUSE_AFTER_UNITS=`units` (it waits once unit `units` is written and,
+   !> with --checkpoint-interval 0, recorded), and once the checkpoint's state `state`
+   !> records at least `units` units, send it `signal` (KILL, TERM): the signal lands
+   !> mid-run whatever the machine's speed. The program's exit status as the shell sees it
+   !> (137 killed, 143 after SIGTERM); `not_reached` when the run ended, or ran two minutes,
+   !> without its checkpoint recording `units` units (no signal was sent: see `reached`).
    integer function stop_program(arguments, state, units, signal, err) result(status)
       character(len=*), intent(in) :: arguments, state, signal, err
       integer, intent(in) :: units
       character(len=:), allocatable :: script
       character(len=8) :: text
       script = scratch_prefix("stop.sh")
-      call write_file(script, [character(len=100) :: &
+      call write_file(script, [character(len=120) :: &
          'units=$1; sig=$2; state=$3; err=$4; shift 4', &
-         'OMP_NUM_THREADS=1 "$@" 2>"$err" &', &
-         'pid=$!; n=0', &
+         'HILLSTAB_TEST_PAUSE_AFTER_UNITS=$units OMP_NUM_THREADS=1 "$@" 2>"$err" &', &
+         'pid=$!; n=0; sent=0; exec 2>/dev/null', &
          'while kill -0 $pid 2>/dev/null; do', &
          '   u=$(sed -n "s/^units = \([0-9]*\) .*/\1/p" "$state" 2>/dev/null)', &
-         '   if [ "${u:-0}" -ge "$units" ]; then kill -"$sig" $pid; break; fi', &
+         '   if [ "${u:-0}" -ge "$units" ]; then kill -"$sig" $pid; sent=1; break; fi', &
          '   n=$((n + 1)); if [ $n -ge 12000 ]; then kill -KILL $pid; break; fi', &
          '   sleep 0.01', &
          'done', &
-         '{ wait $pid; } 2>/dev/null'])
+         '{ wait $pid; status=$?; } 2>/dev/null', &
+         '[ $sent = 1 ] && exit $status', &
+         'echo "test: the run ended with status $status, its checkpoint holding ${u:-no} units" >>"$err"', &
+         'exit 250'])
       write (text, '(i0)') units
       status = shell("bash '"//script//"' "//trim(text)//" "//signal//" '"//state//"' '"//err//"' '"// &
                      program_path()//"' "//arguments)
       call delete_file(script)
    end function stop_program
+
+   !> Whether `stop_program` or `kill_when` reached its precondition (`condition`: what the
+   !> signal waited for); when not, a failed check that says so.
+   logical function reached(ctx, status, condition, label)
+      type(test_context_t), intent(inout) :: ctx
+      integer, intent(in) :: status  !! of stop_program or kill_when
+      character(len=*), intent(in) :: condition  !! "its checkpoint recorded 5 units"
+      character(len=*), intent(in) :: label
+      reached = status /= not_reached
+      if (.not. reached) call check(ctx, .false., label//": precondition not reached: the run ended (or ran two "// &
+         "minutes) before "//condition//", so the signal could not land mid-run; nothing was tested")
+   end function reached
+
+   !> "its checkpoint recorded 5 units".
+   function units_text(units) result(text)
+      integer, intent(in) :: units
+      character(len=:), allocatable :: text
+      text = "its checkpoint recorded "//integer_text(units)//" units"
+   end function units_text
 
    !> The units done and the bytes a checkpoint's state records (-1 when it has none).
    subroutine state_of(directory, units, bytes)
@@ -206,14 +223,15 @@ contains
    end subroutine map_fixture
 
    !> Kill the run of `f` with SIGKILL once `units` units are in its checkpoint, check what
-   !> the checkpoint holds, optionally add bytes a killed write could leave, and resume it
-   !> (on two threads): the file of the uninterrupted run, no checkpoint, no temporary file.
+   !> the checkpoint holds, optionally add bytes a killed write could leave after the recorded
+   !> ones (cut on resume), and resume it (on two threads): the file of the uninterrupted
+   !> run, no checkpoint, no temporary file.
    subroutine kill_and_resume(ctx, f, units, garbage)
       type(test_context_t), intent(inout) :: ctx
       type(fixture_t), intent(in) :: f
       integer, intent(in) :: units
       logical, intent(in) :: garbage
-      character(len=:), allocatable :: directory, err, label, expected, message
+      character(len=:), allocatable :: directory, err, label
       character(len=8) :: text
       integer(int64) :: bytes
       integer :: status, done
@@ -222,6 +240,12 @@ contains
       directory = checkpoint_directory(f%output)
       err = scratch_prefix("ck.err")
       status = stop_program("--quiet --checkpoint-interval 0 '"//f%scene//"'", directory//"/state", units, "KILL", err)
+      if (.not. reached(ctx, status, units_text(units), label)) then
+         ! what the run that ended wrote must not fail the next check of the caller
+         call delete_file(f%output)
+         status = shell("rm -rf '"//directory//"'")
+         return
+      end if
       call check(ctx, status == 137, label//": killed while it ran (status "//integer_text(status)//")")
       call state_of(directory, done, bytes)
       call check(ctx, done >= units .and. done < f%n_units, label//": the checkpoint records "//integer_text(done)// &
@@ -229,24 +253,15 @@ contains
       call check(ctx, bytes > 0 .and. bytes <= size_of(directory//"/data"), label// &
                  ": the state claims no more bytes than the data hold")
       call check(ctx, .not. file_exists(f%output), label//": no output file")
-      expected = f%reference
       if (garbage) then
-         ! a partial row after the recorded bytes (cut on resume), and a mark in the first
-         ! recorded row (kept: a resumed run computes only what is missing)
-         expected = scratch_prefix("ck.marked")
+         ! a partial row after the recorded bytes, as a write the kill cut short leaves
          status = shell("printf '1.0 2.0 partial row' >> '"//directory//"/data'")
-         status = shell("at=$(grep -b -m1 -v '^#' '"//directory//"/data' | cut -d: -f1) && cp '"//f%reference// &
-                        "' '"//expected//"' && for f in '"//directory//"/data' '"//expected//"'; do printf X | "// &
-                        "dd of=""$f"" bs=1 seek=$at conv=notrunc 2>/dev/null; done")
-         call check(ctx, status == 0 .and. .not. same_file(expected, f%reference), label//": marked")
+         call check(ctx, status == 0 .and. size_of(directory//"/data") > bytes, label//": bytes added")
       end if
       status = run_program("--quiet --resume '"//f%scene//"'", err, 2)
       call check(ctx, status == 0, label//": the resumed run succeeds (status "//integer_text(status)//")")
       call check(ctx, file_says(err, "resuming"), label//": it says it resumes")
-      message = label//": the file of an uninterrupted run"
-      if (garbage) message = message//", with the mark (the units done are not computed again)"
-      call check(ctx, same_file(f%output, expected), message)
-      if (garbage) call delete_file(expected)
+      call check(ctx, same_file(f%output, f%reference), label//": the file of an uninterrupted run")
       call check(ctx, .not. directory_exists(directory), label//": the checkpoint is removed")
       call check(ctx, .not. any_temp_file(f%output), label//": no temporary file")
       call delete_file(f%output)
@@ -254,7 +269,7 @@ contains
    end subroutine kill_and_resume
 
    !> SIGKILL after 1, 12 and 20 of 24 rows (the middle one with a partial row after the
-   !> recorded bytes, which the resumed run cuts, and a mark in a recorded row, which it keeps).
+   !> recorded bytes, which the resumed run cuts).
    subroutine chart_resumed_after_kill(ctx)
       type(test_context_t), intent(inout) :: ctx
       call chart_fixture()
@@ -278,6 +293,165 @@ contains
       call release_fixture(map)
    end subroutine lyapunov_resumed_after_kill
 
+   !> A checkpoint damaged after its run was killed (10 of 24 rows): a digit changed in a
+   !> recorded row, a new line planted in one, the scene in the header of `data` edited, the
+   !> state's byte count (less and more), unit count (less and more) and failed-point count
+   !> edited, `data` cut short, the state cut short. Each: `--resume` refuses it, exit 2,
+   !> naming the checkpoint and the damage, no output file, the checkpoint kept as it was;
+   !> a run without `--resume` discards it with a note and writes the uninterrupted file.
+   subroutine damaged_checkpoint_refused(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: directory, err, saved, row
+      character(len=200) :: damages(10), labels(10)
+      integer :: status, k
+      call chart_fixture()
+      if (.not. chart%ready) return
+      directory = checkpoint_directory(chart%output)
+      saved = directory//".saved"
+      err = scratch_prefix("ck_damaged.err")
+      status = stop_program("--quiet --checkpoint-interval 0 '"//chart%scene//"'", directory//"/state", 10, "KILL", err)
+      if (.not. reached(ctx, status, units_text(10), "SIGKILL after 10 rows")) return
+      status = shell("rm -rf '"//saved//"' && cp -a '"//directory//"' '"//saved//"'")
+      ! the fifth data line of `data` (a recorded row: 10 rows of 300 lines are recorded)
+      row = "$(($(grep -n -m1 -v '^#' data | cut -d: -f1) + 4))"
+      labels = [character(len=200) :: "a digit of a recorded row", "a new line planted in a recorded row", &
+                "the scene in the header of data", "the byte count less", "the byte count more", &
+                "the unit count less", "the unit count more", "the failed-point count", "data cut short", &
+                "the state cut short"]
+      damages = [character(len=200) :: &
+         "sed -i -E """//row//"{s/0e/1e/;t;s/[1-9]e/0e/}"" data", &
+         "sed -i """//row//"s/ /\n/"" data", &
+         "sed -i '0,/n_beta = 300/s//n_beta = 301/' data", &
+         "sed -i -E 's/^bytes = ([0-9]+)$/echo bytes = $((\1 - 1))/e' state", &
+         "sed -i -E 's/^bytes = ([0-9]+)$/echo bytes = $((\1 + 20))/e' state", &
+         "sed -i 's/^units = 10 /units = 9 /' state", &
+         "sed -i 's/^units = 10 /units = 11 /' state", &
+         "sed -i 's/^failed = 0 0/failed = 1 5/' state", &
+         "truncate -s -100 data", &
+         "truncate -s -30 state"]
+      do k = 1, size(damages)
+         status = shell("rm -rf '"//directory//"' && cp -a '"//saved//"' '"//directory//"' && cd '"//directory// &
+                        "' && "//trim(damages(k)))
+         call check(ctx, status == 0 .and. shell("diff -rq '"//saved//"' '"//directory//"' >/dev/null") /= 0, &
+                    trim(labels(k))//": damaged")
+         status = run_program("--quiet --resume '"//chart%scene//"'", err, 2)
+         call check(ctx, status == 2, trim(labels(k))//": refused, exit 2 (status "//integer_text(status)//")")
+         call check(ctx, file_says(err, "'"//directory//"'") .and. file_says(err, "damaged") .and. &
+                    file_says(err, "not resumed"), trim(labels(k))//": names the checkpoint and the damage")
+         call check(ctx, .not. file_exists(chart%output) .and. .not. any_temp_file(chart%output), &
+                    trim(labels(k))//": no output file, no temporary file")
+         call check(ctx, directory_exists(directory), trim(labels(k))//": the checkpoint is kept")
+      end do
+      status = run_program("--quiet '"//chart%scene//"'", err, 2)
+      call check(ctx, status == 0 .and. same_file(chart%output, chart%reference), &
+                 "without --resume: the uninterrupted file")
+      call check(ctx, file_says(err, "discarded the damaged checkpoint '"//directory//"'"), "with a note")
+      call check(ctx, .not. directory_exists(directory), "the checkpoint is gone")
+      status = shell("rm -rf '"//saved//"'")
+      call delete_file(chart%output)
+      call delete_file(err)
+   end subroutine damaged_checkpoint_refused
+
+   !> The reproducer of a fault probe: a 200 x 200 magnus6 chart at 1e-12 with
+   !> --checkpoint-interval 0, killed with SIGKILL mid-run (here once 20 rows are recorded),
+   !> one digit of a finished row flipped in `data`: `--resume` refuses it (exit 2) instead of
+   !> writing a file with one data line that differs.
+   subroutine probe_digit_flip_refused(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: prefix, scene, output, directory, err
+      integer :: status
+      prefix = scratch_prefix("ck_probe")
+      scene = prefix//".nml"
+      output = prefix//"_chart.dat"
+      directory = checkpoint_directory(output)
+      err = prefix//".err"
+      call write_file(scene, [padded("&scene method='magnus6', tolerance=1e-12, output='"//prefix//"' /"), &
+                              padded("&chart n_alpha=200, n_beta=200 /")])
+      status = stop_program("--quiet --checkpoint-interval 0 '"//scene//"'", directory//"/state", 20, "KILL", err)
+      if (.not. reached(ctx, status, units_text(20), "SIGKILL after 20 rows")) return
+      status = shell("cd '"//directory//"' && cp data data.before && n=$(($(grep -n -m1 -v '^#' data | cut -d: -f1) "// &
+                     "+ 1000)) && sed -i -E ""${n}{s/0e/1e/;t;s/[1-9]e/0e/}"" data && ! cmp -s data data.before && "// &
+                     "rm data.before")
+      call check(ctx, status == 0, "a digit of row 6 flipped")
+      status = run_program("--quiet --resume '"//scene//"'", err, 2)
+      call check(ctx, status == 2, "refused, exit 2 (status "//integer_text(status)//")")
+      call check(ctx, file_says(err, "checkpoint '"//directory//"'") .and. file_says(err, "damaged"), &
+                 "the message names the checkpoint and the damage")
+      call check(ctx, .not. file_exists(output) .and. .not. any_temp_file(output), "no output, no temporary file")
+      status = shell("rm -rf '"//directory//"'")
+      call delete_file(scene)
+      call delete_file(err)
+   end subroutine probe_digit_flip_refused
+
+   !> Run the program with `arguments` (and `environment`, assignments before it) and send it
+   !> SIGKILL once a file `<output>.part??????` exists and, when `mark` is given, its stderr
+   !> `err` holds `mark`: 137, or `not_reached` when the run ended (or ran two minutes) first.
+   integer function kill_when(environment, arguments, output, mark, err) result(status)
+      character(len=*), intent(in) :: environment, arguments, output, mark, err
+      character(len=:), allocatable :: script
+      script = scratch_prefix("kill_when.sh")
+      call write_file(script, [character(len=160) :: &
+         'output=$1; mark=$2; err=$3; shift 3', &
+         'env "$@" 2>"$err" &', &
+         'pid=$!; n=0; exec 2>/dev/null', &
+         'while kill -0 $pid; do', &
+         '   set -- "$output".part??????', &
+         '   if [ -e "$1" ] && { [ -z "$mark" ] || grep -q "$mark" "$err"; }; then kill -KILL $pid; wait $pid; exit $?; fi', &
+         '   n=$((n + 1)); if [ $n -ge 12000 ]; then kill -KILL $pid; break; fi', &
+         '   sleep 0.01', &
+         'done', &
+         'wait $pid; echo "test: the run ended with status $? before it could be killed" >>"$err"', &
+         'exit 250'])
+      status = shell("bash '"//script//"' '"//output//"' '"//mark//"' '"//err//"' "//environment//" '"// &
+                     program_path()//"' "//arguments)
+      call delete_file(script)
+   end function kill_when
+
+   !> SIGKILL before the first checkpoint leaves the temporary output (nothing else can
+   !> remove it); the next run of the same output removes it, says so, and writes its file:
+   !> a chart stopped after its first row (the test hook, the default checkpoint interval)
+   !> and a boundaries run stopped in its first block of Hill's matrix (alpha = 1, beta up
+   !> to 1e6: a block of a minute or more), each followed by a run without `--resume`.
+   subroutine killed_before_checkpoint(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: err, prefix, scene, output
+      integer :: status
+      call chart_fixture()
+      if (.not. chart%ready) return
+      err = scratch_prefix("ck_early.err")
+      status = kill_when("HILLSTAB_TEST_PAUSE_AFTER_UNITS=1 OMP_NUM_THREADS=1", "--quiet '"//chart%scene//"'", &
+                         chart%output, "test hook: paused", err)
+      if (reached(ctx, status, "it paused after its first row", "chart")) then
+         call check(ctx, status == 137, "chart: killed (status "//integer_text(status)//")")
+         call check(ctx, any_temp_file(chart%output), "chart: its temporary file is left")
+         status = shell("rm -rf '"//checkpoint_directory(chart%output)//"'")
+         status = run_program("--quiet '"//chart%scene//"'", err, 2)
+         call check(ctx, status == 0 .and. same_file(chart%output, chart%reference), "chart: the next run writes its file")
+         call check(ctx, file_says(err, "removed '"//chart%output//".part"), "chart: and says it removed the old one")
+         call check(ctx, .not. any_temp_file(chart%output), "chart: no temporary file")
+      end if
+      call delete_file(chart%output)
+      call release_fixture(chart)
+      prefix = scratch_prefix("ck_bnd")
+      scene = prefix//".nml"
+      output = prefix//"_boundaries.dat"
+      call write_file(scene, [padded("&scene task='boundaries', output='"//prefix//"' /"), &
+                              padded("&chart alpha_min=1, alpha_max=1, n_alpha=1, beta_min=0, beta_max=1e6 /")])
+      status = kill_when("OMP_NUM_THREADS=1", "--quiet '"//scene//"'", output, "", err)
+      if (reached(ctx, status, "its temporary file appeared", "boundaries")) then
+         call check(ctx, status == 137 .and. any_temp_file(output), "boundaries: killed, its temporary file left")
+         call write_file(scene, [padded("&scene task='boundaries', method='formula', output='"//prefix//"' /"), &
+                                 padded("&chart n_alpha=3 /")])
+         status = run_program("--quiet --resume '"//scene//"'", err, 2)
+         call check(ctx, status == 0 .and. file_exists(output), "boundaries: the next run (--resume) writes its file")
+         call check(ctx, file_says(err, "removed '"//output//".part"), "boundaries: and says it removed the old one")
+         call check(ctx, .not. any_temp_file(output), "boundaries: no temporary file")
+      end if
+      call delete_file(output)
+      call delete_file(scene)
+      call delete_file(err)
+   end subroutine killed_before_checkpoint
+
    !> SIGTERM: exit 143, the temporary file removed, the checkpoint kept, a message saying
    !> how to resume; the resumed run writes the uninterrupted file.
    subroutine sigterm_keeps_checkpoint(ctx)
@@ -290,6 +464,7 @@ contains
       directory = checkpoint_directory(chart%output)
       err = scratch_prefix("ck_term.err")
       status = stop_program("--quiet --checkpoint-interval 0 '"//chart%scene//"'", directory//"/state", 5, "TERM", err)
+      if (.not. reached(ctx, status, units_text(5), "SIGTERM after 5 units")) return
       call check(ctx, status == 143, "exit 143 (status "//integer_text(status)//")")
       call check(ctx, file_says(err, "stopped by signal 15"), "says which signal")
       call check(ctx, file_says(err, "hillstab --resume "//chart%scene), "says how to resume")
@@ -318,6 +493,7 @@ contains
       err = scratch_prefix("ck_other.err")
       other = scratch_prefix("ck_other.nml")
       status = stop_program("--quiet --checkpoint-interval 0 '"//chart%scene//"'", directory//"/state", 2, "KILL", err)
+      if (.not. reached(ctx, status, units_text(2), "SIGKILL after 2 units")) return
       before = read_lines(directory//"/state")
       call write_file(other, [ &
          padded("&scene task='chart', method='magnus6', tolerance=1e-12, output='"//scratch_prefix("ck_chart")//"' /"), &
@@ -375,6 +551,7 @@ contains
       directory = checkpoint_directory(map%output)
       err = scratch_prefix("ck_discard.err")
       status = stop_program("--quiet --checkpoint-interval 0 '"//map%scene//"'", directory//"/state", 3, "KILL", err)
+      if (.not. reached(ctx, status, units_text(3), "SIGKILL after 3 units")) return
       call check(ctx, status == 137 .and. directory_exists(directory), "a checkpoint is left")
       call check(ctx, any_temp_file(map%output), "and the killed run's temporary file")
       status = run_program("--quiet '"//map%scene//"'", err, 2)
@@ -436,30 +613,41 @@ contains
       call delete_file(scene)
    end subroutine planted_links_not_followed
 
-   !> While a run writes its checkpoint, a second run of the same output (with or without
-   !> `--resume`) is refused (exit 2) and changes nothing.
+   !> While a run writes its output, a second run of the same output (with or without
+   !> `--resume`) is refused (exit 2) and changes nothing: once the first keeps a checkpoint
+   !> (interval 0: from its start), and before it has made one (the default interval).
    subroutine second_run_refused(ctx)
       type(test_context_t), intent(inout) :: ctx
-      character(len=:), allocatable :: directory, err, script
-      integer :: status
+      character(len=:), allocatable :: directory, err, script, interval
+      integer :: status, round
       call chart_fixture()
       if (.not. chart%ready) return
       directory = checkpoint_directory(chart%output)
       err = scratch_prefix("ck_second.err")
       script = scratch_prefix("second.sh")
+      ! the first run waits after its first row (the test hook) while the others start
       call write_file(script, [character(len=200) :: &
-         'OMP_NUM_THREADS=1 "$1" --quiet --checkpoint-interval 0 "$2" 2>/dev/null &', &
+         'HILLSTAB_TEST_PAUSE_AFTER_UNITS=1 OMP_NUM_THREADS=1 "$1" --quiet "${@:5}" "$2" 2>"$4.first" &', &
          'pid=$!; n=0', &
-         'until [ -e "$3/state" ] || [ $n -ge 3000 ]; do sleep 0.01; n=$((n + 1)); done', &
+         'until grep -q "test hook: paused" "$4.first" 2>/dev/null || ! kill -0 $pid 2>/dev/null; do', &
+         '   n=$((n + 1)); if [ $n -ge 12000 ]; then break; fi; sleep 0.01', &
+         'done', &
+         'if ! grep -q "test hook: paused" "$4.first"; then kill -KILL $pid; wait $pid; rm -f "$4.first"; exit 250; fi', &
          '"$1" --quiet "$2" 2>"$4"; first=$?', &
          '"$1" --quiet --resume "$2" 2>>"$4"; second=$?', &
-         'kill -TERM $pid; wait $pid', &
+         'kill -TERM $pid; wait $pid; rm -f "$4.first"', &
          '[ $first = 2 ] && [ $second = 2 ]'])
-      status = shell("bash '"//script//"' '"//program_path()//"' '"//chart%scene//"' '"//directory//"' '"//err//"'")
-      call check(ctx, status == 0, "both refused with exit 2")
-      call check(ctx, file_says(err, "is in use by another run"), "says why")
-      call check(ctx, .not. file_exists(chart%output), "no output file")
-      status = shell("rm -rf '"//directory//"'")
+      do round = 1, 2
+         interval = merge("--checkpoint-interval 0", "                       ", round == 1)
+         status = shell("bash '"//script//"' '"//program_path()//"' '"//chart%scene//"' '"//directory//"' '"// &
+                        err//"' "//trim(interval))
+         if (.not. reached(ctx, status, "it paused after its first row", "round "//integer_text(round))) exit
+         call check(ctx, status == 0, "both refused with exit 2, round "//integer_text(round))
+         call check(ctx, file_says(err, "is in use by another run"), "says why, round "//integer_text(round))
+         call check(ctx, .not. file_exists(chart%output), "no output file")
+         call check(ctx, .not. any_temp_file(chart%output), "no temporary file left")
+         status = shell("rm -rf '"//directory//"'")
+      end do
       call delete_file(script)
       call delete_file(err)
       call release_fixture(chart)

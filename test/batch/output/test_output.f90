@@ -6,13 +6,19 @@
 module test_output
    use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, err_io, err_input
+   use hillstab_core_text, only: integer_text
+   use hillstab_batch_run_cli, only: exit_status
    use hillstab_batch_output_file, only: output_file_t, open_output, write_text, commit_output, discard_output
    use hillstab_batch_run_scenes, only: run_scene_file
    use hillstab_batch_output_progress, only: rate_text
    use hillstab_testing
    use hillstab_fault_injection, only: check_writer_under_limit, limit_file_size, lift_file_size_limit, &
       limit_address_space, lift_address_space_limit
-   use hillstab_test_scratch, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text
+   use hillstab_test_scratch, only: padded, scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text, &
+      any_temp_file, program_path
+   use hillstab_batch_output_checkpoint, only: checkpoint_options_t
+   use hillstab_ffi_libc, only: c_fopen, c_fclose, c_string, lock_state, lock_taken
+   use, intrinsic :: iso_c_binding, only: c_ptr, c_int, c_associated
    implicit none
    private
    public :: collect_output
@@ -30,6 +36,11 @@ contains
          new_unittest("directory_output_refused", directory_output_refused), &
          new_unittest("output_larger_than_free_space", output_larger_than_free_space), &
          new_unittest("buffers_larger_than_memory", buffers_larger_than_memory), &
+         new_unittest("every_task_memory_estimate", every_task_memory_estimate), &
+         new_unittest("address_space_too_small_to_start", address_space_too_small_to_start), &
+         new_unittest("probe_memory_reproducers", probe_memory_reproducers), &
+         new_unittest("stale_temporary_removed", stale_temporary_removed), &
+         new_unittest("busy_temporary_refused", busy_temporary_refused), &
          new_unittest("progress_rate_text", progress_rate_text)])
    end function collect_output
 
@@ -212,6 +223,286 @@ contains
       call delete_file(out//"_chart.dat")
       call delete_file(scene)
    end subroutine buffers_larger_than_memory
+   !> Under an address-space limit, the memory estimate of each task refuses a scene whose
+   !> buffers would not fit, before any work, naming the variables that set them and the
+   !> limit (exit 2), with no file and no temporary file: boundaries over 10^6 alphas (about
+   !> 2.4 GB under a limit 200 MB above the process), poincare over 10^6 periods (about
+   !> 340 MB under 100 MB), lyapunov over 400 x 400 points in 256 lanes (about 90 MB
+   !> on two threads, under 30 MB), coefficient of 64 curves of 10^5 pieces (51 MB under
+   !> 20 MB); each task's small scene still runs under the same limit. (series streams its
+   !> rows: `address_space_too_small_to_start`.)
+   subroutine every_task_memory_estimate(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out, scene, output, names
+      character(len=800) :: big(2, 4), small(2, 4)
+      character(len=16) :: tasks(4)
+      integer(int64) :: extra(4)
+      character(len=:), allocatable :: alphas
+      integer :: k, j, round
+      out = scratch_prefix("memory_task")
+      alphas = "1.0"
+      do j = 2, 64
+         alphas = alphas//", "//integer_text(j)//".0e-2"
+      end do
+      tasks = [character(len=16) :: "boundaries", "poincare", "lyapunov", "coefficient"]
+      extra = [200000000_int64, 100000000_int64, 30000000_int64, 20000000_int64]
+      big(:, 1) = [character(len=800) :: "&scene task='boundaries', output='"//out//"' /", "&chart n_alpha=1000000 /"]
+      small(:, 1) = [character(len=800) :: "&scene task='boundaries', output='"//out//"' /", "&chart n_alpha=3 /"]
+      big(:, 2) = [character(len=800) :: "&scene task='poincare', output='"//out//"' /", "&series periods=1000000 /"]
+      small(:, 2) = [character(len=800) :: "&scene task='poincare', output='"//out//"' /", "&series periods=3 /"]
+      big(:, 3) = [character(len=800) :: "&scene task='lyapunov', output='"//out//"' /", &
+                   "&lyapunov lanes=256 / &series periods=2 / &chart n_alpha=400, n_beta=400 /"]
+      small(:, 3) = [character(len=800) :: "&scene task='lyapunov', output='"//out//"' /", &
+                     "&lyapunov lanes=256 / &series periods=2 / &chart n_alpha=3, n_beta=3 /"]
+      big(:, 4) = [character(len=800) :: "&scene task='coefficient', method='segments', n_segments=100000, output='"// &
+                   out//"' /", "&coefficient alphas="//alphas//", n_tau=5 /"]
+      small(:, 4) = [character(len=800) :: "&scene task='coefficient', method='segments', n_segments=1000, output='"// &
+                     out//"' /", "&coefficient alphas="//alphas//", n_tau=5 /"]
+      scene = out//".nml"
+      do k = 1, size(tasks)
+         output = out//"_"//trim(tasks(k))//".dat"
+         do round = 1, 2
+            if (round == 1) then
+               call write_file(scene, big(:, k))
+            else
+               call write_file(scene, small(:, k))
+            end if
+            call limit_address_space(extra(k))
+            call run_scene_file(scene, .true., error)
+            call lift_address_space_limit()
+            if (round == 2) then
+               call check(ctx, .not. allocated(error), trim(tasks(k))//": the small scene runs under the limit")
+               call check(ctx, file_exists(output), trim(tasks(k))//": and writes its file")
+               call delete_file(output)
+               cycle
+            end if
+            call check(ctx, allocated(error), trim(tasks(k))//": refused")
+            if (allocated(error)) then
+               call check(ctx, exit_status(error) == 2, trim(tasks(k))//": exit 2: "//error%message)
+               names = merge("&chart: n_alpha   ", "&series: periods  ", k == 1)
+               if (k == 3) names = "&lyapunov: lanes"
+               if (k == 4) names = "&scene: n_segments"
+               call check(ctx, contains_text(error%message, scene//": "//trim(names)) .or. &
+                          contains_text(error%message, trim(names)), trim(tasks(k))//": names "//trim(names)//": "// &
+                          error%message)
+               call check(ctx, contains_text(error%message, "ulimit -v"), trim(tasks(k))//": names the limit")
+            end if
+            call check(ctx, .not. file_exists(output) .and. .not. any_temp_file(output), &
+                       trim(tasks(k))//": no file, no temporary file")
+         end do
+      end do
+      call delete_file(scene)
+   end subroutine every_task_memory_estimate
+
+   !> The program under an address-space limit too small for any run (`ulimit -v 32000`:
+   !> about 12 MB above what it holds at its start): a series scene (whose rows stream, so
+   !> that nothing in the scene sets its memory) and a chart are refused at once with
+   !> hillstab's own message naming the limit (exit 2), not the OpenMP runtime's or a
+   !> backtrace; no file, no temporary file. Not under AddressSanitizer (its shadow memory
+   !> needs an unlimited address space).
+   subroutine address_space_too_small_to_start(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: out, err
+      character(len=1024), allocatable :: lines(:)
+      character(len=16) :: asan
+      integer :: status, length, k
+      call get_environment_variable("ASAN_OPTIONS", asan, length, status)
+      if (status == 0) then
+         call check(ctx, .true., "skipped under AddressSanitizer")
+         return
+      end if
+      out = scratch_prefix("start")
+      err = out//".err"
+      call write_file(out//"_s.nml", [padded("&scene task='series', output='"//out//"' /"), &
+                                      padded("&series periods=2 /")])
+      call write_file(out//"_c.nml", [padded("&scene method='formula', output='"//out//"' /"), &
+                                      padded("&chart n_alpha=5, n_beta=5 /")])
+      do k = 1, 2
+         call execute_command_line("ulimit -v 32000; OMP_NUM_THREADS="//achar(iachar("0") + k)//" '"// &
+                                   program_path()//"' --quiet '"//out//"_s.nml' '"//out//"_c.nml' 2>'"//err//"'", &
+                                   exitstat=status)
+         call check(ctx, status == 2, integer_text(k)//" thread(s): exit 2 (status "//integer_text(status)//")")
+         lines = read_lines(err)
+         call check(ctx, size(lines) == 1, integer_text(k)//" thread(s): one message line")
+         if (size(lines) == 1) call check(ctx, index(lines(1), "hillstab: the address-space limit (ulimit -v) "// &
+                                          "leaves this process") == 1, trim(lines(1)))
+         call check(ctx, .not. file_exists(out//"_series.dat") .and. .not. any_temp_file(out//"_series.dat") .and. &
+                    .not. file_exists(out//"_chart.dat") .and. .not. any_temp_file(out//"_chart.dat"), &
+                    "no file, no temporary file")
+      end do
+      call delete_file(out//"_s.nml")
+      call delete_file(out//"_c.nml")
+      call delete_file(err)
+   end subroutine address_space_too_small_to_start
+
+   !> The reproducers of a fault probe, which ended with "Error allocating 54400000000
+   !> bytes", a backtrace, exit 1 and a temporary file left: boundaries over
+   !> `n_alpha = 100000000` (here under an address-space limit 200 GB above the process, so
+   !> that no machine runs it), boundaries over 10^6 alphas under `ulimit -v 300000` and
+   !> poincare over 10^6 periods under `ulimit -v 200000` (the program, as the probe ran it;
+   !> not under AddressSanitizer). Each: exit 2, one message naming the variable, no file.
+   subroutine probe_memory_reproducers(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out, err
+      character(len=1024), allocatable :: lines(:)
+      character(len=16) :: asan
+      integer :: status, length
+      out = scratch_prefix("probe_memory")
+      err = out//".err"
+      call write_file(out//"_b8.nml", [padded("&scene task='boundaries', output='"//out//"' /"), &
+                                       padded("&chart n_alpha=100000000 /")])
+      call limit_address_space(200000000000_int64)
+      call run_scene_file(out//"_b8.nml", .true., error)
+      call lift_address_space_limit()
+      call check(ctx, allocated(error), "n_alpha = 1e8: refused")
+      if (allocated(error)) then
+         call check(ctx, exit_status(error) == 2 .and. contains_text(error%message, out//"_b8.nml: &chart: n_alpha"), &
+                    "exit 2 naming n_alpha: "//error%message)
+      end if
+      call check(ctx, .not. file_exists(out//"_boundaries.dat") .and. .not. any_temp_file(out//"_boundaries.dat"), &
+                 "n_alpha = 1e8: no file, no temporary file")
+      call delete_file(out//"_b8.nml")
+      call get_environment_variable("ASAN_OPTIONS", asan, length, status)
+      if (status == 0) return
+      call write_file(out//"_b6.nml", [padded("&scene task='boundaries', output='"//out//"' /"), &
+                                       padded("&chart n_alpha=1000000 /")])
+      call write_file(out//"_p6.nml", [padded("&scene task='poincare', output='"//out//"' /"), &
+                                       padded("&series periods=1000000 /")])
+      call probe("300000", out//"_b6.nml", out//"_boundaries.dat", "&chart: n_alpha")
+      call probe("200000", out//"_p6.nml", out//"_poincare.dat", "&series: periods")
+      call delete_file(out//"_b6.nml")
+      call delete_file(out//"_p6.nml")
+      call delete_file(err)
+   contains
+      subroutine probe(limit, scene, output, names)
+         character(len=*), intent(in) :: limit, scene, output, names
+         call execute_command_line("ulimit -v "//limit//"; '"//program_path()//"' --quiet '"//scene//"' 2>'"// &
+                                   err//"'", exitstat=status)
+         call check(ctx, status == 2, scene//" under ulimit -v "//limit//": exit 2 (status "//integer_text(status)//")")
+         lines = read_lines(err)
+         call check(ctx, size(lines) == 1, scene//": one message line")
+         if (size(lines) == 1) call check(ctx, index(lines(1), "hillstab: "//scene//": "//names) == 1 .and. &
+                                          index(lines(1), "ulimit -v") > 0, trim(lines(1)))
+         call check(ctx, .not. file_exists(output) .and. .not. any_temp_file(output), scene//": no file, no temporary file")
+      end subroutine probe
+   end subroutine probe_memory_reproducers
+
+   !> A small scene of every task (chart in text and in binary, points, lyapunov,
+   !> coefficient, series, boundaries, poincare) writing `<prefix>k_<task>.<ext>`: its
+   !> scene file and its output.
+   subroutine every_task(prefix, k, scene, output)
+      character(len=*), intent(in) :: prefix
+      integer, intent(in) :: k  !! 1 … 8
+      character(len=:), allocatable, intent(out) :: scene, output
+      character(len=:), allocatable :: out
+      character(len=:), allocatable :: lines(:)
+      out = prefix//achar(iachar("0") + k)
+      scene = out//".nml"
+      select case (k)
+      case (1)
+         lines = [padded("&scene method='formula', output='"//out//"' /"), padded("&chart n_alpha=3, n_beta=4 /")]
+         output = out//"_chart.dat"
+      case (2)
+         lines = [padded("&scene method='formula', format='binary', output='"//out//"' /"), &
+                  padded("&chart n_alpha=3, n_beta=4 /")]
+         output = out//"_chart.bin"
+      case (3)
+         call write_file(out//"_pts.txt", ["1.0 2.0", "3.0 4.0"])
+         lines = [padded("&scene task='points', method='formula', output='"//out//"' /"), &
+                  padded("&points file='"//out//"_pts.txt' /")]
+         output = out//"_points.dat"
+      case (4)
+         lines = [padded("&scene task='lyapunov', output='"//out//"' /"), padded("&series phi0=0.017, periods=2 /"), &
+                  padded("&chart n_alpha=2, n_beta=2 /")]
+         output = out//"_lyapunov.dat"
+      case (5)
+         lines = [padded("&scene task='coefficient', output='"//out//"' /"), padded("&coefficient n_tau=5 /")]
+         output = out//"_coefficient.dat"
+      case (6)
+         lines = [padded("&scene task='series', output='"//out//"' /"), &
+                  padded("&series periods=1, samples_per_period=5 /")]
+         output = out//"_series.dat"
+      case (7)
+         lines = [padded("&scene task='boundaries', method='formula', output='"//out//"' /"), &
+                  padded("&chart n_alpha=3 /")]
+         output = out//"_boundaries.dat"
+      case default
+         lines = [padded("&scene task='poincare', output='"//out//"' /"), padded("&series periods=2 /")]
+         output = out//"_poincare.dat"
+      end select
+      call write_file(scene, lines)
+   end subroutine every_task
+
+   !> A temporary file a killed run of each task's output left (named as the writer names
+   !> them, nobody holding its lock) is removed by the next run of that output, with or
+   !> without `--resume`, and the run writes its file.
+   subroutine stale_temporary_removed(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: scene, output
+      integer :: k, round
+      do round = 1, 2
+         do k = 1, 8
+            call every_task(scratch_prefix("stale"), k, scene, output)
+            call write_file(output//".partAb12Cd", ["a row of a killed run"])
+            call write_file(output//".partZz99zz", ["another"])
+            call run_scene_file(scene, .true., error, options=checkpoint_options_t(resume=round == 2))
+            if (k == 2 .and. round == 2) then
+               ! a binary chart keeps no checkpoint: --resume is bad input, refused before
+               ! anything is touched
+               call check(ctx, allocated(error), "binary --resume refused")
+               call check(ctx, any_temp_file(output), "and nothing touched")
+               call delete_file(output//".partAb12Cd")
+               call delete_file(output//".partZz99zz")
+            else
+               call check(ctx, .not. allocated(error), "task "//integer_text(k)//" runs")
+               call check(ctx, file_exists(output), "and writes "//output)
+               call check(ctx, .not. any_temp_file(output), "task "//integer_text(k)//", round "// &
+                          integer_text(round)//": the stale temporary files are removed")
+            end if
+            call delete_file(output)
+            call delete_file(scene)
+         end do
+      end do
+      call delete_file(scratch_prefix("stale")//"3_pts.txt")
+   end subroutine stale_temporary_removed
+
+   !> A temporary file of the output whose lock is held (another run writing it): every
+   !> task refuses the run (exit 2, "in use by another run"), writes nothing and leaves
+   !> that file alone.
+   subroutine busy_temporary_refused(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: scene, output
+      type(c_ptr) :: held
+      integer(c_int) :: status
+      integer :: k
+      do k = 1, 8
+         call every_task(scratch_prefix("busy"), k, scene, output)
+         call write_file(output//".partAb12Cd", ["a row of a running run"])
+         held = c_fopen(c_string(output//".partAb12Cd"), c_string("r"))
+         call check(ctx, c_associated(held), "opened")
+         if (.not. c_associated(held)) cycle
+         call check(ctx, lock_state(held) == lock_taken, "its lock held here")
+         call run_scene_file(scene, .true., error)
+         call check(ctx, allocated(error), "task "//integer_text(k)//": refused")
+         if (allocated(error)) then
+            call check(ctx, exit_status(error) == 2, "exit 2: "//error%message)
+            call check(ctx, contains_text(error%message, scene//": &scene: output: ") .and. &
+                       contains_text(error%message, "in use by another run"), "says why: "//error%message)
+         end if
+         call check(ctx, .not. file_exists(output), "no output")
+         call check(ctx, file_exists(output//".partAb12Cd"), "the other run's file is kept")
+         status = c_fclose(held)
+         call delete_file(output//".partAb12Cd")
+         call check(ctx, .not. any_temp_file(output), "no temporary file of its own left")
+         call delete_file(scene)
+      end do
+      call delete_file(scratch_prefix("busy")//"3_pts.txt")
+   end subroutine busy_temporary_refused
+
    !> The rate of the progress line: a unit taking half a minute (a block of Hill's matrix near
    !> alpha = pi^2) showed as "0 Hill blocks/s".
    subroutine progress_rate_text(ctx)

@@ -949,14 +949,20 @@ contains
       call execute_command_line("rmdir '"//dir//"'")
    end subroutine long_file_names
 
-   !> Messages echo what scene files hold as one plain line: control characters and the
-   !> Unicode line separators are escaped; plain text and other UTF-8 pass unchanged.
+   !> Messages echo what scene files hold as one plain line: control characters (C0 and the
+   !> C1 controls of UTF-8) and the Unicode line separators are escaped; plain text and other
+   !> UTF-8 pass unchanged.
    subroutine messages_printable(ctx)
       type(test_context_t), intent(inout) :: ctx
       character(len=*), parameter :: ls = achar(226)//achar(128)//achar(168)
       call check(ctx, printable("a"//achar(12)//"b"//achar(0)//"c"//achar(10)) == "a\x0cb\x00c\x0a", &
          "form feed, NUL, line feed escaped: "//printable("a"//achar(12)//"b"//achar(0)//"c"//achar(10)))
       call check(ctx, printable("x"//ls//"y") == "x\u2028y", "U+2028 escaped")
+      ! the C1 controls of UTF-8: U+0085 (next line: a line break for some tools), U+009B
+      ! (a terminal's control sequence introducer); U+00A0 (no-break space) is text
+      call check(ctx, printable("a"//achar(194)//achar(133)//"b"//achar(194)//achar(155)//"c"//achar(194)// &
+         achar(160)) == "a\u0085b\u009bc"//achar(194)//achar(160), "U+0085, U+009B escaped, U+00A0 kept: "// &
+         printable("a"//achar(194)//achar(133)//"b"//achar(194)//achar(155)//"c"//achar(194)//achar(160)))
       call check(ctx, printable("&scene: output: 'é' α") == "&scene: output: 'é' α", "plain text unchanged")
    end subroutine messages_printable
 

@@ -14,9 +14,18 @@
 !> - `state`: text, `key = value` lines: the program version, the output, the temporary
 !>   name, a fingerprint of the effective scene and its points (hillstab_batch_run_units
 !>   `scene_fingerprint`), the effective scene's namelist lines, the units (size, count,
-!>   done), the bytes of `data` they fill, and the counts and first indices of failed and
-!>   round-off limited points (so that the resumed run reports what an uninterrupted one
-!>   reports).
+!>   done), the bytes of `data` they fill and their checksum (hillstab_batch_output_digest), and the
+!>   counts and first indices of failed and round-off limited points (so that the resumed run
+!>   reports what an uninterrupted one reports); its last line, `check = …`, is the checksum
+!>   of the lines before it.
+!>
+!> Nothing is trusted unread: `find_checkpoint` recomputes the state's checksum and checks
+!> that its numbers agree with one another (a state that fails is damaged: `--resume`
+!> refuses it, naming the checkpoint, and keeps it), and the resumed run recomputes the
+!> checksum of the recorded bytes of `data` before it writes a byte (hillstab_batch_output_file
+!> `resume_output`). A changed digit, a planted or removed line, an edited header, a byte
+!> count, unit count or failed-point count edited in the state: each is refused, never
+!> continued into a file that differs from the one an uninterrupted run writes.
 !>
 !> Order of writes: `data` is flushed and fsynced, then the new state goes to `state.new`, is
 !> fsynced and renamed onto `state`, then the directory is fsynced. So the state never claims
@@ -37,7 +46,8 @@
 module hillstab_batch_output_checkpoint
    use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, set_error, err_io
-   use hillstab_core_text, only: integer_text, read_text_line
+   use hillstab_core_text, only: integer_text
+   use hillstab_batch_output_digest, only: text_digest
    use hillstab_ffi_libc, only: c_lstat, c_fstat, stat_t, c_mkdir, c_link, c_rmdir, c_unlink, c_rename, c_geteuid, &
       c_fopen, c_fclose, c_fwrite, c_fflush, c_fsync, c_fileno, try_lock, name_max, &
       file_type, file_type_directory, file_type_link, file_type_regular, errno_text, errno_value, set_errno, &
@@ -49,7 +59,7 @@ module hillstab_batch_output_checkpoint
    public :: checkpoint_options_t, checkpoint_state_t, checkpoint_directory, checkpoint_data, find_checkpoint, &
       make_checkpoint, save_checkpoint_state, remove_checkpoint, remove_stale_temporary, scene_difference, &
       checkpoint_note, scene_lines, fnv1a_step
-   public :: checkpoint_usable, checkpoint_incomplete
+   public :: checkpoint_usable, checkpoint_incomplete, checkpoint_damaged
 
    !> Seconds between two updates of a checkpoint by default.
    real(wp), parameter :: default_interval = 3.0_wp
@@ -58,10 +68,15 @@ module hillstab_batch_output_checkpoint
    !> a checkpoint with its data and a readable state
    integer, parameter :: checkpoint_usable = 1
    !> a checkpoint directory without data or without a readable state (its run stopped
-   !> while making it); discarded, never resumed
+   !> while making it, or an older version wrote it); discarded, never resumed
    integer, parameter :: checkpoint_incomplete = 2
+   !> a checkpoint whose state fails its checksum or contradicts itself (damaged since it was
+   !> written); `--resume` refuses it, a run without discards it
+   integer, parameter :: checkpoint_damaged = 3
    !> The first line of a state file.
-   character(len=*), parameter :: state_format = "hillstab checkpoint 1"
+   character(len=*), parameter :: state_format = "hillstab checkpoint 2"
+   !> Longest state file read (the effective scene's lines are at most 1 MiB).
+   integer, parameter :: max_state_bytes = 4194304
    !> Suffix of a checkpoint directory.
    character(len=*), parameter :: suffix = ".checkpoint"
 
@@ -85,6 +100,7 @@ module hillstab_batch_output_checkpoint
       integer :: n_units = 0                      !! units of the run
       integer :: units_done = 0                   !! units 1 … units_done are in the data
       integer(int64) :: bytes = 0                 !! bytes of the data they fill (with the header)
+      integer(int64) :: digest(2) = 0             !! the checksum of those bytes (hillstab_batch_output_digest)
       integer(int64) :: n_inaccurate = 0          !! round-off limited points among them
       integer(int64) :: first_inaccurate = 0      !! index of the first of them (0: none)
       integer(int64) :: n_failed = 0              !! failed points among them
@@ -143,15 +159,17 @@ contains
    end function fnv1a_step
 
    !> What is at the checkpoint name `directory`: nothing, a usable checkpoint (`state`
-   !> read), or an incomplete one (`reason` says what it lacks). `error` (err_io) when
+   !> read), an incomplete one or a damaged one (`reason` says what it lacks or what is
+   !> wrong). `error` (err_io) when
    !> something else is in the way — a symbolic link, a file, a directory of another user
    !> or open to others (never followed nor removed) — or when another run holds the
    !> checkpoint's lock.
    subroutine find_checkpoint(directory, kind, state, reason, error)
       character(len=*), intent(in) :: directory  !! the checkpoint directory (`checkpoint_directory`)
-      integer, intent(out) :: kind  !! checkpoint_none, checkpoint_usable or checkpoint_incomplete
+      !> checkpoint_none, checkpoint_usable, checkpoint_incomplete or checkpoint_damaged
+      integer, intent(out) :: kind
       type(checkpoint_state_t), intent(out) :: state  !! a usable checkpoint's state
-      character(len=:), allocatable, intent(out) :: reason  !! why a checkpoint is incomplete
+      character(len=:), allocatable, intent(out) :: reason  !! why a checkpoint is incomplete or damaged
       !> err_io: "cannot keep the checkpoint '…': <why>" (the caller names the scene)
       type(error_t), allocatable, intent(out) :: error
       type(stat_t) :: info
@@ -199,8 +217,7 @@ contains
          reason = "its data is not a regular file"
          return
       end if
-      if (.not. read_state(directory, state, reason)) return
-      kind = checkpoint_usable
+      kind = read_state(directory, state, reason)
    contains
       subroutine in_the_way(why)
          character(len=*), intent(in) :: why
@@ -221,34 +238,59 @@ contains
       end do
    end function octal_text
 
-   !> Read the state file of a checkpoint; `.false.` with `reason` when it is missing or
-   !> cannot be read as a state.
-   function read_state(directory, state, reason) result(ok)
+   !> Read the state file of a checkpoint: checkpoint_usable, or checkpoint_incomplete
+   !> (missing, of another format) or checkpoint_damaged (its checksum fails, a line cannot be
+   !> read, its numbers contradict one another) with `reason`.
+   function read_state(directory, state, reason) result(kind)
       character(len=*), intent(in) :: directory
       type(checkpoint_state_t), intent(inout) :: state
       character(len=:), allocatable, intent(inout) :: reason
-      logical :: ok
-      character(len=:), allocatable :: line, key, value, collected
-      integer :: unit, ios, at, n_scene
-      logical :: have(8)
-      ok = .false.
-      open (newunit=unit, file=directory//"/state", status="old", action="read", iostat=ios)
-      if (ios /= 0) then
+      integer :: kind
+      character(len=:), allocatable :: text, line, key, value, collected
+      character(len=*), parameter :: check_key = "check = "
+      integer :: ios, at, n_scene, start, end_of_line, last
+      logical :: have(9), exists
+      integer(int64) :: size
+      kind = checkpoint_incomplete
+      inquire (file=directory//"/state", exist=exists, size=size)
+      if (.not. exists) then
          reason = "it has no state (its run stopped before the first checkpoint was complete)"
          return
       end if
-      call read_text_line(unit, line, ios, max_length=1048576)
-      if (ios /= 0 .or. line /= state_format) then
-         close (unit)
+      if (size > max_state_bytes .or. size < 0) then
+         kind = checkpoint_damaged
+         reason = "its state is damaged ("//integer_text(size)//" bytes, more than a state holds)"
+         return
+      end if
+      call read_whole(directory//"/state", int(size), text, ios)
+      if (ios /= 0) then
+         reason = "its state cannot be read"
+         return
+      end if
+      if (index(text, state_format//new_line("a")) /= 1) then
          reason = "its state is not one this version reads"
+         return
+      end if
+      kind = checkpoint_damaged
+      ! the last line is the checksum of the text before it
+      last = index(text(:max(len(text) - 1, 0)), new_line("a"), back=.true.)
+      if (len(text) < 2 .or. text(len(text):) /= new_line("a") .or. last == 0) then
+         reason = "its state is damaged (cut short)"
+         return
+      end if
+      if (text(last + 1:len(text) - 1) /= check_key//text_digest(text(:last))) then
+         reason = "its state is damaged (it does not match the checksum of its last line)"
          return
       end if
       have = .false.
       collected = ""
       n_scene = 0
-      do
-         call read_text_line(unit, line, ios, max_length=1048576)
-         if (ios /= 0) exit
+      ios = 0
+      start = len(state_format) + 2
+      do while (start <= last)
+         end_of_line = start + index(text(start:last), new_line("a")) - 2
+         line = text(start:end_of_line)
+         start = end_of_line + 2
          if (len(line) == 0) cycle
          if (line(1:1) == "#") cycle
          at = index(line, " = ")
@@ -285,25 +327,70 @@ contains
          case ("failed")
             read (value, *, iostat=ios) state%n_failed, state%first_failed
             have(8) = .true.
+         case ("digest")
+            read (value, *, iostat=ios) state%digest
+            have(9) = .true.
          case ("scene")
             collected = collected//value//new_line("a")
             n_scene = n_scene + 1
+         case default
+            ios = 1
          end select
          if (ios /= 0) exit
       end do
-      close (unit)
-      if (.not. is_iostat_end(ios) .or. .not. all(have) .or. n_scene == 0) then
-         reason = "its state cannot be read"
+      if (ios /= 0 .or. .not. all(have) .or. n_scene == 0) then
+         reason = "its state is damaged (a line cannot be read)"
          return
       end if
-      if (state%unit_size < 1 .or. state%n_units < 1 .or. state%units_done < 0 .or. &
-          state%units_done > state%n_units .or. state%bytes < 1 .or. state%n_points < 1) then
-         reason = "its state is inconsistent"
+      reason = inconsistency(state)
+      if (len(reason) > 0) then
+         reason = "its state is damaged ("//reason//")"
          return
       end if
       state%scene = collected
-      ok = .true.
+      kind = checkpoint_usable
    end function read_state
+
+   !> What in a state contradicts the rest ("" when nothing): the units and points, the
+   !> points done against the counts and first indices of failed and inaccurate points.
+   pure function inconsistency(state) result(text)
+      type(checkpoint_state_t), intent(in) :: state
+      character(len=:), allocatable :: text
+      integer(int64) :: done
+      text = ""
+      if (state%unit_size < 1 .or. state%n_units < 1 .or. state%n_points < 1 .or. state%bytes < 1) then
+         text = "units, points or bytes below 1"
+      else if (state%units_done < 0 .or. state%units_done > state%n_units) then
+         text = "units done outside 0 ... units"
+      else if (int(state%n_units, int64) /= (state%n_points + state%unit_size - 1)/state%unit_size) then
+         text = "the units do not tile the points"
+      else if (any(state%digest < 0) .or. any(state%digest > 4294967295_int64)) then
+         text = "a checksum out of range"
+      end if
+      if (len(text) > 0) return
+      done = min(state%n_points, int(state%units_done, int64)*state%unit_size)
+      if (state%n_failed < 0 .or. state%n_failed > done .or. (state%n_failed > 0 .neqv. state%first_failed > 0) &
+          .or. state%first_failed < 0 .or. state%first_failed > done) then
+         text = "failed points that the points done cannot hold"
+      else if (state%n_inaccurate < 0 .or. state%n_inaccurate > done .or. (state%n_inaccurate > 0 .neqv. &
+               state%first_inaccurate > 0) .or. state%first_inaccurate < 0 .or. state%first_inaccurate > done) then
+         text = "round-off limited points that the points done cannot hold"
+      end if
+   end function inconsistency
+
+   !> The `size` bytes of the file `path` as one string; `ios` /= 0 when it cannot be read.
+   subroutine read_whole(path, size, text, ios)
+      character(len=*), intent(in) :: path
+      integer, intent(in) :: size
+      character(len=:), allocatable, intent(out) :: text
+      integer, intent(out) :: ios
+      integer :: unit
+      allocate (character(len=size) :: text)
+      open (newunit=unit, file=path, access="stream", form="unformatted", action="read", status="old", iostat=ios)
+      if (ios /= 0) return
+      if (size > 0) read (unit, iostat=ios) text
+      close (unit)
+   end subroutine read_whole
 
    !> The lines of a text whose every line ends with a new line, as an array.
    pure function scene_lines(text) result(lines)
@@ -349,6 +436,7 @@ contains
          "units = "//integer_text(state%units_done)//" "//integer_text(state%n_units)//" "// &
          integer_text(state%unit_size)//new_line("a")// &
          "bytes = "//integer_text(state%bytes)//new_line("a")// &
+         "digest = "//integer_text(state%digest(1))//" "//integer_text(state%digest(2))//new_line("a")// &
          "inaccurate = "//integer_text(state%n_inaccurate)//" "//integer_text(state%first_inaccurate)//new_line("a")// &
          "failed = "//integer_text(state%n_failed)//" "//integer_text(state%first_failed)//new_line("a")
       start = 1
@@ -358,6 +446,7 @@ contains
          text = text//"scene = "//state%scene(start:at - 1)//new_line("a")
          start = at + 1
       end do
+      text = text//"check = "//text_digest(text)//new_line("a")
       call set_errno(0)
       stream = c_fopen(c_string(directory//"/state.new"), c_string("w"))
       if (.not. c_associated(stream)) then

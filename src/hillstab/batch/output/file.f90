@@ -36,15 +36,22 @@ module hillstab_batch_output_file
    use hillstab_ffi_libc, only: c_mkdir, c_rename, c_mkstemp, c_fdopen, c_fchmod, c_umask, c_close, c_fwrite, c_fwrite_raw, &
       c_fflush, c_fclose, c_fileno, c_fsync, errno_text, set_errno, c_string, remove_file, is_directory, c_fopen, &
       c_fstat, stat_t, file_type, file_type_regular, c_ftruncate, c_fseek, seek_end, try_lock, name_max, &
-      errno_value, errno_exists, c_link, c_getrandom, c_getpid
+      errno_value, errno_exists, c_link, c_getrandom, c_getpid, c_lstat, c_unlink, c_geteuid, names_with_prefix, &
+      lock_state, lock_taken, lock_busy, lock_unknown
    use hillstab_batch_run_signals, only: watch_temp_file, forget_temp_file, begin_commit
+   use hillstab_batch_output_digest, only: digest_t, digest_update, digest_value
    use hillstab_core_kinds, only: wp
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, c_associated, c_size_t, c_loc, &
       c_long
+   use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
    public :: output_file_t, open_output, commit_output, discard_output, finish_output, write_header, write_text
-   public :: write_records, joined_lines, join_lines, sync_output, lock_output, resume_output, temporary_prefix
+   public :: write_records, joined_lines, join_lines, sync_output, lock_output, resume_output, temporary_prefix, &
+      claim_output
+
+   !> The characters of the suffix of a temporary name (mkstemp's and `random_suffix`'s).
+   character(len=*), parameter :: suffix_alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789"
 
    !> An output file being written under a temporary name.
    type :: output_file_t
@@ -55,6 +62,9 @@ module hillstab_batch_output_file
       integer(int64) :: bytes = 0                    !! bytes written so far
       integer :: slot = 0                            !! hillstab_batch_run_signals handle
       logical :: binary = .false.                    !! stream file: text header, then raw records
+      !> keep the checksum of every byte written (text files: a run that keeps a checkpoint)
+      logical :: digesting = .false.
+      type(digest_t) :: digest                       !! the checksum of the bytes written so far
    end type output_file_t
 
 contains
@@ -72,7 +82,7 @@ contains
       character(len=:), allocatable :: prefix, name
       character(kind=c_char), allocatable :: template(:)
       integer(c_int) :: fd, mask, status
-      integer :: k
+      integer :: k, attempt
       prefix = ""
       if (present(context)) prefix = context
       file%path = path
@@ -92,35 +102,127 @@ contains
       if (allocated(error)) return
       name = temporary_template(path)
       allocate (template(len(name) + 1))
-      do k = 1, len(name)
-         template(k) = name(k:k)
-      end do
-      template(len(name) + 1) = c_null_char
-      call set_errno(0)
-      fd = c_mkstemp(template)
-      if (fd < 0) then
-         call set_error(error, err_io, prefix//"cannot write '"//path//"': "//errno_text())
-         return
-      end if
-      allocate (character(len=size(template) - 1) :: file%temp_path)
-      do k = 1, size(template) - 1
-         file%temp_path(k:k) = template(k)
-      end do
-      call watch_temp_file(file%temp_path, file%slot)
-      ! mkstemp creates the file 0600; the output gets the mode a new file would get
-      mask = c_umask(int(o'022', c_int))
-      status = c_umask(mask)
-      status = c_fchmod(fd, iand(int(o'666', c_int), not(mask)))
-      call set_errno(0)
-      file%stream = c_fdopen(fd, c_string("w"))
-      if (.not. c_associated(file%stream)) then
-         call set_error(error, err_io, prefix//"cannot write '"//path//"': "//errno_text())
-         status = c_close(fd)
-         call remove_file(file%temp_path)
+      do attempt = 1, 8
+         do k = 1, len(name)
+            template(k) = name(k:k)
+         end do
+         template(len(name) + 1) = c_null_char
+         call set_errno(0)
+         fd = c_mkstemp(template)
+         if (fd < 0) then
+            call set_error(error, err_io, prefix//"cannot write '"//path//"': "//errno_text())
+            return
+         end if
+         if (allocated(file%temp_path)) deallocate (file%temp_path)
+         allocate (character(len=size(template) - 1) :: file%temp_path)
+         do k = 1, size(template) - 1
+            file%temp_path(k:k) = template(k)
+         end do
+         call watch_temp_file(file%temp_path, file%slot)
+         ! mkstemp creates the file 0600; the output gets the mode a new file would get
+         mask = c_umask(int(o'022', c_int))
+         status = c_umask(mask)
+         status = c_fchmod(fd, iand(int(o'666', c_int), not(mask)))
+         call set_errno(0)
+         file%stream = c_fdopen(fd, c_string("w"))
+         if (.not. c_associated(file%stream)) then
+            call set_error(error, err_io, prefix//"cannot write '"//path//"': "//errno_text())
+            status = c_close(fd)
+            call remove_file(file%temp_path)
+            call forget_temp_file(file%slot)
+            return
+         end if
+         ! the writer's lock, held until the file is closed or the process ends: a later run
+         ! of the same output sees the file in use, and one that finds it free knows that its
+         ! writer is gone (`claim_output`)
+         if (lock_state(file%stream) /= lock_busy .and. still_named(file)) exit
+         ! another run's claim took the new file for a stale one in the instant before the
+         ! lock (that run removes it): another name
+         status = c_fclose(file%stream)
+         file%stream = c_null_ptr
          call forget_temp_file(file%slot)
-         return
-      end if
+         if (attempt == 8) then
+            call set_error(error, err_io, prefix//"cannot write '"//path//"': its temporary files are removed as "// &
+               "soon as they are made (another run of the same output?)")
+            return
+         end if
+      end do
+      ! the temporary files other runs of this output left: those of a run that is gone are
+      ! removed, one that is being written means another run writes the output (refused)
+      call claim_output(path, error, prefix, own=file%temp_path)
+      if (allocated(error)) call discard_output(file)
    end subroutine open_output
+
+   !> Whether the temporary name of `file` still names its open file.
+   logical function still_named(file)
+      type(output_file_t), intent(in) :: file
+      type(stat_t) :: named, opened
+      still_named = .false.
+      if (c_lstat(c_string(file%temp_path), named) /= 0) return
+      if (c_fstat(c_fileno(file%stream), opened) /= 0) return
+      still_named = named%dev == opened%dev .and. named%ino == opened%ino
+   end function still_named
+
+   !> Before writing `path`: look at the temporary files of `path` beside it (named as
+   !> `open_output` names them, `own` aside). Each is locked by its writer while that writer
+   !> runs (`open_output`, `resume_output`): one whose lock is free was left by a run that
+   !> stopped without removing it (SIGKILL, a lost node, a power cut) and is removed, with a
+   !> note on stderr; one whose lock is held belongs to another run writing the same output,
+   !> and the output is refused (err_io, "in use by another run"). Files of another user, not
+   !> regular files, and files on a file system without locks are left alone.
+   subroutine claim_output(path, error, context, own, program)
+      character(len=*), intent(in) :: path  !! the output file
+      type(error_t), allocatable, intent(out) :: error  !! err_io: another run writes `path`
+      character(len=*), intent(in), optional :: context  !! put before the error message
+      character(len=*), intent(in), optional :: own  !! this run's own temporary file
+      character(len=*), intent(in), optional :: program  !! the name before the note (default "hillstab")
+      character(len=:), allocatable :: prefix, directory, head, names(:), candidate, name
+      type(stat_t) :: named, opened
+      type(c_ptr) :: stream
+      integer(c_int) :: status
+      integer :: k, slash, state
+      prefix = ""
+      if (present(context)) prefix = context
+      name = "hillstab"
+      if (present(program)) name = program
+      head = temporary_prefix(path)
+      slash = index(head, "/", back=.true.)
+      if (slash == 0) then
+         directory = "."
+      else if (slash == 1) then
+         directory = "/"
+      else
+         directory = head(:slash - 1)
+      end if
+      call names_with_prefix(directory, head(slash + 1:), 6, names)
+      do k = 1, size(names)
+         candidate = head(:slash)//names(k)
+         if (present(own)) then
+            if (candidate == own) cycle
+         end if
+         if (verify(names(k)(len(names(k)) - 5:), suffix_alphabet) /= 0) cycle
+         if (c_lstat(c_string(candidate), named) /= 0) cycle
+         if (iand(named%mode, file_type) /= file_type_regular .or. named%uid /= c_geteuid()) cycle
+         stream = c_fopen(c_string(candidate), c_string("r"))
+         if (.not. c_associated(stream)) cycle
+         state = lock_unknown
+         if (c_fstat(c_fileno(stream), opened) == 0) then
+            if (opened%dev == named%dev .and. opened%ino == named%ino) state = lock_state(stream)
+         end if
+         if (state == lock_taken) then
+            ! no writer: remove the name while holding its lock, then let the lock go
+            status = c_unlink(c_string(candidate))
+            if (status == 0) write (error_unit, '(a)') name//": removed '"//candidate//"', a temporary file of "// &
+               path//" that a stopped run left (its writer is gone)"
+         end if
+         status = c_fclose(stream)
+         if (state == lock_busy) then
+            call set_error(error, err_io, prefix//"cannot write '"//path//"': it is in use by another run (its "// &
+               "temporary file '"//candidate//"' is being written): wait until that run ends, or stop it")
+            return
+         end if
+      end do
+   end subroutine claim_output
 
    !> Make the missing directories of the path of a file (its components before the last
    !> '/'), as `mkdir -p` with mode 0777 before the umask.
@@ -330,6 +432,10 @@ contains
                file%failure = errno_text()
             else
                file%bytes = file%bytes + len(line) + 1
+               if (file%digesting) then
+                  call digest_update(file%digest, line)
+                  call digest_update(file%digest, new_line("a"))
+               end if
             end if
          end if
       end if
@@ -458,13 +564,16 @@ contains
    end function lock_output
 
    !> Continue the partial output `data_path` of `path` (a file in a directory only this
-   !> user can write, which nothing else has open: `lock_output`): it is cut to its first
-   !> `bytes` bytes, given a new temporary name beside `path` (a hard link made exclusively,
-   !> with an unpredictable suffix: a name someone placed is never written through) and
-   !> opened for appending, with `file%bytes` = `bytes`. `commit_output` then renames it onto
-   !> `path`, `discard_output` removes only the temporary name. On failure nothing is
-   !> changed but the length of the partial file when the cut was made.
-   subroutine resume_output(file, path, data_path, bytes, error, context)
+   !> user can write, which nothing else has open: `lock_output`): with `digest`, its first
+   !> `bytes` bytes must have that checksum (hillstab_batch_output_digest), else it is left
+   !> as it is and `damaged` is set; it is cut to its first `bytes` bytes, given a new
+   !> temporary name beside `path` (a hard link made exclusively, with an unpredictable
+   !> suffix: a name someone placed is never written through) and opened for appending, with
+   !> `file%bytes` = `bytes` (and, with `digest`, its checksum kept on from there).
+   !> `commit_output` then renames it onto `path`, `discard_output` removes only the
+   !> temporary name. On failure nothing is changed but the length of the partial file when
+   !> the cut was made.
+   subroutine resume_output(file, path, data_path, bytes, error, context, digest, damaged)
       type(output_file_t), intent(out) :: file  !! the file, open for writing on
       character(len=*), intent(in) :: path  !! final file name
       character(len=*), intent(in) :: data_path  !! the partial file
@@ -473,12 +582,17 @@ contains
       type(error_t), allocatable, intent(out) :: error
       !> put before the error message: what named the path
       character(len=*), intent(in), optional :: context
-      character(len=:), allocatable :: prefix, template
+      !> the checksum (`digest_value`) the first `bytes` bytes must have
+      integer(int64), intent(in), optional :: digest(2)
+      !> the file is shorter than `bytes`, or its bytes do not have the checksum `digest`
+      logical, intent(out), optional :: damaged
+      character(len=:), allocatable :: prefix, template, why
       type(stat_t) :: info
       integer(c_int) :: status
       integer :: attempt
       prefix = ""
       if (present(context)) prefix = context
+      if (present(damaged)) damaged = .false.
       file%path = path
       call set_errno(0)
       file%stream = c_fopen(c_string(data_path), c_string("r+"))
@@ -500,9 +614,24 @@ contains
          return
       end if
       if (int(info%size, int64) < bytes) then
+         if (present(damaged)) damaged = .true.
          call fail_resume("it holds "//integer_text(int(info%size, int64))//" bytes, fewer than the "// &
             integer_text(bytes)//" its checkpoint records (damaged)")
          return
+      end if
+      if (present(digest)) then
+         file%digesting = .true.
+         call digest_file(data_path, bytes, file%digest, why)
+         if (allocated(why)) then
+            call fail_resume(why)
+            return
+         end if
+         if (any(digest_value(file%digest) /= digest)) then
+            if (present(damaged)) damaged = .true.
+            call fail_resume("its first "//integer_text(bytes)//" bytes do not have the checksum its checkpoint "// &
+               "records (damaged: a byte changed, added or removed since)")
+            return
+         end if
       end if
       call set_errno(0)
       if (c_ftruncate(c_fileno(file%stream), int(bytes, c_long)) /= 0) then
@@ -535,6 +664,39 @@ contains
          call set_error(error, err_io, prefix//"cannot resume '"//path//"' from '"//data_path//"': "//cause)
       end subroutine fail_resume
    end subroutine resume_output
+
+   !> The checksum of the first `bytes` bytes of the file `path` (read in pieces of 1 MiB);
+   !> `cause` says why it could not be read.
+   subroutine digest_file(path, bytes, digest, cause)
+      character(len=*), intent(in) :: path
+      integer(int64), intent(in) :: bytes
+      type(digest_t), intent(out) :: digest
+      character(len=:), allocatable, intent(out) :: cause
+      integer, parameter :: piece = 1048576
+      character(len=:), allocatable :: buffer
+      character(len=256) :: message
+      integer(int64) :: at, n
+      integer :: unit, ios
+      open (newunit=unit, file=path, access="stream", form="unformatted", action="read", status="old", iostat=ios, &
+            iomsg=message)
+      if (ios /= 0) then
+         cause = "cannot read it: "//trim(message)
+         return
+      end if
+      allocate (character(len=int(min(int(piece, int64), max(bytes, 1_int64)))) :: buffer)
+      at = 0
+      do while (at < bytes)
+         n = min(int(len(buffer), int64), bytes - at)
+         read (unit, pos=at + 1, iostat=ios, iomsg=message) buffer(:n)
+         if (ios /= 0) then
+            cause = "cannot read it: "//trim(message)
+            exit
+         end if
+         call digest_update(digest, buffer(:n))
+         at = at + n
+      end do
+      close (unit)
+   end subroutine digest_file
 
    !> `n` characters from [A-Za-z0-9], unpredictable (getrandom; the clock and the process
    !> id should it fail, when a name taken only costs another try).

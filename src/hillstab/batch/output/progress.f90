@@ -18,7 +18,7 @@ module hillstab_batch_output_progress
    use, intrinsic :: iso_c_binding, only: c_int
    implicit none
    private
-   public :: progress_t, progress_begin, progress_update, progress_step, progress_end, rate_text
+   public :: progress_t, progress_begin, progress_update, progress_step, progress_beat, progress_end, rate_text
 
    !> Progress on stderr for runs longer than about a second.
    type :: progress_t
@@ -120,6 +120,18 @@ contains
       call progress_update(progress, progress%done)
       !$omp end critical (hillstab_progress_step)
    end subroutine progress_step
+
+   !> Nothing more done, but time has passed: the line again when it is due (every 5 s off a
+   !> terminal), its rate and time left as of now. A thread that watches a long unit (a
+   !> block of Hill's matrix that takes a minute) calls it while the others compute, so that
+   !> the line keeps its pace; safe beside `progress_step` on other threads.
+   subroutine progress_beat(progress)
+      type(progress_t), intent(inout) :: progress  !! the progress state
+      !$omp critical (hillstab_progress_step)
+      ! (the last step has reported the end)
+      if (progress%done < progress%total) call progress_update(progress, progress%done)
+      !$omp end critical (hillstab_progress_step)
+   end subroutine progress_beat
 
    !> A rate as a whole number from 10 up, with two significant digits below (a unit that
    !> takes many seconds, as a block of Hill's matrix near alpha = pi^2: "0.036").

@@ -28,6 +28,8 @@ module hillstab_batch_run_cli
    use hillstab_batch_run_signals, only: settle_signals
    use hillstab_batch_output_checkpoint, only: checkpoint_options_t
    use hillstab_batch_run_threads, only: place_threads
+   use hillstab_batch_run_limits, only: check_start_memory
+   !$ use omp_lib, only: omp_get_max_threads
    use hillstab_core_kinds, only: wp
    use hillstab_core_text, only: integer_text
    use hillstab_ffi_libc, only: c_mallopt, malloc_trim_threshold, malloc_top_pad, malloc_mmap_threshold
@@ -207,6 +209,13 @@ contains
          call quit(on_reporter("usage: "//trim(runner%usage(1))//" (see "//runner%program//" --help)"), 2)
          return
       end if
+      ! an address-space limit that cannot hold the threads' stacks: said before the first
+      ! thread is made (the OpenMP runtime would stop the program with a line of its own)
+      call check_start_memory(extra_threads(), text)
+      if (len(text) > 0) then
+         call quit(on_reporter(runner%program//": "//text), 2)
+         return
+      end if
 
       points_failed = .false.
       do i = 1, n_scenes
@@ -270,6 +279,14 @@ contains
       end subroutine quit
    end subroutine run_command_line
 
+   !> The threads a run makes besides the first: the OpenMP team's others, and one more for
+   !> the first team that binds them (hillstab_batch_run_threads); none with one thread.
+   integer function extra_threads() result(n)
+      n = 0
+      !$ n = omp_get_max_threads()
+      if (n < 2) n = 0
+   end function extra_threads
+
    !> The allocator keeps the memory it was given (up to 256 MiB freed at the top of the heap,
    !> blocks up to 32 MiB from the heap, 16 MiB more asked for at a time): the units of a
    !> chart allocate and free their rows' buffers hundreds of times, and by default glibc
@@ -285,9 +302,11 @@ contains
    end subroutine keep_heap
 
    !> A message as one line of plain text: control characters (NUL, form feed, a line
-   !> break a scene value carried, ...) and the Unicode line and paragraph separators
-   !> U+2028, U+2029 shown as \xNN and \u2028 escapes, so that what a scene file holds
-   !> cannot break or forge lines of the program's messages.
+   !> break a scene value carried, ...), the C1 controls U+0080 … U+009F in UTF-8 (U+0085,
+   !> next line, splits lines for some tools; U+009B starts terminal control sequences) and
+   !> the Unicode line and paragraph separators U+2028, U+2029 shown as \xNN, \u0085 and
+   !> \u2028 escapes, so that what a scene file holds cannot break or forge lines of the
+   !> program's messages.
    pure function printable(message) result(text)
       character(len=*), intent(in) :: message  !! the message
       character(len=:), allocatable :: text  !! the same as plain printable text
@@ -299,6 +318,14 @@ contains
          c = iachar(message(i:i))
          if (c < 32 .or. c == 127) then
             text = text//"\x"//hex(c/16 + 1:c/16 + 1)//hex(mod(c, 16) + 1:mod(c, 16) + 1)
+         else if (c == 194 .and. i + 1 <= len(message)) then
+            c = iachar(message(i + 1:i + 1))
+            if (c >= 128 .and. c <= 159) then
+               text = text//"\u00"//hex(c/16 + 1:c/16 + 1)//hex(mod(c, 16) + 1:mod(c, 16) + 1)
+               i = i + 2
+               cycle
+            end if
+            text = text//message(i:i)
          else if (c == 226 .and. i + 2 <= len(message)) then
             if (iachar(message(i + 1:i + 1)) == 128 .and. (iachar(message(i + 2:i + 2)) == 168 .or. &
                                                         iachar(message(i + 2:i + 2)) == 169)) then

@@ -15,7 +15,7 @@
 !> call run_scene_file("data/scenes/default_exact.nml", quiet=.false., error=error)
 !>```
 module hillstab_batch_run_scenes
-   use hillstab_core_error, only: error_t, set_error, err_points_failed, err_input
+   use hillstab_core_error, only: error_t, set_error, err_points_failed, err_input, err_io
    use hillstab_batch_scene_types, only: scene_t, output_path
    use hillstab_batch_scene_read, only: read_scene
    use hillstab_batch_run_limits, only: check_output_room, check_memory_room
@@ -24,7 +24,7 @@ module hillstab_batch_run_scenes
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
-   public :: run_scene_file, run_scene, output_path, warn_scene
+   public :: run_scene_file, run_scene, output_path, warn_scene, name_scene_file
 
 contains
 
@@ -96,10 +96,24 @@ contains
       if (allocated(error)) return
       if (batch_distributable(scene) .and. .not. scene%binary) then
          call run_batch(scene, quiet, error, options)
+         call name_scene_file(scene, error)
          return
       end if
       if (resume) call checkpoint_note(options, scene%source//": this run keeps no checkpoint (only charts over "// &
          "&chart, points and lyapunov runs written as text do): running it afresh")
       call scene%task%run(scene, quiet, error)
+      call name_scene_file(scene, error)
    end subroutine run_scene
+
+   !> A failure to write the output (err_io: a full file system, a file-size limit) named by
+   !> the scene that set the output, "<scene>: &scene: output: cannot write '…': …", as every
+   !> other message of a run is (nothing is added to a message that names the scene already).
+   subroutine name_scene_file(scene, error)
+      type(scene_t), intent(in) :: scene  !! the scene run
+      type(error_t), allocatable, intent(inout) :: error  !! what the run ended with (if anything)
+      if (.not. allocated(error)) return
+      if (error%code /= err_io .or. len(error%message) == 0) return
+      if (index(error%message, scene%source//": ") == 1) return
+      error%message = scene%source//": &scene: output: "//error%message
+   end subroutine name_scene_file
 end module hillstab_batch_run_scenes

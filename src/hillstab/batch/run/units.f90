@@ -51,12 +51,13 @@ module hillstab_batch_run_units
    use hillstab_core_text, only: integer_text
    use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output, scene_namelist, output_path
    use hillstab_batch_output_file, only: output_file_t, write_text, commit_output, discard_output, sync_output, lock_output, &
-      resume_output, temporary_prefix, joined_lines
+      resume_output, temporary_prefix, joined_lines, claim_output
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
    use hillstab_batch_output_checkpoint, only: checkpoint_options_t, checkpoint_state_t, checkpoint_directory, checkpoint_data, &
       find_checkpoint, make_checkpoint, save_checkpoint_state, remove_checkpoint, remove_stale_temporary, &
-      scene_difference, checkpoint_note, checkpoint_usable, checkpoint_incomplete, scene_lines, &
+      scene_difference, checkpoint_note, checkpoint_usable, checkpoint_incomplete, checkpoint_damaged, scene_lines, &
       fnv1a_step
+   use hillstab_batch_output_digest, only: digest_value
    use hillstab_batch_run_signals, only: set_interrupt_note, clear_interrupt_note
    use hillstab_ffi_libc, only: c_nanosleep, timespec_t
    use, intrinsic :: iso_c_binding, only: c_int, c_long
@@ -90,7 +91,14 @@ module hillstab_batch_run_units
       character(len=:), allocatable :: checkpoint  !! its directory
       type(checkpoint_state_t) :: state      !! what it records (as of its last update)
       integer(int64) :: checkpoint_clock = 0  !! system_clock at its last update (or the start)
+      !> the test hook's unit (`pause_hook`): the writer waits once this unit is written (0: never)
+      integer :: pause_after = 0
    end type batch_t
+
+   !> The environment variable of the test hook (`pause_hook`).
+   character(len=*), parameter :: pause_variable = "HILLSTAB_TEST_PAUSE_AFTER_UNITS"
+   !> Longest wait of the test hook [s].
+   integer, parameter :: pause_seconds = 60
 
    !> The computed text of one unit.
    type :: batch_result_t
@@ -223,12 +231,18 @@ contains
       batch%first_unit = 1
       batch%checkpoint_made = .false.
       batch%checkpointing = present(options)
+      batch%pause_after = pause_hook()
       resumed = .false.
       if (batch%checkpointing) then
          batch%options = options
          if (.not. allocated(batch%options%program)) batch%options%program = "hillstab"
          if (.not. allocated(batch%options%command)) batch%options%command = batch%options%program//" --resume SCENE"
          batch%checkpoint = checkpoint_directory(output_path(batch%scene))
+         ! temporary files of this output that stopped runs left are removed first (also when
+         ! the checkpoint is then refused); one being written means another run (refused)
+         call claim_output(output_path(batch%scene), error, batch%scene%source//": &scene: output: ", &
+                           program=batch%options%program)
+         if (allocated(error)) return
          call find_checkpoint(batch%checkpoint, kind, saved, reason, error)
          if (allocated(error)) then
             error%message = batch%scene%source//": &scene: output: "//error%message
@@ -247,6 +261,17 @@ contains
                call checkpoint_note(batch%options, "discarded the checkpoint '"//batch%checkpoint//"' of an "// &
                   "earlier run ("//progress_text(saved)//"): without --resume the run starts afresh")
             end if
+         case (checkpoint_damaged)
+            if (options%resume) then
+               call set_error(error, err_input, batch%scene%source//": &scene: output: the checkpoint '"// &
+                  batch%checkpoint//"' cannot be resumed: "//reason//"; it is not resumed and kept as it is: "// &
+                  "run without --resume to discard it and start afresh")
+               return
+            end if
+            call discard_checkpoint(batch, saved, error)
+            if (allocated(error)) return
+            call checkpoint_note(batch%options, "discarded the damaged checkpoint '"//batch%checkpoint// &
+               "' of an earlier run: "//reason//"; without --resume the run starts afresh")
          case (checkpoint_incomplete)
             call discard_checkpoint(batch, saved, error)
             if (allocated(error)) return
@@ -265,6 +290,8 @@ contains
       if (.not. resumed) then
          call open_scene_output(batch%scene, batch%file, error)
          if (allocated(error)) return
+         ! a checkpoint records the checksum of every byte of its data, the header included
+         batch%file%digesting = batch%checkpointing
          call batch%scene%task%open_units(batch%scene, batch%file, error)
          if (allocated(error)) then
             call discard_output(batch%file)
@@ -332,6 +359,7 @@ contains
       type(checkpoint_state_t), intent(in) :: saved
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: difference, refusal, source
+      logical :: damaged
       source = batch%scene%source
       refusal = " (checkpoint '"//batch%checkpoint//"'): it is not resumed; run without --resume to discard it "// &
          "and start afresh"
@@ -367,9 +395,14 @@ contains
          return
       end if
       call remove_stale_temporary(batch%checkpoint, saved, temporary_prefix(batch%state%output))
+      ! the recorded bytes must have the recorded checksum: nothing damaged goes on
       call resume_output(batch%file, batch%state%output, checkpoint_data(batch%checkpoint), saved%bytes, error, &
-         context=source//": &scene: output: ")
-      if (allocated(error)) return
+         context=source//": &scene: output: ", digest=saved%digest, damaged=damaged)
+      if (allocated(error)) then
+         if (damaged) error%message = error%message//"; the checkpoint '"//batch%checkpoint//"' is not resumed "// &
+            "and kept as it is: run without --resume to discard it and start afresh"
+         return
+      end if
       batch%first_unit = saved%units_done + 1
       batch%done = min(batch%n_points, int(saved%units_done, int64)*batch%unit_size)
       batch%n_inaccurate = saved%n_inaccurate
@@ -423,6 +456,7 @@ contains
       if (allocated(error)) return
       batch%state%units_done = int((batch%done + batch%unit_size - 1)/batch%unit_size)
       batch%state%bytes = batch%file%bytes
+      batch%state%digest = digest_value(batch%file%digest)
       batch%state%n_inaccurate = batch%n_inaccurate
       batch%state%n_failed = batch%n_failed
       batch%state%temporary = batch%file%temp_path
@@ -481,7 +515,40 @@ contains
       if (batch%checkpointing) then
          if (checkpoint_due(batch)) call update_checkpoint(batch, error)
       end if
+      if (batch%pause_after > 0 .and. result%unit >= batch%pause_after .and. .not. allocated(error)) &
+         call test_pause(batch, result%unit)
    end subroutine batch_write
+
+   !> The test hook: the unit after which the writer of a batch waits, from the environment
+   !> variable HILLSTAB_TEST_PAUSE_AFTER_UNITS (read once, when the batch opens; 0 when it is
+   !> unset or not a positive whole number). Only the tests set it: a test that kills a
+   !> run (SIGKILL, SIGTERM, a killed MPI rank) waits for the pause, so that its signal lands
+   !> mid-run however fast the machine is.
+   integer function pause_hook() result(unit)
+      character(len=16) :: text
+      integer :: length, status, ios
+      unit = 0
+      call get_environment_variable(pause_variable, text, length, status)
+      if (status /= 0 .or. length == 0) return
+      if (verify(text(:length), "0123456789") /= 0) return
+      read (text(:length), *, iostat=ios) unit
+      if (ios /= 0 .or. unit < 0) unit = 0
+   end function pause_hook
+
+   !> The test hook's wait: the units 1 … `unit` are written (and, with the checkpoint
+   !> interval 0, recorded in the checkpoint); say so on stderr and sleep, at most a minute,
+   !> then go on. Once per run.
+   subroutine test_pause(batch, unit)
+      type(batch_t), intent(inout) :: batch
+      integer, intent(in) :: unit
+      integer :: k
+      batch%pause_after = 0
+      call checkpoint_note(batch%options, "test hook: paused after unit "//integer_text(unit)//" of "// &
+         integer_text(batch%n_units)//" ("//pause_variable//")")
+      do k = 1, 20*pause_seconds
+         call pause_for(50000000_c_long)
+      end do
+   end subroutine test_pause
 
    !> Whether the checkpoint's interval has passed since its last update.
    logical function checkpoint_due(batch)
@@ -695,10 +762,16 @@ contains
 
    !> Wait a millisecond.
    subroutine pause_briefly()
+      call pause_for(1000000_c_long)
+   end subroutine pause_briefly
+
+   !> Wait `nanoseconds` (< 1 s).
+   subroutine pause_for(nanoseconds)
+      integer(c_long), intent(in) :: nanoseconds
       type(timespec_t) :: remaining
       integer(c_int) :: status
-      status = c_nanosleep(timespec_t(0_c_long, 1000000_c_long), remaining)
-   end subroutine pause_briefly
+      status = c_nanosleep(timespec_t(0_c_long, nanoseconds), remaining)
+   end subroutine pause_for
 
    !> Number of OpenMP threads a parallel region will use (1 without OpenMP).
    integer function max_threads()

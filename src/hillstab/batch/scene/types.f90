@@ -68,6 +68,8 @@ module hillstab_batch_scene_types
       procedure :: memory_bytes => task_memory_bytes
       !> what sets the size of the output, for messages ("&chart: n_alpha, n_beta: 200 x 200 points")
       procedure :: size_variables => task_size_variables
+      !> what sets the memory the task needs, for messages (default: `size_variables`)
+      procedure :: memory_variables => task_memory_variables
       !> points a distributed run computes (0: the task runs in one process)
       procedure :: point_count => task_point_count
       !> how many consecutive points make one unit for `n_workers` processes
@@ -332,6 +334,13 @@ contains
       character(len=:), allocatable :: text
       text = "task '"//self%name//"'"
    end function task_size_variables
+
+   !> Default: what sets the size of the output.
+   function task_memory_variables(self) result(text)
+      class(task_t), intent(in) :: self  !! the task
+      character(len=:), allocatable :: text
+      text = self%size_variables()
+   end function task_memory_variables
 
    !> Default: not distributable.
    pure function task_point_count(self) result(n)

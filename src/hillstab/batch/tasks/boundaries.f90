@@ -22,7 +22,10 @@
 !> values. The file is written once all are done, curve by curve.
 module hillstab_batch_tasks_boundaries
    use hillstab_core_kinds, only: wp, int64, pi2, version_string
-   use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_step, progress_end
+   use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_step, progress_beat, progress_end
+   use hillstab_ffi_libc, only: c_nanosleep, timespec_t
+   use, intrinsic :: iso_c_binding, only: c_int, c_long
+   !$ use omp_lib, only: omp_get_thread_num, omp_get_num_threads
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_hill_model, only: hill_model_t, hill_point_t, model_description
@@ -49,6 +52,7 @@ module hillstab_batch_tasks_boundaries
       columns_text, put_row, all_columns, column_lines
    use hillstab_batch_output_file, only: output_file_t, finish_output, discard_output, write_header, write_text
    use hillstab_core_text, only: real_text, integer_text
+   use hillstab_batch_run_units, only: max_threads
    implicit none
    private
    public :: boundaries_task_t, boundaries_task, boundary_row_t, compute_boundary_rows
@@ -101,6 +105,8 @@ module hillstab_batch_tasks_boundaries
       procedure :: read => boundaries_read
       procedure :: run => boundaries_run
       procedure :: declarations => boundaries_declarations
+      procedure :: memory_bytes => boundaries_memory_bytes
+      procedure :: memory_variables => boundaries_memory_variables
    end type boundaries_task_t
 
 contains
@@ -114,6 +120,45 @@ contains
       if (self%spring) deallocate (groups)
       if (self%spring) allocate (groups(0))
    end function boundaries_declarations
+
+   !> An upper estimate of the memory of a run over the grid: for every α its rows and (exact
+   !> methods) its four blocks of Hill's matrix with their eigenvalues up to the top of the
+   !> β window (about sqrt(β + |α|)/π + 2 a block, values and changes) and the curves they
+   !> give (one row each), held until the file is written; and each thread's truncation at
+   !> work (a banded pencil of up to the modes of the top, ten numbers a mode). The spring's
+   !> critical amplitudes hold a few curves: nothing beyond the program's own.
+   function boundaries_memory_bytes(self, scene) result(bytes)
+      class(boundaries_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      type(hill_block_values_t) :: block
+      type(alpha_rows_t) :: rows
+      type(boundary_row_t) :: row
+      real(wp) :: top, per_block
+      integer(int64) :: per_alpha, modes
+      if (self%spring) then
+         bytes = 0
+         return
+      end if
+      top = max(abs(self%grid%beta_min), abs(self%grid%beta_max))
+      top = top + 1.0_wp + 0.25_wp*top + max(abs(self%grid%alpha_min), abs(self%grid%alpha_max))
+      per_block = sqrt(top)/3.14_wp + 2.0_wp
+      per_alpha = storage_size(rows)/8 + int(4.0_wp*per_block, int64)*(storage_size(row)/8)
+      if (exact_method(scene)) then
+         per_alpha = per_alpha + 4*(storage_size(block)/8 + storage_size(rows)/8 + int(16.0_wp*per_block, int64))
+      end if
+      ! the truncations grow by half past the top's modes until they converge
+      modes = 2*int(per_block, int64) + 64
+      bytes = int(self%grid%n_alpha, int64)*per_alpha + int(max_threads(), int64)*modes*80
+   end function boundaries_memory_bytes
+
+   !> What sets the memory of a run: the α grid and the top of the β window.
+   function boundaries_memory_variables(self) result(text)
+      class(boundaries_task_t), intent(in) :: self  !! the task
+      character(len=:), allocatable :: text
+      text = "&chart: n_alpha, beta_max: "//integer_text(self%grid%n_alpha)//" alphas up to beta = "// &
+             real_text(max(abs(self%grid%beta_min), abs(self%grid%beta_max)))
+   end function boundaries_memory_variables
 
    !> A boundaries task before its scene is read.
    function boundaries_task() result(task)
@@ -388,7 +433,7 @@ contains
       type(progress_t) :: progress
       type(alpha_rows_t), allocatable :: per_alpha(:)
       integer, allocatable :: keys(:, :)
-      integer :: i, j, c, n_alpha, n_failed_rows, n_failed_alpha, last_i, first_failed
+      integer :: i, j, c, n_alpha, n_failed_rows, n_failed_alpha, last_i, first_failed, next, finished
       logical :: found, any_written
       character(len=:), allocatable :: line, first_message
       type(error_t), allocatable :: cause
@@ -404,29 +449,55 @@ contains
             "undamped curves: kappa must be 0")
          return
       end if
+      n_alpha = self%grid%n_alpha
+      ! (the estimate of `boundaries_memory_bytes` was checked before the run: should the
+      ! machine still lack the memory, say so before the output is opened)
+      allocate (per_alpha(n_alpha), stat=i)
+      if (i /= 0) then
+         call set_error(error, err_input, scene%source//": "//self%memory_variables()//": the rows of "// &
+            integer_text(n_alpha)//" alphas cannot be allocated (out of memory)")
+         return
+      end if
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
-      n_alpha = self%grid%n_alpha
-      allocate (per_alpha(n_alpha))
       if (exact_method(scene)) then
          ! the four blocks of Hill's matrix at every alpha, then the check of every curve point
          ! by auto: the units of progress and of the parallel loops (near alpha = pi^2 or at
          ! large |beta| one block takes many seconds and one alpha holds hundreds of curves)
-         call find_hill_rows(scene, self%grid, per_alpha, quiet)
+         call find_hill_rows(scene, self%grid, per_alpha, quiet, error)
+         if (allocated(error)) then
+            error%message = scene%source//": "//self%memory_variables()//": "//error%message
+            call discard_output(file)
+            return
+         end if
          call check_every_row(scene, per_alpha, quiet)
       else
          call progress_begin(progress, int(n_alpha, int64), quiet, "alphas")
-         !$omp parallel do schedule(dynamic) default(shared) private(i, cause)
-         do i = 1, n_alpha
-            call find_boundary_rows(scene, self%grid, grid_value(self%grid%alpha_min, self%grid%alpha_max, &
-                                    n_alpha, i), per_alpha(i)%rows, cause)
-            if (allocated(cause)) then
-               per_alpha(i)%failed = .true.
-               per_alpha(i)%message = cause%message
-            end if
-            call progress_step(progress)
-         end do
-         !$omp end parallel do
+         ! (an alpha of 10^8 samples of formula takes seconds: the line keeps its pace)
+         next = 0
+         finished = 0
+         !$omp parallel num_threads(team_size(progress)) default(shared) private(i, cause)
+         if (watches(progress)) then
+            call watch_progress(progress, finished, n_alpha)
+         else
+            do
+               !$omp atomic capture
+               next = next + 1
+               i = next
+               !$omp end atomic
+               if (i > n_alpha) exit
+               call find_boundary_rows(scene, self%grid, grid_value(self%grid%alpha_min, self%grid%alpha_max, &
+                                       n_alpha, i), per_alpha(i)%rows, cause)
+               if (allocated(cause)) then
+                  per_alpha(i)%failed = .true.
+                  per_alpha(i)%message = cause%message
+               end if
+               call progress_step(progress)
+               !$omp atomic update
+               finished = finished + 1
+            end do
+         end if
+         !$omp end parallel
          call progress_end(progress)
       end if
 
@@ -507,15 +578,18 @@ contains
    end subroutine boundaries_run
 
    !> The exact curves at every alpha of the grid by the model's route, before their check:
-   !> Hill's method block by block in parallel (with progress per block), the blocks of each
-   !> alpha then joined into its rows (as `hill_boundaries` and `fourier_boundaries` do); or
-   !> the roots of S by auto, alpha by alpha. An alpha where this failed has no rows and the
-   !> first failure's message.
-   subroutine find_hill_rows(scene, grid, per_alpha, quiet)
+   !> Hill's method block by block in parallel (with progress per block; the blocks claimed
+   !> one at a time, and with progress on one more thread keeps the line's pace while a block
+   !> takes a minute), the blocks of each alpha then joined into its rows (as `hill_boundaries`
+   !> and `fourier_boundaries` do); or the roots of S, alpha by alpha. An alpha where this
+   !> failed has no rows and the first failure's message; `error` when the blocks cannot be
+   !> allocated.
+   subroutine find_hill_rows(scene, grid, per_alpha, quiet, error)
       type(scene_t), intent(in) :: scene
       type(chart_grid_t), intent(in) :: grid
       type(alpha_rows_t), intent(inout) :: per_alpha(:)
       logical, intent(in) :: quiet
+      type(error_t), allocatable, intent(out) :: error  !! err_input: the blocks cannot be allocated
       type(hill_block_values_t), allocatable :: blocks(:, :)
       type(fourier_block_t), allocatable :: fourier(:, :)
       type(fourier_drive_t) :: drive
@@ -524,7 +598,7 @@ contains
       type(progress_t) :: progress
       type(error_t), allocatable :: cause
       type(alpha_rows_t), allocatable :: outcomes(:, :)   ! failed and message per block
-      integer :: i, k, block, n_alpha, route
+      integer :: i, k, block, n_alpha, route, next, finished
       real(wp) :: alpha
       n_alpha = size(per_alpha)
       route = curve_route(scene%model)
@@ -544,7 +618,12 @@ contains
          call progress_end(progress)
          return
       end if
-      allocate (outcomes(4, n_alpha), n_blocks(n_alpha), ids(4, n_alpha))
+      allocate (outcomes(4, n_alpha), n_blocks(n_alpha), ids(4, n_alpha), stat=i)
+      if (i /= 0) then
+         call set_error(error, err_input, "the blocks of Hill's matrix of "//integer_text(n_alpha)// &
+            " alphas cannot be allocated (out of memory)")
+         return
+      end if
       n_blocks = 4
       ids = 0
       if (route == route_fourier) then
@@ -564,28 +643,49 @@ contains
             end associate
          end do
       else
-         allocate (blocks(4, n_alpha))
+         allocate (blocks(4, n_alpha), stat=i)
+         if (i /= 0) then
+            call set_error(error, err_input, "the blocks of Hill's matrix of "//integer_text(n_alpha)// &
+               " alphas cannot be allocated (out of memory)")
+            return
+         end if
       end if
       call progress_begin(progress, 4_int64*n_alpha, quiet, "Hill blocks")
-      !$omp parallel do schedule(dynamic) default(shared) private(k, i, block, cause, alpha)
-      do k = 1, 4*n_alpha
-         i = (k - 1)/4 + 1
-         block = k - 4*(i - 1)
-         alpha = grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i)
-         if (route == route_fourier) then
-            if (block <= n_blocks(i)) call fourier_block_values(scene%model, alpha, ids(block, i), grid%beta_min, &
-               grid%beta_max, scene%method%tolerance, fourier(block, i), cause)
-         else
-            call hill_block_values(scene%model, alpha, block, grid%beta_min, grid%beta_max, scene%method%tolerance, &
-                                   blocks(block, i), cause)
-         end if
-         if (allocated(cause)) then
-            outcomes(block, i)%failed = .true.
-            outcomes(block, i)%message = cause%message
-         end if
-         call progress_step(progress)
-      end do
-      !$omp end parallel do
+      ! the blocks claimed one at a time by the computing threads; with progress on, one
+      ! more thread keeps the line's pace while a block takes a minute (one LAPACK call on
+      ! a truncation of 10^4 modes near alpha = pi^2 or at large |beta|)
+      next = 0
+      finished = 0
+      !$omp parallel num_threads(team_size(progress)) default(shared) private(k, i, block, cause, alpha)
+      if (watches(progress)) then
+         call watch_progress(progress, finished, 4*n_alpha)
+      else
+         do
+            !$omp atomic capture
+            next = next + 1
+            k = next
+            !$omp end atomic
+            if (k > 4*n_alpha) exit
+            i = (k - 1)/4 + 1
+            block = k - 4*(i - 1)
+            alpha = grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i)
+            if (route == route_fourier) then
+               if (block <= n_blocks(i)) call fourier_block_values(scene%model, alpha, ids(block, i), &
+                  grid%beta_min, grid%beta_max, scene%method%tolerance, fourier(block, i), cause)
+            else
+               call hill_block_values(scene%model, alpha, block, grid%beta_min, grid%beta_max, &
+                                      scene%method%tolerance, blocks(block, i), cause)
+            end if
+            if (allocated(cause)) then
+               outcomes(block, i)%failed = .true.
+               outcomes(block, i)%message = cause%message
+            end if
+            call progress_step(progress)
+            !$omp atomic update
+            finished = finished + 1
+         end do
+      end if
+      !$omp end parallel
       call progress_end(progress)
       do i = 1, n_alpha
          alpha = grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i)
@@ -603,6 +703,41 @@ contains
          end if
       end do
    end subroutine find_hill_rows
+
+   !> The threads of a loop over long units: the computing threads, and one more that
+   !> watches the progress (`watch_progress`) when it is shown and OpenMP runs the loop.
+   integer function team_size(progress)
+      type(progress_t), intent(in) :: progress
+      team_size = max_threads()
+      !$ if (progress%enabled) team_size = team_size + 1
+   end function team_size
+
+   !> Whether the calling thread of a team of `team_size` watches the progress: the first,
+   !> when the progress is shown and the team has the extra thread.
+   logical function watches(progress)
+      type(progress_t), intent(in) :: progress
+      watches = .false.
+      !$ watches = progress%enabled .and. omp_get_thread_num() == 0 .and. omp_get_num_threads() > max_threads()
+   end function watches
+
+   !> Until `finished` reaches `total` (the computing threads count their units there):
+   !> every 0.2 s the progress line, printed when due (`progress_beat`: every 5 s off a
+   !> terminal however long a unit takes).
+   subroutine watch_progress(progress, finished, total)
+      type(progress_t), intent(inout) :: progress
+      integer, intent(inout) :: finished  !! units done (updated by the other threads)
+      integer, intent(in) :: total
+      type(timespec_t) :: remaining
+      integer(c_int) :: status
+      integer :: now
+      do
+         !$omp atomic read
+         now = finished
+         if (now >= total) exit
+         status = c_nanosleep(timespec_t(0_c_long, 200000000_c_long), remaining)
+         call progress_beat(progress)
+      end do
+   end subroutine watch_progress
 
    !> Every curve point of Hill's method checked by auto (`check_boundary_row`), in parallel
    !> over all alphas, with progress per point.

@@ -3,7 +3,7 @@
 !> `&physical a` and r0 the curves are the pendulum's bounce amplitudes.
 module hillstab_batch_tasks_coefficient
    use hillstab_core_kinds, only: wp, int64
-   use hillstab_core_error, only: error_t
+   use hillstab_core_error, only: error_t, set_error, err_input
    use hillstab_core_text, only: real_text, integer_text
    use hillstab_hill_coefficient, only: segment_coefficients, sampling_name
    use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output, physical_points
@@ -32,12 +32,15 @@ module hillstab_batch_tasks_coefficient
       real(wp) :: tau_min = 0.0_wp        !! first τ
       real(wp) :: tau_max = 0.0_wp        !! last τ (one period is 2)
       integer :: n_tau = 1                !! number of τ values
+      integer :: n_pieces = 2             !! pieces of Qseg (`&scene n_segments`)
    contains
       procedure :: read => coefficient_read
       procedure :: run => coefficient_run
       procedure :: declarations => coefficient_declarations
       procedure :: estimated_bytes => coefficient_estimated_bytes
       procedure :: size_variables => coefficient_size_variables
+      procedure :: memory_bytes => coefficient_memory_bytes
+      procedure :: memory_variables => coefficient_memory_variables
    end type coefficient_task_t
 
 contains
@@ -56,6 +59,23 @@ contains
       character(len=:), allocatable :: text
       text = "&coefficient: n_tau: "//integer_text(self%n_tau)//" rows"
    end function coefficient_size_variables
+
+   !> The memory of a run: the pieces of every curve (n_segments values each), one row's
+   !> numbers and text.
+   function coefficient_memory_bytes(self, scene) result(bytes)
+      class(coefficient_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      bytes = (int(scene%method%n_segments, int64)*8 + 33*2)*size(self%alphas) + 33
+   end function coefficient_memory_bytes
+
+   !> What sets the memory of a run: the pieces of every curve.
+   function coefficient_memory_variables(self) result(text)
+      class(coefficient_task_t), intent(in) :: self  !! the task
+      character(len=:), allocatable :: text
+      text = "&scene: n_segments: "//integer_text(self%n_pieces)//" pieces of "//integer_text(size(self%alphas))// &
+             " curve(s) (&coefficient alphas)"
+   end function coefficient_memory_variables
 
    !> A coefficient task before its scene is read.
    function coefficient_task() result(task)
@@ -151,6 +171,7 @@ contains
       self%tau_min = tau_min
       self%tau_max = tau_max
       self%n_tau = n_tau
+      self%n_pieces = scene%method%n_segments
    end subroutine coefficient_read
 
    !> Header plus n_tau rows of 1 + 2 n_alpha numbers.
@@ -205,7 +226,12 @@ contains
       n_pieces = scene%method%n_segments
       period = scene%model%period()
       h = period/n_pieces
-      allocate (pieces(n_pieces, n_alpha), row(1 + 2*n_alpha))
+      allocate (pieces(n_pieces, n_alpha), row(1 + 2*n_alpha), stat=i)
+      if (i /= 0) then
+         call set_error(error, err_input, scene%source//": "//self%memory_variables()//": "// &
+            integer_text(n_pieces)//" pieces of each curve cannot be allocated (out of memory)")
+         return
+      end if
       do k = 1, n_alpha
          point = hill_point_t(self%alphas(k), self%beta, scene%epsilon)
          call segment_coefficients(scene%model, point, n_pieces, scene%method%sampling, pieces(:, k))

@@ -44,6 +44,7 @@ module hillstab_batch_tasks_lyapunov
    use hillstab_batch_tasks_chart_columns, only: header_bytes, text_row_bytes
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text, join_lines
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
+   use hillstab_batch_run_units, only: max_threads
    implicit none
    private
    public :: lyapunov_task_t, lyapunov_task, lyapunov_group
@@ -92,6 +93,8 @@ module hillstab_batch_tasks_lyapunov
       procedure :: template_alternatives => lyapunov_template_alternatives
       procedure :: estimated_bytes => lyapunov_estimated_bytes
       procedure :: size_variables => lyapunov_size_variables
+      procedure :: memory_bytes => lyapunov_memory_bytes
+      procedure :: memory_variables => lyapunov_memory_variables
       procedure :: point_count => lyapunov_point_count
       procedure :: unit_size => lyapunov_unit_size_of
       procedure :: unit_text => lyapunov_unit_text
@@ -129,6 +132,26 @@ contains
       character(len=:), allocatable :: text
       text = grid_size_text(self%grid, self%physical)
    end function lyapunov_size_variables
+
+   !> An upper estimate of the memory of a run by the unit driver (hillstab_batch_run_units
+   !> `run_batch`: 16 units a thread held for writing, one a thread at work; the task's own
+   !> loop holds less): each unit's lines and their joined text, and each lane's orbit at work.
+   function lyapunov_memory_bytes(self, scene) result(bytes)
+      class(lyapunov_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      integer(int64) :: units, points
+      units = 17*int(max_threads(), int64)
+      points = min(self%point_count(), units*self%unit_size(1))
+      bytes = points*(2*lyapunov_line_length + 8) + int(max_threads(), int64)*self%chaos%lanes*4096
+   end function lyapunov_memory_bytes
+
+   !> What sets the memory of a run: the points (a unit is up to 16 batches of lanes) and the lanes.
+   function lyapunov_memory_variables(self) result(text)
+      class(lyapunov_task_t), intent(in) :: self  !! the task
+      character(len=:), allocatable :: text
+      text = self%size_variables()//" and &lyapunov: lanes: "//integer_text(self%chaos%lanes)
+   end function lyapunov_memory_variables
 
    !> A lyapunov task before its scene is read.
    function lyapunov_task() result(task)

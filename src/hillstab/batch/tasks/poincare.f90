@@ -24,6 +24,7 @@ module hillstab_batch_tasks_poincare
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text
    use hillstab_core_text, only: real_text, integer_text
    use hillstab_core_kinds, only: pi
+   use hillstab_batch_run_units, only: max_threads
    implicit none
    private
    public :: poincare_task_t, poincare_task, poincare_group
@@ -42,9 +43,42 @@ module hillstab_batch_tasks_poincare
       procedure :: read => poincare_read
       procedure :: run => poincare_run
       procedure :: declarations => poincare_declarations
+      procedure :: memory_bytes => poincare_memory_bytes
+      procedure :: memory_variables => poincare_memory_variables
    end type poincare_task_t
 
 contains
+
+   !> The crossings an orbit may have, an estimate: one and a half for every swing of the
+   !> linear pendulum (sqrt(beta)/pi swings a radial period; 0.48 crossings a period measured
+   !> at beta = 2.47), and 64 (the section's first allocation).
+   pure integer(int64) function crossings_bound(self)
+      class(poincare_task_t), intent(in) :: self
+      crossings_bound = int(1.5_wp*sqrt(max(self%series%beta, 0.0_wp))/pi*self%series%periods, int64) + 64
+   end function crossings_bound
+
+   !> An upper estimate of the memory of a run: every orbit's crossings (t, r, r': 24 bytes,
+   !> in an array that doubles as it grows, and its copy when the last doubling or the final
+   !> cut happens), held until the file is written, then the text of the longest orbit's
+   !> rows (160 bytes a row) and a header line an orbit.
+   function poincare_memory_bytes(self, scene) result(bytes)
+      class(poincare_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      integer(int64) :: n, crossings
+      n = size(self%phi0s)
+      crossings = crossings_bound(self)
+      bytes = n*crossings*48 + min(n, int(max_threads(), int64))*crossings*24 + crossings*160 + n*240
+   end function poincare_memory_bytes
+
+   !> What sets the memory of a run: the orbits and their periods.
+   function poincare_memory_variables(self) result(text)
+      class(poincare_task_t), intent(in) :: self  !! the task
+      character(len=:), allocatable :: text
+      text = "&series: periods: "//integer_text(self%series%periods)//" periods of "// &
+             integer_text(size(self%phi0s))//" orbit(s) (&poincare phi0s), up to about "// &
+             integer_text(crossings_bound(self))//" crossings each"
+   end function poincare_memory_variables
 
    !> `&series`, `&poincare`.
    function poincare_declarations(self) result(groups)
@@ -160,7 +194,12 @@ contains
          return
       end if
       energy = pendulum_energy(p, pendulum_initial_state(p, self%series%phi0, self%series%vx0, self%series%vz0))
-      allocate (starts(4, n), sections(n), statuses(n))
+      allocate (starts(4, n), sections(n), statuses(n), stat=k)
+      if (k /= 0) then
+         call set_error(error, err_input, scene%source//": "//self%memory_variables()//": the orbits cannot be "// &
+            "allocated (out of memory)")
+         return
+      end if
       do k = 1, n
          if (self%same_energy) then
             call pendulum_state_at_energy(p, self%phi0s(k), energy, starts(:, k), cause)
