@@ -901,6 +901,8 @@ contains
       ! (the propagator is rescaled only every eighth step, so its entries may pass 2^400; their
       ! squares times 2^-512 stay in range)
       real(wp), dimension(lane_block) :: su2, sv2, su2w, sv2w, su2a, sv2a
+      ! and over a whole period (no symmetry) the cross terms ∫uv, ∫|uv|, ∫uv c₁w, ∫|uv c₁w|
+      real(wp), dimension(lane_block) :: suv, suv_abs, suvw, suva
       real(wp), parameter :: square_unit = 2.0_wp**(-256)
       real(wp) :: z_max, uu, vv, sw, level, values_limit
       real(wp) :: h, w1, w2, w3, q1, q2, q3, d2, d3, x3, y1, y2, y3, ls, e11, e12, e21, e22, a, b, big
@@ -916,6 +918,7 @@ contains
       log_peak = 0.0_wp
       peak = 2.0_wp
       su2 = 0.0_wp; sv2 = 0.0_wp; su2w = 0.0_wp; sv2w = 0.0_wp; su2a = 0.0_wp; sv2a = 0.0_wp
+      suv = 0.0_wp; suv_abs = 0.0_wp; suvw = 0.0_wp; suva = 0.0_wp
       do i = 1, mesh%n_steps
          h = mesh%h(i)
          w1 = mesh%w(1, i); w2 = mesh%w(2, i); w3 = mesh%w(3, i)
@@ -1009,6 +1012,14 @@ contains
             su2w(l) = su2w(l) + uu*sw; sv2w(l) = sv2w(l) + vv*sw
             su2a(l) = su2a(l) + uu*abs(sw); sv2a(l) = sv2a(l) + vv*abs(sw)
          end do
+         if (.not. mesh%half) then
+            do l = 1, nl
+               uu = h*(square_unit*p11(l))*(square_unit*p12(l))
+               sw = c1(l)*w2
+               suv(l) = suv(l) + uu; suv_abs(l) = suv_abs(l) + abs(uu)
+               suvw(l) = suvw(l) + uu*sw; suva(l) = suva(l) + abs(uu*sw)
+            end do
+         end if
          end if
          if (iand(i, 7) == 0 .or. i == mesh%n_steps) then
             ! conditioning of the propagator, invariant under rescaling x' against x:
@@ -1037,6 +1048,8 @@ contains
                   su2(l) = scale(su2(l), -2*shift); sv2(l) = scale(sv2(l), -2*shift)
                   su2w(l) = scale(su2w(l), -2*shift); sv2w(l) = scale(sv2w(l), -2*shift)
                   su2a(l) = scale(su2a(l), -2*shift); sv2a(l) = scale(sv2a(l), -2*shift)
+                  suv(l) = scale(suv(l), -2*shift); suv_abs(l) = scale(suv_abs(l), -2*shift)
+                  suvw(l) = scale(suvw(l), -2*shift); suva(l) = scale(suva(l), -2*shift)
                   log_scale(l) = log_scale(l) + shift*log(2.0_wp)
                end if
             end do
@@ -1069,17 +1082,17 @@ contains
          end do
       else if (.not. mesh%half) then
          ! the level of `coefficient_level` over the whole period (M = Φ, no factor 2, the
-         ! cross term of u v bounded by Cauchy–Schwarz), and `roundoff_level`'s
+         ! cross terms of u v), and `roundoff_level`'s
          root_n = sqrt(real(max(mesh%n_steps, 1), wp))
          do l = 1, nl
             size_s = max(1.0_wp, abs(s_lane(l)))
             m21 = p21(l)
             m12 = p12(l)
-            x3 = abs(p22(l) - p11(l))
-            d0 = abs(c0(l))*(abs(m21*sv2(l) - m12*su2(l)) + x3*sqrt(su2(l)*sv2(l)))
-            size0 = abs(c0(l))*(abs(m21)*sv2(l) + abs(m12)*su2(l) + x3*sqrt(su2(l)*sv2(l)))
-            d1 = abs(m21*sv2w(l) - m12*su2w(l)) + x3*sqrt(su2a(l)*sv2a(l))
-            size1 = abs(m21)*sv2a(l) + abs(m12)*su2a(l) + x3*sqrt(su2a(l)*sv2a(l))
+            x3 = p22(l) - p11(l)
+            d0 = abs(c0(l))*abs(m21*sv2(l) - m12*su2(l) - x3*suv(l))
+            size0 = abs(c0(l))*(abs(m21)*sv2(l) + abs(m12)*su2(l) + abs(x3)*suv_abs(l))
+            d1 = abs(m21*sv2w(l) - m12*su2w(l) - x3*suvw(l))
+            size1 = abs(m21)*sv2a(l) + abs(m12)*su2a(l) + abs(x3)*suva(l)
             level = merge(coefficient_roundings_c0*d0, 0.0_wp, d0 > cancellation_limit*size0) + &
                     merge(coefficient_roundings_c1*d1, 0.0_wp, d1 > cancellation_limit*size1)
             special(l) = special(l) .or. .not. level < 2.0_wp**400
@@ -1116,7 +1129,8 @@ contains
          if (special(l)) then
             call lane_result(p11(l), p12(l), p21(l), p22(l), log_scale(l), log_peak(l), peak(l), &
                sensitivity_t(2.0_wp*log_scale(l) + 512.0_wp*log(2.0_wp), su2(l), sv2(l), su2w(l), sv2w(l), &
-               su2a(l), sv2a(l)), c0(l), mesh%n_steps, phases(l), traces(l), floors(l), mesh%half)
+               su2a(l), sv2a(l), suv(l), suv_abs(l), suvw(l), suva(l)), c0(l), mesh%n_steps, phases(l), traces(l), &
+               floors(l), mesh%half)
             if (how == lanes_values) floors(l) = 0.0_wp
          else if (how == lanes_values) then
             ! ln|S| is left unset (below 1.9e130 nothing reads it)

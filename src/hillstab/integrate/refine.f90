@@ -65,14 +65,18 @@ module hillstab_integrate_refine
    !> the larger terms), which a stronger cancellation would leave as the whole result.
    real(wp), parameter, public :: cancellation_limit = 1.0e-6_wp
 
-   !> Integrals along the half period [0, 1] of the even and odd solutions u, v that give
-   !> the sensitivity of S to the constants of q = c₀ + c₁ w(τ) (`coefficient_level`):
-   !> ∫u², ∫v², ∫u² c₁w, ∫v² c₁w, ∫u² |c₁w|, ∫v² |c₁w|, all in units of e^{log_unit}.
+   !> Integrals along the window (the half period [0, 1], or the period) of the solutions
+   !> u, v (u = 1, u' = 0 and v = 0, v' = 1 at its start) that give the sensitivity of S to
+   !> the constants of q = c₀ + c₁ w(τ) (`coefficient_level`): ∫u², ∫v², ∫u² c₁w, ∫v² c₁w,
+   !> ∫u² |c₁w|, ∫v² |c₁w|, and for a whole period the cross terms ∫uv, ∫|uv|, ∫uv c₁w,
+   !> ∫|uv c₁w|, all in units of e^{log_unit}.
    type :: sensitivity_t
       real(wp) :: log_unit = 0.0_wp  !! the integrals are multiples of e^{log_unit}
       real(wp) :: u2 = 0.0_wp, v2 = 0.0_wp      !! ∫u², ∫v²
       real(wp) :: u2w = 0.0_wp, v2w = 0.0_wp    !! ∫u² c₁w, ∫v² c₁w
       real(wp) :: u2a = 0.0_wp, v2a = 0.0_wp    !! ∫u² |c₁w|, ∫v² |c₁w|
+      real(wp) :: uv = 0.0_wp, uv_abs = 0.0_wp  !! ∫uv, ∫|uv|
+      real(wp) :: uvw = 0.0_wp, uva = 0.0_wp    !! ∫uv c₁w, ∫|uv c₁w|
    end type sensitivity_t
 
 contains
@@ -85,19 +89,24 @@ contains
       real(wp), intent(in) :: log_scale   !! ln of the scale of u and v
       real(wp), intent(in) :: h           !! step length
       real(wp), intent(in) :: shape_part  !! c₁ w at the step (q − c₀)
-      real(wp) :: f, uu, vv
+      real(wp) :: f, uu, vv, uv
       if (acc%log_unit /= 2.0_wp*log_scale) then
          f = exp(max(acc%log_unit - 2.0_wp*log_scale, -700.0_wp))
          acc%u2 = acc%u2*f; acc%v2 = acc%v2*f
          acc%u2w = acc%u2w*f; acc%v2w = acc%v2w*f
          acc%u2a = acc%u2a*f; acc%v2a = acc%v2a*f
+         acc%uv = acc%uv*f; acc%uv_abs = acc%uv_abs*f
+         acc%uvw = acc%uvw*f; acc%uva = acc%uva*f
          acc%log_unit = 2.0_wp*log_scale
       end if
       uu = h*u*u
       vv = h*v*v
+      uv = h*u*v
       acc%u2 = acc%u2 + uu; acc%v2 = acc%v2 + vv
       acc%u2w = acc%u2w + uu*shape_part; acc%v2w = acc%v2w + vv*shape_part
       acc%u2a = acc%u2a + uu*abs(shape_part); acc%v2a = acc%v2a + vv*abs(shape_part)
+      acc%uv = acc%uv + uv; acc%uv_abs = acc%uv_abs + abs(uv)
+      acc%uvw = acc%uvw + uv*shape_part; acc%uva = acc%uva + abs(uv*shape_part)
    end subroutine accumulate_sensitivity
 
    !> Round-off of S from the rounding of q itself, relative to max(1, |S|): q = c₀ + c₁ w is
@@ -118,9 +127,8 @@ contains
    !> the phase term of `roundoff_level` (2εΦ, exact for growth at constant q) covers it.
    !>
    !> Over the whole period (`half` false: a coefficient without the symmetry) the variation
-   !> is ∂S/∂q(τ) = −(m₁₂ u² − m₂₁ v² + (m₂₂ − m₁₁) u v) along [0, P], without the factor 2;
-   !> the cross term's integral is bounded by Cauchy–Schwarz (|∫uv f| ≤ (∫u²|f| ∫v²|f|)^½),
-   !> so the level stays a bound without integrals of its own.
+   !> is ∂S/∂q(τ) = −(m₁₂ u² − m₂₁ v² + (m₂₂ − m₁₁) u v) along [0, P], without the factor 2,
+   !> with the cross terms' integrals.
    pure real(wp) function coefficient_level(acc, c0, m, log_abs_s, half) result(level)
       type(sensitivity_t), intent(in) :: acc    !! the integrals over [0, 1]
       real(wp), intent(in) :: c0                !! the constant c₀ of q
@@ -146,7 +154,7 @@ contains
       real(wp), intent(in) :: c0                !! the constant c₀ of q
       type(scaled_matrix_t), intent(in) :: m    !! the monodromy
       logical, intent(in) :: half               !! the window is half a period of an even q
-      real(wp) :: d0, d1, size0, size1, m12, m21, cross0, cross1
+      real(wp) :: d0, d1, size0, size1, m12, m21, cross0
       m12 = m%m(1, 2)
       m21 = m%m(2, 1)
       if (half) then
@@ -155,12 +163,11 @@ contains
          d1 = 2.0_wp*abs(m21*acc%v2w - m12*acc%u2w)
          size1 = 2.0_wp*(abs(m21)*acc%v2a + abs(m12)*acc%u2a)
       else
-         cross0 = abs(m%m(2, 2) - m%m(1, 1))*sqrt(acc%u2*acc%v2)
-         cross1 = abs(m%m(2, 2) - m%m(1, 1))*sqrt(acc%u2a*acc%v2a)
-         d0 = abs(c0)*(abs(m21*acc%v2 - m12*acc%u2) + cross0)
-         size0 = abs(c0)*(abs(m21)*acc%v2 + abs(m12)*acc%u2 + cross0)
-         d1 = abs(m21*acc%v2w - m12*acc%u2w) + cross1
-         size1 = abs(m21)*acc%v2a + abs(m12)*acc%u2a + cross1
+         cross0 = m%m(2, 2) - m%m(1, 1)
+         d0 = abs(c0)*abs(m21*acc%v2 - m12*acc%u2 - cross0*acc%uv)
+         size0 = abs(c0)*(abs(m21)*acc%v2 + abs(m12)*acc%u2 + abs(cross0)*acc%uv_abs)
+         d1 = abs(m21*acc%v2w - m12*acc%u2w - cross0*acc%uvw)
+         size1 = abs(m21)*acc%v2a + abs(m12)*acc%u2a + abs(cross0)*acc%uva
       end if
       level = 0.0_wp
       if (d0 > cancellation_limit*size0) level = level + coefficient_roundings_c0*d0

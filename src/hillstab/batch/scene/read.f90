@@ -23,6 +23,7 @@ module hillstab_batch_scene_read
    use hillstab_integrate_monodromy, only: method_t, method_table, method_name, method_from_name, method_names_text, &
       method_description
    use hillstab_batch_scene_types, only: scene_t, task_t, add_warning
+   use hillstab_batch_scene_group_model, only: read_model_group, model_group_name
    use hillstab_batch_scene_file, only: scene_file_t, open_scene_file, close_scene_file, group_present, group_sets, &
       group_names, fail, read_len
    use hillstab_batch_scene_declaration, only: new_group, group_t, group_values_t, group_reader_t, variable, var_real, &
@@ -56,6 +57,7 @@ contains
       call open_scene_file(path, file, error)
       if (allocated(error)) return
       call read_scene_group(file, scene, task_name, error)
+      if (.not. allocated(error)) call read_model_group(file, scene, error)
       if (.not. allocated(error)) then
          call new_task(task_name, task, cause)
          if (allocated(cause)) call fail(error, path, "scene", "task", cause%message)
@@ -86,6 +88,7 @@ contains
       character(len=63), allocatable :: names(:)
       character(len=:), allocatable :: reads, readers, tasks(:)
       class(task_t), allocatable :: other
+      class(hill_model_t), allocatable :: other_model
       type(error_t), allocatable :: cause
       integer :: k, j, n
       names = group_names(file%unit)
@@ -99,6 +102,13 @@ contains
       tasks = task_names()
       do k = 1, size(names)
          if (task_reads(task, trim(names(k)))) cycle
+         if (trim(names(k)) == model_group_name(scene)) cycle
+         call new_model(trim(names(k)), other_model, cause)
+         if (.not. allocated(cause)) then
+            call add_warning(scene%warnings, file%path//": &"//trim(names(k))//": ignored: the group of model '"// &
+               trim(names(k))//"', and &scene model is '"//scene%model%name()//"'")
+            cycle
+         end if
          readers = ""
          n = 0
          do j = 1, size(tasks)

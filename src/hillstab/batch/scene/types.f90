@@ -117,6 +117,9 @@ module hillstab_batch_scene_types
       real(wp), allocatable :: omegas(:)
       type(group_values_t) :: settings              !! the effective `&scene` values
       type(group_values_t) :: physical_values       !! the effective `&physical` values
+      !> the model carries data, read from its group `&<model name>` (hillstab_batch_scene_group_model)
+      logical :: model_group = .false.
+      type(group_values_t) :: model_values          !! the effective values of that group
       !> what reading the scene found suspect though valid — a group the task does not read,
       !> a spring longer than 100 m, ω below 1e-3 rad/s — one warning a line, each naming the
       !> file and the group (new lines between them; "" when none). The programs print them
@@ -179,25 +182,30 @@ contains
    function scene_namelist(scene) result(lines)
       type(scene_t), intent(in) :: scene  !! the scene
       character(len=:), allocatable :: lines(:)
-      character(len=:), allocatable :: settings, physical
+      character(len=:), allocatable :: settings, physical, settings_model
       type(group_values_t) :: values
-      integer :: k, width, n_task, first
+      integer :: k, width, n_task, first, n_model
       ! the output prefix as the scene holds it (a driver may direct the file elsewhere)
       values = scene%settings
       call values%set("output", quoted(scene%output))
       settings = values%line()
       physical = ""
       if (scene%physical) physical = scene%physical_values%line()
+      if (scene%model_group) settings_model = scene%model_values%line()
       n_task = 0
       if (allocated(scene%task%groups)) n_task = size(scene%task%groups)
+      n_model = merge(1, 0, scene%model_group)
       width = max(len(settings), len(physical))
+      if (scene%model_group) width = max(width, len(settings_model))
       do k = 1, n_task
          width = max(width, len(scene%task%groups(k)%line()))
       end do
-      first = merge(3, 2, scene%physical)
+      ! &scene, the model's own group, &physical, then the task's groups
+      first = 2 + n_model + merge(1, 0, scene%physical)
       allocate (character(len=width) :: lines(first - 1 + n_task))
       lines(1) = settings
-      if (scene%physical) lines(2) = physical
+      if (scene%model_group) lines(2) = settings_model
+      if (scene%physical) lines(2 + n_model) = physical
       do k = 1, n_task
          lines(first - 1 + k) = scene%task%groups(k)%line()
       end do

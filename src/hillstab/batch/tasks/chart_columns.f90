@@ -129,7 +129,7 @@ contains
    function chart_column_table(scene) result(table)
       type(scene_t), intent(in) :: scene  !! the scene
       type(chart_column_t) :: table(n_chart_columns)
-      character(len=:), allocatable :: stable, alpha, a
+      character(len=:), allocatable :: stable, alpha, beta, a
       logical :: damped, pendulum
       damped = scene%epsilon > 0.0_wp
       pendulum = scene%model%is_pendulum()
@@ -142,8 +142,10 @@ contains
          "of the threshold, the value cannot decide"
       if (pendulum) then
          alpha = "alpha = a pi^2/rho, eq. (24)"
+         beta = "beta = g pi^2/(rho omega^2), eq. (24)"
       else
          alpha = "alpha of "//scene%model%summary()
+         beta = "beta of "//scene%model%summary()
       end if
       if (size(scene%amplitudes) > 0) then
          a = "bounce amplitude of &physical (alpha = a pi^2/rho)"
@@ -154,7 +156,7 @@ contains
       table(col_alpha) = chart_column("alpha", "", alpha, style_e17, need_nothing, kept=.true.)
       table(col_a) = chart_column("a", "m", a, style_e17, need_nothing, kept=.true., &
          offered=scene%physical .and. (size(scene%amplitudes) > 0 .or. pendulum))
-      table(col_beta) = chart_column("beta", "", "beta = g pi^2/(rho omega^2), eq. (24)", style_e17, need_nothing, &
+      table(col_beta) = chart_column("beta", "", beta, style_e17, need_nothing, &
          kept=.true.)
       table(col_omega) = chart_column("omega", "rad/s", "radial angular frequency sqrt(k/m) of the point "// &
          "(rho = r0 + g/omega^2)", style_e17, need_nothing, kept=.true., offered=size(scene%omegas) > 0)

@@ -1,0 +1,330 @@
+!> The scene group of a model that carries data: `&<model name>`, e.g. `&fourier cos = 1, 0.5 /`
+!> for `&scene model = 'fourier'`. Its variables are the model's own (hillstab_hill_model
+!> `variables`: lists of numbers, one number, or a file of numbers), read here from that
+!> declaration alone, so that a new model with data needs no code in the scene reader: the
+!> group's items are taken one by one (`group_items`), each number list read as Fortran
+!> reads a list (`3*0.0` repeats), handed to the model's `set_values`, and the model then
+!> asked whether it is complete (`check_values`). Every message names the file, the group
+!> and the variable (a model's messages begin with the variables they concern). The
+!> effective values go into every output header; a file's numbers are written there as the
+!> list they stand for (`samples = ...`), so that the header repeats the run without the file.
+!>
+!>```fortran
+!> call read_model_group(file, scene, error)   ! after &scene: scene%model is known
+!>```
+module hillstab_batch_scene_group_model
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t
+   use hillstab_core_text, only: real_text, integer_text, quoted, read_text_line, fpe_state_t, halting_off, &
+      halting_restore
+   use hillstab_hill_model, only: model_variable_t, model_variable_real, model_variable_list, model_variable_file
+   use hillstab_batch_scene_file, only: scene_file_t, item_t, group_items, group_present, fail, shortened, &
+      max_line_length
+   use hillstab_batch_scene_declaration, only: group_values_t, value_t, var_real, var_real_list, var_path
+   use hillstab_batch_scene_types, only: scene_t
+   implicit none
+   private
+   public :: read_model_group, model_group_name
+
+contains
+
+   !> The name of the model's scene group ("" for a model without variables).
+   function model_group_name(scene) result(name)
+      type(scene_t), intent(in) :: scene  !! a scene whose `&scene` is read
+      character(len=:), allocatable :: name
+      name = ""
+      if (size(scene%model%variables()) > 0) name = scene%model%name()
+   end function model_group_name
+
+   !> Read the model's group (when the model has variables), set the model's data and the
+   !> effective values `scene%model_values`; err_input naming file, group and variable.
+   subroutine read_model_group(file, scene, error)
+      type(scene_file_t), intent(in) :: file  !! the scene file
+      type(scene_t), intent(inout) :: scene   !! its model set from the group
+      type(error_t), allocatable, intent(out) :: error  !! what is wrong, named
+      type(model_variable_t), allocatable :: variables(:)
+      type(item_t), allocatable :: items(:)
+      type(error_t), allocatable :: cause
+      character(len=:), allocatable :: group, value, known
+      real(wp), allocatable :: numbers(:)
+      integer :: k, v, eq
+      variables = scene%model%variables()
+      scene%model_group = size(variables) > 0
+      if (.not. scene%model_group) return
+      group = scene%model%name()
+      ! the effective values start at the declared defaults
+      scene%model_values%group = group
+      scene%model_values%present = group_present(file%unit, group)
+      allocate (scene%model_values%values(size(variables)))
+      known = ""
+      do v = 1, size(variables)
+         if (v > 1) known = known//", "
+         known = known//trim(variables(v)%name)
+         scene%model_values%values(v) = value_t(name=trim(variables(v)%name), kind=value_kind(variables(v)%kind), &
+                                                given=.false., written=.true., text=trim(variables(v)%default))
+      end do
+      call group_items(file%unit, group, items)
+      do k = 1, size(items)
+         v = variable_index(variables, items(k)%name)
+         if (v == 0) then
+            call fail(error, file%path, group, items(k)%name, "unknown variable (the group has: "//known//")")
+            return
+         end if
+         eq = index(items(k)%text, "=")
+         value = ""
+         if (eq > 0) value = trim(adjustl(items(k)%text(eq + 1:)))
+         ! a last item's closing '/' and a trailing comma are not part of the value
+         if (len(value) > 0) then
+            if (value(len(value):) == "/") value = trim(value(:len(value) - 1))
+         end if
+         if (len(value) > 0) then
+            if (value(len(value):) == ",") value = trim(value(:len(value) - 1))
+         end if
+         if (len(value) == 0) then
+            call fail(error, file%path, group, items(k)%name, "no value")
+            return
+         end if
+         select case (variables(v)%kind)
+         case (model_variable_file)
+            call read_numbers_file(file%path, group, items(k)%name, unquoted(value), variables(v)%max_count, &
+                                   numbers, error)
+         case default
+            call read_number_list(file%path, group, items(k)%name, value, variables(v)%max_count, &
+                                  variables(v)%kind == model_variable_real, numbers, error)
+         end select
+         if (allocated(error)) return
+         call scene%model%set_values(items(k)%name, numbers, cause)
+         if (allocated(cause)) then
+            call fail_from_model(file%path, group, items(k)%name, cause%message, error)
+            return
+         end if
+         call record(scene%model_values, variables, v, numbers)
+      end do
+      call scene%model%check_values(cause)
+      if (allocated(cause)) call fail_from_model(file%path, group, trim(variables(1)%name), cause%message, error)
+   end subroutine read_model_group
+
+   !> The declaration kind of a model variable's effective value.
+   pure integer function value_kind(kind)
+      integer, intent(in) :: kind  !! model_variable_*
+      select case (kind)
+      case (model_variable_real); value_kind = var_real
+      case (model_variable_file); value_kind = var_path
+      case default; value_kind = var_real_list
+      end select
+   end function value_kind
+
+   !> The position of `name` among the variables (0: none).
+   pure integer function variable_index(variables, name) result(k)
+      type(model_variable_t), intent(in) :: variables(:)
+      character(len=*), intent(in) :: name
+      do k = 1, size(variables)
+         if (trim(variables(k)%name) == name) return
+      end do
+      k = 0
+   end function variable_index
+
+   !> The effective value of variable v: its numbers; a file's numbers as the first list
+   !> variable (the file itself left out of the header: the numbers repeat the run).
+   subroutine record(values, variables, v, numbers)
+      type(group_values_t), intent(inout) :: values
+      type(model_variable_t), intent(in) :: variables(:)
+      integer, intent(in) :: v
+      real(wp), intent(in) :: numbers(:)
+      integer :: k, target
+      character(len=:), allocatable :: text
+      text = ""
+      do k = 1, size(numbers)
+         if (k > 1) text = text//", "
+         text = text//real_text(numbers(k))
+      end do
+      target = v
+      if (variables(v)%kind == model_variable_file) then
+         values%values(v)%given = .true.
+         values%values(v)%written = .false.
+         do k = 1, size(variables)
+            if (variables(k)%kind == model_variable_list) then
+               target = k
+               exit
+            end if
+         end do
+         if (target == v) return
+      end if
+      values%values(target)%given = .true.
+      values%values(target)%text = text
+   end subroutine record
+
+   !> err_input from a model's message "<variables>: <text>": named by those variables
+   !> (else by `variable`).
+   subroutine fail_from_model(path, group, variable, message, error)
+      character(len=*), intent(in) :: path, group, variable, message
+      type(error_t), allocatable, intent(out) :: error
+      integer :: colon
+      colon = index(message, ": ")
+      if (colon <= 1) then
+         call fail(error, path, group, variable, message)
+      else if (verify(message(:colon - 1), "abcdefghijklmnopqrstuvwxyz_0123456789, ") == 0) then
+         call fail(error, path, group, message(:colon - 1), message(colon + 2:))
+      else
+         call fail(error, path, group, variable, message)
+      end if
+   end subroutine fail_from_model
+
+   !> The numbers of a list value as Fortran reads a list (blanks or commas, `r*x` repeats),
+   !> at most `max_count` (one with `single`).
+   subroutine read_number_list(path, group, variable, value, max_count, single, numbers, error)
+      character(len=*), intent(in) :: path, group, variable, value
+      integer, intent(in) :: max_count
+      logical, intent(in) :: single
+      real(wp), allocatable, intent(out) :: numbers(:)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: buffer(:)
+      integer :: ios, n
+      type(fpe_state_t) :: fpe
+      allocate (buffer(max_count + 1))
+      buffer = -huge(1.0_wp)
+      call halting_off(fpe)
+      read (value, *, iostat=ios) buffer
+      call halting_restore(fpe)
+      if (ios > 0 .or. verify(value, " ,0123456789.+-eEdD*") /= 0 .and. .not. special_words(value)) then
+         call fail(error, path, group, variable, "cannot read '"//shortened(value)//"' as "// &
+            trim(merge("a number", "numbers ", single)))
+         return
+      end if
+      n = findloc(buffer == -huge(1.0_wp), .true., dim=1) - 1
+      if (n < 0) n = size(buffer)
+      if (n == 0) then
+         call fail(error, path, group, variable, "no value")
+      else if (single .and. n > 1) then
+         call fail(error, path, group, variable, "one number, got "//integer_text(n))
+      else if (n > max_count) then
+         call fail(error, path, group, variable, "at most "//integer_text(max_count)//" numbers")
+      else
+         numbers = buffer(:n)
+      end if
+   end subroutine read_number_list
+
+   !> The value holds a word a number may be read from: nan, inf, infinity (refused later
+   !> as not finite, with the model's message).
+   pure logical function special_words(value)
+      character(len=*), intent(in) :: value
+      character(len=len(value)) :: lower
+      integer :: i
+      lower = value
+      do i = 1, len(lower)
+         if (lower(i:i) >= "A" .and. lower(i:i) <= "Z") lower(i:i) = achar(iachar(lower(i:i)) + 32)
+      end do
+      special_words = index(lower, "nan") > 0 .or. index(lower, "inf") > 0
+   end function special_words
+
+   !> A quoted path without its quotes.
+   pure function unquoted(value) result(path)
+      character(len=*), intent(in) :: value
+      character(len=:), allocatable :: path
+      path = value
+      if (len(path) >= 2) then
+         if ((path(1:1) == "'" .or. path(1:1) == '"') .and. path(len(path):) == path(1:1)) &
+            path = path(2:len(path) - 1)
+      end if
+   end function unquoted
+
+   !> The numbers of a file: one a row, or τ and the number (τ equally spaced); `#` comments,
+   !> blank lines skipped; every row of the same length; at most `max_count`.
+   subroutine read_numbers_file(source, group, variable, path, max_count, numbers, error)
+      character(len=*), intent(in) :: source, group, variable, path
+      integer, intent(in) :: max_count
+      real(wp), allocatable, intent(out) :: numbers(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: unit, ios, line_number, n, width, row_width, hash
+      character(len=512) :: msg
+      character(len=:), allocatable :: line, where
+      real(wp) :: row(3), tau0, step
+      real(wp), allocatable :: taus(:)
+      logical :: too_long
+      type(fpe_state_t) :: fpe
+      open (newunit=unit, file=path, status="old", action="read", iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         call fail(error, source, group, variable, "cannot open '"//path//"': "//trim(msg))
+         return
+      end if
+      allocate (numbers(0), taus(0))
+      n = 0
+      width = 0
+      line_number = 0
+      call halting_off(fpe)
+      do
+         call read_text_line(unit, line, ios, max_line_length, too_long)
+         if (ios /= 0 .and. .not. too_long) exit
+         line_number = line_number + 1
+         where = "'"//path//"' line "//integer_text(line_number)
+         if (too_long) then
+            call fail(error, source, group, variable, where//": longer than "//integer_text(max_line_length)// &
+               " characters")
+            exit
+         end if
+         hash = index(line, "#")
+         if (hash > 0) line = line(:hash - 1)
+         if (verify(line, " "//achar(9)//achar(13)//",") == 0) cycle
+         row_width = fields(line)
+         if (row_width < 1 .or. row_width > 2) then
+            call fail(error, source, group, variable, where//": expected one number (a sample) or two (tau and "// &
+               "the sample), got '"//shortened(trim(line))//"'")
+            exit
+         end if
+         row = 0.0_wp
+         read (line, *, iostat=ios) row(1:row_width)
+         if (ios /= 0 .or. verify(line, " ,0123456789.+-eEdD"//achar(9)//achar(13)) /= 0) then
+            call fail(error, source, group, variable, where//": cannot read '"//shortened(trim(line))// &
+               "' as numbers")
+            exit
+         end if
+         if (width == 0) width = row_width
+         if (row_width /= width) then
+            call fail(error, source, group, variable, where//": "//integer_text(row_width)//" numbers where "// &
+               "the rows before have "//integer_text(width)//" (ragged rows)")
+            exit
+         end if
+         n = n + 1
+         if (n > max_count) then
+            call fail(error, source, group, variable, "'"//path//"': more than "//integer_text(max_count)// &
+               " rows")
+            exit
+         end if
+         numbers = [numbers, row(width)]
+         if (width == 2) taus = [taus, row(1)]
+      end do
+      close (unit)
+      call halting_restore(fpe)
+      if (allocated(error)) return
+      if (width == 2 .and. n >= 2) then
+         ! tau equally spaced
+         tau0 = taus(1)
+         step = taus(2) - taus(1)
+         do line_number = 3, n
+            if (abs(taus(line_number) - (tau0 + (line_number - 1)*step)) > 1.0e-9_wp*max(1.0_wp, abs(step)*n)) then
+               call fail(error, source, group, variable, "'"//path//"': the tau column is not equally spaced "// &
+                  "(row "//integer_text(line_number)//": "//real_text(taus(line_number))//", expected "// &
+                  real_text(tau0 + (line_number - 1)*step)//")")
+               return
+            end if
+         end do
+      end if
+   end subroutine read_numbers_file
+
+   !> The number of blank- or comma-separated fields of a line.
+   pure integer function fields(line) result(n)
+      character(len=*), intent(in) :: line
+      integer :: i
+      logical :: in_field
+      n = 0
+      in_field = .false.
+      do i = 1, len(line)
+         if (index(" ,"//achar(9)//achar(13), line(i:i)) > 0) then
+            in_field = .false.
+         else if (.not. in_field) then
+            in_field = .true.
+            n = n + 1
+         end if
+      end do
+   end function fields
+end module hillstab_batch_scene_group_model
