@@ -34,10 +34,11 @@ contains
    !> arrays live on the stack (arrays sized by the call would be allocated on the heap,
    !> about twenty times a call).
    pure subroutine lane_traces(mesh, c0, c1, phases, traces, floors, mode)
-      type(mesh_t), intent(in) :: mesh
-      real(wp), intent(in) :: c0(:), c1(:)
+      type(mesh_t), intent(in) :: mesh   !! the mesh every lane is propagated on
+      real(wp), intent(in) :: c0(:)      !! constant part of q of each lane: q = c0 + c1 w
+      real(wp), intent(in) :: c1(:)      !! coefficient of the shape w of each lane
       real(wp), intent(in) :: phases(:)  !! phase bound of each lane (`coefficient_phase`)
-      type(trace_t), intent(out) :: traces(size(c0))
+      type(trace_t), intent(out) :: traces(size(c0))  !! S of each lane, with ln|S| where it is large
       real(wp), intent(out) :: floors(size(c0))  !! round-off level of each S, relative to max(1, |S|)
       !> lanes_plain (default: S and its round-off level), lanes_values (S only: floors 0,
       !> and ln|S| left unset below |S| = e^300 where the propagator was never rescaled) or
@@ -55,10 +56,11 @@ contains
 
    !> `lane_traces` of at most `lane_block` lanes.
    pure subroutine lane_block_traces(mesh, c0, c1, phases, traces, floors, how)
-      type(mesh_t), intent(in) :: mesh
-      real(wp), intent(in) :: c0(:), c1(:)
+      type(mesh_t), intent(in) :: mesh   !! the mesh every lane is propagated on
+      real(wp), intent(in) :: c0(:)      !! constant part of q of each lane: q = c0 + c1 w
+      real(wp), intent(in) :: c1(:)      !! coefficient of the shape w of each lane
       real(wp), intent(in) :: phases(:)  !! phase bound of each lane (`coefficient_phase`)
-      type(trace_t), intent(out) :: traces(size(c0))
+      type(trace_t), intent(out) :: traces(size(c0))  !! S of each lane, with ln|S| where it is large
       real(wp), intent(out) :: floors(size(c0))  !! round-off level of each S, relative to max(1, |S|)
       integer, intent(in) :: how  !! lanes_plain, lanes_values or lanes_screen
       real(wp), parameter :: c_d2 = -sqrt15/3.0_wp, c_d3 = -10.0_wp/3.0_wp, c_60 = 1.0_wp/30.0_wp

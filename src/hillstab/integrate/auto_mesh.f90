@@ -22,26 +22,26 @@ module hillstab_integrate_auto_mesh
    type :: mesh_t
       integer :: key = 0                 !! the step count it was asked for (its cache key)
       logical :: half = .true.           !! the window is half a period: S = 2(u v' + u' v)
-      integer :: n_steps = 0
+      integer :: n_steps = 0             !! number of steps
       real(wp), allocatable :: h(:)      !! step lengths
       real(wp), allocatable :: w(:, :)   !! w at the three Gauss nodes of each step
    end type mesh_t
 
    !> The meshes built so far for one (model kind, α) — local to one batch call.
    type :: mesh_cache_t
-      integer :: n_meshes = 0
-      type(mesh_t) :: meshes(40)
+      integer :: n_meshes = 0            !! meshes held
+      type(mesh_t) :: meshes(40)         !! the meshes, the first n_meshes in use
    end type mesh_cache_t
 
 contains
 
    !> Index of the mesh with n steps in the cache, building it if needed.
    subroutine get_mesh(cache, model, alpha, n, index)
-      type(mesh_cache_t), intent(inout) :: cache
-      class(hill_model_t), intent(in) :: model
-      integer, intent(in) :: n
-      real(wp), intent(in) :: alpha
-      integer, intent(out) :: index
+      type(mesh_cache_t), intent(inout) :: cache  !! the meshes of this batch call
+      class(hill_model_t), intent(in) :: model    !! the model whose window and shape w it meshes
+      integer, intent(in) :: n                    !! steps per unit of τ
+      real(wp), intent(in) :: alpha               !! α, for the Kepler-type map of the pendulum
+      integer, intent(out) :: index               !! position of the mesh in cache%meshes
       integer :: i
       do i = 1, cache%n_meshes
          if (cache%meshes(i)%key == n) then
@@ -69,10 +69,10 @@ contains
    !> map; on any other window uniform steps in τ on each piece between the jumps of q (an
    !> even number on each piece).
    pure subroutine build_mesh(model, alpha, n, mesh)
-      class(hill_model_t), intent(in) :: model
-      integer, intent(in) :: n
-      real(wp), intent(in) :: alpha
-      type(mesh_t), intent(out) :: mesh
+      class(hill_model_t), intent(in) :: model  !! the model whose window and shape w it meshes
+      integer, intent(in) :: n                  !! steps per unit of τ
+      real(wp), intent(in) :: alpha             !! α, for the Kepler-type map of the pendulum
+      type(mesh_t), intent(out) :: mesh         !! the mesh, its key n
       ! the sines at the nodes (3 n) and the mesh points' X, Y and τ (n each): one allocation
       ! (an allocation costs about as much as a mesh step)
       real(wp), allocatable :: work(:)
