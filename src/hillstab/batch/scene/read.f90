@@ -90,15 +90,17 @@ contains
       class(task_t), allocatable :: other
       class(hill_model_t), allocatable :: other_model
       type(error_t), allocatable :: cause
+      type(group_t), allocatable :: groups(:)
       integer :: k, j, n
       names = group_names(file%unit)
       reads = "&scene"
       if (scene%physical) reads = reads//", &physical"
-      associate (groups => task%declarations())
-         do j = 1, size(groups)
-            reads = reads//", &"//groups(j)%name
-         end do
-      end associate
+      ! a local, not an associate name: gfortran does not free the function result's
+      ! allocatable components through an associate name
+      groups = task%declarations()
+      do j = 1, size(groups)
+         reads = reads//", &"//groups(j)%name
+      end do
       tasks = task_names()
       do k = 1, size(names)
          if (task_reads(task, trim(names(k)))) cycle
