@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# valgrind memcheck on small scenes of every task (and a physical, binary points scene, a chart updating its
+# valgrind memcheck on small scenes of every task and of the models with data (and a physical, binary points scene, a chart updating its
 # checkpoint after every row, and a chart resumed from the checkpoint a write error left): no invalid access, no use
 # of uninitialised values, no definite leak (--error-exitcode makes any of them fail).
 # usage: scripts/check_memory.sh BUILD/app/hillstab
@@ -65,13 +65,28 @@ if [ "$code" -ne 2 ] || [ ! -f m_resume_chart.dat.checkpoint/state ]; then
    echo "check-memory: the run under a file-size limit exited $code and left no checkpoint" >&2
    exit 1
 fi
+cat > fourier.nml <<'NML'
+&scene task='chart', model='fourier', method='auto', output='m_fourier' /
+&chart alpha_min=0, alpha_max=4, n_alpha=3, beta_min=-2, beta_max=12, n_beta=4 /
+&fourier cos=0.5, 0, 0.25, sin=0, 0.3 /
+NML
+printf '%s\n' 1 0.8 0.2 -0.5 -1 -0.4 0.3 0.9 >samples.dat
+cat > sampled.nml <<'NML'
+&scene task='boundaries', model='sampled', output='m_sampled' /
+&chart alpha_min=0, alpha_max=3, n_alpha=3, beta_min=-2, beta_max=12 /
+&sampled file='samples.dat' /
+NML
+cat > meissner.nml <<'NML'
+&scene task='chart', model='meissner', method='magnus6', epsilon=0.1, output='m_meissner' /
+&chart alpha_min=0.5, alpha_max=3, n_alpha=3, beta_min=-1, beta_max=5, n_beta=3 /
+NML
 cat > bad.nml <<'NML'
 &scene task='chart', output='m_bad' /
 &chart beta_max = -, /
 NML
 status=0
 for scene in chart chart_segments points coefficient series boundaries lyapunov poincare physical checkpoint resume \
-   bad; do
+   fourier sampled meissner bad; do
    log="$work/$scene.valgrind"
    options=--quiet
    case $scene in

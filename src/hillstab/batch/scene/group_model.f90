@@ -20,7 +20,7 @@ module hillstab_batch_scene_group_model
    use hillstab_hill_model, only: model_variable_t, model_variable_real, model_variable_list, model_variable_file
    use hillstab_batch_scene_file, only: scene_file_t, item_t, group_items, group_present, fail, shortened, &
       max_line_length
-   use hillstab_batch_scene_declaration, only: group_values_t, value_t, var_real, var_real_list, var_path
+   use hillstab_batch_scene_declaration, only: group_values_t, var_real, var_real_list, var_path
    use hillstab_batch_scene_types, only: scene_t
    implicit none
    private
@@ -60,8 +60,12 @@ contains
       do v = 1, size(variables)
          if (v > 1) known = known//", "
          known = known//trim(variables(v)%name)
-         scene%model_values%values(v) = value_t(name=trim(variables(v)%name), kind=value_kind(variables(v)%kind), &
-                                                given=.false., written=.true., text=trim(variables(v)%default))
+         ! component by component: gfortran leaks the trimmed texts given to a structure constructor
+         scene%model_values%values(v)%name = trim(variables(v)%name)
+         scene%model_values%values(v)%kind = value_kind(variables(v)%kind)
+         scene%model_values%values(v)%given = .false.
+         scene%model_values%values(v)%written = .true.
+         scene%model_values%values(v)%text = trim(variables(v)%default)
       end do
       call group_items(file%unit, group, items)
       do k = 1, size(items)
