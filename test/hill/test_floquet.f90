@@ -18,7 +18,8 @@ contains
          new_unittest("exponent_and_rotation", exponent_and_rotation), &
          new_unittest("overflowed_trace", overflowed_trace), &
          new_unittest("damped_criterion", damped_criterion), &
-         new_unittest("marginal_verdicts", marginal_verdicts)])
+         new_unittest("marginal_verdicts", marginal_verdicts), &
+         new_unittest("longer_period", longer_period)])
    end function collect_floquet
 
    !> λ₁ + λ₂ = e^{−ε} S and λ₁ λ₂ = e^{−2ε} for the multipliers of x.
@@ -109,4 +110,30 @@ contains
       f = floquet_from_trace(trace_t(huge(1.0_wp), 1500.0_wp, .true., 1.0e-10_wp), 0.0_wp)
       call check(ctx, .not. f%marginal, "overflow: not marginal")
    end subroutine marginal_verdicts
+   !> A period P = 4: the multipliers of x are those of χ times e^{−εP/2}, the exponent is
+   !> ln|λ_max|/P, and the damped threshold is 2 cosh(εP/2); P = 2 given explicitly is the default.
+   subroutine longer_period(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(floquet_t) :: f, g
+      real(wp) :: s, eps, growth
+      integer :: i
+      do i = 0, 30
+         s = -6.0_wp + 0.4_wp*i
+         eps = 0.02_wp*mod(i, 4)
+         f = floquet_from_value(s, 0.0_wp)
+         f = floquet_from_trace(f%trace, eps, period=4.0_wp)
+         if (abs(s) >= 2.0_wp) then
+            growth = log(0.5_wp*(abs(s) + sqrt(s*s - 4.0_wp)))
+         else
+            growth = 0.0_wp
+         end if
+         call check_close(ctx, f%log_modulus(1), growth - 2.0_wp*eps, abs=1.0e-13_wp, message="ln|lambda_max|")
+         call check_close(ctx, f%exponent, (growth - 2.0_wp*eps)/4.0_wp, abs=1.0e-13_wp, message="exponent")
+         call check(ctx, f%stable .eqv. (abs(s) < 2.0_wp*cosh(2.0_wp*eps)), "stable by 2 cosh(eps P/2)")
+         g = floquet_from_trace(f%trace, eps, period=2.0_wp)
+         f = floquet_from_trace(f%trace, eps)
+         call check(ctx, f%exponent == g%exponent .and. (f%stable .eqv. g%stable), "period 2 is the default")
+      end do
+      call check(ctx, period_damping(0.3_wp, 2.0_wp) == 0.3_wp, "period_damping at P = 2 is epsilon exactly")
+   end subroutine longer_period
 end module test_floquet

@@ -12,6 +12,8 @@ module test_formulas
    use hillstab_hill_model, only: hill_point_t
    use hillstab_hill_model_elastic, only: elastic_model_t
    use hillstab_hill_model_mathieu, only: mathieu_model_t
+   use hillstab_hill_model_fourier, only: fourier_model_t
+   use hillstab_core_error, only: error_t
    implicit none
    private
    public :: collect_formulas
@@ -26,7 +28,8 @@ contains
          new_unittest("eq37_equals_two_pieces", eq37_equals_two_pieces), &
          new_unittest("damped_eq48_equals_two_pieces", damped_eq48_equals_two_pieces), &
          new_unittest("mathieu_a3", mathieu_a3), &
-         new_unittest("zero_radicands_finite", zero_radicands_finite)])
+         new_unittest("zero_radicands_finite", zero_radicands_finite), &
+         new_unittest("two_pieces_over_period_four", two_pieces_over_period_four)])
    end function collect_formulas
 
    !> α = 0: Q ≡ β, S = 2 cos(2√β) (2 cosh(2√−β) for β < 0), β from −400 to 1e4.
@@ -141,4 +144,39 @@ contains
       s_near = value_of(trace_two_segment_paper(5.0_wp, -5.0_wp - 1.0e-9_wp))
       call check(ctx, s0, s_near, rel=1.0e-7_wp)
    end subroutine zero_radicands_finite
+   !> Method formula over a period 4: the fourier model f = cos πτ given over P = 4 has
+   !> Q(0) = Q(2) = β + α, so both pieces (each 2 long) are that constant and
+   !> S = 2 cos(4√(β + α)) (2 cosh(4√−(β + α)) below 0); with damping β − ε²/4 in their place.
+   subroutine two_pieces_over_period_four(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(fourier_model_t) :: model
+      type(error_t), allocatable :: error
+      type(trace_t) :: tr
+      real(wp) :: q, exact, alpha, beta, eps
+      integer :: i
+      call model%set_values("cos", [0.0_wp, 1.0_wp], error)
+      call model%set_values("period", [4.0_wp], error)
+      call check(ctx, .not. allocated(error), "the model's data")
+      if (allocated(error)) return
+      do i = 0, 40
+         alpha = 0.1_wp*i
+         beta = -3.0_wp + 0.5_wp*i
+         eps = 0.05_wp*mod(i, 3)
+         q = beta + alpha - 0.25_wp*eps**2
+         if (q >= 0.0_wp) then
+            exact = 2.0_wp*cos(4.0_wp*sqrt(q))
+         else
+            exact = 2.0_wp*cosh(4.0_wp*sqrt(-q))
+         end if
+         tr = trace_formula(model, hill_point_t(alpha, beta, eps))
+         call check_close(ctx, value_of(tr), exact, rel=1.0e-12_wp, abs=1.0e-12_wp, &
+                          message="S at alpha = "//trim(adjustl(ftext(alpha)))//", beta = "//trim(adjustl(ftext(beta))))
+      end do
+   contains
+      function ftext(x) result(t)
+         real(wp), intent(in) :: x
+         character(len=24) :: t
+         write (t, '(g0.6)') x
+      end function ftext
+   end subroutine two_pieces_over_period_four
 end module test_formulas

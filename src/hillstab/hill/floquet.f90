@@ -14,6 +14,7 @@ module hillstab_hill_floquet
    implicit none
    private
    public :: floquet_t, floquet_from_trace, floquet_verdict, verdicts, near_threshold, floquet_from_value, multipliers, &
+      period_damping, &
       largest_multiplier_modulus, bounds_verdict, bounds_stable, bounds_unstable, bounds_undecided
 
    !> Floquet data of the swing x over one radial period (2 units of τ).
@@ -23,7 +24,7 @@ module hillstab_hill_floquet
       real(wp) :: log_modulus(2) = 0.0_wp  !! ln|λ| of the multipliers of x, largest first
       real(wp) :: argument(2) = 0.0_wp     !! arg λ: ±θ when |S| < 2, 0 or π when real
       real(wp) :: rotation = 0.0_wp     !! θ = arccos(S/2) ∈ [0, π] when |S| ≤ 2, else 0
-      real(wp) :: exponent = 0.0_wp     !! μ = ln|λ_max|/2 per unit τ (of x; −ε/2 when |S|<2)
+      real(wp) :: exponent = 0.0_wp     !! μ = ln|λ_max|/P per unit τ, P the period (of x; −ε/2 when |S|<2)
       logical :: stable = .false.       !! x stays bounded (decays for ε > 0): |S| < 2 cosh ε
       logical :: stable_paper = .false. !! the paper's criterion |S| ≤ 2
       !> |S| lies within the trace's error bound of the stability threshold 2 cosh ε, so the
@@ -66,55 +67,72 @@ contains
    !> `marginal` is set when the trace has an error estimate e ≥ 0 (exact methods) and
    !> ||S| − 2 cosh ε| ≤ max(e, tolerance) max(1, |S|): the error bound of S, on the scale of
    !> `tolerance`, reaches across the stability threshold (always when e ≥ 1).
-   pure function floquet_from_trace(tr, epsilon, tolerance) result(f)
+   pure function floquet_from_trace(tr, epsilon, tolerance, period) result(f)
       type(trace_t), intent(in) :: tr  !! trace of the (chi-)monodromy, with ln|S| and its error estimate
       real(wp), intent(in) :: epsilon  !! damping ε ≥ 0
       !> the tolerance S was computed to (relative to max(1, |S|)); default 0: the estimate alone
       real(wp), intent(in), optional :: tolerance
+      !> the period P of Q in τ (default 2): x = e^{−ετ/2} χ loses εP/2 of ln|λ| a period
+      real(wp), intent(in), optional :: period
       type(floquet_t) :: f
-      real(wp) :: s, log_growth, half
-      f = floquet_verdict(tr, epsilon, tolerance)
+      real(wp) :: s, log_growth, half, p, decay
+      p = 2.0_wp
+      if (present(period)) p = period
+      decay = period_damping(epsilon, p)
+      f = floquet_verdict(tr, epsilon, tolerance, p)
       s = tr%value
       if (.not. tr%overflow .and. abs(s) <= 2.0_wp) then
          half = 0.5_wp*s
          f%rotation = acos(half)
-         f%log_modulus = -epsilon
+         f%log_modulus = -decay
          f%argument = [f%rotation, -f%rotation]
       else
          log_growth = growth_of(tr)
          f%rotation = 0.0_wp
-         f%log_modulus = [log_growth - epsilon, -log_growth - epsilon]
+         f%log_modulus = [log_growth - decay, -log_growth - decay]
          if (s > 0.0_wp) then
             f%argument = 0.0_wp
          else
             f%argument = pi
          end if
       end if
-      f%exponent = 0.5_wp*f%log_modulus(1)
+      f%exponent = f%log_modulus(1)/p
    end function floquet_from_trace
+
+   !> The damping of one period of length P as the verdicts take it: εP/2 (ε for P = 2,
+   !> exactly), ln of the factor e^{−εP/2} between the multipliers of χ and those of x.
+   elemental real(wp) function period_damping(epsilon, period) result(decay)
+      real(wp), intent(in) :: epsilon  !! damping ε ≥ 0
+      real(wp), intent(in) :: period   !! the period P in τ
+      decay = epsilon*(0.5_wp*period)
+   end function period_damping
 
    !> The verdicts alone of `floquet_from_trace` (`stable`, `stable_paper`, `marginal`, the
    !> trace and ε; the multipliers left at zero): what a file of verdicts needs, without
    !> the inverse trigonometric and hyperbolic functions of the multipliers.
-   pure function floquet_verdict(tr, epsilon, tolerance) result(f)
+   pure function floquet_verdict(tr, epsilon, tolerance, period) result(f)
       type(trace_t), intent(in) :: tr  !! trace of the (chi-)monodromy, with its error estimate
       real(wp), intent(in) :: epsilon  !! damping ε ≥ 0
       !> the tolerance S was computed to (relative to max(1, |S|)); default 0: the estimate alone
       real(wp), intent(in), optional :: tolerance
+      real(wp), intent(in), optional :: period  !! the period P of Q in τ (default 2)
       type(floquet_t) :: f
-      real(wp) :: bound
+      real(wp) :: bound, decay
       f%trace = tr
       f%epsilon = epsilon
       bound = 0.0_wp
       if (present(tolerance)) bound = tolerance
-      call verdicts(tr, epsilon, bound, f%stable, f%stable_paper, f%marginal)
+      decay = epsilon
+      if (present(period)) decay = period_damping(epsilon, period)
+      call verdicts(tr, decay, bound, f%stable, f%stable_paper, f%marginal)
    end function floquet_verdict
 
    !> The verdicts of `floquet_verdict` alone, as three flags: what a file of verdicts writes
    !> at every point (no Floquet data built).
    elemental subroutine verdicts(tr, epsilon, tolerance, stable, stable_paper, marginal)
       type(trace_t), intent(in) :: tr  !! trace of the (chi-)monodromy, with its error estimate
-      real(wp), intent(in) :: epsilon  !! damping ε ≥ 0
+      !> damping of one period, ε ≥ 0 for the period 2 (εP/2 for a period P: `period_damping`)
+      real(wp), intent(in) :: epsilon
       real(wp), intent(in) :: tolerance  !! the tolerance S was computed to (0: the estimate alone)
       logical, intent(out) :: stable        !! |S| < 2 cosh ε
       logical, intent(out) :: stable_paper  !! |S| ≤ 2

@@ -62,13 +62,16 @@ contains
 
    !> Method formula: the trace of the model's two pieces (the paper's sampling (28) in its
    !> closed form), S₁ of the χ equation when ε > 0: eq. (37)/(48)–(50) for the elastic
-   !> model, (A3) with β − ε²/4 for the Mathieu model.
+   !> model, (A3) with β − ε²/4 for the Mathieu model; over a period P ≠ 2 the two pieces
+   !> are each P/2 long.
    pure function trace_formula(model, point) result(tr)
       class(hill_model_t), intent(in) :: model  !! the model
       type(hill_point_t), intent(in) :: point   !! α, β, ε
       type(trace_t) :: tr
-      real(wp) :: q_first, q_second
+      real(wp) :: q_first, q_second, scale
       call model%two_piece_values(point%alpha, point%beta, point%epsilon, q_first, q_second)
-      tr = trace_two_piece(q_first, q_second)
+      ! pieces of length P/2: in s = 2τ/P they are of unit length and q scales by (P/2)²
+      scale = (0.5_wp*model%period())**2
+      tr = trace_two_piece(scale*q_first, scale*q_second)
    end function trace_formula
 end module hillstab_hill_formulas

@@ -32,7 +32,7 @@ module hillstab_hill_model
    public :: model_variable_t, model_variable_real, model_variable_list, model_variable_file
    public :: harmonics_none, harmonics_infinite
    public :: hill_coefficient, hill_coefficient_before, segment_average, model_split, damping_shift, model_description
-   public :: window_piece_end
+   public :: window_piece_end, model_equation_text
    public :: coefficient_range, model_coefficient_range
    public :: check_point, check_alpha, check_batch, max_magnitude
 
@@ -485,6 +485,22 @@ contains
       character(len=:), allocatable :: text
       text = "model: "//model%name()//", "//model%formula()
    end function model_description
+
+   !> The equation and the model's period as output headers state them:
+   !> "x'' + Q(tau) x = 0, period 2 in tau" (the period as an integer when it is one).
+   function model_equation_text(model) result(text)
+      class(hill_model_t), intent(in) :: model  !! the model
+      character(len=:), allocatable :: text
+      character(len=32) :: buffer
+      real(wp) :: p
+      p = model%period()
+      if (p == aint(p) .and. abs(p) < 1.0e9_wp) then
+         write (buffer, '(i0)') nint(p)
+      else
+         write (buffer, '(g0)') p
+      end if
+      text = "x'' + Q(tau) x = 0, period "//trim(buffer)//" in tau"
+   end function model_equation_text
 
    !> The least and the largest value over the period of q = c₀ + c₁ w(τ) for the split
    !> (c₀, c₁) of a point and the range of w, widened by a few roundings of the values it

@@ -22,7 +22,7 @@ module hillstab_integrate_monodromy
    use hillstab_core_text, only: name_position, alternatives_text, integer_text
    use hillstab_hill_model, only: hill_model_t, hill_point_t, check_point, check_batch, coefficient_range, model_split
    use hillstab_hill_coefficient, only: sampling_endpoint, sampling_count
-   use hillstab_hill_floquet, only: bounds_verdict, bounds_stable, bounds_unstable, near_threshold
+   use hillstab_hill_floquet, only: bounds_verdict, bounds_stable, bounds_unstable, near_threshold, period_damping
    use hillstab_hill_transfer, only: scaled_matrix_t, multiply_matrix, trace_t, trace_from_value
    use hillstab_hill_formulas, only: trace_formula
    use hillstab_core_stats, only: work_stats_t, add_work
@@ -152,13 +152,15 @@ contains
       integer, intent(in) :: need              !! need_verdict or need_growth
       type(trace_t), intent(inout) :: traces(:)  !! the settled points' stand-ins
       logical, intent(out) :: settled(:)       !! which points are settled
-      real(wp) :: q_min, q_max, w_min, w_max, c0, c1
+      real(wp) :: q_min, q_max, w_min, w_max, c0, c1, scale
       integer :: j, verdict
       call model%shape_range(row%alpha, w_min, w_max)
+      ! the criterion is stated for the period 2: over a period P, in s = 2τ/P, q is (P/2)² q
+      scale = (0.5_wp*model%period())**2
       do j = 1, size(betas)
          call model_split(model, row%alpha, betas(j), row%epsilon, c0, c1)
          call coefficient_range(c0, c1, w_min, w_max, q_min, q_max)
-         verdict = bounds_verdict(q_min, q_max)
+         verdict = bounds_verdict(scale*q_min, scale*q_max)
          settled(j) = verdict == bounds_stable .or. (verdict == bounds_unstable .and. need == need_verdict .and. &
                                                     .not. row%epsilon > 0.0_wp)
          if (.not. settled(j)) cycle
@@ -435,7 +437,8 @@ contains
                if (.not. allocated(point_error)) then
                   do j = 1, size(open)
                      traces(open(j)) = screened(j)
-                     settled(open(j)) = verdict_is_certain(screened(j), row%epsilon, method%tolerance, wanted, &
+                     settled(open(j)) = verdict_is_certain(screened(j), period_damping(row%epsilon, model%period()), &
+                                                             method%tolerance, wanted, &
                                                            paper_side)
                   end do
                end if
@@ -452,7 +455,8 @@ contains
                      cycle
                   end if
                   traces(open(j))%error_estimate = screen_safety*traces(open(j))%error_estimate
-                  settled(open(j)) = verdict_is_certain(traces(open(j)), row%epsilon, method%tolerance, wanted, &
+                  settled(open(j)) = verdict_is_certain(traces(open(j)), period_damping(row%epsilon, model%period()), &
+                                                          method%tolerance, wanted, &
                                                         paper_side)
                end do
             end if

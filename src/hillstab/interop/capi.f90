@@ -137,7 +137,7 @@ contains
          info = int(error%code, c_int)
          if (error%code /= err_accuracy) return
       end if
-      f = floquet_from_trace(tr, point%epsilon)
+      f = floquet_from_trace(tr, point%epsilon, period=model%period())
       s = tr%value
       logs = tr%log_abs
       iovf = 0

@@ -232,7 +232,7 @@ contains
             cycle
          end if
          status(j) = int(merge(status_roundoff, status_ok, inaccurate(1)), c_int)
-         f = floquet_from_trace(tr(1), epsilon(j), m%tolerance)
+         f = floquet_from_trace(tr(1), epsilon(j), m%tolerance, handle%model%period())
          call computed_values(f, .true., values(:, j))
       end do
       !$omp end parallel do
@@ -371,9 +371,9 @@ contains
          end if
          statuses(j) = int(merge(status_roundoff, status_ok, inaccurate(j)), c_int)
          if (need <= need_verdict) then
-            f = floquet_verdict(traces(j), epsilon, method%tolerance)
+            f = floquet_verdict(traces(j), epsilon, method%tolerance, model%period())
          else
-            f = floquet_from_trace(traces(j), epsilon, method%tolerance)
+            f = floquet_from_trace(traces(j), epsilon, method%tolerance, model%period())
          end if
          call computed_values(f, need >= need_growth, values(:, j))
       end do

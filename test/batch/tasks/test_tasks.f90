@@ -1016,12 +1016,21 @@ contains
                    "alpha_min = 0, alpha_max = 10, n_alpha = 21, beta_min = -5, beta_max = 15, n_beta = 31", .false.)
       call compare("damped", "model = 'elastic', epsilon = 0.3", &
                    "alpha_min = 0, alpha_max = 9.8, n_alpha = 24, beta_min = -2, beta_max = 12, n_beta = 37", .true.)
+      ! a period 4 (f = cos(πτ/2) + 0.3 cos πτ + 0.2 sin πτ): the range shortcut's bands and the
+      ! damped threshold are those of the period 4 (2 cosh(εP/2) = 2 cosh(0.3) at ε = 0.15)
+      call compare("period4", "model = 'fourier'", &
+                   "alpha_min = 0.02, alpha_max = 1, n_alpha = 12, beta_min = 0.3, beta_max = 2.6, n_beta = 47", .false., &
+                   "&fourier cos = 1, 0.3, sin = 0, 0.2, period = 4 /")
+      call compare("period4_damped", "model = 'fourier', epsilon = 0.15", &
+                   "alpha_min = 0.02, alpha_max = 3, n_alpha = 12, beta_min = 0.3, beta_max = 2.6, n_beta = 47", .true., &
+                   "&fourier cos = 1, 0.3, sin = 0, 0.2, period = 4 /")
    contains
-      subroutine compare(name, settings, chart, damped)
+      subroutine compare(name, settings, chart, damped, model_group)
          character(len=*), intent(in) :: name, settings, chart
          logical, intent(in) :: damped
+         character(len=*), intent(in), optional :: model_group  !! the model's group, when it has data
          type(error_t), allocatable :: error
-         character(len=:), allocatable :: out, full_path, verdict_path, verdict_columns, full_columns
+         character(len=:), allocatable :: out, full_path, verdict_path, verdict_columns, full_columns, group
          character(len=1024), allocatable :: full(:), verdict(:)
          real(wp), allocatable :: full_rows(:, :), verdict_rows(:, :)
          real(wp) :: s, bound, tolerance
@@ -1033,12 +1042,15 @@ contains
          if (damped) verdict_columns = verdict_columns//" stable_paper"
          full_columns = verdict_columns//" S"
          n_columns = merge(4, 3, damped)
+         group = ""
+         if (present(model_group)) group = model_group
          call run_text_scene("verdict_full", [padded("&scene "//settings//", output = '"//out//"_full',"), &
-            padded("  columns = '"//full_columns//"' /"), padded("&chart "//chart//" /")], error, full_path)
+            padded("  columns = '"//full_columns//"' /"), padded("&chart "//chart//" /"), padded(group)], error, full_path)
          call check(ctx, .not. allocated(error), name//": full chart")
          if (allocated(error)) return
          call run_text_scene("verdict_only", [padded("&scene "//settings//", output = '"//out//"_verdict',"), &
-            padded("  columns = '"//verdict_columns//"' /"), padded("&chart "//chart//" /")], error, verdict_path)
+            padded("  columns = '"//verdict_columns//"' /"), padded("&chart "//chart//" /"), padded(group)], error, &
+            verdict_path)
          call check(ctx, .not. allocated(error), name//": verdict chart")
          if (allocated(error)) return
          full = read_lines(full_path)
@@ -1052,6 +1064,11 @@ contains
          do k = 1, size(full_rows, 2)
             call check(ctx, all(verdict_rows(1:2, k) == full_rows(1:2, k)), name//": the same grid")
             s = full_rows(n_columns + 1, k)
+            ! the full file's own verdict against its S (threshold 2 cosh(0.3) when damped)
+            if (full_rows(3, k) /= 0.5_wp) then
+               call check(ctx, (full_rows(3, k) == 1.0_wp) .eqv. (abs(s) < merge(2.0_wp*cosh(0.3_wp), 2.0_wp, damped)), &
+                          name//": stable as S says")
+            end if
             do c = 3, n_columns
                if (verdict_rows(c, k) == full_rows(c, k)) cycle
                if (verdict_rows(c, k) == 0.5_wp .or. full_rows(c, k) == 0.5_wp) then

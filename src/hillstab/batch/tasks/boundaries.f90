@@ -28,7 +28,7 @@ module hillstab_batch_tasks_boundaries
    !$ use omp_lib, only: omp_get_thread_num, omp_get_num_threads
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
-   use hillstab_hill_model, only: hill_model_t, hill_point_t, model_description
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, model_description, model_equation_text
    use hillstab_hill_units, only: equilibrium_length, physical_beta
    use hillstab_hill_transfer, only: trace_t
    use hillstab_integrate_monodromy, only: monodromy_trace, method_t, method_auto
@@ -1141,7 +1141,7 @@ contains
                  in_physical_domain(grid%alpha_max, grid%beta_max))) then
          n = n + 1; text(n) = "note: the window leaves the physical domain 0 <= alpha < pi^2, 0 < beta < pi^2"
       end if
-      lines = scene_header(scene, "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau; transition "// &
+      lines = scene_header(scene, "hillstab "//version_string//": "//model_equation_text(scene%model)//"; transition "// &
                            "curves S = +-2", text(:n))
    end function header
 end module hillstab_batch_tasks_boundaries

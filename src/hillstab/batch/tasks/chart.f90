@@ -16,7 +16,7 @@ module hillstab_batch_tasks_chart
    use hillstab_core_text, only: format_es, real_text, integer_text
    use hillstab_hill_coefficient, only: in_physical_domain
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict, period_damping
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, batch_plan_t, prepare_batch, need_verdict
    use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output
    use hillstab_batch_scene_declaration, only: group_t
@@ -440,11 +440,13 @@ contains
             ! a verdict line (or a failed point's), written directly
             lengths(j) = 0
             if (present(beta_texts)) then
-               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), scene%epsilon, scene%method%tolerance, &
+               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), period_damping(scene%epsilon, &
+                                  scene%model%period()), scene%method%tolerance, &
                                   statuses(j:j), [in_physical_domain(alpha, betas(j))], [a], alpha_text, lines(j), &
                                   lengths(j), beta_texts(j:j))
             else
-               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), scene%epsilon, scene%method%tolerance, &
+               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), period_damping(scene%epsilon, &
+                                  scene%model%period()), scene%method%tolerance, &
                                   statuses(j:j), [in_physical_domain(alpha, betas(j))], [a], alpha_text, lines(j), &
                                   lengths(j))
             end if
@@ -455,9 +457,9 @@ contains
          else
             if (need <= need_verdict) then
                ! verdicts only: no multipliers (their columns, not in a verdict file, stay 0)
-               f = floquet_verdict(traces(j), scene%epsilon, scene%method%tolerance)
+               f = floquet_verdict(traces(j), scene%epsilon, scene%method%tolerance, scene%model%period())
             else
-               f = floquet_from_trace(traces(j), scene%epsilon, scene%method%tolerance)
+               f = floquet_from_trace(traces(j), scene%epsilon, scene%method%tolerance, scene%model%period())
             end if
             v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second, a, &
                              need=need)
@@ -607,7 +609,8 @@ contains
          buffer(1:1) = new_line("a")
          pos = 1
       end if
-      call verdict_lines(columns, alpha, betas, traces, scene%epsilon, scene%method%tolerance, statuses, physical, &
+      call verdict_lines(columns, alpha, betas, traces, period_damping(scene%epsilon, scene%model%period()), &
+                         scene%method%tolerance, statuses, physical, &
                          amplitudes, format_es(alpha, 17), buffer, pos, beta_texts)
       text = buffer(1:pos)
    end subroutine verdict_row_text

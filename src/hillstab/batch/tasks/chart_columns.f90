@@ -22,7 +22,7 @@ module hillstab_batch_tasks_chart_columns
       err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_core_text, only: real_text, integer_text, put_es
-   use hillstab_hill_model, only: hill_model_t, hill_point_t, model_description
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, model_description, model_equation_text
    use hillstab_hill_coefficient, only: sampling_name
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict, largest_multiplier_modulus, &
@@ -134,7 +134,7 @@ contains
       damped = scene%epsilon > 0.0_wp
       pendulum = scene%model%is_pendulum()
       if (damped) then
-         stable = "1 when |S1| < 2 cosh(epsilon) (all multipliers of x inside the unit circle)"
+         stable = "1 when |S1| < "//damped_threshold(scene)//" (all multipliers of x inside the unit circle)"
       else
          stable = "1 when |S| < 2"
       end if
@@ -165,7 +165,8 @@ contains
       table(col_stable) = chart_column("stable", "", stable, style_flag, need_verdict, placeholder=-1.0_wp)
       table(col_lambda_max) = chart_column("lambda_max", "", "largest |multiplier| of x per radial period", &
          style_e11, need_growth, placeholder=-1.0_wp)
-      table(col_mu) = chart_column("mu", "", "Floquet exponent ln(lambda_max)/2 per unit tau", style_e11, need_growth)
+      table(col_mu) = chart_column("mu", "", "Floquet exponent ln(lambda_max)/"//period_text(scene)//" per unit tau", &
+                                   style_e11, need_growth)
       table(col_log10_abs_s) = chart_column("log10_abs_S", "", "log10|S|, exact also where S overflows", style_e11, &
          need_trace, placeholder=-999.0_wp)
       table(col_overflow) = chart_column("overflow", "", "1 when |S| > 1e300", style_flag, need_trace, &
@@ -307,7 +308,7 @@ contains
          return
       end if
       tolerance = real_text(scene%method%tolerance)
-      threshold = "|S| = 2 cosh(epsilon)"
+      threshold = "|S| = "//damped_threshold(scene)
       if (.not. scene%epsilon > 0.0_wp) threshold = "|S| = 2"
       select case (columns%table(k)%accuracy)
       case (accuracy_verdict)
@@ -662,7 +663,7 @@ contains
       end if
       if (allocated(error)) deallocate (error)
       if (inaccurate(1) .and. present(status)) status = status_roundoff
-      f = floquet_from_trace(tr(1), damping, scene%method%tolerance)
+      f = floquet_from_trace(tr(1), damping, scene%method%tolerance, scene%model%period())
    end subroutine evaluate_point
 
    !> Count the failed points of a task and name the first: err_points_failed, after the
@@ -765,13 +766,36 @@ contains
       end if
    end function point_amplitude
 
+   !> The model's period as the header writes it in a formula: 2, or P = 4.0's value.
+   function period_text(scene) result(text)
+      type(scene_t), intent(in) :: scene  !! the scene
+      character(len=:), allocatable :: text
+      if (scene%model%period() == 2.0_wp) then
+         text = "2"
+      else
+         text = real_text(scene%model%period())
+      end if
+   end function period_text
+
+   !> The stability threshold of a damped scene: 2 cosh(epsilon), 2 cosh(epsilon P/2) for a
+   !> model of period P ≠ 2 (its value of x loses εP/2 of ln|λ| a period).
+   function damped_threshold(scene) result(text)
+      type(scene_t), intent(in) :: scene  !! the scene
+      character(len=:), allocatable :: text
+      if (scene%model%period() == 2.0_wp) then
+         text = "2 cosh(epsilon)"
+      else
+         text = "2 cosh(epsilon P/2), P = "//real_text(scene%model%period())
+      end if
+   end function damped_threshold
+
    !> Header lines common to every task: version, source, the effective scene, the model.
    function common_header(scene) result(lines)
       type(scene_t), intent(in) :: scene  !! the scene
       character(len=:), allocatable :: lines(:)
       character(len=:), allocatable :: model_text, common(:)
       model_text = model_description(scene%model)
-      common = scene_header(scene, "hillstab "//version_string//": x'' + Q(tau) x = 0, period 2 in tau", [model_text])
+      common = scene_header(scene, "hillstab "//version_string//": "//model_equation_text(scene%model), [model_text])
       if (scene%physical) then
          lines = stacked(common, physical_header(scene))
       else
