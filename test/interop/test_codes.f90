@@ -4,7 +4,8 @@
 !> (src/hillstab/interop/legacy.f90, legacy_external.f90) against the model table
 !> (hillstab_hill_models), the method table (hillstab_integrate_monodromy) and the
 !> sampling table (hillstab_hill_coefficient); and the header's HILLSTAB_VERSION_* macros
-!> against `version_string` (hillstab_core_kinds) and the version of fpm.toml. Paths are relative to the worktree root,
+!> against `version_string` (hillstab_core_kinds) and the version of fpm.toml; the guide's
+!> table of models (docs/guide/model.md) against the model table. Paths are relative to the worktree root,
 !> the directory `fpm test` runs in.
 module test_codes
    use hillstab_core_text, only: lower_case
@@ -37,7 +38,8 @@ contains
          new_unittest("f77_codes", f77_codes), &
          new_unittest("c_header_version", c_header_version), &
          new_unittest("c_header_batch_enums", c_header_batch_enums), &
-         new_unittest("citation_in_step", citation_in_step)])
+         new_unittest("citation_in_step", citation_in_step), &
+         new_unittest("guide_lists_every_model", guide_lists_every_model)])
    end function collect_codes
 
    !> The whole file as one lower-case line (comment markers and line ends as blanks).
@@ -281,4 +283,39 @@ contains
             index(text, " "//name//" = "//integer_text(code)//" ") > 0, name//" = "//integer_text(code))
       end subroutine expect
    end subroutine c_header_batch_enums
+   !> The table of models on docs/guide/model.md: its rows "| `name` | code | ..." name
+   !> exactly the registry's models, each with its code, in the order of the codes.
+   subroutine guide_lists_every_model(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: path = "docs/guide/model.md"
+      character(len=1000) :: line
+      character(len=:), allocatable :: name, rest
+      integer :: unit, ios, n, code, close_quote, bar
+      open (newunit=unit, file=path, status="old", action="read", iostat=ios)
+      call check(ctx, ios == 0, "cannot open "//path//" (run the tests from the worktree root)")
+      if (ios /= 0) return
+      n = 0
+      do
+         read (unit, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         if (index(line, "| `") /= 1) cycle
+         close_quote = index(line(4:), "`") + 2
+         if (close_quote <= 3) cycle
+         name = line(4:close_quote)
+         rest = adjustl(line(close_quote + 2:))
+         if (index(rest, "|") /= 1) cycle
+         rest = adjustl(rest(2:))
+         bar = index(rest, "|")
+         if (bar == 0) cycle
+         read (rest(:bar - 1), *, iostat=ios) code
+         if (ios /= 0) cycle  ! another table of the page
+         n = n + 1
+         call check(ctx, model_code_of(name) == n .and. code == n, path//": row "//integer_text(n)//" is model '"// &
+                    name//"' with code "//integer_text(code)//"; the registry's code "//integer_text(n)//" is '"// &
+                    trim(model_names(min(max(n, 1), model_count)))//"'")
+      end do
+      close (unit)
+      call check(ctx, n == model_count, path//" lists "//integer_text(n)//" models, the registry has "// &
+                 integer_text(model_count))
+   end subroutine guide_lists_every_model
 end module test_codes
