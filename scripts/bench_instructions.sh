@@ -8,7 +8,7 @@
 #
 # Runs per version: the full chart as text, the same as binary (so text output costs the
 # difference), the verdict chart (columns 'alpha beta stable') and a 1 x 1 chart (the fixed
-# cost of a run: start, scene, header, file). Prints the table and writes
+# cost of a run: start, scene, header, file), and a Lyapunov map (8 x 8, 200 periods). Prints the table and writes
 # out/bench_instructions.dat. Needs valgrind (scripts/setup.sh valgrind); takes a few minutes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -40,6 +40,12 @@ scene full 300 "" text
 scene binary 300 "" binary
 scene verdict 300 "alpha beta stable" text
 scene tiny 1 "" text
+# a Lyapunov map (the pendulum's tangent dynamics, not the chart's kernel): 8 x 8 points, 200 periods
+cat > "$work/lyapunov.nml" <<NML
+&scene task = 'lyapunov', output = '$work/lyapunov' /
+&series periods = 200 /
+&chart alpha_min = 0.5, alpha_max = 9, n_alpha = 8, beta_min = 0.5, beta_max = 9, n_beta = 8 /
+NML
 
 count() {   # program scene [options]
    local exe=$1 name=$2
@@ -50,13 +56,13 @@ count() {   # program scene [options]
 mkdir -p out
 result=out/bench_instructions.dat
 {
-   echo "# hillstab instructions (callgrind, 1 thread, generic build) of a 300 x 300 auto chart at 1e-10"
+   echo "# hillstab instructions (callgrind, 1 thread, generic build) of a 300 x 300 auto chart at 1e-10 and a lyapunov map"
    echo "# versions: $(git -C "$work/base" log -1 --format='%h') (before) and the working tree (after)"
    echo "# text output = full text - full binary; compute = full binary - 1 x 1 chart"
    echo "# columns: run before after"
 } > "$result.part"
 printf '%-28s %16s %16s %8s\n' run before after ratio
-for run in tiny full binary verdict; do
+for run in tiny full binary verdict lyapunov; do
    # the new program keeps a checkpoint of runs longer than its interval (seconds under
    # valgrind): an interval no run reaches, so that the count is that of a normal run
    b=$(count "$old" "$run")

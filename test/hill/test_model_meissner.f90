@@ -109,7 +109,8 @@ contains
       state = 12345_8
       do i = 1, 45
          do j = 1, 3
-            state = modulo(6364136223846793005_8*state + 1442695040888963407_8, huge(1_8))
+            ! 69069 s + 1 mod 2^31: no product leaves 64 bits (the sanitizer traps signed overflow)
+            state = modulo(69069_8*state + 1_8, 2147483648_8)
             u(j) = real(modulo(state, 1000003_8), wp)/1000003.0_wp
          end do
          n = n + 1

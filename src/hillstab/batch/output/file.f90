@@ -48,6 +48,7 @@ module hillstab_batch_output_file
    private
    public :: output_file_t, open_output, commit_output, discard_output, finish_output, write_header, write_text
    public :: write_records, joined_lines, join_lines, sync_output, lock_output, resume_output, temporary_prefix, &
+      digest_written, &
       claim_output
 
    !> The characters of the suffix of a temporary name (mkstemp's and `random_suffix`'s).
@@ -62,9 +63,12 @@ module hillstab_batch_output_file
       integer(int64) :: bytes = 0                    !! bytes written so far
       integer :: slot = 0                            !! hillstab_batch_run_signals handle
       logical :: binary = .false.                    !! stream file: text header, then raw records
-      !> keep the checksum of every byte written (text files: a run that keeps a checkpoint)
+      !> keep the checksum of every byte written (text files: a run that keeps a checkpoint);
+      !> it is brought up to date from the file when a checkpoint needs it (`digest_written`),
+      !> so that a run that never makes one never reads its bytes twice
       logical :: digesting = .false.
-      type(digest_t) :: digest                       !! the checksum of the bytes written so far
+      type(digest_t) :: digest                       !! the checksum of the first `digested` bytes
+      integer(int64) :: digested = 0                 !! how many bytes `digest` covers
    end type output_file_t
 
 contains
@@ -432,10 +436,6 @@ contains
                file%failure = errno_text()
             else
                file%bytes = file%bytes + len(line) + 1
-               if (file%digesting) then
-                  call digest_update(file%digest, line)
-                  call digest_update(file%digest, new_line("a"))
-               end if
             end if
          end if
       end if
@@ -622,6 +622,7 @@ contains
       if (present(digest)) then
          file%digesting = .true.
          call digest_file(data_path, bytes, file%digest, why)
+         file%digested = bytes
          if (allocated(why)) then
             call fail_resume(why)
             return
@@ -665,12 +666,32 @@ contains
       end subroutine fail_resume
    end subroutine resume_output
 
+   !> Bring the checksum of a digesting file up to its `bytes` bytes, reading what was
+   !> written since the last call back from the file (call after `sync_output`, so that every
+   !> byte is in it): what a checkpoint records. `cause` says why the file could not be read.
+   subroutine digest_written(file, cause)
+      type(output_file_t), intent(inout) :: file  !! the file being written
+      character(len=:), allocatable, intent(out) :: cause  !! why its bytes could not be read
+      if (.not. file%digesting .or. file%digested >= file%bytes) return
+      call digest_range(file%temp_path, file%digested, file%bytes, file%digest, cause)
+      if (.not. allocated(cause)) file%digested = file%bytes
+   end subroutine digest_written
+
    !> The checksum of the first `bytes` bytes of the file `path` (read in pieces of 1 MiB);
    !> `cause` says why it could not be read.
    subroutine digest_file(path, bytes, digest, cause)
       character(len=*), intent(in) :: path
       integer(int64), intent(in) :: bytes
       type(digest_t), intent(out) :: digest
+      character(len=:), allocatable, intent(out) :: cause
+      call digest_range(path, 0_int64, bytes, digest, cause)
+   end subroutine digest_file
+
+   !> Feed the bytes first + 1 … bytes of the file `path` to `digest`.
+   subroutine digest_range(path, first, bytes, digest, cause)
+      character(len=*), intent(in) :: path
+      integer(int64), intent(in) :: first, bytes
+      type(digest_t), intent(inout) :: digest
       character(len=:), allocatable, intent(out) :: cause
       integer, parameter :: piece = 1048576
       character(len=:), allocatable :: buffer
@@ -683,8 +704,8 @@ contains
          cause = "cannot read it: "//trim(message)
          return
       end if
-      allocate (character(len=int(min(int(piece, int64), max(bytes, 1_int64)))) :: buffer)
-      at = 0
+      allocate (character(len=int(min(int(piece, int64), max(bytes - first, 1_int64)))) :: buffer)
+      at = first
       do while (at < bytes)
          n = min(int(len(buffer), int64), bytes - at)
          read (unit, pos=at + 1, iostat=ios, iomsg=message) buffer(:n)
@@ -696,7 +717,7 @@ contains
          at = at + n
       end do
       close (unit)
-   end subroutine digest_file
+   end subroutine digest_range
 
    !> `n` characters from [A-Za-z0-9], unpredictable (getrandom; the clock and the process
    !> id should it fail, when a name taken only costs another try).

@@ -51,7 +51,7 @@ module hillstab_batch_run_units
    use hillstab_core_text, only: integer_text
    use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output, scene_namelist, output_path
    use hillstab_batch_output_file, only: output_file_t, write_text, commit_output, discard_output, sync_output, lock_output, &
-      resume_output, temporary_prefix, joined_lines, claim_output
+      resume_output, temporary_prefix, joined_lines, claim_output, digest_written
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
    use hillstab_batch_output_checkpoint, only: checkpoint_options_t, checkpoint_state_t, checkpoint_directory, checkpoint_data, &
       find_checkpoint, make_checkpoint, save_checkpoint_state, remove_checkpoint, remove_stale_temporary, &
@@ -451,9 +451,17 @@ contains
       type(batch_t), intent(inout) :: batch
       type(error_t), allocatable, intent(inout) :: error
       type(error_t), allocatable :: cause
+      character(len=:), allocatable :: why
       logical :: busy
       call sync_output(batch%file, error)
       if (allocated(error)) return
+      call digest_written(batch%file, why)
+      if (allocated(why)) then
+         call checkpoint_note(batch%options, "cannot read back '"//batch%file%temp_path//"' for the checkpoint's "// &
+                              "checksum: "//why//"; the run goes on without a checkpoint")
+         batch%checkpointing = .false.
+         return
+      end if
       batch%state%units_done = int((batch%done + batch%unit_size - 1)/batch%unit_size)
       batch%state%bytes = batch%file%bytes
       batch%state%digest = digest_value(batch%file%digest)
