@@ -177,3 +177,35 @@ def test_read_output_text_and_binary(cli):
     # 17 digits read back to the same double
     assert same_bits(text["S"], binary["S"]) and same_bits(text["beta"], binary["beta"])
     assert text.scene.replace("'text'", "'binary'").replace("'t'", "'b'") == binary.scene
+
+
+def test_fourier_model_equals_program(cli):
+    # a model with data: the scene's &fourier group and Model.set give the same file to the bit
+    m = hillstab.Model("fourier").set("cos", [0.5, 0.0, 0.25]).set("sin", [0.0, 0.3])
+    grid = ((0.0, 6.0, 8), (-2.0, 20.0, 30))
+    cli.run("fourier", chart_scene("fourier", grid, model="fourier", epsilon=0.1)
+            + "&fourier cos = 0.5, 0, 0.25, sin = 0, 0.3 /\n")
+    out = hillstab.read_output(cli.path("fourier_chart.bin"))
+    c = hillstab.chart(grid[0], grid[1], model=m, epsilon=0.1,
+                       values=tuple(FILE_VALUES[k] for k in out.columns if k in FILE_VALUES))
+    assert same_bits(out["status"], c.status)
+    for column in out.columns:
+        if column in FILE_VALUES:
+            assert same_bits(out[column], getattr(c, FILE_VALUES[column])), column
+
+
+def test_fourier_mathieu_limit_and_period():
+    # f = -cos(pi tau) is Mathieu's coefficient: S agrees to the tolerance
+    rng = np.random.default_rng(11)
+    alpha = rng.uniform(0.0, 20.0, 200)
+    beta = rng.uniform(-10.0, 60.0, 200)
+    fourier = hillstab.Model("fourier").set("cos", [-1.0])
+    s_fourier = hillstab.trace(alpha, beta, model=fourier, tolerance=1e-12)
+    s_mathieu = hillstab.trace(alpha, beta, model="mathieu", tolerance=1e-12)
+    assert np.all(np.abs(s_fourier - s_mathieu) <= 1e-9 * np.maximum(1.0, np.abs(s_mathieu)))
+    # over a period 4 the exponent is ln|lambda_max| / 4, and damping costs epsilon P/2 a period
+    slow = hillstab.Model("fourier").set("cos", [1.0, 0.3]).set("period", [4.0])
+    r = hillstab.floquet(np.full(50, 0.8), np.linspace(0.2, 3.0, 50), model=slow, epsilon=0.05)
+    assert np.allclose(r.exponent, r.log_moduli[:, 0] / 4.0, rtol=0, atol=1e-15)
+    inside = np.abs(r.trace) < 2
+    assert inside.any() and np.allclose(r.lambda_max[inside], np.exp(-0.1), rtol=1e-15)

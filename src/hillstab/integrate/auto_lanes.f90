@@ -72,6 +72,7 @@ contains
       real(wp), dimension(lane_block) :: su2, sv2, su2w, sv2w, su2a, sv2a
       ! and over a whole period (no symmetry) the cross terms ∫uv, ∫|uv|, ∫uv c₁w, ∫|uv c₁w|
       real(wp), dimension(lane_block) :: suv, suv_abs, suvw, suva
+      logical :: whole  ! the window is the whole period (the cross terms are summed)
       real(wp), parameter :: square_unit = 2.0_wp**(-256)
       real(wp) :: z_max, uu, vv, sw, level, values_limit
       real(wp) :: h, w1, w2, w3, q1, q2, q3, d2, d3, x3, y1, y2, y3, ls, e11, e12, e21, e22, a, b, big
@@ -87,6 +88,7 @@ contains
       log_peak = 0.0_wp
       peak = 2.0_wp
       su2 = 0.0_wp; sv2 = 0.0_wp; su2w = 0.0_wp; sv2w = 0.0_wp; su2a = 0.0_wp; sv2a = 0.0_wp
+      whole = .not. mesh%half
       suv = 0.0_wp; suv_abs = 0.0_wp; suvw = 0.0_wp; suva = 0.0_wp
       do i = 1, mesh%n_steps
          h = mesh%h(i)
@@ -181,7 +183,7 @@ contains
             su2w(l) = su2w(l) + uu*sw; sv2w(l) = sv2w(l) + vv*sw
             su2a(l) = su2a(l) + uu*abs(sw); sv2a(l) = sv2a(l) + vv*abs(sw)
          end do
-         if (.not. mesh%half) then
+         if (whole) then
             do l = 1, nl
                uu = h*(square_unit*p11(l))*(square_unit*p12(l))
                sw = c1(l)*w2

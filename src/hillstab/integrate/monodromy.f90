@@ -398,6 +398,7 @@ contains
       integer, allocatable :: open(:)
       integer :: j, wanted
       logical :: paper_side
+      real(wp) :: decay
       failed = .false.
       if (present(inaccurate)) inaccurate = .false.
       work = work_stats_t()
@@ -414,6 +415,8 @@ contains
          ! first what the range of q decides, then the screening pass; the points they settle
          ! are done, the others computed in full
          ! (an invalid point settles nothing: the full computation below reports it)
+         ! the damping of one period, as the verdicts take it
+         decay = period_damping(row%epsilon, model%period())
          call check_batch(model, row%alpha, row%epsilon, betas, point_error)
          if (allocated(point_error)) then
             deallocate (point_error)
@@ -437,8 +440,7 @@ contains
                if (.not. allocated(point_error)) then
                   do j = 1, size(open)
                      traces(open(j)) = screened(j)
-                     settled(open(j)) = verdict_is_certain(screened(j), period_damping(row%epsilon, model%period()), &
-                                                             method%tolerance, wanted, &
+                     settled(open(j)) = verdict_is_certain(screened(j), decay, method%tolerance, wanted, &
                                                            paper_side)
                   end do
                end if
@@ -455,8 +457,7 @@ contains
                      cycle
                   end if
                   traces(open(j))%error_estimate = screen_safety*traces(open(j))%error_estimate
-                  settled(open(j)) = verdict_is_certain(traces(open(j)), period_damping(row%epsilon, model%period()), &
-                                                          method%tolerance, wanted, &
+                  settled(open(j)) = verdict_is_certain(traces(open(j)), decay, method%tolerance, wanted, &
                                                         paper_side)
                end do
             end if
