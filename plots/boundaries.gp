@@ -5,7 +5,8 @@
 #   gnuplot -e "file='a_chart.dat'; curves='b_boundaries.dat'; out='x.png'" PATH/plots/boundaries.gp
 # Parameters: file (a chart), curves (a boundaries file with the columns kind and coexist,
 # task boundaries by an exact method), out (the image).
-# From the headers: the ranges (the chart's alpha, beta), the methods and the model (title).
+# From the headers: the ranges (the chart's alpha, beta), the methods and the model (title,
+# axis labels).
 load system("dirname '".ARG0."'")."/columns.gp"
 if (!exists("file")) file = 'out/boundaries_chart_chart.dat'
 if (!exists("curves")) curves = 'out/boundaries_exact_boundaries.dat'
@@ -18,11 +19,19 @@ set cbrange [0:1]
 unset colorbox
 set xrange [low(file, 'alpha'):high(file, 'alpha')]
 set yrange [low(file, 'beta'):high(file, 'beta')]
-set xlabel "α = aπ²/ρ"
-set ylabel "β = gπ²/(ρω²)"
+# the axes: the pendulum's physical meaning, or Strutt's (drive strength, mean stiffness)
+if (scene_value(file, 'model') eq 'elastic') {
+   set xlabel "α = aπ²/ρ"
+   set ylabel "β = gπ²/(ρω²)"
+} else {
+   set xlabel "α  (drive strength)"
+   set ylabel "β  (mean stiffness)"
+}
 set key at graph 0.02, graph 0.98 left top Left reverse box opaque samplen 3 font ",10"
-set title sprintf("Model %s: %s (light blue = stable), transition curves by %s", \
-   scene_value(file, 'model'), method_title(file), method_name(curves)) noenhanced
+curves_by_ = method_name(curves)
+if (strstrt(curves_by_, 'every curve by ') == 1) curves_by_ = curves_by_[16:*]
+set title sprintf("Model %s: %s (light blue = stable)\ntransition curves by %s", \
+   scene_value(file, 'model'), method_title(file), curves_by_) noenhanced
 plot named(file) using 'alpha':'beta':'stable' with image notitle, \
      named(curves) using 'alpha':(column('kind') > 0 && column('coexist') == 0 ? column('beta') : 1/0) with lines lw 2 lc "#1f4e9c" title "S = +2, a_n, b_n (periodic)", \
      named(curves) using 'alpha':(column('kind') > 0 && column('coexist') == 1 ? column('beta') : 1/0) with lines lw 2 dt 2 lc "#1f4e9c" title "S = +2, a_n = b_n: zero-width tongue", \

@@ -266,8 +266,13 @@ contains
             size1 = abs(m21)*sv2a(l) + abs(m12)*su2a(l) + abs(x3)*suva(l)
             level = merge(coefficient_roundings_c0*d0, 0.0_wp, d0 > cancellation_limit*size0) + &
                     merge(coefficient_roundings_c1*d1, 0.0_wp, d1 > cancellation_limit*size1)
+            ! beyond |S| = 1/cancellation_limit the sensitivity cancels below the limit by
+            ! growth alone (terms of order S², result of order S): what is left is the step
+            ! sums' error (`coefficient_level`)
+            if (size_s > 1.0_wp/cancellation_limit) level = 0.0_wp
             special(l) = special(l) .or. .not. level < 2.0_wp**400
-            floors(l) = roundoff_safety*epsilon(1.0_wp)*root_n*max(1.0_wp, peak(l))/size_s + &
+            ! (`roundoff_level` over the whole period: the amplification √κ)
+            floors(l) = roundoff_safety*epsilon(1.0_wp)*root_n*sqrt(max(1.0_wp, peak(l)))/size_s + &
                         2.0_wp*epsilon(1.0_wp)*phases(l) + epsilon(1.0_wp)*(level*2.0_wp**512)/size_s
          end do
       else
@@ -336,7 +341,7 @@ contains
          trace = trace_from_scaled(p11 + p22, log_scale)
          peak_log = log_peak
          if (peak > 0.0_wp) peak_log = max(log_peak, log(peak) + 2.0_wp*log_scale)
-         floor = roundoff_level(peak_log, trace%log_abs, n_steps, phase)
+         floor = roundoff_level(peak_log, trace%log_abs, n_steps, phase, half=.false.)
          monodromy%m = reshape([p11, p21, p12, p22], [2, 2])
          monodromy%log_scale = log_scale
          floor = floor + coefficient_level(sensitivity, c0, monodromy, trace%log_abs, half=.false.)

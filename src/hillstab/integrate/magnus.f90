@@ -659,7 +659,8 @@ contains
       split = 1
       tr = trace_of(m)
       phase = phase_bound(model, point)
-      noise = roundoff_level(log_peak, tr%log_abs, n_mesh, phase) + coefficient_level(sensitivity, c0, m, tr%log_abs, half)
+      noise = roundoff_level(log_peak, tr%log_abs, n_mesh, phase, half=half) + &
+         coefficient_level(sensitivity, c0, m, tr%log_abs, half)
       stagnated = .false.
       do pass = 1, max_refinements
          if (estimate <= tolerance .and. noise <= tolerance) exit
@@ -681,7 +682,7 @@ contains
          estimate = checked_estimate(difference, previous_difference, ratio, &
                                      ratio*(previous_ratio - 1.0_wp)/(ratio - 1.0_wp))
          tr = trace_of(m)
-         noise = roundoff_level(log_peak, tr%log_abs, split*n_mesh, phase) + &
+         noise = roundoff_level(log_peak, tr%log_abs, split*n_mesh, phase, half=half) + &
                  coefficient_level(sensitivity, c0, m, tr%log_abs, half)
          ! truncation falls by factor^p (at least 16); a difference that no longer falls
          ! by a quarter of that, within a few times the round-off level, is rounding noise

@@ -359,6 +359,8 @@ contains
       type(trace_t) :: tr
       type(error_t), allocatable :: run_error
       real(wp) :: log_condition, eps, log_peak, estimate, noise, phase, coefficient_noise, last_coefficient_noise
+      logical :: half  ! the model's window is half a period (`roundoff_level`)
+      type(hill_window_t) :: window
       integer :: run, loosening
       character(len=200) :: buffer
       stats = work_stats_t()
@@ -386,7 +388,9 @@ contains
       end if
       tr = trace_of(best)
       phase = phase_bound(model, point)
-      call refine(ladder, tr, .false., roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding) &
+      window = model%window(point%alpha)
+      half = window%half
+      call refine(ladder, tr, .false., roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding, half) &
                   + coefficient_noise)
       last_coefficient_noise = coefficient_noise
       estimate = -1.0_wp
@@ -417,12 +421,12 @@ contains
                estimate = trace_distance(trace_of(best), trace_of(trial))
             end if
             tr = trace_of(best)
-            estimate = max(estimate, roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding) &
+            estimate = max(estimate, roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding, half) &
                                      + last_coefficient_noise)
             exit
          end if
          tr = trace_of(trial)
-         noise = roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding) + coefficient_noise
+         noise = roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding, half) + coefficient_noise
          last_coefficient_noise = coefficient_noise
          call refine(ladder, tr, eps <= 1.001_wp*smallest_gsl_epsilon .or. run == max_ladder_runs, noise, &
                      near_floor=eps <= 1.0e3_wp*smallest_gsl_epsilon, contraction=.true.)

@@ -220,6 +220,8 @@ contains
       type(work_stats_t) :: work, part
       type(refinement_t) :: ladder
       real(wp) :: local, log_peak, phase, coefficient_noise
+      logical :: half  ! the model's window is half a period (`roundoff_level`)
+      type(hill_window_t) :: window
       integer :: run, kind
       character(len=160) :: buffer
       kind = rk_dop853
@@ -233,10 +235,14 @@ contains
                            coefficient_noise=coefficient_noise)
          call add_work(work, part)
          if (allocated(error)) exit
-         if (run == 1) phase = phase_bound(model, point)   ! (the model is known valid from here)
+         if (run == 1) then
+            phase = phase_bound(model, point)   ! (the model is known valid from here)
+            window = model%window(point%alpha)
+            half = window%half
+         end if
          tr = trace_of(m)
          call refine(ladder, tr, at_floor=local <= 1.001_wp*tolerance_floor .or. run == max_ladder_runs, &
-                     noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding) &
+                     noise=roundoff_level(log_peak, tr%log_abs, int(part%n_steps), phase, rk_rounding, half) &
                            + coefficient_noise, &
                      near_floor=local <= 1.0e3_wp*tolerance_floor)
          if (ladder%verdict /= refine_more) exit

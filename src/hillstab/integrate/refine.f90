@@ -128,7 +128,11 @@ contains
    !>
    !> Over the whole period (`half` false: a coefficient without the symmetry) the variation
    !> is ∂S/∂q(τ) = −(m₁₂ u² − m₂₁ v² + (m₂₂ − m₁₁) u v) along [0, P], without the factor 2,
-   !> with the cross terms' integrals.
+   !> with the cross terms' integrals. Their step sums are of low order, so the cancellation
+   !> they would show for growing solutions drowns in their error: beyond |S| =
+   !> 1/`cancellation_limit`, where growth alone puts the result below the limit, the level is
+   !> 0 (the phase term covers it, as above); without that, points of |S| ~ 1e19 at β = −500
+   !> had levels of 1e4.
    pure real(wp) function coefficient_level(acc, c0, m, log_abs_s, half) result(level)
       type(sensitivity_t), intent(in) :: acc    !! the integrals over [0, 1]
       real(wp), intent(in) :: c0                !! the constant c₀ of q
@@ -141,6 +145,7 @@ contains
       symmetric = .true.
       if (present(half)) symmetric = half
       level = coefficient_sum(acc, c0, m, symmetric)
+      if (.not. symmetric .and. log_abs_s > log(1.0_wp/cancellation_limit)) level = 0.0_wp
       if (level == 0.0_wp) return
       log_factor = m%log_scale + acc%log_unit - max(0.0_wp, log_abs_s)
       level = epsilon(1.0_wp)*level*exp(min(log_factor, log_huge))
@@ -279,22 +284,34 @@ contains
    !> (rk and gsl both settle 4e-13 to 6e-13 away from the reference there); at β = −1e6,
    !> α → π², 2.6e-12.
    !>
+   !> Over a whole period (`half` false: S = tr Φ, no product of the half-period solutions)
+   !> the amplification is √κ, the size of Φ's entries: at a point of |S| = 2.6e19 (a drive
+   !> with sine terms at β = −500) κ/|S| was 1e19 and the level 1e4, where the methods agree
+   !> to 1e-12 and the extended-precision reference of test suite model_fourier confirms them.
+   !>
    !> `step_rounding` replaces the 0.1 for the Runge–Kutta integrators (rk, gsl), whose steps
    !> round the state itself (y + h Σ bᵢkᵢ, no compensation): one rounding of ε per step at
    !> the full condition. With 0.1 DOP853 at the Mathieu point ν = 226.17754433821787,
    !> β = −193.3961568448847 (S = −3.46e6, κ/|S| = 2e4) settled 2.6e-11 off at local
    !> tolerances 1e-14 and 1e-15 alike, against a level of 5.9e-12 (4.4×); with 1, 6e-11.
-   elemental real(wp) function roundoff_level(log_peak, log_abs_s, n_steps, phase, step_rounding) result(level)
+   elemental real(wp) function roundoff_level(log_peak, log_abs_s, n_steps, phase, step_rounding, half) result(level)
       real(wp), intent(in) :: log_peak   !! ln of the largest `propagator_condition` along the path
       real(wp), intent(in) :: log_abs_s  !! ln|S|
       integer, intent(in) :: n_steps     !! steps of the propagation
       real(wp), intent(in) :: phase      !! bound of the phase or growth over the period (`phase_bound`)
       real(wp), intent(in), optional :: step_rounding  !! factor of the √N term (default `roundoff_safety`)
-      real(wp) :: factor
+      !> the propagation is half a period and S = 2(u v' + u' v) (default), or the whole
+      !> period and S = tr Φ, whose entries carry roundings of the size of Φ itself: √κ
+      logical, intent(in), optional :: half
+      real(wp) :: factor, log_amplification
       factor = roundoff_safety
       if (present(step_rounding)) factor = step_rounding
+      log_amplification = log_peak
+      if (present(half)) then
+         if (.not. half) log_amplification = 0.5_wp*log_peak
+      end if
       level = factor*epsilon(1.0_wp)*sqrt(real(max(n_steps, 1), wp)) &
-              *exp(min(log_peak - max(0.0_wp, log_abs_s), log_huge)) + 2.0_wp*epsilon(1.0_wp)*phase
+              *exp(min(log_amplification - max(0.0_wp, log_abs_s), log_huge)) + 2.0_wp*epsilon(1.0_wp)*phase
    end function roundoff_level
 
    !> |S_a − S_b|/max(1, |S_a|), through ln|S| when S is large or overflows; huge when the
