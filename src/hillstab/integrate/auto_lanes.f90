@@ -3,6 +3,7 @@
 !> vectorised lanes, with each trace's round-off level.
 module hillstab_integrate_auto_lanes
    use hillstab_core_kinds, only: wp
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
    use hillstab_hill_transfer, only: step_functions, cos_taylor, sinc_taylor, trace_t, trace_from_scaled, &
       scaled_matrix_t
    use hillstab_integrate_refine, only: roundoff_level, sensitivity_t, coefficient_level, roundoff_safety, &
@@ -73,6 +74,7 @@ contains
       ! and over a whole period (no symmetry) the cross terms ∫uv, ∫|uv|, ∫uv c₁w, ∫|uv c₁w|
       real(wp), dimension(lane_block) :: suv, suv_abs, suvw, suva
       logical :: whole  ! the window is the whole period (the cross terms are summed)
+      real(wp), parameter :: clamp = 2.0_wp**500  ! largest entry squared in the conditioning
       real(wp), parameter :: square_unit = 2.0_wp**(-256)
       real(wp) :: z_max, uu, vv, sw, level, values_limit
       real(wp) :: h, w1, w2, w3, q1, q2, q3, d2, d3, x3, y1, y2, y3, ls, e11, e12, e21, e22, a, b, big
@@ -201,11 +203,26 @@ contains
             big_max = 0.0_wp
             big_min = huge(1.0_wp)
             do l = 1, nl
-               peak(l) = max(peak(l), p11(l)**2 + p22(l)**2 + 2.0_wp*abs(p12(l)*p21(l)))
                big = max(abs(p11(l)), abs(p12(l)), abs(p21(l)), abs(p22(l)))
                big_max = max(big_max, big)
                big_min = min(big_min, big)
             end do
+            if (big_max < clamp) then
+               do l = 1, nl
+                  peak(l) = max(peak(l), p11(l)**2 + p22(l)**2 + 2.0_wp*abs(p12(l)*p21(l)))
+               end do
+            else
+               ! an entry beyond 2^500 (a growth of more than e^10 a step since the last
+               ! check): its square would overflow; such a lane's condition is infinite, as
+               ! an overflowing square made it, without raising the overflow flag
+               do l = 1, nl
+                  if (max(abs(p11(l)), abs(p12(l)), abs(p21(l)), abs(p22(l))) < clamp) then
+                     peak(l) = max(peak(l), p11(l)**2 + p22(l)**2 + 2.0_wp*abs(p12(l)*p21(l)))
+                  else
+                     peak(l) = ieee_value(peak(l), ieee_positive_inf)
+                  end if
+               end do
+            end if
             if (big_max > 2.0_wp**rescale_exponent .or. big_min < 2.0_wp**(-rescale_exponent)) then
             do l = 1, nl
                big = max(abs(p11(l)), abs(p12(l)), abs(p21(l)), abs(p22(l)))
