@@ -62,7 +62,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug test-python test-sanitize setup setup-build setup-test bench bench-output bench-instructions area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov fuzz check-memory check-scenes check-plots
+.PHONY: run test test-debug test-python test-sanitize setup setup-build setup-test bench bench-fourier bench-output bench-instructions area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov fuzz check-memory check-scenes check-plots
 
 # what each target needs (scripts/setup.sh installs only what is missing)
 setup:
@@ -160,6 +160,15 @@ bench: setup
 	gnuplot plots/bench_series.gp
 	$(FPM) run $(RELEASE) hillstab_bench_boundaries
 	$(FPM) run $(RELEASE) hillstab_bench_fourier
+
+# a chart of the fourier model (3 harmonics, a sine term) against the plain C GSL program
+# (bench/chart_gsl_fourier.c) at equal accuracy, errors against magnus6 at 1e-13
+bench-fourier: setup
+	mkdir -p out build
+	$(CC) -O2 bench/chart_gsl_fourier.c -o build/chart_gsl_fourier -lgsl -lgslcblas -lm
+	$(FPM) build $(RELEASE) >/dev/null
+	python3 scripts/bench_fourier_chart.py "$$($(FPM) run $(RELEASE) \
+	   --runner echo hillstab 2>/dev/null | tail -1)" build/chart_gsl_fourier
 
 area: setup
 	mkdir -p out
