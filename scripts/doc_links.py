@@ -15,8 +15,10 @@ page, an editor): in each file (a directory: its *.md files) every relative link
 `[text](target)`, `![alt](target)`, `[name]: target` and HTML `href`/`src`, outside code
 spans and fenced blocks — must name a file or directory that exists inside the repository,
 and a `#fragment` into a Markdown file (or `#fragment` alone) a heading of it (GitHub's
-anchors: lower case, punctuation dropped, blanks as '-'). Default: README.md, CHANGELOG.md
-and docs/guide.
+anchors: lower case, punctuation dropped, blanks as '-'). A guide page (docs/guide) is also
+read on the site, so its links must be to what the site holds (other guide pages, figures,
+the library's sources outside src/hillstab/batch/), with no #fragment (the site's headings
+have no ids). Default: README.md, CHANGELOG.md and docs/guide.
 Usage: scripts/doc_links.py [DIR]
        scripts/doc_links.py --markdown [FILE|DIR...]
 """
@@ -83,6 +85,23 @@ def markdown_links(path):
     return INLINE.findall(text) + REFERENCE.findall(text) + HTML_LINK.findall(text)
 
 
+GUIDE = os.path.join(ROOT, "docs", "guide")
+
+
+def on_site(target):
+    """Whether a guide page's link target is on the site (scripts/doc_site.py): another guide
+    page, a figure, or a source of the library (the umbrella, or a module outside batch/)."""
+    relative = os.path.relpath(target, ROOT).replace(os.sep, "/")
+    if relative.startswith("docs/guide/") and relative.endswith(".md"):
+        return True
+    if relative.startswith("docs/figures/"):
+        return True
+    if relative == "src/hillstab.f90":
+        return True
+    return (relative.startswith("src/hillstab/") and relative.endswith(".f90")
+            and not relative.startswith("src/hillstab/batch/"))
+
+
 def check_markdown(paths):
     files = []
     for path in paths or ["README.md", "CHANGELOG.md", "docs/guide"]:
@@ -108,6 +127,11 @@ def check_markdown(paths):
                 broken.append(f"{where}: {link} (outside the repository)")
             elif not os.path.exists(target):
                 broken.append(f"{where}: {link} (no such file)")
+            elif os.path.dirname(path) == GUIDE and not on_site(target):
+                broken.append(f"{where}: {link} (not on the site: a guide page links pages, figures and "
+                              "the library's sources; name other files as paths)")
+            elif os.path.dirname(path) == GUIDE and parts.fragment:
+                broken.append(f"{where}: {link} (the site's headings have no ids: link the page)")
             elif parts.fragment and target.endswith(".md"):
                 if target not in cache:
                     cache[target] = anchors(target)
