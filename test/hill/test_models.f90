@@ -49,7 +49,7 @@ contains
       type(elastic_model_t) :: elastic
       type(mathieu_model_t) :: mathieu
       integer :: k
-      call check(ctx, model_count == 5, "five models")
+      call check(ctx, model_count == 6, "six models")
       call check(ctx, model_code(elastic) == 1 .and. model_code(mathieu) == 2, "codes of the C API: elastic 1, mathieu 2")
       do k = 1, model_count
          call new_model(model_names(k), model, error)
@@ -71,7 +71,8 @@ contains
       call check(ctx, allocated(error), "code 0 refused")
       call model_from_code(model_count + 1, model, error)
       call check(ctx, allocated(error), "code past the last refused")
-      call check(ctx, model_names_text() == "elastic, mathieu, meissner, fourier or sampled", "names text: "//model_names_text())
+      call check(ctx, model_names_text() == "elastic, mathieu, meissner, fourier, sampled or modulated", &
+                 "names text: "//model_names_text())
       call check(ctx, model_description(elastic) == "model: elastic, Q(tau) = (beta - alpha cos(pi tau))/"// &
          "(1 - (alpha/pi^2) cos(pi tau)), eq. (25)", "elastic header line")
       call check(ctx, model_description(mathieu) == "model: mathieu, q(tau) = beta - alpha cos(pi tau), "// &
@@ -83,15 +84,18 @@ contains
    end subroutine table
 
 
-   !> c₀ + c₁ w(τ) = q(τ) for every model, with damping.
+   !> c₀ + c₁ w(τ) = q(τ) for every model, with damping; for a model with an offset
+   !> (`has_offset`) the rest v = q − c₀ − c₁ w is the same at every β and lies in its range.
    subroutine split_is_q(ctx)
       type(test_context_t), intent(inout) :: ctx
       class(hill_model_t), pointer :: model
-      real(wp) :: c0, c1, tau, q, w(1)
+      real(wp) :: c0, c1, tau, q, w(1), v, v_first(0:10), v_min, v_max, scale
       integer :: kind, i, j, e, n
       do kind = 1, model_count
          model => model_of_code(kind)
          do i = 1, size(alphas)
+            if (.not. model%alpha_valid(alphas(i))) cycle
+            call model%offset_range(alphas(i), v_min, v_max)
             do j = 1, size(betas)
                do e = 1, size(epsilons)
                   call model_split(model, alphas(i), betas(j), epsilons(e), c0, c1)
@@ -99,8 +103,21 @@ contains
                      tau = 0.1_wp*n
                      q = hill_coefficient(model, hill_point_t(alphas(i), betas(j), epsilons(e)), tau)
                      call model%shapes(alphas(i), [tau], w)
-                     call check(ctx, c0 + c1*w(1), q, rel=1.0e-12_wp, &
-                        abs=1.0e-12_wp*max(1.0_wp, abs(c0), abs(c1)), message=model%name()//" split")
+                     scale = max(1.0_wp, abs(c0), abs(c1), abs(v_min), abs(v_max))
+                     if (.not. model%has_offset()) then
+                        call check(ctx, c0 + c1*w(1), q, rel=1.0e-12_wp, abs=1.0e-12_wp*scale, &
+                                   message=model%name()//" split")
+                        cycle
+                     end if
+                     v = q - c0 - c1*w(1)
+                     call check(ctx, v >= v_min - 1.0e-12_wp*scale .and. v <= v_max + 1.0e-12_wp*scale, &
+                                model%name()//" offset inside its range")
+                     if (j == 1 .and. e == 1) then
+                        v_first(n) = v
+                     else
+                        call check(ctx, v, v_first(n), abs=1.0e-12_wp*scale, &
+                                   message=model%name()//" offset independent of beta")
+                     end if
                   end do
                end do
             end do
@@ -164,7 +181,7 @@ contains
       end do
    end subroutine shape_root_mean_quadrature
 
-   !> The two pieces of method formula are q(0) and q(1) (the paper's sampling (28)).
+   !> The two pieces of method formula are q(0) and q(P/2) (the paper's sampling (28)).
    subroutine two_pieces_are_q0_q1(ctx)
       type(test_context_t), intent(inout) :: ctx
       class(hill_model_t), pointer :: model
@@ -180,8 +197,8 @@ contains
                   call model%two_piece_values(point%alpha, point%beta, point%epsilon, first, second)
                   call check(ctx, first, hill_coefficient(model, point, 0.0_wp), rel=1.0e-12_wp, abs=1.0e-12_wp, &
                      message=model%name()//" piece on [0, 1)")
-                  call check(ctx, second, hill_coefficient(model, point, 1.0_wp), rel=1.0e-12_wp, abs=1.0e-12_wp, &
-                     message=model%name()//" piece on [1, 2)")
+                  call check(ctx, second, hill_coefficient(model, point, 0.5_wp*model%period()), rel=1.0e-12_wp, &
+                     abs=1.0e-12_wp, message=model%name()//" piece on the second half period")
                end do
             end do
          end do

@@ -15,7 +15,8 @@
 module hillstab_hill_coefficient
    use hillstab_core_kinds, only: wp
    use hillstab_core_text, only: name_position, alternatives_text
-   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_coefficient, segment_average, model_split
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_coefficient, segment_average, model_split, &
+      constant_part_size
    use hillstab_hill_model_elastic, only: in_physical_domain, one_minus_alpha_over_pi2
    implicit none
    private
@@ -68,12 +69,15 @@ contains
    !> It sets the part of the round-off level of S that no integrator can remove: Q is
    !> computed from rounded constants (1 − α/π², α/π², β − π², π²), a systematic relative
    !> error of a few ε that moves the phase by about ε Φ (hillstab_integrate_refine `roundoff_level`).
+   !> An offset v of the split (`has_offset`) counts with |c₀| (√|c₀ + v| ≤ √(|c₀| + max|v|)),
+   !> and a period P other than 2 scales Φ by P/2.
    elemental real(wp) function phase_bound(model, point) result(phase)
       class(hill_model_t), intent(in) :: model  !! the model
       type(hill_point_t), intent(in) :: point   !! α, β, ε
       real(wp) :: c0, c1
       call model_split(model, point%alpha, point%beta, point%epsilon, c0, c1)
-      phase = coefficient_phase(c0, c1, model%shape_root_mean(point%alpha))
+      phase = 0.5_wp*model%period()* &
+         coefficient_phase(constant_part_size(model, point%alpha, c0), c1, model%shape_root_mean(point%alpha))
    end function phase_bound
 
    !> `phase_bound` from q = c₀ + c₁ w and ∫₀¹ √|w| dτ: 2 (√|c₀| + √|c₁| shape_root).

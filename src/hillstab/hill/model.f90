@@ -33,7 +33,7 @@ module hillstab_hill_model
    public :: harmonics_none, harmonics_infinite
    public :: hill_coefficient, hill_coefficient_before, segment_average, model_split, damping_shift, model_description
    public :: window_piece_end, model_equation_text
-   public :: coefficient_range, model_coefficient_range
+   public :: coefficient_range, model_coefficient_range, widen_by_offset, constant_part_size
    public :: check_point, check_alpha, check_batch, max_magnitude
 
    !> Hill's method does not apply to the model (its transition curves come from elsewhere).
@@ -106,7 +106,7 @@ module hillstab_hill_model
       procedure(coefficient_interface), deferred :: coefficient
       !> exact mean of Q over [τ_a, τ_b] without damping
       procedure(segment_mean_interface), deferred :: segment_mean
-      !> Q = c₀ + c₁ w(τ) with w independent of β, without damping
+      !> Q = c₀ + c₁ w(τ) (+ v(τ), `has_offset`) with w and v independent of β, without damping
       procedure(split_interface), deferred :: split
       !> w(τ) at many τ
       procedure(shapes_interface), deferred :: shapes
@@ -123,6 +123,8 @@ module hillstab_hill_model
       procedure :: period => period_two
       procedure :: window => even_half_window
       procedure :: shape_root_mean => shape_root_bound
+      procedure :: has_offset => no_offset
+      procedure :: offset_range => zero_offset_range
       procedure :: shapes_from_half_sines => shapes_at_half_sines
       procedure :: mesh_kappa => uniform_mesh
       procedure :: auto_difficulty => amplitude_difficulty
@@ -165,7 +167,8 @@ module hillstab_hill_model
          real(wp), intent(in) :: tau_a, tau_b     !! segment ends, tau_a < tau_b
       end function segment_mean_interface
 
-      !> Q = c₀ + c₁ w(τ) at (α, β), w independent of β, without damping.
+      !> Q = c₀ + c₁ w(τ) at (α, β), w independent of β, without damping (plus the offset
+      !> v(τ), also independent of β, for a model that `has_offset`).
       elemental subroutine split_interface(self, alpha, beta, c0, c1)
          import :: hill_model_t, wp
          class(hill_model_t), intent(in) :: self  !! the model
@@ -278,6 +281,25 @@ contains
       call self%shape_range(alpha, w_min, w_max)
       mean = sqrt(max(abs(w_min), abs(w_max)))
    end function shape_root_bound
+
+   !> Q = c₀ + c₁ w(τ) + v(τ) with an offset v ≠ 0 (independent of β, like w): false unless
+   !> the model says so. Method auto's shared meshes carry w only, so that it computes such
+   !> a model's points one by one (adaptive Magnus-6); the ranges and the round-off levels
+   !> of every method take v into account through `offset_range`.
+   elemental logical function no_offset(self)
+      class(hill_model_t), intent(in) :: self  !! the model
+      no_offset = .false.
+   end function no_offset
+
+   !> Bounds of the offset v over the period (v_min ≤ v ≤ v_max): 0 and 0 unless the model
+   !> `has_offset`.
+   elemental subroutine zero_offset_range(self, alpha, v_min, v_max)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha            !! α
+      real(wp), intent(out) :: v_min, v_max    !! bounds of v
+      v_min = 0.0_wp
+      v_max = 0.0_wp
+   end subroutine zero_offset_range
 
    !> w at n points of [0, 1] given by their half-angle sines s = sin(πτ/2) (method auto's
    !> mesh builds those by angle sums): through τ = (2/π) asin s unless the model has a
@@ -522,11 +544,40 @@ contains
       class(hill_model_t), intent(in) :: model  !! the model
       type(hill_point_t), intent(in) :: point   !! α, β, ε
       real(wp), intent(out) :: q_min, q_max     !! bounds of q over the period
-      real(wp) :: c0, c1, w_min, w_max
+      real(wp) :: c0, c1, w_min, w_max, v_min, v_max
       call model_split(model, point%alpha, point%beta, point%epsilon, c0, c1)
       call model%shape_range(point%alpha, w_min, w_max)
       call coefficient_range(c0, c1, w_min, w_max, q_min, q_max)
+      if (model%has_offset()) then
+         call model%offset_range(point%alpha, v_min, v_max)
+         call widen_by_offset(v_min, v_max, q_min, q_max)
+      end if
    end subroutine model_coefficient_range
+
+   !> Bounds of q widened by those of the offset v (`has_offset`): q + v lies in
+   !> [q_min + v_min, q_max + v_max], and a few roundings more.
+   elemental subroutine widen_by_offset(v_min, v_max, q_min, q_max)
+      real(wp), intent(in) :: v_min, v_max       !! bounds of v
+      real(wp), intent(inout) :: q_min, q_max    !! bounds of q, widened
+      real(wp) :: slack
+      slack = 16.0_wp*epsilon(1.0_wp)*max(abs(v_min), abs(v_max))
+      q_min = q_min + v_min - slack
+      q_max = q_max + v_max + slack
+   end subroutine widen_by_offset
+
+   !> |c₀| of a point's split, plus the largest |v| of its offset (`has_offset`): the size of
+   !> the β-independent part of q, in which the round-off levels of the methods count the
+   !> rounding of the constant part (c₀ itself for a model without an offset).
+   elemental real(wp) function constant_part_size(model, alpha, c0) result(size_c0)
+      class(hill_model_t), intent(in) :: model  !! the model
+      real(wp), intent(in) :: alpha             !! α
+      real(wp), intent(in) :: c0                !! c₀ of the point's split (`model_split`)
+      real(wp) :: v_min, v_max
+      size_c0 = abs(c0)
+      if (.not. model%has_offset()) return
+      call model%offset_range(alpha, v_min, v_max)
+      size_c0 = size_c0 + max(abs(v_min), abs(v_max))
+   end function constant_part_size
 
    !> err_invalid_parameter unless α lies in the model's domain, naming the domain and the value.
    pure subroutine check_alpha(model, alpha, error)

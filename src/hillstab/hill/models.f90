@@ -10,7 +10,9 @@
 !> - `mathieu` (2): q(τ) = β − α cos πτ, the paper's Mathieu form (A1) with α playing ν;
 !> - `meissner` (3): Q(τ) = β ± α on the two halves of the period, Meissner's square wave;
 !> - `fourier` (4): Q(τ) = β + α f(τ), f a Fourier series given in the scene (`&fourier`);
-!> - `sampled` (5): Q(τ) = β + α f(τ), f interpolating samples of one period (`&sampled`).
+!> - `sampled` (5): Q(τ) = β + α f(τ), f interpolating samples of one period (`&sampled`);
+!> - `modulated` (6): Q(τ) = (β + k m'')/(1 − k m), m = cos πτ cos(πτ/2), the swing about the
+!>   modulated bounce r = ρ − a cos ωt cos(ωt/2).
 !>
 !>```fortran
 !> class(hill_model_t), allocatable :: model
@@ -27,13 +29,14 @@ module hillstab_hill_models
    use hillstab_hill_model_meissner, only: meissner_model_t
    use hillstab_hill_model_fourier, only: fourier_model_t
    use hillstab_hill_model_sampled, only: sampled_model_t
+   use hillstab_hill_model_modulated, only: modulated_model_t
    implicit none
    private
    public :: model_names, model_count, new_model, model_from_code, model_code, model_names_text
 
    !> The registered models' names, in the order of their codes (code = position).
-   character(len=*), parameter :: model_names(5) = [character(len=16) :: "elastic", "mathieu", "meissner", "fourier", &
-      "sampled"]
+   character(len=*), parameter :: model_names(6) = [character(len=16) :: "elastic", "mathieu", "meissner", "fourier", &
+      "sampled", "modulated"]
    !> Number of models; their codes are 1 … model_count.
    integer, parameter :: model_count = size(model_names)
 
@@ -67,6 +70,7 @@ contains
       case (3); allocate (model, source=meissner_model_t())
       case (4); allocate (model, source=fourier_model_t())
       case (5); allocate (model, source=sampled_model_t())
+      case (6); allocate (model, source=modulated_model_t())
       case default
          call set_error(error, err_invalid_parameter, "unknown model code "//integer_text(code)//" (expected 1 to "// &
             integer_text(model_count)//")")

@@ -98,6 +98,8 @@ contains
       if (.not. all(ieee_is_finite(betas))) return
       if (alpha == 0.0_wp .or. .not. (tolerance > 0.0_wp .and. tolerance < 1.0_wp)) return
       if (.not. model%alpha_valid(alpha)) return
+      ! a model with an offset has no shared meshes (`trace_auto_batch`)
+      if (model%has_offset()) return
       screening = .false.
       if (present(screen)) screening = screen
       if (screening) then
@@ -287,9 +289,19 @@ contains
          stats%n_evaluations = stats%n_evaluations + m
          return
       end if
+      if (model%has_offset()) then
+         ! q = c₀ + c₁ w + v: the shared meshes carry w only, so every point is computed on
+         ! its own by adaptive Magnus-6 (`hand_over`, with no estimate of auto's to beat)
+         if (present(reached)) reached = .true.
+         do j = 1, m
+            call hand_over(j, huge(1.0_wp))
+         end do
+         return
+      end if
       call steps_for_points(base, model, c0s, c1s, ns)
-      ! the phase bound of each point, for its round-off level (hillstab_integrate_refine)
-      phases = coefficient_phase(c0s, c1s, model%shape_root_mean(alpha))
+      ! the phase bound of each point, for its round-off level (hillstab_integrate_refine),
+      ! over the model's period (the bound is stated for the period 2)
+      phases = 0.5_wp*model%period()*coefficient_phase(c0s, c1s, model%shape_root_mean(alpha))
       ! first pass: S_N and S_{N/2} of all points sharing N together, in lanes
       allocate (fine(m), coarse(m), n_coarse(m), pending(m), floors(m), coarse_floors(m), estimates(m), previous(m), &
                 converged(m), handed_over(m))
@@ -480,13 +492,22 @@ contains
          stats%n_evaluations = size(betas)
          return
       end if
+      if (model%has_offset()) then
+         ! no shared meshes for a model with an offset (`trace_auto_batch`): nothing is
+         ! screened, every point goes on to the full computation
+         do j = 1, size(betas)
+            traces(j) = trace_from_scaled(0.0_wp, 0.0_wp)
+            traces(j)%error_estimate = huge(1.0_wp)
+         end do
+         return
+      end if
       if (present(plan)) then
          if (plan%prepared .and. plan%alpha == alpha) cache = plan%cache
       end if
       base = auto_base_steps(model, alpha, auto_screen_tolerance)
       call steps_for_points(base, model, c0s, c1s, ns)
       ns = max(screen_min_steps, ns)
-      phases = coefficient_phase(c0s, c1s, model%shape_root_mean(alpha))
+      phases = 0.5_wp*model%period()*coefficient_phase(c0s, c1s, model%shape_root_mean(alpha))
       call screen_lanes(cache, model, alpha, ns, c0s, c1s, phases, traces, floors, coarse, coarser, stats)
       do j = 1, size(betas)
          ! differences of the order of S itself (values of opposite signs, overflow) count
@@ -663,7 +684,8 @@ contains
 
 
    !> S by Magnus-6 on the auto mesh with exactly n steps on [0, 1] (no error control;
-   !> for calibration, tests and benchmarks). Undamped β (ε = 0).
+   !> for calibration, tests and benchmarks). Undamped β (ε = 0). Not for a model with an
+   !> offset (`has_offset`): the mesh carries w only.
    function fixed_n_trace(model, alpha, beta, n) result(s)
       class(hill_model_t), intent(in) :: model  !! the model
       integer, intent(in) :: n  !! number of Magnus-6 steps on [0, 1]
@@ -674,7 +696,8 @@ contains
       real(wp) :: c0, c1, floor(1)
       call model_split(model, alpha, beta, 0.0_wp, c0, c1)
       call build_mesh(model, alpha, n, mesh)
-      call lane_traces(mesh, [c0], [c1], [coefficient_phase(c0, c1, model%shape_root_mean(alpha))], tr, floor)
+      call lane_traces(mesh, [c0], [c1], [0.5_wp*model%period()*coefficient_phase(c0, c1, model%shape_root_mean(alpha))], &
+                       tr, floor)
       s = tr(1)%value
    end function fixed_n_trace
 end module hillstab_integrate_auto

@@ -163,8 +163,8 @@ contains
       table(col_s) = chart_column("S", "", "trace of the one-period monodromy (with epsilon > 0: S1 of the chi "// &
          "equation (47)); |S| > 1e300 is written as +-1e300 with overflow = 1", style_e17, need_trace)
       table(col_stable) = chart_column("stable", "", stable, style_flag, need_verdict, placeholder=-1.0_wp)
-      table(col_lambda_max) = chart_column("lambda_max", "", "largest |multiplier| of x per radial period", &
-         style_e11, need_growth, placeholder=-1.0_wp)
+      table(col_lambda_max) = chart_column("lambda_max", "", "largest |multiplier| of x per "// &
+         trim(merge("radial period", "period of Q  ", pendulum)), style_e11, need_growth, placeholder=-1.0_wp)
       table(col_mu) = chart_column("mu", "", "Floquet exponent ln(lambda_max)/"//period_text(scene)//" per unit tau", &
                                    style_e11, need_growth)
       table(col_log10_abs_s) = chart_column("log10_abs_S", "", "log10|S|, exact also where S overflows", style_e11, &
