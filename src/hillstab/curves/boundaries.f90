@@ -21,7 +21,8 @@
 !>   (β ≥ −|α| on any curve) to the top of the window, each sign change of S ∓ 2
 !>   refined by Brent's method to tolerance·max(1, |β|). The order of a root is its
 !>   rank among the roots of its kind counted from below (a₀ | b₁ a₁ | b₂ a₂ …), so
-!>   a tongue narrower than the sampling step is missed and shifts the orders above it.
+!>   a tongue narrower than the sampling step is missed and shifts the orders above it —
+!>   unless `narrow` asks for the search of such tongues (the exact roots route does).
 !>
 !>```fortran
 !> type(boundary_check_t) :: check
@@ -249,16 +250,24 @@ contains
 
    !> A β below every transition curve of the model at α: −|α| − 1 for the pencil models
    !> (every curve of a weighted Hill equation lies at β ≥ −|α|), else −max Q(τ; α, β = 0) − 1
-   !> (for Q = β + g the operator −d² − g is ≥ −sup g).
+   !> (for Q = β + g the operator −d² − g is ≥ −sup g), doubled until Q < 0 over the whole
+   !> period there (by the model's range of Q), for a model whose β is a weighted eigenvalue
+   !> (Q = β w + v, w > 0: no solution oscillates where Q < 0 everywhere, and Q grows with β).
    pure real(wp) function beta_floor(model, alpha) result(floor)
       class(hill_model_t), intent(in) :: model  !! the model
       real(wp), intent(in) :: alpha             !! α
       real(wp) :: q_min, q_max
+      integer :: i
       if (model%hill_form() == hill_form_pencil) then
          floor = -abs(alpha) - 1.0_wp
       else
          call model_coefficient_range(model, hill_point_t(alpha, 0.0_wp, 0.0_wp), q_min, q_max)
          floor = -max(q_max, abs(q_min)) - 1.0_wp
+         do i = 1, 40
+            call model_coefficient_range(model, hill_point_t(alpha, floor, 0.0_wp), q_min, q_max)
+            if (q_max < 0.0_wp .or. floor < -1.0e14_wp) exit
+            floor = 2.0_wp*floor
+         end do
       end if
    end function beta_floor
 
@@ -266,8 +275,9 @@ contains
    !> (`curve_route`): Hill's method on the pencil or on the Fourier coefficients (converged
    !> to tolerance·max(1, |β|)), or the roots of S = ±2 by method auto at `tolerance`, refined
    !> by Brent's method from brackets sampled at `n_samples` points over the window (default
-   !> `default_root_samples`; a tongue narrower than a step is missed and shifts the orders
-   !> above it). Ordered by β, each with its route.
+   !> `default_root_samples`; tongues narrower than a step are sought where |S ∓ 2| has a
+   !> local minimum among the samples: `approximate_boundaries`' `narrow`). Ordered by β,
+   !> each with its route.
    subroutine exact_boundaries(model, alpha, beta_min, beta_max, tolerance, curves, error, n_samples)
       class(hill_model_t), intent(in) :: model    !! the model
       real(wp), intent(in) :: alpha               !! α
@@ -301,7 +311,8 @@ contains
          end if
          method = merge(method_formula, method_auto, route == route_closed_form)
          call approximate_boundaries(model, alpha, method_t(method, tolerance=tolerance), beta_min, beta_max, &
-                                     max(samples, 2), tolerance, roots, error, floor=beta_floor(model, alpha))
+                                     max(samples, 2), tolerance, roots, error, floor=beta_floor(model, alpha), &
+                                     narrow=.true.)
          if (allocated(error)) return
          curves = roots_to_curves(roots, tolerance)
          curves%route = route
@@ -336,7 +347,7 @@ contains
    !> The roots of S_method(β) = ±2 in [beta_min, beta_max] for an approximate method
    !> (formula or segments), with their orders, ascending in β.
    subroutine approximate_boundaries(model, alpha, method, beta_min, beta_max, n_samples, tolerance, roots, error, &
-                                     floor)
+                                     floor, narrow)
       class(hill_model_t), intent(in) :: model            !! the model
       real(wp), intent(in) :: alpha          !! α (ν)
       type(method_t), intent(in) :: method   !! method_formula or method_segments
@@ -348,11 +359,18 @@ contains
       !> a β below every curve, where the search starts (default −|α| − 1, right for the
       !> elastic and Mathieu models; `beta_floor` for the others)
       real(wp), intent(in), optional :: floor
+      !> also look for tongues narrower than a sample step (`narrow_pair`): where |S ∓ 2| has
+      !> a local minimum among the samples without a sign change, the extremum of S between
+      !> the neighbouring samples is sought and, where it crosses ±2, both edges are refined
+      logical, intent(in), optional :: narrow
       real(wp) :: low, step, b0, b1, root, residual, targets(2)
       real(wp), allocatable :: f(:, :)
       integer :: n, i, t, count_kind(2), m
+      logical :: look_narrow
       type(approximate_root_t), allocatable :: found(:)
       allocate (roots(0), found(0))
+      look_narrow = .false.
+      if (present(narrow)) look_narrow = narrow
       if (n_samples < 2) then
          call set_error(error, err_invalid_parameter, "approximate boundaries: need at least 2 samples")
          return
@@ -375,6 +393,10 @@ contains
       do i = 0, n - 2
          b0 = sample(i); b1 = sample(i + 1)
          do t = 1, 2
+            if (look_narrow .and. i > 0) then
+               call narrow_pair(i, t)
+               if (allocated(error)) return
+            end if
             if (f(i, t) == 0.0_wp) then
                root = b0; residual = 0.0_wp
             else if (f(i, t)*f(i + 1, t) < 0.0_wp) then
@@ -384,18 +406,100 @@ contains
             else
                cycle
             end if
-            count_kind(t) = count_kind(t) + 1
-            m = count_kind(t)
-            if (root < beta_min .or. root > beta_max) cycle
-            if (t == 1) then   ! a0 | b2 a2 | b4 a4 ...: ranks 1 | 2 3 | 4 5
-               found = [found, approximate_root_t(root, 2, 2*(m/2), merge(0, 1 + mod(m, 2), m == 1), residual)]
-            else               ! b1 a1 | b3 a3 ...: ranks 1 2 | 3 4
-               found = [found, approximate_root_t(root, -2, 2*((m - 1)/2) + 1, 2 - mod(m, 2), residual)]
-            end if
+            call record(t, root, residual)
          end do
       end do
+      ! a narrow pair may lie below a root of the other kind found in the step before
+      call sort_by_beta(found)
       roots = found
    contains
+      !> Count a root of kind t (in ascending β within its kind) and keep it when inside the window.
+      subroutine record(t, root, residual)
+         integer, intent(in) :: t
+         real(wp), intent(in) :: root, residual
+         count_kind(t) = count_kind(t) + 1
+         m = count_kind(t)
+         if (root < beta_min .or. root > beta_max) return
+         if (t == 1) then   ! a0 | b2 a2 | b4 a4 ...: ranks 1 | 2 3 | 4 5
+            found = [found, approximate_root_t(root, 2, 2*(m/2), merge(0, 1 + mod(m, 2), m == 1), residual)]
+         else               ! b1 a1 | b3 a3 ...: ranks 1 2 | 3 4
+            found = [found, approximate_root_t(root, -2, 2*((m - 1)/2) + 1, 2 - mod(m, 2), residual)]
+         end if
+      end subroutine record
+
+      !> A tongue of kind t between samples i − 1 and i + 1 that no sign change shows: where
+      !> f = S ∓ 2 keeps its sign over the three samples and |f| is least at the middle one,
+      !> and the parabola through them dips below half that value (or |f| there is below
+      !> 1/20 of its neighbours'), the extremum of S is sought by golden sections (up to 50,
+      !> stopping at the first value of the other sign); a value of the other sign gives both
+      !> edges by Brent's method, a value of exactly ±2 a double root (a closed tongue).
+      subroutine narrow_pair(i, t)
+         integer, intent(in) :: i, t
+         real(wp), parameter :: golden = 0.38196601125010515_wp
+         real(wp) :: a, b, c, ga, gb, gc, sgn, x, gx, predicted, first, second, best, g_best, root_low, root_high
+         real(wp) :: residual_low, residual_high, value
+         integer :: iteration
+         if (f(i, t) == 0.0_wp .or. f(i - 1, t)*f(i, t) <= 0.0_wp .or. f(i, t)*f(i + 1, t) <= 0.0_wp) return
+         if (.not. (abs(f(i, t)) < abs(f(i - 1, t)) .and. abs(f(i, t)) <= abs(f(i + 1, t)))) return
+         sgn = sign(1.0_wp, f(i, t))
+         a = sample(i - 1); b = sample(i); c = sample(i + 1)
+         ga = sgn*f(i - 1, t); gb = sgn*f(i, t); gc = sgn*f(i + 1, t)
+         ! the least value of the parabola through the three samples (Newton's form)
+         first = (gb - ga)/(b - a)
+         second = ((gc - gb)/(c - b) - first)/(c - a)
+         predicted = gb
+         if (second > 0.0_wp) then
+            x = 0.5_wp*(a + b) - 0.5_wp*first/second
+            predicted = ga + first*(x - a) + second*(x - a)*(x - b)
+         end if
+         if (.not. (predicted < 0.5_wp*gb .or. gb < 0.05_wp*min(ga, gc))) return
+         best = b; g_best = gb
+         do iteration = 1, 50
+            ! golden section on the larger side of the best point
+            if (c - best > best - a) then
+               x = best + golden*(c - best)
+            else
+               x = best - golden*(best - a)
+            end if
+            call shifted_trace(model, alpha, x, method, targets(t), value, error)
+            if (allocated(error)) return
+            gx = sgn*value
+            if (gx <= 0.0_wp) then
+               best = x; g_best = gx
+               exit
+            end if
+            if (gx < g_best) then
+               if (x > best) then
+                  a = best
+               else
+                  c = best
+               end if
+               best = x; g_best = gx
+            else
+               if (x > best) then
+                  c = x
+               else
+                  a = x
+               end if
+            end if
+            if (c - a <= 4.0_wp*epsilon(1.0_wp)*max(1.0_wp, abs(best))) exit
+         end do
+         if (g_best > 0.0_wp) return
+         if (g_best == 0.0_wp) then
+            call record(t, best, 0.0_wp)
+            call record(t, best, 0.0_wp)
+            return
+         end if
+         call brent_root(model, alpha, method, targets(t), sample(i - 1), best, f(i - 1, t), sgn*g_best, &
+                         tolerance*max(1.0_wp, abs(best)), root_low, residual_low, error)
+         if (allocated(error)) return
+         call brent_root(model, alpha, method, targets(t), best, sample(i + 1), sgn*g_best, f(i + 1, t), &
+                         tolerance*max(1.0_wp, abs(best)), root_high, residual_high, error)
+         if (allocated(error)) return
+         call record(t, root_low, residual_low)
+         call record(t, root_high, residual_high)
+      end subroutine narrow_pair
+
       pure real(wp) function sample(j)
          integer, intent(in) :: j
          if (j == n - 1) then
@@ -405,6 +509,23 @@ contains
          end if
       end function sample
    end subroutine approximate_boundaries
+
+   !> Roots in ascending β (insertion sort: the list is nearly sorted already).
+   pure subroutine sort_by_beta(roots)
+      type(approximate_root_t), intent(inout) :: roots(:)  !! the roots, sorted in place
+      type(approximate_root_t) :: held
+      integer :: i, j
+      do i = 2, size(roots)
+         held = roots(i)
+         j = i - 1
+         do while (j >= 1)
+            if (roots(j)%beta <= held%beta) exit
+            roots(j + 1) = roots(j)
+            j = j - 1
+         end do
+         roots(j + 1) = held
+      end do
+   end subroutine sort_by_beta
 
    !> The unstable β intervals inside [lo, hi] for a method, from its sorted roots of
    !> |S| = 2 in [lo, hi]: between consecutive roots (and the ends) the verdict is

@@ -149,8 +149,9 @@ contains
    !> The roots route: S = ±2 by method auto (by the closed form where the model has it),
    !> scanned from below every curve (`beta_floor`) up to a top that holds n roots of each
    !> kind (the samples doubled at every try, up to 200 000, the top raised by half at every
-   !> other, 12 tries); the first n of each kind kept (a tongue narrower than a sample step,
-   !> or closed, is missed and shifts the orders above it).
+   !> other, 12 tries), tongues narrower than a sample step sought between the samples
+   !> (`approximate_boundaries`' `narrow`); the first n of each kind kept (a closed tongue,
+   !> where S only touches ±2, is missed and shifts the orders above it).
    subroutine root_values(model, alpha, n, tol, values, error)
       class(hill_model_t), intent(in) :: model
       real(wp), intent(in) :: alpha, tol
@@ -171,7 +172,7 @@ contains
          if (attempt > 1 .and. mod(attempt, 2) == 1) top = 1.5_wp*top
          call approximate_boundaries(model, alpha, method_t(merge(method_formula, method_auto, &
             model%two_pieces_exact()), tolerance=tol), floor, top, samples, tol, &
-                                     roots, error, floor=floor)
+                                     roots, error, floor=floor, narrow=.true.)
          if (allocated(error)) return
          if (count(roots%trace_sign == 2) >= n .and. count(roots%trace_sign == -2) >= n) exit
       end do

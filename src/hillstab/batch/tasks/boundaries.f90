@@ -1089,15 +1089,16 @@ contains
             n = n + 1; text(n) = "method: every curve by root finding on the closed-form trace (method formula, exact "// &
                "for this model: its two constant pieces are Q itself), Brent's method to tolerance "// &
                real_text(scene%method%tolerance)//" from brackets of "//integer_text(max(grid%n_beta, 2))// &
-               " samples over the beta window (n_beta; tongues narrower than a step can be missed); Q - beta has "// &
+                " samples over the beta window (n_beta) and, where |S -+ 2| has a local minimum between them, its "// &
+               "extremum (tongues narrower than a step); Q - beta has "// &
                "infinitely many harmonics (a jump of Q), where Hill's method converges slowly"
             n = n + 1; text(n) = "branch of the roots of S: 1 = lower, 2 = upper edge of the tongue (the rank among "// &
                "the roots of its kind from below)"
          case default
             n = n + 1; text(n) = "method: every curve by root finding on S: the roots of S = +-2 by method auto "// &
                "(tolerance "//real_text(scene%method%tolerance)//"), Brent's method from brackets of "// &
-               integer_text(max(grid%n_beta, 2))//" samples over the beta window (n_beta; tongues narrower than a "// &
-               "step can be missed)"
+               integer_text(max(grid%n_beta, 2))//" samples over the beta window (n_beta) and, where |S -+ 2| has a "// &
+               "local minimum between them, its extremum (tongues narrower than a step)"
             if (scene%model%drive_harmonic_count() /= 0) then
                text(n) = trim(text(n))//"; Q - beta has infinitely many harmonics (a jump of Q), where Hill's "// &
                   "method converges slowly"
