@@ -300,16 +300,19 @@ contains
       print '(4x,i0,a)', n_points, " points"
    end subroutine exact_methods_against_reference
 
-   !> The first three transition values of each kind (the roots route) at three α: the
-   !> reference S minus ±2 changes sign across [β − δ, β + δ], δ = 1e-9 max(1, |β|).
+   !> The first three transition values of each kind (the roots route) at four α: the
+   !> reference S minus ±2 changes sign across [β − δ, β + δ], δ = 1e-9 max(1, |β|). At
+   !> α = 0.5 the tongue from β = π²/4 (S = +2) opens only at second order in α, far
+   !> narrower than the scan's samples: both its edges must be found (the search between the
+   !> samples), not the next tongue's.
    subroutine transition_values(ctx)
       type(test_context_t), intent(inout) :: ctx
-      real(wp), parameter :: alphas(3) = [1.0_wp, 5.0_wp, 9.0_wp]
+      real(wp), parameter :: alphas(4) = [0.5_wp, 1.0_wp, 5.0_wp, 9.0_wp]
       type(modulated_model_t) :: model
       type(hill_boundary_t), allocatable :: values(:)
       type(error_t), allocatable :: error
       real(xp) :: below, above
-      real(wp) :: delta, target
+      real(wp) :: delta, target, width
       integer :: i, k
       logical :: converged
       do i = 1, size(alphas)
@@ -321,6 +324,14 @@ contains
          call check(ctx, all(values%route == route_roots), "route: the roots of S")
          call check(ctx, count(values%trace_sign == 2) == 3 .and. count(values%trace_sign == -2) == 3, &
                     "three values of each kind")
+         if (i == 1) then
+            call check(ctx, count(values%trace_sign == 2 .and. abs(values%beta - 0.25_wp*pi2()) < 0.01_wp) == 2, &
+                       "both edges of the narrow tongue from pi^2/4 at alpha = 0.5")
+            width = maxval(values%beta, values%trace_sign == 2) - minval(values%beta, values%trace_sign == 2 .and. &
+                                                                          values%beta > 1.0_wp)
+            print '(4x,a,es10.3)', "width of the tongue from pi^2/4 at alpha = 0.5:", width
+            call check(ctx, width > 0.0_wp .and. width < 0.01_wp, "that tongue narrower than the scan's step (about 0.05)")
+         end if
          do k = 1, size(values)
             delta = 1.0e-9_wp*max(1.0_wp, abs(values(k)%beta))
             target = real(values(k)%trace_sign, wp)
