@@ -19,8 +19,8 @@ set cbrange [0:1]
 unset colorbox
 set xrange [low(file, 'alpha'):high(file, 'alpha')]
 set yrange [low(file, 'beta'):high(file, 'beta')]
-# the axes: the pendulum's physical meaning, or Strutt's (drive strength, mean stiffness)
-if (scene_value(file, 'model') eq 'elastic') {
+# the axes: the pendulum's physical meaning (both bounces), or Strutt's (drive strength, mean stiffness)
+if (scene_value(file, 'model') eq 'elastic' || scene_value(file, 'model') eq 'modulated') {
    set xlabel "α = aπ²/ρ"
    set ylabel "β = gπ²/(ρω²)"
 } else {

@@ -80,13 +80,17 @@ cat > meissner.nml <<'NML'
 &scene task='chart', model='meissner', method='magnus6', epsilon=0.1, output='m_meissner' /
 &chart alpha_min=0.5, alpha_max=3, n_alpha=3, beta_min=-1, beta_max=5, n_beta=3 /
 NML
+cat > modulated.nml <<'NML'
+&scene task='boundaries', model='modulated', tolerance=1e-8, output='m_modulated' /
+&chart alpha_min=0.5, alpha_max=3, n_alpha=2, beta_min=0, beta_max=6 /
+NML
 cat > bad.nml <<'NML'
 &scene task='chart', output='m_bad' /
 &chart beta_max = -, /
 NML
 status=0
 for scene in chart chart_segments points coefficient series boundaries lyapunov poincare physical checkpoint resume \
-   fourier sampled meissner bad; do
+   fourier sampled meissner modulated bad; do
    log="$work/$scene.valgrind"
    options=--quiet
    case $scene in

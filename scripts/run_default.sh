@@ -7,7 +7,7 @@
 #   out/fig2.png, out/fig3.png, out/figA1.png, out/figA3.png, out/figA4.png, out/damped.png,
 #   out/boundaries.png, out/fig3_boundaries.png, out/strutt.png (transition curves)
 #   out/lyapunov.png (Lyapunov map), out/poincare.png (Poincare sections)
-#   out/own_pivot.png, out/own_sampled.png, out/meissner.png (other Hill equations)
+#   out/own_pivot.png, out/own_sampled.png, out/meissner.png, out/modulated.png (other Hill equations)
 # HILLSTAB_SCENES=DIR runs the scenes of DIR instead (same names expected).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,7 +20,7 @@ scenes=(default_exact default_paper fig4_points fig2_coefficient
         boundaries_chart boundaries_exact boundaries_paper boundaries_mathieu
         lyapunov_map lyapunov_fig4 poincare_regular poincare_chaotic
         own_pivot_chart own_pivot_boundaries own_sampled_chart own_sampled_boundaries
-        meissner_chart meissner_boundaries)
+        meissner_chart meissner_boundaries modulated_chart modulated_boundaries)
 plots=(default fig2 fig3 figA damped fig4 boundaries fig3_boundaries strutt lyapunov poincare spring_chart)
 
 command -v gnuplot >/dev/null 2>&1 || { echo "run_default: gnuplot not found (run scripts/setup.sh)" >&2; exit 1; }
@@ -69,7 +69,7 @@ for plot in "${plots[@]}"; do
    gnuplot "plots/$plot.gp"
 done
 # Hill equations of other coefficients: each chart under its transition curves
-for pair in own_pivot own_sampled meissner; do
+for pair in own_pivot own_sampled meissner modulated; do
    gnuplot -e "file='out/${pair}_chart_chart.dat'; curves='out/${pair}_boundaries_boundaries.dat'; out='out/$pair.png'" \
       plots/boundaries.gp
 done
@@ -78,5 +78,5 @@ seconds=$(( $(date +%s) - start ))
 echo
 echo "hillstab: scenes run and figures drawn in ${seconds} s"
 echo "  default figure (exact chart beside the paper's): out/default.png"
-echo "  other figures: $(cd out && ls fig*.png damped.png boundaries.png strutt.png onset.png lyapunov.png poincare.png spring_chart.png own_pivot.png own_sampled.png meissner.png | sed 's|^|out/|' | tr '\n' ' ')"
+echo "  other figures: $(cd out && ls fig*.png damped.png boundaries.png strutt.png onset.png lyapunov.png poincare.png spring_chart.png own_pivot.png own_sampled.png meissner.png modulated.png | sed 's|^|out/|' | tr '\n' ' ')"
 echo "  data (gnuplot-ready, header = scene to repeat the run): out/*.dat"
