@@ -50,6 +50,9 @@ NML
 count() {   # program scene [options]
    local exe=$1 name=$2
    shift 2
+   # a new file each time: the two versions write the same path, and a run that replaces a
+   # file counts more instructions than one that writes it anew
+   rm -f "$work/$name"_*.dat
    OMP_NUM_THREADS=1 valgrind --tool=callgrind --callgrind-out-file="$work/cg.out" "$exe" --quiet "$@" \
       "$work/$name.nml" 2>&1 | sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
 }

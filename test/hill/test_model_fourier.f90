@@ -16,8 +16,8 @@ module test_model_fourier
    use hillstab_hill_model_sampled, only: sampled_model_t
    use hillstab_hill_mathieu, only: mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_integrate_monodromy, only: method_t, monodromy_trace, method_auto, method_magnus4, method_magnus6, &
-      method_rk, method_gsl, method_name
+   use hillstab_integrate_monodromy, only: method_t, monodromy_trace, monodromy_trace_batch, method_auto, method_magnus4, &
+      method_magnus6, method_rk, method_gsl, method_name
    use hillstab_curves_hill_method, only: hill_boundary_t
    use hillstab_curves_characteristic, only: characteristic_values
    use hillstab_testing
@@ -47,6 +47,7 @@ contains
          new_unittest("mathieu_characteristic_values", mathieu_characteristic_values), &
          new_unittest("reference_integrator_order", reference_integrator_order), &
          new_unittest("exact_methods_against_reference", exact_methods_against_reference), &
+         new_unittest("auto_chart_grid", auto_chart_grid), &
          new_unittest("sampled_equals_fourier", sampled_equals_fourier), &
          new_unittest("sampled_interpolation_spectral", sampled_interpolation_spectral), &
          new_unittest("transition_values_with_sines", transition_values_with_sines), &
@@ -457,6 +458,79 @@ contains
          call check(ctx, .not. file_exists(out//"_chart.dat"), model//" "//what//": no file written")
       end subroutine refused
    end subroutine bad_scene_input
+
+   !> Method auto over chart grids as the chart task computes them (one row per α,
+   !> `monodromy_trace_batch`: shared meshes), against magnus6 at 1e-12, error ≤ tolerance at
+   !> status 0 at 1e-6 and 1e-10: the pivot f = cos πτ + 0.5 cos 2πτ over the range of
+   !> own_pivot_chart.nml (32 × 32) and the row of its point α = 0.5017, β = 4.0468, where a
+   !> first mesh of 4 steps per wavelength of the top harmonic made a Richardson pair whose
+   !> difference was a twelfth of its error (3.9e-10 at 1e-10); three harmonics with a sine
+   !> term over the benchmark's range.
+   subroutine auto_chart_grid(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer, parameter :: n = 32
+      real(wp), parameter :: tols(2) = [1.0e-6_wp, 1.0e-10_wp]
+      type(fourier_model_t) :: model
+      type(error_t), allocatable :: error
+      real(wp) :: betas(n), alphas(n + 1), worst, alpha_max, beta_min, beta_max
+      integer :: d, i, j, t, n_checked
+      do d = 1, 2
+         if (d == 1) then
+            call model%set_values("cos", [1.0_wp, 0.5_wp], error)
+            alpha_max = 30.0_wp; beta_min = -10.0_wp; beta_max = 40.0_wp
+         else
+            call model%set_values("cos", [1.0_wp, 0.4_wp, 0.0_wp], error)
+            if (.not. allocated(error)) call model%set_values("sin", [0.0_wp, 0.0_wp, 0.3_wp], error)
+            alpha_max = 9.8_wp; beta_min = -2.0_wp; beta_max = 12.0_wp
+         end if
+         if (.not. allocated(error)) call model%check_values(error)
+         call check(ctx, .not. allocated(error), "the drive")
+         if (allocated(error)) return
+         betas = [(beta_min + (beta_max - beta_min)*(j - 1)/real(n - 1, wp), j=1, n)]
+         alphas(1:n) = [(0.1_wp + (alpha_max - 0.1_wp)*(i - 1)/real(n - 1, wp), i=1, n)]
+         alphas(n + 1) = 5.0167224080267558e-1_wp
+         do t = 1, size(tols)
+            worst = 0.0_wp
+            n_checked = 0
+            do i = 1, n + 1
+               if (i == n + 1 .and. d == 2) exit
+               if (i == n + 1) then
+                  call row_worst(alphas(i), [4.0468227424749159_wp], tols(t))
+               else
+                  call row_worst(alphas(i), betas, tols(t))
+               end if
+            end do
+            call check(ctx, worst <= 1.0_wp, "drive "//text(real(d, wp))//" at "//text(tols(t))// &
+                       ": worst error/tolerance "//text(worst))
+            call check(ctx, n_checked >= n*n - 10, "points compared")
+            print '(4x,a,i0,a,es8.1,a,es9.2)', "drive ", d, " auto chart grid at", tols(t), ": worst error/tolerance", worst
+         end do
+      end do
+   contains
+      subroutine row_worst(alpha, row_betas, tolerance)
+         real(wp), intent(in) :: alpha, row_betas(:), tolerance
+         type(trace_t) :: row(size(row_betas)), reference
+         logical :: failed(size(row_betas))
+         type(error_t), allocatable :: problem
+         real(wp) :: e
+         integer :: k
+         call monodromy_trace_batch(model, hill_point_t(alpha, 0.0_wp, 0.0_wp), row_betas, &
+                                    method_t(method_auto, tolerance=tolerance), row, failed, problem)
+         if (allocated(problem)) deallocate (problem)
+         do k = 1, size(row_betas)
+            if (failed(k)) cycle
+            call monodromy_trace(model, hill_point_t(alpha, row_betas(k), 0.0_wp), &
+                                 method_t(method_magnus6, tolerance=1.0e-12_wp), reference, problem)
+            if (allocated(problem)) then
+               if (problem%code /= err_accuracy) cycle
+               deallocate (problem)
+            end if
+            e = abs(row(k)%value - reference%value)/max(1.0_wp, abs(reference%value))
+            worst = max(worst, e/tolerance)
+            n_checked = n_checked + 1
+         end do
+      end subroutine row_worst
+   end subroutine auto_chart_grid
 
    !> A number as short text for messages.
    function text(x) result(t)

@@ -13,8 +13,8 @@ module test_model_modulated
    use hillstab_hill_model, only: hill_point_t, hill_window_t, model_coefficient_range
    use hillstab_hill_model_modulated, only: modulated_model_t, modulated_parts
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_integrate_monodromy, only: method_t, monodromy_trace, method_auto, method_magnus4, method_magnus6, &
-      method_rk, method_gsl, method_name
+   use hillstab_integrate_monodromy, only: method_t, monodromy_trace, monodromy_trace_batch, method_auto, method_magnus4, &
+      method_magnus6, method_rk, method_gsl, method_name
    use hillstab_curves_hill_method, only: hill_boundary_t, route_roots
    use hillstab_curves_characteristic, only: characteristic_values
    use hillstab_testing
@@ -39,6 +39,7 @@ contains
          new_unittest("ranges_contain_samples", ranges_contain_samples), &
          new_unittest("period_and_symmetry", period_and_symmetry), &
          new_unittest("exact_methods_against_reference", exact_methods_against_reference), &
+         new_unittest("auto_chart_grid", auto_chart_grid), &
          new_unittest("transition_values", transition_values), &
          new_unittest("alpha_domain", alpha_domain)])
    end function collect_model_modulated
@@ -252,7 +253,7 @@ contains
    subroutine exact_methods_against_reference(ctx)
       type(test_context_t), intent(inout) :: ctx
       real(wp), parameter :: alphas(4) = [0.5_wp, 3.0_wp, 7.0_wp, 9.7_wp]
-      real(wp), parameter :: betas(6) = [-40.0_wp, -1.0_wp, 0.7_wp, 5.0_wp, 60.0_wp, 2000.0_wp]
+      real(wp), parameter :: betas(8) = [-40.0_wp, -1.0_wp, 0.7_wp, 1.6_wp, 5.0_wp, 7.9_wp, 60.0_wp, 2000.0_wp]
       real(wp), parameter :: epsilons(2) = [0.0_wp, 0.3_wp]
       type(modulated_model_t) :: model
       type(trace_t) :: tr
@@ -299,6 +300,50 @@ contains
       end do
       print '(4x,i0,a)', n_points, " points"
    end subroutine exact_methods_against_reference
+
+   !> Method auto over a 36 × 36 grid of (α, β) ∈ [0.1, 9.8] × [−2, 12] at 1e-6 and 1e-10, one
+   !> chart row per α as the chart task computes it (`monodromy_trace_batch`: shared meshes),
+   !> against magnus6 at 1e-12: error ≤ tolerance at status 0 (at 1e-6 the uniform meshes'
+   !> Richardson pairs were short of the asymptotic range near α = 7 before auto's estimate
+   !> was counted fourfold for this model).
+   subroutine auto_chart_grid(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer, parameter :: n = 36
+      real(wp), parameter :: tols(2) = [1.0e-6_wp, 1.0e-10_wp]
+      type(modulated_model_t) :: model
+      type(trace_t) :: row(n), reference
+      type(error_t), allocatable :: error
+      logical :: failed(n)
+      real(wp) :: betas(n), alpha, e, worst
+      integer :: i, j, t, n_checked
+      betas = [(-2.0_wp + 14.0_wp*(j - 1)/real(n - 1, wp), j=1, n)]
+      do t = 1, size(tols)
+         worst = 0.0_wp
+         n_checked = 0
+         do i = 1, n
+            alpha = 0.1_wp + 9.7_wp*(i - 1)/real(n - 1, wp)
+            call monodromy_trace_batch(model, hill_point_t(alpha, 0.0_wp, 0.0_wp), betas, method_t(method_auto, &
+                                       tolerance=tols(t)), row, failed, error)
+            if (allocated(error)) deallocate (error)
+            do j = 1, n
+               if (failed(j)) cycle
+               call monodromy_trace(model, hill_point_t(alpha, betas(j), 0.0_wp), method_t(method_magnus6, &
+                                    tolerance=1.0e-12_wp), reference, error)
+               if (allocated(error)) then
+                  if (error%code /= err_accuracy) cycle
+                  deallocate (error)
+               end if
+               e = abs(row(j)%value - reference%value)/max(1.0_wp, abs(reference%value))
+               worst = max(worst, e/tols(t))
+               n_checked = n_checked + 1
+            end do
+         end do
+         call check(ctx, worst <= 1.0_wp, "auto at "//text(tols(t))//" over the grid: worst error/tolerance "// &
+                    text(worst))
+         call check(ctx, n_checked >= n*n - 10, "points compared")
+         print '(4x,a,es8.1,a,es9.2)', "auto chart grid at", tols(t), ": worst error/tolerance", worst
+      end do
+   end subroutine auto_chart_grid
 
    !> The first three transition values of each kind (the roots route) at four α: the
    !> reference S minus ±2 changes sign across [β − δ, β + δ], δ = 1e-9 max(1, |β|). At

@@ -125,10 +125,13 @@ module hillstab_hill_model
       procedure :: shape_root_mean => shape_root_bound
       procedure :: has_offset => no_offset
       procedure :: offset_range => zero_offset_range
+      procedure :: offsets => zero_offsets
       procedure :: shapes_from_half_sines => shapes_at_half_sines
       procedure :: mesh_kappa => uniform_mesh
       procedure :: auto_difficulty => amplitude_difficulty
       procedure :: auto_amplitude => oscillation_amplitude
+      procedure :: auto_safety => calibrated_safety
+      procedure :: auto_min_steps => no_min_steps
       procedure :: two_piece_values => sampled_two_pieces
       procedure :: two_pieces_exact => two_pieces_approximate
       procedure :: hill_form => no_hill_form
@@ -283,9 +286,9 @@ contains
    end function shape_root_bound
 
    !> Q = c₀ + c₁ w(τ) + v(τ) with an offset v ≠ 0 (independent of β, like w): false unless
-   !> the model says so. Method auto's shared meshes carry w only, so that it computes such
-   !> a model's points one by one (adaptive Magnus-6); the ranges and the round-off levels
-   !> of every method take v into account through `offset_range`.
+   !> the model says so. Method auto's shared meshes then carry v beside w (`offsets`); the
+   !> ranges and the round-off levels of every method take v into account through
+   !> `offset_range`.
    elemental logical function no_offset(self)
       class(hill_model_t), intent(in) :: self  !! the model
       no_offset = .false.
@@ -300,6 +303,15 @@ contains
       v_min = 0.0_wp
       v_max = 0.0_wp
    end subroutine zero_offset_range
+
+   !> The offset v at the times `tau`: 0 unless the model `has_offset`.
+   pure subroutine zero_offsets(self, alpha, tau, v)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha            !! α
+      real(wp), intent(in) :: tau(:)           !! the times
+      real(wp), intent(out) :: v(:)            !! v there (size(tau))
+      v = 0.0_wp
+   end subroutine zero_offsets
 
    !> w at n points of [0, 1] given by their half-angle sines s = sin(πτ/2) (method auto's
    !> mesh builds those by angle sums): through τ = (2/π) asin s unless the model has a
@@ -337,6 +349,22 @@ contains
       real(wp), intent(in) :: c0, c1           !! the split of q (`model_split`)
       amplitude = abs(c1) + 0.1_wp*abs(c0)
    end function oscillation_amplitude
+
+   !> The fewest steps per unit of τ method auto's first mesh may have (its Richardson check
+   !> compares it with half as many): 0, auto's own floor, unless the drive's harmonics need
+   !> more to be resolved on the coarser mesh.
+   elemental integer function no_min_steps(self) result(n)
+      class(hill_model_t), intent(in) :: self  !! the model
+      n = 0
+   end function no_min_steps
+
+   !> The factor method auto's Richardson estimate is multiplied by before it is held against
+   !> the tolerance: 1 where auto's step counts were calibrated (its first meshes put the
+   !> pair in the asymptotic range), more for a model whose first meshes may be coarser.
+   elemental real(wp) function calibrated_safety(self) result(factor)
+      class(hill_model_t), intent(in) :: self  !! the model
+      factor = 1.0_wp
+   end function calibrated_safety
 
    !> The two constant pieces of method formula, the paper's sampling (28): Q(0) − ε²/4 on
    !> the first half period and Q(period/2) − ε²/4 on the second.

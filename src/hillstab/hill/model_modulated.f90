@@ -9,7 +9,8 @@
 !> even about τ = 0 and about τ = 2, and 0 ≤ α < π² keeps r > 0 (m reaches 1 at τ = 0).
 !> Unlike the plain bounce, where m'' = −π² m turns Q into π² + (β − π²) w, here k m'' is no
 !> multiple of m: Q = β w + v with w = 1/(1 − k m) and the offset v = k m'' w, both
-!> independent of β (`has_offset`). Q is no trigonometric polynomial (1/(1 − k m) has
+!> independent of β (`has_offset`, `offsets`: method auto's meshes carry v beside w). Q is no
+!> trigonometric polynomial (1/(1 − k m) has
 !> infinitely many harmonics), so the Fourier model cannot represent it exactly: this model
 !> evaluates it in closed form. Transition curves come from the roots of S along β.
 !>
@@ -24,7 +25,8 @@
 module hillstab_hill_model_modulated
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_hill_model, only: hill_model_t
-   use hillstab_hill_model_elastic, only: one_minus_alpha_over_pi2, elastic_alpha_valid, elastic_alpha_domain
+   use hillstab_hill_model_elastic, only: one_minus_alpha_over_pi2, elastic_alpha_valid, elastic_alpha_domain, &
+      elastic_auto_difficulty
    implicit none
    private
    public :: modulated_model_t, modulated_parts
@@ -54,6 +56,10 @@ module hillstab_hill_model_modulated
       procedure :: shape_range => modulated_shape_range
       procedure :: has_offset => modulated_has_offset
       procedure :: offset_range => modulated_offset_range
+      procedure :: offsets => modulated_offsets
+      procedure :: auto_difficulty => modulated_auto_difficulty
+      procedure :: auto_amplitude => modulated_auto_amplitude
+      procedure :: auto_safety => modulated_auto_safety
       procedure :: period => modulated_period
    end type modulated_model_t
 
@@ -228,6 +234,40 @@ contains
       class(modulated_model_t), intent(in) :: self  !! the model
       modulated_has_offset = .true.
    end function modulated_has_offset
+
+   !> v = k m'' w at the times `tau`.
+   pure subroutine modulated_offsets(self, alpha, tau, v)
+      class(modulated_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha                 !! α
+      real(wp), intent(in) :: tau(:)                !! the times
+      real(wp), intent(out) :: v(:)                 !! v there
+      real(wp) :: w(size(tau))
+      call modulated_parts(alpha, tau, w, v)
+   end subroutine modulated_offsets
+
+   !> Method auto's calibration variable: the elastic model's, −ln(1 − α/π²), for the dip of
+   !> Q at τ = 0 of the same width (1 − k m has the same minimum 1 − k there).
+   elemental real(wp) function modulated_auto_difficulty(self, alpha) result(x)
+      class(modulated_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha                 !! α
+      x = 2.0_wp*elastic_auto_difficulty(alpha) + 1.0_wp
+   end function modulated_auto_difficulty
+
+   !> The amplitude method auto's step count grows with: |β − π²| as for the elastic model
+   !> (whose Q = π² + (β − π²) w has the same dip), plus 0.1 |c₀| (the damping shift).
+   elemental real(wp) function modulated_auto_amplitude(self, c0, c1) result(amplitude)
+      class(modulated_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: c0, c1               !! the split of q: c₁ = β
+      amplitude = abs(c1 - pi2) + 0.1_wp*abs(c0)
+   end function modulated_auto_amplitude
+
+   !> Method auto's Richardson estimate counted fourfold: its meshes are uniform in τ (not
+   !> packed into the dip as the elastic model's), and at tolerance 1e-6 their pairs were
+   !> short of the asymptotic range by up to 1.5× the estimate.
+   elemental real(wp) function modulated_auto_safety(self) result(factor)
+      class(modulated_model_t), intent(in) :: self  !! the model
+      factor = 4.0_wp
+   end function modulated_auto_safety
 
    !> The range of v over the period (`modulated_range_of_v`).
    elemental subroutine modulated_offset_range(self, alpha, v_min, v_max)

@@ -16,7 +16,9 @@
 !> Speed comes from the structure of Q: for fixed α, q(τ) = c₀ + c₁ w(τ) with w
 !> independent of β (elastic: w = 1/(1 − (α/π²) cos πτ), c₁ = β − π²,
 !> c₀ = π² − ε²/4; Mathieu: w = cos πτ, c₁ = −ν, c₀ = β − ε²/4; every model gives its
-!> split, w and the inputs of the mesh and the step count through its bindings, hillstab_hill_model).
+!> split, w and the inputs of the mesh and the step count through its bindings, hillstab_hill_model;
+!> a model whose q = c₀ + c₁ w + v has an offset v independent of β gives v too, and the
+!> meshes carry it).
 !> A batch of points shares the mesh and the w values at its Gauss nodes, so each step
 !> costs three multiply-adds, a few flops for the Magnus generator and one
 !> exponential of a traceless 2×2 matrix, evaluated by a short power series when
@@ -32,7 +34,7 @@ module hillstab_integrate_auto
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_model, only: hill_model_t, hill_point_t, check_batch, model_split
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, check_batch, model_split, constant_part_size
    use hillstab_hill_coefficient, only: coefficient_phase
    use hillstab_hill_transfer, only: transfer_functions, trace_t, trace_from_scaled
    use hillstab_integrate_magnus, only: trace_magnus
@@ -98,8 +100,6 @@ contains
       if (.not. all(ieee_is_finite(betas))) return
       if (alpha == 0.0_wp .or. .not. (tolerance > 0.0_wp .and. tolerance < 1.0_wp)) return
       if (.not. model%alpha_valid(alpha)) return
-      ! a model with an offset has no shared meshes (`trace_auto_batch`)
-      if (model%has_offset()) return
       screening = .false.
       if (present(screen)) screening = screen
       if (screening) then
@@ -136,7 +136,7 @@ contains
       class(hill_model_t), intent(in) :: model
       real(wp) :: amplitude
       amplitude = model%auto_amplitude(c0, c1)
-      n = max(check_min_steps, ladder_steps(base*(max(amplitude, 1.0_wp)/12.0_wp)**0.4_wp))
+      n = max(check_min_steps, model%auto_min_steps(), ladder_steps(base*(max(amplitude, 1.0_wp)/12.0_wp)**0.4_wp))
    end function steps_for_point
 
    !> `steps_for_point` of every point of a batch, without a power per point: rung r of
@@ -147,7 +147,8 @@ contains
       class(hill_model_t), intent(in) :: model
       integer, intent(out) :: ns(:)
       real(wp) :: thresholds(size(ladder)), x
-      integer :: j, k, first
+      integer :: j, k, first, least
+      least = max(check_min_steps, model%auto_min_steps())
       ! the rung of the smallest amplitude (x = 1), then the thresholds of the rungs above it
       first = findloc(ladder, ladder_steps(base*(1.0_wp/12.0_wp)**0.4_wp), dim=1)
       thresholds(first:) = 12.0_wp*(real(ladder(first:), wp)/base)**2.5_wp
@@ -158,7 +159,7 @@ contains
             if (x <= thresholds(k)) exit
             k = k + 1
          end do
-         ns(j) = max(check_min_steps, ladder(k))
+         ns(j) = max(least, ladder(k))
       end do
    end subroutine steps_for_points
 
@@ -248,7 +249,7 @@ contains
       logical, allocatable :: pending(:), converged(:), handed_over(:)
       type(trace_t), allocatable :: fine(:), coarse(:)
       real(wp), allocatable :: floors(:), coarse_floors(:), estimates(:), previous(:)
-      real(wp) :: noise
+      real(wp) :: noise, safety
       integer :: j, m, pass
       character(len=160) :: buffer
       stats = work_stats_t()
@@ -268,6 +269,7 @@ contains
          if (plan%prepared .and. plan%alpha == alpha) cache = plan%cache
       end if
       base = auto_base_steps(model, alpha, tolerance)
+      safety = richardson_safety*model%auto_safety()
       m = size(betas)
       allocate (c0s(m), c1s(m), ns(m))
       do j = 1, m
@@ -289,19 +291,12 @@ contains
          stats%n_evaluations = stats%n_evaluations + m
          return
       end if
-      if (model%has_offset()) then
-         ! q = c₀ + c₁ w + v: the shared meshes carry w only, so every point is computed on
-         ! its own by adaptive Magnus-6 (`hand_over`, with no estimate of auto's to beat)
-         if (present(reached)) reached = .true.
-         do j = 1, m
-            call hand_over(j, huge(1.0_wp))
-         end do
-         return
-      end if
       call steps_for_points(base, model, c0s, c1s, ns)
       ! the phase bound of each point, for its round-off level (hillstab_integrate_refine),
-      ! over the model's period (the bound is stated for the period 2)
-      phases = 0.5_wp*model%period()*coefficient_phase(c0s, c1s, model%shape_root_mean(alpha))
+      ! over the model's period (the bound is stated for the period 2), an offset counted
+      ! with c₀
+      phases = 0.5_wp*model%period()*coefficient_phase(abs(c0s) + constant_part_size(model, alpha, 0.0_wp), c1s, &
+                                                       model%shape_root_mean(alpha))
       ! first pass: S_N and S_{N/2} of all points sharing N together, in lanes
       allocate (fine(m), coarse(m), n_coarse(m), pending(m), floors(m), coarse_floors(m), estimates(m), previous(m), &
                 converged(m), handed_over(m))
@@ -320,7 +315,7 @@ contains
       do pass = 1, 12
          do j = 1, m
             if (.not. pending(j)) cycle
-            estimate = richardson_safety*trace_distance(fine(j), coarse(j))/ &
+            estimate = safety*trace_distance(fine(j), coarse(j))/ &
                        ((real(ns(j), wp)/n_coarse(j))**6 - 1.0_wp)
             noise = max(floors(j), coarse_floors(j))
             estimates(j) = max(estimate, noise)
@@ -492,22 +487,14 @@ contains
          stats%n_evaluations = size(betas)
          return
       end if
-      if (model%has_offset()) then
-         ! no shared meshes for a model with an offset (`trace_auto_batch`): nothing is
-         ! screened, every point goes on to the full computation
-         do j = 1, size(betas)
-            traces(j) = trace_from_scaled(0.0_wp, 0.0_wp)
-            traces(j)%error_estimate = huge(1.0_wp)
-         end do
-         return
-      end if
       if (present(plan)) then
          if (plan%prepared .and. plan%alpha == alpha) cache = plan%cache
       end if
       base = auto_base_steps(model, alpha, auto_screen_tolerance)
       call steps_for_points(base, model, c0s, c1s, ns)
       ns = max(screen_min_steps, ns)
-      phases = 0.5_wp*model%period()*coefficient_phase(c0s, c1s, model%shape_root_mean(alpha))
+      phases = 0.5_wp*model%period()*coefficient_phase(abs(c0s) + constant_part_size(model, alpha, 0.0_wp), c1s, &
+                                                       model%shape_root_mean(alpha))
       call screen_lanes(cache, model, alpha, ns, c0s, c1s, phases, traces, floors, coarse, coarser, stats)
       do j = 1, size(betas)
          ! differences of the order of S itself (values of opposite signs, overflow) count
@@ -684,8 +671,7 @@ contains
 
 
    !> S by Magnus-6 on the auto mesh with exactly n steps on [0, 1] (no error control;
-   !> for calibration, tests and benchmarks). Undamped β (ε = 0). Not for a model with an
-   !> offset (`has_offset`): the mesh carries w only.
+   !> for calibration, tests and benchmarks). Undamped β (ε = 0).
    function fixed_n_trace(model, alpha, beta, n) result(s)
       class(hill_model_t), intent(in) :: model  !! the model
       integer, intent(in) :: n  !! number of Magnus-6 steps on [0, 1]
@@ -696,8 +682,8 @@ contains
       real(wp) :: c0, c1, floor(1)
       call model_split(model, alpha, beta, 0.0_wp, c0, c1)
       call build_mesh(model, alpha, n, mesh)
-      call lane_traces(mesh, [c0], [c1], [0.5_wp*model%period()*coefficient_phase(c0, c1, model%shape_root_mean(alpha))], &
-                       tr, floor)
+      call lane_traces(mesh, [c0], [c1], [0.5_wp*model%period()*coefficient_phase(constant_part_size(model, alpha, c0), &
+                                                                                  c1, model%shape_root_mean(alpha))], tr, floor)
       s = tr(1)%value
    end function fixed_n_trace
 end module hillstab_integrate_auto

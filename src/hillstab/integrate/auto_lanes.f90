@@ -78,12 +78,21 @@ contains
       real(wp), parameter :: square_unit = 2.0_wp**(-256)
       real(wp) :: z_max, uu, vv, sw, level, values_limit
       real(wp) :: h, w1, w2, w3, q1, q2, q3, d2, d3, x3, y1, y2, y3, ls, e11, e12, e21, e22, a, b, big
+      real(wp) :: v1, v2, v3
+      ! |c₀| of each lane, plus max|v| of an offset (`mesh_t%offset_size`): what the round-off
+      ! level counts as the constant part of q
+      real(wp) :: c0_size(lane_block)
+      logical :: offset
       real(wp) :: big_max, big_min, root_n, size_s, m12, m21, d0, d1, size0, size1
       real(wp), dimension(lane_block) :: s_lane, log_abs
       logical :: special(lane_block)
       integer :: i, l, k, shift, nl
       logical :: rescaled(lane_block)
       nl = size(c0)
+      offset = allocated(mesh%v)
+      do l = 1, nl
+         c0_size(l) = abs(c0(l)) + mesh%offset_size
+      end do
       rescaled = .false.
       p11 = 1.0_wp; p12 = 0.0_wp; p21 = 0.0_wp; p22 = 1.0_wp
       log_scale = 0.0_wp
@@ -99,22 +108,43 @@ contains
          ! `magnus6_generator` of hillstab_integrate_magnus (Blanes, Casas, Oteo, Ros, Phys. Rep. 470 (2009) §5)
          ! written out in components (α₂, α₃ have only a lower-left entry) so that the loop vectorises
          z_max = 0.0_wp
-         do l = 1, nl
-            q1 = c0(l) + c1(l)*w1
-            q2 = c0(l) + c1(l)*w2
-            q3 = c0(l) + c1(l)*w3
-            d2 = c_d2*h*(q3 - q1)
-            d3 = c_d3*h*((q3 - q2) + (q1 - q2))
-            x3 = 20.0_wp*h*q2 - d3
-            y1 = -c_60*h*d3
-            y2 = c_60*h*h*d2
-            y3 = d2 + c_60*h*h*q2*d2
-            ga(l) = c_240*(-20.0_wp*h*y3 - x3*y2)
-            gb(l) = h + c_120*(h*d2*y2 + 20.0_wp*h*y1)
-            gc(l) = -h*q2 + c_12*d3 + c_120*(x3*y1 - h*d2*y3)
-            z(l) = -(ga(l)*ga(l) + gb(l)*gc(l))
-            z_max = max(z_max, abs(z(l)))   ! in the loop: a vectorised reduction (maxval is not)
-         end do
+         if (offset) then
+            ! q = c₀ + c₁ w + v: the offset's values, the same in every lane
+            v1 = mesh%v(1, i); v2 = mesh%v(2, i); v3 = mesh%v(3, i)
+            do l = 1, nl
+               q1 = c0(l) + c1(l)*w1 + v1
+               q2 = c0(l) + c1(l)*w2 + v2
+               q3 = c0(l) + c1(l)*w3 + v3
+               d2 = c_d2*h*(q3 - q1)
+               d3 = c_d3*h*((q3 - q2) + (q1 - q2))
+               x3 = 20.0_wp*h*q2 - d3
+               y1 = -c_60*h*d3
+               y2 = c_60*h*h*d2
+               y3 = d2 + c_60*h*h*q2*d2
+               ga(l) = c_240*(-20.0_wp*h*y3 - x3*y2)
+               gb(l) = h + c_120*(h*d2*y2 + 20.0_wp*h*y1)
+               gc(l) = -h*q2 + c_12*d3 + c_120*(x3*y1 - h*d2*y3)
+               z(l) = -(ga(l)*ga(l) + gb(l)*gc(l))
+               z_max = max(z_max, abs(z(l)))   ! in the loop: a vectorised reduction (maxval is not)
+            end do
+         else
+            do l = 1, nl
+               q1 = c0(l) + c1(l)*w1
+               q2 = c0(l) + c1(l)*w2
+               q3 = c0(l) + c1(l)*w3
+               d2 = c_d2*h*(q3 - q1)
+               d3 = c_d3*h*((q3 - q2) + (q1 - q2))
+               x3 = 20.0_wp*h*q2 - d3
+               y1 = -c_60*h*d3
+               y2 = c_60*h*h*d2
+               y3 = d2 + c_60*h*h*q2*d2
+               ga(l) = c_240*(-20.0_wp*h*y3 - x3*y2)
+               gb(l) = h + c_120*(h*d2*y2 + 20.0_wp*h*y1)
+               gc(l) = -h*q2 + c_12*d3 + c_120*(x3*y1 - h*d2*y3)
+               z(l) = -(ga(l)*ga(l) + gb(l)*gc(l))
+               z_max = max(z_max, abs(z(l)))   ! in the loop: a vectorised reduction (maxval is not)
+            end do
+         end if
          ! C, S of `cos_sinc_taylor` (hillstab_hill_transfer), its Horner loop written out here
          ! with its coefficients so that the loop over the lanes vectorises (through a call,
          ! even one per step for all lanes, the chart rows took 17 % to 33 % more instructions)
@@ -277,8 +307,8 @@ contains
             m21 = p21(l)
             m12 = p12(l)
             x3 = p22(l) - p11(l)
-            d0 = abs(c0(l))*abs(m21*sv2(l) - m12*su2(l) - x3*suv(l))
-            size0 = abs(c0(l))*(abs(m21)*sv2(l) + abs(m12)*su2(l) + abs(x3)*suv_abs(l))
+            d0 = c0_size(l)*abs(m21*sv2(l) - m12*su2(l) - x3*suv(l))
+            size0 = c0_size(l)*(abs(m21)*sv2(l) + abs(m12)*su2(l) + abs(x3)*suv_abs(l))
             d1 = abs(m21*sv2w(l) - m12*su2w(l) - x3*suvw(l))
             size1 = abs(m21)*sv2a(l) + abs(m12)*su2a(l) + abs(x3)*suva(l)
             level = merge(coefficient_roundings_c0*d0, 0.0_wp, d0 > cancellation_limit*size0) + &
@@ -298,8 +328,8 @@ contains
             size_s = max(1.0_wp, abs(s_lane(l)))
             m21 = 2.0_wp*p11(l)*p21(l)
             m12 = 2.0_wp*p12(l)*p22(l)
-            d0 = 2.0_wp*abs(c0(l))*abs(m21*sv2(l) - m12*su2(l))
-            size0 = 2.0_wp*abs(c0(l))*(abs(m21)*sv2(l) + abs(m12)*su2(l))
+            d0 = 2.0_wp*c0_size(l)*abs(m21*sv2(l) - m12*su2(l))
+            size0 = 2.0_wp*c0_size(l)*(abs(m21)*sv2(l) + abs(m12)*su2(l))
             d1 = 2.0_wp*abs(m21*sv2w(l) - m12*su2w(l))
             size1 = 2.0_wp*(abs(m21)*sv2a(l) + abs(m12)*su2a(l))
             level = merge(coefficient_roundings_c0*d0, 0.0_wp, d0 > cancellation_limit*size0) + &
@@ -322,7 +352,7 @@ contains
          if (special(l)) then
             call lane_result(p11(l), p12(l), p21(l), p22(l), log_scale(l), log_peak(l), peak(l), &
                sensitivity_t(2.0_wp*log_scale(l) + 512.0_wp*log(2.0_wp), su2(l), sv2(l), su2w(l), sv2w(l), &
-               su2a(l), sv2a(l), suv(l), suv_abs(l), suvw(l), suva(l)), c0(l), mesh%n_steps, phases(l), traces(l), &
+               su2a(l), sv2a(l), suv(l), suv_abs(l), suvw(l), suva(l)), c0_size(l), mesh%n_steps, phases(l), traces(l), &
                floors(l), mesh%half)
             if (how == lanes_values) floors(l) = 0.0_wp
          else if (how == lanes_values) then

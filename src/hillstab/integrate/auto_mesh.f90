@@ -3,7 +3,8 @@
 !> points. On [0, 1] (half a period of a q even about 0, no jump) the steps are uniform in
 !> the variable ψ of the Kepler-type map tan(πτ/2) = √((1 − κ)/(1 + κ)) tan(πψ/2) that
 !> packs them into the dip of the elastic Q at τ = 0; on any other window they are uniform
-!> in τ on each piece between the jumps of Q.
+!> in τ on each piece between the jumps of Q. A model with an offset (q = c₀ + c₁ w + v) has
+!> v at the nodes too.
 module hillstab_integrate_auto_mesh
    use hillstab_core_kinds, only: wp, pi
    use hillstab_hill_model, only: hill_model_t, hill_window_t
@@ -25,6 +26,10 @@ module hillstab_integrate_auto_mesh
       integer :: n_steps = 0             !! number of steps
       real(wp), allocatable :: h(:)      !! step lengths
       real(wp), allocatable :: w(:, :)   !! w at the three Gauss nodes of each step
+      !> the offset v at the Gauss nodes, for a model that `has_offset` (q = c₀ + c₁ w + v)
+      real(wp), allocatable :: v(:, :)
+      !> max |v| over the mesh (0 without an offset): counted with |c₀| in the round-off level
+      real(wp) :: offset_size = 0.0_wp
    end type mesh_t
 
    !> The meshes built so far for one (model kind, α) — local to one batch call.
@@ -90,6 +95,12 @@ contains
       call mesh_points(n, model%mesh_kappa(alpha, auto_mesh_power), mesh%h, work(1:3*n), &
                        work(3*n + 1:4*n), work(4*n + 1:5*n), work(5*n + 1:6*n))
       call model%shapes_from_half_sines(alpha, 3*n, work(1:3*n), mesh%w)
+      if (model%has_offset()) then
+         ! v from τ = (2/π) asin(sin(πτ/2)) at the nodes (the sines overwritten by v)
+         call model%offsets(alpha, (2.0_wp/pi)*asin(min(1.0_wp, max(-1.0_wp, work(1:3*n)))), work(1:3*n))
+         mesh%v = reshape(work(1:3*n), [3, n])
+         mesh%offset_size = maxval(abs(mesh%v))
+      end if
    end subroutine build_mesh
 
    !> `build_mesh` on a general window: each piece [a, b] between the window's ends and
@@ -126,6 +137,11 @@ contains
       allocate (w(3*mesh%n_steps))
       call model%shapes(alpha, reshape(taus, [3*mesh%n_steps]), w)
       mesh%w = reshape(w, [3, mesh%n_steps])
+      if (model%has_offset()) then
+         call model%offsets(alpha, reshape(taus, [3*mesh%n_steps]), w)
+         mesh%v = reshape(w, [3, mesh%n_steps])
+         mesh%offset_size = maxval(abs(mesh%v))
+      end if
    end subroutine build_piece_mesh
 
    !> The step lengths h and the sines sin(πτ/2) at the Gauss nodes (`half_sin`) of
