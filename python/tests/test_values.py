@@ -209,3 +209,23 @@ def test_fourier_mathieu_limit_and_period():
     assert np.allclose(r.exponent, r.log_moduli[:, 0] / 4.0, rtol=0, atol=1e-15)
     inside = np.abs(r.trace) < 2
     assert inside.any() and np.allclose(r.lambda_max[inside], np.exp(-0.1), rtol=1e-15)
+
+
+def test_modulated_bounce_model():
+    # the swing about r = rho - a cos(wt) cos(wt/2): registered, period 4, undriven at alpha = 0
+    assert "modulated" in hillstab.model_names()
+    beta = np.linspace(-3.0, 40.0, 30)
+    s0 = hillstab.trace(np.zeros(30), beta, model="modulated", tolerance=1e-12)
+    k = np.sqrt(np.abs(beta))
+    closed = np.where(beta >= 0, 2.0 * np.cos(4.0 * k), 2.0 * np.cosh(4.0 * k))
+    assert np.all(np.abs(s0 - closed) <= 1e-12 * np.maximum(1.0, np.abs(closed)))
+    # auto (shared meshes carrying the offset) against magnus6 at a tighter tolerance
+    rng = np.random.default_rng(5)
+    alpha = rng.uniform(0.0, 9.7, 200)
+    beta = rng.uniform(-5.0, 30.0, 200)
+    s_auto = hillstab.trace(alpha, beta, model="modulated", tolerance=1e-10)
+    s_ref = hillstab.trace(alpha, beta, model="modulated", method="magnus6", tolerance=1e-12)
+    assert np.all(np.abs(s_auto - s_ref) <= 1e-10 * np.maximum(1.0, np.abs(s_ref)))
+    # a >= rho (alpha >= pi^2) is refused, naming the domain
+    with pytest.raises(ValueError, match="alpha < pi"):
+        hillstab.trace(np.array([np.pi**2]), np.array([1.0]), model="modulated")
