@@ -16,12 +16,13 @@ module test_model_fourier
    use hillstab_hill_model_sampled, only: sampled_model_t
    use hillstab_hill_mathieu, only: mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_integrate_monodromy, only: method_t, monodromy_trace, monodromy_trace_batch, method_auto, method_magnus4, &
-      method_magnus6, method_rk, method_gsl, method_name
+   use hillstab_integrate_monodromy, only: method_t, monodromy_trace, method_auto, method_magnus4, method_magnus6, &
+      method_rk, method_gsl, method_name
    use hillstab_curves_hill_method, only: hill_boundary_t
    use hillstab_curves_characteristic, only: characteristic_values
    use hillstab_testing
    use hillstab_test_files, only: run_text_scene
+   use hillstab_test_reference, only: auto_row_errors
    use hillstab_test_scratch, only: scratch_prefix, padded, file_exists, write_file, delete_file
    implicit none
    private
@@ -472,7 +473,7 @@ contains
       real(wp), parameter :: tols(2) = [1.0e-6_wp, 1.0e-10_wp]
       type(fourier_model_t) :: model
       type(error_t), allocatable :: error
-      real(wp) :: betas(n), alphas(n + 1), worst, alpha_max, beta_min, beta_max
+      real(wp) :: betas(n), worst, alpha_max, beta_min, beta_max
       integer :: d, i, j, t, n_checked
       do d = 1, 2
          if (d == 1) then
@@ -487,49 +488,21 @@ contains
          call check(ctx, .not. allocated(error), "the drive")
          if (allocated(error)) return
          betas = [(beta_min + (beta_max - beta_min)*(j - 1)/real(n - 1, wp), j=1, n)]
-         alphas(1:n) = [(0.1_wp + (alpha_max - 0.1_wp)*(i - 1)/real(n - 1, wp), i=1, n)]
-         alphas(n + 1) = 5.0167224080267558e-1_wp
          do t = 1, size(tols)
             worst = 0.0_wp
             n_checked = 0
-            do i = 1, n + 1
-               if (i == n + 1 .and. d == 2) exit
-               if (i == n + 1) then
-                  call row_worst(alphas(i), [4.0468227424749159_wp], tols(t))
-               else
-                  call row_worst(alphas(i), betas, tols(t))
-               end if
+            do i = 1, n
+               call auto_row_errors(model, 0.1_wp + (alpha_max - 0.1_wp)*(i - 1)/real(n - 1, wp), betas, tols(t), &
+                                    worst, n_checked)
             end do
+            if (d == 1) call auto_row_errors(model, 5.0167224080267558e-1_wp, [4.0468227424749159_wp], tols(t), &
+                                             worst, n_checked)
             call check(ctx, worst <= 1.0_wp, "drive "//text(real(d, wp))//" at "//text(tols(t))// &
                        ": worst error/tolerance "//text(worst))
             call check(ctx, n_checked >= n*n - 10, "points compared")
             print '(4x,a,i0,a,es8.1,a,es9.2)', "drive ", d, " auto chart grid at", tols(t), ": worst error/tolerance", worst
          end do
       end do
-   contains
-      subroutine row_worst(alpha, row_betas, tolerance)
-         real(wp), intent(in) :: alpha, row_betas(:), tolerance
-         type(trace_t) :: row(size(row_betas)), reference
-         logical :: failed(size(row_betas))
-         type(error_t), allocatable :: problem
-         real(wp) :: e
-         integer :: k
-         call monodromy_trace_batch(model, hill_point_t(alpha, 0.0_wp, 0.0_wp), row_betas, &
-                                    method_t(method_auto, tolerance=tolerance), row, failed, problem)
-         if (allocated(problem)) deallocate (problem)
-         do k = 1, size(row_betas)
-            if (failed(k)) cycle
-            call monodromy_trace(model, hill_point_t(alpha, row_betas(k), 0.0_wp), &
-                                 method_t(method_magnus6, tolerance=1.0e-12_wp), reference, problem)
-            if (allocated(problem)) then
-               if (problem%code /= err_accuracy) cycle
-               deallocate (problem)
-            end if
-            e = abs(row(k)%value - reference%value)/max(1.0_wp, abs(reference%value))
-            worst = max(worst, e/tolerance)
-            n_checked = n_checked + 1
-         end do
-      end subroutine row_worst
    end subroutine auto_chart_grid
 
    !> A number as short text for messages.

@@ -13,11 +13,13 @@ module test_model_modulated
    use hillstab_hill_model, only: hill_point_t, hill_window_t, model_coefficient_range
    use hillstab_hill_model_modulated, only: modulated_model_t, modulated_parts
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_integrate_monodromy, only: method_t, monodromy_trace, monodromy_trace_batch, method_auto, method_magnus4, &
-      method_magnus6, method_rk, method_gsl, method_name
+   use hillstab_integrate_monodromy, only: method_t, monodromy_trace, method_auto, method_magnus4, method_magnus6, &
+      method_rk, method_gsl, method_name
    use hillstab_curves_hill_method, only: hill_boundary_t, route_roots
    use hillstab_curves_characteristic, only: characteristic_values
+   use hillstab_core_text, only: real_text
    use hillstab_testing
+   use hillstab_test_reference, only: auto_row_errors
    implicit none
    private
    public :: collect_model_modulated
@@ -85,7 +87,7 @@ contains
             end do
          end do
       end do
-      call check(ctx, worst <= 2.0e-14_wp, "Q = (beta - r'')/r to rounding: worst "//text(worst))
+      call check(ctx, worst <= 2.0e-14_wp, "Q = (beta - r'')/r to rounding: worst "//real_text(worst))
       call check(ctx, model%coefficient(5.0_wp, 2.0_wp, 0.0_wp), (2.0_wp - 1.25_wp*5.0_wp)/(1.0_wp - 5.0_wp/pi2()), &
                  rel=1.0e-14_wp, message="Q(0) = (beta - 1.25 alpha)/(1 - k)")
    end subroutine coefficient_against_definition
@@ -119,7 +121,7 @@ contains
             end do
             mean = model%segment_mean(alphas(i), 3.0_wp, ends(1, s), ends(2, s))
             call check(ctx, mean, real(sum_q/(real(ends(2, s), xp) - real(ends(1, s), xp)), wp), rel=1.0e-13_wp, &
-                       abs=1.0e-13_wp, message="segment mean at alpha = "//text(alphas(i)))
+                       abs=1.0e-13_wp, message="segment mean at alpha = "//real_text(alphas(i)))
          end do
       end do
    end subroutine segment_means
@@ -138,15 +140,15 @@ contains
          call modulated_parts(alphas(i), taus, w, v)
          call model%shape_range(alphas(i), w_min, w_max)
          call model%offset_range(alphas(i), v_min, v_max)
-         call check(ctx, all(w >= w_min) .and. all(w <= w_max), "w inside its range at alpha = "//text(alphas(i)))
-         call check(ctx, all(v >= v_min) .and. all(v <= v_max), "v inside its range at alpha = "//text(alphas(i)))
+         call check(ctx, all(w >= w_min) .and. all(w <= w_max), "w inside its range at alpha = "//real_text(alphas(i)))
+         call check(ctx, all(v >= v_min) .and. all(v <= v_max), "v inside its range at alpha = "//real_text(alphas(i)))
          call check(ctx, maxval(v), v_max, rel=1.0e-6_wp, message="largest v attained")
          call check(ctx, minval(v), v_min, rel=1.0e-6_wp, message="least v attained")
          call check(ctx, maxval(w), w_max, rel=1.0e-12_wp, message="largest w attained (tau = 0)")
          do j = 1, size(betas)
             call model_coefficient_range(model, hill_point_t(alphas(i), betas(j), 0.0_wp), q_min, q_max)
             call check(ctx, all(betas(j)*w + v >= q_min) .and. all(betas(j)*w + v <= q_max), &
-                       "Q inside its range at beta = "//text(betas(j)))
+                       "Q inside its range at beta = "//real_text(betas(j)))
          end do
       end do
    end subroutine ranges_contain_samples
@@ -269,7 +271,7 @@ contains
          do j = 1, size(betas)
             do d = 1, size(epsilons)
                call reference_trace(alphas(i), betas(j), epsilons(d), reference, converged)
-               call check(ctx, converged, "reference converged at "//text(alphas(i))//", "//text(betas(j)))
+               call check(ctx, converged, "reference converged at "//real_text(alphas(i))//", "//real_text(betas(j)))
                if (.not. converged) cycle
                ref = real(reference, wp)
                if (abs(ref) > 1.0e300_wp) cycle
@@ -286,7 +288,7 @@ contains
                         if (error%code == err_accuracy) call check(ctx, e <= 4.0_wp*tr%error_estimate + 1.0e-13_wp, &
                                                                    trim(label)//": round-off limited, within its estimate")
                      else
-                        call check(ctx, e <= tolerances(t), trim(label)//": error "//text(e)//" within the tolerance")
+                        call check(ctx, e <= tolerances(t), trim(label)//": error "//real_text(e)//" within the tolerance")
                         worst(m, t) = max(worst(m, t), e/tolerances(t))
                      end if
                   end do
@@ -311,35 +313,17 @@ contains
       integer, parameter :: n = 36
       real(wp), parameter :: tols(2) = [1.0e-6_wp, 1.0e-10_wp]
       type(modulated_model_t) :: model
-      type(trace_t) :: row(n), reference
-      type(error_t), allocatable :: error
-      logical :: failed(n)
-      real(wp) :: betas(n), alpha, e, worst
+      real(wp) :: betas(n), worst
       integer :: i, j, t, n_checked
       betas = [(-2.0_wp + 14.0_wp*(j - 1)/real(n - 1, wp), j=1, n)]
       do t = 1, size(tols)
          worst = 0.0_wp
          n_checked = 0
          do i = 1, n
-            alpha = 0.1_wp + 9.7_wp*(i - 1)/real(n - 1, wp)
-            call monodromy_trace_batch(model, hill_point_t(alpha, 0.0_wp, 0.0_wp), betas, method_t(method_auto, &
-                                       tolerance=tols(t)), row, failed, error)
-            if (allocated(error)) deallocate (error)
-            do j = 1, n
-               if (failed(j)) cycle
-               call monodromy_trace(model, hill_point_t(alpha, betas(j), 0.0_wp), method_t(method_magnus6, &
-                                    tolerance=1.0e-12_wp), reference, error)
-               if (allocated(error)) then
-                  if (error%code /= err_accuracy) cycle
-                  deallocate (error)
-               end if
-               e = abs(row(j)%value - reference%value)/max(1.0_wp, abs(reference%value))
-               worst = max(worst, e/tols(t))
-               n_checked = n_checked + 1
-            end do
+            call auto_row_errors(model, 0.1_wp + 9.7_wp*(i - 1)/real(n - 1, wp), betas, tols(t), worst, n_checked)
          end do
-         call check(ctx, worst <= 1.0_wp, "auto at "//text(tols(t))//" over the grid: worst error/tolerance "// &
-                    text(worst))
+         call check(ctx, worst <= 1.0_wp, "auto at "//real_text(tols(t))//" over the grid: worst error/tolerance "// &
+                    real_text(worst))
          call check(ctx, n_checked >= n*n - 10, "points compared")
          print '(4x,a,es8.1,a,es9.2)', "auto chart grid at", tols(t), ": worst error/tolerance", worst
       end do
@@ -382,8 +366,8 @@ contains
             target = real(values(k)%trace_sign, wp)
             call reference_trace(alphas(i), values(k)%beta - delta, 0.0_wp, below, converged)
             call reference_trace(alphas(i), values(k)%beta + delta, 0.0_wp, above, converged)
-            call check(ctx, (below - target)*(above - target) <= 0.0_xp, "S = "//text(target)//" between beta -+ delta at "// &
-                       text(values(k)%beta)//" (alpha = "//text(alphas(i))//")")
+            call check(ctx, (below - target)*(above - target) <= 0.0_xp, "S = "//real_text(target)//" between beta -+ delta at "// &
+                       real_text(values(k)%beta)//" (alpha = "//real_text(alphas(i))//")")
          end do
       end do
    end subroutine transition_values
@@ -401,13 +385,4 @@ contains
       call monodromy_trace(model, hill_point_t(-1.0_wp, 1.0_wp, 0.0_wp), method_t(method_auto, tolerance=1.0e-8_wp), tr, error)
       call check(ctx, allocated(error), "alpha < 0 refused")
    end subroutine alpha_domain
-
-   !> A number for a message.
-   function text(x) result(t)
-      real(wp), intent(in) :: x
-      character(len=:), allocatable :: t
-      character(len=32) :: buffer
-      write (buffer, '(es10.3)') x
-      t = trim(adjustl(buffer))
-   end function text
 end module test_model_modulated

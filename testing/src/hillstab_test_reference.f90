@@ -5,11 +5,46 @@ module hillstab_test_reference
    use hillstab_core_kinds, only: wp
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_coefficient
+   use hillstab_core_error, only: error_t, err_accuracy
+   use hillstab_integrate_monodromy, only: method_t, monodromy_trace, monodromy_trace_batch, method_auto, &
+      method_magnus6
    implicit none
    private
-   public :: rk4_monodromy, value_of
+   public :: rk4_monodromy, value_of, auto_row_errors
 
 contains
+
+   !> One chart row (α, the β values) by method auto at `tolerance` as the chart task computes
+   !> it (`monodromy_trace_batch`: meshes shared over the row), each point against magnus6 at
+   !> 1e-12 (round-off limited references kept, failed points skipped): the largest error
+   !> relative to max(1, |S|) over the tolerance goes into `worst`, the points compared into
+   !> `n_checked`.
+   subroutine auto_row_errors(model, alpha, betas, tolerance, worst, n_checked)
+      class(hill_model_t), intent(in) :: model  !! the model
+      real(wp), intent(in) :: alpha             !! α of the row
+      real(wp), intent(in) :: betas(:)          !! its β values
+      real(wp), intent(in) :: tolerance         !! auto's tolerance
+      real(wp), intent(inout) :: worst          !! largest error/tolerance so far
+      integer, intent(inout) :: n_checked       !! points compared so far
+      type(trace_t) :: row(size(betas)), reference
+      logical :: failed(size(betas))
+      type(error_t), allocatable :: error
+      integer :: k
+      call monodromy_trace_batch(model, hill_point_t(alpha, 0.0_wp, 0.0_wp), betas, &
+                                 method_t(method_auto, tolerance=tolerance), row, failed, error)
+      if (allocated(error)) deallocate (error)
+      do k = 1, size(betas)
+         if (failed(k)) cycle
+         call monodromy_trace(model, hill_point_t(alpha, betas(k), 0.0_wp), &
+                              method_t(method_magnus6, tolerance=1.0e-12_wp), reference, error)
+         if (allocated(error)) then
+            if (error%code /= err_accuracy) cycle
+            deallocate (error)
+         end if
+         worst = max(worst, abs(row(k)%value - reference%value)/max(1.0_wp, abs(reference%value))/tolerance)
+         n_checked = n_checked + 1
+      end do
+   end subroutine auto_row_errors
 
    !> The value of a trace (a function result cannot be followed by %component).
    pure real(wp) function value_of(tr)

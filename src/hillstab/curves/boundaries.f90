@@ -410,8 +410,7 @@ contains
          end do
       end do
       ! a narrow pair may lie below a root of the other kind found in the step before
-      call sort_by_beta(found)
-      roots = found
+      roots = found(ascending_order(found%beta))
    contains
       !> Count a root of kind t (in ascending β within its kind) and keep it when inside the window.
       subroutine record(t, root, residual)
@@ -510,22 +509,24 @@ contains
       end function sample
    end subroutine approximate_boundaries
 
-   !> Roots in ascending β (insertion sort: the list is nearly sorted already).
-   pure subroutine sort_by_beta(roots)
-      type(approximate_root_t), intent(inout) :: roots(:)  !! the roots, sorted in place
-      type(approximate_root_t) :: held
-      integer :: i, j
-      do i = 2, size(roots)
-         held = roots(i)
+   !> The order that sorts `keys` ascending, ties in their given order (an insertion sort of
+   !> the indices: the lists are short and nearly sorted): the roots by β, the crossings by α.
+   pure function ascending_order(keys) result(order)
+      real(wp), intent(in) :: keys(:)  !! the keys
+      integer :: order(size(keys))
+      integer :: i, j, held
+      order = [(i, i=1, size(keys))]
+      do i = 2, size(keys)
+         held = order(i)
          j = i - 1
          do while (j >= 1)
-            if (roots(j)%beta <= held%beta) exit
-            roots(j + 1) = roots(j)
+            if (keys(order(j)) <= keys(held)) exit
+            order(j + 1) = order(j)
             j = j - 1
          end do
-         roots(j + 1) = held
+         order(j + 1) = held
       end do
-   end subroutine sort_by_beta
+   end function ascending_order
 
    !> The unstable β intervals inside [lo, hi] for a method, from its sorted roots of
    !> |S| = 2 in [lo, hi]: between consecutive roots (and the ends) the verdict is
@@ -631,7 +632,7 @@ contains
             end associate
          end do
       end do
-      call sort_crossings(crossings)
+      crossings = crossings(ascending_order(crossings%alpha))
    end subroutine alpha_crossings
 
    !> β of the curve with the same kind, order and parity as `like` among `curves`.
@@ -747,22 +748,6 @@ contains
                                                  2.0_wp*beta_bound/slope
       crossing%alpha_error = max(crossing%alpha_error, 2.0_wp*epsilon(1.0_wp)*abs(x))
    end subroutine refine_crossing
-
-   pure subroutine sort_crossings(crossings)
-      type(alpha_crossing_t), intent(inout) :: crossings(:)
-      type(alpha_crossing_t) :: t
-      integer :: i, j
-      do i = 2, size(crossings)
-         t = crossings(i)
-         j = i - 1
-         do while (j >= 1)
-            if (crossings(j)%alpha <= t%alpha) exit
-            crossings(j + 1) = crossings(j)
-            j = j - 1
-         end do
-         crossings(j + 1) = t
-      end do
-   end subroutine sort_crossings
 
    !> Total length of a union of disjoint intervals (2, m).
    pure real(wp) function interval_length(intervals)

@@ -16,7 +16,7 @@ module hillstab_hill_coefficient
    use hillstab_core_kinds, only: wp
    use hillstab_core_text, only: name_position, alternatives_text
    use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_coefficient, segment_average, model_split, &
-      constant_part_size
+      offset_bound
    use hillstab_hill_model_elastic, only: in_physical_domain, one_minus_alpha_over_pi2
    implicit none
    private
@@ -24,7 +24,7 @@ module hillstab_hill_coefficient
    public :: sampling_endpoint, sampling_midpoint, sampling_average, sampling_name, sampling_from_name, &
       sampling_names_text, sampling_count
    public :: in_physical_domain, one_minus_alpha_over_pi2
-   public :: phase_bound, coefficient_phase
+   public :: phase_bound, split_phases, coefficient_phase
 
    !> Piece value = Q at the start of the piece (N = 2 is the paper's eq. (28)).
    integer, parameter :: sampling_endpoint = 1
@@ -74,11 +74,22 @@ contains
    elemental real(wp) function phase_bound(model, point) result(phase)
       class(hill_model_t), intent(in) :: model  !! the model
       type(hill_point_t), intent(in) :: point   !! α, β, ε
-      real(wp) :: c0, c1
+      real(wp) :: c0, c1, phases(1)
       call model_split(model, point%alpha, point%beta, point%epsilon, c0, c1)
-      phase = 0.5_wp*model%period()* &
-         coefficient_phase(constant_part_size(model, point%alpha, c0), c1, model%shape_root_mean(point%alpha))
+      phases = split_phases(model, point%alpha, [c0], [c1])
+      phase = phases(1)
    end function phase_bound
+
+   !> `phase_bound` of points sharing α from their splits (c₀ with the damping shift), the
+   !> model's constants (period, offset, `shape_root_mean`) taken once for all of them.
+   pure function split_phases(model, alpha, c0s, c1s) result(phases)
+      class(hill_model_t), intent(in) :: model  !! the model
+      real(wp), intent(in) :: alpha             !! α of the points
+      real(wp), intent(in) :: c0s(:), c1s(:)    !! their splits q = c₀ + c₁ w (+ v)
+      real(wp) :: phases(size(c0s))
+      phases = 0.5_wp*model%period()*coefficient_phase(abs(c0s) + offset_bound(model, alpha), c1s, &
+                                                       model%shape_root_mean(alpha))
+   end function split_phases
 
    !> `phase_bound` from q = c₀ + c₁ w and ∫₀¹ √|w| dτ: 2 (√|c₀| + √|c₁| shape_root).
    elemental real(wp) function coefficient_phase(c0, c1, shape_root) result(phase)

@@ -33,7 +33,7 @@ module hillstab_hill_model
    public :: harmonics_none, harmonics_infinite
    public :: hill_coefficient, hill_coefficient_before, segment_average, model_split, damping_shift, model_description
    public :: window_piece_end, model_equation_text
-   public :: coefficient_range, model_coefficient_range, widen_by_offset, constant_part_size
+   public :: coefficient_range, model_coefficient_range, widen_by_offset, offset_bound
    public :: check_point, check_alpha, check_batch, max_magnitude
 
    !> Hill's method does not apply to the model (its transition curves come from elsewhere).
@@ -593,19 +593,17 @@ contains
       q_max = q_max + v_max + slack
    end subroutine widen_by_offset
 
-   !> |c₀| of a point's split, plus the largest |v| of its offset (`has_offset`): the size of
-   !> the β-independent part of q, in which the round-off levels of the methods count the
-   !> rounding of the constant part (c₀ itself for a model without an offset).
-   elemental real(wp) function constant_part_size(model, alpha, c0) result(size_c0)
+   !> The largest |v| of the model's offset over the period (`has_offset`; 0 without one): the
+   !> phase bounds count it with |c₀|, the β-independent part of q.
+   elemental real(wp) function offset_bound(model, alpha) result(bound)
       class(hill_model_t), intent(in) :: model  !! the model
       real(wp), intent(in) :: alpha             !! α
-      real(wp), intent(in) :: c0                !! c₀ of the point's split (`model_split`)
       real(wp) :: v_min, v_max
-      size_c0 = abs(c0)
+      bound = 0.0_wp
       if (.not. model%has_offset()) return
       call model%offset_range(alpha, v_min, v_max)
-      size_c0 = size_c0 + max(abs(v_min), abs(v_max))
-   end function constant_part_size
+      bound = max(abs(v_min), abs(v_max))
+   end function offset_bound
 
    !> err_invalid_parameter unless α lies in the model's domain, naming the domain and the value.
    pure subroutine check_alpha(model, alpha, error)

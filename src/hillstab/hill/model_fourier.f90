@@ -44,6 +44,10 @@ module hillstab_hill_model_fourier
       real(wp) :: p = 2.0_wp         !! the period P in τ
       real(wp) :: f_min = 0.0_wp     !! a lower bound of f over the period
       real(wp) :: f_max = 0.0_wp     !! an upper bound of f over the period
+      !> Σ n² (|cₙ| + |sₙ|): the curvature bound max|f''| ≤ (2π/P)² times it
+      real(wp) :: curvature = 0.0_wp
+      !> the highest n whose n² (|cₙ| + |sₙ|) reaches 1e-3 of `curvature` (0 without a drive)
+      integer :: top_harmonic = 0
    contains
       procedure :: name => fourier_name
       procedure :: formula => fourier_formula
@@ -227,13 +231,7 @@ contains
    elemental real(wp) function fourier_auto_amplitude(self, c0, c1) result(amplitude)
       class(fourier_model_t), intent(in) :: self  !! the model
       real(wp), intent(in) :: c0, c1              !! the split of q
-      integer :: n
-      real(wp) :: curvature
-      curvature = 0.0_wp
-      do n = 1, harmonic_count(self)
-         curvature = curvature + real(n, wp)**2*(abs(self%c(n)) + abs(self%s(n)))
-      end do
-      amplitude = abs(c1)*curvature*(2.0_wp/self%p)**2 + 0.1_wp*abs(c0)
+      amplitude = abs(c1)*self%curvature*(2.0_wp/self%p)**2 + 0.1_wp*abs(c0)
    end function fourier_auto_amplitude
 
    !> The fewest steps per unit of τ of method auto's first mesh: 8 per wavelength of the
@@ -245,19 +243,7 @@ contains
    !> that their difference was a twelfth of the error: 3.9e-10 at tolerance 1e-10.
    elemental integer function fourier_auto_min_steps(self) result(steps)
       class(fourier_model_t), intent(in) :: self  !! the model
-      real(wp) :: weights(harmonic_count(self))
-      integer :: n, top
-      top = 0
-      do n = 1, size(weights)
-         weights(n) = real(n, wp)**2*(abs(self%c(n)) + abs(self%s(n)))
-      end do
-      do n = size(weights), 1, -1
-         if (weights(n) >= 1.0e-3_wp*sum(weights)) then
-            top = n
-            exit
-         end if
-      end do
-      steps = 2*ceiling(8.0_wp*real(top, wp)/self%p)
+      steps = 2*ceiling(8.0_wp*real(self%top_harmonic, wp)/self%p)
    end function fourier_auto_min_steps
 
    !> Q = β + g, g = α f: N harmonics.
@@ -384,6 +370,7 @@ contains
       self%s = ss(1:n)
       self%f_min = 0.0_wp
       self%f_max = 0.0_wp
+      call curvature_of_drive(self)
       if (n == 0) return
       m = 64*n + 64
       delta = self%p/m
@@ -400,4 +387,22 @@ contains
       self%f_min = self%f_min - slack
       self%f_max = self%f_max + slack
    end subroutine set_drive
+
+   !> `curvature` and `top_harmonic` of the drive's coefficients (method auto's first mesh).
+   pure subroutine curvature_of_drive(self)
+      class(fourier_model_t), intent(inout) :: self
+      real(wp) :: weights(size(self%c))
+      integer :: n
+      do n = 1, size(weights)
+         weights(n) = real(n, wp)**2*(abs(self%c(n)) + abs(self%s(n)))
+      end do
+      self%curvature = sum(weights)
+      self%top_harmonic = 0
+      do n = size(weights), 1, -1
+         if (weights(n) >= 1.0e-3_wp*self%curvature) then
+            self%top_harmonic = n
+            exit
+         end if
+      end do
+   end subroutine curvature_of_drive
 end module hillstab_hill_model_fourier

@@ -34,8 +34,8 @@ module hillstab_integrate_auto
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_model, only: hill_model_t, hill_point_t, check_batch, model_split, constant_part_size
-   use hillstab_hill_coefficient, only: coefficient_phase
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, check_batch, model_split
+   use hillstab_hill_coefficient, only: split_phases
    use hillstab_hill_transfer, only: transfer_functions, trace_t, trace_from_scaled
    use hillstab_integrate_magnus, only: trace_magnus
    use hillstab_integrate_refine, only: trace_distance
@@ -292,11 +292,8 @@ contains
          return
       end if
       call steps_for_points(base, model, c0s, c1s, ns)
-      ! the phase bound of each point, for its round-off level (hillstab_integrate_refine),
-      ! over the model's period (the bound is stated for the period 2), an offset counted
-      ! with c₀
-      phases = 0.5_wp*model%period()*coefficient_phase(abs(c0s) + constant_part_size(model, alpha, 0.0_wp), c1s, &
-                                                       model%shape_root_mean(alpha))
+      ! the phase bound of each point, for its round-off level (hillstab_integrate_refine)
+      phases = split_phases(model, alpha, c0s, c1s)
       ! first pass: S_N and S_{N/2} of all points sharing N together, in lanes
       allocate (fine(m), coarse(m), n_coarse(m), pending(m), floors(m), coarse_floors(m), estimates(m), previous(m), &
                 converged(m), handed_over(m))
@@ -493,8 +490,7 @@ contains
       base = auto_base_steps(model, alpha, auto_screen_tolerance)
       call steps_for_points(base, model, c0s, c1s, ns)
       ns = max(screen_min_steps, ns)
-      phases = 0.5_wp*model%period()*coefficient_phase(abs(c0s) + constant_part_size(model, alpha, 0.0_wp), c1s, &
-                                                       model%shape_root_mean(alpha))
+      phases = split_phases(model, alpha, c0s, c1s)
       call screen_lanes(cache, model, alpha, ns, c0s, c1s, phases, traces, floors, coarse, coarser, stats)
       do j = 1, size(betas)
          ! differences of the order of S itself (values of opposite signs, overflow) count
@@ -682,8 +678,7 @@ contains
       real(wp) :: c0, c1, floor(1)
       call model_split(model, alpha, beta, 0.0_wp, c0, c1)
       call build_mesh(model, alpha, n, mesh)
-      call lane_traces(mesh, [c0], [c1], [0.5_wp*model%period()*coefficient_phase(constant_part_size(model, alpha, c0), &
-                                                                                  c1, model%shape_root_mean(alpha))], tr, floor)
+      call lane_traces(mesh, [c0], [c1], split_phases(model, alpha, [c0], [c1]), tr, floor)
       s = tr(1)%value
    end function fixed_n_trace
 end module hillstab_integrate_auto
