@@ -368,6 +368,7 @@ contains
       integer :: n, i, t, count_kind(2), m
       logical :: look_narrow
       type(approximate_root_t), allocatable :: found(:)
+      real(wp), allocatable :: keys(:)
       allocate (roots(0), found(0))
       look_narrow = .false.
       if (present(narrow)) look_narrow = narrow
@@ -410,7 +411,8 @@ contains
          end do
       end do
       ! a narrow pair may lie below a root of the other kind found in the step before
-      roots = found(ascending_order(found%beta))
+      keys = found%beta
+      roots = found(ascending_order(keys))
    contains
       !> Count a root of kind t (in ascending β within its kind) and keep it when inside the window.
       subroutine record(t, root, residual)
@@ -586,7 +588,7 @@ contains
       real(wp), intent(in) :: tolerance     !! target accuracy of α and of the curves' β
       type(alpha_crossing_t), allocatable, intent(out) :: crossings(:)  !! ascending in α
       type(error_t), allocatable, intent(out) :: error  !! Hill's method failed; unallocated on success
-      real(wp), allocatable :: alphas(:)
+      real(wp), allocatable :: alphas(:), keys(:)
       type(sample_curves_t), allocatable :: samples(:)
       real(wp) :: f0, f1, beta1
       integer :: j, c, n
@@ -632,7 +634,8 @@ contains
             end associate
          end do
       end do
-      crossings = crossings(ascending_order(crossings%alpha))
+      keys = crossings%alpha
+      crossings = crossings(ascending_order(keys))
    end subroutine alpha_crossings
 
    !> β of the curve with the same kind, order and parity as `like` among `curves`.
