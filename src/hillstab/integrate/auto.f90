@@ -271,7 +271,7 @@ contains
       base = auto_base_steps(model, alpha, tolerance)
       safety = richardson_safety*model%auto_safety()
       m = size(betas)
-      allocate (c0s(m), c1s(m), ns(m))
+      allocate (c0s(m), c1s(m), ns(m), phases(m))
       do j = 1, m
          call model_split(model, alpha, betas(j), epsilon, c0s(j), c1s(j))
       end do
