@@ -4,7 +4,8 @@
 !> the range of w, the window a method integrates over, the hints of method auto's mesh
 !> and step count, the terms of Hill's method, the paper's two pieces, the α domain and
 !> the texts that headers and messages give), and the point of a chart, `hill_point_t`
-!> (α, β and the damping ε). A concrete model extends `hill_model_t`, carries its own data
+!> (α, β and the damping ε). `hill_model_t` extends `model_base_t` (hillstab_hill_model_base:
+!> name, formula, the variables of a model carrying data). A concrete model extends `hill_model_t`, carries its own data
 !> (coefficients, samples) and is registered in hillstab_hill_models, which builds it from
 !> its name; the methods receive `class(hill_model_t)` and never ask which model it is.
 !>
@@ -24,6 +25,8 @@ module hillstab_hill_model
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
    use hillstab_hill_units, only: physical_t, physical_alpha
+   use hillstab_hill_model_base, only: model_base_t, model_variable_t, model_variable_real, model_variable_list, &
+      model_variable_file
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -41,14 +44,6 @@ module hillstab_hill_model
    !> Hill's method on the pencil −(1 − k cos πτ) x'' + a(t) cos πτ x = β (1 − k cos πτ) x
    !> (`hill_k`, `hill_coupling`, `fourier_decay`): the elastic and the Mathieu coefficient.
    integer, parameter :: hill_form_pencil = 1
-
-   !> A model variable holding one number.
-   integer, parameter :: model_variable_real = 1
-   !> A model variable holding a list of numbers (up to `max_count`).
-   integer, parameter :: model_variable_list = 2
-   !> A model variable naming a file of numbers (one or more per line, `#` comments), read by
-   !> the scene reader and handed to the model as the list of its numbers, row by row.
-   integer, parameter :: model_variable_file = 3
 
    !> `drive_harmonic_count`: Q is not of the form β + g(τ) with g independent of β.
    integer, parameter :: harmonics_none = 0
@@ -83,25 +78,10 @@ module hillstab_hill_model
       real(wp) :: breaks(max_window_breaks) = 0.0_wp
    end type hill_window_t
 
-   !> One variable of a model that carries data (Fourier coefficients, samples): what its
-   !> scene group (named after the model), its template and the C API's
-   !> `hillstab_model_set` know of it.
-   type :: model_variable_t
-      character(len=32) :: name = ""                !! the variable's name
-      integer :: kind = model_variable_list          !! model_variable_real, _list or _file
-      integer :: max_count = 1                       !! most numbers it takes
-      character(len=64) :: default = ""             !! its default as scene text ("" = none)
-      character(len=240) :: help = ""               !! what it means, for templates and docs
-   end type model_variable_t
-
    !> A model of Q(τ; α, β), period `period()` in τ (2 unless the model says otherwise).
    !> At α = 0 every model's Q is the constant β (the chart's axis of an undriven oscillator).
-   type, abstract :: hill_model_t
+   type, abstract, extends(model_base_t) :: hill_model_t
    contains
-      !> the name a scene gives in `&scene model` (lower case)
-      procedure(model_text), deferred :: name
-      !> the coefficient as output headers state it, after "model: <name>, "
-      procedure(model_text), deferred :: formula
       !> Q(τ) without damping
       procedure(coefficient_interface), deferred :: coefficient
       !> exact mean of Q over [τ_a, τ_b] without damping
@@ -141,19 +121,9 @@ module hillstab_hill_model
       procedure :: fourier_decay => entire_decay
       procedure :: drive_harmonic_count => no_drive_harmonics
       procedure :: drive_harmonics => zero_drive_harmonics
-      procedure :: variables => no_variables
-      procedure :: set_values => no_values
-      procedure :: check_values => values_complete
    end type hill_model_t
 
    abstract interface
-      !> A text of the model.
-      pure function model_text(self) result(text)
-         import :: hill_model_t
-         class(hill_model_t), intent(in) :: self  !! the model
-         character(len=:), allocatable :: text
-      end function model_text
-
       !> Q(τ) at the point (α, β), without damping.
       elemental real(wp) function coefficient_interface(self, alpha, beta, tau) result(q)
          import :: hill_model_t, wp
@@ -440,32 +410,6 @@ contains
       c = 0.0_wp
       s = 0.0_wp
    end subroutine zero_drive_harmonics
-
-   !> The variables of a model that carries data: none unless the model has them.
-   pure function no_variables(self) result(variables)
-      class(hill_model_t), intent(in) :: self  !! the model
-      type(model_variable_t), allocatable :: variables(:)
-      allocate (variables(0))
-   end function no_variables
-
-   !> Set a variable of the model (`variables`) to the given numbers: err_invalid_parameter
-   !> unless the model has such a variable.
-   pure subroutine no_values(self, name, values, error)
-      class(hill_model_t), intent(inout) :: self  !! the model
-      character(len=*), intent(in) :: name        !! the variable
-      real(wp), intent(in) :: values(:)           !! its numbers
-      !> err_invalid_parameter naming the model and the variable; unallocated when set
-      type(error_t), allocatable, intent(out) :: error
-      call set_error(error, err_invalid_parameter, "the "//self%name()//" model has no variable '"//trim(name)//"'")
-   end subroutine no_values
-
-   !> After its variables are set: whether the model is complete and consistent (every
-   !> model without variables is).
-   pure subroutine values_complete(self, error)
-      class(hill_model_t), intent(in) :: self  !! the model
-      !> err_invalid_parameter naming what is missing or wrong; unallocated when complete
-      type(error_t), allocatable, intent(out) :: error
-   end subroutine values_complete
 
    !> Damping shift −ε²/4 of eq. (47).
    elemental real(wp) function damping_shift(epsilon)

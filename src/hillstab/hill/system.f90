@@ -1,0 +1,295 @@
+!> A system of Hill equations: n coupled degrees of freedom
+!>
+!>     M x'' + (C + ε M + G) x' + K(τ; α, β) x = 0,   K = P(τ; α) + β B(τ; α),   x in Rⁿ,
+!>
+!> M symmetric positive definite (the masses), C symmetric (damping; the scene's ε adds the
+!> mass-proportional part ε M), G skew (gyroscopic), K periodic in τ with period `period()`
+!> and affine in β as every scalar model is. The abstract type `hill_system_t` extends
+!> `model_base_t` (name, formula, the variables of a model carrying data) and is what the
+!> system methods (hillstab_integrate_system) and verdicts (hillstab_hill_system_floquet)
+!> receive; they never ask which system it is. Concrete systems: the matrix system of the
+!> scenes (hillstab_hill_system_matrix: K = K0 + β B + α Σ (K_kᶜ cos kπτ' + K_kˢ sin kπτ'))
+!> and any scalar model as a system of one equation (hillstab_hill_system_scalar).
+!>
+!> `system_form_t` is what the methods need of a system at one damping, prepared once:
+!> M⁻¹ (Cholesky), the constant block D = −M⁻¹(C + εM + G) of the first-order matrix
+!> A(τ) = [[0, I], [−M⁻¹K(τ), D]] acting on y = (x, x'), whether the system is Hamiltonian
+!> (C = 0, ε = 0, K symmetric: the monodromy Φ keeps the form Ω = [[G, M], [−M, 0]],
+!> ΦᵀΩΦ = Ω, and its multipliers come in pairs λ, 1/λ) and whether half a period is enough
+!> (Hamiltonian, G = 0 and K even about the window's start: Φ = R Y⁻¹ R Y with Y the
+!> solution over half the period and R = diag(I, −I)).
+!>
+!>```fortran
+!> type(system_form_t) :: form
+!> type(error_t), allocatable :: error
+!> call prepare_system(system, epsilon=0.0_wp, form=form, error=error)
+!>```
+module hillstab_hill_system
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
+   use hillstab_core_text, only: integer_text, real_text
+   use hillstab_hill_model_base, only: model_base_t
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   implicit none
+   private
+   public :: hill_system_t, system_form_t, prepare_system, max_dof, check_system_point, system_equation_text, &
+      system_description, symmetric_defect, cholesky_inverse
+
+   !> Most degrees of freedom of a system (a 40 × 40 monodromy; the cost grows as n³).
+   integer, parameter :: max_dof = 20
+
+   !> A system of n coupled Hill equations (see the module's text).
+   type, abstract, extends(model_base_t) :: hill_system_t
+   contains
+      !> n, the degrees of freedom
+      procedure(system_dof), deferred :: dof
+      !> the mass matrix M (n × n, symmetric positive definite)
+      procedure(system_matrix), deferred :: mass
+      !> the stiffness K = p + β b at τ: its two parts p(τ; α) and b(τ; α)
+      procedure(system_stiffness), deferred :: stiffness
+      procedure :: damping => zero_matrix
+      procedure :: gyroscopic => zero_matrix
+      procedure :: period => period_two
+      procedure :: even => not_even
+      procedure :: symmetric => symmetric_stiffness
+      procedure :: alpha_domain => any_alpha
+      procedure :: alpha_valid => finite_alpha
+      procedure :: drive_harmonics => no_harmonics
+   end type hill_system_t
+
+   abstract interface
+      !> The degrees of freedom.
+      pure integer function system_dof(self)
+         import :: hill_system_t
+         class(hill_system_t), intent(in) :: self  !! the system
+      end function system_dof
+
+      !> A constant n × n matrix of the system.
+      pure subroutine system_matrix(self, a)
+         import :: hill_system_t, wp
+         class(hill_system_t), intent(in) :: self  !! the system
+         real(wp), intent(out) :: a(:, :)         !! the matrix (n × n)
+      end subroutine system_matrix
+
+      !> K(τ) = p + β b at the drive α.
+      pure subroutine system_stiffness(self, alpha, tau, p, b)
+         import :: hill_system_t, wp
+         class(hill_system_t), intent(in) :: self  !! the system
+         real(wp), intent(in) :: alpha            !! α
+         real(wp), intent(in) :: tau              !! dimensionless time
+         real(wp), intent(out) :: p(:, :)         !! the part of K independent of β (n × n)
+         real(wp), intent(out) :: b(:, :)         !! the factor of β (n × n)
+      end subroutine system_stiffness
+   end interface
+
+   !> What the methods need of a system at one damping ε (`prepare_system`).
+   type :: system_form_t
+      integer :: n = 0                       !! degrees of freedom
+      real(wp), allocatable :: m(:, :)       !! M
+      real(wp), allocatable :: m_inverse(:, :)  !! M⁻¹
+      real(wp), allocatable :: d(:, :)       !! D = −M⁻¹(C + εM + G)
+      real(wp), allocatable :: g(:, :)       !! G
+      real(wp) :: trace_d = 0.0_wp           !! tr D (Liouville: det Φ = exp(P tr D))
+      real(wp) :: period = 2.0_wp            !! P
+      real(wp) :: epsilon = 0.0_wp           !! ε
+      logical :: hamiltonian = .false.       !! C = 0, ε = 0, K symmetric
+      logical :: half = .false.              !! half a period is enough (Hamiltonian, G = 0, K even)
+      logical :: gyroscopic = .false.        !! G ≠ 0
+   end type system_form_t
+
+contains
+
+   !> No damping: C = 0 unless the system has it.
+   pure subroutine zero_matrix(self, a)
+      class(hill_system_t), intent(in) :: self  !! the system
+      real(wp), intent(out) :: a(:, :)         !! the matrix (n × n)
+      a = 0.0_wp
+   end subroutine zero_matrix
+
+   !> The period of K in τ: 2 unless the system says otherwise.
+   pure real(wp) function period_two(self) result(period)
+      class(hill_system_t), intent(in) :: self  !! the system
+      period = 2.0_wp
+   end function period_two
+
+   !> K is even about τ = 0 (K(−τ) = K(τ)): false unless the system says so.
+   pure logical function not_even(self)
+      class(hill_system_t), intent(in) :: self  !! the system
+      not_even = .false.
+   end function not_even
+
+   !> K(τ) is symmetric at every τ: true unless the system says otherwise (a circulatory
+   !> force, such as a follower load, makes it unsymmetric and the system non-Hamiltonian).
+   pure logical function symmetric_stiffness(self)
+      class(hill_system_t), intent(in) :: self  !! the system
+      symmetric_stiffness = .true.
+   end function symmetric_stiffness
+
+   !> The α domain in words ("" when every finite α is accepted).
+   pure function any_alpha(self) result(text)
+      class(hill_system_t), intent(in) :: self  !! the system
+      character(len=:), allocatable :: text
+      text = ""
+   end function any_alpha
+
+   !> α lies in the system's domain: any finite α unless the system says otherwise.
+   elemental logical function finite_alpha(self, alpha) result(valid)
+      class(hill_system_t), intent(in) :: self  !! the system
+      real(wp), intent(in) :: alpha            !! α
+      valid = ieee_is_finite(alpha)
+   end function finite_alpha
+
+   !> The highest harmonic of K's drive (0: unknown or none); methods use it for their first mesh.
+   pure integer function no_harmonics(self)
+      class(hill_system_t), intent(in) :: self  !! the system
+      no_harmonics = 0
+   end function no_harmonics
+
+   !> The largest |a_ij − a_ji| relative to the largest |a_ij| (0 for a zero matrix).
+   pure real(wp) function symmetric_defect(a, sign) result(defect)
+      real(wp), intent(in) :: a(:, :)  !! a square matrix
+      real(wp), intent(in) :: sign     !! +1: defect from symmetry; −1: from skew symmetry
+      real(wp) :: scale
+      scale = maxval(abs(a))
+      defect = 0.0_wp
+      if (scale > 0.0_wp) defect = maxval(abs(a - sign*transpose(a)))/scale
+   end function symmetric_defect
+
+   !> The inverse of a symmetric positive definite matrix by Cholesky; `ok` false when the
+   !> matrix is not positive definite (a pivot ≤ n ε times its diagonal's largest entry).
+   pure subroutine cholesky_inverse(a, inverse, ok)
+      real(wp), intent(in) :: a(:, :)          !! the matrix (n × n, symmetric)
+      real(wp), intent(out) :: inverse(:, :)   !! its inverse
+      logical, intent(out) :: ok               !! a was positive definite
+      real(wp) :: l(size(a, 1), size(a, 1)), s, floor
+      integer :: n, i, j, k
+      n = size(a, 1)
+      l = 0.0_wp
+      inverse = 0.0_wp
+      ok = .false.
+      floor = n*epsilon(1.0_wp)*maxval(abs([(a(i, i), i=1, n)]))
+      do j = 1, n
+         s = a(j, j) - sum(l(j, 1:j - 1)**2)
+         if (.not. (s > floor)) return
+         l(j, j) = sqrt(s)
+         do i = j + 1, n
+            l(i, j) = (a(i, j) - sum(l(i, 1:j - 1)*l(j, 1:j - 1)))/l(j, j)
+         end do
+      end do
+      ! columns of the inverse: solve L Lᵀ x = e_k
+      do k = 1, n
+         inverse(k, k) = 1.0_wp
+         do i = 1, n
+            inverse(i, k) = (inverse(i, k) - sum(l(i, 1:i - 1)*inverse(1:i - 1, k)))/l(i, i)
+         end do
+         do i = n, 1, -1
+            inverse(i, k) = (inverse(i, k) - sum(l(i + 1:n, i)*inverse(i + 1:n, k)))/l(i, i)
+         end do
+      end do
+      inverse = 0.5_wp*(inverse + transpose(inverse))
+      ok = .true.
+   end subroutine cholesky_inverse
+
+   !> Prepare a system at damping ε for the methods: M⁻¹, D, the flags; err_invalid_parameter
+   !> when M is not symmetric positive definite, C not symmetric or G not skew (naming which),
+   !> or an entry is not finite.
+   subroutine prepare_system(system, epsilon, form, error)
+      class(hill_system_t), intent(in) :: system  !! the system
+      real(wp), intent(in) :: epsilon             !! ε ≥ 0 (the damping ε M)
+      type(system_form_t), intent(out) :: form    !! what the methods need
+      !> err_invalid_parameter naming the matrix; unallocated on success
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: c(:, :), g(:, :)
+      integer :: n, i
+      logical :: ok
+      n = system%dof()
+      if (n < 1 .or. n > max_dof) then
+         call set_error(error, err_invalid_parameter, "n: the degrees of freedom must be 1 to "// &
+            integer_text(max_dof)//", got "//integer_text(n))
+         return
+      end if
+      if (.not. (ieee_is_finite(epsilon) .and. epsilon >= 0.0_wp)) then
+         call set_error(error, err_invalid_parameter, "epsilon must be finite and >= 0")
+         return
+      end if
+      form%n = n
+      allocate (form%m(n, n), form%m_inverse(n, n), form%d(n, n), form%g(n, n), c(n, n), g(n, n))
+      call system%mass(form%m)
+      call system%damping(c)
+      call system%gyroscopic(g)
+      if (.not. (all(ieee_is_finite(form%m)) .and. all(ieee_is_finite(c)) .and. all(ieee_is_finite(g)))) then
+         call set_error(error, err_invalid_parameter, "mass, damping, gyroscopic: the entries must be finite")
+         return
+      end if
+      if (symmetric_defect(form%m, 1.0_wp) > 1.0e-12_wp) then
+         call set_error(error, err_invalid_parameter, "mass: M must be symmetric (|M_ij - M_ji| = "// &
+            real_text(symmetric_defect(form%m, 1.0_wp))//" of its largest entry)")
+         return
+      end if
+      call cholesky_inverse(form%m, form%m_inverse, ok)
+      if (.not. ok) then
+         call set_error(error, err_invalid_parameter, "mass: M must be positive definite (its Cholesky "// &
+            "factorisation meets a pivot <= 0)")
+         return
+      end if
+      if (symmetric_defect(c, 1.0_wp) > 1.0e-12_wp) then
+         call set_error(error, err_invalid_parameter, "damping: C must be symmetric (the skew part is G, "// &
+            "variable gyroscopic)")
+         return
+      end if
+      if (symmetric_defect(g, -1.0_wp) > 1.0e-12_wp) then
+         call set_error(error, err_invalid_parameter, "gyroscopic: G must be skew (G_ji = -G_ij; the "// &
+            "symmetric part is C, variable damping)")
+         return
+      end if
+      form%g = g
+      form%d = -matmul(form%m_inverse, c + g) - epsilon*reshape([(merge(1.0_wp, 0.0_wp, i/n == mod(i, n)), &
+                                                                   i=0, n*n - 1)], [n, n])
+      form%trace_d = sum([(form%d(i, i), i=1, n)])
+      form%period = system%period()
+      form%epsilon = epsilon
+      form%gyroscopic = any(g /= 0.0_wp)
+      form%hamiltonian = all(c == 0.0_wp) .and. epsilon == 0.0_wp .and. system%symmetric()
+      form%half = form%hamiltonian .and. .not. form%gyroscopic .and. system%even()
+   end subroutine prepare_system
+
+   !> err_invalid_parameter unless α lies in the system's domain and α, β are finite with
+   !> magnitudes ≤ 1e15.
+   subroutine check_system_point(system, alpha, beta, error)
+      class(hill_system_t), intent(in) :: system  !! the system
+      real(wp), intent(in) :: alpha, beta         !! the point
+      !> err_invalid_parameter naming the value; unallocated when valid
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. (ieee_is_finite(alpha) .and. ieee_is_finite(beta))) then
+         call set_error(error, err_invalid_parameter, "alpha and beta must be finite")
+      else if (max(abs(alpha), abs(beta)) > 1.0e15_wp) then
+         call set_error(error, err_invalid_parameter, "|alpha|, |beta| must be <= 1e15")
+      else if (.not. system%alpha_valid(alpha)) then
+         call set_error(error, err_invalid_parameter, system%name()//" system needs "//system%alpha_domain()// &
+            ", got alpha = "//real_text(alpha))
+      end if
+   end subroutine check_system_point
+
+   !> The equation and the period as output headers state them.
+   function system_equation_text(system) result(text)
+      class(hill_system_t), intent(in) :: system  !! the system
+      character(len=:), allocatable :: text
+      character(len=32) :: buffer
+      real(wp) :: p
+      p = system%period()
+      if (p == aint(p) .and. abs(p) < 1.0e9_wp) then
+         write (buffer, '(i0)') nint(p)
+      else
+         write (buffer, '(g0)') p
+      end if
+      text = "M x'' + (C + eps M + G) x' + K(tau) x = 0, n = "//integer_text(system%dof())//", period "// &
+             trim(buffer)//" in tau"
+   end function system_equation_text
+
+   !> The line an output header gives the system: "model: system, K(tau) = ...".
+   pure function system_description(system) result(text)
+      class(hill_system_t), intent(in) :: system  !! the system
+      character(len=:), allocatable :: text
+      text = "model: "//system%name()//", "//system%formula()
+   end function system_description
+end module hillstab_hill_system

@@ -1,0 +1,533 @@
+!> The exact one-period monodromy Φ of a system of Hill equations (hillstab_hill_system):
+!> the 2n × 2n fundamental matrix of y' = A(τ) y, A = [[0, I], [−M⁻¹K(τ), D]], y = (x, x'),
+!> over one period from τ = 0, to a tolerance, with an error estimate.
+!>
+!> - `system_magnus6` (and method auto): the sixth-order Magnus integrator of Blanes, Casas
+!>   and Ros in its matrix form (three Gauss nodes; Ω = α₁ + α₃/12 + [−20α₁ − α₃ + C₁,
+!>   α₂ + C₂]/240, C₁ = [α₁, α₂], C₂ = −[α₁, 2α₃ + C₁]/60), each step's exponential by
+!>   scaling and squaring of a degree-12 Taylor polynomial (Paterson–Stockmeyer, ‖X‖₁ ≤ 0.35:
+!>   truncation below 2e-16). N equal steps over the window; the error of Φ is estimated
+!>   by Richardson's comparison with N/2 steps, ‖Φ_N − Φ_{N/2}‖/(2⁶ − 1) (times a safety
+!>   factor 2), and N climbs a ladder (4, 6, 8, 12, 16, 24, … ×√2) until the estimate,
+!>   relative to max(1, max|Φ_ij|), meets the tolerance. `system_magnus4`: the fourth-order
+!>   two-node Magnus integrator, likewise.
+!> - `system_rk`: Dormand–Prince 8(5,3) (hillstab_integrate_rk) on the 4n² entries of the
+!>   fundamental matrix, local tolerance tolerance/10, then /320, the difference of the two
+!>   the estimate (the reference the tests and benchmarks compare with).
+!>
+!> Where half a period is enough (`system_form_t%half`: Hamiltonian, G = 0, K even) the
+!> methods integrate Y over [0, P/2] and return Φ = R Y⁻¹ R Y, Y⁻¹ = Ω⁻¹YᵀΩ by the
+!> symplectic form. The solution is rescaled by powers of two when it grows (`log_scale`:
+!> Φ = e^s Φ̃), so that strongly unstable points do not overflow.
+!>
+!> In a chart the values of K at the Gauss nodes depend on α and the mesh only (K = p + β b):
+!> a `system_nodes_t` keeps them for the meshes used at one α, so that the points of a
+!> row share them, and carries the mesh that met the tolerance at the previous point as the
+!> next point's first try. No module state: threads each use their own `system_nodes_t`.
+!>
+!>```fortran
+!> type(system_form_t) :: form
+!> type(system_monodromy_t) :: result
+!> type(system_nodes_t) :: nodes
+!> call prepare_system(system, 0.0_wp, form, error)
+!> call system_monodromy(system, form, alpha, beta, system_method_t(), nodes, result, error)
+!>```
+module hillstab_integrate_system
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t, set_error, err_integration, err_invalid_parameter
+   use hillstab_core_status, only: status_ok, status_roundoff, status_failed
+   use hillstab_hill_system, only: hill_system_t, system_form_t
+   use hillstab_hill_system_floquet, only: symplectic_form
+   use hillstab_integrate_rk, only: rk_system_t, rk_options_t, rk_integrate, rk_dop853
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   implicit none
+   private
+   public :: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy
+   public :: system_auto, system_magnus4, system_magnus6, system_rk, system_method_name, system_method_from_name
+   public :: system_method_names_text, magnus_ladder, system_exponential
+
+   !> Method auto: `system_magnus6` with the nodes shared along a chart row.
+   integer, parameter :: system_auto = 0
+   !> The fourth-order Magnus integrator (two Gauss nodes), Richardson-controlled.
+   integer, parameter :: system_magnus4 = 3
+   !> The sixth-order Magnus integrator (three Gauss nodes), Richardson-controlled.
+   integer, parameter :: system_magnus6 = 4
+   !> Dormand–Prince 8(5,3) on the fundamental matrix, two tolerances.
+   integer, parameter :: system_rk = 5
+
+   !> The step counts of the Magnus ladder (each has its half among the earlier ones).
+   integer, parameter :: magnus_ladder(*) = [2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512, &
+                                             768, 1024, 1536, 2048, 3072, 4096, 6144, 8192, 12288, 16384]
+
+   !> A method and its tolerance.
+   type :: system_method_t
+      integer :: kind = system_auto        !! system_auto, _magnus4, _magnus6 or _rk
+      real(wp) :: tolerance = 1.0e-10_wp   !! target error of Φ, relative to max(1, max|Φ_ij|)
+   end type system_method_t
+
+   !> The monodromy of one point.
+   type :: system_monodromy_t
+      real(wp), allocatable :: phi(:, :)   !! Φ̃ (2n × 2n): Φ = e^s Φ̃
+      real(wp) :: log_scale = 0.0_wp       !! s
+      !> the estimated error of Φ̃'s entries relative to max(1, max|Φ̃_ij|)
+      real(wp) :: error_estimate = 0.0_wp
+      integer :: status = status_ok        !! status_ok, status_roundoff or status_failed
+      integer :: steps = 0                 !! steps (Magnus) or right-hand sides (rk) spent
+   end type system_monodromy_t
+
+   !> K at the Gauss nodes of one mesh at one α: −M⁻¹p and −M⁻¹b.
+   type :: node_level_t
+      logical :: ready = .false.
+      real(wp), allocatable :: lp(:, :, :), lb(:, :, :)  !! n × n × (nodes)
+   end type node_level_t
+
+   !> What the points of one α share (see the module's text).
+   type :: system_nodes_t
+      real(wp) :: alpha = huge(1.0_wp)     !! the α of the levels held
+      integer :: order = 0                 !! the Magnus order they are for
+      type(node_level_t) :: levels(size(magnus_ladder))
+      integer :: hint = 0                  !! ladder index that met the tolerance at the last point
+   end type system_nodes_t
+
+   !> The right-hand side of the fundamental matrix for rk.
+   type, extends(rk_system_t) :: fundamental_t
+      class(hill_system_t), allocatable :: system
+      type(system_form_t) :: form
+      real(wp) :: alpha = 0.0_wp, beta = 0.0_wp
+      real(wp), allocatable :: p(:, :), b(:, :)
+   contains
+      procedure :: rhs => fundamental_rhs
+   end type fundamental_t
+
+   real(wp), parameter :: sqrt15 = 3.87298334620741688_wp, sqrt3 = 1.73205080756887729_wp
+   real(wp), parameter :: safety = 2.0_wp
+
+contains
+
+   !> The name of a system method.
+   pure function system_method_name(kind) result(name)
+      integer, intent(in) :: kind  !! system_*
+      character(len=:), allocatable :: name
+      select case (kind)
+      case (system_auto); name = "auto"
+      case (system_magnus4); name = "magnus4"
+      case (system_magnus6); name = "magnus6"
+      case (system_rk); name = "rk"
+      case default; name = "unknown"
+      end select
+   end function system_method_name
+
+   !> The method of a name (−1: none).
+   pure integer function system_method_from_name(name) result(kind)
+      character(len=*), intent(in) :: name  !! a method name
+      select case (name)
+      case ("auto"); kind = system_auto
+      case ("magnus4"); kind = system_magnus4
+      case ("magnus6"); kind = system_magnus6
+      case ("rk"); kind = system_rk
+      case default; kind = -1
+      end select
+   end function system_method_from_name
+
+   !> The methods systems take, for messages.
+   pure function system_method_names_text() result(text)
+      character(len=:), allocatable :: text
+      text = "auto, magnus4, magnus6, rk"
+   end function system_method_names_text
+
+   !> The monodromy of the system at (α, β) by `method`.
+   subroutine system_monodromy(system, form, alpha, beta, method, nodes, result, error)
+      class(hill_system_t), intent(in) :: system   !! the system
+      type(system_form_t), intent(in) :: form      !! prepared at the point's ε
+      real(wp), intent(in) :: alpha, beta          !! the point
+      type(system_method_t), intent(in) :: method  !! method and tolerance
+      type(system_nodes_t), intent(inout) :: nodes !! shared along a row (a fresh one for one point)
+      type(system_monodromy_t), intent(out) :: result  !! Φ, its scale, error estimate and status
+      !> err_integration when no mesh of the ladder meets the tolerance (status_failed);
+      !> unallocated otherwise
+      type(error_t), allocatable, intent(out) :: error
+      select case (method%kind)
+      case (system_rk)
+         call monodromy_rk(system, form, alpha, beta, method%tolerance, result, error)
+      case (system_magnus4)
+         call monodromy_magnus(system, form, alpha, beta, method%tolerance, 4, nodes, result, error)
+      case default
+         call monodromy_magnus(system, form, alpha, beta, method%tolerance, 6, nodes, result, error)
+      end select
+   end subroutine system_monodromy
+
+   !> The window: half the period (`form%half`) or the period.
+   pure real(wp) function window_length(form)
+      type(system_form_t), intent(in) :: form
+      window_length = form%period
+      if (form%half) window_length = 0.5_wp*form%period
+   end function window_length
+
+   !> Fill the nodes of ladder level j at α (Gauss nodes of N steps over the window).
+   subroutine fill_level(system, form, alpha, order, j, nodes)
+      class(hill_system_t), intent(in) :: system
+      type(system_form_t), intent(in) :: form
+      real(wp), intent(in) :: alpha
+      integer, intent(in) :: order, j
+      type(system_nodes_t), intent(inout) :: nodes
+      integer :: steps, k, q, nq, n
+      real(wp) :: h, tau, c(3)
+      real(wp), allocatable :: p(:, :), b(:, :)
+      if (nodes%alpha /= alpha .or. nodes%order /= order) then
+         do k = 1, size(nodes%levels)
+            nodes%levels(k)%ready = .false.
+         end do
+         nodes%alpha = alpha
+         nodes%order = order
+      end if
+      if (nodes%levels(j)%ready) return
+      n = form%n
+      steps = magnus_ladder(j)
+      h = window_length(form)/steps
+      if (order == 6) then
+         nq = 3
+         c = [0.5_wp - sqrt15/10.0_wp, 0.5_wp, 0.5_wp + sqrt15/10.0_wp]
+      else
+         nq = 2
+         c = [0.5_wp - sqrt3/6.0_wp, 0.5_wp + sqrt3/6.0_wp, 0.0_wp]
+      end if
+      if (allocated(nodes%levels(j)%lp)) deallocate (nodes%levels(j)%lp, nodes%levels(j)%lb)
+      allocate (nodes%levels(j)%lp(n, n, nq*steps), nodes%levels(j)%lb(n, n, nq*steps), p(n, n), b(n, n))
+      do k = 1, steps
+         do q = 1, nq
+            tau = (k - 1 + c(q))*h
+            call system%stiffness(alpha, tau, p, b)
+            nodes%levels(j)%lp(:, :, nq*(k - 1) + q) = -matmul(form%m_inverse, p)
+            nodes%levels(j)%lb(:, :, nq*(k - 1) + q) = -matmul(form%m_inverse, b)
+         end do
+      end do
+      nodes%levels(j)%ready = .true.
+   end subroutine fill_level
+
+   !> A first ladder level from the size of A: about 0.6 steps per unit of √‖M⁻¹K‖ τ and per
+   !> drive harmonic, over the window.
+   integer function first_level(system, form, alpha, beta) result(j)
+      class(hill_system_t), intent(in) :: system
+      type(system_form_t), intent(in) :: form
+      real(wp), intent(in) :: alpha, beta
+      real(wp), allocatable :: p(:, :), b(:, :)
+      real(wp) :: size_a, want
+      integer :: k
+      allocate (p(form%n, form%n), b(form%n, form%n))
+      size_a = 0.0_wp
+      do k = 0, 3
+         call system%stiffness(alpha, 0.25_wp*k*form%period, p, b)
+         size_a = max(size_a, maxval(sum(abs(matmul(form%m_inverse, p + beta*b)), dim=2)))
+      end do
+      size_a = max(size_a, maxval(sum(abs(form%d), dim=2))**2)
+      want = window_length(form)*(0.6_wp*sqrt(size_a) + 1.0_wp*max(1, system%drive_harmonics())*2.0_wp/form%period)
+      j = 3
+      do while (j < size(magnus_ladder) - 2 .and. magnus_ladder(j) < want)
+         j = j + 1
+      end do
+   end function first_level
+
+   !> Magnus of order 4 or 6 up the ladder until the Richardson estimate meets the tolerance.
+   subroutine monodromy_magnus(system, form, alpha, beta, tolerance, order, nodes, result, error)
+      class(hill_system_t), intent(in) :: system
+      type(system_form_t), intent(in) :: form
+      real(wp), intent(in) :: alpha, beta, tolerance
+      integer, intent(in) :: order
+      type(system_nodes_t), intent(inout) :: nodes
+      type(system_monodromy_t), intent(out) :: result
+      type(error_t), allocatable, intent(out) :: error
+      integer :: m, j, jh, last, k
+      real(wp), allocatable :: phi(:, :, :)
+      real(wp) :: s(size(magnus_ladder)), estimate, previous, scale, floor, need
+      logical :: done(size(magnus_ladder))
+      m = 2*form%n
+      allocate (phi(m, m, size(magnus_ladder)))
+      done = .false.
+      last = size(magnus_ladder)
+      if (nodes%hint > 0 .and. nodes%alpha == alpha .and. nodes%order == order) then
+         j = nodes%hint
+      else
+         j = first_level(system, form, alpha, beta)
+      end if
+      previous = huge(1.0_wp)
+      result%steps = 0
+      do
+         jh = half_level(j)
+         do k = 1, 2
+            if (k == 1) then
+               call ensure(jh)
+            else
+               call ensure(j)
+            end if
+         end do
+         scale = max(1.0_wp, maxval(abs(phi(:, :, j))))
+         estimate = safety*maxval(abs(phi(:, :, j) - phi(:, :, jh)*exp(s(jh) - s(j))))/ &
+                    (2.0_wp**order - 1.0_wp)/scale
+         floor = 16.0_wp*epsilon(1.0_wp)*magnus_ladder(j)
+         if (.not. ieee_is_finite(estimate)) estimate = huge(1.0_wp)
+         if (estimate <= tolerance) then
+            result%status = status_ok
+            exit
+         end if
+         if (estimate <= floor .or. (estimate < 1.0e-7_wp .and. estimate > 0.5_wp*previous)) then
+            result%status = status_roundoff
+            exit
+         end if
+         if (j >= last) then
+            result%status = status_failed
+            call set_error(error, err_integration, "magnus: no mesh of up to "//trim(int_text(magnus_ladder(last)))// &
+               " steps meets the tolerance (estimate "//trim(real_short(estimate))//")")
+            exit
+         end if
+         previous = estimate
+         ! the mesh the estimate asks for, by the order (at least the next level)
+         need = magnus_ladder(j)*(estimate/tolerance)**(1.0_wp/order)*1.1_wp
+         j = j + 1
+         do while (j < last .and. magnus_ladder(j) < need)
+            j = j + 1
+         end do
+      end do
+      result%phi = phi(:, :, j)
+      result%log_scale = s(j)
+      result%error_estimate = max(estimate, epsilon(1.0_wp))
+      ! the next point of the row starts one level lower when this one had room to spare
+      nodes%hint = j
+      if (result%status == status_ok .and. estimate*2.0_wp**(order/2) < tolerance .and. j > 3) nodes%hint = j - 1
+      if (.not. all(ieee_is_finite(result%phi))) then
+         result%status = status_failed
+         if (.not. allocated(error)) call set_error(error, err_integration, "magnus: the monodromy is not finite")
+      end if
+
+   contains
+
+      subroutine ensure(level)
+         integer, intent(in) :: level
+         if (done(level)) return
+         call fill_level(system, form, alpha, order, level, nodes)
+         call magnus_mesh(form, beta, order, magnus_ladder(level), nodes%levels(level), phi(:, :, level), s(level))
+         result%steps = result%steps + magnus_ladder(level)
+         done(level) = .true.
+      end subroutine ensure
+   end subroutine monodromy_magnus
+
+   !> The ladder index of half the steps of level j.
+   pure integer function half_level(j) result(jh)
+      integer, intent(in) :: j
+      integer :: k
+      jh = 1
+      do k = 1, j - 1
+         if (2*magnus_ladder(k) == magnus_ladder(j)) jh = k
+      end do
+   end function half_level
+
+   !> Y over the window by N Magnus steps, then Φ (from the half period when `form%half`).
+   subroutine magnus_mesh(form, beta, order, steps, level, phi, log_scale)
+      type(system_form_t), intent(in) :: form
+      real(wp), intent(in) :: beta
+      integer, intent(in) :: order, steps
+      type(node_level_t), intent(in) :: level
+      real(wp), intent(out) :: phi(:, :)
+      real(wp), intent(out) :: log_scale
+      integer :: n, m, k, i, nq
+      real(wp) :: h, big
+      real(wp) :: y(2*form%n, 2*form%n), a(2*form%n, 2*form%n, 3), big_omega(2*form%n, 2*form%n), &
+                  e(2*form%n, 2*form%n)
+      n = form%n
+      m = 2*n
+      nq = merge(3, 2, order == 6)
+      h = window_length(form)/steps
+      y = identity(m)
+      log_scale = 0.0_wp
+      ! the constant blocks of A
+      a = 0.0_wp
+      do i = 1, nq
+         do k = 1, n
+            a(k, n + k, i) = 1.0_wp
+         end do
+         a(n + 1:m, n + 1:m, i) = form%d
+      end do
+      do k = 1, steps
+         do i = 1, nq
+            a(n + 1:m, 1:n, i) = level%lp(:, :, nq*(k - 1) + i) + beta*level%lb(:, :, nq*(k - 1) + i)
+         end do
+         if (order == 6) then
+            big_omega = magnus6_exponent(a(:, :, 1), a(:, :, 2), a(:, :, 3), h)
+         else
+            big_omega = 0.5_wp*h*(a(:, :, 1) + a(:, :, 2)) + (sqrt3*h*h/12.0_wp)*commutator(a(:, :, 2), a(:, :, 1))
+         end if
+         call system_exponential(big_omega, e)
+         y = matmul(e, y)
+         big = maxval(abs(y))
+         if (big > 1.0e100_wp) then
+            y = y*2.0_wp**(-exponent(big))
+            log_scale = log_scale + exponent(big)*log(2.0_wp)
+         end if
+      end do
+      if (form%half) then
+         call full_from_half(form, y, phi)
+         log_scale = 2.0_wp*log_scale
+      else
+         phi = y
+      end if
+   end subroutine magnus_mesh
+
+   !> Φ = R Y⁻¹ R Y with Y⁻¹ = Ω⁻¹ Yᵀ Ω (Hamiltonian, G = 0, K even).
+   pure subroutine full_from_half(form, y, phi)
+      type(system_form_t), intent(in) :: form
+      real(wp), intent(in) :: y(:, :)
+      real(wp), intent(out) :: phi(:, :)
+      real(wp) :: omega(size(y, 1), size(y, 1)), omega_inverse(size(y, 1), size(y, 1)), r(size(y, 1))
+      integer :: n, m, i
+      n = form%n
+      m = 2*n
+      omega = symplectic_form(form)
+      omega_inverse = 0.0_wp
+      omega_inverse(1:n, n + 1:m) = -form%m_inverse
+      omega_inverse(n + 1:m, 1:n) = form%m_inverse
+      r = [(merge(1.0_wp, -1.0_wp, i <= n), i=1, m)]
+      phi = matmul(omega_inverse, matmul(transpose(y), omega))
+      ! R Y⁻¹ R: row and column signs
+      do i = 1, m
+         phi(i, :) = r(i)*phi(i, :)*r
+      end do
+      phi = matmul(phi, y)
+   end subroutine full_from_half
+
+   !> The sixth-order Magnus exponent of one step from A at the three Gauss nodes.
+   pure function magnus6_exponent(a1, a2, a3, h) result(big_omega)
+      real(wp), intent(in) :: a1(:, :), a2(:, :), a3(:, :), h
+      real(wp) :: big_omega(size(a1, 1), size(a1, 1))
+      real(wp), dimension(size(a1, 1), size(a1, 1)) :: alpha1, alpha2, alpha3, c1, c2
+      alpha1 = h*a2
+      alpha2 = (sqrt15*h/3.0_wp)*(a3 - a1)
+      alpha3 = (10.0_wp*h/3.0_wp)*(a3 - 2.0_wp*a2 + a1)
+      c1 = commutator(alpha1, alpha2)
+      c2 = -commutator(alpha1, 2.0_wp*alpha3 + c1)/60.0_wp
+      big_omega = alpha1 + alpha3/12.0_wp + commutator(-20.0_wp*alpha1 - alpha3 + c1, alpha2 + c2)/240.0_wp
+   end function magnus6_exponent
+
+   !> [a, b] = ab − ba.
+   pure function commutator(a, b) result(c)
+      real(wp), intent(in) :: a(:, :), b(:, :)
+      real(wp) :: c(size(a, 1), size(a, 1))
+      c = matmul(a, b) - matmul(b, a)
+   end function commutator
+
+   !> The identity of order m.
+   pure function identity(m) result(a)
+      integer, intent(in) :: m
+      real(wp) :: a(m, m)
+      integer :: i
+      a = 0.0_wp
+      do i = 1, m
+         a(i, i) = 1.0_wp
+      end do
+   end function identity
+
+   !> e^X by scaling and squaring: X/2^j with ‖X/2^j‖₁ ≤ 0.35, its Taylor polynomial of
+   !> degree 12 by Paterson–Stockmeyer (six products), squared j times.
+   pure subroutine system_exponential(x, e)
+      real(wp), intent(in) :: x(:, :)     !! X (m × m)
+      real(wp), intent(out) :: e(:, :)    !! e^X
+      real(wp), dimension(size(x, 1), size(x, 1)) :: x1, x2, x3, x4, b0, b1, b2, id
+      real(wp) :: norm, c(0:12)
+      integer :: j, k, m
+      m = size(x, 1)
+      norm = maxval(sum(abs(x), dim=1))
+      j = 0
+      if (norm > 0.35_wp) j = max(0, ceiling(log(norm/0.35_wp)/log(2.0_wp)))
+      x1 = x*2.0_wp**(-j)
+      c(0) = 1.0_wp
+      do k = 1, 12
+         c(k) = c(k - 1)/k
+      end do
+      id = identity(m)
+      x2 = matmul(x1, x1)
+      x3 = matmul(x2, x1)
+      x4 = matmul(x2, x2)
+      b0 = c(0)*id + c(1)*x1 + c(2)*x2 + c(3)*x3
+      b1 = c(4)*id + c(5)*x1 + c(6)*x2 + c(7)*x3
+      b2 = c(8)*id + c(9)*x1 + c(10)*x2 + c(11)*x3 + c(12)*x4
+      e = b0 + matmul(x4, b1 + matmul(x4, b2))
+      do k = 1, j
+         e = matmul(e, e)
+      end do
+   end subroutine system_exponential
+
+   !> y' = A y for the m × m fundamental matrix, column by column.
+   subroutine fundamental_rhs(self, t, y, dydt)
+      class(fundamental_t), intent(inout) :: self
+      real(wp), intent(in) :: t, y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer :: n, m, col, o
+      real(wp), allocatable :: l(:, :)
+      n = self%form%n
+      m = 2*n
+      call self%system%stiffness(self%alpha, t, self%p, self%b)
+      l = -matmul(self%form%m_inverse, self%p + self%beta*self%b)
+      do col = 1, m
+         o = (col - 1)*m
+         dydt(o + 1:o + n) = y(o + n + 1:o + m)
+         dydt(o + n + 1:o + m) = matmul(l, y(o + 1:o + n)) + matmul(self%form%d, y(o + n + 1:o + m))
+      end do
+   end subroutine fundamental_rhs
+
+   !> DOP853 at tolerance/10, then /320: the second value, the difference the estimate.
+   subroutine monodromy_rk(system, form, alpha, beta, tolerance, result, error)
+      class(hill_system_t), intent(in) :: system
+      type(system_form_t), intent(in) :: form
+      real(wp), intent(in) :: alpha, beta, tolerance
+      type(system_monodromy_t), intent(out) :: result
+      type(error_t), allocatable, intent(out) :: error
+      type(fundamental_t) :: f
+      type(rk_options_t) :: options
+      real(wp), allocatable :: y(:), first(:, :), second(:, :)
+      real(wp) :: t, local, scale, estimate
+      integer :: m, pass
+      m = 2*form%n
+      allocate (f%system, source=system)
+      f%form = form
+      f%alpha = alpha
+      f%beta = beta
+      allocate (f%p(form%n, form%n), f%b(form%n, form%n))
+      local = max(0.1_wp*tolerance, 1.0e-14_wp)
+      result%status = status_ok
+      do pass = 1, 2
+         y = reshape(identity(m), [m*m])
+         t = 0.0_wp
+         options = rk_options_t(method=rk_dop853, rtol=local, atol=local, max_steps=2000000)
+         call rk_integrate(f, t, window_length(form), y, options, error=error)
+         if (allocated(error)) then
+            result%status = status_failed
+            allocate (result%phi(m, m))
+            result%phi = 0.0_wp
+            return
+         end if
+         allocate (second(m, m))
+         if (form%half) then
+            call full_from_half(form, reshape(y, [m, m]), second)
+         else
+            second = reshape(y, [m, m])
+         end if
+         if (pass == 1) call move_alloc(second, first)
+         local = max(local/320.0_wp, 1.0e-15_wp)
+      end do
+      scale = max(1.0_wp, maxval(abs(second)))
+      estimate = maxval(abs(second - first))/scale/32.0_wp
+      result%phi = second
+      result%error_estimate = max(estimate, epsilon(1.0_wp))
+      if (estimate > tolerance) result%status = status_roundoff
+   end subroutine monodromy_rk
+
+   pure function int_text(i) result(text)
+      integer, intent(in) :: i
+      character(len=16) :: text
+      write (text, '(i0)') i
+   end function int_text
+
+   pure function real_short(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=16) :: text
+      write (text, '(es9.2)') x
+   end function real_short
+end module hillstab_integrate_system
