@@ -100,7 +100,8 @@ contains
    !> model takes any finite ν).
    subroutine check_alpha_domain(path, model, group, variable, alpha, error, where)
       character(len=*), intent(in) :: path  !! the scene file
-      class(hill_model_t), intent(in) :: model  !! the model (the domain of α)
+      !> the model (the domain of α); absent for a system (any finite α)
+      class(hill_model_t), intent(in), optional :: model
       character(len=*), intent(in) :: group, variable  !! the namelist group
       real(wp), intent(in) :: alpha  !! a finite value
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable; unallocated when fine
@@ -108,6 +109,7 @@ contains
       character(len=:), allocatable :: prefix
       prefix = ""
       if (present(where)) prefix = where//": "
+      if (.not. present(model)) return
       if (model%alpha_valid(alpha)) return
       call fail(error, path, group, variable, prefix//"the "//model%name()//" model needs "// &
          model%alpha_domain()//" (amplitude a < rho), got alpha = "//real_text(alpha))

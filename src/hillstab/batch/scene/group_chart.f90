@@ -64,7 +64,7 @@ contains
    subroutine read_chart_group(file, group, model, grid, values, error)
       type(scene_file_t), intent(in) :: file  !! the scene file
       type(group_t), intent(in) :: group      !! the declaration (`chart_group`, maybe other defaults)
-      class(hill_model_t), intent(in) :: model  !! the model (the domain of α)
+      class(hill_model_t), intent(in), optional :: model  !! the model (the domain of α; absent: a system)
       type(chart_grid_t), intent(out) :: grid  !! the grid
       type(group_values_t), intent(out) :: values  !! the effective values
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable

@@ -18,10 +18,12 @@ module hillstab_batch_scene_group_model
    use hillstab_core_text, only: real_text, integer_text, quoted, read_text_line, fpe_state_t, halting_off, &
       halting_restore
    use hillstab_hill_model, only: model_variable_t, model_variable_real, model_variable_list, model_variable_file
+   use hillstab_hill_model_base, only: model_base_t
    use hillstab_batch_scene_file, only: scene_file_t, item_t, group_items, group_present, fail, shortened, &
       max_line_length
    use hillstab_batch_scene_declaration, only: group_values_t, var_real, var_real_list, var_path
    use hillstab_batch_scene_types, only: scene_t
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
    public :: read_model_group, model_group_name
@@ -33,7 +35,11 @@ contains
       type(scene_t), intent(in) :: scene  !! a scene whose `&scene` is read
       character(len=:), allocatable :: name
       name = ""
-      if (size(scene%model%variables()) > 0) name = scene%model%name()
+      if (allocated(scene%system)) then
+         name = scene%system%name()
+      else if (size(scene%model%variables()) > 0) then
+         name = scene%model%name()
+      end if
    end function model_group_name
 
    !> Read the model's group (when the model has variables), set the model's data and the
@@ -42,30 +48,44 @@ contains
       type(scene_file_t), intent(in) :: file  !! the scene file
       type(scene_t), intent(inout) :: scene   !! its model set from the group
       type(error_t), allocatable, intent(out) :: error  !! what is wrong, named
+      if (allocated(scene%system)) then
+         call read_data_group(file, scene%system, scene%model_group, scene%model_values, error)
+      else
+         call read_data_group(file, scene%model, scene%model_group, scene%model_values, error)
+      end if
+   end subroutine read_model_group
+
+   !> The group of any model object (a scalar model or a system) from its variables.
+   subroutine read_data_group(file, model, model_group, model_values, error)
+      type(scene_file_t), intent(in) :: file  !! the scene file
+      class(model_base_t), intent(inout) :: model  !! set from the group
+      logical, intent(out) :: model_group   !! the model has variables (and so a group)
+      type(group_values_t), intent(inout) :: model_values  !! the effective values
+      type(error_t), allocatable, intent(out) :: error  !! what is wrong, named
       type(model_variable_t), allocatable :: variables(:)
       type(item_t), allocatable :: items(:)
       type(error_t), allocatable :: cause
       character(len=:), allocatable :: group, value, known
       real(wp), allocatable :: numbers(:)
       integer :: k, v, eq
-      variables = scene%model%variables()
-      scene%model_group = size(variables) > 0
-      if (.not. scene%model_group) return
-      group = scene%model%name()
+      variables = model%variables()
+      model_group = size(variables) > 0
+      if (.not. model_group) return
+      group = model%name()
       ! the effective values start at the declared defaults
-      scene%model_values%group = group
-      scene%model_values%present = group_present(file%unit, group)
-      allocate (scene%model_values%values(size(variables)))
+      model_values%group = group
+      model_values%present = group_present(file%unit, group)
+      allocate (model_values%values(size(variables)))
       known = ""
       do v = 1, size(variables)
          if (v > 1) known = known//", "
          known = known//trim(variables(v)%name)
          ! component by component: gfortran leaks the trimmed texts given to a structure constructor
-         scene%model_values%values(v)%name = trim(variables(v)%name)
-         scene%model_values%values(v)%kind = value_kind(variables(v)%kind)
-         scene%model_values%values(v)%given = .false.
-         scene%model_values%values(v)%written = .true.
-         scene%model_values%values(v)%text = trim(variables(v)%default)
+         model_values%values(v)%name = trim(variables(v)%name)
+         model_values%values(v)%kind = value_kind(variables(v)%kind)
+         model_values%values(v)%given = .false.
+         model_values%values(v)%written = .true.
+         model_values%values(v)%text = trim(variables(v)%default)
       end do
       call group_items(file%unit, group, items)
       do k = 1, size(items)
@@ -93,20 +113,26 @@ contains
             call read_numbers_file(file%path, group, items(k)%name, unquoted(value), variables(v)%max_count, &
                                    numbers, error)
          case default
-            call read_number_list(file%path, group, items(k)%name, value, variables(v)%max_count, &
-                                  variables(v)%kind == model_variable_real, numbers, error)
+            if ((value(1:1) == "'" .or. value(1:1) == '"') .and. variables(v)%kind == model_variable_list) then
+               ! a quoted path in place of the list: the numbers of a file, row by row
+               call read_rows_file(file%path, group, items(k)%name, unquoted(value), variables(v)%max_count, &
+                                   numbers, error)
+            else
+               call read_number_list(file%path, group, items(k)%name, value, variables(v)%max_count, &
+                                     variables(v)%kind == model_variable_real, numbers, error)
+            end if
          end select
          if (allocated(error)) return
-         call scene%model%set_values(items(k)%name, numbers, cause)
+         call model%set_values(items(k)%name, numbers, cause)
          if (allocated(cause)) then
             call fail_from_model(file%path, group, items(k)%name, cause%message, error)
             return
          end if
-         call record(scene%model_values, variables, v, numbers)
+         call record(model_values, variables, v, numbers)
       end do
-      call scene%model%check_values(cause)
+      call model%check_values(cause)
       if (allocated(cause)) call fail_from_model(file%path, group, trim(variables(1)%name), cause%message, error)
-   end subroutine read_model_group
+   end subroutine read_data_group
 
    !> The declaration kind of a model variable's effective value.
    pure integer function value_kind(kind)
@@ -314,6 +340,65 @@ contains
          end do
       end if
    end subroutine read_numbers_file
+
+   !> Every number of a file, row after row (a matrix's rows, `#` comments, blank lines
+   !> skipped): a list variable given as a quoted path. Errors name the file and its line.
+   subroutine read_rows_file(source, group, variable, path, max_count, numbers, error)
+      character(len=*), intent(in) :: source, group, variable, path
+      integer, intent(in) :: max_count
+      real(wp), allocatable, intent(out) :: numbers(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: unit, ios, line_number, width
+      character(len=512) :: msg
+      character(len=:), allocatable :: line
+      real(wp), allocatable :: row(:)
+      logical :: too_long
+      type(fpe_state_t) :: fpe
+      open (newunit=unit, file=path, status="old", action="read", iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         call fail(error, source, group, variable, "cannot open '"//path//"': "//trim(msg))
+         return
+      end if
+      allocate (numbers(0))
+      line_number = 0
+      call halting_off(fpe)
+      do
+         call read_text_line(unit, line, ios, max_line_length, too_long)
+         if (ios /= 0 .and. .not. too_long) exit
+         line_number = line_number + 1
+         if (too_long) then
+            call fail(error, source, group, variable, "'"//path//"' line "//integer_text(line_number)// &
+               ": longer than "//integer_text(max_line_length)//" characters")
+            exit
+         end if
+         if (index(line, "#") > 0) line = line(:index(line, "#") - 1)
+         if (verify(line, " "//achar(9)//achar(13)//",") == 0) cycle
+         width = fields(line)
+         allocate (row(width))
+         read (line, *, iostat=ios) row
+         if (ios /= 0 .or. verify(line, " ,0123456789.+-eEdD"//achar(9)//achar(13)) /= 0) then
+            call fail(error, source, group, variable, "'"//path//"' line "//integer_text(line_number)// &
+               ": cannot read '"//shortened(trim(line))//"' as numbers")
+            exit
+         end if
+         if (.not. all(ieee_is_finite(row))) then
+            call fail(error, source, group, variable, "'"//path//"' line "//integer_text(line_number)// &
+               ": the numbers must be finite")
+            exit
+         end if
+         numbers = [numbers, row]
+         deallocate (row)
+         if (size(numbers) > max_count) then
+            call fail(error, source, group, variable, "'"//path//"': more than "//integer_text(max_count)// &
+               " numbers")
+            exit
+         end if
+      end do
+      call halting_restore(fpe)
+      close (unit)
+      if (.not. allocated(error) .and. size(numbers) == 0) &
+         call fail(error, source, group, variable, "'"//path//"' holds no numbers")
+   end subroutine read_rows_file
 
    !> The number of blank- or comma-separated fields of a line.
    pure integer function fields(line) result(n)

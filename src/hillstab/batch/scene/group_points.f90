@@ -38,7 +38,7 @@ contains
    subroutine read_points_group(scene_file, group, model, path, pairs, values, error, optional)
       type(scene_file_t), intent(in) :: scene_file  !! the scene file
       type(group_t), intent(in) :: group      !! the declaration (`points_group`)
-      class(hill_model_t), intent(in) :: model  !! the model (the domain of α)
+      class(hill_model_t), intent(in), optional :: model  !! the model (the domain of α; absent: a system)
       character(len=:), allocatable, intent(out) :: path  !! the points file named
       real(wp), allocatable, intent(out) :: pairs(:, :)  !! (2, n): α, β in file order
       type(group_values_t), intent(out) :: values  !! the effective values
@@ -76,7 +76,7 @@ contains
    !> max_line_length characters.
    subroutine read_points_file(source, model, path, points, error)
       character(len=*), intent(in) :: source  !! the scene file (for messages)
-      class(hill_model_t), intent(in) :: model  !! the model (the domain of α)
+      class(hill_model_t), intent(in), optional :: model  !! the model (the domain of α; absent: a system)
       character(len=*), intent(in) :: path    !! the points file
       real(wp), allocatable, intent(out) :: points(:, :)  !! (2, n): α, β in file order
       type(error_t), allocatable, intent(out) :: error  !! err_input naming &points file

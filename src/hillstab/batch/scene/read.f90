@@ -18,6 +18,8 @@ module hillstab_batch_scene_read
    use hillstab_core_text, only: real_text, quoted
    use hillstab_hill_model, only: hill_model_t
    use hillstab_hill_models, only: model_names, new_model
+   use hillstab_hill_system_matrix, only: matrix_system_t
+   use hillstab_integrate_system, only: system_method_from_name, system_method_names_text
    use hillstab_hill_coefficient, only: sampling_name, sampling_from_name, sampling_names_text
    use hillstab_hill_units, only: physical_t, physical_epsilon, check_physical, equilibrium_length
    use hillstab_integrate_monodromy, only: method_t, method_table, method_name, method_from_name, method_names_text, &
@@ -59,12 +61,19 @@ contains
       call read_scene_group(file, scene, task_name, error)
       if (.not. allocated(error)) call read_model_group(file, scene, error)
       if (.not. allocated(error)) then
-         call new_task(task_name, task, cause)
+         call new_task(task_name, task, cause, system=allocated(scene%system))
          if (allocated(cause)) call fail(error, path, "scene", "task", cause%message)
       end if
       if (.not. allocated(error)) call check_task_settings(file, scene, task, error)
       if (.not. allocated(error)) then
-         if (group_present(file%unit, "physical")) call read_physical_group(file, task, scene, error)
+         if (group_present(file%unit, "physical")) then
+            if (allocated(scene%system)) then
+               call fail(error, path, "physical", "omega", "a system scene (&scene model = 'system') is "// &
+                  "dimensionless: its matrices are in &system, and &physical describes the elastic pendulum only")
+            else
+               call read_physical_group(file, task, scene, error)
+            end if
+         end if
       end if
       if (.not. allocated(error)) call task%read(file, scene, error)
       if (.not. allocated(error)) then
@@ -106,7 +115,7 @@ contains
          if (task_reads(task, trim(names(k)))) cycle
          if (trim(names(k)) == model_group_name(scene)) cycle
          call new_model(trim(names(k)), other_model, cause)
-         if (.not. allocated(cause)) then
+         if (.not. allocated(cause) .and. allocated(scene%model)) then
             call add_warning(scene%warnings, file%path//": &"//trim(names(k))//": ignored: the group of model '"// &
                trim(names(k))//"', and &scene model is '"//scene%model%name()//"'")
             cycle
@@ -240,13 +249,23 @@ contains
       if (allocated(error)) return
       task_name = lower_case(trim(task))
 
-      call new_model(trim(model), this%model, model_error)
-      if (allocated(model_error)) then
-         call fail(error, file%path, group%name, "model", model_error%message)
-         return
+      if (lower_case(trim(model)) == "system") then
+         allocate (matrix_system_t :: this%system)
+         this%method%kind = system_method_from_name(trim(method))
+         if (this%method%kind < 0) then
+            call fail(error, file%path, group%name, "method", "a system (model = 'system') takes method "// &
+               system_method_names_text()//", got '"//trim(method)//"'")
+            return
+         end if
+      else
+         call new_model(trim(model), this%model, model_error)
+         if (allocated(model_error)) then
+            call fail(error, file%path, group%name, "model", model_error%message//" (or 'system': n coupled "// &
+               "equations, the matrices in &system)")
+            return
+         end if
+         this%method%kind = method_from_name(trim(method))
       end if
-
-      this%method%kind = method_from_name(trim(method))
       if (this%method%kind < 0) then
          call fail(error, file%path, group%name, "method", "unknown method '"//trim(method)// &
             "' (expected "//method_names_text()//")")
@@ -314,7 +333,11 @@ contains
       end if
       ! the effective scene names the choices as they were understood
       call this%settings%set("task", quoted(task_name))
-      call this%settings%set("model", quoted(this%model%name()))
+      if (allocated(this%system)) then
+         call this%settings%set("model", quoted(this%system%name()))
+      else
+         call this%settings%set("model", quoted(this%model%name()))
+      end if
       call this%settings%set("method", quoted(method_name(this%method%kind)))
       call this%settings%set("sampling", quoted(sampling_name(this%method%sampling)))
       call this%settings%set("columns", quoted(this%columns))

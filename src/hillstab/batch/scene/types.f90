@@ -21,6 +21,7 @@ module hillstab_batch_scene_types
    use hillstab_core_text, only: quoted, real_text, integer_text
    use hillstab_core_error, only: error_t, set_error, err_input
    use hillstab_hill_model, only: hill_model_t
+   use hillstab_hill_system, only: hill_system_t
    use hillstab_integrate_monodromy, only: method_t
    use hillstab_hill_units, only: physical_t, physical_beta, equilibrium_length
    use hillstab_batch_scene_declaration, only: group_t, group_values_t
@@ -94,6 +95,9 @@ module hillstab_batch_scene_types
       class(task_t), allocatable :: task            !! the task, with its groups
       !> the model of Q, made by the model registry (hillstab_hill_models) from `&scene model`
       class(hill_model_t), allocatable :: model
+      !> `&scene model = 'system'`: the system of Hill equations of `&system`
+      !> (hillstab_hill_system_matrix), in place of `model` (then unallocated)
+      class(hill_system_t), allocatable :: system
       type(method_t) :: method                      !! method, n_segments, sampling, tolerance
       real(wp) :: epsilon = 0.0_wp                  !! damping ε of eq. (46)
       character(len=:), allocatable :: output       !! prefix: files are <output>_<task>.dat (.bin)

@@ -19,6 +19,8 @@ module hillstab_batch_tasks_registry
    use hillstab_batch_tasks_series, only: series_task
    use hillstab_batch_tasks_lyapunov, only: lyapunov_task
    use hillstab_batch_tasks_poincare, only: poincare_task
+   use hillstab_batch_tasks_system, only: system_chart_task, system_points_task, system_coefficient_task, &
+      system_task_names
    implicit none
    private
    public :: task_entry_t, task_entries, task_names, task_names_text, new_task
@@ -87,10 +89,25 @@ contains
 
    !> A task of the given name, before its groups are read; err_input naming the known
    !> tasks when there is none.
-   subroutine new_task(name, task, error)
+   subroutine new_task(name, task, error, system)
       character(len=*), intent(in) :: name  !! a task name, lower case
       class(task_t), allocatable, intent(out) :: task  !! the task
       type(error_t), allocatable, intent(out) :: error  !! unknown task
+      !> the scene is a system (`&scene model = 'system'`): its own chart, points and coefficient
+      logical, intent(in), optional :: system
+      if (present(system)) then
+         if (system) then
+            select case (name)
+            case ("chart"); allocate (task, source=system_chart_task())
+            case ("points"); allocate (task, source=system_points_task())
+            case ("coefficient"); allocate (task, source=system_coefficient_task())
+            case default
+               call set_error(error, err_input, "task '"//name//"' does not run on a system of Hill equations "// &
+                  "(model = 'system' takes "//system_task_names//")")
+            end select
+            return
+         end if
+      end if
       select case (name)
       case ("chart"); allocate (task, source=chart_task())
       case ("points"); allocate (task, source=points_task())

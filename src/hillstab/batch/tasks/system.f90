@@ -1,0 +1,647 @@
+!> The tasks of a system scene (`&scene model = 'system'`, the matrices in `&system`):
+!> `chart` over the (α, β) grid of `&chart`, `points` at the (α, β) of a `&points` file and
+!> `coefficient` (the entries of K(τ) over the period at the α of `&coefficient`). Chart and
+!> points write the columns of `system_columns` (`&scene columns` chooses among them; a
+!> verdict-only chart is `columns = 'alpha beta stable kind status'`), each point from the
+!> exact monodromy (hillstab_integrate_system, the nodes shared along a chart row) and its
+!> Floquet analysis (hillstab_hill_system_floquet): the trace and Broucke's a₂, the verdict
+!> decided from the multipliers and the method's error bound, its kind, the largest |λ| and
+!> exponent, the n largest exponents, the structural defect, the error estimate and status.
+!> A point that cannot be computed carries status 2 and placeholders, and the run ends with
+!> err_points_failed after the file is written; the file is written atomically.
+!>
+!> Rows of a chart run in parallel (OpenMP, blocks of rows, each row with its own nodes),
+!> the blocks written in order.
+module hillstab_batch_tasks_system
+   use hillstab_core_kinds, only: wp, int64, version_string
+   use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
+   use hillstab_core_status, only: status_ok, status_roundoff, status_failed
+   use hillstab_core_text, only: format_es, real_text, integer_text, lower_case, put_es, put_integer
+   use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system, system_equation_text, &
+      system_description, check_system_point
+   use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet, verdict_marginal, kind_name
+   use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
+      system_method_name
+   use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output, scene_header
+   use hillstab_batch_scene_declaration, only: group_t, new_group, group_reader_t, var_real, var_integer, &
+      var_real_list, begin_group, next_item, end_group
+   use hillstab_batch_scene_file, only: scene_file_t, fail
+   use hillstab_batch_scene_checks, only: check_range, require_finite, max_grid_count
+   use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_size_text
+   use hillstab_batch_scene_group_points, only: points_group, read_points_group
+   use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text, join_lines, &
+      write_records
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   implicit none
+   private
+   public :: system_chart_task_t, system_points_task_t, system_coefficient_task_t, system_chart_task, &
+      system_points_task, system_coefficient_task, system_task_names, system_column_names, system_point_values
+
+   !> Most exponent columns (mu_1 … mu_n, n ≤ max_dof).
+   integer, parameter :: max_dof_columns = 20
+
+   !> The tasks a system scene takes.
+   character(len=*), parameter :: system_task_names = "chart, points, coefficient"
+
+   !> The fixed columns (the exponents mu_1 … mu_n follow `argument`).
+   integer, parameter :: n_fixed = 14
+   character(len=14), parameter :: fixed_names(n_fixed) = [character(len=14) :: "alpha", "beta", "trace", "a2", &
+                                                           "overflow", "stable", "kind", "lambda_max", "mu", &
+                                                           "argument", "defect", "error_estimate", "status", "steps"]
+
+   !> Chart and points: what they share (the columns chosen).
+   type, abstract, extends(task_t) :: system_floquet_task_t
+      integer, allocatable :: chosen(:)  !! indices into `system_column_names`
+   contains
+      procedure :: choose_columns => system_choose_columns
+   end type system_floquet_task_t
+
+   !> `chart` on a system.
+   type, extends(system_floquet_task_t) :: system_chart_task_t
+      type(chart_grid_t) :: grid  !! `&chart`
+   contains
+      procedure :: read => chart_read
+      procedure :: run => chart_run
+      procedure :: declarations => chart_declarations
+      procedure :: size_variables => chart_size_variables
+   end type system_chart_task_t
+
+   !> `points` on a system.
+   type, extends(system_floquet_task_t) :: system_points_task_t
+      character(len=:), allocatable :: path   !! the points file
+      real(wp), allocatable :: points(:, :)   !! (2, n): α, β
+   contains
+      procedure :: read => points_read
+      procedure :: run => points_run
+      procedure :: declarations => points_declarations
+   end type system_points_task_t
+
+   !> `coefficient` on a system: the entries of K(τ).
+   type, extends(task_t) :: system_coefficient_task_t
+      real(wp), allocatable :: alphas(:)  !! one block per α
+      real(wp) :: beta = 0.0_wp
+      integer :: n_tau = 401
+      real(wp) :: tau_min = 0.0_wp, tau_max = 2.0_wp
+   contains
+      procedure :: read => coefficient_read
+      procedure :: run => coefficient_run
+      procedure :: declarations => coefficient_declarations
+   end type system_coefficient_task_t
+
+contains
+
+   !> A chart task of a system scene.
+   function system_chart_task() result(task)
+      type(system_chart_task_t) :: task
+      task%name = "chart"
+      task%takes_columns = .true.
+      task%takes_physical = .false.
+   end function system_chart_task
+
+   !> A points task of a system scene.
+   function system_points_task() result(task)
+      type(system_points_task_t) :: task
+      task%name = "points"
+      task%takes_columns = .true.
+      task%takes_physical = .false.
+   end function system_points_task
+
+   !> A coefficient task of a system scene.
+   function system_coefficient_task() result(task)
+      type(system_coefficient_task_t) :: task
+      task%name = "coefficient"
+      task%takes_physical = .false.
+   end function system_coefficient_task
+
+   !> Every column of a system of n degrees of freedom.
+   pure function system_column_names(n) result(names)
+      integer, intent(in) :: n  !! degrees of freedom
+      character(len=14) :: names(n_fixed + n)
+      integer :: k
+      names(1:10) = fixed_names(1:10)
+      do k = 1, n
+         write (names(10 + k), '(a, i0)') "mu_", k
+      end do
+      names(11 + n:) = fixed_names(11:)
+   end function system_column_names
+
+   !> What each column holds, for the header.
+   function column_help(name) result(text)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: text
+      select case (name)
+      case ("alpha"); text = "alpha, the drive"
+      case ("beta"); text = "beta, the factor of B"
+      case ("trace"); text = "a1 = tr Phi of the one-period monodromy of y = (x, x') (+-1e300 with overflow = 1)"
+      case ("a2"); text = "a2 = ((tr Phi)^2 - tr Phi^2)/2 (Broucke: z^2 - a1 z + a2 - 2 = 0 for n = 2)"
+      case ("overflow"); text = "1 when |a1| or |a2| exceeds 1e300 (clamped)"
+      case ("stable"); text = "1 stable, 0 unstable, -1 marginal (the error bound of Phi does not decide)"
+      case ("kind"); text = "0 stable, 1 unstable at +1, 2 at -1, 3 combination (Krein collision), "// &
+                            "4 damped (asymptotically stable)"
+      case ("lambda_max"); text = "largest |multiplier| (1e300 when it overflows; mu is exact)"
+      case ("mu"); text = "ln(lambda_max)/period, the largest Floquet exponent per unit tau"
+      case ("argument"); text = "arg(lambda)/pi of the largest multiplier, in [0, 1]"
+      case ("defect"); text = "Hamiltonian: |Phi^T Omega Phi - Omega|/|Omega|; else |det Phi exp(-P tr D) - 1| "// &
+                              "(-1: not computed, Phi overflows)"
+      case ("error_estimate"); text = "the method's estimate of the error of Phi's entries relative to "// &
+                                      "max(1, max|Phi_ij|)"
+      case ("status"); text = "0 ok; 1 round-off limited; 2 failed (placeholders)"
+      case ("steps"); text = "Magnus steps (or rk right-hand sides) spent on the point"
+      case default; text = "ln|lambda_k|/period of the k-th largest multiplier"
+      end select
+   end function column_help
+
+   !> The values of every column at one point (placeholders when it failed).
+   pure function system_point_values(n, alpha, beta, f, r, failed) result(v)
+      integer, intent(in) :: n                      !! degrees of freedom
+      real(wp), intent(in) :: alpha, beta           !! the point
+      type(system_floquet_t), intent(in) :: f       !! its analysis
+      type(system_monodromy_t), intent(in) :: r     !! its monodromy
+      logical, intent(in) :: failed                 !! no value
+      real(wp) :: v(n_fixed + n)
+      v = 0.0_wp
+      v(1) = alpha
+      v(2) = beta
+      if (failed) then
+         v(6) = -1.0_wp
+         v(7) = -1.0_wp
+         v(11 + n) = -1.0_wp
+         v(12 + n) = -1.0_wp
+         v(13 + n) = real(status_failed, wp)
+         return
+      end if
+      v(3) = f%trace
+      v(4) = f%a2
+      v(5) = merge(1.0_wp, 0.0_wp, f%overflow .or. f%log_lambda_max > log(1.0e300_wp))
+      v(6) = real(f%verdict, wp)
+      v(7) = real(f%kind, wp)
+      v(8) = exp(min(f%log_lambda_max, log(1.0e300_wp)))
+      v(9) = f%mu
+      v(10) = f%argument
+      v(11:10 + n) = f%exponents
+      v(11 + n) = f%defect
+      v(12 + n) = r%error_estimate
+      v(13 + n) = real(r%status, wp)
+      v(14 + n) = real(r%steps, wp)
+   end function system_point_values
+
+   !> `&scene columns`: the names given, in that order (all when blank); err_input naming
+   !> &scene columns for an unknown name.
+   subroutine system_choose_columns(self, scene, error)
+      class(system_floquet_task_t), intent(inout) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming &scene columns
+      character(len=14), allocatable :: names(:)
+      character(len=:), allocatable :: rest, word, known
+      integer :: k, blank, found
+      names = system_column_names(scene%system%dof())
+      if (len_trim(scene%columns) == 0) then
+         self%chosen = [(k, k=1, size(names))]
+         return
+      end if
+      allocate (self%chosen(0))
+      rest = trim(adjustl(scene%columns))
+      do while (len(rest) > 0)
+         blank = index(rest, " ")
+         if (blank == 0) then
+            word = rest
+            rest = ""
+         else
+            word = rest(:blank - 1)
+            rest = trim(adjustl(rest(blank + 1:)))
+         end if
+         found = 0
+         do k = 1, size(names)
+            if (lower_case(word) == trim(names(k))) found = k
+         end do
+         if (found == 0) then
+            known = ""
+            do k = 1, size(names)
+               known = known//" "//trim(names(k))
+            end do
+            call fail(error, scene%source, "scene", "columns", "unknown column '"//word// &
+               "' of a system (it has"//known//")")
+            return
+         end if
+         if (any(self%chosen == found)) then
+            call fail(error, scene%source, "scene", "columns", "column '"//word//"' given twice")
+            return
+         end if
+         self%chosen = [self%chosen, found]
+      end do
+   end subroutine system_choose_columns
+
+   !> The text of one point's chosen columns, into a buffer (no deferred-length character
+   !> results: this runs on OpenMP threads, see hillstab_batch_output_file `join_lines`).
+   pure subroutine point_line(n, chosen, v, line, length)
+      integer, intent(in) :: n, chosen(:)
+      real(wp), intent(in) :: v(:)
+      character(len=*), intent(out) :: line  !! at least 26 characters a column
+      integer, intent(out) :: length         !! the length of the text
+      integer :: k, c
+      line = ""
+      length = 0
+      do k = 1, size(chosen)
+         c = chosen(k)
+         if (k > 1) then
+            length = length + 1
+            line(length:length) = " "
+         end if
+         ! flags, codes and counts as integers
+         if (c == 5 .or. c == 6 .or. c == 7 .or. c == 13 + n .or. c == 14 + n) then
+            call put_integer(line, length, nint(v(c)))
+         else
+            call put_es(line, length, v(c), 17)
+         end if
+      end do
+   end subroutine point_line
+
+   !> The column names chosen, blank-separated.
+   function chosen_names(n, chosen) result(text)
+      integer, intent(in) :: n, chosen(:)
+      character(len=:), allocatable :: text
+      character(len=14), allocatable :: names(:)
+      integer :: k
+      names = system_column_names(n)
+      text = ""
+      do k = 1, size(chosen)
+         if (k > 1) text = text//" "
+         text = text//trim(names(chosen(k)))
+      end do
+   end function chosen_names
+
+   !> The header lines of a system file: title, the scene, the equation, the columns' meanings.
+   function system_lines(scene, what, chosen) result(lines)
+      type(scene_t), intent(in) :: scene
+      character(len=*), intent(in) :: what
+      integer, intent(in) :: chosen(:)
+      character(len=:), allocatable :: lines(:)
+      character(len=500), allocatable :: extra(:)
+      character(len=14), allocatable :: names(:)
+      integer :: k, n
+      n = scene%system%dof()
+      names = system_column_names(n)
+      allocate (extra(3 + size(chosen)))
+      extra(1) = system_description(scene%system)
+      extra(2) = "method: "//system_method_name(scene%method%kind)//", tolerance "// &
+                 real_text(scene%method%tolerance)//" on Phi's entries relative to max(1, max|Phi_ij|); epsilon "// &
+                 real_text(scene%epsilon)//" adds C = epsilon M"
+      extra(3) = "verdicts decided from the multipliers and the error bound of Phi (hillstab_hill_system_floquet); "// &
+                 "n = 2 Hamiltonian: Broucke's criterion"
+      do k = 1, size(chosen)
+         extra(3 + k) = "column "//integer_text(k)//", "//trim(names(chosen(k)))//": "// &
+                        column_help(trim(names(chosen(k))))
+      end do
+      lines = scene_header(scene, "hillstab "//version_string//": "//what//" of "// &
+                           system_equation_text(scene%system), extra)
+   end function system_lines
+
+   !> One point: monodromy, analysis, values; `failed` with the error when it could not be computed.
+   subroutine evaluate(system, form, method, alpha, beta, nodes, v, failed, message)
+      class(hill_system_t), intent(in) :: system
+      type(system_form_t), intent(in) :: form
+      type(system_method_t), intent(in) :: method
+      real(wp), intent(in) :: alpha, beta
+      type(system_nodes_t), intent(inout) :: nodes
+      real(wp), intent(out) :: v(:)
+      logical, intent(out) :: failed
+      character(len=:), allocatable, intent(out) :: message
+      type(system_monodromy_t) :: r
+      type(system_floquet_t) :: f
+      type(error_t), allocatable :: error
+      call system_monodromy(system, form, alpha, beta, method, nodes, r, error)
+      failed = allocated(error) .or. r%status == status_failed
+      message = ""
+      if (allocated(error)) message = error%message
+      if (.not. failed) call system_floquet(r%phi, form, r%error_estimate*max(1.0_wp, maxval(abs(r%phi))), f, &
+                                            r%log_scale)
+      v = system_point_values(form%n, alpha, beta, f, r, failed)
+   end subroutine evaluate
+
+   !> `&chart` (any finite α), and the columns.
+   subroutine chart_read(self, file, scene, error)
+      class(system_chart_task_t), intent(inout) :: self  !! the task, its grid filled in
+      type(scene_file_t), intent(in) :: file      !! the scene file
+      type(scene_t), intent(in) :: scene          !! the `&scene` settings
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
+      allocate (self%groups(1))
+      call read_chart_group(file, chart_group(), grid=self%grid, values=self%groups(1), error=error)
+      if (allocated(error)) return
+      if (int(self%grid%n_alpha, int64)*self%grid%n_beta > int(max_grid_count, int64)) then
+         call fail(error, file%path, "chart", "n_beta", "n_alpha * n_beta exceeds the limit of 1e8 points")
+         return
+      end if
+      call self%choose_columns(scene, error)
+   end subroutine chart_read
+
+   !> `&chart`.
+   function chart_declarations(self) result(groups)
+      class(system_chart_task_t), intent(in) :: self  !! the task
+      type(group_t), allocatable :: groups(:)
+      allocate (groups(1))
+      groups(1) = chart_group()
+   end function chart_declarations
+
+   !> The variables that set the size of the file.
+   function chart_size_variables(self) result(text)
+      class(system_chart_task_t), intent(in) :: self  !! the task
+      character(len=:), allocatable :: text
+      text = grid_size_text(self%grid, .false.)
+   end function chart_size_variables
+
+   !> The chart: blocks of rows in parallel, written in order (a blank line after each α).
+   subroutine chart_run(self, scene, quiet, error)
+      class(system_chart_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      logical, intent(in) :: quiet  !! no progress on stderr
+      type(error_t), allocatable, intent(out) :: error  !! err_points_failed naming the first failed point
+      type(output_file_t) :: file
+      type(system_form_t) :: form
+      type(system_method_t) :: method
+      type(error_t), allocatable :: cause
+      integer, parameter :: block_rows = 16
+      character(len=:), allocatable :: texts(:), first_failure
+      real(wp), allocatable :: values(:, :, :)
+      integer :: n, n_columns, first, last, i, j, n_failed(block_rows), failed_total
+      character(len=400) :: failures(block_rows)
+      call prepare_system(scene%system, scene%epsilon, form, cause)
+      if (allocated(cause)) then
+         call fail(error, scene%source, "system", "mass", cause%message)
+         return
+      end if
+      method = system_method_t(scene%method%kind, scene%method%tolerance)
+      n = form%n
+      n_columns = n_fixed + n
+      call open_scene_output(scene, file, error)
+      if (allocated(error)) return
+      call write_header(file, system_lines(scene, "stability chart", self%chosen), chosen_names(n, self%chosen), &
+                        error, names_line=scene%names_line)
+      failed_total = 0
+      first_failure = ""
+      allocate (character(len=1) :: texts(block_rows))
+      allocate (values(n_columns, self%grid%n_beta, block_rows))
+      first = 1
+      do while (first <= self%grid%n_alpha .and. .not. allocated(error))
+         last = min(first + block_rows - 1, self%grid%n_alpha)
+         deallocate (texts)
+         allocate (character(len=(n_fixed + n)*26*self%grid%n_beta + 2) :: texts(last - first + 1))
+         n_failed = 0
+         failures = ""
+         !$omp parallel do schedule(dynamic, 1) default(shared) private(i)
+         do i = first, last
+            call chart_row(self, scene, form, method, i, values(:, :, i - first + 1), texts(i - first + 1), &
+                           n_failed(i - first + 1), failures(i - first + 1))
+         end do
+         !$omp end parallel do
+         do i = first, last
+            if (n_failed(i - first + 1) > 0 .and. len(first_failure) == 0) first_failure = trim(failures(i - first + 1))
+            failed_total = failed_total + n_failed(i - first + 1)
+            if (scene%binary) then
+               call write_records(file, values(:, :, i - first + 1), error)
+            else
+               if (i > 1) then
+                  call write_text(file, "", error)
+                  if (allocated(error)) exit
+               end if
+               call write_text(file, trim(texts(i - first + 1)), error)
+            end if
+            if (allocated(error)) exit
+         end do
+         first = last + 1
+      end do
+      call finish_output(file, error)
+      if (allocated(error)) return
+      if (failed_total > 0) call set_error(error, err_points_failed, scene%source//": "// &
+         integer_text(failed_total)//" of "//integer_text(int(self%grid%n_alpha, int64)*self%grid%n_beta)// &
+         " points failed (status 2); the first: "//first_failure)
+      j = 0
+      if (quiet) j = 1
+   end subroutine chart_run
+
+   !> One row of the chart: its values and its text.
+   subroutine chart_row(self, scene, form, method, i, values, text, n_failed, failure)
+      class(system_chart_task_t), intent(in) :: self
+      type(scene_t), intent(in) :: scene
+      type(system_form_t), intent(in) :: form
+      type(system_method_t), intent(in) :: method
+      integer, intent(in) :: i
+      real(wp), intent(out) :: values(:, :)
+      character(len=*), intent(out) :: text
+      integer, intent(out) :: n_failed
+      character(len=*), intent(out) :: failure
+      type(system_nodes_t) :: nodes
+      character(len=:), allocatable :: message, joined
+      character(len=:), allocatable :: lines(:)
+      integer, allocatable :: lengths(:)
+      logical :: failed
+      real(wp) :: alpha, beta
+      integer :: j, width
+      alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, self%grid%n_alpha, i)
+      n_failed = 0
+      failure = ""
+      width = 0
+      allocate (character(len=(n_fixed + form%n)*26) :: lines(self%grid%n_beta))
+      allocate (lengths(self%grid%n_beta))
+      do j = 1, self%grid%n_beta
+         beta = grid_value(self%grid%beta_min, self%grid%beta_max, self%grid%n_beta, j)
+         call evaluate(scene%system, form, method, alpha, beta, nodes, values(:, j), failed, message)
+         if (failed .and. n_failed == 0) then
+            write (failure, '(a, es24.16, a, es24.16, a)') "alpha = ", alpha, ", beta = ", beta, ": "
+            failure = trim(failure)//" "//message
+         end if
+         if (failed) n_failed = n_failed + 1
+         call point_line(form%n, self%chosen, values(:, j), lines(j), lengths(j))
+      end do
+      call join_lines(lines, .false., joined, lengths=lengths)
+      text = joined
+   end subroutine chart_row
+
+   !> `&points`, and the columns.
+   subroutine points_read(self, file, scene, error)
+      class(system_points_task_t), intent(inout) :: self  !! the task, its points read
+      type(scene_file_t), intent(in) :: file      !! the scene file
+      type(scene_t), intent(in) :: scene          !! the `&scene` settings
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
+      allocate (self%groups(1))
+      call read_points_group(file, points_group(), path=self%path, pairs=self%points, values=self%groups(1), &
+                             error=error)
+      if (allocated(error)) return
+      call self%choose_columns(scene, error)
+   end subroutine points_read
+
+   !> `&points`.
+   function points_declarations(self) result(groups)
+      class(system_points_task_t), intent(in) :: self  !! the task
+      type(group_t), allocatable :: groups(:)
+      allocate (groups(1))
+      groups(1) = points_group()
+   end function points_declarations
+
+   !> The points, in file order.
+   subroutine points_run(self, scene, quiet, error)
+      class(system_points_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      logical, intent(in) :: quiet  !! no progress on stderr
+      type(error_t), allocatable, intent(out) :: error  !! err_points_failed naming the first failed point
+      type(output_file_t) :: file
+      type(system_form_t) :: form
+      type(system_nodes_t) :: nodes
+      type(error_t), allocatable :: cause
+      real(wp), allocatable :: v(:, :)
+      character(len=:), allocatable :: message, first_failure
+      character(len=(n_fixed + max_dof_columns)*26) :: line
+      logical :: failed
+      integer :: k, n_failed, length
+      call prepare_system(scene%system, scene%epsilon, form, cause)
+      if (allocated(cause)) then
+         call fail(error, scene%source, "system", "mass", cause%message)
+         return
+      end if
+      allocate (v(n_fixed + form%n, size(self%points, 2)))
+      n_failed = 0
+      first_failure = ""
+      do k = 1, size(self%points, 2)
+         call evaluate(scene%system, form, system_method_t(scene%method%kind, scene%method%tolerance), &
+                       self%points(1, k), self%points(2, k), nodes, v(:, k), failed, message)
+         if (failed) then
+            n_failed = n_failed + 1
+            if (n_failed == 1) first_failure = "point "//integer_text(k)//" of "//self%path//": "//message
+         end if
+      end do
+      call open_scene_output(scene, file, error)
+      if (allocated(error)) return
+      call write_header(file, system_lines(scene, "Floquet analysis at points", self%chosen), &
+                        chosen_names(form%n, self%chosen), error, names_line=scene%names_line)
+      if (scene%binary) then
+         if (.not. allocated(error)) call write_records(file, v(self%chosen, :), error)
+      else
+         do k = 1, size(self%points, 2)
+            if (allocated(error)) exit
+            call point_line(form%n, self%chosen, v(:, k), line, length)
+            call write_text(file, line(:length), error)
+         end do
+      end if
+      call finish_output(file, error)
+      if (allocated(error)) return
+      if (n_failed > 0) call set_error(error, err_points_failed, scene%source//": "//integer_text(n_failed)// &
+         " of "//integer_text(size(self%points, 2))//" points failed (status 2); the first: "//first_failure)
+      if (quiet) k = 0
+   end subroutine points_run
+
+   !> The declaration of `&coefficient` for a system.
+   function coefficient_group() result(group)
+      type(group_t) :: group
+      group = new_group("coefficient", "the entries of K(tau) = K0 + beta B + alpha sum_k (...) at one beta "// &
+                        "for a list of alpha")
+      call group%add("alphas", var_real_list, "0.0, 1.0", "one block of rows per alpha, up to 64", max_count=64)
+      call group%add("beta", var_real, "1.0", "beta of every block")
+      call group%add("n_tau", var_integer, "401", "number of tau values, >= 1")
+      call group%add("tau_min", var_real, "0.0", "first tau")
+      call group%add("tau_max", var_real, "2.0", "last tau (one period of the default P = 2)")
+   end function coefficient_group
+
+   !> `&coefficient`.
+   function coefficient_declarations(self) result(groups)
+      class(system_coefficient_task_t), intent(in) :: self  !! the task
+      type(group_t), allocatable :: groups(:)
+      allocate (groups(1))
+      groups(1) = coefficient_group()
+   end function coefficient_declarations
+
+   !> Read `&coefficient`.
+   subroutine coefficient_read(self, file, scene, error)
+      class(system_coefficient_task_t), intent(inout) :: self  !! the task
+      type(scene_file_t), intent(in) :: file      !! the scene file
+      type(scene_t), intent(in) :: scene          !! the `&scene` settings
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
+      type(group_t) :: group
+      type(group_reader_t) :: reader
+      real(wp) :: alphas(64), beta, tau_min, tau_max
+      integer :: n_tau, count, k
+      namelist /coefficient/ alphas, beta, n_tau, tau_min, tau_max
+      group = coefficient_group()
+      alphas = huge(1.0_wp)
+      call begin_group(reader, file, group)
+      read (reader%defaults, nml=coefficient, iostat=reader%defaults_status, iomsg=reader%defaults_msg)
+      if (reader%from_file) read (file%unit, nml=coefficient, iostat=reader%ios, iomsg=reader%msg)
+      do while (next_item(reader, file, group))
+         read (reader%record, nml=coefficient, iostat=reader%stat, iomsg=reader%message)
+      end do
+      write (reader%echo, nml=coefficient, delim="apostrophe", iostat=reader%echo_status)
+      allocate (self%groups(1))
+      call end_group(reader, file, group, self%groups(1), error)
+      if (allocated(error)) return
+      count = 0
+      do k = 1, size(alphas)
+         if (alphas(k) == huge(1.0_wp)) exit
+         count = k
+      end do
+      if (count == 0) then
+         call fail(error, file%path, group%name, "alphas", "no alpha given")
+         return
+      end if
+      do k = 1, count
+         call require_finite(file%path, group%name, "alphas", alphas(k), error)
+         if (allocated(error)) return
+      end do
+      call require_finite(file%path, group%name, "beta", beta, error)
+      if (allocated(error)) return
+      call check_range(file%path, group%name, "tau", tau_min, tau_max, n_tau, error)
+      if (allocated(error)) return
+      self%alphas = alphas(1:count)
+      self%beta = beta
+      self%n_tau = n_tau
+      self%tau_min = tau_min
+      self%tau_max = tau_max
+      if (.not. allocated(scene%system)) call fail(error, file%path, "scene", "model", "not a system")
+   end subroutine coefficient_read
+
+   !> Rows `alpha tau k_11 k_12 … k_nn` (K row by row), one block per α.
+   subroutine coefficient_run(self, scene, quiet, error)
+      class(system_coefficient_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      logical, intent(in) :: quiet  !! no progress on stderr
+      type(error_t), allocatable, intent(out) :: error  !! err_io when writing fails
+      type(output_file_t) :: file
+      real(wp), allocatable :: p(:, :), b(:, :), k_tau(:, :)
+      character(len=:), allocatable :: names, line
+      character(len=300), allocatable :: extra(:)
+      integer :: n, a, t, i, j
+      real(wp) :: tau
+      n = scene%system%dof()
+      allocate (p(n, n), b(n, n), k_tau(n, n))
+      names = "alpha tau"
+      do i = 1, n
+         do j = 1, n
+            names = names//" k_"//integer_text(i)//"_"//integer_text(j)
+         end do
+      end do
+      allocate (extra(2))
+      extra(1) = system_description(scene%system)
+      extra(2) = "one block per alpha (blank line between): K(tau) at beta = "//real_text(self%beta)// &
+                 ", its entries row by row"
+      call open_scene_output(scene, file, error)
+      if (allocated(error)) return
+      call write_header(file, scene_header(scene, "hillstab "//version_string//": the stiffness K(tau) of "// &
+                        system_equation_text(scene%system), extra), names, error)
+      do a = 1, size(self%alphas)
+         if (allocated(error)) exit
+         if (a > 1) call write_text(file, "", error)
+         do t = 1, self%n_tau
+            if (allocated(error)) exit
+            tau = grid_value(self%tau_min, self%tau_max, self%n_tau, t)
+            call scene%system%stiffness(self%alphas(a), tau, p, b)
+            k_tau = p + self%beta*b
+            line = trim(format_es(self%alphas(a), 17))//" "//trim(format_es(tau, 17))
+            do i = 1, n
+               do j = 1, n
+                  line = line//" "//trim(format_es(k_tau(i, j), 17))
+               end do
+            end do
+            call write_text(file, line, error)
+         end do
+      end do
+      call finish_output(file, error)
+      if (quiet) a = 0
+   end subroutine coefficient_run
+end module hillstab_batch_tasks_system
