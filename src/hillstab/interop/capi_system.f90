@@ -279,14 +279,14 @@ contains
       if (.not. any(method == [system_auto, system_magnus4, system_magnus6, system_rk])) then
          call set_error(error, err_invalid_parameter, "method: unknown system method code "// &
             integer_text(int(method))//" (HILLSTAB_METHOD_AUTO 0, _MAGNUS4 3, _MAGNUS6 4 or _RK 5)")
-      else if (.not. (tolerance > min_system_tolerance .and. tolerance < 1.0_wp)) then
+      else if (.not. in_range(tolerance, min_system_tolerance, 1.0_wp, .false.)) then
          call set_error(error, err_invalid_parameter, "tolerance: must lie between 1e-15 and 1 (exclusive), "// &
             "got "//real_text(real(tolerance, wp)))
       else if (.not. ieee_is_finite(alpha)) then
          call set_error(error, err_invalid_parameter, "alpha: must be finite")
       else if (.not. ieee_is_finite(beta)) then
          call set_error(error, err_invalid_parameter, "beta: must be finite")
-      else if (.not. (ieee_is_finite(epsilon) .and. epsilon >= 0.0_wp)) then
+      else if (.not. in_range(epsilon, 0.0_wp, huge(1.0_wp), .true.)) then
          call set_error(error, err_invalid_parameter, "epsilon: the damping must be finite and >= 0, got "// &
             real_text(real(epsilon, wp)))
       end if
@@ -298,6 +298,21 @@ contains
                                                         result, error)
       if (allocated(error)) error%message = where//": "//error%message
    end subroutine system_point
+
+   !> x finite and low < x < high (low <= x <= high when `closed`), decided without comparing
+   !> a NaN (a comparison that would raise IEEE invalid under floating-point traps).
+   pure logical function in_range(x, low, high, closed)
+      real(c_double), intent(in) :: x  !! the value
+      real(wp), intent(in) :: low, high  !! the bounds
+      logical, intent(in) :: closed  !! the bounds included
+      in_range = .false.
+      if (.not. ieee_is_finite(x)) return
+      if (closed) then
+         in_range = x >= low .and. x <= high
+      else
+         in_range = x > low .and. x < high
+      end if
+   end function in_range
 
    !> `int hillstab_system_monodromy(const hillstab_system *system, double alpha, double beta,
    !> double epsilon, int method, double tolerance, double *phi, double *log_scale, double
