@@ -179,6 +179,56 @@ int hillstab_transition_curves(const hillstab_model *model, size_t n_alpha, cons
  * the output file's path goes to written (on success and with HILLSTAB_ERR_POINTS_FAILED). */
 int hillstab_run_scene(const char *path, int quiet, char *written, size_t length);
 
+/* ---- Systems of Hill equations ----
+ * M x'' + (C + eps M + G) x' + K(tau) x = 0, x in R^n (n = 1 ... 20), K = K0 + beta B +
+ * alpha sum_k (Kc_k cos(2 pi k tau/P) + Ks_k sin(2 pi k tau/P)): an opaque handle made empty,
+ * its variables set by name: "n" first, then "mass", "damping", "gyroscopic", "k0", "b" (n*n
+ * numbers each, row by row; defaults I, 0, 0, 0, I), "cos", "sin" (H blocks of n*n numbers,
+ * K_1 first; at least one nonzero) and "period" (a multiple of 2, default 2). Messages start
+ * with the function's name and name the argument ("hillstab_system_set: mass: M must be
+ * positive definite ..."). Methods: HILLSTAB_METHOD_AUTO, _MAGNUS4, _MAGNUS6 or _RK;
+ * tolerance in (1e-15, 1). A monodromy no mesh brings to the tolerance fails the call
+ * (HILLSTAB_ERR_INTEGRATION); *status is 0, or 1 when round-off limited (the best value). */
+typedef struct hillstab_system hillstab_system;
+
+/* The verdict of a system's point: decided within the monodromy's error bound, else marginal. */
+enum {
+  HILLSTAB_SYSTEM_VERDICT_UNSTABLE = 0, HILLSTAB_SYSTEM_VERDICT_STABLE = 1, HILLSTAB_SYSTEM_VERDICT_MARGINAL = -1
+};
+
+/* Where the largest multiplier leaves the unit circle: at +1, at -1, off the real axis (a
+ * combination resonance, Krein collision); or stable, or damped (every |lambda| < 1). */
+enum {
+  HILLSTAB_SYSTEM_KIND_STABLE = 0, HILLSTAB_SYSTEM_KIND_PLUS_ONE = 1, HILLSTAB_SYSTEM_KIND_MINUS_ONE = 2,
+  HILLSTAB_SYSTEM_KIND_COMBINATION = 3, HILLSTAB_SYSTEM_KIND_DAMPED = 4
+};
+
+/* An empty system (free it with hillstab_system_free, NULL is ignored). */
+int hillstab_system_new(hillstab_system **system);
+void hillstab_system_free(hillstab_system *system);
+
+/* Set a variable to count numbers; once n is given the variable is checked on its own (its
+ * size, M symmetric positive definite, C symmetric, G skew; the system unchanged on failure).
+ * hillstab_system_check: whether the system is complete; hillstab_system_dof: n. */
+int hillstab_system_set(hillstab_system *system, const char *variable, const double *values, size_t count);
+int hillstab_system_check(const hillstab_system *system);
+int hillstab_system_dof(const hillstab_system *system, int *n);
+
+/* The monodromy over one period, Phi = exp(log_scale) Phi~: phi[2n][2n] = Phi~ (row-major,
+ * acting on (x, x')), its error estimate relative to max(1, max|Phi~_ij|). */
+int hillstab_system_monodromy(const hillstab_system *system, double alpha, double beta, double epsilon,
+                              int method, double tolerance, double *phi, double *log_scale,
+                              double *error_estimate, int *status);
+
+/* Floquet analysis: the 2n multipliers by decreasing modulus (Phi's own with *log_scale = 0
+ * when they are at most 1e300, else Phi~'s: Phi's = exp(log_scale) times them), the exponents
+ * ln|lambda_i|/P of the n largest, HILLSTAB_SYSTEM_VERDICT_*, HILLSTAB_SYSTEM_KIND_*, tr Phi and
+ * a2 = ((tr Phi)^2 - tr Phi^2)/2 (+-1e300 beyond), the structural defect (-1: not computable). */
+int hillstab_system_floquet(const hillstab_system *system, double alpha, double beta, double epsilon,
+                            int method, double tolerance, double *multipliers_re, double *multipliers_im,
+                            double *log_scale, double *exponents, int *verdict, int *kind, double *trace,
+                            double *a2, double *defect, double *error_estimate, int *status);
+
 #ifdef __cplusplus
 }
 #endif

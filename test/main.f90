@@ -14,6 +14,7 @@ program tester
    use test_monodromy, only: collect_monodromy
    use test_capi, only: collect_capi
    use test_capi_batch, only: collect_capi_batch
+   use test_capi_system, only: collect_capi_system
    use test_gsl, only: collect_gsl
    use test_rk, only: collect_rk
    use test_magnus, only: collect_magnus
@@ -42,7 +43,7 @@ program tester
    use test_checkpoint, only: collect_checkpoint
    implicit none
    ! one by one, not as an array constructor of the collect functions' results: gfortran 12
-   type(testsuite_t) :: suites(39)
+   type(testsuite_t) :: suites(40)
    integer :: n_failed
    suites(1) = collect_models()
    suites(2) = collect_codes()
@@ -83,6 +84,7 @@ program tester
    suites(37) = collect_model_fourier()
    suites(38) = collect_model_modulated()
    suites(39) = collect_system()
+   suites(40) = collect_capi_system()
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

@@ -1,0 +1,201 @@
+"""Systems of Hill equations, n coupled degrees of freedom:
+
+    M x'' + (C + ε M + G) x' + K(τ) x = 0,
+    K(τ) = K0 + β B + α Σₖ (Kₖᶜ cos(2πkτ/P) + Kₖˢ sin(2πkτ/P)),   k = 1 … H,
+
+through the library's ``hillstab_system_*`` functions (the matrix system of the scenes'
+``&system`` group). `System` takes numpy arrays: M (``mass``), C (``damping``), G
+(``gyroscopic``), ``k0`` and ``b`` as n × n arrays, the drive matrices ``cos`` and ``sin``
+as (H, n, n) arrays (an n × n array is one harmonic), and the ``period`` P (a multiple of 2).
+`System.monodromy` gives the 2n × 2n monodromy Φ acting on (x, x'), `System.floquet` its
+multipliers, exponents, verdict and kind.
+
+Bad input (M not symmetric positive definite, C not symmetric, G not skew, a matrix of the
+wrong shape, an unknown method, a tolerance outside (1e-15, 1), a non-finite point, ε < 0)
+raises ValueError with the library's message, which names the argument
+(``hillstab_system_set: mass: M must be positive definite ...``).
+
+>>> pair = System(mass=np.diag([1.0, 0.64]), b=[[1.1, -0.1], [-0.1, 0.9]], cos=-np.diag([1.0, 0.8]))
+>>> pair.floquet(0.4, 1.2).verdict
+1
+"""
+import ctypes
+import math
+
+import numpy as np
+
+from . import _capi
+from ._capi import lib, check
+
+_system_p = ctypes.c_void_p
+_c_double_p = ctypes.POINTER(ctypes.c_double)
+_c_int_p = ctypes.POINTER(ctypes.c_int)
+
+_capi._declare("hillstab_system_new", ctypes.c_int, ctypes.POINTER(_system_p))
+_capi._declare("hillstab_system_free", None, _system_p)
+_capi._declare("hillstab_system_set", ctypes.c_int, _system_p, ctypes.c_char_p, _c_double_p, ctypes.c_size_t)
+_capi._declare("hillstab_system_check", ctypes.c_int, _system_p)
+_capi._declare("hillstab_system_dof", ctypes.c_int, _system_p, _c_int_p)
+_capi._declare("hillstab_system_monodromy", ctypes.c_int, _system_p, ctypes.c_double, ctypes.c_double,
+               ctypes.c_double, ctypes.c_int, ctypes.c_double, _c_double_p, _c_double_p, _c_double_p, _c_int_p)
+_capi._declare("hillstab_system_floquet", ctypes.c_int, _system_p, ctypes.c_double, ctypes.c_double,
+               ctypes.c_double, ctypes.c_int, ctypes.c_double, _c_double_p, _c_double_p, _c_double_p, _c_double_p,
+               _c_int_p, _c_int_p, _c_double_p, _c_double_p, _c_double_p, _c_double_p, _c_int_p)
+
+#: the methods of systems (codes HILLSTAB_METHOD_*)
+SYSTEM_METHODS = {"auto": 0, "magnus4": 3, "magnus6": 4, "rk": 5}
+#: HILLSTAB_SYSTEM_VERDICT_*
+VERDICT_UNSTABLE, VERDICT_STABLE, VERDICT_MARGINAL = 0, 1, -1
+#: HILLSTAB_SYSTEM_KIND_*, and their names
+KIND_STABLE, KIND_PLUS_ONE, KIND_MINUS_ONE, KIND_COMBINATION, KIND_DAMPED = 0, 1, 2, 3, 4
+KIND_NAMES = {0: "stable", 1: "parametric at +1", 2: "parametric at -1", 3: "combination (Krein collision)",
+              4: "damped, asymptotically stable"}
+
+
+def _method(method):
+    if method not in SYSTEM_METHODS:
+        raise ValueError("method: unknown system method '{}' (expected {})".format(
+            method, ", ".join(SYSTEM_METHODS)))
+    return SYSTEM_METHODS[method]
+
+
+class SystemFloquet:
+    """The Floquet analysis of one point of a system.
+
+    ``multipliers``: the 2n multipliers λ of Φ (complex, by decreasing modulus; where they
+    would exceed 1e300 they are Φ̃'s and ``log_scale`` s > 0, Φ's being e^s times them);
+    ``exponents``: ln|λ_i|/P of the n largest; ``verdict``: 1 stable, 0 unstable, −1
+    marginal (the error bound does not decide); ``kind``: 0 stable, 1 at +1, 2 at −1,
+    3 combination resonance, 4 damped (`kind_name`); ``trace`` tr Φ and ``a2`` =
+    ((tr Φ)² − tr Φ²)/2 (±1e300 beyond); ``defect``: the structural defect (−1: not
+    computable); ``error_estimate`` and ``status`` (0, or 1 round-off limited) of the monodromy.
+    """
+
+    def __init__(self, **values):
+        for key, value in values.items():
+            setattr(self, key, value)
+
+    @property
+    def stable(self):
+        """True where the verdict is stable."""
+        return self.verdict == VERDICT_STABLE
+
+    @property
+    def kind_name(self):
+        """The kind in words."""
+        return KIND_NAMES.get(self.kind, "unknown")
+
+    def __repr__(self):
+        return "<hillstab system floquet: verdict {}, kind {} ({}), trace {:.6g}>".format(
+            self.verdict, self.kind, self.kind_name, self.trace)
+
+
+class System:
+    """A system of n Hill equations with constant M, C, G and K(τ) = K0 + β B + α Σ drives.
+
+    Arguments (numpy arrays or nested lists): ``mass`` M (default I), ``damping`` C (0),
+    ``gyroscopic`` G (0), ``k0`` (0), ``b`` (I), all n × n; ``cos`` and ``sin``: (H, n, n)
+    (or one n × n matrix), at least one nonzero; ``period`` P, a multiple of 2 (2: cos kπτ).
+    n comes from the first matrix given (``n`` when only the defaults are wanted). The
+    system is checked when made: ValueError naming the argument otherwise.
+    """
+
+    def __init__(self, mass=None, damping=None, gyroscopic=None, k0=None, b=None, cos=None, sin=None, period=2.0,
+                 n=None):
+        given = {"mass": mass, "damping": damping, "gyroscopic": gyroscopic, "k0": k0, "b": b}
+        drives = {"cos": cos, "sin": sin}
+        squares = {}
+        for name, value in given.items():
+            if value is not None:
+                squares[name] = np.asarray(value, dtype=np.float64)
+        blocks = {}
+        for name, value in drives.items():
+            if value is not None:
+                array = np.asarray(value, dtype=np.float64)
+                if array.ndim == 2:
+                    array = array[np.newaxis]
+                blocks[name] = array
+        if n is None:
+            for name, array in list(squares.items()) + list(blocks.items()):
+                if array.ndim >= 2:
+                    n = array.shape[-1]
+                    break
+        if n is None:
+            raise ValueError("n: give a matrix (mass, k0, b, cos, ...) or n")
+        n = int(n)
+        for name, array in squares.items():
+            if array.shape != (n, n):
+                raise ValueError("{}: must be an n x n array, n = {}, got shape {}".format(name, n, array.shape))
+        for name, array in blocks.items():
+            if array.ndim != 3 or array.shape[1:] != (n, n):
+                raise ValueError("{}: must be an (H, n, n) array, n = {}, got shape {}".format(
+                    name, n, np.shape(drives[name])))
+        handle = _system_p()
+        check(lib.hillstab_system_new(ctypes.byref(handle)))
+        self._handle = handle
+        self._set("n", [float(n)])
+        for name, array in list(squares.items()) + list(blocks.items()):
+            self._set(name, array)
+        self._set("period", [float(period)])
+        check(lib.hillstab_system_check(self._handle))
+        #: the degrees of freedom
+        self.n = n
+        #: the period P of K in τ
+        self.period = float(period)
+
+    def _set(self, name, values):
+        array = _capi.as_doubles(np.ravel(values, order="C"))
+        check(lib.hillstab_system_set(self._handle, name.encode(), _capi.doubles(array), array.size))
+
+    def __del__(self):
+        handle = getattr(self, "_handle", None)
+        if handle is not None and handle.value:
+            try:
+                lib.hillstab_system_free(handle)
+            except Exception:  # the interpreter is shutting down
+                pass
+            self._handle = None
+
+    @property
+    def handle(self):
+        """The C handle (``hillstab_system *``)."""
+        return self._handle
+
+    def monodromy(self, alpha, beta, epsilon=0.0, method="auto", tolerance=1e-10):
+        """The one-period monodromy Φ at (α, β) with damping ε M: (phi, error_estimate,
+        status), phi the 2n × 2n ndarray acting on (x, x') (±inf where Φ overflows a double),
+        error_estimate relative to max(1, max|Φ_ij|), status 0 or 1 (round-off limited)."""
+        m = 2 * self.n
+        phi = np.zeros((m, m), dtype=np.float64)
+        log_scale = ctypes.c_double(0.0)
+        estimate = ctypes.c_double(0.0)
+        status = ctypes.c_int(0)
+        check(lib.hillstab_system_monodromy(self._handle, float(alpha), float(beta), float(epsilon),
+                                            _method(method), float(tolerance), _capi.doubles(phi),
+                                            ctypes.byref(log_scale), ctypes.byref(estimate), ctypes.byref(status)))
+        if log_scale.value != 0.0:
+            with np.errstate(over="ignore"):
+                phi = phi * math.exp(min(log_scale.value, 800.0))
+        return phi, estimate.value, status.value
+
+    def floquet(self, alpha, beta, epsilon=0.0, method="auto", tolerance=1e-10):
+        """The Floquet analysis at (α, β) with damping ε M: a `SystemFloquet`."""
+        m = 2 * self.n
+        re = np.zeros(m, dtype=np.float64)
+        im = np.zeros(m, dtype=np.float64)
+        exponents = np.zeros(self.n, dtype=np.float64)
+        doubles = [ctypes.c_double(0.0) for _ in range(5)]
+        ints = [ctypes.c_int(0) for _ in range(3)]
+        log_scale, trace, a2, defect, estimate = doubles
+        verdict, kind, status = ints
+        check(lib.hillstab_system_floquet(self._handle, float(alpha), float(beta), float(epsilon), _method(method),
+                                          float(tolerance), _capi.doubles(re), _capi.doubles(im),
+                                          ctypes.byref(log_scale), _capi.doubles(exponents), ctypes.byref(verdict),
+                                          ctypes.byref(kind), ctypes.byref(trace), ctypes.byref(a2),
+                                          ctypes.byref(defect), ctypes.byref(estimate), ctypes.byref(status)))
+        return SystemFloquet(multipliers=re + 1j * im, log_scale=log_scale.value, exponents=exponents,
+                             verdict=verdict.value, kind=kind.value, trace=trace.value, a2=a2.value,
+                             defect=defect.value, error_estimate=estimate.value, status=status.value)
+
+    def __repr__(self):
+        return "hillstab.System(n={}, period={:g})".format(self.n, self.period)
