@@ -7,6 +7,7 @@ program tester
    use test_model_fourier, only: collect_model_fourier
    use test_model_modulated, only: collect_model_modulated
    use test_system, only: collect_system
+   use test_task_system, only: collect_task_system
    use test_codes, only: collect_codes
    use test_transfer, only: collect_transfer
    use test_formulas, only: collect_formulas
@@ -43,7 +44,7 @@ program tester
    use test_checkpoint, only: collect_checkpoint
    implicit none
    ! one by one, not as an array constructor of the collect functions' results: gfortran 12
-   type(testsuite_t) :: suites(40)
+   type(testsuite_t) :: suites(41)
    integer :: n_failed
    suites(1) = collect_models()
    suites(2) = collect_codes()
@@ -85,6 +86,7 @@ program tester
    suites(38) = collect_model_modulated()
    suites(39) = collect_system()
    suites(40) = collect_capi_system()
+   suites(41) = collect_task_system()
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

@@ -21,6 +21,8 @@ contains
       type(bad_case_t), allocatable :: cases(:)
       character(len=*), parameter :: s = "&scene output='@OUT@', method='segments' "
       character(len=*), parameter :: sp = "&scene output='@OUT@', method='segments', task='points' / "
+      !> a system scene (no method: the scalar's segments would be refused)
+      character(len=*), parameter :: y = "&scene output='@OUT@', model='system' "
       cases = [ &
          bad_case_t(s//"foo=3 / &chart /", "scene", "foo"), &
          bad_case_t(s//"/ &chart n_alpha='abc' /", "chart", "n_alpha"), &
@@ -164,7 +166,22 @@ contains
          bad_case_t(s//"task='lyapunov' / &series periods=2 / &chart beta_min=1e-320 /", "chart", &
                     "beta_min: must be >= 1.0e-8"), &
          bad_case_t(s//"task='lyapunov' / &series periods=2 / &lyapunov over='points' / "// &
-                    "&points file='@DIR@_tinybeta.dat' /", "points", "beta = 1.0e-9, below 1.0e-8")]
+                    "&points file='@DIR@_tinybeta.dat' /", "points", "beta = 1.0e-9, below 1.0e-8"), &
+         bad_case_t(y//"/ &system n=2, mass=1,2,2,1, cos=1,0,0,1 / &chart /", "system", "mass: M must be positive"), &
+         bad_case_t(y//"/ &system n=2, mass=1,0.5,0,1, cos=1,0,0,1 / &chart /", "system", "mass: M must be symmetric"), &
+         bad_case_t(y//"/ &system n=2, gyroscopic=0,1,1,0, cos=1,0,0,1 / &chart /", "system", "gyroscopic: G must be skew"), &
+         bad_case_t(y//"/ &system n=2, damping=0,1,-1,0, cos=1,0,0,1 / &chart /", "system", "damping: C must be symmetric"), &
+         bad_case_t(y//"/ &system n=2, k0=1,2,3, cos=1,0,0,1 / &chart /", "system", "k0: n = 2 needs 4 numbers"), &
+         bad_case_t(y//"/ &system n=2, cos=1,0,0,1,5 / &chart /", "system", "cos: n = 2 needs blocks of 4"), &
+         bad_case_t(y//"/ &system n=21, cos=1 / &chart /", "system", "n: the degrees of freedom must be"), &
+         bad_case_t(y//"/ &system n=2, mass=1,NaN,0,1, cos=1,0,0,1 / &chart /", "system", "mass"), &
+         bad_case_t(y//"/ &system cos=1 / &chart /", "system", "n: the degrees of freedom are not given"), &
+         bad_case_t(y//"/ &system n=1 / &chart /", "system", "cos, sin: the system needs at least one"), &
+         bad_case_t(y//"/ &system n=1, cos=1, foo=2 / &chart /", "system", "foo: unknown variable"), &
+         bad_case_t(y//"method='formula' / &system n=1, cos=1 / &chart /", "scene", "method"), &
+         bad_case_t(y//"task='series' / &system n=1, cos=1 / &series /", "scene", "task"), &
+         bad_case_t(y//"columns='alpha S' / &system n=1, cos=1 / &chart /", "scene", "columns: unknown column 'S'"), &
+         bad_case_t(y//"/ &system n=1, cos=1 / &physical omega=10 / &chart /", "physical", "omega")]
    end function bad_cases
 
    !> Write the points files the bad cases refer to (`<dir>_badline.dat`, ...).

@@ -43,6 +43,7 @@ module hillstab_hill_system_matrix
       real(wp) :: p = 2.0_wp                 !! the period P
       !> the lists as given, row by row (empty: the default)
       real(wp), allocatable :: mass_list(:), damping_list(:), gyroscopic_list(:), k0_list(:), b_list(:)
+      !> the drive lists as given: H blocks of n² numbers each
       real(wp), allocatable :: cos_list(:), sin_list(:)
       !> the matrices, set by `assemble` (n × n; kc, ks: n × n × H)
       real(wp), allocatable :: m(:, :), c(:, :), g(:, :), k0(:, :), b(:, :), kc(:, :, :), ks(:, :, :)

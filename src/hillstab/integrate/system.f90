@@ -85,6 +85,7 @@ module hillstab_integrate_system
    type :: system_nodes_t
       real(wp) :: alpha = huge(1.0_wp)     !! the α of the levels held
       integer :: order = 0                 !! the Magnus order they are for
+      !> the nodes of each mesh of the ladder used at this α
       type(node_level_t) :: levels(size(magnus_ladder))
       integer :: hint = 0                  !! ladder index that met the tolerance at the last point
    end type system_nodes_t

@@ -24,7 +24,7 @@ module hillstab_batch_tasks_system
       system_method_name
    use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output, scene_header
    use hillstab_batch_scene_declaration, only: group_t, new_group, group_reader_t, var_real, var_integer, &
-      var_real_list, begin_group, next_item, end_group
+      var_real_list, begin_group, next_item, end_group, list_value
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_checks, only: check_range, require_finite, max_grid_count
    use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_size_text
@@ -560,7 +560,6 @@ contains
       integer :: n_tau, count, k
       namelist /coefficient/ alphas, beta, n_tau, tau_min, tau_max
       group = coefficient_group()
-      alphas = huge(1.0_wp)
       call begin_group(reader, file, group)
       read (reader%defaults, nml=coefficient, iostat=reader%defaults_status, iomsg=reader%defaults_msg)
       if (reader%from_file) read (file%unit, nml=coefficient, iostat=reader%ios, iomsg=reader%msg)
@@ -571,24 +570,20 @@ contains
       allocate (self%groups(1))
       call end_group(reader, file, group, self%groups(1), error)
       if (allocated(error)) return
-      count = 0
-      do k = 1, size(alphas)
-         if (alphas(k) == huge(1.0_wp)) exit
-         count = k
-      end do
+      self%alphas = list_value(self%groups(1), "alphas", alphas)
+      count = size(self%alphas)
       if (count == 0) then
          call fail(error, file%path, group%name, "alphas", "no alpha given")
          return
       end if
       do k = 1, count
-         call require_finite(file%path, group%name, "alphas", alphas(k), error)
+         call require_finite(file%path, group%name, "alphas", self%alphas(k), error)
          if (allocated(error)) return
       end do
       call require_finite(file%path, group%name, "beta", beta, error)
       if (allocated(error)) return
       call check_range(file%path, group%name, "tau", tau_min, tau_max, n_tau, error)
       if (allocated(error)) return
-      self%alphas = alphas(1:count)
       self%beta = beta
       self%n_tau = n_tau
       self%tau_min = tau_min

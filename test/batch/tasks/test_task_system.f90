@@ -1,0 +1,216 @@
+!> Tests of the tasks on a system scene (`&scene model = 'system'`) through `run_scene_file`,
+!> reading the files back: a one-equation system's chart against the Mathieu model's chart
+!> (the same Q = β − α cos πτ), the columns and their selection, a repeated run from the
+!> header, the points task, the coefficient task against K(τ) in closed form, a matrix given
+!> as a file of rows.
+module test_task_system
+   use hillstab_core_kinds, only: wp, pi
+   use hillstab_core_error, only: error_t, err_points_failed
+   use hillstab_hill_system_floquet, only: kind_minus_one, kind_plus_one, kind_combination
+   use hillstab_test_scratch, only: padded, scratch_prefix, write_file, read_lines, delete_file, contains_text
+   use hillstab_test_files, only: run_text_scene, check_rerun
+   use hillstab_testing
+   implicit none
+   private
+   public :: collect_task_system
+
+contains
+
+   function collect_task_system() result(suite)
+      type(testsuite_t) :: suite
+      suite = new_testsuite("task_system", [ &
+         new_unittest("one_equation_is_mathieu_chart", one_equation_is_mathieu_chart), &
+         new_unittest("pendula_columns_and_rerun", pendula_columns_and_rerun), &
+         new_unittest("points_and_verdict_columns", points_and_verdict_columns), &
+         new_unittest("coefficient_closed_form", coefficient_closed_form), &
+         new_unittest("matrix_from_file", matrix_from_file)])
+   end function collect_task_system
+
+   !> The numbers of the data lines (blank lines skipped).
+   subroutine numbers(lines, n_columns, rows)
+      character(len=*), intent(in) :: lines(:)
+      integer, intent(in) :: n_columns
+      real(wp), allocatable, intent(out) :: rows(:, :)
+      integer :: k, n, ios
+      allocate (rows(n_columns, size(lines)))
+      n = 0
+      do k = 1, size(lines)
+         if (lines(k)(1:1) == "#" .or. len_trim(lines(k)) == 0) cycle
+         n = n + 1
+         read (lines(k), *, iostat=ios) rows(:, n)
+         if (ios /= 0) rows(:, n) = huge(1.0_wp)
+      end do
+      rows = rows(:, :n)
+   end subroutine numbers
+
+   !> n = 1, B = 1, K₁ᶜ = −1 is the Mathieu equation: trace = S and the same verdicts (where
+   !> decided) as the Mathieu model's chart.
+   subroutine one_equation_is_mathieu_chart(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, scalar_file, out
+      character(len=1024), allocatable :: lines(:)
+      real(wp), allocatable :: sys(:, :), ref(:, :)
+      character(len=*), parameter :: grid = "&chart alpha_min = 0, alpha_max = 6, n_alpha = 7, beta_min = -1, "// &
+                                            "beta_max = 9, n_beta = 21 /"
+      integer :: k
+      out = scratch_prefix("sys1")
+      call run_text_scene("sys1", [padded("&scene model = 'system', columns = 'alpha beta trace stable kind "// &
+                                          "status', output = '"//out//"' /"), &
+                                   padded("&system n = 1, cos = -1 /"), padded(grid)], error, written)
+      call check(ctx, .not. allocated(error), "system chart runs")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call numbers(lines, 6, sys)
+      call delete_file(written)
+      out = scratch_prefix("mat1")
+      call run_text_scene("mat1", [padded("&scene model = 'mathieu', columns = 'alpha beta S stable', "// &
+                                          "tolerance = 1e-12, output = '"//out//"' /"), padded(grid)], error, scalar_file)
+      call check(ctx, .not. allocated(error), "mathieu chart runs")
+      if (allocated(error)) return
+      lines = read_lines(scalar_file)
+      call numbers(lines, 4, ref)
+      call delete_file(scalar_file)
+      call check(ctx, size(sys, 2) == 147 .and. size(ref, 2) == 147, "7 x 21 points each")
+      if (size(sys, 2) /= size(ref, 2)) return
+      do k = 1, size(sys, 2)
+         call check(ctx, sys(3, k), ref(3, k), abs=4.0e-10_wp*max(1.0_wp, abs(ref(3, k))), message="trace = S")
+         call check(ctx, sys(6, k) == 0.0_wp, "status 0")
+         if (abs(abs(ref(3, k)) - 2.0_wp) > 1.0e-6_wp) then
+            call check(ctx, sys(4, k) == ref(4, k), "the verdict where the margin is clear")
+            if (ref(4, k) == 0.0_wp) call check(ctx, nint(sys(5, k)) == merge(kind_plus_one, kind_minus_one, &
+                                                                           ref(3, k) > 0.0_wp), "kind +1 / -1")
+         end if
+      end do
+   end subroutine one_equation_is_mathieu_chart
+
+   !> The pendula pair: every column, its header (effective &system, one columns line), the
+   !> combination kind inside the ω₁ + ω₂ = π tongue, and the file repeated from its header.
+   subroutine pendula_columns_and_rerun(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out, again
+      character(len=1024), allocatable :: lines(:)
+      real(wp), allocatable :: rows(:, :)
+      logical :: ok
+      integer :: k, combination
+      out = scratch_prefix("pair")
+      call run_text_scene("pair", [padded("&scene model = 'system', output = '"//out//"' /"), &
+                                   padded("&system n = 2, mass = 1, 0, 0, 0.25, b = 2, -1, -1, 1.5, cos = -1, 0, 0, -0.5 /"), &
+                                   padded("&chart alpha_min = 0.5, alpha_max = 1.0, n_alpha = 3, beta_min = 0.6, "// &
+                                          "beta_max = 0.85, n_beta = 11 /")], error, written)
+      call check(ctx, .not. allocated(error), "pair chart runs")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call check(ctx, count(index(lines, "# columns: alpha beta trace a2 overflow stable kind lambda_max mu "// &
+                                  "argument mu_1 mu_2 defect error_estimate status steps") == 1) == 1, "one columns line")
+      call check(ctx, any(index(lines, "# &system n = 2.0, mass = 1.0, 0.0, 0.0, 0.25") == 1), "effective &system")
+      call numbers(lines, 16, rows)
+      call check(ctx, size(rows, 2) == 33, "3 x 11 rows")
+      combination = 0
+      do k = 1, size(rows, 2)
+         call check(ctx, rows(15, k) == 0.0_wp, "status 0")
+         call check(ctx, rows(14, k) <= 1.0e-10_wp, "error estimate within the tolerance")
+         call check(ctx, abs(rows(13, k)) <= 1.0e-9_wp, "symplectic defect")
+         call check(ctx, rows(9, k), max(rows(11, k), rows(12, k)), abs=1.0e-15_wp, message="mu = mu_1")
+         if (nint(rows(7, k)) == kind_combination) combination = combination + 1
+      end do
+      call check(ctx, combination >= 3, "the combination tongue near beta = 0.72")
+      call check_rerun(ctx, written, lines, again, ok)
+      call delete_file(written)
+      if (ok) call delete_file(again)
+   end subroutine pendula_columns_and_rerun
+
+   !> Points at a file's (α, β), in file order, with the verdict columns only.
+   subroutine points_and_verdict_columns(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out, pts
+      character(len=1024), allocatable :: lines(:)
+      real(wp), allocatable :: rows(:, :)
+      out = scratch_prefix("syspts")
+      pts = out//"_in.dat"
+      call write_file(pts, [padded("# alpha beta"), padded("0.5 2.1"), padded("1.0 0.72"), padded("0.2 1.2")])
+      call run_text_scene("syspts", [padded("&scene task = 'points', model = 'system', columns = 'alpha beta "// &
+                                            "stable kind status', output = '"//out//"' /"), &
+                                     padded("&system n = 2, mass = 1, 0, 0, 0.25, b = 2, -1, -1, 1.5, cos = -1, 0, 0, "// &
+                                            "-0.5 /"), padded("&points file = '"//pts//"' /")], error, written)
+      call check(ctx, .not. allocated(error), "points run")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call numbers(lines, 5, rows)
+      call check(ctx, size(rows, 2) == 3, "three points")
+      if (size(rows, 2) /= 3) return
+      call check(ctx, nint(rows(3, 1)) == 0 .and. nint(rows(4, 1)) == kind_minus_one, "simple tongue at beta = 2.1")
+      call check(ctx, nint(rows(3, 2)) == 0 .and. nint(rows(4, 2)) == kind_combination, "combination at 0.72")
+      call check(ctx, nint(rows(3, 3)) == 1 .and. nint(rows(4, 3)) == 0, "stable between the tongues")
+      call delete_file(written)
+      call delete_file(pts)
+   end subroutine points_and_verdict_columns
+
+   !> K(τ) = K0 + β B + α (K₁ᶜ cos πτ + K₁ˢ sin πτ) entry by entry.
+   subroutine coefficient_closed_form(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out
+      character(len=1024), allocatable :: lines(:)
+      real(wp), allocatable :: rows(:, :)
+      real(wp) :: a, t, expected(4)
+      integer :: k
+      out = scratch_prefix("syscoef")
+      call run_text_scene("syscoef", [padded("&scene task = 'coefficient', model = 'system', output = '"//out//"' /"), &
+                                      padded("&system n = 2, k0 = 1, 2, 2, 3, b = 1, 0, 0, 2, cos = 0.5, 0, 0, 1, "// &
+                                             "sin = 0, 1, 1, 0 /"), &
+                                      padded("&coefficient alphas = 0.5, 2.0, beta = 1.5, n_tau = 9 /")], error, written)
+      call check(ctx, .not. allocated(error), "coefficient runs")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call numbers(lines, 6, rows)
+      call check(ctx, size(rows, 2) == 18, "two blocks of 9")
+      do k = 1, size(rows, 2)
+         a = rows(1, k)
+         t = rows(2, k)
+         expected = [1.0_wp + 1.5_wp + a*0.5_wp*cos(pi*t), 2.0_wp + a*sin(pi*t), 2.0_wp + a*sin(pi*t), &
+                     3.0_wp + 3.0_wp + a*cos(pi*t)]
+         call check(ctx, rows(3, k), expected(1), abs=1.0e-14_wp, message="k_1_1")
+         call check(ctx, rows(4, k), expected(2), abs=1.0e-14_wp, message="k_1_2")
+         call check(ctx, rows(5, k), expected(3), abs=1.0e-14_wp, message="k_2_1")
+         call check(ctx, rows(6, k), expected(4), abs=1.0e-14_wp, message="k_2_2")
+      end do
+      call delete_file(written)
+   end subroutine coefficient_closed_form
+
+   !> A matrix as a quoted file of its rows gives the file of the same matrix as a list.
+   subroutine matrix_from_file(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: first, second, out, matrix
+      character(len=1024), allocatable :: a(:), b(:)
+      integer :: k
+      out = scratch_prefix("sysfile")
+      matrix = out//"_mass.dat"
+      call write_file(matrix, [padded("# the mass matrix"), padded("1.0  0.0"), padded(""), padded("0.0  0.25  # m2")])
+      call run_text_scene("sysfile", [padded("&scene model = 'system', columns = 'alpha beta trace a2', output = '"// &
+                                             out//"_a' /"), padded("&system n = 2, mass = '"//matrix//"', b = 2, -1, "// &
+                                             "-1, 1.5, cos = -1, 0, 0, -0.5 /"), padded("&chart n_alpha = 2, "// &
+                                             "alpha_max = 1, n_beta = 5, beta_min = 0, beta_max = 2 /")], error, first)
+      call check(ctx, .not. allocated(error), "mass from a file")
+      if (allocated(error)) return
+      call run_text_scene("syslist", [padded("&scene model = 'system', columns = 'alpha beta trace a2', output = '"// &
+                                             out//"_b' /"), padded("&system n = 2, mass = 1, 0, 0, 0.25, b = 2, -1, "// &
+                                             "-1, 1.5, cos = -1, 0, 0, -0.5 /"), padded("&chart n_alpha = 2, "// &
+                                             "alpha_max = 1, n_beta = 5, beta_min = 0, beta_max = 2 /")], error, second)
+      call check(ctx, .not. allocated(error), "mass as a list")
+      if (allocated(error)) return
+      a = read_lines(first)
+      b = read_lines(second)
+      call check(ctx, any(index(a, "mass = 1.0, 0.0, 0.0, 0.25") > 0), "the header gives the file's numbers")
+      do k = 1, min(size(a), size(b))
+         if (a(k)(1:1) == "#") cycle
+         call check(ctx, a(k) == b(k), "the same data lines")
+      end do
+      call delete_file(first)
+      call delete_file(second)
+      call delete_file(matrix)
+   end subroutine matrix_from_file
+end module test_task_system
