@@ -7,6 +7,7 @@ program tester
    use test_model_fourier, only: collect_model_fourier
    use test_model_modulated, only: collect_model_modulated
    use test_system, only: collect_system
+   use test_system_boundaries, only: collect_system_boundaries
    use test_task_system, only: collect_task_system
    use test_codes, only: collect_codes
    use test_transfer, only: collect_transfer
@@ -44,7 +45,7 @@ program tester
    use test_checkpoint, only: collect_checkpoint
    implicit none
    ! one by one, not as an array constructor of the collect functions' results: gfortran 12
-   type(testsuite_t) :: suites(41)
+   type(testsuite_t) :: suites(42)
    integer :: n_failed
    suites(1) = collect_models()
    suites(2) = collect_codes()
@@ -87,6 +88,7 @@ program tester
    suites(39) = collect_system()
    suites(40) = collect_capi_system()
    suites(41) = collect_task_system()
+   suites(42) = collect_system_boundaries()
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

@@ -4,7 +4,7 @@ module hillstab_ffi_lapack
    use hillstab_core_kinds, only: wp
    implicit none
    private
-   public :: dsbgv, dgeev, dsbev, zhbev
+   public :: dsbgv, dgeev, dsbev, zhbev, zggev
 
    interface
       !> Generalised symmetric-definite banded eigenproblem A z = λ B z.
@@ -44,6 +44,29 @@ module hillstab_ffi_lapack
          real(wp), intent(out) :: work(*)       !! workspace
          integer, intent(out) :: info           !! 0 on success
       end subroutine dgeev
+
+      !> Generalised eigenvalues of a pair of general complex matrices: A x = λ B x, with
+      !> λ = alpha/beta (beta = 0: an infinite eigenvalue).
+      subroutine zggev(jobvl, jobvr, n, a, lda, b, ldb, alpha, beta, vl, ldvl, vr, ldvr, work, lwork, rwork, info)
+         import :: wp
+         character, intent(in) :: jobvl  !! 'N' or 'V': left eigenvectors
+         character, intent(in) :: jobvr  !! 'N' or 'V': right eigenvectors
+         integer, intent(in) :: n        !! order of a and b
+         integer, intent(in) :: lda      !! leading dimension of a
+         integer, intent(in) :: ldb      !! leading dimension of b
+         integer, intent(in) :: ldvl     !! leading dimension of vl
+         integer, intent(in) :: ldvr     !! leading dimension of vr
+         integer, intent(in) :: lwork    !! size of work (at least 2n)
+         complex(wp), intent(inout) :: a(lda, *)  !! A (overwritten)
+         complex(wp), intent(inout) :: b(ldb, *)  !! B (overwritten)
+         complex(wp), intent(out) :: alpha(*)     !! numerators of the eigenvalues
+         complex(wp), intent(out) :: beta(*)      !! denominators of the eigenvalues
+         complex(wp), intent(out) :: vl(ldvl, *)  !! left eigenvectors if jobvl = 'V'
+         complex(wp), intent(out) :: vr(ldvr, *)  !! right eigenvectors if jobvr = 'V'
+         complex(wp), intent(out) :: work(*)      !! workspace
+         real(wp), intent(out) :: rwork(*)        !! workspace, 8n
+         integer, intent(out) :: info             !! 0 on success
+      end subroutine zggev
 
       !> Eigenvalues and, optionally, eigenvectors of a real symmetric band matrix.
       subroutine dsbev(jobz, uplo, n, kd, ab, ldab, w, z, ldz, work, info)

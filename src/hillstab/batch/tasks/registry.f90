@@ -20,7 +20,7 @@ module hillstab_batch_tasks_registry
    use hillstab_batch_tasks_lyapunov, only: lyapunov_task
    use hillstab_batch_tasks_poincare, only: poincare_task
    use hillstab_batch_tasks_system, only: system_chart_task, system_points_task, system_coefficient_task, &
-      system_task_names
+      system_boundaries_task, system_task_names
    implicit none
    private
    public :: task_entry_t, task_entries, task_names, task_names_text, new_task
@@ -101,6 +101,7 @@ contains
             case ("chart"); allocate (task, source=system_chart_task())
             case ("points"); allocate (task, source=system_points_task())
             case ("coefficient"); allocate (task, source=system_coefficient_task())
+            case ("boundaries"); allocate (task, source=system_boundaries_task())
             case default
                call set_error(error, err_input, "task '"//name//"' does not run on a system of Hill equations "// &
                   "(model = 'system' takes "//system_task_names//")")

@@ -31,17 +31,19 @@ module hillstab_batch_tasks_system
    use hillstab_batch_scene_group_points, only: points_group, read_points_group
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text, join_lines, &
       write_records
+   use hillstab_curves_system_boundaries, only: system_boundary_t, system_boundaries
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
    public :: system_chart_task_t, system_points_task_t, system_coefficient_task_t, system_chart_task, &
       system_points_task, system_coefficient_task, system_task_names, system_column_names, system_point_values
+   public :: system_boundaries_task_t, system_boundaries_task
 
    !> Most exponent columns (mu_1 … mu_n, n ≤ max_dof).
    integer, parameter :: max_dof_columns = 20
 
    !> The tasks a system scene takes.
-   character(len=*), parameter :: system_task_names = "chart, points, coefficient"
+   character(len=*), parameter :: system_task_names = "chart, points, coefficient, boundaries"
 
    !> The fixed columns (the exponents mu_1 … mu_n follow `argument`).
    integer, parameter :: n_fixed = 14
@@ -88,7 +90,147 @@ module hillstab_batch_tasks_system
       procedure :: declarations => coefficient_declarations
    end type system_coefficient_task_t
 
+   !> `boundaries` on a system: the transition curves over the α of `&chart`.
+   type, extends(task_t) :: system_boundaries_task_t
+      type(chart_grid_t) :: grid  !! `&chart`: the α values, the β window and its n_beta samples
+   contains
+      procedure :: read => boundaries_read
+      procedure :: run => boundaries_run
+      procedure :: declarations => chart_declarations_b
+   end type system_boundaries_task_t
+
 contains
+
+   !> A boundaries task of a system scene.
+   function system_boundaries_task() result(task)
+      type(system_boundaries_task_t) :: task
+      task%name = "boundaries"
+      task%takes_physical = .false.
+   end function system_boundaries_task
+
+   !> `&chart`.
+   function chart_declarations_b(self) result(groups)
+      class(system_boundaries_task_t), intent(in) :: self  !! the task
+      type(group_t), allocatable :: groups(:)
+      allocate (groups(1))
+      groups(1) = chart_group()
+   end function chart_declarations_b
+
+   !> `&chart`: at least 2 β samples.
+   subroutine boundaries_read(self, file, scene, error)
+      class(system_boundaries_task_t), intent(inout) :: self  !! the task, its grid filled in
+      type(scene_file_t), intent(in) :: file      !! the scene file
+      type(scene_t), intent(in) :: scene          !! the `&scene` settings
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
+      allocate (self%groups(1))
+      call read_chart_group(file, chart_group(), grid=self%grid, values=self%groups(1), error=error)
+      if (allocated(error)) return
+      if (self%grid%n_beta < 2 .or. .not. (self%grid%beta_max > self%grid%beta_min)) then
+         call fail(error, file%path, "chart", "n_beta", "the boundaries of a system need a beta window "// &
+            "(beta_max > beta_min) and n_beta >= 2 samples in it (the brackets of the combination tongues)")
+         return
+      end if
+      if (int(self%grid%n_alpha, int64)*self%grid%n_beta > int(max_grid_count, int64)) &
+         call fail(error, file%path, "chart", "n_beta", "n_alpha * n_beta exceeds the limit of 1e8 points")
+      if (.not. allocated(scene%system)) call fail(error, file%path, "scene", "model", "not a system")
+   end subroutine boundaries_read
+
+   !> The curves, one block per α: `alpha beta kind route check error_estimate status`.
+   subroutine boundaries_run(self, scene, quiet, error)
+      class(system_boundaries_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      logical, intent(in) :: quiet  !! no progress on stderr
+      type(error_t), allocatable, intent(out) :: error  !! err_points_failed when a point is not confirmed
+      type(output_file_t) :: file
+      type(system_form_t) :: form
+      type(error_t), allocatable :: cause
+      type(system_boundary_t), allocatable :: rows(:, :)
+      integer, allocatable :: counts(:)
+      character(len=400), allocatable :: failures(:)
+      real(wp), allocatable :: betas(:)
+      character(len=300) :: extra(7)
+      character(len=200) :: line
+      integer :: i, k, n_failed, length
+      call prepare_system(scene%system, scene%epsilon, form, cause)
+      if (allocated(cause)) then
+         call fail(error, scene%source, "system", "mass", cause%message)
+         return
+      end if
+      betas = [(grid_value(self%grid%beta_min, self%grid%beta_max, self%grid%n_beta, k), k=1, self%grid%n_beta)]
+      allocate (rows(4*self%grid%n_beta + 64, self%grid%n_alpha), counts(self%grid%n_alpha), &
+                failures(self%grid%n_alpha))
+      counts = 0
+      failures = ""
+      !$omp parallel do schedule(dynamic, 1) default(shared) private(i, k, cause)
+      do i = 1, self%grid%n_alpha
+         call boundary_row(i, cause)
+         if (allocated(cause)) failures(i) = cause%message
+      end do
+      !$omp end parallel do
+      extra(1) = system_description(scene%system)
+      extra(2) = "simple resonances (a multiplier pair at +1 or -1) by Hill's method with n x n blocks, checked "// &
+                 "against the monodromy; combination resonances (Krein collisions) by bisection on the samples"
+      extra(3) = "column kind: 1 a multiplier at +1, 2 at -1, 3 the edge of a combination tongue"
+      extra(4) = "column route: 1 Hill's method, 2 a root of Broucke's discriminant a1^2 - 4 a2 + 8 (n = 2), "// &
+                 "3 bisection on the verdict (any n)"
+      extra(5) = "column check: the distance of the nearest multiplier from +-1 at (alpha, beta) (route 1), the "// &
+                 "last bracket's width (routes 2, 3)"
+      extra(6) = "column error_estimate: of beta (route 1: two truncations of Hill's matrix; 2, 3: the bracket)"
+      extra(7) = "column status: 0 ok; 2 the point is not confirmed by the monodromy (check > 1e-4)"
+      call open_scene_output(scene, file, error)
+      if (allocated(error)) return
+      call write_header(file, scene_header(scene, "hillstab "//version_string//": transition curves of "// &
+                        system_equation_text(scene%system), extra), &
+                        "alpha beta kind route check error_estimate status", error)
+      n_failed = 0
+      do i = 1, self%grid%n_alpha
+         if (allocated(error)) exit
+         if (i > 1) call write_text(file, "", error)
+         do k = 1, counts(i)
+            if (allocated(error)) exit
+            length = 0
+            line = ""
+            call put_es(line, length, rows(k, i)%alpha, 17)
+            call put_es(line, length, rows(k, i)%beta, 17)
+            length = length + 1
+            call put_integer(line, length, rows(k, i)%kind)
+            length = length + 1
+            call put_integer(line, length, rows(k, i)%route)
+            call put_es(line, length, rows(k, i)%check, 17)
+            call put_es(line, length, rows(k, i)%error_estimate, 17)
+            length = length + 1
+            call put_integer(line, length, rows(k, i)%status)
+            if (rows(k, i)%status /= status_ok) n_failed = n_failed + 1
+            call write_text(file, line(:length), error)
+         end do
+      end do
+      call finish_output(file, error)
+      if (allocated(error)) return
+      do i = 1, self%grid%n_alpha
+         if (len_trim(failures(i)) > 0) then
+            call set_error(error, err_points_failed, scene%source//": alpha = "//real_text(grid_value( &
+               self%grid%alpha_min, self%grid%alpha_max, self%grid%n_alpha, i))//": "//trim(failures(i)))
+            return
+         end if
+      end do
+      if (n_failed > 0) call set_error(error, err_points_failed, scene%source//": "//integer_text(n_failed)// &
+         " curve points not confirmed by the monodromy (status 2)")
+      if (quiet) i = 0
+
+   contains
+
+      subroutine boundary_row(i, cause)
+         integer, intent(in) :: i
+         type(error_t), allocatable, intent(out) :: cause
+         type(system_boundary_t), allocatable :: found(:)
+         real(wp) :: alpha
+         alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, self%grid%n_alpha, i)
+         call system_boundaries(scene%system, form, alpha, betas, system_method_t(scene%method%kind, &
+                                scene%method%tolerance), found, cause)
+         counts(i) = min(size(found), size(rows, 1))
+         rows(1:counts(i), i) = found(1:counts(i))
+      end subroutine boundary_row
+   end subroutine boundaries_run
 
    !> A chart task of a system scene.
    function system_chart_task() result(task)
