@@ -78,9 +78,15 @@ scene section_2 "&scene task = 'poincare', output = 'section_2' /" "&series alph
 scene spring "&scene task = 'chart', output = 'lab' /" \
    "&physical g = 9.81, r0 = 0.25, a_min = 0.0, a_max = 0.2, n_a = 41, omega_min = 7.0, omega_max = 12.0, n_omega = 31 /"
 scene spring_critical "&scene task = 'boundaries', output = 'lab' /" "&physical k = 40, m = 0.5, g = 9.81, r0 = 0.25 /"
+# a system of two equations, other than the shipped ones: unequal masses, gyroscopic coupling
+pair="&system n = 2, mass = 1, 0, 0, 0.5, b = 1.5, -0.5, -0.5, 1.2, gyroscopic = 0, 0.1, -0.1, 0, cos = -1, -0.2, -0.2, -0.6 /"
+sgrid="alpha_min = 0.0, alpha_max = 1.0, n_alpha = 30, beta_min = 0.2, beta_max = 2.5, n_beta = 50"
+scene sys_chart "&scene task = 'chart', model = 'system', tolerance = 1e-8, output = 'sys' /" "$pair" "&chart $sgrid /"
+scene sys_curves "&scene task = 'boundaries', model = 'system', tolerance = 1e-8, output = 'sys' /" "$pair" \
+   "&chart $sgrid /"
 OMP_NUM_THREADS=2 "$hillstab" --quiet exact.nml paper.nml points.nml coefficient.nml damped.nml curves.nml \
    curves_paper.nml m_exact.nml m_formula.nml m_segments.nml m_curves.nml swing_1.nml swing_2.nml swing_3.nml map.nml \
-   section_1.nml section_2.nml spring.nml spring_critical.nml
+   section_1.nml section_2.nml spring.nml spring_critical.nml sys_chart.nml sys_curves.nml
 # the programs' own reports go to made.log
 "$onset_law" out/onset_law.dat >made.log 2>&1
 "$area" --quick >>made.log 2>&1
@@ -119,6 +125,8 @@ paper_curves='other_paper_boundaries.dat'; points='other_points.dat'" ;;
       poincare) echo "file='section_1_poincare.dat'; chaotic='section_2_poincare.dat'" ;;
       spring_chart) echo "file='lab_chart.dat'; critical='lab_boundaries.dat'" ;;
       strutt) echo "file='m_boundaries.dat'" ;;
+      system_chart) echo "file='sys_chart.dat'" ;;
+      system_boundaries) echo "file='sys_chart.dat'; curves='sys_boundaries.dat'" ;;
       *) return 1 ;;
    esac
 }
