@@ -41,6 +41,21 @@
 !> - [[hillstab_hill_model_elastic]]: [[hillstab_hill_model_elastic:elastic_model_t]]
 !> - [[hillstab_hill_model_mathieu]]: [[hillstab_hill_model_mathieu:mathieu_model_t]]
 !> - [[hillstab_hill_model_meissner]]: [[hillstab_hill_model_meissner:meissner_model_t]]
+!> - [[hillstab_hill_model_base]]: [[hillstab_hill_model_base:model_base_t]]
+!> - [[hillstab_hill_system]]: [[hillstab_hill_system:hill_system_t]], [[hillstab_hill_system:system_form_t]],
+!>   [[hillstab_hill_system:prepare_system]], `hillstab_max_dof` = [[hillstab_hill_system:max_dof]]
+!> - [[hillstab_hill_system_matrix]]: [[hillstab_hill_system_matrix:matrix_system_t]]
+!> - [[hillstab_hill_system_scalar]]: [[hillstab_hill_system_scalar:scalar_system_t]]
+!> - [[hillstab_hill_system_floquet]]: [[hillstab_hill_system_floquet:system_floquet_t]],
+!>   [[hillstab_hill_system_floquet:system_floquet]],
+!>   `hillstab_verdict_stable` = [[hillstab_hill_system_floquet:verdict_stable]],
+!>   `hillstab_verdict_unstable` = [[hillstab_hill_system_floquet:verdict_unstable]],
+!>   `hillstab_verdict_marginal` = [[hillstab_hill_system_floquet:verdict_marginal]],
+!>   `hillstab_kind_stable` = [[hillstab_hill_system_floquet:kind_stable]],
+!>   `hillstab_kind_plus_one` = [[hillstab_hill_system_floquet:kind_plus_one]],
+!>   `hillstab_kind_minus_one` = [[hillstab_hill_system_floquet:kind_minus_one]],
+!>   `hillstab_kind_combination` = [[hillstab_hill_system_floquet:kind_combination]],
+!>   `hillstab_kind_damped` = [[hillstab_hill_system_floquet:kind_damped]]
 !> - [[hillstab_hill_coefficient]]:
 !>   `hillstab_sampling_endpoint` = [[hillstab_hill_coefficient:sampling_endpoint]],
 !>   `hillstab_sampling_midpoint` = [[hillstab_hill_coefficient:sampling_midpoint]],
@@ -90,6 +105,13 @@
 !>   [[hillstab_integrate_monodromy_rk:monodromy_rk]]
 !> - [[hillstab_integrate_monodromy_gsl]]: [[hillstab_integrate_monodromy_gsl:trace_gsl]],
 !>   [[hillstab_integrate_monodromy_gsl:monodromy_gsl]]
+!> - [[hillstab_integrate_system]]: [[hillstab_integrate_system:system_method_t]],
+!>   [[hillstab_integrate_system:system_monodromy_t]], [[hillstab_integrate_system:system_nodes_t]],
+!>   [[hillstab_integrate_system:system_monodromy]],
+!>   `hillstab_system_auto` = [[hillstab_integrate_system:system_auto]],
+!>   `hillstab_system_magnus4` = [[hillstab_integrate_system:system_magnus4]],
+!>   `hillstab_system_magnus6` = [[hillstab_integrate_system:system_magnus6]],
+!>   `hillstab_system_rk` = [[hillstab_integrate_system:system_rk]]
 !> - [[hillstab_integrate_rk]]: [[hillstab_integrate_rk_stages:rk_system_t]],
 !>   [[hillstab_integrate_rk:rk_options_t]], [[hillstab_integrate_rk_stages:rk_step_t]],
 !>   [[hillstab_integrate_rk:rk_integrate]], [[hillstab_integrate_rk:rk_dense_value]],
@@ -107,6 +129,8 @@
 !>   [[hillstab_curves_boundaries:exact_boundaries]]
 !> - [[hillstab_curves_hill_fourier]]: [[hillstab_curves_hill_fourier:fourier_boundaries]]
 !> - [[hillstab_curves_characteristic]]: [[hillstab_curves_characteristic:characteristic_values]]
+!> - [[hillstab_curves_system_boundaries]]: [[hillstab_curves_system_boundaries:system_boundary_t]],
+!>   [[hillstab_curves_system_boundaries:system_boundaries]]
 !> - [[hillstab_pendulum_equations]]: [[hillstab_pendulum_equations:pendulum_t]],
 !>   [[hillstab_pendulum_equations:pendulum_from_chart]],
 !>   [[hillstab_pendulum_equations:pendulum_initial_state]], [[hillstab_pendulum_equations:pendulum_energy]],
@@ -173,6 +197,15 @@ module hillstab
    use hillstab_hill_model_elastic, only: elastic_model_t
    use hillstab_hill_model_mathieu, only: mathieu_model_t
    use hillstab_hill_model_meissner, only: meissner_model_t
+   use hillstab_hill_model_base, only: model_base_t
+   use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system, hillstab_max_dof => max_dof
+   use hillstab_hill_system_matrix, only: matrix_system_t
+   use hillstab_hill_system_scalar, only: scalar_system_t
+   use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet, &
+      hillstab_verdict_stable => verdict_stable, hillstab_verdict_unstable => verdict_unstable, &
+      hillstab_verdict_marginal => verdict_marginal, hillstab_kind_stable => kind_stable, &
+      hillstab_kind_plus_one => kind_plus_one, hillstab_kind_minus_one => kind_minus_one, &
+      hillstab_kind_combination => kind_combination, hillstab_kind_damped => kind_damped
    use hillstab_hill_coefficient, only: hillstab_sampling_endpoint => sampling_endpoint, &
       hillstab_sampling_midpoint => sampling_midpoint, hillstab_sampling_average => sampling_average, &
       hillstab_sampling_name => sampling_name, sampling_from_name, segment_coefficients, in_physical_domain
@@ -195,6 +228,9 @@ module hillstab
    use hillstab_integrate_magnus, only: trace_magnus, monodromy_magnus
    use hillstab_integrate_monodromy_rk, only: trace_rk, monodromy_rk
    use hillstab_integrate_monodromy_gsl, only: trace_gsl, monodromy_gsl
+   use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
+      hillstab_system_auto => system_auto, hillstab_system_magnus4 => system_magnus4, &
+      hillstab_system_magnus6 => system_magnus6, hillstab_system_rk => system_rk
    use hillstab_integrate_rk, only: rk_system_t, rk_options_t, rk_step_t, rk_integrate, rk_dense_value, &
       hillstab_rk_dopri5 => rk_dopri5, hillstab_rk_dop853 => rk_dop853, hillstab_rk_pd87 => rk_pd87, &
       hillstab_rk_vern98 => rk_vern98, rk_method_name
@@ -203,6 +239,7 @@ module hillstab
       unstable_intervals_from_roots, curve_route, exact_boundaries
    use hillstab_curves_hill_fourier, only: fourier_boundaries
    use hillstab_curves_characteristic, only: characteristic_values
+   use hillstab_curves_system_boundaries, only: system_boundary_t, system_boundaries
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_energy, &
       pendulum_angle, pendulum_radius, pendulum_bounce, pendulum_system_t
    use hillstab_pendulum_analysis, only: bounce_multipliers_t, bounce_multipliers, onset_periods, pendulum_watch_t, &

@@ -356,6 +356,8 @@ contains
          if (k > 1) text = text//" | "
          text = text//model%name()//": "//model%summary()
       end do
+      text = text//" | system: n coupled equations M x'' + (C + G) x' + K(tau) x = 0, the matrices in &system "// &
+             "(tasks chart, points, coefficient, boundaries; guide page Coupled systems)"
    end function model_choices
 
    !> The methods for a template's comment: "auto (…) | formula (…) | …".
