@@ -130,9 +130,12 @@ contains
             "(beta_max > beta_min) and n_beta >= 2 samples in it (the brackets of the combination tongues)")
          return
       end if
-      if (int(self%grid%n_alpha, int64)*self%grid%n_beta > int(max_grid_count, int64)) &
+      if (int(self%grid%n_alpha, int64)*self%grid%n_beta > int(max_grid_count, int64)) then
          call fail(error, file%path, "chart", "n_beta", "n_alpha * n_beta exceeds the limit of 1e8 points")
-      if (.not. allocated(scene%system)) call fail(error, file%path, "scene", "model", "not a system")
+         return
+      end if
+      call check_system_cost(scene, max(abs(self%grid%alpha_min), abs(self%grid%alpha_max)), &
+                             max(abs(self%grid%beta_min), abs(self%grid%beta_max)), "chart", "beta_max", error)
    end subroutine boundaries_read
 
    !> The curves, one block per α: `alpha beta kind route check error_estimate status`.
@@ -460,6 +463,42 @@ contains
       v = system_point_values(form%n, alpha, beta, f, r, failed)
    end subroutine evaluate
 
+   !> Refuse a scene whose largest |α| and |β| make the system's frequencies so high that a
+   !> period takes more steps than the methods' ladder holds: √‖M⁻¹K‖ over the period, times
+   !> the period, must stay below 2e3 (about 8000 Magnus steps); the message names the group
+   !> and the variable that set the extreme.
+   subroutine check_system_cost(scene, alpha_abs, beta_abs, group, variable, error)
+      type(scene_t), intent(in) :: scene
+      real(wp), intent(in) :: alpha_abs, beta_abs
+      character(len=*), intent(in) :: group, variable
+      type(error_t), allocatable, intent(out) :: error
+      type(system_form_t) :: form
+      type(error_t), allocatable :: cause
+      real(wp), allocatable :: p(:, :), b(:, :)
+      real(wp) :: size_a
+      integer :: k
+      real(wp), parameter :: limit = 2.0e3_wp
+      call prepare_system(scene%system, scene%epsilon, form, cause)
+      if (allocated(cause)) then
+         call fail(error, scene%source, "system", "mass", cause%message)
+         return
+      end if
+      allocate (p(form%n, form%n), b(form%n, form%n))
+      size_a = 0.0_wp
+      do k = 0, 7
+         call scene%system%stiffness(alpha_abs, 0.125_wp*k*form%period, p, b)
+         size_a = max(size_a, maxval(sum(abs(matmul(form%m_inverse, p)), dim=2)) + &
+                  beta_abs*maxval(sum(abs(matmul(form%m_inverse, b)), dim=2)))
+         call scene%system%stiffness(-alpha_abs, 0.125_wp*k*form%period, p, b)
+         size_a = max(size_a, maxval(sum(abs(matmul(form%m_inverse, p)), dim=2)) + &
+                  beta_abs*maxval(sum(abs(matmul(form%m_inverse, b)), dim=2)))
+      end do
+      size_a = max(size_a, maxval(sum(abs(form%d), dim=2))**2)
+      if (.not. (sqrt(size_a)*form%period <= limit)) call fail(error, scene%source, group, variable, &
+         "the system's frequencies reach sqrt(|M^-1 K|) = "//real_text(sqrt(size_a))//" there: over the "// &
+         "period that is beyond the "//real_text(limit)//" radians the methods integrate (about 8000 steps)")
+   end subroutine check_system_cost
+
    !> `&chart` (any finite α), and the columns.
    subroutine chart_read(self, file, scene, error)
       class(system_chart_task_t), intent(inout) :: self  !! the task, its grid filled in
@@ -473,6 +512,11 @@ contains
          call fail(error, file%path, "chart", "n_beta", "n_alpha * n_beta exceeds the limit of 1e8 points")
          return
       end if
+      call check_system_cost(scene, max(abs(self%grid%alpha_min), abs(self%grid%alpha_max)), &
+                             max(abs(self%grid%beta_min), abs(self%grid%beta_max)), "chart", &
+                             trim(merge("beta_max ", "alpha_max", max(abs(self%grid%beta_min), abs(self%grid%beta_max)) >= &
+                                   max(abs(self%grid%alpha_min), abs(self%grid%alpha_max)))), error)
+      if (allocated(error)) return
       call self%choose_columns(scene, error)
    end subroutine chart_read
 
@@ -608,6 +652,11 @@ contains
       call read_points_group(file, points_group(), path=self%path, pairs=self%points, values=self%groups(1), &
                              error=error)
       if (allocated(error)) return
+      if (size(self%points, 2) > 0) then
+         call check_system_cost(scene, maxval(abs(self%points(1, :))), maxval(abs(self%points(2, :))), "points", &
+                                "file", error)
+         if (allocated(error)) return
+      end if
       call self%choose_columns(scene, error)
    end subroutine points_read
 
