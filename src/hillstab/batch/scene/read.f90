@@ -519,7 +519,12 @@ contains
                call fail(error, file%path, group%name, "m", "the mass must be > 0 (kg), got "//real_text(m))
                return
             end if
-            omega = sqrt(k/m)
+            ! k/m itself may overflow (a trap in debug builds): compared through logarithms first
+            if (log(k) - log(m) < log(huge(1.0_wp)) .and. log(k) - log(m) > log(tiny(1.0_wp))) then
+               omega = sqrt(k/m)
+            else
+               omega = 0.0_wp
+            end if
             if (.not. ieee_is_finite(omega) .or. omega <= 0.0_wp) then
                call fail(error, file%path, group%name, "k", "omega = sqrt(k/m) must be a finite number > 0, got k "// &
                   "= "//real_text(k)//", m = "//real_text(m))

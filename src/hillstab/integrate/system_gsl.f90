@@ -1,0 +1,157 @@
+!> The monodromy of a system of Hill equations by GSL's odeiv2 driver with the Prince–Dormand
+!> 8(7) pair rk8pd on the 4n² entries of the fundamental matrix (method `gsl` of a system: the
+!> reference of another library, beside hillstab's own rk). Two passes, epsabs = epsrel =
+!> tolerance/10 and then /320, over the window (half the period where `system_form_t%half`);
+!> the second value is returned, the difference of the two its error estimate (divided by 32,
+!> GSL's global error following its epsilon about linearly), status_roundoff when that
+!> estimate misses the tolerance. The right-hand side receives the system through GSL's
+!> `params` pointer (no module state: calls may run on several threads at once).
+!>
+!>```fortran
+!> call system_monodromy_gsl(system, form, alpha, beta, 1.0e-10_wp, result, error)
+!>```
+module hillstab_integrate_system_gsl
+   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_ptr, c_funptr, c_null_funptr, c_loc, &
+      c_funloc, c_f_pointer, c_associated
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t, set_error, err_integration
+   use hillstab_core_status, only: status_ok, status_roundoff, status_failed
+   use hillstab_hill_system, only: hill_system_t, system_form_t
+   use hillstab_hill_system_floquet, only: symplectic_form
+   use hillstab_ffi_gsl, only: gsl_odeiv2_system, gsl_odeiv2_step_rk8pd, gsl_set_error_handler_off, &
+      gsl_odeiv2_driver_alloc_y_new, gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_odeiv2_driver_set_nmax, &
+      gsl_success, gsl_ebadfunc
+   implicit none
+   private
+   public :: system_monodromy_gsl, gsl_system_result_t
+
+   !> What the right-hand side needs (GSL's params).
+   type :: gsl_context_t
+      class(hill_system_t), allocatable :: system
+      type(system_form_t) :: form
+      real(wp) :: alpha = 0.0_wp, beta = 0.0_wp
+      real(wp), allocatable :: p(:, :), b(:, :)
+   end type gsl_context_t
+
+   !> Φ, its error estimate relative to max(1, max|Φ_ij|), the status and GSL's evaluations.
+   type :: gsl_system_result_t
+      real(wp), allocatable :: phi(:, :)       !! Φ (2n × 2n)
+      real(wp) :: error_estimate = 0.0_wp      !! relative to max(1, max|Φ_ij|)
+      integer :: status = status_ok            !! status_ok, status_roundoff or status_failed
+   end type gsl_system_result_t
+
+contains
+
+   !> y' = A(t) y for the m × m fundamental matrix stored column by column.
+   function fundamental_rhs(t, y, dydt, params) bind(C) result(status)
+      real(c_double), value :: t
+      real(c_double), intent(in) :: y(*)
+      real(c_double), intent(out) :: dydt(*)
+      type(c_ptr), value :: params
+      integer(c_int) :: status
+      type(gsl_context_t), pointer :: c
+      integer :: n, m, col, o
+      real(wp), allocatable :: l(:, :)
+      call c_f_pointer(params, c)
+      n = c%form%n
+      m = 2*n
+      call c%system%stiffness(c%alpha, t, c%p, c%b)
+      l = -matmul(c%form%m_inverse, c%p + c%beta*c%b)
+      do col = 1, m
+         o = (col - 1)*m
+         dydt(o + 1:o + n) = y(o + n + 1:o + m)
+         dydt(o + n + 1:o + m) = matmul(l, y(o + 1:o + n)) + matmul(c%form%d, y(o + n + 1:o + m))
+      end do
+      status = gsl_success
+      if (.not. all(ieee_is_finite(dydt(1:m*m)))) status = gsl_ebadfunc
+   end function fundamental_rhs
+
+   !> The monodromy by rk8pd (see the module's text).
+   subroutine system_monodromy_gsl(system, form, alpha, beta, tolerance, result, error)
+      class(hill_system_t), intent(in) :: system  !! the system
+      type(system_form_t), intent(in) :: form     !! prepared at its ε
+      real(wp), intent(in) :: alpha, beta         !! the point
+      real(wp), intent(in) :: tolerance           !! target error of Φ relative to max(1, max|Φ_ij|)
+      type(gsl_system_result_t), intent(out) :: result  !! Φ, estimate, status
+      type(error_t), allocatable, intent(out) :: error  !! err_integration when GSL fails
+      type(gsl_context_t), target :: context
+      type(gsl_odeiv2_system) :: sys
+      type(c_ptr) :: driver
+      type(c_funptr) :: previous
+      real(wp), allocatable :: y(:), first(:, :), second(:, :)
+      real(c_double) :: t, length
+      real(wp) :: eps, scale
+      integer :: m, pass, i
+      integer(c_int) :: status
+      m = 2*form%n
+      allocate (context%system, source=system)
+      context%form = form
+      context%alpha = alpha
+      context%beta = beta
+      allocate (context%p(form%n, form%n), context%b(form%n, form%n))
+      previous = gsl_set_error_handler_off()
+      sys = gsl_odeiv2_system(c_funloc(fundamental_rhs), c_null_funptr, int(m*m, c_size_t), c_loc(context))
+      length = form%period
+      if (form%half) length = 0.5_wp*form%period
+      eps = max(0.1_wp*tolerance, 1.0e-14_wp)
+      allocate (result%phi(m, m), second(m, m))
+      result%phi = 0.0_wp
+      do pass = 1, 2
+         driver = gsl_odeiv2_driver_alloc_y_new(sys, gsl_odeiv2_step_rk8pd, 1.0e-3_c_double, eps, eps)
+         if (.not. c_associated(driver)) then
+            result%status = status_failed
+            call set_error(error, err_integration, "gsl: the driver could not be allocated")
+            return
+         end if
+         status = gsl_odeiv2_driver_set_nmax(driver, 10000000_8)
+         y = [(merge(1.0_wp, 0.0_wp, mod(i, m + 1) == 0), i=0, m*m - 1)]
+         t = 0.0_c_double
+         status = gsl_odeiv2_driver_apply(driver, t, length, y)
+         call gsl_odeiv2_driver_free(driver)
+         if (status /= gsl_success) then
+            result%status = status_failed
+            call set_error(error, err_integration, "gsl: rk8pd failed (GSL status "//trim(int_text(status))//")")
+            return
+         end if
+         if (form%half) then
+            call full_from_half(form, reshape(y, [m, m]), second)
+         else
+            second = reshape(y, [m, m])
+         end if
+         if (pass == 1) first = second
+         eps = max(eps/320.0_wp, 1.0e-15_wp)
+      end do
+      scale = max(1.0_wp, maxval(abs(second)))
+      result%phi = second
+      result%error_estimate = max(maxval(abs(second - first))/scale/32.0_wp, epsilon(1.0_wp))
+      result%status = merge(status_ok, status_roundoff, result%error_estimate <= tolerance)
+   end subroutine system_monodromy_gsl
+
+   !> Φ = R Y⁻¹ R Y with Y⁻¹ = Ω⁻¹ Yᵀ Ω (Hamiltonian, G = 0, K even).
+   pure subroutine full_from_half(form, y, phi)
+      type(system_form_t), intent(in) :: form
+      real(wp), intent(in) :: y(:, :)
+      real(wp), intent(out) :: phi(:, :)
+      real(wp) :: omega(size(y, 1), size(y, 1)), omega_inverse(size(y, 1), size(y, 1)), r(size(y, 1))
+      integer :: n, m, i
+      n = form%n
+      m = 2*n
+      omega = symplectic_form(form)
+      omega_inverse = 0.0_wp
+      omega_inverse(1:n, n + 1:m) = -form%m_inverse
+      omega_inverse(n + 1:m, 1:n) = form%m_inverse
+      r = [(merge(1.0_wp, -1.0_wp, i <= n), i=1, m)]
+      phi = matmul(omega_inverse, matmul(transpose(y), omega))
+      do i = 1, m
+         phi(i, :) = r(i)*phi(i, :)*r
+      end do
+      phi = matmul(phi, y)
+   end subroutine full_from_half
+
+   pure function int_text(i) result(text)
+      integer(c_int), intent(in) :: i
+      character(len=16) :: text
+      write (text, '(i0)') i
+   end function int_text
+end module hillstab_integrate_system_gsl
