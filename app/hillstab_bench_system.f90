@@ -1,0 +1,415 @@
+!> Benchmark of the systems of Hill equations (`make bench-system`):
+!>
+!> `hillstab_bench_system [--n N] [--alpha-n N] [--beta-n N] [--cost-n N] [--no-gsl] [--no-cost]`
+!>
+!> 1. Speed at equal accuracy. The N_ALPHA × N_BETA chart (default 300 × 300) of the pendula
+!>    pair of data/scenes/system_pendula.nml (M = diag(1, 0.64), B = diag(1, 0.8) + 0.1
+!>    [[1, −1], [−1, 1]], K = β B − α cos πτ diag(1, 0.8)) over α in [0, 2], β in [0, 12],
+!>    the grid of bench/chart_gsl_system.c, at tolerance 1e-10, one thread:
+!>    - hillstab: `system_monodromy` (method auto, one `system_nodes_t` per row of fixed α)
+!>      and `system_floquet` at every point, timed with system_clock;
+!>    - the plain C GSL program (bench/chart_gsl_system.c, rk8pd on the 4 × 4 fundamental
+!>      matrix over the period, compiled into build/chart_gsl_system when missing) at
+!>      eps = 1e-10, 1e-11, 1e-12, in the same run, its own wall time of the loop;
+!>    - the reference: the same GSL program at eps = 1e-14 (its error, checked here on a
+!>      subsample against hillstab's magnus6 at tolerance 1e-13, is reported as well).
+!>    The error of a point is max|Φ − Φ_ref| / max(1, max|Φ_ref|) (Φ = e^s Φ̃); the table gives
+!>    the max and median over the grid. "Equal accuracy": the GSL run of the largest eps whose
+!>    max error is not larger than hillstab's (the cheapest GSL run at least as accurate);
+!>    the speed ratio is its time over hillstab's. When no GSL run is that accurate, the
+!>    ratio against the most accurate one is printed as a lower bound ("> ").
+!> 2. Cost against n: chains of n = 1, 2, 4, 10, 20 driven oscillators (M = I, K0 the
+!>    tridiagonal spring chain 2, −1 with fixed ends, B = I, the drive −(0.6 + 0.4 (i−1)/(n−1))
+!>    on the diagonal and 0.15 between neighbours, so that the modes couple) over a
+!>    COST_N × COST_N grid (default 12) of α in [0, 1], β in [0.5, 6] at 1e-10: microseconds
+!>    and Magnus steps per point.
+!>
+!> Writes build/bench/system_speed.dat and build/bench/system_cost.dat (plots/bench_system.gp).
+program hillstab_bench_system
+   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_error, only: error_t
+   use hillstab_core_status, only: status_ok
+   use hillstab_hill_system, only: system_form_t, prepare_system
+   use hillstab_hill_system_matrix, only: matrix_system_t
+   use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet
+   use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
+      system_auto, system_magnus6
+   implicit none
+   integer, parameter :: n_gsl = 3
+   real(wp), parameter :: tolerance = 1.0e-10_wp, gsl_eps(n_gsl) = [1.0e-10_wp, 1.0e-11_wp, 1.0e-12_wp]
+   real(wp), parameter :: reference_eps = 1.0e-14_wp
+   character(len=*), parameter :: gsl_program = "build/chart_gsl_system", out_dir = "build/bench"
+   integer :: n_alpha = 300, n_beta = 300, cost_n = 12, n_points
+   logical :: run_gsl = .true., run_cost = .true.
+   real(wp), allocatable :: phi_h(:, :), phi_g(:, :, :), phi_ref(:, :), err_h(:), err_g(:, :)
+   real(wp) :: time_h, time_g(n_gsl), time_ref, steps_h, ref_check
+   integer :: failures_h, unstable_h, k
+
+   call read_arguments()
+   n_points = n_alpha*n_beta
+   call execute_command_line("mkdir -p "//out_dir)
+   write (*, '(a, i0, a, i0, a, es8.1, a)') "pendula pair, ", n_alpha, " x ", n_beta, &
+      " grid, alpha in [0, 2], beta in [0, 12], tolerance ", tolerance, ", one thread"
+   call hillstab_chart(system_method_t(system_auto, tolerance), phi_h, time_h, steps_h, failures_h, unstable_h)
+   write (*, '(a, f9.2, a, f8.2, a, i0, a, i0)') "hillstab auto:", 1.0e6_wp*time_h/n_points, " us/point, ", &
+      steps_h, " steps/point, failures ", failures_h, ", unstable points ", unstable_h
+   if (run_gsl) then
+      allocate (phi_g(16, n_points, n_gsl), err_g(n_points, n_gsl), phi_ref(16, n_points))
+      do k = 1, n_gsl
+         call gsl_chart(gsl_eps(k), phi_g(:, :, k), time_g(k))
+      end do
+      call gsl_chart(reference_eps, phi_ref, time_ref, reference=.true.)
+      allocate (err_h(n_points))
+      err_h = point_errors(phi_h, phi_ref)
+      do k = 1, n_gsl
+         err_g(:, k) = point_errors(phi_g(:, :, k), phi_ref)
+      end do
+      ref_check = reference_error(phi_ref)
+      call speed_table()
+   end if
+   if (run_cost) call cost_table()
+
+contains
+
+   !> The command-line options (see the program's text).
+   subroutine read_arguments()
+      character(len=64) :: arg, value
+      integer :: i
+      i = 1
+      do while (i <= command_argument_count())
+         call get_command_argument(i, arg)
+         select case (arg)
+         case ("--n", "--alpha-n", "--beta-n", "--cost-n")
+            call get_command_argument(i + 1, value)
+            i = i + 1
+            select case (arg)
+            case ("--n"); read (value, *) n_alpha; n_beta = n_alpha
+            case ("--alpha-n"); read (value, *) n_alpha
+            case ("--beta-n"); read (value, *) n_beta
+            case ("--cost-n"); read (value, *) cost_n
+            end select
+         case ("--no-gsl"); run_gsl = .false.
+         case ("--no-cost"); run_cost = .false.
+         case default
+            write (*, '(a)') "usage: hillstab_bench_system [--n N] [--alpha-n N] [--beta-n N] [--cost-n N] "// &
+               "[--no-gsl] [--no-cost]"
+            error stop 2
+         end select
+         i = i + 1
+      end do
+      if (n_alpha < 2 .or. n_beta < 2 .or. cost_n < 2) error stop "bench: grids need at least 2 x 2 points"
+   end subroutine read_arguments
+
+   !> The grid value i of n over [lo, hi] as bench/chart_gsl_system.c computes it.
+   pure real(wp) function grid_value(lo, hi, n, i)
+      real(wp), intent(in) :: lo, hi
+      integer, intent(in) :: n, i
+      if (i == n) then
+         grid_value = hi
+      else
+         grid_value = lo + (hi - lo)*real(i - 1, wp)/real(n - 1, wp)
+      end if
+   end function grid_value
+
+   !> The pendula pair of the benchmark (l2 = 0.8, c = 0.1).
+   function pendula_pair() result(pair)
+      type(matrix_system_t) :: pair
+      type(error_t), allocatable :: error
+      real(wp), parameter :: l2 = 0.8_wp, c = 0.1_wp
+      call pair%set_values("n", [2.0_wp], error)
+      call pair%set_values("mass", [1.0_wp, 0.0_wp, 0.0_wp, l2*l2], error)
+      call pair%set_values("b", [1.0_wp + c, -c, -c, l2 + c], error)
+      call pair%set_values("cos", [-1.0_wp, 0.0_wp, 0.0_wp, -l2], error)
+      call pair%check_values(error)
+      if (allocated(error)) error stop "bench: pendula pair refused"
+   end function pendula_pair
+
+   !> A chain of n driven oscillators (see the program's text).
+   function oscillator_chain(n) result(chain)
+      integer, intent(in) :: n
+      type(matrix_system_t) :: chain
+      type(error_t), allocatable :: error
+      real(wp) :: k0(n, n), drive(n, n), b(n, n)
+      integer :: i
+      k0 = 0.0_wp
+      drive = 0.0_wp
+      b = 0.0_wp
+      do i = 1, n
+         k0(i, i) = 2.0_wp
+         b(i, i) = 1.0_wp
+         drive(i, i) = -(0.6_wp + 0.4_wp*real(i - 1, wp)/real(max(1, n - 1), wp))
+         if (i < n) then
+            k0(i, i + 1) = -1.0_wp
+            k0(i + 1, i) = -1.0_wp
+            drive(i, i + 1) = 0.15_wp
+            drive(i + 1, i) = 0.15_wp
+         end if
+      end do
+      call chain%set_values("n", [real(n, wp)], error)
+      call chain%set_values("k0", reshape(transpose(k0), [n*n]), error)
+      call chain%set_values("b", reshape(transpose(b), [n*n]), error)
+      call chain%set_values("cos", reshape(transpose(drive), [n*n]), error)
+      call chain%check_values(error)
+      if (allocated(error)) error stop "bench: oscillator chain refused"
+   end function oscillator_chain
+
+   !> Seconds of the wall clock.
+   real(wp) function wall_seconds()
+      integer(int64) :: count, rate
+      call system_clock(count, rate)
+      wall_seconds = real(count, wp)/real(rate, wp)
+   end function wall_seconds
+
+   !> hillstab's chart of the pendula pair: Φ = e^s Φ̃ row-major per point, the time of the
+   !> loop (monodromy and Floquet verdict), steps per point, failures and unstable points.
+   subroutine hillstab_chart(method, phi, seconds, steps, failures, unstable, stride)
+      type(system_method_t), intent(in) :: method
+      real(wp), allocatable, intent(out) :: phi(:, :)
+      real(wp), intent(out) :: seconds, steps
+      integer, intent(out) :: failures, unstable
+      integer, intent(in), optional :: stride  !! only every stride-th point (the others zero)
+      type(matrix_system_t) :: pair
+      type(system_form_t) :: form
+      type(system_nodes_t) :: nodes
+      type(system_monodromy_t) :: r
+      type(system_floquet_t) :: f
+      type(error_t), allocatable :: error
+      integer :: i, j, p, every
+      integer(int64) :: total_steps
+      real(wp) :: alpha, beta, t0
+      every = 1
+      if (present(stride)) every = stride
+      pair = pendula_pair()
+      call prepare_system(pair, 0.0_wp, form, error)
+      if (allocated(error)) error stop "bench: prepare_system"
+      allocate (phi(16, n_points))
+      phi = 0.0_wp
+      failures = 0
+      unstable = 0
+      total_steps = 0
+      t0 = wall_seconds()
+      do i = 1, n_alpha
+         alpha = grid_value(0.0_wp, 2.0_wp, n_alpha, i)
+         nodes = system_nodes_t()
+         do j = 1, n_beta
+            p = (i - 1)*n_beta + j
+            if (mod(p - 1, every) /= 0) cycle
+            beta = grid_value(0.0_wp, 12.0_wp, n_beta, j)
+            call system_monodromy(pair, form, alpha, beta, method, nodes, r, error)
+            call system_floquet(r%phi, form, r%error_estimate*max(1.0_wp, maxval(abs(r%phi))), f, r%log_scale)
+            if (r%status /= status_ok) failures = failures + 1
+            if (f%log_lambda_max > 0.0_wp) unstable = unstable + 1
+            total_steps = total_steps + r%steps
+            phi(:, p) = reshape(transpose(r%phi*exp(r%log_scale)), [16])
+         end do
+      end do
+      seconds = wall_seconds() - t0
+      steps = real(total_steps, wp)/real((n_points + every - 1)/every, wp)
+   end subroutine hillstab_chart
+
+   !> The GSL program at eps: Φ row-major per point and the time of its loop.
+   subroutine gsl_chart(eps, phi, seconds, reference)
+      real(wp), intent(in) :: eps
+      real(wp), intent(out) :: phi(:, :)
+      real(wp), intent(out) :: seconds
+      logical, intent(in), optional :: reference
+      character(len=256) :: data_file, time_file, command
+      character(len=16) :: eps_text
+      logical :: exists
+      integer :: unit, ios, p, stable, evaluations, failures
+      real(wp) :: row(21)
+      inquire (file=gsl_program, exist=exists)
+      if (.not. exists) then
+         call execute_command_line("cc -O2 bench/chart_gsl_system.c -o "//gsl_program//" -lgsl -lgslcblas -lm", &
+                                   exitstat=ios)
+         if (ios /= 0) error stop "bench: cannot compile bench/chart_gsl_system.c"
+      end if
+      write (eps_text, '(es8.1)') eps
+      eps_text = adjustl(eps_text)
+      data_file = out_dir//"/system_gsl_"//trim(eps_text)//".dat"
+      time_file = out_dir//"/system_gsl_"//trim(eps_text)//".time"
+      write (command, '(a, 1x, i0, 1x, i0, 1x, a, 1x, a, a, a)') gsl_program, n_alpha, n_beta, trim(eps_text), &
+         trim(data_file), " > ", trim(time_file)
+      call execute_command_line(trim(command), exitstat=ios)
+      if (ios /= 0) error stop "bench: the GSL program failed"
+      open (newunit=unit, file=time_file, status="old", action="read")
+      read (unit, *) seconds, evaluations, failures
+      close (unit)
+      open (newunit=unit, file=data_file, status="old", action="read")
+      do p = 1, n_points
+         read (unit, *) row(1:4), stable, row(6:21)
+         phi(:, p) = row(6:21)
+      end do
+      close (unit, status="delete")
+      write (*, '(a, es8.1, a, f9.2, a, f9.1, a, i0, a)') "GSL rk8pd eps", eps, ":", 1.0e6_wp*seconds/n_points, &
+         " us/point, ", real(evaluations, wp)/n_points, " evaluations/point, ", failures, " failures"
+      if (present(reference)) then
+         if (reference) write (*, '(a)') "   (the reference)"
+      end if
+   end subroutine gsl_chart
+
+   !> max|Φ − Φ_ref| / max(1, max|Φ_ref|) per point.
+   pure function point_errors(phi, ref) result(err)
+      real(wp), intent(in) :: phi(:, :), ref(:, :)
+      real(wp) :: err(size(phi, 2))
+      integer :: p
+      do p = 1, size(phi, 2)
+         err(p) = maxval(abs(phi(:, p) - ref(:, p)))/max(1.0_wp, maxval(abs(ref(:, p))))
+      end do
+   end function point_errors
+
+   !> The median of x (x is sorted in a copy).
+   real(wp) function median(x)
+      real(wp), intent(in) :: x(:)
+      real(wp) :: y(size(x))
+      y = x
+      call heap_sort(y)
+      if (mod(size(y), 2) == 1) then
+         median = y(size(y)/2 + 1)
+      else
+         median = 0.5_wp*(y(size(y)/2) + y(size(y)/2 + 1))
+      end if
+   end function median
+
+   !> Ascending heap sort in place.
+   subroutine heap_sort(a)
+      real(wp), intent(inout) :: a(:)
+      integer :: n, i
+      real(wp) :: t
+      n = size(a)
+      do i = n/2, 1, -1
+         call sift(a, i, n)
+      end do
+      do i = n, 2, -1
+         t = a(1); a(1) = a(i); a(i) = t
+         call sift(a, 1, i - 1)
+      end do
+   end subroutine heap_sort
+
+   !> Sift a(start) down the heap a(1:last).
+   subroutine sift(a, start, last)
+      real(wp), intent(inout) :: a(:)
+      integer, intent(in) :: start, last
+      integer :: root, child
+      real(wp) :: v
+      root = start
+      v = a(root)
+      do
+         child = 2*root
+         if (child > last) exit
+         if (child < last) then
+            if (a(child + 1) > a(child)) child = child + 1
+         end if
+         if (a(child) <= v) exit
+         a(root) = a(child)
+         root = child
+      end do
+      a(root) = v
+   end subroutine sift
+
+   !> The reference's own error: max over every 37th point against magnus6 at 1e-13.
+   real(wp) function reference_error(ref)
+      real(wp), intent(in) :: ref(:, :)
+      real(wp), allocatable :: phi(:, :), err(:)
+      real(wp) :: seconds, steps
+      integer :: failures, unstable, p
+      integer, parameter :: stride = 37
+      call hillstab_chart(system_method_t(system_magnus6, 1.0e-13_wp), phi, seconds, steps, failures, unstable, stride)
+      err = point_errors(phi, ref)
+      reference_error = 0.0_wp
+      do p = 1, n_points, stride
+         reference_error = max(reference_error, err(p))
+      end do
+   end function reference_error
+
+   !> The speed table at equal accuracy (screen and build/bench/system_speed.dat).
+   subroutine speed_table()
+      integer :: unit, k, match
+      real(wp) :: ratio
+      character(len=2) :: bound
+      open (newunit=unit, file=out_dir//"/system_speed.dat", status="replace", action="write")
+      write (unit, '(a, i0, a, i0, a, es8.1)') "# system benchmark: pendula pair, ", n_alpha, " x ", n_beta, &
+         " grid, one thread, hillstab tolerance ", tolerance
+      write (unit, '(a, es8.1, a, es9.2)') "# reference: GSL rk8pd at eps ", reference_eps, &
+         "; its max error against magnus6 at 1e-13 (every 37th point) ", ref_check
+      write (unit, '(a)') "# columns: contender(0 hillstab, 1 GSL) eps us_per_point max_error median_error"
+      write (*, '(/, a, es8.1, a, es9.2, a)') "errors against GSL at eps ", reference_eps, &
+         " (whose own max error on a subsample is ", ref_check, ")"
+      write (*, '(a)') "contender            us/point    max error   median error"
+      write (*, '(a, es8.1, f12.2, 2es14.3)') "hillstab auto ", tolerance, 1.0e6_wp*time_h/n_points, maxval(err_h), &
+         median(err_h)
+      write (unit, '(i2, es10.2, f12.3, 2es12.3)') 0, tolerance, 1.0e6_wp*time_h/n_points, maxval(err_h), median(err_h)
+      do k = 1, n_gsl
+         write (*, '(a, es8.1, f12.2, 2es14.3)') "GSL rk8pd     ", gsl_eps(k), 1.0e6_wp*time_g(k)/n_points, &
+            maxval(err_g(:, k)), median(err_g(:, k))
+         write (unit, '(i2, es10.2, f12.3, 2es12.3)') 1, gsl_eps(k), 1.0e6_wp*time_g(k)/n_points, maxval(err_g(:, k)), &
+            median(err_g(:, k))
+      end do
+      ! the cheapest GSL run at least as accurate as hillstab (largest eps whose max error <= hillstab's)
+      match = 0
+      do k = n_gsl, 1, -1
+         if (maxval(err_g(:, k)) <= maxval(err_h)) match = k
+      end do
+      bound = "  "
+      if (match == 0) then
+         match = minloc([(maxval(err_g(:, k)), k=1, n_gsl)], dim=1)
+         bound = "> "
+      end if
+      ratio = time_g(match)/time_h
+      write (*, '(a, es8.1, a, a, f7.2)') "equal accuracy: GSL at eps ", gsl_eps(match), &
+         " against hillstab, speed ratio (GSL time / hillstab time) ", bound, ratio
+      if (bound == "> ") write (*, '(a)') "   (no GSL run as accurate as hillstab: a lower bound)"
+      write (unit, '(a, es8.1, a, a, f8.3)') "# equal accuracy: GSL eps ", gsl_eps(match), " speed ratio ", bound, ratio
+      close (unit)
+   end subroutine speed_table
+
+   !> Cost against n (screen and build/bench/system_cost.dat).
+   subroutine cost_table()
+      integer, parameter :: sizes(5) = [1, 2, 4, 10, 20]
+      type(matrix_system_t) :: chain
+      type(system_form_t) :: form
+      type(system_nodes_t) :: nodes
+      type(system_monodromy_t) :: r
+      type(system_floquet_t) :: f
+      type(error_t), allocatable :: error
+      integer :: s, i, j, unit, failures, repeats, rep
+      integer(int64) :: steps
+      real(wp) :: t0, seconds, alpha, beta
+      open (newunit=unit, file=out_dir//"/system_cost.dat", status="replace", action="write")
+      write (unit, '(a, i0, a, i0, a)') "# cost against n: chains of n driven oscillators, ", cost_n, " x ", cost_n, &
+         " grid of alpha in [0, 1], beta in [0.5, 6], tolerance 1e-10, method auto, one thread"
+      write (unit, '(a)') "# columns: n us_per_point steps_per_point us_per_step failures"
+      write (*, '(/, a, i0, a, i0, a)') "cost against n (oscillator chains, ", cost_n, " x ", cost_n, &
+         " grid, tolerance 1e-10)"
+      write (*, '(a)') "   n    us/point  steps/point    us/step  failures"
+      do s = 1, size(sizes)
+         chain = oscillator_chain(sizes(s))
+         call prepare_system(chain, 0.0_wp, form, error)
+         if (allocated(error)) error stop "bench: prepare_system (chain)"
+         repeats = max(1, 40/sizes(s)**2)
+         failures = 0
+         steps = 0
+         t0 = wall_seconds()
+         do rep = 1, repeats
+            do i = 1, cost_n
+               alpha = grid_value(0.0_wp, 1.0_wp, cost_n, i)
+               nodes = system_nodes_t()
+               do j = 1, cost_n
+                  beta = grid_value(0.5_wp, 6.0_wp, cost_n, j)
+                  call system_monodromy(chain, form, alpha, beta, system_method_t(system_auto, tolerance), nodes, r, &
+                                        error)
+                  call system_floquet(r%phi, form, r%error_estimate*max(1.0_wp, maxval(abs(r%phi))), f, r%log_scale)
+                  if (r%status /= status_ok .and. rep == 1) failures = failures + 1
+                  steps = steps + r%steps
+               end do
+            end do
+         end do
+         seconds = (wall_seconds() - t0)/repeats
+         write (*, '(i4, f12.2, f13.2, f11.3, i10)') sizes(s), 1.0e6_wp*seconds/cost_n**2, &
+            real(steps, wp)/repeats/cost_n**2, 1.0e6_wp*seconds*repeats/steps, failures
+         write (unit, '(i4, f14.3, f12.3, f12.4, i6)') sizes(s), 1.0e6_wp*seconds/cost_n**2, &
+            real(steps, wp)/repeats/cost_n**2, 1.0e6_wp*seconds*repeats/steps, failures
+      end do
+      close (unit)
+   end subroutine cost_table
+end program hillstab_bench_system
