@@ -31,7 +31,7 @@ program hillstab_bench_system
    use hillstab_core_status, only: status_ok
    use hillstab_hill_system, only: system_form_t, prepare_system
    use hillstab_hill_system_matrix, only: matrix_system_t
-   use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet
+   use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet, verdict_unstable
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
       system_auto, system_magnus6
    implicit none
@@ -198,7 +198,7 @@ contains
             call system_monodromy(pair, form, alpha, beta, method, nodes, r, error)
             call system_floquet(r%phi, form, r%error_estimate*max(1.0_wp, maxval(abs(r%phi))), f, r%log_scale)
             if (r%status /= status_ok) failures = failures + 1
-            if (f%log_lambda_max > 0.0_wp) unstable = unstable + 1
+            if (f%verdict == verdict_unstable) unstable = unstable + 1
             total_steps = total_steps + r%steps
             phi(:, p) = reshape(transpose(r%phi*exp(r%log_scale)), [16])
          end do

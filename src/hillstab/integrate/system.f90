@@ -101,6 +101,10 @@ module hillstab_integrate_system
 
    real(wp), parameter :: sqrt15 = 3.87298334620741688_wp, sqrt3 = 1.73205080756887729_wp
    real(wp), parameter :: safety = 2.0_wp
+   !> 1/k!, k = 0 … 12
+   real(wp), parameter :: taylor(0:12) = [1.0_wp, 1.0_wp, 1.0_wp/2, 1.0_wp/6, 1.0_wp/24, 1.0_wp/120, 1.0_wp/720, &
+                                          1.0_wp/5040, 1.0_wp/40320, 1.0_wp/362880, 1.0_wp/3628800, &
+                                          1.0_wp/39916800, 1.0_wp/479001600]
 
 contains
 
@@ -330,6 +334,7 @@ contains
       real(wp), intent(out) :: log_scale
       integer :: n, m, k, i, nq
       real(wp) :: h, big
+      logical :: steps_done
       real(wp) :: y(2*form%n, 2*form%n), a(2*form%n, 2*form%n, 3), big_omega(2*form%n, 2*form%n), &
                   e(2*form%n, 2*form%n)
       n = form%n
@@ -338,6 +343,12 @@ contains
       h = window_length(form)/steps
       y = identity(m)
       log_scale = 0.0_wp
+      if (order == 6 .and. m == 4) then
+         call magnus6_steps_4(form%d, beta, h, steps, level, y, log_scale)
+         steps_done = .true.
+      else
+         steps_done = .false.
+      end if
       ! the constant blocks of A
       a = 0.0_wp
       do i = 1, nq
@@ -346,7 +357,7 @@ contains
          end do
          a(n + 1:m, n + 1:m, i) = form%d
       end do
-      do k = 1, steps
+      do k = 1, merge(0, steps, steps_done)
          do i = 1, nq
             a(n + 1:m, 1:n, i) = level%lp(:, :, nq*(k - 1) + i) + beta*level%lb(:, :, nq*(k - 1) + i)
          end do
@@ -370,6 +381,83 @@ contains
          phi = y
       end if
    end subroutine magnus_mesh
+
+   !> The steps of `magnus_mesh` for order 6 and n = 2 (4 × 4): fixed-size arrays, so that the
+   !> compiler expands the products inline (the general path calls the library's matmul).
+   subroutine magnus6_steps_4(d, beta, h, steps, level, y, log_scale)
+      real(wp), intent(in) :: d(2, 2), beta, h
+      integer, intent(in) :: steps
+      type(node_level_t), intent(in) :: level
+      real(wp), intent(inout) :: y(4, 4), log_scale
+      real(wp) :: a(4, 4, 3), big_omega(4, 4), e(4, 4), big
+      integer :: k, i
+      a = 0.0_wp
+      do i = 1, 3
+         a(1, 3, i) = 1.0_wp
+         a(2, 4, i) = 1.0_wp
+         a(3:4, 3:4, i) = d
+      end do
+      do k = 1, steps
+         do i = 1, 3
+            a(3:4, 1:2, i) = level%lp(:, :, 3*(k - 1) + i) + beta*level%lb(:, :, 3*(k - 1) + i)
+         end do
+         call magnus6_exponent_4(a(:, :, 1), a(:, :, 2), a(:, :, 3), h, big_omega)
+         call exponential_4(big_omega, e)
+         y = matmul(e, y)
+         big = maxval(abs(y))
+         if (big > 1.0e100_wp) then
+            y = y*2.0_wp**(-exponent(big))
+            log_scale = log_scale + exponent(big)*log(2.0_wp)
+         end if
+      end do
+   end subroutine magnus6_steps_4
+
+   !> `magnus6_exponent` for 4 × 4 matrices.
+   pure subroutine magnus6_exponent_4(a1, a2, a3, h, big_omega)
+      real(wp), intent(in) :: a1(4, 4), a2(4, 4), a3(4, 4), h
+      real(wp), intent(out) :: big_omega(4, 4)
+      real(wp), dimension(4, 4) :: alpha1, alpha2, alpha3, c1, c2, u, v
+      alpha1 = h*a2
+      alpha2 = (sqrt15*h/3.0_wp)*(a3 - a1)
+      alpha3 = (10.0_wp*h/3.0_wp)*(a3 - 2.0_wp*a2 + a1)
+      c1 = matmul(alpha1, alpha2) - matmul(alpha2, alpha1)
+      u = 2.0_wp*alpha3 + c1
+      c2 = (matmul(u, alpha1) - matmul(alpha1, u))/60.0_wp
+      u = -20.0_wp*alpha1 - alpha3 + c1
+      v = alpha2 + c2
+      big_omega = alpha1 + alpha3/12.0_wp + (matmul(u, v) - matmul(v, u))/240.0_wp
+   end subroutine magnus6_exponent_4
+
+   !> `system_exponential` for 4 × 4 matrices.
+   pure subroutine exponential_4(x, e)
+      real(wp), intent(in) :: x(4, 4)
+      real(wp), intent(out) :: e(4, 4)
+      real(wp), dimension(4, 4) :: x1, x2, x3, x4, b
+      real(wp) :: norm
+      integer :: j, k
+      norm = maxval(sum(abs(x), dim=1))
+      j = 0
+      if (norm > 0.35_wp) j = max(0, ceiling(log(norm/0.35_wp)/log(2.0_wp)))
+      x1 = x*2.0_wp**(-j)
+      x2 = matmul(x1, x1)
+      x3 = matmul(x2, x1)
+      x4 = matmul(x2, x2)
+      b = taylor(9)*x1 + taylor(10)*x2 + taylor(11)*x3 + taylor(12)*x4
+      do k = 1, 4
+         b(k, k) = b(k, k) + taylor(8)
+      end do
+      e = matmul(x4, b) + taylor(5)*x1 + taylor(6)*x2 + taylor(7)*x3
+      do k = 1, 4
+         e(k, k) = e(k, k) + taylor(4)
+      end do
+      e = matmul(x4, e) + x1 + taylor(2)*x2 + taylor(3)*x3
+      do k = 1, 4
+         e(k, k) = e(k, k) + 1.0_wp
+      end do
+      do k = 1, j
+         e = matmul(e, e)
+      end do
+   end subroutine exponential_4
 
    !> Φ = R Y⁻¹ R Y with Y⁻¹ = Ω⁻¹ Yᵀ Ω (Hamiltonian, G = 0, K even).
    pure subroutine full_from_half(form, y, phi)
