@@ -390,13 +390,21 @@ contains
       integer, intent(in) :: steps
       type(node_level_t), intent(in) :: level
       real(wp), intent(inout) :: y(4, 4), log_scale
-      real(wp) :: l(2, 2, 3), big_omega(4, 4), e(4, 4), big
+      real(wp) :: l(2, 2, 3), big_omega(4, 4), e(4, 4), big, c, c2, hc, dc(2, 2)
       integer :: k, i
+      ! balance: Z = S⁻¹YS, S = diag(cI, I), solves Z' = [[0, I/c], [cL, D]] Z, which is
+      ! (1/c)[[0, I], [c²L, cD]]: steps h/c with L, D scaled; c = 2^−k ≈ ‖L‖^−½ (exact scaling)
+      c = 1.0_wp
+      big = maxval(sum(abs(level%lp(:, :, 1:3) + beta*level%lb(:, :, 1:3)), dim=2))
+      if (big > 4.0_wp) c = 2.0_wp**(-nint(0.5_wp*log(big)/log(2.0_wp)))
+      c2 = c*c
+      hc = h/c
+      dc = c*d
       do k = 1, steps
          do i = 1, 3
-            l(:, :, i) = level%lp(:, :, 3*(k - 1) + i) + beta*level%lb(:, :, 3*(k - 1) + i)
+            l(:, :, i) = c2*(level%lp(:, :, 3*(k - 1) + i) + beta*level%lb(:, :, 3*(k - 1) + i))
          end do
-         call magnus6_exponent_blocks_2(l(:, :, 1), l(:, :, 2), l(:, :, 3), d, h, big_omega)
+         call magnus6_exponent_blocks_2(l(:, :, 1), l(:, :, 2), l(:, :, 3), dc, hc, big_omega)
          call exponential_4(big_omega, e)
          y = matmul(e, y)
          big = maxval(abs(y))
@@ -405,6 +413,8 @@ contains
             log_scale = log_scale + exponent(big)*log(2.0_wp)
          end if
       end do
+      y(1:2, 3:4) = c*y(1:2, 3:4)
+      y(3:4, 1:2) = y(3:4, 1:2)/c
    end subroutine magnus6_steps_4
 
    !> `magnus6_exponent` for n = 2 from the blocks of A_i = [[0, I], [L_i, D]]: α₂ = [[0, 0], [P, 0]]
