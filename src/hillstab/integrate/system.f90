@@ -55,9 +55,13 @@ module hillstab_integrate_system
    !> Dormand–Prince 8(5,3) on the fundamental matrix, two tolerances.
    integer, parameter :: system_rk = 5
 
-   !> The step counts of the Magnus ladder (each has its half among the earlier ones).
-   integer, parameter :: magnus_ladder(*) = [2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512, &
-                                             768, 1024, 1536, 2048, 3072, 4096, 6144, 8192, 12288, 16384]
+   !> The step counts of the Magnus ladder, 4, 5, 6, 7 times powers of two (ratios at most
+   !> 1.25); every even count from 4 on has its half among the earlier ones, and only those
+   !> are accepted (the odd 5 and 7 serve as halves).
+   integer, parameter :: magnus_ladder(*) = [2, 3, 4, 5, 6, 7, 8, 10, 12, 14, 16, 20, 24, 28, 32, 40, 48, 56, 64, &
+                                             80, 96, 112, 128, 160, 192, 224, 256, 320, 384, 448, 512, 640, 768, &
+                                             896, 1024, 1280, 1536, 1792, 2048, 2560, 3072, 3584, 4096, 5120, 6144, &
+                                             7168, 8192, 10240, 12288, 14336, 16384]
 
    !> A method and its tolerance.
    type :: system_method_t
@@ -101,6 +105,11 @@ module hillstab_integrate_system
 
    real(wp), parameter :: sqrt15 = 3.87298334620741688_wp, sqrt3 = 1.73205080756887729_wp
    real(wp), parameter :: safety = 2.0_wp
+   !> return Richardson's extrapolation of the accepted mesh and its half
+   logical, parameter :: extrapolate = .false.
+   !> the margin of a failed mesh's successor and of the next point's first mesh over the
+   !> mesh the estimate asks for
+   real(wp), parameter :: grow = 1.1_wp, hint_margin = 1.0_wp
    !> 1/k!, k = 0 … 12
    real(wp), parameter :: taylor(0:12) = [1.0_wp, 1.0_wp, 1.0_wp/2, 1.0_wp/6, 1.0_wp/24, 1.0_wp/120, 1.0_wp/720, &
                                           1.0_wp/5040, 1.0_wp/40320, 1.0_wp/362880, 1.0_wp/3628800, &
@@ -226,10 +235,16 @@ contains
       size_a = max(size_a, maxval(sum(abs(form%d), dim=2))**2)
       want = window_length(form)*(0.6_wp*sqrt(size_a) + 1.0_wp*max(1, system%drive_harmonics())*2.0_wp/form%period)
       j = 3
-      do while (j < size(magnus_ladder) - 2 .and. magnus_ladder(j) < want)
+      do while (j < size(magnus_ladder) - 2 .and. (magnus_ladder(j) < want .or. .not. has_half(j)))
          j = j + 1
       end do
    end function first_level
+
+   !> Level j may be accepted: an even count from 4 on (its half on the ladder).
+   pure logical function has_half(j)
+      integer, intent(in) :: j
+      has_half = magnus_ladder(j) >= 4 .and. mod(magnus_ladder(j), 2) == 0
+   end function has_half
 
    !> Magnus of order 4 or 6 up the ladder until the Richardson estimate meets the tolerance.
    subroutine monodromy_magnus(system, form, alpha, beta, tolerance, order, nodes, result, error)
@@ -243,6 +258,7 @@ contains
       integer :: m, j, jh, last, k
       real(wp), allocatable :: phi(:, :, :)
       real(wp) :: s(size(magnus_ladder)), estimate, previous, scale, floor, need
+      integer :: previous_steps
       logical :: done(size(magnus_ladder))
       m = 2*form%n
       allocate (phi(m, m, size(magnus_ladder)))
@@ -254,6 +270,7 @@ contains
          j = first_level(system, form, alpha, beta)
       end if
       previous = huge(1.0_wp)
+      previous_steps = 1
       result%steps = 0
       do
          jh = half_level(j)
@@ -273,7 +290,10 @@ contains
             result%status = status_ok
             exit
          end if
-         if (estimate <= floor .or. (estimate < 1.0e-7_wp .and. estimate > 0.5_wp*previous)) then
+         ! round-off: the estimate hardly falls where the order says it should (by at least
+         ! (8/7)^order, to a half and more between far levels)
+         if (estimate <= floor .or. (estimate < 1.0e-7_wp .and. estimate > previous* &
+             max(0.5_wp, min(0.9_wp, 4.0_wp*(real(previous_steps, wp)/magnus_ladder(j))**order)))) then
             result%status = status_roundoff
             exit
          end if
@@ -284,19 +304,32 @@ contains
             exit
          end if
          previous = estimate
+         previous_steps = magnus_ladder(j)
          ! the mesh the estimate asks for, by the order (at least the next level)
-         need = magnus_ladder(j)*(estimate/tolerance)**(1.0_wp/order)*1.1_wp
+         need = magnus_ladder(j)*(estimate/tolerance)**(1.0_wp/order)*grow
          j = j + 1
-         do while (j < last .and. magnus_ladder(j) < need)
+         do while (j < last .and. (magnus_ladder(j) < need .or. .not. has_half(j)))
             j = j + 1
          end do
       end do
+      ! Richardson's extrapolation: Φ_N + (Φ_N − Φ_{N/2})/(2^order − 1), its error of higher
+      ! order; the estimate stays that of Φ_N (the extrapolation moves Φ by at most it)
       result%phi = phi(:, :, j)
+      if (extrapolate .and. result%status == status_ok) result%phi = phi(:, :, j) + &
+         (phi(:, :, j) - phi(:, :, jh)*exp(s(jh) - s(j)))/(2.0_wp**order - 1.0_wp)
       result%log_scale = s(j)
       result%error_estimate = max(estimate, epsilon(1.0_wp))
-      ! the next point of the row starts one level lower when this one had room to spare
+      ! the next point of the row (β a little larger) starts at the mesh this one's estimate
+      ! asks for, with a margin
       nodes%hint = j
-      if (result%status == status_ok .and. estimate*2.0_wp**(order/2) < tolerance .and. j > 3) nodes%hint = j - 1
+      if (result%status == status_ok .and. estimate > 0.0_wp) then
+         need = magnus_ladder(j)*(estimate/tolerance)**(1.0_wp/order)*hint_margin
+         k = 3
+         do while (k < j .and. (magnus_ladder(k) < need .or. .not. has_half(k)))
+            k = k + 1
+         end do
+         nodes%hint = k
+      end if
       if (.not. all(ieee_is_finite(result%phi))) then
          result%status = status_failed
          if (.not. allocated(error)) call set_error(error, err_integration, "magnus: the monodromy is not finite")
