@@ -104,9 +104,9 @@ module hillstab_integrate_system
    end type fundamental_t
 
    real(wp), parameter :: sqrt15 = 3.87298334620741688_wp, sqrt3 = 1.73205080756887729_wp
-   real(wp), parameter :: safety = 2.0_wp
+   real(wp), parameter :: safety = 1.0_wp
    !> return Richardson's extrapolation of the accepted mesh and its half
-   logical, parameter :: extrapolate = .false.
+   logical, parameter :: extrapolate = .true.
    !> the margin of a failed mesh's successor and of the next point's first mesh over the
    !> mesh the estimate asks for
    real(wp), parameter :: grow = 1.1_wp, hint_margin = 1.0_wp
