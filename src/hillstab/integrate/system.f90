@@ -376,11 +376,11 @@ contains
       h = window_length(form)/steps
       y = identity(m)
       log_scale = 0.0_wp
+      steps_done = order == 6
       if (order == 6 .and. m == 4) then
          call magnus6_steps_4(form%d, beta, h, steps, level, y, log_scale)
-         steps_done = .true.
-      else
-         steps_done = .false.
+      else if (order == 6) then
+         call magnus6_steps(n, form%d, beta, h, steps, level, y, log_scale)
       end if
       ! the constant blocks of A
       a = 0.0_wp
@@ -449,6 +449,131 @@ contains
       y(1:2, 3:4) = c*y(1:2, 3:4)
       y(3:4, 1:2) = y(3:4, 1:2)/c
    end subroutine magnus6_steps_4
+
+   !> The steps of `magnus_mesh` for order 6 and any n: explicit-shape work arrays, the
+   !> exponent from n × n blocks (`magnus6_exponent_blocks`), balanced as `magnus6_steps_4`.
+   subroutine magnus6_steps(n, d, beta, h, steps, level, y, log_scale)
+      integer, intent(in) :: n, steps
+      real(wp), intent(in) :: d(n, n), beta, h
+      type(node_level_t), intent(in) :: level
+      real(wp), intent(inout) :: y(2*n, 2*n), log_scale
+      real(wp) :: l(n, n, 3), big_omega(2*n, 2*n), e(2*n, 2*n), big, c, c2, hc, dc(n, n)
+      integer :: k, i
+      c = 1.0_wp
+      big = maxval(sum(abs(level%lp(:, :, 1:3) + beta*level%lb(:, :, 1:3)), dim=2))
+      if (big > 4.0_wp) c = 2.0_wp**(-nint(0.5_wp*log(big)/log(2.0_wp)))
+      c2 = c*c
+      hc = h/c
+      dc = c*d
+      do k = 1, steps
+         do i = 1, 3
+            l(:, :, i) = c2*(level%lp(:, :, 3*(k - 1) + i) + beta*level%lb(:, :, 3*(k - 1) + i))
+         end do
+         call magnus6_exponent_blocks(n, l(:, :, 1), l(:, :, 2), l(:, :, 3), dc, hc, big_omega)
+         call exponential_explicit(2*n, big_omega, e)
+         call multiply(2*n, e, y, big_omega)
+         y = big_omega
+         big = maxval(abs(y))
+         if (big > 1.0e100_wp) then
+            y = y*2.0_wp**(-exponent(big))
+            log_scale = log_scale + exponent(big)*log(2.0_wp)
+         end if
+      end do
+      y(1:n, n + 1:2*n) = c*y(1:n, n + 1:2*n)
+      y(n + 1:2*n, 1:n) = y(n + 1:2*n, 1:n)/c
+   end subroutine magnus6_steps
+
+   !> `magnus6_exponent_blocks_2` for any n.
+   pure subroutine magnus6_exponent_blocks(n, l1, l2, l3, d, h, big_omega)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: l1(n, n), l2(n, n), l3(n, n), d(n, n), h
+      real(wp), intent(out) :: big_omega(2*n, 2*n)
+      real(wp), dimension(n, n) :: p, q, dp, r, w1, w2, w3
+      real(wp), dimension(2*n, 2*n) :: u, v, uv, vu
+      real(wp) :: g
+      integer :: i, m
+      m = 2*n
+      p = (sqrt15*h/3.0_wp)*(l3 - l1)
+      q = (10.0_wp*h/3.0_wp)*(l3 - 2.0_wp*l2 + l1)
+      call multiply(n, d, p, dp)
+      r = 2.0_wp*q + h*dp
+      g = -h/60.0_wp
+      v(1:n, 1:n) = g*r
+      v(1:n, n + 1:m) = (-2.0_wp*g*h)*p
+      call multiply(n, l2, p, w1)
+      call multiply(n, p, l2, w2)
+      call multiply(n, d, r, w3)
+      v(n + 1:m, 1:n) = p + g*(h*(w1 + w2) + w3)
+      call multiply(n, p, d, w1)
+      v(n + 1:m, n + 1:m) = g*(-h*(dp - w1) - r)
+      u(1:n, 1:n) = h*p
+      u(1:n, n + 1:m) = 0.0_wp
+      do i = 1, n
+         u(i, n + i) = -20.0_wp*h
+      end do
+      u(n + 1:m, 1:n) = -20.0_wp*h*l2 - q + h*dp
+      u(n + 1:m, n + 1:m) = -20.0_wp*h*d - h*p
+      call multiply(m, u, v, uv)
+      call multiply(m, v, u, vu)
+      big_omega = (uv - vu)/240.0_wp
+      do i = 1, n
+         big_omega(i, n + i) = big_omega(i, n + i) + h
+      end do
+      big_omega(n + 1:m, 1:n) = big_omega(n + 1:m, 1:n) + h*l2 + q/12.0_wp
+      big_omega(n + 1:m, n + 1:m) = big_omega(n + 1:m, n + 1:m) + h*d
+   end subroutine magnus6_exponent_blocks
+
+   !> `system_exponential` on explicit-shape arrays (no temporaries of assumed shape).
+   pure subroutine exponential_explicit(m, x, e)
+      integer, intent(in) :: m
+      real(wp), intent(in) :: x(m, m)
+      real(wp), intent(out) :: e(m, m)
+      real(wp), dimension(m, m) :: x1, x2, x3, x4, b, w
+      real(wp) :: norm
+      integer :: j, k
+      norm = maxval(sum(abs(x), dim=1))
+      j = 0
+      if (norm > 0.35_wp) j = max(0, ceiling(log(norm/0.35_wp)/log(2.0_wp)))
+      x1 = x*2.0_wp**(-j)
+      call multiply(m, x1, x1, x2)
+      call multiply(m, x2, x1, x3)
+      call multiply(m, x2, x2, x4)
+      b = taylor(9)*x1 + taylor(10)*x2 + taylor(11)*x3 + taylor(12)*x4
+      do k = 1, m
+         b(k, k) = b(k, k) + taylor(8)
+      end do
+      call multiply(m, x4, b, w)
+      e = w + taylor(5)*x1 + taylor(6)*x2 + taylor(7)*x3
+      do k = 1, m
+         e(k, k) = e(k, k) + taylor(4)
+      end do
+      call multiply(m, x4, e, w)
+      e = w + x1 + taylor(2)*x2 + taylor(3)*x3
+      do k = 1, m
+         e(k, k) = e(k, k) + 1.0_wp
+      end do
+      do k = 1, j
+         call multiply(m, e, e, w)
+         e = w
+      end do
+   end subroutine exponential_explicit
+
+   !> c = a b for m × m matrices: explicit loops (the compiler vectorises the inner one), no
+   !> library call, for the small matrices of a step.
+   pure subroutine multiply(m, a, b, c)
+      integer, intent(in) :: m
+      real(wp), intent(in) :: a(m, m), b(m, m)
+      real(wp), intent(out) :: c(m, m)
+      integer :: i, j, k
+      do j = 1, m
+         c(:, j) = a(:, 1)*b(1, j)
+         do k = 2, m
+            do i = 1, m
+               c(i, j) = c(i, j) + a(i, k)*b(k, j)
+            end do
+         end do
+      end do
+   end subroutine multiply
 
    !> `magnus6_exponent` for n = 2 from the blocks of A_i = [[0, I], [L_i, D]]: α₂ = [[0, 0], [P, 0]]
    !> and α₃ = [[0, 0], [Q, 0]] have one block, C₁ = h[[P, 0], [DP, −P]], and C₂ = −[α₁, 2α₃ + C₁]/60
