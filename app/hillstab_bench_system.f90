@@ -35,36 +35,50 @@ program hillstab_bench_system
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
       system_auto, system_magnus6
    implicit none
-   integer, parameter :: n_gsl = 3
-   real(wp), parameter :: tolerance = 1.0e-10_wp, gsl_eps(n_gsl) = [1.0e-10_wp, 1.0e-11_wp, 1.0e-12_wp]
-   real(wp), parameter :: reference_eps = 1.0e-14_wp
+   integer, parameter :: n_h = 3, n_gsl = 4, n_c = n_h + n_gsl, stride = 37
+   !> hillstab's tolerances (the first the benchmark's) and GSL's eps
+   real(wp), parameter :: tolerances(n_h) = [1.0e-10_wp, 1.0e-9_wp, 1.0e-8_wp]
+   real(wp), parameter :: gsl_eps(n_gsl) = [1.0e-10_wp, 1.0e-11_wp, 1.0e-12_wp, 1.0e-13_wp]
+   real(wp), parameter :: reference_eps = 1.0e-14_wp, tolerance = tolerances(1)
    character(len=*), parameter :: gsl_program = "build/chart_gsl_system", out_dir = "build/bench"
    integer :: n_alpha = 300, n_beta = 300, cost_n = 12, n_points
    logical :: run_gsl = .true., run_cost = .true.
-   real(wp), allocatable :: phi_h(:, :), phi_g(:, :, :), phi_ref(:, :), err_h(:), err_g(:, :)
-   real(wp) :: time_h, time_g(n_gsl), time_ref, steps_h, ref_check
-   integer :: failures_h, unstable_h, k
+   !> per contender (hillstab's tolerances, then GSL's eps): Φ row-major per point, seconds,
+   !> steps or evaluations per point, errors against the reference
+   real(wp), allocatable :: phi(:, :, :), phi_ref(:, :), phi_sub(:, :), err(:, :)
+   real(wp) :: seconds(n_c), work(n_c), sub_max(n_c), time_ref, ref_check
+   integer :: failures, unstable, k
 
    call read_arguments()
    n_points = n_alpha*n_beta
    call execute_command_line("mkdir -p "//out_dir)
-   write (*, '(a, i0, a, i0, a, es8.1, a)') "pendula pair, ", n_alpha, " x ", n_beta, &
-      " grid, alpha in [0, 2], beta in [0, 12], tolerance ", tolerance, ", one thread"
-   call hillstab_chart(system_method_t(system_auto, tolerance), phi_h, time_h, steps_h, failures_h, unstable_h)
-   write (*, '(a, f9.2, a, f8.2, a, i0, a, i0)') "hillstab auto:", 1.0e6_wp*time_h/n_points, " us/point, ", &
-      steps_h, " steps/point, failures ", failures_h, ", unstable points ", unstable_h
+   write (*, '(a, i0, a, i0, a)') "pendula pair, ", n_alpha, " x ", n_beta, &
+      " grid, alpha in [0, 2], beta in [0, 12], one thread"
+   allocate (phi(16, n_points, n_c))
+   do k = 1, n_h
+      call hillstab_chart(system_method_t(system_auto, tolerances(k)), phi(:, :, k), seconds(k), work(k), &
+                          failures, unstable)
+      write (*, '(a, es8.1, a, f9.2, a, f8.2, a, i0, a, i0)') "hillstab auto tolerance", tolerances(k), ":", &
+         1.0e6_wp*seconds(k)/n_points, " us/point, ", work(k), " steps/point, failures ", failures, &
+         ", unstable points ", unstable
+   end do
    if (run_gsl) then
-      allocate (phi_g(16, n_points, n_gsl), err_g(n_points, n_gsl), phi_ref(16, n_points))
+      allocate (phi_ref(16, n_points), err(n_points, n_c))
       do k = 1, n_gsl
-         call gsl_chart(gsl_eps(k), phi_g(:, :, k), time_g(k))
+         call gsl_chart(gsl_eps(k), phi(:, :, n_h + k), seconds(n_h + k), work(n_h + k))
       end do
-      call gsl_chart(reference_eps, phi_ref, time_ref, reference=.true.)
-      allocate (err_h(n_points))
-      err_h = point_errors(phi_h, phi_ref)
-      do k = 1, n_gsl
-         err_g(:, k) = point_errors(phi_g(:, :, k), phi_ref)
+      call gsl_chart(reference_eps, phi_ref, time_ref, ref_check, reference=.true.)
+      do k = 1, n_c
+         err(:, k) = point_errors(phi(:, :, k), phi_ref)
       end do
-      ref_check = reference_error(phi_ref)
+      ! an independent check on every stride-th point: magnus6 at 1e-13
+      allocate (phi_sub(16, n_points))
+      call hillstab_chart(system_method_t(system_magnus6, 1.0e-13_wp), phi_sub, time_ref, ref_check, failures, &
+                          unstable, stride)
+      ref_check = subsample_max(point_errors(phi_ref, phi_sub))
+      do k = 1, n_c
+         sub_max(k) = subsample_max(point_errors(phi(:, :, k), phi_sub))
+      end do
       call speed_table()
    end if
    if (run_cost) call cost_table()
@@ -164,7 +178,7 @@ contains
    !> loop (monodromy and Floquet verdict), steps per point, failures and unstable points.
    subroutine hillstab_chart(method, phi, seconds, steps, failures, unstable, stride)
       type(system_method_t), intent(in) :: method
-      real(wp), allocatable, intent(out) :: phi(:, :)
+      real(wp), intent(out) :: phi(:, :)
       real(wp), intent(out) :: seconds, steps
       integer, intent(out) :: failures, unstable
       integer, intent(in), optional :: stride  !! only every stride-th point (the others zero)
@@ -182,7 +196,6 @@ contains
       pair = pendula_pair()
       call prepare_system(pair, 0.0_wp, form, error)
       if (allocated(error)) error stop "bench: prepare_system"
-      allocate (phi(16, n_points))
       phi = 0.0_wp
       failures = 0
       unstable = 0
@@ -208,10 +221,10 @@ contains
    end subroutine hillstab_chart
 
    !> The GSL program at eps: Φ row-major per point and the time of its loop.
-   subroutine gsl_chart(eps, phi, seconds, reference)
+   subroutine gsl_chart(eps, phi, seconds, per_point, reference)
       real(wp), intent(in) :: eps
       real(wp), intent(out) :: phi(:, :)
-      real(wp), intent(out) :: seconds
+      real(wp), intent(out) :: seconds, per_point  !! the loop's time, evaluations per point
       logical, intent(in), optional :: reference
       character(len=256) :: data_file, time_file, command
       character(len=16) :: eps_text
@@ -241,6 +254,7 @@ contains
          phi(:, p) = row(6:21)
       end do
       close (unit, status="delete")
+      per_point = real(evaluations, wp)/n_points
       write (*, '(a, es8.1, a, f9.2, a, f9.1, a, i0, a)') "GSL rk8pd eps", eps, ":", 1.0e6_wp*seconds/n_points, &
          " us/point, ", real(evaluations, wp)/n_points, " evaluations/point, ", failures, " failures"
       if (present(reference)) then
@@ -307,61 +321,89 @@ contains
       a(root) = v
    end subroutine sift
 
-   !> The reference's own error: max over every 37th point against magnus6 at 1e-13.
-   real(wp) function reference_error(ref)
-      real(wp), intent(in) :: ref(:, :)
-      real(wp), allocatable :: phi(:, :), err(:)
-      real(wp) :: seconds, steps
-      integer :: failures, unstable, p
-      integer, parameter :: stride = 37
-      call hillstab_chart(system_method_t(system_magnus6, 1.0e-13_wp), phi, seconds, steps, failures, unstable, stride)
-      err = point_errors(phi, ref)
-      reference_error = 0.0_wp
-      do p = 1, n_points, stride
-         reference_error = max(reference_error, err(p))
-      end do
-   end function reference_error
+   !> The largest of x over every stride-th point.
+   pure real(wp) function subsample_max(x)
+      real(wp), intent(in) :: x(:)
+      subsample_max = maxval(x(1:size(x):stride))
+   end function subsample_max
 
    !> The speed table at equal accuracy (screen and build/bench/system_speed.dat).
    subroutine speed_table()
-      integer :: unit, k, match
-      real(wp) :: ratio
-      character(len=2) :: bound
+      integer :: unit, k, g, h
+      character(len=16) :: names(n_c)
+      real(wp) :: values(n_c)
+      do k = 1, n_c
+         if (k <= n_h) then
+            names(k) = "hillstab auto"
+            values(k) = tolerances(k)
+         else
+            names(k) = "GSL rk8pd"
+            values(k) = gsl_eps(k - n_h)
+         end if
+      end do
       open (newunit=unit, file=out_dir//"/system_speed.dat", status="replace", action="write")
-      write (unit, '(a, i0, a, i0, a, es8.1)') "# system benchmark: pendula pair, ", n_alpha, " x ", n_beta, &
-         " grid, one thread, hillstab tolerance ", tolerance
-      write (unit, '(a, es8.1, a, es9.2)') "# reference: GSL rk8pd at eps ", reference_eps, &
-         "; its max error against magnus6 at 1e-13 (every 37th point) ", ref_check
-      write (unit, '(a)') "# columns: contender(0 hillstab, 1 GSL) eps us_per_point max_error median_error"
-      write (*, '(/, a, es8.1, a, es9.2, a)') "errors against GSL at eps ", reference_eps, &
-         " (whose own max error on a subsample is ", ref_check, ")"
-      write (*, '(a)') "contender            us/point    max error   median error"
-      write (*, '(a, es8.1, f12.2, 2es14.3)') "hillstab auto ", tolerance, 1.0e6_wp*time_h/n_points, maxval(err_h), &
-         median(err_h)
-      write (unit, '(i2, es10.2, f12.3, 2es12.3)') 0, tolerance, 1.0e6_wp*time_h/n_points, maxval(err_h), median(err_h)
-      do k = 1, n_gsl
-         write (*, '(a, es8.1, f12.2, 2es14.3)') "GSL rk8pd     ", gsl_eps(k), 1.0e6_wp*time_g(k)/n_points, &
-            maxval(err_g(:, k)), median(err_g(:, k))
-         write (unit, '(i2, es10.2, f12.3, 2es12.3)') 1, gsl_eps(k), 1.0e6_wp*time_g(k)/n_points, maxval(err_g(:, k)), &
-            median(err_g(:, k))
+      write (unit, '(a, i0, a, i0, a)') "# system benchmark: pendula pair, ", n_alpha, " x ", n_beta, &
+         " grid of alpha in [0, 2], beta in [0, 12], one thread"
+      write (unit, '(a, es8.1, a, i0, a, es9.2)') "# reference: GSL rk8pd at eps ", reference_eps, &
+         "; check: magnus6 at 1e-13 on every ", stride, "th point, the reference's max error against it ", ref_check
+      write (unit, '(a)') "# columns: contender(0 hillstab auto, 1 GSL rk8pd) tolerance_or_eps us_per_point "// &
+         "steps_or_evaluations_per_point max_error median_error max_error_subsample"
+      write (*, '(/, a, es8.1, a, i0, a, es9.2, a)') "errors of Phi against GSL at eps ", reference_eps, &
+         " (its own max error against magnus6 at 1e-13 on every ", stride, "th point: ", ref_check, ")"
+      write (*, '(a)') "contender      tol/eps    us/point  steps|evals    max error  median error  "// &
+         "max (subsample vs magnus6)"
+      do k = 1, n_c
+         write (*, '(a14, es8.1, f12.2, f13.1, 2es13.3, es14.3)') names(k), values(k), 1.0e6_wp*seconds(k)/n_points, &
+            work(k), maxval(err(:, k)), median(err(:, k)), sub_max(k)
+         write (unit, '(i2, es10.2, f12.3, f12.2, 3es12.3)') merge(0, 1, k <= n_h), values(k), &
+            1.0e6_wp*seconds(k)/n_points, work(k), maxval(err(:, k)), median(err(:, k)), sub_max(k)
       end do
-      ! the cheapest GSL run at least as accurate as hillstab (largest eps whose max error <= hillstab's)
-      match = 0
-      do k = n_gsl, 1, -1
-         if (maxval(err_g(:, k)) <= maxval(err_h)) match = k
+      ! equal accuracy: for each hillstab run the cheapest GSL run at least as accurate (the
+      ! largest eps whose max error is not larger), and for each GSL run the cheapest such hillstab run
+      write (*, '(/, a)') "equal accuracy (max error over the grid not larger), speed ratio = GSL time / hillstab time:"
+      do h = 1, n_h
+         g = cheapest(n_h + 1, n_c, maxval(err(:, h)))
+         if (g > 0) then
+            write (*, '(a, es8.1, a, es8.1, a, f7.2)') "  hillstab tolerance ", tolerances(h), " vs GSL eps ", &
+               gsl_eps(g - n_h), ": ", seconds(g)/seconds(h)
+            write (unit, '(a, es8.1, a, es8.1, a, f8.3)') "# equal accuracy: hillstab tolerance ", tolerances(h), &
+               " vs GSL eps ", gsl_eps(g - n_h), " speed ratio ", seconds(g)/seconds(h)
+         else
+            g = n_h + minloc([(maxval(err(:, k)), k=n_h + 1, n_c)], dim=1)
+            write (*, '(a, es8.1, a, es8.1, a, f7.2)') "  hillstab tolerance ", tolerances(h), &
+               ": no GSL run as accurate; against the most accurate, eps ", gsl_eps(g - n_h), ": > ", &
+               seconds(g)/seconds(h)
+            write (unit, '(a, es8.1, a, es8.1, a, f8.3)') "# equal accuracy: hillstab tolerance ", tolerances(h), &
+               " vs GSL eps ", gsl_eps(g - n_h), " (not as accurate) speed ratio > ", seconds(g)/seconds(h)
+         end if
       end do
-      bound = "  "
-      if (match == 0) then
-         match = minloc([(maxval(err_g(:, k)), k=1, n_gsl)], dim=1)
-         bound = "> "
-      end if
-      ratio = time_g(match)/time_h
-      write (*, '(a, es8.1, a, a, f7.2)') "equal accuracy: GSL at eps ", gsl_eps(match), &
-         " against hillstab, speed ratio (GSL time / hillstab time) ", bound, ratio
-      if (bound == "> ") write (*, '(a)') "   (no GSL run as accurate as hillstab: a lower bound)"
-      write (unit, '(a, es8.1, a, a, f8.3)') "# equal accuracy: GSL eps ", gsl_eps(match), " speed ratio ", bound, ratio
+      do g = n_h + 1, n_c
+         h = cheapest(1, n_h, maxval(err(:, g)))
+         if (h > 0) then
+            write (*, '(a, es8.1, a, es8.1, a, f7.2)') "  GSL eps ", gsl_eps(g - n_h), " vs hillstab tolerance ", &
+               tolerances(h), ": ", seconds(g)/seconds(h)
+            write (unit, '(a, es8.1, a, es8.1, a, f8.3)') "# equal accuracy: GSL eps ", gsl_eps(g - n_h), &
+               " vs hillstab tolerance ", tolerances(h), " speed ratio ", seconds(g)/seconds(h)
+         end if
+      end do
       close (unit)
    end subroutine speed_table
+
+   !> Of contenders first … last, the fastest whose max error is at most bound (0: none).
+   integer function cheapest(first, last, bound) result(best)
+      integer, intent(in) :: first, last
+      real(wp), intent(in) :: bound
+      integer :: k
+      best = 0
+      do k = first, last
+         if (maxval(err(:, k)) > bound) cycle
+         if (best == 0) then
+            best = k
+         else if (seconds(k) < seconds(best)) then
+            best = k
+         end if
+      end do
+   end function cheapest
 
    !> Cost against n (screen and build/bench/system_cost.dat).
    subroutine cost_table()
