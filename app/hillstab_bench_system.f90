@@ -247,7 +247,7 @@ contains
       if (ios /= 0) error stop "bench: the GSL program failed"
       open (newunit=unit, file=time_file, status="old", action="read")
       read (unit, *) seconds, evaluations, failures
-      close (unit)
+      close (unit, status="delete")
       open (newunit=unit, file=data_file, status="old", action="read")
       do p = 1, n_points
          read (unit, *) row(1:4), stable, row(6:21)
