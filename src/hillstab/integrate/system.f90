@@ -110,10 +110,34 @@ module hillstab_integrate_system
    !> the margin of a failed mesh's successor and of the next point's first mesh over the
    !> mesh the estimate asks for
    real(wp), parameter :: grow = 1.1_wp, hint_margin = 1.0_wp
-   !> 1/k!, k = 0 … 12
-   real(wp), parameter :: taylor(0:12) = [1.0_wp, 1.0_wp, 1.0_wp/2, 1.0_wp/6, 1.0_wp/24, 1.0_wp/120, 1.0_wp/720, &
-                                          1.0_wp/5040, 1.0_wp/40320, 1.0_wp/362880, 1.0_wp/3628800, &
-                                          1.0_wp/39916800, 1.0_wp/479001600]
+   !> The Taylor approximants of Bader, Blanes and Casas (Mathematics 7, 1174, 2019), T₁₂ in four
+   !> products and T₁₈ in five, and the norms up to which each has a backward error below the
+   !> unit round-off: e^X ≈ T(X/2^j) squared j times.
+   real(wp), parameter :: theta12 = 0.2996158913811580_wp, theta18 = 1.090863719290036_wp
+   !> T₁₂ = q₁ + (q₂ + q₆) q₆, q₆ = q₃ + q₄², q_k = Σ_i t12(i, k) X^i (i = 0 … 3)
+   real(wp), parameter :: t12(0:3, 4) = reshape([ &
+      -0.0186023205146205532243437300433_wp, -0.00500702322573317730979741843919_wp, &
+      -0.573420122960522263905952420789_wp, -0.133399693943892059700768926983_wp, &
+      4.6_wp, 0.992875103538486836140479571505_wp, -0.132445561052799638845074997454_wp, 0.0017299_wp, &
+      0.211693118299809442949323323336_wp, 0.158224384715726725371768893252_wp, &
+      0.165635169436727415011171668419_wp, 0.0107862779315792425026320640108_wp, &
+      0.0_wp, -0.131810610138301840156819349464_wp, -0.0202785554058925907933568229945_wp, &
+      -0.00675951846863086359778560766482_wp], [4, 4])
+   !> T₁₈ = q₁ + (q₂ + q₉) q₉, q₉ = q₅ q₄ + q₃, q_k = Σ t18(i, k) X^i over i = 0, 1, 2, 3, 6
+   !> (index 4 standing for X⁶)
+   real(wp), parameter :: t18(0:4, 5) = reshape([ &
+      0.0_wp, 0.39784974949964507614519612771028_wp, 1.3678377846041171992252370687822_wp, &
+      0.49828962252538267755685881726227_wp, -0.00063789819459472330924155005649193_wp, &
+      -10.967639605296206259351746267537_wp, 1.6801581387890619718278540172481_wp, &
+      0.057177984647886551270287171322525_wp, -0.0069821012248805208429046648380155_wp, &
+      0.000033497501708607053831336734066844_wp, &
+      -0.090431683239081056197146887701835_wp, -0.067640451907138190756007990037971_wp, &
+      0.067596130177045964608279919507894_wp, 0.029555257042931552742606918224223_wp, &
+      -0.000013918025751606070112473997934374_wp, &
+      0.0_wp, 0.0_wp, -0.0923364619367118592764570775143_wp, -0.0169364939002081717191385115723_wp, &
+      -0.0000140086798182036159794363205726_wp, &
+      0.0_wp, -0.100365581030144620014614939405_wp, -0.00802924648241156960116919515244_wp, &
+      -0.000892138498045729955685466128049_wp, 0.0_wp], [5, 5])
 
 contains
 
@@ -528,30 +552,42 @@ contains
       integer, intent(in) :: m
       real(wp), intent(in) :: x(m, m)
       real(wp), intent(out) :: e(m, m)
-      real(wp), dimension(m, m) :: x1, x2, x3, x4, b, w
+      real(wp), dimension(m, m) :: a, a2, a3, a6, q1, q2, q4, w
       real(wp) :: norm
       integer :: j, k
       norm = maxval(sum(abs(x), dim=1))
       j = 0
-      if (norm > 0.35_wp) j = max(0, ceiling(log(norm/0.35_wp)/log(2.0_wp)))
-      x1 = x*2.0_wp**(-j)
-      call multiply(m, x1, x1, x2)
-      call multiply(m, x2, x1, x3)
-      call multiply(m, x2, x2, x4)
-      b = taylor(9)*x1 + taylor(10)*x2 + taylor(11)*x3 + taylor(12)*x4
-      do k = 1, m
-         b(k, k) = b(k, k) + taylor(8)
-      end do
-      call multiply(m, x4, b, w)
-      e = w + taylor(5)*x1 + taylor(6)*x2 + taylor(7)*x3
-      do k = 1, m
-         e(k, k) = e(k, k) + taylor(4)
-      end do
-      call multiply(m, x4, e, w)
-      e = w + x1 + taylor(2)*x2 + taylor(3)*x3
-      do k = 1, m
-         e(k, k) = e(k, k) + 1.0_wp
-      end do
+      if (norm > theta18) j = exponent(norm/theta18)
+      a = x*2.0_wp**(-j)
+      call multiply(m, a, a, a2)
+      call multiply(m, a2, a, a3)
+      if (norm <= theta12) then
+         q1 = t12(1, 1)*a + t12(2, 1)*a2 + t12(3, 1)*a3
+         q2 = t12(1, 2)*a + t12(2, 2)*a2 + t12(3, 2)*a3
+         q4 = t12(1, 4)*a + t12(2, 4)*a2 + t12(3, 4)*a3
+         call multiply(m, q4, q4, w)
+         e = w + t12(1, 3)*a + t12(2, 3)*a2 + t12(3, 3)*a3
+         do k = 1, m
+            q1(k, k) = q1(k, k) + t12(0, 1)
+            q2(k, k) = q2(k, k) + t12(0, 2)
+            e(k, k) = e(k, k) + t12(0, 3)
+         end do
+      else
+         call multiply(m, a3, a3, a6)
+         q1 = t18(1, 1)*a + t18(2, 1)*a2 + t18(3, 1)*a3 + t18(4, 1)*a6
+         q2 = t18(1, 2)*a + t18(2, 2)*a2 + t18(3, 2)*a3 + t18(4, 2)*a6
+         q4 = t18(2, 4)*a2 + t18(3, 4)*a3 + t18(4, 4)*a6
+         e = t18(1, 5)*a + t18(2, 5)*a2 + t18(3, 5)*a3
+         call multiply(m, e, q4, w)
+         e = w + t18(1, 3)*a + t18(2, 3)*a2 + t18(3, 3)*a3 + t18(4, 3)*a6
+         do k = 1, m
+            q2(k, k) = q2(k, k) + t18(0, 2)
+            e(k, k) = e(k, k) + t18(0, 3)
+         end do
+      end if
+      q2 = q2 + e
+      call multiply(m, q2, e, w)
+      e = q1 + w
       do k = 1, j
          call multiply(m, e, e, w)
          e = w
@@ -614,30 +650,41 @@ contains
    pure subroutine exponential_4(x, e)
       real(wp), intent(in) :: x(4, 4)
       real(wp), intent(out) :: e(4, 4)
-      real(wp), dimension(4, 4) :: x1, x2, x3, x4, b
+      real(wp), dimension(4, 4) :: a, a2, a3, a6, q1, q2, q4
       real(wp) :: norm
       integer :: j, k
       norm = maxval(sum(abs(x), dim=1))
       j = 0
-      if (norm > 0.35_wp) j = max(0, ceiling(log(norm/0.35_wp)/log(2.0_wp)))
-      x1 = x*2.0_wp**(-j)
-      x2 = matmul(x1, x1)
-      x3 = matmul(x2, x1)
-      x4 = matmul(x2, x2)
-      b = taylor(9)*x1 + taylor(10)*x2 + taylor(11)*x3 + taylor(12)*x4
-      do k = 1, 4
-         b(k, k) = b(k, k) + taylor(8)
-      end do
-      e = matmul(x4, b) + taylor(5)*x1 + taylor(6)*x2 + taylor(7)*x3
-      do k = 1, 4
-         e(k, k) = e(k, k) + taylor(4)
-      end do
-      e = matmul(x4, e) + x1 + taylor(2)*x2 + taylor(3)*x3
-      do k = 1, 4
-         e(k, k) = e(k, k) + 1.0_wp
-      end do
+      if (norm > theta18) j = exponent(norm/theta18)
+      a = x*2.0_wp**(-j)
+      a2 = matmul(a, a)
+      a3 = matmul(a2, a)
+      if (norm <= theta12) then
+         q1 = t12(1, 1)*a + t12(2, 1)*a2 + t12(3, 1)*a3
+         q2 = t12(1, 2)*a + t12(2, 2)*a2 + t12(3, 2)*a3
+         q4 = t12(1, 4)*a + t12(2, 4)*a2 + t12(3, 4)*a3
+         e = matmul(q4, q4) + t12(1, 3)*a + t12(2, 3)*a2 + t12(3, 3)*a3
+         do k = 1, 4
+            q1(k, k) = q1(k, k) + t12(0, 1)
+            q2(k, k) = q2(k, k) + t12(0, 2)
+            e(k, k) = e(k, k) + t12(0, 3)
+         end do
+      else
+         a6 = matmul(a3, a3)
+         q1 = t18(1, 1)*a + t18(2, 1)*a2 + t18(3, 1)*a3 + t18(4, 1)*a6
+         q2 = t18(1, 2)*a + t18(2, 2)*a2 + t18(3, 2)*a3 + t18(4, 2)*a6
+         q4 = t18(2, 4)*a2 + t18(3, 4)*a3 + t18(4, 4)*a6
+         e = matmul(t18(1, 5)*a + t18(2, 5)*a2 + t18(3, 5)*a3, q4) + &
+             t18(1, 3)*a + t18(2, 3)*a2 + t18(3, 3)*a3 + t18(4, 3)*a6
+         do k = 1, 4
+            q2(k, k) = q2(k, k) + t18(0, 2)
+            e(k, k) = e(k, k) + t18(0, 3)
+         end do
+      end if
+      e = q1 + matmul(q2 + e, e)
       do k = 1, j
-         e = matmul(e, e)
+         a = matmul(e, e)
+         e = a
       end do
    end subroutine exponential_4
 
@@ -694,34 +741,13 @@ contains
       end do
    end function identity
 
-   !> e^X by scaling and squaring: X/2^j with ‖X/2^j‖₁ ≤ 0.35, its Taylor polynomial of
-   !> degree 12 by Paterson–Stockmeyer (six products), squared j times.
+   !> e^X by scaling and squaring: X/2^j with ‖X/2^j‖₁ ≤ θ₁₈ = 1.09, the optimised Taylor
+   !> approximant of Bader, Blanes and Casas of degree 12 (four products, ‖X‖₁ ≤ θ₁₂ = 0.30) or
+   !> 18 (five products), squared j times; backward error below the unit round-off.
    pure subroutine system_exponential(x, e)
       real(wp), intent(in) :: x(:, :)     !! X (m × m)
       real(wp), intent(out) :: e(:, :)    !! e^X
-      real(wp), dimension(size(x, 1), size(x, 1)) :: x1, x2, x3, x4, b0, b1, b2, id
-      real(wp) :: norm, c(0:12)
-      integer :: j, k, m
-      m = size(x, 1)
-      norm = maxval(sum(abs(x), dim=1))
-      j = 0
-      if (norm > 0.35_wp) j = max(0, ceiling(log(norm/0.35_wp)/log(2.0_wp)))
-      x1 = x*2.0_wp**(-j)
-      c(0) = 1.0_wp
-      do k = 1, 12
-         c(k) = c(k - 1)/k
-      end do
-      id = identity(m)
-      x2 = matmul(x1, x1)
-      x3 = matmul(x2, x1)
-      x4 = matmul(x2, x2)
-      b0 = c(0)*id + c(1)*x1 + c(2)*x2 + c(3)*x3
-      b1 = c(4)*id + c(5)*x1 + c(6)*x2 + c(7)*x3
-      b2 = c(8)*id + c(9)*x1 + c(10)*x2 + c(11)*x3 + c(12)*x4
-      e = b0 + matmul(x4, b1 + matmul(x4, b2))
-      do k = 1, j
-         e = matmul(e, e)
-      end do
+      call exponential_explicit(size(x, 1), x, e)
    end subroutine system_exponential
 
    !> y' = A y for the m × m fundamental matrix, column by column.
