@@ -693,22 +693,28 @@ contains
       type(system_form_t), intent(in) :: form
       real(wp), intent(in) :: y(:, :)
       real(wp), intent(out) :: phi(:, :)
-      real(wp) :: omega(size(y, 1), size(y, 1)), omega_inverse(size(y, 1), size(y, 1)), r(size(y, 1))
-      integer :: n, m, i
-      n = form%n
-      m = 2*n
-      omega = symplectic_form(form)
-      omega_inverse = 0.0_wp
-      omega_inverse(1:n, n + 1:m) = -form%m_inverse
-      omega_inverse(n + 1:m, 1:n) = form%m_inverse
-      r = [(merge(1.0_wp, -1.0_wp, i <= n), i=1, m)]
-      phi = matmul(omega_inverse, matmul(transpose(y), omega))
-      ! R Y⁻¹ R: row and column signs
-      do i = 1, m
-         phi(i, :) = r(i)*phi(i, :)*r
-      end do
-      phi = matmul(phi, y)
+      call full_from_half_explicit(form%n, form%m, form%m_inverse, y, phi)
    end subroutine full_from_half
+
+   !> `full_from_half` on explicit-shape arrays: with Ω = [[0, M], [−M, 0]] (G = 0),
+   !> R Y⁻¹ R = [[M⁻¹Y₂₂ᵀM, M⁻¹Y₁₂ᵀM], [M⁻¹Y₂₁ᵀM, M⁻¹Y₁₁ᵀM]] block by block, then times Y.
+   pure subroutine full_from_half_explicit(n, mass, mass_inverse, y, phi)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: mass(n, n), mass_inverse(n, n), y(2*n, 2*n)
+      real(wp), intent(out) :: phi(2*n, 2*n)
+      real(wp) :: z(2*n, 2*n), t(n, n), w(n, n)
+      integer :: a, b
+      do b = 0, 1
+         do a = 0, 1
+            ! block (a, b) of R Y⁻¹ R from block (1 − b, 1 − a) of Y, transposed
+            t = transpose(y((1 - b)*n + 1:(2 - b)*n, (1 - a)*n + 1:(2 - a)*n))
+            call multiply(n, mass_inverse, t, w)
+            call multiply(n, w, mass, t)
+            z(a*n + 1:(a + 1)*n, b*n + 1:(b + 1)*n) = t
+         end do
+      end do
+      call multiply(2*n, z, y, phi)
+   end subroutine full_from_half_explicit
 
    !> The sixth-order Magnus exponent of one step from A at the three Gauss nodes.
    pure function magnus6_exponent(a1, a2, a3, h) result(big_omega)
