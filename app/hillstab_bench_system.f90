@@ -5,19 +5,24 @@
 !> 1. Speed at equal accuracy. The N_ALPHA × N_BETA chart (default 300 × 300) of the pendula
 !>    pair of data/scenes/system_pendula.nml (M = diag(1, 0.64), B = diag(1, 0.8) + 0.1
 !>    [[1, −1], [−1, 1]], K = β B − α cos πτ diag(1, 0.8)) over α in [0, 2], β in [0, 12],
-!>    the grid of bench/chart_gsl_system.c, at tolerance 1e-10, one thread:
+!>    the grid of bench/chart_gsl_system.c:
 !>    - hillstab: `system_monodromy` (method auto, one `system_nodes_t` per row of fixed α)
-!>      and `system_floquet` at every point, timed with system_clock;
+!>      and `system_floquet` at every point, timed with system_clock, one thread, at the
+!>      tolerances 1e-10 (the benchmark's), 1e-9 and 1e-8; then at 1e-10 with the rows
+!>      shared among OMP_NUM_THREADS OpenMP threads when that is more than one;
 !>    - the plain C GSL program (bench/chart_gsl_system.c, rk8pd on the 4 × 4 fundamental
 !>      matrix over the period, compiled into build/chart_gsl_system when missing) at
-!>      eps = 1e-10, 1e-11, 1e-12, in the same run, its own wall time of the loop;
-!>    - the reference: the same GSL program at eps = 1e-14 (its error, checked here on a
-!>      subsample against hillstab's magnus6 at tolerance 1e-13, is reported as well).
+!>      eps = 1e-10, 1e-11, 1e-12, 1e-13, in the same run, its own wall time of the loop
+!>      (which leaves out its verdicts; hillstab's time includes them);
+!>    - the reference: the same GSL program at eps = 1e-14, itself checked on every 37th
+!>      point against hillstab's magnus6 at tolerance 1e-13 (an independent method); every
+!>      contender's max error against that check is printed as well.
 !>    The error of a point is max|Φ − Φ_ref| / max(1, max|Φ_ref|) (Φ = e^s Φ̃); the table gives
-!>    the max and median over the grid. "Equal accuracy": the GSL run of the largest eps whose
-!>    max error is not larger than hillstab's (the cheapest GSL run at least as accurate);
-!>    the speed ratio is its time over hillstab's. When no GSL run is that accurate, the
-!>    ratio against the most accurate one is printed as a lower bound ("> ").
+!>    the max and median over the grid. "Equal accuracy": for each hillstab run the fastest
+!>    GSL run whose max error is not larger than hillstab's, the speed ratio its time over
+!>    hillstab's (when no GSL run is that accurate, the most accurate one and "> ": a lower
+!>    bound); and the other way round, for each GSL run the fastest hillstab run at least as
+!>    accurate.
 !> 2. Cost against n: chains of n = 1, 2, 4, 10, 20 driven oscillators (M = I, K0 the
 !>    tridiagonal spring chain 2, −1 with fixed ends, B = I, the drive −(0.6 + 0.4 (i−1)/(n−1))
 !>    on the diagonal and 0.15 between neighbours, so that the modes couple) over a
@@ -34,6 +39,7 @@ program hillstab_bench_system
    use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet, verdict_unstable
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
       system_auto, system_magnus6
+   !$ use omp_lib, only: omp_get_max_threads
    implicit none
    integer, parameter :: n_h = 3, n_gsl = 4, n_c = n_h + n_gsl, stride = 37
    !> hillstab's tolerances (the first the benchmark's) and GSL's eps
@@ -46,8 +52,9 @@ program hillstab_bench_system
    !> per contender (hillstab's tolerances, then GSL's eps): Φ row-major per point, seconds,
    !> steps or evaluations per point, errors against the reference
    real(wp), allocatable :: phi(:, :, :), phi_ref(:, :), phi_sub(:, :), err(:, :)
-   real(wp) :: seconds(n_c), work(n_c), sub_max(n_c), time_ref, ref_check
-   integer :: failures, unstable, k
+   real(wp) :: seconds(n_c), work(n_c), sub_max(n_c), time_ref, ref_check, seconds_threads = 0.0_wp, steps_threads
+   real(wp), allocatable :: phi_threads(:, :)
+   integer :: failures, unstable, k, threads
 
    call read_arguments()
    n_points = n_alpha*n_beta
@@ -62,6 +69,17 @@ program hillstab_bench_system
          1.0e6_wp*seconds(k)/n_points, " us/point, ", work(k), " steps/point, failures ", failures, &
          ", unstable points ", unstable
    end do
+   ! the same chart with the rows shared among OpenMP threads (OMP_NUM_THREADS)
+   threads = 1
+   !$ threads = omp_get_max_threads()
+   if (threads > 1) then
+      allocate (phi_threads(16, n_points))
+      call hillstab_chart(system_method_t(system_auto, tolerance), phi_threads, seconds_threads, steps_threads, &
+                          failures, unstable, threads=.true.)
+      write (*, '(a, es8.1, a, i0, a, f9.2, a, l1)') "hillstab auto tolerance", tolerance, ", ", threads, &
+         " threads:", 1.0e6_wp*seconds_threads/n_points, " us/point (wall), the same Phi: ", &
+         all(phi_threads == phi(:, :, 1))
+   end if
    if (run_gsl) then
       allocate (phi_ref(16, n_points), err(n_points, n_c))
       do k = 1, n_gsl
@@ -176,12 +194,13 @@ contains
 
    !> hillstab's chart of the pendula pair: Φ = e^s Φ̃ row-major per point, the time of the
    !> loop (monodromy and Floquet verdict), steps per point, failures and unstable points.
-   subroutine hillstab_chart(method, phi, seconds, steps, failures, unstable, stride)
+   subroutine hillstab_chart(method, phi, seconds, steps, failures, unstable, stride, threads)
       type(system_method_t), intent(in) :: method
       real(wp), intent(out) :: phi(:, :)
       real(wp), intent(out) :: seconds, steps
       integer, intent(out) :: failures, unstable
       integer, intent(in), optional :: stride  !! only every stride-th point (the others zero)
+      logical, intent(in), optional :: threads  !! rows in parallel (OpenMP), else one thread
       type(matrix_system_t) :: pair
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
@@ -191,8 +210,11 @@ contains
       integer :: i, j, p, every
       integer(int64) :: total_steps
       real(wp) :: alpha, beta, t0
+      logical :: parallel
       every = 1
       if (present(stride)) every = stride
+      parallel = .false.
+      if (present(threads)) parallel = threads
       pair = pendula_pair()
       call prepare_system(pair, 0.0_wp, form, error)
       if (allocated(error)) error stop "bench: prepare_system"
@@ -201,6 +223,8 @@ contains
       unstable = 0
       total_steps = 0
       t0 = wall_seconds()
+      !$omp parallel do schedule(dynamic) if(parallel) default(shared) &
+      !$omp private(i, j, p, alpha, beta, nodes, r, f, error) reduction(+:failures, unstable, total_steps)
       do i = 1, n_alpha
          alpha = grid_value(0.0_wp, 2.0_wp, n_alpha, i)
          nodes = system_nodes_t()
@@ -216,6 +240,7 @@ contains
             phi(:, p) = reshape(transpose(r%phi*exp(r%log_scale)), [16])
          end do
       end do
+      !$omp end parallel do
       seconds = wall_seconds() - t0
       steps = real(total_steps, wp)/real((n_points + every - 1)/every, wp)
    end subroutine hillstab_chart
@@ -377,6 +402,16 @@ contains
                " vs GSL eps ", gsl_eps(g - n_h), " (not as accurate) speed ratio > ", seconds(g)/seconds(h)
          end if
       end do
+      if (seconds_threads > 0.0_wp) then
+         g = cheapest(n_h + 1, n_c, maxval(err(:, 1)))
+         if (g == 0) g = n_h + minloc([(maxval(err(:, k)), k=n_h + 1, n_c)], dim=1)
+         write (*, '(a, es8.1, a, i0, a, f9.2, a, es8.1, a, f7.2)') "  hillstab tolerance ", tolerance, " on ", &
+            threads, " threads (", 1.0e6_wp*seconds_threads/n_points, " us/point) vs GSL eps ", gsl_eps(g - n_h), &
+            " on one: ", seconds(g)/seconds_threads
+         write (unit, '(a, i0, a, f10.3, a, es8.1, a, f8.3)') "# hillstab tolerance 1e-10 on ", threads, &
+            " threads: us_per_point ", 1.0e6_wp*seconds_threads/n_points, ", against GSL eps ", gsl_eps(g - n_h), &
+            " on one thread: speed ratio ", seconds(g)/seconds_threads
+      end if
       do g = n_h + 1, n_c
          h = cheapest(1, n_h, maxval(err(:, g)))
          if (h > 0) then
