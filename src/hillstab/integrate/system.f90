@@ -100,6 +100,8 @@ module hillstab_integrate_system
       integer :: order = 0                 !! the Magnus order they are for
       type(node_level_t) :: levels(size(magnus_ladder))
       integer :: hint = 0                  !! ladder index that met the tolerance at the last point
+      !> −M⁻¹p and −M⁻¹b at τ = 0, P/4, P/2, 3P/4 (the size of A for the coarsest mesh)
+      real(wp), allocatable :: corner_p(:, :, :), corner_b(:, :, :)
    end type system_nodes_t
 
    !> The right-hand side of the fundamental matrix for rk.
@@ -121,6 +123,9 @@ module hillstab_integrate_system
    !> the margin of a failed mesh's successor and of the next point's first mesh over the
    !> mesh the estimate asks for
    real(wp), parameter :: grow = 1.1_wp, hint_margin = 1.0_wp
+   !> the coarsest mesh accepted: this many steps per unit of (√‖M⁻¹K‖ + the highest drive
+   !> frequency) times the window, so that the Richardson pair is in its asymptotic range
+   real(wp), parameter :: resolution = 1.0_wp
    !> The Taylor approximants of Bader, Blanes and Casas (Mathematics 7, 1174, 2019), T₁₂ in four
    !> products and T₁₈ in five, and the norms up to which each has a backward error below the
    !> unit round-off: e^X ≈ T(X/2^j) squared j times.
@@ -221,13 +226,7 @@ contains
       integer :: steps, k, q, nq, n
       real(wp) :: h, tau, c(3)
       real(wp), allocatable :: p(:, :), b(:, :)
-      if (nodes%alpha /= alpha .or. nodes%order /= order) then
-         do k = 1, size(nodes%levels)
-            nodes%levels(k)%ready = .false.
-         end do
-         nodes%alpha = alpha
-         nodes%order = order
-      end if
+      call renew_nodes(system, form, alpha, order, nodes)
       if (nodes%levels(j)%ready) return
       n = form%n
       steps = magnus_ladder(j)
@@ -252,23 +251,50 @@ contains
       nodes%levels(j)%ready = .true.
    end subroutine fill_level
 
-   !> A first ladder level from the size of A: about 0.6 steps per unit of √‖M⁻¹K‖ τ and per
-   !> drive harmonic, over the window.
-   integer function first_level(system, form, alpha, beta) result(j)
+   !> Forget the levels when α or the order changed; fill the corners for the first mesh.
+   subroutine renew_nodes(system, form, alpha, order, nodes)
       class(hill_system_t), intent(in) :: system
       type(system_form_t), intent(in) :: form
-      real(wp), intent(in) :: alpha, beta
-      real(wp), allocatable :: p(:, :), b(:, :)
-      real(wp) :: size_a, want
+      real(wp), intent(in) :: alpha
+      integer, intent(in) :: order
+      type(system_nodes_t), intent(inout) :: nodes
+      real(wp) :: p(form%n, form%n), b(form%n, form%n)
       integer :: k
-      allocate (p(form%n, form%n), b(form%n, form%n))
-      size_a = 0.0_wp
+      if (nodes%alpha == alpha .and. nodes%order == order .and. allocated(nodes%corner_p)) then
+         if (size(nodes%corner_p, 1) == form%n) return
+      end if
+      do k = 1, size(nodes%levels)
+         nodes%levels(k)%ready = .false.
+      end do
+      nodes%alpha = alpha
+      nodes%order = order
+      nodes%hint = 0
+      if (allocated(nodes%corner_p)) deallocate (nodes%corner_p, nodes%corner_b)
+      allocate (nodes%corner_p(form%n, form%n, 4), nodes%corner_b(form%n, form%n, 4))
       do k = 0, 3
          call system%stiffness(alpha, 0.25_wp*k*form%period, p, b)
-         size_a = max(size_a, maxval(sum(abs(matmul(form%m_inverse, p + beta*b)), dim=2)))
+         nodes%corner_p(:, :, k + 1) = -matmul(form%m_inverse, p)
+         nodes%corner_b(:, :, k + 1) = -matmul(form%m_inverse, b)
+      end do
+   end subroutine renew_nodes
+
+   !> The coarsest ladder level accepted at β (and the first tried without a hint): `resolution`
+   !> steps per unit of √‖M⁻¹K‖ (its largest at the four corners) plus the drive's highest
+   !> frequency, over the window; coarser, Richardson's estimate of a point of the pendula
+   !> chart at β ≈ 11 understated the error threefold (N = 4 against 2 at tolerance 1e-6).
+   integer function first_level(system, form, beta, nodes) result(j)
+      class(hill_system_t), intent(in) :: system
+      type(system_form_t), intent(in) :: form
+      real(wp), intent(in) :: beta
+      type(system_nodes_t), intent(in) :: nodes   !! with its corners (`renew_nodes`)
+      real(wp) :: size_a, want
+      integer :: k
+      size_a = 0.0_wp
+      do k = 1, 4
+         size_a = max(size_a, maxval(sum(abs(nodes%corner_p(:, :, k) + beta*nodes%corner_b(:, :, k)), dim=2)))
       end do
       size_a = max(size_a, maxval(sum(abs(form%d), dim=2))**2)
-      want = window_length(form)*(0.6_wp*sqrt(size_a) + 1.0_wp*max(1, system%drive_harmonics())*2.0_wp/form%period)
+      want = window_length(form)*resolution*(sqrt(size_a) + max(1, system%drive_harmonics())*2.0_wp/form%period)
       j = 3
       do while (j < size(magnus_ladder) - 2 .and. (magnus_ladder(j) < want .or. .not. has_half(j)))
          j = j + 1
@@ -299,11 +325,9 @@ contains
       allocate (phi(m, m, size(magnus_ladder)))
       done = .false.
       last = size(magnus_ladder)
-      if (nodes%hint > 0 .and. nodes%alpha == alpha .and. nodes%order == order) then
-         j = nodes%hint
-      else
-         j = first_level(system, form, alpha, beta)
-      end if
+      call renew_nodes(system, form, alpha, order, nodes)
+      j = first_level(system, form, beta, nodes)
+      if (nodes%hint > 0) j = max(j, nodes%hint)
       previous = huge(1.0_wp)
       previous_steps = 1
       result%steps = 0
