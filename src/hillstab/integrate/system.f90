@@ -98,7 +98,7 @@ module hillstab_integrate_system
    type :: system_nodes_t
       real(wp) :: alpha = huge(1.0_wp)     !! the α of the levels held
       integer :: order = 0                 !! the Magnus order they are for
-      type(node_level_t) :: levels(size(magnus_ladder))
+      type(node_level_t) :: levels(size(magnus_ladder))  !! K at the Gauss nodes, one per ladder level
       integer :: hint = 0                  !! ladder index that met the tolerance at the last point
       !> −M⁻¹p and −M⁻¹b at τ = 0, P/4, P/2, 3P/4 (the size of A for the coarsest mesh)
       real(wp), allocatable :: corner_p(:, :, :), corner_b(:, :, :)
