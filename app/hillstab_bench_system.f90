@@ -443,6 +443,8 @@ contains
                tolerances(h), ": ", seconds(g)/seconds(h)
             write (unit, '(a, es8.1, a, es8.1, a, f8.3)') "# equal accuracy: GSL eps ", gsl_eps(g - n_h), &
                " vs hillstab tolerance ", tolerances(h), " speed ratio ", seconds(g)/seconds(h)
+         else
+            write (*, '(a, es8.1, a)') "  GSL eps ", gsl_eps(g - n_h), ": no hillstab run as accurate"
          end if
       end do
       close (unit)
