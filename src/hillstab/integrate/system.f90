@@ -4,13 +4,21 @@
 !>
 !> - `system_magnus6` (and method auto): the sixth-order Magnus integrator of Blanes, Casas
 !>   and Ros in its matrix form (three Gauss nodes; Ω = α₁ + α₃/12 + [−20α₁ − α₃ + C₁,
-!>   α₂ + C₂]/240, C₁ = [α₁, α₂], C₂ = −[α₁, 2α₃ + C₁]/60), each step's exponential by
-!>   scaling and squaring of a degree-12 Taylor polynomial (Paterson–Stockmeyer, ‖X‖₁ ≤ 0.35:
-!>   truncation below 2e-16). N equal steps over the window; the error of Φ is estimated
-!>   by Richardson's comparison with N/2 steps, ‖Φ_N − Φ_{N/2}‖/(2⁶ − 1) (times a safety
-!>   factor 2), and N climbs a ladder (4, 6, 8, 12, 16, 24, … ×√2) until the estimate,
-!>   relative to max(1, max|Φ_ij|), meets the tolerance. `system_magnus4`: the fourth-order
-!>   two-node Magnus integrator, likewise.
+!>   α₂ + C₂]/240, C₁ = [α₁, α₂], C₂ = −[α₁, 2α₃ + C₁]/60). A's blocks make α₂, α₃ one-block
+!>   matrices, so that C₁ and C₂ are formed from n × n products (`magnus6_exponent_blocks`);
+!>   the state is balanced by S = diag(cI, I), c = 2^−k ≈ ‖M⁻¹K‖^−½ (a similarity, exact in
+!>   binary), so that Ω's norm is about h√‖M⁻¹K‖ rather than h‖M⁻¹K‖. Each step's
+!>   exponential by scaling and squaring of the optimised Taylor approximants of Bader,
+!>   Blanes and Casas (`system_exponential`: degree 12 in four products, 18 in five; backward
+!>   error below the unit round-off). n = 2 runs on fixed-size 4 × 4 arrays (products inline).
+!>   N equal steps over the window; the error of Φ_N is estimated by Richardson's comparison
+!>   with N/2 steps, ‖Φ_N − Φ_{N/2}‖/(2⁶ − 1), and N climbs a ladder (4, 5, 6, 7 times powers
+!>   of two, even counts accepted) until the estimate, relative to max(1, max|Φ_ij|), meets
+!>   the tolerance; the result is the extrapolation Φ_N + (Φ_N − Φ_{N/2})/(2⁶ − 1), whose
+!>   error is of higher order (eighth: the method is symmetric) and which the estimate of
+!>   Φ_N's error bounds in the asymptotic range (measured on the benchmark chart at 1e-10:
+!>   estimate ≤ 1e-10, error ≤ 8e-13). `system_magnus4`: the fourth-order two-node Magnus
+!>   integrator, likewise (its exponent in full 2n × 2n products).
 !> - `system_rk`: Dormand–Prince 8(5,3) (hillstab_integrate_rk) on the 4n² entries of the
 !>   fundamental matrix, local tolerance tolerance/10, then /320, the difference of the two
 !>   the estimate (the reference the tests and benchmarks compare with).
@@ -22,8 +30,9 @@
 !>
 !> In a chart the values of K at the Gauss nodes depend on α and the mesh only (K = p + β b):
 !> a `system_nodes_t` keeps them for the meshes used at one α, so that the points of a
-!> row share them, and carries the mesh that met the tolerance at the previous point as the
-!> next point's first try. No module state: threads each use their own `system_nodes_t`.
+!> row share them, and carries as the next point's first try the mesh the previous point's
+!> estimate asked for (N (estimate/tolerance)^(1/6), the smallest level above it). No module
+!> state: threads each use their own `system_nodes_t`.
 !>
 !>```fortran
 !> type(system_form_t) :: form
@@ -55,9 +64,13 @@ module hillstab_integrate_system
    !> Dormand–Prince 8(5,3) on the fundamental matrix, two tolerances.
    integer, parameter :: system_rk = 5
 
-   !> The step counts of the Magnus ladder (each has its half among the earlier ones).
-   integer, parameter :: magnus_ladder(*) = [2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512, &
-                                             768, 1024, 1536, 2048, 3072, 4096, 6144, 8192, 12288, 16384]
+   !> The step counts of the Magnus ladder, 4, 5, 6, 7 times powers of two (ratios at most
+   !> 1.25); every even count from 4 on has its half among the earlier ones, and only those
+   !> are accepted (the odd 5 and 7 serve as halves).
+   integer, parameter :: magnus_ladder(*) = [2, 3, 4, 5, 6, 7, 8, 10, 12, 14, 16, 20, 24, 28, 32, 40, 48, 56, 64, &
+                                             80, 96, 112, 128, 160, 192, 224, 256, 320, 384, 448, 512, 640, 768, &
+                                             896, 1024, 1280, 1536, 1792, 2048, 2560, 3072, 3584, 4096, 5120, 6144, &
+                                             7168, 8192, 10240, 12288, 14336, 16384]
 
    !> A method and its tolerance.
    type :: system_method_t
@@ -85,9 +98,10 @@ module hillstab_integrate_system
    type :: system_nodes_t
       real(wp) :: alpha = huge(1.0_wp)     !! the α of the levels held
       integer :: order = 0                 !! the Magnus order they are for
-      !> the nodes of each mesh of the ladder used at this α
-      type(node_level_t) :: levels(size(magnus_ladder))
+      type(node_level_t) :: levels(size(magnus_ladder))  !! K at the Gauss nodes, one per ladder level
       integer :: hint = 0                  !! ladder index that met the tolerance at the last point
+      !> −M⁻¹p and −M⁻¹b at τ = 0, P/4, P/2, 3P/4 (the size of A for the coarsest mesh)
+      real(wp), allocatable :: corner_p(:, :, :), corner_b(:, :, :)
    end type system_nodes_t
 
    !> The right-hand side of the fundamental matrix for rk.
@@ -101,7 +115,45 @@ module hillstab_integrate_system
    end type fundamental_t
 
    real(wp), parameter :: sqrt15 = 3.87298334620741688_wp, sqrt3 = 1.73205080756887729_wp
-   real(wp), parameter :: safety = 2.0_wp
+   !> the factor on Richardson's estimate (1: the extrapolated Φ returned has a margin of its
+   !> own; 2 when Φ_N itself was returned, as before)
+   real(wp), parameter :: safety = 1.0_wp
+   !> return Richardson's extrapolation of the accepted mesh and its half
+   logical, parameter :: extrapolate = .true.
+   !> the margin of a failed mesh's successor and of the next point's first mesh over the
+   !> mesh the estimate asks for
+   real(wp), parameter :: grow = 1.1_wp, hint_margin = 1.0_wp
+   !> the coarsest mesh accepted: this many steps per unit of (√‖M⁻¹K‖ + the highest drive
+   !> frequency) times the window, so that the Richardson pair is in its asymptotic range
+   real(wp), parameter :: resolution = 1.0_wp
+   !> The Taylor approximants of Bader, Blanes and Casas (Mathematics 7, 1174, 2019), T₁₂ in four
+   !> products and T₁₈ in five, and the norms up to which each has a backward error below the
+   !> unit round-off: e^X ≈ T(X/2^j) squared j times.
+   real(wp), parameter :: theta12 = 0.2996158913811580_wp, theta18 = 1.090863719290036_wp
+   !> T₁₂ = q₁ + (q₂ + q₆) q₆, q₆ = q₃ + q₄², q_k = Σ_i t12(i, k) X^i (i = 0 … 3)
+   real(wp), parameter :: t12(0:3, 4) = reshape([ &
+      -0.0186023205146205532243437300433_wp, -0.00500702322573317730979741843919_wp, &
+      -0.573420122960522263905952420789_wp, -0.133399693943892059700768926983_wp, &
+      4.6_wp, 0.992875103538486836140479571505_wp, -0.132445561052799638845074997454_wp, 0.0017299_wp, &
+      0.211693118299809442949323323336_wp, 0.158224384715726725371768893252_wp, &
+      0.165635169436727415011171668419_wp, 0.0107862779315792425026320640108_wp, &
+      0.0_wp, -0.131810610138301840156819349464_wp, -0.0202785554058925907933568229945_wp, &
+      -0.00675951846863086359778560766482_wp], [4, 4])
+   !> T₁₈ = q₁ + (q₂ + q₉) q₉, q₉ = q₅ q₄ + q₃, q_k = Σ t18(i, k) X^i over i = 0, 1, 2, 3, 6
+   !> (index 4 standing for X⁶)
+   real(wp), parameter :: t18(0:4, 5) = reshape([ &
+      0.0_wp, 0.39784974949964507614519612771028_wp, 1.3678377846041171992252370687822_wp, &
+      0.49828962252538267755685881726227_wp, -0.00063789819459472330924155005649193_wp, &
+      -10.967639605296206259351746267537_wp, 1.6801581387890619718278540172481_wp, &
+      0.057177984647886551270287171322525_wp, -0.0069821012248805208429046648380155_wp, &
+      0.000033497501708607053831336734066844_wp, &
+      -0.090431683239081056197146887701835_wp, -0.067640451907138190756007990037971_wp, &
+      0.067596130177045964608279919507894_wp, 0.029555257042931552742606918224223_wp, &
+      -0.000013918025751606070112473997934374_wp, &
+      0.0_wp, 0.0_wp, -0.0923364619367118592764570775143_wp, -0.0169364939002081717191385115723_wp, &
+      -0.0000140086798182036159794363205726_wp, &
+      0.0_wp, -0.100365581030144620014614939405_wp, -0.00802924648241156960116919515244_wp, &
+      -0.000892138498045729955685466128049_wp, 0.0_wp], [5, 5])
 
 contains
 
@@ -174,13 +226,7 @@ contains
       integer :: steps, k, q, nq, n
       real(wp) :: h, tau, c(3)
       real(wp), allocatable :: p(:, :), b(:, :)
-      if (nodes%alpha /= alpha .or. nodes%order /= order) then
-         do k = 1, size(nodes%levels)
-            nodes%levels(k)%ready = .false.
-         end do
-         nodes%alpha = alpha
-         nodes%order = order
-      end if
+      call renew_nodes(system, form, alpha, order, nodes)
       if (nodes%levels(j)%ready) return
       n = form%n
       steps = magnus_ladder(j)
@@ -205,28 +251,61 @@ contains
       nodes%levels(j)%ready = .true.
    end subroutine fill_level
 
-   !> A first ladder level from the size of A: about 0.6 steps per unit of √‖M⁻¹K‖ τ and per
-   !> drive harmonic, over the window.
-   integer function first_level(system, form, alpha, beta) result(j)
+   !> Forget the levels when α or the order changed; fill the corners for the first mesh.
+   subroutine renew_nodes(system, form, alpha, order, nodes)
       class(hill_system_t), intent(in) :: system
       type(system_form_t), intent(in) :: form
-      real(wp), intent(in) :: alpha, beta
-      real(wp), allocatable :: p(:, :), b(:, :)
-      real(wp) :: size_a, want
+      real(wp), intent(in) :: alpha
+      integer, intent(in) :: order
+      type(system_nodes_t), intent(inout) :: nodes
+      real(wp) :: p(form%n, form%n), b(form%n, form%n)
       integer :: k
-      allocate (p(form%n, form%n), b(form%n, form%n))
-      size_a = 0.0_wp
+      if (nodes%alpha == alpha .and. nodes%order == order .and. allocated(nodes%corner_p)) then
+         if (size(nodes%corner_p, 1) == form%n) return
+      end if
+      do k = 1, size(nodes%levels)
+         nodes%levels(k)%ready = .false.
+      end do
+      nodes%alpha = alpha
+      nodes%order = order
+      nodes%hint = 0
+      if (allocated(nodes%corner_p)) deallocate (nodes%corner_p, nodes%corner_b)
+      allocate (nodes%corner_p(form%n, form%n, 4), nodes%corner_b(form%n, form%n, 4))
       do k = 0, 3
          call system%stiffness(alpha, 0.25_wp*k*form%period, p, b)
-         size_a = max(size_a, maxval(sum(abs(matmul(form%m_inverse, p + beta*b)), dim=2)))
+         nodes%corner_p(:, :, k + 1) = -matmul(form%m_inverse, p)
+         nodes%corner_b(:, :, k + 1) = -matmul(form%m_inverse, b)
+      end do
+   end subroutine renew_nodes
+
+   !> The coarsest ladder level accepted at β (and the first tried without a hint): `resolution`
+   !> steps per unit of √‖M⁻¹K‖ (its largest at the four corners) plus the drive's highest
+   !> frequency, over the window; coarser, Richardson's estimate of a point of the pendula
+   !> chart at β ≈ 11 understated the error threefold (N = 4 against 2 at tolerance 1e-6).
+   integer function first_level(system, form, beta, nodes) result(j)
+      class(hill_system_t), intent(in) :: system
+      type(system_form_t), intent(in) :: form
+      real(wp), intent(in) :: beta
+      type(system_nodes_t), intent(in) :: nodes   !! with its corners (`renew_nodes`)
+      real(wp) :: size_a, want
+      integer :: k
+      size_a = 0.0_wp
+      do k = 1, 4
+         size_a = max(size_a, maxval(sum(abs(nodes%corner_p(:, :, k) + beta*nodes%corner_b(:, :, k)), dim=2)))
       end do
       size_a = max(size_a, maxval(sum(abs(form%d), dim=2))**2)
-      want = window_length(form)*(0.6_wp*sqrt(size_a) + 1.0_wp*max(1, system%drive_harmonics())*2.0_wp/form%period)
+      want = window_length(form)*resolution*(sqrt(size_a) + max(1, system%drive_harmonics())*2.0_wp/form%period)
       j = 3
-      do while (j < size(magnus_ladder) - 2 .and. magnus_ladder(j) < want)
+      do while (j < size(magnus_ladder) - 2 .and. (magnus_ladder(j) < want .or. .not. has_half(j)))
          j = j + 1
       end do
    end function first_level
+
+   !> Level j may be accepted: an even count from 4 on (its half on the ladder).
+   pure logical function has_half(j)
+      integer, intent(in) :: j
+      has_half = magnus_ladder(j) >= 4 .and. mod(magnus_ladder(j), 2) == 0
+   end function has_half
 
    !> Magnus of order 4 or 6 up the ladder until the Richardson estimate meets the tolerance.
    subroutine monodromy_magnus(system, form, alpha, beta, tolerance, order, nodes, result, error)
@@ -240,17 +319,17 @@ contains
       integer :: m, j, jh, last, k
       real(wp), allocatable :: phi(:, :, :)
       real(wp) :: s(size(magnus_ladder)), estimate, previous, scale, floor, need
+      integer :: previous_steps
       logical :: done(size(magnus_ladder))
       m = 2*form%n
       allocate (phi(m, m, size(magnus_ladder)))
       done = .false.
       last = size(magnus_ladder)
-      if (nodes%hint > 0 .and. nodes%alpha == alpha .and. nodes%order == order) then
-         j = nodes%hint
-      else
-         j = first_level(system, form, alpha, beta)
-      end if
+      call renew_nodes(system, form, alpha, order, nodes)
+      j = first_level(system, form, beta, nodes)
+      if (nodes%hint > 0) j = max(j, nodes%hint)
       previous = huge(1.0_wp)
+      previous_steps = 1
       result%steps = 0
       do
          jh = half_level(j)
@@ -270,7 +349,10 @@ contains
             result%status = status_ok
             exit
          end if
-         if (estimate <= floor .or. (estimate < 1.0e-7_wp .and. estimate > 0.5_wp*previous)) then
+         ! round-off: the estimate hardly falls where the order says it should (by at least
+         ! (8/7)^order, to a half and more between far levels)
+         if (estimate <= floor .or. (estimate < 1.0e-7_wp .and. estimate > previous* &
+             max(0.5_wp, min(0.9_wp, 4.0_wp*(real(previous_steps, wp)/magnus_ladder(j))**order)))) then
             result%status = status_roundoff
             exit
          end if
@@ -281,19 +363,32 @@ contains
             exit
          end if
          previous = estimate
+         previous_steps = magnus_ladder(j)
          ! the mesh the estimate asks for, by the order (at least the next level)
-         need = magnus_ladder(j)*(estimate/tolerance)**(1.0_wp/order)*1.1_wp
+         need = magnus_ladder(j)*(estimate/tolerance)**(1.0_wp/order)*grow
          j = j + 1
-         do while (j < last .and. magnus_ladder(j) < need)
+         do while (j < last .and. (magnus_ladder(j) < need .or. .not. has_half(j)))
             j = j + 1
          end do
       end do
+      ! Richardson's extrapolation: Φ_N + (Φ_N − Φ_{N/2})/(2^order − 1), its error of higher
+      ! order; the estimate stays that of Φ_N (the extrapolation moves Φ by at most it)
       result%phi = phi(:, :, j)
+      if (extrapolate .and. result%status == status_ok) result%phi = phi(:, :, j) + &
+         (phi(:, :, j) - phi(:, :, jh)*exp(s(jh) - s(j)))/(2.0_wp**order - 1.0_wp)
       result%log_scale = s(j)
       result%error_estimate = max(estimate, epsilon(1.0_wp))
-      ! the next point of the row starts one level lower when this one had room to spare
+      ! the next point of the row (β a little larger) starts at the mesh this one's estimate
+      ! asks for, with a margin
       nodes%hint = j
-      if (result%status == status_ok .and. estimate*2.0_wp**(order/2) < tolerance .and. j > 3) nodes%hint = j - 1
+      if (result%status == status_ok .and. estimate > 0.0_wp) then
+         need = magnus_ladder(j)*(estimate/tolerance)**(1.0_wp/order)*hint_margin
+         k = 3
+         do while (k < j .and. (magnus_ladder(k) < need .or. .not. has_half(k)))
+            k = k + 1
+         end do
+         nodes%hint = k
+      end if
       if (.not. all(ieee_is_finite(result%phi))) then
          result%status = status_failed
          if (.not. allocated(error)) call set_error(error, err_integration, "magnus: the monodromy is not finite")
@@ -331,6 +426,7 @@ contains
       real(wp), intent(out) :: log_scale
       integer :: n, m, k, i, nq
       real(wp) :: h, big
+      logical :: steps_done
       real(wp) :: y(2*form%n, 2*form%n), a(2*form%n, 2*form%n, 3), big_omega(2*form%n, 2*form%n), &
                   e(2*form%n, 2*form%n)
       n = form%n
@@ -339,6 +435,12 @@ contains
       h = window_length(form)/steps
       y = identity(m)
       log_scale = 0.0_wp
+      steps_done = order == 6
+      if (order == 6 .and. m == 4) then
+         call magnus6_steps_4(form%d, beta, h, steps, level, y, log_scale)
+      else if (order == 6) then
+         call magnus6_steps(n, form%d, beta, h, steps, level, y, log_scale)
+      end if
       ! the constant blocks of A
       a = 0.0_wp
       do i = 1, nq
@@ -347,7 +449,7 @@ contains
          end do
          a(n + 1:m, n + 1:m, i) = form%d
       end do
-      do k = 1, steps
+      do k = 1, merge(0, steps, steps_done)
          do i = 1, nq
             a(n + 1:m, 1:n, i) = level%lp(:, :, nq*(k - 1) + i) + beta*level%lb(:, :, nq*(k - 1) + i)
          end do
@@ -372,27 +474,282 @@ contains
       end if
    end subroutine magnus_mesh
 
+   !> The steps of `magnus_mesh` for order 6 and n = 2 (4 × 4): fixed-size arrays, so that the
+   !> compiler expands the products inline (the general path calls the library's matmul), and
+   !> the exponent from 2 × 2 blocks (`magnus6_exponent_blocks_2`).
+   subroutine magnus6_steps_4(d, beta, h, steps, level, y, log_scale)
+      real(wp), intent(in) :: d(2, 2), beta, h
+      integer, intent(in) :: steps
+      type(node_level_t), intent(in) :: level
+      real(wp), intent(inout) :: y(4, 4), log_scale
+      real(wp) :: l(2, 2, 3), big_omega(4, 4), e(4, 4), big, c, c2, hc, dc(2, 2)
+      integer :: k, i
+      ! balance: Z = S⁻¹YS, S = diag(cI, I), solves Z' = [[0, I/c], [cL, D]] Z, which is
+      ! (1/c)[[0, I], [c²L, cD]]: steps h/c with L, D scaled; c = 2^−k ≈ ‖L‖^−½ (exact scaling)
+      c = 1.0_wp
+      big = maxval(sum(abs(level%lp(:, :, 1:3) + beta*level%lb(:, :, 1:3)), dim=2))
+      if (big > 4.0_wp) c = 2.0_wp**(-nint(0.5_wp*log(big)/log(2.0_wp)))
+      c2 = c*c
+      hc = h/c
+      dc = c*d
+      do k = 1, steps
+         do i = 1, 3
+            l(:, :, i) = c2*(level%lp(:, :, 3*(k - 1) + i) + beta*level%lb(:, :, 3*(k - 1) + i))
+         end do
+         call magnus6_exponent_blocks_2(l(:, :, 1), l(:, :, 2), l(:, :, 3), dc, hc, big_omega)
+         call exponential_4(big_omega, e)
+         y = matmul(e, y)
+         big = maxval(abs(y))
+         if (big > 1.0e100_wp) then
+            y = y*2.0_wp**(-exponent(big))
+            log_scale = log_scale + exponent(big)*log(2.0_wp)
+         end if
+      end do
+      y(1:2, 3:4) = c*y(1:2, 3:4)
+      y(3:4, 1:2) = y(3:4, 1:2)/c
+   end subroutine magnus6_steps_4
+
+   !> The steps of `magnus_mesh` for order 6 and any n: explicit-shape work arrays, the
+   !> exponent from n × n blocks (`magnus6_exponent_blocks`), balanced as `magnus6_steps_4`.
+   subroutine magnus6_steps(n, d, beta, h, steps, level, y, log_scale)
+      integer, intent(in) :: n, steps
+      real(wp), intent(in) :: d(n, n), beta, h
+      type(node_level_t), intent(in) :: level
+      real(wp), intent(inout) :: y(2*n, 2*n), log_scale
+      real(wp) :: l(n, n, 3), big_omega(2*n, 2*n), e(2*n, 2*n), big, c, c2, hc, dc(n, n)
+      integer :: k, i
+      c = 1.0_wp
+      big = maxval(sum(abs(level%lp(:, :, 1:3) + beta*level%lb(:, :, 1:3)), dim=2))
+      if (big > 4.0_wp) c = 2.0_wp**(-nint(0.5_wp*log(big)/log(2.0_wp)))
+      c2 = c*c
+      hc = h/c
+      dc = c*d
+      do k = 1, steps
+         do i = 1, 3
+            l(:, :, i) = c2*(level%lp(:, :, 3*(k - 1) + i) + beta*level%lb(:, :, 3*(k - 1) + i))
+         end do
+         call magnus6_exponent_blocks(n, l(:, :, 1), l(:, :, 2), l(:, :, 3), dc, hc, big_omega)
+         call exponential_explicit(2*n, big_omega, e)
+         call multiply(2*n, e, y, big_omega)
+         y = big_omega
+         big = maxval(abs(y))
+         if (big > 1.0e100_wp) then
+            y = y*2.0_wp**(-exponent(big))
+            log_scale = log_scale + exponent(big)*log(2.0_wp)
+         end if
+      end do
+      y(1:n, n + 1:2*n) = c*y(1:n, n + 1:2*n)
+      y(n + 1:2*n, 1:n) = y(n + 1:2*n, 1:n)/c
+   end subroutine magnus6_steps
+
+   !> `magnus6_exponent_blocks_2` for any n.
+   pure subroutine magnus6_exponent_blocks(n, l1, l2, l3, d, h, big_omega)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: l1(n, n), l2(n, n), l3(n, n), d(n, n), h
+      real(wp), intent(out) :: big_omega(2*n, 2*n)
+      real(wp), dimension(n, n) :: p, q, dp, r, w1, w2, w3
+      real(wp), dimension(2*n, 2*n) :: u, v, uv, vu
+      real(wp) :: g
+      integer :: i, m
+      m = 2*n
+      p = (sqrt15*h/3.0_wp)*(l3 - l1)
+      q = (10.0_wp*h/3.0_wp)*(l3 - 2.0_wp*l2 + l1)
+      call multiply(n, d, p, dp)
+      r = 2.0_wp*q + h*dp
+      g = -h/60.0_wp
+      v(1:n, 1:n) = g*r
+      v(1:n, n + 1:m) = (-2.0_wp*g*h)*p
+      call multiply(n, l2, p, w1)
+      call multiply(n, p, l2, w2)
+      call multiply(n, d, r, w3)
+      v(n + 1:m, 1:n) = p + g*(h*(w1 + w2) + w3)
+      call multiply(n, p, d, w1)
+      v(n + 1:m, n + 1:m) = g*(-h*(dp - w1) - r)
+      u(1:n, 1:n) = h*p
+      u(1:n, n + 1:m) = 0.0_wp
+      do i = 1, n
+         u(i, n + i) = -20.0_wp*h
+      end do
+      u(n + 1:m, 1:n) = -20.0_wp*h*l2 - q + h*dp
+      u(n + 1:m, n + 1:m) = -20.0_wp*h*d - h*p
+      call multiply(m, u, v, uv)
+      call multiply(m, v, u, vu)
+      big_omega = (uv - vu)/240.0_wp
+      do i = 1, n
+         big_omega(i, n + i) = big_omega(i, n + i) + h
+      end do
+      big_omega(n + 1:m, 1:n) = big_omega(n + 1:m, 1:n) + h*l2 + q/12.0_wp
+      big_omega(n + 1:m, n + 1:m) = big_omega(n + 1:m, n + 1:m) + h*d
+   end subroutine magnus6_exponent_blocks
+
+   !> `system_exponential` on explicit-shape arrays (no temporaries of assumed shape).
+   pure subroutine exponential_explicit(m, x, e)
+      integer, intent(in) :: m
+      real(wp), intent(in) :: x(m, m)
+      real(wp), intent(out) :: e(m, m)
+      real(wp), dimension(m, m) :: a, a2, a3, a6, q1, q2, q4, w
+      real(wp) :: norm
+      integer :: j, k
+      norm = maxval(sum(abs(x), dim=1))
+      j = 0
+      if (norm > theta18) j = exponent(norm/theta18)
+      a = x*2.0_wp**(-j)
+      call multiply(m, a, a, a2)
+      call multiply(m, a2, a, a3)
+      if (norm <= theta12) then
+         q1 = t12(1, 1)*a + t12(2, 1)*a2 + t12(3, 1)*a3
+         q2 = t12(1, 2)*a + t12(2, 2)*a2 + t12(3, 2)*a3
+         q4 = t12(1, 4)*a + t12(2, 4)*a2 + t12(3, 4)*a3
+         call multiply(m, q4, q4, w)
+         e = w + t12(1, 3)*a + t12(2, 3)*a2 + t12(3, 3)*a3
+         do k = 1, m
+            q1(k, k) = q1(k, k) + t12(0, 1)
+            q2(k, k) = q2(k, k) + t12(0, 2)
+            e(k, k) = e(k, k) + t12(0, 3)
+         end do
+      else
+         call multiply(m, a3, a3, a6)
+         q1 = t18(1, 1)*a + t18(2, 1)*a2 + t18(3, 1)*a3 + t18(4, 1)*a6
+         q2 = t18(1, 2)*a + t18(2, 2)*a2 + t18(3, 2)*a3 + t18(4, 2)*a6
+         q4 = t18(2, 4)*a2 + t18(3, 4)*a3 + t18(4, 4)*a6
+         e = t18(1, 5)*a + t18(2, 5)*a2 + t18(3, 5)*a3
+         call multiply(m, e, q4, w)
+         e = w + t18(1, 3)*a + t18(2, 3)*a2 + t18(3, 3)*a3 + t18(4, 3)*a6
+         do k = 1, m
+            q2(k, k) = q2(k, k) + t18(0, 2)
+            e(k, k) = e(k, k) + t18(0, 3)
+         end do
+      end if
+      q2 = q2 + e
+      call multiply(m, q2, e, w)
+      e = q1 + w
+      do k = 1, j
+         call multiply(m, e, e, w)
+         e = w
+      end do
+   end subroutine exponential_explicit
+
+   !> c = a b for m × m matrices: explicit loops (the compiler vectorises the inner one), no
+   !> library call, for the small matrices of a step.
+   pure subroutine multiply(m, a, b, c)
+      integer, intent(in) :: m
+      real(wp), intent(in) :: a(m, m), b(m, m)
+      real(wp), intent(out) :: c(m, m)
+      integer :: i, j, k
+      do j = 1, m
+         c(:, j) = a(:, 1)*b(1, j)
+         do k = 2, m
+            do i = 1, m
+               c(i, j) = c(i, j) + a(i, k)*b(k, j)
+            end do
+         end do
+      end do
+   end subroutine multiply
+
+   !> `magnus6_exponent` for n = 2 from the blocks of A_i = [[0, I], [L_i, D]]: α₂ = [[0, 0], [P, 0]]
+   !> and α₃ = [[0, 0], [Q, 0]] have one block, C₁ = h[[P, 0], [DP, −P]], and C₂ = −[α₁, 2α₃ + C₁]/60
+   !> = −(h/60)[[R, −2hP], [h(L₂P + PL₂) + DR, −h(DP − PD) − R]] with R = 2Q + hDP: five 2 × 2
+   !> products in place of four 4 × 4 ones; the last commutator in 4 × 4.
+   pure subroutine magnus6_exponent_blocks_2(l1, l2, l3, d, h, big_omega)
+      real(wp), intent(in) :: l1(2, 2), l2(2, 2), l3(2, 2), d(2, 2), h
+      real(wp), intent(out) :: big_omega(4, 4)
+      real(wp), dimension(2, 2) :: p, q, dp, r
+      real(wp), dimension(4, 4) :: u, v
+      real(wp) :: g
+      p = (sqrt15*h/3.0_wp)*(l3 - l1)
+      q = (10.0_wp*h/3.0_wp)*(l3 - 2.0_wp*l2 + l1)
+      dp = matmul(d, p)
+      r = 2.0_wp*q + h*dp
+      g = -h/60.0_wp
+      ! v = α₂ + C₂
+      v(1:2, 1:2) = g*r
+      v(1:2, 3:4) = (-2.0_wp*g*h)*p
+      v(3:4, 1:2) = p + g*(h*(matmul(l2, p) + matmul(p, l2)) + matmul(d, r))
+      v(3:4, 3:4) = g*(-h*(dp - matmul(p, d)) - r)
+      ! u = −20α₁ − α₃ + C₁
+      u(1:2, 1:2) = h*p
+      u(1:2, 3:4) = 0.0_wp
+      u(1, 3) = -20.0_wp*h
+      u(2, 4) = -20.0_wp*h
+      u(3:4, 1:2) = -20.0_wp*h*l2 - q + h*dp
+      u(3:4, 3:4) = -20.0_wp*h*d - h*p
+      big_omega = (matmul(u, v) - matmul(v, u))/240.0_wp
+      ! + α₁ + α₃/12
+      big_omega(1, 3) = big_omega(1, 3) + h
+      big_omega(2, 4) = big_omega(2, 4) + h
+      big_omega(3:4, 1:2) = big_omega(3:4, 1:2) + h*l2 + q/12.0_wp
+      big_omega(3:4, 3:4) = big_omega(3:4, 3:4) + h*d
+   end subroutine magnus6_exponent_blocks_2
+
+   !> `system_exponential` for 4 × 4 matrices.
+   pure subroutine exponential_4(x, e)
+      real(wp), intent(in) :: x(4, 4)
+      real(wp), intent(out) :: e(4, 4)
+      real(wp), dimension(4, 4) :: a, a2, a3, a6, q1, q2, q4
+      real(wp) :: norm
+      integer :: j, k
+      norm = maxval(sum(abs(x), dim=1))
+      j = 0
+      if (norm > theta18) j = exponent(norm/theta18)
+      a = x*2.0_wp**(-j)
+      a2 = matmul(a, a)
+      a3 = matmul(a2, a)
+      if (norm <= theta12) then
+         q1 = t12(1, 1)*a + t12(2, 1)*a2 + t12(3, 1)*a3
+         q2 = t12(1, 2)*a + t12(2, 2)*a2 + t12(3, 2)*a3
+         q4 = t12(1, 4)*a + t12(2, 4)*a2 + t12(3, 4)*a3
+         e = matmul(q4, q4) + t12(1, 3)*a + t12(2, 3)*a2 + t12(3, 3)*a3
+         do k = 1, 4
+            q1(k, k) = q1(k, k) + t12(0, 1)
+            q2(k, k) = q2(k, k) + t12(0, 2)
+            e(k, k) = e(k, k) + t12(0, 3)
+         end do
+      else
+         a6 = matmul(a3, a3)
+         q1 = t18(1, 1)*a + t18(2, 1)*a2 + t18(3, 1)*a3 + t18(4, 1)*a6
+         q2 = t18(1, 2)*a + t18(2, 2)*a2 + t18(3, 2)*a3 + t18(4, 2)*a6
+         q4 = t18(2, 4)*a2 + t18(3, 4)*a3 + t18(4, 4)*a6
+         e = matmul(t18(1, 5)*a + t18(2, 5)*a2 + t18(3, 5)*a3, q4) + &
+             t18(1, 3)*a + t18(2, 3)*a2 + t18(3, 3)*a3 + t18(4, 3)*a6
+         do k = 1, 4
+            q2(k, k) = q2(k, k) + t18(0, 2)
+            e(k, k) = e(k, k) + t18(0, 3)
+         end do
+      end if
+      e = q1 + matmul(q2 + e, e)
+      do k = 1, j
+         a = matmul(e, e)
+         e = a
+      end do
+   end subroutine exponential_4
+
    !> Φ = R Y⁻¹ R Y with Y⁻¹ = Ω⁻¹ Yᵀ Ω (Hamiltonian, G = 0, K even).
    pure subroutine full_from_half(form, y, phi)
       type(system_form_t), intent(in) :: form
       real(wp), intent(in) :: y(:, :)
       real(wp), intent(out) :: phi(:, :)
-      real(wp) :: omega(size(y, 1), size(y, 1)), omega_inverse(size(y, 1), size(y, 1)), r(size(y, 1))
-      integer :: n, m, i
-      n = form%n
-      m = 2*n
-      omega = symplectic_form(form)
-      omega_inverse = 0.0_wp
-      omega_inverse(1:n, n + 1:m) = -form%m_inverse
-      omega_inverse(n + 1:m, 1:n) = form%m_inverse
-      r = [(merge(1.0_wp, -1.0_wp, i <= n), i=1, m)]
-      phi = matmul(omega_inverse, matmul(transpose(y), omega))
-      ! R Y⁻¹ R: row and column signs
-      do i = 1, m
-         phi(i, :) = r(i)*phi(i, :)*r
-      end do
-      phi = matmul(phi, y)
+      call full_from_half_explicit(form%n, form%m, form%m_inverse, y, phi)
    end subroutine full_from_half
+
+   !> `full_from_half` on explicit-shape arrays: with Ω = [[0, M], [−M, 0]] (G = 0),
+   !> R Y⁻¹ R = [[M⁻¹Y₂₂ᵀM, M⁻¹Y₁₂ᵀM], [M⁻¹Y₂₁ᵀM, M⁻¹Y₁₁ᵀM]] block by block, then times Y.
+   pure subroutine full_from_half_explicit(n, mass, mass_inverse, y, phi)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: mass(n, n), mass_inverse(n, n), y(2*n, 2*n)
+      real(wp), intent(out) :: phi(2*n, 2*n)
+      real(wp) :: z(2*n, 2*n), t(n, n), w(n, n)
+      integer :: a, b
+      do b = 0, 1
+         do a = 0, 1
+            ! block (a, b) of R Y⁻¹ R from block (1 − b, 1 − a) of Y, transposed
+            t = transpose(y((1 - b)*n + 1:(2 - b)*n, (1 - a)*n + 1:(2 - a)*n))
+            call multiply(n, mass_inverse, t, w)
+            call multiply(n, w, mass, t)
+            z(a*n + 1:(a + 1)*n, b*n + 1:(b + 1)*n) = t
+         end do
+      end do
+      call multiply(2*n, z, y, phi)
+   end subroutine full_from_half_explicit
 
    !> The sixth-order Magnus exponent of one step from A at the three Gauss nodes.
    pure function magnus6_exponent(a1, a2, a3, h) result(big_omega)
@@ -425,34 +782,13 @@ contains
       end do
    end function identity
 
-   !> e^X by scaling and squaring: X/2^j with ‖X/2^j‖₁ ≤ 0.35, its Taylor polynomial of
-   !> degree 12 by Paterson–Stockmeyer (six products), squared j times.
+   !> e^X by scaling and squaring: X/2^j with ‖X/2^j‖₁ ≤ θ₁₈ = 1.09, the optimised Taylor
+   !> approximant of Bader, Blanes and Casas of degree 12 (four products, ‖X‖₁ ≤ θ₁₂ = 0.30) or
+   !> 18 (five products), squared j times; backward error below the unit round-off.
    pure subroutine system_exponential(x, e)
       real(wp), intent(in) :: x(:, :)     !! X (m × m)
       real(wp), intent(out) :: e(:, :)    !! e^X
-      real(wp), dimension(size(x, 1), size(x, 1)) :: x1, x2, x3, x4, b0, b1, b2, id
-      real(wp) :: norm, c(0:12)
-      integer :: j, k, m
-      m = size(x, 1)
-      norm = maxval(sum(abs(x), dim=1))
-      j = 0
-      if (norm > 0.35_wp) j = max(0, ceiling(log(norm/0.35_wp)/log(2.0_wp)))
-      x1 = x*2.0_wp**(-j)
-      c(0) = 1.0_wp
-      do k = 1, 12
-         c(k) = c(k - 1)/k
-      end do
-      id = identity(m)
-      x2 = matmul(x1, x1)
-      x3 = matmul(x2, x1)
-      x4 = matmul(x2, x2)
-      b0 = c(0)*id + c(1)*x1 + c(2)*x2 + c(3)*x3
-      b1 = c(4)*id + c(5)*x1 + c(6)*x2 + c(7)*x3
-      b2 = c(8)*id + c(9)*x1 + c(10)*x2 + c(11)*x3 + c(12)*x4
-      e = b0 + matmul(x4, b1 + matmul(x4, b2))
-      do k = 1, j
-         e = matmul(e, e)
-      end do
+      call exponential_explicit(size(x, 1), x, e)
    end subroutine system_exponential
 
    !> y' = A y for the m × m fundamental matrix, column by column.
