@@ -186,7 +186,7 @@ int hillstab_run_scene(const char *path, int quiet, char *written, size_t length
  * numbers each, row by row; defaults I, 0, 0, 0, I), "cos", "sin" (H blocks of n*n numbers,
  * K_1 first; at least one nonzero) and "period" (a multiple of 2, default 2). Messages start
  * with the function's name and name the argument ("hillstab_system_set: mass: M must be
- * positive definite ..."). Methods: HILLSTAB_METHOD_AUTO, _MAGNUS4, _MAGNUS6 or _RK;
+ * positive definite ..."). Methods: HILLSTAB_METHOD_AUTO, _MAGNUS4, _MAGNUS6, _RK or _GSL;
  * tolerance in (1e-15, 1). A monodromy no mesh brings to the tolerance fails the call
  * (HILLSTAB_ERR_INTEGRATION); *status is 0, or 1 when round-off limited (the best value). */
 typedef struct hillstab_system hillstab_system;

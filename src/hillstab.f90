@@ -111,7 +111,8 @@
 !>   `hillstab_system_auto` = [[hillstab_integrate_system:system_auto]],
 !>   `hillstab_system_magnus4` = [[hillstab_integrate_system:system_magnus4]],
 !>   `hillstab_system_magnus6` = [[hillstab_integrate_system:system_magnus6]],
-!>   `hillstab_system_rk` = [[hillstab_integrate_system:system_rk]]
+!>   `hillstab_system_rk` = [[hillstab_integrate_system:system_rk]],
+!>   `hillstab_system_gsl` = [[hillstab_integrate_system:system_gsl]]
 !> - [[hillstab_integrate_rk]]: [[hillstab_integrate_rk_stages:rk_system_t]],
 !>   [[hillstab_integrate_rk:rk_options_t]], [[hillstab_integrate_rk_stages:rk_step_t]],
 !>   [[hillstab_integrate_rk:rk_integrate]], [[hillstab_integrate_rk:rk_dense_value]],
@@ -230,7 +231,8 @@ module hillstab
    use hillstab_integrate_monodromy_gsl, only: trace_gsl, monodromy_gsl
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
       hillstab_system_auto => system_auto, hillstab_system_magnus4 => system_magnus4, &
-      hillstab_system_magnus6 => system_magnus6, hillstab_system_rk => system_rk
+      hillstab_system_magnus6 => system_magnus6, hillstab_system_rk => system_rk, &
+      hillstab_system_gsl => system_gsl
    use hillstab_integrate_rk, only: rk_system_t, rk_options_t, rk_step_t, rk_integrate, rk_dense_value, &
       hillstab_rk_dopri5 => rk_dopri5, hillstab_rk_dop853 => rk_dop853, hillstab_rk_pd87 => rk_pd87, &
       hillstab_rk_vern98 => rk_vern98, rk_method_name

@@ -43,7 +43,7 @@ _capi._declare("hillstab_system_floquet", ctypes.c_int, _system_p, ctypes.c_doub
                _c_int_p, _c_int_p, _c_double_p, _c_double_p, _c_double_p, _c_double_p, _c_int_p)
 
 #: the methods of systems (codes HILLSTAB_METHOD_*)
-SYSTEM_METHODS = {"auto": 0, "magnus4": 3, "magnus6": 4, "rk": 5}
+SYSTEM_METHODS = {"auto": 0, "magnus4": 3, "magnus6": 4, "rk": 5, "gsl": 6}
 #: HILLSTAB_SYSTEM_VERDICT_*
 VERDICT_UNSTABLE, VERDICT_STABLE, VERDICT_MARGINAL = 0, 1, -1
 #: HILLSTAB_SYSTEM_KIND_*, and their names

@@ -68,7 +68,7 @@ def test_monodromy_methods_agree():
     pair = hillstab.System(mass=np.diag([1.0, 0.64]), b=[[1.1, -0.1], [-0.1, 0.9]], cos=-np.diag([1.0, 0.8]),
                            gyroscopic=[[0.0, 0.3], [-0.3, 0.0]])
     reference, _, _ = pair.monodromy(0.9, 0.25, method="rk", tolerance=1e-11)
-    for method in ("auto", "magnus4", "magnus6"):
+    for method in ("auto", "magnus4", "magnus6", "gsl"):
         phi, estimate, status = pair.monodromy(0.9, 0.25, method=method, tolerance=1e-10)
         assert phi.shape == (4, 4) and status == 0
         assert np.abs(phi - reference).max() <= 1e-8 * max(1.0, np.abs(reference).max())

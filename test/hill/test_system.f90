@@ -94,7 +94,7 @@ contains
       real(wp) :: alphas(3) = [0.7_wp, 2.5_wp, 6.0_wp], betas(3) = [-1.0_wp, 2.3_wp, 9.0_wp], eps(2) = [0.0_wp, 0.4_wp]
       real(wp) :: tols(2) = [1.0e-8_wp, 1.0e-10_wp], s, expected
       integer :: model, i, k, t, method
-      integer :: methods(3) = [system_auto, system_magnus4, system_rk]
+      integer :: methods(4) = [system_auto, system_magnus4, system_rk, system_gsl]
       call fourier%set_values("cos", [1.0_wp, 0.3_wp], error)
       call fourier%set_values("sin", [0.0_wp, 0.4_wp], error)
       do model = 1, 4
@@ -113,7 +113,7 @@ contains
                call monodromy_trace(one%model, hill_point_t(alphas(i), betas(i), eps(k)), &
                                     method_t(kind=method_magnus6, tolerance=1.0e-13_wp), tr, error)
                expected = tr%value*exp(-0.5_wp*eps(k)*one%model%period())
-               do method = 1, 3
+               do method = 1, 4
                   do t = 1, 2
                      nodes = system_nodes_t()
                      call system_monodromy(one, form, alphas(i), betas(i), system_method_t(methods(method), tols(t)), &
@@ -231,6 +231,8 @@ contains
       call against_reference(ctx, pendula_pair(0.8_wp, 0.1_wp), points, 0.5_wp, [system_auto], 1.0e-10_wp, n_checked)
       call against_reference(ctx, pendula_pair(0.7_wp, 0.3_wp, gyroscopic=0.6_wp, sine=0.5_wp), points, 0.0_wp, &
                              [system_auto, system_rk], 1.0e-9_wp, n_checked)
+      call against_reference(ctx, pendula_pair(0.8_wp, 0.1_wp, damping=0.2_wp), points(:, 1:6), 0.0_wp, [system_gsl], &
+                             1.0e-9_wp, n_checked)
       call check(ctx, n_checked >= 80, "at least 80 two-dof comparisons")
    end subroutine reference_two_dof
 

@@ -22,6 +22,8 @@
 !> - `system_rk`: Dormand–Prince 8(5,3) (hillstab_integrate_rk) on the 4n² entries of the
 !>   fundamental matrix, local tolerance tolerance/10, then /320, the difference of the two
 !>   the estimate (the reference the tests and benchmarks compare with).
+!> - `system_gsl`: GSL's rk8pd on the fundamental matrix over the whole period
+!>   (hillstab_integrate_system_gsl), the reference of another library.
 !>
 !> Where half a period is enough (`system_form_t%half`: Hamiltonian, G = 0, K even) the
 !> methods integrate Y over [0, P/2] and return Φ = R Y⁻¹ R Y, Y⁻¹ = Ω⁻¹YᵀΩ by the
@@ -48,11 +50,12 @@ module hillstab_integrate_system
    use hillstab_hill_system, only: hill_system_t, system_form_t
    use hillstab_hill_system_floquet, only: symplectic_form
    use hillstab_integrate_rk, only: rk_system_t, rk_options_t, rk_integrate, rk_dop853
+   use hillstab_integrate_system_gsl, only: system_monodromy_gsl, gsl_system_result_t
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
    public :: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy
-   public :: system_auto, system_magnus4, system_magnus6, system_rk, system_method_name, system_method_from_name
+   public :: system_auto, system_magnus4, system_magnus6, system_rk, system_gsl, system_method_name, system_method_from_name
    public :: system_method_names_text, magnus_ladder, system_exponential
 
    !> Method auto: `system_magnus6` with the nodes shared along a chart row.
@@ -63,6 +66,9 @@ module hillstab_integrate_system
    integer, parameter :: system_magnus6 = 4
    !> Dormand–Prince 8(5,3) on the fundamental matrix, two tolerances.
    integer, parameter :: system_rk = 5
+   !> GSL's rk8pd on the fundamental matrix over the whole period, two epsilons
+   !> (hillstab_integrate_system_gsl): the reference of another library.
+   integer, parameter :: system_gsl = 6
 
    !> The step counts of the Magnus ladder, 4, 5, 6, 7 times powers of two (ratios at most
    !> 1.25); every even count from 4 on has its half among the earlier ones, and only those
@@ -166,6 +172,7 @@ contains
       case (system_magnus4); name = "magnus4"
       case (system_magnus6); name = "magnus6"
       case (system_rk); name = "rk"
+      case (system_gsl); name = "gsl"
       case default; name = "unknown"
       end select
    end function system_method_name
@@ -178,6 +185,7 @@ contains
       case ("magnus4"); kind = system_magnus4
       case ("magnus6"); kind = system_magnus6
       case ("rk"); kind = system_rk
+      case ("gsl"); kind = system_gsl
       case default; kind = -1
       end select
    end function system_method_from_name
@@ -185,7 +193,7 @@ contains
    !> The methods systems take, for messages.
    pure function system_method_names_text() result(text)
       character(len=:), allocatable :: text
-      text = "auto, magnus4, magnus6, rk"
+      text = "auto, magnus4, magnus6, rk, gsl"
    end function system_method_names_text
 
    !> The monodromy of the system at (α, β) by `method`.
@@ -199,9 +207,16 @@ contains
       !> err_integration when no mesh of the ladder meets the tolerance (status_failed);
       !> unallocated otherwise
       type(error_t), allocatable, intent(out) :: error
+      type(gsl_system_result_t) :: reference
       select case (method%kind)
       case (system_rk)
          call monodromy_rk(system, form, alpha, beta, method%tolerance, result, error)
+      case (system_gsl)
+         call system_monodromy_gsl(system, form, alpha, beta, method%tolerance, reference, error)
+         result%phi = reference%phi
+         result%log_scale = 0.0_wp
+         result%error_estimate = reference%error_estimate
+         result%status = reference%status
       case (system_magnus4)
          call monodromy_magnus(system, form, alpha, beta, method%tolerance, 4, nodes, result, error)
       case default

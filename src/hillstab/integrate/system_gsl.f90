@@ -1,7 +1,7 @@
 !> The monodromy of a system of Hill equations by GSL's odeiv2 driver with the Prince–Dormand
 !> 8(7) pair rk8pd on the 4n² entries of the fundamental matrix (method `gsl` of a system: the
 !> reference of another library, beside hillstab's own rk). Two passes, epsabs = epsrel =
-!> tolerance/10 and then /320, over the window (half the period where `system_form_t%half`);
+!> tolerance/10 and then /320, over the whole period (no symmetry used, unlike hillstab's own methods);
 !> the second value is returned, the difference of the two its error estimate (divided by 32,
 !> GSL's global error following its epsilon about linearly), status_roundoff when that
 !> estimate misses the tolerance. The right-hand side receives the system through GSL's
@@ -18,7 +18,6 @@ module hillstab_integrate_system_gsl
    use hillstab_core_error, only: error_t, set_error, err_integration
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_hill_system, only: hill_system_t, system_form_t
-   use hillstab_hill_system_floquet, only: symplectic_form
    use hillstab_ffi_gsl, only: gsl_odeiv2_system, gsl_odeiv2_step_rk8pd, gsl_set_error_handler_off, &
       gsl_odeiv2_driver_alloc_y_new, gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_odeiv2_driver_set_nmax, &
       gsl_success, gsl_ebadfunc
@@ -92,8 +91,8 @@ contains
       allocate (context%p(form%n, form%n), context%b(form%n, form%n))
       previous = gsl_set_error_handler_off()
       sys = gsl_odeiv2_system(c_funloc(fundamental_rhs), c_null_funptr, int(m*m, c_size_t), c_loc(context))
+      ! the whole period, whatever the symmetry: an independent reference
       length = form%period
-      if (form%half) length = 0.5_wp*form%period
       eps = max(0.1_wp*tolerance, 1.0e-14_wp)
       allocate (result%phi(m, m), second(m, m))
       result%phi = 0.0_wp
@@ -114,11 +113,7 @@ contains
             call set_error(error, err_integration, "gsl: rk8pd failed (GSL status "//trim(int_text(status))//")")
             return
          end if
-         if (form%half) then
-            call full_from_half(form, reshape(y, [m, m]), second)
-         else
-            second = reshape(y, [m, m])
-         end if
+         second = reshape(y, [m, m])
          if (pass == 1) first = second
          eps = max(eps/320.0_wp, 1.0e-15_wp)
       end do
@@ -127,27 +122,6 @@ contains
       result%error_estimate = max(maxval(abs(second - first))/scale/32.0_wp, epsilon(1.0_wp))
       result%status = merge(status_ok, status_roundoff, result%error_estimate <= tolerance)
    end subroutine system_monodromy_gsl
-
-   !> Φ = R Y⁻¹ R Y with Y⁻¹ = Ω⁻¹ Yᵀ Ω (Hamiltonian, G = 0, K even).
-   pure subroutine full_from_half(form, y, phi)
-      type(system_form_t), intent(in) :: form
-      real(wp), intent(in) :: y(:, :)
-      real(wp), intent(out) :: phi(:, :)
-      real(wp) :: omega(size(y, 1), size(y, 1)), omega_inverse(size(y, 1), size(y, 1)), r(size(y, 1))
-      integer :: n, m, i
-      n = form%n
-      m = 2*n
-      omega = symplectic_form(form)
-      omega_inverse = 0.0_wp
-      omega_inverse(1:n, n + 1:m) = -form%m_inverse
-      omega_inverse(n + 1:m, 1:n) = form%m_inverse
-      r = [(merge(1.0_wp, -1.0_wp, i <= n), i=1, m)]
-      phi = matmul(omega_inverse, matmul(transpose(y), omega))
-      do i = 1, m
-         phi(i, :) = r(i)*phi(i, :)*r
-      end do
-      phi = matmul(phi, y)
-   end subroutine full_from_half
 
    pure function int_text(i) result(text)
       integer(c_int), intent(in) :: i

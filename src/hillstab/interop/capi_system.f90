@@ -43,7 +43,7 @@ module hillstab_interop_capi_system
    use hillstab_hill_system_matrix, only: matrix_system_t
    use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
-      system_auto, system_magnus4, system_magnus6, system_rk
+      system_auto, system_magnus4, system_magnus6, system_rk, system_gsl
    use hillstab_interop_outcome, only: record_outcome
    use hillstab_interop_capi_models, only: c_text, max_c_text
    implicit none
@@ -267,7 +267,7 @@ contains
       character(len=*), intent(in) :: where            !! the entry point
       type(c_ptr), intent(in) :: system                !! the handle
       real(c_double), intent(in) :: alpha, beta, epsilon, tolerance  !! the point, the tolerance
-      integer(c_int), intent(in) :: method             !! HILLSTAB_METHOD_AUTO, _MAGNUS4, _MAGNUS6 or _RK
+      integer(c_int), intent(in) :: method             !! HILLSTAB_METHOD_AUTO, _MAGNUS4, _MAGNUS6, _RK or _GSL
       type(system_handle_t), pointer, intent(out) :: handle  !! the handle's system
       type(system_form_t), intent(out) :: form         !! the system prepared at ε
       type(system_monodromy_t), intent(out) :: result  !! the monodromy
@@ -276,9 +276,9 @@ contains
       if (allocated(error)) return
       call handle_system(where, system, handle, error)
       if (allocated(error)) return
-      if (.not. any(method == [system_auto, system_magnus4, system_magnus6, system_rk])) then
+      if (.not. any(method == [system_auto, system_magnus4, system_magnus6, system_rk, system_gsl])) then
          call set_error(error, err_invalid_parameter, "method: unknown system method code "// &
-            integer_text(int(method))//" (HILLSTAB_METHOD_AUTO 0, _MAGNUS4 3, _MAGNUS6 4 or _RK 5)")
+            integer_text(int(method))//" (HILLSTAB_METHOD_AUTO 0, _MAGNUS4 3, _MAGNUS6 4, _RK 5 or _GSL 6)")
       else if (.not. in_range(tolerance, min_system_tolerance, 1.0_wp, .false.)) then
          call set_error(error, err_invalid_parameter, "tolerance: must lie between 1e-15 and 1 (exclusive), "// &
             "got "//real_text(real(tolerance, wp)))
@@ -325,7 +325,7 @@ contains
       type(c_ptr), value, intent(in) :: system  !! the handle
       !> the point (alpha, beta), the damping epsilon >= 0 and the target error of Phi
       real(c_double), value, intent(in) :: alpha, beta, epsilon, tolerance
-      integer(c_int), value, intent(in) :: method  !! HILLSTAB_METHOD_AUTO, _MAGNUS4, _MAGNUS6 or _RK
+      integer(c_int), value, intent(in) :: method  !! HILLSTAB_METHOD_AUTO, _MAGNUS4, _MAGNUS6, _RK or _GSL
       type(c_ptr), value, intent(in) :: phi             !! receives Phi~ (4 n² doubles, row-major)
       type(c_ptr), value, intent(in) :: log_scale       !! receives s (a `double *`)
       type(c_ptr), value, intent(in) :: error_estimate  !! receives the error estimate (a `double *`)
@@ -375,7 +375,7 @@ contains
       type(c_ptr), value, intent(in) :: system  !! the handle
       !> the point (alpha, beta), the damping epsilon >= 0 and the target error of Phi
       real(c_double), value, intent(in) :: alpha, beta, epsilon, tolerance
-      integer(c_int), value, intent(in) :: method  !! HILLSTAB_METHOD_AUTO, _MAGNUS4, _MAGNUS6 or _RK
+      integer(c_int), value, intent(in) :: method  !! HILLSTAB_METHOD_AUTO, _MAGNUS4, _MAGNUS6, _RK or _GSL
       type(c_ptr), value, intent(in) :: multipliers_re  !! receives the real parts (2n doubles)
       type(c_ptr), value, intent(in) :: multipliers_im  !! receives the imaginary parts (2n doubles)
       type(c_ptr), value, intent(in) :: log_scale       !! receives the scale of the multipliers (0 or s)
