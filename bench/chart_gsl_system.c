@@ -5,11 +5,12 @@
  *   cc -O2 bench/chart_gsl_system.c -o build/chart_gsl_system -lgsl -lgslcblas -lm
  *   build/chart_gsl_system N_ALPHA N_BETA TOL [OUT]
  *
- * The system of data/scenes/system_pendula.nml: two pendula of lengths l1 = 1, l2 = 0.8 (in
+ * The pendula pair of the system tests (test/hill/test_system.f90, pendula_pair(0.8, 0.1)): two
+ * pendula of lengths l1 = 1, l2 = 0.8 (in
  * units of l1) joined by a spring, their support shaken vertically,
  *   M x'' + (beta B - alpha cos(pi tau) D) x = 0,
  *   M = diag(1, 0.64), D = diag(1, 0.8), B = D + c [[1, -1], [-1, 1]], c = 0.1,
- * over alpha in [0, 2], beta in [0, 12] (the grid of that scene, alpha_i = lo + (hi - lo)
+ * over alpha in [0, 2], beta in [0, 12] (the grid of hillstab_bench_system, alpha_i = lo + (hi - lo)
  * (i - 1)/(n - 1), the last value exactly hi). At each point the 4 x 4 fundamental matrix
  * (16 equations, y = (x, x') for each column) from tau = 0 to the period 2 by
  * gsl_odeiv2_driver_apply with rk8pd, epsabs = epsrel = TOL, one driver reset for each point;
