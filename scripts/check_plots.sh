@@ -28,6 +28,7 @@ area=$(program hillstab_area)
 bench=$(program hillstab_bench)
 bench_series=$(program hillstab_bench_series)
 bench_lyapunov=$(program hillstab_bench_lyapunov)
+bench_system=$(program hillstab_bench_system)
 chaos_reference=$(program hillstab_chaos_reference)
 onset_law=$(program --example onset_law)
 
@@ -92,6 +93,7 @@ OMP_NUM_THREADS=2 "$hillstab" --quiet exact.nml paper.nml points.nml coefficient
 "$area" --quick >>made.log 2>&1
 "$bench" --quick --out quick >>made.log 2>&1
 "$bench_series" --quick --out quick >>made.log 2>&1
+"$bench_system" --n 4 --cost-n 2 --rounds 1 --no-gsl >>made.log 2>&1
 cc -O2 "$root/bench/chart_gsl.c" -o chart_gsl -lgsl -lgslcblas -lm
 cc -O2 "$root/bench/lyapunov_gsl.c" -o lyapunov_gsl -lgsl -lgslcblas -lm
 # the chart benchmark reads its reference points from the repository (data/reference/)
@@ -111,6 +113,7 @@ parameters() {
       bench_chart_gsl) echo "file='quick_chart_gsl.dat'" ;;
       bench_lyapunov) echo "file='out/bench_lyapunov.dat'; map='out/bench_lyapunov_map.dat'" ;;
       bench_series) echo "file='quick_series.dat'" ;;
+      bench_system) echo "file='build/bench/system_cost.dat'" ;;
       boundaries) echo "file='other_exact_chart.dat'; curves='other_exact_boundaries.dat'" ;;
       damped) echo "file='other_damped_chart.dat'" ;;
       default) echo "file='other_exact_chart.dat'; paper='other_paper_chart.dat'; points='other_points.dat'" ;;
