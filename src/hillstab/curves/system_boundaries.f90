@@ -33,11 +33,11 @@ module hillstab_curves_system_boundaries
    private
    public :: system_boundary_t, system_boundaries, system_hill_betas, route_hill, route_discriminant, route_verdict
 
-   !> Route: Hill's method (a simple resonance).
+   !> Route, Hill's method (a simple resonance).
    integer, parameter :: route_hill = 1
-   !> Route: a root of Broucke's discriminant (combination, n = 2).
+   !> Route, a root of Broucke's discriminant (combination, n = 2).
    integer, parameter :: route_discriminant = 2
-   !> Route: bisection on the verdict (combination, any n).
+   !> Route, bisection on the verdict (combination, any n).
    integer, parameter :: route_verdict = 3
 
    !> One point of a transition curve.

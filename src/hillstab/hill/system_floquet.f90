@@ -41,22 +41,22 @@ module hillstab_hill_system_floquet
    public :: kind_stable, kind_plus_one, kind_minus_one, kind_combination, kind_damped, kind_name
    public :: symplectic_form, matrix_determinant, broucke_multipliers
 
-   !> Verdict: every multiplier on the unit circle (Hamiltonian) or inside it (damped), decided.
+   !> Verdict, stable: every multiplier on the unit circle (Hamiltonian) or inside it (damped), decided.
    integer, parameter :: verdict_stable = 1
-   !> Verdict: a multiplier outside the unit circle, decided.
+   !> Verdict, unstable: a multiplier outside the unit circle, decided.
    integer, parameter :: verdict_unstable = 0
-   !> Verdict: the error bound of Φ does not decide (on a boundary, at a collision).
+   !> Verdict, marginal: the error bound of Φ does not decide (on a boundary, at a collision).
    integer, parameter :: verdict_marginal = -1
 
-   !> Kind: stable, the multipliers on the unit circle.
+   !> Kind, stable, the multipliers on the unit circle.
    integer, parameter :: kind_stable = 0
-   !> Kind: a real pair leaves the circle at +1 (λ > 0; a parametric resonance of even order).
+   !> Kind, a real pair leaves the circle at +1 (λ > 0; a parametric resonance of even order).
    integer, parameter :: kind_plus_one = 1
-   !> Kind: a real pair leaves the circle at −1 (λ < 0; a parametric resonance of odd order).
+   !> Kind, a real pair leaves the circle at −1 (λ < 0; a parametric resonance of odd order).
    integer, parameter :: kind_minus_one = 2
-   !> Kind: a complex quadruplet leaves the circle (a Krein collision: combination resonance).
+   !> Kind, a complex quadruplet leaves the circle (a Krein collision: combination resonance).
    integer, parameter :: kind_combination = 3
-   !> Kind: damped and asymptotically stable, every |λ| < 1.
+   !> Kind, damped and asymptotically stable, every |λ| < 1.
    integer, parameter :: kind_damped = 4
 
    !> The Floquet analysis of one monodromy.
