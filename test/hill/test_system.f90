@@ -38,6 +38,7 @@ contains
          new_unittest("verdicts_with_clear_margin", verdicts_with_clear_margin), &
          new_unittest("combination_tongue_first_order", combination_tongue_first_order), &
          new_unittest("structure_defects", structure_defects), &
+         new_unittest("scaled_growth_exponent", scaled_growth_exponent), &
          new_unittest("bad_matrices_named", bad_matrices_named)])
    end function collect_system
 
@@ -165,7 +166,7 @@ contains
          call system_floquet(r%phi, form, r%error_estimate*max(1.0_wp, maxval(abs(r%phi))), f, r%log_scale)
          ! every expected multiplier is among the computed ones
          do k = 1, 6
-            call check(ctx, minval(abs(f%multipliers*exp(r%log_scale) - expected(k))), 0.0_wp, &
+            call check(ctx, minval(abs(f%multipliers*exp(f%log_scale) - expected(k))), 0.0_wp, &
                        abs=1.0e-8_wp*max(1.0_wp, abs(expected(k))), message="decoupled multiplier")
          end do
       end do
@@ -435,6 +436,36 @@ contains
       call check(ctx, f%defect, 0.0_wp, abs=1.0e-9_wp, message="Liouville defect")
       call check(ctx, f%verdict == verdict_stable .and. f%kind == kind_damped, "damped and asymptotically stable")
    end subroutine structure_defects
+
+   !> A growth beyond 1e100 over the window keeps Φ scaled (Φ = e^s Φ̃): at α = 0 and β = −3e4
+   !> the pendula pair's largest exponent is √(|β| μ_max), μ_max the largest eigenvalue of M⁻¹B,
+   !> and the verdict unstable at +1 (real multipliers), whatever the scale.
+   subroutine scaled_growth_exponent(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(matrix_system_t) :: pair
+      type(system_form_t) :: form
+      type(system_nodes_t) :: nodes
+      type(system_monodromy_t) :: r
+      type(system_floquet_t) :: f
+      type(error_t), allocatable :: error
+      real(wp) :: b11, b12, b22, mu_max, beta
+      pair = pendula_pair(0.8_wp, 0.1_wp)
+      call prepare_system(pair, 0.0_wp, form, error)
+      ! M^{-1/2} B M^{-1/2} for M = diag(1, 0.64), B = [[1.1, -0.1], [-0.1, 0.9]]
+      b11 = 1.1_wp
+      b12 = -0.1_wp/0.8_wp
+      b22 = 0.9_wp/0.64_wp
+      mu_max = 0.5_wp*(b11 + b22) + sqrt(0.25_wp*(b11 - b22)**2 + b12**2)
+      beta = -3.0e4_wp
+      call system_monodromy(pair, form, 0.0_wp, beta, system_method_t(system_auto, 1.0e-10_wp), nodes, r, error)
+      call check(ctx, .not. allocated(error), "computed")
+      if (allocated(error)) return
+      call system_floquet(r%phi, form, r%error_estimate*max(1.0_wp, maxval(abs(r%phi))), f, r%log_scale)
+      call check(ctx, f%log_scale > 0.0_wp, "kept scaled")
+      call check(ctx, f%mu, sqrt(-beta*mu_max), rel=1.0e-12_wp, message="mu = sqrt(|beta| mu_max)")
+      call check(ctx, f%verdict == verdict_unstable .and. f%kind == kind_plus_one, "unstable at +1")
+      call check(ctx, f%overflow, "trace clamped with the overflow flag")
+   end subroutine scaled_growth_exponent
 
    !> The checks of a matrix system name the variable: M not symmetric, not positive definite,
    !> G not skew, C not symmetric, a list of the wrong length, n above the limit, a NaN.

@@ -317,7 +317,7 @@ contains
          distance_from = huge(1.0_wp)
          if (allocated(cause)) return
          call system_floquet(r%phi, form, r%error_estimate*max(1.0_wp, maxval(abs(r%phi))), f, r%log_scale)
-         distance_from = minval(abs(f%multipliers*exp(r%log_scale) - target))
+         distance_from = minval(abs(f%multipliers*exp(f%log_scale) - target))
       end function distance_from
 
       !> Negative inside a combination tongue: D (n = 2), else −1 where the verdict's kind is
@@ -331,7 +331,7 @@ contains
          combination_function = 1.0_wp
          if (allocated(cause)) return
          call system_floquet(r%phi, form, r%error_estimate*max(1.0_wp, maxval(abs(r%phi))), f, r%log_scale)
-         if (form%n == 2 .and. r%log_scale == 0.0_wp) then
+         if (form%n == 2 .and. f%log_scale == 0.0_wp) then
             ! D, less what round-off and the error of Φ leave undecided (a touch of D = 0,
             ! as at α = 0, is no tongue)
             combination_function = f%discriminant + (64.0_wp*epsilon(1.0_wp) + 8.0_wp*r%error_estimate)* &

@@ -24,7 +24,8 @@
 !> (`kind_combination`, a Krein collision: a combination resonance ω_i + ω_j ≈ kΩ).
 !>
 !> Φ may be given scaled, Φ = e^s Φ̃ (`log_scale` s), so that strongly unstable points do
-!> not overflow: the multipliers' moduli and exponents come from Φ̃ and s.
+!> not overflow: the multipliers' moduli and exponents come from Φ̃ and s (entries of Φ̃ beyond
+!> 1e100 are scaled once more here, `system_floquet_t%log_scale` the total).
 !>
 !>```fortran
 !> type(system_floquet_t) :: f
@@ -64,7 +65,9 @@ module hillstab_hill_system_floquet
       integer :: n = 0                          !! degrees of freedom
       !> the 2n multipliers of Φ̃ (times e^s: Φ's), by decreasing modulus
       complex(wp), allocatable :: multipliers(:)
-      real(wp) :: log_scale = 0.0_wp            !! s of Φ = e^s Φ̃
+      !> s of the multipliers: Φ's are e^s times `multipliers` (the scale given, or more where
+      !> Φ̃'s entries exceeded 1e100 and were scaled here)
+      real(wp) :: log_scale = 0.0_wp
       real(wp), allocatable :: exponents(:)     !! ln|λ_i|/P of the n largest multipliers
       real(wp) :: trace = 0.0_wp                !! a₁ = tr Φ (e^s tr Φ̃; huge when it overflows)
       real(wp) :: a2 = 0.0_wp                   !! a₂ = ((tr Φ)² − tr Φ²)/2
@@ -169,7 +172,8 @@ contains
       real(wp), intent(in) :: phi_error             !! bound of the error of Φ̃'s entries
       type(system_floquet_t), intent(out) :: result !! the analysis
       real(wp), intent(in), optional :: log_scale   !! s (0 when absent)
-      integer :: n, m, i
+      integer :: n, m, i, k
+      real(wp) :: work(size(phi, 1), size(phi, 2)), big
       real(wp) :: s, scale, tr, tr2, e, growth
       real(wp), allocatable :: omega(:, :), w(:, :)
       n = form%n
@@ -179,17 +183,28 @@ contains
       if (present(log_scale)) s = log_scale
       result%log_scale = s
       e = max(phi_error, 0.0_wp)
-      tr = sum([(phi(i, i), i=1, m)])
-      tr2 = sum(phi*transpose(phi))
+      ! entries beyond 1e100 (a growth the method kept unscaled) are scaled here, so that the
+      ! invariants and the eigenvalues stay finite: Φ̃ / 2^k, s + k ln 2
+      work = phi
+      big = maxval(abs(work))
+      if (big > 1.0e100_wp) then
+         k = exponent(big)
+         work = work*2.0_wp**(-k)
+         e = e*2.0_wp**(-k)
+         s = s + k*log(2.0_wp)
+         result%log_scale = s
+      end if
+      tr = sum([(work(i, i), i=1, m)])
+      tr2 = sum(work*transpose(work))
       ! the invariants of Φ itself: a₁ scales with e^s, a₂ with e^{2s}
       call scaled_value(tr, s, result%trace, result%overflow)
       call scaled_value(0.5_wp*(tr*tr - tr2), 2.0_wp*s, result%a2, result%overflow)
       allocate (result%multipliers(m), result%exponents(n))
-      scale = max(1.0_wp, maxval(abs(phi)))
+      scale = max(1.0_wp, maxval(abs(work)))
       ! the defect of the structure Φ keeps
       if (form%hamiltonian) then
          omega = symplectic_form(form)
-         w = matmul(transpose(phi), matmul(omega, phi))*exp(2.0_wp*min(s, 300.0_wp)) - omega
+         w = matmul(transpose(work), matmul(omega, work))*exp(2.0_wp*min(s, 300.0_wp)) - omega
          if (s > 300.0_wp) then
             result%defect = -1.0_wp
          else
@@ -198,17 +213,18 @@ contains
       else
          growth = m*s - form%period*form%trace_d
          if (abs(growth) < 600.0_wp) then
-            result%defect = abs(matrix_determinant(phi)*exp(growth) - 1.0_wp)
+            result%defect = abs(matrix_determinant(work)*exp(growth) - 1.0_wp)
          else
             result%defect = -1.0_wp
          end if
       end if
-      if (form%hamiltonian .and. n == 1) then
-         call scalar_verdict(phi, e, s, form%period, result)
-      else if (form%hamiltonian .and. n == 2) then
-         call broucke_verdict(phi, e, scale, s, form%period, result)
+      ! a scaled Φ̃ is not symplectic (its pairs multiply to e^{−2s}): the eigenvalues then
+      if (form%hamiltonian .and. n == 1 .and. s == 0.0_wp) then
+         call scalar_verdict(work, e, s, form%period, result)
+      else if (form%hamiltonian .and. n == 2 .and. s == 0.0_wp) then
+         call broucke_verdict(work, e, scale, s, form%period, result)
       else
-         call eigen_verdict(phi, e, s, form, result)
+         call eigen_verdict(work, e, s, form, result)
       end if
    end subroutine system_floquet
 
@@ -236,18 +252,17 @@ contains
       complex(wp) :: lambda(4), z(2)
       tr = phi(1, 1) + phi(2, 2)
       delta = 2.0_wp*e + 4.0_wp*epsilon(1.0_wp)*max(1.0_wp, abs(tr))
-      ! multipliers of λ² − S λ + det: with det = 1, λ = (S ± √(S² − 4))/2
-      call broucke_multipliers(0.0_wp, 2.0_wp, z, lambda)
+      ! multipliers of λ² − S λ + 1 (det Φ = 1): λ = (S ± √(S² − 4))/2, the larger first
       z(1) = tr
       lambda(1) = 0.5_wp*(z(1) + sqrt(z(1)*z(1) - 4.0_wp))
       if (tr < 0.0_wp) lambda(1) = 0.5_wp*(z(1) - sqrt(z(1)*z(1) - 4.0_wp))
       lambda(2) = 1.0_wp/lambda(1)
       r%multipliers = lambda(1:2)
       call finish_from_multipliers(r, s, period)
-      if (s == 0.0_wp .and. abs(tr) < 2.0_wp - delta) then
+      if (abs(tr) < 2.0_wp - delta) then
          r%verdict = verdict_stable
          r%kind = kind_stable
-      else if (s > 0.0_wp .or. abs(tr) > 2.0_wp + delta) then
+      else if (abs(tr) > 2.0_wp + delta) then
          r%verdict = verdict_unstable
          r%kind = merge(kind_plus_one, kind_minus_one, tr > 0.0_wp)
       else
@@ -275,12 +290,6 @@ contains
       call broucke_multipliers(a1, a2, z, lambda)
       r%multipliers = lambda
       call finish_from_multipliers(r, s, period)
-      if (s > 0.0_wp) then
-         ! scaled: far outside the circle
-         r%verdict = verdict_unstable
-         r%kind = merge(kind_combination, merge(kind_plus_one, kind_minus_one, real(z(1)) > 0.0_wp), d < 0.0_wp)
-         return
-      end if
       if (d < -dd) then
          r%verdict = verdict_unstable
          r%kind = kind_combination

@@ -415,7 +415,7 @@ contains
                              result%log_scale)
          n = form%n
          ! Φ's own multipliers where they stay finite, else Φ̃'s with the scale
-         s = result%log_scale
+         s = f%log_scale
          largest = maxval(abs(f%multipliers))
          if (s /= 0.0_wp .and. s < 690.0_wp) then
             if (largest*exp(s) <= 1.0e300_wp) then
