@@ -162,18 +162,14 @@ contains
    contains
 
       real(wp) function modal_coupling()
-         real(wp) :: u(2, 2), a, b, c
+         real(wp) :: u(2, 2)
          integer :: i
-         ! eigenvectors of [[2, -2], [-2, 6]]
-         a = 2.0_wp
-         b = -2.0_wp
-         c = 6.0_wp
+         ! eigenvectors of [[2, -2], [-2, 6]]: (−2, μ − 2), unit
          do i = 1, 2
-            u(:, i) = [b, mu(i) - a]
+            u(:, i) = [-2.0_wp, mu(i) - 2.0_wp]
             u(:, i) = u(:, i)/norm2(u(:, i))
          end do
          modal_coupling = u(1, 1)*u(1, 2) + 2.0_wp*u(2, 1)*u(2, 2)
-         if (c < 0.0_wp) modal_coupling = 0.0_wp
       end function modal_coupling
    end subroutine combination_edges_first_order
 end module test_system_boundaries

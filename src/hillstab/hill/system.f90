@@ -33,7 +33,7 @@ module hillstab_hill_system
    implicit none
    private
    public :: hill_system_t, system_form_t, prepare_system, max_dof, check_system_point, system_equation_text, &
-      system_description, symmetric_defect, cholesky_inverse
+      system_description, symmetric_defect, cholesky_inverse, fundamental_derivative
 
    !> Most degrees of freedom of a system (a 40 × 40 monodromy; the cost grows as n³).
    integer, parameter :: max_dof = 20
@@ -252,6 +252,24 @@ contains
       form%hamiltonian = all(c == 0.0_wp) .and. epsilon == 0.0_wp .and. system%symmetric()
       form%half = form%hamiltonian .and. .not. form%gyroscopic .and. system%even()
    end subroutine prepare_system
+
+   !> Y' = A Y for the fundamental matrix Y (m × m, m = 2n, stored column by column in y):
+   !> A = [[0, I], [L, D]] with L = −M⁻¹K(τ) given and D of the form; the right-hand side the
+   !> Runge–Kutta methods integrate (hillstab_integrate_system's rk, hillstab_integrate_system_gsl).
+   pure subroutine fundamental_derivative(form, l, y, dydt)
+      type(system_form_t), intent(in) :: form  !! the prepared system (D)
+      real(wp), intent(in) :: l(:, :)          !! L = −M⁻¹K(τ) (n × n)
+      real(wp), intent(in) :: y(:)             !! Y, column by column (m²)
+      real(wp), intent(out) :: dydt(:)         !! A Y, column by column (m²)
+      integer :: n, m, col, o
+      n = form%n
+      m = 2*n
+      do col = 1, m
+         o = (col - 1)*m
+         dydt(o + 1:o + n) = y(o + n + 1:o + m)
+         dydt(o + n + 1:o + m) = matmul(l, y(o + 1:o + n)) + matmul(form%d, y(o + n + 1:o + m))
+      end do
+   end subroutine fundamental_derivative
 
    !> err_invalid_parameter unless α lies in the system's domain and α, β are finite with
    !> magnitudes ≤ 1e15.

@@ -220,9 +220,9 @@ contains
       end if
       ! a scaled Φ̃ is not symplectic (its pairs multiply to e^{−2s}): the eigenvalues then
       if (form%hamiltonian .and. n == 1 .and. s == 0.0_wp) then
-         call scalar_verdict(work, e, s, form%period, result)
+         call scalar_verdict(tr, e, form%period, result)
       else if (form%hamiltonian .and. n == 2 .and. s == 0.0_wp) then
-         call broucke_verdict(work, e, scale, s, form%period, result)
+         call broucke_verdict(tr, 0.5_wp*(tr*tr - tr2), e, scale, form%period, result)
       else
          call eigen_verdict(work, e, s, form, result)
       end if
@@ -245,20 +245,18 @@ contains
    end subroutine scaled_value
 
    !> n = 1: the trace criterion.
-   pure subroutine scalar_verdict(phi, e, s, period, r)
-      real(wp), intent(in) :: phi(:, :), e, s, period
+   pure subroutine scalar_verdict(tr, e, period, r)
+      real(wp), intent(in) :: tr, e, period
       type(system_floquet_t), intent(inout) :: r
-      real(wp) :: tr, delta
-      complex(wp) :: lambda(4), z(2)
-      tr = phi(1, 1) + phi(2, 2)
+      real(wp) :: delta
+      complex(wp) :: lambda(2), z
       delta = 2.0_wp*e + 4.0_wp*epsilon(1.0_wp)*max(1.0_wp, abs(tr))
       ! multipliers of λ² − S λ + 1 (det Φ = 1): λ = (S ± √(S² − 4))/2, the larger first
-      z(1) = tr
-      lambda(1) = 0.5_wp*(z(1) + sqrt(z(1)*z(1) - 4.0_wp))
-      if (tr < 0.0_wp) lambda(1) = 0.5_wp*(z(1) - sqrt(z(1)*z(1) - 4.0_wp))
+      z = tr
+      lambda(1) = 0.5_wp*(z + sign(1.0_wp, tr)*sqrt(z*z - 4.0_wp))
       lambda(2) = 1.0_wp/lambda(1)
-      r%multipliers = lambda(1:2)
-      call finish_from_multipliers(r, s, period)
+      r%multipliers = lambda
+      call finish_from_multipliers(r, 0.0_wp, period)
       if (abs(tr) < 2.0_wp - delta) then
          r%verdict = verdict_stable
          r%kind = kind_stable
@@ -272,14 +270,11 @@ contains
    end subroutine scalar_verdict
 
    !> n = 2 Hamiltonian: Broucke's z₁, z₂ with error bounds from those of a₁ and a₂.
-   pure subroutine broucke_verdict(phi, e, scale, s, period, r)
-      real(wp), intent(in) :: phi(:, :), e, scale, s, period
+   pure subroutine broucke_verdict(a1, a2, e, scale, period, r)
+      real(wp), intent(in) :: a1, a2, e, scale, period
       type(system_floquet_t), intent(inout) :: r
-      real(wp) :: a1, a2, d, d1, d2, dd, dz, round
+      real(wp) :: d, d1, d2, dd, dz, round
       complex(wp) :: z(2), lambda(4)
-      integer :: i
-      a1 = sum([(phi(i, i), i=1, 4)])
-      a2 = 0.5_wp*(a1*a1 - sum(phi*transpose(phi)))
       round = 32.0_wp*epsilon(1.0_wp)
       ! |Δa₁| ≤ 4 e; a₂ is the sum of the six principal 2 × 2 minors: |Δa₂| ≤ 24 ‖Φ‖ e
       d1 = 4.0_wp*e + round*scale
@@ -289,7 +284,7 @@ contains
       r%discriminant = d
       call broucke_multipliers(a1, a2, z, lambda)
       r%multipliers = lambda
-      call finish_from_multipliers(r, s, period)
+      call finish_from_multipliers(r, 0.0_wp, period)
       if (d < -dd) then
          r%verdict = verdict_unstable
          r%kind = kind_combination
@@ -403,12 +398,8 @@ contains
       if (on_circle .and. apart) then
          r%verdict = verdict_stable
          r%kind = kind_stable
-      else if (.not. on_circle) then
-         ! off the circle by more than the bound allows, yet not decided outside: inside, its
-         ! reciprocal partner outside (undecided only through the partner's larger disc)
-         r%verdict = verdict_marginal
-         r%kind = kind_stable
       else
+         ! a disc off the circle but not decided outside, or two discs that meet
          r%verdict = verdict_marginal
          r%kind = kind_stable
       end if

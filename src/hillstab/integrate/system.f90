@@ -47,7 +47,7 @@ module hillstab_integrate_system
    use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t, set_error, err_integration, err_invalid_parameter
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
-   use hillstab_hill_system, only: hill_system_t, system_form_t
+   use hillstab_hill_system, only: hill_system_t, system_form_t, fundamental_derivative
    use hillstab_hill_system_floquet, only: symplectic_form
    use hillstab_integrate_rk, only: rk_system_t, rk_options_t, rk_integrate, rk_dop853
    use hillstab_integrate_system_gsl, only: system_monodromy_gsl, gsl_system_result_t
@@ -811,17 +811,8 @@ contains
       class(fundamental_t), intent(inout) :: self
       real(wp), intent(in) :: t, y(:)
       real(wp), intent(out) :: dydt(:)
-      integer :: n, m, col, o
-      real(wp), allocatable :: l(:, :)
-      n = self%form%n
-      m = 2*n
       call self%system%stiffness(self%alpha, t, self%p, self%b)
-      l = -matmul(self%form%m_inverse, self%p + self%beta*self%b)
-      do col = 1, m
-         o = (col - 1)*m
-         dydt(o + 1:o + n) = y(o + n + 1:o + m)
-         dydt(o + n + 1:o + m) = matmul(l, y(o + 1:o + n)) + matmul(self%form%d, y(o + n + 1:o + m))
-      end do
+      call fundamental_derivative(self%form, -matmul(self%form%m_inverse, self%p + self%beta*self%b), y, dydt)
    end subroutine fundamental_rhs
 
    !> DOP853 at tolerance/10, then /320: the second value, the difference the estimate.

@@ -17,7 +17,7 @@ module hillstab_integrate_system_gsl
    use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t, set_error, err_integration
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
-   use hillstab_hill_system, only: hill_system_t, system_form_t
+   use hillstab_hill_system, only: hill_system_t, system_form_t, fundamental_derivative
    use hillstab_ffi_gsl, only: gsl_odeiv2_system, gsl_odeiv2_step_rk8pd, gsl_set_error_handler_off, &
       gsl_odeiv2_driver_alloc_y_new, gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_odeiv2_driver_set_nmax, &
       gsl_success, gsl_ebadfunc
@@ -50,18 +50,11 @@ contains
       type(c_ptr), value :: params
       integer(c_int) :: status
       type(gsl_context_t), pointer :: c
-      integer :: n, m, col, o
-      real(wp), allocatable :: l(:, :)
+      integer :: m
       call c_f_pointer(params, c)
-      n = c%form%n
-      m = 2*n
+      m = 2*c%form%n
       call c%system%stiffness(c%alpha, t, c%p, c%b)
-      l = -matmul(c%form%m_inverse, c%p + c%beta*c%b)
-      do col = 1, m
-         o = (col - 1)*m
-         dydt(o + 1:o + n) = y(o + n + 1:o + m)
-         dydt(o + n + 1:o + m) = matmul(l, y(o + 1:o + n)) + matmul(c%form%d, y(o + n + 1:o + m))
-      end do
+      call fundamental_derivative(c%form, -matmul(c%form%m_inverse, c%p + c%beta*c%b), y(1:m*m), dydt(1:m*m))
       status = gsl_success
       if (.not. all(ieee_is_finite(dydt(1:m*m)))) status = gsl_ebadfunc
    end function fundamental_rhs

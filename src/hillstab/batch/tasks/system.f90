@@ -31,6 +31,7 @@ module hillstab_batch_tasks_system
    use hillstab_batch_scene_group_points, only: points_group, read_points_group
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text, join_lines, &
       write_records
+   use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_step, progress_end
    use hillstab_curves_system_boundaries, only: system_boundary_t, system_boundaries
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
@@ -153,6 +154,7 @@ contains
       real(wp), allocatable :: betas(:)
       character(len=300) :: extra(7)
       character(len=200) :: line
+      type(progress_t) :: progress
       integer :: i, k, n_failed, length
       call prepare_system(scene%system, scene%epsilon, form, cause)
       if (allocated(cause)) then
@@ -164,12 +166,15 @@ contains
                 failures(self%grid%n_alpha))
       counts = 0
       failures = ""
+      call progress_begin(progress, int(self%grid%n_alpha, int64), quiet, "rows")
       !$omp parallel do schedule(dynamic, 1) default(shared) private(i, k, cause)
       do i = 1, self%grid%n_alpha
          call boundary_row(i, cause)
          if (allocated(cause)) failures(i) = cause%message
+         call progress_step(progress)
       end do
       !$omp end parallel do
+      call progress_end(progress)
       extra(1) = system_description(scene%system)
       extra(2) = "simple resonances (a multiplier pair at +1 or -1) by Hill's method with n x n blocks, checked "// &
                  "against the monodromy; combination resonances (Krein collisions) by bisection on the samples"
@@ -218,7 +223,6 @@ contains
       end do
       if (n_failed > 0) call set_error(error, err_points_failed, scene%source//": "//integer_text(n_failed)// &
          " curve points not confirmed by the monodromy (status 2)")
-      if (quiet) i = 0
 
    contains
 
@@ -485,11 +489,9 @@ contains
       end if
       allocate (p(form%n, form%n), b(form%n, form%n))
       size_a = 0.0_wp
-      do k = 0, 7
-         call scene%system%stiffness(alpha_abs, 0.125_wp*k*form%period, p, b)
-         size_a = max(size_a, maxval(sum(abs(matmul(form%m_inverse, p)), dim=2)) + &
-                  beta_abs*maxval(sum(abs(matmul(form%m_inverse, b)), dim=2)))
-         call scene%system%stiffness(-alpha_abs, 0.125_wp*k*form%period, p, b)
+      do k = 0, 15
+         ! eight times of the period, at +|α| and −|α|
+         call scene%system%stiffness(merge(alpha_abs, -alpha_abs, k < 8), 0.125_wp*mod(k, 8)*form%period, p, b)
          size_a = max(size_a, maxval(sum(abs(matmul(form%m_inverse, p)), dim=2)) + &
                   beta_abs*maxval(sum(abs(matmul(form%m_inverse, b)), dim=2)))
       end do
@@ -548,7 +550,8 @@ contains
       integer, parameter :: block_rows = 16
       character(len=:), allocatable :: texts(:), first_failure
       real(wp), allocatable :: values(:, :, :)
-      integer :: n, n_columns, first, last, i, j, n_failed(block_rows), failed_total
+      integer :: n, n_columns, first, last, i, n_failed(block_rows), failed_total
+      type(progress_t) :: progress
       character(len=400) :: failures(block_rows)
       call prepare_system(scene%system, scene%epsilon, form, cause)
       if (allocated(cause)) then
@@ -564,6 +567,7 @@ contains
                         error, names_line=scene%names_line)
       failed_total = 0
       first_failure = ""
+      call progress_begin(progress, int(self%grid%n_alpha, int64), quiet, "rows")
       allocate (character(len=1) :: texts(block_rows))
       allocate (values(n_columns, self%grid%n_beta, block_rows))
       first = 1
@@ -593,15 +597,15 @@ contains
             end if
             if (allocated(error)) exit
          end do
+         call progress_update(progress, int(last, int64))
          first = last + 1
       end do
+      call progress_end(progress)
       call finish_output(file, error)
       if (allocated(error)) return
       if (failed_total > 0) call set_error(error, err_points_failed, scene%source//": "// &
          integer_text(failed_total)//" of "//integer_text(int(self%grid%n_alpha, int64)*self%grid%n_beta)// &
          " points failed (status 2); the first: "//first_failure)
-      j = 0
-      if (quiet) j = 1
    end subroutine chart_run
 
    !> One row of the chart: its values and its text.
@@ -682,6 +686,7 @@ contains
       character(len=:), allocatable :: message, first_failure
       character(len=(n_fixed + max_dof_columns)*26) :: line
       logical :: failed
+      type(progress_t) :: progress
       integer :: k, n_failed, length
       call prepare_system(scene%system, scene%epsilon, form, cause)
       if (allocated(cause)) then
@@ -691,6 +696,7 @@ contains
       allocate (v(n_fixed + form%n, size(self%points, 2)))
       n_failed = 0
       first_failure = ""
+      call progress_begin(progress, int(size(self%points, 2), int64), quiet)
       do k = 1, size(self%points, 2)
          call evaluate(scene%system, form, system_method_t(scene%method%kind, scene%method%tolerance), &
                        self%points(1, k), self%points(2, k), nodes, v(:, k), failed, message)
@@ -698,7 +704,9 @@ contains
             n_failed = n_failed + 1
             if (n_failed == 1) first_failure = "point "//integer_text(k)//" of "//self%path//": "//message
          end if
+         call progress_update(progress, int(k, int64))
       end do
+      call progress_end(progress)
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
       call write_header(file, system_lines(scene, "Floquet analysis at points", self%chosen), &
@@ -716,7 +724,6 @@ contains
       if (allocated(error)) return
       if (n_failed > 0) call set_error(error, err_points_failed, scene%source//": "//integer_text(n_failed)// &
          " of "//integer_text(size(self%points, 2))//" points failed (status 2); the first: "//first_failure)
-      if (quiet) k = 0
    end subroutine points_run
 
    !> The declaration of `&coefficient` for a system.
@@ -794,6 +801,7 @@ contains
       character(len=300), allocatable :: extra(:)
       integer :: n, a, t, i, j
       real(wp) :: tau
+      type(progress_t) :: progress
       n = scene%system%dof()
       allocate (p(n, n), b(n, n), k_tau(n, n))
       names = "alpha tau"
@@ -810,8 +818,10 @@ contains
       if (allocated(error)) return
       call write_header(file, scene_header(scene, "hillstab "//version_string//": the stiffness K(tau) of "// &
                         system_equation_text(scene%system), extra), names, error)
+      call progress_begin(progress, int(size(self%alphas), int64), quiet, "curves")
       do a = 1, size(self%alphas)
          if (allocated(error)) exit
+         call progress_update(progress, int(a - 1, int64))
          if (a > 1) call write_text(file, "", error)
          do t = 1, self%n_tau
             if (allocated(error)) exit
@@ -827,7 +837,7 @@ contains
             call write_text(file, line, error)
          end do
       end do
+      call progress_end(progress)
       call finish_output(file, error)
-      if (quiet) a = 0
    end subroutine coefficient_run
 end module hillstab_batch_tasks_system
