@@ -7,6 +7,7 @@ program tester
    use test_model_fourier, only: collect_model_fourier
    use test_model_modulated, only: collect_model_modulated
    use test_system, only: collect_system
+   use test_system_point, only: collect_system_point
    use test_system_boundaries, only: collect_system_boundaries
    use test_task_system, only: collect_task_system
    use test_codes, only: collect_codes
@@ -45,7 +46,7 @@ program tester
    use test_checkpoint, only: collect_checkpoint
    implicit none
    ! one by one, not as an array constructor of the collect functions' results: gfortran 12
-   type(testsuite_t) :: suites(42)
+   type(testsuite_t) :: suites(43)
    integer :: n_failed
    suites(1) = collect_models()
    suites(2) = collect_codes()
@@ -89,6 +90,7 @@ program tester
    suites(40) = collect_capi_system()
    suites(41) = collect_task_system()
    suites(42) = collect_system_boundaries()
+   suites(43) = collect_system_point()
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

@@ -77,8 +77,12 @@ module hillstab_hill_system_floquet
       real(wp) :: mu = 0.0_wp                   !! ln(largest |λ|)/P
       integer :: verdict = verdict_marginal     !! verdict_*
       integer :: kind = kind_stable             !! kind_* (of the instability, or stable/damped)
-      real(wp) :: defect = 0.0_wp               !! ‖ΦᵀΩΦ − Ω‖/‖Ω‖ (Hamiltonian) or |det Φ e^{−P tr D} − 1|
+      !> ‖ΦᵀΩΦ − Ω‖/(‖Ω‖ max(1, ‖Φ‖)²) (Hamiltonian) or |det Φ − e^{P tr D}|/∏‖Φ's columns‖ (`structure_defect`)
+      real(wp) :: defect = 0.0_wp
       real(wp) :: discriminant = 0.0_wp         !! n = 2 Hamiltonian: a₁² − 4a₂ + 8 (of Φ̃)
+      real(wp) :: period = 2.0_wp               !! P, the exponents' unit
+      !> every exponent meets the tolerance (false: one could not be resolved, the point at status 1)
+      logical :: exponents_resolved = .true.
    end type system_floquet_t
 
 contains
@@ -174,11 +178,11 @@ contains
       real(wp), intent(in), optional :: log_scale   !! s (0 when absent)
       integer :: n, m, i, k
       real(wp) :: work(size(phi, 1), size(phi, 2)), big
-      real(wp) :: s, scale, tr, tr2, e, growth
-      real(wp), allocatable :: omega(:, :), w(:, :)
+      real(wp) :: s, scale, tr, tr2, e
       n = form%n
       m = 2*n
       result%n = n
+      result%period = form%period
       s = 0.0_wp
       if (present(log_scale)) s = log_scale
       result%log_scale = s
@@ -201,23 +205,8 @@ contains
       call scaled_value(0.5_wp*(tr*tr - tr2), 2.0_wp*s, result%a2, result%overflow)
       allocate (result%multipliers(m), result%exponents(n))
       scale = max(1.0_wp, maxval(abs(work)))
-      ! the defect of the structure Φ keeps
-      if (form%hamiltonian) then
-         omega = symplectic_form(form)
-         w = matmul(transpose(work), matmul(omega, work))*exp(2.0_wp*min(s, 300.0_wp)) - omega
-         if (s > 300.0_wp) then
-            result%defect = -1.0_wp
-         else
-            result%defect = maxval(abs(w))/maxval(abs(omega))
-         end if
-      else
-         growth = m*s - form%period*form%trace_d
-         if (abs(growth) < 600.0_wp) then
-            result%defect = abs(matrix_determinant(work)*exp(growth) - 1.0_wp)
-         else
-            result%defect = -1.0_wp
-         end if
-      end if
+      ! the defect of the structure Φ keeps, relative to the size its terms have
+      result%defect = structure_defect(work, s, form)
       ! a scaled Φ̃ is not symplectic (its pairs multiply to e^{−2s}): the eigenvalues then
       if (form%hamiltonian .and. n == 1 .and. s == 0.0_wp) then
          call scalar_verdict(tr, e, form%period, result)
@@ -227,6 +216,46 @@ contains
          call eigen_verdict(work, e, s, form, result)
       end if
    end subroutine system_floquet
+
+   !> The defect of the structure Φ = e^s Φ̃ keeps, relative to the size of its terms, so that
+   !> it measures rounding and not growth: Hamiltonian, ‖ΦᵀΩΦ − Ω‖/(‖Ω‖ max(1, ‖Φ‖)²)
+   !> (max norms); else Liouville's |det Φ − e^{P tr D}| over Hadamard's bound ∏‖Φ's columns‖₂
+   !> of |det Φ|, both computed on Φ̃ so that nothing overflows.
+   function structure_defect(phi, s, form) result(defect)
+      real(wp), intent(in) :: phi(:, :)     !! Φ̃
+      real(wp), intent(in) :: s             !! its scale
+      type(system_form_t), intent(in) :: form
+      real(wp) :: defect
+      real(wp), allocatable :: omega(:, :), unit_columns(:, :)
+      real(wp) :: shrink, size_phi, log_hadamard, norms(size(phi, 2)), target
+      integer :: i, m
+      m = size(phi, 1)
+      if (form%hamiltonian) then
+         omega = symplectic_form(form)
+         ! e^{−s}: Φ̃ᵀΩΦ̃ − e^{−2s}Ω is ΦᵀΩΦ − Ω over e^{2s}
+         shrink = exp(-min(max(s, 0.0_wp), 300.0_wp))
+         if (s < 0.0_wp) shrink = exp(min(-s, 300.0_wp))
+         size_phi = max(shrink, maxval(abs(phi)))
+         defect = maxval(abs(matmul(transpose(phi), matmul(omega, phi)) - (shrink*shrink)*omega))/ &
+                  (maxval(abs(omega))*size_phi*size_phi)
+      else
+         do i = 1, m
+            norms(i) = norm2(phi(:, i))
+         end do
+         if (any(norms == 0.0_wp)) then
+            defect = 1.0_wp
+            return
+         end if
+         log_hadamard = sum(log(norms))
+         allocate (unit_columns(m, m))
+         do i = 1, m
+            unit_columns(:, i) = phi(:, i)/norms(i)
+         end do
+         ! det Φ / ∏‖col‖ = det Φ̃ / ∏‖col of Φ̃‖; Liouville's value over the same bound
+         target = exp(max(-700.0_wp, min(700.0_wp, form%period*form%trace_d - m*s - log_hadamard)))
+         defect = abs(matrix_determinant(unit_columns) - target)
+      end if
+   end function structure_defect
 
    !> e^s x, clamped to ±1e300 with the overflow flag.
    pure subroutine scaled_value(x, s, value, overflow)

@@ -23,7 +23,7 @@ module hillstab_integrate_system_gsl
       gsl_success, gsl_ebadfunc
    implicit none
    private
-   public :: system_monodromy_gsl, gsl_system_result_t
+   public :: system_monodromy_gsl, gsl_system_result_t, system_propagator_gsl, gsl_first_epsilon, gsl_second_epsilon
 
    !> What the right-hand side needs (GSL's params).
    type :: gsl_context_t
@@ -31,6 +31,7 @@ module hillstab_integrate_system_gsl
       type(system_form_t) :: form
       real(wp) :: alpha = 0.0_wp, beta = 0.0_wp
       real(wp), allocatable :: p(:, :), b(:, :)
+      integer :: rhs_calls = 0   !! right-hand sides evaluated
    end type gsl_context_t
 
    !> Φ, its error estimate relative to max(1, max|Φ_ij|), the status and GSL's evaluations.
@@ -38,6 +39,7 @@ module hillstab_integrate_system_gsl
       real(wp), allocatable :: phi(:, :)       !! Φ (2n × 2n)
       real(wp) :: error_estimate = 0.0_wp      !! relative to max(1, max|Φ_ij|)
       integer :: status = status_ok            !! status_ok, status_roundoff or status_failed
+      integer :: evaluations = 0               !! right-hand sides evaluated (both passes)
    end type gsl_system_result_t
 
 contains
@@ -53,6 +55,7 @@ contains
       integer :: m
       call c_f_pointer(params, c)
       m = 2*c%form%n
+      c%rhs_calls = c%rhs_calls + 1
       call c%system%stiffness(c%alpha, t, c%p, c%b)
       call fundamental_derivative(c%form, -matmul(c%form%m_inverse, c%p + c%beta*c%b), y(1:m*m), dydt(1:m*m))
       status = gsl_success
@@ -67,14 +70,60 @@ contains
       real(wp), intent(in) :: tolerance           !! target error of Φ relative to max(1, max|Φ_ij|)
       type(gsl_system_result_t), intent(out) :: result  !! Φ, estimate, status
       type(error_t), allocatable, intent(out) :: error  !! err_integration when GSL fails
+      real(wp), allocatable :: first(:, :), second(:, :)
+      real(wp) :: eps, scale
+      integer :: m, pass
+      m = 2*form%n
+      ! the whole period, whatever the symmetry: an independent reference
+      eps = gsl_first_epsilon(tolerance)
+      allocate (result%phi(m, m), second(m, m))
+      result%phi = 0.0_wp
+      do pass = 1, 2
+         call system_propagator_gsl(system, form, alpha, beta, eps, 0.0_wp, form%period, second, &
+                                    result%evaluations, error)
+         if (allocated(error)) then
+            result%status = status_failed
+            return
+         end if
+         if (pass == 1) first = second
+         eps = gsl_second_epsilon(eps)
+      end do
+      scale = max(1.0_wp, maxval(abs(second)))
+      result%phi = second
+      result%error_estimate = max(maxval(abs(second - first))/scale/32.0_wp, epsilon(1.0_wp))
+      result%status = merge(status_ok, status_roundoff, result%error_estimate <= tolerance)
+   end subroutine system_monodromy_gsl
+
+   !> GSL's epsilon of the first pass.
+   pure real(wp) function gsl_first_epsilon(tolerance) result(eps)
+      real(wp), intent(in) :: tolerance  !! the point's tolerance
+      eps = max(0.1_wp*tolerance, 1.0e-14_wp)
+   end function gsl_first_epsilon
+
+   !> GSL's epsilon of the second pass from the first's.
+   pure real(wp) function gsl_second_epsilon(first) result(eps)
+      real(wp), intent(in) :: first  !! the first pass's epsilon
+      eps = max(first/320.0_wp, 1.0e-15_wp)
+   end function gsl_second_epsilon
+
+   !> Y' = A(τ) Y from Y(t0) = I to t1 by rk8pd at epsabs = epsrel = eps; its right-hand sides
+   !> added to `evaluations`.
+   subroutine system_propagator_gsl(system, form, alpha, beta, eps, t0, t1, y, evaluations, error)
+      class(hill_system_t), intent(in) :: system  !! the system
+      type(system_form_t), intent(in) :: form     !! prepared at its ε
+      real(wp), intent(in) :: alpha, beta         !! the point
+      real(wp), intent(in) :: eps                 !! GSL's epsabs and epsrel
+      real(wp), intent(in) :: t0, t1              !! the interval
+      real(wp), intent(out) :: y(:, :)            !! Y(t1) (2n × 2n)
+      integer, intent(inout) :: evaluations       !! right-hand sides, counted on
+      type(error_t), allocatable, intent(out) :: error  !! err_integration when GSL fails
       type(gsl_context_t), target :: context
       type(gsl_odeiv2_system) :: sys
       type(c_ptr) :: driver
       type(c_funptr) :: previous
-      real(wp), allocatable :: y(:), first(:, :), second(:, :)
-      real(c_double) :: t, length
-      real(wp) :: eps, scale
-      integer :: m, pass, i
+      real(wp), allocatable :: state(:)
+      real(c_double) :: t
+      integer :: m, i
       integer(c_int) :: status
       m = 2*form%n
       allocate (context%system, source=system)
@@ -84,37 +133,24 @@ contains
       allocate (context%p(form%n, form%n), context%b(form%n, form%n))
       previous = gsl_set_error_handler_off()
       sys = gsl_odeiv2_system(c_funloc(fundamental_rhs), c_null_funptr, int(m*m, c_size_t), c_loc(context))
-      ! the whole period, whatever the symmetry: an independent reference
-      length = form%period
-      eps = max(0.1_wp*tolerance, 1.0e-14_wp)
-      allocate (result%phi(m, m), second(m, m))
-      result%phi = 0.0_wp
-      do pass = 1, 2
-         driver = gsl_odeiv2_driver_alloc_y_new(sys, gsl_odeiv2_step_rk8pd, 1.0e-3_c_double, eps, eps)
-         if (.not. c_associated(driver)) then
-            result%status = status_failed
-            call set_error(error, err_integration, "gsl: the driver could not be allocated")
-            return
-         end if
-         status = gsl_odeiv2_driver_set_nmax(driver, 10000000_8)
-         y = [(merge(1.0_wp, 0.0_wp, mod(i, m + 1) == 0), i=0, m*m - 1)]
-         t = 0.0_c_double
-         status = gsl_odeiv2_driver_apply(driver, t, length, y)
-         call gsl_odeiv2_driver_free(driver)
-         if (status /= gsl_success) then
-            result%status = status_failed
-            call set_error(error, err_integration, "gsl: rk8pd failed (GSL status "//trim(int_text(status))//")")
-            return
-         end if
-         second = reshape(y, [m, m])
-         if (pass == 1) first = second
-         eps = max(eps/320.0_wp, 1.0e-15_wp)
-      end do
-      scale = max(1.0_wp, maxval(abs(second)))
-      result%phi = second
-      result%error_estimate = max(maxval(abs(second - first))/scale/32.0_wp, epsilon(1.0_wp))
-      result%status = merge(status_ok, status_roundoff, result%error_estimate <= tolerance)
-   end subroutine system_monodromy_gsl
+      y = 0.0_wp
+      driver = gsl_odeiv2_driver_alloc_y_new(sys, gsl_odeiv2_step_rk8pd, 1.0e-3_c_double, eps, eps)
+      if (.not. c_associated(driver)) then
+         call set_error(error, err_integration, "gsl: the driver could not be allocated")
+         return
+      end if
+      status = gsl_odeiv2_driver_set_nmax(driver, 10000000_8)
+      state = [(merge(1.0_wp, 0.0_wp, mod(i, m + 1) == 0), i=0, m*m - 1)]
+      t = t0
+      status = gsl_odeiv2_driver_apply(driver, t, real(t1, c_double), state)
+      call gsl_odeiv2_driver_free(driver)
+      evaluations = evaluations + context%rhs_calls
+      if (status /= gsl_success) then
+         call set_error(error, err_integration, "gsl: rk8pd failed (GSL status "//trim(int_text(status))//")")
+         return
+      end if
+      y = reshape(state, [m, m])
+   end subroutine system_propagator_gsl
 
    pure function int_text(i) result(text)
       integer(c_int), intent(in) :: i

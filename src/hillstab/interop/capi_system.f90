@@ -40,6 +40,7 @@ module hillstab_interop_capi_system
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
    use hillstab_core_text, only: integer_text, real_text
    use hillstab_hill_system, only: system_form_t, prepare_system, check_system_point
+   use hillstab_integrate_system_point, only: resolve_exponents
    use hillstab_hill_system_matrix, only: matrix_system_t
    use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
@@ -393,6 +394,7 @@ contains
       type(system_form_t) :: form
       type(system_monodromy_t) :: result
       type(system_floquet_t) :: f
+      type(system_nodes_t) :: nodes
       type(error_t), allocatable :: error
       real(c_double), pointer :: re_out(:), im_out(:), exponents_out(:), p
       integer(c_int), pointer :: q
@@ -413,6 +415,8 @@ contains
       if (.not. allocated(error)) then
          call system_floquet(result%phi, form, result%error_estimate*max(1.0_wp, maxval(abs(result%phi))), f, &
                              result%log_scale)
+         call resolve_exponents(handle%system, form, real(alpha, wp), real(beta, wp), &
+                                system_method_t(int(method), real(tolerance, wp)), nodes, result, f)
          n = form%n
          ! Φ's own multipliers where they stay finite, else Φ̃'s with the scale
          s = f%log_scale

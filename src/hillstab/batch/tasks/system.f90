@@ -19,9 +19,9 @@ module hillstab_batch_tasks_system
    use hillstab_core_text, only: format_es, real_text, integer_text, lower_case, put_es, put_integer
    use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system, system_equation_text, &
       system_description, check_system_point
-   use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet, verdict_marginal, kind_name
-   use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
-      system_method_name
+   use hillstab_hill_system_floquet, only: system_floquet_t, verdict_marginal, kind_name
+   use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_method_name
+   use hillstab_integrate_system_point, only: system_point
    use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output, scene_header
    use hillstab_batch_scene_declaration, only: group_t, new_group, group_reader_t, var_real, var_integer, &
       var_real_list, begin_group, next_item, end_group, list_value
@@ -290,13 +290,15 @@ contains
       case ("lambda_max"); text = "largest |multiplier| (1e300 when it overflows; mu is exact)"
       case ("mu"); text = "ln(lambda_max)/period, the largest Floquet exponent per unit tau"
       case ("argument"); text = "arg(lambda)/pi of the largest multiplier, in [0, 1]"
-      case ("defect"); text = "Hamiltonian: |Phi^T Omega Phi - Omega|/|Omega|; else |det Phi exp(-P tr D) - 1| "// &
-                              "(-1: not computed, Phi overflows)"
+      case ("defect"); text = "Hamiltonian: |Phi^T Omega Phi - Omega|/(|Omega| max(1, |Phi|)^2); else "// &
+                              "|det Phi - exp(P tr D)| over Hadamard's bound of |det Phi| (relative, max norms)"
       case ("error_estimate"); text = "the method's estimate of the error of Phi's entries relative to "// &
                                       "max(1, max|Phi_ij|)"
-      case ("status"); text = "0 ok; 1 round-off limited; 2 failed (placeholders)"
-      case ("steps"); text = "Magnus steps (or rk right-hand sides) spent on the point"
-      case default; text = "ln|lambda_k|/period of the k-th largest multiplier"
+      case ("status"); text = "0 ok; 1 round-off limited (the tolerance lies below the rounding of the method, "// &
+                              "or an exponent mu_k is not resolved to it); 2 failed (placeholders)"
+      case ("steps"); text = "Magnus steps (rk, gsl: right-hand sides) spent on the point"
+      case default; text = "ln|lambda_k|/period of the k-th largest multiplier (from the period's product "// &
+                           "kept factored where Phi cannot resolve it)"
       end select
    end function column_help
 
@@ -458,12 +460,10 @@ contains
       type(system_monodromy_t) :: r
       type(system_floquet_t) :: f
       type(error_t), allocatable :: error
-      call system_monodromy(system, form, alpha, beta, method, nodes, r, error)
+      call system_point(system, form, alpha, beta, method, nodes, r, f, error)
       failed = allocated(error) .or. r%status == status_failed
       message = ""
       if (allocated(error)) message = error%message
-      if (.not. failed) call system_floquet(r%phi, form, r%error_estimate*max(1.0_wp, maxval(abs(r%phi))), f, &
-                                            r%log_scale)
       v = system_point_values(form%n, alpha, beta, f, r, failed)
    end subroutine evaluate
 
@@ -564,7 +564,7 @@ contains
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
       call write_header(file, system_lines(scene, "stability chart", self%chosen), chosen_names(n, self%chosen), &
-                        error, names_line=scene%names_line)
+                        error, names_line=scene%names_line, records=[self%grid%n_beta, self%grid%n_alpha])
       failed_total = 0
       first_failure = ""
       call progress_begin(progress, int(self%grid%n_alpha, int64), quiet, "rows")
@@ -587,7 +587,7 @@ contains
             if (n_failed(i - first + 1) > 0 .and. len(first_failure) == 0) first_failure = trim(failures(i - first + 1))
             failed_total = failed_total + n_failed(i - first + 1)
             if (scene%binary) then
-               call write_records(file, values(:, :, i - first + 1), error)
+               call write_records(file, values(self%chosen, :, i - first + 1), error)
             else
                if (i > 1) then
                   call write_text(file, "", error)
@@ -710,7 +710,8 @@ contains
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
       call write_header(file, system_lines(scene, "Floquet analysis at points", self%chosen), &
-                        chosen_names(form%n, self%chosen), error, names_line=scene%names_line)
+                        chosen_names(form%n, self%chosen), error, names_line=scene%names_line, &
+                        records=[size(self%points, 2), 1])
       if (scene%binary) then
          if (.not. allocated(error)) call write_records(file, v(self%chosen, :), error)
       else
