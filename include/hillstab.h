@@ -197,10 +197,12 @@ enum {
 };
 
 /* Where the largest multiplier leaves the unit circle: at +1, at -1, off the real axis (a
- * combination resonance, Krein collision); or stable, or damped (every |lambda| < 1). */
+ * combination resonance, Krein collision); or stable, or damped (every |lambda| < 1), or
+ * undecided (the verdict is marginal). */
 enum {
   HILLSTAB_SYSTEM_KIND_STABLE = 0, HILLSTAB_SYSTEM_KIND_PLUS_ONE = 1, HILLSTAB_SYSTEM_KIND_MINUS_ONE = 2,
-  HILLSTAB_SYSTEM_KIND_COMBINATION = 3, HILLSTAB_SYSTEM_KIND_DAMPED = 4
+  HILLSTAB_SYSTEM_KIND_COMBINATION = 3, HILLSTAB_SYSTEM_KIND_DAMPED = 4,
+  HILLSTAB_SYSTEM_KIND_UNDECIDED = 5
 };
 
 /* An empty system (free it with hillstab_system_free, NULL is ignored). */

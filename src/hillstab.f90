@@ -55,7 +55,8 @@
 !>   `hillstab_kind_plus_one` = [[hillstab_hill_system_floquet:kind_plus_one]],
 !>   `hillstab_kind_minus_one` = [[hillstab_hill_system_floquet:kind_minus_one]],
 !>   `hillstab_kind_combination` = [[hillstab_hill_system_floquet:kind_combination]],
-!>   `hillstab_kind_damped` = [[hillstab_hill_system_floquet:kind_damped]]
+!>   `hillstab_kind_damped` = [[hillstab_hill_system_floquet:kind_damped]],
+!>   `hillstab_kind_undecided` = [[hillstab_hill_system_floquet:kind_undecided]]
 !> - [[hillstab_hill_coefficient]]:
 !>   `hillstab_sampling_endpoint` = [[hillstab_hill_coefficient:sampling_endpoint]],
 !>   `hillstab_sampling_midpoint` = [[hillstab_hill_coefficient:sampling_midpoint]],
@@ -206,7 +207,8 @@ module hillstab
       hillstab_verdict_stable => verdict_stable, hillstab_verdict_unstable => verdict_unstable, &
       hillstab_verdict_marginal => verdict_marginal, hillstab_kind_stable => kind_stable, &
       hillstab_kind_plus_one => kind_plus_one, hillstab_kind_minus_one => kind_minus_one, &
-      hillstab_kind_combination => kind_combination, hillstab_kind_damped => kind_damped
+      hillstab_kind_combination => kind_combination, hillstab_kind_damped => kind_damped, &
+      hillstab_kind_undecided => kind_undecided
    use hillstab_hill_coefficient, only: hillstab_sampling_endpoint => sampling_endpoint, &
       hillstab_sampling_midpoint => sampling_midpoint, hillstab_sampling_average => sampling_average, &
       hillstab_sampling_name => sampling_name, sampling_from_name, segment_coefficients, in_physical_domain

@@ -47,9 +47,9 @@ SYSTEM_METHODS = {"auto": 0, "magnus4": 3, "magnus6": 4, "rk": 5, "gsl": 6}
 #: HILLSTAB_SYSTEM_VERDICT_*
 VERDICT_UNSTABLE, VERDICT_STABLE, VERDICT_MARGINAL = 0, 1, -1
 #: HILLSTAB_SYSTEM_KIND_*, and their names
-KIND_STABLE, KIND_PLUS_ONE, KIND_MINUS_ONE, KIND_COMBINATION, KIND_DAMPED = 0, 1, 2, 3, 4
+KIND_STABLE, KIND_PLUS_ONE, KIND_MINUS_ONE, KIND_COMBINATION, KIND_DAMPED, KIND_UNDECIDED = 0, 1, 2, 3, 4, 5
 KIND_NAMES = {0: "stable", 1: "parametric at +1", 2: "parametric at -1", 3: "combination (Krein collision)",
-              4: "damped, asymptotically stable"}
+              4: "damped, asymptotically stable", 5: "undecided (marginal)"}
 
 
 def _method(method):

@@ -8,7 +8,7 @@ module test_system_point
    use hillstab_core_status, only: status_ok, status_roundoff
    use hillstab_hill_system, only: system_form_t, prepare_system
    use hillstab_hill_system_matrix, only: matrix_system_t
-   use hillstab_hill_system_floquet, only: system_floquet_t
+   use hillstab_hill_system_floquet, only: system_floquet_t, verdict_marginal, kind_undecided
    use hillstab_hill_system_exponents, only: factored_exponents, householder_qr
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_auto, &
       system_magnus4, system_magnus6, system_rk, system_gsl, system_factors
@@ -29,7 +29,8 @@ contains
          new_unittest("mettler_second_exponent", mettler_second_exponent), &
          new_unittest("damped_exponents_liouville", damped_exponents_liouville), &
          new_unittest("roundoff_status_and_bound", roundoff_status_and_bound), &
-         new_unittest("defect_relative", defect_relative)])
+         new_unittest("defect_relative", defect_relative), &
+         new_unittest("marginal_is_undecided", marginal_is_undecided)])
    end function collect_system_point
 
    !> Factors F_k = S D_k S⁻¹ with one S: Φ = S (∏ D_k) S⁻¹, its multipliers ∏ D_k, from
@@ -275,6 +276,28 @@ contains
          call check(ctx, f%defect >= 0.0_wp .and. f%defect < 1.0e-10_wp, "defect below 1e-10")
       end do
    end subroutine defect_relative
+
+   !> Two identical undriven oscillators at β = π²/4: every multiplier at −1 (S = 2 cos π per
+   !> block), a boundary no error bound decides: verdict −1 and kind "undecided", not "stable".
+   subroutine marginal_is_undecided(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(matrix_system_t) :: sys
+      type(system_form_t) :: form
+      type(system_nodes_t) :: nodes
+      type(system_monodromy_t) :: r
+      type(system_floquet_t) :: f
+      type(error_t), allocatable :: error
+      real(wp), parameter :: pi = 3.14159265358979324_wp
+      call sys%set_values("n", [2.0_wp], error)
+      call sys%set_values("cos", [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], error)
+      call sys%check_values(error)
+      call prepare_system(sys, 0.0_wp, form, error)
+      call system_point(sys, form, 0.0_wp, 0.25_wp*pi*pi, system_method_t(system_auto, 1.0e-10_wp), nodes, r, f, error)
+      call check(ctx, .not. allocated(error), "computed")
+      if (allocated(error)) return
+      call check(ctx, f%verdict == verdict_marginal, "marginal")
+      call check(ctx, f%kind == kind_undecided, "kind undecided")
+   end subroutine marginal_is_undecided
 
    pure function identity(m) result(a)
       integer, intent(in) :: m

@@ -15,7 +15,8 @@ module test_capi_system
    use hillstab_hill_system, only: system_form_t, prepare_system
    use hillstab_hill_system_matrix, only: matrix_system_t
    use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet, verdict_stable, verdict_unstable, &
-      verdict_marginal, kind_stable, kind_plus_one, kind_minus_one, kind_combination, kind_damped
+      verdict_marginal, kind_stable, kind_plus_one, kind_minus_one, kind_combination, kind_damped, &
+      kind_undecided
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
       system_auto, system_magnus4, system_rk
    use hillstab_interop_capi, only: hillstab_c_last_error
@@ -301,6 +302,7 @@ contains
       call expect("HILLSTAB_SYSTEM_KIND_MINUS_ONE", kind_minus_one)
       call expect("HILLSTAB_SYSTEM_KIND_COMBINATION", kind_combination)
       call expect("HILLSTAB_SYSTEM_KIND_DAMPED", kind_damped)
+      call expect("HILLSTAB_SYSTEM_KIND_UNDECIDED", kind_undecided)
    contains
       subroutine expect(name, code)
          character(len=*), intent(in) :: name

@@ -39,7 +39,7 @@ module hillstab_hill_system_floquet
    implicit none
    private
    public :: system_floquet_t, system_floquet, verdict_stable, verdict_unstable, verdict_marginal
-   public :: kind_stable, kind_plus_one, kind_minus_one, kind_combination, kind_damped, kind_name
+   public :: kind_stable, kind_plus_one, kind_minus_one, kind_combination, kind_damped, kind_undecided, kind_name
    public :: symplectic_form, matrix_determinant, broucke_multipliers
 
    !> Verdict, stable: every multiplier on the unit circle (Hamiltonian) or inside it (damped), decided.
@@ -59,6 +59,9 @@ module hillstab_hill_system_floquet
    integer, parameter :: kind_combination = 3
    !> Kind, damped and asymptotically stable, every |λ| < 1.
    integer, parameter :: kind_damped = 4
+   !> Kind, undecided: the verdict is marginal (the error bound of Φ does not tell whether and
+   !> where a multiplier leaves the circle).
+   integer, parameter :: kind_undecided = 5
 
    !> The Floquet analysis of one monodromy.
    type :: system_floquet_t
@@ -76,7 +79,7 @@ module hillstab_hill_system_floquet
       real(wp) :: argument = 0.0_wp             !! arg λ/π of the largest multiplier, in [0, 1]
       real(wp) :: mu = 0.0_wp                   !! ln(largest |λ|)/P
       integer :: verdict = verdict_marginal     !! verdict_*
-      integer :: kind = kind_stable             !! kind_* (of the instability, or stable/damped)
+      integer :: kind = kind_stable             !! kind_* (of the instability, or stable/damped/undecided)
       !> ‖ΦᵀΩΦ − Ω‖/(‖Ω‖ max(1, ‖Φ‖)²) (Hamiltonian) or |det Φ − e^{P tr D}|/∏‖Φ's columns‖ (`structure_defect`)
       real(wp) :: defect = 0.0_wp
       real(wp) :: discriminant = 0.0_wp         !! n = 2 Hamiltonian: a₁² − 4a₂ + 8 (of Φ̃)
@@ -97,6 +100,7 @@ contains
       case (kind_minus_one); name = "parametric at -1"
       case (kind_combination); name = "combination (Krein collision)"
       case (kind_damped); name = "damped, asymptotically stable"
+      case (kind_undecided); name = "undecided (marginal)"
       case default; name = "unknown"
       end select
    end function kind_name
@@ -294,7 +298,7 @@ contains
          r%kind = merge(kind_plus_one, kind_minus_one, tr > 0.0_wp)
       else
          r%verdict = verdict_marginal
-         r%kind = kind_stable
+         r%kind = kind_undecided
       end if
    end subroutine scalar_verdict
 
@@ -321,7 +325,7 @@ contains
       end if
       if (d <= dd) then
          r%verdict = verdict_marginal
-         r%kind = kind_stable
+         r%kind = kind_undecided
          return
       end if
       ! two real z: |Δz| ≤ (|Δa₁| + |ΔD|/(2√D))/2 with the factor 2 of the root's sign
@@ -337,7 +341,7 @@ contains
          r%kind = kind_stable
       else
          r%verdict = verdict_marginal
-         r%kind = kind_stable
+         r%kind = kind_undecided
       end if
    end subroutine broucke_verdict
 
@@ -362,6 +366,7 @@ contains
       if (info /= 0) then
          r%multipliers = cmplx(0.0_wp, 0.0_wp, wp)
          r%verdict = verdict_marginal
+         r%kind = kind_undecided
          call finish_from_multipliers(r, s, form%period)
          return
       end if
@@ -411,7 +416,7 @@ contains
             r%kind = kind_damped
          else
             r%verdict = verdict_marginal
-            r%kind = kind_stable
+            r%kind = kind_undecided
          end if
          return
       end if
@@ -430,7 +435,7 @@ contains
       else
          ! a disc off the circle but not decided outside, or two discs that meet
          r%verdict = verdict_marginal
-         r%kind = kind_stable
+         r%kind = kind_undecided
       end if
    end subroutine eigen_verdict
 

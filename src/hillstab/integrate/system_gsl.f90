@@ -4,7 +4,11 @@
 !> tolerance/10 and then /320, over the whole period (no symmetry used, unlike hillstab's own methods);
 !> the second value is returned, the difference of the two its error estimate (divided by 32,
 !> GSL's global error following its epsilon about linearly), status_roundoff when that
-!> estimate misses the tolerance. The right-hand side receives the system through GSL's
+!> estimate misses the tolerance (hillstab_integrate_system adds the rounding level rk8pd
+!> accumulates). Where GSL's control cannot reach an epsilon (GSL_FAILURE, at its floor on a
+!> strongly growing solution), the point is round-off limited, not failed: a failed second
+!> pass leaves the first pass's Φ, a failed first pass at the floor is run again at ten
+!> times the epsilon, each at status_roundoff. The right-hand side receives the system through GSL's
 !> `params` pointer (no module state: calls may run on several threads at once).
 !>
 !>```fortran
@@ -73,7 +77,9 @@ contains
       real(wp), allocatable :: first(:, :), second(:, :)
       real(wp) :: eps, scale
       integer :: m, pass
+      logical :: roundoff
       m = 2*form%n
+      roundoff = .false.
       ! the whole period, whatever the symmetry: an independent reference
       eps = gsl_first_epsilon(tolerance)
       allocate (result%phi(m, m), second(m, m))
@@ -81,6 +87,22 @@ contains
       do pass = 1, 2
          call system_propagator_gsl(system, form, alpha, beta, eps, 0.0_wp, form%period, second, &
                                     result%evaluations, error)
+         if (allocated(error) .and. pass == 1 .and. eps > 0.1_wp*tolerance) then
+            ! at its floor GSL's control could not reach eps (GSL_FAILURE: the step falls
+            ! below what rounding allows); ten times more, the tolerance out of reach
+            deallocate (error)
+            eps = 10.0_wp*eps
+            call system_propagator_gsl(system, form, alpha, beta, eps, 0.0_wp, form%period, second, &
+                                       result%evaluations, error)
+            roundoff = .true.
+         end if
+         if (allocated(error) .and. pass == 2) then
+            ! the first pass stands, its error unknown but above the second pass's reach
+            deallocate (error)
+            second = first
+            roundoff = .true.
+            exit
+         end if
          if (allocated(error)) then
             result%status = status_failed
             return
@@ -91,6 +113,7 @@ contains
       scale = max(1.0_wp, maxval(abs(second)))
       result%phi = second
       result%error_estimate = max(maxval(abs(second - first))/scale/32.0_wp, epsilon(1.0_wp))
+      if (roundoff) result%error_estimate = max(result%error_estimate, 10.0_wp*tolerance)
       result%status = merge(status_ok, status_roundoff, result%error_estimate <= tolerance)
    end subroutine system_monodromy_gsl
 

@@ -286,7 +286,7 @@ contains
       case ("overflow"); text = "1 when |a1| or |a2| exceeds 1e300 (clamped)"
       case ("stable"); text = "1 stable, 0 unstable, -1 marginal (the error bound of Phi does not decide)"
       case ("kind"); text = "0 stable, 1 unstable at +1, 2 at -1, 3 combination (Krein collision), "// &
-                            "4 damped (asymptotically stable)"
+                            "4 damped (asymptotically stable), 5 undecided (stable = -1)"
       case ("lambda_max"); text = "largest |multiplier| (1e300 when it overflows; mu is exact)"
       case ("mu"); text = "ln(lambda_max)/period, the largest Floquet exponent per unit tau"
       case ("argument"); text = "arg(lambda)/pi of the largest multiplier, in [0, 1]"
