@@ -41,6 +41,7 @@ contains
          new_unittest("ranges_contain_samples", ranges_contain_samples), &
          new_unittest("period_and_symmetry", period_and_symmetry), &
          new_unittest("exact_methods_against_reference", exact_methods_against_reference), &
+         new_unittest("deep_dip_at_1e12", deep_dip_at_1e12), &
          new_unittest("auto_chart_grid", auto_chart_grid), &
          new_unittest("transition_values", transition_values), &
          new_unittest("alpha_domain", alpha_domain)])
@@ -248,6 +249,34 @@ contains
       end do
       s = current
    end subroutine reference_trace
+
+   !> Near α → π² (1 − k m down to 0.031) at tolerance 1e-12: (9.559071, 5.044662), where the
+   !> θ-form reference gives S = −340.85299379438509 (and an independent quadruple-precision
+   !> RK4 on the definition of Q, extrapolated from 1e5 and 2e5 steps, the same to 2e-16):
+   !> every exact method within 1e-12 at status 0, or status 1 within its estimate.
+   subroutine deep_dip_at_1e12(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(modulated_model_t) :: model
+      type(trace_t) :: tr
+      type(error_t), allocatable :: error
+      real(xp) :: reference
+      real(wp) :: e
+      integer :: m
+      logical :: converged
+      call reference_trace(9.559071_wp, 5.044662_wp, 0.0_wp, reference, converged)
+      call check(ctx, converged, "reference converged")
+      call check(ctx, real(reference, wp), -340.85299379438509_wp, rel=1.0e-14_wp, message="reference value")
+      do m = 1, size(exact_methods)
+         call monodromy_trace(model, hill_point_t(9.559071_wp, 5.044662_wp, 0.0_wp), &
+                              method_t(exact_methods(m), tolerance=1.0e-12_wp), tr, error)
+         e = abs(tr%value - real(reference, wp))/abs(real(reference, wp))
+         if (allocated(error)) then
+            call check(ctx, e <= 4.0_wp*tr%error_estimate, method_name(exact_methods(m))//": within its estimate")
+         else
+            call check(ctx, e <= 1.0e-12_wp, method_name(exact_methods(m))//": within 1e-12")
+         end if
+      end do
+   end subroutine deep_dip_at_1e12
 
    !> Every exact method at 1e-6 and 1e-10 against the θ-form reference: 48 points, α up to
    !> 9.7 (the dip at τ = 0 as deep as 1/(1 − k) = 55), |β| up to 2000, with and without
