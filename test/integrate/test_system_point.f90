@@ -28,6 +28,7 @@ contains
          new_unittest("exponents_spanning_decades", exponents_spanning_decades), &
          new_unittest("mettler_second_exponent", mettler_second_exponent), &
          new_unittest("damped_exponents_liouville", damped_exponents_liouville), &
+         new_unittest("negative_damping_a2", negative_damping_a2), &
          new_unittest("roundoff_status_and_bound", roundoff_status_and_bound), &
          new_unittest("defect_relative", defect_relative), &
          new_unittest("marginal_is_undecided", marginal_is_undecided)])
@@ -131,8 +132,39 @@ contains
          if (allocated(error)) cycle
          call check(ctx, f%exponents(1), 61.6199050_wp, abs=6.0e-8_wp, message=trim(where)//": mu_1")
          call check(ctx, f%exponents(2), 15.4049582_wp, abs=6.0e-8_wp, message=trim(where)//": mu_2")
+         ! a₂ ≈ λ₁λ₂ (the other products are 1e-40 of it and less): the cancellation in
+         ! ((tr Φ)² − tr Φ²)/2 left 1e90 of noise there
+         call check(ctx, log(f%a2), 2.0_wp*(61.6199050_wp + 15.4049582_wp), abs=3.0e-7_wp, message=trim(where)//": a2")
       end do
    end subroutine mettler_second_exponent
+
+   !> n = 1 with a negative damping (C = −100, the solution grows by e²⁰⁰ over the period):
+   !> a₂ = det Φ = e^{−P tr(M⁻¹C)} = e²⁰⁰ exactly (Liouville), every column finite.
+   subroutine negative_damping_a2(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(matrix_system_t) :: sys
+      type(system_form_t) :: form
+      type(system_nodes_t) :: nodes
+      type(system_monodromy_t) :: r
+      type(system_floquet_t) :: f
+      type(error_t), allocatable :: error
+      integer :: methods(3) = [system_auto, system_rk, system_gsl], i
+      character(len=40) :: where
+      call sys%set_values("n", [1.0_wp], error)
+      call sys%set_values("damping", [-100.0_wp], error)
+      call sys%set_values("cos", [1.0_wp], error)
+      call sys%check_values(error)
+      call prepare_system(sys, 0.0_wp, form, error)
+      do i = 1, size(methods)
+         nodes = system_nodes_t()
+         call system_point(sys, form, 0.0_wp, 1.0_wp, system_method_t(methods(i), 1.0e-10_wp), nodes, r, f, error)
+         write (where, '(a, i0)') "method ", methods(i)
+         call check(ctx, .not. allocated(error) .and. r%status == status_ok, trim(where)//": status 0")
+         if (allocated(error)) cycle
+         call check(ctx, f%a2, exp(200.0_wp), rel=1.0e-9_wp, message=trim(where)//": a2 = e^200")
+         call check(ctx, f%defect >= 0.0_wp .and. f%defect < 1.0e-10_wp, trim(where)//": defect")
+      end do
+   end subroutine negative_damping_a2
 
    !> Damped and driven, n = 2 (C = diag(30, 0.1), so the exponents span ~50 decades over
    !> the period): the exponents' sum over all 2n is −tr(M⁻¹C) (Liouville), and the pair of

@@ -40,19 +40,21 @@ contains
 
    !> The exponents ln|λ_i|/period of Φ = F_K ⋯ F_1 (`factors(:, :, k)` = F_k), all m of them,
    !> by decreasing value.
-   subroutine factored_exponents(factors, period, target, exponents, resolved, sweeps)
+   subroutine factored_exponents(factors, period, target, exponents, resolved, sweeps, arguments)
       real(wp), intent(in) :: factors(:, :, :)   !! F_1 … F_K (m × m × K), F_1 applied first
       real(wp), intent(in) :: period             !! the period the exponents are per
       real(wp), intent(in) :: target             !! the accuracy wanted of each exponent
       real(wp), intent(out) :: exponents(:)      !! m exponents, decreasing
       logical, intent(out) :: resolved(:)        !! each exponent to the target
       integer, intent(out), optional :: sweeps   !! sweeps spent
+      !> arg λ_i of the same multipliers, in (−π, π]: with the exponents, every multiplier
+      real(wp), intent(out), optional :: arguments(:)
       integer :: m, k, sweep, g, n_groups, lo, hi, i
       real(wp) :: q(size(factors, 1), size(factors, 1)), q0(size(factors, 1), size(factors, 1)), &
                   z(size(factors, 1), size(factors, 1)), r(size(factors, 1), size(factors, 1)), &
                   w(size(factors, 1), size(factors, 1)), blocks(size(factors, 1), size(factors, 1)), &
                   block_scale(size(factors, 1)), previous(size(factors, 1)), current(size(factors, 1)), &
-                  uncertainty(size(factors, 1))
+                  uncertainty(size(factors, 1)), phases(size(factors, 1))
       integer :: starts(size(factors, 1) + 1), new_starts(size(factors, 1) + 1), n_new
       logical :: settled
       real(wp) :: noise
@@ -92,7 +94,7 @@ contains
             lo = starts(g)
             hi = starts(g + 1) - 1
             call group_moduli(matmul(w(lo:hi, lo:hi), blocks(lo:hi, lo:hi)), block_scale(lo), current(lo:hi), &
-                              uncertainty(lo:hi))
+                              uncertainty(lo:hi), phases(lo:hi))
          end do
          ! the splits W shows converged now
          n_new = 1
@@ -126,6 +128,7 @@ contains
          if (uncertainty(i) > 0.1_wp*target*period) resolved(i) = .false.
       end do
       resolved = resolved_sorted(current, resolved)
+      if (present(arguments)) arguments = values_sorted(current, phases)
    end subroutine factored_exponents
 
    !> blk ← r blk, rescaled by a power of two into `scale` (its logarithm).
@@ -144,9 +147,9 @@ contains
 
    !> ln|λ| of the eigenvalues of e^scale b, and each one's uncertainty in ln|λ| (its
    !> eigenvalue's error bound relative to its modulus).
-   subroutine group_moduli(b, scale, log_moduli, uncertainty)
+   subroutine group_moduli(b, scale, log_moduli, uncertainty, phases)
       real(wp), intent(in) :: b(:, :), scale
-      real(wp), intent(out) :: log_moduli(:), uncertainty(:)
+      real(wp), intent(out) :: log_moduli(:), uncertainty(:), phases(:)
       real(wp) :: a(size(b, 1), size(b, 1)), wr(size(b, 1)), wi(size(b, 1)), dummy(1, 1), work(8*size(b, 1))
       real(wp) :: modulus, norm
       integer :: p, info, i
@@ -155,6 +158,7 @@ contains
          modulus = abs(b(1, 1))
          log_moduli(1) = safe_log(modulus) + scale
          uncertainty(1) = 0.0_wp
+         phases(1) = merge(0.0_wp, 4.0_wp*atan(1.0_wp), b(1, 1) >= 0.0_wp)
          return
       end if
       a = b
@@ -163,11 +167,13 @@ contains
       if (info /= 0) then
          log_moduli = safe_log(norm) + scale
          uncertainty = huge(1.0_wp)
+         phases = 0.0_wp
          return
       end if
       do i = 1, p
          modulus = hypot(wr(i), wi(i))
          log_moduli(i) = safe_log(modulus) + scale
+         phases(i) = atan2(wi(i), wr(i))
          ! backward-stable eigenvalues: |Δλ| ≲ p ε ‖b‖ (a simple eigenvalue of a group whose
          ! moduli are close); relative to |λ| that is the uncertainty of ln|λ|
          if (modulus > 0.0_wp) then
@@ -191,26 +197,20 @@ contains
    !> x in decreasing order.
    pure function sorted(x) result(y)
       real(wp), intent(in) :: x(:)
-      real(wp) :: y(size(x)), t
-      integer :: i, k
-      y = x
-      do i = 2, size(y)
-         t = y(i)
-         k = i - 1
-         do while (k >= 1)
-            if (y(k) >= t) exit
-            y(k + 1) = y(k)
-            k = k - 1
-         end do
-         y(k + 1) = t
-      end do
+      real(wp) :: y(size(x))
+      y = x(decreasing_order(x))
    end function sorted
 
-   !> The flags of x carried into x's decreasing order.
-   pure function resolved_sorted(x, flags) result(out)
+   !> The values v carried into x's decreasing order.
+   pure function values_sorted(x, v) result(out)
+      real(wp), intent(in) :: x(:), v(:)
+      real(wp) :: out(size(x))
+      out = v(decreasing_order(x))
+   end function values_sorted
+
+   !> The indices of x in decreasing order (insertion sort: m ≤ 40).
+   pure function decreasing_order(x) result(order)
       real(wp), intent(in) :: x(:)
-      logical, intent(in) :: flags(:)
-      logical :: out(size(x))
       integer :: order(size(x)), i, k, t
       order = [(i, i=1, size(x))]
       do i = 2, size(x)
@@ -223,7 +223,14 @@ contains
          end do
          order(k + 1) = t
       end do
-      out = flags(order)
+   end function decreasing_order
+
+   !> The flags of x carried into x's decreasing order.
+   pure function resolved_sorted(x, flags) result(out)
+      real(wp), intent(in) :: x(:)
+      logical, intent(in) :: flags(:)
+      logical :: out(size(x))
+      out = flags(decreasing_order(x))
    end function resolved_sorted
 
    !> a = q r by Householder reflections (a square matrix): q orthogonal, r upper triangular

@@ -27,7 +27,7 @@ module hillstab_integrate_system_point
       system_factors
    implicit none
    private
-   public :: system_point, resolve_exponents, exponents_need_factoring
+   public :: system_point, resolve_exponents, exponents_need_factoring, a2_needs_factoring, second_invariant
 
    !> a multiplier this far below the largest, or farther, may be lost in Φ
    real(wp), parameter :: spread_limit = 1.0e-3_wp
@@ -53,7 +53,10 @@ contains
    end subroutine system_point
 
    !> The exponents of `floquet` from the factored product where Φ cannot resolve them
-   !> (`exponents_need_factoring`); status_roundoff on `monodromy` where they stay unresolved.
+   !> (`exponents_need_factoring`), and a₂ from the multipliers found there where the
+   !> cancellation in ((tr Φ)² − tr Φ²)/2 exceeds a tenth of the tolerance relative to
+   !> max(1, |a₂|) (`a2_needs_factoring`); status_roundoff on `monodromy` where they stay
+   !> unresolved.
    subroutine resolve_exponents(system, form, alpha, beta, method, nodes, monodromy, floquet)
       class(hill_system_t), intent(in) :: system            !! the system
       type(system_form_t), intent(in) :: form               !! prepared at the point's ε
@@ -61,26 +64,79 @@ contains
       type(system_method_t), intent(in) :: method           !! method and tolerance
       type(system_nodes_t), intent(inout) :: nodes          !! as for `system_monodromy`
       type(system_monodromy_t), intent(inout) :: monodromy  !! the point's monodromy: status, steps
-      type(system_floquet_t), intent(inout) :: floquet      !! its analysis: the exponents
-      real(wp), allocatable :: factors(:, :, :), all_exponents(:)
+      type(system_floquet_t), intent(inout) :: floquet      !! its analysis: exponents, a₂
+      real(wp), allocatable :: factors(:, :, :), all_exponents(:), arguments(:)
       logical, allocatable :: resolved(:)
       type(error_t), allocatable :: cause
       integer :: count, n
-      if (.not. exponents_need_factoring(floquet, monodromy, method%tolerance)) return
+      logical :: need_exponents, need_a2
+      need_exponents = exponents_need_factoring(floquet, monodromy, method%tolerance)
+      need_a2 = a2_needs_factoring(floquet, monodromy, method%tolerance)
+      if (.not. (need_exponents .or. need_a2)) return
       n = form%n
       call system_factors(system, form, alpha, beta, method, nodes, monodromy, factors, count, cause)
       if (allocated(cause)) then
-         ! the exponents stay those of Φ, which do not meet the tolerance
+         ! the values stay those of Φ, which do not meet the tolerance
          monodromy%status = max(monodromy%status, status_roundoff)
          floquet%exponents_resolved = .false.
          return
       end if
-      allocate (all_exponents(2*n), resolved(2*n))
-      call factored_exponents(factors(:, :, 1:count), form%period, method%tolerance, all_exponents, resolved)
-      floquet%exponents = all_exponents(1:n)
-      floquet%exponents_resolved = all(resolved(1:n))
-      if (.not. floquet%exponents_resolved) monodromy%status = max(monodromy%status, status_roundoff)
+      allocate (all_exponents(2*n), resolved(2*n), arguments(2*n))
+      call factored_exponents(factors(:, :, 1:count), form%period, method%tolerance, all_exponents, resolved, &
+                              arguments=arguments)
+      if (need_exponents) then
+         floquet%exponents = all_exponents(1:n)
+         floquet%exponents_resolved = all(resolved(1:n))
+         if (.not. floquet%exponents_resolved) monodromy%status = max(monodromy%status, status_roundoff)
+      end if
+      if (need_a2) then
+         call second_invariant(all_exponents*form%period, arguments, floquet%a2, floquet%overflow)
+         if (.not. all(resolved)) monodromy%status = max(monodromy%status, status_roundoff)
+      end if
    end subroutine resolve_exponents
+
+   !> Whether the cancellation in a₂ = ((tr Φ)² − tr Φ²)/2 loses it: its terms, up to
+   !> m² max|Φ_jk|², exceed |a₂| (at least 1) ten thousandfold and their rounding,
+   !> 4 ε times them, exceeds a tenth of the tolerance relative to max(1, |a₂|). (The
+   !> method's own error of Φ moves a₂ alike by every route.)
+   pure logical function a2_needs_factoring(floquet, monodromy, tolerance) result(need)
+      type(system_floquet_t), intent(in) :: floquet      !! the analysis of Φ
+      type(system_monodromy_t), intent(in) :: monodromy  !! Φ̃ and its scale
+      real(wp), intent(in) :: tolerance                  !! the point's tolerance
+      real(wp) :: log_norm, log_cancellation
+      integer :: m
+      m = 2*floquet%n
+      log_norm = log(max(1.0_wp, maxval(abs(monodromy%phi)))) + monodromy%log_scale
+      log_cancellation = log(real(m*m, wp)) + 2.0_wp*max(0.0_wp, log_norm) - log(max(1.0_wp, abs(floquet%a2)))
+      need = log_cancellation > log(1.0e4_wp) .and. &
+             log(4.0_wp*epsilon(1.0_wp)) + log_cancellation > log(0.1_wp*tolerance)
+   end function a2_needs_factoring
+
+   !> a₂ = Σ_{i<j} λ_i λ_j from the multipliers' logarithms of modulus and their arguments,
+   !> scaled by the largest product so that nothing overflows (±1e300 with `overflow`).
+   pure subroutine second_invariant(log_moduli, arguments, a2, overflow)
+      real(wp), intent(in) :: log_moduli(:), arguments(:)  !! by decreasing modulus
+      real(wp), intent(out) :: a2
+      logical, intent(inout) :: overflow
+      real(wp) :: top, x, power
+      integer :: i, j
+      top = log_moduli(1) + log_moduli(2)
+      x = 0.0_wp
+      do i = 1, size(log_moduli) - 1
+         do j = i + 1, size(log_moduli)
+            power = log_moduli(i) + log_moduli(j) - top
+            if (power > -700.0_wp) x = x + exp(power)*cos(arguments(i) + arguments(j))
+         end do
+      end do
+      if (x == 0.0_wp) then
+         a2 = 0.0_wp
+      else if (log(abs(x)) + top > log(1.0e300_wp)) then
+         a2 = sign(1.0e300_wp, x)
+         overflow = .true.
+      else
+         a2 = x*exp(max(top, -700.0_wp))
+      end if
+   end subroutine second_invariant
 
    !> Whether one of the n exponents of `floquet` may be off by more than a tenth of the
    !> tolerance because its multiplier lies far below the largest (see the module's text).
