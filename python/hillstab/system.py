@@ -64,11 +64,16 @@ class SystemFloquet:
 
     ``multipliers``: the 2n multipliers λ of Φ (complex, by decreasing modulus; where they
     would exceed 1e300 they are Φ̃'s and ``log_scale`` s > 0, Φ's being e^s times them);
-    ``exponents``: ln|λ_i|/P of the n largest; ``verdict``: 1 stable, 0 unstable, −1
-    marginal (the error bound does not decide); ``kind``: 0 stable, 1 at +1, 2 at −1,
-    3 combination resonance, 4 damped (`kind_name`); ``trace`` tr Φ and ``a2`` =
-    ((tr Φ)² − tr Φ²)/2 (±1e300 beyond); ``defect``: the structural defect (−1: not
-    computable); ``error_estimate`` and ``status`` (0, or 1 round-off limited) of the monodromy.
+    ``exponents``: ln|λ_i|/P of the n largest, each to the tolerance however many decades
+    they span (from the period's product kept factored where Φ cannot resolve them; the
+    smaller ``multipliers`` of Φ itself may then be rounding); ``verdict``: 1 stable,
+    0 unstable, −1 marginal (the error bound does not decide); ``kind``: 0 stable, 1 at +1,
+    2 at −1, 3 combination resonance, 4 damped, 5 undecided (a marginal verdict;
+    `kind_name`); ``trace`` tr Φ and ``a2`` = Σ λ_iλ_j = ((tr Φ)² − tr Φ²)/2 (±1e300
+    beyond); ``defect``: the structural defect relative to |Φ|² or to Hadamard's bound of
+    det Φ; ``error_estimate`` (never below the method's rounding) and ``status`` (0, or 1
+    round-off limited: the tolerance lies below the rounding or an exponent is not resolved)
+    of the monodromy.
     """
 
     def __init__(self, **values):
