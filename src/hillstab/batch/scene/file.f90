@@ -22,8 +22,8 @@ module hillstab_batch_scene_file
    private
    public :: scene_file_t, item_t, open_scene_file, close_scene_file
    public :: locate_group, group_present, group_sets, group_items, check_read, fail, shortened, joined, item_name
-   public :: group_count, group_names, string_across_lines, long_item, repeated_item, item_subscripted, check_group_as_written, &
-      not_regular_file
+   public :: group_count, group_names, string_across_lines, long_item, repeated_item, item_subscripted
+   public :: check_group_as_written, not_regular_file
    public :: max_line_length, max_scene_bytes, text_len, read_len
 
    !> Longest line of a scene or points file.
