@@ -501,22 +501,61 @@ contains
    end function scene_text
 
    !> Positions just after each `&group` of `text` (lines joined by new lines) that opens
-   !> a line, after blanks or an output header's `#`: the groups a namelist read sees
-   !> (not a `&series` named in a header's prose).
+   !> a line, after blanks or an output header's `#`, or that follows the closing `/` of
+   !> another group on its line: the groups a namelist read sees (not a `&series` named in
+   !> a header's prose).
    function group_starts(text, group) result(starts)
       character(len=*), intent(in) :: text, group
       integer, allocatable :: starts(:)
-      integer :: i, line_start
+      integer :: i, line_start, last
+      character(len=:), allocatable :: before
       allocate (starts(0))
       do i = 1, len(text) - len(group) - 1
          if (text(i:i) /= "&") cycle
          line_start = index(text(:i), achar(10), back=.true.) + 1
-         if (verify(text(line_start:i - 1), " #") /= 0) cycle
+         before = text(line_start:i - 1)
+         if (verify(before, " #") /= 0) then
+            ! after a group's closing '/' (outside quotes) on the same line
+            last = len_trim(before)
+            if (last == len(before) .or. before(last:last) /= "/") cycle
+            if (string_open(before)) cycle
+         end if
          if (lower(text(i + 1:i + len(group))) /= lower(group)) cycle
          if (index(" /,"//achar(10), text(i + len(group) + 1:i + len(group) + 1)) == 0) cycle
          starts = [starts, i + len(group) + 1]
       end do
    end function group_starts
+
+   !> The position just after the first `&group` of `text` (lines joined by new lines)
+   !> that follows a blank or a line break, as `locate_group` finds it; 0 when none.
+   function first_group_start(text, group) result(start)
+      character(len=*), intent(in) :: text, group
+      integer :: start
+      integer :: i
+      start = 0
+      do i = 1, len(text) - len(group) - 1
+         if (text(i:i) /= "&") cycle
+         if (i > 1) then
+            if (index(" "//achar(10), text(i - 1:i - 1)) == 0) cycle
+         end if
+         if (lower(text(i + 1:i + len(group))) /= lower(group)) cycle
+         if (index(" /,"//achar(10), text(i + len(group) + 1:i + len(group) + 1)) == 0) cycle
+         start = i + len(group) + 1
+         return
+      end do
+   end function first_group_start
+
+   !> Whether a text leaves a quoted string open at its end.
+   pure logical function string_open(text)
+      character(len=*), intent(in) :: text
+      character :: quote
+      integer :: i
+      quote = " "
+      do i = 1, len(text)
+         call track_quote(text(i:i), quote)
+      end do
+      string_open = quote /= " "
+   end function string_open
 
    !> How many times `&group` opens in the file (a second one would be ignored by the
    !> namelist read).
@@ -563,11 +602,15 @@ contains
       character(len=:), allocatable :: name
       character(len=:), allocatable :: text
       integer, allocatable :: starts(:)
-      integer :: i, opened, eq, j
+      integer :: i, opened, eq, j, first
       character :: quote
       name = ""
       text = scene_text(unit, achar(10))
+      ! the group the readers read: the first `&group` after a blank or a line break
+      ! (`locate_group`), also when it does not open its line
       starts = group_starts(text, group)
+      first = first_group_start(text, group)
+      if (first > 0) starts = [first]
       if (size(starts) == 0) return
       quote = " "
       opened = 0
