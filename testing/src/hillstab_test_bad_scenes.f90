@@ -210,7 +210,7 @@ contains
          bad_case_t(y//"/ &system n=2, mass='@DIR@_m_ragged.txt', cos=1,0,0,1 / &chart /", "system", &
                     "mass: '"), &
          bad_case_t(y//"/ &system n=2, mass='@DIR@_m_ragged.txt', cos=1,0,0,1 / &chart /", "system", &
-                    "line 2: 1 numbers where the rows before have 3 (ragged rows"), &
+                    "line 2: 1 number where the rows before have 3 (ragged rows"), &
          bad_case_t(y//"/ &system n=2, mass='@DIR@_m_wide.txt', cos=1,0,0,1 / &chart /", "system", &
                     "mass: the file has rows of 4 numbers, and n = 2 needs rows of 2"), &
          bad_case_t(y//"/ &system n=2, cos='@DIR@_m_wide.txt' / &chart /", "system", &

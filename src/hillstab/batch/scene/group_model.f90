@@ -425,7 +425,8 @@ contains
          if (row_width == 0) row_width = width
          if (width /= row_width) then
             call fail(error, source, group, variable, "'"//path//"' line "//integer_text(line_number)//": "// &
-               integer_text(width)//" numbers where the rows before have "//integer_text(row_width)// &
+               integer_text(width)//trim(merge(" number ", " numbers", width == 1))//" where the rows before have "// &
+               integer_text(row_width)// &
                " (ragged rows: every row of a matrix holds n numbers)")
             exit
          end if
