@@ -510,7 +510,7 @@ contains
    !> Positive definiteness does not depend on the rows' scales: diag(1e154, 1) and
    !> diag(1e20, 1) are accepted with their exact inverses, [[1e20, 1e10], [1e10, 1 + 1e-6]]
    !> too (its second pivot is 1e-6); [[1, 2], [2, 1]] is refused as not positive definite,
-   !> diag(1e-300, 1) as out of range, not as indefinite.
+   !> diag(1e-300, 1) and diag(1, 1e308) as out of range, not as indefinite.
    subroutine mass_scales_apart(ctx)
       type(test_context_t), intent(inout) :: ctx
       real(wp) :: inverse(2, 2)
@@ -532,6 +532,8 @@ contains
       call check(ctx, .not. ok .and. .not. out_of_range, "[[1, 2], [2, 1]] is not positive definite")
       call cholesky_inverse(reshape([1.0e-300_wp, 0.0_wp, 0.0_wp, 1.0_wp], [2, 2]), inverse, ok, out_of_range)
       call check(ctx, .not. ok .and. out_of_range, "diag(1e-300, 1) out of range")
+      call cholesky_inverse(reshape([1.0_wp, 0.0_wp, 0.0_wp, 1.0e308_wp], [2, 2]), inverse, ok, out_of_range)
+      call check(ctx, .not. ok .and. out_of_range, "diag(1, 1e308) out of range")
       call cholesky_inverse(reshape([1.0e-300_wp, 1.0e300_wp, 1.0e300_wp, 1.0_wp], [2, 2]), inverse, ok)
       call check(ctx, .not. ok, "no overflow on [[1e-300, 1e300], [1e300, 1]]")
    end subroutine mass_scales_apart

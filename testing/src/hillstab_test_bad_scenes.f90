@@ -244,7 +244,9 @@ contains
          bad_case_t(y//"task='points' / &system n=1, cos=1 / &points file='@DIR@_bigbeta.dat' /", "points", &
                     "file: the system's frequencies"), &
          bad_case_t(y//"/ &system n=1, mass=1e-300, cos=1 / &chart /", "system", &
-                    "mass: M^-1 would leave the range of double precision")]
+                    "mass: M is out of the range the methods take"), &
+         bad_case_t(y//"task='boundaries' / &system n=2, mass=1,0,0,1e308, cos=1,0,0,1 / &chart n_beta=3 /", &
+                    "system", "mass: M is out of the range the methods take (an entry above 1.0e280")]
    end function bad_cases
 
    !> Write the points files the bad cases refer to (`<dir>_badline.dat`, ...).

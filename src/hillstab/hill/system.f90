@@ -37,11 +37,12 @@ module hillstab_hill_system
 
    !> Most degrees of freedom of a system (a 40 × 40 monodromy; the cost grows as n³).
    integer, parameter :: max_dof = 20
-   !> The smallest Cholesky pivot of a mass matrix: below it M⁻¹ (about one over the pivot)
-   !> and its products would leave the range of double precision.
+   !> The smallest Cholesky pivot of a mass matrix, and one over the largest magnitude of
+   !> its entries: beyond, M⁻¹ (about one over the pivot) or the methods' products (ν² M
+   !> in Hill's method) would leave the range of double precision.
    real(wp), parameter :: min_pivot = 1.0e-280_wp
-   !> `min_pivot` in messages (pure procedures write no numbers).
-   character(len=*), parameter :: min_pivot_text = "1.0e-280"
+   !> `min_pivot` and its inverse in messages (pure procedures write no numbers).
+   character(len=*), parameter :: min_pivot_text = "1.0e-280", max_entry_text = "1.0e280"
 
    !> A system of n coupled Hill equations (see the module's text).
    type, abstract, extends(model_base_t) :: hill_system_t
@@ -163,8 +164,9 @@ contains
    !> The inverse of a symmetric positive definite matrix by Cholesky; `ok` false when the
    !> matrix is not positive definite (a pivot ≤ n ε times its own diagonal entry: the
    !> test does not depend on the scale of the other rows, so diag(1e154, 1) passes) or
-   !> when a pivot lies below `min_pivot` (then `out_of_range`: the inverse would leave the
-   !> range of double precision).
+   !> when an entry exceeds 1/`min_pivot` in magnitude or a pivot lies below `min_pivot`
+   !> (then `out_of_range`: the inverse or the products with M would leave the range of
+   !> double precision).
    pure subroutine cholesky_inverse(a, inverse, ok, out_of_range)
       real(wp), intent(in) :: a(:, :)          !! the matrix (n × n, symmetric)
       real(wp), intent(out) :: inverse(:, :)   !! its inverse
@@ -177,6 +179,10 @@ contains
       inverse = 0.0_wp
       ok = .false.
       if (present(out_of_range)) out_of_range = .false.
+      if (.not. (maxval(abs(a)) <= 1.0_wp/min_pivot)) then
+         if (present(out_of_range)) out_of_range = .true.
+         return
+      end if
       do j = 1, n
          s = a(j, j) - sum(l(j, 1:j - 1)**2)
          if (.not. (s > n*epsilon(1.0_wp)*abs(a(j, j)) .and. s > 0.0_wp)) return
@@ -212,8 +218,9 @@ contains
       logical, intent(in) :: out_of_range  !! as `cholesky_inverse` returned it
       character(len=:), allocatable :: message
       if (out_of_range) then
-         message = "mass: M^-1 would leave the range of double precision (a Cholesky pivot below "// &
-                   min_pivot_text//"): scale the masses up"
+         message = "mass: M is out of the range the methods take (an entry above "//max_entry_text// &
+                   " in magnitude or a Cholesky pivot below "//min_pivot_text//": M^-1 or the products with M "// &
+                   "would leave double precision): scale the masses"
       else
          message = "mass: M must be positive definite (its Cholesky factorisation meets a pivot <= 0)"
       end if
