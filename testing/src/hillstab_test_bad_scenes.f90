@@ -225,6 +225,18 @@ contains
                     "_fifo' is not a regular file (a FIFO, device or socket), not a matrix file"), &
          bad_case_t(sp//"&points file='@DIR@_fifo' /", "points", "file: '"), &
          bad_case_t(sp//"&points file='@DIR@_fifo' /", "points", "is not a regular file (a FIFO"), &
+         bad_case_t("&scene output='@OUT@', model='sampled' / &sampled file='@DIR@_fifo' / &chart /", "sampled", &
+                    "file: '"), &
+         bad_case_t("&scene output='@OUT@', model='sampled' / &sampled file='@DIR@_fifo' / &chart /", "sampled", &
+                    "_fifo' is not a regular file (a FIFO, device or socket), not a file of numbers"), &
+         bad_case_t("&scene output='@OUT@', model='sampled' / &sampled file='@DIR@_dir' / &chart /", "sampled", &
+                    "_dir' is a directory, not a file of numbers"), &
+         bad_case_t("&scene output='@OUT@', model='sampled' / &sampled file='@DIR@_m_empty.txt' / &chart /", &
+                    "sampled", "file: '"), &
+         bad_case_t("&scene output='@OUT@', model='sampled' / &sampled file='@DIR@_m_empty.txt' / &chart /", &
+                    "sampled", "_m_empty.txt' line 2: an empty field in '5,,7'"), &
+         bad_case_t("&scene output='@OUT@', model='sampled' / &sampled period=2, period=4, samples=1,2 / &chart /", &
+                    "sampled", "period: given twice in the group"), &
          ! sizes blamed on the variable that can fix them
          bad_case_t(y//"/ &system n=1, damping=1e15, cos=1 / &chart /", "system", &
                     "damping: the damping and gyroscopic rates reach |M^-1 (C + G)| = 1.0e15"), &
