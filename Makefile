@@ -8,8 +8,9 @@
 #                       environment build/venv, then its pytest suite (python/tests)
 #   make test-sanitize  tests again built with AddressSanitizer and UndefinedBehaviorSanitizer
 #                       (any report fails the run, leaks included; scripts/sanitize/)
-#   make fuzz           300 mutated scenes, 90 mutated points files, 140 mutated templates and
-#                       60 damaged checkpoints resumed, on the normal and the trap build (scripts/fuzz.py)
+#   make fuzz           300 mutated scenes, 90 mutated points files, 140 mutated templates, 200
+#                       system scenes with mutated matrix files and 60 damaged checkpoints resumed,
+#                       on the normal and the trap build (scripts/fuzz.py)
 #   make check-memory   valgrind memcheck on small scenes of every task
 #   make check-scenes   every scene of data/scenes against the stored checksums of its data lines
 #                       (scripts/check_scenes.sh; --update after a change that means to alter them)
@@ -112,16 +113,18 @@ test-sanitize: setup-build
 	   $(if $(SANITIZE_SKIP),-- --skip=$(SANITIZE_SKIP))
 
 # 300 seeded mutations of the shipped scenes, 90 of points files (and of &points file),
-# 140 of every task's template and 60 damaged checkpoints resumed, on the normal and on the
+# 140 of every task's template, 200 system scenes (matrix files with nulls, empty fields,
+# ragged rows; FIFOs; paths across lines; repeats) and 60 damaged checkpoints resumed, on the normal and on the
 # trap build (scripts/fuzz.py: whole NaN-free files or one message line, no temp file, in
 # time; a damaged checkpoint resumed into the uninterrupted file or refused)
 FUZZ_COUNT ?= 300
 FUZZ_POINTS_COUNT ?= 90
 FUZZ_TEMPLATE_COUNT ?= 140
 FUZZ_CHECKPOINT_COUNT ?= 60
+FUZZ_SYSTEM_COUNT ?= 200
 FUZZ_SEED ?= 7
 FUZZ_ARGS = --count $(FUZZ_COUNT) --points-count $(FUZZ_POINTS_COUNT) --template-count $(FUZZ_TEMPLATE_COUNT) \
-   --checkpoint-count $(FUZZ_CHECKPOINT_COUNT) \
+   --checkpoint-count $(FUZZ_CHECKPOINT_COUNT) --system-count $(FUZZ_SYSTEM_COUNT) \
    --seed $(FUZZ_SEED)
 fuzz: setup-test
 	$(FPM) build >/dev/null

@@ -29,6 +29,17 @@ Two further families follow, with the same acceptance rules:
     shrunk and mutated like the shipped scenes, sometimes with their optional commented
     groups (`&physical` and its alternatives) switched on.
 
+  - systems (--system-count): the shipped system scenes (&scene model = 'system') with one
+    of their &system matrices given as a matrix file, mutated: NUL bytes, empty fields
+    (`5,,7`, a leading comma, a line of commas), ragged rows, rows of the wrong width,
+    extreme or non-finite entries, binary junk, very long lines, CR or CRLF line ends, UTF-16,
+    comments and closing commas (which are fine); or the matrix named as a FIFO, a
+    directory, a device, a missing file or a dangling link; or the scene read otherwise than
+    written: the quoted path across a line break, &system given twice, a variable given twice,
+    a subscripted variable; or extreme numbers in the matrices' lists. A route, a line break
+    or a repeat must be refused (exit 2) with a message naming `&system` and the variable (the
+    group for a second &system); FIFOs and devices must not block the run.
+
 A last family damages checkpoints (--checkpoint-count): a chart, a points run and a
 Lyapunov map, each killed with SIGKILL while the test hook HILLSTAB_TEST_PAUSE_AFTER_UNITS
 holds it mid-run (--checkpoint-interval 0), leave checkpoints; a copy of one gets one to
@@ -45,7 +56,7 @@ With --signals, a chart is first interrupted by SIGINT, SIGTERM and SIGHUP: each
 exit 128 + signal, remove its temporary file and keep the old output.
 
 usage: scripts/fuzz.py --hillstab BUILD/app/hillstab [--count 300] [--points-count 90]
-                       [--template-count 140] [--checkpoint-count 60] [--seed 7]
+                       [--template-count 140] [--system-count 200] [--checkpoint-count 60] [--seed 7]
                        [--timeout 30] [--signals]
 Exit status 0 when every scene passes; the failures are listed with the scene text saved
 under the report directory (default build/fuzz_failures).
@@ -152,6 +163,162 @@ MAX_LINE_LENGTH = 65536       # hillstab_batch_scene_file: max_line_length
 POINTS_ROUTES = ["missing_points.dat", "", " ", "data", "data/", "/dev/zero", "/dev/null", "fuzz.fifo",
                  "link_points.dat", "dangling_link.dat", "data/points/fig4.dat", "./fuzz_points.dat",
                  "fuzz_points.dat/", "x" * 300 + ".dat", "x" * 5000, "fuzz.nml", "out"]
+
+
+# what a &system matrix may be named as instead of a file of its rows
+MATRIX_ROUTES = ["no_such_matrix.txt", "fuzz.fifo", "data", "data/", "/dev/null", "/dev/zero", "dangling_link.dat",
+                 "out", "fuzz_matrix.txt/"]
+SYSTEM_MATRICES = ("mass", "damping", "gyroscopic", "k0", "b", "cos", "sin")
+# entries a matrix file or list might carry
+EXTREME_ENTRIES = ["1e308", "-1e308", "1e309", "4.9e-324", "1e-300", "1e154", "1e200", "-1e15", "1e15", "nan",
+                   "inf", "-inf", "0", "1d5", "3*1", "-", "1e"]
+
+
+def system_group(text):
+    """The match of a scene's &system group: group(1) is its body (up to the closing '/')."""
+    return re.search(r"(?im)^\s*&system\b([^/]*)/", text)
+
+
+def system_items(body):
+    """The (name, value) items of a &system body, names lower case."""
+    parts = re.split(r"\b([A-Za-z_][A-Za-z_0-9]*)\s*=", body)
+    return [(parts[i].lower(), parts[i + 1].strip().rstrip(",").strip()) for i in range(1, len(parts) - 1, 2)]
+
+
+def matrix_rows(items, name):
+    """The rows of matrix `name` of a &system group (the default when it is not given), as
+    lists of number texts; the dimension n."""
+    values = dict(items)
+    n = int(float(values.get("n", "1")))
+    if name in values:
+        numbers = [x for x in re.split(r"[,\s]+", values[name]) if x]
+    else:
+        identity = name in ("mass", "b")
+        numbers = [("1.0" if identity and i == j else "0.0") for i in range(n) for j in range(n)]
+    rows = [numbers[k:k + n] for k in range(0, len(numbers), n)] or [["1.0"]]
+    return rows, n
+
+
+def mutate_matrix(rows, rng):
+    """One to three mutations of a matrix file given as its rows; returns bytes and whether
+    the result is still the rows as written (comments, closing commas, tabs)."""
+    lines = [" ".join(row) for row in rows]
+    data = None
+    for _ in range(rng.randint(1, 3)):
+        if data is not None:
+            break
+        kind = rng.randrange(14)
+        i = rng.randrange(len(lines))
+        if kind == 0:  # NUL bytes
+            raw = "\n".join(lines).encode()
+            at = rng.randrange(len(raw) + 1)
+            data = raw[:at] + b"\0" * rng.choice([1, 2]) + raw[at:] + b"\n"
+        elif kind == 1:  # empty fields
+            lines[i] = rng.choice([lines[i].replace(" ", ",,", 1), "," + lines[i], lines[i].replace(" ", ", ,", 1)])
+        elif kind == 2:  # ragged: a number dropped, moved to the next row, or added
+            fields = lines[i].split()
+            action = rng.randrange(3)
+            if action == 0 and len(fields) > 1:
+                lines[i] = " ".join(fields[:-1])
+            elif action == 1 and i + 1 < len(lines):
+                lines[i + 1] = fields[-1] + " " + lines[i + 1]
+                lines[i] = " ".join(fields[:-1])
+            else:
+                lines[i] = lines[i] + " 0.5"
+        elif kind == 3:  # a line of commas or blanks and commas
+            lines.insert(i, rng.choice([",", ",,", " , ", "\t,"]))
+        elif kind == 4:  # line ends
+            data = ("\r\n" if rng.random() < 0.5 else "\r").join(lines).encode() + b"\r\n"
+        elif kind == 5:  # an extreme or non-finite entry
+            fields = lines[i].split()
+            fields[rng.randrange(len(fields))] = rng.choice(EXTREME_ENTRIES)
+            lines[i] = " ".join(fields)
+        elif kind == 6:  # binary junk
+            junk = bytes(rng.randrange(256) for _ in range(rng.choice([1, 16, 512])))
+            data = "\n".join(lines).encode() + b"\n" + junk
+        elif kind == 7:  # a very long line
+            n = rng.choice([MAX_LINE_LENGTH, MAX_LINE_LENGTH + 1, 70000])
+            lines.insert(i, rng.choice(["1" * n, " " * n + "1", "#" * n]))
+        elif kind == 8:  # comments and blank lines (fine)
+            lines.insert(i, rng.choice(["# a comment", "", "   ", "\t"]))
+            lines[i] = lines[i] + rng.choice(["", "  # row"])
+        elif kind == 9:  # all rows on one line (the wrong width unless n = 1)
+            lines = [" ".join(lines)]
+        elif kind == 10:  # closing commas, commas between, tabs (fine)
+            lines = [rng.choice([l.replace(" ", ", ") + ",", l.replace(" ", "\t"), l.replace(" ", " , ")])
+                     for l in lines]
+        elif kind == 11:  # cut short
+            text = "\n".join(lines)
+            lines = [text[:rng.randrange(len(text) + 1)]]
+        elif kind == 12:  # UTF-16, a byte-order mark
+            data = ("\n".join(lines) + "\n").encode("utf-16") if rng.random() < 0.5 else \
+                b"\xef\xbb\xbf" + ("\n".join(lines) + "\n").encode()
+        else:  # a row dropped or doubled (the wrong count of rows)
+            if rng.random() < 0.5 and len(lines) > 1:
+                del lines[i]
+            else:
+                lines.insert(i, lines[i])
+    return data if data is not None else ("\n".join(lines) + "\n").encode()
+
+
+def system_cases(texts, count, rng):
+    """`count` cases of (name, scene text, files, message_names, must_refuse) from the shipped
+    system scenes: a matrix given as a mutated file, as a route to something else, or the
+    scene read otherwise than written (see the module's text)."""
+    bases = [(name, text) for name, text in texts if system_group(text)]
+    for k in range(count):
+        name, scene = bases[k % len(bases)]
+        m = system_group(scene)
+        items = system_items(m.group(1))
+        given = [n for n, _ in items if n in SYSTEM_MATRICES]
+        variable = rng.choice(given) if given and rng.random() < 0.7 else rng.choice(SYSTEM_MATRICES)
+        rows, n = matrix_rows(items, variable)
+        body = m.group(1)
+        # the group without `variable`, then the variable added at its start
+        others = ", ".join("%s = %s" % (a, v) for a, v in items if a != variable)
+        kind = rng.randrange(10)
+        files = {}
+        names, must = None, False
+        if kind <= 3:
+            path = "fuzz_matrix.txt"
+            files = {path: mutate_matrix(rows, rng)}
+            new_body = " %s = '%s', %s\n" % (variable, path, others)
+            label = "matrix file"
+        elif kind == 4:
+            route = rng.choice(MATRIX_ROUTES)
+            new_body = " %s = '%s', %s\n" % (variable, route, others)
+            label = "route " + route
+            names, must = "&system: %s:" % variable, True
+        elif kind == 5:  # the path across a line break
+            path = "fuzz_matrix.txt"
+            files = {path: ("\n".join(" ".join(r) for r in rows) + "\n").encode()}
+            cut = rng.randrange(1, len(path))
+            new_body = " %s = '%s\n%s', %s\n" % (variable, path[:cut], path[cut:], others)
+            label = "path across lines"
+            names, must = "&system: %s: a quoted string runs on" % variable, True
+        elif kind == 6:  # a variable given twice
+            twice = rng.choice([a for a, _ in items])
+            value = dict(items)[twice]
+            new_body = body.rstrip() + ",\n   %s = %s\n" % (twice, value)
+            label = "%s twice" % twice
+            names, must = "&system: %s: given twice" % twice, True
+        elif kind == 7:  # a subscripted variable
+            new_body = body.rstrip() + ",\n   %s(1) = 2.0\n" % variable
+            label = "%s(1)" % variable
+            names, must = "&system: %s:" % variable, True
+        elif kind == 8:  # &system given twice
+            new_body = body
+            label = "second &system"
+            names, must = "&system: the group is given 2 times", True
+        else:  # extreme entries in the list
+            numbers = [x for row in rows for x in row]
+            numbers[rng.randrange(len(numbers))] = rng.choice(EXTREME_ENTRIES)
+            new_body = " %s = %s, %s\n" % (variable, ", ".join(numbers), others)
+            label = "extreme %s" % variable
+        text = scene[:m.start(1)] + new_body + scene[m.end(1):]
+        if kind == 8:
+            text = text + "&system" + body + "/\n"
+        yield "%s (%s)" % (name, label), text, files, names, must
 
 
 def mutate_points(text, rng):
@@ -366,10 +533,10 @@ def snapshot(directory):
     return files
 
 
-def run_one(hillstab, text, work, timeout, files=None, message_names=None):
+def run_one(hillstab, text, work, timeout, files=None, message_names=None, must_refuse=False):
     """Run one scene (with `files`, name -> bytes, written beside it); return a list of
     problems (empty: pass) and the exit status. With `message_names`, an exit 1 or 2 must
-    name it (e.g. "&points: file:")."""
+    name it (e.g. "&points: file:"); with `must_refuse`, the run must exit 2."""
     scene = os.path.join(work, "fuzz.nml")
     with open(scene, "w", encoding="utf-8", errors="replace") as f:
         f.write(text)
@@ -408,6 +575,8 @@ def run_one(hillstab, text, work, timeout, files=None, message_names=None):
             problems.append("exit %d, the message does not name %s: %s" % (status, message_names, err_lines[0][:300]))
     else:
         problems.append("exit status %d: %s" % (status, " | ".join(err_lines[:4])))
+    if must_refuse and status != 2:
+        problems.append("exit %d where the scene must be refused (exit 2)" % status)
     leftovers = [p for p in glob.glob(os.path.join(work, "**", "*.part*"), recursive=True)]
     if leftovers:
         problems.append("temporary files left: " + ", ".join(os.path.relpath(p, work) for p in leftovers))
@@ -795,6 +964,8 @@ def main():
     parser.add_argument("--count", type=int, default=300, help="number of mutated scenes")
     parser.add_argument("--points-count", type=int, default=90, help="number of mutated points files or routes")
     parser.add_argument("--template-count", type=int, default=140, help="number of mutated templates")
+    parser.add_argument("--system-count", type=int, default=200,
+                        help="number of system scenes with mutated matrix files, routes or repeats")
     parser.add_argument("--checkpoint-count", type=int, default=60, help="number of damaged checkpoints resumed")
     parser.add_argument("--seed", type=int, default=7, help="random seed (same seed, same scenes)")
     parser.add_argument("--timeout", type=float, default=30.0, help="seconds allowed per scene")
@@ -830,7 +1001,8 @@ def main():
     families = [("scenes", scene_cases()),
                 ("points", points_cases(texts, templates, args.points_count, random.Random(args.seed * 1000 + 1))),
                 ("templates", ((n, t, None, None) for n, t in
-                               template_cases(templates, args.template_count, random.Random(args.seed * 1000 + 2))))]
+                               template_cases(templates, args.template_count, random.Random(args.seed * 1000 + 2)))),
+                ("systems", system_cases(texts, args.system_count, random.Random(args.seed * 1000 + 4)))]
     try:
         if args.signals:
             problems = check_signals(hillstab, work)
@@ -846,9 +1018,11 @@ def main():
             started = time.monotonic()
             n_cases = 0
             family_counts = {}
-            for k, (name, text, files, names) in enumerate(cases):
+            for k, case in enumerate(cases):
+                name, text, files, names = case[:4]
+                must = case[4] if len(case) > 4 else False
                 n_cases += 1
-                problems, status, elapsed = run_one(hillstab, text, work, args.timeout, files, names)
+                problems, status, elapsed = run_one(hillstab, text, work, args.timeout, files, names, must)
                 slowest = max(slowest, elapsed)
                 counts[status] = counts.get(status, 0) + 1
                 family_counts[status] = family_counts.get(status, 0) + 1

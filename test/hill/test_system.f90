@@ -13,7 +13,7 @@ module test_system
    use hillstab_hill_model_meissner, only: meissner_model_t
    use hillstab_hill_transfer, only: trace_t
    use hillstab_integrate_monodromy, only: method_t, monodromy_trace, method_magnus6
-   use hillstab_hill_system, only: system_form_t, prepare_system
+   use hillstab_hill_system, only: system_form_t, prepare_system, cholesky_inverse
    use hillstab_hill_system_matrix, only: matrix_system_t
    use hillstab_hill_system_scalar, only: scalar_system_t
    use hillstab_hill_system_floquet
@@ -39,7 +39,8 @@ contains
          new_unittest("combination_tongue_first_order", combination_tongue_first_order), &
          new_unittest("structure_defects", structure_defects), &
          new_unittest("scaled_growth_exponent", scaled_growth_exponent), &
-         new_unittest("bad_matrices_named", bad_matrices_named)])
+         new_unittest("bad_matrices_named", bad_matrices_named), &
+         new_unittest("mass_scales_apart", mass_scales_apart)])
    end function collect_system
 
    !> Two pendula of lengths 1 and l2 joined by a spring (c: its stiffness against gravity's),
@@ -505,4 +506,35 @@ contains
                     "message names "//name//": "//error%message)
       end subroutine expect
    end subroutine bad_matrices_named
+
+   !> Positive definiteness does not depend on the rows' scales: diag(1e154, 1) and
+   !> diag(1e20, 1) are accepted with their exact inverses, [[1e20, 1e10], [1e10, 1 + 1e-6]]
+   !> too (its second pivot is 1e-6); [[1, 2], [2, 1]] is refused as not positive definite,
+   !> diag(1e-300, 1) and diag(1, 1e308) as out of range, not as indefinite.
+   subroutine mass_scales_apart(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: inverse(2, 2)
+      logical :: ok, out_of_range
+      call cholesky_inverse(reshape([1.0e154_wp, 0.0_wp, 0.0_wp, 1.0_wp], [2, 2]), inverse, ok, out_of_range)
+      call check(ctx, ok, "diag(1e154, 1) is positive definite")
+      call check(ctx, inverse(1, 1), 1.0e-154_wp, rel=1.0e-15_wp)
+      call check(ctx, inverse(2, 2), 1.0_wp, rel=1.0e-15_wp)
+      call check(ctx, inverse(1, 2) == 0.0_wp .and. inverse(2, 1) == 0.0_wp, "diagonal inverse")
+      call cholesky_inverse(reshape([1.0e20_wp, 0.0_wp, 0.0_wp, 1.0_wp], [2, 2]), inverse, ok, out_of_range)
+      call check(ctx, ok, "diag(1e20, 1) is positive definite")
+      call cholesky_inverse(reshape([1.0e20_wp, 1.0e10_wp, 1.0e10_wp, 1.0_wp + 1.0e-6_wp], [2, 2]), inverse, ok, &
+                            out_of_range)
+      call check(ctx, ok, "second pivot 1e-6")
+      ! the inverse: [[1 + 1e-6, -1e10], [-1e10, 1e20]]/(1e14)
+      call check(ctx, inverse(2, 2), 1.0e6_wp, rel=1.0e-8_wp)
+      call check(ctx, inverse(1, 2), -1.0e-4_wp, rel=1.0e-8_wp)
+      call cholesky_inverse(reshape([1.0_wp, 2.0_wp, 2.0_wp, 1.0_wp], [2, 2]), inverse, ok, out_of_range)
+      call check(ctx, .not. ok .and. .not. out_of_range, "[[1, 2], [2, 1]] is not positive definite")
+      call cholesky_inverse(reshape([1.0e-300_wp, 0.0_wp, 0.0_wp, 1.0_wp], [2, 2]), inverse, ok, out_of_range)
+      call check(ctx, .not. ok .and. out_of_range, "diag(1e-300, 1) out of range")
+      call cholesky_inverse(reshape([1.0_wp, 0.0_wp, 0.0_wp, 1.0e308_wp], [2, 2]), inverse, ok, out_of_range)
+      call check(ctx, .not. ok .and. out_of_range, "diag(1, 1e308) out of range")
+      call cholesky_inverse(reshape([1.0e-300_wp, 1.0e300_wp, 1.0e300_wp, 1.0_wp], [2, 2]), inverse, ok)
+      call check(ctx, .not. ok, "no overflow on [[1e-300, 1e300], [1e300, 1]]")
+   end subroutine mass_scales_apart
 end module test_system

@@ -11,7 +11,7 @@ module hillstab_test_bad_scenes
    type :: bad_case_t
       character(len=400) :: text
       character(len=16) :: group
-      character(len=40) :: variable
+      character(len=120) :: variable
    end type bad_case_t
 
 contains
@@ -183,7 +183,82 @@ contains
          bad_case_t(y//"columns='alpha S' / &system n=1, cos=1 / &chart /", "scene", "columns: unknown column 'S'"), &
          bad_case_t(y//"/ &system n=1, cos=1 / &physical omega=10 / &chart /", "physical", "omega"), &
          bad_case_t(y//"/ &system n=1, cos=1 / &chart beta_max=1e12 /", "chart", "beta_max: the system's frequencies"), &
-         bad_case_t(y//"task='boundaries' / &system n=1, cos=1 / &chart n_beta=1 /", "chart", "n_beta")]
+         bad_case_t(y//"task='boundaries' / &system n=1, cos=1 / &chart n_beta=1 /", "chart", "n_beta"), &
+         ! read as written: a second group, a variable given twice, a path across a line break
+         bad_case_t(y//"/ &system n=1, cos=1 /"//achar(10)//"&system n=1, cos=2 / &chart /", "system", &
+                    "the group is given 2 times"), &
+         bad_case_t(y//"/ &system n=1, cos=1, cos=2 / &chart /", "system", "cos: given twice in the group"), &
+         bad_case_t(y//"/ &system n=1, cos=1, n=1 / &chart /", "system", "n: given twice in the group"), &
+         bad_case_t(y//"/ &system n=1, cos(1)=1 / &chart /", "system", "cos: a model's variable is given whole"), &
+         bad_case_t(s//"/ &chart n_alpha=3, n_alpha=4 /", "chart", "n_alpha: given twice in the group"), &
+         bad_case_t(s//"/ &chart n_alpha=3, N_ALPHA = 4 /", "chart", "n_alpha: given twice in the group"), &
+         bad_case_t(s//"task='coefficient' / &coefficient alphas=4, 6, alphas(2)=5 /", "coefficient", &
+                    "alphas: given twice in the group"), &
+         bad_case_t(s//"epsilon=0.1, epsilon=0.2 / &chart /", "scene", "epsilon: given twice"), &
+         bad_case_t(s//"method='exact' / &chart /", "scene", "method: given twice"), &
+         bad_case_t(y//"/ &system n=2, mass='@DIR@"//achar(10)//"_m_ok.txt', cos=1,0,0,1 / &chart /", "system", &
+                    "mass: a quoted string runs on to the next line"), &
+         ! matrix files
+         bad_case_t(y//"/ &system n=2, mass='@DIR@_m_empty.txt', cos=1,0,0,1 / &chart /", "system", &
+                    "mass: '"), &
+         bad_case_t(y//"/ &system n=2, mass='@DIR@_m_empty.txt', cos=1,0,0,1 / &chart /", "system", &
+                    "_m_empty.txt' line 2: an empty field in '5,,7'"), &
+         bad_case_t(y//"/ &system n=2, mass='@DIR@_m_lead.txt', cos=1,0,0,1 / &chart /", "system", &
+                    "_m_lead.txt' line 1: an empty field in ',1 0'"), &
+         bad_case_t(y//"/ &system n=2, mass='@DIR@_m_commas.txt', cos=1,0,0,1 / &chart /", "system", &
+                    "_m_commas.txt' line 2: an empty field in ','"), &
+         bad_case_t(y//"/ &system n=2, mass='@DIR@_m_ragged.txt', cos=1,0,0,1 / &chart /", "system", &
+                    "mass: '"), &
+         bad_case_t(y//"/ &system n=2, mass='@DIR@_m_ragged.txt', cos=1,0,0,1 / &chart /", "system", &
+                    "line 2: 1 number where the rows before have 3 (ragged rows"), &
+         bad_case_t(y//"/ &system n=2, mass='@DIR@_m_wide.txt', cos=1,0,0,1 / &chart /", "system", &
+                    "mass: the file has rows of 4 numbers, and n = 2 needs rows of 2"), &
+         bad_case_t(y//"/ &system n=2, cos='@DIR@_m_wide.txt' / &chart /", "system", &
+                    "cos: the file has rows of 4 numbers"), &
+         bad_case_t(y//"/ &system n=2, mass='@DIR@_dir', cos=1,0,0,1 / &chart /", "system", &
+                    "mass: '"), &
+         bad_case_t(y//"/ &system n=2, mass='@DIR@_dir', cos=1,0,0,1 / &chart /", "system", &
+                    "_dir' is a directory, not a matrix file"), &
+         bad_case_t(y//"/ &system n=2, b='@DIR@_fifo', cos=1,0,0,1 / &chart /", "system", &
+                    "b: '"), &
+         bad_case_t(y//"/ &system n=2, b='@DIR@_fifo', cos=1,0,0,1 / &chart /", "system", &
+                    "_fifo' is not a regular file (a FIFO, device or socket), not a matrix file"), &
+         bad_case_t(sp//"&points file='@DIR@_fifo' /", "points", "file: '"), &
+         bad_case_t(sp//"&points file='@DIR@_fifo' /", "points", "is not a regular file (a FIFO"), &
+         bad_case_t("&scene output='@OUT@', model='sampled' / &sampled file='@DIR@_fifo' / &chart /", "sampled", &
+                    "file: '"), &
+         bad_case_t("&scene output='@OUT@', model='sampled' / &sampled file='@DIR@_fifo' / &chart /", "sampled", &
+                    "_fifo' is not a regular file (a FIFO, device or socket), not a file of numbers"), &
+         bad_case_t("&scene output='@OUT@', model='sampled' / &sampled file='@DIR@_dir' / &chart /", "sampled", &
+                    "_dir' is a directory, not a file of numbers"), &
+         bad_case_t("&scene output='@OUT@', model='sampled' / &sampled file='@DIR@_m_empty.txt' / &chart /", &
+                    "sampled", "file: '"), &
+         bad_case_t("&scene output='@OUT@', model='sampled' / &sampled file='@DIR@_m_empty.txt' / &chart /", &
+                    "sampled", "_m_empty.txt' line 2: an empty field in '5,,7'"), &
+         bad_case_t("&scene output='@OUT@', model='sampled' / &sampled period=2, period=4, samples=1,2 / &chart /", &
+                    "sampled", "period: given twice in the group"), &
+         ! sizes blamed on the variable that can fix them
+         bad_case_t(y//"/ &system n=1, damping=1e15, cos=1 / &chart /", "system", &
+                    "damping: the damping and gyroscopic rates reach |M^-1 (C + G)| = 1.0e15"), &
+         bad_case_t(y//"/ &system n=2, gyroscopic=0,1e12,-1e12,0, cos=1,0,0,1 / &chart /", "system", &
+                    "gyroscopic: the damping and gyroscopic rates"), &
+         bad_case_t(y//"/ &system n=1, k0=1e308, cos=1 / &chart /", "system", &
+                    "k0: the system's frequencies reach sqrt(|M^-1 K0|) = 1.0e154 already at alpha = beta = 0"), &
+         bad_case_t(y//"/ &system n=1, cos=1e200 / &chart /", "system", &
+                    "cos: the system's frequencies reach sqrt(|M^-1 K_drive|) = 1.0e100 already at |alpha| = 1"), &
+         bad_case_t(y//"/ &system n=2, cos=1,0,0,1, sin=0,0,0,1e9 / &chart /", "system", "sin: the system's"), &
+         bad_case_t(y//"/ &system n=1, b=1e308, cos=1 / &chart /", "system", &
+                    "b: the system's frequencies reach sqrt(|M^-1 B|) = 1.0e154 already at |beta| = 1"), &
+         bad_case_t(y//"/ &system n=1, damping=1e308, mass=0.5, cos=1 / &chart /", "system", &
+                    "damping: the damping and gyroscopic rates reach |M^-1 (C + G)| = more than the largest double"), &
+         bad_case_t(y//"/ &system n=1, cos=1 / &chart beta_min=-1e12 /", "chart", "beta_min: the system's frequencies"), &
+         bad_case_t(y//"/ &system n=1, cos=1 / &chart alpha_max=1e12 /", "chart", "alpha_max: the system's frequencies"), &
+         bad_case_t(y//"task='points' / &system n=1, cos=1 / &points file='@DIR@_bigbeta.dat' /", "points", &
+                    "file: the system's frequencies"), &
+         bad_case_t(y//"/ &system n=1, mass=1e-300, cos=1 / &chart /", "system", &
+                    "mass: M is out of the range the methods take"), &
+         bad_case_t(y//"task='boundaries' / &system n=2, mass=1,0,0,1e308, cos=1,0,0,1 / &chart n_beta=3 /", &
+                    "system", "mass: M is out of the range the methods take (an entry above 1.0e280")]
    end function bad_cases
 
    !> Write the points files the bad cases refer to (`<dir>_badline.dat`, ...).
@@ -199,7 +274,16 @@ contains
       call write_file(dir//"_comma.dat", [character(len=20) :: "1 2", ",7"])
       call write_file(dir//"_repeat.dat", [character(len=20) :: "1 2", "# c", "3*"])
       call write_file(dir//"_first.dat", [character(len=20) :: "/", "1 2"])
+      call write_file(dir//"_bigbeta.dat", [character(len=20) :: "0.5 1e12"])
+      ! matrix files of &system
+      call write_file(dir//"_m_ok.txt", [character(len=20) :: "1, 0,", "0, 0.25"])
+      call write_file(dir//"_m_empty.txt", [character(len=20) :: "1 0", "5,,7"])
+      call write_file(dir//"_m_lead.txt", [character(len=20) :: ",1 0", "0 1"])
+      call write_file(dir//"_m_commas.txt", [character(len=20) :: "1 0", ",", "0 1"])
+      call write_file(dir//"_m_ragged.txt", [character(len=20) :: "1 0 0", "0.25"])
+      call write_file(dir//"_m_wide.txt", [character(len=20) :: "1 0 0 0.25"])
       call execute_command_line("mkdir -p "//dir//"_dir")
+      call execute_command_line("rm -f "//dir//"_fifo && mkfifo "//dir//"_fifo")
    end subroutine write_bad_points_files
 
    subroutine delete_bad_points_files(dir)
@@ -213,7 +297,15 @@ contains
       call delete_file(dir//"_comma.dat")
       call delete_file(dir//"_repeat.dat")
       call delete_file(dir//"_first.dat")
+      call delete_file(dir//"_bigbeta.dat")
+      call delete_file(dir//"_m_ok.txt")
+      call delete_file(dir//"_m_empty.txt")
+      call delete_file(dir//"_m_lead.txt")
+      call delete_file(dir//"_m_commas.txt")
+      call delete_file(dir//"_m_ragged.txt")
+      call delete_file(dir//"_m_wide.txt")
       call execute_command_line("rmdir "//dir//"_dir")
+      call execute_command_line("rm -f "//dir//"_fifo")
    end subroutine delete_bad_points_files
 
    !> Replace every `key` in `text` by `value`.

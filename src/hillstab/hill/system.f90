@@ -33,10 +33,16 @@ module hillstab_hill_system
    implicit none
    private
    public :: hill_system_t, system_form_t, prepare_system, max_dof, check_system_point, system_equation_text, &
-      system_description, symmetric_defect, cholesky_inverse, fundamental_derivative
+      system_description, symmetric_defect, cholesky_inverse, fundamental_derivative, min_pivot, mass_refusal
 
    !> Most degrees of freedom of a system (a 40 × 40 monodromy; the cost grows as n³).
    integer, parameter :: max_dof = 20
+   !> The smallest Cholesky pivot of a mass matrix, and one over the largest magnitude of
+   !> its entries: beyond, M⁻¹ (about one over the pivot) or the methods' products (ν² M
+   !> in Hill's method) would leave the range of double precision.
+   real(wp), parameter :: min_pivot = 1.0e-280_wp
+   !> `min_pivot` and its inverse in messages (pure procedures write no numbers).
+   character(len=*), parameter :: min_pivot_text = "1.0e-280", max_entry_text = "1.0e280"
 
    !> A system of n coupled Hill equations (see the module's text).
    type, abstract, extends(model_base_t) :: hill_system_t
@@ -156,24 +162,40 @@ contains
    end function symmetric_defect
 
    !> The inverse of a symmetric positive definite matrix by Cholesky; `ok` false when the
-   !> matrix is not positive definite (a pivot ≤ n ε times its diagonal's largest entry).
-   pure subroutine cholesky_inverse(a, inverse, ok)
+   !> matrix is not positive definite (a pivot ≤ n ε times its own diagonal entry: the
+   !> test does not depend on the scale of the other rows, so diag(1e154, 1) passes) or
+   !> when an entry exceeds 1/`min_pivot` in magnitude or a pivot lies below `min_pivot`
+   !> (then `out_of_range`: the inverse or the products with M would leave the range of
+   !> double precision).
+   pure subroutine cholesky_inverse(a, inverse, ok, out_of_range)
       real(wp), intent(in) :: a(:, :)          !! the matrix (n × n, symmetric)
       real(wp), intent(out) :: inverse(:, :)   !! its inverse
       logical, intent(out) :: ok               !! a was positive definite
-      real(wp) :: l(size(a, 1), size(a, 1)), s, floor
+      logical, intent(out), optional :: out_of_range  !! refused for a pivot below min_pivot
+      real(wp) :: l(size(a, 1), size(a, 1)), s
       integer :: n, i, j, k
       n = size(a, 1)
       l = 0.0_wp
       inverse = 0.0_wp
       ok = .false.
-      floor = n*epsilon(1.0_wp)*maxval(abs([(a(i, i), i=1, n)]))
+      if (present(out_of_range)) out_of_range = .false.
+      if (.not. (maxval(abs(a)) <= 1.0_wp/min_pivot)) then
+         if (present(out_of_range)) out_of_range = .true.
+         return
+      end if
       do j = 1, n
          s = a(j, j) - sum(l(j, 1:j - 1)**2)
-         if (.not. (s > floor)) return
+         if (.not. (s > n*epsilon(1.0_wp)*abs(a(j, j)) .and. s > 0.0_wp)) return
+         if (s < min_pivot) then
+            if (present(out_of_range)) out_of_range = .true.
+            return
+         end if
          l(j, j) = sqrt(s)
          do i = j + 1, n
-            l(i, j) = (a(i, j) - sum(l(i, 1:j - 1)*l(j, 1:j - 1)))/l(j, j)
+            ! positive definite: l_ij² ≤ a_ii, so a larger quotient (which might overflow) means it is not
+            s = a(i, j) - sum(l(i, 1:j - 1)*l(j, 1:j - 1))
+            if (.not. (abs(s) <= 2.0_wp*l(j, j)*sqrt(abs(a(i, i))))) return
+            l(i, j) = s/l(j, j)
          end do
       end do
       ! columns of the inverse: solve L Lᵀ x = e_k
@@ -190,6 +212,20 @@ contains
       ok = .true.
    end subroutine cholesky_inverse
 
+   !> The message for a mass matrix `cholesky_inverse` refuses: not positive definite, or
+   !> positive definite with an inverse out of the range of double precision.
+   pure function mass_refusal(out_of_range) result(message)
+      logical, intent(in) :: out_of_range  !! as `cholesky_inverse` returned it
+      character(len=:), allocatable :: message
+      if (out_of_range) then
+         message = "mass: M is out of the range the methods take (an entry above "//max_entry_text// &
+                   " in magnitude or a Cholesky pivot below "//min_pivot_text//": M^-1 or the products with M "// &
+                   "would leave double precision): scale the masses"
+      else
+         message = "mass: M must be positive definite (its Cholesky factorisation meets a pivot <= 0)"
+      end if
+   end function mass_refusal
+
    !> Prepare a system at damping ε for the methods: M⁻¹, D, the flags; err_invalid_parameter
    !> when M is not symmetric positive definite, C not symmetric or G not skew (naming which),
    !> or an entry is not finite.
@@ -201,7 +237,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: c(:, :), g(:, :)
       integer :: n, i
-      logical :: ok
+      logical :: ok, out_of_range
       n = system%dof()
       if (n < 1 .or. n > max_dof) then
          call set_error(error, err_invalid_parameter, "n: the degrees of freedom must be 1 to "// &
@@ -226,10 +262,9 @@ contains
             real_text(symmetric_defect(form%m, 1.0_wp))//" of its largest entry)")
          return
       end if
-      call cholesky_inverse(form%m, form%m_inverse, ok)
+      call cholesky_inverse(form%m, form%m_inverse, ok, out_of_range)
       if (.not. ok) then
-         call set_error(error, err_invalid_parameter, "mass: M must be positive definite (its Cholesky "// &
-            "factorisation meets a pivot <= 0)")
+         call set_error(error, err_invalid_parameter, mass_refusal(out_of_range))
          return
       end if
       if (symmetric_defect(c, 1.0_wp) > 1.0e-12_wp) then

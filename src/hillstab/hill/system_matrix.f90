@@ -26,7 +26,7 @@ module hillstab_hill_system_matrix
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
    use hillstab_core_text, only: integer_text
    use hillstab_hill_model_base, only: model_variable_t, model_variable_real, model_variable_list
-   use hillstab_hill_system, only: hill_system_t, max_dof, symmetric_defect, cholesky_inverse
+   use hillstab_hill_system, only: hill_system_t, max_dof, symmetric_defect, cholesky_inverse, mass_refusal
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -231,7 +231,7 @@ contains
       !> err_invalid_parameter naming the variable; unallocated on success
       type(error_t), allocatable, intent(out) :: error
       integer :: n, h, k
-      logical :: ok
+      logical :: ok, out_of_range
       real(wp), allocatable :: inverse(:, :)
       n = self%n
       if (n < 1) then
@@ -268,10 +268,9 @@ contains
          return
       end if
       allocate (inverse(n, n))
-      call cholesky_inverse(self%m, inverse, ok)
+      call cholesky_inverse(self%m, inverse, ok, out_of_range)
       if (.not. ok) then
-         call set_error(error, err_invalid_parameter, "mass: M must be positive definite (its Cholesky "// &
-            "factorisation meets a pivot <= 0)")
+         call set_error(error, err_invalid_parameter, mass_refusal(out_of_range))
          return
       end if
       if (symmetric_defect(self%c, 1.0_wp) > 1.0e-12_wp) then

@@ -409,6 +409,7 @@ contains
       type(scene_t) :: scene
       type(error_t), allocatable :: error
       character(len=:), allocatable :: path
+      type(coefficient_task_t) :: coefficient
       path = scratch_prefix("as_written")//".nml"
       call write_file(path, [padded("&scene task = 'chart' /"), padded("&scene task = 'points' /"), &
                              padded("&chart /")])
@@ -430,6 +431,26 @@ contains
                              padded("&chart n_alpha = 2, n_beta = 2 /")])
       call read_scene(path, scene, error)
       call check(ctx, .not. allocated(error), "groups named in comments are no groups")
+      ! elements given one by one and a list over several lines are no repeats
+      call write_file(path, [padded("&scene task = 'coefficient' /"), padded("&coefficient alphas(1) = 4, "// &
+                             "alphas(2) = 6,"), padded("   beta = 1.5 /")])
+      call read_scene(path, scene, error)
+      call check(ctx, .not. allocated(error), "alphas(1), alphas(2) accepted")
+      if (.not. allocated(error)) then
+         coefficient = coefficient_of(scene)
+         call check(ctx, size(coefficient%alphas) == 2, "two alphas")
+         if (size(coefficient%alphas) == 2) call check(ctx, coefficient%alphas(2), 6.0_wp, rel=0.0_wp, abs=0.0_wp)
+      end if
+      call write_file(path, [padded("&scene model = 'system' /"), padded("&system n = 2, mass = 1, 0,"), &
+                             padded("   0, 0.25, cos = 1, 0,"), padded("   0, 1 /"), padded("&chart /")])
+      call read_scene(path, scene, error)
+      call check(ctx, .not. allocated(error), "a system's lists over several lines accepted")
+      ! a second group after another's '/' on the same line
+      call write_file(path, [padded("&scene / &chart n_alpha = 2 / &chart n_alpha = 3 /")])
+      call read_scene(path, scene, error)
+      call check(ctx, allocated(error), "a second &chart on one line refused")
+      if (allocated(error)) call check(ctx, contains_text(error%message, path//": &chart: the group is given 2 "// &
+         "times"), "says so: "//error%message)
       call delete_file(path)
    end subroutine read_as_written
 

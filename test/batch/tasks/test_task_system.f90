@@ -180,7 +180,8 @@ contains
       call delete_file(written)
    end subroutine coefficient_closed_form
 
-   !> A matrix as a quoted file of its rows gives the file of the same matrix as a list.
+   !> A matrix as a quoted file of its rows (comments, a blank line, closing commas) gives
+   !> the file of the same matrix as a list.
    subroutine matrix_from_file(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(error_t), allocatable :: error
@@ -189,7 +190,7 @@ contains
       integer :: k
       out = scratch_prefix("sysfile")
       matrix = out//"_mass.dat"
-      call write_file(matrix, [padded("# the mass matrix"), padded("1.0  0.0"), padded(""), padded("0.0  0.25  # m2")])
+      call write_file(matrix, [padded("# the mass matrix"), padded("1.0,  0.0,"), padded(""), padded("0.0  0.25  # m2")])
       call run_text_scene("sysfile", [padded("&scene model = 'system', columns = 'alpha beta trace a2', output = '"// &
                                              out//"_a' /"), padded("&system n = 2, mass = '"//matrix//"', b = 2, -1, "// &
                                              "-1, 1.5, cos = -1, 0, 0, -0.5 /"), padded("&chart n_alpha = 2, "// &

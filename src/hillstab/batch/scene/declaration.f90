@@ -33,7 +33,7 @@ module hillstab_batch_scene_declaration
       halting_restore
    use hillstab_batch_scene_file, only: scene_file_t, item_t, group_items, group_present, check_read, fail, read_len, &
       long_item, text_len, &
-      group_count, string_across_lines
+      check_group_as_written
    implicit none
    private
    public :: variable_t, group_t, value_t, group_values_t, group_reader_t
@@ -364,24 +364,15 @@ contains
       call halting_restore(reader%fpe)
    contains
       !> What the namelist read would take otherwise than written: a second `&group`
-      !> (ignored), a quoted string across a line break (the break dropped), an unquoted
-      !> value of a text variable (`output = 12` read as the text 12).
+      !> (ignored), a quoted string across a line break (the break dropped), a variable
+      !> given twice (the last value kept), an unquoted value of a text variable
+      !> (`output = 12` read as the text 12).
       subroutine check_written_as_read(error)
          type(error_t), allocatable, intent(out) :: error
-         character(len=:), allocatable :: name, value
-         integer :: count, i, v
-         count = group_count(file%unit, group%name)
-         if (count > 1) then
-            call set_error(error, err_input, file%path//": &"//group%name//": the group is given "// &
-               integer_text(count)//" times; all but the first would be ignored: give it once")
-            return
-         end if
-         name = string_across_lines(file%unit, group%name)
-         if (len(name) > 0) then
-            call fail(error, file%path, group%name, name, "a quoted string runs on to the next line (the "// &
-               "line break would be dropped): keep it on one line")
-            return
-         end if
+         character(len=:), allocatable :: value
+         integer :: i, v
+         call check_group_as_written(file%unit, file%path, group%name, error)
+         if (allocated(error)) return
          do i = 1, size(items)
             v = group%index_of(items(i)%name)
             if (v == 0) cycle

@@ -22,7 +22,8 @@ module hillstab_batch_scene_file
    private
    public :: scene_file_t, item_t, open_scene_file, close_scene_file
    public :: locate_group, group_present, group_sets, group_items, check_read, fail, shortened, joined, item_name
-   public :: group_count, group_names, string_across_lines, long_item
+   public :: group_count, group_names, string_across_lines, long_item, repeated_item, item_subscripted
+   public :: check_group_as_written, not_regular_file
    public :: max_line_length, max_scene_bytes, text_len, read_len
 
    !> Longest line of a scene or points file.
@@ -115,6 +116,21 @@ contains
       rewind (unit)
       file%unit = unit
    end subroutine open_scene_file
+
+   !> Why a data file named in a scene (points, samples, a matrix) is not read, found
+   !> before it is opened: "is a directory", "is not a regular file (a FIFO, device or
+   !> socket)" (open() of a FIFO waits for a writer); "" for a regular file or a path that
+   !> does not exist (open() then says why).
+   function not_regular_file(path) result(text)
+      character(len=*), intent(in) :: path  !! the data file
+      character(len=:), allocatable :: text
+      text = ""
+      if (is_directory(path)) then
+         text = "is a directory"
+      else if (is_special_file(path)) then
+         text = "is not a regular file (a FIFO, device or socket)"
+      end if
+   end function not_regular_file
 
    !> Close the scratch copy.
    subroutine close_scene_file(file)
@@ -485,22 +501,61 @@ contains
    end function scene_text
 
    !> Positions just after each `&group` of `text` (lines joined by new lines) that opens
-   !> a line, after blanks or an output header's `#`: the groups a namelist read sees
-   !> (not a `&series` named in a header's prose).
+   !> a line, after blanks or an output header's `#`, or that follows the closing `/` of
+   !> another group on its line: the groups a namelist read sees (not a `&series` named in
+   !> a header's prose).
    function group_starts(text, group) result(starts)
       character(len=*), intent(in) :: text, group
       integer, allocatable :: starts(:)
-      integer :: i, line_start
+      integer :: i, line_start, last
+      character(len=:), allocatable :: before
       allocate (starts(0))
       do i = 1, len(text) - len(group) - 1
          if (text(i:i) /= "&") cycle
          line_start = index(text(:i), achar(10), back=.true.) + 1
-         if (verify(text(line_start:i - 1), " #") /= 0) cycle
+         before = text(line_start:i - 1)
+         if (verify(before, " #") /= 0) then
+            ! after a group's closing '/' (outside quotes) on the same line
+            last = len_trim(before)
+            if (last == len(before) .or. before(last:last) /= "/") cycle
+            if (string_open(before)) cycle
+         end if
          if (lower(text(i + 1:i + len(group))) /= lower(group)) cycle
          if (index(" /,"//achar(10), text(i + len(group) + 1:i + len(group) + 1)) == 0) cycle
          starts = [starts, i + len(group) + 1]
       end do
    end function group_starts
+
+   !> The position just after the first `&group` of `text` (lines joined by new lines)
+   !> that follows a blank or a line break, as `locate_group` finds it; 0 when none.
+   function first_group_start(text, group) result(start)
+      character(len=*), intent(in) :: text, group
+      integer :: start
+      integer :: i
+      start = 0
+      do i = 1, len(text) - len(group) - 1
+         if (text(i:i) /= "&") cycle
+         if (i > 1) then
+            if (index(" "//achar(10), text(i - 1:i - 1)) == 0) cycle
+         end if
+         if (lower(text(i + 1:i + len(group))) /= lower(group)) cycle
+         if (index(" /,"//achar(10), text(i + len(group) + 1:i + len(group) + 1)) == 0) cycle
+         start = i + len(group) + 1
+         return
+      end do
+   end function first_group_start
+
+   !> Whether a text leaves a quoted string open at its end.
+   pure logical function string_open(text)
+      character(len=*), intent(in) :: text
+      character :: quote
+      integer :: i
+      quote = " "
+      do i = 1, len(text)
+         call track_quote(text(i:i), quote)
+      end do
+      string_open = quote /= " "
+   end function string_open
 
    !> How many times `&group` opens in the file (a second one would be ignored by the
    !> namelist read).
@@ -547,11 +602,15 @@ contains
       character(len=:), allocatable :: name
       character(len=:), allocatable :: text
       integer, allocatable :: starts(:)
-      integer :: i, opened, eq, j
+      integer :: i, opened, eq, j, first
       character :: quote
       name = ""
       text = scene_text(unit, achar(10))
+      ! the group the readers read: the first `&group` after a blank or a line break
+      ! (`locate_group`), also when it does not open its line
       starts = group_starts(text, group)
+      first = first_group_start(text, group)
+      if (first > 0) starts = [first]
       if (size(starts) == 0) return
       quote = " "
       opened = 0
@@ -579,6 +638,83 @@ contains
          if (quote /= " " .and. opened < i .and. (text(i:i) == "'" .or. text(i:i) == '"')) opened = i
       end do
    end function string_across_lines
+
+   !> Refuse what the namelist read (or a model group's reader) would take otherwise than
+   !> written: a second `&group` (ignored), a quoted string across a line break (the break
+   !> read as a blank), a variable given twice (the last value kept). Every group of a
+   !> scene, declared or a model's, goes through here.
+   subroutine check_group_as_written(unit, path, group, error)
+      integer, intent(in) :: unit  !! the scratch copy of the scene file
+      character(len=*), intent(in) :: path, group  !! the scene file and the group
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
+      character(len=:), allocatable :: name
+      integer :: count
+      count = group_count(unit, group)
+      if (count > 1) then
+         call set_error(error, err_input, path//": &"//group//": the group is given "// &
+            integer_text(count)//" times; all but the first would be ignored: give it once")
+         return
+      end if
+      name = string_across_lines(unit, group)
+      if (len(name) > 0) then
+         call fail(error, path, group, name, "a quoted string runs on to the next line (the "// &
+            "line break would be dropped): keep it on one line")
+         return
+      end if
+      name = repeated_item(unit, group)
+      if (len(name) > 0) call fail(error, path, group, name, "given twice in the group (the namelist would "// &
+         "keep the last value): give it once")
+   end subroutine check_group_as_written
+
+   !> The first variable the first `&group` gives twice ("" when none): the namelist read
+   !> would keep the last value in silence. Two items name the same variable when their
+   !> names agree and either has no subscript (the whole variable) or their subscripts are
+   !> written alike (blanks and case aside): `a(1) = 1, a(2) = 2` sets two elements and
+   !> passes, `a = 1, a = 2` and `a = 1, 2, a(2) = 5` do not. A list that runs on over
+   !> several lines (`mass = 1, 0,` then `0, 1`) is one item.
+   function repeated_item(unit, group) result(name)
+      integer, intent(in) :: unit  !! the scratch copy of the scene file
+      character(len=*), intent(in) :: group  !! the namelist group
+      character(len=:), allocatable :: name
+      type(item_t), allocatable :: items(:)
+      integer :: i, j
+      name = ""
+      call group_items(unit, group, items)
+      do j = 2, size(items)
+         do i = 1, j - 1
+            if (items(i)%name /= items(j)%name) cycle
+            if (item_subscripted(items(i)%text) .and. item_subscripted(items(j)%text)) then
+               if (designator(items(i)%text) /= designator(items(j)%text)) cycle
+            end if
+            name = items(j)%name
+            return
+         end do
+      end do
+   end function repeated_item
+
+   !> Whether an item `name(sub) = value` gives a subscript (one element or a section).
+   pure logical function item_subscripted(item)
+      character(len=*), intent(in) :: item  !! an item as `group_items` cuts it
+      character(len=:), allocatable :: rest
+      rest = adjustl(item(len(item_name(item)) + 1:))
+      item_subscripted = .false.
+      if (len(rest) > 0) item_subscripted = rest(1:1) == "("
+   end function item_subscripted
+
+   !> The designator of an item (its text before the first '=' outside quotes: name and
+   !> subscript), lower case, blanks removed.
+   pure function designator(item) result(text)
+      character(len=*), intent(in) :: item
+      character(len=:), allocatable :: text
+      integer :: i, eq
+      eq = index(item, "=")
+      if (eq == 0) eq = len(item) + 1
+      text = ""
+      do i = 1, eq - 1
+         if (item(i:i) /= " ") text = text//item(i:i)
+      end do
+      text = lower(text)
+   end function designator
 
    !> Keep track of whether position i is inside a quoted string.
    pure subroutine track_quote(c, quote)

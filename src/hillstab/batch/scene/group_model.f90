@@ -20,7 +20,7 @@ module hillstab_batch_scene_group_model
    use hillstab_hill_model, only: model_variable_t, model_variable_real, model_variable_list, model_variable_file
    use hillstab_hill_model_base, only: model_base_t
    use hillstab_batch_scene_file, only: scene_file_t, item_t, group_items, group_present, fail, shortened, &
-      max_line_length
+      max_line_length, check_group_as_written, item_subscripted, not_regular_file
    use hillstab_batch_scene_declaration, only: group_values_t, var_real, var_real_list, var_path
    use hillstab_batch_scene_types, only: scene_t
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -48,19 +48,33 @@ contains
       type(scene_file_t), intent(in) :: file  !! the scene file
       type(scene_t), intent(inout) :: scene   !! its model set from the group
       type(error_t), allocatable, intent(out) :: error  !! what is wrong, named
+      integer, allocatable :: widths(:)
+      integer :: v, n
       if (allocated(scene%system)) then
-         call read_data_group(file, scene%system, scene%model_group, scene%model_values, error)
+         call read_data_group(file, scene%system, scene%model_group, scene%model_values, widths, error)
+         if (allocated(error)) return
+         ! a matrix file holds its matrix row by row: n numbers a row
+         n = scene%system%dof()
+         do v = 1, size(widths)
+            if (widths(v) == 0 .or. widths(v) == n) cycle
+            call fail(error, file%path, scene%model_values%group, scene%model_values%values(v)%name, "the file "// &
+               "has rows of "//integer_text(widths(v))//" numbers, and n = "//integer_text(n)//" needs rows of "// &
+               integer_text(n)//" (a matrix file holds the rows of its n x n matrices, one row a line)")
+            return
+         end do
       else
-         call read_data_group(file, scene%model, scene%model_group, scene%model_values, error)
+         call read_data_group(file, scene%model, scene%model_group, scene%model_values, widths, error)
       end if
    end subroutine read_model_group
 
    !> The group of any model object (a scalar model or a system) from its variables.
-   subroutine read_data_group(file, model, model_group, model_values, error)
+   subroutine read_data_group(file, model, model_group, model_values, widths, error)
       type(scene_file_t), intent(in) :: file  !! the scene file
       class(model_base_t), intent(inout) :: model  !! set from the group
       logical, intent(out) :: model_group   !! the model has variables (and so a group)
       type(group_values_t), intent(inout) :: model_values  !! the effective values
+      !> per variable, the numbers a row of the file of rows it was given as (0: not a file)
+      integer, allocatable, intent(out) :: widths(:)
       type(error_t), allocatable, intent(out) :: error  !! what is wrong, named
       type(model_variable_t), allocatable :: variables(:)
       type(item_t), allocatable :: items(:)
@@ -69,12 +83,18 @@ contains
       real(wp), allocatable :: numbers(:)
       integer :: k, v, eq
       variables = model%variables()
+      allocate (widths(size(variables)))
+      widths = 0
       model_group = size(variables) > 0
       if (.not. model_group) return
       group = model%name()
       ! the effective values start at the declared defaults
       model_values%group = group
       model_values%present = group_present(file%unit, group)
+      if (model_values%present) then
+         call check_group_as_written(file%unit, file%path, group, error)
+         if (allocated(error)) return
+      end if
       allocate (model_values%values(size(variables)))
       known = ""
       do v = 1, size(variables)
@@ -92,6 +112,11 @@ contains
          v = variable_index(variables, items(k)%name)
          if (v == 0) then
             call fail(error, file%path, group, items(k)%name, "unknown variable (the group has: "//known//")")
+            return
+         end if
+         if (item_subscripted(items(k)%text)) then
+            call fail(error, file%path, group, items(k)%name, "a model's variable is given whole, without a "// &
+               "subscript (got '"//shortened(items(k)%text)//"')")
             return
          end if
          eq = index(items(k)%text, "=")
@@ -116,7 +141,7 @@ contains
             if ((value(1:1) == "'" .or. value(1:1) == '"') .and. variables(v)%kind == model_variable_list) then
                ! a quoted path in place of the list: the numbers of a file, row by row
                call read_rows_file(file%path, group, items(k)%name, unquoted(value), variables(v)%max_count, &
-                                   numbers, error)
+                                   numbers, widths(v), error)
             else
                call read_number_list(file%path, group, items(k)%name, value, variables(v)%max_count, &
                                      variables(v)%kind == model_variable_real, numbers, error)
@@ -272,6 +297,10 @@ contains
       real(wp), allocatable :: taus(:)
       logical :: too_long
       type(fpe_state_t) :: fpe
+      if (len(not_regular_file(path)) > 0) then
+         call fail(error, source, group, variable, "'"//path//"' "//not_regular_file(path)//", not a file of numbers")
+         return
+      end if
       open (newunit=unit, file=path, status="old", action="read", iostat=ios, iomsg=msg)
       if (ios /= 0) then
          call fail(error, source, group, variable, "cannot open '"//path//"': "//trim(msg))
@@ -294,7 +323,12 @@ contains
          end if
          hash = index(line, "#")
          if (hash > 0) line = line(:hash - 1)
-         if (verify(line, " "//achar(9)//achar(13)//",") == 0) cycle
+         if (verify(line, " "//achar(9)//achar(13)) == 0) cycle
+         if (empty_field(line)) then
+            call fail(error, source, group, variable, where//": an empty field in '"//shortened(trim(line))// &
+               "' (a leading comma or two commas with nothing between): give every number")
+            exit
+         end if
          row_width = fields(line)
          if (row_width < 1 .or. row_width > 2) then
             call fail(error, source, group, variable, where//": expected one number (a sample) or two (tau and "// &
@@ -342,11 +376,14 @@ contains
    end subroutine read_numbers_file
 
    !> Every number of a file, row after row (a matrix's rows, `#` comments, blank lines
-   !> skipped): a list variable given as a quoted path. Errors name the file and its line.
-   subroutine read_rows_file(source, group, variable, path, max_count, numbers, error)
+   !> skipped): a list variable given as a quoted path. Every row holds the same count of
+   !> numbers (`row_width`), none left empty; a directory or a FIFO is refused before it
+   !> is opened. Errors name the file and its line.
+   subroutine read_rows_file(source, group, variable, path, max_count, numbers, row_width, error)
       character(len=*), intent(in) :: source, group, variable, path
       integer, intent(in) :: max_count
       real(wp), allocatable, intent(out) :: numbers(:)
+      integer, intent(out) :: row_width  !! the numbers of each row (0: no row read)
       type(error_t), allocatable, intent(out) :: error
       integer :: unit, ios, line_number, width
       character(len=512) :: msg
@@ -354,6 +391,11 @@ contains
       real(wp), allocatable :: row(:)
       logical :: too_long
       type(fpe_state_t) :: fpe
+      row_width = 0
+      if (len(not_regular_file(path)) > 0) then
+         call fail(error, source, group, variable, "'"//path//"' "//not_regular_file(path)//", not a matrix file")
+         return
+      end if
       open (newunit=unit, file=path, status="old", action="read", iostat=ios, iomsg=msg)
       if (ios /= 0) then
          call fail(error, source, group, variable, "cannot open '"//path//"': "//trim(msg))
@@ -372,8 +414,22 @@ contains
             exit
          end if
          if (index(line, "#") > 0) line = line(:index(line, "#") - 1)
-         if (verify(line, " "//achar(9)//achar(13)//",") == 0) cycle
+         if (verify(line, " "//achar(9)//achar(13)) == 0) cycle
+         if (empty_field(line)) then
+            call fail(error, source, group, variable, "'"//path//"' line "//integer_text(line_number)// &
+               ": an empty field in '"//shortened(trim(line))//"' (a leading comma or two commas with nothing "// &
+               "between): give every number")
+            exit
+         end if
          width = fields(line)
+         if (row_width == 0) row_width = width
+         if (width /= row_width) then
+            call fail(error, source, group, variable, "'"//path//"' line "//integer_text(line_number)//": "// &
+               integer_text(width)//trim(merge(" number ", " numbers", width == 1))//" where the rows before have "// &
+               integer_text(row_width)// &
+               " (ragged rows: every row of a matrix holds n numbers)")
+            exit
+         end if
          allocate (row(width))
          read (line, *, iostat=ios) row
          if (ios /= 0 .or. verify(line, " ,0123456789.+-eEdD"//achar(9)//achar(13)) /= 0) then
@@ -399,6 +455,30 @@ contains
       if (.not. allocated(error) .and. size(numbers) == 0) &
          call fail(error, source, group, variable, "'"//path//"' holds no numbers")
    end subroutine read_rows_file
+
+   !> Whether a line of numbers leaves a field empty: a comma first, or two commas with
+   !> only blanks between (a list-directed read takes such a field as "unchanged").
+   pure logical function empty_field(line)
+      character(len=*), intent(in) :: line
+      integer :: i
+      logical :: after_comma, started
+      empty_field = .false.
+      after_comma = .false.
+      started = .false.
+      do i = 1, len(line)
+         if (index(" "//achar(9)//achar(13), line(i:i)) > 0) cycle
+         if (line(i:i) == ",") then
+            if (after_comma .or. .not. started) then
+               empty_field = .true.
+               return
+            end if
+            after_comma = .true.
+         else
+            after_comma = .false.
+         end if
+         started = .true.
+      end do
+   end function empty_field
 
    !> The number of blank- or comma-separated fields of a line.
    pure integer function fields(line) result(n)

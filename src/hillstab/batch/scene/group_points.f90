@@ -11,8 +11,7 @@ module hillstab_batch_scene_group_points
    use hillstab_core_error, only: error_t
    use hillstab_core_text, only: integer_text, real_text, lower => lower_case, read_text_line, fpe_state_t, &
       halting_off, halting_restore
-   use hillstab_ffi_libc, only: is_directory, is_special_file
-   use hillstab_batch_scene_file, only: scene_file_t, fail, shortened, max_line_length, read_len
+   use hillstab_batch_scene_file, only: scene_file_t, fail, shortened, max_line_length, read_len, not_regular_file
    use hillstab_batch_scene_declaration, only: new_group, group_t, group_values_t, group_reader_t, variable, var_path, &
       begin_group, next_item, end_group
    use hillstab_batch_scene_checks, only: check_alpha_domain, max_magnitude, max_points
@@ -89,13 +88,8 @@ contains
       real(wp), allocatable :: found(:, :)
       logical :: too_long
 
-      if (is_directory(path)) then
-         call fail(error, source, group, "file", "'"//path//"' is a directory, not a points file")
-         return
-      end if
-      if (is_special_file(path)) then
-         call fail(error, source, group, "file", "'"//path//"' is not a regular file (a FIFO, device or "// &
-            "socket), not a points file")
+      if (len(not_regular_file(path)) > 0) then
+         call fail(error, source, group, "file", "'"//path//"' "//not_regular_file(path)//", not a points file")
          return
       end if
       open (newunit=unit, file=path, status="old", action="read", iostat=ios, iomsg=msg)
