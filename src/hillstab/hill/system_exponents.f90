@@ -14,7 +14,9 @@
 !>
 !> A sweep stops the iteration when its splits are those of the sweep before, every exponent
 !> moved by less than a tenth of the target since then (or by less than the rounding of the
-!> sums, 4 m ε √K), and every group's eigenvalues are known to that. An exponent is
+!> sums, 4 m ε √K), and every group's eigenvalues are known to that; or after five such
+!> sweeps in a row whose groups' eigenvalues are not known to that (a cluster of moduli too
+!> close to split soon, whose block is too far from normal). An exponent is
 !> `resolved` when the iteration stopped so and that rounding lies below the target; else
 !> the value is the best the iteration reached and the caller says so.
 !>
@@ -35,6 +37,8 @@ module hillstab_hill_system_exponents
    !> a split between leading and trailing columns is converged when the trailing rows of W's
    !> leading columns fall below this
    real(wp), parameter :: split_level = 1.0e-13_wp
+   !> sweeps with the same splits and exponents after which the iteration stops unsettled
+   integer, parameter :: stagnation = 5
 
 contains
 
@@ -55,7 +59,7 @@ contains
                   w(size(factors, 1), size(factors, 1)), blocks(size(factors, 1), size(factors, 1)), &
                   block_scale(size(factors, 1)), previous(size(factors, 1)), current(size(factors, 1)), &
                   uncertainty(size(factors, 1)), phases(size(factors, 1))
-      integer :: starts(size(factors, 1) + 1), new_starts(size(factors, 1) + 1), n_new
+      integer :: starts(size(factors, 1) + 1), new_starts(size(factors, 1) + 1), n_new, unchanged
       logical :: settled
       real(wp) :: noise
       m = size(factors, 1)
@@ -70,6 +74,7 @@ contains
       current = 0.0_wp
       uncertainty = 0.0_wp
       settled = .false.
+      unchanged = 0
       do sweep = 1, max_sweeps
          q0 = q
          blocks = 0.0_wp
@@ -108,13 +113,17 @@ contains
          new_starts(n_new + 1) = m + 1
          if (sweep > 1 .and. n_new == n_groups) then
             if (all(new_starts(1:n_new + 1) == starts(1:n_groups + 1)) .and. &
-                all(abs(sorted(current) - sorted(previous)) <= max(0.1_wp*target*period, noise)) .and. &
-                all(uncertainty <= max(0.1_wp*target*period, noise))) then
-               settled = .true.
+                all(abs(sorted(current) - sorted(previous)) <= max(0.1_wp*target*period, noise))) then
+               settled = all(uncertainty <= max(0.1_wp*target*period, noise))
+               unchanged = unchanged + 1
+            else
+               unchanged = 0
             end if
          end if
          previous = current
-         if (settled) exit
+         ! settled, or stagnant: the groups left split only at the rate of moduli within a few
+         ! tenths of each other, which their blocks' eigenvalues resolve already (or never will)
+         if (settled .or. unchanged >= stagnation) exit
          ! the groups of the next sweep: those converged, never coarser than those used now
          n_groups = n_new
          starts(1:n_new + 1) = new_starts(1:n_new + 1)

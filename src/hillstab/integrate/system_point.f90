@@ -95,19 +95,30 @@ contains
       end if
    end subroutine resolve_exponents
 
-   !> Whether the cancellation in a₂ = ((tr Φ)² − tr Φ²)/2 loses it: its terms, up to
-   !> m² max|Φ_jk|², exceed |a₂| (at least 1) ten thousandfold and their rounding,
-   !> 4 ε times them, exceeds a tenth of the tolerance relative to max(1, |a₂|). (The
-   !> method's own error of Φ moves a₂ alike by every route.)
+   !> Whether the cancellation in a₂ = ((tr Φ)² − tr Φ²)/2 loses it: the terms it cancels,
+   !> T = Σ Φ_ii² + Σ_{i<j} (|Φ_ii Φ_jj| + |Φ_ij Φ_ji|), exceed |a₂| (at least 1) ten
+   !> thousandfold and their rounding, 4 ε T, exceeds a tenth of the tolerance relative to
+   !> max(1, |a₂|). (The method's own error of Φ moves a₂ alike by every route.)
    pure logical function a2_needs_factoring(floquet, monodromy, tolerance) result(need)
       type(system_floquet_t), intent(in) :: floquet      !! the analysis of Φ
       type(system_monodromy_t), intent(in) :: monodromy  !! Φ̃ and its scale
       real(wp), intent(in) :: tolerance                  !! the point's tolerance
-      real(wp) :: log_norm, log_cancellation
-      integer :: m
-      m = 2*floquet%n
-      log_norm = log(max(1.0_wp, maxval(abs(monodromy%phi)))) + monodromy%log_scale
-      log_cancellation = log(real(m*m, wp)) + 2.0_wp*max(0.0_wp, log_norm) - log(max(1.0_wp, abs(floquet%a2)))
+      real(wp) :: terms, big, log_cancellation
+      integer :: i, j, m
+      m = size(monodromy%phi, 1)
+      ! on Φ̃ scaled to its largest entry (T of Φ is e^{2s} big² times this)
+      big = max(maxval(abs(monodromy%phi)), tiny(1.0_wp))
+      terms = 0.0_wp
+      do i = 1, m
+         terms = terms + (monodromy%phi(i, i)/big)**2
+         do j = i + 1, m
+            terms = terms + abs((monodromy%phi(i, i)/big)*(monodromy%phi(j, j)/big)) + &
+                    abs((monodromy%phi(i, j)/big)*(monodromy%phi(j, i)/big))
+         end do
+      end do
+      need = .false.
+      if (terms <= 0.0_wp) return
+      log_cancellation = log(terms) + 2.0_wp*(log(big) + monodromy%log_scale) - log(max(1.0_wp, abs(floquet%a2)))
       need = log_cancellation > log(1.0e4_wp) .and. &
              log(4.0_wp*epsilon(1.0_wp)) + log_cancellation > log(0.1_wp*tolerance)
    end function a2_needs_factoring
