@@ -23,6 +23,8 @@ module hillstab_interop_capi_curves
    use hillstab_curves_hill_method, only: hill_boundary_t
    use hillstab_curves_boundaries, only: exact_boundaries
    use hillstab_interop_outcome, only: record_outcome
+   use hillstab_interop_sizes, only: count_refusal
+   use hillstab_batch_scene_checks, only: max_grid_count
    use hillstab_interop_capi_models, only: model_handle_t, handle_model
    implicit none
    private
@@ -72,8 +74,11 @@ contains
       integer :: i, k, n, nt, stored
       call handle_model(model, handle, error)
       if (.not. allocated(error)) then
-         if (n_alpha > int(huge(1), c_size_t) .or. capacity > int(huge(1), c_size_t)) &
-            call set_error(error, err_invalid_parameter, "n_alpha and capacity must be <= "//integer_text(huge(1)))
+         if (len(count_refusal("n_alpha", n_alpha, max_grid_count)) > 0) then
+            call set_error(error, err_invalid_parameter, count_refusal("n_alpha", n_alpha, max_grid_count))
+         else if (len(count_refusal("capacity", capacity)) > 0) then
+            call set_error(error, err_invalid_parameter, count_refusal("capacity", capacity))
+         end if
       end if
       if (.not. allocated(error)) call handle%model%check_values(error)
       if (.not. allocated(error) .and. threads < 0) call set_error(error, err_invalid_parameter, &
