@@ -607,7 +607,7 @@ def mutate_checkpoint(directory, rng):
             names.append("state: cut to %d bytes" % len(state))
         elif kind == 11:  # emptied, junk, the other format
             state = rng.choice([b"", bytes(rng.randrange(256) for _ in range(300)),
-                                state.replace(b"hillstab checkpoint 2", b"hillstab checkpoint 1")])
+                                state.replace(b"hillstab checkpoint 3", b"hillstab checkpoint 2")])
             names.append("state: replaced")
         elif kind == 12:  # the scene lines of the state edited
             state, n = re.subn(rb"(scene = &chart [^\n]*?n_beta = )(\d+)", lambda x: x.group(1) + b"41", state)
