@@ -717,7 +717,7 @@ contains
       status = run_program("--quiet --resume '"//system//"'", err, 1)
       call check(ctx, status == 2, "system --resume: exit 2 (status "//integer_text(status)//")")
       call check(ctx, file_says(err, system//": &scene: model: the checkpoint '"//directory//"' of a scalar chart") &
-                 .and. file_says(err, "a system chart, which keeps no checkpoint; it is not resumed and kept as it is"), &
+                 .and. file_says(err, "(system chart), which keeps no checkpoint; it is not resumed and kept as it is"), &
                  "names &scene model and both kinds")
       after = read_lines(directory//"/state")
       call check(ctx, size(after) == size(before), "the checkpoint is kept")

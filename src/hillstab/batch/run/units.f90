@@ -832,7 +832,7 @@ contains
       case (checkpoint_usable, checkpoint_damaged)
          if (options%resume) then
             call set_error(error, err_input, scene%source//": &scene: model: the checkpoint '"//directory//"'"// &
-               what//" cannot be resumed by this run, a "//problem_kind(scene)//", which keeps no checkpoint; "// &
+               what//" cannot be resumed by this run ("//problem_kind(scene)//"), which keeps no checkpoint; "// &
                "it is not resumed and kept as it is: run without --resume to discard it and start afresh")
             return
          end if
@@ -846,8 +846,8 @@ contains
          error%message = context//error%message
          return
       end if
-      call checkpoint_note(options, "discarded the checkpoint '"//directory//"'"//what//" of an earlier run: this "// &
-         "run, a "//problem_kind(scene)//", keeps no checkpoint and writes "//output_path(scene)//" afresh")
+      call checkpoint_note(options, "discarded the checkpoint '"//directory//"'"//what//": this run ("// &
+         problem_kind(scene)//") keeps no checkpoint and writes "//output_path(scene)//" afresh")
    end subroutine settle_checkpoint
 
    !> Number of OpenMP threads a parallel region will use (1 without OpenMP).
