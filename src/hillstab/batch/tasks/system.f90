@@ -575,9 +575,9 @@ contains
       text = grid_size_text(self%grid, .false.)
    end function chart_size_variables
 
-   !> The buffers of a chart run: the values and the text of a block of rows (`chart_block_rows`,
-   !> or fewer when the grid has fewer), each n_beta points; besides them a run holds a few
-   !> MB whatever the grid (its nodes, one line per thread).
+   !> The buffers of a chart run: the values and (text files) the text of a block of rows
+   !> (`chart_block_rows`, or fewer when the grid has fewer), each n_beta points; besides them
+   !> a run holds a few MB whatever the grid (its nodes, one line per thread).
    function chart_memory_bytes(self, scene) result(bytes)
       class(system_chart_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
@@ -585,7 +585,7 @@ contains
       integer :: n
       n = scene%system%dof()
       bytes = int(min(chart_block_rows, self%grid%n_alpha), int64)*int(self%grid%n_beta, int64)* &
-              (8*(n_fixed + n) + row_text_width(size(self%chosen)))
+              (8*(n_fixed + n) + merge(0, row_text_width(size(self%chosen)), scene%binary))
    end function chart_memory_bytes
 
    !> Header plus n_alpha n_beta lines of the chosen columns (or their float64 records) and
@@ -619,7 +619,7 @@ contains
       character(len=:), allocatable :: texts(:), first_failure
       real(wp), allocatable :: values(:, :, :)
       integer :: n, n_columns, first, last, i, n_failed(chart_block_rows), failed_total, rows, alloc_status
-      integer(int64) :: text_lengths(chart_block_rows)
+      integer(int64) :: text_lengths(chart_block_rows), text_length
       type(progress_t) :: progress
       character(len=400) :: failures(chart_block_rows)
       call prepare_system(scene%system, scene%epsilon, form, cause)
@@ -631,9 +631,11 @@ contains
       n = form%n
       n_columns = n_fixed + n
       rows = min(chart_block_rows, self%grid%n_alpha)
+      text_length = int(row_text_width(size(self%chosen)), int64)*self%grid%n_beta
+      ! a binary file writes the values alone
+      if (scene%binary) text_length = 1
       allocate (values(n_columns, self%grid%n_beta, rows), stat=alloc_status)
-      if (alloc_status == 0) allocate (character(len=int(row_text_width(size(self%chosen)), int64)*self%grid%n_beta) :: &
-                                       texts(rows), stat=alloc_status)
+      if (alloc_status == 0) allocate (character(len=text_length) :: texts(rows), stat=alloc_status)
       if (alloc_status /= 0) then
          call set_error(error, err_input, scene%source//": "//self%size_variables()//": the buffers of "// &
             integer_text(rows)//" rows cannot be allocated (out of memory): lower n_beta")
@@ -661,7 +663,7 @@ contains
             if (n_failed(i - first + 1) > 0 .and. len(first_failure) == 0) first_failure = trim(failures(i - first + 1))
             failed_total = failed_total + n_failed(i - first + 1)
             if (scene%binary) then
-               call write_records(file, values(:, :, i - first + 1), error)
+               call write_records(file, values(self%chosen, :, i - first + 1), error)
             else
                if (i > 1) then
                   call write_text(file, "", error)
