@@ -27,7 +27,7 @@ import math
 import numpy as np
 
 from . import _capi
-from ._capi import lib, check
+from ._capi import lib, check, real_number, real_array
 
 _system_p = ctypes.c_void_p
 _c_double_p = ctypes.POINTER(ctypes.c_double)
@@ -63,52 +63,6 @@ def _method(method):
     return SYSTEM_METHODS[method]
 
 
-def _real(name, value):
-    """A real number argument as a float: TypeError naming it for a bool, a complex number, a
-    string, an array of more than one number or anything else that is not a real number."""
-    if isinstance(value, (bool, np.bool_)):
-        raise TypeError("{}: must be a real number, got a bool".format(name))
-    if isinstance(value, (int, float, np.integer, np.floating)):
-        return float(value)
-    if isinstance(value, np.ndarray) and value.size == 1 and value.dtype.kind in "iuf":
-        return float(value.reshape(()))
-    if isinstance(value, (complex, np.complexfloating)) or (isinstance(value, np.ndarray) and
-                                                             value.dtype.kind == "c"):
-        raise TypeError("{}: must be a real number, got a complex number ({})".format(name, value))
-    raise TypeError("{}: must be a real number, got {}".format(name, _described(value)))
-
-
-def _described(value):
-    if isinstance(value, np.ndarray):
-        return "an array of dtype {} and shape {}".format(value.dtype, value.shape)
-    return "{} {!r}".format(type(value).__name__, value)[:120]
-
-
-def _real_array(name, value):
-    """An argument of matrices as a float64 array: TypeError naming it for complex entries
-    (their imaginary part would be lost), booleans, strings or other objects; ValueError for
-    a ragged nesting."""
-    try:
-        array = np.asarray(value)
-    except (ValueError, TypeError) as error:
-        raise ValueError("{}: not an array of numbers ({})".format(name, error)) from None
-    kind = array.dtype.kind
-    if kind == "c":
-        raise TypeError("{}: must be real numbers, got complex ones (dtype {}): the matrices of a system are "
-                        "real".format(name, array.dtype))
-    if kind in "iuf":
-        return array.astype(np.float64)
-    if kind == "O":
-        try:
-            converted = array.astype(np.float64)
-        except (ValueError, TypeError) as error:
-            raise TypeError("{}: must be real numbers ({})".format(name, error)) from None
-        if any(isinstance(x, (bool, np.bool_, complex, np.complexfloating)) for x in array.flat):
-            raise TypeError("{}: must be real numbers, got {}".format(name, _described(value)))
-        return converted
-    raise TypeError("{}: must be real numbers, got {}".format(name, _described(array)))
-
-
 def _degrees_of_freedom(n):
     """n as an int: TypeError naming n for what is not a number, ValueError for a number
     that is not an integer (2.7 is not read as 2)."""
@@ -116,7 +70,7 @@ def _degrees_of_freedom(n):
         raise TypeError("n: the degrees of freedom must be an integer, got a bool")
     if isinstance(n, (int, np.integer)):
         return int(n)
-    value = _real("n", n)
+    value = real_number("n", n)
     if not (math.isfinite(value) and value == math.floor(value)):
         raise ValueError("n: the degrees of freedom must be an integer from 1 to 20, got {!r}".format(value))
     return int(value)
@@ -182,21 +136,21 @@ class System:
         squares = {}
         for name, value in given.items():
             if value is not None:
-                array = _real_array(name, value)
+                array = real_array(name, value)
                 if array.ndim != 2 or array.shape[0] != array.shape[1] or array.shape[0] < 1:
                     raise ValueError("{}: must be an n x n array (n >= 1), got shape {}".format(name, array.shape))
                 squares[name] = array
         blocks = {}
         for name, value in drives.items():
             if value is not None:
-                array = _real_array(name, value)
+                array = real_array(name, value)
                 if array.ndim == 2:
                     array = array[np.newaxis]
                 if array.ndim != 3 or array.shape[1] != array.shape[2] or array.shape[1] < 1 or array.shape[0] < 1:
                     raise ValueError("{}: must be an (H, n, n) array (H >= 1 harmonics, n >= 1) or one n x n "
                                      "matrix, got shape {}".format(name, np.shape(array)))
                 blocks[name] = array
-        period = _real("period", period)
+        period = real_number("period", period)
         if n is None:
             for name, array in list(squares.items()) + list(blocks.items()):
                 n = array.shape[-1]
@@ -261,7 +215,8 @@ class System:
 
     @staticmethod
     def _point(alpha, beta, epsilon, tolerance):
-        return _real("alpha", alpha), _real("beta", beta), _real("epsilon", epsilon), _real("tolerance", tolerance)
+        return (real_number("alpha", alpha), real_number("beta", beta), real_number("epsilon", epsilon),
+                real_number("tolerance", tolerance))
 
     def floquet(self, alpha, beta, epsilon=0.0, method="auto", tolerance=1e-10):
         """The Floquet analysis at (α, β) with damping ε M: a `SystemFloquet`."""

@@ -237,3 +237,19 @@ def test_c_sizes_at_the_limits():
     assert lib.hillstab_last_error(buffer, SIZE_MAX) == _capi.ERR_INVALID_PARAMETER
     assert b"has no variable 'none'" in buffer.value
     lib.hillstab_model_free(model)
+
+
+@pytest.mark.parametrize("call, name", [
+    (lambda: hillstab.trace(1j, 2.47), "alpha"),
+    (lambda: hillstab.floquet([3.7, 2.0 + 1j], 2.47), "alpha"),
+    (lambda: hillstab.floquet(3.7, "2.47"), "beta"),
+    (lambda: hillstab.trace(3.7, 2.47, epsilon=[True]), "epsilon"),
+    (lambda: hillstab.trace(3.7, 2.47, tolerance="1e-10"), "tolerance"),
+    (lambda: hillstab.chart((0.0, 1.0, 2), (0.0, 1.0, 2), epsilon=0.1j), "epsilon"),
+    (lambda: hillstab.chart((0.0, 1j, 2), (0.0, 1.0, 2)), "alpha"),
+])
+def test_scalar_functions_name_their_arguments(call, name):
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(TypeError, match=r"^{}: ".format(name)):
+            call()
