@@ -74,6 +74,9 @@ contains
    !> Run a validated scene: unit by unit with a checkpoint when its points are independent
    !> and it is written as text, else by its task's own loop. With `options%resume`, a scene
    !> written in binary is refused (it keeps no checkpoint), other tasks run afresh with a note.
+   !> A run that keeps no checkpoint deals with one found at its output's name first
+   !> (hillstab_batch_run_units `settle_checkpoint`: discarded with a note, refused under
+   !> `--resume`).
    subroutine run_scene(scene, quiet, error, options)
       type(scene_t), intent(in) :: scene  !! a validated scene
       logical, intent(in) :: quiet  !! no progress on stderr
