@@ -46,7 +46,7 @@ module hillstab_interop_capi_batch
    use hillstab_batch_scene_checks, only: max_grid_count
    use hillstab_batch_tasks_chart_columns, only: clamp_magnitude, log10_floor
    use hillstab_interop_outcome, only: record_outcome
-   use hillstab_interop_sizes, only: count_refusal
+   use hillstab_interop_sizes, only: count_refusal, row_extent
    use hillstab_interop_capi_models, only: model_handle_t, handle_model
    implicit none
    private
@@ -266,9 +266,10 @@ contains
       integer(c_int), value, intent(in) :: threads  !! threads (0: the OpenMP default)
       real(c_double), intent(inout) :: alphas(*)  !! receives the n_alpha values of α
       real(c_double), intent(inout) :: betas(*)  !! receives the n_beta values of β
-      !> the values of each point, (value, β index, α index) in Fortran order
-      real(c_double), intent(inout) :: values(0:value_count - 1, max(1_c_size_t, n_beta), *)
-      integer(c_int), intent(inout) :: status(max(1_c_size_t, n_beta), *)  !! each point's status
+      !> the values of each point, (value, β index, α index) in Fortran order (an n_beta beyond
+      !> INT_MAX, refused below, sets no extent: its stride would overflow)
+      real(c_double), intent(inout) :: values(0:value_count - 1, row_extent(n_beta), *)
+      integer(c_int), intent(inout) :: status(row_extent(n_beta), *)  !! each point's status
       integer(c_int) :: info
       type(model_handle_t), pointer :: handle
       type(error_t), allocatable :: error, cause

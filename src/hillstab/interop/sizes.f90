@@ -19,7 +19,7 @@ module hillstab_interop_sizes
    use hillstab_hill_model_base, only: model_base_t, model_variable_t
    implicit none
    private
-   public :: count_refusal, size_text, buffer_length, values_count_refusal
+   public :: count_refusal, size_text, buffer_length, values_count_refusal, row_extent
 
 contains
 
@@ -97,6 +97,15 @@ contains
          bytes = int(length, int64)
       end if
    end function buffer_length
+
+   !> The extent of a row of a C array of `n` entries as a dummy argument declares it, from
+   !> 1 to INT_MAX: an `n` beyond INT_MAX (refused by the entry point before the array is
+   !> touched) sets no larger extent, whose strides would overflow on entry.
+   pure function row_extent(n) result(extent)
+      integer(c_size_t), intent(in) :: n  !! the row length passed from C
+      integer(c_size_t) :: extent
+      extent = max(1_c_size_t, min(n, int(huge(1), c_size_t)))
+   end function row_extent
 
    !> The decimal text of a non-negative integer.
    pure function integer_decimal(value) result(text)
