@@ -9,8 +9,9 @@
 #   make test-sanitize  tests again built with AddressSanitizer and UndefinedBehaviorSanitizer
 #                       (any report fails the run, leaks included; scripts/sanitize/)
 #   make fuzz           300 mutated scenes, 90 mutated points files, 140 mutated templates, 200
-#                       system scenes with mutated matrix files and 60 damaged checkpoints resumed,
-#                       on the normal and the trap build (scripts/fuzz.py)
+#                       system scenes with mutated matrix files, 60 damaged checkpoints resumed and
+#                       48 checkpoints met by system scenes or with a FIFO, directory or link for a
+#                       member, on the normal and the trap build (scripts/fuzz.py)
 #   make check-memory   valgrind memcheck on small scenes of every task
 #   make check-scenes   every scene of data/scenes against the stored checksums of its data lines
 #                       (scripts/check_scenes.sh; --update after a change that means to alter them)
@@ -122,9 +123,11 @@ FUZZ_POINTS_COUNT ?= 90
 FUZZ_TEMPLATE_COUNT ?= 140
 FUZZ_CHECKPOINT_COUNT ?= 60
 FUZZ_SYSTEM_COUNT ?= 200
+FUZZ_FOREIGN_CHECKPOINT_COUNT ?= 48
 FUZZ_SEED ?= 7
 FUZZ_ARGS = --count $(FUZZ_COUNT) --points-count $(FUZZ_POINTS_COUNT) --template-count $(FUZZ_TEMPLATE_COUNT) \
    --checkpoint-count $(FUZZ_CHECKPOINT_COUNT) --system-count $(FUZZ_SYSTEM_COUNT) \
+   --foreign-checkpoint-count $(FUZZ_FOREIGN_CHECKPOINT_COUNT) \
    --seed $(FUZZ_SEED)
 fuzz: setup-test
 	$(FPM) build >/dev/null

@@ -50,13 +50,21 @@ swapped or cut, the checksum line edited, the file emptied or filled with junk),
 `--resume` must then exit 0 with the file of an uninterrupted run, byte for byte, or exit 2
 with one message line naming the checkpoint and no output file; never exit 0 with another
 file; no temporary file left, in time. A run without --resume then writes the uninterrupted
-file.
+file. Then (--foreign-checkpoint-count, a seeded stream of its own) a copy of such a checkpoint,
+intact, damaged, without its state, or with its `data` or `state` replaced by a FIFO, a
+directory or a symbolic link, is met by the system scene of the same output (a system run
+keeps no checkpoint) or by the scalar scene, with and without --resume: a member that is not
+a regular file is refused (exit 2, one message naming the checkpoint, the checkpoint kept as
+planted, no output) and never blocks; a system run discards any other checkpoint with a note
+(exit 0, its file whole, the checkpoint gone, so that no later --resume continues it) and
+refuses it under --resume (exit 2, kept).
 
 With --signals, a chart is first interrupted by SIGINT, SIGTERM and SIGHUP: each must
 exit 128 + signal, remove its temporary file and keep the old output.
 
 usage: scripts/fuzz.py --hillstab BUILD/app/hillstab [--count 300] [--points-count 90]
-                       [--template-count 140] [--system-count 200] [--checkpoint-count 60] [--seed 7]
+                       [--template-count 140] [--system-count 200] [--checkpoint-count 60]
+                       [--foreign-checkpoint-count 48] [--seed 7]
                        [--timeout 30] [--signals]
 Exit status 0 when every scene passes; the failures are listed with the scene text saved
 under the report directory (default build/fuzz_failures).
@@ -68,6 +76,7 @@ import os
 import random
 import re
 import shutil
+import stat
 import subprocess
 import sys
 import tempfile
@@ -701,6 +710,34 @@ CHECKPOINT_SCENES = [
     ("lyapunov", "&scene task='lyapunov', output='OUT' /\n&series phi0=0.017, periods=3 /\n"
      "&lyapunov lanes=1, early_stop=.false. /\n&chart n_alpha=6, n_beta=12 /\n", 3),
 ]
+#: system scenes writing the output of the checkpoint fixture of the same name (a system run
+#: keeps no checkpoint: it meets the checkpoint of another kind of problem)
+SYSTEM_PAIR = ("&system n = 2, mass = 1.0, 0.0, 0.0, 0.25, b = 2.0, -1.0, -1.0, 1.5, "
+               "cos = -1.0, 0.0, 0.0, -0.5 /\n")
+CHECKPOINT_SYSTEM_SCENES = {
+    "chart": "&scene model='system', method='magnus4', tolerance=1e-6, output='OUT' /\n" + SYSTEM_PAIR +
+             "&chart n_alpha=3, n_beta=4 /\n",
+    "points": "&scene model='system', task='points', method='magnus4', tolerance=1e-6, output='OUT' /\n" +
+              SYSTEM_PAIR + "&points file='data/points/fig4.dat' /\n",
+}
+#: what `plant_member` puts in place of a checkpoint's data or state
+MEMBER_PLANTS = ("data: a FIFO", "state: a FIFO", "state: a directory", "data: a directory",
+                 "state: a symbolic link to data", "data: a symbolic link to state")
+
+
+def plant_member(directory, plant):
+    """Replace the member of a checkpoint that `plant` names by a FIFO, a directory or a link."""
+    member, what = plant.split(": ")
+    path = os.path.join(directory, member)
+    os.remove(path)
+    if what == "a FIFO":
+        os.mkfifo(path)
+    elif what == "a directory":
+        os.mkdir(path)
+        with open(os.path.join(path, "x"), "w") as f:
+            f.write("precious\n")
+    else:
+        os.symlink("state" if member == "data" else "data", path)
 
 
 def mutate_checkpoint(directory, rng):
@@ -776,7 +813,7 @@ def mutate_checkpoint(directory, rng):
             names.append("state: cut to %d bytes" % len(state))
         elif kind == 11:  # emptied, junk, the other format
             state = rng.choice([b"", bytes(rng.randrange(256) for _ in range(300)),
-                                state.replace(b"hillstab checkpoint 2", b"hillstab checkpoint 1")])
+                                state.replace(b"hillstab checkpoint 3", b"hillstab checkpoint 2")])
             names.append("state: replaced")
         elif kind == 12:  # the scene lines of the state edited
             state, n = re.subn(rb"(scene = &chart [^\n]*?n_beta = )(\d+)", lambda x: x.group(1) + b"41", state)
@@ -792,7 +829,7 @@ def mutate_checkpoint(directory, rng):
     return names
 
 
-def check_checkpoints(hillstab, work, count, seed, timeout):
+def check_checkpoints(hillstab, work, count, seed, timeout, system_count=0):
     """Damaged checkpoints (`mutate_checkpoint`) resumed: exit 0 with the uninterrupted file
     or exit 2 with one message naming the checkpoint and no file. Returns (problems, counts)."""
     rng = random.Random(seed * 1000 + 3)
@@ -882,7 +919,123 @@ def check_checkpoints(hillstab, work, count, seed, timeout):
                 shutil.rmtree(path)
             elif os.path.exists(path):
                 os.remove(path)
+    if system_count > 0:
+        system_problems, system_counts = check_foreign_checkpoints(hillstab, work, fixtures, system_count, seed,
+                                                                   timeout)
+        problems += system_problems
+        for status, n in system_counts.items():
+            counts[status] = counts.get(status, 0) + n
     shutil.rmtree(base, ignore_errors=True)
+    return problems, counts
+
+
+def check_foreign_checkpoints(hillstab, work, fixtures, count, seed, timeout):
+    """Checkpoints meeting runs that cannot resume them, or members that are not regular
+    files: a scalar checkpoint, intact, damaged (`mutate_checkpoint`), incomplete (no state)
+    or with a member that is a FIFO, a directory or a symbolic link (`plant_member`), met by
+    the system scene of the same output or by the scalar scene itself, with and without
+    --resume. A member that is not a regular file: exit 2 with one message naming the
+    checkpoint, the checkpoint kept with the member as planted, no output, in time (a FIFO
+    never blocks). Otherwise the system scene discards the checkpoint with a note without
+    --resume (exit 0, its file whole) and refuses it with --resume (exit 2 naming the
+    checkpoint, kept) unless it was incomplete (discarded, exit 0). Returns (problems,
+    counts)."""
+    rng = random.Random(seed * 1000 + 4)
+    problems = []
+    counts = {}
+    for k in range(count):
+        name, scene, output, reference, saved = fixtures[k % len(fixtures)]
+        system_text = CHECKPOINT_SYSTEM_SCENES.get(name)
+        use_system = system_text is not None and rng.random() < 0.7
+        resume = rng.random() < 0.5
+        if use_system and rng.random() < 0.5:
+            damage = rng.choice(("intact", "damaged", "incomplete"))
+        else:
+            damage = rng.choice(MEMBER_PLANTS)
+        directory = output + ".checkpoint"
+        shutil.copytree(saved, directory)
+        names = []
+        if damage == "damaged":
+            names = mutate_checkpoint(directory, rng)
+        elif damage == "incomplete":
+            os.remove(os.path.join(directory, "state"))
+        elif damage != "intact":
+            plant_member(directory, damage)
+        run_scene = scene
+        if use_system:
+            run_scene = scene[:-len(".nml")] + "_system.nml"
+            with open(run_scene, "w") as f:
+                f.write(system_text.replace("OUT", "ck/" + name))
+        label = "foreign checkpoint case %d (%s, %s scene%s: %s%s)" % (
+            k, name, "system" if use_system else "scalar", " --resume" if resume else "", damage,
+            (": " + "; ".join(names)) if names else "")
+        command = [hillstab, "--quiet"] + (["--resume"] if resume else []) + [run_scene]
+        try:
+            proc = subprocess.run(command, cwd=work, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                                  stderr=subprocess.PIPE, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            problems.append(label + ": no answer within %g s (blocked?)" % timeout)
+            shutil.rmtree(directory, ignore_errors=True)
+            continue
+        status = proc.returncode
+        counts[status] = counts.get(status, 0) + 1
+        notes = [l for l in proc.stderr.decode("utf-8", "replace").splitlines()
+                 if not l.startswith("hillstab: warning:")]
+        lines = [l for l in notes if not l.startswith("hillstab: discarded ") and "no checkpoint of" not in l and
+                 ": this run keeps no checkpoint (only" not in l and "cannot be resumed: its state is not one" not in l
+                 and not l.startswith("hillstab: resuming ")]
+        named = "checkpoint 'ck/%s_%s.dat.checkpoint'" % (name, name)
+        member_planted = damage in MEMBER_PLANTS
+        if status == 2:
+            if len(lines) != 1 or named not in lines[0]:
+                problems.append(label + ": exit 2 without one message naming the checkpoint: " + " | ".join(lines[:3]))
+            if os.path.exists(output):
+                problems.append(label + ": exit 2 with an output file")
+            if not os.path.isdir(directory):
+                problems.append(label + ": exit 2 but the checkpoint is gone")
+            elif member_planted:
+                member, what = damage.split(": ")
+                path = os.path.join(directory, member)
+                if what == "a FIFO":
+                    planted_kept = os.path.lexists(path) and stat.S_ISFIFO(os.lstat(path).st_mode)
+                elif what == "a directory":
+                    planted_kept = os.path.isdir(path) and not os.path.islink(path)
+                else:
+                    planted_kept = os.path.islink(path)
+                if not planted_kept:
+                    problems.append(label + ": the planted member was not kept as it was")
+                other = os.path.join(directory, "state" if member == "data" else "data")
+                if not os.path.lexists(other):
+                    problems.append(label + ": the other member of the checkpoint was removed")
+            if not member_planted and not (use_system and resume and damage in ("intact", "damaged")):
+                problems.append(label + ": refused where the run should discard the checkpoint: " +
+                                " | ".join(lines[:2]))
+        elif status == 0:
+            if member_planted:
+                problems.append(label + ": exit 0 over a checkpoint member that is not a regular file")
+            if use_system and resume and damage == "intact":
+                problems.append(label + ": exit 0: a system run took a scalar checkpoint under --resume")
+            if not os.path.exists(output):
+                problems.append(label + ": exit 0 without an output file")
+            else:
+                ok, why = data_rows_ok(output)
+                if not ok:
+                    problems.append(label + ": output: " + why)
+            if os.path.exists(directory):
+                problems.append(label + ": exit 0 and the checkpoint left in place (a later --resume would take it)")
+            if not any(l.startswith("hillstab: discarded ") for l in notes) and not resume:
+                problems.append(label + ": the checkpoint discarded without a note")
+        else:
+            problems.append(label + ": exit status %d: %s" % (status, " | ".join(lines[:3])))
+        if glob.glob(output + ".part*"):
+            problems.append(label + ": temporary file left")
+        if use_system:
+            os.remove(run_scene)
+        for path in (output, directory):
+            if os.path.isdir(path) and not os.path.islink(path):
+                shutil.rmtree(path)
+            elif os.path.lexists(path):
+                os.remove(path)
     return problems, counts
 
 
@@ -967,6 +1120,8 @@ def main():
     parser.add_argument("--system-count", type=int, default=200,
                         help="number of system scenes with mutated matrix files, routes or repeats")
     parser.add_argument("--checkpoint-count", type=int, default=60, help="number of damaged checkpoints resumed")
+    parser.add_argument("--foreign-checkpoint-count", type=int, default=48,
+                        help="number of checkpoints met by a system scene or with a member that is not a file")
     parser.add_argument("--seed", type=int, default=7, help="random seed (same seed, same scenes)")
     parser.add_argument("--timeout", type=float, default=30.0, help="seconds allowed per scene")
     parser.add_argument("--signals", action="store_true",
@@ -1046,15 +1201,18 @@ def main():
                 "exit %s: %d" % (s, n) for s, n in sorted(family_counts.items(), key=lambda x: str(x[0])))))
         if args.checkpoint_count > 0:
             started = time.monotonic()
-            problems, family_counts = check_checkpoints(hillstab, work, args.checkpoint_count, args.seed, args.timeout)
+            problems, family_counts = check_checkpoints(hillstab, work, args.checkpoint_count, args.seed, args.timeout,
+                                                        args.foreign_checkpoint_count)
             for p in problems:
                 print("FAIL " + p[:400])
             failures += len(problems)
             for status, n in family_counts.items():
                 counts[status] = counts.get(status, 0) + n
-            family_seconds["checkpoints"] = (args.checkpoint_count, time.monotonic() - started)
-            print("fuzz: checkpoints: %d damaged checkpoints resumed in %.0f s; %s" % (
-                args.checkpoint_count, time.monotonic() - started, ", ".join(
+            family_seconds["checkpoints"] = (args.checkpoint_count + args.foreign_checkpoint_count,
+                                             time.monotonic() - started)
+            print("fuzz: checkpoints: %d damaged checkpoints resumed and %d met by system scenes or with planted "
+                  "members in %.0f s; %s" % (args.checkpoint_count, args.foreign_checkpoint_count,
+                                             time.monotonic() - started, ", ".join(
                     "exit %s: %d" % (s, n) for s, n in sorted(family_counts.items(), key=lambda x: str(x[0])))))
     finally:
         shutil.rmtree(work, ignore_errors=True)

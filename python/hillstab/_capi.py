@@ -153,5 +153,53 @@ def as_doubles(values):
     return np.ascontiguousarray(values, dtype=np.float64)
 
 
+def real_number(name, value):
+    """A real number argument as a float: TypeError naming it for a bool, a complex number, a
+    string, an array of more than one number or anything else that is not a real number."""
+    if isinstance(value, (bool, np.bool_)):
+        raise TypeError("{}: must be a real number, got a bool".format(name))
+    if isinstance(value, (int, float, np.integer, np.floating)):
+        return float(value)
+    if isinstance(value, np.ndarray) and value.size == 1 and value.dtype.kind in "iuf":
+        return float(value.reshape(()))
+    if isinstance(value, (complex, np.complexfloating)) or (isinstance(value, np.ndarray) and
+                                                             value.dtype.kind == "c"):
+        raise TypeError("{}: must be a real number, got a complex number ({})".format(name, value))
+    raise TypeError("{}: must be a real number, got {}".format(name, _described(value)))
+
+
+def _described(value):
+    """What a value is, for messages: its type and value, or an array's dtype and shape."""
+    if isinstance(value, np.ndarray):
+        return "an array of dtype {} and shape {}".format(value.dtype, value.shape)
+    return "{} {!r}".format(type(value).__name__, value)[:120]
+
+
+def real_array(name, value):
+    """An argument of real numbers (a number, a nested list, an array of any real dtype and
+    memory order) as a float64 array: TypeError naming it for complex entries (their
+    imaginary part would be lost), booleans, strings or other objects; ValueError for a
+    ragged nesting."""
+    try:
+        array = np.asarray(value)
+    except (ValueError, TypeError) as error:
+        raise ValueError("{}: not an array of numbers ({})".format(name, error)) from None
+    kind = array.dtype.kind
+    if kind == "c":
+        raise TypeError("{}: must be real numbers, got complex ones (dtype {}): a complex value is refused, "
+                        "never cut to its real part".format(name, array.dtype))
+    if kind in "iuf":
+        return array.astype(np.float64)
+    if kind == "O":
+        try:
+            converted = array.astype(np.float64)
+        except (ValueError, TypeError) as error:
+            raise TypeError("{}: must be real numbers ({})".format(name, error)) from None
+        if any(isinstance(x, (bool, np.bool_, complex, np.complexfloating)) for x in array.flat):
+            raise TypeError("{}: must be real numbers, got {}".format(name, _described(value)))
+        return converted
+    raise TypeError("{}: must be real numbers, got {}".format(name, _described(array)))
+
+
 INT = np.dtype(np.intc)
 SIZE = np.dtype(np.uintp)

@@ -23,7 +23,7 @@ import warnings
 import numpy as np
 
 from . import _capi
-from ._capi import lib, check
+from ._capi import lib, check, real_number, real_array
 from .errors import HillstabError, HillstabWarning
 from .models import as_model
 
@@ -144,8 +144,8 @@ def floquet(alpha, beta, model="elastic", epsilon=0.0, method="auto", tolerance=
     need = _need(values)
     model = as_model(model)
     kind, pieces, samples = _method(method, n_segments, sampling)
-    a, b, e = np.broadcast_arrays(np.asarray(alpha, dtype=np.float64), np.asarray(beta, dtype=np.float64),
-                                  np.asarray(epsilon, dtype=np.float64))
+    a, b, e = np.broadcast_arrays(real_array("alpha", alpha), real_array("beta", beta),
+                                  real_array("epsilon", epsilon))
     shape = a.shape
     a, b, e = (_capi.as_doubles(x.ravel()) for x in (a, b, e))
     n = a.size
@@ -153,7 +153,8 @@ def floquet(alpha, beta, model="elastic", epsilon=0.0, method="auto", tolerance=
     status = np.empty(n, dtype=_capi.INT)
     paper = 1 if "stable_paper" in values else 0
     check(lib.hillstab_points(model.handle, n, _capi.doubles(a), _capi.doubles(b), _capi.doubles(e), kind, pieces,
-                              samples, float(tolerance), need, paper, int(threads), _capi.doubles(out),
+                              samples, real_number("tolerance", tolerance), need, paper, int(threads),
+                              _capi.doubles(out),
                               _capi.ints(status)))
     _warn(status, lambda k: "alpha = {!r}, beta = {!r}".format(float(a[k]), float(b[k])))
     return Result(_unpack(out, values, shape), status.reshape(shape).astype(np.int8), values)
@@ -200,7 +201,8 @@ def chart(alpha, beta, model="elastic", epsilon=0.0, method="auto", tolerance=1e
     status = np.empty((n_alpha, n_beta), dtype=_capi.INT)
     paper = 1 if "stable_paper" in values else 0
     check(lib.hillstab_chart(model.handle, alpha_min, alpha_max, n_alpha, beta_min, beta_max, n_beta,
-                             float(epsilon), kind, pieces, samples, float(tolerance), need, paper, int(threads),
+                             real_number("epsilon", epsilon), kind, pieces, samples,
+                             real_number("tolerance", tolerance), need, paper, int(threads),
                              _capi.doubles(alphas), _capi.doubles(betas), _capi.doubles(out),
                              _capi.ints(status)))
     _warn(status, lambda k: "alpha = {!r}, beta = {!r}".format(float(alphas[k // n_beta]), float(betas[k % n_beta])))
@@ -215,4 +217,4 @@ def _axis(axis, name):
         raise ValueError("{} must be (first, last, count)".format(name)) from None
     if int(count) != count or count < 1:
         raise ValueError("{}: the count must be a whole number >= 1, got {!r}".format(name, count))
-    return float(first), float(last), int(count)
+    return real_number(name, first), real_number(name, last), int(count)

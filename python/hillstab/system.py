@@ -11,9 +11,11 @@ as (H, n, n) arrays (an n × n array is one harmonic), and the ``period`` P (a m
 multipliers, exponents, verdict and kind.
 
 Bad input (M not symmetric positive definite, C not symmetric, G not skew, a matrix of the
-wrong shape, an unknown method, a tolerance outside (1e-15, 1), a non-finite point, ε < 0)
-raises ValueError with the library's message, which names the argument
-(``hillstab_system_set: mass: M must be positive definite ...``).
+wrong shape or empty, an n that is not an integer, an unknown method, a tolerance outside
+(1e-15, 1), a non-finite point, ε < 0) raises ValueError with a message that names the
+argument (``hillstab_system_set: mass: M must be positive definite ...``); an argument of
+the wrong type — complex matrices (their imaginary part is never dropped), strings, booleans,
+a complex α — raises TypeError naming it.
 
 >>> pair = System(mass=np.diag([1.0, 0.64]), b=[[1.1, -0.1], [-0.1, 0.9]], cos=-np.diag([1.0, 0.8]))
 >>> pair.floquet(0.4, 1.2).verdict
@@ -25,7 +27,7 @@ import math
 import numpy as np
 
 from . import _capi
-from ._capi import lib, check
+from ._capi import lib, check, real_number, real_array
 
 _system_p = ctypes.c_void_p
 _c_double_p = ctypes.POINTER(ctypes.c_double)
@@ -53,10 +55,37 @@ KIND_NAMES = {0: "stable", 1: "parametric at +1", 2: "parametric at -1", 3: "com
 
 
 def _method(method):
+    if not isinstance(method, str):
+        raise TypeError("method: must be a method's name (a str), got {}".format(type(method).__name__))
     if method not in SYSTEM_METHODS:
         raise ValueError("method: unknown system method '{}' (expected {})".format(
             method, ", ".join(SYSTEM_METHODS)))
     return SYSTEM_METHODS[method]
+
+
+def _degrees_of_freedom(n):
+    """n as an int: TypeError naming n for what is not a number, ValueError for a number
+    that is not an integer (2.7 is not read as 2)."""
+    if isinstance(n, (bool, np.bool_)):
+        raise TypeError("n: the degrees of freedom must be an integer, got a bool")
+    if isinstance(n, (int, np.integer)):
+        return int(n)
+    value = real_number("n", n)
+    if not (math.isfinite(value) and value == math.floor(value)):
+        raise ValueError("n: the degrees of freedom must be an integer from 1 to 20, got {!r}".format(value))
+    return int(value)
+
+
+def _unscaled(phi, log_scale):
+    """Φ = e^s Φ̃ entry by entry, as e^r Φ̃ times 2^k (s = k ln 2 + r, the power of two exact):
+    an entry beyond the double range is ±inf, a zero entry stays 0 (never nan), and no
+    floating-point warning is raised."""
+    if log_scale == 0.0:
+        return phi
+    k = math.floor(log_scale / math.log(2.0))
+    r = log_scale - k * math.log(2.0)
+    with np.errstate(over="ignore", under="ignore"):
+        return np.ldexp(phi * math.exp(r), k)
 
 
 class SystemFloquet:
@@ -112,41 +141,48 @@ class System:
         squares = {}
         for name, value in given.items():
             if value is not None:
-                squares[name] = np.asarray(value, dtype=np.float64)
+                array = real_array(name, value)
+                if array.ndim != 2 or array.shape[0] != array.shape[1] or array.shape[0] < 1:
+                    raise ValueError("{}: must be an n x n array (n >= 1), got shape {}".format(name, array.shape))
+                squares[name] = array
         blocks = {}
         for name, value in drives.items():
             if value is not None:
-                array = np.asarray(value, dtype=np.float64)
+                array = real_array(name, value)
                 if array.ndim == 2:
                     array = array[np.newaxis]
+                if array.ndim != 3 or array.shape[1] != array.shape[2] or array.shape[1] < 1 or array.shape[0] < 1:
+                    raise ValueError("{}: must be an (H, n, n) array (H >= 1 harmonics, n >= 1) or one n x n "
+                                     "matrix, got shape {}".format(name, np.shape(array)))
                 blocks[name] = array
+        period = real_number("period", period)
         if n is None:
             for name, array in list(squares.items()) + list(blocks.items()):
-                if array.ndim >= 2:
-                    n = array.shape[-1]
-                    break
+                n = array.shape[-1]
+                break
+        else:
+            n = _degrees_of_freedom(n)
         if n is None:
             raise ValueError("n: give a matrix (mass, k0, b, cos, ...) or n")
-        n = int(n)
         for name, array in squares.items():
             if array.shape != (n, n):
                 raise ValueError("{}: must be an n x n array, n = {}, got shape {}".format(name, n, array.shape))
         for name, array in blocks.items():
-            if array.ndim != 3 or array.shape[1:] != (n, n):
+            if array.shape[1:] != (n, n):
                 raise ValueError("{}: must be an (H, n, n) array, n = {}, got shape {}".format(
-                    name, n, np.shape(drives[name])))
+                    name, n, np.shape(array)))
         handle = _system_p()
         check(lib.hillstab_system_new(ctypes.byref(handle)))
         self._handle = handle
         self._set("n", [float(n)])
         for name, array in list(squares.items()) + list(blocks.items()):
             self._set(name, array)
-        self._set("period", [float(period)])
+        self._set("period", [period])
         check(lib.hillstab_system_check(self._handle))
         #: the degrees of freedom
         self.n = n
         #: the period P of K in τ
-        self.period = float(period)
+        self.period = period
 
     def _set(self, name, values):
         array = _capi.as_doubles(np.ravel(values, order="C"))
@@ -168,20 +204,24 @@ class System:
 
     def monodromy(self, alpha, beta, epsilon=0.0, method="auto", tolerance=1e-10):
         """The one-period monodromy Φ at (α, β) with damping ε M: (phi, error_estimate,
-        status), phi the 2n × 2n ndarray acting on (x, x') (±inf where Φ overflows a double),
-        error_estimate relative to max(1, max|Φ_ij|), status 0 or 1 (round-off limited)."""
+        status), phi the 2n × 2n ndarray acting on (x, x') (±inf where an entry of Φ overflows
+        a double, without a warning), error_estimate relative to max(1, max|Φ_ij|), status 0
+        or 1 (round-off limited)."""
+        alpha, beta, epsilon, tolerance = self._point(alpha, beta, epsilon, tolerance)
         m = 2 * self.n
         phi = np.zeros((m, m), dtype=np.float64)
         log_scale = ctypes.c_double(0.0)
         estimate = ctypes.c_double(0.0)
         status = ctypes.c_int(0)
-        check(lib.hillstab_system_monodromy(self._handle, float(alpha), float(beta), float(epsilon),
-                                            _method(method), float(tolerance), _capi.doubles(phi),
-                                            ctypes.byref(log_scale), ctypes.byref(estimate), ctypes.byref(status)))
-        if log_scale.value != 0.0:
-            with np.errstate(over="ignore"):
-                phi = phi * math.exp(min(log_scale.value, 800.0))
-        return phi, estimate.value, status.value
+        check(lib.hillstab_system_monodromy(self._handle, alpha, beta, epsilon, _method(method), tolerance,
+                                            _capi.doubles(phi), ctypes.byref(log_scale), ctypes.byref(estimate),
+                                            ctypes.byref(status)))
+        return _unscaled(phi, log_scale.value), estimate.value, status.value
+
+    @staticmethod
+    def _point(alpha, beta, epsilon, tolerance):
+        return (real_number("alpha", alpha), real_number("beta", beta), real_number("epsilon", epsilon),
+                real_number("tolerance", tolerance))
 
     def floquet(self, alpha, beta, epsilon=0.0, method="auto", tolerance=1e-10):
         """The Floquet analysis at (α, β) with damping ε M: a `SystemFloquet`."""
@@ -193,8 +233,9 @@ class System:
         ints = [ctypes.c_int(0) for _ in range(3)]
         log_scale, trace, a2, defect, estimate = doubles
         verdict, kind, status = ints
-        check(lib.hillstab_system_floquet(self._handle, float(alpha), float(beta), float(epsilon), _method(method),
-                                          float(tolerance), _capi.doubles(re), _capi.doubles(im),
+        alpha, beta, epsilon, tolerance = self._point(alpha, beta, epsilon, tolerance)
+        check(lib.hillstab_system_floquet(self._handle, alpha, beta, epsilon, _method(method),
+                                          tolerance, _capi.doubles(re), _capi.doubles(im),
                                           ctypes.byref(log_scale), _capi.doubles(exponents), ctypes.byref(verdict),
                                           ctypes.byref(kind), ctypes.byref(trace), ctypes.byref(a2),
                                           ctypes.byref(defect), ctypes.byref(estimate), ctypes.byref(status)))

@@ -17,7 +17,7 @@
 !>```
 module hillstab_interop_capi
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_null_char, c_ptr, c_loc
-   use hillstab_core_kinds, only: wp, version_string
+   use hillstab_core_kinds, only: wp, int64, version_string
    use hillstab_core_error, only: error_t, error_code_name, set_error, err_invalid_parameter, err_overflow, err_accuracy
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_coefficient, check_point
@@ -28,6 +28,7 @@ module hillstab_interop_capi
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace
    use hillstab_integrate_monodromy, only: method_t, monodromy_trace, method_formula
    use hillstab_interop_outcome, only: record_outcome, get_last_error
+   use hillstab_interop_sizes, only: buffer_length
    use hillstab_curves_hill_method, only: hill_boundary_t
    use hillstab_curves_characteristic, only: characteristic_values
    use hillstab_core_text, only: integer_text
@@ -259,7 +260,7 @@ contains
    subroutine hillstab_c_error_message(status, buffer, length) bind(C, name="hillstab_error_message")
       integer(c_int), value, intent(in) :: status  !! a status returned by a hillstab function
       integer(c_size_t), value, intent(in) :: length  !! size of buffer in bytes
-      character(kind=c_char), intent(out) :: buffer(length)  !! receives the NUL-terminated name of the status
+      character(kind=c_char), intent(out) :: buffer(*)  !! receives the NUL-terminated name of the status
       character(len=:), allocatable :: text
       if (status == 0) then
          text = "success"
@@ -274,7 +275,7 @@ contains
    !> (`length` = 0: nothing is written); return that call's status.
    function hillstab_c_last_error(buffer, length) result(status) bind(C, name="hillstab_last_error")
       integer(c_size_t), value, intent(in) :: length    !! size of `buffer` in bytes
-      character(kind=c_char), intent(out) :: buffer(length)  !! receives the message
+      character(kind=c_char), intent(out) :: buffer(*)  !! receives the message
       integer(c_int) :: status
       character(len=:), allocatable :: text
       integer :: code
@@ -329,11 +330,11 @@ contains
    !> `text` into a C buffer of `length` bytes, cut to length − 1 and NUL-terminated.
    subroutine copy_c_string(text, buffer, length)
       character(len=*), intent(in) :: text
-      integer(c_size_t), intent(in) :: length
-      character(kind=c_char), intent(inout) :: buffer(length)
+      integer(c_size_t), intent(in) :: length  !! any size_t (SIZE_MAX: a buffer that holds any text)
+      character(kind=c_char), intent(inout) :: buffer(*)
       integer :: i, n
-      if (length < 1) return
-      n = int(min(int(len(text), c_size_t), length - 1))
+      if (length == 0_c_size_t) return
+      n = int(min(int(len(text), int64), buffer_length(length) - 1))
       do i = 1, n
          buffer(i) = text(i:i)
       end do

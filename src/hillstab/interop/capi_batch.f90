@@ -43,8 +43,10 @@ module hillstab_interop_capi_batch
    use hillstab_integrate_monodromy, only: method_t, monodromy_trace, monodromy_trace_batch, batch_plan_t, &
       prepare_batch, method_name, method_table, need_verdict, need_growth, need_trace
    use hillstab_batch_scene_group_chart, only: grid_value
+   use hillstab_batch_scene_checks, only: max_grid_count
    use hillstab_batch_tasks_chart_columns, only: clamp_magnitude, log10_floor
    use hillstab_interop_outcome, only: record_outcome
+   use hillstab_interop_sizes, only: count_refusal, row_extent
    use hillstab_interop_capi_models, only: model_handle_t, handle_model
    implicit none
    private
@@ -193,8 +195,8 @@ contains
       m = make_method(method, n_segments, sampling, tolerance)
       call handle_model(model, handle, error)
       if (.not. allocated(error)) then
-         if (n > int(huge(1), c_size_t)) call set_error(error, err_invalid_parameter, "n = "// &
-            integer_text(int(n, int64))//" points exceed the limit "//integer_text(huge(1)))
+         if (len(count_refusal("n", n, max_grid_count)) > 0) call set_error(error, err_invalid_parameter, &
+            count_refusal("n", n, max_grid_count)//" (the points of one call, as of a chart)")
       end if
       n_points = 0
       if (.not. allocated(error)) then
@@ -264,9 +266,10 @@ contains
       integer(c_int), value, intent(in) :: threads  !! threads (0: the OpenMP default)
       real(c_double), intent(inout) :: alphas(*)  !! receives the n_alpha values of α
       real(c_double), intent(inout) :: betas(*)  !! receives the n_beta values of β
-      !> the values of each point, (value, β index, α index) in Fortran order
-      real(c_double), intent(inout) :: values(0:value_count - 1, max(1_c_size_t, n_beta), *)
-      integer(c_int), intent(inout) :: status(max(1_c_size_t, n_beta), *)  !! each point's status
+      !> the values of each point, (value, β index, α index) in Fortran order (an n_beta beyond
+      !> INT_MAX, refused below, sets no extent: its stride would overflow)
+      real(c_double), intent(inout) :: values(0:value_count - 1, row_extent(n_beta), *)
+      integer(c_int), intent(inout) :: status(row_extent(n_beta), *)  !! each point's status
       integer(c_int) :: info
       type(model_handle_t), pointer :: handle
       type(error_t), allocatable :: error, cause
@@ -278,10 +281,15 @@ contains
       m = make_method(method, n_segments, sampling, tolerance)
       call handle_model(model, handle, error)
       if (.not. allocated(error)) then
-         if (n_alpha < 1 .or. n_beta < 1) then
+         if (len(count_refusal("n_alpha", n_alpha)) > 0) then
+            call set_error(error, err_invalid_parameter, count_refusal("n_alpha", n_alpha))
+         else if (len(count_refusal("n_beta", n_beta)) > 0) then
+            call set_error(error, err_invalid_parameter, count_refusal("n_beta", n_beta))
+         else if (n_alpha < 1 .or. n_beta < 1) then
             call set_error(error, err_invalid_parameter, "n_alpha and n_beta must be >= 1")
-         else if (n_alpha > int(huge(1), c_size_t) .or. n_beta > int(huge(1), c_size_t)) then
-            call set_error(error, err_invalid_parameter, "n_alpha and n_beta must be <= "//integer_text(huge(1)))
+         else if (int(n_alpha, int64)*int(n_beta, int64) > int(max_grid_count, int64)) then
+            call set_error(error, err_invalid_parameter, "n_alpha * n_beta = "//integer_text(int(n_alpha, int64)* &
+               int(n_beta, int64))//" points exceed the limit "//integer_text(max_grid_count))
          end if
       end if
       na = 0

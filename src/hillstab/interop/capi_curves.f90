@@ -23,6 +23,8 @@ module hillstab_interop_capi_curves
    use hillstab_curves_hill_method, only: hill_boundary_t
    use hillstab_curves_boundaries, only: exact_boundaries
    use hillstab_interop_outcome, only: record_outcome
+   use hillstab_interop_sizes, only: count_refusal, row_extent
+   use hillstab_batch_scene_checks, only: max_grid_count
    use hillstab_interop_capi_models, only: model_handle_t, handle_model
    implicit none
    private
@@ -57,12 +59,12 @@ contains
       real(c_double), value, intent(in) :: tolerance  !! convergence target on β
       integer(c_size_t), value, intent(in) :: capacity  !! curves stored per α (the row length)
       integer(c_int), value, intent(in) :: threads  !! threads (0: the OpenMP default)
-      real(c_double), intent(inout) :: beta(max(1_c_size_t, capacity), *)  !! β of each curve
-      integer(c_int), intent(inout) :: order(max(1_c_size_t, capacity), *)  !! its order n
-      integer(c_int), intent(inout) :: parity(max(1_c_size_t, capacity), *)  !! +1 a_n, −1 b_n
-      integer(c_int), intent(inout) :: trace_sign(max(1_c_size_t, capacity), *)  !! S on it: +2 or −2
-      real(c_double), intent(inout) :: error_bound(max(1_c_size_t, capacity), *)  !! bound of the error of β
-      integer(c_int), intent(inout) :: coexistent(max(1_c_size_t, capacity), *)  !! 1: zero-width tongue
+      real(c_double), intent(inout) :: beta(row_extent(capacity), *)  !! β of each curve
+      integer(c_int), intent(inout) :: order(row_extent(capacity), *)  !! its order n
+      integer(c_int), intent(inout) :: parity(row_extent(capacity), *)  !! +1 a_n, −1 b_n
+      integer(c_int), intent(inout) :: trace_sign(row_extent(capacity), *)  !! S on it: +2 or −2
+      real(c_double), intent(inout) :: error_bound(row_extent(capacity), *)  !! bound of the error of β
+      integer(c_int), intent(inout) :: coexistent(row_extent(capacity), *)  !! 1: zero-width tongue
       integer(c_size_t), intent(inout) :: count(*)  !! curves found at each α
       integer(c_int), intent(inout) :: status(*)  !! 0, or 2 where Hill's method failed
       integer(c_int) :: info
@@ -72,8 +74,11 @@ contains
       integer :: i, k, n, nt, stored
       call handle_model(model, handle, error)
       if (.not. allocated(error)) then
-         if (n_alpha > int(huge(1), c_size_t) .or. capacity > int(huge(1), c_size_t)) &
-            call set_error(error, err_invalid_parameter, "n_alpha and capacity must be <= "//integer_text(huge(1)))
+         if (len(count_refusal("n_alpha", n_alpha, max_grid_count)) > 0) then
+            call set_error(error, err_invalid_parameter, count_refusal("n_alpha", n_alpha, max_grid_count))
+         else if (len(count_refusal("capacity", capacity)) > 0) then
+            call set_error(error, err_invalid_parameter, count_refusal("capacity", capacity))
+         end if
       end if
       if (.not. allocated(error)) call handle%model%check_values(error)
       if (.not. allocated(error) .and. threads < 0) call set_error(error, err_invalid_parameter, &

@@ -22,12 +22,13 @@
 module hillstab_interop_capi_models
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_null_char, c_ptr, c_loc, &
       c_f_pointer, c_associated, c_null_ptr
-   use hillstab_core_kinds, only: wp
+   use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
    use hillstab_core_text, only: integer_text
    use hillstab_hill_model, only: hill_model_t, model_variable_t
    use hillstab_hill_models, only: model_names, model_count, new_model
    use hillstab_interop_outcome, only: record_outcome
+   use hillstab_interop_sizes, only: values_count_refusal, buffer_length
    implicit none
    private
    public :: model_handle_t, handle_model, c_text, copy_text, max_c_text
@@ -71,11 +72,11 @@ contains
    !> (nothing written when `length` is 0).
    subroutine copy_text(text, buffer, length)
       character(len=*), intent(in) :: text  !! the text
-      integer(c_size_t), intent(in) :: length  !! size of the buffer in bytes
-      character(kind=c_char), intent(inout) :: buffer(length)  !! receives the text
+      integer(c_size_t), intent(in) :: length  !! size of the buffer in bytes (any size_t)
+      character(kind=c_char), intent(inout) :: buffer(*)  !! receives the text
       integer :: i, n
-      if (length < 1) return
-      n = int(min(int(len(text), c_size_t), length - 1))
+      if (length == 0_c_size_t) return
+      n = int(min(int(len(text), int64), buffer_length(length) - 1))
       do i = 1, n
          buffer(i) = text(i:i)
       end do
@@ -152,18 +153,23 @@ contains
       integer(c_int) :: status
       type(model_handle_t), pointer :: handle
       type(error_t), allocatable :: error
-      character(len=:), allocatable :: name
-      logical :: ok
+      character(len=:), allocatable :: name, refusal
+      logical :: ok, known
       call handle_model(model, handle, error)
       if (.not. allocated(error)) then
          call c_text(variable, name, ok)
          if (.not. ok) then
             call set_error(error, err_invalid_parameter, "the variable name is longer than "// &
                integer_text(max_c_text)//" characters")
-         else if (count > int(huge(1), c_size_t)) then
-            call set_error(error, err_invalid_parameter, "too many values for '"//name//"'")
          else
-            call handle%model%set_values(name, real(values(1:count), wp), error)
+            call values_count_refusal(handle%model, name, count, known, refusal)
+            if (len(refusal) > 0) then
+               call set_error(error, err_invalid_parameter, refusal)
+            else if (known) then
+               call handle%model%set_values(name, real(values(1:count), wp), error)
+            else
+               call handle%model%set_values(name, [real(wp) ::], error)
+            end if
          end if
       end if
       call record_outcome(error)
@@ -198,7 +204,7 @@ contains
       bind(C, name="hillstab_model_registry_name")
       integer(c_int), value, intent(in) :: index  !! 1 … hillstab_model_count()
       integer(c_size_t), value, intent(in) :: length  !! size of buffer in bytes
-      character(kind=c_char), intent(inout) :: buffer(length)  !! receives the name
+      character(kind=c_char), intent(inout) :: buffer(*)  !! receives the name
       integer(c_int) :: status
       type(error_t), allocatable :: error
       if (index < 1 .or. index > model_count) then
@@ -217,7 +223,7 @@ contains
    function hillstab_c_model_name(model, buffer, length) result(status) bind(C, name="hillstab_model_name")
       type(c_ptr), value, intent(in) :: model  !! the handle
       integer(c_size_t), value, intent(in) :: length  !! size of buffer in bytes
-      character(kind=c_char), intent(inout) :: buffer(length)  !! receives the name
+      character(kind=c_char), intent(inout) :: buffer(*)  !! receives the name
       integer(c_int) :: status
       type(model_handle_t), pointer :: handle
       type(error_t), allocatable :: error
@@ -233,7 +239,7 @@ contains
    function hillstab_c_model_formula(model, buffer, length) result(status) bind(C, name="hillstab_model_formula")
       type(c_ptr), value, intent(in) :: model  !! the handle
       integer(c_size_t), value, intent(in) :: length  !! size of buffer in bytes
-      character(kind=c_char), intent(inout) :: buffer(length)  !! receives the formula
+      character(kind=c_char), intent(inout) :: buffer(*)  !! receives the formula
       integer(c_int) :: status
       type(model_handle_t), pointer :: handle
       type(error_t), allocatable :: error
@@ -271,7 +277,7 @@ contains
       type(c_ptr), value, intent(in) :: model  !! the handle
       integer(c_int), value, intent(in) :: index  !! 1 … hillstab_model_variable_count
       integer(c_size_t), value, intent(in) :: length  !! size of buffer in bytes
-      character(kind=c_char), intent(inout) :: buffer(length)  !! receives the name
+      character(kind=c_char), intent(inout) :: buffer(*)  !! receives the name
       integer(c_int), intent(inout) :: max_count  !! receives the most numbers it takes
       integer(c_int) :: status
       type(model_handle_t), pointer :: handle

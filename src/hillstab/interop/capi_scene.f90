@@ -32,7 +32,7 @@ contains
       character(kind=c_char), intent(in) :: path(*)  !! the scene file, NUL-terminated
       integer(c_int), value, intent(in) :: quiet  !! 1: no progress on stderr
       integer(c_size_t), value, intent(in) :: length  !! size of `written` in bytes
-      character(kind=c_char), intent(inout) :: written(length)  !! receives the output file's path
+      character(kind=c_char), intent(inout) :: written(*)  !! receives the output file's path
       integer(c_int) :: status
       type(error_t), allocatable :: error
       character(len=:), allocatable :: text, output

@@ -46,6 +46,7 @@ module hillstab_interop_capi_system
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
       system_auto, system_magnus4, system_magnus6, system_rk, system_gsl
    use hillstab_interop_outcome, only: record_outcome
+   use hillstab_interop_sizes, only: values_count_refusal
    use hillstab_interop_capi_models, only: c_text, max_c_text
    implicit none
    private
@@ -149,9 +150,10 @@ contains
       character(kind=c_char), pointer :: chars(:)
       real(c_double), pointer :: numbers(:)
       real(wp), allocatable :: list(:)
-      character(len=:), allocatable :: name
+      character(len=:), allocatable :: name, refusal
       type(matrix_system_t) :: saved
-      logical :: ok
+      logical :: ok, known
+      integer :: count_read
       call handle_system(where, system, handle, error)
       if (.not. allocated(error) .and. .not. c_associated(variable)) &
          call set_error(error, err_invalid_parameter, where//": variable: a null pointer")
@@ -161,17 +163,22 @@ contains
          if (.not. ok) then
             call set_error(error, err_invalid_parameter, where//": variable: the name is longer than "// &
                integer_text(max_c_text)//" characters")
-         else if (count > int(huge(1), c_size_t)) then
-            call set_error(error, err_invalid_parameter, where//": count: too many values for '"//name//"'")
-         else if (count > 0 .and. .not. c_associated(values)) then
-            call set_error(error, err_invalid_parameter, where//": values: a null pointer for "// &
-               integer_text(int(count))//" numbers of '"//name//"'")
+         else
+            call values_count_refusal(handle%system, name, count, known, refusal)
+            if (len(refusal) > 0) call set_error(error, err_invalid_parameter, where//": "//refusal)
+         end if
+         ! a name the system does not have reads no number: set_values refuses the name
+         count_read = 0
+         if (.not. allocated(error) .and. known) then
+            count_read = int(count)
+            if (count_read > 0 .and. .not. c_associated(values)) call set_error(error, err_invalid_parameter, &
+               where//": values: a null pointer for "//integer_text(count_read)//" numbers of '"//name//"'")
          end if
       end if
       if (.not. allocated(error)) then
-         allocate (list(int(count)))
-         if (count > 0) then
-            call c_f_pointer(values, numbers, [count])
+         allocate (list(count_read))
+         if (count_read > 0) then
+            call c_f_pointer(values, numbers, [count_read])
             list = real(numbers, wp)
          end if
          saved = handle%system

@@ -6,14 +6,18 @@
 !> checkpoint of another scene is refused (exit 2) naming the difference; `--resume` without
 !> a checkpoint starts afresh and says so; a run without `--resume` discards one with a
 !> note; anything planted at the checkpoint's name (symbolic links, a hard link, a
-!> directory open to others) is refused and left untouched; a second run is refused while
-!> the first writes; a write error keeps the checkpoint and a resumed run completes the file.
+!> directory open to others) is refused and left untouched, as is a checkpoint whose `data`
+!> or `state` is a FIFO (never opened: no hang), a directory or a symbolic link; a second run
+!> is refused while the first writes; a write error keeps the checkpoint and a resumed run
+!> completes the file; a checkpoint of another kind of problem (a scalar chart's under a
+!> system scene, a state recording a system chart under the scalar scene) is never resumed.
 module test_checkpoint
    use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, err_io, err_input
    use hillstab_core_text, only: integer_text
    use hillstab_batch_run_scenes, only: run_scene_file
    use hillstab_batch_output_checkpoint, only: checkpoint_options_t, checkpoint_directory, scene_difference
+   use hillstab_batch_output_digest, only: text_digest
    use hillstab_batch_run_cli, only: exit_status
    use hillstab_fault_injection, only: limit_file_size, lift_file_size_limit
    use hillstab_testing
@@ -55,7 +59,9 @@ contains
          new_unittest("write_error_keeps_checkpoint", write_error_keeps_checkpoint), &
          new_unittest("binary_not_resumed", binary_not_resumed), &
          new_unittest("scene_differences", scene_differences), &
-         new_unittest("long_output_names", long_output_names)])
+         new_unittest("long_output_names", long_output_names), &
+         new_unittest("planted_members_kept", planted_members_kept), &
+         new_unittest("other_problem_kind", other_problem_kind)])
    end function collect_checkpoint
 
    !> Run a shell command; its exit status.
@@ -612,6 +618,150 @@ contains
       status = shell("rm -rf '"//victim//"' '"//directory//"'")
       call delete_file(scene)
    end subroutine planted_links_not_followed
+
+   !> A checkpoint (mode 0700, a `data` of 3 lines) whose `data` or `state` is a FIFO (whose
+   !> open blocks until a writer comes), a directory or a symbolic link: refused with and
+   !> without `--resume` within 60 s (exit 2, not 124 of `timeout`), one line naming the
+   !> member, the checkpoint kept as it was (its `data` intact), no output; a system scene
+   !> of the same output likewise.
+   subroutine planted_members_kept(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: prefix, scene, system, output, directory, err, member, plant, label
+      character(len=1024), allocatable :: lines(:)
+      integer :: status, round, which
+      logical :: resume
+      prefix = scratch_prefix("ck_members")
+      scene = prefix//".nml"
+      system = prefix//"_system.nml"
+      output = prefix//"_chart.dat"
+      directory = checkpoint_directory(output)
+      err = prefix//".err"
+      call write_file(scene, [padded("&scene method='formula', output='"//prefix//"' /"), &
+                              padded("&chart n_alpha=3, n_beta=4 /")])
+      call write_file(system, [padded("&scene model='system', method='magnus4', tolerance=1e-6, output='"// &
+                                      prefix//"' /"), padded("&system n = 1, cos = 1 /"), &
+                               padded("&chart n_alpha=2, n_beta=2 /")])
+      do round = 1, 16
+         resume = mod(round - 1, 2) == 1
+         which = (round - 1)/2
+         member = trim(merge("data ", "state", mod(which, 2) == 0))
+         ! a FIFO, a directory, a symbolic link, and a FIFO under the system scene
+         select case (which/2)
+         case (0, 3)
+            plant = "mkfifo '"//directory//"/"//member//"'"
+         case (1)
+            plant = "mkdir '"//directory//"/"//member//"'; echo precious > '"//directory//"/"//member//"/x'"
+         case default
+            plant = "ln -s data2 '"//directory//"/"//member//"'"
+         end select
+         status = shell("rm -rf '"//directory//"'; mkdir -m 0700 '"//directory//"' && printf '# a\n# b\n1 2\n' > '"// &
+                        directory//"/data2' && cp '"//directory//"/data2' '"//directory//"/data' && "// &
+                        "printf 'hillstab checkpoint 3\n' > '"//directory//"/state' && rm '"//directory//"/"// &
+                        member//"' && "//plant)
+         label = member//" "//plant(:index(plant, " ") - 1)//merge(" --resume", "         ", resume)
+         if (round > 12) label = label//" (system scene)"
+         if (round > 12) then
+            status = shell("timeout 60 '"//program_path()//"' --quiet"//merge(" --resume", "         ", resume)// &
+                           " '"//system//"' 2>'"//err//"'")
+         else
+            status = shell("timeout 60 '"//program_path()//"' --quiet"//merge(" --resume", "         ", resume)// &
+                           " '"//scene//"' 2>'"//err//"'")
+         end if
+         call check(ctx, status == 2, label//": exit 2 (status "//integer_text(status)//", 124: it hung)")
+         lines = read_lines(err)
+         call check(ctx, size(lines) == 1, label//": one line")
+         if (size(lines) == 1) call check(ctx, index(lines(1), "&scene: output: cannot use the checkpoint '"// &
+                                          directory//"': its "//member//" '"//directory//"/"//member//"' is ") > 0 &
+                                          .and. index(lines(1), "kept as it is") > 0, label//": "//trim(lines(1)))
+         call check(ctx, shell("test -e '"//directory//"/"//member//"' -o -L '"//directory//"/"//member//"'") == 0, &
+                    label//": the member kept")
+         if (member == "state") then
+            call check(ctx, same_file(directory//"/data", directory//"/data2"), label//": data intact")
+         else
+            lines = read_lines(directory//"/state")
+            call check(ctx, size(lines) == 1, label//": state intact")
+            if (size(lines) == 1) call check(ctx, lines(1) == "hillstab checkpoint 3", label//": state intact")
+         end if
+         call check(ctx, .not. file_exists(output) .and. .not. any_temp_file(output), label//": no output")
+      end do
+      status = shell("rm -rf '"//directory//"'")
+      call delete_file(scene)
+      call delete_file(system)
+      call delete_file(err)
+   end subroutine planted_members_kept
+
+   !> Checkpoints across kinds of problem: the chart killed after 3 rows leaves a scalar
+   !> chart's checkpoint; a system scene of the same output refuses it under `--resume`
+   !> (exit 2, naming &scene model and both kinds, the checkpoint kept) and discards it
+   !> without (a note; its file written); the scalar `--resume` then starts afresh and
+   !> writes the uninterrupted file. A state recording another kind (a system chart, its
+   !> checksum recomputed) is refused by the scalar scene's `--resume`, naming both kinds.
+   subroutine other_problem_kind(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: directory, err, system, text, head
+      character(len=1024), allocatable :: before(:), after(:)
+      integer :: status, unit, at, last
+      integer(int64) :: bytes
+      call chart_fixture()
+      if (.not. chart%ready) return
+      directory = checkpoint_directory(chart%output)
+      err = scratch_prefix("ck_kind.err")
+      system = scratch_prefix("ck_kind.nml")
+      call write_file(system, [padded("&scene model='system', method='magnus4', tolerance=1e-6, output='"// &
+                                      scratch_prefix("ck_chart")//"' /"), padded("&system n = 1, cos = 1 /"), &
+                               padded("&chart n_alpha=2, n_beta=2 /")])
+      status = stop_program("--quiet --checkpoint-interval 0 '"//chart%scene//"'", directory//"/state", 3, "KILL", err)
+      if (.not. reached(ctx, status, units_text(3), "SIGKILL after 3 units")) return
+      before = read_lines(directory//"/state")
+      call check(ctx, any(before == "problem = scalar chart"), "the state records the kind: scalar chart")
+      status = run_program("--quiet --resume '"//system//"'", err, 1)
+      call check(ctx, status == 2, "system --resume: exit 2 (status "//integer_text(status)//")")
+      call check(ctx, file_says(err, system//": &scene: model: the checkpoint '"//directory//"' of a scalar chart") &
+                 .and. file_says(err, "(system chart), which keeps no checkpoint; it is not resumed and kept as it is"), &
+                 "names &scene model and both kinds")
+      after = read_lines(directory//"/state")
+      call check(ctx, size(after) == size(before), "the checkpoint is kept")
+      if (size(after) == size(before)) call check(ctx, all(after == before), "unchanged")
+      call check(ctx, .not. file_exists(chart%output), "no output file")
+      status = run_program("--quiet '"//system//"'", err, 1)
+      call check(ctx, status == 0, "system without --resume: exit 0 (status "//integer_text(status)//")")
+      call check(ctx, file_says(err, "discarded the checkpoint '"//directory//"' of a scalar chart"), &
+                 "says it discarded it")
+      call check(ctx, .not. directory_exists(directory) .and. .not. any_temp_file(chart%output), &
+                 "no checkpoint, no temporary file")
+      call check(ctx, file_exists(chart%output), "the system chart written")
+      status = run_program("--quiet --resume '"//chart%scene//"'", err, 2)
+      call check(ctx, status == 0 .and. file_says(err, "no checkpoint of "//chart%output), &
+                 "the scalar --resume starts afresh")
+      call check(ctx, same_file(chart%output, chart%reference), "and writes the uninterrupted file")
+      call delete_file(chart%output)
+      ! a state that records another kind, its checksum recomputed
+      status = stop_program("--quiet --checkpoint-interval 0 '"//chart%scene//"'", directory//"/state", 3, "KILL", err)
+      if (.not. reached(ctx, status, units_text(3), "SIGKILL after 3 units")) return
+      inquire (file=directory//"/state", size=bytes)
+      allocate (character(len=bytes) :: text)
+      open (newunit=unit, file=directory//"/state", access="stream", form="unformatted", status="old")
+      read (unit) text
+      close (unit)
+      at = index(text, "problem = scalar chart")
+      last = index(text(:len(text) - 1), new_line("a"), back=.true.)
+      call check(ctx, at > 0 .and. last > at, "the state has its kind and a checksum line")
+      if (at == 0 .or. last <= at) return
+      head = text(:at - 1)//"problem = system chart"//text(at + len("problem = scalar chart"):last)
+      text = head//"check = "//text_digest(head)//new_line("a")
+      open (newunit=unit, file=directory//"/state", access="stream", form="unformatted", status="replace")
+      write (unit) text
+      close (unit)
+      status = run_program("--quiet --resume '"//chart%scene//"'", err, 1)
+      call check(ctx, status == 2, "scalar --resume of a system chart's state: exit 2 (status "//integer_text(status)//")")
+      call check(ctx, file_says(err, chart%scene//": &scene: model: the checkpoint is of a system chart, this scene "// &
+                 "is a scalar chart (checkpoint '"//directory//"'): it is not resumed"), "names both kinds")
+      call check(ctx, directory_exists(directory) .and. .not. file_exists(chart%output), "kept, no output")
+      status = shell("rm -rf '"//directory//"'")
+      call delete_file(system)
+      call delete_file(err)
+      call release_fixture(chart)
+   end subroutine other_problem_kind
 
    !> While a run writes its output, a second run of the same output (with or without
    !> `--resume`) is refused (exit 2) and changes nothing: once the first keeps a checkpoint

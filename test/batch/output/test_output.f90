@@ -39,6 +39,7 @@ contains
          new_unittest("every_task_memory_estimate", every_task_memory_estimate), &
          new_unittest("address_space_too_small_to_start", address_space_too_small_to_start), &
          new_unittest("probe_memory_reproducers", probe_memory_reproducers), &
+         new_unittest("system_memory_reproducers", system_memory_reproducers), &
          new_unittest("stale_temporary_removed", stale_temporary_removed), &
          new_unittest("busy_temporary_refused", busy_temporary_refused), &
          new_unittest("progress_rate_text", progress_rate_text)])
@@ -388,6 +389,67 @@ contains
          call check(ctx, .not. file_exists(output) .and. .not. any_temp_file(output), scene//": no file, no temporary file")
       end subroutine probe
    end subroutine probe_memory_reproducers
+
+   !> The memory reproducers of system scenes, which ended with "Error allocating
+   !> 204800000000 bytes", a backtrace, exit 1 and a temporary file left: a chart of
+   !> 1 x 10^8 points and the boundaries over 10^8 β samples (in the process, under an
+   !> address-space limit 200 GB above it, so that no machine runs them), and the chart of
+   !> 1 x 2000000 under `ulimit -v 300000` (the program, not under AddressSanitizer). Each:
+   !> exit 2, one message naming &chart n_alpha, n_beta and the memory, no file; a chart of
+   !> 1 x 2000 still runs under the same `ulimit -v`.
+   subroutine system_memory_reproducers(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out, err, system
+      character(len=1024), allocatable :: lines(:)
+      character(len=16) :: asan
+      character(len=10) :: tasks(2)
+      integer :: status, length, k
+      out = scratch_prefix("system_memory")
+      err = out//".err"
+      system = "&system n = 2, mass = 1.0, 0.0, 0.0, 0.25, b = 2.0, -1.0, -1.0, 1.5, cos = -1.0, 0.0, 0.0, -0.5 /"
+      tasks = [character(len=10) :: "chart", "boundaries"]
+      do k = 1, 2
+         call write_file(out//"_8.nml", [padded("&scene model='system', task='"//trim(tasks(k))//"', output='"// &
+                                                out//"' /"), padded(system), padded("&chart n_alpha=1, n_beta=100000000 /")])
+         call limit_address_space(200000000000_int64)
+         call run_scene_file(out//"_8.nml", .true., error)
+         call lift_address_space_limit()
+         call check(ctx, allocated(error), trim(tasks(k))//" 1 x 1e8: refused")
+         if (allocated(error)) then
+            call check(ctx, exit_status(error) == 2 .and. &
+                       contains_text(error%message, out//"_8.nml: &chart: n_alpha, n_beta: 1 x 100000000 points would "// &
+                                     "need about") .and. contains_text(error%message, "of memory, more than"), &
+                       trim(tasks(k))//": exit 2 naming n_beta and the memory: "//error%message)
+         end if
+         call check(ctx, .not. file_exists(out//"_"//trim(tasks(k))//".dat") .and. &
+                    .not. any_temp_file(out//"_"//trim(tasks(k))//".dat"), trim(tasks(k))//": no file, no temporary file")
+      end do
+      call delete_file(out//"_8.nml")
+      call get_environment_variable("ASAN_OPTIONS", asan, length, status)
+      if (status == 0) return
+      call write_file(out//"_2m.nml", [padded("&scene model='system', output='"//out//"' /"), padded(system), &
+                                       padded("&chart n_alpha=1, n_beta=2000000 /")])
+      call execute_command_line("ulimit -v 300000; '"//program_path()//"' --quiet '"//out//"_2m.nml' 2>'"// &
+                                err//"'", exitstat=status)
+      call check(ctx, status == 2, "1 x 2000000 under ulimit -v 300000: exit 2 (status "//integer_text(status)//")")
+      lines = read_lines(err)
+      call check(ctx, size(lines) == 1, "one message line")
+      if (size(lines) == 1) call check(ctx, index(lines(1), "hillstab: "//out//"_2m.nml: &chart: n_alpha, n_beta: "// &
+                                       "1 x 2000000 points would need about") == 1 .and. index(lines(1), "ulimit -v") > 0, &
+                                       trim(lines(1)))
+      call check(ctx, .not. file_exists(out//"_chart.dat") .and. .not. any_temp_file(out//"_chart.dat"), &
+                 "1 x 2000000: no file, no temporary file")
+      call write_file(out//"_2m.nml", [padded("&scene model='system', method='magnus4', tolerance=1e-6, output='"// &
+                                              out//"' /"), padded(system), padded("&chart n_alpha=1, n_beta=2000 /")])
+      call execute_command_line("ulimit -v 300000; '"//program_path()//"' --quiet '"//out//"_2m.nml' 2>'"// &
+                                err//"'", exitstat=status)
+      call check(ctx, status == 0, "1 x 2000 under ulimit -v 300000: runs (status "//integer_text(status)//")")
+      call check(ctx, file_exists(out//"_chart.dat"), "and writes its file")
+      call delete_file(out//"_chart.dat")
+      call delete_file(out//"_2m.nml")
+      call delete_file(err)
+   end subroutine system_memory_reproducers
 
    !> A small scene of every task (chart in text and in binary, points, lyapunov,
    !> coefficient, series, boundaries, poincare) writing `<prefix>k_<task>.<ext>`: its

@@ -2,9 +2,9 @@
 !> reading the files back: a one-equation system's chart against the Mathieu model's chart
 !> (the same Q = β − α cos πτ), the columns and their selection, a repeated run from the
 !> header, the points task, the coefficient task against K(τ) in closed form, a matrix given
-!> as a file of rows.
+!> as a file of rows, a binary chart of chosen columns against the text one.
 module test_task_system
-   use hillstab_core_kinds, only: wp, pi
+   use hillstab_core_kinds, only: wp, pi, int64
    use hillstab_core_error, only: error_t, err_points_failed
    use hillstab_hill_system_floquet, only: kind_minus_one, kind_plus_one, kind_combination
    use hillstab_test_scratch, only: padded, scratch_prefix, write_file, read_lines, delete_file, contains_text
@@ -23,7 +23,8 @@ contains
          new_unittest("pendula_columns_and_rerun", pendula_columns_and_rerun), &
          new_unittest("points_and_verdict_columns", points_and_verdict_columns), &
          new_unittest("coefficient_closed_form", coefficient_closed_form), &
-         new_unittest("matrix_from_file", matrix_from_file)])
+         new_unittest("matrix_from_file", matrix_from_file), &
+         new_unittest("binary_chosen_columns", binary_chosen_columns)])
    end function collect_task_system
 
    !> The numbers of the data lines (blank lines skipped).
@@ -214,4 +215,51 @@ contains
       call delete_file(second)
       call delete_file(matrix)
    end subroutine matrix_from_file
+
+   !> A binary chart of the columns `alpha beta stable kind`: after its header exactly those
+   !> four float64 values a point (the records the header's `# columns:` line names), equal
+   !> to the text chart's numbers.
+   subroutine binary_chosen_columns(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out, raw
+      character(len=1024), allocatable :: lines(:)
+      real(wp), allocatable :: rows(:, :), records(:, :)
+      integer(int64) :: bytes
+      integer :: unit, start, at, k
+      character(len=*), parameter :: system = "&system n = 2, mass = 1, 0, 0, 0.25, b = 2, -1, -1, 1.5, "// &
+                                              "cos = -1, 0, 0, -0.5 /"
+      character(len=*), parameter :: grid = "&chart alpha_min = 0.5, alpha_max = 1.0, n_alpha = 2, beta_min = 0.6, "// &
+                                            "beta_max = 2.2, n_beta = 3 /"
+      out = scratch_prefix("sysbin")
+      call run_text_scene("sysbin", [padded("&scene model = 'system', columns = 'alpha beta stable kind', output = '"// &
+                                            out//"' /"), padded(system), padded(grid)], error, written)
+      call check(ctx, .not. allocated(error), "text chart runs")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call numbers(lines, 4, rows)
+      call delete_file(written)
+      call run_text_scene("sysbin", [padded("&scene model = 'system', format = 'binary', columns = 'alpha beta "// &
+                                            "stable kind', output = '"//out//"' /"), padded(system), padded(grid)], &
+                          error, written)
+      call check(ctx, .not. allocated(error), "binary chart runs")
+      if (allocated(error)) return
+      inquire (file=written, size=bytes)
+      allocate (character(len=bytes) :: raw)
+      open (newunit=unit, file=written, access="stream", form="unformatted", status="old", action="read")
+      read (unit) raw
+      close (unit)
+      at = index(raw, new_line("a")//"# columns: alpha beta stable kind"//new_line("a"))
+      call check(ctx, at > 0, "the header's columns line")
+      if (at == 0) return
+      start = at + len("# columns: alpha beta stable kind") + 2
+      call check(ctx, len(raw) - start + 1 == 6*4*8, "4 values of 6 points after the header")
+      if (len(raw) - start + 1 /= 6*4*8) return
+      allocate (records(4, 6))
+      records = reshape(transfer(raw(start:), 1.0_wp, 24), [4, 6])
+      do k = 1, 6
+         call check(ctx, all(records(:, k) == rows(:, k)), "point's values as in the text file")
+      end do
+      call delete_file(written)
+   end subroutine binary_chosen_columns
 end module test_task_system

@@ -11,8 +11,9 @@
 !> - `data`: a hard link of the run's temporary output `<path>.partXXXXXX` — the header and
 !>   the units written so far. Nothing is written twice: the checkpoint is the partial output
 !>   itself, kept by a second name when a signal removes the temporary one.
-!> - `state`: text, `key = value` lines: the program version, the output, the temporary
-!>   name, a fingerprint of the effective scene and its points (hillstab_batch_run_units
+!> - `state`: text, `key = value` lines: the program version, the problem kind (`problem =
+!>   scalar chart`, `system points`: --resume continues only a checkpoint of its own kind),
+!>   the output, the temporary name, a fingerprint of the effective scene and its points (hillstab_batch_run_units
 !>   `scene_fingerprint`), the effective scene's namelist lines, the units (size, count,
 !>   done), the bytes of `data` they fill and their checksum (hillstab_batch_output_digest), and the
 !>   counts and first indices of failed and round-off limited points (so that the resumed run
@@ -32,7 +33,9 @@
 !> more bytes than are on the disk; bytes beyond it (a unit written after the last update, a
 !> partial write) are cut on resume. Anything at the checkpoint's name that is not a
 !> directory of this user closed to others (a symbolic link, a file, a hard link, another
-!> user's directory) is refused, never followed, written or removed. A run holds an advisory
+!> user's directory) is refused, never followed, written or removed; so is a checkpoint whose
+!> `data` or `state` is not a regular file (a FIFO, whose open would block; a directory; a
+!> symbolic link): it is kept as it is, never opened. A run holds an advisory
 !> lock (flock) on `data`: a second run of the same output is refused while the first runs.
 !>
 !>```fortran
@@ -51,7 +54,7 @@ module hillstab_batch_output_checkpoint
    use hillstab_ffi_libc, only: c_lstat, c_fstat, stat_t, c_mkdir, c_link, c_rmdir, c_unlink, c_rename, c_geteuid, &
       c_fopen, c_fclose, c_fwrite, c_fflush, c_fsync, c_fileno, try_lock, name_max, &
       file_type, file_type_directory, file_type_link, file_type_regular, errno_text, errno_value, set_errno, &
-      errno_no_entry, c_string
+      errno_no_entry, c_string, is_special_file
    use, intrinsic :: iso_c_binding, only: c_int, c_ptr, c_size_t, c_associated
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
@@ -74,7 +77,7 @@ module hillstab_batch_output_checkpoint
    !> written); `--resume` refuses it, a run without discards it
    integer, parameter :: checkpoint_damaged = 3
    !> The first line of a state file.
-   character(len=*), parameter :: state_format = "hillstab checkpoint 2"
+   character(len=*), parameter :: state_format = "hillstab checkpoint 3"
    !> Longest state file read (the effective scene's lines are at most 1 MiB).
    integer, parameter :: max_state_bytes = 4194304
    !> Suffix of a checkpoint directory.
@@ -92,6 +95,9 @@ module hillstab_batch_output_checkpoint
    !> What a checkpoint records: which run, how far it got.
    type :: checkpoint_state_t
       character(len=:), allocatable :: version    !! version of the program that wrote it
+      !> the kind of problem and the task ("scalar chart", "system points"): --resume continues
+      !> only a checkpoint of the run's own kind
+      character(len=:), allocatable :: problem
       character(len=:), allocatable :: output     !! the output file
       character(len=:), allocatable :: temporary  !! the temporary name of the data (left by SIGKILL)
       integer(int64) :: fingerprint(2) = 0        !! of the effective scene and its points
@@ -162,8 +168,9 @@ contains
    !> read), an incomplete one or a damaged one (`reason` says what it lacks or what is
    !> wrong). `error` (err_io) when
    !> something else is in the way — a symbolic link, a file, a directory of another user
-   !> or open to others (never followed nor removed) — or when another run holds the
-   !> checkpoint's lock.
+   !> or open to others (never followed nor removed), a checkpoint whose `data` or `state`
+   !> is not a regular file (never opened: a FIFO would block the open; kept as it is) —
+   !> or when another run holds the checkpoint's lock.
    subroutine find_checkpoint(directory, kind, state, reason, error)
       character(len=*), intent(in) :: directory  !! the checkpoint directory (`checkpoint_directory`)
       !> checkpoint_none, checkpoint_usable, checkpoint_incomplete or checkpoint_damaged
@@ -198,6 +205,10 @@ contains
             "), so it is not one hillstab made")
          return
       end if
+      ! neither member is opened unless it is a regular file
+      call check_member(checkpoint_data(directory), "data")
+      if (.not. allocated(error)) call check_member(directory//"/state", "state")
+      if (allocated(error)) return
       kind = checkpoint_incomplete
       call set_errno(0)
       stream = c_fopen(c_string(checkpoint_data(directory)), c_string("r"))
@@ -224,6 +235,26 @@ contains
          call set_error(error, err_io, "cannot keep the checkpoint '"//directory//"': "//why// &
             "; remove it, or choose another output")
       end subroutine in_the_way
+      !> A member that exists and is not a regular file: refused, the checkpoint kept.
+      subroutine check_member(path, name)
+         character(len=*), intent(in) :: path, name
+         type(stat_t) :: member
+         character(len=:), allocatable :: what
+         if (c_lstat(c_string(path), member) /= 0) return
+         if (iand(member%mode, file_type) == file_type_regular) return
+         if (iand(member%mode, file_type) == file_type_link) then
+            what = "a symbolic link (not followed)"
+         else if (iand(member%mode, file_type) == file_type_directory) then
+            what = "a directory"
+         else if (is_special_file(path)) then
+            what = "not a regular file (a FIFO, device or socket; not opened)"
+         else
+            what = "not a regular file"
+         end if
+         call set_error(error, err_io, "cannot use the checkpoint '"//directory//"': its "//name//" '"//path// &
+            "' is "//what//", not a file hillstab made; the checkpoint is kept as it is: remove it, or "// &
+            "choose another output")
+      end subroutine check_member
    end subroutine find_checkpoint
 
    !> Permission bits as four octal digits.
@@ -249,7 +280,7 @@ contains
       character(len=:), allocatable :: text, line, key, value, collected
       character(len=*), parameter :: check_key = "check = "
       integer :: ios, at, n_scene, start, end_of_line, last
-      logical :: have(9), exists
+      logical :: have(10), exists
       integer(int64) :: size
       kind = checkpoint_incomplete
       inquire (file=directory//"/state", exist=exists, size=size)
@@ -304,6 +335,9 @@ contains
          case ("version")
             state%version = value
             have(1) = .true.
+         case ("problem")
+            state%problem = value
+            have(10) = .true.
          case ("output")
             state%output = value
             have(2) = .true.
@@ -429,6 +463,7 @@ contains
          "# the progress of an interrupted run, read by --resume; remove this directory to discard it"// &
          new_line("a")// &
          "version = "//state%version//new_line("a")// &
+         "problem = "//state%problem//new_line("a")// &
          "output = "//state%output//new_line("a")// &
          "temporary = "//state%temporary//new_line("a")// &
          "fingerprint = "//integer_text(state%fingerprint(1))//" "//integer_text(state%fingerprint(2))//new_line("a")// &

@@ -19,7 +19,7 @@ module hillstab_batch_run_scenes
    use hillstab_batch_scene_types, only: scene_t, output_path
    use hillstab_batch_scene_read, only: read_scene
    use hillstab_batch_run_limits, only: check_output_room, check_memory_room
-   use hillstab_batch_run_units, only: batch_distributable, run_batch
+   use hillstab_batch_run_units, only: batch_distributable, run_batch, settle_checkpoint
    use hillstab_batch_output_checkpoint, only: checkpoint_options_t, checkpoint_note
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
@@ -74,6 +74,9 @@ contains
    !> Run a validated scene: unit by unit with a checkpoint when its points are independent
    !> and it is written as text, else by its task's own loop. With `options%resume`, a scene
    !> written in binary is refused (it keeps no checkpoint), other tasks run afresh with a note.
+   !> A run that keeps no checkpoint deals with one found at its output's name first
+   !> (hillstab_batch_run_units `settle_checkpoint`: discarded with a note, refused under
+   !> `--resume`).
    subroutine run_scene(scene, quiet, error, options)
       type(scene_t), intent(in) :: scene  !! a validated scene
       logical, intent(in) :: quiet  !! no progress on stderr
@@ -99,8 +102,13 @@ contains
          call name_scene_file(scene, error)
          return
       end if
+      ! a checkpoint at its output's name is discarded with a note, or refused under --resume
+      if (present(options)) then
+         call settle_checkpoint(scene, options, error)
+         if (allocated(error)) return
+      end if
       if (resume) call checkpoint_note(options, scene%source//": this run keeps no checkpoint (only charts over "// &
-         "&chart, points and lyapunov runs written as text do): running it afresh")
+         "&chart, points and lyapunov runs of a scalar model written as text do): running it afresh")
       call scene%task%run(scene, quiet, error)
       call name_scene_file(scene, error)
    end subroutine run_scene

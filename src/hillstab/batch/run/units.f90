@@ -68,7 +68,8 @@ module hillstab_batch_run_units
    !> at compile time by the calls taking it); unused without OpenMP.
    integer, parameter :: lock_kind = int32
    public :: batch_t, batch_result_t, batch_distributable, batch_plan, batch_set_unit_size, batch_unit_range, &
-      batch_compute, batch_open, batch_write, batch_commit, batch_discard, run_batch, scene_fingerprint, max_threads
+      batch_compute, batch_open, batch_write, batch_commit, batch_discard, run_batch, scene_fingerprint, max_threads, &
+      problem_kind, settle_checkpoint
 
    !> A scene's work cut into units, and the state of its output file.
    type :: batch_t
@@ -313,6 +314,7 @@ contains
       type(batch_t), intent(inout) :: batch
       batch%state = checkpoint_state_t()
       batch%state%version = version_string
+      batch%state%problem = problem_kind(batch%scene)
       batch%state%output = output_path(batch%scene)
       batch%state%temporary = ""
       ! the fingerprint is made when a checkpoint is compared or first written
@@ -366,6 +368,11 @@ contains
       if (saved%version /= version_string) then
          call set_error(error, err_input, source//": the checkpoint was written by hillstab "//saved%version// &
             ", this is "//version_string//", whose lines may differ"//refusal)
+         return
+      end if
+      if (saved%problem /= batch%state%problem) then
+         call set_error(error, err_input, source//": &scene: model: the checkpoint is of a "//saved%problem// &
+            ", this scene is a "//batch%state%problem//refusal)
          return
       end if
       if (saved%output /= batch%state%output) then
@@ -780,6 +787,68 @@ contains
       integer(c_int) :: status
       status = c_nanosleep(timespec_t(0_c_long, nanoseconds), remaining)
    end subroutine pause_for
+
+   !> The kind of problem of a scene and its task, as a checkpoint records it: "scalar chart"
+   !> (a Hill equation of `&scene model`), "system points" (`model = 'system'`).
+   function problem_kind(scene) result(text)
+      type(scene_t), intent(in) :: scene  !! a validated scene
+      character(len=:), allocatable :: text
+      if (allocated(scene%system)) then
+         text = "system "//scene%task%name
+      else
+         text = "scalar "//scene%task%name
+      end if
+   end function problem_kind
+
+   !> For a run that keeps no checkpoint (a system scene, a task other than chart, points and
+   !> lyapunov, binary output): what is at its output's checkpoint name is dealt with as a
+   !> run that keeps one deals with it, so that a later --resume never continues a
+   !> checkpoint this run has overwritten the output of. Without `resume`, a checkpoint found
+   !> is discarded with a note (an incomplete or damaged one too); with it, a checkpoint
+   !> (of another kind of problem: this run keeps none) is refused, err_input, and kept; an
+   !> incomplete one is discarded with a note. Anything else at the name (a symbolic link, a
+   !> file, a member that is not a regular file) is refused (err_io), as is a checkpoint
+   !> another run is writing; nothing at the name: nothing is done.
+   subroutine settle_checkpoint(scene, options, error)
+      type(scene_t), intent(in) :: scene  !! a validated scene whose run keeps no checkpoint
+      type(checkpoint_options_t), intent(in) :: options  !! --resume, the program's name
+      type(error_t), allocatable, intent(out) :: error  !! err_input (refused), err_io (in the way)
+      type(checkpoint_state_t) :: saved
+      character(len=:), allocatable :: directory, reason, context, what
+      integer :: kind
+      directory = checkpoint_directory(output_path(scene))
+      context = scene%source//": &scene: output: "
+      call find_checkpoint(directory, kind, saved, reason, error)
+      if (allocated(error)) then
+         error%message = context//error%message
+         return
+      end if
+      if (kind == checkpoint_usable) then
+         what = " of a "//saved%problem//" ("//progress_text(saved)//")"
+      else
+         what = " ("//reason//")"
+      end if
+      select case (kind)
+      case (checkpoint_usable, checkpoint_damaged)
+         if (options%resume) then
+            call set_error(error, err_input, scene%source//": &scene: model: the checkpoint '"//directory//"'"// &
+               what//" cannot be resumed by this run ("//problem_kind(scene)//"), which keeps no checkpoint; "// &
+               "it is not resumed and kept as it is: run without --resume to discard it and start afresh")
+            return
+         end if
+      case (checkpoint_incomplete)
+      case default
+         return
+      end select
+      call remove_stale_temporary(directory, saved, temporary_prefix(output_path(scene)))
+      call remove_checkpoint(directory, error)
+      if (allocated(error)) then
+         error%message = context//error%message
+         return
+      end if
+      call checkpoint_note(options, "discarded the checkpoint '"//directory//"'"//what//": this run ("// &
+         problem_kind(scene)//") keeps no checkpoint and writes "//output_path(scene)//" afresh")
+   end subroutine settle_checkpoint
 
    !> Number of OpenMP threads a parallel region will use (1 without OpenMP).
    integer function max_threads()

@@ -35,6 +35,7 @@ module hillstab_batch_tasks_system
       write_records
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_step, progress_end
    use hillstab_curves_system_boundaries, only: system_boundary_t, system_boundaries
+   use hillstab_batch_run_units, only: max_threads
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -44,6 +45,11 @@ module hillstab_batch_tasks_system
 
    !> Most exponent columns (mu_1 … mu_n, n ≤ max_dof).
    integer, parameter :: max_dof_columns = 20
+   !> Rows of a chart computed at once (in parallel), then written in order.
+   integer, parameter :: chart_block_rows = 16
+   !> Bytes of a file's `#` header, an upper estimate (the matrices of n = 20 and 32
+   !> harmonics written in full take about 0.7 MB).
+   integer(int64), parameter :: header_bytes = 1000000
 
    !> The tasks a system scene takes.
    character(len=*), parameter :: system_task_names = "chart, points, coefficient, boundaries"
@@ -69,6 +75,8 @@ module hillstab_batch_tasks_system
       procedure :: run => chart_run
       procedure :: declarations => chart_declarations
       procedure :: size_variables => chart_size_variables
+      procedure :: memory_bytes => chart_memory_bytes
+      procedure :: estimated_bytes => chart_estimated_bytes
    end type system_chart_task_t
 
    !> `points` on a system.
@@ -79,6 +87,7 @@ module hillstab_batch_tasks_system
       procedure :: read => points_read
       procedure :: run => points_run
       procedure :: declarations => points_declarations
+      procedure :: memory_bytes => points_memory_bytes
    end type system_points_task_t
 
    !> `coefficient` on a system: the entries of K(τ).
@@ -100,6 +109,8 @@ module hillstab_batch_tasks_system
       procedure :: read => boundaries_read
       procedure :: run => boundaries_run
       procedure :: declarations => chart_declarations_b
+      procedure :: size_variables => boundaries_size_variables
+      procedure :: memory_bytes => boundaries_memory_bytes
    end type system_boundaries_task_t
 
 contains
@@ -118,6 +129,28 @@ contains
       allocate (groups(1))
       groups(1) = chart_group()
    end function chart_declarations_b
+
+   !> The variables that set the work and the memory: the α grid and the β samples.
+   function boundaries_size_variables(self) result(text)
+      class(system_boundaries_task_t), intent(in) :: self  !! the task
+      character(len=:), allocatable :: text
+      text = grid_size_text(self%grid, .false.)
+   end function boundaries_size_variables
+
+   !> The curve points kept for every α (at most 4 n_beta + 64 each) and each row's
+   !> message, the β samples, and each thread's work on a row (the samples' discriminant and
+   !> verdicts, its curve points).
+   function boundaries_memory_bytes(self, scene) result(bytes)
+      class(system_boundaries_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      type(system_boundary_t) :: row
+      integer(int64) :: per_row, samples
+      samples = int(self%grid%n_beta, int64)
+      per_row = (4*samples + 64)*(storage_size(row)/8)
+      bytes = int(self%grid%n_alpha, int64)*(per_row + 400) + 8*samples + &
+              int(max_threads(), int64)*(12*samples + per_row)
+   end function boundaries_memory_bytes
 
    !> `&chart`: at least 2 β samples.
    subroutine boundaries_read(self, file, scene, error)
@@ -159,7 +192,7 @@ contains
       character(len=300) :: extra(7)
       character(len=200) :: line
       type(progress_t) :: progress
-      integer :: i, k, n_failed, length
+      integer :: i, k, n_failed, length, alloc_status
       call prepare_system(scene%system, scene%epsilon, form, cause)
       if (allocated(cause)) then
          call fail(error, scene%source, "system", "mass", cause%message)
@@ -167,7 +200,12 @@ contains
       end if
       betas = [(grid_value(self%grid%beta_min, self%grid%beta_max, self%grid%n_beta, k), k=1, self%grid%n_beta)]
       allocate (rows(4*self%grid%n_beta + 64, self%grid%n_alpha), counts(self%grid%n_alpha), &
-                failures(self%grid%n_alpha))
+                failures(self%grid%n_alpha), stat=alloc_status)
+      if (alloc_status /= 0) then
+         call set_error(error, err_input, scene%source//": "//self%size_variables()//": the curve points of "// &
+            integer_text(self%grid%n_alpha)//" alphas cannot be allocated (out of memory)")
+         return
+      end if
       counts = 0
       failures = ""
       call progress_begin(progress, int(self%grid%n_alpha, int64), quiet, "rows")
@@ -654,7 +692,38 @@ contains
       text = grid_size_text(self%grid, .false.)
    end function chart_size_variables
 
+   !> The buffers of a chart run: the values and (text files) the text of a block of rows
+   !> (`chart_block_rows`, or fewer when the grid has fewer), each n_beta points; besides them
+   !> a run holds a few MB whatever the grid (its nodes, one line per thread).
+   function chart_memory_bytes(self, scene) result(bytes)
+      class(system_chart_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      integer :: n
+      n = scene%system%dof()
+      bytes = int(min(chart_block_rows, self%grid%n_alpha), int64)*int(self%grid%n_beta, int64)* &
+              (8*(n_fixed + n) + merge(0, row_text_width(size(self%chosen)), scene%binary))
+   end function chart_memory_bytes
+
+   !> Header plus n_alpha n_beta lines of the chosen columns (or their float64 records) and
+   !> one blank line per α block.
+   pure function chart_estimated_bytes(self, scene) result(bytes)
+      class(system_chart_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      bytes = header_bytes + int(self%grid%n_alpha, int64)*int(self%grid%n_beta, int64)* &
+              merge(8*size(self%chosen), row_text_width(size(self%chosen)), scene%binary) + int(self%grid%n_alpha, int64)
+   end function chart_estimated_bytes
+
+   !> The characters a point's line may take in a row's text: 26 a column and its new line.
+   pure integer function row_text_width(n_columns)
+      integer, intent(in) :: n_columns  !! columns chosen
+      row_text_width = 26*n_columns + 1
+   end function row_text_width
+
    !> The chart: blocks of rows in parallel, written in order (a blank line after each α).
+   !> The buffers are allocated before the output is opened: a machine short of memory
+   !> leaves no file and an error naming the grid.
    subroutine chart_run(self, scene, quiet, error)
       class(system_chart_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
@@ -664,12 +733,12 @@ contains
       type(system_form_t) :: form
       type(system_method_t) :: method
       type(error_t), allocatable :: cause
-      integer, parameter :: block_rows = 16
       character(len=:), allocatable :: texts(:), first_failure
       real(wp), allocatable :: values(:, :, :)
-      integer :: n, n_columns, first, last, i, n_failed(block_rows), failed_total
+      integer :: n, n_columns, first, last, i, n_failed(chart_block_rows), failed_total, rows, alloc_status
+      integer(int64) :: text_lengths(chart_block_rows), text_length
       type(progress_t) :: progress
-      character(len=400) :: failures(block_rows)
+      character(len=400) :: failures(chart_block_rows)
       call prepare_system(scene%system, scene%epsilon, form, cause)
       if (allocated(cause)) then
          call fail(error, scene%source, "system", "mass", cause%message)
@@ -678,6 +747,17 @@ contains
       method = system_method_t(scene%method%kind, scene%method%tolerance)
       n = form%n
       n_columns = n_fixed + n
+      rows = min(chart_block_rows, self%grid%n_alpha)
+      text_length = int(row_text_width(size(self%chosen)), int64)*self%grid%n_beta
+      ! a binary file writes the values alone
+      if (scene%binary) text_length = 1
+      allocate (values(n_columns, self%grid%n_beta, rows), stat=alloc_status)
+      if (alloc_status == 0) allocate (character(len=text_length) :: texts(rows), stat=alloc_status)
+      if (alloc_status /= 0) then
+         call set_error(error, err_input, scene%source//": "//self%size_variables()//": the buffers of "// &
+            integer_text(rows)//" rows cannot be allocated (out of memory): lower n_beta")
+         return
+      end if
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
       call write_header(file, system_lines(scene, "stability chart", self%chosen), chosen_names(n, self%chosen), &
@@ -685,19 +765,15 @@ contains
       failed_total = 0
       first_failure = ""
       call progress_begin(progress, int(self%grid%n_alpha, int64), quiet, "rows")
-      allocate (character(len=1) :: texts(block_rows))
-      allocate (values(n_columns, self%grid%n_beta, block_rows))
       first = 1
       do while (first <= self%grid%n_alpha .and. .not. allocated(error))
-         last = min(first + block_rows - 1, self%grid%n_alpha)
-         deallocate (texts)
-         allocate (character(len=(n_fixed + n)*26*self%grid%n_beta + 2) :: texts(last - first + 1))
+         last = min(first + rows - 1, self%grid%n_alpha)
          n_failed = 0
          failures = ""
          !$omp parallel do schedule(dynamic, 1) default(shared) private(i)
          do i = first, last
             call chart_row(self, scene, form, method, i, values(:, :, i - first + 1), texts(i - first + 1), &
-                           n_failed(i - first + 1), failures(i - first + 1))
+                           text_lengths(i - first + 1), n_failed(i - first + 1), failures(i - first + 1))
          end do
          !$omp end parallel do
          do i = first, last
@@ -710,7 +786,7 @@ contains
                   call write_text(file, "", error)
                   if (allocated(error)) exit
                end if
-               call write_text(file, trim(texts(i - first + 1)), error)
+               call write_text(file, texts(i - first + 1)(:text_lengths(i - first + 1)), error)
             end if
             if (allocated(error)) exit
          end do
@@ -725,30 +801,29 @@ contains
          " points failed (status 2); the first: "//first_failure)
    end subroutine chart_run
 
-   !> One row of the chart: its values and its text.
-   subroutine chart_row(self, scene, form, method, i, values, text, n_failed, failure)
+   !> One row of the chart: its values and its text (the points' lines joined by new lines,
+   !> no final one).
+   subroutine chart_row(self, scene, form, method, i, values, text, text_length, n_failed, failure)
       class(system_chart_task_t), intent(in) :: self
       type(scene_t), intent(in) :: scene
       type(system_form_t), intent(in) :: form
       type(system_method_t), intent(in) :: method
       integer, intent(in) :: i
       real(wp), intent(out) :: values(:, :)
-      character(len=*), intent(out) :: text
+      character(len=*), intent(inout) :: text
+      integer(int64), intent(out) :: text_length
       integer, intent(out) :: n_failed
       character(len=*), intent(out) :: failure
       type(system_nodes_t) :: nodes
-      character(len=:), allocatable :: message, joined
-      character(len=:), allocatable :: lines(:)
-      integer, allocatable :: lengths(:)
+      character(len=:), allocatable :: message
+      character(len=(n_fixed + max_dof_columns)*26) :: line
       logical :: failed
       real(wp) :: alpha, beta
-      integer :: j, width
+      integer :: j, length
       alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, self%grid%n_alpha, i)
       n_failed = 0
       failure = ""
-      width = 0
-      allocate (character(len=(n_fixed + form%n)*26) :: lines(self%grid%n_beta))
-      allocate (lengths(self%grid%n_beta))
+      text_length = 0
       do j = 1, self%grid%n_beta
          beta = grid_value(self%grid%beta_min, self%grid%beta_max, self%grid%n_beta, j)
          call evaluate(scene%system, form, method, alpha, beta, nodes, values(:, j), failed, message)
@@ -757,10 +832,15 @@ contains
             failure = trim(failure)//" "//message
          end if
          if (failed) n_failed = n_failed + 1
-         call point_line(form%n, self%chosen, values(:, j), lines(j), lengths(j))
+         if (scene%binary) cycle
+         call point_line(form%n, self%chosen, values(:, j), line, length)
+         if (j > 1) then
+            text_length = text_length + 1
+            text(text_length:text_length) = new_line("a")
+         end if
+         text(text_length + 1:text_length + length) = line(:length)
+         text_length = text_length + length
       end do
-      call join_lines(lines, .false., joined, lengths=lengths)
-      text = joined
    end subroutine chart_row
 
    !> `&points`, and the columns.
@@ -789,6 +869,14 @@ contains
       groups(1) = points_group()
    end function points_declarations
 
+   !> The values of every point (written once all are computed).
+   function points_memory_bytes(self, scene) result(bytes)
+      class(system_points_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      bytes = 8*int(n_fixed + scene%system%dof(), int64)*int(size(self%points, 2), int64)
+   end function points_memory_bytes
+
    !> The points, in file order.
    subroutine points_run(self, scene, quiet, error)
       class(system_points_task_t), intent(in) :: self  !! the task
@@ -804,13 +892,18 @@ contains
       character(len=(n_fixed + max_dof_columns)*26) :: line
       logical :: failed
       type(progress_t) :: progress
-      integer :: k, n_failed, length
+      integer :: k, n_failed, length, alloc_status
       call prepare_system(scene%system, scene%epsilon, form, cause)
       if (allocated(cause)) then
          call fail(error, scene%source, "system", "mass", cause%message)
          return
       end if
-      allocate (v(n_fixed + form%n, size(self%points, 2)))
+      allocate (v(n_fixed + form%n, size(self%points, 2)), stat=alloc_status)
+      if (alloc_status /= 0) then
+         call set_error(error, err_input, scene%source//": &points: file: the values of "// &
+            integer_text(size(self%points, 2))//" points cannot be allocated (out of memory)")
+         return
+      end if
       n_failed = 0
       first_failure = ""
       call progress_begin(progress, int(size(self%points, 2), int64), quiet)
