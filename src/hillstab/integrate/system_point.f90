@@ -127,8 +127,8 @@ contains
    !> scaled by the largest product so that nothing overflows (±1e300 with `overflow`).
    pure subroutine second_invariant(log_moduli, arguments, a2, overflow)
       real(wp), intent(in) :: log_moduli(:), arguments(:)  !! by decreasing modulus
-      real(wp), intent(out) :: a2
-      logical, intent(inout) :: overflow
+      real(wp), intent(out) :: a2          !! a₂ (±1e300 where it overflows)
+      logical, intent(inout) :: overflow   !! set where a₂ overflows
       real(wp) :: top, x, power
       integer :: i, j
       top = log_moduli(1) + log_moduli(2)
