@@ -33,6 +33,7 @@ module hillstab_hill_model_base
       integer :: max_count = 1                       !! most numbers it takes
       character(len=64) :: default = ""             !! its default as scene text ("" = none)
       character(len=240) :: help = ""               !! what it means, for templates and docs
+      logical :: whole = .false.                     !! a whole number (a count): echoed without a decimal point
    end type model_variable_t
 
    !> A model object: a name, a formula and, for a model that carries data, its variables.

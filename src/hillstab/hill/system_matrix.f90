@@ -149,7 +149,7 @@ contains
       type(model_variable_t), allocatable :: variables(:)
       integer, parameter :: n2 = max_dof*max_dof
       allocate (variables(9))
-      variables(1) = model_variable_t("n", model_variable_real, 1, "", "degrees of freedom, 1 to 20")
+      variables(1) = model_variable_t("n", model_variable_real, 1, "", "degrees of freedom, 1 to 20", whole=.true.)
       variables(2) = model_variable_t("mass", model_variable_list, n2, "", "M, n*n numbers row by row, "// &
                                       "symmetric positive definite (or a quoted file of its rows); default: I")
       variables(3) = model_variable_t("damping", model_variable_list, n2, "", "C, n*n numbers, symmetric; "// &

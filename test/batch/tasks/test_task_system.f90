@@ -105,7 +105,7 @@ contains
       lines = read_lines(written)
       call check(ctx, count(index(lines, "# columns: alpha beta trace a2 overflow stable kind lambda_max mu "// &
                                   "argument mu_1 mu_2 defect error_estimate status steps") == 1) == 1, "one columns line")
-      call check(ctx, any(index(lines, "# &system n = 2.0, mass = 1.0, 0.0, 0.0, 0.25") == 1), "effective &system")
+      call check(ctx, any(index(lines, "# &system n = 2, mass = 1.0, 0.0, 0.0, 0.25") == 1), "effective &system, n whole")
       call numbers(lines, 16, rows)
       call check(ctx, size(rows, 2) == 33, "3 x 11 rows")
       combination = 0

@@ -191,7 +191,11 @@ contains
       text = ""
       do k = 1, size(numbers)
          if (k > 1) text = text//", "
-         text = text//real_text(numbers(k))
+         if (variables(v)%whole .and. abs(numbers(k)) < 1.0e9_wp) then
+            text = text//integer_text(nint(numbers(k)))
+         else
+            text = text//real_text(numbers(k))
+         end if
       end do
       target = v
       if (variables(v)%kind == model_variable_file) then

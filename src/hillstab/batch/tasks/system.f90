@@ -324,7 +324,8 @@ contains
       case ("alpha"); text = "alpha, the drive"
       case ("beta"); text = "beta, the factor of B"
       case ("trace"); text = "a1 = tr Phi of the one-period monodromy of y = (x, x') (+-1e300 with overflow = 1)"
-      case ("a2"); text = "a2 = ((tr Phi)^2 - tr Phi^2)/2 (Broucke: z^2 - a1 z + a2 - 2 = 0 for n = 2)"
+      case ("a2"); text = "a2 = ((tr Phi)^2 - tr Phi^2)/2 = sum of lambda_i lambda_j (from the multipliers "// &
+                          "where that difference cancels; Broucke: z^2 - a1 z + a2 - 2 = 0 for n = 2)"
       case ("overflow"); text = "1 when |a1| or |a2| exceeds 1e300 (clamped)"
       case ("stable"); text = "1 stable, 0 unstable, -1 marginal (the error bound of Phi does not decide)"
       case ("kind"); text = "0 stable, 1 unstable at +1, 2 at -1, 3 combination (Krein collision), "// &
