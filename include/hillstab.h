@@ -224,8 +224,10 @@ int hillstab_system_monodromy(const hillstab_system *system, double alpha, doubl
 
 /* Floquet analysis: the 2n multipliers by decreasing modulus (Phi's own with *log_scale = 0
  * when they are at most 1e300, else Phi~'s: Phi's = exp(log_scale) times them), the exponents
- * ln|lambda_i|/P of the n largest, HILLSTAB_SYSTEM_VERDICT_*, HILLSTAB_SYSTEM_KIND_*, tr Phi and
- * a2 = ((tr Phi)^2 - tr Phi^2)/2 (+-1e300 beyond), the structural defect (-1: not computable). */
+ * ln|lambda_i|/P of the n largest (each to the tolerance, from the factored product where Phi
+ * cannot resolve it), HILLSTAB_SYSTEM_VERDICT_*, HILLSTAB_SYSTEM_KIND_*, tr Phi and
+ * a2 = sum lambda_i lambda_j (+-1e300 beyond), the structural defect relative to |Phi|^2 (or
+ * to Hadamard's bound of det Phi when damped). */
 int hillstab_system_floquet(const hillstab_system *system, double alpha, double beta, double epsilon,
                             int method, double tolerance, double *multipliers_re, double *multipliers_im,
                             double *log_scale, double *exponents, int *verdict, int *kind, double *trace,

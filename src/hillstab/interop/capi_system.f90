@@ -374,9 +374,9 @@ contains
    !> `log_scale` 0, when they are at most 1e300; else Φ̃'s, Φ's being e^log_scale times
    !> them), the exponents ln|λ_i|/P of the n largest, the verdict (HILLSTAB_SYSTEM_VERDICT_*:
    !> 1 stable, 0 unstable, −1 marginal, decided within the error bound), the kind
-   !> (HILLSTAB_SYSTEM_KIND_*: 0 stable, 1 at +1, 2 at −1, 3 combination, 4 damped), the
-   !> invariants tr Φ and a₂ (±1e300 beyond), the structural defect (−1: not computable), the
-   !> monodromy's error estimate and status (0 or 1).
+   !> (HILLSTAB_SYSTEM_KIND_*: 0 stable, 1 at +1, 2 at −1, 3 combination, 4 damped,
+   !> 5 undecided), the invariants tr Φ and a₂ (±1e300 beyond), the structural defect
+   !> (relative), the monodromy's error estimate and status (0 or 1).
    function hillstab_c_system_floquet(system, alpha, beta, epsilon, method, tolerance, multipliers_re, &
                                       multipliers_im, log_scale, exponents, verdict, kind, trace, a2, defect, &
                                       error_estimate, status) result(code) bind(C, name="hillstab_system_floquet")
