@@ -230,7 +230,9 @@ contains
       real(wp), intent(in) :: s             !! its scale
       type(system_form_t), intent(in) :: form
       real(wp) :: defect
-      real(wp), allocatable :: omega(:, :), unit_columns(:, :)
+      ! explicit shapes: no reallocation on assignment (gfortran's size arithmetic for an
+      ! unallocated left side overflows under UBSan)
+      real(wp) :: omega(size(phi, 1), size(phi, 1)), unit_columns(size(phi, 1), size(phi, 1))
       real(wp) :: shrink, size_phi, log_hadamard, norms(size(phi, 2)), target
       integer :: i, m
       m = size(phi, 1)
@@ -251,7 +253,6 @@ contains
             return
          end if
          log_hadamard = sum(log(norms))
-         allocate (unit_columns(m, m))
          do i = 1, m
             unit_columns(:, i) = phi(:, i)/norms(i)
          end do
