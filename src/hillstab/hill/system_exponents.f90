@@ -30,7 +30,7 @@ module hillstab_hill_system_exponents
    use hillstab_ffi_lapack, only: dgeev
    implicit none
    private
-   public :: factored_exponents, householder_qr
+   public :: factored_exponents, householder_qr, identity_matrix
 
    !> most sweeps over the period
    integer, parameter :: max_sweeps = 60
@@ -65,7 +65,7 @@ contains
       m = size(factors, 1)
       ! the rounding of the sums of ln R_kk: each QR moves R_kk by a few m ε relative
       noise = 4.0_wp*m*epsilon(1.0_wp)*sqrt(real(size(factors, 3), wp))
-      q = identity(m)
+      q = identity_matrix(m)
       ! one group of all at first: the first sweep is the plain product in R's form
       n_groups = 1
       starts(1) = 1
@@ -81,7 +81,7 @@ contains
          do g = 1, n_groups
             lo = starts(g)
             hi = starts(g + 1) - 1
-            blocks(lo:hi, lo:hi) = identity(hi - lo + 1)
+            blocks(lo:hi, lo:hi) = identity_matrix(hi - lo + 1)
          end do
          block_scale = 0.0_wp
          do k = 1, size(factors, 3)
@@ -271,7 +271,7 @@ contains
          r(k + 1:m, k) = 0.0_wp
       end do
       ! Q = H_1 H_2 ⋯ H_{m−1} applied to the identity, last reflection first
-      q = identity(m)
+      q = identity_matrix(m)
       do k = m - 1, 1, -1
          if (betas(k) == 0.0_wp) cycle
          do j = 1, m
@@ -287,13 +287,14 @@ contains
       end do
    end subroutine householder_qr
 
-   pure function identity(m) result(a)
-      integer, intent(in) :: m
+   !> The identity matrix of order m.
+   pure function identity_matrix(m) result(a)
+      integer, intent(in) :: m  !! the order
       real(wp) :: a(m, m)
       integer :: i
       a = 0.0_wp
       do i = 1, m
          a(i, i) = 1.0_wp
       end do
-   end function identity
+   end function identity_matrix
 end module hillstab_hill_system_exponents

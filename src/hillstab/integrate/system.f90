@@ -50,6 +50,7 @@ module hillstab_integrate_system
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_hill_system, only: hill_system_t, system_form_t, fundamental_derivative
    use hillstab_hill_system_floquet, only: symplectic_form
+   use hillstab_hill_system_exponents, only: identity => identity_matrix
    use hillstab_integrate_rk, only: rk_system_t, rk_options_t, rk_integrate, rk_dop853
    use hillstab_integrate_system_gsl, only: system_monodromy_gsl, gsl_system_result_t, system_propagator_gsl, &
       gsl_first_epsilon, gsl_second_epsilon
@@ -970,17 +971,6 @@ contains
       real(wp) :: c(size(a, 1), size(a, 1))
       c = matmul(a, b) - matmul(b, a)
    end function commutator
-
-   !> The identity of order m.
-   pure function identity(m) result(a)
-      integer, intent(in) :: m
-      real(wp) :: a(m, m)
-      integer :: i
-      a = 0.0_wp
-      do i = 1, m
-         a(i, i) = 1.0_wp
-      end do
-   end function identity
 
    !> e^X by scaling and squaring: X/2^j with ‖X/2^j‖₁ ≤ θ₁₈ = 1.09, the optimised Taylor
    !> approximant of Bader, Blanes and Casas of degree 12 (four products, ‖X‖₁ ≤ θ₁₂ = 0.30) or
