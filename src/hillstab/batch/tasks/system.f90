@@ -1,6 +1,7 @@
 !> The tasks of a system scene (`&scene model = 'system'`, the matrices in `&system`):
 !> `chart` over the (α, β) grid of `&chart`, `points` at the (α, β) of a `&points` file and
-!> `coefficient` (the entries of K(τ) over the period at the α of `&coefficient`). Chart and
+!> `coefficient` (the entries of K(τ) over the period at the α of `&coefficient`; task
+!> `boundaries` is hillstab_batch_tasks_system_boundaries). Chart and
 !> points write the columns of `system_columns` (`&scene columns` chooses among them; a
 !> verdict-only chart is `columns = 'alpha beta stable kind status'`), each point from the
 !> exact monodromy (hillstab_integrate_system, the nodes shared along a chart row) and its
@@ -34,14 +35,13 @@ module hillstab_batch_tasks_system
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text, join_lines, &
       write_records
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_step, progress_end
-   use hillstab_curves_system_boundaries, only: system_boundary_t, system_boundaries
    use hillstab_batch_run_units, only: max_threads
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
    public :: system_chart_task_t, system_points_task_t, system_coefficient_task_t, system_chart_task, &
       system_points_task, system_coefficient_task, system_task_names, system_column_names, system_point_values
-   public :: system_boundaries_task_t, system_boundaries_task
+   public :: check_system_cost, extreme_name
 
    !> Most exponent columns (mu_1 … mu_n, n ≤ max_dof).
    integer, parameter :: max_dof_columns = 20
@@ -102,184 +102,8 @@ module hillstab_batch_tasks_system
       procedure :: declarations => coefficient_declarations
    end type system_coefficient_task_t
 
-   !> `boundaries` on a system: the transition curves over the α of `&chart`.
-   type, extends(task_t) :: system_boundaries_task_t
-      type(chart_grid_t) :: grid  !! `&chart`: the α values, the β window and its n_beta samples
-   contains
-      procedure :: read => boundaries_read
-      procedure :: run => boundaries_run
-      procedure :: declarations => chart_declarations_b
-      procedure :: size_variables => boundaries_size_variables
-      procedure :: memory_bytes => boundaries_memory_bytes
-   end type system_boundaries_task_t
 
 contains
-
-   !> A boundaries task of a system scene.
-   function system_boundaries_task() result(task)
-      type(system_boundaries_task_t) :: task
-      task%name = "boundaries"
-      task%takes_physical = .false.
-   end function system_boundaries_task
-
-   !> `&chart`.
-   function chart_declarations_b(self) result(groups)
-      class(system_boundaries_task_t), intent(in) :: self  !! the task
-      type(group_t), allocatable :: groups(:)
-      allocate (groups(1))
-      groups(1) = chart_group()
-   end function chart_declarations_b
-
-   !> The variables that set the work and the memory: the α grid and the β samples.
-   function boundaries_size_variables(self) result(text)
-      class(system_boundaries_task_t), intent(in) :: self  !! the task
-      character(len=:), allocatable :: text
-      text = grid_size_text(self%grid, .false.)
-   end function boundaries_size_variables
-
-   !> The curve points kept for every α (at most 4 n_beta + 64 each) and each row's
-   !> message, the β samples, and each thread's work on a row (the samples' discriminant and
-   !> verdicts, its curve points).
-   function boundaries_memory_bytes(self, scene) result(bytes)
-      class(system_boundaries_task_t), intent(in) :: self  !! the task
-      type(scene_t), intent(in) :: scene  !! its scene
-      integer(int64) :: bytes
-      type(system_boundary_t) :: row
-      integer(int64) :: per_row, samples
-      samples = int(self%grid%n_beta, int64)
-      per_row = (4*samples + 64)*(storage_size(row)/8)
-      bytes = int(self%grid%n_alpha, int64)*(per_row + 400) + 8*samples + &
-              int(max_threads(), int64)*(12*samples + per_row)
-   end function boundaries_memory_bytes
-
-   !> `&chart`: at least 2 β samples.
-   subroutine boundaries_read(self, file, scene, error)
-      class(system_boundaries_task_t), intent(inout) :: self  !! the task, its grid filled in
-      type(scene_file_t), intent(in) :: file      !! the scene file
-      type(scene_t), intent(in) :: scene          !! the `&scene` settings
-      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
-      allocate (self%groups(1))
-      call read_chart_group(file, chart_group(), grid=self%grid, values=self%groups(1), error=error)
-      if (allocated(error)) return
-      if (self%grid%n_beta < 2 .or. .not. (self%grid%beta_max > self%grid%beta_min)) then
-         call fail(error, file%path, "chart", "n_beta", "the boundaries of a system need a beta window "// &
-            "(beta_max > beta_min) and n_beta >= 2 samples in it (the brackets of the combination tongues)")
-         return
-      end if
-      if (int(self%grid%n_alpha, int64)*self%grid%n_beta > int(max_grid_count, int64)) then
-         call fail(error, file%path, "chart", "n_beta", "n_alpha * n_beta exceeds the limit of 1e8 points")
-         return
-      end if
-      call check_system_cost(scene, max(abs(self%grid%alpha_min), abs(self%grid%alpha_max)), &
-                             max(abs(self%grid%beta_min), abs(self%grid%beta_max)), "chart", &
-                             extreme_name("alpha", self%grid%alpha_min, self%grid%alpha_max), &
-                             extreme_name("beta", self%grid%beta_min, self%grid%beta_max), error)
-   end subroutine boundaries_read
-
-   !> The curves, one block per α: `alpha beta kind route check error_estimate status`.
-   subroutine boundaries_run(self, scene, quiet, error)
-      class(system_boundaries_task_t), intent(in) :: self  !! the task
-      type(scene_t), intent(in) :: scene  !! its scene
-      logical, intent(in) :: quiet  !! no progress on stderr
-      type(error_t), allocatable, intent(out) :: error  !! err_points_failed when a point is not confirmed
-      type(output_file_t) :: file
-      type(system_form_t) :: form
-      type(error_t), allocatable :: cause
-      type(system_boundary_t), allocatable :: rows(:, :)
-      integer, allocatable :: counts(:)
-      character(len=400), allocatable :: failures(:)
-      real(wp), allocatable :: betas(:)
-      character(len=300) :: extra(7)
-      character(len=200) :: line
-      type(progress_t) :: progress
-      integer :: i, k, n_failed, length, alloc_status
-      call prepare_system(scene%system, scene%epsilon, form, cause)
-      if (allocated(cause)) then
-         call fail(error, scene%source, "system", "mass", cause%message)
-         return
-      end if
-      betas = [(grid_value(self%grid%beta_min, self%grid%beta_max, self%grid%n_beta, k), k=1, self%grid%n_beta)]
-      allocate (rows(4*self%grid%n_beta + 64, self%grid%n_alpha), counts(self%grid%n_alpha), &
-                failures(self%grid%n_alpha), stat=alloc_status)
-      if (alloc_status /= 0) then
-         call set_error(error, err_input, scene%source//": "//self%size_variables()//": the curve points of "// &
-            integer_text(self%grid%n_alpha)//" alphas cannot be allocated (out of memory)")
-         return
-      end if
-      counts = 0
-      failures = ""
-      call progress_begin(progress, int(self%grid%n_alpha, int64), quiet, "rows")
-      !$omp parallel do schedule(dynamic, 1) default(shared) private(i, k, cause)
-      do i = 1, self%grid%n_alpha
-         call boundary_row(i, cause)
-         if (allocated(cause)) failures(i) = cause%message
-         call progress_step(progress)
-      end do
-      !$omp end parallel do
-      call progress_end(progress)
-      extra(1) = system_description(scene%system)
-      extra(2) = "simple resonances (a multiplier pair at +1 or -1) by Hill's method with n x n blocks, checked "// &
-                 "against the monodromy; combination resonances (Krein collisions) by bisection on the samples"
-      extra(3) = "column kind: 1 a multiplier at +1, 2 at -1, 3 the edge of a combination tongue"
-      extra(4) = "column route: 1 Hill's method, 2 a root of Broucke's discriminant a1^2 - 4 a2 + 8 (n = 2), "// &
-                 "3 bisection on the verdict (any n)"
-      extra(5) = "column check: the distance of the nearest multiplier from +-1 at (alpha, beta) (route 1), the "// &
-                 "last bracket's width (routes 2, 3)"
-      extra(6) = "column error_estimate: of beta (route 1: two truncations of Hill's matrix; 2, 3: the bracket)"
-      extra(7) = "column status: 0 ok; 2 the point is not confirmed by the monodromy (check > 1e-4)"
-      call open_scene_output(scene, file, error)
-      if (allocated(error)) return
-      call write_header(file, scene_header(scene, "hillstab "//version_string//": transition curves of "// &
-                        system_equation_text(scene%system), extra), &
-                        "alpha beta kind route check error_estimate status", error)
-      n_failed = 0
-      do i = 1, self%grid%n_alpha
-         if (allocated(error)) exit
-         if (i > 1) call write_text(file, "", error)
-         do k = 1, counts(i)
-            if (allocated(error)) exit
-            length = 0
-            line = ""
-            call put_es(line, length, rows(k, i)%alpha, 17)
-            call put_es(line, length, rows(k, i)%beta, 17)
-            length = length + 1
-            call put_integer(line, length, rows(k, i)%kind)
-            length = length + 1
-            call put_integer(line, length, rows(k, i)%route)
-            call put_es(line, length, rows(k, i)%check, 17)
-            call put_es(line, length, rows(k, i)%error_estimate, 17)
-            length = length + 1
-            call put_integer(line, length, rows(k, i)%status)
-            if (rows(k, i)%status /= status_ok) n_failed = n_failed + 1
-            call write_text(file, line(:length), error)
-         end do
-      end do
-      call finish_output(file, error)
-      if (allocated(error)) return
-      do i = 1, self%grid%n_alpha
-         if (len_trim(failures(i)) > 0) then
-            call set_error(error, err_points_failed, scene%source//": alpha = "//real_text(grid_value( &
-               self%grid%alpha_min, self%grid%alpha_max, self%grid%n_alpha, i))//": "//trim(failures(i)))
-            return
-         end if
-      end do
-      if (n_failed > 0) call set_error(error, err_points_failed, scene%source//": "//integer_text(n_failed)// &
-         " curve points not confirmed by the monodromy (status 2)")
-
-   contains
-
-      subroutine boundary_row(i, cause)
-         integer, intent(in) :: i
-         type(error_t), allocatable, intent(out) :: cause
-         type(system_boundary_t), allocatable :: found(:)
-         real(wp) :: alpha
-         alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, self%grid%n_alpha, i)
-         call system_boundaries(scene%system, form, alpha, betas, system_method_t(scene%method%kind, &
-                                scene%method%tolerance), found, cause)
-         counts(i) = min(size(found), size(rows, 1))
-         rows(1:counts(i), i) = found(1:counts(i))
-      end subroutine boundary_row
-   end subroutine boundaries_run
 
    !> A chart task of a system scene.
    function system_chart_task() result(task)
