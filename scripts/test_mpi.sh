@@ -2,7 +2,7 @@
 # Tests of hillstab_mpi (run by `make test-mpi` and CI): builds hillstab and hillstab_mpi
 # with CMake (-DHILLSTAB_MPI=ON), then checks against the single-process program:
 #  - np = 1, 2, 3 write the same file as hillstab (charts with many and few rows, damped,
-#    a points list, a Lyapunov map, a non-distributed task);
+#    a points list, a Lyapunov map, a non-distributed task, a system's chart and points);
 #  - bad input (unknown variable, unwritable output) gives exit 2 on every rank, no hang,
 #    no file; a failing point is written as hillstab writes it (status 2, placeholders),
 #    with hillstab's message and exit 3 on every rank;
@@ -72,7 +72,14 @@ printf '%s\n' "&scene task='points', method='magnus6', output='$work/pts' /" \
 printf '%s\n' "&scene task='coefficient', output='$work/coef' /" "&coefficient /" >"$work/coef.nml"
 printf '%s\n' "&scene task='lyapunov', output='$work/lyap' /" "&series phi0=0.017, periods=40 /" \
    "&chart alpha_min=0.5, alpha_max=9.5, n_alpha=7, beta_min=0.5, beta_max=9.5, n_beta=9 /" >"$work/lyap.nml"
-for name in many:chart few:chart pts:points coef:coefficient lyap:lyapunov; do
+# a system (2 DOF, damped, a gyroscopic term): a chart of many rows, and points in several units
+sysgroup="&system n = 2, b = 1.0, 0.0, 0.0, 16.0, cos = -1.0, -0.6, -0.6, -4.0, sin = 0.0, 0.3, 0.3, 0.5, gyroscopic = 0.0, 0.2, -0.2, 0.0 /"
+printf '%s\n' "&scene task='chart', model='system', epsilon=0.02, output='$work/sys' /" "$sysgroup" \
+   "&chart alpha_min=0, alpha_max=1.2, n_alpha=23, beta_min=0, beta_max=3, n_beta=31 /" >"$work/sys.nml"
+awk 'BEGIN { for (k = 0; k < 200; k++) printf "%.4f %.4f\n", 1.2 * ((7 * k) % 23) / 23, 3 * k / 200 }' >"$work/syspoints.dat"
+printf '%s\n' "&scene task='points', model='system', method='rk', tolerance=1e-9, output='$work/syspts' /" "$sysgroup" \
+   "&points file='$work/syspoints.dat' /" >"$work/syspts.nml"
+for name in many:chart few:chart pts:points coef:coefficient lyap:lyapunov sys:chart syspts:points; do
    scene=${name%%:*}
    task=${name##*:}
    file="$work/${scene}_${task}.dat"

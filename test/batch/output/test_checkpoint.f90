@@ -36,7 +36,7 @@ module test_checkpoint
       logical :: ready = .false.                  !! made (the reference written)
    end type fixture_t
 
-   type(fixture_t), save :: chart, map
+   type(fixture_t), save :: chart, map, system_chart, system_points
    !> The status of `stop_program` when the run did not reach the units it was to be stopped at.
    integer, parameter :: not_reached = 250
 
@@ -47,6 +47,7 @@ contains
       suite = new_testsuite("checkpoint", [ &
          new_unittest("chart_resumed_after_kill", chart_resumed_after_kill), &
          new_unittest("lyapunov_resumed_after_kill", lyapunov_resumed_after_kill), &
+         new_unittest("system_resumed_after_kill", system_resumed_after_kill), &
          new_unittest("sigterm_keeps_checkpoint", sigterm_keeps_checkpoint), &
          new_unittest("damaged_checkpoint_refused", damaged_checkpoint_refused), &
          new_unittest("probe_digit_flip_refused", probe_digit_flip_refused), &
@@ -286,6 +287,42 @@ contains
       call kill_and_resume(ctx, chart, 20, .false.)
       call release_fixture(chart)
    end subroutine chart_resumed_after_kill
+
+   !> A system's chart (16 rows of 200 points, damped, a gyroscopic term) and points list (320
+   !> points: 5 units of 64) killed after 1, 8 and 14 rows and after 2 units, resumed: the
+   !> files of the uninterrupted runs.
+   subroutine system_resumed_after_kill(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=40) :: lines(320)
+      character(len=240) :: group(2)
+      character(len=:), allocatable :: points
+      integer :: k
+      group = [padded("&system n = 2, b = 1.0, 0.0, 0.0, 16.0, cos = -1.0, -0.6, -0.6, -4.0, sin = 0.0, 0.3, 0.3, 0.5,"), &
+               padded("   gyroscopic = 0.0, 0.2, -0.2, 0.0 /")]
+      call make_fixture(system_chart, "ck_sys", [ &
+         padded("&scene model='system', method='magnus6', tolerance=1e-10, epsilon=0.02, output='"// &
+                scratch_prefix("ck_sys")//"' /"), group, &
+         padded("&chart alpha_min=0, alpha_max=1.2, n_alpha=16, beta_min=0, beta_max=3, n_beta=200 /")], "chart", 16)
+      call check(ctx, system_chart%ready, "the uninterrupted system chart ran: "//program_path())
+      if (system_chart%ready) then
+         call kill_and_resume(ctx, system_chart, 1, .false.)
+         call kill_and_resume(ctx, system_chart, 8, .true.)
+         call kill_and_resume(ctx, system_chart, 14, .false.)
+      end if
+      call release_fixture(system_chart)
+      points = scratch_prefix("ck_sys_points")//".dat"
+      do k = 1, size(lines)
+         write (lines(k), '(f8.4,1x,f8.4)') 1.2_wp*mod(7*k, 23)/23.0_wp, 3.0_wp*(k - 1)/size(lines)
+      end do
+      call write_file(points, lines)
+      call make_fixture(system_points, "ck_sys_pts", [ &
+         padded("&scene task='points', model='system', method='rk', tolerance=1e-9, output='"// &
+                scratch_prefix("ck_sys_pts")//"' /"), group, padded("&points file='"//points//"' /")], "points", 5)
+      call check(ctx, system_points%ready, "the uninterrupted system points ran")
+      if (system_points%ready) call kill_and_resume(ctx, system_points, 2, .true.)
+      call release_fixture(system_points)
+      call delete_file(points)
+   end subroutine system_resumed_after_kill
 
    !> SIGKILL after 1, 6 and 11 of 13 units of a Lyapunov map.
    subroutine lyapunov_resumed_after_kill(ctx)
@@ -716,16 +753,15 @@ contains
       call check(ctx, any(before == "problem = scalar chart"), "the state records the kind: scalar chart")
       status = run_program("--quiet --resume '"//system//"'", err, 1)
       call check(ctx, status == 2, "system --resume: exit 2 (status "//integer_text(status)//")")
-      call check(ctx, file_says(err, system//": &scene: model: the checkpoint '"//directory//"' of a scalar chart") &
-                 .and. file_says(err, "(system chart), which keeps no checkpoint; it is not resumed and kept as it is"), &
-                 "names &scene model and both kinds")
+      call check(ctx, file_says(err, system//": &scene: model: the checkpoint is of a scalar chart, this scene is a "// &
+                 "system chart (checkpoint '"//directory//"'): it is not resumed"), "names &scene model and both kinds")
       after = read_lines(directory//"/state")
       call check(ctx, size(after) == size(before), "the checkpoint is kept")
       if (size(after) == size(before)) call check(ctx, all(after == before), "unchanged")
       call check(ctx, .not. file_exists(chart%output), "no output file")
       status = run_program("--quiet '"//system//"'", err, 1)
       call check(ctx, status == 0, "system without --resume: exit 0 (status "//integer_text(status)//")")
-      call check(ctx, file_says(err, "discarded the checkpoint '"//directory//"' of a scalar chart"), &
+      call check(ctx, file_says(err, "discarded the checkpoint '"//directory//"' of an earlier run"), &
                  "says it discarded it")
       call check(ctx, .not. directory_exists(directory) .and. .not. any_temp_file(chart%output), &
                  "no checkpoint, no temporary file")

@@ -29,6 +29,9 @@ contains
       suite = new_testsuite("batch", [ &
          new_unittest("chart_equals_serial", chart_equals_serial), &
          new_unittest("points_equal_serial", points_equal_serial), &
+         new_unittest("system_chart_equals_serial", system_chart_equals_serial), &
+         new_unittest("system_points_equal_serial", system_points_equal_serial), &
+         new_unittest("system_units_in_any_order", system_units_in_any_order), &
          new_unittest("units_in_any_order", units_in_any_order), &
          new_unittest("units_cover_points", units_cover_points), &
          new_unittest("failing_point", failing_point), &
@@ -118,6 +121,90 @@ contains
       call compare_with_serial(ctx, scene, "points")
       call delete_file(points)
    end subroutine points_equal_serial
+
+   !> `&system` of a damped 2-DOF system with a sine drive and a gyroscopic term (Mettler's
+   !> column's matrices, coupled further).
+   function system_group() result(lines)
+      character(len=len(padded(""))), allocatable :: lines(:)
+      lines = [padded("&system n = 2, b = 1.0, 0.0, 0.0, 16.0, cos = -1.0, -0.6, -0.6, -4.0,"), &
+               padded("   sin = 0.0, 0.3, 0.3, 0.5, gyroscopic = 0.0, 0.2, -0.2, 0.0 /")]
+   end function system_group
+
+   !> A system chart: its task's own loop (blocks of rows) and the driver's units (a row each,
+   !> on threads as soon as there are two) write the same data lines, damped and not, with
+   !> few rows and many.
+   subroutine system_chart_equals_serial(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(scene_t) :: scene
+      call scene_from("batch_sys_few", [padded("&scene task='chart', model='system', output='"// &
+         scratch_prefix("sys_few")//"' /"), system_group(), &
+         padded("&chart alpha_min=0, alpha_max=1.2, n_alpha=3, beta_min=0, beta_max=3, n_beta=41 /")], scene)
+      call compare_with_serial(ctx, scene, "system chart, 3 rows")
+      call scene_from("batch_sys_many", [padded("&scene task='chart', model='system', epsilon=0.05, "// &
+         "method='magnus4', tolerance=1e-9, columns='alpha beta stable kind mu mu_2 status', output='"// &
+         scratch_prefix("sys_many")//"' /"), system_group(), &
+         padded("&chart alpha_min=0, alpha_max=1.2, n_alpha=19, beta_min=0, beta_max=3, n_beta=13 /")], scene)
+      call compare_with_serial(ctx, scene, "damped system chart, 19 rows")
+   end subroutine system_chart_equals_serial
+
+   !> A system points list longer than a unit: the same lines from the task's own loop
+   !> and from the driver.
+   subroutine system_points_equal_serial(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(scene_t) :: scene
+      character(len=:), allocatable :: points
+      character(len=40) :: lines(150)
+      integer :: k
+      points = scratch_prefix("batch_sys_points")//".dat"
+      do k = 1, size(lines)
+         write (lines(k), '(f8.4,1x,f8.4)') 1.2_wp*mod(3*k, 17)/17.0_wp, 3.0_wp*(k - 1)/size(lines)
+      end do
+      call write_file(points, lines)
+      call scene_from("batch_sys_pts", [padded("&scene task='points', model='system', output='"// &
+         scratch_prefix("sys_pts")//"' /"), system_group(), padded("&points file='"//points//"' /")], scene)
+      call compare_with_serial(ctx, scene, "system points")
+      call delete_file(points)
+   end subroutine system_points_equal_serial
+
+   !> A system chart's units computed last to first for three workers, then written in
+   !> order, give the file of the task's own loop.
+   subroutine system_units_in_any_order(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(scene_t) :: scene, serial
+      type(batch_t) :: batch
+      type(batch_result_t), allocatable :: results(:)
+      type(error_t), allocatable :: error
+      character(len=1024), allocatable :: a(:), b(:)
+      integer :: unit, na, nb
+      call scene_from("batch_sys_rev", [padded("&scene task='chart', model='system', output='"// &
+         scratch_prefix("sys_rev")//"' /"), system_group(), &
+         padded("&chart alpha_min=0.1, alpha_max=1.1, n_alpha=5, beta_min=0.2, beta_max=2.8, n_beta=7 /")], scene)
+      serial = scene
+      serial%output = scene%output//"_serial"
+      call serial%task%run(serial, .true., error)
+      call check(ctx, .not. allocated(error), "serial run")
+      call batch_plan(scene, 3, batch)
+      call check(ctx, batch%n_units == 5 .and. batch%unit_size == 7, "a unit per row")
+      allocate (results(batch%n_units))
+      do unit = batch%n_units, 1, -1
+         call batch_compute(batch, unit, results(unit))
+      end do
+      call batch_open(batch, .true., error)
+      call check(ctx, .not. allocated(error), "open")
+      do unit = 1, batch%n_units
+         call batch_write(batch, results(unit), error)
+         if (allocated(error)) exit
+      end do
+      call batch_commit(batch, error)
+      call check(ctx, .not. allocated(error), "write and commit")
+      call data_lines(output_path(serial), a, na)
+      call data_lines(output_path(scene), b, nb)
+      call check(ctx, na == nb, "same header length")
+      call check(ctx, size(a) == size(b) .and. size(a) == 5*7 + 4, "5 blocks of 7 lines and 4 blank lines")
+      if (size(a) == size(b)) call check(ctx, all(a == b), "identical data lines")
+      call delete_file(output_path(serial))
+      call delete_file(output_path(scene))
+   end subroutine system_units_in_any_order
 
    !> Units computed last to first, then written first to last, give the serial file.
    subroutine units_in_any_order(ctx)

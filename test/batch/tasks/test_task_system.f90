@@ -9,6 +9,9 @@ module test_task_system
    use hillstab_hill_system_floquet, only: kind_minus_one, kind_plus_one, kind_combination
    use hillstab_test_scratch, only: padded, scratch_prefix, write_file, read_lines, delete_file, contains_text
    use hillstab_test_files, only: run_text_scene, check_rerun
+   use hillstab_batch_scene_types, only: scene_t
+   use hillstab_batch_scene_read, only: read_scene
+   use hillstab_batch_run_scenes, only: run_scene_file
    use hillstab_testing
    implicit none
    private
@@ -24,8 +27,68 @@ contains
          new_unittest("points_and_verdict_columns", points_and_verdict_columns), &
          new_unittest("coefficient_closed_form", coefficient_closed_form), &
          new_unittest("matrix_from_file", matrix_from_file), &
-         new_unittest("binary_chosen_columns", binary_chosen_columns)])
+         new_unittest("binary_chosen_columns", binary_chosen_columns), &
+         new_unittest("estimates_bound_files", estimates_bound_files)])
    end function collect_task_system
+
+   !> The free-space check refuses a run whose task's estimate of its file exceeds the room
+   !> left: the estimates of a system's chart and points files, text and binary, all columns
+   !> and a few, bound the files written (and by no more than the header's allowance and a
+   !> line's width a point).
+   subroutine estimates_bound_files(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: group = "&system n = 3, b = 1.0, 0.0, 0.0, 0.0, 2.0, 0.0, 0.0, 0.0, 3.0, "// &
+                                             "cos = -1.0, -0.3, 0.0, -0.3, -1.0, -0.3, 0.0, -0.3, -1.0 /"
+      character(len=:), allocatable :: out, path, points, formats(:), columns(:)
+      character(len=40) :: lines(70)
+      type(scene_t) :: scene
+      type(error_t), allocatable :: error
+      integer(int64) :: estimate, bytes
+      integer :: f, c, t, k, n_points
+      points = scratch_prefix("sys_est_input")//".dat"
+      do k = 1, size(lines)
+         write (lines(k), '(f8.4,1x,f8.4)') 0.01_wp*k, 0.5_wp + 0.02_wp*k
+      end do
+      call write_file(points, lines)
+      formats = [character(len=6) :: "text", "binary"]
+      columns = [character(len=40) :: "", "alpha beta stable mu_3 status"]
+      do t = 1, 2
+         do f = 1, 2
+            do c = 1, 2
+               out = scratch_prefix("sys_est")
+               path = out//".nml"
+               if (t == 1) then
+                  call write_file(path, [padded("&scene model = 'system', format = '"//trim(formats(f))// &
+                     "', columns = '"//trim(columns(c))//"', output = '"//out//"' /"), padded(group), &
+                     padded("&chart alpha_min = 0, alpha_max = 1, n_alpha = 9, beta_min = 0.5, beta_max = 2, "// &
+                            "n_beta = 31 /")])
+                  n_points = 9*31
+               else
+                  call write_file(path, [padded("&scene task = 'points', model = 'system', format = '"// &
+                     trim(formats(f))//"', columns = '"//trim(columns(c))//"', output = '"//out//"' /"), &
+                     padded(group), padded("&points file = '"//points//"' /")])
+                  n_points = size(lines)
+               end if
+               call read_scene(path, scene, error)
+               if (allocated(error)) then
+                  call check(ctx, .false., "the scene reads: "//error%message)
+                  return
+               end if
+               estimate = scene%task%estimated_bytes(scene)
+               call run_scene_file(path, .true., error)
+               call check(ctx, .not. allocated(error), "the scene runs")
+               inquire (file=out//"_"//scene%task%name//merge(".dat", ".bin", f == 1), size=bytes)
+               call check(ctx, bytes > 0 .and. bytes <= estimate, trim(formats(f))//" "//scene%task%name// &
+                          " '"//trim(columns(c))//"': the estimate bounds the file")
+               call check(ctx, estimate <= 1000000_int64 + bytes + int(n_points, int64)*30*20, &
+                          "and is not far above it")
+               call delete_file(out//"_"//scene%task%name//merge(".dat", ".bin", f == 1))
+               call delete_file(path)
+            end do
+         end do
+      end do
+      call delete_file(points)
+   end subroutine estimates_bound_files
 
    !> The numbers of the data lines (blank lines skipped).
    subroutine numbers(lines, n_columns, rows)

@@ -108,7 +108,7 @@ contains
          if (allocated(error)) return
       end if
       if (resume) call checkpoint_note(options, scene%source//": this run keeps no checkpoint (only charts over "// &
-         "&chart, points and lyapunov runs of a scalar model written as text do): running it afresh")
+         "&chart, points and lyapunov runs written as text do): running it afresh")
       call scene%task%run(scene, quiet, error)
       call name_scene_file(scene, error)
    end subroutine run_scene

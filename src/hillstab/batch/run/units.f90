@@ -642,7 +642,8 @@ contains
       end if
       if (allocated(error)) return
       threads = max_threads()
-      in_parallel = batch%n_units >= 4*threads
+      in_parallel = batch%n_units >= 4*threads .or. &
+                    (batch%scene%task%units_in_parallel .and. threads > 1 .and. batch%n_units > 1)
       slots = merge(16*threads, 1, in_parallel)
       allocate (window(0:slots - 1), stat=status)
       if (status /= 0) then

@@ -47,6 +47,10 @@ module hillstab_batch_scene_types
       !> with amplitudes: exactly one (a template shows one)
       logical :: single_amplitude = .false.
       logical :: takes_physical = .true.          !! `&physical` may replace the dimensionless values
+      !> its units are computed on OpenMP threads as soon as there are two (each unit is
+      !> computed on one thread: a system's row shares its nodes); otherwise only with at
+      !> least 4 units a thread, fewer going one by one, each in parallel within
+      logical :: units_in_parallel = .false.
       !> what `&physical a` with r0 replace, for the template ("&points file")
       character(len=:), allocatable :: amplitudes_replace
       !> the effective values of the task's groups, in the order the header writes them

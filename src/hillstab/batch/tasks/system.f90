@@ -11,8 +11,10 @@
 !> A point that cannot be computed carries status 2 and placeholders, and the run ends with
 !> err_points_failed after the file is written; the file is written atomically.
 !>
-!> Rows of a chart run in parallel (OpenMP, blocks of rows, each row with its own nodes),
-!> the blocks written in order.
+!> Written as text, chart and points run in units (hillstab_batch_run_units: a chart's row,
+!> 64 points of a points list), on OpenMP threads, with checkpoints and `--resume`, and
+!> spread over processes by the MPI program; the points of a unit share their nodes. In
+!> binary the task's own loop computes the same units (blocks of rows in parallel).
 module hillstab_batch_tasks_system
    use hillstab_core_kinds, only: wp, int64, version_string
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
@@ -30,13 +32,14 @@ module hillstab_batch_tasks_system
       var_real_list, begin_group, next_item, end_group, list_value
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_checks, only: check_range, require_finite, max_grid_count
-   use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_size_text
+   use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point, grid_size_text
    use hillstab_batch_scene_group_points, only: points_group, read_points_group
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text, join_lines, &
       write_records
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_step, progress_end
    use hillstab_batch_run_units, only: max_threads
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
    public :: system_chart_task_t, system_points_task_t, system_coefficient_task_t, system_chart_task, &
@@ -60,11 +63,21 @@ module hillstab_batch_tasks_system
                                                            "overflow", "stable", "kind", "lambda_max", "mu", &
                                                            "argument", "defect", "error_estimate", "status", "steps"]
 
-   !> Chart and points: what they share (the columns chosen).
+   !> Points of a unit of a points run: a fixed cut, so that the file does not depend on the
+   !> number of processes (the points of a unit share their nodes, `system_nodes_t`).
+   integer, parameter :: points_unit = 64
+
+   !> Chart and points: what they share (the columns chosen; for runs in units, the
+   !> prepared system).
    type, abstract, extends(task_t) :: system_floquet_task_t
       integer, allocatable :: chosen(:)  !! indices into `system_column_names`
+      type(system_form_t) :: form        !! the prepared system (`prepare_units`)
+      !> why the system cannot be prepared ("" when it is), reported by `open_units`
+      character(len=:), allocatable :: form_error
    contains
       procedure :: choose_columns => system_choose_columns
+      procedure :: prepare_units => system_prepare_units
+      procedure :: finish_units => system_finish_units
    end type system_floquet_task_t
 
    !> `chart` on a system.
@@ -77,6 +90,11 @@ module hillstab_batch_tasks_system
       procedure :: size_variables => chart_size_variables
       procedure :: memory_bytes => chart_memory_bytes
       procedure :: estimated_bytes => chart_estimated_bytes
+      procedure :: point_count => chart_point_count
+      procedure :: unit_size => chart_unit_size
+      procedure :: unit_text => chart_unit_text
+      procedure :: open_units => chart_open_units
+      procedure :: point_of => chart_point_of
    end type system_chart_task_t
 
    !> `points` on a system.
@@ -88,6 +106,12 @@ module hillstab_batch_tasks_system
       procedure :: run => points_run
       procedure :: declarations => points_declarations
       procedure :: memory_bytes => points_memory_bytes
+      procedure :: estimated_bytes => points_estimated_bytes
+      procedure :: point_count => points_point_count
+      procedure :: unit_size => points_unit_size
+      procedure :: unit_text => points_unit_text
+      procedure :: open_units => points_open_units
+      procedure :: point_of => points_point_of
    end type system_points_task_t
 
    !> `coefficient` on a system: the entries of K(τ).
@@ -111,6 +135,7 @@ contains
       task%name = "chart"
       task%takes_columns = .true.
       task%takes_physical = .false.
+      task%units_in_parallel = .true.
    end function system_chart_task
 
    !> A points task of a system scene.
@@ -119,6 +144,7 @@ contains
       task%name = "points"
       task%takes_columns = .true.
       task%takes_physical = .false.
+      task%units_in_parallel = .true.
    end function system_points_task
 
    !> A coefficient task of a system scene.
@@ -517,17 +543,25 @@ contains
       text = grid_size_text(self%grid, .false.)
    end function chart_size_variables
 
-   !> The buffers of a chart run: the values and (text files) the text of a block of rows
-   !> (`chart_block_rows`, or fewer when the grid has fewer), each n_beta points; besides them
-   !> a run holds a few MB whatever the grid (its nodes, one line per thread).
+   !> The buffers of a chart run, each row n_beta points. Binary (`chart_run`): the values of
+   !> a block of rows (`chart_block_rows`, or fewer when the grid has fewer). Text (in units,
+   !> hillstab_batch_run_units): the text of up to 16 rows a thread waiting to be written, and
+   !> each thread's row of values and text. Besides them a run holds a few MB whatever the
+   !> grid (its nodes, one line per thread).
    function chart_memory_bytes(self, scene) result(bytes)
       class(system_chart_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
-      integer(int64) :: bytes
+      integer(int64) :: bytes, row_values, row_text
       integer :: n
       n = scene%system%dof()
-      bytes = int(min(chart_block_rows, self%grid%n_alpha), int64)*int(self%grid%n_beta, int64)* &
-              (8*(n_fixed + n) + merge(0, row_text_width(size(self%chosen)), scene%binary))
+      row_values = 8*int(n_fixed + n, int64)*self%grid%n_beta
+      row_text = int(row_text_width(size(self%chosen)), int64)*self%grid%n_beta
+      if (scene%binary) then
+         bytes = int(min(chart_block_rows, self%grid%n_alpha), int64)*row_values
+      else
+         bytes = int(min(16*max_threads(), self%grid%n_alpha), int64)*row_text + &
+                 int(max_threads(), int64)*(row_values + 2*row_text)
+      end if
    end function chart_memory_bytes
 
    !> Header plus n_alpha n_beta lines of the chosen columns (or their float64 records) and
@@ -560,8 +594,9 @@ contains
       type(error_t), allocatable :: cause
       character(len=:), allocatable :: texts(:), first_failure
       real(wp), allocatable :: values(:, :, :)
-      integer :: n, n_columns, first, last, i, n_failed(chart_block_rows), failed_total, rows, alloc_status
-      integer(int64) :: text_lengths(chart_block_rows), text_length
+      integer :: n, n_columns, first, last, i, k, n_failed(chart_block_rows), failed_total, rows, alloc_status
+      integer(int64) :: text_lengths(chart_block_rows), text_length, n_roundoff
+      real(wp) :: first_roundoff(2)
       type(progress_t) :: progress
       character(len=400) :: failures(chart_block_rows)
       call prepare_system(scene%system, scene%epsilon, form, cause)
@@ -588,6 +623,8 @@ contains
       call write_header(file, system_lines(scene, "stability chart", self%chosen), chosen_names(n, self%chosen), &
                         error, names_line=scene%names_line, records=[self%grid%n_beta, self%grid%n_alpha])
       failed_total = 0
+      n_roundoff = 0
+      first_roundoff = 0.0_wp
       first_failure = ""
       call progress_begin(progress, int(self%grid%n_alpha, int64), quiet, "rows")
       first = 1
@@ -604,6 +641,11 @@ contains
          do i = first, last
             if (n_failed(i - first + 1) > 0 .and. len(first_failure) == 0) first_failure = trim(failures(i - first + 1))
             failed_total = failed_total + n_failed(i - first + 1)
+            k = findloc(nint(values(13 + n, :, i - first + 1)), status_roundoff, dim=1)
+            if (k > 0) then
+               if (n_roundoff == 0) first_roundoff = values(1:2, k, i - first + 1)
+               n_roundoff = n_roundoff + count(nint(values(13 + n, :, i - first + 1)) == status_roundoff)
+            end if
             if (scene%binary) then
                call write_records(file, values(self%chosen, :, i - first + 1), error)
             else
@@ -621,6 +663,7 @@ contains
       call progress_end(progress)
       call finish_output(file, error)
       if (allocated(error)) return
+      call warn_roundoff(scene, n_roundoff, first_roundoff)
       if (failed_total > 0) call set_error(error, err_points_failed, scene%source//": "// &
          integer_text(failed_total)//" of "//integer_text(int(self%grid%n_alpha, int64)*self%grid%n_beta)// &
          " points failed (status 2); the first: "//first_failure)
@@ -652,10 +695,7 @@ contains
       do j = 1, self%grid%n_beta
          beta = grid_value(self%grid%beta_min, self%grid%beta_max, self%grid%n_beta, j)
          call evaluate(scene%system, form, method, alpha, beta, nodes, values(:, j), failed, message)
-         if (failed .and. n_failed == 0) then
-            write (failure, '(a, es24.16, a, es24.16, a)') "alpha = ", alpha, ", beta = ", beta, ": "
-            failure = trim(failure)//" "//message
-         end if
+         if (failed .and. n_failed == 0) call failure_text(alpha, beta, message, failure)
          if (failed) n_failed = n_failed + 1
          if (scene%binary) cycle
          call point_line(form%n, self%chosen, values(:, j), line, length)
@@ -667,6 +707,67 @@ contains
          text_length = text_length + length
       end do
    end subroutine chart_row
+
+   !> Points of the chart.
+   pure function chart_point_count(self) result(n)
+      class(system_chart_task_t), intent(in) :: self  !! the task
+      integer(int64) :: n
+      n = int(self%grid%n_alpha, int64)*self%grid%n_beta
+   end function chart_point_count
+
+   !> One row a unit (its points share their nodes).
+   pure integer function chart_unit_size(self, n_workers) result(size)
+      class(system_chart_task_t), intent(in) :: self  !! the task
+      integer, intent(in) :: n_workers   !! processes computing units
+      size = self%grid%n_beta
+   end function chart_unit_size
+
+   !> Row `unit` as the file holds it (a blank line before every row but the first),
+   !> computed as `chart_run` computes it.
+   subroutine chart_unit_text(self, scene, unit, first, last, text, statuses)
+      class(system_chart_task_t), intent(in) :: self  !! the task, its units prepared
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer, intent(in) :: unit  !! the row
+      integer(int64), intent(in) :: first, last  !! its points
+      character(len=:), allocatable, intent(out) :: text  !! the lines, no final new line
+      integer, intent(out) :: statuses(first:last)  !! per point
+      real(wp), allocatable :: values(:, :)
+      character(len=:), allocatable :: buffer
+      character(len=400) :: failure
+      integer(int64) :: length
+      integer :: n, n_failed, offset
+      n = self%form%n
+      allocate (values(n_fixed + n, self%grid%n_beta))
+      allocate (character(len=int(row_text_width(size(self%chosen)), int64)*self%grid%n_beta + 1) :: buffer)
+      offset = merge(1, 0, unit > 1)
+      if (offset == 1) buffer(1:1) = new_line("a")
+      call chart_row(self, scene, self%form, system_method_t(scene%method%kind, scene%method%tolerance), unit, &
+                     values, buffer(offset + 1:), length, n_failed, failure)
+      text = buffer(1:offset + length)
+      statuses = nint(values(13 + n, :))
+   end subroutine chart_unit_text
+
+   !> The checks and the header of `chart_run`.
+   subroutine chart_open_units(self, scene, file, error)
+      class(system_chart_task_t), intent(in) :: self  !! the task, its units prepared
+      type(scene_t), intent(in) :: scene  !! its scene
+      type(output_file_t), intent(inout) :: file  !! the open output file
+      type(error_t), allocatable, intent(out) :: error  !! why the file cannot be written
+      if (len(self%form_error) > 0) then
+         call fail(error, scene%source, "system", "mass", self%form_error)
+         return
+      end if
+      call write_header(file, system_lines(scene, "stability chart", self%chosen), &
+                        chosen_names(self%form%n, self%chosen), error, names_line=scene%names_line)
+   end subroutine chart_open_units
+
+   !> (α, β) of point k, numbered row by row.
+   pure function chart_point_of(self, k) result(point)
+      class(system_chart_task_t), intent(in) :: self  !! the task
+      integer(int64), intent(in) :: k  !! the point
+      real(wp) :: point(2)
+      point = grid_point(self%grid, k)
+   end function chart_point_of
 
    !> `&points`, and the columns.
    subroutine points_read(self, file, scene, error)
@@ -733,6 +834,8 @@ contains
       first_failure = ""
       call progress_begin(progress, int(size(self%points, 2), int64), quiet)
       do k = 1, size(self%points, 2)
+         ! the points of a unit share their nodes, as a run in units computes them
+         if (mod(k - 1, points_unit) == 0) nodes = system_nodes_t()
          call evaluate(scene%system, form, system_method_t(scene%method%kind, scene%method%tolerance), &
                        self%points(1, k), self%points(2, k), nodes, v(:, k), failed, message)
          if (failed) then
@@ -758,9 +861,148 @@ contains
       end if
       call finish_output(file, error)
       if (allocated(error)) return
+      k = findloc(nint(v(13 + form%n, :)), status_roundoff, dim=1)
+      if (k > 0) call warn_roundoff(scene, int(count(nint(v(13 + form%n, :)) == status_roundoff), int64), v(1:2, k))
       if (n_failed > 0) call set_error(error, err_points_failed, scene%source//": "//integer_text(n_failed)// &
          " of "//integer_text(size(self%points, 2))//" points failed (status 2); the first: "//first_failure)
    end subroutine points_run
+
+   !> Header plus a line (or a record) of the chosen columns per point.
+   pure function points_estimated_bytes(self, scene) result(bytes)
+      class(system_points_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64) :: bytes
+      bytes = header_bytes + int(size(self%points, 2), int64)* &
+              merge(8*size(self%chosen), row_text_width(size(self%chosen)), scene%binary)
+   end function points_estimated_bytes
+
+   !> The points.
+   pure function points_point_count(self) result(n)
+      class(system_points_task_t), intent(in) :: self  !! the task
+      integer(int64) :: n
+      n = size(self%points, 2)
+   end function points_point_count
+
+   !> `points_unit` points a unit, whatever the number of processes.
+   pure integer function points_unit_size(self, n_workers) result(size)
+      class(system_points_task_t), intent(in) :: self  !! the task
+      integer, intent(in) :: n_workers   !! processes computing units
+      size = points_unit
+   end function points_unit_size
+
+   !> The lines of the points `first` … `last`, their nodes shared, as `points_run` computes them.
+   subroutine points_unit_text(self, scene, unit, first, last, text, statuses)
+      class(system_points_task_t), intent(in) :: self  !! the task, its units prepared
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer, intent(in) :: unit  !! the unit
+      integer(int64), intent(in) :: first, last  !! its points
+      character(len=:), allocatable, intent(out) :: text  !! the lines, no final new line
+      integer, intent(out) :: statuses(first:last)  !! per point
+      type(system_nodes_t) :: nodes
+      character(len=(n_fixed + max_dof_columns)*26) :: line
+      character(len=(n_fixed + max_dof_columns)*26), allocatable :: lines(:)
+      character(len=:), allocatable :: message
+      real(wp) :: v(n_fixed + self%form%n)
+      integer :: lengths(first:last)
+      integer(int64) :: k
+      logical :: failed
+      allocate (lines(first:last))
+      do k = first, last
+         call evaluate(scene%system, self%form, system_method_t(scene%method%kind, scene%method%tolerance), &
+                       self%points(1, k), self%points(2, k), nodes, v, failed, message)
+         statuses(k) = nint(v(13 + self%form%n))
+         call point_line(self%form%n, self%chosen, v, line, lengths(k))
+         lines(k) = line(:lengths(k))
+      end do
+      call join_lines(lines, .false., text, lengths=lengths)
+   end subroutine points_unit_text
+
+   !> The checks and the header of `points_run`.
+   subroutine points_open_units(self, scene, file, error)
+      class(system_points_task_t), intent(in) :: self  !! the task, its units prepared
+      type(scene_t), intent(in) :: scene  !! its scene
+      type(output_file_t), intent(inout) :: file  !! the open output file
+      type(error_t), allocatable, intent(out) :: error  !! why the file cannot be written
+      if (len(self%form_error) > 0) then
+         call fail(error, scene%source, "system", "mass", self%form_error)
+         return
+      end if
+      call write_header(file, system_lines(scene, "Floquet analysis at points", self%chosen), &
+                        chosen_names(self%form%n, self%chosen), error, names_line=scene%names_line)
+   end subroutine points_open_units
+
+   !> (α, β) of point k.
+   pure function points_point_of(self, k) result(point)
+      class(system_points_task_t), intent(in) :: self  !! the task
+      integer(int64), intent(in) :: k  !! the point
+      real(wp) :: point(2)
+      point = self%points(:, k)
+   end function points_point_of
+
+   !> What every unit shares: the prepared system (or why it cannot be prepared).
+   subroutine system_prepare_units(self, scene)
+      class(system_floquet_task_t), intent(inout) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      type(error_t), allocatable :: cause
+      call prepare_system(scene%system, scene%epsilon, self%form, cause)
+      self%form_error = ""
+      if (allocated(cause)) self%form_error = cause%message
+   end subroutine system_prepare_units
+
+   !> After a run in units, as after `chart_run` and `points_run`: round-off limited points
+   !> warned about, failed ones an error naming the first (computed again for its message).
+   subroutine system_finish_units(self, scene, n_points, n_failed, first_failed, n_inaccurate, first_inaccurate, &
+                                  error)
+      class(system_floquet_task_t), intent(in) :: self  !! the task, its units prepared
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer(int64), intent(in) :: n_points  !! all points
+      integer(int64), intent(in) :: n_failed  !! failed points written
+      real(wp), intent(in) :: first_failed(2)  !! (α, β) of the first of them
+      integer(int64), intent(in) :: n_inaccurate  !! round-off limited points written
+      real(wp), intent(in) :: first_inaccurate(2)  !! (α, β) of the first of them
+      type(error_t), allocatable, intent(out) :: error  !! err_points_failed when points failed
+      type(system_nodes_t) :: nodes
+      character(len=:), allocatable :: message
+      character(len=400) :: place
+      real(wp) :: v(n_fixed + self%form%n)
+      logical :: failed
+      integer :: k
+      call warn_roundoff(scene, n_inaccurate, first_inaccurate)
+      if (n_failed == 0) return
+      call evaluate(scene%system, self%form, system_method_t(scene%method%kind, scene%method%tolerance), &
+                    first_failed(1), first_failed(2), nodes, v, failed, message)
+      select type (self)
+      type is (system_points_task_t)
+         k = findloc(self%points(1, :) == first_failed(1) .and. self%points(2, :) == first_failed(2), .true., dim=1)
+         place = "point "//integer_text(k)//" of "//self%path//": "//message
+      class default
+         call failure_text(first_failed(1), first_failed(2), message, place)
+      end select
+      call set_error(error, err_points_failed, scene%source//": "//integer_text(n_failed)//" of "// &
+         integer_text(n_points)//" points failed (status 2); the first: "//trim(place))
+   end subroutine system_finish_units
+
+   !> "alpha = …, beta = …:  <message>" of a failed point, as the chart's error gives it.
+   subroutine failure_text(alpha, beta, message, text)
+      real(wp), intent(in) :: alpha, beta
+      character(len=*), intent(in) :: message
+      character(len=*), intent(out) :: text
+      write (text, '(a, es24.16, a, es24.16, a)') "alpha = ", alpha, ", beta = ", beta, ": "
+      text = trim(text)//" "//message
+   end subroutine failure_text
+
+   !> Say on stderr (even when quiet: it qualifies the results) how many points reached only
+   !> the round-off level of double precision (status 1), not the tolerance.
+   subroutine warn_roundoff(scene, n, first)
+      type(scene_t), intent(in) :: scene  !! the scene
+      integer(int64), intent(in) :: n  !! points of status 1
+      real(wp), intent(in) :: first(2)  !! (α, β) of the first of them
+      if (n == 0) return
+      write (error_unit, '(a)') "hillstab: warning: "//scene%source//": "//integer_text(n)// &
+         " point(s) reached only the round-off level of double precision, not the tolerance "// &
+         real_text(scene%method%tolerance)//" (first at alpha = "//real_text(first(1))//", beta = "// &
+         real_text(first(2))//"); their status is 1"
+   end subroutine warn_roundoff
 
    !> The declaration of `&coefficient` for a system.
    function coefficient_group() result(group)
