@@ -370,10 +370,13 @@ contains
    !> and β terms (`alpha_variable`, `beta_variable` of `group`). Sizes are computed with
    !> the floating-point traps off: a product that overflows is reported as such.
    subroutine check_system_cost(scene, alpha_abs, beta_abs, group, alpha_variable, beta_variable, error)
-      type(scene_t), intent(in) :: scene
-      real(wp), intent(in) :: alpha_abs, beta_abs
-      character(len=*), intent(in) :: group, alpha_variable, beta_variable
-      type(error_t), allocatable, intent(out) :: error
+      type(scene_t), intent(in) :: scene  !! the scene, its system read
+      real(wp), intent(in) :: alpha_abs  !! the largest |α| of the task's points
+      real(wp), intent(in) :: beta_abs   !! the largest |β| of the task's points
+      character(len=*), intent(in) :: group  !! the task's group that sets them ("chart", "points")
+      character(len=*), intent(in) :: alpha_variable  !! its variable of that largest |α|
+      character(len=*), intent(in) :: beta_variable   !! its variable of that largest |β|
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
       type(system_form_t) :: form
       type(error_t), allocatable :: cause
       type(fpe_state_t) :: fpe
@@ -463,8 +466,9 @@ contains
 
    !> The bound of a range with the larger magnitude: `<axis>_min` or `<axis>_max`.
    pure function extreme_name(axis, low, high) result(name)
-      character(len=*), intent(in) :: axis
-      real(wp), intent(in) :: low, high
+      character(len=*), intent(in) :: axis  !! "alpha" or "beta"
+      real(wp), intent(in) :: low   !! the range's `<axis>_min`
+      real(wp), intent(in) :: high  !! the range's `<axis>_max`
       character(len=:), allocatable :: name
       name = axis//"_max"
       if (abs(low) > abs(high)) name = axis//"_min"
