@@ -148,13 +148,17 @@ contains
    end subroutine system_chart_equals_serial
 
    !> A system points list longer than a unit: the same lines from the task's own loop
-   !> and from the driver.
+   !> and from the driver. Each point is computed alone: the list at one α in reverse order
+   !> gives every line of the list in order (a point's line does not depend on its
+   !> neighbours, which share an α and would share nodes along a chart row).
    subroutine system_points_equal_serial(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(scene_t) :: scene
+      type(error_t), allocatable :: error
       character(len=:), allocatable :: points
       character(len=40) :: lines(150)
-      integer :: k
+      character(len=1024), allocatable :: forward(:), backward(:)
+      integer :: k, n_header
       points = scratch_prefix("batch_sys_points")//".dat"
       do k = 1, size(lines)
          write (lines(k), '(f8.4,1x,f8.4)') 1.2_wp*mod(3*k, 17)/17.0_wp, 3.0_wp*(k - 1)/size(lines)
@@ -163,6 +167,26 @@ contains
       call scene_from("batch_sys_pts", [padded("&scene task='points', model='system', output='"// &
          scratch_prefix("sys_pts")//"' /"), system_group(), padded("&points file='"//points//"' /")], scene)
       call compare_with_serial(ctx, scene, "system points")
+      do k = 1, size(lines)
+         write (lines(k), '(f8.4,1x,f8.4)') 0.7_wp, 3.0_wp*(k - 1)/size(lines)
+      end do
+      call write_file(points, lines)
+      call scene_from("batch_sys_pts", [padded("&scene task='points', model='system', output='"// &
+         scratch_prefix("sys_fwd")//"' /"), system_group(), padded("&points file='"//points//"' /")], scene)
+      call run_batch(scene, .true., error)
+      call check(ctx, .not. allocated(error), "the list in order")
+      call data_lines(output_path(scene), forward, n_header)
+      call delete_file(output_path(scene))
+      call write_file(points, lines(size(lines):1:-1))
+      call scene_from("batch_sys_pts", [padded("&scene task='points', model='system', output='"// &
+         scratch_prefix("sys_bwd")//"' /"), system_group(), padded("&points file='"//points//"' /")], scene)
+      call run_batch(scene, .true., error)
+      call check(ctx, .not. allocated(error), "the list reversed")
+      call data_lines(output_path(scene), backward, n_header)
+      call delete_file(output_path(scene))
+      call check(ctx, size(forward) == size(lines) .and. size(backward) == size(lines), "a line a point")
+      if (size(forward) == size(backward)) call check(ctx, all(forward == backward(size(backward):1:-1)), &
+                                                      "each point's line whatever its neighbours")
       call delete_file(points)
    end subroutine system_points_equal_serial
 

@@ -12,9 +12,10 @@
 !> err_points_failed after the file is written; the file is written atomically.
 !>
 !> Written as text, chart and points run in units (hillstab_batch_run_units: a chart's row,
-!> 64 points of a points list), on OpenMP threads, with checkpoints and `--resume`, and
-!> spread over processes by the MPI program; the points of a unit share their nodes. In
-!> binary the task's own loop computes the same units (blocks of rows in parallel).
+!> up to 64 consecutive points of a points list), on OpenMP threads, with checkpoints and
+!> `--resume`, and spread over processes by the MPI program. The points of a chart's row
+!> share their nodes (`system_row_values`); each point of a points list is computed alone
+!> (`system_values`). In binary the task's own loop computes the same values.
 module hillstab_batch_tasks_system
    use hillstab_core_kinds, only: wp, int64, version_string
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
@@ -44,7 +45,7 @@ module hillstab_batch_tasks_system
    private
    public :: system_chart_task_t, system_points_task_t, system_coefficient_task_t, system_chart_task, &
       system_points_task, system_coefficient_task, system_task_names, system_column_names, system_point_values
-   public :: check_system_cost, extreme_name
+   public :: check_system_cost, extreme_name, system_values, system_row_values, n_fixed
 
    !> Most exponent columns (mu_1 … mu_n, n ≤ max_dof).
    integer, parameter :: max_dof_columns = 20
@@ -62,10 +63,6 @@ module hillstab_batch_tasks_system
    character(len=14), parameter :: fixed_names(n_fixed) = [character(len=14) :: "alpha", "beta", "trace", "a2", &
                                                            "overflow", "stable", "kind", "lambda_max", "mu", &
                                                            "argument", "defect", "error_estimate", "status", "steps"]
-
-   !> Points of a unit of a points run: a fixed cut, so that the file does not depend on the
-   !> number of processes (the points of a unit share their nodes, `system_nodes_t`).
-   integer, parameter :: points_unit = 64
 
    !> Chart and points: what they share (the columns chosen; for runs in units, the
    !> prepared system).
@@ -359,6 +356,46 @@ contains
       if (allocated(error)) message = error%message
       v = system_point_values(form%n, alpha, beta, f, r, failed)
    end subroutine evaluate
+
+   !> The values of the columns `system_column_names` at one point, computed alone (its own
+   !> nodes): what task `points` writes, `hillstab_system_points` returns and one call of
+   !> `hillstab_system_floquet` gives. `failed` (status 2 and placeholders) with the reason.
+   subroutine system_values(system, form, method, alpha, beta, v, failed, message)
+      class(hill_system_t), intent(in) :: system  !! the system
+      type(system_form_t), intent(in) :: form  !! prepared at the point's damping
+      type(system_method_t), intent(in) :: method  !! method and tolerance
+      real(wp), intent(in) :: alpha, beta  !! the point
+      real(wp), intent(out) :: v(:)  !! n_fixed + n values, in the columns' order
+      logical, intent(out) :: failed  !! the point could not be computed
+      character(len=:), allocatable, intent(out) :: message  !! why ("" when it could)
+      type(system_nodes_t) :: nodes
+      call evaluate(system, form, method, alpha, beta, nodes, v, failed, message)
+   end subroutine system_values
+
+   !> The values of a chart row (one α, the β in order), the points sharing their nodes:
+   !> what task `chart` writes and `hillstab_system_chart` returns. `n_failed` points failed;
+   !> `failure` names the first and why.
+   subroutine system_row_values(system, form, method, alpha, betas, values, n_failed, failure)
+      class(hill_system_t), intent(in) :: system  !! the system
+      type(system_form_t), intent(in) :: form  !! prepared at the chart's damping
+      type(system_method_t), intent(in) :: method  !! method and tolerance
+      real(wp), intent(in) :: alpha  !! the row's α
+      real(wp), intent(in) :: betas(:)  !! its β
+      real(wp), intent(out) :: values(:, :)  !! (n_fixed + n, size(betas))
+      integer, intent(out) :: n_failed  !! points of status 2
+      character(len=*), intent(out) :: failure  !! "alpha = …, beta = …: why" of the first ("" when none)
+      type(system_nodes_t) :: nodes
+      character(len=:), allocatable :: message
+      logical :: failed
+      integer :: j
+      n_failed = 0
+      failure = ""
+      do j = 1, size(betas)
+         call evaluate(system, form, method, alpha, betas(j), nodes, values(:, j), failed, message)
+         if (failed .and. n_failed == 0) call failure_text(alpha, betas(j), message, failure)
+         if (failed) n_failed = n_failed + 1
+      end do
+   end subroutine system_row_values
 
    !> Refuse a scene whose system or whose largest |α| and |β| make the system's frequencies
    !> so high that a period takes more steps than the methods' ladder holds: √‖M⁻¹K‖ over
@@ -686,22 +723,15 @@ contains
       integer(int64), intent(out) :: text_length
       integer, intent(out) :: n_failed
       character(len=*), intent(out) :: failure
-      type(system_nodes_t) :: nodes
-      character(len=:), allocatable :: message
       character(len=(n_fixed + max_dof_columns)*26) :: line
-      logical :: failed
-      real(wp) :: alpha, beta
+      real(wp) :: alpha, betas(self%grid%n_beta)
       integer :: j, length
       alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, self%grid%n_alpha, i)
-      n_failed = 0
-      failure = ""
+      betas = [(grid_value(self%grid%beta_min, self%grid%beta_max, self%grid%n_beta, j), j=1, self%grid%n_beta)]
+      call system_row_values(scene%system, form, method, alpha, betas, values, n_failed, failure)
       text_length = 0
+      if (scene%binary) return
       do j = 1, self%grid%n_beta
-         beta = grid_value(self%grid%beta_min, self%grid%beta_max, self%grid%n_beta, j)
-         call evaluate(scene%system, form, method, alpha, beta, nodes, values(:, j), failed, message)
-         if (failed .and. n_failed == 0) call failure_text(alpha, beta, message, failure)
-         if (failed) n_failed = n_failed + 1
-         if (scene%binary) cycle
          call point_line(form%n, self%chosen, values(:, j), line, length)
          if (j > 1) then
             text_length = text_length + 1
@@ -815,7 +845,6 @@ contains
       type(error_t), allocatable, intent(out) :: error  !! err_points_failed naming the first failed point
       type(output_file_t) :: file
       type(system_form_t) :: form
-      type(system_nodes_t) :: nodes
       type(error_t), allocatable :: cause
       real(wp), allocatable :: v(:, :)
       character(len=:), allocatable :: message, first_failure
@@ -838,10 +867,8 @@ contains
       first_failure = ""
       call progress_begin(progress, int(size(self%points, 2), int64), quiet)
       do k = 1, size(self%points, 2)
-         ! the points of a unit share their nodes, as a run in units computes them
-         if (mod(k - 1, points_unit) == 0) nodes = system_nodes_t()
-         call evaluate(scene%system, form, system_method_t(scene%method%kind, scene%method%tolerance), &
-                       self%points(1, k), self%points(2, k), nodes, v(:, k), failed, message)
+         call system_values(scene%system, form, system_method_t(scene%method%kind, scene%method%tolerance), &
+                            self%points(1, k), self%points(2, k), v(:, k), failed, message)
          if (failed) then
             n_failed = n_failed + 1
             if (n_failed == 1) first_failure = "point "//integer_text(k)//" of "//self%path//": "//message
@@ -887,14 +914,15 @@ contains
       n = size(self%points, 2)
    end function points_point_count
 
-   !> `points_unit` points a unit, whatever the number of processes.
+   !> Runs of consecutive points, small enough (about 16 units a worker, at most 64 points)
+   !> to balance points of very different cost.
    pure integer function points_unit_size(self, n_workers) result(size)
       class(system_points_task_t), intent(in) :: self  !! the task
       integer, intent(in) :: n_workers   !! processes computing units
-      size = points_unit
+      size = max(1, min(64, int(self%point_count())/(16*max(1, n_workers))))
    end function points_unit_size
 
-   !> The lines of the points `first` … `last`, their nodes shared, as `points_run` computes them.
+   !> The lines of the points `first` … `last`, each computed alone, as `points_run` computes them.
    subroutine points_unit_text(self, scene, unit, first, last, text, statuses)
       class(system_points_task_t), intent(in) :: self  !! the task, its units prepared
       type(scene_t), intent(in) :: scene  !! its scene
@@ -902,7 +930,6 @@ contains
       integer(int64), intent(in) :: first, last  !! its points
       character(len=:), allocatable, intent(out) :: text  !! the lines, no final new line
       integer, intent(out) :: statuses(first:last)  !! per point
-      type(system_nodes_t) :: nodes
       character(len=(n_fixed + max_dof_columns)*26) :: line
       character(len=(n_fixed + max_dof_columns)*26), allocatable :: lines(:)
       character(len=:), allocatable :: message
@@ -912,8 +939,8 @@ contains
       logical :: failed
       allocate (lines(first:last))
       do k = first, last
-         call evaluate(scene%system, self%form, system_method_t(scene%method%kind, scene%method%tolerance), &
-                       self%points(1, k), self%points(2, k), nodes, v, failed, message)
+         call system_values(scene%system, self%form, system_method_t(scene%method%kind, scene%method%tolerance), &
+                            self%points(1, k), self%points(2, k), v, failed, message)
          statuses(k) = nint(v(13 + self%form%n))
          call point_line(self%form%n, self%chosen, v, line, lengths(k))
          lines(k) = line(:lengths(k))
@@ -965,7 +992,6 @@ contains
       integer(int64), intent(in) :: n_inaccurate  !! round-off limited points written
       real(wp), intent(in) :: first_inaccurate(2)  !! (α, β) of the first of them
       type(error_t), allocatable, intent(out) :: error  !! err_points_failed when points failed
-      type(system_nodes_t) :: nodes
       character(len=:), allocatable :: message
       character(len=400) :: place
       real(wp) :: v(n_fixed + self%form%n)
@@ -973,8 +999,8 @@ contains
       integer :: k
       call warn_roundoff(scene, n_inaccurate, first_inaccurate)
       if (n_failed == 0) return
-      call evaluate(scene%system, self%form, system_method_t(scene%method%kind, scene%method%tolerance), &
-                    first_failed(1), first_failed(2), nodes, v, failed, message)
+      call system_values(scene%system, self%form, system_method_t(scene%method%kind, scene%method%tolerance), &
+                         first_failed(1), first_failed(2), v, failed, message)
       select type (self)
       type is (system_points_task_t)
          k = findloc(self%points(1, :) == first_failed(1) .and. self%points(2, :) == first_failed(2), .true., dim=1)
