@@ -233,6 +233,23 @@ int hillstab_system_floquet(const hillstab_system *system, double alpha, double 
                             double *log_scale, double *exponents, int *verdict, int *kind, double *trace,
                             double *a2, double *defect, double *error_estimate, int *status);
 
+/* Many points at once, as the tasks compute them, on `threads` OpenMP threads (0: the
+ * default): values[j][k] over the columns of a system's files (14 + n: alpha beta trace a2
+ * overflow stable kind lambda_max mu argument mu_1 ... mu_n defect error_estimate status
+ * steps; hillstab_system_column_name) and status[j] (0, 1 round-off limited, 2 failed with a
+ * file's placeholders; HILLSTAB_ERR_POINTS_FAILED when any failed, every value written).
+ * hillstab_system_points computes each point alone (task points); hillstab_system_chart the
+ * grid of task chart (alpha index outer), a row's points sharing their nodes. */
+int hillstab_system_column_count(const hillstab_system *system, int *count);
+int hillstab_system_column_name(const hillstab_system *system, int index, char *name, size_t length);
+int hillstab_system_points(const hillstab_system *system, size_t n, const double *alpha, const double *beta,
+                           const double *epsilon, int method, double tolerance, int threads, double *values,
+                           int *status);
+int hillstab_system_chart(const hillstab_system *system, double alpha_min, double alpha_max, size_t n_alpha,
+                          double beta_min, double beta_max, size_t n_beta, double epsilon, int method,
+                          double tolerance, int threads, double *alpha, double *beta, double *values,
+                          int *status);
+
 #ifdef __cplusplus
 }
 #endif

@@ -8,7 +8,10 @@ through the library's ``hillstab_system_*`` functions (the matrix system of the 
 (``gyroscopic``), ``k0`` and ``b`` as n × n arrays, the drive matrices ``cos`` and ``sin``
 as (H, n, n) arrays (an n × n array is one harmonic), and the ``period`` P (a multiple of 2).
 `System.monodromy` gives the 2n × 2n monodromy Φ acting on (x, x'), `System.floquet` its
-multipliers, exponents, verdict and kind.
+multipliers, exponents, verdict and kind; over arrays of points (any shapes that
+broadcast, with the damping) `System.floquet` and `System.points` return a `SystemResult`
+of arrays — the columns of the command line's files, to the bit — computed on the
+library's threads, and `System.chart` the same over a grid.
 
 Bad input (M not symmetric positive definite, C not symmetric, G not skew, a matrix of the
 wrong shape or empty, an n that is not an integer, an unknown method, a tolerance outside
@@ -28,6 +31,7 @@ import numpy as np
 
 from . import _capi
 from ._capi import lib, check, real_number, real_array
+from .floquet import _warn, _axis
 
 _system_p = ctypes.c_void_p
 _c_double_p = ctypes.POINTER(ctypes.c_double)
@@ -43,6 +47,14 @@ _capi._declare("hillstab_system_monodromy", ctypes.c_int, _system_p, ctypes.c_do
 _capi._declare("hillstab_system_floquet", ctypes.c_int, _system_p, ctypes.c_double, ctypes.c_double,
                ctypes.c_double, ctypes.c_int, ctypes.c_double, _c_double_p, _c_double_p, _c_double_p, _c_double_p,
                _c_int_p, _c_int_p, _c_double_p, _c_double_p, _c_double_p, _c_double_p, _c_int_p)
+_capi._declare("hillstab_system_column_count", ctypes.c_int, _system_p, _c_int_p)
+_capi._declare("hillstab_system_column_name", ctypes.c_int, _system_p, ctypes.c_int, ctypes.c_char_p,
+               ctypes.c_size_t)
+_capi._declare("hillstab_system_points", ctypes.c_int, _system_p, ctypes.c_size_t, _c_double_p, _c_double_p,
+               _c_double_p, ctypes.c_int, ctypes.c_double, ctypes.c_int, _c_double_p, _c_int_p)
+_capi._declare("hillstab_system_chart", ctypes.c_int, _system_p, ctypes.c_double, ctypes.c_double, ctypes.c_size_t,
+               ctypes.c_double, ctypes.c_double, ctypes.c_size_t, ctypes.c_double, ctypes.c_int, ctypes.c_double,
+               ctypes.c_int, _c_double_p, _c_double_p, _c_double_p, _c_int_p)
 
 #: the methods of systems (codes HILLSTAB_METHOD_*)
 SYSTEM_METHODS = {"auto": 0, "magnus4": 3, "magnus6": 4, "rk": 5, "gsl": 6}
@@ -61,6 +73,14 @@ def _method(method):
         raise ValueError("method: unknown system method '{}' (expected {})".format(
             method, ", ".join(SYSTEM_METHODS)))
     return SYSTEM_METHODS[method]
+
+
+def _threads(threads):
+    if isinstance(threads, (bool, np.bool_)) or not isinstance(threads, (int, np.integer)):
+        raise TypeError("threads: must be an int (0: OpenMP's default), got {}".format(type(threads).__name__))
+    if threads < 0:
+        raise ValueError("threads: must be >= 0 (0: OpenMP's default), got {}".format(threads))
+    return int(threads)
 
 
 def _degrees_of_freedom(n):
@@ -122,6 +142,66 @@ class SystemFloquet:
     def __repr__(self):
         return "<hillstab system floquet: verdict {}, kind {} ({}), trace {:.6g}>".format(
             self.verdict, self.kind, self.kind_name, self.trace)
+
+
+class SystemResult:
+    """The Floquet analysis of many points of a system, as arrays of the points' shape.
+
+    The values of a system's chart and points files, by the files' column names
+    (attributes and ``result["name"]``): ``trace`` tr Φ, ``a2``, ``overflow`` (1 where tr Φ
+    or a₂ passed ±1e300), ``stable`` (the verdict: 1 stable, 0 unstable, −1 marginal),
+    ``kind`` (0 … 5, `KIND_NAMES`), ``lambda_max`` the largest |λ| (at most 1e300), ``mu``
+    its exponent ln|λ|/P, ``argument`` its argument, ``mu_1`` … ``mu_n`` the n largest
+    exponents (also as ``exponents``, with a last axis of n), ``defect``,
+    ``error_estimate``, ``status`` (0 within the tolerance, 1 round-off limited, 2 failed
+    with the files' placeholders: stable −1, kind −1, error_estimate −1) and ``steps``.
+    ``verdict`` is ``stable``. A chart's result has the axes ``alpha`` and ``beta`` too.
+    """
+
+    def __init__(self, arrays, names, extra=None):
+        self._arrays = arrays
+        self._names = tuple(names)
+        n = sum(1 for name in names if name.startswith("mu_"))
+        #: the n largest exponents, a last axis of n
+        self.exponents = np.stack([arrays["mu_{}".format(k + 1)] for k in range(n)], axis=-1)
+        for key, value in (extra or {}).items():
+            setattr(self, key, value)
+
+    @property
+    def names(self):
+        """The columns, in the files' order."""
+        return self._names
+
+    @property
+    def verdict(self):
+        """The verdict (the column ``stable``)."""
+        return self._arrays["stable"]
+
+    @property
+    def ok(self):
+        """True where the point was computed (status 0 or 1)."""
+        return self._arrays["status"] < 2
+
+    def __getattr__(self, name):
+        arrays = self.__dict__.get("_arrays", {})
+        if name in arrays:
+            return arrays[name]
+        raise AttributeError(name)
+
+    def __getitem__(self, name):
+        """A column by name (a chart's ``result["alpha"]`` is the 2-D column, ``result.alpha``
+        its axis)."""
+        if name in self._arrays:
+            return self._arrays[name]
+        return getattr(self, name)
+
+    def __repr__(self):
+        return "<hillstab system result: {} points, columns {}>".format(self._arrays["status"].size,
+                                                                        " ".join(self._names))
+
+
+def _is_scalar(value):
+    return np.ndim(value) == 0 and not isinstance(value, (list, tuple))
 
 
 class System:
@@ -223,8 +303,16 @@ class System:
         return (real_number("alpha", alpha), real_number("beta", beta), real_number("epsilon", epsilon),
                 real_number("tolerance", tolerance))
 
-    def floquet(self, alpha, beta, epsilon=0.0, method="auto", tolerance=1e-10):
-        """The Floquet analysis at (α, β) with damping ε M: a `SystemFloquet`."""
+    def floquet(self, alpha, beta, epsilon=0.0, method="auto", tolerance=1e-10, threads=0):
+        """The Floquet analysis at (α, β) with damping ε M.
+
+        At one point (numbers): a `SystemFloquet`, with the multipliers. At arrays of points
+        (α, β and ε of any shapes that broadcast together): `points`' `SystemResult`, each
+        point computed alone as the command line's task ``points`` computes it, on the
+        library's threads. Status 1 and 2 give a `HillstabWarning`, as for a scalar model.
+        """
+        if not (_is_scalar(alpha) and _is_scalar(beta) and _is_scalar(epsilon)):
+            return self.points(alpha, beta, epsilon, method, tolerance, threads)
         m = 2 * self.n
         re = np.zeros(m, dtype=np.float64)
         im = np.zeros(m, dtype=np.float64)
@@ -239,9 +327,76 @@ class System:
                                           ctypes.byref(log_scale), _capi.doubles(exponents), ctypes.byref(verdict),
                                           ctypes.byref(kind), ctypes.byref(trace), ctypes.byref(a2),
                                           ctypes.byref(defect), ctypes.byref(estimate), ctypes.byref(status)))
+        _warn(np.array([status.value]), lambda k: "alpha = {!r}, beta = {!r}".format(alpha, beta))
         return SystemFloquet(multipliers=re + 1j * im, log_scale=log_scale.value, exponents=exponents,
                              verdict=verdict.value, kind=kind.value, trace=trace.value, a2=a2.value,
                              defect=defect.value, error_estimate=estimate.value, status=status.value)
+
+    def column_names(self):
+        """The columns of the system's chart and points files (14 + n names)."""
+        count = ctypes.c_int(0)
+        check(lib.hillstab_system_column_count(self._handle, ctypes.byref(count)))
+        return tuple(_capi.text_out(lib.hillstab_system_column_name, self._handle, k, length=64)
+                     for k in range(count.value))
+
+    def _result(self, values, status, shape, extra=None):
+        names = self.column_names()
+        arrays = {}
+        for k, name in enumerate(names):
+            column = values[..., k].reshape(shape)
+            if name in ("overflow", "stable", "kind", "status", "steps"):
+                column = np.rint(column).astype(np.int64)
+            else:
+                column = column.copy()
+            arrays[name] = column
+        arrays["status"] = status.reshape(shape).astype(np.int8)
+        return SystemResult(arrays, names, extra)
+
+    def points(self, alpha, beta, epsilon=0.0, method="auto", tolerance=1e-10, threads=0):
+        """The Floquet analysis of the points (α, β) with damping ε M — arrays of any shapes
+        that broadcast together — each computed alone as the command line's task ``points``
+        computes it (its files' numbers to the bit), on ``threads`` of the library's threads
+        (0: OpenMP's default). Returns a `SystemResult` of the broadcast shape; status 1 and
+        2 give a `HillstabWarning`."""
+        a, b, e = np.broadcast_arrays(real_array("alpha", alpha), real_array("beta", beta),
+                                      real_array("epsilon", epsilon))
+        shape = a.shape
+        a, b, e = (_capi.as_doubles(x.ravel()) for x in (a, b, e))
+        n = a.size
+        width = 14 + self.n
+        out = np.empty((n, width))
+        status = np.zeros(n, dtype=_capi.INT)
+        code = lib.hillstab_system_points(self._handle, n, _capi.doubles(a), _capi.doubles(b), _capi.doubles(e),
+                                          _method(method), real_number("tolerance", tolerance),
+                                          _threads(threads), _capi.doubles(out), _capi.ints(status))
+        if code != _capi.ERR_POINTS_FAILED:
+            check(code)
+        _warn(status, lambda k: "alpha = {!r}, beta = {!r}".format(float(a[k]), float(b[k])))
+        return self._result(out, status, shape)
+
+    def chart(self, alpha, beta, epsilon=0.0, method="auto", tolerance=1e-10, threads=0):
+        """The chart over a grid, as the command line's task ``chart`` computes it (its files'
+        numbers to the bit: the points of a row share their nodes). ``alpha`` and ``beta``
+        are (first, last, count), both ends included. Returns a `SystemResult` with 2-D
+        arrays ``[i_alpha, i_beta]`` and the axes ``alpha`` (n_alpha,) and ``beta``
+        (n_beta,); status 1 and 2 give a `HillstabWarning`."""
+        alpha_min, alpha_max, n_alpha = _axis(alpha, "alpha")
+        beta_min, beta_max, n_beta = _axis(beta, "beta")
+        alphas = np.empty(n_alpha)
+        betas = np.empty(n_beta)
+        width = 14 + self.n
+        out = np.empty((n_alpha, n_beta, width))
+        status = np.zeros((n_alpha, n_beta), dtype=_capi.INT)
+        code = lib.hillstab_system_chart(self._handle, alpha_min, alpha_max, n_alpha, beta_min, beta_max, n_beta,
+                                         real_number("epsilon", epsilon), _method(method),
+                                         real_number("tolerance", tolerance), _threads(threads),
+                                         _capi.doubles(alphas), _capi.doubles(betas), _capi.doubles(out),
+                                         _capi.ints(status))
+        if code != _capi.ERR_POINTS_FAILED:
+            check(code)
+        _warn(status, lambda k: "alpha = {!r}, beta = {!r}".format(float(alphas[k // n_beta]),
+                                                                  float(betas[k % n_beta])))
+        return self._result(out, status, (n_alpha, n_beta), extra={"alpha": alphas, "beta": betas})
 
     def __repr__(self):
         return "hillstab.System(n={}, period={:g})".format(self.n, self.period)

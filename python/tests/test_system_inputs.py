@@ -97,7 +97,7 @@ def test_constructor_errors_name_the_argument(options, name, error):
 @pytest.mark.parametrize("call, name", [
     (lambda s: s.floquet(1j, 1.0), "alpha"),
     (lambda s: s.monodromy(0.3, "1.0"), "beta"),
-    (lambda s: s.floquet(0.3, 1.0, epsilon=np.array([0.1, 0.2])), "epsilon"),
+    (lambda s: s.floquet(0.3, 1.0, epsilon="0.1"), "epsilon"),
     (lambda s: s.monodromy(0.3, 1.0, tolerance=None), "tolerance"),
     (lambda s: s.floquet(0.3, 1.0, method=["auto"]), "method"),
     (lambda s: s.floquet(True, 1.0), "alpha"),

@@ -53,7 +53,7 @@ module hillstab_interop_capi_system
    public :: system_handle_t
    public :: hillstab_c_system_new, hillstab_c_system_free, hillstab_c_system_set, hillstab_c_system_check, &
       hillstab_c_system_dof, hillstab_c_system_monodromy, hillstab_c_system_floquet
-   public :: min_system_tolerance
+   public :: min_system_tolerance, handle_system, check_output, outcome_status, check_method_tolerance
 
    !> Tolerances must lie strictly between this and 1.
    real(wp), parameter :: min_system_tolerance = 1.0e-15_wp
@@ -284,12 +284,9 @@ contains
       if (allocated(error)) return
       call handle_system(where, system, handle, error)
       if (allocated(error)) return
-      if (.not. any(method == [system_auto, system_magnus4, system_magnus6, system_rk, system_gsl])) then
-         call set_error(error, err_invalid_parameter, "method: unknown system method code "// &
-            integer_text(int(method))//" (HILLSTAB_METHOD_AUTO 0, _MAGNUS4 3, _MAGNUS6 4, _RK 5 or _GSL 6)")
-      else if (.not. in_range(tolerance, min_system_tolerance, 1.0_wp, .false.)) then
-         call set_error(error, err_invalid_parameter, "tolerance: must lie between 1e-15 and 1 (exclusive), "// &
-            "got "//real_text(real(tolerance, wp)))
+      call check_method_tolerance(method, tolerance, error)
+      if (allocated(error)) then
+         continue
       else if (.not. ieee_is_finite(alpha)) then
          call set_error(error, err_invalid_parameter, "alpha: must be finite")
       else if (.not. ieee_is_finite(beta)) then
@@ -306,6 +303,21 @@ contains
                                                         result, error)
       if (allocated(error)) error%message = where//": "//error%message
    end subroutine system_point
+
+   !> err_invalid_parameter naming `method` (not a system method's code) or `tolerance` (not
+   !> strictly between 1e-15 and 1).
+   subroutine check_method_tolerance(method, tolerance, error)
+      integer(c_int), intent(in) :: method  !! HILLSTAB_METHOD_AUTO, _MAGNUS4, _MAGNUS6, _RK or _GSL
+      real(c_double), intent(in) :: tolerance  !! the target error of Φ
+      type(error_t), allocatable, intent(out) :: error  !! what is wrong; unallocated when both are valid
+      if (.not. any(method == [system_auto, system_magnus4, system_magnus6, system_rk, system_gsl])) then
+         call set_error(error, err_invalid_parameter, "method: unknown system method code "// &
+            integer_text(int(method))//" (HILLSTAB_METHOD_AUTO 0, _MAGNUS4 3, _MAGNUS6 4, _RK 5 or _GSL 6)")
+      else if (.not. in_range(tolerance, min_system_tolerance, 1.0_wp, .false.)) then
+         call set_error(error, err_invalid_parameter, "tolerance: must lie between 1e-15 and 1 (exclusive), "// &
+            "got "//real_text(real(tolerance, wp)))
+      end if
+   end subroutine check_method_tolerance
 
    !> x finite and low < x < high (low <= x <= high when `closed`), decided without comparing
    !> a NaN (a comparison that would raise IEEE invalid under floating-point traps).

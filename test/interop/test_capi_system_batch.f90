@@ -1,0 +1,257 @@
+!> Tests of the C entry points that compute many points of a system at once
+!> (hillstab_interop_capi_system_batch), called from Fortran as C calls them: the values of
+!> `hillstab_system_points` equal `hillstab_system_floquet` point by point (damping per
+!> point, threads), both entry points equal the data lines of tasks `points` and `chart`
+!> to the bit, the column names are the files', and bad input is refused naming the
+!> argument and the point, the outputs untouched.
+module test_capi_system_batch
+   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_null_char, c_ptr, c_null_ptr, &
+      c_associated, c_loc
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t, err_invalid_parameter
+   use hillstab_core_text, only: integer_text
+   use hillstab_interop_capi, only: hillstab_c_last_error
+   use hillstab_interop_capi_system, only: hillstab_c_system_new, hillstab_c_system_free, hillstab_c_system_set, &
+      hillstab_c_system_check, hillstab_c_system_floquet
+   use hillstab_interop_capi_system_batch
+   use hillstab_batch_run_scenes, only: run_scene_file
+   use hillstab_test_scratch, only: padded, scratch_prefix, write_file, read_lines, delete_file
+   use hillstab_testing
+   implicit none
+   private
+   public :: collect_capi_system_batch
+
+   !> The system of the tests: damped, a sine drive and a gyroscopic term, as `&system` and as set calls.
+   character(len=*), parameter :: group = "&system n = 2, mass = 1.0, 0.0, 0.0, 0.64, b = 1.1, -0.1, -0.1, 0.9, "// &
+                                          "damping = 0.02, 0.0, 0.0, 0.01, gyroscopic = 0.0, 0.3, -0.3, 0.0, "// &
+                                          "cos = -1.0, -0.2, -0.2, -0.8, sin = 0.0, 0.1, 0.1, 0.3 /"
+
+contains
+
+   function collect_capi_system_batch() result(suite)
+      type(testsuite_t) :: suite
+      suite = new_testsuite("capi_system_batch", [ &
+         new_unittest("points_match_one_by_one", points_match_one_by_one), &
+         new_unittest("equal_task_files", equal_task_files), &
+         new_unittest("bad_input_named", bad_input_named)])
+   end function collect_capi_system_batch
+
+   function last_message() result(text)
+      character(len=:), allocatable :: text
+      character(kind=c_char) :: buffer(1024)
+      integer(c_int) :: code
+      integer :: i
+      code = hillstab_c_last_error(buffer, size(buffer, kind=c_size_t))
+      text = ""
+      do i = 1, size(buffer)
+         if (buffer(i) == c_null_char) exit
+         text = text//buffer(i)
+      end do
+   end function last_message
+
+   integer(c_int) function set(system, name, values) result(status)
+      type(c_ptr), intent(in) :: system
+      character(len=*), intent(in) :: name
+      real(c_double), intent(in), target, contiguous :: values(:)
+      character(kind=c_char), target :: chars(len(name) + 1)
+      integer :: i
+      do i = 1, len(name)
+         chars(i) = name(i:i)
+      end do
+      chars(len(name) + 1) = c_null_char
+      status = hillstab_c_system_set(system, c_loc(chars), c_loc(values), size(values, kind=c_size_t))
+   end function set
+
+   !> The system of `group` through the C API.
+   function c_system(ctx) result(system)
+      type(test_context_t), intent(inout) :: ctx
+      type(c_ptr), target :: system
+      system = c_null_ptr
+      call check(ctx, hillstab_c_system_new(c_loc(system)) == 0 .and. c_associated(system), "new")
+      call check(ctx, set(system, "n", [2.0_wp]) == 0, "set n")
+      call check(ctx, set(system, "mass", [1.0_wp, 0.0_wp, 0.0_wp, 0.64_wp]) == 0, "set mass")
+      call check(ctx, set(system, "b", [1.1_wp, -0.1_wp, -0.1_wp, 0.9_wp]) == 0, "set b")
+      call check(ctx, set(system, "damping", [0.02_wp, 0.0_wp, 0.0_wp, 0.01_wp]) == 0, "set damping")
+      call check(ctx, set(system, "gyroscopic", [0.0_wp, 0.3_wp, -0.3_wp, 0.0_wp]) == 0, "set gyroscopic")
+      call check(ctx, set(system, "cos", [-1.0_wp, -0.2_wp, -0.2_wp, -0.8_wp]) == 0, "set cos")
+      call check(ctx, set(system, "sin", [0.0_wp, 0.1_wp, 0.1_wp, 0.3_wp]) == 0, "set sin")
+      call check(ctx, hillstab_c_system_check(system) == 0, "check: "//last_message())
+   end function c_system
+
+   !> The name of column k (from 0).
+   function column_name(system, k) result(name)
+      type(c_ptr), intent(in) :: system
+      integer, intent(in) :: k
+      character(len=:), allocatable :: name
+      character(kind=c_char) :: buffer(64)
+      integer :: i
+      name = ""
+      if (hillstab_c_system_column_name(system, int(k, c_int), buffer, size(buffer, kind=c_size_t)) /= 0) return
+      do i = 1, size(buffer)
+         if (buffer(i) == c_null_char) exit
+         name = name//buffer(i)
+      end do
+   end function column_name
+
+   !> 48 points at one α and at others, damping 0 and 0.05 mixed, by auto and rk on two
+   !> threads: every value equals one `hillstab_system_floquet` call at the point.
+   subroutine points_match_one_by_one(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(c_ptr) :: system
+      integer, parameter :: n = 48
+      real(c_double), target :: alpha(n), beta(n), epsilon(n), values(16, n)
+      real(c_double), target :: re(4), im(4), scale, exponents(2), trace, a2, defect, estimate
+      integer(c_int), target :: status(n), verdict, kind, status1, count
+      integer, parameter :: methods(2) = [0, 5]
+      integer :: j, m
+      character(len=60) :: where
+      system = c_system(ctx)
+      call check(ctx, hillstab_c_system_column_count(system, c_loc(count)) == 0 .and. count == 16, "16 columns")
+      call check(ctx, column_name(system, 0) == "alpha" .and. column_name(system, 10) == "mu_1" .and. &
+                 column_name(system, 15) == "steps", "column names: "//column_name(system, 10))
+      do j = 1, n
+         alpha(j) = merge(0.9_wp, 0.05_wp*j, j <= n/2)
+         beta(j) = 0.1_wp + 0.06_wp*mod(7*j, n)
+         epsilon(j) = merge(0.0_wp, 0.05_wp, mod(j, 3) == 0)
+      end do
+      do m = 1, size(methods)
+         call check(ctx, hillstab_c_system_points(system, int(n, c_size_t), alpha, beta, epsilon, int(methods(m), &
+                    c_int), 1.0e-10_c_double, 2_c_int, c_loc(values), c_loc(status)) == 0, "points: "//last_message())
+         do j = 1, n
+            write (where, '(a, i0, a, i0)') "method ", methods(m), ", point ", j
+            call check(ctx, hillstab_c_system_floquet(system, alpha(j), beta(j), epsilon(j), int(methods(m), c_int), &
+                       1.0e-10_c_double, c_loc(re), c_loc(im), c_loc(scale), c_loc(exponents), c_loc(verdict), &
+                       c_loc(kind), c_loc(trace), c_loc(a2), c_loc(defect), c_loc(estimate), c_loc(status1)) == 0, &
+                       trim(where)//": floquet")
+            call check(ctx, values(1, j) == alpha(j) .and. values(2, j) == beta(j), trim(where)//": alpha, beta")
+            call check(ctx, values(3, j) == trace .and. values(4, j) == a2, trim(where)//": trace, a2")
+            call check(ctx, nint(values(6, j)) == verdict .and. nint(values(7, j)) == kind, &
+                       trim(where)//": verdict and kind")
+            call check(ctx, all(values(11:12, j) == exponents), trim(where)//": exponents")
+            call check(ctx, values(13, j) == defect .and. values(14, j) == estimate, trim(where)//": defect, estimate")
+            call check(ctx, nint(values(15, j)) == status1 .and. status(j) == status1, trim(where)//": status")
+         end do
+      end do
+      call hillstab_c_system_free(system)
+   end subroutine points_match_one_by_one
+
+   !> The numbers of a file's data lines (blank lines skipped).
+   function numbers(path, n_columns) result(rows)
+      character(len=*), intent(in) :: path
+      integer, intent(in) :: n_columns
+      real(wp), allocatable :: rows(:, :)
+      character(len=1024), allocatable :: lines(:)
+      integer :: k, n, ios
+      lines = read_lines(path)
+      allocate (rows(n_columns, size(lines)))
+      n = 0
+      do k = 1, size(lines)
+         if (lines(k)(1:1) == "#" .or. len_trim(lines(k)) == 0) cycle
+         n = n + 1
+         read (lines(k), *, iostat=ios) rows(:, n)
+         if (ios /= 0) rows(:, n) = huge(1.0_wp)
+      end do
+      rows = rows(:, :n)
+   end function numbers
+
+   !> hillstab_system_points against task points' file and hillstab_system_chart against task
+   !> chart's: every number of every line, bit for bit (17 significant digits round-trip).
+   subroutine equal_task_files(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(c_ptr) :: system
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out, scene, points, written
+      character(len=40) :: lines(30)
+      real(c_double), target :: alpha(30), beta(30), epsilon(30), values(16, 30), a(5), b(7), grid(16, 7, 5)
+      integer(c_int), target :: status(30), grid_status(7, 5)
+      real(wp), allocatable :: file(:, :)
+      integer :: j
+      system = c_system(ctx)
+      points = scratch_prefix("capi_sys_input")//".dat"
+      do j = 1, size(lines)
+         alpha(j) = 0.7_wp
+         beta(j) = 0.2_wp + 0.1_wp*j
+         epsilon(j) = 0.03_wp
+         write (lines(j), '(f8.4, 1x, f8.4)') alpha(j), beta(j)
+         read (lines(j), *) alpha(j), beta(j)
+      end do
+      call write_file(points, lines)
+      out = scratch_prefix("capi_sys")
+      scene = out//".nml"
+      call write_file(scene, [padded("&scene task = 'points', model = 'system', method = 'magnus4', tolerance = 1e-9, "// &
+                              "epsilon = 0.03, output = '"//out//"' /"), padded(group), &
+                              padded("&points file = '"//points//"' /")])
+      call run_scene_file(scene, .true., error, written)
+      call check(ctx, .not. allocated(error), "task points runs")
+      if (allocated(error)) return
+      file = numbers(written, 16)
+      call delete_file(written)
+      call check(ctx, hillstab_c_system_points(system, 30_c_size_t, alpha, beta, epsilon, 3_c_int, 1.0e-9_c_double, &
+                 0_c_int, c_loc(values), c_loc(status)) == 0, "points: "//last_message())
+      call check(ctx, size(file, 2) == 30, "30 lines")
+      if (size(file, 2) == 30) call check(ctx, all(file == values), "the points file's numbers")
+      call write_file(scene, [padded("&scene task = 'chart', model = 'system', method = 'auto', tolerance = 1e-10, "// &
+                              "epsilon = 0.03, output = '"//out//"' /"), padded(group), &
+                              padded("&chart alpha_min = 0.1, alpha_max = 1.3, n_alpha = 5, beta_min = 0.2, "// &
+                                     "beta_max = 2.6, n_beta = 7 /")])
+      call run_scene_file(scene, .true., error, written)
+      call check(ctx, .not. allocated(error), "task chart runs")
+      if (allocated(error)) return
+      file = numbers(written, 16)
+      call delete_file(written)
+      call check(ctx, hillstab_c_system_chart(system, 0.1_c_double, 1.3_c_double, 5_c_size_t, 0.2_c_double, &
+                 2.6_c_double, 7_c_size_t, 0.03_c_double, 0_c_int, 1.0e-10_c_double, 2_c_int, c_loc(a), c_loc(b), &
+                 c_loc(grid), c_loc(grid_status)) == 0, "chart: "//last_message())
+      call check(ctx, size(file, 2) == 35, "35 lines")
+      if (size(file, 2) == 35) call check(ctx, all(file == reshape(grid, [16, 35])), "the chart file's numbers")
+      call check(ctx, a(1) == 0.1_wp .and. a(5) == 1.3_wp .and. b(1) == 0.2_wp .and. b(7) == 2.6_wp, "the axes")
+      call delete_file(scene)
+      call delete_file(points)
+      call hillstab_c_system_free(system)
+   end subroutine equal_task_files
+
+   !> Bad input: the argument and the point named, nothing written.
+   subroutine bad_input_named(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(c_ptr) :: system
+      real(c_double), target :: alpha(3), beta(3), epsilon(3), values(16, 3), a(2), b(2), grid(16, 2, 2)
+      integer(c_int), target :: status(3), grid_status(2, 2)
+      system = c_system(ctx)
+      alpha = [0.1_wp, 0.2_wp, 0.3_wp]
+      beta = 1.0_wp
+      epsilon = [0.0_wp, 0.0_wp, -0.1_wp]
+      values = 7.0_wp
+      call refused(hillstab_c_system_points(system, 3_c_size_t, alpha, beta, epsilon, 0_c_int, 1.0e-10_c_double, &
+                   0_c_int, c_loc(values), c_loc(status)), "hillstab_system_points: epsilon: point 2: must be finite "// &
+                   "and >= 0, got -0.1", "negative epsilon")
+      epsilon = 0.0_wp
+      call refused(hillstab_c_system_points(system, 3_c_size_t, alpha, beta, epsilon, 0_c_int, 1.0e-10_c_double, &
+                   0_c_int, c_null_ptr, c_loc(status)), "hillstab_system_points: values: a null pointer", "null values")
+      call refused(hillstab_c_system_points(system, 3_c_size_t, alpha, beta, epsilon, 7_c_int, 1.0e-10_c_double, &
+                   0_c_int, c_loc(values), c_loc(status)), "hillstab_system_points: method:", "unknown method")
+      call refused(hillstab_c_system_points(system, 3_c_size_t, alpha, beta, epsilon, 0_c_int, 1.0e-10_c_double, &
+                   -1_c_int, c_loc(values), c_loc(status)), "hillstab_system_points: threads:", "negative threads")
+      call refused(hillstab_c_system_points(c_null_ptr, 3_c_size_t, alpha, beta, epsilon, 0_c_int, 1.0e-10_c_double, &
+                   0_c_int, c_loc(values), c_loc(status)), "hillstab_system_points: system:", "null system")
+      call check(ctx, all(values == 7.0_wp), "the values untouched")
+      grid = 7.0_wp
+      call refused(hillstab_c_system_chart(system, 0.0_c_double, 1.0_c_double, 2_c_size_t, 0.0_c_double, &
+                   1.0_c_double, huge(1_c_size_t), 0.0_c_double, 0_c_int, 1.0e-10_c_double, 0_c_int, c_loc(a), &
+                   c_loc(b), c_loc(grid), c_loc(grid_status)), "hillstab_system_chart: n_beta =", "n_beta too large")
+      call refused(hillstab_c_system_chart(system, 0.0_c_double, 1.0_c_double, 2_c_size_t, 0.0_c_double, &
+                   1.0_c_double, 2_c_size_t, -1.0_c_double, 0_c_int, 1.0e-10_c_double, 0_c_int, c_loc(a), &
+                   c_loc(b), c_loc(grid), c_loc(grid_status)), "hillstab_system_chart: epsilon: the grid:", &
+                   "negative epsilon")
+      call check(ctx, all(grid == 7.0_wp), "the chart untouched")
+      call hillstab_c_system_free(system)
+   contains
+      subroutine refused(code, part, what)
+         integer(c_int), intent(in) :: code
+         character(len=*), intent(in) :: part, what
+         character(len=:), allocatable :: message
+         message = last_message()
+         call check(ctx, code == err_invalid_parameter, what//": status "//integer_text(int(code)))
+         call check(ctx, index(message, part) == 1, what//": the message '"//message//"' starts with '"//part//"'")
+      end subroutine refused
+   end subroutine bad_input_named
+end module test_capi_system_batch
