@@ -180,15 +180,18 @@ contains
    end subroutine c_header_enums
 
    !> In the F77 entry points' documentation every "<digit> <name>" naming an entry of a
-   !> table gives that entry's code, and every entry of each table is documented.
+   !> table gives that entry's code, and every entry of each table is documented; so are the
+   !> INFO codes "2 overflow", "7 round-off limited" and "1 invalid parameter" (hillstab_core_error).
    subroutine f77_codes(ctx)
       type(test_context_t), intent(inout) :: ctx
       character(len=:), allocatable :: text, word
       integer :: f, i, j, code, k
-      logical :: methods(0:20), models(0:20), samplings(0:20)
+      character(len=*), parameter :: info_words(3) = [character(len=8) :: "overflow", "round", "invalid"]
+      integer, parameter :: info_codes(3) = [err_overflow, err_accuracy, err_invalid_parameter]
+      logical :: methods(0:20), models(0:20), samplings(0:20), infos(size(info_words))
       do f = 1, size(legacy_paths)
          text = lower_case(file_text(ctx, trim(legacy_paths(f))))
-         methods = .false.; models = .false.; samplings = .false.
+         methods = .false.; models = .false.; samplings = .false.; infos = .false.
          do i = 1, len(text) - 2
             if (index("0123456789", text(i:i)) == 0 .or. text(i + 1:i + 1) /= " ") cycle
             if (i > 1) then
@@ -216,6 +219,19 @@ contains
                   "' names sampling code "//text(i:i))
                samplings(code) = .true.
             end if
+            ! INFO: "2 overflow", "7 round-off limited", "1 invalid parameter"
+            do k = size(info_words), 1, -1
+               if (info_words(k) == word) exit
+            end do
+            if (k > 0) then
+               call check(ctx, info_codes(k) == code, trim(legacy_paths(f))//": '"//text(i:j - 1)// &
+                  "' is INFO "//text(i:i)//", the error code is "//integer_text(info_codes(k)))
+               infos(k) = .true.
+            end if
+         end do
+         do k = 1, size(info_words)
+            call check(ctx, infos(k), trim(legacy_paths(f))//" documents INFO "//integer_text(info_codes(k))//" "// &
+                       trim(info_words(k)))
          end do
          do k = lbound(method_table, 1), ubound(method_table, 1)
             call check(ctx, methods(k), trim(legacy_paths(f))//" documents method "//method_name(k))
