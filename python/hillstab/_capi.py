@@ -30,6 +30,8 @@ METHODS = {"auto": 0, "formula": 1, "segments": 2, "magnus4": 3, "magnus6": 4, "
 SAMPLINGS = {"endpoint": 1, "midpoint": 2, "average": 3}
 #: HILLSTAB_NEED_*
 NEED_VERDICT, NEED_GROWTH, NEED_TRACE = 1, 2, 3
+#: the status of a point: ok, round-off limited (the best value double precision allows), failed
+STATUS_OK, STATUS_ROUNDOFF, STATUS_FAILED = 0, 1, 2
 #: HILLSTAB_VALUE_*: the values of a point, by their index
 VALUES = ("trace", "log_abs_trace", "log10_abs_trace", "overflow", "stable", "stable_paper", "lambda_max",
           "log_modulus_max", "log_modulus_min", "exponent", "error_estimate")

@@ -91,8 +91,8 @@ def _characteristic(m, q, parity, tolerance, threads):
     hit = (curves.order == m) & (curves.parity == parity)
     found = np.zeros(flat.shape, dtype=int)
     np.add.at(found, curves.index[hit], 1)
-    if np.any(curves.status == 2) or np.any(found != 1):
-        bad = int(np.argmax((found != 1) | (curves.status == 2)))
+    if np.any(curves.status == _capi.STATUS_FAILED) or np.any(found != 1):
+        bad = int(np.argmax((found != 1) | (curves.status == _capi.STATUS_FAILED)))
         raise _capi.HillstabError("{}_{}(q = {!r}) not found by Hill's method".format(
             "a" if parity > 0 else "b", m, flat[bad]), _capi.ERR_INTEGRATION)
     result[curves.index[hit]] = curves.beta[hit] / quarter

@@ -80,7 +80,7 @@ class Result:
     @property
     def ok(self):
         """True where the point was computed (status 0 or 1)."""
-        return self.status < 2
+        return self.status < _capi.STATUS_FAILED
 
     def __getattr__(self, name):
         arrays = self.__dict__.get("_arrays", {})
@@ -111,15 +111,16 @@ def _unpack(values, names, shape):
 
 
 def _warn(status, where):
-    failed = int(np.count_nonzero(status == 2))
-    limited = int(np.count_nonzero(status == 1))
+    failed = int(np.count_nonzero(status == _capi.STATUS_FAILED))
+    limited = int(np.count_nonzero(status == _capi.STATUS_ROUNDOFF))
     if failed:
+        first = where(np.argmax(status.ravel() == _capi.STATUS_FAILED))
         warnings.warn("{} of {} point(s) failed (status 2, placeholders), first at {}".format(
-            failed, status.size, where(np.argmax(status.ravel() == 2))), HillstabWarning, stacklevel=3)
+            failed, status.size, first), HillstabWarning, stacklevel=3)
     if limited:
+        first = where(np.argmax(status.ravel() == _capi.STATUS_ROUNDOFF))
         warnings.warn("{} of {} point(s) reached only the round-off level of double precision, not the "
-                      "tolerance (status 1), first at {}".format(limited, status.size,
-                                                                 where(np.argmax(status.ravel() == 1))),
+                      "tolerance (status 1), first at {}".format(limited, status.size, first),
                       HillstabWarning, stacklevel=3)
 
 
@@ -171,9 +172,9 @@ def trace(alpha, beta, model="elastic", epsilon=0.0, method="auto", tolerance=1e
     """
     result = floquet(alpha, beta, model, epsilon, method, tolerance, n_segments, sampling,
                      values=("trace",), threads=threads)
-    if np.any(result.status == 2):
+    if np.any(result.status == _capi.STATUS_FAILED):
         raise HillstabError("{} point(s) failed; use floquet() for per-point status".format(
-            int(np.count_nonzero(result.status == 2))), _capi.ERR_INTEGRATION)
+            int(np.count_nonzero(result.status == _capi.STATUS_FAILED))), _capi.ERR_INTEGRATION)
     return result.trace
 
 

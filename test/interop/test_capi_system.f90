@@ -202,7 +202,8 @@ contains
       ! the point, the method, the tolerance
       call refused(floquet(system, 0.3_wp, 1.0_wp, 0.0_wp, 7, 1.0e-10_wp), "hillstab_system_floquet: method:", &
                    "method 7")
-      call refused(floquet(system, 0.3_wp, 1.0_wp, 0.0_wp, 1, 1.0e-10_wp), "hillstab_system_floquet: method:", &
+      call refused(floquet(system, 0.3_wp, 1.0_wp, 0.0_wp, 1, 1.0e-10_wp), "hillstab_system_floquet: method: "// &
+                   "unknown system method code 1 (HILLSTAB_METHOD_AUTO 0, _MAGNUS4 3, _MAGNUS6 4, _RK 5 or _GSL 6)", &
                    "method formula")
       call refused(floquet(system, 0.3_wp, 1.0_wp, 0.0_wp, 0, 0.0_wp), "hillstab_system_floquet: tolerance:", &
                    "tolerance 0")

@@ -5,7 +5,14 @@
 !> (hillstab_hill_models), the method table (hillstab_integrate_monodromy) and the
 !> sampling table (hillstab_hill_coefficient); and the header's HILLSTAB_VERSION_* macros
 !> against `version_string` (hillstab_core_kinds) and the version of fpm.toml; the guide's
-!> table of models (docs/guide/model.md) against the model table. Paths are relative to the worktree root,
+!> table of models (docs/guide/model.md) against the model table. Every code another language
+!> copies is checked against the Fortran constant it copies (`known_codes`): every enumerator of
+!> the header (models, methods, samplings, error codes, the characteristic kinds, NEED_*,
+!> VALUE_*, the system verdicts and kinds), every code of the Python package (python/hillstab:
+!> ERR_*, NEED_*, STATUS_*, VERDICT_*, KIND_*, the dicts METHODS, SYSTEM_METHODS, SAMPLINGS and
+!> KIND_NAMES, the tuple VALUES), the status codes the header and Python document, the
+!> methods the header says systems take; a missing entry fails as a wrong one does, and so
+!> does a code no Fortran constant stands behind. Paths are relative to the worktree root,
 !> the directory `fpm test` runs in.
 module test_codes
    use hillstab_core_text, only: lower_case
@@ -16,8 +23,14 @@ module test_codes
    use hillstab_testing
    use hillstab_hill_models, only: model_count, model_names
    use hillstab_core_text, only: name_position, integer_text
-   use hillstab_core_error, only: err_points_failed
-   use hillstab_integrate_monodromy, only: need_verdict, need_growth, need_trace
+   use hillstab_core_error, only: err_points_failed, err_invalid_parameter, err_overflow, err_integration, err_io, &
+      err_input, err_singular, err_accuracy, error_code_name
+   use hillstab_core_status, only: status_ok, status_roundoff, status_failed, status_name
+   use hillstab_integrate_monodromy, only: need_verdict, need_growth, need_trace, method_takes_systems
+   use hillstab_hill_system_floquet, only: verdict_stable, verdict_unstable, verdict_marginal, kind_stable, &
+      kind_plus_one, kind_minus_one, kind_combination, kind_damped, kind_undecided, kind_name
+   use hillstab_curves_hill_method, only: block_periodic_even, block_periodic_odd, block_antiperiodic_even, &
+      block_antiperiodic_odd, block_periodic, block_antiperiodic
    use hillstab_interop_capi_batch, only: value_trace, value_log_abs_trace, value_log10_abs_trace, value_overflow, &
       value_stable, value_stable_paper, value_lambda_max, value_log_modulus_max, value_log_modulus_min, &
       value_exponent, value_error_estimate, value_count
@@ -28,6 +41,32 @@ module test_codes
    character(len=*), parameter :: header_path = "include/hillstab.h"
    character(len=*), parameter :: legacy_paths(2) = [character(len=40) :: "src/hillstab/interop/legacy.f90", &
       "src/hillstab/interop/legacy_external.f90"]
+   !> The modules of the Python package (every one is read for codes).
+   character(len=*), parameter :: python_paths(9) = [character(len=32) :: "python/hillstab/__init__.py", &
+      "python/hillstab/_capi.py", "python/hillstab/curves.py", "python/hillstab/errors.py", &
+      "python/hillstab/floquet.py", "python/hillstab/models.py", "python/hillstab/scenes.py", &
+      "python/hillstab/spring.py", "python/hillstab/system.py"]
+   !> The names of the values of a point, by their index (HILLSTAB_VALUE_*, Python's VALUES).
+   character(len=*), parameter :: value_names(0:value_count - 1) = [character(len=16) :: "trace", "log_abs_trace", &
+      "log10_abs_trace", "overflow", "stable", "stable_paper", "lambda_max", "log_modulus_max", "log_modulus_min", &
+      "exponent", "error_estimate"]
+
+   !> One code that another language copies: its name in include/hillstab.h after `HILLSTAB_`
+   !> ("" when the header has no enumerator for it), its name in the Python package ("" when
+   !> Python has no constant for it), and its value, the Fortran constant's.
+   type :: known_code_t
+      character(len=40) :: c_name = ""
+      character(len=40) :: py_name = ""
+      integer :: code = 0
+   end type known_code_t
+
+   !> One token of a Python literal: kind "s" a string (its text), "i" an integer, "n" a
+   !> name, "p" one character of punctuation.
+   type :: token_t
+      character(len=1) :: kind = "p"
+      character(len=80) :: text = ""
+      integer :: value = 0
+   end type token_t
 
 contains
 
@@ -38,6 +77,11 @@ contains
          new_unittest("f77_codes", f77_codes), &
          new_unittest("c_header_version", c_header_version), &
          new_unittest("c_header_batch_enums", c_header_batch_enums), &
+         new_unittest("known_codes_complete", known_codes_complete), &
+         new_unittest("c_header_every_enumerator", c_header_every_enumerator), &
+         new_unittest("c_header_system_methods", c_header_system_methods), &
+         new_unittest("python_codes", python_codes), &
+         new_unittest("status_codes_documented", status_codes_documented), &
          new_unittest("citation_in_step", citation_in_step), &
          new_unittest("guide_lists_every_model", guide_lists_every_model)])
    end function collect_codes
@@ -136,15 +180,18 @@ contains
    end subroutine c_header_enums
 
    !> In the F77 entry points' documentation every "<digit> <name>" naming an entry of a
-   !> table gives that entry's code, and every entry of each table is documented.
+   !> table gives that entry's code, and every entry of each table is documented; so are the
+   !> INFO codes "2 overflow", "7 round-off limited" and "1 invalid parameter" (hillstab_core_error).
    subroutine f77_codes(ctx)
       type(test_context_t), intent(inout) :: ctx
       character(len=:), allocatable :: text, word
       integer :: f, i, j, code, k
-      logical :: methods(0:20), models(0:20), samplings(0:20)
+      character(len=*), parameter :: info_words(3) = [character(len=8) :: "overflow", "round", "invalid"]
+      integer, parameter :: info_codes(3) = [err_overflow, err_accuracy, err_invalid_parameter]
+      logical :: methods(0:20), models(0:20), samplings(0:20), infos(size(info_words))
       do f = 1, size(legacy_paths)
          text = lower_case(file_text(ctx, trim(legacy_paths(f))))
-         methods = .false.; models = .false.; samplings = .false.
+         methods = .false.; models = .false.; samplings = .false.; infos = .false.
          do i = 1, len(text) - 2
             if (index("0123456789", text(i:i)) == 0 .or. text(i + 1:i + 1) /= " ") cycle
             if (i > 1) then
@@ -172,6 +219,19 @@ contains
                   "' names sampling code "//text(i:i))
                samplings(code) = .true.
             end if
+            ! INFO: "2 overflow", "7 round-off limited", "1 invalid parameter"
+            do k = size(info_words), 1, -1
+               if (info_words(k) == word) exit
+            end do
+            if (k > 0) then
+               call check(ctx, info_codes(k) == code, trim(legacy_paths(f))//": '"//text(i:j - 1)// &
+                  "' is INFO "//text(i:i)//", the error code is "//integer_text(info_codes(k)))
+               infos(k) = .true.
+            end if
+         end do
+         do k = 1, size(info_words)
+            call check(ctx, infos(k), trim(legacy_paths(f))//" documents INFO "//integer_text(info_codes(k))//" "// &
+                       trim(info_words(k)))
          end do
          do k = lbound(method_table, 1), ubound(method_table, 1)
             call check(ctx, methods(k), trim(legacy_paths(f))//" documents method "//method_name(k))
@@ -240,6 +300,531 @@ contains
       call check(ctx, index(heading, date) > 0, "CHANGELOG.md's newest entry carries CITATION.cff's date-released "// &
          date//": "//heading)
    end subroutine citation_in_step
+
+   !> Every code another language copies, from the Fortran constants and tables.
+   function known_codes() result(codes)
+      type(known_code_t), allocatable :: codes(:)
+      integer :: k
+      allocate (codes(0))
+      do k = 1, model_count
+         call add("MODEL_"//upper(trim(model_names(k))), "", k)
+      end do
+      do k = lbound(method_table, 1), ubound(method_table, 1)
+         call add("METHOD_"//upper(method_name(k)), "", k)
+      end do
+      do k = 1, sampling_count
+         call add("SAMPLING_"//upper(sampling_name(k)), "", k)
+      end do
+      call add_both("ERR_INVALID_PARAMETER", err_invalid_parameter)
+      call add_both("ERR_OVERFLOW", err_overflow)
+      call add_both("ERR_INTEGRATION", err_integration)
+      call add_both("ERR_IO", err_io)
+      call add_both("ERR_INPUT", err_input)
+      call add_both("ERR_SINGULAR", err_singular)
+      call add_both("ERR_ACCURACY", err_accuracy)
+      call add_both("ERR_POINTS_FAILED", err_points_failed)
+      call add("KIND_PERIODIC_EVEN", "", block_periodic_even)
+      call add("KIND_PERIODIC_ODD", "", block_periodic_odd)
+      call add("KIND_ANTIPERIODIC_EVEN", "", block_antiperiodic_even)
+      call add("KIND_ANTIPERIODIC_ODD", "", block_antiperiodic_odd)
+      call add("KIND_PERIODIC", "", block_periodic)
+      call add("KIND_ANTIPERIODIC", "", block_antiperiodic)
+      call add_both("NEED_VERDICT", need_verdict)
+      call add_both("NEED_GROWTH", need_growth)
+      call add_both("NEED_TRACE", need_trace)
+      do k = 0, value_count - 1
+         call add("VALUE_"//upper(trim(value_names(k))), "", k)
+      end do
+      call add("VALUE_COUNT", "", value_count)
+      call add("SYSTEM_VERDICT_UNSTABLE", "VERDICT_UNSTABLE", verdict_unstable)
+      call add("SYSTEM_VERDICT_STABLE", "VERDICT_STABLE", verdict_stable)
+      call add("SYSTEM_VERDICT_MARGINAL", "VERDICT_MARGINAL", verdict_marginal)
+      call add("SYSTEM_KIND_STABLE", "KIND_STABLE", kind_stable)
+      call add("SYSTEM_KIND_PLUS_ONE", "KIND_PLUS_ONE", kind_plus_one)
+      call add("SYSTEM_KIND_MINUS_ONE", "KIND_MINUS_ONE", kind_minus_one)
+      call add("SYSTEM_KIND_COMBINATION", "KIND_COMBINATION", kind_combination)
+      call add("SYSTEM_KIND_DAMPED", "KIND_DAMPED", kind_damped)
+      call add("SYSTEM_KIND_UNDECIDED", "KIND_UNDECIDED", kind_undecided)
+      call add("", "STATUS_OK", status_ok)
+      call add("", "STATUS_ROUNDOFF", status_roundoff)
+      call add("", "STATUS_FAILED", status_failed)
+   contains
+      subroutine add(c_name, py_name, code)
+         character(len=*), intent(in) :: c_name, py_name
+         integer, intent(in) :: code
+         codes = [codes, known_code_t(c_name, py_name, code)]
+      end subroutine add
+      subroutine add_both(name, code)
+         character(len=*), intent(in) :: name
+         integer, intent(in) :: code
+         call add(name, name, code)
+      end subroutine add_both
+   end function known_codes
+
+   !> The index in `codes` of the code of that C or Python name (0: none).
+   integer function code_named(codes, c_name, py_name) result(k)
+      type(known_code_t), intent(in) :: codes(:)
+      character(len=*), intent(in), optional :: c_name, py_name
+      do k = 1, size(codes)
+         if (present(c_name)) then
+            if (codes(k)%c_name == c_name) return
+         end if
+         if (present(py_name)) then
+            if (codes(k)%py_name == py_name) return
+         end if
+      end do
+      k = 0
+   end function code_named
+
+   !> The hand-made part of `known_codes` covers the Fortran constants: every error code,
+   !> system kind and status that has a name (`error_code_name`, `kind_name`, `status_name`)
+   !> is listed and nothing else, the characteristic kinds are 1 … 6 and the values 0 …
+   !> count − 1, each once, and no two entries share a name.
+   subroutine known_codes_complete(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(known_code_t), allocatable :: codes(:)
+      integer :: k
+      codes = known_codes()
+      do k = -5, 40
+         call check(ctx, (error_code_name(k) /= "error") .eqv. listed("ERR_", k), "error code "//integer_text(k)// &
+                    " ('"//error_code_name(k)//"') listed in known_codes exactly when it has a name")
+         call check(ctx, (kind_name(k) /= "unknown") .eqv. listed("SYSTEM_KIND_", k), "system kind "// &
+                    integer_text(k)//" ('"//kind_name(k)//"') listed exactly when it has a name")
+         call check(ctx, (status_name(k) /= "unknown") .eqv. listed("STATUS_", k), "status "//integer_text(k)// &
+                    " ('"//status_name(k)//"') listed exactly when it has a name")
+      end do
+      do k = 1, 6
+         call check(ctx, count(codes%code == k .and. index(codes%c_name, "KIND_") == 1) == 1, &
+                    "one characteristic kind "//integer_text(k))
+      end do
+      do k = 1, size(codes)
+         if (codes(k)%c_name /= "") call check(ctx, count(codes%c_name == codes(k)%c_name) == 1, &
+                                              "one code named HILLSTAB_"//trim(codes(k)%c_name))
+         if (codes(k)%py_name /= "") call check(ctx, count(codes%py_name == codes(k)%py_name) == 1, &
+                                               "one code named "//trim(codes(k)%py_name)//" in Python")
+      end do
+   contains
+      logical function listed(prefix, code)
+         character(len=*), intent(in) :: prefix
+         integer, intent(in) :: code
+         integer :: i
+         listed = .false.
+         do i = 1, size(codes)
+            if (codes(i)%code /= code) cycle
+            if (index(codes(i)%c_name, prefix) == 1 .or. index(codes(i)%py_name, prefix) == 1) listed = .true.
+         end do
+      end function listed
+   end subroutine known_codes_complete
+
+   !> Every enumerator `HILLSTAB_<NAME> = <code>` of the header is a known code with the
+   !> Fortran value (a code the test does not know fails: add it to `known_codes`, from its
+   !> Fortran constant), and every known code with a C name is declared once.
+   subroutine c_header_every_enumerator(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: prefix = "HILLSTAB_"
+      type(known_code_t), allocatable :: codes(:)
+      character(len=:), allocatable :: text, name
+      integer, allocatable :: found(:)
+      integer :: at, start, finish, code, ios, k, sign
+      codes = known_codes()
+      allocate (found(size(codes)), source=0)
+      text = file_text(ctx, header_path)
+      at = 1
+      do
+         start = index(text(at:), prefix)
+         if (start == 0) exit
+         start = at + start - 1 + len(prefix)
+         finish = start + verify(text(start:)//" ", "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") - 2
+         name = text(start:finish)
+         at = finish + verify(text(finish + 1:)//"x", " ")
+         if (at >= len(text)) exit
+         if (text(at:at) /= "=" .or. text(at:at + 1) == "==") cycle   ! only mentioned, or a #define
+         at = at + verify(text(at + 1:), " ")
+         sign = 1
+         if (text(at:at) == "-") then
+            sign = -1
+            at = at + 1
+         end if
+         ios = 1
+         if (verify(text(at:at), "0123456789") == 0) then
+            read (text(at:at + verify(text(at:), "0123456789") - 2), *, iostat=ios) code
+         end if
+         call check(ctx, ios == 0, "a code after "//prefix//name//" =")
+         if (ios /= 0) cycle
+         code = sign*code
+         k = code_named(codes, c_name=name)
+         call check(ctx, k > 0, header_path//": "//prefix//name//" = "//integer_text(code)// &
+                    " is no code the test knows (add it to known_codes from its Fortran constant)")
+         if (k == 0) cycle
+         found(k) = found(k) + 1
+         call check(ctx, codes(k)%code == code, header_path//": "//prefix//name//" = "//integer_text(code)// &
+                    ", the Fortran code is "//integer_text(codes(k)%code))
+      end do
+      do k = 1, size(codes)
+         if (codes(k)%c_name == "") cycle
+         call check(ctx, found(k) == 1, header_path//" declares "//prefix//trim(codes(k)%c_name)//" once (found "// &
+                    integer_text(found(k))//")")
+      end do
+   end subroutine c_header_every_enumerator
+
+   !> The header's list of the methods systems take ("Methods: HILLSTAB_METHOD_AUTO, _MAGNUS4,
+   !> ... or _GSL;") names exactly the method table's rows that say `systems`, in order.
+   subroutine c_header_system_methods(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: text, listed, expected
+      integer :: at, finish, k
+      text = file_text(ctx, header_path)
+      at = index(text, "Methods: HILLSTAB_METHOD_")
+      call check(ctx, at > 0, header_path//" lists the methods of systems ('Methods: HILLSTAB_METHOD_...')")
+      if (at == 0) return
+      at = at + len("Methods: ")
+      finish = at + index(text(at:), ";") - 2
+      listed = text(at:finish)
+      ! the comment's line breaks as single blanks
+      do
+         k = index(listed, " * ")
+         if (k == 0) exit
+         listed = listed(:k)//listed(k + 3:)
+      end do
+      do
+         k = index(listed, "  ")
+         if (k == 0) exit
+         listed = listed(:k)//listed(k + 2:)
+      end do
+      expected = ""
+      do k = lbound(method_table, 1), ubound(method_table, 1)
+         if (.not. method_takes_systems(k)) cycle
+         if (expected == "") then
+            expected = "HILLSTAB_METHOD_"//upper(method_name(k))
+         else if (k == last_system_method()) then
+            expected = expected//" or _"//upper(method_name(k))
+         else
+            expected = expected//", _"//upper(method_name(k))
+         end if
+      end do
+      call check(ctx, listed == expected, header_path//": the methods of systems are '"//listed// &
+                 "', the method table's are '"//expected//"'")
+   contains
+      integer function last_system_method() result(last)
+         integer :: i
+         last = -1
+         do i = lbound(method_table, 1), ubound(method_table, 1)
+            if (method_takes_systems(i)) last = i
+         end do
+      end function last_system_method
+   end subroutine c_header_system_methods
+
+   !> The lines of a file (empty when it cannot be opened: a failed check).
+   function file_lines(ctx, path) result(lines)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), intent(in) :: path
+      character(len=1000), allocatable :: lines(:)
+      character(len=1000) :: line
+      integer :: unit, ios
+      integer :: n, k
+      open (newunit=unit, file=path, status="old", action="read", iostat=ios)
+      call check(ctx, ios == 0, "cannot open "//path//" (run the tests from the worktree root)")
+      if (ios /= 0) then
+         allocate (lines(0))
+         return
+      end if
+      n = 0
+      do
+         read (unit, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         n = n + 1
+      end do
+      allocate (lines(n))
+      rewind (unit)
+      do k = 1, n
+         read (unit, '(a)') lines(k)
+      end do
+      close (unit)
+   end function file_lines
+
+   !> The text of a line without its comment (a `#` outside quotes), and the change of the
+   !> bracket depth along it.
+   subroutine python_code(line, code, depth_change)
+      character(len=*), intent(in) :: line
+      character(len=:), allocatable, intent(out) :: code
+      integer, intent(out) :: depth_change
+      character(len=1) :: quote
+      integer :: i
+      quote = " "
+      depth_change = 0
+      code = trim(line)
+      do i = 1, len_trim(line)
+         if (quote /= " ") then
+            if (line(i:i) == quote) quote = " "
+            cycle
+         end if
+         select case (line(i:i))
+         case ('"', "'"); quote = line(i:i)
+         case ("#"); code = line(:i - 1); return
+         case ("(", "[", "{"); depth_change = depth_change + 1
+         case (")", "]", "}"); depth_change = depth_change - 1
+         end select
+      end do
+   end subroutine python_code
+
+   !> The tokens of a Python literal: strings, integers (a leading minus included), names and
+   !> punctuation.
+   function python_tokens(text) result(tokens)
+      character(len=*), intent(in) :: text
+      type(token_t), allocatable :: tokens(:)
+      integer :: i, j, ios
+      type(token_t) :: t
+      allocate (tokens(0))
+      i = 1
+      do while (i <= len(text))
+         if (text(i:i) == " ") then
+            i = i + 1
+            cycle
+         end if
+         t = token_t()
+         if (text(i:i) == '"' .or. text(i:i) == "'") then
+            j = index(text(i + 1:), text(i:i)) + i
+            if (j == i) j = len(text) + 1
+            t%kind = "s"
+            t%text = text(i + 1:j - 1)
+            i = j + 1
+         else if (verify(text(i:i), "0123456789") == 0 .or. (text(i:i) == "-" .and. &
+                  verify(text(min(i + 1, len(text)):min(i + 1, len(text))), "0123456789") == 0 .and. i < len(text))) then
+            j = i + 1
+            do while (j <= len(text))
+               if (verify(text(j:j), "0123456789") /= 0) exit
+               j = j + 1
+            end do
+            t%kind = "i"
+            t%text = text(i:j - 1)
+            read (t%text, *, iostat=ios) t%value
+            if (ios /= 0) t%kind = "n"
+            i = j
+         else if (verify(text(i:i), "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_") == 0) then
+            j = i + 1
+            do while (j <= len(text))
+               if (verify(text(j:j), "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_0123456789.") /= 0) exit
+               j = j + 1
+            end do
+            t%kind = "n"
+            t%text = text(i:j - 1)
+            i = j
+         else
+            t%kind = "p"
+            t%text = text(i:i)
+            i = i + 1
+         end if
+         tokens = [tokens, t]
+      end do
+   end function python_tokens
+
+   !> Every code of the Python package against the Fortran tables. A module-level assignment to
+   !> upper-case names is read: integers (`ERR_IO = 4`, `NEED_VERDICT, NEED_GROWTH, NEED_TRACE
+   !> = 1, 2, 3`) must be known codes with the Fortran value; the dicts METHODS (the method
+   !> table), SYSTEM_METHODS (its rows for systems), SAMPLINGS (the sampling table) and
+   !> KIND_NAMES (`kind_name`) must hold every entry of their table and nothing else, and
+   !> VALUES the value names in the order of their codes; a dict of codes the test does not
+   !> know fails. Every known code with a Python name must be there, once.
+   subroutine python_codes(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: tables(5) = [character(len=16) :: "METHODS", "SYSTEM_METHODS", "SAMPLINGS", &
+         "KIND_NAMES", "VALUES"]
+      type(known_code_t), allocatable :: codes(:)
+      character(len=1000), allocatable :: lines(:)
+      character(len=:), allocatable :: statement, code_text, lhs, rhs, place
+      type(token_t), allocatable :: tokens(:)
+      integer, allocatable :: found(:)
+      integer :: f, i, depth, change, eq, tables_found(size(tables)), k
+      logical :: value_count_seen
+      codes = known_codes()
+      allocate (found(size(codes)), source=0)
+      tables_found = 0
+      value_count_seen = .false.
+      do f = 1, size(python_paths)
+         lines = file_lines(ctx, trim(python_paths(f)))
+         i = 0
+         do while (i < size(lines))
+            i = i + 1
+            if (verify(lines(i)(1:1), "ABCDEFGHIJKLMNOPQRSTUVWXYZ") /= 0) cycle
+            call python_code(lines(i), statement, depth)
+            do while (depth > 0 .and. i < size(lines))
+               i = i + 1
+               call python_code(lines(i), code_text, change)
+               statement = statement//" "//code_text
+               depth = depth + change
+            end do
+            eq = index(statement, "=")
+            if (eq == 0) cycle
+            if (statement(eq:min(eq + 1, len(statement))) == "==") cycle
+            lhs = trim(adjustl(statement(:eq - 1)))
+            if (verify(lhs, "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_, ") /= 0) cycle
+            rhs = trim(adjustl(statement(eq + 1:)))
+            place = trim(python_paths(f))//":"//integer_text(i)//": "
+            tokens = python_tokens(rhs)
+            do k = size(tables), 1, -1
+               if (tables(k) == lhs) exit
+            end do
+            if (k > 0) then
+               tables_found(k) = tables_found(k) + 1
+               call check_table(lhs, tokens, place)
+            else if (lhs == "VALUE_COUNT") then
+               value_count_seen = .true.
+               call check(ctx, rhs == "len(VALUES)" .or. rhs == integer_text(value_count), place// &
+                          "VALUE_COUNT = "//rhs//": len(VALUES) or "//integer_text(value_count))
+            else if (all(tokens%kind == "i" .or. (tokens%kind == "p" .and. tokens%text == ","))) then
+               call check_integers(lhs, tokens, place)
+            else if (any(tokens%kind == "i") .and. size(tokens) > 0) then
+               if (tokens(1)%text == "{" .or. tokens(1)%text == "(" .or. tokens(1)%text == "[") then
+                  call check(ctx, .false., place//lhs//" holds codes the test does not know (add its Fortran table "// &
+                             "to python_codes)")
+               end if
+            end if
+         end do
+      end do
+      do k = 1, size(tables)
+         call check(ctx, tables_found(k) == 1, "python/hillstab defines "//trim(tables(k))//" once (found "// &
+                    integer_text(tables_found(k))//")")
+      end do
+      call check(ctx, value_count_seen, "python/hillstab defines VALUE_COUNT")
+      do k = 1, size(codes)
+         if (codes(k)%py_name == "") cycle
+         call check(ctx, found(k) == 1, "python/hillstab defines "//trim(codes(k)%py_name)//" = "// &
+                    integer_text(codes(k)%code)//" once (found "//integer_text(found(k))//")")
+      end do
+   contains
+      !> `A, B = 1, 2`: each name a known code with the Fortran value.
+      subroutine check_integers(lhs, tokens, place)
+         character(len=*), intent(in) :: lhs, place
+         type(token_t), intent(in) :: tokens(:)
+         type(token_t), allocatable :: all_names(:), names(:)
+         integer :: values(size(tokens)), j, c, n_values, n_names
+         all_names = python_tokens(lhs)
+         allocate (names(size(all_names)))
+         n_names = 0
+         do j = 1, size(all_names)
+            if (all_names(j)%kind /= "n") cycle
+            n_names = n_names + 1
+            names(n_names) = all_names(j)
+         end do
+         names = names(:n_names)
+         n_values = 0
+         do j = 1, size(tokens)
+            if (tokens(j)%kind /= "i") cycle
+            n_values = n_values + 1
+            values(n_values) = tokens(j)%value
+         end do
+         call check(ctx, n_names == n_values, place//lhs//": as many values as names")
+         do j = 1, min(n_names, n_values)
+            c = code_named(codes, py_name=names(j)%text)
+            call check(ctx, c > 0, place//trim(names(j)%text)//" = "//integer_text(values(j))// &
+                       " is no code the test knows (add it to known_codes from its Fortran constant)")
+            if (c == 0) cycle
+            found(c) = found(c) + 1
+            call check(ctx, values(j) == codes(c)%code, place//trim(names(j)%text)//" = "// &
+                       integer_text(values(j))//", the Fortran code is "//integer_text(codes(c)%code))
+         end do
+      end subroutine check_integers
+
+      !> A dict or tuple of codes against its table.
+      subroutine check_table(name, tokens, place)
+         character(len=*), intent(in) :: name, place
+         type(token_t), intent(in) :: tokens(:)
+         character(len=80) :: keys(size(tokens))
+         integer :: values(size(tokens)), j, expected, n, n_keys
+         n_keys = 0
+         call check(ctx, size(tokens) > 0, place//name//" has a value")
+         if (size(tokens) == 0) return
+         if (name == "VALUES") then
+            call check(ctx, tokens(1)%text == "(" .or. tokens(1)%text == "[", place//"VALUES is a tuple")
+            do j = 1, size(tokens)
+               if (tokens(j)%kind /= "s") cycle
+               n_keys = n_keys + 1
+               keys(n_keys) = tokens(j)%text
+            end do
+            call check(ctx, n_keys == value_count, place//"VALUES has "//integer_text(n_keys)// &
+                       " names, HILLSTAB_VALUE_COUNT is "//integer_text(value_count))
+            do j = 1, min(n_keys, value_count)
+               call check(ctx, keys(j) == value_names(j - 1), place//"VALUES["//integer_text(j - 1)//"] is '"// &
+                          trim(keys(j))//"', the value of that index is '"//trim(value_names(j - 1))//"'")
+            end do
+            return
+         end if
+         call check(ctx, tokens(1)%text == "{", place//name//" is a dict")
+         ! the entries "key": code (KIND_NAMES: code: "name")
+         do j = 2, size(tokens) - 2
+            if (tokens(j + 1)%text /= ":") cycle
+            if (name == "KIND_NAMES") then
+               call check(ctx, tokens(j)%kind == "i" .and. tokens(j + 2)%kind == "s", place//name// &
+                          ": entries code: name")
+               n_keys = n_keys + 1
+               keys(n_keys) = tokens(j + 2)%text
+               values(n_keys) = tokens(j)%value
+            else
+               call check(ctx, tokens(j)%kind == "s" .and. tokens(j + 2)%kind == "i", place//name// &
+                          ": entries name: code")
+               n_keys = n_keys + 1
+               keys(n_keys) = tokens(j)%text
+               values(n_keys) = tokens(j + 2)%value
+            end if
+         end do
+         do j = 1, n_keys
+            select case (name)
+            case ("METHODS"); expected = method_from_name(trim(keys(j)))
+            case ("SYSTEM_METHODS")
+               expected = method_from_name(trim(keys(j)))
+               if (.not. method_takes_systems(expected)) expected = -1
+            case ("SAMPLINGS"); expected = sampling_from_name(trim(keys(j)))
+            case default
+               expected = -1
+               if (kind_name(values(j)) == trim(keys(j))) expected = values(j)
+            end select
+            call check(ctx, expected == values(j) .and. expected /= -1, place//name//": '"//trim(keys(j))//"' "// &
+                       integer_text(values(j))//", the Fortran table's code is "//integer_text(expected))
+            call check(ctx, count(values(:n_keys) == values(j)) == 1, place//name//": code "// &
+                       integer_text(values(j))//" once")
+         end do
+         ! every entry of the table there
+         select case (name)
+         case ("METHODS"); n = size(method_table)
+         case ("SYSTEM_METHODS"); n = count(method_table%systems)
+         case ("SAMPLINGS"); n = sampling_count
+         case default; n = count([(kind_name(j) /= "unknown", j = -5, 40)])
+         end select
+         call check(ctx, n_keys == n, place//name//" has "//integer_text(n_keys)//" entries, the Fortran "// &
+                    "table "//integer_text(n))
+      end subroutine check_table
+   end subroutine python_codes
+
+   !> The status codes as the header and Python document them, "0 ok, 1 round-off limited,
+   !> 2 failed" (`status_name`), in the header's text on batches and in Python's `floquet`.
+   subroutine status_codes_documented(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: paths(2) = [character(len=32) :: header_path, "python/hillstab/floquet.py"]
+      character(len=:), allocatable :: text
+      integer :: f, k
+      do f = 1, size(paths)
+         text = file_text(ctx, trim(paths(f)))
+         ! the comment's line breaks as single blanks
+         do
+            k = index(text, " * ")
+            if (k == 0) exit
+            text = text(:k)//text(k + 3:)
+         end do
+         do
+            k = index(text, "  ")
+            if (k == 0) exit
+            text = text(:k)//text(k + 2:)
+         end do
+         ! the header describes each ("1 round-off limited: the best value ..."), Python too
+         do k = status_ok, status_failed
+            call check(ctx, index(text, integer_text(k)//" "//status_name(k)) > 0, trim(paths(f))// &
+                       " documents status "//integer_text(k)//" "//status_name(k))
+         end do
+         call check(ctx, index(text, "("//integer_text(status_ok)//" "//status_name(status_ok)//", ") > 0 .or. &
+                    index(text, ": "//integer_text(status_ok)//" "//status_name(status_ok)//", ") > 0, &
+                    trim(paths(f))//" lists the statuses from "//integer_text(status_ok)//" "//status_name(status_ok))
+      end do
+   end subroutine status_codes_documented
 
    pure function upper(text) result(up)
       character(len=*), intent(in) :: text

@@ -178,7 +178,8 @@ contains
          bad_case_t(y//"/ &system cos=1 / &chart /", "system", "n: the degrees of freedom are not given"), &
          bad_case_t(y//"/ &system n=1 / &chart /", "system", "cos, sin: the system needs at least one"), &
          bad_case_t(y//"/ &system n=1, cos=1, foo=2 / &chart /", "system", "foo: unknown variable"), &
-         bad_case_t(y//"method='formula' / &system n=1, cos=1 / &chart /", "scene", "method"), &
+         bad_case_t(y//"method='formula' / &system n=1, cos=1 / &chart /", "scene", &
+                    "method: a system (model = 'system') takes method auto, magnus4, magnus6, rk, gsl, got 'formula'"), &
          bad_case_t(y//"task='series' / &system n=1, cos=1 / &series /", "scene", "task"), &
          bad_case_t(y//"columns='alpha S' / &system n=1, cos=1 / &chart /", "scene", "columns: unknown column 'S'"), &
          bad_case_t(y//"/ &system n=1, cos=1 / &physical omega=10 / &chart /", "physical", "omega"), &

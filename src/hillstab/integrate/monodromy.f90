@@ -1,13 +1,16 @@
 !> One entry point from a method choice to the monodromy trace of one period, and the
 !> table of the methods from which every other use derives: code, name, what each
-!> offers, a one-line description. A new monodromy method is its own module plus its
-!> row in `method_table` and its case in `monodromy_trace` (and its enum entry in
-!> include/hillstab.h when C sees it; test suite codes compares the two).
+!> offers, whether it applies to scalar models, to systems or both, a one-line description.
+!> A new monodromy method is its own module plus its row in `method_table` and its case in
+!> `monodromy_trace` (and, for systems, in hillstab_integrate_system's `system_monodromy`;
+!> its enum entry in include/hillstab.h when C sees it; test suite codes compares them).
 !>
 !> Methods (the codes are the C API's HILLSTAB_METHOD_* and the F77 METHOD codes):
 !> `auto` 0, `formula` 1 (the paper's closed 2-piece forms), `segments` 2 (N-piece
 !> piecewise-constant product), `magnus4` 3, `magnus6` 4, `rk` 5, `gsl` 6. All return the
-!> trace of the χ equation (47), i.e. S₁ when ε > 0.
+!> trace of the χ equation (47), i.e. S₁ when ε > 0. Systems take auto, magnus4, magnus6,
+!> rk and gsl (`method_takes_systems`), under the same codes: a system's method is a row of
+!> this table, never a second numbering.
 !>
 !>```fortran
 !> type(trace_t) :: tr
@@ -38,7 +41,7 @@ module hillstab_integrate_monodromy
       method_rk, method_gsl, method_name, method_from_name
    public :: method_info_t, method_table, method_info, method_names_text, method_description, method_is_exact, &
       method_uses_segments, method_gives_estimate, method_batches_rows, method_cost_grows, method_pieces, &
-      max_integrated_magnitude
+      max_integrated_magnitude, method_takes_scalars, method_takes_systems
    public :: need_nothing, need_verdict, need_growth, need_trace, verdict_is_certain, screen_tolerance, screen_safety
    public :: monodromy_segmented, trace_segmented, swing_monodromy, monodromy_trace, monodromy_trace_batch
    public :: batch_plan_t, prepare_batch, max_segments
@@ -88,23 +91,26 @@ module hillstab_integrate_monodromy
       logical :: batch_rows = .false.     !! shares work across the β of a chart row (`prepare_batch`)
       logical :: cost_grows = .false.     !! cost grows like √(|α| + |β|) (`max_integrated_magnitude`)
       integer :: pieces = 0               !! constant pieces of Q when fixed (formula: 2), else 0
+      logical :: scalars = .true.         !! applies to scalar models (`monodromy_trace`)
+      !> applies to systems (hillstab_integrate_system `system_monodromy`, under the same code)
+      logical :: systems = .false.
    end type method_info_t
 
-   !> The methods, in the order of their codes (0 … 6).
+   !> The methods, in the order of their codes (0 … 6), for scalar models and systems alike.
    type(method_info_t), parameter :: method_table(0:6) = [ &
       method_info_t("auto", "exact to tolerance, fastest (sixth-order Magnus, Richardson check)", &
-                    exact=.true., estimate=.true., batch_rows=.true.), &
+                    exact=.true., estimate=.true., batch_rows=.true., systems=.true.), &
       method_info_t("formula", "the paper's 2 pieces, eq. (37) (Mathieu: eq. (A3))", pieces=2), &
       method_info_t("segments", "n_segments constant pieces (endpoint, midpoint or average sampling)", &
                     segments=.true.), &
       method_info_t("magnus4", "fourth-order Magnus, adaptive mesh, Richardson check", &
-                    exact=.true., estimate=.true., cost_grows=.true.), &
+                    exact=.true., estimate=.true., cost_grows=.true., systems=.true.), &
       method_info_t("magnus6", "sixth-order Magnus, adaptive mesh, Richardson check", &
-                    exact=.true., estimate=.true., cost_grows=.true.), &
+                    exact=.true., estimate=.true., cost_grows=.true., systems=.true.), &
       method_info_t("rk", "DOP853 under the global error control", &
-                    exact=.true., estimate=.true., cost_grows=.true.), &
+                    exact=.true., estimate=.true., cost_grows=.true., systems=.true.), &
       method_info_t("gsl", "GSL odeiv2 rk8pd under the global error control, the independent reference", &
-                    exact=.true., estimate=.true., cost_grows=.true.)]
+                    exact=.true., estimate=.true., cost_grows=.true., systems=.true.)]
    !> The names, contiguous (passing `method_table%name` would copy the column on every call).
    character(len=len(method_table%name)), parameter :: method_names(0:6) = method_table%name
 
@@ -222,6 +228,7 @@ contains
       integer, intent(in) :: kind  !! one of the method_* constants
       type(method_info_t) :: info
       info%name = "unknown"
+      info%scalars = .false.
       if (kind >= lbound(method_table, 1) .and. kind <= ubound(method_table, 1)) info = method_table(kind)
    end function method_info
 
@@ -279,6 +286,22 @@ contains
       row = method_info(kind)
       method_gives_estimate = row%estimate
    end function method_gives_estimate
+
+   !> The method applies to scalar models (`monodromy_trace`); .false. for an unknown code.
+   elemental logical function method_takes_scalars(kind)
+      integer, intent(in) :: kind  !! one of the method_* constants
+      type(method_info_t) :: row
+      row = method_info(kind)
+      method_takes_scalars = row%scalars
+   end function method_takes_scalars
+
+   !> The method applies to systems (hillstab_integrate_system, under the same code).
+   elemental logical function method_takes_systems(kind)
+      integer, intent(in) :: kind  !! one of the method_* constants
+      type(method_info_t) :: row
+      row = method_info(kind)
+      method_takes_systems = row%systems
+   end function method_takes_systems
 
    !> The method shares work across the β of a chart row (`prepare_batch`, `monodromy_trace_batch`).
    elemental logical function method_batches_rows(kind)

@@ -52,6 +52,8 @@ module hillstab_integrate_system
    use hillstab_hill_system_floquet, only: symplectic_form
    use hillstab_hill_system_exponents, only: identity => identity_matrix
    use hillstab_integrate_rk, only: rk_system_t, rk_options_t, rk_integrate, rk_dop853
+   use hillstab_integrate_monodromy, only: method_table, method_auto, method_magnus4, method_magnus6, method_rk, &
+      method_gsl, method_name, method_from_name, method_takes_systems
    use hillstab_integrate_system_gsl, only: system_monodromy_gsl, gsl_system_result_t, system_propagator_gsl, &
       gsl_first_epsilon, gsl_second_epsilon
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -61,17 +63,20 @@ module hillstab_integrate_system
    public :: system_auto, system_magnus4, system_magnus6, system_rk, system_gsl, system_method_name, system_method_from_name
    public :: system_method_names_text, magnus_ladder, system_exponential, system_factors
 
-   !> Method auto: `system_magnus6` with the nodes shared along a chart row.
-   integer, parameter :: system_auto = 0
-   !> The fourth-order Magnus integrator (two Gauss nodes), Richardson-controlled.
-   integer, parameter :: system_magnus4 = 3
-   !> The sixth-order Magnus integrator (three Gauss nodes), Richardson-controlled.
-   integer, parameter :: system_magnus6 = 4
-   !> Dormand–Prince 8(5,3) on the fundamental matrix, two tolerances.
-   integer, parameter :: system_rk = 5
+   ! A system's methods are the rows of the one method table (hillstab_integrate_monodromy
+   ! `method_table`) that say `systems`: the names below are its codes, not a numbering of
+   ! their own.
+   !> Method auto (the table's `method_auto`): `system_magnus6` with the nodes shared along a chart row.
+   integer, parameter :: system_auto = method_auto
+   !> The fourth-order Magnus integrator (two Gauss nodes), Richardson-controlled (`method_magnus4`).
+   integer, parameter :: system_magnus4 = method_magnus4
+   !> The sixth-order Magnus integrator (three Gauss nodes), Richardson-controlled (`method_magnus6`).
+   integer, parameter :: system_magnus6 = method_magnus6
+   !> Dormand–Prince 8(5,3) on the fundamental matrix, two tolerances (`method_rk`).
+   integer, parameter :: system_rk = method_rk
    !> GSL's rk8pd on the fundamental matrix over the whole period, two epsilons
-   !> (hillstab_integrate_system_gsl): the reference of another library.
-   integer, parameter :: system_gsl = 6
+   !> (hillstab_integrate_system_gsl): the reference of another library (`method_gsl`).
+   integer, parameter :: system_gsl = method_gsl
 
    !> The step counts of the Magnus ladder, 4, 5, 6, 7 times powers of two (ratios at most
    !> 1.25); every even count from 4 on has its half among the earlier ones, and only those
@@ -83,7 +88,7 @@ module hillstab_integrate_system
 
    !> A method and its tolerance.
    type :: system_method_t
-      integer :: kind = system_auto        !! system_auto, _magnus4, _magnus6 or _rk
+      integer :: kind = system_auto        !! a method code that `method_takes_systems` (system_auto, …)
       real(wp) :: tolerance = 1.0e-10_wp   !! target error of Φ, relative to max(1, max|Φ_ij|)
    end type system_method_t
 
@@ -169,37 +174,37 @@ module hillstab_integrate_system
 
 contains
 
-   !> The name of a system method.
+   !> The name of a system method: the method table's name, "unknown" for a code that is
+   !> not a system's method.
    pure function system_method_name(kind) result(name)
-      integer, intent(in) :: kind  !! system_*
+      integer, intent(in) :: kind  !! system_* (a method_* code that `method_takes_systems`)
       character(len=:), allocatable :: name
-      select case (kind)
-      case (system_auto); name = "auto"
-      case (system_magnus4); name = "magnus4"
-      case (system_magnus6); name = "magnus6"
-      case (system_rk); name = "rk"
-      case (system_gsl); name = "gsl"
-      case default; name = "unknown"
-      end select
+      if (method_takes_systems(kind)) then
+         name = method_name(kind)
+      else
+         name = "unknown"
+      end if
    end function system_method_name
 
-   !> The method of a name (−1: none).
+   !> The method of a name, as the method table reads it (any case, blanks trimmed); −1 for
+   !> a name that is not a system's method.
    pure integer function system_method_from_name(name) result(kind)
       character(len=*), intent(in) :: name  !! a method name
-      select case (name)
-      case ("auto"); kind = system_auto
-      case ("magnus4"); kind = system_magnus4
-      case ("magnus6"); kind = system_magnus6
-      case ("rk"); kind = system_rk
-      case ("gsl"); kind = system_gsl
-      case default; kind = -1
-      end select
+      kind = method_from_name(name)
+      if (.not. method_takes_systems(kind)) kind = -1
    end function system_method_from_name
 
-   !> The methods systems take, for messages.
+   !> The methods systems take, for messages: "auto, magnus4, magnus6, rk, gsl" (the table's
+   !> rows that say `systems`, in the order of their codes).
    pure function system_method_names_text() result(text)
       character(len=:), allocatable :: text
-      text = "auto, magnus4, magnus6, rk, gsl"
+      integer :: k
+      text = ""
+      do k = lbound(method_table, 1), ubound(method_table, 1)
+         if (.not. method_takes_systems(k)) cycle
+         if (len(text) > 0) text = text//", "
+         text = text//method_name(k)
+      end do
    end function system_method_names_text
 
    !> The monodromy of the system at (α, β) by `method`.

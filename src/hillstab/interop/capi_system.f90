@@ -43,8 +43,8 @@ module hillstab_interop_capi_system
    use hillstab_integrate_system_point, only: resolve_exponents
    use hillstab_hill_system_matrix, only: matrix_system_t
    use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet
-   use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
-      system_auto, system_magnus4, system_magnus6, system_rk, system_gsl
+   use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy
+   use hillstab_integrate_monodromy, only: method_table, method_name, method_takes_systems
    use hillstab_interop_outcome, only: record_outcome
    use hillstab_interop_sizes, only: values_count_refusal
    use hillstab_interop_capi_models, only: c_text, max_c_text
@@ -310,9 +310,9 @@ contains
       integer(c_int), intent(in) :: method  !! HILLSTAB_METHOD_AUTO, _MAGNUS4, _MAGNUS6, _RK or _GSL
       real(c_double), intent(in) :: tolerance  !! the target error of Φ
       type(error_t), allocatable, intent(out) :: error  !! what is wrong; unallocated when both are valid
-      if (.not. any(method == [system_auto, system_magnus4, system_magnus6, system_rk, system_gsl])) then
+      if (.not. method_takes_systems(int(method))) then
          call set_error(error, err_invalid_parameter, "method: unknown system method code "// &
-            integer_text(int(method))//" (HILLSTAB_METHOD_AUTO 0, _MAGNUS4 3, _MAGNUS6 4, _RK 5 or _GSL 6)")
+            integer_text(int(method))//" ("//system_method_codes()//")")
       else if (.not. in_range(tolerance, min_system_tolerance, 1.0_wp, .false.)) then
          call set_error(error, err_invalid_parameter, "tolerance: must lie between 1e-15 and 1 (exclusive), "// &
             "got "//real_text(real(tolerance, wp)))
@@ -463,4 +463,31 @@ contains
       end if
       code = outcome_status(error)
    end function hillstab_c_system_floquet
+
+   !> The codes of the methods systems take, as the C enum names them: "HILLSTAB_METHOD_AUTO 0,
+   !> _MAGNUS4 3, _MAGNUS6 4, _RK 5 or _GSL 6" (the method table's rows that say `systems`).
+   pure function system_method_codes() result(text)
+      character(len=:), allocatable :: text
+      integer :: k, n, i, shown
+      character(len=:), allocatable :: name
+      n = count(method_table%systems)
+      text = ""
+      shown = 0
+      do k = lbound(method_table, 1), ubound(method_table, 1)
+         if (.not. method_takes_systems(k)) cycle
+         shown = shown + 1
+         if (shown == 1) then
+            text = "HILLSTAB_METHOD_"
+         else if (shown == n) then
+            text = text//" or _"
+         else
+            text = text//", _"
+         end if
+         name = method_name(k)
+         do i = 1, len(name)
+            if (name(i:i) >= "a" .and. name(i:i) <= "z") name(i:i) = achar(iachar(name(i:i)) - 32)
+         end do
+         text = text//name//" "//integer_text(k)
+      end do
+   end function system_method_codes
 end module hillstab_interop_capi_system
