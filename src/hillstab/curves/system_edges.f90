@@ -348,12 +348,13 @@ contains
    !> `root` the evaluation at the final estimate, `width` the final bracket's width (0 when
    !> q(root) is exactly 0), `other` the evaluation at its other end.
    subroutine find_root(system, form, row, sa, sb, root, other, width)
-      class(hill_system_t), intent(in) :: system
-      type(system_form_t), intent(in) :: form
-      type(edge_row_t), intent(inout) :: row
+      class(hill_system_t), intent(in) :: system  !! the system
+      type(system_form_t), intent(in) :: form  !! prepared at its ε
+      type(edge_row_t), intent(inout) :: row  !! α, method, nodes; counts the evaluations
       type(edge_sample_t), intent(in) :: sa, sb   !! the bracket's ends
-      type(edge_sample_t), intent(out) :: root, other
-      real(wp), intent(out) :: width
+      type(edge_sample_t), intent(out) :: root  !! the evaluation at the root
+      type(edge_sample_t), intent(out) :: other  !! the evaluation at the final bracket's other end
+      real(wp), intent(out) :: width  !! the final bracket's width
       type(edge_sample_t) :: a, b, c
       real(wp) :: d, e, tol, xm, p, q, r, s, xtol
       integer :: step
@@ -423,12 +424,13 @@ contains
    !> (q positive at the samples, smallest at the middle one), stopped at the first evaluation
    !> decided inside (q < −δq), returned in `inside` (`found`).
    subroutine dip_probe(system, form, row, lo, hi, inside, found)
-      class(hill_system_t), intent(in) :: system
-      type(system_form_t), intent(in) :: form
-      type(edge_row_t), intent(inout) :: row
-      real(wp), intent(in) :: lo, hi
-      type(edge_sample_t), intent(out) :: inside
-      logical, intent(out) :: found
+      class(hill_system_t), intent(in) :: system  !! the system
+      type(system_form_t), intent(in) :: form  !! prepared at its ε
+      type(edge_row_t), intent(inout) :: row  !! α, method, nodes; counts the evaluations
+      real(wp), intent(in) :: lo  !! the interval, lower end
+      real(wp), intent(in) :: hi  !! the interval, upper end
+      type(edge_sample_t), intent(out) :: inside  !! an evaluation decided inside (when found)
+      logical, intent(out) :: found  !! a tongue was found
       real(wp), parameter :: ratio = 0.6180339887498949_wp
       type(edge_sample_t) :: s1, s2
       real(wp) :: a, b
@@ -471,10 +473,12 @@ contains
    !> The verdicts on the two sides of an edge at β: at β ∓ δ, δ from `start` growing fourfold
    !> up to `cap` until both are decided.
    function check_sides(system, form, row, beta, start, cap) result(sides)
-      class(hill_system_t), intent(in) :: system
-      type(system_form_t), intent(in) :: form
-      type(edge_row_t), intent(inout) :: row
-      real(wp), intent(in) :: beta, start, cap
+      class(hill_system_t), intent(in) :: system  !! the system
+      type(system_form_t), intent(in) :: form  !! prepared at its ε
+      type(edge_row_t), intent(inout) :: row  !! α, method, nodes; counts the evaluations
+      real(wp), intent(in) :: beta  !! the edge
+      real(wp), intent(in) :: start  !! the first δ
+      real(wp), intent(in) :: cap  !! the largest δ
       type(side_check_t) :: sides
       real(wp) :: delta
       logical :: below_done, above_done
@@ -504,10 +508,10 @@ contains
    !> or |ω_i − ω_j| = kΩ (difference type: when G ≠ 0, K is unsymmetric or the system is
    !> not Hamiltonian), Ω = 2π/P, k = 1 … 8; found by bisection over the samples `betas`.
    subroutine predicted_combinations(system, form, betas, predicted)
-      class(hill_system_t), intent(in) :: system
-      type(system_form_t), intent(in) :: form
+      class(hill_system_t), intent(in) :: system  !! the system
+      type(system_form_t), intent(in) :: form  !! prepared at its ε
       real(wp), intent(in) :: betas(:)                  !! ascending samples
-      real(wp), allocatable, intent(out) :: predicted(:)
+      real(wp), allocatable, intent(out) :: predicted(:)  !! the predicted β
       real(wp), allocatable :: omega(:, :), p0(:, :), b0(:, :)
       logical, allocatable :: valid(:)
       real(wp) :: big_omega, lo, hi, f_lo, f_hi, mid, f_mid
@@ -556,7 +560,10 @@ contains
       !> ω_i + ω_l − kΩ (kind 1) or |ω_i − ω_l| − kΩ (kind 2).
       pure real(wp) function condition(w, i, l, k, kind)
          real(wp), intent(in) :: w(:)
-         integer, intent(in) :: i, l, k, kind
+         integer, intent(in) :: i
+         integer, intent(in) :: l
+         integer, intent(in) :: k
+         integer, intent(in) :: kind
          if (kind == 1) then
             condition = w(i) + w(l) - k*big_omega
          else
