@@ -1,7 +1,10 @@
 !> Tests of the transition curves of systems (hillstab_curves_system_boundaries): Hill's
 !> method with blocks against the Mathieu characteristic values for one equation and for a
 !> decoupled pair, each point confirmed by the monodromy; the combination tongue's edges
-!> found by root-finding on Broucke's discriminant against first-order perturbation theory.
+!> found by root-finding on Broucke's discriminant against first-order perturbation theory;
+!> the edges of a damped combination tongue, of narrow tongues of a 3-DOF system, of
+!> overlapping tongues and of random systems against an independent fine scan of the
+!> point routine's verdict and bisection on its largest |λ| or discriminant.
 module test_system_boundaries
    use hillstab_core_kinds, only: wp, pi
    use hillstab_core_error, only: error_t
@@ -12,7 +15,9 @@ module test_system_boundaries
    use hillstab_hill_system, only: system_form_t, prepare_system
    use hillstab_hill_system_matrix, only: matrix_system_t
    use hillstab_hill_system_floquet, only: kind_plus_one, kind_minus_one, kind_combination
-   use hillstab_integrate_system, only: system_method_t, system_auto
+   use hillstab_integrate_system, only: system_method_t, system_auto, system_nodes_t, system_monodromy_t
+   use hillstab_integrate_system_point, only: system_point
+   use hillstab_hill_system_floquet, only: system_floquet_t, verdict_unstable, verdict_marginal
    use hillstab_curves_system_boundaries
    use hillstab_testing
    implicit none
@@ -26,7 +31,12 @@ contains
       suite = new_testsuite("system_boundaries", [ &
          new_unittest("hill_blocks_are_mathieu", hill_blocks_are_mathieu), &
          new_unittest("decoupled_pair_curves", decoupled_pair_curves), &
-         new_unittest("combination_edges_first_order", combination_edges_first_order)])
+         new_unittest("combination_edges_first_order", combination_edges_first_order), &
+         new_unittest("damped_combination_tongue", damped_combination_tongue), &
+         new_unittest("narrow_tongues_three_dof", narrow_tongues_three_dof), &
+         new_unittest("discriminant_edges_within_estimate", discriminant_edges_within_estimate), &
+         new_unittest("overlapping_tongues_no_false_edge", overlapping_tongues_no_false_edge), &
+         new_unittest("random_systems_audit", random_systems_audit)])
    end function collect_system_boundaries
 
    !> A system from its lists.
@@ -56,14 +66,15 @@ contains
          if (expected(k) < lo + 1.0e-6_wp .or. expected(k) > hi - 1.0e-6_wp) cycle
          hits = 0
          do j = 1, size(found)
-            if (found(j)%kind == kind_combination) cycle
+            if (abs(found(j)%kind) == kind_combination) cycle
+            ! a kind negated: the same crossing with both sides unstable (overlapping tongues)
             if (abs(found(j)%beta - expected(k)) <= tol*max(1.0_wp, abs(expected(k))) .and. &
-                found(j)%kind == merge(kind_plus_one, kind_minus_one, signs(k) > 0)) hits = hits + 1
+                abs(found(j)%kind) == merge(kind_plus_one, kind_minus_one, signs(k) > 0)) hits = hits + 1
          end do
          call check(ctx, hits >= 1, what//": a characteristic value found")
       end do
       do j = 1, size(found)
-         if (found(j)%kind == kind_combination) cycle
+         if (abs(found(j)%kind) == kind_combination) cycle
          call check(ctx, minval(abs(expected - found(j)%beta)) <= tol*max(1.0_wp, abs(found(j)%beta)), &
                     what//": no spurious curve")
          call check(ctx, found(j)%status == status_ok, what//": confirmed by the monodromy")
@@ -172,4 +183,387 @@ contains
          modal_coupling = u(1, 1)*u(1, 2) + 2.0_wp*u(2, 1)*u(2, 2)
       end function modal_coupling
    end subroutine combination_edges_first_order
+
+   !> The reference at one point: the point routine (a fresh node set) at `tolerance`.
+   subroutine reference_point(system, form, alpha, beta, tolerance, verdict, log_top, discriminant)
+      type(matrix_system_t), intent(in) :: system
+      type(system_form_t), intent(in) :: form
+      real(wp), intent(in) :: alpha, beta, tolerance
+      integer, intent(out) :: verdict
+      real(wp), intent(out) :: log_top, discriminant
+      type(system_nodes_t) :: nodes
+      type(system_monodromy_t) :: r
+      type(system_floquet_t) :: f
+      type(error_t), allocatable :: error
+      call system_point(system, form, alpha, beta, system_method_t(system_auto, tolerance), nodes, r, f, error)
+      verdict = verdict_marginal
+      log_top = 0.0_wp
+      discriminant = 0.0_wp
+      if (allocated(error)) return
+      verdict = f%verdict
+      log_top = f%log_lambda_max
+      discriminant = f%discriminant
+   end subroutine reference_point
+
+   !> The reference's sign at β: what = 1, ln max|λ| > 0; 2, D < 0; 3, the verdict unstable.
+   logical function reference_inside(system, form, alpha, beta, what)
+      type(matrix_system_t), intent(in) :: system
+      type(system_form_t), intent(in) :: form
+      real(wp), intent(in) :: alpha, beta
+      integer, intent(in) :: what
+      integer :: verdict
+      real(wp) :: log_top, d
+      call reference_point(system, form, alpha, beta, 1.0e-12_wp, verdict, log_top, d)
+      select case (what)
+      case (1); reference_inside = log_top > 0.0_wp
+      case (2); reference_inside = d < 0.0_wp
+      case default; reference_inside = verdict == verdict_unstable
+      end select
+   end function reference_inside
+
+   !> Bisection of the reference's sign over [lo, hi] (signs differ) to 1e-13 max(1, |β|).
+   real(wp) function reference_edge(system, form, alpha, lo, hi, what) result(edge)
+      type(matrix_system_t), intent(in) :: system
+      type(system_form_t), intent(in) :: form
+      real(wp), intent(in) :: alpha, lo, hi
+      integer, intent(in) :: what
+      real(wp) :: a, b, mid
+      logical :: at_a
+      integer :: step
+      a = lo
+      b = hi
+      at_a = reference_inside(system, form, alpha, a, what)
+      do step = 1, 80
+         mid = 0.5_wp*(a + b)
+         if (reference_inside(system, form, alpha, mid, what) .eqv. at_a) then
+            a = mid
+         else
+            b = mid
+         end if
+         if (b - a <= 1.0e-13_wp*max(1.0_wp, abs(mid))) exit
+      end do
+      edge = 0.5_wp*(a + b)
+   end function reference_edge
+
+   !> The brackets of a fine scan of the reference verdict: consecutive decided samples (marginal
+   !> ones skipped) of which one is stable and the other unstable.
+   subroutine scan_transitions(system, form, alpha, lo, hi, count, los, his)
+      type(matrix_system_t), intent(in) :: system
+      type(system_form_t), intent(in) :: form
+      real(wp), intent(in) :: alpha, lo, hi
+      integer, intent(in) :: count
+      real(wp), allocatable, intent(out) :: los(:), his(:)
+      integer :: j, verdict, last_verdict
+      real(wp) :: beta, last_beta, log_top, d
+      allocate (los(0), his(0))
+      last_verdict = verdict_marginal
+      last_beta = lo
+      do j = 0, count - 1
+         beta = lo + (hi - lo)*j/(count - 1)
+         call reference_point(system, form, alpha, beta, 1.0e-10_wp, verdict, log_top, d)
+         if (verdict == verdict_marginal) cycle
+         if (last_verdict /= verdict_marginal .and. verdict /= last_verdict) then
+            los = [los, last_beta]
+            his = [his, beta]
+         end if
+         last_verdict = verdict
+         last_beta = beta
+      end do
+   end subroutine scan_transitions
+
+   !> The reference verdicts on the two sides of β at β ∓ d, d from 1e-9 max(1, |β|) growing
+   !> fourfold up to `cap` until both are decided.
+   subroutine reference_sides(system, form, alpha, beta, cap, below, above)
+      type(matrix_system_t), intent(in) :: system
+      type(system_form_t), intent(in) :: form
+      real(wp), intent(in) :: alpha, beta, cap
+      integer, intent(out) :: below, above
+      real(wp) :: d, log_top, disc
+      d = min(1.0e-9_wp*max(1.0_wp, abs(beta)), cap)
+      do
+         call reference_point(system, form, alpha, beta - d, 1.0e-11_wp, below, log_top, disc)
+         call reference_point(system, form, alpha, beta + d, 1.0e-11_wp, above, log_top, disc)
+         if ((below /= verdict_marginal .and. above /= verdict_marginal) .or. d >= cap) exit
+         d = min(4.0_wp*d, cap)
+      end do
+   end subroutine reference_sides
+
+   !> Every edge of `found` is what its kind says: a positive kind stable on one side and
+   !> unstable on the other, a negated kind unstable on both (the reference's verdicts).
+   subroutine edges_are_transitions(ctx, system, form, alpha, found, what)
+      type(test_context_t), intent(inout) :: ctx
+      type(matrix_system_t), intent(in) :: system
+      type(system_form_t), intent(in) :: form
+      real(wp), intent(in) :: alpha
+      type(system_boundary_t), intent(in) :: found(:)
+      character(len=*), intent(in) :: what
+      integer :: k, below, above
+      real(wp) :: gap
+      do k = 1, size(found)
+         gap = 1.0e-3_wp
+         if (k > 1) gap = min(gap, found(k)%beta - found(k - 1)%beta)
+         if (k < size(found)) gap = min(gap, found(k + 1)%beta - found(k)%beta)
+         if (gap <= 0.0_wp) cycle
+         call reference_sides(system, form, alpha, found(k)%beta, 0.45_wp*gap, below, above)
+         if (below == verdict_marginal .or. above == verdict_marginal) then
+            call check(ctx, found(k)%status /= status_ok .or. found(k)%route == route_hill, &
+                       what//": an edge the reference cannot decide is not claimed confirmed")
+            cycle
+         end if
+         if (found(k)%kind > 0) then
+            call check(ctx, below /= above, what//": a stability edge is one ("//trim(real_text(found(k)%beta))// &
+                       ")")
+         else
+            call check(ctx, below == verdict_unstable .and. above == verdict_unstable, &
+                       what//": a negated kind is unstable on both sides")
+         end if
+      end do
+   end subroutine edges_are_transitions
+
+   pure function real_text(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=32) :: text
+      write (text, '(es22.14)') x
+   end function real_text
+
+   !> The damped pair of the issue: its combination tongue (β ≈ 1.46 … 1.63 at α = 0.2875)
+   !> has both edges (route_modulus), each confirmed by the point routine and at the fine scan's
+   !> bisection on ln max|λ| within its error estimate.
+   subroutine damped_combination_tongue(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(matrix_system_t) :: pair
+      type(system_form_t) :: form
+      type(system_boundary_t), allocatable :: found(:), tongue(:)
+      type(error_t), allocatable :: error
+      real(wp), allocatable :: los(:), his(:)
+      real(wp) :: betas(400), alpha, edge
+      integer :: k
+      pair = system_of(2, [1.621_wp, 0.1409_wp, 0.1409_wp, 1.8294_wp], [1.3493_wp, -2.0399_wp, -2.0399_wp, &
+                       -1.5668_wp], mass=[0.8768_wp, 0.1721_wp, 0.1721_wp, 1.3369_wp])
+      call pair%set_values("damping", [0.05_wp, 0.01_wp, 0.01_wp, 0.03_wp], error)
+      call pair%check_values(error)
+      call prepare_system(pair, 0.03_wp, form, error)
+      call check(ctx, .not. allocated(error), "prepared")
+      if (allocated(error)) return
+      alpha = 0.2875_wp
+      betas = [(0.5_wp + 6.5_wp*k/399.0_wp, k=0, 399)]
+      call system_boundaries(pair, form, alpha, betas, system_method_t(system_auto, 1.0e-10_wp), found, error)
+      call check(ctx, .not. allocated(error), "boundaries computed")
+      if (allocated(error)) return
+      ! between the tongues at −1 ending at 1.4353 and starting at 1.7000
+      tongue = pack(found, found%kind == kind_combination .and. found%beta > 1.44_wp .and. found%beta < 1.69_wp)
+      call check(ctx, size(tongue) == 2, "two combination edges in 1.44 .. 1.69")
+      call scan_transitions(pair, form, alpha, 1.44_wp, 1.69_wp, 2000, los, his)
+      call check(ctx, size(los) == 2, "the reference scan: two transitions")
+      if (size(tongue) /= 2 .or. size(los) /= 2) return
+      do k = 1, 2
+         call check(ctx, tongue(k)%route == route_modulus, "by the largest modulus")
+         call check(ctx, tongue(k)%status == status_ok, "confirmed")
+         edge = reference_edge(pair, form, alpha, los(k), his(k), 1)
+         call check(ctx, tongue(k)%beta, edge, abs=tongue(k)%error_estimate, message="edge vs bisection on ln max|l|")
+         call check(ctx, tongue(k)%error_estimate < 1.0e-7_wp, "a tight estimate")
+      end do
+      call edges_are_transitions(ctx, pair, form, alpha, found, "damped pair")
+   end subroutine damped_combination_tongue
+
+   !> The 3-DOF system of the issue at α = 0.05: its narrow combination tongues at β ≈ 1.757982
+   !> and 2.203680 (|λ| ≈ 1.002) have two edges each, at the fine scan's transitions.
+   subroutine narrow_tongues_three_dof(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(matrix_system_t) :: three
+      type(system_form_t) :: form
+      type(system_boundary_t), allocatable :: found(:), tongue(:)
+      type(error_t), allocatable :: error
+      real(wp), allocatable :: los(:), his(:)
+      real(wp) :: betas(400), alpha, edge, centres(2) = [1.757982_wp, 2.203680_wp]
+      integer :: k, c
+      three = three_dof()
+      call prepare_system(three, 0.0_wp, form, error)
+      alpha = 0.05_wp
+      betas = [(0.5_wp + 9.5_wp*k/399.0_wp, k=0, 399)]
+      call system_boundaries(three, form, alpha, betas, system_method_t(system_auto, 1.0e-10_wp), found, error)
+      call check(ctx, .not. allocated(error), "boundaries computed")
+      if (allocated(error)) return
+      do c = 1, 2
+         tongue = pack(found, found%kind == kind_combination .and. abs(found%beta - centres(c)) < 0.01_wp)
+         call check(ctx, size(tongue) == 2, "two edges around "//trim(real_text(centres(c))))
+         call scan_transitions(three, form, alpha, centres(c) - 0.008_wp, centres(c) + 0.008_wp, 1500, los, his)
+         call check(ctx, size(los) == 2, "the reference scan: two transitions")
+         if (size(tongue) /= 2 .or. size(los) /= 2) cycle
+         do k = 1, 2
+            call check(ctx, tongue(k)%status == status_ok, "confirmed")
+            edge = reference_edge(three, form, alpha, los(k), his(k), 3)
+            ! the verdict's marginal band around the edge is about 1e-9 wide
+            call check(ctx, tongue(k)%beta, edge, abs=tongue(k)%error_estimate + 1.0e-8_wp, &
+                       message="edge vs bisection on the verdict")
+         end do
+      end do
+      call edges_are_transitions(ctx, three, form, alpha, found, "three DOF")
+   end subroutine narrow_tongues_three_dof
+
+   function three_dof() result(s)
+      type(matrix_system_t) :: s
+      type(error_t), allocatable :: error
+      s = system_of(3, [1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], &
+                    [-0.6_wp, -0.2_wp, 0.0_wp, -0.2_wp, -0.1_wp, -0.2_wp, 0.0_wp, -0.2_wp, -0.4_wp], &
+                    mass=[1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.8_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.2_wp])
+      call s%set_values("k0", [0.6_wp, -0.3_wp, 0.0_wp, -0.3_wp, 0.6_wp, -0.3_wp, 0.0_wp, -0.3_wp, 0.6_wp], error)
+      call s%set_values("sin", [0.705_wp, -0.2843_wp, 0.014_wp, -0.2843_wp, -0.2327_wp, 0.0584_wp, 0.014_wp, &
+                                0.0584_wp, -0.1682_wp], error)
+      call s%check_values(error)
+      if (allocated(error)) error stop error%message
+   end function three_dof
+
+   !> The pendula pair: every edge of Broucke's discriminant (the tongues at ω₁ + ω₂ = π and
+   !> 2π) lies within its error estimate of a bisection of D to 1e-13 at tolerance 1e-12.
+   subroutine discriminant_edges_within_estimate(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(matrix_system_t) :: pair
+      type(system_form_t) :: form
+      type(system_boundary_t), allocatable :: found(:)
+      type(error_t), allocatable :: error
+      real(wp) :: betas(121), alphas(2) = [0.06_wp, 0.5_wp], edge, w
+      integer :: k, a, seen
+      pair = system_of(2, [2.0_wp, -1.0_wp, -1.0_wp, 1.5_wp], [-1.0_wp, 0.0_wp, 0.0_wp, -0.5_wp], &
+                       mass=[1.0_wp, 0.0_wp, 0.0_wp, 0.25_wp])
+      call prepare_system(pair, 0.0_wp, form, error)
+      betas = [(0.025_wp*k, k=0, 120)]
+      seen = 0
+      do a = 1, size(alphas)
+         call system_boundaries(pair, form, alphas(a), betas, system_method_t(system_auto, 1.0e-10_wp), found, error)
+         call check(ctx, .not. allocated(error), "boundaries computed")
+         if (allocated(error)) return
+         do k = 1, size(found)
+            if (found(k)%route /= route_discriminant) cycle
+            seen = seen + 1
+            ! a bracket around the edge that holds no other edge
+            w = 2.0_wp*found(k)%error_estimate + 1.0e-9_wp
+            do while (reference_inside(pair, form, alphas(a), found(k)%beta - w, 2) .eqv. &
+                      reference_inside(pair, form, alphas(a), found(k)%beta + w, 2))
+               w = 1.5_wp*w
+               if (w > 0.4_wp*gap_of(k)) exit
+            end do
+            edge = reference_edge(pair, form, alphas(a), found(k)%beta - w, found(k)%beta + w, 2)
+            call check(ctx, found(k)%beta, edge, abs=found(k)%error_estimate, message="edge within its estimate")
+         end do
+      end do
+      call check(ctx, seen == 8, "four tongues' edges")
+
+   contains
+
+      real(wp) function gap_of(k)
+         integer, intent(in) :: k
+         gap_of = 1.0_wp
+         if (k > 1) gap_of = min(gap_of, found(k)%beta - found(k - 1)%beta)
+         if (k < size(found)) gap_of = min(gap_of, found(k + 1)%beta - found(k)%beta)
+      end function gap_of
+   end subroutine discriminant_edges_within_estimate
+
+   !> Where the pendula's simple tongues overlap (α = 1.3, 1.45), and for the 3-DOF system,
+   !> every stability edge is a transition of the reference verdict and every negated kind
+   !> is unstable on both sides; some negated kinds occur.
+   subroutine overlapping_tongues_no_false_edge(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(matrix_system_t) :: pair
+      type(system_form_t) :: form
+      type(system_boundary_t), allocatable :: found(:)
+      type(error_t), allocatable :: error
+      real(wp) :: betas(121), alphas(2) = [1.3_wp, 1.45_wp]
+      integer :: k, a, negated
+      pair = system_of(2, [2.0_wp, -1.0_wp, -1.0_wp, 1.5_wp], [-1.0_wp, 0.0_wp, 0.0_wp, -0.5_wp], &
+                       mass=[1.0_wp, 0.0_wp, 0.0_wp, 0.25_wp])
+      call prepare_system(pair, 0.0_wp, form, error)
+      betas = [(0.025_wp*k, k=0, 120)]
+      negated = 0
+      do a = 1, size(alphas)
+         call system_boundaries(pair, form, alphas(a), betas, system_method_t(system_auto, 1.0e-10_wp), found, error)
+         call check(ctx, .not. allocated(error), "boundaries computed")
+         if (allocated(error)) return
+         negated = negated + count(found%kind < 0)
+         call edges_are_transitions(ctx, pair, form, alphas(a), found, "pendula")
+      end do
+      call check(ctx, negated > 0, "crossings inside unstable regions are labelled")
+   end subroutine overlapping_tongues_no_false_edge
+
+   !> Random systems, 2–4 DOF, damped and not: a fine scan (4000 samples) of the reference
+   !> verdict has no transition without an edge of the task (missed), and every stability
+   !> edge is a transition (false).
+   subroutine random_systems_audit(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(matrix_system_t) :: s
+      type(system_form_t) :: form
+      type(system_boundary_t), allocatable :: found(:)
+      type(error_t), allocatable :: error
+      real(wp), allocatable :: los(:), his(:)
+      real(wp) :: betas(100), lo, hi, alpha
+      integer :: case, n, k, missed, j
+      integer, parameter :: dofs(4) = [2, 3, 2, 4]
+      logical, parameter :: damped(4) = [.false., .true., .true., .false.]
+      integer :: seed
+      seed = 12345
+      lo = 0.5_wp
+      hi = 3.0_wp
+      alpha = 0.4_wp
+      betas = [(lo + (hi - lo)*k/99.0_wp, k=0, 99)]
+      do case = 1, size(dofs)
+         n = dofs(case)
+         s = random_system(n, damped(case), seed)
+         call prepare_system(s, merge(0.02_wp, 0.0_wp, damped(case)), form, error)
+         call check(ctx, .not. allocated(error), "prepared")
+         if (allocated(error)) return
+         call system_boundaries(s, form, alpha, betas, system_method_t(system_auto, 1.0e-10_wp), found, error)
+         call check(ctx, .not. allocated(error), "boundaries computed")
+         if (allocated(error)) return
+         call scan_transitions(s, form, alpha, lo, hi, 4000, los, his)
+         missed = 0
+         do j = 1, size(los)
+            if (count(found%kind > 0 .and. found%beta >= los(j) .and. found%beta <= his(j)) == 0) missed = missed + 1
+         end do
+         call check(ctx, missed == 0, "random system "//trim(real_text(real(case, wp)))//": no transition missed")
+         call edges_are_transitions(ctx, s, form, alpha, found, "random system")
+      end do
+   end subroutine random_systems_audit
+
+   !> A random system: M = I + small symmetric, B = I + small symmetric, K0 symmetric, a
+   !> symmetric drive, and damping C = 0.02 I + small when `damped`.
+   function random_system(n, damped, seed) result(s)
+      integer, intent(in) :: n
+      logical, intent(in) :: damped
+      integer, intent(inout) :: seed
+      type(matrix_system_t) :: s
+      type(error_t), allocatable :: error
+      real(wp) :: m(n, n), b(n, n), k0(n, n), c(n, n), d(n, n)
+      integer :: i
+      m = symmetric(0.1_wp)
+      b = symmetric(0.2_wp)
+      k0 = symmetric(0.3_wp)
+      d = symmetric(0.6_wp)
+      c = symmetric(0.005_wp)
+      do i = 1, n
+         m(i, i) = m(i, i) + 1.0_wp + 0.3_wp*i
+         b(i, i) = b(i, i) + 1.0_wp
+         k0(i, i) = k0(i, i) + 0.4_wp*i
+         c(i, i) = c(i, i) + 0.02_wp
+      end do
+      s = system_of(n, reshape(b, [n*n]), reshape(d, [n*n]), mass=reshape(m, [n*n]))
+      call s%set_values("k0", reshape(k0, [n*n]), error)
+      if (damped) call s%set_values("damping", reshape(c, [n*n]), error)
+      call s%check_values(error)
+      if (allocated(error)) error stop error%message
+
+   contains
+
+      function symmetric(size_) result(a)
+         real(wp), intent(in) :: size_
+         real(wp) :: a(n, n)
+         integer :: p, q
+         do q = 1, n
+            do p = 1, q
+               seed = modulo(1103515245*int(seed, kind=8) + 12345, 2147483648_8)
+               a(p, q) = size_*(2.0_wp*real(seed, wp)/2147483648.0_wp - 1.0_wp)
+               a(q, p) = a(p, q)
+            end do
+         end do
+      end function symmetric
+   end function random_system
 end module test_system_boundaries

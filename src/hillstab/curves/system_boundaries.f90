@@ -1,6 +1,7 @@
-!> Transition curves of a system of Hill equations at one α: the β where a multiplier pair
-!> passes +1 or −1 (simple resonances) and the β where two multipliers of opposite Krein
-!> signature meet on the unit circle and leave it (combination resonances).
+!> Stability edges of a system of Hill equations at one α: the β where a multiplier pair
+!> passes +1 or −1 (simple resonances), where two multipliers meet and leave the unit circle
+!> off the real axis (combination resonances), and, for a damped system, where the largest
+!> |λ| crosses 1. Every edge is checked on both sides by the monodromy's verdict.
 !>
 !> - Simple resonances by Hill's method with block matrices: a solution with multiplier ±1 is
 !>   x = Σ_k c_k e^{iν_k τ}, ν_k = (k + s/2) 2π/P (s = 0: +1, s = 1: −1), and the equation
@@ -9,12 +10,24 @@
 !>   (p + βb) taken from K at 2H + 2 points of the period (exact for H harmonics), |k| ≤ K
 !>   modes, solved by LAPACK zggev. The truncation is checked by a second solve with more
 !>   modes: a β whose two values differ by more than 1e-8 max(1, |β|) is dropped, the
-!>   difference is its error estimate. Each β is then checked against the monodromy: the
-!>   distance of the nearest multiplier from ±1 (`check`).
-!> - Combination resonances (Hamiltonian n = 2) by root-finding on Broucke's discriminant
-!>   D(β) = a₁² − 4a₂ + 8, negative inside a combination tongue: its sign changes over the
-!>   samples of a row, each bracket closed by bisection to 1e-12 max(1, |β|); for other n by
-!>   bisection on the verdict `kind_combination`.
+!>   difference is its error estimate; `check` is the distance of the nearest multiplier
+!>   from ±1 at it.
+!> - The other edges by root-finding on a signed quantity q, negative inside an unstable
+!>   region (hillstab_curves_system_edges): Broucke's discriminant D = a₁² − 4a₂ + 8
+!>   (Hamiltonian, n = 2: `route_discriminant`), the nearest two z = λ + 1/λ's Re (z_k − z_l)²
+!>   (Hamiltonian, n ≥ 3: `route_collision`), −ln max|λ| (dissipative, tr D < 0:
+!>   `route_modulus`, whose edges at +1 and −1 are left to Hill's method where it has them).
+!>   q is sampled at the row's β and, around each combination resonance predicted at α = 0
+!>   (ω_i + ω_j = kΩ, and |ω_i − ω_j| = kΩ where it can open), at 10 more β within half a
+!>   spacing; every sign change is closed by Brent's method on q itself, and every positive
+!>   local minimum of q is probed by golden section for a tongue narrower than the samples.
+!>   `check` is |q| at the edge over its error bound δq; the error estimate is the final
+!>   bracket plus δq/|q'|.
+!> - Both sides: the verdict at β ∓ δ, δ growing until decided, at most 0.45 of the distance
+!>   to the next edge. Stable on one side, unstable on the other: a stability edge. Unstable
+!>   on both (two overlapping tongues): the kind negated. Stable on both (a touch, as at
+!>   α = 0): dropped. Undecided within the cap: status_failed, except for Hill's points,
+!>   whose status is that of their check.
 !>
 !>```fortran
 !> type(system_boundary_t), allocatable :: found(:)
@@ -27,27 +40,35 @@ module hillstab_curves_system_boundaries
    use hillstab_ffi_lapack, only: zggev
    use hillstab_hill_system, only: hill_system_t, system_form_t
    use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet, kind_plus_one, kind_minus_one, &
-      kind_combination, verdict_unstable
-   use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy
+      kind_combination, kind_undecided, verdict_stable
+   use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_monodromy
+   use hillstab_curves_system_edges, only: edge_row_t, edge_sample_t, side_check_t, quantity_of, evaluate, &
+      find_root, dip_probe, check_sides, predicted_combinations, quantity_none, quantity_discriminant, &
+      quantity_collision
    implicit none
    private
-   public :: system_boundary_t, system_boundaries, system_hill_betas, route_hill, route_discriminant, route_verdict
+   public :: system_boundary_t, system_boundaries, system_hill_betas, route_hill, route_discriminant, &
+      route_collision, route_modulus
 
    !> Route, Hill's method (a simple resonance).
    integer, parameter :: route_hill = 1
-   !> Route, a root of Broucke's discriminant (combination, n = 2).
+   !> Route, a root of Broucke's discriminant (Hamiltonian, n = 2).
    integer, parameter :: route_discriminant = 2
-   !> Route, bisection on the verdict (combination, any n).
-   integer, parameter :: route_verdict = 3
+   !> Route, a root of the nearest pair's Re (z_k − z_l)² (Hamiltonian, n ≥ 3).
+   integer, parameter :: route_collision = 3
+   !> Route, a root of −ln max|λ| (dissipative).
+   integer, parameter :: route_modulus = 4
 
    !> One point of a transition curve.
    type :: system_boundary_t
       real(wp) :: alpha = 0.0_wp          !! α
       real(wp) :: beta = 0.0_wp           !! β on the curve
-      integer :: kind = kind_plus_one     !! kind_plus_one, kind_minus_one or kind_combination
+      !> kind_plus_one, kind_minus_one or kind_combination: the multiplier's place at a
+      !> stability edge; negated where both sides are unstable (no stability edge)
+      integer :: kind = kind_plus_one
       integer :: route = route_hill       !! how it was found (route_*)
-      !> the check at (α, β): distance of the nearest multiplier from ±1 (simple), |D| relative
-      !> to its scale (discriminant), the final bracket's width (verdict)
+      !> the check at (α, β): distance of the nearest multiplier from ±1 (route_hill), |q| over
+      !> its error bound (the other routes)
       real(wp) :: check = 0.0_wp
       real(wp) :: error_estimate = 0.0_wp !! of β
       integer :: status = status_ok       !! status_ok, or status_failed when the check fails
@@ -193,9 +214,10 @@ contains
       end do
    end subroutine harmonics
 
-   !> Every transition point of one α over the window of `betas` (the samples of a row): the
-   !> simple ones by Hill's method, checked; the combination ones by root-finding on the
-   !> samples' brackets. Sorted by β.
+   !> Every stability edge of one α over the window of `betas` (the samples of a row): the
+   !> simple ones by Hill's method, the others by root-finding on the row's signed quantity
+   !> over the samples refined around the predicted combination resonances; each edge's two
+   !> sides checked by the monodromy's verdict. Sorted by β.
    subroutine system_boundaries(system, form, alpha, betas, method, found, error)
       class(hill_system_t), intent(in) :: system      !! the system
       type(system_form_t), intent(in) :: form         !! prepared at its ε
@@ -204,12 +226,21 @@ contains
       type(system_method_t), intent(in) :: method     !! the monodromy's method and tolerance
       type(system_boundary_t), allocatable, intent(out) :: found(:)  !! the points, by β
       type(error_t), allocatable, intent(out) :: error  !! err_singular when Hill's method fails
-      real(wp), allocatable :: roots(:), estimates(:), g(:)
+      type(edge_row_t) :: row
+      type(system_boundary_t), allocatable :: candidates(:)
+      type(edge_sample_t), allocatable :: samples(:)
+      type(edge_sample_t) :: probe
+      real(wp), allocatable :: roots(:), estimates(:), grid(:), predicted(:), bounds(:)
       logical, allocatable :: inside(:)
-      type(system_nodes_t) :: nodes
       type(system_boundary_t) :: point
+      real(wp) :: spacing
       integer :: s, k, j
-      allocate (found(0))
+      logical :: hit
+      allocate (found(0), candidates(0), bounds(0))
+      row%alpha = alpha
+      row%method = method
+      row%quantity = quantity_of(form)
+      spacing = (betas(size(betas)) - betas(1))/max(1, size(betas) - 1)
       do s = 1, 2
          call system_hill_betas(system, form, alpha, merge(1, -1, s == 1), betas(1), betas(size(betas)), roots, &
                                 estimates, error)
@@ -219,93 +250,82 @@ contains
                                       0.0_wp, estimates(k), status_ok)
             point%check = distance_from(merge(1.0_wp, -1.0_wp, s == 1), roots(k))
             if (.not. (point%check <= 1.0e-4_wp)) point%status = status_failed
-            found = [found, point]
+            candidates = [candidates, point]
+            bounds = [bounds, 0.0_wp]
          end do
       end do
-      if (.not. form%hamiltonian) return
-      ! combination tongues: D < 0 (n = 2), or the verdict's kind (any n)
-      allocate (g(size(betas)), inside(size(betas)))
-      do j = 1, size(betas)
-         g(j) = combination_function(betas(j))
-         inside(j) = g(j) < 0.0_wp
-      end do
-      do j = 1, size(betas) - 1
-         if (inside(j) .eqv. inside(j + 1)) cycle
-         call close_bracket(betas(j), betas(j + 1), g(j))
-      end do
-      ! n = 2: a tongue narrower than the samples shows as a positive local minimum of D
-      ! (z₁ and z₂ nearly meet): its minimum, by golden section, decides whether D dips below 0
-      if (form%n == 2) then
-         do j = 2, size(betas) - 1
-            if (inside(j) .or. inside(j - 1) .or. inside(j + 1)) cycle
-            if (.not. (g(j) <= g(j - 1) .and. g(j) <= g(j + 1))) cycle
-            call dip(betas(j - 1), betas(j + 1))
+      if (row%quantity /= quantity_none) then
+         call predicted_combinations(system, form, betas, predicted)
+         grid = refined_grid(betas, predicted, spacing)
+         allocate (samples(size(grid)), inside(size(grid)))
+         do j = 1, size(grid)
+            samples(j) = evaluate(system, form, row, grid(j))
+            inside(j) = samples(j)%ok .and. samples(j)%q < -samples(j)%dq
+         end do
+         do j = 1, size(grid) - 1
+            if (inside(j) .eqv. inside(j + 1)) cycle
+            call close_edge(samples(j), samples(j + 1))
+         end do
+         ! a tongue narrower than the samples: a positive local minimum of q
+         do j = 2, size(grid) - 1
+            if (inside(j - 1) .or. inside(j) .or. inside(j + 1)) cycle
+            if (.not. (samples(j - 1)%ok .and. samples(j)%ok .and. samples(j + 1)%ok)) cycle
+            if (.not. (samples(j)%q <= samples(j - 1)%q .and. samples(j)%q <= samples(j + 1)%q)) cycle
+            call dip_probe(system, form, row, grid(j - 1), grid(j + 1), probe, hit)
+            if (.not. hit) cycle
+            call close_edge(samples(j - 1), probe)
+            call close_edge(probe, samples(j + 1))
          end do
       end if
+      call sort_candidates(candidates, bounds)
+      call confirm_edges(system, form, row, candidates, bounds, spacing, found)
       call sort_points(found)
 
    contains
 
-      !> Bisection between a sample inside a combination tongue and one outside.
-      subroutine close_bracket(a, b, g_a)
-         real(wp), intent(in) :: a, b, g_a
-         real(wp) :: lo, hi, mid
-         integer :: step
-         lo = a
-         hi = b
-         do step = 1, 80
-            mid = 0.5_wp*(lo + hi)
-            if ((combination_function(mid) < 0.0_wp) .eqv. (g_a < 0.0_wp)) then
-               lo = mid
-            else
-               hi = mid
-            end if
-            if (abs(hi - lo) <= 1.0e-12_wp*max(1.0_wp, abs(mid))) exit
-         end do
-         point = system_boundary_t(alpha, 0.5_wp*(lo + hi), kind_combination, &
-                                   merge(route_discriminant, route_verdict, form%n == 2), abs(hi - lo), abs(hi - lo), &
-                                   status_ok)
-         found = [found, point]
-      end subroutine close_bracket
-
-      !> Golden-section search for D's minimum on [a, b]; where it is negative, the tongue's two
-      !> edges by bisection on each side.
-      subroutine dip(a, b)
-         real(wp), intent(in) :: a, b
-         real(wp), parameter :: ratio = 0.6180339887498949_wp
-         real(wp) :: x1, x2, f1, f2, lo, hi
-         integer :: step
-         lo = a
-         hi = b
-         x1 = hi - ratio*(hi - lo)
-         x2 = lo + ratio*(hi - lo)
-         f1 = combination_function(x1)
-         f2 = combination_function(x2)
-         do step = 1, 60
-            if (f1 < 0.0_wp .or. f2 < 0.0_wp) exit
-            if (f1 <= f2) then
-               hi = x2
-               x2 = x1
-               f2 = f1
-               x1 = hi - ratio*(hi - lo)
-               f1 = combination_function(x1)
-            else
-               lo = x1
-               x1 = x2
-               f1 = f2
-               x2 = lo + ratio*(hi - lo)
-               f2 = combination_function(x2)
-            end if
-            if (hi - lo <= 1.0e-12_wp*max(1.0_wp, abs(hi))) exit
-         end do
-         if (f1 < 0.0_wp) then
-            call close_bracket(x1, a, f1)
-            call close_bracket(x1, b, f1)
-         else if (f2 < 0.0_wp) then
-            call close_bracket(x2, a, f2)
-            call close_bracket(x2, b, f2)
+      !> The edge between a sample inside and one outside (route by the row's quantity).
+      subroutine close_edge(a, b)
+         type(edge_sample_t), intent(in) :: a, b
+         type(edge_sample_t) :: root, other, in_side
+         real(wp) :: width
+         integer :: kind, route, i
+         if ((a%q < 0.0_wp) .neqv. (b%q < 0.0_wp)) then
+            call find_root(system, form, row, a, b, root, other, width)
+         else
+            ! the outside sample lies within its error bound of the edge (q < 0 undecided)
+            root = merge(a, b, a%q >= -a%dq .and. a%q < 0.0_wp)
+            other = merge(b, a, a%q >= -a%dq .and. a%q < 0.0_wp)
+            width = 0.0_wp
          end if
-      end subroutine dip
+         in_side = merge(root, other, root%q < 0.0_wp)
+         if (row%quantity /= quantity_discriminant) root = evaluate(system, form, row, root%beta, sharp=.true.)
+         select case (row%quantity)
+         case (quantity_discriminant)
+            kind = kind_combination
+            route = route_discriminant
+         case (quantity_collision)
+            kind = kind_combination
+            route = route_collision
+         case default
+            kind = in_side%kind
+            route = route_modulus
+            if (kind == kind_undecided) kind = kind_combination
+            ! a multiplier through +1 or −1: Hill's method has it (more accurately) when it
+            ! found one of that kind in the bracket
+            if (kind /= kind_combination) then
+               do i = 1, size(candidates)
+                  if (candidates(i)%route /= route_hill .or. candidates(i)%kind /= kind) cycle
+                  if (candidates(i)%beta >= min(a%beta, b%beta) .and. candidates(i)%beta <= max(a%beta, b%beta)) &
+                     return
+               end do
+            end if
+         end select
+         point = system_boundary_t(alpha, root%beta, kind, route, 0.0_wp, width, status_ok)
+         point%check = abs(root%q)/max(root%dq, tiny(1.0_wp))
+         candidates = [candidates, point]
+         ! the error bound of q at the root: the estimate adds it over the slope (confirm_edges)
+         bounds = [bounds, root%dq]
+      end subroutine close_edge
 
       !> The distance of the multiplier nearest to `target` at β.
       real(wp) function distance_from(target, beta)
@@ -313,34 +333,151 @@ contains
          type(system_monodromy_t) :: r
          type(system_floquet_t) :: f
          type(error_t), allocatable :: cause
-         call system_monodromy(system, form, alpha, beta, method, nodes, r, cause)
+         call system_monodromy(system, form, alpha, beta, method, row%nodes, r, cause)
          distance_from = huge(1.0_wp)
          if (allocated(cause)) return
          call system_floquet(r%phi, form, r%error_estimate*max(1.0_wp, maxval(abs(r%phi))), f, r%log_scale)
          distance_from = minval(abs(f%multipliers*exp(f%log_scale) - target))
       end function distance_from
-
-      !> Negative inside a combination tongue: D (n = 2), else −1 where the verdict's kind is
-      !> combination, +1 elsewhere.
-      real(wp) function combination_function(beta)
-         real(wp), intent(in) :: beta
-         type(system_monodromy_t) :: r
-         type(system_floquet_t) :: f
-         type(error_t), allocatable :: cause
-         call system_monodromy(system, form, alpha, beta, method, nodes, r, cause)
-         combination_function = 1.0_wp
-         if (allocated(cause)) return
-         call system_floquet(r%phi, form, r%error_estimate*max(1.0_wp, maxval(abs(r%phi))), f, r%log_scale)
-         if (form%n == 2 .and. f%log_scale == 0.0_wp) then
-            ! D, less what round-off and the error of Φ leave undecided (a touch of D = 0,
-            ! as at α = 0, is no tongue)
-            combination_function = f%discriminant + (64.0_wp*epsilon(1.0_wp) + 8.0_wp*r%error_estimate)* &
-                                   (f%trace**2 + 4.0_wp*abs(f%a2) + 8.0_wp)
-         else if (f%verdict == verdict_unstable .and. f%kind == kind_combination) then
-            combination_function = -1.0_wp
-         end if
-      end function combination_function
    end subroutine system_boundaries
+
+   !> The samples and, around each predicted resonance β_p, β_p + h·o for o = 0, ±1/64, ±1/16,
+   !> ±1/8, ±1/4, ±1/2 (h the samples' spacing), inside the window, ascending and distinct.
+   pure function refined_grid(betas, predicted, spacing) result(grid)
+      real(wp), intent(in) :: betas(:), predicted(:), spacing
+      real(wp), allocatable :: grid(:)
+      real(wp), parameter :: offsets(11) = [0.0_wp, -1.0_wp/64, 1.0_wp/64, -1.0_wp/16, 1.0_wp/16, -0.125_wp, &
+                                            0.125_wp, -0.25_wp, 0.25_wp, -0.5_wp, 0.5_wp]
+      real(wp), allocatable :: all(:)
+      real(wp) :: x
+      integer :: i, k, count
+      allocate (all(size(betas) + size(offsets)*size(predicted)))
+      count = size(betas)
+      all(1:count) = betas
+      do i = 1, size(predicted)
+         do k = 1, size(offsets)
+            x = predicted(i) + offsets(k)*spacing
+            if (x <= betas(1) .or. x >= betas(size(betas))) cycle
+            count = count + 1
+            all(count) = x
+         end do
+      end do
+      call sort_values(all(1:count))
+      allocate (grid(count))
+      k = 1
+      grid(1) = all(1)
+      do i = 2, count
+         if (all(i) - grid(k) <= 1.0e-12_wp*max(1.0_wp, abs(all(i)))) cycle
+         k = k + 1
+         grid(k) = all(i)
+      end do
+      grid = grid(1:k)
+   end function refined_grid
+
+   !> Each candidate's two sides by the verdict (`check_sides`), δ capped by 0.45 of the gap to
+   !> its neighbours, half the samples' spacing and 1 % of max(1, |β|); candidates closer than
+   !> their errors (a double root, as at the tip of a tongue) are checked as one. Stable on one
+   !> side and unstable on the other: a stability edge. Unstable on both: kept with the kind
+   !> negated. Stable on both: dropped. Undecided: Hill's points keep the status of their
+   !> check, the others get status_failed. The error estimate of a root of q adds δq/|q'|
+   !> (the slope from the two sides) to its bracket.
+   subroutine confirm_edges(system, form, row, candidates, bounds, spacing, found)
+      class(hill_system_t), intent(in) :: system
+      type(system_form_t), intent(in) :: form
+      type(edge_row_t), intent(inout) :: row
+      type(system_boundary_t), intent(inout) :: candidates(:)
+      real(wp), intent(in) :: bounds(:)   !! the error bound of q at each root (0: Hill's method)
+      real(wp), intent(in) :: spacing
+      type(system_boundary_t), allocatable, intent(inout) :: found(:)
+      type(side_check_t) :: sides
+      real(wp) :: gap, cap, start, scale, slope, lo, hi, close
+      integer :: k, first, last
+      logical :: stable_below, stable_above
+      first = 1
+      do while (first <= size(candidates))
+         ! the cluster of candidates within their errors of each other
+         last = first
+         do while (last < size(candidates))
+            close = candidates(last)%error_estimate + candidates(last + 1)%error_estimate + &
+                    1.0e-12_wp*max(1.0_wp, abs(candidates(last)%beta))
+            if (candidates(last + 1)%beta - candidates(last)%beta > close) exit
+            last = last + 1
+         end do
+         lo = candidates(first)%beta
+         hi = candidates(last)%beta
+         scale = max(1.0_wp, abs(lo))
+         gap = huge(1.0_wp)
+         if (first > 1) gap = min(gap, lo - candidates(first - 1)%beta)
+         if (last < size(candidates)) gap = min(gap, candidates(last + 1)%beta - hi)
+         cap = min(0.45_wp*gap, 0.5_wp*spacing, 0.01_wp*scale)
+         start = max(4.0_wp*maxval(candidates(first:last)%error_estimate), 1.0e-10_wp*scale)
+         sides = check_sides(system, form, row, 0.5_wp*(lo + hi), start + 0.5_wp*(hi - lo), &
+                             max(cap, start) + 0.5_wp*(hi - lo))
+         do k = first, last
+            if (candidates(k)%route /= route_hill) then
+               ! the estimate: the bracket, plus the error bound of q at the root over q's slope
+               slope = 0.0_wp
+               if (sides%below%ok .and. sides%above%ok .and. sides%above%beta > sides%below%beta) &
+                  slope = abs(sides%above%q - sides%below%q)/(sides%above%beta - sides%below%beta)
+               if (slope > 0.0_wp) then
+                  candidates(k)%error_estimate = candidates(k)%error_estimate + bounds(k)/slope
+               else
+                  candidates(k)%error_estimate = candidates(k)%error_estimate + sides%offset
+               end if
+               candidates(k)%error_estimate = max(candidates(k)%error_estimate, &
+                                                  4.0_wp*epsilon(1.0_wp)*max(1.0_wp, abs(candidates(k)%beta)))
+            end if
+            if (.not. sides%decided) then
+               if (candidates(k)%route /= route_hill) candidates(k)%status = status_failed
+               found = [found, candidates(k)]
+               cycle
+            end if
+            stable_below = sides%below%verdict == verdict_stable
+            stable_above = sides%above%verdict == verdict_stable
+            if (stable_below .and. stable_above) cycle
+            if (.not. (stable_below .or. stable_above)) candidates(k)%kind = -candidates(k)%kind
+            found = [found, candidates(k)]
+         end do
+         first = last + 1
+      end do
+   end subroutine confirm_edges
+   !> Candidates by β, their bounds alongside.
+   pure subroutine sort_candidates(p, bounds)
+      type(system_boundary_t), intent(inout) :: p(:)
+      real(wp), intent(inout) :: bounds(:)
+      type(system_boundary_t) :: t
+      real(wp) :: b
+      integer :: i, j
+      do i = 2, size(p)
+         t = p(i)
+         b = bounds(i)
+         j = i - 1
+         do while (j >= 1)
+            if (p(j)%beta <= t%beta) exit
+            p(j + 1) = p(j)
+            bounds(j + 1) = bounds(j)
+            j = j - 1
+         end do
+         p(j + 1) = t
+         bounds(j + 1) = b
+      end do
+   end subroutine sort_candidates
+
+   pure subroutine sort_values(x)
+      real(wp), intent(inout) :: x(:)
+      real(wp) :: a
+      integer :: i, j
+      do i = 2, size(x)
+         a = x(i)
+         j = i - 1
+         do while (j >= 1)
+            if (x(j) <= a) exit
+            x(j + 1) = x(j)
+            j = j - 1
+         end do
+         x(j + 1) = a
+      end do
+   end subroutine sort_values
 
    pure subroutine sort_pairs(x, y)
       real(wp), intent(inout) :: x(:), y(:)

@@ -1,8 +1,9 @@
 !> Task `boundaries` of a system scene: the transition curves of a system of Hill equations
 !> over the α of `&chart`, one block of curve points per α, found in the β window of
 !> `&chart` from its n_beta samples (hillstab_curves_system_boundaries: simple resonances by
-!> Hill's method with n × n blocks, combination edges by root-finding), each point checked
-!> against the monodromy. Rows run in parallel (OpenMP); the file is written atomically.
+!> Hill's method with n × n blocks, the other edges by root-finding on a signed distance from
+!> the stability threshold), each edge checked on both sides by the monodromy's verdict. Rows
+!> run in parallel (OpenMP); the file is written atomically.
 module hillstab_batch_tasks_system_boundaries
    use hillstab_core_kinds, only: wp, int64, version_string
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
@@ -111,7 +112,7 @@ contains
       integer, allocatable :: counts(:)
       character(len=400), allocatable :: failures(:)
       real(wp), allocatable :: betas(:)
-      character(len=300) :: extra(7)
+      character(len=400) :: extra(7)
       character(len=200) :: line
       type(progress_t) :: progress
       integer :: i, k, n_failed, length, alloc_status
@@ -140,15 +141,21 @@ contains
       !$omp end parallel do
       call progress_end(progress)
       extra(1) = system_description(scene%system)
-      extra(2) = "simple resonances (a multiplier pair at +1 or -1) by Hill's method with n x n blocks, checked "// &
-                 "against the monodromy; combination resonances (Krein collisions) by bisection on the samples"
-      extra(3) = "column kind: 1 a multiplier at +1, 2 at -1, 3 the edge of a combination tongue"
-      extra(4) = "column route: 1 Hill's method, 2 a root of Broucke's discriminant a1^2 - 4 a2 + 8 (n = 2), "// &
-                 "3 bisection on the verdict (any n)"
-      extra(5) = "column check: the distance of the nearest multiplier from +-1 at (alpha, beta) (route 1), the "// &
-                 "last bracket's width (routes 2, 3)"
-      extra(6) = "column error_estimate: of beta (route 1: two truncations of Hill's matrix; 2, 3: the bracket)"
-      extra(7) = "column status: 0 ok; 2 the point is not confirmed by the monodromy (check > 1e-4)"
+      extra(2) = "stability edges: simple resonances (a multiplier pair at +1 or -1) by Hill's method with n x n "// &
+                 "blocks; the others by Brent's method on a signed distance q from the stability threshold over "// &
+                 "the samples, refined around the combination resonances predicted at alpha = 0; every edge "// &
+                 "checked on both sides by the monodromy's verdict"
+      extra(3) = "column kind: 1 a multiplier at +1, 2 at -1, 3 a combination edge (off the real axis); "// &
+                 "negated (-1, -2, -3) where both sides are unstable (no stability edge)"
+      extra(4) = "column route: 1 Hill's method, 2 a root of Broucke's discriminant a1^2 - 4 a2 + 8 (Hamiltonian, "// &
+                 "n = 2), 3 of Re (z_k - z_l)^2 of the nearest two z = lambda + 1/lambda (Hamiltonian, n >= 3), "// &
+                 "4 of -ln max|lambda| (damped)"
+      extra(5) = "column check: the distance of the nearest multiplier from +-1 at (alpha, beta) (route 1); "// &
+                 "|q| there over its error bound (routes 2-4)"
+      extra(6) = "column error_estimate: of beta (route 1: two truncations of Hill's matrix; 2-4: the final "// &
+                 "bracket plus q's error bound over its slope)"
+      extra(7) = "column status: 0 ok; 2 not confirmed: check > 1e-4 (route 1), or a side the verdict cannot "// &
+                 "decide (routes 2-4)"
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
       call write_header(file, scene_header(scene, "hillstab "//version_string//": transition curves of "// &
