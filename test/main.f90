@@ -20,6 +20,7 @@ program tester
    use test_capi_system, only: collect_capi_system
    use test_capi_sizes, only: collect_capi_sizes
    use test_capi_system_batch, only: collect_capi_system_batch
+   use test_expression, only: collect_expression
    use test_gsl, only: collect_gsl
    use test_rk, only: collect_rk
    use test_magnus, only: collect_magnus
@@ -48,7 +49,7 @@ program tester
    use test_checkpoint, only: collect_checkpoint
    implicit none
    ! one by one, not as an array constructor of the collect functions' results: gfortran 12
-   type(testsuite_t) :: suites(45)
+   type(testsuite_t) :: suites(46)
    integer :: n_failed
    suites(1) = collect_models()
    suites(2) = collect_codes()
@@ -95,6 +96,7 @@ program tester
    suites(43) = collect_system_point()
    suites(44) = collect_capi_sizes()
    suites(45) = collect_capi_system_batch()
+   suites(46) = collect_expression()
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester
