@@ -83,6 +83,7 @@ run:
 
 test: setup-test
 	@python3 scripts/doc_check.py
+	@python3 scripts/layer_check.py
 	$(FPM) test
 
 # the Python package as a user installs it: a fresh virtual environment, `pip install .`

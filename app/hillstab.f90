@@ -6,7 +6,7 @@
 !> N (SIGINT, SIGTERM, SIGHUP), the unfinished output file removed.
 program hillstab_cli
    use hillstab_batch_run_cli, only: serial_runner_t, run_command_line
-   use hillstab_batch_run_signals, only: install_signal_cleanup
+   use hillstab_batch_output_signals, only: install_signal_cleanup
    implicit none
    type(serial_runner_t) :: runner
    integer :: status

@@ -21,14 +21,14 @@ module hillstab_mpi_runner
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
    use hillstab_core_text, only: integer_text
    use hillstab_batch_scene_types, only: scene_t, output_path
-   use hillstab_batch_scene_read, only: read_scene
+   use hillstab_batch_run_read, only: read_scene
    use hillstab_batch_run_scenes, only: run_scene, warn_scene, name_scene_file
    use hillstab_batch_run_units, only: batch_t, batch_result_t, batch_distributable, batch_plan, batch_set_unit_size, &
       batch_compute, &
       batch_open, batch_write, batch_commit, batch_discard, scene_fingerprint
    use hillstab_batch_run_cli, only: scene_runner_t, exit_status
    use hillstab_batch_run_limits, only: check_memory_room
-   use hillstab_batch_run_signals, only: watch_temp_file, forget_temp_file
+   use hillstab_batch_output_signals, only: watch_temp_file, forget_temp_file
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
@@ -367,7 +367,7 @@ program hillstab_mpi
    use mpi_f08, only: MPI_Init, MPI_Comm_rank, MPI_Comm_size, MPI_COMM_WORLD
    use hillstab_mpi_runner, only: mpi_runner_t
    use hillstab_batch_run_cli, only: run_command_line
-   use hillstab_batch_run_signals, only: install_signal_cleanup
+   use hillstab_batch_output_signals, only: install_signal_cleanup
    implicit none
    type(mpi_runner_t) :: runner
    integer :: status

@@ -6,7 +6,7 @@
 !> may run on (sched_getaffinity, sched_setaffinity, sched_getcpu), the names in a directory
 !> (opendir, readdir, closedir: `names_with_prefix`). Bindings only:
 !> the writers (hillstab_batch_output_file), the checkpoints (hillstab_batch_output_checkpoint), the
-!> signal cleanup (hillstab_batch_run_signals), the resource limits (hillstab_batch_run_limits) and
+!> signal cleanup (hillstab_batch_output_signals), the resource limits (hillstab_batch_run_limits) and
 !> the progress line use them; `remove_file` and `is_directory` are the two path helpers
 !> every reader and writer needs, `try_lock` the lock test of the output and the checkpoint. Layouts (struct stat,
 !> off_t, struct dirent) are those of 64-bit Linux.

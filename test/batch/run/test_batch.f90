@@ -8,7 +8,7 @@ module test_batch
    use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, err_input, err_io, err_integration, err_invalid_parameter, err_points_failed
    use hillstab_batch_scene_types, only: scene_t
-   use hillstab_batch_scene_read, only: read_scene
+   use hillstab_batch_run_read, only: read_scene
    use hillstab_batch_run_scenes, only: output_path
    use hillstab_batch_run_units, only: batch_t, batch_result_t, batch_plan, batch_unit_range, batch_compute, batch_open, &
       batch_write, batch_commit, batch_discard, run_batch

@@ -8,7 +8,7 @@ module test_scene
    use hillstab_hill_coefficient, only: sampling_endpoint, sampling_average
    use hillstab_integrate_monodromy, only: method_auto, method_segments
    use hillstab_batch_scene_types, only: scene_t, scene_namelist
-   use hillstab_batch_scene_read, only: read_scene
+   use hillstab_batch_run_read, only: read_scene
    use hillstab_batch_scene_file, only: max_line_length
    use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_scene_group_chart, only: chart_grid_t, grid_value
@@ -19,7 +19,7 @@ module test_scene
    use hillstab_batch_tasks_lyapunov, only: lyapunov_task_t
    use hillstab_batch_tasks_registry, only: task_names, new_task
    use hillstab_batch_scene_types, only: task_t
-   use hillstab_batch_scene_templates, only: scene_template
+   use hillstab_batch_run_templates, only: scene_template
    use hillstab_testing
    use hillstab_test_scratch, only: scratch_prefix, write_file, read_lines, file_exists, delete_file, contains_text, &
       padded

@@ -19,7 +19,7 @@ module test_task_boundaries
    use hillstab_test_scratch, only: scratch_prefix, write_file, read_lines, delete_file
    use hillstab_hill_model, only: hill_point_t
    use hillstab_hill_model_elastic, only: elastic_model_t
-   use hillstab_batch_scene_read, only: read_scene
+   use hillstab_batch_run_read, only: read_scene
    use hillstab_batch_scene_types, only: scene_t
    use hillstab_batch_run_scenes, only: run_scene, output_path
    use hillstab_curves_hill_method, only: hill_boundary_t

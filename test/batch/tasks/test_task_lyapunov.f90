@@ -11,7 +11,7 @@ module test_task_lyapunov
    use hillstab_core_kinds, only: wp, pi2
    use hillstab_core_error, only: error_t, err_input
    use hillstab_batch_scene_types, only: scene_t
-   use hillstab_batch_scene_read, only: read_scene
+   use hillstab_batch_run_read, only: read_scene
    use hillstab_batch_run_scenes, only: run_scene_file, output_path
    use hillstab_batch_run_units, only: run_batch
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart, pendulum_initial_state

@@ -10,7 +10,7 @@ module test_task_system
    use hillstab_test_scratch, only: padded, scratch_prefix, write_file, read_lines, delete_file, contains_text
    use hillstab_test_files, only: run_text_scene, check_rerun
    use hillstab_batch_scene_types, only: scene_t
-   use hillstab_batch_scene_read, only: read_scene
+   use hillstab_batch_run_read, only: read_scene
    use hillstab_batch_run_scenes, only: run_scene_file
    use hillstab_testing
    implicit none

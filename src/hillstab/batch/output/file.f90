@@ -11,7 +11,7 @@
 !> An existing file at `<path>` is never opened, so a failed run leaves it untouched.
 !> Writes go through C stdio so that every failure is seen with its errno (gfortran's
 !> buffered formatted writes can lose ENOSPC). While written, the temporary file is
-!> registered with hillstab_batch_run_signals for removal on an interrupt.
+!> registered with hillstab_batch_output_signals for removal on an interrupt.
 !>
 !> A long run keeps a checkpoint of its partial file (hillstab_batch_output_checkpoint): `sync_output`
 !> puts what was written on the disk, `lock_output` marks the file as in use, and
@@ -38,7 +38,7 @@ module hillstab_batch_output_file
       c_fstat, stat_t, file_type, file_type_regular, c_ftruncate, c_fseek, seek_end, try_lock, name_max, &
       errno_value, errno_exists, c_link, c_getrandom, c_getpid, c_lstat, c_unlink, c_geteuid, names_with_prefix, &
       lock_state, lock_taken, lock_busy, lock_unknown
-   use hillstab_batch_run_signals, only: watch_temp_file, forget_temp_file, begin_commit
+   use hillstab_batch_output_signals, only: watch_temp_file, forget_temp_file, begin_commit
    use hillstab_batch_output_digest, only: digest_t, digest_update, digest_value
    use hillstab_core_kinds, only: wp
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, c_associated, c_size_t, c_loc, &
@@ -61,7 +61,7 @@ module hillstab_batch_output_file
       character(len=:), allocatable :: temp_path     !! name while being written
       character(len=:), allocatable :: failure       !! first write failure (the file is then incomplete)
       integer(int64) :: bytes = 0                    !! bytes written so far
-      integer :: slot = 0                            !! hillstab_batch_run_signals handle
+      integer :: slot = 0                            !! hillstab_batch_output_signals handle
       logical :: binary = .false.                    !! stream file: text header, then raw records
       !> keep the checksum of every byte written (text files: a run that keeps a checkpoint);
       !> it is brought up to date from the file when a checkpoint needs it (`digest_written`),

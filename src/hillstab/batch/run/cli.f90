@@ -23,9 +23,9 @@ module hillstab_batch_run_cli
    use hillstab_core_error, only: error_t, err_input, err_io, err_invalid_parameter, err_points_failed
    use hillstab_core_status, only: exit_points_failed
    use hillstab_batch_run_scenes, only: run_scene_file
-   use hillstab_batch_scene_templates, only: scene_template
+   use hillstab_batch_run_templates, only: scene_template
    use hillstab_batch_tasks_registry, only: task_names_text
-   use hillstab_batch_run_signals, only: settle_signals
+   use hillstab_batch_output_signals, only: settle_signals
    use hillstab_batch_output_checkpoint, only: checkpoint_options_t
    use hillstab_batch_run_threads, only: place_threads
    use hillstab_batch_run_limits, only: check_start_memory

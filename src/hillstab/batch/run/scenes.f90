@@ -1,4 +1,4 @@
-!> Running scenes: read a scene file (hillstab_batch_scene_read) and run its task, after
+!> Running scenes: read a scene file (hillstab_batch_run_read) and run its task, after
 !> the checks every run makes before any work (the output must fit where it goes).
 !> Errors come back in `error` with the scene file, group and variable named; no output
 !> file is created or touched unless the task completes. A point that cannot be computed
@@ -17,7 +17,7 @@
 module hillstab_batch_run_scenes
    use hillstab_core_error, only: error_t, set_error, err_points_failed, err_input, err_io
    use hillstab_batch_scene_types, only: scene_t, output_path
-   use hillstab_batch_scene_read, only: read_scene
+   use hillstab_batch_run_read, only: read_scene
    use hillstab_batch_run_limits, only: check_output_room, check_memory_room
    use hillstab_batch_run_units, only: batch_distributable, run_batch, settle_checkpoint
    use hillstab_batch_output_checkpoint, only: checkpoint_options_t, checkpoint_note

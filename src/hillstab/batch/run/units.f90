@@ -58,10 +58,11 @@ module hillstab_batch_run_units
       scene_difference, checkpoint_note, checkpoint_usable, checkpoint_incomplete, checkpoint_damaged, scene_lines, &
       fnv1a_step
    use hillstab_batch_output_digest, only: digest_value
-   use hillstab_batch_run_signals, only: set_interrupt_note, clear_interrupt_note
+   use hillstab_core_parallel, only: max_threads
+   use hillstab_batch_output_signals, only: set_interrupt_note, clear_interrupt_note
    use hillstab_ffi_libc, only: c_nanosleep, timespec_t
    use, intrinsic :: iso_c_binding, only: c_int, c_long
-   !$ use omp_lib, only: omp_get_max_threads, omp_init_lock, omp_destroy_lock, omp_test_lock, omp_unset_lock
+   !$ use omp_lib, only: omp_init_lock, omp_destroy_lock, omp_test_lock, omp_unset_lock
    implicit none
    private
    !> Kind of the writer's lock of `run_batch`: OpenMP's lock kind (4 in gfortran; checked
@@ -851,9 +852,4 @@ contains
          problem_kind(scene)//") keeps no checkpoint and writes "//output_path(scene)//" afresh")
    end subroutine settle_checkpoint
 
-   !> Number of OpenMP threads a parallel region will use (1 without OpenMP).
-   integer function max_threads()
-      max_threads = 1
-      !$ max_threads = omp_get_max_threads()
-   end function max_threads
 end module hillstab_batch_run_units

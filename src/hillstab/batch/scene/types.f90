@@ -7,7 +7,7 @@
 !>
 !> This module declares the types and writes the effective scene back as namelist text
 !> (`scene_namelist`): every output header carries it, so that the file repeats its
-!> run. Reading is in hillstab_batch_scene_read, the tasks in hillstab_batch_task_*.
+!> run. Reading is in hillstab_batch_run_read, the tasks in hillstab_batch_task_*.
 !>
 !>```fortran
 !> type(scene_t) :: scene

@@ -33,7 +33,7 @@ module hillstab_batch_tasks_chart
    use hillstab_batch_output_file, only: output_file_t, finish_output, discard_output, write_header, write_text, &
       write_records, joined_lines, join_lines
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
-   use hillstab_batch_run_units, only: max_threads
+   use hillstab_core_parallel, only: max_threads
    implicit none
    private
    public :: chart_task_t, chart_task

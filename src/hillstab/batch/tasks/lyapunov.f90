@@ -44,7 +44,7 @@ module hillstab_batch_tasks_lyapunov
    use hillstab_batch_tasks_chart_columns, only: header_bytes, text_row_bytes
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text, join_lines
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
-   use hillstab_batch_run_units, only: max_threads
+   use hillstab_core_parallel, only: max_threads
    implicit none
    private
    public :: lyapunov_task_t, lyapunov_task, lyapunov_group

@@ -24,7 +24,7 @@ module hillstab_batch_tasks_poincare
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text
    use hillstab_core_text, only: real_text, integer_text
    use hillstab_core_kinds, only: pi
-   use hillstab_batch_run_units, only: max_threads
+   use hillstab_core_parallel, only: max_threads
    implicit none
    private
    public :: poincare_task_t, poincare_task, poincare_group

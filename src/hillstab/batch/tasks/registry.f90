@@ -19,8 +19,8 @@ module hillstab_batch_tasks_registry
    use hillstab_batch_tasks_series, only: series_task
    use hillstab_batch_tasks_lyapunov, only: lyapunov_task
    use hillstab_batch_tasks_poincare, only: poincare_task
-   use hillstab_batch_tasks_system, only: system_chart_task, system_points_task, system_coefficient_task, &
-      system_task_names
+   use hillstab_batch_tasks_system, only: system_chart_task, system_points_task, system_task_names
+   use hillstab_batch_tasks_system_coefficient, only: system_coefficient_task
    use hillstab_batch_tasks_system_boundaries, only: system_boundaries_task
    implicit none
    private

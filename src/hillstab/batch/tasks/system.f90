@@ -1,7 +1,7 @@
 !> The tasks of a system scene (`&scene model = 'system'`, the matrices in `&system`):
-!> `chart` over the (α, β) grid of `&chart`, `points` at the (α, β) of a `&points` file and
-!> `coefficient` (the entries of K(τ) over the period at the α of `&coefficient`; task
-!> `boundaries` is hillstab_batch_tasks_system_boundaries). Chart and
+!> `chart` over the (α, β) grid of `&chart` and `points` at the (α, β) of a `&points` file
+!> (tasks `coefficient` and `boundaries` are hillstab_batch_tasks_system_coefficient and
+!> hillstab_batch_tasks_system_boundaries). Chart and
 !> points write the columns of `system_columns` (`&scene columns` chooses among them; a
 !> verdict-only chart is `columns = 'alpha beta stable kind status'`), each point from the
 !> exact monodromy (hillstab_integrate_system, the nodes shared along a chart row) and its
@@ -19,33 +19,31 @@
 module hillstab_batch_tasks_system
    use hillstab_core_kinds, only: wp, int64, version_string
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
-   use hillstab_core_status, only: status_ok, status_roundoff, status_failed
-   use hillstab_core_text, only: format_es, real_text, integer_text, lower_case, put_es, put_integer, fpe_state_t, &
-      halting_off, halting_restore
-   use hillstab_hill_system_matrix, only: matrix_system_t
+   use hillstab_core_status, only: status_roundoff, status_failed
+   use hillstab_core_text, only: real_text, integer_text, lower_case, put_es, put_integer
    use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system, system_equation_text, &
-      system_description, check_system_point
-   use hillstab_hill_system_floquet, only: system_floquet_t, verdict_marginal, kind_name
+      system_description
+   use hillstab_hill_system_floquet, only: system_floquet_t
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_method_name
    use hillstab_integrate_system_point, only: system_point
    use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output, scene_header
-   use hillstab_batch_scene_declaration, only: group_t, new_group, group_reader_t, var_real, var_integer, &
-      var_real_list, begin_group, next_item, end_group, list_value
+   use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail
-   use hillstab_batch_scene_checks, only: check_range, require_finite, max_grid_count
-   use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point, grid_size_text
+   use hillstab_batch_scene_checks, only: max_grid_count
+   use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, &
+      grid_point, grid_size_text
    use hillstab_batch_scene_group_points, only: points_group, read_points_group
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text, join_lines, &
       write_records
-   use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_step, progress_end
-   use hillstab_batch_run_units, only: max_threads
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
+   use hillstab_core_parallel, only: max_threads
+   use hillstab_batch_tasks_system_cost, only: check_system_cost, extreme_name
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
-   public :: system_chart_task_t, system_points_task_t, system_coefficient_task_t, system_chart_task, &
-      system_points_task, system_coefficient_task, system_task_names, system_column_names, system_point_values
-   public :: check_system_cost, extreme_name, system_values, system_row_values, n_fixed
+   public :: system_chart_task_t, system_points_task_t, system_chart_task, system_points_task, system_task_names, &
+      system_column_names, system_point_values
+   public :: system_values, system_row_values, n_fixed
 
    !> Most exponent columns (mu_1 … mu_n, n ≤ max_dof).
    integer, parameter :: max_dof_columns = 20
@@ -111,18 +109,6 @@ module hillstab_batch_tasks_system
       procedure :: point_of => points_point_of
    end type system_points_task_t
 
-   !> `coefficient` on a system: the entries of K(τ).
-   type, extends(task_t) :: system_coefficient_task_t
-      real(wp), allocatable :: alphas(:)  !! one block per α
-      real(wp) :: beta = 0.0_wp
-      integer :: n_tau = 401
-      real(wp) :: tau_min = 0.0_wp, tau_max = 2.0_wp
-   contains
-      procedure :: read => coefficient_read
-      procedure :: run => coefficient_run
-      procedure :: declarations => coefficient_declarations
-   end type system_coefficient_task_t
-
 
 contains
 
@@ -143,13 +129,6 @@ contains
       task%takes_physical = .false.
       task%units_in_parallel = .true.
    end function system_points_task
-
-   !> A coefficient task of a system scene.
-   function system_coefficient_task() result(task)
-      type(system_coefficient_task_t) :: task
-      task%name = "coefficient"
-      task%takes_physical = .false.
-   end function system_coefficient_task
 
    !> Every column of a system of n degrees of freedom.
    pure function system_column_names(n) result(names)
@@ -396,157 +375,6 @@ contains
          if (failed) n_failed = n_failed + 1
       end do
    end subroutine system_row_values
-
-   !> Refuse a scene whose system or whose largest |α| and |β| make the system's frequencies
-   !> so high that a period takes more steps than the methods' ladder holds: √‖M⁻¹K‖ over
-   !> the period, and ‖D‖ (damping and gyroscopic rates), times the period, must stay below
-   !> 2e3 (about 8000 Magnus steps). The message names the variable that can fix it: a
-   !> `&system` matrix when its term alone is too large already (damping or gyroscopic;
-   !> k0, the size at α = β = 0; cos or sin when the drive is too large at the largest |α|
-   !> and at |α| = 1 already; b so for β), else the range variable of the larger of the α
-   !> and β terms (`alpha_variable`, `beta_variable` of `group`). Sizes are computed with
-   !> the floating-point traps off: a product that overflows is reported as such.
-   subroutine check_system_cost(scene, alpha_abs, beta_abs, group, alpha_variable, beta_variable, error)
-      type(scene_t), intent(in) :: scene  !! the scene, its system read
-      real(wp), intent(in) :: alpha_abs  !! the largest |α| of the task's points
-      real(wp), intent(in) :: beta_abs   !! the largest |β| of the task's points
-      character(len=*), intent(in) :: group  !! the task's group that sets them ("chart", "points")
-      character(len=*), intent(in) :: alpha_variable  !! its variable of that largest |α|
-      character(len=*), intent(in) :: beta_variable   !! its variable of that largest |β|
-      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
-      type(system_form_t) :: form
-      type(error_t), allocatable :: cause
-      type(fpe_state_t) :: fpe
-      real(wp), allocatable :: p(:, :), b(:, :), k0(:, :), c(:, :), g(:, :)
-      real(wp) :: size_a, size_k0, size_drive, size_b, size_c, size_g
-      character(len=:), allocatable :: variable, what
-      integer :: k, n
-      real(wp), parameter :: limit = 2.0e3_wp
-      call halting_off(fpe)
-      call prepare_system(scene%system, scene%epsilon, form, cause)
-      if (allocated(cause)) then
-         call halting_restore(fpe)
-         call fail(error, scene%source, "system", "mass", cause%message)
-         return
-      end if
-      n = form%n
-      allocate (p(n, n), b(n, n), k0(n, n), c(n, n), g(n, n))
-      call scene%system%stiffness(0.0_wp, 0.0_wp, k0, b)
-      size_k0 = row_sum_norm(matmul(form%m_inverse, k0))
-      size_b = row_sum_norm(matmul(form%m_inverse, b))
-      size_a = 0.0_wp
-      size_drive = 0.0_wp
-      do k = 0, 15
-         ! eight times of the period, at +|α| and −|α|
-         call scene%system%stiffness(merge(alpha_abs, -alpha_abs, k < 8), 0.125_wp*mod(k, 8)*form%period, p, b)
-         size_a = max(size_a, row_sum_norm(matmul(form%m_inverse, p)) + beta_abs*size_b)
-         ! the drive at |α| = 1 (K is linear in α)
-         call scene%system%stiffness(1.0_wp, 0.125_wp*k*form%period/2.0_wp, p, b)
-         size_drive = max(size_drive, row_sum_norm(matmul(form%m_inverse, p - k0)))
-      end do
-      size_a = max(size_a, row_sum_norm(form%d)**2)
-      if (sqrt(size_a)*form%period <= limit) then
-         call halting_restore(fpe)
-         return
-      end if
-      call scene%system%damping(c)
-      call scene%system%gyroscopic(g)
-      size_c = row_sum_norm(matmul(form%m_inverse, c))
-      size_g = row_sum_norm(matmul(form%m_inverse, g))
-      if (too_fast(row_sum_norm(form%d)**2)) then
-         variable = trim(merge("damping   ", "gyroscopic", .not. size_g > size_c))
-         if (.not. (size_c > 0.0_wp .or. size_g > 0.0_wp)) variable = "(epsilon)"
-         what = "the damping and gyroscopic rates reach |M^-1 (C + G)| = "// &
-                size_text(row_sum_norm(form%d))//" (the "//variable//" matrix alone: "// &
-                size_text(max(size_c, size_g))//")"
-      else if (too_fast(size_k0)) then
-         variable = "k0"
-         what = "the system's frequencies reach sqrt(|M^-1 K0|) = "//size_text(sqrt(size_k0))// &
-                " already at alpha = beta = 0"
-      else if (too_fast(alpha_abs*size_drive) .and. too_fast(size_drive)) then
-         variable = drive_variable(scene, form)
-         what = "the system's frequencies reach sqrt(|M^-1 K_drive|) = "//size_text(sqrt(size_drive))// &
-                " already at |alpha| = 1 (the drive matrices cos, sin)"
-      else if (too_fast(beta_abs*size_b) .and. too_fast(size_b)) then
-         variable = "b"
-         what = "the system's frequencies reach sqrt(|M^-1 B|) = "//size_text(sqrt(size_b))// &
-                " already at |beta| = 1"
-      else
-         variable = ""
-         if (alpha_abs*size_drive > beta_abs*size_b) then
-            what = alpha_variable
-         else
-            what = beta_variable
-         end if
-      end if
-      call halting_restore(fpe)
-      if (len(variable) > 0) then
-         if (variable == "(epsilon)") then
-            call fail(error, scene%source, "scene", "epsilon", what//": over the period that is beyond the "// &
-               real_text(limit)//" radians the methods integrate (about 8000 steps)")
-         else
-            call fail(error, scene%source, "system", variable, what//": over the period that is beyond the "// &
-               real_text(limit)//" radians the methods integrate (about 8000 steps)")
-         end if
-      else
-         call fail(error, scene%source, group, what, "the system's frequencies reach sqrt(|M^-1 K|) = "// &
-            size_text(sqrt(size_a))//" there: over the period that is beyond the "//real_text(limit)// &
-            " radians the methods integrate (about 8000 steps)")
-      end if
-   contains
-      !> The term `size` (a squared frequency) alone takes a period beyond the limit.
-      logical function too_fast(size)
-         real(wp), intent(in) :: size
-         too_fast = .not. (sqrt(size)*form%period <= limit)
-      end function too_fast
-   end subroutine check_system_cost
-
-   !> The bound of a range with the larger magnitude: `<axis>_min` or `<axis>_max`.
-   pure function extreme_name(axis, low, high) result(name)
-      character(len=*), intent(in) :: axis  !! "alpha" or "beta"
-      real(wp), intent(in) :: low   !! the range's `<axis>_min`
-      real(wp), intent(in) :: high  !! the range's `<axis>_max`
-      character(len=:), allocatable :: name
-      name = axis//"_max"
-      if (abs(low) > abs(high)) name = axis//"_min"
-   end function extreme_name
-
-   !> The largest row sum of |a| (the ∞-norm; +inf or nan when the entries overflowed).
-   pure real(wp) function row_sum_norm(a) result(norm)
-      real(wp), intent(in) :: a(:, :)
-      norm = maxval(sum(abs(a), dim=2))
-   end function row_sum_norm
-
-   !> A size for a message: its value, or the words for one that overflowed.
-   function size_text(x) result(text)
-      real(wp), intent(in) :: x
-      character(len=:), allocatable :: text
-      if (ieee_is_finite(x)) then
-         text = real_text(x)
-      else
-         text = "more than the largest double (the products of the entries overflow)"
-      end if
-   end function size_text
-
-   !> Which of `cos` and `sin` holds the larger drive (a matrix system; `cos` otherwise).
-   function drive_variable(scene, form) result(name)
-      type(scene_t), intent(in) :: scene
-      type(system_form_t), intent(in) :: form
-      character(len=:), allocatable :: name
-      real(wp) :: size_cos, size_sin
-      integer :: h
-      name = "cos"
-      select type (system => scene%system)
-      type is (matrix_system_t)
-         size_cos = 0.0_wp
-         size_sin = 0.0_wp
-         do h = 1, system%harmonics
-            size_cos = max(size_cos, row_sum_norm(matmul(form%m_inverse, system%kc(:, :, h))))
-            size_sin = max(size_sin, row_sum_norm(matmul(form%m_inverse, system%ks(:, :, h))))
-         end do
-         if (size_sin > size_cos) name = "sin"
-      end select
-   end function drive_variable
 
    !> `&chart` (any finite α), and the columns.
    subroutine chart_read(self, file, scene, error)
@@ -1034,118 +862,4 @@ contains
          real_text(first(2))//"); their status is 1"
    end subroutine warn_roundoff
 
-   !> The declaration of `&coefficient` for a system.
-   function coefficient_group() result(group)
-      type(group_t) :: group
-      group = new_group("coefficient", "the entries of K(tau) = K0 + beta B + alpha sum_k (...) at one beta "// &
-                        "for a list of alpha")
-      call group%add("alphas", var_real_list, "0.0, 1.0", "one block of rows per alpha, up to 64", max_count=64)
-      call group%add("beta", var_real, "1.0", "beta of every block")
-      call group%add("n_tau", var_integer, "401", "number of tau values, >= 1")
-      call group%add("tau_min", var_real, "0.0", "first tau")
-      call group%add("tau_max", var_real, "2.0", "last tau (one period of the default P = 2)")
-   end function coefficient_group
-
-   !> `&coefficient`.
-   function coefficient_declarations(self) result(groups)
-      class(system_coefficient_task_t), intent(in) :: self  !! the task
-      type(group_t), allocatable :: groups(:)
-      allocate (groups(1))
-      groups(1) = coefficient_group()
-   end function coefficient_declarations
-
-   !> Read `&coefficient`.
-   subroutine coefficient_read(self, file, scene, error)
-      class(system_coefficient_task_t), intent(inout) :: self  !! the task
-      type(scene_file_t), intent(in) :: file      !! the scene file
-      type(scene_t), intent(in) :: scene          !! the `&scene` settings
-      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
-      type(group_t) :: group
-      type(group_reader_t) :: reader
-      real(wp) :: alphas(64), beta, tau_min, tau_max
-      integer :: n_tau, count, k
-      namelist /coefficient/ alphas, beta, n_tau, tau_min, tau_max
-      group = coefficient_group()
-      call begin_group(reader, file, group)
-      read (reader%defaults, nml=coefficient, iostat=reader%defaults_status, iomsg=reader%defaults_msg)
-      if (reader%from_file) read (file%unit, nml=coefficient, iostat=reader%ios, iomsg=reader%msg)
-      do while (next_item(reader, file, group))
-         read (reader%record, nml=coefficient, iostat=reader%stat, iomsg=reader%message)
-      end do
-      write (reader%echo, nml=coefficient, delim="apostrophe", iostat=reader%echo_status)
-      allocate (self%groups(1))
-      call end_group(reader, file, group, self%groups(1), error)
-      if (allocated(error)) return
-      self%alphas = list_value(self%groups(1), "alphas", alphas)
-      count = size(self%alphas)
-      if (count == 0) then
-         call fail(error, file%path, group%name, "alphas", "no alpha given")
-         return
-      end if
-      do k = 1, count
-         call require_finite(file%path, group%name, "alphas", self%alphas(k), error)
-         if (allocated(error)) return
-      end do
-      call require_finite(file%path, group%name, "beta", beta, error)
-      if (allocated(error)) return
-      call check_range(file%path, group%name, "tau", tau_min, tau_max, n_tau, error)
-      if (allocated(error)) return
-      self%beta = beta
-      self%n_tau = n_tau
-      self%tau_min = tau_min
-      self%tau_max = tau_max
-      if (.not. allocated(scene%system)) call fail(error, file%path, "scene", "model", "not a system")
-   end subroutine coefficient_read
-
-   !> Rows `alpha tau k_11 k_12 … k_nn` (K row by row), one block per α.
-   subroutine coefficient_run(self, scene, quiet, error)
-      class(system_coefficient_task_t), intent(in) :: self  !! the task
-      type(scene_t), intent(in) :: scene  !! its scene
-      logical, intent(in) :: quiet  !! no progress on stderr
-      type(error_t), allocatable, intent(out) :: error  !! err_io when writing fails
-      type(output_file_t) :: file
-      real(wp), allocatable :: p(:, :), b(:, :), k_tau(:, :)
-      character(len=:), allocatable :: names, line
-      character(len=300), allocatable :: extra(:)
-      integer :: n, a, t, i, j
-      real(wp) :: tau
-      type(progress_t) :: progress
-      n = scene%system%dof()
-      allocate (p(n, n), b(n, n), k_tau(n, n))
-      names = "alpha tau"
-      do i = 1, n
-         do j = 1, n
-            names = names//" k_"//integer_text(i)//"_"//integer_text(j)
-         end do
-      end do
-      allocate (extra(2))
-      extra(1) = system_description(scene%system)
-      extra(2) = "one block per alpha (blank line between): K(tau) at beta = "//real_text(self%beta)// &
-                 ", its entries row by row"
-      call open_scene_output(scene, file, error)
-      if (allocated(error)) return
-      call write_header(file, scene_header(scene, "hillstab "//version_string//": the stiffness K(tau) of "// &
-                        system_equation_text(scene%system), extra), names, error)
-      call progress_begin(progress, int(size(self%alphas), int64), quiet, "curves")
-      do a = 1, size(self%alphas)
-         if (allocated(error)) exit
-         call progress_update(progress, int(a - 1, int64))
-         if (a > 1) call write_text(file, "", error)
-         do t = 1, self%n_tau
-            if (allocated(error)) exit
-            tau = grid_value(self%tau_min, self%tau_max, self%n_tau, t)
-            call scene%system%stiffness(self%alphas(a), tau, p, b)
-            k_tau = p + self%beta*b
-            line = trim(format_es(self%alphas(a), 17))//" "//trim(format_es(tau, 17))
-            do i = 1, n
-               do j = 1, n
-                  line = line//" "//trim(format_es(k_tau(i, j), 17))
-               end do
-            end do
-            call write_text(file, line, error)
-         end do
-      end do
-      call progress_end(progress)
-      call finish_output(file, error)
-   end subroutine coefficient_run
 end module hillstab_batch_tasks_system

@@ -19,8 +19,8 @@ module hillstab_batch_tasks_system_boundaries
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_step, progress_end
    use hillstab_curves_system_boundaries, only: system_boundary_t, system_boundaries
-   use hillstab_batch_run_units, only: max_threads
-   use hillstab_batch_tasks_system, only: check_system_cost, extreme_name
+   use hillstab_core_parallel, only: max_threads
+   use hillstab_batch_tasks_system_cost, only: check_system_cost, extreme_name
    implicit none
    private
    public :: system_boundaries_task_t, system_boundaries_task

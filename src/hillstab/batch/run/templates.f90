@@ -11,11 +11,11 @@
 !> call scene_template("chart", text, error)
 !> if (.not. allocated(error)) write (*, '(a)') text
 !>```
-module hillstab_batch_scene_templates
+module hillstab_batch_run_templates
    use hillstab_core_error, only: error_t, set_error, err_input
    use hillstab_batch_scene_types, only: task_t
    use hillstab_batch_scene_declaration, only: group_t, variable_t, var_real_list
-   use hillstab_batch_scene_read, only: scene_group, physical_group
+   use hillstab_batch_run_read, only: scene_group, physical_group
    use hillstab_batch_tasks_registry, only: task_entry_t, task_entries, task_names, task_names_text, new_task
    implicit none
    private
@@ -269,4 +269,4 @@ contains
       text = item(assignment, comment)
       text(1:1) = "!"
    end function commented_item
-end module hillstab_batch_scene_templates
+end module hillstab_batch_run_templates

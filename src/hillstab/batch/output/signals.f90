@@ -24,7 +24,7 @@
 !>```fortran
 !> call install_signal_cleanup()
 !>```
-module hillstab_batch_run_signals
+module hillstab_batch_output_signals
    use hillstab_ffi_libc, only: c_signal, c_unlink, c_exit_now, c_write
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_funptr, c_funloc, c_intptr_t, c_size_t, c_long
    implicit none
@@ -179,4 +179,4 @@ contains
       end if
       call c_exit_now(128_c_int + signum)
    end subroutine on_signal
-end module hillstab_batch_run_signals
+end module hillstab_batch_output_signals

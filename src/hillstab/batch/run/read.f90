@@ -12,7 +12,7 @@
 !> type(error_t), allocatable :: error
 !> call read_scene("data/scenes/default_exact.nml", scene, error)
 !>```
-module hillstab_batch_scene_read
+module hillstab_batch_run_read
    use hillstab_core_kinds, only: wp, pi
    use hillstab_core_error, only: error_t
    use hillstab_core_text, only: real_text, quoted
@@ -703,4 +703,4 @@ contains
       character(len=5), parameter :: names(3) = ["a_min", "a_max", "n_a  "]
       name = names(j)
    end function range_names
-end module hillstab_batch_scene_read
+end module hillstab_batch_run_read

@@ -5,11 +5,11 @@
 module test_templates
    use hillstab_core_error, only: error_t, err_input
    use hillstab_batch_scene_types, only: scene_t, task_t, scene_namelist
-   use hillstab_batch_scene_read, only: read_scene
+   use hillstab_batch_run_read, only: read_scene
    use hillstab_batch_run_scenes, only: run_scene_file
    use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_tasks_registry, only: new_task, task_names
-   use hillstab_batch_scene_templates, only: template_task_names, scene_template
+   use hillstab_batch_run_templates, only: template_task_names, scene_template
    use hillstab_test_scratch, only: scratch_prefix, write_file, delete_file
    use hillstab_testing
    implicit none
