@@ -8,7 +8,9 @@ library's OpenMP threads run while other Python threads go on.
 """
 import ctypes
 import glob
+import math
 import os
+import re
 
 import numpy as np
 
@@ -112,20 +114,65 @@ def error_name(status):
     return buffer.value.decode()
 
 
-def check(status, path=None):
+def check(status, path=None, known=None, fix=None):
     """Raise the library's error of a failed call: ValueError for bad input (invalid
     parameter, invalid input), PointsFailedError when a scene's file was written with
-    failed points, HillstabError for a computation that failed."""
+    failed points, HillstabError for a computation that failed.
+
+    The message's numbers are given in Python's format (`python_numbers`): ``known`` is the
+    call's input values (a sequence, or a function of the message returning one), so that a
+    value the library printed to a few digits is shown as the value passed; ``fix``, a
+    function of the message, corrects it further (the index of a point in a chunked call)."""
     if status == 0:
         return
     code, message = last_error()
     if not message:
         message = error_name(status)
+    if fix is not None:
+        message = fix(message)
+    if callable(known):
+        known = known(message)
+    message = python_numbers(message, known or ())
     if status in (ERR_INVALID_PARAMETER, ERR_INPUT):
         raise ValueError(message)
     if status == ERR_POINTS_FAILED:
         raise PointsFailedError(message, status, path)
     raise HillstabError(message, status)
+
+
+# a number as Fortran's E and ES edit descriptors write it (-1.00000E-01), or a plain decimal
+_NUMBER = re.compile(r"(?<![\w.])([-+]?)(\d+)\.(\d+)(?:E([-+]?\d+))?(?![\w.])")
+
+
+def python_numbers(message, known=()):
+    """The library's message with its Fortran-formatted numbers in Python's format: a number
+    written with an exponent E (``-1.00000E-01``) or with 17 significant digits
+    (``9.8696044010893586``) becomes the repr of the value (``-0.1``, ``9.869604401089358``)
+    — of the input value in `known` that it shows, when the library printed fewer digits
+    than a double has, else of the number as printed (``'{:.6g}'`` of a 6-digit one). The
+    words are left as they are; numbers the library already wrote in their shortest form
+    (``got 10.5``) are unchanged."""
+    known = [float(v) for v in known]
+
+    def replace(match):
+        sign, whole, fraction, exponent = match.groups()
+        token = match.group(0)
+        digits = len((whole + fraction).lstrip("0")) or 1
+        if exponent is None and digits < 17:
+            return token  # a plain decimal the library wrote in its shortest form
+        try:
+            value = float(token)
+        except ValueError:
+            return token
+        if digits >= 17 or value == 0.0:
+            return repr(value)
+        for candidate in known:
+            if math.isfinite(candidate) and float("{:.{}e}".format(candidate, digits - 1)) == value:
+                return repr(candidate)
+        text = "{:.{}g}".format(value, digits)
+        return text if any(c in text for c in ".ei") else text + ".0"
+
+    return _NUMBER.sub(replace, message)
 
 
 def text_out(function, *args, length=4096):

@@ -13,7 +13,7 @@ import numpy as np
 
 from . import _capi
 from ._capi import lib, check
-from .floquet import Result
+from .floquet import Result, _indexed
 from .models import as_model
 
 
@@ -59,7 +59,8 @@ def transition_curves(alpha, beta_min, beta_max, model="elastic", tolerance=1e-1
         check(lib.hillstab_transition_curves(
             model.handle, n, _capi.doubles(alphas), float(beta_min), float(beta_max), float(tolerance), capacity,
             int(threads), _capi.doubles(beta), _capi.ints(order), _capi.ints(parity), _capi.ints(sign),
-            _capi.doubles(bound), _capi.ints(coexistent), _capi.sizes(count), _capi.ints(status)))
+            _capi.doubles(bound), _capi.ints(coexistent), _capi.sizes(count), _capi.ints(status)),
+            known=_indexed("alpha", (alphas,), beta_min, beta_max, tolerance))
         if n == 0 or int(count.max()) <= capacity:
             break
         capacity = int(count.max())

@@ -14,11 +14,54 @@ from ._capi import lib, check
 _OFFSET = re.compile(r"offset=\s*(\d+)")
 
 
+def _group(header, name):
+    """The header's namelist line of group `name` (``&chart ... /``), or None."""
+    for line in header:
+        text = line.strip()
+        if re.match(r"&{}\b".format(name), text, re.I):
+            return text
+    return None
+
+
+def _variable(group, name, kind=str):
+    """A variable of a namelist line: a quoted string, or a number converted by `kind`; None
+    when absent."""
+    if group is None:
+        return None
+    match = re.search(r"(?:^|[\s,&])" + name + r"\s*=\s*('(?:[^']|'')*'|[^,/\s]+)", group, re.I)
+    if not match:
+        return None
+    value = match.group(1)
+    if value.startswith("'"):
+        return value[1:-1].replace("''", "'")
+    return kind(value)
+
+
+def grid_values(first, last, count):
+    """The values of a grid axis as the library computes them (``grid_value``): first, then
+    first + (last − first) i/(count − 1), the last exactly `last`."""
+    values = np.empty(count)
+    for i in range(count):
+        if count <= 1:
+            values[i] = first
+        elif i == count - 1:
+            values[i] = last
+        else:
+            values[i] = first + (last - first) * float(i) / float(count - 1)
+    return values
+
+
 class Output:
     """An output file of hillstab: its columns by name (``out["beta"]``, ``out.column("S")``,
     ``out.columns``), the data as a 2-D array (``out.data``, one row a point), the header
     lines (``out.header``, without ``#``) and the effective scene they repeat (``out.scene``,
-    namelist text: write it to a file and run it to repeat the run)."""
+    namelist text: write it to a file and run it to repeat the run).
+
+    A chart (task ``chart``, or ``lyapunov`` over a chart) is a grid as well: ``out.grid("S")``
+    is a column as a 2-D array ``[i_alpha, i_beta]`` and ``out.axes`` the coordinate vectors
+    (alpha, beta) — the shape of `chart`'s and `System.chart`'s results; a chart of a spring
+    in SI units (``&physical``) has the axes (a, omega). ``out.is_grid``, ``out.grid_shape``
+    and ``out.axis_names`` tell. ``out.to_pandas()`` gives a long table (pandas needed)."""
 
     def __init__(self, path, header, columns, data):
         #: the file
@@ -29,6 +72,92 @@ class Output:
         self.columns = columns
         #: its numbers, one row a point (a 2-D array, columns in file order)
         self.data = data
+        self._grid = self._find_grid()
+
+    def _find_grid(self):
+        """(axis names, counts, ends) of a chart's grid from the header's scene, or None."""
+        scene = _group(self.header, "scene")
+        task = (_variable(scene, "task") or "").lower()
+        over = (_variable(_group(self.header, "lyapunov"), "over") or "").lower()
+        if not (task == "chart" or (task == "lyapunov" and over == "chart")):
+            return None
+        chart = _group(self.header, "chart")
+        physical = _group(self.header, "physical")
+        if chart is not None and _variable(chart, "n_alpha", int) is not None:
+            names, group = ("alpha", "beta"), chart
+            keys = ("alpha_min", "alpha_max", "n_alpha", "beta_min", "beta_max", "n_beta")
+        elif physical is not None and _variable(physical, "n_a", int) is not None:
+            names, group = ("a", "omega"), physical
+            keys = ("a_min", "a_max", "n_a", "omega_min", "omega_max", "n_omega")
+        else:
+            return None
+        values = [_variable(group, key, int if key.startswith("n_") else float) for key in keys]
+        if any(v is None for v in values):
+            return None
+        first0, last0, count0, first1, last1, count1 = values
+        return names, (count0, count1), ((first0, last0), (first1, last1))
+
+    @property
+    def is_grid(self):
+        """True for a chart: the rows are the points of a grid, first axis outer."""
+        return self._grid is not None
+
+    @property
+    def grid_shape(self):
+        """(n_alpha, n_beta) of a chart (n_a, n_omega with ``&physical``), else None."""
+        return self._grid[1] if self._grid else None
+
+    @property
+    def axis_names(self):
+        """("alpha", "beta") of a chart (("a", "omega") with ``&physical``), else None."""
+        return self._grid[0] if self._grid else None
+
+    def _check_grid(self):
+        if self._grid is None:
+            raise ValueError("{}: not a chart (no grid in its header: task {})".format(
+                self.path, _variable(_group(self.header, "scene"), "task")))
+        rows = self.data.shape[0]
+        n0, n1 = self._grid[1]
+        if rows != n0 * n1:
+            raise ValueError("{}: {} rows, not the {} x {} points of its grid (a file cut short?)".format(
+                self.path, rows, n0, n1))
+
+    @property
+    def axes(self):
+        """The coordinate vectors of a chart's grid, (alpha, beta) (or (a, omega)): from the
+        file's columns when it has them, else computed from the header's grid as the library
+        computes them. ValueError for a file that is not a chart."""
+        self._check_grid()
+        names, (n0, n1), ends = self._grid
+        result = []
+        for k, name in enumerate(names):
+            if name in self.columns:
+                column = self.column(name)
+                result.append((column[::n1] if k == 0 else column[:n1]).copy())
+            else:
+                result.append(grid_values(ends[k][0], ends[k][1], (n0, n1)[k]))
+        return tuple(result)
+
+    def grid(self, name):
+        """The column `name` of a chart as a 2-D array [i_alpha, i_beta] (the shape of
+        `chart`'s results; a copy). ValueError for a file that is not a chart, KeyError for
+        a column it does not have."""
+        self._check_grid()
+        return self.column(name).reshape(self._grid[1]).copy()
+
+    def to_pandas(self):
+        """The file as a pandas DataFrame, one row a point and one column a column of the
+        file (a long table; pandas is not a requirement of hillstab: ImportError without it)."""
+        try:
+            import pandas
+        except ImportError:
+            raise ImportError("Output.to_pandas needs pandas (pip install pandas)") from None
+        return pandas.DataFrame(self.data, columns=list(self.columns))
+
+    def __repr__(self):
+        shape = " (grid {} x {})".format(*self._grid[1]) if self._grid else ""
+        return "<hillstab output {}: {} rows{}, columns {}>".format(self.path, self.data.shape[0], shape,
+                                                                     " ".join(self.columns))
 
     @property
     def scene(self):
@@ -56,15 +185,15 @@ class Output:
     def __contains__(self, name):
         return name in self.columns
 
-    def __repr__(self):
-        return "<hillstab output {}: {} rows, columns {}>".format(self.path, self.data.shape[0], " ".join(self.columns))
-
 
 def read_output(path):
-    """Read an output file of hillstab (text or ``format = 'binary'``) into an `Output`.
+    """Read an output file of hillstab (text or ``format = 'binary'``) into an `Output`:
+    columns by name as flat arrays (one entry a row of the file), and for a chart the same
+    as 2-D arrays ``[i_alpha, i_beta]`` with the axes (``grid``, ``axes``).
 
-    >>> out = read_output("out/default_chart.dat")
+    >>> out = read_output("out/default_exact_chart.dat")
     >>> out["S"], out.scene
+    >>> out.grid("S").shape, out.axes        # (600, 600), (alpha, beta)
     """
     with open(path, "rb") as handle:
         raw = handle.read()

@@ -31,6 +31,10 @@ class Spring:
         if omega is None:
             if k is None or m is None:
                 raise ValueError("give the spring constant k (N/m) and the mass m (kg), or omega (rad/s)")
+            if not float(k) > 0.0:
+                raise ValueError("k: the spring constant must be > 0, got {!r}".format(float(k)))
+            if not float(m) > 0.0:
+                raise ValueError("m: the mass must be > 0, got {!r}".format(float(m)))
             omega = math.sqrt(float(k) / float(m))
         elif k is not None or m is not None:
             raise ValueError("give omega or k and m, not both")

@@ -26,10 +26,11 @@ a complex α — raises TypeError naming it.
 """
 import ctypes
 import math
+import re
 
 import numpy as np
 
-from . import _capi
+from . import _capi, _progress
 from ._capi import lib, check, real_number, real_array
 from .floquet import _warn, _axis
 
@@ -200,6 +201,13 @@ class SystemResult:
                                                                         " ".join(self._names))
 
 
+def _shift_point(offset):
+    """A message fix for a chunk of points: "point K:" counted within the whole call."""
+    pattern = re.compile(r"(: point )(\d+)(:)")
+    return lambda message: pattern.sub(lambda m: m.group(1) + str(int(m.group(2)) + offset) + m.group(3),
+                                       message, count=1)
+
+
 def _is_scalar(value):
     return np.ndim(value) == 0 and not isinstance(value, (list, tuple))
 
@@ -303,16 +311,18 @@ class System:
         return (real_number("alpha", alpha), real_number("beta", beta), real_number("epsilon", epsilon),
                 real_number("tolerance", tolerance))
 
-    def floquet(self, alpha, beta, epsilon=0.0, method="auto", tolerance=1e-10, threads=0):
+    def floquet(self, alpha, beta, epsilon=0.0, method="auto", tolerance=1e-10, threads=0, progress=None,
+                chunk=None):
         """The Floquet analysis at (α, β) with damping ε M.
 
         At one point (numbers): a `SystemFloquet`, with the multipliers. At arrays of points
         (α, β and ε of any shapes that broadcast together): `points`' `SystemResult`, each
         point computed alone as the command line's task ``points`` computes it, on the
-        library's threads. Status 1 and 2 give a `HillstabWarning`, as for a scalar model.
+        library's threads (``progress``, ``chunk``: as in `points`). Status 1 and 2 give a
+        `HillstabWarning`, as for a scalar model.
         """
         if not (_is_scalar(alpha) and _is_scalar(beta) and _is_scalar(epsilon)):
-            return self.points(alpha, beta, epsilon, method, tolerance, threads)
+            return self.points(alpha, beta, epsilon, method, tolerance, threads, progress, chunk)
         m = 2 * self.n
         re = np.zeros(m, dtype=np.float64)
         im = np.zeros(m, dtype=np.float64)
@@ -352,12 +362,15 @@ class System:
         arrays["status"] = status.reshape(shape).astype(np.int8)
         return SystemResult(arrays, names, extra)
 
-    def points(self, alpha, beta, epsilon=0.0, method="auto", tolerance=1e-10, threads=0):
+    def points(self, alpha, beta, epsilon=0.0, method="auto", tolerance=1e-10, threads=0, progress=None, chunk=None):
         """The Floquet analysis of the points (α, β) with damping ε M — arrays of any shapes
         that broadcast together — each computed alone as the command line's task ``points``
         computes it (its files' numbers to the bit), on ``threads`` of the library's threads
         (0: OpenMP's default). Returns a `SystemResult` of the broadcast shape; status 1 and
-        2 give a `HillstabWarning`."""
+        2 give a `HillstabWarning`. ``progress``: a callable ``progress(done, total)`` called
+        after each chunk of ``chunk`` points (default about 1 % of them, at least 100), or
+        True for a bar (tqdm when installed, else a line on stderr); the chunks are computed
+        in order and give the same numbers to the bit (each point is computed alone)."""
         a, b, e = np.broadcast_arrays(real_array("alpha", alpha), real_array("beta", beta),
                                       real_array("epsilon", epsilon))
         shape = a.shape
@@ -366,20 +379,35 @@ class System:
         width = 14 + self.n
         out = np.empty((n, width))
         status = np.zeros(n, dtype=_capi.INT)
-        code = lib.hillstab_system_points(self._handle, n, _capi.doubles(a), _capi.doubles(b), _capi.doubles(e),
-                                          _method(method), real_number("tolerance", tolerance),
-                                          _threads(threads), _capi.doubles(out), _capi.ints(status))
-        if code != _capi.ERR_POINTS_FAILED:
-            check(code)
+        code_of_method = _method(method)
+        tolerance = real_number("tolerance", tolerance)
+        threads = _threads(threads)
+        report = _progress.Progress(progress, n, "points")
+        parts = _progress.chunks(n, _progress.chunk_size(chunk, n, 100)) if report.active else []
+        try:
+            for start, stop in parts or [(0, n)]:
+                code = lib.hillstab_system_points(self._handle, stop - start, _capi.doubles(a[start:]),
+                                                  _capi.doubles(b[start:]), _capi.doubles(e[start:]), code_of_method,
+                                                  tolerance, threads, _capi.doubles(out[start:]),
+                                                  _capi.ints(status[start:]))
+                if code != _capi.ERR_POINTS_FAILED:
+                    check(code, known=(tolerance,), fix=_shift_point(start))
+                if report.active:
+                    report.update(stop)
+        finally:
+            report.close()
         _warn(status, lambda k: "alpha = {!r}, beta = {!r}".format(float(a[k]), float(b[k])))
         return self._result(out, status, shape)
 
-    def chart(self, alpha, beta, epsilon=0.0, method="auto", tolerance=1e-10, threads=0):
+    def chart(self, alpha, beta, epsilon=0.0, method="auto", tolerance=1e-10, threads=0, progress=None):
         """The chart over a grid, as the command line's task ``chart`` computes it (its files'
         numbers to the bit: the points of a row share their nodes). ``alpha`` and ``beta``
         are (first, last, count), both ends included. Returns a `SystemResult` with 2-D
         arrays ``[i_alpha, i_beta]`` and the axes ``alpha`` (n_alpha,) and ``beta``
-        (n_beta,); status 1 and 2 give a `HillstabWarning`."""
+        (n_beta,); status 1 and 2 give a `HillstabWarning`. ``progress`` (a callable
+        ``progress(done, total)`` of rows, or True for a bar) reports the rows as they are
+        done, the chart still one call into the library (in a worker thread): the same
+        numbers to the bit. `read_output` gives a chart file in the same shape."""
         alpha_min, alpha_max, n_alpha = _axis(alpha, "alpha")
         beta_min, beta_max, n_beta = _axis(beta, "beta")
         alphas = np.empty(n_alpha)
@@ -387,13 +415,26 @@ class System:
         width = 14 + self.n
         out = np.empty((n_alpha, n_beta, width))
         status = np.zeros((n_alpha, n_beta), dtype=_capi.INT)
-        code = lib.hillstab_system_chart(self._handle, alpha_min, alpha_max, n_alpha, beta_min, beta_max, n_beta,
-                                         real_number("epsilon", epsilon), _method(method),
-                                         real_number("tolerance", tolerance), _threads(threads),
-                                         _capi.doubles(alphas), _capi.doubles(betas), _capi.doubles(out),
-                                         _capi.ints(status))
-        if code != _capi.ERR_POINTS_FAILED:
-            check(code)
+        epsilon = real_number("epsilon", epsilon)
+        tolerance = real_number("tolerance", tolerance)
+        code_of_method = _method(method)
+        threads = _threads(threads)
+
+        def call():
+            code = lib.hillstab_system_chart(self._handle, alpha_min, alpha_max, n_alpha, beta_min, beta_max, n_beta,
+                                             epsilon, code_of_method, tolerance, threads, _capi.doubles(alphas),
+                                             _capi.doubles(betas), _capi.doubles(out), _capi.ints(status))
+            if code != _capi.ERR_POINTS_FAILED:
+                check(code, known=(epsilon, tolerance, alpha_min, alpha_max, beta_min, beta_max))
+
+        report = _progress.Progress(progress, n_alpha, "rows")
+        try:
+            if report.active:
+                _progress.watch(call, status, report)
+            else:
+                call()
+        finally:
+            report.close()
         _warn(status, lambda k: "alpha = {!r}, beta = {!r}".format(float(alphas[k // n_beta]),
                                                                   float(betas[k % n_beta])))
         return self._result(out, status, (n_alpha, n_beta), extra={"alpha": alphas, "beta": betas})

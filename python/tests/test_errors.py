@@ -17,12 +17,15 @@ from test_values import same_bits
 
 
 def per_point_message(alpha, beta, epsilon=0.0, model=1, method=0, tolerance=1e-10):
-    """The message hillstab_trace (one point, a model code) leaves in hillstab_last_error."""
+    """The message hillstab_trace (one point, a model code) leaves in hillstab_last_error, its
+    numbers in Python's format as the package gives them (`_capi.python_numbers`)."""
     s, log_abs, overflow = ctypes.c_double(), ctypes.c_double(), ctypes.c_int()
     status = _capi.lib.hillstab_trace(model, alpha, beta, epsilon, method, 2, 1, tolerance, ctypes.byref(s),
                                       ctypes.byref(log_abs), ctypes.byref(overflow))
     assert status == 1
-    return _capi.last_error()[1]
+    raw = _capi.last_error()[1]
+    assert "1.0000000000000000E+01" in raw or alpha != 10.0  # the library's own format
+    return _capi.python_numbers(raw, [alpha, beta, epsilon, tolerance])
 
 
 def test_point_outside_domain():
@@ -79,7 +82,9 @@ def test_bad_scene_message(cli):
     message = done.stderr.strip().splitlines()[-1]
     with pytest.raises(ValueError) as caught:
         hillstab.run_scene(cli.path("bad.nml"))
-    assert str(caught.value) in message and "&chart" in str(caught.value) and "alpha_max" in str(caught.value)
+    # the command line's words, the numbers in Python's format (9.8696044010893586 there)
+    assert str(caught.value) in _capi.python_numbers(message) and "&chart" in str(caught.value)
+    assert "alpha_max" in str(caught.value) and "pi**2 = 9.869604401089358 " in str(caught.value)
     assert not list(__import__("pathlib").Path(cli.directory).glob("bad_chart*"))
     with pytest.raises(ValueError, match="missing.nml"):
         hillstab.run_scene(cli.path("missing.nml"))
@@ -106,8 +111,8 @@ def test_roundoff_status_is_flagged(cli):
 
 def test_threads_do_not_change_results():
     grid = ((0.0, 9.8, 10), (-2.0, 12.0, 50))
-    charts = [hillstab.chart(*grid, threads=n) for n in (1, 2, 3, 5)]
-    verdicts = [hillstab.chart(*grid, values=("stable",), threads=n) for n in (1, 2, 3, 5)]
+    charts = [hillstab.chart(*grid, model="elastic", threads=n) for n in (1, 2, 3, 5)]
+    verdicts = [hillstab.chart(*grid, model="elastic", values=("stable",), threads=n) for n in (1, 2, 3, 5)]
     for c in charts[1:]:
         for name in c.names:
             assert same_bits(getattr(c, name), getattr(charts[0], name)), name
@@ -115,7 +120,7 @@ def test_threads_do_not_change_results():
         assert same_bits(c.stable, verdicts[0].stable)
     rng = np.random.default_rng(1)
     alpha, beta = rng.uniform(0, 9.8, 400), rng.uniform(-2, 40, 400)
-    points = [hillstab.floquet(alpha, beta, threads=n) for n in (1, 2, 4)]
+    points = [hillstab.floquet(alpha, beta, model="elastic", threads=n) for n in (1, 2, 4)]
     for r in points[1:]:
         assert same_bits(r.trace, points[0].trace) and same_bits(r.exponent, points[0].exponent)
     curves = [hillstab.transition_curves(np.linspace(0, 9.5, 7), -2, 40, threads=n) for n in (1, 3)]
@@ -130,7 +135,7 @@ def test_transition_curves_closed_form():
     assert np.all(c.trace_sign == np.where(c.order % 2 == 0, 2, -2))
     # the curves bound the tongues: S = +-2 there to the tolerance
     d = hillstab.transition_curves([3.0, 7.0], -2.0, 30.0)
-    s = hillstab.trace(d.alpha, d.beta, tolerance=1e-12)
+    s = hillstab.trace(d.alpha, d.beta, model="elastic", tolerance=1e-12)
     assert np.allclose(s, d.trace_sign, atol=1e-7)
     with pytest.raises(ValueError):
         hillstab.transition_curves(10.0, -2.0, 30.0)
@@ -184,10 +189,10 @@ def test_concurrent_calls_from_python_threads():
     library together) give the serial values, and each thread gets its own error message."""
     from concurrent.futures import ThreadPoolExecutor
     grid = ((0.0, 9.8, 12), (-2.0, 12.0, 30))
-    serial = hillstab.chart(*grid, threads=1)
+    serial = hillstab.chart(*grid, model="elastic", threads=1)
 
     def good(_):
-        return hillstab.chart(*grid, threads=1).trace
+        return hillstab.chart(*grid, model="elastic", threads=1).trace
 
     def bad(k):
         try:

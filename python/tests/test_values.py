@@ -36,6 +36,7 @@ def compare_chart(cli, name, grid, threads=2, **options):
     cli.run(name, chart_scene(name, grid, columns=columns, fmt=fmt, **options), threads=threads)
     out = hillstab.read_output(cli.path(name + "_chart." + ("bin" if fmt == "binary" else "dat")))
     wanted = tuple(FILE_VALUES[c] for c in out.columns if c in FILE_VALUES)
+    options.setdefault("model", "elastic")
     c = hillstab.chart(grid[0], grid[1], values=wanted, threads=threads, **options)
     na, nb = grid[0][2], grid[1][2]
     assert same_bits(out["alpha"], np.repeat(c.alpha, nb))
@@ -65,7 +66,7 @@ def test_chart_verdicts_only(cli):
     with pytest.raises(AttributeError):
         c.trace
     # the verdicts agree with those of the full chart
-    full = hillstab.chart((0.0, 9.8, 16), (-2.0, 12.0, 40))
+    full = hillstab.chart((0.0, 9.8, 16), (-2.0, 12.0, 40), model="elastic")
     assert np.array_equal(full.stable, c.stable)
 
 
@@ -101,7 +102,7 @@ def test_points(cli):
             handle.write("{!r} {!r}\n".format(float(a), float(b)))
     cli.run("pts", "&scene task = 'points', output = 'pts', format = 'binary' /\n&points file = 'pts.txt' /\n")
     out = hillstab.read_output(cli.path("pts_points.bin"))
-    r = hillstab.floquet(alpha, beta)
+    r = hillstab.floquet(alpha, beta, model="elastic")
     assert same_bits(out["alpha"], alpha) and same_bits(out["beta"], beta)
     assert same_bits(out["status"], r.status)
     for column in out.columns:
@@ -111,7 +112,7 @@ def test_points(cli):
     assert np.allclose(np.log(r.lambda_max), r.log_moduli[:, 0], rtol=1e-12, atol=1e-12)
     assert same_bits(r.exponent, 0.5 * r.log_moduli[:, 0] + 0.0)
     # trace() gives the same S
-    assert same_bits(hillstab.trace(alpha, beta), r.trace)
+    assert same_bits(hillstab.trace(alpha, beta, model="elastic"), r.trace)
 
 
 def test_points_shapes_and_damping():
