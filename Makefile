@@ -42,6 +42,8 @@
 #   make bench-lyapunov chaos map 40 x 40 x 300 periods: hillstab against a plain C GSL program and
 #                       lyapunov_largest, interleaved (~2 min; once ~3 min more for the 3000-period
 #                       reference); the 400 x 400 x 1000 map estimated from a sample (out/bench_lyapunov*.dat, .png)
+#   make bench-python   a 300 x 300 system chart from Python (System.chart) against the same chart by the
+#                       library's task (run_scene), same build and threads (scripts/bench_python_system.py)
 #   make bench-system   systems of Hill equations: the 300 x 300 pendula-pair chart against the plain C
 #                       GSL program (bench/chart_gsl_system.c) at equal accuracy, and the cost against n
 #                       (build/bench/system_speed.dat, system_cost.dat, system_cost.png; BENCH_SYSTEM_N)
@@ -67,7 +69,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug test-python test-sanitize setup setup-build setup-test bench bench-fourier bench-output bench-instructions area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov bench-system fuzz check-memory check-scenes check-plots
+.PHONY: run test test-debug test-python test-sanitize setup setup-build setup-test bench bench-fourier bench-output bench-instructions area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov bench-system bench-python fuzz check-memory check-scenes check-plots
 
 # what each target needs (scripts/setup.sh installs only what is missing)
 setup:
@@ -270,6 +272,9 @@ bench-lyapunov: setup
 # fundamental matrix) on the pendula pair's chart, errors against GSL at 1e-14, speed at equal
 # accuracy; then microseconds and steps per point against the degrees of freedom n
 BENCH_SYSTEM_N ?= 300
+bench-python: test-python
+	build/venv/bin/python scripts/bench_python_system.py
+
 bench-system: setup
 	mkdir -p build/bench
 	$(CC) -O2 bench/chart_gsl_system.c -o build/chart_gsl_system -lgsl -lgslcblas -lm
