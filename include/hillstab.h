@@ -233,6 +233,19 @@ int hillstab_system_floquet(const hillstab_system *system, double alpha, double 
                             double *log_scale, double *exponents, int *verdict, int *kind, double *trace,
                             double *a2, double *defect, double *error_estimate, int *status);
 
+/* The critical drives at a fixed beta: every alpha of [alpha_min, alpha_max] where the
+ * stability at beta and damping epsilon changes, ascending; *count of them, the first
+ * `capacity` stored: alpha, the bound of its error, side (+1: S reaches +2 cosh(eps P/2),
+ * -1: -2 cosh(eps P/2)), direction (+1: stable below, unstable above; -1 the reverse) and
+ * status (0 confirmed by the verdicts on both sides, 2 not). S by `method` to `tolerance`
+ * (also the target of alpha, relative to max(1, |alpha|)); n_samples >= 2 values of alpha
+ * are sampled, and a region narrower than the samples is found where |S| comes near the
+ * threshold at a neighbouring sample. */
+int hillstab_critical_drives(const hillstab_model *model, double beta, double alpha_min, double alpha_max,
+                             double epsilon, int method, double tolerance, int n_samples, size_t capacity,
+                             double *alpha, double *alpha_error, int *side, int *direction, int *status,
+                             size_t *count);
+
 /* Many points at once, as the tasks compute them, on `threads` OpenMP threads (0: the
  * default): values[j][k] over the columns of a system's files (14 + n: alpha beta trace a2
  * overflow stable kind lambda_max mu argument mu_1 ... mu_n defect error_estimate status

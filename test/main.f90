@@ -21,6 +21,7 @@ program tester
    use test_capi_sizes, only: collect_capi_sizes
    use test_capi_system_batch, only: collect_capi_system_batch
    use test_expression, only: collect_expression
+   use test_critical, only: collect_critical
    use test_gsl, only: collect_gsl
    use test_rk, only: collect_rk
    use test_magnus, only: collect_magnus
@@ -49,7 +50,7 @@ program tester
    use test_checkpoint, only: collect_checkpoint
    implicit none
    ! one by one, not as an array constructor of the collect functions' results: gfortran 12
-   type(testsuite_t) :: suites(46)
+   type(testsuite_t) :: suites(47)
    integer :: n_failed
    suites(1) = collect_models()
    suites(2) = collect_codes()
@@ -97,6 +98,7 @@ program tester
    suites(44) = collect_capi_sizes()
    suites(45) = collect_capi_system_batch()
    suites(46) = collect_expression()
+   suites(47) = collect_critical()
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

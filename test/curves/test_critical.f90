@@ -1,0 +1,206 @@
+!> Tests of the critical drives (hillstab_curves_critical): on Mathieu's equation every
+!> crossing of the range against the characteristic values a_n, b_n of GSL (the α where
+!> (π²/4) a_n(2α/π²) = β, found here by bisection on GSL's values), each within its stated
+!> error and confirmed; the Kapitza pendulum's least stabilising amplitude at 50 Hz against
+!> the value of a 150-digit reference (6.30680 mm) and the classic √(2gl)/ω to first order;
+!> a narrow region between two samples found; bad ranges refused naming the argument.
+module test_critical
+   use hillstab_core_kinds, only: wp, pi, pi2
+   use hillstab_core_error, only: error_t, err_invalid_parameter
+   use hillstab_core_status, only: status_ok
+   use hillstab_hill_model_mathieu, only: mathieu_model_t
+   use hillstab_hill_mathieu, only: mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b
+   use hillstab_integrate_monodromy, only: method_t
+   use hillstab_curves_critical, only: critical_drive_t, critical_drives
+   use hillstab_testing
+   implicit none
+   private
+   public :: collect_critical
+
+contains
+
+   function collect_critical() result(suite)
+      type(testsuite_t) :: suite
+      suite = new_testsuite("critical", [ &
+         new_unittest("mathieu_against_gsl", mathieu_against_gsl), &
+         new_unittest("kapitza_least_amplitude", kapitza_least_amplitude), &
+         new_unittest("narrow_region_between_samples", narrow_region_between_samples), &
+         new_unittest("bad_ranges_refused", bad_ranges_refused)])
+   end function collect_critical
+
+   !> Every ν in [lo, hi] where the curve (kind, n) passes β: GSL's values on 3000 steps of
+   !> ν, each sign change bisected on them (appended to `roots`, counted in `count`).
+   subroutine gsl_crossings(kind, n, beta, lo, hi, roots, count)
+      integer, intent(in) :: kind, n
+      real(wp), intent(in) :: beta, lo, hi
+      real(wp), intent(inout) :: roots(:)
+      integer, intent(inout) :: count
+      type(error_t), allocatable :: error
+      real(wp) :: a, b, fa, fb, fm, nu, value
+      integer :: i, step
+      integer, parameter :: steps = 3000
+      a = lo
+      call mathieu_transition_beta(kind, n, a, value, error)
+      fa = value - beta
+      do step = 1, steps
+         b = lo + (hi - lo)*real(step, wp)/real(steps, wp)
+         call mathieu_transition_beta(kind, n, b, value, error)
+         fb = value - beta
+         if (fa*fb < 0.0_wp) then
+            block
+               real(wp) :: left, right, f_left
+               left = a
+               right = b
+               f_left = fa
+               do i = 1, 200
+                  nu = 0.5_wp*(left + right)
+                  call mathieu_transition_beta(kind, n, nu, value, error)
+                  fm = value - beta
+                  if (f_left*fm <= 0.0_wp) then
+                     right = nu
+                  else
+                     left = nu
+                     f_left = fm
+                  end if
+                  if (right - left <= 1.0e-14_wp*max(1.0_wp, nu)) exit
+               end do
+               count = count + 1
+               roots(count) = 0.5_wp*(left + right)
+            end block
+         end if
+         a = b
+         fa = fb
+      end do
+   end subroutine gsl_crossings
+
+   !> β = 5 and β = −1.3, α in [0.02, 30]: the crossings of the curves a_0 … a_7, b_1 … b_7
+   !> found on GSL's values (a_1 rises and falls again: it crosses β = 5 twice), the same count and each
+   !> within the error bound the search states (at most 1e-8 relative), every one confirmed.
+   subroutine mathieu_against_gsl(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(mathieu_model_t) :: mathieu
+      type(critical_drive_t), allocatable :: drives(:)
+      type(error_t), allocatable :: error
+      real(wp) :: reference(64), betas(2)
+      integer :: count, n, kind, j, m, t, nearest
+      betas = [5.0_wp, -1.3_wp]
+      do t = 1, size(betas)
+         count = 0
+         do kind = mathieu_kind_a, mathieu_kind_b
+            do n = merge(0, 1, kind == mathieu_kind_a), 7
+               call gsl_crossings(kind, n, betas(t), 0.02_wp, 30.0_wp, reference, count)
+            end do
+         end do
+         call critical_drives(mathieu, betas(t), 0.02_wp, 30.0_wp, 0.0_wp, method_t(tolerance=1.0e-11_wp), 300, &
+                              drives, error)
+         call check(ctx, .not. allocated(error), "the search runs")
+         if (allocated(error)) return
+         call check(ctx, size(drives) == count .and. count >= 2, "as many crossings as GSL's curves give: "// &
+                    trim(adjustl(int_text(size(drives))))//" and "//trim(adjustl(int_text(count))))
+         do j = 1, size(drives)
+            nearest = 1
+            do m = 2, count
+               if (abs(reference(m) - drives(j)%alpha) < abs(reference(nearest) - drives(j)%alpha)) nearest = m
+            end do
+            call check(ctx, abs(drives(j)%alpha - reference(nearest)) <= drives(j)%alpha_error + &
+                       1.0e-12_wp*reference(nearest), "within its error bound")
+            call check(ctx, drives(j)%alpha_error <= 1.0e-8_wp*max(1.0_wp, drives(j)%alpha), "a tight bound")
+            call check(ctx, drives(j)%status == status_ok, "confirmed on both sides")
+            if (j > 1) call check(ctx, drives(j)%alpha > drives(j - 1)%alpha, "ascending")
+            if (j > 1) call check(ctx, drives(j)%direction == -drives(j - 1)%direction, "stable and unstable alternate")
+         end do
+      end do
+   end subroutine mathieu_against_gsl
+
+   !> θ'' + κθ' + (−g/l + (Aω²/l) cos ωt) θ = 0 at l = 0.2 m, κ = 0.2 1/s, 50 Hz: in
+   !> τ = ωt/π, Mathieu's Q = β − α cos πτ with β = −gπ²/(lω²), α = Aπ²/l, ε = κπ/ω. The
+   !> upright position is unstable at A = 0 and first stable from A = 6.30680 mm (a
+   !> 150-digit reference); √(2gl)/ω = 6.30543 mm to first order; the window closes again
+   !> near 91.0 mm.
+   subroutine kapitza_least_amplitude(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(mathieu_model_t) :: mathieu
+      type(critical_drive_t), allocatable :: drives(:)
+      type(error_t), allocatable :: error
+      real(wp), parameter :: g = 9.81_wp, l = 0.2_wp, kappa = 0.2_wp
+      real(wp) :: omega, beta, epsilon, amplitude
+      omega = 2.0_wp*pi*50.0_wp
+      beta = -g*pi2/(l*omega**2)
+      epsilon = kappa*pi/omega
+      call critical_drives(mathieu, beta, 0.0_wp, 0.1_wp*pi2/l, epsilon, method_t(tolerance=1.0e-12_wp), 400, &
+                           drives, error)
+      call check(ctx, .not. allocated(error), "the search runs")
+      if (allocated(error)) return
+      call check(ctx, size(drives) >= 2, "the stable window opens and closes in A < 0.1 m")
+      if (size(drives) < 2) return
+      amplitude = drives(1)%alpha*l/pi2
+      call check(ctx, amplitude, 6.30680e-3_wp, abs=5.0e-9_wp, message="the least stabilising amplitude")
+      call check(ctx, drives(1)%direction == -1, "stable above it")
+      call check(ctx, abs(amplitude - sqrt(2.0_wp*g*l)/omega) < 2.0e-6_wp, "near sqrt(2gl)/omega")
+      call check(ctx, drives(2)%alpha*l/pi2, 91.0e-3_wp, abs=0.6e-3_wp, message="the window closes")
+      call check(ctx, drives(2)%direction == 1, "unstable above it")
+   end subroutine kapitza_least_amplitude
+
+   !> Regions narrower than the samples: at β = 40 the region between b_4's and a_4's
+   !> crossings (α ≈ 11.93 … 12.89, 1 wide) with 4 samples over [0.02, 30] (10 apart), and at
+   !> β = 6.21 the region where a_1 passes above β (α ≈ 13.38 … 15.02) with 8 samples: the
+   !> crossings of a search with 3000 samples, at the same places within their bounds.
+   subroutine narrow_region_between_samples(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(mathieu_model_t) :: mathieu
+      type(critical_drive_t), allocatable :: coarse(:), fine(:)
+      type(error_t), allocatable :: error
+      real(wp), parameter :: betas(2) = [40.0_wp, 6.21_wp]
+      integer, parameter :: samples(2) = [4, 8]
+      integer :: j, t
+      do t = 1, 2
+         call critical_drives(mathieu, betas(t), 0.02_wp, 30.0_wp, 0.0_wp, method_t(tolerance=1.0e-11_wp), 3000, &
+                              fine, error)
+         call check(ctx, .not. allocated(error), "fine search runs")
+         call critical_drives(mathieu, betas(t), 0.02_wp, 30.0_wp, 0.0_wp, method_t(tolerance=1.0e-11_wp), &
+                              samples(t), coarse, error)
+         call check(ctx, .not. allocated(error), "coarse search runs")
+         if (allocated(error)) return
+         call check(ctx, size(fine) >= 2 .and. size(coarse) == size(fine), "the same crossings with few samples "// &
+                    "as with 3000: "//trim(adjustl(int_text(size(coarse))))//" and "//trim(adjustl(int_text(size(fine)))))
+         if (size(coarse) /= size(fine)) cycle
+         do j = 1, size(fine)
+            call check(ctx, abs(coarse(j)%alpha - fine(j)%alpha) <= coarse(j)%alpha_error + fine(j)%alpha_error, &
+                       "the same position")
+            call check(ctx, coarse(j)%status == status_ok, "confirmed")
+         end do
+      end do
+   end subroutine narrow_region_between_samples
+
+   !> An empty or non-finite range, too few samples, a negative damping: err_invalid_parameter
+   !> naming the argument.
+   subroutine bad_ranges_refused(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(mathieu_model_t) :: mathieu
+      type(critical_drive_t), allocatable :: drives(:)
+      type(error_t), allocatable :: error
+      real(wp) :: zero
+      zero = 0.0_wp
+      call critical_drives(mathieu, 1.0_wp, 2.0_wp, 1.0_wp, 0.0_wp, method_t(), 10, drives, error)
+      call refused("alpha_min, alpha_max", "empty range")
+      call critical_drives(mathieu, 1.0_wp, 0.0_wp, huge(1.0_wp)*(1.0_wp + zero), 0.0_wp, method_t(), 1, drives, error)
+      call refused("n_samples", "one sample")
+      call critical_drives(mathieu, 1.0_wp, 0.0_wp, 1.0_wp, -0.5_wp, method_t(), 10, drives, error)
+      call check(ctx, allocated(error), "a negative damping refused")
+      if (allocated(error)) call check(ctx, error%code == err_invalid_parameter, "as an invalid parameter")
+   contains
+      subroutine refused(part, what)
+         character(len=*), intent(in) :: part, what
+         call check(ctx, allocated(error), what//": refused")
+         if (.not. allocated(error)) return
+         call check(ctx, error%code == err_invalid_parameter .and. index(error%message, part) == 1, &
+                    what//": names "//part//": "//error%message)
+      end subroutine refused
+   end subroutine bad_ranges_refused
+
+   pure function int_text(i) result(text)
+      integer, intent(in) :: i
+      character(len=12) :: text
+      write (text, '(i0)') i
+   end function int_text
+end module test_critical
