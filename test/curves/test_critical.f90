@@ -2,14 +2,15 @@
 !> crossing of the range against the characteristic values a_n, b_n of GSL (the α where
 !> (π²/4) a_n(2α/π²) = β, found here by bisection on GSL's values), each within its stated
 !> error and confirmed; the Kapitza pendulum's least stabilising amplitude at 50 Hz against
-!> the value of a 150-digit reference (6.30680 mm) and the classic √(2gl)/ω to first order;
+!> the value of a 150-digit reference (6.30680 mm) and the classic √(2gl)/ω to first order,
+!> undamped at 10 frequencies against a_0(q) on GSL's values and its series;
 !> a narrow region between two samples found; bad ranges refused naming the argument.
 module test_critical
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t, err_invalid_parameter
    use hillstab_core_status, only: status_ok
    use hillstab_hill_model_mathieu, only: mathieu_model_t
-   use hillstab_hill_mathieu, only: mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b
+   use hillstab_hill_mathieu, only: mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b, mathieu_a
    use hillstab_integrate_monodromy, only: method_t
    use hillstab_curves_critical, only: critical_drive_t, critical_drives
    use hillstab_testing
@@ -24,6 +25,7 @@ contains
       suite = new_testsuite("critical", [ &
          new_unittest("mathieu_against_gsl", mathieu_against_gsl), &
          new_unittest("kapitza_least_amplitude", kapitza_least_amplitude), &
+         new_unittest("kapitza_ten_frequencies", kapitza_ten_frequencies), &
          new_unittest("narrow_region_between_samples", narrow_region_between_samples), &
          new_unittest("bad_ranges_refused", bad_ranges_refused)])
    end function collect_critical
@@ -140,6 +142,48 @@ contains
       call check(ctx, drives(2)%alpha*l/pi2, 91.0e-3_wp, abs=0.6e-3_wp, message="the window closes")
       call check(ctx, drives(2)%direction == 1, "unstable above it")
    end subroutine kapitza_least_amplitude
+
+   !> The undamped Kapitza pendulum (l = 0.2 m) at 10 frequencies from 30 to 120 Hz: its
+   !> least stabilising amplitude is where Mathieu's a_0(q) = −4g/(lω²), q = 2A/l. Against
+   !> that equation solved on GSL's a_0 (relative 1e-9), the series a_0 ≈ −q²/2 + 7q⁴/128
+   !> (relative q⁴, its next term's order) and the first order Aω = √(2gl) (relative q²).
+   subroutine kapitza_ten_frequencies(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(mathieu_model_t) :: mathieu
+      type(critical_drive_t), allocatable :: drives(:)
+      type(error_t), allocatable :: error
+      real(wp), parameter :: g = 9.81_wp, l = 0.2_wp
+      real(wp) :: omega, a, amplitude, q, lo, hi, mid, value, series
+      integer :: f, i
+      do f = 1, 10
+         omega = 2.0_wp*pi*(30.0_wp + 10.0_wp*(f - 1))
+         a = -4.0_wp*g/(l*omega**2)
+         call critical_drives(mathieu, 0.25_wp*pi2*a, 0.0_wp, 2.0_wp*pi2/l*sqrt(2.0_wp*g*l)/omega, 0.0_wp, &
+                              method_t(tolerance=1.0e-12_wp), 100, drives, error)
+         call check(ctx, .not. allocated(error) .and. size(drives) == 1, "one change below twice the first order")
+         if (allocated(error) .or. size(drives) /= 1) cycle
+         amplitude = drives(1)%alpha*l/pi2
+         ! a_0(q) = a on GSL's values: a_0 falls with q
+         lo = 0.0_wp
+         hi = 1.0_wp
+         do i = 1, 200
+            mid = 0.5_wp*(lo + hi)
+            call mathieu_a(0, mid, value, error)
+            if (value > a) then
+               lo = mid
+            else
+               hi = mid
+            end if
+         end do
+         q = 0.5_wp*(lo + hi)
+         call check(ctx, amplitude, 0.5_wp*q*l, rel=1.0e-9_wp, message="a_0(q) = -4g/(l w^2) on GSL's values")
+         ! −q²/2 + 7q⁴/128 = a: q² = (32/7)(1 − sqrt(1 + 7a/8)), the root that vanishes with a
+         series = 0.5_wp*l*sqrt((32.0_wp/7.0_wp)*(1.0_wp - sqrt(1.0_wp + 7.0_wp*a/8.0_wp)))
+         call check(ctx, abs(amplitude - series) <= q**4*amplitude, "the series to order q^4")
+         call check(ctx, abs(amplitude*omega - sqrt(2.0_wp*g*l)) <= q**2*amplitude*omega, "A w = sqrt(2 g l) to order q^2")
+         call check(ctx, drives(1)%direction == -1 .and. drives(1)%status == status_ok, "stable above, confirmed")
+      end do
+   end subroutine kapitza_ten_frequencies
 
    !> Regions narrower than the samples: at β = 40 the region between b_4's and a_4's
    !> crossings (α ≈ 11.93 … 12.89, 1 wide) with 4 samples over [0.02, 30] (10 apart), and at
