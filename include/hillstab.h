@@ -29,7 +29,7 @@ extern "C" {
 
 enum {
   HILLSTAB_MODEL_ELASTIC = 1, HILLSTAB_MODEL_MATHIEU = 2, HILLSTAB_MODEL_MEISSNER = 3, HILLSTAB_MODEL_FOURIER = 4,
-  HILLSTAB_MODEL_SAMPLED = 5, HILLSTAB_MODEL_MODULATED = 6
+  HILLSTAB_MODEL_SAMPLED = 5, HILLSTAB_MODEL_MODULATED = 6, HILLSTAB_MODEL_EQUATION = 7
 };
 enum {
   HILLSTAB_METHOD_AUTO = 0, HILLSTAB_METHOD_FORMULA = 1, HILLSTAB_METHOD_SEGMENTS = 2,
@@ -139,6 +139,9 @@ void hillstab_model_free(hillstab_model *model);
 /* Set a variable of a model that carries data (the elastic and Mathieu models have none);
  * hillstab_model_check: whether the model is complete (every computation checks too). */
 int hillstab_model_set(hillstab_model *model, const char *variable, const double *values, size_t count);
+/* Set a text variable (the equation model's parameters, stiffness, mass, damping, frequency
+ * or period, alpha and beta: expressions and names, as in its scene group &equation). */
+int hillstab_model_set_text(hillstab_model *model, const char *variable, const char *text);
 int hillstab_model_check(const hillstab_model *model);
 
 /* The model's name, its coefficient Q as output headers state it, its variables. */

@@ -79,6 +79,7 @@ _declare("hillstab_model_registry_name", ctypes.c_int, ctypes.c_int, ctypes.c_ch
 _declare("hillstab_model_new", ctypes.c_int, ctypes.c_char_p, ctypes.POINTER(_model_p))
 _declare("hillstab_model_free", None, _model_p)
 _declare("hillstab_model_set", ctypes.c_int, _model_p, ctypes.c_char_p, _c_double_p, ctypes.c_size_t)
+_declare("hillstab_model_set_text", ctypes.c_int, _model_p, ctypes.c_char_p, ctypes.c_char_p)
 _declare("hillstab_model_check", ctypes.c_int, _model_p)
 _declare("hillstab_model_name", ctypes.c_int, _model_p, ctypes.c_char_p, ctypes.c_size_t)
 _declare("hillstab_model_formula", ctypes.c_int, _model_p, ctypes.c_char_p, ctypes.c_size_t)

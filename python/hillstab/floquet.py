@@ -333,8 +333,12 @@ def chart(alpha, beta, model=None, epsilon=0.0, method="auto", tolerance=1e-10, 
     _warn(status, lambda k: "alpha = {!r}, beta = {!r}".format(float(alphas[k // n_beta]), float(betas[k % n_beta])))
     if not explicit:
         _warn_default_model(*np.broadcast_arrays(alphas[:, np.newaxis], betas[np.newaxis, :]), stacklevel=3)
-    return Result(_unpack(out, values, (n_alpha, n_beta)), status.astype(np.int8), values,
-                  extra={"alpha": alphas, "beta": betas})
+    extra = {"alpha": alphas, "beta": betas}
+    axes = getattr(model, "axes", None)
+    if axes:
+        # an equation's axes by their parameters' names too
+        extra.update({axes[0]: alphas, axes[1]: betas})
+    return Result(_unpack(out, values, (n_alpha, n_beta)), status.astype(np.int8), values, extra=extra)
 
 
 def _axis(axis, name):

@@ -77,9 +77,13 @@ class Model:
         return result
 
     def set(self, variable, values):
-        """Set a variable of the model (e.g. Fourier coefficients) to the given numbers;
-        ValueError with the library's message when the model has no such variable or
-        refuses the numbers. Returns the model."""
+        """Set a variable of the model (e.g. Fourier coefficients) to the given numbers, or
+        a text variable (an equation's expressions and names) to a string; ValueError with
+        the library's message when the model has no such variable or refuses the values.
+        Returns the model."""
+        if isinstance(values, str):
+            check(lib.hillstab_model_set_text(self._handle, str(variable).encode(), values.encode()))
+            return self
         array = _capi.as_doubles(np.atleast_1d(values))
         check(lib.hillstab_model_set(self._handle, str(variable).encode(), _capi.doubles(array), array.size))
         return self
@@ -100,6 +104,54 @@ class Model:
 
     def __repr__(self):
         return "hillstab.Model({!r})".format(self.name)
+
+
+class Equation(Model):
+    """An equation as its user writes it, in physical time t with named parameters:
+    m x'' + c x' + k(t) x = 0, k of period 2π/Ω (the scene group ``&equation``).
+
+    ``stiffness`` k(t), ``mass`` m and ``damping`` c are expressions (numbers, + - * / ^,
+    parentheses, pi, sin cos tan exp log sqrt abs sinh cosh tanh atan atan2, t and the
+    parameters; m and c without t); ``frequency`` Ω or ``period`` T (expressions of the
+    parameters); ``parameters`` a dict ``{name: value}`` in order (or the scene's text
+    ``"g = 9.81, l = 0.2"``); ``alpha`` and ``beta`` the parameters the points' two
+    coordinates are: `floquet` and `chart` take their values as ``alpha`` and ``beta``.
+    The β axis must enter the stiffness alone and affinely (a drive amplitude, a load);
+    the α axis may enter anywhere (the frequency). The damping is the equation's own, at
+    every point (``epsilon`` must stay 0); the results are the physical equation's: its
+    multipliers over one period, ``trace`` S₁ = e^{cT/(2m)} times the trace of its
+    monodromy, ``exponent`` μ per unit τ = Ωt/π (μ Ω/π per unit time).
+
+    >>> kapitza = Equation("-g/l + A*w^2/l*cos(w*t)", frequency="w", damping="kappa",
+    ...                    parameters={"g": 9.81, "l": 0.2, "kappa": 0.2, "A": 0.005, "w": 314.16},
+    ...                    alpha="w", beta="A")
+    >>> floquet(314.16, [0.006, 0.007], model=kapitza).stable
+    """
+
+    def __init__(self, stiffness, frequency=None, period=None, parameters=None, mass="1", damping="0",
+                 alpha=None, beta=None):
+        super().__init__("equation")
+        if parameters is None:
+            parameters = ""
+        if isinstance(parameters, dict):
+            parameters = ", ".join("{} = {!r}".format(name, float(value)) for name, value in parameters.items())
+        for name, text in (("parameters", parameters), ("stiffness", stiffness), ("mass", mass),
+                           ("damping", damping), ("frequency", frequency), ("period", period),
+                           ("alpha", alpha), ("beta", beta)):
+            if text is None:
+                continue
+            if not isinstance(text, str):
+                if name in ("mass", "damping", "frequency", "period"):
+                    text = repr(float(text))
+                else:
+                    raise ValueError("{}: a string, got {!r}".format(name, text))
+            self.set(name, text)
+        self.check()
+        #: the parameters of the two axes, as files name their columns
+        self.axes = (alpha, beta)
+
+    def __repr__(self):
+        return "hillstab.Equation({!r})".format(self.formula)
 
 
 def as_model(model):

@@ -85,6 +85,10 @@ class Output:
         physical = _group(self.header, "physical")
         if chart is not None and _variable(chart, "n_alpha", int) is not None:
             names, group = ("alpha", "beta"), chart
+            equation = _group(self.header, "equation")
+            if equation is not None and _variable(equation, "alpha") and _variable(equation, "beta"):
+                # an equation's axes are its parameters, and the columns are named after them
+                names = (_variable(equation, "alpha"), _variable(equation, "beta"))
             keys = ("alpha_min", "alpha_max", "n_alpha", "beta_min", "beta_max", "n_beta")
         elif physical is not None and _variable(physical, "n_a", int) is not None:
             names, group = ("a", "omega"), physical
@@ -109,7 +113,8 @@ class Output:
 
     @property
     def axis_names(self):
-        """("alpha", "beta") of a chart (("a", "omega") with ``&physical``), else None."""
+        """("alpha", "beta") of a chart (("a", "omega") with ``&physical``; an equation's two
+        parameters, as its columns are named), else None."""
         return self._grid[0] if self._grid else None
 
     def _check_grid(self):

@@ -49,7 +49,7 @@ contains
       type(elastic_model_t) :: elastic
       type(mathieu_model_t) :: mathieu
       integer :: k
-      call check(ctx, model_count == 6, "six models")
+      call check(ctx, model_count == 7, "seven models")
       call check(ctx, model_code(elastic) == 1 .and. model_code(mathieu) == 2, "codes of the C API: elastic 1, mathieu 2")
       do k = 1, model_count
          call new_model(model_names(k), model, error)
@@ -71,7 +71,7 @@ contains
       call check(ctx, allocated(error), "code 0 refused")
       call model_from_code(model_count + 1, model, error)
       call check(ctx, allocated(error), "code past the last refused")
-      call check(ctx, model_names_text() == "elastic, mathieu, meissner, fourier, sampled or modulated", &
+      call check(ctx, model_names_text() == "elastic, mathieu, meissner, fourier, sampled, modulated or equation", &
                  "names text: "//model_names_text())
       call check(ctx, model_description(elastic) == "model: elastic, Q(tau) = (beta - alpha cos(pi tau))/"// &
          "(1 - (alpha/pi^2) cos(pi tau)), eq. (25)", "elastic header line")

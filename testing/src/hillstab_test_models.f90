@@ -2,7 +2,8 @@
 !> a model code from a reference table: one instance of each, made on first use and kept,
 !> handed out as pointers (no copies of polymorphic values, nothing to free). The models
 !> that carry data get a fixed example: the fourier model f = 0.5 cos πτ + 0.25 cos 3πτ +
-!> 0.3 sin 2πτ (not even: sine terms), the sampled model 12 samples of cos πτ − 0.4 sin 2πτ.
+!> 0.3 sin 2πτ (not even: sine terms), the sampled model 12 samples of cos πτ − 0.4 sin 2πτ,
+!> the equation 1.5 x'' + (b − a cos πt + 0.3 a sin 2πt) x = 0 (Ω = π, axes a and b).
 module hillstab_test_models
    use hillstab_hill_model, only: hill_model_t
    use hillstab_hill_models, only: model_from_code, model_count
@@ -49,6 +50,13 @@ contains
             samples(j + 1) = cos(pi*j/6.0_wp) - 0.4_wp*sin(2.0_wp*pi*j/6.0_wp)
          end do
          call model%set_values("samples", samples, error)
+      case ("equation")
+         call model%set_text("parameters", "a = 1, b = 1", error)
+         call model%set_text("stiffness", "b - a*cos(pi*t) + 0.3*a*sin(2*pi*t)", error)
+         call model%set_text("mass", "1.5", error)
+         call model%set_text("frequency", "pi", error)
+         call model%set_text("alpha", "a", error)
+         call model%set_text("beta", "b", error)
       end select
    end subroutine example_data
 end module hillstab_test_models

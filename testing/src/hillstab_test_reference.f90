@@ -19,23 +19,27 @@ contains
    !> 1e-12 (round-off limited references kept, failed points skipped): the largest error
    !> relative to max(1, |S|) over the tolerance goes into `worst`, the points compared into
    !> `n_checked`.
-   subroutine auto_row_errors(model, alpha, betas, tolerance, worst, n_checked)
+   subroutine auto_row_errors(model, alpha, betas, tolerance, worst, n_checked, epsilon)
       class(hill_model_t), intent(in) :: model  !! the model
       real(wp), intent(in) :: alpha             !! α of the row
       real(wp), intent(in) :: betas(:)          !! its β values
       real(wp), intent(in) :: tolerance         !! auto's tolerance
       real(wp), intent(inout) :: worst          !! largest error/tolerance so far
       integer, intent(inout) :: n_checked       !! points compared so far
+      real(wp), intent(in), optional :: epsilon  !! the row's damping (default 0)
       type(trace_t) :: row(size(betas)), reference
       logical :: failed(size(betas))
       type(error_t), allocatable :: error
+      real(wp) :: damping
       integer :: k
-      call monodromy_trace_batch(model, hill_point_t(alpha, 0.0_wp, 0.0_wp), betas, &
+      damping = 0.0_wp
+      if (present(epsilon)) damping = epsilon
+      call monodromy_trace_batch(model, hill_point_t(alpha, 0.0_wp, damping), betas, &
                                  method_t(method_auto, tolerance=tolerance), row, failed, error)
       if (allocated(error)) deallocate (error)
       do k = 1, size(betas)
          if (failed(k)) cycle
-         call monodromy_trace(model, hill_point_t(alpha, betas(k), 0.0_wp), &
+         call monodromy_trace(model, hill_point_t(alpha, betas(k), damping), &
                               method_t(method_magnus6, tolerance=1.0e-12_wp), reference, error)
          if (allocated(error)) then
             if (error%code /= err_accuracy) cycle

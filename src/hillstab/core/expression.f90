@@ -381,14 +381,18 @@ contains
    !> value an expression of numbers, pi, functions and the parameters before it. Items
    !> are separated by commas outside parentheses; an empty (blank) text is no parameter.
    !> Messages name the item and the column in `text`.
-   pure subroutine parse_parameters(text, names, values, error, reserved)
+   pure subroutine parse_parameters(text, names, values, error, reserved, depends)
       character(len=*), intent(in) :: text  !! the list
       character(len=name_length), allocatable, intent(out) :: names(:)  !! the parameters' names, in order
       real(wp), allocatable, intent(out) :: values(:)   !! their values
       type(error_t), allocatable, intent(out) :: error  !! err_input naming the item and column
       character(len=*), intent(in), optional :: reserved(:)  !! names no parameter may take (e.g. "t")
+      !> depends(i, j): the value of parameter i is computed from parameter j, directly or
+      !> through others (j < i)
+      logical, allocatable, intent(out), optional :: depends(:, :)
       character(len=name_length) :: found(len(text)/2 + 1)
       real(wp) :: value(len(text)/2 + 1)
+      logical, allocatable :: direct(:, :)
       integer :: n, start, finish, depth, i, equals, name_start, name_end, j
       type(expression_t) :: e
       type(error_t), allocatable :: item_error
@@ -397,6 +401,12 @@ contains
       integer :: failed
       type(expression_work_t) :: work
       n = 0
+      ! at most one item per comma and one more
+      j = 1
+      do i = 1, len(text)
+         if (text(i:i) == ",") j = j + 1
+      end do
+      allocate (direct(j, j))
       if (len_trim(text) > 0) then
          start = 1
          do
@@ -485,12 +495,19 @@ contains
             n = n + 1
             found(n) = name
             value(n) = r(1)
+            direct(n, :) = .false.
+            do j = 1, n - 1
+               ! through the parameters it uses, on everything they depend on
+               if (e%uses(trim(found(j)))) direct(n, 1:n - 1) = direct(n, 1:n - 1) .or. direct(j, 1:n - 1)
+               if (e%uses(trim(found(j)))) direct(n, j) = .true.
+            end do
             if (finish >= len(text)) exit
             start = finish + 2
          end do
       end if
       names = found(1:n)
       values = value(1:n)
+      if (present(depends)) depends = direct(1:n, 1:n)
    end subroutine parse_parameters
 
    pure integer function first_nonblank(text)

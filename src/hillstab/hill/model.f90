@@ -26,18 +26,18 @@ module hillstab_hill_model
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
    use hillstab_hill_units, only: physical_t, physical_alpha
    use hillstab_hill_model_base, only: model_base_t, model_variable_t, model_variable_real, model_variable_list, &
-      model_variable_file
+      model_variable_file, model_variable_text
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
    public :: hill_model_t, hill_point_t, hill_window_t, max_window_breaks
    public :: hill_form_none, hill_form_pencil
-   public :: model_variable_t, model_variable_real, model_variable_list, model_variable_file
+   public :: model_variable_t, model_variable_real, model_variable_list, model_variable_file, model_variable_text
    public :: harmonics_none, harmonics_infinite
    public :: hill_coefficient, hill_coefficient_before, segment_average, model_split, damping_shift, model_description
    public :: window_piece_end, model_equation_text
    public :: coefficient_range, model_coefficient_range, widen_by_offset, offset_bound
-   public :: check_point, check_alpha, check_batch, max_magnitude
+   public :: check_point, check_alpha, check_batch, max_magnitude, auto_table_steps
 
    !> Hill's method does not apply to the model (its transition curves come from elsewhere).
    integer, parameter :: hill_form_none = 0
@@ -97,6 +97,10 @@ module hillstab_hill_model
       procedure :: alpha_valid => finite_alpha
       procedure :: physical_note => no_physical_note
       procedure :: is_pendulum => not_pendulum
+      procedure :: point_damping => scene_damping
+      procedure :: has_damping => no_own_damping
+      procedure :: takes_scene_damping => scene_damping_taken
+      procedure :: axis_name => greek_axis_name
       procedure :: physical_alpha => pendulum_alpha
       procedure :: has_witness => no_witness
       procedure :: witness_beta => no_witness_beta
@@ -198,6 +202,37 @@ contains
       character(len=:), allocatable :: text
       text = ""
    end function no_physical_note
+
+   !> The damping ε of the points of chart row α: the scene's `epsilon` unless the model
+   !> carries its own (an equation in physical time: πc/(mΩ) at the row's parameters).
+   elemental real(wp) function scene_damping(self, alpha, epsilon) result(damping)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha            !! α of the row
+      real(wp), intent(in) :: epsilon          !! the scene's ε
+      damping = epsilon
+   end function scene_damping
+
+   !> The model carries a damping of its own (`point_damping`), nonzero somewhere: false
+   !> unless the model says so.
+   elemental logical function no_own_damping(self)
+      class(hill_model_t), intent(in) :: self  !! the model
+      no_own_damping = .false.
+   end function no_own_damping
+
+   !> The scene's `epsilon` is the damping (true unless the model carries its own).
+   elemental logical function scene_damping_taken(self)
+      class(hill_model_t), intent(in) :: self  !! the model
+      scene_damping_taken = .true.
+   end function scene_damping_taken
+
+   !> The name of the chart's axis k (1: α, the rows; 2: β) as files name its column:
+   !> "alpha" and "beta" unless the model's axes are parameters of its own.
+   pure function greek_axis_name(self, k) result(name)
+      class(hill_model_t), intent(in) :: self  !! the model
+      integer, intent(in) :: k                 !! 1 or 2
+      character(len=:), allocatable :: name
+      name = trim(merge("alpha", "beta ", k == 1))
+   end function greek_axis_name
 
    !> The model is the elastic pendulum itself: it has the physical domain (a `physical`
    !> column), the nonlinear simulation and α = aπ²/ρ. False unless the model says so.
@@ -319,6 +354,31 @@ contains
       real(wp), intent(in) :: c0, c1           !! the split of q (`model_split`)
       amplitude = abs(c1) + 0.1_wp*abs(c0)
    end function oscillation_amplitude
+
+   !> Method auto's calibrated step table: the smallest N of Magnus-6 steps on [0, 1] that
+   !> met 1e-10 against GSL rk8pd at 1e-14 for β ∈ [−2, 12], against x = −ln(1 − α/π²)
+   !> (`auto_difficulty`; ln N linear in between, N ∝ (1 − α/π²)^−0.3 beyond), times 0.8
+   !> (cheapest on average with the check).
+   elemental real(wp) function auto_table_steps(x) result(n)
+      real(wp), intent(in) :: x  !! the calibration variable
+      real(wp), parameter :: table_x(9) = [0.0_wp, 0.052_wp, 0.227_wp, 0.519_wp, 0.937_wp, 1.666_wp, 2.43_wp, &
+                                           3.29_wp, 4.95_wp]
+      real(wp), parameter :: table_n(9) = [12.0_wp, 18.0_wp, 26.0_wp, 36.0_wp, 48.0_wp, 62.0_wp, 76.0_wp, &
+                                           90.0_wp, 134.0_wp]
+      real(wp), parameter :: slope_beyond = 0.3_wp
+      real(wp) :: log_n
+      integer :: i
+      if (x >= table_x(size(table_x))) then
+         log_n = log(table_n(size(table_n))) + slope_beyond*(x - table_x(size(table_x)))
+      else
+         i = 1
+         do while (table_x(i + 1) < x)
+            i = i + 1
+         end do
+         log_n = log(table_n(i)) + (log(table_n(i + 1)) - log(table_n(i)))*(x - table_x(i))/(table_x(i + 1) - table_x(i))
+      end if
+      n = exp(log_n)
+   end function auto_table_steps
 
    !> The fewest steps per unit of τ method auto's first mesh may have (its Richardson check
    !> compares it with half as many): 0, auto's own floor, unless the drive's harmonics need

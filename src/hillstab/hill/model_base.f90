@@ -14,7 +14,8 @@ module hillstab_hill_model_base
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
    implicit none
    private
-   public :: model_base_t, model_variable_t, model_variable_real, model_variable_list, model_variable_file
+   public :: model_base_t, model_variable_t, model_variable_real, model_variable_list, model_variable_file, &
+      model_variable_text
 
    !> A model variable holding one number.
    integer, parameter :: model_variable_real = 1
@@ -23,6 +24,9 @@ module hillstab_hill_model_base
    !> A model variable naming a file of numbers (one or more per line, `#` comments), read by
    !> the scene reader and handed to the model as the list of its numbers, row by row.
    integer, parameter :: model_variable_file = 3
+   !> A model variable holding a text (an expression, a list of named parameters), quoted in
+   !> a scene, handed to the model by `set_text`.
+   integer, parameter :: model_variable_text = 4
 
    !> One variable of a model that carries data (Fourier coefficients, samples, matrices): what
    !> its scene group (named after the model), its template and the C API's
@@ -45,6 +49,7 @@ module hillstab_hill_model_base
       procedure(base_text), deferred :: formula
       procedure :: variables => no_variables
       procedure :: set_values => no_values
+      procedure :: set_text => no_text
       procedure :: check_values => values_complete
    end type model_base_t
 
@@ -76,6 +81,18 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call set_error(error, err_invalid_parameter, "the "//self%name()//" model has no variable '"//trim(name)//"'")
    end subroutine no_values
+
+   !> Set a text variable of the model (`model_variable_text`): err_invalid_parameter unless
+   !> the model has such a variable.
+   pure subroutine no_text(self, name, text, error)
+      class(model_base_t), intent(inout) :: self  !! the model
+      character(len=*), intent(in) :: name        !! the variable
+      character(len=*), intent(in) :: text        !! its text, unquoted
+      !> err_invalid_parameter naming the model and the variable; unallocated when set
+      type(error_t), allocatable, intent(out) :: error
+      call set_error(error, err_invalid_parameter, "the "//self%name()//" model has no text variable '"// &
+         trim(name)//"'")
+   end subroutine no_text
 
    !> After its variables are set: whether the model is complete and consistent (every
    !> model without variables is).

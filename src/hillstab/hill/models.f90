@@ -12,7 +12,9 @@
 !> - `fourier` (4): Q(τ) = β + α f(τ), f a Fourier series given in the scene (`&fourier`);
 !> - `sampled` (5): Q(τ) = β + α f(τ), f interpolating samples of one period (`&sampled`);
 !> - `modulated` (6): Q(τ) = (β + k m'')/(1 − k m), m = cos πτ cos(πτ/2), the swing about the
-!>   modulated bounce r = ρ − a cos ωt cos(ωt/2).
+!>   modulated bounce r = ρ − a cos ωt cos(ωt/2);
+!> - `equation` (7): m x'' + c x' + k(t) x = 0 in physical time with named parameters
+!>   (`&equation`), any two of them the chart's axes.
 !>
 !>```fortran
 !> class(hill_model_t), allocatable :: model
@@ -30,13 +32,14 @@ module hillstab_hill_models
    use hillstab_hill_model_fourier, only: fourier_model_t
    use hillstab_hill_model_sampled, only: sampled_model_t
    use hillstab_hill_model_modulated, only: modulated_model_t
+   use hillstab_hill_model_equation, only: equation_model_t
    implicit none
    private
    public :: model_names, model_count, new_model, model_from_code, model_code, model_names_text
 
    !> The registered models' names, in the order of their codes (code = position).
-   character(len=*), parameter :: model_names(6) = [character(len=16) :: "elastic", "mathieu", "meissner", "fourier", &
-      "sampled", "modulated"]
+   character(len=*), parameter :: model_names(7) = [character(len=16) :: "elastic", "mathieu", "meissner", "fourier", &
+      "sampled", "modulated", "equation"]
    !> Number of models; their codes are 1 … model_count.
    integer, parameter :: model_count = size(model_names)
 
@@ -71,6 +74,7 @@ contains
       case (4); allocate (model, source=fourier_model_t())
       case (5); allocate (model, source=sampled_model_t())
       case (6); allocate (model, source=modulated_model_t())
+      case (7); allocate (model, source=equation_model_t())
       case default
          call set_error(error, err_invalid_parameter, "unknown model code "//integer_text(code)//" (expected 1 to "// &
             integer_text(model_count)//")")

@@ -34,7 +34,7 @@ module hillstab_integrate_auto
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_model, only: hill_model_t, hill_point_t, check_batch, model_split
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, check_batch, model_split, auto_table_steps
    use hillstab_hill_coefficient, only: split_phases
    use hillstab_hill_transfer, only: transfer_functions, trace_t, trace_from_scaled
    use hillstab_integrate_magnus, only: trace_magnus
@@ -171,24 +171,7 @@ contains
    pure real(wp) function auto_base_steps(model, alpha, tolerance) result(base)
       class(hill_model_t), intent(in) :: model
       real(wp), intent(in) :: alpha, tolerance
-      real(wp), parameter :: table_x(9) = [0.0_wp, 0.052_wp, 0.227_wp, 0.519_wp, 0.937_wp, 1.666_wp, 2.43_wp, &
-                                           3.29_wp, 4.95_wp]
-      real(wp), parameter :: table_n(9) = [12.0_wp, 18.0_wp, 26.0_wp, 36.0_wp, 48.0_wp, 62.0_wp, 76.0_wp, &
-                                           90.0_wp, 134.0_wp]
-      real(wp), parameter :: slope_beyond = 0.3_wp
-      real(wp) :: x, log_n
-      integer :: i
-      x = model%auto_difficulty(alpha)
-      if (x >= table_x(size(table_x))) then
-         log_n = log(table_n(size(table_n))) + slope_beyond*(x - table_x(size(table_x)))
-      else
-         i = 1
-         do while (table_x(i + 1) < x)
-            i = i + 1
-         end do
-         log_n = log(table_n(i)) + (log(table_n(i + 1)) - log(table_n(i)))*(x - table_x(i))/(table_x(i + 1) - table_x(i))
-      end if
-      base = 1.0_wp*exp(log_n)*(1.0e-10_wp/min(tolerance, 1.0e-6_wp))**(1.0_wp/6.0_wp)
+      base = auto_table_steps(model%auto_difficulty(alpha))*(1.0e-10_wp/min(tolerance, 1.0e-6_wp))**(1.0_wp/6.0_wp)
    end function auto_base_steps
 
    !> The smallest rung of the ladder ≥ n.

@@ -203,6 +203,7 @@ contains
          n_points = int(n)
          do j = 1, n_points
             call check_point(handle%model, hill_point_t(alpha(j), beta(j), epsilon(j)), cause)
+            if (.not. allocated(cause)) call check_own_damping(handle%model, epsilon(j), cause)
             if (allocated(cause)) then
                call set_error(error, cause%code, "point "//integer_text(j - 1)//" (alpha = "//real_text(alpha(j))// &
                   ", beta = "//real_text(beta(j))//", epsilon = "//real_text(epsilon(j))//"): "//cause%message)
@@ -226,7 +227,8 @@ contains
       nt = thread_count(threads)
       !$omp parallel do schedule(dynamic) num_threads(nt) default(shared) private(j, tr, f, failed, inaccurate, cause)
       do j = 1, n_points
-         call monodromy_trace_batch(handle%model, hill_point_t(alpha(j), 0.0_wp, epsilon(j)), [beta(j)], m, tr, &
+         call monodromy_trace_batch(handle%model, hill_point_t(alpha(j), 0.0_wp, &
+                                    handle%model%point_damping(alpha(j), epsilon(j))), [beta(j)], m, tr, &
                                     failed, cause, inaccurate=inaccurate, need=int(need), paper=wants_paper)
          if (failed(1)) then
             status(j) = int(status_failed, c_int)
@@ -234,7 +236,8 @@ contains
             cycle
          end if
          status(j) = int(merge(status_roundoff, status_ok, inaccurate(1)), c_int)
-         f = floquet_from_trace(tr(1), epsilon(j), m%tolerance, handle%model%period())
+         f = floquet_from_trace(tr(1), handle%model%point_damping(alpha(j), epsilon(j)), m%tolerance, &
+                                handle%model%period())
          call computed_values(f, .true., values(:, j))
       end do
       !$omp end parallel do
@@ -307,6 +310,7 @@ contains
       if (.not. allocated(error)) then
          do i = 1, na
             call check_batch(handle%model, grid_alphas(i), epsilon, grid_betas, cause)
+            if (.not. allocated(cause)) call check_own_damping(handle%model, epsilon, cause)
             if (allocated(cause)) then
                call set_error(error, cause%code, "row "//integer_text(i - 1)//" (alpha = "// &
                   real_text(grid_alphas(i))//"): "//cause%message)
@@ -329,7 +333,8 @@ contains
          ! whole rows in parallel, as the chart task with many rows
          !$omp parallel do schedule(dynamic) num_threads(nt) default(shared) private(i)
          do i = 1, na
-            call chart_row(handle%model, grid_alphas(i), grid_betas, epsilon, m, int(need), wants_paper, &
+            call chart_row(handle%model, grid_alphas(i), grid_betas, handle%model%point_damping(grid_alphas(i), epsilon), &
+                           m, int(need), wants_paper, &
                            values(:, 1:nb, i), status(1:nb, i))
          end do
          !$omp end parallel do
@@ -338,13 +343,14 @@ contains
          chunk = max(16, nb/(8*nt))
          n_chunks = (nb + chunk - 1)/chunk
          do i = 1, na
-            call prepare_batch(handle%model, hill_point_t(grid_alphas(i), 0.0_wp, epsilon), grid_betas, m, plan, &
-                               int(need))
+            call prepare_batch(handle%model, hill_point_t(grid_alphas(i), 0.0_wp, &
+                               handle%model%point_damping(grid_alphas(i), epsilon)), grid_betas, m, plan, int(need))
             !$omp parallel do schedule(dynamic) num_threads(nt) default(shared) private(c, first, last)
             do c = 1, n_chunks
                first = (c - 1)*chunk + 1
                last = min(nb, c*chunk)
-               call chart_row(handle%model, grid_alphas(i), grid_betas(first:last), epsilon, m, int(need), &
+               call chart_row(handle%model, grid_alphas(i), grid_betas(first:last), &
+                              handle%model%point_damping(grid_alphas(i), epsilon), m, int(need), &
                               wants_paper, values(:, first:last, i), status(first:last, i), plan)
             end do
             !$omp end parallel do
@@ -352,6 +358,17 @@ contains
       end if
       info = 0
    end function hillstab_c_chart
+
+   !> err_invalid_parameter when a model that carries its own damping (an equation) is
+   !> given a damping ε ≠ 0 as well.
+   pure subroutine check_own_damping(model, epsilon, error)
+      class(hill_model_t), intent(in) :: model  !! the model
+      real(wp), intent(in) :: epsilon           !! the damping given
+      type(error_t), allocatable, intent(out) :: error  !! the refusal
+      if (model%takes_scene_damping() .or. .not. epsilon > 0.0_wp) return
+      call set_error(error, err_invalid_parameter, "epsilon: the "//model%name()//" model carries its own "// &
+         "damping (its variable damping, in its own units): epsilon must be 0")
+   end subroutine check_own_damping
 
    !> The values and statuses of the points (α, β_j) of a row or part of one, as the chart
    !> task's `compute_row` computes them.

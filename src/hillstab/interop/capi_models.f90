@@ -33,7 +33,8 @@ module hillstab_interop_capi_models
    private
    public :: model_handle_t, handle_model, c_text, copy_text, max_c_text
    public :: hillstab_c_model_new, hillstab_c_model_free, hillstab_c_model_set, hillstab_c_model_check, &
-      hillstab_c_model_count, hillstab_c_model_registry_name, hillstab_c_model_name, hillstab_c_model_formula, &
+      hillstab_c_model_count, hillstab_c_model_set_text, hillstab_c_model_registry_name, hillstab_c_model_name, &
+      hillstab_c_model_formula, &
       hillstab_c_model_variable_count, hillstab_c_model_variable_name
 
    !> Longest C string read (a name, a path): longer ones are refused.
@@ -176,6 +177,41 @@ contains
       status = 0
       if (allocated(error)) status = int(error%code, c_int)
    end function hillstab_c_model_set
+
+   !> `int hillstab_model_set_text(hillstab_model *model, const char *variable, const char
+   !> *text)`: set a text variable of the model (an equation's parameters, stiffness,
+   !> frequency, axes: its `set_text`); err_invalid_parameter naming the model and the
+   !> variable when it has no such variable or the text is too long. What the texts say
+   !> together (they parse, the axes are parameters) is checked by hillstab_model_check and
+   !> by every computation.
+   function hillstab_c_model_set_text(model, variable, text) result(status) bind(C, name="hillstab_model_set_text")
+      type(c_ptr), value, intent(in) :: model  !! the handle
+      character(kind=c_char), intent(in) :: variable(*)  !! the variable's name, NUL-terminated
+      character(kind=c_char), intent(in) :: text(*)  !! its text, NUL-terminated
+      integer(c_int) :: status
+      type(model_handle_t), pointer :: handle
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: name, value
+      logical :: ok
+      call handle_model(model, handle, error)
+      if (.not. allocated(error)) then
+         call c_text(variable, name, ok)
+         if (.not. ok) call set_error(error, err_invalid_parameter, "the variable name is longer than "// &
+            integer_text(max_c_text)//" characters")
+      end if
+      if (.not. allocated(error)) then
+         call c_text(text, value, ok)
+         if (.not. ok) then
+            call set_error(error, err_invalid_parameter, name//": the text is longer than "// &
+               integer_text(max_c_text)//" characters")
+         else
+            call handle%model%set_text(name, value, error)
+         end if
+      end if
+      call record_outcome(error)
+      status = 0
+      if (allocated(error)) status = int(error%code, c_int)
+   end function hillstab_c_model_set_text
 
    !> `int hillstab_model_check(const hillstab_model *model)`: whether the model is complete
    !> and consistent (its `check_values`): 0, or err_invalid_parameter naming what is missing.

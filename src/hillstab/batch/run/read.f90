@@ -60,6 +60,12 @@ contains
       if (allocated(error)) return
       call read_scene_group(file, scene, task_name, error)
       if (.not. allocated(error)) call read_model_group(file, scene, error)
+      if (.not. allocated(error) .and. .not. allocated(scene%system)) then
+         if (.not. scene%model%takes_scene_damping() .and. scene%epsilon > 0.0_wp) &
+            call fail(error, path, "scene", "epsilon", "the "//scene%model%name()//" model carries its own "// &
+               "damping (&"//scene%model%name()//" damping, in its own units, converted at every point): "// &
+               "epsilon must be 0")
+      end if
       if (.not. allocated(error)) then
          call new_task(task_name, task, cause, system=allocated(scene%system))
          if (allocated(cause)) call fail(error, path, "scene", "task", cause%message)

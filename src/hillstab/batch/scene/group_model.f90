@@ -17,11 +17,12 @@ module hillstab_batch_scene_group_model
    use hillstab_core_error, only: error_t
    use hillstab_core_text, only: real_text, integer_text, quoted, read_text_line, fpe_state_t, halting_off, &
       halting_restore
-   use hillstab_hill_model, only: model_variable_t, model_variable_real, model_variable_list, model_variable_file
+   use hillstab_hill_model, only: model_variable_t, model_variable_real, model_variable_list, model_variable_file, &
+      model_variable_text
    use hillstab_hill_model_base, only: model_base_t
    use hillstab_batch_scene_file, only: scene_file_t, item_t, group_items, group_present, fail, shortened, &
       max_line_length, check_group_as_written, item_subscripted, not_regular_file
-   use hillstab_batch_scene_declaration, only: group_values_t, var_real, var_real_list, var_path
+   use hillstab_batch_scene_declaration, only: group_values_t, var_real, var_real_list, var_path, var_words
    use hillstab_batch_scene_types, only: scene_t
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
@@ -134,6 +135,23 @@ contains
             return
          end if
          select case (variables(v)%kind)
+         case (model_variable_text)
+            ! a text: quoted, handed to the model as it is (doubled quotes undoubled)
+            if (len(value) < 2 .or. (value(1:1) /= "'" .and. value(1:1) /= '"') .or. &
+                value(len(value):) /= value(1:1)) then
+               call fail(error, file%path, group, items(k)%name, "must be quoted, e.g. "//items(k)%name// &
+                  " = '"//shortened(value)//"' (got "//shortened(value)//")")
+               return
+            end if
+            value = undoubled(value(2:len(value) - 1), value(1:1))
+            call model%set_text(items(k)%name, value, cause)
+            if (allocated(cause)) then
+               call fail_from_model(file%path, group, items(k)%name, cause%message, error)
+               return
+            end if
+            model_values%values(v)%given = .true.
+            model_values%values(v)%text = quoted(value)
+            cycle
          case (model_variable_file)
             call read_numbers_file(file%path, group, items(k)%name, unquoted(value), variables(v)%max_count, &
                                    numbers, error)
@@ -165,6 +183,7 @@ contains
       select case (kind)
       case (model_variable_real); value_kind = var_real
       case (model_variable_file); value_kind = var_path
+      case (model_variable_text); value_kind = var_words
       case default; value_kind = var_real_list
       end select
    end function value_kind
@@ -275,6 +294,23 @@ contains
       end do
       special_words = index(lower, "nan") > 0 .or. index(lower, "inf") > 0
    end function special_words
+
+   !> The text inside a quoted value, a doubled quote undoubled.
+   pure function undoubled(inside, quote) result(text)
+      character(len=*), intent(in) :: inside  !! what lies between the quotes
+      character, intent(in) :: quote          !! the quote
+      character(len=:), allocatable :: text
+      integer :: i
+      text = ""
+      i = 1
+      do while (i <= len(inside))
+         text = text//inside(i:i)
+         if (inside(i:i) == quote .and. i < len(inside)) then
+            if (inside(i + 1:i + 1) == quote) i = i + 1
+         end if
+         i = i + 1
+      end do
+   end function undoubled
 
    !> A quoted path without its quotes.
    pure function unquoted(value) result(path)

@@ -417,7 +417,7 @@ contains
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
       type(hill_point_t) :: row
-      real(wp) :: v(n_chart_columns), per_second, a
+      real(wp) :: v(n_chart_columns), per_second, a, damping
       logical :: failed(size(betas)), inaccurate(size(betas))
       integer :: j, need
       integer :: ids(size(columns%ids))  ! the binary records' columns (a gather through `columns` allocated)
@@ -427,7 +427,8 @@ contains
       ! when the scene knows ω)
       per_second = 0.0_wp
       if (scene%physical) per_second = scene%pendulum%omega/pi
-      row = hill_point_t(alpha, 0.0_wp, scene%epsilon)
+      damping = scene%model%point_damping(alpha, scene%epsilon)
+      row = hill_point_t(alpha, 0.0_wp, damping)
       call monodromy_trace_batch(scene%model, row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate, &
                                  need=need, paper=columns%paper)
       alpha_text = format_es(alpha, 17)
@@ -440,12 +441,12 @@ contains
             ! a verdict line (or a failed point's), written directly
             lengths(j) = 0
             if (present(beta_texts)) then
-               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), period_damping(scene%epsilon, &
+               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), period_damping(damping, &
                                   scene%model%period()), scene%method%tolerance, &
                                   statuses(j:j), [in_physical_domain(alpha, betas(j))], [a], alpha_text, lines(j), &
                                   lengths(j), beta_texts(j:j))
             else
-               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), period_damping(scene%epsilon, &
+               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), period_damping(damping, &
                                   scene%model%period()), scene%method%tolerance, &
                                   statuses(j:j), [in_physical_domain(alpha, betas(j))], [a], alpha_text, lines(j), &
                                   lengths(j))
@@ -457,9 +458,9 @@ contains
          else
             if (need <= need_verdict) then
                ! verdicts only: no multipliers (their columns, not in a verdict file, stay 0)
-               f = floquet_verdict(traces(j), scene%epsilon, scene%method%tolerance, scene%model%period())
+               f = floquet_verdict(traces(j), damping, scene%method%tolerance, scene%model%period())
             else
-               f = floquet_from_trace(traces(j), scene%epsilon, scene%method%tolerance, scene%model%period())
+               f = floquet_from_trace(traces(j), damping, scene%method%tolerance, scene%model%period())
             end if
             v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second, a, &
                              need=need)
@@ -497,7 +498,8 @@ contains
       n = size(betas)
       chunk = max(16, n/(8*max_threads()))
       n_chunks = (n + chunk - 1)/chunk
-      call prepare_batch(scene%model, hill_point_t(alpha, 0.0_wp, scene%epsilon), betas, scene%method, plan, &
+      call prepare_batch(scene%model, hill_point_t(alpha, 0.0_wp, scene%model%point_damping(alpha, scene%epsilon)), &
+                         betas, scene%method, plan, &
                          columns%need)
       !$omp parallel do schedule(dynamic) default(shared) private(c, first, last)
       do c = 1, n_chunks
@@ -594,7 +596,9 @@ contains
       type(error_t), allocatable :: cause
       character(len=:), allocatable :: buffer
       integer :: j, pos
-      call monodromy_trace_batch(scene%model, hill_point_t(alpha, 0.0_wp, scene%epsilon), betas, scene%method, &
+      real(wp) :: damping
+      damping = scene%model%point_damping(alpha, scene%epsilon)
+      call monodromy_trace_batch(scene%model, hill_point_t(alpha, 0.0_wp, damping), betas, scene%method, &
                                  traces, failed, cause, inaccurate=inaccurate, need=columns%need, &
                                  paper=columns%paper)
       statuses = merge(status_roundoff, status_ok, inaccurate)
@@ -609,7 +613,7 @@ contains
          buffer(1:1) = new_line("a")
          pos = 1
       end if
-      call verdict_lines(columns, alpha, betas, traces, period_damping(scene%epsilon, scene%model%period()), &
+      call verdict_lines(columns, alpha, betas, traces, period_damping(damping, scene%model%period()), &
                          scene%method%tolerance, statuses, physical, &
                          amplitudes, format_es(alpha, 17), buffer, pos, beta_texts)
       text = buffer(1:pos)

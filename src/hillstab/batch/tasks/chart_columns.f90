@@ -130,8 +130,9 @@ contains
       type(scene_t), intent(in) :: scene  !! the scene
       type(chart_column_t) :: table(n_chart_columns)
       character(len=:), allocatable :: stable, alpha, beta, a
+      character(len=:), allocatable :: alpha_name, beta_name
       logical :: damped, pendulum
-      damped = scene%epsilon > 0.0_wp
+      damped = scene%epsilon > 0.0_wp .or. scene%model%has_damping()
       pendulum = scene%model%is_pendulum()
       if (damped) then
          stable = "1 when |S1| < "//damped_threshold(scene)//" (all multipliers of x inside the unit circle)"
@@ -153,10 +154,16 @@ contains
          a = "bounce amplitude a = alpha rho/pi^2 with rho = g pi^2/(beta omega^2) (eq. (24)); -1 where beta <= 0 "// &
             "(no equilibrium length)"
       end if
-      table(col_alpha) = chart_column("alpha", "", alpha, style_e17, need_nothing, kept=.true.)
+      alpha_name = scene%model%axis_name(1)
+      beta_name = scene%model%axis_name(2)
+      if (alpha_name /= "alpha") then
+         alpha = "the parameter "//alpha_name//" of the equation, the chart's alpha axis (rows)"
+         beta = "the parameter "//beta_name//" of the equation, the chart's beta axis"
+      end if
+      table(col_alpha) = chart_column(alpha_name, "", alpha, style_e17, need_nothing, kept=.true.)
       table(col_a) = chart_column("a", "m", a, style_e17, need_nothing, kept=.true., &
          offered=scene%physical .and. (size(scene%amplitudes) > 0 .or. pendulum))
-      table(col_beta) = chart_column("beta", "", beta, style_e17, need_nothing, &
+      table(col_beta) = chart_column(beta_name, "", beta, style_e17, need_nothing, &
          kept=.true.)
       table(col_omega) = chart_column("omega", "rad/s", "radial angular frequency sqrt(k/m) of the point "// &
          "(rho = r0 + g/omega^2)", style_e17, need_nothing, kept=.true., offered=size(scene%omegas) > 0)
@@ -309,7 +316,7 @@ contains
       end if
       tolerance = real_text(scene%method%tolerance)
       threshold = "|S| = "//damped_threshold(scene)
-      if (.not. scene%epsilon > 0.0_wp) threshold = "|S| = 2"
+      if (.not. (scene%epsilon > 0.0_wp .or. scene%model%has_damping())) threshold = "|S| = 2"
       select case (columns%table(k)%accuracy)
       case (accuracy_verdict)
          if (columns%table(k)%paper) threshold = "|S| = 2"
@@ -646,7 +653,7 @@ contains
       real(wp) :: damping
       integer :: need
       logical :: paper
-      damping = scene%epsilon
+      damping = scene%model%point_damping(alpha, scene%epsilon)
       if (present(epsilon)) damping = epsilon
       if (present(status)) status = status_ok
       need = need_trace

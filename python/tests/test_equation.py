@@ -1,0 +1,97 @@
+"""Equations in physical time from Python (`hillstab.Equation`): the Kapitza pendulum written
+as its user writes it equals the built-in Mathieu model at the hand-made mapping
+alpha = A pi^2/l, beta = -g pi^2/(l w^2), epsilon = kappa pi/w (within the tolerance); a chart
+over the equation's own axes equals the command line's chart file to the bit, with its axes
+named after the parameters both in the result and in `read_output`; arrays of any shape that
+broadcast equal the points one by one; bad input raises ValueError naming the variable."""
+import math
+
+import numpy as np
+import pytest
+
+import hillstab
+
+G, L, KAPPA = 9.81, 0.2, 0.2
+KAPITZA = dict(stiffness="-g/l + A*w^2/l*cos(w*t)", frequency="w", damping="kappa",
+               parameters={"g": G, "l": L, "kappa": KAPPA, "A": 0.005, "w": 314.16}, alpha="w", beta="A")
+SCENE = """&scene task = 'chart', model = 'equation', tolerance = 1e-10, output = '{name}', format = '{fmt}' /
+&equation parameters = 'g = 9.81, l = 0.2, kappa = 0.2, A = 0.005, w = 314.16',
+  stiffness = '-g/l + A*w^2/l*cos(w*t)', damping = 'kappa', frequency = 'w', alpha = 'w', beta = 'A' /
+&chart alpha_min = 60.0, alpha_max = 700.0, n_alpha = 12, beta_min = 0.0, beta_max = 0.1, n_beta = 9 /
+"""
+
+
+def same_bits(a, b):
+    a = np.ascontiguousarray(a, dtype=np.float64).ravel()
+    b = np.ascontiguousarray(b, dtype=np.float64).ravel()
+    return a.shape == b.shape and np.array_equal(a.view(np.uint64), b.view(np.uint64))
+
+
+def test_kapitza_equals_mathieu_mapped_by_hand():
+    kapitza = hillstab.Equation(**KAPITZA)
+    w = np.linspace(60.0, 700.0, 9)[:, np.newaxis]
+    a = np.linspace(0.0, 0.1, 7)[np.newaxis, :]
+    r = hillstab.floquet(w, a, model=kapitza)
+    assert r.trace.shape == (9, 7)
+    m = hillstab.floquet(a * math.pi ** 2 / L, -G * math.pi ** 2 / (L * w ** 2), model="mathieu",
+                         epsilon=KAPPA * math.pi / w)
+    assert np.all(np.abs(r.trace - m.trace) <= 2e-10 * np.maximum(1.0, np.abs(m.trace)))
+    assert np.array_equal(r.stable, m.stable)
+    # the least stabilising amplitude at 50 Hz lies between 6.30 and 6.31 mm (6.30680 mm)
+    s = hillstab.floquet(2 * math.pi * 50, [6.30e-3, 6.31e-3], model=kapitza).stable
+    assert list(s) == [0, 1]
+
+
+def test_chart_equals_the_command_line(cli):
+    kapitza = hillstab.Equation(**KAPITZA)
+    cli.run("kapitza", SCENE.format(name="kapitza", fmt="binary"))
+    out = hillstab.read_output(cli.path("kapitza_chart.bin"))
+    assert out.columns[:2] == ["w", "A"]
+    assert out.axis_names == ("w", "A")
+    c = hillstab.chart((60.0, 700.0, 12), (0.0, 0.1, 9), model=kapitza, threads=2)
+    assert same_bits(c.trace, out.grid("S"))
+    assert same_bits(c.stable, out.grid("stable"))
+    assert same_bits(c.w, c.alpha) and same_bits(c.A, c.beta)
+    assert same_bits(c.w, out.axes[0]) and same_bits(c.A, out.axes[1])
+
+
+def test_arrays_equal_points_one_by_one():
+    kapitza = hillstab.Equation(**KAPITZA)
+    w = np.array([[100.0, 314.16], [500.0, 650.0]])
+    a = np.array([0.004, 0.02, 0.09])[:, np.newaxis, np.newaxis]
+    r = hillstab.floquet(w, a, model=kapitza)
+    assert r.trace.shape == (3, 2, 2)
+    for index in np.ndindex(r.trace.shape):
+        one = hillstab.floquet(w[index[1:]], a[index[0], 0, 0], model=kapitza)
+        assert same_bits(one.trace, r.trace[index])
+
+
+def test_parameters_as_text_and_formula():
+    kapitza = hillstab.Equation("-g/l + A*w^2/l*cos(w*t)", frequency="w", damping=0.2,
+                                parameters="g = 9.81, l = 0.2, A = 0.005, w = 314.16", alpha="w", beta="A")
+    assert kapitza.name == "equation"
+    assert "k(t) = -g/l + A*w^2/l*cos(w*t)" in kapitza.formula
+    assert kapitza.axes == ("w", "A")
+
+
+@pytest.mark.parametrize("change, variable, words", [
+    (dict(stiffness="-g/l + B*cos(w*t)"), "stiffness", "g, l, kappa, A, w"),
+    (dict(stiffness="-g/l + A*cos(w*t"), "stiffness", "column"),
+    (dict(stiffness="-g/l + A*cos(3*t)"), "stiffness", "not of period"),
+    (dict(alpha="omega"), "alpha", "no parameter"),
+    (dict(alpha="A", beta="w"), "beta", "frequency"),
+    (dict(mass="-1"), "mass", "> 0"),
+    (dict(stiffness=3.0), "stiffness", "a string"),
+])
+def test_bad_equations_named(change, variable, words):
+    arguments = dict(KAPITZA, **change)
+    with pytest.raises(ValueError) as caught:
+        hillstab.Equation(**arguments)
+    assert variable + ":" in str(caught.value) and words in str(caught.value)
+
+
+def test_epsilon_refused_for_an_equation():
+    kapitza = hillstab.Equation(**KAPITZA)
+    with pytest.raises(ValueError) as caught:
+        hillstab.floquet(314.16, 0.01, model=kapitza, epsilon=0.1)
+    assert "epsilon" in str(caught.value) and "own" in str(caught.value)

@@ -1,0 +1,423 @@
+!> Tests of equations in physical time (hillstab_hill_model_equation): the built-in Mathieu
+!> and elastic coefficients written as equations give the built-in models' S and verdicts
+!> (damped and not, every exact method); the physical Kapitza pendulum and an equation with
+!> a mass, damping and a sine term against an extended-precision monodromy of the physical
+!> equation as written (data/reference/physical_set.dat, mpmath); a chart row equal to the
+!> points task at the same parameters, its columns named after the axes and its header a
+!> scene that repeats the run; bad input refused naming file, group and variable.
+module test_model_equation
+   use hillstab_core_kinds, only: wp, pi
+   use hillstab_core_text, only: real_text
+   use hillstab_core_error, only: error_t, err_input, err_accuracy
+   use hillstab_hill_model, only: hill_point_t
+   use hillstab_hill_model_equation, only: equation_model_t
+   use hillstab_hill_model_mathieu, only: mathieu_model_t
+   use hillstab_hill_model_elastic, only: elastic_model_t
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace
+   use hillstab_integrate_monodromy, only: method_t, monodromy_trace, method_auto, method_magnus6, method_rk, &
+      method_gsl, method_name
+   use hillstab_testing
+   use hillstab_test_files, only: run_text_scene, check_rerun
+   use hillstab_test_reference, only: auto_row_errors
+   use hillstab_test_scratch, only: scratch_prefix, read_lines, file_exists, delete_file, write_file, padded
+   implicit none
+   private
+   public :: collect_model_equation
+
+   !> The exact methods every comparison runs.
+   integer, parameter :: exact_methods(4) = [method_auto, method_magnus6, method_rk, method_gsl]
+
+contains
+
+   function collect_model_equation() result(suite)
+      type(testsuite_t) :: suite
+      suite = new_testsuite("model_equation", [ &
+         new_unittest("mathieu_written_as_equation", mathieu_written_as_equation), &
+         new_unittest("elastic_written_as_equation", elastic_written_as_equation), &
+         new_unittest("physical_against_reference", physical_against_reference), &
+         new_unittest("auto_chart_grid", auto_chart_grid), &
+         new_unittest("chart_row_equals_points", chart_row_equals_points), &
+         new_unittest("bad_scene_input", bad_scene_input)])
+   end function collect_model_equation
+
+   !> An equation from its texts; the test fails when it is refused.
+   subroutine equation_of(ctx, texts, model)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), intent(in) :: texts(:, :)  !! (2, n): variable, text
+      type(equation_model_t), intent(out) :: model
+      type(error_t), allocatable :: error
+      integer :: k
+      do k = 1, size(texts, 2)
+         call model%set_text(trim(texts(1, k)), trim(texts(2, k)), error)
+         call check(ctx, .not. allocated(error), "set "//trim(texts(1, k)))
+      end do
+      call model%check_values(error)
+      if (allocated(error)) call check(ctx, .false., "the equation is refused: "//error%message)
+   end subroutine equation_of
+
+   !> A point of a fixed pseudo-random sequence in [lo, hi] (the golden-ratio sequence).
+   pure real(wp) function spread(k, shift, lo, hi)
+      integer, intent(in) :: k
+      real(wp), intent(in) :: shift, lo, hi
+      spread = lo + (hi - lo)*modulo(shift + 0.6180339887498949_wp*k, 1.0_wp)
+   end function spread
+
+   !> S of `model` and of the built-in at the same point by one method: both within the
+   !> tolerance of the truth, so within twice of each other; the verdicts alike where |S|
+   !> is clear of the threshold.
+   subroutine compare_point(ctx, label, equation, builtin, alpha, beta, builtin_alpha, builtin_beta, epsilon, &
+                            method, worst)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), intent(in) :: label
+      type(equation_model_t), intent(in) :: equation
+      class(*), intent(in) :: builtin
+      real(wp), intent(in) :: alpha, beta, builtin_alpha, builtin_beta, epsilon
+      integer, intent(in) :: method
+      real(wp), intent(inout) :: worst
+      real(wp), parameter :: tolerance = 1.0e-10_wp
+      type(trace_t) :: t_eq, t_in
+      type(error_t), allocatable :: e_eq, e_in
+      type(floquet_t) :: f_eq, f_in
+      real(wp) :: eps_eq, d
+      eps_eq = equation%point_damping(alpha, 0.0_wp)
+      call check_close(ctx, eps_eq, epsilon, rel=1.0e-14_wp, message=label//": the equation's epsilon")
+      call monodromy_trace(equation, hill_point_t(alpha, beta, eps_eq), method_t(method, tolerance=tolerance), t_eq, e_eq)
+      select type (builtin)
+      type is (mathieu_model_t)
+         call monodromy_trace(builtin, hill_point_t(builtin_alpha, builtin_beta, epsilon), &
+                              method_t(method, tolerance=tolerance), t_in, e_in)
+      type is (elastic_model_t)
+         call monodromy_trace(builtin, hill_point_t(builtin_alpha, builtin_beta, epsilon), &
+                              method_t(method, tolerance=tolerance), t_in, e_in)
+      end select
+      if (allocated(e_eq)) then
+         call check(ctx, e_eq%code == err_accuracy, label//": the equation computes: "//e_eq%message)
+         return
+      end if
+      if (allocated(e_in)) return
+      d = abs(t_eq%value - t_in%value)/max(1.0_wp, abs(t_in%value))
+      worst = max(worst, d/tolerance)
+      call check(ctx, d <= 2.0_wp*tolerance, label//": |S - S_builtin|/max(1, |S|) = "//real_text(d)//" <= 2 tol")
+      f_eq = floquet_from_trace(t_eq, eps_eq, tolerance)
+      f_in = floquet_from_trace(t_in, epsilon, tolerance)
+      if (.not. (f_eq%marginal .or. f_in%marginal)) call check(ctx, f_eq%stable .eqv. f_in%stable, label//": verdict")
+   end subroutine compare_point
+
+   !> Mathieu's equation as an engineer writes it, x'' + c x' + (d − 2q cos 2t) x = 0
+   !> (Ω = 2, so τ = 2t/π), against the built-in mathieu model q = β − α cos πτ at
+   !> α = 2π²q/4·... : β = π² d/4, α = π² q/2, ε = πc/2, at 60 points (half damped), every
+   !> exact method.
+   subroutine mathieu_written_as_equation(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(equation_model_t) :: equation
+      type(mathieu_model_t) :: mathieu
+      character(len=80) :: texts(2, 6)
+      real(wp) :: q, d, c, worst(size(exact_methods))
+      integer :: k, m, half
+      texts(:, 2) = [character(len=80) :: "stiffness", "d - 2*q*cos(2*t)"]
+      texts(:, 3) = [character(len=80) :: "damping", "c"]
+      texts(:, 4) = [character(len=80) :: "frequency", "2"]
+      texts(:, 5) = [character(len=80) :: "alpha", "q"]
+      texts(:, 6) = [character(len=80) :: "beta", "d"]
+      worst = 0.0_wp
+      do half = 0, 1
+         texts(:, 1) = [character(len=80) :: "parameters", trim(merge("q = 1, d = 1, c = 0   ", &
+                                                                      "q = 1, d = 1, c = 0.2 ", half == 0))]
+         call equation_of(ctx, texts, equation)
+         do k = 1, 30
+            q = spread(k, 0.1_wp, 0.0_wp, 8.0_wp)
+            d = spread(k, 0.37_wp, -2.0_wp, 16.0_wp)
+            c = 0.2_wp*half
+            do m = 1, size(exact_methods)
+               call compare_point(ctx, "mathieu "//method_name(exact_methods(m)), equation, mathieu, q, d, &
+                                  pi*pi*q/2.0_wp, pi*pi*d/4.0_wp, pi*c/2.0_wp, exact_methods(m), worst(m))
+            end do
+         end do
+      end do
+      do m = 1, size(exact_methods)
+         print '(4x,a8,a,es9.2)', method_name(exact_methods(m)), ": worst |S - S_mathieu|/tolerance", worst(m)
+      end do
+   end subroutine mathieu_written_as_equation
+
+   !> The elastic pendulum's coefficient (β − α cos πt)/(1 − (α/π²) cos πt) as an equation
+   !> with Ω = π (τ = t) against the built-in elastic model, 50 points with α up to 9
+   !> (the dip 1 − α/π² down to 0.09), half of them with damping c = ε = 0.15.
+   subroutine elastic_written_as_equation(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(equation_model_t) :: equation
+      type(elastic_model_t) :: elastic
+      character(len=80) :: texts(2, 6)
+      real(wp) :: a, b, worst(size(exact_methods))
+      integer :: k, m, half
+      texts(:, 2) = [character(len=80) :: "stiffness", "(b - a*cos(pi*t))/(1 - a/pi^2*cos(pi*t))"]
+      texts(:, 3) = [character(len=80) :: "damping", "c"]
+      texts(:, 4) = [character(len=80) :: "frequency", "pi"]
+      texts(:, 5) = [character(len=80) :: "alpha", "a"]
+      texts(:, 6) = [character(len=80) :: "beta", "b"]
+      worst = 0.0_wp
+      do half = 0, 1
+         texts(:, 1) = [character(len=80) :: "parameters", trim(merge("a = 1, b = 1, c = 0   ", &
+                                                                      "a = 1, b = 1, c = 0.15", half == 0))]
+         call equation_of(ctx, texts, equation)
+         do k = 1, 25
+            a = spread(k, 0.21_wp, 0.0_wp, 9.0_wp)
+            b = spread(k, 0.53_wp, -2.0_wp, 12.0_wp)
+            do m = 1, size(exact_methods)
+               call compare_point(ctx, "elastic "//method_name(exact_methods(m)), equation, elastic, a, b, a, b, &
+                                  0.15_wp*half, exact_methods(m), worst(m))
+            end do
+         end do
+      end do
+      do m = 1, size(exact_methods)
+         print '(4x,a8,a,es9.2)', method_name(exact_methods(m)), ": worst |S - S_elastic|/tolerance", worst(m)
+      end do
+   end subroutine elastic_written_as_equation
+
+   !> Sets 1 and 2 of data/reference/physical_set.dat: the damped and undamped Kapitza
+   !> pendulum θ'' + κθ' + (−g/l + (Aω²/l) cos ωt) θ = 0 over (ω, A), and
+   !> 2.5 x'' + 0.3 x' + (40 + k1 cos Wt + 5 sin 2Wt) x = 0 over (W, k1): the trace and the
+   !> multipliers of the physical monodromy over one period 2π/ω, by mpmath at 40 digits.
+   !> S of χ is e^{κT/2} times the physical trace; the largest |multiplier| is the file's.
+   !> Every exact method at 1e-10, status 0, within the tolerance.
+   subroutine physical_against_reference(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: path = "data/reference/physical_set.dat"
+      real(wp), parameter :: tolerance = 1.0e-10_wp
+      character(len=1024), allocatable :: lines(:)
+      type(equation_model_t) :: kapitza(2), second
+      character(len=80) :: texts(2, 6)
+      type(trace_t) :: tr
+      type(error_t), allocatable :: error
+      type(floquet_t) :: f
+      real(wp) :: row(16), s_ref, lam_ref, eps, period, d, worst(size(exact_methods))
+      integer :: k, m, ios, set, n_points(2), n_stable
+      texts(:, 2) = [character(len=80) :: "stiffness", "-g/l + A*w^2/l*cos(w*t)"]
+      texts(:, 3) = [character(len=80) :: "damping", "kappa"]
+      texts(:, 4) = [character(len=80) :: "frequency", "w"]
+      texts(:, 5) = [character(len=80) :: "alpha", "w"]
+      texts(:, 6) = [character(len=80) :: "beta", "A"]
+      texts(:, 1) = [character(len=80) :: "parameters", "g = 9.81, l = 0.2, kappa = 0, A = 0, w = 100"]
+      call equation_of(ctx, texts, kapitza(1))
+      texts(:, 1) = [character(len=80) :: "parameters", "g = 9.81, l = 0.2, kappa = 0.2, A = 0, w = 100"]
+      call equation_of(ctx, texts, kapitza(2))
+      call equation_of(ctx, reshape([character(len=80) :: &
+         "parameters", "m = 2.5, c = 0.3, k0 = 40, k1 = 0, k2 = 5, W = 10", &
+         "stiffness", "k0 + k1*cos(W*t) + k2*sin(2*W*t)", "mass", "m", "damping", "c", "frequency", "W", &
+         "alpha", "W", "beta", "k1"], [2, 7]), second)
+      lines = read_lines(path)
+      n_points = 0
+      n_stable = 0
+      worst = 0.0_wp
+      do k = 1, size(lines)
+         if (len_trim(lines(k)) == 0 .or. lines(k)(1:1) == "#") cycle
+         read (lines(k), *, iostat=ios) set
+         if (set == 3 .or. ios /= 0) cycle
+         row = 0.0_wp
+         if (set == 1) then
+            ! set kappa w A trace re1 im1 re2 im2 ref_error
+            read (lines(k), *, iostat=ios) row(1:10)
+            period = 2.0_wp*pi/row(3)
+            s_ref = exp(row(2)*period/2.0_wp)*row(5)
+            lam_ref = max(hypot(row(6), row(7)), hypot(row(8), row(9)))
+         else
+            ! set W k1 trace re1 im1 re2 im2 ref_error
+            read (lines(k), *, iostat=ios) row(1:9)
+            period = 2.0_wp*pi/row(2)
+            ! c/m = 0.12: S of chi = e^{(c/m) T/2} trace
+            s_ref = exp(0.12_wp*period/2.0_wp)*row(4)
+            lam_ref = max(hypot(row(5), row(6)), hypot(row(7), row(8)))
+         end if
+         call check(ctx, ios == 0, "reads line "//trim(lines(k)))
+         if (ios /= 0) cycle
+         n_points(set) = n_points(set) + 1
+         do m = 1, size(exact_methods)
+            if (set == 1) then
+               associate (model => kapitza(merge(1, 2, row(2) == 0.0_wp)))
+                  eps = model%point_damping(row(3), 0.0_wp)
+                  call monodromy_trace(model, hill_point_t(row(3), row(4), eps), &
+                                       method_t(exact_methods(m), tolerance=tolerance), tr, error)
+               end associate
+            else
+               eps = second%point_damping(row(2), 0.0_wp)
+               call monodromy_trace(second, hill_point_t(row(2), row(3), eps), &
+                                    method_t(exact_methods(m), tolerance=tolerance), tr, error)
+            end if
+            call check(ctx, .not. allocated(error), "set "//real_text(real(set, wp))//" "// &
+                       method_name(exact_methods(m))//": status 0 at "//trim(lines(k)(1:60)))
+            if (allocated(error)) cycle
+            d = abs(tr%value - s_ref)/max(1.0_wp, abs(s_ref))
+            worst(m) = max(worst(m), d/tolerance)
+            call check(ctx, d <= tolerance, method_name(exact_methods(m))//": S within the tolerance ("//real_text(d)// &
+                       ") at "//trim(lines(k)(1:60)))
+            f = floquet_from_trace(tr, eps, tolerance)
+            ! the largest |multiplier| of x: relative error tol max(1, |S|)/sqrt|S^2 - 4| (the header's bound)
+            d = abs(exp(f%log_modulus(1)) - lam_ref)/lam_ref
+            call check(ctx, d <= 10.0_wp*tolerance*max(1.0_wp, abs(s_ref))/sqrt(max(abs(s_ref**2 - 4.0_wp), 1.0e-6_wp)) &
+                       + 1.0e-12_wp, method_name(exact_methods(m))//": |lambda|_max within its bound ("//real_text(d)//")")
+            if (m == 1 .and. f%stable) n_stable = n_stable + 1
+         end do
+      end do
+      call check(ctx, n_points(1) >= 50 .and. n_points(2) >= 40, "reference points: "// &
+                 real_text(real(n_points(1), wp))//" Kapitza, "//real_text(real(n_points(2), wp))//" second")
+      call check(ctx, n_stable > 10 .and. n_stable < sum(n_points) - 10, "stable and unstable points both")
+      do m = 1, size(exact_methods)
+         print '(4x,a8,a,es9.2)', method_name(exact_methods(m)), ": worst |S - S_ref|/tolerance", worst(m)
+      end do
+   end subroutine physical_against_reference
+
+   !> Method auto over chart rows as the chart task computes them (one row per ω, its
+   !> damping κπ/ω, `monodromy_trace_batch`: shared meshes) against magnus6 at 1e-12: the
+   !> damped Kapitza pendulum over the shipped scene's range (ω 60 … 700, A 0 … 0.1, 32 × 32)
+   !> and the row ω = 167.023 through A = 0.022742, where a first mesh of 8 steps per unit τ
+   !> made a Richardson pair whose difference was a twentieth of its error; every point within
+   !> the tolerance at 1e-6 and 1e-10.
+   subroutine auto_chart_grid(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer, parameter :: n = 32
+      real(wp), parameter :: tols(2) = [1.0e-6_wp, 1.0e-10_wp]
+      type(equation_model_t) :: kapitza
+      character(len=80) :: texts(2, 6)
+      real(wp) :: amplitudes(n), worst, w
+      integer :: i, j, t, n_checked
+      texts(:, 1) = [character(len=80) :: "parameters", "g = 9.81, l = 0.2, kappa = 0.2, A = 0, w = 100"]
+      texts(:, 2) = [character(len=80) :: "stiffness", "-g/l + A*w^2/l*cos(w*t)"]
+      texts(:, 3) = [character(len=80) :: "damping", "kappa"]
+      texts(:, 4) = [character(len=80) :: "frequency", "w"]
+      texts(:, 5) = [character(len=80) :: "alpha", "w"]
+      texts(:, 6) = [character(len=80) :: "beta", "A"]
+      call equation_of(ctx, texts, kapitza)
+      amplitudes = [(0.1_wp*(j - 1)/real(n - 1, wp), j=1, n)]
+      do t = 1, size(tols)
+         worst = 0.0_wp
+         n_checked = 0
+         do i = 1, n
+            w = 60.0_wp + 640.0_wp*(i - 1)/real(n - 1, wp)
+            call auto_row_errors(kapitza, w, amplitudes, tols(t), worst, n_checked, kapitza%point_damping(w, 0.0_wp))
+         end do
+         w = 1.6702341137123744e+002_wp
+         call auto_row_errors(kapitza, w, [2.2742474916387961e-002_wp], tols(t), worst, n_checked, &
+                              kapitza%point_damping(w, 0.0_wp))
+         call check(ctx, worst <= 1.0_wp, "Kapitza at "//real_text(tols(t))//": worst error/tolerance "// &
+                    real_text(worst))
+         call check(ctx, n_checked >= n*n - 10, "points compared")
+         print '(4x,a,es8.1,a,es9.2)', "Kapitza auto chart grid at", tols(t), ": worst error/tolerance", worst
+      end do
+   end subroutine auto_chart_grid
+
+   !> The Kapitza chart's row at ω = 314.16 (6 values of A) and the points task at the same
+   !> (ω, A): the same values to the tolerance (a row shares its meshes, a point is alone),
+   !> the verdicts alike; both files name their axis columns w and A, and the chart's header
+   !> repeats the run.
+   subroutine chart_row_equals_points(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=200) :: common(3)
+      character(len=200) :: chart_scene(5), points_scene(5)
+      character(len=:), allocatable :: written, again, out, pairs
+      character(len=1024), allocatable :: chart_lines(:), points_lines(:)
+      type(error_t), allocatable :: error
+      real(wp) :: c(11), p(11)
+      integer :: k, j, n_compared
+      logical :: ok
+      common(1) = "&equation parameters = 'g = 9.81, l = 0.2, kappa = 0.2, A = 0.005, w = 314.16',"
+      common(2) = "  stiffness = '-g/l + A*w^2/l*cos(w*t)', damping = 'kappa', frequency = 'w',"
+      common(3) = "  alpha = 'w', beta = 'A' /"
+      out = scratch_prefix("equation_chart")
+      chart_scene(1) = "&scene task = 'chart', model = 'equation', tolerance = 1e-10, output = '"//out//"' /"
+      chart_scene(2:4) = common
+      chart_scene(5) = "&chart alpha_min = 314.16, alpha_max = 314.16, n_alpha = 1, beta_min = 0.0, "// &
+                       "beta_max = 0.015, n_beta = 6 /"
+      call run_text_scene("equation_chart", chart_scene, error, written)
+      call check(ctx, .not. allocated(error), "the chart runs")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      chart_lines = read_lines(written)
+      call check(ctx, any(index(chart_lines, "# columns: w A S stable") == 1), "the chart's columns are named w, A")
+      call check_rerun(ctx, written, chart_lines, again, ok)
+      if (ok) call delete_file(again)
+      pairs = scratch_prefix("equation_pairs")//".dat"
+      call write_file(pairs, [(padded("314.16 "//trim(real_text(0.003_wp*j))), j=0, 5)])
+      out = scratch_prefix("equation_points")
+      points_scene(1) = "&scene task = 'points', model = 'equation', tolerance = 1e-10, output = '"//out//"' /"
+      points_scene(2:4) = common
+      points_scene(5) = "&points file = '"//pairs//"' /"
+      call run_text_scene("equation_points", points_scene, error, written)
+      call check(ctx, .not. allocated(error), "the points run")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      points_lines = read_lines(written)
+      call check(ctx, any(index(points_lines, "# columns: w A S stable") == 1), "the points' columns are named w, A")
+      chart_lines = pack(chart_lines, chart_lines(:)(1:1) /= "#" .and. len_trim(chart_lines) > 0)
+      points_lines = pack(points_lines, points_lines(:)(1:1) /= "#" .and. len_trim(points_lines) > 0)
+      call check(ctx, size(chart_lines) == size(points_lines), "as many points as the row")
+      n_compared = 0
+      do k = 1, min(size(chart_lines), size(points_lines))
+         read (chart_lines(k), *) c
+         read (points_lines(k), *) p
+         n_compared = n_compared + 1
+         call check_close(ctx, p(1), c(1), rel=1.0e-15_wp, message="w of point "//real_text(real(k, wp)))
+         call check_close(ctx, p(2), c(2), rel=1.0e-15_wp, message="A of point "//real_text(real(k, wp)))
+         call check(ctx, abs(p(3) - c(3)) <= 2.0e-10_wp*max(1.0_wp, abs(c(3))), "S of point "// &
+                    real_text(real(k, wp))//": "//real_text(p(3))//" and "//real_text(c(3)))
+         call check(ctx, nint(p(4)) == nint(c(4)), "the verdict of point "//real_text(real(k, wp)))
+      end do
+      call check(ctx, n_compared == 6, "6 points compared")
+      call delete_file(pairs)
+   end subroutine chart_row_equals_points
+
+   !> Bad equations: exit 2 naming the file, the group and the variable, with what is
+   !> wrong (the column of a parse error, the known names, the parameters' values and t of
+   !> a non-finite coefficient), and no file written.
+   subroutine bad_scene_input(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: base = "parameters = 'g = 9.81, l = 0.2, A = 0.005, w = 314.16', "// &
+         "frequency = 'w', alpha = 'w', beta = 'A', "
+      character(len=*), parameter :: k_ok = "stiffness = '-g/l + A*w^2/l*cos(w*t)'"
+      call refused("&equation "//base//"stiffness = '-g/l + A*w^2/l*cos(w*t' /", "stiffness", "column 19")
+      call refused("&equation "//base//"stiffness = '-g/l + B*cos(w*t)' /", "stiffness", "g, l, A, w")
+      call refused("&equation "//base//"stiffness = '-g/l + A*w^2/l*sqrt(cos(w*t))' /", "stiffness", &
+                   "not finite at t = ")
+      call refused("&equation "//base//"stiffness = '-g/l + A*w^2/l*sqrt(cos(w*t))' /", "stiffness", &
+                   "A = 5.00000000000e-003, w = 3.14160000000e+002): ")
+      call refused("&equation "//base//"stiffness = '-g/l + A*w^2/l*cos(3*t)' /", "stiffness", "not of period")
+      call refused("&equation parameters = 'g = 9.81, l = 0.2, A = 0.005, w = 314.16', frequency = 'w', "// &
+                   "alpha = 'omega', beta = 'A', "//k_ok//" /", "alpha", "g, l, A, w")
+      call refused("&equation parameters = 'g = 9.81, l = 0.2, A = 0.005, w = 314.16, A = 1', frequency = 'w', "// &
+                   "alpha = 'w', beta = 'A', "//k_ok//" /", "parameters", "twice")
+      call refused("&equation parameters = 'g = 9.81, l = 0.2, A = 0.005, w = 314.16', frequency = 'w', "// &
+                   "alpha = 'A', beta = 'w', "//k_ok//" /", "beta", "frequency")
+      call refused("&equation parameters = 'g = 9.81, l = 0.2, A = 0.005, w = 314.16', frequency = 'w', "// &
+                   "alpha = 'w', beta = 'l', "//k_ok//" /", "beta", "affine")
+      call refused("&equation "//base//k_ok//", mass = '1 - l*5' /", "mass", "> 0")
+      call refused("&equation "//base//k_ok//", damping = '-0.1' /", "damping", ">= 0")
+      call refused("&equation "//base//"stiffness = '"//repeat("1 + ", 600)//"1' /", "stiffness", "2000")
+      call refused("&equation "//base//k_ok//", period = '0.02' /", "frequency, period", "one of the two")
+      call refused("&equation "//base//"stiffness = -g/l /", "stiffness", "quoted")
+      call refused("&equation parameters = 'g = 9.81, l = 0.2, A = 0.005, f = 50, w = 2*pi*f', frequency = 'w', "// &
+                   "alpha = 'f', beta = 'A', "//k_ok//" /", "alpha", "computed from the axis 'f'")
+   contains
+      subroutine refused(group, variable, what)
+         character(len=*), intent(in) :: group, variable, what
+         type(error_t), allocatable :: error
+         character(len=:), allocatable :: written, out, scene
+         character(len=3000) :: lines(3)
+         out = scratch_prefix("equation_bad")
+         scene = scratch_prefix("equation_bad_scene")//".nml"
+         lines(1) = "&scene task = 'chart', model = 'equation', output = '"//out//"' /"
+         lines(2) = "&chart alpha_min = 300, alpha_max = 320, n_alpha = 3, beta_min = 0, beta_max = 0.01, n_beta = 3 /"
+         lines(3) = group
+         call run_text_scene("equation_bad_scene", lines, error, written)
+         call check(ctx, allocated(error), variable//" "//what//": refused")
+         if (.not. allocated(error)) return
+         call check(ctx, error%code == err_input, variable//" "//what//": an input error (exit 2)")
+         call check(ctx, index(error%message, scene) > 0 .and. index(error%message, "&equation: "//variable//":") > 0 &
+                    .and. index(error%message, what) > 0, "the message names file, group, variable and '"//what// &
+                    "': "//error%message)
+         call check(ctx, .not. file_exists(out//"_chart.dat"), variable//" "//what//": no file written")
+      end subroutine refused
+   end subroutine bad_scene_input
+end module test_model_equation
