@@ -14,8 +14,11 @@ set terminal pngcairo size 1500,650 font "Sans,11"
 set output out
 set xrange [low(file, 'alpha'):high(file, 'alpha')]
 set yrange [low(file, 'beta'):high(file, 'beta')]
-set xlabel "α (drive)"
-set ylabel "β"
+# an equations system (model 'equations') names its axes' parameters in &equations alpha, beta
+x_axis = scene_value(file, 'alpha')
+y_axis = scene_value(file, 'beta')
+if (x_axis ne '') { set xlabel x_axis noenhanced } else { set xlabel "α (drive)" }
+if (y_axis ne '') { set ylabel y_axis noenhanced } else { set ylabel "β" }
 # the verdict's colour: 0 stable, 1 at +1, 2 at -1, 3 combination, 4 damped, 5 marginal
 shade(s, k) = s < 0 ? 5 : (s == 1 ? (k == 4 ? 4 : 0) : k)
 set palette defined (0 "#f3efe6", 1 "#d9730d", 2 "#1f4e9c", 3 "#b0208a", 4 "#9fc8a0", 5 "#222222")

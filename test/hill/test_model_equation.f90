@@ -17,6 +17,12 @@ module test_model_equation
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace
    use hillstab_integrate_monodromy, only: method_t, monodromy_trace, method_auto, method_magnus6, method_rk, &
       method_gsl, method_name
+   use hillstab_hill_system, only: system_form_t, prepare_system
+   use hillstab_hill_system_equation, only: equations_system_t
+   use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_auto, &
+      system_magnus4, system_magnus6, system_rk, system_gsl, system_method_name
+   use hillstab_integrate_system_point, only: system_point
+   use hillstab_hill_system_floquet, only: system_floquet_t
    use hillstab_testing
    use hillstab_test_files, only: run_text_scene, check_rerun
    use hillstab_test_reference, only: auto_row_errors
@@ -37,6 +43,7 @@ contains
          new_unittest("elastic_written_as_equation", elastic_written_as_equation), &
          new_unittest("physical_against_reference", physical_against_reference), &
          new_unittest("auto_chart_grid", auto_chart_grid), &
+         new_unittest("column_against_reference", column_against_reference), &
          new_unittest("chart_row_equals_points", chart_row_equals_points), &
          new_unittest("bad_scene_input", bad_scene_input)])
    end function collect_model_equation
@@ -304,6 +311,94 @@ contains
          print '(4x,a,es8.1,a,es9.2)', "Kapitza auto chart grid at", tols(t), ": worst error/tolerance", worst
       end do
    end subroutine auto_chart_grid
+
+   !> Set 3 of data/reference/physical_set.dat: a damped column of 3 modes written as its
+   !> user writes it, M x'' + C x' + (W − (P0 + P1 cos Ωt) S) x = 0 with named matrices, over
+   !> (Ω, P1) at 50 points near the simple and combination resonances: the trace and every
+   !> multiplier (all six, as complex numbers, and the largest modulus) against the
+   !> monodromy of the physical system by Taylor series in 45 digits, by every system method
+   !> at 1e-10, status 0. The damping (π/Ω) C changes from row to row.
+   subroutine column_against_reference(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: path = "data/reference/physical_set.dat"
+      real(wp), parameter :: tolerance = 1.0e-10_wp
+      integer, parameter :: methods(5) = [system_auto, system_magnus4, system_magnus6, system_rk, system_gsl]
+      type(equations_system_t) :: column
+      type(error_t), allocatable :: error
+      type(system_form_t) :: form
+      type(system_nodes_t) :: nodes
+      type(system_monodromy_t) :: r
+      type(system_floquet_t) :: f
+      character(len=1024), allocatable :: lines(:)
+      real(wp) :: row(17), scale, d_trace, d_lambda, worst_trace(size(methods)), worst_lambda(size(methods))
+      complex(wp) :: reference(6), computed(6)
+      integer :: k, m, j, ios, set, n_points, n_stable
+      call column%set_values("n", [3.0_wp], error)
+      call column%set_text("matrices", "W = [1, 0, 0; 0, 16, 0; 0, 0, 81], S = [1, 0.3, 0.1; 0.3, 4, 0.4; "// &
+                           "0.1, 0.4, 9], Z = [1, 0, 0; 0, 4, 0; 0, 0, 9]", error)
+      call column%set_text("parameters", "P0 = 0.3, P1 = 0, Om = 2, zeta = 0.01", error)
+      call column%set_text("stiffness", "W - (P0 + P1*cos(Om*t))*S", error)
+      call column%set_text("damping", "2*zeta*Z", error)
+      call column%set_text("frequency", "Om", error)
+      call column%set_text("alpha", "Om", error)
+      call column%set_text("beta", "P1", error)
+      call column%check_values(error)
+      call check(ctx, .not. allocated(error), "the column is taken")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      lines = read_lines(path)
+      n_points = 0
+      n_stable = 0
+      worst_trace = 0.0_wp
+      worst_lambda = 0.0_wp
+      do k = 1, size(lines)
+         if (len_trim(lines(k)) == 0 .or. lines(k)(1:1) == "#") cycle
+         read (lines(k), *, iostat=ios) set
+         if (ios /= 0 .or. set /= 3) cycle
+         ! set Om P1 trace re1 im1 ... re6 im6 ref_error
+         read (lines(k), *, iostat=ios) row
+         call check(ctx, ios == 0, "reads "//trim(lines(k)(1:40)))
+         if (ios /= 0) cycle
+         n_points = n_points + 1
+         reference = [(cmplx(row(5 + 2*j), row(6 + 2*j), wp), j=0, 5)]
+         call prepare_system(column, 0.0_wp, form, error, alpha=row(2))
+         call check(ctx, .not. allocated(error), "prepared at Om = "//real_text(row(2)))
+         if (allocated(error)) cycle
+         do m = 1, size(methods)
+            nodes = system_nodes_t()
+            call system_point(column, form, row(2), row(3), system_method_t(methods(m), tolerance), nodes, r, f, error)
+            call check(ctx, .not. allocated(error) .and. r%status == 0, system_method_name(methods(m))// &
+                       ": status 0 at Om = "//real_text(row(2))//", P1 = "//real_text(row(3)))
+            if (allocated(error) .or. r%status /= 0) cycle
+            ! Φ's error is the tolerance relative to its largest entry; the trace sums 6 of them
+            scale = max(1.0_wp, maxval(abs(r%phi))*exp(r%log_scale))
+            d_trace = abs(f%trace - row(4))/scale
+            worst_trace(m) = max(worst_trace(m), d_trace/tolerance)
+            call check(ctx, d_trace <= 6.0_wp*tolerance, system_method_name(methods(m))//": trace within 6 tol ("// &
+                       real_text(d_trace)//") at Om = "//real_text(row(2))//", P1 = "//real_text(row(3)))
+            ! every multiplier: the nearest computed one (the sets equal as multisets), within the
+            ! tolerance relative to max(1, |lambda|)
+            computed = f%multipliers*exp(f%log_scale)
+            d_lambda = 0.0_wp
+            do j = 1, 6
+               d_lambda = max(d_lambda, minval(abs(computed - reference(j)))/max(1.0_wp, abs(reference(j))))
+            end do
+            worst_lambda(m) = max(worst_lambda(m), d_lambda)
+            call check(ctx, d_lambda <= tolerance, system_method_name(methods(m))//": every multiplier ("// &
+                       real_text(d_lambda)//") at Om = "//real_text(row(2))//", P1 = "//real_text(row(3)))
+            call check(ctx, abs(exp(f%log_lambda_max) - abs(reference(1)))/abs(reference(1)) <= 1.0e-7_wp, &
+                       system_method_name(methods(m))//": the largest modulus")
+            if (m == 1 .and. f%verdict == 1) n_stable = n_stable + 1
+         end do
+      end do
+      call check(ctx, n_points >= 50, "50 reference points, got "//real_text(real(n_points, wp)))
+      do m = 1, size(methods)
+         print '(4x,a8,a,es9.2,a,es9.2)', system_method_name(methods(m)), ": worst trace error/tolerance", &
+            worst_trace(m), ", worst multiplier error", worst_lambda(m)
+      end do
+   end subroutine column_against_reference
 
    !> The Kapitza chart's row at ω = 314.16 (6 values of A) and the points task at the same
    !> (ω, A): the same values to the tolerance (a row shares its meshes, a point is alone),

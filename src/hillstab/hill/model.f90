@@ -100,7 +100,6 @@ module hillstab_hill_model
       procedure :: point_damping => scene_damping
       procedure :: has_damping => no_own_damping
       procedure :: takes_scene_damping => scene_damping_taken
-      procedure :: axis_name => greek_axis_name
       procedure :: physical_alpha => pendulum_alpha
       procedure :: has_witness => no_witness
       procedure :: witness_beta => no_witness_beta
@@ -224,15 +223,6 @@ contains
       class(hill_model_t), intent(in) :: self  !! the model
       scene_damping_taken = .true.
    end function scene_damping_taken
-
-   !> The name of the chart's axis k (1: α, the rows; 2: β) as files name its column:
-   !> "alpha" and "beta" unless the model's axes are parameters of its own.
-   pure function greek_axis_name(self, k) result(name)
-      class(hill_model_t), intent(in) :: self  !! the model
-      integer, intent(in) :: k                 !! 1 or 2
-      character(len=:), allocatable :: name
-      name = trim(merge("alpha", "beta ", k == 1))
-   end function greek_axis_name
 
    !> The model is the elastic pendulum itself: it has the physical domain (a `physical`
    !> column), the nonlinear simulation and α = aπ²/ρ. False unless the model says so.

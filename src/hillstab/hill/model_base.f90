@@ -51,6 +51,7 @@ module hillstab_hill_model_base
       procedure :: set_values => no_values
       procedure :: set_text => no_text
       procedure :: check_values => values_complete
+      procedure :: axis_name => greek_axis_name
    end type model_base_t
 
    abstract interface
@@ -93,6 +94,15 @@ contains
       call set_error(error, err_invalid_parameter, "the "//self%name()//" model has no text variable '"// &
          trim(name)//"'")
    end subroutine no_text
+
+   !> The name of the chart's axis k (1: α, the rows; 2: β) as files name its column:
+   !> "alpha" and "beta" unless the model's axes are parameters of its own.
+   pure function greek_axis_name(self, k) result(name)
+      class(model_base_t), intent(in) :: self  !! the model
+      integer, intent(in) :: k                 !! 1 or 2
+      character(len=:), allocatable :: name
+      name = trim(merge("alpha", "beta ", k == 1))
+   end function greek_axis_name
 
    !> After its variables are set: whether the model is complete and consistent (every
    !> model without variables is).

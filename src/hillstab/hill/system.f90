@@ -55,6 +55,9 @@ module hillstab_hill_system
       procedure(system_stiffness), deferred :: stiffness
       procedure :: damping => zero_matrix
       procedure :: gyroscopic => zero_matrix
+      procedure :: damping_at => damping_anywhere
+      procedure :: gyroscopic_at => gyroscopic_anywhere
+      procedure :: row_dependent => same_every_row
       procedure :: period => period_two
       procedure :: even => not_even
       procedure :: symmetric => symmetric_stiffness
@@ -111,6 +114,29 @@ contains
       real(wp), intent(out) :: a(:, :)         !! the matrix (n × n)
       a = 0.0_wp
    end subroutine zero_matrix
+
+   !> C at row α: the same at every α (`damping`) unless the system says otherwise.
+   pure subroutine damping_anywhere(self, alpha, a)
+      class(hill_system_t), intent(in) :: self  !! the system
+      real(wp), intent(in) :: alpha            !! α of the row
+      real(wp), intent(out) :: a(:, :)         !! the matrix (n × n)
+      call self%damping(a)
+   end subroutine damping_anywhere
+
+   !> G at row α: the same at every α (`gyroscopic`) unless the system says otherwise.
+   pure subroutine gyroscopic_anywhere(self, alpha, a)
+      class(hill_system_t), intent(in) :: self  !! the system
+      real(wp), intent(in) :: alpha            !! α of the row
+      real(wp), intent(out) :: a(:, :)         !! the matrix (n × n)
+      call self%gyroscopic(a)
+   end subroutine gyroscopic_anywhere
+
+   !> C or G change with α, so that the system is prepared per row (`prepare_system` with
+   !> `alpha`): false unless the system says so.
+   pure logical function same_every_row(self)
+      class(hill_system_t), intent(in) :: self  !! the system
+      same_every_row = .false.
+   end function same_every_row
 
    !> The period of K in τ: 2 unless the system says otherwise.
    pure real(wp) function period_two(self) result(period)
@@ -229,12 +255,14 @@ contains
    !> Prepare a system at damping ε for the methods: M⁻¹, D, the flags; err_invalid_parameter
    !> when M is not symmetric positive definite, C not symmetric or G not skew (naming which),
    !> or an entry is not finite.
-   subroutine prepare_system(system, epsilon, form, error)
+   subroutine prepare_system(system, epsilon, form, error, alpha)
       class(hill_system_t), intent(in) :: system  !! the system
       real(wp), intent(in) :: epsilon             !! ε ≥ 0 (the damping ε M)
       type(system_form_t), intent(out) :: form    !! what the methods need
       !> err_invalid_parameter naming the matrix; unallocated on success
       type(error_t), allocatable, intent(out) :: error
+      !> the row, for a system whose C or G change with α (`row_dependent`)
+      real(wp), intent(in), optional :: alpha
       real(wp), allocatable :: c(:, :), g(:, :)
       integer :: n, i
       logical :: ok, out_of_range
@@ -251,8 +279,13 @@ contains
       form%n = n
       allocate (form%m(n, n), form%m_inverse(n, n), form%d(n, n), form%g(n, n), c(n, n), g(n, n))
       call system%mass(form%m)
-      call system%damping(c)
-      call system%gyroscopic(g)
+      if (present(alpha)) then
+         call system%damping_at(alpha, c)
+         call system%gyroscopic_at(alpha, g)
+      else
+         call system%damping(c)
+         call system%gyroscopic(g)
+      end if
       if (.not. (all(ieee_is_finite(form%m)) .and. all(ieee_is_finite(c)) .and. all(ieee_is_finite(g)))) then
          call set_error(error, err_invalid_parameter, "mass, damping, gyroscopic: the entries must be finite")
          return

@@ -19,6 +19,7 @@ module hillstab_batch_run_read
    use hillstab_hill_model, only: hill_model_t
    use hillstab_hill_models, only: model_names, new_model
    use hillstab_hill_system_matrix, only: matrix_system_t
+   use hillstab_hill_system_equation, only: equations_system_t
    use hillstab_integrate_system, only: system_method_from_name, system_method_names_text
    use hillstab_hill_coefficient, only: sampling_name, sampling_from_name, sampling_names_text
    use hillstab_hill_units, only: physical_t, physical_epsilon, check_physical, equilibrium_length
@@ -255,19 +256,24 @@ contains
       if (allocated(error)) return
       task_name = lower_case(trim(task))
 
-      if (lower_case(trim(model)) == "system") then
-         allocate (matrix_system_t :: this%system)
+      if (lower_case(trim(model)) == "system" .or. lower_case(trim(model)) == "equations") then
+         if (lower_case(trim(model)) == "system") then
+            allocate (matrix_system_t :: this%system)
+         else
+            allocate (equations_system_t :: this%system)
+         end if
          this%method%kind = system_method_from_name(trim(method))
          if (this%method%kind < 0) then
-            call fail(error, file%path, group%name, "method", "a system (model = 'system') takes method "// &
-               system_method_names_text()//", got '"//trim(method)//"'")
+            call fail(error, file%path, group%name, "method", "a system (model = '"//lower_case(trim(model))// &
+               "') takes method "//system_method_names_text()//", got '"//trim(method)//"'")
             return
          end if
       else
          call new_model(trim(model), this%model, model_error)
          if (allocated(model_error)) then
             call fail(error, file%path, group%name, "model", model_error%message//" (or 'system': n coupled "// &
-               "equations, the matrices in &system)")
+               "equations, the matrices in &system; or 'equations': n coupled equations in physical time, "// &
+               "&equations)")
             return
          end if
          this%method%kind = method_from_name(trim(method))

@@ -329,7 +329,14 @@ contains
       type(system_monodromy_t) :: r
       type(system_floquet_t) :: f
       type(error_t), allocatable :: error
-      call system_point(system, form, alpha, beta, method, nodes, r, f, error)
+      type(system_form_t) :: row_form
+      if (system%row_dependent()) then
+         ! C or G change with α (an equation's damping along a frequency axis): the form of the row
+         call prepare_system(system, form%epsilon, row_form, error, alpha)
+         if (.not. allocated(error)) call system_point(system, row_form, alpha, beta, method, nodes, r, f, error)
+      else
+         call system_point(system, form, alpha, beta, method, nodes, r, f, error)
+      end if
       failed = allocated(error) .or. r%status == status_failed
       message = ""
       if (allocated(error)) message = error%message

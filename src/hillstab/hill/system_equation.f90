@@ -1,0 +1,802 @@
+!> A system as its user writes it: n coupled equations in physical time t with named
+!> parameters and named constant matrices,
+!>
+!>     M x'' + (C + G) x' + K(t) x = 0,   x in Rⁿ,  K of period T = 2π/Ω,
+!>
+!> each of M, C, G and K a *matrix expression*: a scalar expression (hillstab_core_expression)
+!> of t, the parameters and the matrices' names that is linear in the matrices, its part
+!> without a matrix standing for that multiple of the identity (K = 'W - (P0 + P1*cos(Om*t))*S'
+!> is W − (P0 + P1 cos Ωt) S; damping = 'kappa' is κ I; mass = '1' is I). The matrices are
+!> given by rows, 'W = [1, 0, 0; 0, 16, 0; 0, 0, 81], S = [...]'. As for one equation
+!> (hillstab_hill_model_equation), two parameters are the chart's axes: `alpha` (the rows)
+!> may enter anywhere but M, `beta` enters K alone and affinely. In τ = Ωt/π (one period is
+!> τ ∈ [0, 2]) the system is the one the system methods take, at each row α,
+!>
+!>     M x'' + (π/Ω)(C + G) x' + (π/Ω)² K(πτ/Ω) x = 0,
+!>
+!> so that the damping changes along a frequency axis (`damping_at`, `row_dependent`: the
+!> tasks prepare the system per row) and the multipliers are the physical system's over one
+!> period 2π/Ω. K = p + β b with p = K at β = 0 and b the difference of K at β = 1 and 0; at
+!> every τ the coefficients of the matrices come from two evaluations of the expression on
+!> the unit vectors of the matrices' names. The whole period is integrated.
+!>
+!> Variables (`&equations`): `n`, `parameters`, `matrices`, `stiffness`, `mass` (default
+!> '1': I), `damping` ('0'), `gyroscopic` ('0'), `frequency` or `period`, `alpha`, `beta`.
+!>
+!>```fortran
+!> type(equations_system_t) :: column
+!> type(error_t), allocatable :: error
+!> call column%set_values("n", [3.0_wp], error)
+!> call column%set_text("matrices", "W = [1, 0, 0; 0, 16, 0; 0, 0, 81], S = [1, 0.3, 0.1; 0.3, 4, 0.4; "// &
+!>                      "0.1, 0.4, 9], Z = [1, 0, 0; 0, 4, 0; 0, 0, 9]", error)
+!> call column%set_text("parameters", "P0 = 0.3, P1 = 0, Om = 2, zeta = 0.01", error)
+!> call column%set_text("stiffness", "W - (P0 + P1*cos(Om*t))*S", error)
+!> call column%set_text("damping", "2*zeta*Z", error)
+!> call column%set_text("frequency", "Om", error)
+!> call column%set_text("alpha", "Om", error)
+!> call column%set_text("beta", "P1", error)
+!>```
+module hillstab_hill_system_equation
+   use hillstab_core_kinds, only: wp, pi
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
+   use hillstab_core_text, only: integer_text, format_es
+   use hillstab_core_expression, only: expression_t, parse_expression, parse_parameters, name_length
+   use hillstab_hill_model_base, only: model_variable_t, model_variable_real, model_variable_text
+   use hillstab_hill_system, only: hill_system_t, max_dof
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
+   implicit none
+   private
+   public :: equations_system_t, max_equations_text, max_matrices
+
+   !> Longest text of a variable.
+   integer, parameter :: max_equations_text = 8000
+   !> Most named matrices.
+   integer, parameter :: max_matrices = 16
+
+   !> M x'' + (C + G) x' + K(t) x = 0 with named parameters and matrices (see the module).
+   type, extends(hill_system_t) :: equations_system_t
+      integer :: n = 0                                  !! degrees of freedom
+      character(len=:), allocatable :: parameters_text  !! `parameters`
+      character(len=:), allocatable :: matrices_text    !! `matrices`
+      character(len=:), allocatable :: stiffness_text   !! `stiffness`
+      character(len=:), allocatable :: mass_text        !! `mass`
+      character(len=:), allocatable :: damping_text     !! `damping`
+      character(len=:), allocatable :: gyroscopic_text  !! `gyroscopic`
+      character(len=:), allocatable :: frequency_text   !! `frequency`
+      character(len=:), allocatable :: period_text      !! `period`
+      character(len=:), allocatable :: alpha_name       !! the parameter of the α axis
+      character(len=:), allocatable :: beta_name        !! the parameter of the β axis
+      !> what `prepare` found wrong, beginning with the variables concerned ("" when ready)
+      character(len=:), allocatable :: problem
+      !> the parameters' names
+      character(len=name_length), allocatable :: names(:)
+      real(wp), allocatable :: values(:)                !! the parameters' values as given
+      !> the matrices' names
+      character(len=name_length), allocatable :: matrix_names(:)
+      real(wp), allocatable :: matrices(:, :, :)        !! the matrices (n, n, count)
+      integer :: i_alpha = 0                            !! position of the α axis among the parameters
+      integer :: i_beta = 0                             !! position of the β axis
+      !> K, M, C, G over the names (matrices…, t, parameters…)
+      type(expression_t) :: k, m, c, g
+      type(expression_t) :: drive                       !! Ω, or T with `from_period`
+      logical :: from_period = .false.                  !! `drive` is the period T
+      real(wp), allocatable :: mass_matrix(:, :)        !! M at the given parameters
+      logical :: ready = .false.                        !! `prepare` succeeded
+   contains
+      procedure :: name => equations_name
+      procedure :: formula => equations_formula
+      procedure :: dof => equations_dof
+      procedure :: mass => equations_mass
+      procedure :: damping => equations_damping
+      procedure :: gyroscopic => equations_gyroscopic
+      procedure :: damping_at => equations_damping_at
+      procedure :: gyroscopic_at => equations_gyroscopic_at
+      procedure :: row_dependent => equations_row_dependent
+      procedure :: stiffness => equations_stiffness
+      procedure :: symmetric => equations_symmetric
+      procedure :: alpha_domain => equations_alpha_domain
+      procedure :: alpha_valid => equations_alpha_valid
+      procedure :: axis_name => equations_axis_name
+      procedure :: variables => equations_variables
+      procedure :: set_values => equations_set_values
+      procedure :: set_text => equations_set_text
+      procedure :: check_values => equations_check_values
+   end type equations_system_t
+
+contains
+
+   !> "equations".
+   pure function equations_name(self) result(text)
+      class(equations_system_t), intent(in) :: self  !! the system
+      character(len=:), allocatable :: text
+      text = "equations"
+   end function equations_name
+
+   !> The system as headers state it.
+   pure function equations_formula(self) result(text)
+      class(equations_system_t), intent(in) :: self  !! the system
+      character(len=:), allocatable :: text
+      if (.not. self%ready) then
+         text = "M x'' + (C + G) x' + K(t) x = 0 (&equations)"
+         return
+      end if
+      text = "M x'' + (C + G) x' + K(t) x = 0, n = "//integer_text(self%n)//", K(t) = "//self%stiffness_text// &
+             ", M = "//self%mass_text//", C = "//self%damping_text//", G = "//self%gyroscopic_text
+      if (self%from_period) then
+         text = text//", period T = "//self%period_text//", Omega = 2 pi/T"
+      else
+         text = text//", Omega = "//self%frequency_text
+      end if
+      text = text//"; tau = Omega t/pi: M x'' + (pi/Omega)(C + G) x' + (pi/Omega)^2 K(pi tau/Omega) x = 0; "// &
+             "parameters: "//self%parameters_text//"; matrices: "//self%matrices_text//"; alpha = "// &
+             self%alpha_name//", beta = "//self%beta_name
+   end function equations_formula
+
+   !> n.
+   pure integer function equations_dof(self)
+      class(equations_system_t), intent(in) :: self  !! the system
+      equations_dof = self%n
+   end function equations_dof
+
+   !> The variables of `&equations`.
+   pure function equations_variables(self) result(variables)
+      class(equations_system_t), intent(in) :: self  !! the system
+      type(model_variable_t), allocatable :: variables(:)
+      allocate (variables(11))
+      variables(1) = model_variable_t("n", model_variable_real, 1, "", "degrees of freedom, 1 to 20", whole=.true.)
+      variables(2) = model_variable_t("parameters", model_variable_text, max_equations_text, "''", &
+         "the named parameters, 'name = value, ...'; a value may use the parameters before it")
+      variables(3) = model_variable_t("matrices", model_variable_text, max_equations_text, "''", &
+         "named constant matrices by rows, 'W = [1, 0; 0, 4], S = [...]'")
+      variables(4) = model_variable_t("stiffness", model_variable_text, max_equations_text, "", &
+         "K(t): an expression of t, the parameters and the matrices, linear in the matrices")
+      variables(5) = model_variable_t("mass", model_variable_text, max_equations_text, "'1'", &
+         "M: a matrix expression of the parameters (not of the axes), symmetric positive definite")
+      variables(6) = model_variable_t("damping", model_variable_text, max_equations_text, "'0'", &
+         "C: a matrix expression of the parameters, symmetric")
+      variables(7) = model_variable_t("gyroscopic", model_variable_text, max_equations_text, "'0'", &
+         "G: a matrix expression of the parameters, skew")
+      variables(8) = model_variable_t("frequency", model_variable_text, max_equations_text, "", &
+         "Omega: the drive's angular frequency (the period is 2 pi/Omega), an expression of the parameters")
+      variables(9) = model_variable_t("period", model_variable_text, max_equations_text, "", &
+         "T: the period of K instead of frequency")
+      variables(10) = model_variable_t("alpha", model_variable_text, name_length, "", &
+         "the parameter the chart's alpha axis runs over (the rows)")
+      variables(11) = model_variable_t("beta", model_variable_text, name_length, "", &
+         "the parameter the chart's beta axis runs over: K affine in it, Omega, M, C and G free of it")
+   end function equations_variables
+
+   !> `n`.
+   pure subroutine equations_set_values(self, name, values, error)
+      class(equations_system_t), intent(inout) :: self  !! the system
+      character(len=*), intent(in) :: name             !! the variable
+      real(wp), intent(in) :: values(:)                !! its numbers
+      type(error_t), allocatable, intent(out) :: error  !! the refusal
+      if (trim(name) /= "n") then
+         call set_error(error, err_invalid_parameter, "the equations system has no numeric variable '"// &
+            trim(name)//"' (n; the others are texts)")
+         return
+      end if
+      if (size(values) /= 1) then
+         call set_error(error, err_invalid_parameter, "n: one number, got "//integer_text(size(values)))
+         return
+      end if
+      if (.not. (ieee_is_finite(values(1)) .and. values(1) >= 1.0_wp .and. values(1) <= max_dof)) then
+         call set_error(error, err_invalid_parameter, "n: the degrees of freedom must be an integer from 1 to "// &
+            integer_text(max_dof))
+         return
+      end if
+      if (abs(values(1) - anint(values(1))) > 0.0_wp) then
+         call set_error(error, err_invalid_parameter, "n: the degrees of freedom must be an integer from 1 to "// &
+            integer_text(max_dof))
+         return
+      end if
+      self%n = nint(values(1))
+      call prepare(self)
+   end subroutine equations_set_values
+
+   !> Set one text of the system.
+   pure subroutine equations_set_text(self, name, text, error)
+      class(equations_system_t), intent(inout) :: self  !! the system
+      character(len=*), intent(in) :: name             !! the variable
+      character(len=*), intent(in) :: text             !! its text
+      type(error_t), allocatable, intent(out) :: error  !! unknown variable, too long a text
+      if (len_trim(text) > max_equations_text) then
+         call set_error(error, err_invalid_parameter, trim(name)//": "//integer_text(len_trim(text))// &
+            " characters, more than the "//integer_text(max_equations_text)//" a text may have")
+         return
+      end if
+      select case (trim(name))
+      case ("parameters"); self%parameters_text = trim(adjustl(text))
+      case ("matrices"); self%matrices_text = trim(adjustl(text))
+      case ("stiffness"); self%stiffness_text = trim(adjustl(text))
+      case ("mass"); self%mass_text = trim(adjustl(text))
+      case ("damping"); self%damping_text = trim(adjustl(text))
+      case ("gyroscopic"); self%gyroscopic_text = trim(adjustl(text))
+      case ("frequency"); self%frequency_text = trim(adjustl(text))
+      case ("period"); self%period_text = trim(adjustl(text))
+      case ("alpha"); self%alpha_name = trim(adjustl(text))
+      case ("beta"); self%beta_name = trim(adjustl(text))
+      case default
+         call set_error(error, err_invalid_parameter, "the equations system has no variable '"//trim(name)// &
+            "' (it has: n, parameters, matrices, stiffness, mass, damping, gyroscopic, frequency, period, alpha, beta)")
+         return
+      end select
+      call prepare(self)
+   end subroutine equations_set_text
+
+   !> What `prepare` found at the last change.
+   pure subroutine equations_check_values(self, error)
+      class(equations_system_t), intent(in) :: self  !! the system
+      type(error_t), allocatable, intent(out) :: error  !! what is wrong, named
+      if (.not. allocated(self%problem)) then
+         call set_error(error, err_invalid_parameter, "n, stiffness, frequency, alpha, beta: the system needs "// &
+            "n, its stiffness K(t), its frequency (or period) and the parameters of the two axes")
+      else if (len(self%problem) > 0) then
+         call set_error(error, err_invalid_parameter, self%problem)
+      end if
+   end subroutine equations_check_values
+
+   !> Parse and check everything given so far (`problem` says what is wrong).
+   pure subroutine prepare(self)
+      class(equations_system_t), intent(inout) :: self  !! the system
+      type(error_t), allocatable :: error
+      logical, allocatable :: depends(:, :)
+      character(len=name_length), allocatable :: all_names(:), matrix_names(:)
+      character(len=:), allocatable :: known, drive_name, where_beta
+      real(wp) :: drive, period
+      real(wp), allocatable :: k_now(:, :), k_later(:, :), c(:, :), g(:, :)
+      integer :: j, i
+      self%ready = .false.
+      self%problem = ""
+      if (.not. allocated(self%parameters_text)) self%parameters_text = ""
+      if (.not. allocated(self%matrices_text)) self%matrices_text = ""
+      if (.not. allocated(self%mass_text)) self%mass_text = "1"
+      if (.not. allocated(self%damping_text)) self%damping_text = "0"
+      if (.not. allocated(self%gyroscopic_text)) self%gyroscopic_text = "0"
+      if (.not. allocated(self%frequency_text)) self%frequency_text = ""
+      if (.not. allocated(self%period_text)) self%period_text = ""
+      if (.not. allocated(self%stiffness_text)) self%stiffness_text = ""
+      if (.not. allocated(self%alpha_name)) self%alpha_name = ""
+      if (.not. allocated(self%beta_name)) self%beta_name = ""
+      if (self%n < 1) then
+         self%problem = "n: the degrees of freedom are required (1 to "//integer_text(max_dof)//")"
+         return
+      end if
+      call parse_parameters(self%parameters_text, self%names, self%values, error, reserved=["t"], depends=depends)
+      if (allocated(error)) then
+         self%problem = error%message
+         return
+      end if
+      known = list_text(self%names)
+      call read_matrices(self%matrices_text, self%n, self%names, self%values, matrix_names, self%matrices, &
+                         self%problem)
+      if (len(self%problem) > 0) return
+      self%matrix_names = matrix_names
+      ! the axes
+      self%i_alpha = position(self%names, self%alpha_name)
+      self%i_beta = position(self%names, self%beta_name)
+      if (len(self%alpha_name) == 0 .or. self%i_alpha == 0) then
+         self%problem = "alpha: name the parameter of the chart's alpha axis (one of: "//known//")"
+         if (len(self%alpha_name) > 0) self%problem = "alpha: '"//self%alpha_name//"' is no parameter (the "// &
+                                                     "parameters: "//known//")"
+         return
+      end if
+      if (len(self%beta_name) == 0 .or. self%i_beta == 0) then
+         self%problem = "beta: name the parameter of the chart's beta axis (one of: "//known//")"
+         if (len(self%beta_name) > 0) self%problem = "beta: '"//self%beta_name//"' is no parameter (the "// &
+                                                    "parameters: "//known//")"
+         return
+      end if
+      if (self%i_alpha == self%i_beta) then
+         self%problem = "alpha, beta: the two axes are one parameter, '"//self%alpha_name//"'"
+         return
+      end if
+      do j = 1, size(self%names)
+         if (depends(j, self%i_alpha) .or. depends(j, self%i_beta)) then
+            self%problem = trim(merge("alpha", "beta ", depends(j, self%i_alpha)))//": the parameter '"// &
+               trim(self%names(j))//"' is computed from an axis and would not follow it; write that "// &
+               "dependence into the expressions instead"
+            return
+         end if
+      end do
+      ! the expressions over (matrices..., t, parameters...)
+      all_names = [character(len=name_length) :: matrix_names, "t", self%names]
+      if (len(self%stiffness_text) == 0) then
+         self%problem = "stiffness: K(t) is required (an expression of t, the parameters and the matrices "// &
+                        list_text(matrix_names)//")"
+         return
+      end if
+      call parse_one("stiffness", self%stiffness_text, all_names, self%k, self%problem)
+      if (len(self%problem) > 0) return
+      call parse_one("mass", self%mass_text, all_names, self%m, self%problem)
+      if (len(self%problem) > 0) return
+      call parse_one("damping", self%damping_text, all_names, self%c, self%problem)
+      if (len(self%problem) > 0) return
+      call parse_one("gyroscopic", self%gyroscopic_text, all_names, self%g, self%problem)
+      if (len(self%problem) > 0) return
+      if (self%m%uses("t") .or. self%c%uses("t") .or. self%g%uses("t")) then
+         self%problem = trim(merge("mass      ", "damping   ", self%m%uses("t")))// &
+            ": constant in time (only the stiffness may use t)"
+         if (self%g%uses("t") .and. .not. (self%m%uses("t") .or. self%c%uses("t"))) &
+            self%problem = "gyroscopic: constant in time (only the stiffness may use t)"
+         return
+      end if
+      if (self%m%uses(self%alpha_name) .or. self%m%uses(self%beta_name)) then
+         self%problem = "mass: M may not depend on the axes (it is the same at every point)"
+         return
+      end if
+      if (len(self%frequency_text) > 0 .and. len(self%period_text) > 0) then
+         self%problem = "frequency, period: give one of the two (the period is 2 pi/frequency)"
+         return
+      end if
+      if (len(self%frequency_text) == 0 .and. len(self%period_text) == 0) then
+         self%problem = "frequency: the drive's angular frequency Omega is required (or the period T = 2 pi/Omega)"
+         return
+      end if
+      self%from_period = len(self%period_text) > 0
+      drive_name = trim(merge("period   ", "frequency", self%from_period))
+      if (self%from_period) then
+         call parse_expression(self%period_text, self%names, self%drive, error)
+      else
+         call parse_expression(self%frequency_text, self%names, self%drive, error)
+      end if
+      if (allocated(error)) then
+         self%problem = drive_name//": "//error%message
+         return
+      end if
+      where_beta = ""
+      if (self%drive%uses(self%beta_name)) where_beta = where_beta//", the "//drive_name
+      if (self%c%uses(self%beta_name)) where_beta = where_beta//", the damping"
+      if (self%g%uses(self%beta_name)) where_beta = where_beta//", the gyroscopic matrix"
+      if (len(where_beta) > 0) then
+         self%problem = "beta: the beta axis '"//self%beta_name//"' enters "//where_beta(3:)// &
+            "; it may enter the stiffness only (make it the alpha axis)"
+         return
+      end if
+      if (.not. self%k%affine_in(self%beta_name)) then
+         self%problem = "beta: the stiffness is not affine in the beta axis '"//self%beta_name//"' (make it "// &
+            "the alpha axis, whose parameter may enter anywhere)"
+         return
+      end if
+      do j = 1, size(matrix_names)
+         if (.not. (self%k%affine_in(trim(matrix_names(j))) .and. self%m%affine_in(trim(matrix_names(j))) .and. &
+                    self%c%affine_in(trim(matrix_names(j))) .and. self%g%affine_in(trim(matrix_names(j))))) then
+            self%problem = "stiffness, mass, damping, gyroscopic: an expression is not linear in the matrix '"// &
+               trim(matrix_names(j))//"' (a sum of matrices times scalar expressions is expected)"
+            return
+         end if
+      end do
+      drive = self%drive%value(self%values)
+      if (.not. (ieee_is_finite(drive) .and. drive > 0.0_wp)) then
+         self%problem = drive_name//": must be finite and > 0 at the parameters ("//parameter_text(self)//")"
+         return
+      end if
+      period = merge(drive, 2.0_wp*pi/drive, self%from_period)
+      ! M, C, G and K at the given parameters: finite, and K periodic and linear in the matrices
+      self%ready = .true.
+      allocate (self%mass_matrix(self%n, self%n), k_now(self%n, self%n), k_later(self%n, self%n), &
+                c(self%n, self%n), g(self%n, self%n))
+      call matrix_value(self, self%m, 0.0_wp, self%values, self%mass_matrix, self%problem, "mass")
+      if (len(self%problem) == 0) call matrix_value(self, self%c, 0.0_wp, self%values, c, self%problem, "damping")
+      if (len(self%problem) == 0) call matrix_value(self, self%g, 0.0_wp, self%values, g, self%problem, "gyroscopic")
+      do i = 0, 15
+         if (len(self%problem) > 0) exit
+         call matrix_value(self, self%k, period*i/16.0_wp, self%values, k_now, self%problem, "stiffness")
+         if (len(self%problem) == 0) call matrix_value(self, self%k, period*i/16.0_wp + period, self%values, &
+                                                     k_later, self%problem, "stiffness")
+         if (len(self%problem) > 0) exit
+         if (maxval(abs(k_later - k_now)) > 1.0e-9_wp*max(maxval(abs(k_now)), tiny(1.0_wp))) then
+            self%problem = "stiffness: not of period T = "//number(period)//" (2 pi/Omega) at the parameters ("// &
+                           parameter_text(self)//"): K(t + T) differs from K(t) at t = "//number(period*i/16.0_wp)
+         end if
+      end do
+      if (len(self%problem) == 0) call check_linear(self, period)
+      if (len(self%problem) > 0) self%ready = .false.
+
+   end subroutine prepare
+
+   !> Parse one matrix expression over all names; `problem` on an error.
+   pure subroutine parse_one(variable, text, all_names, expression, problem)
+      character(len=*), intent(in) :: variable, text     !! the variable and its text
+      character(len=*), intent(in) :: all_names(:)      !! the matrices, t and the parameters
+      type(expression_t), intent(out) :: expression     !! the parsed expression
+      character(len=:), allocatable, intent(inout) :: problem  !! set on an error
+      type(error_t), allocatable :: failure
+      call parse_expression(text, all_names, expression, failure)
+      if (allocated(failure)) problem = variable//": "//failure%message
+   end subroutine parse_one
+
+   !> K, M, C and G are linear in the matrices jointly: the sum of two matrices' terms is
+   !> the two terms (at 3 times; a product W*S is affine in each name but not linear).
+   pure subroutine check_linear(self, period)
+      class(equations_system_t), intent(inout) :: self  !! the system
+      real(wp), intent(in) :: period                    !! T
+      real(wp) :: nodes(4, size(self%matrix_names)), r(4)
+      type(error_t), allocatable :: failure
+      integer :: i, j, q
+      character(len=10), parameter :: variables(4) = ["stiffness ", "mass      ", "damping   ", "gyroscopic"]
+      do i = 1, size(self%matrix_names)
+         do j = i + 1, size(self%matrix_names)
+            nodes = 0.0_wp
+            nodes(2, i) = 1.0_wp
+            nodes(3, j) = 1.0_wp
+            nodes(4, i) = 1.0_wp
+            nodes(4, j) = 1.0_wp
+            do q = 1, 4
+               select case (q)
+               case (1); call self%k%evaluate(nodes, r, failure, scalars=[0.37_wp*period, self%values])
+               case (2); call self%m%evaluate(nodes, r, failure, scalars=[0.0_wp, self%values])
+               case (3); call self%c%evaluate(nodes, r, failure, scalars=[0.0_wp, self%values])
+               case (4); call self%g%evaluate(nodes, r, failure, scalars=[0.0_wp, self%values])
+               end select
+               if (allocated(failure)) cycle
+               if (abs(r(4) - r(3) - r(2) + r(1)) > 1.0e-12_wp*max(abs(r(4)), abs(r(3)), abs(r(2)), abs(r(1)), &
+                                                                   tiny(1.0_wp))) then
+                  self%problem = trim(variables(q))//": not linear in the matrices "//trim(self%matrix_names(i))// &
+                     " and "//trim(self%matrix_names(j))//" together (a product of two matrices? only sums of "// &
+                     "matrices times scalar expressions are taken)"
+                  return
+               end if
+            end do
+         end do
+      end do
+   end subroutine check_linear
+
+   !> A matrix expression's value at time t and the parameters p: e(0) I + Σ (e(e_k) − e(0)) M_k.
+   pure subroutine matrix_value(self, expression, t, p, a, problem, variable)
+      class(equations_system_t), intent(in) :: self  !! the system
+      type(expression_t), intent(in) :: expression   !! the expression
+      real(wp), intent(in) :: t                      !! time
+      real(wp), intent(in) :: p(:)                   !! the parameters
+      real(wp), intent(out) :: a(:, :)               !! its value (n × n)
+      character(len=:), allocatable, intent(inout) :: problem  !! set when the value is not finite
+      character(len=*), intent(in) :: variable       !! for the message
+      real(wp) :: r(size(self%matrix_names) + 1)
+      type(error_t), allocatable :: failure
+      call coefficients(self, expression, t, p, r, failure)
+      if (allocated(failure)) then
+         problem = variable//": not finite at t = "//number(t)//" ("//parameter_text(self)//"): "//failure%message
+         a = ieee_value(0.0_wp, ieee_quiet_nan)
+         return
+      end if
+      call assemble(self, r, a)
+   end subroutine matrix_value
+
+   !> The identity's and the matrices' coefficients of an expression at (t, p): r(1) = e(0),
+   !> r(1 + k) = e(e_k) − e(0).
+   pure subroutine coefficients(self, expression, t, p, r, error)
+      class(equations_system_t), intent(in) :: self  !! the system
+      type(expression_t), intent(in) :: expression   !! the expression
+      real(wp), intent(in) :: t                      !! time
+      real(wp), intent(in) :: p(:)                   !! the parameters
+      real(wp), intent(out) :: r(:)                  !! the coefficients (count + 1)
+      type(error_t), allocatable, intent(out) :: error  !! not finite
+      real(wp) :: nodes(size(r), size(r) - 1)
+      integer :: k
+      nodes = 0.0_wp
+      do k = 1, size(r) - 1
+         nodes(k + 1, k) = 1.0_wp
+      end do
+      call expression%evaluate(nodes, r, error, scalars=[t, p])
+      if (allocated(error)) return
+      r(2:) = r(2:) - r(1)
+   end subroutine coefficients
+
+   !> r(1) I + Σ r(1 + k) M_k.
+   pure subroutine assemble(self, r, a)
+      class(equations_system_t), intent(in) :: self  !! the system
+      real(wp), intent(in) :: r(:)                   !! the coefficients
+      real(wp), intent(out) :: a(:, :)               !! the matrix
+      integer :: i, k
+      a = 0.0_wp
+      do i = 1, self%n
+         a(i, i) = r(1)
+      end do
+      do k = 1, size(self%matrix_names)
+         if (abs(r(k + 1)) > 0.0_wp) a = a + r(k + 1)*self%matrices(:, :, k)
+      end do
+   end subroutine assemble
+
+   !> The parameters at row α (the β axis at 0), Ω and π/Ω there; `ok` false outside the
+   !> domain (Ω not finite and positive).
+   pure subroutine row_at(self, alpha, p, ratio, ok)
+      class(equations_system_t), intent(in) :: self  !! the system
+      real(wp), intent(in) :: alpha                  !! α
+      real(wp), intent(out) :: p(:)                  !! the parameters
+      real(wp), intent(out) :: ratio                 !! π/Ω
+      logical, intent(out) :: ok                     !! in the domain
+      real(wp) :: drive, omega
+      ok = .false.
+      ratio = 1.0_wp
+      p = 0.0_wp
+      if (.not. self%ready) return
+      p = self%values
+      p(self%i_alpha) = alpha
+      p(self%i_beta) = 0.0_wp
+      drive = self%drive%value(p)
+      if (.not. (ieee_is_finite(drive) .and. drive > 0.0_wp)) return
+      omega = merge(2.0_wp*pi/drive, drive, self%from_period)
+      ratio = pi/omega
+      ok = ieee_is_finite(ratio) .and. ratio > 0.0_wp
+   end subroutine row_at
+
+   !> M at the given parameters.
+   pure subroutine equations_mass(self, a)
+      class(equations_system_t), intent(in) :: self  !! the system
+      real(wp), intent(out) :: a(:, :)               !! M
+      if (allocated(self%mass_matrix)) then
+         a = self%mass_matrix
+      else
+         a = 0.0_wp
+      end if
+   end subroutine equations_mass
+
+   !> (π/Ω) C at the given parameters (`damping_at` gives it per row).
+   pure subroutine equations_damping(self, a)
+      class(equations_system_t), intent(in) :: self  !! the system
+      real(wp), intent(out) :: a(:, :)               !! the damping
+      call self%damping_at(self%values(max(1, self%i_alpha)), a)
+   end subroutine equations_damping
+
+   !> (π/Ω) G at the given parameters.
+   pure subroutine equations_gyroscopic(self, a)
+      class(equations_system_t), intent(in) :: self  !! the system
+      real(wp), intent(out) :: a(:, :)               !! the gyroscopic matrix
+      call self%gyroscopic_at(self%values(max(1, self%i_alpha)), a)
+   end subroutine equations_gyroscopic
+
+   !> (π/Ω) C at row α (NaN outside the domain).
+   pure subroutine equations_damping_at(self, alpha, a)
+      class(equations_system_t), intent(in) :: self  !! the system
+      real(wp), intent(in) :: alpha                  !! α
+      real(wp), intent(out) :: a(:, :)               !! the damping in τ
+      call scaled(self, self%c, alpha, a)
+   end subroutine equations_damping_at
+
+   !> (π/Ω) G at row α.
+   pure subroutine equations_gyroscopic_at(self, alpha, a)
+      class(equations_system_t), intent(in) :: self  !! the system
+      real(wp), intent(in) :: alpha                  !! α
+      real(wp), intent(out) :: a(:, :)               !! the gyroscopic matrix in τ
+      call scaled(self, self%g, alpha, a)
+   end subroutine equations_gyroscopic_at
+
+   !> (π/Ω) times a constant matrix expression at row α.
+   pure subroutine scaled(self, expression, alpha, a)
+      class(equations_system_t), intent(in) :: self  !! the system
+      type(expression_t), intent(in) :: expression   !! C or G
+      real(wp), intent(in) :: alpha                  !! α
+      real(wp), intent(out) :: a(:, :)               !! the matrix
+      real(wp) :: p(size(self%values)), ratio, r(size(self%matrix_names) + 1)
+      type(error_t), allocatable :: failure
+      logical :: ok
+      a = ieee_value(0.0_wp, ieee_quiet_nan)
+      call row_at(self, alpha, p, ratio, ok)
+      if (.not. ok) return
+      call coefficients(self, expression, 0.0_wp, p, r, failure)
+      if (allocated(failure)) return
+      call assemble(self, ratio*r, a)
+   end subroutine scaled
+
+   !> The damping and the gyroscopic matrix change along the α axis (a frequency axis, or
+   !> an α in C or G): the tasks prepare the system per row.
+   pure logical function equations_row_dependent(self)
+      class(equations_system_t), intent(in) :: self  !! the system
+      equations_row_dependent = .true.
+   end function equations_row_dependent
+
+   !> K(τ) = p + β b at row α in τ: (π/Ω)² K(πτ/Ω) at β = 0, and the change per unit β.
+   pure subroutine equations_stiffness(self, alpha, tau, p, b)
+      class(equations_system_t), intent(in) :: self  !! the system
+      real(wp), intent(in) :: alpha                  !! α
+      real(wp), intent(in) :: tau                    !! dimensionless time
+      real(wp), intent(out) :: p(:, :)               !! the part independent of β
+      real(wp), intent(out) :: b(:, :)               !! the factor of β
+      real(wp) :: q(size(self%values)), ratio, r0(size(self%matrix_names) + 1), r1(size(self%matrix_names) + 1), t
+      type(error_t), allocatable :: failure
+      logical :: ok
+      p = ieee_value(0.0_wp, ieee_quiet_nan)
+      b = p
+      call row_at(self, alpha, q, ratio, ok)
+      if (.not. ok) return
+      t = ratio*tau
+      call coefficients(self, self%k, t, q, r0, failure)
+      if (allocated(failure)) return
+      q(self%i_beta) = 1.0_wp
+      call coefficients(self, self%k, t, q, r1, failure)
+      if (allocated(failure)) return
+      call assemble(self, ratio**2*r0, p)
+      call assemble(self, ratio**2*(r1 - r0), b)
+   end subroutine equations_stiffness
+
+   !> K is symmetric when every matrix is.
+   pure logical function equations_symmetric(self)
+      class(equations_system_t), intent(in) :: self  !! the system
+      integer :: k
+      equations_symmetric = .true.
+      if (.not. allocated(self%matrices)) return
+      do k = 1, size(self%matrices, 3)
+         if (maxval(abs(self%matrices(:, :, k) - transpose(self%matrices(:, :, k)))) > 0.0_wp) &
+            equations_symmetric = .false.
+      end do
+   end function equations_symmetric
+
+   !> The α domain in words.
+   pure function equations_alpha_domain(self) result(text)
+      class(equations_system_t), intent(in) :: self  !! the system
+      character(len=:), allocatable :: text
+      text = "the values of "//self%alpha_name//" where the frequency is finite and > 0"
+   end function equations_alpha_domain
+
+   !> α gives a finite, positive Ω.
+   elemental logical function equations_alpha_valid(self, alpha) result(valid)
+      class(equations_system_t), intent(in) :: self  !! the system
+      real(wp), intent(in) :: alpha                  !! α
+      real(wp) :: p(size(self%values)), ratio
+      valid = .false.
+      if (.not. ieee_is_finite(alpha)) return
+      call row_at(self, alpha, p, ratio, valid)
+   end function equations_alpha_valid
+
+   !> The parameter of axis k (1: α, 2: β), as the files name its column.
+   pure function equations_axis_name(self, k) result(name)
+      class(equations_system_t), intent(in) :: self  !! the system
+      integer, intent(in) :: k                       !! 1 or 2
+      character(len=:), allocatable :: name
+      if (k == 1) then
+         name = self%alpha_name
+      else
+         name = self%beta_name
+      end if
+      if (.not. allocated(name)) name = trim(merge("alpha", "beta ", k == 1))
+      if (len(name) == 0) name = trim(merge("alpha", "beta ", k == 1))
+   end function equations_axis_name
+
+   !> Named matrices 'W = [1, 0; 0, 4], S = [...]': n rows of n entries (constant
+   !> expressions of the parameters, evaluated at their given values); `problem` names what
+   !> is wrong.
+   pure subroutine read_matrices(text, n, names, values, matrix_names, matrices, problem)
+      character(len=*), intent(in) :: text          !! `matrices`
+      integer, intent(in) :: n                      !! the dimension
+      character(len=*), intent(in) :: names(:)      !! the parameters
+      real(wp), intent(in) :: values(:)             !! their values
+      character(len=name_length), allocatable, intent(out) :: matrix_names(:)
+      real(wp), allocatable, intent(out) :: matrices(:, :, :)
+      character(len=:), allocatable, intent(inout) :: problem
+      character(len=name_length) :: found(max_matrices)
+      real(wp) :: held(n, n, max_matrices)
+      integer :: count, start, open_at, close_at, equals, row, col, i, entry_start, k
+      character(len=:), allocatable :: name, body, item
+      type(expression_t) :: e
+      type(error_t), allocatable :: failure
+      count = 0
+      start = 1
+      do while (start <= len_trim(text))
+         equals = index(text(start:), "=")
+         open_at = index(text(start:), "[")
+         close_at = index(text(start:), "]")
+         if (equals == 0 .or. open_at == 0 .or. close_at == 0 .or. .not. (equals < open_at .and. open_at < close_at)) then
+            problem = "matrices: expected name = [row; row; ...] at column "//integer_text(start)
+            return
+         end if
+         name = trim(adjustl(text(start:start + equals - 2)))
+         if (len(name) > 0) then
+            if (name(1:1) == ",") name = trim(adjustl(name(2:)))
+         end if
+         if (len(name) == 0 .or. len(name) > name_length .or. verify(name, &
+             "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") /= 0 .or. &
+             verify(name(1:1), "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ") /= 0) then
+            problem = "matrices: '"//name//"' at column "//integer_text(start)//" is no name (a letter, then "// &
+                      "letters, digits and underscores)"
+            return
+         end if
+         if (position(names, name) > 0 .or. name == "t") then
+            problem = "matrices: '"//name//"' is the name of a parameter (or of the time t)"
+            return
+         end if
+         if (count > 0) then
+            if (position(found(:count), name) > 0) then
+               problem = "matrices: '"//name//"' is given twice"
+               return
+            end if
+         end if
+         if (count == max_matrices) then
+            problem = "matrices: at most "//integer_text(max_matrices)//" matrices"
+            return
+         end if
+         count = count + 1
+         found(count) = name
+         body = text(start + open_at:start + close_at - 2)
+         ! rows separated by ';', entries by ',' or blanks
+         row = 1
+         col = 0
+         entry_start = 1
+         body = body//";"
+         do i = 1, len(body)
+            if (body(i:i) /= "," .and. body(i:i) /= ";") cycle
+            item = trim(adjustl(body(entry_start:i - 1)))
+            entry_start = i + 1
+            if (len(item) > 0) then
+               col = col + 1
+               if (row > n .or. col > n) then
+                  problem = "matrices: "//name//" has more than "//integer_text(n)//" rows or columns (n = "// &
+                            integer_text(n)//")"
+                  return
+               end if
+               call parse_expression(item, names, e, failure)
+               if (.not. allocated(failure)) held(row, col, count) = e%value(values)
+               if (allocated(failure)) then
+                  problem = "matrices: "//name//", row "//integer_text(row)//": "//failure%message
+                  return
+               end if
+               if (.not. ieee_is_finite(held(row, col, count))) then
+                  problem = "matrices: "//name//", row "//integer_text(row)//", column "//integer_text(col)// &
+                            ": not a finite number"
+                  return
+               end if
+            end if
+            if (body(i:i) == ";") then
+               if (col /= n) then
+                  problem = "matrices: "//name//", row "//integer_text(row)//" has "//integer_text(col)// &
+                            " entries, n = "//integer_text(n)//" are needed"
+                  return
+               end if
+               row = row + 1
+               col = 0
+            end if
+         end do
+         if (row - 1 /= n) then
+            problem = "matrices: "//name//" has "//integer_text(row - 1)//" rows, n = "//integer_text(n)//" are needed"
+            return
+         end if
+         start = start + close_at
+      end do
+      matrix_names = found(:count)
+      allocate (matrices(n, n, count))
+      do k = 1, count
+         matrices(:, :, k) = held(:, :, k)
+      end do
+   end subroutine read_matrices
+
+   !> The position of `name` in `names` (0: none).
+   pure integer function position(names, name)
+      character(len=*), intent(in) :: names(:), name
+      do position = 1, size(names)
+         if (trim(names(position)) == name) return
+      end do
+      position = 0
+   end function position
+
+   !> Names as a list for messages ("none" for none).
+   pure function list_text(names) result(text)
+      character(len=*), intent(in) :: names(:)
+      character(len=:), allocatable :: text
+      integer :: j
+      text = ""
+      do j = 1, size(names)
+         if (j > 1) text = text//", "
+         text = text//trim(names(j))
+      end do
+      if (size(names) == 0) text = "none"
+   end function list_text
+
+   !> A number for messages: 12 significant digits.
+   pure function number(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: text
+      text = trim(adjustl(format_es(x, 12)))
+   end function number
+
+   !> The parameters as `name = value, ...`.
+   pure function parameter_text(self) result(text)
+      class(equations_system_t), intent(in) :: self
+      character(len=:), allocatable :: text
+      integer :: j
+      text = ""
+      do j = 1, size(self%names)
+         if (j > 1) text = text//", "
+         text = text//trim(self%names(j))//" = "//number(self%values(j))
+      end do
+   end function parameter_text
+end module hillstab_hill_system_equation
