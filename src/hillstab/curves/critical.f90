@@ -1,13 +1,18 @@
 !> The critical drives of a Hill equation x'' + ε x' + Q(α, β, τ) x = 0 at a fixed β: every
 !> α of a range where the stability changes, each with an error bound and confirmed on both
 !> sides. The answer to "the least drive that destabilises (or stabilises) it here", and
-!> every other change in the range, not only the first.
+!> every other change in the range, not only the first. `critical_drives_along` searches
+!> either axis at a fixed value of the other: for an equation in physical time (model
+!> `equation`), whose β axis is a drive amplitude and α a frequency, the critical amplitudes
+!> at one frequency. The damping of each point is the model's (`point_damping`: an
+!> equation's changes with its α axis), and so is the threshold.
 !>
 !> The distance from the threshold: with the trace S (of χ = e^{ετ/2} x when damped) and
 !> T = 2 cosh(εP/2) the threshold of |S|, the point is unstable where g₊ = S − T or
-!> g₋ = −S − T is positive (at most one is). Each of g± is a smooth function of α, and the
-!> stability changes exactly where one of them changes sign. The range is sampled at
-!> `n_samples` values of α (S by the method, on OpenMP threads); a sign change of g₊ or g₋
+!> g₋ = −S − T is positive (at most one is). Each of g± is a smooth function of α (of the
+!> coordinate searched), and the stability changes exactly where one of them changes sign.
+!> The range is sampled at `n_samples` values of α (S by the method, on OpenMP threads); a
+!> sign change of g₊ or g₋
 !> between neighbours is refined by the Illinois variant of regula falsi (bisection when it
 !> stalls) until the bracket is within tolerance·max(1, |α|) or |g| within S's own error; a
 !> neighbour pair where g₊ or g₋ comes within 5 % of T of zero without changing sign is
@@ -34,15 +39,21 @@ module hillstab_curves_critical
    use hillstab_integrate_monodromy, only: method_t, monodromy_trace
    implicit none
    private
-   public :: critical_drive_t, critical_drives, max_critical_samples
+   public :: critical_drive_t, critical_drives, critical_drives_along, max_critical_samples
+   public :: along_alpha, along_beta
+
+   !> `critical_drives_along`: α varies, β is fixed.
+   integer, parameter :: along_alpha = 1
+   !> `critical_drives_along`: β varies, α is fixed.
+   integer, parameter :: along_beta = 2
 
    !> Most samples of one search.
    integer, parameter :: max_critical_samples = 1000000
 
-   !> One change of stability at the fixed β.
+   !> One change of stability at the fixed β (or, along β, at the fixed α).
    type :: critical_drive_t
-      real(wp) :: alpha = 0.0_wp        !! α where the stability changes
-      real(wp) :: alpha_error = 0.0_wp  !! error bound of α
+      real(wp) :: alpha = 0.0_wp        !! α where the stability changes (β when searched along β)
+      real(wp) :: alpha_error = 0.0_wp  !! error bound of α (of β)
       !> +1: S reaches +T there (a 2P-periodic solution at ε = 0), −1: S reaches −T
       integer :: side = 0
       !> +1: stable below α and unstable above it; −1: unstable below, stable above
@@ -51,10 +62,18 @@ module hillstab_curves_critical
       integer :: status = status_ok
    end type critical_drive_t
 
+   !> The line searched: which coordinate varies, the other's value and the scene's damping.
+   type :: line_t
+      integer :: axis = along_alpha   !! along_alpha or along_beta
+      real(wp) :: fixed = 0.0_wp      !! the coordinate held fixed
+      real(wp) :: epsilon = 0.0_wp    !! the damping given (a model's own is added by `point_damping`)
+   end type line_t
+
    !> What a sample knows: the distances g₊, g₋ and the error of S.
    type :: sample_t
       real(wp) :: g(2) = 0.0_wp     !! S − T and −S − T (±huge where S overflows)
       real(wp) :: bound = 0.0_wp    !! the error of S (absolute)
+      real(wp) :: threshold = 2.0_wp  !! T = 2 cosh(εP/2) at the point
    end type sample_t
 
    !> A pair of samples is searched for a narrow region when g± comes this near zero (a
@@ -79,30 +98,52 @@ contains
       type(critical_drive_t), allocatable, intent(out) :: drives(:)  !! the changes, ascending in α
       !> err_invalid_parameter naming the argument; a sample where S cannot be computed
       type(error_t), allocatable, intent(out) :: error
+      call critical_drives_along(model, along_alpha, beta, alpha_min, alpha_max, epsilon, method, n_samples, &
+                                 drives, error)
+   end subroutine critical_drives
+
+   !> Every value in [low, high] of the coordinate `axis` (along_alpha or along_beta) where
+   !> the stability changes at the other coordinate's value `fixed`, ascending, in
+   !> `critical_drive_t%alpha` (which holds β when searched along β). The damping of a point
+   !> is the model's `point_damping` at its α (ε itself unless the model carries its own).
+   subroutine critical_drives_along(model, axis, fixed, low, high, epsilon, method, n_samples, drives, error)
+      class(hill_model_t), intent(in) :: model  !! the model of Q
+      integer, intent(in) :: axis               !! along_alpha or along_beta
+      real(wp), intent(in) :: fixed             !! the other coordinate
+      real(wp), intent(in) :: low               !! the range searched, from
+      real(wp), intent(in) :: high              !! to (> low)
+      real(wp), intent(in) :: epsilon           !! damping ε ≥ 0 (0 for a model with its own)
+      type(method_t), intent(in) :: method      !! the method of S and its tolerance
+      integer, intent(in) :: n_samples          !! samples of the range, ≥ 2
+      type(critical_drive_t), allocatable, intent(out) :: drives(:)  !! the changes, ascending
+      !> err_invalid_parameter naming the argument; a sample where S cannot be computed
+      type(error_t), allocatable, intent(out) :: error
+      type(line_t) :: line
       real(wp), allocatable :: alphas(:)
       type(sample_t), allocatable :: samples(:)
       character(len=300), allocatable :: failures(:)
       type(error_t), allocatable :: cause
-      real(wp) :: threshold, peak
+      real(wp) :: peak
       type(sample_t) :: at_peak
       integer :: j, k
       allocate (drives(0))
-      call check_range(model, beta, alpha_min, alpha_max, epsilon, method, n_samples, error)
+      line = line_t(axis, fixed, epsilon)
+      call check_range(model, line, low, high, method, n_samples, error)
       if (allocated(error)) return
-      threshold = 2.0_wp*cosh(min(period_damping(epsilon, model%period()), 700.0_wp))
       allocate (alphas(n_samples), samples(n_samples), failures(n_samples))
-      alphas = [(alpha_min + (alpha_max - alpha_min)*real(j - 1, wp)/real(n_samples - 1, wp), j=1, n_samples)]
-      alphas(n_samples) = alpha_max
+      alphas = [(low + (high - low)*real(j - 1, wp)/real(n_samples - 1, wp), j=1, n_samples)]
+      alphas(n_samples) = high
       failures = ""
       !$omp parallel do schedule(dynamic) default(shared) private(j, cause)
       do j = 1, n_samples
-         call sample(model, alphas(j), beta, epsilon, method, threshold, samples(j), cause)
+         call sample(model, line, alphas(j), method, samples(j), cause)
          if (allocated(cause)) failures(j) = cause%message
       end do
       !$omp end parallel do
       do j = 1, n_samples
          if (len_trim(failures(j)) > 0) then
-            call set_error(error, err_invalid_parameter, "alpha = "//real_text(alphas(j))//": "//trim(failures(j)))
+            call set_error(error, err_invalid_parameter, trim(merge("alpha", "beta ", axis == along_alpha))// &
+               " = "//real_text(alphas(j))//": "//trim(failures(j)))
             return
          end if
       end do
@@ -110,9 +151,10 @@ contains
          do k = 1, 2
             if (changes(samples(j)%g(k), samples(j + 1)%g(k))) then
                call add_root(alphas(j), alphas(j + 1), samples(j), samples(j + 1), k)
-            else if (min(abs(samples(j)%g(k)), abs(samples(j + 1)%g(k))) < near_fraction*threshold) then
+            else if (min(abs(samples(j)%g(k)), abs(samples(j + 1)%g(k))) < &
+                     near_fraction*min(samples(j)%threshold, samples(j + 1)%threshold)) then
                ! g_k keeps its sign at both samples but comes near zero: a narrow region between them?
-               call extremum(model, beta, epsilon, method, threshold, k, alphas(j), alphas(j + 1), &
+               call extremum(model, line, method, k, alphas(j), alphas(j + 1), &
                              samples(j)%g(k) < 0.0_wp, peak, at_peak, cause)
                if (allocated(cause)) then
                   call move_alloc(cause, error)
@@ -133,34 +175,61 @@ contains
          type(sample_t), intent(in) :: sa, sb
          integer, intent(in) :: k
          type(critical_drive_t) :: drive
-         call refine(model, beta, epsilon, method, threshold, k, a, b, sa, sb, drive, error)
+         call refine(model, line, method, k, a, b, sa, sb, drive, error)
          if (allocated(error)) return
          drives = [drives, drive]
       end subroutine add_root
-   end subroutine critical_drives
+   end subroutine critical_drives_along
 
-   !> The arguments of `critical_drives`, checked (err_invalid_parameter naming the one wrong).
-   subroutine check_range(model, beta, alpha_min, alpha_max, epsilon, method, n_samples, error)
+   !> The arguments of `critical_drives_along`, checked (err_invalid_parameter naming the one
+   !> wrong).
+   subroutine check_range(model, line, low, high, method, n_samples, error)
       class(hill_model_t), intent(in) :: model
-      real(wp), intent(in) :: beta, alpha_min, alpha_max, epsilon
+      type(line_t), intent(in) :: line
+      real(wp), intent(in) :: low, high
       type(method_t), intent(in) :: method
       integer, intent(in) :: n_samples
       type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: name
+      name = trim(merge("alpha", "beta ", line%axis == along_alpha))
+      if (line%axis /= along_alpha .and. line%axis /= along_beta) then
+         call set_error(error, err_invalid_parameter, "axis: 1 (along alpha) or 2 (along beta), got "// &
+            integer_text(line%axis))
+         return
+      end if
       if (n_samples < 2 .or. n_samples > max_critical_samples) then
          call set_error(error, err_invalid_parameter, "n_samples: must be 2 to "//integer_text(max_critical_samples)// &
             ", got "//integer_text(n_samples))
          return
       end if
-      if (.not. (alpha_max > alpha_min)) then
-         call set_error(error, err_invalid_parameter, "alpha_min, alpha_max: the range is empty or not finite "// &
-            "(alpha_max must exceed alpha_min)")
+      if (.not. (high > low)) then
+         call set_error(error, err_invalid_parameter, name//"_min, "//name//"_max: the range is empty or not "// &
+            "finite ("//name//"_max must exceed "//name//"_min)")
          return
       end if
-      call check_point(model, hill_point_t(alpha_min, beta, epsilon), error)
-      if (.not. allocated(error)) call check_point(model, hill_point_t(alpha_max, beta, epsilon), error)
+      if (.not. model%takes_scene_damping() .and. line%epsilon > 0.0_wp) then
+         call set_error(error, err_invalid_parameter, "epsilon: the "//model%name()//" model carries its own "// &
+            "damping: epsilon must be 0")
+         return
+      end if
+      call check_point(model, point_of(model, line, low), error)
+      if (.not. allocated(error)) call check_point(model, point_of(model, line, high), error)
       if (.not. allocated(error) .and. .not. (method%tolerance > 0.0_wp .and. method%tolerance < 1.0_wp)) &
          call set_error(error, err_invalid_parameter, "tolerance: must lie in (0, 1)")
    end subroutine check_range
+
+   !> The point at coordinate x of the line, its damping the model's there.
+   elemental function point_of(model, line, x) result(point)
+      class(hill_model_t), intent(in) :: model
+      type(line_t), intent(in) :: line
+      real(wp), intent(in) :: x
+      type(hill_point_t) :: point
+      if (line%axis == along_alpha) then
+         point = hill_point_t(x, line%fixed, model%point_damping(x, line%epsilon))
+      else
+         point = hill_point_t(line%fixed, x, model%point_damping(line%fixed, line%epsilon))
+      end if
+   end function point_of
 
    !> Whether two values of g have strictly opposite signs.
    pure logical function changes(a, b)
@@ -168,16 +237,20 @@ contains
       changes = (a > 0.0_wp .and. b < 0.0_wp) .or. (a < 0.0_wp .and. b > 0.0_wp)
    end function changes
 
-   !> S at (α, β, ε) as the distances g± and its absolute error (a result limited by
-   !> round-off is taken, its estimate being the bound).
-   subroutine sample(model, alpha, beta, epsilon, method, threshold, s, error)
+   !> S at the line's point x as the distances g± from the point's threshold and its
+   !> absolute error (a result limited by round-off is taken, its estimate being the bound).
+   subroutine sample(model, line, x, method, s, error)
       class(hill_model_t), intent(in) :: model
-      real(wp), intent(in) :: alpha, beta, epsilon, threshold
+      type(line_t), intent(in) :: line
+      real(wp), intent(in) :: x
       type(method_t), intent(in) :: method
       type(sample_t), intent(out) :: s
       type(error_t), allocatable, intent(out) :: error
       type(trace_t) :: tr
-      call monodromy_trace(model, hill_point_t(alpha, beta, epsilon), method, tr, error)
+      type(hill_point_t) :: point
+      point = point_of(model, line, x)
+      s%threshold = 2.0_wp*cosh(min(period_damping(point%epsilon, model%period()), 700.0_wp))
+      call monodromy_trace(model, point, method, tr, error)
       if (allocated(error)) then
          if (error%code /= err_accuracy) return
          deallocate (error)
@@ -187,15 +260,16 @@ contains
          s%bound = 0.0_wp
          return
       end if
-      s%g = [tr%value - threshold, -tr%value - threshold]
+      s%g = [tr%value - s%threshold, -tr%value - s%threshold]
       s%bound = max(tr%error_estimate, method%tolerance)*max(1.0_wp, abs(tr%value))
    end subroutine sample
 
    !> The root of g_k in [a, b] (g_k of opposite signs at the ends) by the Illinois variant
    !> of regula falsi, then its bound and its confirmation.
-   subroutine refine(model, beta, epsilon, method, threshold, k, a0, b0, sa, sb, drive, error)
+   subroutine refine(model, line, method, k, a0, b0, sa, sb, drive, error)
       class(hill_model_t), intent(in) :: model
-      real(wp), intent(in) :: beta, epsilon, threshold, a0, b0
+      type(line_t), intent(in) :: line
+      real(wp), intent(in) :: a0, b0
       type(method_t), intent(in) :: method
       integer, intent(in) :: k
       type(sample_t), intent(in) :: sa, sb
@@ -223,7 +297,7 @@ contains
             c = (fa*b - fb*a)/(fa - fb)
             if (.not. (c > a + 0.01_wp*width .and. c < b - 0.01_wp*width)) c = 0.5_wp*(a + b)
          end if
-         call sample(model, c, beta, epsilon, method, threshold, sc, error)
+         call sample(model, line, c, method, sc, error)
          if (allocated(error)) return
          fc = sc%g(k)
          bound = sc%bound
@@ -257,9 +331,9 @@ contains
       ! g_k rises through zero (unstable above) or falls
       drive%direction = merge(1, -1, sa%g(k) < 0.0_wp)
       ! confirmed: the verdicts just outside the bound differ, beyond S's error
-      call sample(model, max(a0, c - 2.0_wp*drive%alpha_error), beta, epsilon, method, threshold, below, error)
+      call sample(model, line, max(a0, c - 2.0_wp*drive%alpha_error), method, below, error)
       if (allocated(error)) return
-      call sample(model, min(b0, c + 2.0_wp*drive%alpha_error), beta, epsilon, method, threshold, above, error)
+      call sample(model, line, min(b0, c + 2.0_wp*drive%alpha_error), method, above, error)
       if (allocated(error)) return
       drive%status = status_failed
       if (decided(below, .not. (drive%direction == 1)) .and. decided(above, drive%direction == 1)) &
@@ -280,9 +354,10 @@ contains
    !> Golden-section search of [a, b] for the largest g_k (`rising`: g_k negative at the
    !> ends, a peak above zero wanted) or the smallest (a dip below zero); returns where, and
    !> the sample there. Stops early once the extremum crosses zero.
-   subroutine extremum(model, beta, epsilon, method, threshold, k, a0, b0, rising, peak, at_peak, error)
+   subroutine extremum(model, line, method, k, a0, b0, rising, peak, at_peak, error)
       class(hill_model_t), intent(in) :: model
-      real(wp), intent(in) :: beta, epsilon, threshold, a0, b0
+      type(line_t), intent(in) :: line
+      real(wp), intent(in) :: a0, b0
       type(method_t), intent(in) :: method
       integer, intent(in) :: k
       logical, intent(in) :: rising
@@ -298,9 +373,9 @@ contains
       b = b0
       x1 = b - ratio*(b - a)
       x2 = a + ratio*(b - a)
-      call sample(model, x1, beta, epsilon, method, threshold, s1, error)
+      call sample(model, line, x1, method, s1, error)
       if (allocated(error)) return
-      call sample(model, x2, beta, epsilon, method, threshold, s2, error)
+      call sample(model, line, x2, method, s2, error)
       if (allocated(error)) return
       f1 = sense*s1%g(k)
       f2 = sense*s2%g(k)
@@ -313,7 +388,7 @@ contains
             f2 = f1
             s2 = s1
             x1 = b - ratio*(b - a)
-            call sample(model, x1, beta, epsilon, method, threshold, s1, error)
+            call sample(model, line, x1, method, s1, error)
             if (allocated(error)) return
             f1 = sense*s1%g(k)
          else
@@ -322,7 +397,7 @@ contains
             f1 = f2
             s1 = s2
             x2 = a + ratio*(b - a)
-            call sample(model, x2, beta, epsilon, method, threshold, s2, error)
+            call sample(model, line, x2, method, s2, error)
             if (allocated(error)) return
             f2 = sense*s2%g(k)
          end if

@@ -34,7 +34,8 @@ module hillstab_hill_model
    public :: hill_form_none, hill_form_pencil
    public :: model_variable_t, model_variable_real, model_variable_list, model_variable_file, model_variable_text
    public :: harmonics_none, harmonics_infinite
-   public :: hill_coefficient, hill_coefficient_before, segment_average, model_split, damping_shift, model_description
+   public :: hill_coefficient, hill_coefficient_before, segment_average, model_split, model_split_row, damping_shift, &
+      model_description
    public :: window_piece_end, model_equation_text
    public :: coefficient_range, model_coefficient_range, widen_by_offset, offset_bound
    public :: check_point, check_alpha, check_batch, max_magnitude, auto_table_steps
@@ -88,6 +89,8 @@ module hillstab_hill_model
       procedure(segment_mean_interface), deferred :: segment_mean
       !> Q = c₀ + c₁ w(τ) (+ v(τ), `has_offset`) with w and v independent of β, without damping
       procedure(split_interface), deferred :: split
+      !> `split` at every β of a row at once (what the row shares is computed once)
+      procedure :: split_row => split_each
       !> w(τ) at many τ
       procedure(shapes_interface), deferred :: shapes
       !> the least and largest value of w over the period
@@ -223,6 +226,19 @@ contains
       class(hill_model_t), intent(in) :: self  !! the model
       scene_damping_taken = .true.
    end function scene_damping_taken
+
+   !> `split` at every β of a row, one after the other (a model whose split shares work along
+   !> a row does it once).
+   pure subroutine split_each(self, alpha, betas, c0s, c1s)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha            !! α of the row
+      real(wp), intent(in) :: betas(:)         !! its β
+      real(wp), intent(out) :: c0s(:), c1s(:)  !! the split at each β
+      integer :: j
+      do j = 1, size(betas)
+         call self%split(alpha, betas(j), c0s(j), c1s(j))
+      end do
+   end subroutine split_each
 
    !> The model is the elastic pendulum itself: it has the physical domain (a `physical`
    !> column), the nonlinear simulation and α = aπ²/ρ. False unless the model says so.
@@ -521,6 +537,17 @@ contains
       call model%split(alpha, beta, c0, c1)
       c0 = c0 + damping_shift(epsilon)
    end subroutine model_split
+
+   !> `model_split` at every β of a row: `split_row`, the damping shift added.
+   pure subroutine model_split_row(model, alpha, betas, epsilon, c0s, c1s)
+      class(hill_model_t), intent(in) :: model  !! the model
+      real(wp), intent(in) :: alpha             !! α of the row
+      real(wp), intent(in) :: betas(:)          !! its β
+      real(wp), intent(in) :: epsilon           !! its damping
+      real(wp), intent(out) :: c0s(:), c1s(:)   !! the split at each β
+      call model%split_row(alpha, betas, c0s, c1s)
+      c0s = c0s + damping_shift(epsilon)
+   end subroutine model_split_row
 
    !> The line an output header gives the model, e.g. "model: mathieu, q(tau) = beta -
    !> alpha cos(pi tau), eq. (A1), alpha playing nu".

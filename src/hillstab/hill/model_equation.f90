@@ -109,6 +109,7 @@ module hillstab_hill_model_equation
       procedure :: coefficient => equation_coefficient
       procedure :: segment_mean => equation_segment_mean
       procedure :: split => equation_split
+      procedure :: split_row => equation_split_row
       procedure :: shapes => equation_shapes
       procedure :: shape_range => equation_shape_range
       procedure :: has_offset => equation_has_offset
@@ -612,6 +613,26 @@ contains
          c1 = ieee_nan()
       end if
    end subroutine equation_split
+
+   !> `equation_split` at every β of row α, the row's constants computed once.
+   pure subroutine equation_split_row(self, alpha, betas, c0s, c1s)
+      class(equation_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha                !! α of the row
+      real(wp), intent(in) :: betas(:)             !! its β
+      real(wp), intent(out) :: c0s(:), c1s(:)      !! the split at each β
+      type(row_t) :: row
+      row = row_at(self, alpha)
+      if (.not. row%valid) then
+         c0s = ieee_nan()
+         c1s = ieee_nan()
+      else if (row%constant_b) then
+         c0s = row%mean + betas*row%sb
+         c1s = row%scale
+      else
+         c0s = row%mean
+         c1s = betas*row%scale
+      end if
+   end subroutine equation_split_row
 
    !> w at the times τ of row α.
    pure subroutine equation_shapes(self, alpha, tau, w)

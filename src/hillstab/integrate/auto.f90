@@ -34,7 +34,8 @@ module hillstab_integrate_auto
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_integration, err_accuracy
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_core_stats, only: work_stats_t
-   use hillstab_hill_model, only: hill_model_t, hill_point_t, check_batch, model_split, auto_table_steps
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, check_batch, model_split, model_split_row, &
+      auto_table_steps
    use hillstab_hill_coefficient, only: split_phases
    use hillstab_hill_transfer, only: transfer_functions, trace_t, trace_from_scaled
    use hillstab_integrate_magnus, only: trace_magnus
@@ -90,7 +91,8 @@ contains
       type(auto_plan_t), intent(out) :: plan  !! the meshes, to pass to trace_auto_batch
       !> the meshes of the screening pass (`trace_auto_screen`) instead
       logical, intent(in), optional :: screen
-      real(wp) :: c0, c1, base
+      real(wp) :: base
+      real(wp), allocatable :: c0s(:), c1s(:)
       integer :: j, n, index
       logical :: screening
       plan%prepared = .true.
@@ -107,9 +109,10 @@ contains
       else
          base = auto_base_steps(model, alpha, tolerance)
       end if
+      allocate (c0s(size(betas)), c1s(size(betas)))
+      call model_split_row(model, alpha, betas, epsilon, c0s, c1s)
       do j = 1, size(betas)
-         call model_split(model, alpha, betas(j), epsilon, c0, c1)
-         n = steps_for_point(base, model, c0, c1)
+         n = steps_for_point(base, model, c0s(j), c1s(j))
          if (screening) n = max(screen_min_steps, n)
          if (plan%cache%n_meshes + 3 > size(plan%cache%meshes)) exit
          call get_mesh(plan%cache, model, alpha, n, index)
@@ -255,9 +258,7 @@ contains
       safety = richardson_safety*model%auto_safety()
       m = size(betas)
       allocate (c0s(m), c1s(m), ns(m), phases(m))
-      do j = 1, m
-         call model_split(model, alpha, betas(j), epsilon, c0s(j), c1s(j))
-      end do
+      call model_split_row(model, alpha, betas, epsilon, c0s, c1s)
       if (alpha == 0.0_wp) then
          do j = 1, m
             ! w is constant at α = 0 (its value then at any τ)
@@ -453,9 +454,7 @@ contains
       stats = work_stats_t()
       call check_batch(model, alpha, epsilon, betas, error)
       if (allocated(error)) return
-      do j = 1, size(betas)
-         call model_split(model, alpha, betas(j), epsilon, c0s(j), c1s(j))
-      end do
+      call model_split_row(model, alpha, betas, epsilon, c0s, c1s)
       if (alpha == 0.0_wp) then
          ! one exact transfer matrix (as `trace_auto_batch`)
          do j = 1, size(betas)

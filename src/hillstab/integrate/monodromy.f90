@@ -24,6 +24,7 @@ module hillstab_integrate_monodromy
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
    use hillstab_core_text, only: name_position, alternatives_text, integer_text
    use hillstab_hill_model, only: hill_model_t, hill_point_t, check_point, check_batch, coefficient_range, model_split, &
+      model_split_row, &
       widen_by_offset
    use hillstab_hill_coefficient, only: sampling_endpoint, sampling_count
    use hillstab_hill_floquet, only: bounds_verdict, bounds_stable, bounds_unstable, near_threshold, period_damping
@@ -159,15 +160,15 @@ contains
       integer, intent(in) :: need              !! need_verdict or need_growth
       type(trace_t), intent(inout) :: traces(:)  !! the settled points' stand-ins
       logical, intent(out) :: settled(:)       !! which points are settled
-      real(wp) :: q_min, q_max, w_min, w_max, v_min, v_max, c0, c1, scale
+      real(wp) :: q_min, q_max, w_min, w_max, v_min, v_max, scale, c0s(size(betas)), c1s(size(betas))
       integer :: j, verdict
+      call model_split_row(model, row%alpha, betas, row%epsilon, c0s, c1s)
       call model%shape_range(row%alpha, w_min, w_max)
       call model%offset_range(row%alpha, v_min, v_max)
       ! the criterion is stated for the period 2: over a period P, in s = 2τ/P, q is (P/2)² q
       scale = (0.5_wp*model%period())**2
       do j = 1, size(betas)
-         call model_split(model, row%alpha, betas(j), row%epsilon, c0, c1)
-         call coefficient_range(c0, c1, w_min, w_max, q_min, q_max)
+         call coefficient_range(c0s(j), c1s(j), w_min, w_max, q_min, q_max)
          if (model%has_offset()) call widen_by_offset(v_min, v_max, q_min, q_max)
          verdict = bounds_verdict(scale*q_min, scale*q_max)
          settled(j) = verdict == bounds_stable .or. (verdict == bounds_unstable .and. need == need_verdict .and. &

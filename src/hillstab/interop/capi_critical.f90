@@ -16,12 +16,12 @@ module hillstab_interop_capi_critical
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
    use hillstab_integrate_monodromy, only: method_t, method_takes_scalars, method_names_text
    use hillstab_core_text, only: integer_text
-   use hillstab_curves_critical, only: critical_drive_t, critical_drives
+   use hillstab_curves_critical, only: critical_drive_t, critical_drives_along, along_alpha, along_beta
    use hillstab_interop_outcome, only: record_outcome
    use hillstab_interop_capi_models, only: model_handle_t, handle_model
    implicit none
    private
-   public :: hillstab_c_critical_drives
+   public :: hillstab_c_critical_drives, hillstab_c_critical_drives_along
 
 contains
 
@@ -52,6 +52,52 @@ contains
       integer(c_int), intent(inout) :: status(*)  !! 0 confirmed, 2 not
       type(c_ptr), value, intent(in) :: count  !! receives the number of changes (a `size_t *`)
       integer(c_int) :: info
+      info = critical_entry(model, int(along_alpha, c_int), beta, alpha_min, alpha_max, epsilon, method, tolerance, &
+                            n_samples, capacity, alpha, alpha_error, side, direction, status, count)
+   end function hillstab_c_critical_drives
+
+   !> `int hillstab_critical_drives_along(const hillstab_model *model, int axis, double
+   !> fixed, double low, double high, double epsilon, int method, double tolerance, int
+   !> n_samples, size_t capacity, double *value, double *value_error, int *side, int
+   !> *direction, int *status, size_t *count)`: `hillstab_critical_drives` along either axis
+   !> (`critical_drives_along`): axis 1 searches α in [low, high] at β = fixed, axis 2 β at
+   !> α = fixed (an equation's drive amplitude at one frequency); the damping of each point is
+   !> the model's (`epsilon` must be 0 for a model with its own).
+   function hillstab_c_critical_drives_along(model, axis, fixed, low, high, epsilon, method, tolerance, n_samples, &
+                                             capacity, value, value_error, side, direction, status, count) &
+      result(info) bind(C, name="hillstab_critical_drives_along")
+      type(c_ptr), value, intent(in) :: model  !! the model handle
+      integer(c_int), value, intent(in) :: axis  !! 1: along α, 2: along β
+      real(c_double), value, intent(in) :: fixed  !! the other coordinate
+      real(c_double), value, intent(in) :: low, high  !! the range searched
+      real(c_double), value, intent(in) :: epsilon  !! damping ε ≥ 0
+      integer(c_int), value, intent(in) :: method  !! HILLSTAB_METHOD_*
+      real(c_double), value, intent(in) :: tolerance  !! target of S and of the value
+      integer(c_int), value, intent(in) :: n_samples  !! samples of the range (≥ 2)
+      integer(c_size_t), value, intent(in) :: capacity  !! entries the arrays hold
+      real(c_double), intent(inout) :: value(*)  !! the coordinate of each change
+      real(c_double), intent(inout) :: value_error(*)  !! the bound of its error
+      integer(c_int), intent(inout) :: side(*)  !! +1 or −1
+      integer(c_int), intent(inout) :: direction(*)  !! +1 or −1
+      integer(c_int), intent(inout) :: status(*)  !! 0 confirmed, 2 not
+      type(c_ptr), value, intent(in) :: count  !! receives the number of changes (a `size_t *`)
+      integer(c_int) :: info
+      info = critical_entry(model, axis, fixed, low, high, epsilon, method, tolerance, n_samples, capacity, value, &
+                            value_error, side, direction, status, count)
+   end function hillstab_c_critical_drives_along
+
+   !> Both entry points: the search along `axis`, the arrays filled, the outcome recorded.
+   function critical_entry(model, axis, fixed, low, high, epsilon, method, tolerance, n_samples, capacity, alpha, &
+                           alpha_error, side, direction, status, count) result(info)
+      type(c_ptr), intent(in) :: model
+      integer(c_int), intent(in) :: axis
+      real(c_double), intent(in) :: fixed, low, high, epsilon, tolerance
+      integer(c_int), intent(in) :: method, n_samples
+      integer(c_size_t), intent(in) :: capacity
+      real(c_double), intent(inout) :: alpha(*), alpha_error(*)
+      integer(c_int), intent(inout) :: side(*), direction(*), status(*)
+      type(c_ptr), intent(in) :: count
+      integer(c_int) :: info
       type(model_handle_t), pointer :: handle
       type(error_t), allocatable :: error
       type(critical_drive_t), allocatable :: drives(:)
@@ -65,8 +111,8 @@ contains
             " (HILLSTAB_METHOD_*: "//method_names_text()//")")
       if (.not. allocated(error) .and. capacity > int(huge(1), c_size_t)) &
          call set_error(error, err_invalid_parameter, "capacity: more than the arrays can index")
-      if (.not. allocated(error)) call critical_drives(handle%model, real(beta, wp), real(alpha_min, wp), &
-         real(alpha_max, wp), real(epsilon, wp), method_t(kind=int(method), tolerance=real(tolerance, wp)), &
+      if (.not. allocated(error)) call critical_drives_along(handle%model, int(axis), real(fixed, wp), &
+         real(low, wp), real(high, wp), real(epsilon, wp), method_t(kind=int(method), tolerance=real(tolerance, wp)), &
          int(n_samples), drives, error)
       if (.not. allocated(error)) then
          stored = min(size(drives), int(capacity))
@@ -83,5 +129,5 @@ contains
       call record_outcome(error)
       info = 0
       if (allocated(error)) info = int(error%code, c_int)
-   end function hillstab_c_critical_drives
+   end function critical_entry
 end module hillstab_interop_capi_critical
