@@ -26,7 +26,8 @@ C program writes nothing while timed), the scipy loop in this process (the loop 
        extrapolated to the chart;
    (b) the C program (GSL rk8pd, epsabs = epsrel = tol, the whole period), on the whole chart.
    Equal accuracy: the reference is hillstab's magnus6 at tolerance 1e-13 on the same chart
-   (computed once, one thread, ~30 s, kept in --reference); errors are |S - S_ref|/max(1, |S_ref|)
+   (computed once, one thread, ~30 s, kept in --reference and reused while the scene is the same:
+   delete it after a change of the library); errors are |S - S_ref|/max(1, |S_ref|)
    of S1 = exp(kappa T/2) trace(monodromy), hillstab's S of a damped equation. GSL's tolerance is
    the cheapest (fewest evaluations) of a half-decade ladder 1e-9 ... 1e-13 whose worst error over
    the whole chart is no larger than hillstab's over the whole chart; scipy's rtol/atol the cheapest
