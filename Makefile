@@ -47,6 +47,11 @@
 #   make bench-system   systems of Hill equations: the 300 x 300 pendula-pair chart against the plain C
 #                       GSL program (bench/chart_gsl_system.c) at equal accuracy, and the cost against n
 #                       (build/bench/system_speed.dat, system_cost.dat, system_cost.png; BENCH_SYSTEM_N)
+#   make bench-equation equations in physical time, one thread: Mathieu's chart as an equation against
+#                       the built-in model, and the Kapitza chart against a scipy loop (solve_ivp, DOP853;
+#                       numpy and scipy pip-installed into build/venv-bench) and the plain C GSL program
+#                       (bench/chart_gsl_kapitza.c) at equal accuracy (scripts/bench_equation.py:
+#                       out/bench_equation.dat; BENCH_EQUATION_ROUNDS)
 FPM ?= bash scripts/fpm.sh
 # the release build: native code (scripts/release_flags.sh), GSL, LAPACK, BLAS and the Fortran
 # runtime linked from their static archives when installed (scripts/release_link_flags.sh)
@@ -69,7 +74,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug test-python test-sanitize setup setup-build setup-test bench bench-fourier bench-output bench-instructions area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov bench-system bench-python fuzz check-memory check-scenes check-plots
+.PHONY: run test test-debug test-python test-sanitize setup setup-build setup-test bench bench-fourier bench-output bench-instructions area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov bench-system bench-python bench-equation fuzz check-memory check-scenes check-plots
 
 # what each target needs (scripts/setup.sh installs only what is missing)
 setup:
@@ -280,6 +285,23 @@ bench-system: setup
 	$(CC) -O2 bench/chart_gsl_system.c -o build/chart_gsl_system -lgsl -lgslcblas -lm
 	$(FPM) run $(RELEASE) hillstab_bench_system -- --n $(BENCH_SYSTEM_N)
 	gnuplot plots/bench_system.gp
+
+# equations in physical time (model 'equation'), one thread: Mathieu written as an equation against
+# the built-in model, the Kapitza chart against a scipy loop and the plain C GSL program at equal
+# accuracy (the reference, magnus6 at 1e-13, computed once and kept in build/bench/). Without numpy
+# and scipy (pip into build/venv-bench fails) the scipy loop is left out and said so.
+BENCH_EQUATION_ROUNDS ?= 7
+BENCH_VENV = build/venv-bench
+bench-equation:
+	@bash scripts/setup.sh compiler fpm python-package
+	mkdir -p out build/bench
+	$(CC) -O2 bench/chart_gsl_kapitza.c -o build/chart_gsl_kapitza -lgsl -lgslcblas -lm
+	$(FPM) build $(RELEASE) >/dev/null
+	@test -x $(BENCH_VENV)/bin/python || python3 -m venv $(BENCH_VENV)
+	@$(BENCH_VENV)/bin/python -c 'import numpy, scipy' 2>/dev/null || $(BENCH_VENV)/bin/python -m pip install \
+	   --quiet numpy scipy || echo "bench-equation: numpy and scipy could not be installed: no scipy loop"
+	OMP_NUM_THREADS=1 $(BENCH_VENV)/bin/python scripts/bench_equation.py "$$($(FPM) run $(RELEASE) \
+	   --runner echo hillstab 2>/dev/null | tail -1)" build/chart_gsl_kapitza --rounds $(BENCH_EQUATION_ROUNDS)
 
 doc:
 	@bash scripts/setup.sh doc
