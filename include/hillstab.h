@@ -248,6 +248,13 @@ int hillstab_critical_drives(const hillstab_model *model, double beta, double al
                              double epsilon, int method, double tolerance, int n_samples, size_t capacity,
                              double *alpha, double *alpha_error, int *side, int *direction, int *status,
                              size_t *count);
+/* hillstab_critical_drives along either axis: axis 1 searches alpha in [low, high] at
+ * beta = fixed, axis 2 beta at alpha = fixed (an equation's drive amplitude at one
+ * frequency); each point's damping is the model's (epsilon 0 for an equation). */
+int hillstab_critical_drives_along(const hillstab_model *model, int axis, double fixed, double low, double high,
+                                   double epsilon, int method, double tolerance, int n_samples, size_t capacity,
+                                   double *value, double *value_error, int *side, int *direction, int *status,
+                                   size_t *count);
 
 /* Many points at once, as the tasks compute them, on `threads` OpenMP threads (0: the
  * default): values[j][k] over the columns of a system's files (14 + n: alpha beta trace a2

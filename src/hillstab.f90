@@ -132,7 +132,9 @@
 !> - [[hillstab_curves_hill_fourier]]: [[hillstab_curves_hill_fourier:fourier_boundaries]]
 !> - [[hillstab_curves_characteristic]]: [[hillstab_curves_characteristic:characteristic_values]]
 !> - [[hillstab_curves_critical]]: [[hillstab_curves_critical:critical_drive_t]],
-!>   [[hillstab_curves_critical:critical_drives]]
+!>   [[hillstab_curves_critical:critical_drives]], [[hillstab_curves_critical:critical_drives_along]],
+!>   `hillstab_along_alpha` = [[hillstab_curves_critical:along_alpha]],
+!>   `hillstab_along_beta` = [[hillstab_curves_critical:along_beta]]
 !> - [[hillstab_curves_system_boundaries]]: [[hillstab_curves_system_boundaries:system_boundary_t]],
 !>   [[hillstab_curves_system_boundaries:system_boundaries]]
 !> - [[hillstab_pendulum_equations]]: [[hillstab_pendulum_equations:pendulum_t]],
@@ -245,7 +247,8 @@ module hillstab
       unstable_intervals_from_roots, curve_route, exact_boundaries
    use hillstab_curves_hill_fourier, only: fourier_boundaries
    use hillstab_curves_characteristic, only: characteristic_values
-   use hillstab_curves_critical, only: critical_drive_t, critical_drives
+   use hillstab_curves_critical, only: critical_drive_t, critical_drives, critical_drives_along, &
+      hillstab_along_alpha => along_alpha, hillstab_along_beta => along_beta
    use hillstab_curves_system_boundaries, only: system_boundary_t, system_boundaries
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_energy, &
       pendulum_angle, pendulum_radius, pendulum_bounce, pendulum_system_t

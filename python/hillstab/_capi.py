@@ -98,6 +98,9 @@ _declare("hillstab_physical", ctypes.c_int, _model_p, ctypes.c_double, ctypes.c_
 _declare("hillstab_critical_drives", ctypes.c_int, _model_p, ctypes.c_double, ctypes.c_double, ctypes.c_double,
          ctypes.c_double, ctypes.c_int, ctypes.c_double, ctypes.c_int, ctypes.c_size_t, _c_double_p, _c_double_p,
          _c_int_p, _c_int_p, _c_int_p, _c_size_p)
+_declare("hillstab_critical_drives_along", ctypes.c_int, _model_p, ctypes.c_int, ctypes.c_double, ctypes.c_double,
+         ctypes.c_double, ctypes.c_double, ctypes.c_int, ctypes.c_double, ctypes.c_int, ctypes.c_size_t, _c_double_p,
+         _c_double_p, _c_int_p, _c_int_p, _c_int_p, _c_size_p)
 _declare("hillstab_transition_curves", ctypes.c_int, _model_p, ctypes.c_size_t, _c_double_p, ctypes.c_double,
          ctypes.c_double, ctypes.c_double, ctypes.c_size_t, ctypes.c_int, _c_double_p, _c_int_p, _c_int_p,
          _c_int_p, _c_double_p, _c_int_p, _c_size_p, _c_int_p)

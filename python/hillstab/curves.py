@@ -21,7 +21,8 @@ from .models import as_model
 
 class CriticalDrives:
     """The changes of stability at a fixed β, ascending in α: ``alpha``, ``alpha_error`` (the
-    bound of its error), ``side`` (+1: S reaches +2 cosh(εP/2) there, −1: −2 cosh(εP/2)),
+    bound of its error; along β: ``beta``, ``beta_error``; either way ``value``,
+    ``value_error`` and ``axis``), ``side`` (+1: S reaches +2 cosh(εP/2) there, −1: −2 cosh(εP/2)),
     ``direction`` (+1: stable below, unstable above; −1 the reverse) and ``status`` (0
     confirmed by the verdicts on both sides, 2 not), each an array."""
 
@@ -30,22 +31,25 @@ class CriticalDrives:
             setattr(self, key, value)
 
     def __len__(self):
-        return self.alpha.size
+        return self.value.size
 
     def __repr__(self):
-        return "<hillstab critical drives: {} change(s) at alpha = {}>".format(
-            self.alpha.size, ", ".join("{:.8g}".format(a) for a in self.alpha))
+        return "<hillstab critical drives: {} change(s) at {} = {}>".format(
+            self.value.size, self.axis, ", ".join("{:.8g}".format(a) for a in self.value))
 
 
 def critical_drives(beta, alpha, model="elastic", epsilon=0.0, method="auto", tolerance=1e-10, n_samples=400):
     """Every α of the range ``alpha = (alpha_min, alpha_max)`` where the stability of the
-    model's equation at ``beta`` (damping ``epsilon``) changes, as a `CriticalDrives`.
+    model's equation at ``beta`` (damping ``epsilon``) changes, as a `CriticalDrives`; or,
+    with ``beta`` a range and ``alpha`` a number, every β of that range at the fixed α
+    (an `Equation`'s drive amplitude at one frequency: ``critical_drives((0, 0.1), 314.16,
+    model=kapitza)``; each point's damping is then the equation's, ``epsilon`` 0).
 
-    The signed distance |S| − 2 cosh(εP/2) is sampled at ``n_samples`` values of α (S by
+    The signed distance |S| − 2 cosh(εP/2) is sampled at ``n_samples`` values (S by
     ``method`` to ``tolerance``); each sign change is refined to ``tolerance`` relative to
-    max(1, |α|), or to S's own error, and confirmed by the verdicts on both sides; a region
-    narrower than the samples is found where |S| comes within 5 % of the threshold at a
-    neighbouring sample (more samples find narrower ones). For the Kapitza pendulum at 50 Hz
+    max(1, |value|), or to S's own error, and confirmed by the verdicts on both sides; a
+    region narrower than the samples is found where |S| comes within 5 % of the threshold at
+    a neighbouring sample (more samples find narrower ones). For the Kapitza pendulum at 50 Hz
     (l = 0.2 m, κ = 0.2 1/s; Mathieu's model with β = −gπ²/(lω²), ε = κπ/ω, α = Aπ²/l) the
     first change is the least stabilising amplitude, 6.30680 mm:
 
@@ -55,13 +59,20 @@ def critical_drives(beta, alpha, model="elastic", epsilon=0.0, method="auto", to
     ...                     epsilon=0.2 * math.pi / w, tolerance=1e-12)
     >>> d.alpha[0] * 0.2 / math.pi**2
     0.0063068...
+
+    The result's ``value`` and ``value_error`` are the coordinate searched and its bound,
+    also as ``alpha``/``alpha_error`` or ``beta``/``beta_error`` (and, for an `Equation`, by
+    the axis' parameter, e.g. ``d.A``).
     """
     if method not in _capi.METHODS:
         raise ValueError("method: unknown method '{}' (expected {})".format(method, ", ".join(_capi.METHODS)))
+    along_beta = isinstance(beta, (tuple, list, np.ndarray)) and not isinstance(alpha, (tuple, list, np.ndarray))
+    name, fixed_name = ("beta", "alpha") if along_beta else ("alpha", "beta")
+    span, fixed = (beta, alpha) if along_beta else (alpha, beta)
     try:
-        alpha_min, alpha_max = alpha
+        low, high = span
     except (TypeError, ValueError):
-        raise ValueError("alpha: must be (alpha_min, alpha_max)") from None
+        raise ValueError("{0}: must be ({0}_min, {0}_max)".format(name)) from None
     if isinstance(n_samples, (bool, np.bool_)) or not isinstance(n_samples, (int, np.integer)):
         raise TypeError("n_samples: must be an int, got {}".format(type(n_samples).__name__))
     model = as_model(model)
@@ -73,19 +84,25 @@ def critical_drives(beta, alpha, model="elastic", epsilon=0.0, method="auto", to
         directions = np.zeros(capacity, dtype=_capi.INT)
         statuses = np.zeros(capacity, dtype=_capi.INT)
         count = np.zeros(1, dtype=np.uintp)
-        check(lib.hillstab_critical_drives(model.handle, _capi.real_number("beta", beta),
-                                           _capi.real_number("alpha", alpha_min), _capi.real_number("alpha", alpha_max),
-                                           _capi.real_number("epsilon", epsilon), _capi.METHODS[method],
-                                           _capi.real_number("tolerance", tolerance), int(n_samples), capacity,
-                                           _capi.doubles(values), _capi.doubles(errors), _capi.ints(sides),
-                                           _capi.ints(directions), _capi.ints(statuses), _capi.sizes(count)))
+        check(lib.hillstab_critical_drives_along(model.handle, 2 if along_beta else 1,
+                                                 _capi.real_number(fixed_name, fixed),
+                                                 _capi.real_number(name, low), _capi.real_number(name, high),
+                                                 _capi.real_number("epsilon", epsilon), _capi.METHODS[method],
+                                                 _capi.real_number("tolerance", tolerance), int(n_samples), capacity,
+                                                 _capi.doubles(values), _capi.doubles(errors), _capi.ints(sides),
+                                                 _capi.ints(directions), _capi.ints(statuses), _capi.sizes(count)))
         found = int(count[0])
         if found <= capacity:
             break
         capacity = found
-    return CriticalDrives(alpha=values[:found].copy(), alpha_error=errors[:found].copy(),
-                          side=sides[:found].astype(np.int8), direction=directions[:found].astype(np.int8),
-                          status=statuses[:found].astype(np.int8))
+    arrays = dict(value=values[:found].copy(), value_error=errors[:found].copy(), side=sides[:found].astype(np.int8),
+                  direction=directions[:found].astype(np.int8), status=statuses[:found].astype(np.int8))
+    arrays[name] = arrays["value"]
+    arrays[name + "_error"] = arrays["value_error"]
+    axes = getattr(model, "axes", None)
+    if axes:
+        arrays.setdefault(axes[1] if along_beta else axes[0], arrays["value"])
+    return CriticalDrives(axis=name, **arrays)
 
 
 class Curves:

@@ -95,3 +95,19 @@ def test_epsilon_refused_for_an_equation():
     with pytest.raises(ValueError) as caught:
         hillstab.floquet(314.16, 0.01, model=kapitza, epsilon=0.1)
     assert "epsilon" in str(caught.value) and "own" in str(caught.value)
+
+
+def test_critical_amplitude_at_a_frequency():
+    """Along the equation's beta axis: the least stabilising amplitude at 50 Hz is the
+    Mathieu model's at the hand-made mapping (6.30680 mm), named after the axis."""
+    kapitza = hillstab.Equation(**KAPITZA)
+    w = 2 * math.pi * 50
+    d = hillstab.critical_drives((0.0, 0.1), w, model=kapitza, tolerance=1e-12)
+    m = hillstab.critical_drives(-G * math.pi ** 2 / (L * w ** 2), (0.0, 0.1 * math.pi ** 2 / L), model="mathieu",
+                                 epsilon=KAPPA * math.pi / w, tolerance=1e-12)
+    assert d.axis == "beta" and len(d) == len(m) >= 2
+    assert np.all(np.abs(d.A - m.alpha * L / math.pi ** 2) <= d.beta_error + m.alpha_error * L / math.pi ** 2 + 1e-15)
+    assert abs(d.A[0] - 6.30680e-3) < 5e-9 and list(d.direction) == list(m.direction)
+    with pytest.raises(ValueError) as caught:
+        hillstab.critical_drives((0.0, 0.1), w, model=kapitza, epsilon=0.1)
+    assert "epsilon" in str(caught.value)

@@ -7,12 +7,18 @@
 !> a narrow region between two samples found; bad ranges refused naming the argument.
 module test_critical
    use hillstab_core_kinds, only: wp, pi, pi2
+   use hillstab_core_text, only: real_text
    use hillstab_core_error, only: error_t, err_invalid_parameter
    use hillstab_core_status, only: status_ok
    use hillstab_hill_model_mathieu, only: mathieu_model_t
    use hillstab_hill_mathieu, only: mathieu_transition_beta, mathieu_kind_a, mathieu_kind_b, mathieu_a
    use hillstab_integrate_monodromy, only: method_t
-   use hillstab_curves_critical, only: critical_drive_t, critical_drives
+   use hillstab_curves_critical, only: critical_drive_t, critical_drives, critical_drives_along, along_alpha, &
+      along_beta
+   use hillstab_hill_model_equation, only: equation_model_t
+   use hillstab_hill_model, only: hill_point_t
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_integrate_monodromy, only: monodromy_trace
    use hillstab_testing
    implicit none
    private
@@ -27,6 +33,7 @@ contains
          new_unittest("kapitza_least_amplitude", kapitza_least_amplitude), &
          new_unittest("kapitza_ten_frequencies", kapitza_ten_frequencies), &
          new_unittest("narrow_region_between_samples", narrow_region_between_samples), &
+         new_unittest("equation_along_either_axis", equation_along_either_axis), &
          new_unittest("bad_ranges_refused", bad_ranges_refused)])
    end function collect_critical
 
@@ -142,6 +149,75 @@ contains
       call check(ctx, drives(2)%alpha*l/pi2, 91.0e-3_wp, abs=0.6e-3_wp, message="the window closes")
       call check(ctx, drives(2)%direction == 1, "unstable above it")
    end subroutine kapitza_least_amplitude
+
+   !> The damped Kapitza pendulum written as its user writes it (model equation, axes ω and
+   !> A): along β, the critical amplitudes at 50 Hz are the Mathieu model's at the hand-made
+   !> mapping α = Aπ²/l, β = −gπ²/(lω²), ε = κπ/ω (within the two bounds; 6.30680 mm first);
+   !> along α, the critical frequencies at A = 8 mm, where the damping κπ/ω changes with the
+   !> frequency searched, each confirmed by the equation's own verdicts on both sides and
+   !> the first one inside (ω where A ω = √(2gl) ± 1 %); ε ≠ 0 refused for the equation.
+   subroutine equation_along_either_axis(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(equation_model_t) :: kapitza
+      type(mathieu_model_t) :: mathieu
+      type(critical_drive_t), allocatable :: drives(:), mapped(:)
+      type(error_t), allocatable :: error
+      type(trace_t) :: tr
+      real(wp), parameter :: g = 9.81_wp, l = 0.2_wp, kappa = 0.2_wp
+      real(wp) :: omega, eps, s(2), threshold, w, x
+      integer :: j, side
+      call kapitza%set_text("parameters", "g = 9.81, l = 0.2, kappa = 0.2, A = 0.005, w = 314.16", error)
+      call kapitza%set_text("stiffness", "-g/l + A*w^2/l*cos(w*t)", error)
+      call kapitza%set_text("damping", "kappa", error)
+      call kapitza%set_text("frequency", "w", error)
+      call kapitza%set_text("alpha", "w", error)
+      call kapitza%set_text("beta", "A", error)
+      call kapitza%check_values(error)
+      call check(ctx, .not. allocated(error), "the equation")
+      if (allocated(error)) return
+      omega = 2.0_wp*pi*50.0_wp
+      call critical_drives_along(kapitza, along_beta, omega, 0.0_wp, 0.1_wp, 0.0_wp, method_t(tolerance=1.0e-12_wp), &
+                                 400, drives, error)
+      call check(ctx, .not. allocated(error), "along beta runs")
+      if (allocated(error)) return
+      call critical_drives(mathieu, -g*pi2/(l*omega**2), 0.0_wp, 0.1_wp*pi2/l, kappa*pi/omega, &
+                           method_t(tolerance=1.0e-12_wp), 400, mapped, error)
+      call check(ctx, size(drives) == size(mapped) .and. size(drives) >= 2, "as many changes as mapped by hand")
+      do j = 1, min(size(drives), size(mapped))
+         call check(ctx, abs(drives(j)%alpha - mapped(j)%alpha*l/pi2) <= drives(j)%alpha_error + &
+                    mapped(j)%alpha_error*l/pi2 + 1.0e-15_wp, "change "//real_text(real(j, wp))//": A = "// &
+                    real_text(drives(j)%alpha)//" against "//real_text(mapped(j)%alpha*l/pi2))
+         call check(ctx, drives(j)%direction == mapped(j)%direction .and. drives(j)%status == status_ok, &
+                    "direction and confirmation of change "//real_text(real(j, wp)))
+      end do
+      if (size(drives) > 0) call check(ctx, drives(1)%alpha, 6.30680e-3_wp, abs=5.0e-9_wp, &
+                                       message="the least stabilising amplitude at 50 Hz")
+      ! along alpha: the frequencies at A = 8 mm, the damping changing with them
+      call critical_drives_along(kapitza, along_alpha, 0.008_wp, 100.0_wp, 700.0_wp, 0.0_wp, &
+                                 method_t(tolerance=1.0e-12_wp), 200, drives, error)
+      call check(ctx, .not. allocated(error) .and. size(drives) >= 1, "along alpha finds a change")
+      if (allocated(error) .or. size(drives) < 1) return
+      call check(ctx, abs(drives(1)%alpha*0.008_wp/sqrt(2.0_wp*g*l) - 1.0_wp) < 0.01_wp, &
+                 "the first at A w = sqrt(2 g l) within 1 %: w = "//real_text(drives(1)%alpha))
+      do j = 1, size(drives)
+         call check(ctx, drives(j)%status == status_ok, "confirmed: change "//real_text(real(j, wp)))
+         ! the equation's own verdicts just either side (stable where the direction says)
+         do side = -1, 1, 2
+            w = drives(j)%alpha + side*4.0_wp*max(drives(j)%alpha_error, 1.0e-9_wp*drives(j)%alpha)
+            eps = kapitza%point_damping(w, 0.0_wp)
+            call monodromy_trace(kapitza, hill_point_t(w, 0.008_wp, eps), method_t(tolerance=1.0e-12_wp), tr, error)
+            if (allocated(error)) deallocate (error)
+            threshold = 2.0_wp*cosh(eps)
+            s(1) = abs(tr%value) - threshold
+            x = merge(1.0_wp, -1.0_wp, (side == 1) .eqv. (drives(j)%direction == 1))
+            call check(ctx, x*s(1) > 0.0_wp, "the verdict on side "//real_text(real(side, wp))//" of change "// &
+                       real_text(real(j, wp)))
+         end do
+      end do
+      call critical_drives_along(kapitza, along_beta, omega, 0.0_wp, 0.1_wp, 0.1_wp, method_t(), 40, drives, error)
+      call check(ctx, allocated(error), "epsilon refused for an equation")
+      if (allocated(error)) call check(ctx, index(error%message, "epsilon") == 1, "named: "//error%message)
+   end subroutine equation_along_either_axis
 
    !> The undamped Kapitza pendulum (l = 0.2 m) at 10 frequencies from 30 to 120 Hz: its
    !> least stabilising amplitude is where Mathieu's a_0(q) = −4g/(lω²), q = 2A/l. Against
