@@ -249,6 +249,8 @@ contains
       integer :: j, i
       self%ready = .false.
       self%problem = ""
+      ! set again after it was complete (a C or Python caller changing one text)
+      if (allocated(self%mass_matrix)) deallocate (self%mass_matrix)
       if (.not. allocated(self%parameters_text)) self%parameters_text = ""
       if (.not. allocated(self%matrices_text)) self%matrices_text = ""
       if (.not. allocated(self%mass_text)) self%mass_text = "1"
