@@ -212,12 +212,25 @@ enum {
 int hillstab_system_new(hillstab_system **system);
 void hillstab_system_free(hillstab_system *system);
 
+/* An empty system of the kind `name` (any case): "system" (as hillstab_system_new) or
+ * "equations", n coupled equations in physical time M x'' + (C + G) x' + K(t) x = 0 with
+ * named parameters and matrices (the scene group &equations): "n" by hillstab_system_set,
+ * its texts by hillstab_system_set_text. Its damping is its own, converted at each point's
+ * alpha (the first axis' parameter): epsilon must be 0. */
+int hillstab_system_new_named(const char *name, hillstab_system **system);
+
 /* Set a variable to count numbers; once n is given the variable is checked on its own (its
  * size, M symmetric positive definite, C symmetric, G skew; the system unchanged on failure).
  * hillstab_system_check: whether the system is complete; hillstab_system_dof: n. */
 int hillstab_system_set(hillstab_system *system, const char *variable, const double *values, size_t count);
 int hillstab_system_check(const hillstab_system *system);
 int hillstab_system_dof(const hillstab_system *system, int *n);
+
+/* Set a text variable of an equations system: parameters, matrices ("W = [1, 0; 0, 4], ..."),
+ * stiffness, mass, damping, gyroscopic, frequency or period, alpha, beta, as in &equations.
+ * An unknown variable is refused here; what the texts say together by hillstab_system_check
+ * and every computation, the message naming the variable. */
+int hillstab_system_set_text(hillstab_system *system, const char *variable, const char *text);
 
 /* The monodromy over one period, Phi = exp(log_scale) Phi~: phi[2n][2n] = Phi~ (row-major,
  * acting on (x, x')), its error estimate relative to max(1, max|Phi~_ij|). */

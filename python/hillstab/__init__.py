@@ -7,7 +7,9 @@ library's OpenMP threads). What it offers:
 - models as objects: `Model` (``"elastic"``, ``"mathieu"``: `model_names`);
 - systems of n coupled Hill equations: `System` (numpy matrices in; `System.monodromy`,
   `System.floquet`: multipliers, exponents, verdict and kind of instability at a point, or
-  arrays of them over arrays of points; `System.chart` over a grid);
+  arrays of them over arrays of points; `System.chart` over a grid); `Equations`, the
+  system as its user writes it (n coupled equations in physical time, named parameters
+  and matrices), with the same methods;
 - `floquet`, `trace` over arrays of (α, β) and `chart` over a grid, returning numpy arrays
   (S, verdicts, multipliers, exponents, error estimates) with a per-point ``status``;
 - `transition_curves` (Hill's method) and Mathieu's characteristic values `mathieu_a`,
@@ -28,12 +30,12 @@ from .floquet import floquet, trace, chart, Result, ALL_VALUES
 from .curves import transition_curves, critical_drives, mathieu_a, mathieu_b, Curves, CriticalDrives
 from .spring import Spring
 from .scenes import run_scene, read_output, series, Output, Series
-from .system import System, SystemFloquet, SystemResult
+from .system import System, Equations, SystemFloquet, SystemResult
 
 #: the version of the library loaded
 __version__ = _lib.hillstab_version().decode()
 
 __all__ = ["Model", "Equation", "model_names", "floquet", "trace", "chart", "Result", "ALL_VALUES", "transition_curves", "critical_drives", "CriticalDrives",
            "mathieu_a", "mathieu_b", "Curves", "Spring", "run_scene", "read_output", "series", "Output", "Series",
-           "System", "SystemFloquet", "SystemResult",
+           "System", "Equations", "SystemFloquet", "SystemResult",
            "HillstabError", "HillstabWarning", "PointsFailedError"]

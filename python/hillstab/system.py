@@ -13,6 +13,11 @@ broadcast, with the damping) `System.floquet` and `System.points` return a `Syst
 of arrays — the columns of the command line's files, to the bit — computed on the
 library's threads, and `System.chart` the same over a grid.
 
+`Equations` is the system as its user writes it, n coupled equations in physical time with
+named parameters and matrices (the scene group ``&equations``),
+M x'' + (C + G) x' + K(t) x = 0: the same methods, α and β being the values of its two
+axes' parameters, the results named after them too.
+
 Bad input (M not symmetric positive definite, C not symmetric, G not skew, a matrix of the
 wrong shape or empty, an n that is not an integer, an unknown method, a tolerance outside
 (1e-15, 1), a non-finite point, ε < 0) raises ValueError with a message that names the
@@ -39,6 +44,8 @@ _c_double_p = ctypes.POINTER(ctypes.c_double)
 _c_int_p = ctypes.POINTER(ctypes.c_int)
 
 _capi._declare("hillstab_system_new", ctypes.c_int, ctypes.POINTER(_system_p))
+_capi._declare("hillstab_system_new_named", ctypes.c_int, ctypes.c_char_p, ctypes.POINTER(_system_p))
+_capi._declare("hillstab_system_set_text", ctypes.c_int, _system_p, ctypes.c_char_p, ctypes.c_char_p)
 _capi._declare("hillstab_system_free", None, _system_p)
 _capi._declare("hillstab_system_set", ctypes.c_int, _system_p, ctypes.c_char_p, _c_double_p, ctypes.c_size_t)
 _capi._declare("hillstab_system_check", ctypes.c_int, _system_p)
@@ -441,3 +448,133 @@ class System:
 
     def __repr__(self):
         return "hillstab.System(n={}, period={:g})".format(self.n, self.period)
+
+
+def _number_text(name, value):
+    """A real number as the expression its shortest repr is: TypeError naming the argument
+    for what is not a real number, ValueError for one that is not finite."""
+    value = real_number(name, value)
+    if not math.isfinite(value):
+        raise ValueError("{}: must be finite, got {!r}".format(name, value))
+    return repr(value)
+
+
+def _matrices_text(matrices, n):
+    """``{name: n x n array}`` as the text 'W = [1.0, 0.0; 0.0, 4.0], S = [...]' (rows by ';',
+    each entry the repr of its double, so that the library reads the same numbers); n the
+    shape every matrix must have (None: the first one's)."""
+    parts = []
+    for name, value in matrices.items():
+        if not isinstance(name, str):
+            raise TypeError("matrices: a matrix's name must be a str, got {!r}".format(name))
+        array = real_array("matrices: " + name, value)
+        if array.ndim != 2 or array.shape[0] != array.shape[1] or array.shape[0] < 1:
+            raise ValueError("matrices: {}: must be an n x n array (n >= 1), got shape {}".format(
+                name, array.shape))
+        if n is None:
+            n = array.shape[0]
+        if array.shape != (n, n):
+            raise ValueError("matrices: {}: must be an n x n array, n = {}, got shape {}".format(
+                name, n, array.shape))
+        if not np.all(np.isfinite(array)):
+            raise ValueError("matrices: {}: the entries must be finite".format(name))
+        rows = ("; ".join(", ".join(repr(float(x)) for x in row) for row in array))
+        parts.append("{} = [{}]".format(name, rows))
+    return ", ".join(parts), n
+
+
+class Equations(System):
+    """A system as its user writes it: n coupled equations in physical time t with named
+    parameters and named constant matrices (the scene group ``&equations``),
+
+        M x'' + (C + G) x' + K(t) x = 0,   K of period 2π/Ω,
+
+    through the library's ``hillstab_system_new_named("equations")`` and
+    ``hillstab_system_set_text``. ``stiffness`` K(t), ``mass`` M (default ``"1"``: I),
+    ``damping`` C (``"0"``) and ``gyroscopic`` G (``"0"``) are matrix expressions: scalar
+    expressions of t (K only), the parameters and the matrices' names, linear in the matrices
+    (``"W - (P0 + P1*cos(Om*t))*S"``; a number or a part without a matrix is that multiple of
+    I); ``matrices`` a dict ``{name: n x n array}`` (or the scene's text
+    ``"W = [1, 0; 0, 4], S = [...]"``); ``parameters`` a dict ``{name: value}`` in order (or
+    the text ``"P0 = 0.3, Om = 2"``); ``frequency`` Ω or ``period`` T (expressions of the
+    parameters, or numbers); ``alpha`` and ``beta`` the parameters the points' two
+    coordinates are; ``n`` the degrees of freedom (default: the matrices' size).
+
+    The methods are `System`'s — `floquet`, `points`, `chart`, `monodromy` — with α and β
+    the values of the two axes' parameters; the results carry the axes by those names too
+    (``chart(...).Om`` is the axis ``alpha``, ``points(...).P1`` the column ``beta``). The
+    damping is the system's own, (π/Ω) C in τ = Ωt/π, prepared at each point's α as the
+    command line's tasks prepare it (their files' numbers to the bit): ``epsilon`` must stay
+    0. The results are the physical system's: its multipliers over one period 2π/Ω, the
+    exponents ``mu`` per unit τ (μ Ω/π per unit time). A text the system refuses raises
+    ValueError naming the variable (``hillstab_system_check: matrices: S, row 2 has 2
+    entries, n = 3 are needed``). A text holds at most 8000 characters.
+
+    >>> column = Equations("W - (P0 + P1*cos(Om*t))*S", frequency="Om", damping="2*zeta*Z",
+    ...                    matrices={"W": np.diag([1.0, 16.0, 81.0]), "S": [[1, 0.3, 0.1], [0.3, 4, 0.4],
+    ...                              [0.1, 0.4, 9]], "Z": np.diag([1.0, 4.0, 9.0])},
+    ...                    parameters={"P0": 0.3, "P1": 0.0, "Om": 2.0, "zeta": 0.01}, alpha="Om", beta="P1")
+    >>> column.floquet(1.6, 0.4).kind_name
+    'parametric at -1'
+    """
+
+    def __init__(self, stiffness, frequency=None, period=None, parameters=None, matrices=None, mass="1",
+                 damping="0", gyroscopic="0", alpha=None, beta=None, n=None):
+        if n is not None:
+            n = _degrees_of_freedom(n)
+        if matrices is None:
+            matrices = ""
+        if isinstance(matrices, dict):
+            matrices, n = _matrices_text(matrices, n)
+        elif not isinstance(matrices, str):
+            raise TypeError("matrices: a dict {{name: n x n array}} or a text 'W = [1, 0; 0, 4], ...', got "
+                            "{}".format(type(matrices).__name__))
+        if n is None:
+            raise ValueError("n: give the degrees of freedom (or the matrices as a dict of arrays)")
+        if parameters is None:
+            parameters = ""
+        if isinstance(parameters, dict):
+            for name in parameters:
+                if not isinstance(name, str):
+                    raise TypeError("parameters: a parameter's name must be a str, got {!r}".format(name))
+            parameters = ", ".join("{} = {}".format(name, _number_text("parameters: " + name, value))
+                                   for name, value in parameters.items())
+        texts = []
+        for name, text in (("parameters", parameters), ("matrices", matrices), ("stiffness", stiffness),
+                           ("mass", mass), ("damping", damping), ("gyroscopic", gyroscopic),
+                           ("frequency", frequency), ("period", period), ("alpha", alpha), ("beta", beta)):
+            if text is None:
+                continue
+            if not isinstance(text, str):
+                if name in ("mass", "damping", "gyroscopic", "frequency", "period"):
+                    text = _number_text(name, text)
+                else:
+                    raise TypeError("{}: a string, got {!r}".format(name, text))
+            texts.append((name, text))
+        handle = _system_p()
+        check(lib.hillstab_system_new_named(b"equations", ctypes.byref(handle)))
+        self._handle = handle
+        self._set("n", [float(n)])
+        for name, text in texts:
+            check(lib.hillstab_system_set_text(self._handle, name.encode(), text.encode()))
+        check(lib.hillstab_system_check(self._handle))
+        dof = ctypes.c_int(0)
+        check(lib.hillstab_system_dof(self._handle, ctypes.byref(dof)))
+        #: the degrees of freedom
+        self.n = dof.value
+        #: the parameters of the two axes, as the results name them too
+        self.axes = (alpha, beta)
+        #: the period of the system in τ = Ωt/π (one period of K is τ in [0, 2])
+        self.period = 2.0
+
+    def _result(self, values, status, shape, extra=None):
+        result = super()._result(values, status, shape, extra)
+        # the axes by their parameters' names too, unless a column or attribute has that name
+        for name, key in zip(self.axes, ("alpha", "beta")):
+            if name and name not in result.names and not hasattr(result, name):
+                setattr(result, name, getattr(result, key))
+        return result
+
+    def __repr__(self):
+        axes = getattr(self, "axes", (None, None))
+        return "hillstab.Equations(n={}, alpha={!r}, beta={!r})".format(getattr(self, "n", None), *axes)

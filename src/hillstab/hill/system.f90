@@ -58,6 +58,7 @@ module hillstab_hill_system
       procedure :: damping_at => damping_anywhere
       procedure :: gyroscopic_at => gyroscopic_anywhere
       procedure :: row_dependent => same_every_row
+      procedure :: takes_scene_damping => scene_damping_taken
       procedure :: period => period_two
       procedure :: even => not_even
       procedure :: symmetric => symmetric_stiffness
@@ -137,6 +138,14 @@ contains
       class(hill_system_t), intent(in) :: self  !! the system
       same_every_row = .false.
    end function same_every_row
+
+   !> The scene's ε (the damping ε M) may be added: true unless the system carries a damping
+   !> of its own in its own units (the equations system: its C, converted at every row), for
+   !> which ε must be 0.
+   pure logical function scene_damping_taken(self)
+      class(hill_system_t), intent(in) :: self  !! the system
+      scene_damping_taken = .true.
+   end function scene_damping_taken
 
    !> The period of K in τ: 2 unless the system says otherwise.
    pure real(wp) function period_two(self) result(period)

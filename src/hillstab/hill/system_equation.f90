@@ -92,6 +92,7 @@ module hillstab_hill_system_equation
       procedure :: damping_at => equations_damping_at
       procedure :: gyroscopic_at => equations_gyroscopic_at
       procedure :: row_dependent => equations_row_dependent
+      procedure :: takes_scene_damping => equations_own_damping
       procedure :: stiffness => equations_stiffness
       procedure :: symmetric => equations_symmetric
       procedure :: alpha_domain => equations_alpha_domain
@@ -249,6 +250,8 @@ contains
       integer :: j, i
       self%ready = .false.
       self%problem = ""
+      ! set again after it was complete (a C or Python caller changing one text)
+      if (allocated(self%mass_matrix)) deallocate (self%mass_matrix)
       if (.not. allocated(self%parameters_text)) self%parameters_text = ""
       if (.not. allocated(self%matrices_text)) self%matrices_text = ""
       if (.not. allocated(self%mass_text)) self%mass_text = "1"
@@ -585,6 +588,13 @@ contains
       class(equations_system_t), intent(in) :: self  !! the system
       equations_row_dependent = .true.
    end function equations_row_dependent
+
+   !> The damping is the system's own (`damping`, in physical units, converted at every
+   !> row): the scene's ε must be 0.
+   pure logical function equations_own_damping(self)
+      class(equations_system_t), intent(in) :: self  !! the system
+      equations_own_damping = .false.
+   end function equations_own_damping
 
    !> K(τ) = p + β b at row α in τ: (π/Ω)² K(πτ/Ω) at β = 0, and the change per unit β.
    pure subroutine equations_stiffness(self, alpha, tau, p, b)

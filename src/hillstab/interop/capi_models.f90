@@ -47,16 +47,19 @@ module hillstab_interop_capi_models
 
 contains
 
-   !> A Fortran string from a NUL-terminated C string (at most `max_c_text` characters;
-   !> `ok` false when there is no NUL within them).
-   subroutine c_text(chars, text, ok)
+   !> A Fortran string from a NUL-terminated C string (at most `max_c_text` characters, or
+   !> `limit`; `ok` false when there is no NUL within them).
+   subroutine c_text(chars, text, ok, limit)
       character(kind=c_char), intent(in) :: chars(*)  !! the C string
       character(len=:), allocatable, intent(out) :: text  !! its characters before the NUL
-      logical, intent(out) :: ok  !! the string ended within max_c_text characters
-      integer :: n, i
+      logical, intent(out) :: ok  !! the string ended within max_c_text (or limit) characters
+      integer, intent(in), optional :: limit  !! the most characters read instead of max_c_text
+      integer :: n, i, most
       n = 0
       ok = .false.
-      do while (n < max_c_text)
+      most = max_c_text
+      if (present(limit)) most = limit
+      do while (n < most)
          if (chars(n + 1) == c_null_char) then
             ok = .true.
             exit

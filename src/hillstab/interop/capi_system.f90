@@ -2,12 +2,18 @@
 !>
 !>     M x'' + (C + ε M + G) x' + K(τ) x = 0,   x in Rⁿ,
 !>
-!> as an opaque `hillstab_system` handle holding a matrix system (hillstab_hill_system_matrix):
-!> made empty by `hillstab_system_new`, its variables set by name (`n` first, then the
-!> matrices as n² numbers row by row: `mass`, `damping`, `gyroscopic`, `k0`, `b`; the drives
-!> `cos`, `sin` as H blocks of n² numbers; `period`), checked, and then its monodromy Φ
-!> (hillstab_integrate_system) and Floquet analysis (hillstab_hill_system_floquet) at points
-!> (α, β, ε). Conventions as in hillstab_interop_capi_models: `bind(C)`, `value` scalars,
+!> as an opaque `hillstab_system` handle holding a system of either kind: the matrix system
+!> of the scenes' `&system` (hillstab_hill_system_matrix), made empty by `hillstab_system_new`,
+!> its variables set by name (`n` first, then the matrices as n² numbers row by row: `mass`,
+!> `damping`, `gyroscopic`, `k0`, `b`; the drives `cos`, `sin` as H blocks of n² numbers;
+!> `period`), or the equations system of `&equations` (hillstab_hill_system_equation: n
+!> coupled equations in physical time), made by `hillstab_system_new_named("equations", ...)`,
+!> `n` set by `hillstab_system_set` and its texts (parameters, matrices, stiffness, ...) by
+!> `hillstab_system_set_text`; checked, and then its monodromy Φ (hillstab_integrate_system)
+!> and Floquet analysis (hillstab_hill_system_floquet) at points (α, β, ε). A system whose
+!> damping changes from row to row (`row_dependent`: the equations system, its (π/Ω) C) is
+!> prepared at the point's α, as the tasks prepare it; one that carries its own damping
+!> (`takes_scene_damping` false) refuses ε ≠ 0. Conventions as in hillstab_interop_capi_models: `bind(C)`, `value` scalars,
 !> names prefixed `hillstab_`, a status returned (0 or an error code), outputs untouched on
 !> failure, the full message in the calling thread's `hillstab_last_error`; here every
 !> message starts with the entry point's name and names the argument
@@ -38,10 +44,11 @@ module hillstab_interop_capi_system
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
-   use hillstab_core_text, only: integer_text, real_text
-   use hillstab_hill_system, only: system_form_t, prepare_system, check_system_point
+   use hillstab_core_text, only: integer_text, real_text, lower_case
+   use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system, check_system_point
    use hillstab_integrate_system_point, only: resolve_exponents
    use hillstab_hill_system_matrix, only: matrix_system_t
+   use hillstab_hill_system_equation, only: equations_system_t, max_equations_text
    use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy
    use hillstab_integrate_monodromy, only: method_table, method_name, method_takes_systems
@@ -51,16 +58,19 @@ module hillstab_interop_capi_system
    implicit none
    private
    public :: system_handle_t
-   public :: hillstab_c_system_new, hillstab_c_system_free, hillstab_c_system_set, hillstab_c_system_check, &
-      hillstab_c_system_dof, hillstab_c_system_monodromy, hillstab_c_system_floquet
-   public :: min_system_tolerance, handle_system, check_output, outcome_status, check_method_tolerance
+   public :: hillstab_c_system_new, hillstab_c_system_new_named, hillstab_c_system_free, hillstab_c_system_set, &
+      hillstab_c_system_set_text, hillstab_c_system_check, hillstab_c_system_dof, hillstab_c_system_monodromy, &
+      hillstab_c_system_floquet
+   public :: min_system_tolerance, handle_system, check_output, outcome_status, check_method_tolerance, &
+      own_damping_refusal
 
    !> Tolerances must lie strictly between this and 1.
    real(wp), parameter :: min_system_tolerance = 1.0e-15_wp
 
-   !> What a `hillstab_system *` points to: one matrix system, with its data.
+   !> What a `hillstab_system *` points to: one system (a matrix system or an equations
+   !> system), with its data.
    type :: system_handle_t
-      type(matrix_system_t) :: system  !! the system (empty until its variables are set)
+      class(hill_system_t), allocatable :: system  !! the system (empty until its variables are set)
    end type system_handle_t
 
 contains
@@ -115,10 +125,55 @@ contains
       else
          call c_f_pointer(system, out)
          allocate (handle)
+         allocate (matrix_system_t :: handle%system)
          out = c_loc(handle)
       end if
       status = outcome_status(error)
    end function hillstab_c_system_new
+
+   !> `int hillstab_system_new_named(const char *name, hillstab_system **system)`: an empty
+   !> system of the kind `name` (any case): "system", the matrix system (as
+   !> hillstab_system_new), or "equations", n coupled equations in physical time (its `n` by
+   !> hillstab_system_set, its texts by hillstab_system_set_text); err_invalid_parameter naming
+   !> `name` for another, `*system` untouched on failure. Free it with hillstab_system_free.
+   function hillstab_c_system_new_named(name, system) result(status) bind(C, name="hillstab_system_new_named")
+      type(c_ptr), value, intent(in) :: name    !! the kind, NUL-terminated
+      type(c_ptr), value, intent(in) :: system  !! where the handle goes (a `hillstab_system **`)
+      integer(c_int) :: status
+      character(len=*), parameter :: where = "hillstab_system_new_named"
+      type(c_ptr), pointer :: out
+      type(system_handle_t), pointer :: handle
+      type(error_t), allocatable :: error
+      character(kind=c_char), pointer :: chars(:)
+      character(len=:), allocatable :: which
+      logical :: ok
+      if (.not. c_associated(name)) then
+         call set_error(error, err_invalid_parameter, where//": name: a null pointer (""system"" or ""equations"")")
+      else if (.not. c_associated(system)) then
+         call set_error(error, err_invalid_parameter, where//": system: a null pointer (pass the address of a "// &
+            "hillstab_system *)")
+      else
+         call c_f_pointer(name, chars, [max_c_text + 1])
+         call c_text(chars, which, ok)
+         if (.not. ok) then
+            call set_error(error, err_invalid_parameter, where//": name: longer than "//integer_text(max_c_text)// &
+               " characters")
+         else if (lower_case(which) /= "system" .and. lower_case(which) /= "equations") then
+            call set_error(error, err_invalid_parameter, where//": name: unknown system '"//which//"' (system: "// &
+               "the matrix system of &system; equations: n coupled equations in physical time, &equations)")
+         else
+            call c_f_pointer(system, out)
+            allocate (handle)
+            if (lower_case(which) == "system") then
+               allocate (matrix_system_t :: handle%system)
+            else
+               allocate (equations_system_t :: handle%system)
+            end if
+            out = c_loc(handle)
+         end if
+      end if
+      status = outcome_status(error)
+   end function hillstab_c_system_new_named
 
    !> `void hillstab_system_free(hillstab_system *system)`: release a system (a null pointer
    !> is ignored).
@@ -151,7 +206,7 @@ contains
       real(c_double), pointer :: numbers(:)
       real(wp), allocatable :: list(:)
       character(len=:), allocatable :: name, refusal
-      type(matrix_system_t) :: saved
+      class(hill_system_t), allocatable :: saved
       logical :: ok, known
       integer :: count_read
       call handle_system(where, system, handle, error)
@@ -181,16 +236,69 @@ contains
             call c_f_pointer(values, numbers, [count_read])
             list = real(numbers, wp)
          end if
-         saved = handle%system
+         allocate (saved, source=handle%system)
          call handle%system%set_values(name, list, error)
-         if (.not. allocated(error)) call check_variable(handle%system, name, list, error)
+         if (.not. allocated(error)) then
+            select type (matrix => handle%system)
+            type is (matrix_system_t)
+               call check_variable(matrix, name, list, error)
+            end select
+         end if
          if (allocated(error)) then
-            handle%system = saved
+            call move_alloc(saved, handle%system)
             error%message = where//": "//error%message
          end if
       end if
       status = outcome_status(error)
    end function hillstab_c_system_set
+
+   !> `int hillstab_system_set_text(hillstab_system *system, const char *variable, const char
+   !> *text)`: set a text variable of the system (the equations system's `parameters`,
+   !> `matrices`, `stiffness`, `mass`, `damping`, `gyroscopic`, `frequency`, `period`,
+   !> `alpha`, `beta`: its `set_text`, as in the scene group &equations); err_invalid_parameter
+   !> naming the variable when the system has no such variable or the text is too long, the
+   !> system then as before the call. What the texts say together (they parse, the matrices
+   !> have n rows of n entries, the axes are parameters, ...) is checked by
+   !> hillstab_system_check and by every computation, naming the variable.
+   function hillstab_c_system_set_text(system, variable, text) result(status) bind(C, name="hillstab_system_set_text")
+      type(c_ptr), value, intent(in) :: system    !! the handle
+      type(c_ptr), value, intent(in) :: variable  !! the variable's name, NUL-terminated
+      type(c_ptr), value, intent(in) :: text      !! its text, NUL-terminated
+      integer(c_int) :: status
+      character(len=*), parameter :: where = "hillstab_system_set_text"
+      type(system_handle_t), pointer :: handle
+      type(error_t), allocatable :: error
+      character(kind=c_char), pointer :: chars(:)
+      character(len=:), allocatable :: name, value
+      class(hill_system_t), allocatable :: saved
+      logical :: ok
+      call handle_system(where, system, handle, error)
+      if (.not. allocated(error) .and. .not. c_associated(variable)) &
+         call set_error(error, err_invalid_parameter, where//": variable: a null pointer")
+      if (.not. allocated(error)) then
+         call c_f_pointer(variable, chars, [max_c_text + 1])
+         call c_text(chars, name, ok)
+         if (.not. ok) call set_error(error, err_invalid_parameter, where//": variable: the name is longer than "// &
+            integer_text(max_c_text)//" characters")
+      end if
+      if (.not. allocated(error) .and. .not. c_associated(text)) &
+         call set_error(error, err_invalid_parameter, where//": "//name//": the text is a null pointer")
+      if (.not. allocated(error)) then
+         call c_f_pointer(text, chars, [max_equations_text + 1])
+         call c_text(chars, value, ok, limit=max_equations_text)
+         if (.not. ok) call set_error(error, err_invalid_parameter, where//": "//name//": the text is longer "// &
+            "than the "//integer_text(max_equations_text)//" characters a text may have")
+      end if
+      if (.not. allocated(error)) then
+         allocate (saved, source=handle%system)
+         call handle%system%set_text(name, value, error)
+         if (allocated(error)) then
+            call move_alloc(saved, handle%system)
+            error%message = where//": "//error%message
+         end if
+      end if
+      status = outcome_status(error)
+   end function hillstab_c_system_set_text
 
    !> Check one matrix variable on its own once n is given: a system of n, the variable and
    !> otherwise defaults (a unit drive where the variable is not one) must be complete;
@@ -257,19 +365,21 @@ contains
       call handle_system(where, system, handle, error)
       call check_output(where, "n", n, error)
       if (.not. allocated(error)) then
-         if (handle%system%n < 1) then
+         if (handle%system%dof() < 1) then
             call set_error(error, err_invalid_parameter, where//": n: the degrees of freedom are not given "// &
                "(hillstab_system_set(system, ""n"", ...) first)")
          else
             call c_f_pointer(n, out)
-            out = int(handle%system%n, c_int)
+            out = int(handle%system%dof(), c_int)
          end if
       end if
       status = outcome_status(error)
    end function hillstab_c_system_dof
 
-   !> Everything a point needs, checked: the handle, the method and tolerance, α, β, ε, the
-   !> system complete, prepared at ε; then the monodromy. `error` names the argument, its
+   !> Everything a point needs, checked: the handle, the method and tolerance, α, β, ε (0 for
+   !> a system with a damping of its own), the system complete, prepared at ε (and at α for
+   !> a system whose damping changes from row to row, as the tasks prepare it); then the
+   !> monodromy. `error` names the argument, its
    !> message prefixed by `where`.
    subroutine system_point(where, system, alpha, beta, epsilon, method, tolerance, handle, form, result, error)
       character(len=*), intent(in) :: where            !! the entry point
@@ -295,14 +405,37 @@ contains
          call set_error(error, err_invalid_parameter, "epsilon: the damping must be finite and >= 0, got "// &
             real_text(real(epsilon, wp)))
       end if
-      if (.not. allocated(error)) call check_system_point(handle%system, real(alpha, wp), real(beta, wp), error)
+      if (.not. allocated(error)) call own_damping_refusal(handle%system, real(epsilon, wp), "", error)
       if (.not. allocated(error)) call handle%system%check_values(error)
-      if (.not. allocated(error)) call prepare_system(handle%system, real(epsilon, wp), form, error)
+      if (.not. allocated(error)) call check_system_point(handle%system, real(alpha, wp), real(beta, wp), error)
+      if (.not. allocated(error)) then
+         if (handle%system%row_dependent()) then
+            call prepare_system(handle%system, real(epsilon, wp), form, error, alpha=real(alpha, wp))
+         else
+            call prepare_system(handle%system, real(epsilon, wp), form, error)
+         end if
+      end if
       if (.not. allocated(error)) call system_monodromy(handle%system, form, real(alpha, wp), real(beta, wp), &
                                                         system_method_t(int(method), real(tolerance, wp)), nodes, &
                                                         result, error)
       if (allocated(error)) error%message = where//": "//error%message
    end subroutine system_point
+
+   !> err_invalid_parameter naming `epsilon` when a system that carries its own damping (the
+   !> equations system: its C, in its own units) is given a damping ε > 0 as well (nothing
+   !> done when `error` is already allocated); `place` ("point 3: ", "the grid: " or "")
+   !> follows the argument's name.
+   subroutine own_damping_refusal(system, epsilon, place, error)
+      class(hill_system_t), intent(in) :: system  !! the system
+      real(wp), intent(in) :: epsilon             !! the damping given
+      character(len=*), intent(in) :: place       !! where, for the message
+      type(error_t), allocatable, intent(inout) :: error  !! the refusal
+      if (allocated(error)) return
+      if (system%takes_scene_damping() .or. .not. epsilon > 0.0_wp) return
+      call set_error(error, err_invalid_parameter, "epsilon: "//place//"the "//system%name()//" system carries "// &
+         "its own damping (its variable damping, in its own units, converted at every row): epsilon must be 0, "// &
+         "got "//real_text(epsilon))
+   end subroutine own_damping_refusal
 
    !> err_invalid_parameter naming `method` (not a system method's code) or `tolerance` (not
    !> strictly between 1e-15 and 1).

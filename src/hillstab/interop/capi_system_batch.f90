@@ -6,10 +6,13 @@
 !> lambda_max, mu, argument, mu_1 … mu_n, defect, error_estimate, status, steps) and a
 !> status per point: 0 within the tolerance, 1 round-off limited, 2 failed (placeholders, as
 !> a file writes them). A call whose input is invalid (a null pointer, an unknown method, a
-!> tolerance outside (1e-15, 1), a non-finite α or β, a negative or non-finite ε, a point
-!> beyond what the system's methods integrate) computes nothing and names the argument and
-!> the point; one whose points failed returns HILLSTAB_ERR_POINTS_FAILED with every value
-!> written. Conventions as in hillstab_interop_capi_system.
+!> tolerance outside (1e-15, 1), a non-finite α or β, a negative or non-finite ε, an ε ≠ 0
+!> for a system with a damping of its own, a point beyond what the system's methods
+!> integrate) computes nothing and names the argument and the point; one whose points failed
+!> returns HILLSTAB_ERR_POINTS_FAILED with every value written. A system whose damping
+!> changes from row to row (the equations system) is prepared at each point's α, as the
+!> tasks prepare it (hillstab_batch_tasks_system `system_values`, `system_row_values`).
+!> Conventions as in hillstab_interop_capi_system.
 !>
 !>```c
 !> double alpha[2] = {0.1, 0.2}, beta[2] = {1.0, 1.0}, eps[2] = {0, 0};
@@ -33,7 +36,7 @@ module hillstab_interop_capi_system_batch
    use hillstab_interop_sizes, only: count_refusal
    use hillstab_interop_capi_models, only: copy_text
    use hillstab_interop_capi_system, only: system_handle_t, handle_system, check_output, outcome_status, &
-      check_method_tolerance
+      check_method_tolerance, own_damping_refusal
    !$ use omp_lib, only: omp_get_max_threads
    implicit none
    private
@@ -58,7 +61,7 @@ contains
       if (.not. allocated(error)) call complete(where, handle, error)
       if (.not. allocated(error)) then
          call c_f_pointer(count, out)
-         out = int(n_fixed + handle%system%n, c_int)
+         out = int(n_fixed + handle%system%dof(), c_int)
       end if
       status = outcome_status(error)
    end function hillstab_c_system_column_count
@@ -80,7 +83,7 @@ contains
       call handle_system(where, system, handle, error)
       if (.not. allocated(error)) call complete(where, handle, error)
       if (.not. allocated(error)) then
-         names = system_column_names(handle%system%n)
+         names = system_column_names(handle%system%dof())
          if (index < 0 .or. index >= size(names)) then
             call set_error(error, err_invalid_parameter, where//": index: "//integer_text(int(index))// &
                " outside 0 to "//integer_text(size(names) - 1))
@@ -124,12 +127,14 @@ contains
             if (allocated(error)) exit
          end do
       end if
+      ! the system checked as task points checks it (prepared at its given damping; a system
+      ! whose damping changes with α is prepared again at each point by system_values)
       if (.not. allocated(error) .and. n_points > 0) then
          call prepare_system(handle%system, real(epsilon(1), wp), form, error)
          if (allocated(error)) error%message = where//": "//error%message
       end if
       if (.not. allocated(error) .and. n_points > 0) then
-         n_columns = n_fixed + handle%system%n
+         n_columns = n_fixed + handle%system%dof()
          call c_f_pointer(values, v, [n_columns, n_points])
          call c_f_pointer(status, s, [n_points])
          ! runs of 8 points, each run preparing the system at its points' damping
@@ -139,7 +144,7 @@ contains
                             epsilon(j:min(j + 7, n_points)), v(:, j:min(j + 7, n_points)))
          end do
          !$omp end parallel do
-         s = int(nint(v(13 + handle%system%n, :)), c_int)
+         s = int(nint(v(13 + handle%system%dof(), :)), c_int)
          n_failed = count(s == status_failed)
          if (n_failed > 0) then
             j = findloc(s, int(status_failed, c_int), dim=1)
@@ -206,6 +211,8 @@ contains
          if (.not. allocated(error)) call check_input_point(where, handle, -1, alpha_max, beta_min, epsilon, error)
          if (.not. allocated(error)) call check_input_point(where, handle, -1, alpha_max, beta_max, epsilon, error)
       end if
+      ! checked as task chart checks it; a row-dependent system is prepared again per point
+      ! (system_row_values)
       if (.not. allocated(error) .and. rows > 0 .and. columns > 0) then
          call prepare_system(handle%system, real(epsilon, wp), form, error)
          if (allocated(error)) error%message = where//": "//error%message
@@ -213,7 +220,7 @@ contains
       if (.not. allocated(error) .and. rows > 0 .and. columns > 0) then
          call c_f_pointer(alphas, a, [rows])
          call c_f_pointer(betas, b, [columns])
-         call c_f_pointer(values, v, [n_fixed + handle%system%n, columns, rows])
+         call c_f_pointer(values, v, [n_fixed + handle%system%dof(), columns, rows])
          call c_f_pointer(status, s, [columns, rows])
          a = [(grid_value(alpha_min, alpha_max, rows, i), i=1, rows)]
          b = [(grid_value(beta_min, beta_max, columns, j), j=1, columns)]
@@ -222,7 +229,7 @@ contains
          do i = 1, rows
             call system_row_values(handle%system, form, system_method_t(int(method), real(tolerance, wp)), &
                                    real(a(i), wp), real(b, wp), v(:, :, i), n_failed(i), failures(i))
-            s(:, i) = int(nint(v(13 + handle%system%n, :, i)), c_int)
+            s(:, i) = int(nint(v(13 + form%n, :, i)), c_int)
          end do
          !$omp end parallel do
          if (sum(n_failed) > 0) then
@@ -237,7 +244,8 @@ contains
 
    !> A run of points of `hillstab_system_points`, each computed alone, the system prepared
    !> again where a point's damping differs from the one before (a system valid at one ε is
-   !> valid at every finite ε ≥ 0).
+   !> valid at every finite ε ≥ 0; `system_values` prepares a row-dependent system at each
+   !> point's α).
    subroutine run_values(handle, method, tolerance, alpha, beta, epsilon, v)
       type(system_handle_t), intent(in) :: handle  !! the system
       integer(c_int), intent(in) :: method  !! the method's code
@@ -297,8 +305,9 @@ contains
       if (allocated(error)) error%message = where//": "//error%message
    end subroutine complete
 
-   !> A point's α and β finite, ε finite and ≥ 0, and within what the methods integrate;
-   !> the message names the point (`index` ≥ 0) or the grid.
+   !> A point's α and β finite, ε finite and ≥ 0 (0 for a system with a damping of its own),
+   !> and within what the methods integrate; the message names the point (`index` ≥ 0) or
+   !> the grid.
    subroutine check_input_point(where, handle, index, alpha, beta, epsilon, error)
       character(len=*), intent(in) :: where  !! the entry point
       type(system_handle_t), intent(in) :: handle  !! the system
@@ -320,6 +329,9 @@ contains
       else if (epsilon < 0.0_wp) then
          call set_error(error, err_invalid_parameter, where//": epsilon: "//place//": must be finite and >= 0, got "// &
             real_text(real(epsilon, wp)))
+      else if (.not. handle%system%takes_scene_damping() .and. epsilon > 0.0_wp) then
+         call own_damping_refusal(handle%system, real(epsilon, wp), place//": ", error)
+         error%message = where//": "//error%message
       else
          call check_system_point(handle%system, real(alpha, wp), real(beta, wp), error)
          if (allocated(error)) error%message = where//": "//place//" (alpha = "//real_text(real(alpha, wp))// &

@@ -66,6 +66,11 @@ contains
             call fail(error, path, "scene", "epsilon", "the "//scene%model%name()//" model carries its own "// &
                "damping (&"//scene%model%name()//" damping, in its own units, converted at every point): "// &
                "epsilon must be 0")
+      else if (.not. allocated(error)) then
+         if (.not. scene%system%takes_scene_damping() .and. scene%epsilon > 0.0_wp) &
+            call fail(error, path, "scene", "epsilon", "the "//scene%system%name()//" system carries its own "// &
+               "damping (&"//scene%system%name()//" damping, in its own units, converted at every row): "// &
+               "epsilon must be 0")
       end if
       if (.not. allocated(error)) then
          call new_task(task_name, task, cause, system=allocated(scene%system))

@@ -1,0 +1,160 @@
+"""Equations systems from Python (`hillstab.Equations`): Bolotin's column of
+docs/guide/your-problem.md, written with numpy matrices and a dict of parameters, equals the
+command line's binary chart and points files (model 'equations') to the bit, every column,
+its axes named after the parameters Om and P1 too; arrays of any shapes that broadcast equal
+the points one by one; at points of data/reference/physical_set.dat (set 3: the monodromy of
+the physical column by Taylor series in 45 digits) the trace and all six multipliers lie
+within the tolerance; the texts of the scene give the same system; bad input raises
+ValueError naming the variable (epsilon too: the damping is the system's own)."""
+import os
+
+import numpy as np
+import pytest
+
+import hillstab
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+MATRICES = {"W": np.diag([1.0, 16.0, 81.0]), "S": [[1, 0.3, 0.1], [0.3, 4, 0.4], [0.1, 0.4, 9]],
+            "Z": np.diag([1.0, 4.0, 9.0])}
+COLUMN = dict(stiffness="W - (P0 + P1*cos(Om*t))*S", frequency="Om", damping="2*zeta*Z", matrices=MATRICES,
+              parameters={"P0": 0.3, "P1": 0.0, "Om": 2.0, "zeta": 0.01}, alpha="Om", beta="P1")
+GROUP = """&equations n = 3, parameters = 'P0 = 0.3, P1 = 0, Om = 2, zeta = 0.01',
+  matrices = 'W = [1, 0, 0; 0, 16, 0; 0, 0, 81], S = [1, 0.3, 0.1; 0.3, 4, 0.4; 0.1, 0.4, 9], Z = [1, 0, 0; 0, 4, 0; 0, 0, 9]',
+  stiffness = 'W - (P0 + P1*cos(Om*t))*S', damping = '2*zeta*Z', frequency = 'Om', alpha = 'Om', beta = 'P1' /
+"""
+SCENE = ("&scene task = '{task}', model = 'equations', method = '{method}', tolerance = 1e-10, output = '{name}', "
+         "format = 'binary' /\n" + GROUP + "{group}\n")
+POINTS = [(1.6726, 0.0), (1.6, 0.4), (4.68, 0.3), (10.0, 0.0), (0.84, 0.8), (7.69, 0.5), (2.34, 1.0)]
+
+
+def same_bits(a, b):
+    a = np.ascontiguousarray(a, dtype=np.float64).ravel()
+    b = np.ascontiguousarray(b, dtype=np.float64).ravel()
+    return a.shape == b.shape and np.array_equal(a.view(np.uint64), b.view(np.uint64))
+
+
+@pytest.fixture(scope="module")
+def column():
+    return hillstab.Equations(**COLUMN)
+
+
+def test_the_column(column):
+    assert column.n == 3 and column.axes == ("Om", "P1")
+    assert column.column_names()[:3] == ("alpha", "beta", "trace")
+    assert repr(column) == "hillstab.Equations(n=3, alpha='Om', beta='P1')"
+    f = column.floquet(1.6, 0.4)
+    assert f.verdict == 0 and f.kind_name == "parametric at -1" and f.multipliers.shape == (6,)
+
+
+def test_chart_equals_the_command_line(cli, column):
+    cli.run("col", SCENE.format(task="chart", method="auto", name="col", group="&chart alpha_min = 1.2, "
+                                "alpha_max = 2.1, n_alpha = 7, beta_min = 0.0, beta_max = 1.2, n_beta = 6 /"))
+    out = hillstab.read_output(cli.path("col_chart.bin"))
+    c = column.chart((1.2, 2.1, 7), (0.0, 1.2, 6), threads=2)
+    assert out.grid_shape == (7, 6) and list(c.names) == out.columns
+    for name in out.columns:
+        assert same_bits(c[name], out.grid(name)), name
+    assert same_bits(c.Om, c.alpha) and same_bits(c.P1, c.beta)
+    assert same_bits(c.Om, out.axes[0]) and same_bits(c.P1, out.axes[1])
+    assert set(np.unique(c.stable)) == {0, 1}
+
+
+@pytest.mark.parametrize("method", ["auto", "magnus6"])
+def test_points_equal_the_command_line(cli, column, method):
+    with open(cli.path("col.pts"), "w") as handle:
+        handle.write("".join("{!r} {!r}\n".format(om, p1) for om, p1 in POINTS))
+    cli.run("pts", SCENE.format(task="points", method=method, name="pts", group="&points file = 'col.pts' /"))
+    out = hillstab.read_output(cli.path("pts_points.bin"))
+    om, p1 = np.array(POINTS).T
+    r = column.points(om, p1, method=method, threads=2)
+    assert list(r.names) == out.columns
+    for name in out.columns:
+        assert same_bits(r[name], out[name]), name
+    assert same_bits(r.Om, om) and same_bits(r.P1, p1)
+    assert np.all(r.status == 0)
+
+
+def test_arrays_equal_points_one_by_one(column):
+    om = np.array([[1.6, 4.68], [7.69, 10.0]])
+    p1 = np.array([0.0, 0.3, 0.9])[:, np.newaxis, np.newaxis]
+    r = column.floquet(om, p1)
+    assert r.trace.shape == (3, 2, 2) and r.exponents.shape == (3, 2, 2, 3)
+    for index in np.ndindex(r.trace.shape):
+        one = column.floquet(om[index[1:]], p1[index[0], 0, 0])
+        assert same_bits(one.trace, r.trace[index]) and same_bits(one.a2, r.a2[index])
+        assert same_bits(one.exponents, r.exponents[index])
+        assert one.verdict == r.verdict[index] and one.kind == r.kind[index] and one.status == r.status[index]
+    assert same_bits(r.Om, np.broadcast_to(om, r.trace.shape))
+
+
+def test_against_the_physical_reference(column):
+    rows = [line.split() for line in open(os.path.join(ROOT, "data", "reference", "physical_set.dat"))
+            if line.startswith("3 ")]
+    assert len(rows) == 50
+    tolerance = 1e-10
+    for row in rows[::7]:
+        om, p1, trace = float(row[1]), float(row[2]), float(row[3])
+        reference = np.array([float(row[4 + 2 * j]) + 1j * float(row[5 + 2 * j]) for j in range(6)])
+        f = column.floquet(om, p1, tolerance=tolerance)
+        phi, estimate, status = column.monodromy(om, p1, tolerance=tolerance)
+        assert f.status == 0 and status == 0
+        scale = max(1.0, float(np.abs(phi).max()))
+        assert abs(f.trace - trace) <= 6 * tolerance * scale, (om, p1)
+        computed = f.multipliers * np.exp(f.log_scale)
+        for z in reference:
+            assert np.min(np.abs(computed - z)) <= tolerance * max(1.0, abs(z)), (om, p1, z)
+
+
+def test_texts_give_the_same_system(column):
+    texts = hillstab.Equations("W - (P0 + P1*cos(Om*t))*S", frequency="Om", damping="2*zeta*Z", n=3,
+                               matrices="W = [1, 0, 0; 0, 16, 0; 0, 0, 81], S = [1, 0.3, 0.1; 0.3, 4, 0.4; "
+                                        "0.1, 0.4, 9], Z = [1, 0, 0; 0, 4, 0; 0, 0, 9]",
+                               parameters="P0 = 0.3, P1 = 0, Om = 2, zeta = 0.01", alpha="Om", beta="P1")
+    a = texts.points([1.6, 4.68], [0.4, 0.3])
+    b = column.points([1.6, 4.68], [0.4, 0.3])
+    assert all(same_bits(a[name], b[name]) for name in a.names)
+    # a period instead of the frequency, a number for the mass
+    period = hillstab.Equations(**dict(COLUMN, frequency=None, period="2*pi/Om", mass=1))
+    assert same_bits(period.floquet(1.6, 0.4).trace, column.floquet(1.6, 0.4).trace)
+
+
+@pytest.mark.parametrize("change, variable, words", [
+    (dict(matrices="W = [1, 0, 0; 0, 16, 0; 0, 0, 81], S = [1, 0.3; 0.3, 4, 0.4; 0.1, 0.4, 9], "
+                   "Z = [1, 0, 0; 0, 4, 0; 0, 0, 9]", n=3), "matrices", "S, row 1 has 2 entries"),
+    (dict(matrices=dict(MATRICES, S=np.eye(2))), "matrices", "S: must be an n x n array, n = 3"),
+    (dict(matrices=dict(MATRICES, S=[[1, 0, np.nan], [0, 1, 0], [0, 0, 1]])), "matrices", "finite"),
+    (dict(stiffness="W - (P0 + P1*cos(Om*t))*Q"), "stiffness", "unknown name 'Q'"),
+    (dict(stiffness="W - (P0 + P1*cos(Om*t)*S"), "stiffness", "column"),
+    (dict(alpha="Omega"), "alpha", "'Omega' is no parameter"),
+    (dict(alpha="P1", beta="Om"), "beta", "frequency"),
+    (dict(damping="2*zeta*Z*t"), "damping", ""),
+    (dict(parameters={"P0": 0.3, "P1": 0.0, "Om": float("inf"), "zeta": 0.01}), "parameters: Om", "finite"),
+    (dict(n=4), "matrices", "n = 4"),
+])
+def test_bad_input_named(change, variable, words):
+    with pytest.raises(ValueError) as caught:
+        hillstab.Equations(**dict(COLUMN, **change))
+    message = str(caught.value)
+    assert variable + ":" in message and words in message, message
+
+
+@pytest.mark.parametrize("change, variable", [
+    (dict(stiffness=3.0), "stiffness"),
+    (dict(alpha=1), "alpha"),
+    (dict(mass=1j), "mass"),
+    (dict(matrices=dict(MATRICES, S=np.eye(3) * 1j)), "matrices: S"),
+    (dict(matrices=[np.eye(3)]), "matrices"),
+])
+def test_wrong_types_named(change, variable):
+    with pytest.raises(TypeError) as caught:
+        hillstab.Equations(**dict(COLUMN, **change))
+    assert str(caught.value).startswith(variable + ":"), str(caught.value)
+
+
+def test_epsilon_refused(column):
+    with pytest.raises(ValueError, match="epsilon: the equations system carries its own damping"):
+        column.floquet(1.6, 0.4, epsilon=0.1)
+    with pytest.raises(ValueError, match="epsilon: point 1: the equations system carries its own damping"):
+        column.floquet([1.6, 1.7], [0.4, 0.4], epsilon=[0.0, 0.1])
+    with pytest.raises(ValueError, match="epsilon: the grid: the equations system carries its own damping"):
+        column.chart((1.2, 2.1, 3), (0.0, 1.2, 3), epsilon=0.05)
