@@ -12,8 +12,11 @@ if (!exists("out")) out = 'out/system_pendula.png'
 set encoding utf8
 set terminal pngcairo size 1500,650 font "Sans,11"
 set output out
-set xrange [low(file, 'alpha'):high(file, 'alpha')]
-set yrange [low(file, 'beta'):high(file, 'beta')]
+# the first two columns are the axes (alpha and beta, or an equations system's parameters)
+x_name = word(column_names(file), 1)
+y_name = word(column_names(file), 2)
+set xrange [low(file, x_name):high(file, x_name)]
+set yrange [low(file, y_name):high(file, y_name)]
 # an equations system (model 'equations') names its axes' parameters in &equations alpha, beta
 x_axis = scene_value(file, 'alpha')
 y_axis = scene_value(file, 'beta')
@@ -29,11 +32,11 @@ set cbtics ("stable" 0, "unstable at +1" 1, "unstable at −1" 2, "combination" 
 set multiplot layout 1,2 title sprintf("System of Hill equations, n = %d; %s", int(real(scene_value(file, 'n'))), \
    method_title(file)) font ",11" noenhanced
 set title "verdict from the multipliers, by kind"
-plot named(file) using 'alpha':'beta':(shade(column('stable'), column('kind'))) with image notitle
+plot named(file) using 1:2:(shade(column('stable'), column('kind'))) with image notitle
 set title "largest Floquet exponent μ = ln|λ|max / P"
 set palette defined (0 "#ffffff", 0.2 "#f6d28b", 0.6 "#d9730d", 1 "#5a1a00")
 set palette maxcolors 0
 set cbrange [0:*]
 set cbtics auto font ",9"
-plot named(file) using 'alpha':'beta':'mu' with image notitle
+plot named(file) using 1:2:'mu' with image notitle
 unset multiplot

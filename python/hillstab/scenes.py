@@ -85,7 +85,7 @@ class Output:
         physical = _group(self.header, "physical")
         if chart is not None and _variable(chart, "n_alpha", int) is not None:
             names, group = ("alpha", "beta"), chart
-            equation = _group(self.header, "equation")
+            equation = _group(self.header, "equation") or _group(self.header, "equations")
             if equation is not None and _variable(equation, "alpha") and _variable(equation, "beta"):
                 # an equation's axes are its parameters, and the columns are named after them
                 names = (_variable(equation, "alpha"), _variable(equation, "beta"))

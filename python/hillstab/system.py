@@ -567,12 +567,19 @@ class Equations(System):
         #: the period of the system in τ = Ωt/π (one period of K is τ in [0, 2])
         self.period = 2.0
 
+    def column_names(self):
+        """The columns of the system's chart and points files: the first two named after the
+        axes' parameters, as the files name them."""
+        names = super().column_names()
+        return tuple(self.axes) + names[2:]
+
     def _result(self, values, status, shape, extra=None):
         result = super()._result(values, status, shape, extra)
-        # the axes by their parameters' names too, unless a column or attribute has that name
         for name, key in zip(self.axes, ("alpha", "beta")):
-            if name and name not in result.names and not hasattr(result, name):
-                setattr(result, name, getattr(result, key))
+            # the columns also by their generic names, and a chart's axes by the parameters'
+            result._arrays.setdefault(key, result._arrays[name])
+            if extra and key in extra:
+                setattr(result, name, extra[key])
         return result
 
     def __repr__(self):

@@ -40,7 +40,7 @@ def column():
 
 def test_the_column(column):
     assert column.n == 3 and column.axes == ("Om", "P1")
-    assert column.column_names()[:3] == ("alpha", "beta", "trace")
+    assert column.column_names()[:3] == ("Om", "P1", "trace")
     assert repr(column) == "hillstab.Equations(n=3, alpha='Om', beta='P1')"
     f = column.floquet(1.6, 0.4)
     assert f.verdict == 0 and f.kind_name == "parametric at -1" and f.multipliers.shape == (6,)

@@ -45,6 +45,7 @@ contains
          new_unittest("auto_chart_grid", auto_chart_grid), &
          new_unittest("column_against_reference", column_against_reference), &
          new_unittest("chart_row_equals_points", chart_row_equals_points), &
+         new_unittest("tasks_on_equations", tasks_on_equations), &
          new_unittest("bad_scene_input", bad_scene_input)])
    end function collect_model_equation
 
@@ -463,6 +464,59 @@ contains
       call check(ctx, n_compared == 6, "6 points compared")
       call delete_file(pairs)
    end subroutine chart_row_equals_points
+
+   !> The tasks an equation takes: `coefficient` (Q(τ) at the axes' values) for one equation
+   !> and for a system, a system's chart naming its axis columns after its parameters (and
+   !> `columns` taking those names or alpha/beta); `boundaries` refused for both, naming
+   !> &scene task, with no file written.
+   subroutine tasks_on_equations(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=300) :: one(3), system(4)
+      character(len=:), allocatable :: written, out
+      character(len=1024), allocatable :: lines(:)
+      type(error_t), allocatable :: error
+      one(2) = "&equation parameters = 'g = 9.81, l = 0.2, A = 0.005, w = 314.16', stiffness = "// &
+               "'-g/l + A*w^2/l*cos(w*t)', frequency = 'w', alpha = 'w', beta = 'A' /"
+      system(2) = "&equations n = 2, parameters = 'P1 = 0, Om = 2', matrices = 'W = [1, 0; 0, 4], "// &
+                  "S = [1, 0.3; 0.3, 2]', stiffness = 'W - P1*cos(Om*t)*S', damping = '0.02*W',"
+      system(3) = "  frequency = 'Om', alpha = 'Om', beta = 'P1' /"
+      ! coefficient
+      out = scratch_prefix("equation_task")
+      one(1) = "&scene task = 'coefficient', model = 'equation', output = '"//out//"' /"
+      one(3) = "&coefficient alphas = 314.16, beta = 0.01 /"
+      call run_text_scene("equation_task", one, error, written)
+      call check(ctx, .not. allocated(error), "one equation's coefficient runs")
+      if (.not. allocated(error)) call delete_file(written)
+      system(1) = "&scene task = 'coefficient', model = 'equations', output = '"//out//"' /"
+      system(4) = "&coefficient alphas = 2.0 /"
+      call run_text_scene("equation_task", system, error, written)
+      call check(ctx, .not. allocated(error), "a system's coefficient runs")
+      if (.not. allocated(error)) call delete_file(written)
+      ! a system's chart: its axis columns named after the axes
+      system(1) = "&scene task = 'chart', model = 'equations', columns = 'Om beta stable kind', output = '"// &
+                  out//"' /"
+      system(4) = "&chart alpha_min = 1.5, alpha_max = 2.5, n_alpha = 3, beta_min = 0, beta_max = 0.5, n_beta = 3 /"
+      call run_text_scene("equation_task", system, error, written)
+      call check(ctx, .not. allocated(error), "a system's chart runs")
+      if (.not. allocated(error)) then
+         lines = read_lines(written)
+         call check(ctx, any(index(lines, "# columns: Om P1 stable kind") == 1), "the axis columns named Om, P1")
+         call delete_file(written)
+      end if
+      ! boundaries refused
+      one(1) = "&scene task = 'boundaries', model = 'equation', output = '"//out//"' /"
+      one(3) = "&chart alpha_min = 300, alpha_max = 320, n_alpha = 2, beta_min = 0, beta_max = 0.01, n_beta = 20 /"
+      call run_text_scene("equation_task", one, error, written)
+      call check(ctx, allocated(error), "boundaries of an equation refused")
+      if (allocated(error)) call check(ctx, error%code == err_input .and. index(error%message, "&scene: task:") > 0, &
+                                       "named: "//error%message)
+      call check(ctx, .not. file_exists(out//"_boundaries.dat"), "no file written")
+      system(1) = "&scene task = 'boundaries', model = 'equations', output = '"//out//"' /"
+      call run_text_scene("equation_task", system, error, written)
+      call check(ctx, allocated(error), "boundaries of an equations system refused")
+      if (allocated(error)) call check(ctx, error%code == err_input .and. index(error%message, "&scene: task:") > 0, &
+                                       "named: "//error%message)
+   end subroutine tasks_on_equations
 
    !> Bad equations: exit 2 naming the file, the group and the variable, with what is
    !> wrong (the column of a parse error, the known names, the parameters' values and t of

@@ -169,6 +169,14 @@ contains
       type(scene_file_t), intent(in) :: file      !! the scene file
       type(scene_t), intent(in) :: scene          !! the `&scene` settings
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
+      if (.not. scene%model%takes_scene_damping()) then
+         ! its curves are traced in beta at each alpha from a Q whose beta is its mean stiffness
+         call fail(error, file%path, "scene", "task", "task 'boundaries' takes the models of (alpha, beta) "// &
+            "(elastic, mathieu, meissner, fourier, sampled, modulated); the "//scene%model%name()//" model: chart "// &
+            "it (task 'chart'), take its points (task 'points'), or find its critical drives along an axis "// &
+            "(hillstab_critical_drives_along, Python critical_drives)")
+         return
+      end if
       if (scene%epsilon > 0.0_wp .and. .not. scene%physical) then
          call fail(error, file%path, "scene", "epsilon", "task 'boundaries' draws the undamped curves: epsilon must be 0")
          return

@@ -142,6 +142,16 @@ contains
       names(11 + n:) = fixed_names(11:)
    end function system_column_names
 
+   !> The columns of the scene's system as its files name them: `system_column_names`, the
+   !> first two named after the system's axes (an equations system's parameters).
+   function scene_column_names(system) result(names)
+      class(hill_system_t), intent(in) :: system  !! the system
+      character(len=14), allocatable :: names(:)
+      names = system_column_names(system%dof())
+      names(1) = system%axis_name(1)
+      names(2) = system%axis_name(2)
+   end function scene_column_names
+
    !> What each column holds, for the header.
    function column_help(name) result(text)
       character(len=*), intent(in) :: name
@@ -214,7 +224,7 @@ contains
       character(len=14), allocatable :: names(:)
       character(len=:), allocatable :: rest, word, known
       integer :: k, blank, found
-      names = system_column_names(scene%system%dof())
+      names = scene_column_names(scene%system)
       if (len_trim(scene%columns) == 0) then
          self%chosen = [(k, k=1, size(names))]
          return
@@ -232,8 +242,11 @@ contains
          end if
          found = 0
          do k = 1, size(names)
-            if (lower_case(word) == trim(names(k))) found = k
+            if (lower_case(word) == lower_case(trim(names(k)))) found = k
          end do
+         ! the axes also by their generic names
+         if (found == 0 .and. lower_case(word) == "alpha") found = 1
+         if (found == 0 .and. lower_case(word) == "beta") found = 2
          if (found == 0) then
             known = ""
             do k = 1, size(names)
@@ -276,13 +289,14 @@ contains
       end do
    end subroutine point_line
 
-   !> The column names chosen, blank-separated.
-   function chosen_names(n, chosen) result(text)
-      integer, intent(in) :: n, chosen(:)
+   !> The column names chosen, blank-separated (the axes named after the system's).
+   function chosen_names(system, chosen) result(text)
+      class(hill_system_t), intent(in) :: system
+      integer, intent(in) :: chosen(:)
       character(len=:), allocatable :: text
       character(len=14), allocatable :: names(:)
       integer :: k
-      names = system_column_names(n)
+      names = scene_column_names(system)
       text = ""
       do k = 1, size(chosen)
          if (k > 1) text = text//" "
@@ -300,7 +314,7 @@ contains
       character(len=14), allocatable :: names(:)
       integer :: k, n
       n = scene%system%dof()
-      names = system_column_names(n)
+      names = scene_column_names(scene%system)
       allocate (extra(3 + size(chosen)))
       extra(1) = system_description(scene%system)
       extra(2) = "method: "//system_method_name(scene%method%kind)//", tolerance "// &
@@ -311,6 +325,10 @@ contains
       do k = 1, size(chosen)
          extra(3 + k) = "column "//integer_text(k)//", "//trim(names(chosen(k)))//": "// &
                         column_help(trim(names(chosen(k))))
+         if (chosen(k) <= 2 .and. trim(names(chosen(k))) /= trim(merge("alpha", "beta ", chosen(k) == 1))) &
+            extra(3 + k) = "column "//integer_text(k)//", "//trim(names(chosen(k)))//": the parameter "// &
+                           trim(names(chosen(k)))//", the chart's "//trim(merge("alpha", "beta ", chosen(k) == 1))// &
+                           " axis"
       end do
       lines = scene_header(scene, "hillstab "//version_string//": "//what//" of "// &
                            system_equation_text(scene%system), extra)
@@ -496,7 +514,8 @@ contains
       end if
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
-      call write_header(file, system_lines(scene, "stability chart", self%chosen), chosen_names(n, self%chosen), &
+      call write_header(file, system_lines(scene, "stability chart", self%chosen), &
+                        chosen_names(scene%system, self%chosen), &
                         error, names_line=scene%names_line, records=[self%grid%n_beta, self%grid%n_alpha])
       failed_total = 0
       n_roundoff = 0
@@ -627,7 +646,7 @@ contains
          return
       end if
       call write_header(file, system_lines(scene, "stability chart", self%chosen), &
-                        chosen_names(self%form%n, self%chosen), error, names_line=scene%names_line)
+                        chosen_names(scene%system, self%chosen), error, names_line=scene%names_line)
    end subroutine chart_open_units
 
    !> (α, β) of point k, numbered row by row.
@@ -714,7 +733,7 @@ contains
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
       call write_header(file, system_lines(scene, "Floquet analysis at points", self%chosen), &
-                        chosen_names(form%n, self%chosen), error, names_line=scene%names_line, &
+                        chosen_names(scene%system, self%chosen), error, names_line=scene%names_line, &
                         records=[size(self%points, 2), 1])
       if (scene%binary) then
          if (.not. allocated(error)) call write_records(file, v(self%chosen, :), error)
@@ -794,7 +813,7 @@ contains
          return
       end if
       call write_header(file, system_lines(scene, "Floquet analysis at points", self%chosen), &
-                        chosen_names(self%form%n, self%chosen), error, names_line=scene%names_line)
+                        chosen_names(scene%system, self%chosen), error, names_line=scene%names_line)
    end subroutine points_open_units
 
    !> (α, β) of point k.

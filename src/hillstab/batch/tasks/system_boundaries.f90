@@ -82,6 +82,13 @@ contains
       type(scene_t), intent(in) :: scene          !! the `&scene` settings
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
       allocate (self%groups(1))
+      if (scene%system%row_dependent()) then
+         ! the curves are found at one prepared form and from the drive's harmonics
+         call fail(error, file%path, "scene", "task", "task 'boundaries' takes a system whose damping is the "// &
+            "same at every alpha ('system'); the "//scene%system%name()//" system's changes along its alpha axis: "// &
+            "chart it (task 'chart') or take its points (task 'points')")
+         return
+      end if
       call read_chart_group(file, chart_group(), grid=self%grid, values=self%groups(1), error=error)
       if (allocated(error)) return
       if (self%grid%n_beta < 2 .or. .not. (self%grid%beta_max > self%grid%beta_min)) then
