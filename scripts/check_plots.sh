@@ -85,9 +85,14 @@ sgrid="alpha_min = 0.0, alpha_max = 1.0, n_alpha = 30, beta_min = 0.2, beta_max 
 scene sys_chart "&scene task = 'chart', model = 'system', tolerance = 1e-8, output = 'sys' /" "$pair" "&chart $sgrid /"
 scene sys_curves "&scene task = 'boundaries', model = 'system', tolerance = 1e-8, output = 'sys' /" "$pair" \
    "&chart $sgrid /"
+# an equation in physical time, other than the shipped Kapitza pendulum: a mass, damping, a sine term
+scene eq_chart "&scene task = 'chart', model = 'equation', tolerance = 1e-8, output = 'eq' /" \
+   "&equation parameters = 'm = 2.5, c = 0.3, k0 = 40, k1 = 0, W = 10', stiffness = 'k0 + k1*cos(W*t) + 5*sin(2*W*t)', \
+mass = 'm', damping = 'c', frequency = 'W', alpha = 'W', beta = 'k1' /" \
+   "&chart alpha_min = 2.0, alpha_max = 30.0, n_alpha = 30, beta_min = 0.0, beta_max = 80.0, n_beta = 30 /"
 OMP_NUM_THREADS=2 "$hillstab" --quiet exact.nml paper.nml points.nml coefficient.nml damped.nml curves.nml \
    curves_paper.nml m_exact.nml m_formula.nml m_segments.nml m_curves.nml swing_1.nml swing_2.nml swing_3.nml map.nml \
-   section_1.nml section_2.nml spring.nml spring_critical.nml sys_chart.nml sys_curves.nml
+   section_1.nml section_2.nml spring.nml spring_critical.nml sys_chart.nml sys_curves.nml eq_chart.nml
 # the programs' own reports go to made.log
 "$onset_law" out/onset_law.dat >made.log 2>&1
 "$area" --quick >>made.log 2>&1
@@ -116,6 +121,7 @@ parameters() {
       bench_system) echo "file='build/bench/system_cost.dat'" ;;
       boundaries) echo "file='other_exact_chart.dat'; curves='other_exact_boundaries.dat'" ;;
       damped) echo "file='other_damped_chart.dat'" ;;
+      equation) echo "file='eq_chart.dat'; curve='2*x'; curve_title='k1 = 2 W'" ;;
       default) echo "file='other_exact_chart.dat'; paper='other_paper_chart.dat'; points='other_points.dat'" ;;
       fig2) echo "file='other_coefficient.dat'" ;;
       fig3) echo "file='other_paper_chart.dat'; exact='other_exact_chart.dat'; points='other_points.dat'" ;;
