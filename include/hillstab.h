@@ -115,12 +115,22 @@ enum { HILLSTAB_NEED_VERDICT = 1, HILLSTAB_NEED_GROWTH = 2, HILLSTAB_NEED_TRACE 
  * ln|S|, log10|S| (at least -300), overflow, stable (1, 0, or 0.5 when marginal),
  * stable_paper (|S1| <= 2), lambda_max (at most 1e300), ln|lambda| of both multipliers of x
  * (largest first), mu = ln|lambda_max|/2 per unit tau, the method's error estimate (-1: none).
- * Below HILLSTAB_NEED_GROWTH a chart leaves the logarithms, lambda_max and mu at 0. */
+ * With damping S (and ln|S|, log10|S|, stable_paper) is S1, the trace of chi = e^(eps tau/2) x;
+ * stable, lambda_max, the ln|lambda| and mu are of x. Below HILLSTAB_NEED_GROWTH a chart leaves
+ * the logarithms, lambda_max and mu at 0. */
 enum {
   HILLSTAB_VALUE_TRACE = 0, HILLSTAB_VALUE_LOG_ABS_TRACE = 1, HILLSTAB_VALUE_LOG10_ABS_TRACE = 2,
   HILLSTAB_VALUE_OVERFLOW = 3, HILLSTAB_VALUE_STABLE = 4, HILLSTAB_VALUE_STABLE_PAPER = 5,
   HILLSTAB_VALUE_LAMBDA_MAX = 6, HILLSTAB_VALUE_LOG_MODULUS_MAX = 7, HILLSTAB_VALUE_LOG_MODULUS_MIN = 8,
   HILLSTAB_VALUE_EXPONENT = 9, HILLSTAB_VALUE_ERROR_ESTIMATE = 10, HILLSTAB_VALUE_COUNT = 11
+};
+
+/* The values by the names of the columns of chart and points files (and of Python's results),
+ * the one vocabulary: S, log10_abs_S and mu (the other values' names already are the files';
+ * ln|S| has no column, LOG_ABS_S is in the same style). HILLSTAB_VALUE_TRACE, _LOG_ABS_TRACE,
+ * _LOG10_ABS_TRACE and _EXPONENT stay as aliases for this release. */
+enum {
+  HILLSTAB_VALUE_S = 0, HILLSTAB_VALUE_LOG_ABS_S = 1, HILLSTAB_VALUE_LOG10_ABS_S = 2, HILLSTAB_VALUE_MU = 9
 };
 
 /* hillstab_run_scene: the file was written, but some of its points failed (status 2 rows). */

@@ -26,7 +26,7 @@ Bad input raises ValueError with the library's message; a failed computation rai
 from ._capi import lib as _lib
 from .errors import HillstabError, HillstabWarning, PointsFailedError
 from .models import Model, Equation, model_names
-from .floquet import floquet, trace, chart, Result, ALL_VALUES
+from .floquet import floquet, trace, chart, Result, ALL_VALUES, ALIASES
 from .curves import transition_curves, critical_drives, mathieu_a, mathieu_b, Curves, CriticalDrives
 from .spring import Spring
 from .scenes import run_scene, read_output, series, Output, Series
@@ -35,7 +35,7 @@ from .system import System, Equations, SystemFloquet, SystemResult
 #: the version of the library loaded
 __version__ = _lib.hillstab_version().decode()
 
-__all__ = ["Model", "Equation", "model_names", "floquet", "trace", "chart", "Result", "ALL_VALUES", "transition_curves", "critical_drives", "CriticalDrives",
+__all__ = ["Model", "Equation", "model_names", "floquet", "trace", "chart", "Result", "ALL_VALUES", "ALIASES", "transition_curves", "critical_drives", "CriticalDrives",
            "mathieu_a", "mathieu_b", "Curves", "Spring", "run_scene", "read_output", "series", "Output", "Series",
            "System", "Equations", "SystemFloquet", "SystemResult",
            "HillstabError", "HillstabWarning", "PointsFailedError"]

@@ -4,27 +4,43 @@
 arrays of the values a chart or points file of the command line holds (equal to its
 binary files to the bit for the same model, method and tolerance) and a per-point
 `status`: 0 ok, 1 round-off limited (the best value double precision allows), 2 failed
-(the files' placeholders: S 0, stable −1, lambda_max −1, log10_abs_trace −999). `trace`
+(the files' placeholders: S 0, stable −1, lambda_max −1, log10_abs_S −999). `trace`
 returns S alone and raises when a point failed.
 
-Values (``values=`` chooses them; only what they need is computed):
+One vocabulary: the values are named as the columns of the command line's chart and
+points files (and as `read_output` returns them), and as the C API's HILLSTAB_VALUE_S,
+_MU, … The two values no file holds are named in the same style (``log_abs_S``) or by
+what they are (``log_moduli``). The earlier names ``trace``, ``log_abs_trace``,
+``log10_abs_trace`` and ``exponent`` are aliases for this release: ``values=("trace",)``
+and ``result.trace`` still work and give the same arrays (`ALIASES`).
 
-- ``trace``: S, the trace of the one-period monodromy, ±1e300 with ``overflow`` 1 beyond;
-  ``log_abs_trace`` ln|S|, ``log10_abs_trace`` log₁₀|S| (exact also where S overflows);
-  ``error_estimate``, the method's estimate of |error of S|/max(1, |S|) (−1: none);
-- ``stable`` (1, 0, or 0.5 when marginal: |S| within its error bound of the threshold)
-  and ``stable_paper`` (the paper's |S₁| ≤ 2): verdicts only, screened;
-- ``lambda_max``, the largest multiplier modulus of x over a period; ``log_moduli``, ln|λ|
-  of both multipliers (largest first); ``exponent``, μ = ln λ_max / P per unit τ (P the
-  period of Q: 2 for elastic and mathieu).
+Values (``values=`` chooses them; only what they need is computed). With damping ε > 0
+(x'' + ε x' + Q x = 0) the values are of two functions, as in the files: those marked χ
+are of χ = e^{ετ/2} x (eq. (47), χ'' + (Q − ε²/4) χ = 0), those marked x of x itself,
+which includes the decay e^{−ετ/2}: a multiplier of x is e^{−εP/2} times one of χ
+(e^{−ε} for P = 2, the period of Q for elastic and mathieu), so where |S₁| < 2,
+λ_max = e^{−ε} and μ = −ε/2. Without damping the two are the same.
 
-With damping ε > 0 (x'' + ε x' + Q x = 0) the values are of two functions, as in the
-command line's files: ``trace`` (and ``log_abs_trace``, ``log10_abs_trace``, ``stable_paper``)
-is S₁, the trace of χ = e^{ετ/2} x (eq. (47), χ'' + (Q − ε²/4) χ = 0), while
-``lambda_max``, ``log_moduli`` and ``exponent`` are of x itself: a multiplier of x is
-e^{−εP/2} times one of χ (e^{−ε} for P = 2), so where |S₁| < 2, λ_max = e^{−ε} and
-μ = −ε/2. ``stable`` is the verdict on x. Without damping the two are the same. The files
-call these columns ``S``, ``lambda_max``, ``mu`` and ``log10_abs_S``.
+============== ========= ================ ==============================================
+name           of        earlier alias    what it is
+============== ========= ================ ==============================================
+S              χ         trace            S₁, the trace of χ's one-period monodromy,
+                                          ±1e300 with ``overflow`` 1 beyond
+log_abs_S      χ         log_abs_trace    ln|S₁| (exact also where S overflows; no column)
+log10_abs_S    χ         log10_abs_trace  log₁₀|S₁| (at least −300)
+overflow       χ                          1 where |S₁| passed 1e300 (S clamped)
+error_estimate χ                          the method's estimate of |error of S|/max(1, |S|)
+                                          (−1: none)
+stable         x                          1, 0, or 0.5 when marginal (|S| within its error
+                                          bound of the threshold): the verdict on x
+stable_paper   χ                          the paper's |S₁| ≤ 2 (1 or 0)
+lambda_max     x                          the largest multiplier modulus of x over a period
+log_moduli     x                          ln|λ| of both multipliers of x (largest first;
+                                          a last axis of 2; no column)
+mu             x         exponent         μ = ln λ_max / P, per unit τ (not per second)
+============== ========= ================ ==============================================
+
+``stable`` and ``stable_paper`` alone are verdicts only, screened (fastest).
 """
 import math
 import re
@@ -37,11 +53,27 @@ from ._capi import lib, check, real_number, real_array
 from .errors import HillstabError, HillstabWarning
 from .models import as_model
 
-#: every value `floquet` and `chart` can return
-ALL_VALUES = ("trace", "log_abs_trace", "log10_abs_trace", "overflow", "error_estimate", "stable",
-              "stable_paper", "lambda_max", "log_moduli", "exponent")
+#: every value `floquet` and `chart` can return, by the files' names
+ALL_VALUES = ("S", "log_abs_S", "log10_abs_S", "overflow", "error_estimate", "stable",
+              "stable_paper", "lambda_max", "log_moduli", "mu")
+#: the earlier names, aliases for this release: earlier name -> the files' name
+ALIASES = {"trace": "S", "log_abs_trace": "log_abs_S", "log10_abs_trace": "log10_abs_S", "exponent": "mu"}
+#: the index of each value in the library's output (HILLSTAB_VALUE_*), by its name
+_INDEX = {"S": "trace", "log_abs_S": "log_abs_trace", "log10_abs_S": "log10_abs_trace", "mu": "exponent"}
 _VERDICTS = {"stable", "stable_paper"}
-_GROWTH = _VERDICTS | {"lambda_max", "log_moduli", "exponent"}
+_GROWTH = _VERDICTS | {"lambda_max", "log_moduli", "mu"}
+
+
+def _canonical(values):
+    """The values asked for by the files' names (an earlier name is its alias), each once, in order."""
+    if isinstance(values, str):
+        values = (values,)
+    names = []
+    for name in values:
+        name = ALIASES.get(name, name)
+        if name not in names:
+            names.append(name)
+    return tuple(names)
 
 
 def _need(values):
@@ -70,11 +102,13 @@ def _method(method, n_segments, sampling):
 class Result:
     """Arrays of values by name (attributes and ``result["name"]``), with ``status``.
 
-    Only the values asked for are present: the others were not computed to the tolerance
-    and asking for them raises AttributeError. With damping ε, ``trace`` is S₁ of
-    χ = e^{ετ/2} x while ``lambda_max``, ``log_moduli`` and ``exponent`` are of x (a factor
-    e^{−ε} per period 2 between their multipliers; module doc). A chart's result has the
-    axes ``alpha`` and ``beta`` too.
+    The names are the files' columns (``S``, ``mu``, ``log10_abs_S``, …; module doc's
+    table); the earlier ``trace``, ``log_abs_trace``, ``log10_abs_trace`` and ``exponent``
+    are aliases for this release and give the same arrays. Only the values asked for are
+    present: the others were not computed to the tolerance and asking for them raises
+    AttributeError. With damping ε, ``S`` is S₁ of χ = e^{ετ/2} x while ``lambda_max``,
+    ``log_moduli`` and ``mu`` are of x (a factor e^{−ε} per period 2 between their
+    multipliers; module doc). A chart's result has the axes ``alpha`` and ``beta`` too.
     """
 
     def __init__(self, arrays, status, names, extra=None):
@@ -87,7 +121,7 @@ class Result:
 
     @property
     def names(self):
-        """The values present."""
+        """The values present, by the files' names."""
         return self._names
 
     @property
@@ -97,6 +131,7 @@ class Result:
 
     def __getattr__(self, name):
         arrays = self.__dict__.get("_arrays", {})
+        name = ALIASES.get(name, name)
         if name in arrays:
             return arrays[name]
         if name in ALL_VALUES:
@@ -119,7 +154,7 @@ def _unpack(values, names, shape):
                                      values[..., _capi.VALUES.index("log_modulus_min")]], axis=-1
                                     ).reshape(shape + (2,))
         else:
-            arrays[name] = values[..., _capi.VALUES.index(name)].reshape(shape).copy()
+            arrays[name] = values[..., _capi.VALUES.index(_INDEX.get(name, name))].reshape(shape).copy()
     return arrays
 
 
@@ -209,21 +244,22 @@ def floquet(alpha, beta, model=None, epsilon=0.0, method="auto", tolerance=1e-10
     points lie outside its physical domain 0 ≤ α < π², 0 ≤ β < π² (Mathieu's equation is
     ``model="mathieu"``); ``method`` one of auto, formula, segments, magnus4, magnus6, rk,
     gsl; ``tolerance`` the target of |error of S|/max(1, |S|) (exact methods);
-    ``n_segments``, ``sampling`` (segments); ``values`` the values wanted (module doc;
-    verdicts only: ``values=("stable",)``); ``threads`` the library's threads (0: OpenMP's
+    ``n_segments``, ``sampling`` (segments); ``values`` the values wanted, by the files'
+    names (module doc's table; the earlier names are aliases; verdicts only:
+    ``values=("stable",)``); ``threads`` the library's threads (0: OpenMP's
     default, ``OMP_NUM_THREADS``); ``progress`` a callable ``progress(done, total)`` called
     after each chunk of ``chunk`` points (default about 1 % of them, at least 1000), or True
     for a bar (tqdm when installed, else a line on stderr): the points are then computed
     chunk after chunk, with the same numbers to the bit (each point is computed alone).
 
     Returns a `Result`: one array per value, of the points' shape (``log_moduli`` with a
-    last axis of 2), and ``status``. With damping, ``trace`` is S₁ of χ = e^{ετ/2} x and
-    ``lambda_max``, ``exponent`` are of x (module doc). Bad input raises ValueError with the
+    last axis of 2), and ``status``. With damping, ``S`` is S₁ of χ = e^{ετ/2} x and
+    ``lambda_max``, ``mu`` are of x (module doc). Bad input raises ValueError with the
     library's message (numbers in Python's format); points whose computation failed have
     status 2 (a HillstabWarning says so).
 
     >>> r = floquet([3.7, 9.0], 2.47, model="elastic")
-    >>> r.stable, r.exponent
+    >>> r.stable, r.mu
     """
     return _floquet(alpha, beta, model, epsilon, method, tolerance, n_segments, sampling, values, threads,
                     progress, chunk, stacklevel=4)
@@ -231,6 +267,7 @@ def floquet(alpha, beta, model=None, epsilon=0.0, method="auto", tolerance=1e-10
 
 def _floquet(alpha, beta, model, epsilon, method, tolerance, n_segments, sampling, values, threads, progress,
              chunk, stacklevel):
+    values = _canonical(values)
     need = _need(values)
     explicit = model is not None
     model = as_model(model if explicit else "elastic")
@@ -267,7 +304,7 @@ def _floquet(alpha, beta, model, epsilon, method, tolerance, n_segments, samplin
 def trace(alpha, beta, model=None, epsilon=0.0, method="auto", tolerance=1e-10, n_segments=2,
           sampling="endpoint", threads=0):
     """S, the trace of the one-period monodromy, at the points (α, β) (arrays broadcast
-    together with ε; ±1e300 where |S| overflows): `floquet`'s ``trace``, but a point that
+    together with ε; ±1e300 where |S| overflows): `floquet`'s ``S``, but a point that
     failed raises HillstabError (a bare array has no status to carry it). With damping ε it
     is S₁, the trace of χ = e^{ετ/2} x, not of x (`floquet`). Without ``model`` the elastic
     pendulum, with a HillstabWarning for points outside its physical domain (`floquet`).
@@ -275,12 +312,12 @@ def trace(alpha, beta, model=None, epsilon=0.0, method="auto", tolerance=1e-10, 
     >>> trace(3.7, 2.47, model="elastic")
     array(...)
     """
-    result = _floquet(alpha, beta, model, epsilon, method, tolerance, n_segments, sampling, ("trace",), threads,
+    result = _floquet(alpha, beta, model, epsilon, method, tolerance, n_segments, sampling, ("S",), threads,
                       None, None, stacklevel=4)
     if np.any(result.status == _capi.STATUS_FAILED):
         raise HillstabError("{} point(s) failed; use floquet() for per-point status".format(
             int(np.count_nonzero(result.status == _capi.STATUS_FAILED))), _capi.ERR_INTEGRATION)
-    return result.trace
+    return result.S
 
 
 def chart(alpha, beta, model=None, epsilon=0.0, method="auto", tolerance=1e-10, n_segments=2,
@@ -298,10 +335,11 @@ def chart(alpha, beta, model=None, epsilon=0.0, method="auto", tolerance=1e-10, 
 
     Returns a `Result` with 2-D arrays ``[i_alpha, i_beta]`` per value, ``status`` and the
     axes ``alpha`` (n_alpha,) and ``beta`` (n_beta,) — for matplotlib,
-    ``pcolormesh(c.alpha, c.beta, c.stable.T)``. With damping, ``trace`` is S₁ of
-    χ = e^{ετ/2} x and ``lambda_max``, ``exponent`` are of x (module doc). `read_output`
+    ``pcolormesh(c.alpha, c.beta, c.stable.T)``. With damping, ``S`` is S₁ of
+    χ = e^{ετ/2} x and ``lambda_max``, ``mu`` are of x (module doc). `read_output`
     gives a chart file in the same shape (``Output.grid``).
     """
+    values = _canonical(values)
     need = _need(values)
     explicit = model is not None
     model = as_model(model if explicit else "elastic")

@@ -119,8 +119,8 @@ class Equation(Model):
     The β axis must enter the stiffness alone and affinely (a drive amplitude, a load);
     the α axis may enter anywhere (the frequency). The damping is the equation's own, at
     every point (``epsilon`` must stay 0); the results are the physical equation's: its
-    multipliers over one period, ``trace`` S₁ = e^{cT/(2m)} times the trace of its
-    monodromy, ``exponent`` μ per unit τ = Ωt/π (μ Ω/π per unit time).
+    multipliers over one period, ``S`` S₁ = e^{cT/(2m)} times the trace of its
+    monodromy, ``mu`` μ per unit τ = Ωt/π (μ Ω/π per unit time).
 
     >>> kapitza = Equation("-g/l + A*w^2/l*cos(w*t)", frequency="w", damping="kappa",
     ...                    parameters={"g": 9.81, "l": 0.2, "kappa": 0.2, "A": 0.005, "w": 314.16},

@@ -79,19 +79,19 @@ class Spring:
 
     def floquet(self, a, method="auto", tolerance=1e-10, values=ALL_VALUES, threads=0):
         """`floquet` at the bounce amplitudes a (m), with ``growth_per_second`` μω/π (1/s)
-        added when the exponent is asked for."""
+        added when ``mu`` (the exponent) is asked for."""
         alpha = self.alpha(a)
         result = floquet(alpha, self.beta, self.model, self.epsilon, method, tolerance, values=values,
                          threads=threads)
         result.alpha_of_a = alpha
-        if "exponent" in result.names:
-            result.growth_per_second = result.exponent * (self.omega / math.pi) + 0.0
+        if "mu" in result.names:
+            result.growth_per_second = result.mu * (self.omega / math.pi) + 0.0
         return result
 
     def growth_per_second(self, a, method="auto", tolerance=1e-10, threads=0):
         """How fast the swing grows at bounce amplitudes a (m): μω/π per second (the
         ``mu_per_s`` column; −κ/2 where the bounce is stable)."""
-        return self.floquet(a, method, tolerance, values=("exponent",), threads=threads).growth_per_second
+        return self.floquet(a, method, tolerance, values=("mu",), threads=threads).growth_per_second
 
     def stable(self, a, method="auto", tolerance=1e-10, threads=0):
         """The verdict at bounce amplitudes a (m): 1 stable, 0 unstable, 0.5 marginal."""

@@ -5,6 +5,7 @@ import os
 import re
 
 from hillstab import _capi, system
+from hillstab import ALIASES, ALL_VALUES
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 HEADER = os.path.join(ROOT, "include", "hillstab.h")
@@ -40,7 +41,21 @@ def test_values_in_order_of_their_index():
     values = group("VALUE_")
     count = values.pop("COUNT")
     assert _capi.VALUE_COUNT == count == len(_capi.VALUES)
+    # the files' names (HILLSTAB_VALUE_S, _MU, ...) are aliases of the earlier ones' indices
+    aliases = {ALIASES[name].upper(): _capi.VALUES.index(name) for name in ALIASES}
+    assert {name: values.pop(name) for name in aliases} == aliases
     assert {name.upper(): index for index, name in enumerate(_capi.VALUES)} == values
+
+
+def test_values_by_the_files_names_in_the_header():
+    """Every value Python names is a HILLSTAB_VALUE_* of the same index, by the same name."""
+    values = group("VALUE_")
+    for name in ALL_VALUES:
+        if name == "log_moduli":
+            continue
+        assert name.upper() in values
+    assert values["S"] == values["TRACE"] and values["MU"] == values["EXPONENT"]
+    assert values["LOG10_ABS_S"] == values["LOG10_ABS_TRACE"] and values["LOG_ABS_S"] == values["LOG_ABS_TRACE"]
 
 
 def test_system_verdicts_and_kinds():

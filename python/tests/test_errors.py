@@ -54,7 +54,7 @@ def test_bad_method_settings():
     with pytest.raises(ValueError, match="unknown method 'fast'"):
         hillstab.floquet(1.0, 1.0, method="fast")
     with pytest.raises(ValueError, match="unknown value"):
-        hillstab.floquet(1.0, 1.0, values=("S",))
+        hillstab.floquet(1.0, 1.0, values=("S1",))
 
 
 def test_models():

@@ -7,10 +7,18 @@ import pytest
 
 import hillstab
 
-#: file column -> Result value
+#: the file columns a Result holds by the same name (one vocabulary), each with its earlier
+#: name, an alias for this release (the same array)
 FILE_VALUES = {"S": "trace", "stable": "stable", "lambda_max": "lambda_max", "mu": "exponent",
                "log10_abs_S": "log10_abs_trace", "overflow": "overflow", "error_estimate": "error_estimate",
                "stable_paper": "stable_paper"}
+
+
+def same_as_file(out, result, column):
+    """The file's column equals the result's value of that name, and its alias, to the bit."""
+    return same_bits(out[column], getattr(result, column)) and \
+        same_bits(out[column], getattr(result, FILE_VALUES[column])) and \
+        same_bits(out[column], result[column])
 
 
 def same_bits(a, b):
@@ -35,16 +43,17 @@ def compare_chart(cli, name, grid, threads=2, **options):
     fmt = options.pop("fmt", "binary")
     cli.run(name, chart_scene(name, grid, columns=columns, fmt=fmt, **options), threads=threads)
     out = hillstab.read_output(cli.path(name + "_chart." + ("bin" if fmt == "binary" else "dat")))
-    wanted = tuple(FILE_VALUES[c] for c in out.columns if c in FILE_VALUES)
+    wanted = tuple(c for c in out.columns if c in FILE_VALUES)
     options.setdefault("model", "elastic")
     c = hillstab.chart(grid[0], grid[1], values=wanted, threads=threads, **options)
     na, nb = grid[0][2], grid[1][2]
     assert same_bits(out["alpha"], np.repeat(c.alpha, nb))
     assert same_bits(out["beta"], np.tile(c.beta, na))
     assert same_bits(out["status"], c.status)
+    assert c.names == wanted
     for column in out.columns:
         if column in FILE_VALUES:
-            assert same_bits(out[column], getattr(c, FILE_VALUES[column])), column
+            assert same_as_file(out, c, column), column
     return out, c
 
 
@@ -63,6 +72,8 @@ def test_chart_rows_in_chunks(cli):
 def test_chart_verdicts_only(cli):
     out, c = compare_chart(cli, "verdicts", ((0.0, 9.8, 16), (-2.0, 12.0, 40)), columns="alpha beta stable status")
     assert c.names == ("stable",)
+    with pytest.raises(AttributeError):
+        c.S
     with pytest.raises(AttributeError):
         c.trace
     # the verdicts agree with those of the full chart
@@ -107,19 +118,19 @@ def test_points(cli):
     assert same_bits(out["status"], r.status)
     for column in out.columns:
         if column in FILE_VALUES:
-            assert same_bits(out[column], getattr(r, FILE_VALUES[column])), column
+            assert same_as_file(out, r, column), column
     # the multipliers: ln|lambda_max| is the first log modulus, mu its half
     assert np.allclose(np.log(r.lambda_max), r.log_moduli[:, 0], rtol=1e-12, atol=1e-12)
-    assert same_bits(r.exponent, 0.5 * r.log_moduli[:, 0] + 0.0)
+    assert same_bits(r.mu, 0.5 * r.log_moduli[:, 0] + 0.0)
     # trace() gives the same S
-    assert same_bits(hillstab.trace(alpha, beta, model="elastic"), r.trace)
+    assert same_bits(hillstab.trace(alpha, beta, model="elastic"), r.S)
 
 
 def test_points_shapes_and_damping():
     r = hillstab.floquet(np.full((2, 3), 4.0), [1.0, 2.0, 3.0], epsilon=0.1)
-    assert r.trace.shape == (2, 3) and r.log_moduli.shape == (2, 3, 2) and r.status.shape == (2, 3)
+    assert r.S.shape == (2, 3) and r.log_moduli.shape == (2, 3, 2) and r.status.shape == (2, 3)
     # damped and stable: lambda_max = exp(-epsilon) exactly where |S1| < 2
-    inside = np.abs(r.trace) < 2
+    inside = np.abs(r.S) < 2
     assert np.all(r.lambda_max[inside] == np.exp(-0.1))
 
 

@@ -50,6 +50,13 @@ module test_codes
    character(len=*), parameter :: value_names(0:value_count - 1) = [character(len=16) :: "trace", "log_abs_trace", &
       "log10_abs_trace", "overflow", "stable", "stable_paper", "lambda_max", "log_modulus_max", "log_modulus_min", &
       "exponent", "error_estimate"]
+   !> The same values by the files' names (the columns of chart and points files, Python's
+   !> names, HILLSTAB_VALUE_S ...): "" where the value has no such name of its own; where it
+   !> differs from `value_names` the header declares it too, an alias of the same index.
+   character(len=*), parameter :: value_file_names(0:value_count - 1) = [character(len=16) :: "S", "log_abs_S", &
+      "log10_abs_S", "overflow", "stable", "stable_paper", "lambda_max", "", "", "mu", "error_estimate"]
+   !> Of those, the ones no file column has (named in the same style).
+   character(len=*), parameter :: no_column_names(1) = [character(len=16) :: "log_abs_S"]
 
    !> One code that another language copies: its name in include/hillstab.h after `HILLSTAB_`
    !> ("" when the header has no enumerator for it), its name in the Python package ("" when
@@ -336,6 +343,10 @@ contains
          call add("VALUE_"//upper(trim(value_names(k))), "", k)
       end do
       call add("VALUE_COUNT", "", value_count)
+      do k = 0, value_count - 1
+         if (value_file_names(k) == "" .or. value_file_names(k) == value_names(k)) cycle
+         call add("VALUE_"//upper(trim(value_file_names(k))), "", k)
+      end do
       call add("SYSTEM_VERDICT_UNSTABLE", "VERDICT_UNSTABLE", verdict_unstable)
       call add("SYSTEM_VERDICT_STABLE", "VERDICT_STABLE", verdict_stable)
       call add("SYSTEM_VERDICT_MARGINAL", "VERDICT_MARGINAL", verdict_marginal)
@@ -847,6 +858,7 @@ contains
       integer, parameter :: codes(value_count + 1) = [value_trace, value_log_abs_trace, value_log10_abs_trace, &
          value_overflow, value_stable, value_stable_paper, value_lambda_max, value_log_modulus_max, &
          value_log_modulus_min, value_exponent, value_error_estimate, value_count]
+      character(len=:), allocatable :: columns
       integer :: k
       text = file_text(ctx, header_path)
       call expect("HILLSTAB_NEED_VERDICT", need_verdict)
@@ -859,6 +871,16 @@ contains
       ! the values are 0 ... count - 1, each once
       do k = 0, value_count - 1
          call check(ctx, count(codes(:value_count) == k) == 1, "one value of index "//integer_text(k))
+      end do
+      ! the files' names: each an enumerator of the same index, and a column of chart and points
+      ! files (its record in chart_column_table) unless it is one of `no_column_names`
+      columns = file_text(ctx, "src/hillstab/batch/tasks/chart_columns.f90")
+      do k = 0, value_count - 1
+         if (value_file_names(k) == "") cycle
+         call expect("HILLSTAB_VALUE_"//upper(trim(value_file_names(k))), codes(k + 1))
+         if (any(no_column_names == value_file_names(k))) cycle
+         call check(ctx, index(columns, 'chart_column("'//trim(value_file_names(k))//'",') > 0, &
+                    "value "//integer_text(k)//" '"//trim(value_file_names(k))//"' is a column of chart and points files")
       end do
    contains
       subroutine expect(name, code)
