@@ -240,10 +240,13 @@ contains
    !> curvature bound of `fourier_auto_amplitude`; an interpolant's tiny top harmonics do not
    !> count). With 4 per wavelength a Richardson pair of the two-harmonic pivot
    !> (own_pivot_chart.nml, α = 0.50, β = 4.05) had errors of S_N and S_{N/2} so alike
-   !> that their difference was a twelfth of the error: 3.9e-10 at tolerance 1e-10.
+   !> that their difference was a twelfth of the error: 3.9e-10 at tolerance 1e-10. And at
+   !> least 16 (8 on the coarse mesh) whatever the harmonics: with 8 a pair of f = −cos πτ at
+   !> α = 1.12, β = −0.017, ε = 0.0038 (the Kapitza pendulum at 167 rad/s) differed by a
+   !> twentieth of its error (1.9e-10 at tolerance 1e-10, status 0).
    elemental integer function fourier_auto_min_steps(self) result(steps)
       class(fourier_model_t), intent(in) :: self  !! the model
-      steps = 2*ceiling(8.0_wp*real(self%top_harmonic, wp)/self%p)
+      steps = max(16, 2*ceiling(8.0_wp*real(self%top_harmonic, wp)/self%p))
    end function fourier_auto_min_steps
 
    !> Q = β + g, g = α f: N harmonics.

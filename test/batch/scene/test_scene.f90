@@ -53,7 +53,8 @@ contains
          new_unittest("groups_declared_once", groups_declared_once), &
          new_unittest("start_angle_in_degrees", start_angle_in_degrees), &
          new_unittest("foreign_groups_warned", foreign_groups_warned), &
-         new_unittest("implausible_spring_warned", implausible_spring_warned)])
+         new_unittest("implausible_spring_warned", implausible_spring_warned), &
+         new_unittest("grid_near_the_largest_double", grid_near_the_largest_double)])
    end function collect_scene
 
    !> The grid of a chart scene (a zero grid for another task).
@@ -756,4 +757,19 @@ contains
       at = index(out, old)
       if (at > 0) out = out(:at - 1)//new//out(at + len(old):)
    end function replaced_text
+   !> A grid whose ends reach the largest double (a fuzzed a_max = 1.797e308 trapped in
+   !> `grid_value` in a debug build, before the reader could refuse it): finite, ascending,
+   !> its ends exact; an ordinary grid's values unchanged (the same expression, to the bit).
+   subroutine grid_near_the_largest_double(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp) :: v(151)
+      integer :: i
+      v = [(grid_value(0.0_wp, huge(1.0_wp), 151, i), i=1, 151)]
+      call check(ctx, v(1) == 0.0_wp .and. v(151) == huge(1.0_wp), "the ends exact")
+      call check(ctx, all(v(2:) > v(:150)), "ascending, all finite")
+      v(1:3) = [(grid_value(-huge(1.0_wp), huge(1.0_wp), 3, i), i=1, 3)]
+      call check(ctx, v(2) == 0.0_wp, "the middle of (-huge, huge) is 0")
+      call check(ctx, grid_value(-2.0_wp, 12.0_wp, 200, 57) == -2.0_wp + 14.0_wp*56.0_wp/199.0_wp, &
+                 "an ordinary grid to the bit")
+   end subroutine grid_near_the_largest_double
 end module test_scene

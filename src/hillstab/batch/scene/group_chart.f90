@@ -101,6 +101,10 @@ contains
          grid_value = lo
       else if (i == n) then
          grid_value = hi  ! exact end point, no round-off
+      else if (abs(0.5_wp*hi - 0.5_wp*lo) > 0.25_wp*huge(1.0_wp)/real(n, wp)) then
+         ! a range near the largest double (a reader refuses it later): hi − lo or its product
+         ! with i − 1 would overflow, a convex combination cannot
+         grid_value = (1.0_wp - real(i - 1, wp)/real(n - 1, wp))*lo + (real(i - 1, wp)/real(n - 1, wp))*hi
       else
          grid_value = lo + (hi - lo)*real(i - 1, wp)/real(n - 1, wp)
       end if
