@@ -369,8 +369,13 @@ contains
          if (cc(n) /= 0.0_wp .or. ss(n) /= 0.0_wp) exit
          n = n - 1
       end do
-      self%c = cc(1:n)
-      self%s = ss(1:n)
+      ! allocated anew, not by assignment: gfortran's reallocation of a shorter array than the
+      ! one held overflowed an integer under -fsanitize=undefined
+      if (allocated(self%c)) deallocate (self%c)
+      if (allocated(self%s)) deallocate (self%s)
+      allocate (self%c(n), self%s(n))
+      self%c(:) = cc(1:n)
+      self%s(:) = ss(1:n)
       self%f_min = 0.0_wp
       self%f_max = 0.0_wp
       call curvature_of_drive(self)
