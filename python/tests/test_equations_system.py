@@ -158,3 +158,16 @@ def test_epsilon_refused(column):
         column.floquet([1.6, 1.7], [0.4, 0.4], epsilon=[0.0, 0.1])
     with pytest.raises(ValueError, match="epsilon: the grid: the equations system carries its own damping"):
         column.chart((1.2, 2.1, 3), (0.0, 1.2, 3), epsilon=0.05)
+
+
+def test_chart_over_named_axes_equals_points(column):
+    """A chart over (Om, P1) and the points task at its grid's points: the same verdicts and
+    kinds, S and the exponents within the tolerance (a chart's row shares its nodes, a point
+    is computed alone, so the values may differ within it)."""
+    c = column.chart((1.4, 2.0, 5), (0.0, 0.8, 4), tolerance=1e-10)
+    om, p1 = np.meshgrid(c.Om, c.P1, indexing="ij")
+    r = column.points(om, p1, tolerance=1e-10)
+    assert c.stable.shape == (5, 4) and np.array_equal(c.stable, r.stable) and np.array_equal(c.kind, r.kind)
+    scale = np.maximum(1.0, np.abs(r.trace))
+    assert np.all(np.abs(c.trace - r.trace) <= 2e-10 * scale * 6)
+    assert np.all(np.abs(c.mu - r.mu) <= 1e-8)
