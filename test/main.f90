@@ -22,6 +22,7 @@ program tester
    use test_capi_system_batch, only: collect_capi_system_batch
    use test_expression, only: collect_expression
    use test_critical, only: collect_critical
+   use test_regions, only: collect_regions
    use test_model_equation, only: collect_model_equation
    use test_gsl, only: collect_gsl
    use test_rk, only: collect_rk
@@ -51,7 +52,7 @@ program tester
    use test_checkpoint, only: collect_checkpoint
    implicit none
    ! one by one, not as an array constructor of the collect functions' results: gfortran 12
-   type(testsuite_t) :: suites(48)
+   type(testsuite_t) :: suites(49)
    integer :: n_failed
    suites(1) = collect_models()
    suites(2) = collect_codes()
@@ -101,6 +102,7 @@ program tester
    suites(46) = collect_expression()
    suites(47) = collect_critical()
    suites(48) = collect_model_equation()
+   suites(49) = collect_regions()
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

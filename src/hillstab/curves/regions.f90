@@ -1,0 +1,798 @@
+!> The resonance regions of a driven problem and the tip of each: the least drive at which it
+!> opens and the frequency there, with its kind and its width at the top of the drive range.
+!> Works on any stability oracle (hillstab_curves_oracle): a scalar model, an equation in
+!> physical time, a system.
+!>
+!> **Predicted regions.** The natural frequencies ν_i(f) of the undriven problem (fractions of
+!> the drive frequency) are sampled over the frequency range; every f where 2ν_i = k (simple,
+!> multipliers near (−1)^k), ν_i + ν_j = k (sum) or |ν_i − ν_j| = k (difference), k = 1 …
+!> `order`, is found by bisection and is a candidate region. Each region is searched inside
+!> its window: from the midpoint to its neighbouring prediction on the left to the one on
+!> the right (the range's ends for the outermost).
+!>
+!> **Tips.** With the critical drive c(f) the least drive of [d_min, d_max] where the oracle's
+!> distance g (for a scalar model, the side (−1)^k of the region's family) is positive:
+!> - undamped and an undriven coefficient constant in time: the tip is the resonance itself,
+!>   at drive 0 (theory);
+!> - otherwise c is found at the prediction by sampling the drive range and refining the first
+!>   sign change (Illinois regula falsi); then Brent's minimisation over the window, each c(f)
+!>   bracketed from the previous one (a few evaluations each), gives the tip. Its drive error
+!>   is the root's error plus the spread of c over Brent's final bracket; its frequency error
+!>   Brent's bracket. The tip is confirmed when the point just below it is stable and the one
+!>   just above unstable, beyond the oracle's error.
+!> - where the distance stays negative at d_max over the whole window (golden section on
+!>   g(f, d_max)), the region is closed in the range (status `region_closed`): damping keeps
+!>   it shut up to the top drive.
+!>
+!> **Width.** At d_max, the edges either side of the tip (the roots of g(f, d_max) stepping
+!> out from the tip, or from the window's largest g(f, d_max) where the region bends away from
+!> its tip's frequency); an edge that reaches the window's end is that end and flagged; both
+!> are 0 where the region is not open at d_max.
+module hillstab_curves_regions
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
+   use hillstab_core_status, only: status_ok
+   use hillstab_core_text, only: real_text, integer_text
+   use hillstab_curves_oracle, only: oracle_t, oracle_sample_t, scalar_oracle_t, system_oracle_t
+   implicit none
+   private
+   public :: region_t, predict_regions, find_regions, region_kind_name, region_status_name
+   public :: region_simple, region_sum, region_difference
+   public :: region_found, region_closed, region_unconfirmed, region_open_below, region_theory
+   public :: max_region_order
+
+   integer, parameter :: region_simple = 1      !! 2ν_i = k
+   integer, parameter :: region_sum = 2         !! ν_i + ν_j = k
+   integer, parameter :: region_difference = 3  !! |ν_i − ν_j| = k
+
+   integer, parameter :: region_found = 0        !! tip found and confirmed on both sides
+   integer, parameter :: region_closed = 1       !! stable up to d_max over the whole window
+   integer, parameter :: region_unconfirmed = 2  !! tip found, not confirmed (or at the window's end)
+   integer, parameter :: region_open_below = 3   !! unstable already at d_min: the tip lies below the range
+   integer, parameter :: region_theory = 4       !! undamped, constant undriven problem: the tip is the resonance at drive 0
+
+   !> Highest order searched.
+   integer, parameter :: max_region_order = 8
+   !> Samples of the frequency range for the predictions.
+   integer, parameter :: predict_samples = 400
+
+   !> One resonance region.
+   type :: region_t
+      integer :: kind = region_simple       !! region_simple, region_sum or region_difference
+      integer :: order = 1                  !! k
+      integer :: modes(2) = [1, 1]          !! i, j (i = j for a simple region)
+      real(wp) :: predicted = 0.0_wp        !! f where the resonance holds at drive 0
+      real(wp) :: window(2) = 0.0_wp        !! the frequencies searched
+      real(wp) :: frequency = 0.0_wp        !! the tip's f
+      real(wp) :: frequency_error = 0.0_wp  !! its error bound
+      real(wp) :: drive = 0.0_wp            !! the tip's drive: the least at which the region is open
+      real(wp) :: drive_error = 0.0_wp      !! its error bound
+      real(wp) :: edges(2) = 0.0_wp         !! f of the region's edges at d_max (both 0 when not open there)
+      logical :: clipped(2) = .false.       !! an edge is the window's end (the region is wider)
+      integer :: status = region_found      !! region_found … region_theory
+      integer :: evaluations = 0            !! distances computed (monodromies)
+   end type region_t
+
+   !> A search: the oracle, the ranges and the side of the family.
+   type :: search_t
+      real(wp) :: d_min = 0.0_wp, d_max = 1.0_wp  !! the drive range
+      real(wp) :: tolerance = 1.0e-10_wp          !! target of roots, relative to max(1, |x|)
+      integer :: side = 0                         !! scalar models' family: ±1; 0 either
+      integer :: n_samples = 32                   !! samples of the drive range for the first root
+      integer :: count = 0                        !! distances computed
+   end type search_t
+
+   !> The natural frequencies at one sample of the frequency range.
+   type :: nu_t
+      real(wp), allocatable :: v(:)
+   end type nu_t
+
+   !> The "none" of c(f): stable up to d_max.
+   real(wp), parameter :: none = huge(1.0_wp)
+
+contains
+
+   !> The name of a region kind.
+   pure function region_kind_name(kind) result(name)
+      integer, intent(in) :: kind
+      character(len=:), allocatable :: name
+      select case (kind)
+      case (region_simple)
+         name = "simple"
+      case (region_sum)
+         name = "sum"
+      case (region_difference)
+         name = "difference"
+      case default
+         name = "unknown"
+      end select
+   end function region_kind_name
+
+   !> The name of a region status.
+   pure function region_status_name(status) result(name)
+      integer, intent(in) :: status
+      character(len=:), allocatable :: name
+      select case (status)
+      case (region_found)
+         name = "found"
+      case (region_closed)
+         name = "closed"
+      case (region_unconfirmed)
+         name = "unconfirmed"
+      case (region_open_below)
+         name = "open below"
+      case (region_theory)
+         name = "theory"
+      case default
+         name = "unknown"
+      end select
+   end function region_status_name
+
+   !> Every resonance of order 1 … `order` whose frequency lies in [f_min, f_max], ascending in
+   !> f, with its window (see the module's text); tips not yet searched.
+   subroutine predict_regions(oracle, f_min, f_max, order, regions, error)
+      class(oracle_t), intent(in) :: oracle   !! the problem
+      real(wp), intent(in) :: f_min, f_max    !! the frequency range
+      integer, intent(in) :: order            !! highest order k (1 … max_region_order)
+      type(region_t), allocatable, intent(out) :: regions(:)  !! the candidates
+      !> err_invalid_parameter naming the argument; a frequency the undriven problem fails at
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: f(predict_samples), left, right
+      type(nu_t) :: nu(predict_samples)
+      type(region_t) :: r
+      real(wp), allocatable :: centres(:)
+      integer :: j, k, i, m, kind, n_modes
+      allocate (regions(0))
+      if (order < 1 .or. order > max_region_order) then
+         call set_error(error, err_invalid_parameter, "order: must be 1 to "//integer_text(max_region_order)// &
+            ", got "//integer_text(order))
+         return
+      end if
+      if (.not. (f_max > f_min)) then
+         call set_error(error, err_invalid_parameter, "the frequency range is empty or not finite")
+         return
+      end if
+      f = [(f_min + (f_max - f_min)*real(j - 1, wp)/real(predict_samples - 1, wp), j=1, predict_samples)]
+      f(predict_samples) = f_max
+      do j = 1, predict_samples
+         call oracle%natural(f(j), nu(j)%v, error)
+         if (allocated(error)) then
+            error%message = "at "//real_text(f(j))//": "//error%message
+            return
+         end if
+      end do
+      n_modes = 0
+      do j = 1, predict_samples
+         n_modes = max(n_modes, size(nu(j)%v))
+      end do
+      do kind = region_simple, region_difference
+         do k = 1, order
+            do i = 1, n_modes
+               do m = i, n_modes
+                  if ((kind == region_simple) .neqv. (m == i)) cycle
+                  do j = 1, predict_samples - 1
+                     if (size(nu(j)%v) < m .or. size(nu(j + 1)%v) < m) cycle
+                     if (changes(resonance(nu(j)%v, kind, k, i, m), resonance(nu(j + 1)%v, kind, k, i, m))) then
+                        r = region_t(kind=kind, order=k, modes=[i, m])
+                        call bisect_resonance(oracle, f(j), f(j + 1), r, error)
+                        if (allocated(error)) return
+                        regions = [regions, r]
+                     end if
+                  end do
+               end do
+            end do
+         end do
+      end do
+      ! ascending, and the windows between neighbours
+      call sort_regions(regions)
+      centres = regions%predicted
+      do j = 1, size(regions)
+         left = f_min
+         right = f_max
+         do i = 1, size(centres)
+            if (centres(i) < regions(j)%predicted) left = max(left, 0.5_wp*(centres(i) + regions(j)%predicted))
+            if (centres(i) > regions(j)%predicted) right = min(right, 0.5_wp*(centres(i) + regions(j)%predicted))
+         end do
+         regions(j)%window = [left, right]
+      end do
+   end subroutine predict_regions
+
+   !> The predicted regions (`predict_regions`) and, for each, its tip, its width at d_max and
+   !> its status, searched on OpenMP threads (one region a thread).
+   subroutine find_regions(oracle, f_min, f_max, d_min, d_max, order, tolerance, n_samples, regions, error)
+      class(oracle_t), intent(in) :: oracle   !! the problem
+      real(wp), intent(in) :: f_min, f_max    !! the frequency range
+      real(wp), intent(in) :: d_min, d_max    !! the drive range
+      integer, intent(in) :: order            !! highest order k
+      real(wp), intent(in) :: tolerance       !! target of the tips, relative to max(1, |x|)
+      integer, intent(in) :: n_samples        !! samples of the drive range for a first root (≥ 2)
+      type(region_t), allocatable, intent(out) :: regions(:)
+      !> err_invalid_parameter naming the argument; a point the method cannot compute
+      type(error_t), allocatable, intent(out) :: error
+      character(len=300), allocatable :: failures(:)
+      type(error_t), allocatable :: cause
+      integer :: j
+      if (.not. (d_max > d_min)) then
+         call set_error(error, err_invalid_parameter, "the drive range is empty or not finite")
+         return
+      end if
+      if (n_samples < 2 .or. n_samples > 100000) then
+         call set_error(error, err_invalid_parameter, "n_samples: must be 2 to 100000, got "//integer_text(n_samples))
+         return
+      end if
+      if (.not. (tolerance > 0.0_wp .and. tolerance < 1.0_wp)) then
+         call set_error(error, err_invalid_parameter, "tolerance: must lie in (0, 1)")
+         return
+      end if
+      call oracle%check(f_min, d_min, error)
+      if (.not. allocated(error)) call oracle%check(f_max, d_max, error)
+      if (.not. allocated(error)) call oracle%check(f_min, d_max, error)
+      if (.not. allocated(error)) call oracle%check(f_max, d_min, error)
+      if (allocated(error)) return
+      call predict_regions(oracle, f_min, f_max, order, regions, error)
+      if (allocated(error)) return
+      allocate (failures(size(regions)))
+      failures = ""
+      !$omp parallel do schedule(dynamic) default(shared) private(j, cause)
+      do j = 1, size(regions)
+         call search_region(oracle, d_min, d_max, tolerance, n_samples, regions(j), cause)
+         if (allocated(cause)) failures(j) = cause%message
+      end do
+      !$omp end parallel do
+      do j = 1, size(regions)
+         if (len_trim(failures(j)) > 0) then
+            call set_error(error, err_invalid_parameter, "the "//region_kind_name(regions(j)%kind)// &
+               " region of order "//integer_text(regions(j)%order)//": "//trim(failures(j)))
+            return
+         end if
+      end do
+   end subroutine find_regions
+
+   !> The tip, width and status of one predicted region.
+   subroutine search_region(oracle, d_min, d_max, tolerance, n_samples, r, error)
+      class(oracle_t), intent(in) :: oracle
+      real(wp), intent(in) :: d_min, d_max, tolerance
+      integer, intent(in) :: n_samples
+      type(region_t), intent(inout) :: r
+      type(error_t), allocatable, intent(out) :: error
+      type(search_t) :: s
+      type(oracle_sample_t) :: top, below, above
+      real(wp) :: f0, c0, c_error, f_error
+      logical :: exact
+      s = search_t(d_min=d_min, d_max=d_max, tolerance=tolerance, n_samples=n_samples)
+      if (r%kind == region_simple .and. oracle_is_scalar(oracle)) s%side = merge(1, -1, mod(r%order, 2) == 0)
+      call undriven_constant(oracle, r%predicted, exact)
+      if (.not. oracle%damped(r%predicted) .and. exact) then
+         r%frequency = r%predicted
+         r%frequency_error = 0.0_wp
+         r%drive = 0.0_wp
+         r%drive_error = 0.0_wp
+         r%status = region_theory
+      else
+         f0 = r%predicted
+         call first_critical(oracle, s, f0, c0, c_error, error)
+         if (allocated(error)) return
+         if (c0 == none) then
+            ! closed at the prediction: is it open anywhere in the window at the top?
+            call top_peak(oracle, s, r%window, f0, top, error)
+            if (allocated(error)) return
+            if (top%g <= 0.0_wp) then
+               r%status = region_closed
+               r%frequency = f0
+               r%drive = d_max
+               r%evaluations = s%count
+               return
+            end if
+            call first_critical(oracle, s, f0, c0, c_error, error)
+            if (allocated(error)) return
+         end if
+         call minimise_critical(oracle, s, r%window, f0, c0, c_error, f_error, error)
+         if (allocated(error)) return
+         r%frequency = f0
+         r%frequency_error = f_error
+         r%drive = c0
+         r%drive_error = c_error
+         if (c0 <= d_min) then
+            r%status = region_open_below
+         else
+            call oracle%distance(f0, max(d_min, c0 - 2.0_wp*c_error), s%side, below, error)
+            if (allocated(error)) return
+            call oracle%distance(f0, min(d_max, c0 + 2.0_wp*c_error), s%side, above, error)
+            if (allocated(error)) return
+            s%count = s%count + 2
+            r%status = region_unconfirmed
+            if (below%g < -below%bound .and. above%g > above%bound) r%status = region_found
+            ! a tip on the window's end is not a tip of this region
+            if (f0 - f_error <= r%window(1) .or. f0 + f_error >= r%window(2)) r%status = region_unconfirmed
+         end if
+      end if
+      call top_edges(oracle, s, r, error)
+      r%evaluations = s%count
+   end subroutine search_region
+
+   !> Whether the oracle is a scalar model (its two families searched apart).
+   logical function oracle_is_scalar(oracle)
+      class(oracle_t), intent(in) :: oracle
+      select type (oracle)
+      type is (scalar_oracle_t)
+         oracle_is_scalar = .true.
+      class default
+         oracle_is_scalar = .false.
+      end select
+   end function oracle_is_scalar
+
+   !> Whether the undriven problem at f is constant in time (its resonances then exact).
+   subroutine undriven_constant(oracle, f, exact)
+      class(oracle_t), intent(in) :: oracle
+      real(wp), intent(in) :: f
+      logical, intent(out) :: exact
+      integer, parameter :: nodes = 64
+      real(wp) :: alpha, beta, tau, q(nodes), scale
+      real(wp), allocatable :: p(:, :), b(:, :), k0(:, :)
+      integer :: j, n
+      call oracle%coordinates(f, 0.0_wp, alpha, beta)
+      exact = .false.
+      select type (oracle)
+      type is (scalar_oracle_t)
+         q = oracle%model%coefficient(alpha, beta, [(oracle%model%period()*real(j - 1, wp)/nodes, j=1, nodes)])
+         exact = maxval(q) - minval(q) <= 64.0_wp*epsilon(1.0_wp)*max(1.0_wp, maxval(abs(q)))
+      type is (system_oracle_t)
+         n = oracle%system%dof()
+         allocate (p(n, n), b(n, n), k0(n, n))
+         call oracle%system%stiffness(alpha, 0.0_wp, p, b)
+         k0 = p + beta*b
+         scale = max(1.0_wp, maxval(abs(k0)))
+         exact = .true.
+         do j = 2, nodes
+            tau = oracle%system%period()*real(j - 1, wp)/nodes
+            call oracle%system%stiffness(alpha, tau, p, b)
+            if (maxval(abs(p + beta*b - k0)) > 64.0_wp*epsilon(1.0_wp)*scale) exact = .false.
+         end do
+      end select
+   end subroutine undriven_constant
+
+   !> The value whose sign change marks a resonance of the given kind and order.
+   pure real(wp) function resonance(nu, kind, k, i, m)
+      real(wp), intent(in) :: nu(:)
+      integer, intent(in) :: kind, k, i, m
+      select case (kind)
+      case (region_simple)
+         resonance = 2.0_wp*nu(i) - real(k, wp)
+      case (region_sum)
+         resonance = nu(i) + nu(m) - real(k, wp)
+      case default
+         resonance = abs(nu(m) - nu(i)) - real(k, wp)
+      end select
+   end function resonance
+
+   !> The resonance of r between a and b by bisection (to round-off).
+   subroutine bisect_resonance(oracle, a0, b0, r, error)
+      class(oracle_t), intent(in) :: oracle
+      real(wp), intent(in) :: a0, b0
+      type(region_t), intent(inout) :: r
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: a, b, c, ra, rc
+      real(wp), allocatable :: nu(:)
+      integer :: iteration
+      a = a0
+      b = b0
+      call oracle%natural(a, nu, error)
+      if (allocated(error)) return
+      ra = resonance(nu, r%kind, r%order, r%modes(1), r%modes(2))
+      do iteration = 1, 100
+         c = 0.5_wp*(a + b)
+         if (c <= a .or. c >= b) exit
+         call oracle%natural(c, nu, error)
+         if (allocated(error)) return
+         if (size(nu) < r%modes(2)) exit
+         rc = resonance(nu, r%kind, r%order, r%modes(1), r%modes(2))
+         if (changes(ra, rc)) then
+            b = c
+         else
+            a = c
+            ra = rc
+         end if
+      end do
+      r%predicted = 0.5_wp*(a + b)
+   end subroutine bisect_resonance
+
+   !> The least drive where the distance is positive at f, by sampling the drive range and
+   !> refining the first change; `none` when it stays negative up to d_max.
+   subroutine first_critical(oracle, s, f, c, c_error, error)
+      class(oracle_t), intent(in) :: oracle
+      type(search_t), intent(inout) :: s
+      real(wp), intent(in) :: f
+      real(wp), intent(out) :: c, c_error
+      type(error_t), allocatable, intent(out) :: error
+      type(oracle_sample_t) :: previous, current
+      real(wp) :: d, d_previous
+      integer :: j
+      c = none
+      c_error = 0.0_wp
+      do j = 1, s%n_samples
+         d = s%d_min + (s%d_max - s%d_min)*real(j - 1, wp)/real(s%n_samples - 1, wp)
+         if (j == s%n_samples) d = s%d_max
+         call evaluate(oracle, s, f, d, current, error)
+         if (allocated(error)) return
+         if (current%g > 0.0_wp) then
+            if (j == 1) then
+               c = s%d_min
+               return
+            end if
+            call drive_root(oracle, s, f, d_previous, d, previous, current, c, c_error, error)
+            return
+         end if
+         previous = current
+         d_previous = d
+      end do
+   end subroutine first_critical
+
+   !> c(f) from a nearby value c_near: bracketed by steps growing fourfold, then refined;
+   !> `none` when stable up to d_max, d_min when unstable there already.
+   subroutine next_critical(oracle, s, f, c_near, c, c_error, error)
+      class(oracle_t), intent(in) :: oracle
+      type(search_t), intent(inout) :: s
+      real(wp), intent(in) :: f, c_near
+      real(wp), intent(out) :: c, c_error
+      type(error_t), allocatable, intent(out) :: error
+      type(oracle_sample_t) :: s0, s1
+      real(wp) :: d0, d1, h
+      integer :: iteration
+      c_error = 0.0_wp
+      d0 = min(max(c_near, s%d_min), s%d_max)
+      call evaluate(oracle, s, f, d0, s0, error)
+      if (allocated(error)) return
+      h = max(1.0e-3_wp*abs(d0), 1.0e-6_wp*(s%d_max - s%d_min))
+      do iteration = 1, 200
+         if (s0%g > 0.0_wp) then
+            d1 = max(s%d_min, d0 - h)
+         else
+            d1 = min(s%d_max, d0 + h)
+         end if
+         call evaluate(oracle, s, f, d1, s1, error)
+         if (allocated(error)) return
+         if (changes(s0%g, s1%g) .or. (s1%g == 0.0_wp .neqv. s0%g == 0.0_wp)) then
+            if (d1 < d0) then
+               call drive_root(oracle, s, f, d1, d0, s1, s0, c, c_error, error)
+            else
+               call drive_root(oracle, s, f, d0, d1, s0, s1, c, c_error, error)
+            end if
+            return
+         end if
+         if (d1 <= s%d_min .and. s1%g > 0.0_wp) then
+            c = s%d_min
+            return
+         end if
+         if (d1 >= s%d_max .and. s1%g <= 0.0_wp) then
+            c = none
+            return
+         end if
+         d0 = d1
+         s0 = s1
+         h = 4.0_wp*h
+      end do
+      c = none
+   end subroutine next_critical
+
+   !> The distance at (f, d), counted.
+   subroutine evaluate(oracle, s, f, d, sample, error)
+      class(oracle_t), intent(in) :: oracle
+      type(search_t), intent(inout) :: s
+      real(wp), intent(in) :: f, d
+      type(oracle_sample_t), intent(out) :: sample
+      type(error_t), allocatable, intent(out) :: error
+      call oracle%distance(f, d, s%side, sample, error)
+      s%count = s%count + 1
+      if (allocated(error)) error%message = "at ("//real_text(f)//", "//real_text(d)//"): "//error%message
+   end subroutine evaluate
+
+   !> The root of the distance in the drive between a (stable, g ≤ 0) and b (g > 0) at f.
+   subroutine drive_root(oracle, s, f, a, b, sa, sb, c, c_error, error)
+      class(oracle_t), intent(in) :: oracle
+      type(search_t), intent(inout) :: s
+      real(wp), intent(in) :: f, a, b
+      type(oracle_sample_t), intent(in) :: sa, sb
+      real(wp), intent(out) :: c, c_error
+      type(error_t), allocatable, intent(out) :: error
+      call bracketed_root(oracle, s, .true., f, a, b, sa, sb, c, c_error, error)
+   end subroutine drive_root
+
+   !> The root of the distance along the drive (`along_drive`, at f = fixed) or along f (at
+   !> d = fixed) in [a0, b0], the distance changing sign between the ends: Illinois regula
+   !> falsi to tolerance × max(1, |x|) or until |g| is within its error; the error bound is
+   !> the final bracket or the distance's error over the slope, whichever is larger.
+   subroutine bracketed_root(oracle, s, along_drive, fixed, a0, b0, sa, sb, x, x_error, error)
+      class(oracle_t), intent(in) :: oracle
+      type(search_t), intent(inout) :: s
+      logical, intent(in) :: along_drive
+      real(wp), intent(in) :: fixed, a0, b0
+      type(oracle_sample_t), intent(in) :: sa, sb
+      real(wp), intent(out) :: x, x_error
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), parameter :: big = 1.0e300_wp
+      real(wp) :: a, b, fa, fb, ga, gb, fc, width, slope, bound
+      type(oracle_sample_t) :: sc
+      integer :: iteration, kept
+      logical :: on_value
+      on_value = .false.
+      a = a0
+      b = b0
+      fa = sa%g
+      fb = sb%g
+      ga = fa
+      gb = fb
+      bound = max(sa%bound, sb%bound)
+      kept = 0
+      x = 0.5_wp*(a + b)
+      do iteration = 1, 200
+         width = b - a
+         if (width <= s%tolerance*max(1.0_wp, abs(a), abs(b))) exit
+         x = 0.5_wp*(a + b)
+         if (max(abs(fa), abs(fb)) < big .and. fa /= fb) then
+            x = (fa*b - fb*a)/(fa - fb)
+            if (.not. (x > a + 0.01_wp*width .and. x < b - 0.01_wp*width)) x = 0.5_wp*(a + b)
+         end if
+         if (along_drive) then
+            call evaluate(oracle, s, fixed, x, sc, error)
+         else
+            call evaluate(oracle, s, x, fixed, sc, error)
+         end if
+         if (allocated(error)) return
+         fc = sc%g
+         bound = sc%bound
+         on_value = abs(fc) <= bound
+         if (on_value) exit
+         if (changes(fa, fc) .or. (fc > 0.0_wp .and. fa == 0.0_wp)) then
+            b = x
+            fb = fc
+            gb = fc
+            if (kept == -1) fa = 0.5_wp*fa
+            kept = -1
+         else
+            a = x
+            fa = fc
+            ga = fc
+            if (kept == 1) fb = 0.5_wp*fb
+            kept = 1
+         end if
+      end do
+      if (.not. (x >= a .and. x <= b)) x = 0.5_wp*(a + b)
+      slope = 0.0_wp
+      if (max(abs(sa%g), abs(sb%g)) < big) slope = abs(sb%g - sa%g)/(b0 - a0)
+      if (b > a .and. max(abs(ga), abs(gb)) < big) slope = abs(gb - ga)/(b - a)
+      x_error = b - a
+      if (slope > 0.0_wp) then
+         if (on_value) then
+            ! |g| within its error at x: the root lies within that error over the slope
+            x_error = min(b - a, 2.0_wp*bound/slope)
+         else
+            x_error = max(b - a, min(2.0_wp*bound/slope, b0 - a0))
+         end if
+      end if
+      x_error = max(x_error, 4.0_wp*spacing(max(1.0_wp, abs(x))))
+   end subroutine bracketed_root
+
+   !> Golden-section search of the window for the largest distance at d_max, starting at f.
+   subroutine top_peak(oracle, s, window, f, peak, error)
+      class(oracle_t), intent(in) :: oracle
+      type(search_t), intent(inout) :: s
+      real(wp), intent(in) :: window(2)
+      real(wp), intent(inout) :: f
+      type(oracle_sample_t), intent(out) :: peak
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), parameter :: ratio = 0.6180339887498949_wp
+      real(wp) :: a, b, x1, x2
+      type(oracle_sample_t) :: s1, s2
+      integer :: iteration
+      a = window(1)
+      b = window(2)
+      x1 = b - ratio*(b - a)
+      x2 = a + ratio*(b - a)
+      call evaluate(oracle, s, x1, s%d_max, s1, error)
+      if (allocated(error)) return
+      call evaluate(oracle, s, x2, s%d_max, s2, error)
+      if (allocated(error)) return
+      do iteration = 1, 60
+         if (s1%g > 0.0_wp .or. s2%g > 0.0_wp) exit
+         if (b - a <= sqrt(s%tolerance)*max(1.0_wp, abs(a), abs(b))) exit
+         if (s1%g >= s2%g) then
+            b = x2
+            x2 = x1
+            s2 = s1
+            x1 = b - ratio*(b - a)
+            call evaluate(oracle, s, x1, s%d_max, s1, error)
+         else
+            a = x1
+            x1 = x2
+            s1 = s2
+            x2 = a + ratio*(b - a)
+            call evaluate(oracle, s, x2, s%d_max, s2, error)
+         end if
+         if (allocated(error)) return
+      end do
+      if (s1%g >= s2%g) then
+         f = x1
+         peak = s1
+      else
+         f = x2
+         peak = s2
+      end if
+   end subroutine top_peak
+
+   !> Brent's minimisation of c(f) over the window from f (c(f) = c): the tip's f and c, the
+   !> error of c (the root's plus the spread of c over the final bracket) and of f (the
+   !> bracket).
+   subroutine minimise_critical(oracle, s, window, f, c, c_error, f_error, error)
+      class(oracle_t), intent(in) :: oracle
+      type(search_t), intent(inout) :: s
+      real(wp), intent(in) :: window(2)
+      real(wp), intent(inout) :: f, c, c_error
+      real(wp), intent(out) :: f_error
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), parameter :: golden = 0.3819660112501051_wp
+      real(wp) :: a, b, v, w, x, fv, fw, fx, d, e, u, fu, tol1, tol2, xm, p, q, rr, eu, ex, gap
+      integer :: iteration
+      a = window(1)
+      b = window(2)
+      x = min(max(f, a), b)
+      fx = c
+      ex = c_error
+      v = x
+      w = x
+      fv = fx
+      fw = fx
+      d = 0.0_wp
+      e = 0.0_wp
+      do iteration = 1, 100
+         xm = 0.5_wp*(a + b)
+         tol1 = sqrt(s%tolerance)*abs(x) + 1.0e-12_wp*(window(2) - window(1))
+         tol2 = 2.0_wp*tol1
+         if (abs(x - xm) <= tol2 - 0.5_wp*(b - a)) exit
+         if (abs(e) > tol1) then
+            rr = (x - w)*(fx - fv)
+            q = (x - v)*(fx - fw)
+            p = (x - v)*q - (x - w)*rr
+            q = 2.0_wp*(q - rr)
+            if (q > 0.0_wp) p = -p
+            q = abs(q)
+            rr = e
+            e = d
+            if (abs(p) >= abs(0.5_wp*q*rr) .or. p <= q*(a - x) .or. p >= q*(b - x) .or. &
+                max(abs(fx), abs(fv), abs(fw)) >= none) then
+               e = merge(a - x, b - x, x >= xm)
+               d = golden*e
+            else
+               d = p/q
+               u = x + d
+               if (u - a < tol2 .or. b - u < tol2) d = sign(tol1, xm - x)
+            end if
+         else
+            e = merge(a - x, b - x, x >= xm)
+            d = golden*e
+         end if
+         u = x + merge(d, sign(tol1, d), abs(d) >= tol1)
+         call next_critical(oracle, s, u, merge(fx, s%d_max, fx < none), fu, eu, error)
+         if (allocated(error)) return
+         if (fu <= fx) then
+            if (u >= x) then
+               a = x
+            else
+               b = x
+            end if
+            v = w
+            fv = fw
+            w = x
+            fw = fx
+            x = u
+            fx = fu
+            ex = eu
+         else
+            if (u < x) then
+               a = u
+            else
+               b = u
+            end if
+            if (fu <= fw .or. w == x) then
+               v = w
+               fv = fw
+               w = u
+               fw = fu
+            else if (fu <= fv .or. v == x .or. v == w) then
+               v = u
+               fv = fu
+            end if
+         end if
+      end do
+      f = x
+      c = fx
+      f_error = max(0.5_wp*(b - a), 4.0_wp*spacing(abs(x)))
+      ! how far below the best value the minimum may lie: the vertex of the parabola through
+      ! the three best points, or (no parabola) the spread of c over them
+      gap = 0.0_wp
+      if (max(fv, fw) < none) then
+         gap = max(fv, fw) - fx
+         p = (x - w)*(fx - fv) - (x - v)*(fx - fw)
+         q = (x - w)**2*(fx - fv) - (x - v)**2*(fx - fw)
+         if (abs(p) > 0.0_wp .and. w /= x .and. v /= x .and. v /= w) then
+            ! the vertex's value: fx − (q/(2p))² × curvature, the curvature from the three points
+            rr = ((fw - fx)/(w - x) - (fv - fx)/(v - x))/(w - v)
+            if (rr > 0.0_wp) gap = min(gap, rr*(0.5_wp*q/p)**2)
+         end if
+      end if
+      c_error = ex + gap
+   end subroutine minimise_critical
+
+   !> The region's edges at d_max, stepping out from its tip (see the module's text).
+   subroutine top_edges(oracle, s, r, error)
+      class(oracle_t), intent(in) :: oracle
+      type(search_t), intent(inout) :: s
+      type(region_t), intent(inout) :: r
+      type(error_t), allocatable, intent(out) :: error
+      type(oracle_sample_t) :: tip, inside, current
+      real(wp) :: x0, x1, h, edge, edge_error, start
+      integer :: direction, iteration
+      r%edges = 0.0_wp
+      start = r%frequency
+      call evaluate(oracle, s, start, s%d_max, tip, error)
+      if (allocated(error)) return
+      if (.not. (tip%g > 0.0_wp)) then
+         ! the region bends away from its tip's frequency: open elsewhere in the window?
+         call top_peak(oracle, s, r%window, start, tip, error)
+         if (allocated(error) .or. .not. (tip%g > 0.0_wp)) return
+      end if
+      do direction = 1, 2
+         inside = tip
+         x0 = start
+         h = 1.0e-3_wp*(r%window(2) - r%window(1))
+         r%clipped(direction) = .true.
+         edge = r%window(direction)
+         do iteration = 1, 100
+            if (direction == 1) then
+               x1 = max(r%window(1), x0 - h)
+            else
+               x1 = min(r%window(2), x0 + h)
+            end if
+            call evaluate(oracle, s, x1, s%d_max, current, error)
+            if (allocated(error)) return
+            if (.not. (current%g > 0.0_wp)) then
+               if (direction == 1) then
+                  call bracketed_root(oracle, s, .false., s%d_max, x1, x0, current, inside, edge, edge_error, error)
+               else
+                  call bracketed_root(oracle, s, .false., s%d_max, x0, x1, inside, current, edge, edge_error, error)
+               end if
+               if (allocated(error)) return
+               r%clipped(direction) = .false.
+               exit
+            end if
+            if (x1 == r%window(direction)) exit
+            x0 = x1
+            inside = current
+            h = 2.0_wp*h
+         end do
+         r%edges(direction) = edge
+      end do
+   end subroutine top_edges
+
+   !> Whether two values have strictly opposite signs.
+   pure logical function changes(a, b)
+      real(wp), intent(in) :: a, b
+      changes = (a > 0.0_wp .and. b < 0.0_wp) .or. (a < 0.0_wp .and. b > 0.0_wp)
+   end function changes
+
+   !> Regions ascending in their predicted f (insertion).
+   pure subroutine sort_regions(regions)
+      type(region_t), intent(inout) :: regions(:)
+      type(region_t) :: t
+      integer :: i, j
+      do i = 2, size(regions)
+         t = regions(i)
+         j = i - 1
+         do while (j >= 1)
+            if (regions(j)%predicted <= t%predicted) exit
+            regions(j + 1) = regions(j)
+            j = j - 1
+         end do
+         regions(j + 1) = t
+      end do
+   end subroutine sort_regions
+end module hillstab_curves_regions
