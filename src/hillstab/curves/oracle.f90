@@ -57,15 +57,21 @@ module hillstab_curves_oracle
       procedure(damped_interface), deferred :: damped
       procedure(check_interface), deferred :: check
       procedure :: coordinates
+      procedure :: signatures_agree => no_signatures
+      procedure :: driven
    end type oracle_t
 
    abstract interface
-      !> The signed distance at (f, d) for the side σ (scalar models; systems ignore it).
-      subroutine distance_interface(self, f, d, side, s, error)
+      !> The signed distance at (f, d) for one family of regions: the side σ of a scalar
+      !> model's trace, the argument of a system's multipliers.
+      subroutine distance_interface(self, f, d, side, argument, s, error)
          import :: oracle_t, oracle_sample_t, wp, error_t
          class(oracle_t), intent(in) :: self
          real(wp), intent(in) :: f, d   !! frequency-like coordinate, drive
-         integer, intent(in) :: side    !! +1, −1 or 0 (either)
+         integer, intent(in) :: side    !! scalar models: +1, −1 or 0 (either)
+         !> systems: the multipliers' argument/π in [0, 1] the family's instability sets in at
+         !> (the modulus of the multipliers nearest it); negative: the largest modulus of all
+         real(wp), intent(in) :: argument
          type(oracle_sample_t), intent(out) :: s
          !> a point the method cannot compute
          type(error_t), allocatable, intent(out) :: error
@@ -119,6 +125,7 @@ module hillstab_curves_oracle
       procedure :: natural => system_natural
       procedure :: damped => system_damped
       procedure :: check => system_check
+      procedure :: signatures_agree => system_signatures_agree
    end type system_oracle_t
 
 contains
@@ -137,6 +144,47 @@ contains
       end if
    end subroutine coordinates
 
+   !> Whether the drive changes the problem's time dependence at f: the coefficient (a system's
+   !> stiffness) at drive 1 less that at drive 0 is not constant over a period.
+   logical function driven(self, f)
+      class(oracle_t), intent(in) :: self
+      real(wp), intent(in) :: f
+      integer, parameter :: nodes = 64
+      real(wp) :: a0, b0, a1, b1, tau(nodes), dq(nodes), period, scale
+      real(wp), allocatable :: p0(:, :), q0(:, :), p1(:, :), q1(:, :), first(:, :), delta(:, :)
+      integer :: j, n
+      call self%coordinates(f, 0.0_wp, a0, b0)
+      call self%coordinates(f, 1.0_wp, a1, b1)
+      driven = .false.
+      select type (self)
+      type is (scalar_oracle_t)
+         period = self%model%period()
+         tau = [(period*real(j - 1, wp)/nodes, j=1, nodes)]
+         dq = self%model%coefficient(a1, b1, tau) - self%model%coefficient(a0, b0, tau)
+         scale = max(1.0_wp, maxval(abs(dq)))
+         driven = maxval(dq) - minval(dq) > 1.0e-12_wp*scale
+      type is (system_oracle_t)
+         n = self%system%dof()
+         period = self%system%period()
+         allocate (p0(n, n), q0(n, n), p1(n, n), q1(n, n), first(n, n), delta(n, n))
+         do j = 1, nodes
+            call self%system%stiffness(a0, period*real(j - 1, wp)/nodes, p0, q0)
+            call self%system%stiffness(a1, period*real(j - 1, wp)/nodes, p1, q1)
+            delta = (p1 + b1*q1) - (p0 + b0*q0)
+            if (j == 1) first = delta
+            if (maxval(abs(delta - first)) > 1.0e-12_wp*max(1.0_wp, maxval(abs(first)))) driven = .true.
+         end do
+      end select
+   end function driven
+
+   !> Whether every mode of the undriven problem at f has the same Krein signature (none for
+   !> a scalar model: it has one mode).
+   logical function no_signatures(self, f)
+      class(oracle_t), intent(in) :: self
+      real(wp), intent(in) :: f
+      no_signatures = .false.
+   end function no_signatures
+
    !> The scalar model's point at (f, d), its damping the model's there.
    function scalar_point(self, f, d) result(point)
       class(scalar_oracle_t), intent(in) :: self
@@ -146,10 +194,11 @@ contains
       point%epsilon = self%model%point_damping(point%alpha, self%epsilon)
    end function scalar_point
 
-   subroutine scalar_distance(self, f, d, side, s, error)
+   subroutine scalar_distance(self, f, d, side, argument, s, error)
       class(scalar_oracle_t), intent(in) :: self
       real(wp), intent(in) :: f, d
       integer, intent(in) :: side
+      real(wp), intent(in) :: argument
       type(oracle_sample_t), intent(out) :: s
       type(error_t), allocatable, intent(out) :: error
       type(hill_point_t) :: point
@@ -227,10 +276,11 @@ contains
       call prepare_system(self%system, self%epsilon, form, error, alpha)
    end subroutine system_form
 
-   subroutine system_distance(self, f, d, side, s, error)
+   subroutine system_distance(self, f, d, side, argument, s, error)
       class(system_oracle_t), intent(in) :: self
       real(wp), intent(in) :: f, d
       integer, intent(in) :: side
+      real(wp), intent(in) :: argument
       type(oracle_sample_t), intent(out) :: s
       type(error_t), allocatable, intent(out) :: error
       type(system_form_t) :: form
@@ -252,7 +302,7 @@ contains
       end if
       margin = 0.0_wp
       if (form%hamiltonian) margin = 100.0_wp*self%method%tolerance
-      s%g = floquet%log_lambda_max - margin
+      s%g = family_log_modulus(floquet, argument) - margin
       ! the error of ln|λ|: Φ's relative to its largest entry, over the multiplier's size
       s%bound = max(monodromy%error_estimate, self%method%tolerance)* &
                 exp(min(max(0.0_wp, log(max(1.0_wp, maxval(abs(monodromy%phi)))) + monodromy%log_scale - &
@@ -265,21 +315,13 @@ contains
       real(wp), allocatable, intent(out) :: nu(:)
       type(error_t), allocatable, intent(out) :: error
       type(system_form_t) :: form
-      real(wp) :: alpha, beta, tau
-      real(wp), allocatable :: k(:, :), p(:, :), b(:, :), a(:, :), wr(:), wi(:), work(:), vl(:, :)
+      real(wp), allocatable :: k(:, :), a(:, :), wr(:), wi(:), work(:), vl(:, :)
       integer :: n, m, j, info
-      call system_form(self, f, 0.0_wp, form, alpha, beta, error)
+      call undriven_stiffness(self, f, form, k, error)
       if (allocated(error)) return
       n = form%n
       m = 2*n
-      allocate (k(n, n), p(n, n), b(n, n), a(m, m), wr(m), wi(m), work(8*m), vl(1, 1))
-      k = 0.0_wp
-      do j = 1, mean_nodes
-         tau = form%period*real(j - 1, wp)/real(mean_nodes, wp)
-         call self%system%stiffness(alpha, tau, p, b)
-         k = k + p + beta*b
-      end do
-      k = k/real(mean_nodes, wp)
+      allocate (a(m, m), wr(m), wi(m), work(8*m), vl(1, 1))
       a = 0.0_wp
       do j = 1, n
          a(j, n + j) = 1.0_wp
@@ -298,6 +340,29 @@ contains
       nu = pack(wi, wi > 0.0_wp)*form%period/(2.0_wp*pi)
       call sort(nu)
    end subroutine system_natural
+
+   !> The system's form at f and its stiffness at drive 0 averaged over a period.
+   subroutine undriven_stiffness(self, f, form, k, error)
+      class(system_oracle_t), intent(in) :: self
+      real(wp), intent(in) :: f
+      type(system_form_t), intent(out) :: form
+      real(wp), allocatable, intent(out) :: k(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: alpha, beta, tau
+      real(wp), allocatable :: p(:, :), b(:, :)
+      integer :: n, j
+      call system_form(self, f, 0.0_wp, form, alpha, beta, error)
+      if (allocated(error)) return
+      n = form%n
+      allocate (k(n, n), p(n, n), b(n, n))
+      k = 0.0_wp
+      do j = 1, mean_nodes
+         tau = form%period*real(j - 1, wp)/real(mean_nodes, wp)
+         call self%system%stiffness(alpha, tau, p, b)
+         k = k + p + beta*b
+      end do
+      k = k/real(mean_nodes, wp)
+   end subroutine undriven_stiffness
 
    logical function system_damped(self, f)
       class(system_oracle_t), intent(in) :: self
@@ -319,6 +384,55 @@ contains
       call system_form(self, f, d, form, alpha, beta, error)
       if (.not. allocated(error)) call check_system_point(self%system, alpha, beta, error)
    end subroutine system_check
+
+   !> ln|λ| of the family at `argument` (see `distance_interface`): the largest modulus among
+   !> the multipliers whose argument/π lies nearest it (within 1e-3 of the nearest), or of all.
+   pure real(wp) function family_log_modulus(floquet, argument) result(g)
+      type(system_floquet_t), intent(in) :: floquet
+      real(wp), intent(in) :: argument
+      real(wp) :: angle(size(floquet%multipliers)), modulus(size(floquet%multipliers)), nearest
+      integer :: i
+      if (argument < 0.0_wp .or. size(floquet%multipliers) == 0) then
+         g = floquet%log_lambda_max
+         return
+      end if
+      modulus = abs(floquet%multipliers)
+      angle = abs(atan2(aimag(floquet%multipliers), real(floquet%multipliers)))/pi
+      nearest = minval(abs(angle - argument), mask=modulus > 0.0_wp)
+      g = -huge(1.0_wp)
+      do i = 1, size(modulus)
+         if (modulus(i) > 0.0_wp .and. abs(angle(i) - argument) <= nearest + 1.0e-3_wp) &
+            g = max(g, floquet%log_scale + log(modulus(i)))
+      end do
+   end function family_log_modulus
+
+   !> A system without gyroscopic terms whose averaged undriven stiffness is positive definite
+   !> (its Cholesky factor exists): every mode's Krein signature is the same.
+   logical function system_signatures_agree(self, f)
+      class(system_oracle_t), intent(in) :: self
+      real(wp), intent(in) :: f
+      type(system_form_t) :: form
+      type(error_t), allocatable :: error
+      real(wp), allocatable :: k(:, :)
+      integer :: n, i, j, l
+      system_signatures_agree = .false.
+      call undriven_stiffness(self, f, form, k, error)
+      if (allocated(error) .or. form%gyroscopic) return
+      n = form%n
+      k = 0.5_wp*(k + transpose(k))
+      ! Cholesky in place: positive definite when every pivot is positive
+      do j = 1, n
+         do l = 1, j - 1
+            k(j:n, j) = k(j:n, j) - k(j:n, l)*k(j, l)
+         end do
+         if (.not. (k(j, j) > 0.0_wp)) return
+         k(j, j) = sqrt(k(j, j))
+         do i = j + 1, n
+            k(i, j) = k(i, j)/k(j, j)
+         end do
+      end do
+      system_signatures_agree = .true.
+   end function system_signatures_agree
 
    !> Ascending order, in place (insertion: a handful of values).
    pure subroutine sort(x)

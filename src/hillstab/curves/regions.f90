@@ -24,6 +24,11 @@
 !>   g(f, d_max)), the region is closed in the range (status `region_closed`): damping keeps
 !>   it shut up to the top drive.
 !>
+!> A difference region of two modes whose Krein signatures agree (a system without gyroscopic
+!> terms whose undriven, averaged stiffness is positive definite) is not searched: the two
+!> multipliers pass each other on the circle, and the region stays closed (status
+!> `region_same_signature`).
+!>
 !> **Width.** At d_max, the edges either side of the tip (the roots of g(f, d_max) stepping
 !> out from the tip, or from the window's largest g(f, d_max) where the region bends away from
 !> its tip's frequency); an edge that reaches the window's end is that end and flagged; both
@@ -38,7 +43,7 @@ module hillstab_curves_regions
    private
    public :: region_t, predict_regions, find_regions, region_kind_name, region_status_name
    public :: region_simple, region_sum, region_difference
-   public :: region_found, region_closed, region_unconfirmed, region_open_below, region_theory
+   public :: region_found, region_closed, region_unconfirmed, region_open_below, region_theory, region_same_signature
    public :: max_region_order
 
    integer, parameter :: region_simple = 1      !! 2ν_i = k
@@ -50,6 +55,9 @@ module hillstab_curves_regions
    integer, parameter :: region_unconfirmed = 2  !! tip found, not confirmed (or at the window's end)
    integer, parameter :: region_open_below = 3   !! unstable already at d_min: the tip lies below the range
    integer, parameter :: region_theory = 4       !! undamped, constant undriven problem: the tip is the resonance at drive 0
+   !> a difference region of two modes of equal Krein signature (no gyroscopic terms, the
+   !> undriven stiffness positive definite): closed, its multipliers pass without leaving the circle
+   integer, parameter :: region_same_signature = 5
 
    !> Highest order searched.
    integer, parameter :: max_region_order = 8
@@ -78,6 +86,7 @@ module hillstab_curves_regions
       real(wp) :: d_min = 0.0_wp, d_max = 1.0_wp  !! the drive range
       real(wp) :: tolerance = 1.0e-10_wp          !! target of roots, relative to max(1, |x|)
       integer :: side = 0                         !! scalar models' family: ±1; 0 either
+      real(wp) :: argument = -1.0_wp              !! systems' family: the multipliers' argument/π
       integer :: n_samples = 32                   !! samples of the drive range for the first root
       integer :: count = 0                        !! distances computed
    end type search_t
@@ -86,6 +95,9 @@ module hillstab_curves_regions
    type :: nu_t
       real(wp), allocatable :: v(:)
    end type nu_t
+
+   !> A least drive this near an end of the window (a fraction of its width) is on that end.
+   real(wp), parameter :: edge_fraction = 1.0e-3_wp
 
    !> The "none" of c(f): stable up to d_max.
    real(wp), parameter :: none = huge(1.0_wp)
@@ -123,6 +135,8 @@ contains
          name = "open below"
       case (region_theory)
          name = "theory"
+      case (region_same_signature)
+         name = "same signature"
       case default
          name = "unknown"
       end select
@@ -260,8 +274,19 @@ contains
       real(wp) :: f0, c0, c_error, f_error
       logical :: exact
       s = search_t(d_min=d_min, d_max=d_max, tolerance=tolerance, n_samples=n_samples)
-      if (r%kind == region_simple .and. oracle_is_scalar(oracle)) s%side = merge(1, -1, mod(r%order, 2) == 0)
+      if (oracle_is_scalar(oracle)) then
+         s%side = merge(1, -1, mod(r%order, 2) == 0)
+      else
+         call family_argument(oracle, r, s%argument, error)
+         if (allocated(error)) return
+      end if
       call undriven_constant(oracle, r%predicted, exact)
+      if (r%kind == region_difference .and. oracle%signatures_agree(r%predicted)) then
+         r%status = region_same_signature
+         r%frequency = r%predicted
+         r%drive = d_max
+         return
+      end if
       if (.not. oracle%damped(r%predicted) .and. exact) then
          r%frequency = r%predicted
          r%frequency_error = 0.0_wp
@@ -295,20 +320,41 @@ contains
          if (c0 <= d_min) then
             r%status = region_open_below
          else
-            call oracle%distance(f0, max(d_min, c0 - 2.0_wp*c_error), s%side, below, error)
+            call oracle%distance(f0, max(d_min, c0 - 2.0_wp*c_error), s%side, s%argument, below, error)
             if (allocated(error)) return
-            call oracle%distance(f0, min(d_max, c0 + 2.0_wp*c_error), s%side, above, error)
+            call oracle%distance(f0, min(d_max, c0 + 2.0_wp*c_error), s%side, s%argument, above, error)
             if (allocated(error)) return
             s%count = s%count + 2
             r%status = region_unconfirmed
             if (below%g < -below%bound .and. above%g > above%bound) r%status = region_found
-            ! a tip on the window's end is not a tip of this region
-            if (f0 - f_error <= r%window(1) .or. f0 + f_error >= r%window(2)) r%status = region_unconfirmed
+            ! a least drive on the window's end is no tip of this region but a neighbour's flank
+            if (f0 - r%window(1) <= edge_fraction*(r%window(2) - r%window(1)) .or. &
+                r%window(2) - f0 <= edge_fraction*(r%window(2) - r%window(1))) r%status = region_unconfirmed
          end if
       end if
       call top_edges(oracle, s, r, error)
       r%evaluations = s%count
    end subroutine search_region
+
+   !> The argument/π, folded into [0, 1], of the multipliers at which a system's region sets
+   !> in: 2ν_i at its resonance (k mod 2 for a simple region; the common argument of the two
+   !> colliding multipliers of a combination region).
+   subroutine family_argument(oracle, r, argument, error)
+      class(oracle_t), intent(in) :: oracle
+      type(region_t), intent(in) :: r
+      real(wp), intent(out) :: argument
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: nu(:)
+      argument = -1.0_wp
+      if (r%kind == region_simple) then
+         argument = real(mod(r%order, 2), wp)
+         return
+      end if
+      call oracle%natural(r%predicted, nu, error)
+      if (allocated(error) .or. size(nu) < r%modes(1)) return
+      argument = modulo(2.0_wp*nu(r%modes(1)), 2.0_wp)
+      if (argument > 1.0_wp) argument = 2.0_wp - argument
+   end subroutine family_argument
 
    !> Whether the oracle is a scalar model (its two families searched apart).
    logical function oracle_is_scalar(oracle)
@@ -481,7 +527,7 @@ contains
       real(wp), intent(in) :: f, d
       type(oracle_sample_t), intent(out) :: sample
       type(error_t), allocatable, intent(out) :: error
-      call oracle%distance(f, d, s%side, sample, error)
+      call oracle%distance(f, d, s%side, s%argument, sample, error)
       s%count = s%count + 1
       if (allocated(error)) error%message = "at ("//real_text(f)//", "//real_text(d)//"): "//error%message
    end subroutine evaluate

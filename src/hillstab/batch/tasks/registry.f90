@@ -22,6 +22,7 @@ module hillstab_batch_tasks_registry
    use hillstab_batch_tasks_system, only: system_chart_task, system_points_task, system_task_names
    use hillstab_batch_tasks_system_coefficient, only: system_coefficient_task
    use hillstab_batch_tasks_system_boundaries, only: system_boundaries_task
+   use hillstab_batch_tasks_regions, only: regions_task
    implicit none
    private
    public :: task_entry_t, task_entries, task_names, task_names_text, new_task
@@ -38,7 +39,7 @@ contains
    function task_entries() result(entries)
       type(task_entry_t), allocatable :: entries(:)
       ! one entry at a time: an array constructor of them would leak their strings (gfortran 12)
-      allocate (entries(7))
+      allocate (entries(8))
       entries(1) = task_entry_t("chart", "a stability chart over an (alpha, beta) grid: S, stability, multipliers, "// &
                                 "exponent")
       entries(2) = task_entry_t("points", "the chart's columns at (alpha, beta) points listed in a file")
@@ -57,6 +58,9 @@ contains
       entries(7) = task_entry_t("poincare", "Poincare sections (phi = 0, phi' > 0: r, r') of orbits started at rest "// &
                                 "at each angle of &poincare phi0s, at the (alpha, beta, r0, g) of &series, over "// &
                                 "&series periods")
+      entries(8) = task_entry_t("regions", "every resonance region up to &regions order over the ranges of &chart "// &
+                                "(one axis the frequency, the other the drive): its tip (the least drive at which "// &
+                                "it opens, and the frequency there), kind, width at the top drive and status")
    end function task_entries
 
    !> The task names, blank-padded to a common length.
@@ -103,6 +107,7 @@ contains
             case ("points"); allocate (task, source=system_points_task())
             case ("coefficient"); allocate (task, source=system_coefficient_task())
             case ("boundaries"); allocate (task, source=system_boundaries_task())
+            case ("regions"); allocate (task, source=regions_task())
             case default
                call set_error(error, err_input, "task '"//name//"' does not run on a system of Hill equations "// &
                   "(model = 'system' takes "//system_task_names//")")
@@ -118,6 +123,7 @@ contains
       case ("series"); allocate (task, source=series_task())
       case ("lyapunov"); allocate (task, source=lyapunov_task())
       case ("poincare"); allocate (task, source=poincare_task())
+      case ("regions"); allocate (task, source=regions_task())
       case default
          call set_error(error, err_input, "unknown task '"//name//"' (expected "//task_names_text(", ")//")")
       end select

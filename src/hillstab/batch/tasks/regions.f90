@@ -1,0 +1,280 @@
+!> Task `regions`: every resonance region of the scene's problem (a scalar model, an equation
+!> in physical time, a system) up to `&regions order`, each with its tip — the least drive at
+!> which it opens and the frequency there — its kind, its width at the top of the drive range
+!> and its status (hillstab_curves_regions). The two ranges are those of `&chart`: the drive
+!> is the axis `&regions drive` names (the other axis is the frequency); one line per region,
+!> written atomically.
+module hillstab_batch_tasks_regions
+   use hillstab_core_kinds, only: wp, version_string
+   use hillstab_core_error, only: error_t, set_error, err_input
+   use hillstab_core_text, only: format_es, integer_text, real_text
+   use hillstab_hill_system, only: system_equation_text, system_description
+   use hillstab_integrate_monodromy, only: method_name
+   use hillstab_integrate_system, only: system_method_t, system_method_name
+   use hillstab_curves_critical, only: along_alpha, along_beta
+   use hillstab_curves_oracle, only: oracle_t, scalar_oracle_t, system_oracle_t
+   use hillstab_curves_regions, only: region_t, find_regions, max_region_order
+   use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output, scene_header
+   use hillstab_batch_scene_declaration, only: group_t, new_group, group_reader_t, var_integer, var_name, &
+      begin_group, next_item, end_group
+   use hillstab_batch_scene_file, only: scene_file_t, fail
+   use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group
+   use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text
+   implicit none
+   private
+   public :: regions_task_t, regions_task
+
+   !> `regions`: the resonance regions and their tips.
+   type, extends(task_t) :: regions_task_t
+      type(chart_grid_t) :: grid          !! the ranges (`&chart`)
+      integer :: drive = along_alpha      !! which axis is the drive
+      integer :: order = 2                !! highest order
+      integer :: n_samples = 32           !! samples of the drive range for a first root
+   contains
+      procedure :: read => regions_read
+      procedure :: run => regions_run
+      procedure :: declarations => regions_declarations
+   end type regions_task_t
+
+contains
+
+   !> A regions task.
+   function regions_task() result(task)
+      type(regions_task_t) :: task
+      task%name = "regions"
+      task%takes_physical = .false.
+   end function regions_task
+
+   !> The declaration of `&regions`.
+   function regions_group() result(group)
+      type(group_t) :: group
+      group = new_group("regions", "the resonance regions: which axis is the drive, the highest order")
+      call group%add("drive", var_name, "'auto'", "the axis of the drive amplitude: 'alpha', 'beta', or 'auto' "// &
+                     "(beta for models equation and equations, alpha otherwise); the other axis is the frequency")
+      call group%add("order", var_integer, "2", "highest order k of the resonances (k Omega = 2 omega_i, "// &
+                     "omega_i + omega_j, |omega_i - omega_j|), 1 to "//integer_text(max_region_order))
+      call group%add("n_samples", var_integer, "32", "samples of the drive range for the first critical drive "// &
+                     "of a region, 2 to 100000")
+   end function regions_group
+
+   !> `&chart` (the ranges) and `&regions`.
+   function regions_declarations(self) result(groups)
+      class(regions_task_t), intent(in) :: self  !! the task
+      type(group_t), allocatable :: groups(:)
+      allocate (groups(2))
+      groups(1) = chart_group()
+      groups(2) = regions_group()
+   end function regions_declarations
+
+   !> Read `&chart` and `&regions`.
+   subroutine regions_read(self, file, scene, error)
+      class(regions_task_t), intent(inout) :: self  !! the task
+      type(scene_file_t), intent(in) :: file      !! the scene file
+      type(scene_t), intent(in) :: scene          !! the `&scene` settings
+      type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
+      type(group_t) :: group
+      type(group_reader_t) :: reader
+      character(len=16) :: drive
+      integer :: order, n_samples
+      class(oracle_t), allocatable :: oracle
+      namelist /regions/ drive, order, n_samples
+      allocate (self%groups(2))
+      if (allocated(scene%system)) then
+         call read_chart_group(file, chart_group(), grid=self%grid, values=self%groups(1), error=error)
+      else
+         call read_chart_group(file, chart_group(), scene%model, self%grid, self%groups(1), error)
+      end if
+      if (allocated(error)) return
+      group = regions_group()
+      call begin_group(reader, file, group)
+      read (reader%defaults, nml=regions, iostat=reader%defaults_status, iomsg=reader%defaults_msg)
+      if (reader%from_file) read (file%unit, nml=regions, iostat=reader%ios, iomsg=reader%msg)
+      do while (next_item(reader, file, group))
+         read (reader%record, nml=regions, iostat=reader%stat, iomsg=reader%message)
+      end do
+      write (reader%echo, nml=regions, delim="apostrophe", iostat=reader%echo_status)
+      call end_group(reader, file, group, self%groups(2), error)
+      if (allocated(error)) return
+      select case (trim(drive))
+      case ("alpha")
+         self%drive = along_alpha
+      case ("beta")
+         self%drive = along_beta
+      case ("auto")
+         self%drive = along_alpha
+         if (allocated(scene%system)) then
+            if (scene%system%name() == "equations") self%drive = along_beta
+         else
+            if (scene%model%name() == "equation") self%drive = along_beta
+         end if
+      case default
+         call fail(error, file%path, group%name, "drive", "must be 'alpha', 'beta' or 'auto', got '"//trim(drive)//"'")
+         return
+      end select
+      if (order < 1 .or. order > max_region_order) then
+         call fail(error, file%path, group%name, "order", "must be 1 to "//integer_text(max_region_order)// &
+                   ", got "//integer_text(order))
+         return
+      end if
+      if (n_samples < 2 .or. n_samples > 100000) then
+         call fail(error, file%path, group%name, "n_samples", "must be 2 to 100000, got "//integer_text(n_samples))
+         return
+      end if
+      self%order = order
+      self%n_samples = n_samples
+      call new_oracle(self, scene, oracle)
+      call check_ranges(self, oracle, file%path, error)
+   end subroutine regions_read
+
+   !> The frequency and drive ranges checked against the problem: a point outside its domain
+   !> names the `&chart` bound; a problem whose drive changes nothing in time names `&regions
+   !> drive`.
+   subroutine check_ranges(self, oracle, path, error)
+      class(regions_task_t), intent(in) :: self
+      class(oracle_t), intent(in) :: oracle
+      character(len=*), intent(in) :: path
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: f(2), d(2)
+      type(error_t), allocatable :: cause
+      character(len=:), allocatable :: f_name, d_name
+      integer :: i, j
+      call ranges(self, f, d)
+      f_name = trim(merge("beta ", "alpha", self%drive == along_alpha))
+      d_name = trim(merge("alpha", "beta ", self%drive == along_alpha))
+      if (.not. (d(2) > d(1))) then
+         call fail(error, path, "chart", d_name//"_max", "the drive range is empty: "//d_name//"_max must exceed "// &
+                   d_name//"_min")
+         return
+      end if
+      if (.not. (f(2) > f(1))) then
+         call fail(error, path, "chart", f_name//"_max", "the frequency range is empty: "//f_name// &
+                   "_max must exceed "//f_name//"_min")
+         return
+      end if
+      do i = 1, 2
+         do j = 1, 2
+            call oracle%check(f(i), d(j), cause)
+            if (allocated(cause)) then
+               call fail(error, path, "chart", merge(f_name//"_min", f_name//"_max", i == 1), trim(cause%message))
+               return
+            end if
+         end do
+      end do
+      if (.not. oracle%driven(0.5_wp*(f(1) + f(2)))) &
+         call fail(error, path, "regions", "drive", "the coefficient's time dependence does not change with "// &
+                   d_name//": no drive to search (the other axis?)")
+   end subroutine check_ranges
+
+   !> The frequency range f and the drive range d of the grid.
+   pure subroutine ranges(self, f, d)
+      class(regions_task_t), intent(in) :: self
+      real(wp), intent(out) :: f(2), d(2)
+      if (self%drive == along_alpha) then
+         d = [self%grid%alpha_min, self%grid%alpha_max]
+         f = [self%grid%beta_min, self%grid%beta_max]
+      else
+         f = [self%grid%alpha_min, self%grid%alpha_max]
+         d = [self%grid%beta_min, self%grid%beta_max]
+      end if
+   end subroutine ranges
+
+   !> The scene's problem as an oracle.
+   subroutine new_oracle(self, scene, oracle)
+      class(regions_task_t), intent(in) :: self
+      type(scene_t), intent(in) :: scene
+      class(oracle_t), allocatable, intent(out) :: oracle
+      if (allocated(scene%system)) then
+         block
+            type(system_oracle_t) :: s
+            allocate (s%system, source=scene%system)
+            s%method = system_method_t(scene%method%kind, scene%method%tolerance)
+            s%epsilon = scene%epsilon
+            s%drive_axis = self%drive
+            allocate (oracle, source=s)
+         end block
+      else
+         block
+            type(scalar_oracle_t) :: s
+            allocate (s%model, source=scene%model)
+            s%method = scene%method
+            s%epsilon = scene%epsilon
+            s%drive_axis = self%drive
+            allocate (oracle, source=s)
+         end block
+      end if
+   end subroutine new_oracle
+
+   !> One line per region, ascending in its predicted frequency.
+   subroutine regions_run(self, scene, quiet, error)
+      class(regions_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
+      logical, intent(in) :: quiet  !! no progress on stderr
+      type(error_t), allocatable, intent(out) :: error  !! a point the method cannot compute; err_io
+      class(oracle_t), allocatable :: oracle
+      type(region_t), allocatable :: regions(:)
+      type(output_file_t) :: file
+      character(len=300), allocatable :: extra(:)
+      character(len=:), allocatable :: f_axis, d_axis, equation, line, model, method, names
+      real(wp) :: f(2), d(2)
+      integer :: k
+      call new_oracle(self, scene, oracle)
+      call ranges(self, f, d)
+      call find_regions(oracle, f(1), f(2), d(1), d(2), self%order, scene%method%tolerance, self%n_samples, &
+                        regions, error)
+      if (allocated(error)) then
+         call set_error(error, err_input, scene%source//": &regions: "//error%message)
+         return
+      end if
+      if (allocated(scene%system)) then
+         equation = system_equation_text(scene%system)
+         model = system_description(scene%system)
+         method = "method: "//system_method_name(scene%method%kind)//", tolerance "// &
+                  real_text(scene%method%tolerance)//" on Phi's entries; the distance from stability is ln|lambda| "// &
+                  "of the region's multipliers (those whose argument is nearest the resonance's); epsilon "// &
+                  real_text(scene%epsilon)//" adds C = epsilon M"
+         f_axis = scene%system%axis_name(merge(2, 1, self%drive == along_alpha))
+         d_axis = scene%system%axis_name(merge(1, 2, self%drive == along_alpha))
+      else
+         equation = scene%model%formula()
+         model = "model: "//scene%model%name()//", "//scene%model%formula()
+         method = "method: "//method_name(scene%method%kind)//", tolerance "//real_text(scene%method%tolerance)// &
+                  " on S; the distance from stability is sigma S - 2 cosh(eps P/2), sigma = (-1)^k of the "// &
+                  "region's order; epsilon "//real_text(scene%epsilon)
+         f_axis = scene%model%axis_name(merge(2, 1, self%drive == along_alpha))
+         d_axis = scene%model%axis_name(merge(1, 2, self%drive == along_alpha))
+      end if
+      allocate (extra(7))
+      extra(6) = model
+      extra(7) = method
+      extra(1) = "frequency axis: "//f_axis//" in ["//trim(format_es(f(1), 9))//", "//trim(format_es(f(2), 9))// &
+                 "]; drive axis: "//d_axis//" in ["//trim(format_es(d(1), 9))//", "//trim(format_es(d(2), 9))//"]"
+      extra(2) = "kind: 1 simple (k Omega = 2 omega_i), 2 sum (omega_i + omega_j), 3 difference (|omega_i - "// &
+                 "omega_j|); order: k; mode_i, mode_j: i, j"
+      extra(3) = "predicted: the frequency of the resonance at drive 0; frequency, drive: the tip (the least "// &
+                 "drive at which the region is open) with their error bounds"
+      extra(4) = "edge_low, edge_high: the region's edges at the top drive (0 0: not open there); clipped: the "// &
+                 "edge is its window's end (the region is wider)"
+      extra(5) = "status: 0 found and confirmed, 1 closed up to the top drive, 2 not confirmed, 3 open at the "// &
+                 "lowest drive, 4 theory (undamped: the tip is the resonance at drive 0), 5 same signature "// &
+                 "(a difference region that stays closed)"
+      call open_scene_output(scene, file, error)
+      if (allocated(error)) return
+      names = "kind order mode_i mode_j predicted "//f_axis//" "//f_axis//"_error "//d_axis//" "//d_axis// &
+              "_error edge_low edge_high clipped_low clipped_high status evaluations"
+      call write_header(file, scene_header(scene, "hillstab "//version_string//": the resonance regions of "// &
+                        equation, [extra(6:7), extra(1:5)]), names, error)
+      do k = 1, size(regions)
+         if (allocated(error)) exit
+         line = integer_text(regions(k)%kind)//" "//integer_text(regions(k)%order)//" "// &
+                integer_text(regions(k)%modes(1))//" "//integer_text(regions(k)%modes(2))//" "// &
+                trim(format_es(regions(k)%predicted, 17))//" "//trim(format_es(regions(k)%frequency, 17))//" "// &
+                trim(format_es(regions(k)%frequency_error, 3))//" "//trim(format_es(regions(k)%drive, 17))//" "// &
+                trim(format_es(regions(k)%drive_error, 3))//" "//trim(format_es(regions(k)%edges(1), 17))//" "// &
+                trim(format_es(regions(k)%edges(2), 17))//" "//integer_text(merge(1, 0, regions(k)%clipped(1)))// &
+                " "//integer_text(merge(1, 0, regions(k)%clipped(2)))//" "//integer_text(regions(k)%status)//" "// &
+                integer_text(regions(k)%evaluations)
+         call write_text(file, line, error)
+      end do
+      call finish_output(file, error)
+   end subroutine regions_run
+end module hillstab_batch_tasks_regions
