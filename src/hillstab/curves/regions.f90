@@ -691,7 +691,7 @@ contains
       e = 0.0_wp
       do iteration = 1, 100
          xm = 0.5_wp*(a + b)
-         tol1 = sqrt(s%tolerance)*abs(x) + 1.0e-12_wp*(window(2) - window(1))
+         tol1 = 1.0e-2_wp*sqrt(s%tolerance)*abs(x) + 1.0e-12_wp*(window(2) - window(1))
          tol2 = 2.0_wp*tol1
          if (abs(x - xm) <= tol2 - 0.5_wp*(b - a)) exit
          if (abs(e) > tol1) then
