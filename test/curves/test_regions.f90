@@ -90,7 +90,7 @@ contains
       worst = 0.0_wp
       do j = 1, 20
          zeta = 0.001_wp*1.25_wp**(j - 1)
-         call damped_mathieu(zeta, oracle, error, 1.0e-10_wp)
+         call damped_mathieu(zeta, oracle, error)
          if (.not. allocated(error)) &
             call find_regions(oracle, 1.5_wp, 3.0_wp, 0.0_wp, 0.5_wp, 1, 1.0e-10_wp, 32, regions, error)
          call check(ctx, .not. allocated(error), "regions at zeta = "//real_text(zeta))
