@@ -296,6 +296,46 @@ int hillstab_system_chart(const hillstab_system *system, double alpha_min, doubl
                           double tolerance, int threads, double *alpha, double *beta, double *values,
                           int *status);
 
+/* ---- Resonance regions ----
+ * For a driven problem, every resonance region of order k = 1 ... order (1 ... 8) predicted
+ * from the natural frequencies nu_i(f) of the undriven problem (fractions of the drive
+ * frequency) over f in [f_min, f_max]: simple (2 nu_i = k), sum (nu_i + nu_j = k) or
+ * difference (|nu_i - nu_j| = k); for each, its tip (the least drive in [d_min, d_max] at
+ * which it opens, and the frequency there, each with an error bound), its edges at d_max and
+ * a status. drive_axis: 1 (the drive is alpha, f is beta: the built-in models, whose alpha is
+ * the drive amplitude, and a system's alpha sum of drives) or 2 (the drive is beta, f is
+ * alpha: an equation or equations in physical time, alpha its frequency). *count regions,
+ * ascending in their predicted f; the first `capacity` stored in the parallel arrays: kind,
+ * orders (k), modes (i, j: two a region), predicted (f at drive 0), window (the frequencies
+ * searched, two a region), frequency and frequency_error, drive and drive_error (the tip),
+ * edges (f of the edges at d_max, two a region, both 0 where it is not open there), clipped
+ * (1 where an edge is the window's end, two a region), status and evaluations (distances
+ * computed). With capacity 0 the arrays may be NULL. tolerance: the method's target and the
+ * tips', relative to max(1, |x|); n_samples >= 2 drives sampled for a first root. Status:
+ * found (confirmed on both sides), closed (stable up to d_max over the window: drive is
+ * d_max), unconfirmed, open below (unstable at d_min already), theory (undamped and the
+ * undriven problem constant in time: the tip is the resonance itself at drive 0). */
+enum { HILLSTAB_REGION_SIMPLE = 1, HILLSTAB_REGION_SUM = 2, HILLSTAB_REGION_DIFFERENCE = 3 };
+enum {
+  HILLSTAB_REGION_FOUND = 0, HILLSTAB_REGION_CLOSED = 1, HILLSTAB_REGION_UNCONFIRMED = 2,
+  HILLSTAB_REGION_OPEN_BELOW = 3, HILLSTAB_REGION_THEORY = 4
+};
+/* The regions of a model's equation with damping epsilon (0 for a model with its own);
+ * S by method (HILLSTAB_METHOD_*). */
+int hillstab_regions(const hillstab_model *model, int drive_axis, double f_min, double f_max, double d_min,
+                     double d_max, double epsilon, int method, double tolerance, int order, int n_samples,
+                     size_t capacity, int *kind, int *orders, int *modes, double *predicted, double *window,
+                     double *frequency, double *frequency_error, double *drive, double *drive_error,
+                     double *edges, int *clipped, int *status, int *evaluations, size_t *count);
+/* The regions of a system with damping epsilon M (0 for an equations system); Phi by a
+ * system method, tolerance in (1e-15, 1); messages start with "hillstab_system_regions: ". */
+int hillstab_system_regions(const hillstab_system *system, int drive_axis, double f_min, double f_max,
+                            double d_min, double d_max, double epsilon, int method, double tolerance, int order,
+                            int n_samples, size_t capacity, int *kind, int *orders, int *modes, double *predicted,
+                            double *window, double *frequency, double *frequency_error, double *drive,
+                            double *drive_error, double *edges, int *clipped, int *status, int *evaluations,
+                            size_t *count);
+
 #ifdef __cplusplus
 }
 #endif

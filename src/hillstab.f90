@@ -137,6 +137,21 @@
 !>   `hillstab_along_beta` = [[hillstab_curves_critical:along_beta]]
 !> - [[hillstab_curves_system_boundaries]]: [[hillstab_curves_system_boundaries:system_boundary_t]],
 !>   [[hillstab_curves_system_boundaries:system_boundaries]]
+!> - [[hillstab_curves_oracle]]: [[hillstab_curves_oracle:oracle_t]],
+!>   [[hillstab_curves_oracle:oracle_sample_t]], [[hillstab_curves_oracle:scalar_oracle_t]],
+!>   [[hillstab_curves_oracle:system_oracle_t]]
+!> - [[hillstab_curves_regions]]: [[hillstab_curves_regions:region_t]],
+!>   [[hillstab_curves_regions:predict_regions]], [[hillstab_curves_regions:find_regions]],
+!>   [[hillstab_curves_regions:region_kind_name]], [[hillstab_curves_regions:region_status_name]],
+!>   `hillstab_region_simple` = [[hillstab_curves_regions:region_simple]],
+!>   `hillstab_region_sum` = [[hillstab_curves_regions:region_sum]],
+!>   `hillstab_region_difference` = [[hillstab_curves_regions:region_difference]],
+!>   `hillstab_region_found` = [[hillstab_curves_regions:region_found]],
+!>   `hillstab_region_closed` = [[hillstab_curves_regions:region_closed]],
+!>   `hillstab_region_unconfirmed` = [[hillstab_curves_regions:region_unconfirmed]],
+!>   `hillstab_region_open_below` = [[hillstab_curves_regions:region_open_below]],
+!>   `hillstab_region_theory` = [[hillstab_curves_regions:region_theory]],
+!>   `hillstab_max_region_order` = [[hillstab_curves_regions:max_region_order]]
 !> - [[hillstab_pendulum_equations]]: [[hillstab_pendulum_equations:pendulum_t]],
 !>   [[hillstab_pendulum_equations:pendulum_from_chart]],
 !>   [[hillstab_pendulum_equations:pendulum_initial_state]], [[hillstab_pendulum_equations:pendulum_energy]],
@@ -250,6 +265,13 @@ module hillstab
    use hillstab_curves_critical, only: critical_drive_t, critical_drives, critical_drives_along, &
       hillstab_along_alpha => along_alpha, hillstab_along_beta => along_beta
    use hillstab_curves_system_boundaries, only: system_boundary_t, system_boundaries
+   use hillstab_curves_oracle, only: oracle_t, oracle_sample_t, scalar_oracle_t, system_oracle_t
+   use hillstab_curves_regions, only: region_t, predict_regions, find_regions, region_kind_name, region_status_name, &
+      hillstab_region_simple => region_simple, hillstab_region_sum => region_sum, &
+      hillstab_region_difference => region_difference, hillstab_region_found => region_found, &
+      hillstab_region_closed => region_closed, hillstab_region_unconfirmed => region_unconfirmed, &
+      hillstab_region_open_below => region_open_below, hillstab_region_theory => region_theory, &
+      hillstab_max_region_order => max_region_order
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_energy, &
       pendulum_angle, pendulum_radius, pendulum_bounce, pendulum_system_t
    use hillstab_pendulum_analysis, only: bounce_multipliers_t, bounce_multipliers, onset_periods, pendulum_watch_t, &

@@ -20,6 +20,7 @@ program tester
    use test_capi_system, only: collect_capi_system
    use test_capi_sizes, only: collect_capi_sizes
    use test_capi_system_batch, only: collect_capi_system_batch
+   use test_capi_regions, only: collect_capi_regions
    use test_expression, only: collect_expression
    use test_critical, only: collect_critical
    use test_regions, only: collect_regions
@@ -52,7 +53,7 @@ program tester
    use test_checkpoint, only: collect_checkpoint
    implicit none
    ! one by one, not as an array constructor of the collect functions' results: gfortran 12
-   type(testsuite_t) :: suites(49)
+   type(testsuite_t) :: suites(50)
    integer :: n_failed
    suites(1) = collect_models()
    suites(2) = collect_codes()
@@ -103,6 +104,7 @@ program tester
    suites(47) = collect_critical()
    suites(48) = collect_model_equation()
    suites(49) = collect_regions()
+   suites(50) = collect_capi_regions()
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

@@ -13,7 +13,8 @@ library's OpenMP threads). What it offers:
 - `floquet`, `trace` over arrays of (α, β) and `chart` over a grid, returning numpy arrays
   (S, verdicts, multipliers, exponents, error estimates) with a per-point ``status``;
 - `transition_curves` (Hill's method) and Mathieu's characteristic values `mathieu_a`,
-  `mathieu_b`;
+  `mathieu_b`; `critical_drives`; `regions`, the resonance regions of a driven model or
+  system and their tips;
 - `Spring`: a real spring in SI units (α, β, growth per second, critical amplitudes,
   the nonlinear motion);
 - `series`: the nonlinear pendulum over time; `run_scene` and `read_output`: namelist
@@ -27,7 +28,7 @@ from ._capi import lib as _lib
 from .errors import HillstabError, HillstabWarning, PointsFailedError
 from .models import Model, Equation, model_names
 from .floquet import floquet, trace, chart, Result, ALL_VALUES, ALIASES
-from .curves import transition_curves, critical_drives, mathieu_a, mathieu_b, Curves, CriticalDrives
+from .curves import transition_curves, critical_drives, mathieu_a, mathieu_b, Curves, CriticalDrives, regions, Regions
 from .spring import Spring
 from .scenes import run_scene, read_output, series, Output, Series
 from .system import System, Equations, SystemFloquet, SystemResult
@@ -36,6 +37,7 @@ from .system import System, Equations, SystemFloquet, SystemResult
 __version__ = _lib.hillstab_version().decode()
 
 __all__ = ["Model", "Equation", "model_names", "floquet", "trace", "chart", "Result", "ALL_VALUES", "ALIASES", "transition_curves", "critical_drives", "CriticalDrives",
+           "regions", "Regions",
            "mathieu_a", "mathieu_b", "Curves", "Spring", "run_scene", "read_output", "series", "Output", "Series",
            "System", "Equations", "SystemFloquet", "SystemResult",
            "HillstabError", "HillstabWarning", "PointsFailedError"]

@@ -9,6 +9,7 @@ of Mathieu's equation y'' + (a − 2q cos 2v) y = 0 in the standard form (the Ma
 model's curves: a = 4β/π², q = 2α/π²), each found as the curve of its order and parity,
 so they follow their own branch at any q (no jump between branches at large q).
 """
+import ctypes
 import math
 
 import numpy as np
@@ -103,6 +104,189 @@ def critical_drives(beta, alpha, model="elastic", epsilon=0.0, method="auto", to
     if axes:
         arrays.setdefault(axes[1] if along_beta else axes[0], arrays["value"])
     return CriticalDrives(axis=name, **arrays)
+
+
+#: HILLSTAB_REGION_*: the kinds of resonance regions (2ν_i = k, ν_i + ν_j = k, |ν_i − ν_j| = k)
+REGION_SIMPLE, REGION_SUM, REGION_DIFFERENCE = 1, 2, 3
+#: HILLSTAB_REGION_*: the statuses of a region's tip
+REGION_FOUND, REGION_CLOSED, REGION_UNCONFIRMED, REGION_OPEN_BELOW, REGION_THEORY = 0, 1, 2, 3, 4
+#: the kinds and statuses in words, as the library names them
+REGION_KIND_NAMES = {REGION_SIMPLE: "simple", REGION_SUM: "sum", REGION_DIFFERENCE: "difference"}
+REGION_STATUS_NAMES = {REGION_FOUND: "found", REGION_CLOSED: "closed", REGION_UNCONFIRMED: "unconfirmed",
+                       REGION_OPEN_BELOW: "open below", REGION_THEORY: "theory"}
+
+_capi._declare("hillstab_regions", ctypes.c_int, _capi._model_p, ctypes.c_int, ctypes.c_double, ctypes.c_double,
+               ctypes.c_double, ctypes.c_double, ctypes.c_double, ctypes.c_int, ctypes.c_double, ctypes.c_int,
+               ctypes.c_int, ctypes.c_size_t, *([_capi._c_int_p] * 3 + [_capi._c_double_p] * 7 +
+                                                [_capi._c_int_p] * 3 + [_capi._c_size_p]))
+
+
+class Regions:
+    """The resonance regions of a driven problem, ascending in their predicted frequency, each
+    an entry of these arrays:
+
+    - ``kind`` (`REGION_SIMPLE` 2ν_i = k, `REGION_SUM` ν_i + ν_j = k, `REGION_DIFFERENCE`
+      |ν_i − ν_j| = k; in words ``kind_name``), ``order`` k, ``modes`` (i, j), shape (n, 2);
+    - ``predicted``: the frequency of the resonance at drive 0, ``window`` (n, 2) the
+      frequencies searched for its tip;
+    - the tip: ``frequency`` and ``drive`` (the least drive at which the region opens), with
+      ``frequency_error`` and ``drive_error``;
+    - ``edges`` (n, 2): the frequencies of its edges at the top of the drive range (0 where it
+      is not open there), ``clipped`` (n, 2) True where an edge is the window's end;
+    - ``status`` (`REGION_FOUND` confirmed on both sides, `REGION_CLOSED` stable up to the top
+      drive over its window, `REGION_UNCONFIRMED`, `REGION_OPEN_BELOW` unstable at the bottom
+      of the range already, `REGION_THEORY` undamped and constant when undriven: the tip is
+      the resonance at drive 0; in words ``status_name``) and ``evaluations`` (distances
+      computed).
+
+    ``drive_axis`` is 1 (the drive is α, the frequency β) or 2 (the drive is β, the frequency
+    α); the tips are also ``alpha`` and ``beta`` accordingly, and for an `Equation` or
+    `Equations` by the axes' parameters (``r.h``, ``r.W``).
+    """
+
+    def __init__(self, **arrays):
+        for key, value in arrays.items():
+            setattr(self, key, value)
+
+    def __len__(self):
+        return self.kind.size
+
+    def __repr__(self):
+        return "<hillstab regions: {} region(s), tips at {}>".format(
+            self.kind.size, ", ".join("({:.6g}, {:.6g})".format(f, d) for f, d in zip(self.frequency, self.drive)))
+
+
+def _drive_axis(drive_axis, default):
+    if drive_axis is None:
+        return default
+    if isinstance(drive_axis, str):
+        names = {"alpha": 1, "beta": 2}
+        if drive_axis not in names:
+            raise ValueError("drive_axis: 1 or 'alpha' (the drive is alpha), 2 or 'beta', got {!r}".format(drive_axis))
+        return names[drive_axis]
+    if isinstance(drive_axis, (bool, np.bool_)) or not isinstance(drive_axis, (int, np.integer)):
+        raise TypeError("drive_axis: must be 1 or 2 (or 'alpha', 'beta'), got {}".format(type(drive_axis).__name__))
+    if drive_axis not in (1, 2):
+        raise ValueError("drive_axis: 1 (the drive is alpha) or 2 (the drive is beta), got {}".format(drive_axis))
+    return int(drive_axis)
+
+
+def _pair(name, value):
+    try:
+        low, high = value
+    except (TypeError, ValueError):
+        raise ValueError("{0}: must be a range ({0}_min, {0}_max), got {1!r}".format(name, value)) from None
+    return _capi.real_number(name, low), _capi.real_number(name, high)
+
+
+def _integer(name, value):
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise TypeError("{}: must be an int, got {}".format(name, type(value).__name__))
+    return int(value)
+
+
+def _regions(function, handle, axes, frequency, drive, order, drive_axis, epsilon, method_code, tolerance, n_samples):
+    """The call of hillstab_regions or hillstab_system_regions (function) and its `Regions`."""
+    f_min, f_max = _pair("frequency", frequency)
+    d_min, d_max = _pair("drive", drive)
+    order = _integer("order", order)
+    n_samples = _integer("n_samples", n_samples)
+    epsilon = _capi.real_number("epsilon", epsilon)
+    tolerance = _capi.real_number("tolerance", tolerance)
+    known = (f_min, f_max, d_min, d_max, epsilon, tolerance)
+
+    def named(message):
+        # the library's argument names as this function's
+        for c_name, name in (("f_min, f_max", "frequency"), ("d_min, d_max", "drive"), ("f_min, d_min", "frequency, "
+                             "drive"), ("f_max, d_max", "frequency, drive")):
+            message = message.replace(c_name + ":", name + " (" + c_name + "):")
+        return message
+
+    capacity = 64
+    while True:
+        ints = {name: np.zeros(capacity * width, dtype=_capi.INT) for name, width in
+                (("kind", 1), ("order", 1), ("modes", 2), ("clipped", 2), ("status", 1), ("evaluations", 1))}
+        reals = {name: np.zeros(capacity * width) for name, width in
+                 (("predicted", 1), ("window", 2), ("frequency", 1), ("frequency_error", 1), ("drive", 1),
+                  ("drive_error", 1), ("edges", 2))}
+        count = np.zeros(1, dtype=_capi.SIZE)
+        check(function(handle, drive_axis, f_min, f_max, d_min, d_max, epsilon, method_code, tolerance, order,
+                       n_samples, capacity, _capi.ints(ints["kind"]), _capi.ints(ints["order"]),
+                       _capi.ints(ints["modes"]), _capi.doubles(reals["predicted"]), _capi.doubles(reals["window"]),
+                       _capi.doubles(reals["frequency"]), _capi.doubles(reals["frequency_error"]),
+                       _capi.doubles(reals["drive"]), _capi.doubles(reals["drive_error"]),
+                       _capi.doubles(reals["edges"]), _capi.ints(ints["clipped"]), _capi.ints(ints["status"]),
+                       _capi.ints(ints["evaluations"]), _capi.sizes(count)), known=known, fix=named)
+        found = int(count[0])
+        if found <= capacity:
+            break
+        capacity = found
+    arrays = {}
+    for name, array in list(ints.items()) + list(reals.items()):
+        width = 2 if name in ("modes", "clipped", "window", "edges") else 1
+        part = array[:found * width].copy()
+        arrays[name] = part.reshape(found, 2) if width == 2 else part
+    for name in ("kind", "order", "modes", "status", "evaluations"):
+        arrays[name] = arrays[name].astype(int)
+    arrays["clipped"] = arrays["clipped"] != 0
+    arrays["kind_name"] = np.array([REGION_KIND_NAMES.get(k, "unknown") for k in arrays["kind"]], dtype=object)
+    arrays["status_name"] = np.array([REGION_STATUS_NAMES.get(k, "unknown") for k in arrays["status"]], dtype=object)
+    # the tips by the model's coordinates, and by the axes' parameters
+    alpha, beta = ("drive", "frequency") if drive_axis == 1 else ("frequency", "drive")
+    arrays["alpha"], arrays["beta"] = arrays[alpha], arrays[beta]
+    for name, key in zip(axes or (), ("alpha", "beta")):
+        if name and name not in arrays:
+            arrays[name] = arrays[key]
+    return Regions(drive_axis=drive_axis, **arrays)
+
+
+def regions(model, frequency, drive, order=2, drive_axis=None, epsilon=0.0, method="auto", tolerance=1e-10,
+            n_samples=32):
+    """The resonance regions of a driven model over ``frequency = (f_min, f_max)``, and the tip
+    of each — the least drive of ``drive = (d_min, d_max)`` at which it opens, and the
+    frequency there — as `Regions`.
+
+    From the natural frequencies ν_i(f) of the undriven equation (fractions of the drive
+    frequency) every resonance of order k = 1 … ``order`` (at most 8) is predicted: simple
+    (2ν_i = k), sum (ν_i + ν_j = k) and difference (|ν_i − ν_j| = k) — a scalar equation
+    has the simple ones only; each region's tip is then searched in the window between its
+    neighbours (S by ``method`` to ``tolerance``, also the target of the tip relative to
+    max(1, |x|); ``n_samples`` drives sampled for a first root), with its edges at the top
+    drive and a status (`Regions`).
+
+    ``model`` is a `Model`, a model's name, an `Equation`, or a `System` or `Equations`
+    (their `System.regions`). ``drive_axis`` says which coordinate is the drive: 1 (or
+    ``"alpha"``: the drive is α and the frequency β) or 2 (``"beta"``: the drive is β and
+    the frequency α). Its default is 2 for an `Equation` (its α the drive frequency, its β an
+    amplitude: ``frequency`` is then a range of its α parameter, ``drive`` of its β) and 1
+    for the built-in models by name (``"mathieu"``, ``"elastic"``: α is the drive amplitude,
+    β the frequency-like coordinate). ``epsilon`` is the damping (0 for an `Equation`, which
+    carries its own).
+
+    The damped Mathieu equation x'' + 2ζx' + (1 + h cos Wt) x = 0: its principal region's
+    tip lies at W ≈ 2, h ≈ 4ζ:
+
+    >>> e = Equation("1 + h*cos(W*t)", frequency="W", damping="2*zeta",
+    ...              parameters={"zeta": 0.01, "h": 0.0, "W": 2.0}, alpha="W", beta="h")
+    >>> r = regions(e, frequency=(0.5, 3.0), drive=(0.0, 0.5), order=3)
+    >>> r.order, r.W, r.h          # the tips, also r.frequency, r.drive
+
+    Bad input raises ValueError (TypeError for an argument of the wrong type) naming the
+    argument.
+    """
+    from .system import System
+    if isinstance(model, System):
+        return model.regions(frequency, drive, order=order, drive_axis=drive_axis, epsilon=epsilon, method=method,
+                             tolerance=tolerance, n_samples=n_samples)
+    if not isinstance(method, str):
+        raise TypeError("method: must be a method's name (a str), got {}".format(type(method).__name__))
+    if method not in _capi.METHODS:
+        raise ValueError("method: unknown method '{}' (expected {})".format(method, ", ".join(_capi.METHODS)))
+    model = as_model(model)
+    axes = getattr(model, "axes", None)
+    default = 2 if axes is not None or model.name == "equation" else 1
+    return _regions(lib.hillstab_regions, model.handle, axes, frequency, drive, order, _drive_axis(drive_axis, default),
+                    epsilon, _capi.METHODS[method], tolerance, n_samples)
 
 
 class Curves:

@@ -60,6 +60,10 @@ _capi._declare("hillstab_system_column_name", ctypes.c_int, _system_p, ctypes.c_
                ctypes.c_size_t)
 _capi._declare("hillstab_system_points", ctypes.c_int, _system_p, ctypes.c_size_t, _c_double_p, _c_double_p,
                _c_double_p, ctypes.c_int, ctypes.c_double, ctypes.c_int, _c_double_p, _c_int_p)
+_capi._declare("hillstab_system_regions", ctypes.c_int, _system_p, ctypes.c_int, ctypes.c_double, ctypes.c_double,
+               ctypes.c_double, ctypes.c_double, ctypes.c_double, ctypes.c_int, ctypes.c_double, ctypes.c_int,
+               ctypes.c_int, ctypes.c_size_t, *([_c_int_p] * 3 + [_c_double_p] * 7 + [_c_int_p] * 3 +
+                                                [ctypes.POINTER(ctypes.c_size_t)]))
 _capi._declare("hillstab_system_chart", ctypes.c_int, _system_p, ctypes.c_double, ctypes.c_double, ctypes.c_size_t,
                ctypes.c_double, ctypes.c_double, ctypes.c_size_t, ctypes.c_double, ctypes.c_int, ctypes.c_double,
                ctypes.c_int, _c_double_p, _c_double_p, _c_double_p, _c_int_p)
@@ -445,6 +449,22 @@ class System:
         _warn(status, lambda k: "alpha = {!r}, beta = {!r}".format(float(alphas[k // n_beta]),
                                                                   float(betas[k % n_beta])))
         return self._result(out, status, (n_alpha, n_beta), extra={"alpha": alphas, "beta": betas})
+
+    def regions(self, frequency, drive, order=2, drive_axis=None, epsilon=0.0, method="auto", tolerance=1e-10,
+                n_samples=32):
+        """The resonance regions over ``frequency = (f_min, f_max)`` and the tip of each in
+        ``drive = (d_min, d_max)``, as `hillstab.Regions` (see `hillstab.regions`): from the
+        natural frequencies ν_i of the undriven system, the simple (2ν_i = k), sum
+        (ν_i + ν_j = k) and difference (|ν_i − ν_j| = k) regions of order k = 1 … ``order``.
+        ``drive_axis`` 1 (or ``"alpha"``: the drive is α, the frequency β) is the default of a
+        `System`, whose α Σ drives is the drive; 2 (``"beta"``: the drive is β, the frequency
+        α) that of `Equations`, whose α is the drive frequency. Damping ε M (``epsilon``; 0 for
+        `Equations`, which carry their own); Φ by ``method`` to ``tolerance`` (also the target
+        of the tips). Bad input raises ValueError naming the argument."""
+        from .curves import _regions, _drive_axis
+        default = 2 if getattr(self, "axes", None) else 1
+        return _regions(lib.hillstab_system_regions, self._handle, getattr(self, "axes", None), frequency, drive, order,
+                        _drive_axis(drive_axis, default), epsilon, _method(method), tolerance, n_samples)
 
     def __repr__(self):
         return "hillstab.System(n={}, period={:g})".format(self.n, self.period)

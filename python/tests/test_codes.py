@@ -74,3 +74,15 @@ def test_system_methods_are_the_headers():
     names = [name.lower() for name in re.findall(r"_([A-Z0-9]+)(?:,| or|$)", listed)]
     assert list(system.SYSTEM_METHODS) == names
     assert all(system.SYSTEM_METHODS[name] == _capi.METHODS[name] for name in names)
+
+
+def test_region_kinds_and_statuses():
+    from hillstab import curves
+    python = {name[len("REGION_"):]: getattr(curves, name) for name in dir(curves)
+              if name.startswith("REGION_") and not name.endswith("_NAMES")}
+    assert python == group("REGION_")
+    kinds = {name: code for name, code in python.items() if code in (1, 2, 3) and name in ("SIMPLE", "SUM",
+                                                                                           "DIFFERENCE")}
+    assert {code: name.lower() for name, code in kinds.items()} == curves.REGION_KIND_NAMES
+    statuses = {name: code for name, code in python.items() if name not in kinds}
+    assert {code: name.lower().replace("_", " ") for name, code in statuses.items()} == curves.REGION_STATUS_NAMES

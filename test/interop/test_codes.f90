@@ -6,14 +6,14 @@
 !> sampling table (hillstab_hill_coefficient); and the header's HILLSTAB_VERSION_* macros
 !> against `version_string` (hillstab_core_kinds) and the version of fpm.toml; the guide's
 !> table of models (docs/guide/model.md) against the model table. Every code another language
-!> copies is checked against the Fortran constant it copies (`known_codes`): every enumerator of
-!> the header (models, methods, samplings, error codes, the characteristic kinds, NEED_*,
-!> VALUE_*, the system verdicts and kinds), every code of the Python package (python/hillstab:
-!> ERR_*, NEED_*, STATUS_*, VERDICT_*, KIND_*, the dicts METHODS, SYSTEM_METHODS, SAMPLINGS and
-!> KIND_NAMES, the tuple VALUES), the status codes the header and Python document, the
-!> methods the header says systems take; a missing entry fails as a wrong one does, and so
-!> does a code no Fortran constant stands behind. Paths are relative to the worktree root,
-!> the directory `fpm test` runs in.
+!> copies is checked against the Fortran constant it copies (`known_codes`): every enumerator
+!> of the header (models, methods, samplings, error codes, the characteristic kinds, NEED_*,
+!> VALUE_*, the system verdicts and kinds, the region kinds and statuses), every code of the
+!> Python package (python/hillstab: ERR_*, NEED_*, STATUS_*, VERDICT_*, KIND_*, REGION_*, the
+!> dicts METHODS, SYSTEM_METHODS, SAMPLINGS and KIND_NAMES, the tuple VALUES), the status codes
+!> the header and Python document, the methods the header says systems take; a missing entry
+!> fails as a wrong one does, and so does a code no Fortran constant stands behind. Paths are
+!> relative to the worktree root, the directory `fpm test` runs in.
 module test_codes
    use hillstab_core_text, only: lower_case
    use hillstab_core_kinds, only: version_string
@@ -31,6 +31,8 @@ module test_codes
       kind_plus_one, kind_minus_one, kind_combination, kind_damped, kind_undecided, kind_name
    use hillstab_curves_hill_method, only: block_periodic_even, block_periodic_odd, block_antiperiodic_even, &
       block_antiperiodic_odd, block_periodic, block_antiperiodic
+   use hillstab_curves_regions, only: region_simple, region_sum, region_difference, region_found, region_closed, &
+      region_unconfirmed, region_open_below, region_theory, region_kind_name, region_status_name
    use hillstab_interop_capi_batch, only: value_trace, value_log_abs_trace, value_log10_abs_trace, value_overflow, &
       value_stable, value_stable_paper, value_lambda_max, value_log_modulus_max, value_log_modulus_min, &
       value_exponent, value_error_estimate, value_count
@@ -356,6 +358,14 @@ contains
       call add("SYSTEM_KIND_COMBINATION", "KIND_COMBINATION", kind_combination)
       call add("SYSTEM_KIND_DAMPED", "KIND_DAMPED", kind_damped)
       call add("SYSTEM_KIND_UNDECIDED", "KIND_UNDECIDED", kind_undecided)
+      call add_both("REGION_SIMPLE", region_simple)
+      call add_both("REGION_SUM", region_sum)
+      call add_both("REGION_DIFFERENCE", region_difference)
+      call add_both("REGION_FOUND", region_found)
+      call add_both("REGION_CLOSED", region_closed)
+      call add_both("REGION_UNCONFIRMED", region_unconfirmed)
+      call add_both("REGION_OPEN_BELOW", region_open_below)
+      call add_both("REGION_THEORY", region_theory)
       call add("", "STATUS_OK", status_ok)
       call add("", "STATUS_ROUNDOFF", status_roundoff)
       call add("", "STATUS_FAILED", status_failed)
@@ -403,6 +413,11 @@ contains
                     integer_text(k)//" ('"//kind_name(k)//"') listed exactly when it has a name")
          call check(ctx, (status_name(k) /= "unknown") .eqv. listed("STATUS_", k), "status "//integer_text(k)// &
                     " ('"//status_name(k)//"') listed exactly when it has a name")
+         call check(ctx, (region_kind_name(k) /= "unknown") .eqv. listed_as("REGION_", k, region_kind_name(k)), &
+                    "region kind "//integer_text(k)//" ('"//region_kind_name(k)//"') listed exactly when it has a name")
+         call check(ctx, (region_status_name(k) /= "unknown") .eqv. listed_as("REGION_", k, region_status_name(k)), &
+                    "region status "//integer_text(k)//" ('"//region_status_name(k)//"') listed exactly when it "// &
+                    "has a name")
       end do
       do k = 1, 6
          call check(ctx, count(codes%code == k .and. index(codes%c_name, "KIND_") == 1) == 1, &
@@ -415,6 +430,22 @@ contains
                                                "one code named "//trim(codes(k)%py_name)//" in Python")
       end do
    contains
+      !> Whether a code is listed under prefix//NAME, NAME the upper-case `name` (blanks as _).
+      logical function listed_as(prefix, code, name)
+         character(len=*), intent(in) :: prefix, name
+         integer, intent(in) :: code
+         character(len=:), allocatable :: wanted
+         integer :: i
+         wanted = prefix//upper(name)
+         do i = 1, len(wanted)
+            if (wanted(i:i) == " ") wanted(i:i) = "_"
+         end do
+         listed_as = .false.
+         do i = 1, size(codes)
+            if (codes(i)%code == code .and. codes(i)%c_name == wanted) listed_as = .true.
+         end do
+      end function listed_as
+
       logical function listed(prefix, code)
          character(len=*), intent(in) :: prefix
          integer, intent(in) :: code

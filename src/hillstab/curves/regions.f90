@@ -106,7 +106,7 @@ contains
 
    !> The name of a region kind.
    pure function region_kind_name(kind) result(name)
-      integer, intent(in) :: kind
+      integer, intent(in) :: kind  !! region_simple, region_sum or region_difference
       character(len=:), allocatable :: name
       select case (kind)
       case (region_simple)
@@ -122,7 +122,7 @@ contains
 
    !> The name of a region status.
    pure function region_status_name(status) result(name)
-      integer, intent(in) :: status
+      integer, intent(in) :: status  !! region_found … region_theory
       character(len=:), allocatable :: name
       select case (status)
       case (region_found)
@@ -220,7 +220,7 @@ contains
       integer, intent(in) :: order            !! highest order k
       real(wp), intent(in) :: tolerance       !! target of the tips, relative to max(1, |x|)
       integer, intent(in) :: n_samples        !! samples of the drive range for a first root (≥ 2)
-      type(region_t), allocatable, intent(out) :: regions(:)
+      type(region_t), allocatable, intent(out) :: regions(:)  !! the regions, ascending in f
       !> err_invalid_parameter naming the argument; a point the method cannot compute
       type(error_t), allocatable, intent(out) :: error
       character(len=300), allocatable :: failures(:)
