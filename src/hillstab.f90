@@ -151,6 +151,7 @@
 !>   `hillstab_region_unconfirmed` = [[hillstab_curves_regions:region_unconfirmed]],
 !>   `hillstab_region_open_below` = [[hillstab_curves_regions:region_open_below]],
 !>   `hillstab_region_theory` = [[hillstab_curves_regions:region_theory]],
+!>   `hillstab_region_same_signature` = [[hillstab_curves_regions:region_same_signature]],
 !>   `hillstab_max_region_order` = [[hillstab_curves_regions:max_region_order]]
 !> - [[hillstab_pendulum_equations]]: [[hillstab_pendulum_equations:pendulum_t]],
 !>   [[hillstab_pendulum_equations:pendulum_from_chart]],
@@ -271,6 +272,7 @@ module hillstab
       hillstab_region_difference => region_difference, hillstab_region_found => region_found, &
       hillstab_region_closed => region_closed, hillstab_region_unconfirmed => region_unconfirmed, &
       hillstab_region_open_below => region_open_below, hillstab_region_theory => region_theory, &
+      hillstab_region_same_signature => region_same_signature, &
       hillstab_max_region_order => max_region_order
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_energy, &
       pendulum_angle, pendulum_radius, pendulum_bounce, pendulum_system_t
