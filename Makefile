@@ -47,6 +47,8 @@
 #   make bench-system   systems of Hill equations: the 300 x 300 pendula-pair chart against the plain C
 #                       GSL program (bench/chart_gsl_system.c) at equal accuracy, and the cost against n
 #                       (build/bench/system_speed.dat, system_cost.dat, system_cost.png; BENCH_SYSTEM_N)
+#   make bench-regions  the tips of every region of a damped 3-mode column against a scan-and-bisect loop
+#                       on the same library, counted in monodromies (out/bench_regions.dat)
 #   make bench-equation equations in physical time, one thread: Mathieu's chart as an equation against
 #                       the built-in model, and the Kapitza chart against a scipy loop (solve_ivp, DOP853;
 #                       numpy and scipy pip-installed into build/venv-bench) and the plain C GSL program
@@ -74,7 +76,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug test-python test-sanitize setup setup-build setup-test bench bench-fourier bench-output bench-instructions area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov bench-system bench-python bench-equation fuzz check-memory check-scenes check-plots
+.PHONY: run test test-debug test-python test-sanitize setup setup-build setup-test bench bench-fourier bench-output bench-instructions area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov bench-system bench-python bench-equation bench-regions fuzz check-memory check-scenes check-plots
 
 # what each target needs (scripts/setup.sh installs only what is missing)
 setup:
@@ -302,6 +304,12 @@ bench-equation:
 	   --quiet numpy scipy || echo "bench-equation: numpy and scipy could not be installed: no scipy loop"
 	OMP_NUM_THREADS=1 $(BENCH_VENV)/bin/python scripts/bench_equation.py "$$($(FPM) run $(RELEASE) \
 	   --runner echo hillstab 2>/dev/null | tail -1)" build/chart_gsl_kapitza --rounds $(BENCH_EQUATION_ROUNDS)
+
+# the tips of every resonance region of Bolotin's damped column against the scan-and-bisect
+# loop a user would write on the same library, one thread (out/bench_regions.dat)
+bench-regions: setup
+	mkdir -p out
+	OMP_NUM_THREADS=1 $(FPM) run $(RELEASE) hillstab_bench_regions
 
 doc:
 	@bash scripts/setup.sh doc

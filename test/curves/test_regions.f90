@@ -45,9 +45,8 @@ contains
    end function collect_regions
 
    !> x'' + 2ζ x' + (1 + h cos W t) x = 0 over (W, h), the drive h on β.
-   subroutine damped_mathieu(zeta, oracle, error, tolerance)
+   subroutine damped_mathieu(zeta, oracle, error)
       real(wp), intent(in) :: zeta
-      real(wp), intent(in), optional :: tolerance  !! of S (1e-12 when absent)
       type(scalar_oracle_t), intent(out) :: oracle
       type(error_t), allocatable, intent(out) :: error
       type(equation_model_t) :: e
@@ -62,7 +61,6 @@ contains
       allocate (oracle%model, source=e)
       oracle%drive_axis = along_beta
       oracle%method = method_t(tolerance=1.0e-12_wp)
-      if (present(tolerance)) oracle%method%tolerance = tolerance
    end subroutine damped_mathieu
 
    !> The principal region (order 1, simple) of a region list; 0 when there is none.

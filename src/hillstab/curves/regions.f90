@@ -89,6 +89,7 @@ module hillstab_curves_regions
       real(wp) :: argument = -1.0_wp              !! systems' family: the multipliers' argument/π
       integer :: n_samples = 32                   !! samples of the drive range for the first root
       integer :: count = 0                        !! distances computed
+      real(wp) :: slope = 0.0_wp                  !! dg/dd at the last root along the drive (0: none yet)
    end type search_t
 
    !> The natural frequencies at one sample of the frequency range.
@@ -295,8 +296,14 @@ contains
          r%status = region_theory
       else
          f0 = r%predicted
-         call first_critical(oracle, s, f0, c0, c_error, error)
+         ! stable at the top drive there: no need to sample the drive range first
+         call evaluate(oracle, s, f0, d_max, top, error)
          if (allocated(error)) return
+         c0 = none
+         if (top%g > 0.0_wp) then
+            call first_critical(oracle, s, f0, c0, c_error, error)
+            if (allocated(error)) return
+         end if
          if (c0 == none) then
             ! closed at the prediction: is it open anywhere in the window at the top?
             call top_peak(oracle, s, r%window, f0, top, error)
@@ -489,6 +496,8 @@ contains
       call evaluate(oracle, s, f, d0, s0, error)
       if (allocated(error)) return
       h = max(1.0e-3_wp*abs(d0), 1.0e-6_wp*(s%d_max - s%d_min))
+      ! the last root's slope predicts this one: the first step goes a little beyond it
+      if (s%slope > 0.0_wp .and. abs(s0%g) < 1.0e300_wp) h = max(h, 1.2_wp*abs(s0%g)/s%slope)
       do iteration = 1, 200
          if (s0%g > 0.0_wp) then
             d1 = max(s%d_min, d0 - h)
@@ -616,6 +625,7 @@ contains
          end if
       end if
       x_error = max(x_error, 4.0_wp*spacing(max(1.0_wp, abs(x))))
+      if (along_drive .and. slope > 0.0_wp) s%slope = slope
    end subroutine bracketed_root
 
    !> Golden-section search of the window for the largest distance at d_max, starting at f.
@@ -640,7 +650,7 @@ contains
       if (allocated(error)) return
       do iteration = 1, 60
          if (s1%g > 0.0_wp .or. s2%g > 0.0_wp) exit
-         if (b - a <= sqrt(s%tolerance)*max(1.0_wp, abs(a), abs(b))) exit
+         if (b - a <= 1.0e-3_wp*(window(2) - window(1))) exit
          if (s1%g >= s2%g) then
             b = x2
             x2 = x1
@@ -676,7 +686,7 @@ contains
       real(wp), intent(out) :: f_error
       type(error_t), allocatable, intent(out) :: error
       real(wp), parameter :: golden = 0.3819660112501051_wp
-      real(wp) :: a, b, v, w, x, fv, fw, fx, d, e, u, fu, tol1, tol2, xm, p, q, rr, eu, ex, gap
+      real(wp) :: a, b, v, w, x, fv, fw, fx, d, e, u, fu, tol1, tol2, xm, p, q, rr, eu, ex
       integer :: iteration
       a = window(1)
       b = window(2)
@@ -694,6 +704,8 @@ contains
          tol1 = 1.0e-2_wp*sqrt(s%tolerance)*abs(x) + 1.0e-12_wp*(window(2) - window(1))
          tol2 = 2.0_wp*tol1
          if (abs(x - xm) <= tol2 - 0.5_wp*(b - a)) exit
+         ! the three best points' parabola dips no deeper below the best value than its error
+         if (iteration > 3 .and. parabola_gap(x, w, v, fx, fw, fv) <= ex) exit
          if (abs(e) > tol1) then
             rr = (x - w)*(fx - fv)
             q = (x - v)*(fx - fw)
@@ -752,21 +764,26 @@ contains
       f = x
       c = fx
       f_error = max(0.5_wp*(b - a), 4.0_wp*spacing(abs(x)))
-      ! how far below the best value the minimum may lie: the vertex of the parabola through
-      ! the three best points, or (no parabola) the spread of c over them
-      gap = 0.0_wp
-      if (max(fv, fw) < none) then
-         gap = max(fv, fw) - fx
-         p = (x - w)*(fx - fv) - (x - v)*(fx - fw)
-         q = (x - w)**2*(fx - fv) - (x - v)**2*(fx - fw)
-         if (abs(p) > 0.0_wp .and. w /= x .and. v /= x .and. v /= w) then
-            ! the vertex's value: fx − (q/(2p))² × curvature, the curvature from the three points
-            rr = ((fw - fx)/(w - x) - (fv - fx)/(v - x))/(w - v)
-            if (rr > 0.0_wp) gap = min(gap, rr*(0.5_wp*q/p)**2)
-         end if
-      end if
-      c_error = ex + gap
+      c_error = ex + parabola_gap(x, w, v, fx, fw, fv)
    end subroutine minimise_critical
+
+   !> How far below the best value fx the minimum may lie: the depth of the vertex of the
+   !> parabola through the three best points below fx, or (no parabola) the spread of c
+   !> over them.
+   pure real(wp) function parabola_gap(x, w, v, fx, fw, fv) result(gap)
+      real(wp), intent(in) :: x, w, v, fx, fw, fv
+      real(wp) :: p, q, curvature
+      gap = huge(1.0_wp)
+      if (.not. (max(fv, fw) < none)) return
+      gap = max(fv, fw) - fx
+      if (w == x .or. v == x .or. v == w) return
+      p = (x - w)*(fx - fv) - (x - v)*(fx - fw)
+      q = (x - w)**2*(fx - fv) - (x - v)**2*(fx - fw)
+      if (.not. (abs(p) > 0.0_wp)) return
+      ! the vertex lies q/(2p) from x; its depth is the curvature times that squared
+      curvature = ((fw - fx)/(w - x) - (fv - fx)/(v - x))/(w - v)
+      if (curvature > 0.0_wp) gap = min(gap, curvature*(0.5_wp*q/p)**2)
+   end function parabola_gap
 
    !> The region's edges at d_max, stepping out from its tip (see the module's text).
    subroutine top_edges(oracle, s, r, error)
