@@ -61,6 +61,7 @@ module hillstab_hill_system
       procedure :: takes_scene_damping => scene_damping_taken
       procedure :: period => period_two
       procedure :: even => not_even
+      procedure :: even_at => even_anywhere
       procedure :: symmetric => symmetric_stiffness
       procedure :: alpha_domain => any_alpha
       procedure :: alpha_valid => finite_alpha
@@ -152,6 +153,15 @@ contains
       class(hill_system_t), intent(in) :: self  !! the system
       period = 2.0_wp
    end function period_two
+
+   !> K is even about τ = 0 at row α: as at every row (`even`) unless the system says
+   !> otherwise.
+   pure logical function even_anywhere(self, alpha)
+      class(hill_system_t), intent(in) :: self  !! the system
+      real(wp), intent(in) :: alpha            !! α of the row
+      even_anywhere = self%even()
+      if (alpha /= alpha) even_anywhere = .false.
+   end function even_anywhere
 
    !> K is even about τ = 0 (K(−τ) = K(τ)): false unless the system says so.
    pure logical function not_even(self)
@@ -327,7 +337,14 @@ contains
       form%epsilon = epsilon
       form%gyroscopic = any(g /= 0.0_wp)
       form%hamiltonian = all(c == 0.0_wp) .and. epsilon == 0.0_wp .and. system%symmetric()
-      form%half = form%hamiltonian .and. .not. form%gyroscopic .and. system%even()
+      form%half = form%hamiltonian .and. .not. form%gyroscopic
+      if (form%half) then
+         if (present(alpha)) then
+            form%half = system%even_at(alpha)
+         else
+            form%half = system%even()
+         end if
+      end if
    end subroutine prepare_system
 
    !> Y' = A Y for the fundamental matrix Y (m × m, m = 2n, stored column by column in y):

@@ -95,6 +95,8 @@ module hillstab_hill_system_equation
       procedure :: takes_scene_damping => equations_own_damping
       procedure :: stiffness => equations_stiffness
       procedure :: symmetric => equations_symmetric
+      procedure :: even => equations_even
+      procedure :: even_at => equations_even_at
       procedure :: alpha_domain => equations_alpha_domain
       procedure :: alpha_valid => equations_alpha_valid
       procedure :: axis_name => equations_axis_name
@@ -619,6 +621,54 @@ contains
       call assemble(self, ratio**2*r0, p)
       call assemble(self, ratio**2*(r1 - r0), b)
    end subroutine equations_stiffness
+
+   !> K is even about t = 0 at every row: at the axis α's own value and three others (each
+   !> where Ω is defined; at least one), by `equations_even_at`.
+   pure logical function equations_even(self)
+      class(equations_system_t), intent(in) :: self  !! the system
+      real(wp) :: alphas(4), p(size(self%values)), ratio
+      logical :: ok
+      integer :: j, tested
+      equations_even = .false.
+      if (.not. self%ready) return
+      alphas(1) = self%values(self%i_alpha)
+      alphas(2:4) = [1.37_wp*alphas(1) + 0.61_wp, alphas(1) + 1.7_wp, -2.3_wp - 0.9_wp*alphas(1)]
+      tested = 0
+      do j = 1, size(alphas)
+         call row_at(self, alphas(j), p, ratio, ok)
+         if (.not. ok) cycle
+         if (.not. equations_even_at(self, alphas(j))) return
+         tested = tested + 1
+      end do
+      equations_even = tested > 0
+   end function equations_even
+
+   !> K is even about t = 0 at row α: K(−t) equals K(t) to the bit at 7 times and at β = 0
+   !> and 1 (K being affine in β).
+   pure logical function equations_even_at(self, alpha) result(even)
+      class(equations_system_t), intent(in) :: self  !! the system
+      real(wp), intent(in) :: alpha                  !! α of the row
+      real(wp) :: q(size(self%values)), ratio, plus(size(self%matrix_names) + 1), minus(size(self%matrix_names) + 1), t
+      type(error_t), allocatable :: failure
+      logical :: ok
+      integer :: j, level
+      even = .false.
+      if (.not. self%ready) return
+      call row_at(self, alpha, q, ratio, ok)
+      if (.not. ok) return
+      do level = 0, 1
+         q(self%i_beta) = real(level, wp)
+         do j = 0, 6
+            t = ratio*(0.1234567_wp + 0.2718281_wp*j)
+            call coefficients(self, self%k, t, q, plus, failure)
+            if (allocated(failure)) return
+            call coefficients(self, self%k, -t, q, minus, failure)
+            if (allocated(failure)) return
+            if (any(plus /= minus)) return
+         end do
+      end do
+      even = .true.
+   end function equations_even_at
 
    !> K is symmetric when every matrix is.
    pure logical function equations_symmetric(self)

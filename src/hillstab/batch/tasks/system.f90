@@ -335,7 +335,7 @@ contains
    end function system_lines
 
    !> One point: monodromy, analysis, values; `failed` with the error when it could not be computed.
-   subroutine evaluate(system, form, method, alpha, beta, nodes, v, failed, message)
+   subroutine evaluate(system, form, method, alpha, beta, nodes, v, failed, message, row_form_given)
       class(hill_system_t), intent(in) :: system
       type(system_form_t), intent(in) :: form
       type(system_method_t), intent(in) :: method
@@ -344,11 +344,16 @@ contains
       real(wp), intent(out) :: v(:)
       logical, intent(out) :: failed
       character(len=:), allocatable, intent(out) :: message
+      !> `form` is the row's already (a row-dependent system prepared at α by the caller)
+      logical, intent(in), optional :: row_form_given
       type(system_monodromy_t) :: r
       type(system_floquet_t) :: f
       type(error_t), allocatable :: error
       type(system_form_t) :: row_form
-      if (system%row_dependent()) then
+      logical :: prepare
+      prepare = system%row_dependent()
+      if (present(row_form_given)) prepare = prepare .and. .not. row_form_given
+      if (prepare) then
          ! C or G change with α (an equation's damping along a frequency axis): the form of the row
          call prepare_system(system, form%epsilon, row_form, error, alpha)
          if (.not. allocated(error)) call system_point(system, row_form, alpha, beta, method, nodes, r, f, error)
@@ -389,13 +394,29 @@ contains
       integer, intent(out) :: n_failed  !! points of status 2
       character(len=*), intent(out) :: failure  !! "alpha = …, beta = …: why" of the first ("" when none)
       type(system_nodes_t) :: nodes
+      type(system_form_t) :: row_form
+      type(error_t), allocatable :: error
       character(len=:), allocatable :: message
       logical :: failed
       integer :: j
       n_failed = 0
       failure = ""
+      if (system%row_dependent()) then
+         ! the row's form once (C or G change with α: an equation's damping along a frequency axis)
+         call prepare_system(system, form%epsilon, row_form, error, alpha)
+         if (allocated(error)) then
+            do j = 1, size(betas)
+               call evaluate(system, form, method, alpha, betas(j), nodes, values(:, j), failed, message)
+               if (failed .and. n_failed == 0) call failure_text(alpha, betas(j), message, failure)
+               if (failed) n_failed = n_failed + 1
+            end do
+            return
+         end if
+      else
+         row_form = form
+      end if
       do j = 1, size(betas)
-         call evaluate(system, form, method, alpha, betas(j), nodes, values(:, j), failed, message)
+         call evaluate(system, row_form, method, alpha, betas(j), nodes, values(:, j), failed, message, .true.)
          if (failed .and. n_failed == 0) call failure_text(alpha, betas(j), message, failure)
          if (failed) n_failed = n_failed + 1
       end do
