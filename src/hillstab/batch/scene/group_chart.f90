@@ -67,11 +67,13 @@ contains
       call group%add("alpha_min", var_real, "0.0", "first alpha = a pi^2/rho (elastic: 0 <= alpha < pi^2)")
       call group%add("alpha_max", var_real, "9.8", "last alpha, >= alpha_min")
       call group%add("n_alpha", var_integer, "200", "number of alpha values, >= 1")
-      call group%add("alpha_scale", var_name, "'linear'", "linear: equally spaced | log: geometric (alpha_min > 0)")
+      call group%add("alpha_scale", var_name, "", "linear (unset): equally spaced | log: geometric, alpha_min > 0", &
+                     example="'log'")
       call group%add("beta_min", var_real, "-2.0", "first beta = g pi^2/(rho omega^2)")
       call group%add("beta_max", var_real, "12.0", "last beta, >= beta_min")
       call group%add("n_beta", var_integer, "200", "number of beta values, >= 1")
-      call group%add("beta_scale", var_name, "'linear'", "linear: equally spaced | log: geometric (beta_min > 0)")
+      call group%add("beta_scale", var_name, "", "linear (unset): equally spaced | log: geometric, beta_min > 0", &
+                     example="'log'")
    end function chart_group
 
    !> Read and check `&chart` (the declaration `group` carries the task's defaults). A scale
@@ -115,8 +117,8 @@ contains
       grid = chart_grid_t(alpha_min, alpha_max, n_alpha, beta_min, beta_max, n_beta, alpha_kind, beta_kind)
    end subroutine read_chart_group
 
-   !> The scale of axis `name` (`<name>_scale`): 'linear' or 'log', the latter with
-   !> `<name>_min` > 0 (and so every value of the axis); 'linear' is left out of the
+   !> The scale of axis `name` (`<name>_scale`): 'linear' (or unset) or 'log', the latter
+   !> with `<name>_min` > 0 (and so every value of the axis); 'linear' is left out of the
    !> effective scene.
    subroutine read_scale(path, group, name, text, lo, values, scale, error)
       character(len=*), intent(in) :: path, group, name  !! the scene file, the group, the axis
@@ -127,7 +129,7 @@ contains
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
       scale = scale_linear
       select case (lower_case(trim(adjustl(text))))
-      case ("linear")
+      case ("", "linear")
          call values%hide(name//"_scale")
       case ("log")
          scale = scale_log
