@@ -72,7 +72,8 @@ contains
       call group%add("beta_min", var_real, "-2.0", "first beta = g pi^2/(rho omega^2)")
       call group%add("beta_max", var_real, "12.0", "last beta, >= beta_min")
       call group%add("n_beta", var_integer, "200", "number of beta values, >= 1")
-      call group%add("beta_scale", var_name, "", "linear (unset): equally spaced | log: geometric, beta_min > 0", &
+      call group%add("beta_scale", var_name, "", "linear (unset): equally spaced | log: geometric, beta_min > 0 "// &
+                     "(not task boundaries)", &
                      example="'log'")
    end function chart_group
 
@@ -200,8 +201,10 @@ contains
          ! decimal logarithms of values in (0, 1e15] are bounded: neither the difference nor
          ! the power overflows; powers of ten whose exponents the spacing hits come out exact
          ! (1e-3 to 1e3 in 7 values: 0.001, 0.01, ..., 1000)
-         t = real(i - 1, wp)/real(n - 1, wp)
-         grid_value = 10.0_wp**(log10(lo) + (log10(hi) - log10(lo))*t)
+         ! (the exponent as the linear values: a product then a quotient, no fused
+         ! multiply-add, so that another language's a + (b - a)(i - 1)/(n - 1) gives the bits)
+         t = log10(lo) + (log10(hi) - log10(lo))*real(i - 1, wp)/real(n - 1, wp)
+         grid_value = 10.0_wp**t
       else if (abs(0.5_wp*hi - 0.5_wp*lo) > 0.25_wp*huge(1.0_wp)/real(n, wp)) then
          ! a range near the largest double (a reader refuses it later): hi − lo or its product
          ! with i − 1 would overflow, a convex combination cannot
