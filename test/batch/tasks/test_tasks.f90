@@ -1010,7 +1010,8 @@ contains
    !> A chart over log axes (`alpha_scale`, `beta_scale` = 'log'): its α and β are the
    !> geometric values of `grid_value` to the bit (both ends exact), its rows are the points
    !> task's lines at the same (α, β) (segments: the same numbers to the bit; auto: the same
-   !> verdicts, S within the tolerance), and the file run again as a scene writes itself.
+   !> verdicts, S within the tolerance), and the file run again as a scene writes itself;
+   !> task boundaries draws its curves at the log alphas.
    subroutine log_chart_matches_points(ctx)
       type(test_context_t), intent(inout) :: ctx
       integer, parameter :: na = 6, nb = 9
@@ -1074,6 +1075,24 @@ contains
          call delete_file(points_path)
       end do
       call delete_file(points)
+      ! task boundaries draws its curves at the log alphas
+      call run_text_scene("logchart_curves", [padded("&scene task = 'boundaries', model = 'mathieu', output = '"// &
+         out//"' /"), padded("&chart alpha_min = 0.1, alpha_max = 3, n_alpha = 4, alpha_scale = 'log', "// &
+         "beta_min = -1, beta_max = 5, n_beta = 50 /")], error, chart_path)
+      call check(ctx, .not. allocated(error), "boundaries over log alphas run")
+      if (allocated(error)) return
+      lines = read_lines(chart_path)
+      call delete_file(chart_path)
+      call data_rows(lines, 13, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) > 8, "curve points: "//integer_text(size(rows, 2)))
+      do i = 1, 4
+         call check(ctx, count(rows(1, :) == grid_value(0.1_wp, 3.0_wp, 4, i, geometric=.true.)) >= 2, &
+                    "curve points at log alpha "//integer_text(i))
+      end do
+      call check(ctx, all(rows(1, :) == grid_value(0.1_wp, 3.0_wp, 4, 1, geometric=.true.) .or. &
+                          rows(1, :) == grid_value(0.1_wp, 3.0_wp, 4, 2, geometric=.true.) .or. &
+                          rows(1, :) == grid_value(0.1_wp, 3.0_wp, 4, 3, geometric=.true.) .or. &
+                          rows(1, :) == grid_value(0.1_wp, 3.0_wp, 4, 4, geometric=.true.)), "only the log alphas")
    end subroutine log_chart_matches_points
 
    subroutine verdict_chart_matches_full(ctx)
