@@ -36,6 +36,8 @@ enum {
   HILLSTAB_METHOD_MAGNUS4 = 3, HILLSTAB_METHOD_MAGNUS6 = 4, HILLSTAB_METHOD_RK = 5, HILLSTAB_METHOD_GSL = 6
 };
 enum { HILLSTAB_SAMPLING_ENDPOINT = 1, HILLSTAB_SAMPLING_MIDPOINT = 2, HILLSTAB_SAMPLING_AVERAGE = 3 };
+/* The spacing of a chart's axis (hillstab_chart_scaled): equally spaced, or geometric. */
+enum { HILLSTAB_SCALE_LINEAR = 0, HILLSTAB_SCALE_LOG = 1 };
 enum {
   HILLSTAB_ERR_INVALID_PARAMETER = 1, HILLSTAB_ERR_OVERFLOW = 2, HILLSTAB_ERR_INTEGRATION = 3,
   HILLSTAB_ERR_IO = 4, HILLSTAB_ERR_INPUT = 5, HILLSTAB_ERR_SINGULAR = 6, HILLSTAB_ERR_ACCURACY = 7
@@ -173,6 +175,13 @@ int hillstab_chart(const hillstab_model *model, double alpha_min, double alpha_m
                    double beta_min, double beta_max, size_t n_beta, double epsilon, int method, int n_segments,
                    int sampling, double tolerance, int need, int paper, int threads, double *alpha,
                    double *beta, double *values, int *status);
+/* hillstab_chart with a scale for each axis: HILLSTAB_SCALE_LINEAR (equally spaced, as
+ * hillstab_chart) or HILLSTAB_SCALE_LOG (geometric, both ends in (0, 1e300]), the grid of
+ * &chart alpha_scale, beta_scale. */
+int hillstab_chart_scaled(const hillstab_model *model, double alpha_min, double alpha_max, size_t n_alpha,
+                          int alpha_scale, double beta_min, double beta_max, size_t n_beta, int beta_scale,
+                          double epsilon, int method, int n_segments, int sampling, double tolerance, int need,
+                          int paper, int threads, double *alpha, double *beta, double *values, int *status);
 
 /* alpha (elastic: a pi^2/rho), beta = g pi^2/(rho omega^2) and epsilon = kappa pi/omega of a
  * pendulum in SI units (r0 m, g m/s^2, omega = sqrt(k/m) rad/s, a m, kappa 1/s). */
@@ -295,6 +304,11 @@ int hillstab_system_chart(const hillstab_system *system, double alpha_min, doubl
                           double beta_min, double beta_max, size_t n_beta, double epsilon, int method,
                           double tolerance, int threads, double *alpha, double *beta, double *values,
                           int *status);
+/* hillstab_system_chart with a scale for each axis (HILLSTAB_SCALE_*, as hillstab_chart_scaled). */
+int hillstab_system_chart_scaled(const hillstab_system *system, double alpha_min, double alpha_max, size_t n_alpha,
+                                 int alpha_scale, double beta_min, double beta_max, size_t n_beta, int beta_scale,
+                                 double epsilon, int method, double tolerance, int threads, double *alpha,
+                                 double *beta, double *values, int *status);
 
 /* ---- Resonance regions ----
  * For a driven problem, every resonance region of order k = 1 ... order (1 ... 8) predicted

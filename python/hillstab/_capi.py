@@ -93,6 +93,10 @@ _declare("hillstab_chart", ctypes.c_int, _model_p, ctypes.c_double, ctypes.c_dou
          ctypes.c_double, ctypes.c_double, ctypes.c_size_t, ctypes.c_double, ctypes.c_int, ctypes.c_int,
          ctypes.c_int, ctypes.c_double, ctypes.c_int, ctypes.c_int, ctypes.c_int, _c_double_p, _c_double_p,
          _c_double_p, _c_int_p)
+_declare("hillstab_chart_scaled", ctypes.c_int, _model_p, ctypes.c_double, ctypes.c_double, ctypes.c_size_t,
+         ctypes.c_int, ctypes.c_double, ctypes.c_double, ctypes.c_size_t, ctypes.c_int, ctypes.c_double, ctypes.c_int,
+         ctypes.c_int, ctypes.c_int, ctypes.c_double, ctypes.c_int, ctypes.c_int, ctypes.c_int, _c_double_p,
+         _c_double_p, _c_double_p, _c_int_p)
 _declare("hillstab_physical", ctypes.c_int, _model_p, ctypes.c_double, ctypes.c_double, ctypes.c_double,
          ctypes.c_double, ctypes.c_double, _c_double_p, _c_double_p, _c_double_p)
 _declare("hillstab_critical_drives", ctypes.c_int, _model_p, ctypes.c_double, ctypes.c_double, ctypes.c_double,

@@ -321,11 +321,14 @@ def trace(alpha, beta, model=None, epsilon=0.0, method="auto", tolerance=1e-10, 
 
 
 def chart(alpha, beta, model=None, epsilon=0.0, method="auto", tolerance=1e-10, n_segments=2,
-          sampling="endpoint", values=ALL_VALUES, threads=0, progress=None):
+          sampling="endpoint", values=ALL_VALUES, threads=0, progress=None, alpha_scale="linear",
+          beta_scale="linear"):
     """The stability chart over a grid, as the command line's task ``chart`` computes it.
 
     ``alpha`` and ``beta`` are (first, last, count) with both ends included, the grid of
-    ``&chart alpha_min, alpha_max, n_alpha`` and ``beta_*``. The other parameters as in
+    ``&chart alpha_min, alpha_max, n_alpha`` and ``beta_*``: equally spaced, or geometric
+    with ``alpha_scale="log"`` (``beta_scale``; the first value > 0), as ``&chart
+    alpha_scale``, the same values to the bit. The other parameters as in
     `floquet` (without ``model``: the elastic pendulum, with a HillstabWarning when the grid
     leaves its physical domain); ``values=("stable",)`` computes the verdicts alone (a
     screening pass settles most points: several times faster). ``progress`` (a callable
@@ -346,6 +349,7 @@ def chart(alpha, beta, model=None, epsilon=0.0, method="auto", tolerance=1e-10, 
     kind, pieces, samples = _method(method, n_segments, sampling)
     alpha_min, alpha_max, n_alpha = _axis(alpha, "alpha")
     beta_min, beta_max, n_beta = _axis(beta, "beta")
+    scales = _scale(alpha_scale, "alpha_scale"), _scale(beta_scale, "beta_scale")
     epsilon = real_number("epsilon", epsilon)
     tolerance = real_number("tolerance", tolerance)
     alphas = np.empty(n_alpha)
@@ -355,9 +359,10 @@ def chart(alpha, beta, model=None, epsilon=0.0, method="auto", tolerance=1e-10, 
     paper = 1 if "stable_paper" in values else 0
 
     def call():
-        check(lib.hillstab_chart(model.handle, alpha_min, alpha_max, n_alpha, beta_min, beta_max, n_beta, epsilon, kind,
-                                 pieces, samples, tolerance, need, paper, int(threads), _capi.doubles(alphas),
-                                 _capi.doubles(betas), _capi.doubles(out), _capi.ints(status)),
+        check(lib.hillstab_chart_scaled(model.handle, alpha_min, alpha_max, n_alpha, scales[0], beta_min, beta_max,
+                                        n_beta, scales[1], epsilon, kind, pieces, samples, tolerance, need, paper,
+                                        int(threads), _capi.doubles(alphas), _capi.doubles(betas),
+                                        _capi.doubles(out), _capi.ints(status)),
               known=(epsilon, tolerance, alpha_min, alpha_max, beta_min, beta_max))
 
     report = _progress.Progress(progress, n_alpha, "rows")
@@ -377,6 +382,18 @@ def chart(alpha, beta, model=None, epsilon=0.0, method="auto", tolerance=1e-10, 
         # an equation's axes by their parameters' names too
         extra.update({axes[0]: alphas, axes[1]: betas})
     return Result(_unpack(out, values, (n_alpha, n_beta)), status.astype(np.int8), values, extra=extra)
+
+
+# the scales of a chart's axis (HILLSTAB_SCALE_*)
+_SCALES = {"linear": 0, "log": 1}
+
+
+def _scale(scale, name):
+    """The code of an axis scale, 'linear' or 'log' (any case); ValueError naming the
+    argument for anything else."""
+    if isinstance(scale, str) and scale.strip().lower() in _SCALES:
+        return _SCALES[scale.strip().lower()]
+    raise ValueError("{} must be 'linear' or 'log', got {!r}".format(name, scale))
 
 
 def _axis(axis, name):

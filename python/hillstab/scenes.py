@@ -2,6 +2,7 @@
 output file (text or binary) into numpy arrays by column name with the effective scene
 of its header, and the nonlinear pendulum's `series` as arrays.
 """
+import math
 import os
 import re
 import tempfile
@@ -37,15 +38,23 @@ def _variable(group, name, kind=str):
     return kind(value)
 
 
-def grid_values(first, last, count):
+def grid_values(first, last, count, scale="linear"):
     """The values of a grid axis as the library computes them (``grid_value``): first, then
-    first + (last − first) i/(count − 1), the last exactly `last`."""
+    first + (last − first) i/(count − 1), the last exactly `last`; with ``scale="log"``
+    (``&chart alpha_scale = 'log'``) geometric, 10 to the power log10(first) + (log10(last) −
+    log10(first)) i/(count − 1), both ends exact."""
+    geometric = str(scale).strip().lower() == "log"
     values = np.empty(count)
     for i in range(count):
         if count <= 1:
             values[i] = first
         elif i == count - 1:
             values[i] = last
+        elif geometric and i == 0:
+            values[i] = first
+        elif geometric:
+            low, high = math.log10(first), math.log10(last)
+            values[i] = math.pow(10.0, low + (high - low) * float(i) / float(count - 1))
         else:
             values[i] = first + (last - first) * float(i) / float(count - 1)
     return values
@@ -60,8 +69,9 @@ class Output:
     A chart (task ``chart``, or ``lyapunov`` over a chart) is a grid as well: ``out.grid("S")``
     is a column as a 2-D array ``[i_alpha, i_beta]`` and ``out.axes`` the coordinate vectors
     (alpha, beta) — the shape of `chart`'s and `System.chart`'s results; a chart of a spring
-    in SI units (``&physical``) has the axes (a, omega). ``out.is_grid``, ``out.grid_shape``
-    and ``out.axis_names`` tell. ``out.to_pandas()`` gives a long table (pandas needed)."""
+    in SI units (``&physical``) has the axes (a, omega). ``out.is_grid``, ``out.grid_shape``,
+    ``out.axis_names`` and ``out.axis_scales`` (``"log"`` for ``&chart alpha_scale = 'log'``)
+    tell. ``out.to_pandas()`` gives a long table (pandas needed)."""
 
     def __init__(self, path, header, columns, data):
         #: the file
@@ -99,7 +109,10 @@ class Output:
         if any(v is None for v in values):
             return None
         first0, last0, count0, first1, last1, count1 = values
-        return names, (count0, count1), ((first0, last0), (first1, last1))
+        # a log axis is named in the header (&chart alpha_scale = 'log'); linear is not
+        scales = tuple((_variable(group, key) or "linear").lower() if group is chart else "linear"
+                       for key in ("alpha_scale", "beta_scale"))
+        return names, (count0, count1), ((first0, last0), (first1, last1)), scales
 
     @property
     def is_grid(self):
@@ -133,15 +146,21 @@ class Output:
         file's columns when it has them, else computed from the header's grid as the library
         computes them. ValueError for a file that is not a chart."""
         self._check_grid()
-        names, (n0, n1), ends = self._grid
+        names, (n0, n1), ends, scales = self._grid
         result = []
         for k, name in enumerate(names):
             if name in self.columns:
                 column = self.column(name)
                 result.append((column[::n1] if k == 0 else column[:n1]).copy())
             else:
-                result.append(grid_values(ends[k][0], ends[k][1], (n0, n1)[k]))
+                result.append(grid_values(ends[k][0], ends[k][1], (n0, n1)[k], scales[k]))
         return tuple(result)
+
+    @property
+    def axis_scales(self):
+        """("linear", "linear") of a chart, "log" for an axis of geometric values (``&chart
+        alpha_scale = 'log'``: plot it with ``set_xscale("log")``), else None."""
+        return self._grid[3] if self._grid else None
 
     def grid(self, name):
         """The column `name` of a chart as a 2-D array [i_alpha, i_beta] (the shape of

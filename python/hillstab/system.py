@@ -37,7 +37,7 @@ import numpy as np
 
 from . import _capi, _progress
 from ._capi import lib, check, real_number, real_array
-from .floquet import _warn, _axis
+from .floquet import _warn, _axis, _scale
 
 _system_p = ctypes.c_void_p
 _c_double_p = ctypes.POINTER(ctypes.c_double)
@@ -67,6 +67,11 @@ _capi._declare("hillstab_system_regions", ctypes.c_int, _system_p, ctypes.c_int,
 _capi._declare("hillstab_system_chart", ctypes.c_int, _system_p, ctypes.c_double, ctypes.c_double, ctypes.c_size_t,
                ctypes.c_double, ctypes.c_double, ctypes.c_size_t, ctypes.c_double, ctypes.c_int, ctypes.c_double,
                ctypes.c_int, _c_double_p, _c_double_p, _c_double_p, _c_int_p)
+
+_capi._declare("hillstab_system_chart_scaled", ctypes.c_int, _system_p, ctypes.c_double, ctypes.c_double,
+               ctypes.c_size_t, ctypes.c_int, ctypes.c_double, ctypes.c_double, ctypes.c_size_t, ctypes.c_int,
+               ctypes.c_double, ctypes.c_int, ctypes.c_double, ctypes.c_int, _c_double_p, _c_double_p, _c_double_p,
+               _c_int_p)
 
 #: the methods of systems (codes HILLSTAB_METHOD_*)
 SYSTEM_METHODS = {"auto": 0, "magnus4": 3, "magnus6": 4, "rk": 5, "gsl": 6}
@@ -410,10 +415,12 @@ class System:
         _warn(status, lambda k: "alpha = {!r}, beta = {!r}".format(float(a[k]), float(b[k])))
         return self._result(out, status, shape)
 
-    def chart(self, alpha, beta, epsilon=0.0, method="auto", tolerance=1e-10, threads=0, progress=None):
+    def chart(self, alpha, beta, epsilon=0.0, method="auto", tolerance=1e-10, threads=0, progress=None,
+              alpha_scale="linear", beta_scale="linear"):
         """The chart over a grid, as the command line's task ``chart`` computes it (its files'
         numbers to the bit: the points of a row share their nodes). ``alpha`` and ``beta``
-        are (first, last, count), both ends included. Returns a `SystemResult` with 2-D
+        are (first, last, count), both ends included, equally spaced, or geometric with
+        ``alpha_scale="log"`` (``beta_scale``; first > 0), as ``&chart alpha_scale``. Returns a `SystemResult` with 2-D
         arrays ``[i_alpha, i_beta]`` and the axes ``alpha`` (n_alpha,) and ``beta``
         (n_beta,); status 1 and 2 give a `HillstabWarning`. ``progress`` (a callable
         ``progress(done, total)`` of rows, or True for a bar) reports the rows as they are
@@ -421,6 +428,7 @@ class System:
         numbers to the bit. `read_output` gives a chart file in the same shape."""
         alpha_min, alpha_max, n_alpha = _axis(alpha, "alpha")
         beta_min, beta_max, n_beta = _axis(beta, "beta")
+        scales = _scale(alpha_scale, "alpha_scale"), _scale(beta_scale, "beta_scale")
         alphas = np.empty(n_alpha)
         betas = np.empty(n_beta)
         width = 14 + self.n
@@ -432,9 +440,10 @@ class System:
         threads = _threads(threads)
 
         def call():
-            code = lib.hillstab_system_chart(self._handle, alpha_min, alpha_max, n_alpha, beta_min, beta_max, n_beta,
-                                             epsilon, code_of_method, tolerance, threads, _capi.doubles(alphas),
-                                             _capi.doubles(betas), _capi.doubles(out), _capi.ints(status))
+            code = lib.hillstab_system_chart_scaled(self._handle, alpha_min, alpha_max, n_alpha, scales[0], beta_min,
+                                                    beta_max, n_beta, scales[1], epsilon, code_of_method, tolerance,
+                                                    threads, _capi.doubles(alphas), _capi.doubles(betas),
+                                                    _capi.doubles(out), _capi.ints(status))
             if code != _capi.ERR_POINTS_FAILED:
                 check(code, known=(epsilon, tolerance, alpha_min, alpha_max, beta_min, beta_max))
 

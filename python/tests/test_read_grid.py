@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 
 import hillstab
+from hillstab.scenes import grid_values
 
 GRID = ((0.1, 9.7, 7), (-2.3, 11.9, 13))
 # the files' names of Result's values
@@ -107,3 +108,53 @@ def test_to_pandas(cli):
     assert isinstance(table, pandas.DataFrame)
     assert list(table.columns) == list(out.columns) and len(table) == 91
     assert np.array_equal(table["S"].to_numpy(), out["S"])
+
+
+LOG = ((0.02, 9.5, 6), (0.01, 100.0, 9))
+LOG_CHART = ("&chart alpha_min = 0.02, alpha_max = 9.5, n_alpha = 6, alpha_scale = 'log', beta_min = 0.01, "
+             "beta_max = 100.0, n_beta = 9, beta_scale = 'log' /\n")
+
+
+@pytest.mark.parametrize("columns", ["", "S status"])
+def test_log_chart_as_grid(cli, columns):
+    # &chart alpha_scale = beta_scale = 'log': chart(..., alpha_scale='log') is the task's file to
+    # the bit, and read_output's axes are geometric, from the columns or from the header alike
+    cli.run("lg", "&scene task = 'chart', model = 'elastic', format = 'binary', output = 'lg', columns = '{}' /\n"
+            .format(columns) + LOG_CHART, threads=2)
+    out = hillstab.read_output(cli.path("lg_chart.bin"))
+    c = hillstab.chart(LOG[0], LOG[1], model="elastic", alpha_scale="log", beta_scale="LOG", threads=2)
+    assert out.grid_shape == (6, 9) and out.axis_scales == ("log", "log")
+    alpha, beta = out.axes
+    assert bits(alpha, c.alpha) and bits(beta, c.beta)
+    assert alpha[0] == 0.02 and alpha[-1] == 9.5 and beta[0] == 0.01 and beta[-1] == 100.0
+    assert np.array_equal(beta[::2], [0.01, 0.1, 1.0, 10.0, 100.0])  # a decade every two steps
+    assert np.allclose(np.diff(np.log(alpha)), np.log(9.5 / 0.02) / 5, rtol=1e-12)
+    assert bits(out.grid("S"), c.trace) and bits(out.grid("status").astype(np.int8), c.status)
+    assert bits(grid_values(0.02, 9.5, 6, "log"), c.alpha)
+    # linear is the default and what a file without the scales says
+    linear = hillstab.chart(LOG[0], LOG[1], model="elastic", values=("trace",), alpha_scale="linear")
+    assert bits(linear.alpha, grid_values(0.02, 9.5, 6)) and linear.beta[1] == 0.01 + (100.0 - 0.01) / 8
+
+
+def test_log_system_chart_as_grid(cli):
+    cli.run("ls", "&scene task = 'chart', model = 'system', output = 'ls' /\n" + SYSTEM +
+            LOG_CHART.replace("alpha_max = 9.5", "alpha_max = 1.2"), threads=2)
+    out = hillstab.read_output(cli.path("ls_chart.dat"))
+    pair = hillstab.System(mass=np.diag([1.0, 0.64]), b=[[1.1, -0.1], [-0.1, 0.9]], cos=-np.diag([1.0, 0.8]))
+    c = pair.chart((0.02, 1.2, 6), LOG[1], threads=2, alpha_scale="log", beta_scale="log")
+    assert out.axis_scales == ("log", "log")
+    for name in ("alpha", "beta", "trace", "stable", "kind", "status"):
+        assert bits(out.grid(name), c[name]), name
+    assert bits(out.axes[0], c.alpha) and bits(out.axes[1], c.beta)
+
+
+def test_log_scale_refused():
+    with pytest.raises(ValueError, match="alpha_scale must be 'linear' or 'log', got 'logarithmic'"):
+        hillstab.chart((0.1, 1.0, 3), (0.1, 1.0, 3), model="mathieu", alpha_scale="logarithmic")
+    with pytest.raises(ValueError, match="a log beta axis needs beta_min and beta_max in"):
+        hillstab.chart((0.1, 1.0, 3), (0.0, 1.0, 3), model="mathieu", beta_scale="log")
+    pair = hillstab.System(mass=np.diag([1.0, 0.64]), b=[[1.1, -0.1], [-0.1, 0.9]], cos=-np.diag([1.0, 0.8]))
+    with pytest.raises(ValueError, match="a log alpha axis needs"):
+        pair.chart((-1.0, 1.0, 3), (0.1, 1.0, 3), alpha_scale="log")
+    with pytest.raises(ValueError, match="beta_scale must be 'linear' or 'log'"):
+        pair.chart((0.1, 1.0, 3), (0.1, 1.0, 3), beta_scale=None)

@@ -16,6 +16,9 @@ module test_capi_batch
    use hillstab_interop_capi_curves, only: hillstab_c_transition_curves
    use hillstab_interop_capi_scene, only: hillstab_c_run_scene
    use hillstab_testing
+   use hillstab_core_error, only: error_t
+   use hillstab_test_files, only: run_text_scene
+   use hillstab_test_scratch, only: padded, scratch_prefix, read_lines, delete_file
    implicit none
    private
    public :: collect_capi_batch
@@ -30,6 +33,7 @@ contains
          new_unittest("model_handles", model_handles), &
          new_unittest("points_match_per_point", points_match_per_point), &
          new_unittest("chart_matches_points", chart_matches_points), &
+         new_unittest("log_chart_equals_task_file", log_chart_equals_task_file), &
          new_unittest("threads_change_nothing", threads_change_nothing), &
          new_unittest("bad_input_untouched", bad_input_untouched), &
          new_unittest("physical_units", physical_units), &
@@ -202,6 +206,81 @@ contains
       call check(ctx, all(pv(value_error_estimate, :) == -1.0_wp), "segments give no estimate")
       call hillstab_c_model_free(model)
    end subroutine chart_matches_points
+
+   !> `hillstab_chart_scaled` over log axes against task `chart` with `alpha_scale`,
+   !> `beta_scale` = 'log': the axes and S of every line to the bit; with both axes linear it
+   !> is `hillstab_chart` to the bit; a bad scale code or a log axis reaching 0 is refused,
+   !> the outputs untouched.
+   subroutine log_chart_equals_task_file(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer, parameter :: na = 5, nb = 5
+      real(c_double) :: alphas(na), betas(nb), values(0:nv - 1, nb, na), linear(0:nv - 1, nb, na)
+      real(c_double) :: alphas2(na), betas2(nb)
+      integer(c_int) :: status(nb, na), status2(nb, na), code
+      type(c_ptr) :: model
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written
+      character(len=1024), allocatable :: lines(:)
+      real(wp) :: row(3)
+      integer :: i, j, k, ios
+      logical :: same
+      model = new_handle(ctx, "elastic")
+      code = hillstab_c_chart_scaled(model, 0.02_c_double, 9.5_c_double, int(na, c_size_t), 1_c_int, 0.01_c_double, &
+         100.0_c_double, int(nb, c_size_t), 1_c_int, 0.0_c_double, int(method_auto, c_int), 2_c_int, 1_c_int, &
+         1.0e-10_c_double, int(need_trace, c_int), 0_c_int, 0_c_int, alphas, betas, values, status)
+      call check(ctx, code == 0 .and. all(status == 0), "log chart computed: "//last_message())
+      call run_text_scene("capi_log", [padded("&scene columns = 'alpha beta S', output = '"// &
+         scratch_prefix("capi_log")//"' /"), padded("&chart alpha_min = 0.02, alpha_max = 9.5, n_alpha = 5, "// &
+         "alpha_scale = 'log', beta_min = 0.01, beta_max = 100, n_beta = 5, beta_scale = 'log' /")], error, written)
+      call check(ctx, .not. allocated(error), "task chart runs")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call delete_file(written)
+      k = 0
+      same = .true.
+      do i = 1, na
+         do j = 1, nb
+            do
+               k = k + 1
+               if (k > size(lines)) exit
+               if (lines(k)(1:1) /= "#" .and. len_trim(lines(k)) > 0) exit
+            end do
+            if (k > size(lines)) then
+               same = .false.
+               exit
+            end if
+            read (lines(k), *, iostat=ios) row
+            same = same .and. ios == 0 .and. row(1) == alphas(i) .and. row(2) == betas(j) .and. &
+                   row(3) == values(value_trace, j, i)
+         end do
+      end do
+      call check(ctx, same, "the task's file: alpha, beta and S to the bit")
+      call check(ctx, alphas(1) == 0.02_wp .and. alphas(na) == 9.5_wp .and. betas(1) == 0.01_wp .and. &
+                 betas(nb) == 100.0_wp, "the ends exact")
+      call check(ctx, betas(2), 0.1_wp, rel=4.0e-16_wp, message="a geometric beta axis, a decade a step")
+      code = hillstab_c_chart_scaled(model, 0.0_c_double, 9.8_c_double, int(na, c_size_t), 0_c_int, -2.0_c_double, &
+         12.0_c_double, int(nb, c_size_t), 0_c_int, 0.0_c_double, int(method_auto, c_int), 2_c_int, 1_c_int, &
+         1.0e-10_c_double, int(need_trace, c_int), 0_c_int, 0_c_int, alphas, betas, values, status)
+      code = hillstab_c_chart(model, 0.0_c_double, 9.8_c_double, int(na, c_size_t), -2.0_c_double, 12.0_c_double, &
+         int(nb, c_size_t), 0.0_c_double, int(method_auto, c_int), 2_c_int, 1_c_int, 1.0e-10_c_double, &
+         int(need_trace, c_int), 0_c_int, 0_c_int, alphas2, betas2, linear, status2)
+      call check(ctx, all(alphas == alphas2) .and. all(betas == betas2) .and. all(values == linear) .and. &
+                 all(status == status2), "linear scales: hillstab_chart to the bit")
+      values = -7.0_wp
+      alphas = -7.0_wp
+      code = hillstab_c_chart_scaled(model, 0.0_c_double, 9.5_c_double, int(na, c_size_t), 1_c_int, 0.01_c_double, &
+         100.0_c_double, int(nb, c_size_t), 1_c_int, 0.0_c_double, int(method_auto, c_int), 2_c_int, 1_c_int, &
+         1.0e-10_c_double, int(need_trace, c_int), 0_c_int, 0_c_int, alphas, betas, values, status)
+      call check(ctx, code == err_invalid_parameter .and. index(last_message(), "a log alpha axis needs") > 0, &
+                 "log alpha from 0 refused: "//last_message())
+      code = hillstab_c_chart_scaled(model, 0.5_c_double, 9.5_c_double, int(na, c_size_t), 0_c_int, 0.01_c_double, &
+         100.0_c_double, int(nb, c_size_t), 2_c_int, 0.0_c_double, int(method_auto, c_int), 2_c_int, 1_c_int, &
+         1.0e-10_c_double, int(need_trace, c_int), 0_c_int, 0_c_int, alphas, betas, values, status)
+      call check(ctx, code == err_invalid_parameter .and. index(last_message(), "beta_scale must be 0 (linear) or 1 "// &
+                 "(log), got 2") > 0, "scale code 2 refused: "//last_message())
+      call check(ctx, all(values == -7.0_wp) .and. all(alphas == -7.0_wp), "outputs untouched")
+      call hillstab_c_model_free(model)
+   end subroutine log_chart_equals_task_file
 
    !> One, two and three threads: the same bits (a chart of 6 rows runs whole rows on one
    !> thread and chunks of rows on two and three).

@@ -43,6 +43,7 @@ contains
       suite = new_testsuite("capi_system_batch", [ &
          new_unittest("points_match_one_by_one", points_match_one_by_one), &
          new_unittest("equal_task_files", equal_task_files), &
+         new_unittest("log_chart_equals_task_file", log_chart_equals_task_file), &
          new_unittest("bad_input_named", bad_input_named), &
          new_unittest("equations_equal_task_files", equations_equal_task_files), &
          new_unittest("equations_bad_input_named", equations_bad_input_named)])
@@ -278,6 +279,61 @@ contains
       call delete_file(points)
       call hillstab_c_system_free(system)
    end subroutine equal_task_files
+
+   !> `hillstab_system_chart_scaled` over log axes against task chart with `alpha_scale`,
+   !> `beta_scale` = 'log': every number of every line to the bit; linear scales are
+   !> `hillstab_system_chart`; a log axis from 0 or an unknown scale refused by name.
+   subroutine log_chart_equals_task_file(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(c_ptr) :: system
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out, scene, written, message
+      real(c_double), target :: a(5), b(7), grid(16, 7, 5), a2(5), b2(7), grid2(16, 7, 5)
+      integer(c_int), target :: grid_status(7, 5), grid_status2(7, 5)
+      real(wp), allocatable :: file(:, :)
+      system = c_system(ctx)
+      out = scratch_prefix("capi_sys_log")
+      scene = out//".nml"
+      call write_file(scene, [padded("&scene task = 'chart', model = 'system', method = 'auto', tolerance = 1e-10, "// &
+                              "epsilon = 0.03, output = '"//out//"' /"), padded(group), &
+                              padded("&chart alpha_min = 0.01, alpha_max = 1.3, n_alpha = 5, alpha_scale = 'log', "// &
+                                     "beta_min = 0.02, beta_max = 2.6, n_beta = 7, beta_scale = 'log' /")])
+      call run_scene_file(scene, .true., error, written)
+      call check(ctx, .not. allocated(error), "task chart runs")
+      if (allocated(error)) return
+      file = numbers(written, 16)
+      call delete_file(written)
+      call delete_file(scene)
+      call check(ctx, hillstab_c_system_chart_scaled(system, 0.01_c_double, 1.3_c_double, 5_c_size_t, 1_c_int, &
+                 0.02_c_double, 2.6_c_double, 7_c_size_t, 1_c_int, 0.03_c_double, 0_c_int, 1.0e-10_c_double, 2_c_int, &
+                 c_loc(a), c_loc(b), c_loc(grid), c_loc(grid_status)) == 0, "log chart: "//last_message())
+      call check(ctx, size(file, 2) == 35, "35 lines")
+      if (size(file, 2) == 35) call check(ctx, all(file == reshape(grid, [16, 35])), "the chart file's numbers")
+      call check(ctx, a(1) == 0.01_wp .and. a(5) == 1.3_wp .and. b(1) == 0.02_wp .and. b(7) == 2.6_wp, "the ends")
+      call check(ctx, all(a(2:) > a(:4)) .and. abs(a(3)/a(2) - a(2)/a(1)) < 1.0e-14_wp, "a geometric alpha axis")
+      call check(ctx, hillstab_c_system_chart_scaled(system, 0.1_c_double, 1.3_c_double, 5_c_size_t, 0_c_int, &
+                 0.2_c_double, 2.6_c_double, 7_c_size_t, 0_c_int, 0.03_c_double, 0_c_int, 1.0e-10_c_double, 2_c_int, &
+                 c_loc(a), c_loc(b), c_loc(grid), c_loc(grid_status)) == 0, "linear: "//last_message())
+      call check(ctx, hillstab_c_system_chart(system, 0.1_c_double, 1.3_c_double, 5_c_size_t, 0.2_c_double, &
+                 2.6_c_double, 7_c_size_t, 0.03_c_double, 0_c_int, 1.0e-10_c_double, 2_c_int, c_loc(a2), c_loc(b2), &
+                 c_loc(grid2), c_loc(grid_status2)) == 0, "hillstab_system_chart: "//last_message())
+      call check(ctx, all(a == a2) .and. all(b == b2) .and. all(grid == grid2) .and. all(grid_status == grid_status2), &
+                 "linear scales: hillstab_system_chart to the bit")
+      grid = 7.0_wp
+      call check(ctx, hillstab_c_system_chart_scaled(system, 0.0_c_double, 1.3_c_double, 5_c_size_t, 1_c_int, &
+                 0.2_c_double, 2.6_c_double, 7_c_size_t, 0_c_int, 0.0_c_double, 0_c_int, 1.0e-10_c_double, 0_c_int, &
+                 c_loc(a), c_loc(b), c_loc(grid), c_loc(grid_status)) == err_invalid_parameter, "log alpha from 0")
+      message = last_message()
+      call check(ctx, index(message, "hillstab_system_chart_scaled: a log alpha axis needs") == 1, message)
+      call check(ctx, hillstab_c_system_chart_scaled(system, 0.1_c_double, 1.3_c_double, 5_c_size_t, 0_c_int, &
+                 0.2_c_double, 2.6_c_double, 7_c_size_t, -1_c_int, 0.0_c_double, 0_c_int, 1.0e-10_c_double, 0_c_int, &
+                 c_loc(a), c_loc(b), c_loc(grid), c_loc(grid_status)) == err_invalid_parameter, "scale -1")
+      message = last_message()
+      call check(ctx, index(message, "hillstab_system_chart_scaled: beta_scale must be 0 (linear) or 1 (log)") == 1, &
+                 message)
+      call check(ctx, all(grid == 7.0_wp), "the chart untouched")
+      call hillstab_c_system_free(system)
+   end subroutine log_chart_equals_task_file
 
    !> Bad input: the argument and the point named, nothing written.
    subroutine bad_input_named(ctx)

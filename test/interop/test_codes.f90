@@ -20,6 +20,7 @@ module test_codes
    use hillstab_interop_capi, only: version_numbers
    use hillstab_hill_coefficient, only: sampling_count, sampling_name, sampling_from_name
    use hillstab_integrate_monodromy, only: method_table, method_name, method_from_name
+   use hillstab_batch_scene_group_chart, only: scale_linear, scale_log
    use hillstab_testing
    use hillstab_hill_models, only: model_count, model_names
    use hillstab_core_text, only: name_position, integer_text
@@ -325,6 +326,8 @@ contains
       do k = 1, sampling_count
          call add("SAMPLING_"//upper(sampling_name(k)), "", k)
       end do
+      call add("SCALE_LINEAR", "", scale_linear)
+      call add("SCALE_LOG", "", scale_log)
       call add_both("ERR_INVALID_PARAMETER", err_invalid_parameter)
       call add_both("ERR_OVERFLOW", err_overflow)
       call add_both("ERR_INTEGRATION", err_integration)

@@ -55,6 +55,11 @@ contains
          bad_case_t(s//"/ &chart beta_max=nan /", "chart", "beta_max"), &
          bad_case_t(s//"/ &chart alpha_min=inf /", "chart", "alpha_min"), &
          bad_case_t(s//"/ &chart beta_min=-1e400 /", "chart", "beta_min"), &
+         bad_case_t(s//"/ &chart alpha_scale='log' /", "chart", "alpha_min: alpha_scale = 'log' needs alpha_min > 0"), &
+         bad_case_t(s//"/ &chart alpha_min=1, beta_scale='log' /", "chart", "beta_min: beta_scale = 'log' needs"), &
+         bad_case_t(s//"/ &chart alpha_scale='logarithmic' /", "chart", "alpha_scale: must be 'linear' or 'log'"), &
+         bad_case_t(s//"/ &chart beta_scale='lin' /", "chart", "beta_scale"), &
+         bad_case_t(s//"task='boundaries' / &chart beta_min=1, beta_scale='log' /", "chart", "beta_scale: task 'boundaries'"), &
          bad_case_t(s//"epsilon=nan / &chart /", "scene", "epsilon"), &
          bad_case_t(s//"tolerance=inf / &chart /", "scene", "tolerance"), &
          bad_case_t(s//"task='coefficient' / &coefficient alphas=4, nan /", "coefficient", "alphas"), &
@@ -167,6 +172,9 @@ contains
                     "beta_min: must be >= 1.0e-8"), &
          bad_case_t(s//"task='lyapunov' / &series periods=2 / &lyapunov over='points' / "// &
                     "&points file='@DIR@_tinybeta.dat' /", "points", "beta = 1.0e-9, below 1.0e-8"), &
+         bad_case_t(y//"/ &system n=2, cos=1,0,0,1 / &chart beta_scale='log' /", "chart", "beta_min"), &
+         bad_case_t(y//", task='boundaries' / &system n=2, cos=1,0,0,1 / &chart beta_min=1, beta_scale='log' /", "chart", &
+                    "beta_scale"), &
          bad_case_t(y//"/ &system n=2, mass=1,2,2,1, cos=1,0,0,1 / &chart /", "system", "mass: M must be positive"), &
          bad_case_t(y//"/ &system n=2, mass=1,0.5,0,1, cos=1,0,0,1 / &chart /", "system", "mass: M must be symmetric"), &
          bad_case_t(y//"/ &system n=2, gyroscopic=0,1,1,0, cos=1,0,0,1 / &chart /", "system", "gyroscopic: G must be skew"), &

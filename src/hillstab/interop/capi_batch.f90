@@ -7,7 +7,8 @@
 !>
 !> - `hillstab_points`: the points (α_j, β_j, ε_j) one by one, as task `points` computes
 !>   them (each point a batch of one, `floquet_from_trace`);
-!> - `hillstab_chart`: the grid of task `chart` (`grid_value`), row by row as task `chart`
+!> - `hillstab_chart`, `hillstab_chart_scaled`: the grid of task `chart` (`grid_alpha`,
+!>   `grid_beta`; linear or log axes), row by row as task `chart`
 !>   computes it: with at least four rows a thread, whole rows in parallel; with fewer, each
 !>   row in parallel chunks sharing the meshes `prepare_batch` makes for it; verdicts only
 !>   (`floquet_verdict`) when only the verdicts are needed (HILLSTAB_NEED_VERDICT);
@@ -42,7 +43,7 @@ module hillstab_interop_capi_batch
    use hillstab_hill_units, only: physical_t, physical_beta, physical_epsilon, check_physical
    use hillstab_integrate_monodromy, only: method_t, monodromy_trace, monodromy_trace_batch, batch_plan_t, &
       prepare_batch, method_name, method_table, need_verdict, need_growth, need_trace
-   use hillstab_batch_scene_group_chart, only: grid_value
+   use hillstab_batch_scene_group_chart, only: chart_grid_t, grid_alpha, grid_beta, scale_linear, scale_refusal
    use hillstab_batch_scene_checks, only: max_grid_count
    use hillstab_batch_tasks_chart_columns, only: clamp_magnitude, log10_floor
    use hillstab_interop_outcome, only: record_outcome
@@ -50,7 +51,7 @@ module hillstab_interop_capi_batch
    use hillstab_interop_capi_models, only: model_handle_t, handle_model
    implicit none
    private
-   public :: hillstab_c_points, hillstab_c_chart, hillstab_c_physical
+   public :: hillstab_c_points, hillstab_c_chart, hillstab_c_chart_scaled, hillstab_c_physical
    public :: value_trace, value_log_abs_trace, value_log10_abs_trace, value_overflow, value_stable, &
       value_stable_paper, value_lambda_max, value_log_modulus_max, value_log_modulus_min, value_exponent, &
       value_error_estimate, value_count
@@ -249,9 +250,10 @@ contains
    !> method, int n_segments, int sampling, double tolerance, int need, int paper, int
    !> threads, double *alpha, double *beta, double *values, int *status)`: the chart of task
    !> `chart` over n_alpha values of α from alpha_min to alpha_max and n_beta values of β
-   !> (both ends included), returned in `alpha`, `beta`, `values[i][j][HILLSTAB_VALUE_*]`
-   !> and `status[i][j]` (α index i outer). With need = HILLSTAB_NEED_VERDICT only the
-   !> verdicts are computed (the other values 0).
+   !> (both ends included, equally spaced), returned in `alpha`, `beta`,
+   !> `values[i][j][HILLSTAB_VALUE_*]` and `status[i][j]` (α index i outer). With need =
+   !> HILLSTAB_NEED_VERDICT only the verdicts are computed (the other values 0).
+   !> `hillstab_chart_scaled` with both axes linear.
    function hillstab_c_chart(model, alpha_min, alpha_max, n_alpha, beta_min, beta_max, n_beta, epsilon, method, &
                              n_segments, sampling, tolerance, need, paper, threads, alphas, betas, values, status) &
       result(info) bind(C, name="hillstab_chart")
@@ -260,6 +262,41 @@ contains
       integer(c_size_t), value, intent(in) :: n_alpha  !! number of α values (rows)
       real(c_double), value, intent(in) :: beta_min, beta_max  !! first and last β
       integer(c_size_t), value, intent(in) :: n_beta  !! number of β values (per row)
+      real(c_double), value, intent(in) :: epsilon  !! damping ε ≥ 0
+      !> HILLSTAB_METHOD_*; pieces and HILLSTAB_SAMPLING_* (segments)
+      integer(c_int), value, intent(in) :: method, n_segments, sampling
+      real(c_double), value, intent(in) :: tolerance  !! target error on S (exact methods)
+      integer(c_int), value, intent(in) :: need  !! HILLSTAB_NEED_VERDICT, _GROWTH or _TRACE
+      integer(c_int), value, intent(in) :: paper  !! 1: the paper's verdict is wanted too
+      integer(c_int), value, intent(in) :: threads  !! threads (0: the OpenMP default)
+      real(c_double), intent(inout) :: alphas(*)  !! receives the n_alpha values of α
+      real(c_double), intent(inout) :: betas(*)  !! receives the n_beta values of β
+      !> the values of each point, (value, β index, α index) in Fortran order
+      real(c_double), intent(inout) :: values(0:value_count - 1, row_extent(n_beta), *)
+      integer(c_int), intent(inout) :: status(row_extent(n_beta), *)  !! each point's status
+      integer(c_int) :: info
+      info = hillstab_c_chart_scaled(model, alpha_min, alpha_max, n_alpha, int(scale_linear, c_int), beta_min, &
+                                     beta_max, n_beta, int(scale_linear, c_int), epsilon, method, n_segments, &
+                                     sampling, tolerance, need, paper, threads, alphas, betas, values, status)
+   end function hillstab_c_chart
+
+   !> `int hillstab_chart_scaled(const hillstab_model *model, double alpha_min, double
+   !> alpha_max, size_t n_alpha, int alpha_scale, double beta_min, double beta_max, size_t
+   !> n_beta, int beta_scale, double epsilon, int method, int n_segments, int sampling, double
+   !> tolerance, int need, int paper, int threads, double *alpha, double *beta, double
+   !> *values, int *status)`: `hillstab_chart` with the scale of each axis,
+   !> HILLSTAB_SCALE_LINEAR (0: equally spaced) or HILLSTAB_SCALE_LOG (1: geometric, both ends
+   !> in (0, 1e300]), the values of task `chart` with `&chart alpha_scale, beta_scale`.
+   function hillstab_c_chart_scaled(model, alpha_min, alpha_max, n_alpha, alpha_scale, beta_min, beta_max, n_beta, &
+                                    beta_scale, epsilon, method, n_segments, sampling, tolerance, need, paper, &
+                                    threads, alphas, betas, values, status) &
+      result(info) bind(C, name="hillstab_chart_scaled")
+      type(c_ptr), value, intent(in) :: model  !! the model handle
+      real(c_double), value, intent(in) :: alpha_min, alpha_max  !! first and last α
+      integer(c_size_t), value, intent(in) :: n_alpha  !! number of α values (rows)
+      real(c_double), value, intent(in) :: beta_min, beta_max  !! first and last β
+      integer(c_size_t), value, intent(in) :: n_beta  !! number of β values (per row)
+      integer(c_int), value, intent(in) :: alpha_scale, beta_scale  !! HILLSTAB_SCALE_LINEAR or _LOG
       real(c_double), value, intent(in) :: epsilon  !! damping ε ≥ 0
       !> HILLSTAB_METHOD_*; pieces and HILLSTAB_SAMPLING_* (segments)
       integer(c_int), value, intent(in) :: method, n_segments, sampling
@@ -278,6 +315,7 @@ contains
       type(error_t), allocatable :: error, cause
       type(method_t) :: m
       real(wp), allocatable :: grid_alphas(:), grid_betas(:)
+      type(chart_grid_t) :: grid
       type(batch_plan_t) :: plan
       logical :: wants_paper
       integer :: i, j, na, nb, nt, c, chunk, n_chunks, first, last
@@ -302,9 +340,14 @@ contains
          nb = int(n_beta)
          if (.not. all(ieee_is_finite([alpha_min, alpha_max, beta_min, beta_max]))) then
             call set_error(error, err_invalid_parameter, "the grid's ends must be finite")
+         else if (len(scale_refusal("alpha", int(alpha_scale), alpha_min, alpha_max)) > 0) then
+            call set_error(error, err_invalid_parameter, scale_refusal("alpha", int(alpha_scale), alpha_min, alpha_max))
+         else if (len(scale_refusal("beta", int(beta_scale), beta_min, beta_max)) > 0) then
+            call set_error(error, err_invalid_parameter, scale_refusal("beta", int(beta_scale), beta_min, beta_max))
          else
-            grid_alphas = [(grid_value(alpha_min, alpha_max, na, i), i = 1, na)]
-            grid_betas = [(grid_value(beta_min, beta_max, nb, j), j = 1, nb)]
+            grid = chart_grid_t(alpha_min, alpha_max, na, beta_min, beta_max, nb, int(alpha_scale), int(beta_scale))
+            grid_alphas = [(grid_alpha(grid, i), i = 1, na)]
+            grid_betas = [(grid_beta(grid, j), j = 1, nb)]
          end if
       end if
       if (.not. allocated(error)) then
@@ -357,7 +400,7 @@ contains
          end do
       end if
       info = 0
-   end function hillstab_c_chart
+   end function hillstab_c_chart_scaled
 
    !> err_invalid_parameter when a model that carries its own damping (an equation) is
    !> given a damping ε ≠ 0 as well.

@@ -30,7 +30,7 @@ module hillstab_interop_capi_system_batch
    use hillstab_core_text, only: integer_text, real_text
    use hillstab_hill_system, only: system_form_t, prepare_system, check_system_point
    use hillstab_integrate_system, only: system_method_t
-   use hillstab_batch_scene_group_chart, only: grid_value
+   use hillstab_batch_scene_group_chart, only: chart_grid_t, grid_alpha, grid_beta, scale_linear, scale_refusal
    use hillstab_batch_scene_checks, only: max_grid_count
    use hillstab_batch_tasks_system, only: system_values, system_row_values, system_column_names, n_fixed
    use hillstab_interop_sizes, only: count_refusal
@@ -41,7 +41,7 @@ module hillstab_interop_capi_system_batch
    implicit none
    private
    public :: hillstab_c_system_column_count, hillstab_c_system_column_name, hillstab_c_system_points, &
-      hillstab_c_system_chart
+      hillstab_c_system_chart, hillstab_c_system_chart_scaled
 
 contains
 
@@ -161,9 +161,9 @@ contains
    !> alpha_max, size_t n_alpha, double beta_min, double beta_max, size_t n_beta, double
    !> epsilon, int method, double tolerance, int threads, double *alpha, double *beta, double
    !> *values, int *status)`: the chart of task `chart` over n_alpha values of α and n_beta
-   !> values of β (both ends included), returned in `alpha`, `beta`, `values[i][j][k]` and
-   !> `status[i][j]` (α index i outer), the rows on `threads` threads, the points of a row
-   !> sharing their nodes as the task's do.
+   !> values of β (both ends included, equally spaced), returned in `alpha`, `beta`,
+   !> `values[i][j][k]` and `status[i][j]` (α index i outer), the rows on `threads` threads,
+   !> the points of a row sharing their nodes as the task's do.
    function hillstab_c_system_chart(system, alpha_min, alpha_max, n_alpha, beta_min, beta_max, n_beta, epsilon, &
                                     method, tolerance, threads, alphas, betas, values, status) result(code) &
       bind(C, name="hillstab_system_chart")
@@ -181,7 +181,59 @@ contains
       type(c_ptr), value, intent(in) :: values  !! receives n_alpha × n_beta × (14 + dof) doubles
       type(c_ptr), value, intent(in) :: status  !! receives n_alpha × n_beta ints
       integer(c_int) :: code
-      character(len=*), parameter :: where = "hillstab_system_chart"
+      code = system_chart("hillstab_system_chart", system, alpha_min, alpha_max, n_alpha, scale_linear, beta_min, &
+                          beta_max, n_beta, scale_linear, epsilon, method, tolerance, threads, alphas, betas, values, &
+                          status)
+   end function hillstab_c_system_chart
+
+   !> `int hillstab_system_chart_scaled(const hillstab_system *system, double alpha_min,
+   !> double alpha_max, size_t n_alpha, int alpha_scale, double beta_min, double beta_max,
+   !> size_t n_beta, int beta_scale, double epsilon, int method, double tolerance, int threads,
+   !> double *alpha, double *beta, double *values, int *status)`: `hillstab_system_chart` with
+   !> the scale of each axis, HILLSTAB_SCALE_LINEAR (0) or HILLSTAB_SCALE_LOG (1: geometric,
+   !> both ends in (0, 1e300]), the values of task `chart` with `&chart alpha_scale, beta_scale`.
+   function hillstab_c_system_chart_scaled(system, alpha_min, alpha_max, n_alpha, alpha_scale, beta_min, beta_max, &
+                                           n_beta, beta_scale, epsilon, method, tolerance, threads, alphas, betas, &
+                                           values, status) result(code) bind(C, name="hillstab_system_chart_scaled")
+      type(c_ptr), value, intent(in) :: system  !! the handle
+      real(c_double), value, intent(in) :: alpha_min, alpha_max  !! first and last α
+      integer(c_size_t), value, intent(in) :: n_alpha  !! number of α values (rows)
+      real(c_double), value, intent(in) :: beta_min, beta_max  !! first and last β
+      integer(c_size_t), value, intent(in) :: n_beta  !! number of β values (per row)
+      integer(c_int), value, intent(in) :: alpha_scale, beta_scale  !! HILLSTAB_SCALE_LINEAR or _LOG
+      real(c_double), value, intent(in) :: epsilon  !! damping ε ≥ 0
+      integer(c_int), value, intent(in) :: method  !! HILLSTAB_METHOD_AUTO, _MAGNUS4, _MAGNUS6, _RK or _GSL
+      real(c_double), value, intent(in) :: tolerance  !! the target error of Φ
+      integer(c_int), value, intent(in) :: threads  !! threads (0: the OpenMP default)
+      type(c_ptr), value, intent(in) :: alphas  !! receives the n_alpha values of α
+      type(c_ptr), value, intent(in) :: betas   !! receives the n_beta values of β
+      type(c_ptr), value, intent(in) :: values  !! receives n_alpha × n_beta × (14 + dof) doubles
+      type(c_ptr), value, intent(in) :: status  !! receives n_alpha × n_beta ints
+      integer(c_int) :: code
+      code = system_chart("hillstab_system_chart_scaled", system, alpha_min, alpha_max, n_alpha, int(alpha_scale), &
+                          beta_min, beta_max, n_beta, int(beta_scale), epsilon, method, tolerance, threads, alphas, &
+                          betas, values, status)
+   end function hillstab_c_system_chart_scaled
+
+   !> The chart of `hillstab_system_chart_scaled`, its messages naming `where`.
+   function system_chart(where, system, alpha_min, alpha_max, n_alpha, alpha_scale, beta_min, beta_max, n_beta, &
+                         beta_scale, epsilon, method, tolerance, threads, alphas, betas, values, status) result(code)
+      character(len=*), intent(in) :: where  !! the entry point called
+      type(c_ptr), intent(in) :: system  !! the handle
+      real(c_double), value, intent(in) :: alpha_min, alpha_max  !! first and last α
+      integer(c_size_t), value, intent(in) :: n_alpha  !! number of α values (rows)
+      real(c_double), value, intent(in) :: beta_min, beta_max  !! first and last β
+      integer(c_size_t), value, intent(in) :: n_beta  !! number of β values (per row)
+      integer, intent(in) :: alpha_scale, beta_scale  !! scale_linear or scale_log
+      real(c_double), value, intent(in) :: epsilon  !! damping ε ≥ 0
+      integer(c_int), value, intent(in) :: method  !! HILLSTAB_METHOD_AUTO, _MAGNUS4, _MAGNUS6, _RK or _GSL
+      real(c_double), value, intent(in) :: tolerance  !! the target error of Φ
+      integer(c_int), value, intent(in) :: threads  !! threads (0: the OpenMP default)
+      type(c_ptr), value, intent(in) :: alphas  !! receives the n_alpha values of α
+      type(c_ptr), value, intent(in) :: betas   !! receives the n_beta values of β
+      type(c_ptr), value, intent(in) :: values  !! receives n_alpha × n_beta × (14 + dof) doubles
+      type(c_ptr), value, intent(in) :: status  !! receives n_alpha × n_beta ints
+      integer(c_int) :: code
       type(system_handle_t), pointer :: handle
       type(error_t), allocatable :: error
       type(system_form_t) :: form
@@ -190,6 +242,7 @@ contains
       character(len=400), allocatable :: failures(:)
       integer, allocatable :: n_failed(:)
       integer :: i, j, rows, columns, first
+      type(chart_grid_t) :: grid
       call start(where, system, n_alpha, method, tolerance, threads, handle, rows, error)
       if (.not. allocated(error)) then
          if (len(count_refusal("n_beta", n_beta, max_grid_count)) > 0) then
@@ -197,6 +250,17 @@ contains
          else if (int(n_alpha, c_size_t)*int(n_beta, c_size_t) > int(max_grid_count, c_size_t)) then
             call set_error(error, err_invalid_parameter, where//": n_alpha * n_beta exceeds the limit of "// &
                integer_text(max_grid_count)//" points")
+         end if
+      end if
+      if (.not. allocated(error)) then
+         if (.not. all(ieee_is_finite([alpha_min, alpha_max, beta_min, beta_max]))) then
+            continue  ! named by the corners' check below
+         else if (len(scale_refusal("alpha", alpha_scale, alpha_min, alpha_max)) > 0) then
+            call set_error(error, err_invalid_parameter, where//": "//scale_refusal("alpha", alpha_scale, alpha_min, &
+               alpha_max))
+         else if (len(scale_refusal("beta", beta_scale, beta_min, beta_max)) > 0) then
+            call set_error(error, err_invalid_parameter, where//": "//scale_refusal("beta", beta_scale, beta_min, &
+               beta_max))
          end if
       end if
       call check_output(where, "alpha", alphas, error)
@@ -222,8 +286,9 @@ contains
          call c_f_pointer(betas, b, [columns])
          call c_f_pointer(values, v, [n_fixed + handle%system%dof(), columns, rows])
          call c_f_pointer(status, s, [columns, rows])
-         a = [(grid_value(alpha_min, alpha_max, rows, i), i=1, rows)]
-         b = [(grid_value(beta_min, beta_max, columns, j), j=1, columns)]
+         grid = chart_grid_t(alpha_min, alpha_max, rows, beta_min, beta_max, columns, alpha_scale, beta_scale)
+         a = [(grid_alpha(grid, i), i=1, rows)]
+         b = [(grid_beta(grid, j), j=1, columns)]
          allocate (failures(rows), n_failed(rows))
          !$omp parallel do schedule(dynamic, 1) num_threads(thread_count(threads)) default(shared) private(i)
          do i = 1, rows
@@ -240,7 +305,7 @@ contains
          end if
       end if
       code = outcome_status(error)
-   end function hillstab_c_system_chart
+   end function system_chart
 
    !> A run of points of `hillstab_system_points`, each computed alone, the system prepared
    !> again where a point's damping differs from the one before (a system valid at one ε is

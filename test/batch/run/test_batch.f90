@@ -103,6 +103,10 @@ contains
          scratch_prefix("seg")//"' /"), &
          padded("&chart alpha_min=0, alpha_max=9, n_alpha=17, beta_min=-2, beta_max=12, n_beta=1 /")], scene)
       call compare_with_serial(ctx, scene, "segments chart, one column")
+      call scene_from("batch_log", [padded("&scene task='chart', output='"//scratch_prefix("log")//"' /"), &
+         padded("&chart alpha_min=0.01, alpha_max=9.8, n_alpha=9, alpha_scale='log', beta_min=0.01, beta_max=100, "// &
+                "n_beta=37, beta_scale='log' /")], scene)
+      call compare_with_serial(ctx, scene, "log chart, 9 rows")
    end subroutine chart_equals_serial
 
    subroutine points_equal_serial(ctx)
@@ -145,6 +149,11 @@ contains
          scratch_prefix("sys_many")//"' /"), system_group(), &
          padded("&chart alpha_min=0, alpha_max=1.2, n_alpha=19, beta_min=0, beta_max=3, n_beta=13 /")], scene)
       call compare_with_serial(ctx, scene, "damped system chart, 19 rows")
+      call scene_from("batch_sys_log", [padded("&scene task='chart', model='system', output='"// &
+         scratch_prefix("sys_log")//"' /"), system_group(), &
+         padded("&chart alpha_min=0.01, alpha_max=1.2, n_alpha=11, alpha_scale='log', beta_min=0.05, beta_max=3, "// &
+                "n_beta=13, beta_scale='log' /")], scene)
+      call compare_with_serial(ctx, scene, "log system chart, 11 rows")
    end subroutine system_chart_equals_serial
 
    !> A system points list longer than a unit: the same lines from the task's own loop

@@ -2,7 +2,7 @@
 !> output headers, exact real-to-text round trips, and every kind of bad input
 !> (each must give an error naming the file, the group and the variable).
 module test_scene
-   use hillstab_core_kinds, only: wp, pi2
+   use hillstab_core_kinds, only: wp, pi2, int64
    use hillstab_core_error, only: error_t, err_input
    use hillstab_core_text, only: real_text, read_text_line, integer_text
    use hillstab_hill_coefficient, only: sampling_endpoint, sampling_average
@@ -11,7 +11,8 @@ module test_scene
    use hillstab_batch_run_read, only: read_scene
    use hillstab_batch_scene_file, only: max_line_length
    use hillstab_batch_scene_declaration, only: group_t
-   use hillstab_batch_scene_group_chart, only: chart_grid_t, grid_value
+   use hillstab_batch_scene_group_chart, only: chart_grid_t, grid_value, grid_alpha, grid_beta, grid_point, scale_log, &
+      scale_linear
    use hillstab_batch_tasks_chart, only: chart_task_t
    use hillstab_batch_tasks_points, only: points_task_t
    use hillstab_batch_tasks_coefficient, only: coefficient_task_t
@@ -54,7 +55,9 @@ contains
          new_unittest("start_angle_in_degrees", start_angle_in_degrees), &
          new_unittest("foreign_groups_warned", foreign_groups_warned), &
          new_unittest("implausible_spring_warned", implausible_spring_warned), &
-         new_unittest("grid_near_the_largest_double", grid_near_the_largest_double)])
+         new_unittest("grid_near_the_largest_double", grid_near_the_largest_double), &
+         new_unittest("log_grid_values", log_grid_values), &
+         new_unittest("log_grid_read_and_echoed", log_grid_read_and_echoed)])
    end function collect_scene
 
    !> The grid of a chart scene (a zero grid for another task).
@@ -772,4 +775,71 @@ contains
       call check(ctx, grid_value(-2.0_wp, 12.0_wp, 200, 57) == -2.0_wp + 14.0_wp*56.0_wp/199.0_wp, &
                  "an ordinary grid to the bit")
    end subroutine grid_near_the_largest_double
+
+   !> A log axis: n geometric values from min to max, both ends exact, a constant ratio
+   !> (to round-off), ascending; decades that the spacing hits are the powers of ten; one
+   !> value is min; `grid_point` and `grid_alpha`, `grid_beta` agree; linear unchanged.
+   subroutine log_grid_values(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(chart_grid_t) :: grid
+      real(wp) :: v(7), w(50), ratio
+      integer :: i
+      v = [(grid_value(1.0e-3_wp, 1.0e3_wp, 7, i, geometric=.true.), i=1, 7)]
+      call check(ctx, v(1) == 1.0e-3_wp .and. v(7) == 1.0e3_wp, "the ends exact")
+      do i = 2, 6
+         call check(ctx, v(i), 10.0_wp**(i - 4), rel=2.0_wp*epsilon(1.0_wp), abs=0.0_wp)
+      end do
+      call check(ctx, v(4) == 1.0_wp .and. v(5) == 10.0_wp, "decades exact: "//real_text(v(4))//", "//real_text(v(5)))
+      w = [(grid_value(0.3_wp, 9.7_wp, 50, i, geometric=.true.), i=1, 50)]
+      call check(ctx, w(1) == 0.3_wp .and. w(50) == 9.7_wp, "the ends exact (no decades)")
+      call check(ctx, all(w(2:) > w(:49)), "ascending")
+      ratio = (9.7_wp/0.3_wp)**(1.0_wp/49.0_wp)
+      call check(ctx, maxval(abs(w(2:)/w(:49) - ratio)) < 1.0e-13_wp, "geometric: a constant ratio")
+      call check(ctx, grid_value(2.0_wp, 8.0_wp, 1, 1, geometric=.true.) == 2.0_wp, "n = 1: min")
+      call check(ctx, grid_value(2.0_wp, 8.0_wp, 3, 2, geometric=.true.), 4.0_wp, rel=2.0_wp*epsilon(1.0_wp), abs=0.0_wp)
+      grid = chart_grid_t(0.5_wp, 8.0_wp, 5, -2.0_wp, 12.0_wp, 8, scale_log, scale_linear)
+      call check(ctx, grid_alpha(grid, 3) == grid_value(0.5_wp, 8.0_wp, 5, 3, geometric=.true.), "grid_alpha: log")
+      call check(ctx, grid_beta(grid, 4) == grid_value(-2.0_wp, 12.0_wp, 8, 4), "grid_beta: linear")
+      call check(ctx, all(grid_point(grid, 19_int64) == [grid_alpha(grid, 3), grid_beta(grid, 3)]), "grid_point")
+      call check(ctx, grid_value(-2.0_wp, 12.0_wp, 200, 57, geometric=.false.) == -2.0_wp + 14.0_wp*56.0_wp/199.0_wp, &
+                 "linear to the bit")
+   end subroutine log_grid_values
+
+   !> `alpha_scale`, `beta_scale` read (any case) into the grid; the effective scene names a
+   !> log scale and leaves 'linear' out (a scene that names it writes the header of one that
+   !> does not); read back, the effective scene gives the same grid.
+   subroutine log_grid_read_and_echoed(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(scene_t) :: scene, again
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: path, lines(:), plain(:)
+      type(chart_grid_t) :: grid
+      call read_text_scene("logscale", [padded("&scene /"), padded("&chart alpha_min = 0.1, alpha_scale = 'Log', "// &
+         "beta_min = 1, beta_max = 100, beta_scale = 'linear' /")], scene, error, path)
+      call check(ctx, .not. allocated(error), "read")
+      if (allocated(error)) return
+      grid = grid_of(scene)
+      call check(ctx, grid%alpha_scale == scale_log .and. grid%beta_scale == scale_linear, "the scales")
+      lines = scene_namelist(scene)
+      call check(ctx, any(index(lines, "alpha_scale = 'log'") > 0), "alpha_scale = 'log' echoed")
+      call check(ctx, .not. any(index(lines, "beta_scale") > 0), "beta_scale = 'linear' not echoed")
+      call read_text_scene("logscale_again", lines, again, error, path)
+      call check(ctx, .not. allocated(error), "the effective scene reads")
+      if (allocated(error)) return
+      grid = grid_of(again)
+      call check(ctx, grid%alpha_scale == scale_log, "read back: log")
+      call check(ctx, grid%alpha_min == 0.1_wp .and. grid%beta_max == 100.0_wp, "read back: the ends")
+      call read_text_scene("logscale_plain", [padded("&scene /"), padded("&chart alpha_min = 0.1, beta_min = 1, "// &
+         "beta_max = 100 /")], scene, error, path)
+      call check(ctx, .not. allocated(error), "read")
+      if (allocated(error)) return
+      plain = scene_namelist(scene)
+      call read_text_scene("logscale_plain", [padded("&scene /"), padded("&chart alpha_min = 0.1, beta_min = 1, "// &
+         "beta_max = 100, alpha_scale = 'linear', beta_scale = 'LINEAR' /")], scene, error, path)
+      call check(ctx, .not. allocated(error), "read")
+      if (allocated(error)) return
+      lines = scene_namelist(scene)
+      call check(ctx, size(lines) == size(plain), "as many lines")
+      if (size(lines) == size(plain)) call check(ctx, all(lines == plain), "'linear' named: the same effective scene")
+   end subroutine log_grid_read_and_echoed
 end module test_scene

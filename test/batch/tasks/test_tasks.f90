@@ -17,6 +17,7 @@ module test_tasks
       c_getpid, any_temp_file
    use hillstab_test_bad_scenes, only: bad_case_t, bad_cases, bad_case_text, write_bad_points_files, &
       delete_bad_points_files
+   use hillstab_batch_scene_group_chart, only: grid_value
    implicit none
    private
    public :: collect_tasks
@@ -41,6 +42,7 @@ contains
          new_unittest("domain_notes", domain_notes), &
          new_unittest("chosen_columns_and_binary", chosen_columns_and_binary), &
          new_unittest("verdict_chart_matches_full", verdict_chart_matches_full), &
+         new_unittest("log_chart_matches_points", log_chart_matches_points), &
          new_unittest("growth_columns_match_full", growth_columns_match_full), &
          new_unittest("columns_state_their_accuracy", columns_state_their_accuracy), &
          new_unittest("bad_input_touches_nothing", bad_input_touches_nothing), &
@@ -1005,6 +1007,94 @@ contains
    !> (relative to max(1, |S|)) of the threshold. Elastic across the first tongues, the hard
    !> band α → π² near β = 0 (S = 2 exactly at β = 0), Mathieu, and damped (ε = 0.3, where
    !> stable_paper settles |S| = 2 as well).
+   !> A chart over log axes (`alpha_scale`, `beta_scale` = 'log'): its α and β are the
+   !> geometric values of `grid_value` to the bit (both ends exact), its rows are the points
+   !> task's lines at the same (α, β) (segments: the same numbers to the bit; auto: the same
+   !> verdicts, S within the tolerance), and the file run again as a scene writes itself;
+   !> task boundaries draws its curves at the log alphas.
+   subroutine log_chart_matches_points(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      integer, parameter :: na = 6, nb = 9
+      character(len=*), parameter :: grid = "&chart alpha_min = 0.05, alpha_max = 9.5, n_alpha = 6, alpha_scale = 'log', "// &
+                                     "beta_min = 0.01, beta_max = 100, n_beta = 9, beta_scale = 'log' /"
+      character(len=*), parameter :: methods(2) = [character(len=40) :: "method = 'segments', n_segments = 8", &
+                                                   "method = 'auto'"]
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out, chart_path, points_path, again, points
+      character(len=1024), allocatable :: lines(:), point_lines(:)
+      character(len=60) :: pairs(na*nb)
+      real(wp), allocatable :: rows(:, :), point_rows(:, :)
+      integer :: n_blank, i, j, k, m
+      logical :: numeric, ok
+      out = scratch_prefix("logchart")
+      points = out//"_input.dat"
+      do m = 1, size(methods)
+         call run_text_scene("logchart", [padded("&scene "//trim(methods(m))//", columns = 'alpha beta S stable', "// &
+            "output = '"//out//"' /"), padded(grid)], error, chart_path)
+         call check(ctx, .not. allocated(error), trim(methods(m))//": the log chart runs")
+         if (allocated(error)) return
+         lines = read_lines(chart_path)
+         call check(ctx, any(index(lines, "alpha_scale = 'log'") > 0 .and. index(lines, "beta_scale = 'log'") > 0), &
+                    "the header names the scales")
+         call data_rows(lines, 4, rows, n_blank, numeric)
+         call check(ctx, numeric .and. size(rows, 2) == na*nb .and. n_blank == na - 1, "6 blocks of 9 rows")
+         if (size(rows, 2) /= na*nb) return
+         k = 0
+         do i = 1, na
+            do j = 1, nb
+               k = k + 1
+               call check(ctx, rows(1, k) == grid_value(0.05_wp, 9.5_wp, na, i, geometric=.true.) .and. &
+                          rows(2, k) == grid_value(0.01_wp, 100.0_wp, nb, j, geometric=.true.), &
+                          "the geometric grid to the bit, point "//integer_text(k))
+               write (pairs(k), '(es25.17, 1x, es25.17)') rows(1, k), rows(2, k)
+            end do
+         end do
+         call check(ctx, rows(1, 1) == 0.05_wp .and. rows(1, na*nb) == 9.5_wp .and. rows(2, 1) == 0.01_wp .and. &
+                    rows(2, nb) == 100.0_wp, "the ends exact")
+         call write_file(points, pairs)
+         call run_text_scene("logchart_points", [padded("&scene task = 'points', "//trim(methods(m))// &
+            ", columns = 'alpha beta S stable', output = '"//out//"' /"), padded("&points file = '"//points//"' /")], &
+            error, points_path)
+         call check(ctx, .not. allocated(error), "the points task runs")
+         if (allocated(error)) return
+         point_lines = read_lines(points_path)
+         call data_rows(point_lines, 4, point_rows, n_blank, numeric)
+         call check(ctx, numeric .and. size(point_rows, 2) == na*nb, "a line a point")
+         if (size(point_rows, 2) /= na*nb) return
+         call check(ctx, all(point_rows(1:2, :) == rows(1:2, :)), "the same (alpha, beta)")
+         if (m == 1) then
+            call check(ctx, all(point_rows == rows), "segments: the chart's rows are the points' lines to the bit")
+         else
+            call check(ctx, all(point_rows(4, :) == rows(4, :)), "auto: the same verdicts")
+            call check(ctx, maxval(abs(point_rows(3, :) - rows(3, :))/max(1.0_wp, abs(rows(3, :)))) < 1.0e-9_wp, &
+                       "auto: S within the tolerance")
+         end if
+         call check_rerun(ctx, chart_path, lines, again, ok)
+         if (ok) call delete_file(again)
+         call delete_file(chart_path)
+         call delete_file(points_path)
+      end do
+      call delete_file(points)
+      ! task boundaries draws its curves at the log alphas
+      call run_text_scene("logchart_curves", [padded("&scene task = 'boundaries', model = 'mathieu', output = '"// &
+         out//"' /"), padded("&chart alpha_min = 0.1, alpha_max = 3, n_alpha = 4, alpha_scale = 'log', "// &
+         "beta_min = -1, beta_max = 5, n_beta = 50 /")], error, chart_path)
+      call check(ctx, .not. allocated(error), "boundaries over log alphas run")
+      if (allocated(error)) return
+      lines = read_lines(chart_path)
+      call delete_file(chart_path)
+      call data_rows(lines, 13, rows, n_blank, numeric)
+      call check(ctx, numeric .and. size(rows, 2) > 8, "curve points: "//integer_text(size(rows, 2)))
+      do i = 1, 4
+         call check(ctx, count(rows(1, :) == grid_value(0.1_wp, 3.0_wp, 4, i, geometric=.true.)) >= 2, &
+                    "curve points at log alpha "//integer_text(i))
+      end do
+      call check(ctx, all(rows(1, :) == grid_value(0.1_wp, 3.0_wp, 4, 1, geometric=.true.) .or. &
+                          rows(1, :) == grid_value(0.1_wp, 3.0_wp, 4, 2, geometric=.true.) .or. &
+                          rows(1, :) == grid_value(0.1_wp, 3.0_wp, 4, 3, geometric=.true.) .or. &
+                          rows(1, :) == grid_value(0.1_wp, 3.0_wp, 4, 4, geometric=.true.)), "only the log alphas")
+   end subroutine log_chart_matches_points
+
    subroutine verdict_chart_matches_full(ctx)
       type(test_context_t), intent(inout) :: ctx
       call compare("elastic", "model = 'elastic'", &

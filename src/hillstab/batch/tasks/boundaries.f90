@@ -48,7 +48,7 @@ module hillstab_batch_tasks_boundaries
    use hillstab_batch_scene_file, only: scene_file_t, fail, group_present
    use hillstab_batch_scene_checks, only: max_boundaries_magnitude, min_pendulum_beta
    use hillstab_batch_tasks_chart_columns, only: point_amplitude
-   use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value
+   use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_alpha, scale_linear
    use hillstab_batch_output_columns, only: column_t, style_e17, style_e4, style_integer, style_width2, &
       style_width4, columns_text, put_row
    use hillstab_batch_output_file, only: output_file_t, finish_output, discard_output, write_header, write_text
@@ -193,6 +193,12 @@ contains
       allocate (self%groups(1))
       call read_chart_group(file, chart_group(), scene%model, self%grid, self%groups(1), error)
       if (allocated(error)) return
+      if (self%grid%beta_scale /= scale_linear) then
+         ! the curves are found inside the beta window (Hill's method, roots), not on its samples
+         call fail(error, file%path, "chart", "beta_scale", "task 'boundaries' finds the curves inside the "// &
+            "beta window, not at grid values: beta_scale must be 'linear' (alpha_scale = 'log' spaces the alphas)")
+         return
+      end if
       call check_boundaries_cost(scene, self%grid, error)
    end subroutine boundaries_read
 
@@ -490,8 +496,7 @@ contains
                i = next
                !$omp end atomic
                if (i > n_alpha) exit
-               call find_boundary_rows(scene, self%grid, grid_value(self%grid%alpha_min, self%grid%alpha_max, &
-                                       n_alpha, i), per_alpha(i)%rows, cause)
+               call find_boundary_rows(scene, self%grid, grid_alpha(self%grid, i), per_alpha(i)%rows, cause)
                if (allocated(cause)) then
                   per_alpha(i)%failed = .true.
                   per_alpha(i)%message = cause%message
@@ -566,7 +571,7 @@ contains
          do i = 1, n_alpha
             if (per_alpha(i)%failed) then
                first_message = "; Hill's method failed at alpha = "// &
-                  real_text(grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i))//": "// &
+                  real_text(grid_alpha(self%grid, i))//": "// &
                   per_alpha(i)%message
                exit
             end if
@@ -610,7 +615,7 @@ contains
          call progress_begin(progress, int(n_alpha, int64), quiet, "alphas")
          !$omp parallel do schedule(dynamic) default(shared) private(i, cause)
          do i = 1, n_alpha
-            call find_boundary_rows(scene, grid, grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i), &
+            call find_boundary_rows(scene, grid, grid_alpha(grid, i), &
                                     per_alpha(i)%rows, cause)
             if (allocated(cause)) then
                per_alpha(i)%failed = .true.
@@ -634,7 +639,7 @@ contains
          ! the blocks of each alpha's drive: four for an even g, two coupled ones otherwise
          allocate (fourier(4, n_alpha))
          do i = 1, n_alpha
-            call fourier_drive(scene%model, grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i), drive, cause)
+            call fourier_drive(scene%model, grid_alpha(grid, i), drive, cause)
             if (allocated(cause)) then
                outcomes(1, i)%failed = .true.
                outcomes(1, i)%message = cause%message
@@ -672,7 +677,7 @@ contains
             if (k > 4*n_alpha) exit
             i = (k - 1)/4 + 1
             block = k - 4*(i - 1)
-            alpha = grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i)
+            alpha = grid_alpha(grid, i)
             if (route == route_fourier) then
                if (block <= n_blocks(i)) call fourier_block_values(scene%model, alpha, ids(block, i), &
                   grid%beta_min, grid%beta_max, scene%method%tolerance, fourier(block, i), cause)
@@ -692,7 +697,7 @@ contains
       !$omp end parallel
       call progress_end(progress)
       do i = 1, n_alpha
-         alpha = grid_value(grid%alpha_min, grid%alpha_max, n_alpha, i)
+         alpha = grid_alpha(grid, i)
          block = findloc(outcomes(:, i)%failed, .true., dim=1)
          if (block > 0) then
             per_alpha(i)%failed = .true.

@@ -24,7 +24,8 @@ module hillstab_batch_tasks_chart
    use hillstab_batch_scene_checks, only: check_integration_cost, max_grid_count
    use hillstab_hill_units, only: physical_t, physical_beta, physical_epsilon
    use hillstab_hill_model, only: hill_point_t
-   use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_point, grid_size_text
+   use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_alpha, grid_beta, grid_point, &
+      grid_size_text
    use hillstab_batch_tasks_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, &
       chart_header, chart_layout_t, chart_names, &
       point_amplitude, verdict_lines, &
@@ -227,7 +228,7 @@ contains
             if (g > 1) then
                !$omp single
                do i = (g - 2)*group + 1, min(n_alpha, (g - 1)*group)
-                  alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i)
+                  alpha = grid_alpha(self%grid, i)
                   call finish_row(i, alpha, block_lines(:, i - (g - 2)*group, mod(g - 1, 2)), &
                      block_lengths(:, i - (g - 2)*group, mod(g - 1, 2)), &
                      block_values(:, :, i - (g - 2)*group, mod(g - 1, 2)), block_status(:, i - (g - 2)*group, mod(g - 1, 2)))
@@ -238,7 +239,7 @@ contains
             if (g <= n_groups) then
                !$omp do schedule(dynamic)
                do i = (g - 1)*group + 1, min(n_alpha, g*group)
-                  alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i)
+                  alpha = grid_alpha(self%grid, i)
                   call compute_row(scene, columns, alpha, all_betas, block_lines(:, i - (g - 1)*group, mod(g, 2)), &
                      block_lengths(:, i - (g - 1)*group, mod(g, 2)), &
                      block_values(:, :, i - (g - 1)*group, mod(g, 2)), block_status(:, i - (g - 1)*group, mod(g, 2)), &
@@ -258,7 +259,7 @@ contains
             return
          end if
          do i = 1, n_alpha
-            alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, n_alpha, i)
+            alpha = grid_alpha(self%grid, i)
             call compute_row_in_chunks(scene, columns, alpha, all_betas, lines, lengths, values, statuses, beta_texts)
             call finish_row(i, alpha, lines, lengths, values, statuses)
             if (stopped) exit
@@ -517,7 +518,7 @@ contains
       real(wp), allocatable, intent(out) :: betas(:)  !! the n_beta grid values
       character(len=24), allocatable, intent(out) :: beta_texts(:)  !! format_es(betas, 17)
       integer :: j
-      betas = [(grid_value(grid%beta_min, grid%beta_max, grid%n_beta, j), j=1, grid%n_beta)]
+      betas = [(grid_beta(grid, j), j=1, grid%n_beta)]
       allocate (beta_texts(grid%n_beta))
       do j = 1, grid%n_beta
          beta_texts(j) = format_es(betas(j), 17)
@@ -561,7 +562,7 @@ contains
       integer, allocatable :: lengths(:)
       real(wp), allocatable :: values(:, :)
       real(wp) :: alpha
-      alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, self%grid%n_alpha, unit)
+      alpha = grid_alpha(self%grid, unit)
       if (rows_in_parallel(self%grid) .and. self%columns%need <= need_verdict) then
          call verdict_row_text(scene, self%columns, alpha, self%betas, self%beta_texts, unit > 1, text, statuses)
          return

@@ -30,7 +30,7 @@ module hillstab_batch_tasks_system
    use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_checks, only: max_grid_count
-   use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, &
+   use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_alpha, grid_beta, &
       grid_point, grid_size_text
    use hillstab_batch_scene_group_points, only: points_group, read_points_group
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text, join_lines, &
@@ -601,8 +601,8 @@ contains
       character(len=(n_fixed + max_dof_columns)*26) :: line
       real(wp) :: alpha, betas(self%grid%n_beta)
       integer :: j, length
-      alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, self%grid%n_alpha, i)
-      betas = [(grid_value(self%grid%beta_min, self%grid%beta_max, self%grid%n_beta, j), j=1, self%grid%n_beta)]
+      alpha = grid_alpha(self%grid, i)
+      betas = [(grid_beta(self%grid, j), j=1, self%grid%n_beta)]
       call system_row_values(scene%system, form, method, alpha, betas, values, n_failed, failure)
       text_length = 0
       if (scene%binary) return

@@ -15,7 +15,8 @@ module hillstab_batch_tasks_system_boundaries
    use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_checks, only: max_grid_count
-   use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_value, grid_size_text
+   use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_alpha, grid_beta, &
+      grid_size_text, scale_linear
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_step, progress_end
    use hillstab_curves_system_boundaries, only: system_boundary_t, system_boundaries
@@ -91,6 +92,12 @@ contains
       end if
       call read_chart_group(file, chart_group(), grid=self%grid, values=self%groups(1), error=error)
       if (allocated(error)) return
+      if (self%grid%beta_scale /= scale_linear) then
+         ! the beta samples only bracket the curves, found between them
+         call fail(error, file%path, "chart", "beta_scale", "task 'boundaries' finds the curves inside the "// &
+            "beta window, not at grid values: beta_scale must be 'linear' (alpha_scale = 'log' spaces the alphas)")
+         return
+      end if
       if (self%grid%n_beta < 2 .or. .not. (self%grid%beta_max > self%grid%beta_min)) then
          call fail(error, file%path, "chart", "n_beta", "the boundaries of a system need a beta window "// &
             "(beta_max > beta_min) and n_beta >= 2 samples in it (the brackets of the combination tongues)")
@@ -128,7 +135,7 @@ contains
          call fail(error, scene%source, "system", "mass", cause%message)
          return
       end if
-      betas = [(grid_value(self%grid%beta_min, self%grid%beta_max, self%grid%n_beta, k), k=1, self%grid%n_beta)]
+      betas = [(grid_beta(self%grid, k), k=1, self%grid%n_beta)]
       allocate (rows(4*self%grid%n_beta + 64, self%grid%n_alpha), counts(self%grid%n_alpha), &
                 failures(self%grid%n_alpha), stat=alloc_status)
       if (alloc_status /= 0) then
@@ -194,8 +201,8 @@ contains
       if (allocated(error)) return
       do i = 1, self%grid%n_alpha
          if (len_trim(failures(i)) > 0) then
-            call set_error(error, err_points_failed, scene%source//": alpha = "//real_text(grid_value( &
-               self%grid%alpha_min, self%grid%alpha_max, self%grid%n_alpha, i))//": "//trim(failures(i)))
+            call set_error(error, err_points_failed, scene%source//": alpha = "//real_text(grid_alpha( &
+               self%grid, i))//": "//trim(failures(i)))
             return
          end if
       end do
@@ -209,7 +216,7 @@ contains
          type(error_t), allocatable, intent(out) :: cause
          type(system_boundary_t), allocatable :: found(:)
          real(wp) :: alpha
-         alpha = grid_value(self%grid%alpha_min, self%grid%alpha_max, self%grid%n_alpha, i)
+         alpha = grid_alpha(self%grid, i)
          call system_boundaries(scene%system, form, alpha, betas, system_method_t(scene%method%kind, &
                                 scene%method%tolerance), found, cause)
          counts(i) = min(size(found), size(rows, 1))
