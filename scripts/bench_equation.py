@@ -17,6 +17,9 @@ C program writes nothing while timed), the scipy loop in this process (the loop 
    two files must have the same grid and agree within 2e-10 max(1, |S|) at every point. Both also
    as verdict-only charts (columns 'a b stable'), where the computing is not diluted by the
    writing of the text file.
+   The two pendula on a shaken support (a 2-DOF system, 151 x 301) written as equations (model
+   'equations', stiffness 'b*B + a*C*cos(pi*t)', frequency 'pi') against the built-in model
+   'system': the two files agree within 1e-10 max(1, |trace|) at every point.
 2. The Kapitza chart of data/scenes/kapitza_chart.nml (300 x 300 over (w, A), auto at 1e-10) by
    hillstab against
    (a) a plain scipy loop: per point, solve_ivp(method='DOP853') on the 2 x 2 fundamental matrix of
@@ -62,6 +65,14 @@ KAPITZA_PARAMETERS = "parameters = 'g = 9.81, l = 0.2, kappa = 0.2, A = 0.005, w
 KAPITZA_BOX = "alpha_min=60.0, alpha_max=700.0, n_alpha=300, beta_min=0.0, beta_max=0.1, n_beta=300"
 MATHIEU_BOX = "&chart alpha_min = 0, alpha_max = 20, n_alpha = 300, beta_min = -5, beta_max = 40, n_beta = 300 /\n"
 MATHIEU_AGREEMENT = 2e-10
+# the two pendula on a shaken support (data/scenes/system_pendula.nml) built in and written as equations
+PENDULA_BOX = "&chart alpha_min = 0.0, alpha_max = 1.5, n_alpha = 151, beta_min = 0.0, beta_max = 3.0, n_beta = 301 /\n"
+PENDULA_SYSTEM = ("&system n = 2, mass = 1.0, 0.0, 0.0, 0.25, b = 2.0, -1.0, -1.0, 1.5, "
+                  "cos = -1.0, 0.0, 0.0, -0.5 /\n")
+PENDULA_EQUATIONS = ("&equations n = 2, parameters = 'a = 0, b = 1', matrices = 'M = [1, 0; 0, 0.25], "
+                     "B = [2, -1; -1, 1.5], C = [-1, 0; 0, -0.5]', mass = 'M', stiffness = 'b*B + a*C*cos(pi*t)', "
+                     "frequency = 'pi', alpha = 'a', beta = 'b' /\n")
+PENDULA_AGREEMENT = 1e-10
 GSL_LADDER = [1e-9, 3e-10, 1e-10, 3e-11, 1e-11, 3e-12, 1e-12, 3e-13, 1e-13]
 SCIPY_RTOLS = [1e-9, 3e-10, 1e-10, 3e-11, 1e-11, 3e-12, 1e-12, 3e-13, 1e-13, 3e-14]
 SCIPY_ATOL_FACTORS = [1.0, 1e-3]
@@ -166,6 +177,13 @@ def main():
                              "output = '%s' /\n&equation parameters = 'a = 1, b = 1', stiffness = 'b - a*cos(pi*t)', "
                              "frequency = 'pi', alpha = 'a', beta = 'b' /\n" % os.path.join(work, "mathieu_equation")
                              + MATHIEU_BOX)
+    pendula_builtin = scene("pendula_builtin",
+                            "&scene task = 'chart', model = 'system', method = 'auto', tolerance = 1e-10, "
+                            "output = '%s' /\n" % os.path.join(work, "pendula_builtin") + PENDULA_SYSTEM + PENDULA_BOX)
+    pendula_equations = scene("pendula_equations",
+                              "&scene task = 'chart', model = 'equations', method = 'auto', tolerance = 1e-10, "
+                              "output = '%s' /\n" % os.path.join(work, "pendula_equations") + PENDULA_EQUATIONS
+                              + PENDULA_BOX)
     mathieu_builtin = scene("mathieu_builtin",
                             "&scene task = 'chart', model = 'mathieu', method = 'auto', tolerance = 1e-10, "
                             "output = '%s' /\n" % os.path.join(work, "mathieu_builtin") + MATHIEU_BOX)
@@ -239,6 +257,14 @@ def main():
     verdict_charts_differ = sum(1 for e, m in zip(ev_rows, mv_rows) if e[2] != m[2])
     verdicts_off_full = sum(1 for e, m in zip(ev_rows, eq_rows) if e[2] != m[3])
     mathieu_status = sum(1 for r in eq_rows + mb_rows if r[4] != 0)
+    run([hillstab, "--quiet", pendula_builtin], env)
+    run([hillstab, "--quiet", pendula_equations], env)
+    pb_rows = read_rows(os.path.join(work, "pendula_builtin_chart.dat"), ["alpha", "beta", "trace", "stable"])
+    pe_rows = read_rows(os.path.join(work, "pendula_equations_chart.dat"), ["a", "b", "trace", "stable"])
+    if len(pb_rows) != 151 * 301 or any(e[:2] != m[:2] for e, m in zip(pe_rows, pb_rows)):
+        sys.exit("bench_equation: the pendula charts are not on the same grid")
+    pendula_agreement = max(relative_error(e[2], m[2]) for e, m in zip(pe_rows, pb_rows))
+    pendula_verdicts_differ = sum(1 for e, m in zip(pe_rows, pb_rows) if e[3] != m[3])
     hs_rows = read_rows(os.path.join(work, "kapitza_chart.dat"), ["w", "A", "S", "status"])
     if [(r[0], r[1]) for r in hs_rows] != grid:
         sys.exit("bench_equation: hillstab's Kapitza chart is not on the reference's grid")
@@ -310,6 +336,11 @@ def main():
          [hillstab, "--quiet", mathieu_equation_verdicts], n * n, "tol=1e-10", -1.0, "-", -1.0),
         ("mathieu_builtin_verdicts", "Mathieu, built-in model, verdicts only", "process",
          [hillstab, "--quiet", mathieu_builtin_verdicts], n * n, "tol=1e-10", -1.0, "-", -1.0),
+        ("pendula_equations", "2-DOF pendula as equations (auto 1e-10)", "process",
+         [hillstab, "--quiet", pendula_equations], 151 * 301, "tol=1e-10", pendula_agreement,
+         "agreement with the system model", -1.0),
+        ("pendula_builtin", "2-DOF pendula, built-in system model (auto 1e-10)", "process",
+         [hillstab, "--quiet", pendula_builtin], 151 * 301, "tol=1e-10", -1.0, "-", -1.0),
         ("kapitza_hillstab", "Kapitza, hillstab (auto 1e-10)", "process", [hillstab, "--quiet", kapitza_auto],
          n * n, "tol=1e-10", hs_error_chart, "chart", hs_error_physical),
     ]
@@ -349,7 +380,8 @@ def main():
 
     def ratios(name):
         base = ("mathieu_builtin_verdicts" if name.endswith("_verdicts") else
-                "mathieu_builtin" if name.startswith("mathieu") else "kapitza_hillstab")
+                "mathieu_builtin" if name.startswith("mathieu") else
+                "pendula_builtin" if name.startswith("pendula") else "kapitza_hillstab")
         return [per_point(name, k) / per_point(base, k) for k in range(args.rounds)]
 
     # ------------------------------------------------------------------ report
@@ -376,6 +408,9 @@ def main():
           % (agreement, MATHIEU_AGREEMENT, verdicts_differ, mathieu_status))
     print("Mathieu, verdicts only: the two verdict charts differ at %d points; the equation's verdict chart and its "
           "full chart's verdicts at %d" % (verdict_charts_differ, verdicts_off_full))
+    print("Pendula: the equations' chart against the built-in system's (151 x 301, (alpha, beta) in [0, 1.5] x "
+          "[0, 3]): worst |d trace|/max(1, |trace|) = %.2e, verdicts differing at %d points"
+          % (pendula_agreement, pendula_verdicts_differ))
     print("Kapitza: hillstab auto 1e-10 against magnus6 1e-13: worst %.2e over the chart, %.2e over the sub-grid, %d "
           "points at a status other than 0; magnus6 1e-13 itself at the 30 points of physical_set: %.2e"
           % (hs_error_chart, hs_error_subset, kapitza_status, ref_error_physical))
@@ -412,6 +447,10 @@ def main():
                 % (agreement, verdicts_differ))
         f.write("# mathieu_*_verdicts: the same charts with columns 'a b stable' / 'alpha beta stable' (the verdicts "
                 "only); the two verdict charts differ at %d points\n" % verdict_charts_differ)
+        f.write("# pendula_*: the two pendula on a shaken support (data/scenes/system_pendula.nml), 151 x 301, auto "
+                "1e-10, whole runs: model 'equations' (stiffness 'b*B + a*C*cos(pi*t)', frequency 'pi') and the "
+                "built-in 'system'; worst |d trace|/max(1, |trace|) = %.3e, verdicts differing at %d points\n"
+                % (pendula_agreement, pendula_verdicts_differ))
         f.write("# kapitza_*: %s (300 x 300 over (w, A), auto 1e-10) by hillstab (whole run), by bench/chart_gsl_"
                 "kapitza.c (GSL rk8pd on the physical equation over one period 2 pi/w, whole chart, whole run) and by "
                 "a scipy loop (solve_ivp DOP853 on the fundamental matrix of the physical equation, point after point, "
@@ -442,7 +481,7 @@ def main():
     for name in os.listdir(work):
         os.remove(os.path.join(work, name))
     os.rmdir(work)
-    return 0 if agreement <= MATHIEU_AGREEMENT else 1
+    return 0 if agreement <= MATHIEU_AGREEMENT and pendula_agreement <= PENDULA_AGREEMENT else 1
 
 
 if __name__ == "__main__":

@@ -650,7 +650,7 @@ contains
       if (allocated(error)) return
       do iteration = 1, 60
          if (s1%g > 0.0_wp .or. s2%g > 0.0_wp) exit
-         if (b - a <= 1.0e-3_wp*(window(2) - window(1))) exit
+         if (b - a <= 1.0e-6_wp*(window(2) - window(1))) exit
          if (s1%g >= s2%g) then
             b = x2
             x2 = x1
@@ -806,7 +806,7 @@ contains
       do direction = 1, 2
          inside = tip
          x0 = start
-         h = 1.0e-3_wp*(r%window(2) - r%window(1))
+         h = 1.0e-2_wp*(r%window(2) - r%window(1))
          r%clipped(direction) = .true.
          edge = r%window(direction)
          do iteration = 1, 100
