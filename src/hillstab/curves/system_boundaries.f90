@@ -227,14 +227,15 @@ contains
       type(system_boundary_t), allocatable, intent(out) :: found(:)  !! the points, by β
       type(error_t), allocatable, intent(out) :: error  !! err_singular when Hill's method fails
       type(edge_row_t) :: row
-      type(system_boundary_t), allocatable :: candidates(:)
+      type(system_boundary_t), allocatable :: candidates(:), pristine(:)
       type(edge_sample_t), allocatable :: samples(:)
       type(edge_sample_t) :: probe
+      type(side_check_t), allocatable :: sides(:)
       real(wp), allocatable :: roots(:), estimates(:), grid(:), predicted(:), bounds(:)
       logical, allocatable :: inside(:)
       type(system_boundary_t) :: point
       real(wp) :: spacing
-      integer :: s, k, j
+      integer :: s, k, j, round, added, last
       logical :: hit
       allocate (found(0), candidates(0), bounds(0))
       row%alpha = alpha
@@ -278,7 +279,38 @@ contains
          end do
       end if
       call sort_candidates(candidates, bounds)
-      call confirm_edges(system, form, row, candidates, bounds, spacing, found)
+      ! as found: confirm_edges negates kinds and adds to the estimates
+      pristine = candidates
+      call confirm_edges(system, form, row, candidates, bounds, spacing, found, sides)
+      if (row%quantity /= quantity_none) then
+         ! consecutive stability edges see one region between them: stable above the one and
+         ! below the next, or unstable at both. Where they disagree a transition between them
+         ! was missed (a stable gap narrower than the samples between two unstable regions,
+         ! both its samples inside): closed on q between the two sides, then all confirmed anew.
+         do round = 1, 3
+            candidates = pristine
+            added = size(candidates)
+            last = 0
+            do k = 1, size(found)
+               if (found(k)%kind <= 0 .or. found(k)%status /= status_ok .or. .not. sides(k)%decided) cycle
+               if (last > 0) then
+                  if ((sides(last)%above%verdict == verdict_stable) .neqv. &
+                      (sides(k)%below%verdict == verdict_stable)) then
+                     if (sides(last)%above%ok .and. sides(k)%below%ok .and. &
+                         ((sides(last)%above%q < 0.0_wp) .neqv. (sides(k)%below%q < 0.0_wp))) &
+                        call close_edge(sides(last)%above, sides(k)%below)
+                  end if
+               end if
+               last = k
+            end do
+            if (size(candidates) == added) exit
+            call sort_candidates(candidates, bounds)
+            pristine = candidates
+            deallocate (found)
+            allocate (found(0))
+            call confirm_edges(system, form, row, candidates, bounds, spacing, found, sides)
+         end do
+      end if
       call sort_points(found)
 
    contains
@@ -381,7 +413,7 @@ contains
    !> negated. Stable on both: dropped. Undecided: Hill's points keep the status of their
    !> check, the others get status_failed. The error estimate of a root of q adds δq/|q'|
    !> (the slope from the two sides) to its bracket.
-   subroutine confirm_edges(system, form, row, candidates, bounds, spacing, found)
+   subroutine confirm_edges(system, form, row, candidates, bounds, spacing, found, sides_found)
       class(hill_system_t), intent(in) :: system
       type(system_form_t), intent(in) :: form
       type(edge_row_t), intent(inout) :: row
@@ -389,10 +421,12 @@ contains
       real(wp), intent(in) :: bounds(:)   !! the error bound of q at each root (0: Hill's method)
       real(wp), intent(in) :: spacing
       type(system_boundary_t), allocatable, intent(inout) :: found(:)
+      type(side_check_t), allocatable, intent(out) :: sides_found(:)  !! the sides of each of `found`
       type(side_check_t) :: sides
       real(wp) :: gap, cap, start, scale, slope, lo, hi, close
       integer :: k, first, last
       logical :: stable_below, stable_above
+      allocate (sides_found(0))
       first = 1
       do while (first <= size(candidates))
          ! the cluster of candidates within their errors of each other
@@ -430,6 +464,7 @@ contains
             if (.not. sides%decided) then
                if (candidates(k)%route /= route_hill) candidates(k)%status = status_failed
                found = [found, candidates(k)]
+               sides_found = [sides_found, sides]
                cycle
             end if
             stable_below = sides%below%verdict == verdict_stable
@@ -437,6 +472,7 @@ contains
             if (stable_below .and. stable_above) cycle
             if (.not. (stable_below .or. stable_above)) candidates(k)%kind = -candidates(k)%kind
             found = [found, candidates(k)]
+            sides_found = [sides_found, sides]
          end do
          first = last + 1
       end do
