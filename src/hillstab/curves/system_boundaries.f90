@@ -267,11 +267,15 @@ contains
             if (inside(j) .eqv. inside(j + 1)) cycle
             call close_edge(samples(j), samples(j + 1))
          end do
-         ! a tongue narrower than the samples: a positive local minimum of q
+         ! a tongue narrower than the samples: a positive local minimum of q, below both
+         ! neighbours by more than its error bound (mass-proportional damping alone leaves q
+         ! flat, e^{−εP/2} the modulus of every multiplier, wherever the system is stable:
+         ! its noise is no dip)
          do j = 2, size(grid) - 1
             if (inside(j - 1) .or. inside(j) .or. inside(j + 1)) cycle
             if (.not. (samples(j - 1)%ok .and. samples(j)%ok .and. samples(j + 1)%ok)) cycle
-            if (.not. (samples(j)%q <= samples(j - 1)%q .and. samples(j)%q <= samples(j + 1)%q)) cycle
+            if (.not. (samples(j)%q < samples(j - 1)%q - samples(j)%dq .and. &
+                       samples(j)%q < samples(j + 1)%q - samples(j)%dq)) cycle
             call dip_probe(system, form, row, grid(j - 1), grid(j + 1), probe, hit)
             if (.not. hit) cycle
             call close_edge(samples(j - 1), probe)
