@@ -20,14 +20,18 @@
 !>   q is sampled at the row's β and, around each combination resonance predicted at α = 0
 !>   (ω_i + ω_j = kΩ, and |ω_i − ω_j| = kΩ where it can open), at 10 more β within half a
 !>   spacing; every sign change is closed by Brent's method on q itself, and every positive
-!>   local minimum of q is probed by golden section for a tongue narrower than the samples.
-!>   `check` is |q| at the edge over its error bound δq; the error estimate is the final
-!>   bracket plus δq/|q'|.
+!>   local minimum of q (below both neighbours by more than δq) is probed by golden section
+!>   for a tongue narrower than the samples. `check` is |q| at the edge over its error bound
+!>   δq; the error estimate is the final bracket plus δq/|q'|.
 !> - Both sides: the verdict at β ∓ δ, δ growing until decided, at most 0.45 of the distance
 !>   to the next edge. Stable on one side, unstable on the other: a stability edge. Unstable
 !>   on both (two overlapping tongues): the kind negated. Stable on both (a touch, as at
 !>   α = 0): dropped. Undecided within the cap: status_failed, except for Hill's points,
 !>   whose status is that of their check.
+!> - Consistency: two consecutive stability edges see one region between them. Where one
+!>   says stable and the other unstable, a transition between them was missed (a stable gap
+!>   narrower than the samples between two unstable regions): it is closed on q between
+!>   their sides and every candidate confirmed anew.
 !>
 !>```fortran
 !> type(system_boundary_t), allocatable :: found(:)
