@@ -4,7 +4,8 @@
 !> found by root-finding on Broucke's discriminant against first-order perturbation theory;
 !> the edges of a damped combination tongue, of narrow tongues of a 3-DOF system, of
 !> overlapping tongues and of random systems against an independent fine scan of the
-!> point routine's verdict and bisection on its largest |λ| or discriminant.
+!> point routine's verdict and bisection on its largest |λ| or discriminant; twelve systems
+!> against an independent reference confirmed in extended precision (audit_set.dat).
 module test_system_boundaries
    use hillstab_core_kinds, only: wp, pi
    use hillstab_core_error, only: error_t
@@ -20,9 +21,25 @@ module test_system_boundaries
    use hillstab_hill_system_floquet, only: system_floquet_t, verdict_unstable, verdict_marginal
    use hillstab_curves_system_boundaries
    use hillstab_testing
+   use hillstab_test_scratch, only: read_lines
    implicit none
    private
    public :: collect_system_boundaries
+
+   !> The counts of the audit over all its systems.
+   type :: audit_tally_t
+      integer :: systems = 0       !! systems audited
+      integer :: edges = 0         !! reference transitions
+      integer :: missed = 0        !! reference transitions without a stability edge of the task
+      integer :: false_edges = 0   !! stability edges of the task at no reference transition
+      integer :: misplaced = 0     !! matched edges farther from the transition than error + w
+      integer :: wrong_kind = 0    !! matched edges of another kind than the reference's
+      integer :: negated = 0       !! negated kinds (both sides unstable)
+      integer :: failed = 0        !! edges whose status is not ok
+      integer :: at_reference = 0  !! matched edges whose estimate is below the reference's w
+      real(wp) :: worst_stated = 0.0_wp     !! max |β − e|/error over edges with error ≥ w
+      real(wp) :: worst_combined = 0.0_wp   !! max |β − e|/(error + w) over all matched edges
+   end type audit_tally_t
 
 contains
 
@@ -36,7 +53,8 @@ contains
          new_unittest("narrow_tongues_three_dof", narrow_tongues_three_dof), &
          new_unittest("discriminant_edges_within_estimate", discriminant_edges_within_estimate), &
          new_unittest("overlapping_tongues_no_false_edge", overlapping_tongues_no_false_edge), &
-         new_unittest("random_systems_audit", random_systems_audit)])
+         new_unittest("random_systems_audit", random_systems_audit), &
+         new_unittest("audit_against_reference", audit_against_reference)])
    end function collect_system_boundaries
 
    !> A system from its lists.
@@ -566,4 +584,200 @@ contains
          end do
       end function symmetric
    end function random_system
+
+   !> The audit against data/reference/audit_set.dat (data/reference/make_audit_reference.py,
+   !> independent of this code: a double-precision numpy scan of 4000 samples a row with a
+   !> search of every local minimum of its signed quantity, each transition e confirmed by the
+   !> verdicts in extended precision, mpmath, at e ∓ w, and each region's verdict at its
+   !> midpoint). Twelve systems, 2–4 DOF, undamped (one gyroscopic) and damped (C, εM or
+   !> both), some with sine terms or two harmonics, one row each at the file's α and samples,
+   !> tolerance 1e-11.
+   !> No reference transition without a stability edge of the task within 1e-4 max(1, |e|)
+   !> (missed), no stability edge of the task without one (false), each matched edge of the
+   !> reference's kind and within its error estimate plus w of the transition (w is the
+   !> reference's precision, about 2e-11 max(1, |e|)), each negated kind inside an unstable
+   !> region of the reference, every status ok.
+   subroutine audit_against_reference(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: path = "data/reference/audit_set.dat"
+      character(len=1024), allocatable :: lines(:)
+      character(len=16) :: key
+      type(matrix_system_t) :: s
+      type(error_t), allocatable :: error
+      type(audit_tally_t) :: tally
+      real(wp), allocatable :: values(:), ref_beta(:), ref_w(:), reg_lo(:), reg_hi(:)
+      integer, allocatable :: ref_kind(:), reg_stable(:)
+      real(wp) :: eps, alpha, lo, hi, x(6)
+      integer :: k, ios, id, n, h, has_sin, samples, ham, count_values, below, kind
+      lines = read_lines(path)
+      call check(ctx, size(lines) > 0, "reads "//path)
+      allocate (values(0))
+      do k = 1, size(lines)
+         if (len_trim(lines(k)) == 0 .or. lines(k)(1:1) == "#") cycle
+         read (lines(k), *, iostat=ios) key
+         select case (trim(key))
+         case ("system")
+            read (lines(k), *, iostat=ios) key, id, n, h, has_sin, eps, alpha, lo, hi, samples, ham
+            call check(ctx, ios == 0, "reads "//trim(lines(k)))
+            s = matrix_system_t()
+            call s%set_values("n", [real(n, wp)], error)
+            allocate (ref_beta(0), ref_w(0), ref_kind(0), reg_lo(0), reg_hi(0), reg_stable(0))
+         case ("mass", "damping", "gyroscopic", "k0", "b", "cos", "sin")
+            count_values = n*n
+            if (trim(key) == "cos" .or. trim(key) == "sin") count_values = h*n*n
+            deallocate (values)
+            allocate (values(count_values))
+            read (lines(k), *, iostat=ios) key, values
+            call check(ctx, ios == 0, "reads the "//trim(key)//" of system "//trim(real_text(real(id, wp))))
+            call s%set_values(trim(key), values, error)
+            call check(ctx, .not. allocated(error), "sets the "//trim(key))
+         case ("edge")
+            ! edge beta w stable_below kind q_below q_above
+            read (lines(k), *, iostat=ios) key, x(1:2), below, kind
+            call check(ctx, ios == 0, "reads "//trim(lines(k)))
+            ref_beta = [ref_beta, x(1)]
+            ref_w = [ref_w, x(2)]
+            ref_kind = [ref_kind, kind]
+         case ("region")
+            ! region lo hi stable beta_mid q_mid
+            read (lines(k), *, iostat=ios) key, x(1:2), below
+            call check(ctx, ios == 0, "reads "//trim(lines(k)))
+            reg_lo = [reg_lo, x(1)]
+            reg_hi = [reg_hi, x(2)]
+            reg_stable = [reg_stable, below]
+         case ("end")
+            call s%check_values(error)
+            call check(ctx, .not. allocated(error), "system "//trim(real_text(real(id, wp)))//" complete")
+            if (allocated(error)) return
+            call audit_row(ctx, s, id, eps, alpha, lo, hi, samples, ham == 1, ref_beta, ref_w, ref_kind, reg_lo, &
+                           reg_hi, reg_stable == 1, tally)
+            deallocate (ref_beta, ref_w, ref_kind, reg_lo, reg_hi, reg_stable)
+         end select
+      end do
+      print '(4x,a,i0,a,i0,a,i0,a,i0,a,i0,a,i0,a,i0)', "audit: ", tally%systems, " systems, ", tally%edges, &
+         " transitions; missed ", tally%missed, ", false ", tally%false_edges, ", misplaced ", tally%misplaced, &
+         ", wrong kind ", tally%wrong_kind, ", failed ", tally%failed
+      print '(4x,a,es9.2,a,es9.2,a,i0,a,i0,a)', "audit: worst |beta - e|/error ", tally%worst_stated, &
+         " (error >= w), worst |beta - e|/(error + w) ", tally%worst_combined, "; ", tally%at_reference, &
+         " estimates below w; ", tally%negated, " negated kinds"
+      call check(ctx, tally%systems >= 10, "at least ten systems")
+      call check(ctx, tally%missed == 0, "no transition missed")
+      call check(ctx, tally%false_edges == 0, "no false edge")
+      call check(ctx, tally%misplaced == 0, "every edge within its estimate (plus the reference's w)")
+      call check(ctx, tally%wrong_kind == 0, "every edge of the reference's kind")
+      call check(ctx, tally%failed == 0, "every edge confirmed")
+   end subroutine audit_against_reference
+
+   !> One row of the audit: the task at the row's samples against the reference's transitions
+   !> (ref_*) and regions (reg_*).
+   subroutine audit_row(ctx, s, id, eps, alpha, lo, hi, samples, hamiltonian, ref_beta, ref_w, ref_kind, reg_lo, &
+                        reg_hi, reg_stable, tally)
+      type(test_context_t), intent(inout) :: ctx
+      type(matrix_system_t), intent(in) :: s
+      integer, intent(in) :: id, samples
+      real(wp), intent(in) :: eps, alpha, lo, hi
+      logical, intent(in) :: hamiltonian
+      real(wp), intent(in) :: ref_beta(:), ref_w(:), reg_lo(:), reg_hi(:)
+      integer, intent(in) :: ref_kind(:)
+      logical, intent(in) :: reg_stable(:)
+      type(audit_tally_t), intent(inout) :: tally
+      !> the monodromy's tolerance: at 1e-10 the shallowest tongue of the set (system 2 at
+      !> β ≈ 12.7445, D ≥ −5.9e-9) lies within D's error bound (2e-8) and the verdict is
+      !> marginal inside it
+      real(wp), parameter :: audit_tolerance = 1.0e-11_wp
+      type(system_form_t) :: form
+      type(system_boundary_t), allocatable :: found(:)
+      type(error_t), allocatable :: error
+      real(wp) :: betas(samples), distance, near
+      integer :: hits(size(ref_beta)), k, j, r
+      character(len=:), allocatable :: what
+      what = "audit system "//trim(adjustl(int_text(id)))
+      call prepare_system(s, eps, form, error)
+      call check(ctx, .not. allocated(error), what//": prepared")
+      if (allocated(error)) return
+      call check(ctx, form%hamiltonian .eqv. hamiltonian, what//": Hamiltonian as the reference says")
+      betas = [(lo + (hi - lo)*k/real(samples - 1, wp), k=0, samples - 1)]
+      call system_boundaries(s, form, alpha, betas, system_method_t(system_auto, audit_tolerance), found, error)
+      call check(ctx, .not. allocated(error), what//": boundaries computed")
+      if (allocated(error)) return
+      tally%systems = tally%systems + 1
+      tally%edges = tally%edges + size(ref_beta)
+      hits = 0
+      do k = 1, size(found)
+         if (found(k)%status /= status_ok) then
+            tally%failed = tally%failed + 1
+            call check(ctx, .false., what//": status ok at "//trim(real_text(found(k)%beta)))
+         end if
+         if (found(k)%kind < 0) then
+            ! both sides unstable: inside an unstable region, away from every transition
+            tally%negated = tally%negated + 1
+            r = findloc(reg_lo <= found(k)%beta .and. reg_hi >= found(k)%beta, .true., dim=1)
+            distance = huge(1.0_wp)
+            if (size(ref_beta) > 0) distance = minval(abs(ref_beta - found(k)%beta) - ref_w)
+            if (r == 0) cycle
+            if (reg_stable(r) .or. distance <= found(k)%error_estimate) then
+               tally%false_edges = tally%false_edges + 1
+               call check(ctx, .false., what//": a negated kind inside an unstable region at "// &
+                          trim(real_text(found(k)%beta)))
+            end if
+            cycle
+         end if
+         j = 0
+         if (size(ref_beta) > 0) j = minloc(abs(ref_beta - found(k)%beta), dim=1)
+         near = 0.0_wp
+         if (j > 0) near = 1.0e-4_wp*max(1.0_wp, abs(ref_beta(j)))
+         if (j == 0) then
+            distance = huge(1.0_wp)
+         else
+            distance = abs(found(k)%beta - ref_beta(j))
+         end if
+         if (distance > near) then
+            tally%false_edges = tally%false_edges + 1
+            call check(ctx, .false., what//": no reference transition at the edge "//trim(real_text(found(k)%beta)))
+            cycle
+         end if
+         hits(j) = hits(j) + 1
+         if (hits(j) > 1) then
+            tally%false_edges = tally%false_edges + 1
+            call check(ctx, .false., what//": a second edge at the transition "//trim(real_text(ref_beta(j))))
+            cycle
+         end if
+         if (task_kind(ref_kind(j)) /= found(k)%kind) then
+            tally%wrong_kind = tally%wrong_kind + 1
+            call check(ctx, .false., what//": the kind of the edge at "//trim(real_text(ref_beta(j))))
+         end if
+         if (distance > found(k)%error_estimate + ref_w(j)) then
+            tally%misplaced = tally%misplaced + 1
+            call check(ctx, found(k)%beta, ref_beta(j), abs=found(k)%error_estimate + ref_w(j), &
+                       message=what//": the edge within its estimate (plus the reference's w)")
+         end if
+         tally%worst_combined = max(tally%worst_combined, distance/(found(k)%error_estimate + ref_w(j)))
+         if (found(k)%error_estimate >= ref_w(j)) then
+            tally%worst_stated = max(tally%worst_stated, distance/found(k)%error_estimate)
+         else
+            tally%at_reference = tally%at_reference + 1
+         end if
+      end do
+      do j = 1, size(ref_beta)
+         if (hits(j) > 0) cycle
+         tally%missed = tally%missed + 1
+         call check(ctx, .false., what//": the transition at "//trim(real_text(ref_beta(j)))//" found")
+      end do
+   end subroutine audit_row
+
+   !> The task's kind of the reference's: 1 at +1, −1 at −1, 0 a combination.
+   pure integer function task_kind(reference)
+      integer, intent(in) :: reference
+      select case (reference)
+      case (1); task_kind = kind_plus_one
+      case (-1); task_kind = kind_minus_one
+      case default; task_kind = kind_combination
+      end select
+   end function task_kind
+
+   pure function int_text(i) result(text)
+      integer, intent(in) :: i
+      character(len=16) :: text
+      write (text, '(i0)') i
+   end function int_text
 end module test_system_boundaries

@@ -20,14 +20,18 @@
 !>   q is sampled at the row's β and, around each combination resonance predicted at α = 0
 !>   (ω_i + ω_j = kΩ, and |ω_i − ω_j| = kΩ where it can open), at 10 more β within half a
 !>   spacing; every sign change is closed by Brent's method on q itself, and every positive
-!>   local minimum of q is probed by golden section for a tongue narrower than the samples.
-!>   `check` is |q| at the edge over its error bound δq; the error estimate is the final
-!>   bracket plus δq/|q'|.
+!>   local minimum of q (below both neighbours by more than δq) is probed by golden section
+!>   for a tongue narrower than the samples. `check` is |q| at the edge over its error bound
+!>   δq; the error estimate is the final bracket plus δq/|q'|.
 !> - Both sides: the verdict at β ∓ δ, δ growing until decided, at most 0.45 of the distance
 !>   to the next edge. Stable on one side, unstable on the other: a stability edge. Unstable
 !>   on both (two overlapping tongues): the kind negated. Stable on both (a touch, as at
 !>   α = 0): dropped. Undecided within the cap: status_failed, except for Hill's points,
 !>   whose status is that of their check.
+!> - Consistency: two consecutive stability edges see one region between them. Where one
+!>   says stable and the other unstable, a transition between them was missed (a stable gap
+!>   narrower than the samples between two unstable regions): it is closed on q between
+!>   their sides and every candidate confirmed anew.
 !>
 !>```fortran
 !> type(system_boundary_t), allocatable :: found(:)
@@ -227,14 +231,15 @@ contains
       type(system_boundary_t), allocatable, intent(out) :: found(:)  !! the points, by β
       type(error_t), allocatable, intent(out) :: error  !! err_singular when Hill's method fails
       type(edge_row_t) :: row
-      type(system_boundary_t), allocatable :: candidates(:)
+      type(system_boundary_t), allocatable :: candidates(:), pristine(:)
       type(edge_sample_t), allocatable :: samples(:)
       type(edge_sample_t) :: probe
+      type(side_check_t), allocatable :: sides(:)
       real(wp), allocatable :: roots(:), estimates(:), grid(:), predicted(:), bounds(:)
       logical, allocatable :: inside(:)
       type(system_boundary_t) :: point
       real(wp) :: spacing
-      integer :: s, k, j
+      integer :: s, k, j, round, added, last
       logical :: hit
       allocate (found(0), candidates(0), bounds(0))
       row%alpha = alpha
@@ -266,11 +271,15 @@ contains
             if (inside(j) .eqv. inside(j + 1)) cycle
             call close_edge(samples(j), samples(j + 1))
          end do
-         ! a tongue narrower than the samples: a positive local minimum of q
+         ! a tongue narrower than the samples: a positive local minimum of q, below both
+         ! neighbours by more than its error bound (mass-proportional damping alone leaves q
+         ! flat, e^{−εP/2} the modulus of every multiplier, wherever the system is stable:
+         ! its noise is no dip)
          do j = 2, size(grid) - 1
             if (inside(j - 1) .or. inside(j) .or. inside(j + 1)) cycle
             if (.not. (samples(j - 1)%ok .and. samples(j)%ok .and. samples(j + 1)%ok)) cycle
-            if (.not. (samples(j)%q <= samples(j - 1)%q .and. samples(j)%q <= samples(j + 1)%q)) cycle
+            if (.not. (samples(j)%q < samples(j - 1)%q - samples(j)%dq .and. &
+                       samples(j)%q < samples(j + 1)%q - samples(j)%dq)) cycle
             call dip_probe(system, form, row, grid(j - 1), grid(j + 1), probe, hit)
             if (.not. hit) cycle
             call close_edge(samples(j - 1), probe)
@@ -278,7 +287,38 @@ contains
          end do
       end if
       call sort_candidates(candidates, bounds)
-      call confirm_edges(system, form, row, candidates, bounds, spacing, found)
+      ! as found: confirm_edges negates kinds and adds to the estimates
+      pristine = candidates
+      call confirm_edges(system, form, row, candidates, bounds, spacing, found, sides)
+      if (row%quantity /= quantity_none) then
+         ! consecutive stability edges see one region between them: stable above the one and
+         ! below the next, or unstable at both. Where they disagree a transition between them
+         ! was missed (a stable gap narrower than the samples between two unstable regions,
+         ! both its samples inside): closed on q between the two sides, then all confirmed anew.
+         do round = 1, 3
+            candidates = pristine
+            added = size(candidates)
+            last = 0
+            do k = 1, size(found)
+               if (found(k)%kind <= 0 .or. found(k)%status /= status_ok .or. .not. sides(k)%decided) cycle
+               if (last > 0) then
+                  if ((sides(last)%above%verdict == verdict_stable) .neqv. &
+                      (sides(k)%below%verdict == verdict_stable)) then
+                     if (sides(last)%above%ok .and. sides(k)%below%ok .and. &
+                         ((sides(last)%above%q < 0.0_wp) .neqv. (sides(k)%below%q < 0.0_wp))) &
+                        call close_edge(sides(last)%above, sides(k)%below)
+                  end if
+               end if
+               last = k
+            end do
+            if (size(candidates) == added) exit
+            call sort_candidates(candidates, bounds)
+            pristine = candidates
+            deallocate (found)
+            allocate (found(0))
+            call confirm_edges(system, form, row, candidates, bounds, spacing, found, sides)
+         end do
+      end if
       call sort_points(found)
 
    contains
@@ -381,7 +421,7 @@ contains
    !> negated. Stable on both: dropped. Undecided: Hill's points keep the status of their
    !> check, the others get status_failed. The error estimate of a root of q adds δq/|q'|
    !> (the slope from the two sides) to its bracket.
-   subroutine confirm_edges(system, form, row, candidates, bounds, spacing, found)
+   subroutine confirm_edges(system, form, row, candidates, bounds, spacing, found, sides_found)
       class(hill_system_t), intent(in) :: system
       type(system_form_t), intent(in) :: form
       type(edge_row_t), intent(inout) :: row
@@ -389,10 +429,12 @@ contains
       real(wp), intent(in) :: bounds(:)   !! the error bound of q at each root (0: Hill's method)
       real(wp), intent(in) :: spacing
       type(system_boundary_t), allocatable, intent(inout) :: found(:)
+      type(side_check_t), allocatable, intent(out) :: sides_found(:)  !! the sides of each of `found`
       type(side_check_t) :: sides
       real(wp) :: gap, cap, start, scale, slope, lo, hi, close
       integer :: k, first, last
       logical :: stable_below, stable_above
+      allocate (sides_found(0))
       first = 1
       do while (first <= size(candidates))
          ! the cluster of candidates within their errors of each other
@@ -430,6 +472,7 @@ contains
             if (.not. sides%decided) then
                if (candidates(k)%route /= route_hill) candidates(k)%status = status_failed
                found = [found, candidates(k)]
+               sides_found = [sides_found, sides]
                cycle
             end if
             stable_below = sides%below%verdict == verdict_stable
@@ -437,6 +480,7 @@ contains
             if (stable_below .and. stable_above) cycle
             if (.not. (stable_below .or. stable_above)) candidates(k)%kind = -candidates(k)%kind
             found = [found, candidates(k)]
+            sides_found = [sides_found, sides]
          end do
          first = last + 1
       end do
