@@ -9,9 +9,10 @@
 !>   = −β Σ_h B̂_h c_{k−h} in β, its blocks n × n, the harmonics P̂_h, B̂_h of K's two parts
 !>   (p + βb) taken from K at 2H + 2 points of the period (exact for H harmonics), |k| ≤ K
 !>   modes, solved by LAPACK zggev. The truncation is checked by a second solve with more
-!>   modes: a β whose two values differ by more than 1e-8 max(1, |β|) is dropped, the
-!>   difference is its error estimate; `check` is the distance of the nearest multiplier
-!>   from ±1 at it.
+!>   modes: a β whose two values differ by more than 1e-8 max(1, |β|) is dropped; its error
+!>   estimate is that difference plus the eigen-solve's rounding, ε_mach times the pencil's
+!>   largest entries (ν² M at the highest mode, K) over B's; `check` is the distance of the
+!>   nearest multiplier from ±1 at it.
 !> - The other edges by root-finding on a signed quantity q, negative inside an unstable
 !>   region (hillstab_curves_system_edges): Broucke's discriminant D = a₁² − 4a₂ + 8
 !>   (Hamiltonian, n = 2: `route_discriminant`), the nearest two z = λ + 1/λ's Re (z_k − z_l)²
@@ -93,7 +94,7 @@ contains
       real(wp), allocatable, intent(out) :: estimates(:)  !! their error estimates
       type(error_t), allocatable, intent(out) :: error    !! err_singular when LAPACK fails
       real(wp), allocatable :: coarse(:), fine(:), ph(:, :, :), bh(:, :, :)
-      real(wp) :: scale, omega, nu_top
+      real(wp) :: scale, omega, nu_top, rounding
       integer :: h, modes, k
       h = system%drive_harmonics()
       allocate (betas(0), estimates(0))
@@ -111,11 +112,17 @@ contains
       if (allocated(error)) return
       call solve(modes + max(6, 2*h), fine, error)
       if (allocated(error)) return
+      ! the eigen-solve's own rounding: the pencil's largest entries, ν² M at the highest mode
+      ! and K, over B's (the truncation difference alone misses it)
+      rounding = epsilon(1.0_wp)*((real(modes + max(6, 2*h), wp)*omega)**2*maxval(abs(form%m)) + &
+                                  maxval(abs(ph)) + max(abs(beta_min), abs(beta_max))*maxval(abs(bh)))/ &
+                 max(maxval(abs(bh(:, :, 0))), tiny(1.0_wp))
       do k = 1, size(fine)
          if (size(coarse) == 0) exit
          if (minval(abs(coarse - fine(k))) <= 1.0e-8_wp*max(1.0_wp, abs(fine(k)))) then
             betas = [betas, fine(k)]
-            estimates = [estimates, max(minval(abs(coarse - fine(k))), epsilon(1.0_wp)*max(1.0_wp, abs(fine(k))))]
+            estimates = [estimates, max(minval(abs(coarse - fine(k))), epsilon(1.0_wp)*max(1.0_wp, abs(fine(k)))) + &
+                         rounding]
          end if
       end do
       call sort_pairs(betas, estimates)
