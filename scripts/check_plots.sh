@@ -94,7 +94,8 @@ mass = 'm', damping = 'c', frequency = 'W', alpha = 'W', beta = 'k1' /" \
 scene eq_regions "&scene task = 'regions', model = 'equation', tolerance = 1e-8, output = 'eq' /" \
    "&equation parameters = 'm = 2.5, c = 0.3, k0 = 40, k1 = 0, W = 10', stiffness = 'k0 + k1*cos(W*t) + 5*sin(2*W*t)', \
 mass = 'm', damping = 'c', frequency = 'W', alpha = 'W', beta = 'k1' /" \
-   "&chart alpha_min = 2.0, alpha_max = 30.0, n_alpha = 30, beta_min = 0.0, beta_max = 80.0, n_beta = 30 /"
+   "&chart alpha_min = 2.0, alpha_max = 30.0, n_alpha = 30, beta_min = 0.0, beta_max = 80.0, n_beta = 30 /" \
+   "&regions order = 2 /"
 OMP_NUM_THREADS=2 "$hillstab" --quiet exact.nml paper.nml points.nml coefficient.nml damped.nml curves.nml \
    curves_paper.nml m_exact.nml m_formula.nml m_segments.nml m_curves.nml swing_1.nml swing_2.nml swing_3.nml map.nml \
    section_1.nml section_2.nml spring.nml spring_critical.nml sys_chart.nml sys_curves.nml eq_chart.nml eq_regions.nml
