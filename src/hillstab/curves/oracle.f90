@@ -39,8 +39,9 @@ module hillstab_curves_oracle
    private
    public :: oracle_t, scalar_oracle_t, system_oracle_t, oracle_sample_t
 
-   !> Nodes of a period for the mean of the undriven coefficient.
-   integer, parameter :: mean_nodes = 256
+   !> Nodes of a period for the mean of the undriven coefficient (exact for its harmonics up
+   !> to 31; beyond, a first approximation as the mean itself is).
+   integer, parameter :: mean_nodes = 32
 
    !> One evaluation of the distance.
    type :: oracle_sample_t
