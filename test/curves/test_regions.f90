@@ -5,7 +5,8 @@
 !> the same equation); its principal region's width at a small drive against Bolotin's
 !> first approximation; the undamped Mathieu model's regions at the resonances (kπ/2)² with
 !> their edges on GSL's characteristic values; the tips of a damped column of three modes
-!> against a scan-and-bisect on the largest multiplier; the task's file against the library
+!> against a scan-and-bisect on the largest multiplier and against an independent reference
+!> (numpy and scipy: data/reference/column_tips.dat); the task's file against the library
 !> and its header rerunning it; bad input refused naming the file, the group and the variable.
 module test_regions
    use hillstab_core_kinds, only: wp, pi, pi2
@@ -40,6 +41,7 @@ contains
          new_unittest("bolotin_principal_width", bolotin_principal_width), &
          new_unittest("undamped_mathieu_theory", undamped_mathieu_theory), &
          new_unittest("column_tips_against_scan", column_tips_against_scan), &
+         new_unittest("column_tips_against_reference", column_tips_against_reference), &
          new_unittest("task_file", task_file), &
          new_unittest("bad_input_refused", bad_input_refused)])
    end function collect_regions
@@ -225,6 +227,25 @@ contains
       end do
    end subroutine undamped_mathieu_theory
 
+   !> The damped column of three modes (data/scenes/column_regions.nml): x'' + C x' + (W −
+   !> (P0 + P1 cos Om t) S) x = 0, W = diag(1, 16, 81), C = 2ζ diag(1, 4, 9), ζ = 0.01, P0 = 0.3;
+   !> Om on α, P1 on β.
+   subroutine damped_column(column, error)
+      type(equations_system_t), intent(out) :: column         !! the column
+      type(error_t), allocatable, intent(out) :: error        !! set when it is refused
+      call column%set_values("n", [3.0_wp], error)
+      if (.not. allocated(error)) &
+         call column%set_text("matrices", "W = [1, 0, 0; 0, 16, 0; 0, 0, 81], S = [1, 0.3, 0.1; 0.3, 4, 0.4; "// &
+                              "0.1, 0.4, 9], Z = [1, 0, 0; 0, 4, 0; 0, 0, 9]", error)
+      if (.not. allocated(error)) call column%set_text("parameters", "P0 = 0.3, P1 = 0, Om = 2, zeta = 0.01", error)
+      if (.not. allocated(error)) call column%set_text("stiffness", "W - (P0 + P1*cos(Om*t))*S", error)
+      if (.not. allocated(error)) call column%set_text("damping", "2*zeta*Z", error)
+      if (.not. allocated(error)) call column%set_text("frequency", "Om", error)
+      if (.not. allocated(error)) call column%set_text("alpha", "Om", error)
+      if (.not. allocated(error)) call column%set_text("beta", "P1", error)
+      if (.not. allocated(error)) call column%check_values(error)
+   end subroutine damped_column
+
    !> The damped column of three modes (data/scenes/column_equations.nml): the principal tips
    !> of modes 1 and 2 and the sum tip ω₁ + ω₂ against a scan of 21 frequencies around each,
    !> the critical P1 at each by bisection on the largest |λ| of all multipliers (to 1e-10),
@@ -237,16 +258,7 @@ contains
       type(region_t), allocatable :: regions(:)
       type(error_t), allocatable :: error
       integer :: k, r, which(3)
-      call column%set_values("n", [3.0_wp], error)
-      call column%set_text("matrices", "W = [1, 0, 0; 0, 16, 0; 0, 0, 81], S = [1, 0.3, 0.1; 0.3, 4, 0.4; "// &
-                           "0.1, 0.4, 9], Z = [1, 0, 0; 0, 4, 0; 0, 0, 9]", error)
-      call column%set_text("parameters", "P0 = 0.3, P1 = 0, Om = 2, zeta = 0.01", error)
-      call column%set_text("stiffness", "W - (P0 + P1*cos(Om*t))*S", error)
-      call column%set_text("damping", "2*zeta*Z", error)
-      call column%set_text("frequency", "Om", error)
-      call column%set_text("alpha", "Om", error)
-      call column%set_text("beta", "P1", error)
-      call column%check_values(error)
+      call damped_column(column, error)
       call check(ctx, .not. allocated(error), "the column")
       if (allocated(error)) return
       allocate (oracle%system, source=column)
@@ -322,6 +334,62 @@ contains
          log_largest = floquet%log_lambda_max
       end function log_largest
    end subroutine column_tips_against_scan
+
+   !> The damped column's tips against data/reference/column_tips.dat (made by
+   !> data/reference/make_column_tips.py, numpy and scipy, no code of this library: monodromies
+   !> by DOP853 at rtol 1e-12, the critical P1 by brentq to 1e-11, minimised over Om by bounded
+   !> Brent; self-consistent to 4e-12 between rtol 1e-12 and 1e-11): six tips up to order 2
+   !> over Om in [0.5, 20] (the principal regions of modes 1–3, the second-order regions of
+   !> modes 1 and 2, the sum ω₁ + ω₂), each found and confirmed, its P1 within 1e-6 relative
+   !> and its Om within 1e-3 relative of the reference. Oracle tolerance 1e-10.
+   subroutine column_tips_against_reference(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: path = "data/reference/column_tips.dat"
+      character(len=1024), allocatable :: lines(:)
+      type(equations_system_t) :: column
+      type(system_oracle_t) :: oracle
+      type(region_t), allocatable :: regions(:)
+      type(error_t), allocatable :: error
+      integer :: k, line, kind, order, modes(2), ios, match, checked
+      real(wp) :: om, p1, worst_drive, worst_frequency
+      lines = read_lines(path)
+      call check(ctx, size(lines) > 0, "reads "//path)
+      call damped_column(column, error)
+      call check(ctx, .not. allocated(error), "the column")
+      if (allocated(error)) return
+      allocate (oracle%system, source=column)
+      oracle%drive_axis = along_beta
+      oracle%method = system_method_t(tolerance=1.0e-10_wp)
+      call find_regions(oracle, 0.5_wp, 20.0_wp, 0.0_wp, 1.5_wp, 2, 1.0e-10_wp, 32, regions, error)
+      call check(ctx, .not. allocated(error), "regions")
+      if (allocated(error)) return
+      worst_drive = 0.0_wp
+      worst_frequency = 0.0_wp
+      checked = 0
+      do line = 1, size(lines)
+         if (len_trim(lines(line)) == 0 .or. lines(line)(1:1) == "#") cycle
+         read (lines(line), *, iostat=ios) kind, order, modes, om, p1
+         call check(ctx, ios == 0, "reads "//trim(lines(line)))
+         if (ios /= 0) cycle
+         match = 0
+         do k = 1, size(regions)
+            if (regions(k)%kind == kind .and. regions(k)%order == order .and. all(regions(k)%modes == modes)) match = k
+         end do
+         call check(ctx, match > 0, "a region for "//trim(lines(line)))
+         if (match == 0) cycle
+         checked = checked + 1
+         call check(ctx, regions(match)%status == region_found, "tip found and confirmed: "//trim(lines(line)))
+         call check(ctx, abs(regions(match)%drive - p1) <= 1.0e-6_wp*p1, "tip P1 "// &
+                    real_text(regions(match)%drive)//" against "//trim(lines(line)))
+         call check(ctx, abs(regions(match)%frequency - om) <= 1.0e-3_wp*om, "tip Om "// &
+                    real_text(regions(match)%frequency)//" against "//trim(lines(line)))
+         worst_drive = max(worst_drive, abs(regions(match)%drive - p1)/p1)
+         worst_frequency = max(worst_frequency, abs(regions(match)%frequency - om)/om)
+      end do
+      call check(ctx, checked == 6, "six reference tips checked")
+      print '(4x,a,i0,a,es9.2,a,es9.2)', "column tips: ", checked, " against the reference; worst relative P1 ", &
+         worst_drive, ", Om ", worst_frequency
+   end subroutine column_tips_against_reference
 
    !> Task `regions` on the damped Mathieu equation: one line per region with the columns
    !> named after the axes, its values those of `find_regions`, and its header rerunning it.
