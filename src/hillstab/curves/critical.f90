@@ -80,7 +80,7 @@ module hillstab_curves_critical
    !> fraction of T) without changing sign.
    real(wp), parameter :: near_fraction = 0.05_wp
    !> Distances beyond this are those of an overflowed S (no secant, no slope through them).
-   real(wp), parameter :: big = 1.0e300_wp
+   real(wp), parameter :: big = 1.0e150_wp
 
 contains
 
@@ -294,7 +294,7 @@ contains
          ! where S overflowed at an end)
          c = 0.5_wp*(a + b)
          if (max(abs(fa), abs(fb)) < big) then
-            c = (fa*b - fb*a)/(fa - fb)
+            c = a + (b - a)*(fa/(fa - fb))
             if (.not. (c > a + 0.01_wp*width .and. c < b - 0.01_wp*width)) c = 0.5_wp*(a + b)
          end if
          call sample(model, line, c, method, sc, error)

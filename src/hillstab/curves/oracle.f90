@@ -239,7 +239,7 @@ contains
       call self%coordinates(f, 0.0_wp, alpha, beta)
       period = self%model%period()
       tau = [(period*real(j - 1, wp)/real(mean_nodes, wp), j=1, mean_nodes)]
-      mean = sum(self%model%coefficient(alpha, beta, tau))/real(mean_nodes, wp)
+      mean = sum(self%model%coefficient(alpha, beta, tau)/real(mean_nodes, wp))
       if (.not. (abs(mean) < huge(1.0_wp))) then
          call set_error(error, err_invalid_parameter, "the undriven coefficient is not finite")
          return

@@ -497,7 +497,13 @@ contains
       if (allocated(error)) return
       h = max(1.0e-3_wp*abs(d0), 1.0e-6_wp*(s%d_max - s%d_min))
       ! the last root's slope predicts this one: the first step goes a little beyond it
-      if (s%slope > 0.0_wp .and. abs(s0%g) < 1.0e300_wp) h = max(h, 1.2_wp*abs(s0%g)/s%slope)
+      if (s%slope > 0.0_wp) then
+         if (abs(s0%g) < s%slope*(s%d_max - s%d_min)) then
+            h = max(h, 1.2_wp*abs(s0%g)/s%slope)
+         else
+            h = s%d_max - s%d_min
+         end if
+      end if
       do iteration = 1, 200
          if (s0%g > 0.0_wp) then
             d1 = max(s%d_min, d0 - h)
@@ -564,7 +570,8 @@ contains
       type(oracle_sample_t), intent(in) :: sa, sb
       real(wp), intent(out) :: x, x_error
       type(error_t), allocatable, intent(out) :: error
-      real(wp), parameter :: big = 1.0e300_wp
+      !> distances beyond this are those of an overflowed monodromy: no secant, no slope
+      real(wp), parameter :: big = 1.0e150_wp
       real(wp) :: a, b, fa, fb, ga, gb, fc, width, slope, bound
       type(oracle_sample_t) :: sc
       integer :: iteration, kept
@@ -584,7 +591,7 @@ contains
          if (width <= s%tolerance*max(1.0_wp, abs(a), abs(b))) exit
          x = 0.5_wp*(a + b)
          if (max(abs(fa), abs(fb)) < big .and. fa /= fb) then
-            x = (fa*b - fb*a)/(fa - fb)
+            x = a + (b - a)*(fa/(fa - fb))
             if (.not. (x > a + 0.01_wp*width .and. x < b - 0.01_wp*width)) x = 0.5_wp*(a + b)
          end if
          if (along_drive) then
@@ -706,7 +713,7 @@ contains
          if (abs(x - xm) <= tol2 - 0.5_wp*(b - a)) exit
          ! the three best points' parabola dips no deeper below the best value than its error
          if (iteration > 3 .and. parabola_gap(x, w, v, fx, fw, fv) <= ex) exit
-         if (abs(e) > tol1) then
+         if (abs(e) > tol1 .and. max(abs(fx), abs(fv), abs(fw)) < none) then
             rr = (x - w)*(fx - fv)
             q = (x - v)*(fx - fw)
             p = (x - v)*q - (x - w)*rr
@@ -715,8 +722,7 @@ contains
             q = abs(q)
             rr = e
             e = d
-            if (abs(p) >= abs(0.5_wp*q*rr) .or. p <= q*(a - x) .or. p >= q*(b - x) .or. &
-                max(abs(fx), abs(fv), abs(fw)) >= none) then
+            if (abs(p) >= abs(0.5_wp*q*rr) .or. p <= q*(a - x) .or. p >= q*(b - x)) then
                e = merge(a - x, b - x, x >= xm)
                d = golden*e
             else
