@@ -453,7 +453,7 @@ contains
       call refused(equation, "&regions order = 9 /", "regions", "order", "1 to")
       call refused(equation, "&regions n_samples = 1 /", "regions", "n_samples", "2 to")
       call refused(equation, "&regions drive = 'gamma' /", "regions", "drive", "'alpha', 'beta' or 'auto'")
-      call refused(equation, "&regions drive = 'alpha' /", "regions", "drive", "no drive")
+      call refused(equation, "&regions drive = 'alpha' /", "regions", "drive", "undriven problem")
       call refused("&equation parameters = 'zeta = 0.01, h = 0, W = 2', stiffness = '1 + h + cos(W*t)', "// &
                    "damping = '2*zeta', frequency = 'W', alpha = 'W', beta = 'h' /", "&regions /", "regions", "drive", &
                    "no drive")

@@ -146,16 +146,17 @@ contains
    end subroutine coordinates
 
    !> Whether the drive changes the problem's time dependence at f: the coefficient (a system's
-   !> stiffness) at drive 1 less that at drive 0 is not constant over a period.
-   logical function driven(self, f)
+   !> stiffness) at drive d less that at drive 0 is not constant over a period (both points
+   !> checked by `check` beforehand).
+   logical function driven(self, f, d)
       class(oracle_t), intent(in) :: self
-      real(wp), intent(in) :: f
+      real(wp), intent(in) :: f, d
       integer, parameter :: nodes = 64
       real(wp) :: a0, b0, a1, b1, tau(nodes), dq(nodes), period, scale
       real(wp), allocatable :: p0(:, :), q0(:, :), p1(:, :), q1(:, :), first(:, :), delta(:, :)
       integer :: j, n
       call self%coordinates(f, 0.0_wp, a0, b0)
-      call self%coordinates(f, 1.0_wp, a1, b1)
+      call self%coordinates(f, d, a1, b1)
       driven = .false.
       select type (self)
       type is (scalar_oracle_t)
@@ -236,6 +237,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: tau(mean_nodes), alpha, beta, mean, period
       integer :: j
+      call self%check(f, 0.0_wp, error)
+      if (allocated(error)) return
       call self%coordinates(f, 0.0_wp, alpha, beta)
       period = self%model%period()
       tau = [(period*real(j - 1, wp)/real(mean_nodes, wp), j=1, mean_nodes)]

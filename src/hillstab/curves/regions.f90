@@ -239,6 +239,12 @@ contains
          call set_error(error, err_invalid_parameter, "tolerance: must lie in (0, 1)")
          return
       end if
+      call oracle%check(f_min, 0.0_wp, error)
+      if (.not. allocated(error)) call oracle%check(f_max, 0.0_wp, error)
+      if (allocated(error)) then
+         error%message = "the undriven problem (drive 0) lies outside the domain: "//error%message
+         return
+      end if
       call oracle%check(f_min, d_min, error)
       if (.not. allocated(error)) call oracle%check(f_max, d_max, error)
       if (.not. allocated(error)) call oracle%check(f_min, d_max, error)

@@ -522,7 +522,7 @@ contains
       p(self%i_beta) = beta
       omega = self%drive%value(p)
       m = self%m%value(p)
-      if (.not. (ieee_is_finite(omega) .and. ieee_is_finite(m))) return
+      if (.not. (ieee_is_finite(omega) .and. ieee_is_finite(m) .and. omega > 0.0_wp .and. m > 0.0_wp)) return
       if (self%from_period) omega = 2.0_wp*pi/omega
       call self%k%evaluate([pi*tau/omega], k, failure, scalars=p)
       if (allocated(failure)) return

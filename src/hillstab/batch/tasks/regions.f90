@@ -160,7 +160,15 @@ contains
             end if
          end do
       end do
-      if (.not. oracle%driven(0.5_wp*(f(1) + f(2)))) &
+      do i = 1, 2
+         call oracle%check(f(i), 0.0_wp, cause)
+         if (allocated(cause)) then
+            call fail(error, path, "regions", "drive", "the undriven problem ("//d_name//" = 0) lies outside "// &
+                      "the domain (the other axis?): "//trim(cause%message))
+            return
+         end if
+      end do
+      if (.not. oracle%driven(f(1), d(2))) &
          call fail(error, path, "regions", "drive", "the coefficient's time dependence does not change with "// &
                    d_name//": no drive to search (the other axis?)")
    end subroutine check_ranges
