@@ -70,7 +70,7 @@ module hillstab_curves_oracle
          class(oracle_t), intent(in) :: self
          real(wp), intent(in) :: f, d   !! frequency-like coordinate, drive
          integer, intent(in) :: side    !! scalar models: +1, −1 or 0 (either)
-         !> systems: the multipliers' argument/π in [0, 1] the family's instability sets in at
+         !> for systems, the multipliers' argument/π in [0, 1] the family's instability sets in at
          !> (the modulus of the multipliers nearest it); negative: the largest modulus of all
          real(wp), intent(in) :: argument
          type(oracle_sample_t), intent(out) :: s
