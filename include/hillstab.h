@@ -330,11 +330,13 @@ int hillstab_system_chart_scaled(const hillstab_system *system, double alpha_min
  * d_max), unconfirmed, open below (unstable at d_min already), theory (undamped and the
  * undriven problem constant in time: the tip is the resonance itself at drive 0), same
  * signature (a difference region of two modes of equal Krein signature: closed, not
- * searched). */
-enum { HILLSTAB_REGION_SIMPLE = 1, HILLSTAB_REGION_SUM = 2, HILLSTAB_REGION_DIFFERENCE = 3 };
+ * searched), uncovered (kind unassigned: a stretch of d_max unstable outside every region's
+ * edges, found by 400 samples of it; its edges there, its tip not searched). */
+enum { HILLSTAB_REGION_UNASSIGNED = 0, HILLSTAB_REGION_SIMPLE = 1, HILLSTAB_REGION_SUM = 2, HILLSTAB_REGION_DIFFERENCE = 3 };
 enum {
   HILLSTAB_REGION_FOUND = 0, HILLSTAB_REGION_CLOSED = 1, HILLSTAB_REGION_UNCONFIRMED = 2,
-  HILLSTAB_REGION_OPEN_BELOW = 3, HILLSTAB_REGION_THEORY = 4, HILLSTAB_REGION_SAME_SIGNATURE = 5
+  HILLSTAB_REGION_OPEN_BELOW = 3, HILLSTAB_REGION_THEORY = 4, HILLSTAB_REGION_SAME_SIGNATURE = 5,
+  HILLSTAB_REGION_UNCOVERED = 6
 };
 /* The regions of a model's equation with damping epsilon (0 for a model with its own);
  * S by method (HILLSTAB_METHOD_*). */

@@ -152,7 +152,16 @@
 !>   `hillstab_region_open_below` = [[hillstab_curves_regions:region_open_below]],
 !>   `hillstab_region_theory` = [[hillstab_curves_regions:region_theory]],
 !>   `hillstab_region_same_signature` = [[hillstab_curves_regions:region_same_signature]],
+!>   `hillstab_region_uncovered` = [[hillstab_curves_regions:region_uncovered]],
+!>   `hillstab_region_unassigned` = [[hillstab_curves_regions:region_unassigned]],
 !>   `hillstab_max_region_order` = [[hillstab_curves_regions:max_region_order]]
+!> - [[hillstab_curves_region_edges]]: [[hillstab_curves_region_edges:edge_point_t]],
+!>   [[hillstab_curves_region_edges:trace_edges]], [[hillstab_curves_region_edges:edge_status_name]],
+!>   `hillstab_edge_boundary` = [[hillstab_curves_region_edges:edge_boundary]],
+!>   `hillstab_edge_overlap` = [[hillstab_curves_region_edges:edge_overlap]],
+!>   `hillstab_edge_unconfirmed` = [[hillstab_curves_region_edges:edge_unconfirmed]],
+!>   `hillstab_edge_range_end` = [[hillstab_curves_region_edges:edge_range_end]],
+!>   `hillstab_edge_tip` = [[hillstab_curves_region_edges:edge_tip]]
 !> - [[hillstab_pendulum_equations]]: [[hillstab_pendulum_equations:pendulum_t]],
 !>   [[hillstab_pendulum_equations:pendulum_from_chart]],
 !>   [[hillstab_pendulum_equations:pendulum_initial_state]], [[hillstab_pendulum_equations:pendulum_energy]],
@@ -272,8 +281,12 @@ module hillstab
       hillstab_region_difference => region_difference, hillstab_region_found => region_found, &
       hillstab_region_closed => region_closed, hillstab_region_unconfirmed => region_unconfirmed, &
       hillstab_region_open_below => region_open_below, hillstab_region_theory => region_theory, &
-      hillstab_region_same_signature => region_same_signature, &
-      hillstab_max_region_order => max_region_order
+      hillstab_region_same_signature => region_same_signature, hillstab_region_uncovered => region_uncovered, &
+      hillstab_region_unassigned => region_unassigned, hillstab_max_region_order => max_region_order
+   use hillstab_curves_region_edges, only: edge_point_t, trace_edges, edge_status_name, &
+      hillstab_edge_boundary => edge_boundary, hillstab_edge_overlap => edge_overlap, &
+      hillstab_edge_unconfirmed => edge_unconfirmed, hillstab_edge_range_end => edge_range_end, &
+      hillstab_edge_tip => edge_tip
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart, pendulum_initial_state, pendulum_energy, &
       pendulum_angle, pendulum_radius, pendulum_bounce, pendulum_system_t
    use hillstab_pendulum_analysis, only: bounce_multipliers_t, bounce_multipliers, onset_periods, pendulum_watch_t, &

@@ -106,15 +106,18 @@ def critical_drives(beta, alpha, model="elastic", epsilon=0.0, method="auto", to
     return CriticalDrives(axis=name, **arrays)
 
 
-#: HILLSTAB_REGION_*: the kinds of resonance regions (2ν_i = k, ν_i + ν_j = k, |ν_i − ν_j| = k)
-REGION_SIMPLE, REGION_SUM, REGION_DIFFERENCE = 1, 2, 3
+#: HILLSTAB_REGION_*: the kinds of resonance regions (2ν_i = k, ν_i + ν_j = k, |ν_i − ν_j| = k;
+#: unassigned: unstable at the top drive outside every predicted region)
+REGION_UNASSIGNED, REGION_SIMPLE, REGION_SUM, REGION_DIFFERENCE = 0, 1, 2, 3
 #: HILLSTAB_REGION_*: the statuses of a region's tip
 REGION_FOUND, REGION_CLOSED, REGION_UNCONFIRMED, REGION_OPEN_BELOW, REGION_THEORY, REGION_SAME_SIGNATURE = 0, 1, 2, 3, 4, 5
+REGION_UNCOVERED = 6
 #: the kinds and statuses in words, as the library names them
-REGION_KIND_NAMES = {REGION_SIMPLE: "simple", REGION_SUM: "sum", REGION_DIFFERENCE: "difference"}
+REGION_KIND_NAMES = {REGION_UNASSIGNED: "unassigned", REGION_SIMPLE: "simple", REGION_SUM: "sum",
+                     REGION_DIFFERENCE: "difference"}
 REGION_STATUS_NAMES = {REGION_FOUND: "found", REGION_CLOSED: "closed", REGION_UNCONFIRMED: "unconfirmed",
                        REGION_OPEN_BELOW: "open below", REGION_THEORY: "theory",
-                       REGION_SAME_SIGNATURE: "same signature"}
+                       REGION_SAME_SIGNATURE: "same signature", REGION_UNCOVERED: "uncovered"}
 
 _capi._declare("hillstab_regions", ctypes.c_int, _capi._model_p, ctypes.c_int, ctypes.c_double, ctypes.c_double,
                ctypes.c_double, ctypes.c_double, ctypes.c_double, ctypes.c_int, ctypes.c_double, ctypes.c_int,
@@ -138,7 +141,9 @@ class Regions:
       drive over its window, `REGION_UNCONFIRMED`, `REGION_OPEN_BELOW` unstable at the bottom
       of the range already, `REGION_THEORY` undamped and constant when undriven: the tip is
       the resonance at drive 0, `REGION_SAME_SIGNATURE` a difference region of two modes of
-      equal Krein signature, closed and not searched; in words ``status_name``) and
+      equal Krein signature, closed and not searched, `REGION_UNCOVERED` a stretch of the top
+      drive unstable outside every region's edges, of kind `REGION_UNASSIGNED`, its edges
+      there and its tip not searched; in words ``status_name``) and
       ``evaluations`` (distances computed).
 
     ``drive_axis`` is 1 (the drive is α, the frequency β) or 2 (the drive is β, the frequency

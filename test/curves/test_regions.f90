@@ -4,7 +4,8 @@
 !> and equals a brute-force scan of W with the critical drive at each (a second search on
 !> the same equation); its principal region's width at a small drive against Bolotin's
 !> first approximation; the undamped Mathieu model's regions at the resonances (kπ/2)² with
-!> their edges on GSL's characteristic values; the tips of a damped column of three modes
+!> their edges on GSL's characteristic values, and its instability below a_0 (no resonance)
+!> found by the sweep of the top drive; the tips of a damped column of three modes
 !> against a scan-and-bisect on the largest multiplier and against an independent reference
 !> (numpy and scipy: data/reference/column_tips.dat); the task's file against the library
 !> and its header rerunning it; bad input refused naming the file, the group and the variable.
@@ -26,6 +27,7 @@ module test_regions
    use hillstab_curves_regions
    use hillstab_testing
    use hillstab_test_files, only: run_text_scene, check_rerun
+   use hillstab_test_problems, only: damped_mathieu, damped_column
    use hillstab_test_scratch, only: scratch_prefix, read_lines, file_exists, delete_file
    implicit none
    private
@@ -45,25 +47,6 @@ contains
          new_unittest("task_file", task_file), &
          new_unittest("bad_input_refused", bad_input_refused)])
    end function collect_regions
-
-   !> x'' + 2ζ x' + (1 + h cos W t) x = 0 over (W, h), the drive h on β.
-   subroutine damped_mathieu(zeta, oracle, error)
-      real(wp), intent(in) :: zeta
-      type(scalar_oracle_t), intent(out) :: oracle
-      type(error_t), allocatable, intent(out) :: error
-      type(equation_model_t) :: e
-      call e%set_text("parameters", "zeta = "//real_text(zeta)//", h = 0, W = 2", error)
-      if (.not. allocated(error)) call e%set_text("stiffness", "1 + h*cos(W*t)", error)
-      if (.not. allocated(error)) call e%set_text("damping", "2*zeta", error)
-      if (.not. allocated(error)) call e%set_text("frequency", "W", error)
-      if (.not. allocated(error)) call e%set_text("alpha", "W", error)
-      if (.not. allocated(error)) call e%set_text("beta", "h", error)
-      if (.not. allocated(error)) call e%check_values(error)
-      if (allocated(error)) return
-      allocate (oracle%model, source=e)
-      oracle%drive_axis = along_beta
-      oracle%method = method_t(tolerance=1.0e-12_wp)
-   end subroutine damped_mathieu
 
    !> The principal region (order 1, simple) of a region list; 0 when there is none.
    pure integer function principal(regions, mode)
@@ -210,7 +193,17 @@ contains
       call find_regions(oracle, -1.0_wp, 40.0_wp, 0.0_wp, 4.0_wp, 4, 1.0e-12_wp, 32, regions, error)
       call check(ctx, .not. allocated(error), "regions")
       if (allocated(error)) return
-      call check(ctx, size(regions) == 4, "four regions, got "//real_text(real(size(regions), wp)))
+      ! and below a_0(4), unstable without a resonance: the stretch of the top drive outside them
+      call check(ctx, size(regions) == 5, "four regions and one stretch, got "//real_text(real(size(regions), wp)))
+      if (size(regions) == 5) then
+         call check(ctx, regions(5)%kind == region_unassigned .and. regions(5)%status == region_uncovered, &
+                    "the stretch below a_0 uncovered")
+         call mathieu_transition_beta(mathieu_kind_a, 0, 4.0_wp, a, error)
+         call check(ctx, .not. allocated(error), "GSL's a_0")
+         if (allocated(error)) return
+         call check(ctx, regions(5)%edges(1) == -1.0_wp .and. regions(5)%clipped(1), "from the range's end")
+         call check_close(ctx, regions(5)%edges(2), a, rel=1.0e-8_wp, message="up to a_0(4)")
+      end if
       do k = 1, min(4, size(regions))
          call check(ctx, regions(k)%order == k .and. regions(k)%kind == region_simple, "region "//real_text(real(k, wp)))
          call check_close(ctx, regions(k)%predicted, (k*pi/2.0_wp)**2, rel=1.0e-12_wp, message="its resonance")
@@ -226,25 +219,6 @@ contains
          call check_close(ctx, regions(k)%edges(2), high, rel=1.0e-8_wp, message="upper edge at alpha = 4")
       end do
    end subroutine undamped_mathieu_theory
-
-   !> The damped column of three modes (data/scenes/column_regions.nml): x'' + C x' + (W −
-   !> (P0 + P1 cos Om t) S) x = 0, W = diag(1, 16, 81), C = 2ζ diag(1, 4, 9), ζ = 0.01, P0 = 0.3;
-   !> Om on α, P1 on β.
-   subroutine damped_column(column, error)
-      type(equations_system_t), intent(out) :: column         !! the column
-      type(error_t), allocatable, intent(out) :: error        !! set when it is refused
-      call column%set_values("n", [3.0_wp], error)
-      if (.not. allocated(error)) &
-         call column%set_text("matrices", "W = [1, 0, 0; 0, 16, 0; 0, 0, 81], S = [1, 0.3, 0.1; 0.3, 4, 0.4; "// &
-                              "0.1, 0.4, 9], Z = [1, 0, 0; 0, 4, 0; 0, 0, 9]", error)
-      if (.not. allocated(error)) call column%set_text("parameters", "P0 = 0.3, P1 = 0, Om = 2, zeta = 0.01", error)
-      if (.not. allocated(error)) call column%set_text("stiffness", "W - (P0 + P1*cos(Om*t))*S", error)
-      if (.not. allocated(error)) call column%set_text("damping", "2*zeta*Z", error)
-      if (.not. allocated(error)) call column%set_text("frequency", "Om", error)
-      if (.not. allocated(error)) call column%set_text("alpha", "Om", error)
-      if (.not. allocated(error)) call column%set_text("beta", "P1", error)
-      if (.not. allocated(error)) call column%check_values(error)
-   end subroutine damped_column
 
    !> The damped column of three modes (data/scenes/column_equations.nml): the principal tips
    !> of modes 1 and 2 and the sum tip ω₁ + ω₂ against a scan of 21 frequencies around each,

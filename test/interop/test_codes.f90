@@ -34,6 +34,7 @@ module test_codes
       block_antiperiodic_odd, block_periodic, block_antiperiodic
    use hillstab_curves_regions, only: region_simple, region_sum, region_difference, region_found, region_closed, &
       region_unconfirmed, region_open_below, region_theory, region_same_signature, region_kind_name, &
+      region_unassigned, region_uncovered, &
       region_status_name
    use hillstab_interop_capi_batch, only: value_trace, value_log_abs_trace, value_log10_abs_trace, value_overflow, &
       value_stable, value_stable_paper, value_lambda_max, value_log_modulus_max, value_log_modulus_min, &
@@ -371,6 +372,8 @@ contains
       call add_both("REGION_OPEN_BELOW", region_open_below)
       call add_both("REGION_THEORY", region_theory)
       call add_both("REGION_SAME_SIGNATURE", region_same_signature)
+      call add_both("REGION_UNASSIGNED", region_unassigned)
+      call add_both("REGION_UNCOVERED", region_uncovered)
       call add("", "STATUS_OK", status_ok)
       call add("", "STATUS_ROUNDOFF", status_roundoff)
       call add("", "STATUS_FAILED", status_failed)

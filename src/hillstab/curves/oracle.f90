@@ -70,8 +70,9 @@ module hillstab_curves_oracle
          class(oracle_t), intent(in) :: self
          real(wp), intent(in) :: f, d   !! frequency-like coordinate, drive
          integer, intent(in) :: side    !! scalar models: +1, −1 or 0 (either)
-         !> for systems, the multipliers' argument/π in [0, 1] the family's instability sets in at
-         !> (the modulus of the multipliers nearest it); negative: the largest modulus of all
+         !> for systems, the multipliers' argument/π the family's instability sets in at: 0 the
+         !> real positive multipliers, 1 the real negative, between the complex ones (a
+         !> combination region); negative: the largest modulus of all
          real(wp), intent(in) :: argument
          type(oracle_sample_t), intent(out) :: s
          !> a point the method cannot compute
@@ -389,25 +390,43 @@ contains
       if (.not. allocated(error)) call check_system_point(self%system, alpha, beta, error)
    end subroutine system_check
 
-   !> ln|λ| of the family at `argument` (see `distance_interface`): the largest modulus among
-   !> the multipliers whose argument/π lies nearest it (within 1e-3 of the nearest), or of all.
+   !> ln|λ| of the family at `argument` (see `distance_interface`), or of all multipliers when
+   !> it is negative. A simple region's multipliers leave the circle as a real pair: of sign
+   !> +1 for argument 0, −1 for argument 1; the family is those real multipliers, and where
+   !> there are none (the pair still complex) the nearest multiplier's ln|λ| less π times its
+   !> argument's distance, continuous through the collision on the axis. A combination
+   !> region's (argument in (0, 1)) leave it as complex multipliers of two modes, which,
+   !> damped, need not share an argument: the family is every multiplier off the real axis
+   !> (−1 where there is none). Regions of one family in one window are told apart by the
+   !> window only.
    pure real(wp) function family_log_modulus(floquet, argument) result(g)
       type(system_floquet_t), intent(in) :: floquet
       real(wp), intent(in) :: argument
-      real(wp) :: angle(size(floquet%multipliers)), modulus(size(floquet%multipliers)), nearest
-      integer :: i
+      real(wp) :: modulus(size(floquet%multipliers)), distance(size(floquet%multipliers))
+      integer :: i, nearest
       if (argument < 0.0_wp .or. size(floquet%multipliers) == 0) then
          g = floquet%log_lambda_max
          return
       end if
       modulus = abs(floquet%multipliers)
-      angle = abs(atan2(aimag(floquet%multipliers), real(floquet%multipliers)))/pi
-      nearest = minval(abs(angle - argument), mask=modulus > 0.0_wp)
       g = -huge(1.0_wp)
+      if (argument == 0.0_wp .or. argument == 1.0_wp) then
+         do i = 1, size(modulus)
+            if (modulus(i) > 0.0_wp .and. aimag(floquet%multipliers(i)) == 0.0_wp .and. &
+                (real(floquet%multipliers(i)) > 0.0_wp .eqv. argument == 0.0_wp)) &
+               g = max(g, floquet%log_scale + log(modulus(i)))
+         end do
+         if (g > -huge(1.0_wp)) return
+         distance = abs(abs(atan2(aimag(floquet%multipliers), real(floquet%multipliers)))/pi - argument)
+         nearest = minloc(distance, dim=1, mask=modulus > 0.0_wp)
+         if (nearest > 0) g = floquet%log_scale + log(modulus(nearest)) - pi*distance(nearest)
+         return
+      end if
       do i = 1, size(modulus)
-         if (modulus(i) > 0.0_wp .and. abs(angle(i) - argument) <= nearest + 1.0e-3_wp) &
+         if (modulus(i) > 0.0_wp .and. aimag(floquet%multipliers(i)) /= 0.0_wp) &
             g = max(g, floquet%log_scale + log(modulus(i)))
       end do
+      if (g == -huge(1.0_wp)) g = -1.0_wp
    end function family_log_modulus
 
    !> A system without gyroscopic terms whose averaged undriven stiffness is positive definite

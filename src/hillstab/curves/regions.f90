@@ -42,13 +42,16 @@ module hillstab_curves_regions
    implicit none
    private
    public :: region_t, predict_regions, find_regions, region_kind_name, region_status_name
-   public :: region_simple, region_sum, region_difference
-   public :: region_found, region_closed, region_unconfirmed, region_open_below, region_theory, region_same_signature
+   public :: region_simple, region_sum, region_difference, region_unassigned
+   public :: region_found, region_closed, region_unconfirmed, region_open_below, region_theory, region_same_signature, &
+      region_uncovered
    public :: max_region_order
+   public :: search_t, region_search, evaluate, bracketed_root, peak_at, region_kind_text
 
    integer, parameter :: region_simple = 1      !! 2ν_i = k
    integer, parameter :: region_sum = 2         !! ν_i + ν_j = k
    integer, parameter :: region_difference = 3  !! |ν_i − ν_j| = k
+   integer, parameter :: region_unassigned = 0  !! unstable at the top drive outside every predicted region
 
    integer, parameter :: region_found = 0        !! tip found and confirmed on both sides
    integer, parameter :: region_closed = 1       !! stable up to d_max over the whole window
@@ -58,10 +61,14 @@ module hillstab_curves_regions
    !> a difference region of two modes of equal Krein signature (no gyroscopic terms, the
    !> undriven stiffness positive definite): closed, its multipliers pass without leaving the circle
    integer, parameter :: region_same_signature = 5
+   !> a stretch of the top drive unstable outside every predicted region's edges (kind
+   !> region_unassigned): its edges there, its tip not searched
+   integer, parameter :: region_uncovered = 6
 
    !> Highest order searched.
    integer, parameter :: max_region_order = 8
-   !> Samples of the frequency range for the predictions.
+   !> Samples of the frequency range for the predictions, and of the top drive for instability
+   !> outside every region.
    integer, parameter :: predict_samples = 400
 
    !> One resonance region.
@@ -116,6 +123,8 @@ contains
          name = "sum"
       case (region_difference)
          name = "difference"
+      case (region_unassigned)
+         name = "unassigned"
       case default
          name = "unknown"
       end select
@@ -138,6 +147,8 @@ contains
          name = "theory"
       case (region_same_signature)
          name = "same signature"
+      case (region_uncovered)
+         name = "uncovered"
       case default
          name = "unknown"
       end select
@@ -214,7 +225,8 @@ contains
 
    !> The predicted regions (`predict_regions`) and, for each, its tip, its width at d_max and
    !> its status, searched on OpenMP threads (one region a thread).
-   subroutine find_regions(oracle, f_min, f_max, d_min, d_max, order, tolerance, n_samples, regions, error)
+   subroutine find_regions(oracle, f_min, f_max, d_min, d_max, order, tolerance, n_samples, regions, error, cover, &
+                           swept)
       class(oracle_t), intent(in) :: oracle   !! the problem
       real(wp), intent(in) :: f_min, f_max    !! the frequency range
       real(wp), intent(in) :: d_min, d_max    !! the drive range
@@ -224,9 +236,20 @@ contains
       type(region_t), allocatable, intent(out) :: regions(:)  !! the regions, ascending in f
       !> err_invalid_parameter naming the argument; a point the method cannot compute
       type(error_t), allocatable, intent(out) :: error
+      !> samples of the top drive for instability outside every region (`cover_top`; default
+      !> 400, 0 none)
+      integer, intent(in), optional :: cover
+      integer, intent(out), optional :: swept  !! distances the sweep computed
       character(len=300), allocatable :: failures(:)
       type(error_t), allocatable :: cause
-      integer :: j
+      integer :: j, n_cover, n_swept
+      n_cover = predict_samples
+      if (present(cover)) n_cover = cover
+      if (present(swept)) swept = 0
+      if (n_cover /= 0 .and. (n_cover < 2 .or. n_cover > 100000)) then
+         call set_error(error, err_invalid_parameter, "cover: must be 0 or 2 to 100000, got "//integer_text(n_cover))
+         return
+      end if
       if (.not. (d_max > d_min)) then
          call set_error(error, err_invalid_parameter, "the drive range is empty or not finite")
          return
@@ -267,7 +290,98 @@ contains
             return
          end if
       end do
+      if (n_cover == 0) return
+      call cover_top(oracle, f_min, f_max, d_min, d_max, tolerance, n_cover, regions, n_swept, error)
+      if (present(swept)) swept = n_swept
    end subroutine find_regions
+
+   !> The top drive sampled at n frequencies on the problem's overall distance (those within a
+   !> region's edges there skipped): each stretch of unstable samples that meets no region's
+   !> edges is appended as a region of kind region_unassigned and status region_uncovered, its
+   !> ends refined, so that no instability at the top of the range wider than the samples'
+   !> spacing goes unreported, whatever drifted out of its window or lies beyond the order.
+   subroutine cover_top(oracle, f_min, f_max, d_min, d_max, tolerance, n, regions, swept, error)
+      class(oracle_t), intent(in) :: oracle
+      real(wp), intent(in) :: f_min, f_max, d_min, d_max, tolerance
+      integer, intent(in) :: n
+      type(region_t), allocatable, intent(inout) :: regions(:)
+      integer, intent(out) :: swept
+      type(error_t), allocatable, intent(out) :: error
+      type(oracle_sample_t) :: samples(n)
+      type(search_t) :: s
+      type(region_t) :: r
+      character(len=300) :: failures(n)
+      type(error_t), allocatable :: cause
+      real(wp) :: f(n), step, x, x_error
+      logical :: unstable(n), inside(n)
+      integer :: j, first, last, k
+      s = search_t(d_min=d_min, d_max=d_max, tolerance=tolerance, side=0, argument=-1.0_wp)
+      step = (f_max - f_min)/real(n - 1, wp)
+      f = [(f_min + step*real(j - 1, wp), j=1, n)]
+      f(n) = f_max
+      do j = 1, n
+         inside(j) = any([(regions(k)%edges(2) > regions(k)%edges(1) .and. regions(k)%edges(1) <= f(j) .and. &
+                           regions(k)%edges(2) >= f(j), k=1, size(regions))])
+      end do
+      swept = count(.not. inside)
+      failures = ""
+      !$omp parallel do schedule(dynamic) default(shared) private(j, cause)
+      do j = 1, n
+         if (inside(j)) then
+            samples(j) = oracle_sample_t(g=-1.0_wp, bound=0.0_wp)
+         else
+            call oracle%distance(f(j), d_max, 0, -1.0_wp, samples(j), cause)
+            if (allocated(cause)) failures(j) = cause%message
+         end if
+      end do
+      !$omp end parallel do
+      do j = 1, n
+         if (len_trim(failures(j)) > 0) then
+            call set_error(error, err_invalid_parameter, "the top drive at "//real_text(f(j))//": "//trim(failures(j)))
+            return
+         end if
+      end do
+      unstable = samples%g > samples%bound
+      j = 1
+      do while (j <= n)
+         if (.not. unstable(j)) then
+            j = j + 1
+            cycle
+         end if
+         first = j
+         do while (j < n)
+            if (.not. unstable(j + 1)) exit
+            j = j + 1
+         end do
+         last = j
+         j = j + 1
+         ! met by a region open at the top (one sample's spacing of slack)
+         if (any([(regions(k)%edges(2) > regions(k)%edges(1) .and. regions(k)%edges(1) <= f(last) + step .and. &
+                   regions(k)%edges(2) >= f(first) - step, k=1, size(regions))])) cycle
+         r = region_t(kind=region_unassigned, order=0, modes=[0, 0], predicted=0.0_wp, &
+                      window=[f(max(1, first - 1)), f(min(n, last + 1))], drive=d_max, &
+                      status=region_uncovered, evaluations=last - first + 1)
+         r%edges = [f(first), f(last)]
+         r%clipped = [first == 1, last == n]
+         if (first > 1) then
+            call bracketed_root(oracle, s, .false., d_max, f(first - 1), f(first), samples(first - 1), &
+                                samples(first), x, x_error, error)
+            if (allocated(error)) return
+            r%edges(1) = x
+         end if
+         if (last < n) then
+            call bracketed_root(oracle, s, .false., d_max, f(last), f(last + 1), samples(last), samples(last + 1), &
+                                x, x_error, error)
+            if (allocated(error)) return
+            r%edges(2) = x
+         end if
+         r%frequency = 0.5_wp*(r%edges(1) + r%edges(2))
+         r%frequency_error = 0.5_wp*(r%edges(2) - r%edges(1))
+         r%evaluations = r%evaluations + s%count
+         s%count = 0
+         regions = [regions, r]
+      end do
+   end subroutine cover_top
 
    !> The tip, width and status of one predicted region.
    subroutine search_region(oracle, d_min, d_max, tolerance, n_samples, r, error)
@@ -280,13 +394,8 @@ contains
       type(oracle_sample_t) :: top, below, above
       real(wp) :: f0, c0, c_error, f_error
       logical :: exact
-      s = search_t(d_min=d_min, d_max=d_max, tolerance=tolerance, n_samples=n_samples)
-      if (oracle_is_scalar(oracle)) then
-         s%side = merge(1, -1, mod(r%order, 2) == 0)
-      else
-         call family_argument(oracle, r, s%argument, error)
-         if (allocated(error)) return
-      end if
+      call region_search(oracle, r, d_min, d_max, tolerance, n_samples, s, error)
+      if (allocated(error)) return
       call undriven_constant(oracle, r%predicted, exact)
       if (r%kind == region_difference .and. oracle%signatures_agree(r%predicted)) then
          r%status = region_same_signature
@@ -348,6 +457,43 @@ contains
       call top_edges(oracle, s, r, error)
       r%evaluations = s%count
    end subroutine search_region
+
+   !> A search of region r: the ranges and the family of tongues its distance follows (a
+   !> scalar model's side (−1)^k, a system's multipliers' argument at the resonance).
+   subroutine region_search(oracle, r, d_min, d_max, tolerance, n_samples, s, error)
+      class(oracle_t), intent(in) :: oracle      !! the problem
+      type(region_t), intent(in) :: r            !! a predicted region
+      real(wp), intent(in) :: d_min, d_max       !! the drive range
+      real(wp), intent(in) :: tolerance          !! target of roots, relative to max(1, |x|)
+      integer, intent(in) :: n_samples           !! samples of the drive range for a first root
+      type(search_t), intent(out) :: s           !! the search, no distance computed yet
+      type(error_t), allocatable, intent(out) :: error  !! the undriven problem cannot be computed
+      s = search_t(d_min=d_min, d_max=d_max, tolerance=tolerance, n_samples=n_samples)
+      if (oracle_is_scalar(oracle)) then
+         s%side = merge(1, -1, mod(r%order, 2) == 0)
+      else
+         call family_argument(oracle, r, s%argument, error)
+      end if
+   end subroutine region_search
+
+   !> A region's resonance as text: "2 w1 = 1 Om" style, the frequency named `frequency`.
+   function region_kind_text(r, frequency) result(text)
+      type(region_t), intent(in) :: r                !! the region
+      character(len=*), intent(in) :: frequency      !! the frequency's name
+      character(len=:), allocatable :: text
+      character(len=:), allocatable :: k
+      k = integer_text(r%order)
+      select case (r%kind)
+      case (region_simple)
+         text = "2 w"//integer_text(r%modes(1))//" = "//k//" "//frequency
+      case (region_sum)
+         text = "w"//integer_text(r%modes(1))//" + w"//integer_text(r%modes(2))//" = "//k//" "//frequency
+      case (region_difference)
+         text = "w"//integer_text(r%modes(2))//" - w"//integer_text(r%modes(1))//" = "//k//" "//frequency
+      case default
+         text = "unassigned"
+      end select
+   end function region_kind_text
 
    !> The argument/π, folded into [0, 1], of the multipliers at which a system's region sets
    !> in: 2ν_i at its resonance (k mod 2 for a simple region; the common argument of the two
@@ -649,6 +795,19 @@ contains
       real(wp), intent(inout) :: f
       type(oracle_sample_t), intent(out) :: peak
       type(error_t), allocatable, intent(out) :: error
+      call peak_at(oracle, s, window, s%d_max, f, peak, error)
+   end subroutine top_peak
+
+   !> Golden-section search of the window for the largest distance at drive d, stopping at the
+   !> first positive one (the region open there) or at 1e-6 of the window: f, the distance there.
+   subroutine peak_at(oracle, s, window, d, f, peak, error)
+      class(oracle_t), intent(in) :: oracle              !! the problem
+      type(search_t), intent(inout) :: s                 !! the search (its count grows)
+      real(wp), intent(in) :: window(2)                  !! the frequencies searched
+      real(wp), intent(in) :: d                          !! the drive
+      real(wp), intent(out) :: f                         !! the best frequency found
+      type(oracle_sample_t), intent(out) :: peak         !! the distance there
+      type(error_t), allocatable, intent(out) :: error   !! a distance that cannot be computed
       real(wp), parameter :: ratio = 0.6180339887498949_wp
       real(wp) :: a, b, x1, x2
       type(oracle_sample_t) :: s1, s2
@@ -657,9 +816,9 @@ contains
       b = window(2)
       x1 = b - ratio*(b - a)
       x2 = a + ratio*(b - a)
-      call evaluate(oracle, s, x1, s%d_max, s1, error)
+      call evaluate(oracle, s, x1, d, s1, error)
       if (allocated(error)) return
-      call evaluate(oracle, s, x2, s%d_max, s2, error)
+      call evaluate(oracle, s, x2, d, s2, error)
       if (allocated(error)) return
       do iteration = 1, 60
          if (s1%g > 0.0_wp .or. s2%g > 0.0_wp) exit
@@ -669,13 +828,13 @@ contains
             x2 = x1
             s2 = s1
             x1 = b - ratio*(b - a)
-            call evaluate(oracle, s, x1, s%d_max, s1, error)
+            call evaluate(oracle, s, x1, d, s1, error)
          else
             a = x1
             x1 = x2
             s1 = s2
             x2 = a + ratio*(b - a)
-            call evaluate(oracle, s, x2, s%d_max, s2, error)
+            call evaluate(oracle, s, x2, d, s2, error)
          end if
          if (allocated(error)) return
       end do
@@ -686,7 +845,7 @@ contains
          f = x2
          peak = s2
       end if
-   end subroutine top_peak
+   end subroutine peak_at
 
    !> Brent's minimisation of c(f) over the window from f (c(f) = c): the tip's f and c, the
    !> error of c (the root's plus the spread of c over the final bracket) and of f (the

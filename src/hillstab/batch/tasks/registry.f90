@@ -22,7 +22,7 @@ module hillstab_batch_tasks_registry
    use hillstab_batch_tasks_system, only: system_chart_task, system_points_task, system_task_names
    use hillstab_batch_tasks_system_coefficient, only: system_coefficient_task
    use hillstab_batch_tasks_system_boundaries, only: system_boundaries_task
-   use hillstab_batch_tasks_regions, only: regions_task
+   use hillstab_batch_tasks_regions, only: regions_task, edges_task
    implicit none
    private
    public :: task_entry_t, task_entries, task_names, task_names_text, new_task
@@ -39,7 +39,7 @@ contains
    function task_entries() result(entries)
       type(task_entry_t), allocatable :: entries(:)
       ! one entry at a time: an array constructor of them would leak their strings (gfortran 12)
-      allocate (entries(8))
+      allocate (entries(9))
       entries(1) = task_entry_t("chart", "a stability chart over an (alpha, beta) grid: S, stability, multipliers, "// &
                                 "exponent")
       entries(2) = task_entry_t("points", "the chart's columns at (alpha, beta) points listed in a file")
@@ -61,6 +61,9 @@ contains
       entries(8) = task_entry_t("regions", "every resonance region up to &regions order over the ranges of &chart "// &
                                 "(one axis the frequency, the other the drive): its tip (the least drive at which "// &
                                 "it opens, and the frequency there), kind, width at the top drive and status")
+      entries(9) = task_entry_t("edges", "the boundaries of the regions of task regions in the same plane, traced "// &
+                                "from each tip up to the top drive at &edges levels, each point checked on both "// &
+                                "sides (a stability boundary, or an overlap of two regions)")
    end function task_entries
 
    !> The task names, blank-padded to a common length.
@@ -108,6 +111,7 @@ contains
             case ("coefficient"); allocate (task, source=system_coefficient_task())
             case ("boundaries"); allocate (task, source=system_boundaries_task())
             case ("regions"); allocate (task, source=regions_task())
+            case ("edges"); allocate (task, source=edges_task())
             case default
                call set_error(error, err_input, "task '"//name//"' does not run on a system of Hill equations "// &
                   "(model = 'system' takes "//system_task_names//")")
@@ -124,6 +128,7 @@ contains
       case ("lyapunov"); allocate (task, source=lyapunov_task())
       case ("poincare"); allocate (task, source=poincare_task())
       case ("regions"); allocate (task, source=regions_task())
+      case ("edges"); allocate (task, source=edges_task())
       case default
          call set_error(error, err_input, "unknown task '"//name//"' (expected "//task_names_text(", ")//")")
       end select

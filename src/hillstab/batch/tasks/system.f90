@@ -54,7 +54,7 @@ module hillstab_batch_tasks_system
    integer(int64), parameter :: header_bytes = 1000000
 
    !> The tasks a system scene takes.
-   character(len=*), parameter :: system_task_names = "chart, points, coefficient, boundaries, regions"
+   character(len=*), parameter :: system_task_names = "chart, points, coefficient, boundaries, regions, edges"
 
    !> The fixed columns (the exponents mu_1 … mu_n follow `argument`).
    integer, parameter :: n_fixed = 14
