@@ -96,9 +96,16 @@ scene eq_regions "&scene task = 'regions', model = 'equation', tolerance = 1e-8,
 mass = 'm', damping = 'c', frequency = 'W', alpha = 'W', beta = 'k1' /" \
    "&chart alpha_min = 2.0, alpha_max = 30.0, n_alpha = 30, beta_min = 0.0, beta_max = 80.0, n_beta = 30 /" \
    "&regions order = 2 /"
+# and their boundaries from each tip
+scene eq_edges "&scene task = 'edges', model = 'equation', tolerance = 1e-8, output = 'eq' /" \
+   "&equation parameters = 'm = 2.5, c = 0.3, k0 = 40, k1 = 0, W = 10', stiffness = 'k0 + k1*cos(W*t) + 5*sin(2*W*t)', \
+mass = 'm', damping = 'c', frequency = 'W', alpha = 'W', beta = 'k1' /" \
+   "&chart alpha_min = 2.0, alpha_max = 30.0, n_alpha = 30, beta_min = 0.0, beta_max = 80.0, n_beta = 30 /" \
+   "&regions order = 2 /" "&edges levels = 8 /"
 OMP_NUM_THREADS=2 "$hillstab" --quiet exact.nml paper.nml points.nml coefficient.nml damped.nml curves.nml \
    curves_paper.nml m_exact.nml m_formula.nml m_segments.nml m_curves.nml swing_1.nml swing_2.nml swing_3.nml map.nml \
-   section_1.nml section_2.nml spring.nml spring_critical.nml sys_chart.nml sys_curves.nml eq_chart.nml eq_regions.nml
+   section_1.nml section_2.nml spring.nml spring_critical.nml sys_chart.nml sys_curves.nml eq_chart.nml eq_regions.nml \
+   eq_edges.nml
 # the programs' own reports go to made.log
 "$onset_law" out/onset_law.dat >made.log 2>&1
 "$area" --quick >>made.log 2>&1
@@ -137,7 +144,7 @@ paper_curves='other_paper_boundaries.dat'; points='other_points.dat'" ;;
       figA) echo "exact='m_exact_chart.dat'; formula='m_formula_chart.dat'; segments4='m_segments_chart.dat'; out='figA%s.png'" ;;
       lyapunov) echo "file='other_lyapunov.dat'; curves='other_exact_boundaries.dat'" ;;
       onset) echo "file='out/onset_law.dat'" ;;
-      regions) echo "chart='eq_chart.dat'; regions='eq_regions.dat'" ;;
+      regions) echo "chart='eq_chart.dat'; regions='eq_regions.dat'; edges='eq_edges.dat'" ;;
       poincare) echo "file='section_1_poincare.dat'; chaotic='section_2_poincare.dat'" ;;
       spring_chart) echo "file='lab_chart.dat'; critical='lab_boundaries.dat'" ;;
       strutt) echo "file='m_boundaries.dat'" ;;

@@ -23,7 +23,7 @@ scenes=(default_exact default_paper fig4_points fig2_coefficient
         boundaries_chart boundaries_exact boundaries_paper boundaries_mathieu
         lyapunov_map lyapunov_fig4 poincare_regular poincare_chaotic
         own_pivot_chart own_pivot_boundaries own_sampled_chart own_sampled_boundaries
-        meissner_chart meissner_boundaries modulated_chart modulated_boundaries kapitza_chart column_equations column_regions
+        meissner_chart meissner_boundaries modulated_chart modulated_boundaries kapitza_chart column_equations column_regions column_edges
         system_pendula system_pendula_boundaries system_column system_chain)
 plots=(default fig2 fig3 figA damped fig4 boundaries fig3_boundaries strutt lyapunov poincare spring_chart system_chart
        system_boundaries)
@@ -86,7 +86,7 @@ for system in column chain; do
 done
 # a system written in physical time: Bolotin's damped column over (Om, P1)
 gnuplot -e "file='out/column_equations_chart.dat'; out='out/column_equations.png'" plots/system_chart.gp
-# its resonance regions: every tip and width over that chart
+# its resonance regions: every tip, width and boundary over that chart
 gnuplot plots/regions.gp
 seconds=$(( $(date +%s) - start ))
 

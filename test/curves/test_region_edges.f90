@@ -37,6 +37,7 @@ contains
          new_unittest("column_against_rk", column_against_rk), &
          new_unittest("overlap_labelled", overlap_labelled), &
          new_unittest("task_file", task_file), &
+         new_unittest("chart_lists_regions", chart_lists_regions), &
          new_unittest("bad_input_refused", bad_input_refused)])
    end function collect_region_edges
 
@@ -327,6 +328,61 @@ contains
       end do
       call delete_file(written)
    end subroutine task_file
+
+   !> A chart of the damped Mathieu equation over (W, h) on a coarse grid (W spacing 0.25):
+   !> its header lists each region of order 1 and 2 with its tip as the library finds it, and
+   !> flags the second-order region, narrower at the top than the spacing, as such; a chart of
+   !> a built-in model lists none.
+   subroutine chart_lists_regions(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=300) :: lines(3)
+      character(len=:), allocatable :: written, out
+      character(len=1024), allocatable :: file_lines(:), listed(:)
+      type(scalar_oracle_t) :: oracle
+      type(region_t), allocatable :: regions(:)
+      type(error_t), allocatable :: error
+      real(wp) :: tip(2)
+      integer :: k, at
+      out = scratch_prefix("edges_chart")
+      lines(1) = "&scene task = 'chart', model = 'equation', tolerance = 1e-12, output = '"//out//"' /"
+      lines(2) = "&equation parameters = 'zeta = 0.02, nu = 1, h = 0, W = 2', stiffness = 'nu^2 + h*cos(W*t)', "// &
+                 "damping = '2*zeta*nu', frequency = 'W', alpha = 'W', beta = 'h' /"
+      lines(3) = "&chart alpha_min = 0.5, alpha_max = 3.0, n_alpha = 11, beta_min = 0.0, beta_max = 0.6, n_beta = 5 /"
+      call run_text_scene("edges_chart", lines, error, written)
+      call check(ctx, .not. allocated(error), "the chart runs")
+      if (allocated(error)) return
+      file_lines = read_lines(written)
+      listed = pack(file_lines, index(file_lines, "# region ") == 1)
+      call damped_mathieu(0.02_wp, oracle, error)
+      if (.not. allocated(error)) &
+         call find_regions(oracle, 0.5_wp, 3.0_wp, 0.0_wp, 0.6_wp, 2, 1.0e-12_wp, 32, regions, error, cover=0)
+      call check(ctx, .not. allocated(error), "the library's regions")
+      if (allocated(error)) return
+      call check(ctx, size(listed) == 2 .and. size(regions) == 2, "two regions listed, got "// &
+                 real_text(real(size(listed), wp)))
+      do k = 1, min(size(listed), size(regions))
+         at = index(listed(k), "tip W ")
+         call check(ctx, at > 0, "the tip in W and h: "//trim(listed(k)))
+         if (at == 0) cycle
+         read (listed(k)(at + 6:), *) tip(1)
+         at = index(listed(k), ", h ")
+         read (listed(k)(at + 4:), *) tip(2)
+         call check_close(ctx, tip(1), regions(k)%frequency, rel=1.0e-5_wp, message="the tip's W")
+         call check_close(ctx, tip(2), regions(k)%drive, rel=1.0e-5_wp, message="the tip's h")
+         call check(ctx, (index(listed(k), "NARROWER") > 0) .eqv. &
+                    (regions(k)%edges(2) - regions(k)%edges(1) < 0.25_wp), "narrow exactly when narrower than 0.25")
+      end do
+      call check(ctx, any(index(listed, "NARROWER") > 0), "the second-order region flagged")
+      call delete_file(written)
+      lines(1) = "&scene task = 'chart', model = 'mathieu', output = '"//out//"' /"
+      lines(2) = "&chart alpha_min = 0.0, alpha_max = 3.0, n_alpha = 5, beta_min = 0.0, beta_max = 5.0, n_beta = 5 /"
+      call run_text_scene("edges_chart", lines(1:2), error, written)
+      call check(ctx, .not. allocated(error), "a Mathieu chart runs")
+      if (allocated(error)) return
+      file_lines = read_lines(written)
+      call check(ctx, .not. any(index(file_lines, "# region") == 1), "no regions listed for a built-in model")
+      call delete_file(written)
+   end subroutine chart_lists_regions
 
    !> `&edges levels` out of range, refused naming the file, the group and the variable, with
    !> nothing written; the library refuses it too.

@@ -172,8 +172,9 @@ contains
       if (.not. scene%model%takes_scene_damping()) then
          ! its curves are traced in beta at each alpha from a Q whose beta is its mean stiffness
          call fail(error, file%path, "scene", "task", "task 'boundaries' takes the models of (alpha, beta) "// &
-            "(elastic, mathieu, meissner, fourier, sampled, modulated); the "//scene%model%name()//" model: chart "// &
-            "it (task 'chart'), take its points (task 'points'), or find its critical drives along an axis "// &
+            "(elastic, mathieu, meissner, fourier, sampled, modulated); the "//scene%model%name()//" model: its "// &
+            "regions' boundaries in its own plane are task 'edges' (traced from each region's tip; task 'regions' "// &
+            "the tips), or chart it (task 'chart'), or find its critical drives along an axis "// &
             "(hillstab_critical_drives_along, Python critical_drives)")
          return
       end if

@@ -31,6 +31,7 @@ module hillstab_batch_tasks_chart
       point_amplitude, verdict_lines, &
       scene_chart_columns, check_method_runs, warn_inaccurate, failed_points_error, chart_line_length, evaluate_point, &
       header_bytes, text_row_bytes, binary_row_bytes, col_physical
+   use hillstab_batch_tasks_regions, only: chart_region_lines
    use hillstab_batch_output_file, only: output_file_t, finish_output, discard_output, write_header, write_text, &
       write_records, joined_lines, join_lines
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
@@ -193,8 +194,8 @@ contains
          return
       end if
       call chart_betas(self%grid, all_betas, beta_texts)
-      call write_header(file, chart_header(scene, outside(self%grid), columns), chart_names(columns), &
-                        error, names_line=scene%names_line, records=[n_beta, n_alpha])
+      call write_header(file, chart_header(scene, outside(self%grid), columns, chart_region_lines(scene, self%grid)), &
+                        chart_names(columns), error, names_line=scene%names_line, records=[n_beta, n_alpha])
       if (allocated(error)) then
          call discard_output(file)
          return
@@ -631,8 +632,8 @@ contains
       if (allocated(error)) return
       call check_method_runs(scene, self%grid%alpha_min, self%grid%beta_min, error)
       if (allocated(error)) return
-      call write_header(file, chart_header(scene, outside(self%grid), columns), chart_names(columns), &
-                        error, names_line=scene%names_line)
+      call write_header(file, chart_header(scene, outside(self%grid), columns, chart_region_lines(scene, self%grid)), &
+                        chart_names(columns), error, names_line=scene%names_line)
    end subroutine chart_open_units
 
    !> (α, β) of point k, numbered row by row.

@@ -594,10 +594,11 @@ contains
 
    !> Header lines of a chart or points file: the common header, the method, one line per
    !> column written, the placeholders of failed rows.
-   function chart_header(scene, outside, columns) result(lines)
+   function chart_header(scene, outside, columns, regions) result(lines)
       type(scene_t), intent(in) :: scene  !! a validated scene
       logical, intent(in) :: outside  !! some point lies outside the physical domain
       type(chart_layout_t), intent(in) :: columns  !! the file's columns
+      character(len=*), intent(in), optional :: regions(:)  !! lines on the regions of the chart's ranges
       character(len=:), allocatable :: lines(:)
       character(len=:), allocatable :: per_column(:), placeholder
       character(len=400) :: text(2*n_chart_columns + 3)
@@ -633,7 +634,11 @@ contains
          n = n + 1
          text(n) = "note: this file leaves the physical domain (rows with physical = 0)"
       end if
-      lines = stacked(common_header(scene), text(:n))
+      if (present(regions)) then
+         lines = stacked(common_header(scene), [character(len=400) :: text(:n), regions])
+      else
+         lines = stacked(common_header(scene), text(:n))
+      end if
    end function chart_header
 
    !> Floquet data of one point; `error` only when the point failed.

@@ -18,7 +18,7 @@ module hillstab_batch_tasks_regions
    use hillstab_curves_critical, only: along_alpha, along_beta
    use hillstab_curves_oracle, only: oracle_t, scalar_oracle_t, system_oracle_t
    use hillstab_curves_regions, only: region_t, find_regions, max_region_order, region_kind_text, &
-      region_status_name
+      region_status_name, region_found, region_theory, region_open_below, region_unconfirmed
    use hillstab_curves_region_edges, only: edge_point_t, trace_edges, max_edge_levels
    use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output, scene_header
    use hillstab_batch_scene_declaration, only: group_t, new_group, group_reader_t, var_integer, var_name, &
@@ -28,7 +28,7 @@ module hillstab_batch_tasks_regions
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text
    implicit none
    private
-   public :: regions_task_t, regions_task, edges_task_t, edges_task
+   public :: regions_task_t, regions_task, edges_task_t, edges_task, chart_region_lines
 
    !> `regions`: the resonance regions and their tips.
    type, extends(task_t) :: regions_task_t
@@ -273,6 +273,79 @@ contains
          d = [self%grid%beta_min, self%grid%beta_max]
       end if
    end subroutine ranges
+
+   !> The header lines of a chart of an equation in physical time (model `equation`, or
+   !> `equations` for a system) over (α, β), β its drive: every resonance region up to order
+   !> 2 whose tip is known or not confirmed, with its tip and its width at the top drive, the
+   !> regions narrower there than the α spacing of the grid said to be so (a chart can miss
+   !> them), so that no region disappears from a chart silently. None for other models, a
+   !> single line saying why when the regions cannot be searched (β no drive, the undriven
+   !> problem outside the domain).
+   function chart_region_lines(scene, grid) result(lines)
+      type(scene_t), intent(in) :: scene          !! the chart's scene
+      type(chart_grid_t), intent(in) :: grid      !! its grid
+      character(len=300), allocatable :: lines(:)
+      type(regions_task_t) :: task
+      class(oracle_t), allocatable :: oracle
+      type(region_t), allocatable :: regions(:)
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: f_axis, d_axis, line
+      real(wp) :: spacing, width
+      integer :: k, n
+      logical :: equation
+      allocate (lines(0))
+      if (allocated(scene%system)) then
+         equation = scene%system%name() == "equations"
+      else
+         equation = scene%model%name() == "equation"
+      end if
+      if (.not. equation .or. grid%n_alpha < 2 .or. .not. (grid%beta_max > grid%beta_min)) return
+      task%grid = grid
+      task%drive = along_beta
+      task%order = 2
+      call new_oracle(task, scene, oracle)
+      call check_ranges(task, oracle, scene%source, error)
+      if (.not. allocated(error)) call find_regions(oracle, grid%alpha_min, grid%alpha_max, grid%beta_min, &
+                                                    grid%beta_max, task%order, scene%method%tolerance, &
+                                                    task%n_samples, regions, error, cover=0)
+      if (allocated(error)) then
+         lines = [character(len=300) :: "regions: not listed ("//trim(error%message(1:min(len(error%message), &
+                                        240)))//")"]
+         return
+      end if
+      if (allocated(scene%system)) then
+         f_axis = scene%system%axis_name(1)
+         d_axis = scene%system%axis_name(2)
+      else
+         f_axis = scene%model%axis_name(1)
+         d_axis = scene%model%axis_name(2)
+      end if
+      spacing = abs(grid%alpha_max - grid%alpha_min)/real(grid%n_alpha - 1, wp)
+      n = count(regions%status == region_found .or. regions%status == region_theory .or. &
+                regions%status == region_open_below .or. regions%status == region_unconfirmed)
+      deallocate (lines)
+      allocate (lines(n + 1))
+      lines(1) = "regions up to order 2 (task regions: every order, task edges: their boundaries): "// &
+                 integer_text(n)//" with a tip in the chart's ranges, each with its tip and its width at "// &
+                 d_axis//" = "//trim(format_es(grid%beta_max, 6))
+      n = 1
+      do k = 1, size(regions)
+         if (.not. (regions(k)%status == region_found .or. regions(k)%status == region_theory .or. &
+                    regions(k)%status == region_open_below .or. regions(k)%status == region_unconfirmed)) cycle
+         n = n + 1
+         width = regions(k)%edges(2) - regions(k)%edges(1)
+         line = "region "//region_kind_text(regions(k), f_axis)//": tip "//f_axis//" "// &
+                trim(format_es(regions(k)%frequency, 6))//", "//d_axis//" "//trim(format_es(regions(k)%drive, 6))// &
+                " ("//region_status_name(regions(k)%status)//"); width "//trim(format_es(width, 3))
+         if (regions(k)%status == region_unconfirmed) then
+            line = line//" (its least drive on its window's end, or not confirmed: perhaps a neighbour's flank)"
+         else if (width < spacing) then
+            line = line//": NARROWER than the "//f_axis//" spacing "//trim(format_es(spacing, 3))// &
+                   ", the chart may not show it"
+         end if
+         lines(n) = line
+      end do
+   end function chart_region_lines
 
    !> The scene's problem as an oracle.
    subroutine new_oracle(self, scene, oracle)

@@ -27,6 +27,7 @@ module hillstab_batch_tasks_system
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_method_name
    use hillstab_integrate_system_point, only: system_point
    use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output, scene_header
+   use hillstab_batch_tasks_regions, only: chart_region_lines
    use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_checks, only: max_grid_count
@@ -305,10 +306,11 @@ contains
    end function chosen_names
 
    !> The header lines of a system file: title, the scene, the equation, the columns' meanings.
-   function system_lines(scene, what, chosen) result(lines)
+   function system_lines(scene, what, chosen, regions) result(lines)
       type(scene_t), intent(in) :: scene
       character(len=*), intent(in) :: what
       integer, intent(in) :: chosen(:)
+      character(len=*), intent(in), optional :: regions(:)  !! lines on the regions of a chart's ranges
       character(len=:), allocatable :: lines(:)
       character(len=500), allocatable :: extra(:)
       character(len=14), allocatable :: names(:)
@@ -330,6 +332,7 @@ contains
                            trim(names(chosen(k)))//", the chart's "//trim(merge("alpha", "beta ", chosen(k) == 1))// &
                            " axis"
       end do
+      if (present(regions)) extra = [character(len=500) :: extra, regions]
       lines = scene_header(scene, "hillstab "//version_string//": "//what//" of "// &
                            system_equation_text(scene%system), extra)
    end function system_lines
@@ -535,7 +538,8 @@ contains
       end if
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
-      call write_header(file, system_lines(scene, "stability chart", self%chosen), &
+      call write_header(file, system_lines(scene, "stability chart", self%chosen, &
+                                           chart_region_lines(scene, self%grid)), &
                         chosen_names(scene%system, self%chosen), &
                         error, names_line=scene%names_line, records=[self%grid%n_beta, self%grid%n_alpha])
       failed_total = 0
@@ -666,7 +670,8 @@ contains
          call fail(error, scene%source, "system", "mass", self%form_error)
          return
       end if
-      call write_header(file, system_lines(scene, "stability chart", self%chosen), &
+      call write_header(file, system_lines(scene, "stability chart", self%chosen, &
+                                           chart_region_lines(scene, self%grid)), &
                         chosen_names(scene%system, self%chosen), error, names_line=scene%names_line)
    end subroutine chart_open_units
 
