@@ -876,6 +876,9 @@ contains
          tol1 = 1.0e-2_wp*sqrt(s%tolerance)*abs(x) + 1.0e-12_wp*(window(2) - window(1))
          tol2 = 2.0_wp*tol1
          if (abs(x - xm) <= tol2 - 0.5_wp*(b - a)) exit
+         ! the least drive on the window's end: a neighbour's flank (search_region marks it
+         ! unconfirmed), not worth converging on
+         if (min(x - window(1), window(2) - x) <= edge_fraction*(window(2) - window(1))) exit
          ! the three best points' parabola dips no deeper below the best value than its error
          if (iteration > 3 .and. parabola_gap(x, w, v, fx, fw, fv) <= ex) exit
          if (abs(e) > tol1 .and. max(abs(fx), abs(fv), abs(fw)) < none) then
