@@ -24,8 +24,9 @@ module hillstab_curves_region_edges
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
    use hillstab_core_text, only: integer_text
    use hillstab_curves_oracle, only: oracle_t, oracle_sample_t
-   use hillstab_curves_regions, only: region_t, search_t, region_search, evaluate, bracketed_root, &
-      peak_at, region_found, region_theory, region_open_below, region_kind_name
+   use hillstab_curves_regions, only: region_t, region_search, region_found, region_theory, region_open_below, &
+      region_kind_name
+   use hillstab_curves_region_search, only: search_t, evaluate, bracketed_root, peak_at
    implicit none
    private
    public :: edge_point_t, trace_edges, edge_status_name, max_edge_levels
@@ -177,10 +178,11 @@ contains
          if (.not. found) then
             span = max(previous(2) - previous(1), 1.0e-2_wp*(r%window(2) - r%window(1)))
             near = [max(f_min, previous(1) - span), min(f_max, previous(2) + span)]
-            call peak_at(oracle, s, near, d, inside, sample, error)
+            call peak_at(oracle, s, near, d, 1.0e-6_wp, inside, sample, error)
             if (allocated(error)) return
             if (.not. (sample%g > 0.0_wp)) then
-               call peak_at(oracle, s, [max(f_min, r%window(1)), min(f_max, r%window(2))], d, inside, sample, error)
+               call peak_at(oracle, s, [max(f_min, r%window(1)), min(f_max, r%window(2))], d, 1.0e-6_wp, inside, &
+                            sample, error)
                if (allocated(error)) return
             end if
             ! too narrow to find at this level, or closed again: the next level

@@ -39,6 +39,7 @@ module hillstab_curves_regions
    use hillstab_core_status, only: status_ok
    use hillstab_core_text, only: real_text, integer_text
    use hillstab_curves_oracle, only: oracle_t, oracle_sample_t, scalar_oracle_t, system_oracle_t
+   use hillstab_curves_region_search, only: search_t, evaluate, bracketed_root, peak_at, changes
    implicit none
    private
    public :: region_t, predict_regions, find_regions, region_kind_name, region_status_name
@@ -46,7 +47,7 @@ module hillstab_curves_regions
    public :: region_found, region_closed, region_unconfirmed, region_open_below, region_theory, region_same_signature, &
       region_uncovered
    public :: max_region_order
-   public :: search_t, region_search, evaluate, bracketed_root, peak_at, region_kind_text
+   public :: region_search, region_kind_text
 
    integer, parameter :: region_simple = 1      !! 2ν_i = k
    integer, parameter :: region_sum = 2         !! ν_i + ν_j = k
@@ -87,17 +88,6 @@ module hillstab_curves_regions
       integer :: status = region_found      !! region_found … region_theory
       integer :: evaluations = 0            !! distances computed (monodromies)
    end type region_t
-
-   !> A search: the oracle, the ranges and the side of the family.
-   type :: search_t
-      real(wp) :: d_min = 0.0_wp, d_max = 1.0_wp  !! the drive range
-      real(wp) :: tolerance = 1.0e-10_wp          !! target of roots, relative to max(1, |x|)
-      integer :: side = 0                         !! scalar models' family: ±1; 0 either
-      real(wp) :: argument = -1.0_wp              !! systems' family: the multipliers' argument/π
-      integer :: n_samples = 32                   !! samples of the drive range for the first root
-      integer :: count = 0                        !! distances computed
-      real(wp) :: slope = 0.0_wp                  !! dg/dd at the last root along the drive (0: none yet)
-   end type search_t
 
    !> The natural frequencies at one sample of the frequency range.
    type :: nu_t
@@ -392,7 +382,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(search_t) :: s
       type(oracle_sample_t) :: top, below, above
-      real(wp) :: f0, c0, c_error, f_error
+      real(wp) :: f0, c0, c_error, f_error, e
       logical :: exact
       call region_search(oracle, r, d_min, d_max, tolerance, n_samples, s, error)
       if (allocated(error)) return
@@ -427,6 +417,23 @@ contains
                r%status = region_closed
                r%frequency = f0
                r%drive = d_max
+               r%evaluations = s%count
+               return
+            end if
+            ! open at the top from there to the window's nearer end: a neighbour's flank that
+            ! reaches into the window; its least drive on that end, not confirmed as a tip
+            e = r%window(merge(1, 2, f0 - r%window(1) <= r%window(2) - f0))
+            call evaluate(oracle, s, e, d_max, top, error)
+            if (allocated(error)) return
+            if (top%g > 0.0_wp) then
+               call first_critical(oracle, s, e, c0, c_error, error)
+               if (allocated(error)) return
+               r%frequency = e
+               r%frequency_error = 0.0_wp
+               r%drive = c0
+               r%drive_error = c_error
+               r%status = region_unconfirmed
+               call top_edges(oracle, s, r, error)
                r%evaluations = s%count
                return
             end if
@@ -687,18 +694,6 @@ contains
       c = none
    end subroutine next_critical
 
-   !> The distance at (f, d), counted.
-   subroutine evaluate(oracle, s, f, d, sample, error)
-      class(oracle_t), intent(in) :: oracle
-      type(search_t), intent(inout) :: s
-      real(wp), intent(in) :: f, d
-      type(oracle_sample_t), intent(out) :: sample
-      type(error_t), allocatable, intent(out) :: error
-      call oracle%distance(f, d, s%side, s%argument, sample, error)
-      s%count = s%count + 1
-      if (allocated(error)) error%message = "at ("//real_text(f)//", "//real_text(d)//"): "//error%message
-   end subroutine evaluate
-
    !> The root of the distance in the drive between a (stable, g ≤ 0) and b (g > 0) at f.
    subroutine drive_root(oracle, s, f, a, b, sa, sb, c, c_error, error)
       class(oracle_t), intent(in) :: oracle
@@ -710,83 +705,6 @@ contains
       call bracketed_root(oracle, s, .true., f, a, b, sa, sb, c, c_error, error)
    end subroutine drive_root
 
-   !> The root of the distance along the drive (`along_drive`, at f = fixed) or along f (at
-   !> d = fixed) in [a0, b0], the distance changing sign between the ends: Illinois regula
-   !> falsi to tolerance × max(1, |x|) or until |g| is within its error; the error bound is
-   !> the final bracket or the distance's error over the slope, whichever is larger.
-   subroutine bracketed_root(oracle, s, along_drive, fixed, a0, b0, sa, sb, x, x_error, error)
-      class(oracle_t), intent(in) :: oracle
-      type(search_t), intent(inout) :: s
-      logical, intent(in) :: along_drive
-      real(wp), intent(in) :: fixed, a0, b0
-      type(oracle_sample_t), intent(in) :: sa, sb
-      real(wp), intent(out) :: x, x_error
-      type(error_t), allocatable, intent(out) :: error
-      !> distances beyond this are those of an overflowed monodromy: no secant, no slope
-      real(wp), parameter :: big = 1.0e150_wp
-      real(wp) :: a, b, fa, fb, ga, gb, fc, width, slope, bound
-      type(oracle_sample_t) :: sc
-      integer :: iteration, kept
-      logical :: on_value
-      on_value = .false.
-      a = a0
-      b = b0
-      fa = sa%g
-      fb = sb%g
-      ga = fa
-      gb = fb
-      bound = max(sa%bound, sb%bound)
-      kept = 0
-      x = 0.5_wp*(a + b)
-      do iteration = 1, 200
-         width = b - a
-         if (width <= s%tolerance*max(1.0_wp, abs(a), abs(b))) exit
-         x = 0.5_wp*(a + b)
-         if (max(abs(fa), abs(fb)) < big .and. fa /= fb) then
-            x = a + (b - a)*(fa/(fa - fb))
-            if (.not. (x > a + 0.01_wp*width .and. x < b - 0.01_wp*width)) x = 0.5_wp*(a + b)
-         end if
-         if (along_drive) then
-            call evaluate(oracle, s, fixed, x, sc, error)
-         else
-            call evaluate(oracle, s, x, fixed, sc, error)
-         end if
-         if (allocated(error)) return
-         fc = sc%g
-         bound = sc%bound
-         on_value = abs(fc) <= bound
-         if (on_value) exit
-         if (changes(fa, fc) .or. (fc > 0.0_wp .and. fa == 0.0_wp)) then
-            b = x
-            fb = fc
-            gb = fc
-            if (kept == -1) fa = 0.5_wp*fa
-            kept = -1
-         else
-            a = x
-            fa = fc
-            ga = fc
-            if (kept == 1) fb = 0.5_wp*fb
-            kept = 1
-         end if
-      end do
-      if (.not. (x >= a .and. x <= b)) x = 0.5_wp*(a + b)
-      slope = 0.0_wp
-      if (max(abs(sa%g), abs(sb%g)) < big) slope = abs(sb%g - sa%g)/(b0 - a0)
-      if (b > a .and. max(abs(ga), abs(gb)) < big) slope = abs(gb - ga)/(b - a)
-      x_error = b - a
-      if (slope > 0.0_wp) then
-         if (on_value) then
-            ! |g| within its error at x: the root lies within that error over the slope
-            x_error = min(b - a, 2.0_wp*bound/slope)
-         else
-            x_error = max(b - a, min(2.0_wp*bound/slope, b0 - a0))
-         end if
-      end if
-      x_error = max(x_error, 4.0_wp*spacing(max(1.0_wp, abs(x))))
-      if (along_drive .and. slope > 0.0_wp) s%slope = slope
-   end subroutine bracketed_root
-
    !> Golden-section search of the window for the largest distance at d_max, starting at f.
    subroutine top_peak(oracle, s, window, f, peak, error)
       class(oracle_t), intent(in) :: oracle
@@ -795,57 +713,11 @@ contains
       real(wp), intent(inout) :: f
       type(oracle_sample_t), intent(out) :: peak
       type(error_t), allocatable, intent(out) :: error
-      call peak_at(oracle, s, window, s%d_max, f, peak, error)
+      ! a region open at the top only within 1e-4 of the window around the peak has its tip
+      ! within about (1e-4)² of the top drive (its width grows as the root of the drive's
+      ! excess over the tip): closed up to the top, to that
+      call peak_at(oracle, s, window, s%d_max, 1.0e-4_wp, f, peak, error)
    end subroutine top_peak
-
-   !> Golden-section search of the window for the largest distance at drive d, stopping at the
-   !> first positive one (the region open there) or at 1e-6 of the window: f, the distance there.
-   subroutine peak_at(oracle, s, window, d, f, peak, error)
-      class(oracle_t), intent(in) :: oracle              !! the problem
-      type(search_t), intent(inout) :: s                 !! the search (its count grows)
-      real(wp), intent(in) :: window(2)                  !! the frequencies searched
-      real(wp), intent(in) :: d                          !! the drive
-      real(wp), intent(out) :: f                         !! the best frequency found
-      type(oracle_sample_t), intent(out) :: peak         !! the distance there
-      type(error_t), allocatable, intent(out) :: error   !! a distance that cannot be computed
-      real(wp), parameter :: ratio = 0.6180339887498949_wp
-      real(wp) :: a, b, x1, x2
-      type(oracle_sample_t) :: s1, s2
-      integer :: iteration
-      a = window(1)
-      b = window(2)
-      x1 = b - ratio*(b - a)
-      x2 = a + ratio*(b - a)
-      call evaluate(oracle, s, x1, d, s1, error)
-      if (allocated(error)) return
-      call evaluate(oracle, s, x2, d, s2, error)
-      if (allocated(error)) return
-      do iteration = 1, 60
-         if (s1%g > 0.0_wp .or. s2%g > 0.0_wp) exit
-         if (b - a <= 1.0e-6_wp*(window(2) - window(1))) exit
-         if (s1%g >= s2%g) then
-            b = x2
-            x2 = x1
-            s2 = s1
-            x1 = b - ratio*(b - a)
-            call evaluate(oracle, s, x1, d, s1, error)
-         else
-            a = x1
-            x1 = x2
-            s1 = s2
-            x2 = a + ratio*(b - a)
-            call evaluate(oracle, s, x2, d, s2, error)
-         end if
-         if (allocated(error)) return
-      end do
-      if (s1%g >= s2%g) then
-         f = x1
-         peak = s1
-      else
-         f = x2
-         peak = s2
-      end if
-   end subroutine peak_at
 
    !> Brent's minimisation of c(f) over the window from f (c(f) = c): the tip's f and c, the
    !> error of c (the root's plus the spread of c over the final bracket) and of f (the
@@ -903,7 +775,10 @@ contains
             d = golden*e
          end if
          u = x + merge(d, sign(tol1, d), abs(d) >= tol1)
+         ! c(u) above the best c(x) need not be refined further than that
+         s%stop_above = fx
          call next_critical(oracle, s, u, merge(fx, s%d_max, fx < none), fu, eu, error)
+         s%stop_above = huge(1.0_wp)
          if (allocated(error)) return
          if (fu <= fx) then
             if (u >= x) then
@@ -1009,12 +884,6 @@ contains
          r%edges(direction) = edge
       end do
    end subroutine top_edges
-
-   !> Whether two values have strictly opposite signs.
-   pure logical function changes(a, b)
-      real(wp), intent(in) :: a, b
-      changes = (a > 0.0_wp .and. b < 0.0_wp) .or. (a < 0.0_wp .and. b > 0.0_wp)
-   end function changes
 
    !> Regions ascending in their predicted f (insertion).
    pure subroutine sort_regions(regions)
