@@ -81,8 +81,8 @@ def test_region_kinds_and_statuses():
     python = {name[len("REGION_"):]: getattr(curves, name) for name in dir(curves)
               if name.startswith("REGION_") and not name.endswith("_NAMES")}
     assert python == group("REGION_")
-    kinds = {name: code for name, code in python.items() if code in (1, 2, 3) and name in ("SIMPLE", "SUM",
-                                                                                           "DIFFERENCE")}
+    kinds = {name: code for name, code in python.items() if code in (0, 1, 2, 3) and name in (
+        "UNASSIGNED", "SIMPLE", "SUM", "DIFFERENCE")}
     assert {code: name.lower() for name, code in kinds.items()} == curves.REGION_KIND_NAMES
     statuses = {name: code for name, code in python.items() if name not in kinds}
     assert {code: name.lower().replace("_", " ") for name, code in statuses.items()} == curves.REGION_STATUS_NAMES
