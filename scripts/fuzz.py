@@ -100,7 +100,10 @@ NUMBER = re.compile(r"(?<![A-Za-z_0-9.])[-+]?(\d+\.?\d*|\.\d+)([eEdD][-+]?\d+)?"
 SHRINK = [(re.compile(r"\b(n_alpha|n_beta)\s*=\s*\d+", re.I), lambda m: m.group(1) + " = 7"),
           (re.compile(r"\b(n_tau)\s*=\s*\d+", re.I), lambda m: m.group(1) + " = 41"),
           (re.compile(r"\b(periods)\s*=\s*\d+", re.I), lambda m: m.group(1) + " = 2"),
-          (re.compile(r"\b(samples_per_period)\s*=\s*\d+", re.I), lambda m: m.group(1) + " = 10")]
+          (re.compile(r"\b(samples_per_period)\s*=\s*\d+", re.I), lambda m: m.group(1) + " = 10"),
+          # the regions and their edges: order 1, 3 levels
+          (re.compile(r"\b(levels)\s*=\s*\d+", re.I), lambda m: m.group(1) + " = 3"),
+          (re.compile(r"(&regions\b[^/]*\border)\s*=\s*\d+", re.I), lambda m: m.group(1) + " = 1")]
 
 
 def shrink(text):

@@ -59,8 +59,11 @@ contains
       size_drive = 0.0_wp
       do k = 0, 15
          ! eight times of the period, at +|α| and −|α|
+         ! b at the same α: a system whose stiffness depends on its row (an equations system,
+         ! scaled by its drive frequency α) has none at α = 0
          call scene%system%stiffness(merge(alpha_abs, -alpha_abs, k < 8), 0.125_wp*mod(k, 8)*form%period, p, b)
-         size_a = max(size_a, row_sum_norm(matmul(form%m_inverse, p)) + beta_abs*size_b)
+         size_a = max(size_a, row_sum_norm(matmul(form%m_inverse, p)) + &
+                      beta_abs*row_sum_norm(matmul(form%m_inverse, b)))
          ! the drive at |α| = 1 (K is linear in α)
          call scene%system%stiffness(1.0_wp, 0.125_wp*k*form%period/2.0_wp, p, b)
          size_drive = max(size_drive, row_sum_norm(matmul(form%m_inverse, p - k0)))
@@ -74,7 +77,13 @@ contains
       call scene%system%gyroscopic(g)
       size_c = row_sum_norm(matmul(form%m_inverse, c))
       size_g = row_sum_norm(matmul(form%m_inverse, g))
-      if (too_fast(row_sum_norm(form%d)**2)) then
+      if (scene%system%row_dependent() .or. .not. (size_k0 <= huge(1.0_wp) .and. size_b <= huge(1.0_wp))) then
+         ! K0, B and the drive alone are not the system's at α = 0 when every row has its own
+         ! (an equations system, scaled by its drive frequency α: none at α = 0): name the
+         ! chart's range
+         variable = ""
+         what = alpha_variable
+      else if (too_fast(row_sum_norm(form%d)**2)) then
          variable = trim(merge("damping   ", "gyroscopic", .not. size_g > size_c))
          if (.not. (size_c > 0.0_wp .or. size_g > 0.0_wp)) variable = "(epsilon)"
          what = "the damping and gyroscopic rates reach |M^-1 (C + G)| = "// &
