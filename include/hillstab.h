@@ -331,7 +331,7 @@ int hillstab_system_chart_scaled(const hillstab_system *system, double alpha_min
  * undriven problem constant in time: the tip is the resonance itself at drive 0), same
  * signature (a difference region of two modes of equal Krein signature: closed, not
  * searched), uncovered (kind unassigned: a stretch of d_max unstable outside every region's
- * edges, found by 400 samples of it; its edges there, its tip not searched). */
+ * edges, found by 1000 samples of it; its edges there, its tip not searched). */
 enum { HILLSTAB_REGION_UNASSIGNED = 0, HILLSTAB_REGION_SIMPLE = 1, HILLSTAB_REGION_SUM = 2, HILLSTAB_REGION_DIFFERENCE = 3 };
 enum {
   HILLSTAB_REGION_FOUND = 0, HILLSTAB_REGION_CLOSED = 1, HILLSTAB_REGION_UNCONFIRMED = 2,

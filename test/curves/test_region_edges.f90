@@ -1,10 +1,12 @@
 !> Tests of the regions' boundaries by continuation from their tips (hillstab_curves_region_edges,
-!> task `edges`): the undamped Mathieu model's edges on GSL's characteristic values; the damped
-!> Mathieu equation's and the damped column's edges against a bisection of the overall verdict
-!> by another method (Runge–Kutta); two uncoupled Mathieu equations as one system, where one
-!> region lies inside the other's: its edges are each equation's own, and labelled overlap
-!> exactly where the other equation alone is unstable; the task's file against the library and
-!> its header rerunning it; bad input refused naming the file, the group and the variable.
+!> task `edges`): the undamped Mathieu model's edges on GSL's characteristic values; the
+!> damped Mathieu equation's, the damped column's and the undamped column's sum region's (a
+!> Krein collision) edges against a bisection of the overall verdict by another method
+!> (Runge–Kutta); two uncoupled Mathieu equations as one system, where one region lies inside
+!> the other's: its edges are each equation's own, and labelled overlap exactly where the
+!> other equation alone is unstable; the task's file against the library and its header
+!> rerunning it; a chart's list of its regions; bad input refused naming the file, the group
+!> and the variable.
 module test_region_edges
    use hillstab_core_kinds, only: wp
    use hillstab_core_text, only: real_text
@@ -35,6 +37,7 @@ contains
          new_unittest("undamped_mathieu_on_gsl", undamped_mathieu_on_gsl), &
          new_unittest("damped_mathieu_against_rk", damped_mathieu_against_rk), &
          new_unittest("column_against_rk", column_against_rk), &
+         new_unittest("undamped_sum_against_rk", undamped_sum_against_rk), &
          new_unittest("overlap_labelled", overlap_labelled), &
          new_unittest("task_file", task_file), &
          new_unittest("chart_lists_regions", chart_lists_regions), &
@@ -210,6 +213,42 @@ contains
       end do
       call check_points(ctx, points, reference, 1.0e-9_wp, "column")
    end subroutine column_against_rk
+
+   !> The column undamped (ζ = 0): its sum region ω₁ + ω₂ = Ω opens from the resonance at
+   !> P1 = 0 (theory); its edges, where the colliding pair leaves the circle off the real axis
+   !> (a Krein collision), at 4 levels against a bisection of the largest multiplier of
+   !> Runge–Kutta at 1e-12.
+   subroutine undamped_sum_against_rk(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(equations_system_t) :: column
+      type(system_oracle_t) :: oracle, reference
+      type(region_t), allocatable :: regions(:), chosen(:)
+      type(edge_point_t), allocatable :: points(:)
+      type(error_t), allocatable :: error
+      call damped_column(column, error)
+      if (.not. allocated(error)) call column%set_text("parameters", "P0 = 0.3, P1 = 0, Om = 2, zeta = 0", error)
+      if (.not. allocated(error)) call column%check_values(error)
+      call check(ctx, .not. allocated(error), "the undamped column")
+      if (allocated(error)) return
+      allocate (oracle%system, source=column)
+      oracle%method = system_method_t(tolerance=1.0e-10_wp)
+      oracle%drive_axis = along_beta
+      call find_regions(oracle, 4.0_wp, 5.5_wp, 0.0_wp, 0.5_wp, 1, 1.0e-10_wp, 32, regions, error, cover=0)
+      call check(ctx, .not. allocated(error), "regions")
+      if (allocated(error)) return
+      chosen = pack(regions, regions%kind == 2 .and. regions%order == 1)
+      call check(ctx, size(chosen) == 1, "the sum region")
+      if (size(chosen) /= 1) return
+      call check(ctx, chosen(1)%status == region_theory, "its tip by theory")
+      call trace_edges(oracle, chosen, 4.0_wp, 5.5_wp, 0.0_wp, 0.5_wp, 1.0e-10_wp, 4, points, error)
+      call check(ctx, .not. allocated(error), "edges")
+      if (allocated(error)) return
+      call check(ctx, size(points) == 2*4 + 1, "9 points")
+      allocate (reference%system, source=column)
+      reference%method = system_method_t(kind=system_rk, tolerance=1.0e-12_wp)
+      reference%drive_axis = along_beta
+      call check_points(ctx, points, reference, 1.0e-8_wp, "undamped sum")
+   end subroutine undamped_sum_against_rk
 
    !> x₁'' + (1 + h cos Wt)x₁ = 0 and x₂'' + (2.3² + h cos Wt)x₂ = 0 as one system: the region
    !> 2ω₂ = 2W (W ≈ 2.3) lies inside the principal region of x₁ once h is large. Each edge of

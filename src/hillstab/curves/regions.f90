@@ -68,9 +68,10 @@ module hillstab_curves_regions
 
    !> Highest order searched.
    integer, parameter :: max_region_order = 8
-   !> Samples of the frequency range for the predictions, and of the top drive for instability
-   !> outside every region.
+   !> Samples of the frequency range for the predictions.
    integer, parameter :: predict_samples = 400
+   !> Samples of the top drive for instability outside every region (`find_regions`' cover).
+   integer, parameter :: cover_samples = 1000
 
    !> One resonance region.
    type :: region_t
@@ -227,13 +228,13 @@ contains
       !> err_invalid_parameter naming the argument; a point the method cannot compute
       type(error_t), allocatable, intent(out) :: error
       !> samples of the top drive for instability outside every region (`cover_top`; default
-      !> 400, 0 none)
+      !> 1000, 0 none)
       integer, intent(in), optional :: cover
       integer, intent(out), optional :: swept  !! distances the sweep computed
       character(len=300), allocatable :: failures(:)
       type(error_t), allocatable :: cause
       integer :: j, n_cover, n_swept
-      n_cover = predict_samples
+      n_cover = cover_samples
       if (present(cover)) n_cover = cover
       if (present(swept)) swept = 0
       if (n_cover /= 0 .and. (n_cover < 2 .or. n_cover > 100000)) then

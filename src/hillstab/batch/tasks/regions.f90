@@ -36,7 +36,7 @@ module hillstab_batch_tasks_regions
       integer :: drive = along_alpha      !! which axis is the drive
       integer :: order = 2                !! highest order
       integer :: n_samples = 32           !! samples of the drive range for a first root
-      integer :: cover = 400              !! samples of the top drive for instability outside every region
+      integer :: cover = 1000             !! samples of the top drive for instability outside every region
    contains
       procedure :: read => regions_read
       procedure :: run => regions_run
@@ -126,7 +126,7 @@ contains
                      "omega_i + omega_j, |omega_i - omega_j|), 1 to "//integer_text(max_region_order))
       call group%add("n_samples", var_integer, "32", "samples of the drive range for the first critical drive "// &
                      "of a region, 2 to 100000")
-      call group%add("cover", var_integer, "400", "samples of the frequency range at the top drive: an unstable "// &
+      call group%add("cover", var_integer, "1000", "samples of the frequency range at the top drive: an unstable "// &
                      "stretch outside every region's edges there is listed (kind 0, status 6); 0 none, or 2 to 100000")
    end function regions_group
 

@@ -39,7 +39,7 @@ contains
       type(error_t), allocatable :: cause
       type(fpe_state_t) :: fpe
       real(wp), allocatable :: p(:, :), b(:, :), k0(:, :), c(:, :), g(:, :)
-      real(wp) :: size_a, size_k0, size_drive, size_b, size_c, size_g
+      real(wp) :: size_a, size_k0, size_drive, size_b, size_c, size_g, a, term
       character(len=:), allocatable :: variable, what
       integer :: k, n
       real(wp), parameter :: limit = 2.0e3_wp
@@ -61,14 +61,20 @@ contains
          ! eight times of the period, at +|α| and −|α|
          ! b at the same α: a system whose stiffness depends on its row (an equations system,
          ! scaled by its drive frequency α) has none at α = 0
-         call scene%system%stiffness(merge(alpha_abs, -alpha_abs, k < 8), 0.125_wp*mod(k, 8)*form%period, p, b)
-         size_a = max(size_a, row_sum_norm(matmul(form%m_inverse, p)) + &
-                      beta_abs*row_sum_norm(matmul(form%m_inverse, b)))
+         a = merge(alpha_abs, -alpha_abs, k < 8)
+         if (scene%system%alpha_valid(a)) then
+            call scene%system%stiffness(a, 0.125_wp*mod(k, 8)*form%period, p, b)
+            term = row_sum_norm(matmul(form%m_inverse, p)) + beta_abs*row_sum_norm(matmul(form%m_inverse, b))
+            ! a term that overflowed (inf or nan) is beyond any limit
+            if (.not. (term <= huge(1.0_wp))) term = huge(1.0_wp)
+            size_a = max(size_a, term)
+         end if
          ! the drive at |α| = 1 (K is linear in α)
          call scene%system%stiffness(1.0_wp, 0.125_wp*k*form%period/2.0_wp, p, b)
          size_drive = max(size_drive, row_sum_norm(matmul(form%m_inverse, p - k0)))
       end do
-      size_a = max(size_a, row_sum_norm(form%d)**2)
+      term = row_sum_norm(form%d)**2
+      if (term == term) size_a = max(size_a, term)
       if (sqrt(size_a)*form%period <= limit) then
          call halting_restore(fpe)
          return
