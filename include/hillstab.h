@@ -244,20 +244,26 @@ int hillstab_system_new_named(const char *name, hillstab_system **system);
 int hillstab_system_set(hillstab_system *system, const char *variable, const double *values, size_t count);
 int hillstab_system_check(const hillstab_system *system);
 int hillstab_system_dof(const hillstab_system *system, int *n);
+/* The size m of the state: 2n, or n for a system in first-order form (an equations system
+ * given the text "state", y' = A(t) y): Phi is then n x n with n multipliers and n exponents. */
+int hillstab_system_states(const hillstab_system *system, int *states);
 
 /* Set a text variable of an equations system: parameters, matrices ("W = [1, 0; 0, 4], ..."),
- * stiffness, mass, damping, gyroscopic, frequency or period, alpha, beta, as in &equations.
+ * stiffness (or state: A(t) of the first-order form y' = A(t) y), mass, damping, gyroscopic,
+ * frequency or period, alpha, beta, as in &equations.
  * An unknown variable is refused here; what the texts say together by hillstab_system_check
  * and every computation, the message naming the variable. */
 int hillstab_system_set_text(hillstab_system *system, const char *variable, const char *text);
 
 /* The monodromy over one period, Phi = exp(log_scale) Phi~: phi[2n][2n] = Phi~ (row-major,
- * acting on (x, x')), its error estimate relative to max(1, max|Phi~_ij|). */
+ * acting on (x, x'); phi[n][n] acting on y in first-order form), its error estimate relative
+ * to max(1, max|Phi~_ij|). */
 int hillstab_system_monodromy(const hillstab_system *system, double alpha, double beta, double epsilon,
                               int method, double tolerance, double *phi, double *log_scale,
                               double *error_estimate, int *status);
 
-/* Floquet analysis: the 2n multipliers by decreasing modulus (Phi's own with *log_scale = 0
+/* Floquet analysis (first-order form: n multipliers and n exponents, hillstab_system_states):
+ * the 2n multipliers by decreasing modulus (Phi's own with *log_scale = 0
  * when they are at most 1e300, else Phi~'s: Phi's = exp(log_scale) times them), the exponents
  * ln|lambda_i|/P of the n largest (each to the tolerance, from the factored product where Phi
  * cannot resolve it), HILLSTAB_SYSTEM_VERDICT_*, HILLSTAB_SYSTEM_KIND_*, tr Phi and

@@ -1,7 +1,8 @@
 # A stability chart of a system of Hill equations (task chart, &scene model = 'system'): left
 # the verdict by kind (parametric at +1, at -1, combination resonance, marginal), right the
 # largest Floquet exponent mu. out/system_pendula.png of `make run` is the two coupled
-# pendula on a shaken support (data/scenes/system_pendula.nml).
+# pendula on a shaken support (data/scenes/system_pendula.nml); a system in first-order form
+# (&equations state) is titled by its states.
 # Call from any directory (default: the file `make run` writes into out/ here):
 #   gnuplot -e "file='my_chart.dat'; out='x.png'" PATH/plots/system_chart.gp
 # Parameters: file (a system chart with columns alpha, beta, stable, kind, mu), out (the image).
@@ -29,8 +30,11 @@ set cbrange [-0.5:5.5]
 set palette maxcolors 6
 set cbtics ("stable" 0, "unstable at +1" 1, "unstable at −1" 2, "combination" 3, "damped, stable" 4, \
    "marginal" 5) font ",9"
-set multiplot layout 1,2 title sprintf("System of Hill equations, n = %d; %s", int(real(scene_value(file, 'n'))), \
-   method_title(file)) font ",11" noenhanced
+# a system in first-order form (&equations state) has n states
+system_title = sprintf("System of Hill equations, n = %d", int(real(scene_value(file, 'n'))))
+if (scene_value(file, 'state') ne '') { \
+   system_title = sprintf("First-order system y' = A(t) y, %d states", int(real(scene_value(file, 'n')))) }
+set multiplot layout 1,2 title sprintf("%s; %s", system_title, method_title(file)) font ",11" noenhanced
 set title "verdict from the multipliers, by kind"
 plot named(file) using 1:2:(shade(column('stable'), column('kind'))) with image notitle
 set title "largest Floquet exponent μ = ln|λ|max / P"

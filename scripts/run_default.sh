@@ -8,7 +8,8 @@
 #   out/boundaries.png, out/fig3_boundaries.png, out/strutt.png (transition curves)
 #   out/lyapunov.png (Lyapunov map), out/poincare.png (Poincare sections)
 #   out/own_pivot.png, out/own_sampled.png, out/meissner.png, out/modulated.png (other Hill equations)
-#   out/kapitza.png, out/column_equations.png (equations in physical time over their own parameters)
+#   out/kapitza.png, out/column_equations.png, out/feedback.png (equations in physical time over their
+#   own parameters; the last a first-order system y' = A(t) y)
 #   out/system_pendula.png, out/system_pendula_boundaries.png, out/system_column.png, out/system_chain.png
 #   (systems of Hill equations)
 # HILLSTAB_SCENES=DIR runs the scenes of DIR instead (same names expected).
@@ -24,6 +25,7 @@ scenes=(default_exact default_paper fig4_points fig2_coefficient
         lyapunov_map lyapunov_fig4 poincare_regular poincare_chaotic
         own_pivot_chart own_pivot_boundaries own_sampled_chart own_sampled_boundaries
         meissner_chart meissner_boundaries modulated_chart modulated_boundaries kapitza_chart column_equations column_regions column_edges
+        feedback_first_order
         system_pendula system_pendula_boundaries system_column system_chain)
 plots=(default fig2 fig3 figA damped fig4 boundaries fig3_boundaries strutt lyapunov poincare spring_chart system_chart
        system_boundaries)
@@ -86,6 +88,8 @@ for system in column chain; do
 done
 # a system written in physical time: Bolotin's damped column over (Om, P1)
 gnuplot -e "file='out/column_equations_chart.dat'; out='out/column_equations.png'" plots/system_chart.gp
+# a first-order system y' = A(t) y of three states: a feedback gain modulated in time
+gnuplot -e "file='out/feedback_chart.dat'; out='out/feedback.png'" plots/system_chart.gp
 # its resonance regions: every tip, width and boundary over that chart
 gnuplot plots/regions.gp
 seconds=$(( $(date +%s) - start ))
@@ -93,5 +97,5 @@ seconds=$(( $(date +%s) - start ))
 echo
 echo "hillstab: scenes run and figures drawn in ${seconds} s"
 echo "  default figure (exact chart beside the paper's): out/default.png"
-echo "  other figures: $(cd out && ls fig*.png damped.png boundaries.png strutt.png onset.png lyapunov.png poincare.png spring_chart.png own_pivot.png own_sampled.png meissner.png modulated.png kapitza.png column_equations.png column_regions.png system_pendula.png system_pendula_boundaries.png system_column.png system_chain.png | sed 's|^|out/|' | tr '\n' ' ')"
+echo "  other figures: $(cd out && ls fig*.png damped.png boundaries.png strutt.png onset.png lyapunov.png poincare.png spring_chart.png own_pivot.png own_sampled.png meissner.png modulated.png kapitza.png column_equations.png feedback.png column_regions.png system_pendula.png system_pendula_boundaries.png system_column.png system_chain.png | sed 's|^|out/|' | tr '\n' ' ')"
 echo "  data (gnuplot-ready, header = scene to repeat the run): out/*.dat"

@@ -50,6 +50,7 @@ _capi._declare("hillstab_system_free", None, _system_p)
 _capi._declare("hillstab_system_set", ctypes.c_int, _system_p, ctypes.c_char_p, _c_double_p, ctypes.c_size_t)
 _capi._declare("hillstab_system_check", ctypes.c_int, _system_p)
 _capi._declare("hillstab_system_dof", ctypes.c_int, _system_p, _c_int_p)
+_capi._declare("hillstab_system_states", ctypes.c_int, _system_p, _c_int_p)
 _capi._declare("hillstab_system_monodromy", ctypes.c_int, _system_p, ctypes.c_double, ctypes.c_double,
                ctypes.c_double, ctypes.c_int, ctypes.c_double, _c_double_p, _c_double_p, _c_double_p, _c_int_p)
 _capi._declare("hillstab_system_floquet", ctypes.c_int, _system_p, ctypes.c_double, ctypes.c_double,
@@ -285,6 +286,8 @@ class System:
         check(lib.hillstab_system_check(self._handle))
         #: the degrees of freedom
         self.n = n
+        #: the size of the state y = (x, x'): 2n (Φ is states × states)
+        self.states = 2 * n
         #: the period P of K in τ
         self.period = period
 
@@ -312,7 +315,7 @@ class System:
         a double, without a warning), error_estimate relative to max(1, max|Φ_ij|), status 0
         or 1 (round-off limited)."""
         alpha, beta, epsilon, tolerance = self._point(alpha, beta, epsilon, tolerance)
-        m = 2 * self.n
+        m = self.states
         phi = np.zeros((m, m), dtype=np.float64)
         log_scale = ctypes.c_double(0.0)
         estimate = ctypes.c_double(0.0)
@@ -339,7 +342,7 @@ class System:
         """
         if not (_is_scalar(alpha) and _is_scalar(beta) and _is_scalar(epsilon)):
             return self.points(alpha, beta, epsilon, method, tolerance, threads, progress, chunk)
-        m = 2 * self.n
+        m = self.states
         re = np.zeros(m, dtype=np.float64)
         im = np.zeros(m, dtype=np.float64)
         exponents = np.zeros(self.n, dtype=np.float64)
@@ -529,6 +532,11 @@ class Equations(System):
     parameters, or numbers); ``alpha`` and ``beta`` the parameters the points' two
     coordinates are; ``n`` the degrees of freedom (default: the matrices' size).
 
+    ``state`` instead of ``stiffness`` (with no mass, damping or gyroscopic matrix) gives the
+    first-order form y' = A(t) y, a periodic state-space model of ``n`` states: A(t) a matrix
+    expression as above; Φ is then n × n with n multipliers and n exponents (``states``), its
+    methods rk (and auto, which runs rk) and gsl.
+
     The methods are `System`'s — `floquet`, `points`, `chart`, `monodromy` — with α and β
     the values of the two axes' parameters; the results carry the axes by those names too
     (``chart(...).Om`` is the axis ``alpha``, ``points(...).P1`` the column ``beta``). The
@@ -547,8 +555,8 @@ class Equations(System):
     'parametric at -1'
     """
 
-    def __init__(self, stiffness, frequency=None, period=None, parameters=None, matrices=None, mass="1",
-                 damping="0", gyroscopic="0", alpha=None, beta=None, n=None):
+    def __init__(self, stiffness=None, frequency=None, period=None, parameters=None, matrices=None, mass="1",
+                 damping="0", gyroscopic="0", alpha=None, beta=None, n=None, state=None):
         if n is not None:
             n = _degrees_of_freedom(n)
         if matrices is None:
@@ -569,8 +577,11 @@ class Equations(System):
             parameters = ", ".join("{} = {}".format(name, _number_text("parameters: " + name, value))
                                    for name, value in parameters.items())
         texts = []
+        if stiffness is None and state is None:
+            raise ValueError("stiffness: give K(t) of M x'' + (C + G) x' + K(t) x = 0, or state: A(t) of "
+                             "y' = A(t) y")
         for name, text in (("parameters", parameters), ("matrices", matrices), ("stiffness", stiffness),
-                           ("mass", mass), ("damping", damping), ("gyroscopic", gyroscopic),
+                           ("state", state), ("mass", mass), ("damping", damping), ("gyroscopic", gyroscopic),
                            ("frequency", frequency), ("period", period), ("alpha", alpha), ("beta", beta)):
             if text is None:
                 continue
@@ -589,8 +600,12 @@ class Equations(System):
         check(lib.hillstab_system_check(self._handle))
         dof = ctypes.c_int(0)
         check(lib.hillstab_system_dof(self._handle, ctypes.byref(dof)))
-        #: the degrees of freedom
+        #: the degrees of freedom (in first-order form: the states)
         self.n = dof.value
+        states = ctypes.c_int(0)
+        check(lib.hillstab_system_states(self._handle, ctypes.byref(states)))
+        #: the size of the state: 2n, or n in first-order form (Φ is states × states)
+        self.states = states.value
         #: the parameters of the two axes, as the results name them too
         self.axes = (alpha, beta)
         #: the period of the system in τ = Ωt/π (one period of K is τ in [0, 2])

@@ -171,3 +171,83 @@ def test_chart_over_named_axes_equals_points(column):
     scale = np.maximum(1.0, np.abs(r.trace))
     assert np.all(np.abs(c.trace - r.trace) <= 2e-10 * scale * 6)
     assert np.all(np.abs(c.mu - r.mu) <= 1e-8)
+
+
+FEEDBACK = dict(state="P + (g0 + g1*cos(Om*t))*G", frequency="Om", n=3,
+                matrices="P = [0, 1, 0; -1, -2*zeta, 1; 0, 0, -1/Ta], G = [0, 0, 0; 0, 0, 0; -1/Ta, 0, 0]",
+                parameters={"zeta": 0.05, "Ta": 0.2, "g0": 0.5, "g1": 0.0, "Om": 2.0}, alpha="Om", beta="g1")
+
+
+def first_order_column():
+    """The column of COLUMN in first-order form: y = (x, x'), A = [[0, I], [-W, -C]] + (P0 +
+    P1 cos(Om t)) [[0, 0], [S, 0]]."""
+    u = np.zeros((6, 6))
+    u[:3, 3:] = np.eye(3)
+    u[3:, :3] = -MATRICES["W"]
+    u[3:, 3:] = -2 * 0.01 * MATRICES["Z"]
+    v = np.zeros((6, 6))
+    v[3:, :3] = MATRICES["S"]
+    return hillstab.Equations(state="U + (P0 + P1*cos(Om*t))*V", frequency="Om", matrices={"U": u, "V": v},
+                              parameters={"P0": 0.3, "P1": 0.0, "Om": 2.0, "zeta": 0.01}, alpha="Om", beta="P1")
+
+
+def test_first_order_column_equals_the_second_order_form(column):
+    """The column with six states: six multipliers, the same verdicts and kinds as the
+    second-order form, its multipliers and the physical reference's within the tolerance."""
+    first = first_order_column()
+    assert first.n == 6 and first.states == 6 and column.states == 6
+    for om, p1 in POINTS:
+        a = first.floquet(om, p1, tolerance=1e-10)
+        b = column.floquet(om, p1, tolerance=1e-10)
+        assert a.multipliers.shape == (6,) and a.exponents.shape == (6,)
+        assert a.verdict == b.verdict and a.kind == b.kind, (om, p1)
+        for z in b.multipliers * np.exp(b.log_scale):
+            assert np.min(np.abs(a.multipliers * np.exp(a.log_scale) - z)) <= 2e-10 * max(1.0, abs(z)), (om, p1)
+    phi, estimate, status = first.monodromy(1.6, 0.4)
+    assert phi.shape == (6, 6) and status == 0
+
+
+def test_three_states_against_the_command_line(cli):
+    """Three states, the shipped scene's plant: the chart equals the command line's file to
+    the bit; at g1 = 0 the multipliers are exp(T lambda) of the constant A."""
+    plant = hillstab.Equations(**FEEDBACK)
+    assert plant.n == 3 and plant.states == 3
+    a = np.array([[0, 1, 0], [-1, -0.1, 1], [-2.5, 0, -5]])
+    for om in (0.7, 2.45, 3.3):
+        f = plant.floquet(om, 0.0, tolerance=1e-10)
+        exact = np.exp(np.linalg.eigvals(a) * 2 * np.pi / om)
+        for z in exact:
+            assert np.min(np.abs(f.multipliers - z)) <= 1e-10, (om, z)
+    group = ("&equations n = 3, parameters = 'zeta = 0.05, Ta = 0.2, g0 = 0.5, g1 = 0, Om = 2',\n"
+             "  matrices = 'P = [0, 1, 0; -1, -2*zeta, 1; 0, 0, -1/Ta], G = [0, 0, 0; 0, 0, 0; -1/Ta, 0, 0]',\n"
+             "  state = 'P + (g0 + g1*cos(Om*t))*G', frequency = 'Om', alpha = 'Om', beta = 'g1' /\n")
+    cli.run("fb", "&scene task = 'chart', model = 'equations', tolerance = 1e-8, output = 'fb', "
+            "format = 'binary' /\n" + group + "&chart alpha_min = 1.0, alpha_max = 3.0, n_alpha = 5, "
+            "beta_min = 0.0, beta_max = 1.5, n_beta = 4 /\n")
+    out = hillstab.read_output(cli.path("fb_chart.bin"))
+    c = plant.chart((1.0, 3.0, 5), (0.0, 1.5, 4), tolerance=1e-8, threads=2)
+    assert list(c.names) == out.columns and "mu_3" in out.columns
+    for name in out.columns:
+        assert same_bits(c[name], out.grid(name)), name
+    assert set(np.unique(c.stable)) == {0, 1}
+
+
+@pytest.mark.parametrize("change, variable", [
+    (dict(stiffness="P"), "stiffness, state"),
+    (dict(damping="1"), "mass, damping, gyroscopic"),
+    (dict(state="P + (g0 + g1*cos(Om*t))*Q"), "state"),
+    (dict(state="P + (g0 + g1*cos(Om*t) + 0.1*cos(3*t))*G"), "state"),
+])
+def test_first_order_bad_input_named(change, variable):
+    with pytest.raises(ValueError) as caught:
+        hillstab.Equations(**dict(FEEDBACK, **change))
+    assert variable + ":" in str(caught.value), str(caught.value)
+
+
+def test_first_order_refuses_magnus():
+    plant = hillstab.Equations(**FEEDBACK)
+    with pytest.raises(ValueError, match="magnus6 takes a system in second-order form"):
+        plant.floquet(2.0, 0.5, method="magnus6")
+    with pytest.raises(ValueError, match="stiffness: give K"):
+        hillstab.Equations(frequency="Om", matrices=FEEDBACK["matrices"], n=3, parameters=FEEDBACK["parameters"],
+                           alpha="Om", beta="g1")

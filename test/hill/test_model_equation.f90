@@ -4,7 +4,10 @@
 !> a mass, damping and a sine term against an extended-precision monodromy of the physical
 !> equation as written (data/reference/physical_set.dat, mpmath); a chart row equal to the
 !> points task at the same parameters, its columns named after the axes and its header a
-!> scene that repeats the run; bad input refused naming file, group and variable.
+!> scene that repeats the run; the first-order form y' = A(t) y: the column written with six
+!> states against the same reference and its second-order form, and a system of three states
+!> (odd, which no second-order form writes) against the closed form at a constant A and
+!> between two methods; bad input refused naming file, group and variable.
 module test_model_equation
    use hillstab_core_kinds, only: wp, pi
    use hillstab_core_text, only: real_text
@@ -24,6 +27,7 @@ module test_model_equation
    use hillstab_integrate_system_point, only: system_point
    use hillstab_hill_system_floquet, only: system_floquet_t
    use hillstab_testing
+   use hillstab_ffi_lapack, only: dgeev
    use hillstab_test_files, only: run_text_scene, check_rerun
    use hillstab_test_reference, only: auto_row_errors
    use hillstab_test_scratch, only: scratch_prefix, read_lines, file_exists, delete_file, write_file, padded
@@ -46,6 +50,8 @@ contains
          new_unittest("column_against_reference", column_against_reference), &
          new_unittest("chart_row_equals_points", chart_row_equals_points), &
          new_unittest("tasks_on_equations", tasks_on_equations), &
+         new_unittest("first_order_column", first_order_column), &
+         new_unittest("first_order_three_states", first_order_three_states), &
          new_unittest("bad_scene_input", bad_scene_input)])
    end function collect_model_equation
 
@@ -400,6 +406,208 @@ contains
             worst_trace(m), ", worst multiplier error", worst_lambda(m)
       end do
    end subroutine column_against_reference
+
+   !> Bolotin's damped column written in first-order form, y = (x, x'), A = U + (P0 + P1
+   !> cos Ωt) V with U = [[0, I], [−W, −C]] and V = [[0, 0], [S, 0]]: at the 50 points of the
+   !> reference (set 3, mpmath) every multiplier within the tolerance by rk, gsl and auto
+   !> (rk), the trace and the verdict equal to the second-order form's (method auto, Magnus),
+   !> all six exponents reported, and Liouville's check met.
+   subroutine first_order_column(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: path = "data/reference/physical_set.dat"
+      real(wp), parameter :: tolerance = 1.0e-10_wp
+      integer, parameter :: methods(3) = [system_auto, system_rk, system_gsl]
+      type(equations_system_t) :: first, second
+      type(error_t), allocatable :: error
+      type(system_form_t) :: form, form2
+      type(system_nodes_t) :: nodes
+      type(system_monodromy_t) :: r, r2
+      type(system_floquet_t) :: f, f2
+      character(len=1024), allocatable :: lines(:)
+      real(wp) :: row(17), scale, d_lambda, worst(size(methods))
+      complex(wp) :: reference(6), computed(6)
+      integer :: k, m, j, ios, set, n_points, n_verdicts
+      call first%set_values("n", [6.0_wp], error)
+      call first%set_text("matrices", "U = [0, 0, 0, 1, 0, 0; 0, 0, 0, 0, 1, 0; 0, 0, 0, 0, 0, 1; "// &
+                          "-1, 0, 0, -2*zeta, 0, 0; 0, -16, 0, 0, -8*zeta, 0; 0, 0, -81, 0, 0, -18*zeta], "// &
+                          "V = [0, 0, 0, 0, 0, 0; 0, 0, 0, 0, 0, 0; 0, 0, 0, 0, 0, 0; 1, 0.3, 0.1, 0, 0, 0; "// &
+                          "0.3, 4, 0.4, 0, 0, 0; 0.1, 0.4, 9, 0, 0, 0]", error)
+      call first%set_text("parameters", "P0 = 0.3, P1 = 0, Om = 2, zeta = 0.01", error)
+      call first%set_text("state", "U + (P0 + P1*cos(Om*t))*V", error)
+      call first%set_text("frequency", "Om", error)
+      call first%set_text("alpha", "Om", error)
+      call first%set_text("beta", "P1", error)
+      call first%check_values(error)
+      call check(ctx, .not. allocated(error), "the first-order column is taken")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      call check(ctx, first%first_order() .and. first%dof() == 6, "first-order, six states")
+      call second%set_values("n", [3.0_wp], error)
+      call second%set_text("matrices", "W = [1, 0, 0; 0, 16, 0; 0, 0, 81], S = [1, 0.3, 0.1; 0.3, 4, 0.4; "// &
+                           "0.1, 0.4, 9], Z = [1, 0, 0; 0, 4, 0; 0, 0, 9]", error)
+      call second%set_text("parameters", "P0 = 0.3, P1 = 0, Om = 2, zeta = 0.01", error)
+      call second%set_text("stiffness", "W - (P0 + P1*cos(Om*t))*S", error)
+      call second%set_text("damping", "2*zeta*Z", error)
+      call second%set_text("frequency", "Om", error)
+      call second%set_text("alpha", "Om", error)
+      call second%set_text("beta", "P1", error)
+      call second%check_values(error)
+      call check(ctx, .not. allocated(error), "the second-order column is taken")
+      if (allocated(error)) return
+      lines = read_lines(path)
+      n_points = 0
+      n_verdicts = 0
+      worst = 0.0_wp
+      do k = 1, size(lines)
+         if (len_trim(lines(k)) == 0 .or. lines(k)(1:1) == "#") cycle
+         read (lines(k), *, iostat=ios) set
+         if (ios /= 0 .or. set /= 3) cycle
+         read (lines(k), *, iostat=ios) row
+         if (ios /= 0) cycle
+         n_points = n_points + 1
+         reference = [(cmplx(row(5 + 2*j), row(6 + 2*j), wp), j=0, 5)]
+         call prepare_system(first, 0.0_wp, form, error, alpha=row(2))
+         call check(ctx, .not. allocated(error) .and. form%states == 6, "prepared, 6 states at Om = "// &
+                    real_text(row(2)))
+         if (allocated(error)) cycle
+         call prepare_system(second, 0.0_wp, form2, error, alpha=row(2))
+         if (allocated(error)) cycle
+         nodes = system_nodes_t()
+         call system_point(second, form2, row(2), row(3), system_method_t(system_auto, tolerance), nodes, r2, f2, error)
+         if (allocated(error)) cycle
+         do m = 1, size(methods)
+            nodes = system_nodes_t()
+            call system_point(first, form, row(2), row(3), system_method_t(methods(m), tolerance), nodes, r, f, error)
+            call check(ctx, .not. allocated(error) .and. r%status == 0, system_method_name(methods(m))// &
+                       ": status 0 at Om = "//real_text(row(2))//", P1 = "//real_text(row(3)))
+            if (allocated(error) .or. r%status /= 0) cycle
+            call check(ctx, size(f%multipliers) == 6 .and. size(f%exponents) == 6, "six multipliers and exponents")
+            computed = f%multipliers*exp(f%log_scale)
+            d_lambda = 0.0_wp
+            do j = 1, 6
+               d_lambda = max(d_lambda, minval(abs(computed - reference(j)))/max(1.0_wp, abs(reference(j))))
+            end do
+            worst(m) = max(worst(m), d_lambda)
+            call check(ctx, d_lambda <= tolerance, system_method_name(methods(m))//": every multiplier ("// &
+                       real_text(d_lambda)//") at Om = "//real_text(row(2))//", P1 = "//real_text(row(3)))
+            scale = max(1.0_wp, maxval(abs(r%phi))*exp(r%log_scale))
+            call check(ctx, abs(f%trace - f2%trace)/scale <= 12.0_wp*tolerance, system_method_name(methods(m))// &
+                       ": the trace of the second-order form at Om = "//real_text(row(2)))
+            call check(ctx, f%verdict == f2%verdict .and. f%kind == f2%kind, system_method_name(methods(m))// &
+                       ": the verdict and kind of the second-order form at Om = "//real_text(row(2))// &
+                       ", P1 = "//real_text(row(3)))
+            if (f%verdict == f2%verdict) n_verdicts = n_verdicts + 1
+            call check(ctx, f%defect <= 1.0e-9_wp, "Liouville's check ("//real_text(f%defect)//")")
+         end do
+      end do
+      call check(ctx, n_points >= 50, "50 reference points, got "//real_text(real(n_points, wp)))
+      do m = 1, size(methods)
+         print '(4x,a8,a,es9.2)', system_method_name(methods(m)), ": first-order column, worst multiplier error", &
+            worst(m)
+      end do
+   end subroutine first_order_column
+
+   !> Three states (a damped plant x'' + 2ζx' + x = u under the gain u' = (−u − g(t) x)/T_a,
+   !> g = g0 + g1 cos Ωt): at g1 = 0 the multipliers are e^{Tλ} with λ the eigenvalues of the
+   !> constant A (LAPACK), T = 2π/Ω; with the drive, rk and gsl agree within the tolerance at
+   !> 50 points of (Ω, g1), and the verdicts with them.
+   subroutine first_order_three_states(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), parameter :: tolerance = 1.0e-10_wp, zeta = 0.05_wp, ta = 0.2_wp, g0 = 0.5_wp
+      type(equations_system_t) :: plant
+      type(error_t), allocatable :: error
+      type(system_form_t) :: form
+      type(system_nodes_t) :: nodes
+      type(system_monodromy_t) :: r, r2
+      type(system_floquet_t) :: f, f2
+      real(wp) :: a(3, 3), wr(3), wi(3), vl(1, 3), vr(1, 3), work(64), om, g1, d
+      complex(wp) :: exact(3), computed(3)
+      integer :: k, j, info, n_unstable
+      call plant%set_values("n", [3.0_wp], error)
+      call plant%set_text("parameters", "zeta = 0.05, Ta = 0.2, g0 = 0.5, g1 = 0, Om = 2", error)
+      call plant%set_text("matrices", "P = [0, 1, 0; -1, -2*zeta, 1; 0, 0, -1/Ta], G = [0, 0, 0; 0, 0, 0; "// &
+                          "-1/Ta, 0, 0]", error)
+      call plant%set_text("state", "P + (g0 + g1*cos(Om*t))*G", error)
+      call plant%set_text("frequency", "Om", error)
+      call plant%set_text("alpha", "Om", error)
+      call plant%set_text("beta", "g1", error)
+      call plant%check_values(error)
+      call check(ctx, .not. allocated(error), "three states are taken")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      a = reshape([0.0_wp, -1.0_wp, -g0/ta, 1.0_wp, -2.0_wp*zeta, 0.0_wp, 0.0_wp, 1.0_wp, -1.0_wp/ta], [3, 3])
+      call dgeev("N", "N", 3, a, 3, wr, wi, vl, 1, vr, 1, work, size(work), info)
+      call check(ctx, info == 0, "dgeev")
+      n_unstable = 0
+      do k = 1, 50
+         om = spread(k, 0.1_wp, 0.3_wp, 6.0_wp)
+         call prepare_system(plant, 0.0_wp, form, error, alpha=om)
+         call check(ctx, .not. allocated(error) .and. form%states == 3, "prepared, 3 states")
+         if (allocated(error)) return
+         ! the constant A: Φ = exp(T A)
+         nodes = system_nodes_t()
+         call system_point(plant, form, om, 0.0_wp, system_method_t(system_rk, tolerance), nodes, r, f, error)
+         call check(ctx, .not. allocated(error) .and. r%status == 0, "rk at g1 = 0, Om = "//real_text(om))
+         if (allocated(error)) return
+         exact = exp(cmplx(wr, wi, wp)*(2.0_wp*pi/om))
+         computed = f%multipliers*exp(f%log_scale)
+         d = 0.0_wp
+         do j = 1, 3
+            d = max(d, minval(abs(computed - exact(j))))
+         end do
+         call check(ctx, d <= tolerance, "the multipliers of exp(T A) at Om = "//real_text(om)//" ("// &
+                    real_text(d)//")")
+         ! with the drive: rk against gsl
+         g1 = spread(k, 0.7_wp, 0.0_wp, 3.0_wp)
+         nodes = system_nodes_t()
+         call system_point(plant, form, om, g1, system_method_t(system_rk, tolerance), nodes, r, f, error)
+         if (allocated(error)) return
+         nodes = system_nodes_t()
+         call system_point(plant, form, om, g1, system_method_t(system_gsl, tolerance), nodes, r2, f2, error)
+         if (allocated(error)) return
+         call check(ctx, r%status == 0 .and. r2%status == 0, "status 0 at Om = "//real_text(om)//", g1 = "// &
+                    real_text(g1))
+         d = maxval(abs(r%phi*exp(r%log_scale) - r2%phi*exp(r2%log_scale)))/ &
+             max(1.0_wp, maxval(abs(r%phi))*exp(r%log_scale))
+         call check(ctx, d <= 2.0_wp*tolerance, "rk and gsl agree ("//real_text(d)//") at Om = "//real_text(om)// &
+                    ", g1 = "//real_text(g1))
+         call check(ctx, f%verdict == f2%verdict, "the verdicts agree at Om = "//real_text(om))
+         call check(ctx, f%defect <= 1.0e-9_wp, "Liouville's check ("//real_text(f%defect)//")")
+         if (f%verdict == 0) n_unstable = n_unstable + 1
+      end do
+      ! the sample crosses the regions: both verdicts occur
+      call check(ctx, n_unstable > 0 .and. n_unstable < 50, "stable and unstable points, "// &
+                 real_text(real(n_unstable, wp))//" unstable")
+      ! refused, naming the variable, with nothing written
+      call refused("chart", "auto", "stiffness = 'P', ", "&equations: stiffness, state:")
+      call refused("chart", "auto", "mass = '2', ", "&equations: mass, damping, gyroscopic:")
+      call refused("chart", "magnus6", "", "&scene: method:")
+      call refused("regions", "auto", "", "&scene: task:")
+   contains
+      subroutine refused(task, method, extra, named)
+         character(len=*), intent(in) :: task, method, extra, named
+         character(len=400) :: lines(4)
+         character(len=:), allocatable :: written, out
+         type(error_t), allocatable :: error
+         out = scratch_prefix("first_order_bad")
+         lines(1) = "&scene task = '"//task//"', model = 'equations', method = '"//method//"', output = '"//out//"' /"
+         lines(2) = "&equations n = 3, parameters = 'g1 = 0, Om = 2', matrices = 'P = [0, 1, 0; -1, -0.1, 1; 0, 0, "// &
+                    "-5], G = [0, 0, 0; 0, 0, 0; -5, 0, 0]', "//extra//"state = 'P + (0.5 + g1*cos(Om*t))*G',"
+         lines(3) = "  frequency = 'Om', alpha = 'Om', beta = 'g1' /"
+         lines(4) = "&chart alpha_min = 1, alpha_max = 2, n_alpha = 2, beta_min = 0, beta_max = 1, n_beta = 2 /"
+         call run_text_scene("first_order_bad", lines, error, written)
+         call check(ctx, allocated(error), named//" refused")
+         if (.not. allocated(error)) return
+         call check(ctx, error%code == err_input .and. index(error%message, named) > 0, "named "//named//": "// &
+                    error%message)
+         call check(ctx, .not. file_exists(out//"_chart.dat") .and. .not. file_exists(out//"_regions.dat"), &
+                    "nothing written")
+      end subroutine refused
+   end subroutine first_order_three_states
 
    !> The Kapitza chart's row at ω = 314.16 (6 values of A) and the points task at the same
    !> (ω, A): the same values to the tolerance (a row shares its meshes, a point is alone),

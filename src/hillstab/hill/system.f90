@@ -11,6 +11,11 @@
 !> scenes (hillstab_hill_system_matrix: K = K0 + β B + α Σ (K_kᶜ cos kπτ' + K_kˢ sin kπτ'))
 !> and any scalar model as a system of one equation (hillstab_hill_system_scalar).
 !>
+!> A system may instead be given in first-order form, y' = A(τ) y with y in Rⁿ (n states;
+!> `first_order` true): its `stiffness` then gives A itself, A = p + β b, and it has no mass,
+!> damping or gyroscopic matrix. Its methods are the Runge–Kutta ones (rk, gsl), its
+!> verdicts those of a non-Hamiltonian system, and all its n exponents are reported.
+!>
 !> `system_form_t` is what the methods need of a system at one damping, prepared once:
 !> M⁻¹ (Cholesky), the constant block D = −M⁻¹(C + εM + G) of the first-order matrix
 !> A(τ) = [[0, I], [−M⁻¹K(τ), D]] acting on y = (x, x'), whether the system is Hamiltonian
@@ -33,7 +38,8 @@ module hillstab_hill_system
    implicit none
    private
    public :: hill_system_t, system_form_t, prepare_system, max_dof, check_system_point, system_equation_text, &
-      system_description, symmetric_defect, cholesky_inverse, fundamental_derivative, min_pivot, mass_refusal
+      system_description, symmetric_defect, cholesky_inverse, fundamental_derivative, lower_block, min_pivot, &
+      mass_refusal
 
    !> Most degrees of freedom of a system (a 40 × 40 monodromy; the cost grows as n³).
    integer, parameter :: max_dof = 20
@@ -66,6 +72,7 @@ module hillstab_hill_system
       procedure :: alpha_domain => any_alpha
       procedure :: alpha_valid => finite_alpha
       procedure :: drive_harmonics => no_harmonics
+      procedure :: first_order => second_order_form
    end type hill_system_t
 
    abstract interface
@@ -95,12 +102,17 @@ module hillstab_hill_system
 
    !> What the methods need of a system at one damping ε (`prepare_system`).
    type :: system_form_t
-      integer :: n = 0                       !! degrees of freedom
+      integer :: n = 0                       !! degrees of freedom (first-order form: the states)
+      integer :: states = 0                  !! the size of y: 2n, or n in first-order form
+      logical :: first_order = .false.       !! y' = A(τ) y given directly (A = p + β b)
       real(wp), allocatable :: m(:, :)       !! M
       real(wp), allocatable :: m_inverse(:, :)  !! M⁻¹
       real(wp), allocatable :: d(:, :)       !! D = −M⁻¹(C + εM + G)
       real(wp), allocatable :: g(:, :)       !! G
-      real(wp) :: trace_d = 0.0_wp           !! tr D (Liouville: det Φ = exp(P tr D))
+      !> tr D (Liouville: det Φ = exp(P tr D)); first-order form: the mean of tr p over a period
+      real(wp) :: trace_d = 0.0_wp
+      !> first-order form: the mean of tr b over a period (det Φ = exp(P (trace_d + β trace_b)))
+      real(wp) :: trace_b = 0.0_wp
       real(wp) :: period = 2.0_wp            !! P
       real(wp) :: epsilon = 0.0_wp           !! ε
       logical :: hamiltonian = .false.       !! C = 0, ε = 0, K symmetric
@@ -195,6 +207,12 @@ contains
       class(hill_system_t), intent(in) :: self  !! the system
       no_harmonics = 0
    end function no_harmonics
+
+   !> The system is in second-order form unless it says otherwise.
+   pure logical function second_order_form(self)
+      class(hill_system_t), intent(in) :: self  !! the system
+      second_order_form = .false.
+   end function second_order_form
 
    !> The largest |a_ij − a_ji| relative to the largest |a_ij| (0 for a zero matrix).
    pure real(wp) function symmetric_defect(a, sign) result(defect)
@@ -296,6 +314,11 @@ contains
          return
       end if
       form%n = n
+      form%states = 2*n
+      if (system%first_order()) then
+         call prepare_first_order(system, form, error, alpha)
+         return
+      end if
       allocate (form%m(n, n), form%m_inverse(n, n), form%d(n, n), form%g(n, n), c(n, n), g(n, n))
       call system%mass(form%m)
       if (present(alpha)) then
@@ -347,23 +370,86 @@ contains
       end if
    end subroutine prepare_system
 
-   !> Y' = A Y for the fundamental matrix Y (m × m, m = 2n, stored column by column in y):
-   !> A = [[0, I], [L, D]] with L = −M⁻¹K(τ) given and D of the form; the right-hand side the
-   !> Runge–Kutta methods integrate (hillstab_integrate_system's rk, hillstab_integrate_system_gsl).
+   !> A system in first-order form at row α: M = I, no damping, D = 0, and the mean traces of
+   !> p and b over a period (by the trapezoidal rule on 64 nodes, exact for a trigonometric
+   !> polynomial of degree below 64) for Liouville's check. Such a system is prepared per row
+   !> (`row_dependent`); without α (a check of the system alone) the traces are left 0.
+   subroutine prepare_first_order(system, form, error, alpha)
+      class(hill_system_t), intent(in) :: system  !! the system (`first_order`)
+      type(system_form_t), intent(inout) :: form  !! n set; the rest filled
+      type(error_t), allocatable, intent(out) :: error  !! A not finite at a node of the row
+      real(wp), intent(in), optional :: alpha     !! the row
+      real(wp) :: p(form%n, form%n), b(form%n, form%n)
+      integer :: n, i, k
+      integer, parameter :: nodes = 64
+      n = form%n
+      form%states = n
+      form%first_order = .true.
+      allocate (form%m(n, n), form%m_inverse(n, n), form%d(n, n), form%g(n, n))
+      form%m = 0.0_wp
+      do i = 1, n
+         form%m(i, i) = 1.0_wp
+      end do
+      form%m_inverse = form%m
+      form%d = 0.0_wp
+      form%g = 0.0_wp
+      form%period = system%period()
+      form%epsilon = 0.0_wp
+      form%gyroscopic = .false.
+      form%hamiltonian = .false.
+      form%half = .false.
+      form%trace_d = 0.0_wp
+      form%trace_b = 0.0_wp
+      if (.not. present(alpha)) return
+      do k = 0, nodes - 1
+         call system%stiffness(alpha, form%period*k/nodes, p, b)
+         if (.not. (all(ieee_is_finite(p)) .and. all(ieee_is_finite(b)))) then
+            call set_error(error, err_invalid_parameter, "state: A is not finite at tau = "// &
+               real_text(form%period*k/nodes)//" of the row alpha = "//real_text(alpha))
+            return
+         end if
+         form%trace_d = form%trace_d + sum([(p(i, i), i=1, n)])/nodes
+         form%trace_b = form%trace_b + sum([(b(i, i), i=1, n)])/nodes
+      end do
+   end subroutine prepare_first_order
+
+   !> Y' = A Y for the fundamental matrix Y (m × m, stored column by column in y): A =
+   !> [[0, I], [L, D]] with L = −M⁻¹K(τ) given and D of the form (m = 2n), or in first-order
+   !> form A = L itself (m = n); the right-hand side the Runge–Kutta methods integrate
+   !> (hillstab_integrate_system's rk, hillstab_integrate_system_gsl).
    pure subroutine fundamental_derivative(form, l, y, dydt)
       type(system_form_t), intent(in) :: form  !! the prepared system (D)
-      real(wp), intent(in) :: l(:, :)          !! L = −M⁻¹K(τ) (n × n)
+      real(wp), intent(in) :: l(:, :)          !! L = −M⁻¹K(τ), or A in first-order form (n × n)
       real(wp), intent(in) :: y(:)             !! Y, column by column (m²)
       real(wp), intent(out) :: dydt(:)         !! A Y, column by column (m²)
       integer :: n, m, col, o
       n = form%n
-      m = 2*n
+      m = form%states
+      if (form%first_order) then
+         do col = 1, m
+            o = (col - 1)*m
+            dydt(o + 1:o + m) = matmul(l, y(o + 1:o + m))
+         end do
+         return
+      end if
       do col = 1, m
          o = (col - 1)*m
          dydt(o + 1:o + n) = y(o + n + 1:o + m)
          dydt(o + n + 1:o + m) = matmul(l, y(o + 1:o + n)) + matmul(form%d, y(o + n + 1:o + m))
       end do
    end subroutine fundamental_derivative
+
+   !> The lower-left block L of A at K = p + β b: −M⁻¹K, or K itself (A) in first-order form.
+   pure function lower_block(form, k) result(l)
+      type(system_form_t), intent(in) :: form  !! the prepared system
+      real(wp), intent(in) :: k(:, :)          !! K, or A in first-order form (n × n)
+      real(wp) :: l(size(k, 1), size(k, 2))
+      if (form%first_order) then
+         l = k
+      else
+         l = -matmul(form%m_inverse, k)
+      end if
+   end function lower_block
 
    !> err_invalid_parameter unless α lies in the system's domain and α, β are finite with
    !> magnitudes ≤ 1e15.
@@ -393,6 +479,10 @@ contains
          write (buffer, '(i0)') nint(p)
       else
          write (buffer, '(g0)') p
+      end if
+      if (system%first_order()) then
+         text = "y' = A(tau) y, n = "//integer_text(system%dof())//" states, period "//trim(buffer)//" in tau"
+         return
       end if
       text = "M x'' + (C + eps M + G) x' + K(tau) x = 0, n = "//integer_text(system%dof())//", period "// &
              trim(buffer)//" in tau"

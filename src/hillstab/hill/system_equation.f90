@@ -20,8 +20,14 @@
 !> every τ the coefficients of the matrices come from two evaluations of the expression on
 !> the unit vectors of the matrices' names. The whole period is integrated.
 !>
-!> Variables (`&equations`): `n`, `parameters`, `matrices`, `stiffness`, `mass` (default
-!> '1': I), `damping` ('0'), `gyroscopic` ('0'), `frequency` or `period`, `alpha`, `beta`.
+!> The first-order form y' = A(t) y, y in Rⁿ (a periodic state-space model), is given by
+!> `state` = A(t) instead of `stiffness`, with the same rules (β enters A alone and affinely);
+!> in τ it is dy/dτ = (π/Ω) A(πτ/Ω) y, and it has no mass, damping or gyroscopic matrix
+!> (`first_order`: the methods integrate A itself).
+!>
+!> Variables (`&equations`): `n`, `parameters`, `matrices`, `stiffness` or `state`, `mass`
+!> (default '1': I), `damping` ('0'), `gyroscopic` ('0'), `frequency` or `period`, `alpha`,
+!> `beta`.
 !>
 !>```fortran
 !> type(equations_system_t) :: column
@@ -59,6 +65,7 @@ module hillstab_hill_system_equation
       character(len=:), allocatable :: parameters_text  !! `parameters`
       character(len=:), allocatable :: matrices_text    !! `matrices`
       character(len=:), allocatable :: stiffness_text   !! `stiffness`
+      character(len=:), allocatable :: state_text       !! `state`: A(t) of the first-order form
       character(len=:), allocatable :: mass_text        !! `mass`
       character(len=:), allocatable :: damping_text     !! `damping`
       character(len=:), allocatable :: gyroscopic_text  !! `gyroscopic`
@@ -104,6 +111,7 @@ module hillstab_hill_system_equation
       procedure :: set_values => equations_set_values
       procedure :: set_text => equations_set_text
       procedure :: check_values => equations_check_values
+      procedure :: first_order => equations_first_order
    end type equations_system_t
 
 contains
@@ -123,6 +131,18 @@ contains
          text = "M x'' + (C + G) x' + K(t) x = 0 (&equations)"
          return
       end if
+      if (equations_first_order(self)) then
+         text = "y' = A(t) y, n = "//integer_text(self%n)//" states, A(t) = "//self%state_text
+         if (self%from_period) then
+            text = text//", period T = "//self%period_text//", Omega = 2 pi/T"
+         else
+            text = text//", Omega = "//self%frequency_text
+         end if
+         text = text//"; tau = Omega t/pi: dy/dtau = (pi/Omega) A(pi tau/Omega) y; parameters: "// &
+                self%parameters_text//"; matrices: "//self%matrices_text//"; alpha = "//self%alpha_name// &
+                ", beta = "//self%beta_name
+         return
+      end if
       text = "M x'' + (C + G) x' + K(t) x = 0, n = "//integer_text(self%n)//", K(t) = "//self%stiffness_text// &
              ", M = "//self%mass_text//", C = "//self%damping_text//", G = "//self%gyroscopic_text
       if (self%from_period) then
@@ -135,6 +155,24 @@ contains
              self%alpha_name//", beta = "//self%beta_name
    end function equations_formula
 
+   !> The system is given in first-order form, y' = A(t) y (`state`).
+   pure logical function equations_first_order(self)
+      class(equations_system_t), intent(in) :: self  !! the system
+      equations_first_order = .false.
+      if (allocated(self%state_text)) equations_first_order = len(self%state_text) > 0
+   end function equations_first_order
+
+   !> The variable of the time-dependent coefficient: `state` in first-order form, else `stiffness`.
+   pure function coefficient_variable(self) result(name)
+      class(equations_system_t), intent(in) :: self  !! the system
+      character(len=:), allocatable :: name
+      if (equations_first_order(self)) then
+         name = "state"
+      else
+         name = "stiffness"
+      end if
+   end function coefficient_variable
+
    !> n.
    pure integer function equations_dof(self)
       class(equations_system_t), intent(in) :: self  !! the system
@@ -145,8 +183,9 @@ contains
    pure function equations_variables(self) result(variables)
       class(equations_system_t), intent(in) :: self  !! the system
       type(model_variable_t), allocatable :: variables(:)
-      allocate (variables(11))
-      variables(1) = model_variable_t("n", model_variable_real, 1, "", "degrees of freedom, 1 to 20", whole=.true.)
+      allocate (variables(12))
+      variables(1) = model_variable_t("n", model_variable_real, 1, "", "degrees of freedom, 1 to 20 (with state: "// &
+         "the states)", whole=.true.)
       variables(2) = model_variable_t("parameters", model_variable_text, max_equations_text, "''", &
          "the named parameters, 'name = value, ...'; a value may use the parameters before it")
       variables(3) = model_variable_t("matrices", model_variable_text, max_equations_text, "''", &
@@ -167,6 +206,8 @@ contains
          "the parameter the chart's alpha axis runs over (the rows)")
       variables(11) = model_variable_t("beta", model_variable_text, name_length, "", &
          "the parameter the chart's beta axis runs over: K affine in it, Omega, M, C and G free of it")
+      variables(12) = model_variable_t("state", model_variable_text, max_equations_text, "", &
+         "A(t) of the first-order form y' = A(t) y instead of stiffness (n states; no mass, damping, gyroscopic)")
    end function equations_variables
 
    !> `n`.
@@ -213,6 +254,7 @@ contains
       case ("parameters"); self%parameters_text = trim(adjustl(text))
       case ("matrices"); self%matrices_text = trim(adjustl(text))
       case ("stiffness"); self%stiffness_text = trim(adjustl(text))
+      case ("state"); self%state_text = trim(adjustl(text))
       case ("mass"); self%mass_text = trim(adjustl(text))
       case ("damping"); self%damping_text = trim(adjustl(text))
       case ("gyroscopic"); self%gyroscopic_text = trim(adjustl(text))
@@ -222,7 +264,8 @@ contains
       case ("beta"); self%beta_name = trim(adjustl(text))
       case default
          call set_error(error, err_invalid_parameter, "the equations system has no variable '"//trim(name)// &
-            "' (it has: n, parameters, matrices, stiffness, mass, damping, gyroscopic, frequency, period, alpha, beta)")
+            "' (it has: n, parameters, matrices, stiffness, mass, damping, gyroscopic, frequency, period, alpha, beta, "// &
+            "state)")
          return
       end select
       call prepare(self)
@@ -246,7 +289,7 @@ contains
       type(error_t), allocatable :: error
       logical, allocatable :: depends(:, :)
       character(len=name_length), allocatable :: all_names(:), matrix_names(:)
-      character(len=:), allocatable :: known, drive_name, where_beta
+      character(len=:), allocatable :: known, drive_name, where_beta, kv
       real(wp) :: drive, period
       real(wp), allocatable :: k_now(:, :), k_later(:, :), c(:, :), g(:, :)
       integer :: j, i
@@ -262,6 +305,8 @@ contains
       if (.not. allocated(self%frequency_text)) self%frequency_text = ""
       if (.not. allocated(self%period_text)) self%period_text = ""
       if (.not. allocated(self%stiffness_text)) self%stiffness_text = ""
+      if (.not. allocated(self%state_text)) self%state_text = ""
+      kv = coefficient_variable(self)
       if (.not. allocated(self%alpha_name)) self%alpha_name = ""
       if (.not. allocated(self%beta_name)) self%beta_name = ""
       if (self%n < 1) then
@@ -307,12 +352,25 @@ contains
       end do
       ! the expressions over (matrices..., t, parameters...)
       all_names = [character(len=name_length) :: matrix_names, "t", self%names]
-      if (len(self%stiffness_text) == 0) then
+      if (equations_first_order(self)) then
+         if (len(self%stiffness_text) > 0) then
+            self%problem = "stiffness, state: give one of the two (stiffness K(t) of M x'' + (C + G) x' + K(t) x = "// &
+                           "0, or state A(t) of y' = A(t) y)"
+            return
+         end if
+         if (self%mass_text /= "1" .or. self%damping_text /= "0" .or. self%gyroscopic_text /= "0") then
+            self%problem = "mass, damping, gyroscopic: the first-order form y' = A(t) y (state) has none; "// &
+                           "write them into A"
+            return
+         end if
+         call parse_one("state", self%state_text, all_names, self%k, self%problem)
+      else if (len(self%stiffness_text) == 0) then
          self%problem = "stiffness: K(t) is required (an expression of t, the parameters and the matrices "// &
-                        list_text(matrix_names)//")"
+                        list_text(matrix_names)//"), or state: A(t) of the first-order form y' = A(t) y"
          return
+      else
+         call parse_one("stiffness", self%stiffness_text, all_names, self%k, self%problem)
       end if
-      call parse_one("stiffness", self%stiffness_text, all_names, self%k, self%problem)
       if (len(self%problem) > 0) return
       call parse_one("mass", self%mass_text, all_names, self%m, self%problem)
       if (len(self%problem) > 0) return
@@ -322,9 +380,9 @@ contains
       if (len(self%problem) > 0) return
       if (self%m%uses("t") .or. self%c%uses("t") .or. self%g%uses("t")) then
          self%problem = trim(merge("mass      ", "damping   ", self%m%uses("t")))// &
-            ": constant in time (only the stiffness may use t)"
+            ": constant in time (only the "//kv//" may use t)"
          if (self%g%uses("t") .and. .not. (self%m%uses("t") .or. self%c%uses("t"))) &
-            self%problem = "gyroscopic: constant in time (only the stiffness may use t)"
+            self%problem = "gyroscopic: constant in time (only the "//kv//" may use t)"
          return
       end if
       if (self%m%uses(self%alpha_name) .or. self%m%uses(self%beta_name)) then
@@ -356,18 +414,18 @@ contains
       if (self%g%uses(self%beta_name)) where_beta = where_beta//", the gyroscopic matrix"
       if (len(where_beta) > 0) then
          self%problem = "beta: the beta axis '"//self%beta_name//"' enters "//where_beta(3:)// &
-            "; it may enter the stiffness only (make it the alpha axis)"
+            "; it may enter the "//kv//" only (make it the alpha axis)"
          return
       end if
       if (.not. self%k%affine_in(self%beta_name)) then
-         self%problem = "beta: the stiffness is not affine in the beta axis '"//self%beta_name//"' (make it "// &
+         self%problem = "beta: the "//kv//" is not affine in the beta axis '"//self%beta_name//"' (make it "// &
             "the alpha axis, whose parameter may enter anywhere)"
          return
       end if
       do j = 1, size(matrix_names)
          if (.not. (self%k%affine_in(trim(matrix_names(j))) .and. self%m%affine_in(trim(matrix_names(j))) .and. &
                     self%c%affine_in(trim(matrix_names(j))) .and. self%g%affine_in(trim(matrix_names(j))))) then
-            self%problem = "stiffness, mass, damping, gyroscopic: an expression is not linear in the matrix '"// &
+            self%problem = kv//", mass, damping, gyroscopic: an expression is not linear in the matrix '"// &
                trim(matrix_names(j))//"' (a sum of matrices times scalar expressions is expected)"
             return
          end if
@@ -387,12 +445,12 @@ contains
       if (len(self%problem) == 0) call matrix_value(self, self%g, 0.0_wp, self%values, g, self%problem, "gyroscopic")
       do i = 0, 15
          if (len(self%problem) > 0) exit
-         call matrix_value(self, self%k, period*i/16.0_wp, self%values, k_now, self%problem, "stiffness")
+         call matrix_value(self, self%k, period*i/16.0_wp, self%values, k_now, self%problem, kv)
          if (len(self%problem) == 0) call matrix_value(self, self%k, period*i/16.0_wp + period, self%values, &
-                                                     k_later, self%problem, "stiffness")
+                                                     k_later, self%problem, kv)
          if (len(self%problem) > 0) exit
          if (maxval(abs(k_later - k_now)) > 1.0e-9_wp*max(maxval(abs(k_now)), tiny(1.0_wp))) then
-            self%problem = "stiffness: not of period T = "//number(period)//" (2 pi/Omega) at the parameters ("// &
+            self%problem = kv//": not of period T = "//number(period)//" (2 pi/Omega) at the parameters ("// &
                            parameter_text(self)//"): K(t + T) differs from K(t) at t = "//number(period*i/16.0_wp)
          end if
       end do
@@ -420,7 +478,8 @@ contains
       real(wp) :: nodes(4, size(self%matrix_names)), r(4)
       type(error_t), allocatable :: failure
       integer :: i, j, q
-      character(len=10), parameter :: variables(4) = ["stiffness ", "mass      ", "damping   ", "gyroscopic"]
+      character(len=10) :: variables(4)
+      variables = [character(len=10) :: coefficient_variable(self), "mass", "damping", "gyroscopic"]
       do i = 1, size(self%matrix_names)
          do j = i + 1, size(self%matrix_names)
             nodes = 0.0_wp
@@ -618,8 +677,14 @@ contains
       q(self%i_beta) = 1.0_wp
       call coefficients(self, self%k, t, q, r1, failure)
       if (allocated(failure)) return
-      call assemble(self, ratio**2*r0, p)
-      call assemble(self, ratio**2*(r1 - r0), b)
+      ! dy/dτ = (π/Ω) A y in first-order form; (π/Ω)² K in second-order form
+      if (equations_first_order(self)) then
+         call assemble(self, ratio*r0, p)
+         call assemble(self, ratio*(r1 - r0), b)
+      else
+         call assemble(self, ratio**2*r0, p)
+         call assemble(self, ratio**2*(r1 - r0), b)
+      end if
    end subroutine equations_stiffness
 
    !> K is even about t = 0 at every row: at the axis α's own value and three others (each

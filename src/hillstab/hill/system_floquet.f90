@@ -174,17 +174,20 @@ contains
    end subroutine broucke_multipliers
 
    !> Analyse Φ = e^s Φ̃ with entries known to `phi_error` (absolute, of Φ̃'s entries).
-   subroutine system_floquet(phi, form, phi_error, result, log_scale)
+   subroutine system_floquet(phi, form, phi_error, result, log_scale, beta)
       real(wp), intent(in) :: phi(:, :)             !! Φ̃ (2n × 2n)
       type(system_form_t), intent(in) :: form       !! the prepared system
       real(wp), intent(in) :: phi_error             !! bound of the error of Φ̃'s entries
       type(system_floquet_t), intent(out) :: result !! the analysis
       real(wp), intent(in), optional :: log_scale   !! s (0 when absent)
+      !> β of the point, for Liouville's check of a first-order system (whose mean tr A is
+      !> `trace_d` + β `trace_b`); 0 when absent
+      real(wp), intent(in), optional :: beta
       integer :: n, m, i, k
       real(wp) :: work(size(phi, 1), size(phi, 2)), big
-      real(wp) :: s, scale, tr, tr2, e
+      real(wp) :: s, scale, tr, tr2, e, mean_trace
       n = form%n
-      m = 2*n
+      m = form%states
       result%n = n
       result%period = form%period
       s = 0.0_wp
@@ -210,7 +213,9 @@ contains
       allocate (result%multipliers(m), result%exponents(n))
       scale = max(1.0_wp, maxval(abs(work)))
       ! the defect of the structure Φ keeps, relative to the size its terms have
-      result%defect = structure_defect(work, s, form)
+      mean_trace = form%trace_d
+      if (present(beta)) mean_trace = mean_trace + beta*form%trace_b
+      result%defect = structure_defect(work, s, form, mean_trace)
       ! a scaled Φ̃ is not symplectic (its pairs multiply to e^{−2s}): the eigenvalues then
       if (form%hamiltonian .and. n == 1 .and. s == 0.0_wp) then
          call scalar_verdict(tr, e, form%period, result)
@@ -223,12 +228,13 @@ contains
 
    !> The defect of the structure Φ = e^s Φ̃ keeps, relative to the size of its terms, so that
    !> it measures rounding and not growth: Hamiltonian, ‖ΦᵀΩΦ − Ω‖/(‖Ω‖ max(1, ‖Φ‖)²)
-   !> (max norms); else Liouville's |det Φ − e^{P tr D}| over Hadamard's bound ∏‖Φ's columns‖₂
+   !> (max norms); else Liouville's |det Φ − e^{P mean tr A}| over Hadamard's bound ∏‖Φ's columns‖₂
    !> of |det Φ|, both computed on Φ̃ so that nothing overflows.
-   function structure_defect(phi, s, form) result(defect)
+   function structure_defect(phi, s, form, mean_trace) result(defect)
       real(wp), intent(in) :: phi(:, :)     !! Φ̃
       real(wp), intent(in) :: s             !! its scale
       type(system_form_t), intent(in) :: form
+      real(wp), intent(in) :: mean_trace    !! the mean of tr A over the period
       real(wp) :: defect
       ! explicit shapes: no reallocation on assignment (gfortran's size arithmetic for an
       ! unallocated left side overflows under UBSan)
@@ -257,7 +263,7 @@ contains
             unit_columns(:, i) = phi(:, i)/norms(i)
          end do
          ! det Φ / ∏‖col‖ = det Φ̃ / ∏‖col of Φ̃‖; Liouville's value over the same bound
-         target = exp(max(-700.0_wp, min(700.0_wp, form%period*form%trace_d - m*s - log_hadamard)))
+         target = exp(max(-700.0_wp, min(700.0_wp, form%period*mean_trace - m*s - log_hadamard)))
          defect = abs(matrix_determinant(unit_columns) - target)
       end if
    end function structure_defect

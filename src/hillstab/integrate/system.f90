@@ -48,7 +48,7 @@ module hillstab_integrate_system
    use hillstab_core_stats, only: work_stats_t
    use hillstab_core_error, only: error_t, set_error, err_integration
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
-   use hillstab_hill_system, only: hill_system_t, system_form_t, fundamental_derivative
+   use hillstab_hill_system, only: hill_system_t, system_form_t, fundamental_derivative, lower_block
    use hillstab_hill_system_exponents, only: identity => identity_matrix
    use hillstab_integrate_rk, only: rk_system_t, rk_options_t, rk_integrate, rk_dop853
    use hillstab_integrate_monodromy, only: method_table, method_auto, method_magnus4, method_magnus6, method_rk, &
@@ -186,7 +186,21 @@ contains
       !> unallocated otherwise
       type(error_t), allocatable, intent(out) :: error
       type(gsl_system_result_t) :: reference
-      select case (method%kind)
+      integer :: kind
+      kind = method%kind
+      if (form%first_order) then
+         ! the Magnus kernels take A's second-order blocks: a first-order system runs on rk
+         if (kind == system_auto) kind = system_rk
+         if (kind == system_magnus4 .or. kind == system_magnus6) then
+            call set_error(error, err_integration, "method: "//system_method_name(kind)//" takes a system "// &
+               "in second-order form; a first-order system y' = A y takes rk, gsl or auto (rk)")
+            result%status = status_failed
+            allocate (result%phi(form%states, form%states))
+            result%phi = 0.0_wp
+            return
+         end if
+      end if
+      select case (kind)
       case (system_rk)
          call monodromy_rk(system, form, alpha, beta, method%tolerance, result, error)
       case (system_gsl)
@@ -204,7 +218,7 @@ contains
       if (allocated(error) .or. result%status == status_failed) return
       ! no estimate below the rounding every method accumulates: status 1 where the tolerance
       ! lies under it
-      result%error_estimate = max(result%error_estimate, roundoff_level(method%kind, result, form))
+      result%error_estimate = max(result%error_estimate, roundoff_level(kind, result, form))
       if (result%status == status_ok .and. result%error_estimate > method%tolerance) result%status = status_roundoff
    end subroutine system_monodromy
 
@@ -255,28 +269,32 @@ contains
       integer, intent(out) :: count                   !! the number of factors
       type(error_t), allocatable, intent(out) :: error  !! err_integration when an integration fails
       type(fundamental_t) :: f
-      real(wp) :: y(2*form%n, 2*form%n), size_a, local, window
-      integer :: m, j, k, order, pieces, half_count
-      m = 2*form%n
+      real(wp) :: y(form%states, form%states), size_a, local, window
+      integer :: m, j, k, order, pieces, half_count, kind
+      m = form%states
+      kind = method%kind
+      if (form%first_order .and. kind == system_auto) kind = system_rk
       count = 0
       allocate (factors(m, m, 16))
       window = window_length(form)
-      select case (method%kind)
+      select case (kind)
       case (system_rk, system_gsl)
          call renew_nodes(system, form, alpha, 6, nodes)
          size_a = 0.0_wp
          do k = 1, 4
             size_a = max(size_a, maxval(sum(abs(nodes%corner_p(:, :, k) + beta*nodes%corner_b(:, :, k)), dim=2)))
          end do
-         pieces = max(1, ceiling(window*(1.0_wp + sqrt(size_a) + maxval(sum(abs(form%d), dim=2)))/chunk_limit))
-         if (method%kind == system_rk) then
+         ! ‖A‖ grows as √‖M⁻¹K‖ in second-order form, as the given A in first-order form
+         if (.not. form%first_order) size_a = sqrt(size_a)
+         pieces = max(1, ceiling(window*(1.0_wp + size_a + maxval(sum(abs(form%d), dim=2)))/chunk_limit))
+         if (kind == system_rk) then
             call rk_context(system, form, alpha, beta, f)
             local = rk_second_tolerance(rk_first_tolerance(method%tolerance))
          else
             local = gsl_second_epsilon(gsl_first_epsilon(method%tolerance))
          end if
          do k = 1, pieces
-            if (method%kind == system_rk) then
+            if (kind == system_rk) then
                call propagate_rk(f, window*(k - 1)/pieces, window*k/pieces, local, y, monodromy%steps, error)
             else
                call system_propagator_gsl(system, form, alpha, beta, local, window*(k - 1)/pieces, window*k/pieces, &
@@ -643,7 +661,7 @@ contains
       real(wp), intent(in) :: t, y(:)
       real(wp), intent(out) :: dydt(:)
       call self%system%stiffness(self%alpha, t, self%p, self%b)
-      call fundamental_derivative(self%form, -matmul(self%form%m_inverse, self%p + self%beta*self%b), y, dydt)
+      call fundamental_derivative(self%form, lower_block(self%form, self%p + self%beta*self%b), y, dydt)
    end subroutine fundamental_rhs
 
    !> DOP853 at tolerance/10, then /320: the second value, the difference the estimate.
@@ -657,7 +675,7 @@ contains
       real(wp), allocatable :: y(:, :), first(:, :), second(:, :)
       real(wp) :: local, scale, estimate
       integer :: m, pass
-      m = 2*form%n
+      m = form%states
       call rk_context(system, form, alpha, beta, f)
       local = rk_first_tolerance(tolerance)
       result%status = status_ok

@@ -21,7 +21,7 @@ module hillstab_integrate_system_gsl
    use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t, set_error, err_integration
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
-   use hillstab_hill_system, only: hill_system_t, system_form_t, fundamental_derivative
+   use hillstab_hill_system, only: hill_system_t, system_form_t, fundamental_derivative, lower_block
    use hillstab_ffi_gsl, only: gsl_odeiv2_system, gsl_odeiv2_step_rk8pd, gsl_set_error_handler_off, &
       gsl_odeiv2_driver_alloc_y_new, gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_odeiv2_driver_set_nmax, &
       gsl_success, gsl_ebadfunc
@@ -58,10 +58,10 @@ contains
       type(gsl_context_t), pointer :: c
       integer :: m
       call c_f_pointer(params, c)
-      m = 2*c%form%n
+      m = c%form%states
       c%rhs_calls = c%rhs_calls + 1
       call c%system%stiffness(c%alpha, t, c%p, c%b)
-      call fundamental_derivative(c%form, -matmul(c%form%m_inverse, c%p + c%beta*c%b), y(1:m*m), dydt(1:m*m))
+      call fundamental_derivative(c%form, lower_block(c%form, c%p + c%beta*c%b), y(1:m*m), dydt(1:m*m))
       status = gsl_success
       if (.not. all(ieee_is_finite(dydt(1:m*m)))) status = gsl_ebadfunc
    end function fundamental_rhs
@@ -78,7 +78,7 @@ contains
       real(wp) :: eps, scale
       integer :: m, pass
       logical :: roundoff
-      m = 2*form%n
+      m = form%states
       roundoff = .false.
       ! the whole period, whatever the symmetry: an independent reference
       eps = gsl_first_epsilon(tolerance)
@@ -148,7 +148,7 @@ contains
       real(c_double) :: t
       integer :: m, i
       integer(c_int) :: status
-      m = 2*form%n
+      m = form%states
       allocate (context%system, source=system)
       context%form = form
       context%alpha = alpha

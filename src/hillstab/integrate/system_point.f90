@@ -48,7 +48,7 @@ contains
       call system_monodromy(system, form, alpha, beta, method, nodes, monodromy, error)
       if (allocated(error) .or. monodromy%status == status_failed) return
       call system_floquet(monodromy%phi, form, monodromy%error_estimate*max(1.0_wp, maxval(abs(monodromy%phi))), &
-                          floquet, monodromy%log_scale)
+                          floquet, monodromy%log_scale, beta)
       call resolve_exponents(system, form, alpha, beta, method, nodes, monodromy, floquet)
    end subroutine system_point
 
@@ -81,7 +81,7 @@ contains
          floquet%exponents_resolved = .false.
          return
       end if
-      allocate (all_exponents(2*n), resolved(2*n), arguments(2*n))
+      allocate (all_exponents(form%states), resolved(form%states), arguments(form%states))
       call factored_exponents(factors(:, :, 1:count), form%period, method%tolerance, all_exponents, resolved, &
                               arguments=arguments)
       if (need_exponents) then
@@ -159,7 +159,7 @@ contains
       integer :: i, m
       need = .false.
       if (floquet%n < 2) return
-      m = 2*floquet%n
+      m = size(monodromy%phi, 1)
       log_norm = log(max(1.0_wp, maxval(abs(monodromy%phi)))) + monodromy%log_scale
       log_top = floquet%exponents(1)*floquet%period
       relative = monodromy%error_estimate + 64.0_wp*m*epsilon(1.0_wp)

@@ -177,6 +177,11 @@ contains
       if (.not. allocated(error)) call own_damping_refusal(handle%system, real(epsilon, wp), "", error)
       if (.not. allocated(error)) call handle%system%check_values(error)
       if (.not. allocated(error)) then
+         if (handle%system%first_order()) call set_error(error, err_invalid_parameter, "system: a system in "// &
+            "first-order form (state) has no natural frequencies to find regions from; write it as M x'' + "// &
+            "C x' + K(t) x = 0")
+      end if
+      if (.not. allocated(error)) then
          allocate (oracle%system, source=handle%system)
          oracle%drive_axis = int(drive_axis)
          oracle%method = system_method_t(int(method), real(tolerance, wp))

@@ -50,7 +50,8 @@ module hillstab_interop_capi_system
    use hillstab_hill_system_matrix, only: matrix_system_t
    use hillstab_hill_system_equation, only: equations_system_t, max_equations_text
    use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet
-   use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy
+   use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
+      system_magnus4, system_magnus6, system_method_name
    use hillstab_integrate_monodromy, only: method_table, method_name, method_takes_systems
    use hillstab_interop_outcome, only: record_outcome
    use hillstab_interop_sizes, only: values_count_refusal
@@ -376,6 +377,32 @@ contains
       status = outcome_status(error)
    end function hillstab_c_system_dof
 
+   !> `int hillstab_system_states(const hillstab_system *system, int *states)`: the size m of
+   !> the state y (Φ is m × m, with m multipliers): 2n, or n for a system in first-order form
+   !> (an equations system given `state`, y' = A(t) y); err_invalid_parameter while n is not
+   !> given.
+   function hillstab_c_system_states(system, states) result(status) bind(C, name="hillstab_system_states")
+      type(c_ptr), value, intent(in) :: system  !! the handle
+      type(c_ptr), value, intent(in) :: states  !! receives m (an `int *`)
+      integer(c_int) :: status
+      character(len=*), parameter :: where = "hillstab_system_states"
+      type(system_handle_t), pointer :: handle
+      type(error_t), allocatable :: error
+      integer(c_int), pointer :: out
+      call handle_system(where, system, handle, error)
+      call check_output(where, "states", states, error)
+      if (.not. allocated(error)) then
+         if (handle%system%dof() < 1) then
+            call set_error(error, err_invalid_parameter, where//": states: the degrees of freedom are not given "// &
+               "(hillstab_system_set(system, ""n"", ...) first)")
+         else
+            call c_f_pointer(states, out)
+            out = int(merge(handle%system%dof(), 2*handle%system%dof(), handle%system%first_order()), c_int)
+         end if
+      end if
+      status = outcome_status(error)
+   end function hillstab_c_system_states
+
    !> Everything a point needs, checked: the handle, the method and tolerance, α, β, ε (0 for
    !> a system with a damping of its own), the system complete, prepared at ε (and at α for
    !> a system whose damping changes from row to row, as the tasks prepare it); then the
@@ -394,7 +421,7 @@ contains
       if (allocated(error)) return
       call handle_system(where, system, handle, error)
       if (allocated(error)) return
-      call check_method_tolerance(method, tolerance, error)
+      call check_method_tolerance(method, tolerance, error, handle%system)
       if (allocated(error)) then
          continue
       else if (.not. ieee_is_finite(alpha)) then
@@ -439,13 +466,21 @@ contains
 
    !> err_invalid_parameter naming `method` (not a system method's code) or `tolerance` (not
    !> strictly between 1e-15 and 1).
-   subroutine check_method_tolerance(method, tolerance, error)
+   subroutine check_method_tolerance(method, tolerance, error, system)
       integer(c_int), intent(in) :: method  !! HILLSTAB_METHOD_AUTO, _MAGNUS4, _MAGNUS6, _RK or _GSL
       real(c_double), intent(in) :: tolerance  !! the target error of Φ
       type(error_t), allocatable, intent(out) :: error  !! what is wrong; unallocated when both are valid
+      !> the system: one in first-order form takes rk, gsl and auto (rk) only
+      class(hill_system_t), intent(in), optional :: system
+      logical :: first_order
+      first_order = .false.
+      if (present(system)) first_order = system%first_order()
       if (.not. method_takes_systems(int(method))) then
          call set_error(error, err_invalid_parameter, "method: unknown system method code "// &
             integer_text(int(method))//" ("//system_method_codes()//")")
+      else if (first_order .and. (method == system_magnus4 .or. method == system_magnus6)) then
+         call set_error(error, err_invalid_parameter, "method: "//system_method_name(int(method))//" takes a "// &
+            "system in second-order form; a first-order system (state) takes rk, gsl or auto (rk)")
       else if (.not. in_range(tolerance, min_system_tolerance, 1.0_wp, .false.)) then
          call set_error(error, err_invalid_parameter, "tolerance: must lie between 1e-15 and 1 (exclusive), "// &
             "got "//real_text(real(tolerance, wp)))
@@ -498,7 +533,7 @@ contains
       call check_output(where, "status", status, error)
       call system_point(where, system, alpha, beta, epsilon, method, tolerance, handle, form, result, error)
       if (.not. allocated(error)) then
-         m = 2*form%n
+         m = form%states
          call c_f_pointer(phi, phi_out, [m*m])
          call c_f_pointer(log_scale, scale_out)
          call c_f_pointer(error_estimate, estimate_out)
@@ -566,7 +601,7 @@ contains
       call system_point(where, system, alpha, beta, epsilon, method, tolerance, handle, form, result, error)
       if (.not. allocated(error)) then
          call system_floquet(result%phi, form, result%error_estimate*max(1.0_wp, maxval(abs(result%phi))), f, &
-                             result%log_scale)
+                             result%log_scale, real(beta, wp))
          call resolve_exponents(handle%system, form, real(alpha, wp), real(beta, wp), &
                                 system_method_t(int(method), real(tolerance, wp)), nodes, result, f)
          n = form%n
@@ -579,8 +614,8 @@ contains
                s = 0.0_wp
             end if
          end if
-         call c_f_pointer(multipliers_re, re_out, [2*n])
-         call c_f_pointer(multipliers_im, im_out, [2*n])
+         call c_f_pointer(multipliers_re, re_out, [form%states])
+         call c_f_pointer(multipliers_im, im_out, [form%states])
          call c_f_pointer(exponents, exponents_out, [n])
          re_out = real(f%multipliers, c_double)
          im_out = aimag(f%multipliers)

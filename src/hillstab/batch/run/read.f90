@@ -24,7 +24,7 @@ module hillstab_batch_run_read
    use hillstab_hill_coefficient, only: sampling_name, sampling_from_name, sampling_names_text
    use hillstab_hill_units, only: physical_t, physical_epsilon, check_physical, equilibrium_length
    use hillstab_integrate_monodromy, only: method_t, method_table, method_name, method_from_name, method_names_text, &
-      method_description
+      method_description, method_magnus4, method_magnus6
    use hillstab_batch_scene_types, only: scene_t, task_t, add_warning
    use hillstab_batch_scene_group_model, only: read_model_group, model_group_name
    use hillstab_batch_scene_file, only: scene_file_t, open_scene_file, close_scene_file, group_present, group_sets, &
@@ -76,6 +76,7 @@ contains
          call new_task(task_name, task, cause, system=allocated(scene%system))
          if (allocated(cause)) call fail(error, path, "scene", "task", cause%message)
       end if
+      if (.not. allocated(error) .and. allocated(scene%system)) call check_first_order(path, scene, task_name, error)
       if (.not. allocated(error)) call check_task_settings(file, scene, task, error)
       if (.not. allocated(error)) then
          if (group_present(file%unit, "physical")) then
@@ -97,6 +98,28 @@ contains
       call close_scene_file(file)
       if (.not. allocated(error)) call move_alloc(task, scene%task)
    end subroutine read_scene
+
+   !> A system in first-order form (`&equations state`) runs tasks chart, points and
+   !> coefficient, by rk (auto) or gsl: the Magnus methods take A's second-order blocks, and
+   !> the regions, edges and boundaries need the natural frequencies of M and K.
+   subroutine check_first_order(path, scene, task_name, error)
+      character(len=*), intent(in) :: path       !! scene file
+      type(scene_t), intent(in) :: scene         !! the scene read so far
+      character(len=*), intent(in) :: task_name  !! `&scene task`
+      type(error_t), allocatable, intent(inout) :: error  !! err_input naming file, group and variable
+      if (.not. scene%system%first_order()) return
+      select case (task_name)
+      case ("chart", "points", "coefficient")
+      case default
+         call fail(error, path, "scene", "task", "task '"//task_name//"' does not run on a system in "// &
+            "first-order form (&equations state): it takes chart, points and coefficient (regions, edges and "// &
+            "boundaries need the natural frequencies of a second-order form M x'' + C x' + K(t) x = 0)")
+         return
+      end select
+      if (scene%method%kind == method_magnus4 .or. scene%method%kind == method_magnus6) &
+         call fail(error, path, "scene", "method", "method '"//method_name(scene%method%kind)//"' takes a "// &
+            "system in second-order form; a first-order system (&equations state) takes rk, gsl or auto (rk)")
+   end subroutine check_first_order
 
    !> A warning for each group of the file that the task does not read (another task's
    !> group, or a misspelt name whose values would otherwise be ignored in silence), saying
@@ -374,7 +397,10 @@ contains
          text = text//model%name()//": "//model%summary()
       end do
       text = text//" | system: n coupled equations M x'' + (C + G) x' + K(tau) x = 0, the matrices in &system "// &
-             "(tasks chart, points, coefficient, boundaries; guide page Coupled systems)"
+             "(tasks chart, points, coefficient, boundaries, regions, edges; guide page Coupled systems) | "// &
+             "equations: n coupled equations M x'' + (C + G) x' + K(t) x = 0 in physical time, or the first-order "// &
+             "form y' = A(t) y (state), with named parameters and matrices (&equations; guide page Your problem "// &
+             "as you write it)"
    end function model_choices
 
    !> The methods for a template's comment: "auto (…) | formula (…) | …".

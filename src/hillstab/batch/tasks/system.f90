@@ -154,9 +154,18 @@ contains
    end function scene_column_names
 
    !> What each column holds, for the header.
-   function column_help(name) result(text)
+   function column_help(name, first_order) result(text)
       character(len=*), intent(in) :: name
+      logical, intent(in) :: first_order  !! the system is y' = A y
       character(len=:), allocatable :: text
+      if (first_order) then
+         select case (name)
+         case ("trace"); text = "a1 = tr Phi of the one-period monodromy of y' = A y (+-1e300 with overflow = 1)"
+            return
+         case ("defect"); text = "|det Phi - exp(P mean tr A)| over Hadamard's bound of |det Phi| (relative, max norms)"
+            return
+         end select
+      end if
       select case (name)
       case ("alpha"); text = "alpha, the drive"
       case ("beta"); text = "beta, the factor of B"
@@ -324,9 +333,17 @@ contains
                  real_text(scene%epsilon)//" adds C = epsilon M"
       extra(3) = "verdicts decided from the multipliers and the error bound of Phi (hillstab_hill_system_floquet); "// &
                  "n = 2 Hamiltonian: Broucke's criterion"
+      if (scene%system%first_order()) then
+         extra(2) = "method: "//system_method_name(scene%method%kind)//", tolerance "// &
+                    real_text(scene%method%tolerance)//" on Phi's entries relative to max(1, max|Phi_ij|); "// &
+                    "a first-order system runs on rk (auto) or gsl"
+         extra(3) = "verdicts decided from the multipliers and the error bound of Phi (hillstab_hill_system_floquet); "// &
+                    "first-order form: no structure assumed, stable when every multiplier lies inside the unit "// &
+                    "circle with its error disc (one on the circle is marginal)"
+      end if
       do k = 1, size(chosen)
          extra(3 + k) = "column "//integer_text(k)//", "//trim(names(chosen(k)))//": "// &
-                        column_help(trim(names(chosen(k))))
+                        column_help(trim(names(chosen(k))), scene%system%first_order())
          if (chosen(k) <= 2 .and. trim(names(chosen(k))) /= trim(merge("alpha", "beta ", chosen(k) == 1))) &
             extra(3 + k) = "column "//integer_text(k)//", "//trim(names(chosen(k)))//": the parameter "// &
                            trim(names(chosen(k)))//", the chart's "//trim(merge("alpha", "beta ", chosen(k) == 1))// &

@@ -116,21 +116,31 @@ contains
       integer :: n, a, t, i, j
       real(wp) :: tau
       type(progress_t) :: progress
+      character(len=:), allocatable :: entry, matrix
       n = scene%system%dof()
+      ! a first-order system's coefficient is its state matrix A (in tau: (pi/Omega) A)
+      entry = " k_"
+      matrix = "K(tau)"
+      if (scene%system%first_order()) then
+         entry = " a_"
+         matrix = "A(tau)"
+      end if
       allocate (p(n, n), b(n, n), k_tau(n, n))
       names = "alpha tau"
       do i = 1, n
          do j = 1, n
-            names = names//" k_"//integer_text(i)//"_"//integer_text(j)
+            names = names//entry//integer_text(i)//"_"//integer_text(j)
          end do
       end do
       allocate (extra(2))
       extra(1) = system_description(scene%system)
-      extra(2) = "one block per alpha (blank line between): K(tau) at beta = "//real_text(self%beta)// &
+      extra(2) = "one block per alpha (blank line between): "//matrix//" at beta = "//real_text(self%beta)// &
                  ", its entries row by row"
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
-      call write_header(file, scene_header(scene, "hillstab "//version_string//": the stiffness K(tau) of "// &
+      if (scene%system%first_order()) matrix = "state matrix A(tau)"
+      if (.not. scene%system%first_order()) matrix = "stiffness K(tau)"
+      call write_header(file, scene_header(scene, "hillstab "//version_string//": the "//matrix//" of "// &
                         system_equation_text(scene%system), extra), names, error)
       call progress_begin(progress, int(size(self%alphas), int64), quiet, "curves")
       do a = 1, size(self%alphas)
