@@ -116,6 +116,7 @@ contains
       character(len=80) :: where
       system = c_pair(ctx, 0.8_wp, 0.1_wp)
       call check(ctx, hillstab_c_system_dof(system, c_loc(n)) == 0 .and. n == 2, "dof 2")
+      call check(ctx, hillstab_c_system_states(system, c_loc(n)) == 0 .and. n == 4, "states 4")
       pair = pendula_pair(0.8_wp, 0.1_wp)
       do k = 1, size(points, 2)
          call prepare_system(pair, points(3, k), form, error)
@@ -176,6 +177,7 @@ contains
       call check(ctx, hillstab_c_system_new(c_loc(empty)) == 0, "new empty")
       call refused(hillstab_c_system_dof(empty, c_loc(n)), "hillstab_system_dof: n:", "dof of empty")
       call check(ctx, n == -7, "n untouched")
+      call refused(hillstab_c_system_states(empty, c_loc(n)), "hillstab_system_states: states:", "states of empty")
       call refused(hillstab_c_system_check(empty), "hillstab_system_check: n:", "check empty")
       call refused(floquet(empty, 0.3_wp, 1.0_wp, 0.0_wp, 0, 1.0e-10_wp), "hillstab_system_floquet: n:", &
                    "floquet of empty")

@@ -59,7 +59,8 @@ module hillstab_interop_capi_system
    implicit none
    private
    public :: system_handle_t
-   public :: hillstab_c_system_new, hillstab_c_system_new_named, hillstab_c_system_free, hillstab_c_system_set, &
+   public :: hillstab_c_system_new, hillstab_c_system_states, &
+      hillstab_c_system_new_named, hillstab_c_system_free, hillstab_c_system_set, &
       hillstab_c_system_set_text, hillstab_c_system_check, hillstab_c_system_dof, hillstab_c_system_monodromy, &
       hillstab_c_system_floquet
    public :: min_system_tolerance, handle_system, check_output, outcome_status, check_method_tolerance, &
