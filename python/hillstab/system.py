@@ -535,7 +535,7 @@ class Equations(System):
     ``state`` instead of ``stiffness`` (with no mass, damping or gyroscopic matrix) gives the
     first-order form y' = A(t) y, a periodic state-space model of ``n`` states: A(t) a matrix
     expression as above; Φ is then n × n with n multipliers and n exponents (``states``), its
-    methods rk (and auto, which runs rk) and gsl.
+    every system method (the Magnus ones on the full A).
 
     The methods are `System`'s — `floquet`, `points`, `chart`, `monodromy` — with α and β
     the values of the two axes' parameters; the results carry the axes by those names too

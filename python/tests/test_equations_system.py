@@ -237,6 +237,7 @@ def test_three_states_against_the_command_line(cli):
     (dict(damping="1"), "mass, damping, gyroscopic"),
     (dict(state="P + (g0 + g1*cos(Om*t))*Q"), "state"),
     (dict(state="P + (g0 + g1*cos(Om*t) + 0.1*cos(3*t))*G"), "state"),
+    (dict(state="P + (g0 + g1*cos(3*t))*G"), "state"),
 ])
 def test_first_order_bad_input_named(change, variable):
     with pytest.raises(ValueError) as caught:
@@ -244,10 +245,14 @@ def test_first_order_bad_input_named(change, variable):
     assert variable + ":" in str(caught.value), str(caught.value)
 
 
-def test_first_order_refuses_magnus():
+def test_first_order_methods_agree():
+    """Every system method on the three states: Magnus on the full A, rk and gsl within the
+    tolerance of one another; without a stiffness or a state the system is refused."""
     plant = hillstab.Equations(**FEEDBACK)
-    with pytest.raises(ValueError, match="magnus6 takes a system in second-order form"):
-        plant.floquet(2.0, 0.5, method="magnus6")
+    reference = plant.monodromy(2.3, 0.8, method="rk", tolerance=1e-10)[0]
+    for method in ("auto", "magnus4", "magnus6", "gsl"):
+        phi, estimate, status = plant.monodromy(2.3, 0.8, method=method, tolerance=1e-10)
+        assert status == 0 and np.abs(phi - reference).max() <= 2e-10 * max(1.0, np.abs(reference).max()), method
     with pytest.raises(ValueError, match="stiffness: give K"):
         hillstab.Equations(frequency="Om", matrices=FEEDBACK["matrices"], n=3, parameters=FEEDBACK["parameters"],
                            alpha="Om", beta="g1")

@@ -409,14 +409,14 @@ contains
 
    !> Bolotin's damped column written in first-order form, y = (x, x'), A = U + (P0 + P1
    !> cos Ωt) V with U = [[0, I], [−W, −C]] and V = [[0, 0], [S, 0]]: at the 50 points of the
-   !> reference (set 3, mpmath) every multiplier within the tolerance by rk, gsl and auto
-   !> (rk), the trace and the verdict equal to the second-order form's (method auto, Magnus),
-   !> all six exponents reported, and Liouville's check met.
+   !> reference (set 3, mpmath) every multiplier within the tolerance by every system method
+   !> (the Magnus ones on the full A), the trace and the verdict equal to the second-order
+   !> form's (method auto), all six exponents reported, and Liouville's check met.
    subroutine first_order_column(ctx)
       type(test_context_t), intent(inout) :: ctx
       character(len=*), parameter :: path = "data/reference/physical_set.dat"
       real(wp), parameter :: tolerance = 1.0e-10_wp
-      integer, parameter :: methods(3) = [system_auto, system_rk, system_gsl]
+      integer, parameter :: methods(5) = [system_auto, system_magnus4, system_magnus6, system_rk, system_gsl]
       type(equations_system_t) :: first, second
       type(error_t), allocatable :: error
       type(system_form_t) :: form, form2
@@ -511,8 +511,8 @@ contains
 
    !> Three states (a damped plant x'' + 2ζx' + x = u under the gain u' = (−u − g(t) x)/T_a,
    !> g = g0 + g1 cos Ωt): at g1 = 0 the multipliers are e^{Tλ} with λ the eigenvalues of the
-   !> constant A (LAPACK), T = 2π/Ω; with the drive, rk and gsl agree within the tolerance at
-   !> 50 points of (Ω, g1), and the verdicts with them.
+   !> constant A (LAPACK), T = 2π/Ω, by auto (Magnus 6) and rk; with the drive, auto, rk and
+   !> gsl agree within the tolerance at 50 points of (Ω, g1), and the verdicts with them.
    subroutine first_order_three_states(ctx)
       type(test_context_t), intent(inout) :: ctx
       real(wp), parameter :: tolerance = 1.0e-10_wp, zeta = 0.05_wp, ta = 0.2_wp, g0 = 0.5_wp
@@ -524,7 +524,7 @@ contains
       type(system_floquet_t) :: f, f2
       real(wp) :: a(3, 3), wr(3), wi(3), vl(1, 3), vr(1, 3), work(64), om, g1, d
       complex(wp) :: exact(3), computed(3)
-      integer :: k, j, info, n_unstable
+      integer :: k, j, i, info, n_unstable
       call plant%set_values("n", [3.0_wp], error)
       call plant%set_text("parameters", "zeta = 0.05, Ta = 0.2, g0 = 0.5, g1 = 0, Om = 2", error)
       call plant%set_text("matrices", "P = [0, 1, 0; -1, -2*zeta, 1; 0, 0, -1/Ta], G = [0, 0, 0; 0, 0, 0; "// &
@@ -549,18 +549,21 @@ contains
          call check(ctx, .not. allocated(error) .and. form%states == 3, "prepared, 3 states")
          if (allocated(error)) return
          ! the constant A: Φ = exp(T A)
-         nodes = system_nodes_t()
-         call system_point(plant, form, om, 0.0_wp, system_method_t(system_rk, tolerance), nodes, r, f, error)
-         call check(ctx, .not. allocated(error) .and. r%status == 0, "rk at g1 = 0, Om = "//real_text(om))
-         if (allocated(error)) return
          exact = exp(cmplx(wr, wi, wp)*(2.0_wp*pi/om))
-         computed = f%multipliers*exp(f%log_scale)
-         d = 0.0_wp
-         do j = 1, 3
-            d = max(d, minval(abs(computed - exact(j))))
+         do i = 1, 2
+            nodes = system_nodes_t()
+            call system_point(plant, form, om, 0.0_wp, system_method_t(merge(system_auto, system_rk, i == 1), &
+                              tolerance), nodes, r, f, error)
+            call check(ctx, .not. allocated(error) .and. r%status == 0, "status 0 at g1 = 0, Om = "//real_text(om))
+            if (allocated(error)) return
+            computed = f%multipliers*exp(f%log_scale)
+            d = 0.0_wp
+            do j = 1, 3
+               d = max(d, minval(abs(computed - exact(j))))
+            end do
+            call check(ctx, d <= tolerance, "the multipliers of exp(T A) at Om = "//real_text(om)//" ("// &
+                       real_text(d)//")")
          end do
-         call check(ctx, d <= tolerance, "the multipliers of exp(T A) at Om = "//real_text(om)//" ("// &
-                    real_text(d)//")")
          ! with the drive: rk against gsl
          g1 = spread(k, 0.7_wp, 0.0_wp, 3.0_wp)
          nodes = system_nodes_t()
@@ -576,6 +579,14 @@ contains
          call check(ctx, d <= 2.0_wp*tolerance, "rk and gsl agree ("//real_text(d)//") at Om = "//real_text(om)// &
                     ", g1 = "//real_text(g1))
          call check(ctx, f%verdict == f2%verdict, "the verdicts agree at Om = "//real_text(om))
+         nodes = system_nodes_t()
+         call system_point(plant, form, om, g1, system_method_t(system_auto, tolerance), nodes, r2, f2, error)
+         if (allocated(error)) return
+         d = maxval(abs(r%phi*exp(r%log_scale) - r2%phi*exp(r2%log_scale)))/ &
+             max(1.0_wp, maxval(abs(r%phi))*exp(r%log_scale))
+         call check(ctx, r2%status == 0 .and. d <= 2.0_wp*tolerance, "rk and auto agree ("//real_text(d)// &
+                    ") at Om = "//real_text(om)//", g1 = "//real_text(g1))
+         call check(ctx, f%verdict == f2%verdict, "the verdicts of auto at Om = "//real_text(om))
          call check(ctx, f%defect <= 1.0e-9_wp, "Liouville's check ("//real_text(f%defect)//")")
          if (f%verdict == 0) n_unstable = n_unstable + 1
       end do
@@ -583,20 +594,20 @@ contains
       call check(ctx, n_unstable > 0 .and. n_unstable < 50, "stable and unstable points, "// &
                  real_text(real(n_unstable, wp))//" unstable")
       ! refused, naming the variable, with nothing written
-      call refused("chart", "auto", "stiffness = 'P', ", "&equations: stiffness, state:")
-      call refused("chart", "auto", "mass = '2', ", "&equations: mass, damping, gyroscopic:")
-      call refused("chart", "magnus6", "", "&scene: method:")
-      call refused("regions", "auto", "", "&scene: task:")
+      call refused("chart", "auto", "stiffness = 'P', ", "&equations: stiffness, state:", "'P + (0.5 + g1*cos(Om*t))*G'")
+      call refused("chart", "auto", "mass = '2', ", "&equations: mass, damping, gyroscopic:", "'P + (0.5 + g1*cos(Om*t))*G'")
+      call refused("chart", "auto", "", "&equations: state: not of period", "'P + (0.5 + g1*cos(3*t))*G'")
+      call refused("regions", "auto", "", "&scene: task:", "'P + (0.5 + g1*cos(Om*t))*G'")
    contains
-      subroutine refused(task, method, extra, named)
-         character(len=*), intent(in) :: task, method, extra, named
+      subroutine refused(task, method, extra, named, state)
+         character(len=*), intent(in) :: task, method, extra, named, state
          character(len=400) :: lines(4)
          character(len=:), allocatable :: written, out
          type(error_t), allocatable :: error
          out = scratch_prefix("first_order_bad")
          lines(1) = "&scene task = '"//task//"', model = 'equations', method = '"//method//"', output = '"//out//"' /"
          lines(2) = "&equations n = 3, parameters = 'g1 = 0, Om = 2', matrices = 'P = [0, 1, 0; -1, -0.1, 1; 0, 0, "// &
-                    "-5], G = [0, 0, 0; 0, 0, 0; -5, 0, 0]', "//extra//"state = 'P + (0.5 + g1*cos(Om*t))*G',"
+                    "-5], G = [0, 0, 0; 0, 0, 0; -5, 0, 0]', "//extra//"state = "//state//","
          lines(3) = "  frequency = 'Om', alpha = 'Om', beta = 'g1' /"
          lines(4) = "&chart alpha_min = 1, alpha_max = 2, n_alpha = 2, beta_min = 0, beta_max = 1, n_beta = 2 /"
          call run_text_scene("first_order_bad", lines, error, written)
@@ -741,6 +752,10 @@ contains
       call refused("&equation "//base//"stiffness = '-g/l + A*w^2/l*sqrt(cos(w*t))' /", "stiffness", &
                    "A = 5.00000000000e-003, w = 3.14160000000e+002): ")
       call refused("&equation "//base//"stiffness = '-g/l + A*w^2/l*cos(3*t)' /", "stiffness", "not of period")
+      ! a term of the beta axis alone, 0 at its given value
+      call refused("&equation parameters = 'g = 9.81, l = 0.2, A = 0, w = 314.16', frequency = 'w', alpha = 'w', "// &
+                   "beta = 'A', stiffness = '-g/l + A*w^2/l*cos(w*t) + A*cos(3*t)' /", "stiffness", &
+                   "with A = 1.00000000000e+000")
       call refused("&equation parameters = 'g = 9.81, l = 0.2, A = 0.005, w = 314.16', frequency = 'w', "// &
                    "alpha = 'omega', beta = 'A', "//k_ok//" /", "alpha", "g, l, A, w")
       call refused("&equation parameters = 'g = 9.81, l = 0.2, A = 0.005, w = 314.16, A = 1', frequency = 'w', "// &

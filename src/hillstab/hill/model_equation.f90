@@ -262,7 +262,7 @@ contains
       character(len=name_length), allocatable :: with_t(:)
       character(len=:), allocatable :: known, drive_name, where_beta
       real(wp) :: drive, m, c, period, scale
-      real(wp), allocatable :: t(:), k_now(:), k_later(:)
+      real(wp), allocatable :: t(:), k_now(:), k_later(:), shifted(:)
       integer :: j, n_nodes
       self%ready = .false.
       self%problem = ""
@@ -403,6 +403,22 @@ contains
             parameter_text(self)//"): k(t) = "//number(k_now(j))//" but k(t + T) = "//number(k_later(j))// &
             " at t = "//number(t(j))
          return
+      end if
+      ! the factor of the beta axis too (a term it multiplies is 0 where beta is): k at beta + 1,
+      ! where k is finite there
+      shifted = self%values
+      shifted(self%i_beta) = shifted(self%i_beta) + 1.0_wp
+      call self%k%evaluate(t, k_now, error, scalars=shifted)
+      if (.not. allocated(error)) call self%k%evaluate(t + period, k_later, error, scalars=shifted)
+      if (.not. allocated(error)) then
+         scale = max(maxval(abs(k_now)), tiny(1.0_wp))
+         j = maxloc(abs(k_later - k_now), dim=1)
+         if (abs(k_later(j) - k_now(j)) > 1.0e-9_wp*scale) then
+            self%problem = "stiffness: not of period T = "//number(period)//" (2 pi/Omega) at the parameters ("// &
+               parameter_text(self)//") with "//self%beta_name//" = "//number(shifted(self%i_beta))//": k(t) = "// &
+               number(k_now(j))//" but k(t + T) = "//number(k_later(j))//" at t = "//number(t(j))
+            return
+         end if
       end if
       self%ready = .true.
 

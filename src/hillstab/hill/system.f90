@@ -13,8 +13,9 @@
 !>
 !> A system may instead be given in first-order form, y' = A(τ) y with y in Rⁿ (n states;
 !> `first_order` true): its `stiffness` then gives A itself, A = p + β b, and it has no mass,
-!> damping or gyroscopic matrix. Its methods are the Runge–Kutta ones (rk, gsl), its
-!> verdicts those of a non-Hamiltonian system, and all its n exponents are reported.
+!> damping or gyroscopic matrix. The Magnus methods integrate the full A (no blocks, no
+!> balancing), rk and gsl the same right-hand side; its verdicts are those of a
+!> non-Hamiltonian system, and all its n exponents are reported.
 !>
 !> `system_form_t` is what the methods need of a system at one damping, prepared once:
 !> M⁻¹ (Cholesky), the constant block D = −M⁻¹(C + εM + G) of the first-order matrix

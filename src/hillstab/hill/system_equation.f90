@@ -291,7 +291,8 @@ contains
       character(len=name_length), allocatable :: all_names(:), matrix_names(:)
       character(len=:), allocatable :: known, drive_name, where_beta, kv
       real(wp) :: drive, period
-      real(wp), allocatable :: k_now(:, :), k_later(:, :), c(:, :), g(:, :)
+      real(wp), allocatable :: k_now(:, :), k_later(:, :), c(:, :), g(:, :), shifted(:), r_now(:), r_later(:)
+      type(error_t), allocatable :: failure
       integer :: j, i
       self%ready = .false.
       self%problem = ""
@@ -440,6 +441,7 @@ contains
       self%ready = .true.
       allocate (self%mass_matrix(self%n, self%n), k_now(self%n, self%n), k_later(self%n, self%n), &
                 c(self%n, self%n), g(self%n, self%n))
+      allocate (r_now(size(self%matrix_names) + 1), r_later(size(self%matrix_names) + 1))
       call matrix_value(self, self%m, 0.0_wp, self%values, self%mass_matrix, self%problem, "mass")
       if (len(self%problem) == 0) call matrix_value(self, self%c, 0.0_wp, self%values, c, self%problem, "damping")
       if (len(self%problem) == 0) call matrix_value(self, self%g, 0.0_wp, self%values, g, self%problem, "gyroscopic")
@@ -452,6 +454,24 @@ contains
          if (maxval(abs(k_later - k_now)) > 1.0e-9_wp*max(maxval(abs(k_now)), tiny(1.0_wp))) then
             self%problem = kv//": not of period T = "//number(period)//" (2 pi/Omega) at the parameters ("// &
                            parameter_text(self)//"): K(t + T) differs from K(t) at t = "//number(period*i/16.0_wp)
+         end if
+      end do
+      ! the factor of the beta axis too (a term it multiplies is 0 where beta is): K at beta + 1,
+      ! where K is finite there
+      shifted = self%values
+      shifted(self%i_beta) = shifted(self%i_beta) + 1.0_wp
+      do i = 0, 15
+         if (len(self%problem) > 0) exit
+         call coefficients(self, self%k, period*i/16.0_wp, shifted, r_now, failure)
+         if (.not. allocated(failure)) call coefficients(self, self%k, period*i/16.0_wp + period, shifted, r_later, &
+                                                         failure)
+         if (allocated(failure)) exit
+         call assemble(self, r_now, k_now)
+         call assemble(self, r_later, k_later)
+         if (maxval(abs(k_later - k_now)) > 1.0e-9_wp*max(maxval(abs(k_now)), tiny(1.0_wp))) then
+            self%problem = kv//": not of period T = "//number(period)//" (2 pi/Omega) at the parameters ("// &
+                           parameter_text(self)//") with "//self%beta_name//" = "//number(shifted(self%i_beta))// &
+                           ": K(t + T) differs from K(t) at t = "//number(period*i/16.0_wp)
          end if
       end do
       if (len(self%problem) == 0) call check_linear(self, period)

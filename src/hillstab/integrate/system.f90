@@ -25,6 +25,10 @@
 !> - `system_gsl`: GSL's rk8pd on the fundamental matrix over the whole period
 !>   (hillstab_integrate_system_gsl), the reference of another library.
 !>
+!> A system in first-order form (`system_form_t%first_order`, y' = A y with A given, n states)
+!> runs on the same ladder with the exponent in full n × n products (`magnus_exponent`; no
+!> blocks, no balancing), and rk and gsl on the same A.
+!>
 !> Where half a period is enough (`system_form_t%half`: Hamiltonian, G = 0, K even) the
 !> methods integrate Y over [0, P/2] and return Φ = R Y⁻¹ R Y, Y⁻¹ = Ω⁻¹YᵀΩ by the
 !> symplectic form. The solution is rescaled by powers of two when it grows (`log_scale`:
@@ -188,18 +192,6 @@ contains
       type(gsl_system_result_t) :: reference
       integer :: kind
       kind = method%kind
-      if (form%first_order) then
-         ! the Magnus kernels take A's second-order blocks: a first-order system runs on rk
-         if (kind == system_auto) kind = system_rk
-         if (kind == system_magnus4 .or. kind == system_magnus6) then
-            call set_error(error, err_integration, "method: "//system_method_name(kind)//" takes a system "// &
-               "in second-order form; a first-order system y' = A y takes rk, gsl or auto (rk)")
-            result%status = status_failed
-            allocate (result%phi(form%states, form%states))
-            result%phi = 0.0_wp
-            return
-         end if
-      end if
       select case (kind)
       case (system_rk)
          call monodromy_rk(system, form, alpha, beta, method%tolerance, result, error)
@@ -273,7 +265,6 @@ contains
       integer :: m, j, k, order, pieces, half_count, kind
       m = form%states
       kind = method%kind
-      if (form%first_order .and. kind == system_auto) kind = system_rk
       count = 0
       allocate (factors(m, m, 16))
       window = window_length(form)
@@ -347,12 +338,16 @@ contains
       type(node_level_t), intent(in) :: level
       real(wp), allocatable, intent(inout) :: factors(:, :, :)
       integer, intent(inout) :: count
-      real(wp) :: a(2*form%n, 2*form%n, 3), big_omega(2*form%n, 2*form%n), e(2*form%n, 2*form%n), &
-                  chunk(2*form%n, 2*form%n), span, c, c2, hc, big
+      real(wp) :: a(form%states, form%states, 3), big_omega(form%states, form%states), &
+                  e(form%states, form%states), chunk(form%states, form%states), span, c, c2, hc, big
       integer :: n, m, k, i, nq
       n = form%n
-      m = 2*n
+      m = form%states
       nq = merge(3, 2, order == 6)
+      if (form%first_order) then
+         call first_order_factors()
+         return
+      end if
       c = 1.0_wp
       big = maxval(sum(abs(level%lp(:, :, 1:nq) + beta*level%lb(:, :, 1:nq)), dim=2))
       if (big > 4.0_wp) c = 2.0_wp**(-nint(0.5_wp*log(big)/log(2.0_wp)))
@@ -387,7 +382,44 @@ contains
             span = 0.0_wp
          end if
       end do
+
+   contains
+
+      !> In first-order form A = p + β b itself, unbalanced.
+      subroutine first_order_factors()
+         hc = window_length(form)/steps
+         chunk = identity(m)
+         span = 0.0_wp
+         do k = 1, steps
+            do i = 1, nq
+               a(:, :, i) = level%lp(:, :, nq*(k - 1) + i) + beta*level%lb(:, :, nq*(k - 1) + i)
+            end do
+            big_omega = magnus_exponent(order, a, hc)
+            call exponential_explicit(m, big_omega, e)
+            chunk = matmul(e, chunk)
+            span = span + maxval(sum(abs(big_omega), dim=1))
+            if (span >= chunk_limit .or. k == steps) then
+               call push_factor(factors, count, chunk)
+               chunk = identity(m)
+               span = 0.0_wp
+            end if
+         end do
+      end subroutine first_order_factors
    end subroutine magnus_factors
+
+   !> The Magnus exponent of one step of length h from A at its Gauss nodes (order 4: two
+   !> nodes; 6: three), in full products.
+   pure function magnus_exponent(order, a, h) result(big_omega)
+      integer, intent(in) :: order
+      real(wp), intent(in) :: a(:, :, :)
+      real(wp), intent(in) :: h
+      real(wp) :: big_omega(size(a, 1), size(a, 2))
+      if (order == 6) then
+         big_omega = magnus6_exponent(a(:, :, 1), a(:, :, 2), a(:, :, 3), h)
+      else
+         big_omega = 0.5_wp*h*(a(:, :, 1) + a(:, :, 2)) + (sqrt3*h*h/12.0_wp)*commutator(a(:, :, 2), a(:, :, 1))
+      end if
+   end function magnus_exponent
 
    !> The window: half the period (`form%half`) or the period.
    pure real(wp) function window_length(form)
@@ -424,8 +456,8 @@ contains
          do q = 1, nq
             tau = (k - 1 + c(q))*h
             call system%stiffness(alpha, tau, p, b)
-            nodes%levels(j)%lp(:, :, nq*(k - 1) + q) = -matmul(form%m_inverse, p)
-            nodes%levels(j)%lb(:, :, nq*(k - 1) + q) = -matmul(form%m_inverse, b)
+            nodes%levels(j)%lp(:, :, nq*(k - 1) + q) = lower_block(form, p)
+            nodes%levels(j)%lb(:, :, nq*(k - 1) + q) = lower_block(form, b)
          end do
       end do
       nodes%levels(j)%ready = .true.
@@ -453,8 +485,8 @@ contains
       allocate (nodes%corner_p(form%n, form%n, 4), nodes%corner_b(form%n, form%n, 4))
       do k = 0, 3
          call system%stiffness(alpha, 0.25_wp*k*form%period, p, b)
-         nodes%corner_p(:, :, k + 1) = -matmul(form%m_inverse, p)
-         nodes%corner_b(:, :, k + 1) = -matmul(form%m_inverse, b)
+         nodes%corner_p(:, :, k + 1) = lower_block(form, p)
+         nodes%corner_b(:, :, k + 1) = lower_block(form, b)
       end do
    end subroutine renew_nodes
 
@@ -474,7 +506,12 @@ contains
          size_a = max(size_a, maxval(sum(abs(nodes%corner_p(:, :, k) + beta*nodes%corner_b(:, :, k)), dim=2)))
       end do
       size_a = max(size_a, maxval(sum(abs(form%d), dim=2))**2)
-      want = window_length(form)*resolution*(sqrt(size_a) + max(1, system%drive_harmonics())*2.0_wp/form%period)
+      ! ‖A‖ grows as √‖M⁻¹K‖ in second-order form, as the given A in first-order form
+      if (form%first_order) then
+         want = window_length(form)*resolution*(size_a + max(1, system%drive_harmonics())*2.0_wp/form%period)
+      else
+         want = window_length(form)*resolution*(sqrt(size_a) + max(1, system%drive_harmonics())*2.0_wp/form%period)
+      end if
       j = 3
       do while (j < size(magnus_ladder) - 2 .and. (magnus_ladder(j) < want .or. .not. has_half(j)))
          j = j + 1
@@ -501,7 +538,7 @@ contains
       real(wp) :: s(size(magnus_ladder)), estimate, previous, scale, floor, need
       integer :: previous_steps
       logical :: done(size(magnus_ladder))
-      m = 2*form%n
+      m = form%states
       allocate (phi(m, m, size(magnus_ladder)))
       done = .false.
       last = size(magnus_ladder)
@@ -608,37 +645,42 @@ contains
       integer :: n, m, k, i, nq
       real(wp) :: h, big
       logical :: steps_done
-      real(wp) :: y(2*form%n, 2*form%n), a(2*form%n, 2*form%n, 3), big_omega(2*form%n, 2*form%n), &
-                  e(2*form%n, 2*form%n)
+      real(wp) :: y(form%states, form%states), a(form%states, form%states, 3), &
+                  big_omega(form%states, form%states), e(form%states, form%states)
       n = form%n
-      m = 2*n
+      m = form%states
       nq = merge(3, 2, order == 6)
       h = window_length(form)/steps
       y = identity(m)
       log_scale = 0.0_wp
-      steps_done = order == 6
-      if (order == 6 .and. m == 4) then
+      ! the block kernels take the second-order form; a first-order A runs on full products
+      steps_done = order == 6 .and. .not. form%first_order
+      if (form%first_order) then
+         continue
+      else if (order == 6 .and. m == 4) then
          call magnus6_steps_4(form%d, beta, h, steps, level, y, log_scale)
       else if (order == 6) then
          call magnus6_steps(n, form%d, beta, h, steps, level, y, log_scale)
       end if
       ! the constant blocks of A
       a = 0.0_wp
-      do i = 1, nq
-         do k = 1, n
-            a(k, n + k, i) = 1.0_wp
+      if (.not. form%first_order) then
+         do i = 1, nq
+            do k = 1, n
+               a(k, n + k, i) = 1.0_wp
+            end do
+            a(n + 1:m, n + 1:m, i) = form%d
          end do
-         a(n + 1:m, n + 1:m, i) = form%d
-      end do
+      end if
       do k = 1, merge(0, steps, steps_done)
          do i = 1, nq
-            a(n + 1:m, 1:n, i) = level%lp(:, :, nq*(k - 1) + i) + beta*level%lb(:, :, nq*(k - 1) + i)
+            if (form%first_order) then
+               a(:, :, i) = level%lp(:, :, nq*(k - 1) + i) + beta*level%lb(:, :, nq*(k - 1) + i)
+            else
+               a(n + 1:m, 1:n, i) = level%lp(:, :, nq*(k - 1) + i) + beta*level%lb(:, :, nq*(k - 1) + i)
+            end if
          end do
-         if (order == 6) then
-            big_omega = magnus6_exponent(a(:, :, 1), a(:, :, 2), a(:, :, 3), h)
-         else
-            big_omega = 0.5_wp*h*(a(:, :, 1) + a(:, :, 2)) + (sqrt3*h*h/12.0_wp)*commutator(a(:, :, 2), a(:, :, 1))
-         end if
+         big_omega = magnus_exponent(order, a(:, :, 1:nq), h)
          call system_exponential(big_omega, e)
          y = matmul(e, y)
          big = maxval(abs(y))

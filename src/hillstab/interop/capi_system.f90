@@ -50,8 +50,7 @@ module hillstab_interop_capi_system
    use hillstab_hill_system_matrix, only: matrix_system_t
    use hillstab_hill_system_equation, only: equations_system_t, max_equations_text
    use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet
-   use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
-      system_magnus4, system_magnus6, system_method_name
+   use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy
    use hillstab_integrate_monodromy, only: method_table, method_name, method_takes_systems
    use hillstab_interop_outcome, only: record_outcome
    use hillstab_interop_sizes, only: values_count_refusal
@@ -422,7 +421,7 @@ contains
       if (allocated(error)) return
       call handle_system(where, system, handle, error)
       if (allocated(error)) return
-      call check_method_tolerance(method, tolerance, error, handle%system)
+      call check_method_tolerance(method, tolerance, error)
       if (allocated(error)) then
          continue
       else if (.not. ieee_is_finite(alpha)) then
@@ -467,21 +466,13 @@ contains
 
    !> err_invalid_parameter naming `method` (not a system method's code) or `tolerance` (not
    !> strictly between 1e-15 and 1).
-   subroutine check_method_tolerance(method, tolerance, error, system)
+   subroutine check_method_tolerance(method, tolerance, error)
       integer(c_int), intent(in) :: method  !! HILLSTAB_METHOD_AUTO, _MAGNUS4, _MAGNUS6, _RK or _GSL
       real(c_double), intent(in) :: tolerance  !! the target error of Φ
       type(error_t), allocatable, intent(out) :: error  !! what is wrong; unallocated when both are valid
-      !> the system: one in first-order form takes rk, gsl and auto (rk) only
-      class(hill_system_t), intent(in), optional :: system
-      logical :: first_order
-      first_order = .false.
-      if (present(system)) first_order = system%first_order()
       if (.not. method_takes_systems(int(method))) then
          call set_error(error, err_invalid_parameter, "method: unknown system method code "// &
             integer_text(int(method))//" ("//system_method_codes()//")")
-      else if (first_order .and. (method == system_magnus4 .or. method == system_magnus6)) then
-         call set_error(error, err_invalid_parameter, "method: "//system_method_name(int(method))//" takes a "// &
-            "system in second-order form; a first-order system (state) takes rk, gsl or auto (rk)")
       else if (.not. in_range(tolerance, min_system_tolerance, 1.0_wp, .false.)) then
          call set_error(error, err_invalid_parameter, "tolerance: must lie between 1e-15 and 1 (exclusive), "// &
             "got "//real_text(real(tolerance, wp)))

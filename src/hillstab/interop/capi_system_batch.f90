@@ -355,7 +355,7 @@ contains
          return
       end if
       count = int(n)
-      call check_method_tolerance(method, tolerance, error, handle%system)
+      call check_method_tolerance(method, tolerance, error)
       if (.not. allocated(error) .and. threads < 0) call set_error(error, err_invalid_parameter, &
          "threads: must be >= 0 (0: the OpenMP default), got "//integer_text(int(threads)))
       if (allocated(error)) error%message = where//": "//error%message

@@ -24,7 +24,7 @@ module hillstab_batch_run_read
    use hillstab_hill_coefficient, only: sampling_name, sampling_from_name, sampling_names_text
    use hillstab_hill_units, only: physical_t, physical_epsilon, check_physical, equilibrium_length
    use hillstab_integrate_monodromy, only: method_t, method_table, method_name, method_from_name, method_names_text, &
-      method_description, method_magnus4, method_magnus6
+      method_description
    use hillstab_batch_scene_types, only: scene_t, task_t, add_warning
    use hillstab_batch_scene_group_model, only: read_model_group, model_group_name
    use hillstab_batch_scene_file, only: scene_file_t, open_scene_file, close_scene_file, group_present, group_sets, &
@@ -100,8 +100,7 @@ contains
    end subroutine read_scene
 
    !> A system in first-order form (`&equations state`) runs tasks chart, points and
-   !> coefficient, by rk (auto) or gsl: the Magnus methods take A's second-order blocks, and
-   !> the regions, edges and boundaries need the natural frequencies of M and K.
+   !> coefficient: the regions, edges and boundaries need the natural frequencies of M and K.
    subroutine check_first_order(path, scene, task_name, error)
       character(len=*), intent(in) :: path       !! scene file
       type(scene_t), intent(in) :: scene         !! the scene read so far
@@ -116,9 +115,6 @@ contains
             "boundaries need the natural frequencies of a second-order form M x'' + C x' + K(t) x = 0)")
          return
       end select
-      if (scene%method%kind == method_magnus4 .or. scene%method%kind == method_magnus6) &
-         call fail(error, path, "scene", "method", "method '"//method_name(scene%method%kind)//"' takes a "// &
-            "system in second-order form; a first-order system (&equations state) takes rk, gsl or auto (rk)")
    end subroutine check_first_order
 
    !> A warning for each group of the file that the task does not read (another task's

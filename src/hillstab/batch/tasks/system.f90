@@ -336,7 +336,7 @@ contains
       if (scene%system%first_order()) then
          extra(2) = "method: "//system_method_name(scene%method%kind)//", tolerance "// &
                     real_text(scene%method%tolerance)//" on Phi's entries relative to max(1, max|Phi_ij|); "// &
-                    "a first-order system runs on rk (auto) or gsl"
+                    "first-order form: the Magnus methods on the full A"
          extra(3) = "verdicts decided from the multipliers and the error bound of Phi (hillstab_hill_system_floquet); "// &
                     "first-order form: no structure assumed, stable when every multiplier lies inside the unit "// &
                     "circle with its error disc (one on the circle is marginal)"
