@@ -268,7 +268,10 @@ int hillstab_system_monodromy(const hillstab_system *system, double alpha, doubl
  * ln|lambda_i|/P of the n largest (each to the tolerance, from the factored product where Phi
  * cannot resolve it), HILLSTAB_SYSTEM_VERDICT_*, HILLSTAB_SYSTEM_KIND_*, tr Phi and
  * a2 = sum lambda_i lambda_j (+-1e300 beyond), the structural defect relative to |Phi|^2 (or
- * to Hadamard's bound of det Phi when damped). */
+ * to Hadamard's bound of det Phi when damped). A system of one equation ("equations", n = 1,
+ * second order) on HILLSTAB_METHOD_AUTO takes the scalar method auto, as the tasks, points
+ * and chart do: the same analysis from its trace S, a2 = det Phi exactly, defect 0, the error
+ * estimate S's relative to max(1, |S|). */
 int hillstab_system_floquet(const hillstab_system *system, double alpha, double beta, double epsilon,
                             int method, double tolerance, double *multipliers_re, double *multipliers_im,
                             double *log_scale, double *exponents, int *verdict, int *kind, double *trace,

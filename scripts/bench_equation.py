@@ -17,6 +17,8 @@ C program writes nothing while timed), the scipy loop in this process (the loop 
    two files must have the same grid and agree within 2e-10 max(1, |S|) at every point. Both also
    as verdict-only charts (columns 'a b stable'), where the computing is not diluted by the
    writing of the text file.
+   The Kapitza chart of 2. written as a system of one equation (model 'equations', n = 1) against
+   its chart as an equation: a system that is one equation takes the scalar path, the bar is 2.
    The two pendula on a shaken support (a 2-DOF system, 151 x 301) written as equations (model
    'equations', stiffness 'b*B + a*C*cos(pi*t)', frequency 'pi') against the built-in model
    'system': the two files agree within 1e-10 max(1, |trace|) at every point.
@@ -198,6 +200,9 @@ def main():
                                          "output = '%s', columns = 'alpha beta stable'"
                                          % os.path.join(work, "mathieu_builtin_verdicts")))
     kapitza_auto = kapitza_scene("kapitza", "auto", "1e-10")
+    # the same chart as one equation of a system (model 'equations', n = 1): the scalar path
+    kapitza_one = scene("kapitza_one", open(kapitza_scene("kapitza_one", "auto", "1e-10")).read()
+                        .replace("model='equation'", "model='equations'").replace("&equation ", "&equations n = 1, "))
 
     # ------------------------------------------------------------------ the reference
     os.makedirs(os.path.dirname(args.reference) or ".", exist_ok=True)
@@ -272,6 +277,12 @@ def main():
     kapitza_status = sum(1 for r in hs_rows if r[3] != 0)
     hs_error_chart = max(relative_error(s, r) for s, r in zip(hs_s, s_ref))
     hs_error_subset = max(relative_error(hs_s[k], s_ref[k]) for k in subset)
+    run([hillstab, "--quiet", kapitza_one], env)
+    one_rows = read_rows(os.path.join(work, "kapitza_one_chart.dat"), ["w", "A", "trace", "stable", "status"])
+    if [(r[0], r[1]) for r in one_rows] != grid:
+        sys.exit("bench_equation: the one-equation system's Kapitza chart is not on the reference's grid")
+    one_error_chart = max(relative_error(s1_of_trace(r[0], r[2]), s) for r, s in zip(one_rows, s_ref))
+    one_status = sum(1 for r in one_rows if r[4] != 0)
     subprocess.run([hillstab, "--quiet", kapitza_scene("phys_auto", "auto", "1e-10", "points")], env=env, check=True)
     subprocess.run([hillstab, "--quiet", kapitza_scene("phys_ref", "magnus6", "1e-13", "points")], env=env, check=True)
     hs_error_physical = physical_error([r[0] for r in read_rows(os.path.join(work, "phys_auto_points.dat"), ["S"])])
@@ -343,6 +354,8 @@ def main():
          [hillstab, "--quiet", pendula_builtin], 151 * 301, "tol=1e-10", -1.0, "-", -1.0),
         ("kapitza_hillstab", "Kapitza, hillstab (auto 1e-10)", "process", [hillstab, "--quiet", kapitza_auto],
          n * n, "tol=1e-10", hs_error_chart, "chart", hs_error_physical),
+        ("kapitza_one_system", "Kapitza as a system of one equation (equations, n = 1, auto 1e-10)", "process",
+         [hillstab, "--quiet", kapitza_one], n * n, "tol=1e-10", one_error_chart, "chart", -1.0),
     ]
     same_gsl = [g for g in gsl_search if g[0] == SAME_TOLERANCE][0]
     if gsl_equal is not None:
@@ -414,6 +427,9 @@ def main():
     print("Kapitza: hillstab auto 1e-10 against magnus6 1e-13: worst %.2e over the chart, %.2e over the sub-grid, %d "
           "points at a status other than 0; magnus6 1e-13 itself at the 30 points of physical_set: %.2e"
           % (hs_error_chart, hs_error_subset, kapitza_status, ref_error_physical))
+    print("Kapitza as a system of one equation (model 'equations', n = 1; its ratio is to the equation's chart, the "
+          "bar 2): worst error %.2e over the chart, %d points at a status other than 0"
+          % (one_error_chart, one_status))
     print()
     print("GSL rk8pd (epsabs = epsrel = tol), the whole chart: the ladder")
     print("| tol | evaluations/point | worst error, chart | worst error, sub-grid | seconds (one run) |")
@@ -460,6 +476,9 @@ def main():
                 "error_physical: the 30 damped points of data/reference/physical_set.dat (45 digits), where magnus6 "
                 "1e-13 is off by %.2e; -1: not measured\n" % (len(subset), ref_error_physical))
         f.write("# hillstab's worst error over the sub-grid: %.3e\n" % hs_error_subset)
+        f.write("# kapitza_one_system: the Kapitza scene as model 'equations' with n = 1 (the scalar path of a "
+                "system of one equation), its ratio to kapitza_hillstab; error of exp(kappa T/2) trace; %d points at "
+                "a status other than 0\n" % one_status)
         for tol, ev, e_chart, e_sub, seconds, failed in gsl_search:
             f.write("# search gsl tol %g evaluations_per_point %.1f error_chart %.3e error_subgrid %.3e\n"
                     % (tol, ev, e_chart, e_sub))

@@ -256,3 +256,35 @@ def test_first_order_methods_agree():
     with pytest.raises(ValueError, match="stiffness: give K"):
         hillstab.Equations(frequency="Om", matrices=FEEDBACK["matrices"], n=3, parameters=FEEDBACK["parameters"],
                            alpha="Om", beta="g1")
+
+
+KAPITZA_ONE = dict(stiffness="-g/l + A*w^2/l*cos(w*t)", frequency="w", damping="kappa", n=1,
+                   parameters={"g": 9.81, "l": 0.2, "kappa": 0.2, "A": 0.005, "w": 314.16}, alpha="w", beta="A")
+
+
+def test_one_equation_takes_the_scalar_path():
+    """The Kapitza pendulum as a system of one equation: on method auto its chart, its points
+    and its floquet at one point are the scalar equation's analysis (tr Phi = exp(-eps) S,
+    a2 = det Phi = exp(-2 eps) with eps = kappa pi/w, the same verdicts), one point's numbers
+    those of the same point in an array, and magnus6 (the system path) agrees within the
+    tolerance."""
+    one = hillstab.Equations(**KAPITZA_ONE)
+    scalar = hillstab.Equation(**{k: v for k, v in KAPITZA_ONE.items() if k != "n"})
+    w_axis, a_axis = (60.0, 700.0, 9), (0.0, 0.1, 8)
+    c = one.chart(w_axis, a_axis, threads=2)
+    s = hillstab.chart(w_axis, a_axis, model=scalar, threads=2)
+    eps = 0.2 * np.pi / c.alpha[:, np.newaxis]
+    assert np.all(c.status == 0) and set(np.unique(c.stable)) == {0, 1}
+    assert np.allclose(c.trace, np.exp(-eps) * s.trace, rtol=1e-14, atol=1e-300)
+    assert np.allclose(c.a2, np.exp(-2 * eps), rtol=1e-14)
+    assert np.array_equal(c.stable, s.stable)
+    assert np.all(c.defect == 0)
+    slow = one.chart(w_axis, a_axis, method="magnus6", tolerance=1e-11, threads=2)
+    assert np.all(np.abs(slow.trace - c.trace) <= 1e-8 * np.maximum(1.0, np.abs(slow.trace)))
+    assert np.all(np.abs(slow.mu - c.mu) <= 1e-9)
+    for i, j in ((0, 0), (3, 5), (8, 7)):
+        f = one.floquet(c.alpha[i], c.beta[j])
+        p = one.points([c.alpha[i]], [c.beta[j]])
+        assert same_bits(f.trace, p.trace) and same_bits(f.trace, c.trace[i, j])
+        assert f.verdict == c.stable[i, j] and f.defect == 0.0
+        assert np.isclose(abs(f.multipliers[0]), c.lambda_max[i, j], rtol=1e-14)

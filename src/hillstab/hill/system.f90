@@ -35,6 +35,7 @@ module hillstab_hill_system
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
    use hillstab_core_text, only: integer_text, real_text
    use hillstab_hill_model_base, only: model_base_t
+   use hillstab_hill_model, only: hill_model_t
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -74,6 +75,7 @@ module hillstab_hill_system
       procedure :: alpha_valid => finite_alpha
       procedure :: drive_harmonics => no_harmonics
       procedure :: first_order => second_order_form
+      procedure :: scalar_model => no_scalar_model
    end type hill_system_t
 
    abstract interface
@@ -122,6 +124,15 @@ module hillstab_hill_system
    end type system_form_t
 
 contains
+
+   !> The system as one scalar Hill equation, when it is one: a model (hillstab_hill_model)
+   !> whose Q(τ; α, β) is M⁻¹K and whose damping at a point (`point_damping` with the form's
+   !> ε) is M⁻¹C + ε, so that the scalar methods' fast paths compute its monodromy. None
+   !> (unallocated) unless the system says otherwise.
+   subroutine no_scalar_model(self, model)
+      class(hill_system_t), intent(in) :: self  !! the system
+      class(hill_model_t), allocatable, intent(out) :: model  !! unallocated: no scalar form
+   end subroutine no_scalar_model
 
    !> No damping: C = 0 unless the system has it.
    pure subroutine zero_matrix(self, a)

@@ -49,6 +49,8 @@ module hillstab_hill_system_equation
    use hillstab_core_expression, only: expression_t, parse_expression, parse_parameters, name_length
    use hillstab_hill_model_base, only: model_variable_t, model_variable_real, model_variable_text
    use hillstab_hill_system, only: hill_system_t, max_dof
+   use hillstab_hill_model, only: hill_model_t
+   use hillstab_hill_model_equation, only: equation_model_t
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
    implicit none
    private
@@ -89,6 +91,8 @@ module hillstab_hill_system_equation
       logical :: from_period = .false.                  !! `drive` is the period T
       real(wp), allocatable :: mass_matrix(:, :)        !! M at the given parameters
       logical :: ready = .false.                        !! `prepare` succeeded
+      !> the same system as one scalar equation (`equations_scalar_model`), when it is one
+      type(equation_model_t), allocatable :: twin
    contains
       procedure :: name => equations_name
       procedure :: formula => equations_formula
@@ -112,6 +116,7 @@ module hillstab_hill_system_equation
       procedure :: set_text => equations_set_text
       procedure :: check_values => equations_check_values
       procedure :: first_order => equations_first_order
+      procedure :: scalar_model => equations_scalar_model
    end type equations_system_t
 
 contains
@@ -161,6 +166,46 @@ contains
       equations_first_order = .false.
       if (allocated(self%state_text)) equations_first_order = len(self%state_text) > 0
    end function equations_first_order
+
+   !> One equation in second-order form without a gyroscopic term is the scalar equation
+   !> m x'' + c x' + k(t) x = 0 of model `equation` (hillstab_hill_model_equation) with the
+   !> same texts, each 1 × 1 matrix a parameter of its value (17 digits: the same double); none
+   !> when that equation does not accept them (a damping it refuses, say). Made by `prepare`.
+   subroutine equations_scalar_model(self, model)
+      class(equations_system_t), intent(in) :: self  !! the system
+      class(hill_model_t), allocatable, intent(out) :: model  !! the equation, or unallocated
+      if (.not. self%ready) return
+      if (allocated(self%twin)) allocate (model, source=self%twin)
+   end subroutine equations_scalar_model
+
+   !> `twin`, the system as one scalar equation (`equations_scalar_model`), when it is one.
+   pure subroutine make_twin(self)
+      class(equations_system_t), intent(inout) :: self  !! the system, ready
+      type(equation_model_t) :: one
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: parameters
+      integer :: j
+      if (allocated(self%twin)) deallocate (self%twin)
+      if (self%n /= 1 .or. equations_first_order(self)) return
+      if (len_trim(self%gyroscopic_text) > 0 .and. trim(adjustl(self%gyroscopic_text)) /= "0") return
+      parameters = self%parameters_text
+      do j = 1, size(self%matrix_names)
+         if (len_trim(parameters) > 0) parameters = parameters//", "
+         parameters = parameters//trim(self%matrix_names(j))//" = "//trim(adjustl(format_es(self%matrices(1, 1, j), 17)))
+      end do
+      call one%set_text("parameters", parameters, error)
+      if (.not. allocated(error)) call one%set_text("stiffness", self%stiffness_text, error)
+      if (.not. allocated(error)) call one%set_text("mass", self%mass_text, error)
+      if (.not. allocated(error)) call one%set_text("damping", self%damping_text, error)
+      if (.not. allocated(error) .and. len(self%frequency_text) > 0) &
+         call one%set_text("frequency", self%frequency_text, error)
+      if (.not. allocated(error) .and. len(self%period_text) > 0) call one%set_text("period", self%period_text, error)
+      if (.not. allocated(error)) call one%set_text("alpha", self%alpha_name, error)
+      if (.not. allocated(error)) call one%set_text("beta", self%beta_name, error)
+      if (.not. allocated(error)) call one%check_values(error)
+      if (allocated(error)) return
+      allocate (self%twin, source=one)
+   end subroutine make_twin
 
    !> The variable of the time-dependent coefficient: `state` in first-order form, else `stiffness`.
    pure function coefficient_variable(self) result(name)
@@ -476,6 +521,7 @@ contains
       end do
       if (len(self%problem) == 0) call check_linear(self, period)
       if (len(self%problem) > 0) self%ready = .false.
+      if (self%ready) call make_twin(self)
 
    end subroutine prepare
 

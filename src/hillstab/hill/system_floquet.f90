@@ -23,6 +23,12 @@
 !> (`kind_plus_one`, real λ > 0), at −1 (`kind_minus_one`), or off the real axis
 !> (`kind_combination`, a Krein collision: a combination resonance ω_i + ω_j ≈ kΩ).
 !>
+!> - One degree of freedom taken by a scalar method (`floquet_of_trace`): the analysis of
+!>   the trace S of χ = e^{ετ/2} x (hillstab_hill_floquet), whose monodromy has determinant 1,
+!>   so that x's has tr Φ = e^{−εP/2} S and det Φ = a₂ = e^{−εP} exactly, the multipliers
+!>   e^{−εP/2}(S/2 ± √(S²/4 − 1)), the verdict that of the trace within its error bound, and
+!>   no structural defect (the structure holds by construction).
+!>
 !> Φ may be given scaled, Φ = e^s Φ̃ (`log_scale` s), so that strongly unstable points do
 !> not overflow: the multipliers' moduli and exponents come from Φ̃ and s (entries of Φ̃ beyond
 !> 1e100 are scaled once more here, `system_floquet_t%log_scale` the total).
@@ -36,11 +42,12 @@ module hillstab_hill_system_floquet
    use hillstab_core_kinds, only: wp, pi
    use hillstab_ffi_lapack, only: dgeev
    use hillstab_hill_system, only: system_form_t
+   use hillstab_hill_floquet, only: floquet_t, period_damping
    implicit none
    private
    public :: system_floquet_t, system_floquet, verdict_stable, verdict_unstable, verdict_marginal
    public :: kind_stable, kind_plus_one, kind_minus_one, kind_combination, kind_damped, kind_undecided, kind_name
-   public :: symplectic_form, matrix_determinant, broucke_multipliers
+   public :: symplectic_form, matrix_determinant, broucke_multipliers, floquet_of_trace
 
    !> Verdict, stable: every multiplier on the unit circle (Hamiltonian) or inside it (damped), decided.
    integer, parameter :: verdict_stable = 1
@@ -225,6 +232,56 @@ contains
          call eigen_verdict(work, e, s, form, result)
       end if
    end subroutine system_floquet
+
+   !> The analysis of one degree of freedom from the Floquet data of its trace (see the
+   !> module's text): the result `system_floquet` gives, filled by a scalar method.
+   pure subroutine floquet_of_trace(scalar, form, result)
+      type(floquet_t), intent(in) :: scalar          !! from `floquet_from_trace` at the point's ε
+      type(system_form_t), intent(in) :: form        !! the prepared system (n = 1, second-order form)
+      type(system_floquet_t), intent(out) :: result  !! the analysis
+      real(wp), parameter :: clamp = 1.0e300_wp
+      real(wp) :: decay, s
+      integer :: i
+      result%n = 1
+      result%period = form%period
+      decay = period_damping(scalar%epsilon, form%period)
+      ! the multipliers e^{s} (|λ_i| e^{−s}) e^{i θ_i}, scaled when the larger would overflow
+      s = 0.0_wp
+      if (scalar%log_modulus(1) > 600.0_wp) s = scalar%log_modulus(1)
+      result%log_scale = s
+      allocate (result%multipliers(2), result%exponents(1))
+      do i = 1, 2
+         result%multipliers(i) = exp(max(scalar%log_modulus(i) - s, -745.0_wp))* &
+                                 cmplx(cos(scalar%argument(i)), sin(scalar%argument(i)), wp)
+      end do
+      result%exponents(1) = scalar%exponent
+      result%mu = scalar%exponent
+      result%log_lambda_max = scalar%log_modulus(1)
+      result%argument = abs(scalar%argument(1))/pi
+      ! tr Φ = e^{−εP/2} S, clamped as `scaled_value` clamps
+      if (scalar%trace%overflow) then
+         if (scalar%trace%log_abs - decay > log(clamp)) then
+            result%trace = sign(clamp, scalar%trace%value)
+            result%overflow = .true.
+         else
+            result%trace = sign(exp(scalar%trace%log_abs - decay), scalar%trace%value)
+         end if
+      else
+         call scaled_value(scalar%trace%value, -decay, result%trace, result%overflow)
+      end if
+      result%a2 = exp(max(-2.0_wp*decay, -745.0_wp))
+      result%defect = 0.0_wp
+      if (scalar%marginal) then
+         result%verdict = verdict_marginal
+         result%kind = kind_undecided
+      else if (scalar%stable) then
+         result%verdict = verdict_stable
+         result%kind = merge(kind_damped, kind_stable, decay > 0.0_wp)
+      else
+         result%verdict = verdict_unstable
+         result%kind = merge(kind_plus_one, kind_minus_one, scalar%trace%value > 0.0_wp)
+      end if
+   end subroutine floquet_of_trace
 
    !> The defect of the structure Φ = e^s Φ̃ keeps, relative to the size of its terms, so that
    !> it measures rounding and not growth: Hamiltonian, ‖ΦᵀΩΦ − Ω‖/(‖Ω‖ max(1, ‖Φ‖)²)

@@ -29,6 +29,7 @@ module hillstab_hill_system_scalar
       procedure :: even => scalar_even
       procedure :: alpha_domain => scalar_alpha_domain
       procedure :: alpha_valid => scalar_alpha_valid
+      procedure :: scalar_model => scalar_own_model
    end type scalar_system_t
 
 contains
@@ -64,6 +65,13 @@ contains
       p = self%model%coefficient(alpha, 0.0_wp, tau)
       b = self%model%coefficient(alpha, 1.0_wp, tau) - p(1, 1)
    end subroutine scalar_stiffness
+
+   !> The model itself, when its damping is the scene's (as the system's C = ε is).
+   subroutine scalar_own_model(self, model)
+      class(scalar_system_t), intent(in) :: self  !! the system
+      class(hill_model_t), allocatable, intent(out) :: model  !! the model, or unallocated
+      if (self%model%takes_scene_damping()) allocate (model, source=self%model)
+   end subroutine scalar_own_model
 
    pure real(wp) function scalar_period(self) result(period)
       class(scalar_system_t), intent(in) :: self  !! the system

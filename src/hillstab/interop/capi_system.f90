@@ -47,6 +47,7 @@ module hillstab_interop_capi_system
    use hillstab_core_text, only: integer_text, real_text, lower_case
    use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system, check_system_point
    use hillstab_integrate_system_point, only: resolve_exponents
+   use hillstab_batch_tasks_system_values, only: scalar_point
    use hillstab_hill_system_matrix, only: matrix_system_t
    use hillstab_hill_system_equation, only: equations_system_t, max_equations_text
    use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet
@@ -359,22 +360,7 @@ contains
       type(c_ptr), value, intent(in) :: system  !! the handle
       type(c_ptr), value, intent(in) :: n       !! receives n (an `int *`)
       integer(c_int) :: status
-      character(len=*), parameter :: where = "hillstab_system_dof"
-      type(system_handle_t), pointer :: handle
-      type(error_t), allocatable :: error
-      integer(c_int), pointer :: out
-      call handle_system(where, system, handle, error)
-      call check_output(where, "n", n, error)
-      if (.not. allocated(error)) then
-         if (handle%system%dof() < 1) then
-            call set_error(error, err_invalid_parameter, where//": n: the degrees of freedom are not given "// &
-               "(hillstab_system_set(system, ""n"", ...) first)")
-         else
-            call c_f_pointer(n, out)
-            out = int(handle%system%dof(), c_int)
-         end if
-      end if
-      status = outcome_status(error)
+      status = size_out("hillstab_system_dof", "n", system, n, .false.)
    end function hillstab_c_system_dof
 
    !> `int hillstab_system_states(const hillstab_system *system, int *states)`: the size m of
@@ -385,30 +371,42 @@ contains
       type(c_ptr), value, intent(in) :: system  !! the handle
       type(c_ptr), value, intent(in) :: states  !! receives m (an `int *`)
       integer(c_int) :: status
-      character(len=*), parameter :: where = "hillstab_system_states"
+      status = size_out("hillstab_system_states", "states", system, states, .true.)
+   end function hillstab_c_system_states
+
+   !> What `hillstab_system_dof` and `hillstab_system_states` share: the handle and the output
+   !> checked, n given, then n or the size of the state (2n, n in first-order form) stored.
+   integer(c_int) function size_out(where, name, system, out_pointer, states) result(status)
+      character(len=*), intent(in) :: where  !! the entry point
+      character(len=*), intent(in) :: name   !! the output's name, for messages
+      type(c_ptr), intent(in) :: system      !! the handle
+      type(c_ptr), intent(in) :: out_pointer  !! receives the count (an `int *`)
+      logical, intent(in) :: states          !! the size of the state, not n
       type(system_handle_t), pointer :: handle
       type(error_t), allocatable :: error
       integer(c_int), pointer :: out
       call handle_system(where, system, handle, error)
-      call check_output(where, "states", states, error)
+      call check_output(where, name, out_pointer, error)
       if (.not. allocated(error)) then
          if (handle%system%dof() < 1) then
-            call set_error(error, err_invalid_parameter, where//": states: the degrees of freedom are not given "// &
-               "(hillstab_system_set(system, ""n"", ...) first)")
+            call set_error(error, err_invalid_parameter, where//": "//name//": the degrees of freedom are not "// &
+               "given (hillstab_system_set(system, ""n"", ...) first)")
          else
-            call c_f_pointer(states, out)
-            out = int(merge(handle%system%dof(), 2*handle%system%dof(), handle%system%first_order()), c_int)
+            call c_f_pointer(out_pointer, out)
+            out = int(handle%system%dof(), c_int)
+            if (states .and. .not. handle%system%first_order()) out = 2*out
          end if
       end if
       status = outcome_status(error)
-   end function hillstab_c_system_states
+   end function size_out
 
    !> Everything a point needs, checked: the handle, the method and tolerance, α, β, ε (0 for
    !> a system with a damping of its own), the system complete, prepared at ε (and at α for
    !> a system whose damping changes from row to row, as the tasks prepare it); then the
    !> monodromy. `error` names the argument, its
    !> message prefixed by `where`.
-   subroutine system_point(where, system, alpha, beta, epsilon, method, tolerance, handle, form, result, error)
+   subroutine system_point(where, system, alpha, beta, epsilon, method, tolerance, handle, form, result, error, &
+                           floquet, analysed)
       character(len=*), intent(in) :: where            !! the entry point
       type(c_ptr), intent(in) :: system                !! the handle
       real(c_double), intent(in) :: alpha, beta, epsilon, tolerance  !! the point, the tolerance
@@ -417,7 +415,13 @@ contains
       type(system_form_t), intent(out) :: form         !! the system prepared at ε
       type(system_monodromy_t), intent(out) :: result  !! the monodromy
       type(error_t), allocatable, intent(inout) :: error  !! allocated on entry: nothing done
+      !> the analysis, when the point took the scalar path (`scalar_point`: method auto on a
+      !> system of one scalar equation; `result` then has no Φ)
+      type(system_floquet_t), intent(out), optional :: floquet
+      logical, intent(out), optional :: analysed  !! `floquet` was computed (given with it)
       type(system_nodes_t) :: nodes
+      logical :: taken
+      if (present(analysed)) analysed = .false.
       if (allocated(error)) return
       call handle_system(where, system, handle, error)
       if (allocated(error)) return
@@ -440,6 +444,15 @@ contains
             call prepare_system(handle%system, real(epsilon, wp), form, error, alpha=real(alpha, wp))
          else
             call prepare_system(handle%system, real(epsilon, wp), form, error)
+         end if
+      end if
+      if (.not. allocated(error) .and. present(floquet) .and. present(analysed)) then
+         call scalar_point(handle%system, form, system_method_t(int(method), real(tolerance, wp)), real(alpha, wp), &
+                           real(beta, wp), floquet, result, taken, error)
+         analysed = taken
+         if (taken) then
+            if (allocated(error)) error%message = where//": "//error%message
+            return
          end if
       end if
       if (.not. allocated(error)) call system_monodromy(handle%system, form, real(alpha, wp), real(beta, wp), &
@@ -579,6 +592,7 @@ contains
       integer(c_int), pointer :: q
       real(wp) :: s, largest
       integer :: n
+      logical :: analysed
       call check_output(where, "multipliers_re", multipliers_re, error)
       call check_output(where, "multipliers_im", multipliers_im, error)
       call check_output(where, "log_scale", log_scale, error)
@@ -590,12 +604,15 @@ contains
       call check_output(where, "defect", defect, error)
       call check_output(where, "error_estimate", error_estimate, error)
       call check_output(where, "status", status, error)
-      call system_point(where, system, alpha, beta, epsilon, method, tolerance, handle, form, result, error)
+      call system_point(where, system, alpha, beta, epsilon, method, tolerance, handle, form, result, error, f, &
+                        analysed)
       if (.not. allocated(error)) then
-         call system_floquet(result%phi, form, result%error_estimate*max(1.0_wp, maxval(abs(result%phi))), f, &
-                             result%log_scale, real(beta, wp))
-         call resolve_exponents(handle%system, form, real(alpha, wp), real(beta, wp), &
-                                system_method_t(int(method), real(tolerance, wp)), nodes, result, f)
+         if (.not. analysed) then
+            call system_floquet(result%phi, form, result%error_estimate*max(1.0_wp, maxval(abs(result%phi))), f, &
+                                result%log_scale, real(beta, wp))
+            call resolve_exponents(handle%system, form, real(alpha, wp), real(beta, wp), &
+                                   system_method_t(int(method), real(tolerance, wp)), nodes, result, f)
+         end if
          n = form%n
          ! Φ's own multipliers where they stay finite, else Φ̃'s with the scale
          s = f%log_scale

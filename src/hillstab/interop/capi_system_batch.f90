@@ -32,7 +32,8 @@ module hillstab_interop_capi_system_batch
    use hillstab_integrate_system, only: system_method_t
    use hillstab_batch_scene_group_chart, only: chart_grid_t, grid_alpha, grid_beta, scale_linear, scale_refusal
    use hillstab_batch_scene_checks, only: max_grid_count
-   use hillstab_batch_tasks_system, only: system_values, system_row_values, system_column_names, n_fixed
+   use hillstab_batch_tasks_system_values, only: system_values, system_row_values, system_column_names, n_fixed, &
+      status_column
    use hillstab_interop_sizes, only: count_refusal
    use hillstab_interop_capi_models, only: copy_text
    use hillstab_interop_capi_system, only: system_handle_t, handle_system, check_output, outcome_status, &
@@ -144,7 +145,7 @@ contains
                             epsilon(j:min(j + 7, n_points)), v(:, j:min(j + 7, n_points)))
          end do
          !$omp end parallel do
-         s = int(nint(v(13 + handle%system%dof(), :)), c_int)
+         s = int(nint(v(status_column(handle%system%dof()), :)), c_int)
          n_failed = count(s == status_failed)
          if (n_failed > 0) then
             j = findloc(s, int(status_failed, c_int), dim=1)
@@ -294,7 +295,7 @@ contains
          do i = 1, rows
             call system_row_values(handle%system, form, system_method_t(int(method), real(tolerance, wp)), &
                                    real(a(i), wp), real(b, wp), v(:, :, i), n_failed(i), failures(i))
-            s(:, i) = int(nint(v(13 + form%n, :, i)), c_int)
+            s(:, i) = int(nint(v(status_column(form%n), :, i)), c_int)
          end do
          !$omp end parallel do
          if (sum(n_failed) > 0) then

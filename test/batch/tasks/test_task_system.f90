@@ -2,7 +2,8 @@
 !> reading the files back: a one-equation system's chart against the Mathieu model's chart
 !> (the same Q = β − α cos πτ), the columns and their selection, a repeated run from the
 !> header, the points task, the coefficient task against K(τ) in closed form, a matrix given
-!> as a file of rows, a binary chart of chosen columns against the text one.
+!> as a file of rows, a binary chart of chosen columns against the text one, and one equation
+!> of `&equations` on method auto (the scalar path) against the same chart on magnus6.
 module test_task_system
    use hillstab_core_kinds, only: wp, pi, int64
    use hillstab_core_error, only: error_t, err_points_failed
@@ -28,7 +29,8 @@ contains
          new_unittest("coefficient_closed_form", coefficient_closed_form), &
          new_unittest("matrix_from_file", matrix_from_file), &
          new_unittest("binary_chosen_columns", binary_chosen_columns), &
-         new_unittest("estimates_bound_files", estimates_bound_files)])
+         new_unittest("estimates_bound_files", estimates_bound_files), &
+         new_unittest("one_equation_scalar_path", one_equation_scalar_path)])
    end function collect_task_system
 
    !> The free-space check refuses a run whose task's estimate of its file exceeds the room
@@ -325,4 +327,92 @@ contains
       end do
       call delete_file(written)
    end subroutine binary_chosen_columns
+   !> One damped equation written as a system (`&equations n = 1`, its mass and stiffness
+   !> through 1 × 1 matrices): on method auto it takes the scalar path (the header says so),
+   !> and its chart agrees with the system method magnus6's on the same grid: the trace, μ
+   !> and the argument within the tolerances, a₂ = det Φ = exp(−εP) in closed form, the same
+   !> verdict and kind wherever magnus6 decides; the points task gives the chart's values.
+   subroutine one_equation_scalar_path(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), parameter :: equations = "&equations n = 1, parameters = 'P0 = 0.3, P1 = 0, Om = 2, "// &
+         "zeta = 0.02', matrices = 'W = [1.5], S = [0.7], Mm = [2]', mass = 'Mm', stiffness = "// &
+         "'W - (P0 + P1*cos(Om*t))*S', damping = '2*zeta*Mm', frequency = 'Om', alpha = 'Om', beta = 'P1' /"
+      character(len=*), parameter :: grid = "&chart alpha_min = 0.5, alpha_max = 4, n_alpha = 8, beta_min = 0, "// &
+                                            "beta_max = 2.5, n_beta = 25 /"
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written, out, points_path
+      character(len=1024), allocatable :: lines(:)
+      character(len=60) :: point_lines(5)
+      real(wp), allocatable :: fast(:, :), slow(:, :), listed(:, :)
+      real(wp) :: epsilon
+      integer :: k, j, decided, unstable
+      out = scratch_prefix("one_fast")
+      call run_text_scene("one_fast", [padded("&scene model = 'equations', method = 'auto', tolerance = 1e-10, "// &
+                                              "output = '"//out//"' /"), padded(equations), padded(grid)], error, written)
+      call check(ctx, .not. allocated(error), "auto chart runs")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call check(ctx, any(index(lines, "# method: auto on the scalar form") == 1), "the header names the scalar path")
+      call numbers(lines, 15, fast)
+      call delete_file(written)
+      out = scratch_prefix("one_slow")
+      call run_text_scene("one_slow", [padded("&scene model = 'equations', method = 'magnus6', tolerance = 1e-11, "// &
+                                              "output = '"//out//"' /"), padded(equations), padded(grid)], error, written)
+      call check(ctx, .not. allocated(error), "magnus6 chart runs")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call check(ctx, .not. any(index(lines, "scalar form") > 0), "magnus6 takes the system path")
+      call numbers(lines, 15, slow)
+      call delete_file(written)
+      call check(ctx, size(fast, 2) == 200 .and. size(slow, 2) == 200, "8 x 25 points each")
+      if (size(fast, 2) /= size(slow, 2)) return
+      decided = 0
+      unstable = 0
+      do k = 1, size(fast, 2)
+         ! eps = pi c/(m Om) = 2 pi zeta/Om, P = 2: det Phi = exp(-2 eps)
+         epsilon = 2.0_wp*pi*0.02_wp/fast(1, k)
+         call check(ctx, fast(14, k) == 0.0_wp .and. slow(14, k) == 0.0_wp, "status 0")
+         call check(ctx, fast(3, k), slow(3, k), abs=1.0e-8_wp*max(1.0_wp, abs(slow(3, k))), message="trace")
+         call check(ctx, fast(4, k), exp(-2.0_wp*epsilon), rel=1.0e-13_wp, message="a2 = exp(-eps P)")
+         call check(ctx, slow(4, k), exp(-2.0_wp*epsilon), rel=1.0e-9_wp, message="magnus6's a2 too")
+         call check(ctx, fast(9, k), slow(9, k), abs=1.0e-9_wp, message="mu")
+         call check(ctx, fast(11, k) == fast(9, k), "mu_1 = mu")
+         call check(ctx, fast(12, k) == 0.0_wp, "no defect by construction")
+         if (abs(fast(10, k) - slow(10, k)) > 1.0e-6_wp) &
+            call check(ctx, abs(abs(fast(10, k) - slow(10, k)) - 1.0_wp) < 1.0e-6_wp .or. fast(8, k) < 1.0_wp, &
+                       "the argument where the multipliers differ in modulus")
+         if (slow(6, k) >= 0.0_wp) then
+            decided = decided + 1
+            call check(ctx, fast(6, k) == slow(6, k) .and. fast(7, k) == slow(7, k), "verdict and kind")
+            if (slow(6, k) == 0.0_wp) unstable = unstable + 1
+         end if
+      end do
+      call check(ctx, decided >= 190 .and. unstable >= 10 .and. decided - unstable >= 10, &
+                 "both verdicts in the sample, nearly every point decided")
+      ! the points task on five of the chart's points: the chart's values
+      do j = 1, 5
+         k = 37*j
+         write (point_lines(j), '(es24.16, 1x, es24.16)') fast(1, k), fast(2, k)
+      end do
+      points_path = scratch_prefix("one_points_in")//".dat"
+      call write_file(points_path, point_lines)
+      out = scratch_prefix("one_points")
+      call run_text_scene("one_points", [padded("&scene task = 'points', model = 'equations', method = 'auto', "// &
+                                                "tolerance = 1e-10, output = '"//out//"' /"), padded(equations), &
+                                         padded("&points file = '"//points_path//"' /")], error, written)
+      call check(ctx, .not. allocated(error), "points run")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      call numbers(lines, 15, listed)
+      call delete_file(written)
+      call delete_file(points_path)
+      call check(ctx, size(listed, 2) == 5, "5 points")
+      if (size(listed, 2) /= 5) return
+      do j = 1, 5
+         call check(ctx, listed(3, j), fast(3, 37*j), abs=1.0e-9_wp*max(1.0_wp, abs(fast(3, 37*j))), &
+                    message="a point's trace is the chart's")
+         call check(ctx, listed(6, j) == fast(6, 37*j), "and its verdict")
+      end do
+   end subroutine one_equation_scalar_path
+
 end module test_task_system

@@ -19,13 +19,14 @@
 module hillstab_batch_tasks_system
    use hillstab_core_kinds, only: wp, int64, version_string
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
-   use hillstab_core_status, only: status_roundoff, status_failed
+   use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_core_text, only: real_text, integer_text, lower_case, put_es, put_integer
    use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system, system_equation_text, &
       system_description
-   use hillstab_hill_system_floquet, only: system_floquet_t
-   use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_method_name
-   use hillstab_integrate_system_point, only: system_point
+   use hillstab_integrate_system, only: system_method_t, system_method_name
+   use hillstab_batch_tasks_system_values, only: n_fixed, system_point_values, system_values, system_row_values, &
+      scalar_path, failure_text, system_column_names, system_column_table, status_column
+   use hillstab_batch_output_columns, only: column_t, put_row
    use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output, scene_header
    use hillstab_batch_tasks_regions, only: chart_region_lines
    use hillstab_batch_scene_declaration, only: group_t
@@ -57,16 +58,12 @@ module hillstab_batch_tasks_system
    !> The tasks a system scene takes.
    character(len=*), parameter :: system_task_names = "chart, points, coefficient, boundaries, regions, edges"
 
-   !> The fixed columns (the exponents mu_1 … mu_n follow `argument`).
-   integer, parameter :: n_fixed = 14
-   character(len=14), parameter :: fixed_names(n_fixed) = [character(len=14) :: "alpha", "beta", "trace", "a2", &
-                                                           "overflow", "stable", "kind", "lambda_max", "mu", &
-                                                           "argument", "defect", "error_estimate", "status", "steps"]
 
    !> Chart and points: what they share (the columns chosen; for runs in units, the
    !> prepared system).
    type, abstract, extends(task_t) :: system_floquet_task_t
       integer, allocatable :: chosen(:)  !! indices into `system_column_names`
+      type(column_t), allocatable :: table(:)  !! the columns (`system_column_table`)
       type(system_form_t) :: form        !! the prepared system (`prepare_units`)
       !> why the system cannot be prepared ("" when it is), reported by `open_units`
       character(len=:), allocatable :: form_error
@@ -131,17 +128,6 @@ contains
       task%units_in_parallel = .true.
    end function system_points_task
 
-   !> Every column of a system of n degrees of freedom.
-   pure function system_column_names(n) result(names)
-      integer, intent(in) :: n  !! degrees of freedom
-      character(len=14) :: names(n_fixed + n)
-      integer :: k
-      names(1:10) = fixed_names(1:10)
-      do k = 1, n
-         write (names(10 + k), '(a, i0)') "mu_", k
-      end do
-      names(11 + n:) = fixed_names(11:)
-   end function system_column_names
 
    !> The columns of the scene's system as its files name them: `system_column_names`, the
    !> first two named after the system's axes (an equations system's parameters).
@@ -153,77 +139,6 @@ contains
       names(2) = system%axis_name(2)
    end function scene_column_names
 
-   !> What each column holds, for the header.
-   function column_help(name, first_order) result(text)
-      character(len=*), intent(in) :: name
-      logical, intent(in) :: first_order  !! the system is y' = A y
-      character(len=:), allocatable :: text
-      if (first_order) then
-         select case (name)
-         case ("trace"); text = "a1 = tr Phi of the one-period monodromy of y' = A y (+-1e300 with overflow = 1)"
-            return
-         case ("defect"); text = "|det Phi - exp(P mean tr A)| over Hadamard's bound of |det Phi| (relative, max norms)"
-            return
-         end select
-      end if
-      select case (name)
-      case ("alpha"); text = "alpha, the drive"
-      case ("beta"); text = "beta, the factor of B"
-      case ("trace"); text = "a1 = tr Phi of the one-period monodromy of y = (x, x') (+-1e300 with overflow = 1)"
-      case ("a2"); text = "a2 = ((tr Phi)^2 - tr Phi^2)/2 = sum of lambda_i lambda_j (from the multipliers "// &
-                          "where that difference cancels; Broucke: z^2 - a1 z + a2 - 2 = 0 for n = 2)"
-      case ("overflow"); text = "1 when |a1| or |a2| exceeds 1e300 (clamped)"
-      case ("stable"); text = "1 stable, 0 unstable, -1 marginal (the error bound of Phi does not decide)"
-      case ("kind"); text = "0 stable, 1 unstable at +1, 2 at -1, 3 combination (Krein collision), "// &
-                            "4 damped (asymptotically stable), 5 undecided (stable = -1)"
-      case ("lambda_max"); text = "largest |multiplier| (1e300 when it overflows; mu is exact)"
-      case ("mu"); text = "ln(lambda_max)/period, the largest Floquet exponent per unit tau"
-      case ("argument"); text = "arg(lambda)/pi of the largest multiplier, in [0, 1]"
-      case ("defect"); text = "Hamiltonian: |Phi^T Omega Phi - Omega|/(|Omega| max(1, |Phi|)^2); else "// &
-                              "|det Phi - exp(P tr D)| over Hadamard's bound of |det Phi| (relative, max norms)"
-      case ("error_estimate"); text = "the method's estimate of the error of Phi's entries relative to "// &
-                                      "max(1, max|Phi_ij|)"
-      case ("status"); text = "0 ok; 1 round-off limited (the tolerance lies below the rounding of the method, "// &
-                              "or an exponent mu_k is not resolved to it); 2 failed (placeholders)"
-      case ("steps"); text = "Magnus steps (rk, gsl: right-hand sides) spent on the point"
-      case default; text = "ln|lambda_k|/period of the k-th largest multiplier (from the period's product "// &
-                           "kept factored where Phi cannot resolve it)"
-      end select
-   end function column_help
-
-   !> The values of every column at one point (placeholders when it failed).
-   pure function system_point_values(n, alpha, beta, f, r, failed) result(v)
-      integer, intent(in) :: n                      !! degrees of freedom
-      real(wp), intent(in) :: alpha, beta           !! the point
-      type(system_floquet_t), intent(in) :: f       !! its analysis
-      type(system_monodromy_t), intent(in) :: r     !! its monodromy
-      logical, intent(in) :: failed                 !! no value
-      real(wp) :: v(n_fixed + n)
-      v = 0.0_wp
-      v(1) = alpha
-      v(2) = beta
-      if (failed) then
-         v(6) = -1.0_wp
-         v(7) = -1.0_wp
-         v(11 + n) = -1.0_wp
-         v(12 + n) = -1.0_wp
-         v(13 + n) = real(status_failed, wp)
-         return
-      end if
-      v(3) = f%trace
-      v(4) = f%a2
-      v(5) = merge(1.0_wp, 0.0_wp, f%overflow .or. f%log_lambda_max > log(1.0e300_wp))
-      v(6) = real(f%verdict, wp)
-      v(7) = real(f%kind, wp)
-      v(8) = exp(min(f%log_lambda_max, log(1.0e300_wp)))
-      v(9) = f%mu
-      v(10) = f%argument
-      v(11:10 + n) = f%exponents
-      v(11 + n) = f%defect
-      v(12 + n) = r%error_estimate
-      v(13 + n) = real(r%status, wp)
-      v(14 + n) = real(r%steps, wp)
-   end function system_point_values
 
    !> `&scene columns`: the names given, in that order (all when blank); err_input naming
    !> &scene columns for an unknown name.
@@ -235,6 +150,7 @@ contains
       character(len=:), allocatable :: rest, word, known
       integer :: k, blank, found
       names = scene_column_names(scene%system)
+      self%table = system_column_table(scene%system%dof(), scene%system%first_order())
       if (len_trim(scene%columns) == 0) then
          self%chosen = [(k, k=1, size(names))]
          return
@@ -275,28 +191,17 @@ contains
    end subroutine system_choose_columns
 
    !> The text of one point's chosen columns, into a buffer (no deferred-length character
-   !> results: this runs on OpenMP threads, see hillstab_batch_output_file `join_lines`).
-   pure subroutine point_line(n, chosen, v, line, length)
-      integer, intent(in) :: n, chosen(:)
-      real(wp), intent(in) :: v(:)
+   !> results: this runs on OpenMP threads, see hillstab_batch_output_file `join_lines`), each
+   !> in its style of `system_column_table`.
+   pure subroutine point_line(table, chosen, v, line, length)
+      type(column_t), intent(in) :: table(:)  !! the system's columns (`system_column_table`)
+      integer, intent(in) :: chosen(:)  !! the columns written
+      real(wp), intent(in) :: v(:)  !! the point's values
       character(len=*), intent(out) :: line  !! at least 26 characters a column
       integer, intent(out) :: length         !! the length of the text
-      integer :: k, c
       line = ""
       length = 0
-      do k = 1, size(chosen)
-         c = chosen(k)
-         if (k > 1) then
-            length = length + 1
-            line(length:length) = " "
-         end if
-         ! flags, codes and counts as integers
-         if (c == 5 .or. c == 6 .or. c == 7 .or. c == 13 + n .or. c == 14 + n) then
-            call put_integer(line, length, nint(v(c)))
-         else
-            call put_es(line, length, v(c), 17)
-         end if
-      end do
+      call put_row(table, chosen, v, line, length)
    end subroutine point_line
 
    !> The column names chosen, blank-separated (the axes named after the system's).
@@ -323,9 +228,11 @@ contains
       character(len=:), allocatable :: lines(:)
       character(len=500), allocatable :: extra(:)
       character(len=14), allocatable :: names(:)
+      type(column_t), allocatable :: table(:)
       integer :: k, n
       n = scene%system%dof()
       names = scene_column_names(scene%system)
+      table = system_column_table(n, scene%system%first_order())
       allocate (extra(3 + size(chosen)))
       extra(1) = system_description(scene%system)
       extra(2) = "method: "//system_method_name(scene%method%kind)//", tolerance "// &
@@ -341,9 +248,16 @@ contains
                     "first-order form: no structure assumed, stable when every multiplier lies inside the unit "// &
                     "circle with its error disc (one on the circle is marginal)"
       end if
+      if (scalar_path(scene%system, scene%method%kind)) then
+         extra(2) = "method: auto on the scalar form (one equation: the scalar method auto's lanes and meshes, "// &
+                    "hillstab_integrate_auto), tolerance "//real_text(scene%method%tolerance)//" on S relative "// &
+                    "to max(1, |S|); epsilon "//real_text(scene%epsilon)//" adds C = epsilon M"
+         extra(3) = "verdicts decided from the trace S of chi = exp(eps tau/2) x and its error bound "// &
+                    "(hillstab_hill_floquet): Phi has tr = exp(-eps P/2) S and det = a2 = exp(-eps P) exactly, "// &
+                    "so the defect is 0; error_estimate is S's relative to max(1, |S|), steps the row's mean"
+      end if
       do k = 1, size(chosen)
-         extra(3 + k) = "column "//integer_text(k)//", "//trim(names(chosen(k)))//": "// &
-                        column_help(trim(names(chosen(k))), scene%system%first_order())
+         extra(3 + k) = "column "//integer_text(k)//", "//trim(names(chosen(k)))//": "//table(chosen(k))%meaning
          if (chosen(k) <= 2 .and. trim(names(chosen(k))) /= trim(merge("alpha", "beta ", chosen(k) == 1))) &
             extra(3 + k) = "column "//integer_text(k)//", "//trim(names(chosen(k)))//": the parameter "// &
                            trim(names(chosen(k)))//", the chart's "//trim(merge("alpha", "beta ", chosen(k) == 1))// &
@@ -353,94 +267,6 @@ contains
       lines = scene_header(scene, "hillstab "//version_string//": "//what//" of "// &
                            system_equation_text(scene%system), extra)
    end function system_lines
-
-   !> One point: monodromy, analysis, values; `failed` with the error when it could not be computed.
-   subroutine evaluate(system, form, method, alpha, beta, nodes, v, failed, message, row_form_given)
-      class(hill_system_t), intent(in) :: system
-      type(system_form_t), intent(in) :: form
-      type(system_method_t), intent(in) :: method
-      real(wp), intent(in) :: alpha, beta
-      type(system_nodes_t), intent(inout) :: nodes
-      real(wp), intent(out) :: v(:)
-      logical, intent(out) :: failed
-      character(len=:), allocatable, intent(out) :: message
-      !> `form` is the row's already (a row-dependent system prepared at α by the caller)
-      logical, intent(in), optional :: row_form_given
-      type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
-      type(error_t), allocatable :: error
-      type(system_form_t) :: row_form
-      logical :: prepare
-      prepare = system%row_dependent()
-      if (present(row_form_given)) prepare = prepare .and. .not. row_form_given
-      if (prepare) then
-         ! C or G change with α (an equation's damping along a frequency axis): the form of the row
-         call prepare_system(system, form%epsilon, row_form, error, alpha)
-         if (.not. allocated(error)) call system_point(system, row_form, alpha, beta, method, nodes, r, f, error)
-      else
-         call system_point(system, form, alpha, beta, method, nodes, r, f, error)
-      end if
-      failed = allocated(error) .or. r%status == status_failed
-      message = ""
-      if (allocated(error)) message = error%message
-      v = system_point_values(form%n, alpha, beta, f, r, failed)
-   end subroutine evaluate
-
-   !> The values of the columns `system_column_names` at one point, computed alone (its own
-   !> nodes): what task `points` writes, `hillstab_system_points` returns and one call of
-   !> `hillstab_system_floquet` gives. `failed` (status 2 and placeholders) with the reason.
-   subroutine system_values(system, form, method, alpha, beta, v, failed, message)
-      class(hill_system_t), intent(in) :: system  !! the system
-      type(system_form_t), intent(in) :: form  !! prepared at the point's damping
-      type(system_method_t), intent(in) :: method  !! method and tolerance
-      real(wp), intent(in) :: alpha, beta  !! the point
-      real(wp), intent(out) :: v(:)  !! n_fixed + n values, in the columns' order
-      logical, intent(out) :: failed  !! the point could not be computed
-      character(len=:), allocatable, intent(out) :: message  !! why ("" when it could)
-      type(system_nodes_t) :: nodes
-      call evaluate(system, form, method, alpha, beta, nodes, v, failed, message)
-   end subroutine system_values
-
-   !> The values of a chart row (one α, the β in order), the points sharing their nodes:
-   !> what task `chart` writes and `hillstab_system_chart` returns. `n_failed` points failed;
-   !> `failure` names the first and why.
-   subroutine system_row_values(system, form, method, alpha, betas, values, n_failed, failure)
-      class(hill_system_t), intent(in) :: system  !! the system
-      type(system_form_t), intent(in) :: form  !! prepared at the chart's damping
-      type(system_method_t), intent(in) :: method  !! method and tolerance
-      real(wp), intent(in) :: alpha  !! the row's α
-      real(wp), intent(in) :: betas(:)  !! its β
-      real(wp), intent(out) :: values(:, :)  !! (n_fixed + n, size(betas))
-      integer, intent(out) :: n_failed  !! points of status 2
-      character(len=*), intent(out) :: failure  !! "alpha = …, beta = …: why" of the first ("" when none)
-      type(system_nodes_t) :: nodes
-      type(system_form_t) :: row_form
-      type(error_t), allocatable :: error
-      character(len=:), allocatable :: message
-      logical :: failed
-      integer :: j
-      n_failed = 0
-      failure = ""
-      if (system%row_dependent()) then
-         ! the row's form once (C or G change with α: an equation's damping along a frequency axis)
-         call prepare_system(system, form%epsilon, row_form, error, alpha)
-         if (allocated(error)) then
-            do j = 1, size(betas)
-               call evaluate(system, form, method, alpha, betas(j), nodes, values(:, j), failed, message)
-               if (failed .and. n_failed == 0) call failure_text(alpha, betas(j), message, failure)
-               if (failed) n_failed = n_failed + 1
-            end do
-            return
-         end if
-      else
-         row_form = form
-      end if
-      do j = 1, size(betas)
-         call evaluate(system, row_form, method, alpha, betas(j), nodes, values(:, j), failed, message, .true.)
-         if (failed .and. n_failed == 0) call failure_text(alpha, betas(j), message, failure)
-         if (failed) n_failed = n_failed + 1
-      end do
-   end subroutine system_row_values
 
    !> `&chart` (any finite α), and the columns.
    subroutine chart_read(self, file, scene, error)
@@ -578,10 +404,10 @@ contains
          do i = first, last
             if (n_failed(i - first + 1) > 0 .and. len(first_failure) == 0) first_failure = trim(failures(i - first + 1))
             failed_total = failed_total + n_failed(i - first + 1)
-            k = findloc(nint(values(13 + n, :, i - first + 1)), status_roundoff, dim=1)
+            k = findloc(nint(values(status_column(n), :, i - first + 1)), status_roundoff, dim=1)
             if (k > 0) then
                if (n_roundoff == 0) first_roundoff = values(1:2, k, i - first + 1)
-               n_roundoff = n_roundoff + count(nint(values(13 + n, :, i - first + 1)) == status_roundoff)
+               n_roundoff = n_roundoff + count(nint(values(status_column(n), :, i - first + 1)) == status_roundoff)
             end if
             if (scene%binary) then
                call write_records(file, values(self%chosen, :, i - first + 1), error)
@@ -628,7 +454,7 @@ contains
       text_length = 0
       if (scene%binary) return
       do j = 1, self%grid%n_beta
-         call point_line(form%n, self%chosen, values(:, j), line, length)
+         call point_line(self%table, self%chosen, values(:, j), line, length)
          if (j > 1) then
             text_length = text_length + 1
             text(text_length:text_length) = new_line("a")
@@ -674,7 +500,7 @@ contains
       call chart_row(self, scene, self%form, system_method_t(scene%method%kind, scene%method%tolerance), unit, &
                      values, buffer(offset + 1:), length, n_failed, failure)
       text = buffer(1:offset + length)
-      statuses = nint(values(13 + n, :))
+      statuses = nint(values(status_column(n), :))
    end subroutine chart_unit_text
 
    !> The checks and the header of `chart_run`.
@@ -783,14 +609,14 @@ contains
       else
          do k = 1, size(self%points, 2)
             if (allocated(error)) exit
-            call point_line(form%n, self%chosen, v(:, k), line, length)
+            call point_line(self%table, self%chosen, v(:, k), line, length)
             call write_text(file, line(:length), error)
          end do
       end if
       call finish_output(file, error)
       if (allocated(error)) return
-      k = findloc(nint(v(13 + form%n, :)), status_roundoff, dim=1)
-      if (k > 0) call warn_roundoff(scene, int(count(nint(v(13 + form%n, :)) == status_roundoff), int64), v(1:2, k))
+      k = findloc(nint(v(status_column(form%n), :)), status_roundoff, dim=1)
+      if (k > 0) call warn_roundoff(scene, int(count(nint(v(status_column(form%n), :)) == status_roundoff), int64), v(1:2, k))
       if (n_failed > 0) call set_error(error, err_points_failed, scene%source//": "//integer_text(n_failed)// &
          " of "//integer_text(size(self%points, 2))//" points failed (status 2); the first: "//first_failure)
    end subroutine points_run
@@ -838,8 +664,8 @@ contains
       do k = first, last
          call system_values(scene%system, self%form, system_method_t(scene%method%kind, scene%method%tolerance), &
                             self%points(1, k), self%points(2, k), v, failed, message)
-         statuses(k) = nint(v(13 + self%form%n))
-         call point_line(self%form%n, self%chosen, v, line, lengths(k))
+         statuses(k) = nint(v(status_column(self%form%n)))
+         call point_line(self%table, self%chosen, v, line, lengths(k))
          lines(k) = line(:lengths(k))
       end do
       call join_lines(lines, .false., text, lengths=lengths)
@@ -908,15 +734,6 @@ contains
       call set_error(error, err_points_failed, scene%source//": "//integer_text(n_failed)//" of "// &
          integer_text(n_points)//" points failed (status 2); the first: "//trim(place))
    end subroutine system_finish_units
-
-   !> "alpha = …, beta = …:  <message>" of a failed point, as the chart's error gives it.
-   subroutine failure_text(alpha, beta, message, text)
-      real(wp), intent(in) :: alpha, beta
-      character(len=*), intent(in) :: message
-      character(len=*), intent(out) :: text
-      write (text, '(a, es24.16, a, es24.16, a)') "alpha = ", alpha, ", beta = ", beta, ": "
-      text = trim(text)//" "//message
-   end subroutine failure_text
 
    !> Say on stderr (even when quiet: it qualifies the results) how many points reached only
    !> the round-off level of double precision (status 1), not the tolerance.

@@ -1,0 +1,446 @@
+!> The values of the columns of a system's chart and points files at each point, as task
+!> `chart` and `points` (hillstab_batch_tasks_system) and the C API
+!> (hillstab_interop_capi_system_batch) compute them: the exact monodromy by the chosen
+!> method (hillstab_integrate_system_point, the nodes shared along a chart row) and its
+!> Floquet analysis (hillstab_hill_system_floquet). A system that is one scalar equation
+!> (`hill_system_t%scalar_model`) takes, on method auto, the scalar method auto's lanes and
+!> row-shared meshes instead (`scalar_values`): its trace S gives the same analysis
+!> (`floquet_of_trace`), at the scalar path's cost.
+!>
+!>```fortran
+!> real(wp) :: v(n_fixed + 1)
+!> call system_values(system, form, system_method_t(system_auto, 1.0e-10_wp), 2.0_wp, 0.5_wp, v, failed, message)
+!>```
+module hillstab_batch_tasks_system_values
+   use hillstab_core_kinds, only: wp
+   use hillstab_core_error, only: error_t, set_error, err_integration
+   use hillstab_core_status, only: status_ok, status_roundoff, status_failed
+   use hillstab_core_stats, only: work_stats_t
+   use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system
+   use hillstab_hill_system_floquet, only: system_floquet_t, floquet_of_trace
+   use hillstab_hill_model, only: hill_model_t, hill_point_t
+   use hillstab_hill_floquet, only: floquet_from_trace
+   use hillstab_hill_transfer, only: trace_t
+   use hillstab_integrate_monodromy, only: monodromy_trace_batch, method_t, method_auto
+   use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_auto
+   use hillstab_integrate_system_point, only: system_point
+   use hillstab_batch_output_columns, only: column_t, style_e17, style_integer, failed_row
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   implicit none
+   private
+   public :: n_fixed, system_layout_t, system_layout, system_column_names, system_column_table, status_column, &
+      system_point_values, system_values, system_row_values, scalar_path, scalar_point, failure_text
+
+   !> The columns of a system's chart and points files before the exponents mu_1 … mu_n and
+   !> after them, in file order: the one place their order is set. Every column's record
+   !> (meaning, style, placeholder) is `system_column_table`'s, its value `system_point_values`',
+   !> each found by name (`system_layout_t`).
+   character(len=14), parameter :: before_exponents(10) = [character(len=14) :: "alpha", "beta", "trace", "a2", &
+                                                          "overflow", "stable", "kind", "lambda_max", "mu", "argument"]
+   character(len=14), parameter :: after_exponents(4) = [character(len=14) :: "defect", "error_estimate", "status", &
+                                                         "steps"]
+   !> The columns besides the n exponents.
+   integer, parameter :: n_fixed = size(before_exponents) + size(after_exponents)
+
+   !> Where each column sits among a point's values, by name (`system_layout`): what
+   !> `system_point_values` fills, the C API's status and every file's rows follow from it.
+   type :: system_layout_t
+      integer :: n = 0            !! degrees of freedom (the exponents mu_1 … mu_n)
+      integer :: columns = 0      !! every column: n_fixed + n
+      !> the places of the columns of those names
+      integer :: alpha = 0, beta = 0, trace = 0, a2 = 0, overflow = 0, stable = 0, kind = 0, lambda_max = 0
+      !> the places of the columns of those names
+      integer :: mu = 0, argument = 0, defect = 0, error_estimate = 0, status = 0, steps = 0
+      integer :: mu_1 = 0         !! the first exponent; mu_k is at mu_1 + k − 1
+   end type system_layout_t
+
+contains
+
+   !> Every column of a system of n degrees of freedom, by name, in file order.
+   pure function system_column_names(n) result(names)
+      integer, intent(in) :: n  !! degrees of freedom
+      character(len=14) :: names(n_fixed + n)
+      integer :: k
+      names(1:size(before_exponents)) = before_exponents
+      do k = 1, n
+         write (names(size(before_exponents) + k), '(a, i0)') "mu_", k
+      end do
+      names(size(before_exponents) + n + 1:) = after_exponents
+   end function system_column_names
+
+   !> Each column's place among a point's values, found by its name.
+   pure function system_layout(n) result(layout)
+      integer, intent(in) :: n  !! degrees of freedom
+      type(system_layout_t) :: layout
+      character(len=14) :: names(n_fixed + n)
+      names = system_column_names(n)
+      layout%n = n
+      layout%columns = size(names)
+      layout%alpha = place("alpha")
+      layout%beta = place("beta")
+      layout%trace = place("trace")
+      layout%a2 = place("a2")
+      layout%overflow = place("overflow")
+      layout%stable = place("stable")
+      layout%kind = place("kind")
+      layout%lambda_max = place("lambda_max")
+      layout%mu = place("mu")
+      layout%argument = place("argument")
+      layout%mu_1 = place("mu_1")
+      layout%defect = place("defect")
+      layout%error_estimate = place("error_estimate")
+      layout%status = place("status")
+      layout%steps = place("steps")
+   contains
+      pure integer function place(name)
+         character(len=*), intent(in) :: name
+         place = findloc(names, name, dim=1)
+      end function place
+   end function system_layout
+
+   !> The place of the column `status` among a point's values (`system_layout`).
+   pure integer function status_column(n)
+      integer, intent(in) :: n  !! degrees of freedom
+      type(system_layout_t) :: layout
+      layout = system_layout(n)
+      status_column = layout%status
+   end function status_column
+
+   !> Every column of a system's chart and points files (`system_column_names`), its record
+   !> by name: the meaning the header gives it (of the first-order form's where it differs),
+   !> its text style (flags, codes and counts as integers, the rest in 17 digits) and the
+   !> placeholder of a failed point (the axes keep their values).
+   pure function system_column_table(n, first_order) result(table)
+      integer, intent(in) :: n  !! degrees of freedom (first-order form: the states)
+      logical, intent(in) :: first_order  !! the system is y' = A y
+      type(column_t) :: table(n_fixed + n)
+      character(len=14) :: names(n_fixed + n)
+      integer :: k
+      names = system_column_names(n)
+      do k = 1, size(names)
+         table(k) = record(trim(names(k)))
+      end do
+   contains
+      pure function record(name) result(column)
+         character(len=*), intent(in) :: name
+         type(column_t) :: column
+         column = column_t(name, "", "", style_e17, 0.0_wp, .false.)
+         select case (name)
+         case ("alpha"); column%meaning = "alpha, the drive"
+            column%keep_on_failure = .true.
+         case ("beta"); column%meaning = "beta, the factor of B"
+            column%keep_on_failure = .true.
+         case ("trace")
+            if (first_order) then
+               column%meaning = "a1 = tr Phi of the one-period monodromy of y' = A y (+-1e300 with overflow = 1)"
+            else
+               column%meaning = "a1 = tr Phi of the one-period monodromy of y = (x, x') (+-1e300 with overflow = 1)"
+            end if
+         case ("a2"); column%meaning = "a2 = ((tr Phi)^2 - tr Phi^2)/2 = sum of lambda_i lambda_j (from the "// &
+                                       "multipliers where that difference cancels; Broucke: z^2 - a1 z + a2 - 2 = 0 "// &
+                                       "for n = 2)"
+         case ("overflow"); column%meaning = "1 when |a1| or |a2| exceeds 1e300 (clamped)"
+            column%style = style_integer
+         case ("stable"); column%meaning = "1 stable, 0 unstable, -1 marginal (the error bound of Phi does not decide)"
+            column%style = style_integer
+            column%placeholder = -1.0_wp
+         case ("kind"); column%meaning = "0 stable, 1 unstable at +1, 2 at -1, 3 combination (Krein collision), "// &
+                                         "4 damped (asymptotically stable), 5 undecided (stable = -1)"
+            column%style = style_integer
+            column%placeholder = -1.0_wp
+         case ("lambda_max"); column%meaning = "largest |multiplier| (1e300 when it overflows; mu is exact)"
+         case ("mu"); column%meaning = "ln(lambda_max)/period, the largest Floquet exponent per unit tau"
+         case ("argument"); column%meaning = "arg(lambda)/pi of the largest multiplier, in [0, 1]"
+         case ("defect")
+            if (first_order) then
+               column%meaning = "|det Phi - exp(P mean tr A)| over Hadamard's bound of |det Phi| (relative, max norms)"
+            else
+               column%meaning = "Hamiltonian: |Phi^T Omega Phi - Omega|/(|Omega| max(1, |Phi|)^2); else "// &
+                                "|det Phi - exp(P tr D)| over Hadamard's bound of |det Phi| (relative, max norms)"
+            end if
+            column%placeholder = -1.0_wp
+         case ("error_estimate"); column%meaning = "the method's estimate of the error of Phi's entries relative "// &
+                                                   "to max(1, max|Phi_ij|)"
+            column%placeholder = -1.0_wp
+         case ("status"); column%meaning = "0 ok; 1 round-off limited (the tolerance lies below the rounding of "// &
+                                           "the method, or an exponent mu_k is not resolved to it); 2 failed "// &
+                                           "(placeholders)"
+            column%style = style_integer
+            column%placeholder = real(status_failed, wp)
+         case ("steps"); column%meaning = "Magnus steps (rk, gsl: right-hand sides) spent on the point"
+            column%style = style_integer
+         case default; column%meaning = "ln|lambda_k|/period of the k-th largest multiplier (from the period's "// &
+                                        "product kept factored where Phi cannot resolve it)"
+         end select
+      end function record
+   end function system_column_table
+
+   !> The values of every column at one point, each at its place in `layout` (the
+   !> placeholders of `system_column_table` when the point failed).
+   pure function system_point_values(layout, alpha, beta, f, r, failed) result(v)
+      type(system_layout_t), intent(in) :: layout   !! the columns' places (`system_layout`)
+      real(wp), intent(in) :: alpha, beta           !! the point
+      type(system_floquet_t), intent(in) :: f       !! its analysis
+      type(system_monodromy_t), intent(in) :: r     !! its monodromy
+      logical, intent(in) :: failed                 !! no value
+      real(wp) :: v(layout%columns)
+      v = 0.0_wp
+      v(layout%alpha) = alpha
+      v(layout%beta) = beta
+      if (failed) then
+         call failed_row(system_column_table(layout%n, .false.), v)
+         return
+      end if
+      v(layout%trace) = f%trace
+      v(layout%a2) = f%a2
+      v(layout%overflow) = merge(1.0_wp, 0.0_wp, f%overflow .or. f%log_lambda_max > log(1.0e300_wp))
+      v(layout%stable) = real(f%verdict, wp)
+      v(layout%kind) = real(f%kind, wp)
+      v(layout%lambda_max) = exp(min(f%log_lambda_max, log(1.0e300_wp)))
+      v(layout%mu) = f%mu
+      v(layout%argument) = f%argument
+      v(layout%mu_1:layout%mu_1 + layout%n - 1) = f%exponents
+      v(layout%defect) = f%defect
+      v(layout%error_estimate) = r%error_estimate
+      v(layout%status) = real(r%status, wp)
+      v(layout%steps) = real(r%steps, wp)
+   end function system_point_values
+
+   !> One point: monodromy, analysis, values; `failed` with the error when it could not be computed.
+   subroutine evaluate(system, form, method, alpha, beta, nodes, v, failed, message, row_form_given)
+      class(hill_system_t), intent(in) :: system
+      type(system_form_t), intent(in) :: form
+      type(system_method_t), intent(in) :: method
+      real(wp), intent(in) :: alpha, beta
+      type(system_nodes_t), intent(inout) :: nodes
+      real(wp), intent(out) :: v(:)
+      logical, intent(out) :: failed
+      character(len=:), allocatable, intent(out) :: message
+      !> `form` is the row's already (a row-dependent system prepared at α by the caller)
+      logical, intent(in), optional :: row_form_given
+      type(system_monodromy_t) :: r
+      type(system_floquet_t) :: f
+      type(error_t), allocatable :: error
+      type(system_form_t) :: row_form
+      logical :: prepare, taken
+      ! one equation on method auto: the scalar method auto on its scalar form
+      call scalar_point(system, form, method, alpha, beta, f, r, taken, error)
+      if (taken) then
+         failed = allocated(error)
+         message = ""
+         if (failed) message = error%message
+         v = system_point_values(system_layout(form%n), alpha, beta, f, r, failed)
+         return
+      end if
+      prepare = system%row_dependent()
+      if (present(row_form_given)) prepare = prepare .and. .not. row_form_given
+      if (prepare) then
+         ! C or G change with α (an equation's damping along a frequency axis): the form of the row
+         call prepare_system(system, form%epsilon, row_form, error, alpha)
+         if (.not. allocated(error)) call system_point(system, row_form, alpha, beta, method, nodes, r, f, error)
+      else
+         call system_point(system, form, alpha, beta, method, nodes, r, f, error)
+      end if
+      failed = allocated(error) .or. r%status == status_failed
+      message = ""
+      if (allocated(error)) message = error%message
+      v = system_point_values(system_layout(form%n), alpha, beta, f, r, failed)
+   end subroutine evaluate
+
+   !> The values of the columns `system_column_names` at one point, computed alone (its own
+   !> nodes): what task `points` writes, `hillstab_system_points` returns and one call of
+   !> `hillstab_system_floquet` gives. `failed` (status 2 and placeholders) with the reason.
+   subroutine system_values(system, form, method, alpha, beta, v, failed, message)
+      class(hill_system_t), intent(in) :: system  !! the system
+      type(system_form_t), intent(in) :: form  !! prepared at the point's damping
+      type(system_method_t), intent(in) :: method  !! method and tolerance
+      real(wp), intent(in) :: alpha, beta  !! the point
+      real(wp), intent(out) :: v(:)  !! n_fixed + n values, in the columns' order
+      logical, intent(out) :: failed  !! the point could not be computed
+      character(len=:), allocatable, intent(out) :: message  !! why ("" when it could)
+      type(system_nodes_t) :: nodes
+      call evaluate(system, form, method, alpha, beta, nodes, v, failed, message)
+   end subroutine system_values
+
+   !> Whether a system's points take the scalar path (`scalar_values`): method auto on a
+   !> system that is one scalar equation.
+   logical function scalar_path(system, method)
+      class(hill_system_t), intent(in) :: system  !! the system
+      integer, intent(in) :: method  !! the method's code
+      class(hill_model_t), allocatable :: scalar
+      scalar_path = .false.
+      if (method /= system_auto) return
+      call system%scalar_model(scalar)
+      scalar_path = allocated(scalar)
+   end function scalar_path
+
+   !> The values of points (α, β_j) of one degree of freedom by the scalar method auto on the
+   !> system's scalar form (`hill_system_t%scalar_model`): the traces of the batch on its lanes
+   !> and shared meshes (hillstab_integrate_monodromy), the Floquet data of each at the row's
+   !> damping (hillstab_hill_floquet) and the system's analysis from them (`floquet_of_trace`):
+   !> its error estimate is the trace's, relative to max(1, |S|), and its steps the batch's
+   !> mean. `taken` is false (nothing computed) where the row's damping is not one the scalar
+   !> form takes (not finite, or negative).
+   subroutine scalar_values(model, form, method, alpha, betas, values, n_failed, failure, taken)
+      class(hill_model_t), intent(in) :: model  !! the scalar form
+      type(system_form_t), intent(in) :: form  !! the system prepared (its period)
+      type(system_method_t), intent(in) :: method  !! method auto and the tolerance
+      real(wp), intent(in) :: alpha  !! the row's α
+      real(wp), intent(in) :: betas(:)  !! its β
+      real(wp), intent(out) :: values(:, :)  !! (n_fixed + 1, size(betas))
+      integer, intent(out) :: n_failed  !! points of status 2
+      character(len=*), intent(out) :: failure  !! "alpha = …, beta = …: why" of the first ("" when none)
+      logical, intent(out) :: taken  !! the points were computed here
+      type(system_floquet_t) :: f(size(betas))
+      type(system_monodromy_t) :: r(size(betas))
+      logical :: failed(size(betas))
+      type(error_t), allocatable :: cause
+      type(system_layout_t) :: layout
+      integer :: j
+      n_failed = 0
+      failure = ""
+      layout = system_layout(form%n)
+      call scalar_analyses(model, form, method, alpha, betas, f, r, failed, cause, taken)
+      if (.not. taken) return
+      do j = 1, size(betas)
+         if (failed(j)) then
+            n_failed = n_failed + 1
+            if (n_failed == 1) then
+               if (allocated(cause)) then
+                  call failure_text(alpha, betas(j), cause%message, failure)
+               else
+                  call failure_text(alpha, betas(j), "no trace", failure)
+               end if
+            end if
+         end if
+         values(:, j) = system_point_values(layout, alpha, betas(j), f(j), r(j), failed(j))
+      end do
+   end subroutine scalar_values
+
+   !> The analyses of points (α, β_j) on the scalar path (`scalar_values`): each point's
+   !> `system_floquet_t` and the monodromy's status, error estimate and steps (no Φ).
+   subroutine scalar_analyses(model, form, method, alpha, betas, f, r, failed, cause, taken)
+      class(hill_model_t), intent(in) :: model  !! the scalar form
+      type(system_form_t), intent(in) :: form  !! the system prepared (its period)
+      type(system_method_t), intent(in) :: method  !! method auto and the tolerance
+      real(wp), intent(in) :: alpha  !! the row's α
+      real(wp), intent(in) :: betas(:)  !! its β
+      type(system_floquet_t), intent(out) :: f(:)  !! the analyses (unset where failed)
+      type(system_monodromy_t), intent(out) :: r(:)  !! status, error estimate, steps
+      logical, intent(out) :: failed(:)  !! no value at the point
+      type(error_t), allocatable, intent(out) :: cause  !! the first failure
+      logical, intent(out) :: taken  !! the points were computed here
+      type(trace_t) :: traces(size(betas))
+      logical :: inaccurate(size(betas))
+      type(work_stats_t) :: stats
+      real(wp) :: damping
+      integer :: j
+      failed = .false.
+      damping = model%point_damping(alpha, form%epsilon)
+      taken = ieee_is_finite(damping) .and. damping >= 0.0_wp
+      if (.not. taken) return
+      call monodromy_trace_batch(model, hill_point_t(alpha, 0.0_wp, damping), betas, &
+                                 method_t(kind=method_auto, tolerance=method%tolerance), traces, failed, cause, &
+                                 stats=stats, inaccurate=inaccurate)
+      do j = 1, size(betas)
+         r(j)%steps = int(stats%n_steps/max(1, size(betas)))
+         r(j)%status = merge(status_roundoff, status_ok, inaccurate(j))
+         r(j)%error_estimate = max(traces(j)%error_estimate, 0.0_wp)
+         if (failed(j)) then
+            r(j)%status = status_failed
+         else
+            call floquet_of_trace(floquet_from_trace(traces(j), damping, method%tolerance, model%period()), form, &
+                                  f(j))
+         end if
+      end do
+   end subroutine scalar_analyses
+
+   !> One point on the scalar path when the system takes it (method auto on a system that is
+   !> one scalar equation, at a damping its scalar form takes): its analysis and the
+   !> monodromy's status, error estimate and steps (no Φ); `taken` false, nothing done,
+   !> otherwise. `error` when the point failed.
+   subroutine scalar_point(system, form, method, alpha, beta, f, r, taken, error)
+      class(hill_system_t), intent(in) :: system  !! the system
+      type(system_form_t), intent(in) :: form  !! prepared at the point's damping
+      type(system_method_t), intent(in) :: method  !! method and tolerance
+      real(wp), intent(in) :: alpha, beta  !! the point
+      type(system_floquet_t), intent(out) :: f  !! its analysis
+      type(system_monodromy_t), intent(out) :: r  !! status, error estimate, steps
+      logical, intent(out) :: taken  !! computed here
+      type(error_t), allocatable, intent(out) :: error  !! the point failed
+      class(hill_model_t), allocatable :: scalar
+      type(system_floquet_t) :: fs(1)
+      type(system_monodromy_t) :: rs(1)
+      logical :: failed(1)
+      taken = .false.
+      if (method%kind /= system_auto) return
+      call system%scalar_model(scalar)
+      if (.not. allocated(scalar)) return
+      call scalar_analyses(scalar, form, method, alpha, [beta], fs, rs, failed, error, taken)
+      if (.not. taken) return
+      f = fs(1)
+      r = rs(1)
+      if (failed(1) .and. .not. allocated(error)) call set_error(error, err_integration, "no trace")
+      if (.not. failed(1) .and. allocated(error)) deallocate (error)
+   end subroutine scalar_point
+
+   !> The values of a chart row (one α, the β in order), the points sharing their nodes:
+   !> what task `chart` writes and `hillstab_system_chart` returns. `n_failed` points failed;
+   !> `failure` names the first and why.
+   subroutine system_row_values(system, form, method, alpha, betas, values, n_failed, failure)
+      class(hill_system_t), intent(in) :: system  !! the system
+      type(system_form_t), intent(in) :: form  !! prepared at the chart's damping
+      type(system_method_t), intent(in) :: method  !! method and tolerance
+      real(wp), intent(in) :: alpha  !! the row's α
+      real(wp), intent(in) :: betas(:)  !! its β
+      real(wp), intent(out) :: values(:, :)  !! (n_fixed + n, size(betas))
+      integer, intent(out) :: n_failed  !! points of status 2
+      character(len=*), intent(out) :: failure  !! "alpha = …, beta = …: why" of the first ("" when none)
+      type(system_nodes_t) :: nodes
+      type(system_form_t) :: row_form
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: message
+      class(hill_model_t), allocatable :: scalar
+      logical :: failed, taken
+      integer :: j
+      n_failed = 0
+      failure = ""
+      if (method%kind == system_auto) then
+         ! one equation: the scalar method auto's lanes and shared meshes on its scalar form
+         call system%scalar_model(scalar)
+         if (allocated(scalar)) then
+            call scalar_values(scalar, form, method, alpha, betas, values, n_failed, failure, taken)
+            if (taken) return
+         end if
+      end if
+      if (system%row_dependent()) then
+         ! the row's form once (C or G change with α: an equation's damping along a frequency axis)
+         call prepare_system(system, form%epsilon, row_form, error, alpha)
+         if (allocated(error)) then
+            do j = 1, size(betas)
+               call evaluate(system, form, method, alpha, betas(j), nodes, values(:, j), failed, message)
+               if (failed .and. n_failed == 0) call failure_text(alpha, betas(j), message, failure)
+               if (failed) n_failed = n_failed + 1
+            end do
+            return
+         end if
+      else
+         row_form = form
+      end if
+      do j = 1, size(betas)
+         call evaluate(system, row_form, method, alpha, betas(j), nodes, values(:, j), failed, message, .true.)
+         if (failed .and. n_failed == 0) call failure_text(alpha, betas(j), message, failure)
+         if (failed) n_failed = n_failed + 1
+      end do
+   end subroutine system_row_values
+
+   !> "alpha = …, beta = …:  <message>" of a failed point, as the chart's error gives it.
+   subroutine failure_text(alpha, beta, message, text)
+      real(wp), intent(in) :: alpha, beta  !! the point
+      character(len=*), intent(in) :: message  !! why it failed
+      character(len=*), intent(out) :: text  !! the text
+      write (text, '(a, es24.16, a, es24.16, a)') "alpha = ", alpha, ", beta = ", beta, ": "
+      text = trim(text)//" "//message
+   end subroutine failure_text
+
+end module hillstab_batch_tasks_system_values
