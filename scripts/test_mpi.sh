@@ -2,7 +2,8 @@
 # Tests of hillstab_mpi (run by `make test-mpi` and CI): builds hillstab and hillstab_mpi
 # with CMake (-DHILLSTAB_MPI=ON), then checks against the single-process program:
 #  - np = 1, 2, 3 write the same file as hillstab (charts with many and few rows, damped,
-#    a points list, a Lyapunov map, a non-distributed task, a system's chart and points);
+#    a points list, a Lyapunov map, a non-distributed task, a system's chart and points, a system of one
+#    equation's chart);
 #  - bad input (unknown variable, unwritable output) gives exit 2 on every rank, no hang,
 #    no file; a failing point is written as hillstab writes it (status 2, placeholders),
 #    with hillstab's message and exit 3 on every rank;
@@ -79,7 +80,11 @@ printf '%s\n' "&scene task='chart', model='system', epsilon=0.02, output='$work/
 awk 'BEGIN { for (k = 0; k < 200; k++) printf "%.4f %.4f\n", 1.2 * ((7 * k) % 23) / 23, 3 * k / 200 }' >"$work/syspoints.dat"
 printf '%s\n' "&scene task='points', model='system', method='rk', tolerance=1e-9, output='$work/syspts' /" "$sysgroup" \
    "&points file='$work/syspoints.dat' /" >"$work/syspts.nml"
-for name in many:chart few:chart pts:points coef:coefficient lyap:lyapunov sys:chart syspts:points; do
+# a system of one equation (the Kapitza pendulum written as &equations n = 1): the scalar path, spread too
+printf '%s\n' "&scene task='chart', model='equations', output='$work/one' /" \
+   "&equations n = 1, parameters = 'g = 9.81, l = 0.2, kappa = 0.2, A = 0.005, w = 314.16', stiffness = '-g/l + A*w^2/l*cos(w*t)', damping = 'kappa', frequency = 'w', alpha = 'w', beta = 'A' /" \
+   "&chart alpha_min=60, alpha_max=700, n_alpha=19, beta_min=0, beta_max=0.1, n_beta=27 /" >"$work/one.nml"
+for name in many:chart few:chart pts:points coef:coefficient lyap:lyapunov sys:chart syspts:points one:chart; do
    scene=${name%%:*}
    task=${name##*:}
    file="$work/${scene}_${task}.dat"

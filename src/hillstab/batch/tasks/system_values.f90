@@ -68,14 +68,13 @@ contains
       names(size(before_exponents) + n + 1:) = after_exponents
    end function system_column_names
 
-   !> Each column's place among a point's values, found by its name.
+   !> Each column's place among a point's values, found by its name (without making the
+   !> names of the exponents: this runs once a row).
    pure function system_layout(n) result(layout)
       integer, intent(in) :: n  !! degrees of freedom
       type(system_layout_t) :: layout
-      character(len=14) :: names(n_fixed + n)
-      names = system_column_names(n)
       layout%n = n
-      layout%columns = size(names)
+      layout%columns = n_fixed + n
       layout%alpha = place("alpha")
       layout%beta = place("beta")
       layout%trace = place("trace")
@@ -86,7 +85,7 @@ contains
       layout%lambda_max = place("lambda_max")
       layout%mu = place("mu")
       layout%argument = place("argument")
-      layout%mu_1 = place("mu_1")
+      layout%mu_1 = size(before_exponents) + 1
       layout%defect = place("defect")
       layout%error_estimate = place("error_estimate")
       layout%status = place("status")
@@ -94,7 +93,8 @@ contains
    contains
       pure integer function place(name)
          character(len=*), intent(in) :: name
-         place = findloc(names, name, dim=1)
+         place = findloc(before_exponents, name, dim=1)
+         if (place == 0) place = size(before_exponents) + n + findloc(after_exponents, name, dim=1)
       end function place
    end function system_layout
 
@@ -207,9 +207,10 @@ contains
    end function system_point_values
 
    !> One point: monodromy, analysis, values; `failed` with the error when it could not be computed.
-   subroutine evaluate(system, form, method, alpha, beta, nodes, v, failed, message, row_form_given)
+   subroutine evaluate(system, form, layout, method, alpha, beta, nodes, v, failed, message, row_form_given)
       class(hill_system_t), intent(in) :: system
       type(system_form_t), intent(in) :: form
+      type(system_layout_t), intent(in) :: layout  !! the columns' places (`system_layout`)
       type(system_method_t), intent(in) :: method
       real(wp), intent(in) :: alpha, beta
       type(system_nodes_t), intent(inout) :: nodes
@@ -229,7 +230,7 @@ contains
          failed = allocated(error)
          message = ""
          if (failed) message = error%message
-         v = system_point_values(system_layout(form%n), alpha, beta, f, r, failed)
+         v = system_point_values(layout, alpha, beta, f, r, failed)
          return
       end if
       prepare = system%row_dependent()
@@ -244,7 +245,7 @@ contains
       failed = allocated(error) .or. r%status == status_failed
       message = ""
       if (allocated(error)) message = error%message
-      v = system_point_values(system_layout(form%n), alpha, beta, f, r, failed)
+      v = system_point_values(layout, alpha, beta, f, r, failed)
    end subroutine evaluate
 
    !> The values of the columns `system_column_names` at one point, computed alone (its own
@@ -259,7 +260,7 @@ contains
       logical, intent(out) :: failed  !! the point could not be computed
       character(len=:), allocatable, intent(out) :: message  !! why ("" when it could)
       type(system_nodes_t) :: nodes
-      call evaluate(system, form, method, alpha, beta, nodes, v, failed, message)
+      call evaluate(system, form, system_layout(form%n), method, alpha, beta, nodes, v, failed, message)
    end subroutine system_values
 
    !> Whether a system's points take the scalar path (`scalar_values`): method auto on a
@@ -402,8 +403,10 @@ contains
       character(len=:), allocatable :: message
       class(hill_model_t), allocatable :: scalar
       logical :: failed, taken
+      type(system_layout_t) :: layout
       integer :: j
       n_failed = 0
+      layout = system_layout(form%n)
       failure = ""
       if (method%kind == system_auto) then
          ! one equation: the scalar method auto's lanes and shared meshes on its scalar form
@@ -418,7 +421,7 @@ contains
          call prepare_system(system, form%epsilon, row_form, error, alpha)
          if (allocated(error)) then
             do j = 1, size(betas)
-               call evaluate(system, form, method, alpha, betas(j), nodes, values(:, j), failed, message)
+               call evaluate(system, form, layout, method, alpha, betas(j), nodes, values(:, j), failed, message)
                if (failed .and. n_failed == 0) call failure_text(alpha, betas(j), message, failure)
                if (failed) n_failed = n_failed + 1
             end do
@@ -428,7 +431,8 @@ contains
          row_form = form
       end if
       do j = 1, size(betas)
-         call evaluate(system, row_form, method, alpha, betas(j), nodes, values(:, j), failed, message, .true.)
+         call evaluate(system, row_form, layout, method, alpha, betas(j), nodes, values(:, j), failed, message, &
+                       .true.)
          if (failed .and. n_failed == 0) call failure_text(alpha, betas(j), message, failure)
          if (failed) n_failed = n_failed + 1
       end do
