@@ -319,27 +319,11 @@ contains
       end do
    end subroutine auto_chart_grid
 
-   !> Set 3 of data/reference/physical_set.dat: a damped column of 3 modes written as its
-   !> user writes it, M x'' + C x' + (W − (P0 + P1 cos Ωt) S) x = 0 with named matrices, over
-   !> (Ω, P1) at 50 points near the simple and combination resonances: the trace and every
-   !> multiplier (all six, as complex numbers, and the largest modulus) against the
-   !> monodromy of the physical system by Taylor series in 45 digits, by every system method
-   !> at 1e-10, status 0. The damping (π/Ω) C changes from row to row.
-   subroutine column_against_reference(ctx)
-      type(test_context_t), intent(inout) :: ctx
-      character(len=*), parameter :: path = "data/reference/physical_set.dat"
-      real(wp), parameter :: tolerance = 1.0e-10_wp
-      integer, parameter :: methods(5) = [system_auto, system_magnus4, system_magnus6, system_rk, system_gsl]
-      type(equations_system_t) :: column
-      type(error_t), allocatable :: error
-      type(system_form_t) :: form
-      type(system_nodes_t) :: nodes
-      type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
-      character(len=1024), allocatable :: lines(:)
-      real(wp) :: row(17), scale, d_trace, d_lambda, worst_trace(size(methods)), worst_lambda(size(methods))
-      complex(wp) :: reference(6), computed(6)
-      integer :: k, m, j, ios, set, n_points, n_stable
+   !> Bolotin's damped column of 3 modes as its user writes it (set 3 of
+   !> data/reference/physical_set.dat): M x'' + C x' + (W − (P0 + P1 cos Ωt) S) x = 0 over (Ω, P1).
+   subroutine bolotin_column(column, error)
+      type(equations_system_t), intent(out) :: column
+      type(error_t), allocatable, intent(out) :: error
       call column%set_values("n", [3.0_wp], error)
       call column%set_text("matrices", "W = [1, 0, 0; 0, 16, 0; 0, 0, 81], S = [1, 0.3, 0.1; 0.3, 4, 0.4; "// &
                            "0.1, 0.4, 9], Z = [1, 0, 0; 0, 4, 0; 0, 0, 9]", error)
@@ -350,25 +334,77 @@ contains
       call column%set_text("alpha", "Om", error)
       call column%set_text("beta", "P1", error)
       call column%check_values(error)
+   end subroutine bolotin_column
+
+   !> The rows of set 3 of data/reference/physical_set.dat, (17, points): set, Ω, P1, the trace,
+   !> the six multipliers (re, im) and the reference's own error; a row that does not read
+   !> fails a check.
+   function column_reference(ctx) result(rows)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), allocatable :: rows(:, :)
+      character(len=1024), allocatable :: lines(:)
+      real(wp) :: row(17)
+      integer :: k, ios, set
+      lines = read_lines("data/reference/physical_set.dat")
+      allocate (rows(17, 0))
+      do k = 1, size(lines)
+         if (len_trim(lines(k)) == 0 .or. lines(k)(1:1) == "#") cycle
+         read (lines(k), *, iostat=ios) set
+         if (ios /= 0 .or. set /= 3) cycle
+         read (lines(k), *, iostat=ios) row
+         call check(ctx, ios == 0, "reads "//trim(lines(k)(1:40)))
+         if (ios /= 0) cycle
+         rows = reshape([rows, row], [17, size(rows, 2) + 1])
+      end do
+   end function column_reference
+
+   !> The worst of the six reference multipliers' distance to the nearest computed one (the
+   !> two sets equal as multisets), relative to max(1, |λ|).
+   pure real(wp) function multiplier_error(f, reference) result(worst)
+      type(system_floquet_t), intent(in) :: f
+      complex(wp), intent(in) :: reference(:)
+      complex(wp) :: computed(size(f%multipliers))
+      integer :: j
+      computed = f%multipliers*exp(f%log_scale)
+      worst = 0.0_wp
+      do j = 1, size(reference)
+         worst = max(worst, minval(abs(computed - reference(j)))/max(1.0_wp, abs(reference(j))))
+      end do
+   end function multiplier_error
+
+   !> Set 3 of data/reference/physical_set.dat: a damped column of 3 modes written as its
+   !> user writes it, M x'' + C x' + (W − (P0 + P1 cos Ωt) S) x = 0 with named matrices, over
+   !> (Ω, P1) at 50 points near the simple and combination resonances: the trace and every
+   !> multiplier (all six, as complex numbers, and the largest modulus) against the
+   !> monodromy of the physical system by Taylor series in 45 digits, by every system method
+   !> at 1e-10, status 0. The damping (π/Ω) C changes from row to row.
+   subroutine column_against_reference(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      real(wp), parameter :: tolerance = 1.0e-10_wp
+      integer, parameter :: methods(5) = [system_auto, system_magnus4, system_magnus6, system_rk, system_gsl]
+      type(equations_system_t) :: column
+      type(error_t), allocatable :: error
+      type(system_form_t) :: form
+      type(system_nodes_t) :: nodes
+      type(system_monodromy_t) :: r
+      type(system_floquet_t) :: f
+      real(wp), allocatable :: rows(:, :)
+      real(wp) :: row(17), scale, d_trace, d_lambda, worst_trace(size(methods)), worst_lambda(size(methods))
+      complex(wp) :: reference(6)
+      integer :: k, m, j, n_points, n_stable
+      call bolotin_column(column, error)
       call check(ctx, .not. allocated(error), "the column is taken")
       if (allocated(error)) then
          call check(ctx, .false., error%message)
          return
       end if
-      lines = read_lines(path)
-      n_points = 0
+      rows = column_reference(ctx)
+      n_points = size(rows, 2)
       n_stable = 0
       worst_trace = 0.0_wp
       worst_lambda = 0.0_wp
-      do k = 1, size(lines)
-         if (len_trim(lines(k)) == 0 .or. lines(k)(1:1) == "#") cycle
-         read (lines(k), *, iostat=ios) set
-         if (ios /= 0 .or. set /= 3) cycle
-         ! set Om P1 trace re1 im1 ... re6 im6 ref_error
-         read (lines(k), *, iostat=ios) row
-         call check(ctx, ios == 0, "reads "//trim(lines(k)(1:40)))
-         if (ios /= 0) cycle
-         n_points = n_points + 1
+      do k = 1, n_points
+         row = rows(:, k)
          reference = [(cmplx(row(5 + 2*j), row(6 + 2*j), wp), j=0, 5)]
          call prepare_system(column, 0.0_wp, form, error, alpha=row(2))
          call check(ctx, .not. allocated(error), "prepared at Om = "//real_text(row(2)))
@@ -387,11 +423,7 @@ contains
                        real_text(d_trace)//") at Om = "//real_text(row(2))//", P1 = "//real_text(row(3)))
             ! every multiplier: the nearest computed one (the sets equal as multisets), within the
             ! tolerance relative to max(1, |lambda|)
-            computed = f%multipliers*exp(f%log_scale)
-            d_lambda = 0.0_wp
-            do j = 1, 6
-               d_lambda = max(d_lambda, minval(abs(computed - reference(j)))/max(1.0_wp, abs(reference(j))))
-            end do
+            d_lambda = multiplier_error(f, reference)
             worst_lambda(m) = max(worst_lambda(m), d_lambda)
             call check(ctx, d_lambda <= tolerance, system_method_name(methods(m))//": every multiplier ("// &
                        real_text(d_lambda)//") at Om = "//real_text(row(2))//", P1 = "//real_text(row(3)))
@@ -414,7 +446,6 @@ contains
    !> form's (method auto), all six exponents reported, and Liouville's check met.
    subroutine first_order_column(ctx)
       type(test_context_t), intent(inout) :: ctx
-      character(len=*), parameter :: path = "data/reference/physical_set.dat"
       real(wp), parameter :: tolerance = 1.0e-10_wp
       integer, parameter :: methods(5) = [system_auto, system_magnus4, system_magnus6, system_rk, system_gsl]
       type(equations_system_t) :: first, second
@@ -423,10 +454,10 @@ contains
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r, r2
       type(system_floquet_t) :: f, f2
-      character(len=1024), allocatable :: lines(:)
+      real(wp), allocatable :: rows(:, :)
       real(wp) :: row(17), scale, d_lambda, worst(size(methods))
-      complex(wp) :: reference(6), computed(6)
-      integer :: k, m, j, ios, set, n_points, n_verdicts
+      complex(wp) :: reference(6)
+      integer :: k, m, j, n_points, n_verdicts
       call first%set_values("n", [6.0_wp], error)
       call first%set_text("matrices", "U = [0, 0, 0, 1, 0, 0; 0, 0, 0, 0, 1, 0; 0, 0, 0, 0, 0, 1; "// &
                           "-1, 0, 0, -2*zeta, 0, 0; 0, -16, 0, 0, -8*zeta, 0; 0, 0, -81, 0, 0, -18*zeta], "// &
@@ -444,29 +475,15 @@ contains
          return
       end if
       call check(ctx, first%first_order() .and. first%dof() == 6, "first-order, six states")
-      call second%set_values("n", [3.0_wp], error)
-      call second%set_text("matrices", "W = [1, 0, 0; 0, 16, 0; 0, 0, 81], S = [1, 0.3, 0.1; 0.3, 4, 0.4; "// &
-                           "0.1, 0.4, 9], Z = [1, 0, 0; 0, 4, 0; 0, 0, 9]", error)
-      call second%set_text("parameters", "P0 = 0.3, P1 = 0, Om = 2, zeta = 0.01", error)
-      call second%set_text("stiffness", "W - (P0 + P1*cos(Om*t))*S", error)
-      call second%set_text("damping", "2*zeta*Z", error)
-      call second%set_text("frequency", "Om", error)
-      call second%set_text("alpha", "Om", error)
-      call second%set_text("beta", "P1", error)
-      call second%check_values(error)
+      call bolotin_column(second, error)
       call check(ctx, .not. allocated(error), "the second-order column is taken")
       if (allocated(error)) return
-      lines = read_lines(path)
-      n_points = 0
+      rows = column_reference(ctx)
+      n_points = size(rows, 2)
       n_verdicts = 0
       worst = 0.0_wp
-      do k = 1, size(lines)
-         if (len_trim(lines(k)) == 0 .or. lines(k)(1:1) == "#") cycle
-         read (lines(k), *, iostat=ios) set
-         if (ios /= 0 .or. set /= 3) cycle
-         read (lines(k), *, iostat=ios) row
-         if (ios /= 0) cycle
-         n_points = n_points + 1
+      do k = 1, n_points
+         row = rows(:, k)
          reference = [(cmplx(row(5 + 2*j), row(6 + 2*j), wp), j=0, 5)]
          call prepare_system(first, 0.0_wp, form, error, alpha=row(2))
          call check(ctx, .not. allocated(error) .and. form%states == 6, "prepared, 6 states at Om = "// &
@@ -484,11 +501,7 @@ contains
                        ": status 0 at Om = "//real_text(row(2))//", P1 = "//real_text(row(3)))
             if (allocated(error) .or. r%status /= 0) cycle
             call check(ctx, size(f%multipliers) == 6 .and. size(f%exponents) == 6, "six multipliers and exponents")
-            computed = f%multipliers*exp(f%log_scale)
-            d_lambda = 0.0_wp
-            do j = 1, 6
-               d_lambda = max(d_lambda, minval(abs(computed - reference(j)))/max(1.0_wp, abs(reference(j))))
-            end do
+            d_lambda = multiplier_error(f, reference)
             worst(m) = max(worst(m), d_lambda)
             call check(ctx, d_lambda <= tolerance, system_method_name(methods(m))//": every multiplier ("// &
                        real_text(d_lambda)//") at Om = "//real_text(row(2))//", P1 = "//real_text(row(3)))
