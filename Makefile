@@ -9,7 +9,7 @@
 #   make test-sanitize  tests again built with AddressSanitizer and UndefinedBehaviorSanitizer
 #                       (any report fails the run, leaks included; scripts/sanitize/)
 #   make fuzz           300 mutated scenes, 90 mutated points files, 140 mutated templates, 200
-#                       system scenes with mutated matrix files, 60 damaged checkpoints resumed and
+#                       system scenes with mutated matrix files, 80 damaged checkpoints resumed and
 #                       48 checkpoints met by system scenes or with a FIFO, directory or link for a
 #                       member, on the normal and the trap build (scripts/fuzz.py)
 #   make check-memory   valgrind memcheck on small scenes of every task

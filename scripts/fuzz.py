@@ -40,8 +40,8 @@ Two further families follow, with the same acceptance rules:
     or a repeat must be refused (exit 2) with a message naming `&system` and the variable (the
     group for a second &system); FIFOs and devices must not block the run.
 
-A last family damages checkpoints (--checkpoint-count): a chart, a points run and a
-Lyapunov map, each killed with SIGKILL while the test hook HILLSTAB_TEST_PAUSE_AFTER_UNITS
+A last family damages checkpoints (--checkpoint-count): a chart (text and binary), a points
+run and a Lyapunov map, each killed with SIGKILL while the test hook HILLSTAB_TEST_PAUSE_AFTER_UNITS
 holds it mid-run (--checkpoint-interval 0), leave checkpoints; a copy of one gets one to
 three seeded mutations of its `data` (bytes flipped, inserted or deleted among the recorded
 ones, a digit changed, a new line planted, the header edited, cut short, bytes appended
@@ -53,7 +53,7 @@ file; no temporary file left, in time. A run without --resume then writes the un
 file. Then (--foreign-checkpoint-count, a seeded stream of its own) a copy of such a checkpoint,
 intact, damaged, without its state, or with its `data` or `state` replaced by a FIFO, a
 directory or a symbolic link, is met by the system scene of the same output (a system run
-keeps no checkpoint) or by the scalar scene, with and without --resume: a member that is not
+cannot continue a scalar checkpoint) or by the scalar scene, with and without --resume: a member that is not
 a regular file is refused (exit 2, one message naming the checkpoint, the checkpoint kept as
 planted, no output) and never blocks; a system run discards any other checkpoint with a note
 (exit 0, its file whole, the checkpoint gone, so that no later --resume continues it) and
@@ -63,7 +63,7 @@ With --signals, a chart is first interrupted by SIGINT, SIGTERM and SIGHUP: each
 exit 128 + signal, remove its temporary file and keep the old output.
 
 usage: scripts/fuzz.py --hillstab BUILD/app/hillstab [--count 300] [--points-count 90]
-                       [--template-count 140] [--system-count 200] [--checkpoint-count 60]
+                       [--template-count 140] [--system-count 200] [--checkpoint-count 80]
                        [--foreign-checkpoint-count 48] [--seed 7]
                        [--timeout 30] [--signals]
 Exit status 0 when every scene passes; the failures are listed with the scene text saved
@@ -712,9 +712,16 @@ CHECKPOINT_SCENES = [
     ("points", "&scene task='points', method='magnus6', output='OUT' /\n&points file='data/points/fig4.dat' /\n", 2),
     ("lyapunov", "&scene task='lyapunov', output='OUT' /\n&series phi0=0.017, periods=3 /\n"
      "&lyapunov lanes=1, early_stop=.false. /\n&chart n_alpha=6, n_beta=12 /\n", 3),
+    ("binary", "&scene method='formula', format='binary', output='OUT' /\n&chart n_alpha=24, n_beta=40 /\n", 9),
 ]
+
+
+def checkpoint_file(name):
+    """The output of the checkpoint scene `name`, under ck/ (a binary chart's is .bin)."""
+    return "binary_chart.bin" if name == "binary" else "%s_%s.dat" % (name, name)
+
 #: system scenes writing the output of the checkpoint fixture of the same name (a system run
-#: keeps no checkpoint: it meets the checkpoint of another kind of problem)
+#: meets the checkpoint of another kind of problem)
 SYSTEM_PAIR = ("&system n = 2, mass = 1.0, 0.0, 0.0, 0.25, b = 2.0, -1.0, -1.0, 1.5, "
                "cos = -1.0, 0.0, 0.0, -0.5 /\n")
 CHECKPOINT_SYSTEM_SCENES = {
@@ -845,7 +852,7 @@ def check_checkpoints(hillstab, work, count, seed, timeout, system_count=0):
         scene = os.path.join(base, name + ".nml")
         with open(scene, "w") as f:
             f.write(text.replace("OUT", "ck/" + name))
-        output = os.path.join(work, "ck", "%s_%s.dat" % (name, name))
+        output = os.path.join(work, "ck", checkpoint_file(name))
         subprocess.run([hillstab, "--quiet", scene], cwd=work, check=True, stderr=subprocess.DEVNULL)
         with open(output, "rb") as f:
             reference = f.read()
@@ -900,7 +907,7 @@ def check_checkpoints(hillstab, work, count, seed, timeout, system_count=0):
                 if f.read() != reference:
                     problems.append(label + ": exit 0 with a file that differs from the uninterrupted run's")
         elif status == 2:
-            if len(lines) != 1 or "checkpoint 'ck/%s_%s.dat.checkpoint'" % (name, name) not in lines[0]:
+            if len(lines) != 1 or "checkpoint 'ck/%s.checkpoint'" % checkpoint_file(name) not in lines[0]:
                 problems.append(label + ": exit 2 without one message naming the checkpoint: " + " | ".join(lines[:3]))
             if os.path.exists(output):
                 problems.append(label + ": exit 2 with an output file")
@@ -987,7 +994,7 @@ def check_foreign_checkpoints(hillstab, work, fixtures, count, seed, timeout):
         lines = [l for l in notes if not l.startswith("hillstab: discarded ") and "no checkpoint of" not in l and
                  ": this run keeps no checkpoint (only" not in l and "cannot be resumed: its state is not one" not in l
                  and not l.startswith("hillstab: resuming ")]
-        named = "checkpoint 'ck/%s_%s.dat.checkpoint'" % (name, name)
+        named = "checkpoint 'ck/%s.checkpoint'" % checkpoint_file(name)
         member_planted = damage in MEMBER_PLANTS
         if status == 2:
             if len(lines) != 1 or named not in lines[0]:
@@ -1122,7 +1129,7 @@ def main():
     parser.add_argument("--template-count", type=int, default=140, help="number of mutated templates")
     parser.add_argument("--system-count", type=int, default=200,
                         help="number of system scenes with mutated matrix files, routes or repeats")
-    parser.add_argument("--checkpoint-count", type=int, default=60, help="number of damaged checkpoints resumed")
+    parser.add_argument("--checkpoint-count", type=int, default=80, help="number of damaged checkpoints resumed")
     parser.add_argument("--foreign-checkpoint-count", type=int, default=48,
                         help="number of checkpoints met by a system scene or with a member that is not a file")
     parser.add_argument("--seed", type=int, default=7, help="random seed (same seed, same scenes)")

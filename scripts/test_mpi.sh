@@ -3,14 +3,14 @@
 # with CMake (-DHILLSTAB_MPI=ON), then checks against the single-process program:
 #  - np = 1, 2, 3 write the same file as hillstab (charts with many and few rows, damped,
 #    a points list, a Lyapunov map, a non-distributed task, a system's chart and points, a system of one
-#    equation's chart);
+#    equation's chart; binary charts and points lists, scalar and system);
 #  - bad input (unknown variable, unwritable output) gives exit 2 on every rank, no hang,
 #    no file; a failing point is written as hillstab writes it (status 2, placeholders),
 #    with hillstab's message and exit 3 on every rank;
 #  - faults: ranks reading different scenes (exit 2, no file); SIGTERM to rank 0 and to
 #    mpirun, kill -9 of a worker, a file-size limit: no hang, no temporary file, the old
 #    output kept;
-#  - resume: a chart and a Lyapunov map killed with SIGKILL (rank 0) early, midway and late,
+#  - resume: a chart (text and binary) and a Lyapunov map killed with SIGKILL (rank 0) early, midway and late,
 #    resumed with another number of ranks or by hillstab (and a hillstab run resumed by
 #    hillstab_mpi): the file of an uninterrupted run, no checkpoint, no temporary file left;
 #    a checkpoint of another scene refused (exit 2 on every rank, one message); --resume
@@ -84,16 +84,27 @@ printf '%s\n' "&scene task='points', model='system', method='rk', tolerance=1e-9
 printf '%s\n' "&scene task='chart', model='equations', output='$work/one' /" \
    "&equations n = 1, parameters = 'g = 9.81, l = 0.2, kappa = 0.2, A = 0.005, w = 314.16', stiffness = '-g/l + A*w^2/l*cos(w*t)', damping = 'kappa', frequency = 'w', alpha = 'w', beta = 'A' /" \
    "&chart alpha_min=60, alpha_max=700, n_alpha=19, beta_min=0, beta_max=0.1, n_beta=27 /" >"$work/one.nml"
-for name in many:chart few:chart pts:points coef:coefficient lyap:lyapunov sys:chart syspts:points one:chart; do
-   scene=${name%%:*}
-   task=${name##*:}
-   file="$work/${scene}_${task}.dat"
+# the same in binary (format = 'binary': the records of every unit, in order)
+printf '%s\n' "&scene task='chart', format='binary', output='$work/bmany' /" \
+   "&chart alpha_min=0, alpha_max=9.8, n_alpha=37, beta_min=-2, beta_max=12, n_beta=53 /" >"$work/bmany.nml"
+printf '%s\n' "&scene task='chart', epsilon=0.3, format='binary', columns='alpha beta stable', output='$work/bfew' /" \
+   "&chart alpha_min=4, alpha_max=9.7, n_alpha=3, beta_min=-2, beta_max=12, n_beta=401 /" >"$work/bfew.nml"
+printf '%s\n' "&scene task='points', method='magnus6', format='binary', output='$work/bpts' /" \
+   "&points file='$work/points.dat' /" >"$work/bpts.nml"
+printf '%s\n' "&scene task='chart', model='system', epsilon=0.02, format='binary', output='$work/bsys' /" "$sysgroup" \
+   "&chart alpha_min=0, alpha_max=1.2, n_alpha=23, beta_min=0, beta_max=3, n_beta=31 /" >"$work/bsys.nml"
+printf '%s\n' "&scene task='points', model='system', method='rk', tolerance=1e-9, format='binary', output='$work/bsyspts' /" \
+   "$sysgroup" "&points file='$work/syspoints.dat' /" >"$work/bsyspts.nml"
+for name in many:chart few:chart pts:points coef:coefficient lyap:lyapunov sys:chart syspts:points one:chart \
+   bmany:chart:bin bfew:chart:bin bpts:points:bin bsys:chart:bin bsyspts:points:bin; do
+   IFS=: read -r scene task ext <<<"$name"
+   file="$work/${scene}_${task}.${ext:-dat}"
    "$serial" -q "$work/$scene.nml" && mv "$file" "$work/$scene.serial"
    for np in 1 2 3; do
       rm -f "$file"
       run_mpi "$np" "$mpi" -q "$work/$scene.nml"
       rc=$?
-      check "${scene}_np${np}_same_file" '[ $rc -eq 0 ] && cmp -s "$file" "$work/$scene.serial"'
+      check "${scene}_np${np}_same_file" '[ $rc -eq 0 ] && cmp -s "$file" "$work/$scene.serial" && { [ -z "$ext" ] || grep -aq "format: binary" "$file"; }'
    done
 done
 # the data lines alone are identical too (the header is, since the scene file is the same)
@@ -196,20 +207,23 @@ check "file_size_limit_message_no_hang" '[ $big_rc = 2 ] && grep -q "File too la
 # UNITS units, then resumed; the file must be the uninterrupted one
 printf '%s\n' "&scene task='chart', method='magnus6', tolerance=1e-12, output='$work/rc' /" \
    "&chart alpha_min=0, alpha_max=9.8, n_alpha=24, beta_min=-2, beta_max=12, n_beta=300 /" >"$work/rc.nml"
+printf '%s\n' "&scene task='chart', method='magnus6', tolerance=1e-12, format='binary', output='$work/rb' /" \
+   "&chart alpha_min=0, alpha_max=9.8, n_alpha=24, beta_min=-2, beta_max=12, n_beta=300 /" >"$work/rb.nml"
 printf '%s\n' "&scene task='lyapunov', output='$work/rl' /" "&series phi0=0.017, periods=250 /" \
    "&lyapunov lanes=1, early_stop=.false. /" \
    "&chart alpha_min=0.5, alpha_max=9.5, n_alpha=8, beta_min=0.5, beta_max=9.5, n_beta=25 /" >"$work/rl.nml"
 "$serial" -q "$work/rc.nml" 2>/dev/null && mv "$work/rc_chart.dat" "$work/rc.serial"
+"$serial" -q "$work/rb.nml" 2>/dev/null && mv "$work/rb_chart.bin" "$work/rb.serial"
 "$serial" -q "$work/rl.nml" 2>/dev/null && mv "$work/rl_lyapunov.dat" "$work/rl.serial"
-# stop_at SCENE TASK UNITS SIGNAL WHO: run SCENE (WHO: mpi or mpirun, 2 ranks; serial) with
+# stop_at SCENE TASK UNITS SIGNAL WHO [EXT]: run SCENE (its file's extension EXT, dat by default) (WHO: mpi or mpirun, 2 ranks; serial) with
 # the test hook HILLSTAB_TEST_PAUSE_AFTER_UNITS=UNITS (the writer waits once the checkpoint
 # records UNITS units) and send SIGNAL to rank 0 (WHO mpi), to mpirun (WHO mpirun) or to
 # hillstab once the checkpoint holds UNITS units; sets rc and ck, and reached (1: the signal
 # was sent while the run went on; 0: the run ended or ran two minutes first, said on stdout)
 stop_at() {
-   local scene=$1 task=$2 units=$3 sig=$4 who=$5 pid n u target
-   ck="$work/${scene}_${task}.dat.checkpoint"
-   rm -rf "$ck" "$work/${scene}_${task}.dat"
+   local scene=$1 task=$2 units=$3 sig=$4 who=$5 ext=${6:-dat} pid n u target
+   ck="$work/${scene}_${task}.$ext.checkpoint"
+   rm -rf "$ck" "$work/${scene}_${task}.$ext"
    export HILLSTAB_TEST_PAUSE_AFTER_UNITS=$units
    if [ "$who" != serial ]; then
       timeout 120 mpirun --oversubscribe -x HILLSTAB_TEST_PAUSE_AFTER_UNITS -np 2 "$mpi" -q --checkpoint-interval 0 \
@@ -253,20 +267,23 @@ resume_by() {
    rc=$?
 }
 for case in rc:chart:2:mpi:np3 rc:chart:12:mpi:serial rc:chart:20:mpi:np2 rc:chart:10:serial:np2 \
-   rl:lyapunov:2:mpi:np2 rl:lyapunov:8:mpi:serial rl:lyapunov:12:mpi:np3; do
-   IFS=: read -r scene task units who how <<<"$case"
+   rl:lyapunov:2:mpi:np2 rl:lyapunov:8:mpi:serial rl:lyapunov:12:mpi:np3 \
+   rb:chart:3:mpi:np3:bin rb:chart:11:mpi:serial:bin rb:chart:17:serial:np2:bin; do
+   IFS=: read -r scene task units who how ext <<<"$case"
+   ext=${ext:-dat}
    name="resume_${task}_${who}_killed_after_${units}_by_$how"
-   stop_at "$scene" "$task" "$units" KILL "$who"
+   [ "$ext" = dat ] || name="resume_binary_${task}_${who}_killed_after_${units}_by_$how"
+   stop_at "$scene" "$task" "$units" KILL "$who" "$ext"
    if [ $reached = 0 ]; then
       fail "${name}_killed_with_checkpoint"
       continue
    fi
    done_units=$(sed -n 's/^units = \([0-9]*\) .*/\1/p' "$ck/state" 2>/dev/null)
    bytes=$(sed -n 's/^bytes = //p' "$ck/state" 2>/dev/null)
-   check "${name}_killed_with_checkpoint" '[ $rc != 0 ] && [ $rc != 124 ] && [ "${done_units:-0}" -ge $units ] && [ "${bytes:-0}" -le $(stat -c %s "$ck/data") ] && [ ! -e "$work/${scene}_${task}.dat" ]'
+   check "${name}_killed_with_checkpoint" '[ $rc != 0 ] && [ $rc != 124 ] && [ "${done_units:-0}" -ge $units ] && [ "${bytes:-0}" -le $(stat -c %s "$ck/data") ] && [ ! -e "$work/${scene}_${task}.$ext" ]'
    resume_by "$scene" "$task" "$how"
-   check "${name}_same_file" '[ $rc = 0 ] && cmp -s "$work/${scene}_${task}.dat" "$work/$scene.serial" && grep -q "resuming" "$work/resume.err"'
-   check "${name}_nothing_left" '[ ! -e "$ck" ] && [ -z "$(ls "$work" | grep "${scene}_${task}.dat.part")" ]'
+   check "${name}_same_file" '[ $rc = 0 ] && cmp -s "$work/${scene}_${task}.$ext" "$work/$scene.serial" && grep -q "resuming" "$work/resume.err"'
+   check "${name}_nothing_left" '[ ! -e "$ck" ] && [ -z "$(ls "$work" | grep "${scene}_${task}.$ext.part")" ]'
 done
 # a checkpoint of another scene: exit 2 on every rank, one message naming the variable
 # (beside the note on a temporary file the killed rank 0 may have left, which the run removes)

@@ -1,6 +1,6 @@
 !> Tests of checkpoints and `--resume` (hillstab_batch_output_checkpoint, hillstab_batch_run_units): the
 !> hillstab program (built beside this test program) is killed with SIGKILL early, midway and
-!> late in a chart and a Lyapunov map, and `--resume` must then write the file an
+!> late in a chart (text and binary) and a Lyapunov map, and `--resume` must then write the file an
 !> uninterrupted run writes, byte for byte, computing only what is missing, and leave no
 !> checkpoint and no temporary file; SIGTERM keeps the checkpoint and says how to resume; a
 !> checkpoint of another scene is refused (exit 2) naming the difference; `--resume` without
@@ -58,7 +58,7 @@ contains
          new_unittest("planted_links_not_followed", planted_links_not_followed), &
          new_unittest("second_run_refused", second_run_refused), &
          new_unittest("write_error_keeps_checkpoint", write_error_keeps_checkpoint), &
-         new_unittest("binary_not_resumed", binary_not_resumed), &
+         new_unittest("binary_resumed_after_kill", binary_resumed_after_kill), &
          new_unittest("scene_differences", scene_differences), &
          new_unittest("long_output_names", long_output_names), &
          new_unittest("planted_members_kept", planted_members_kept), &
@@ -184,15 +184,18 @@ contains
       directory_exists = shell("test -d '"//path//"'") == 0
    end function directory_exists
 
-   !> Write `lines` as the scene of `f`, run it uninterrupted, keep its file as the reference.
-   subroutine make_fixture(f, name, lines, task, n_units)
+   !> Write `lines` as the scene of `f`, run it uninterrupted, keep its file as the reference
+   !> (`extension` of the file: ".dat" by default).
+   subroutine make_fixture(f, name, lines, task, n_units, extension)
       type(fixture_t), intent(inout) :: f
       character(len=*), intent(in) :: name, lines(:), task
       integer, intent(in) :: n_units
+      character(len=*), intent(in), optional :: extension
       integer :: status
       if (f%ready) return
       f%scene = scratch_prefix(name)//".nml"
       f%output = scratch_prefix(name)//"_"//task//".dat"
+      if (present(extension)) f%output = scratch_prefix(name)//"_"//task//extension
       f%reference = scratch_prefix(name)//".reference"
       f%n_units = n_units
       call write_file(f%scene, lines)
@@ -902,27 +905,44 @@ contains
       call delete_file(scene)
    end subroutine write_error_keeps_checkpoint
 
-   !> `--resume` on a chart written in binary (which keeps no checkpoint) is refused, naming
-   !> `&scene format`; without `--resume` it runs.
-   subroutine binary_not_resumed(ctx)
+   !> Binary files keep checkpoints as text files do: a chart (24 rows of 300 points) killed
+   !> after 1, 12 (with a partial record after the recorded bytes) and 20 rows, and a
+   !> system's points list (320 points, 5 units of 64) killed after 2 units, resumed: the
+   !> files of the uninterrupted runs, byte for byte.
+   subroutine binary_resumed_after_kill(ctx)
       type(test_context_t), intent(inout) :: ctx
-      character(len=:), allocatable :: prefix
-      type(error_t), allocatable :: error
-      prefix = scratch_prefix("ck_binary")
-      call write_file(prefix//".nml", [padded("&scene method='formula', format='binary', output='"//prefix//"' /"), &
-                                       padded("&chart n_alpha=3, n_beta=4 /")])
-      call run_scene_file(prefix//".nml", .true., error, options=checkpoint_options_t(resume=.true.))
-      call check(ctx, allocated(error), "refused")
-      if (allocated(error)) then
-         call check(ctx, exit_status(error) == 2, "exit 2")
-         call check(ctx, contains_text(error%message, prefix//".nml: &scene: format: 'binary'"), error%message)
+      type(fixture_t) :: binary_chart, binary_points
+      character(len=40) :: lines(320)
+      character(len=:), allocatable :: points
+      integer :: k
+      call make_fixture(binary_chart, "ck_bin", [ &
+         padded("&scene task='chart', method='magnus6', tolerance=1e-12, format='binary', output='"// &
+                scratch_prefix("ck_bin")//"' /"), &
+         padded("&chart alpha_min=0, alpha_max=9.8, n_alpha=24, beta_min=-2, beta_max=12, n_beta=300 /")], "chart", 24, &
+         ".bin")
+      call check(ctx, binary_chart%ready, "the uninterrupted binary chart ran: "//program_path())
+      if (binary_chart%ready) then
+         call check(ctx, shell("grep -q 'format: binary' '"//binary_chart%reference//"'") == 0, "a binary file")
+         call kill_and_resume(ctx, binary_chart, 1, .false.)
+         call kill_and_resume(ctx, binary_chart, 12, .true.)
+         call kill_and_resume(ctx, binary_chart, 20, .false.)
       end if
-      call check(ctx, .not. file_exists(prefix//"_chart.bin"), "no file")
-      call run_scene_file(prefix//".nml", .true., error, options=checkpoint_options_t())
-      call check(ctx, .not. allocated(error) .and. file_exists(prefix//"_chart.bin"), "runs without --resume")
-      call delete_file(prefix//"_chart.bin")
-      call delete_file(prefix//".nml")
-   end subroutine binary_not_resumed
+      call release_fixture(binary_chart)
+      points = scratch_prefix("ck_bin_points")//".dat"
+      do k = 1, size(lines)
+         write (lines(k), '(f8.4,1x,f8.4)') 1.2_wp*mod(7*k, 23)/23.0_wp, 3.0_wp*(k - 1)/size(lines)
+      end do
+      call write_file(points, lines)
+      call make_fixture(binary_points, "ck_bin_pts", [ &
+         padded("&scene task='points', model='system', method='rk', tolerance=1e-9, format='binary', output='"// &
+                scratch_prefix("ck_bin_pts")//"' /"), &
+         padded("&system n = 2, b = 1.0, 0.0, 0.0, 16.0, cos = -1.0, -0.6, -0.6, -4.0, sin = 0.0, 0.3, 0.3, 0.5 /"), &
+         padded("&points file='"//points//"' /")], "points", 5, ".bin")
+      call check(ctx, binary_points%ready, "the uninterrupted binary system points ran")
+      if (binary_points%ready) call kill_and_resume(ctx, binary_points, 2, .true.)
+      call release_fixture(binary_points)
+      call delete_file(points)
+   end subroutine binary_resumed_after_kill
 
    !> The first difference between two effective scenes, by group and variable.
    subroutine scene_differences(ctx)

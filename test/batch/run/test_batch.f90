@@ -2,7 +2,8 @@
 !> text runs: its file equals the one the task's own loop writes (same data lines, same
 !> header apart from the output name) for charts
 !> with few and many rows and for points lists, also when the units are computed in
-!> reverse order and written in order; the units cover every point once; a failing
+!> reverse order and written in order; binary files (charts, points, a system's chart and
+!> points) byte for byte those of the task's own loop; the units cover every point once; a failing
 !> point is written with its status and reported with the serial message; exit statuses.
 module test_batch
    use hillstab_core_kinds, only: wp, int64
@@ -32,6 +33,7 @@ contains
          new_unittest("system_chart_equals_serial", system_chart_equals_serial), &
          new_unittest("system_points_equal_serial", system_points_equal_serial), &
          new_unittest("system_units_in_any_order", system_units_in_any_order), &
+         new_unittest("binary_equals_serial", binary_equals_serial), &
          new_unittest("units_in_any_order", units_in_any_order), &
          new_unittest("units_cover_points", units_cover_points), &
          new_unittest("failing_point", failing_point), &
@@ -275,6 +277,145 @@ contains
       call delete_file(output_path(serial))
       call delete_file(output_path(scene))
    end subroutine units_in_any_order
+
+   !> Binary files written by the driver are those of the task's own loop byte for byte
+   !> (the header names its own file): scalar charts with few rows (chunks of a row in
+   !> parallel) and many (rows in parallel), with every column and with the verdict only, a
+   !> damped one; a points list; a system's chart, damped and not, and points list; and the
+   !> units of a scalar and a system chart computed last to first, written in order. The
+   !> records after the header are as many as the points times the columns.
+   subroutine binary_equals_serial(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(scene_t) :: scene
+      character(len=:), allocatable :: points, system_points
+      character(len=40) :: lines(150)
+      integer :: k
+      call scene_from("bin_few", [padded("&scene task='chart', format='binary', output='"//scratch_prefix("bfew")// &
+         "' /"), padded("&chart alpha_min=3, alpha_max=9.8, n_alpha=2, beta_min=-2, beta_max=12, n_beta=301 /")], scene)
+      call compare_binary(ctx, scene, "binary chart, 2 rows", .false.)
+      call scene_from("bin_many", [padded("&scene task='chart', epsilon=0.2, format='binary', output='"// &
+         scratch_prefix("bmany")//"' /"), &
+         padded("&chart alpha_min=0, alpha_max=9.8, n_alpha=40, beta_min=-2, beta_max=12, n_beta=41 /")], scene)
+      call compare_binary(ctx, scene, "damped binary chart, 40 rows", .false.)
+      call scene_from("bin_verdict", [padded("&scene task='chart', format='binary', columns='alpha beta stable', "// &
+         "output='"//scratch_prefix("bverdict")//"' /"), &
+         padded("&chart alpha_min=0, alpha_max=9.8, n_alpha=40, beta_min=-2, beta_max=12, n_beta=37 /")], scene)
+      call compare_binary(ctx, scene, "binary verdict chart, 40 rows", .false.)
+      call scene_from("bin_rev", [padded("&scene task='chart', format='binary', output='"//scratch_prefix("brev")// &
+         "' /"), padded("&chart alpha_min=1, alpha_max=9.5, n_alpha=9, beta_min=-1, beta_max=10, n_beta=23 /")], scene)
+      call compare_binary(ctx, scene, "binary chart, units last to first", .true.)
+      points = scratch_prefix("bin_points")//".dat"
+      system_points = scratch_prefix("bin_sys_points")//".dat"
+      do k = 1, size(lines)
+         write (lines(k), '(f8.4,1x,f8.4)') 9.8_wp*(k - 1)/size(lines), 12.0_wp - 14.0_wp*mod(7*k, 31)/31.0_wp
+      end do
+      call write_file(points, lines)
+      call scene_from("bin_pts", [padded("&scene task='points', format='binary', output='"//scratch_prefix("bpts")// &
+         "' /"), padded("&points file='"//points//"' /")], scene)
+      call compare_binary(ctx, scene, "binary points", .false.)
+      call scene_from("bin_sys_few", [padded("&scene task='chart', model='system', format='binary', output='"// &
+         scratch_prefix("bsys_few")//"' /"), system_group(), &
+         padded("&chart alpha_min=0, alpha_max=1.2, n_alpha=3, beta_min=0, beta_max=3, n_beta=41 /")], scene)
+      call compare_binary(ctx, scene, "binary system chart, 3 rows", .false.)
+      call scene_from("bin_sys_many", [padded("&scene task='chart', model='system', epsilon=0.05, format='binary', "// &
+         "method='magnus4', tolerance=1e-9, columns='alpha beta stable kind mu mu_2 status', output='"// &
+         scratch_prefix("bsys_many")//"' /"), system_group(), &
+         padded("&chart alpha_min=0, alpha_max=1.2, n_alpha=19, beta_min=0, beta_max=3, n_beta=13 /")], scene)
+      call compare_binary(ctx, scene, "damped binary system chart, 19 rows", .false.)
+      call scene_from("bin_sys_rev", [padded("&scene task='chart', model='system', format='binary', output='"// &
+         scratch_prefix("bsys_rev")//"' /"), system_group(), &
+         padded("&chart alpha_min=0.1, alpha_max=1.1, n_alpha=5, beta_min=0.2, beta_max=2.8, n_beta=7 /")], scene)
+      call compare_binary(ctx, scene, "binary system chart, units last to first", .true.)
+      do k = 1, size(lines)
+         write (lines(k), '(f8.4,1x,f8.4)') 1.2_wp*mod(3*k, 17)/17.0_wp, 3.0_wp*(k - 1)/size(lines)
+      end do
+      call write_file(system_points, lines)
+      call scene_from("bin_sys_pts", [padded("&scene task='points', model='system', format='binary', output='"// &
+         scratch_prefix("bsys_pts")//"' /"), system_group(), padded("&points file='"//system_points//"' /")], scene)
+      call compare_binary(ctx, scene, "binary system points", .false.)
+      call delete_file(points)
+      call delete_file(system_points)
+   end subroutine binary_equals_serial
+
+   !> Run the binary `scene` by its task's own loop and by the driver (`reverse`: units
+   !> computed last to first for three workers, then written in order); compare the files.
+   subroutine compare_binary(ctx, scene, label, reverse)
+      type(test_context_t), intent(inout) :: ctx
+      type(scene_t), intent(in) :: scene
+      character(len=*), intent(in) :: label
+      logical, intent(in) :: reverse
+      type(scene_t) :: serial, batched
+      type(batch_t) :: batch
+      type(batch_result_t), allocatable :: results(:)
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: a, b
+      integer(int64) :: skip, n_columns
+      integer :: unit, at, ios
+      serial = scene
+      serial%output = scene%output//"_own"
+      batched = scene
+      batched%output = scene%output//"_bat"
+      call serial%task%run(serial, .true., error)
+      call check(ctx, .not. allocated(error), label//": the task's own loop")
+      if (reverse) then
+         call batch_plan(batched, 3, batch)
+         allocate (results(batch%n_units))
+         do unit = batch%n_units, 1, -1
+            call batch_compute(batch, unit, results(unit))
+         end do
+         call batch_open(batch, .true., error)
+         do unit = 1, batch%n_units
+            if (allocated(error)) exit
+            call batch_write(batch, results(unit), error)
+         end do
+         if (allocated(error)) then
+            call batch_discard(batch)
+         else
+            call batch_commit(batch, error)
+         end if
+      else
+         call run_batch(batched, .true., error)
+      end if
+      call check(ctx, .not. allocated(error), label//": the driver")
+      a = file_bytes(output_path(serial))
+      b = file_bytes(output_path(batched))
+      call check(ctx, len(b) > 0 .and. index(b, "format: binary: after the first ") > 0, label//": a binary file")
+      call check(ctx, replace_text(a, serial%output, batched%output) == b, label//": the same bytes")
+      ! the records: points x columns float64 after the header's bytes
+      skip = -1
+      n_columns = -1
+      at = index(b, "format: binary: after the first ")
+      if (at > 0) read (b(at + 32:), *, iostat=ios) skip
+      at = index(b, " records of ")
+      if (at > 0) read (b(at + 12:), *, iostat=ios) n_columns
+      call check(ctx, skip > 0 .and. n_columns > 2 .and. len(b, int64) - skip == 8*n_columns*scene%task%point_count(), &
+                 label//": "//"the records of every point after the header")
+      call delete_file(output_path(serial))
+      call delete_file(output_path(batched))
+   end subroutine compare_binary
+
+   !> A file's bytes ("" when it cannot be read).
+   function file_bytes(path) result(bytes)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: bytes
+      integer(int64) :: n
+      integer :: unit, ios
+      logical :: exists
+      inquire (file=path, exist=exists, size=n)
+      if (.not. exists .or. n <= 0) then
+         bytes = ""
+         return
+      end if
+      allocate (character(len=n) :: bytes)
+      open (newunit=unit, file=path, access="stream", form="unformatted", action="read", status="old", iostat=ios)
+      if (ios /= 0) then
+         bytes = ""
+         return
+      end if
+      read (unit, iostat=ios) bytes
+      if (ios /= 0) bytes = ""
+      close (unit)
+   end function file_bytes
 
    !> The ranges of the units of a points list tile 1 … n without gaps or overlaps,
    !> for any number of workers; a chart has one unit per row.

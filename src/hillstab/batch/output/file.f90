@@ -47,7 +47,8 @@ module hillstab_batch_output_file
    implicit none
    private
    public :: output_file_t, open_output, commit_output, discard_output, finish_output, write_header, write_text
-   public :: write_records, joined_lines, join_lines, sync_output, lock_output, resume_output, temporary_prefix, &
+   public :: write_records, write_bytes, record_bytes, joined_lines, join_lines, sync_output, lock_output, &
+      resume_output, temporary_prefix, &
       digest_written, &
       claim_output
 
@@ -63,7 +64,7 @@ module hillstab_batch_output_file
       integer(int64) :: bytes = 0                    !! bytes written so far
       integer :: slot = 0                            !! hillstab_batch_output_signals handle
       logical :: binary = .false.                    !! stream file: text header, then raw records
-      !> keep the checksum of every byte written (text files: a run that keeps a checkpoint);
+      !> keep the checksum of every byte written (a run that keeps a checkpoint);
       !> it is brought up to date from the file when a checkpoint needs it (`digest_written`),
       !> so that a run that never makes one never reads its bytes twice
       logical :: digesting = .false.
@@ -532,6 +533,39 @@ contains
       if (allocated(file%failure)) call set_error(error, err_io, "cannot write '"//file%path//"': "// &
          file%failure//" (the file is left as it was)")
    end subroutine write_records
+   !> Write bytes as they are (no new line added): the records of a unit of work made by
+   !> `record_bytes` elsewhere (another thread, another MPI rank), in a binary file.
+   subroutine write_bytes(file, bytes, error)
+      type(output_file_t), intent(inout) :: file  !! the open output file
+      character(len=*), intent(in) :: bytes  !! the bytes
+      type(error_t), allocatable, intent(out) :: error  !! err_io when writing fails
+      integer(c_size_t) :: written
+      if (.not. allocated(file%failure)) then
+         if (.not. c_associated(file%stream)) then
+            file%failure = "the file is not open"
+         else if (len(bytes) > 0) then
+            call set_errno(0)
+            written = c_fwrite(bytes, 1_c_size_t, int(len(bytes), c_size_t), file%stream)
+            if (written /= int(len(bytes), c_size_t)) then
+               file%failure = errno_text()
+            else
+               file%bytes = file%bytes + len(bytes)
+            end if
+         end if
+      end if
+      if (allocated(file%failure)) call set_error(error, err_io, "cannot write '"//file%path//"': "// &
+         file%failure//" (the file is left as it was)")
+   end subroutine write_bytes
+
+   !> The bytes `write_records` writes for `values` (float64 in native order, column-major),
+   !> held in a character string: a unit's records travel as its text does.
+   pure subroutine record_bytes(values, bytes)
+      real(wp), intent(in) :: values(:, :)  !! (columns, records)
+      character(len=:), allocatable, intent(out) :: bytes  !! 8 size(values) bytes
+      allocate (character(len=(storage_size(values)/8)*size(values)) :: bytes)
+      if (size(values) > 0) bytes = transfer(values, bytes)
+   end subroutine record_bytes
+
    !> Put everything written so far on the disk (flush and fsync): afterwards `file%bytes`
    !> bytes are durable. A failure makes the file incomplete, as a failed write does.
    subroutine sync_output(file, error)

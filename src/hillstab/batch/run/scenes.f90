@@ -5,10 +5,10 @@
 !> does not stop a chart, points or lyapunov task: its row carries status 2 and
 !> placeholders, the file is written, and `error` comes back with err_points_failed.
 !>
-!> Scenes whose points are independent (chart over `&chart`, points, lyapunov), written as
-!> text, run unit by unit (hillstab_batch_run_units `run_batch`, the driver `hillstab_mpi` shares)
-!> and keep a checkpoint as they go, so that `--resume` continues them; the others run
-!> their task's own loop and keep none (`format = 'binary'` cannot be resumed).
+!> Scenes whose points are independent (chart over `&chart`, points, lyapunov), text or
+!> binary, run unit by unit (hillstab_batch_run_units `run_batch`, the driver `hillstab_mpi`
+!> shares) and keep a checkpoint as they go, so that `--resume` continues them; the others
+!> run their task's own loop and keep none.
 !>
 !>```fortran
 !> type(error_t), allocatable :: error
@@ -71,9 +71,8 @@ contains
       end do
    end subroutine warn_scene
 
-   !> Run a validated scene: unit by unit with a checkpoint when its points are independent
-   !> and it is written as text, else by its task's own loop. With `options%resume`, a scene
-   !> written in binary is refused (it keeps no checkpoint), other tasks run afresh with a note.
+   !> Run a validated scene: unit by unit with a checkpoint when its points are independent,
+   !> else by its task's own loop (with `options%resume`, afresh with a note).
    !> A run that keeps no checkpoint deals with one found at its output's name first
    !> (hillstab_batch_run_units `settle_checkpoint`: discarded with a note, refused under
    !> `--resume`).
@@ -86,18 +85,13 @@ contains
       logical :: resume
       resume = .false.
       if (present(options)) resume = options%resume
-      if (resume .and. scene%binary .and. batch_distributable(scene)) then
-         call set_error(error, err_input, scene%source//": &scene: format: 'binary' output keeps no checkpoint, "// &
-            "so it cannot be resumed: run it without --resume, or with format = 'text'")
-         return
-      end if
       ! an output that cannot fit where it goes is refused before any work
       call check_output_room(scene, output_path(scene), error)
       if (allocated(error)) return
       ! as are buffers that would not fit in memory
       call check_memory_room(scene, error)
       if (allocated(error)) return
-      if (batch_distributable(scene) .and. .not. scene%binary) then
+      if (batch_distributable(scene)) then
          call run_batch(scene, quiet, error, options)
          call name_scene_file(scene, error)
          return
@@ -108,7 +102,7 @@ contains
          if (allocated(error)) return
       end if
       if (resume) call checkpoint_note(options, scene%source//": this run keeps no checkpoint (only charts over "// &
-         "&chart, points and lyapunov runs written as text do): running it afresh")
+         "&chart, points and lyapunov runs do): running it afresh")
       call scene%task%run(scene, quiet, error)
       call name_scene_file(scene, error)
    end subroutine run_scene

@@ -6,7 +6,8 @@
 !> one row (one α, all β), computed by the chart task's own row routine, so the data lines
 !> are those of a serial run; points and lyapunov scenes are cut into runs of consecutive
 !> points. A unit's result is its text (the lines as the serial task writes
-!> them, with the blank line that separates α blocks) and a status per point
+!> them, with the blank line that separates α blocks; in a binary file, its records' bytes,
+!> hillstab_batch_output_file `record_bytes`) and a status per point
 !> (hillstab_core_status). Only `batch_open` / `batch_write` / `batch_commit` touch the file,
 !> through hillstab_batch_output_file, so the file appears whole or not at all. As in the serial
 !> tasks, a failed point is written with its status and placeholders, and `batch_commit`
@@ -50,7 +51,8 @@ module hillstab_batch_run_units
    use hillstab_core_status, only: status_roundoff, status_failed
    use hillstab_core_text, only: integer_text
    use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output, scene_namelist, output_path
-   use hillstab_batch_output_file, only: output_file_t, write_text, commit_output, discard_output, sync_output, lock_output, &
+   use hillstab_batch_output_file, only: output_file_t, write_text, write_bytes, commit_output, discard_output, &
+      sync_output, lock_output, &
       resume_output, temporary_prefix, joined_lines, claim_output, digest_written
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
    use hillstab_batch_output_checkpoint, only: checkpoint_options_t, checkpoint_state_t, checkpoint_directory, checkpoint_data, &
@@ -105,7 +107,8 @@ module hillstab_batch_run_units
    !> The computed text of one unit.
    type :: batch_result_t
       integer :: unit = 0                    !! which unit
-      !> the unit's lines exactly as the file holds them, without the final new line
+      !> the unit's lines exactly as the file holds them, without the final new line (a
+      !> binary file: its records' bytes, written as they are)
       character(len=:), allocatable :: text
       integer, allocatable :: status(:)      !! per point: status_ok, status_roundoff or status_failed
    end type batch_result_t
@@ -222,11 +225,6 @@ contains
       integer :: kind
       logical :: resumed
       integer(int64) :: rate
-      if (batch%scene%binary) then
-         call set_error(error, err_input, batch%scene%source//": &scene: format: 'binary' is written by the "// &
-            "hillstab program, not by the unit-by-unit driver: use format = 'text'")
-         return
-      end if
       batch%done = 0
       batch%n_inaccurate = 0
       batch%n_failed = 0
@@ -508,7 +506,11 @@ contains
       integer(int64) :: first, last
       integer :: j
       call batch_unit_range(batch, result%unit, first, last)
-      call write_text(batch%file, result%text, error)
+      if (batch%scene%binary) then
+         call write_bytes(batch%file, result%text, error)
+      else
+         call write_text(batch%file, result%text, error)
+      end if
       if (allocated(error)) return
       if (any(result%status == status_roundoff)) then
          j = findloc(result%status, status_roundoff, dim=1)
@@ -802,8 +804,8 @@ contains
       end if
    end function problem_kind
 
-   !> For a run that keeps no checkpoint (a system scene, a task other than chart, points and
-   !> lyapunov, binary output): what is at its output's checkpoint name is dealt with as a
+   !> For a run that keeps no checkpoint (a task other than chart, points and lyapunov, a
+   !> chart over an amplitude and frequency grid): what is at its output's checkpoint name is dealt with as a
    !> run that keeps one deals with it, so that a later --resume never continues a
    !> checkpoint this run has overwritten the output of. Without `resume`, a checkpoint found
    !> is discarded with a note (an incomplete or damaged one too); with it, a checkpoint

@@ -81,7 +81,8 @@ module hillstab_batch_scene_types
       procedure :: unit_size => task_unit_size
       !> prepare what every unit shares (once, before the units)
       procedure :: prepare_units => task_prepare_units
-      !> the text and statuses of the points `first` … `last` (called on several OpenMP threads
+      !> the text (a binary file: the records' bytes, hillstab_batch_output_file `record_bytes`)
+      !> and statuses of the points `first` … `last` (called on several OpenMP threads
       !> at once: no function with a deferred-length character result, see hillstab_batch_output_file
       !> `join_lines`)
       procedure :: unit_text => task_unit_text
@@ -384,7 +385,7 @@ contains
       type(scene_t), intent(in) :: scene  !! its scene
       integer, intent(in) :: unit  !! the unit, 1 …
       integer(int64), intent(in) :: first, last  !! its points
-      character(len=:), allocatable, intent(out) :: text  !! the lines as the file holds them, no final new line
+      character(len=:), allocatable, intent(out) :: text  !! the lines as the file holds them, no final new line (or bytes)
       integer, intent(out) :: statuses(first:last)  !! per point
       text = ""
       statuses = 0

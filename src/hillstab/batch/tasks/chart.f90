@@ -33,7 +33,7 @@ module hillstab_batch_tasks_chart
       header_bytes, text_row_bytes, binary_row_bytes, col_physical
    use hillstab_batch_tasks_regions, only: chart_region_lines
    use hillstab_batch_output_file, only: output_file_t, finish_output, discard_output, write_header, write_text, &
-      write_records, joined_lines, join_lines
+      write_records, record_bytes, joined_lines, join_lines
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
    use hillstab_core_parallel, only: max_threads
    implicit none
@@ -550,8 +550,8 @@ contains
       call scene_chart_columns(scene, self%columns, error)  ! checked when the scene was read
    end subroutine chart_prepare_units
 
-   !> Row `unit` as the file holds it (a blank line before every row but the first),
-   !> computed as `chart_run` computes it.
+   !> Row `unit` as the file holds it (a blank line before every row but the first; a binary
+   !> file: its records' bytes), computed as `chart_run` computes it.
    subroutine chart_unit_text(self, scene, unit, first, last, text, statuses)
       class(chart_task_t), intent(in) :: self  !! the task, its units prepared
       type(scene_t), intent(in) :: scene  !! its scene
@@ -564,7 +564,7 @@ contains
       real(wp), allocatable :: values(:, :)
       real(wp) :: alpha
       alpha = grid_alpha(self%grid, unit)
-      if (rows_in_parallel(self%grid) .and. self%columns%need <= need_verdict) then
+      if (rows_in_parallel(self%grid) .and. self%columns%need <= need_verdict .and. .not. scene%binary) then
          call verdict_row_text(scene, self%columns, alpha, self%betas, self%beta_texts, unit > 1, text, statuses)
          return
       end if
@@ -576,7 +576,11 @@ contains
          call compute_row_in_chunks(scene, self%columns, alpha, self%betas, lines, lengths, values, statuses, &
                                     self%beta_texts)
       end if
-      call join_lines(lines, unit > 1, text, lengths=lengths)
+      if (scene%binary) then
+         call record_bytes(values, text)
+      else
+         call join_lines(lines, unit > 1, text, lengths=lengths)
+      end if
    end subroutine chart_unit_text
 
    !> The text of a row of a verdict file (columns that need no more than the verdict), as
@@ -633,7 +637,8 @@ contains
       call check_method_runs(scene, self%grid%alpha_min, self%grid%beta_min, error)
       if (allocated(error)) return
       call write_header(file, chart_header(scene, outside(self%grid), columns, chart_region_lines(scene, self%grid)), &
-                        chart_names(columns), error, names_line=scene%names_line)
+                        chart_names(columns), error, names_line=scene%names_line, &
+                        records=[self%grid%n_beta, self%grid%n_alpha])
    end subroutine chart_open_units
 
    !> (α, β) of point k, numbered row by row.

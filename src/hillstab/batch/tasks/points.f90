@@ -21,7 +21,7 @@ module hillstab_batch_tasks_points
       scene_chart_columns, evaluate_point, warn_inaccurate, failed_points_error, chart_line_length, &
       header_bytes, text_row_bytes, binary_row_bytes
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text, write_records, &
-      join_lines, discard_output
+      record_bytes, join_lines, discard_output
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
    implicit none
    private
@@ -246,7 +246,8 @@ contains
       call scene_chart_columns(scene, self%columns, error)  ! checked when the scene was read
    end subroutine points_prepare_units
 
-   !> The lines of the points `first` … `last` (the units prepared).
+   !> The lines of the points `first` … `last` (a binary file: their records' bytes; the units
+   !> prepared).
    subroutine points_unit_text(self, scene, unit, first, last, text, statuses)
       class(points_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
@@ -255,9 +256,16 @@ contains
       character(len=:), allocatable, intent(out) :: text  !! the lines, no final new line
       integer, intent(out) :: statuses(first:last)  !! per point
       character(len=chart_line_length), allocatable :: lines(:)
+      real(wp), allocatable :: values(:, :)
       allocate (lines(first:last))
-      call compute_points(self, scene, self%columns, int(first), int(last), lines, statuses)
-      call join_lines(lines, .false., text)
+      if (scene%binary) then
+         allocate (values(size(self%columns%ids), first:last))
+         call compute_points(self, scene, self%columns, int(first), int(last), lines, statuses, values)
+         call record_bytes(values, text)
+      else
+         call compute_points(self, scene, self%columns, int(first), int(last), lines, statuses)
+         call join_lines(lines, .false., text)
+      end if
    end subroutine points_unit_text
 
    !> The header of `points_run`.
@@ -270,7 +278,7 @@ contains
       call scene_chart_columns(scene, columns, error)
       if (allocated(error)) return
       call write_header(file, chart_header(scene, outside(self), columns), chart_names(columns), &
-                        error, names_line=scene%names_line)
+                        error, names_line=scene%names_line, records=[size(self%points, 2), 1])
    end subroutine points_open_units
 
    !> (α, β) of point k.

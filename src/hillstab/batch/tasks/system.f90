@@ -19,8 +19,8 @@
 module hillstab_batch_tasks_system
    use hillstab_core_kinds, only: wp, int64, version_string
    use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
-   use hillstab_core_status, only: status_ok, status_roundoff, status_failed
-   use hillstab_core_text, only: real_text, integer_text, lower_case, put_es, put_integer
+   use hillstab_core_status, only: status_roundoff
+   use hillstab_core_text, only: real_text, integer_text, lower_case
    use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system, system_equation_text, &
       system_description
    use hillstab_integrate_system, only: system_method_t, system_method_name
@@ -36,7 +36,7 @@ module hillstab_batch_tasks_system
       grid_point, grid_size_text
    use hillstab_batch_scene_group_points, only: points_group, read_points_group
    use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text, join_lines, &
-      write_records
+      write_records, record_bytes
    use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
    use hillstab_core_parallel, only: max_threads
    use hillstab_batch_tasks_system_cost, only: check_system_cost, extreme_name
@@ -478,8 +478,8 @@ contains
       size = self%grid%n_beta
    end function chart_unit_size
 
-   !> Row `unit` as the file holds it (a blank line before every row but the first),
-   !> computed as `chart_run` computes it.
+   !> Row `unit` as the file holds it (a blank line before every row but the first; a binary
+   !> file: its records' bytes), computed as `chart_run` computes it.
    subroutine chart_unit_text(self, scene, unit, first, last, text, statuses)
       class(system_chart_task_t), intent(in) :: self  !! the task, its units prepared
       type(scene_t), intent(in) :: scene  !! its scene
@@ -495,11 +495,15 @@ contains
       n = self%form%n
       allocate (values(n_fixed + n, self%grid%n_beta))
       allocate (character(len=int(row_text_width(size(self%chosen)), int64)*self%grid%n_beta + 1) :: buffer)
-      offset = merge(1, 0, unit > 1)
+      offset = merge(1, 0, unit > 1 .and. .not. scene%binary)
       if (offset == 1) buffer(1:1) = new_line("a")
       call chart_row(self, scene, self%form, system_method_t(scene%method%kind, scene%method%tolerance), unit, &
                      values, buffer(offset + 1:), length, n_failed, failure)
-      text = buffer(1:offset + length)
+      if (scene%binary) then
+         call record_bytes(values(self%chosen, :), text)
+      else
+         text = buffer(1:offset + length)
+      end if
       statuses = nint(values(status_column(n), :))
    end subroutine chart_unit_text
 
@@ -515,7 +519,8 @@ contains
       end if
       call write_header(file, system_lines(scene, "stability chart", self%chosen, &
                                            chart_region_lines(scene, self%grid)), &
-                        chosen_names(scene%system, self%chosen), error, names_line=scene%names_line)
+                        chosen_names(scene%system, self%chosen), error, names_line=scene%names_line, &
+                        records=[self%grid%n_beta, self%grid%n_alpha])
    end subroutine chart_open_units
 
    !> (α, β) of point k, numbered row by row.
@@ -645,7 +650,8 @@ contains
       size = max(1, min(64, int(self%point_count())/(16*max(1, n_workers))))
    end function points_unit_size
 
-   !> The lines of the points `first` … `last`, each computed alone, as `points_run` computes them.
+   !> The lines of the points `first` … `last` (a binary file: their records' bytes), each
+   !> computed alone, as `points_run` computes them.
    subroutine points_unit_text(self, scene, unit, first, last, text, statuses)
       class(system_points_task_t), intent(in) :: self  !! the task, its units prepared
       type(scene_t), intent(in) :: scene  !! its scene
@@ -657,18 +663,27 @@ contains
       character(len=(n_fixed + max_dof_columns)*26), allocatable :: lines(:)
       character(len=:), allocatable :: message
       real(wp) :: v(n_fixed + self%form%n)
+      real(wp), allocatable :: records(:, :)
       integer :: lengths(first:last)
       integer(int64) :: k
       logical :: failed
-      allocate (lines(first:last))
+      allocate (lines(first:last), records(size(self%chosen), first:last))
       do k = first, last
          call system_values(scene%system, self%form, system_method_t(scene%method%kind, scene%method%tolerance), &
                             self%points(1, k), self%points(2, k), v, failed, message)
          statuses(k) = nint(v(status_column(self%form%n)))
-         call point_line(self%table, self%chosen, v, line, lengths(k))
-         lines(k) = line(:lengths(k))
+         if (scene%binary) then
+            records(:, k) = v(self%chosen)
+         else
+            call point_line(self%table, self%chosen, v, line, lengths(k))
+            lines(k) = line(:lengths(k))
+         end if
       end do
-      call join_lines(lines, .false., text, lengths=lengths)
+      if (scene%binary) then
+         call record_bytes(records, text)
+      else
+         call join_lines(lines, .false., text, lengths=lengths)
+      end if
    end subroutine points_unit_text
 
    !> The checks and the header of `points_run`.
@@ -682,7 +697,8 @@ contains
          return
       end if
       call write_header(file, system_lines(scene, "Floquet analysis at points", self%chosen), &
-                        chosen_names(scene%system, self%chosen), error, names_line=scene%names_line)
+                        chosen_names(scene%system, self%chosen), error, names_line=scene%names_line, &
+                        records=[size(self%points, 2), 1])
    end subroutine points_open_units
 
    !> (α, β) of point k.
