@@ -12,6 +12,7 @@ module test_system
    use hillstab_hill_model_fourier, only: fourier_model_t
    use hillstab_hill_model_meissner, only: meissner_model_t
    use hillstab_hill_transfer, only: trace_t
+   use hillstab_hill_floquet, only: floquet_from_trace
    use hillstab_integrate_monodromy, only: method_t, monodromy_trace, method_magnus6
    use hillstab_hill_system, only: system_form_t, prepare_system, cholesky_inverse
    use hillstab_hill_system_matrix, only: matrix_system_t
@@ -39,6 +40,7 @@ contains
          new_unittest("combination_tongue_first_order", combination_tongue_first_order), &
          new_unittest("structure_defects", structure_defects), &
          new_unittest("scaled_growth_exponent", scaled_growth_exponent), &
+         new_unittest("trace_form_extremes", trace_form_extremes), &
          new_unittest("bad_matrices_named", bad_matrices_named), &
          new_unittest("mass_scales_apart", mass_scales_apart)])
    end function collect_system
@@ -468,6 +470,63 @@ contains
       call check(ctx, f%verdict == verdict_unstable .and. f%kind == kind_plus_one, "unstable at +1")
       call check(ctx, f%overflow, "trace clamped with the overflow flag")
    end subroutine scaled_growth_exponent
+
+   !> The analysis of a system of one equation from the scalar trace (`floquet_of_trace`) at
+   !> the extremes, against closed forms: S = 1e305 with εP/2 = 0.1 (tr Φ = e^{−0.1} S is
+   !> above 1e300: clamped, with the overflow flag); ln|S| = 710 (S itself overflows) with
+   !> εP/2 = 30 (tr Φ = e^{680}, no overflow) and with εP/2 = 0 (clamped); ln|S| = 1000 (the
+   !> multipliers kept scaled: ln λ_max = 1000 − εP/2 (λ = S in double), |λ₁ e^{−s}| = 1);
+   !> a negative S = −1e305 keeps its sign and is unstable at −1; and S = 1.5 damped is
+   !> stable with |λ| = e^{−εP/2}, a₂ = e^{−εP}.
+   subroutine trace_form_extremes(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(system_form_t) :: form
+      type(system_floquet_t) :: f
+      form%period = 2.0_wp
+      ! S = 1e305, eps = 0.1 (decay 0.1): e^{-0.1} 1e305 > 1e300
+      call floquet_of_trace(floquet_from_trace(trace_t(value=1.0e305_wp, log_abs=log(1.0e305_wp)), 0.1_wp, &
+                                               period=2.0_wp), form, f)
+      call check(ctx, f%trace == 1.0e300_wp .and. f%overflow, "S = 1e305: tr clamped to 1e300, overflow")
+      call check(ctx, f%a2, exp(-0.2_wp), rel=1.0e-15_wp, message="a2 = exp(-eps P)")
+      call check(ctx, f%log_lambda_max, log(1.0e305_wp) - 0.1_wp, rel=1.0e-14_wp, &
+                 message="ln lambda_max = ln S - eps P/2 (S^2/4 >> 1)")
+      call check(ctx, f%verdict == verdict_unstable .and. f%kind == kind_plus_one, "unstable at +1")
+      call check(ctx, f%defect == 0.0_wp .and. f%n == 1, "no defect, one degree of freedom")
+      ! S itself overflows (ln|S| = 710), decay 30: tr = e^680
+      call floquet_of_trace(floquet_from_trace(trace_t(value=huge(1.0_wp), log_abs=710.0_wp, overflow=.true.), &
+                                               30.0_wp, period=2.0_wp), form, f)
+      call check(ctx, f%trace, exp(680.0_wp), rel=1.0e-13_wp, message="ln S = 710, eps P/2 = 30: tr = e^680")
+      call check(ctx, .not. f%overflow, "which fits: no overflow")
+      call check(ctx, f%a2, exp(-60.0_wp), rel=1.0e-14_wp, message="a2 = exp(-60)")
+      call floquet_of_trace(floquet_from_trace(trace_t(value=huge(1.0_wp), log_abs=710.0_wp, overflow=.true.), &
+                                               0.0_wp, period=2.0_wp), form, f)
+      call check(ctx, f%trace == 1.0e300_wp .and. f%overflow, "undamped: clamped, overflow")
+      call check(ctx, f%a2 == 1.0_wp, "a2 = 1 undamped")
+      ! ln|S| = 1000: the multipliers scaled by e^{-s}, s = ln lambda_max
+      call floquet_of_trace(floquet_from_trace(trace_t(value=huge(1.0_wp), log_abs=1000.0_wp, overflow=.true.), &
+                                               0.5_wp, period=2.0_wp), form, f)
+      call check(ctx, f%log_lambda_max, 1000.0_wp - 0.5_wp, rel=1.0e-15_wp, &
+                 message="ln lambda_max = ln S - eps P/2 (lambda = S)")
+      call check(ctx, f%log_scale, f%log_lambda_max, rel=1.0e-15_wp, message="scaled by lambda_max")
+      call check(ctx, abs(f%multipliers(1)), 1.0_wp, rel=1.0e-13_wp, message="|lambda_1 e^-s| = 1")
+      call check(ctx, abs(f%multipliers(2)) < 1.0e-300_wp, "lambda_2 e^-s below any double's range: tiny")
+      call check(ctx, f%mu, f%log_lambda_max/2.0_wp, rel=1.0e-15_wp, message="mu = ln lambda_max / P")
+      call check(ctx, f%trace == 1.0e300_wp .and. f%overflow, "tr clamped")
+      ! a negative S keeps its sign
+      call floquet_of_trace(floquet_from_trace(trace_t(value=-1.0e305_wp, log_abs=log(1.0e305_wp)), 0.1_wp, &
+                                               period=2.0_wp), form, f)
+      call check(ctx, f%trace == -1.0e300_wp .and. f%overflow, "S = -1e305: tr = -1e300, overflow")
+      call check(ctx, f%verdict == verdict_unstable .and. f%kind == kind_minus_one, "unstable at -1")
+      ! a stable damped point: |lambda| = e^{-eps P/2}
+      call floquet_of_trace(floquet_from_trace(trace_t(value=1.5_wp, log_abs=log(1.5_wp)), 0.1_wp, period=2.0_wp), &
+                            form, f)
+      call check(ctx, f%trace, 1.5_wp*exp(-0.1_wp), rel=1.0e-15_wp, message="tr = e^{-0.1} 1.5")
+      call check(ctx, abs(f%multipliers(1)), exp(-0.1_wp), rel=1.0e-14_wp, message="|lambda_1| = e^{-eps P/2}")
+      call check(ctx, abs(f%multipliers(2)), exp(-0.1_wp), rel=1.0e-14_wp, message="|lambda_2| = e^{-eps P/2}")
+      call check(ctx, real(f%multipliers(1)*f%multipliers(2)), f%a2, rel=1.0e-14_wp, message="lambda_1 lambda_2 = a2")
+      call check(ctx, f%verdict == verdict_stable .and. f%kind == kind_damped .and. .not. f%overflow, &
+                 "stable, damped, no overflow")
+   end subroutine trace_form_extremes
 
    !> The checks of a matrix system name the variable: M not symmetric, not positive definite,
    !> G not skew, C not symmetric, a list of the wrong length, n above the limit, a NaN.

@@ -376,7 +376,7 @@ contains
          call check(ctx, fast(4, k), exp(-2.0_wp*epsilon), rel=1.0e-13_wp, message="a2 = exp(-eps P)")
          call check(ctx, slow(4, k), exp(-2.0_wp*epsilon), rel=1.0e-9_wp, message="magnus6's a2 too")
          call check(ctx, fast(9, k), slow(9, k), abs=1.0e-9_wp, message="mu")
-         call check(ctx, fast(11, k) == fast(9, k), "mu_1 = mu")
+         call check(ctx, fast(11, k), slow(11, k), abs=1.0e-9_wp, message="mu_1")
          call check(ctx, fast(12, k) == 0.0_wp, "no defect by construction")
          if (abs(fast(10, k) - slow(10, k)) > 1.0e-6_wp) &
             call check(ctx, abs(abs(fast(10, k) - slow(10, k)) - 1.0_wp) < 1.0e-6_wp .or. fast(8, k) < 1.0_wp, &

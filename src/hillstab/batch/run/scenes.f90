@@ -15,7 +15,7 @@
 !> call run_scene_file("data/scenes/default_exact.nml", quiet=.false., error=error)
 !>```
 module hillstab_batch_run_scenes
-   use hillstab_core_error, only: error_t, set_error, err_points_failed, err_input, err_io
+   use hillstab_core_error, only: error_t, err_points_failed, err_io
    use hillstab_batch_scene_types, only: scene_t, output_path
    use hillstab_batch_run_read, only: read_scene
    use hillstab_batch_run_limits, only: check_output_room, check_memory_room

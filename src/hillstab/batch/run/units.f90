@@ -1,16 +1,17 @@
 !> The work of a chart, points or lyapunov scene cut into independent units, for drivers that
-!> compute units in any order, anywhere (the MPI program `hillstab_mpi`), and write them
-!> in order into the same file as the serial task.
+!> compute units in any order, anywhere (`run_batch` on OpenMP threads in the serial
+!> program, the MPI program `hillstab_mpi` over ranks), and write them in order into the
+!> same file.
 !>
 !> The task says how (its unit bindings, hillstab_batch_scene_types `task_t`): a chart's unit is
-!> one row (one α, all β), computed by the chart task's own row routine, so the data lines
-!> are those of a serial run; points and lyapunov scenes are cut into runs of consecutive
-!> points. A unit's result is its text (the lines as the serial task writes
+!> one row (one α, all β), computed by the chart task's row routine, so the data lines do
+!> not depend on who computed them; points and lyapunov scenes are cut into runs of
+!> consecutive points. A unit's result is its text (the lines as the file holds
 !> them, with the blank line that separates α blocks; in a binary file, its records' bytes,
 !> hillstab_batch_output_file `record_bytes`) and a status per point
 !> (hillstab_core_status). Only `batch_open` / `batch_write` / `batch_commit` touch the file,
-!> through hillstab_batch_output_file, so the file appears whole or not at all. As in the serial
-!> tasks, a failed point is written with its status and placeholders, and `batch_commit`
+!> through hillstab_batch_output_file, so the file appears whole or not at all. As in every
+!> task, a failed point is written with its status and placeholders, and `batch_commit`
 !> returns err_points_failed (exit status 3) naming the first.
 !>
 !> Long runs keep a checkpoint (hillstab_batch_output_checkpoint) when `batch_open` is given
@@ -22,8 +23,7 @@
 !> is the one an uninterrupted run writes), refuses one of another scene (err_input, naming
 !> the first difference), and without `resume` discards one with a note. `batch_commit`
 !> removes the checkpoint with the finished file; `batch_discard` and signals keep it.
-!> `run_batch` computes units on OpenMP threads (as many at once as the serial chart task
-!> computes rows) and writes each as soon as it is next in order, so a checkpoint follows
+!> `run_batch` computes units on OpenMP threads (16 a thread held at once) and writes each as soon as it is next in order, so a checkpoint follows
 !> the run unit by unit, in the serial program and in `hillstab_mpi` alike.
 !>
 !>```fortran
@@ -621,11 +621,11 @@ contains
 
    !> Run a distributable scene unit by unit in this process, keeping a checkpoint (default
    !> options without `options`): the serial program's run of chart, points and lyapunov
-   !> scenes in text, and the reference order of work of a distributed run. With at least 4
+   !> scenes, text or binary, and the reference order of work of a distributed run. With at least 4
    !> units a thread, units are computed on OpenMP threads, each written as soon as it is
    !> next in order; at most 16 a thread are held at once (a unit waits to start until it is
    !> within that window of the next to write). With fewer, units go one by one, each
-   !> computed in parallel within (a chart's row in chunks), as the serial tasks do.
+   !> computed in parallel within (a chart's row in chunks, a run of points point by point).
    subroutine run_batch(scene, quiet, error, options)
       type(scene_t), intent(in) :: scene  !! a validated chart, points or lyapunov scene
       logical, intent(in) :: quiet  !! no progress on stderr

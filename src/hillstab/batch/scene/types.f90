@@ -29,7 +29,7 @@ module hillstab_batch_scene_types
    use hillstab_batch_output_file, only: output_file_t, open_output
    implicit none
    private
-   public :: scene_t, task_t, output_path, scene_namelist, scene_header, open_scene_output, physical_points, &
+   public :: scene_t, task_t, output_path, scene_namelist, scene_header, open_scene_output, physical_points, task_run_by_units, &
       physical_summary, add_warning
 
    !> A task: what it reads, runs and writes. Concrete tasks extend it (the registry,
@@ -61,8 +61,9 @@ module hillstab_batch_scene_types
    contains
       !> read and check the task's groups from the scene file
       procedure(task_read), deferred :: read
-      !> run the task: write its output file
-      procedure(task_run), deferred :: run
+      !> run the task in one loop of its own: write its output file (default: none; a task
+      !> whose points are independent, `point_count` > 0, runs in units instead)
+      procedure :: run => task_run_by_units
       !> the groups the task reads, with its defaults, in the order the header writes them
       procedure(task_declarations), deferred :: declarations
       !> groups a template shows commented out, each an alternative to one it reads
@@ -152,15 +153,6 @@ module hillstab_batch_scene_types
          class(task_t), intent(in) :: self  !! the task
          type(group_t), allocatable :: groups(:)
       end function task_declarations
-      !> Run the task of a validated scene.
-      subroutine task_run(self, scene, quiet, error)
-         import :: task_t, scene_t, error_t
-         class(task_t), intent(in) :: self  !! the task
-         type(scene_t), intent(in) :: scene  !! the scene (holding this task)
-         logical, intent(in) :: quiet  !! no progress on stderr
-         !> what failed (err_points_failed: the file is written with failed points)
-         type(error_t), allocatable, intent(out) :: error
-      end subroutine task_run
    end interface
 
 contains
@@ -378,6 +370,20 @@ contains
       class(task_t), intent(inout) :: self  !! the task
       type(scene_t), intent(in) :: scene    !! its scene
    end subroutine task_prepare_units
+
+   !> Default: no loop of its own. The tasks whose points are independent (chart over
+   !> `&chart`, points) are written unit by unit (`unit_text`) by the driver of
+   !> hillstab_batch_run_units, which the scene runner (hillstab_batch_run_scenes `run_scene`)
+   !> chooses for them: called for such a task, this says so (err_input) and writes nothing.
+   subroutine task_run_by_units(self, scene, quiet, error)
+      class(task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! the scene (holding this task)
+      logical, intent(in) :: quiet  !! no progress on stderr
+      !> what failed (err_points_failed: the file is written with failed points)
+      type(error_t), allocatable, intent(out) :: error
+      call set_error(error, err_input, scene%source//": &scene: task: task '"//self%name// &
+         "' runs unit by unit (hillstab_batch_run_scenes run_scene), not in a loop of its own")
+   end subroutine task_run_by_units
 
    !> Default: no units (a driver asks only tasks with a point count).
    subroutine task_unit_text(self, scene, unit, first, last, text, statuses)

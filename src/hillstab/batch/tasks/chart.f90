@@ -1,24 +1,22 @@
 !> Task `chart`: the columns of hillstab_batch_tasks_chart_columns over the (α, β) grid of
-!> `&chart`, row by row (one α a row). With many rows, groups of rows run in parallel
-!> (OpenMP, dynamic schedule: the cost varies strongly near α → π²) into one of two
-!> buffers while one thread writes the previous group, so memory stays at a few rows a
-!> thread; with few rows, each row is split into chunks computed in parallel that share
-!> the meshes method auto prepares for the row. A point that cannot be computed does not
-!> stop the chart: its row carries status 2 and placeholders, and the run ends with
-!> err_points_failed after the file is written.
-!>
-!> The task also runs in units of one row (`unit_text`), computed exactly as here, so that
-!> the MPI program writes the same file.
+!> `&chart`, row by row (one α a row): the task's units (`unit_text`), which the driver of
+!> hillstab_batch_run_units computes on OpenMP threads (many rows: rows in parallel,
+!> dynamic schedule, the cost varies strongly near α → π²) or over MPI ranks and writes in
+!> order, as text or binary records. With few rows, each row is split into chunks computed
+!> in parallel that share the meshes method auto prepares for the row. A point that cannot
+!> be computed does not stop the chart: its row carries status 2 and placeholders, and the
+!> run ends with err_points_failed after the file is written. A chart over `&physical`
+!> amplitudes and frequencies runs in a loop of its own (`chart_run`).
 module hillstab_batch_tasks_chart
    use hillstab_core_kinds, only: wp, int64, pi
-   use hillstab_core_error, only: error_t, set_error, err_input
+   use hillstab_core_error, only: error_t
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
-   use hillstab_core_text, only: format_es, real_text, integer_text
+   use hillstab_core_text, only: format_es, integer_text
    use hillstab_hill_coefficient, only: in_physical_domain
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict, period_damping
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, batch_plan_t, prepare_batch, need_verdict
-   use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output
+   use hillstab_batch_scene_types, only: scene_t, open_scene_output, task_run_by_units
    use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail, group_present
    use hillstab_batch_scene_checks, only: check_integration_cost, max_grid_count
@@ -139,7 +137,7 @@ contains
               merge(binary_row_bytes, text_row_bytes, scene%binary) + int(self%grid%n_alpha, int64)
    end function chart_estimated_bytes
 
-   !> The rows held at once (two groups of 8 per thread when rows go in parallel, else one),
+   !> The rows the unit driver holds at once (16 a thread when rows go in parallel, else one),
    !> each n_beta lines, statuses and values and the row's text joined for the writer, the
    !> β texts, and each thread's work on a row (auto's batch: its meshes and lanes, 64 bytes
    !> a point). Measured peaks: 265 MB for 1 x 500000 points (estimate 333 MB), 147 MB for
@@ -155,158 +153,19 @@ contains
       bytes = int(self%grid%n_beta, int64)*(rows*per_point + 31 + 64*max_threads())
    end function chart_memory_bytes
 
-   !> The chart task.
+   !> The chart task in a loop of its own: a chart over `&physical` amplitudes and frequencies
+   !> (its points are off the (α, β) grid: one process). A chart over `&chart` runs in units,
+   !> its rows (`unit_text`), which the scene runner chooses; called for one, this says so.
    subroutine chart_run(self, scene, quiet, error)
       class(chart_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
       logical, intent(in) :: quiet  !! no progress on stderr
       type(error_t), allocatable, intent(out) :: error  !! err_io, err_points_failed, ...
-      type(output_file_t) :: file
-      type(progress_t) :: progress
-      character(len=chart_line_length), allocatable :: lines(:)
-      real(wp) :: alpha
-      real(wp), allocatable :: all_betas(:)
-      character(len=24), allocatable :: beta_texts(:)
-      logical :: stopped, stop_now
-      character(len=chart_line_length), allocatable :: block_lines(:, :, :)
-      integer, allocatable :: block_status(:, :, :), statuses(:), block_lengths(:, :, :), lengths(:)
-      type(chart_layout_t) :: columns
-      real(wp), allocatable :: block_values(:, :, :, :), values(:, :)
-      integer(int64) :: n_inaccurate, n_failed
-      real(wp) :: first_inaccurate(2), first_failed(2)
-      integer :: group, n_groups, g, alloc_status
-      integer :: i, n_alpha, n_beta
-
       if (self%physical_grid) then
          call physical_chart_run(scene, quiet, error)
-         return
-      end if
-      n_alpha = self%grid%n_alpha
-      n_beta = self%grid%n_beta
-      call scene_chart_columns(scene, columns, error)
-      if (allocated(error)) return
-      ! an unwritable output path fails before any computing
-      call open_scene_output(scene, file, error)
-      if (allocated(error)) return
-      call check_method_runs(scene, self%grid%alpha_min, self%grid%beta_min, error)
-      if (allocated(error)) then
-         call discard_output(file)
-         return
-      end if
-      call chart_betas(self%grid, all_betas, beta_texts)
-      call write_header(file, chart_header(scene, outside(self%grid), columns, chart_region_lines(scene, self%grid)), &
-                        chart_names(columns), error, names_line=scene%names_line, records=[n_beta, n_alpha])
-      if (allocated(error)) then
-         call discard_output(file)
-         return
-      end if
-
-      call progress_begin(progress, int(n_alpha, int64)*n_beta, quiet)
-      stopped = .false.
-      n_inaccurate = 0
-      n_failed = 0
-      if (rows_in_parallel(self%grid)) then
-         ! groups of rows computed in parallel (mesh preparation, integration and
-         ! formatting on every core) into one of two buffers, while one thread writes the
-         ! previous group from the other buffer; a group holds a few rows per thread, so
-         ! memory stays bounded however large the chart
-         group = 8*max_threads()
-         n_groups = (n_alpha + group - 1)/group
-         allocate (block_lines(n_beta, group, 0:1), block_status(n_beta, group, 0:1), &
-                   block_values(size(columns%ids), n_beta, group, 0:1), block_lengths(n_beta, group, 0:1), stat=alloc_status)
-         if (alloc_status /= 0) then
-            call out_of_memory()
-            return
-         end if
-         !$omp parallel default(shared) private(g, i, alpha, stop_now)
-         do g = 1, n_groups + 1
-            ! every thread takes the same decision: stopped is read between two barriers
-            ! (it is written only inside the single below)
-            !$omp barrier
-            stop_now = stopped
-            !$omp barrier
-            if (stop_now) exit
-            if (g > 1) then
-               !$omp single
-               do i = (g - 2)*group + 1, min(n_alpha, (g - 1)*group)
-                  alpha = grid_alpha(self%grid, i)
-                  call finish_row(i, alpha, block_lines(:, i - (g - 2)*group, mod(g - 1, 2)), &
-                     block_lengths(:, i - (g - 2)*group, mod(g - 1, 2)), &
-                     block_values(:, :, i - (g - 2)*group, mod(g - 1, 2)), block_status(:, i - (g - 2)*group, mod(g - 1, 2)))
-                  if (stopped) exit
-               end do
-               !$omp end single nowait
-            end if
-            if (g <= n_groups) then
-               !$omp do schedule(dynamic)
-               do i = (g - 1)*group + 1, min(n_alpha, g*group)
-                  alpha = grid_alpha(self%grid, i)
-                  call compute_row(scene, columns, alpha, all_betas, block_lines(:, i - (g - 1)*group, mod(g, 2)), &
-                     block_lengths(:, i - (g - 1)*group, mod(g, 2)), &
-                     block_values(:, :, i - (g - 1)*group, mod(g, 2)), block_status(:, i - (g - 1)*group, mod(g, 2)), &
-                     beta_texts=beta_texts)
-               end do
-               !$omp end do
-            else
-               !$omp barrier
-            end if
-         end do
-         !$omp end parallel
       else
-         ! few rows: the points of each row in parallel chunks sharing the prepared meshes
-         allocate (lines(n_beta), lengths(n_beta), statuses(n_beta), values(size(columns%ids), n_beta), stat=alloc_status)
-         if (alloc_status /= 0) then
-            call out_of_memory()
-            return
-         end if
-         do i = 1, n_alpha
-            alpha = grid_alpha(self%grid, i)
-            call compute_row_in_chunks(scene, columns, alpha, all_betas, lines, lengths, values, statuses, beta_texts)
-            call finish_row(i, alpha, lines, lengths, values, statuses)
-            if (stopped) exit
-         end do
+         call task_run_by_units(self, scene, quiet, error)
       end if
-      call progress_end(progress)
-      call finish_output(file, error)
-      if (allocated(error)) return
-      call warn_inaccurate(scene, n_inaccurate, first_inaccurate)
-      call failed_points_error(scene, n_failed, int(n_alpha, int64)*n_beta, first_failed, error)
-   contains
-      !> The row buffers could not be allocated: no file, a message naming the size.
-      subroutine out_of_memory()
-         call discard_output(file)
-         call progress_end(progress)
-         call set_error(error, err_input, scene%source//": "//self%size_variables()//": the row buffers "// &
-            "cannot be allocated (out of memory); lower n_beta or the number of threads (OMP_NUM_THREADS)")
-      end subroutine out_of_memory
-      !> Write a computed row (in order) and count its round-off limited and failed points.
-      subroutine finish_row(i, alpha, lines, lengths, values, statuses)
-         integer, intent(in) :: i
-         real(wp), intent(in) :: alpha
-         character(len=*), intent(in) :: lines(:)  !! text: the row's lines
-         integer, intent(in) :: lengths(:)         !! text: their lengths
-         real(wp), intent(in) :: values(:, :)      !! binary: the row's records
-         integer, intent(in) :: statuses(:)
-         if (scene%binary) then
-            call write_records(file, values, error)
-         else
-            ! blocks of constant alpha, separated by one blank line (gnuplot pm3d/image)
-            call write_text(file, joined_lines(lines, i > 1, lengths=lengths), error)
-         end if
-         if (allocated(error)) then
-            stopped = .true.
-            return
-         end if
-         if (any(statuses == status_roundoff)) then
-            if (n_inaccurate == 0) first_inaccurate = [alpha, all_betas(findloc(statuses, status_roundoff, dim=1))]
-            n_inaccurate = n_inaccurate + count(statuses == status_roundoff)
-         end if
-         if (any(statuses == status_failed)) then
-            if (n_failed == 0) first_failed = [alpha, all_betas(findloc(statuses, status_failed, dim=1))]
-            n_failed = n_failed + count(statuses == status_failed)
-         end if
-         call progress_update(progress, int(i, int64)*n_beta)
-      end subroutine finish_row
    end subroutine chart_run
 
    !> A chart over (a, omega) of `&physical`, r0 and g fixed: the points a_i, omega_j, in

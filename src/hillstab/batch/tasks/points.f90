@@ -1,28 +1,26 @@
 !> Task `points`: the columns of a chart (hillstab_batch_tasks_chart_columns) at the (α, β)
 !> points of a file (`&points file`), or at the bounce amplitudes of `&physical a` with
-!> its r0, in order; the points run in parallel (OpenMP, dynamic schedule). A failed
-!> point is written with status 2 and placeholders; the run then ends with
-!> err_points_failed. The task also runs in units of consecutive points.
+!> its r0, in order. The task runs in units of consecutive points (hillstab_batch_run_units:
+!> on OpenMP threads or MPI ranks, text or binary records), the points of a unit in
+!> parallel (dynamic schedule). A failed point is written with status 2 and placeholders;
+!> the run then ends with err_points_failed.
 module hillstab_batch_tasks_points
    use hillstab_core_kinds, only: wp, int64, pi
-   use hillstab_core_error, only: error_t, set_error, err_input
-   use hillstab_core_status, only: status_ok, status_roundoff, status_failed
+   use hillstab_core_error, only: error_t
+   use hillstab_core_status, only: status_failed
    use hillstab_core_text, only: integer_text
    use hillstab_hill_coefficient, only: in_physical_domain
    use hillstab_hill_floquet, only: floquet_t
-   use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output, physical_points
+   use hillstab_batch_scene_types, only: scene_t, physical_points
+   use hillstab_core_parallel, only: max_threads
    use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_checks, only: check_integration_cost
    use hillstab_batch_scene_group_points, only: points_group, read_points_group
-   use hillstab_batch_tasks_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, &
-      chart_header, chart_layout_t, chart_names, &
-      point_amplitude, &
-      scene_chart_columns, evaluate_point, warn_inaccurate, failed_points_error, chart_line_length, &
-      header_bytes, text_row_bytes, binary_row_bytes
-   use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text, write_records, &
-      record_bytes, join_lines, discard_output
-   use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
+   use hillstab_batch_tasks_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, &
+      chart_line, chart_header, chart_layout_t, chart_names, point_amplitude, scene_chart_columns, evaluate_point, &
+      chart_line_length, header_bytes, text_row_bytes, binary_row_bytes
+   use hillstab_batch_output_file, only: output_file_t, write_header, record_bytes, join_lines
    implicit none
    private
    public :: points_task_t, points_task
@@ -37,7 +35,6 @@ module hillstab_batch_tasks_points
       type(chart_layout_t) :: columns         !! the columns written, made by `prepare_units`
    contains
       procedure :: read => points_read
-      procedure :: run => points_run
       procedure :: declarations => points_declarations
       procedure :: estimated_bytes => points_estimated_bytes
       procedure :: memory_bytes => points_memory_bytes
@@ -115,13 +112,16 @@ contains
       bytes = header_bytes + int(size(self%points, 2), int64)*merge(binary_row_bytes, text_row_bytes, scene%binary)
    end function points_estimated_bytes
 
-   !> Every point's line, status and values at once (the lines are written one by one),
-   !> beside the points themselves.
+   !> The points themselves, and the points of the units the driver holds at once (up to
+   !> 16 units of at most 64 points a thread, hillstab_batch_run_units): each its line,
+   !> status and values and its share of the unit's joined text (or records).
    function points_memory_bytes(self, scene) result(bytes)
       class(points_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
-      integer(int64) :: bytes
-      bytes = int(size(self%points, 2), int64)*(chart_line_length + 4 + 8*n_chart_columns + 16)
+      integer(int64) :: bytes, n_points, held
+      n_points = size(self%points, 2)
+      held = min(n_points, int(16*64, int64)*max_threads())
+      bytes = 16*n_points + held*(2*chart_line_length + 4 + 8*n_chart_columns)
    end function points_memory_bytes
 
    !> Whether some point lies outside the physical domain.
@@ -168,60 +168,6 @@ contains
       end do
       !$omp end parallel do
    end subroutine compute_points
-
-   !> The points task.
-   subroutine points_run(self, scene, quiet, error)
-      class(points_task_t), intent(in) :: self  !! the task
-      type(scene_t), intent(in) :: scene  !! its scene
-      logical, intent(in) :: quiet  !! no progress on stderr
-      type(error_t), allocatable, intent(out) :: error  !! err_io, err_points_failed
-      type(output_file_t) :: file
-      type(progress_t) :: progress
-      character(len=chart_line_length), allocatable :: lines(:)
-      integer, allocatable :: statuses(:)
-      type(chart_layout_t) :: columns
-      real(wp), allocatable :: values(:, :)
-      integer :: k, m, n
-      n = size(self%points, 2)
-      call scene_chart_columns(scene, columns, error)
-      if (allocated(error)) return
-      call open_scene_output(scene, file, error)
-      if (allocated(error)) return
-      allocate (lines(n), statuses(n), values(size(columns%ids), n), stat=k)
-      if (k /= 0) then
-         call discard_output(file)
-         call set_error(error, err_input, scene%source//": &points: file: the buffers of "//integer_text(n)// &
-            " points cannot be allocated (out of memory)")
-         return
-      end if
-      statuses = status_ok
-      call progress_begin(progress, int(n, int64), quiet)
-      ! in chunks, for the progress line (the points of a chunk in parallel)
-      do k = 1, n, points_chunk
-         m = min(n, k + points_chunk - 1)
-         call compute_points(self, scene, columns, k, m, lines(k:m), statuses(k:m), values(:, k:m))
-         call progress_update(progress, int(m, int64))
-      end do
-      call progress_end(progress)
-      call write_header(file, chart_header(scene, outside(self), columns), chart_names(columns), &
-                        error, names_line=scene%names_line, records=[n, 1])
-      if (scene%binary .and. .not. allocated(error)) call write_records(file, values, error)
-      do k = 1, n
-         if (allocated(error) .or. scene%binary) exit
-         call write_text(file, trim(lines(k)), error)
-      end do
-      call finish_output(file, error)
-      if (allocated(error)) return
-      if (any(statuses == status_roundoff)) then
-         k = findloc(statuses, status_roundoff, dim=1)
-         call warn_inaccurate(scene, int(count(statuses == status_roundoff), int64), self%points(:, k))
-      end if
-      if (any(statuses == status_failed)) then
-         k = findloc(statuses, status_failed, dim=1)
-         call failed_points_error(scene, int(count(statuses == status_failed), int64), int(n, int64), &
-                                  self%points(:, k), error)
-      end if
-   end subroutine points_run
 
    !> The points.
    pure function points_point_count(self) result(n)

@@ -11,15 +11,14 @@
 !> A point that cannot be computed carries status 2 and placeholders, and the run ends with
 !> err_points_failed after the file is written; the file is written atomically.
 !>
-!> Written as text, chart and points run in units (hillstab_batch_run_units: a chart's row,
-!> up to 64 consecutive points of a points list), on OpenMP threads, with checkpoints and
-!> `--resume`, and spread over processes by the MPI program. The points of a chart's row
-!> share their nodes (`system_row_values`); each point of a points list is computed alone
-!> (`system_values`). In binary the task's own loop computes the same values.
+!> Chart and points run in units (hillstab_batch_run_units: a chart's row, up to 64
+!> consecutive points of a points list), text or binary, on OpenMP threads, with
+!> checkpoints and `--resume`, and spread over processes by the MPI program. The points of
+!> a chart's row share their nodes (`system_row_values`); each point of a points list is
+!> computed alone (`system_values`).
 module hillstab_batch_tasks_system
    use hillstab_core_kinds, only: wp, int64, version_string
-   use hillstab_core_error, only: error_t, set_error, err_input, err_points_failed
-   use hillstab_core_status, only: status_roundoff
+   use hillstab_core_error, only: error_t, set_error, err_points_failed
    use hillstab_core_text, only: real_text, integer_text, lower_case
    use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system, system_equation_text, &
       system_description
@@ -27,7 +26,7 @@ module hillstab_batch_tasks_system
    use hillstab_batch_tasks_system_values, only: n_fixed, system_point_values, system_values, system_row_values, &
       scalar_path, failure_text, system_column_names, system_column_table, status_column
    use hillstab_batch_output_columns, only: column_t, put_row
-   use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output, scene_header
+   use hillstab_batch_scene_types, only: scene_t, task_t, scene_header
    use hillstab_batch_tasks_regions, only: chart_region_lines
    use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail
@@ -35,9 +34,7 @@ module hillstab_batch_tasks_system
    use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_alpha, grid_beta, &
       grid_point, grid_size_text
    use hillstab_batch_scene_group_points, only: points_group, read_points_group
-   use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text, join_lines, &
-      write_records, record_bytes
-   use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
+   use hillstab_batch_output_file, only: output_file_t, write_header, join_lines, record_bytes
    use hillstab_core_parallel, only: max_threads
    use hillstab_batch_tasks_system_cost, only: check_system_cost, extreme_name
    use, intrinsic :: iso_fortran_env, only: error_unit
@@ -49,8 +46,6 @@ module hillstab_batch_tasks_system
 
    !> Most exponent columns (mu_1 … mu_n, n ≤ max_dof).
    integer, parameter :: max_dof_columns = 20
-   !> Rows of a chart computed at once (in parallel), then written in order.
-   integer, parameter :: chart_block_rows = 16
    !> Bytes of a file's `#` header, an upper estimate (the matrices of n = 20 and 32
    !> harmonics written in full take about 0.7 MB).
    integer(int64), parameter :: header_bytes = 1000000
@@ -78,7 +73,6 @@ module hillstab_batch_tasks_system
       type(chart_grid_t) :: grid  !! `&chart`
    contains
       procedure :: read => chart_read
-      procedure :: run => chart_run
       procedure :: declarations => chart_declarations
       procedure :: size_variables => chart_size_variables
       procedure :: memory_bytes => chart_memory_bytes
@@ -96,7 +90,6 @@ module hillstab_batch_tasks_system
       real(wp), allocatable :: points(:, :)   !! (2, n): α, β
    contains
       procedure :: read => points_read
-      procedure :: run => points_run
       procedure :: declarations => points_declarations
       procedure :: memory_bytes => points_memory_bytes
       procedure :: estimated_bytes => points_estimated_bytes
@@ -304,25 +297,25 @@ contains
       text = grid_size_text(self%grid, .false.)
    end function chart_size_variables
 
-   !> The buffers of a chart run, each row n_beta points. Binary (`chart_run`): the values of
-   !> a block of rows (`chart_block_rows`, or fewer when the grid has fewer). Text (in units,
-   !> hillstab_batch_run_units): the text of up to 16 rows a thread waiting to be written, and
-   !> each thread's row of values and text. Besides them a run holds a few MB whatever the
-   !> grid (its nodes, one line per thread).
+   !> The buffers of a chart run in units (hillstab_batch_run_units), each row n_beta points:
+   !> up to 16 rows a thread waiting to be written (their text, or their records of the
+   !> chosen columns in binary), and each thread's row of values and text. Besides them a
+   !> run holds a few MB whatever the grid (its nodes, one line per thread).
    function chart_memory_bytes(self, scene) result(bytes)
       class(system_chart_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
-      integer(int64) :: bytes, row_values, row_text
+      integer(int64) :: bytes, row_values, row_text, row_written
       integer :: n
       n = scene%system%dof()
       row_values = 8*int(n_fixed + n, int64)*self%grid%n_beta
       row_text = int(row_text_width(size(self%chosen)), int64)*self%grid%n_beta
+      row_written = row_text
       if (scene%binary) then
-         bytes = int(min(chart_block_rows, self%grid%n_alpha), int64)*row_values
-      else
-         bytes = int(min(16*max_threads(), self%grid%n_alpha), int64)*row_text + &
-                 int(max_threads(), int64)*(row_values + 2*row_text)
+         row_written = 8*int(size(self%chosen), int64)*self%grid%n_beta
+         row_text = 0
       end if
+      bytes = int(min(16*max_threads(), self%grid%n_alpha), int64)*row_written + &
+              int(max_threads(), int64)*(row_values + 2*row_text)
    end function chart_memory_bytes
 
    !> Header plus n_alpha n_beta lines of the chosen columns (or their float64 records) and
@@ -340,97 +333,6 @@ contains
       integer, intent(in) :: n_columns  !! columns chosen
       row_text_width = 26*n_columns + 1
    end function row_text_width
-
-   !> The chart: blocks of rows in parallel, written in order (a blank line after each α).
-   !> The buffers are allocated before the output is opened: a machine short of memory
-   !> leaves no file and an error naming the grid.
-   subroutine chart_run(self, scene, quiet, error)
-      class(system_chart_task_t), intent(in) :: self  !! the task
-      type(scene_t), intent(in) :: scene  !! its scene
-      logical, intent(in) :: quiet  !! no progress on stderr
-      type(error_t), allocatable, intent(out) :: error  !! err_points_failed naming the first failed point
-      type(output_file_t) :: file
-      type(system_form_t) :: form
-      type(system_method_t) :: method
-      type(error_t), allocatable :: cause
-      character(len=:), allocatable :: texts(:), first_failure
-      real(wp), allocatable :: values(:, :, :)
-      integer :: n, n_columns, first, last, i, k, n_failed(chart_block_rows), failed_total, rows, alloc_status
-      integer(int64) :: text_lengths(chart_block_rows), text_length, n_roundoff
-      real(wp) :: first_roundoff(2)
-      type(progress_t) :: progress
-      character(len=400) :: failures(chart_block_rows)
-      call prepare_system(scene%system, scene%epsilon, form, cause)
-      if (allocated(cause)) then
-         call fail(error, scene%source, "system", "mass", cause%message)
-         return
-      end if
-      method = system_method_t(scene%method%kind, scene%method%tolerance)
-      n = form%n
-      n_columns = n_fixed + n
-      rows = min(chart_block_rows, self%grid%n_alpha)
-      text_length = int(row_text_width(size(self%chosen)), int64)*self%grid%n_beta
-      ! a binary file writes the values alone
-      if (scene%binary) text_length = 1
-      allocate (values(n_columns, self%grid%n_beta, rows), stat=alloc_status)
-      if (alloc_status == 0) allocate (character(len=text_length) :: texts(rows), stat=alloc_status)
-      if (alloc_status /= 0) then
-         call set_error(error, err_input, scene%source//": "//self%size_variables()//": the buffers of "// &
-            integer_text(rows)//" rows cannot be allocated (out of memory): lower n_beta")
-         return
-      end if
-      call open_scene_output(scene, file, error)
-      if (allocated(error)) return
-      call write_header(file, system_lines(scene, "stability chart", self%chosen, &
-                                           chart_region_lines(scene, self%grid)), &
-                        chosen_names(scene%system, self%chosen), &
-                        error, names_line=scene%names_line, records=[self%grid%n_beta, self%grid%n_alpha])
-      failed_total = 0
-      n_roundoff = 0
-      first_roundoff = 0.0_wp
-      first_failure = ""
-      call progress_begin(progress, int(self%grid%n_alpha, int64), quiet, "rows")
-      first = 1
-      do while (first <= self%grid%n_alpha .and. .not. allocated(error))
-         last = min(first + rows - 1, self%grid%n_alpha)
-         n_failed = 0
-         failures = ""
-         !$omp parallel do schedule(dynamic, 1) default(shared) private(i)
-         do i = first, last
-            call chart_row(self, scene, form, method, i, values(:, :, i - first + 1), texts(i - first + 1), &
-                           text_lengths(i - first + 1), n_failed(i - first + 1), failures(i - first + 1))
-         end do
-         !$omp end parallel do
-         do i = first, last
-            if (n_failed(i - first + 1) > 0 .and. len(first_failure) == 0) first_failure = trim(failures(i - first + 1))
-            failed_total = failed_total + n_failed(i - first + 1)
-            k = findloc(nint(values(status_column(n), :, i - first + 1)), status_roundoff, dim=1)
-            if (k > 0) then
-               if (n_roundoff == 0) first_roundoff = values(1:2, k, i - first + 1)
-               n_roundoff = n_roundoff + count(nint(values(status_column(n), :, i - first + 1)) == status_roundoff)
-            end if
-            if (scene%binary) then
-               call write_records(file, values(self%chosen, :, i - first + 1), error)
-            else
-               if (i > 1) then
-                  call write_text(file, "", error)
-                  if (allocated(error)) exit
-               end if
-               call write_text(file, texts(i - first + 1)(:text_lengths(i - first + 1)), error)
-            end if
-            if (allocated(error)) exit
-         end do
-         call progress_update(progress, int(last, int64))
-         first = last + 1
-      end do
-      call progress_end(progress)
-      call finish_output(file, error)
-      if (allocated(error)) return
-      call warn_roundoff(scene, n_roundoff, first_roundoff)
-      if (failed_total > 0) call set_error(error, err_points_failed, scene%source//": "// &
-         integer_text(failed_total)//" of "//integer_text(int(self%grid%n_alpha, int64)*self%grid%n_beta)// &
-         " points failed (status 2); the first: "//first_failure)
-   end subroutine chart_run
 
    !> One row of the chart: its values and its text (the points' lines joined by new lines,
    !> no final one).
@@ -494,7 +396,9 @@ contains
       integer :: n, n_failed, offset
       n = self%form%n
       allocate (values(n_fixed + n, self%grid%n_beta))
-      allocate (character(len=int(row_text_width(size(self%chosen)), int64)*self%grid%n_beta + 1) :: buffer)
+      ! (a binary row's values are all it needs)
+      allocate (character(len=merge(1_int64, int(row_text_width(size(self%chosen)), int64)*self%grid%n_beta + 1, &
+                                    scene%binary)) :: buffer)
       offset = merge(1, 0, unit > 1 .and. .not. scene%binary)
       if (offset == 1) buffer(1:1) = new_line("a")
       call chart_row(self, scene, self%form, system_method_t(scene%method%kind, scene%method%tolerance), unit, &
@@ -557,74 +461,17 @@ contains
       groups(1) = points_group()
    end function points_declarations
 
-   !> The values of every point (written once all are computed).
+   !> The points themselves, and the points of the units the driver holds at once (up to
+   !> 16 units of at most 64 points a thread, hillstab_batch_run_units): each its values,
+   !> its line and the unit's joined text (or records).
    function points_memory_bytes(self, scene) result(bytes)
       class(system_points_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
-      integer(int64) :: bytes
-      bytes = 8*int(n_fixed + scene%system%dof(), int64)*int(size(self%points, 2), int64)
+      integer(int64) :: bytes, n_points, held
+      n_points = size(self%points, 2)
+      held = min(n_points, int(16*64, int64)*max_threads())
+      bytes = 16*n_points + held*(8*int(n_fixed + scene%system%dof(), int64) + 2*(n_fixed + max_dof_columns)*26)
    end function points_memory_bytes
-
-   !> The points, in file order.
-   subroutine points_run(self, scene, quiet, error)
-      class(system_points_task_t), intent(in) :: self  !! the task
-      type(scene_t), intent(in) :: scene  !! its scene
-      logical, intent(in) :: quiet  !! no progress on stderr
-      type(error_t), allocatable, intent(out) :: error  !! err_points_failed naming the first failed point
-      type(output_file_t) :: file
-      type(system_form_t) :: form
-      type(error_t), allocatable :: cause
-      real(wp), allocatable :: v(:, :)
-      character(len=:), allocatable :: message, first_failure
-      character(len=(n_fixed + max_dof_columns)*26) :: line
-      logical :: failed
-      type(progress_t) :: progress
-      integer :: k, n_failed, length, alloc_status
-      call prepare_system(scene%system, scene%epsilon, form, cause)
-      if (allocated(cause)) then
-         call fail(error, scene%source, "system", "mass", cause%message)
-         return
-      end if
-      allocate (v(n_fixed + form%n, size(self%points, 2)), stat=alloc_status)
-      if (alloc_status /= 0) then
-         call set_error(error, err_input, scene%source//": &points: file: the values of "// &
-            integer_text(size(self%points, 2))//" points cannot be allocated (out of memory)")
-         return
-      end if
-      n_failed = 0
-      first_failure = ""
-      call progress_begin(progress, int(size(self%points, 2), int64), quiet)
-      do k = 1, size(self%points, 2)
-         call system_values(scene%system, form, system_method_t(scene%method%kind, scene%method%tolerance), &
-                            self%points(1, k), self%points(2, k), v(:, k), failed, message)
-         if (failed) then
-            n_failed = n_failed + 1
-            if (n_failed == 1) first_failure = "point "//integer_text(k)//" of "//self%path//": "//message
-         end if
-         call progress_update(progress, int(k, int64))
-      end do
-      call progress_end(progress)
-      call open_scene_output(scene, file, error)
-      if (allocated(error)) return
-      call write_header(file, system_lines(scene, "Floquet analysis at points", self%chosen), &
-                        chosen_names(scene%system, self%chosen), error, names_line=scene%names_line, &
-                        records=[size(self%points, 2), 1])
-      if (scene%binary) then
-         if (.not. allocated(error)) call write_records(file, v(self%chosen, :), error)
-      else
-         do k = 1, size(self%points, 2)
-            if (allocated(error)) exit
-            call point_line(self%table, self%chosen, v(:, k), line, length)
-            call write_text(file, line(:length), error)
-         end do
-      end if
-      call finish_output(file, error)
-      if (allocated(error)) return
-      k = findloc(nint(v(status_column(form%n), :)), status_roundoff, dim=1)
-      if (k > 0) call warn_roundoff(scene, int(count(nint(v(status_column(form%n), :)) == status_roundoff), int64), v(1:2, k))
-      if (n_failed > 0) call set_error(error, err_points_failed, scene%source//": "//integer_text(n_failed)// &
-         " of "//integer_text(size(self%points, 2))//" points failed (status 2); the first: "//first_failure)
-   end subroutine points_run
 
    !> Header plus a line (or a record) of the chosen columns per point.
    pure function points_estimated_bytes(self, scene) result(bytes)
