@@ -16,7 +16,10 @@ def test_damped_values_are_of_x_and_the_trace_of_chi():
         assert np.allclose(r.lambda_max, np.exp(-epsilon) * chi, rtol=1e-8)
         assert np.allclose(r.exponent, np.log(r.lambda_max) / 2.0, rtol=1e-12, atol=1e-15)
         inside = (np.abs(s1) < 2.0) & (r.stable == 1.0)
-        assert inside.sum() > 20 and np.array_equal(r.lambda_max[inside], np.exp(-epsilon[inside]))
+        # e^{-eps} as the library's exp gives it: within one unit in the last place of numpy's
+        # (the two exp need not round alike: numpy's vectorised exp differs by CPU)
+        expected = np.exp(-epsilon[inside])
+        assert inside.sum() > 20 and np.all(np.abs(r.lambda_max[inside] - expected) <= np.spacing(expected))
 
 
 

@@ -9,7 +9,7 @@
 !> directory open to others) is refused and left untouched, as is a checkpoint whose `data`
 !> or `state` is a FIFO (never opened: no hang), a directory or a symbolic link; a second run
 !> is refused while the first writes; a write error keeps the checkpoint and a resumed run
-!> completes the file; a checkpoint of another kind of problem (a scalar chart's under a
+!> completes the file (text and binary); a checkpoint of another kind of problem (a scalar chart's under a
 !> system scene, a state recording a system chart under the scalar scene) is never resumed.
 module test_checkpoint
    use hillstab_core_kinds, only: wp, int64
@@ -59,6 +59,7 @@ contains
          new_unittest("second_run_refused", second_run_refused), &
          new_unittest("write_error_keeps_checkpoint", write_error_keeps_checkpoint), &
          new_unittest("binary_resumed_after_kill", binary_resumed_after_kill), &
+         new_unittest("binary_write_error_resumed", binary_write_error_resumed), &
          new_unittest("scene_differences", scene_differences), &
          new_unittest("long_output_names", long_output_names), &
          new_unittest("planted_members_kept", planted_members_kept), &
@@ -943,6 +944,55 @@ contains
       call release_fixture(binary_points)
       call delete_file(points)
    end subroutine binary_resumed_after_kill
+
+   !> A binary points run (400 points, 35 kB of records) that hits a file-size limit of
+   !> 30 kB fails (exit 2) keeping its checkpoint and saying so; resumed without the limit it
+   !> writes the uninterrupted run's bytes.
+   subroutine binary_write_error_resumed(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=:), allocatable :: prefix, scene, points, output, directory, reference
+      character(len=40) :: lines(400)
+      type(error_t), allocatable :: error
+      integer(int64) :: bytes
+      integer :: k, done, status
+      prefix = scratch_prefix("ck_bin_limit")
+      scene = prefix//".nml"
+      points = prefix//".dat"
+      output = prefix//"_points.bin"
+      reference = prefix//".reference"
+      directory = checkpoint_directory(output)
+      do k = 1, size(lines)
+         write (lines(k), '(f8.4,1x,f8.4)') 9.8_wp*(k - 1)/size(lines), 12.0_wp - 14.0_wp*mod(7*k, 31)/31.0_wp
+      end do
+      call write_file(points, lines)
+      call write_file(scene, [padded("&scene task='points', method='magnus6', format='binary', output='"//prefix// &
+                                     "' /"), padded("&points file='"//points//"' /")])
+      call run_scene_file(scene, .true., error)
+      call check(ctx, .not. allocated(error), "the uninterrupted run")
+      call check(ctx, size_of(output) > 35000_int64, "its records: "//integer_text(size_of(output))//" bytes")
+      status = shell("mv '"//output//"' '"//reference//"'")
+      call limit_file_size(30000_int64)
+      call run_scene_file(scene, .true., error, options=checkpoint_options_t(interval=0.0_wp, command="RESUME"))
+      call lift_file_size_limit()
+      call check(ctx, allocated(error), "the write error stops the run")
+      if (allocated(error)) then
+         call check(ctx, error%code == err_io .and. contains_text(error%message, "File too large"), error%message)
+         call check(ctx, contains_text(error%message, "the checkpoint '"//directory//"' keeps"), &
+                    "says the checkpoint is kept")
+      end if
+      call state_of(directory, done, bytes)
+      call check(ctx, done > 0 .and. bytes <= 30000_int64, "the checkpoint holds the units written: "// &
+                 integer_text(done))
+      call check(ctx, .not. file_exists(output) .and. .not. any_temp_file(output), "no output, no temporary file")
+      call run_scene_file(scene, .true., error, options=checkpoint_options_t(resume=.true.))
+      call check(ctx, .not. allocated(error), "resumed without the limit")
+      call check(ctx, same_file(output, reference), "the uninterrupted run's bytes")
+      call check(ctx, .not. directory_exists(directory), "the checkpoint is removed")
+      call delete_file(output)
+      call delete_file(reference)
+      call delete_file(points)
+      call delete_file(scene)
+   end subroutine binary_write_error_resumed
 
    !> The first difference between two effective scenes, by group and variable.
    subroutine scene_differences(ctx)
