@@ -3,7 +3,8 @@
 # with CMake (-DHILLSTAB_MPI=ON), then checks against the single-process program:
 #  - np = 1, 2, 3 write the same file as hillstab (charts with many and few rows, damped,
 #    a points list, a Lyapunov map, a non-distributed task, a system's chart and points, a system of one
-#    equation's chart; binary charts and points lists, scalar and system);
+#    equation's chart; binary charts and points lists, scalar and system; a chart over &physical
+#    amplitudes and frequencies, text and binary);
 #  - bad input (unknown variable, unwritable output) gives exit 2 on every rank, no hang,
 #    no file; a failing point is written as hillstab writes it (status 2, placeholders),
 #    with hillstab's message and exit 3 on every rank;
@@ -95,8 +96,13 @@ printf '%s\n' "&scene task='chart', model='system', epsilon=0.02, format='binary
    "&chart alpha_min=0, alpha_max=1.2, n_alpha=23, beta_min=0, beta_max=3, n_beta=31 /" >"$work/bsys.nml"
 printf '%s\n' "&scene task='points', model='system', method='rk', tolerance=1e-9, format='binary', output='$work/bsyspts' /" \
    "$sysgroup" "&points file='$work/syspoints.dat' /" >"$work/bsyspts.nml"
+# a chart over &physical amplitudes and frequencies (a row an amplitude), text and binary
+printf '%s\n' "&scene task='chart', output='$work/phys' /" \
+   "&physical g = 9.81, r0 = 0.3, kappa = 0.1, a_min = 0.0, a_max = 0.2, n_a = 17, omega_min = 6, omega_max = 12, n_omega = 41 /" \
+   >"$work/phys.nml"
+sed "s/output=/format='binary', output=/; s#/phys'#/bphys'#" "$work/phys.nml" >"$work/bphys.nml"
 for name in many:chart few:chart pts:points coef:coefficient lyap:lyapunov sys:chart syspts:points one:chart \
-   bmany:chart:bin bfew:chart:bin bpts:points:bin bsys:chart:bin bsyspts:points:bin; do
+   bmany:chart:bin bfew:chart:bin bpts:points:bin bsys:chart:bin bsyspts:points:bin phys:chart bphys:chart:bin; do
    IFS=: read -r scene task ext <<<"$name"
    file="$work/${scene}_${task}.${ext:-dat}"
    "$serial" -q "$work/$scene.nml" && mv "$file" "$work/$scene.serial"

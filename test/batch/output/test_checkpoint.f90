@@ -907,9 +907,10 @@ contains
    end subroutine write_error_keeps_checkpoint
 
    !> Binary files keep checkpoints as text files do: a chart (24 rows of 300 points) killed
-   !> after 1, 12 (with a partial record after the recorded bytes) and 20 rows, and a
-   !> system's points list (320 points, 5 units of 64) killed after 2 units, resumed: the
-   !> files of the uninterrupted runs, byte for byte.
+   !> after 1, 12 (with a partial record after the recorded bytes) and 20 rows, a chart over
+   !> `&physical` amplitudes and frequencies (12 rows of 150) killed after 5, and a system's
+   !> points list (320 points, 5 units of 64) killed after 2 units, resumed: the files of the
+   !> uninterrupted runs, byte for byte.
    subroutine binary_resumed_after_kill(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(fixture_t) :: binary_chart, binary_points
@@ -928,6 +929,15 @@ contains
          call kill_and_resume(ctx, binary_chart, 12, .true.)
          call kill_and_resume(ctx, binary_chart, 20, .false.)
       end if
+      call release_fixture(binary_chart)
+      ! a chart over &physical amplitudes and frequencies, a row an amplitude
+      call make_fixture(binary_chart, "ck_phys", [ &
+         padded("&scene task='chart', method='magnus6', tolerance=1e-12, format='binary', output='"// &
+                scratch_prefix("ck_phys")//"' /"), &
+         padded("&physical g = 9.81, r0 = 0.3, kappa = 0.1, a_min = 0.0, a_max = 0.2, n_a = 12, omega_min = 6, "// &
+                "omega_max = 12, n_omega = 150 /")], "chart", 12, ".bin")
+      call check(ctx, binary_chart%ready, "the uninterrupted chart over &physical ran")
+      if (binary_chart%ready) call kill_and_resume(ctx, binary_chart, 5, .true.)
       call release_fixture(binary_chart)
       points = scratch_prefix("ck_bin_points")//".dat"
       do k = 1, size(lines)

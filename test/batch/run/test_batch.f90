@@ -12,6 +12,7 @@ module test_batch
    use hillstab_core_kinds, only: wp, int64
    use hillstab_core_text, only: integer_text, real_text
    use hillstab_hill_model, only: hill_point_t
+   use hillstab_hill_units, only: physical_t, physical_epsilon
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_system, only: system_form_t, prepare_system
    use hillstab_integrate_monodromy, only: monodromy_trace
@@ -174,23 +175,31 @@ contains
       type(scene_t), intent(in) :: scene
       character(len=*), intent(in) :: path, label
       real(wp), intent(in) :: relative
-      real(wp), allocatable :: alpha(:), beta(:), s(:)
+      real(wp), allocatable :: alpha(:), beta(:), s(:), omega(:)
       type(trace_t) :: tr
       type(error_t), allocatable :: error
-      real(wp) :: worst
+      type(physical_t) :: p
+      real(wp) :: worst, epsilon
       integer :: k, step, n, compared
       compared = 0
       call column_of(path, "alpha", alpha)
       call column_of(path, "beta", beta)
       call column_of(path, "S", s)
+      ! over `&physical` amplitudes and frequencies, epsilon is the pendulum's at each omega
+      call column_of(path, "omega", omega)
       n = size(s)
       call check(ctx, n > 0 .and. size(alpha) == n .and. size(beta) == n, label//": alpha, beta and S read")
       if (n == 0 .or. size(alpha) /= n .or. size(beta) /= n) return
       step = max(1, n/40)
       worst = 0.0_wp
       do k = 1, n, step
-         call monodromy_trace(scene%model, hill_point_t(alpha(k), beta(k), &
-                              scene%model%point_damping(alpha(k), scene%epsilon)), scene%method, tr, error)
+         epsilon = scene%model%point_damping(alpha(k), scene%epsilon)
+         if (size(omega) == n) then
+            p = scene%pendulum
+            p%omega = omega(k)
+            epsilon = physical_epsilon(p)
+         end if
+         call monodromy_trace(scene%model, hill_point_t(alpha(k), beta(k), epsilon), scene%method, tr, error)
          if (allocated(error)) cycle
          compared = compared + 1
          worst = max(worst, abs(tr%value - s(k))/max(1.0_wp, abs(tr%value)))
@@ -238,7 +247,8 @@ contains
    end subroutine check_system_alone
 
    !> Charts with few rows (chunks of a row in parallel) and many rows (rows in parallel),
-   !> damped, by segments, on log axes: the driver's files, and S as each point alone.
+   !> damped, by segments, over `&physical` amplitudes and frequencies (a row an amplitude),
+   !> on log axes: the driver's files, and S as each point alone.
    subroutine chart_equals_serial(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(scene_t) :: scene
@@ -258,6 +268,12 @@ contains
          padded("&chart alpha_min=0, alpha_max=9, n_alpha=17, beta_min=-2, beta_max=12, n_beta=1 /")], scene)
       call compare_runs(ctx, scene, "segments chart, one column", written, 17 + 16)
       call check_alone(ctx, scene, written, 1.0e-12_wp, "segments chart, one column")
+      call delete_file(written)
+      call scene_from("batch_phys", [padded("&scene task='chart', output='"//scratch_prefix("phys")// &
+         "' /"), padded("&physical g = 9.81, r0 = 0.3, kappa = 0.1, a_min = 0.0, a_max = 0.2, n_a = 13, "// &
+         "omega_min = 6, omega_max = 12, n_omega = 29 /")], scene)
+      call compare_runs(ctx, scene, "chart over &physical, 13 amplitudes", written, 13*29 + 12)
+      call check_alone(ctx, scene, written, 1.0e-8_wp, "chart over &physical, 13 amplitudes")
       call delete_file(written)
       call scene_from("batch_log", [padded("&scene task='chart', output='"//scratch_prefix("log")//"' /"), &
          padded("&chart alpha_min=0.01, alpha_max=9.8, n_alpha=9, alpha_scale='log', beta_min=0.01, beta_max=100, "// &
@@ -386,7 +402,7 @@ contains
    !> first (`compare_runs`), and its records are the text file's numbers, point by point
    !> (alpha and beta exactly: their 17 digits give the double back; every other column to
    !> its digits, at least 4): scalar charts with few rows and many, every column and the
-   !> verdict only, damped; a points list; a system's chart, damped and not, and points
+   !> verdict only, damped, over `&physical`; a points list; a system's chart, damped and not, and points
    !> list. The records after the header are as many as the points times the columns.
    subroutine binary_equals_serial(ctx)
       type(test_context_t), intent(inout) :: ctx
@@ -399,6 +415,9 @@ contains
       call compare_binary(ctx, "bmany", [padded("&scene task='chart', epsilon=0.2, FORMAT output='OUT' /"), &
          padded("&chart alpha_min=0, alpha_max=9.8, n_alpha=40, beta_min=-2, beta_max=12, n_beta=41 /")], &
          "damped binary chart, 40 rows")
+      call compare_binary(ctx, "bphys", [padded("&scene task='chart', FORMAT output='OUT' /"), &
+         padded("&physical g = 9.81, r0 = 0.3, a_min = 0.0, a_max = 0.2, n_a = 11, omega_min = 6, omega_max = 12, "// &
+                "n_omega = 23 /")], "binary chart over &physical, 11 amplitudes")
       call compare_binary(ctx, "bverdict", [padded("&scene task='chart', columns='alpha beta stable', FORMAT "// &
          "output='OUT' /"), padded("&chart alpha_min=0, alpha_max=9.8, n_alpha=40, beta_min=-2, beta_max=12, "// &
          "n_beta=37 /")], "binary verdict chart, 40 rows")

@@ -101,8 +101,8 @@ contains
          call settle_checkpoint(scene, options, error)
          if (allocated(error)) return
       end if
-      if (resume) call checkpoint_note(options, scene%source//": this run keeps no checkpoint (only charts over "// &
-         "&chart, points and lyapunov runs do): running it afresh")
+      if (resume) call checkpoint_note(options, scene%source//": this run keeps no checkpoint (only charts, points "// &
+         "and lyapunov runs do): running it afresh")
       call scene%task%run(scene, quiet, error)
       call name_scene_file(scene, error)
    end subroutine run_scene

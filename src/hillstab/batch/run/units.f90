@@ -804,9 +804,8 @@ contains
       end if
    end function problem_kind
 
-   !> For a run that keeps no checkpoint (a task other than chart, points and lyapunov, a
-   !> chart over an amplitude and frequency grid): what is at its output's checkpoint name is dealt with as a
-   !> run that keeps one deals with it, so that a later --resume never continues a
+   !> For a run that keeps no checkpoint (a task other than chart, points and lyapunov): what
+   !> is at its output's checkpoint name is dealt with as a run that keeps one deals with it, so that a later --resume never continues a
    !> checkpoint this run has overwritten the output of. Without `resume`, a checkpoint found
    !> is discarded with a note (an incomplete or damaged one too); with it, a checkpoint
    !> (of another kind of problem: this run keeps none) is refused, err_input, and kept; an

@@ -29,7 +29,7 @@ module hillstab_batch_scene_types
    use hillstab_batch_output_file, only: output_file_t, open_output
    implicit none
    private
-   public :: scene_t, task_t, output_path, scene_namelist, scene_header, open_scene_output, physical_points, task_run_by_units, &
+   public :: scene_t, task_t, output_path, scene_namelist, scene_header, open_scene_output, physical_points, &
       physical_summary, add_warning
 
    !> A task: what it reads, runs and writes. Concrete tasks extend it (the registry,

@@ -6,7 +6,7 @@
 !> in parallel that share the meshes method auto prepares for the row. A point that cannot
 !> be computed does not stop the chart: its row carries status 2 and placeholders, and the
 !> run ends with err_points_failed after the file is written. A chart over `&physical`
-!> amplitudes and frequencies runs in a loop of its own (`chart_run`).
+!> amplitudes and frequencies runs in units too, one amplitude a row (`physical_row`).
 module hillstab_batch_tasks_chart
    use hillstab_core_kinds, only: wp, int64, pi
    use hillstab_core_error, only: error_t
@@ -16,23 +16,20 @@ module hillstab_batch_tasks_chart
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict, period_damping
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, batch_plan_t, prepare_batch, need_verdict
-   use hillstab_batch_scene_types, only: scene_t, open_scene_output, task_run_by_units
+   use hillstab_batch_scene_types, only: scene_t
    use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail, group_present
    use hillstab_batch_scene_checks, only: check_integration_cost, max_grid_count
    use hillstab_hill_units, only: physical_t, physical_beta, physical_epsilon
-   use hillstab_hill_model, only: hill_point_t
+   use hillstab_hill_model, only: hill_point_t, hill_model_t
    use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_alpha, grid_beta, grid_point, &
       grid_size_text
-   use hillstab_batch_tasks_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, chart_line, &
-      chart_header, chart_layout_t, chart_names, &
-      point_amplitude, verdict_lines, &
-      scene_chart_columns, check_method_runs, warn_inaccurate, failed_points_error, chart_line_length, evaluate_point, &
-      header_bytes, text_row_bytes, binary_row_bytes, col_physical
+   use hillstab_batch_tasks_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, &
+      chart_line, chart_header, chart_layout_t, chart_names, point_amplitude, verdict_lines, scene_chart_columns, &
+      check_method_runs, chart_line_length, evaluate_point, header_bytes, text_row_bytes, binary_row_bytes, &
+      col_physical
    use hillstab_batch_tasks_regions, only: chart_region_lines
-   use hillstab_batch_output_file, only: output_file_t, finish_output, discard_output, write_header, write_text, &
-      write_records, record_bytes, joined_lines, join_lines
-   use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
+   use hillstab_batch_output_file, only: output_file_t, write_header, record_bytes, join_lines
    use hillstab_core_parallel, only: max_threads
    implicit none
    private
@@ -48,9 +45,13 @@ module hillstab_batch_tasks_chart
       !> `&physical a_min, a_max, n_a, omega_min, omega_max, n_omega` without `&chart`: the
       !> chart runs over (a, ω) at fixed r0, g (blocks of constant a)
       logical :: physical_grid = .false.
+      !> a chart over `&physical`: the pendulum (r0, g, κ), for each point's (α, β) (`point_of`)
+      type(physical_t) :: pendulum
+      real(wp), allocatable :: amplitudes(:)  !! its amplitudes a [m], one a row
+      real(wp), allocatable :: omegas(:)      !! its frequencies ω [rad/s], along a row
+      class(hill_model_t), allocatable :: model  !! the scene's model (its α of a pendulum)
    contains
       procedure :: read => chart_read
-      procedure :: run => chart_run
       procedure :: declarations => chart_declarations
       procedure :: estimated_bytes => chart_estimated_bytes
       procedure :: memory_bytes => chart_memory_bytes
@@ -107,6 +108,10 @@ contains
             return
          end if
          self%physical_grid = .true.
+         self%pendulum = scene%pendulum
+         self%amplitudes = scene%amplitudes
+         self%omegas = scene%omegas
+         allocate (self%model, source=scene%model)
          allocate (self%groups(0))
          self%grid%n_alpha = size(scene%amplitudes)
          self%grid%n_beta = size(scene%omegas)
@@ -153,105 +158,51 @@ contains
       bytes = int(self%grid%n_beta, int64)*(rows*per_point + 31 + 64*max_threads())
    end function chart_memory_bytes
 
-   !> The chart task in a loop of its own: a chart over `&physical` amplitudes and frequencies
-   !> (its points are off the (α, β) grid: one process). A chart over `&chart` runs in units,
-   !> its rows (`unit_text`), which the scene runner chooses; called for one, this says so.
-   subroutine chart_run(self, scene, quiet, error)
-      class(chart_task_t), intent(in) :: self  !! the task
-      type(scene_t), intent(in) :: scene  !! its scene
-      logical, intent(in) :: quiet  !! no progress on stderr
-      type(error_t), allocatable, intent(out) :: error  !! err_io, err_points_failed, ...
-      if (self%physical_grid) then
-         call physical_chart_run(scene, quiet, error)
-      else
-         call task_run_by_units(self, scene, quiet, error)
-      end if
-   end subroutine chart_run
-
-   !> A chart over (a, omega) of `&physical`, r0 and g fixed: the points a_i, omega_j, in
-   !> blocks of constant a (one blank line between), each with alpha = a pi^2/rho(omega),
-   !> beta = g pi^2/(rho omega^2), epsilon = kappa pi/omega (eqs. (4), (24), (46)); every
-   !> point lies in 0 <= a < rho(omega) (the scene reader refuses a chart reaching the pivot).
-   subroutine physical_chart_run(scene, quiet, error)
-      type(scene_t), intent(in) :: scene
-      logical, intent(in) :: quiet
-      type(error_t), allocatable, intent(out) :: error
-      type(output_file_t) :: file
-      type(progress_t) :: progress
+   !> Row `unit` of a chart over `&physical` amplitudes and frequencies (one amplitude a, every
+   !> ω; blocks of constant a): each point's α, β and ε from the pendulum, its line (a blank
+   !> line before every row but the first) or its records, the points in parallel.
+   subroutine physical_row(scene, columns, unit, text, statuses)
+      type(scene_t), intent(in) :: scene  !! the chart's scene
+      type(chart_layout_t), intent(in) :: columns  !! the columns written
+      integer, intent(in) :: unit  !! the row: the amplitude `scene%amplitudes(unit)`
+      character(len=:), allocatable, intent(out) :: text  !! the lines, no final new line (or records)
+      integer, intent(out) :: statuses(:)  !! per point
       character(len=chart_line_length), allocatable :: lines(:)
-      integer, allocatable :: statuses(:), lengths(:), ids(:)
-      type(chart_layout_t) :: columns
-      real(wp), allocatable :: values(:, :), alphas(:), betas(:)
+      integer, allocatable :: lengths(:)
+      real(wp), allocatable :: values(:, :)
       type(floquet_t) :: f
       type(error_t), allocatable :: cause
       type(physical_t) :: p
-      real(wp) :: v(n_chart_columns), first_failed(2), first_inaccurate(2), epsilon
-      integer(int64) :: n_failed, n_inaccurate
-      integer :: i, j, n_a, n_omega
-      logical :: outside
-      n_a = size(scene%amplitudes)
-      n_omega = size(scene%omegas)
-      call scene_chart_columns(scene, columns, error)
-      if (allocated(error)) return
+      real(wp) :: v(n_chart_columns), alpha, beta, epsilon
+      integer :: j, n_omega
+      integer :: ids(size(columns%ids))  ! the binary records' columns (a gather through `columns` allocated)
       ids = columns%ids
-      call open_scene_output(scene, file, error)
-      if (allocated(error)) return
-      outside = .false.
-      call write_header(file, chart_header(scene, outside, columns), chart_names(columns), error, &
-                        names_line=scene%names_line, records=[n_omega, n_a])
-      if (allocated(error)) then
-         call discard_output(file)
-         return
-      end if
-      allocate (lines(n_omega), lengths(n_omega), statuses(n_omega), values(size(columns%ids), n_omega), alphas(n_omega), &
-                betas(n_omega))
-      n_failed = 0
-      n_inaccurate = 0
-      call progress_begin(progress, int(n_a, int64)*n_omega, quiet)
-      do i = 1, n_a
-         !$omp parallel do schedule(dynamic) default(shared) private(j, p, f, cause, v, epsilon)
-         do j = 1, n_omega
-            p = scene%pendulum
-            p%omega = scene%omegas(j)
-            p%a = scene%amplitudes(i)
-            alphas(j) = scene%model%physical_alpha(p)
-            betas(j) = physical_beta(p)
-            epsilon = physical_epsilon(p)
-            call evaluate_point(scene, alphas(j), betas(j), f, cause, statuses(j), epsilon, columns)
-            if (statuses(j) == status_failed) then
-               v = failed_values(columns, alphas(j), betas(j), in_physical_domain(alphas(j), betas(j)), p%a, p%omega)
-            else
-               v = chart_values(alphas(j), betas(j), f, in_physical_domain(alphas(j), betas(j)), statuses(j), &
-                                p%omega/pi, p%a, p%omega)
-            end if
-            values(:, j) = v(ids)
-            call chart_line(columns, v, lines(j), length=lengths(j))
-         end do
-         !$omp end parallel do
-         if (scene%binary) then
-            call write_records(file, values, error)
+      n_omega = size(scene%omegas)
+      allocate (lines(n_omega), lengths(n_omega), values(size(ids), n_omega))
+      !$omp parallel do schedule(dynamic) default(shared) private(j, p, f, cause, v, epsilon, alpha, beta)
+      do j = 1, n_omega
+         p = scene%pendulum
+         p%omega = scene%omegas(j)
+         p%a = scene%amplitudes(unit)
+         alpha = scene%model%physical_alpha(p)
+         beta = physical_beta(p)
+         epsilon = physical_epsilon(p)
+         call evaluate_point(scene, alpha, beta, f, cause, statuses(j), epsilon, columns)
+         if (statuses(j) == status_failed) then
+            v = failed_values(columns, alpha, beta, in_physical_domain(alpha, beta), p%a, p%omega)
          else
-            call write_text(file, joined_lines(lines, i > 1, lengths=lengths), error)
+            v = chart_values(alpha, beta, f, in_physical_domain(alpha, beta), statuses(j), p%omega/pi, p%a, p%omega)
          end if
-         if (allocated(error)) exit
-         if (any(statuses == status_roundoff)) then
-            j = findloc(statuses, status_roundoff, dim=1)
-            if (n_inaccurate == 0) first_inaccurate = [alphas(j), betas(j)]
-            n_inaccurate = n_inaccurate + count(statuses == status_roundoff)
-         end if
-         if (any(statuses == status_failed)) then
-            j = findloc(statuses, status_failed, dim=1)
-            if (n_failed == 0) first_failed = [alphas(j), betas(j)]
-            n_failed = n_failed + count(statuses == status_failed)
-         end if
-         call progress_update(progress, int(i, int64)*n_omega)
+         values(:, j) = v(ids)
+         call chart_line(columns, v, lines(j), length=lengths(j))
       end do
-      call progress_end(progress)
-      call finish_output(file, error)
-      if (allocated(error)) return
-      call warn_inaccurate(scene, n_inaccurate, first_inaccurate)
-      call failed_points_error(scene, n_failed, int(n_a, int64)*n_omega, first_failed, error)
-   end subroutine physical_chart_run
+      !$omp end parallel do
+      if (scene%binary) then
+         call record_bytes(values, text)
+      else
+         call join_lines(lines, unit > 1, text, lengths=lengths)
+      end if
+   end subroutine physical_row
 
    !> Whether the grid leaves the physical domain.
    pure logical function outside(grid)
@@ -390,7 +341,6 @@ contains
       class(chart_task_t), intent(in) :: self  !! the task
       integer(int64) :: n
       n = int(self%grid%n_alpha, int64)*self%grid%n_beta
-      if (self%physical_grid) n = 0   ! one process: the points are not on the (alpha, beta) grid
    end function chart_point_count
 
    !> One row a unit.
@@ -422,6 +372,10 @@ contains
       integer, allocatable :: lengths(:)
       real(wp), allocatable :: values(:, :)
       real(wp) :: alpha
+      if (self%physical_grid) then
+         call physical_row(scene, self%columns, unit, text, statuses)
+         return
+      end if
       alpha = grid_alpha(self%grid, unit)
       if (rows_in_parallel(self%grid) .and. self%columns%need <= need_verdict .and. .not. scene%binary) then
          call verdict_row_text(scene, self%columns, alpha, self%betas, self%beta_texts, unit > 1, text, statuses)
@@ -493,6 +447,11 @@ contains
       type(chart_layout_t) :: columns
       call scene_chart_columns(scene, columns, error)
       if (allocated(error)) return
+      if (self%physical_grid) then
+         call write_header(file, chart_header(scene, .false., columns), chart_names(columns), error, &
+                           names_line=scene%names_line, records=[self%grid%n_beta, self%grid%n_alpha])
+         return
+      end if
       call check_method_runs(scene, self%grid%alpha_min, self%grid%beta_min, error)
       if (allocated(error)) return
       call write_header(file, chart_header(scene, outside(self%grid), columns, chart_region_lines(scene, self%grid)), &
@@ -500,11 +459,20 @@ contains
                         records=[self%grid%n_beta, self%grid%n_alpha])
    end subroutine chart_open_units
 
-   !> (α, β) of point k, numbered row by row.
+   !> (α, β) of point k, numbered row by row (over `&physical`: the pendulum's at the row's
+   !> amplitude and the point's ω).
    pure function chart_point_of(self, k) result(point)
       class(chart_task_t), intent(in) :: self  !! the task
       integer(int64), intent(in) :: k  !! the point
       real(wp) :: point(2)
-      point = grid_point(self%grid, k)
+      type(physical_t) :: p
+      if (self%physical_grid) then
+         p = self%pendulum
+         p%a = self%amplitudes((k - 1)/self%grid%n_beta + 1)
+         p%omega = self%omegas(mod(k - 1, int(self%grid%n_beta, int64)) + 1)
+         point = [self%model%physical_alpha(p), physical_beta(p)]
+      else
+         point = grid_point(self%grid, k)
+      end if
    end function chart_point_of
 end module hillstab_batch_tasks_chart
