@@ -10,40 +10,37 @@
 !> largest |φ| reached and the energy errors. One line per point, blocks of constant α
 !> separated by a blank line (a grid), or in the points' order.
 !>
-!> Points are independent: the serial task computes them in parallel (OpenMP, dynamic
-!> schedule over batches of `lanes` consecutive points advanced together) in units of
-!> whole batches and writes the units in order; the MPI program (hillstab_batch_run_units)
-!> computes the same units on several ranks with `lyapunov_lines` and writes the same
-!> file. Batches start at fixed point indices (1, 1 + lanes, …), so that a point's
+!> Points are independent: the task runs in units of whole batches of `lanes` consecutive
+!> points advanced together (`lyapunov_lines`, the batches of a unit in parallel, dynamic
+!> schedule), which the unit driver (hillstab_batch_run_units) computes on OpenMP threads
+!> or over MPI ranks and writes in order into the same file. Batches start at fixed point indices (1, 1 + lanes, …), so that a point's
 !> companions, and its line, do not depend on how the units are cut.
 module hillstab_batch_tasks_lyapunov
    use hillstab_core_kinds, only: wp, int64, pi, pi2, version_string
    use hillstab_core_error, only: error_t, set_error, err_accuracy, err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_core_text, only: real_text, integer_text, lower_case
-   use hillstab_hill_model, only: hill_model_t, hill_point_t, model_description
+   use hillstab_hill_model, only: hill_point_t
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, largest_multiplier_modulus
    use hillstab_integrate_monodromy, only: monodromy_trace, method_name
    use hillstab_pendulum_equations, only: pendulum_t, pendulum_from_chart, pendulum_initial_state
    use hillstab_pendulum_symplectic, only: symplectic_scheme_id, symplectic_scheme_name, symplectic_scheme_count
    use hillstab_pendulum_chaos, only: chaos_options_t, chaos_t, chaos_indicators_batch, chaos_integrator_id, &
-      chaos_integrator_name, chaos_method_text, chaos_verdict_rule, chaos_auto, chaos_symplectic, chaos_dop853
-   use hillstab_batch_scene_types, only: scene_t, task_t, scene_header, output_path, open_scene_output, physical_summary
+      chaos_integrator_name, chaos_method_text, chaos_verdict_rule, chaos_symplectic
+   use hillstab_batch_scene_types, only: scene_t, task_t, scene_header, output_path, physical_summary
    use hillstab_batch_scene_file, only: scene_file_t, fail, group_present, read_len
    use hillstab_hill_units, only: physical_t, physical_alpha, physical_beta, physical_epsilon
    use hillstab_batch_scene_checks, only: min_pendulum_beta
-   use hillstab_batch_scene_declaration, only: new_group, group_t, group_values_t, group_reader_t, variable, var_name, &
-      var_integer, var_real, &
-      var_logical, begin_group, next_item, end_group
+   use hillstab_batch_scene_declaration, only: new_group, group_t, group_values_t, group_reader_t, var_name, &
+      var_integer, var_real, var_logical, begin_group, next_item, end_group
    use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_point, grid_size_text
    use hillstab_batch_scene_group_points, only: points_group, read_points_group
    use hillstab_batch_scene_group_series, only: series_plan_t, series_group, read_series_group, start_angle_text
-   use hillstab_batch_output_columns, only: column_t, style_e17, style_e11, style_e7, style_e4, style_flag, style_integer, &
-      columns_text, put_row, all_columns, failed_row
+   use hillstab_batch_output_columns, only: column_t, style_e17, style_e11, style_e7, style_e4, style_flag, &
+      style_integer, columns_text, put_row, failed_row
    use hillstab_batch_tasks_chart_columns, only: header_bytes, text_row_bytes
-   use hillstab_batch_output_file, only: output_file_t, finish_output, write_header, write_text, join_lines
-   use hillstab_batch_output_progress, only: progress_t, progress_begin, progress_update, progress_end
+   use hillstab_batch_output_file, only: output_file_t, write_header, join_lines
    use hillstab_core_parallel, only: max_threads
    implicit none
    private
@@ -51,8 +48,6 @@ module hillstab_batch_tasks_lyapunov
 
    !> Characters in one line of the file.
    integer, parameter :: lyapunov_line_length = 320
-   !> Batches of lanes per unit of work in the serial task (written as one block).
-   integer, parameter :: lyapunov_unit_batches = 8
    !> Most lanes a scene may ask for.
    integer, parameter :: max_lanes = 256
    !> The columns, by index.
@@ -88,7 +83,6 @@ module hillstab_batch_tasks_lyapunov
       integer, allocatable :: ids(:)          !! the columns written
    contains
       procedure :: read => lyapunov_read
-      procedure :: run => lyapunov_run
       procedure :: declarations => lyapunov_declarations
       procedure :: template_alternatives => lyapunov_template_alternatives
       procedure :: estimated_bytes => lyapunov_estimated_bytes
@@ -134,8 +128,8 @@ contains
    end function lyapunov_size_variables
 
    !> An upper estimate of the memory of a run by the unit driver (hillstab_batch_run_units
-   !> `run_batch`: 16 units a thread held for writing, one a thread at work; the task's own
-   !> loop holds less): each unit's lines and their joined text, and each lane's orbit at work.
+   !> `run_batch`: 16 units a thread held for writing, one a thread at work): each unit's
+   !> lines and their joined text, and each lane's orbit at work.
    function lyapunov_memory_bytes(self, scene) result(bytes)
       class(lyapunov_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
@@ -770,52 +764,8 @@ contains
          "; first at alpha = "//real_text(first(1))//", beta = "//real_text(first(2)))
    end subroutine lyapunov_failure_error
 
-   !> The lyapunov task, in this process: units of `lyapunov_unit_batches` batches of lanes computed
-   !> in parallel and written in order. The programs run lyapunov scenes (text only) through
-   !> the unit driver (`run_batch`, hillstab_batch_run_units); this loop is the task's own `run`,
-   !> the reference the batch tests compare the driver's files with.
-   subroutine lyapunov_run(self, scene, quiet, error)
-      class(lyapunov_task_t), intent(in) :: self  !! the task
-      type(scene_t), intent(in) :: scene  !! a validated lyapunov scene
-      logical, intent(in) :: quiet  !! no progress on stderr
-      !> err_io (unwritable output), err_points_failed (written, some points failed)
-      type(error_t), allocatable, intent(out) :: error
-      type(output_file_t) :: file
-      character(len=:), allocatable :: text
-      integer, allocatable :: statuses(:)
-      integer(int64) :: n, first, last, n_failed, j
-      real(wp) :: first_failed(2)
-      type(progress_t) :: progress
-      n = self%point_count()
-      call open_scene_output(scene, file, error)
-      if (allocated(error)) return
-      call write_header(file, lyapunov_header(self, scene), columns_text(self%table, self%ids), error)
-      n_failed = 0
-      call progress_begin(progress, n, quiet)
-      first = 1
-      do while (first <= n .and. .not. allocated(error))
-         last = min(n, first + lyapunov_unit_batches*self%chaos%lanes - 1)
-         allocate (statuses(first:last))
-         call lyapunov_lines(self, scene, first, last, text, statuses)
-         call write_text(file, text, error)
-         if (any(statuses == status_failed)) then
-            j = first + findloc(statuses, status_failed, dim=1) - 1
-            if (n_failed == 0) then
-               first_failed = self%point_of(j)
-            end if
-            n_failed = n_failed + count(statuses == status_failed)
-         end if
-         deallocate (statuses)
-         call progress_update(progress, last)
-         first = last + 1
-      end do
-      call progress_end(progress)
-      call finish_output(file, error)
-      if (allocated(error)) return
-      call lyapunov_failure_error(self, scene, n_failed, first_failed, error)
-   end subroutine lyapunov_run
-
-   !> The lines of the points `first` … `last`, as `lyapunov_run` writes them.
+   !> The lines of the points `first` … `last`, as the file holds them (the unit driver,
+   !> hillstab_batch_run_units, writes them in order, on threads or over MPI ranks).
    subroutine lyapunov_unit_text(self, scene, unit, first, last, text, statuses)
       class(lyapunov_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
@@ -826,7 +776,7 @@ contains
       call lyapunov_lines(self, scene, first, last, text, statuses)
    end subroutine lyapunov_unit_text
 
-   !> The header of `lyapunov_run`.
+   !> The header of a lyapunov file.
    subroutine lyapunov_open_units(self, scene, file, error)
       class(lyapunov_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
@@ -835,7 +785,7 @@ contains
       call write_header(file, lyapunov_header(self, scene), columns_text(self%table, self%ids), error)
    end subroutine lyapunov_open_units
 
-   !> As after `lyapunov_run`: the error naming the first failed point.
+   !> After the units: the error naming the first failed point.
    subroutine lyapunov_finish_units(self, scene, n_points, n_failed, first_failed, n_inaccurate, first_inaccurate, error)
       class(lyapunov_task_t), intent(in) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
