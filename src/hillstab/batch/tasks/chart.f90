@@ -197,11 +197,7 @@ contains
          call chart_line(columns, v, lines(j), length=lengths(j))
       end do
       !$omp end parallel do
-      if (scene%binary) then
-         call record_bytes(values, text)
-      else
-         call join_lines(lines, unit > 1, text, lengths=lengths)
-      end if
+      call row_unit(scene%binary, values, lines, lengths, unit > 1, text)
    end subroutine physical_row
 
    !> Whether the grid leaves the physical domain.
@@ -389,11 +385,7 @@ contains
          call compute_row_in_chunks(scene, self%columns, alpha, self%betas, lines, lengths, values, statuses, &
                                     self%beta_texts)
       end if
-      if (scene%binary) then
-         call record_bytes(values, text)
-      else
-         call join_lines(lines, unit > 1, text, lengths=lengths)
-      end if
+      call row_unit(scene%binary, values, lines, lengths, unit > 1, text)
    end subroutine chart_unit_text
 
    !> The text of a row of a verdict file (columns that need no more than the verdict), as
@@ -458,6 +450,22 @@ contains
                         chart_names(columns), error, names_line=scene%names_line, &
                         records=[self%grid%n_beta, self%grid%n_alpha])
    end subroutine chart_open_units
+
+   !> A row as its unit's text: its records' bytes (binary) or its lines joined (a blank line
+   !> before them when `separate`).
+   pure subroutine row_unit(binary, values, lines, lengths, separate, text)
+      logical, intent(in) :: binary  !! the file is binary
+      real(wp), intent(in) :: values(:, :)  !! binary: the records (columns, points)
+      character(len=*), intent(in) :: lines(:)  !! text: a line a point
+      integer, intent(in) :: lengths(:)  !! text: their lengths
+      logical, intent(in) :: separate  !! text: a blank line first (every row but the first)
+      character(len=:), allocatable, intent(out) :: text  !! the unit's text or bytes
+      if (binary) then
+         call record_bytes(values, text)
+      else
+         call join_lines(lines, separate, text, lengths=lengths)
+      end if
+   end subroutine row_unit
 
    !> (α, β) of point k, numbered row by row (over `&physical`: the pendulum's at the row's
    !> amplitude and the point's ω).
