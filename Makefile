@@ -125,13 +125,13 @@ test-sanitize: setup-build
 
 # 300 seeded mutations of the shipped scenes, 90 of points files (and of &points file),
 # 140 of every task's template, 200 system scenes (matrix files with nulls, empty fields,
-# ragged rows; FIFOs; paths across lines; repeats) and 60 damaged checkpoints resumed, on the normal and on the
+# ragged rows; FIFOs; paths across lines; repeats) and 80 damaged checkpoints resumed, on the normal and on the
 # trap build (scripts/fuzz.py: whole NaN-free files or one message line, no temp file, in
 # time; a damaged checkpoint resumed into the uninterrupted file or refused)
 FUZZ_COUNT ?= 300
 FUZZ_POINTS_COUNT ?= 90
 FUZZ_TEMPLATE_COUNT ?= 140
-FUZZ_CHECKPOINT_COUNT ?= 60
+FUZZ_CHECKPOINT_COUNT ?= 80
 FUZZ_SYSTEM_COUNT ?= 200
 FUZZ_FOREIGN_CHECKPOINT_COUNT ?= 48
 FUZZ_SEED ?= 7
