@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# valgrind memcheck on small scenes of every task and of the models with data (and a physical, binary points scene, a chart updating its
+# valgrind memcheck on small scenes of every task and of the models with data (and a physical, binary points scene, a binary
+# chart over &physical amplitudes and frequencies, a binary chart resumed from its checkpoint, a chart updating its
 # checkpoint after every row, and a chart resumed from the checkpoint a write error left): no invalid access, no use
 # of uninitialised values, no definite leak (--error-exitcode makes any of them fail).
 # usage: scripts/check_memory.sh BUILD/app/hillstab
@@ -65,6 +66,24 @@ if [ "$code" -ne 2 ] || [ ! -f m_resume_chart.dat.checkpoint/state ]; then
    echo "check-memory: the run under a file-size limit exited $code and left no checkpoint" >&2
    exit 1
 fi
+# the same for a binary chart (its records' bytes in the checkpoint), stopped at 12 KiB
+cat > resume_binary.nml <<'NML'
+&scene task='chart', method='formula', format='binary', output='m_resume_binary' /
+&chart n_alpha=6, n_beta=40 /
+NML
+set +e
+(ulimit -f 12; "$hillstab" --quiet --checkpoint-interval 0 resume_binary.nml 2>/dev/null)
+code=$?
+set -e
+if [ "$code" -ne 2 ] || [ ! -f m_resume_binary_chart.bin.checkpoint/state ]; then
+   echo "check-memory: the binary run under a file-size limit exited $code and left no checkpoint" >&2
+   exit 1
+fi
+# a chart over &physical amplitudes and frequencies, in binary (a unit an amplitude)
+cat > physical_chart.nml <<'NML'
+&scene task='chart', format='binary', output='m_phys_chart' /
+&physical g=9.81, r0=0.3, kappa=0.1, a_min=0, a_max=0.2, n_a=3, omega_min=6, omega_max=12, n_omega=4 /
+NML
 cat > fourier.nml <<'NML'
 &scene task='chart', model='fourier', method='auto', output='m_fourier' /
 &chart alpha_min=0, alpha_max=4, n_alpha=3, beta_min=-2, beta_max=12, n_beta=4 /
@@ -90,12 +109,12 @@ cat > bad.nml <<'NML'
 NML
 status=0
 for scene in chart chart_segments points coefficient series boundaries lyapunov poincare physical checkpoint resume \
-   fourier sampled meissner modulated bad; do
+   resume_binary physical_chart fourier sampled meissner modulated bad; do
    log="$work/$scene.valgrind"
    options=--quiet
    case $scene in
    checkpoint) options="--quiet --checkpoint-interval 0" ;;
-   resume) options="--quiet --resume" ;;
+   resume | resume_binary) options="--quiet --resume" ;;
    esac
    set +e
    # shellcheck disable=SC2086
@@ -114,6 +133,10 @@ for scene in chart chart_segments points coefficient series boundaries lyapunov 
       echo "check-memory: $scene exited $code" >&2
       status=1
    elif [ "$scene" = resume ] && { ! grep -q resuming "$work/$scene.stderr" || [ -e m_resume_chart.dat.checkpoint ]; }; then
+      echo "check-memory: the resumed run did not resume, or left its checkpoint" >&2
+      status=1
+   elif [ "$scene" = resume_binary ] && { ! grep -q resuming "$work/$scene.stderr" ||
+      [ -e m_resume_binary_chart.bin.checkpoint ]; }; then
       echo "check-memory: the resumed run did not resume, or left its checkpoint" >&2
       status=1
    else
