@@ -57,28 +57,27 @@ cat > resume.nml <<'NML'
 &scene task='chart', method='formula', output='m_resume' /
 &chart n_alpha=6, n_beta=40 /
 NML
-# a checkpoint for the resumed run: the first run stops at a file-size limit of 20 KiB (exit 2; bash counts ulimit -f in 1024-byte blocks)
-set +e
-(ulimit -f 20; "$hillstab" --quiet --checkpoint-interval 0 resume.nml 2>/dev/null)
-code=$?
-set -e
-if [ "$code" -ne 2 ] || [ ! -f m_resume_chart.dat.checkpoint/state ]; then
-   echo "check-memory: the run under a file-size limit exited $code and left no checkpoint" >&2
-   exit 1
-fi
+# stop_at_limit SCENE KIB CHECKPOINT: run SCENE under a file-size limit of KIB KiB (bash counts ulimit -f in
+# 1024-byte blocks); it must stop with exit 2 and leave CHECKPOINT for the resumed run
+stop_at_limit() {
+   local code
+   set +e
+   (ulimit -f "$2"; "$hillstab" --quiet --checkpoint-interval 0 "$1" 2>/dev/null)
+   code=$?
+   set -e
+   if [ "$code" -ne 2 ] || [ ! -f "$3/state" ]; then
+      echo "check-memory: $1 under a file-size limit exited $code and left no checkpoint" >&2
+      exit 1
+   fi
+}
+# a checkpoint for the resumed run: the first run stops at 20 KiB
+stop_at_limit resume.nml 20 m_resume_chart.dat.checkpoint
 # the same for a binary chart (its records' bytes in the checkpoint), stopped at 12 KiB
 cat > resume_binary.nml <<'NML'
 &scene task='chart', method='formula', format='binary', output='m_resume_binary' /
 &chart n_alpha=6, n_beta=40 /
 NML
-set +e
-(ulimit -f 12; "$hillstab" --quiet --checkpoint-interval 0 resume_binary.nml 2>/dev/null)
-code=$?
-set -e
-if [ "$code" -ne 2 ] || [ ! -f m_resume_binary_chart.bin.checkpoint/state ]; then
-   echo "check-memory: the binary run under a file-size limit exited $code and left no checkpoint" >&2
-   exit 1
-fi
+stop_at_limit resume_binary.nml 12 m_resume_binary_chart.bin.checkpoint
 # a chart over &physical amplitudes and frequencies, in binary (a unit an amplitude)
 cat > physical_chart.nml <<'NML'
 &scene task='chart', format='binary', output='m_phys_chart' /

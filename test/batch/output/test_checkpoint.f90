@@ -297,10 +297,8 @@ contains
    !> files of the uninterrupted runs.
    subroutine system_resumed_after_kill(ctx)
       type(test_context_t), intent(inout) :: ctx
-      character(len=40) :: lines(320)
       character(len=240) :: group(2)
       character(len=:), allocatable :: points
-      integer :: k
       group = [padded("&system n = 2, b = 1.0, 0.0, 0.0, 16.0, cos = -1.0, -0.6, -0.6, -4.0, sin = 0.0, 0.3, 0.3, 0.5,"), &
                padded("   gyroscopic = 0.0, 0.2, -0.2, 0.0 /")]
       call make_fixture(system_chart, "ck_sys", [ &
@@ -314,11 +312,7 @@ contains
          call kill_and_resume(ctx, system_chart, 14, .false.)
       end if
       call release_fixture(system_chart)
-      points = scratch_prefix("ck_sys_points")//".dat"
-      do k = 1, size(lines)
-         write (lines(k), '(f8.4,1x,f8.4)') 1.2_wp*mod(7*k, 23)/23.0_wp, 3.0_wp*(k - 1)/size(lines)
-      end do
-      call write_file(points, lines)
+      points = system_points_file("ck_sys_points")
       call make_fixture(system_points, "ck_sys_pts", [ &
          padded("&scene task='points', model='system', method='rk', tolerance=1e-9, output='"// &
                 scratch_prefix("ck_sys_pts")//"' /"), group, padded("&points file='"//points//"' /")], "points", 5)
@@ -327,6 +321,19 @@ contains
       call release_fixture(system_points)
       call delete_file(points)
    end subroutine system_resumed_after_kill
+
+   !> A points file of 320 points over a system's (α, β) (5 units of 64), its path.
+   function system_points_file(name) result(path)
+      character(len=*), intent(in) :: name  !! the scratch name
+      character(len=:), allocatable :: path
+      character(len=40) :: lines(320)
+      integer :: k
+      path = scratch_prefix(name)//".dat"
+      do k = 1, size(lines)
+         write (lines(k), '(f8.4,1x,f8.4)') 1.2_wp*mod(7*k, 23)/23.0_wp, 3.0_wp*(k - 1)/size(lines)
+      end do
+      call write_file(path, lines)
+   end function system_points_file
 
    !> SIGKILL after 1, 6 and 11 of 13 units of a Lyapunov map.
    subroutine lyapunov_resumed_after_kill(ctx)
@@ -931,9 +938,7 @@ contains
    subroutine binary_resumed_after_kill(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(fixture_t) :: binary_chart, binary_points
-      character(len=40) :: lines(320)
       character(len=:), allocatable :: points
-      integer :: k
       call make_fixture(binary_chart, "ck_bin", [ &
          padded("&scene task='chart', method='magnus6', tolerance=1e-12, format='binary', output='"// &
                 scratch_prefix("ck_bin")//"' /"), &
@@ -956,11 +961,7 @@ contains
       call check(ctx, binary_chart%ready, "the uninterrupted chart over &physical ran")
       if (binary_chart%ready) call kill_and_resume(ctx, binary_chart, 5, .true.)
       call release_fixture(binary_chart)
-      points = scratch_prefix("ck_bin_points")//".dat"
-      do k = 1, size(lines)
-         write (lines(k), '(f8.4,1x,f8.4)') 1.2_wp*mod(7*k, 23)/23.0_wp, 3.0_wp*(k - 1)/size(lines)
-      end do
-      call write_file(points, lines)
+      points = system_points_file("ck_bin_points")
       call make_fixture(binary_points, "ck_bin_pts", [ &
          padded("&scene task='points', model='system', method='rk', tolerance=1e-9, format='binary', output='"// &
                 scratch_prefix("ck_bin_pts")//"' /"), &

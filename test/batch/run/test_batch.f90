@@ -167,84 +167,67 @@ contains
       ieee_quiet = ieee_value(1.0_wp, ieee_quiet_nan)
    end function ieee_quiet
 
-   !> The S of a scalar file's points against each computed alone (`monodromy_trace`, one
-   !> point: not the row's lanes, meshes and chunks), within `relative` of max(1, |S|), at up
-   !> to 40 points spread over the file.
+   !> The trace of a file's points against each computed alone, within `relative` of
+   !> max(1, |trace|), at up to 40 points spread over the file: a scalar scene's S by
+   !> `monodromy_trace` (one point: not the row's lanes, meshes and chunks; over `&physical`
+   !> the pendulum's ε at each ω), a system's trace by `system_values` (not the row's
+   !> shared nodes).
    subroutine check_alone(ctx, scene, path, relative, label)
       type(test_context_t), intent(inout) :: ctx
       type(scene_t), intent(in) :: scene
       character(len=*), intent(in) :: path, label
       real(wp), intent(in) :: relative
-      real(wp), allocatable :: alpha(:), beta(:), s(:), omega(:)
+      real(wp), allocatable :: alpha(:), beta(:), written(:), omega(:), v(:)
       type(trace_t) :: tr
-      type(error_t), allocatable :: error
-      type(physical_t) :: p
-      real(wp) :: worst, epsilon
-      integer :: k, step, n, compared
-      compared = 0
-      call column_of(path, "alpha", alpha)
-      call column_of(path, "beta", beta)
-      call column_of(path, "S", s)
-      ! over `&physical` amplitudes and frequencies, epsilon is the pendulum's at each omega
-      call column_of(path, "omega", omega)
-      n = size(s)
-      call check(ctx, n > 0 .and. size(alpha) == n .and. size(beta) == n, label//": alpha, beta and S read")
-      if (n == 0 .or. size(alpha) /= n .or. size(beta) /= n) return
-      step = max(1, n/40)
-      worst = 0.0_wp
-      do k = 1, n, step
-         epsilon = scene%model%point_damping(alpha(k), scene%epsilon)
-         if (size(omega) == n) then
-            p = scene%pendulum
-            p%omega = omega(k)
-            epsilon = physical_epsilon(p)
-         end if
-         call monodromy_trace(scene%model, hill_point_t(alpha(k), beta(k), epsilon), scene%method, tr, error)
-         if (allocated(error)) cycle
-         compared = compared + 1
-         worst = max(worst, abs(tr%value - s(k))/max(1.0_wp, abs(tr%value)))
-      end do
-      call check(ctx, compared >= min(n, 20), label//": "//integer_text(compared)//" points compared")
-      call check(ctx, worst <= relative, label//": S as each point alone, worst "//real_text(worst))
-   end subroutine check_alone
-
-   !> The trace of a system chart's points against each computed alone (`system_values`, not
-   !> the row's shared nodes), within `relative` of max(1, |tr|), at up to 40 points.
-   subroutine check_system_alone(ctx, scene, path, relative, label)
-      type(test_context_t), intent(inout) :: ctx
-      type(scene_t), intent(in) :: scene
-      character(len=*), intent(in) :: path, label
-      real(wp), intent(in) :: relative
-      real(wp), allocatable :: alpha(:), beta(:), tr(:), v(:)
       type(system_form_t) :: form
       type(error_t), allocatable :: error
-      character(len=:), allocatable :: message
-      logical :: failed
-      real(wp) :: worst
+      type(physical_t) :: p
+      character(len=:), allocatable :: message, name
+      logical :: system, failed
+      real(wp) :: worst, epsilon, value
       integer :: k, step, n, compared
-      compared = 0
+      system = .not. allocated(scene%model)
+      name = merge("trace", "S    ", system)
       call column_of(path, "alpha", alpha)
       call column_of(path, "beta", beta)
-      call column_of(path, "trace", tr)
-      n = size(tr)
-      call check(ctx, n > 0 .and. size(alpha) == n .and. size(beta) == n, label//": alpha, beta and trace read")
+      call column_of(path, trim(name), written)
+      call column_of(path, "omega", omega)
+      n = size(written)
+      call check(ctx, n > 0 .and. size(alpha) == n .and. size(beta) == n, label//": alpha, beta and "//trim(name)// &
+                 " read")
       if (n == 0 .or. size(alpha) /= n .or. size(beta) /= n) return
-      call prepare_system(scene%system, scene%epsilon, form, error)
-      call check(ctx, .not. allocated(error), label//": the system prepared")
-      if (allocated(error)) return
-      allocate (v(n_fixed + form%n))
+      if (system) then
+         call prepare_system(scene%system, scene%epsilon, form, error)
+         call check(ctx, .not. allocated(error), label//": the system prepared")
+         if (allocated(error)) return
+         allocate (v(n_fixed + form%n))
+      end if
+      compared = 0
       step = max(1, n/40)
       worst = 0.0_wp
       do k = 1, n, step
-         call system_values(scene%system, form, system_method_t(scene%method%kind, scene%method%tolerance), &
-                            alpha(k), beta(k), v, failed, message)
+         if (system) then
+            call system_values(scene%system, form, system_method_t(scene%method%kind, scene%method%tolerance), &
+                               alpha(k), beta(k), v, failed, message)
+            value = v(3)
+         else
+            epsilon = scene%model%point_damping(alpha(k), scene%epsilon)
+            if (size(omega) == n) then
+               p = scene%pendulum
+               p%omega = omega(k)
+               epsilon = physical_epsilon(p)
+            end if
+            call monodromy_trace(scene%model, hill_point_t(alpha(k), beta(k), epsilon), scene%method, tr, error)
+            failed = allocated(error)
+            value = tr%value
+         end if
          if (failed) cycle
          compared = compared + 1
-         worst = max(worst, abs(v(3) - tr(k))/max(1.0_wp, abs(v(3))))
+         worst = max(worst, abs(value - written(k))/max(1.0_wp, abs(value)))
       end do
       call check(ctx, compared >= min(n, 20), label//": "//integer_text(compared)//" points compared")
-      call check(ctx, worst <= relative, label//": trace as each point alone, worst "//real_text(worst))
-   end subroutine check_system_alone
+      call check(ctx, worst <= relative, label//": "//trim(name)//" as each point alone, worst "//real_text(worst))
+   end subroutine check_alone
 
    !> Charts with few rows (chunks of a row in parallel) and many rows (rows in parallel),
    !> damped, by segments, over `&physical` amplitudes and frequencies (a row an amplitude),
@@ -322,7 +305,7 @@ contains
          scratch_prefix("sys_few")//"' /"), system_group(), &
          padded("&chart alpha_min=0, alpha_max=1.2, n_alpha=3, beta_min=0, beta_max=3, n_beta=41 /")], scene)
       call compare_runs(ctx, scene, "system chart, 3 rows", written, 3*41 + 2)
-      call check_system_alone(ctx, scene, written, 1.0e-8_wp, "system chart, 3 rows")
+      call check_alone(ctx, scene, written, 1.0e-8_wp, "system chart, 3 rows")
       call delete_file(written)
       call scene_from("batch_sys_many", [padded("&scene task='chart', model='system', epsilon=0.05, "// &
          "method='magnus4', tolerance=1e-9, columns='alpha beta stable kind mu mu_2 status', output='"// &
@@ -335,7 +318,7 @@ contains
          padded("&chart alpha_min=0.01, alpha_max=1.2, n_alpha=11, alpha_scale='log', beta_min=0.05, beta_max=3, "// &
                 "n_beta=13, beta_scale='log' /")], scene)
       call compare_runs(ctx, scene, "log system chart, 11 rows", written, 11*13 + 10)
-      call check_system_alone(ctx, scene, written, 1.0e-8_wp, "log system chart, 11 rows")
+      call check_alone(ctx, scene, written, 1.0e-8_wp, "log system chart, 11 rows")
       call delete_file(written)
    end subroutine system_chart_equals_serial
 

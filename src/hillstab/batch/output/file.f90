@@ -422,26 +422,10 @@ contains
       type(output_file_t), intent(inout) :: file  !! the open output file
       character(len=*), intent(in) :: line  !! the line, without its new line
       type(error_t), allocatable, intent(out) :: error  !! err_io when writing fails
-      integer(c_size_t) :: written
-      if (.not. allocated(file%failure)) then
-         if (.not. c_associated(file%stream)) then
-            file%failure = "the file is not open"
-         else
-            call set_errno(0)
-            ! the line and its new line in two calls to the buffered stream (line//new_line
-            ! would copy a chart's whole block of rows)
-            written = c_fwrite(line, 1_c_size_t, int(len(line), c_size_t), file%stream)
-            if (written == int(len(line), c_size_t)) written = written + &
-               c_fwrite(new_line("a"), 1_c_size_t, 1_c_size_t, file%stream)
-            if (written /= int(len(line) + 1, c_size_t)) then
-               file%failure = errno_text()
-            else
-               file%bytes = file%bytes + len(line) + 1
-            end if
-         end if
-      end if
-      if (allocated(file%failure)) call set_error(error, err_io, "cannot write '"//file%path//"': "// &
-         file%failure//" (the file is left as it was)")
+      ! the line and its new line in two writes to the buffered stream (line//new_line
+      ! would copy a chart's whole block of rows)
+      call write_bytes(file, line, error)
+      if (.not. allocated(error)) call write_bytes(file, new_line("a"), error)
    end subroutine write_text
 
    !> `lines` (each trimmed, or cut at `lengths`) joined by new lines, after a leading new

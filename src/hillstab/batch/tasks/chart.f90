@@ -62,6 +62,7 @@ module hillstab_batch_tasks_chart
       procedure :: unit_text => chart_unit_text
       procedure :: open_units => chart_open_units
       procedure :: point_of => chart_point_of
+      procedure :: pendulum_at
    end type chart_task_t
 
 contains
@@ -161,10 +162,10 @@ contains
    !> Row `unit` of a chart over `&physical` amplitudes and frequencies (one amplitude a, every
    !> ω; blocks of constant a): each point's α, β and ε from the pendulum, its line (a blank
    !> line before every row but the first) or its records, the points in parallel.
-   subroutine physical_row(scene, columns, unit, text, statuses)
-      type(scene_t), intent(in) :: scene  !! the chart's scene
-      type(chart_layout_t), intent(in) :: columns  !! the columns written
-      integer, intent(in) :: unit  !! the row: the amplitude `scene%amplitudes(unit)`
+   subroutine physical_row(self, scene, unit, text, statuses)
+      class(chart_task_t), intent(in) :: self  !! the task (a chart over `&physical`), its units prepared
+      type(scene_t), intent(in) :: scene  !! its scene
+      integer, intent(in) :: unit  !! the row: the amplitude `self%amplitudes(unit)`
       character(len=:), allocatable, intent(out) :: text  !! the lines, no final new line (or records)
       integer, intent(out) :: statuses(:)  !! per point
       character(len=chart_line_length), allocatable :: lines(:)
@@ -175,26 +176,24 @@ contains
       type(physical_t) :: p
       real(wp) :: v(n_chart_columns), alpha, beta, epsilon
       integer :: j, n_omega
-      integer :: ids(size(columns%ids))  ! the binary records' columns (a gather through `columns` allocated)
-      ids = columns%ids
-      n_omega = size(scene%omegas)
+      integer :: ids(size(self%columns%ids))  ! the binary records' columns (a gather, `columns` allocated)
+      ids = self%columns%ids
+      n_omega = size(self%omegas)
       allocate (lines(n_omega), lengths(n_omega), values(size(ids), n_omega))
       !$omp parallel do schedule(dynamic) default(shared) private(j, p, f, cause, v, epsilon, alpha, beta)
       do j = 1, n_omega
-         p = scene%pendulum
-         p%omega = scene%omegas(j)
-         p%a = scene%amplitudes(unit)
+         p = self%pendulum_at(unit, j)
          alpha = scene%model%physical_alpha(p)
          beta = physical_beta(p)
          epsilon = physical_epsilon(p)
-         call evaluate_point(scene, alpha, beta, f, cause, statuses(j), epsilon, columns)
+         call evaluate_point(scene, alpha, beta, f, cause, statuses(j), epsilon, self%columns)
          if (statuses(j) == status_failed) then
-            v = failed_values(columns, alpha, beta, in_physical_domain(alpha, beta), p%a, p%omega)
+            v = failed_values(self%columns, alpha, beta, in_physical_domain(alpha, beta), p%a, p%omega)
          else
             v = chart_values(alpha, beta, f, in_physical_domain(alpha, beta), statuses(j), p%omega/pi, p%a, p%omega)
          end if
          values(:, j) = v(ids)
-         call chart_line(columns, v, lines(j), length=lengths(j))
+         call chart_line(self%columns, v, lines(j), length=lengths(j))
       end do
       !$omp end parallel do
       call row_unit(scene%binary, values, lines, lengths, unit > 1, text)
@@ -369,7 +368,7 @@ contains
       real(wp), allocatable :: values(:, :)
       real(wp) :: alpha
       if (self%physical_grid) then
-         call physical_row(scene, self%columns, unit, text, statuses)
+         call physical_row(self, scene, unit, text, statuses)
          return
       end if
       alpha = grid_alpha(self%grid, unit)
@@ -467,6 +466,16 @@ contains
       end if
    end subroutine row_unit
 
+   !> The pendulum of a chart over `&physical` at its amplitude `i` and frequency `j`.
+   elemental function pendulum_at(self, i, j) result(p)
+      class(chart_task_t), intent(in) :: self  !! the task (a chart over `&physical`)
+      integer, intent(in) :: i, j  !! the row (amplitude) and the point along it (ω)
+      type(physical_t) :: p
+      p = self%pendulum
+      p%a = self%amplitudes(i)
+      p%omega = self%omegas(j)
+   end function pendulum_at
+
    !> (α, β) of point k, numbered row by row (over `&physical`: the pendulum's at the row's
    !> amplitude and the point's ω).
    pure function chart_point_of(self, k) result(point)
@@ -475,9 +484,7 @@ contains
       real(wp) :: point(2)
       type(physical_t) :: p
       if (self%physical_grid) then
-         p = self%pendulum
-         p%a = self%amplitudes((k - 1)/self%grid%n_beta + 1)
-         p%omega = self%omegas(mod(k - 1, int(self%grid%n_beta, int64)) + 1)
+         p = self%pendulum_at(int((k - 1)/self%grid%n_beta) + 1, int(mod(k - 1, int(self%grid%n_beta, int64))) + 1)
          point = [self%model%physical_alpha(p), physical_beta(p)]
       else
          point = grid_point(self%grid, k)
