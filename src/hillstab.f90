@@ -38,6 +38,9 @@
 !>   `hillstab_model_count` = [[hillstab_hill_models:model_count]], [[hillstab_hill_models:new_model]],
 !>   [[hillstab_hill_models:model_from_code]], [[hillstab_hill_models:model_code]],
 !>   [[hillstab_hill_models:model_names_text]]
+!> - [[hillstab_hill_model_pendulum]]: [[hillstab_hill_model_pendulum:pendulum_model_t]],
+!>   [[hillstab_hill_model_pendulum:pendulum_alpha]], [[hillstab_hill_model_pendulum:pendulum_note]],
+!>   [[hillstab_hill_model_pendulum:is_elastic_pendulum]]
 !> - [[hillstab_hill_model_elastic]]: [[hillstab_hill_model_elastic:elastic_model_t]]
 !> - [[hillstab_hill_model_mathieu]]: [[hillstab_hill_model_mathieu:mathieu_model_t]]
 !> - [[hillstab_hill_model_meissner]]: [[hillstab_hill_model_meissner:meissner_model_t]]
@@ -225,6 +228,7 @@ module hillstab
       check_alpha, hill_coefficient, segment_average, model_split, damping_shift
    use hillstab_hill_models, only: hillstab_model_names => model_names, hillstab_model_count => model_count, &
       new_model, model_from_code, model_code, model_names_text
+   use hillstab_hill_model_pendulum, only: pendulum_model_t, pendulum_alpha, pendulum_note, is_elastic_pendulum
    use hillstab_hill_model_elastic, only: elastic_model_t
    use hillstab_hill_model_mathieu, only: mathieu_model_t
    use hillstab_hill_model_meissner, only: meissner_model_t

@@ -12,6 +12,7 @@ module test_models
    use hillstab_hill_models, only: model_names, model_count, new_model, model_from_code, model_code, model_names_text
    use hillstab_hill_model_elastic, only: elastic_model_t
    use hillstab_hill_model_mathieu, only: mathieu_model_t
+   use hillstab_hill_model_pendulum, only: pendulum_alpha, pendulum_note, is_elastic_pendulum
    use hillstab_hill_units, only: physical_t, equilibrium_length, physical_beta
    use hillstab_testing
    use hillstab_test_models, only: model_of_code
@@ -266,11 +267,31 @@ contains
       type(elastic_model_t) :: elastic
       type(mathieu_model_t) :: mathieu
       real(wp) :: alpha
+      class(hill_model_t), allocatable :: model
+      type(error_t), allocatable :: error
+      integer :: k
       p = physical_t(r0=0.8_wp, g=9.81_wp, omega=6.0_wp, a=0.3_wp, kappa=0.0_wp)
       alpha = p%a*pi2/equilibrium_length(p)
       call check(ctx, elastic%physical_alpha(p), alpha, rel=1.0e-15_wp, message="elastic alpha")
       call check(ctx, mathieu%physical_alpha(p), alpha*(1.0_wp - physical_beta(p)/pi2), rel=1.0e-14_wp, &
          message="mathieu nu of eq. (21)")
+      ! the same through the functions any model answers; a model that is not a form of the
+      ! pendulum takes a pi^2/rho, no note, and is not the pendulum
+      call check(ctx, pendulum_alpha(mathieu, p), alpha*(1.0_wp - physical_beta(p)/pi2), rel=1.0e-14_wp, &
+         message="mathieu nu through pendulum_alpha")
+      call check(ctx, pendulum_alpha(elastic, p), alpha, rel=1.0e-15_wp, message="elastic alpha through pendulum_alpha")
+      call check(ctx, is_elastic_pendulum(elastic) .and. .not. is_elastic_pendulum(mathieu), "elastic is the pendulum")
+      call check(ctx, index(pendulum_note(mathieu), "nu") > 0 .and. pendulum_note(elastic) == "", "notes")
+      do k = 3, model_count
+         call model_from_code(k, model, error)
+         if (allocated(error)) then
+            call check(ctx, .false., "model of code "//trim(model_names(k)))
+            return
+         end if
+         call check(ctx, pendulum_alpha(model, p), alpha, rel=1.0e-15_wp, message=trim(model_names(k))//": a pi^2/rho")
+         call check(ctx, .not. is_elastic_pendulum(model) .and. pendulum_note(model) == "", &
+            trim(model_names(k))//": not the pendulum, no note")
+      end do
    end subroutine physical_alpha_of_models
 
    !> At ν = 0 the Mathieu curves are β = (π²/4) n² (a_n(0) = b_n(0) = n²); the elastic model has no witness.

@@ -24,7 +24,6 @@
 module hillstab_hill_model
    use hillstab_core_kinds, only: wp, pi, pi2
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
-   use hillstab_hill_units, only: physical_t, physical_alpha
    use hillstab_hill_model_base, only: model_base_t, model_variable_t, model_variable_real, model_variable_list, &
       model_variable_file, model_variable_text
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -98,12 +97,9 @@ module hillstab_hill_model
       procedure :: summary => formula_summary
       procedure :: alpha_domain => no_alpha_domain
       procedure :: alpha_valid => finite_alpha
-      procedure :: physical_note => no_physical_note
-      procedure :: is_pendulum => not_pendulum
       procedure :: point_damping => scene_damping
       procedure :: has_damping => no_own_damping
       procedure :: takes_scene_damping => scene_damping_taken
-      procedure :: physical_alpha => pendulum_alpha
       procedure :: has_witness => no_witness
       procedure :: witness_beta => no_witness_beta
       procedure :: period => period_two
@@ -198,13 +194,6 @@ contains
       valid = ieee_is_finite(alpha)
    end function finite_alpha
 
-   !> What α means when it comes from physical units, for headers ("" when it is aπ²/ρ).
-   pure function no_physical_note(self) result(text)
-      class(hill_model_t), intent(in) :: self  !! the model
-      character(len=:), allocatable :: text
-      text = ""
-   end function no_physical_note
-
    !> The damping ε of the points of chart row α: the scene's `epsilon` unless the model
    !> carries its own (an equation in physical time: πc/(mΩ) at the row's parameters).
    elemental real(wp) function scene_damping(self, alpha, epsilon) result(damping)
@@ -239,20 +228,6 @@ contains
          call self%split(alpha, betas(j), c0s(j), c1s(j))
       end do
    end subroutine split_each
-
-   !> The model is the elastic pendulum itself: it has the physical domain (a `physical`
-   !> column), the nonlinear simulation and α = aπ²/ρ. False unless the model says so.
-   elemental logical function not_pendulum(self)
-      class(hill_model_t), intent(in) :: self  !! the model
-      not_pendulum = .false.
-   end function not_pendulum
-
-   !> The model's α of a pendulum given in physical units: α = aπ²/ρ, eq. (24).
-   elemental real(wp) function pendulum_alpha(self, p) result(alpha)
-      class(hill_model_t), intent(in) :: self  !! the model
-      type(physical_t), intent(in) :: p        !! the pendulum (ω > 0, ρ > 0)
-      alpha = physical_alpha(p)
-   end function pendulum_alpha
 
    !> An independent witness of the transition curves exists (`witness_beta`): none unless
    !> the model has one.

@@ -19,7 +19,8 @@
 !>```
 module hillstab_hill_model_elastic
    use hillstab_core_kinds, only: wp, pi, pi2, pi2_lo
-   use hillstab_hill_model, only: hill_model_t, hill_form_pencil
+   use hillstab_hill_model, only: hill_form_pencil
+   use hillstab_hill_model_pendulum, only: pendulum_model_t
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -34,7 +35,7 @@ module hillstab_hill_model_elastic
    character(len=*), parameter :: elastic_alpha_domain = "0 <= alpha < pi**2 = 9.8696044010893586"
 
    !> The elastic pendulum's coefficient, eq. (25), as a model (hillstab_hill_model).
-   type, extends(hill_model_t) :: elastic_model_t
+   type, extends(pendulum_model_t) :: elastic_model_t
    contains
       procedure :: name => elastic_name
       procedure :: formula => elastic_formula

@@ -14,7 +14,8 @@
 !>```
 module hillstab_hill_model_mathieu
    use hillstab_core_kinds, only: wp, pi, pi2
-   use hillstab_hill_model, only: hill_model_t, hill_form_pencil
+   use hillstab_hill_model, only: hill_form_pencil
+   use hillstab_hill_model_pendulum, only: pendulum_model_t
    use hillstab_hill_units, only: physical_t, physical_nu
    use hillstab_hill_mathieu, only: mathieu_witness
    implicit none
@@ -25,7 +26,7 @@ module hillstab_hill_model_mathieu
    public :: mathieu_hill_coupling, mathieu_two_piece_values
 
    !> The paper's Mathieu form (A1), q = β − ν cos πτ, as a model (hillstab_hill_model).
-   type, extends(hill_model_t) :: mathieu_model_t
+   type, extends(pendulum_model_t) :: mathieu_model_t
    contains
       procedure :: name => mathieu_name
       procedure :: formula => mathieu_formula

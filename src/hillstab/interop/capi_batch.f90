@@ -41,6 +41,7 @@ module hillstab_interop_capi_batch
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict, largest_multiplier_modulus
    use hillstab_hill_units, only: physical_t, physical_beta, physical_epsilon, check_physical
+   use hillstab_hill_model_pendulum, only: pendulum_alpha
    use hillstab_integrate_monodromy, only: method_t, monodromy_trace, monodromy_trace_batch, batch_plan_t, &
       prepare_batch, method_name, method_table, need_verdict, need_growth, need_trace
    use hillstab_batch_scene_group_chart, only: chart_grid_t, grid_alpha, grid_beta, scale_linear, scale_refusal
@@ -474,7 +475,7 @@ contains
          info = int(error%code, c_int)
          return
       end if
-      alpha = handle%model%physical_alpha(p)
+      alpha = pendulum_alpha(handle%model, p)
       beta = physical_beta(p)
       epsilon = physical_epsilon(p)
       info = 0

@@ -213,7 +213,7 @@ contains
          else
             epsilon = scene%model%point_damping(alpha(k), scene%epsilon)
             if (size(omega) == n) then
-               p = scene%pendulum
+               p = scene%physical%pendulum
                p%omega = omega(k)
                epsilon = physical_epsilon(p)
             end if

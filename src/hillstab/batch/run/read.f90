@@ -56,7 +56,7 @@ contains
       scene%source = path
       scene%columns = ""
       scene%warnings = ""
-      allocate (scene%amplitudes(0), scene%omegas(0))
+      allocate (scene%physical%amplitudes(0), scene%physical%omegas(0))
       call open_scene_file(path, file, error)
       if (allocated(error)) return
       call read_scene_group(file, scene, task_name, error)
@@ -134,7 +134,7 @@ contains
       integer :: k, j, n
       names = group_names(file%unit)
       reads = "&scene"
-      if (scene%physical) reads = reads//", &physical"
+      if (scene%physical%given) reads = reads//", &physical"
       ! a local, not an associate name: gfortran does not free the function result's
       ! allocatable components through an associate name
       groups = task%declarations()
@@ -477,9 +477,9 @@ contains
          read (reader%record, nml=physical, iostat=reader%stat, iomsg=reader%message)
       end do
       write (reader%echo, nml=physical, delim="apostrophe", iostat=reader%echo_status)
-      call end_group(reader, file, group, scene%physical_values, error)
+      call end_group(reader, file, group, scene%physical%values, error)
       if (allocated(error)) return
-      associate (values => scene%physical_values)
+      associate (values => scene%physical%values)
          spring = values%given("k") .or. values%given("m")
          omega_ranged = values%given("omega_min") .or. values%given("omega_max") .or. values%given("n_omega")
          allocate (omegas(0))
@@ -497,7 +497,7 @@ contains
                   return
                end if
             end do
-            if (.not. task%takes_omega_range) then
+            if (.not. task%physical%takes_omega_range) then
                call fail(error, file%path, group%name, "n_omega", "a range of omega makes a chart over (a, "// &
                   "omega): task 'chart', not '"//task%name//"'")
                return
@@ -569,8 +569,8 @@ contains
                   "= "//real_text(k)//", m = "//real_text(m))
                return
             end if
-            scene%spring_k = k
-            scene%spring_m = m
+            scene%physical%k = k
+            scene%physical%m = m
          end if
          if (group_sets(file%unit, "scene", "epsilon")) then
             call fail(error, file%path, group%name, "kappa", "give the damping either as &scene epsilon "// &
@@ -624,7 +624,7 @@ contains
                "a_min, a_max, n_a (or the list a) with r0")
             return
          end if
-         if (values%given("r0") .and. size(amplitudes) == 0 .and. .not. task%takes_spring) then
+         if (values%given("r0") .and. size(amplitudes) == 0 .and. .not. task%physical%takes_spring) then
             call fail(error, file%path, group%name, "r0", "r0 fixes beta = g pi^2/(rho omega^2), rho = r0 + "// &
                "g/omega^2: task '"//task%name//"' takes it only with amplitudes (a, or a_min, a_max, n_a)")
             return
@@ -655,7 +655,7 @@ contains
                return
             end if
          end do
-         if (size(amplitudes) > 0 .and. .not. (task%takes_amplitudes .or. omega_ranged)) then
+         if (size(amplitudes) > 0 .and. .not. (task%physical%takes_amplitudes .or. omega_ranged)) then
             call fail(error, file%path, group%name, trim(merge("n_a", "a  ", ranged)), "task '"//task%name// &
                "' takes no amplitudes (a chart runs over the grid of &chart; task boundaries finds the critical "// &
                "amplitudes itself); amplitudes with r0 make the points of task 'points' or the curves of task "// &
@@ -664,14 +664,14 @@ contains
          end if
       end associate
       call warn_implausible(file, group, scene, p, spring, omega_ranged, omegas)
-      scene%physical = .true.
-      scene%spring_r0 = scene%physical_values%given("r0")
-      scene%pendulum = p
-      scene%pendulum%a = 0.0_wp
-      scene%amplitudes = amplitudes
-      scene%omegas = omegas
-      if (size(omegas) > 0) scene%pendulum%omega = omegas(1)
-      scene%epsilon = physical_epsilon(scene%pendulum)
+      scene%physical%given = .true.
+      scene%physical%r0_given = scene%physical%values%given("r0")
+      scene%physical%pendulum = p
+      scene%physical%pendulum%a = 0.0_wp
+      scene%physical%amplitudes = amplitudes
+      scene%physical%omegas = omegas
+      if (size(omegas) > 0) scene%physical%pendulum%omega = omegas(1)
+      scene%epsilon = physical_epsilon(scene%physical%pendulum)
       ! with &physical the damping is kappa; epsilon in &scene would be an error
       call scene%settings%hide("epsilon")
    end subroutine read_physical_group
@@ -693,7 +693,7 @@ contains
       omega_name = "omega"
       if (omega_ranged) omega_name = "omega_min"
       if (spring) omega_name = "k"
-      if (scene%physical_values%given("r0")) then
+      if (scene%physical%values%given("r0")) then
          if (equilibrium_length(slowest) > longest_spring) then
             hint = "(k in N/m, m in kg?)"
             if (p%r0 > longest_spring) then

@@ -59,7 +59,7 @@ contains
       do k = 1, size(entries)
          if (entries(k)%name == task) text = header(task, entries(k)%purpose)
       end do
-      if (job%takes_physical) then
+      if (job%physical%allowed) then
          ! epsilon shown commented out: with &physical the damping is kappa
          block = group_block(scene_group(), ["task"], ["'"//task//"'"], ["epsilon"])
       else
@@ -77,7 +77,7 @@ contains
          block = commented_block(alternatives(k))
          text = text//nl//"! "//note//nl//block
       end do
-      if (job%takes_physical) then
+      if (job%physical%allowed) then
          block = physical_block(job)
          text = text//nl//block
       end if
@@ -158,18 +158,19 @@ contains
       character(len=:), allocatable :: text, what
       type(group_t) :: group
       integer :: k
+      associate (u => task%physical)
       group = physical_group()
-      if (task%single_amplitude) group = group%with_default("a", "0.05")
+      if (u%single_amplitude) group = group%with_default("a", "0.05")
       what = ""
-      if (task%takes_amplitudes) what = " and delete "//task%amplitudes_replace
+      if (u%takes_amplitudes) what = " and delete "//u%amplitudes_replace
       text = "Optional, instead of the dimensionless values: the pendulum in SI units. To use it, delete the "// &
          "first two characters of each line from &physical to /"//what//". The lines that then stay commented "// &
          "are alternatives: k and m instead of omega (uncomment them and delete omega)"
-      if (task%takes_amplitudes .and. .not. task%single_amplitude) text = text//"; a_min, a_max, n_a instead "// &
+      if (u%takes_amplitudes .and. .not. u%single_amplitude) text = text//"; a_min, a_max, n_a instead "// &
          "of a (uncomment them and delete a)"
-      if (task%takes_spring .and. .not. task%takes_amplitudes) text = text//"; r0 alone gives the critical "// &
+      if (u%takes_spring .and. .not. u%takes_amplitudes) text = text//"; r0 alone gives the critical "// &
          "amplitudes of that spring (uncomment it and delete the &chart group)"
-      if (task%takes_omega_range) text = text//"; r0 with a_min, a_max, n_a and omega_min, omega_max, n_omega "// &
+      if (u%takes_omega_range) text = text//"; r0 with a_min, a_max, n_a and omega_min, omega_max, n_omega "// &
          "give a chart over (a, omega) (uncomment them, delete omega and the &chart group)"
       text = wrapped("! ", text//".")
       text = text//"! &"//group%name//nl
@@ -179,24 +180,25 @@ contains
             case ("k", "m")
                text = text//commented_item("! "//v%name//" = "//value_of(v), v%help)
             case ("r0")
-               if (task%takes_amplitudes) then
+               if (u%takes_amplitudes) then
                   text = text//commented_item(v%name//" = "//value_of(v), v%help)
-               else if (task%takes_spring .or. task%takes_omega_range) then
+               else if (u%takes_spring .or. u%takes_omega_range) then
                   text = text//commented_item("! "//v%name//" = "//value_of(v), v%help)
                end if
             case ("a")
-               if (task%takes_amplitudes) text = text//commented_item(v%name//" = "//value_of(v), v%help)
+               if (u%takes_amplitudes) text = text//commented_item(v%name//" = "//value_of(v), v%help)
             case ("a_min", "a_max", "n_a")
-               if ((task%takes_amplitudes .and. .not. task%single_amplitude) .or. task%takes_omega_range) &
+               if ((u%takes_amplitudes .and. .not. u%single_amplitude) .or. u%takes_omega_range) &
                   text = text//commented_item("! "//v%name//" = "//value_of(v), v%help)
             case ("omega_min", "omega_max", "n_omega")
-               if (task%takes_omega_range) text = text//commented_item("! "//v%name//" = "//value_of(v), v%help)
+               if (u%takes_omega_range) text = text//commented_item("! "//v%name//" = "//value_of(v), v%help)
             case default
                text = text//commented_item(v%name//" = "//value_of(v), v%help)
             end select
          end associate
       end do
       text = text//"! /"
+      end associate
    contains
       function value_of(v) result(value)
          type(variable_t), intent(in) :: v

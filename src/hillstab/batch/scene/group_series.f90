@@ -11,6 +11,7 @@ module hillstab_batch_scene_group_series
    use hillstab_core_error, only: error_t
    use hillstab_core_text, only: real_text, integer_text
    use hillstab_hill_model, only: hill_model_t
+   use hillstab_hill_model_pendulum, only: is_elastic_pendulum
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_declaration, only: new_group, group_t, group_values_t, group_reader_t, variable, var_real, &
       var_integer, &
@@ -136,7 +137,7 @@ contains
       if (physical) then
          call fail(error, file%path, "physical", "r0", "the series task takes r0 and g in &series and the "// &
             "damping as &scene epsilon; leave out &physical")
-      else if (.not. model%is_pendulum()) then
+      else if (.not. is_elastic_pendulum(model)) then
          call fail(error, file%path, "scene", "model", "the pendulum tasks simulate the elastic pendulum: model '"// &
             model%name()//"' is not it")
       else if (alpha < 0.0_wp .or. alpha >= pi2) then

@@ -1,6 +1,6 @@
 !> A scene: one namelist file describing one run. `scene_t` holds what every task
 !> shares — the `&scene` settings (model, method, damping, output, columns, format), the
-!> optional `&physical` pendulum in SI units — and the task itself, an extension of the
+!> optional `&physical` pendulum in SI units (hillstab_batch_scene_physical) — and the task itself, an extension of the
 !> abstract `task_t` that holds its own groups (a chart's grid, a series' pendulum) and
 !> knows how to read, run, size and split itself. The dispatcher, the MPI splitter and
 !> the resource limits call the task's bindings; nothing switches on the task.
@@ -23,14 +23,13 @@ module hillstab_batch_scene_types
    use hillstab_hill_model, only: hill_model_t
    use hillstab_hill_system, only: hill_system_t
    use hillstab_integrate_monodromy, only: method_t
-   use hillstab_hill_units, only: physical_t, physical_beta, equilibrium_length
    use hillstab_batch_scene_declaration, only: group_t, group_values_t
    use hillstab_batch_scene_file, only: scene_file_t
+   use hillstab_batch_scene_physical, only: physical_scene_t, physical_use_t
    use hillstab_batch_output_file, only: output_file_t, open_output
    implicit none
    private
-   public :: scene_t, task_t, output_path, scene_namelist, scene_header, open_scene_output, physical_points, &
-      physical_summary, add_warning
+   public :: scene_t, task_t, output_path, scene_namelist, scene_header, open_scene_output, add_warning
 
    !> A task: what it reads, runs and writes. Concrete tasks extend it (the registry,
    !> hillstab_batch_tasks_registry, makes one from its name); a task whose points are
@@ -39,20 +38,11 @@ module hillstab_batch_scene_types
    type, abstract :: task_t
       character(len=:), allocatable :: name       !! the task name, as in `&scene task`
       logical :: takes_columns = .false.          !! `&scene columns` and format = 'binary' apply
-      logical :: takes_amplitudes = .false.       !! its points can come from `&physical a` with r0
-      !> `&physical r0` without amplitudes: the task takes one spring (its β fixed by r0)
-      logical :: takes_spring = .false.
-      !> `&physical omega_min, omega_max, n_omega` (with amplitudes): a grid over (a, ω)
-      logical :: takes_omega_range = .false.
-      !> with amplitudes: exactly one (a template shows one)
-      logical :: single_amplitude = .false.
-      logical :: takes_physical = .true.          !! `&physical` may replace the dimensionless values
+      type(physical_use_t) :: physical             !! what it takes of `&physical`
       !> its units are computed on OpenMP threads as soon as there are two (each unit is
       !> computed on one thread: a system's row shares its nodes); otherwise only with at
       !> least 4 units a thread, fewer going one by one, each in parallel within
       logical :: units_in_parallel = .false.
-      !> what `&physical a` with r0 replace, for the template ("&points file")
-      character(len=:), allocatable :: amplitudes_replace
       !> the effective values of the task's groups, in the order the header writes them
       type(group_values_t), allocatable :: groups(:)
       !> what reading its groups found suspect though valid (a value in the wrong unit?), one
@@ -111,22 +101,9 @@ module hillstab_batch_scene_types
       character(len=:), allocatable :: columns
       logical :: binary = .false.      !! chart and points: float64 records after a text header
       logical :: names_line = .false.  !! text: a line of column names after the `#` header
-      !> the scene has a `&physical` group: ε comes from κ and ω, and the outputs add
-      !> rates per second (ω is known)
-      logical :: physical = .false.
-      type(physical_t) :: pendulum                  !! `&physical` r0, g, omega, kappa (a: `amplitudes`)
-      !> `&physical k` (N/m) and `m` (kg) when the scene gives ω as √(k/m); 0 when it gives omega
-      real(wp) :: spring_k = 0.0_wp, spring_m = 0.0_wp
-      !> `&physical r0` is given: ρ = r0 + g/ω² is known and β fixed by the spring
-      logical :: spring_r0 = .false.
-      !> `&physical a` (m): the points (task points) or the curves (task coefficient) at
-      !> these amplitudes and the given r0; empty when α and β come from the task's group
-      real(wp), allocatable :: amplitudes(:)
-      !> `&physical omega_min, omega_max, n_omega` (rad/s): the ω of a chart over (a, ω),
-      !> r0 and g fixed; empty when ω is one value (`pendulum%omega`)
-      real(wp), allocatable :: omegas(:)
+      !> `&physical`: the pendulum in SI units (`given` false when the scene has no such group)
+      type(physical_scene_t) :: physical
       type(group_values_t) :: settings              !! the effective `&scene` values
-      type(group_values_t) :: physical_values       !! the effective `&physical` values
       !> the model carries data, read from its group `&<model name>` (hillstab_batch_scene_group_model)
       logical :: model_group = .false.
       type(group_values_t) :: model_values          !! the effective values of that group
@@ -191,7 +168,7 @@ contains
       call values%set("output", quoted(scene%output))
       settings = values%line()
       physical = ""
-      if (scene%physical) physical = scene%physical_values%line()
+      if (scene%physical%given) physical = scene%physical%values%line()
       if (scene%model_group) settings_model = scene%model_values%line()
       n_task = 0
       if (allocated(scene%task%groups)) n_task = size(scene%task%groups)
@@ -202,11 +179,11 @@ contains
          width = max(width, len(scene%task%groups(k)%line()))
       end do
       ! &scene, the model's own group, &physical, then the task's groups
-      first = 2 + n_model + merge(1, 0, scene%physical)
+      first = 2 + n_model + merge(1, 0, scene%physical%given)
       allocate (character(len=width) :: lines(first - 1 + n_task))
       lines(1) = settings
       if (scene%model_group) lines(2) = settings_model
-      if (scene%physical) lines(2 + n_model) = physical
+      if (scene%physical%given) lines(2 + n_model) = physical
       do k = 1, n_task
          lines(first - 1 + k) = scene%task%groups(k)%line()
       end do
@@ -229,76 +206,6 @@ contains
       lines(3:2 + size(groups)) = groups
       lines(3 + size(groups):) = extra
    end function scene_header
-
-   !> α (elastic model) or ν of eq. (21) (Mathieu model) and β of the pendulum at each
-   !> amplitude of `&physical a`: a (2, n) array like the points of a points file.
-   pure function physical_points(scene) result(points)
-      type(scene_t), intent(in) :: scene  !! a scene with `&physical a`
-      real(wp), allocatable :: points(:, :)
-      type(physical_t) :: p
-      integer :: k
-      allocate (points(2, size(scene%amplitudes)))
-      p = scene%pendulum
-      do k = 1, size(scene%amplitudes)
-         p%a = scene%amplitudes(k)
-         points(1, k) = scene%model%physical_alpha(p)
-         points(2, k) = physical_beta(p)
-      end do
-   end function physical_points
-
-   !> Header lines of a scene in physical units: the spring as the run understood it —
-   !> k and m (when given), ω, r0, g, ρ (when r0 is given), κ and ε, the radial period
-   !> and the conversions (eqs. (4), (24), (46)).
-   function physical_summary(scene) result(lines)
-      type(scene_t), intent(in) :: scene  !! a scene with `&physical`
-      character(len=:), allocatable :: lines(:)
-      character(len=400) :: text(3)
-      character(len=:), allocatable :: spring
-      associate (p => scene%pendulum)
-         if (size(scene%omegas) > 0) then
-            spring = "omega = "//real_text(scene%omegas(1))//" ... "//real_text(scene%omegas(size(scene%omegas)))// &
-                     " rad/s ("//integer_text(size(scene%omegas))//" values, the chart's second axis)"
-         else if (scene%spring_k > 0.0_wp) then
-            spring = "k = "//real_text(scene%spring_k)//" N/m, m = "//real_text(scene%spring_m)// &
-                     " kg, omega = sqrt(k/m) = "//real_text(p%omega)//" rad/s"
-         else
-            spring = "omega = "//real_text(p%omega)//" rad/s"
-         end if
-         if (size(scene%omegas) > 0) then
-            spring = spring//", r0 = "//real_text(p%r0)//" m, g = "//real_text(p%g)//" m/s^2; rho = r0 + g/omega^2 "// &
-                     "from "//real_text(p%r0 + p%g/scene%omegas(1)**2)//" m down to "// &
-                     real_text(p%r0 + p%g/scene%omegas(size(scene%omegas))**2)//" m, beta = g pi^2/(rho omega^2) "// &
-                     "from "//real_text(beta_at(scene%omegas(1)))//" down to "// &
-                     real_text(beta_at(scene%omegas(size(scene%omegas))))
-         else if (scene%spring_r0) then
-            spring = spring//", r0 = "//real_text(p%r0)//" m, g = "//real_text(p%g)//" m/s^2, rho = r0 + g/omega^2 = "// &
-                     real_text(equilibrium_length(p))//" m, beta = "//real_text(physical_beta(p))
-         else
-            spring = spring//", g = "//real_text(p%g)//" m/s^2 (r0 not given: rho = g pi^2/(beta omega^2) varies with beta)"
-         end if
-         text(1) = "physical units (SI): rho = r0 + g/omega^2 (eq. (4)), tau = omega t/pi, alpha = a pi^2/rho, "// &
-                   "beta = g pi^2/(rho omega^2) (eq. (24)), epsilon = kappa pi/omega (eq. (46))"
-         text(2) = "spring: "//spring
-         if (size(scene%omegas) > 0) then
-            text(3) = "kappa = "//real_text(p%kappa)//" 1/s, epsilon = kappa pi/omega at each omega; radial "// &
-                      "period 2 pi/omega from "//real_text(2.0_wp*pi/scene%omegas(1))//" s down to "// &
-                      real_text(2.0_wp*pi/scene%omegas(size(scene%omegas)))//" s (2 units of tau)"
-         else
-            text(3) = "kappa = "//real_text(p%kappa)//" 1/s, epsilon = "//real_text(scene%epsilon)// &
-                      "; radial period 2 pi/omega = "//real_text(2.0_wp*pi/p%omega)//" s (2 units of tau)"
-         end if
-      end associate
-      lines = text
-   contains
-      !> β of the spring at one ω of the chart (eq. (24)).
-      pure real(wp) function beta_at(omega)
-         real(wp), intent(in) :: omega
-         type(physical_t) :: at
-         at = scene%pendulum
-         at%omega = omega
-         beta_at = physical_beta(at)
-      end function beta_at
-   end function physical_summary
 
    !> Add a warning (or several, one a line) to a list of warnings (`scene_t%warnings`,
    !> `task_t%warnings`).

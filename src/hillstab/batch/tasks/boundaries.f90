@@ -35,6 +35,7 @@ module hillstab_batch_tasks_boundaries
    use hillstab_hill_model, only: model_description, model_equation_text
    use hillstab_hill_units, only: physical_beta
    use hillstab_hill_coefficient, only: in_physical_domain, sampling_name
+   use hillstab_hill_model_pendulum, only: is_elastic_pendulum
    use hillstab_integrate_monodromy, only: method_name, method_is_exact, method_uses_segments, method_pieces
    use hillstab_curves_hill_method, only: hill_boundary_t, hill_boundaries, coexistence_threshold, &
       hill_block_values_t, hill_block_values, hill_curves, route_pencil, route_fourier, route_roots, &
@@ -160,7 +161,7 @@ contains
    function boundaries_task() result(task)
       type(boundaries_task_t) :: task
       task%name = "boundaries"
-      task%takes_spring = .true.
+      task%physical%takes_spring = .true.
    end function boundaries_task
 
    !> `&chart`, bounded for Hill's method; the curves are those of the undamped equation.
@@ -178,15 +179,15 @@ contains
             "(hillstab_critical_drives_along, Python critical_drives)")
          return
       end if
-      if (scene%epsilon > 0.0_wp .and. .not. scene%physical) then
+      if (scene%epsilon > 0.0_wp .and. .not. scene%physical%given) then
          call fail(error, file%path, "scene", "epsilon", "task 'boundaries' draws the undamped curves: epsilon must be 0")
          return
       end if
-      if (scene%physical .and. .not. group_present(file%unit, "chart")) then
+      if (scene%physical%given .and. .not. group_present(file%unit, "chart")) then
          call read_spring(self, file, scene, error)
          return
       end if
-      if (scene%spring_r0) then
+      if (scene%physical%r0_given) then
          call fail(error, file%path, "physical", "r0", "r0 fixes beta: with &chart the curves run over its beta "// &
             "window (drop r0), without &chart the task finds the critical amplitudes of the spring (drop &chart)")
          return
@@ -212,7 +213,7 @@ contains
       real(wp) :: beta
       self%spring = .true.
       allocate (self%groups(0))
-      if (.not. scene%spring_r0) then
+      if (.not. scene%physical%r0_given) then
          call fail(error, file%path, "physical", "r0", "the critical amplitudes of a spring (task boundaries with "// &
             "&physical and no &chart) need r0, the natural length of the spring (m); for the curves over a grid "// &
             "give &chart")
@@ -223,7 +224,7 @@ contains
             "must be 0")
          return
       end if
-      if (.not. scene%model%is_pendulum()) then
+      if (.not. is_elastic_pendulum(scene%model)) then
          call fail(error, file%path, "scene", "model", "the critical amplitudes of a spring are those of the "// &
             "elastic model, not of model '"//scene%model%name()//"'")
          return
@@ -233,7 +234,7 @@ contains
             "method: method must be auto or an exact method, not '"//method_name(scene%method%kind)//"'")
          return
       end if
-      beta = physical_beta(scene%pendulum)
+      beta = physical_beta(scene%physical%pendulum)
       if (beta < min_pendulum_beta) then
          call fail(error, file%path, "physical", "g", "beta = g pi^2/(rho omega^2) = "//real_text(beta)// &
             " lies below "//real_text(min_pendulum_beta)//" (g = 0 or a spring too stiff to sag): S = 2 "// &
@@ -800,7 +801,7 @@ contains
    !> Whether the file has the column a: a scene with `&physical` and the elastic model.
    pure logical function amplitude_column(scene)
       type(scene_t), intent(in) :: scene
-      amplitude_column = scene%physical .and. scene%model%is_pendulum()
+      amplitude_column = scene%physical%given .and. is_elastic_pendulum(scene%model)
    end function amplitude_column
 
    !> One data line: the columns `ids` of the row `r` of curve `curve`.

@@ -13,7 +13,8 @@ module hillstab_batch_tasks_boundaries_spring
    use hillstab_integrate_monodromy, only: monodromy_trace, method_t, method_auto
    use hillstab_curves_boundaries, only: boundary_check_t, verify_boundary, alpha_crossing_t, alpha_crossings, &
       crossing_search_gap
-   use hillstab_batch_scene_types, only: scene_t, scene_header, output_path, open_scene_output, physical_summary
+   use hillstab_batch_scene_types, only: scene_t, scene_header, output_path, open_scene_output
+   use hillstab_batch_scene_physical, only: physical_summary
    use hillstab_batch_output_columns, only: column_t, style_e17, style_e4, style_integer, style_width2, &
       style_width4, columns_text, put_row, all_columns, column_lines
    use hillstab_batch_output_file, only: output_file_t, finish_output, discard_output, write_header, write_text
@@ -71,8 +72,8 @@ contains
       character(len=400) :: buffer
       character(len=:), allocatable :: intervals
       integer :: j, pos, n_failed
-      rho = equilibrium_length(scene%pendulum)
-      beta = physical_beta(scene%pendulum)
+      rho = equilibrium_length(scene%physical%pendulum)
+      beta = physical_beta(scene%physical%pendulum)
       alpha_end = pi2*(1.0_wp - crossing_search_gap)
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
@@ -247,7 +248,7 @@ contains
       character(len=:), allocatable :: lines(:), spring(:), per_column(:)
       character(len=400) :: text(8 + size(table))
       integer :: k, m
-      spring = physical_summary(scene)
+      spring = physical_summary(scene%physical, scene%epsilon)
       m = 0
       m = m + 1; text(m) = model_description(scene%model)
       do k = 1, size(spring)

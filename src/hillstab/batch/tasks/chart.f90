@@ -17,11 +17,13 @@ module hillstab_batch_tasks_chart
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict, period_damping
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, batch_plan_t, prepare_batch, need_verdict
    use hillstab_batch_scene_types, only: scene_t
+   use hillstab_batch_scene_physical, only: physical_scene_t
    use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail, group_present
    use hillstab_batch_scene_checks, only: check_integration_cost, max_grid_count
    use hillstab_hill_units, only: physical_t, physical_beta, physical_epsilon
    use hillstab_hill_model, only: hill_point_t, hill_model_t
+   use hillstab_hill_model_pendulum, only: pendulum_alpha
    use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_alpha, grid_beta, grid_point, &
       grid_size_text
    use hillstab_batch_tasks_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, &
@@ -45,10 +47,9 @@ module hillstab_batch_tasks_chart
       !> `&physical a_min, a_max, n_a, omega_min, omega_max, n_omega` without `&chart`: the
       !> chart runs over (a, ω) at fixed r0, g (blocks of constant a)
       logical :: physical_grid = .false.
-      !> a chart over `&physical`: the pendulum (r0, g, κ), for each point's (α, β) (`point_of`)
-      type(physical_t) :: pendulum
-      real(wp), allocatable :: amplitudes(:)  !! its amplitudes a [m], one a row
-      real(wp), allocatable :: omegas(:)      !! its frequencies ω [rad/s], along a row
+      !> a chart over `&physical`: the scene's pendulum (r0, g, κ), its amplitudes a [m], one a
+      !> row, and its frequencies ω [rad/s], along a row, for each point's (α, β) (`point_of`)
+      type(physical_scene_t) :: spring
       class(hill_model_t), allocatable :: model  !! the scene's model (its α of a pendulum)
    contains
       procedure :: read => chart_read
@@ -91,7 +92,7 @@ contains
       type(chart_task_t) :: task
       task%name = "chart"
       task%takes_columns = .true.
-      task%takes_omega_range = .true.
+      task%physical%takes_omega_range = .true.
    end function chart_task
 
    !> `&chart`, and what the scene's method and columns allow.
@@ -101,7 +102,7 @@ contains
       type(scene_t), intent(in) :: scene          !! the `&scene` settings
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
       type(chart_layout_t) :: columns
-      if (size(scene%omegas) > 0) then
+      if (size(scene%physical%omegas) > 0) then
          ! a chart over (a, omega): the grid comes from &physical
          if (group_present(file%unit, "chart")) then
             call fail(error, file%path, "chart", "alpha_min", "the chart runs either over &chart (alpha, beta) or "// &
@@ -109,13 +110,11 @@ contains
             return
          end if
          self%physical_grid = .true.
-         self%pendulum = scene%pendulum
-         self%amplitudes = scene%amplitudes
-         self%omegas = scene%omegas
+         self%spring = scene%physical
          allocate (self%model, source=scene%model)
          allocate (self%groups(0))
-         self%grid%n_alpha = size(scene%amplitudes)
-         self%grid%n_beta = size(scene%omegas)
+         self%grid%n_alpha = size(scene%physical%amplitudes)
+         self%grid%n_beta = size(scene%physical%omegas)
          if (int(self%grid%n_alpha, int64)*self%grid%n_beta > int(max_grid_count, int64)) then
             call fail(error, file%path, "physical", "n_omega", "n_a * n_omega = "// &
                integer_text(int(self%grid%n_alpha, int64)*self%grid%n_beta)//" points exceed the limit of 1e8")
@@ -165,7 +164,7 @@ contains
    subroutine physical_row(self, scene, unit, text, statuses)
       class(chart_task_t), intent(in) :: self  !! the task (a chart over `&physical`), its units prepared
       type(scene_t), intent(in) :: scene  !! its scene
-      integer, intent(in) :: unit  !! the row: the amplitude `self%amplitudes(unit)`
+      integer, intent(in) :: unit  !! the row: the amplitude `self%spring%amplitudes(unit)`
       character(len=:), allocatable, intent(out) :: text  !! the lines, no final new line (or records)
       integer, intent(out) :: statuses(:)  !! per point
       character(len=chart_line_length), allocatable :: lines(:)
@@ -178,12 +177,12 @@ contains
       integer :: j, n_omega
       integer :: ids(size(self%columns%ids))  ! the binary records' columns (a gather, `columns` allocated)
       ids = self%columns%ids
-      n_omega = size(self%omegas)
+      n_omega = size(self%spring%omegas)
       allocate (lines(n_omega), lengths(n_omega), values(size(ids), n_omega))
       !$omp parallel do schedule(dynamic) default(shared) private(j, p, f, cause, v, epsilon, alpha, beta)
       do j = 1, n_omega
          p = self%pendulum_at(unit, j)
-         alpha = scene%model%physical_alpha(p)
+         alpha = pendulum_alpha(scene%model, p)
          beta = physical_beta(p)
          epsilon = physical_epsilon(p)
          call evaluate_point(scene, alpha, beta, f, cause, statuses(j), epsilon, self%columns)
@@ -233,7 +232,7 @@ contains
       ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
       ! when the scene knows ω)
       per_second = 0.0_wp
-      if (scene%physical) per_second = scene%pendulum%omega/pi
+      if (scene%physical%given) per_second = scene%physical%pendulum%omega/pi
       damping = scene%model%point_damping(alpha, scene%epsilon)
       row = hill_point_t(alpha, 0.0_wp, damping)
       call monodromy_trace_batch(scene%model, row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate, &
@@ -243,7 +242,7 @@ contains
       where (failed) statuses = status_failed
       do j = 1, size(betas)
          a = 0.0_wp
-         if (scene%physical) a = point_amplitude(scene, j, alpha, betas(j))
+         if (scene%physical%given) a = point_amplitude(scene, j, alpha, betas(j))
          if (need <= need_verdict .and. .not. scene%binary) then
             ! a verdict line (or a failed point's), written directly
             lengths(j) = 0
@@ -415,7 +414,7 @@ contains
       where (failed) statuses = status_failed
       allocate (physical(0), amplitudes(0))
       if (any(columns%ids == col_physical)) physical = [(in_physical_domain(alpha, betas(j)), j=1, size(betas))]
-      if (scene%physical) amplitudes = [(point_amplitude(scene, j, alpha, betas(j)), j=1, size(betas))]
+      if (scene%physical%given) amplitudes = [(point_amplitude(scene, j, alpha, betas(j)), j=1, size(betas))]
       ! room for every line at its longest (and one more, for the line being written)
       allocate (character(len=(size(betas) + 1)*(chart_line_length + 1) + 1) :: buffer)
       pos = 0
@@ -471,9 +470,9 @@ contains
       class(chart_task_t), intent(in) :: self  !! the task (a chart over `&physical`)
       integer, intent(in) :: i, j  !! the row (amplitude) and the point along it (ω)
       type(physical_t) :: p
-      p = self%pendulum
-      p%a = self%amplitudes(i)
-      p%omega = self%omegas(j)
+      p = self%spring%pendulum
+      p%a = self%spring%amplitudes(i)
+      p%omega = self%spring%omegas(j)
    end function pendulum_at
 
    !> (α, β) of point k, numbered row by row (over `&physical`: the pendulum's at the row's
@@ -485,7 +484,7 @@ contains
       type(physical_t) :: p
       if (self%physical_grid) then
          p = self%pendulum_at(int((k - 1)/self%grid%n_beta) + 1, int(mod(k - 1, int(self%grid%n_beta, int64))) + 1)
-         point = [self%model%physical_alpha(p), physical_beta(p)]
+         point = [pendulum_alpha(self%model, p), physical_beta(p)]
       else
          point = grid_point(self%grid, k)
       end if

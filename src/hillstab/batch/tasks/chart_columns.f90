@@ -27,9 +27,11 @@ module hillstab_batch_tasks_chart_columns
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict, largest_multiplier_modulus, &
       verdicts, near_threshold
+   use hillstab_hill_model_pendulum, only: is_elastic_pendulum, pendulum_note
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, method_name, method_uses_segments, method_is_exact, &
       need_nothing, need_verdict, need_growth, need_trace
-   use hillstab_batch_scene_types, only: scene_t, task_t, scene_header, output_path, physical_summary
+   use hillstab_batch_scene_types, only: scene_t, task_t, scene_header, output_path
+   use hillstab_batch_scene_physical, only: physical_summary
    use hillstab_batch_scene_file, only: fail
    use hillstab_batch_output_columns, only: column_t, style_e17, style_e11, style_e7, style_e4, style_flag, &
       column_lines, find_columns, columns_text, put_value
@@ -133,7 +135,7 @@ contains
       character(len=:), allocatable :: alpha_name, beta_name
       logical :: damped, pendulum
       damped = scene%epsilon > 0.0_wp .or. scene%model%has_damping()
-      pendulum = scene%model%is_pendulum()
+      pendulum = is_elastic_pendulum(scene%model)
       if (damped) then
          stable = "1 when |S1| < "//damped_threshold(scene)//" (all multipliers of x inside the unit circle)"
       else
@@ -148,7 +150,7 @@ contains
          alpha = "alpha of "//scene%model%summary()
          beta = "beta of "//scene%model%summary()
       end if
-      if (size(scene%amplitudes) > 0) then
+      if (size(scene%physical%amplitudes) > 0) then
          a = "bounce amplitude of &physical (alpha = a pi^2/rho)"
       else
          a = "bounce amplitude a = alpha rho/pi^2 with rho = g pi^2/(beta omega^2) (eq. (24)); -1 where beta <= 0 "// &
@@ -162,11 +164,11 @@ contains
       end if
       table(col_alpha) = chart_column(alpha_name, "", alpha, style_e17, need_nothing, kept=.true.)
       table(col_a) = chart_column("a", "m", a, style_e17, need_nothing, kept=.true., &
-         offered=scene%physical .and. (size(scene%amplitudes) > 0 .or. pendulum))
+         offered=scene%physical%given .and. (size(scene%physical%amplitudes) > 0 .or. pendulum))
       table(col_beta) = chart_column(beta_name, "", beta, style_e17, need_nothing, &
          kept=.true.)
       table(col_omega) = chart_column("omega", "rad/s", "radial angular frequency sqrt(k/m) of the point "// &
-         "(rho = r0 + g/omega^2)", style_e17, need_nothing, kept=.true., offered=size(scene%omegas) > 0)
+         "(rho = r0 + g/omega^2)", style_e17, need_nothing, kept=.true., offered=size(scene%physical%omegas) > 0)
       table(col_s) = chart_column("S", "", "trace of the one-period monodromy (with epsilon > 0: S1 of the chi "// &
          "equation (47)); |S| > 1e300 is written as +-1e300 with overflow = 1", style_e17, need_trace)
       table(col_stable) = chart_column("stable", "", stable, style_flag, need_verdict, placeholder=-1.0_wp)
@@ -183,7 +185,7 @@ contains
       table(col_stable_paper) = chart_column("stable_paper", "", "1 when |S1| <= 2, the sufficient criterion of "// &
          "the paper", style_flag, need_verdict, placeholder=-1.0_wp, paper=.true., offered=damped)
       table(col_mu_per_s) = chart_column("mu_per_s", "1/s", "the Floquet exponent per second, mu omega/pi "// &
-         "(tau = omega t/pi)", style_e11, need_growth, offered=scene%physical)
+         "(tau = omega t/pi)", style_e11, need_growth, offered=scene%physical%given)
       table(col_error_estimate) = chart_column("error_estimate", "", "the method's estimate of |error of S|/max(1, "// &
          "|S|), not a bound (-1: the method gives none; the bound at status 0 is the tolerance)", style_e4, need_trace, &
          placeholder=-1.0_wp, accuracy=accuracy_estimate)
@@ -630,7 +632,7 @@ contains
          text(n) = trim(text(n))//merge(" ", ",", index(text(n), "=") == 0)//" "//columns%table(id)%name//" = "// &
             placeholder
       end do
-      if (outside .and. scene%model%is_pendulum()) then
+      if (outside .and. is_elastic_pendulum(scene%model)) then
          n = n + 1
          text(n) = "note: this file leaves the physical domain (rows with physical = 0)"
       end if
@@ -753,12 +755,12 @@ contains
       type(scene_t), intent(in) :: scene
       character(len=:), allocatable :: lines(:)
       character(len=400) :: text(1)
-      if (size(scene%amplitudes) > 0) then
+      if (size(scene%physical%amplitudes) > 0) then
          text(1) = "each amplitude a of &physical is one point (points: a row; coefficient: a curve): alpha = "// &
-            "a pi^2/rho"//scene%model%physical_note()
-         lines = stacked(physical_summary(scene), text)
+            "a pi^2/rho"//pendulum_note(scene%model)
+         lines = stacked(physical_summary(scene%physical, scene%epsilon), text)
       else
-         lines = physical_summary(scene)
+         lines = physical_summary(scene%physical, scene%epsilon)
       end if
    end function physical_header
 
@@ -769,10 +771,10 @@ contains
       type(scene_t), intent(in) :: scene  !! a scene with `&physical`
       integer, intent(in) :: k  !! the point's index
       real(wp), intent(in) :: alpha, beta  !! the point
-      if (size(scene%amplitudes) > 0) then
-         a = scene%amplitudes(k)
-      else if (beta > 0.0_wp .and. scene%pendulum%g > 0.0_wp) then
-         a = alpha*scene%pendulum%g/(beta*scene%pendulum%omega**2)
+      if (size(scene%physical%amplitudes) > 0) then
+         a = scene%physical%amplitudes(k)
+      else if (beta > 0.0_wp .and. scene%physical%pendulum%g > 0.0_wp) then
+         a = alpha*scene%physical%pendulum%g/(beta*scene%physical%pendulum%omega**2)
       else
          a = -1.0_wp
       end if
@@ -808,7 +810,7 @@ contains
       character(len=:), allocatable :: model_text, common(:)
       model_text = model_description(scene%model)
       common = scene_header(scene, "hillstab "//version_string//": "//model_equation_text(scene%model), [model_text])
-      if (scene%physical) then
+      if (scene%physical%given) then
          lines = stacked(common, physical_header(scene))
       else
          lines = common

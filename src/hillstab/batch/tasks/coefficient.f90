@@ -6,7 +6,8 @@ module hillstab_batch_tasks_coefficient
    use hillstab_core_error, only: error_t, set_error, err_input
    use hillstab_core_text, only: real_text, integer_text
    use hillstab_hill_coefficient, only: segment_coefficients, sampling_name
-   use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output, physical_points
+   use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output
+   use hillstab_batch_scene_physical, only: physical_points
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_declaration, only: new_group, group_t, group_reader_t, variable, var_real, var_integer, var_real_list, &
       begin_group, next_item, end_group, list_value
@@ -81,8 +82,8 @@ contains
    function coefficient_task() result(task)
       type(coefficient_task_t) :: task
       task%name = "coefficient"
-      task%amplitudes_replace = "alphas and beta from &coefficient"
-      task%takes_amplitudes = .true.
+      task%physical%amplitudes_replace = "alphas and beta from &coefficient"
+      task%physical%takes_amplitudes = .true.
    end function coefficient_task
 
    !> The declaration of `&coefficient` (defaults: the paper's Fig. 2).
@@ -111,10 +112,10 @@ contains
       real(wp), allocatable :: points(:, :)
       logical :: from_physical
       integer :: k
-      from_physical = size(scene%amplitudes) > 0
-      if (size(scene%amplitudes) > max_alphas) then
+      from_physical = size(scene%physical%amplitudes) > 0
+      if (size(scene%physical%amplitudes) > max_alphas) then
          call fail(error, file%path, "physical", "n_a", "task 'coefficient' draws at most "// &
-            integer_text(max_alphas)//" curves, got "//integer_text(size(scene%amplitudes))//" amplitudes")
+            integer_text(max_alphas)//" curves, got "//integer_text(size(scene%physical%amplitudes))//" amplitudes")
          return
       end if
       group = coefficient_group()
@@ -138,7 +139,7 @@ contains
                   return
                end if
             end do
-            points = physical_points(scene)
+            points = physical_points(scene%physical, scene%model)
             self%alphas = points(1, :)
             beta = points(2, 1)
             call values%hide("alphas")
@@ -242,11 +243,11 @@ contains
       segments_line = "Qseg: Q replaced by "//integer_text(n_pieces)//" constant pieces on [0, 2), sampling "// &
                       sampling_name(scene%method%sampling)//" (2 pieces, endpoint: eq. (28) of the paper)"
       columns_line = "Q(a), Qseg(a): the two columns of alpha = a"
-      if (size(scene%amplitudes) == n_alpha) then
+      if (size(scene%physical%amplitudes) == n_alpha) then
          ! the curves in metres: each alpha is a bounce amplitude of &physical
          columns_line = columns_line//"; the amplitudes [m]:"
          do k = 1, n_alpha
-            columns_line = columns_line//" a = "//real_text(scene%amplitudes(k))//" (alpha = "// &
+            columns_line = columns_line//" a = "//real_text(scene%physical%amplitudes(k))//" (alpha = "// &
                            real_text(self%alphas(k))//")"
             if (k < n_alpha) columns_line = columns_line//","
          end do

@@ -28,7 +28,8 @@ module hillstab_batch_tasks_lyapunov
    use hillstab_pendulum_symplectic, only: symplectic_scheme_id, symplectic_scheme_name, symplectic_scheme_count
    use hillstab_pendulum_chaos, only: chaos_options_t, chaos_t, chaos_indicators_batch, chaos_integrator_id, &
       chaos_integrator_name, chaos_method_text, chaos_verdict_rule, chaos_symplectic
-   use hillstab_batch_scene_types, only: scene_t, task_t, scene_header, output_path, physical_summary
+   use hillstab_batch_scene_types, only: scene_t, task_t, scene_header, output_path
+   use hillstab_batch_scene_physical, only: physical_summary
    use hillstab_batch_scene_file, only: scene_file_t, fail, group_present, read_len
    use hillstab_hill_units, only: physical_t, physical_alpha, physical_beta, physical_epsilon
    use hillstab_batch_scene_checks, only: min_pendulum_beta
@@ -76,7 +77,7 @@ module hillstab_batch_tasks_lyapunov
       type(chaos_options_t) :: chaos          !! integrator and indicators of `&lyapunov`
       !> over the amplitudes (and frequencies) of `&physical`: a grid of n_a x n_omega
       !> points in blocks of constant a, or the amplitudes at one omega
-      logical :: physical = .false.
+      logical :: over_physical = .false.
       type(physical_t) :: spring              !! `&physical` r0, g, kappa (a, omega per point)
       real(wp), allocatable :: amplitudes(:)  !! a [m]
       real(wp), allocatable :: omegas(:)      !! omega [rad/s] (one value without a range)
@@ -124,7 +125,7 @@ contains
    function lyapunov_size_variables(self) result(text)
       class(lyapunov_task_t), intent(in) :: self  !! the task
       character(len=:), allocatable :: text
-      text = grid_size_text(self%grid, self%physical)
+      text = grid_size_text(self%grid, self%over_physical)
    end function lyapunov_size_variables
 
    !> An upper estimate of the memory of a run by the unit driver (hillstab_batch_run_units
@@ -151,10 +152,10 @@ contains
    function lyapunov_task() result(task)
       type(lyapunov_task_t) :: task
       task%name = "lyapunov"
-      task%takes_physical = .true.
-      task%takes_amplitudes = .true.
-      task%takes_omega_range = .true.
-      task%amplitudes_replace = "&chart (or &points), and r0, g from &series"
+      task%physical%allowed = .true.
+      task%physical%takes_amplitudes = .true.
+      task%physical%takes_omega_range = .true.
+      task%physical%amplitudes_replace = "&chart (or &points), and r0, g from &series"
    end function lyapunov_task
 
    !> The declaration of `&lyapunov`.
@@ -239,7 +240,7 @@ contains
       if (allocated(error)) return
       self%table = lyapunov_columns()
       self%ids = chart_ids
-      if (scene%physical) then
+      if (scene%physical%given) then
          call physical_settings(error)
          if (allocated(error)) return
          self%ids = physical_ids
@@ -290,18 +291,18 @@ contains
                "runs either over &physical (a, omega) or over &chart / &points, not both"
             return
          end if
-         if (size(scene%amplitudes) == 0) then
+         if (size(scene%physical%amplitudes) == 0) then
             call fail(error, file%path, "physical", "a_min", "the map over &physical needs the amplitudes: "// &
                "a_min, a_max, n_a (or the list a) with r0")
             return
          end if
-         self%physical = .true.
-         self%spring = scene%pendulum
-         self%amplitudes = scene%amplitudes
-         if (size(scene%omegas) > 0) then
-            self%omegas = scene%omegas
+         self%over_physical = .true.
+         self%spring = scene%physical%pendulum
+         self%amplitudes = scene%physical%amplitudes
+         if (size(scene%physical%omegas) > 0) then
+            self%omegas = scene%physical%omegas
          else
-            self%omegas = [scene%pendulum%omega]
+            self%omegas = [scene%physical%pendulum%omega]
          end if
          self%over_points = .false.
          self%grid%n_alpha = size(self%amplitudes)
@@ -314,7 +315,7 @@ contains
          end do
          self%spring%omega = self%omegas(1)
          if (beta_low < min_pendulum_beta) then
-            call fail(error, file%path, "physical", trim(merge("omega_max", "omega    ", size(scene%omegas) > 0)), &
+            call fail(error, file%path, "physical", trim(merge("omega_max", "omega    ", size(scene%physical%omegas) > 0)), &
                "gives beta = "//real_text(beta_low)//", below "//real_text(min_pendulum_beta)// &
                " (the pendulum's time scales overflow there)")
          end if
@@ -488,7 +489,7 @@ contains
       integer(int64), intent(in) :: k  !! the point
       real(wp) :: point(2)
       type(physical_t) :: p
-      if (self%physical) then
+      if (self%over_physical) then
          p = spring_at(self, k)
          point = [physical_alpha(p), physical_beta(p)]
       else if (self%over_points) then
@@ -517,7 +518,7 @@ contains
       new_block = .false.
       if (self%over_points) return
       ! amplitudes at one omega: a list, not a grid
-      if (self%physical) then
+      if (self%over_physical) then
          if (size(self%omegas) == 1) return
       end if
       new_block = mod(k - 1, int(self%grid%n_beta, int64)) == 0 .and. k > self%grid%n_beta
@@ -533,7 +534,7 @@ contains
       character(len=:), allocatable :: spring(:)
       integer :: n, j
       n = 0
-      if (self%physical) then
+      if (self%over_physical) then
          n = n + 1; text(n) = "each point: the spring of &physical at its amplitude a and frequency omega (alpha = a "// &
             "pi^2/rho, beta = g pi^2/(rho omega^2), epsilon = kappa pi/omega), started at phi0 of &series (eq. (38)) "// &
             "= "//start_angle_text(self%series%phi0)//", "//integer_text(self%series%periods)//" radial periods"
@@ -565,8 +566,8 @@ contains
          "than asked when the verdict was certain early)"
       n = n + 1; text(n) = "status: 0 ok; 1 the chart's value only round-off limited; 2 failed (placeholders, below)"
       n = n + 1; text(n) = "failed rows: "//placeholders_text(self%table, self%ids)
-      if (self%physical) then
-         spring = physical_summary(scene)
+      if (self%over_physical) then
+         spring = physical_summary(scene%physical, scene%epsilon)
          do j = 1, size(spring)
             n = n + 1; text(n) = spring(j)
          end do
@@ -621,7 +622,7 @@ contains
          j = int(k - lo) + 1
          point(:, j) = self%point_of(k)
          slot(j) = 0
-         if (self%physical) then
+         if (self%over_physical) then
             spring = spring_at(self, k)
             epsilons(j) = physical_epsilon(spring)
             call pendulum_from_chart(point(1, j), point(2, j), epsilons(j), spring%r0, spring%g, pendula(m + 1), error)
@@ -643,7 +644,7 @@ contains
                                              self%chaos, results)
       do k = lo, hi
          j = int(k - lo) + 1
-         if (self%physical) then
+         if (self%over_physical) then
             spring = spring_at(self, k)
          else
             spring = physical_t()

@@ -93,7 +93,7 @@ contains
    function poincare_task() result(task)
       type(poincare_task_t) :: task
       task%name = "poincare"
-      task%takes_physical = .false.
+      task%physical%allowed = .false.
    end function poincare_task
 
    !> The declaration of `&poincare` (the default angles lie below 0.35 rad: states at rest
@@ -121,7 +121,7 @@ contains
       type(group_reader_t) :: reader
       integer :: k
       allocate (self%groups(2))
-      call read_series_group(file, series_group(), scene%model, scene%physical, self%series, self%groups(1), error, &
+      call read_series_group(file, series_group(), scene%model, scene%physical%given, self%series, self%groups(1), error, &
          samples=.false., warnings=self%warnings)
       if (allocated(error)) return
       group = poincare_group()

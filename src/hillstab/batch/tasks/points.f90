@@ -11,7 +11,8 @@ module hillstab_batch_tasks_points
    use hillstab_core_text, only: integer_text
    use hillstab_hill_coefficient, only: in_physical_domain
    use hillstab_hill_floquet, only: floquet_t
-   use hillstab_batch_scene_types, only: scene_t, physical_points
+   use hillstab_batch_scene_types, only: scene_t
+   use hillstab_batch_scene_physical, only: physical_points
    use hillstab_core_parallel, only: max_threads
    use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail
@@ -68,9 +69,9 @@ contains
    function points_task() result(task)
       type(points_task_t) :: task
       task%name = "points"
-      task%amplitudes_replace = "the &points group"
+      task%physical%amplitudes_replace = "the &points group"
       task%takes_columns = .true.
-      task%takes_amplitudes = .true.
+      task%physical%takes_amplitudes = .true.
    end function points_task
 
    !> The points of `&points file`, or of `&physical a` (then `&points` may not name a file).
@@ -82,7 +83,7 @@ contains
       type(chart_layout_t) :: columns
       integer :: k
       logical :: from_physical
-      from_physical = size(scene%amplitudes) > 0
+      from_physical = size(scene%physical%amplitudes) > 0
       allocate (self%groups(1))
       call read_points_group(file, points_group(), scene%model, self%file, self%points, self%groups(1), error, &
                              optional=from_physical)
@@ -93,7 +94,7 @@ contains
                "or from &physical a and r0, not both")
             return
          end if
-         self%points = physical_points(scene)
+         self%points = physical_points(scene%physical, scene%model)
          call self%groups(1)%hide("file")
       end if
       do k = 1, size(self%points, 2)
@@ -150,13 +151,13 @@ contains
       ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
       ! when the scene knows ω)
       per_second = 0.0_wp
-      if (scene%physical) per_second = scene%pendulum%omega/pi
+      if (scene%physical%given) per_second = scene%physical%pendulum%omega/pi
       !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause, v, alpha, beta, a)
       do k = first, last
          alpha = self%points(1, k)
          beta = self%points(2, k)
          a = 0.0_wp
-         if (scene%physical) a = point_amplitude(scene, k, alpha, beta)
+         if (scene%physical%given) a = point_amplitude(scene, k, alpha, beta)
          call evaluate_point(scene, alpha, beta, f, cause, statuses(k), columns=columns)
          if (statuses(k) == status_failed) then
             v = failed_values(columns, alpha, beta, in_physical_domain(alpha, beta), a)

@@ -31,7 +31,8 @@ module hillstab_batch_tasks_series
       pendulum_angle, pendulum_energy, pendulum_radius, px, pz, pvx, pvz
    use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat, &
       linear_onset_periods
-   use hillstab_batch_scene_types, only: scene_t, task_t, scene_header, output_path, open_scene_output, physical_summary
+   use hillstab_batch_scene_types, only: scene_t, task_t, scene_header, output_path, open_scene_output
+   use hillstab_batch_scene_physical, only: physical_summary
    use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_checks, only: min_pendulum_beta
@@ -110,10 +111,10 @@ contains
    function series_task() result(task)
       type(series_task_t) :: task
       task%name = "series"
-      task%takes_amplitudes = .true.
-      task%takes_spring = .true.
-      task%single_amplitude = .true.
-      task%amplitudes_replace = "alpha, beta, r0 and g from &series"
+      task%physical%takes_amplitudes = .true.
+      task%physical%takes_spring = .true.
+      task%physical%single_amplitude = .true.
+      task%physical%amplitudes_replace = "alpha, beta, r0 and g from &series"
    end function series_task
 
    !> `&series`.
@@ -131,7 +132,7 @@ contains
       call read_series_group(file, series_group(), scene%model, .false., self%plan, self%groups(1), error, &
                              takes_duration=.true., warnings=self%warnings)
       if (allocated(error)) return
-      if (scene%physical) then
+      if (scene%physical%given) then
          ! the pendulum of &physical (omega or k, m; r0; g; kappa; one amplitude a)
          do k = 1, size(replaced)
             if (self%groups(1)%given(trim(replaced(k)))) then
@@ -141,20 +142,20 @@ contains
                return
             end if
          end do
-         if (size(scene%amplitudes) /= 1) then
+         if (size(scene%physical%amplitudes) /= 1) then
             call fail(error, file%path, "physical", "a", "task series simulates one bounce amplitude: give one a "// &
-               "(m) with r0, got "//integer_text(size(scene%amplitudes)))
+               "(m) with r0, got "//integer_text(size(scene%physical%amplitudes)))
             return
          end if
-         if (.not. scene%pendulum%g > 0.0_wp) then
+         if (.not. scene%physical%pendulum%g > 0.0_wp) then
             call fail(error, file%path, "physical", "g", "the series task needs gravity g > 0")
             return
          end if
-         self%plan%alpha = physical_alpha(physical_t(r0=scene%pendulum%r0, g=scene%pendulum%g, &
-                                                     omega=scene%pendulum%omega, a=scene%amplitudes(1)))
-         self%plan%beta = physical_beta(scene%pendulum)
-         self%plan%r0 = scene%pendulum%r0
-         self%plan%g = scene%pendulum%g
+         self%plan%alpha = physical_alpha(physical_t(r0=scene%physical%pendulum%r0, g=scene%physical%pendulum%g, &
+                                                     omega=scene%physical%pendulum%omega, a=scene%physical%amplitudes(1)))
+         self%plan%beta = physical_beta(scene%physical%pendulum)
+         self%plan%r0 = scene%physical%pendulum%r0
+         self%plan%g = scene%physical%pendulum%g
          if (self%plan%beta < min_pendulum_beta .or. self%plan%beta >= pi2) then
             call fail(error, file%path, "physical", "r0", "beta = g pi^2/(rho omega^2) = "// &
                real_text(self%plan%beta)//" must lie in [1e-8, pi^2) for the series task")
@@ -369,8 +370,8 @@ contains
       character(len=:), allocatable :: spring(:)
       integer :: n, k
       n = 0
-      if (scene%physical) then
-         spring = physical_summary(scene)
+      if (scene%physical%given) then
+         spring = physical_summary(scene%physical, scene%epsilon)
          do k = 1, size(spring)
             n = n + 1; extra(n) = spring(k)
          end do
