@@ -76,7 +76,7 @@ VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' fpm.toml)
 SOVERSION = $(firstword $(subst ., ,$(VERSION)))
 SHARED_LIB = libhillstab.so.$(VERSION)
 
-.PHONY: run test test-debug test-python test-sanitize setup setup-build setup-test bench bench-fourier bench-output bench-instructions area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov bench-system bench-python bench-equation bench-regions fuzz check-memory check-scenes check-plots
+.PHONY: run codes test test-debug test-python test-sanitize setup setup-build setup-test bench bench-fourier bench-output bench-instructions area lib install check-install doc doc-check clean mpi test-mpi bench-lyapunov bench-system bench-python bench-equation bench-regions fuzz check-memory check-scenes check-plots
 
 # what each target needs (scripts/setup.sh installs only what is missing)
 setup:
@@ -90,9 +90,14 @@ run:
 	@bash scripts/setup.sh compiler fpm plot
 	@bash scripts/run_default.sh
 
+# the codes of models and methods that C, FORTRAN 77 and Python copy, written from the Fortran tables
+codes:
+	python3 scripts/codes.py
+
 test: setup-test
 	@python3 scripts/doc_check.py
 	@python3 scripts/layer_check.py
+	@python3 scripts/codes.py --check
 	$(FPM) test
 
 # the Python package as a user installs it: a fresh virtual environment, `pip install .`

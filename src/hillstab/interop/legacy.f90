@@ -21,7 +21,7 @@ module hillstab_interop_legacy
       !> Trace S of the one-period monodromy (S₁ of the χ equation (47) when EPS > 0).
       subroutine hstrace(model, alpha, beta, eps, method, nseg, isamp, tol, s, info)
          import :: wp
-         integer, intent(in) :: model   !! 1 elastic (eq. 25), 2 Mathieu, 3 Meissner, 4 fourier, 5 sampled (no data: use the C API), 6 modulated, 7 equation (texts: C API)
+         integer, intent(in) :: model   !! 1 elastic, 2 mathieu, 3 meissner, 4 fourier, 5 sampled, 6 modulated, 7 equation (a model that carries data or texts takes them through the C API)
          real(wp), intent(in) :: alpha  !! α (elastic: 0 ≤ α < π²); ν for Mathieu
          real(wp), intent(in) :: beta   !! β
          real(wp), intent(in) :: eps    !! damping ε ≥ 0 of eq. (46)
@@ -36,7 +36,7 @@ module hillstab_interop_legacy
       !> As HSTRACE, plus the Floquet exponent and the stability verdict of the swing x.
       subroutine hsfloq(model, alpha, beta, eps, method, nseg, isamp, tol, s, mu, istab, info)
          import :: wp
-         integer, intent(in) :: model   !! 1 elastic (eq. 25), 2 Mathieu, 3 Meissner, 4 fourier, 5 sampled (no data: use the C API), 6 modulated, 7 equation (texts: C API)
+         integer, intent(in) :: model   !! 1 elastic, 2 mathieu, 3 meissner, 4 fourier, 5 sampled, 6 modulated, 7 equation (a model that carries data or texts takes them through the C API)
          real(wp), intent(in) :: alpha  !! α (elastic: 0 ≤ α < π²); ν for Mathieu
          real(wp), intent(in) :: beta   !! β
          real(wp), intent(in) :: eps    !! damping ε ≥ 0 of eq. (46)

@@ -5,8 +5,8 @@
 !> an INFO code; the guide page *Using the library* documents every argument and code, LAPACK-style.
 
 !> Trace S of the one-period monodromy (S₁ of the χ equation (47) when EPS > 0) for
-!> MODEL (1 elastic, 2 Mathieu, 3 Meissner, 4 fourier, 5 sampled, 6 modulated, 7 equation) by METHOD (0 auto, 1 formula, 2 segments, 3 magnus4,
-!> 4 magnus6, 5 rk, 6 gsl); NSEG pieces with sampling ISAMP (1 endpoint, 2 midpoint,
+!> MODEL by METHOD (their codes at the arguments below: HILLSTAB_MODEL_*, HILLSTAB_METHOD_* of
+!> the C header); NSEG pieces with sampling ISAMP (1 endpoint, 2 midpoint,
 !> 3 average) for METHOD = 2; tolerance TOL for the exact methods.
 !> INFO = 0 success; 2 S overflowed (S = ±HUGE); 7 TOL below the round-off level (S is
 !> the best value); otherwise an error code (1 invalid parameter, 3 integration failure,
@@ -15,7 +15,7 @@ subroutine hstrace(model, alpha, beta, eps, method, nseg, isamp, tol, s, info)
    use hillstab_core_kinds, only: wp
    use hillstab_interop_legacy, only: hsfloq
    implicit none
-   integer, intent(in) :: model   !! 1 elastic (eq. 25), 2 Mathieu, 3 Meissner, 4 fourier, 5 sampled (no data: use the C API), 6 modulated, 7 equation (texts: C API)
+   integer, intent(in) :: model   !! 1 elastic, 2 mathieu, 3 meissner, 4 fourier, 5 sampled, 6 modulated, 7 equation (a model that carries data or texts takes them through the C API)
    real(wp), intent(in) :: alpha  !! α (elastic: 0 ≤ α < π²); ν for Mathieu
    real(wp), intent(in) :: beta   !! β
    real(wp), intent(in) :: eps    !! damping ε ≥ 0 of eq. (46)
@@ -45,7 +45,7 @@ subroutine hsfloq(model, alpha, beta, eps, method, nseg, isamp, tol, s, mu, ista
    use hillstab_integrate_monodromy, only: method_t, monodromy_trace
    use hillstab_interop_outcome, only: record_outcome
    implicit none
-   integer, intent(in) :: model   !! 1 elastic (eq. 25), 2 Mathieu, 3 Meissner, 4 fourier, 5 sampled (no data: use the C API), 6 modulated, 7 equation (texts: C API)
+   integer, intent(in) :: model   !! 1 elastic, 2 mathieu, 3 meissner, 4 fourier, 5 sampled, 6 modulated, 7 equation (a model that carries data or texts takes them through the C API)
    real(wp), intent(in) :: alpha  !! α (elastic: 0 ≤ α < π²); ν for Mathieu
    real(wp), intent(in) :: beta   !! β
    real(wp), intent(in) :: eps    !! damping ε ≥ 0 of eq. (46)
