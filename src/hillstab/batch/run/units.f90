@@ -171,7 +171,7 @@ contains
       end do
       if (batch_distributable(scene)) then
          do k = 1, scene%task%point_count()
-            point = scene%task%point_of(k)
+            point = scene%task%point_of(scene, k)
             words = transfer(point, words)
             do j = 1, 4
                call mix(int(words(j), int64) + 2147483648_int64)
@@ -412,9 +412,9 @@ contains
       batch%first_unit = saved%units_done + 1
       batch%done = min(batch%n_points, int(saved%units_done, int64)*batch%unit_size)
       batch%n_inaccurate = saved%n_inaccurate
-      if (saved%first_inaccurate > 0) batch%first_inaccurate = batch%scene%task%point_of(saved%first_inaccurate)
+      if (saved%first_inaccurate > 0) batch%first_inaccurate = batch%scene%task%point_of(batch%scene, saved%first_inaccurate)
       batch%n_failed = saved%n_failed
-      if (saved%first_failed > 0) batch%first_failed = batch%scene%task%point_of(saved%first_failed)
+      if (saved%first_failed > 0) batch%first_failed = batch%scene%task%point_of(batch%scene, saved%first_failed)
       batch%state = saved
       batch%state%temporary = batch%file%temp_path
       batch%checkpoint_made = .true.
@@ -515,7 +515,7 @@ contains
       if (any(result%status == status_roundoff)) then
          j = findloc(result%status, status_roundoff, dim=1)
          if (batch%n_inaccurate == 0) then
-            batch%first_inaccurate = batch%scene%task%point_of(first + j - 1)
+            batch%first_inaccurate = batch%scene%task%point_of(batch%scene, first + j - 1)
             batch%state%first_inaccurate = first + j - 1
          end if
          batch%n_inaccurate = batch%n_inaccurate + count(result%status == status_roundoff)
@@ -523,7 +523,7 @@ contains
       if (any(result%status == status_failed)) then
          j = findloc(result%status, status_failed, dim=1)
          if (batch%n_failed == 0) then
-            batch%first_failed = batch%scene%task%point_of(first + j - 1)
+            batch%first_failed = batch%scene%task%point_of(batch%scene, first + j - 1)
             batch%state%first_failed = first + j - 1
          end if
          batch%n_failed = batch%n_failed + count(result%status == status_failed)

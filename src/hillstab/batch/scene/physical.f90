@@ -22,7 +22,7 @@ module hillstab_batch_scene_physical
    use hillstab_batch_scene_declaration, only: group_values_t
    implicit none
    private
-   public :: physical_scene_t, physical_use_t, physical_points, physical_summary
+   public :: physical_scene_t, physical_use_t, physical_points, physical_summary, grid_pendulum
 
    !> A scene's `&physical` group as read (`given` false and the arrays empty when the
    !> scene has none).
@@ -131,5 +131,16 @@ contains
          beta_at = physical_beta(at)
       end function beta_at
    end function physical_summary
+
+   !> The pendulum of a chart over `&physical` amplitudes and frequencies at its amplitude `i`
+   !> and frequency `j`.
+   elemental function grid_pendulum(physical, i, j) result(p)
+      type(physical_scene_t), intent(in) :: physical  !! a scene's `&physical`, with amplitudes and frequencies
+      integer, intent(in) :: i, j  !! the amplitude (a chart's row) and the frequency (the point along it)
+      type(physical_t) :: p
+      p = physical%pendulum
+      p%a = physical%amplitudes(i)
+      p%omega = physical%omegas(j)
+   end function grid_pendulum
 
 end module hillstab_batch_scene_physical

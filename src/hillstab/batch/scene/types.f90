@@ -327,8 +327,9 @@ contains
    end subroutine task_finish_units
 
    !> Default: no points.
-   pure function task_point_of(self, k) result(point)
+   pure function task_point_of(self, scene, k) result(point)
       class(task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
       integer(int64), intent(in) :: k  !! the point, 1 … point_count
       real(wp) :: point(2)
       point = 0.0_wp

@@ -17,12 +17,12 @@ module hillstab_batch_tasks_chart
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict, period_damping
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, batch_plan_t, prepare_batch, need_verdict
    use hillstab_batch_scene_types, only: scene_t
-   use hillstab_batch_scene_physical, only: physical_scene_t
+   use hillstab_batch_scene_physical, only: grid_pendulum
    use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail, group_present
    use hillstab_batch_scene_checks, only: check_integration_cost, max_grid_count
    use hillstab_hill_units, only: physical_t, physical_beta, physical_epsilon
-   use hillstab_hill_model, only: hill_point_t, hill_model_t
+   use hillstab_hill_model, only: hill_point_t
    use hillstab_hill_model_pendulum, only: pendulum_alpha
    use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_alpha, grid_beta, grid_point, &
       grid_size_text
@@ -47,10 +47,6 @@ module hillstab_batch_tasks_chart
       !> `&physical a_min, a_max, n_a, omega_min, omega_max, n_omega` without `&chart`: the
       !> chart runs over (a, ω) at fixed r0, g (blocks of constant a)
       logical :: physical_grid = .false.
-      !> a chart over `&physical`: the scene's pendulum (r0, g, κ), its amplitudes a [m], one a
-      !> row, and its frequencies ω [rad/s], along a row, for each point's (α, β) (`point_of`)
-      type(physical_scene_t) :: spring
-      class(hill_model_t), allocatable :: model  !! the scene's model (its α of a pendulum)
    contains
       procedure :: read => chart_read
       procedure :: declarations => chart_declarations
@@ -63,7 +59,6 @@ module hillstab_batch_tasks_chart
       procedure :: unit_text => chart_unit_text
       procedure :: open_units => chart_open_units
       procedure :: point_of => chart_point_of
-      procedure :: pendulum_at
    end type chart_task_t
 
 contains
@@ -110,8 +105,6 @@ contains
             return
          end if
          self%physical_grid = .true.
-         self%spring = scene%physical
-         allocate (self%model, source=scene%model)
          allocate (self%groups(0))
          self%grid%n_alpha = size(scene%physical%amplitudes)
          self%grid%n_beta = size(scene%physical%omegas)
@@ -164,7 +157,7 @@ contains
    subroutine physical_row(self, scene, unit, text, statuses)
       class(chart_task_t), intent(in) :: self  !! the task (a chart over `&physical`), its units prepared
       type(scene_t), intent(in) :: scene  !! its scene
-      integer, intent(in) :: unit  !! the row: the amplitude `self%spring%amplitudes(unit)`
+      integer, intent(in) :: unit  !! the row: the amplitude `scene%physical%amplitudes(unit)`
       character(len=:), allocatable, intent(out) :: text  !! the lines, no final new line (or records)
       integer, intent(out) :: statuses(:)  !! per point
       character(len=chart_line_length), allocatable :: lines(:)
@@ -177,11 +170,11 @@ contains
       integer :: j, n_omega
       integer :: ids(size(self%columns%ids))  ! the binary records' columns (a gather, `columns` allocated)
       ids = self%columns%ids
-      n_omega = size(self%spring%omegas)
+      n_omega = size(scene%physical%omegas)
       allocate (lines(n_omega), lengths(n_omega), values(size(ids), n_omega))
       !$omp parallel do schedule(dynamic) default(shared) private(j, p, f, cause, v, epsilon, alpha, beta)
       do j = 1, n_omega
-         p = self%pendulum_at(unit, j)
+         p = grid_pendulum(scene%physical, unit, j)
          alpha = pendulum_alpha(scene%model, p)
          beta = physical_beta(p)
          epsilon = physical_epsilon(p)
@@ -465,26 +458,18 @@ contains
       end if
    end subroutine row_unit
 
-   !> The pendulum of a chart over `&physical` at its amplitude `i` and frequency `j`.
-   elemental function pendulum_at(self, i, j) result(p)
-      class(chart_task_t), intent(in) :: self  !! the task (a chart over `&physical`)
-      integer, intent(in) :: i, j  !! the row (amplitude) and the point along it (ω)
-      type(physical_t) :: p
-      p = self%spring%pendulum
-      p%a = self%spring%amplitudes(i)
-      p%omega = self%spring%omegas(j)
-   end function pendulum_at
-
    !> (α, β) of point k, numbered row by row (over `&physical`: the pendulum's at the row's
    !> amplitude and the point's ω).
-   pure function chart_point_of(self, k) result(point)
+   pure function chart_point_of(self, scene, k) result(point)
       class(chart_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
       integer(int64), intent(in) :: k  !! the point
       real(wp) :: point(2)
       type(physical_t) :: p
       if (self%physical_grid) then
-         p = self%pendulum_at(int((k - 1)/self%grid%n_beta) + 1, int(mod(k - 1, int(self%grid%n_beta, int64))) + 1)
-         point = [pendulum_alpha(self%model, p), physical_beta(p)]
+         p = grid_pendulum(scene%physical, int((k - 1)/self%grid%n_beta) + 1, &
+                           int(mod(k - 1, int(self%grid%n_beta, int64))) + 1)
+         point = [pendulum_alpha(scene%model, p), physical_beta(p)]
       else
          point = grid_point(self%grid, k)
       end if

@@ -484,8 +484,9 @@ contains
    end function lyapunov_unit_size_of
 
    !> (α, β) of point k.
-   pure function lyapunov_point_of(self, k) result(point)
+   pure function lyapunov_point_of(self, scene, k) result(point)
       class(lyapunov_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
       integer(int64), intent(in) :: k  !! the point
       real(wp) :: point(2)
       type(physical_t) :: p
@@ -620,7 +621,7 @@ contains
       m = 0
       do k = lo, hi
          j = int(k - lo) + 1
-         point(:, j) = self%point_of(k)
+         point(:, j) = self%point_of(scene, k)
          slot(j) = 0
          if (self%over_physical) then
             spring = spring_at(self, k)

@@ -229,8 +229,9 @@ contains
    end subroutine points_open_units
 
    !> (α, β) of point k.
-   pure function points_point_of(self, k) result(point)
+   pure function points_point_of(self, scene, k) result(point)
       class(points_task_t), intent(in) :: self  !! the task
+      type(scene_t), intent(in) :: scene  !! its scene
       integer(int64), intent(in) :: k  !! the point
       real(wp) :: point(2)
       point = self%points(:, k)
