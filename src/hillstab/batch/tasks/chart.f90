@@ -171,7 +171,12 @@ contains
       integer :: ids(size(self%columns%ids))  ! the binary records' columns (a gather, `columns` allocated)
       ids = self%columns%ids
       n_omega = size(scene%physical%omegas)
-      allocate (lines(n_omega), lengths(n_omega), values(size(ids), n_omega))
+      ! a text file fills lines, a binary one records
+      if (scene%binary) then
+         allocate (lines(0), lengths(0), values(size(ids), n_omega))
+      else
+         allocate (lines(n_omega), lengths(n_omega), values(0, 0))
+      end if
       !$omp parallel do schedule(dynamic) default(shared) private(j, p, f, cause, v, epsilon, alpha, beta)
       do j = 1, n_omega
          p = grid_pendulum(scene%physical, unit, j)
@@ -184,8 +189,11 @@ contains
          else
             v = chart_values(alpha, beta, f, in_physical_domain(alpha, beta), statuses(j), p%omega/pi, p%a, p%omega)
          end if
-         values(:, j) = v(ids)
-         call chart_line(self%columns, v, lines(j), length=lengths(j))
+         if (scene%binary) then
+            values(:, j) = v(ids)
+         else
+            call chart_line(self%columns, v, lines(j), length=lengths(j))
+         end if
       end do
       !$omp end parallel do
       call row_unit(scene%binary, values, lines, lengths, unit > 1, text)
