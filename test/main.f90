@@ -25,6 +25,7 @@ program tester
    use test_critical, only: collect_critical
    use test_regions, only: collect_regions
    use test_region_edges, only: collect_region_edges
+   use test_named_parameters, only: collect_named_parameters
    use test_model_equation, only: collect_model_equation
    use test_gsl, only: collect_gsl
    use test_rk, only: collect_rk
@@ -54,7 +55,7 @@ program tester
    use test_checkpoint, only: collect_checkpoint
    implicit none
    ! one by one, not as an array constructor of the collect functions' results: gfortran 12
-   type(testsuite_t) :: suites(51)
+   type(testsuite_t) :: suites(52)
    integer :: n_failed
    suites(1) = collect_models()
    suites(2) = collect_codes()
@@ -107,6 +108,7 @@ program tester
    suites(49) = collect_regions()
    suites(50) = collect_capi_regions()
    suites(51) = collect_region_edges()
+   suites(52) = collect_named_parameters()
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

@@ -66,6 +66,8 @@ module hillstab_hill_model_equation
    use hillstab_core_expression, only: expression_t, expression_work_t, parse_expression, parse_parameters, &
       name_length
    use hillstab_hill_model, only: hill_model_t, hill_window_t, model_variable_t, model_variable_text, auto_table_steps
+   use hillstab_hill_named_parameters, only: drive_t, parse_drive, find_axes, names_text, values_text, &
+      number => message_number
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
    implicit none
    private
@@ -85,8 +87,6 @@ module hillstab_hill_model_equation
       character(len=:), allocatable :: stiffness_text   !! `stiffness`
       character(len=:), allocatable :: mass_text        !! `mass`
       character(len=:), allocatable :: damping_text     !! `damping`
-      character(len=:), allocatable :: frequency_text   !! `frequency` ("" when `period` is given)
-      character(len=:), allocatable :: period_text      !! `period` ("" when `frequency` is given)
       character(len=:), allocatable :: alpha_name       !! the parameter of the α axis
       character(len=:), allocatable :: beta_name        !! the parameter of the β axis
       !> what `prepare` found wrong, beginning with the variables concerned ("" when ready)
@@ -99,8 +99,7 @@ module hillstab_hill_model_equation
       type(expression_t) :: k                           !! k(t; parameters)
       type(expression_t) :: m                           !! m(parameters)
       type(expression_t) :: c                           !! c(parameters)
-      type(expression_t) :: drive                       !! Ω, or T with `from_period`
-      logical :: from_period = .false.                  !! `drive` is the period T
+      type(drive_t) :: drive                            !! `frequency` Ω or `period` T
       logical :: ready = .false.                        !! `check_values` succeeded
    contains
       procedure :: name => equation_name
@@ -168,11 +167,7 @@ contains
       end if
       text = "m x'' + c x' + k(t) x = 0, k(t) = "//self%stiffness_text//", m = "//self%mass_text//", c = "// &
              self%damping_text
-      if (self%from_period) then
-         text = text//", period T = "//self%period_text//", Omega = 2 pi/T"
-      else
-         text = text//", Omega = "//self%frequency_text
-      end if
+      text = text//self%drive%summary()
       text = text//"; tau = Omega t/pi: Q(tau) = (pi/Omega)^2 k(pi tau/Omega)/m, epsilon = pi c/(m Omega); "// &
              "parameters: "//self%parameters_text//"; alpha = "//self%alpha_name//", beta = "//self%beta_name
    end function equation_formula
@@ -225,8 +220,8 @@ contains
       case ("stiffness"); self%stiffness_text = trim(adjustl(text))
       case ("mass"); self%mass_text = trim(adjustl(text))
       case ("damping"); self%damping_text = trim(adjustl(text))
-      case ("frequency"); self%frequency_text = trim(adjustl(text))
-      case ("period"); self%period_text = trim(adjustl(text))
+      case ("frequency"); self%drive%frequency_text = trim(adjustl(text))
+      case ("period"); self%drive%period_text = trim(adjustl(text))
       case ("alpha"); self%alpha_name = trim(adjustl(text))
       case ("beta"); self%beta_name = trim(adjustl(text))
       case default
@@ -260,7 +255,7 @@ contains
       type(error_t), allocatable :: error
       logical, allocatable :: depends(:, :)
       character(len=name_length), allocatable :: with_t(:)
-      character(len=:), allocatable :: known, drive_name, where_beta
+      character(len=:), allocatable :: known, drive_name, where_beta, listing
       real(wp) :: drive, m, c, period, scale
       real(wp), allocatable :: t(:), k_now(:), k_later(:), shifted(:)
       integer :: j, n_nodes
@@ -269,8 +264,6 @@ contains
       if (.not. allocated(self%parameters_text)) self%parameters_text = ""
       if (.not. allocated(self%mass_text)) self%mass_text = "1"
       if (.not. allocated(self%damping_text)) self%damping_text = "0"
-      if (.not. allocated(self%frequency_text)) self%frequency_text = ""
-      if (.not. allocated(self%period_text)) self%period_text = ""
       if (.not. allocated(self%stiffness_text)) self%stiffness_text = ""
       if (.not. allocated(self%alpha_name)) self%alpha_name = ""
       if (.not. allocated(self%beta_name)) self%beta_name = ""
@@ -279,35 +272,11 @@ contains
          self%problem = error%message
          return
       end if
-      known = ""
-      do j = 1, size(self%names)
-         if (j > 1) known = known//", "
-         known = known//trim(self%names(j))
-      end do
-      if (size(self%names) == 0) known = "none"
+      known = names_text(self%names)
+      listing = values_text(self%names, self%values)
       ! the axes
-      call find_axis(self%names, self%alpha_name, "alpha", known, self%i_alpha, self%problem)
+      call find_axes(self%names, depends, self%alpha_name, self%beta_name, self%i_alpha, self%i_beta, self%problem)
       if (len(self%problem) > 0) return
-      call find_axis(self%names, self%beta_name, "beta", known, self%i_beta, self%problem)
-      if (len(self%problem) > 0) return
-      if (len(self%alpha_name) == 0 .or. len(self%beta_name) == 0) then
-         self%problem = trim(merge("alpha", "beta ", len(self%alpha_name) == 0))//": name the parameter of "// &
-            "the chart's "//trim(merge("alpha", "beta ", len(self%alpha_name) == 0))//" axis (one of: "//known//")"
-         return
-      end if
-      if (self%i_alpha == self%i_beta) then
-         self%problem = "alpha, beta: the two axes are one parameter, '"//self%alpha_name//"'"
-         return
-      end if
-      do j = 1, size(self%names)
-         if (depends(j, self%i_alpha) .or. depends(j, self%i_beta)) then
-            self%problem = trim(merge("alpha", "beta ", depends(j, self%i_alpha)))//": the parameter '"// &
-               trim(self%names(j))//"' is computed from the axis '"// &
-               trim(merge(self%alpha_name, self%beta_name, depends(j, self%i_alpha)))// &
-               "' and would not follow it along the axis; write that dependence into the expressions instead"
-            return
-         end if
-      end do
       ! the expressions
       with_t = [character(len=name_length) :: "t", self%names]
       if (len(self%stiffness_text) == 0) then
@@ -329,23 +298,9 @@ contains
          self%problem = "damping: "//error%message
          return
       end if
-      if (len(self%frequency_text) > 0 .and. len(self%period_text) > 0) then
-         self%problem = "frequency, period: give one of the two (the period is 2 pi/frequency)"
-         return
-      end if
-      if (len(self%frequency_text) == 0 .and. len(self%period_text) == 0) then
-         self%problem = "frequency: the drive's angular frequency Omega is required (or the period T = 2 pi/Omega)"
-         return
-      end if
-      self%from_period = len(self%period_text) > 0
-      drive_name = trim(merge("period   ", "frequency", self%from_period))
-      call parse_expression(merge(self%period_text//repeat(" ", len(self%frequency_text)), &
-                                  self%frequency_text//repeat(" ", len(self%period_text)), self%from_period), &
-                            self%names, self%drive, error)
-      if (allocated(error)) then
-         self%problem = drive_name//": "//error%message
-         return
-      end if
+      call parse_drive(self%drive, self%names, self%problem)
+      if (len(self%problem) > 0) return
+      drive_name = self%drive%name()
       ! the β axis: in k alone, affinely
       where_beta = ""
       if (self%drive%uses(self%beta_name)) where_beta = where_beta//", the "//drive_name
@@ -364,43 +319,43 @@ contains
          return
       end if
       ! the values at the given parameters
-      drive = self%drive%value(self%values)
+      drive = self%drive%expression%value(self%values)
       m = self%m%value(self%values)
       c = self%c%value(self%values)
       if (.not. (ieee_is_finite(drive) .and. drive > 0.0_wp)) then
-         self%problem = drive_name//": must be finite and > 0 at the parameters ("//parameter_text(self)//")"
+         self%problem = drive_name//": must be finite and > 0 at the parameters ("//listing//")"
          return
       end if
       if (.not. (ieee_is_finite(m) .and. m > 0.0_wp)) then
-         self%problem = "mass: must be finite and > 0 at the parameters ("//parameter_text(self)//")"
+         self%problem = "mass: must be finite and > 0 at the parameters ("//listing//")"
          return
       end if
       if (.not. (ieee_is_finite(c) .and. c >= 0.0_wp)) then
-         self%problem = "damping: must be finite and >= 0 at the parameters ("//parameter_text(self)//")"
+         self%problem = "damping: must be finite and >= 0 at the parameters ("//listing//")"
          return
       end if
-      period = merge(drive, 2.0_wp*pi/drive, self%from_period)
+      period = merge(drive, 2.0_wp*pi/drive, self%drive%from_period)
       ! k finite over a period and periodic, at the given parameters
       n_nodes = 256
       allocate (t(n_nodes), k_now(n_nodes), k_later(n_nodes))
       t = [(period*real(j - 1, wp)/n_nodes, j=1, n_nodes)]
       call self%k%evaluate(t, k_now, error, scalars=self%values, failed_node=j)
       if (allocated(error)) then
-         self%problem = "stiffness: not finite at t = "//number(t(max(j, 1)))//" ("//parameter_text(self)// &
+         self%problem = "stiffness: not finite at t = "//number(t(max(j, 1)))//" ("//listing// &
             "): "//error%message
          return
       end if
       call self%k%evaluate(t + period, k_later, error, scalars=self%values, failed_node=j)
       if (allocated(error)) then
          self%problem = "stiffness: not finite at t = "//number(t(max(j, 1)) + period)//" ("// &
-            parameter_text(self)//"): "//error%message
+            listing//"): "//error%message
          return
       end if
       scale = max(maxval(abs(k_now)), tiny(1.0_wp))
       j = maxloc(abs(k_later - k_now), dim=1)
       if (abs(k_later(j) - k_now(j)) > 1.0e-9_wp*scale) then
          self%problem = "stiffness: not of period T = "//number(period)//" (2 pi/Omega) at the parameters ("// &
-            parameter_text(self)//"): k(t) = "//number(k_now(j))//" but k(t + T) = "//number(k_later(j))// &
+            listing//"): k(t) = "//number(k_now(j))//" but k(t + T) = "//number(k_later(j))// &
             " at t = "//number(t(j))
          return
       end if
@@ -415,7 +370,7 @@ contains
          j = maxloc(abs(k_later - k_now), dim=1)
          if (abs(k_later(j) - k_now(j)) > 1.0e-9_wp*scale) then
             self%problem = "stiffness: not of period T = "//number(period)//" (2 pi/Omega) at the parameters ("// &
-               parameter_text(self)//") with "//self%beta_name//" = "//number(shifted(self%i_beta))//": k(t) = "// &
+               listing//") with "//self%beta_name//" = "//number(shifted(self%i_beta))//": k(t) = "// &
                number(k_now(j))//" but k(t + T) = "//number(k_later(j))//" at t = "//number(t(j))
             return
          end if
@@ -423,43 +378,6 @@ contains
       self%ready = .true.
 
    end subroutine prepare
-
-   !> The position of an axis' parameter among the parameters (0 when no name is given);
-   !> `problem` when the name is no parameter.
-   pure subroutine find_axis(names, name, axis, known, i, problem)
-      character(len=*), intent(in) :: names(:)  !! the parameters
-      character(len=*), intent(in) :: name      !! the axis' parameter ("" when not given)
-      character(len=*), intent(in) :: axis      !! "alpha" or "beta"
-      character(len=*), intent(in) :: known     !! the parameters as a list, for the message
-      integer, intent(out) :: i                 !! its position
-      character(len=:), allocatable, intent(inout) :: problem  !! set when it is no parameter
-      i = 0
-      if (len(name) == 0) return
-      do i = 1, size(names)
-         if (trim(names(i)) == name) return
-      end do
-      i = 0
-      problem = axis//": '"//name//"' is no parameter (the parameters: "//known//")"
-   end subroutine find_axis
-
-   !> A number for messages: 12 significant digits, no blanks.
-   pure function number(x) result(text)
-      real(wp), intent(in) :: x  !! the number
-      character(len=:), allocatable :: text
-      text = trim(adjustl(format_es(x, 12)))
-   end function number
-
-   !> The parameters as `name = value, ...`, for messages.
-   pure function parameter_text(self) result(text)
-      class(equation_model_t), intent(in) :: self  !! the model
-      character(len=:), allocatable :: text
-      integer :: j
-      text = ""
-      do j = 1, size(self%names)
-         if (j > 1) text = text//", "
-         text = text//trim(self%names(j))//" = "//number(self%values(j))
-      end do
-   end function parameter_text
 
    !> The parameters at row α and the row's constants (`row_t`).
    pure function row_at(self, alpha) result(row)
@@ -476,12 +394,12 @@ contains
       row%p = self%values
       row%p(self%i_alpha) = alpha
       row%p(self%i_beta) = 0.0_wp
-      drive = self%drive%value(row%p)
+      drive = self%drive%expression%value(row%p)
       m = self%m%value(row%p)
       c = self%c%value(row%p)
       if (.not. (ieee_is_finite(drive) .and. ieee_is_finite(m) .and. ieee_is_finite(c))) return
       if (.not. (drive > 0.0_wp .and. m > 0.0_wp .and. c >= 0.0_wp)) return
-      if (self%from_period) then
+      if (self%drive%from_period) then
          row%omega = 2.0_wp*pi/drive
       else
          row%omega = drive
@@ -536,10 +454,10 @@ contains
       p = self%values
       p(self%i_alpha) = alpha
       p(self%i_beta) = beta
-      omega = self%drive%value(p)
+      omega = self%drive%expression%value(p)
       m = self%m%value(p)
       if (.not. (ieee_is_finite(omega) .and. ieee_is_finite(m) .and. omega > 0.0_wp .and. m > 0.0_wp)) return
-      if (self%from_period) omega = 2.0_wp*pi/omega
+      if (self%drive%from_period) omega = 2.0_wp*pi/omega
       call self%k%evaluate([pi*tau/omega], k, failure, scalars=p)
       if (allocated(failure)) return
       q = (pi/omega)**2*k(1)/m

@@ -51,6 +51,8 @@ module hillstab_hill_system_equation
    use hillstab_hill_system, only: hill_system_t, max_dof
    use hillstab_hill_model, only: hill_model_t
    use hillstab_hill_model_equation, only: equation_model_t
+   use hillstab_hill_named_parameters, only: drive_t, parse_drive, find_axes, values_text, list_text => names_text, &
+      number => message_number, position => parameter_position
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
    implicit none
    private
@@ -71,8 +73,6 @@ module hillstab_hill_system_equation
       character(len=:), allocatable :: mass_text        !! `mass`
       character(len=:), allocatable :: damping_text     !! `damping`
       character(len=:), allocatable :: gyroscopic_text  !! `gyroscopic`
-      character(len=:), allocatable :: frequency_text   !! `frequency`
-      character(len=:), allocatable :: period_text      !! `period`
       character(len=:), allocatable :: alpha_name       !! the parameter of the α axis
       character(len=:), allocatable :: beta_name        !! the parameter of the β axis
       !> what `prepare` found wrong, beginning with the variables concerned ("" when ready)
@@ -87,8 +87,7 @@ module hillstab_hill_system_equation
       integer :: i_beta = 0                             !! position of the β axis
       !> K, M, C, G over the names (matrices…, t, parameters…)
       type(expression_t) :: k, m, c, g
-      type(expression_t) :: drive                       !! Ω, or T with `from_period`
-      logical :: from_period = .false.                  !! `drive` is the period T
+      type(drive_t) :: drive                            !! `frequency` Ω or `period` T
       real(wp), allocatable :: mass_matrix(:, :)        !! M at the given parameters
       logical :: ready = .false.                        !! `prepare` succeeded
       !> the same system as one scalar equation (`equations_scalar_model`), when it is one
@@ -138,11 +137,7 @@ contains
       end if
       if (equations_first_order(self)) then
          text = "y' = A(t) y, n = "//integer_text(self%n)//" states, A(t) = "//self%state_text
-         if (self%from_period) then
-            text = text//", period T = "//self%period_text//", Omega = 2 pi/T"
-         else
-            text = text//", Omega = "//self%frequency_text
-         end if
+         text = text//self%drive%summary()
          text = text//"; tau = Omega t/pi: dy/dtau = (pi/Omega) A(pi tau/Omega) y; parameters: "// &
                 self%parameters_text//"; matrices: "//self%matrices_text//"; alpha = "//self%alpha_name// &
                 ", beta = "//self%beta_name
@@ -150,11 +145,7 @@ contains
       end if
       text = "M x'' + (C + G) x' + K(t) x = 0, n = "//integer_text(self%n)//", K(t) = "//self%stiffness_text// &
              ", M = "//self%mass_text//", C = "//self%damping_text//", G = "//self%gyroscopic_text
-      if (self%from_period) then
-         text = text//", period T = "//self%period_text//", Omega = 2 pi/T"
-      else
-         text = text//", Omega = "//self%frequency_text
-      end if
+      text = text//self%drive%summary()
       text = text//"; tau = Omega t/pi: M x'' + (pi/Omega)(C + G) x' + (pi/Omega)^2 K(pi tau/Omega) x = 0; "// &
              "parameters: "//self%parameters_text//"; matrices: "//self%matrices_text//"; alpha = "// &
              self%alpha_name//", beta = "//self%beta_name
@@ -197,9 +188,10 @@ contains
       if (.not. allocated(error)) call one%set_text("stiffness", self%stiffness_text, error)
       if (.not. allocated(error)) call one%set_text("mass", self%mass_text, error)
       if (.not. allocated(error)) call one%set_text("damping", self%damping_text, error)
-      if (.not. allocated(error) .and. len(self%frequency_text) > 0) &
-         call one%set_text("frequency", self%frequency_text, error)
-      if (.not. allocated(error) .and. len(self%period_text) > 0) call one%set_text("period", self%period_text, error)
+      if (.not. allocated(error) .and. len(self%drive%frequency_text) > 0) &
+         call one%set_text("frequency", self%drive%frequency_text, error)
+      if (.not. allocated(error) .and. len(self%drive%period_text) > 0) &
+         call one%set_text("period", self%drive%period_text, error)
       if (.not. allocated(error)) call one%set_text("alpha", self%alpha_name, error)
       if (.not. allocated(error)) call one%set_text("beta", self%beta_name, error)
       if (.not. allocated(error)) call one%check_values(error)
@@ -303,8 +295,8 @@ contains
       case ("mass"); self%mass_text = trim(adjustl(text))
       case ("damping"); self%damping_text = trim(adjustl(text))
       case ("gyroscopic"); self%gyroscopic_text = trim(adjustl(text))
-      case ("frequency"); self%frequency_text = trim(adjustl(text))
-      case ("period"); self%period_text = trim(adjustl(text))
+      case ("frequency"); self%drive%frequency_text = trim(adjustl(text))
+      case ("period"); self%drive%period_text = trim(adjustl(text))
       case ("alpha"); self%alpha_name = trim(adjustl(text))
       case ("beta"); self%beta_name = trim(adjustl(text))
       case default
@@ -348,8 +340,6 @@ contains
       if (.not. allocated(self%mass_text)) self%mass_text = "1"
       if (.not. allocated(self%damping_text)) self%damping_text = "0"
       if (.not. allocated(self%gyroscopic_text)) self%gyroscopic_text = "0"
-      if (.not. allocated(self%frequency_text)) self%frequency_text = ""
-      if (.not. allocated(self%period_text)) self%period_text = ""
       if (.not. allocated(self%stiffness_text)) self%stiffness_text = ""
       if (.not. allocated(self%state_text)) self%state_text = ""
       kv = coefficient_variable(self)
@@ -370,32 +360,8 @@ contains
       if (len(self%problem) > 0) return
       self%matrix_names = matrix_names
       ! the axes
-      self%i_alpha = position(self%names, self%alpha_name)
-      self%i_beta = position(self%names, self%beta_name)
-      if (len(self%alpha_name) == 0 .or. self%i_alpha == 0) then
-         self%problem = "alpha: name the parameter of the chart's alpha axis (one of: "//known//")"
-         if (len(self%alpha_name) > 0) self%problem = "alpha: '"//self%alpha_name//"' is no parameter (the "// &
-                                                     "parameters: "//known//")"
-         return
-      end if
-      if (len(self%beta_name) == 0 .or. self%i_beta == 0) then
-         self%problem = "beta: name the parameter of the chart's beta axis (one of: "//known//")"
-         if (len(self%beta_name) > 0) self%problem = "beta: '"//self%beta_name//"' is no parameter (the "// &
-                                                    "parameters: "//known//")"
-         return
-      end if
-      if (self%i_alpha == self%i_beta) then
-         self%problem = "alpha, beta: the two axes are one parameter, '"//self%alpha_name//"'"
-         return
-      end if
-      do j = 1, size(self%names)
-         if (depends(j, self%i_alpha) .or. depends(j, self%i_beta)) then
-            self%problem = trim(merge("alpha", "beta ", depends(j, self%i_alpha)))//": the parameter '"// &
-               trim(self%names(j))//"' is computed from an axis and would not follow it; write that "// &
-               "dependence into the expressions instead"
-            return
-         end if
-      end do
+      call find_axes(self%names, depends, self%alpha_name, self%beta_name, self%i_alpha, self%i_beta, self%problem)
+      if (len(self%problem) > 0) return
       ! the expressions over (matrices..., t, parameters...)
       all_names = [character(len=name_length) :: matrix_names, "t", self%names]
       if (equations_first_order(self)) then
@@ -435,25 +401,9 @@ contains
          self%problem = "mass: M may not depend on the axes (it is the same at every point)"
          return
       end if
-      if (len(self%frequency_text) > 0 .and. len(self%period_text) > 0) then
-         self%problem = "frequency, period: give one of the two (the period is 2 pi/frequency)"
-         return
-      end if
-      if (len(self%frequency_text) == 0 .and. len(self%period_text) == 0) then
-         self%problem = "frequency: the drive's angular frequency Omega is required (or the period T = 2 pi/Omega)"
-         return
-      end if
-      self%from_period = len(self%period_text) > 0
-      drive_name = trim(merge("period   ", "frequency", self%from_period))
-      if (self%from_period) then
-         call parse_expression(self%period_text, self%names, self%drive, error)
-      else
-         call parse_expression(self%frequency_text, self%names, self%drive, error)
-      end if
-      if (allocated(error)) then
-         self%problem = drive_name//": "//error%message
-         return
-      end if
+      call parse_drive(self%drive, self%names, self%problem)
+      if (len(self%problem) > 0) return
+      drive_name = self%drive%name()
       where_beta = ""
       if (self%drive%uses(self%beta_name)) where_beta = where_beta//", the "//drive_name
       if (self%c%uses(self%beta_name)) where_beta = where_beta//", the damping"
@@ -476,12 +426,12 @@ contains
             return
          end if
       end do
-      drive = self%drive%value(self%values)
+      drive = self%drive%expression%value(self%values)
       if (.not. (ieee_is_finite(drive) .and. drive > 0.0_wp)) then
          self%problem = drive_name//": must be finite and > 0 at the parameters ("//parameter_text(self)//")"
          return
       end if
-      period = merge(drive, 2.0_wp*pi/drive, self%from_period)
+      period = merge(drive, 2.0_wp*pi/drive, self%drive%from_period)
       ! M, C, G and K at the given parameters: finite, and K periodic and linear in the matrices
       self%ready = .true.
       allocate (self%mass_matrix(self%n, self%n), k_now(self%n, self%n), k_later(self%n, self%n), &
@@ -644,9 +594,9 @@ contains
       p = self%values
       p(self%i_alpha) = alpha
       p(self%i_beta) = 0.0_wp
-      drive = self%drive%value(p)
+      drive = self%drive%expression%value(p)
       if (.not. (ieee_is_finite(drive) .and. drive > 0.0_wp)) return
-      omega = merge(2.0_wp*pi/drive, drive, self%from_period)
+      omega = merge(2.0_wp*pi/drive, drive, self%drive%from_period)
       ratio = pi/omega
       ok = ieee_is_finite(ratio) .and. ratio > 0.0_wp
    end subroutine row_at
@@ -950,44 +900,10 @@ contains
       end do
    end subroutine read_matrices
 
-   !> The position of `name` in `names` (0: none).
-   pure integer function position(names, name)
-      character(len=*), intent(in) :: names(:), name
-      do position = 1, size(names)
-         if (trim(names(position)) == name) return
-      end do
-      position = 0
-   end function position
-
-   !> Names as a list for messages ("none" for none).
-   pure function list_text(names) result(text)
-      character(len=*), intent(in) :: names(:)
-      character(len=:), allocatable :: text
-      integer :: j
-      text = ""
-      do j = 1, size(names)
-         if (j > 1) text = text//", "
-         text = text//trim(names(j))
-      end do
-      if (size(names) == 0) text = "none"
-   end function list_text
-
-   !> A number for messages: 12 significant digits.
-   pure function number(x) result(text)
-      real(wp), intent(in) :: x
-      character(len=:), allocatable :: text
-      text = trim(adjustl(format_es(x, 12)))
-   end function number
-
    !> The parameters as `name = value, ...`.
    pure function parameter_text(self) result(text)
       class(equations_system_t), intent(in) :: self
       character(len=:), allocatable :: text
-      integer :: j
-      text = ""
-      do j = 1, size(self%names)
-         if (j > 1) text = text//", "
-         text = text//trim(self%names(j))//" = "//number(self%values(j))
-      end do
+      text = values_text(self%names, self%values)
    end function parameter_text
 end module hillstab_hill_system_equation
