@@ -22,10 +22,13 @@ program hillstab_bench_regions
    use hillstab_curves_critical, only: along_beta
    use hillstab_curves_oracle, only: system_oracle_t
    use hillstab_curves_regions, only: region_t, find_regions, region_found, region_kind_name
+   use hillstab_batch_scene_types, only: scene_t
+   use hillstab_batch_run_read, only: read_scene
    implicit none
    integer, parameter :: n_scan = 121, n_drive = 150
    real(wp), parameter :: f_min = 0.5_wp, f_max = 20.0_wp, d_min = 0.0_wp, d_max = 1.5_wp
    type(equations_system_t) :: column
+   type(scene_t) :: scene
    type(system_oracle_t) :: oracle, fine
    type(region_t), allocatable :: regions(:), reference(:), swept_regions(:)
    type(error_t), allocatable :: error
@@ -42,16 +45,16 @@ program hillstab_bench_regions
       end if
       j = j + 1
    end do
-   call column%set_values("n", [3.0_wp], error)
-   call column%set_text("matrices", "W = [1, 0, 0; 0, 16, 0; 0, 0, 81], S = [1, 0.3, 0.1; 0.3, 4, 0.4; "// &
-                        "0.1, 0.4, 9], Z = [1, 0, 0; 0, 4, 0; 0, 0, 9]", error)
-   call column%set_text("parameters", "P0 = 0.3, P1 = 0, Om = 2, zeta = 0.01", error)
-   call column%set_text("stiffness", "W - (P0 + P1*cos(Om*t))*S", error)
-   call column%set_text("damping", "2*zeta*Z", error)
-   call column%set_text("frequency", "Om", error)
-   call column%set_text("alpha", "Om", error)
-   call column%set_text("beta", "P1", error)
-   call column%check_values(error)
+   ! the column of the shipped scene (the one the guide charts)
+   call read_scene("data/scenes/column_equations.nml", scene, error)
+   if (.not. allocated(error)) then
+      select type (system => scene%system)
+      type is (equations_system_t)
+         column = system
+      class default
+         error stop "data/scenes/column_equations.nml: not an &equations system"
+      end select
+   end if
    if (allocated(error)) error stop "the column"
    allocate (oracle%system, source=column)
    oracle%drive_axis = along_beta

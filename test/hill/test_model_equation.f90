@@ -11,7 +11,7 @@
 module test_model_equation
    use hillstab_core_kinds, only: wp, pi
    use hillstab_core_text, only: real_text
-   use hillstab_core_error, only: error_t, err_input, err_accuracy
+   use hillstab_core_error, only: error_t, set_error, err_input, err_accuracy
    use hillstab_hill_model, only: hill_point_t
    use hillstab_hill_model_equation, only: equation_model_t
    use hillstab_hill_model_mathieu, only: mathieu_model_t
@@ -26,6 +26,8 @@ module test_model_equation
       system_magnus4, system_magnus6, system_rk, system_gsl, system_method_name
    use hillstab_integrate_system_point, only: system_point
    use hillstab_hill_system_floquet, only: system_floquet_t
+   use hillstab_batch_scene_types, only: scene_t
+   use hillstab_batch_run_read, only: read_scene
    use hillstab_testing
    use hillstab_ffi_lapack, only: dgeev
    use hillstab_test_files, only: run_text_scene, check_rerun
@@ -320,20 +322,20 @@ contains
    end subroutine auto_chart_grid
 
    !> Bolotin's damped column of 3 modes as its user writes it (set 3 of
-   !> data/reference/physical_set.dat): M x'' + C x' + (W − (P0 + P1 cos Ωt) S) x = 0 over (Ω, P1).
+   !> data/reference/physical_set.dat): M x'' + C x' + (W − (P0 + P1 cos Ωt) S) x = 0 over (Ω, P1),
+   !> as the shipped scene data/scenes/column_equations.nml gives it.
    subroutine bolotin_column(column, error)
       type(equations_system_t), intent(out) :: column
       type(error_t), allocatable, intent(out) :: error
-      call column%set_values("n", [3.0_wp], error)
-      call column%set_text("matrices", "W = [1, 0, 0; 0, 16, 0; 0, 0, 81], S = [1, 0.3, 0.1; 0.3, 4, 0.4; "// &
-                           "0.1, 0.4, 9], Z = [1, 0, 0; 0, 4, 0; 0, 0, 9]", error)
-      call column%set_text("parameters", "P0 = 0.3, P1 = 0, Om = 2, zeta = 0.01", error)
-      call column%set_text("stiffness", "W - (P0 + P1*cos(Om*t))*S", error)
-      call column%set_text("damping", "2*zeta*Z", error)
-      call column%set_text("frequency", "Om", error)
-      call column%set_text("alpha", "Om", error)
-      call column%set_text("beta", "P1", error)
-      call column%check_values(error)
+      type(scene_t) :: scene
+      call read_scene("data/scenes/column_equations.nml", scene, error)
+      if (allocated(error)) return
+      select type (system => scene%system)
+      type is (equations_system_t)
+         column = system
+      class default
+         call set_error(error, err_input, "data/scenes/column_equations.nml: not an &equations system")
+      end select
    end subroutine bolotin_column
 
    !> The rows of set 3 of data/reference/physical_set.dat, (17, points): set, Ω, P1, the trace,
