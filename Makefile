@@ -90,7 +90,7 @@ run:
 	@bash scripts/setup.sh compiler fpm plot
 	@bash scripts/run_default.sh
 
-# the codes of models and methods that C, FORTRAN 77 and Python copy, written from the Fortran tables
+# the codes of models, methods and values that C, FORTRAN 77 and Python copy, written from the Fortran tables
 codes:
 	python3 scripts/codes.py
 

@@ -1,17 +1,22 @@
 #!/usr/bin/env python3
 """Write the codes other languages copy of the models and methods, from the Fortran tables.
 
-The registry of models (`model_names` of src/hillstab/hill/models.f90: code = position) and
+The registry of models (`model_names` of src/hillstab/hill/models.f90: code = position),
 the table of methods (`method_table` of src/hillstab/integrate/monodromy.f90: code = index,
-`systems=.true.` for the methods systems take) are the only lists. From them this script
-writes:
+`systems=.true.` for the methods systems take) and the values of a point the C API returns
+(the `value_<name> = <index>` constants and `value_count` of
+src/hillstab/interop/capi_batch.f90) are the only lists. From them this script writes:
 
-- the `HILLSTAB_MODEL_*` and `HILLSTAB_METHOD_*` enums of include/hillstab.h;
+- the `HILLSTAB_MODEL_*`, `HILLSTAB_METHOD_*` and `HILLSTAB_VALUE_*` enums of
+  include/hillstab.h (the values' enum with `HILLSTAB_VALUE_COUNT`; the enum of the files'
+  names for some values, their aliases, is written by hand);
 - the MODEL and METHOD argument lines of the FORTRAN 77 entry points HSTRACE and HSFLOQ
   (src/hillstab/interop/legacy.f90, legacy_external.f90: `:: model   !! ...`, `:: method  !! ...`);
-- Python's `METHODS` (python/hillstab/_capi.py) and `SYSTEM_METHODS` (python/hillstab/system.py).
+- Python's `METHODS` and `VALUES` (python/hillstab/_capi.py) and `SYSTEM_METHODS`
+  (python/hillstab/system.py).
 
-A new model or method is its module and its row; then `python3 scripts/codes.py` (or
+A new model, method or value is its module and its row (a value: its constant and its
+computation in capi_batch.f90); then `python3 scripts/codes.py` (or
 `make codes`). With `--check` nothing is written: the script names each file that is not
 what it would write and exits 1 (`make test` runs it so). The suite `codes` checks the same
 copies against the compiled tables, independently of this script. `--root DIR` works on
@@ -28,6 +33,7 @@ HEADER = "include/hillstab.h"
 LEGACY = ("src/hillstab/interop/legacy.f90", "src/hillstab/interop/legacy_external.f90")
 PY_CAPI = "python/hillstab/_capi.py"
 PY_SYSTEM = "python/hillstab/system.py"
+VALUES = "src/hillstab/interop/capi_batch.f90"
 WIDTH = 116
 #: what the F77 MODEL lines add after the codes
 MODEL_NOTE = " (a model that carries data or texts takes them through the C API)"
@@ -85,6 +91,22 @@ def method_rows(root):
     return out
 
 
+def value_names(root):
+    """The names of the values of a point, in the order of their indices (0 …)."""
+    with open(os.path.join(root, VALUES), encoding="utf-8") as handle:
+        text = handle.read()
+    match = re.search(r"^\s*integer, parameter :: value_\w+ = 0\b", text, re.M)
+    if not match:
+        sys.exit(f"codes: {VALUES}: no value_<name> = 0 constants")
+    statement = fortran_statement(text, match.start())
+    pairs = re.findall(r"value_(\w+) = (\d+)", statement)
+    count = re.search(r"^\s*integer, parameter :: value_count = (\d+)", text, re.M)
+    indices = [int(index) for _, index in pairs]
+    if not count or indices != list(range(len(pairs))) or int(count.group(1)) != len(pairs):
+        sys.exit(f"codes: {VALUES}: the value constants are not 0 … value_count - 1 in order")
+    return [name for name, _ in pairs]
+
+
 def wrapped(items, indent, width=WIDTH):
     """Items joined by ", " in lines of at most `width` characters, each starting with `indent`."""
     lines, line = [], indent
@@ -98,14 +120,19 @@ def wrapped(items, indent, width=WIDTH):
     return "\n".join(lines)
 
 
-def header_text(text, models, methods):
-    """The header with its model and method enums from the tables."""
+def header_text(text, models, methods, values):
+    """The header with its model, method and value enums from the tables."""
     enums = {
         "HILLSTAB_MODEL_": [f"HILLSTAB_MODEL_{name.upper()} = {code}" for code, name in enumerate(models, 1)],
         "HILLSTAB_METHOD_": [f"HILLSTAB_METHOD_{name.upper()} = {code}" for name, code, _ in methods],
+        # the enum that begins with the value of index 0 under the table's name (the aliases'
+        # enum begins with another name)
+        "HILLSTAB_VALUE_" + values[0].upper() + " = 0": [f"HILLSTAB_VALUE_{name.upper()} = {index}"
+                                                       for index, name in enumerate(values)] +
+        [f"HILLSTAB_VALUE_COUNT = {len(values)}"],
     }
     for prefix, items in enums.items():
-        pattern = re.compile(r"enum \{\n(  " + prefix + r"[A-Z0-9_]+ = -?\d+[^}]*)\};")
+        pattern = re.compile(r"enum \{\n(  " + re.escape(prefix) + r"[A-Z0-9_]* ?=? ?-?\d*[^}]*)\};")
         if not pattern.search(text):
             sys.exit(f"codes: {HEADER}: no enum of {prefix}*")
         text = pattern.sub(lambda _: "enum {\n" + wrapped(items, "  ") + "\n};", text, count=1)
@@ -142,6 +169,24 @@ def python_text(text, path, variable, pairs):
     return pattern.sub(lambda _: line, text, count=1)
 
 
+def python_tuple(text, path, variable, names):
+    """A Python file with its `variable = (...)` statement (one or more lines) from the names."""
+    first = variable + " = ("
+    lines, line = [], first
+    for k, name in enumerate(names):
+        piece = f'"{name}"' + ("," if k < len(names) - 1 else ")")
+        if line.strip() and not line.endswith("(") and len(line) + 1 + len(piece) > WIDTH:
+            lines.append(line)
+            line = " " * len(first)
+        line = line + ("" if line.endswith("(") or not line.strip() else " ") + piece
+    lines.append(line)
+    statement = "\n".join(lines)
+    pattern = re.compile("^" + variable + r" = \([^)]*\)$", re.M)
+    if not pattern.search(text):
+        sys.exit(f"codes: {path}: no statement {variable} = (...)")
+    return pattern.sub(lambda _: statement, text, count=1)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--check", action="store_true", help="write nothing; exit 1 when a file differs")
@@ -151,9 +196,11 @@ def main():
     root = args.root
     models = model_names(root)
     methods = method_rows(root)
-    writers = [(HEADER, lambda t: header_text(t, models, methods))]
+    values = value_names(root)
+    writers = [(HEADER, lambda t: header_text(t, models, methods, values))]
     writers += [(path, lambda t, p=path: legacy_text(t, p, models, methods)) for path in LEGACY]
     writers.append((PY_CAPI, lambda t: python_text(t, PY_CAPI, "METHODS", [(n, c) for n, c, _ in methods])))
+    writers.append((PY_CAPI, lambda t: python_tuple(t, PY_CAPI, "VALUES", values)))
     writers.append((PY_SYSTEM, lambda t: python_text(t, PY_SYSTEM, "SYSTEM_METHODS",
                                                       [(n, c) for n, c, s in methods if s])))
     stale = []
@@ -174,7 +221,8 @@ def main():
             print("codes: not what the tables give: " + ", ".join(stale) +
                   " (run python3 scripts/codes.py)", file=sys.stderr)
             return 1
-        print(f"codes: {len(models)} models and {len(methods)} methods in C, FORTRAN 77 and Python as in the tables")
+        print(f"codes: {len(models)} models, {len(methods)} methods and {len(values)} values in C, FORTRAN 77 and "
+              "Python as in the tables")
         return 0
     print("codes: wrote " + (", ".join(stale) if stale else "nothing (every file as the tables give it)"))
     return 0

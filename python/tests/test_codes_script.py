@@ -1,8 +1,9 @@
-"""scripts/codes.py: the codes of models and methods that C, FORTRAN 77 and Python copy are
-written from the Fortran tables. A new model and a new method, added to a copy of the tree as
-a contributor adds them (a name in `model_names`, a row of `method_table`), reach the header's
-enums, the F77 argument lines and Python's METHODS and SYSTEM_METHODS with the codes of their
-places; `--check` fails before the script has written them and passes after."""
+"""scripts/codes.py: the codes of models, methods and values that C, FORTRAN 77 and Python copy
+are written from the Fortran tables. A new model, method and value, added to a copy of the tree
+as a contributor adds them (a name in `model_names`, a row of `method_table`, a `value_<name>`
+constant of capi_batch.f90), reach the header's enums, the F77 argument lines and Python's
+METHODS, SYSTEM_METHODS and VALUES with the codes of their places; `--check` fails before the
+script has written them and passes after."""
 import os
 import re
 import shutil
@@ -13,7 +14,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 SCRIPT = os.path.join(ROOT, "scripts", "codes.py")
 FILES = ("src/hillstab/hill/models.f90", "src/hillstab/integrate/monodromy.f90", "include/hillstab.h",
          "src/hillstab/interop/legacy.f90", "src/hillstab/interop/legacy_external.f90",
-         "python/hillstab/_capi.py", "python/hillstab/system.py")
+         "python/hillstab/_capi.py", "python/hillstab/system.py", "src/hillstab/interop/capi_batch.f90")
 
 
 def run(root, *options):
@@ -50,6 +51,11 @@ def test_a_new_model_and_method_reach_every_copy(tmp_path):
                      r'\1, &\n      method_info_t("newmethod", "a test row", exact=.true., systems=.true.)]',
                      methods, count=1)
     open(root / FILES[1], "w", encoding="utf-8").write(methods)
+    values = read(root, FILES[7])
+    n_values = int(re.search(r"integer, parameter :: value_count = (\d+)", values).group(1))
+    values = re.sub(r"(value_error_estimate = \d+)", r"\1, value_newvalue = {}".format(n_values), values, count=1)
+    values = values.replace("value_count = {}".format(n_values), "value_count = {}".format(n_values + 1), 1)
+    open(root / FILES[7], "w", encoding="utf-8").write(values)
 
     stale = run(root, "--check")
     assert stale.returncode == 1 and "include/hillstab.h" in stale.stderr
@@ -60,6 +66,12 @@ def test_a_new_model_and_method_reach_every_copy(tmp_path):
     assert "HILLSTAB_MODEL_NEWMODEL = {}".format(count + 1) in header
     assert "HILLSTAB_METHOD_NEWMETHOD = {}".format(high + 1) in header
     assert "HILLSTAB_MODEL_ELASTIC = 1" in header and "HILLSTAB_METHOD_AUTO = 0" in header
+    assert "HILLSTAB_VALUE_NEWVALUE = {}".format(n_values) in header
+    assert "HILLSTAB_VALUE_COUNT = {}".format(n_values + 1) in header
+    assert "HILLSTAB_VALUE_S = 0" in header   # the aliases' enum, written by hand, kept
+    namespace = {}
+    exec(re.search(r"^VALUES = \([^)]*\)", read(root, "python/hillstab/_capi.py"), re.M).group(0), namespace)
+    assert namespace["VALUES"][-1] == "newvalue" and len(namespace["VALUES"]) == n_values + 1
     for path in FILES[3:5]:
         text = read(root, path)
         assert "{} newmodel".format(count + 1) in text, path
@@ -71,9 +83,10 @@ def test_a_new_model_and_method_reach_every_copy(tmp_path):
     # what the script wrote is still a header: the enum closes, every other line is untouched
     before = read(ROOT, "include/hillstab.h").splitlines()
     after = header.splitlines()
-    assert len(after) - len(before) in (0, 1)
-    assert [line for line in after if "HILLSTAB_MODEL_" not in line and "HILLSTAB_METHOD_" not in line] == \
-        [line for line in before if "HILLSTAB_MODEL_" not in line and "HILLSTAB_METHOD_" not in line]
+    assert len(after) - len(before) in (0, 1, 2)
+    generated = ("HILLSTAB_MODEL_", "HILLSTAB_METHOD_", "HILLSTAB_VALUE_")
+    assert [line for line in after if not any(g in line for g in generated)] == \
+        [line for line in before if not any(g in line for g in generated)]
 
 
 def test_a_broken_table_is_named(tmp_path):
