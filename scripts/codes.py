@@ -55,14 +55,20 @@ def fortran_statement(text, start):
     return " ".join(part.strip().lstrip("&") for part in out)
 
 
+def table_statement(root, path, declaration, what):
+    """The file's text, the match of the table's declaration and its whole statement."""
+    with open(os.path.join(root, path), encoding="utf-8") as handle:
+        text = handle.read()
+    match = re.search(r"^\s*" + declaration, text, re.M)
+    if not match:
+        sys.exit(f"codes: {path}: no {what}")
+    return text, match, fortran_statement(text, match.start())
+
+
 def model_names(root):
     """The models' names in the order of their codes (1 …)."""
-    with open(os.path.join(root, MODELS), encoding="utf-8") as handle:
-        text = handle.read()
-    match = re.search(r"^\s*character\(len=\*\), parameter :: model_names\(\d+\)", text, re.M)
-    if not match:
-        sys.exit(f"codes: no model_names table in {MODELS}")
-    statement = fortran_statement(text, match.start())
+    _, _, statement = table_statement(root, MODELS, r"character\(len=\*\), parameter :: model_names\(\d+\)",
+                                      "model_names table")
     body = statement[statement.index("::", statement.index("[")) + 2:statement.rindex("]")]
     names = re.findall(r'"([^"]*)"', body)
     declared = int(re.search(r"model_names\((\d+)\)", statement).group(1))
@@ -73,13 +79,9 @@ def model_names(root):
 
 def method_rows(root):
     """The methods as (name, code, systems), in the order of their codes (from the lower bound)."""
-    with open(os.path.join(root, METHODS), encoding="utf-8") as handle:
-        text = handle.read()
-    match = re.search(r"^\s*type\(method_info_t\), parameter :: method_table\((-?\d+):(-?\d+)\)", text, re.M)
-    if not match:
-        sys.exit(f"codes: no method_table in {METHODS}")
+    _, match, statement = table_statement(
+        root, METHODS, r"type\(method_info_t\), parameter :: method_table\((-?\d+):(-?\d+)\)", "method_table")
     low, high = int(match.group(1)), int(match.group(2))
-    statement = fortran_statement(text, match.start())
     rows = statement.split("method_info_t(")[1:]   # [0]: the declaration
     if len(rows) != high - low + 1:
         sys.exit(f"codes: {METHODS}: method_table({low}:{high}) has {len(rows)} rows")
@@ -93,12 +95,8 @@ def method_rows(root):
 
 def value_names(root):
     """The names of the values of a point, in the order of their indices (0 …)."""
-    with open(os.path.join(root, VALUES), encoding="utf-8") as handle:
-        text = handle.read()
-    match = re.search(r"^\s*integer, parameter :: value_\w+ = 0\b", text, re.M)
-    if not match:
-        sys.exit(f"codes: {VALUES}: no value_<name> = 0 constants")
-    statement = fortran_statement(text, match.start())
+    text, _, statement = table_statement(root, VALUES, r"integer, parameter :: value_\w+ = 0\b",
+                                         "value_<name> = 0 constants")
     pairs = re.findall(r"value_(\w+) = (\d+)", statement)
     count = re.search(r"^\s*integer, parameter :: value_count = (\d+)", text, re.M)
     indices = [int(index) for _, index in pairs]
@@ -107,15 +105,17 @@ def value_names(root):
     return [name for name, _ in pairs]
 
 
-def wrapped(items, indent, width=WIDTH):
-    """Items joined by ", " in lines of at most `width` characters, each starting with `indent`."""
-    lines, line = [], indent
+def wrapped(items, first, rest=None, end=""):
+    """Items joined by ", " and followed by `end`, in lines of at most WIDTH characters: the
+    first starting with `first`, the others with `rest` (`first` when not given)."""
+    rest = first if rest is None else rest
+    lines, line, start = [], first, first
     for k, item in enumerate(items):
-        piece = item + ("," if k < len(items) - 1 else "")
-        if line != indent and len(line) + 1 + len(piece) > width:
+        piece = item + ("," if k < len(items) - 1 else end)
+        if line != start and len(line) + 1 + len(piece) > WIDTH:
             lines.append(line)
-            line = indent
-        line = line + ("" if line == indent else " ") + piece
+            line = start = rest
+        line = line + ("" if line == start else " ") + piece
     lines.append(line)
     return "\n".join(lines)
 
@@ -172,15 +172,7 @@ def python_text(text, path, variable, pairs):
 def python_tuple(text, path, variable, names):
     """A Python file with its `variable = (...)` statement (one or more lines) from the names."""
     first = variable + " = ("
-    lines, line = [], first
-    for k, name in enumerate(names):
-        piece = f'"{name}"' + ("," if k < len(names) - 1 else ")")
-        if line.strip() and not line.endswith("(") and len(line) + 1 + len(piece) > WIDTH:
-            lines.append(line)
-            line = " " * len(first)
-        line = line + ("" if line.endswith("(") or not line.strip() else " ") + piece
-    lines.append(line)
-    statement = "\n".join(lines)
+    statement = wrapped([f'"{name}"' for name in names], first, " " * len(first), end=")")
     pattern = re.compile("^" + variable + r" = \([^)]*\)$", re.M)
     if not pattern.search(text):
         sys.exit(f"codes: {path}: no statement {variable} = (...)")

@@ -28,13 +28,13 @@ contains
          new_unittest("same_refusals_scalar_and_system", same_refusals_scalar_and_system)])
    end function collect_named_parameters
 
-   !> Ω and T where the drive is given as a frequency and as a period, at two points.
+   !> Ω and T from the drive's value where it is given as a frequency and as a period, at two points.
    subroutine drive_at_a_point(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(drive_t) :: by_frequency, by_period
       character(len=:), allocatable :: problem
       character(len=8) :: names(2)
-      real(wp) :: values(2)
+      real(wp) :: values(2), f, t
       integer :: k
       names = [character(len=8) :: "w", "l"]
       problem = ""
@@ -48,11 +48,13 @@ contains
       call check(ctx, .not. by_frequency%from_period .and. by_period%from_period, "from_period")
       do k = 1, 2
          values = [3.0_wp*k, 0.5_wp + k]
-         call check(ctx, by_frequency%omega_at(values), 2.0_wp*values(1), rel=1.0e-15_wp, message="Omega given")
-         call check(ctx, by_frequency%period_at(values), 2.0_wp*pi/(2.0_wp*values(1)), rel=1.0e-15_wp, &
+         f = by_frequency%expression%value(values)
+         t = by_period%expression%value(values)
+         call check(ctx, by_frequency%omega_of(f), 2.0_wp*values(1), rel=1.0e-15_wp, message="Omega given")
+         call check(ctx, by_frequency%period_of(f), 2.0_wp*pi/(2.0_wp*values(1)), rel=1.0e-15_wp, &
                     message="T = 2 pi/Omega")
-         call check(ctx, by_period%period_at(values), values(2)/values(1), rel=1.0e-15_wp, message="T given")
-         call check(ctx, by_period%omega_at(values), 2.0_wp*pi*values(1)/values(2), rel=1.0e-14_wp, &
+         call check(ctx, by_period%period_of(t), values(2)/values(1), rel=1.0e-15_wp, message="T given")
+         call check(ctx, by_period%omega_of(t), 2.0_wp*pi*values(1)/values(2), rel=1.0e-14_wp, &
                     message="Omega = 2 pi/T")
       end do
       call check(ctx, by_frequency%uses("w") .and. .not. by_frequency%uses("l") .and. by_period%uses("l"), "uses")

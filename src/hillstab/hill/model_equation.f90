@@ -334,7 +334,7 @@ contains
          self%problem = "damping: must be finite and >= 0 at the parameters ("//listing//")"
          return
       end if
-      period = merge(drive, 2.0_wp*pi/drive, self%drive%from_period)
+      period = self%drive%period_of(drive)
       ! k finite over a period and periodic, at the given parameters
       n_nodes = 256
       allocate (t(n_nodes), k_now(n_nodes), k_later(n_nodes))
@@ -399,11 +399,7 @@ contains
       c = self%c%value(row%p)
       if (.not. (ieee_is_finite(drive) .and. ieee_is_finite(m) .and. ieee_is_finite(c))) return
       if (.not. (drive > 0.0_wp .and. m > 0.0_wp .and. c >= 0.0_wp)) return
-      if (self%drive%from_period) then
-         row%omega = 2.0_wp*pi/drive
-      else
-         row%omega = drive
-      end if
+      row%omega = self%drive%omega_of(drive)
       if (.not. (ieee_is_finite(row%omega) .and. row%omega > 0.0_wp)) return
       row%s = (pi/row%omega)**2/m
       if (.not. (ieee_is_finite(row%s) .and. row%s > 0.0_wp)) return
@@ -457,7 +453,7 @@ contains
       omega = self%drive%expression%value(p)
       m = self%m%value(p)
       if (.not. (ieee_is_finite(omega) .and. ieee_is_finite(m) .and. omega > 0.0_wp .and. m > 0.0_wp)) return
-      if (self%drive%from_period) omega = 2.0_wp*pi/omega
+      omega = self%drive%omega_of(omega)
       call self%k%evaluate([pi*tau/omega], k, failure, scalars=p)
       if (allocated(failure)) return
       q = (pi/omega)**2*k(1)/m

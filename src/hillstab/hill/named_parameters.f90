@@ -4,8 +4,8 @@
 !> drive of period T = 2π/Ω given as the frequency Ω or the period T, an expression of the
 !> parameters, so that the period is the one *at a point*.
 !>
-!> `drive_t` is the drive: its texts, its expression, and at given parameter values its Ω
-!> and T (`omega_at`, `period_at`) and what its header says (`drive_summary`). `find_axes`
+!> `drive_t` is the drive: its texts, its expression, Ω and T from its value at a point
+!> (`omega_of`, `period_of`) and what its header says (`drive_summary`). `find_axes`
 !> finds the two axes among the parameters and refuses a parameter computed from an axis;
 !> `names_text`, `values_text` and `message_number` write parameters and numbers into
 !> messages alike for both.
@@ -16,7 +16,7 @@
 !> drive%frequency_text = "w"
 !> problem = ""
 !> call parse_drive(drive, [character(len=8) :: "w", "A"], problem)
-!> print *, drive%period_at([314.16_wp, 0.005_wp])   ! 2 pi/314.16
+!> print *, drive%period_of(drive%expression%value([314.16_wp, 0.005_wp]))   ! 2 pi/314.16
 !>```
 module hillstab_hill_named_parameters
    use hillstab_core_kinds, only: wp, pi
@@ -37,10 +37,10 @@ module hillstab_hill_named_parameters
    contains
       !> "frequency" or "period": the variable the drive was given as
       procedure :: name => drive_name
-      !> Ω at given parameter values (what the expression gives there, not checked)
-      procedure :: omega_at => drive_omega_at
-      !> T at given parameter values (what the expression gives there, not checked)
-      procedure :: period_at => drive_period_at
+      !> Ω from the drive's value at a point (the frequency, or 2π/T)
+      procedure :: omega_of => drive_omega_of
+      !> T from the drive's value at a point (the period, or 2π/Ω)
+      procedure :: period_of => drive_period_of
       !> the header's text of the drive: ", Omega = ..." or ", period T = ..., Omega = 2 pi/T"
       procedure :: summary => drive_summary
       !> the drive uses this parameter
@@ -56,22 +56,22 @@ contains
       text = trim(merge("period   ", "frequency", self%from_period))
    end function drive_name
 
-   !> Ω = the frequency, or 2π/T.
-   pure real(wp) function drive_omega_at(self, values) result(omega)
+   !> Ω = the frequency, or 2π/T, from the drive's value (`expression` at a point's
+   !> parameters, > 0: the caller checks it first).
+   elemental real(wp) function drive_omega_of(self, drive) result(omega)
       class(drive_t), intent(in) :: self  !! the drive (parsed)
-      real(wp), intent(in) :: values(:)   !! the parameters' values
-      omega = self%expression%value(values)
-      if (self%from_period) omega = 2.0_wp*pi/omega
-   end function drive_omega_at
+      real(wp), intent(in) :: drive       !! its value at the point
+      omega = drive
+      if (self%from_period) omega = 2.0_wp*pi/drive
+   end function drive_omega_of
 
-   !> T = the period, or 2π/Ω.
-   pure real(wp) function drive_period_at(self, values) result(period)
+   !> T = the period, or 2π/Ω, from the drive's value (> 0: the caller checks it first).
+   elemental real(wp) function drive_period_of(self, drive) result(period)
       class(drive_t), intent(in) :: self  !! the drive (parsed)
-      real(wp), intent(in) :: values(:)   !! the parameters' values
-      real(wp) :: drive
-      drive = self%expression%value(values)
-      period = merge(drive, 2.0_wp*pi/drive, self%from_period)
-   end function drive_period_at
+      real(wp), intent(in) :: drive       !! its value at the point
+      period = drive
+      if (.not. self%from_period) period = 2.0_wp*pi/drive
+   end function drive_period_of
 
    !> ", Omega = <frequency>" or ", period T = <period>, Omega = 2 pi/T".
    pure function drive_summary(self) result(text)

@@ -431,7 +431,7 @@ contains
          self%problem = drive_name//": must be finite and > 0 at the parameters ("//parameter_text(self)//")"
          return
       end if
-      period = merge(drive, 2.0_wp*pi/drive, self%drive%from_period)
+      period = self%drive%period_of(drive)
       ! M, C, G and K at the given parameters: finite, and K periodic and linear in the matrices
       self%ready = .true.
       allocate (self%mass_matrix(self%n, self%n), k_now(self%n, self%n), k_later(self%n, self%n), &
@@ -596,7 +596,7 @@ contains
       p(self%i_beta) = 0.0_wp
       drive = self%drive%expression%value(p)
       if (.not. (ieee_is_finite(drive) .and. drive > 0.0_wp)) return
-      omega = merge(2.0_wp*pi/drive, drive, self%drive%from_period)
+      omega = self%drive%omega_of(drive)
       ratio = pi/omega
       ok = ieee_is_finite(ratio) .and. ratio > 0.0_wp
    end subroutine row_at
