@@ -16,7 +16,7 @@ program hillstab_bench_regions
    use hillstab_core_error, only: error_t
    use hillstab_hill_system, only: system_form_t, prepare_system
    use hillstab_hill_system_equation, only: equations_system_t
-   use hillstab_hill_system_floquet, only: system_floquet_t
+   use hillstab_hill_system_floquet, only: floquet_t
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t
    use hillstab_integrate_system_point, only: system_point
    use hillstab_curves_critical, only: along_beta
@@ -134,11 +134,11 @@ contains
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: monodromy
-      type(system_floquet_t) :: floquet
+      type(floquet_t) :: floquet
       type(error_t), allocatable :: e
       call prepare_system(column, 0.0_wp, form, e, om)
       call system_point(column, form, om, p1, system_method_t(tolerance=1.0e-10_wp), nodes, monodromy, floquet, e)
-      log_largest = floquet%log_lambda_max
+      log_largest = floquet%log_modulus(1)
       loop_count = loop_count + 1
    end function log_largest
 

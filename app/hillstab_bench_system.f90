@@ -39,7 +39,7 @@ program hillstab_bench_system
    use hillstab_core_status, only: status_ok
    use hillstab_hill_system, only: system_form_t, prepare_system
    use hillstab_hill_system_matrix, only: matrix_system_t
-   use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet, verdict_unstable
+   use hillstab_hill_system_floquet, only: floquet_t, system_floquet, verdict_unstable
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
       system_auto, system_magnus6
    !$ use omp_lib, only: omp_get_max_threads
@@ -226,7 +226,7 @@ contains
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(error_t), allocatable :: error
       integer :: i, j, p, every
       integer(int64) :: total_steps
@@ -515,7 +515,7 @@ contains
       integer, intent(out) :: failures
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(error_t), allocatable :: error
       integer :: i, j, m
       integer(int64) :: total

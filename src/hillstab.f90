@@ -49,17 +49,7 @@
 !>   [[hillstab_hill_system:prepare_system]], `hillstab_max_dof` = [[hillstab_hill_system:max_dof]]
 !> - [[hillstab_hill_system_matrix]]: [[hillstab_hill_system_matrix:matrix_system_t]]
 !> - [[hillstab_hill_system_scalar]]: [[hillstab_hill_system_scalar:scalar_system_t]]
-!> - [[hillstab_hill_system_floquet]]: [[hillstab_hill_system_floquet:system_floquet_t]],
-!>   [[hillstab_hill_system_floquet:system_floquet]],
-!>   `hillstab_verdict_stable` = [[hillstab_hill_system_floquet:verdict_stable]],
-!>   `hillstab_verdict_unstable` = [[hillstab_hill_system_floquet:verdict_unstable]],
-!>   `hillstab_verdict_marginal` = [[hillstab_hill_system_floquet:verdict_marginal]],
-!>   `hillstab_kind_stable` = [[hillstab_hill_system_floquet:kind_stable]],
-!>   `hillstab_kind_plus_one` = [[hillstab_hill_system_floquet:kind_plus_one]],
-!>   `hillstab_kind_minus_one` = [[hillstab_hill_system_floquet:kind_minus_one]],
-!>   `hillstab_kind_combination` = [[hillstab_hill_system_floquet:kind_combination]],
-!>   `hillstab_kind_damped` = [[hillstab_hill_system_floquet:kind_damped]],
-!>   `hillstab_kind_undecided` = [[hillstab_hill_system_floquet:kind_undecided]]
+!> - [[hillstab_hill_system_floquet]]: [[hillstab_hill_system_floquet:system_floquet]]
 !> - [[hillstab_hill_coefficient]]:
 !>   `hillstab_sampling_endpoint` = [[hillstab_hill_coefficient:sampling_endpoint]],
 !>   `hillstab_sampling_midpoint` = [[hillstab_hill_coefficient:sampling_midpoint]],
@@ -84,7 +74,16 @@
 !> - [[hillstab_hill_floquet]]: [[hillstab_hill_floquet:floquet_t]],
 !>   [[hillstab_hill_floquet:floquet_from_trace]], [[hillstab_hill_floquet:floquet_from_value]],
 !>   `hillstab_multipliers` = [[hillstab_hill_floquet:multipliers]],
-!>   [[hillstab_hill_floquet:largest_multiplier_modulus]]
+!>   [[hillstab_hill_floquet:largest_multiplier_modulus]],
+!>   `hillstab_verdict_stable` = [[hillstab_hill_floquet:verdict_stable]],
+!>   `hillstab_verdict_unstable` = [[hillstab_hill_floquet:verdict_unstable]],
+!>   `hillstab_verdict_marginal` = [[hillstab_hill_floquet:verdict_marginal]],
+!>   `hillstab_kind_stable` = [[hillstab_hill_floquet:kind_stable]],
+!>   `hillstab_kind_plus_one` = [[hillstab_hill_floquet:kind_plus_one]],
+!>   `hillstab_kind_minus_one` = [[hillstab_hill_floquet:kind_minus_one]],
+!>   `hillstab_kind_combination` = [[hillstab_hill_floquet:kind_combination]],
+!>   `hillstab_kind_damped` = [[hillstab_hill_floquet:kind_damped]],
+!>   `hillstab_kind_undecided` = [[hillstab_hill_floquet:kind_undecided]]
 !> - [[hillstab_hill_mathieu]]: [[hillstab_hill_mathieu:mathieu_a]], [[hillstab_hill_mathieu:mathieu_b]],
 !>   [[hillstab_hill_mathieu:mathieu_transition_beta]]
 !> - [[hillstab_integrate_monodromy]]: [[hillstab_integrate_monodromy:method_t]],
@@ -236,12 +235,7 @@ module hillstab
    use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system, hillstab_max_dof => max_dof
    use hillstab_hill_system_matrix, only: matrix_system_t
    use hillstab_hill_system_scalar, only: scalar_system_t
-   use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet, &
-      hillstab_verdict_stable => verdict_stable, hillstab_verdict_unstable => verdict_unstable, &
-      hillstab_verdict_marginal => verdict_marginal, hillstab_kind_stable => kind_stable, &
-      hillstab_kind_plus_one => kind_plus_one, hillstab_kind_minus_one => kind_minus_one, &
-      hillstab_kind_combination => kind_combination, hillstab_kind_damped => kind_damped, &
-      hillstab_kind_undecided => kind_undecided
+   use hillstab_hill_system_floquet, only: system_floquet
    use hillstab_hill_coefficient, only: hillstab_sampling_endpoint => sampling_endpoint, &
       hillstab_sampling_midpoint => sampling_midpoint, hillstab_sampling_average => sampling_average, &
       hillstab_sampling_name => sampling_name, sampling_from_name, segment_coefficients, in_physical_domain
@@ -252,7 +246,12 @@ module hillstab
       trace_from_value, hillstab_matrix_of => matrix_of, hillstab_determinant => determinant
    use hillstab_hill_formulas, only: trace_two_segment_paper, trace_damped_paper, trace_mathieu_two_segment
    use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_from_value, &
-      hillstab_multipliers => multipliers, largest_multiplier_modulus
+      hillstab_multipliers => multipliers, largest_multiplier_modulus, &
+      hillstab_verdict_stable => verdict_stable, hillstab_verdict_unstable => verdict_unstable, &
+      hillstab_verdict_marginal => verdict_marginal, hillstab_kind_stable => kind_stable, &
+      hillstab_kind_plus_one => kind_plus_one, hillstab_kind_minus_one => kind_minus_one, &
+      hillstab_kind_combination => kind_combination, hillstab_kind_damped => kind_damped, &
+      hillstab_kind_undecided => kind_undecided
    use hillstab_hill_mathieu, only: mathieu_a, mathieu_b, mathieu_transition_beta
    use hillstab_integrate_monodromy, only: method_t, hillstab_method_auto => method_auto, &
       hillstab_method_formula => method_formula, hillstab_method_segments => method_segments, &

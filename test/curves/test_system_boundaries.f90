@@ -18,7 +18,7 @@ module test_system_boundaries
    use hillstab_hill_system_floquet, only: kind_plus_one, kind_minus_one, kind_combination
    use hillstab_integrate_system, only: system_method_t, system_auto, system_nodes_t, system_monodromy_t
    use hillstab_integrate_system_point, only: system_point
-   use hillstab_hill_system_floquet, only: system_floquet_t, verdict_unstable, verdict_marginal
+   use hillstab_hill_system_floquet, only: floquet_t, verdict_unstable, verdict_marginal
    use hillstab_curves_system_boundaries
    use hillstab_testing
    use hillstab_test_scratch, only: read_lines
@@ -211,7 +211,7 @@ contains
       real(wp), intent(out) :: log_top, discriminant
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(error_t), allocatable :: error
       call system_point(system, form, alpha, beta, system_method_t(system_auto, tolerance), nodes, r, f, error)
       verdict = verdict_marginal
@@ -219,7 +219,7 @@ contains
       discriminant = 0.0_wp
       if (allocated(error)) return
       verdict = f%verdict
-      log_top = f%log_lambda_max
+      log_top = f%log_modulus(1)
       discriminant = f%discriminant
    end subroutine reference_point
 

@@ -25,7 +25,6 @@ module test_model_equation
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_auto, &
       system_magnus4, system_magnus6, system_rk, system_gsl, system_method_name
    use hillstab_integrate_system_point, only: system_point
-   use hillstab_hill_system_floquet, only: system_floquet_t
    use hillstab_batch_scene_types, only: scene_t
    use hillstab_batch_run_read, only: read_scene
    use hillstab_testing
@@ -363,7 +362,7 @@ contains
    !> The worst of the six reference multipliers' distance to the nearest computed one (the
    !> two sets equal as multisets), relative to max(1, |λ|).
    pure real(wp) function multiplier_error(f, reference) result(worst)
-      type(system_floquet_t), intent(in) :: f
+      type(floquet_t), intent(in) :: f
       complex(wp), intent(in) :: reference(:)
       complex(wp) :: computed(size(f%multipliers))
       integer :: j
@@ -389,7 +388,7 @@ contains
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       real(wp), allocatable :: rows(:, :)
       real(wp) :: row(17), scale, d_trace, d_lambda, worst_trace(size(methods)), worst_lambda(size(methods))
       complex(wp) :: reference(6)
@@ -419,7 +418,7 @@ contains
             if (allocated(error) .or. r%status /= 0) cycle
             ! Φ's error is the tolerance relative to its largest entry; the trace sums 6 of them
             scale = max(1.0_wp, maxval(abs(r%phi))*exp(r%log_scale))
-            d_trace = abs(f%trace - row(4))/scale
+            d_trace = abs(f%a1 - row(4))/scale
             worst_trace(m) = max(worst_trace(m), d_trace/tolerance)
             call check(ctx, d_trace <= 6.0_wp*tolerance, system_method_name(methods(m))//": trace within 6 tol ("// &
                        real_text(d_trace)//") at Om = "//real_text(row(2))//", P1 = "//real_text(row(3)))
@@ -429,7 +428,7 @@ contains
             worst_lambda(m) = max(worst_lambda(m), d_lambda)
             call check(ctx, d_lambda <= tolerance, system_method_name(methods(m))//": every multiplier ("// &
                        real_text(d_lambda)//") at Om = "//real_text(row(2))//", P1 = "//real_text(row(3)))
-            call check(ctx, abs(exp(f%log_lambda_max) - abs(reference(1)))/abs(reference(1)) <= 1.0e-7_wp, &
+            call check(ctx, abs(exp(f%log_modulus(1)) - abs(reference(1)))/abs(reference(1)) <= 1.0e-7_wp, &
                        system_method_name(methods(m))//": the largest modulus")
             if (m == 1 .and. f%verdict == 1) n_stable = n_stable + 1
          end do
@@ -455,7 +454,7 @@ contains
       type(system_form_t) :: form, form2
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r, r2
-      type(system_floquet_t) :: f, f2
+      type(floquet_t) :: f, f2
       real(wp), allocatable :: rows(:, :)
       real(wp) :: row(17), scale, d_lambda, worst(size(methods))
       complex(wp) :: reference(6)
@@ -508,7 +507,7 @@ contains
             call check(ctx, d_lambda <= tolerance, system_method_name(methods(m))//": every multiplier ("// &
                        real_text(d_lambda)//") at Om = "//real_text(row(2))//", P1 = "//real_text(row(3)))
             scale = max(1.0_wp, maxval(abs(r%phi))*exp(r%log_scale))
-            call check(ctx, abs(f%trace - f2%trace)/scale <= 12.0_wp*tolerance, system_method_name(methods(m))// &
+            call check(ctx, abs(f%a1 - f2%a1)/scale <= 12.0_wp*tolerance, system_method_name(methods(m))// &
                        ": the trace of the second-order form at Om = "//real_text(row(2)))
             call check(ctx, f%verdict == f2%verdict .and. f%kind == f2%kind, system_method_name(methods(m))// &
                        ": the verdict and kind of the second-order form at Om = "//real_text(row(2))// &
@@ -536,7 +535,7 @@ contains
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r, r2
-      type(system_floquet_t) :: f, f2
+      type(floquet_t) :: f, f2
       real(wp) :: a(3, 3), wr(3), wi(3), vl(1, 3), vr(1, 3), work(64), om, g1, d
       complex(wp) :: exact(3), computed(3)
       integer :: k, j, i, info, n_unstable

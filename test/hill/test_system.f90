@@ -19,6 +19,8 @@ module test_system
    use hillstab_hill_system_scalar, only: scalar_system_t
    use hillstab_hill_system_floquet
    use hillstab_integrate_system
+   use hillstab_integrate_system_point, only: system_point
+   use hillstab_core_text, only: real_text
    use hillstab_test_system_reference, only: reference_monodromy
    use hillstab_testing
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
@@ -32,6 +34,7 @@ contains
       type(testsuite_t) :: suite
       suite = new_testsuite("system", [ &
          new_unittest("one_dof_is_scalar_trace", one_dof_is_scalar_trace), &
+         new_unittest("one_result_two_routes", one_result_two_routes), &
          new_unittest("decoupled_multipliers", decoupled_multipliers), &
          new_unittest("reference_two_dof", reference_two_dof), &
          new_unittest("reference_three_dof", reference_three_dof), &
@@ -134,6 +137,71 @@ contains
       end do
    end subroutine one_dof_is_scalar_trace
 
+   !> The one Floquet result by its two routes at the same points of Mathieu's equation, undamped
+   !> and damped: from the scalar trace (`floquet_from_trace`, then `complete_from_trace`) and
+   !> from the 2 × 2 monodromy of the equation as a system (`system_point`, magnus6). Each route
+   !> fills the fields the other's readers take: the verdict and kind, `stable` and `marginal`, the
+   !> largest exponent, both multipliers' ln|λ| and |arg λ|, a₁, a₂ and the exponents. The points
+   !> reach all three kinds of the undamped equation (stable, at +1 for β < 0, at −1 in the
+   !> first tongue) and the damped kind.
+   subroutine one_result_two_routes(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(scalar_system_t) :: one
+      type(system_form_t) :: form
+      type(system_nodes_t) :: nodes
+      type(system_monodromy_t) :: r
+      type(floquet_t) :: by_trace, by_matrix
+      type(trace_t) :: tr
+      type(error_t), allocatable :: error
+      real(wp), parameter :: alpha = 2.5_wp, betas(6) = [-1.0_wp, 1.0_wp, 2.2_wp, 2.6_wp, 5.0_wp, 14.0_wp]
+      real(wp), parameter :: eps(2) = [0.0_wp, 0.3_wp]
+      logical :: seen(0:5)
+      character(len=:), allocatable :: where
+      integer :: i, k, j
+      allocate (one%model, source=mathieu_model_t())
+      seen = .false.
+      do k = 1, size(eps)
+         call prepare_system(one, eps(k), form, error)
+         call check(ctx, .not. allocated(error), "prepare")
+         if (allocated(error)) return
+         do i = 1, size(betas)
+            where = "beta = "//real_text(betas(i))//", eps = "//real_text(eps(k))
+            call monodromy_trace(one%model, hill_point_t(alpha, betas(i), eps(k)), &
+                                 method_t(kind=method_magnus6, tolerance=1.0e-13_wp), tr, error)
+            call check(ctx, .not. allocated(error), where//": trace")
+            if (allocated(error)) cycle
+            by_trace = floquet_from_trace(tr, eps(k), 1.0e-13_wp, one%model%period())
+            nodes = system_nodes_t()
+            call system_point(one, form, alpha, betas(i), system_method_t(system_magnus6, 1.0e-12_wp), nodes, r, &
+                              by_matrix, error)
+            call check(ctx, .not. allocated(error) .and. r%status == status_ok, where//": system point")
+            if (allocated(error)) cycle
+            call check(ctx, by_trace%n == 1 .and. by_matrix%n == 1, where//": n = 1")
+            call check(ctx, by_trace%verdict == by_matrix%verdict .and. by_trace%kind == by_matrix%kind, &
+                       where//": the same verdict and kind")
+            call check(ctx, (by_trace%stable .eqv. by_matrix%stable) .and. .not. by_trace%marginal .and. &
+                       .not. by_matrix%marginal, where//": the same stable, decided")
+            call check(ctx, by_matrix%exponent, by_trace%exponent, abs=1.0e-9_wp, message=where//": exponent")
+            do j = 1, 2
+               call check(ctx, by_matrix%log_modulus(j), by_trace%log_modulus(j), abs=1.0e-9_wp, &
+                          message=where//": ln|lambda_"//real_text(real(j, wp))//"|")
+               call check(ctx, abs(by_matrix%argument(j)), abs(by_trace%argument(j)), abs=1.0e-6_wp, &
+                          message=where//": |arg lambda_"//real_text(real(j, wp))//"|")
+            end do
+            call complete_from_trace(by_trace, form)
+            call check(ctx, by_trace%a1, by_matrix%a1, abs=1.0e-10_wp*max(1.0_wp, abs(by_matrix%a1)), &
+                       message=where//": a1")
+            call check(ctx, by_trace%a2, by_matrix%a2, abs=1.0e-10_wp, message=where//": a2")
+            call check(ctx, size(by_trace%exponents) == 1 .and. size(by_matrix%exponents) == 1, where//": one exponent")
+            if (size(by_trace%exponents) == 1 .and. size(by_matrix%exponents) == 1) &
+               call check(ctx, by_trace%exponents(1), by_matrix%exponents(1), abs=1.0e-9_wp, message=where//": mu_1")
+            if (by_trace%kind >= 0 .and. by_trace%kind <= 5) seen(by_trace%kind) = .true.
+         end do
+      end do
+      call check(ctx, seen(kind_stable) .and. seen(kind_plus_one) .and. seen(kind_minus_one) .and. seen(kind_damped), &
+                 "the points reach stable, +1, -1 and damped")
+   end subroutine one_result_two_routes
+
    !> A diagonal system of three Mathieu equations x_i'' + (b_i β − a_i α cos πτ) x_i = 0 has
    !> the multipliers of each: λ = (S_i ± √(S_i² − 4))/2 with S_i the Mathieu trace at
    !> (a_i α, b_i β).
@@ -143,7 +211,7 @@ contains
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(trace_t) :: tr
       type(error_t), allocatable :: error
       real(wp) :: a(3) = [1.0_wp, 0.5_wp, 2.0_wp], b(3) = [1.0_wp, 3.0_wp, 0.4_wp], alpha, beta
@@ -267,7 +335,7 @@ contains
       type(system_form_t) :: form, general
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f, g
+      type(floquet_t) :: f, g
       type(error_t), allocatable :: error
       integer :: i, j, k
       real(wp) :: e
@@ -303,7 +371,7 @@ contains
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f, truth
+      type(floquet_t) :: f, truth
       type(error_t), allocatable :: error
       real(wp) :: ref(6, 6)
       integer :: s, i, j, n, decided, m
@@ -321,7 +389,7 @@ contains
                call system_monodromy(systems(s), form, 0.35_wp*i, 0.45_wp*j, system_method_t(system_auto, 1.0e-10_wp), &
                                      nodes, r, error)
                call system_floquet(r%phi, form, r%error_estimate*max(1.0_wp, maxval(abs(r%phi))), f, r%log_scale)
-               if (abs(truth%log_lambda_max) > 1.0e-6_wp) then
+               if (abs(truth%log_modulus(1)) > 1.0e-6_wp) then
                   call check(ctx, f%verdict == verdict_unstable, "clear instability decided")
                   call check(ctx, f%kind == truth%kind, "its kind")
                   decided = decided + 1
@@ -391,7 +459,7 @@ contains
          real(wp), intent(in) :: beta
          type(system_nodes_t) :: nodes
          type(system_monodromy_t) :: r
-         type(system_floquet_t) :: f
+         type(floquet_t) :: f
          type(error_t), allocatable :: error
          call system_monodromy(pair, form, alphas(a), beta, system_method_t(system_auto, 1.0e-12_wp), nodes, r, error)
          call system_floquet(r%phi, form, r%error_estimate, f, r%log_scale)
@@ -422,7 +490,7 @@ contains
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(error_t), allocatable :: error
       type(matrix_system_t) :: gyro, damped
       gyro = pendula_pair(0.7_wp, 0.3_wp, gyroscopic=0.6_wp, sine=0.5_wp)
@@ -450,7 +518,7 @@ contains
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(error_t), allocatable :: error
       real(wp) :: b11, b12, b22, mu_max, beta
       pair = pendula_pair(0.8_wp, 0.1_wp)
@@ -466,12 +534,12 @@ contains
       if (allocated(error)) return
       call system_floquet(r%phi, form, r%error_estimate*max(1.0_wp, maxval(abs(r%phi))), f, r%log_scale)
       call check(ctx, f%log_scale > 0.0_wp, "kept scaled")
-      call check(ctx, f%mu, sqrt(-beta*mu_max), rel=1.0e-12_wp, message="mu = sqrt(|beta| mu_max)")
+      call check(ctx, f%exponent, sqrt(-beta*mu_max), rel=1.0e-12_wp, message="mu = sqrt(|beta| mu_max)")
       call check(ctx, f%verdict == verdict_unstable .and. f%kind == kind_plus_one, "unstable at +1")
       call check(ctx, f%overflow, "trace clamped with the overflow flag")
    end subroutine scaled_growth_exponent
 
-   !> The analysis of a system of one equation from the scalar trace (`floquet_of_trace`) at
+   !> The analysis of a system of one equation from the scalar trace (`floquet_from_trace`, `complete_from_trace`) at
    !> the extremes, against closed forms: S = 1e305 with εP/2 = 0.1 (tr Φ = e^{−0.1} S is
    !> above 1e300: clamped, with the overflow flag); ln|S| = 710 (S itself overflows) with
    !> εP/2 = 30 (tr Φ = e^{680}, no overflow) and with εP/2 = 0 (clamped); ln|S| = 1000 (the
@@ -481,46 +549,46 @@ contains
    subroutine trace_form_extremes(ctx)
       type(test_context_t), intent(inout) :: ctx
       type(system_form_t) :: form
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       form%period = 2.0_wp
       ! S = 1e305, eps = 0.1 (decay 0.1): e^{-0.1} 1e305 > 1e300
-      call floquet_of_trace(floquet_from_trace(trace_t(value=1.0e305_wp, log_abs=log(1.0e305_wp)), 0.1_wp, &
-                                               period=2.0_wp), form, f)
-      call check(ctx, f%trace == 1.0e300_wp .and. f%overflow, "S = 1e305: tr clamped to 1e300, overflow")
+      f = floquet_from_trace(trace_t(value=1.0e305_wp, log_abs=log(1.0e305_wp)), 0.1_wp, period=2.0_wp)
+      call complete_from_trace(f, form)
+      call check(ctx, f%a1 == 1.0e300_wp .and. f%overflow, "S = 1e305: tr clamped to 1e300, overflow")
       call check(ctx, f%a2, exp(-0.2_wp), rel=1.0e-15_wp, message="a2 = exp(-eps P)")
-      call check(ctx, f%log_lambda_max, log(1.0e305_wp) - 0.1_wp, rel=1.0e-14_wp, &
+      call check(ctx, f%log_modulus(1), log(1.0e305_wp) - 0.1_wp, rel=1.0e-14_wp, &
                  message="ln lambda_max = ln S - eps P/2 (S^2/4 >> 1)")
       call check(ctx, f%verdict == verdict_unstable .and. f%kind == kind_plus_one, "unstable at +1")
       call check(ctx, f%defect == 0.0_wp .and. f%n == 1, "no defect, one degree of freedom")
       ! S itself overflows (ln|S| = 710), decay 30: tr = e^680
-      call floquet_of_trace(floquet_from_trace(trace_t(value=huge(1.0_wp), log_abs=710.0_wp, overflow=.true.), &
-                                               30.0_wp, period=2.0_wp), form, f)
-      call check(ctx, f%trace, exp(680.0_wp), rel=1.0e-13_wp, message="ln S = 710, eps P/2 = 30: tr = e^680")
+      f = floquet_from_trace(trace_t(value=huge(1.0_wp), log_abs=710.0_wp, overflow=.true.), 30.0_wp, period=2.0_wp)
+      call complete_from_trace(f, form)
+      call check(ctx, f%a1, exp(680.0_wp), rel=1.0e-13_wp, message="ln S = 710, eps P/2 = 30: tr = e^680")
       call check(ctx, .not. f%overflow, "which fits: no overflow")
       call check(ctx, f%a2, exp(-60.0_wp), rel=1.0e-14_wp, message="a2 = exp(-60)")
-      call floquet_of_trace(floquet_from_trace(trace_t(value=huge(1.0_wp), log_abs=710.0_wp, overflow=.true.), &
-                                               0.0_wp, period=2.0_wp), form, f)
-      call check(ctx, f%trace == 1.0e300_wp .and. f%overflow, "undamped: clamped, overflow")
+      f = floquet_from_trace(trace_t(value=huge(1.0_wp), log_abs=710.0_wp, overflow=.true.), 0.0_wp, period=2.0_wp)
+      call complete_from_trace(f, form)
+      call check(ctx, f%a1 == 1.0e300_wp .and. f%overflow, "undamped: clamped, overflow")
       call check(ctx, f%a2 == 1.0_wp, "a2 = 1 undamped")
       ! ln|S| = 1000: the multipliers scaled by e^{-s}, s = ln lambda_max
-      call floquet_of_trace(floquet_from_trace(trace_t(value=huge(1.0_wp), log_abs=1000.0_wp, overflow=.true.), &
-                                               0.5_wp, period=2.0_wp), form, f)
-      call check(ctx, f%log_lambda_max, 1000.0_wp - 0.5_wp, rel=1.0e-15_wp, &
+      f = floquet_from_trace(trace_t(value=huge(1.0_wp), log_abs=1000.0_wp, overflow=.true.), 0.5_wp, period=2.0_wp)
+      call complete_from_trace(f, form)
+      call check(ctx, f%log_modulus(1), 1000.0_wp - 0.5_wp, rel=1.0e-15_wp, &
                  message="ln lambda_max = ln S - eps P/2 (lambda = S)")
-      call check(ctx, f%log_scale, f%log_lambda_max, rel=1.0e-15_wp, message="scaled by lambda_max")
+      call check(ctx, f%log_scale, f%log_modulus(1), rel=1.0e-15_wp, message="scaled by lambda_max")
       call check(ctx, abs(f%multipliers(1)), 1.0_wp, rel=1.0e-13_wp, message="|lambda_1 e^-s| = 1")
       call check(ctx, abs(f%multipliers(2)) < 1.0e-300_wp, "lambda_2 e^-s below any double's range: tiny")
-      call check(ctx, f%mu, f%log_lambda_max/2.0_wp, rel=1.0e-15_wp, message="mu = ln lambda_max / P")
-      call check(ctx, f%trace == 1.0e300_wp .and. f%overflow, "tr clamped")
+      call check(ctx, f%exponent, f%log_modulus(1)/2.0_wp, rel=1.0e-15_wp, message="mu = ln lambda_max / P")
+      call check(ctx, f%a1 == 1.0e300_wp .and. f%overflow, "tr clamped")
       ! a negative S keeps its sign
-      call floquet_of_trace(floquet_from_trace(trace_t(value=-1.0e305_wp, log_abs=log(1.0e305_wp)), 0.1_wp, &
-                                               period=2.0_wp), form, f)
-      call check(ctx, f%trace == -1.0e300_wp .and. f%overflow, "S = -1e305: tr = -1e300, overflow")
+      f = floquet_from_trace(trace_t(value=-1.0e305_wp, log_abs=log(1.0e305_wp)), 0.1_wp, period=2.0_wp)
+      call complete_from_trace(f, form)
+      call check(ctx, f%a1 == -1.0e300_wp .and. f%overflow, "S = -1e305: tr = -1e300, overflow")
       call check(ctx, f%verdict == verdict_unstable .and. f%kind == kind_minus_one, "unstable at -1")
       ! a stable damped point: |lambda| = e^{-eps P/2}
-      call floquet_of_trace(floquet_from_trace(trace_t(value=1.5_wp, log_abs=log(1.5_wp)), 0.1_wp, period=2.0_wp), &
-                            form, f)
-      call check(ctx, f%trace, 1.5_wp*exp(-0.1_wp), rel=1.0e-15_wp, message="tr = e^{-0.1} 1.5")
+      f = floquet_from_trace(trace_t(value=1.5_wp, log_abs=log(1.5_wp)), 0.1_wp, period=2.0_wp)
+      call complete_from_trace(f, form)
+      call check(ctx, f%a1, 1.5_wp*exp(-0.1_wp), rel=1.0e-15_wp, message="tr = e^{-0.1} 1.5")
       call check(ctx, abs(f%multipliers(1)), exp(-0.1_wp), rel=1.0e-14_wp, message="|lambda_1| = e^{-eps P/2}")
       call check(ctx, abs(f%multipliers(2)), exp(-0.1_wp), rel=1.0e-14_wp, message="|lambda_2| = e^{-eps P/2}")
       call check(ctx, real(f%multipliers(1)*f%multipliers(2)), f%a2, rel=1.0e-14_wp, message="lambda_1 lambda_2 = a2")

@@ -9,7 +9,7 @@ module test_system_point
    use hillstab_core_status, only: status_ok, status_roundoff
    use hillstab_hill_system, only: system_form_t, prepare_system
    use hillstab_hill_system_matrix, only: matrix_system_t
-   use hillstab_hill_system_floquet, only: system_floquet_t, verdict_marginal, kind_undecided
+   use hillstab_hill_system_floquet, only: floquet_t, verdict_marginal, kind_undecided
    use hillstab_hill_system_exponents, only: factored_exponents, householder_qr
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_auto, &
       system_magnus4, system_magnus6, system_rk, system_gsl, system_factors
@@ -79,7 +79,7 @@ contains
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(error_t), allocatable :: error
       real(wp) :: c, s, k(2, 2), tol(2) = [1.0e-8_wp, 1.0e-10_wp]
       integer :: methods(5) = [system_auto, system_magnus4, system_magnus6, system_rk, system_gsl], i, t
@@ -115,7 +115,7 @@ contains
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(error_t), allocatable :: error
       integer :: methods(5) = [system_auto, system_magnus4, system_magnus6, system_rk, system_gsl], i
       character(len=40) :: where
@@ -147,7 +147,7 @@ contains
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(error_t), allocatable :: error
       integer :: methods(3) = [system_auto, system_rk, system_gsl], i
       character(len=40) :: where
@@ -176,7 +176,7 @@ contains
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(error_t), allocatable :: error
       real(wp) :: factors_mu(4), expected_sum
       integer :: methods(3) = [system_auto, system_rk, system_gsl], i
@@ -210,7 +210,7 @@ contains
       real(wp), intent(in) :: expected_sum
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(error_t), allocatable :: error
       real(wp), allocatable :: factors(:, :, :)
       real(wp) :: mu(4)
@@ -238,7 +238,7 @@ contains
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(error_t), allocatable :: error
       real(wp) :: ref(4, 4), err, tol(4) = [1.0e-8_wp, 1.0e-12_wp, 1.0e-13_wp, 1.0e-14_wp], points(2, 6)
       integer :: methods(5) = [system_auto, system_magnus4, system_magnus6, system_rk, system_gsl], i, t, p, n_ok, &
@@ -292,7 +292,7 @@ contains
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(error_t), allocatable :: error
       real(wp) :: eps(2) = [0.0_wp, 0.3_wp]
       integer :: i
@@ -319,7 +319,7 @@ contains
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(error_t), allocatable :: error
       real(wp), parameter :: pi = 3.14159265358979324_wp
       call sys%set_values("n", [2.0_wp], error)

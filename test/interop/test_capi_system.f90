@@ -14,7 +14,7 @@ module test_capi_system
    use hillstab_core_text, only: integer_text
    use hillstab_hill_system, only: system_form_t, prepare_system
    use hillstab_hill_system_matrix, only: matrix_system_t
-   use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet, verdict_stable, verdict_unstable, &
+   use hillstab_hill_system_floquet, only: floquet_t, system_floquet, verdict_stable, verdict_unstable, &
       verdict_marginal, kind_stable, kind_plus_one, kind_minus_one, kind_combination, kind_damped, &
       kind_undecided
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
@@ -104,7 +104,7 @@ contains
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(error_t), allocatable :: error
       real(c_double), target :: phi(16), log_scale, estimate, re(4), im(4), scale, exponents(2), trace, a2, defect, e2
       integer(c_int), target :: status, verdict, kind, n, status2
@@ -141,7 +141,7 @@ contains
                                                       c_loc(scale), c_loc(exponents), c_loc(verdict), c_loc(kind), &
                                                       c_loc(trace), c_loc(a2), c_loc(defect), c_loc(e2), &
                                                       c_loc(status2)) == 0, trim(where)//": floquet "//last_message())
-            call check(ctx, trace, f%trace, rel=1.0e-15_wp, abs=1.0e-15_wp, message=trim(where)//": trace")
+            call check(ctx, trace, f%a1, rel=1.0e-15_wp, abs=1.0e-15_wp, message=trim(where)//": trace")
             call check(ctx, a2, f%a2, rel=1.0e-15_wp, abs=1.0e-15_wp, message=trim(where)//": a2")
             call check(ctx, verdict == f%verdict .and. kind == f%kind, trim(where)//": verdict and kind")
             call check(ctx, all(exponents == f%exponents) .and. defect == f%defect .and. e2 == r%error_estimate, &

@@ -30,7 +30,7 @@ module hillstab_curves_oracle
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: period_damping
    use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system, check_system_point
-   use hillstab_hill_system_floquet, only: system_floquet_t
+   use hillstab_hill_system_floquet, only: floquet_t
    use hillstab_integrate_monodromy, only: method_t, monodromy_trace
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t
    use hillstab_integrate_system_point, only: system_point
@@ -291,7 +291,7 @@ contains
       type(system_form_t) :: form
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: monodromy
-      type(system_floquet_t) :: floquet
+      type(floquet_t) :: floquet
       real(wp) :: alpha, beta, margin
       if (side < -1 .or. side > 1) then
          call set_error(error, err_invalid_parameter, "side: must be -1, 0 or 1")
@@ -311,7 +311,7 @@ contains
       ! the error of ln|λ|: Φ's relative to its largest entry, over the multiplier's size
       s%bound = max(monodromy%error_estimate, self%method%tolerance)* &
                 exp(min(max(0.0_wp, log(max(1.0_wp, maxval(abs(monodromy%phi)))) + monodromy%log_scale - &
-                                    floquet%log_lambda_max), 50.0_wp))
+                                    floquet%log_modulus(1)), 50.0_wp))
    end subroutine system_distance
 
    subroutine system_natural(self, f, nu, error)
@@ -400,12 +400,12 @@ contains
    !> (−1 where there is none). Regions of one family in one window are told apart by the
    !> window only.
    pure real(wp) function family_log_modulus(floquet, argument) result(g)
-      type(system_floquet_t), intent(in) :: floquet
+      type(floquet_t), intent(in) :: floquet
       real(wp), intent(in) :: argument
       real(wp) :: modulus(size(floquet%multipliers)), distance(size(floquet%multipliers))
       integer :: i, nearest
       if (argument < 0.0_wp .or. size(floquet%multipliers) == 0) then
-         g = floquet%log_lambda_max
+         g = floquet%log_modulus(1)
          return
       end if
       modulus = abs(floquet%multipliers)

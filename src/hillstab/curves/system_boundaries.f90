@@ -44,7 +44,7 @@ module hillstab_curves_system_boundaries
    use hillstab_core_status, only: status_ok, status_failed
    use hillstab_ffi_lapack, only: zggev
    use hillstab_hill_system, only: hill_system_t, system_form_t
-   use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet, kind_plus_one, kind_minus_one, &
+   use hillstab_hill_system_floquet, only: floquet_t, system_floquet, kind_plus_one, kind_minus_one, &
       kind_combination, kind_undecided, verdict_stable
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_monodromy
    use hillstab_curves_system_edges, only: edge_row_t, edge_sample_t, side_check_t, quantity_of, evaluate, &
@@ -378,7 +378,7 @@ contains
       real(wp) function distance_from(target, beta)
          real(wp), intent(in) :: target, beta
          type(system_monodromy_t) :: r
-         type(system_floquet_t) :: f
+         type(floquet_t) :: f
          type(error_t), allocatable :: cause
          call system_monodromy(system, form, alpha, beta, method, row%nodes, r, cause)
          distance_from = huge(1.0_wp)

@@ -30,7 +30,7 @@ module hillstab_curves_system_edges
    use hillstab_core_status, only: status_failed
    use hillstab_ffi_lapack, only: dgeev
    use hillstab_hill_system, only: hill_system_t, system_form_t
-   use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet, verdict_stable, verdict_unstable, &
+   use hillstab_hill_system_floquet, only: floquet_t, system_floquet, verdict_stable, verdict_unstable, &
       verdict_marginal, kind_plus_one, kind_minus_one, kind_combination, kind_undecided
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy
    implicit none
@@ -100,7 +100,7 @@ contains
       logical, intent(in), optional :: sharp
       type(edge_sample_t) :: s
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(error_t), allocatable :: cause
       complex(wp), allocatable :: lambda(:)
       real(wp), allocatable :: radius(:)
@@ -192,7 +192,7 @@ contains
    !> q = −1 inside a combination region, +1 elsewhere, decided.
    pure subroutine deep(s, f)
       type(edge_sample_t), intent(inout) :: s
-      type(system_floquet_t), intent(in) :: f
+      type(floquet_t), intent(in) :: f
       s%q = merge(-1.0_wp, 1.0_wp, f%verdict == verdict_unstable .and. f%kind == kind_combination)
       s%dq = 0.0_wp
    end subroutine deep

@@ -1,4 +1,5 @@
-!> Floquet multipliers, exponents and stability verdicts from the monodromy trace.
+!> Floquet multipliers, exponents and stability verdicts: the one result of a monodromy,
+!> of one equation or of n (`floquet_t`), and its analysis from one equation's trace.
 !>
 !> For the undamped equation det M = 1 and the multipliers solve λ² − Sλ + 1 = 0.
 !> With damping ε the trace S₁ belongs to χ = e^{ετ/2} x (eq. (47)); the
@@ -7,7 +8,8 @@
 !> `stable_paper` beside the correct verdict, never instead of it.
 !>
 !> Multipliers are stored as log-modulus and argument so that they stay finite
-!> however large the trace.
+!> however large the trace. A system's monodromy Φ (2n × 2n) fills the same result
+!> (hillstab_hill_system_floquet), with every multiplier and exponent.
 module hillstab_hill_floquet
    use hillstab_core_kinds, only: wp, pi, log_huge
    use hillstab_hill_transfer, only: trace_t, trace_from_value
@@ -16,21 +18,82 @@ module hillstab_hill_floquet
    public :: floquet_t, floquet_from_trace, floquet_verdict, verdicts, near_threshold, floquet_from_value, multipliers, &
       period_damping, &
       largest_multiplier_modulus, bounds_verdict, bounds_stable, bounds_unstable, bounds_undecided
+   public :: verdict_stable, verdict_unstable, verdict_marginal
+   public :: kind_stable, kind_plus_one, kind_minus_one, kind_combination, kind_damped, kind_undecided, kind_name
 
-   !> Floquet data of the swing x over one radial period (2 units of τ).
+   !> Verdict, stable: every multiplier on the unit circle (Hamiltonian) or inside it (damped), decided.
+   integer, parameter :: verdict_stable = 1
+   !> Verdict, unstable: a multiplier outside the unit circle, decided.
+   integer, parameter :: verdict_unstable = 0
+   !> Verdict, marginal: the error bound of the monodromy does not decide (on a boundary, at a collision).
+   integer, parameter :: verdict_marginal = -1
+
+   !> Kind, stable, the multipliers on the unit circle.
+   integer, parameter :: kind_stable = 0
+   !> Kind, a real pair leaves the circle at +1 (λ > 0; a parametric resonance of even order).
+   integer, parameter :: kind_plus_one = 1
+   !> Kind, a real pair leaves the circle at −1 (λ < 0; a parametric resonance of odd order).
+   integer, parameter :: kind_minus_one = 2
+   !> Kind, a complex quadruplet leaves the circle (a Krein collision: combination resonance).
+   integer, parameter :: kind_combination = 3
+   !> Kind, damped and asymptotically stable, every |λ| < 1.
+   integer, parameter :: kind_damped = 4
+   !> Kind, undecided: the verdict is marginal (the error bound of the monodromy does not tell
+   !> whether and where a multiplier leaves the circle).
+   integer, parameter :: kind_undecided = 5
+
+   !> The Floquet analysis of one monodromy, of one equation or of n degrees of freedom: what
+   !> charts, points files, boundaries and the APIs read, whoever computed it.
+   !>
+   !> - One equation's trace fills it on the scalar path (`floquet_from_trace`; `floquet_verdict`
+   !>   the verdicts alone), allocating nothing: the verdict, the two multipliers of x, the
+   !>   exponent, and the trace S it came from.
+   !> - A system's monodromy Φ fills it through `system_floquet` (hillstab_hill_system_floquet):
+   !>   the same verdict and largest multiplier, and every multiplier and exponent, the
+   !>   invariants a₁, a₂ and the structural defect; `complete_from_trace` adds those to a
+   !>   trace's result (one equation taken by a scalar method).
    type :: floquet_t
-      type(trace_t) :: trace            !! S (S₁ for χ when ε > 0)
-      real(wp) :: epsilon = 0.0_wp      !! damping ε
-      real(wp) :: log_modulus(2) = 0.0_wp  !! ln|λ| of the multipliers of x, largest first
-      real(wp) :: argument(2) = 0.0_wp     !! arg λ: ±θ when |S| < 2, 0 or π when real
-      real(wp) :: rotation = 0.0_wp     !! θ = arccos(S/2) ∈ [0, π] when |S| ≤ 2, else 0
-      real(wp) :: exponent = 0.0_wp     !! μ = ln|λ_max|/P per unit τ, P the period (of x; −ε/2 when |S|<2)
-      logical :: stable = .false.       !! x stays bounded (decays for ε > 0): |S| < 2 cosh ε
-      logical :: stable_paper = .false. !! the paper's criterion |S| ≤ 2
-      !> |S| lies within the trace's error bound of the stability threshold 2 cosh ε, so the
-      !> computed value cannot decide the verdict (`stable` is then the verdict of the value
-      !> alone). Set only when the trace carries an error estimate (see `floquet_from_trace`).
+      integer :: n = 1                  !! degrees of freedom
+      real(wp) :: period = 2.0_wp       !! P, the period in τ and the exponents' unit
+      integer :: verdict = verdict_marginal  !! verdict_*, decided within the error bound
+      !> kind_* (of the instability, or stable, damped, undecided)
+      integer :: kind = kind_stable
+      !> x stays bounded (decays when damped). One equation's trace: |S| < 2 cosh ε, the value's
+      !> verdict even when `marginal`; a system's Φ: `verdict` is verdict_stable
+      logical :: stable = .false.
+      !> the paper's criterion |S| ≤ 2 (one equation's trace only; false for a system's Φ)
+      logical :: stable_paper = .false.
+      !> the error bound reaches across the stability threshold, so the computed value cannot
+      !> decide the verdict (`verdict` is then verdict_marginal). One equation's trace: |S| within
+      !> the trace's error bound of 2 cosh ε, set only when the trace carries an error estimate
+      !> (see `floquet_from_trace`)
       logical :: marginal = .false.
+      !> ln|λ| of the multipliers of x: the largest first, then (one degree of freedom) the other,
+      !> (n > 1) the smallest
+      real(wp) :: log_modulus(2) = 0.0_wp
+      !> arg λ of the same two, in [−π, π]: ±θ when |S| < 2, 0 or π when real
+      real(wp) :: argument(2) = 0.0_wp
+      real(wp) :: rotation = 0.0_wp     !! θ = arccos(S/2) ∈ [0, π] when |S| ≤ 2, else 0 (one equation's trace)
+      !> μ = ln|λ_max|/P per unit τ, the largest Floquet exponent (of x; −ε P/2 / P when |S| < 2)
+      real(wp) :: exponent = 0.0_wp
+      !> one equation's trace: S (S₁ of χ when ε > 0), with ln|S| and its error estimate
+      type(trace_t) :: trace
+      real(wp) :: epsilon = 0.0_wp      !! the damping ε of the trace's χ (0 for a system's Φ)
+      !> a system's 2n multipliers of Φ̃ (times e^s: Φ's), by decreasing modulus
+      complex(wp), allocatable :: multipliers(:)
+      !> s of the multipliers: Φ's are e^s times `multipliers` (the scale given, or more where
+      !> Φ̃'s entries exceeded 1e100 and were scaled)
+      real(wp) :: log_scale = 0.0_wp
+      real(wp), allocatable :: exponents(:)     !! ln|λ_i|/P of the n largest multipliers
+      real(wp) :: a1 = 0.0_wp                   !! a₁ = tr Φ of x (e^s tr Φ̃; ±1e300 when it overflows)
+      real(wp) :: a2 = 0.0_wp                   !! a₂ = ((tr Φ)² − tr Φ²)/2
+      logical :: overflow = .false.             !! a₁ or a₂ exceeds 1e300
+      !> ‖ΦᵀΩΦ − Ω‖/(‖Ω‖ max(1, ‖Φ‖)²) (Hamiltonian) or |det Φ − e^{P tr D}|/∏‖Φ's columns‖
+      !> (0 for one equation's trace: the structure holds by construction)
+      real(wp) :: defect = 0.0_wp
+      real(wp) :: discriminant = 0.0_wp         !! n = 2 Hamiltonian: a₁² − 4a₂ + 8 (of Φ̃)
+      !> every exponent meets the tolerance (false: one could not be resolved, the point at status 1)
+      logical :: exponents_resolved = .true.
    end type floquet_t
 
    !> What the range of the coefficient alone decides (`bounds_verdict`).
@@ -107,8 +170,8 @@ contains
       decay = epsilon*(0.5_wp*period)
    end function period_damping
 
-   !> The verdicts alone of `floquet_from_trace` (`stable`, `stable_paper`, `marginal`, the
-   !> trace and ε; the multipliers left at zero): what a file of verdicts needs, without
+   !> The verdicts alone of `floquet_from_trace` (`verdict`, `kind`, `stable`, `stable_paper`,
+   !> `marginal`, the trace, ε and the period; the multipliers left at zero): what a file of verdicts needs, without
    !> the inverse trigonometric and hyperbolic functions of the multipliers.
    pure function floquet_verdict(tr, epsilon, tolerance, period) result(f)
       type(trace_t), intent(in) :: tr  !! trace of the (chi-)monodromy, with its error estimate
@@ -123,9 +186,37 @@ contains
       bound = 0.0_wp
       if (present(tolerance)) bound = tolerance
       decay = epsilon
-      if (present(period)) decay = period_damping(epsilon, period)
+      if (present(period)) then
+         decay = period_damping(epsilon, period)
+         f%period = period
+      end if
       call verdicts(tr, decay, bound, f%stable, f%stable_paper, f%marginal)
+      if (f%marginal) then
+         f%verdict = verdict_marginal
+         f%kind = kind_undecided
+      else if (f%stable) then
+         f%verdict = verdict_stable
+         f%kind = merge(kind_damped, kind_stable, decay > 0.0_wp)
+      else
+         f%verdict = verdict_unstable
+         f%kind = merge(kind_plus_one, kind_minus_one, tr%value > 0.0_wp)
+      end if
    end function floquet_verdict
+
+   !> The name of a kind, for headers and docs.
+   pure function kind_name(kind) result(name)
+      integer, intent(in) :: kind  !! kind_*
+      character(len=:), allocatable :: name
+      select case (kind)
+      case (kind_stable); name = "stable"
+      case (kind_plus_one); name = "parametric at +1"
+      case (kind_minus_one); name = "parametric at -1"
+      case (kind_combination); name = "combination (Krein collision)"
+      case (kind_damped); name = "damped, asymptotically stable"
+      case (kind_undecided); name = "undecided (marginal)"
+      case default; name = "unknown"
+      end select
+   end function kind_name
 
    !> The verdicts of `floquet_verdict` alone, as three flags: what a file of verdicts writes
    !> at every point (no Floquet data built).

@@ -23,18 +23,22 @@
 !> (`kind_plus_one`, real λ > 0), at −1 (`kind_minus_one`), or off the real axis
 !> (`kind_combination`, a Krein collision: a combination resonance ω_i + ω_j ≈ kΩ).
 !>
-!> - One degree of freedom taken by a scalar method (`floquet_of_trace`): the analysis of
-!>   the trace S of χ = e^{ετ/2} x (hillstab_hill_floquet), whose monodromy has determinant 1,
-!>   so that x's has tr Φ = e^{−εP/2} S and det Φ = a₂ = e^{−εP} exactly, the multipliers
-!>   e^{−εP/2}(S/2 ± √(S²/4 − 1)), the verdict that of the trace within its error bound, and
-!>   no structural defect (the structure holds by construction).
+!> - One degree of freedom taken by a scalar method: the result of the trace S of
+!>   χ = e^{ετ/2} x (`floquet_from_trace`, hillstab_hill_floquet), whose monodromy has
+!>   determinant 1, its verdict that of the trace within its error bound, completed here
+!>   (`complete_from_trace`): x's Φ has tr Φ = e^{−εP/2} S and det Φ = a₂ = e^{−εP} exactly,
+!>   the multipliers e^{−εP/2}(S/2 ± √(S²/4 − 1)), and no structural defect (the structure
+!>   holds by construction).
+!>
+!> Both fill the one result `floquet_t` of hillstab_hill_floquet, which this module also
+!> exports with the verdict_* and kind_* codes.
 !>
 !> Φ may be given scaled, Φ = e^s Φ̃ (`log_scale` s), so that strongly unstable points do
 !> not overflow: the multipliers' moduli and exponents come from Φ̃ and s (entries of Φ̃ beyond
-!> 1e100 are scaled once more here, `system_floquet_t%log_scale` the total).
+!> 1e100 are scaled once more here, `floquet_t%log_scale` the total).
 !>
 !>```fortran
-!> type(system_floquet_t) :: f
+!> type(floquet_t) :: f
 !> call system_floquet(phi, form, phi_error, f)
 !> if (f%verdict == verdict_unstable .and. f%kind == kind_combination) print *, "combination resonance"
 !>```
@@ -42,75 +46,15 @@ module hillstab_hill_system_floquet
    use hillstab_core_kinds, only: wp, pi
    use hillstab_ffi_lapack, only: dgeev
    use hillstab_hill_system, only: system_form_t
-   use hillstab_hill_floquet, only: floquet_t, period_damping
+   use hillstab_hill_floquet, only: floquet_t, period_damping, verdict_stable, verdict_unstable, verdict_marginal, &
+      kind_stable, kind_plus_one, kind_minus_one, kind_combination, kind_damped, kind_undecided, kind_name
    implicit none
    private
-   public :: system_floquet_t, system_floquet, verdict_stable, verdict_unstable, verdict_marginal
+   public :: floquet_t, system_floquet, verdict_stable, verdict_unstable, verdict_marginal
    public :: kind_stable, kind_plus_one, kind_minus_one, kind_combination, kind_damped, kind_undecided, kind_name
-   public :: symplectic_form, matrix_determinant, broucke_multipliers, floquet_of_trace
-
-   !> Verdict, stable: every multiplier on the unit circle (Hamiltonian) or inside it (damped), decided.
-   integer, parameter :: verdict_stable = 1
-   !> Verdict, unstable: a multiplier outside the unit circle, decided.
-   integer, parameter :: verdict_unstable = 0
-   !> Verdict, marginal: the error bound of Φ does not decide (on a boundary, at a collision).
-   integer, parameter :: verdict_marginal = -1
-
-   !> Kind, stable, the multipliers on the unit circle.
-   integer, parameter :: kind_stable = 0
-   !> Kind, a real pair leaves the circle at +1 (λ > 0; a parametric resonance of even order).
-   integer, parameter :: kind_plus_one = 1
-   !> Kind, a real pair leaves the circle at −1 (λ < 0; a parametric resonance of odd order).
-   integer, parameter :: kind_minus_one = 2
-   !> Kind, a complex quadruplet leaves the circle (a Krein collision: combination resonance).
-   integer, parameter :: kind_combination = 3
-   !> Kind, damped and asymptotically stable, every |λ| < 1.
-   integer, parameter :: kind_damped = 4
-   !> Kind, undecided: the verdict is marginal (the error bound of Φ does not tell whether and
-   !> where a multiplier leaves the circle).
-   integer, parameter :: kind_undecided = 5
-
-   !> The Floquet analysis of one monodromy.
-   type :: system_floquet_t
-      integer :: n = 0                          !! degrees of freedom
-      !> the 2n multipliers of Φ̃ (times e^s: Φ's), by decreasing modulus
-      complex(wp), allocatable :: multipliers(:)
-      !> s of the multipliers: Φ's are e^s times `multipliers` (the scale given, or more where
-      !> Φ̃'s entries exceeded 1e100 and were scaled here)
-      real(wp) :: log_scale = 0.0_wp
-      real(wp), allocatable :: exponents(:)     !! ln|λ_i|/P of the n largest multipliers
-      real(wp) :: trace = 0.0_wp                !! a₁ = tr Φ (e^s tr Φ̃; huge when it overflows)
-      real(wp) :: a2 = 0.0_wp                   !! a₂ = ((tr Φ)² − tr Φ²)/2
-      logical :: overflow = .false.             !! tr Φ or a₂ exceeds 1e300
-      real(wp) :: log_lambda_max = 0.0_wp       !! ln of the largest |λ|
-      real(wp) :: argument = 0.0_wp             !! arg λ/π of the largest multiplier, in [0, 1]
-      real(wp) :: mu = 0.0_wp                   !! ln(largest |λ|)/P
-      integer :: verdict = verdict_marginal     !! verdict_*
-      integer :: kind = kind_stable             !! kind_* (of the instability, or stable/damped/undecided)
-      !> ‖ΦᵀΩΦ − Ω‖/(‖Ω‖ max(1, ‖Φ‖)²) (Hamiltonian) or |det Φ − e^{P tr D}|/∏‖Φ's columns‖ (`structure_defect`)
-      real(wp) :: defect = 0.0_wp
-      real(wp) :: discriminant = 0.0_wp         !! n = 2 Hamiltonian: a₁² − 4a₂ + 8 (of Φ̃)
-      real(wp) :: period = 2.0_wp               !! P, the exponents' unit
-      !> every exponent meets the tolerance (false: one could not be resolved, the point at status 1)
-      logical :: exponents_resolved = .true.
-   end type system_floquet_t
+   public :: symplectic_form, matrix_determinant, broucke_multipliers, complete_from_trace
 
 contains
-
-   !> The name of a kind, for headers and docs.
-   pure function kind_name(kind) result(name)
-      integer, intent(in) :: kind  !! kind_*
-      character(len=:), allocatable :: name
-      select case (kind)
-      case (kind_stable); name = "stable"
-      case (kind_plus_one); name = "parametric at +1"
-      case (kind_minus_one); name = "parametric at -1"
-      case (kind_combination); name = "combination (Krein collision)"
-      case (kind_damped); name = "damped, asymptotically stable"
-      case (kind_undecided); name = "undecided (marginal)"
-      case default; name = "unknown"
-      end select
-   end function kind_name
 
    !> Ω = [[G, M], [−M, 0]], the form a Hamiltonian system's Φ keeps: ΦᵀΩΦ = Ω.
    pure function symplectic_form(form) result(omega)
@@ -185,7 +129,7 @@ contains
       real(wp), intent(in) :: phi(:, :)             !! Φ̃ (2n × 2n)
       type(system_form_t), intent(in) :: form       !! the prepared system
       real(wp), intent(in) :: phi_error             !! bound of the error of Φ̃'s entries
-      type(system_floquet_t), intent(out) :: result !! the analysis
+      type(floquet_t), intent(out) :: result !! the analysis
       real(wp), intent(in), optional :: log_scale   !! s (0 when absent)
       !> β of the point, for Liouville's check of a first-order system (whose mean tr A is
       !> `trace_d` + β `trace_b`); 0 when absent
@@ -215,7 +159,7 @@ contains
       tr = sum([(work(i, i), i=1, m)])
       tr2 = sum(work*transpose(work))
       ! the invariants of Φ itself: a₁ scales with e^s, a₂ with e^{2s}
-      call scaled_value(tr, s, result%trace, result%overflow)
+      call scaled_value(tr, s, result%a1, result%overflow)
       call scaled_value(0.5_wp*(tr*tr - tr2), 2.0_wp*s, result%a2, result%overflow)
       allocate (result%multipliers(m), result%exponents(n))
       scale = max(1.0_wp, maxval(abs(work)))
@@ -231,57 +175,49 @@ contains
       else
          call eigen_verdict(work, e, s, form, result)
       end if
+      result%stable = result%verdict == verdict_stable
+      result%marginal = result%verdict == verdict_marginal
    end subroutine system_floquet
 
-   !> The analysis of one degree of freedom from the Floquet data of its trace (see the
-   !> module's text): the result `system_floquet` gives, filled by a scalar method.
-   pure subroutine floquet_of_trace(scalar, form, result)
-      type(floquet_t), intent(in) :: scalar          !! from `floquet_from_trace` at the point's ε
-      type(system_form_t), intent(in) :: form        !! the prepared system (n = 1, second-order form)
-      type(system_floquet_t), intent(out) :: result  !! the analysis
+   !> The rest of a system's analysis for one degree of freedom whose result `f` came from its
+   !> trace (`floquet_from_trace` at the point's ε; see the module's text): the multipliers and
+   !> exponent as arrays, the invariants a₁ = e^{−εP/2} S and a₂ = e^{−εP}, no defect. The
+   !> verdict, kind and largest multiplier are the trace's, kept.
+   pure subroutine complete_from_trace(f, form)
+      type(floquet_t), intent(inout) :: f      !! from `floquet_from_trace`; completed
+      type(system_form_t), intent(in) :: form  !! the prepared system (n = 1, second-order form)
       real(wp), parameter :: clamp = 1.0e300_wp
       real(wp) :: decay, s
       integer :: i
-      result%n = 1
-      result%period = form%period
-      decay = period_damping(scalar%epsilon, form%period)
+      f%n = 1
+      f%period = form%period
+      decay = period_damping(f%epsilon, form%period)
       ! the multipliers e^{s} (|λ_i| e^{−s}) e^{i θ_i}, scaled when the larger would overflow
       s = 0.0_wp
-      if (scalar%log_modulus(1) > 600.0_wp) s = scalar%log_modulus(1)
-      result%log_scale = s
-      allocate (result%multipliers(2), result%exponents(1))
+      if (f%log_modulus(1) > 600.0_wp) s = f%log_modulus(1)
+      f%log_scale = s
+      if (allocated(f%multipliers)) deallocate (f%multipliers)
+      if (allocated(f%exponents)) deallocate (f%exponents)
+      allocate (f%multipliers(2), f%exponents(1))
       do i = 1, 2
-         result%multipliers(i) = exp(max(scalar%log_modulus(i) - s, -745.0_wp))* &
-                                 cmplx(cos(scalar%argument(i)), sin(scalar%argument(i)), wp)
+         f%multipliers(i) = exp(max(f%log_modulus(i) - s, -745.0_wp))*cmplx(cos(f%argument(i)), sin(f%argument(i)), wp)
       end do
-      result%exponents(1) = scalar%exponent
-      result%mu = scalar%exponent
-      result%log_lambda_max = scalar%log_modulus(1)
-      result%argument = abs(scalar%argument(1))/pi
+      f%exponents(1) = f%exponent
       ! tr Φ = e^{−εP/2} S, clamped as `scaled_value` clamps
-      if (scalar%trace%overflow) then
-         if (scalar%trace%log_abs - decay > log(clamp)) then
-            result%trace = sign(clamp, scalar%trace%value)
-            result%overflow = .true.
+      f%overflow = .false.
+      if (f%trace%overflow) then
+         if (f%trace%log_abs - decay > log(clamp)) then
+            f%a1 = sign(clamp, f%trace%value)
+            f%overflow = .true.
          else
-            result%trace = sign(exp(scalar%trace%log_abs - decay), scalar%trace%value)
+            f%a1 = sign(exp(f%trace%log_abs - decay), f%trace%value)
          end if
       else
-         call scaled_value(scalar%trace%value, -decay, result%trace, result%overflow)
+         call scaled_value(f%trace%value, -decay, f%a1, f%overflow)
       end if
-      result%a2 = exp(max(-2.0_wp*decay, -745.0_wp))
-      result%defect = 0.0_wp
-      if (scalar%marginal) then
-         result%verdict = verdict_marginal
-         result%kind = kind_undecided
-      else if (scalar%stable) then
-         result%verdict = verdict_stable
-         result%kind = merge(kind_damped, kind_stable, decay > 0.0_wp)
-      else
-         result%verdict = verdict_unstable
-         result%kind = merge(kind_plus_one, kind_minus_one, scalar%trace%value > 0.0_wp)
-      end if
-   end subroutine floquet_of_trace
+      f%a2 = exp(max(-2.0_wp*decay, -745.0_wp))
+      f%defect = 0.0_wp
+   end subroutine complete_from_trace
 
    !> The defect of the structure Φ = e^s Φ̃ keeps, relative to the size of its terms, so that
    !> it measures rounding and not growth: Hamiltonian, ‖ΦᵀΩΦ − Ω‖/(‖Ω‖ max(1, ‖Φ‖)²)
@@ -344,7 +280,7 @@ contains
    !> n = 1: the trace criterion.
    pure subroutine scalar_verdict(tr, e, period, r)
       real(wp), intent(in) :: tr, e, period
-      type(system_floquet_t), intent(inout) :: r
+      type(floquet_t), intent(inout) :: r
       real(wp) :: delta
       complex(wp) :: lambda(2), z
       delta = 2.0_wp*e + 4.0_wp*epsilon(1.0_wp)*max(1.0_wp, abs(tr))
@@ -369,7 +305,7 @@ contains
    !> n = 2 Hamiltonian: Broucke's z₁, z₂ with error bounds from those of a₁ and a₂.
    pure subroutine broucke_verdict(a1, a2, e, scale, period, r)
       real(wp), intent(in) :: a1, a2, e, scale, period
-      type(system_floquet_t), intent(inout) :: r
+      type(floquet_t), intent(inout) :: r
       real(wp) :: d, d1, d2, dd, dz, round
       complex(wp) :: z(2), lambda(4)
       round = 32.0_wp*epsilon(1.0_wp)
@@ -413,7 +349,7 @@ contains
    subroutine eigen_verdict(phi, e, s, form, r)
       real(wp), intent(in) :: phi(:, :), e, s
       type(system_form_t), intent(in) :: form
-      type(system_floquet_t), intent(inout) :: r
+      type(floquet_t), intent(inout) :: r
       integer :: m, info, i, j, lwork
       real(wp) :: a(size(phi, 1), size(phi, 1)), vl(size(phi, 1), size(phi, 1)), vr(size(phi, 1), size(phi, 1))
       real(wp) :: wr(size(phi, 1)), wi(size(phi, 1)), radius(size(phi, 1)), cond(size(phi, 1))
@@ -534,7 +470,7 @@ contains
 
    !> Exponents, the largest modulus and its argument from the sorted multipliers.
    pure subroutine finish_from_multipliers(r, s, period)
-      type(system_floquet_t), intent(inout) :: r
+      type(floquet_t), intent(inout) :: r
       real(wp), intent(in) :: s, period
       integer :: i, k
       complex(wp) :: t
@@ -558,8 +494,14 @@ contains
             r%exponents(i) = -huge(1.0_wp)
          end if
       end do
-      r%mu = r%exponents(1)
-      r%log_lambda_max = r%mu*period
-      r%argument = abs(atan2(aimag(r%multipliers(1)), real(r%multipliers(1))))/pi
+      r%exponent = r%exponents(1)
+      r%log_modulus(1) = r%exponent*period
+      r%argument(1) = atan2(aimag(r%multipliers(1)), real(r%multipliers(1)))
+      ! the smallest multiplier (the largest's partner for one degree of freedom)
+      t = r%multipliers(size(r%multipliers))
+      modulus = abs(t)
+      r%log_modulus(2) = -huge(1.0_wp)
+      if (modulus > 0.0_wp) r%log_modulus(2) = log(modulus) + s
+      r%argument(2) = atan2(aimag(t), real(t))
    end subroutine finish_from_multipliers
 end module hillstab_hill_system_floquet

@@ -21,7 +21,7 @@ module hillstab_integrate_system_point
    use hillstab_core_error, only: error_t
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_hill_system, only: hill_system_t, system_form_t
-   use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet
+   use hillstab_hill_system_floquet, only: floquet_t, system_floquet
    use hillstab_hill_system_exponents, only: factored_exponents
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy, &
       system_factors
@@ -42,7 +42,7 @@ contains
       type(system_method_t), intent(in) :: method         !! method and tolerance
       type(system_nodes_t), intent(inout) :: nodes        !! shared along a row (a fresh one for one point)
       type(system_monodromy_t), intent(out) :: monodromy  !! Φ, its scale, estimate, status, steps
-      type(system_floquet_t), intent(out) :: floquet      !! the analysis (unset when the point failed)
+      type(floquet_t), intent(out) :: floquet      !! the analysis (unset when the point failed)
       !> err_integration when the monodromy fails (status_failed); unallocated otherwise
       type(error_t), allocatable, intent(out) :: error
       call system_monodromy(system, form, alpha, beta, method, nodes, monodromy, error)
@@ -64,7 +64,7 @@ contains
       type(system_method_t), intent(in) :: method           !! method and tolerance
       type(system_nodes_t), intent(inout) :: nodes          !! as for `system_monodromy`
       type(system_monodromy_t), intent(inout) :: monodromy  !! the point's monodromy: status, steps
-      type(system_floquet_t), intent(inout) :: floquet      !! its analysis: exponents, a₂
+      type(floquet_t), intent(inout) :: floquet      !! its analysis: exponents, a₂
       real(wp), allocatable :: factors(:, :, :), all_exponents(:), arguments(:)
       logical, allocatable :: resolved(:)
       type(error_t), allocatable :: cause
@@ -100,7 +100,7 @@ contains
    !> thousandfold and their rounding, 4 ε T, exceeds a tenth of the tolerance relative to
    !> max(1, |a₂|). (The method's own error of Φ moves a₂ alike by every route.)
    pure logical function a2_needs_factoring(floquet, monodromy, tolerance) result(need)
-      type(system_floquet_t), intent(in) :: floquet      !! the analysis of Φ
+      type(floquet_t), intent(in) :: floquet      !! the analysis of Φ
       type(system_monodromy_t), intent(in) :: monodromy  !! Φ̃ and its scale
       real(wp), intent(in) :: tolerance                  !! the point's tolerance
       real(wp) :: terms, big, log_cancellation
@@ -152,7 +152,7 @@ contains
    !> Whether one of the n exponents of `floquet` may be off by more than a tenth of the
    !> tolerance because its multiplier lies far below the largest (see the module's text).
    pure logical function exponents_need_factoring(floquet, monodromy, tolerance) result(need)
-      type(system_floquet_t), intent(in) :: floquet      !! the analysis of Φ
+      type(floquet_t), intent(in) :: floquet      !! the analysis of Φ
       type(system_monodromy_t), intent(in) :: monodromy  !! Φ̃, its scale and error estimate
       real(wp), intent(in) :: tolerance                  !! the point's tolerance
       real(wp) :: log_norm, log_top, log_lambda, relative

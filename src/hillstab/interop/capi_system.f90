@@ -50,7 +50,7 @@ module hillstab_interop_capi_system
    use hillstab_batch_tasks_system_values, only: scalar_point
    use hillstab_hill_system_matrix, only: matrix_system_t
    use hillstab_hill_system_equation, only: equations_system_t, max_equations_text
-   use hillstab_hill_system_floquet, only: system_floquet_t, system_floquet
+   use hillstab_hill_system_floquet, only: floquet_t, system_floquet
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_monodromy
    use hillstab_integrate_monodromy, only: method_table, method_name, method_takes_systems
    use hillstab_interop_outcome, only: record_outcome
@@ -417,7 +417,7 @@ contains
       type(error_t), allocatable, intent(inout) :: error  !! allocated on entry: nothing done
       !> the analysis, when the point took the scalar path (`scalar_point`: method auto on a
       !> system of one scalar equation; `result` then has no Φ)
-      type(system_floquet_t), intent(out), optional :: floquet
+      type(floquet_t), intent(out), optional :: floquet
       logical, intent(out), optional :: analysed  !! `floquet` was computed (given with it)
       type(system_nodes_t) :: nodes
       logical :: taken
@@ -585,7 +585,7 @@ contains
       type(system_handle_t), pointer :: handle
       type(system_form_t) :: form
       type(system_monodromy_t) :: result
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(system_nodes_t) :: nodes
       type(error_t), allocatable :: error
       real(c_double), pointer :: re_out(:), im_out(:), exponents_out(:), p
@@ -630,7 +630,7 @@ contains
          im_out = aimag(f%multipliers)
          exponents_out = f%exponents
          call c_f_pointer(log_scale, p); p = s
-         call c_f_pointer(trace, p); p = f%trace
+         call c_f_pointer(trace, p); p = f%a1
          call c_f_pointer(a2, p); p = f%a2
          call c_f_pointer(defect, p); p = f%defect
          call c_f_pointer(error_estimate, p); p = result%error_estimate

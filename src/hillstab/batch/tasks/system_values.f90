@@ -5,21 +5,21 @@
 !> Floquet analysis (hillstab_hill_system_floquet). A system that is one scalar equation
 !> (`hill_system_t%scalar_model`) takes, on method auto, the scalar method auto's lanes and
 !> row-shared meshes instead (`scalar_values`): its trace S gives the same analysis
-!> (`floquet_of_trace`), at the scalar path's cost.
+!> (`complete_from_trace`), at the scalar path's cost.
 !>
 !>```fortran
 !> real(wp) :: v(n_fixed + 1)
 !> call system_values(system, form, system_method_t(system_auto, 1.0e-10_wp), 2.0_wp, 0.5_wp, v, failed, message)
 !>```
 module hillstab_batch_tasks_system_values
-   use hillstab_core_kinds, only: wp
+   use hillstab_core_kinds, only: wp, pi
    use hillstab_core_error, only: error_t, set_error, err_integration
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_core_stats, only: work_stats_t
    use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system
-   use hillstab_hill_system_floquet, only: system_floquet_t, floquet_of_trace
+   use hillstab_hill_system_floquet, only: complete_from_trace
    use hillstab_hill_model, only: hill_model_t, hill_point_t
-   use hillstab_hill_floquet, only: floquet_from_trace
+   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace
    use hillstab_hill_transfer, only: trace_t
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, method_t, method_auto
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_auto
@@ -180,7 +180,7 @@ contains
    pure function system_point_values(layout, alpha, beta, f, r, failed) result(v)
       type(system_layout_t), intent(in) :: layout   !! the columns' places (`system_layout`)
       real(wp), intent(in) :: alpha, beta           !! the point
-      type(system_floquet_t), intent(in) :: f       !! its analysis
+      type(floquet_t), intent(in) :: f       !! its analysis
       type(system_monodromy_t), intent(in) :: r     !! its monodromy
       logical, intent(in) :: failed                 !! no value
       real(wp) :: v(layout%columns)
@@ -191,14 +191,14 @@ contains
          call failed_row(system_column_table(layout%n, .false.), v)
          return
       end if
-      v(layout%trace) = f%trace
+      v(layout%trace) = f%a1
       v(layout%a2) = f%a2
-      v(layout%overflow) = merge(1.0_wp, 0.0_wp, f%overflow .or. f%log_lambda_max > log(1.0e300_wp))
+      v(layout%overflow) = merge(1.0_wp, 0.0_wp, f%overflow .or. f%log_modulus(1) > log(1.0e300_wp))
       v(layout%stable) = real(f%verdict, wp)
       v(layout%kind) = real(f%kind, wp)
-      v(layout%lambda_max) = exp(min(f%log_lambda_max, log(1.0e300_wp)))
-      v(layout%mu) = f%mu
-      v(layout%argument) = f%argument
+      v(layout%lambda_max) = exp(min(f%log_modulus(1), log(1.0e300_wp)))
+      v(layout%mu) = f%exponent
+      v(layout%argument) = abs(f%argument(1))/pi
       v(layout%mu_1:layout%mu_1 + layout%n - 1) = f%exponents
       v(layout%defect) = f%defect
       v(layout%error_estimate) = r%error_estimate
@@ -220,7 +220,7 @@ contains
       !> `form` is the row's already (a row-dependent system prepared at α by the caller)
       logical, intent(in), optional :: row_form_given
       type(system_monodromy_t) :: r
-      type(system_floquet_t) :: f
+      type(floquet_t) :: f
       type(error_t), allocatable :: error
       type(system_form_t) :: row_form
       logical :: prepare, taken
@@ -278,7 +278,7 @@ contains
    !> The values of points (α, β_j) of one degree of freedom by the scalar method auto on the
    !> system's scalar form (`hill_system_t%scalar_model`): the traces of the batch on its lanes
    !> and shared meshes (hillstab_integrate_monodromy), the Floquet data of each at the row's
-   !> damping (hillstab_hill_floquet) and the system's analysis from them (`floquet_of_trace`):
+   !> damping (hillstab_hill_floquet) and the system's analysis from them (`complete_from_trace`):
    !> its error estimate is the trace's, relative to max(1, |S|), and its steps the batch's
    !> mean. `taken` is false (nothing computed) where the row's damping is not one the scalar
    !> form takes (not finite, or negative).
@@ -292,7 +292,7 @@ contains
       integer, intent(out) :: n_failed  !! points of status 2
       character(len=*), intent(out) :: failure  !! "alpha = …, beta = …: why" of the first ("" when none)
       logical, intent(out) :: taken  !! the points were computed here
-      type(system_floquet_t) :: f(size(betas))
+      type(floquet_t) :: f(size(betas))
       type(system_monodromy_t) :: r(size(betas))
       logical :: failed(size(betas))
       type(error_t), allocatable :: cause
@@ -319,14 +319,14 @@ contains
    end subroutine scalar_values
 
    !> The analyses of points (α, β_j) on the scalar path (`scalar_values`): each point's
-   !> `system_floquet_t` and the monodromy's status, error estimate and steps (no Φ).
+   !> `floquet_t` and the monodromy's status, error estimate and steps (no Φ).
    subroutine scalar_analyses(model, form, method, alpha, betas, f, r, failed, cause, taken)
       class(hill_model_t), intent(in) :: model  !! the scalar form
       type(system_form_t), intent(in) :: form  !! the system prepared (its period)
       type(system_method_t), intent(in) :: method  !! method auto and the tolerance
       real(wp), intent(in) :: alpha  !! the row's α
       real(wp), intent(in) :: betas(:)  !! its β
-      type(system_floquet_t), intent(out) :: f(:)  !! the analyses (unset where failed)
+      type(floquet_t), intent(out) :: f(:)  !! the analyses (unset where failed)
       type(system_monodromy_t), intent(out) :: r(:)  !! status, error estimate, steps
       logical, intent(out) :: failed(:)  !! no value at the point
       type(error_t), allocatable, intent(out) :: cause  !! the first failure
@@ -350,8 +350,8 @@ contains
          if (failed(j)) then
             r(j)%status = status_failed
          else
-            call floquet_of_trace(floquet_from_trace(traces(j), damping, method%tolerance, model%period()), form, &
-                                  f(j))
+            f(j) = floquet_from_trace(traces(j), damping, method%tolerance, model%period())
+            call complete_from_trace(f(j), form)
          end if
       end do
    end subroutine scalar_analyses
@@ -365,12 +365,12 @@ contains
       type(system_form_t), intent(in) :: form  !! prepared at the point's damping
       type(system_method_t), intent(in) :: method  !! method and tolerance
       real(wp), intent(in) :: alpha, beta  !! the point
-      type(system_floquet_t), intent(out) :: f  !! its analysis
+      type(floquet_t), intent(out) :: f  !! its analysis
       type(system_monodromy_t), intent(out) :: r  !! status, error estimate, steps
       logical, intent(out) :: taken  !! computed here
       type(error_t), allocatable, intent(out) :: error  !! the point failed
       class(hill_model_t), allocatable :: scalar
-      type(system_floquet_t) :: fs(1)
+      type(floquet_t) :: fs(1)
       type(system_monodromy_t) :: rs(1)
       logical :: failed(1)
       taken = .false.
