@@ -19,7 +19,8 @@ contains
          new_unittest("overflowed_trace", overflowed_trace), &
          new_unittest("damped_criterion", damped_criterion), &
          new_unittest("marginal_verdicts", marginal_verdicts), &
-         new_unittest("longer_period", longer_period)])
+         new_unittest("longer_period", longer_period), &
+         new_unittest("in_place_is_the_result", in_place_is_the_result)])
    end function collect_floquet
 
    !> λ₁ + λ₂ = e^{−ε} S and λ₁ λ₂ = e^{−2ε} for the multipliers of x.
@@ -136,4 +137,62 @@ contains
       end do
       call check(ctx, period_damping(0.3_wp, 2.0_wp) == 0.3_wp, "period_damping at P = 2 is epsilon exactly")
    end subroutine longer_period
+   !> `set_from_trace` into a result that held another point's analysis gives, field by field,
+   !> what `floquet_from_trace` (and, verdicts only, `floquet_verdict`) returns: nothing of the
+   !> other point is left. Traces on both sides of ±2, overflowed, with and without damping and
+   !> an error estimate, periods 2 and 4.
+   subroutine in_place_is_the_result(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(trace_t) :: traces(5)
+      real(wp), parameter :: eps(2) = [0.0_wp, 0.35_wp], periods(2) = [2.0_wp, 4.0_wp]
+      type(floquet_t) :: f, g
+      integer :: i, k, p, w
+      logical :: only
+      character(len=:), allocatable :: where
+      traces(1) = trace_t(value=0.3_wp, log_abs=log(0.3_wp), error_estimate=1.0e-12_wp)
+      traces(2) = trace_t(value=-2.7_wp, log_abs=log(2.7_wp))
+      traces(3) = trace_t(value=huge(1.0_wp), log_abs=900.0_wp, overflow=.true.)
+      traces(4) = trace_t(value=2.0_wp + 1.0e-13_wp, log_abs=log(2.0_wp), error_estimate=1.0e-11_wp)
+      traces(5) = trace_t(value=-1.9_wp, log_abs=log(1.9_wp), error_estimate=2.0_wp)
+      do w = 0, 1
+         only = w == 1
+         do p = 1, size(periods)
+            do k = 1, size(eps)
+               do i = 1, size(traces)
+                  where = "trace "//achar(48 + i)//", eps "//achar(48 + k)//", period "//achar(48 + p)// &
+                          merge(", verdicts", "          ", only)
+                  ! f holds another point's analysis first
+                  f = floquet_from_trace(traces(1 + mod(i, size(traces))), eps(3 - k), 1.0e-9_wp, periods(3 - p))
+                  call set_from_trace(f, traces(i), eps(k), 1.0e-10_wp, periods(p), only)
+                  if (only) then
+                     g = floquet_verdict(traces(i), eps(k), 1.0e-10_wp, periods(p))
+                  else
+                     g = floquet_from_trace(traces(i), eps(k), 1.0e-10_wp, periods(p))
+                  end if
+                  call check(ctx, f%n == g%n .and. f%verdict == g%verdict .and. f%kind == g%kind, &
+                             where//": n, verdict, kind")
+                  call check(ctx, (f%stable .eqv. g%stable) .and. (f%stable_paper .eqv. g%stable_paper) .and. &
+                             (f%marginal .eqv. g%marginal), where//": flags")
+                  call check(ctx, all(f%log_modulus == g%log_modulus) .and. all(f%argument == g%argument) .and. &
+                             f%rotation == g%rotation .and. f%exponent == g%exponent, where//": multipliers")
+                  call check(ctx, f%trace%value == g%trace%value .and. f%trace%log_abs == g%trace%log_abs .and. &
+                             f%epsilon == g%epsilon .and. f%period == g%period, where//": trace, eps, period")
+               end do
+            end do
+         end do
+      end do
+      ! the kinds the traces reach, against their definitions
+      f = floquet_from_trace(traces(2), 0.0_wp)
+      call check(ctx, f%verdict == verdict_unstable .and. f%kind == kind_minus_one, "S = -2.7: unstable at -1")
+      f = floquet_from_trace(traces(3), 0.0_wp)
+      call check(ctx, f%verdict == verdict_unstable .and. f%kind == kind_plus_one, "S overflowed: unstable at +1")
+      f = floquet_from_trace(traces(1), 0.35_wp)
+      call check(ctx, f%verdict == verdict_stable .and. f%kind == kind_damped, "S = 0.3 damped: damped")
+      f = floquet_from_trace(traces(1), 0.0_wp)
+      call check(ctx, f%verdict == verdict_stable .and. f%kind == kind_stable, "S = 0.3: stable")
+      f = floquet_from_trace(traces(4), 0.0_wp, 1.0e-10_wp)
+      call check(ctx, f%verdict == verdict_marginal .and. f%kind == kind_undecided .and. f%marginal, &
+                 "S = 2 + 1e-13 with an estimate 1e-11: marginal, undecided")
+   end subroutine in_place_is_the_result
+
 end module test_floquet

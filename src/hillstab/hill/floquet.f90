@@ -15,9 +15,9 @@ module hillstab_hill_floquet
    use hillstab_hill_transfer, only: trace_t, trace_from_value
    implicit none
    private
-   public :: floquet_t, floquet_from_trace, floquet_verdict, verdicts, near_threshold, floquet_from_value, multipliers, &
-      period_damping, &
-      largest_multiplier_modulus, bounds_verdict, bounds_stable, bounds_unstable, bounds_undecided
+   public :: floquet_t, floquet_from_trace, floquet_verdict, set_from_trace, verdicts, near_threshold, floquet_from_value
+   public :: multipliers, period_damping, largest_multiplier_modulus
+   public :: bounds_verdict, bounds_stable, bounds_unstable, bounds_undecided
    public :: verdict_stable, verdict_unstable, verdict_marginal
    public :: kind_stable, kind_plus_one, kind_minus_one, kind_combination, kind_damped, kind_undecided, kind_name
 
@@ -138,15 +138,53 @@ contains
       !> the period P of Q in τ (default 2): x = e^{−ετ/2} χ loses εP/2 of ln|λ| a period
       real(wp), intent(in), optional :: period
       type(floquet_t) :: f
-      real(wp) :: s, log_growth, half, p, decay
+      real(wp) :: bound, p
+      bound = 0.0_wp
+      if (present(tolerance)) bound = tolerance
       p = 2.0_wp
       if (present(period)) p = period
-      decay = period_damping(epsilon, p)
-      f = floquet_verdict(tr, epsilon, tolerance, p)
+      call set_from_trace(f, tr, epsilon, bound, p, .false.)
+   end function floquet_from_trace
+
+   !> `floquet_from_trace` (or, `verdict_only`, `floquet_verdict`) written into an existing
+   !> result in place: every field of the trace's overwritten, a system's left as they are.
+   !> The form of the loops over many points, which thus build and copy no result a point.
+   pure subroutine set_from_trace(f, tr, epsilon, tolerance, period, verdict_only)
+      type(floquet_t), intent(inout) :: f  !! the result, overwritten
+      type(trace_t), intent(in) :: tr  !! trace of the (chi-)monodromy, with ln|S| and its error estimate
+      real(wp), intent(in) :: epsilon  !! damping ε ≥ 0
+      !> the tolerance S was computed to (relative to max(1, |S|)); 0: the estimate alone
+      real(wp), intent(in) :: tolerance
+      real(wp), intent(in) :: period  !! the period P of Q in τ
+      !> the verdicts alone (`floquet_verdict`): the multipliers and exponent set to zero
+      logical, intent(in) :: verdict_only
+      real(wp) :: s, log_growth, decay
+      decay = period_damping(epsilon, period)
+      f%n = 1
+      f%trace = tr
+      f%epsilon = epsilon
+      f%period = period
+      call verdicts(tr, decay, tolerance, f%stable, f%stable_paper, f%marginal)
+      if (f%marginal) then
+         f%verdict = verdict_marginal
+         f%kind = kind_undecided
+      else if (f%stable) then
+         f%verdict = verdict_stable
+         f%kind = merge(kind_damped, kind_stable, decay > 0.0_wp)
+      else
+         f%verdict = verdict_unstable
+         f%kind = merge(kind_plus_one, kind_minus_one, tr%value > 0.0_wp)
+      end if
+      if (verdict_only) then
+         f%rotation = 0.0_wp
+         f%log_modulus = 0.0_wp
+         f%argument = 0.0_wp
+         f%exponent = 0.0_wp
+         return
+      end if
       s = tr%value
       if (.not. tr%overflow .and. abs(s) <= 2.0_wp) then
-         half = 0.5_wp*s
-         f%rotation = acos(half)
+         f%rotation = acos(0.5_wp*s)
          f%log_modulus = -decay
          f%argument = [f%rotation, -f%rotation]
       else
@@ -159,8 +197,8 @@ contains
             f%argument = pi
          end if
       end if
-      f%exponent = f%log_modulus(1)/p
-   end function floquet_from_trace
+      f%exponent = f%log_modulus(1)/period
+   end subroutine set_from_trace
 
    !> The damping of one period of length P as the verdicts take it: εP/2 (ε for P = 2,
    !> exactly), ln of the factor e^{−εP/2} between the multipliers of χ and those of x.
@@ -171,8 +209,9 @@ contains
    end function period_damping
 
    !> The verdicts alone of `floquet_from_trace` (`verdict`, `kind`, `stable`, `stable_paper`,
-   !> `marginal`, the trace, ε and the period; the multipliers left at zero): what a file of verdicts needs, without
-   !> the inverse trigonometric and hyperbolic functions of the multipliers.
+   !> `marginal`, the trace, ε and the period; the multipliers left at zero): what a file of
+   !> verdicts needs, without the inverse trigonometric and hyperbolic functions of the
+   !> multipliers.
    pure function floquet_verdict(tr, epsilon, tolerance, period) result(f)
       type(trace_t), intent(in) :: tr  !! trace of the (chi-)monodromy, with its error estimate
       real(wp), intent(in) :: epsilon  !! damping ε ≥ 0
@@ -180,27 +219,12 @@ contains
       real(wp), intent(in), optional :: tolerance
       real(wp), intent(in), optional :: period  !! the period P of Q in τ (default 2)
       type(floquet_t) :: f
-      real(wp) :: bound, decay
-      f%trace = tr
-      f%epsilon = epsilon
+      real(wp) :: bound, p
       bound = 0.0_wp
       if (present(tolerance)) bound = tolerance
-      decay = epsilon
-      if (present(period)) then
-         decay = period_damping(epsilon, period)
-         f%period = period
-      end if
-      call verdicts(tr, decay, bound, f%stable, f%stable_paper, f%marginal)
-      if (f%marginal) then
-         f%verdict = verdict_marginal
-         f%kind = kind_undecided
-      else if (f%stable) then
-         f%verdict = verdict_stable
-         f%kind = merge(kind_damped, kind_stable, decay > 0.0_wp)
-      else
-         f%verdict = verdict_unstable
-         f%kind = merge(kind_plus_one, kind_minus_one, tr%value > 0.0_wp)
-      end if
+      p = 2.0_wp
+      if (present(period)) p = period
+      call set_from_trace(f, tr, epsilon, bound, p, .true.)
    end function floquet_verdict
 
    !> The name of a kind, for headers and docs.

@@ -6,12 +6,12 @@
 !> method and tolerance:
 !>
 !> - `hillstab_points`: the points (α_j, β_j, ε_j) one by one, as task `points` computes
-!>   them (each point a batch of one, `floquet_from_trace`);
+!>   them (each point a batch of one, `set_from_trace`);
 !> - `hillstab_chart`, `hillstab_chart_scaled`: the grid of task `chart` (`grid_alpha`,
 !>   `grid_beta`; linear or log axes), row by row as task `chart`
 !>   computes it: with at least four rows a thread, whole rows in parallel; with fewer, each
 !>   row in parallel chunks sharing the meshes `prepare_batch` makes for it; verdicts only
-!>   (`floquet_verdict`) when only the verdicts are needed (HILLSTAB_NEED_VERDICT);
+!>   (`set_from_trace` of the verdicts) when only the verdicts are needed (HILLSTAB_NEED_VERDICT);
 !> - `hillstab_physical`: α, β and ε of a pendulum in SI units (eqs. (4), (24), (46)).
 !>
 !> The values of a point are HILLSTAB_VALUE_COUNT doubles, indexed by HILLSTAB_VALUE_*
@@ -39,7 +39,7 @@ module hillstab_interop_capi_batch
    use hillstab_core_text, only: real_text, integer_text
    use hillstab_hill_model, only: hill_model_t, hill_point_t, check_point, check_batch
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict, largest_multiplier_modulus
+   use hillstab_hill_floquet, only: floquet_t, set_from_trace, largest_multiplier_modulus
    use hillstab_hill_units, only: physical_t, physical_beta, physical_epsilon, check_physical
    use hillstab_hill_model_pendulum, only: pendulum_alpha
    use hillstab_integrate_monodromy, only: method_t, monodromy_trace, monodromy_trace_batch, batch_plan_t, &
@@ -238,8 +238,8 @@ contains
             cycle
          end if
          status(j) = int(merge(status_roundoff, status_ok, inaccurate(1)), c_int)
-         f = floquet_from_trace(tr(1), handle%model%point_damping(alpha(j), epsilon(j)), m%tolerance, &
-                                handle%model%period())
+         call set_from_trace(f, tr(1), handle%model%point_damping(alpha(j), epsilon(j)), m%tolerance, &
+                             handle%model%period(), .false.)
          call computed_values(f, .true., values(:, j))
       end do
       !$omp end parallel do
@@ -439,11 +439,7 @@ contains
             cycle
          end if
          statuses(j) = int(merge(status_roundoff, status_ok, inaccurate(j)), c_int)
-         if (need <= need_verdict) then
-            f = floquet_verdict(traces(j), epsilon, method%tolerance, model%period())
-         else
-            f = floquet_from_trace(traces(j), epsilon, method%tolerance, model%period())
-         end if
+         call set_from_trace(f, traces(j), epsilon, method%tolerance, model%period(), need <= need_verdict)
          call computed_values(f, need >= need_growth, values(:, j))
       end do
    end subroutine chart_row

@@ -14,7 +14,7 @@ module hillstab_batch_tasks_chart
    use hillstab_core_text, only: format_es, integer_text
    use hillstab_hill_coefficient, only: in_physical_domain
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict, period_damping
+   use hillstab_hill_floquet, only: floquet_t, set_from_trace, period_damping
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, batch_plan_t, prepare_batch, need_verdict
    use hillstab_batch_scene_types, only: scene_t
    use hillstab_batch_scene_physical, only: grid_pendulum
@@ -263,12 +263,9 @@ contains
          if (failed(j)) then
             v = failed_values(columns, alpha, betas(j), in_physical_domain(alpha, betas(j)), a)
          else
-            if (need <= need_verdict) then
-               ! verdicts only: no multipliers (their columns, not in a verdict file, stay 0)
-               f = floquet_verdict(traces(j), damping, scene%method%tolerance, scene%model%period())
-            else
-               f = floquet_from_trace(traces(j), damping, scene%method%tolerance, scene%model%period())
-            end if
+            ! verdicts only: no multipliers (their columns, not in a verdict file, stay 0)
+            call set_from_trace(f, traces(j), damping, scene%method%tolerance, scene%model%period(), &
+                                need <= need_verdict)
             v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second, a, &
                              need=need)
          end if

@@ -25,7 +25,7 @@ module hillstab_batch_tasks_chart_columns
    use hillstab_hill_model, only: hill_model_t, hill_point_t, model_description, model_equation_text
    use hillstab_hill_coefficient, only: sampling_name
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_hill_floquet, only: floquet_t, floquet_from_trace, floquet_verdict, largest_multiplier_modulus, &
+   use hillstab_hill_floquet, only: floquet_t, set_from_trace, floquet_verdict, largest_multiplier_modulus, &
       verdicts, near_threshold
    use hillstab_hill_model_pendulum, only: is_elastic_pendulum, pendulum_note
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, method_name, method_uses_segments, method_is_exact, &
@@ -677,7 +677,7 @@ contains
       end if
       if (allocated(error)) deallocate (error)
       if (inaccurate(1) .and. present(status)) status = status_roundoff
-      f = floquet_from_trace(tr(1), damping, scene%method%tolerance, scene%model%period())
+      call set_from_trace(f, tr(1), damping, scene%method%tolerance, scene%model%period(), .false.)
    end subroutine evaluate_point
 
    !> Count the failed points of a task and name the first: err_points_failed, after the
