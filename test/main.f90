@@ -53,9 +53,10 @@ program tester
    use test_symplectic, only: collect_symplectic
    use test_chaos, only: collect_chaos
    use test_checkpoint, only: collect_checkpoint
+   use test_floquet_columns, only: collect_floquet_columns
    implicit none
    ! one by one, not as an array constructor of the collect functions' results: gfortran 12
-   type(testsuite_t) :: suites(52)
+   type(testsuite_t) :: suites(53)
    integer :: n_failed
    suites(1) = collect_models()
    suites(2) = collect_codes()
@@ -109,6 +110,7 @@ program tester
    suites(50) = collect_capi_regions()
    suites(51) = collect_region_edges()
    suites(52) = collect_named_parameters()
+   suites(53) = collect_floquet_columns()
    call run_testsuites(suites, n_failed)
    if (n_failed > 0) error stop 1
 end program tester

@@ -21,6 +21,7 @@ module test_codes
    use hillstab_hill_coefficient, only: sampling_count, sampling_name, sampling_from_name
    use hillstab_integrate_monodromy, only: method_table, method_name, method_from_name
    use hillstab_batch_scene_group_chart, only: scale_linear, scale_log
+   use hillstab_batch_tasks_floquet_columns, only: chart_keys
    use hillstab_testing
    use hillstab_hill_models, only: model_count, model_names
    use hillstab_core_text, only: name_position, integer_text
@@ -897,7 +898,6 @@ contains
       integer, parameter :: codes(value_count + 1) = [value_trace, value_log_abs_trace, value_log10_abs_trace, &
          value_overflow, value_stable, value_stable_paper, value_lambda_max, value_log_modulus_max, &
          value_log_modulus_min, value_exponent, value_error_estimate, value_count]
-      character(len=:), allocatable :: columns
       integer :: k
       text = file_text(ctx, header_path)
       call expect("HILLSTAB_NEED_VERDICT", need_verdict)
@@ -912,13 +912,12 @@ contains
          call check(ctx, count(codes(:value_count) == k) == 1, "one value of index "//integer_text(k))
       end do
       ! the files' names: each an enumerator of the same index, and a column of chart and points
-      ! files (its record in chart_column_table) unless it is one of `no_column_names`
-      columns = file_text(ctx, "src/hillstab/batch/tasks/chart_columns.f90")
+      ! files (a key of chart_keys) unless it is one of `no_column_names`
       do k = 0, value_count - 1
          if (value_file_names(k) == "") cycle
          call expect("HILLSTAB_VALUE_"//upper(trim(value_file_names(k))), codes(k + 1))
          if (any(no_column_names == value_file_names(k))) cycle
-         call check(ctx, index(columns, 'chart_column("'//trim(value_file_names(k))//'",') > 0, &
+         call check(ctx, any(chart_keys == value_file_names(k)), &
                     "value "//integer_text(k)//" '"//trim(value_file_names(k))//"' is a column of chart and points files")
       end do
    contains

@@ -189,7 +189,7 @@ contains
          bad_case_t(y//"method='formula' / &system n=1, cos=1 / &chart /", "scene", &
                     "method: a system (model = 'system') takes method auto, magnus4, magnus6, rk, gsl, got 'formula'"), &
          bad_case_t(y//"task='series' / &system n=1, cos=1 / &series /", "scene", "task"), &
-         bad_case_t(y//"columns='alpha S' / &system n=1, cos=1 / &chart /", "scene", "columns: unknown column 'S'"), &
+         bad_case_t(y//"columns='alpha S' / &system n=1, cos=1 / &chart /", "scene", "columns: 'S' is not a column of this file"), &
          bad_case_t(y//"/ &system n=1, cos=1 / &physical omega=10 / &chart /", "physical", "omega"), &
          bad_case_t(y//"/ &system n=1, cos=1 / &chart beta_max=1e12 /", "chart", "beta_max: the system's frequencies"), &
          bad_case_t(y//"task='boundaries' / &system n=1, cos=1 / &chart n_beta=1 /", "chart", "n_beta"), &

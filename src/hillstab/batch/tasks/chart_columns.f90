@@ -1,14 +1,15 @@
-!> What the chart and points tasks share: the columns of their files (one table of records,
-!> `chart_column_table`: name, unit, meaning, style, placeholder, what each needs computed,
-!> when it is offered — and the value of each at a computed point, `chart_values`), the
-!> evaluation of one point by the scene's method, the header lines, and the messages for
-!> failed and round-off limited points.
+!> What the chart and points tasks of one equation share: the columns of their files (their
+!> records, `chart_column_table`, and the value of each at a computed point, `chart_values`,
+!> both of hillstab_batch_tasks_floquet_columns), the evaluation of one point by the scene's
+!> method, the header lines, the text rows, and the messages for failed and round-off limited
+!> points.
 !>
-!> A new column of chart and points files is added here and nowhere else: a `col_*` index
-!> (its place in the file order), its record in `chart_column_table` and its value in
-!> `chart_values`. The `# columns:` line, the header's lines (the column's meaning, its
-!> `# accuracy of` line, its placeholder), `&scene columns`, what a file computes, the
-!> text and binary rows and the units of the MPI program follow from the table.
+!> A new column of chart and points files is added in hillstab_batch_tasks_floquet_columns
+!> and nowhere else: its key in `chart_keys` (its place in the file order, its `col_*`
+!> index), its record in `floquet_column` and its value in `chart_values`. The `# columns:`
+!> line, the header's lines (the column's meaning, its `# accuracy of` line, its
+!> placeholder), `&scene columns`, what a file computes, the text and binary rows and the
+!> units of the MPI program follow from the table.
 !>
 !>```fortran
 !> type(chart_layout_t) :: columns
@@ -33,8 +34,11 @@ module hillstab_batch_tasks_chart_columns
    use hillstab_batch_scene_types, only: scene_t, task_t, scene_header, output_path
    use hillstab_batch_scene_physical, only: physical_summary
    use hillstab_batch_scene_file, only: fail
-   use hillstab_batch_output_columns, only: column_t, style_e17, style_e11, style_e7, style_e4, style_flag, &
-      column_lines, find_columns, columns_text, put_value
+   use hillstab_batch_tasks_floquet_columns, only: chart_column_t, column_context_t, floquet_column, scene_columns, &
+      chart_keys, accuracy_none, accuracy_verdict, n_chart_columns, chart_values, clamp_magnitude, log10_floor, &
+      col_alpha, col_a, col_beta, col_omega, col_stable, col_physical, col_stable_paper, col_status, accuracy_growth, &
+      accuracy_estimate
+   use hillstab_batch_output_columns, only: column_t, style_flag, column_lines, columns_text, put_value
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
@@ -44,40 +48,9 @@ module hillstab_batch_tasks_chart_columns
    public :: clamp_magnitude, log10_floor, chart_line_length, stacked, chart_line, failed_values
    public :: header_bytes, text_row_bytes, binary_row_bytes, point_amplitude, verdict_lines, col_physical
 
-   !> The columns of a chart or points file, in file order: where `chart_column_table` puts
-   !> each record and `chart_values` each value.
-   integer, parameter :: col_alpha = 1, col_a = 2, col_beta = 3, col_omega = 4, col_s = 5, col_stable = 6, &
-      col_lambda_max = 7, col_mu = 8, col_log10_abs_s = 9, col_overflow = 10, col_physical = 11, col_stable_paper = 12, &
-      col_mu_per_s = 13, col_error_estimate = 14, col_status = 15
-   !> Number of columns a chart or points file can hold.
-   integer, parameter :: n_chart_columns = 15
    !> Characters in one chart line (15 columns of at most 24 characters, with blanks: 224 at
    !> most).
    integer, parameter :: chart_line_length = 280
-
-   !> The header's `# accuracy of` statement for a column (`accuracy_line`): none (the
-   !> column needs nothing computed), S to the tolerance, a verdict, the growth (λ, μ), the
-   !> method's own error estimate.
-   integer, parameter :: accuracy_none = 0, accuracy_trace = 1, accuracy_verdict = 2, accuracy_growth = 3, &
-      accuracy_estimate = 4
-
-   !> One column of chart and points files: what the `# columns:` line, the header, the rows
-   !> of failed points (`placeholder`, `keep_on_failure`), `&scene columns`, the text of a
-   !> row and the computation know of it. Made by `chart_column`.
-   type, extends(column_t) :: chart_column_t
-      !> what the column needs computed at a point (need_* of hillstab_integrate_monodromy):
-      !> nothing, the verdict, the growth (exact where |S| < 2, S to the tolerance elsewhere)
-      !> or S to the tolerance; a file computes what the most demanding of its columns needs
-      integer :: need = need_nothing
-      integer :: accuracy = accuracy_none  !! its `# accuracy of` statement (accuracy_*)
-      !> significant digits of its text, from its style (e17 17, e11 11, e7 7, e4 4; 0 for
-      !> the flags, which `put_value` writes)
-      integer :: digits = 17
-      !> a verdict by the paper's criterion |S1| <= 2 (the computation then settles |S| = 2
-      !> too, and its accuracy is stated at |S| = 2)
-      logical :: paper = .false.
-      logical :: offered = .true.  !! files of this scene offer the column
-   end type chart_column_t
 
    !> The columns of one chart or points file, made once per file (`scene_chart_columns`):
    !> the table of its scene, the columns written and what they need.
@@ -95,10 +68,6 @@ module hillstab_batch_tasks_chart_columns
 
    !> Bytes of a header (an upper bound), of one row as text (an upper bound) and binary.
    integer(int64), parameter :: header_bytes = 16384, text_row_bytes = 225, binary_row_bytes = 8*16
-   !> Magnitudes beyond this are written as ±clamp_magnitude with the overflow flag set.
-   real(wp), parameter :: clamp_magnitude = 1.0e300_wp
-   !> log10|S| is written as at least this (only S = 0 exactly reaches it).
-   real(wp), parameter :: log10_floor = -300.0_wp
 
    !> A task writing the chart's columns (chart, points): what runs in units ends as a
    !> serial run ends.
@@ -126,125 +95,27 @@ contains
    end subroutine floquet_finish_units
 
    !> Every column of a chart or points file of this scene, one record each, by its col_*
-   !> index (meanings and what is offered depend on the model, the damping and
-   !> `&physical`).
+   !> index: the records of `floquet_column` for one equation's file (meanings and what is
+   !> offered depend on the model, the damping and `&physical`).
    function chart_column_table(scene) result(table)
       type(scene_t), intent(in) :: scene  !! the scene
       type(chart_column_t) :: table(n_chart_columns)
-      character(len=:), allocatable :: stable, alpha, beta, a
-      character(len=:), allocatable :: alpha_name, beta_name
-      logical :: damped, pendulum
-      damped = scene%epsilon > 0.0_wp .or. scene%model%has_damping()
-      pendulum = is_elastic_pendulum(scene%model)
-      if (damped) then
-         stable = "1 when |S1| < "//damped_threshold(scene)//" (all multipliers of x inside the unit circle)"
-      else
-         stable = "1 when |S| < 2"
-      end if
-      stable = stable//"; 0.5: marginal, |S| is within its error bound max(error_estimate, tolerance) max(1, |S|) "// &
-         "of the threshold, the value cannot decide"
-      if (pendulum) then
-         alpha = "alpha = a pi^2/rho, eq. (24)"
-         beta = "beta = g pi^2/(rho omega^2), eq. (24)"
-      else
-         alpha = "alpha of "//scene%model%summary()
-         beta = "beta of "//scene%model%summary()
-      end if
-      if (size(scene%physical%amplitudes) > 0) then
-         a = "bounce amplitude of &physical (alpha = a pi^2/rho)"
-      else
-         a = "bounce amplitude a = alpha rho/pi^2 with rho = g pi^2/(beta omega^2) (eq. (24)); -1 where beta <= 0 "// &
-            "(no equilibrium length)"
-      end if
-      alpha_name = scene%model%axis_name(1)
-      beta_name = scene%model%axis_name(2)
-      if (alpha_name /= "alpha") then
-         alpha = "the parameter "//alpha_name//" of the equation, the chart's alpha axis (rows)"
-         beta = "the parameter "//beta_name//" of the equation, the chart's beta axis"
-      end if
-      table(col_alpha) = chart_column(alpha_name, "", alpha, style_e17, need_nothing, kept=.true.)
-      table(col_a) = chart_column("a", "m", a, style_e17, need_nothing, kept=.true., &
-         offered=scene%physical%given .and. (size(scene%physical%amplitudes) > 0 .or. pendulum))
-      table(col_beta) = chart_column(beta_name, "", beta, style_e17, need_nothing, &
-         kept=.true.)
-      table(col_omega) = chart_column("omega", "rad/s", "radial angular frequency sqrt(k/m) of the point "// &
-         "(rho = r0 + g/omega^2)", style_e17, need_nothing, kept=.true., offered=size(scene%physical%omegas) > 0)
-      table(col_s) = chart_column("S", "", "trace of the one-period monodromy (with epsilon > 0: S1 of the chi "// &
-         "equation (47)); |S| > 1e300 is written as +-1e300 with overflow = 1", style_e17, need_trace)
-      table(col_stable) = chart_column("stable", "", stable, style_flag, need_verdict, placeholder=-1.0_wp)
-      table(col_lambda_max) = chart_column("lambda_max", "", "largest |multiplier| of x per "// &
-         trim(merge("radial period", "period of Q  ", pendulum)), style_e11, need_growth, placeholder=-1.0_wp)
-      table(col_mu) = chart_column("mu", "", "Floquet exponent ln(lambda_max)/"//period_text(scene)//" per unit tau", &
-                                   style_e11, need_growth)
-      table(col_log10_abs_s) = chart_column("log10_abs_S", "", "log10|S|, exact also where S overflows", style_e11, &
-         need_trace, placeholder=-999.0_wp)
-      table(col_overflow) = chart_column("overflow", "", "1 when |S| > 1e300", style_flag, need_trace, &
-         placeholder=-1.0_wp)
-      table(col_physical) = chart_column("physical", "", "1 inside the physical domain 0 <= alpha < pi^2, "// &
-         "0 <= beta < pi^2", style_flag, need_nothing, kept=.true., offered=pendulum)
-      table(col_stable_paper) = chart_column("stable_paper", "", "1 when |S1| <= 2, the sufficient criterion of "// &
-         "the paper", style_flag, need_verdict, placeholder=-1.0_wp, paper=.true., offered=damped)
-      table(col_mu_per_s) = chart_column("mu_per_s", "1/s", "the Floquet exponent per second, mu omega/pi "// &
-         "(tau = omega t/pi)", style_e11, need_growth, offered=scene%physical%given)
-      table(col_error_estimate) = chart_column("error_estimate", "", "the method's estimate of |error of S|/max(1, "// &
-         "|S|), not a bound (-1: the method gives none; the bound at status 0 is the tolerance)", style_e4, need_trace, &
-         placeholder=-1.0_wp, accuracy=accuracy_estimate)
-      table(col_status) = chart_column("status", "", "0 ok; 1 round-off limited (best value, error_estimate at the "// &
-         "round-off level); 2 failed (placeholders in the other columns)", style_flag, need_nothing, kept=.true.)
+      type(column_context_t) :: context
+      integer :: k
+      context%damped = scene%epsilon > 0.0_wp .or. scene%model%has_damping()
+      context%pendulum = is_elastic_pendulum(scene%model)
+      context%physical = scene%physical%given
+      context%amplitudes = size(scene%physical%amplitudes) > 0
+      context%omegas = size(scene%physical%omegas) > 0
+      context%alpha_name = scene%model%axis_name(1)
+      context%beta_name = scene%model%axis_name(2)
+      context%summary = scene%model%summary()
+      context%threshold = damped_threshold(scene)
+      context%period = period_text(scene)
+      do k = 1, n_chart_columns
+         table(k) = floquet_column(trim(chart_keys(k)), context)
+      end do
    end function chart_column_table
-
-   !> One column's record: its name, unit and meaning (the header's line), its text style,
-   !> what it needs computed at a point (need_* of hillstab_integrate_monodromy), the value
-   !> a failed point writes (`placeholder`: outside the column's range; default 0) unless it
-   !> keeps its own (`kept`: the point's coordinates, flags and status), its `# accuracy of`
-   !> statement (default: that of what it needs), whether it is a verdict by the paper's
-   !> criterion, and whether this scene's files offer it (default: always).
-   pure function chart_column(name, unit, meaning, style, need, placeholder, kept, accuracy, paper, offered) &
-      result(column)
-      character(len=*), intent(in) :: name     !! as in the `# columns:` line and `&scene columns`
-      character(len=*), intent(in) :: unit     !! "" when dimensionless
-      character(len=*), intent(in) :: meaning  !! one line for the header
-      integer, intent(in) :: style             !! style_* of hillstab_batch_output_columns
-      integer, intent(in) :: need              !! need_* of hillstab_integrate_monodromy
-      real(wp), intent(in), optional :: placeholder  !! the value of a failed point
-      logical, intent(in), optional :: kept     !! a failed point writes its own value
-      integer, intent(in), optional :: accuracy  !! accuracy_*
-      logical, intent(in), optional :: paper    !! a verdict by |S1| <= 2
-      logical, intent(in), optional :: offered  !! files of the scene offer it
-      type(chart_column_t) :: column
-      column%name = name
-      column%unit = unit
-      column%meaning = meaning
-      column%style = style
-      column%need = need
-      if (present(placeholder)) column%placeholder = placeholder
-      if (present(kept)) column%keep_on_failure = kept
-      select case (need)
-      case (need_verdict)
-         column%accuracy = accuracy_verdict
-      case (need_growth)
-         column%accuracy = accuracy_growth
-      case (need_trace)
-         column%accuracy = accuracy_trace
-      case default
-         column%accuracy = accuracy_none
-      end select
-      if (present(accuracy)) column%accuracy = accuracy
-      select case (style)
-      case (style_e17)
-         column%digits = 17
-      case (style_e11)
-         column%digits = 11
-      case (style_e7)
-         column%digits = 7
-      case (style_e4)
-         column%digits = 4
-      case default
-         column%digits = 0
-      end select
-      if (present(paper)) column%paper = paper
-      if (present(offered)) column%offered = offered
-   end function chart_column
 
    !> The columns a chart or points file of this scene holds: `&scene columns` when given,
    !> else all it offers (in file order); an error naming `&scene columns` when a name is
@@ -254,24 +125,13 @@ contains
       type(chart_layout_t), intent(out) :: columns  !! its table, the columns written and what they need
       type(error_t), allocatable, intent(out) :: error  !! err_input naming &scene columns
       integer, allocatable :: available(:)
-      character(len=:), allocatable :: bad
       integer :: k
       columns%table = chart_column_table(scene)
       allocate (available(0))
       do k = 1, n_chart_columns
          if (columns%table(k)%offered) available = [available, k]
       end do
-      if (len_trim(scene%columns) == 0) then
-         columns%ids = available
-      else
-         call find_columns(plain_columns(columns), available, scene%columns, columns%ids, bad)
-         if (len(bad) > 0) then
-            call fail(error, scene%source, "scene", "columns", "'"//bad//"' is not a column of this file or is "// &
-               "named twice (available: "//columns_text(plain_columns(columns), available)//")")
-         else if (size(columns%ids) == 0) then
-            call fail(error, scene%source, "scene", "columns", "no column named")
-         end if
-      end if
+      call scene_columns(columns%table, available, scene%columns, scene%source, columns%ids, error)
       columns%digits = columns%table%digits
       columns%styles = columns%table%style
       columns%need = need_nothing
@@ -341,57 +201,6 @@ contains
       end select
    end function accuracy_line
 
-   !> The value of every column (table order) at one computed point: S and lambda_max
-   !> clamped to ±1e300, flags 1 or 0, stable 0.5 when marginal, mu_per_s = μ ω/π
-   !> (0 without `per_second`), error_estimate −1 when the method gives none, a the
-   !> amplitude (0 without `amplitude`).
-   pure function chart_values(alpha, beta, f, physical, status, per_second, amplitude, omega, need) result(v)
-      real(wp), intent(in) :: alpha, beta  !! the grid point
-      type(floquet_t), intent(in) :: f  !! Floquet data of the point
-      logical, intent(in) :: physical   !! (α, β) inside the physical domain
-      integer, intent(in) :: status     !! per-point status code (hillstab_core_status)
-      real(wp), intent(in), optional :: per_second  !! ω/π
-      real(wp), intent(in), optional :: amplitude   !! a (m), `point_amplitude`
-      real(wp), intent(in), optional :: omega       !! ω (rad/s) of a chart over (a, ω)
-      !> what was computed (`chart_layout_t` need): below need_growth the columns of λ, μ and ln|S|
-      !> are left at 0 (not written)
-      integer, intent(in), optional :: need
-      real(wp) :: v(n_chart_columns)
-      real(wp) :: s, estimate
-      logical :: overflow, growth
-      s = f%trace%value
-      overflow = f%trace%overflow .or. abs(s) > clamp_magnitude
-      if (overflow) s = sign(clamp_magnitude, s)
-      estimate = f%trace%error_estimate
-      if (estimate < 0.0_wp) estimate = -1.0_wp
-      v(col_alpha) = alpha
-      v(col_a) = 0.0_wp
-      if (present(amplitude)) v(col_a) = amplitude
-      v(col_beta) = beta
-      v(col_omega) = 0.0_wp
-      if (present(omega)) v(col_omega) = omega
-      v(col_s) = s
-      v(col_stable) = merge(1.0_wp, 0.0_wp, f%stable)
-      if (f%marginal) v(col_stable) = 0.5_wp
-      growth = .true.
-      if (present(need)) growth = need >= need_growth
-      if (growth) then
-         v(col_lambda_max) = min(largest_multiplier_modulus(f), clamp_magnitude)
-         v(col_mu) = f%exponent + 0.0_wp  ! no "-0.0" in the file
-         v(col_log10_abs_s) = max(f%trace%log_abs/log(10.0_wp), log10_floor)
-      else
-         v(col_lambda_max) = 0.0_wp
-         v(col_mu) = 0.0_wp
-         v(col_log10_abs_s) = 0.0_wp
-      end if
-      v(col_overflow) = merge(1.0_wp, 0.0_wp, overflow)
-      v(col_physical) = merge(1.0_wp, 0.0_wp, physical)
-      v(col_stable_paper) = merge(1.0_wp, 0.0_wp, f%stable_paper)
-      v(col_mu_per_s) = 0.0_wp
-      if (present(per_second) .and. growth) v(col_mu_per_s) = v(col_mu)*per_second + 0.0_wp
-      v(col_error_estimate) = min(estimate, clamp_magnitude)
-      v(col_status) = real(status, wp)
-   end function chart_values
 
    !> The text lines of points computed for their verdicts only, written directly into
    !> buffer(pos + 1 : …), one new-line character between two lines, pos advanced past the

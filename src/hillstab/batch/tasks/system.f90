@@ -19,13 +19,14 @@
 module hillstab_batch_tasks_system
    use hillstab_core_kinds, only: wp, int64, version_string
    use hillstab_core_error, only: error_t, set_error, err_points_failed
-   use hillstab_core_text, only: real_text, integer_text, lower_case
+   use hillstab_core_text, only: real_text, integer_text
    use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system, system_equation_text, &
       system_description
    use hillstab_integrate_system, only: system_method_t, system_method_name
    use hillstab_batch_tasks_system_values, only: n_fixed, system_point_values, system_values, system_row_values, &
-      scalar_path, failure_text, system_column_names, system_column_table, status_column
-   use hillstab_batch_output_columns, only: column_t, put_row
+      scalar_path, failure_text, system_column_names, system_column_table, status_column, plain_table
+   use hillstab_batch_output_columns, only: column_t, put_row, columns_text
+   use hillstab_batch_tasks_floquet_columns, only: chart_column_t, scene_columns
    use hillstab_batch_scene_types, only: scene_t, task_t, scene_header
    use hillstab_batch_tasks_regions, only: chart_region_lines
    use hillstab_batch_scene_declaration, only: group_t
@@ -122,65 +123,25 @@ contains
    end function system_points_task
 
 
-   !> The columns of the scene's system as its files name them: `system_column_names`, the
-   !> first two named after the system's axes (an equations system's parameters).
-   function scene_column_names(system) result(names)
+   !> The columns of the scene's system as its files name them (`system_column_table`), the
+   !> first two after the system's axes (an equations system's parameters).
+   function scene_column_table(system) result(table)
       class(hill_system_t), intent(in) :: system  !! the system
-      character(len=14), allocatable :: names(:)
-      names = system_column_names(system%dof())
-      names(1) = system%axis_name(1)
-      names(2) = system%axis_name(2)
-   end function scene_column_names
+      type(chart_column_t), allocatable :: table(:)
+      table = system_column_table(system%dof(), system%first_order(), system%axis_name(1), system%axis_name(2))
+   end function scene_column_table
 
-
-   !> `&scene columns`: the names given, in that order (all when blank); err_input naming
-   !> &scene columns for an unknown name.
+   !> `&scene columns`: the names given, in that order (all when blank; the axes also as alpha
+   !> and beta); err_input naming &scene columns for a name the system has not or named twice.
    subroutine system_choose_columns(self, scene, error)
       class(system_floquet_task_t), intent(inout) :: self  !! the task
       type(scene_t), intent(in) :: scene  !! its scene
       type(error_t), allocatable, intent(out) :: error  !! err_input naming &scene columns
-      character(len=14), allocatable :: names(:)
-      character(len=:), allocatable :: rest, word, known
-      integer :: k, blank, found
-      names = scene_column_names(scene%system)
-      self%table = system_column_table(scene%system%dof(), scene%system%first_order())
-      if (len_trim(scene%columns) == 0) then
-         self%chosen = [(k, k=1, size(names))]
-         return
-      end if
-      allocate (self%chosen(0))
-      rest = trim(adjustl(scene%columns))
-      do while (len(rest) > 0)
-         blank = index(rest, " ")
-         if (blank == 0) then
-            word = rest
-            rest = ""
-         else
-            word = rest(:blank - 1)
-            rest = trim(adjustl(rest(blank + 1:)))
-         end if
-         found = 0
-         do k = 1, size(names)
-            if (lower_case(word) == lower_case(trim(names(k)))) found = k
-         end do
-         ! the axes also by their generic names
-         if (found == 0 .and. lower_case(word) == "alpha") found = 1
-         if (found == 0 .and. lower_case(word) == "beta") found = 2
-         if (found == 0) then
-            known = ""
-            do k = 1, size(names)
-               known = known//" "//trim(names(k))
-            end do
-            call fail(error, scene%source, "scene", "columns", "unknown column '"//word// &
-               "' of a system (it has"//known//")")
-            return
-         end if
-         if (any(self%chosen == found)) then
-            call fail(error, scene%source, "scene", "columns", "column '"//word//"' given twice")
-            return
-         end if
-         self%chosen = [self%chosen, found]
-      end do
+      type(chart_column_t), allocatable :: table(:)
+      integer :: k
+      table = scene_column_table(scene%system)
+      self%table = plain_table(table)
+      call scene_columns(table, [(k, k=1, size(table))], scene%columns, scene%source, self%chosen, error)
    end subroutine system_choose_columns
 
    !> The text of one point's chosen columns, into a buffer (no deferred-length character
@@ -202,14 +163,7 @@ contains
       class(hill_system_t), intent(in) :: system
       integer, intent(in) :: chosen(:)
       character(len=:), allocatable :: text
-      character(len=14), allocatable :: names(:)
-      integer :: k
-      names = scene_column_names(system)
-      text = ""
-      do k = 1, size(chosen)
-         if (k > 1) text = text//" "
-         text = text//trim(names(chosen(k)))
-      end do
+      text = columns_text(plain_table(scene_column_table(system)), chosen)
    end function chosen_names
 
    !> The header lines of a system file: title, the scene, the equation, the columns' meanings.
@@ -220,12 +174,9 @@ contains
       character(len=*), intent(in), optional :: regions(:)  !! lines on the regions of a chart's ranges
       character(len=:), allocatable :: lines(:)
       character(len=500), allocatable :: extra(:)
-      character(len=14), allocatable :: names(:)
-      type(column_t), allocatable :: table(:)
-      integer :: k, n
-      n = scene%system%dof()
-      names = scene_column_names(scene%system)
-      table = system_column_table(n, scene%system%first_order())
+      type(chart_column_t), allocatable :: table(:)
+      integer :: k
+      table = scene_column_table(scene%system)
       allocate (extra(3 + size(chosen)))
       extra(1) = system_description(scene%system)
       extra(2) = "method: "//system_method_name(scene%method%kind)//", tolerance "// &
@@ -250,11 +201,7 @@ contains
                     "so the defect is 0; error_estimate is S's relative to max(1, |S|), steps the row's mean"
       end if
       do k = 1, size(chosen)
-         extra(3 + k) = "column "//integer_text(k)//", "//trim(names(chosen(k)))//": "//table(chosen(k))%meaning
-         if (chosen(k) <= 2 .and. trim(names(chosen(k))) /= trim(merge("alpha", "beta ", chosen(k) == 1))) &
-            extra(3 + k) = "column "//integer_text(k)//", "//trim(names(chosen(k)))//": the parameter "// &
-                           trim(names(chosen(k)))//", the chart's "//trim(merge("alpha", "beta ", chosen(k) == 1))// &
-                           " axis"
+         extra(3 + k) = "column "//integer_text(k)//", "//table(chosen(k))%name//": "//table(chosen(k))%meaning
       end do
       if (present(regions)) extra = [character(len=500) :: extra, regions]
       lines = scene_header(scene, "hillstab "//version_string//": "//what//" of "// &

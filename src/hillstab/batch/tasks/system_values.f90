@@ -24,187 +24,22 @@ module hillstab_batch_tasks_system_values
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, method_t, method_auto
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_auto
    use hillstab_integrate_system_point, only: system_point
-   use hillstab_batch_output_columns, only: column_t, style_e17, style_integer, failed_row
+   use hillstab_batch_output_columns, only: column_t, failed_row
+   use hillstab_batch_tasks_floquet_columns, only: chart_column_t, column_context_t, floquet_column, n_fixed, &
+      system_layout_t, system_layout, system_column_names, status_column, system_point_values, plain_table, &
+      system_column_table
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
    public :: n_fixed, system_layout_t, system_layout, system_column_names, system_column_table, status_column, &
-      system_point_values, system_values, system_row_values, scalar_path, scalar_point, failure_text
+      system_point_values, system_values, system_row_values, scalar_path, scalar_point, failure_text, &
+      plain_table
 
-   !> The columns of a system's chart and points files before the exponents mu_1 … mu_n and
-   !> after them, in file order: the one place their order is set. Every column's record
-   !> (meaning, style, placeholder) is `system_column_table`'s, its value `system_point_values`',
-   !> each found by name (`system_layout_t`).
-   character(len=14), parameter :: before_exponents(10) = [character(len=14) :: "alpha", "beta", "trace", "a2", &
-                                                          "overflow", "stable", "kind", "lambda_max", "mu", "argument"]
-   character(len=14), parameter :: after_exponents(4) = [character(len=14) :: "defect", "error_estimate", "status", &
-                                                         "steps"]
-   !> The columns besides the n exponents.
-   integer, parameter :: n_fixed = size(before_exponents) + size(after_exponents)
-
-   !> Where each column sits among a point's values, by name (`system_layout`): what
-   !> `system_point_values` fills, the C API's status and every file's rows follow from it.
-   type :: system_layout_t
-      integer :: n = 0            !! degrees of freedom (the exponents mu_1 … mu_n)
-      integer :: columns = 0      !! every column: n_fixed + n
-      !> the places of the columns of those names
-      integer :: alpha = 0, beta = 0, trace = 0, a2 = 0, overflow = 0, stable = 0, kind = 0, lambda_max = 0
-      !> the places of the columns of those names
-      integer :: mu = 0, argument = 0, defect = 0, error_estimate = 0, status = 0, steps = 0
-      integer :: mu_1 = 0         !! the first exponent; mu_k is at mu_1 + k − 1
-   end type system_layout_t
 
 contains
 
-   !> Every column of a system of n degrees of freedom, by name, in file order.
-   pure function system_column_names(n) result(names)
-      integer, intent(in) :: n  !! degrees of freedom
-      character(len=14) :: names(n_fixed + n)
-      integer :: k
-      names(1:size(before_exponents)) = before_exponents
-      do k = 1, n
-         write (names(size(before_exponents) + k), '(a, i0)') "mu_", k
-      end do
-      names(size(before_exponents) + n + 1:) = after_exponents
-   end function system_column_names
 
-   !> Each column's place among a point's values, found by its name (without making the
-   !> names of the exponents: this runs once a row).
-   pure function system_layout(n) result(layout)
-      integer, intent(in) :: n  !! degrees of freedom
-      type(system_layout_t) :: layout
-      layout%n = n
-      layout%columns = n_fixed + n
-      layout%alpha = place("alpha")
-      layout%beta = place("beta")
-      layout%trace = place("trace")
-      layout%a2 = place("a2")
-      layout%overflow = place("overflow")
-      layout%stable = place("stable")
-      layout%kind = place("kind")
-      layout%lambda_max = place("lambda_max")
-      layout%mu = place("mu")
-      layout%argument = place("argument")
-      layout%mu_1 = size(before_exponents) + 1
-      layout%defect = place("defect")
-      layout%error_estimate = place("error_estimate")
-      layout%status = place("status")
-      layout%steps = place("steps")
-   contains
-      pure integer function place(name)
-         character(len=*), intent(in) :: name
-         place = findloc(before_exponents, name, dim=1)
-         if (place == 0) place = size(before_exponents) + n + findloc(after_exponents, name, dim=1)
-      end function place
-   end function system_layout
 
-   !> The place of the column `status` among a point's values (`system_layout`).
-   pure integer function status_column(n)
-      integer, intent(in) :: n  !! degrees of freedom
-      type(system_layout_t) :: layout
-      layout = system_layout(n)
-      status_column = layout%status
-   end function status_column
-
-   !> Every column of a system's chart and points files (`system_column_names`), its record
-   !> by name: the meaning the header gives it (of the first-order form's where it differs),
-   !> its text style (flags, codes and counts as integers, the rest in 17 digits) and the
-   !> placeholder of a failed point (the axes keep their values).
-   pure function system_column_table(n, first_order) result(table)
-      integer, intent(in) :: n  !! degrees of freedom (first-order form: the states)
-      logical, intent(in) :: first_order  !! the system is y' = A y
-      type(column_t) :: table(n_fixed + n)
-      character(len=14) :: names(n_fixed + n)
-      integer :: k
-      names = system_column_names(n)
-      do k = 1, size(names)
-         table(k) = record(trim(names(k)))
-      end do
-   contains
-      pure function record(name) result(column)
-         character(len=*), intent(in) :: name
-         type(column_t) :: column
-         column = column_t(name, "", "", style_e17, 0.0_wp, .false.)
-         select case (name)
-         case ("alpha"); column%meaning = "alpha, the drive"
-            column%keep_on_failure = .true.
-         case ("beta"); column%meaning = "beta, the factor of B"
-            column%keep_on_failure = .true.
-         case ("trace")
-            if (first_order) then
-               column%meaning = "a1 = tr Phi of the one-period monodromy of y' = A y (+-1e300 with overflow = 1)"
-            else
-               column%meaning = "a1 = tr Phi of the one-period monodromy of y = (x, x') (+-1e300 with overflow = 1)"
-            end if
-         case ("a2"); column%meaning = "a2 = ((tr Phi)^2 - tr Phi^2)/2 = sum of lambda_i lambda_j (from the "// &
-                                       "multipliers where that difference cancels; Broucke: z^2 - a1 z + a2 - 2 = 0 "// &
-                                       "for n = 2)"
-         case ("overflow"); column%meaning = "1 when |a1| or |a2| exceeds 1e300 (clamped)"
-            column%style = style_integer
-         case ("stable"); column%meaning = "1 stable, 0 unstable, -1 marginal (the error bound of Phi does not decide)"
-            column%style = style_integer
-            column%placeholder = -1.0_wp
-         case ("kind"); column%meaning = "0 stable, 1 unstable at +1, 2 at -1, 3 combination (Krein collision), "// &
-                                         "4 damped (asymptotically stable), 5 undecided (stable = -1)"
-            column%style = style_integer
-            column%placeholder = -1.0_wp
-         case ("lambda_max"); column%meaning = "largest |multiplier| (1e300 when it overflows; mu is exact)"
-         case ("mu"); column%meaning = "ln(lambda_max)/period, the largest Floquet exponent per unit tau"
-         case ("argument"); column%meaning = "arg(lambda)/pi of the largest multiplier, in [0, 1]"
-         case ("defect")
-            if (first_order) then
-               column%meaning = "|det Phi - exp(P mean tr A)| over Hadamard's bound of |det Phi| (relative, max norms)"
-            else
-               column%meaning = "Hamiltonian: |Phi^T Omega Phi - Omega|/(|Omega| max(1, |Phi|)^2); else "// &
-                                "|det Phi - exp(P tr D)| over Hadamard's bound of |det Phi| (relative, max norms)"
-            end if
-            column%placeholder = -1.0_wp
-         case ("error_estimate"); column%meaning = "the method's estimate of the error of Phi's entries relative "// &
-                                                   "to max(1, max|Phi_ij|)"
-            column%placeholder = -1.0_wp
-         case ("status"); column%meaning = "0 ok; 1 round-off limited (the tolerance lies below the rounding of "// &
-                                           "the method, or an exponent mu_k is not resolved to it); 2 failed "// &
-                                           "(placeholders)"
-            column%style = style_integer
-            column%placeholder = real(status_failed, wp)
-         case ("steps"); column%meaning = "Magnus steps (rk, gsl: right-hand sides) spent on the point"
-            column%style = style_integer
-         case default; column%meaning = "ln|lambda_k|/period of the k-th largest multiplier (from the period's "// &
-                                        "product kept factored where Phi cannot resolve it)"
-         end select
-      end function record
-   end function system_column_table
-
-   !> The values of every column at one point, each at its place in `layout` (the
-   !> placeholders of `system_column_table` when the point failed).
-   pure function system_point_values(layout, alpha, beta, f, r, failed) result(v)
-      type(system_layout_t), intent(in) :: layout   !! the columns' places (`system_layout`)
-      real(wp), intent(in) :: alpha, beta           !! the point
-      type(floquet_t), intent(in) :: f       !! its analysis
-      type(system_monodromy_t), intent(in) :: r     !! its monodromy
-      logical, intent(in) :: failed                 !! no value
-      real(wp) :: v(layout%columns)
-      v = 0.0_wp
-      v(layout%alpha) = alpha
-      v(layout%beta) = beta
-      if (failed) then
-         call failed_row(system_column_table(layout%n, .false.), v)
-         return
-      end if
-      v(layout%trace) = f%a1
-      v(layout%a2) = f%a2
-      v(layout%overflow) = merge(1.0_wp, 0.0_wp, f%overflow .or. f%log_modulus(1) > log(1.0e300_wp))
-      v(layout%stable) = real(f%verdict, wp)
-      v(layout%kind) = real(f%kind, wp)
-      v(layout%lambda_max) = exp(min(f%log_modulus(1), log(1.0e300_wp)))
-      v(layout%mu) = f%exponent
-      v(layout%argument) = abs(f%argument(1))/pi
-      v(layout%mu_1:layout%mu_1 + layout%n - 1) = f%exponents
-      v(layout%defect) = f%defect
-      v(layout%error_estimate) = r%error_estimate
-      v(layout%status) = real(r%status, wp)
-      v(layout%steps) = real(r%steps, wp)
-   end function system_point_values
 
    !> One point: monodromy, analysis, values; `failed` with the error when it could not be computed.
    subroutine evaluate(system, form, layout, method, alpha, beta, nodes, v, failed, message, row_form_given)
@@ -446,5 +281,6 @@ contains
       write (text, '(a, es24.16, a, es24.16, a)') "alpha = ", alpha, ", beta = ", beta, ": "
       text = trim(text)//" "//message
    end subroutine failure_text
+
 
 end module hillstab_batch_tasks_system_values
