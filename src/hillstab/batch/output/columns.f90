@@ -82,14 +82,16 @@ contains
    end function columns_text
 
    !> The columns named in `text` (blank- or comma-separated, case-insensitive), in the
-   !> order given, each one of `available`; `bad` names the first that is not, or is
-   !> named twice ("" when all are fine).
-   pure subroutine find_columns(table, available, text, ids, bad)
+   !> order given, each one of `available`, by its name or else its other name in `aliases`
+   !> (one per column of the table, "" for none); `bad` names the first that is neither, or
+   !> is named twice ("" when all are fine).
+   pure subroutine find_columns(table, available, text, ids, bad, aliases)
       type(column_t), intent(in) :: table(:)  !! the table
       integer, intent(in) :: available(:)     !! indices this file offers
       character(len=*), intent(in) :: text    !! the names, as in `&scene columns`
       integer, allocatable, intent(out) :: ids(:)  !! the indices found, in order
       character(len=:), allocatable, intent(out) :: bad  !! the first unknown or repeated name, or ""
+      character(len=*), intent(in), optional :: aliases(:)  !! another name of each column ("" none)
       character(len=:), allocatable :: word
       integer :: i, j, k, found
       allocate (ids(0))
@@ -110,6 +112,12 @@ contains
          do k = 1, size(available)
             if (lower_case(table(available(k))%name) == word) found = available(k)
          end do
+         if (found == 0 .and. present(aliases)) then
+            do k = 1, size(available)
+               if (len_trim(aliases(available(k))) > 0 .and. lower_case(trim(aliases(available(k)))) == word) &
+                  found = available(k)
+            end do
+         end if
          if (found == 0 .or. any(ids == found)) then
             bad = text(i:j)
             return

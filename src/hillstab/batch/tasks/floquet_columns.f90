@@ -20,13 +20,12 @@ module hillstab_batch_tasks_floquet_columns
    use hillstab_core_kinds, only: wp, pi
    use hillstab_core_error, only: error_t
    use hillstab_core_status, only: status_failed
-   use hillstab_core_text, only: lower_case
    use hillstab_hill_floquet, only: floquet_t, largest_multiplier_modulus
    use hillstab_integrate_monodromy, only: need_nothing, need_verdict, need_growth, need_trace
    use hillstab_integrate_system, only: system_monodromy_t
    use hillstab_batch_scene_file, only: fail
    use hillstab_batch_output_columns, only: column_t, style_e17, style_e11, style_e7, style_e4, style_flag, &
-      style_integer, columns_text, failed_row
+      style_integer, columns_text, failed_row, find_columns
    implicit none
    private
    public :: chart_column_t, column_context_t, floquet_column, choose_columns, scene_columns, chart_keys
@@ -147,26 +146,21 @@ contains
       logical :: system
       system = context%system
       select case (key)
-      case ("alpha")
+      case ("alpha", "beta")
          if (system) then
-            text = "alpha, the drive"
+            text = trim(merge("alpha, the drive     ", "beta, the factor of B", key == "alpha"))
          else if (context%pendulum) then
-            text = "alpha = a pi^2/rho, eq. (24)"
+            text = trim(merge("alpha = a pi^2/rho, eq. (24)         ", "beta = g pi^2/(rho omega^2), eq. (24)", &
+                              key == "alpha"))
          else
-            text = "alpha of "//context%summary
+            text = key//" of "//context%summary
          end if
-         column = record(name_of(context%alpha_name, "alpha"), "", text, style_e17, need_nothing, kept=.true.)
-         if (column%name /= "alpha") column%meaning = axis_meaning(column%name, "alpha", system)
-      case ("beta")
-         if (system) then
-            text = "beta, the factor of B"
-         else if (context%pendulum) then
-            text = "beta = g pi^2/(rho omega^2), eq. (24)"
+         if (key == "alpha") then
+            column = record(name_of(context%alpha_name, key), "", text, style_e17, need_nothing, kept=.true.)
          else
-            text = "beta of "//context%summary
+            column = record(name_of(context%beta_name, key), "", text, style_e17, need_nothing, kept=.true.)
          end if
-         column = record(name_of(context%beta_name, "beta"), "", text, style_e17, need_nothing, kept=.true.)
-         if (column%name /= "beta") column%meaning = axis_meaning(column%name, "beta", system)
+         if (column%name /= key) column%meaning = axis_meaning(column%name, key, system)
       case ("a")
          if (context%amplitudes) then
             text = "bounce amplitude of &physical (alpha = a pi^2/rho)"
@@ -369,10 +363,10 @@ contains
       if (present(offered)) column%offered = offered
    end function record
 
-   !> The columns `text` names (`&scene columns`: names or keys, blank- or comma-separated, any
-   !> case), in its order, among those `available`; `bad` the first name that is not one of
-   !> them or is named twice ("" when every name was found), and `known` the names available
-   !> for the message.
+   !> The columns `text` names (`&scene columns`: names, the axes also as alpha and beta,
+   !> blank- or comma-separated, any case), in its order, among those `available`; `bad` the
+   !> first name that is not one of them or is named twice ("" when every name was found),
+   !> and `known` the names available for the message.
    pure subroutine choose_columns(table, available, text, ids, bad, known)
       type(chart_column_t), intent(in) :: table(:)  !! every column of the file's kind
       integer, intent(in) :: available(:)           !! the indices of `table` this file offers
@@ -381,43 +375,14 @@ contains
       character(len=:), allocatable, intent(out) :: bad    !! the first name not found or repeated
       character(len=:), allocatable, intent(out) :: known  !! the names available, blank-separated
       type(column_t) :: plain(size(table))
-      character(len=:), allocatable :: word
-      integer :: i, j, k, found
-      allocate (ids(0))
-      bad = ""
-      i = 1
-      do while (i <= len(text))
-         if (index(" ,", text(i:i)) > 0) then
-            i = i + 1
-            cycle
-         end if
-         j = i
-         do while (j < len(text))
-            if (index(" ,", text(j + 1:j + 1)) > 0) exit
-            j = j + 1
-         end do
-         word = lower_case(text(i:j))
-         found = 0
-         do k = 1, size(available)
-            if (lower_case(table(available(k))%name) == word) found = available(k)
-         end do
-         ! the axes also by their generic names
-         if (found == 0) then
-            do k = 1, size(available)
-               if (lower_case(table(available(k))%key) == word .and. &
-                   (table(available(k))%key == "alpha" .or. table(available(k))%key == "beta")) found = available(k)
-            end do
-         end if
-         if (found == 0 .or. any(ids == found)) then
-            bad = text(i:j)
-            exit
-         end if
-         ids = [ids, found]
-         i = j + 1
-      end do
+      character(len=5) :: aliases(size(table))
+      integer :: k
+      plain = plain_table(table)
+      aliases = ""
       do k = 1, size(table)
-         plain(k) = table(k)%column_t
+         if (table(k)%key == "alpha" .or. table(k)%key == "beta") aliases(k) = table(k)%key
       end do
+      call find_columns(plain, available, text, ids, bad, aliases)
       known = columns_text(plain, available)
    end subroutine choose_columns
    !> The columns a chart or points file holds: those `&scene columns` (`text`) names
