@@ -4,7 +4,7 @@
 !> `&scene columns` is refused alike, naming the file, the group and the variable; and the
 !> values both kinds write of the same one-equation result agree where their meanings do.
 module test_floquet_columns
-   use hillstab_core_kinds, only: wp
+   use hillstab_core_kinds, only: wp, pi
    use hillstab_core_error, only: error_t, err_input
    use hillstab_core_status, only: status_ok
    use hillstab_hill_transfer, only: trace_t
@@ -14,6 +14,8 @@ module test_floquet_columns
    use hillstab_integrate_system, only: system_monodromy_t
    use hillstab_batch_tasks_floquet_columns
    use hillstab_testing
+   use hillstab_test_files, only: run_text_scene
+   use hillstab_test_scratch, only: read_lines, delete_file
    implicit none
    private
    public :: collect_floquet_columns
@@ -26,7 +28,8 @@ contains
          new_unittest("places_follow_keys", places_follow_keys), &
          new_unittest("axes_named_and_chosen", axes_named_and_chosen), &
          new_unittest("columns_refused_alike", columns_refused_alike), &
-         new_unittest("one_result_both_files", one_result_both_files)])
+         new_unittest("one_result_both_files", one_result_both_files), &
+         new_unittest("kind_and_argument_of_one_equation", kind_and_argument_of_one_equation)])
    end function collect_floquet_columns
 
    !> Each `col_*` index is its key's place in `chart_keys`, every key of both kinds of file has
@@ -39,13 +42,13 @@ contains
       character(len=14), allocatable :: names(:)
       type(system_layout_t) :: layout
       integer :: k
-      integer, parameter :: places(15) = [col_alpha, col_a, col_beta, col_omega, col_s, col_stable, col_lambda_max, &
+      integer, parameter :: places(17) = [col_alpha, col_a, col_beta, col_omega, col_s, col_stable, col_lambda_max, &
                                           col_mu, col_log10_abs_s, col_overflow, col_physical, col_stable_paper, &
-                                          col_mu_per_s, col_error_estimate, col_status]
-      character(len=14), parameter :: keys(15) = [character(len=14) :: "alpha", "a", "beta", "omega", "S", &
+                                          col_mu_per_s, col_error_estimate, col_status, col_kind, col_argument]
+      character(len=14), parameter :: keys(17) = [character(len=14) :: "alpha", "a", "beta", "omega", "S", &
          "stable", "lambda_max", "mu", "log10_abs_S", "overflow", "physical", "stable_paper", "mu_per_s", &
-         "error_estimate", "status"]
-      call check(ctx, n_chart_columns == size(keys), "15 columns of one equation")
+         "error_estimate", "status", "kind", "argument"]
+      call check(ctx, n_chart_columns == size(keys), "17 columns of one equation")
       do k = 1, size(keys)
          call check(ctx, chart_keys(places(k)) == keys(k), "col_"//trim(keys(k))//" is the place of its key")
       end do
@@ -188,6 +191,76 @@ contains
       f = floquet_from_trace(trace_t(value=-7.5_wp, log_abs=log(7.5_wp)), 0.0_wp)
       call check(ctx, f%verdict == verdict_unstable, "S = -7.5 unstable")
    end subroutine one_result_both_files
+
+   !> One equation's files write the kind and the argument of the largest multiplier when
+   !> `&scene columns` names them (not by default: the default file keeps its columns). Mathieu's
+   !> equation at α = 0 is x'' + β x = 0, S = 2 cos(2√β): where |S| < 2 the argument is
+   !> arccos(cos 2√β)/π and the kind 0; at β < 0 the kind is 1 (S > 2) and the argument 0; in the
+   !> first tongue (α = 2, β = 10/3, S < −2) the kind is 2 and the argument 1. Every point's kind
+   !> and argument agree with the sign and size of its S.
+   subroutine kind_and_argument_of_one_equation(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written
+      character(len=1024), allocatable :: lines(:)
+      real(wp) :: v(5), expected
+      integer :: k, n_rows, n_closed, n_minus, n_plus
+      call run_text_scene("kind_argument", [character(len=200) :: &
+         "&scene task='chart', model='mathieu', tolerance=1e-12, columns='alpha beta kind argument S' /", &
+         "&chart alpha_min=0, alpha_max=2, n_alpha=2, beta_min=-1, beta_max=12, n_beta=40 /"], error, written)
+      call check(ctx, .not. allocated(error), "the chart runs")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      lines = read_lines(written)
+      n_rows = 0
+      n_closed = 0
+      n_minus = 0
+      n_plus = 0
+      do k = 1, size(lines)
+         if (index(lines(k), "# columns:") == 1) call check(ctx, trim(lines(k)) == "# columns: alpha beta kind argument S", &
+                                                             "the columns named")
+         if (lines(k)(1:1) == "#" .or. len_trim(lines(k)) == 0) cycle
+         read (lines(k), *) v
+         n_rows = n_rows + 1
+         if (abs(v(5)) < 2.0_wp) then
+            call check(ctx, nint(v(3)) == 0 .and. v(4) > 0.0_wp .and. v(4) < 1.0_wp, "stable: kind 0, argument in (0, 1)")
+            call check(ctx, v(4), acos(0.5_wp*v(5))/pi, abs=1.0e-15_wp, message="argument = arccos(S/2)/pi")
+         else if (abs(abs(v(5)) - 2.0_wp) < 1.0e-9_wp) then
+            ! |S| = 2 within the error bound (beta = 0 at alpha = 0): undecided
+            call check(ctx, nint(v(3)) == 5, "|S| = 2: kind 5, undecided")
+         else
+            call check(ctx, nint(v(3)) == merge(1, 2, v(5) > 0.0_wp), "unstable: kind from the sign of S")
+            call check(ctx, v(4) == merge(0.0_wp, 1.0_wp, v(5) > 0.0_wp), "unstable: argument 0 or 1")
+            if (v(5) < 0.0_wp) n_minus = n_minus + 1
+            if (v(5) > 0.0_wp) n_plus = n_plus + 1
+         end if
+         if (v(1) == 0.0_wp .and. v(2) > 0.0_wp) then
+            expected = acos(cos(2.0_wp*sqrt(v(2))))/pi
+            if (abs(cos(2.0_wp*sqrt(v(2)))) < 0.999_wp) then
+               call check(ctx, v(4), expected, abs=1.0e-9_wp, message="alpha = 0: arccos(cos 2 sqrt(beta))/pi")
+               n_closed = n_closed + 1
+            end if
+         end if
+      end do
+      call check(ctx, n_rows == 80, "80 points")
+      call check(ctx, n_closed >= 30 .and. n_minus >= 1 .and. n_plus >= 2, "the closed form, -1 and +1 reached")
+      call delete_file(written)
+      ! the default file keeps its columns
+      call run_text_scene("kind_argument_default", [character(len=200) :: &
+         "&scene task='chart', model='mathieu', tolerance=1e-12 /", &
+         "&chart alpha_min=0, alpha_max=2, n_alpha=2, beta_min=-1, beta_max=12, n_beta=3 /"], error, written)
+      call check(ctx, .not. allocated(error), "the default chart runs")
+      if (allocated(error)) return
+      lines = read_lines(written)
+      do k = 1, size(lines)
+         if (index(lines(k), "# columns:") == 1) &
+            call check(ctx, index(lines(k), "kind") == 0 .and. index(lines(k), "argument") == 0, &
+                       "kind and argument only on request: "//trim(lines(k)))
+      end do
+      call delete_file(written)
+   end subroutine kind_and_argument_of_one_equation
 
    !> A context of one equation or a system with the axes' names.
    function context_of(system, alpha_name, beta_name) result(context)

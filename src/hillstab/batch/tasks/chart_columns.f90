@@ -37,7 +37,7 @@ module hillstab_batch_tasks_chart_columns
    use hillstab_batch_tasks_floquet_columns, only: chart_column_t, column_context_t, floquet_column, scene_columns, &
       chart_keys, accuracy_none, accuracy_verdict, n_chart_columns, chart_values, clamp_magnitude, log10_floor, &
       col_alpha, col_a, col_beta, col_omega, col_stable, col_physical, col_stable_paper, col_status, accuracy_growth, &
-      accuracy_estimate
+      accuracy_estimate, accuracy_argument
    use hillstab_batch_output_columns, only: column_t, style_flag, column_lines, columns_text, put_value
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
@@ -48,7 +48,7 @@ module hillstab_batch_tasks_chart_columns
    public :: clamp_magnitude, log10_floor, chart_line_length, stacked, chart_line, failed_values
    public :: header_bytes, text_row_bytes, binary_row_bytes, point_amplitude, verdict_lines, col_physical
 
-   !> Characters in one chart line (15 columns of at most 24 characters, with blanks: 224 at
+   !> Characters in one chart line (17 columns of at most 24 characters, with blanks: 254 at
    !> most).
    integer, parameter :: chart_line_length = 280
 
@@ -67,7 +67,7 @@ module hillstab_batch_tasks_chart_columns
    end type chart_layout_t
 
    !> Bytes of a header (an upper bound), of one row as text (an upper bound) and binary.
-   integer(int64), parameter :: header_bytes = 16384, text_row_bytes = 225, binary_row_bytes = 8*16
+   integer(int64), parameter :: header_bytes = 16384, text_row_bytes = 255, binary_row_bytes = 8*18
 
    !> A task writing the chart's columns (chart, points): what runs in units ends as a
    !> serial run ends.
@@ -131,7 +131,8 @@ contains
       do k = 1, n_chart_columns
          if (columns%table(k)%offered) available = [available, k]
       end do
-      call scene_columns(columns%table, available, scene%columns, scene%source, columns%ids, error)
+      call scene_columns(columns%table, available, scene%columns, scene%source, columns%ids, error, &
+                         pack(available, .not. columns%table(available)%on_request))
       columns%digits = columns%table%digits
       columns%styles = columns%table%style
       columns%need = need_nothing
@@ -195,6 +196,9 @@ contains
             "at most "//tolerance//" max(1, |S|)/sqrt(S^2 - 4)"
       case (accuracy_estimate)
          line = line//"the method's own estimate; at status 0 at most the tolerance "//tolerance
+      case (accuracy_argument)
+         line = line//"exact (0 or 1) where |S| > 2; where |S| < 2 from S computed to the tolerance "// &
+            tolerance//": absolute error at most "//tolerance//" max(1, |S|)/(pi sqrt(4 - S^2))"
       case default
          line = line//"to the tolerance "//tolerance//": |error of S| <= max(error_estimate, "//tolerance// &
             ") max(1, |S|) at status 0"

@@ -31,22 +31,22 @@ module hillstab_batch_tasks_floquet_columns
    public :: chart_column_t, column_context_t, floquet_column, choose_columns, scene_columns, chart_keys
    public :: n_chart_columns, chart_values, clamp_magnitude, log10_floor
    public :: col_alpha, col_a, col_beta, col_omega, col_s, col_stable, col_lambda_max, col_mu, col_log10_abs_s, &
-      col_overflow, col_physical, col_stable_paper, col_mu_per_s, col_error_estimate, col_status
+      col_overflow, col_physical, col_stable_paper, col_mu_per_s, col_error_estimate, col_status, col_kind, col_argument
    public :: n_fixed, system_layout_t, system_layout, system_column_names, status_column, system_point_values, &
       plain_table, system_column_table
-   public :: accuracy_none, accuracy_trace, accuracy_verdict, accuracy_growth, accuracy_estimate
+   public :: accuracy_none, accuracy_trace, accuracy_verdict, accuracy_growth, accuracy_estimate, accuracy_argument
 
    !> The header's `# accuracy of` statement for a column of one equation's files: none (the
    !> column needs nothing computed), S to the tolerance, a verdict, the growth (λ, μ), the
-   !> method's own error estimate.
+   !> method's own error estimate, the argument of the largest multiplier.
    integer, parameter :: accuracy_none = 0, accuracy_trace = 1, accuracy_verdict = 2, accuracy_growth = 3, &
-      accuracy_estimate = 4
+      accuracy_estimate = 4, accuracy_argument = 5
 
    !> The columns of one equation's chart and points files, by key in file order (the place of
    !> each is its `col_*` index of hillstab_batch_tasks_chart_columns).
-   character(len=14), parameter :: chart_keys(15) = [character(len=14) :: "alpha", "a", "beta", "omega", "S", &
+   character(len=14), parameter :: chart_keys(17) = [character(len=14) :: "alpha", "a", "beta", "omega", "S", &
       "stable", "lambda_max", "mu", "log10_abs_S", "overflow", "physical", "stable_paper", "mu_per_s", &
-      "error_estimate", "status"]
+      "error_estimate", "status", "kind", "argument"]
 
    !> One column of chart and points files: what the `# columns:` line, the header, the rows
    !> of failed points (`placeholder`, `keep_on_failure`), `&scene columns`, the text of a
@@ -68,6 +68,10 @@ module hillstab_batch_tasks_floquet_columns
       !> too, and its accuracy is stated at |S| = 2)
       logical :: paper = .false.
       logical :: offered = .true.  !! files of this scene offer the column
+      !> an offered column written only when `&scene columns` names it (not in the default
+      !> list: one equation's kind and argument, which its files gained after their first
+      !> version)
+      logical :: on_request = .false.
    end type chart_column_t
 
    !> What the columns' records depend on: the file's kind (one equation's trace or a system's
@@ -99,7 +103,8 @@ module hillstab_batch_tasks_floquet_columns
       col_log10_abs_s = findloc(chart_keys, "log10_abs_S", 1), col_overflow = findloc(chart_keys, "overflow", 1), &
       col_physical = findloc(chart_keys, "physical", 1), col_stable_paper = findloc(chart_keys, "stable_paper", 1), &
       col_mu_per_s = findloc(chart_keys, "mu_per_s", 1), col_error_estimate = findloc(chart_keys, "error_estimate", 1), &
-      col_status = findloc(chart_keys, "status", 1)
+      col_status = findloc(chart_keys, "status", 1), col_kind = findloc(chart_keys, "kind", 1), &
+      col_argument = findloc(chart_keys, "argument", 1)
    !> Number of columns a chart or points file can hold.
    integer, parameter :: n_chart_columns = size(chart_keys)
 
@@ -202,9 +207,16 @@ contains
             column = record("stable", "", text, style_flag, need_verdict, placeholder=-1.0_wp)
          end if
       case ("kind")
-         column = record("kind", "", "0 stable, 1 unstable at +1, 2 at -1, 3 combination (Krein collision), 4 "// &
-                         "damped (asymptotically stable), 5 undecided (stable = -1)", style_integer, need_verdict, &
-                         placeholder=-1.0_wp)
+         if (system) then
+            column = record("kind", "", "0 stable, 1 unstable at +1, 2 at -1, 3 combination (Krein collision), "// &
+                            "4 damped (asymptotically stable), 5 undecided (stable = -1)", style_integer, need_verdict, &
+                            placeholder=-1.0_wp)
+         else
+            column = record("kind", "", "0 stable, 1 unstable at +1 (S > 2: a tongue of even order), 2 at -1 "// &
+                            "(S < -2: odd order), 4 damped (asymptotically stable), 5 undecided (stable = 0.5)", &
+                            style_flag, need_verdict, placeholder=-1.0_wp)
+            column%on_request = .true.
+         end if
       case ("lambda_max")
          if (system) then
             column = record("lambda_max", "", "largest |multiplier| (1e300 when it overflows; mu is exact)", &
@@ -223,8 +235,15 @@ contains
                             style_e11, need_growth)
          end if
       case ("argument")
-         column = record("argument", "", "arg(lambda)/pi of the largest multiplier, in [0, 1]", style_e17, &
-                         need_growth)
+         if (system) then
+            column = record("argument", "", "arg(lambda)/pi of the largest multiplier, in [0, 1]", style_e17, &
+                            need_growth)
+         else
+            column = record("argument", "", "arg(lambda)/pi of the largest multiplier, in [0, 1]: 0 at +1, 1 at "// &
+                            "-1, arccos(S/2)/pi where |S| < 2 (the rotation number of the swing per period)", &
+                            style_e17, need_growth, placeholder=-1.0_wp, accuracy=accuracy_argument)
+            column%on_request = .true.
+         end if
       case ("log10_abs_S")
          column = record("log10_abs_S", "", "log10|S|, exact also where S overflows", style_e11, need_trace, &
                          placeholder=-999.0_wp)
@@ -386,19 +405,22 @@ contains
       known = columns_text(plain, available)
    end subroutine choose_columns
    !> The columns a chart or points file holds: those `&scene columns` (`text`) names
-   !> (`choose_columns`), else every one `available`, in file order; err_input naming the
-   !> scene file, `&scene` and `columns` for a name that is not available or is named twice,
-   !> or for no name at all.
-   subroutine scene_columns(table, available, text, source, ids, error)
+   !> (`choose_columns`), else every one `available` (or those of `defaults`), in file order;
+   !> err_input naming the scene file, `&scene` and `columns` for a name that is not available
+   !> or is named twice, or for no name at all.
+   subroutine scene_columns(table, available, text, source, ids, error, defaults)
       type(chart_column_t), intent(in) :: table(:)  !! every column of the file's kind
       integer, intent(in) :: available(:)           !! the indices of `table` this file offers
       character(len=*), intent(in) :: text          !! `&scene columns`
       character(len=*), intent(in) :: source        !! the scene file
       integer, allocatable, intent(out) :: ids(:)   !! the columns written, in order
       type(error_t), allocatable, intent(out) :: error  !! err_input naming &scene columns
+      !> the columns written when `text` is blank (default `available`): those not only on request
+      integer, intent(in), optional :: defaults(:)
       character(len=:), allocatable :: bad, known
       if (len_trim(text) == 0) then
          ids = available
+         if (present(defaults)) ids = defaults
          return
       end if
       call choose_columns(table, available, text, ids, bad, known)
@@ -459,6 +481,9 @@ contains
       if (present(per_second) .and. growth) v(col_mu_per_s) = v(col_mu)*per_second + 0.0_wp
       v(col_error_estimate) = min(estimate, clamp_magnitude)
       v(col_status) = real(status, wp)
+      v(col_kind) = real(f%kind, wp)
+      v(col_argument) = 0.0_wp
+      if (growth) v(col_argument) = abs(f%argument(1))/pi
    end function chart_values
 
    !> Every column of a system of n degrees of freedom, by name, in file order.
