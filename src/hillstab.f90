@@ -49,6 +49,8 @@
 !>   [[hillstab_hill_system:prepare_system]], `hillstab_max_dof` = [[hillstab_hill_system:max_dof]]
 !> - [[hillstab_hill_system_matrix]]: [[hillstab_hill_system_matrix:matrix_system_t]]
 !> - [[hillstab_hill_system_scalar]]: [[hillstab_hill_system_scalar:scalar_system_t]]
+!> - [[hillstab_hill_systems]]: `hillstab_system_names` = [[hillstab_hill_systems:system_names]],
+!>   [[hillstab_hill_systems:new_system]]
 !> - [[hillstab_hill_system_floquet]]: [[hillstab_hill_system_floquet:system_floquet]]
 !> - [[hillstab_hill_coefficient]]:
 !>   `hillstab_sampling_endpoint` = [[hillstab_hill_coefficient:sampling_endpoint]],
@@ -235,6 +237,7 @@ module hillstab
    use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system, hillstab_max_dof => max_dof
    use hillstab_hill_system_matrix, only: matrix_system_t
    use hillstab_hill_system_scalar, only: scalar_system_t
+   use hillstab_hill_systems, only: hillstab_system_names => system_names, new_system
    use hillstab_hill_system_floquet, only: system_floquet
    use hillstab_hill_coefficient, only: hillstab_sampling_endpoint => sampling_endpoint, &
       hillstab_sampling_midpoint => sampling_midpoint, hillstab_sampling_average => sampling_average, &

@@ -17,6 +17,9 @@ module test_system
    use hillstab_hill_system, only: system_form_t, prepare_system, cholesky_inverse
    use hillstab_hill_system_matrix, only: matrix_system_t
    use hillstab_hill_system_scalar, only: scalar_system_t
+   use hillstab_hill_systems, only: system_names, new_system, is_system_name, system_purpose, system_choice, &
+      system_kinds_text
+   use hillstab_hill_system, only: hill_system_t
    use hillstab_hill_system_floquet
    use hillstab_integrate_system
    use hillstab_integrate_system_point, only: system_point
@@ -35,6 +38,7 @@ contains
       suite = new_testsuite("system", [ &
          new_unittest("one_dof_is_scalar_trace", one_dof_is_scalar_trace), &
          new_unittest("one_result_two_routes", one_result_two_routes), &
+         new_unittest("kinds_of_system", kinds_of_system), &
          new_unittest("decoupled_multipliers", decoupled_multipliers), &
          new_unittest("reference_two_dof", reference_two_dof), &
          new_unittest("reference_three_dof", reference_three_dof), &
@@ -136,6 +140,44 @@ contains
          end do
       end do
    end subroutine one_dof_is_scalar_trace
+
+   !> The kinds of system (hillstab_hill_systems): each name makes an empty system of that name
+   !> (any case), has a purpose and a template line that starts with it; an unknown name is
+   !> refused naming every kind and its purpose.
+   subroutine kinds_of_system(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      class(hill_system_t), allocatable :: system
+      type(error_t), allocatable :: error
+      integer :: k
+      call check(ctx, size(system_names) >= 2, "two kinds at least")
+      do k = 1, size(system_names)
+         call new_system(" "//trim(system_names(k))//" ", system, error)
+         call check(ctx, .not. allocated(error) .and. allocated(system), trim(system_names(k))//": made")
+         if (allocated(system)) call check(ctx, system%name() == trim(system_names(k)), &
+                                           trim(system_names(k))//": its name")
+         call check(ctx, is_system_name(upper(trim(system_names(k)))), trim(system_names(k))//": any case")
+         call check(ctx, len(system_purpose(system_names(k))) > 10, trim(system_names(k))//": a purpose")
+         call check(ctx, index(system_choice(system_names(k)), trim(system_names(k))//": ") == 1, &
+                    trim(system_names(k))//": its template line")
+      end do
+      call check(ctx, .not. is_system_name("elastic") .and. system_purpose("elastic") == "", "elastic is a model")
+      call new_system("chain", system, error)
+      call check(ctx, allocated(error) .and. .not. allocated(system), "chain refused")
+      if (allocated(error)) call check(ctx, error%message == "unknown system 'chain' ("// &
+                                       system_kinds_text("", "; ")//")" .and. &
+                                       index(error%message, "equations: n coupled equations in physical time") > 0, &
+                                       error%message)
+   contains
+      pure function upper(text) result(out)
+         character(len=*), intent(in) :: text
+         character(len=len(text)) :: out
+         integer :: i
+         out = text
+         do i = 1, len(text)
+            if (text(i:i) >= "a" .and. text(i:i) <= "z") out(i:i) = achar(iachar(text(i:i)) - 32)
+         end do
+      end function upper
+   end subroutine kinds_of_system
 
    !> The one Floquet result by its two routes at the same points of Mathieu's equation, undamped
    !> and damped: from the scalar trace (`floquet_from_trace`, then `complete_from_trace`) and

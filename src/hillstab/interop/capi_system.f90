@@ -44,7 +44,8 @@ module hillstab_interop_capi_system
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
-   use hillstab_core_text, only: integer_text, real_text, lower_case
+   use hillstab_core_text, only: integer_text, real_text, lower_case, alternatives_text
+   use hillstab_hill_systems, only: system_names, new_system, is_system_name, system_kinds_text
    use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system, check_system_point
    use hillstab_integrate_system_point, only: resolve_exponents
    use hillstab_batch_tasks_system_values, only: scalar_point
@@ -150,7 +151,8 @@ contains
       character(len=:), allocatable :: which
       logical :: ok
       if (.not. c_associated(name)) then
-         call set_error(error, err_invalid_parameter, where//": name: a null pointer (""system"" or ""equations"")")
+         call set_error(error, err_invalid_parameter, where//": name: a null pointer (expected "// &
+                        alternatives_text(system_names)//")")
       else if (.not. c_associated(system)) then
          call set_error(error, err_invalid_parameter, where//": system: a null pointer (pass the address of a "// &
             "hillstab_system *)")
@@ -160,17 +162,13 @@ contains
          if (.not. ok) then
             call set_error(error, err_invalid_parameter, where//": name: longer than "//integer_text(max_c_text)// &
                " characters")
-         else if (lower_case(which) /= "system" .and. lower_case(which) /= "equations") then
-            call set_error(error, err_invalid_parameter, where//": name: unknown system '"//which//"' (system: "// &
-               "the matrix system of &system; equations: n coupled equations in physical time, &equations)")
+         else if (.not. is_system_name(which)) then
+            call set_error(error, err_invalid_parameter, where//": name: unknown system '"//which//"' ("// &
+               system_kinds_text("", "; ")//")")
          else
             call c_f_pointer(system, out)
             allocate (handle)
-            if (lower_case(which) == "system") then
-               allocate (matrix_system_t :: handle%system)
-            else
-               allocate (equations_system_t :: handle%system)
-            end if
+            call new_system(which, handle%system, error)
             out = c_loc(handle)
          end if
       end if

@@ -18,8 +18,7 @@ module hillstab_batch_run_read
    use hillstab_core_text, only: real_text, quoted
    use hillstab_hill_model, only: hill_model_t
    use hillstab_hill_models, only: model_names, new_model
-   use hillstab_hill_system_matrix, only: matrix_system_t
-   use hillstab_hill_system_equation, only: equations_system_t
+   use hillstab_hill_systems, only: system_names, new_system, is_system_name, system_choice, system_kinds_text
    use hillstab_integrate_system, only: system_method_from_name, system_method_names_text
    use hillstab_hill_coefficient, only: sampling_name, sampling_from_name, sampling_names_text
    use hillstab_hill_units, only: physical_t, physical_epsilon, check_physical, equilibrium_length
@@ -280,12 +279,8 @@ contains
       if (allocated(error)) return
       task_name = lower_case(trim(task))
 
-      if (lower_case(trim(model)) == "system" .or. lower_case(trim(model)) == "equations") then
-         if (lower_case(trim(model)) == "system") then
-            allocate (matrix_system_t :: this%system)
-         else
-            allocate (equations_system_t :: this%system)
-         end if
+      if (is_system_name(model)) then
+         call new_system(model, this%system, model_error)
          this%method%kind = system_method_from_name(trim(method))
          if (this%method%kind < 0) then
             call fail(error, file%path, group%name, "method", "a system (model = '"//lower_case(trim(model))// &
@@ -295,9 +290,8 @@ contains
       else
          call new_model(trim(model), this%model, model_error)
          if (allocated(model_error)) then
-            call fail(error, file%path, group%name, "model", model_error%message//" (or 'system': n coupled "// &
-               "equations, the matrices in &system; or 'equations': n coupled equations in physical time, "// &
-               "&equations)")
+            call fail(error, file%path, group%name, "model", model_error%message//" ("// &
+               system_kinds_text("or ", "; ", quote=.true.)//")")
             return
          end if
          this%method%kind = method_from_name(trim(method))
@@ -392,11 +386,9 @@ contains
          if (k > 1) text = text//" | "
          text = text//model%name()//": "//model%summary()
       end do
-      text = text//" | system: n coupled equations M x'' + (C + G) x' + K(tau) x = 0, the matrices in &system "// &
-             "(tasks chart, points, coefficient, boundaries, regions, edges; guide page Coupled systems) | "// &
-             "equations: n coupled equations M x'' + (C + G) x' + K(t) x = 0 in physical time, or the first-order "// &
-             "form y' = A(t) y (state), with named parameters and matrices (&equations; guide page Your problem "// &
-             "as you write it)"
+      do k = 1, size(system_names)
+         text = text//" | "//system_choice(system_names(k))
+      end do
    end function model_choices
 
    !> The methods for a template's comment: "auto (…) | formula (…) | …".
