@@ -141,8 +141,8 @@ contains
       end do
    end subroutine one_dof_is_scalar_trace
 
-   !> The kinds of system (hillstab_hill_systems): each name makes an empty system of that name
-   !> (any case), has a purpose and a template line that starts with it; an unknown name is
+   !> The kinds of system (hillstab_hill_systems): each name makes an empty system of that name,
+   !> is known in any case, has a purpose and a template line that starts with it; an unknown name is
    !> refused naming every kind and its purpose.
    subroutine kinds_of_system(ctx)
       type(test_context_t), intent(inout) :: ctx
@@ -155,11 +155,11 @@ contains
          call check(ctx, .not. allocated(error) .and. allocated(system), trim(system_names(k))//": made")
          if (allocated(system)) call check(ctx, system%name() == trim(system_names(k)), &
                                            trim(system_names(k))//": its name")
-         call check(ctx, is_system_name(upper(trim(system_names(k)))), trim(system_names(k))//": any case")
          call check(ctx, len(system_purpose(system_names(k))) > 10, trim(system_names(k))//": a purpose")
          call check(ctx, index(system_choice(system_names(k)), trim(system_names(k))//": ") == 1, &
                     trim(system_names(k))//": its template line")
       end do
+      call check(ctx, is_system_name(" EQUATIONS") .and. is_system_name("System "), "any case, blanks trimmed")
       call check(ctx, .not. is_system_name("elastic") .and. system_purpose("elastic") == "", "elastic is a model")
       call new_system("chain", system, error)
       call check(ctx, allocated(error) .and. .not. allocated(system), "chain refused")
@@ -167,16 +167,6 @@ contains
                                        system_kinds_text("", "; ")//")" .and. &
                                        index(error%message, "equations: n coupled equations in physical time") > 0, &
                                        error%message)
-   contains
-      pure function upper(text) result(out)
-         character(len=*), intent(in) :: text
-         character(len=len(text)) :: out
-         integer :: i
-         out = text
-         do i = 1, len(text)
-            if (text(i:i) >= "a" .and. text(i:i) <= "z") out(i:i) = achar(iachar(text(i:i)) - 32)
-         end do
-      end function upper
    end subroutine kinds_of_system
 
    !> The one Floquet result by its two routes at the same points of Mathieu's equation, undamped
