@@ -39,6 +39,7 @@ contains
          new_unittest("one_dof_is_scalar_trace", one_dof_is_scalar_trace), &
          new_unittest("one_result_two_routes", one_result_two_routes), &
          new_unittest("kinds_of_system", kinds_of_system), &
+         new_unittest("zero_multipliers_finite", zero_multipliers_finite), &
          new_unittest("decoupled_multipliers", decoupled_multipliers), &
          new_unittest("reference_two_dof", reference_two_dof), &
          new_unittest("reference_three_dof", reference_three_dof), &
@@ -140,6 +141,27 @@ contains
          end do
       end do
    end subroutine one_dof_is_scalar_trace
+
+   !> A singular monodromy (Φ = 0 of a damped first-order pair: every multiplier 0, the
+   !> exponents −huge) leaves every number of the result finite: ln|λ_max| is −huge, not the
+   !> exponent times the period (which overflows), and the verdict is damped, stable.
+   subroutine zero_multipliers_finite(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(system_form_t) :: form
+      type(floquet_t) :: f
+      real(wp) :: phi(2, 2)
+      form%n = 2
+      form%states = 2
+      form%first_order = .true.
+      form%hamiltonian = .false.
+      form%period = 4.0_wp
+      phi = 0.0_wp
+      call system_floquet(phi, form, 1.0e-12_wp, f)
+      call check(ctx, f%log_modulus(1) == -huge(1.0_wp) .and. f%exponent == -huge(1.0_wp), "ln|lambda_max| = -huge")
+      call check(ctx, all(f%exponents == -huge(1.0_wp)), "every exponent -huge")
+      call check(ctx, f%verdict == verdict_stable .and. f%kind == kind_damped .and. f%stable, "damped, stable")
+      call check(ctx, f%a1 == 0.0_wp .and. f%a2 == 0.0_wp .and. .not. f%overflow, "a1 = a2 = 0")
+   end subroutine zero_multipliers_finite
 
    !> The kinds of system (hillstab_hill_systems): each name makes an empty system of that name,
    !> is known in any case, has a purpose and a template line that starts with it; an unknown name is

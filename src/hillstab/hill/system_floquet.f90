@@ -495,7 +495,10 @@ contains
          end if
       end do
       r%exponent = r%exponents(1)
-      r%log_modulus(1) = r%exponent*period
+      ! a zero multiplier (an eigenvalue solver that failed) has the exponent -huge, whose
+      ! product with the period would overflow
+      r%log_modulus(1) = -huge(1.0_wp)
+      if (r%exponent > -huge(1.0_wp)/max(period, 1.0_wp)) r%log_modulus(1) = r%exponent*period
       r%argument(1) = atan2(aimag(r%multipliers(1)), real(r%multipliers(1)))
       ! the smallest multiplier (the largest's partner for one degree of freedom)
       t = r%multipliers(size(r%multipliers))

@@ -32,8 +32,8 @@ module hillstab_interop_capi_system_batch
    use hillstab_integrate_system, only: system_method_t
    use hillstab_batch_scene_group_chart, only: chart_grid_t, grid_alpha, grid_beta, scale_linear, scale_refusal
    use hillstab_batch_scene_checks, only: max_grid_count
-   use hillstab_batch_tasks_system_values, only: system_values, system_row_values, system_column_names, n_fixed, &
-      status_column
+   use hillstab_batch_tasks_system_values, only: system_values, system_row_values
+   use hillstab_batch_tasks_floquet_columns, only: system_column_names, n_fixed, status_column
    use hillstab_interop_sizes, only: count_refusal
    use hillstab_interop_capi_models, only: copy_text
    use hillstab_interop_capi_system, only: system_handle_t, handle_system, check_output, outcome_status, &

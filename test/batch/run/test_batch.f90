@@ -17,7 +17,8 @@ module test_batch
    use hillstab_hill_system, only: system_form_t, prepare_system
    use hillstab_integrate_monodromy, only: monodromy_trace
    use hillstab_integrate_system, only: system_method_t
-   use hillstab_batch_tasks_system_values, only: system_values, n_fixed
+   use hillstab_batch_tasks_system_values, only: system_values
+   use hillstab_batch_tasks_floquet_columns, only: n_fixed
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use hillstab_core_error, only: error_t, err_input, err_io, err_integration, err_invalid_parameter, err_points_failed
    use hillstab_batch_scene_types, only: scene_t

@@ -23,8 +23,9 @@ module hillstab_batch_tasks_system
    use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system, system_equation_text, &
       system_description
    use hillstab_integrate_system, only: system_method_t, system_method_name
-   use hillstab_batch_tasks_system_values, only: n_fixed, system_point_values, system_values, system_row_values, &
-      scalar_path, failure_text, system_column_names, system_column_table, status_column, plain_table
+   use hillstab_batch_tasks_system_values, only: system_values, system_row_values, scalar_path, failure_text
+   use hillstab_batch_tasks_floquet_columns, only: n_fixed, system_point_values, system_column_names, &
+      system_column_table, status_column, plain_table
    use hillstab_batch_output_columns, only: column_t, put_row, columns_text
    use hillstab_batch_tasks_floquet_columns, only: chart_column_t, scene_columns
    use hillstab_batch_scene_types, only: scene_t, task_t, scene_header
@@ -41,9 +42,7 @@ module hillstab_batch_tasks_system
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
-   public :: system_chart_task_t, system_points_task_t, system_chart_task, system_points_task, system_task_names, &
-      system_column_names, system_point_values
-   public :: system_values, system_row_values, n_fixed
+   public :: system_chart_task_t, system_points_task_t, system_chart_task, system_points_task, system_task_names
 
    !> Most exponent columns (mu_1 … mu_n, n ≤ max_dof).
    integer, parameter :: max_dof_columns = 20

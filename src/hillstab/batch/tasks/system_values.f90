@@ -1,4 +1,5 @@
-!> The values of the columns of a system's chart and points files at each point, as task
+!> The values of the columns of a system's chart and points files at each point (the columns,
+!> their order and each value from the one Floquet result: hillstab_batch_tasks_floquet_columns), as task
 !> `chart` and `points` (hillstab_batch_tasks_system) and the C API
 !> (hillstab_interop_capi_system_batch) compute them: the exact monodromy by the chosen
 !> method (hillstab_integrate_system_point, the nodes shared along a chart row) and its
@@ -12,7 +13,7 @@
 !> call system_values(system, form, system_method_t(system_auto, 1.0e-10_wp), 2.0_wp, 0.5_wp, v, failed, message)
 !>```
 module hillstab_batch_tasks_system_values
-   use hillstab_core_kinds, only: wp, pi
+   use hillstab_core_kinds, only: wp
    use hillstab_core_error, only: error_t, set_error, err_integration
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_core_stats, only: work_stats_t
@@ -24,16 +25,11 @@ module hillstab_batch_tasks_system_values
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, method_t, method_auto
    use hillstab_integrate_system, only: system_method_t, system_monodromy_t, system_nodes_t, system_auto
    use hillstab_integrate_system_point, only: system_point
-   use hillstab_batch_output_columns, only: column_t, failed_row
-   use hillstab_batch_tasks_floquet_columns, only: chart_column_t, column_context_t, floquet_column, n_fixed, &
-      system_layout_t, system_layout, system_column_names, status_column, system_point_values, plain_table, &
-      system_column_table
+   use hillstab_batch_tasks_floquet_columns, only: n_fixed, system_layout_t, system_layout, system_point_values
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
-   public :: n_fixed, system_layout_t, system_layout, system_column_names, system_column_table, status_column, &
-      system_point_values, system_values, system_row_values, scalar_path, scalar_point, failure_text, &
-      plain_table
+   public :: system_values, system_row_values, scalar_path, scalar_point, failure_text
 
 
 contains
