@@ -116,15 +116,18 @@ enum { HILLSTAB_NEED_VERDICT = 1, HILLSTAB_NEED_GROWTH = 2, HILLSTAB_NEED_TRACE 
 /* The values of a point, values[j][HILLSTAB_VALUE_*]: S (+-1e300 with overflow = 1 beyond),
  * ln|S|, log10|S| (at least -300), overflow, stable (1, 0, or 0.5 when marginal),
  * stable_paper (|S1| <= 2), lambda_max (at most 1e300), ln|lambda| of both multipliers of x
- * (largest first), mu = ln|lambda_max|/2 per unit tau, the method's error estimate (-1: none).
+ * (largest first), mu = ln|lambda_max|/2 per unit tau, the method's error estimate (-1: none),
+ * the kind (0 stable, 1 unstable at +1, 2 at -1, 4 damped, 5 undecided) and arg(lambda_max)/pi
+ * (0 at +1, 1 at -1, the rotation number arccos(S/2)/pi where |S| < 2).
  * With damping S (and ln|S|, log10|S|, stable_paper) is S1, the trace of chi = e^(eps tau/2) x;
- * stable, lambda_max, the ln|lambda| and mu are of x. Below HILLSTAB_NEED_GROWTH a chart leaves
- * the logarithms, lambda_max and mu at 0. */
+ * stable, lambda_max, the ln|lambda|, mu and the argument are of x. Below HILLSTAB_NEED_GROWTH a
+ * chart leaves the logarithms, lambda_max, mu and the argument at 0. */
 enum {
   HILLSTAB_VALUE_TRACE = 0, HILLSTAB_VALUE_LOG_ABS_TRACE = 1, HILLSTAB_VALUE_LOG10_ABS_TRACE = 2,
   HILLSTAB_VALUE_OVERFLOW = 3, HILLSTAB_VALUE_STABLE = 4, HILLSTAB_VALUE_STABLE_PAPER = 5,
   HILLSTAB_VALUE_LAMBDA_MAX = 6, HILLSTAB_VALUE_LOG_MODULUS_MAX = 7, HILLSTAB_VALUE_LOG_MODULUS_MIN = 8,
-  HILLSTAB_VALUE_EXPONENT = 9, HILLSTAB_VALUE_ERROR_ESTIMATE = 10, HILLSTAB_VALUE_COUNT = 11
+  HILLSTAB_VALUE_EXPONENT = 9, HILLSTAB_VALUE_ERROR_ESTIMATE = 10, HILLSTAB_VALUE_KIND = 11,
+  HILLSTAB_VALUE_ARGUMENT = 12, HILLSTAB_VALUE_COUNT = 13
 };
 
 /* The values by the names of the columns of chart and points files (and of Python's results),

@@ -36,7 +36,7 @@ NEED_VERDICT, NEED_GROWTH, NEED_TRACE = 1, 2, 3
 STATUS_OK, STATUS_ROUNDOFF, STATUS_FAILED = 0, 1, 2
 #: HILLSTAB_VALUE_*: the values of a point, by their index
 VALUES = ("trace", "log_abs_trace", "log10_abs_trace", "overflow", "stable", "stable_paper", "lambda_max",
-          "log_modulus_max", "log_modulus_min", "exponent", "error_estimate")
+          "log_modulus_max", "log_modulus_min", "exponent", "error_estimate", "kind", "argument")
 VALUE_COUNT = len(VALUES)
 
 _c_double_p = ctypes.POINTER(ctypes.c_double)

@@ -38,6 +38,10 @@ lambda_max     x                          the largest multiplier modulus of x ov
 log_moduli     x                          ln|λ| of both multipliers of x (largest first;
                                           a last axis of 2; no column)
 mu             x         exponent         μ = ln λ_max / P, per unit τ (not per second)
+kind           x                          where λ_max leaves the unit circle: 0 stable, 1 at
+                                          +1, 2 at −1, 4 damped, 5 undecided (a system's codes)
+argument       x                          arg λ_max/π: 0 at +1, 1 at −1, the rotation number
+                                          arccos(S/2)/π where |S| < 2
 ============== ========= ================ ==============================================
 
 ``stable`` and ``stable_paper`` alone are verdicts only, screened (fastest).
@@ -55,13 +59,13 @@ from .models import as_model
 
 #: every value `floquet` and `chart` can return, by the files' names
 ALL_VALUES = ("S", "log_abs_S", "log10_abs_S", "overflow", "error_estimate", "stable",
-              "stable_paper", "lambda_max", "log_moduli", "mu")
+              "stable_paper", "lambda_max", "log_moduli", "mu", "kind", "argument")
 #: the earlier names, aliases for this release: earlier name -> the files' name
 ALIASES = {"trace": "S", "log_abs_trace": "log_abs_S", "log10_abs_trace": "log10_abs_S", "exponent": "mu"}
 #: the index of each value in the library's output (HILLSTAB_VALUE_*), by its name
 _INDEX = {"S": "trace", "log_abs_S": "log_abs_trace", "log10_abs_S": "log10_abs_trace", "mu": "exponent"}
-_VERDICTS = {"stable", "stable_paper"}
-_GROWTH = _VERDICTS | {"lambda_max", "log_moduli", "mu"}
+_VERDICTS = {"stable", "stable_paper", "kind"}
+_GROWTH = _VERDICTS | {"lambda_max", "log_moduli", "mu", "argument"}
 
 
 def _canonical(values):

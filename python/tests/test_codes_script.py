@@ -53,7 +53,10 @@ def test_a_new_model_and_method_reach_every_copy(tmp_path):
     open(root / FILES[1], "w", encoding="utf-8").write(methods)
     values = read(root, FILES[7])
     n_values = int(re.search(r"integer, parameter :: value_count = (\d+)", values).group(1))
-    values = re.sub(r"(value_error_estimate = \d+)", r"\1, value_newvalue = {}".format(n_values), values, count=1)
+    last = "value_{} = {}".format(
+        [name for name, index in re.findall(r"value_(\w+) = (\d+)", values) if int(index) == n_values - 1][0],
+        n_values - 1)
+    values = values.replace(last, "{}, value_newvalue = {}".format(last, n_values), 1)
     values = values.replace("value_count = {}".format(n_values), "value_count = {}".format(n_values + 1), 1)
     open(root / FILES[7], "w", encoding="utf-8").write(values)
 

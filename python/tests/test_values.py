@@ -11,7 +11,7 @@ import hillstab
 #: name, an alias for this release (the same array)
 FILE_VALUES = {"S": "trace", "stable": "stable", "lambda_max": "lambda_max", "mu": "exponent",
                "log10_abs_S": "log10_abs_trace", "overflow": "overflow", "error_estimate": "error_estimate",
-               "stable_paper": "stable_paper"}
+               "stable_paper": "stable_paper", "kind": "kind", "argument": "argument"}
 
 
 def same_as_file(out, result, column):
@@ -88,6 +88,26 @@ def test_chart_verdicts_text(cli):
 
 def test_chart_growth(cli):
     compare_chart(cli, "growth", ((0.0, 9.8, 8), (-2.0, 12.0, 30)), columns="alpha beta stable mu lambda_max status")
+
+
+def test_chart_kind_and_argument(cli):
+    # the file's kind and argument (written when named) equal the library's to the bit, for the
+    # full computation and the verdicts alone; Mathieu at alpha = 0 is x'' + beta x = 0, S = 2 cos 2 sqrt(beta)
+    grid = ((0.0, 4.0, 3), (-1.0, 12.0, 40))
+    out, c = compare_chart(cli, "kinds", grid, model="mathieu", tolerance=1e-12,
+                           columns="alpha beta kind argument S status")
+    assert c.names == ("kind", "argument", "S")
+    row = c.beta > 0
+    root = 2.0 * np.sqrt(c.beta[row])
+    inside = np.abs(np.cos(root)) < 0.999
+    assert np.allclose(c.argument[0, row][inside], np.arccos(np.cos(root[inside])) / np.pi, rtol=0, atol=1e-9)
+    assert np.all(c.kind[0, c.beta < 0] == 1) and np.all(c.argument[0, c.beta < 0] == 0.0)
+    assert {0.0, 1.0, 2.0} <= set(np.unique(c.kind))
+    assert np.all(c.argument[c.kind == 2] == 1.0)
+    out, v = compare_chart(cli, "vkinds", grid, model="mathieu", tolerance=1e-12, columns="alpha beta kind status",
+                           fmt="text")
+    assert v.names == ("kind",)
+    assert np.array_equal(v.kind[c.kind != 5], c.kind[c.kind != 5])
 
 
 def test_chart_damped_mathieu(cli):

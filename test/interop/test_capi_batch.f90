@@ -146,6 +146,20 @@ contains
                   call check(ctx, values(value_stable, j) == 0.5_wp .or. values(value_stable, j) == real(stable, wp), &
                      "the verdict")
                   call check(ctx, values(value_stable_paper, j) == real(paper, wp), "the paper's verdict")
+                  ! the kind and the argument of the largest multiplier, from this point's own S
+                  if (values(value_stable, j) == 0.5_wp) then
+                     call check(ctx, values(value_kind, j) == 5.0_wp, "marginal: kind 5")
+                  else if (stable == 1) then
+                     call check(ctx, values(value_kind, j) == merge(4.0_wp, 0.0_wp, k == 2), "stable: kind 0, damped 4")
+                  else
+                     call check(ctx, values(value_kind, j) == merge(1.0_wp, 2.0_wp, s > 0.0_wp), "unstable: kind 1, 2")
+                  end if
+                  if (abs(s) < 2.0_wp) then
+                     call check(ctx, values(value_argument, j), acos(0.5_wp*s)/pi, abs=1.0e-6_wp, &
+                                message="argument = arccos(S/2)/pi")
+                  else
+                     call check(ctx, values(value_argument, j) == merge(0.0_wp, 1.0_wp, s > 0.0_wp), "argument 0 or 1")
+                  end if
                   call check(ctx, values(value_log_abs_trace, j), log(abs(s)), rel=1.0e-9_wp, abs=1.0e-9_wp, &
                      message="ln|S|")
                   call check(ctx, values(value_lambda_max, j), exp(moduli(1)), rel=1.0e-7_wp, message="lambda_max")

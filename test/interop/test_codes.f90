@@ -39,7 +39,7 @@ module test_codes
       region_status_name
    use hillstab_interop_capi_batch, only: value_trace, value_log_abs_trace, value_log10_abs_trace, value_overflow, &
       value_stable, value_stable_paper, value_lambda_max, value_log_modulus_max, value_log_modulus_min, &
-      value_exponent, value_error_estimate, value_count
+      value_exponent, value_error_estimate, value_kind, value_argument, value_count
    implicit none
    private
    public :: collect_codes
@@ -55,12 +55,13 @@ module test_codes
    !> The names of the values of a point, by their index (HILLSTAB_VALUE_*, Python's VALUES).
    character(len=*), parameter :: value_names(0:value_count - 1) = [character(len=16) :: "trace", "log_abs_trace", &
       "log10_abs_trace", "overflow", "stable", "stable_paper", "lambda_max", "log_modulus_max", "log_modulus_min", &
-      "exponent", "error_estimate"]
+      "exponent", "error_estimate", "kind", "argument"]
    !> The same values by the files' names (the columns of chart and points files, Python's
    !> names, HILLSTAB_VALUE_S ...): "" where the value has no such name of its own; where it
    !> differs from `value_names` the header declares it too, an alias of the same index.
    character(len=*), parameter :: value_file_names(0:value_count - 1) = [character(len=16) :: "S", "log_abs_S", &
-      "log10_abs_S", "overflow", "stable", "stable_paper", "lambda_max", "", "", "mu", "error_estimate"]
+      "log10_abs_S", "overflow", "stable", "stable_paper", "lambda_max", "", "", "mu", "error_estimate", "kind", &
+      "argument"]
    !> Of those, the ones no file column has (named in the same style).
    character(len=*), parameter :: no_column_names(1) = [character(len=16) :: "log_abs_S"]
 
@@ -894,10 +895,10 @@ contains
       character(len=:), allocatable :: text
       character(len=24), parameter :: values(value_count + 1) = [character(len=24) :: "TRACE", "LOG_ABS_TRACE", &
          "LOG10_ABS_TRACE", "OVERFLOW", "STABLE", "STABLE_PAPER", "LAMBDA_MAX", "LOG_MODULUS_MAX", "LOG_MODULUS_MIN", &
-         "EXPONENT", "ERROR_ESTIMATE", "COUNT"]
+         "EXPONENT", "ERROR_ESTIMATE", "KIND", "ARGUMENT", "COUNT"]
       integer, parameter :: codes(value_count + 1) = [value_trace, value_log_abs_trace, value_log10_abs_trace, &
          value_overflow, value_stable, value_stable_paper, value_lambda_max, value_log_modulus_max, &
-         value_log_modulus_min, value_exponent, value_error_estimate, value_count]
+         value_log_modulus_min, value_exponent, value_error_estimate, value_kind, value_argument, value_count]
       integer :: k
       text = file_text(ctx, header_path)
       call expect("HILLSTAB_NEED_VERDICT", need_verdict)

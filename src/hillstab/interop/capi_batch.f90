@@ -33,7 +33,7 @@ module hillstab_interop_capi_batch
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_ptr
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    !$ use omp_lib, only: omp_get_max_threads
-   use hillstab_core_kinds, only: wp, int64
+   use hillstab_core_kinds, only: wp, int64, pi
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_core_text, only: real_text, integer_text
@@ -55,18 +55,20 @@ module hillstab_interop_capi_batch
    public :: hillstab_c_points, hillstab_c_chart, hillstab_c_chart_scaled, hillstab_c_physical
    public :: value_trace, value_log_abs_trace, value_log10_abs_trace, value_overflow, value_stable, &
       value_stable_paper, value_lambda_max, value_log_modulus_max, value_log_modulus_min, value_exponent, &
-      value_error_estimate, value_count
+      value_error_estimate, value_kind, value_argument, value_count
 
    !> The values of a point, by their index counted from 0 (the header's HILLSTAB_VALUE_*):
    !> S (±1e300 with overflow 1 beyond), ln|S|, log10|S| (at least −300), overflow (1 when
    !> |S| > 1e300), stable (1, 0 or 0.5 when marginal), stable_paper (|S₁| ≤ 2), λ_max (at
    !> most 1e300), ln|λ| of both multipliers of x (largest first), μ = ln|λ_max|/2 per unit
-   !> τ, the method's error estimate (−1: none).
+   !> τ, the method's error estimate (−1: none), the kind (kind_* of the one Floquet result:
+   !> 0 stable, 1 at +1, 2 at −1, 4 damped, 5 undecided) and arg λ_max/π (the rotation number
+   !> arccos(S/2)/π where |S| < 2).
    integer, parameter :: value_trace = 0, value_log_abs_trace = 1, value_log10_abs_trace = 2, value_overflow = 3, &
       value_stable = 4, value_stable_paper = 5, value_lambda_max = 6, value_log_modulus_max = 7, &
-      value_log_modulus_min = 8, value_exponent = 9, value_error_estimate = 10
+      value_log_modulus_min = 8, value_exponent = 9, value_error_estimate = 10, value_kind = 11, value_argument = 12
    !> Number of values of a point.
-   integer, parameter :: value_count = 11
+   integer, parameter :: value_count = 13
 
 contains
 
@@ -143,6 +145,7 @@ contains
          v(value_log_modulus_max) = f%log_modulus(1)
          v(value_log_modulus_min) = f%log_modulus(2)
          v(value_exponent) = f%exponent + 0.0_wp  ! no -0.0
+         v(value_argument) = abs(f%argument(1))/pi
       else
          v(value_log_abs_trace) = 0.0_wp
          v(value_log10_abs_trace) = 0.0_wp
@@ -150,8 +153,10 @@ contains
          v(value_log_modulus_max) = 0.0_wp
          v(value_log_modulus_min) = 0.0_wp
          v(value_exponent) = 0.0_wp
+         v(value_argument) = 0.0_wp
       end if
       v(value_error_estimate) = min(estimate, clamp_magnitude)
+      v(value_kind) = real(f%kind, wp)
    end subroutine computed_values
 
    !> The placeholders of a failed point (a file's status 2 row).
@@ -164,6 +169,8 @@ contains
       v(value_stable_paper) = -1.0_wp
       v(value_lambda_max) = -1.0_wp
       v(value_error_estimate) = -1.0_wp
+      v(value_kind) = -1.0_wp
+      v(value_argument) = -1.0_wp
    end subroutine failed_point_values
 
    !> `int hillstab_points(const hillstab_model *model, size_t n, const double *alpha, const
