@@ -1,9 +1,9 @@
 !> The kinds of system a scene (`&scene model`) and a C program (`hillstab_system_new_named`)
 !> can name, in one place: each kind's name, what it is in a message and in a template's list
 !> of models, and an empty system of it. A new kind is its module (a type extending
-!> `hill_system_t`, hillstab_hill_system) plus its row here: its name in `system_names` and
-!> its cases in `new_system`, `system_purpose` and `system_choice`; the scene reader, the
-!> templates and the C API find it here.
+!> `hill_system_t`, hillstab_hill_system) plus its row here: a `system_kind_t` in
+!> `system_kinds` and its case in `new_system`; the scene reader, the templates and the C
+!> API find it here.
 !>
 !> Kinds:
 !> - `system`: n coupled equations M x'' + (C + G) x' + K(τ) x = 0, the matrices in `&system`
@@ -24,10 +24,27 @@ module hillstab_hill_systems
    use hillstab_hill_system_equation, only: equations_system_t
    implicit none
    private
-   public :: system_names, new_system, is_system_name, system_purpose, system_choice, system_kinds_text
+   public :: system_kind_t, system_kinds, system_names, new_system, is_system_name, system_kinds_text
 
+   !> One kind of system: its name, what it is in a message, and its line in a template's list
+   !> of models (its equation, its group, its tasks and its guide page).
+   type :: system_kind_t
+      character(len=9) :: name      !! as `&scene model` and `hillstab_system_new_named` take it
+      character(len=60) :: purpose  !! for messages
+      character(len=240) :: choice  !! for a template's list of models
+   end type system_kind_t
+
+   !> The kinds, one row each (the order of `new_system`'s cases).
+   type(system_kind_t), parameter :: system_kinds(2) = [ &
+      system_kind_t("system", "n coupled equations, the matrices in &system", &
+                    "system: n coupled equations M x'' + (C + G) x' + K(tau) x = 0, the matrices in &system (tasks "// &
+                    "chart, points, coefficient, boundaries, regions, edges; guide page Coupled systems)"), &
+      system_kind_t("equations", "n coupled equations in physical time, &equations", &
+                    "equations: n coupled equations M x'' + (C + G) x' + K(t) x = 0 in physical time, or the "// &
+                    "first-order form y' = A(t) y (state), with named parameters and matrices (&equations; guide "// &
+                    "page Your problem as you write it)")]
    !> The kinds' names, as `&scene model` and `hillstab_system_new_named` take them.
-   character(len=*), parameter :: system_names(2) = [character(len=9) :: "system", "equations"]
+   character(len=*), parameter :: system_names(size(system_kinds)) = system_kinds%name
 
 contains
 
@@ -52,34 +69,6 @@ contains
       is_system_name = name_position(name, system_names) > 0
    end function is_system_name
 
-   !> What the kind `name` is, for messages ("" for a name that is none).
-   pure function system_purpose(name) result(text)
-      character(len=*), intent(in) :: name  !! a kind's name
-      character(len=:), allocatable :: text
-      select case (name_position(name, system_names))
-      case (1); text = "n coupled equations, the matrices in &system"
-      case (2); text = "n coupled equations in physical time, &equations"
-      case default; text = ""
-      end select
-   end function system_purpose
-
-   !> The kind `name` in a template's list of models: its equation, its group, its tasks and
-   !> its guide page ("" for a name that is none).
-   pure function system_choice(name) result(text)
-      character(len=*), intent(in) :: name  !! a kind's name
-      character(len=:), allocatable :: text
-      select case (name_position(name, system_names))
-      case (1)
-         text = "system: n coupled equations M x'' + (C + G) x' + K(tau) x = 0, the matrices in &system (tasks "// &
-                "chart, points, coefficient, boundaries, regions, edges; guide page Coupled systems)"
-      case (2)
-         text = "equations: n coupled equations M x'' + (C + G) x' + K(t) x = 0 in physical time, or the "// &
-                "first-order form y' = A(t) y (state), with named parameters and matrices (&equations; guide page "// &
-                "Your problem as you write it)"
-      case default; text = ""
-      end select
-   end function system_choice
-
    !> Every kind with its purpose for a message: `prefix`'name': purpose, joined by `separator`
    !> ("system: n coupled …; equations: …" with prefix "" and separator "; ").
    pure function system_kinds_text(prefix, separator, quote) result(text)
@@ -96,7 +85,7 @@ contains
       text = ""
       do k = 1, size(system_names)
          if (k > 1) text = text//separator
-         text = text//prefix//mark//trim(system_names(k))//mark//": "//system_purpose(system_names(k))
+         text = text//prefix//mark//trim(system_names(k))//mark//": "//trim(system_kinds(k)%purpose)
       end do
    end function system_kinds_text
 end module hillstab_hill_systems

@@ -33,20 +33,22 @@ module hillstab_interop_capi_batch
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_ptr
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    !$ use omp_lib, only: omp_get_max_threads
-   use hillstab_core_kinds, only: wp, int64, pi
+   use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_core_text, only: real_text, integer_text
    use hillstab_hill_model, only: hill_model_t, hill_point_t, check_point, check_batch
    use hillstab_hill_transfer, only: trace_t
-   use hillstab_hill_floquet, only: floquet_t, set_from_trace, largest_multiplier_modulus
+   use hillstab_hill_floquet, only: floquet_t, set_from_trace
    use hillstab_hill_units, only: physical_t, physical_beta, physical_epsilon, check_physical
    use hillstab_hill_model_pendulum, only: pendulum_alpha
    use hillstab_integrate_monodromy, only: method_t, monodromy_trace, monodromy_trace_batch, batch_plan_t, &
       prepare_batch, method_name, method_table, need_verdict, need_growth, need_trace
    use hillstab_batch_scene_group_chart, only: chart_grid_t, grid_alpha, grid_beta, scale_linear, scale_refusal
    use hillstab_batch_scene_checks, only: max_grid_count
-   use hillstab_batch_tasks_chart_columns, only: clamp_magnitude, log10_floor
+   use hillstab_batch_tasks_floquet_columns, only: n_chart_columns, chart_values, chart_placeholders, col_s, &
+      col_log10_abs_s, col_overflow, col_stable, col_stable_paper, col_lambda_max, col_mu, col_error_estimate, &
+      col_kind, col_argument
    use hillstab_interop_outcome, only: record_outcome
    use hillstab_interop_sizes, only: count_refusal, row_extent
    use hillstab_interop_capi_models, only: model_handle_t, handle_model
@@ -69,6 +71,10 @@ module hillstab_interop_capi_batch
       value_log_modulus_min = 8, value_exponent = 9, value_error_estimate = 10, value_kind = 11, value_argument = 12
    !> Number of values of a point.
    integer, parameter :: value_count = 13
+   !> The column of chart and points files each value is (its `col_*` place), 0 for the
+   !> values no file has (ln|S|, the two ln|λ|).
+   integer, parameter :: value_columns(0:value_count - 1) = [col_s, 0, col_log10_abs_s, col_overflow, col_stable, &
+      col_stable_paper, col_lambda_max, 0, 0, col_mu, col_error_estimate, col_kind, col_argument]
 
 contains
 
@@ -120,58 +126,40 @@ contains
    end subroutine check_request
 
    !> The values of one point from its trace: those of a chart or points file
-   !> (`chart_values`); below need_growth (`growth` false) the multipliers, μ and the
-   !> logarithms are 0, as a verdict file has them.
+   !> (`chart_values`, through `value_columns`), and ln|S| and both ln|λ|, which no file has;
+   !> below need_growth (`growth` false) the multipliers, μ, the argument and the logarithms
+   !> are 0, as a verdict file has them.
    pure subroutine computed_values(f, growth, v)
       type(floquet_t), intent(in) :: f  !! the point's Floquet data
       logical, intent(in) :: growth  !! the multipliers were computed
       real(c_double), intent(out) :: v(0:value_count - 1)  !! its values
-      real(wp) :: s, estimate
-      logical :: overflow
-      s = f%trace%value
-      overflow = f%trace%overflow .or. abs(s) > clamp_magnitude
-      if (overflow) s = sign(clamp_magnitude, s)
-      estimate = f%trace%error_estimate
-      if (estimate < 0.0_wp) estimate = -1.0_wp
-      v(value_trace) = s
-      v(value_overflow) = merge(1.0_wp, 0.0_wp, overflow)
-      v(value_stable) = merge(1.0_wp, 0.0_wp, f%stable)
-      if (f%marginal) v(value_stable) = 0.5_wp
-      v(value_stable_paper) = merge(1.0_wp, 0.0_wp, f%stable_paper)
+      real(wp) :: columns(n_chart_columns)
+      columns = chart_values(0.0_wp, 0.0_wp, f, .false., status_ok, need=merge(need_growth, need_verdict, growth))
+      call from_columns(columns, v)
       if (growth) then
          v(value_log_abs_trace) = f%trace%log_abs
-         v(value_log10_abs_trace) = max(f%trace%log_abs/log(10.0_wp), log10_floor)
-         v(value_lambda_max) = min(largest_multiplier_modulus(f), clamp_magnitude)
          v(value_log_modulus_max) = f%log_modulus(1)
          v(value_log_modulus_min) = f%log_modulus(2)
-         v(value_exponent) = f%exponent + 0.0_wp  ! no -0.0
-         v(value_argument) = abs(f%argument(1))/pi
-      else
-         v(value_log_abs_trace) = 0.0_wp
-         v(value_log10_abs_trace) = 0.0_wp
-         v(value_lambda_max) = 0.0_wp
-         v(value_log_modulus_max) = 0.0_wp
-         v(value_log_modulus_min) = 0.0_wp
-         v(value_exponent) = 0.0_wp
-         v(value_argument) = 0.0_wp
       end if
-      v(value_error_estimate) = min(estimate, clamp_magnitude)
-      v(value_kind) = real(f%kind, wp)
    end subroutine computed_values
 
-   !> The placeholders of a failed point (a file's status 2 row).
+   !> The placeholders of a failed point: a file's status 2 row (`chart_placeholders`), 0
+   !> where no file has the value.
    pure subroutine failed_point_values(v)
       real(c_double), intent(out) :: v(0:value_count - 1)  !! its values
-      v = 0.0_wp
-      v(value_log10_abs_trace) = -999.0_wp
-      v(value_overflow) = -1.0_wp
-      v(value_stable) = -1.0_wp
-      v(value_stable_paper) = -1.0_wp
-      v(value_lambda_max) = -1.0_wp
-      v(value_error_estimate) = -1.0_wp
-      v(value_kind) = -1.0_wp
-      v(value_argument) = -1.0_wp
+      call from_columns(chart_placeholders(), v)
    end subroutine failed_point_values
+
+   !> The values from a chart row's columns (`value_columns`), 0 where no file has the value.
+   pure subroutine from_columns(columns, v)
+      real(wp), intent(in) :: columns(n_chart_columns)  !! every column of a chart or points file
+      real(c_double), intent(out) :: v(0:value_count - 1)  !! the values
+      integer :: k
+      v = 0.0_wp
+      do k = 0, value_count - 1
+         if (value_columns(k) > 0) v(k) = columns(value_columns(k))
+      end do
+   end subroutine from_columns
 
    !> `int hillstab_points(const hillstab_model *model, size_t n, const double *alpha, const
    !> double *beta, const double *epsilon, int method, int n_segments, int sampling, double

@@ -53,6 +53,10 @@ contains
          call check(ctx, chart_keys(places(k)) == keys(k), "col_"//trim(keys(k))//" is the place of its key")
       end do
       call check(ctx, all([(count(places == k) == 1, k=1, n_chart_columns)]), "every place once")
+      ! a failed point's row as the guide's output page states it (what the C API gives too)
+      call check(ctx, all(chart_placeholders() == [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, -1.0_wp, -1.0_wp, 0.0_wp, &
+                                                   -999.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, 0.0_wp, -1.0_wp, 0.0_wp, &
+                                                   -1.0_wp, -1.0_wp]), "the placeholders of a failed point")
       equation = context_of(.false., "alpha", "beta")
       equation%pendulum = .true.
       do k = 1, n_chart_columns

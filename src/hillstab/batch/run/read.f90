@@ -18,7 +18,7 @@ module hillstab_batch_run_read
    use hillstab_core_text, only: real_text, quoted
    use hillstab_hill_model, only: hill_model_t
    use hillstab_hill_models, only: model_names, new_model
-   use hillstab_hill_systems, only: system_names, new_system, is_system_name, system_choice, system_kinds_text
+   use hillstab_hill_systems, only: system_kinds, new_system, is_system_name, system_kinds_text
    use hillstab_integrate_system, only: system_method_from_name, system_method_names_text
    use hillstab_hill_coefficient, only: sampling_name, sampling_from_name, sampling_names_text
    use hillstab_hill_units, only: physical_t, physical_epsilon, check_physical, equilibrium_length
@@ -386,8 +386,8 @@ contains
          if (k > 1) text = text//" | "
          text = text//model%name()//": "//model%summary()
       end do
-      do k = 1, size(system_names)
-         text = text//" | "//system_choice(system_names(k))
+      do k = 1, size(system_kinds)
+         text = text//" | "//trim(system_kinds(k)%choice)
       end do
    end function model_choices
 

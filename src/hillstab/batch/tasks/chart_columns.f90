@@ -35,7 +35,7 @@ module hillstab_batch_tasks_chart_columns
    use hillstab_batch_scene_physical, only: physical_summary
    use hillstab_batch_scene_file, only: fail
    use hillstab_batch_tasks_floquet_columns, only: chart_column_t, column_context_t, floquet_column, scene_columns, &
-      chart_keys, accuracy_none, accuracy_verdict, n_chart_columns, chart_values, clamp_magnitude, log10_floor, &
+      chart_keys, plain_table, accuracy_none, accuracy_verdict, n_chart_columns, chart_values, clamp_magnitude, log10_floor, &
       col_alpha, col_a, col_beta, col_omega, col_stable, col_physical, col_stable_paper, col_status, accuracy_growth, &
       accuracy_estimate, accuracy_argument
    use hillstab_batch_output_columns, only: column_t, style_flag, column_lines, columns_text, put_value
@@ -147,19 +147,8 @@ contains
    function chart_names(columns) result(text)
       type(chart_layout_t), intent(in) :: columns  !! the file's columns
       character(len=:), allocatable :: text
-      text = columns_text(plain_columns(columns), columns%ids)
+      text = columns_text(plain_table(columns%table), columns%ids)
    end function chart_names
-
-   !> The table as the output columns of hillstab_batch_output_columns (name, unit, meaning,
-   !> style, placeholder).
-   pure function plain_columns(columns) result(table)
-      type(chart_layout_t), intent(in) :: columns  !! the file's columns
-      type(column_t) :: table(size(columns%table))
-      integer :: k
-      do k = 1, size(columns%table)
-         table(k) = columns%table(k)%column_t
-      end do
-   end function plain_columns
 
    !> The header's line on the accuracy of column `k` of a file's columns ("" for a column
    !> that needs nothing computed).
@@ -419,7 +408,7 @@ contains
       character(len=400) :: text(2*n_chart_columns + 3)
       character(len=:), allocatable :: accuracy
       integer :: k, n, id
-      per_column = column_lines(plain_columns(columns), columns%ids)
+      per_column = column_lines(plain_table(columns%table), columns%ids)
       n = 1
       text(1) = "method: "//method_description(scene)
       do k = 1, size(per_column)

@@ -29,7 +29,7 @@ module hillstab_batch_tasks_floquet_columns
    implicit none
    private
    public :: chart_column_t, column_context_t, floquet_column, choose_columns, scene_columns, chart_keys
-   public :: n_chart_columns, chart_values, clamp_magnitude, log10_floor
+   public :: n_chart_columns, chart_values, chart_placeholders, clamp_magnitude, log10_floor
    public :: col_alpha, col_a, col_beta, col_omega, col_s, col_stable, col_lambda_max, col_mu, col_log10_abs_s, &
       col_overflow, col_physical, col_stable_paper, col_mu_per_s, col_error_estimate, col_status, col_kind, col_argument
    public :: n_fixed, system_layout_t, system_layout, system_column_names, status_column, system_point_values, &
@@ -485,6 +485,20 @@ contains
       v(col_argument) = 0.0_wp
       if (growth) v(col_argument) = abs(f%argument(1))/pi
    end function chart_values
+
+   !> The placeholders of one equation's columns (`chart_keys` order): what a failed point
+   !> writes in each column that does not keep its own value (0 in those that do).
+   pure function chart_placeholders() result(v)
+      real(wp) :: v(n_chart_columns)
+      type(column_context_t) :: context
+      type(chart_column_t) :: column
+      integer :: k
+      context = column_context_t(alpha_name="alpha", beta_name="beta", summary="", threshold="", period="2")
+      do k = 1, n_chart_columns
+         column = floquet_column(trim(chart_keys(k)), context)
+         v(k) = merge(0.0_wp, column%placeholder, column%keep_on_failure)
+      end do
+   end function chart_placeholders
 
    !> Every column of a system of n degrees of freedom, by name, in file order.
    pure function system_column_names(n) result(names)
