@@ -200,6 +200,11 @@ def main():
                                          "output = '%s', columns = 'alpha beta stable'"
                                          % os.path.join(work, "mathieu_builtin_verdicts")))
     kapitza_auto = kapitza_scene("kapitza", "auto", "1e-10")
+    # the same chart with its axes swapped: the frequency (and the damping kappa pi/w) along beta, each point alone
+    kapitza_swapped = scene("kapitza_swapped", open(kapitza_scene("kapitza_swapped", "auto", "1e-10")).read()
+                            .replace("alpha = 'w', beta = 'A'", "alpha = 'A', beta = 'w'")
+                            .replace(KAPITZA_BOX, "alpha_min=0.0, alpha_max=0.1, n_alpha=300, beta_min=60.0, "
+                                     "beta_max=700.0, n_beta=300"))
     # the same chart as one equation of a system (model 'equations', n = 1): the scalar path
     kapitza_one = scene("kapitza_one", open(kapitza_scene("kapitza_one", "auto", "1e-10")).read()
                         .replace("model='equation'", "model='equations'").replace("&equation ", "&equations n = 1, "))
@@ -283,6 +288,14 @@ def main():
         sys.exit("bench_equation: the one-equation system's Kapitza chart is not on the reference's grid")
     one_error_chart = max(relative_error(s1_of_trace(r[0], r[2]), s) for r, s in zip(one_rows, s_ref))
     one_status = sum(1 for r in one_rows if r[4] != 0)
+    run([hillstab, "--quiet", kapitza_swapped], env)
+    swapped_rows = read_rows(os.path.join(work, "kapitza_swapped_chart.dat"), ["w", "A", "S", "status"])
+    swapped_s = {(r[0], r[1]): r[2] for r in swapped_rows}
+    if len(swapped_rows) != n * n or any(p not in swapped_s for p in grid):
+        sys.exit("bench_equation: the swapped Kapitza chart is not on the reference's grid")
+    swapped_error_chart = max(relative_error(swapped_s[p], s) for p, s in zip(grid, s_ref))
+    swapped_agreement = max(relative_error(swapped_s[p], s) for p, s in zip(grid, hs_s))
+    swapped_status = sum(1 for r in swapped_rows if r[3] != 0)
     subprocess.run([hillstab, "--quiet", kapitza_scene("phys_auto", "auto", "1e-10", "points")], env=env, check=True)
     subprocess.run([hillstab, "--quiet", kapitza_scene("phys_ref", "magnus6", "1e-13", "points")], env=env, check=True)
     hs_error_physical = physical_error([r[0] for r in read_rows(os.path.join(work, "phys_auto_points.dat"), ["S"])])
@@ -356,6 +369,8 @@ def main():
          n * n, "tol=1e-10", hs_error_chart, "chart", hs_error_physical),
         ("kapitza_one_system", "Kapitza as a system of one equation (equations, n = 1, auto 1e-10)", "process",
          [hillstab, "--quiet", kapitza_one], n * n, "tol=1e-10", one_error_chart, "chart", -1.0),
+        ("kapitza_swapped", "Kapitza over (A, w): frequency and damping along beta, each point alone (auto 1e-10)",
+         "process", [hillstab, "--quiet", kapitza_swapped], n * n, "tol=1e-10", swapped_error_chart, "chart", -1.0),
     ]
     same_gsl = [g for g in gsl_search if g[0] == SAME_TOLERANCE][0]
     if gsl_equal is not None:
@@ -430,6 +445,14 @@ def main():
     print("Kapitza as a system of one equation (model 'equations', n = 1; its ratio is to the equation's chart, the "
           "bar 2): worst error %.2e over the chart, %d points at a status other than 0"
           % (one_error_chart, one_status))
+    swapped_to_gsl = ""
+    if gsl_equal is not None:
+        q = [per_point("kapitza_swapped", k) / per_point("kapitza_gsl_equal", k) for k in range(args.rounds)]
+        swapped_to_gsl = "; its time %.3g (%.3g-%.3g) of GSL's at equal accuracy" % (statistics.median(q), min(q),
+                                                                                   max(q))
+    print("Kapitza over (A, w) (the frequency and the damping along beta: each point alone; its ratio is to the chart "
+          "over (w, A)): worst error %.2e over the chart, within %.2e of the chart over (w, A), %d points at a status "
+          "other than 0%s" % (swapped_error_chart, swapped_agreement, swapped_status, swapped_to_gsl))
     print()
     print("GSL rk8pd (epsabs = epsrel = tol), the whole chart: the ladder")
     print("| tol | evaluations/point | worst error, chart | worst error, sub-grid | seconds (one run) |")
@@ -479,6 +502,9 @@ def main():
         f.write("# kapitza_one_system: the Kapitza scene as model 'equations' with n = 1 (the scalar path of a "
                 "system of one equation), its ratio to kapitza_hillstab; error of exp(kappa T/2) trace; %d points at "
                 "a status other than 0\n" % one_status)
+        f.write("# kapitza_swapped: the Kapitza scene over (A, w) (alpha = 'A', beta = 'w': the frequency and the "
+                "damping along beta, each point alone), its ratio to kapitza_hillstab; within %.3e of that chart; %d "
+                "points at a status other than 0\n" % (swapped_agreement, swapped_status))
         for tol, ev, e_chart, e_sub, seconds, failed in gsl_search:
             f.write("# search gsl tol %g evaluations_per_point %.1f error_chart %.3e error_subgrid %.3e\n"
                     % (tol, ev, e_chart, e_sub))

@@ -116,8 +116,10 @@ class Equation(Model):
     parameters); ``parameters`` a dict ``{name: value}`` in order (or the scene's text
     ``"g = 9.81, l = 0.2"``); ``alpha`` and ``beta`` the parameters the points' two
     coordinates are: `floquet` and `chart` take their values as ``alpha`` and ``beta``.
-    The β axis must enter the stiffness alone and affinely (a drive amplitude, a load);
-    the α axis may enter anywhere (the frequency). The damping is the equation's own, at
+    Either axis may enter anywhere (the frequency, the damping, the mass, the stiffness).
+    Where the β axis enters the stiffness alone and affinely (a drive amplitude, a load), the
+    points of a chart row share their meshes; else each point is computed alone (slower: no
+    work is shared along a row). The damping is the equation's own, at
     every point (``epsilon`` must stay 0); the results are the physical equation's: its
     multipliers over one period, ``S`` S₁ = e^{cT/(2m)} times the trace of its
     monodromy, ``mu`` μ per unit τ = Ωt/π (μ Ω/π per unit time).

@@ -3,7 +3,9 @@ as its user writes it equals the built-in Mathieu model at the hand-made mapping
 alpha = A pi^2/l, beta = -g pi^2/(l w^2), epsilon = kappa pi/w (within the tolerance); a chart
 over the equation's own axes equals the command line's chart file to the bit, with its axes
 named after the parameters both in the result and in `read_output`; arrays of any shape that
-broadcast equal the points one by one; bad input raises ValueError naming the variable."""
+broadcast equal the points one by one; the frequency and the damping along the beta axis (each
+point alone) equal the unswapped chart and the command line's file; bad input raises ValueError
+naming the variable."""
 import math
 
 import numpy as np
@@ -66,6 +68,28 @@ def test_arrays_equal_points_one_by_one():
         assert same_bits(one.trace, r.trace[index])
 
 
+def test_beta_anywhere_axes_swapped(cli):
+    """The axes swapped (alpha = 'A', beta = 'w': the frequency and the damping kappa pi/w along
+    beta, each point alone): the chart equals the command line's file to the bit, and the chart
+    over (w, A), whose rows share their meshes, within twice the tolerance; its verdicts alike."""
+    swapped = hillstab.Equation(**dict(KAPITZA, alpha="A", beta="w"))
+    kapitza = hillstab.Equation(**KAPITZA)
+    scene = SCENE.format(name="swapped", fmt="binary").replace("alpha = 'w', beta = 'A'", "alpha = 'A', beta = 'w'")
+    scene = scene.replace("alpha_min = 60.0, alpha_max = 700.0, n_alpha = 12, beta_min = 0.0, beta_max = 0.1, n_beta = 9",
+                          "alpha_min = 0.0, alpha_max = 0.1, n_alpha = 9, beta_min = 60.0, beta_max = 700.0, n_beta = 12")
+    cli.run("swapped", scene)
+    out = hillstab.read_output(cli.path("swapped_chart.bin"))
+    assert out.axis_names == ("A", "w")
+    c = hillstab.chart((0.0, 0.1, 9), (60.0, 700.0, 12), model=swapped, threads=2)
+    assert same_bits(c.trace, out.grid("S")) and same_bits(c.stable, out.grid("stable"))
+    r = hillstab.chart((60.0, 700.0, 12), (0.0, 0.1, 9), model=kapitza, threads=2)
+    assert np.all(np.abs(c.trace - r.trace.T) <= 2e-10 * np.maximum(1.0, np.abs(r.trace.T)))
+    assert np.array_equal(c.stable, r.stable.T)
+    p = hillstab.floquet(np.array([0.004, 0.05]), np.array([300.0, 650.0]), model=swapped)
+    assert np.all(np.abs(p.trace - hillstab.floquet(np.array([300.0, 650.0]), np.array([0.004, 0.05]),
+                                                    model=kapitza).trace) <= 2e-10 * np.maximum(1.0, np.abs(p.trace)))
+
+
 def test_parameters_as_text_and_formula():
     kapitza = hillstab.Equation("-g/l + A*w^2/l*cos(w*t)", frequency="w", damping=0.2,
                                 parameters="g = 9.81, l = 0.2, A = 0.005, w = 314.16", alpha="w", beta="A")
@@ -79,7 +103,7 @@ def test_parameters_as_text_and_formula():
     (dict(stiffness="-g/l + A*cos(w*t"), "stiffness", "column"),
     (dict(stiffness="-g/l + A*cos(3*t)"), "stiffness", "not of period"),
     (dict(alpha="omega"), "alpha", "no parameter"),
-    (dict(alpha="A", beta="w"), "beta", "frequency"),
+    (dict(alpha="A", beta="A"), "alpha, beta", "one parameter"),
     (dict(mass="-1"), "mass", "> 0"),
     (dict(stiffness=3.0), "stiffness", "a string"),
 ])

@@ -34,6 +34,7 @@ contains
          new_unittest("kapitza_ten_frequencies", kapitza_ten_frequencies), &
          new_unittest("narrow_region_between_samples", narrow_region_between_samples), &
          new_unittest("equation_along_either_axis", equation_along_either_axis), &
+         new_unittest("equation_axes_swapped", equation_axes_swapped), &
          new_unittest("bad_ranges_refused", bad_ranges_refused)])
    end function collect_critical
 
@@ -218,6 +219,67 @@ contains
       call check(ctx, allocated(error), "epsilon refused for an equation")
       if (allocated(error)) call check(ctx, index(error%message, "epsilon") == 1, "named: "//error%message)
    end subroutine equation_along_either_axis
+
+   !> The damped Kapitza pendulum with its axes swapped (alpha = 'A', beta = 'w': the frequency
+   !> and the damping κπ/ω along β, each point the equation at its ω): along α at 50 Hz the
+   !> critical amplitudes of the unswapped equation along β, the first 6.30680 mm; along β at
+   !> A = 8 mm its critical frequencies along α; each pair within the two error bounds.
+   subroutine equation_axes_swapped(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      type(equation_model_t) :: kapitza, swapped
+      type(critical_drive_t), allocatable :: drives(:), mapped(:)
+      type(error_t), allocatable :: error
+      integer :: j, axis
+      character(len=*), parameter :: parameters = "g = 9.81, l = 0.2, kappa = 0.2, A = 0.005, w = 314.16"
+      real(wp) :: omega
+      call kapitza%set_text("parameters", parameters, error)
+      call kapitza%set_text("stiffness", "-g/l + A*w^2/l*cos(w*t)", error)
+      call kapitza%set_text("damping", "kappa", error)
+      call kapitza%set_text("frequency", "w", error)
+      swapped = kapitza
+      call kapitza%set_text("alpha", "w", error)
+      call kapitza%set_text("beta", "A", error)
+      call kapitza%check_values(error)
+      call check(ctx, .not. allocated(error), "the equation over (w, A)")
+      call swapped%set_text("alpha", "A", error)
+      call swapped%set_text("beta", "w", error)
+      call swapped%check_values(error)
+      call check(ctx, .not. allocated(error), "the equation over (A, w)")
+      if (allocated(error)) return
+      call check(ctx, kapitza%shares_rows() .and. .not. swapped%shares_rows(), "only the first shares its rows")
+      omega = 2.0_wp*pi*50.0_wp
+      do axis = 1, 2
+         if (axis == 1) then
+            call critical_drives_along(swapped, along_alpha, omega, 0.0_wp, 0.1_wp, 0.0_wp, &
+                                       method_t(tolerance=1.0e-12_wp), 400, drives, error)
+            if (.not. allocated(error)) call critical_drives_along(kapitza, along_beta, omega, 0.0_wp, 0.1_wp, 0.0_wp, &
+                                                                   method_t(tolerance=1.0e-12_wp), 400, mapped, error)
+         else
+            call critical_drives_along(swapped, along_beta, 0.008_wp, 100.0_wp, 700.0_wp, 0.0_wp, &
+                                       method_t(tolerance=1.0e-12_wp), 200, drives, error)
+            if (.not. allocated(error)) call critical_drives_along(kapitza, along_alpha, 0.008_wp, 100.0_wp, 700.0_wp, &
+                                                                   0.0_wp, method_t(tolerance=1.0e-12_wp), 200, mapped, &
+                                                                   error)
+         end if
+         call check(ctx, .not. allocated(error), "axis "//real_text(real(axis, wp))//": both run")
+         if (allocated(error)) then
+            call check(ctx, .false., error%message)
+            return
+         end if
+         call check(ctx, size(drives) == size(mapped) .and. size(drives) >= 1, "axis "//real_text(real(axis, wp))// &
+                    ": as many changes, "//real_text(real(size(drives), wp)))
+         do j = 1, min(size(drives), size(mapped))
+            call check(ctx, abs(drives(j)%alpha - mapped(j)%alpha) <= drives(j)%alpha_error + mapped(j)%alpha_error + &
+                       1.0e-15_wp*abs(mapped(j)%alpha), "axis "//real_text(real(axis, wp))//", change "// &
+                       real_text(real(j, wp))//": "//real_text(drives(j)%alpha)//" against "//real_text(mapped(j)%alpha))
+            call check(ctx, drives(j)%direction == mapped(j)%direction .and. drives(j)%status == status_ok, &
+                       "axis "//real_text(real(axis, wp))//": direction and confirmation of change "// &
+                       real_text(real(j, wp)))
+         end do
+         if (axis == 1 .and. size(drives) > 0) call check(ctx, drives(1)%alpha, 6.30680e-3_wp, abs=5.0e-9_wp, &
+                                                          message="the least stabilising amplitude at 50 Hz")
+      end do
+   end subroutine equation_axes_swapped
 
    !> The undamped Kapitza pendulum (l = 0.2 m) at 10 frequencies from 30 to 120 Hz: its
    !> least stabilising amplitude is where Mathieu's a_0(q) = −4g/(lω²), q = 2A/l. Against

@@ -50,6 +50,8 @@ contains
          new_unittest("auto_chart_grid", auto_chart_grid), &
          new_unittest("column_against_reference", column_against_reference), &
          new_unittest("chart_row_equals_points", chart_row_equals_points), &
+         new_unittest("beta_anywhere_closed_forms", beta_anywhere_closed_forms), &
+         new_unittest("beta_anywhere_axes_swapped", beta_anywhere_axes_swapped), &
          new_unittest("tasks_on_equations", tasks_on_equations), &
          new_unittest("first_order_column", first_order_column), &
          new_unittest("first_order_three_states", first_order_three_states), &
@@ -698,6 +700,200 @@ contains
       call delete_file(pairs)
    end subroutine chart_row_equals_points
 
+   !> The data lines of a chart or points file as numbers (n_columns, points).
+   function data_of(path, n_columns) result(values)
+      character(len=*), intent(in) :: path
+      integer, intent(in) :: n_columns
+      real(wp), allocatable :: values(:, :)
+      character(len=1024), allocatable :: lines(:)
+      integer :: k
+      lines = read_lines(path)
+      lines = pack(lines, lines(:)(1:1) /= "#" .and. len_trim(lines) > 0)
+      allocate (values(n_columns, size(lines)))
+      do k = 1, size(lines)
+         read (lines(k), *) values(:, k)
+      end do
+   end function data_of
+
+   !> The β axis entering the frequency, the damping and the stiffness other than affinely
+   !> (each point then alone, the equation at its β), against closed forms of constant
+   !> stiffness k0 (period T = 2π/Ω, roots λ = −c/2 ± √(c²/4 − k0), S₁ of the χ equation
+   !> 2 cos(T√(k0 − c²/4)) or 2 cosh(T√(c²/4 − k0)), μ = Re λ_max T/2 a unit τ): the
+   !> frequency along β by methods auto and rk, the damping along β from under- to
+   !> over-damped, k = b² along β; and the points task at the chart's points.
+   subroutine beta_anywhere_closed_forms(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=300) :: scene(3)
+      character(len=:), allocatable :: written, out, pairs
+      type(error_t), allocatable :: error
+      real(wp), allocatable :: v(:, :), p(:, :)
+      real(wp) :: k0, w, c, b, period, s, mu, r
+      character(len=8), parameter :: methods(2) = [character(len=8) :: "auto", "rk"]
+      integer :: k, m
+      out = scratch_prefix("equation_beta")
+      ! the frequency along beta
+      do m = 1, size(methods)
+         scene(1) = "&scene task = 'chart', model = 'equation', method = '"//trim(methods(m))//"', tolerance = 1e-11, "// &
+                    "columns = 'k0 w S mu', output = '"//out//"' /"
+         scene(2) = "&equation parameters = 'k0 = 2, w = 1', stiffness = 'k0', frequency = 'w', alpha = 'k0', "// &
+                    "beta = 'w' /"
+         scene(3) = "&chart alpha_min = 0.5, alpha_max = 3, n_alpha = 4, beta_min = 0.7, beta_max = 3.1, n_beta = 5 /"
+         call run_text_scene("equation_beta", scene, error, written)
+         call check(ctx, .not. allocated(error), trim(methods(m))//": the frequency along beta runs")
+         if (allocated(error)) then
+            call check(ctx, .false., error%message)
+            return
+         end if
+         v = data_of(written, 4)
+         call check(ctx, size(v, 2) == 20, "20 points")
+         do k = 1, size(v, 2)
+            k0 = v(1, k)
+            w = v(2, k)
+            period = 2.0_wp*pi/w
+            s = 2.0_wp*cos(sqrt(k0)*period)
+            call check(ctx, abs(v(3, k) - s) <= 1.0e-10_wp*max(1.0_wp, abs(s)), trim(methods(m))//": S at k0 = "// &
+                       real_text(k0)//", w = "//real_text(w)//": "//real_text(v(3, k))//" against "//real_text(s))
+         end do
+         call delete_file(written)
+      end do
+      ! the damping along beta, under- and over-damped (c^2 = 4 k0 nowhere on the grid)
+      scene(1) = "&scene task = 'chart', model = 'equation', tolerance = 1e-11, columns = 'k0 c S mu', output = '"// &
+                 out//"' /"
+      scene(2) = "&equation parameters = 'k0 = 2, c = 0.1, w = 1', stiffness = 'k0', damping = 'c', frequency = 'w', "// &
+                 "alpha = 'k0', beta = 'c' /"
+      scene(3) = "&chart alpha_min = 0.5, alpha_max = 3, n_alpha = 4, beta_min = 0, beta_max = 4.1, n_beta = 7 /"
+      call run_text_scene("equation_beta", scene, error, written)
+      call check(ctx, .not. allocated(error), "the damping along beta runs")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      v = data_of(written, 4)
+      call check(ctx, size(v, 2) == 28, "28 points")
+      period = 2.0_wp*pi
+      do k = 1, size(v, 2)
+         k0 = v(1, k)
+         c = v(2, k)
+         r = 0.25_wp*c*c - k0
+         if (r < 0.0_wp) then
+            s = 2.0_wp*cos(period*sqrt(-r))
+            mu = -0.5_wp*c*period/2.0_wp
+         else
+            s = 2.0_wp*cosh(period*sqrt(r))
+            mu = (-0.5_wp*c + sqrt(r))*period/2.0_wp
+         end if
+         call check(ctx, abs(v(3, k) - s) <= 1.0e-10_wp*max(1.0_wp, abs(s)), "S1 at k0 = "//real_text(k0)// &
+                    ", c = "//real_text(c)//": "//real_text(v(3, k))//" against "//real_text(s))
+         call check(ctx, abs(v(4, k) - mu) <= 1.0e-9_wp*max(1.0_wp, abs(mu)), "mu at k0 = "//real_text(k0)// &
+                    ", c = "//real_text(c)//": "//real_text(v(4, k))//" against "//real_text(mu))
+      end do
+      ! the points task at the chart's points: S to the tolerance
+      pairs = scratch_prefix("equation_beta_pairs")//".dat"
+      call write_file(pairs, [(padded(trim(real_text(v(1, k)))//" "//trim(real_text(v(2, k)))), k=1, size(v, 2))])
+      p = v
+      call delete_file(written)
+      scene(3) = "&points file = '"//pairs//"' /"
+      scene(1) = "&scene task = 'points', model = 'equation', tolerance = 1e-11, columns = 'k0 c S mu', output = '"// &
+                 out//"' /"
+      call run_text_scene("equation_beta", scene, error, written)
+      call check(ctx, .not. allocated(error), "the points run")
+      if (.not. allocated(error)) then
+         v = data_of(written, 4)
+         call check(ctx, size(v, 2) == size(p, 2), "as many points")
+         if (size(v, 2) == size(p, 2)) then
+            do k = 1, size(v, 2)
+               ! the pairs file's text is the chart's to 12 digits: S alike to the tolerance
+               call check(ctx, abs(v(3, k) - p(3, k)) <= 1.0e-10_wp*max(1.0_wp, abs(p(3, k))), "points S "// &
+                          real_text(real(k, wp))//": "//real_text(v(3, k))//" and "//real_text(p(3, k)))
+            end do
+         end if
+         call delete_file(written)
+      end if
+      call delete_file(pairs)
+      ! k = b^2: not affine in the beta axis
+      scene(1) = "&scene task = 'chart', model = 'equation', tolerance = 1e-11, columns = 'w b S', output = '"// &
+                 out//"' /"
+      scene(2) = "&equation parameters = 'w = 1, b = 1', stiffness = 'b^2', frequency = 'w', alpha = 'w', beta = 'b' /"
+      scene(3) = "&chart alpha_min = 0.8, alpha_max = 2, n_alpha = 3, beta_min = -1.3, beta_max = 1.7, n_beta = 6 /"
+      call run_text_scene("equation_beta", scene, error, written)
+      call check(ctx, .not. allocated(error), "k = b^2 runs")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      v = data_of(written, 3)
+      call check(ctx, size(v, 2) == 18, "18 points")
+      do k = 1, size(v, 2)
+         w = v(1, k)
+         b = v(2, k)
+         s = 2.0_wp*cos(2.0_wp*pi*abs(b)/w)
+         call check(ctx, abs(v(3, k) - s) <= 1.0e-10_wp*max(1.0_wp, abs(s)), "S at w = "//real_text(w)//", b = "// &
+                    real_text(b)//": "//real_text(v(3, k))//" against "//real_text(s))
+      end do
+      call delete_file(written)
+   end subroutine beta_anywhere_closed_forms
+
+   !> The damped Kapitza pendulum charted with its axes swapped (alpha = 'A', beta = 'w': the
+   !> frequency and the damping κπ/ω along β, each point alone) against the chart over
+   !> (w, A) (rows shared): S within twice the tolerance, μ, the verdicts and the kinds alike,
+   !> at 48 points from stable to both kinds of instability; the same for the verdicts alone.
+   subroutine beta_anywhere_axes_swapped(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=300) :: rows(3), swapped(3)
+      character(len=:), allocatable :: written, out, what
+      type(error_t), allocatable :: error
+      real(wp), allocatable :: a(:, :), b(:, :)
+      character(len=*), parameter :: equation = "&equation parameters = 'g = 9.81, l = 0.2, kappa = 0.2, "// &
+         "A = 0.005, w = 314.16', stiffness = '-g/l + A*w^2/l*cos(w*t)', damping = 'kappa', frequency = 'w', "
+      integer :: k, j, n_kind(0:5), pass
+      out = scratch_prefix("equation_swap")
+      do pass = 1, 2
+         what = trim(merge("all columns ", "verdicts    ", pass == 1))
+         rows(1) = "&scene task = 'chart', model = 'equation', tolerance = 1e-10, columns = '"// &
+                   trim(merge("w A S mu stable kind", "w A stable kind     ", pass == 1))//"', output = '"//out//"' /"
+         rows(2) = equation//"alpha = 'w', beta = 'A' /"
+         rows(3) = "&chart alpha_min = 60, alpha_max = 700, n_alpha = 6, beta_min = 0, beta_max = 0.1, n_beta = 8 /"
+         swapped(1) = rows(1)
+         swapped(2) = equation//"alpha = 'A', beta = 'w' /"
+         swapped(3) = "&chart alpha_min = 0, alpha_max = 0.1, n_alpha = 8, beta_min = 60, beta_max = 700, n_beta = 6 /"
+         call run_text_scene("equation_swap", rows, error, written)
+         call check(ctx, .not. allocated(error), what//": the chart over (w, A) runs")
+         if (allocated(error)) return
+         a = data_of(written, merge(6, 4, pass == 1))
+         call delete_file(written)
+         call run_text_scene("equation_swap", swapped, error, written)
+         call check(ctx, .not. allocated(error), what//": the chart over (A, w) runs")
+         if (allocated(error)) then
+            call check(ctx, .false., error%message)
+            return
+         end if
+         b = data_of(written, merge(6, 4, pass == 1))
+         call delete_file(written)
+         call check(ctx, size(a, 2) == 48 .and. size(b, 2) == 48, what//": 48 points each")
+         if (size(a, 2) /= 48 .or. size(b, 2) /= 48) return
+         n_kind = 0
+         do k = 1, 48
+            ! the point (w, A) of the first chart in the second: row A, column w
+            j = 6*(modulo(k - 1, 8)) + (k - 1)/8 + 1
+            call check(ctx, abs(a(1, k) - b(1, j)) <= 1.0e-13_wp*a(1, k) .and. abs(a(2, k) - b(2, j)) <= 1.0e-15_wp, &
+                       what//": the same point "//real_text(real(k, wp)))
+            if (pass == 1) then
+               call check(ctx, abs(a(3, k) - b(3, j)) <= 2.0e-10_wp*max(1.0_wp, abs(a(3, k))), what//": S at w = "// &
+                          real_text(a(1, k))//", A = "//real_text(a(2, k))//": "//real_text(a(3, k))//" and "// &
+                          real_text(b(3, j)))
+               call check(ctx, abs(a(4, k) - b(4, j)) <= 1.0e-9_wp*max(1.0_wp, abs(a(4, k))), what//": mu at point "// &
+                          real_text(real(k, wp)))
+            end if
+            call check(ctx, nint(a(size(a, 1) - 1, k)) == nint(b(size(b, 1) - 1, j)) .and. &
+                       nint(a(size(a, 1), k)) == nint(b(size(b, 1), j)), what//": verdict and kind at point "// &
+                       real_text(real(k, wp)))
+            n_kind(nint(a(size(a, 1), k))) = n_kind(nint(a(size(a, 1), k))) + 1
+         end do
+         call check(ctx, n_kind(1) > 0 .and. n_kind(2) > 0 .and. n_kind(4) > 0, what// &
+                    ": the points reach +1, -1 and damped stability")
+      end do
+   end subroutine beta_anywhere_axes_swapped
+
    !> The tasks an equation takes: `coefficient` (Q(τ) at the axes' values) for one equation
    !> and for a system, a system's chart naming its axis columns after its parameters (and
    !> `columns` taking those names or alpha/beta); `boundaries` refused for both, naming
@@ -775,9 +971,7 @@ contains
       call refused("&equation parameters = 'g = 9.81, l = 0.2, A = 0.005, w = 314.16, A = 1', frequency = 'w', "// &
                    "alpha = 'w', beta = 'A', "//k_ok//" /", "parameters", "twice")
       call refused("&equation parameters = 'g = 9.81, l = 0.2, A = 0.005, w = 314.16', frequency = 'w', "// &
-                   "alpha = 'A', beta = 'w', "//k_ok//" /", "beta", "frequency")
-      call refused("&equation parameters = 'g = 9.81, l = 0.2, A = 0.005, w = 314.16', frequency = 'w', "// &
-                   "alpha = 'w', beta = 'l', "//k_ok//" /", "beta", "affine")
+                   "alpha = 'A', beta = 'A', "//k_ok//" /", "alpha, beta", "one parameter")
       call refused("&equation "//base//k_ok//", mass = '1 - l*5' /", "mass", "> 0")
       call refused("&equation "//base//k_ok//", damping = '-0.1' /", "damping", ">= 0")
       call refused("&equation "//base//"stiffness = '"//repeat("1 + ", 600)//"1' /", "stiffness", "2000")

@@ -33,7 +33,7 @@ module hillstab_curves_critical
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
    use hillstab_core_status, only: status_ok, status_failed
    use hillstab_core_text, only: real_text, integer_text
-   use hillstab_hill_model, only: hill_model_t, hill_point_t, check_point
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, check_point, damping_at
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: period_damping
    use hillstab_integrate_monodromy, only: method_t, monodromy_trace
@@ -219,15 +219,15 @@ contains
    end subroutine check_range
 
    !> The point at coordinate x of the line, its damping the model's there.
-   elemental function point_of(model, line, x) result(point)
+   function point_of(model, line, x) result(point)
       class(hill_model_t), intent(in) :: model
       type(line_t), intent(in) :: line
       real(wp), intent(in) :: x
       type(hill_point_t) :: point
       if (line%axis == along_alpha) then
-         point = hill_point_t(x, line%fixed, model%point_damping(x, line%epsilon))
+         point = hill_point_t(x, line%fixed, damping_at(model, x, line%fixed, line%epsilon))
       else
-         point = hill_point_t(line%fixed, x, model%point_damping(line%fixed, line%epsilon))
+         point = hill_point_t(line%fixed, x, damping_at(model, line%fixed, x, line%epsilon))
       end if
    end function point_of
 

@@ -26,7 +26,7 @@ module hillstab_curves_oracle
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_accuracy
    use hillstab_core_status, only: status_failed
    use hillstab_ffi_lapack, only: dgeev
-   use hillstab_hill_model, only: hill_model_t, hill_point_t, check_point
+   use hillstab_hill_model, only: hill_model_t, hill_point_t, check_point, damping_at
    use hillstab_hill_transfer, only: trace_t
    use hillstab_hill_floquet, only: period_damping
    use hillstab_hill_system, only: hill_system_t, system_form_t, prepare_system, check_system_point
@@ -194,7 +194,7 @@ contains
       real(wp), intent(in) :: f, d
       type(hill_point_t) :: point
       call self%coordinates(f, d, point%alpha, point%beta)
-      point%epsilon = self%model%point_damping(point%alpha, self%epsilon)
+      point%epsilon = damping_at(self%model, point%alpha, point%beta, self%epsilon)
    end function scalar_point
 
    subroutine scalar_distance(self, f, d, side, argument, s, error)

@@ -34,7 +34,7 @@ module hillstab_hill_model
    public :: model_variable_t, model_variable_real, model_variable_list, model_variable_file, model_variable_text
    public :: harmonics_none, harmonics_infinite
    public :: hill_coefficient, hill_coefficient_before, segment_average, model_split, model_split_row, damping_shift, &
-      model_description
+      model_description, damping_at
    public :: window_piece_end, model_equation_text
    public :: coefficient_range, model_coefficient_range, widen_by_offset, offset_bound
    public :: check_point, check_alpha, check_batch, max_magnitude, auto_table_steps
@@ -98,6 +98,8 @@ module hillstab_hill_model
       procedure :: alpha_domain => no_alpha_domain
       procedure :: alpha_valid => finite_alpha
       procedure :: point_damping => scene_damping
+      procedure :: shares_rows => rows_shared
+      procedure :: at_point => model_copy
       procedure :: has_damping => no_own_damping
       procedure :: takes_scene_damping => scene_damping_taken
       procedure :: has_witness => no_witness
@@ -195,13 +197,54 @@ contains
    end function finite_alpha
 
    !> The damping ε of the points of chart row α: the scene's `epsilon` unless the model
-   !> carries its own (an equation in physical time: πc/(mΩ) at the row's parameters).
+   !> carries its own (an equation in physical time: πc/(mΩ) at the row's parameters). A
+   !> model that does not share rows (`shares_rows`) has no damping a row: the scene's ε,
+   !> to which each point adds its own (`damping_at`).
    elemental real(wp) function scene_damping(self, alpha, epsilon) result(damping)
       class(hill_model_t), intent(in) :: self  !! the model
       real(wp), intent(in) :: alpha            !! α of the row
       real(wp), intent(in) :: epsilon          !! the scene's ε
       damping = epsilon
    end function scene_damping
+
+   !> The points of a chart row share what the methods compute once a row: the shape w and
+   !> offset v of the split, the window, the damping (`point_damping`) and method auto's
+   !> meshes, β entering Q as c₀ and c₁ alone. True unless the model says otherwise (an
+   !> equation whose β axis enters its frequency, mass, damping, or its stiffness other than
+   !> affinely); the methods then take each point alone, as the point (α, 0) of the model at
+   !> its β (`at_point`).
+   elemental logical function rows_shared(self)
+      class(hill_model_t), intent(in) :: self  !! the model
+      rows_shared = .true.
+   end function rows_shared
+
+   !> The model at β: a model whose point (α, 0) is this model's point (α, β) — its Q, split,
+   !> window and damping (`point_damping`) there — and whose rows are shared; what it
+   !> derives at α it may keep (the point's α is given for that). A model that shares rows
+   !> already is its own copy.
+   subroutine model_copy(self, alpha, beta, local)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha            !! α of the point
+      real(wp), intent(in) :: beta             !! β of the point
+      class(hill_model_t), allocatable, intent(out) :: local  !! the model at β
+      allocate (local, source=self)
+   end subroutine model_copy
+
+   !> The damping ε of the point (α, β) given the scene's ε: the row's (`point_damping`)
+   !> when the model shares rows, else that of the model at β (`at_point`) at α.
+   function damping_at(model, alpha, beta, epsilon) result(damping)
+      class(hill_model_t), intent(in) :: model  !! the model
+      real(wp), intent(in) :: alpha, beta       !! the point
+      real(wp), intent(in) :: epsilon           !! the scene's ε
+      real(wp) :: damping
+      class(hill_model_t), allocatable :: local
+      if (model%shares_rows()) then
+         damping = model%point_damping(alpha, epsilon)
+      else
+         call model%at_point(alpha, beta, local)
+         damping = local%point_damping(alpha, epsilon)
+      end if
+   end function damping_at
 
    !> The model carries a damping of its own (`point_damping`), nonzero somewhere: false
    !> unless the model says so.

@@ -14,10 +14,12 @@
 !> verdicts are the equation's own. The multipliers' exponent per unit τ, μ, is μ_t π/Ω in
 !> terms of the exponent per unit time μ_t.
 !>
-!> What the methods need of a model follows from two rules the scene reader enforces
-!> (`check_values`): the β axis enters k alone (not Ω, m or c), and k is affine in it,
-!> k = a(t) + β b(t) (a and b are k at β = 0 and the difference of k at β = 1 and β = 0).
-!> Then the damping is one per row (`point_damping`), and with s = (π/Ω)²/m and the means
+!> The α axis may enter anything. The β axis too: where it enters k alone (not Ω, m or c)
+!> and affinely, k = a(t) + β b(t) (a and b are k at β = 0 and the difference of k at β = 1
+!> and β = 0), the points of a row share its meshes (the fast path); else (`beta_general`)
+!> each point is the point (α, 0) of the equation at its β (`at_point`: the β axis fixed,
+!> b = 0), a row of one point with its own damping. In a shared row
+!> the damping is one per row (`point_damping`), and with s = (π/Ω)²/m and the means
 !> and maxima taken on 16 nodes a period, Q takes the methods' split Q = c₀ + c₁ w(τ) + v(τ)
 !> (w and v independent of β, max|w| = 1 so that c₁ is the drive's amplitude in method
 !> auto's step rules) in one of two forms, chosen per row:
@@ -81,6 +83,22 @@ module hillstab_hill_model_equation
    !> Nodes a period of the ranges of w and v.
    integer, parameter :: range_nodes = 512
 
+   !> What one row α needs, made from the parameters there: Ω, the scale s = (π/Ω)²/m, the
+   !> split's D and c₀, and the parameters with the α axis set.
+   type :: row_t
+      real(wp), allocatable :: p(:)      !! the parameters (α axis at the row's value, β at 0)
+      real(wp) :: omega = 1.0_wp         !! Ω
+      real(wp) :: s = 1.0_wp             !! (π/Ω)²/m
+      real(wp) :: scale = 1.0_wp         !! D
+      real(wp) :: mean = 0.0_wp          !! the mean of s a
+      !> b is constant over the period (the β axis a mean stiffness): Q = c₀ + c₁ w with
+      !> c₀ = mean + β s b, c₁ = D, w = (s a − mean)/D, and no offset
+      logical :: constant_b = .false.
+      real(wp) :: sb = 0.0_wp            !! s b when `constant_b`
+      real(wp) :: drive = 0.0_wp         !! max |s a − mean| when not `constant_b` (the offset's size)
+      logical :: valid = .false.         !! Ω, m finite and positive, c finite and ≥ 0, D and c₀ finite
+   end type row_t
+
    !> m x'' + c x' + k(t) x = 0 with named parameters (hillstab_hill_model_equation).
    type, extends(hill_model_t) :: equation_model_t
       character(len=:), allocatable :: parameters_text  !! `parameters` as given
@@ -101,6 +119,18 @@ module hillstab_hill_model_equation
       type(expression_t) :: c                           !! c(parameters)
       type(drive_t) :: drive                            !! `frequency` Ω or `period` T
       logical :: ready = .false.                        !! `check_values` succeeded
+      !> the β axis enters Ω (or T), m or c, or k other than affinely: no row is shared, each
+      !> point is the point (α, 0) of the equation at its β (`at_point`)
+      logical :: beta_general = .false.
+      !> the β axis is fixed at its value in `values` (the equation at a point's β): the β
+      !> argument of the bindings is ignored
+      logical :: pinned = .false.
+      !> a pinned equation keeps what it derives at its point's α (`at_point`)
+      logical :: kept = .false.
+      real(wp) :: kept_alpha = 0.0_wp               !! that α
+      type(row_t) :: kept_row                       !! the row there
+      real(wp) :: kept_ranges(4) = 0.0_wp           !! the ranges of w and v there: w_min, w_max, v_min, v_max
+      type(hill_window_t) :: kept_window            !! the window there
    contains
       procedure :: name => equation_name
       procedure :: formula => equation_formula
@@ -122,6 +152,8 @@ module hillstab_hill_model_equation
       procedure :: auto_safety => equation_auto_safety
       procedure :: auto_min_steps => equation_auto_min_steps
       procedure :: point_damping => equation_point_damping
+      procedure :: shares_rows => equation_shares_rows
+      procedure :: at_point => equation_at_point
       procedure :: has_damping => equation_has_damping
       procedure :: takes_scene_damping => equation_own_damping
       procedure :: axis_name => equation_axis_name
@@ -131,22 +163,6 @@ module hillstab_hill_model_equation
       procedure :: at => equation_at
       procedure :: frequency_at => equation_frequency_at
    end type equation_model_t
-
-   !> What one row α needs, made from the parameters there: Ω, the scale s = (π/Ω)²/m, the
-   !> split's D and c₀, and the parameters with the α axis set.
-   type :: row_t
-      real(wp), allocatable :: p(:)      !! the parameters (α axis at the row's value, β at 0)
-      real(wp) :: omega = 1.0_wp         !! Ω
-      real(wp) :: s = 1.0_wp             !! (π/Ω)²/m
-      real(wp) :: scale = 1.0_wp         !! D
-      real(wp) :: mean = 0.0_wp          !! the mean of s a
-      !> b is constant over the period (the β axis a mean stiffness): Q = c₀ + c₁ w with
-      !> c₀ = mean + β s b, c₁ = D, w = (s a − mean)/D, and no offset
-      logical :: constant_b = .false.
-      real(wp) :: sb = 0.0_wp            !! s b when `constant_b`
-      real(wp) :: drive = 0.0_wp         !! max |s a − mean| when not `constant_b` (the offset's size)
-      logical :: valid = .false.         !! Ω, m finite and positive, c finite and ≥ 0, D and c₀ finite
-   end type row_t
 
 contains
 
@@ -200,7 +216,8 @@ contains
       variables(7) = model_variable_t("alpha", model_variable_text, name_length, "", &
          "the parameter the chart's alpha axis runs over (the rows)")
       variables(8) = model_variable_t("beta", model_variable_text, name_length, "", &
-         "the parameter the chart's beta axis runs over: k must be affine in it, Omega, m and c free of it")
+         "the parameter the chart's beta axis runs over (in k alone and affinely: a row's points share their "// &
+         "meshes; elsewhere: each point alone)")
    end function equation_variables
 
    !> Set one text of the equation (`equation_variables`).
@@ -255,7 +272,7 @@ contains
       type(error_t), allocatable :: error
       logical, allocatable :: depends(:, :)
       character(len=name_length), allocatable :: with_t(:)
-      character(len=:), allocatable :: known, drive_name, where_beta, listing
+      character(len=:), allocatable :: known, drive_name, listing
       real(wp) :: drive, m, c, period, scale
       real(wp), allocatable :: t(:), k_now(:), k_later(:), shifted(:)
       integer :: j, n_nodes
@@ -301,23 +318,10 @@ contains
       call parse_drive(self%drive, self%names, self%problem)
       if (len(self%problem) > 0) return
       drive_name = self%drive%name()
-      ! the β axis: in k alone, affinely
-      where_beta = ""
-      if (self%drive%uses(self%beta_name)) where_beta = where_beta//", the "//drive_name
-      if (self%m%uses(self%beta_name)) where_beta = where_beta//", the mass"
-      if (self%c%uses(self%beta_name)) where_beta = where_beta//", the damping"
-      if (len(where_beta) > 0) then
-         self%problem = "beta: the beta axis '"//self%beta_name//"' enters "//where_beta(3:)// &
-            "; the beta axis may enter the stiffness only (make '"//self%beta_name//"' the alpha axis, "// &
-            "whose parameter may enter anywhere)"
-         return
-      end if
-      if (.not. self%k%affine_in(self%beta_name)) then
-         self%problem = "beta: the stiffness is not affine in the beta axis '"//self%beta_name//"' (k = a(t) + "// &
-            self%beta_name//" b(t) is needed; make '"//self%beta_name//"' the alpha axis, whose parameter may "// &
-            "enter anywhere)"
-         return
-      end if
+      ! the β axis: in k alone and affinely, or anywhere (each point then alone)
+      self%beta_general = self%drive%uses(self%beta_name) .or. self%m%uses(self%beta_name) .or. &
+                          self%c%uses(self%beta_name) .or. .not. self%k%affine_in(self%beta_name)
+      self%pinned = .false.
       ! the values at the given parameters
       drive = self%drive%expression%value(self%values)
       m = self%m%value(self%values)
@@ -360,7 +364,11 @@ contains
          return
       end if
       ! the factor of the beta axis too (a term it multiplies is 0 where beta is): k at beta + 1,
-      ! where k is finite there
+      ! where k is finite there (an affine k; a general one is checked at the given values)
+      if (self%beta_general) then
+         self%ready = .true.
+         return
+      end if
       shifted = self%values
       shifted(self%i_beta) = shifted(self%i_beta) + 1.0_wp
       call self%k%evaluate(t, k_now, error, scalars=shifted)
@@ -379,21 +387,34 @@ contains
 
    end subroutine prepare
 
-   !> The parameters at row α and the row's constants (`row_t`).
-   pure function row_at(self, alpha) result(row)
+   !> The parameters at row α and the row's constants (`row_t`). The β axis is 0 there when
+   !> it enters k alone and affinely; else it is `beta` when given and the equation is not
+   !> `pinned` (the row of one point), or the equation's value.
+   pure function row_at(self, alpha, beta) result(row)
       class(equation_model_t), intent(in) :: self  !! the model
       real(wp), intent(in) :: alpha                !! the α axis' value
+      real(wp), intent(in), optional :: beta       !! the β axis' value of a point
       type(row_t) :: row
       real(wp) :: t(scale_nodes), a(scale_nodes), b(scale_nodes), m, c, drive
       type(error_t), allocatable :: failure
       integer :: j
+      if (self%kept) then
+         if (alpha == self%kept_alpha) then
+            row = self%kept_row
+            return
+         end if
+      end if
       if (.not. self%ready) then
          allocate (row%p(0))
          return
       end if
       row%p = self%values
       row%p(self%i_alpha) = alpha
-      row%p(self%i_beta) = 0.0_wp
+      if (.not. self%beta_general) then
+         row%p(self%i_beta) = 0.0_wp
+      else if (present(beta) .and. .not. self%pinned) then
+         row%p(self%i_beta) = beta
+      end if
       drive = self%drive%expression%value(row%p)
       m = self%m%value(row%p)
       c = self%c%value(row%p)
@@ -420,7 +441,9 @@ contains
                   ieee_is_finite(row%drive)
    end function row_at
 
-   !> a = k at β = 0 and b = k(β = 1) − k(β = 0) at the times t of the row.
+   !> a = k at β = 0 and b = k(β = 1) − k(β = 0) at the times t of the row; when β enters
+   !> anywhere (`beta_general`), a = k at the row's β (the equation's value, or the point's
+   !> when `pinned`) and b = 0.
    pure subroutine both_parts(self, row, t, a, b, error)
       class(equation_model_t), intent(in) :: self  !! the model
       type(row_t), intent(in) :: row               !! the row (its parameters)
@@ -429,6 +452,11 @@ contains
       type(error_t), allocatable, intent(out) :: error  !! k not finite somewhere
       real(wp) :: p(size(row%p))
       p = row%p
+      if (self%beta_general) then
+         b = 0.0_wp
+         call self%k%evaluate(t, a, error, scalars=p)
+         return
+      end if
       p(self%i_beta) = 0.0_wp
       call self%k%evaluate(t, a, error, scalars=p)
       if (allocated(error)) return
@@ -449,7 +477,7 @@ contains
       if (.not. self%ready) return
       p = self%values
       p(self%i_alpha) = alpha
-      p(self%i_beta) = beta
+      if (.not. self%pinned) p(self%i_beta) = beta
       omega = self%drive%expression%value(p)
       m = self%m%value(p)
       if (.not. (ieee_is_finite(omega) .and. ieee_is_finite(m) .and. omega > 0.0_wp .and. m > 0.0_wp)) return
@@ -515,7 +543,7 @@ contains
             weight(8*(i - 1) + 2*k - 1:8*(i - 1) + 2*k) = 0.5_wp*g(k)/panels
          end do
       end do
-      row = row_at(self, alpha)
+      row = row_at(self, alpha, beta)
       call row_shapes(self, row, tau, w, v)
       if (row%constant_b) then
          q = row%mean + beta*row%sb + row%scale*sum(weight*w)
@@ -530,7 +558,7 @@ contains
       real(wp), intent(in) :: alpha, beta          !! the point
       real(wp), intent(out) :: c0, c1              !! constant part and factor of w
       type(row_t) :: row
-      row = row_at(self, alpha)
+      row = row_at(self, alpha, beta)
       if (row%constant_b) then
          c0 = row%mean + beta*row%sb
          c1 = row%scale
@@ -544,13 +572,18 @@ contains
       end if
    end subroutine equation_split
 
-   !> `equation_split` at every β of row α, the row's constants computed once.
+   !> `equation_split` at every β of row α, the row's constants computed once (each point alone
+   !> when β enters anywhere).
    pure subroutine equation_split_row(self, alpha, betas, c0s, c1s)
       class(equation_model_t), intent(in) :: self  !! the model
       real(wp), intent(in) :: alpha                !! α of the row
       real(wp), intent(in) :: betas(:)             !! its β
       real(wp), intent(out) :: c0s(:), c1s(:)      !! the split at each β
       type(row_t) :: row
+      if (self%beta_general .and. .not. self%pinned) then
+         call self%split(alpha, betas, c0s, c1s)
+         return
+      end if
       row = row_at(self, alpha)
       if (.not. row%valid) then
          c0s = ieee_nan()
@@ -587,6 +620,13 @@ contains
       real(wp), intent(in) :: tau(:)               !! the times
       real(wp), intent(out) :: v(:)                !! v there
       real(wp) :: w(size(tau))
+      if (self%kept) then
+         ! a point's equation: b = 0, so v = 0 (w, from `equation_shapes`, is NaN where k is not finite)
+         if (alpha == self%kept_alpha .and. self%kept_row%constant_b) then
+            v = 0.0_wp
+            return
+         end if
+      end if
       call row_shapes(self, row_at(self, alpha), tau, w, v)
    end subroutine equation_offsets
 
@@ -598,6 +638,15 @@ contains
       real(wp), intent(out) :: w_min, w_max, v_min, v_max  !! the ranges
       real(wp) :: tau(range_nodes), w(range_nodes), v(range_nodes), spread
       integer :: j
+      if (self%kept) then
+         if (alpha == self%kept_alpha) then
+            w_min = self%kept_ranges(1)
+            w_max = self%kept_ranges(2)
+            v_min = self%kept_ranges(3)
+            v_max = self%kept_ranges(4)
+            return
+         end if
+      end if
       tau = [(2.0_wp*real(j - 1, wp)/range_nodes, j=1, range_nodes)]
       call row_shapes(self, row_at(self, alpha), tau, w, v)
       if (.not. all(ieee_is_finite(w) .and. ieee_is_finite(v))) then
@@ -644,6 +693,12 @@ contains
       type(error_t), allocatable :: failure
       integer :: j
       logical :: even
+      if (self%kept) then
+         if (alpha == self%kept_alpha) then
+            window = self%kept_window
+            return
+         end if
+      end if
       row = row_at(self, alpha)
       even = .false.
       if (row%valid) then
@@ -718,16 +773,66 @@ contains
       steps = 16
    end function equation_auto_min_steps
 
-   !> ε = πc/(mΩ) at the row's parameters (the scene's ε is 0 for an equation).
+   !> ε = πc/(mΩ) at the row's parameters (the scene's ε is 0 for an equation); when β
+   !> enters anywhere (`beta_general`) and the equation is not at a point's β (`pinned`),
+   !> no damping is the row's: the scene's ε (each point's is `damping_at`).
    elemental real(wp) function equation_point_damping(self, alpha, epsilon) result(damping)
       class(equation_model_t), intent(in) :: self  !! the model
       real(wp), intent(in) :: alpha                !! α of the row
       real(wp), intent(in) :: epsilon              !! the scene's ε (0)
       type(row_t) :: row
+      if (self%beta_general .and. .not. self%pinned) then
+         damping = epsilon
+         return
+      end if
       row = row_at(self, alpha)
       damping = ieee_nan()
       if (row%valid) damping = epsilon + pi*self%c%value(row%p)/(self%m%value(row%p)*row%omega)
    end function equation_point_damping
+
+   !> Rows are shared unless the β axis enters anywhere (`beta_general`) and the equation is
+   !> not at a point's β.
+   elemental logical function equation_shares_rows(self)
+      class(equation_model_t), intent(in) :: self  !! the model
+      equation_shares_rows = self%pinned .or. .not. self%beta_general
+   end function equation_shares_rows
+
+   !> The equation at β (`pinned_at`), its row at α, the ranges of its split and its window
+   !> there kept.
+   subroutine equation_at_point(self, alpha, beta, local)
+      class(equation_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha                !! α of the point
+      real(wp), intent(in) :: beta                 !! β of the point
+      class(hill_model_t), allocatable, intent(out) :: local  !! the equation at β
+      allocate (local, source=pinned_at(self, beta))
+      select type (local)
+      type is (equation_model_t)
+         if (local%pinned .and. ieee_is_finite(alpha)) then
+            local%kept_row = row_at(local, alpha)
+            local%kept_alpha = alpha
+            call sampled_ranges(local, alpha, local%kept_ranges(1), local%kept_ranges(2), local%kept_ranges(3), &
+                                local%kept_ranges(4))
+            local%kept_window = equation_window(local, alpha)
+            ! kept last: the values above are computed, not read back
+            local%kept = .true.
+         end if
+      end select
+   end subroutine equation_at_point
+
+   !> The equation with its β axis fixed at β (`pinned`), when β enters anywhere; else
+   !> the equation itself. Its point (α, 0) is the equation's (α, β), its row one point.
+   pure function pinned_at(self, beta) result(local)
+      class(equation_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: beta                 !! β of the point
+      type(equation_model_t) :: local
+      select type (self)
+      type is (equation_model_t)
+         local = self
+      end select
+      if (.not. (local%beta_general .and. local%ready) .or. local%pinned) return
+      local%values(local%i_beta) = beta
+      local%pinned = .true.
+   end function pinned_at
 
    !> The damping is the equation's own (`damping`), not the scene's ε.
    elemental logical function equation_own_damping(self)

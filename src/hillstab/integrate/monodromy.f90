@@ -25,7 +25,7 @@ module hillstab_integrate_monodromy
    use hillstab_core_text, only: name_position, alternatives_text, integer_text
    use hillstab_hill_model, only: hill_model_t, hill_point_t, check_point, check_batch, coefficient_range, model_split, &
       model_split_row, &
-      widen_by_offset
+      widen_by_offset, max_magnitude
    use hillstab_hill_coefficient, only: sampling_endpoint, sampling_count
    use hillstab_hill_floquet, only: bounds_verdict, bounds_stable, bounds_unstable, near_threshold, period_damping
    use hillstab_hill_transfer, only: scaled_matrix_t, multiply_matrix, trace_t, trace_from_value
@@ -36,6 +36,7 @@ module hillstab_integrate_monodromy
    use hillstab_integrate_monodromy_rk, only: trace_rk
    use hillstab_integrate_magnus, only: trace_magnus
    use hillstab_integrate_auto, only: trace_auto, trace_auto_batch, auto_plan_t, auto_prepare, trace_auto_screen
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
    public :: method_t, method_auto, method_formula, method_segments, method_magnus4, method_magnus6, &
@@ -140,6 +141,8 @@ contains
       type(batch_plan_t), intent(out) :: plan  !! what the batches can share
       integer, intent(in), optional :: need  !! what the batches will need (default need_trace)
       logical :: screen
+      ! a model that does not share rows takes each point alone: nothing to share
+      if (.not. model%shares_rows()) return
       screen = .false.
       if (present(need)) screen = need < need_trace
       if (method%kind == method_auto) call auto_prepare(model, row%alpha, row%epsilon, betas, &
@@ -345,8 +348,10 @@ contains
       x%log_scale = x%log_scale - epsilon
    end function swing_monodromy
 
-   !> Trace of the one-period monodromy of the χ equation by the chosen method.
-   subroutine monodromy_trace(model, point, method, tr, error, stats)
+   !> Trace of the one-period monodromy of the χ equation by the chosen method. A model
+   !> that does not share rows (`shares_rows`) is taken at the point's β (`at_point`), its
+   !> point (α, 0, ε) there; ε is the point's damping (`damping_at`).
+   recursive subroutine monodromy_trace(model, point, method, tr, error, stats)
       class(hill_model_t), intent(in) :: model  !! the model of Q
       type(hill_point_t), intent(in) :: point   !! the Hill equation's α, β and damping ε
       type(method_t), intent(in) :: method  !! method and its settings
@@ -355,6 +360,21 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(work_stats_t), intent(out), optional :: stats  !! work done (Q evaluations, steps)
       type(work_stats_t) :: work
+      class(hill_model_t), allocatable :: local
+      if (.not. model%shares_rows()) then
+         ! β's own limits here (finite, |β| <= 1e15); α's at the point's β
+         if (.not. ieee_is_finite(point%beta)) then
+            call check_point(model, point, error)
+            return
+         end if
+         if (abs(point%beta) > max_magnitude) then
+            call check_point(model, point, error)
+            return
+         end if
+         call model%at_point(point%alpha, point%beta, local)
+         call monodromy_trace(local, hill_point_t(point%alpha, 0.0_wp, point%epsilon), method, tr, error, stats)
+         return
+      end if
       call check_point(model, point, error)
       if (allocated(error)) return
       select case (method%kind)
@@ -393,11 +413,15 @@ contains
    !> Traces of the points (α, β_j) of one model kind, α and ε, e.g. a chart row. Method
    !> auto shares its meshes and coefficient values across the batch (much faster than
    !> point by point); the other methods go point by point. `failed(j)` marks points that
-   !> could not be computed; `error` describes the first of them.
+   !> could not be computed; `error` describes the first of them. A model that does not
+   !> share rows (`shares_rows`) takes each point alone, at its β (`at_point`), with its
+   !> own damping (`dampings`).
    recursive subroutine monodromy_trace_batch(model, row, betas, method, traces, failed, error, stats, plan, inaccurate, &
-                                              need, paper)
+                                              need, paper, dampings)
       class(hill_model_t), intent(in) :: model  !! the model
-      type(hill_point_t), intent(in) :: row     !! α and ε of the batch (β ignored)
+      !> α and ε of the batch (β ignored): ε the row's damping (`point_damping`), which for
+      !> a model that does not share rows is the scene's ε alone
+      type(hill_point_t), intent(in) :: row
       real(wp), intent(in) :: betas(:)  !! the betas of the batch
       type(method_t), intent(in) :: method  !! method and its settings
       !> S of each beta (where a verdict settled the need: the screening value, its bound as
@@ -415,7 +439,11 @@ contains
       integer, intent(in), optional :: need
       !> need_verdict: the side of |S| = 2 too (the paper's criterion), when damped
       logical, intent(in), optional :: paper
+      !> the damping ε of each point (row%epsilon where the model shares rows)
+      real(wp), intent(out), optional :: dampings(size(betas))
       type(work_stats_t) :: work, part
+      class(hill_model_t), allocatable :: local
+      logical :: one_inaccurate(1)
       logical :: reached(size(betas)), roundoff(size(betas)), settled(size(betas))
       type(error_t), allocatable :: point_error
       type(hill_point_t) :: single
@@ -428,7 +456,34 @@ contains
       real(wp) :: decay
       failed = .false.
       if (present(inaccurate)) inaccurate = .false.
+      if (present(dampings)) dampings = row%epsilon
       work = work_stats_t()
+      if (.not. model%shares_rows()) then
+         ! each point alone: the model at its β, the point (α, 0) there with its damping
+         do j = 1, size(betas)
+            if (.not. ieee_is_finite(betas(j))) then
+               call point_refused(j)
+               cycle
+            end if
+            if (abs(betas(j)) > max_magnitude) then
+               call point_refused(j)
+               cycle
+            end if
+            call model%at_point(row%alpha, betas(j), local)
+            single = hill_point_t(row%alpha, 0.0_wp, local%point_damping(row%alpha, row%epsilon))
+            if (present(dampings)) dampings(j) = single%epsilon
+            call monodromy_trace_batch(local, single, [0.0_wp], method, traces(j:j), failed(j:j), point_error, part, &
+                                       inaccurate=one_inaccurate, need=need, paper=paper)
+            call add_work(work, part)
+            if (present(inaccurate)) inaccurate(j) = one_inaccurate(1)
+            if (allocated(point_error)) then
+               if (.not. allocated(error)) call move_alloc(point_error, error)
+               if (allocated(point_error)) deallocate (point_error)
+            end if
+         end do
+         if (present(stats)) stats = work
+         return
+      end if
       wanted = need_trace
       if (present(need)) wanted = need
       paper_side = .false.
@@ -543,5 +598,20 @@ contains
          end if
       end do
       if (present(stats)) stats = work
+
+   contains
+
+      !> Point j is out of the limits of every β: failed, its error the first if none before.
+      subroutine point_refused(j)
+         integer, intent(in) :: j
+         traces(j) = trace_t()
+         failed(j) = .true.
+         call check_point(model, hill_point_t(row%alpha, betas(j), row%epsilon), point_error)
+         if (.not. allocated(error)) then
+            call move_alloc(point_error, error)
+         else if (allocated(point_error)) then
+            deallocate (point_error)
+         end if
+      end subroutine point_refused
    end subroutine monodromy_trace_batch
 end module hillstab_integrate_monodromy

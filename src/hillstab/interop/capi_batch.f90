@@ -188,6 +188,7 @@ contains
       type(trace_t) :: tr(1)
       type(floquet_t) :: f
       logical :: failed(1), inaccurate(1), wants_paper
+      real(wp) :: damping(1)
       integer :: j, n_points, nt
       m = make_method(method, n_segments, sampling, tolerance)
       call handle_model(model, handle, error)
@@ -222,19 +223,20 @@ contains
       end if
       wants_paper = paper /= 0
       nt = thread_count(threads)
-      !$omp parallel do schedule(dynamic) num_threads(nt) default(shared) private(j, tr, f, failed, inaccurate, cause)
+      !$omp parallel do schedule(dynamic) num_threads(nt) default(shared) &
+      !$omp private(j, tr, f, failed, inaccurate, cause, damping)
       do j = 1, n_points
          call monodromy_trace_batch(handle%model, hill_point_t(alpha(j), 0.0_wp, &
                                     handle%model%point_damping(alpha(j), epsilon(j))), [beta(j)], m, tr, &
-                                    failed, cause, inaccurate=inaccurate, need=int(need), paper=wants_paper)
+                                    failed, cause, inaccurate=inaccurate, need=int(need), paper=wants_paper, &
+                                    dampings=damping)
          if (failed(1)) then
             status(j) = int(status_failed, c_int)
             call failed_point_values(values(:, j))
             cycle
          end if
          status(j) = int(merge(status_roundoff, status_ok, inaccurate(1)), c_int)
-         call set_from_trace(f, tr(1), handle%model%point_damping(alpha(j), epsilon(j)), m%tolerance, &
-                             handle%model%period(), .false.)
+         call set_from_trace(f, tr(1), damping(1), m%tolerance, handle%model%period(), .false.)
          call computed_values(f, .true., values(:, j))
       end do
       !$omp end parallel do
@@ -424,9 +426,10 @@ contains
       logical :: failed(size(betas)), inaccurate(size(betas))
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
+      real(wp) :: dampings(size(betas))
       integer :: j
       call monodromy_trace_batch(model, hill_point_t(alpha, 0.0_wp, epsilon), betas, method, traces, failed, cause, &
-                                 plan=plan, inaccurate=inaccurate, need=need, paper=paper)
+                                 plan=plan, inaccurate=inaccurate, need=need, paper=paper, dampings=dampings)
       do j = 1, size(betas)
          if (failed(j)) then
             statuses(j) = int(status_failed, c_int)
@@ -434,7 +437,7 @@ contains
             cycle
          end if
          statuses(j) = int(merge(status_roundoff, status_ok, inaccurate(j)), c_int)
-         call set_from_trace(f, traces(j), epsilon, method%tolerance, model%period(), need <= need_verdict)
+         call set_from_trace(f, traces(j), dampings(j), method%tolerance, model%period(), need <= need_verdict)
          call computed_values(f, need >= need_growth, values(:, j))
       end do
    end subroutine chart_row

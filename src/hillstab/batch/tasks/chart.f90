@@ -224,7 +224,7 @@ contains
       type(error_t), allocatable :: cause
       type(floquet_t) :: f
       type(hill_point_t) :: row
-      real(wp) :: v(n_chart_columns), per_second, a, damping
+      real(wp) :: v(n_chart_columns), per_second, a, damping, dampings(size(betas))
       logical :: failed(size(betas)), inaccurate(size(betas))
       integer :: j, need
       integer :: ids(size(columns%ids))  ! the binary records' columns (a gather through `columns` allocated)
@@ -237,7 +237,7 @@ contains
       damping = scene%model%point_damping(alpha, scene%epsilon)
       row = hill_point_t(alpha, 0.0_wp, damping)
       call monodromy_trace_batch(scene%model, row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate, &
-                                 need=need, paper=columns%paper)
+                                 need=need, paper=columns%paper, dampings=dampings)
       alpha_text = format_es(alpha, 17)
       statuses = merge(status_roundoff, status_ok, inaccurate)
       where (failed) statuses = status_failed
@@ -248,12 +248,12 @@ contains
             ! a verdict line (or a failed point's), written directly
             lengths(j) = 0
             if (present(beta_texts)) then
-               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), period_damping(damping, &
+               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), period_damping(dampings(j), &
                                   scene%model%period()), scene%method%tolerance, &
                                   statuses(j:j), [in_physical_domain(alpha, betas(j))], [a], alpha_text, lines(j), &
                                   lengths(j), beta_texts(j:j))
             else
-               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), period_damping(damping, &
+               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), period_damping(dampings(j), &
                                   scene%model%period()), scene%method%tolerance, &
                                   statuses(j:j), [in_physical_domain(alpha, betas(j))], [a], alpha_text, lines(j), &
                                   lengths(j))
@@ -264,7 +264,7 @@ contains
             v = failed_values(columns, alpha, betas(j), in_physical_domain(alpha, betas(j)), a)
          else
             ! verdicts only: no multipliers (their columns, not in a verdict file, stay 0)
-            call set_from_trace(f, traces(j), damping, scene%method%tolerance, scene%model%period(), &
+            call set_from_trace(f, traces(j), dampings(j), scene%method%tolerance, scene%model%period(), &
                                 need <= need_verdict)
             v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second, a, &
                              need=need)
@@ -402,12 +402,12 @@ contains
       real(wp), allocatable :: amplitudes(:)
       type(error_t), allocatable :: cause
       character(len=:), allocatable :: buffer
-      integer :: j, pos
-      real(wp) :: damping
+      integer :: j, pos, ip, ia
+      real(wp) :: damping, dampings(size(betas))
       damping = scene%model%point_damping(alpha, scene%epsilon)
       call monodromy_trace_batch(scene%model, hill_point_t(alpha, 0.0_wp, damping), betas, scene%method, &
                                  traces, failed, cause, inaccurate=inaccurate, need=columns%need, &
-                                 paper=columns%paper)
+                                 paper=columns%paper, dampings=dampings)
       statuses = merge(status_roundoff, status_ok, inaccurate)
       where (failed) statuses = status_failed
       allocate (physical(0), amplitudes(0))
@@ -420,9 +420,25 @@ contains
          buffer(1:1) = new_line("a")
          pos = 1
       end if
-      call verdict_lines(columns, alpha, betas, traces, period_damping(damping, scene%model%period()), &
-                         scene%method%tolerance, statuses, physical, &
-                         amplitudes, format_es(alpha, 17), buffer, pos, beta_texts)
+      if (scene%model%shares_rows()) then
+         call verdict_lines(columns, alpha, betas, traces, period_damping(damping, scene%model%period()), &
+                            scene%method%tolerance, statuses, physical, &
+                            amplitudes, format_es(alpha, 17), buffer, pos, beta_texts)
+      else
+         ! each point its own damping
+         do j = 1, size(betas)
+            if (j > 1) then
+               buffer(pos + 1:pos + 1) = new_line("a")
+               pos = pos + 1
+            end if
+            ! the point's physical flag and amplitude, where the row has them
+            ip = merge(j, 0, size(physical) > 0)
+            ia = merge(j, 0, size(amplitudes) > 0)
+            call verdict_lines(columns, alpha, betas(j:j), traces(j:j), period_damping(dampings(j), &
+                               scene%model%period()), scene%method%tolerance, statuses(j:j), physical(max(ip, 1):ip), &
+                               amplitudes(max(ia, 1):ia), format_es(alpha, 17), buffer, pos, beta_texts(j:j))
+         end do
+      end if
       text = buffer(1:pos)
    end subroutine verdict_row_text
 

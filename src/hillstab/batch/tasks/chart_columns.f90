@@ -459,7 +459,7 @@ contains
       type(chart_layout_t), intent(in), optional :: columns
       type(trace_t) :: tr(1)
       logical :: failed(1), inaccurate(1)
-      real(wp) :: damping
+      real(wp) :: damping, dampings(1)
       integer :: need
       logical :: paper
       damping = scene%model%point_damping(alpha, scene%epsilon)
@@ -472,14 +472,14 @@ contains
          paper = columns%paper
       end if
       call monodromy_trace_batch(scene%model, hill_point_t(alpha, 0.0_wp, damping), [beta], scene%method, tr, &
-                                 failed, error, inaccurate=inaccurate, need=need, paper=paper)
+                                 failed, error, inaccurate=inaccurate, need=need, paper=paper, dampings=dampings)
       if (failed(1)) then
          if (present(status)) status = status_failed
          return
       end if
       if (allocated(error)) deallocate (error)
       if (inaccurate(1) .and. present(status)) status = status_roundoff
-      call set_from_trace(f, tr(1), damping, scene%method%tolerance, scene%model%period(), .false.)
+      call set_from_trace(f, tr(1), dampings(1), scene%method%tolerance, scene%model%period(), .false.)
    end subroutine evaluate_point
 
    !> Count the failed points of a task and name the first: err_points_failed, after the

@@ -165,7 +165,7 @@ contains
       type(trace_t) :: traces(size(betas))
       logical :: inaccurate(size(betas))
       type(work_stats_t) :: stats
-      real(wp) :: damping
+      real(wp) :: damping, dampings(size(betas))
       integer :: j
       failed = .false.
       damping = model%point_damping(alpha, form%epsilon)
@@ -173,7 +173,7 @@ contains
       if (.not. taken) return
       call monodromy_trace_batch(model, hill_point_t(alpha, 0.0_wp, damping), betas, &
                                  method_t(kind=method_auto, tolerance=method%tolerance), traces, failed, cause, &
-                                 stats=stats, inaccurate=inaccurate)
+                                 stats=stats, inaccurate=inaccurate, dampings=dampings)
       do j = 1, size(betas)
          r(j)%steps = int(stats%n_steps/max(1, size(betas)))
          r(j)%status = merge(status_roundoff, status_ok, inaccurate(j))
@@ -181,7 +181,7 @@ contains
          if (failed(j)) then
             r(j)%status = status_failed
          else
-            f(j) = floquet_from_trace(traces(j), damping, method%tolerance, model%period())
+            f(j) = floquet_from_trace(traces(j), dampings(j), method%tolerance, model%period())
             call complete_from_trace(f(j), form)
          end if
       end do
