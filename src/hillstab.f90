@@ -33,7 +33,8 @@
 !>   [[hillstab_hill_model:hill_window_t]], [[hillstab_hill_model:model_description]],
 !>   [[hillstab_hill_model:check_point]], [[hillstab_hill_model:check_alpha]],
 !>   [[hillstab_hill_model:hill_coefficient]], [[hillstab_hill_model:segment_average]],
-!>   [[hillstab_hill_model:model_split]], [[hillstab_hill_model:damping_shift]]
+!>   [[hillstab_hill_model:model_split]], [[hillstab_hill_model:damping_shift]],
+!>   [[hillstab_hill_model:damping_at]]
 !> - [[hillstab_hill_models]]: `hillstab_model_names` = [[hillstab_hill_models:model_names]],
 !>   `hillstab_model_count` = [[hillstab_hill_models:model_count]], [[hillstab_hill_models:new_model]],
 !>   [[hillstab_hill_models:model_from_code]], [[hillstab_hill_models:model_code]],
@@ -226,7 +227,7 @@ module hillstab
       hillstab_status_failed => status_failed, hillstab_status_name => status_name
    use hillstab_core_stats, only: work_stats_t
    use hillstab_hill_model, only: hill_model_t, hill_point_t, hill_window_t, model_description, check_point, &
-      check_alpha, hill_coefficient, segment_average, model_split, damping_shift
+      check_alpha, hill_coefficient, segment_average, model_split, damping_shift, damping_at
    use hillstab_hill_models, only: hillstab_model_names => model_names, hillstab_model_count => model_count, &
       new_model, model_from_code, model_code, model_names_text
    use hillstab_hill_model_pendulum, only: pendulum_model_t, pendulum_alpha, pendulum_note, is_elastic_pendulum

@@ -52,6 +52,7 @@ contains
          new_unittest("chart_row_equals_points", chart_row_equals_points), &
          new_unittest("beta_anywhere_closed_forms", beta_anywhere_closed_forms), &
          new_unittest("beta_anywhere_axes_swapped", beta_anywhere_axes_swapped), &
+         new_unittest("system_beta_anywhere", system_beta_anywhere), &
          new_unittest("tasks_on_equations", tasks_on_equations), &
          new_unittest("first_order_column", first_order_column), &
          new_unittest("first_order_three_states", first_order_three_states), &
@@ -893,6 +894,136 @@ contains
                     ": the points reach +1, -1 and damped stability")
       end do
    end subroutine beta_anywhere_axes_swapped
+
+   !> A system whose β axis enters its damping and frequency (each point the system at its β,
+   !> prepared alone): two undamped-coupled modes K = diag(1.5, 4.2) with C = c I along β,
+   !> tr Φ = Σ 2 e^{−cT/2} cos(T√(k_i − c²/4)) (cosh where over-damped) and μ = Re λ_max T/2,
+   !> T = 2π/ω; Bolotin's damped column charted over (P1, Om) against the chart over (Om, P1)
+   !> (rows shared): tr Φ, a₂ and μ within 1e-9, the verdicts and kinds alike; and its
+   !> resonance regions found along α at frequencies along β: the tips of the chart over
+   !> (Om, P1), within their error bounds.
+   subroutine system_beta_anywhere(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=400) :: scene(4), swapped(4)
+      character(len=:), allocatable :: written, out
+      type(error_t), allocatable :: error
+      real(wp), allocatable :: v(:, :), a(:, :), b(:, :)
+      real(wp) :: w, c, period, tr, mu, r, k(2), lambda
+      integer :: i, j, m, n_found
+      out = scratch_prefix("equations_beta")
+      scene(1) = "&scene task = 'chart', model = 'equations', tolerance = 1e-10, columns = 'w c trace mu', "// &
+                 "output = '"//out//"' /"
+      scene(2) = "&equations n = 2, parameters = 'c = 0.1, w = 1', matrices = 'K = [1.5, 0; 0, 4.2]', "// &
+                 "stiffness = 'K', damping = 'c', frequency = 'w', alpha = 'w', beta = 'c' /"
+      scene(3) = "&chart alpha_min = 0.6, alpha_max = 2.4, n_alpha = 4, beta_min = 0, beta_max = 5, n_beta = 6 /"
+      call run_text_scene("equations_beta", scene(1:3), error, written)
+      call check(ctx, .not. allocated(error), "the damping along beta runs")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      v = data_of(written, 4)
+      call delete_file(written)
+      call check(ctx, size(v, 2) == 24, "24 points")
+      k = [1.5_wp, 4.2_wp]
+      do j = 1, size(v, 2)
+         w = v(1, j)
+         c = v(2, j)
+         period = 2.0_wp*pi/w
+         tr = 0.0_wp
+         mu = -huge(1.0_wp)
+         do m = 1, 2
+            r = 0.25_wp*c*c - k(m)
+            if (r < 0.0_wp) then
+               tr = tr + 2.0_wp*exp(-0.5_wp*c*period)*cos(period*sqrt(-r))
+               lambda = -0.5_wp*c
+            else
+               tr = tr + 2.0_wp*exp(-0.5_wp*c*period)*cosh(period*sqrt(r))
+               lambda = -0.5_wp*c + sqrt(r)
+            end if
+            mu = max(mu, lambda*period/2.0_wp)
+         end do
+         call check(ctx, abs(v(3, j) - tr) <= 1.0e-9_wp*max(1.0_wp, abs(tr)), "tr Phi at w = "//real_text(w)// &
+                    ", c = "//real_text(c)//": "//real_text(v(3, j))//" against "//real_text(tr))
+         call check(ctx, abs(v(4, j) - mu) <= 1.0e-8_wp*max(1.0_wp, abs(mu)), "mu at w = "//real_text(w)// &
+                    ", c = "//real_text(c)//": "//real_text(v(4, j))//" against "//real_text(mu))
+      end do
+      ! Bolotin's column over (P1, Om) and over (Om, P1)
+      scene(1) = "&scene task = 'chart', model = 'equations', tolerance = 1e-10, columns = 'Om P1 trace a2 mu "// &
+                 "stable kind', output = '"//out//"' /"
+      scene(2) = "&equations n = 3, parameters = 'P0 = 0.3, P1 = 0, Om = 2, zeta = 0.01', matrices = 'W = [1, 0, 0; "// &
+                 "0, 16, 0; 0, 0, 81], S = [1, 0.3, 0.1; 0.3, 4, 0.4; 0.1, 0.4, 9], Z = [1, 0, 0; 0, 4, 0; 0, 0, 9]',"
+      scene(3) = "  stiffness = 'W - (P0 + P1*cos(Om*t))*S', damping = '2*zeta*Z', frequency = 'Om', alpha = 'Om', "// &
+                 "beta = 'P1' /"
+      scene(4) = "&chart alpha_min = 0.5, alpha_max = 5, n_alpha = 7, beta_min = 0, beta_max = 1.5, n_beta = 5 /"
+      swapped = scene
+      swapped(3) = "  stiffness = 'W - (P0 + P1*cos(Om*t))*S', damping = '2*zeta*Z', frequency = 'Om', alpha = 'P1', "// &
+                   "beta = 'Om' /"
+      swapped(4) = "&chart alpha_min = 0, alpha_max = 1.5, n_alpha = 5, beta_min = 0.5, beta_max = 5, n_beta = 7 /"
+      call run_text_scene("equations_beta", scene, error, written)
+      call check(ctx, .not. allocated(error), "the column over (Om, P1) runs")
+      if (allocated(error)) return
+      a = data_of(written, 7)
+      call delete_file(written)
+      call run_text_scene("equations_beta", swapped, error, written)
+      call check(ctx, .not. allocated(error), "the column over (P1, Om) runs")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      b = data_of(written, 7)
+      call delete_file(written)
+      call check(ctx, size(a, 2) == 35 .and. size(b, 2) == 35, "35 points each")
+      if (size(a, 2) /= 35 .or. size(b, 2) /= 35) return
+      do i = 1, 35
+         ! point i of the first (row Om) is in the second's row P1, column Om
+         j = 7*modulo(i - 1, 5) + (i - 1)/5 + 1
+         call check(ctx, abs(a(1, i) - b(1, j)) <= 1.0e-14_wp*a(1, i) .and. abs(a(2, i) - b(2, j)) <= 1.0e-15_wp, &
+                    "the same point "//real_text(real(i, wp)))
+         do m = 3, 5
+            call check(ctx, abs(a(m, i) - b(m, j)) <= 1.0e-9_wp*max(1.0_wp, abs(a(m, i))), "column "// &
+                       real_text(real(m, wp))//" at Om = "//real_text(a(1, i))//", P1 = "//real_text(a(2, i))//": "// &
+                       real_text(a(m, i))//" and "//real_text(b(m, j)))
+         end do
+         call check(ctx, nint(a(6, i)) == nint(b(6, j)) .and. nint(a(7, i)) == nint(b(7, j)), &
+                    "verdict and kind at point "//real_text(real(i, wp)))
+      end do
+      ! the regions: tips along the drive at each frequency, the frequency along beta
+      scene(1) = "&scene task = 'regions', model = 'equations', tolerance = 1e-10, output = '"//out//"' /"
+      scene(4) = "&chart alpha_min = 0.5, alpha_max = 5, n_alpha = 30, beta_min = 0, beta_max = 1.5, n_beta = 20 /"
+      swapped(1) = scene(1)
+      swapped(4) = "&chart alpha_min = 0, alpha_max = 1.5, n_alpha = 20, beta_min = 0.5, beta_max = 5, n_beta = 30 /"// &
+                   " &regions order = 2, drive = 'alpha' /"
+      scene(4) = trim(scene(4))//" &regions order = 2 /"
+      call run_text_scene("equations_beta", scene, error, written)
+      call check(ctx, .not. allocated(error), "the regions over (Om, P1) run")
+      if (allocated(error)) return
+      a = data_of(written, 15)
+      call delete_file(written)
+      call run_text_scene("equations_beta", swapped, error, written)
+      call check(ctx, .not. allocated(error), "the regions over (P1, Om) run")
+      if (allocated(error)) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      b = data_of(written, 15)
+      call delete_file(written)
+      call check(ctx, size(a, 2) == size(b, 2) .and. size(a, 2) >= 3, "as many regions, "// &
+                 real_text(real(size(a, 2), wp)))
+      if (size(a, 2) /= size(b, 2)) return
+      n_found = 0
+      do i = 1, size(a, 2)
+         call check(ctx, all(nint(a([1, 2, 3, 4, 14], i)) == nint(b([1, 2, 3, 4, 14], i))), "region "// &
+                    real_text(real(i, wp))//": kind, order, modes and status alike")
+         if (nint(a(14, i)) /= 0) cycle
+         n_found = n_found + 1
+         call check(ctx, abs(a(6, i) - b(6, i)) <= a(7, i) + b(7, i) + 1.0e-12_wp*a(6, i), "region "// &
+                    real_text(real(i, wp))//": the tip's Om "//real_text(a(6, i))//" and "//real_text(b(6, i)))
+         call check(ctx, abs(a(8, i) - b(8, i)) <= a(9, i) + b(9, i) + 1.0e-12_wp, "region "// &
+                    real_text(real(i, wp))//": the tip's P1 "//real_text(a(8, i))//" and "//real_text(b(8, i)))
+      end do
+      call check(ctx, n_found >= 2, "tips found: "//real_text(real(n_found, wp)))
+   end subroutine system_beta_anywhere
 
    !> The tasks an equation takes: `coefficient` (Q(τ) at the axes' values) for one equation
    !> and for a system, a system's chart naming its axis columns after its parameters (and

@@ -155,6 +155,7 @@ contains
       integer, parameter :: nodes = 64
       real(wp) :: a0, b0, a1, b1, tau(nodes), dq(nodes), period, scale
       real(wp), allocatable :: p0(:, :), q0(:, :), p1(:, :), q1(:, :), first(:, :), delta(:, :)
+      class(hill_system_t), allocatable :: at0, at1
       integer :: j, n
       call self%coordinates(f, 0.0_wp, a0, b0)
       call self%coordinates(f, d, a1, b1)
@@ -170,9 +171,19 @@ contains
          n = self%system%dof()
          period = self%system%period()
          allocate (p0(n, n), q0(n, n), p1(n, n), q1(n, n), first(n, n), delta(n, n))
+         if (.not. self%system%shares_rows()) then
+            ! each point's K is the system's at its β
+            call self%system%at_point(a0, b0, at0)
+            call self%system%at_point(a1, b1, at1)
+         end if
          do j = 1, nodes
-            call self%system%stiffness(a0, period*real(j - 1, wp)/nodes, p0, q0)
-            call self%system%stiffness(a1, period*real(j - 1, wp)/nodes, p1, q1)
+            if (allocated(at0)) then
+               call at0%stiffness(a0, period*real(j - 1, wp)/nodes, p0, q0)
+               call at1%stiffness(a1, period*real(j - 1, wp)/nodes, p1, q1)
+            else
+               call self%system%stiffness(a0, period*real(j - 1, wp)/nodes, p0, q0)
+               call self%system%stiffness(a1, period*real(j - 1, wp)/nodes, p1, q1)
+            end if
             delta = (p1 + b1*q1) - (p0 + b0*q0)
             if (j == 1) first = delta
             if (maxval(abs(delta - first)) > 1.0e-12_wp*max(1.0_wp, maxval(abs(first)))) driven = .true.
@@ -270,15 +281,23 @@ contains
       call check_point(self%model, scalar_point(self, f, d), error)
    end subroutine scalar_check
 
-   !> The system's form at the row of (f, d).
-   subroutine system_form(self, f, d, form, alpha, beta, error)
+   !> The system's form at the row of (f, d); where the system does not share rows, the
+   !> system at the point's β (`local`, allocated), its form there and the point (α, 0).
+   subroutine system_form(self, f, d, form, alpha, beta, error, local)
       class(system_oracle_t), intent(in) :: self
       real(wp), intent(in) :: f, d
       type(system_form_t), intent(out) :: form
       real(wp), intent(out) :: alpha, beta
       type(error_t), allocatable, intent(out) :: error
+      class(hill_system_t), allocatable, intent(out) :: local
       call self%coordinates(f, d, alpha, beta)
-      call prepare_system(self%system, self%epsilon, form, error, alpha)
+      if (self%system%shares_rows()) then
+         call prepare_system(self%system, self%epsilon, form, error, alpha)
+      else
+         call self%system%at_point(alpha, beta, local)
+         beta = 0.0_wp
+         call prepare_system(local, self%epsilon, form, error, alpha)
+      end if
    end subroutine system_form
 
    subroutine system_distance(self, f, d, side, argument, s, error)
@@ -292,14 +311,19 @@ contains
       type(system_nodes_t) :: nodes
       type(system_monodromy_t) :: monodromy
       type(floquet_t) :: floquet
+      class(hill_system_t), allocatable :: local
       real(wp) :: alpha, beta, margin
       if (side < -1 .or. side > 1) then
          call set_error(error, err_invalid_parameter, "side: must be -1, 0 or 1")
          return
       end if
-      call system_form(self, f, d, form, alpha, beta, error)
+      call system_form(self, f, d, form, alpha, beta, error, local)
       if (allocated(error)) return
-      call system_point(self%system, form, alpha, beta, self%method, nodes, monodromy, floquet, error)
+      if (allocated(local)) then
+         call system_point(local, form, alpha, beta, self%method, nodes, monodromy, floquet, error)
+      else
+         call system_point(self%system, form, alpha, beta, self%method, nodes, monodromy, floquet, error)
+      end if
       if (allocated(error)) return
       if (monodromy%status == status_failed) then
          call set_error(error, err_invalid_parameter, "the monodromy failed")
@@ -355,15 +379,20 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: alpha, beta, tau
       real(wp), allocatable :: p(:, :), b(:, :)
+      class(hill_system_t), allocatable :: local
       integer :: n, j
-      call system_form(self, f, 0.0_wp, form, alpha, beta, error)
+      call system_form(self, f, 0.0_wp, form, alpha, beta, error, local)
       if (allocated(error)) return
       n = form%n
       allocate (k(n, n), p(n, n), b(n, n))
       k = 0.0_wp
       do j = 1, mean_nodes
          tau = form%period*real(j - 1, wp)/real(mean_nodes, wp)
-         call self%system%stiffness(alpha, tau, p, b)
+         if (allocated(local)) then
+            call local%stiffness(alpha, tau, p, b)
+         else
+            call self%system%stiffness(alpha, tau, p, b)
+         end if
          k = k + p + beta*b
       end do
       k = k/real(mean_nodes, wp)
@@ -374,8 +403,9 @@ contains
       real(wp), intent(in) :: f
       type(system_form_t) :: form
       type(error_t), allocatable :: error
+      class(hill_system_t), allocatable :: local
       real(wp) :: alpha, beta
-      call system_form(self, f, 0.0_wp, form, alpha, beta, error)
+      call system_form(self, f, 0.0_wp, form, alpha, beta, error, local)
       system_damped = .true.
       if (.not. allocated(error)) system_damped = .not. form%hamiltonian
    end function system_damped
@@ -385,9 +415,15 @@ contains
       real(wp), intent(in) :: f, d
       type(error_t), allocatable, intent(out) :: error
       type(system_form_t) :: form
+      class(hill_system_t), allocatable :: local
       real(wp) :: alpha, beta
-      call system_form(self, f, d, form, alpha, beta, error)
-      if (.not. allocated(error)) call check_system_point(self%system, alpha, beta, error)
+      call system_form(self, f, d, form, alpha, beta, error, local)
+      if (allocated(error)) return
+      if (allocated(local)) then
+         call check_system_point(local, alpha, beta, error)
+      else
+         call check_system_point(self%system, alpha, beta, error)
+      end if
    end subroutine system_check
 
    !> ln|λ| of the family at `argument` (see `distance_interface`), or of all multipliers when

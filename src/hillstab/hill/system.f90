@@ -4,7 +4,8 @@
 !>
 !> M symmetric positive definite (the masses), C symmetric (damping; the scene's ε adds the
 !> mass-proportional part ε M), G skew (gyroscopic), K periodic in τ with period `period()`
-!> and affine in β as every scalar model is. The abstract type `hill_system_t` extends
+!> and affine in β as every scalar model is (a system whose β enters elsewhere is taken a
+!> point at a time, as the system at the point's β: `shares_rows`, `at_point`). The abstract type `hill_system_t` extends
 !> `model_base_t` (name, formula, the variables of a model carrying data) and is what the
 !> system methods (hillstab_integrate_system) and verdicts (hillstab_hill_system_floquet)
 !> receive; they never ask which system it is. Concrete systems: the matrix system of the
@@ -66,6 +67,8 @@ module hillstab_hill_system
       procedure :: damping_at => damping_anywhere
       procedure :: gyroscopic_at => gyroscopic_anywhere
       procedure :: row_dependent => same_every_row
+      procedure :: shares_rows => rows_shared
+      procedure :: at_point => system_copy
       procedure :: takes_scene_damping => scene_damping_taken
       procedure :: period => period_two
       procedure :: even => not_even
@@ -163,6 +166,26 @@ contains
       class(hill_system_t), intent(in) :: self  !! the system
       same_every_row = .false.
    end function same_every_row
+
+   !> The points of a row share the row's form and nodes, β entering K as β b alone: true
+   !> unless the system says otherwise (an equations system whose β axis enters its
+   !> frequency, damping, gyroscopic matrix, or its stiffness other than affinely); its points
+   !> are then each the point (α, 0) of the system at its β (`at_point`), prepared alone.
+   pure logical function rows_shared(self)
+      class(hill_system_t), intent(in) :: self  !! the system
+      rows_shared = .true.
+   end function rows_shared
+
+   !> The system at β: a system whose point (α, 0) is this system's (α, β) — its K, damping,
+   !> gyroscopic matrix and period there — and whose rows are shared. A system that shares
+   !> rows already is its own copy.
+   subroutine system_copy(self, alpha, beta, local)
+      class(hill_system_t), intent(in) :: self  !! the system
+      real(wp), intent(in) :: alpha            !! α of the point
+      real(wp), intent(in) :: beta             !! β of the point
+      class(hill_system_t), allocatable, intent(out) :: local  !! the system at β
+      allocate (local, source=self)
+   end subroutine system_copy
 
    !> The scene's ε (the damping ε M) may be added: true unless the system carries a damping
    !> of its own in its own units (the equations system: its C, converted at every row), for

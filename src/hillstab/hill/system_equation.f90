@@ -9,7 +9,9 @@
 !> is W − (P0 + P1 cos Ωt) S; damping = 'kappa' is κ I; mass = '1' is I). The matrices are
 !> given by rows, 'W = [1, 0, 0; 0, 16, 0; 0, 0, 81], S = [...]'. As for one equation
 !> (hillstab_hill_model_equation), two parameters are the chart's axes: `alpha` (the rows)
-!> may enter anywhere but M, `beta` enters K alone and affinely. In τ = Ωt/π (one period is
+!> and `beta` may enter anywhere but M; where `beta` enters K alone and affinely a row's
+!> points share its form and nodes, else each point is the system at its β (`at_point`,
+!> K = p there, b = 0), prepared alone. In τ = Ωt/π (one period is
 !> τ ∈ [0, 2]) the system is the one the system methods take, at each row α,
 !>
 !>     M x'' + (π/Ω)(C + G) x' + (π/Ω)² K(πτ/Ω) x = 0,
@@ -21,7 +23,7 @@
 !> the unit vectors of the matrices' names. The whole period is integrated.
 !>
 !> The first-order form y' = A(t) y, y in Rⁿ (a periodic state-space model), is given by
-!> `state` = A(t) instead of `stiffness`, with the same rules (β enters A alone and affinely);
+!> `state` = A(t) instead of `stiffness`, with the same rules (β enters A anywhere);
 !> in τ it is dy/dτ = (π/Ω) A(πτ/Ω) y, and it has no mass, damping or gyroscopic matrix
 !> (`first_order`: the methods integrate A itself).
 !>
@@ -92,6 +94,11 @@ module hillstab_hill_system_equation
       logical :: ready = .false.                        !! `prepare` succeeded
       !> the same system as one scalar equation (`equations_scalar_model`), when it is one
       type(equation_model_t), allocatable :: twin
+      !> the β axis enters Ω (or T), C, G, or K other than affinely: no row is shared, each
+      !> point is the point (α, 0) of the system at its β (`at_point`)
+      logical :: beta_general = .false.
+      !> the β axis is fixed at its value in `values` (the system at a point's β)
+      logical :: pinned = .false.
    contains
       procedure :: name => equations_name
       procedure :: formula => equations_formula
@@ -102,6 +109,8 @@ module hillstab_hill_system_equation
       procedure :: damping_at => equations_damping_at
       procedure :: gyroscopic_at => equations_gyroscopic_at
       procedure :: row_dependent => equations_row_dependent
+      procedure :: shares_rows => equations_shares_rows
+      procedure :: at_point => equations_at_point
       procedure :: takes_scene_damping => equations_own_damping
       procedure :: stiffness => equations_stiffness
       procedure :: symmetric => equations_symmetric
@@ -242,7 +251,8 @@ contains
       variables(10) = model_variable_t("alpha", model_variable_text, name_length, "", &
          "the parameter the chart's alpha axis runs over (the rows)")
       variables(11) = model_variable_t("beta", model_variable_text, name_length, "", &
-         "the parameter the chart's beta axis runs over: K affine in it, Omega, M, C and G free of it")
+         "the parameter the chart's beta axis runs over (in K alone and affinely: a row's points share their "// &
+         "form; elsewhere but M: each point alone)")
       variables(12) = model_variable_t("state", model_variable_text, max_equations_text, "", &
          "A(t) of the first-order form y' = A(t) y instead of stiffness (n states; no mass, damping, gyroscopic)")
    end function equations_variables
@@ -326,7 +336,7 @@ contains
       type(error_t), allocatable :: error
       logical, allocatable :: depends(:, :)
       character(len=name_length), allocatable :: all_names(:), matrix_names(:)
-      character(len=:), allocatable :: known, drive_name, where_beta, kv
+      character(len=:), allocatable :: known, drive_name, kv
       real(wp) :: drive, period
       real(wp), allocatable :: k_now(:, :), k_later(:, :), c(:, :), g(:, :), shifted(:), r_now(:), r_later(:)
       type(error_t), allocatable :: failure
@@ -404,20 +414,10 @@ contains
       call parse_drive(self%drive, self%names, self%problem)
       if (len(self%problem) > 0) return
       drive_name = self%drive%name()
-      where_beta = ""
-      if (self%drive%uses(self%beta_name)) where_beta = where_beta//", the "//drive_name
-      if (self%c%uses(self%beta_name)) where_beta = where_beta//", the damping"
-      if (self%g%uses(self%beta_name)) where_beta = where_beta//", the gyroscopic matrix"
-      if (len(where_beta) > 0) then
-         self%problem = "beta: the beta axis '"//self%beta_name//"' enters "//where_beta(3:)// &
-            "; it may enter the "//kv//" only (make it the alpha axis)"
-         return
-      end if
-      if (.not. self%k%affine_in(self%beta_name)) then
-         self%problem = "beta: the "//kv//" is not affine in the beta axis '"//self%beta_name//"' (make it "// &
-            "the alpha axis, whose parameter may enter anywhere)"
-         return
-      end if
+      ! the β axis: in K alone and affinely (rows shared), or anywhere but M (each point alone)
+      self%beta_general = self%drive%uses(self%beta_name) .or. self%c%uses(self%beta_name) .or. &
+                          self%g%uses(self%beta_name) .or. .not. self%k%affine_in(self%beta_name)
+      self%pinned = .false.
       do j = 1, size(matrix_names)
          if (.not. (self%k%affine_in(trim(matrix_names(j))) .and. self%m%affine_in(trim(matrix_names(j))) .and. &
                     self%c%affine_in(trim(matrix_names(j))) .and. self%g%affine_in(trim(matrix_names(j))))) then
@@ -452,11 +452,11 @@ contains
          end if
       end do
       ! the factor of the beta axis too (a term it multiplies is 0 where beta is): K at beta + 1,
-      ! where K is finite there
+      ! where K is finite there (an affine K; a general one is checked at the given values)
       shifted = self%values
       shifted(self%i_beta) = shifted(self%i_beta) + 1.0_wp
       do i = 0, 15
-         if (len(self%problem) > 0) exit
+         if (len(self%problem) > 0 .or. self%beta_general) exit
          call coefficients(self, self%k, period*i/16.0_wp, shifted, r_now, failure)
          if (.not. allocated(failure)) call coefficients(self, self%k, period*i/16.0_wp + period, shifted, r_later, &
                                                          failure)
@@ -593,7 +593,7 @@ contains
       if (.not. self%ready) return
       p = self%values
       p(self%i_alpha) = alpha
-      p(self%i_beta) = 0.0_wp
+      if (.not. self%beta_general) p(self%i_beta) = 0.0_wp
       drive = self%drive%expression%value(p)
       if (.not. (ieee_is_finite(drive) .and. drive > 0.0_wp)) return
       omega = self%drive%omega_of(drive)
@@ -666,6 +666,31 @@ contains
       equations_row_dependent = .true.
    end function equations_row_dependent
 
+   !> Rows are shared unless the β axis enters anywhere (`beta_general`) and the system is
+   !> not at a point's β.
+   pure logical function equations_shares_rows(self)
+      class(equations_system_t), intent(in) :: self  !! the system
+      equations_shares_rows = self%pinned .or. .not. self%beta_general
+   end function equations_shares_rows
+
+   !> The system at β (its β axis fixed there, `pinned`; no scalar twin, whose β would be
+   !> the argument's), when β enters anywhere; else the system itself.
+   subroutine equations_at_point(self, alpha, beta, local)
+      class(equations_system_t), intent(in) :: self  !! the system
+      real(wp), intent(in) :: alpha                  !! α of the point
+      real(wp), intent(in) :: beta                   !! β of the point
+      class(hill_system_t), allocatable, intent(out) :: local  !! the system at β
+      allocate (local, source=self)
+      select type (local)
+      type is (equations_system_t)
+         if (local%beta_general .and. local%ready .and. .not. local%pinned) then
+            local%values(local%i_beta) = beta
+            local%pinned = .true.
+            if (allocated(local%twin)) deallocate (local%twin)
+         end if
+      end select
+   end subroutine equations_at_point
+
    !> The damping is the system's own (`damping`, in physical units, converted at every
    !> row): the scene's ε must be 0.
    pure logical function equations_own_damping(self)
@@ -690,9 +715,14 @@ contains
       t = ratio*tau
       call coefficients(self, self%k, t, q, r0, failure)
       if (allocated(failure)) return
-      q(self%i_beta) = 1.0_wp
-      call coefficients(self, self%k, t, q, r1, failure)
-      if (allocated(failure)) return
+      if (self%beta_general) then
+         ! K at the row's β (the system's value, or the point's when pinned): no factor of β
+         r1 = r0
+      else
+         q(self%i_beta) = 1.0_wp
+         call coefficients(self, self%k, t, q, r1, failure)
+         if (allocated(failure)) return
+      end if
       ! dy/dτ = (π/Ω) A y in first-order form; (π/Ω)² K in second-order form
       if (equations_first_order(self)) then
          call assemble(self, ratio*r0, p)
@@ -737,8 +767,9 @@ contains
       if (.not. self%ready) return
       call row_at(self, alpha, q, ratio, ok)
       if (.not. ok) return
-      do level = 0, 1
-         q(self%i_beta) = real(level, wp)
+      do level = 0, merge(0, 1, self%beta_general)
+         ! K affine in β: even at β = 0 and 1; else at the row's β
+         if (.not. self%beta_general) q(self%i_beta) = real(level, wp)
          do j = 0, 6
             t = ratio*(0.1234567_wp + 0.2718281_wp*j)
             call coefficients(self, self%k, t, q, plus, failure)

@@ -418,6 +418,7 @@ contains
       type(floquet_t), intent(out), optional :: floquet
       logical, intent(out), optional :: analysed  !! `floquet` was computed (given with it)
       type(system_nodes_t) :: nodes
+      class(hill_system_t), allocatable :: local
       logical :: taken
       if (present(analysed)) analysed = .false.
       if (allocated(error)) return
@@ -438,7 +439,11 @@ contains
       if (.not. allocated(error)) call handle%system%check_values(error)
       if (.not. allocated(error)) call check_system_point(handle%system, real(alpha, wp), real(beta, wp), error)
       if (.not. allocated(error)) then
-         if (handle%system%row_dependent()) then
+         if (.not. handle%system%shares_rows()) then
+            ! the point alone: the system at its β, prepared there, its point (α, 0)
+            call handle%system%at_point(real(alpha, wp), real(beta, wp), local)
+            call prepare_system(local, real(epsilon, wp), form, error, alpha=real(alpha, wp))
+         else if (handle%system%row_dependent()) then
             call prepare_system(handle%system, real(epsilon, wp), form, error, alpha=real(alpha, wp))
          else
             call prepare_system(handle%system, real(epsilon, wp), form, error)
@@ -453,9 +458,15 @@ contains
             return
          end if
       end if
-      if (.not. allocated(error)) call system_monodromy(handle%system, form, real(alpha, wp), real(beta, wp), &
-                                                        system_method_t(int(method), real(tolerance, wp)), nodes, &
-                                                        result, error)
+      if (.not. allocated(error)) then
+         if (allocated(local)) then
+            call system_monodromy(local, form, real(alpha, wp), 0.0_wp, system_method_t(int(method), &
+                                  real(tolerance, wp)), nodes, result, error)
+         else
+            call system_monodromy(handle%system, form, real(alpha, wp), real(beta, wp), &
+                                  system_method_t(int(method), real(tolerance, wp)), nodes, result, error)
+         end if
+      end if
       if (allocated(error)) error%message = where//": "//error%message
    end subroutine system_point
 

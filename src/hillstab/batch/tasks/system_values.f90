@@ -54,6 +54,8 @@ contains
       type(floquet_t) :: f
       type(error_t), allocatable :: error
       type(system_form_t) :: row_form
+      type(system_nodes_t) :: point_nodes
+      class(hill_system_t), allocatable :: local
       logical :: prepare, taken
       ! one equation on method auto: the scalar method auto on its scalar form
       call scalar_point(system, form, method, alpha, beta, f, r, taken, error)
@@ -66,7 +68,12 @@ contains
       end if
       prepare = system%row_dependent()
       if (present(row_form_given)) prepare = prepare .and. .not. row_form_given
-      if (prepare) then
+      if (.not. system%shares_rows()) then
+         ! the point alone: the system at its β, prepared there, its point (α, 0), its own nodes
+         call system%at_point(alpha, beta, local)
+         call prepare_system(local, form%epsilon, row_form, error, alpha)
+         if (.not. allocated(error)) call system_point(local, row_form, alpha, 0.0_wp, method, point_nodes, r, f, error)
+      else if (prepare) then
          ! C or G change with α (an equation's damping along a frequency axis): the form of the row
          call prepare_system(system, form%epsilon, row_form, error, alpha)
          if (.not. allocated(error)) call system_point(system, row_form, alpha, beta, method, nodes, r, f, error)
@@ -247,7 +254,15 @@ contains
             if (taken) return
          end if
       end if
-      if (system%row_dependent()) then
+      if (.not. system%shares_rows()) then
+         ! each point alone (`evaluate`: the system at its β)
+         do j = 1, size(betas)
+            call evaluate(system, form, layout, method, alpha, betas(j), nodes, values(:, j), failed, message)
+            if (failed .and. n_failed == 0) call failure_text(alpha, betas(j), message, failure)
+            if (failed) n_failed = n_failed + 1
+         end do
+         return
+      else if (system%row_dependent()) then
          ! the row's form once (C or G change with α: an equation's damping along a frequency axis)
          call prepare_system(system, form%epsilon, row_form, error, alpha)
          if (allocated(error)) then
