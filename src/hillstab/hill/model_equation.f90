@@ -719,6 +719,11 @@ contains
    pure function equation_alpha_domain(self) result(text)
       class(equation_model_t), intent(in) :: self  !! the model
       character(len=:), allocatable :: text
+      if (self%beta_general) then
+         text = "the points ("//self%alpha_name//", "//self%beta_name//") where the frequency, the mass (> 0) and "// &
+                "the damping (>= 0) are finite and k is finite over the period"
+         return
+      end if
       text = "the values of "//self%alpha_name//" where the frequency, the mass (> 0) and the damping (>= 0) "// &
              "are finite and k is finite over the period"
    end function equation_alpha_domain

@@ -372,6 +372,10 @@ contains
             return
          end if
          call model%at_point(point%alpha, point%beta, local)
+         if (.not. local%alpha_valid(point%alpha)) then
+            call outside_domain(model, point%alpha, point%beta, error)
+            return
+         end if
          call monodromy_trace(local, hill_point_t(point%alpha, 0.0_wp, point%epsilon), method, tr, error, stats)
          return
       end if
@@ -409,6 +413,19 @@ contains
       end select
       if (present(stats)) stats = work
    end subroutine monodromy_trace
+
+   !> err_invalid_parameter: the point (α, β) of a model that does not share rows lies outside
+   !> its domain (`alpha_domain`, which then names both axes).
+   pure subroutine outside_domain(model, alpha, beta, error)
+      class(hill_model_t), intent(in) :: model  !! the model
+      real(wp), intent(in) :: alpha, beta       !! the point
+      type(error_t), allocatable, intent(out) :: error  !! the refusal
+      character(len=24) :: a, b
+      write (a, '(es23.16)') alpha
+      write (b, '(es23.16)') beta
+      call set_error(error, err_invalid_parameter, model%name()//" model needs "//model%alpha_domain()// &
+         ", got alpha = "//trim(adjustl(a))//", beta = "//trim(adjustl(b)))
+   end subroutine outside_domain
 
    !> Traces of the points (α, β_j) of one model kind, α and ε, e.g. a chart row. Method
    !> auto shares its meshes and coefficient values across the batch (much faster than
@@ -470,6 +487,14 @@ contains
                cycle
             end if
             call model%at_point(row%alpha, betas(j), local)
+            if (.not. local%alpha_valid(row%alpha)) then
+               traces(j) = trace_t()
+               failed(j) = .true.
+               call outside_domain(model, row%alpha, betas(j), point_error)
+               if (.not. allocated(error)) call move_alloc(point_error, error)
+               if (allocated(point_error)) deallocate (point_error)
+               cycle
+            end if
             single = hill_point_t(row%alpha, 0.0_wp, local%point_damping(row%alpha, row%epsilon))
             if (present(dampings)) dampings(j) = single%epsilon
             call monodromy_trace_batch(local, single, [0.0_wp], method, traces(j:j), failed(j:j), point_error, part, &
