@@ -530,7 +530,9 @@ class Equations(System):
     ``"W = [1, 0; 0, 4], S = [...]"``); ``parameters`` a dict ``{name: value}`` in order (or
     the text ``"P0 = 0.3, Om = 2"``); ``frequency`` Ω or ``period`` T (expressions of the
     parameters, or numbers); ``alpha`` and ``beta`` the parameters the points' two
-    coordinates are; ``n`` the degrees of freedom (default: the matrices' size).
+    coordinates are; ``n`` the degrees of freedom (default: the matrices' size). Either axis
+    may enter anything but M: where β enters K alone and affinely, a row's points share its
+    form; else each point is the system at its β, prepared alone (the same values, slower).
 
     ``state`` instead of ``stiffness`` (with no mass, damping or gyroscopic matrix) gives the
     first-order form y' = A(t) y, a periodic state-space model of ``n`` states: A(t) a matrix

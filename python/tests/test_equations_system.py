@@ -4,7 +4,9 @@ command line's binary chart and points files (model 'equations') to the bit, eve
 its axes named after the parameters Om and P1 too; arrays of any shapes that broadcast equal
 the points one by one; at points of data/reference/physical_set.dat (set 3: the monodromy of
 the physical column by Taylor series in 45 digits) the trace and all six multipliers lie
-within the tolerance; the texts of the scene give the same system; bad input raises
+within the tolerance; the texts of the scene give the same system; the axes swapped (the
+frequency and with it the damping along beta, each point alone) equal the command line's
+chart to the bit and the chart over (Om, P1) within 1e-9; bad input raises
 ValueError naming the variable (epsilon too: the damping is the system's own)."""
 import os
 
@@ -118,6 +120,26 @@ def test_texts_give_the_same_system(column):
     assert same_bits(period.floquet(1.6, 0.4).trace, column.floquet(1.6, 0.4).trace)
 
 
+def test_beta_anywhere_axes_swapped(cli, column):
+    swapped = hillstab.Equations(**dict(COLUMN, alpha="P1", beta="Om"))
+    assert swapped.axes == ("P1", "Om")
+    scene = SCENE.format(task="chart", method="auto", name="swap", group="&chart alpha_min = 0.0, alpha_max = 1.2, "
+                         "n_alpha = 6, beta_min = 1.2, beta_max = 2.1, n_beta = 7 /")
+    cli.run("swap", scene.replace("alpha = 'Om', beta = 'P1'", "alpha = 'P1', beta = 'Om'"))
+    out = hillstab.read_output(cli.path("swap_chart.bin"))
+    c = swapped.chart((0.0, 1.2, 6), (1.2, 2.1, 7), threads=2)
+    assert out.axis_names == ("P1", "Om") and list(c.names) == out.columns
+    for name in out.columns:
+        assert same_bits(c[name], out.grid(name)), name
+    r = column.chart((1.2, 2.1, 7), (0.0, 1.2, 6), threads=2)
+    for name in ("trace", "a2", "mu"):
+        assert np.all(np.abs(c[name] - r[name].T) <= 1e-9 * np.maximum(1.0, np.abs(r[name].T))), name
+    assert np.array_equal(c.stable, r.stable.T) and np.array_equal(c.kind, r.kind.T)
+    p = swapped.points(np.array([0.4, 0.8]), np.array([1.6, 2.0]))
+    q = column.points(np.array([1.6, 2.0]), np.array([0.4, 0.8]))
+    assert np.all(np.abs(p.trace - q.trace) <= 1e-9 * np.maximum(1.0, np.abs(q.trace)))
+
+
 @pytest.mark.parametrize("change, variable, words", [
     (dict(matrices="W = [1, 0, 0; 0, 16, 0; 0, 0, 81], S = [1, 0.3; 0.3, 4, 0.4; 0.1, 0.4, 9], "
                    "Z = [1, 0, 0; 0, 4, 0; 0, 0, 9]", n=3), "matrices", "S, row 1 has 2 entries"),
@@ -126,7 +148,7 @@ def test_texts_give_the_same_system(column):
     (dict(stiffness="W - (P0 + P1*cos(Om*t))*Q"), "stiffness", "unknown name 'Q'"),
     (dict(stiffness="W - (P0 + P1*cos(Om*t)*S"), "stiffness", "column"),
     (dict(alpha="Omega"), "alpha", "'Omega' is no parameter"),
-    (dict(alpha="P1", beta="Om"), "beta", "frequency"),
+    (dict(mass="Om*Z"), "mass", "may not depend on the axes"),
     (dict(damping="2*zeta*Z*t"), "damping", ""),
     (dict(parameters={"P0": 0.3, "P1": 0.0, "Om": float("inf"), "zeta": 0.01}), "parameters: Om", "finite"),
     (dict(n=4), "matrices", "n = 4"),
