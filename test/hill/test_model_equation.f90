@@ -716,6 +716,40 @@ contains
       end do
    end function data_of
 
+   !> Run a scene and its twin with the axes swapped: their data lines as numbers
+   !> (n_columns, points); `ok` false (the test failed, naming why) when either did not run.
+   subroutine run_pair(ctx, what, scene, swapped, n_columns, a, b, ok)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), intent(in) :: what
+      character(len=*), intent(in) :: scene(:), swapped(:)
+      integer, intent(in) :: n_columns
+      real(wp), allocatable, intent(out) :: a(:, :), b(:, :)
+      logical, intent(out) :: ok
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written
+      integer :: k
+      ok = .false.
+      do k = 1, 2
+         if (k == 1) then
+            call run_text_scene("equation_pair", scene, error, written)
+         else
+            call run_text_scene("equation_pair", swapped, error, written)
+         end if
+         call check(ctx, .not. allocated(error), what//": the "//trim(merge("scene  ", "swapped", k == 1))//" runs")
+         if (allocated(error)) then
+            call check(ctx, .false., error%message)
+            return
+         end if
+         if (k == 1) then
+            a = data_of(written, n_columns)
+         else
+            b = data_of(written, n_columns)
+         end if
+         call delete_file(written)
+      end do
+      ok = .true.
+   end subroutine run_pair
+
    !> The β axis entering the frequency, the damping and the stiffness other than affinely
    !> (each point then alone, the equation at its β), against closed forms of constant
    !> stiffness k0 (period T = 2π/Ω, roots λ = −c/2 ± √(c²/4 − k0), S₁ of the χ equation
@@ -851,9 +885,9 @@ contains
    subroutine beta_anywhere_axes_swapped(ctx)
       type(test_context_t), intent(inout) :: ctx
       character(len=300) :: rows(3), swapped(3)
-      character(len=:), allocatable :: written, out, what
-      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out, what
       real(wp), allocatable :: a(:, :), b(:, :)
+      logical :: ok
       character(len=*), parameter :: equation = "&equation parameters = 'g = 9.81, l = 0.2, kappa = 0.2, "// &
          "A = 0.005, w = 314.16', stiffness = '-g/l + A*w^2/l*cos(w*t)', damping = 'kappa', frequency = 'w', "
       integer :: k, j, n_kind(0:5), pass
@@ -867,19 +901,8 @@ contains
          swapped(1) = rows(1)
          swapped(2) = equation//"alpha = 'A', beta = 'w' /"
          swapped(3) = "&chart alpha_min = 0, alpha_max = 0.1, n_alpha = 8, beta_min = 60, beta_max = 700, n_beta = 6 /"
-         call run_text_scene("equation_swap", rows, error, written)
-         call check(ctx, .not. allocated(error), what//": the chart over (w, A) runs")
-         if (allocated(error)) return
-         a = data_of(written, merge(6, 4, pass == 1))
-         call delete_file(written)
-         call run_text_scene("equation_swap", swapped, error, written)
-         call check(ctx, .not. allocated(error), what//": the chart over (A, w) runs")
-         if (allocated(error)) then
-            call check(ctx, .false., error%message)
-            return
-         end if
-         b = data_of(written, merge(6, 4, pass == 1))
-         call delete_file(written)
+         call run_pair(ctx, what, rows, swapped, merge(6, 4, pass == 1), a, b, ok)
+         if (.not. ok) return
          call check(ctx, size(a, 2) == 48 .and. size(b, 2) == 48, what//": 48 points each")
          if (size(a, 2) /= 48 .or. size(b, 2) /= 48) return
          n_kind = 0
@@ -920,6 +943,7 @@ contains
       real(wp), allocatable :: v(:, :), a(:, :), b(:, :)
       real(wp) :: w, c, period, tr, mu, r, k(2), lambda
       integer :: i, j, m, n_found
+      logical :: ok
       out = scratch_prefix("equations_beta")
       scene(1) = "&scene task = 'chart', model = 'equations', tolerance = 1e-10, columns = 'w c trace mu', "// &
                  "output = '"//out//"' /"
@@ -970,19 +994,8 @@ contains
       swapped(3) = "  stiffness = 'W - (P0 + P1*cos(Om*t))*S', damping = '2*zeta*Z', frequency = 'Om', alpha = 'P1', "// &
                    "beta = 'Om' /"
       swapped(4) = "&chart alpha_min = 0, alpha_max = 1.5, n_alpha = 5, beta_min = 0.5, beta_max = 5, n_beta = 7 /"
-      call run_text_scene("equations_beta", scene, error, written)
-      call check(ctx, .not. allocated(error), "the column over (Om, P1) runs")
-      if (allocated(error)) return
-      a = data_of(written, 7)
-      call delete_file(written)
-      call run_text_scene("equations_beta", swapped, error, written)
-      call check(ctx, .not. allocated(error), "the column over (P1, Om) runs")
-      if (allocated(error)) then
-         call check(ctx, .false., error%message)
-         return
-      end if
-      b = data_of(written, 7)
-      call delete_file(written)
+      call run_pair(ctx, "the column over (Om, P1) and (P1, Om)", scene, swapped, 7, a, b, ok)
+      if (.not. ok) return
       call check(ctx, size(a, 2) == 35 .and. size(b, 2) == 35, "35 points each")
       if (size(a, 2) /= 35 .or. size(b, 2) /= 35) return
       do i = 1, 35
@@ -1005,19 +1018,8 @@ contains
       swapped(4) = "&chart alpha_min = 0, alpha_max = 1.5, n_alpha = 20, beta_min = 0.5, beta_max = 5, n_beta = 30 /"// &
                    " &regions order = 2, drive = 'alpha' /"
       scene(4) = trim(scene(4))//" &regions order = 2 /"
-      call run_text_scene("equations_beta", scene, error, written)
-      call check(ctx, .not. allocated(error), "the regions over (Om, P1) run")
-      if (allocated(error)) return
-      a = data_of(written, 15)
-      call delete_file(written)
-      call run_text_scene("equations_beta", swapped, error, written)
-      call check(ctx, .not. allocated(error), "the regions over (P1, Om) run")
-      if (allocated(error)) then
-         call check(ctx, .false., error%message)
-         return
-      end if
-      b = data_of(written, 15)
-      call delete_file(written)
+      call run_pair(ctx, "the regions over (Om, P1) and (P1, Om)", scene, swapped, 15, a, b, ok)
+      if (.not. ok) return
       call check(ctx, size(a, 2) == size(b, 2) .and. size(a, 2) >= 3, "as many regions, "// &
                  real_text(real(size(a, 2), wp)))
       if (size(a, 2) /= size(b, 2)) return

@@ -240,7 +240,7 @@ contains
       type(error_t), allocatable :: error
       character(len=:), allocatable :: message
       class(hill_model_t), allocatable :: scalar
-      logical :: failed, taken
+      logical :: failed, taken, row_given
       type(system_layout_t) :: layout
       integer :: j
       n_failed = 0
@@ -254,31 +254,23 @@ contains
             if (taken) return
          end if
       end if
+      ! the row's form once where its points share it (C or G change with α: an equation's
+      ! damping along a frequency axis); else each point its own in `evaluate` (a system that
+      ! does not share rows at each point's β; a row whose form failed, point by point)
+      row_given = .true.
+      row_form = form
       if (.not. system%shares_rows()) then
-         ! each point alone (`evaluate`: the system at its β)
-         do j = 1, size(betas)
-            call evaluate(system, form, layout, method, alpha, betas(j), nodes, values(:, j), failed, message)
-            if (failed .and. n_failed == 0) call failure_text(alpha, betas(j), message, failure)
-            if (failed) n_failed = n_failed + 1
-         end do
-         return
+         row_given = .false.
       else if (system%row_dependent()) then
-         ! the row's form once (C or G change with α: an equation's damping along a frequency axis)
          call prepare_system(system, form%epsilon, row_form, error, alpha)
          if (allocated(error)) then
-            do j = 1, size(betas)
-               call evaluate(system, form, layout, method, alpha, betas(j), nodes, values(:, j), failed, message)
-               if (failed .and. n_failed == 0) call failure_text(alpha, betas(j), message, failure)
-               if (failed) n_failed = n_failed + 1
-            end do
-            return
+            row_given = .false.
+            row_form = form
          end if
-      else
-         row_form = form
       end if
       do j = 1, size(betas)
          call evaluate(system, row_form, layout, method, alpha, betas(j), nodes, values(:, j), failed, message, &
-                       .true.)
+                       row_given)
          if (failed .and. n_failed == 0) call failure_text(alpha, betas(j), message, failure)
          if (failed) n_failed = n_failed + 1
       end do
