@@ -716,8 +716,29 @@ contains
       end do
    end function data_of
 
-   !> Run a scene and its twin with the axes swapped: their data lines as numbers
-   !> (n_columns, points); `ok` false (the test failed, naming why) when either did not run.
+   !> Run a scene: its data lines as numbers (n_columns, points), the file deleted; `ok`
+   !> false (the test failed, naming why) when it did not run.
+   subroutine run_data(ctx, what, scene, n_columns, v, ok)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=*), intent(in) :: what
+      character(len=*), intent(in) :: scene(:)
+      integer, intent(in) :: n_columns
+      real(wp), allocatable, intent(out) :: v(:, :)
+      logical, intent(out) :: ok
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: written
+      call run_text_scene("equation_data", scene, error, written)
+      ok = .not. allocated(error)
+      call check(ctx, ok, what//" runs")
+      if (.not. ok) then
+         call check(ctx, .false., error%message)
+         return
+      end if
+      v = data_of(written, n_columns)
+      call delete_file(written)
+   end subroutine run_data
+
+   !> Run a scene and its twin with the axes swapped (`run_data`).
    subroutine run_pair(ctx, what, scene, swapped, n_columns, a, b, ok)
       type(test_context_t), intent(inout) :: ctx
       character(len=*), intent(in) :: what
@@ -725,29 +746,8 @@ contains
       integer, intent(in) :: n_columns
       real(wp), allocatable, intent(out) :: a(:, :), b(:, :)
       logical, intent(out) :: ok
-      type(error_t), allocatable :: error
-      character(len=:), allocatable :: written
-      integer :: k
-      ok = .false.
-      do k = 1, 2
-         if (k == 1) then
-            call run_text_scene("equation_pair", scene, error, written)
-         else
-            call run_text_scene("equation_pair", swapped, error, written)
-         end if
-         call check(ctx, .not. allocated(error), what//": the "//trim(merge("scene  ", "swapped", k == 1))//" runs")
-         if (allocated(error)) then
-            call check(ctx, .false., error%message)
-            return
-         end if
-         if (k == 1) then
-            a = data_of(written, n_columns)
-         else
-            b = data_of(written, n_columns)
-         end if
-         call delete_file(written)
-      end do
-      ok = .true.
+      call run_data(ctx, what//": the scene", scene, n_columns, a, ok)
+      if (ok) call run_data(ctx, what//": the scene swapped", swapped, n_columns, b, ok)
    end subroutine run_pair
 
    !> The β axis entering the frequency, the damping and the stiffness other than affinely
@@ -765,6 +765,7 @@ contains
       real(wp) :: k0, w, c, b, period, s, mu, r
       character(len=8), parameter :: methods(2) = [character(len=8) :: "auto", "rk"]
       integer :: k, m
+      logical :: ok
       out = scratch_prefix("equation_beta")
       ! the frequency along beta
       do m = 1, size(methods)
@@ -773,13 +774,8 @@ contains
          scene(2) = "&equation parameters = 'k0 = 2, w = 1', stiffness = 'k0', frequency = 'w', alpha = 'k0', "// &
                     "beta = 'w' /"
          scene(3) = "&chart alpha_min = 0.5, alpha_max = 3, n_alpha = 4, beta_min = 0.7, beta_max = 3.1, n_beta = 5 /"
-         call run_text_scene("equation_beta", scene, error, written)
-         call check(ctx, .not. allocated(error), trim(methods(m))//": the frequency along beta runs")
-         if (allocated(error)) then
-            call check(ctx, .false., error%message)
-            return
-         end if
-         v = data_of(written, 4)
+         call run_data(ctx, trim(methods(m))//": the frequency along beta", scene, 4, v, ok)
+         if (.not. ok) return
          call check(ctx, size(v, 2) == 20, "20 points")
          do k = 1, size(v, 2)
             k0 = v(1, k)
@@ -789,7 +785,6 @@ contains
             call check(ctx, abs(v(3, k) - s) <= 1.0e-10_wp*max(1.0_wp, abs(s)), trim(methods(m))//": S at k0 = "// &
                        real_text(k0)//", w = "//real_text(w)//": "//real_text(v(3, k))//" against "//real_text(s))
          end do
-         call delete_file(written)
       end do
       ! a frequency axis through 0: refused before anything is written, naming both axes
       scene(1) = "&scene task = 'chart', model = 'equation', columns = 'k0 w S mu', output = '"//out//"' /"
@@ -807,13 +802,8 @@ contains
       scene(2) = "&equation parameters = 'k0 = 2, c = 0.1, w = 1', stiffness = 'k0', damping = 'c', frequency = 'w', "// &
                  "alpha = 'k0', beta = 'c' /"
       scene(3) = "&chart alpha_min = 0.5, alpha_max = 3, n_alpha = 4, beta_min = 0, beta_max = 4.1, n_beta = 7 /"
-      call run_text_scene("equation_beta", scene, error, written)
-      call check(ctx, .not. allocated(error), "the damping along beta runs")
-      if (allocated(error)) then
-         call check(ctx, .false., error%message)
-         return
-      end if
-      v = data_of(written, 4)
+      call run_data(ctx, "the damping along beta", scene, 4, v, ok)
+      if (.not. ok) return
       call check(ctx, size(v, 2) == 28, "28 points")
       period = 2.0_wp*pi
       do k = 1, size(v, 2)
@@ -836,14 +826,11 @@ contains
       pairs = scratch_prefix("equation_beta_pairs")//".dat"
       call write_file(pairs, [(padded(trim(real_text(v(1, k)))//" "//trim(real_text(v(2, k)))), k=1, size(v, 2))])
       p = v
-      call delete_file(written)
       scene(3) = "&points file = '"//pairs//"' /"
       scene(1) = "&scene task = 'points', model = 'equation', tolerance = 1e-11, columns = 'k0 c S mu', output = '"// &
                  out//"' /"
-      call run_text_scene("equation_beta", scene, error, written)
-      call check(ctx, .not. allocated(error), "the points run")
-      if (.not. allocated(error)) then
-         v = data_of(written, 4)
+      call run_data(ctx, "the points", scene, 4, v, ok)
+      if (ok) then
          call check(ctx, size(v, 2) == size(p, 2), "as many points")
          if (size(v, 2) == size(p, 2)) then
             do k = 1, size(v, 2)
@@ -852,7 +839,6 @@ contains
                           real_text(real(k, wp))//": "//real_text(v(3, k))//" and "//real_text(p(3, k)))
             end do
          end if
-         call delete_file(written)
       end if
       call delete_file(pairs)
       ! k = b^2: not affine in the beta axis
@@ -860,13 +846,8 @@ contains
                  out//"' /"
       scene(2) = "&equation parameters = 'w = 1, b = 1', stiffness = 'b^2', frequency = 'w', alpha = 'w', beta = 'b' /"
       scene(3) = "&chart alpha_min = 0.8, alpha_max = 2, n_alpha = 3, beta_min = -1.3, beta_max = 1.7, n_beta = 6 /"
-      call run_text_scene("equation_beta", scene, error, written)
-      call check(ctx, .not. allocated(error), "k = b^2 runs")
-      if (allocated(error)) then
-         call check(ctx, .false., error%message)
-         return
-      end if
-      v = data_of(written, 3)
+      call run_data(ctx, "k = b^2", scene, 3, v, ok)
+      if (.not. ok) return
       call check(ctx, size(v, 2) == 18, "18 points")
       do k = 1, size(v, 2)
          w = v(1, k)
@@ -875,7 +856,6 @@ contains
          call check(ctx, abs(v(3, k) - s) <= 1.0e-10_wp*max(1.0_wp, abs(s)), "S at w = "//real_text(w)//", b = "// &
                     real_text(b)//": "//real_text(v(3, k))//" against "//real_text(s))
       end do
-      call delete_file(written)
    end subroutine beta_anywhere_closed_forms
 
    !> The damped Kapitza pendulum charted with its axes swapped (alpha = 'A', beta = 'w': the
@@ -938,8 +918,7 @@ contains
    subroutine system_beta_anywhere(ctx)
       type(test_context_t), intent(inout) :: ctx
       character(len=400) :: scene(4), swapped(4)
-      character(len=:), allocatable :: written, out
-      type(error_t), allocatable :: error
+      character(len=:), allocatable :: out
       real(wp), allocatable :: v(:, :), a(:, :), b(:, :)
       real(wp) :: w, c, period, tr, mu, r, k(2), lambda
       integer :: i, j, m, n_found
@@ -950,14 +929,8 @@ contains
       scene(2) = "&equations n = 2, parameters = 'c = 0.1, w = 1', matrices = 'K = [1.5, 0; 0, 4.2]', "// &
                  "stiffness = 'K', damping = 'c', frequency = 'w', alpha = 'w', beta = 'c' /"
       scene(3) = "&chart alpha_min = 0.6, alpha_max = 2.4, n_alpha = 4, beta_min = 0, beta_max = 5, n_beta = 6 /"
-      call run_text_scene("equations_beta", scene(1:3), error, written)
-      call check(ctx, .not. allocated(error), "the damping along beta runs")
-      if (allocated(error)) then
-         call check(ctx, .false., error%message)
-         return
-      end if
-      v = data_of(written, 4)
-      call delete_file(written)
+      call run_data(ctx, "the system's damping along beta", scene(1:3), 4, v, ok)
+      if (.not. ok) return
       call check(ctx, size(v, 2) == 24, "24 points")
       k = [1.5_wp, 4.2_wp]
       do j = 1, size(v, 2)
