@@ -414,7 +414,7 @@ contains
       if (present(stats)) stats = work
    end subroutine monodromy_trace
 
-   !> err_invalid_parameter: the point (α, β) of a model that does not share rows lies outside
+   !> Refuse with err_invalid_parameter the point (α, β) of a model that does not share rows, outside
    !> its domain (`alpha_domain`, which then names both axes).
    pure subroutine outside_domain(model, alpha, beta, error)
       class(hill_model_t), intent(in) :: model  !! the model
