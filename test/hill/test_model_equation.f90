@@ -11,7 +11,7 @@
 module test_model_equation
    use hillstab_core_kinds, only: wp, pi
    use hillstab_core_text, only: real_text
-   use hillstab_core_error, only: error_t, set_error, err_input, err_accuracy, err_invalid_parameter
+   use hillstab_core_error, only: error_t, set_error, err_input, err_accuracy
    use hillstab_hill_model, only: hill_point_t
    use hillstab_hill_model_equation, only: equation_model_t
    use hillstab_hill_model_mathieu, only: mathieu_model_t
@@ -791,11 +791,22 @@ contains
       scene(3) = "&chart alpha_min = 0.5, alpha_max = 3, n_alpha = 4, beta_min = -1, beta_max = 1, n_beta = 5 /"
       call run_text_scene("equation_beta", scene, error, written)
       call check(ctx, allocated(error), "a frequency through 0 is refused")
-      ! (an input error or an invalid parameter: exit status 2 either way)
-      if (allocated(error)) call check(ctx, (error%code == err_input .or. error%code == err_invalid_parameter) .and. &
-                                       index(error%message, "the points (k0, w)") > 0 .and. &
-                                       index(error%message, "beta = -1.0") > 0, "named: "//error%message)
+      if (allocated(error)) call check(ctx, error%code == err_input .and. index(error%message, "&chart: beta_min:") > 0 &
+                                       .and. index(error%message, "the points (k0, w)") > 0 .and. &
+                                       index(error%message, "beta = -1") > 0, "named: "//error%message)
       call check(ctx, .not. file_exists(out//"_chart.dat"), "no file written")
+      ! and a points file's pair there, naming its line
+      pairs = scratch_prefix("equation_beta_pairs")//".dat"
+      call write_file(pairs, [padded("1 2"), padded("0.5 -1")])
+      scene(1) = "&scene task = 'points', model = 'equation', columns = 'k0 w S', output = '"//out//"' /"
+      scene(3) = "&points file = '"//pairs//"' /"
+      call run_text_scene("equation_beta", scene, error, written)
+      call check(ctx, allocated(error), "a points file's pair at w = -1 is refused")
+      if (allocated(error)) call check(ctx, error%code == err_input .and. index(error%message, "&points: file:") > 0 &
+                                       .and. index(error%message, "line 2") > 0 .and. &
+                                       index(error%message, "beta = -1") > 0, "named: "//error%message)
+      call check(ctx, .not. file_exists(out//"_points.dat"), "no points file written")
+      call delete_file(pairs)
       ! the damping along beta, under- and over-damped (c^2 = 4 k0 nowhere on the grid)
       scene(1) = "&scene task = 'chart', model = 'equation', tolerance = 1e-11, columns = 'k0 c S mu', output = '"// &
                  out//"' /"

@@ -398,11 +398,9 @@ contains
       real(wp) :: t(scale_nodes), a(scale_nodes), b(scale_nodes), m, c, drive
       type(error_t), allocatable :: failure
       integer :: j
-      if (self%kept) then
-         if (alpha == self%kept_alpha) then
-            row = self%kept_row
-            return
-         end if
+      if (kept_at(self, alpha)) then
+         row = self%kept_row
+         return
       end if
       if (.not. self%ready) then
          allocate (row%p(0))
@@ -620,12 +618,10 @@ contains
       real(wp), intent(in) :: tau(:)               !! the times
       real(wp), intent(out) :: v(:)                !! v there
       real(wp) :: w(size(tau))
-      if (self%kept) then
+      if (kept_at(self, alpha)) then
          ! a point's equation: b = 0, so v = 0 (w, from `equation_shapes`, is NaN where k is not finite)
-         if (alpha == self%kept_alpha .and. self%kept_row%constant_b) then
-            v = 0.0_wp
-            return
-         end if
+         v = 0.0_wp
+         return
       end if
       call row_shapes(self, row_at(self, alpha), tau, w, v)
    end subroutine equation_offsets
@@ -638,14 +634,12 @@ contains
       real(wp), intent(out) :: w_min, w_max, v_min, v_max  !! the ranges
       real(wp) :: tau(range_nodes), w(range_nodes), v(range_nodes), spread
       integer :: j
-      if (self%kept) then
-         if (alpha == self%kept_alpha) then
-            w_min = self%kept_ranges(1)
-            w_max = self%kept_ranges(2)
-            v_min = self%kept_ranges(3)
-            v_max = self%kept_ranges(4)
-            return
-         end if
+      if (kept_at(self, alpha)) then
+         w_min = self%kept_ranges(1)
+         w_max = self%kept_ranges(2)
+         v_min = self%kept_ranges(3)
+         v_max = self%kept_ranges(4)
+         return
       end if
       tau = [(2.0_wp*real(j - 1, wp)/range_nodes, j=1, range_nodes)]
       call row_shapes(self, row_at(self, alpha), tau, w, v)
@@ -693,11 +687,9 @@ contains
       type(error_t), allocatable :: failure
       integer :: j
       logical :: even
-      if (self%kept) then
-         if (alpha == self%kept_alpha) then
-            window = self%kept_window
-            return
-         end if
+      if (kept_at(self, alpha)) then
+         window = self%kept_window
+         return
       end if
       row = row_at(self, alpha)
       even = .false.
@@ -802,42 +794,36 @@ contains
       equation_shares_rows = self%pinned .or. .not. self%beta_general
    end function equation_shares_rows
 
-   !> The equation at β (`pinned_at`), its row at α, the ranges of its split and its window
-   !> there kept.
+   !> The equation at β: a copy with its β axis fixed there (`pinned`) when β enters anywhere,
+   !> its row at α, the ranges of its split and its window there kept; else the equation.
    subroutine equation_at_point(self, alpha, beta, local)
       class(equation_model_t), intent(in) :: self  !! the model
       real(wp), intent(in) :: alpha                !! α of the point
       real(wp), intent(in) :: beta                 !! β of the point
       class(hill_model_t), allocatable, intent(out) :: local  !! the equation at β
-      allocate (local, source=pinned_at(self, beta))
+      allocate (local, source=self)
       select type (local)
-      type is (equation_model_t)
-         if (local%pinned .and. ieee_is_finite(alpha)) then
-            local%kept_row = row_at(local, alpha)
-            local%kept_alpha = alpha
-            call sampled_ranges(local, alpha, local%kept_ranges(1), local%kept_ranges(2), local%kept_ranges(3), &
-                                local%kept_ranges(4))
-            local%kept_window = equation_window(local, alpha)
-            ! kept last: the values above are computed, not read back
-            local%kept = .true.
-         end if
+      class is (equation_model_t)
+         if (.not. (local%beta_general .and. local%ready) .or. local%pinned) return
+         local%values(local%i_beta) = beta
+         local%pinned = .true.
+         if (.not. ieee_is_finite(alpha)) return
+         local%kept_row = row_at(local, alpha)
+         local%kept_alpha = alpha
+         call sampled_ranges(local, alpha, local%kept_ranges(1), local%kept_ranges(2), local%kept_ranges(3), &
+                             local%kept_ranges(4))
+         local%kept_window = equation_window(local, alpha)
+         ! kept last: the values above are computed, not read back
+         local%kept = .true.
       end select
    end subroutine equation_at_point
 
-   !> The equation with its β axis fixed at β (`pinned`), when β enters anywhere; else
-   !> the equation itself. Its point (α, 0) is the equation's (α, β), its row one point.
-   pure function pinned_at(self, beta) result(local)
+   !> The equation keeps what it derives at α: it is a point's equation, at the point's α.
+   elemental logical function kept_at(self, alpha)
       class(equation_model_t), intent(in) :: self  !! the model
-      real(wp), intent(in) :: beta                 !! β of the point
-      type(equation_model_t) :: local
-      select type (self)
-      type is (equation_model_t)
-         local = self
-      end select
-      if (.not. (local%beta_general .and. local%ready) .or. local%pinned) return
-      local%values(local%i_beta) = beta
-      local%pinned = .true.
-   end function pinned_at
+      real(wp), intent(in) :: alpha                !! α
+      kept_at = self%kept .and. alpha == self%kept_alpha
+   end function kept_at
 
    !> The damping is the equation's own (`damping`), not the scene's ε.
    elemental logical function equation_own_damping(self)

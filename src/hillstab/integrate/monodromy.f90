@@ -362,21 +362,9 @@ contains
       type(work_stats_t) :: work
       class(hill_model_t), allocatable :: local
       if (.not. model%shares_rows()) then
-         ! β's own limits here (finite, |β| <= 1e15); α's at the point's β
-         if (.not. ieee_is_finite(point%beta)) then
-            call check_point(model, point, error)
-            return
-         end if
-         if (abs(point%beta) > max_magnitude) then
-            call check_point(model, point, error)
-            return
-         end if
-         call model%at_point(point%alpha, point%beta, local)
-         if (.not. local%alpha_valid(point%alpha)) then
-            call outside_domain(model, point%alpha, point%beta, error)
-            return
-         end if
-         call monodromy_trace(local, hill_point_t(point%alpha, 0.0_wp, point%epsilon), method, tr, error, stats)
+         call point_alone(model, point%alpha, point%beta, point%epsilon, local, error)
+         if (.not. allocated(error)) call monodromy_trace(local, hill_point_t(point%alpha, 0.0_wp, point%epsilon), &
+                                                          method, tr, error, stats)
          return
       end if
       call check_point(model, point, error)
@@ -414,18 +402,33 @@ contains
       if (present(stats)) stats = work
    end subroutine monodromy_trace
 
-   !> Refuse with err_invalid_parameter the point (α, β) of a model that does not share rows, outside
-   !> its domain (`alpha_domain`, which then names both axes).
-   pure subroutine outside_domain(model, alpha, beta, error)
+   !> The model at the point (α, β) of a model that does not share rows (`at_point`), whose
+   !> point (α, 0) the methods then take; err_invalid_parameter where β is out of every
+   !> model's limits (`check_point`: finite, |β| ≤ 1e15) or the point out of the model's
+   !> domain (`alpha_domain`, which then names both axes).
+   subroutine point_alone(model, alpha, beta, epsilon, local, error)
       class(hill_model_t), intent(in) :: model  !! the model
       real(wp), intent(in) :: alpha, beta       !! the point
+      real(wp), intent(in) :: epsilon           !! its damping, for `check_point`'s message
+      class(hill_model_t), allocatable, intent(out) :: local  !! the model at β
       type(error_t), allocatable, intent(out) :: error  !! the refusal
       character(len=24) :: a, b
+      ! NaN first, on its own: an ordered comparison of a NaN raises the invalid flag
+      if (.not. ieee_is_finite(beta)) then
+         call check_point(model, hill_point_t(alpha, beta, epsilon), error)
+         return
+      end if
+      if (abs(beta) > max_magnitude) then
+         call check_point(model, hill_point_t(alpha, beta, epsilon), error)
+         return
+      end if
+      call model%at_point(alpha, beta, local)
+      if (local%alpha_valid(alpha)) return
       write (a, '(es23.16)') alpha
       write (b, '(es23.16)') beta
       call set_error(error, err_invalid_parameter, model%name()//" model needs "//model%alpha_domain()// &
          ", got alpha = "//trim(adjustl(a))//", beta = "//trim(adjustl(b)))
-   end subroutine outside_domain
+   end subroutine point_alone
 
    !> Traces of the points (α, β_j) of one model kind, α and ε, e.g. a chart row. Method
    !> auto shares its meshes and coefficient values across the batch (much faster than
@@ -478,19 +481,10 @@ contains
       if (.not. model%shares_rows()) then
          ! each point alone: the model at its β, the point (α, 0) there with its damping
          do j = 1, size(betas)
-            if (.not. ieee_is_finite(betas(j))) then
-               call point_refused(j)
-               cycle
-            end if
-            if (abs(betas(j)) > max_magnitude) then
-               call point_refused(j)
-               cycle
-            end if
-            call model%at_point(row%alpha, betas(j), local)
-            if (.not. local%alpha_valid(row%alpha)) then
+            call point_alone(model, row%alpha, betas(j), row%epsilon, local, point_error)
+            if (allocated(point_error)) then
                traces(j) = trace_t()
                failed(j) = .true.
-               call outside_domain(model, row%alpha, betas(j), point_error)
                if (.not. allocated(error)) call move_alloc(point_error, error)
                if (allocated(point_error)) deallocate (point_error)
                cycle
@@ -623,20 +617,5 @@ contains
          end if
       end do
       if (present(stats)) stats = work
-
-   contains
-
-      !> Point j is out of the limits of every β: failed, its error the first if none before.
-      subroutine point_refused(j)
-         integer, intent(in) :: j
-         traces(j) = trace_t()
-         failed(j) = .true.
-         call check_point(model, hill_point_t(row%alpha, betas(j), row%epsilon), point_error)
-         if (.not. allocated(error)) then
-            call move_alloc(point_error, error)
-         else if (allocated(point_error)) then
-            deallocate (point_error)
-         end if
-      end subroutine point_refused
    end subroutine monodromy_trace_batch
 end module hillstab_integrate_monodromy

@@ -97,8 +97,10 @@ contains
    end subroutine check_range
 
    !> α must lie in the model's domain (the elastic model: 0 <= α < π², a < ρ; the Mathieu
-   !> model takes any finite ν).
-   subroutine check_alpha_domain(path, model, group, variable, alpha, error, where)
+   !> model takes any finite ν). With `beta`, for a model that does not share rows, the point
+   !> (α, β) must lie in the domain of the model at β (`at_point`: an equation whose frequency,
+   !> mass or damping is of the β axis).
+   subroutine check_alpha_domain(path, model, group, variable, alpha, error, where, beta)
       character(len=*), intent(in) :: path  !! the scene file
       !> the model (the domain of α); absent for a system (any finite α)
       class(hill_model_t), intent(in), optional :: model
@@ -106,10 +108,22 @@ contains
       real(wp), intent(in) :: alpha  !! a finite value
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable; unallocated when fine
       character(len=*), intent(in), optional :: where  !! position in a data file
+      real(wp), intent(in), optional :: beta  !! β of the point (a finite value)
       character(len=:), allocatable :: prefix
+      class(hill_model_t), allocatable :: local
       prefix = ""
       if (present(where)) prefix = where//": "
       if (.not. present(model)) return
+      if (present(beta)) then
+         if (model%shares_rows()) return
+         call model%at_point(alpha, beta, local)
+         if (local%alpha_valid(alpha)) return
+         call fail(error, path, group, variable, prefix//"the "//model%name()//" model needs "// &
+            model%alpha_domain()//", got alpha = "//real_text(alpha)//", beta = "//real_text(beta))
+         return
+      end if
+      ! a model taken a point at a time: α is checked at each point's β (with `beta`)
+      if (.not. model%shares_rows()) return
       if (model%alpha_valid(alpha)) return
       call fail(error, path, group, variable, prefix//"the "//model%name()//" model needs "// &
          model%alpha_domain()//" (amplitude a < rho), got alpha = "//real_text(alpha))

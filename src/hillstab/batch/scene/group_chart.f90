@@ -111,6 +111,15 @@ contains
       if (allocated(error)) return
       call check_range(file%path, group%name, "beta", beta_min, beta_max, n_beta, error)
       if (allocated(error)) return
+      ! the corners, where the model is taken a point at a time (its β in its frequency, ...)
+      call check_alpha_domain(file%path, model, group%name, "beta_min", alpha_min, error, beta=beta_min)
+      if (.not. allocated(error)) call check_alpha_domain(file%path, model, group%name, "beta_min", alpha_max, error, &
+                                                          beta=beta_min)
+      if (.not. allocated(error)) call check_alpha_domain(file%path, model, group%name, "beta_max", alpha_min, error, &
+                                                          beta=beta_max)
+      if (.not. allocated(error)) call check_alpha_domain(file%path, model, group%name, "beta_max", alpha_max, error, &
+                                                          beta=beta_max)
+      if (allocated(error)) return
       call read_scale(file%path, group%name, "alpha", alpha_scale, alpha_min, values, alpha_kind, error)
       if (allocated(error)) return
       call read_scale(file%path, group%name, "beta", beta_scale, beta_min, values, beta_kind, error)

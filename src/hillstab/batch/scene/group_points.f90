@@ -135,6 +135,8 @@ contains
             exit
          end if
          call check_alpha_domain(source, model, group, "file", pair(1), error, where)
+         if (.not. allocated(error)) call check_alpha_domain(source, model, group, "file", pair(1), error, where, &
+                                                             beta=pair(2))
          if (allocated(error)) exit
          if (n == max_points) then
             call fail(error, source, group, "file", where//": more than "//integer_text(max_points)// &

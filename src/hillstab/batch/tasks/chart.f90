@@ -248,12 +248,12 @@ contains
             ! a verdict line (or a failed point's), written directly
             lengths(j) = 0
             if (present(beta_texts)) then
-               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), period_damping(dampings(j), &
+               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), period_damping(dampings(j:j), &
                                   scene%model%period()), scene%method%tolerance, &
                                   statuses(j:j), [in_physical_domain(alpha, betas(j))], [a], alpha_text, lines(j), &
                                   lengths(j), beta_texts(j:j))
             else
-               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), period_damping(dampings(j), &
+               call verdict_lines(columns, alpha, betas(j:j), traces(j:j), period_damping(dampings(j:j), &
                                   scene%model%period()), scene%method%tolerance, &
                                   statuses(j:j), [in_physical_domain(alpha, betas(j))], [a], alpha_text, lines(j), &
                                   lengths(j))
@@ -402,12 +402,11 @@ contains
       real(wp), allocatable :: amplitudes(:)
       type(error_t), allocatable :: cause
       character(len=:), allocatable :: buffer
-      integer :: j, pos, ip, ia
-      real(wp) :: damping, dampings(size(betas))
-      damping = scene%model%point_damping(alpha, scene%epsilon)
-      call monodromy_trace_batch(scene%model, hill_point_t(alpha, 0.0_wp, damping), betas, scene%method, &
-                                 traces, failed, cause, inaccurate=inaccurate, need=columns%need, &
-                                 paper=columns%paper, dampings=dampings)
+      integer :: j, pos
+      real(wp) :: dampings(size(betas))
+      call monodromy_trace_batch(scene%model, hill_point_t(alpha, 0.0_wp, scene%model%point_damping(alpha, &
+                                 scene%epsilon)), betas, scene%method, traces, failed, cause, inaccurate=inaccurate, &
+                                 need=columns%need, paper=columns%paper, dampings=dampings)
       statuses = merge(status_roundoff, status_ok, inaccurate)
       where (failed) statuses = status_failed
       allocate (physical(0), amplitudes(0))
@@ -420,25 +419,9 @@ contains
          buffer(1:1) = new_line("a")
          pos = 1
       end if
-      if (scene%model%shares_rows()) then
-         call verdict_lines(columns, alpha, betas, traces, period_damping(damping, scene%model%period()), &
-                            scene%method%tolerance, statuses, physical, &
-                            amplitudes, format_es(alpha, 17), buffer, pos, beta_texts)
-      else
-         ! each point its own damping
-         do j = 1, size(betas)
-            if (j > 1) then
-               buffer(pos + 1:pos + 1) = new_line("a")
-               pos = pos + 1
-            end if
-            ! the point's physical flag and amplitude, where the row has them
-            ip = merge(j, 0, size(physical) > 0)
-            ia = merge(j, 0, size(amplitudes) > 0)
-            call verdict_lines(columns, alpha, betas(j:j), traces(j:j), period_damping(dampings(j), &
-                               scene%model%period()), scene%method%tolerance, statuses(j:j), physical(max(ip, 1):ip), &
-                               amplitudes(max(ia, 1):ia), format_es(alpha, 17), buffer, pos, beta_texts(j:j))
-         end do
-      end if
+      call verdict_lines(columns, alpha, betas, traces, period_damping(dampings, scene%model%period()), &
+                         scene%method%tolerance, statuses, physical, &
+                         amplitudes, format_es(alpha, 17), buffer, pos, beta_texts)
       text = buffer(1:pos)
    end subroutine verdict_row_text
 

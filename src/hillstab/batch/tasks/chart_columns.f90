@@ -203,13 +203,13 @@ contains
    !> `verdicts` (hillstab_hill_floquet), the usual case (no damping, an estimate below 1)
    !> written out here; a failed point's line is `chart_line`'s of `failed_values`; a column
    !> without a case here gets its value from `chart_values` of `floquet_verdict`.
-   pure subroutine verdict_lines(columns, alpha, betas, traces, epsilon, tolerance, statuses, physical, amplitudes, &
+   pure subroutine verdict_lines(columns, alpha, betas, traces, decays, tolerance, statuses, physical, amplitudes, &
                                  alpha_text, buffer, pos, beta_texts)
       type(chart_layout_t), intent(in) :: columns  !! the columns to write (none needing more than the verdict)
       real(wp), intent(in) :: alpha        !! the points' α
       real(wp), intent(in) :: betas(:)     !! their β
       type(trace_t), intent(in) :: traces(:)  !! their traces, with error bounds
-      real(wp), intent(in) :: epsilon      !! damping ε
+      real(wp), intent(in) :: decays(:)    !! each point's damping over a period (`period_damping`)
       real(wp), intent(in) :: tolerance    !! the scene's tolerance
       integer, intent(in) :: statuses(:)   !! per-point status codes (status_failed: no trace)
       !> (α, β) inside the physical domain, per point; empty when no column asks
@@ -247,13 +247,13 @@ contains
             cycle
          end if
          s = traces(j)%value
-         if (epsilon == 0.0_wp .and. .not. traces(j)%overflow .and. traces(j)%error_estimate >= 0.0_wp .and. &
+         if (decays(j) == 0.0_wp .and. .not. traces(j)%overflow .and. traces(j)%error_estimate >= 0.0_wp .and. &
              traces(j)%error_estimate < 1.0_wp) then
             stable = abs(s) < 2.0_wp
             stable_paper = abs(s) <= 2.0_wp
             marginal = near_threshold(s, 0.0_wp, max(traces(j)%error_estimate, tolerance))
          else
-            call verdicts(traces(j), epsilon, tolerance, stable, stable_paper, marginal)
+            call verdicts(traces(j), decays(j), tolerance, stable, stable_paper, marginal)
          end if
          do k = 1, size(ids)
             if (k > 1) then
@@ -296,7 +296,7 @@ contains
             case default
                ! no other column reaches a chart's verdict file today (omega is offered to
                ! points files only): the value `chart_values` gives
-               v = chart_values(alpha, betas(j), floquet_verdict(traces(j), epsilon, tolerance), inside, statuses(j), &
+               v = chart_values(alpha, betas(j), floquet_verdict(traces(j), decays(j), tolerance), inside, statuses(j), &
                                 amplitude=a, need=need_verdict)
                p = pos
                call put_value(columns%styles(ids(k)), v(ids(k)), buffer, p)

@@ -165,6 +165,8 @@ contains
       do k = 1, size(self%alphas)
          call require_bounded(file%path, group%name, "alphas", self%alphas(k), error)
          if (allocated(error)) return
+         call check_alpha_domain(file%path, scene%model, group%name, "beta", self%alphas(k), error, beta=beta)
+         if (allocated(error)) return
       end do
       call check_range(file%path, group%name, "tau", tau_min, tau_max, n_tau, error)
       if (allocated(error)) return
