@@ -795,6 +795,19 @@ contains
                                        .and. index(error%message, "the points (k0, w)") > 0 .and. &
                                        index(error%message, "beta = -1") > 0, "named: "//error%message)
       call check(ctx, .not. file_exists(out//"_chart.dat"), "no file written")
+      ! the frequency along alpha through 0 (rows shared): refused naming alpha_min, in the
+      ! equation's own terms (no pendulum amplitude in the message)
+      scene(2) = "&equation parameters = 'k0 = 2, w = 1', stiffness = 'k0', frequency = 'w', alpha = 'w', "// &
+                 "beta = 'k0' /"
+      scene(3) = "&chart alpha_min = -1, alpha_max = 1, n_alpha = 4, beta_min = 0.7, beta_max = 3.1, n_beta = 5 /"
+      call run_text_scene("equation_beta", scene, error, written)
+      call check(ctx, allocated(error), "a frequency through 0 along alpha is refused")
+      if (allocated(error)) call check(ctx, error%code == err_input .and. index(error%message, "&chart: alpha_min:") > 0 &
+                                       .and. index(error%message, "got alpha = -1") > 0 .and. &
+                                       index(error%message, "rho") == 0, "named, in the equation's terms: "//error%message)
+      call check(ctx, .not. file_exists(out//"_chart.dat"), "no file written")
+      scene(2) = "&equation parameters = 'k0 = 2, w = 1', stiffness = 'k0', frequency = 'w', alpha = 'k0', "// &
+                 "beta = 'w' /"
       ! and a points file's pair there, naming its line
       pairs = scratch_prefix("equation_beta_pairs")//".dat"
       call write_file(pairs, [padded("1 2"), padded("0.5 -1")])

@@ -32,7 +32,7 @@ module hillstab_hill_model_elastic
    public :: elastic_hill_k, elastic_hill_coupling, elastic_fourier_decay, elastic_two_piece_values
 
    !> The α domain in words, for messages: a < ρ, the mass never reaches the pivot.
-   character(len=*), parameter :: elastic_alpha_domain = "0 <= alpha < pi**2 = 9.8696044010893586"
+   character(len=*), parameter :: elastic_alpha_domain = "0 <= alpha < pi**2 = 9.8696044010893586 (amplitude a < rho)"
 
    !> The elastic pendulum's coefficient, eq. (25), as a model (hillstab_hill_model).
    type, extends(pendulum_model_t) :: elastic_model_t

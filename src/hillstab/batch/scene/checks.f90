@@ -126,7 +126,7 @@ contains
       if (.not. model%shares_rows()) return
       if (model%alpha_valid(alpha)) return
       call fail(error, path, group, variable, prefix//"the "//model%name()//" model needs "// &
-         model%alpha_domain()//" (amplitude a < rho), got alpha = "//real_text(alpha))
+         model%alpha_domain()//", got alpha = "//real_text(alpha))
    end subroutine check_alpha_domain
 
    !> The integrating methods (magnus4, magnus6, rk, gsl) take steps in proportion to
