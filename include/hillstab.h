@@ -166,6 +166,12 @@ int hillstab_model_variable_count(const hillstab_model *model, int *count);
 int hillstab_model_variable_name(const hillstab_model *model, int index, char *buffer, size_t length,
                                  int *max_count);
 
+/* d tau/dt at the n points (alpha[j], beta[j]): rate[j] turns a rate per unit tau (mu) into one
+ * per unit of the model's own time t (an equation: Omega/pi at the point); 0 for a model in tau
+ * alone and at a point outside the domain. */
+int hillstab_model_tau_rate(const hillstab_model *model, size_t n, const double *alpha, const double *beta,
+                            double *rate);
+
 /* The n points (alpha[j], beta[j], epsilon[j]) as task points computes them:
  * values[j][HILLSTAB_VALUE_*], status[j]. paper = 1 settles the paper's verdict too. */
 int hillstab_points(const hillstab_model *model, size_t n, const double *alpha, const double *beta,

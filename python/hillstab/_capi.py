@@ -86,6 +86,7 @@ _declare("hillstab_model_formula", ctypes.c_int, _model_p, ctypes.c_char_p, ctyp
 _declare("hillstab_model_variable_count", ctypes.c_int, _model_p, _c_int_p)
 _declare("hillstab_model_variable_name", ctypes.c_int, _model_p, ctypes.c_int, ctypes.c_char_p, ctypes.c_size_t,
          _c_int_p)
+_declare("hillstab_model_tau_rate", ctypes.c_int, _model_p, ctypes.c_size_t, _c_double_p, _c_double_p, _c_double_p)
 _declare("hillstab_points", ctypes.c_int, _model_p, ctypes.c_size_t, _c_double_p, _c_double_p, _c_double_p,
          ctypes.c_int, ctypes.c_int, ctypes.c_int, ctypes.c_double, ctypes.c_int, ctypes.c_int, ctypes.c_int,
          _c_double_p, _c_int_p)

@@ -102,6 +102,19 @@ class Model:
         check(lib.hillstab_q(code, float(alpha), float(beta), float(epsilon), float(tau), ctypes.byref(out)))
         return out.value
 
+    def tau_rate(self, alpha, beta):
+        """dτ/dt at the points (α, β) (arrays broadcast together): μ times it is the Floquet
+        exponent per unit of the model's own time t — an equation's Ω/π at each point (its
+        drive may depend on either axis); 0 for a model in τ alone (elastic, Mathieu) and at a
+        point outside the domain. Through ``hillstab_model_tau_rate``."""
+        a, b = np.broadcast_arrays(_capi.real_array("alpha", alpha), _capi.real_array("beta", beta))
+        shape = a.shape
+        a, b = (_capi.as_doubles(x.ravel()) for x in (a, b))
+        rate = np.empty(a.size)
+        check(lib.hillstab_model_tau_rate(self._handle, a.size, _capi.doubles(a), _capi.doubles(b),
+                                          _capi.doubles(rate)))
+        return rate.reshape(shape)
+
     def __repr__(self):
         return "hillstab.Model({!r})".format(self.name)
 
@@ -122,7 +135,7 @@ class Equation(Model):
     work is shared along a row). The damping is the equation's own, at
     every point (``epsilon`` must stay 0); the results are the physical equation's: its
     multipliers over one period, ``S`` S₁ = e^{cT/(2m)} times the trace of its
-    monodromy, ``mu`` μ per unit τ = Ωt/π (μ Ω/π per unit time).
+    monodromy, ``mu`` μ per unit τ = Ωt/π (μ Ω/π per unit time: ``mu * tau_rate(alpha, beta)``).
 
     >>> kapitza = Equation("-g/l + A*w^2/l*cos(w*t)", frequency="w", damping="kappa",
     ...                    parameters={"g": 9.81, "l": 0.2, "kappa": 0.2, "A": 0.005, "w": 314.16},

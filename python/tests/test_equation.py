@@ -90,6 +90,32 @@ def test_beta_anywhere_axes_swapped(cli):
                                                     model=kapitza).trace) <= 2e-10 * np.maximum(1.0, np.abs(p.trace)))
 
 
+def test_rates_per_unit_time(cli):
+    """mu times `tau_rate` is the exponent per unit of the equation's time t at each point's
+    Omega: at A = 0 the inverted pendulum's g/l - kappa theta' alone grows as e^{rt},
+    r = -kappa/2 + sqrt(kappa^2/4 + g/l), whatever w; with the axes swapped too (w along beta);
+    and it is the command line's column mu_per_s. A model in tau alone has rate 0."""
+    r = -KAPPA / 2 + math.sqrt(KAPPA ** 2 / 4 + G / L)
+    w = np.array([60.0, 250.0, 700.0])
+    for model, alpha, beta in ((hillstab.Equation(**KAPITZA), w, 0.0 * w),
+                               (hillstab.Equation(**dict(KAPITZA, alpha="A", beta="w")), 0.0 * w, w)):
+        rate = model.tau_rate(alpha, beta)
+        assert np.allclose(rate, w / math.pi, rtol=1e-15, atol=0.0)
+        mu = hillstab.floquet(alpha, beta, model=model, values=("mu",)).mu
+        assert np.all(np.abs(mu * rate - r) <= 1e-9)
+    assert model.tau_rate(0.0, np.array([[1.0], [-1.0]])).tolist() == [[1.0 / math.pi], [0.0]]
+    assert np.all(hillstab.Model("mathieu").tau_rate([1.0, 2.0], 0.5) == 0.0)
+    scene = SCENE.format(name="rates", fmt="text").replace("output", "columns = 'w A mu mu_per_s', output")
+    cli.run("rates", scene)
+    out = hillstab.read_output(cli.path("rates_chart.dat"))
+    kapitza = hillstab.Equation(**KAPITZA)
+    rows = np.loadtxt(cli.path("rates_chart.dat"))
+    ours = hillstab.floquet(rows[:, 0], rows[:, 1], model=kapitza, values=("mu",)).mu * kapitza.tau_rate(rows[:, 0],
+                                                                                                          rows[:, 1])
+    assert out.grid("mu_per_s").size == rows.shape[0]
+    assert np.all(np.abs(ours - rows[:, 3]) <= 1e-10 * np.maximum(1.0, np.abs(rows[:, 3])))
+
+
 def test_parameters_as_text_and_formula():
     kapitza = hillstab.Equation("-g/l + A*w^2/l*cos(w*t)", frequency="w", damping=0.2,
                                 parameters="g = 9.81, l = 0.2, A = 0.005, w = 314.16", alpha="w", beta="A")

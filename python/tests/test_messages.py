@@ -23,7 +23,7 @@ def message(call):
 def test_alpha_outside_the_elastic_domain():
     text = message(lambda: hillstab.floquet([1.0, -0.1], 1.0, model="elastic"))
     assert text == ("point 1 (alpha = -0.1, beta = 1.0, epsilon = 0.0): elastic model needs 0 <= alpha < "
-                    "pi**2 = 9.869604401089358, got alpha = -0.1")
+                    "pi**2 = 9.869604401089358 (amplitude a < rho), got alpha = -0.1")
     assert "got alpha = 10.0" in message(lambda: hillstab.chart((0.5, 10.0, 3), (0.0, 1.0, 3), model="elastic"))
     assert "got alpha = -1.0" in message(lambda: hillstab.transition_curves([1.0, -1.0], 0.0, 1.0))
 

@@ -10,7 +10,7 @@
 !> between two methods; bad input refused naming file, group and variable.
 module test_model_equation
    use hillstab_core_kinds, only: wp, pi
-   use hillstab_core_text, only: real_text
+   use hillstab_core_text, only: real_text, integer_text
    use hillstab_core_error, only: error_t, set_error, err_input, err_accuracy
    use hillstab_hill_model, only: hill_point_t
    use hillstab_hill_model_equation, only: equation_model_t
@@ -53,6 +53,7 @@ contains
          new_unittest("beta_anywhere_closed_forms", beta_anywhere_closed_forms), &
          new_unittest("beta_anywhere_axes_swapped", beta_anywhere_axes_swapped), &
          new_unittest("system_beta_anywhere", system_beta_anywhere), &
+         new_unittest("rates_per_unit_time", rates_per_unit_time), &
          new_unittest("tasks_on_equations", tasks_on_equations), &
          new_unittest("first_order_column", first_order_column), &
          new_unittest("first_order_three_states", first_order_three_states), &
@@ -737,6 +738,87 @@ contains
       v = data_of(written, n_columns)
       call delete_file(written)
    end subroutine run_data
+
+   !> The column mu_per_s of an equation: the Floquet exponent per unit of its time t at each
+   !> point's Ω, against the closed form of constant stiffness (A = 0): x'' + c x' + k0 x = 0
+   !> grows as e^{rt}, r = −c/2 + Re √(c²/4 − k0), whatever Ω (μ per unit τ = Ωt/π is r π/Ω,
+   !> so that each point's Ω is what makes r). Over (w, A), whose rows share Ω, over (A, w),
+   !> whose points each have their own, and in the points task; unstable (k0 < 0) and damped
+   !> (k0 > 0). A file names mu_per_s only on request; a model without a time of its own
+   !> (Mathieu) refuses it.
+   subroutine rates_per_unit_time(ctx)
+      type(test_context_t), intent(inout) :: ctx
+      character(len=300) :: scene(3)
+      character(len=:), allocatable :: out, pairs, written
+      character(len=1024), allocatable :: lines(:)
+      type(error_t), allocatable :: error
+      real(wp), allocatable :: v(:, :)
+      real(wp), parameter :: c = 0.4_wp, k0s(2) = [-2.0_wp, 2.0_wp]
+      real(wp) :: k0, r, w, a
+      integer :: m, j, k, count
+      logical :: ok, swapped
+      out = scratch_prefix("equation_rates")
+      do m = 1, size(k0s)
+         k0 = k0s(m)
+         r = -0.5_wp*c + merge(sqrt(max(0.25_wp*c*c - k0, 0.0_wp)), 0.0_wp, 0.25_wp*c*c - k0 > 0.0_wp)
+         do j = 1, 3
+            swapped = j == 2
+            scene(1) = "&scene task = 'chart', model = 'equation', tolerance = 1e-11, columns = 'w A mu mu_per_s', "// &
+                       "output = '"//out//"' /"
+            scene(2) = "&equation parameters = 'k0 = "//real_text(k0)//", c = 0.4, A = 0, w = 3', stiffness = "// &
+                       "'k0 + A*cos(w*t)', damping = 'c', frequency = 'w', alpha = '"//trim(merge("A", "w", swapped))// &
+                       "', beta = '"//trim(merge("w", "A", swapped))//"' /"
+            if (j == 1) then
+               scene(3) = "&chart alpha_min = 1, alpha_max = 7, n_alpha = 4, beta_min = 0, beta_max = 0.5, n_beta = 3 /"
+            else if (j == 2) then
+               scene(3) = "&chart alpha_min = 0, alpha_max = 0.5, n_alpha = 3, beta_min = 1, beta_max = 7, n_beta = 4 /"
+            else
+               pairs = scratch_prefix("equation_rates_pairs")//".dat"
+               call write_file(pairs, [padded("1.5 0"), padded("4 0"), padded("6.5 0.3")])
+               scene(1) = "&scene task = 'points', model = 'equation', tolerance = 1e-11, columns = 'w A mu mu_per_s', "// &
+                          "output = '"//out//"' /"
+               scene(3) = "&points file = '"//pairs//"' /"
+            end if
+            call run_data(ctx, "k0 = "//real_text(k0)//", scene "//integer_text(j), scene, 4, v, ok)
+            if (j == 3) call delete_file(pairs)
+            if (.not. ok) return
+            count = 0
+            do k = 1, size(v, 2)
+               ! the columns in the order &scene columns names them
+               w = v(1, k)
+               a = v(2, k)
+               ! mu_per_s is mu at the point's own Omega/pi
+               call check(ctx, abs(v(4, k) - v(3, k)*w/pi) <= 1.0e-10_wp*max(1.0_wp, abs(v(4, k))), &
+                          "mu_per_s = mu w/pi at w = "//real_text(w)//", A = "//real_text(a))
+               if (a /= 0.0_wp) cycle
+               count = count + 1
+               call check(ctx, abs(v(4, k) - r) <= 1.0e-9_wp, "k0 = "//real_text(k0)//", scene "// &
+                          integer_text(j)//": mu_per_s at w = "//real_text(w)//": "//real_text(v(4, k))// &
+                          " against "//real_text(r))
+            end do
+            call check(ctx, count >= 2, "the closed form at two frequencies at least")
+         end do
+      end do
+      ! on request only: a file of every column does not hold it
+      scene(1) = "&scene task = 'chart', model = 'equation', output = '"//out//"' /"
+      scene(3) = "&chart alpha_min = 1, alpha_max = 7, n_alpha = 2, beta_min = 0, beta_max = 0.5, n_beta = 2 /"
+      call run_text_scene("equation_rates", scene, error, written)
+      call check(ctx, .not. allocated(error), "the chart of every column runs")
+      if (.not. allocated(error)) then
+         lines = read_lines(written)
+         call check(ctx, .not. any(index(lines, "mu_per_s") > 0), "mu_per_s is written on request only")
+         call delete_file(written)
+      end if
+      ! a model in tau alone has no time to give it
+      scene(1) = "&scene task = 'chart', model = 'mathieu', columns = 'S mu_per_s', output = '"//out//"' /"
+      scene(2) = " "
+      scene(3) = "&chart alpha_min = 1, alpha_max = 2, n_alpha = 2, beta_min = 0, beta_max = 0.5, n_beta = 2 /"
+      call run_text_scene("equation_rates", scene, error, written)
+      call check(ctx, allocated(error), "mu_per_s of the Mathieu model is refused")
+      if (allocated(error)) call check(ctx, error%code == err_input .and. index(error%message, "&scene: columns") > 0, &
+                                       "named: "//error%message)
+      call check(ctx, .not. file_exists(out//"_chart.dat"), "no file written")
+   end subroutine rates_per_unit_time
 
    !> Run a scene and its twin with the axes swapped (`run_data`).
    subroutine run_pair(ctx, what, scene, swapped, n_columns, a, b, ok)

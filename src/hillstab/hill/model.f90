@@ -100,6 +100,8 @@ module hillstab_hill_model
       procedure :: point_damping => scene_damping
       procedure :: shares_rows => rows_shared
       procedure :: at_point => model_copy
+      procedure :: has_time => no_time_of_its_own
+      procedure :: tau_rate => no_tau_rate
       procedure :: has_damping => no_own_damping
       procedure :: takes_scene_damping => scene_damping_taken
       procedure :: has_witness => no_witness
@@ -229,6 +231,23 @@ contains
       class(hill_model_t), allocatable, intent(out) :: local  !! the model at β
       allocate (local, source=self)
    end subroutine model_copy
+
+   !> The model has a time of its user's, t (an equation in physical time, τ = Ωt/π):
+   !> `tau_rate` gives dτ/dt at each point, so that a rate per unit τ becomes one per unit
+   !> of t. False unless the model says so (τ is the model's only time).
+   elemental logical function no_time_of_its_own(self)
+      class(hill_model_t), intent(in) :: self  !! the model
+      no_time_of_its_own = .false.
+   end function no_time_of_its_own
+
+   !> dτ/dt at the point (α, β): the units of τ in one unit of the user's time t, 2 over the
+   !> period in t (an equation: Ω/π at the point); 0 for a model without a time of its own
+   !> (`has_time`) and where the point has no period (outside the domain).
+   elemental real(wp) function no_tau_rate(self, alpha, beta) result(rate)
+      class(hill_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha, beta      !! the point
+      rate = 0.0_wp
+   end function no_tau_rate
 
    !> The damping ε of the point (α, β) given the scene's ε: the row's (`point_damping`)
    !> when the model shares rows, else that of the model at β (`at_point`) at α.

@@ -161,7 +161,8 @@ module hillstab_hill_model_equation
       procedure :: set_text => equation_set_text
       procedure :: check_values => equation_check_values
       procedure :: at => equation_at
-      procedure :: frequency_at => equation_frequency_at
+      procedure :: has_time => equation_has_time
+      procedure :: tau_rate => equation_tau_rate
    end type equation_model_t
 
 contains
@@ -866,13 +867,26 @@ contains
       p(self%i_beta) = beta
    end function equation_at
 
-   !> Ω at row α (NaN outside the domain).
-   elemental real(wp) function equation_frequency_at(self, alpha) result(omega)
+   !> An equation is in its user's time t (τ = Ωt/π).
+   elemental logical function equation_has_time(self)
       class(equation_model_t), intent(in) :: self  !! the model
-      real(wp), intent(in) :: alpha                !! α
-      type(row_t) :: row
-      row = row_at(self, alpha)
-      omega = ieee_nan()
-      if (row%valid) omega = row%omega
-   end function equation_frequency_at
+      equation_has_time = .true.
+   end function equation_has_time
+
+   !> dτ/dt at the point: Ω/π there (τ = Ωt/π, the period 2π/Ω in t); 0 outside the domain.
+   !> The equation at a point's β (`pinned`) keeps that β whatever `beta` is.
+   elemental real(wp) function equation_tau_rate(self, alpha, beta) result(rate)
+      class(equation_model_t), intent(in) :: self  !! the model
+      real(wp), intent(in) :: alpha, beta          !! the point
+      real(wp) :: p(size(self%values)), drive, omega
+      rate = 0.0_wp
+      if (.not. self%ready) return
+      p = self%values
+      p(self%i_alpha) = alpha
+      if (.not. self%pinned) p(self%i_beta) = beta
+      drive = self%drive%expression%value(p)
+      if (.not. (ieee_is_finite(drive) .and. drive > 0.0_wp)) return
+      omega = self%drive%omega_of(drive)
+      if (ieee_is_finite(omega) .and. omega > 0.0_wp) rate = omega/pi
+   end function equation_tau_rate
 end module hillstab_hill_model_equation

@@ -35,7 +35,7 @@ module hillstab_interop_capi_models
    public :: hillstab_c_model_new, hillstab_c_model_free, hillstab_c_model_set, hillstab_c_model_check, &
       hillstab_c_model_count, hillstab_c_model_set_text, hillstab_c_model_registry_name, hillstab_c_model_name, &
       hillstab_c_model_formula, &
-      hillstab_c_model_variable_count, hillstab_c_model_variable_name
+      hillstab_c_model_variable_count, hillstab_c_model_variable_name, hillstab_c_model_tau_rate
 
    !> Longest C string read (a name, a path): longer ones are refused.
    integer, parameter :: max_c_text = 4096
@@ -288,6 +288,33 @@ contains
       status = 0
       if (allocated(error)) status = int(error%code, c_int)
    end function hillstab_c_model_formula
+
+   !> `int hillstab_model_tau_rate(const hillstab_model *model, size_t n, const double *alpha,
+   !> const double *beta, double *rate)`: dτ/dt at the n points (α_j, β_j), which turns a
+   !> rate per unit τ (μ) into one per unit of the model's own time t: an equation's Ω/π at
+   !> the point; 0 for a model in τ alone (the elastic and Mathieu models) and at a point
+   !> outside the domain. The model must be complete (`hillstab_model_check`).
+   function hillstab_c_model_tau_rate(model, n, alpha, beta, rate) result(status) &
+      bind(C, name="hillstab_model_tau_rate")
+      type(c_ptr), value, intent(in) :: model  !! the handle
+      integer(c_size_t), value, intent(in) :: n  !! the number of points
+      real(c_double), intent(in) :: alpha(*), beta(*)  !! the points
+      real(c_double), intent(inout) :: rate(*)  !! receives dτ/dt at each point
+      integer(c_int) :: status
+      type(model_handle_t), pointer :: handle
+      type(error_t), allocatable :: error
+      integer(int64) :: j
+      call handle_model(model, handle, error)
+      if (.not. allocated(error)) call handle%model%check_values(error)
+      if (.not. allocated(error)) then
+         do j = 1, int(n, int64)
+            rate(j) = handle%model%tau_rate(real(alpha(j), wp), real(beta(j), wp))
+         end do
+      end if
+      call record_outcome(error)
+      status = 0
+      if (allocated(error)) status = int(error%code, c_int)
+   end function hillstab_c_model_tau_rate
 
    !> `int hillstab_model_variable_count(const hillstab_model *model, int *count)`: how many
    !> variables the model has (0 for the elastic and the Mathieu model).

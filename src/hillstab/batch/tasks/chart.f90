@@ -27,9 +27,9 @@ module hillstab_batch_tasks_chart
    use hillstab_batch_scene_group_chart, only: chart_grid_t, chart_group, read_chart_group, grid_alpha, grid_beta, grid_point, &
       grid_size_text
    use hillstab_batch_tasks_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, &
-      chart_line, chart_header, chart_layout_t, chart_names, point_amplitude, verdict_lines, scene_chart_columns, &
+      chart_line, chart_header, chart_layout_t, chart_names, point_amplitude, tau_per_time, verdict_lines, scene_chart_columns, &
       check_method_runs, chart_line_length, evaluate_point, header_bytes, text_row_bytes, binary_row_bytes, &
-      col_physical
+      col_physical, col_mu_per_s
    use hillstab_batch_tasks_regions, only: chart_region_lines
    use hillstab_batch_output_file, only: output_file_t, write_header, record_bytes, join_lines
    use hillstab_core_parallel, only: max_threads
@@ -225,15 +225,13 @@ contains
       type(floquet_t) :: f
       type(hill_point_t) :: row
       real(wp) :: v(n_chart_columns), per_second, a, damping, dampings(size(betas))
-      logical :: failed(size(betas)), inaccurate(size(betas))
+      logical :: failed(size(betas)), inaccurate(size(betas)), per_time
       integer :: j, need
       integer :: ids(size(columns%ids))  ! the binary records' columns (a gather through `columns` allocated)
       ids = columns%ids
       need = columns%need
-      ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
-      ! when the scene knows ω)
-      per_second = 0.0_wp
-      if (scene%physical%given) per_second = scene%physical%pendulum%omega/pi
+      ! dτ/dt turns a rate per unit τ into one per unit of the user's time (the column mu_per_s)
+      per_time = any(ids == col_mu_per_s)
       damping = scene%model%point_damping(alpha, scene%epsilon)
       row = hill_point_t(alpha, 0.0_wp, damping)
       call monodromy_trace_batch(scene%model, row, betas, scene%method, traces, failed, cause, plan=plan, inaccurate=inaccurate, &
@@ -266,6 +264,8 @@ contains
             ! verdicts only: no multipliers (their columns, not in a verdict file, stay 0)
             call set_from_trace(f, traces(j), dampings(j), scene%method%tolerance, scene%model%period(), &
                                 need <= need_verdict)
+            per_second = 0.0_wp
+            if (per_time) per_second = tau_per_time(scene, alpha, betas(j))
             v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second, a, &
                              need=need)
          end if

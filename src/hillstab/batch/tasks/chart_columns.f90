@@ -18,7 +18,7 @@
 !> print '(a)', chart_names(columns)   ! the `# columns:` line's names
 !>```
 module hillstab_batch_tasks_chart_columns
-   use hillstab_core_kinds, only: wp, int64, version_string
+   use hillstab_core_kinds, only: wp, int64, version_string, pi
    use hillstab_core_error, only: error_t, set_error, err_input, err_accuracy, err_invalid_parameter, &
       err_points_failed
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
@@ -37,7 +37,7 @@ module hillstab_batch_tasks_chart_columns
    use hillstab_batch_tasks_floquet_columns, only: chart_column_t, column_context_t, floquet_column, scene_columns, &
       chart_keys, plain_table, accuracy_none, accuracy_verdict, n_chart_columns, chart_values, clamp_magnitude, log10_floor, &
       col_alpha, col_a, col_beta, col_omega, col_stable, col_physical, col_stable_paper, col_status, accuracy_growth, &
-      accuracy_estimate, accuracy_argument
+      accuracy_estimate, accuracy_argument, col_mu_per_s
    use hillstab_batch_output_columns, only: column_t, style_flag, column_lines, columns_text, put_value
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
@@ -46,7 +46,8 @@ module hillstab_batch_tasks_chart_columns
    public :: scene_chart_columns, n_chart_columns
    public :: chart_header, common_header, evaluate_point, failed_points_error, check_method_runs, warn_inaccurate
    public :: clamp_magnitude, log10_floor, chart_line_length, stacked, chart_line, failed_values
-   public :: header_bytes, text_row_bytes, binary_row_bytes, point_amplitude, verdict_lines, col_physical
+   public :: header_bytes, text_row_bytes, binary_row_bytes, point_amplitude, tau_per_time, verdict_lines, col_physical
+   public :: col_mu_per_s
 
    !> Characters in one chart line (17 columns of at most 24 characters, with blanks: 254 at
    !> most).
@@ -107,6 +108,7 @@ contains
       context%physical = scene%physical%given
       context%amplitudes = size(scene%physical%amplitudes) > 0
       context%omegas = size(scene%physical%omegas) > 0
+      context%own_time = scene%model%has_time()
       context%alpha_name = scene%model%axis_name(1)
       context%beta_name = scene%model%axis_name(2)
       context%summary = scene%model%summary()
@@ -581,6 +583,20 @@ contains
          a = -1.0_wp
       end if
    end function point_amplitude
+
+   !> dτ/dt at a point of the scene, which turns a rate per unit τ into one per unit of its
+   !> user's time (the column mu_per_s): ω/π of `&physical` (a row of a chart over
+   !> amplitudes and frequencies has each point's own, `physical_row`), else the model's at
+   !> the point (`tau_rate`: an equation's Ω/π), 0 when the scene has no time but τ.
+   elemental real(wp) function tau_per_time(scene, alpha, beta) result(rate)
+      type(scene_t), intent(in) :: scene  !! the scene
+      real(wp), intent(in) :: alpha, beta  !! the point
+      if (scene%physical%given) then
+         rate = scene%physical%pendulum%omega/pi
+      else
+         rate = scene%model%tau_rate(alpha, beta)
+      end if
+   end function tau_per_time
 
    !> The model's period as the header writes it in a formula: 2, or P = 4.0's value.
    function period_text(scene) result(text)

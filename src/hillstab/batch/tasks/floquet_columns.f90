@@ -85,6 +85,8 @@ module hillstab_batch_tasks_floquet_columns
       logical :: physical = .false.     !! one equation: `&physical` given
       logical :: amplitudes = .false.   !! one equation: `&physical` amplitudes given
       logical :: omegas = .false.       !! one equation: `&physical` frequencies given
+      !> one equation: its model has a time of its user's (`has_time`: an equation in t)
+      logical :: own_time = .false.
       character(len=:), allocatable :: alpha_name  !! the α axis's name ("alpha" when unnamed)
       character(len=:), allocatable :: beta_name   !! the β axis's name
       character(len=:), allocatable :: summary     !! one equation: its model's summary
@@ -261,8 +263,14 @@ contains
          column = record("stable_paper", "", "1 when |S1| <= 2, the sufficient criterion of the paper", style_flag, &
                          need_verdict, placeholder=-1.0_wp, paper=.true., offered=context%damped)
       case ("mu_per_s")
-         column = record("mu_per_s", "1/s", "the Floquet exponent per second, mu omega/pi (tau = omega t/pi)", &
-                         style_e11, need_growth, offered=context%physical)
+         if (context%own_time .and. .not. context%physical) then
+            column = record("mu_per_s", "1/t", "the Floquet exponent per unit of the equation's time t (per second "// &
+                            "when t is in seconds), mu Omega/pi at the point (tau = Omega t/pi)", style_e11, need_growth)
+            column%on_request = .true.
+         else
+            column = record("mu_per_s", "1/s", "the Floquet exponent per second, mu omega/pi (tau = omega t/pi)", &
+                            style_e11, need_growth, offered=context%physical)
+         end if
       case ("defect")
          if (context%first_order) then
             text = "|det Phi - exp(P mean tr A)| over Hadamard's bound of |det Phi| (relative, max norms)"

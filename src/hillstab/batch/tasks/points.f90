@@ -19,8 +19,9 @@ module hillstab_batch_tasks_points
    use hillstab_batch_scene_checks, only: check_integration_cost
    use hillstab_batch_scene_group_points, only: points_group, read_points_group
    use hillstab_batch_tasks_chart_columns, only: floquet_task_t, n_chart_columns, chart_values, failed_values, &
-      chart_line, chart_header, chart_layout_t, chart_names, point_amplitude, scene_chart_columns, evaluate_point, &
-      chart_line_length, header_bytes, text_row_bytes, binary_row_bytes
+      chart_line, chart_header, chart_layout_t, chart_names, point_amplitude, tau_per_time, scene_chart_columns, &
+      evaluate_point, &
+      chart_line_length, header_bytes, text_row_bytes, binary_row_bytes, col_mu_per_s
    use hillstab_batch_output_file, only: output_file_t, write_header, record_bytes, join_lines
    implicit none
    private
@@ -145,14 +146,13 @@ contains
       type(floquet_t) :: f
       type(error_t), allocatable :: cause
       real(wp) :: per_second, v(n_chart_columns), alpha, beta, a
+      logical :: per_time
       integer :: k
       integer :: ids(size(columns%ids))  ! the binary records' columns (a gather through `columns` allocated)
       ids = columns%ids
-      ! ω/π turns a rate per unit τ into a rate per second (the mu_per_s column exists only
-      ! when the scene knows ω)
-      per_second = 0.0_wp
-      if (scene%physical%given) per_second = scene%physical%pendulum%omega/pi
-      !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause, v, alpha, beta, a)
+      ! dτ/dt turns a rate per unit τ into one per unit of the user's time (the column mu_per_s)
+      per_time = any(ids == col_mu_per_s)
+      !$omp parallel do schedule(dynamic) default(shared) private(k, f, cause, v, alpha, beta, a, per_second)
       do k = first, last
          alpha = self%points(1, k)
          beta = self%points(2, k)
@@ -162,6 +162,8 @@ contains
          if (statuses(k) == status_failed) then
             v = failed_values(columns, alpha, beta, in_physical_domain(alpha, beta), a)
          else
+            per_second = 0.0_wp
+            if (per_time) per_second = tau_per_time(scene, alpha, beta)
             v = chart_values(alpha, beta, f, in_physical_domain(alpha, beta), statuses(k), per_second, a)
          end if
          if (present(values)) values(:, k) = v(ids)
