@@ -111,9 +111,9 @@
 !>   [[hillstab_integrate_monodromy_rk:monodromy_rk]]
 !> - [[hillstab_integrate_monodromy_gsl]]: [[hillstab_integrate_monodromy_gsl:trace_gsl]],
 !>   [[hillstab_integrate_monodromy_gsl:monodromy_gsl]]
-!> - [[hillstab_integrate_system]]: [[hillstab_integrate_system:system_method_t]],
-!>   [[hillstab_integrate_system:system_monodromy_t]], [[hillstab_integrate_system:system_nodes_t]],
-!>   [[hillstab_integrate_system:system_monodromy]],
+!> - [[hillstab_integrate_system]]: [[hillstab_integrate_monodromy:system_method_t]],
+!>   [[hillstab_integrate_system_magnus:system_monodromy_t]],
+!>   [[hillstab_integrate_system_magnus:system_nodes_t]], [[hillstab_integrate_monodromy:system_monodromy]],
 !>   `hillstab_system_auto` = [[hillstab_integrate_system:system_auto]],
 !>   `hillstab_system_magnus4` = [[hillstab_integrate_system:system_magnus4]],
 !>   `hillstab_system_magnus6` = [[hillstab_integrate_system:system_magnus6]],

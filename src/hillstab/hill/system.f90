@@ -451,7 +451,7 @@ contains
    !> Y' = A Y for the fundamental matrix Y (m × m, stored column by column in y): A =
    !> [[0, I], [L, D]] with L = −M⁻¹K(τ) given and D of the form (m = 2n), or in first-order
    !> form A = L itself (m = n); the right-hand side the Runge–Kutta methods integrate
-   !> (hillstab_integrate_system's rk, hillstab_integrate_system_gsl).
+   !> (hillstab_integrate_system_magnus's rk, hillstab_integrate_system_gsl).
    pure subroutine fundamental_derivative(form, l, y, dydt)
       type(system_form_t), intent(in) :: form  !! the prepared system (D)
       real(wp), intent(in) :: l(:, :)          !! L = −M⁻¹K(τ), or A in first-order form (n × n)

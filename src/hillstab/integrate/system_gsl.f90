@@ -4,8 +4,8 @@
 !> tolerance/10 and then /320, over the whole period (no symmetry used, unlike hillstab's own methods);
 !> the second value is returned, the difference of the two its error estimate (divided by 32,
 !> GSL's global error following its epsilon about linearly), status_roundoff when that
-!> estimate misses the tolerance (hillstab_integrate_system adds the rounding level rk8pd
-!> accumulates). Where GSL's control cannot reach an epsilon (GSL_FAILURE, at its floor on a
+!> estimate misses the tolerance (`system_monodromy` of hillstab_integrate_monodromy adds the
+!> rounding level rk8pd accumulates). Where GSL's control cannot reach an epsilon (GSL_FAILURE, at its floor on a
 !> strongly growing solution), the point is round-off limited, not failed: a failed second
 !> pass leaves the first pass's Φ, a failed first pass at the floor is run again at ten
 !> times the epsilon, each at status_roundoff. The right-hand side receives the system through GSL's
@@ -22,12 +22,13 @@ module hillstab_integrate_system_gsl
    use hillstab_core_error, only: error_t, set_error, err_integration
    use hillstab_core_status, only: status_ok, status_roundoff, status_failed
    use hillstab_hill_system, only: hill_system_t, system_form_t, fundamental_derivative, lower_block
+   use hillstab_integrate_system_magnus, only: system_monodromy_t, push_factor, window_length
    use hillstab_ffi_gsl, only: gsl_odeiv2_system, gsl_odeiv2_step_rk8pd, gsl_set_error_handler_off, &
       gsl_odeiv2_driver_alloc_y_new, gsl_odeiv2_driver_apply, gsl_odeiv2_driver_free, gsl_odeiv2_driver_set_nmax, &
       gsl_success, gsl_ebadfunc
    implicit none
    private
-   public :: system_monodromy_gsl, gsl_system_result_t, system_propagator_gsl, gsl_first_epsilon, gsl_second_epsilon
+   public :: system_monodromy_gsl, gsl_period_factors
 
    !> What the right-hand side needs (GSL's params).
    type :: gsl_context_t
@@ -37,14 +38,6 @@ module hillstab_integrate_system_gsl
       real(wp), allocatable :: p(:, :), b(:, :)
       integer :: rhs_calls = 0   !! right-hand sides evaluated
    end type gsl_context_t
-
-   !> Φ, its error estimate relative to max(1, max|Φ_ij|), the status and GSL's evaluations.
-   type :: gsl_system_result_t
-      real(wp), allocatable :: phi(:, :)       !! Φ (2n × 2n)
-      real(wp) :: error_estimate = 0.0_wp      !! relative to max(1, max|Φ_ij|)
-      integer :: status = status_ok            !! status_ok, status_roundoff or status_failed
-      integer :: evaluations = 0               !! right-hand sides evaluated (both passes)
-   end type gsl_system_result_t
 
 contains
 
@@ -72,7 +65,8 @@ contains
       type(system_form_t), intent(in) :: form     !! prepared at its ε
       real(wp), intent(in) :: alpha, beta         !! the point
       real(wp), intent(in) :: tolerance           !! target error of Φ relative to max(1, max|Φ_ij|)
-      type(gsl_system_result_t), intent(out) :: result  !! Φ, estimate, status
+      !> Φ (log_scale 0), its error estimate, status and right-hand sides (`steps`)
+      type(system_monodromy_t), intent(out) :: result
       type(error_t), allocatable, intent(out) :: error  !! err_integration when GSL fails
       real(wp), allocatable :: first(:, :), second(:, :)
       real(wp) :: eps, scale
@@ -86,14 +80,14 @@ contains
       result%phi = 0.0_wp
       do pass = 1, 2
          call system_propagator_gsl(system, form, alpha, beta, eps, 0.0_wp, form%period, second, &
-                                    result%evaluations, error)
+                                    result%steps, error)
          if (allocated(error) .and. pass == 1 .and. eps > 0.1_wp*tolerance) then
             ! at its floor GSL's control could not reach eps (GSL_FAILURE: the step falls
             ! below what rounding allows); ten times more, the tolerance out of reach
             deallocate (error)
             eps = 10.0_wp*eps
             call system_propagator_gsl(system, form, alpha, beta, eps, 0.0_wp, form%period, second, &
-                                       result%evaluations, error)
+                                       result%steps, error)
             roundoff = .true.
          end if
          if (allocated(error) .and. pass == 2) then
@@ -116,6 +110,30 @@ contains
       if (roundoff) result%error_estimate = max(result%error_estimate, 10.0_wp*tolerance)
       result%status = merge(status_ok, status_roundoff, result%error_estimate <= tolerance)
    end subroutine system_monodromy_gsl
+
+   !> The factors of rk8pd over `pieces` equal subintervals of the window, each from the
+   !> identity at the second pass's epsilon; the right-hand sides added to `steps`.
+   subroutine gsl_period_factors(system, form, alpha, beta, tolerance, pieces, factors, count, steps, error)
+      class(hill_system_t), intent(in) :: system      !! the system
+      type(system_form_t), intent(in) :: form         !! prepared at the point's ε
+      real(wp), intent(in) :: alpha, beta             !! the point
+      real(wp), intent(in) :: tolerance               !! the method's tolerance
+      integer, intent(in) :: pieces                   !! the subintervals (`factor_pieces`)
+      real(wp), allocatable, intent(inout) :: factors(:, :, :)  !! receives F_1 … F_count
+      integer, intent(inout) :: count                 !! the number of factors
+      integer, intent(inout) :: steps                 !! right-hand sides spent
+      type(error_t), allocatable, intent(out) :: error  !! err_integration when a piece fails
+      real(wp) :: y(form%states, form%states), local, window
+      integer :: k
+      window = window_length(form)
+      local = gsl_second_epsilon(gsl_first_epsilon(tolerance))
+      do k = 1, pieces
+         call system_propagator_gsl(system, form, alpha, beta, local, window*(k - 1)/pieces, window*k/pieces, &
+                                    y, steps, error)
+         if (allocated(error)) return
+         call push_factor(factors, count, y)
+      end do
+   end subroutine gsl_period_factors
 
    !> GSL's epsilon of the first pass.
    pure real(wp) function gsl_first_epsilon(tolerance) result(eps)

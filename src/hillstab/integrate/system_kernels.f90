@@ -1,4 +1,4 @@
-!> The matrix kernels of the systems' Magnus integrators (hillstab_integrate_system): the
+!> The matrix kernels of the systems' Magnus integrators (hillstab_integrate_system_magnus): the
 !> sixth-order Magnus exponent from the three Gauss nodes (`magnus6_exponent`, in blocks
 !> for y = (x, x'): `magnus6_exponent_blocks`), steps of a mesh (`magnus6_steps`, and the
 !> unrolled n = 2 case `magnus6_steps_4`), the exponential of a 2n × 2n matrix by the Taylor
