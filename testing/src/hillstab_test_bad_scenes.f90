@@ -136,6 +136,11 @@ contains
          bad_case_t(s//"task='series', names_line=.true. / &series /", "scene", "names_line: columns, format"), &
          bad_case_t(s//"task='series', columns='t' / &series /", "scene", "columns: columns, format"), &
          bad_case_t(s//"task='poincare', format='binary' / &series /", "scene", "format: columns, format"), &
+         bad_case_t(s//"task='poincare' / &series / &physical omega=3, kappa=0.1 /", "physical", &
+                    "omega: task 'poincare' takes its values dimensionless"), &
+         bad_case_t(s//"task='regions' / &chart / &physical omega=3, kappa=0.1 /", "physical", &
+                    "omega: task 'regions' takes its values dimensionless"), &
+         bad_case_t(s//"task='edges' / &chart / &physical omega=3 /", "physical", "boundaries, series, lyapunov"), &
          bad_case_t(s//"task='series' / &series phi0=0.1, phi0_degrees=1 /", "series", "phi0_degrees: give the "// &
             "initial angle either as phi0 (radians) or as phi0_degrees"), &
          bad_case_t(s//"task='lyapunov' / &series phi0_degrees=nan, periods=2 / &chart /", "series", "phi0_degrees"), &

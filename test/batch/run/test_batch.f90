@@ -21,6 +21,7 @@ module test_batch
    use hillstab_batch_tasks_floquet_columns, only: n_fixed
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use hillstab_core_error, only: error_t, err_input, err_io, err_integration, err_invalid_parameter, err_points_failed
+   use hillstab_batch_scene_physical, only: pendulum_task_t
    use hillstab_batch_scene_types, only: scene_t
    use hillstab_batch_run_read, only: read_scene
    use hillstab_batch_run_scenes, only: output_path
@@ -214,7 +215,10 @@ contains
          else
             epsilon = scene%model%point_damping(alpha(k), scene%epsilon)
             if (size(omega) == n) then
-               p = scene%physical%pendulum
+               select type (task => scene%task)
+               class is (pendulum_task_t)
+                  p = task%physical%pendulum
+               end select
                p%omega = omega(k)
                epsilon = physical_epsilon(p)
             end if

@@ -25,6 +25,7 @@ module hillstab_batch_run_read
    use hillstab_integrate_monodromy, only: method_t, method_table, method_name, method_from_name, method_names_text, &
       method_description
    use hillstab_batch_scene_types, only: scene_t, task_t, add_warning
+   use hillstab_batch_scene_physical, only: pendulum_task_t
    use hillstab_batch_scene_group_model, only: read_model_group, model_group_name
    use hillstab_batch_scene_file, only: scene_file_t, open_scene_file, close_scene_file, group_present, group_sets, &
       group_names, fail, read_len
@@ -55,7 +56,6 @@ contains
       scene%source = path
       scene%columns = ""
       scene%warnings = ""
-      allocate (scene%physical%amplitudes(0), scene%physical%omegas(0))
       call open_scene_file(path, file, error)
       if (allocated(error)) return
       call read_scene_group(file, scene, task_name, error)
@@ -75,6 +75,12 @@ contains
          call new_task(task_name, task, cause, system=allocated(scene%system))
          if (allocated(cause)) call fail(error, path, "scene", "task", cause%message)
       end if
+      if (.not. allocated(error)) then
+         select type (task)
+         class is (pendulum_task_t)
+            allocate (task%physical%amplitudes(0), task%physical%omegas(0))
+         end select
+      end if
       if (.not. allocated(error) .and. allocated(scene%system)) call check_first_order(path, scene, task_name, error)
       if (.not. allocated(error)) call check_task_settings(file, scene, task, error)
       if (.not. allocated(error)) then
@@ -83,7 +89,14 @@ contains
                call fail(error, path, "physical", "omega", "a system scene (&scene model = 'system') is "// &
                   "dimensionless: its matrices are in &system, and &physical describes the elastic pendulum only")
             else
-               call read_physical_group(file, task, scene, error)
+               select type (task)
+               class is (pendulum_task_t)
+                  call read_physical_group(file, task, scene, error)
+               class default
+                  call fail(error, path, "physical", "omega", "task '"//task%name//"' takes its values "// &
+                     "dimensionless (its own groups, and the damping as &scene epsilon), not &physical: the "// &
+                     "pendulum in SI units is for tasks "//pendulum_task_names())
+               end select
             end if
          end if
       end if
@@ -133,7 +146,10 @@ contains
       integer :: k, j, n
       names = group_names(file%unit)
       reads = "&scene"
-      if (scene%physical%given) reads = reads//", &physical"
+      select type (task)
+      class is (pendulum_task_t)
+         if (task%physical%given) reads = reads//", &physical"
+      end select
       ! a local, not an associate name: gfortran does not free the function result's
       ! allocatable components through an associate name
       groups = task%declarations()
@@ -171,6 +187,27 @@ contains
             "' reads "//reads//"; "//readers)
       end do
    end subroutine warn_foreign_groups
+
+   !> The tasks that take `&physical` (the registry's pendulum tasks), for messages: "chart,
+   !> points, …".
+   function pendulum_task_names() result(text)
+      character(len=:), allocatable :: text
+      character(len=:), allocatable :: tasks(:)
+      class(task_t), allocatable :: task
+      type(error_t), allocatable :: cause
+      integer :: j
+      text = ""
+      tasks = task_names()
+      do j = 1, size(tasks)
+         call new_task(trim(tasks(j)), task, cause)
+         if (allocated(cause)) cycle
+         select type (task)
+         class is (pendulum_task_t)
+            if (len(text) > 0) text = text//", "
+            text = text//trim(tasks(j))
+         end select
+      end do
+   end function pendulum_task_names
 
    !> Whether the task reads a group of this name: &scene, &physical (read, or refused with
    !> an error, before this is asked), its own groups and the alternatives its template shows.
@@ -446,8 +483,8 @@ contains
    !> both.
    subroutine read_physical_group(file, task, scene, error)
       type(scene_file_t), intent(in) :: file
-      class(task_t), intent(in) :: task
-      type(scene_t), intent(inout) :: scene
+      class(pendulum_task_t), intent(inout) :: task  !! receives the group (`physical`)
+      type(scene_t), intent(inout) :: scene  !! its ε from κ
       type(error_t), allocatable, intent(out) :: error
       type(group_t) :: group
       real(wp) :: omega, k, m, g, kappa, r0, a(64), a_min, a_max, omega_min, omega_max
@@ -469,9 +506,9 @@ contains
          read (reader%record, nml=physical, iostat=reader%stat, iomsg=reader%message)
       end do
       write (reader%echo, nml=physical, delim="apostrophe", iostat=reader%echo_status)
-      call end_group(reader, file, group, scene%physical%values, error)
+      call end_group(reader, file, group, task%physical%values, error)
       if (allocated(error)) return
-      associate (values => scene%physical%values)
+      associate (values => task%physical%values)
          spring = values%given("k") .or. values%given("m")
          omega_ranged = values%given("omega_min") .or. values%given("omega_max") .or. values%given("n_omega")
          allocate (omegas(0))
@@ -489,7 +526,7 @@ contains
                   return
                end if
             end do
-            if (.not. task%physical%takes_omega_range) then
+            if (.not. task%physical_use%takes_omega_range) then
                call fail(error, file%path, group%name, "n_omega", "a range of omega makes a chart over (a, "// &
                   "omega): task 'chart', not '"//task%name//"'")
                return
@@ -561,8 +598,8 @@ contains
                   "= "//real_text(k)//", m = "//real_text(m))
                return
             end if
-            scene%physical%k = k
-            scene%physical%m = m
+            task%physical%k = k
+            task%physical%m = m
          end if
          if (group_sets(file%unit, "scene", "epsilon")) then
             call fail(error, file%path, group%name, "kappa", "give the damping either as &scene epsilon "// &
@@ -616,7 +653,7 @@ contains
                "a_min, a_max, n_a (or the list a) with r0")
             return
          end if
-         if (values%given("r0") .and. size(amplitudes) == 0 .and. .not. task%physical%takes_spring) then
+         if (values%given("r0") .and. size(amplitudes) == 0 .and. .not. task%physical_use%takes_spring) then
             call fail(error, file%path, group%name, "r0", "r0 fixes beta = g pi^2/(rho omega^2), rho = r0 + "// &
                "g/omega^2: task '"//task%name//"' takes it only with amplitudes (a, or a_min, a_max, n_a)")
             return
@@ -647,7 +684,7 @@ contains
                return
             end if
          end do
-         if (size(amplitudes) > 0 .and. .not. (task%physical%takes_amplitudes .or. omega_ranged)) then
+         if (size(amplitudes) > 0 .and. .not. (task%physical_use%takes_amplitudes .or. omega_ranged)) then
             call fail(error, file%path, group%name, trim(merge("n_a", "a  ", ranged)), "task '"//task%name// &
                "' takes no amplitudes (a chart runs over the grid of &chart; task boundaries finds the critical "// &
                "amplitudes itself); amplitudes with r0 make the points of task 'points' or the curves of task "// &
@@ -655,15 +692,15 @@ contains
             return
          end if
       end associate
-      call warn_implausible(file, group, scene, p, spring, omega_ranged, omegas)
-      scene%physical%given = .true.
-      scene%physical%r0_given = scene%physical%values%given("r0")
-      scene%physical%pendulum = p
-      scene%physical%pendulum%a = 0.0_wp
-      scene%physical%amplitudes = amplitudes
-      scene%physical%omegas = omegas
-      if (size(omegas) > 0) scene%physical%pendulum%omega = omegas(1)
-      scene%epsilon = physical_epsilon(scene%physical%pendulum)
+      task%physical%given = .true.
+      task%physical%r0_given = task%physical%values%given("r0")
+      call warn_implausible(file, group, scene, p, spring, omega_ranged, omegas, task%physical%r0_given)
+      task%physical%pendulum = p
+      task%physical%pendulum%a = 0.0_wp
+      task%physical%amplitudes = amplitudes
+      task%physical%omegas = omegas
+      if (size(omegas) > 0) task%physical%pendulum%omega = omegas(1)
+      scene%epsilon = physical_epsilon(task%physical%pendulum)
       ! with &physical the damping is kappa; epsilon in &scene would be an error
       call scene%settings%hide("epsilon")
    end subroutine read_physical_group
@@ -671,13 +708,14 @@ contains
    !> Warnings for a valid `&physical` that is most likely in the wrong units: a spring longer
    !> than 100 m (r0, or the loaded length ρ = r0 + g/ω² at the smallest ω), an ω below 1e-3
    !> rad/s (a radial period of 105 minutes).
-   subroutine warn_implausible(file, group, scene, p, spring, omega_ranged, omegas)
+   subroutine warn_implausible(file, group, scene, p, spring, omega_ranged, omegas, r0_given)
       type(scene_file_t), intent(in) :: file
       type(group_t), intent(in) :: group
       type(scene_t), intent(inout) :: scene
       type(physical_t), intent(in) :: p  !! the pendulum (at the largest ω of a range)
       logical, intent(in) :: spring, omega_ranged  !! ω given as k and m; as a range
       real(wp), intent(in) :: omegas(:)  !! the range of ω (empty when one ω)
+      logical, intent(in) :: r0_given  !! the group gives r0
       type(physical_t) :: slowest
       character(len=:), allocatable :: omega_name, hint
       slowest = p
@@ -685,7 +723,7 @@ contains
       omega_name = "omega"
       if (omega_ranged) omega_name = "omega_min"
       if (spring) omega_name = "k"
-      if (scene%physical%values%given("r0")) then
+      if (r0_given) then
          if (equilibrium_length(slowest) > longest_spring) then
             hint = "(k in N/m, m in kg?)"
             if (p%r0 > longest_spring) then

@@ -14,6 +14,7 @@
 module hillstab_batch_run_templates
    use hillstab_core_error, only: error_t, set_error, err_input
    use hillstab_batch_scene_types, only: task_t
+   use hillstab_batch_scene_physical, only: pendulum_task_t
    use hillstab_batch_scene_declaration, only: group_t, variable_t, var_real_list
    use hillstab_batch_run_read, only: scene_group, physical_group
    use hillstab_batch_tasks_registry, only: task_entry_t, task_entries, task_names, task_names_text, new_task
@@ -49,6 +50,7 @@ contains
       character(len=80), allocatable :: notes(:)
       character(len=:), allocatable :: block, note
       integer :: k
+      logical :: pendulum
       text = ""
       call new_task(task, job, cause)
       if (allocated(cause)) then
@@ -59,7 +61,13 @@ contains
       do k = 1, size(entries)
          if (entries(k)%name == task) text = header(task, entries(k)%purpose)
       end do
-      if (job%physical%allowed) then
+      select type (job)
+      class is (pendulum_task_t)
+         pendulum = .true.
+      class default
+         pendulum = .false.
+      end select
+      if (pendulum) then
          ! epsilon shown commented out: with &physical the damping is kappa
          block = group_block(scene_group(), ["task"], ["'"//task//"'"], ["epsilon"])
       else
@@ -77,10 +85,11 @@ contains
          block = commented_block(alternatives(k))
          text = text//nl//"! "//note//nl//block
       end do
-      if (job%physical%allowed) then
+      select type (job)
+      class is (pendulum_task_t)
          block = physical_block(job)
          text = text//nl//block
-      end if
+      end select
       if (text(len(text):) == nl) text = text(:len(text) - 1)
    end subroutine scene_template
 
@@ -154,11 +163,11 @@ contains
    !> (k and m for omega, the range a_min, a_max, n_a for the list a, r0 alone for the
    !> spring of task boundaries) are '! !' lines inside it.
    function physical_block(task) result(text)
-      class(task_t), intent(in) :: task
+      class(pendulum_task_t), intent(in) :: task
       character(len=:), allocatable :: text, what
       type(group_t) :: group
       integer :: k
-      associate (u => task%physical)
+      associate (u => task%physical_use)
       group = physical_group()
       if (u%single_amplitude) group = group%with_default("a", "0.05")
       what = ""

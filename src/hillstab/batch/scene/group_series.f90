@@ -63,12 +63,11 @@ contains
    end function series_group
 
    !> Read and check `&series`. The pendulum is the elastic one given in dimensionless
-   !> units here, so a scene with `&physical` or another model is refused.
-   subroutine read_series_group(file, group, model, physical, plan, values, error, samples, takes_duration, warnings)
+   !> units here, so a scene of another model is refused.
+   subroutine read_series_group(file, group, model, plan, values, error, samples, takes_duration, warnings)
       type(scene_file_t), intent(in) :: file  !! the scene file
       type(group_t), intent(in) :: group      !! the declaration (`series_group`)
       class(hill_model_t), intent(in) :: model  !! the model of `&scene`
-      logical, intent(in) :: physical         !! the scene has `&physical`
       type(series_plan_t), intent(out) :: plan  !! the pendulum and its sampling
       type(group_values_t), intent(out) :: values  !! the effective values
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
@@ -134,10 +133,7 @@ contains
          if (allocated(error)) return
          periods = 1   ! checked below as a count; the rows follow from duration (task series)
       end if
-      if (physical) then
-         call fail(error, file%path, "physical", "r0", "the series task takes r0 and g in &series and the "// &
-            "damping as &scene epsilon; leave out &physical")
-      else if (.not. is_elastic_pendulum(model)) then
+      if (.not. is_elastic_pendulum(model)) then
          call fail(error, file%path, "scene", "model", "the pendulum tasks simulate the elastic pendulum: model '"// &
             model%name()//"' is not it")
       else if (alpha < 0.0_wp .or. alpha >= pi2) then

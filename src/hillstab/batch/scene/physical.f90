@@ -1,9 +1,12 @@
 !> A scene's pendulum in SI units, `&physical` (eqs. (4), (15), (24), (46)): the spring as
-!> the scene gives it, kept apart from the scene's own settings (`scene_t` of
-!> hillstab_batch_scene_types holds one `physical_scene_t`, not given unless the scene has
-!> the group), and what a task takes of it (`physical_use_t`, one in every task). The
-!> header lines of a scene in physical units and the (α, β) of its amplitudes are here
-!> too; the group is read by hillstab_batch_run_read.
+!> the scene gives it (`physical_scene_t`, not given unless the scene has the group), what a
+!> task takes of it (`physical_use_t`), and the tasks that take it (`pendulum_task_t`, an
+!> extension of hillstab_batch_scene_types' `task_t`: the chart, points, coefficient,
+!> series, lyapunov and boundaries tasks hold the group as read, and the header writes it
+!> before their own groups). The abstract scene and task know nothing of the pendulum; a
+!> scene whose task is not a pendulum task refuses the group. The header lines of a scene in
+!> physical units and the (α, β) of its amplitudes are here too; the group is read by
+!> hillstab_batch_run_read.
 !>
 !>```fortran
 !> type(physical_scene_t) :: physical
@@ -20,9 +23,10 @@ module hillstab_batch_scene_physical
    use hillstab_hill_units, only: physical_t, physical_beta, equilibrium_length
    use hillstab_hill_model_pendulum, only: pendulum_alpha
    use hillstab_batch_scene_declaration, only: group_values_t
+   use hillstab_batch_scene_types, only: task_t
    implicit none
    private
-   public :: physical_scene_t, physical_use_t, physical_points, physical_summary, grid_pendulum
+   public :: physical_scene_t, physical_use_t, pendulum_task_t, physical_points, physical_summary, grid_pendulum
 
    !> A scene's `&physical` group as read (`given` false and the arrays empty when the
    !> scene has none).
@@ -44,9 +48,8 @@ module hillstab_batch_scene_physical
       type(group_values_t) :: values                !! the effective values
    end type physical_scene_t
 
-   !> What a task takes of `&physical`.
+   !> What a pendulum task takes of `&physical` (every one takes ω, g and κ).
    type :: physical_use_t
-      logical :: allowed = .true.             !! `&physical` may replace the dimensionless values
       logical :: takes_amplitudes = .false.   !! its points can come from `a` with r0
       !> r0 without amplitudes: the task takes one spring (its β fixed by r0)
       logical :: takes_spring = .false.
@@ -58,7 +61,30 @@ module hillstab_batch_scene_physical
       character(len=:), allocatable :: amplitudes_replace
    end type physical_use_t
 
+   !> A task that takes the pendulum in SI units, `&physical`, in place of its dimensionless
+   !> values: what it takes of the group and the group as read, which the header writes
+   !> before the task's own groups.
+   type, abstract, extends(task_t) :: pendulum_task_t
+      type(physical_use_t) :: physical_use  !! what it takes of `&physical`
+      !> `&physical` as read (`given` false and the arrays empty when the scene has none)
+      type(physical_scene_t) :: physical
+   contains
+      procedure :: header_groups => pendulum_header_groups
+   end type pendulum_task_t
+
 contains
+
+   !> `&physical` when the scene has it, then the task's own groups.
+   function pendulum_header_groups(self) result(groups)
+      class(pendulum_task_t), intent(in) :: self  !! the task
+      type(group_values_t), allocatable :: groups(:)
+      if (allocated(self%groups)) then
+         groups = self%groups
+      else
+         allocate (groups(0))
+      end if
+      if (self%physical%given) groups = [self%physical%values, groups]
+   end function pendulum_header_groups
 
    !> α (elastic model) or ν of eq. (21) (Mathieu model) and β of the pendulum at each
    !> amplitude of `&physical a`: a (2, n) array like the points of a points file.

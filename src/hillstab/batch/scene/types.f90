@@ -1,7 +1,8 @@
 !> A scene: one namelist file describing one run. `scene_t` holds what every task
-!> shares — the `&scene` settings (model, method, damping, output, columns, format), the
-!> optional `&physical` pendulum in SI units (hillstab_batch_scene_physical) — and the task itself, an extension of the
-!> abstract `task_t` that holds its own groups (a chart's grid, a series' pendulum) and
+!> shares — the `&scene` settings (model, method, damping, output, columns, format) and the
+!> model's own group — and the task itself, an extension of the abstract `task_t` that
+!> holds its own groups (a chart's grid, a series' pendulum; the tasks that take the
+!> pendulum in SI units, `&physical`, hold it too: hillstab_batch_scene_physical) and
 !> knows how to read, run, size and split itself. The dispatcher, the MPI splitter and
 !> the resource limits call the task's bindings; nothing switches on the task.
 !>
@@ -25,7 +26,6 @@ module hillstab_batch_scene_types
    use hillstab_integrate_monodromy, only: method_t
    use hillstab_batch_scene_declaration, only: group_t, group_values_t
    use hillstab_batch_scene_file, only: scene_file_t
-   use hillstab_batch_scene_physical, only: physical_scene_t, physical_use_t
    use hillstab_batch_output_file, only: output_file_t, open_output
    implicit none
    private
@@ -38,7 +38,6 @@ module hillstab_batch_scene_types
    type, abstract :: task_t
       character(len=:), allocatable :: name       !! the task name, as in `&scene task`
       logical :: takes_columns = .false.          !! `&scene columns` and format = 'binary' apply
-      type(physical_use_t) :: physical             !! what it takes of `&physical`
       !> its units are computed on OpenMP threads as soon as there are two (each unit is
       !> computed on one thread: a system's row shares its nodes); otherwise only with at
       !> least 4 units a thread, fewer going one by one, each in parallel within
@@ -56,6 +55,10 @@ module hillstab_batch_scene_types
       procedure :: run => task_run_by_units
       !> the groups the task reads, with its defaults, in the order the header writes them
       procedure(task_declarations), deferred :: declarations
+      !> the effective values of the groups the header writes after `&scene` and the model's
+      !> group (default: `groups`; a task that takes a group read before its own, as
+      !> `&physical`, puts it first)
+      procedure :: header_groups => task_header_groups
       !> groups a template shows commented out, each an alternative to one it reads
       procedure :: template_alternatives => task_template_alternatives
       !> an upper estimate of the bytes of the output file (0: the task bounds its own)
@@ -101,8 +104,6 @@ module hillstab_batch_scene_types
       character(len=:), allocatable :: columns
       logical :: binary = .false.      !! chart and points: float64 records after a text header
       logical :: names_line = .false.  !! text: a line of column names after the `#` header
-      !> `&physical`: the pendulum in SI units (`given` false when the scene has no such group)
-      type(physical_scene_t) :: physical
       type(group_values_t) :: settings              !! the effective `&scene` values
       !> the model carries data, read from its group `&<model name>` (hillstab_batch_scene_group_model)
       logical :: model_group = .false.
@@ -120,7 +121,7 @@ module hillstab_batch_scene_types
          import :: task_t, scene_file_t, scene_t, error_t
          class(task_t), intent(inout) :: self  !! the task, its groups filled in
          type(scene_file_t), intent(in) :: file  !! the scene file
-         type(scene_t), intent(in) :: scene  !! the `&scene` and `&physical` settings
+         type(scene_t), intent(in) :: scene  !! the `&scene` settings and the model
          !> err_input naming file, group and variable; unallocated on success
          type(error_t), allocatable, intent(out) :: error
       end subroutine task_read
@@ -155,37 +156,35 @@ contains
    end subroutine open_scene_output
 
    !> The effective scene as namelist groups, one group a line, every variable with its
-   !> value (defaults filled in): `&scene`, `&physical` when the scene has it, then the
-   !> groups of the task. Reading these lines back as a scene reproduces the run.
+   !> value (defaults filled in): `&scene`, the model's own group when it has one, then the
+   !> task's (`header_groups`: `&physical` first when the scene has it). Reading these lines
+   !> back as a scene reproduces the run.
    function scene_namelist(scene) result(lines)
       type(scene_t), intent(in) :: scene  !! the scene
       character(len=:), allocatable :: lines(:)
-      character(len=:), allocatable :: settings, physical, settings_model
+      character(len=:), allocatable :: settings, settings_model
       type(group_values_t) :: values
-      integer :: k, width, n_task, first, n_model
+      type(group_values_t), allocatable :: groups(:)
+      integer :: k, width, n_task, first
       ! the output prefix as the scene holds it (a driver may direct the file elsewhere)
       values = scene%settings
       call values%set("output", quoted(scene%output))
       settings = values%line()
-      physical = ""
-      if (scene%physical%given) physical = scene%physical%values%line()
       if (scene%model_group) settings_model = scene%model_values%line()
-      n_task = 0
-      if (allocated(scene%task%groups)) n_task = size(scene%task%groups)
-      n_model = merge(1, 0, scene%model_group)
-      width = max(len(settings), len(physical))
+      groups = scene%task%header_groups()
+      n_task = size(groups)
+      width = len(settings)
       if (scene%model_group) width = max(width, len(settings_model))
       do k = 1, n_task
-         width = max(width, len(scene%task%groups(k)%line()))
+         width = max(width, len(groups(k)%line()))
       end do
-      ! &scene, the model's own group, &physical, then the task's groups
-      first = 2 + n_model + merge(1, 0, scene%physical%given)
+      ! &scene, the model's own group, then the task's groups
+      first = 2 + merge(1, 0, scene%model_group)
       allocate (character(len=width) :: lines(first - 1 + n_task))
       lines(1) = settings
       if (scene%model_group) lines(2) = settings_model
-      if (scene%physical%given) lines(2 + n_model) = physical
       do k = 1, n_task
-         lines(first - 1 + k) = scene%task%groups(k)%line()
+         lines(first - 1 + k) = groups(k)%line()
       end do
    end function scene_namelist
 
@@ -219,6 +218,17 @@ contains
          warnings = text
       end if
    end subroutine add_warning
+
+   !> Default: the task's own groups (none when it has not read them).
+   function task_header_groups(self) result(groups)
+      class(task_t), intent(in) :: self  !! the task
+      type(group_values_t), allocatable :: groups(:)
+      if (allocated(self%groups)) then
+         groups = self%groups
+      else
+         allocate (groups(0))
+      end if
+   end function task_header_groups
 
    !> Default: no alternative groups.
    subroutine task_template_alternatives(self, groups, notes)

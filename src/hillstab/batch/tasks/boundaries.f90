@@ -45,6 +45,7 @@ module hillstab_batch_tasks_boundaries
    use hillstab_curves_boundaries, only: boundary_check_t, verify_boundary, approximate_root_t, &
       approximate_boundaries, beta_accuracy_factor, gsl_witness_max_q, curve_route, exact_boundaries
    use hillstab_batch_scene_types, only: scene_t, task_t, scene_header, output_path, open_scene_output
+   use hillstab_batch_scene_physical, only: pendulum_task_t, physical_scene_t
    use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail, group_present
    use hillstab_batch_scene_checks, only: max_boundaries_magnitude, min_pendulum_beta
@@ -93,7 +94,7 @@ module hillstab_batch_tasks_boundaries
    end type alpha_rows_t
 
    !> The boundaries task and the grid of `&chart` (`n_beta` used by formula and segments).
-   type, extends(task_t) :: boundaries_task_t
+   type, extends(pendulum_task_t) :: boundaries_task_t
       type(chart_grid_t) :: grid  !! `&chart`
       !> `&physical` without `&chart`: the critical amplitudes of one spring (S = ±2 along α
       !> at its fixed β)
@@ -161,7 +162,7 @@ contains
    function boundaries_task() result(task)
       type(boundaries_task_t) :: task
       task%name = "boundaries"
-      task%physical%takes_spring = .true.
+      task%physical_use%takes_spring = .true.
    end function boundaries_task
 
    !> `&chart`, bounded for Hill's method; the curves are those of the undamped equation.
@@ -179,15 +180,15 @@ contains
             "(hillstab_critical_drives_along, Python critical_drives)")
          return
       end if
-      if (scene%epsilon > 0.0_wp .and. .not. scene%physical%given) then
+      if (scene%epsilon > 0.0_wp .and. .not. self%physical%given) then
          call fail(error, file%path, "scene", "epsilon", "task 'boundaries' draws the undamped curves: epsilon must be 0")
          return
       end if
-      if (scene%physical%given .and. .not. group_present(file%unit, "chart")) then
+      if (self%physical%given .and. .not. group_present(file%unit, "chart")) then
          call read_spring(self, file, scene, error)
          return
       end if
-      if (scene%physical%r0_given) then
+      if (self%physical%r0_given) then
          call fail(error, file%path, "physical", "r0", "r0 fixes beta: with &chart the curves run over its beta "// &
             "window (drop r0), without &chart the task finds the critical amplitudes of the spring (drop &chart)")
          return
@@ -213,7 +214,7 @@ contains
       real(wp) :: beta
       self%spring = .true.
       allocate (self%groups(0))
-      if (.not. scene%physical%r0_given) then
+      if (.not. self%physical%r0_given) then
          call fail(error, file%path, "physical", "r0", "the critical amplitudes of a spring (task boundaries with "// &
             "&physical and no &chart) need r0, the natural length of the spring (m); for the curves over a grid "// &
             "give &chart")
@@ -234,7 +235,7 @@ contains
             "method: method must be auto or an exact method, not '"//method_name(scene%method%kind)//"'")
          return
       end if
-      beta = physical_beta(scene%physical%pendulum)
+      beta = physical_beta(self%physical%pendulum)
       if (beta < min_pendulum_beta) then
          call fail(error, file%path, "physical", "g", "beta = g pi^2/(rho omega^2) = "//real_text(beta)// &
             " lies below "//real_text(min_pendulum_beta)//" (g = 0 or a spring too stiff to sag): S = 2 "// &
@@ -273,14 +274,15 @@ contains
    !> index, and those the file holds, in the order given here: the GSL witness columns for
    !> a model that has one, the column a [m] for a scene with `&physical` and the elastic
    !> model (a = alpha g/(beta omega^2)).
-   subroutine boundary_columns(scene, table, ids)
+   subroutine boundary_columns(scene, physical, table, ids)
       type(scene_t), intent(in) :: scene  !! a boundaries scene
+      type(physical_scene_t), intent(in) :: physical  !! its `&physical` (the task's)
       type(column_t), intent(out) :: table(n_curve_columns)  !! every column, by curve_* index
       integer, allocatable, intent(out) :: ids(:)  !! the columns of the file, in file order
       allocate (ids(0))
       call add(curve_alpha, column_t("alpha", "", "alpha of the boundary point", style_e17))
       call add(curve_a, column_t("a", "m", "bounce amplitude a = alpha rho/pi^2 with rho = g pi^2/(beta omega^2) "// &
-         "(eq. (24)); -1 where beta <= 0 (no equilibrium length)", style_e17), amplitude_column(scene))
+         "(eq. (24)); -1 where beta <= 0 (no equilibrium length)", style_e17), amplitude_column(scene, physical))
       call add(curve_beta, column_t("beta", "", "beta of the boundary point", style_e17))
       call add(curve_kind, column_t("kind", "", "S on the curve: +2 periodic, -2 antiperiodic", style_integer))
       call add(curve_order, column_t("order", "", "n of a_n/b_n", style_width4))
@@ -453,7 +455,7 @@ contains
       type(column_t) :: table(n_curve_columns)
       integer, allocatable :: ids(:)
       if (self%spring) then
-         call spring_run(scene, quiet, error)
+         call spring_run(scene, self%physical, quiet, error)
          return
       end if
       if (scene%epsilon > 0.0_wp) then   ! damping from &physical kappa
@@ -527,7 +529,7 @@ contains
       end do
       call sort_keys(keys)
 
-      call boundary_columns(scene, table, ids)
+      call boundary_columns(scene, self%physical, table, ids)
       call write_header(file, header(scene, self%grid, size(keys, 2)), columns_text(table, ids), error)
       if (allocated(error)) then
          call discard_output(file)
@@ -548,7 +550,7 @@ contains
                associate (r => per_alpha(i)%rows(j))
                   if (.not. all([r%order, r%branch, r%trace_sign] == keys(:, c))) cycle
                   if (any_written .and. last_i /= i - 1) call write_text(file, "", error)
-                  line = row_text(table, ids, r, c - 1, scene)
+                  line = row_text(table, ids, r, c - 1, scene, self%physical)
                   call write_text(file, line, error)
                   if (r%status == status_failed) then
                      n_failed_rows = n_failed_rows + 1
@@ -799,25 +801,27 @@ contains
    end subroutine sort_keys
 
    !> Whether the file has the column a: a scene with `&physical` and the elastic model.
-   pure logical function amplitude_column(scene)
+   pure logical function amplitude_column(scene, physical)
       type(scene_t), intent(in) :: scene
-      amplitude_column = scene%physical%given .and. is_elastic_pendulum(scene%model)
+      type(physical_scene_t), intent(in) :: physical
+      amplitude_column = physical%given .and. is_elastic_pendulum(scene%model)
    end function amplitude_column
 
    !> One data line: the columns `ids` of the row `r` of curve `curve`.
-   function row_text(table, ids, r, curve, scene) result(line)
+   function row_text(table, ids, r, curve, scene, physical) result(line)
       type(column_t), intent(in) :: table(:)  !! every column (`boundary_columns`)
       integer, intent(in) :: ids(:)           !! the columns of the file
       type(boundary_row_t), intent(in) :: r   !! the boundary point
       integer, intent(in) :: curve            !! its curve's index (from 0)
       type(scene_t), intent(in) :: scene      !! the scene
+      type(physical_scene_t), intent(in) :: physical  !! its `&physical` (the task's)
       character(len=:), allocatable :: line
       character(len=400) :: buffer
       integer :: pos
       real(wp) :: values(n_curve_columns)
       values(curve_alpha) = r%alpha
       values(curve_a) = 0.0_wp
-      if (amplitude_column(scene)) values(curve_a) = point_amplitude(scene, 1, r%alpha, r%beta)
+      if (amplitude_column(scene, physical)) values(curve_a) = point_amplitude(physical, 1, r%alpha, r%beta)
       values(curve_beta) = r%beta
       values(curve_kind) = real(r%trace_sign, wp)
       values(curve_order) = real(r%order, wp)

@@ -14,7 +14,7 @@ module hillstab_batch_tasks_boundaries_spring
    use hillstab_curves_boundaries, only: boundary_check_t, verify_boundary, alpha_crossing_t, alpha_crossings, &
       crossing_search_gap
    use hillstab_batch_scene_types, only: scene_t, scene_header, output_path, open_scene_output
-   use hillstab_batch_scene_physical, only: physical_summary
+   use hillstab_batch_scene_physical, only: physical_summary, physical_scene_t
    use hillstab_batch_output_columns, only: column_t, style_e17, style_e4, style_integer, style_width2, &
       style_width4, columns_text, put_row, all_columns, column_lines
    use hillstab_batch_output_file, only: output_file_t, finish_output, discard_output, write_header, write_text
@@ -55,8 +55,9 @@ contains
    !> The critical amplitudes of the spring of `&physical`: every 0 <= a < rho where a
    !> transition curve crosses the spring's beta (alpha_crossings), each checked by auto;
    !> the header states the unstable intervals of a in metres, from S by auto between them.
-   subroutine spring_run(scene, quiet, error)
+   subroutine spring_run(scene, physical, quiet, error)
       type(scene_t), intent(in) :: scene  !! a boundaries scene of one spring
+      type(physical_scene_t), intent(in) :: physical  !! its `&physical`, with r0
       logical, intent(in) :: quiet  !! no progress on stderr
       type(error_t), allocatable, intent(out) :: error  !! err_points_failed when a crossing fails its check
       type(progress_t) :: progress
@@ -72,8 +73,8 @@ contains
       character(len=400) :: buffer
       character(len=:), allocatable :: intervals
       integer :: j, pos, n_failed
-      rho = equilibrium_length(scene%physical%pendulum)
-      beta = physical_beta(scene%physical%pendulum)
+      rho = equilibrium_length(physical%pendulum)
+      beta = physical_beta(physical%pendulum)
       alpha_end = pi2*(1.0_wp - crossing_search_gap)
       call open_scene_output(scene, file, error)
       if (allocated(error)) return
@@ -115,7 +116,8 @@ contains
       call progress_end(progress)
       intervals = unstable_text(cuts, unstable, rho, alpha_end)
       table = spring_columns()
-      call write_header(file, spring_header(scene, table, rho, beta, alpha_end, intervals, size(crossings)), &
+      call write_header(file, spring_header(scene, physical, table, rho, beta, alpha_end, intervals, &
+                                            size(crossings)), &
                         columns_text(table, all_columns(table)), error)
       n_failed = 0
       do j = 1, size(crossings)
@@ -239,8 +241,9 @@ contains
    end function significant_text
 
    !> Header of the critical amplitudes: the spring, the method, the search, the verdicts.
-   function spring_header(scene, table, rho, beta, alpha_end, intervals, n) result(lines)
+   function spring_header(scene, physical, table, rho, beta, alpha_end, intervals, n) result(lines)
       type(scene_t), intent(in) :: scene
+      type(physical_scene_t), intent(in) :: physical
       type(column_t), intent(in) :: table(:)
       real(wp), intent(in) :: rho, beta, alpha_end
       character(len=*), intent(in) :: intervals
@@ -248,7 +251,7 @@ contains
       character(len=:), allocatable :: lines(:), spring(:), per_column(:)
       character(len=400) :: text(8 + size(table))
       integer :: k, m
-      spring = physical_summary(scene%physical, scene%epsilon)
+      spring = physical_summary(physical, scene%epsilon)
       m = 0
       m = m + 1; text(m) = model_description(scene%model)
       do k = 1, size(spring)

@@ -17,7 +17,7 @@ module hillstab_batch_tasks_chart
    use hillstab_hill_floquet, only: floquet_t, set_from_trace, period_damping
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, batch_plan_t, prepare_batch, need_verdict
    use hillstab_batch_scene_types, only: scene_t
-   use hillstab_batch_scene_physical, only: grid_pendulum
+   use hillstab_batch_scene_physical, only: grid_pendulum, physical_scene_t
    use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail, group_present
    use hillstab_batch_scene_checks, only: check_integration_cost, max_grid_count
@@ -87,7 +87,7 @@ contains
       type(chart_task_t) :: task
       task%name = "chart"
       task%takes_columns = .true.
-      task%physical%takes_omega_range = .true.
+      task%physical_use%takes_omega_range = .true.
    end function chart_task
 
    !> `&chart`, and what the scene's method and columns allow.
@@ -97,7 +97,7 @@ contains
       type(scene_t), intent(in) :: scene          !! the `&scene` settings
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
       type(chart_layout_t) :: columns
-      if (size(scene%physical%omegas) > 0) then
+      if (size(self%physical%omegas) > 0) then
          ! a chart over (a, omega): the grid comes from &physical
          if (group_present(file%unit, "chart")) then
             call fail(error, file%path, "chart", "alpha_min", "the chart runs either over &chart (alpha, beta) or "// &
@@ -106,14 +106,14 @@ contains
          end if
          self%physical_grid = .true.
          allocate (self%groups(0))
-         self%grid%n_alpha = size(scene%physical%amplitudes)
-         self%grid%n_beta = size(scene%physical%omegas)
+         self%grid%n_alpha = size(self%physical%amplitudes)
+         self%grid%n_beta = size(self%physical%omegas)
          if (int(self%grid%n_alpha, int64)*self%grid%n_beta > int(max_grid_count, int64)) then
             call fail(error, file%path, "physical", "n_omega", "n_a * n_omega = "// &
                integer_text(int(self%grid%n_alpha, int64)*self%grid%n_beta)//" points exceed the limit of 1e8")
             return
          end if
-         call scene_chart_columns(scene, columns, error)
+         call scene_chart_columns(scene, self%physical, columns, error)
          return
       end if
       allocate (self%groups(1))
@@ -123,7 +123,7 @@ contains
          max(abs(self%grid%alpha_min), abs(self%grid%alpha_max)) + &
          max(abs(self%grid%beta_min), abs(self%grid%beta_max)), error)
       if (allocated(error)) return
-      call scene_chart_columns(scene, columns, error)
+      call scene_chart_columns(scene, self%physical, columns, error)
    end subroutine chart_read
 
    !> Header plus n_alpha n_beta rows (and one blank line per α block).
@@ -157,7 +157,7 @@ contains
    subroutine physical_row(self, scene, unit, text, statuses)
       class(chart_task_t), intent(in) :: self  !! the task (a chart over `&physical`), its units prepared
       type(scene_t), intent(in) :: scene  !! its scene
-      integer, intent(in) :: unit  !! the row: the amplitude `scene%physical%amplitudes(unit)`
+      integer, intent(in) :: unit  !! the row: the amplitude `self%physical%amplitudes(unit)`
       character(len=:), allocatable, intent(out) :: text  !! the lines, no final new line (or records)
       integer, intent(out) :: statuses(:)  !! per point
       character(len=chart_line_length), allocatable :: lines(:)
@@ -170,7 +170,7 @@ contains
       integer :: j, n_omega
       integer :: ids(size(self%columns%ids))  ! the binary records' columns (a gather, `columns` allocated)
       ids = self%columns%ids
-      n_omega = size(scene%physical%omegas)
+      n_omega = size(self%physical%omegas)
       ! a text file fills lines, a binary one records
       if (scene%binary) then
          allocate (lines(0), lengths(0), values(size(ids), n_omega))
@@ -179,7 +179,7 @@ contains
       end if
       !$omp parallel do schedule(dynamic) default(shared) private(j, p, f, cause, v, epsilon, alpha, beta)
       do j = 1, n_omega
-         p = grid_pendulum(scene%physical, unit, j)
+         p = grid_pendulum(self%physical, unit, j)
          alpha = pendulum_alpha(scene%model, p)
          beta = physical_beta(p)
          epsilon = physical_epsilon(p)
@@ -208,8 +208,9 @@ contains
 
    !> Text lines or binary records (and statuses) of the chart points (α, β_j) of one row
    !> or part of a row, with the file's columns.
-   subroutine compute_row(scene, columns, alpha, betas, lines, lengths, values, statuses, plan, beta_texts)
+   subroutine compute_row(scene, physical, columns, alpha, betas, lines, lengths, values, statuses, plan, beta_texts)
       type(scene_t), intent(in) :: scene
+      type(physical_scene_t), intent(in) :: physical  !! the task's `&physical`
       type(chart_layout_t), intent(in) :: columns  !! the columns (hillstab_batch_tasks_chart_columns)
       real(wp), intent(in) :: alpha, betas(:)
       character(len=chart_line_length), intent(inout) :: lines(:)  !! text format: one line a point
@@ -241,7 +242,7 @@ contains
       where (failed) statuses = status_failed
       do j = 1, size(betas)
          a = 0.0_wp
-         if (scene%physical%given) a = point_amplitude(scene, j, alpha, betas(j))
+         if (physical%given) a = point_amplitude(physical, j, alpha, betas(j))
          if (need <= need_verdict .and. .not. scene%binary) then
             ! a verdict line (or a failed point's), written directly
             lengths(j) = 0
@@ -265,7 +266,7 @@ contains
             call set_from_trace(f, traces(j), dampings(j), scene%method%tolerance, scene%model%period(), &
                                 need <= need_verdict)
             per_second = 0.0_wp
-            if (per_time) per_second = tau_per_time(scene, alpha, betas(j))
+            if (per_time) per_second = tau_per_time(scene, physical, alpha, betas(j))
             v = chart_values(alpha, betas(j), f, in_physical_domain(alpha, betas(j)), statuses(j), per_second, a, &
                              need=need)
          end if
@@ -288,8 +289,9 @@ contains
 
    !> `compute_row` on a whole row, split into chunks computed in parallel that share
    !> the meshes prepared for the row.
-   subroutine compute_row_in_chunks(scene, columns, alpha, betas, lines, lengths, values, statuses, beta_texts)
+   subroutine compute_row_in_chunks(scene, physical, columns, alpha, betas, lines, lengths, values, statuses, beta_texts)
       type(scene_t), intent(in) :: scene
+      type(physical_scene_t), intent(in) :: physical  !! the task's `&physical`
       type(chart_layout_t), intent(in) :: columns  !! the columns
       real(wp), intent(in) :: alpha, betas(:)
       character(len=chart_line_length), intent(inout) :: lines(:)  !! text format: one line a point
@@ -309,7 +311,7 @@ contains
       do c = 1, n_chunks
          first = (c - 1)*chunk + 1
          last = min(n, c*chunk)
-         call compute_row(scene, columns, alpha, betas(first:last), lines(first:last), lengths(first:last), &
+         call compute_row(scene, physical, columns, alpha, betas(first:last), lines(first:last), lengths(first:last), &
             values(:, first:last), statuses(first:last), plan, beta_texts(first:last))
       end do
       !$omp end parallel do
@@ -348,7 +350,7 @@ contains
       type(scene_t), intent(in) :: scene    !! its scene
       type(error_t), allocatable :: error
       call chart_betas(self%grid, self%betas, self%beta_texts)
-      call scene_chart_columns(scene, self%columns, error)  ! checked when the scene was read
+      call scene_chart_columns(scene, self%physical, self%columns, error)  ! checked when the scene was read
    end subroutine chart_prepare_units
 
    !> Row `unit` as the file holds it (a blank line before every row but the first; a binary
@@ -370,16 +372,17 @@ contains
       end if
       alpha = grid_alpha(self%grid, unit)
       if (rows_in_parallel(self%grid) .and. self%columns%need <= need_verdict .and. .not. scene%binary) then
-         call verdict_row_text(scene, self%columns, alpha, self%betas, self%beta_texts, unit > 1, text, statuses)
+         call verdict_row_text(scene, self%physical, self%columns, alpha, self%betas, self%beta_texts, unit > 1, text, &
+                               statuses)
          return
       end if
       allocate (lines(self%grid%n_beta), lengths(self%grid%n_beta), values(size(self%columns%ids), self%grid%n_beta))
       if (rows_in_parallel(self%grid)) then
-         call compute_row(scene, self%columns, alpha, self%betas, lines, lengths, values, statuses, &
+         call compute_row(scene, self%physical, self%columns, alpha, self%betas, lines, lengths, values, statuses, &
                           beta_texts=self%beta_texts)
       else
-         call compute_row_in_chunks(scene, self%columns, alpha, self%betas, lines, lengths, values, statuses, &
-                                    self%beta_texts)
+         call compute_row_in_chunks(scene, self%physical, self%columns, alpha, self%betas, lines, lengths, values, &
+                                    statuses, self%beta_texts)
       end if
       call row_unit(scene%binary, values, lines, lengths, unit > 1, text)
    end subroutine chart_unit_text
@@ -388,8 +391,9 @@ contains
    !> `compute_row` and `join_lines` make it, written straight into the unit's text: no
    !> array of lines, the physical domain tested only for a `physical` column (the verdict
    !> charts spent a fifth of their time between the traces and the text).
-   subroutine verdict_row_text(scene, columns, alpha, betas, beta_texts, separate, text, statuses)
+   subroutine verdict_row_text(scene, physical, columns, alpha, betas, beta_texts, separate, text, statuses)
       type(scene_t), intent(in) :: scene  !! the chart's scene (text format)
+      type(physical_scene_t), intent(in) :: physical  !! the task's `&physical`
       type(chart_layout_t), intent(in) :: columns  !! the columns, none needing more than the verdict
       real(wp), intent(in) :: alpha, betas(:)  !! the row
       character(len=24), intent(in) :: beta_texts(:)  !! format_es(betas, 17)
@@ -398,7 +402,7 @@ contains
       integer, intent(out) :: statuses(:)  !! per point
       type(trace_t) :: traces(size(betas))
       logical :: failed(size(betas)), inaccurate(size(betas))
-      logical, allocatable :: physical(:)
+      logical, allocatable :: in_domain(:)
       real(wp), allocatable :: amplitudes(:)
       type(error_t), allocatable :: cause
       character(len=:), allocatable :: buffer
@@ -409,9 +413,9 @@ contains
                                  need=columns%need, paper=columns%paper, dampings=dampings)
       statuses = merge(status_roundoff, status_ok, inaccurate)
       where (failed) statuses = status_failed
-      allocate (physical(0), amplitudes(0))
-      if (any(columns%ids == col_physical)) physical = [(in_physical_domain(alpha, betas(j)), j=1, size(betas))]
-      if (scene%physical%given) amplitudes = [(point_amplitude(scene, j, alpha, betas(j)), j=1, size(betas))]
+      allocate (in_domain(0), amplitudes(0))
+      if (any(columns%ids == col_physical)) in_domain = [(in_physical_domain(alpha, betas(j)), j=1, size(betas))]
+      if (physical%given) amplitudes = [(point_amplitude(physical, j, alpha, betas(j)), j=1, size(betas))]
       ! room for every line at its longest (and one more, for the line being written)
       allocate (character(len=(size(betas) + 1)*(chart_line_length + 1) + 1) :: buffer)
       pos = 0
@@ -420,7 +424,7 @@ contains
          pos = 1
       end if
       call verdict_lines(columns, alpha, betas, traces, period_damping(dampings, scene%model%period()), &
-                         scene%method%tolerance, statuses, physical, &
+                         scene%method%tolerance, statuses, in_domain, &
                          amplitudes, format_es(alpha, 17), buffer, pos, beta_texts)
       text = buffer(1:pos)
    end subroutine verdict_row_text
@@ -432,16 +436,17 @@ contains
       type(output_file_t), intent(inout) :: file  !! the open output file
       type(error_t), allocatable, intent(out) :: error  !! why the file cannot be written
       type(chart_layout_t) :: columns
-      call scene_chart_columns(scene, columns, error)
+      call scene_chart_columns(scene, self%physical, columns, error)
       if (allocated(error)) return
       if (self%physical_grid) then
-         call write_header(file, chart_header(scene, .false., columns), chart_names(columns), error, &
+         call write_header(file, chart_header(scene, self%physical, .false., columns), chart_names(columns), error, &
                            names_line=scene%names_line, records=[self%grid%n_beta, self%grid%n_alpha])
          return
       end if
       call check_method_runs(scene, self%grid%alpha_min, self%grid%beta_min, error)
       if (allocated(error)) return
-      call write_header(file, chart_header(scene, outside(self%grid), columns, chart_region_lines(scene, self%grid)), &
+      call write_header(file, chart_header(scene, self%physical, outside(self%grid), columns, &
+                                                chart_region_lines(scene, self%grid)), &
                         chart_names(columns), error, names_line=scene%names_line, &
                         records=[self%grid%n_beta, self%grid%n_alpha])
    end subroutine chart_open_units
@@ -471,7 +476,7 @@ contains
       real(wp) :: point(2)
       type(physical_t) :: p
       if (self%physical_grid) then
-         p = grid_pendulum(scene%physical, int((k - 1)/self%grid%n_beta) + 1, &
+         p = grid_pendulum(self%physical, int((k - 1)/self%grid%n_beta) + 1, &
                            int(mod(k - 1, int(self%grid%n_beta, int64))) + 1)
          point = [pendulum_alpha(scene%model, p), physical_beta(p)]
       else

@@ -32,7 +32,7 @@ module hillstab_batch_tasks_chart_columns
    use hillstab_integrate_monodromy, only: monodromy_trace_batch, method_name, method_uses_segments, method_is_exact, &
       need_nothing, need_verdict, need_growth, need_trace
    use hillstab_batch_scene_types, only: scene_t, task_t, scene_header, output_path
-   use hillstab_batch_scene_physical, only: physical_summary
+   use hillstab_batch_scene_physical, only: physical_summary, physical_scene_t, pendulum_task_t
    use hillstab_batch_scene_file, only: fail
    use hillstab_batch_tasks_floquet_columns, only: chart_column_t, column_context_t, floquet_column, scene_columns, &
       chart_keys, plain_table, accuracy_none, accuracy_verdict, n_chart_columns, chart_values, clamp_magnitude, log10_floor, &
@@ -72,7 +72,7 @@ module hillstab_batch_tasks_chart_columns
 
    !> A task writing the chart's columns (chart, points): what runs in units ends as a
    !> serial run ends.
-   type, abstract, extends(task_t) :: floquet_task_t
+   type, abstract, extends(pendulum_task_t) :: floquet_task_t
    contains
       procedure :: finish_units => floquet_finish_units
    end type floquet_task_t
@@ -98,16 +98,17 @@ contains
    !> Every column of a chart or points file of this scene, one record each, by its col_*
    !> index: the records of `floquet_column` for one equation's file (meanings and what is
    !> offered depend on the model, the damping and `&physical`).
-   function chart_column_table(scene) result(table)
+   function chart_column_table(scene, physical) result(table)
       type(scene_t), intent(in) :: scene  !! the scene
+      type(physical_scene_t), intent(in) :: physical  !! its `&physical` (the task's)
       type(chart_column_t) :: table(n_chart_columns)
       type(column_context_t) :: context
       integer :: k
       context%damped = scene%epsilon > 0.0_wp .or. scene%model%has_damping()
       context%pendulum = is_elastic_pendulum(scene%model)
-      context%physical = scene%physical%given
-      context%amplitudes = size(scene%physical%amplitudes) > 0
-      context%omegas = size(scene%physical%omegas) > 0
+      context%physical = physical%given
+      context%amplitudes = size(physical%amplitudes) > 0
+      context%omegas = size(physical%omegas) > 0
       context%own_time = scene%model%has_time()
       context%alpha_name = scene%model%axis_name(1)
       context%beta_name = scene%model%axis_name(2)
@@ -122,13 +123,14 @@ contains
    !> The columns a chart or points file of this scene holds: `&scene columns` when given,
    !> else all it offers (in file order); an error naming `&scene columns` when a name is
    !> not offered.
-   subroutine scene_chart_columns(scene, columns, error)
+   subroutine scene_chart_columns(scene, physical, columns, error)
       type(scene_t), intent(in) :: scene  !! a chart or points scene
+      type(physical_scene_t), intent(in) :: physical  !! its `&physical` (the task's)
       type(chart_layout_t), intent(out) :: columns  !! its table, the columns written and what they need
       type(error_t), allocatable, intent(out) :: error  !! err_input naming &scene columns
       integer, allocatable :: available(:)
       integer :: k
-      columns%table = chart_column_table(scene)
+      columns%table = chart_column_table(scene, physical)
       allocate (available(0))
       do k = 1, n_chart_columns
          if (columns%table(k)%offered) available = [available, k]
@@ -400,8 +402,9 @@ contains
 
    !> Header lines of a chart or points file: the common header, the method, one line per
    !> column written, the placeholders of failed rows.
-   function chart_header(scene, outside, columns, regions) result(lines)
+   function chart_header(scene, physical, outside, columns, regions) result(lines)
       type(scene_t), intent(in) :: scene  !! a validated scene
+      type(physical_scene_t), intent(in) :: physical  !! its `&physical` (the task's)
       logical, intent(in) :: outside  !! some point lies outside the physical domain
       type(chart_layout_t), intent(in) :: columns  !! the file's columns
       character(len=*), intent(in), optional :: regions(:)  !! lines on the regions of the chart's ranges
@@ -441,9 +444,9 @@ contains
          text(n) = "note: this file leaves the physical domain (rows with physical = 0)"
       end if
       if (present(regions)) then
-         lines = stacked(common_header(scene), [character(len=400) :: text(:n), regions])
+         lines = stacked(common_header(scene, physical), [character(len=400) :: text(:n), regions])
       else
-         lines = stacked(common_header(scene), text(:n))
+         lines = stacked(common_header(scene, physical), text(:n))
       end if
    end function chart_header
 
@@ -555,30 +558,31 @@ contains
    end function method_description
 
    !> Header lines of a scene given in physical units: the spring, the conversions used.
-   function physical_header(scene) result(lines)
+   function physical_header(scene, physical) result(lines)
       type(scene_t), intent(in) :: scene
+      type(physical_scene_t), intent(in) :: physical
       character(len=:), allocatable :: lines(:)
       character(len=400) :: text(1)
-      if (size(scene%physical%amplitudes) > 0) then
+      if (size(physical%amplitudes) > 0) then
          text(1) = "each amplitude a of &physical is one point (points: a row; coefficient: a curve): alpha = "// &
             "a pi^2/rho"//pendulum_note(scene%model)
-         lines = stacked(physical_summary(scene%physical, scene%epsilon), text)
+         lines = stacked(physical_summary(physical, scene%epsilon), text)
       else
-         lines = physical_summary(scene%physical, scene%epsilon)
+         lines = physical_summary(physical, scene%epsilon)
       end if
    end function physical_header
 
    !> The bounce amplitude a (m) of a point of a scene with `&physical`: the k-th
    !> amplitude when the scene gives them, else a = α ρ/π² with ρ = g π²/(β ω²)
    !> (eq. (24)), that is α g/(β ω²); −1 where β ≤ 0 or g = 0 (no equilibrium length).
-   pure real(wp) function point_amplitude(scene, k, alpha, beta) result(a)
-      type(scene_t), intent(in) :: scene  !! a scene with `&physical`
+   pure real(wp) function point_amplitude(physical, k, alpha, beta) result(a)
+      type(physical_scene_t), intent(in) :: physical  !! a scene's `&physical` (given)
       integer, intent(in) :: k  !! the point's index
       real(wp), intent(in) :: alpha, beta  !! the point
-      if (size(scene%physical%amplitudes) > 0) then
-         a = scene%physical%amplitudes(k)
-      else if (beta > 0.0_wp .and. scene%physical%pendulum%g > 0.0_wp) then
-         a = alpha*scene%physical%pendulum%g/(beta*scene%physical%pendulum%omega**2)
+      if (size(physical%amplitudes) > 0) then
+         a = physical%amplitudes(k)
+      else if (beta > 0.0_wp .and. physical%pendulum%g > 0.0_wp) then
+         a = alpha*physical%pendulum%g/(beta*physical%pendulum%omega**2)
       else
          a = -1.0_wp
       end if
@@ -588,11 +592,12 @@ contains
    !> user's time (the column mu_per_s): ω/π of `&physical` (a row of a chart over
    !> amplitudes and frequencies has each point's own, `physical_row`), else the model's at
    !> the point (`tau_rate`: an equation's Ω/π), 0 when the scene has no time but τ.
-   elemental real(wp) function tau_per_time(scene, alpha, beta) result(rate)
+   elemental real(wp) function tau_per_time(scene, physical, alpha, beta) result(rate)
       type(scene_t), intent(in) :: scene  !! the scene
+      type(physical_scene_t), intent(in) :: physical  !! its `&physical` (the task's)
       real(wp), intent(in) :: alpha, beta  !! the point
-      if (scene%physical%given) then
-         rate = scene%physical%pendulum%omega/pi
+      if (physical%given) then
+         rate = physical%pendulum%omega/pi
       else
          rate = scene%model%tau_rate(alpha, beta)
       end if
@@ -621,15 +626,17 @@ contains
       end if
    end function damped_threshold
 
-   !> Header lines common to every task: version, source, the effective scene, the model.
-   function common_header(scene) result(lines)
+   !> Header lines common to the pendulum tasks: version, source, the effective scene, the
+   !> model, and the spring of `&physical` when the scene has it.
+   function common_header(scene, physical) result(lines)
       type(scene_t), intent(in) :: scene  !! the scene
+      type(physical_scene_t), intent(in) :: physical  !! its `&physical` (the task's)
       character(len=:), allocatable :: lines(:)
       character(len=:), allocatable :: model_text, common(:)
       model_text = model_description(scene%model)
       common = scene_header(scene, "hillstab "//version_string//": "//model_equation_text(scene%model), [model_text])
-      if (scene%physical%given) then
-         lines = stacked(common, physical_header(scene))
+      if (physical%given) then
+         lines = stacked(common, physical_header(scene, physical))
       else
          lines = common
       end if

@@ -7,7 +7,7 @@ module hillstab_batch_tasks_coefficient
    use hillstab_core_text, only: real_text, integer_text
    use hillstab_hill_coefficient, only: segment_coefficients, sampling_name
    use hillstab_batch_scene_types, only: scene_t, task_t, open_scene_output
-   use hillstab_batch_scene_physical, only: physical_points
+   use hillstab_batch_scene_physical, only: physical_points, pendulum_task_t
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_declaration, only: new_group, group_t, group_reader_t, variable, var_real, var_integer, var_real_list, &
       begin_group, next_item, end_group, list_value
@@ -27,7 +27,7 @@ module hillstab_batch_tasks_coefficient
    integer, parameter :: max_alphas = 64
 
    !> The coefficient task: Q(τ) at one β for a list of α.
-   type, extends(task_t) :: coefficient_task_t
+   type, extends(pendulum_task_t) :: coefficient_task_t
       real(wp), allocatable :: alphas(:)  !! α of each curve
       real(wp) :: beta = 0.0_wp           !! β of every curve
       real(wp) :: tau_min = 0.0_wp        !! first τ
@@ -82,8 +82,8 @@ contains
    function coefficient_task() result(task)
       type(coefficient_task_t) :: task
       task%name = "coefficient"
-      task%physical%amplitudes_replace = "alphas and beta from &coefficient"
-      task%physical%takes_amplitudes = .true.
+      task%physical_use%amplitudes_replace = "alphas and beta from &coefficient"
+      task%physical_use%takes_amplitudes = .true.
    end function coefficient_task
 
    !> The declaration of `&coefficient` (defaults: the paper's Fig. 2).
@@ -102,7 +102,7 @@ contains
    subroutine coefficient_read(self, file, scene, error)
       class(coefficient_task_t), intent(inout) :: self  !! the task, its curves filled in
       type(scene_file_t), intent(in) :: file      !! the scene file
-      type(scene_t), intent(in) :: scene          !! the `&scene` and `&physical` settings
+      type(scene_t), intent(in) :: scene          !! the `&scene` settings
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
       type(group_t) :: group
       real(wp) :: alphas(max_alphas), beta, tau_min, tau_max
@@ -112,10 +112,10 @@ contains
       real(wp), allocatable :: points(:, :)
       logical :: from_physical
       integer :: k
-      from_physical = size(scene%physical%amplitudes) > 0
-      if (size(scene%physical%amplitudes) > max_alphas) then
+      from_physical = size(self%physical%amplitudes) > 0
+      if (size(self%physical%amplitudes) > max_alphas) then
          call fail(error, file%path, "physical", "n_a", "task 'coefficient' draws at most "// &
-            integer_text(max_alphas)//" curves, got "//integer_text(size(scene%physical%amplitudes))//" amplitudes")
+            integer_text(max_alphas)//" curves, got "//integer_text(size(self%physical%amplitudes))//" amplitudes")
          return
       end if
       group = coefficient_group()
@@ -139,7 +139,7 @@ contains
                   return
                end if
             end do
-            points = physical_points(scene%physical, scene%model)
+            points = physical_points(self%physical, scene%model)
             self%alphas = points(1, :)
             beta = points(2, 1)
             call values%hide("alphas")
@@ -245,16 +245,16 @@ contains
       segments_line = "Qseg: Q replaced by "//integer_text(n_pieces)//" constant pieces on [0, 2), sampling "// &
                       sampling_name(scene%method%sampling)//" (2 pieces, endpoint: eq. (28) of the paper)"
       columns_line = "Q(a), Qseg(a): the two columns of alpha = a"
-      if (size(scene%physical%amplitudes) == n_alpha) then
+      if (size(self%physical%amplitudes) == n_alpha) then
          ! the curves in metres: each alpha is a bounce amplitude of &physical
          columns_line = columns_line//"; the amplitudes [m]:"
          do k = 1, n_alpha
-            columns_line = columns_line//" a = "//real_text(scene%physical%amplitudes(k))//" (alpha = "// &
+            columns_line = columns_line//" a = "//real_text(self%physical%amplitudes(k))//" (alpha = "// &
                            real_text(self%alphas(k))//")"
             if (k < n_alpha) columns_line = columns_line//","
          end do
       end if
-      lines = stacked(common_header(scene), stacked([q_line], stacked([segments_line], [columns_line])))
+      lines = stacked(common_header(scene, self%physical), stacked([q_line], stacked([segments_line], [columns_line])))
 
       call open_scene_output(scene, file, error)
       if (allocated(error)) return

@@ -29,7 +29,7 @@ module hillstab_batch_tasks_lyapunov
    use hillstab_pendulum_chaos, only: chaos_options_t, chaos_t, chaos_indicators_batch, chaos_integrator_id, &
       chaos_integrator_name, chaos_method_text, chaos_verdict_rule, chaos_symplectic
    use hillstab_batch_scene_types, only: scene_t, task_t, scene_header, output_path
-   use hillstab_batch_scene_physical, only: physical_summary
+   use hillstab_batch_scene_physical, only: physical_summary, pendulum_task_t
    use hillstab_batch_scene_file, only: scene_file_t, fail, group_present, read_len
    use hillstab_hill_units, only: physical_t, physical_alpha, physical_beta, physical_epsilon
    use hillstab_batch_scene_checks, only: min_pendulum_beta
@@ -67,7 +67,7 @@ module hillstab_batch_tasks_lyapunov
       col_status]
 
    !> The lyapunov task: the pendulum of `&series` over a grid or a list of points.
-   type, extends(task_t) :: lyapunov_task_t
+   type, extends(pendulum_task_t) :: lyapunov_task_t
       type(series_plan_t) :: series           !! the pendulum's start, r0, g and periods
       logical :: over_points = .false.        !! over `&points` instead of `&chart`
       type(chart_grid_t) :: grid              !! `&chart`
@@ -152,10 +152,9 @@ contains
    function lyapunov_task() result(task)
       type(lyapunov_task_t) :: task
       task%name = "lyapunov"
-      task%physical%allowed = .true.
-      task%physical%takes_amplitudes = .true.
-      task%physical%takes_omega_range = .true.
-      task%physical%amplitudes_replace = "&chart (or &points), and r0, g from &series"
+      task%physical_use%takes_amplitudes = .true.
+      task%physical_use%takes_omega_range = .true.
+      task%physical_use%amplitudes_replace = "&chart (or &points), and r0, g from &series"
    end function lyapunov_task
 
    !> The declaration of `&lyapunov`.
@@ -216,7 +215,7 @@ contains
       integer :: j
       allocate (self%groups(3))
       ! with &physical the spring comes from there: &series gives the start and the periods
-      call read_series_group(file, series_group(), scene%model, .false., self%series, self%groups(1), error, &
+      call read_series_group(file, series_group(), scene%model, self%series, self%groups(1), error, &
          samples=.false., warnings=self%warnings)
       if (allocated(error)) return
       group = lyapunov_group()
@@ -240,7 +239,7 @@ contains
       if (allocated(error)) return
       self%table = lyapunov_columns()
       self%ids = chart_ids
-      if (scene%physical%given) then
+      if (self%physical%given) then
          call physical_settings(error)
          if (allocated(error)) return
          self%ids = physical_ids
@@ -291,18 +290,18 @@ contains
                "runs either over &physical (a, omega) or over &chart / &points, not both"
             return
          end if
-         if (size(scene%physical%amplitudes) == 0) then
+         if (size(self%physical%amplitudes) == 0) then
             call fail(error, file%path, "physical", "a_min", "the map over &physical needs the amplitudes: "// &
                "a_min, a_max, n_a (or the list a) with r0")
             return
          end if
          self%over_physical = .true.
-         self%spring = scene%physical%pendulum
-         self%amplitudes = scene%physical%amplitudes
-         if (size(scene%physical%omegas) > 0) then
-            self%omegas = scene%physical%omegas
+         self%spring = self%physical%pendulum
+         self%amplitudes = self%physical%amplitudes
+         if (size(self%physical%omegas) > 0) then
+            self%omegas = self%physical%omegas
          else
-            self%omegas = [scene%physical%pendulum%omega]
+            self%omegas = [self%physical%pendulum%omega]
          end if
          self%over_points = .false.
          self%grid%n_alpha = size(self%amplitudes)
@@ -315,7 +314,7 @@ contains
          end do
          self%spring%omega = self%omegas(1)
          if (beta_low < min_pendulum_beta) then
-            call fail(error, file%path, "physical", trim(merge("omega_max", "omega    ", size(scene%physical%omegas) > 0)), &
+            call fail(error, file%path, "physical", trim(merge("omega_max", "omega    ", size(self%physical%omegas) > 0)), &
                "gives beta = "//real_text(beta_low)//", below "//real_text(min_pendulum_beta)// &
                " (the pendulum's time scales overflow there)")
          end if
@@ -568,7 +567,7 @@ contains
       n = n + 1; text(n) = "status: 0 ok; 1 the chart's value only round-off limited; 2 failed (placeholders, below)"
       n = n + 1; text(n) = "failed rows: "//placeholders_text(self%table, self%ids)
       if (self%over_physical) then
-         spring = physical_summary(scene%physical, scene%epsilon)
+         spring = physical_summary(self%physical, scene%epsilon)
          do j = 1, size(spring)
             n = n + 1; text(n) = spring(j)
          end do

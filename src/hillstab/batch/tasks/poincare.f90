@@ -93,7 +93,6 @@ contains
    function poincare_task() result(task)
       type(poincare_task_t) :: task
       task%name = "poincare"
-      task%physical%allowed = .false.
    end function poincare_task
 
    !> The declaration of `&poincare` (the default angles lie below 0.35 rad: states at rest
@@ -121,7 +120,7 @@ contains
       type(group_reader_t) :: reader
       integer :: k
       allocate (self%groups(2))
-      call read_series_group(file, series_group(), scene%model, scene%physical%given, self%series, self%groups(1), error, &
+      call read_series_group(file, series_group(), scene%model, self%series, self%groups(1), error, &
          samples=.false., warnings=self%warnings)
       if (allocated(error)) return
       group = poincare_group()

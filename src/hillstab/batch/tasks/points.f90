@@ -70,21 +70,21 @@ contains
    function points_task() result(task)
       type(points_task_t) :: task
       task%name = "points"
-      task%physical%amplitudes_replace = "the &points group"
+      task%physical_use%amplitudes_replace = "the &points group"
       task%takes_columns = .true.
-      task%physical%takes_amplitudes = .true.
+      task%physical_use%takes_amplitudes = .true.
    end function points_task
 
    !> The points of `&points file`, or of `&physical a` (then `&points` may not name a file).
    subroutine points_read(self, file, scene, error)
       class(points_task_t), intent(inout) :: self  !! the task, its points filled in
       type(scene_file_t), intent(in) :: file      !! the scene file
-      type(scene_t), intent(in) :: scene          !! the `&scene` and `&physical` settings
+      type(scene_t), intent(in) :: scene          !! the `&scene` settings
       type(error_t), allocatable, intent(out) :: error  !! err_input naming file, group and variable
       type(chart_layout_t) :: columns
       integer :: k
       logical :: from_physical
-      from_physical = size(scene%physical%amplitudes) > 0
+      from_physical = size(self%physical%amplitudes) > 0
       allocate (self%groups(1))
       call read_points_group(file, points_group(), scene%model, self%file, self%points, self%groups(1), error, &
                              optional=from_physical)
@@ -95,7 +95,7 @@ contains
                "or from &physical a and r0, not both")
             return
          end if
-         self%points = physical_points(scene%physical, scene%model)
+         self%points = physical_points(self%physical, scene%model)
          call self%groups(1)%hide("file")
       end if
       do k = 1, size(self%points, 2)
@@ -103,7 +103,7 @@ contains
             abs(self%points(1, k)) + abs(self%points(2, k)), error, where="point "//integer_text(k))
          if (allocated(error)) return
       end do
-      call scene_chart_columns(scene, columns, error)
+      call scene_chart_columns(scene, self%physical, columns, error)
    end subroutine points_read
 
    !> Header plus one row a point.
@@ -157,13 +157,13 @@ contains
          alpha = self%points(1, k)
          beta = self%points(2, k)
          a = 0.0_wp
-         if (scene%physical%given) a = point_amplitude(scene, k, alpha, beta)
+         if (self%physical%given) a = point_amplitude(self%physical, k, alpha, beta)
          call evaluate_point(scene, alpha, beta, f, cause, statuses(k), columns=columns)
          if (statuses(k) == status_failed) then
             v = failed_values(columns, alpha, beta, in_physical_domain(alpha, beta), a)
          else
             per_second = 0.0_wp
-            if (per_time) per_second = tau_per_time(scene, alpha, beta)
+            if (per_time) per_second = tau_per_time(scene, self%physical, alpha, beta)
             v = chart_values(alpha, beta, f, in_physical_domain(alpha, beta), statuses(k), per_second, a)
          end if
          if (present(values)) values(:, k) = v(ids)
@@ -192,7 +192,7 @@ contains
       class(points_task_t), intent(inout) :: self  !! the task
       type(scene_t), intent(in) :: scene    !! its scene
       type(error_t), allocatable :: error
-      call scene_chart_columns(scene, self%columns, error)  ! checked when the scene was read
+      call scene_chart_columns(scene, self%physical, self%columns, error)  ! checked when the scene was read
    end subroutine points_prepare_units
 
    !> The lines of the points `first` … `last` (a binary file: their records' bytes; the units
@@ -224,9 +224,9 @@ contains
       type(output_file_t), intent(inout) :: file  !! the open output file
       type(error_t), allocatable, intent(out) :: error  !! why the file cannot be written
       type(chart_layout_t) :: columns
-      call scene_chart_columns(scene, columns, error)
+      call scene_chart_columns(scene, self%physical, columns, error)
       if (allocated(error)) return
-      call write_header(file, chart_header(scene, outside(self), columns), chart_names(columns), &
+      call write_header(file, chart_header(scene, self%physical, outside(self), columns), chart_names(columns), &
                         error, names_line=scene%names_line, records=[size(self%points, 2), 1])
    end subroutine points_open_units
 

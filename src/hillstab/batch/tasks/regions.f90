@@ -58,14 +58,12 @@ contains
    function regions_task() result(task)
       type(regions_task_t) :: task
       task%name = "regions"
-      task%physical%allowed = .false.
    end function regions_task
 
    !> An edges task.
    function edges_task() result(task)
       type(edges_task_t) :: task
       task%name = "edges"
-      task%physical%allowed = .false.
    end function edges_task
 
    !> The declaration of `&edges`.

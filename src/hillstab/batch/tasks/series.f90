@@ -32,7 +32,7 @@ module hillstab_batch_tasks_series
    use hillstab_pendulum_analysis, only: pendulum_watch_t, pendulum_integrate, onset_periods, default_phi_sat, &
       linear_onset_periods
    use hillstab_batch_scene_types, only: scene_t, task_t, scene_header, output_path, open_scene_output
-   use hillstab_batch_scene_physical, only: physical_summary
+   use hillstab_batch_scene_physical, only: physical_summary, physical_scene_t, pendulum_task_t
    use hillstab_batch_scene_declaration, only: group_t
    use hillstab_batch_scene_file, only: scene_file_t, fail
    use hillstab_batch_scene_checks, only: min_pendulum_beta
@@ -47,7 +47,7 @@ module hillstab_batch_tasks_series
    public :: series_task_t, series_task, series_summary_t, series_summary
 
    !> The series task and its pendulum (`&series`).
-   type, extends(task_t) :: series_task_t
+   type, extends(pendulum_task_t) :: series_task_t
       type(series_plan_t) :: plan  !! the pendulum, its start and the sampling
       !> the last sample index j (t_j = j T/samples_per_period): periods × samples_per_period,
       !> or the last t_j <= duration
@@ -111,10 +111,10 @@ contains
    function series_task() result(task)
       type(series_task_t) :: task
       task%name = "series"
-      task%physical%takes_amplitudes = .true.
-      task%physical%takes_spring = .true.
-      task%physical%single_amplitude = .true.
-      task%physical%amplitudes_replace = "alpha, beta, r0 and g from &series"
+      task%physical_use%takes_amplitudes = .true.
+      task%physical_use%takes_spring = .true.
+      task%physical_use%single_amplitude = .true.
+      task%physical_use%amplitudes_replace = "alpha, beta, r0 and g from &series"
    end function series_task
 
    !> `&series`.
@@ -129,10 +129,10 @@ contains
       real(wp) :: spacing
       integer :: k
       allocate (self%groups(1))
-      call read_series_group(file, series_group(), scene%model, .false., self%plan, self%groups(1), error, &
+      call read_series_group(file, series_group(), scene%model, self%plan, self%groups(1), error, &
                              takes_duration=.true., warnings=self%warnings)
       if (allocated(error)) return
-      if (scene%physical%given) then
+      if (self%physical%given) then
          ! the pendulum of &physical (omega or k, m; r0; g; kappa; one amplitude a)
          do k = 1, size(replaced)
             if (self%groups(1)%given(trim(replaced(k)))) then
@@ -142,20 +142,20 @@ contains
                return
             end if
          end do
-         if (size(scene%physical%amplitudes) /= 1) then
+         if (size(self%physical%amplitudes) /= 1) then
             call fail(error, file%path, "physical", "a", "task series simulates one bounce amplitude: give one a "// &
-               "(m) with r0, got "//integer_text(size(scene%physical%amplitudes)))
+               "(m) with r0, got "//integer_text(size(self%physical%amplitudes)))
             return
          end if
-         if (.not. scene%physical%pendulum%g > 0.0_wp) then
+         if (.not. self%physical%pendulum%g > 0.0_wp) then
             call fail(error, file%path, "physical", "g", "the series task needs gravity g > 0")
             return
          end if
-         self%plan%alpha = physical_alpha(physical_t(r0=scene%physical%pendulum%r0, g=scene%physical%pendulum%g, &
-                                                     omega=scene%physical%pendulum%omega, a=scene%physical%amplitudes(1)))
-         self%plan%beta = physical_beta(scene%physical%pendulum)
-         self%plan%r0 = scene%physical%pendulum%r0
-         self%plan%g = scene%physical%pendulum%g
+         self%plan%alpha = physical_alpha(physical_t(r0=self%physical%pendulum%r0, g=self%physical%pendulum%g, &
+                                                     omega=self%physical%pendulum%omega, a=self%physical%amplitudes(1)))
+         self%plan%beta = physical_beta(self%physical%pendulum)
+         self%plan%r0 = self%physical%pendulum%r0
+         self%plan%g = self%physical%pendulum%g
          if (self%plan%beta < min_pendulum_beta .or. self%plan%beta >= pi2) then
             call fail(error, file%path, "physical", "r0", "beta = g pi^2/(rho omega^2) = "// &
                real_text(self%plan%beta)//" must lie in [1e-8, pi^2) for the series task")
@@ -228,7 +228,7 @@ contains
       call open_scene_output(scene, writer%file, error)
       if (allocated(error)) return
       writer%table = series_columns()
-      call write_header(writer%file, series_header(scene, self%plan, self%n_samples, summary), &
+      call write_header(writer%file, series_header(scene, self%physical, self%plan, self%n_samples, summary), &
                         columns_text(writer%table, all_columns(writer%table)), error)
       if (allocated(error)) then
          call discard_output(writer%file)
@@ -360,8 +360,9 @@ contains
    end subroutine write_samples
 
    !> Header: version, scene (repeatable), the pendulum, the method, the summary, the columns.
-   function series_header(scene, plan, n_samples, s) result(lines)
+   function series_header(scene, physical, plan, n_samples, s) result(lines)
       type(scene_t), intent(in) :: scene
+      type(physical_scene_t), intent(in) :: physical  !! the task's `&physical`
       type(series_plan_t), intent(in) :: plan
       integer(int64), intent(in) :: n_samples
       type(series_summary_t), intent(in) :: s
@@ -370,8 +371,8 @@ contains
       character(len=:), allocatable :: spring(:)
       integer :: n, k
       n = 0
-      if (scene%physical%given) then
-         spring = physical_summary(scene%physical, scene%epsilon)
+      if (physical%given) then
+         spring = physical_summary(physical, scene%epsilon)
          do k = 1, size(spring)
             n = n + 1; extra(n) = spring(k)
          end do

@@ -108,7 +108,6 @@ contains
       type(system_chart_task_t) :: task
       task%name = "chart"
       task%takes_columns = .true.
-      task%physical%allowed = .false.
       task%units_in_parallel = .true.
    end function system_chart_task
 
@@ -117,7 +116,6 @@ contains
       type(system_points_task_t) :: task
       task%name = "points"
       task%takes_columns = .true.
-      task%physical%allowed = .false.
       task%units_in_parallel = .true.
    end function system_points_task
 

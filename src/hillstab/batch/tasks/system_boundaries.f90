@@ -43,7 +43,6 @@ contains
    function system_boundaries_task() result(task)
       type(system_boundaries_task_t) :: task
       task%name = "boundaries"
-      task%physical%allowed = .false.
    end function system_boundaries_task
 
    !> `&chart`.

@@ -37,7 +37,6 @@ contains
    function system_coefficient_task() result(task)
       type(system_coefficient_task_t) :: task
       task%name = "coefficient"
-      task%physical%allowed = .false.
    end function system_coefficient_task
 
    !> The declaration of `&coefficient` for a system.
