@@ -23,7 +23,7 @@ module hillstab_batch_scene_physical
    use hillstab_hill_units, only: physical_t, physical_beta, equilibrium_length
    use hillstab_hill_model_pendulum, only: pendulum_alpha
    use hillstab_batch_scene_declaration, only: group_values_t
-   use hillstab_batch_scene_types, only: task_t
+   use hillstab_batch_scene_types, only: task_t, task_header_groups
    implicit none
    private
    public :: physical_scene_t, physical_use_t, pendulum_task_t, physical_points, physical_summary, grid_pendulum
@@ -78,11 +78,7 @@ contains
    function pendulum_header_groups(self) result(groups)
       class(pendulum_task_t), intent(in) :: self  !! the task
       type(group_values_t), allocatable :: groups(:)
-      if (allocated(self%groups)) then
-         groups = self%groups
-      else
-         allocate (groups(0))
-      end if
+      groups = task_header_groups(self)
       if (self%physical%given) groups = [self%physical%values, groups]
    end function pendulum_header_groups
 

@@ -30,6 +30,7 @@ module hillstab_batch_scene_types
    implicit none
    private
    public :: scene_t, task_t, output_path, scene_namelist, scene_header, open_scene_output, add_warning
+   public :: task_header_groups
 
    !> A task: what it reads, runs and writes. Concrete tasks extend it (the registry,
    !> hillstab_batch_tasks_registry, makes one from its name); a task whose points are
@@ -219,7 +220,7 @@ contains
       end if
    end subroutine add_warning
 
-   !> Default: the task's own groups (none when it has not read them).
+   !> The task's own groups (none when it has not read them): the default `header_groups`.
    function task_header_groups(self) result(groups)
       class(task_t), intent(in) :: self  !! the task
       type(group_values_t), allocatable :: groups(:)
