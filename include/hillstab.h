@@ -315,6 +315,11 @@ int hillstab_critical_drives_along(const hillstab_model *model, int axis, double
  * grid of task chart (alpha index outer), a row's points sharing their nodes. */
 int hillstab_system_column_count(const hillstab_system *system, int *count);
 int hillstab_system_column_name(const hillstab_system *system, int index, char *name, size_t length);
+/* d tau/dt at the n points (alpha[j], beta[j]): rate[j] turns a rate per unit tau (mu, mu_k) into
+ * one per unit of the system's own time t (a system of equations: Omega/pi at the point); 0 for a
+ * system in tau alone and at a point outside the domain. */
+int hillstab_system_tau_rate(const hillstab_system *system, size_t n, const double *alpha, const double *beta,
+                             double *rate);
 int hillstab_system_points(const hillstab_system *system, size_t n, const double *alpha, const double *beta,
                            const double *epsilon, int method, double tolerance, int threads, double *values,
                            int *status);

@@ -57,6 +57,8 @@ _capi._declare("hillstab_system_floquet", ctypes.c_int, _system_p, ctypes.c_doub
                ctypes.c_double, ctypes.c_int, ctypes.c_double, _c_double_p, _c_double_p, _c_double_p, _c_double_p,
                _c_int_p, _c_int_p, _c_double_p, _c_double_p, _c_double_p, _c_double_p, _c_int_p)
 _capi._declare("hillstab_system_column_count", ctypes.c_int, _system_p, _c_int_p)
+_capi._declare("hillstab_system_tau_rate", ctypes.c_int, _system_p, ctypes.c_size_t, _c_double_p, _c_double_p,
+               _c_double_p)
 _capi._declare("hillstab_system_column_name", ctypes.c_int, _system_p, ctypes.c_int, ctypes.c_char_p,
                ctypes.c_size_t)
 _capi._declare("hillstab_system_points", ctypes.c_int, _system_p, ctypes.c_size_t, _c_double_p, _c_double_p,
@@ -360,6 +362,19 @@ class System:
         return SystemFloquet(multipliers=re + 1j * im, log_scale=log_scale.value, exponents=exponents,
                              verdict=verdict.value, kind=kind.value, trace=trace.value, a2=a2.value,
                              defect=defect.value, error_estimate=estimate.value, status=status.value)
+
+    def tau_rate(self, alpha, beta):
+        """dτ/dt at the points (α, β) (arrays broadcast together): ``mu`` (or ``mu_k``) times it
+        is the exponent per unit of the system's own time t — a system of equations' Ω/π at each
+        point (its drive may depend on either axis); 0 for a system in τ alone and at a point
+        outside the domain. Through ``hillstab_system_tau_rate``."""
+        a, b = np.broadcast_arrays(real_array("alpha", alpha), real_array("beta", beta))
+        shape = a.shape
+        a, b = (_capi.as_doubles(x.ravel()) for x in (a, b))
+        rate = np.empty(a.size)
+        check(lib.hillstab_system_tau_rate(self._handle, a.size, _capi.doubles(a), _capi.doubles(b),
+                                           _capi.doubles(rate)))
+        return rate.reshape(shape)
 
     def column_names(self):
         """The columns of the system's chart and points files (14 + n names)."""

@@ -8,6 +8,7 @@ within the tolerance; the texts of the scene give the same system; the axes swap
 frequency and with it the damping along beta, each point alone) equal the command line's
 chart to the bit and the chart over (Om, P1) within 1e-9; bad input raises
 ValueError naming the variable (epsilon too: the damping is the system's own)."""
+import math
 import os
 
 import numpy as np
@@ -282,6 +283,27 @@ def test_first_order_methods_agree():
 
 KAPITZA_ONE = dict(stiffness="-g/l + A*w^2/l*cos(w*t)", frequency="w", damping="kappa", n=1,
                    parameters={"g": 9.81, "l": 0.2, "kappa": 0.2, "A": 0.005, "w": 314.16}, alpha="w", beta="A")
+
+
+def test_rates_per_unit_time():
+    """mu times `tau_rate` is the exponent per unit of the system's own time t at each point's
+    Omega: two damped modes K = diag(-1.5, 4.2) (P1 = 0, C = c I) grow as e^{rt}, r the largest
+    -c/2 + Re sqrt(c^2/4 - k_i), whatever Om; with Om along alpha (rows shared) and along beta
+    (each point alone); 0 outside the domain; the matrix system, in tau alone, has rate 0."""
+    k, c = (-1.5, 4.2), 0.3
+    r = max(-c / 2 + (math.sqrt(c * c / 4 - ki) if c * c / 4 > ki else 0.0) for ki in k)
+    om = np.array([1.5, 3.0, 5.5])
+    base = dict(stiffness="K - P1*cos(Om*t)*I", frequency="Om", damping="c*I",
+                matrices={"K": np.diag(k), "I": np.eye(2)}, parameters={"P1": 0.0, "Om": 1.0, "c": c})
+    for alpha, beta, a, b in (("Om", "P1", om, 0.0 * om), ("P1", "Om", 0.0 * om, om)):
+        system = hillstab.Equations(**base, alpha=alpha, beta=beta)
+        rate = system.tau_rate(a, b)
+        assert np.allclose(rate, om / math.pi, rtol=1e-15, atol=0.0)
+        mu = system.points(a, b)["mu"]
+        assert np.all(np.abs(mu * rate - r) <= 1e-8), (mu * rate, r)
+    assert system.tau_rate(0.0, -1.0) == 0.0
+    plain = hillstab.System(k0=np.diag([1.0, 4.0]), b=np.eye(2), cos=np.diag([0.5, 0.5]))
+    assert np.all(plain.tau_rate([0.1, 0.2], 1.0) == 0.0)
 
 
 def test_one_equation_takes_the_scalar_path():

@@ -878,15 +878,12 @@ contains
    elemental real(wp) function equation_tau_rate(self, alpha, beta) result(rate)
       class(equation_model_t), intent(in) :: self  !! the model
       real(wp), intent(in) :: alpha, beta          !! the point
-      real(wp) :: p(size(self%values)), drive, omega
+      real(wp) :: p(size(self%values))
       rate = 0.0_wp
       if (.not. self%ready) return
       p = self%values
       p(self%i_alpha) = alpha
       if (.not. self%pinned) p(self%i_beta) = beta
-      drive = self%drive%expression%value(p)
-      if (.not. (ieee_is_finite(drive) .and. drive > 0.0_wp)) return
-      omega = self%drive%omega_of(drive)
-      if (ieee_is_finite(omega) .and. omega > 0.0_wp) rate = omega/pi
+      rate = self%drive%tau_rate(p)
    end function equation_tau_rate
 end module hillstab_hill_model_equation

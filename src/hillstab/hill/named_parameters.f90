@@ -23,6 +23,7 @@ module hillstab_hill_named_parameters
    use hillstab_core_error, only: error_t
    use hillstab_core_text, only: format_es
    use hillstab_core_expression, only: expression_t, parse_expression
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
    public :: drive_t, parse_drive, find_axes, names_text, values_text, message_number, parameter_position
@@ -41,6 +42,8 @@ module hillstab_hill_named_parameters
       procedure :: omega_of => drive_omega_of
       !> T from the drive's value at a point (the period, or 2π/Ω)
       procedure :: period_of => drive_period_of
+      !> dτ/dt = Ω/π at a point's parameters (0 outside the domain)
+      procedure :: tau_rate => drive_tau_rate
       !> the header's text of the drive: ", Omega = ..." or ", period T = ..., Omega = 2 pi/T"
       procedure :: summary => drive_summary
       !> the drive uses this parameter
@@ -72,6 +75,19 @@ contains
       period = drive
       if (.not. self%from_period) period = 2.0_wp*pi/drive
    end function drive_period_of
+
+   !> dτ/dt = Ω/π at a point's parameters (τ = Ωt/π): 2 over the period in the problem's own
+   !> time; 0 where the drive is not finite and positive there (outside the domain).
+   pure real(wp) function drive_tau_rate(self, p) result(rate)
+      class(drive_t), intent(in) :: self  !! the drive (parsed)
+      real(wp), intent(in) :: p(:)        !! the parameters at the point
+      real(wp) :: drive, omega
+      rate = 0.0_wp
+      drive = self%expression%value(p)
+      if (.not. (ieee_is_finite(drive) .and. drive > 0.0_wp)) return
+      omega = self%omega_of(drive)
+      if (ieee_is_finite(omega) .and. omega > 0.0_wp) rate = omega/pi
+   end function drive_tau_rate
 
    !> ", Omega = <frequency>" or ", period T = <period>, Omega = 2 pi/T".
    pure function drive_summary(self) result(text)

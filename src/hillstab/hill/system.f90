@@ -77,6 +77,8 @@ module hillstab_hill_system
       procedure :: alpha_domain => any_alpha
       procedure :: alpha_valid => finite_alpha
       procedure :: drive_harmonics => no_harmonics
+      procedure :: has_time => no_time_of_its_own
+      procedure :: tau_rate => no_tau_rate
       procedure :: first_order => second_order_form
       procedure :: scalar_model => no_scalar_model
    end type hill_system_t
@@ -242,6 +244,22 @@ contains
       class(hill_system_t), intent(in) :: self  !! the system
       no_harmonics = 0
    end function no_harmonics
+
+   !> The system has a time of its user's, t (a system of equations in physical time, τ =
+   !> Ωt/π): `tau_rate` gives dτ/dt at each point. False unless the system says so.
+   elemental logical function no_time_of_its_own(self)
+      class(hill_system_t), intent(in) :: self  !! the system
+      no_time_of_its_own = .false.
+   end function no_time_of_its_own
+
+   !> dτ/dt at the point (α, β): 2 over the period in the user's time t (a system of
+   !> equations: Ω/π at the point), which turns a rate per unit τ into one per unit of t; 0 for
+   !> a system without a time of its own (`has_time`) and where the point has no period.
+   elemental real(wp) function no_tau_rate(self, alpha, beta) result(rate)
+      class(hill_system_t), intent(in) :: self  !! the system
+      real(wp), intent(in) :: alpha, beta       !! the point
+      rate = 0.0_wp
+   end function no_tau_rate
 
    !> The system is in second-order form unless it says otherwise.
    pure logical function second_order_form(self)

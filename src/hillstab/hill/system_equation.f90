@@ -125,6 +125,8 @@ module hillstab_hill_system_equation
       procedure :: check_values => equations_check_values
       procedure :: first_order => equations_first_order
       procedure :: scalar_model => equations_scalar_model
+      procedure :: has_time => equations_has_time
+      procedure :: tau_rate => equations_tau_rate
    end type equations_system_t
 
 contains
@@ -600,6 +602,26 @@ contains
       ratio = pi/omega
       ok = ieee_is_finite(ratio) .and. ratio > 0.0_wp
    end subroutine row_at
+
+   !> A system of equations is in its user's time t (τ = Ωt/π).
+   elemental logical function equations_has_time(self)
+      class(equations_system_t), intent(in) :: self  !! the system
+      equations_has_time = .true.
+   end function equations_has_time
+
+   !> dτ/dt at the point: Ω/π there (τ = Ωt/π, the period 2π/Ω in t); 0 outside the domain.
+   !> The system at a point's β (`pinned`) keeps that β whatever `beta` is.
+   elemental real(wp) function equations_tau_rate(self, alpha, beta) result(rate)
+      class(equations_system_t), intent(in) :: self  !! the system
+      real(wp), intent(in) :: alpha, beta            !! the point
+      real(wp) :: p(size(self%values))
+      rate = 0.0_wp
+      if (.not. self%ready) return
+      p = self%values
+      p(self%i_alpha) = alpha
+      if (.not. self%pinned) p(self%i_beta) = beta
+      rate = self%drive%tau_rate(p)
+   end function equations_tau_rate
 
    !> M at the given parameters.
    pure subroutine equations_mass(self, a)

@@ -24,7 +24,7 @@
 module hillstab_interop_capi_system_batch
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_ptr, c_f_pointer
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use hillstab_core_kinds, only: wp
+   use hillstab_core_kinds, only: wp, int64
    use hillstab_core_error, only: error_t, set_error, err_invalid_parameter, err_points_failed
    use hillstab_core_status, only: status_failed
    use hillstab_core_text, only: integer_text, real_text
@@ -42,7 +42,7 @@ module hillstab_interop_capi_system_batch
    implicit none
    private
    public :: hillstab_c_system_column_count, hillstab_c_system_column_name, hillstab_c_system_points, &
-      hillstab_c_system_chart, hillstab_c_system_chart_scaled
+      hillstab_c_system_chart, hillstab_c_system_chart_scaled, hillstab_c_system_tau_rate
 
 contains
 
@@ -66,6 +66,31 @@ contains
       end if
       status = outcome_status(error)
    end function hillstab_c_system_column_count
+
+   !> `int hillstab_system_tau_rate(const hillstab_system *system, size_t n, const double *alpha,
+   !> const double *beta, double *rate)`: dτ/dt at the n points (α_j, β_j), which turns a rate
+   !> per unit τ (mu, mu_1 … mu_n) into one per unit of the system's own time t: a system of
+   !> equations' Ω/π at the point; 0 for a system in τ alone and at a point outside the domain.
+   function hillstab_c_system_tau_rate(system, n, alpha, beta, rate) result(status) &
+      bind(C, name="hillstab_system_tau_rate")
+      type(c_ptr), value, intent(in) :: system  !! the handle
+      integer(c_size_t), value, intent(in) :: n  !! the number of points
+      real(c_double), intent(in) :: alpha(*), beta(*)  !! the points
+      real(c_double), intent(inout) :: rate(*)  !! receives dτ/dt at each point
+      integer(c_int) :: status
+      character(len=*), parameter :: where = "hillstab_system_tau_rate"
+      type(system_handle_t), pointer :: handle
+      type(error_t), allocatable :: error
+      integer(int64) :: j
+      call handle_system(where, system, handle, error)
+      if (.not. allocated(error)) call complete(where, handle, error)
+      if (.not. allocated(error)) then
+         do j = 1, int(n, int64)
+            rate(j) = handle%system%tau_rate(real(alpha(j), wp), real(beta(j), wp))
+         end do
+      end if
+      status = outcome_status(error)
+   end function hillstab_c_system_tau_rate
 
    !> `int hillstab_system_column_name(const hillstab_system *system, int index, char *name,
    !> size_t length)`: the name of value `index` (0 … count − 1), as a file's `# columns:`
