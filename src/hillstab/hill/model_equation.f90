@@ -878,12 +878,7 @@ contains
    elemental real(wp) function equation_tau_rate(self, alpha, beta) result(rate)
       class(equation_model_t), intent(in) :: self  !! the model
       real(wp), intent(in) :: alpha, beta          !! the point
-      real(wp) :: p(size(self%values))
       rate = 0.0_wp
-      if (.not. self%ready) return
-      p = self%values
-      p(self%i_alpha) = alpha
-      if (.not. self%pinned) p(self%i_beta) = beta
-      rate = self%drive%tau_rate(p)
+      if (self%ready) rate = self%drive%tau_rate(self%values, self%i_alpha, self%i_beta, alpha, beta, self%pinned)
    end function equation_tau_rate
 end module hillstab_hill_model_equation

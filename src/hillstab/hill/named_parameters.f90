@@ -42,7 +42,7 @@ module hillstab_hill_named_parameters
       procedure :: omega_of => drive_omega_of
       !> T from the drive's value at a point (the period, or 2π/Ω)
       procedure :: period_of => drive_period_of
-      !> dτ/dt = Ω/π at a point's parameters (0 outside the domain)
+      !> dτ/dt = Ω/π at a point (0 outside the domain)
       procedure :: tau_rate => drive_tau_rate
       !> the header's text of the drive: ", Omega = ..." or ", period T = ..., Omega = 2 pi/T"
       procedure :: summary => drive_summary
@@ -76,13 +76,21 @@ contains
       if (.not. self%from_period) period = 2.0_wp*pi/drive
    end function drive_period_of
 
-   !> dτ/dt = Ω/π at a point's parameters (τ = Ωt/π): 2 over the period in the problem's own
-   !> time; 0 where the drive is not finite and positive there (outside the domain).
-   pure real(wp) function drive_tau_rate(self, p) result(rate)
-      class(drive_t), intent(in) :: self  !! the drive (parsed)
-      real(wp), intent(in) :: p(:)        !! the parameters at the point
-      real(wp) :: drive, omega
+   !> dτ/dt = Ω/π at the point (α, β) (τ = Ωt/π): 2 over the period in the problem's own
+   !> time; 0 where the drive is not finite and positive there (outside the domain). The
+   !> parameters are `values` with the axes set; a problem fixed at its point's β (`pinned`)
+   !> keeps its β.
+   pure real(wp) function drive_tau_rate(self, values, i_alpha, i_beta, alpha, beta, pinned) result(rate)
+      class(drive_t), intent(in) :: self         !! the drive (parsed)
+      real(wp), intent(in) :: values(:)          !! the problem's parameters
+      integer, intent(in) :: i_alpha, i_beta     !! the axes' positions among them
+      real(wp), intent(in) :: alpha, beta        !! the point
+      logical, intent(in) :: pinned              !! β is fixed in `values`
+      real(wp) :: p(size(values)), drive, omega
       rate = 0.0_wp
+      p = values
+      p(i_alpha) = alpha
+      if (.not. pinned) p(i_beta) = beta
       drive = self%expression%value(p)
       if (.not. (ieee_is_finite(drive) .and. drive > 0.0_wp)) return
       omega = self%omega_of(drive)

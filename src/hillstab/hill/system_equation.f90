@@ -614,13 +614,8 @@ contains
    elemental real(wp) function equations_tau_rate(self, alpha, beta) result(rate)
       class(equations_system_t), intent(in) :: self  !! the system
       real(wp), intent(in) :: alpha, beta            !! the point
-      real(wp) :: p(size(self%values))
       rate = 0.0_wp
-      if (.not. self%ready) return
-      p = self%values
-      p(self%i_alpha) = alpha
-      if (.not. self%pinned) p(self%i_beta) = beta
-      rate = self%drive%tau_rate(p)
+      if (self%ready) rate = self%drive%tau_rate(self%values, self%i_alpha, self%i_beta, alpha, beta, self%pinned)
    end function equations_tau_rate
 
    !> M at the given parameters.
